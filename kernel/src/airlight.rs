@@ -1,0 +1,200 @@
+//! The combined formulation (paper §3.5, eq. 20): split the segment at the light's foot
+//! `u = 0`, integrate the part before it with the first reformulation (`v ∈ (0, 1]`) and the
+//! part after it with the second (`w ∈ [−1, 0)`), so that the expansion variable never exceeds 1.
+//!
+//! `L_m = L_before + e^{−σt(x_h − t0)} L_after`, each `L = (2σs I/h) e^{−σt r_s} Σ a_k m_k`
+//! (`r_s`: light distance at the part's start; moments in [`crate::integrals`]), plus the exact
+//! limits for a light on the ray line (`h → 0`).
+
+use crate::expansion::{Expandable, Expansion};
+use crate::geometry::Canonical;
+use crate::integrals::{moments, ExpIntegral, Half};
+use crate::light::LightDistribution;
+use crate::phase::PhaseFunction;
+use crate::real::{hypot1, Real};
+use crate::scalar::Scalar;
+use crate::special::en_scaled;
+
+/// Everything the canonical integral needs besides the geometry.
+#[derive(Clone, Copy, Debug)]
+pub struct Physics<'a, T, D, P> {
+    /// Scattering coefficient `σs`.
+    pub sigma_s: T,
+    /// Extinction coefficient `σt`.
+    pub sigma_t: T,
+    /// Light intensity `I`.
+    pub intensity: T,
+    /// Light distribution `D`.
+    pub light: &'a D,
+    /// Phase function `P`.
+    pub phase: &'a P,
+}
+
+/// `F(y) = D(c(y))·P(μ(y))` on one half (module docs of [`crate::integrals`]):
+/// `μ = −σ(1 − y²)/(1 + y²)`, `c = (σ d_el (1 − y²) + 2 d_c y)/(1 + y²)`, `σ = ∓1` before/after.
+struct HalfIntegrand<'a, T, D, P> {
+    sigma: T,
+    d_el: T,
+    d_c: T,
+    light: &'a D,
+    phase: &'a P,
+}
+
+impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for HalfIntegrand<'_, T, D, P> {
+    #[inline]
+    fn eval<S: Scalar<T>>(&self, y: S) -> S {
+        let y2 = y * y;
+        let inv = y2.shift(T::one()).recip();
+        let one_minus = S::cst(T::one()) - y2;
+        let mu = (one_minus * inv).scale(-self.sigma);
+        let c = (one_minus.scale(self.sigma * self.d_el) + y.scale(self.d_c + self.d_c)) * inv;
+        self.light.eval(c) * self.phase.eval(mu)
+    }
+}
+
+/// `1/(a + √(1+a²))` for `a ≥ 0`: the bounded variable `y` at `|u| = a` (`+∞ ↦ 0`).
+#[inline]
+fn bounded<T: Real>(a: T) -> T {
+    if a.is_finite() {
+        (a + hypot1(a)).recip()
+    } else {
+        T::zero()
+    }
+}
+
+/// In-scattered radiance `L_m` of the canonical problem with `N` expansion terms.
+pub fn in_scatter_canonical<T, D, P, E, const N: usize>(
+    g: &Canonical<T>,
+    phys: &Physics<'_, T, D, P>,
+    expansion: Expansion,
+    ei: &E,
+) -> T
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+    E: ExpIntegral<T>,
+{
+    let (t0, t1) = (g.t0, g.t1);
+    if !(t1 > t0) || phys.sigma_s * phys.intensity == T::zero() {
+        return T::zero();
+    }
+    let (h, x_h) = (g.h, g.x_h);
+    let inside = t0 <= x_h && x_h <= t1;
+    // Distance from the foot to the nearest segment end.
+    let gap = if x_h < t0 { t0 - x_h } else if x_h > t1 { x_h - t1 } else { T::zero() };
+    if !inside && h <= gap * T::epsilon() * T::epsilon() {
+        return on_line(g, phys);
+    }
+    if h == T::zero() {
+        // The light sits on the segment itself: the integral diverges.
+        return T::infinity();
+    }
+    let sigma_t = phys.sigma_t;
+    let big_h = sigma_t * h;
+    let two = T::lit(2.0);
+    let isotropic = phys.light.is_isotropic() && phys.phase.is_isotropic();
+    let count = if isotropic { 1 } else { N };
+    let prefactor = two * phys.sigma_s * phys.intensity / h;
+
+    let mut total = T::zero();
+    // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
+    if t0 < x_h {
+        let a_s = (x_h - t0) / h;
+        let t_end = if t1 < x_h { t1 } else { x_h };
+        let a_e = (x_h - t_end) / h;
+        let (r_s, r_e) = (hypot1(a_s), hypot1(a_e));
+        let (y_lo, y_hi) = (bounded(a_s), bounded(a_e));
+        let da = (t_end - t0) / h;
+        let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
+        let half = Half { second: false, big_h, y_lo, y_hi, dy, dv: dy };
+        let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), expansion, ei, isotropic, count);
+        total = total + prefactor * (-big_h * r_s).exp() * j;
+    }
+    // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
+    if t1 > x_h {
+        let t_start = if t0 > x_h { t0 } else { x_h };
+        let a_s = (t_start - x_h) / h;
+        let a_e = (t1 - x_h) / h;
+        let r_s = hypot1(a_s);
+        let (y_hi, y_lo) = (bounded(a_s), bounded(a_e));
+        let (dv, dy) = if a_e.is_finite() {
+            let dv = (t1 - t_start) / h * (T::one() + (a_s + a_e) / (r_s + hypot1(a_e)));
+            (dv, dv * y_lo * y_hi)
+        } else {
+            (T::infinity(), y_hi)
+        };
+        let half = Half { second: true, big_h, y_lo, y_hi, dy, dv };
+        let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), expansion, ei, isotropic, count);
+        let attenuation = (-sigma_t * (t_start - t0)).exp();
+        total = total + attenuation * prefactor * (-big_h * r_s).exp() * j;
+    }
+    total
+}
+
+/// `Σ a_k m_k` on one half.
+#[allow(clippy::too_many_arguments)]
+fn half_integral<T, D, P, E, const N: usize>(
+    half: &Half<T>,
+    g: &Canonical<T>,
+    phys: &Physics<'_, T, D, P>,
+    sigma: T,
+    expansion: Expansion,
+    ei: &E,
+    isotropic: bool,
+    count: usize,
+) -> T
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+    E: ExpIntegral<T>,
+{
+    let f = HalfIntegrand { sigma, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
+    let m: [T; N] = moments(half, ei, count);
+    if isotropic {
+        return f.eval(half.y_mid()) * m[0];
+    }
+    let a: [T; N] = expansion.coefficients(&f, half.y_mid(), half.dy * T::lit(0.5));
+    let mut j = T::zero();
+    for k in 0..N {
+        j = j + a[k] * m[k];
+    }
+    j
+}
+
+/// The exact limit for a light on the ray line outside the segment (`h → 0`): `μ = ±1` and
+/// `c = ∓d_el` are constant, and
+/// * light ahead (`x_h > t1`): `e^{−σt r} e^{−σt(t−t0)}` is constant, `∫ dt/r² = Δt/(r_0 r_1)`;
+/// * light behind (`x_h < t0`): `s = t − x_h`, `∫ e^{−2σt s}/s² ds` is an `E_2` difference.
+fn on_line<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>>(
+    g: &Canonical<T>,
+    phys: &Physics<'_, T, D, P>,
+) -> T {
+    let (t0, t1, x_h) = (g.t0, g.t1, g.x_h);
+    let sigma_t = phys.sigma_t;
+    let k = phys.sigma_s * phys.intensity;
+    if x_h > t1 {
+        let f: T = phys.light.eval(-g.d_el) * phys.phase.eval(T::one());
+        let (r0, r1) = (x_h - t0, x_h - t1);
+        k * f * (-sigma_t * r0).exp() * ((t1 - t0) / r0 / r1)
+    } else {
+        let f: T = phys.light.eval(g.d_el) * phys.phase.eval(-T::one());
+        let (s0, s1) = (t0 - x_h, t1 - x_h);
+        if sigma_t == T::zero() {
+            let span = if s1.is_finite() { (s1 - s0) / s1 / s0 } else { s0.recip() };
+            return k * f * span;
+        }
+        let two_st = sigma_t + sigma_t;
+        let mut e2 = [T::zero(); 2];
+        en_scaled(two_st * s0, &mut e2);
+        let head = (-sigma_t * s0).exp() * e2[1] / s0;
+        let tail = if s1.is_finite() {
+            en_scaled(two_st * s1, &mut e2);
+            (-sigma_t * (s1 - s0) - sigma_t * s1).exp() * e2[1] / s1
+        } else {
+            T::zero()
+        };
+        k * f * (head - tail)
+    }
+}

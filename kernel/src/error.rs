@@ -1,0 +1,101 @@
+//! Typed errors of the checked API: which field of the input is wrong, and how.
+
+use core::fmt;
+
+/// What is wrong with a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// NaN or infinite where a finite number is required.
+    NonFinite,
+    /// A direction or axis of zero length.
+    ZeroVector,
+    /// A coefficient or intensity below zero.
+    Negative,
+    /// `t_min > t_max`.
+    EmptyRange,
+    /// An asymmetry parameter outside `(−1, 1)`.
+    OutOfRange,
+    /// A two-lobed power that is not an even non-negative integer.
+    OddPower,
+    /// A spot cone whose outer cosine is not below its inner cosine.
+    InvertedCone,
+}
+
+/// An invalid input, naming the field by its path in the JSON scene record (DESIGN §6),
+/// e.g. `ray.dir` or `phase.g`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct InputError {
+    /// Path of the offending field.
+    pub field: &'static str,
+    /// What is wrong with it.
+    pub kind: ErrorKind,
+}
+
+impl InputError {
+    /// An error of `kind` at `field`.
+    pub const fn new(field: &'static str, kind: ErrorKind) -> Self {
+        InputError { field, kind }
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let what = match self.kind {
+            ErrorKind::NonFinite => "must be finite",
+            ErrorKind::ZeroVector => "must have non-zero length",
+            ErrorKind::Negative => "must not be negative",
+            ErrorKind::EmptyRange => "t_min must not exceed t_max",
+            ErrorKind::OutOfRange => "must lie strictly between -1 and 1",
+            ErrorKind::OddPower => "must be an even non-negative integer",
+            ErrorKind::InvertedCone => "cos_outer must be below cos_inner, both in [-1, 1]",
+        };
+        write!(f, "{}: {}", self.field, what)
+    }
+}
+
+impl core::error::Error for InputError {}
+
+/// Checks that `x` is finite.
+pub(crate) fn check_finite<T: crate::Real>(x: T, field: &'static str) -> Result<(), InputError> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(InputError::new(field, ErrorKind::NonFinite))
+    }
+}
+
+/// Checks that `x` is finite and not negative.
+pub(crate) fn check_non_negative<T: crate::Real>(x: T, field: &'static str) -> Result<(), InputError> {
+    check_finite(x, field)?;
+    if x < T::zero() {
+        Err(InputError::new(field, ErrorKind::Negative))
+    } else {
+        Ok(())
+    }
+}
+
+/// Checks that every component is finite and, if `nonzero`, that the vector is not zero.
+pub(crate) fn check_vector<T: crate::Real>(v: [T; 3], field: &'static str, nonzero: bool) -> Result<(), InputError> {
+    for x in v {
+        check_finite(x, field)?;
+    }
+    if nonzero && v.iter().all(|x| *x == T::zero()) {
+        return Err(InputError::new(field, ErrorKind::ZeroVector));
+    }
+    // The squared length must not overflow (it is used to normalise).
+    let len = crate::geometry::length(v);
+    if nonzero && !(len.is_finite() && len > T::zero()) {
+        return Err(InputError::new(field, ErrorKind::ZeroVector));
+    }
+    Ok(())
+}
+
+/// Checks an asymmetry parameter `|g| < 1`.
+pub(crate) fn check_asymmetry<T: crate::Real>(g: T, field: &'static str) -> Result<(), InputError> {
+    check_finite(g, field)?;
+    if g.abs() < T::one() {
+        Ok(())
+    } else {
+        Err(InputError::new(field, ErrorKind::OutOfRange))
+    }
+}

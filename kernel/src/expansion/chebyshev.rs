@@ -1,0 +1,88 @@
+//! Interpolation at Chebyshev nodes, converted to local monomial coefficients.
+
+use crate::real::Real;
+
+/// Coefficients `a_k` with `Σ a_k s^k` interpolating `f(y_c + s)` at the `N` Chebyshev nodes
+/// `s_j = r cos(π(2j+1)/(2N))` of `[−r, r]`.
+///
+/// Steps: node values → Chebyshev series `Σ c_k T_k(s/r)` (discrete orthogonality) →
+/// monomials in `ξ = s/r` (well conditioned: `|coefficients| ≤ 2^N max|c_k|`) → divide by
+/// `r^k`. Monomial coefficients below the rounding noise of the node values
+/// (`|â_k| ≤ 4N·ε·Σ|c_k|`) carry no information and are set to 0, so that dividing by `r^k`
+/// on a tiny sub-interval cannot blow noise up.
+pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: T, r: T) -> [T; N] {
+    let mut a = [T::zero(); N];
+    if N == 0 {
+        return a;
+    }
+    let nf = T::from(N).unwrap();
+    // Nodes ξ_j = cos((2j+1)θ), θ = π/(2N), by the three-term recurrence of cosines.
+    let theta = T::PI() / (nf + nf);
+    let mut xi = [T::zero(); N];
+    let c2 = (theta + theta).cos();
+    let mut prev = theta.cos(); // cos(−θ) = cos θ
+    let mut cur = prev; // cos(θ)
+    for x in xi.iter_mut() {
+        *x = cur;
+        let next = (c2 + c2) * cur - prev;
+        prev = cur;
+        cur = next;
+    }
+    let mut values = [T::zero(); N];
+    for j in 0..N {
+        values[j] = f(y_c + r * xi[j]);
+    }
+    // c_k = (2/N) Σ_j f_j T_k(ξ_j), c_0 halved.
+    let mut cheb = [T::zero(); N];
+    for j in 0..N {
+        let (mut t_prev, mut t_cur) = (T::one(), xi[j]);
+        for k in 0..N {
+            let tk = if k == 0 { T::one() } else { t_cur };
+            cheb[k] = cheb[k] + values[j] * tk;
+            if k >= 1 {
+                let t_next = (xi[j] + xi[j]) * t_cur - t_prev;
+                t_prev = t_cur;
+                t_cur = t_next;
+            }
+        }
+    }
+    let two_over_n = (T::one() + T::one()) / nf;
+    for k in 0..N {
+        cheb[k] = cheb[k] * two_over_n;
+    }
+    cheb[0] = cheb[0] * T::lit(0.5);
+    // Σ c_k T_k(ξ) → monomials in ξ, with T_k as coefficient arrays.
+    let mut t_km1 = [T::zero(); N];
+    let mut t_k = [T::zero(); N];
+    t_km1[0] = T::one(); // T_0
+    if N > 1 {
+        t_k[1] = T::one(); // T_1
+    }
+    let mut hat = [T::zero(); N];
+    hat[0] = cheb[0];
+    for k in 1..N {
+        for i in 0..N {
+            hat[i] = hat[i] + cheb[k] * t_k[i];
+        }
+        // T_{k+1} = 2ξ T_k − T_{k−1}
+        let mut t_next = [T::zero(); N];
+        for i in 0..N {
+            let shifted = if i > 0 { t_k[i - 1] } else { T::zero() };
+            t_next[i] = shifted + shifted - t_km1[i];
+        }
+        t_km1 = t_k;
+        t_k = t_next;
+    }
+    let mut scale_sum = T::zero();
+    for c in cheb.iter() {
+        scale_sum = scale_sum + c.abs();
+    }
+    let noise = T::lit(4.0) * nf * T::epsilon() * scale_sum;
+    let mut rk = T::one();
+    for k in 0..N {
+        let ak = hat[k] / rk;
+        a[k] = if k > 0 && (hat[k].abs() <= noise || !ak.is_finite()) { T::zero() } else { ak };
+        rk = rk * r;
+    }
+    a
+}

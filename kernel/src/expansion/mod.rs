@@ -1,0 +1,44 @@
+//! Polynomial expansion of `F = D(c)·P(μ)` over one half's sub-interval (DESIGN §4).
+//!
+//! Both expansions return coefficients `a_k` of `F ≈ Σ_{k<N} a_k s^k` in the local offset
+//! `s = y − y_c` from the sub-interval's midpoint, which is what [`crate::integrals`] integrates.
+//! * [`Expansion::Taylor`]: the paper's choice (app. B, eq. 42) — Taylor coefficients at the
+//!   midpoint, here computed exactly by jet arithmetic instead of hand-derived derivatives.
+//! * [`Expansion::Chebyshev`]: the polynomial interpolating `F` at the `N` Chebyshev nodes of
+//!   the sub-interval; near-best in the max norm over the whole interval, from `N` plain
+//!   evaluations. It is the default: see the error table in the README.
+
+mod chebyshev;
+mod jet;
+
+pub use chebyshev::chebyshev_coefficients;
+pub use jet::Jet;
+
+use crate::real::Real;
+use crate::scalar::Scalar;
+
+/// How `F` is turned into a polynomial on each sub-interval.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Expansion {
+    /// Interpolation at Chebyshev nodes (default).
+    #[default]
+    Chebyshev,
+    /// Taylor series at the sub-interval's midpoint (the paper's method).
+    Taylor,
+}
+
+/// A function of the bounded variable `y` that can be evaluated on plain numbers and on jets.
+pub trait Expandable<T: Real> {
+    /// `F(y)`.
+    fn eval<S: Scalar<T>>(&self, y: S) -> S;
+}
+
+impl Expansion {
+    /// Coefficients of `F ≈ Σ a_k (y − y_c)^k` on `[y_c − r, y_c + r]`.
+    pub fn coefficients<T: Real, F: Expandable<T>, const N: usize>(self, f: &F, y_c: T, r: T) -> [T; N] {
+        match self {
+            Expansion::Taylor => f.eval(Jet::<T, N>::variable(y_c)).c,
+            Expansion::Chebyshev => chebyshev_coefficients(|y| f.eval(y), y_c, r),
+        }
+    }
+}

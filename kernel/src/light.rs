@@ -1,0 +1,156 @@
+//! Light distributions `D(c)`: the angular profile of a point light, `c` the cosine between
+//! the direction from the light to the lit point and the light's axis (DESIGN §1). The
+//! radiant intensity towards that direction is `I·D(c)`.
+//!
+//! Implement [`LightDistribution`] to add your own; as with phase functions, one generic
+//! `eval` gives both values and Taylor coefficients.
+
+use crate::error::{check_finite, check_vector, ErrorKind, InputError};
+use crate::real::Real;
+use crate::scalar::Scalar;
+
+/// An angular distribution of a point light about its axis.
+pub trait LightDistribution<T: Real> {
+    /// The axis (any length but zero; the kernel normalises it). Ignored when
+    /// [`is_isotropic`](Self::is_isotropic).
+    fn axis(&self) -> [T; 3];
+    /// `D(c)` for `c ∈ [−1, 1]`.
+    fn eval<S: Scalar<T>>(&self, c: S) -> S;
+    /// `true` if `D` is constant: the kernel then skips the expansion.
+    fn is_isotropic(&self) -> bool {
+        false
+    }
+    /// Checks the parameters; the checked API calls it.
+    fn validate(&self) -> Result<(), InputError> {
+        Ok(())
+    }
+}
+
+/// The same intensity in every direction, `D = 1`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Omni;
+
+impl<T: Real> LightDistribution<T> for Omni {
+    fn axis(&self) -> [T; 3] {
+        [T::zero(), T::zero(), T::one()]
+    }
+    fn eval<S: Scalar<T>>(&self, _c: S) -> S {
+        S::cst(T::one())
+    }
+    fn is_isotropic(&self) -> bool {
+        true
+    }
+}
+
+/// The paper's two-lobed distribution `D = c^p`, `p` even (a beam both ways along the axis,
+/// like a lighthouse lamp).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TwoLobed<T: Real> {
+    /// Beam axis.
+    pub axis: T::Vec3,
+    /// Exponent `p`, even; larger is narrower.
+    pub power: u32,
+}
+
+impl<T: Real> LightDistribution<T> for TwoLobed<T> {
+    fn axis(&self) -> [T; 3] {
+        T::vec3_to_array(self.axis)
+    }
+    fn eval<S: Scalar<T>>(&self, c: S) -> S {
+        c.powi(self.power as i32)
+    }
+    fn is_isotropic(&self) -> bool {
+        self.power == 0
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
+        if self.power % 2 != 0 || self.power > 1024 {
+            return Err(InputError::new("light.distribution.power", ErrorKind::OddPower));
+        }
+        Ok(())
+    }
+}
+
+/// An engine-style spot cone: full intensity inside `cos_inner`, none outside `cos_outer`,
+/// and the smoothstep `x²(3 − 2x)`, `x = (c − cos_outer)/(cos_inner − cos_outer)`, between.
+///
+/// Its edges are only C¹, which limits how well a few-term polynomial can follow a ray that
+/// crosses them (the error table in the README shows how much).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpotCone<T: Real> {
+    /// Cone axis (the direction the spot points to).
+    pub axis: T::Vec3,
+    /// Cosine of the half-angle of full intensity.
+    pub cos_inner: T,
+    /// Cosine of the half-angle where the intensity reaches 0 (`< cos_inner`).
+    pub cos_outer: T,
+}
+
+impl<T: Real> LightDistribution<T> for SpotCone<T> {
+    fn axis(&self) -> [T; 3] {
+        T::vec3_to_array(self.axis)
+    }
+    fn eval<S: Scalar<T>>(&self, c: S) -> S {
+        let x = c.shift(-self.cos_outer).scale((self.cos_inner - self.cos_outer).recip());
+        let xv = x.value();
+        if xv <= T::zero() {
+            S::cst(T::zero())
+        } else if xv >= T::one() {
+            S::cst(T::one())
+        } else {
+            x * x * x.scale(-T::lit(2.0)).shift(T::lit(3.0))
+        }
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
+        check_finite(self.cos_inner, "light.distribution.cos_inner")?;
+        check_finite(self.cos_outer, "light.distribution.cos_outer")?;
+        let one = T::one();
+        if !(self.cos_outer < self.cos_inner && self.cos_outer >= -one && self.cos_inner <= one) {
+            return Err(InputError::new("light.distribution.cos_outer", ErrorKind::InvertedCone));
+        }
+        Ok(())
+    }
+}
+
+/// Any of the built-in distributions, chosen at run time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AnyDistribution<T: Real> {
+    /// [`Omni`].
+    Omni,
+    /// [`TwoLobed`].
+    TwoLobed(TwoLobed<T>),
+    /// [`SpotCone`].
+    SpotCone(SpotCone<T>),
+}
+
+impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
+    fn axis(&self) -> [T; 3] {
+        match self {
+            AnyDistribution::Omni => LightDistribution::<T>::axis(&Omni),
+            AnyDistribution::TwoLobed(d) => d.axis(),
+            AnyDistribution::SpotCone(d) => d.axis(),
+        }
+    }
+    fn eval<S: Scalar<T>>(&self, c: S) -> S {
+        match self {
+            AnyDistribution::Omni => Omni.eval(c),
+            AnyDistribution::TwoLobed(d) => d.eval(c),
+            AnyDistribution::SpotCone(d) => d.eval(c),
+        }
+    }
+    fn is_isotropic(&self) -> bool {
+        match self {
+            AnyDistribution::Omni => true,
+            AnyDistribution::TwoLobed(d) => d.is_isotropic(),
+            AnyDistribution::SpotCone(_) => false,
+        }
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        match self {
+            AnyDistribution::Omni => Ok(()),
+            AnyDistribution::TwoLobed(d) => d.validate(),
+            AnyDistribution::SpotCone(d) => d.validate(),
+        }
+    }
+}

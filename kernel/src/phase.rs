@@ -1,0 +1,201 @@
+//! Phase functions `P(μ)`, normalised over the sphere (`∫ P dω = 1`); `μ` is the cosine of
+//! the scattering angle, `μ = 1` for light going straight on towards the viewer (DESIGN §1).
+//!
+//! Implement [`PhaseFunction`] to add your own: write `eval` once over [`Scalar`] and the
+//! kernel gets both values (Chebyshev interpolation) and exact Taylor coefficients (jets).
+
+use crate::error::{check_asymmetry, check_finite, InputError};
+use crate::real::Real;
+use crate::scalar::Scalar;
+
+/// A phase function of the scattering cosine.
+pub trait PhaseFunction<T: Real> {
+    /// `P(μ)` for `μ ∈ [−1, 1]`.
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S;
+    /// `true` if `P` is constant: the kernel then skips the expansion.
+    fn is_isotropic(&self) -> bool {
+        false
+    }
+    /// Checks the parameters; the checked API calls it.
+    fn validate(&self) -> Result<(), InputError> {
+        Ok(())
+    }
+}
+
+/// `1/(4π)`.
+#[inline]
+fn inv_4pi<T: Real>() -> T {
+    T::FRAC_1_PI() * T::lit(0.25)
+}
+
+/// `(1 + g² − 2gμ)^{−3/2}`, the Henyey–Greenstein kernel without its constant.
+#[inline]
+fn hg_kernel<T: Real, S: Scalar<T>>(g: T, mu: S) -> S {
+    let base = mu.scale(-(g + g)).shift(T::one() + g * g);
+    (base * base.sqrt()).recip()
+}
+
+/// Isotropic scattering, `P = 1/(4π)`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Isotropic;
+
+impl<T: Real> PhaseFunction<T> for Isotropic {
+    fn eval<S: Scalar<T>>(&self, _mu: S) -> S {
+        S::cst(inv_4pi())
+    }
+    fn is_isotropic(&self) -> bool {
+        true
+    }
+}
+
+/// Rayleigh scattering, `P = 3/(16π) (1 + μ²)`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Rayleigh;
+
+impl<T: Real> PhaseFunction<T> for Rayleigh {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        (mu * mu).shift(T::one()).scale(T::lit(3.0 / 16.0) * T::FRAC_1_PI())
+    }
+}
+
+/// Henyey–Greenstein, `P = (1 − g²) / (4π (1 + g² − 2gμ)^{3/2})`, `|g| < 1`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HenyeyGreenstein<T> {
+    /// Asymmetry: mean cosine of the scattering angle; `g > 0` scatters forward.
+    pub g: T,
+}
+
+impl<T: Real> PhaseFunction<T> for HenyeyGreenstein<T> {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let g = self.g;
+        hg_kernel(g, mu).scale((T::one() - g * g) * inv_4pi::<T>())
+    }
+    fn is_isotropic(&self) -> bool {
+        self.g == T::zero()
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_asymmetry(self.g, "phase.g")
+    }
+}
+
+/// Schlick's rational approximation of Henyey–Greenstein,
+/// `P = (1 − k²) / (4π (1 − kμ)²)`, `|k| < 1` (`k ≈ 1.55g − 0.55g³` mimics HG with `g`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Schlick<T> {
+    /// Asymmetry parameter; `k > 0` scatters forward.
+    pub k: T,
+}
+
+impl<T: Real> PhaseFunction<T> for Schlick<T> {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let k = self.k;
+        let d = mu.scale(-k).shift(T::one());
+        (d * d).recip().scale((T::one() - k * k) * inv_4pi::<T>())
+    }
+    fn is_isotropic(&self) -> bool {
+        self.k == T::zero()
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_asymmetry(self.k, "phase.k")
+    }
+}
+
+/// Cornette–Shanks, `P = 3(1 − g²)(1 + μ²) / (8π (2 + g²)(1 + g² − 2gμ)^{3/2})`, `|g| < 1`:
+/// Henyey–Greenstein with a Rayleigh-like `1 + μ²` factor, normalised.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CornetteShanks<T> {
+    /// Asymmetry parameter.
+    pub g: T,
+}
+
+impl<T: Real> PhaseFunction<T> for CornetteShanks<T> {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let g = self.g;
+        let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * (T::one() - g * g) / (T::lit(2.0) + g * g);
+        (hg_kernel(g, mu) * (mu * mu).shift(T::one())).scale(k)
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_asymmetry(self.g, "phase.g")
+    }
+}
+
+/// Two Henyey–Greenstein lobes, `P = w·HG(g1) + (1 − w)·HG(g2)`, `w ∈ [0, 1]`
+/// (a forward and a back lobe, as engines use for fog and clouds).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TwoLobeHenyeyGreenstein<T> {
+    /// Asymmetry of the first lobe.
+    pub g1: T,
+    /// Asymmetry of the second lobe.
+    pub g2: T,
+    /// Weight of the first lobe.
+    pub w: T,
+}
+
+impl<T: Real> PhaseFunction<T> for TwoLobeHenyeyGreenstein<T> {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let a = HenyeyGreenstein { g: self.g1 }.eval(mu).scale(self.w);
+        let b = HenyeyGreenstein { g: self.g2 }.eval(mu).scale(T::one() - self.w);
+        a + b
+    }
+    fn is_isotropic(&self) -> bool {
+        self.g1 == T::zero() && self.g2 == T::zero()
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_asymmetry(self.g1, "phase.g1")?;
+        check_asymmetry(self.g2, "phase.g2")?;
+        check_finite(self.w, "phase.w")?;
+        if self.w < T::zero() || self.w > T::one() {
+            return Err(InputError::new("phase.w", crate::error::ErrorKind::OutOfRange));
+        }
+        Ok(())
+    }
+}
+
+/// Any of the built-in phase functions, chosen at run time (scene files, the CLI, shaders).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AnyPhase<T> {
+    /// [`Isotropic`].
+    Isotropic,
+    /// [`Rayleigh`].
+    Rayleigh,
+    /// [`HenyeyGreenstein`].
+    HenyeyGreenstein(HenyeyGreenstein<T>),
+    /// [`Schlick`].
+    Schlick(Schlick<T>),
+    /// [`CornetteShanks`].
+    CornetteShanks(CornetteShanks<T>),
+    /// [`TwoLobeHenyeyGreenstein`].
+    TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein<T>),
+}
+
+impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
+    fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        match self {
+            AnyPhase::Isotropic => Isotropic.eval(mu),
+            AnyPhase::Rayleigh => Rayleigh.eval(mu),
+            AnyPhase::HenyeyGreenstein(p) => p.eval(mu),
+            AnyPhase::Schlick(p) => p.eval(mu),
+            AnyPhase::CornetteShanks(p) => p.eval(mu),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval(mu),
+        }
+    }
+    fn is_isotropic(&self) -> bool {
+        match self {
+            AnyPhase::Isotropic => true,
+            AnyPhase::Rayleigh => false,
+            AnyPhase::HenyeyGreenstein(p) => PhaseFunction::<T>::is_isotropic(p),
+            AnyPhase::Schlick(p) => PhaseFunction::<T>::is_isotropic(p),
+            AnyPhase::CornetteShanks(_) => false,
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => PhaseFunction::<T>::is_isotropic(p),
+        }
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        match self {
+            AnyPhase::Isotropic | AnyPhase::Rayleigh => Ok(()),
+            AnyPhase::HenyeyGreenstein(p) => PhaseFunction::<T>::validate(p),
+            AnyPhase::Schlick(p) => PhaseFunction::<T>::validate(p),
+            AnyPhase::CornetteShanks(p) => PhaseFunction::<T>::validate(p),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => PhaseFunction::<T>::validate(p),
+        }
+    }
+}

@@ -1,0 +1,105 @@
+//! The float abstraction: one generic implementation serves `f32` and `f64`.
+//!
+//! [`Real`] adds to `num_traits::Float` the few things the kernel needs per precision:
+//! the glam vector type of that precision, and the tuning constants of the exponential
+//! integral's region selection (DESIGN §3), which differ between f32 and f64 because the
+//! iteration budgets do (16 loop iterations per f32 evaluation, 40 per f64).
+
+use core::fmt::{Debug, Display};
+use num_traits::{Float, FloatConst};
+
+/// A floating-point type the kernel runs in: `f32` or `f64`.
+///
+/// The associated constants are the *only* precision-dependent part of the algorithm; each is
+/// derived in `special/e1.rs` (region boundaries and term counts, measured against mpmath).
+pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + 'static {
+    /// The glam vector of this precision (`glam::Vec3` or `glam::DVec3`).
+    type Vec3: Copy + Debug + PartialEq;
+
+    /// Semi-axes `(a, b)` of the ellipse `(Re z/a)² + (Im z/b)² < 1` inside which `E1(z)`
+    /// is evaluated by its power series; outside, by the continued fraction.
+    const E1_SERIES_ELLIPSE: (f64, f64);
+    /// Number of power-series terms used inside that ellipse (fixed, no early exit).
+    const E1_SERIES_TERMS: usize;
+    /// Continued-fraction depth by band of `|z|`: the first entry whose bound exceeds `|z|`
+    /// gives the depth; the last entry applies to all larger `|z|`.
+    const E1_CF_DEPTH: &'static [(f64, usize)];
+    /// Gauss–Legendre nodes on `[-1, 1]` (positive half) and weights for short sub-intervals.
+    const GAUSS_NODES: &'static [(f64, f64)];
+
+    /// Converts an `f64` constant to this precision (rounding to nearest).
+    fn lit(x: f64) -> Self;
+    /// Converts to `f64` (exact for both precisions).
+    fn to_f64_exact(self) -> f64;
+    /// The components of a glam vector of this precision.
+    fn vec3_to_array(v: Self::Vec3) -> [Self; 3];
+    /// A glam vector of this precision from components.
+    fn vec3_from_array(a: [Self; 3]) -> Self::Vec3;
+}
+
+impl Real for f64 {
+    type Vec3 = glam::DVec3;
+    const E1_SERIES_ELLIPSE: (f64, f64) = (2.5, 4.0);
+    const E1_SERIES_TERMS: usize = 34;
+    const E1_CF_DEPTH: &'static [(f64, usize)] =
+        &[(5.0, 40), (8.0, 31), (15.0, 20), (50.0, 11), (300.0, 5), (f64::INFINITY, 2)];
+    // 8-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
+    const GAUSS_NODES: &'static [(f64, f64)] = &[
+        (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
+        (0.525_532_409_916_329_0, 0.313_706_645_877_887_3),
+        (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+        (0.960_289_856_497_536_2, 0.101_228_536_290_376_3),
+    ];
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn to_f64_exact(self) -> f64 {
+        self
+    }
+    #[inline(always)]
+    fn vec3_to_array(v: Self::Vec3) -> [Self; 3] {
+        v.to_array()
+    }
+    #[inline(always)]
+    fn vec3_from_array(a: [Self; 3]) -> Self::Vec3 {
+        glam::DVec3::from_array(a)
+    }
+}
+
+impl Real for f32 {
+    type Vec3 = glam::Vec3;
+    const E1_SERIES_ELLIPSE: (f64, f64) = (1.3, 2.1);
+    const E1_SERIES_TERMS: usize = 14;
+    const E1_CF_DEPTH: &'static [(f64, usize)] =
+        &[(3.0, 15), (5.0, 10), (10.0, 6), (30.0, 3), (f64::INFINITY, 2)];
+    // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
+    const GAUSS_NODES: &'static [(f64, f64)] = &[
+        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    ];
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x as f32
+    }
+    #[inline(always)]
+    fn to_f64_exact(self) -> f64 {
+        self as f64
+    }
+    #[inline(always)]
+    fn vec3_to_array(v: Self::Vec3) -> [Self; 3] {
+        v.to_array()
+    }
+    #[inline(always)]
+    fn vec3_from_array(a: [Self; 3]) -> Self::Vec3 {
+        glam::Vec3::from_array(a)
+    }
+}
+
+/// `hypot(1, x)` = `sqrt(1 + x²)` without overflow for huge `|x|`.
+#[inline]
+pub(crate) fn hypot1<T: Real>(x: T) -> T {
+    T::one().hypot(x)
+}
+

@@ -1,0 +1,271 @@
+//! The world-space API on glam vectors: a ray, a point light, a medium and a phase function
+//! in; in-scattered radiance, the surface term (paper eq. 7) and total radiance (eq. 2) out.
+
+use crate::airlight::{in_scatter_canonical, Physics};
+use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
+use crate::expansion::Expansion;
+use crate::geometry::{dot, length, normalize, sub, Canonical};
+use crate::integrals::{PaperEq27, Production};
+use crate::light::LightDistribution;
+use crate::phase::PhaseFunction;
+use crate::real::Real;
+
+/// Expansion terms on the CPU (the paper's software renderer used 6).
+pub const CPU_TERMS: usize = 6;
+/// Expansion terms in shaders (the paper's GPU version used 4).
+pub const SHADER_TERMS: usize = 4;
+
+/// A ray segment `x(t) = origin + t·d`, `t ∈ [t_min, t_max]`, with `d = dir/|dir|` (so `t` is
+/// a distance). `t_max` may be `+∞`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray<T: Real> {
+    /// Ray origin (the camera, usually).
+    pub origin: T::Vec3,
+    /// Direction; any non-zero length, normalised by the library.
+    pub dir: T::Vec3,
+    /// Segment start.
+    pub t_min: T,
+    /// Segment end, `+∞` for an unbounded ray.
+    pub t_max: T,
+}
+
+/// A homogeneous participating medium.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Medium<T> {
+    /// Scattering coefficient `σs ≥ 0` (per unit length).
+    pub sigma_s: T,
+    /// Extinction coefficient `σt ≥ 0`; independent of `σs` (`σt = 0` is the no-extinction
+    /// model of Macklin and Packard).
+    pub sigma_t: T,
+}
+
+/// A point light with an angular distribution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointLight<T: Real, D> {
+    /// Position of the light.
+    pub position: T::Vec3,
+    /// Radiant intensity `I ≥ 0` along the distribution's maximum.
+    pub intensity: T,
+    /// Angular distribution `D(c)`.
+    pub distribution: D,
+}
+
+/// A validated scene: construction checks every field, so evaluation cannot fail.
+#[derive(Clone, Copy, Debug)]
+pub struct Scene<T: Real, D, P> {
+    ray: Ray<T>,
+    light: PointLight<T, D>,
+    medium: Medium<T>,
+    phase: P,
+    canonical: Canonical<T>,
+}
+
+/// Checks a ray, light, medium and phase function, naming the first bad field.
+pub fn validate<T, D, P>(ray: &Ray<T>, light: &PointLight<T, D>, medium: &Medium<T>, phase: &P) -> Result<(), InputError>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    check_vector(T::vec3_to_array(ray.origin), "ray.origin", false)?;
+    check_vector(T::vec3_to_array(ray.dir), "ray.dir", true)?;
+    check_finite(ray.t_min, "ray.t_min")?;
+    if ray.t_max.is_nan() || ray.t_max == T::neg_infinity() {
+        return Err(InputError::new("ray.t_max", ErrorKind::NonFinite));
+    }
+    if ray.t_min > ray.t_max {
+        return Err(InputError::new("ray.t_max", ErrorKind::EmptyRange));
+    }
+    check_non_negative(medium.sigma_s, "medium.sigma_s")?;
+    check_non_negative(medium.sigma_t, "medium.sigma_t")?;
+    check_vector(T::vec3_to_array(light.position), "light.position", false)?;
+    check_non_negative(light.intensity, "light.intensity")?;
+    light.distribution.validate()?;
+    phase.validate()
+}
+
+impl<T, D, P> Scene<T, D, P>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    /// Validates and builds a scene.
+    ///
+    /// # Errors
+    /// [`InputError`] naming the first invalid field: non-finite numbers, a zero direction or
+    /// axis, negative coefficients or intensity, `t_min > t_max`, `|g| ≥ 1`, an odd two-lobed
+    /// power, an inverted spot cone.
+    pub fn new(ray: Ray<T>, light: PointLight<T, D>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
+        validate(&ray, &light, &medium, &phase)?;
+        let canonical = Canonical::new(
+            T::vec3_to_array(ray.origin),
+            T::vec3_to_array(ray.dir),
+            ray.t_min,
+            ray.t_max,
+            T::vec3_to_array(light.position),
+            light.distribution.axis(),
+        );
+        Ok(Scene { ray, light, medium, phase, canonical })
+    }
+
+    /// The ray.
+    pub fn ray(&self) -> &Ray<T> {
+        &self.ray
+    }
+    /// The light.
+    pub fn light(&self) -> &PointLight<T, D> {
+        &self.light
+    }
+    /// The medium.
+    pub fn medium(&self) -> &Medium<T> {
+        &self.medium
+    }
+    /// The phase function.
+    pub fn phase(&self) -> &P {
+        &self.phase
+    }
+    /// The canonical reduction (DESIGN §2) of the scene.
+    pub fn canonical(&self) -> &Canonical<T> {
+        &self.canonical
+    }
+
+    fn physics(&self) -> Physics<'_, T, D, P> {
+        Physics {
+            sigma_s: self.medium.sigma_s,
+            sigma_t: self.medium.sigma_t,
+            intensity: self.light.intensity,
+            light: &self.light.distribution,
+            phase: &self.phase,
+        }
+    }
+
+    /// In-scattered radiance `L_m` (DESIGN §1) with the defaults: [`CPU_TERMS`] terms,
+    /// Chebyshev expansion.
+    ///
+    /// `+∞` exactly when the light lies on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`) and
+    /// `σs·I > 0`, or when the true value exceeds the float range; never NaN.
+    pub fn in_scatter(&self) -> T {
+        self.in_scatter_with::<CPU_TERMS>(Expansion::default())
+    }
+
+    /// `L_m` with `N` expansion terms and the given expansion.
+    pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
+        in_scatter_canonical::<T, D, P, Production, N>(&self.canonical, &self.physics(), expansion, &Production)
+    }
+
+    /// `L_m` over the sub-segments `lit` of `[t_min, t_max]` only (a shadowed ray, as sums of
+    /// differences in the manner of Biri et al.): `Σ e^{−σt(a_i − t_min)} L_m(a_i, b_i)`.
+    /// Each `(a_i, b_i)` is clipped to the ray's segment; empty ones contribute nothing.
+    pub fn in_scatter_lit<const N: usize>(&self, lit: &[(T, T)], expansion: Expansion) -> T {
+        let mut total = T::zero();
+        for &(a, b) in lit {
+            if a.is_nan() || b.is_nan() {
+                continue;
+            }
+            let a = a.max(self.ray.t_min);
+            let b = b.min(self.ray.t_max);
+            if !(b > a) {
+                continue;
+            }
+            let mut g = self.canonical;
+            g.t0 = a;
+            g.t1 = b;
+            let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), expansion, &Production);
+            total = total + (-self.medium.sigma_t * (a - self.ray.t_min)).exp() * part;
+        }
+        total
+    }
+
+    /// `L_m` by the paper's algorithm as published, for comparison: Taylor expansion at the
+    /// midpoint, the closed forms with the `Ei` of eq. 27 / fig. 2 (absolute tolerance
+    /// `precision`, at most `max_iterations` iterations), no stabilised routes.
+    pub fn in_scatter_paper<const N: usize>(&self, precision: T, max_iterations: usize) -> T {
+        let ei = PaperEq27 { precision, max_iterations };
+        in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical, &self.physics(), Expansion::Taylor, &ei)
+    }
+
+    /// The surface term of paper eq. 7 at the segment's end `t_max` (finite):
+    /// `L_b = e^{−σt r_b}/r_b² · I·D(c_b) · brdf · max(0, ω_i·n)`, with `ω_i` the unit vector
+    /// towards the light and `c_b` the cosine of the light's emission towards the point.
+    /// Returns 0 for an infinite segment, a zero normal or a point at the light.
+    pub fn surface_radiance(&self, normal: T::Vec3, brdf: T) -> T {
+        if !self.ray.t_max.is_finite() {
+            return T::zero();
+        }
+        let o = T::vec3_to_array(self.ray.origin);
+        let d = normalize(T::vec3_to_array(self.ray.dir));
+        let t = self.ray.t_max;
+        let x_b = [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
+        let to_light = sub(T::vec3_to_array(self.light.position), x_b);
+        let r_b = length(to_light);
+        if !(r_b > T::zero()) {
+            return T::zero();
+        }
+        let w_i = [to_light[0] / r_b, to_light[1] / r_b, to_light[2] / r_b];
+        let n = normalize(T::vec3_to_array(normal));
+        let cos = dot(w_i, n).max(T::zero());
+        let c_b = -dot(w_i, normalize(self.light.distribution.axis()));
+        let d_b: T = self.light.distribution.eval(c_b);
+        (-self.medium.sigma_t * r_b).exp() / (r_b * r_b) * self.light.intensity * d_b * brdf * cos
+    }
+
+    /// Total radiance along the ray, paper eq. 2: `e^{−σt(t_max − t_min)} L_b + L_m`, with the
+    /// surface term at `t_max` (0 for an infinite segment).
+    pub fn radiance(&self, normal: T::Vec3, brdf: T) -> T {
+        let span = self.ray.t_max - self.ray.t_min;
+        let lb = self.surface_radiance(normal, brdf);
+        let transmitted = if lb == T::zero() { T::zero() } else { (-self.medium.sigma_t * span).exp() * lb };
+        transmitted + self.in_scatter()
+    }
+}
+
+/// In-scattered radiance with the defaults ([`CPU_TERMS`] terms, Chebyshev), checked.
+///
+/// # Errors
+/// [`InputError`] naming the first invalid field (see [`Scene::new`]).
+pub fn in_scatter<T, D, P>(ray: Ray<T>, light: PointLight<T, D>, medium: Medium<T>, phase: P) -> Result<T, InputError>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    Ok(Scene::new(ray, light, medium, phase)?.in_scatter())
+}
+
+/// In-scattered radiance with `N` terms, unchecked: invalid input yields `0` (the same defined
+/// value the shaders give), never a panic or NaN.
+pub fn in_scatter_unchecked<T, D, P, const N: usize>(
+    ray: Ray<T>,
+    light: PointLight<T, D>,
+    medium: Medium<T>,
+    phase: P,
+    expansion: Expansion,
+) -> T
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    match Scene::new(ray, light, medium, phase) {
+        Ok(scene) => scene.in_scatter_with::<N>(expansion),
+        Err(_) => T::zero(),
+    }
+}
+
+/// The seeds' closed form for an isotropic light in an isotropic medium *without* extinction
+/// (Macklin 2010, Packard 2004): `L = σs I/(4π h) (atan u_1 − atan u_0)`. It equals
+/// [`Scene::in_scatter`] exactly when `σt = 0` and both light and phase are isotropic, and is
+/// the cheapest analytic glow (the benchmarks' floor). No input checks; `h = 0` gives `+∞`/NaN.
+pub fn atan_form<T: Real>(ray: &Ray<T>, light_position: T::Vec3, intensity: T, sigma_s: T) -> T {
+    let g = Canonical::new(
+        T::vec3_to_array(ray.origin),
+        T::vec3_to_array(ray.dir),
+        ray.t_min,
+        ray.t_max,
+        T::vec3_to_array(light_position),
+        [T::zero(), T::zero(), T::one()],
+    );
+    let span = g.u(g.t1).atan() - g.u(g.t0).atan();
+    sigma_s * intensity * T::FRAC_1_PI() * T::lit(0.25) / g.h * span
+}

@@ -1,0 +1,40 @@
+//! Complex helpers the kernel needs beyond `num_complex`: an overflow-safe square root.
+
+use crate::real::Real;
+use num_complex::Complex;
+
+/// The complex numbers the kernel computes with.
+pub type C<T> = Complex<T>;
+
+/// Principal square root, `Re ≥ 0`, computed from `hypot` so that it neither overflows nor
+/// loses the small component (Kahan's formula).
+#[inline]
+pub fn csqrt<T: Real>(z: C<T>) -> C<T> {
+    let (x, y) = (z.re, z.im);
+    if x == T::zero() && y == T::zero() {
+        return C::new(T::zero(), y);
+    }
+    let half = T::lit(0.5);
+    let r = x.hypot(y);
+    if x >= T::zero() {
+        let t = ((r + x) * half).sqrt();
+        C::new(t, y / (t + t))
+    } else {
+        let t = ((r - x) * half).sqrt();
+        C::new(y.abs() / (t + t), t.copysign(y))
+    }
+}
+
+/// `a / b` by Smith's algorithm: no overflow of `|b|²` for huge `|b|`, no underflow for tiny.
+#[inline]
+pub fn cdiv<T: Real>(a: C<T>, b: C<T>) -> C<T> {
+    if b.re.abs() >= b.im.abs() {
+        let r = b.im / b.re;
+        let den = b.re + b.im * r;
+        C::new((a.re + a.im * r) / den, (a.im - a.re * r) / den)
+    } else {
+        let r = b.re / b.im;
+        let den = b.re * r + b.im;
+        C::new((a.re * r + a.im) / den, (a.im * r - a.re) / den)
+    }
+}

@@ -1,0 +1,48 @@
+//! Continued fraction of the scaled exponential integral (A&S 5.1.22, even contraction):
+//!
+//! `e^z E1(z) = 1/(z + 1 − 1²/(z + 3 − 2²/(z + 5 − 3²/(z + 7 − …))))`,
+//!
+//! convergent for `|arg z| < π`, evaluated bottom-up at a fixed depth. The tail below the last
+//! level is not dropped but replaced by the fixed point of its own recurrence,
+//! `t = b − (n+1)²/t`, which roughly halves the depth needed for a given accuracy
+//! (measured against mpmath; see `Real::E1_CF_DEPTH`).
+
+use super::{cdiv, csqrt, C};
+use crate::real::Real;
+
+/// `e^z E1(z)` by the continued fraction at the depth [`Real::E1_CF_DEPTH`] gives for `|z|`.
+#[inline]
+pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
+    let r = z.re.hypot(z.im).to_f64_exact();
+    let mut depth = 0;
+    for &(bound, d) in T::E1_CF_DEPTH {
+        depth = d;
+        if r < bound {
+            break;
+        }
+    }
+    e1_scaled_cf_depth(z, depth)
+}
+
+/// The continued fraction at an explicit depth `n` (levels `1..=n` plus the tail estimate).
+#[inline]
+pub fn e1_scaled_cf_depth<T: Real>(z: C<T>, n: usize) -> C<T> {
+    let one = C::new(T::one(), T::zero());
+    let two = T::lit(2.0);
+    // Tail: t = (b/2)(1 + √(1 − 4(n+1)²/b²)), b = z + 2n + 1; written with (2(n+1)/b)² so
+    // that it cannot overflow for huge |z|.
+    let nf = T::from(n).unwrap();
+    let b = z + (two * nf + T::one());
+    let q = cdiv(C::new(two * (nf + T::one()), T::zero()), b);
+    let mut root = csqrt(one - q * q);
+    // Pick the root aligned with b (the dominant fixed point).
+    if root.re < T::zero() {
+        root = -root;
+    }
+    let mut t = b * (one + root) / two;
+    for k in (1..=n).rev() {
+        let kf = T::from(k).unwrap();
+        t = z + (two * kf - T::one()) - cdiv(C::new(kf * kf, T::zero()), t);
+    }
+    cdiv(one, t)
+}

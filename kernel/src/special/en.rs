@@ -1,0 +1,68 @@
+//! Real generalised exponential integrals `E_n(x) = ∫₁^∞ e^{−xt} t^{−n} dt`, scaled by `e^x`.
+//!
+//! Recurrence `E_{n+1}(x) = (e^{−x} − x E_n(x))/n` (A&S 5.1.14), i.e. for `s_n = e^x E_n(x)`:
+//! `s_{n+1} = (1 − x s_n)/n`. It is stable upwards where `x ≲ n` and downwards where `x ≳ n`,
+//! so for `x ≤ K` (the highest order asked for) we go up from `s_1`, and for `x > K` down from
+//! `s_K`, which its own continued fraction gives quickly there (A&S 5.1.22).
+
+use super::e1::e1_scaled;
+use super::C;
+use crate::real::Real;
+
+/// Fills `out[k] = e^x E_{k+1}(x)` for `k = 0..out.len()`, `x ≥ 0`.
+/// At `x = 0`: `E_1 = +∞`, `E_n = 1/(n − 1)`.
+pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
+    let k_max = out.len();
+    if k_max == 0 {
+        return;
+    }
+    if x == T::zero() {
+        out[0] = T::infinity();
+        for n in 2..=k_max {
+            out[n - 1] = T::one() / T::from(n - 1).unwrap();
+        }
+        return;
+    }
+    if x <= T::from(k_max).unwrap() {
+        out[0] = e1_scaled(C::new(x, T::zero())).re;
+        for n in 1..k_max {
+            out[n] = (T::one() - x * out[n - 1]) / T::from(n).unwrap();
+        }
+    } else {
+        out[k_max - 1] = en_scaled_cf(x, k_max);
+        for n in (1..k_max).rev() {
+            // s_n = (1 − n s_{n+1}) / x
+            out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) / x;
+        }
+    }
+}
+
+/// `e^x E_n(x)` by the continued fraction
+/// `1/(x + n − 1·n/(x + n + 2 − 2(n+1)/(x + n + 4 − …)))`, for `x > n`, with the same tail
+/// estimate and depth table as the complex `E1` fraction (order 1 converges slowest).
+fn en_scaled_cf<T: Real>(x: T, n: usize) -> T {
+    let xf = x.to_f64_exact();
+    let mut depth = 0;
+    for &(bound, d) in T::E1_CF_DEPTH {
+        depth = d;
+        if xf < bound {
+            break;
+        }
+    }
+    let nf = T::from(n).unwrap();
+    let two = T::lit(2.0);
+    let m = T::from(depth).unwrap();
+    // level k ≥ 1: t_k = x + n + 2k − a_{k+1}/t_{k+1}, a_k = k(n + k − 1); the tail t_{m+1}
+    // is the fixed point of t = b − a/t with b = x + n + 2(m+1), a = a_{m+2}.
+    let b = x + nf + two * (m + T::one());
+    let a = (m + two) * (nf + m + T::one());
+    let q = a / (b * b);
+    let disc = T::one() - T::lit(4.0) * q;
+    let mut t = if disc > T::zero() { b * (T::one() + disc.sqrt()) / two } else { b };
+    for k in (1..=depth).rev() {
+        let kf = T::from(k).unwrap();
+        t = x + nf + two * kf - (kf + T::one()) * (nf + kf) / t;
+    }
+    // level 0
+    T::one() / (x + nf - nf / t)
+}

@@ -1,0 +1,44 @@
+//! Power series of `Ein(z) = ∫₀ᶻ (1 − e^{−t})/t dt = Σ_{k≥1} (−1)^{k+1} z^k / (k·k!)`
+//! (A&S 5.1.11: `E1(z) = −γ − ln z + Ein(z)`), with a fixed number of terms.
+
+use super::C;
+use crate::real::Real;
+
+/// `Ein(z)` by its power series, [`Real::E1_SERIES_TERMS`] terms (accurate inside the series
+/// ellipse of [`in_series_region`](super::in_series_region)).
+#[inline]
+pub fn ein<T: Real>(z: C<T>) -> C<T> {
+    // term_k = (−1)^{k+1} z^k / k!, summed as term_k / k.
+    let mut term = -C::new(T::one(), T::zero());
+    let mut sum = C::new(T::zero(), T::zero());
+    for k in 1..=T::E1_SERIES_TERMS {
+        let kf = T::from(k).unwrap();
+        term = -term * z / kf;
+        sum = sum + term / kf;
+    }
+    sum
+}
+
+/// `(Ein(b) − Ein(a)) / (b − a)`, by the series of divided differences
+/// `Σ (−1)^{k+1} h_{k−1}(a, b) / (k·k!)` with `h_m(a, b) = Σ_{j≤m} a^j b^{m−j}`, so that the
+/// difference of `Ein` at two nearby points keeps its relative accuracy. Meant for
+/// `|a|, |b| ≤ 1`, where the fixed term count gives full precision.
+#[inline]
+pub fn ein_divided_difference<T: Real>(a: C<T>, b: C<T>) -> C<T> {
+    let one = C::new(T::one(), T::zero());
+    let mut h = one; // h_0
+    let mut a_pow = one; // a^m
+    let mut fact = T::one(); // k!
+    let mut sign = T::one();
+    let mut sum = C::new(T::zero(), T::zero());
+    for k in 1..=T::E1_SERIES_TERMS {
+        let kf = T::from(k).unwrap();
+        fact = fact * kf;
+        sum = sum + h * (sign / (kf * fact));
+        // advance to h_k = b·h_{k−1} + a^k
+        a_pow = a_pow * a;
+        h = h * b + a_pow;
+        sign = -sign;
+    }
+    sum
+}
