@@ -1,1 +1,95 @@
-fn main(){}
+//! The `airlight` command: evaluate scenes, emit and check shaders.
+
+use airlight::Expansion;
+use airlight_codegen::eval::{self, EvalOptions, Precision};
+use std::process::ExitCode;
+
+const HELP: &str = "\
+airlight — analytic fog glow (single-scattered air-light) of point and spot lights
+
+USAGE:
+    airlight eval [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
+    airlight --help
+
+COMMANDS:
+    eval    Read scene records as JSON lines on stdin, write one JSON line per record on
+            stdout, in input order: {\"in_scatter\": L} (\"inf\" for +infinity, when the light
+            lies exactly on the segment) or {\"error\": \"line N: field: problem\"}. A bad line
+            does not stop the others. Blank lines are skipped.
+
+            Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\": 25 | null},
+                     \"medium\": {\"sigma_s\": 0.08, \"sigma_t\": 0.1},
+                     \"light\": {\"position\": [x,y,z], \"intensity\": 100,
+                               \"distribution\": {\"kind\": \"isotropic\" | \"two_lobed\" (axis, power)
+                                                | \"spot\" (axis, cos_inner, cos_outer)}},
+                     \"phase\": {\"kind\": \"isotropic\" | \"rayleigh\" | \"henyey_greenstein\" (g)
+                               | \"schlick\" (k) | \"cornette_shanks\" (g)
+                               | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
+            t_max null means +infinity; unknown fields are ignored.
+
+OPTIONS (eval):
+    --precision f32|f64              kernel precision (default f64)
+    --terms 4|6                      expansion terms (default 6; shaders use 4)
+    --expansion chebyshev|taylor     polynomial expansion (default chebyshev)
+";
+
+fn fail(msg: &str) -> ExitCode {
+    eprintln!("airlight: {msg}");
+    eprintln!("Try 'airlight --help'.");
+    ExitCode::from(2)
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let Some(cmd) = args.first() else {
+        print!("{HELP}");
+        return ExitCode::from(2);
+    };
+    match cmd.as_str() {
+        "--help" | "-h" | "help" => {
+            print!("{HELP}");
+            ExitCode::SUCCESS
+        }
+        "eval" => cmd_eval(&args[1..]),
+        other => fail(&format!("unknown command '{other}'")),
+    }
+}
+
+fn cmd_eval(args: &[String]) -> ExitCode {
+    let mut opts = EvalOptions::default();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
+        let r: Result<(), String> = match a.as_str() {
+            "--help" | "-h" => {
+                print!("{HELP}");
+                return ExitCode::SUCCESS;
+            }
+            "--precision" => value("--precision").and_then(|v| match v.as_str() {
+                "f32" => Ok(opts.precision = Precision::F32),
+                "f64" => Ok(opts.precision = Precision::F64),
+                _ => Err(format!("--precision must be f32 or f64, not '{v}'")),
+            }),
+            "--terms" => value("--terms").and_then(|v| match v.as_str() {
+                "4" => Ok(opts.terms = 4),
+                "6" => Ok(opts.terms = 6),
+                _ => Err(format!("--terms must be 4 or 6, not '{v}'")),
+            }),
+            "--expansion" => value("--expansion").and_then(|v| match v.as_str() {
+                "chebyshev" => Ok(opts.expansion = Expansion::Chebyshev),
+                "taylor" => Ok(opts.expansion = Expansion::Taylor),
+                _ => Err(format!("--expansion must be chebyshev or taylor, not '{v}'")),
+            }),
+            other => Err(format!("unknown option '{other}' for eval")),
+        };
+        if let Err(e) = r {
+            return fail(&e);
+        }
+    }
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    match eval::run(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => fail(&format!("I/O error: {e}")),
+    }
+}

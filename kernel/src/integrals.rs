@@ -1,6 +1,6 @@
 //! Closed forms of the two reformulations (paper §3.3–3.4, eq. 8–19), as *moments*.
 //!
-//! After the split at the light's foot (see [`crate::airlight`]), each half of the segment is an
+//! After the split at the light's foot (see [`crate::combined`]), each half of the segment is an
 //! integral over a bounded variable `y ∈ [y_lo, y_hi] ⊂ [0, 1]`:
 //!
 //! * first reformulation (before the foot): `y = v = u + √(1+u²)`, weight `e^{−H y}`;

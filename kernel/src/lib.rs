@@ -18,7 +18,7 @@
 //!
 //! ## The data path, one module per step
 //! 1. [`geometry`]: world space → canonical integral (`h`, `x_h`, `d_el`, `d_c`; paper eq. 4–6).
-//! 2. [`airlight`]: split at the light's foot (combined formulation, eq. 20).
+//! 2. [`combined`]: split at the light's foot (combined formulation, eq. 20).
 //! 3. [`expansion`]: phase × light as a polynomial on each part (Chebyshev or Taylor by jets).
 //! 4. [`integrals`]: closed forms of both reformulations (eq. 8–19) as moments.
 //! 5. [`special`]: the complex exponential integral with fixed-bound region selection.
@@ -28,7 +28,7 @@
 #![no_std]
 #![warn(missing_docs)]
 
-pub mod airlight;
+pub mod combined;
 pub mod error;
 pub mod expansion;
 pub mod geometry;

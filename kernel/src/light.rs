@@ -20,6 +20,11 @@ pub trait LightDistribution<T: Real> {
     fn is_isotropic(&self) -> bool {
         false
     }
+    /// Cosines where `D` is not smooth (a cone's edges). The kernel splits the integration at
+    /// the points where `c` crosses them, so each piece gets a polynomial of its own.
+    fn kinks(&self) -> [Option<T>; 2] {
+        [None, None]
+    }
     /// Checks the parameters; the checked API calls it.
     fn validate(&self) -> Result<(), InputError> {
         Ok(())
@@ -101,6 +106,9 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
             x * x * x.scale(-T::lit(2.0)).shift(T::lit(3.0))
         }
     }
+    fn kinks(&self) -> [Option<T>; 2] {
+        [Some(self.cos_inner), Some(self.cos_outer)]
+    }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
         check_finite(self.cos_inner, "light.distribution.cos_inner")?;
@@ -144,6 +152,12 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
             AnyDistribution::Omni => true,
             AnyDistribution::TwoLobed(d) => d.is_isotropic(),
             AnyDistribution::SpotCone(_) => false,
+        }
+    }
+    fn kinks(&self) -> [Option<T>; 2] {
+        match self {
+            AnyDistribution::SpotCone(d) => d.kinks(),
+            _ => [None, None],
         }
     }
     fn validate(&self) -> Result<(), InputError> {

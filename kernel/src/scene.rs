@@ -1,7 +1,7 @@
 //! The world-space API on glam vectors: a ray, a point light, a medium and a phase function
 //! in; in-scattered radiance, the surface term (paper eq. 7) and total radiance (eq. 2) out.
 
-use crate::airlight::{in_scatter_canonical, Physics};
+use crate::combined::{in_scatter_canonical, Physics};
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::expansion::Expansion;
 use crate::geometry::{dot, length, normalize, sub, Canonical};

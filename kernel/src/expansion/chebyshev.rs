@@ -6,10 +6,10 @@ use crate::real::Real;
 /// `s_j = r cos(π(2j+1)/(2N))` of `[−r, r]`.
 ///
 /// Steps: node values → Chebyshev series `Σ c_k T_k(s/r)` (discrete orthogonality) →
-/// monomials in `ξ = s/r` (well conditioned: `|coefficients| ≤ 2^N max|c_k|`) → divide by
-/// `r^k`. Monomial coefficients below the rounding noise of the node values
-/// (`|â_k| ≤ 4N·ε·Σ|c_k|`) carry no information and are set to 0, so that dividing by `r^k`
-/// on a tiny sub-interval cannot blow noise up.
+/// monomials in `ξ = s/r` → divide by `r^k`. The conversion amplifies rounding noise by at
+/// most the ℓ1 norm of the monomial coefficients of `T_k`, `((1+√2)^k + (1−√2)^k)/2`; monomial
+/// coefficients below `4N·ε·(1+√2)^N·Σ|c_k|` carry no information and are set to 0, so that
+/// dividing by `r^k` on a tiny sub-interval cannot blow noise up.
 pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: T, r: T) -> [T; N] {
     let mut a = [T::zero(); N];
     if N == 0 {
@@ -77,7 +77,7 @@ pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: 
     for c in cheb.iter() {
         scale_sum = scale_sum + c.abs();
     }
-    let noise = T::lit(4.0) * nf * T::epsilon() * scale_sum;
+    let noise = T::lit(4.0) * nf * T::epsilon() * T::lit(core::f64::consts::SQRT_2 + 1.0).powi(N as i32) * scale_sum;
     let mut rk = T::one();
     for k in 0..N {
         let ak = hat[k] / rk;

@@ -129,10 +129,12 @@ where
         let attenuation = (-sigma_t * (t_start - t0)).exp();
         total = total + attenuation * prefactor * (-big_h * r_s).exp() * j;
     }
-    total
+    // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
+    // cone) must not make the sum negative. Clamping can only reduce the error.
+    total.max(T::zero())
 }
 
-/// `Σ a_k m_k` on one half.
+/// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution.
 #[allow(clippy::too_many_arguments)]
 fn half_integral<T, D, P, E, const N: usize>(
     half: &Half<T>,
@@ -151,16 +153,81 @@ where
     E: ExpIntegral<T>,
 {
     let f = HalfIntegrand { sigma, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
-    let m: [T; N] = moments(half, ei, count);
     if isotropic {
+        let m: [T; N] = moments(half, ei, count);
         return f.eval(half.y_mid()) * m[0];
     }
-    let a: [T; N] = expansion.coefficients(&f, half.y_mid(), half.dy * T::lit(0.5));
+    // Up to two kinks, each crossed at most twice: at most 5 pieces.
+    let mut cuts = [T::zero(); 6];
+    let mut n_cuts = 0;
+    for kink in phys.light.kinks().into_iter().flatten() {
+        for y in crossings(sigma, g.d_el, g.d_c, kink) {
+            if let Some(y) = y {
+                if y > half.y_lo && y < half.y_hi {
+                    cuts[n_cuts] = y;
+                    n_cuts += 1;
+                }
+            }
+        }
+    }
+    let cuts = &mut cuts[..n_cuts];
+    cuts.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
+    if n_cuts == 0 {
+        return piece_integral::<T, _, E, N>(half, &f, expansion, ei);
+    }
+    let mut total = T::zero();
+    let mut lo = half.y_lo;
+    for i in 0..=n_cuts {
+        let hi = if i < n_cuts { cuts[i] } else { half.y_hi };
+        if !(hi > lo) {
+            continue;
+        }
+        let dy = hi - lo;
+        // Δv of the piece and its offset from the half's v_s (where the weight is 1).
+        let (dv, offset) = if half.second {
+            let dv = if lo == T::zero() { T::infinity() } else { dy / (lo * hi) };
+            (dv, (half.y_hi - hi) / (hi * half.y_hi))
+        } else {
+            (dy, lo - half.y_lo)
+        };
+        let piece = Half { second: half.second, big_h: half.big_h, y_lo: lo, y_hi: hi, dy, dv };
+        total = total + (-half.big_h * offset).exp() * piece_integral::<T, _, E, N>(&piece, &f, expansion, ei);
+        lo = hi;
+    }
+    total
+}
+
+/// `Σ a_k m_k` on one smooth piece.
+fn piece_integral<T: Real, F: Expandable<T>, E: ExpIntegral<T>, const N: usize>(
+    half: &Half<T>,
+    f: &F,
+    expansion: Expansion,
+    ei: &E,
+) -> T {
+    let m: [T; N] = moments(half, ei, N);
+    let a: [T; N] = expansion.coefficients(f, half.y_mid(), half.dy * T::lit(0.5));
     let mut j = T::zero();
     for k in 0..N {
         j = j + a[k] * m[k];
     }
     j
+}
+
+/// The `y ∈ (0, 1]` where `c(y) = (σ d_el (1 − y²) + 2 d_c y)/(1 + y²)` equals `k`:
+/// roots of `(k + σ d_el) y² − 2 d_c y + (k − σ d_el) = 0`, by the cancellation-free form of
+/// the quadratic formula.
+fn crossings<T: Real>(sigma: T, d_el: T, d_c: T, k: T) -> [Option<T>; 2] {
+    let a = k + sigma * d_el;
+    let b = -(d_c + d_c);
+    let c = k - sigma * d_el;
+    let disc = b * b - T::lit(4.0) * a * c;
+    if !(disc >= T::zero()) {
+        return [None, None];
+    }
+    let q = -T::lit(0.5) * (b + disc.sqrt().copysign(b));
+    let r1 = if q != T::zero() { Some(c / q) } else { None };
+    let r2 = if a != T::zero() { Some(q / a) } else { None };
+    [r1, r2]
 }
 
 /// The exact limit for a light on the ray line outside the segment (`h → 0`): `μ = ±1` and

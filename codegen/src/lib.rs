@@ -1,0 +1,5 @@
+//! The `airlight` tool as a library: scene records (JSON lines) and their evaluation on the
+//! CPU kernel; shader emission through naga (for build scripts); the GPU backend.
+
+pub mod eval;
+pub mod scene_json;
