@@ -127,12 +127,17 @@ impl<T: Real> Half<T> {
     }
 }
 
+/// The largest supported term count.
+pub const MAX_TERMS: usize = 16;
+
 /// Fills `m[0..count]` with the moments `m_k` of `half` (module docs), `count ≤ N`.
+/// `N ≤ MAX_TERMS` is checked at compile time.
 pub fn moments<T: Real, E: ExpIntegral<T>, const N: usize>(
     half: &Half<T>,
     ei: &E,
     count: usize,
 ) -> [T; N] {
+    const { assert!(N <= MAX_TERMS, "at most MAX_TERMS expansion terms") };
     let mut m = [T::zero(); N];
     let count = count.min(N);
     if count == 0 || !(half.dy > T::zero()) {
@@ -310,7 +315,7 @@ fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, wi
 /// `φ_i(x) = ∫₀¹ e^{−xt} t^i dt`: with `τ = y − y_lo ∈ [0, Δ]` and `s = τ − Δ/2`,
 /// `R_j = Σ_i C(j,i) Δ^{i+1} φ_i(HΔ) (−Δ/2)^{j−i}`.
 fn r_first<T: Real>(half: &Half<T>, r: &mut [T]) {
-    const MAX: usize = 16;
+    const MAX: usize = MAX_TERMS;
     let n = r.len().min(MAX);
     let delta = half.dy;
     let mut phi = [T::zero(); MAX];
@@ -373,7 +378,7 @@ fn phi_moments<T: Real>(x: T, out: &mut [T]) {
 /// `R_j = Σ_i C(j,i) (−y_c)^{j−i} T_{i+2}` with
 /// `T_n = y_hi^{n−1} s_n(H v_s) − e^{−HΔv} y_lo^{n−1} s_n(H v_e)`, `s_n = e^x E_n(x)`.
 fn r_second<T: Real>(half: &Half<T>, yc: T, r: &mut [T]) {
-    const MAX: usize = 18;
+    const MAX: usize = MAX_TERMS + 2;
     let n = r.len().min(MAX - 2);
     let big_h = half.big_h;
     let mut s_s = [T::zero(); MAX];
