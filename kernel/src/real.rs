@@ -97,9 +97,15 @@ impl Real for f32 {
     }
 }
 
-/// `hypot(1, x)` = `sqrt(1 + x²)` without overflow for huge `|x|`.
+/// `√(1 + x²)` without overflow for huge `|x|` (where it is `|x|` to the last bit:
+/// `x² > 2^p` makes the `1` vanish). Cheaper than a general `hypot`.
 #[inline]
 pub(crate) fn hypot1<T: Real>(x: T) -> T {
-    T::one().hypot(x)
+    let a = x.abs();
+    if a < T::lit(1e15) {
+        (T::one() + a * a).sqrt()
+    } else {
+        a
+    }
 }
 

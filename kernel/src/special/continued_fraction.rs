@@ -13,11 +13,13 @@ use crate::real::Real;
 /// `e^z E1(z)` by the continued fraction at the depth [`Real::E1_CF_DEPTH`] gives for `|z|`.
 #[inline]
 pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
-    let r = z.re.hypot(z.im).to_f64_exact();
+    // |z|² against the squared band bounds (no square root needed).
+    let (x, y) = (z.re.abs().to_f64_exact(), z.im.abs().to_f64_exact());
+    let r2 = if x.max(y) < 1e150 { x * x + y * y } else { f64::INFINITY };
     let mut depth = 0;
     for &(bound, d) in T::E1_CF_DEPTH {
         depth = d;
-        if r < bound {
+        if r2 < bound * bound {
             break;
         }
     }

@@ -15,8 +15,8 @@ use crate::real::Real;
 #[inline]
 pub fn in_series_region<T: Real>(z: C<T>) -> bool {
     let (a, b) = T::E1_SERIES_ELLIPSE;
-    let x = z.re / T::lit(a);
-    let y = z.im / T::lit(b);
+    let x = z.re * T::lit(1.0 / a);
+    let y = z.im * T::lit(1.0 / b);
     x * x + y * y < T::one()
 }
 
