@@ -66,11 +66,10 @@ impl<T: Real> Canonical<T> {
         let x_h = dot(to_light, d);
         // o + x_h d − p = x_h d − (p − o)
         let perp = [x_h * d[0] - to_light[0], x_h * d[1] - to_light[1], x_h * d[2] - to_light[2]];
-        // A light closer to the line than the rounding error of computing that distance
-        // (a few ulps of |p − o|) is on the line: h = 0, so that "on the segment" gives +∞
-        // and "on the line outside it" the exact limit, instead of 1/h of rounding noise.
+        // Only an exact h = 0 puts the light on the line: a light within rounding distance of
+        // it gets the (huge, finite) value of the h that rounding produced, which is of the
+        // right order, rather than +∞.
         let h = length(perp);
-        let h = if h <= T::lit(4.0) * T::epsilon() * length(to_light) { T::zero() } else { h };
         let d_c = if h > T::zero() { dot(perp, a) / h } else { T::zero() };
         Canonical { h, x_h, d_el: dot(d, a), d_c, t0, t1 }
     }

@@ -294,8 +294,14 @@ fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, wi
     if !half.second {
         return c;
     }
-    // Q_0 = T_1 − conj(C); T_1 = s_1(Hv_s) − e^{−HΔv} s_1(Hv_e).
-    let n1 = if with_re {
+    // Q_0 = T_1 − conj(C), so Re Q_0 = N_1 = ∫ e^{…} dv / (v(1+v²)).
+    let n1 = if !with_re {
+        T::zero()
+    } else if half.y_hi <= T::lit(0.25) {
+        n1_series(half)
+    } else {
+        // T_1 − Re C with T_1 = s_1(Hv_s) − e^{−HΔv} s_1(Hv_e): the two agree to a factor
+        // 1 + v² ≤ 17 here, so the difference keeps its accuracy.
         let mut e_s = [T::zero(); 1];
         en_scaled(big_h * v_s, &mut e_s);
         let mut tail = T::zero();
@@ -305,10 +311,51 @@ fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, wi
             tail = (e_e[0] - s_e.re) * decay;
         }
         (e_s[0] - s_s.re) - tail
-    } else {
-        T::zero()
     };
     C::new(n1, c.im)
+}
+
+/// `N_1 = ∫ e^{−H(v−v_s)} dv/(v(1+v²))` far from the foot (`y ≤ 1/4`), where `T_1 − Re C`
+/// would cancel (both ≈ `∫ e^{…}/v`, their difference `≈ y²` times smaller): the convergent
+/// expansion `1/(v(1+v²)) = Σ_j (−1)^j v^{−3−2j}` (ratio `y² ≤ 1/16`) gives
+/// `N_1 = Σ_j (−1)^j T_{3+2j}`, with `T_n` as in [`r_second`].
+fn n1_series<T: Real>(half: &Half<T>) -> T {
+    // Terms until (1/16)^J < ε: 13 in f64, 6 in f32.
+    const ORDERS: usize = 3 + 2 * 13;
+    let terms = if T::epsilon() < T::lit(1e-10) { 13 } else { 6 };
+    let top = 3 + 2 * (terms - 1);
+    let mut t = [T::zero(); ORDERS + 1];
+    t_moments(half, &mut t[..top]);
+    let mut sum = T::zero();
+    for j in (0..terms).rev() {
+        let tn = t[3 + 2 * j - 1];
+        sum = if j % 2 == 0 { sum + tn } else { sum - tn };
+    }
+    sum
+}
+
+/// `out[n−1] = T_n = ∫_{v_s}^{v_e} e^{−H(v−v_s)} v^{−n} dv = y_hi^{n−1} s_n(Hv_s) − e^{−HΔv} y_lo^{n−1} s_n(Hv_e)`
+/// for `n ≥ 2` (`out[0]` is left 0; `T_1` needs the log-regularised forms).
+fn t_moments<T: Real>(half: &Half<T>, out: &mut [T]) {
+    const MAX: usize = 32;
+    let n = out.len().min(MAX);
+    let big_h = half.big_h;
+    let mut s_s = [T::zero(); MAX];
+    en_scaled(big_h * half.y_hi.recip(), &mut s_s[..n]);
+    let far_end = half.y_lo > T::zero();
+    let mut s_e = [T::zero(); MAX];
+    let decay = if far_end { (-big_h * half.dv).exp() } else { T::zero() };
+    if far_end {
+        en_scaled(big_h * half.y_lo.recip(), &mut s_e[..n]);
+    }
+    let (mut p_hi, mut p_lo) = (half.y_hi, half.y_lo);
+    for order in 2..=n {
+        let head = p_hi * s_s[order - 1];
+        let tail = if far_end { p_lo * s_e[order - 1] * decay } else { T::zero() };
+        out[order - 1] = head - tail;
+        p_hi = p_hi * half.y_hi;
+        p_lo = p_lo * half.y_lo;
+    }
 }
 
 /// `R_j = ∫ e^{−H(y − y_lo)} (y − y_c)^j dy` on the first half, from
@@ -380,24 +427,8 @@ fn phi_moments<T: Real>(x: T, out: &mut [T]) {
 fn r_second<T: Real>(half: &Half<T>, yc: T, r: &mut [T]) {
     const MAX: usize = MAX_TERMS + 2;
     let n = r.len().min(MAX - 2);
-    let big_h = half.big_h;
-    let mut s_s = [T::zero(); MAX];
-    en_scaled(big_h * half.y_hi.recip(), &mut s_s[..n + 2]);
-    let mut s_e = [T::zero(); MAX];
-    let far_end = half.y_lo > T::zero();
-    let decay = if far_end { (-big_h * half.dv).exp() } else { T::zero() };
-    if far_end {
-        en_scaled(big_h * half.y_lo.recip(), &mut s_e[..n + 2]);
-    }
     let mut t = [T::zero(); MAX];
-    let (mut p_hi, mut p_lo) = (half.y_hi, half.y_lo);
-    for i in 0..n {
-        let order = i + 2; // T_{i+2} = y_hi^{i+1} s_{i+2}(…) − …
-        let head = p_hi * s_s[order - 1];
-        let tail = if far_end { p_lo * s_e[order - 1] * decay } else { T::zero() };
-        t[i] = head - tail;
-        p_hi = p_hi * half.y_hi;
-        p_lo = p_lo * half.y_lo;
-    }
-    binomial_shift(&t[..n], -yc, r);
+    t_moments(half, &mut t[..n + 2]);
+    // R_j = Σ_i C(j,i) (−y_c)^{j−i} T_{i+2}
+    binomial_shift(&t[1..n + 1], -yc, r);
 }

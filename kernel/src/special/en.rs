@@ -1,11 +1,13 @@
 //! Real generalised exponential integrals `E_n(x) = ∫₁^∞ e^{−xt} t^{−n} dt`, scaled by `e^x`.
 //!
 //! Recurrence `E_{n+1}(x) = (e^{−x} − x E_n(x))/n` (A&S 5.1.14), i.e. for `s_n = e^x E_n(x)`:
-//! `s_{n+1} = (1 − x s_n)/n`. It is stable upwards where `x ≲ n` and downwards where `x ≳ n`,
-//! so for `x ≤ K` (the highest order asked for) we go up from `s_1`, and for `x > K` down from
-//! `s_K`, which its own continued fraction gives quickly there (A&S 5.1.22).
+//! `s_{n+1} = (1 − x s_n)/n`. Going up multiplies errors by `x/n`, going down by `n/x`: each
+//! direction is stable on its own side of `n ≈ x` (Miller's rule). So we start from a pivot
+//! order `n* ≈ x` — `s_1` from the complex `E1` routine where `x` is in its series region,
+//! otherwise `s_{n*}` from its continued fraction (A&S 5.1.22) — and recur away from it
+//! both ways.
 
-use super::e1::e1_scaled;
+use super::e1::{e1_scaled, in_series_region};
 use super::C;
 use crate::real::Real;
 
@@ -23,23 +25,27 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
         }
         return;
     }
-    if x <= T::from(k_max).unwrap() {
+    let pivot = if in_series_region(C::new(x, T::zero())) {
         out[0] = e1_scaled(C::new(x, T::zero())).re;
-        for n in 1..k_max {
-            out[n] = (T::one() - x * out[n - 1]) / T::from(n).unwrap();
-        }
+        1
     } else {
-        out[k_max - 1] = en_scaled_cf(x, k_max);
-        for n in (1..k_max).rev() {
-            // s_n = (1 − n s_{n+1}) / x
-            out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) / x;
-        }
+        let n = x.ceil().to_usize().unwrap_or(k_max).clamp(1, k_max);
+        out[n - 1] = en_scaled_cf(x, n);
+        n
+    };
+    for n in pivot..k_max {
+        out[n] = (T::one() - x * out[n - 1]) / T::from(n).unwrap();
+    }
+    for n in (1..pivot).rev() {
+        // s_n = (1 − n s_{n+1}) / x
+        out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) / x;
     }
 }
 
 /// `e^x E_n(x)` by the continued fraction
-/// `1/(x + n − 1·n/(x + n + 2 − 2(n+1)/(x + n + 4 − …)))`, for `x > n`, with the same tail
-/// estimate and depth table as the complex `E1` fraction (order 1 converges slowest).
+/// `1/(x + n − 1·n/(x + n + 2 − 2(n+1)/(x + n + 4 − …)))`, outside the `E1` series region,
+/// with the same tail estimate and depth table as the complex `E1` fraction (order 1
+/// converges slowest, so the table is conservative for `n > 1`).
 fn en_scaled_cf<T: Real>(x: T, n: usize) -> T {
     let xf = x.to_f64_exact();
     let mut depth = 0;
