@@ -2,4 +2,6 @@
 //! CPU kernel; shader emission through naga (for build scripts); the GPU backend.
 
 pub mod eval;
+pub mod layout;
+pub mod targets;
 pub mod scene_json;

@@ -9,6 +9,8 @@ airlight — analytic fog glow (single-scattered air-light) of point and spot li
 
 USAGE:
     airlight eval [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
+    airlight emit [--out DIR] [--terms 4|6|4,6] [--targets wgsl,glsl,spirv,hlsl,msl]
+    airlight check [--dir DIR] [--terms ...] [--targets ...]
     airlight --help
 
 COMMANDS:
@@ -26,6 +28,13 @@ COMMANDS:
                                | \"schlick\" (k) | \"cornette_shanks\" (g)
                                | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
             t_max null means +infinity; unknown fields are ignored.
+
+    emit    Write the shaders (compute entry point and include library, per target and term
+            count) through naga into DIR (default: the workspace's shaders-out/). Everything
+            is rendered and validated before anything is written.
+
+    check   Exit 1 and list the stale, missing or unexpected files when DIR (default
+            shaders-out/) is not what `emit` would write now.
 
 OPTIONS (eval):
     --precision f32|f64              kernel precision (default f64)
@@ -51,6 +60,8 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         "eval" => cmd_eval(&args[1..]),
+        "emit" => cmd_emit(&args[1..], false),
+        "check" => cmd_emit(&args[1..], true),
         other => fail(&format!("unknown command '{other}'")),
     }
 }
@@ -91,5 +102,68 @@ fn cmd_eval(args: &[String]) -> ExitCode {
     match eval::run(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail(&format!("I/O error: {e}")),
+    }
+}
+
+fn cmd_emit(args: &[String], check_only: bool) -> ExitCode {
+    use airlight_codegen::targets::{self, EmitOptions, Target};
+    let mut opts = EmitOptions::default();
+    let mut dir = targets::default_out_dir();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
+        let r: Result<(), String> = match a.as_str() {
+            "--help" | "-h" => {
+                print!("{HELP}");
+                return ExitCode::SUCCESS;
+            }
+            "--out" | "--dir" => value(a).map(|v| dir = v.into()),
+            "--terms" => value("--terms").and_then(|v| {
+                v.split(',')
+                    .map(|t| t.trim().parse::<usize>().map_err(|_| format!("--terms: '{t}' is not a number")))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map(|t| opts.terms = t)
+            }),
+            "--targets" => value("--targets").and_then(|v| {
+                v.split(',').map(|t| Target::parse(t).map_err(|e| e.to_string())).collect::<Result<Vec<_>, _>>().map(|t| opts.targets = t)
+            }),
+            other => Err(format!("unknown option '{other}'")),
+        };
+        if let Err(e) = r {
+            return fail(&e);
+        }
+    }
+    if check_only {
+        match targets::check(&dir, &opts) {
+            Ok(problems) if problems.is_empty() => {
+                println!("{}: up to date", dir.display());
+                ExitCode::SUCCESS
+            }
+            Ok(problems) => {
+                for p in &problems {
+                    println!("{p}");
+                }
+                eprintln!("airlight: {} is stale ({} files); run `airlight emit`", dir.display(), problems.len());
+                ExitCode::from(1)
+            }
+            Err(e) => error_line(&e),
+        }
+    } else {
+        match targets::emit(&dir, &opts) {
+            Ok(files) => {
+                println!("wrote {} files to {}", files.len(), dir.display());
+                ExitCode::SUCCESS
+            }
+            Err(e) => error_line(&e),
+        }
+    }
+}
+
+/// One error line; usage errors exit 2, everything else 1.
+fn error_line(e: &airlight_codegen::targets::EmitError) -> ExitCode {
+    eprintln!("airlight: {e}");
+    match e {
+        airlight_codegen::targets::EmitError::Usage(_) => ExitCode::from(2),
+        _ => ExitCode::from(1),
     }
 }

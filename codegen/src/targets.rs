@@ -1,0 +1,395 @@
+//! Shader emission: the WGSL source of truth (`codegen/shader/*.wgsl`) → naga front end →
+//! validator → naga back ends, in the two shapes engines use (DESIGN §5):
+//!
+//! * the **compute entry point** `airlight_main` over a storage buffer of records
+//!   ([`crate::layout`]): WGSL, GLSL 450, SPIR-V 1.0 (Vulkan 1.0), HLSL (SM 5.1), MSL;
+//! * the **include library**: the functions alone, every public name prefixed `airlight_`:
+//!   WGSL, GLSL 450, GLSL ES 3.00 (WebGL2), HLSL, MSL. Back ends other than WGSL need an
+//!   entry point to write anything, so the library module gets a dummy one
+//!   (`airlight_library_entry`), written with `INCLUDE_UNUSED_ITEMS`, and cut away again at
+//!   its signature.
+//!
+//! Every artifact comes from a module naga has validated; output is deterministic, so
+//! `check` can compare the committed `shaders-out/` byte for byte.
+
+use naga::back::{glsl, hlsl, msl, spv, wgsl};
+use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
+use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+use std::collections::BTreeMap;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+const LIBRARY: &str = include_str!("../shader/airlight.wgsl");
+const COMPUTE: &str = include_str!("../shader/compute.wgsl");
+const LIBRARY_ENTRY: &str = "airlight_library_entry";
+const COMPUTE_ENTRY: &str = "airlight_main";
+
+/// A dummy entry point that keeps every library function reachable for the back ends.
+const LIBRARY_STUB: &str = "
+@compute @workgroup_size(1)
+fn airlight_library_entry() {
+    let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u));
+}
+";
+
+/// A fragment stub for GLSL ES 3.00, which has no compute shaders.
+const LIBRARY_STUB_ES: &str = "
+@fragment
+fn airlight_library_entry() -> @location(0) vec4<f32> {
+    let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u));
+    return vec4<f32>(r.in_scatter);
+}
+";
+
+/// Supported expansion term counts.
+pub const TERM_COUNTS: [usize; 2] = [4, 6];
+
+/// An output language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Target {
+    /// WGSL (wgpu, Bevy, browsers).
+    Wgsl,
+    /// GLSL 450 (Vulkan/OpenGL, Godot) and GLSL ES 3.00 (WebGL2, library only).
+    Glsl,
+    /// SPIR-V 1.0 binary (Vulkan 1.0).
+    Spirv,
+    /// HLSL, shader model 5.1 (D3D, Unity, Unreal).
+    Hlsl,
+    /// Metal Shading Language.
+    Msl,
+}
+
+impl Target {
+    /// All targets.
+    pub const ALL: [Target; 5] = [Target::Wgsl, Target::Glsl, Target::Spirv, Target::Hlsl, Target::Msl];
+
+    /// Parses `wgsl`, `glsl`, `spirv` (or `spv`), `hlsl`, `msl` (or `metal`).
+    pub fn parse(s: &str) -> Result<Target, EmitError> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "wgsl" => Ok(Target::Wgsl),
+            "glsl" => Ok(Target::Glsl),
+            "spirv" | "spv" => Ok(Target::Spirv),
+            "hlsl" => Ok(Target::Hlsl),
+            "msl" | "metal" => Ok(Target::Msl),
+            other => Err(EmitError::Usage(format!("unknown target '{other}' (expected wgsl, glsl, spirv, hlsl, msl)"))),
+        }
+    }
+}
+
+/// What to emit.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EmitOptions {
+    /// Term counts (each 4 or 6).
+    pub terms: Vec<usize>,
+    /// Output languages.
+    pub targets: Vec<Target>,
+}
+
+impl Default for EmitOptions {
+    fn default() -> Self {
+        EmitOptions { terms: TERM_COUNTS.to_vec(), targets: Target::ALL.to_vec() }
+    }
+}
+
+/// Why emission failed.
+#[derive(Debug)]
+pub enum EmitError {
+    /// Bad options (unknown target, unsupported term count).
+    Usage(String),
+    /// The shader source did not parse or validate, or a back end failed.
+    Shader(String),
+    /// Writing the output failed.
+    Io(PathBuf, std::io::Error),
+}
+
+impl fmt::Display for EmitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            EmitError::Usage(m) => write!(f, "{m}"),
+            EmitError::Shader(m) => write!(f, "shader: {m}"),
+            EmitError::Io(p, e) => write!(f, "cannot write {}: {e}", p.display()),
+        }
+    }
+}
+
+impl std::error::Error for EmitError {}
+
+/// The WGSL source for `terms` expansion terms: the library, plus the compute entry point
+/// when `compute` is set.
+pub fn source(terms: usize, compute: bool) -> String {
+    let zeros = vec!["0.0"; terms].join(", ");
+    let mut s = LIBRARY.replace("@TERMS@", &terms.to_string()).replace("@ZEROS_TERMS@", &zeros);
+    if compute {
+        s.push_str(COMPUTE);
+    }
+    s
+}
+
+/// Parses and validates WGSL.
+pub fn validate(src: &str) -> Result<(naga::Module, ModuleInfo), EmitError> {
+    let module = naga::front::wgsl::parse_str(src).map_err(|e| EmitError::Shader(e.emit_to_string(src)))?;
+    let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+        .validate(&module)
+        .map_err(|e| EmitError::Shader(e.emit_to_string(src)))?;
+    Ok((module, info))
+}
+
+/// Index clamping everywhere: out-of-range indices read a valid element (the shader only
+/// indexes in range; this makes the guarantee explicit and identical on every target).
+fn policies() -> BoundsCheckPolicies {
+    BoundsCheckPolicies {
+        index: BoundsCheckPolicy::Restrict,
+        buffer: BoundsCheckPolicy::Restrict,
+        image_load: BoundsCheckPolicy::Restrict,
+        binding_array: BoundsCheckPolicy::Restrict,
+    }
+}
+
+fn header(comment: &str, terms: usize, what: &str) -> String {
+    format!(
+        "{comment} airlight {what}, {terms} expansion terms, f32. Generated by `airlight emit` from\n\
+         {comment} codegen/shader/*.wgsl through naga {}; do not edit. See shaders-out/README.md.\n",
+        "30"
+    )
+}
+
+/// Cuts `text` before the first line that contains `marker` (the dummy entry point).
+fn cut_before(text: &str, marker: &str) -> Result<String, EmitError> {
+    let mut out = String::new();
+    let mut found = false;
+    for line in text.lines() {
+        if line.contains(marker) {
+            found = true;
+            break;
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    if !found {
+        return Err(EmitError::Shader(format!("library stub '{marker}' not found in back-end output")));
+    }
+    // drop trailing attribute lines that belonged to the stub (HLSL [numthreads], MSL none)
+    while out.trim_end().ends_with(']') && out.trim_end().rsplit('\n').next().is_some_and(|l| l.trim_start().starts_with('[')) {
+        let t = out.trim_end().to_string();
+        let cut = t.rfind('\n').map(|i| i + 1).unwrap_or(0);
+        out = t[..cut].to_string();
+    }
+    Ok(out.trim_end().to_string() + "\n")
+}
+
+fn glsl_text(module: &naga::Module, info: &ModuleInfo, version: glsl::Version, stage: naga::ShaderStage, entry: &str, flags: glsl::WriterFlags) -> Result<String, EmitError> {
+    // records at binding 0, results at binding 1 of set/group 0
+    let mut binding_map = glsl::BindingMap::default();
+    binding_map.insert(naga::ResourceBinding { group: 0, binding: 0 }, 0);
+    binding_map.insert(naga::ResourceBinding { group: 0, binding: 1 }, 1);
+    let options = glsl::Options { version, writer_flags: flags, binding_map, zero_initialize_workgroup_memory: true };
+    let pipeline = glsl::PipelineOptions { shader_stage: stage, entry_point: entry.to_string(), multiview: None };
+    let mut out = String::new();
+    let mut w = glsl::Writer::new(&mut out, module, info, &options, &pipeline, policies()).map_err(|e| EmitError::Shader(format!("glsl: {e}")))?;
+    w.write().map_err(|e| EmitError::Shader(format!("glsl: {e}")))?;
+    Ok(out)
+}
+
+fn hlsl_text(module: &naga::Module, info: &ModuleInfo, entry: &str) -> Result<String, EmitError> {
+    let options = hlsl::Options { shader_model: hlsl::ShaderModel::V5_1, ..Default::default() };
+    let pipeline = hlsl::PipelineOptions { entry_point: Some((naga::ShaderStage::Compute, entry.to_string())) };
+    let mut out = String::new();
+    let mut w = hlsl::Writer::new(&mut out, &options, &pipeline);
+    w.write(module, info, None).map_err(|e| EmitError::Shader(format!("hlsl: {e}")))?;
+    Ok(portable_hlsl_zero_arrays(&out))
+}
+
+/// naga zero-initialises local arrays as `(float[N])0`, a cast FXC and DXC accept but other
+/// HLSL front ends (glslang) reject; the initialiser list `{0, …}` means the same everywhere.
+fn portable_hlsl_zero_arrays(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("(float[") {
+        let (head, tail) = rest.split_at(i);
+        out.push_str(head);
+        let close = tail.find("])0").filter(|&c| tail[7..c].bytes().all(|b| b.is_ascii_digit()));
+        match close {
+            Some(c) => {
+                let n: usize = tail[7..c].parse().unwrap_or(0);
+                out.push('{');
+                out.push_str(&vec!["0.0"; n].join(", "));
+                out.push('}');
+                rest = &tail[c + 3..];
+            }
+            None => {
+                out.push_str("(float[");
+                rest = &tail[7..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+fn msl_text(module: &naga::Module, info: &ModuleInfo, entry: &str) -> Result<String, EmitError> {
+    let options = msl::Options { lang_version: (2, 0), bounds_check_policies: policies(), fake_missing_bindings: true, ..Default::default() };
+    let pipeline = msl::PipelineOptions { entry_point: Some((naga::ShaderStage::Compute, entry.to_string())), ..Default::default() };
+    let (s, _) = msl::write_string(module, info, &options, &pipeline).map_err(|e| EmitError::Shader(format!("msl: {e}")))?;
+    Ok(s)
+}
+
+/// SPIR-V words of the compute entry point (Vulkan 1.0 / SPIR-V 1.0, no debug info).
+pub fn spirv_words(terms: usize) -> Result<Vec<u32>, EmitError> {
+    let (module, info) = validate(&source(terms, true))?;
+    let options = spv::Options {
+        lang_version: (1, 0),
+        flags: spv::WriterFlags::ADJUST_COORDINATE_SPACE,
+        bounds_check_policies: policies(),
+        ..Default::default()
+    };
+    let pipeline = spv::PipelineOptions { shader_stage: naga::ShaderStage::Compute, entry_point: COMPUTE_ENTRY.to_string() };
+    spv::write_vec(&module, &info, &options, Some(&pipeline)).map_err(|e| EmitError::Shader(format!("spirv: {e}")))
+}
+
+fn check_options(opts: &EmitOptions) -> Result<(), EmitError> {
+    if opts.terms.is_empty() || opts.targets.is_empty() {
+        return Err(EmitError::Usage("nothing to emit: give at least one term count and one target".into()));
+    }
+    for &t in &opts.terms {
+        if !TERM_COUNTS.contains(&t) {
+            return Err(EmitError::Usage(format!("unsupported term count {t} (expected 4 or 6)")));
+        }
+    }
+    Ok(())
+}
+
+/// Renders every artifact in memory: relative file name → bytes.
+pub fn render(opts: &EmitOptions) -> Result<BTreeMap<String, Vec<u8>>, EmitError> {
+    check_options(opts)?;
+    let mut files = BTreeMap::new();
+    for &n in &opts.terms {
+        let (cm, ci) = validate(&source(n, true))?;
+        let lib_src = source(n, false) + LIBRARY_STUB;
+        let (lm, li) = validate(&lib_src)?;
+        let (lone, lone_info) = validate(&source(n, false))?;
+        for &t in &opts.targets {
+            match t {
+                Target::Wgsl => {
+                    let flags = wgsl::WriterFlags::empty();
+                    let c = wgsl::write_string(&cm, &ci, flags).map_err(|e| EmitError::Shader(format!("wgsl: {e}")))?;
+                    files.insert(format!("wgsl/airlight_{n}.wgsl"), (header("//", n, "compute shader (entry airlight_main)") + &c).into_bytes());
+                    let l = wgsl::write_string(&lone, &lone_info, flags).map_err(|e| EmitError::Shader(format!("wgsl: {e}")))?;
+                    files.insert(format!("wgsl/airlight_lib_{n}.wgsl"), (header("//", n, "include library") + &l).into_bytes());
+                }
+                Target::Glsl => {
+                    let c = glsl_text(&cm, &ci, glsl::Version::Desktop(450), naga::ShaderStage::Compute, COMPUTE_ENTRY, glsl::WriterFlags::empty())?;
+                    files.insert(format!("glsl/airlight_{n}.comp"), insert_after_version(&c, &header("//", n, "compute shader (GLSL 450)")).into_bytes());
+                    let l = glsl_text(&lm, &li, glsl::Version::Desktop(450), naga::ShaderStage::Compute, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
+                    let l = glsl_library(&l)?;
+                    files.insert(format!("glsl/airlight_lib_{n}.glsl"), (header("//", n, "include library (GLSL 450)") + &l).into_bytes());
+                    let (em, ei) = validate(&(source(n, false) + LIBRARY_STUB_ES))?;
+                    let e = glsl_text(&em, &ei, glsl::Version::Embedded { version: 300, is_webgl: true }, naga::ShaderStage::Fragment, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
+                    let e = glsl_library(&e)?;
+                    files.insert(format!("glsl/airlight_lib_{n}_es300.glsl"), (header("//", n, "include library (GLSL ES 3.00 / WebGL2)") + &e).into_bytes());
+                }
+                Target::Spirv => {
+                    let words = spirv_words(n)?;
+                    files.insert(format!("spirv/airlight_{n}.spv"), words.iter().flat_map(|w| w.to_le_bytes()).collect());
+                }
+                Target::Hlsl => {
+                    let c = hlsl_text(&cm, &ci, COMPUTE_ENTRY)?;
+                    files.insert(format!("hlsl/airlight_{n}.hlsl"), (header("//", n, "compute shader (HLSL SM 5.1, entry airlight_main)") + &c).into_bytes());
+                    let l = hlsl_text(&lm, &li, LIBRARY_ENTRY)?;
+                    let l = cut_before(&l, LIBRARY_ENTRY)?;
+                    files.insert(format!("hlsl/airlight_lib_{n}.hlsl"), (header("//", n, "include library (HLSL)") + &l).into_bytes());
+                }
+                Target::Msl => {
+                    let c = msl_text(&cm, &ci, COMPUTE_ENTRY)?;
+                    files.insert(format!("msl/airlight_{n}.metal"), (header("//", n, "compute kernel (MSL 2.0, entry airlight_main)") + &c).into_bytes());
+                    let l = msl_text(&lm, &li, LIBRARY_ENTRY)?;
+                    let l = cut_before(&l, LIBRARY_ENTRY)?;
+                    files.insert(format!("msl/airlight_lib_{n}.metal"), (header("//", n, "include library (MSL)") + &l).into_bytes());
+                }
+            }
+        }
+    }
+    Ok(files)
+}
+
+fn insert_after_version(text: &str, header: &str) -> String {
+    match text.split_once('\n') {
+        Some((first, rest)) if first.starts_with("#version") => format!("{first}\n{header}{rest}"),
+        _ => format!("{header}{text}"),
+    }
+}
+
+/// The GLSL library: naga's output without the `#version`, `#extension` and `precision`
+/// lines, the stub's interface declarations and the stub itself (cut at `void main(`).
+fn glsl_library(text: &str) -> Result<String, EmitError> {
+    let body = cut_before(text, "void main(")?;
+    let kept: Vec<&str> = body
+        .lines()
+        .filter(|l| !l.starts_with("#version") && !l.starts_with("#extension") && !l.starts_with("layout(") && !l.starts_with("precision "))
+        .collect();
+    Ok(kept.join("\n").trim().to_string() + "\n")
+}
+
+/// The workspace's committed output folder.
+pub fn default_out_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").join("shaders-out")
+}
+
+/// Writes every artifact under `out_dir`. Nothing is half-written: everything is rendered and
+/// validated first, then written to temporary files (removed again if any write fails), and
+/// only then renamed into place.
+pub fn emit(out_dir: &Path, opts: &EmitOptions) -> Result<Vec<PathBuf>, EmitError> {
+    let files = render(opts)?;
+    let mut staged: Vec<(PathBuf, PathBuf)> = Vec::new();
+    let cleanup = |staged: &[(PathBuf, PathBuf)]| {
+        for (tmp, _) in staged {
+            let _ = std::fs::remove_file(tmp);
+        }
+    };
+    for (rel, bytes) in &files {
+        let path = out_dir.join(rel);
+        let dir = path.parent().unwrap().to_path_buf();
+        let tmp = path.with_extension("tmp");
+        let result = std::fs::create_dir_all(&dir)
+            .map_err(|e| EmitError::Io(dir.clone(), e))
+            .and_then(|_| std::fs::write(&tmp, bytes).map_err(|e| EmitError::Io(tmp.clone(), e)));
+        if let Err(e) = result {
+            cleanup(&staged);
+            return Err(e);
+        }
+        staged.push((tmp, path));
+    }
+    let mut written = Vec::new();
+    for (tmp, path) in &staged {
+        std::fs::rename(tmp, path).map_err(|e| EmitError::Io(path.clone(), e))?;
+        written.push(path.clone());
+    }
+    Ok(written)
+}
+
+/// Compares `dir` with what the current source emits: the stale, missing and unexpected
+/// files (empty when up to date). Only the folders of the requested targets are compared.
+pub fn check(dir: &Path, opts: &EmitOptions) -> Result<Vec<String>, EmitError> {
+    let files = render(opts)?;
+    let mut problems = Vec::new();
+    for (rel, bytes) in &files {
+        match std::fs::read(dir.join(rel)) {
+            Ok(old) if &old == bytes => {}
+            Ok(_) => problems.push(format!("stale: {rel}")),
+            Err(_) => problems.push(format!("missing: {rel}")),
+        }
+    }
+    let folders: std::collections::BTreeSet<&str> = files.keys().filter_map(|k| k.split('/').next()).collect();
+    for folder in folders {
+        if let Ok(rd) = std::fs::read_dir(dir.join(folder)) {
+            for entry in rd.flatten() {
+                let rel = format!("{folder}/{}", entry.file_name().to_string_lossy());
+                if !files.contains_key(&rel) {
+                    problems.push(format!("unexpected: {rel}"));
+                }
+            }
+        }
+    }
+    Ok(problems)
+}
