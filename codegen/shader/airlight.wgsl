@@ -219,9 +219,17 @@ fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
     return 1.0 / (x + nf - nf / t);
 }
 
-/// out[k] = e^x E_{k+1}(x), k < count ≤ AIRLIGHT_SCRATCH, x > 0; recurrences away from the
+/// out[k] = e^x E_{k+1}(x), k < count ≤ AIRLIGHT_SCRATCH, x ≥ 0; recurrences away from the
 /// pivot order n* ≈ x (Miller's rule).
 fn airlight_en_scaled(x: f32, count: u32, out: ptr<function, array<f32, AIRLIGHT_SCRATCH>>) {
+    if (x == 0.0) {
+        // E_1(0) = +∞ (never used at x = 0), E_n(0) = 1/(n − 1)
+        (*out)[0] = AIRLIGHT_FLT_MAX;
+        for (var n = 2u; n <= AIRLIGHT_SCRATCH; n++) {
+            (*out)[n - 1u] = 1.0 / f32(n - 1u);
+        }
+        return;
+    }
     var pivot = 1u;
     if (airlight_in_series_region(vec2<f32>(x, 0.0))) {
         (*out)[0] = airlight_e1_scaled(vec2<f32>(x, 0.0)).x;

@@ -13,9 +13,20 @@ pub enum Precision {
     F64,
 }
 
+/// Where records are evaluated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Backend {
+    /// The CPU kernel.
+    Cpu,
+    /// The emitted compute shader (shaders-out/wgsl) through wgpu, in f32.
+    Gpu,
+}
+
 /// Options of `airlight eval`.
 #[derive(Clone, Copy, Debug)]
 pub struct EvalOptions {
+    /// CPU kernel or GPU shader.
+    pub backend: Backend,
     /// Kernel precision.
     pub precision: Precision,
     /// Expansion terms: 4 or 6.
@@ -26,7 +37,7 @@ pub struct EvalOptions {
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { precision: Precision::F64, terms: 6, expansion: Expansion::Chebyshev }
+        EvalOptions { backend: Backend::Cpu, precision: Precision::F64, terms: 6, expansion: Expansion::Chebyshev }
     }
 }
 
@@ -64,6 +75,54 @@ fn eval_line<T: Real>(line: &str, line_no: usize, opts: &EvalOptions) -> String 
         Ok(rec) => format_value(in_scatter(&rec, opts.terms, opts.expansion)),
         Err(e) => format_error(line_no, &e.to_string()),
     }
+}
+
+/// The committed WGSL compute shader for `terms` (4 or 6).
+pub fn compute_wgsl(terms: usize) -> &'static str {
+    match terms {
+        4 => include_str!("../../shaders-out/wgsl/airlight_4.wgsl"),
+        _ => include_str!("../../shaders-out/wgsl/airlight_6.wgsl"),
+    }
+}
+
+/// Runs `eval` on the GPU: every record is parsed and checked as on the CPU (bad lines get
+/// the same error lines), the valid ones are packed and run through the compute shader.
+pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), String> {
+    use crate::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    let mut lines: Vec<Result<(), String>> = Vec::new();
+    let mut records = Vec::new();
+    for (i, line) in input.lines().enumerate() {
+        let line = line.map_err(|e| e.to_string())?;
+        if line.trim().is_empty() {
+            continue;
+        }
+        match parse_line::<f32>(&line) {
+            Ok(r) => {
+                records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
+                lines.push(Ok(()));
+            }
+            Err(e) => lines.push(Err(format_error(i + 1, &e.to_string()))),
+        }
+    }
+    let gpu = crate::gpu::Gpu::new()?;
+    let results = gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms)), &records, true)?;
+    let mut k = 0;
+    for l in lines {
+        let text = match l {
+            Err(e) => e,
+            Ok(()) => {
+                let (v, status) = unpack_result(&results[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);
+                k += 1;
+                match status {
+                    STATUS_OK => format_value(v),
+                    STATUS_INFINITE => format_value(f32::INFINITY),
+                    _ => "{\"error\":\"the shader rejected a record the CPU accepted\"}".to_string(),
+                }
+            }
+        };
+        writeln!(out, "{text}").map_err(|e| e.to_string())?;
+    }
+    out.flush().map_err(|e| e.to_string())
 }
 
 /// Runs `eval` over `input`, writing one line per non-empty input line to `out`.

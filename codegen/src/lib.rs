@@ -2,6 +2,7 @@
 //! CPU kernel; shader emission through naga (for build scripts); the GPU backend.
 
 pub mod eval;
+pub mod gpu;
 pub mod layout;
 pub mod targets;
 pub mod scene_json;

@@ -8,7 +8,7 @@ const HELP: &str = "\
 airlight — analytic fog glow (single-scattered air-light) of point and spot lights
 
 USAGE:
-    airlight eval [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
+    airlight eval [--backend cpu|gpu] [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
     airlight emit [--out DIR] [--terms 4|6|4,6] [--targets wgsl,glsl,spirv,hlsl,msl]
     airlight check [--dir DIR] [--terms ...] [--targets ...]
     airlight --help
@@ -37,6 +37,9 @@ COMMANDS:
             shaders-out/) is not what `emit` would write now.
 
 OPTIONS (eval):
+    --backend cpu|gpu                CPU kernel (default) or the emitted compute shader through
+                                     wgpu on this machine's GPU (f32; --precision and
+                                     --expansion do not apply)
     --precision f32|f64              kernel precision (default f64)
     --terms 4|6                      expansion terms (default 6; shaders use 4)
     --expansion chebyshev|taylor     polynomial expansion (default chebyshev)
@@ -76,6 +79,11 @@ fn cmd_eval(args: &[String]) -> ExitCode {
                 print!("{HELP}");
                 return ExitCode::SUCCESS;
             }
+            "--backend" => value("--backend").and_then(|v| match v.as_str() {
+                "cpu" => Ok(opts.backend = eval::Backend::Cpu),
+                "gpu" => Ok(opts.backend = eval::Backend::Gpu),
+                _ => Err(format!("--backend must be cpu or gpu, not '{v}'")),
+            }),
             "--precision" => value("--precision").and_then(|v| match v.as_str() {
                 "f32" => Ok(opts.precision = Precision::F32),
                 "f64" => Ok(opts.precision = Precision::F64),
@@ -99,6 +107,15 @@ fn cmd_eval(args: &[String]) -> ExitCode {
     }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
+    if opts.backend == eval::Backend::Gpu {
+        return match eval::run_gpu(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("airlight: {e}");
+                ExitCode::from(1)
+            }
+        };
+    }
     match eval::run(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail(&format!("I/O error: {e}")),

@@ -345,73 +345,96 @@ float airlight_en_scaled_cf(float x_1, uint n) {
 }
 
 void airlight_en_scaled(float x_2, uint count, inout float out_[16]) {
+    uint n_1 = 2u;
     uint pivot = 1u;
-    uint n_1 = 1u;
+    uint n_2 = 1u;
     bool local_1 = false;
     uint i_2 = 1u;
-    bool _e7 = airlight_in_series_region(vec2(x_2, 0.0));
-    if (_e7) {
-        vec2 _e11 = airlight_e1_scaled(vec2(x_2, 0.0));
-        out_[0] = _e11.x;
+    if ((x_2 == 0.0)) {
+        out_[0] = AIRLIGHT_FLT_MAX;
+        bool loop_init_4 = true;
+        while(true) {
+            if (!loop_init_4) {
+                uint _e23 = n_1;
+                n_1 = (_e23 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e9 = n_1;
+            if ((_e9 <= AIRLIGHT_SCRATCH)) {
+            } else {
+                break;
+            }
+            {
+                uint _e12 = n_1;
+                uint _e16 = n_1;
+                out_[(_e12 - 1u)] = (1.0 / float((_e16 - 1u)));
+            }
+        }
+        return;
+    }
+    bool _e29 = airlight_in_series_region(vec2(x_2, 0.0));
+    if (_e29) {
+        vec2 _e33 = airlight_e1_scaled(vec2(x_2, 0.0));
+        out_[0] = _e33.x;
     } else {
         pivot = uint(clamp(ceil(x_2), 1.0, float(count)));
-        uint _e18 = pivot;
-        uint _e22 = pivot;
-        float _e23 = airlight_en_scaled_cf(x_2, _e22);
-        out_[(_e18 - 1u)] = _e23;
-    }
-    bool loop_init_4 = true;
-    while(true) {
-        if (!loop_init_4) {
-            uint _e52 = n_1;
-            n_1 = (_e52 + 1u);
-        }
-        loop_init_4 = false;
-        uint _e26 = n_1;
-        if ((_e26 < AIRLIGHT_SCRATCH)) {
-        } else {
-            break;
-        }
-        {
-            uint _e29 = n_1;
-            uint _e30 = pivot;
-            if ((_e29 >= _e30)) {
-                uint _e34 = n_1;
-                local_1 = (_e34 < count);
-            } else {
-                local_1 = false;
-            }
-            bool _e37 = local_1;
-            if (_e37) {
-                uint _e38 = n_1;
-                uint _e40 = n_1;
-                float _e44 = out_[(_e40 - 1u)];
-                uint _e48 = n_1;
-                out_[_e38] = ((1.0 - (x_2 * _e44)) / float(_e48));
-            }
-        }
+        uint _e40 = pivot;
+        uint _e44 = pivot;
+        float _e45 = airlight_en_scaled_cf(x_2, _e44);
+        out_[(_e40 - 1u)] = _e45;
     }
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e76 = i_2;
-            i_2 = (_e76 + 1u);
+            uint _e74 = n_2;
+            n_2 = (_e74 + 1u);
         }
         loop_init_5 = false;
-        uint _e56 = i_2;
-        if ((_e56 < AIRLIGHT_SCRATCH)) {
+        uint _e48 = n_2;
+        if ((_e48 < AIRLIGHT_SCRATCH)) {
         } else {
             break;
         }
         {
-            uint _e59 = i_2;
-            uint _e60 = pivot;
-            if ((_e59 < _e60)) {
-                uint _e62 = pivot;
-                uint _e63 = i_2;
-                uint n_2 = (_e62 - _e63);
-                float _e70 = out_[n_2];
-                out_[(n_2 - 1u)] = ((1.0 - (float(n_2) * _e70)) / x_2);
+            uint _e51 = n_2;
+            uint _e52 = pivot;
+            if ((_e51 >= _e52)) {
+                uint _e56 = n_2;
+                local_1 = (_e56 < count);
+            } else {
+                local_1 = false;
+            }
+            bool _e59 = local_1;
+            if (_e59) {
+                uint _e60 = n_2;
+                uint _e62 = n_2;
+                float _e66 = out_[(_e62 - 1u)];
+                uint _e70 = n_2;
+                out_[_e60] = ((1.0 - (x_2 * _e66)) / float(_e70));
+            }
+        }
+    }
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e98 = i_2;
+            i_2 = (_e98 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e78 = i_2;
+        if ((_e78 < AIRLIGHT_SCRATCH)) {
+        } else {
+            break;
+        }
+        {
+            uint _e81 = i_2;
+            uint _e82 = pivot;
+            if ((_e81 < _e82)) {
+                uint _e84 = pivot;
+                uint _e85 = i_2;
+                uint n_3 = (_e84 - _e85);
+                float _e92 = out_[n_3];
+                out_[(n_3 - 1u)] = ((1.0 - (float(n_3) * _e92)) / x_2);
             }
         }
     }
@@ -460,13 +483,13 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c) {
         case 1u: {
             base = c;
             e = uint(p0_1);
-            bool loop_init_6 = true;
+            bool loop_init_7 = true;
             while(true) {
-                if (!loop_init_6) {
+                if (!loop_init_7) {
                     uint _e29 = i_3;
                     i_3 = (_e29 + 1u);
                 }
-                loop_init_6 = false;
+                loop_init_7 = false;
                 uint _e11 = i_3;
                 if ((_e11 < 11u)) {
                 } else {
@@ -544,13 +567,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     xi = _e15;
     float _e17[6] = airlight_zero_terms();
     values = _e17;
-    bool loop_init_7 = true;
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_7) {
+        if (!loop_init_8) {
             uint _e42 = j;
             j = (_e42 + 1u);
         }
-        loop_init_7 = false;
+        loop_init_8 = false;
         uint _e21 = j;
         if ((_e21 < AIRLIGHT_TERMS)) {
         } else {
@@ -575,13 +598,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     }
     float _e44[6] = airlight_zero_terms();
     cheb = _e44;
-    bool loop_init_8 = true;
+    bool loop_init_9 = true;
     while(true) {
-        if (!loop_init_8) {
+        if (!loop_init_9) {
             uint _e96 = j_1;
             j_1 = (_e96 + 1u);
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e48 = j_1;
         if ((_e48 < AIRLIGHT_TERMS)) {
         } else {
@@ -593,13 +616,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             float _e55 = xi[_e53];
             t_cur = _e55;
             k_2 = 0u;
-            bool loop_init_9 = true;
+            bool loop_init_10 = true;
             while(true) {
-                if (!loop_init_9) {
+                if (!loop_init_10) {
                     uint _e93 = k_2;
                     k_2 = (_e93 + 1u);
                 }
-                loop_init_9 = false;
+                loop_init_10 = false;
                 uint _e59 = k_2;
                 if ((_e59 < AIRLIGHT_TERMS)) {
                 } else {
@@ -635,13 +658,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             }
         }
     }
-    bool loop_init_10 = true;
+    bool loop_init_11 = true;
     while(true) {
-        if (!loop_init_10) {
+        if (!loop_init_11) {
             uint _e126 = k_3;
             k_3 = (_e126 + 1u);
         }
-        loop_init_10 = false;
+        loop_init_11 = false;
         uint _e102 = k_3;
         if ((_e102 < AIRLIGHT_TERMS)) {
         } else {
@@ -673,13 +696,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     t_k[1] = 1.0;
     float _e140 = cheb[0];
     hat[0] = _e140;
-    bool loop_init_11 = true;
+    bool loop_init_12 = true;
     while(true) {
-        if (!loop_init_11) {
+        if (!loop_init_12) {
             uint _e189 = k_4;
             k_4 = (_e189 + 1u);
         }
-        loop_init_11 = false;
+        loop_init_12 = false;
         uint _e143 = k_4;
         if ((_e143 < AIRLIGHT_TERMS)) {
         } else {
@@ -689,13 +712,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             float _e146[6] = airlight_zero_terms();
             t_next = _e146;
             i_4 = 0u;
-            bool loop_init_12 = true;
+            bool loop_init_13 = true;
             while(true) {
-                if (!loop_init_12) {
+                if (!loop_init_13) {
                     uint _e184 = i_4;
                     i_4 = (_e184 + 1u);
                 }
-                loop_init_12 = false;
+                loop_init_13 = false;
                 uint _e150 = i_4;
                 if ((_e150 < AIRLIGHT_TERMS)) {
                 } else {
@@ -734,13 +757,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     float noise = ((((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * pow(2.4142137, 6.0)) * _e198);
     float _e200[6] = airlight_zero_terms();
     a_3 = _e200;
-    bool loop_init_13 = true;
+    bool loop_init_14 = true;
     while(true) {
-        if (!loop_init_13) {
+        if (!loop_init_14) {
             uint _e240 = k_5;
             k_5 = (_e240 + 1u);
         }
-        loop_init_13 = false;
+        loop_init_14 = false;
         uint _e206 = k_5;
         if ((_e206 < AIRLIGHT_TERMS)) {
         } else {
@@ -794,13 +817,13 @@ float[6] airlight_moments_gauss(AirlightHalf half_) {
     float hw = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw);
     vec2 nodes[4] = vec2[4](vec2(-0.8611363, 0.34785485), vec2(-0.33998105, 0.65214515), vec2(0.33998105, 0.65214515), vec2(0.8611363, 0.34785485));
-    bool loop_init_14 = true;
+    bool loop_init_15 = true;
     while(true) {
-        if (!loop_init_14) {
+        if (!loop_init_15) {
             uint _e73 = j_2;
             j_2 = (_e73 + 1u);
         }
-        loop_init_14 = false;
+        loop_init_15 = false;
         uint _e23 = j_2;
         if ((_e23 < 4u)) {
         } else {
@@ -819,13 +842,13 @@ float[6] airlight_moments_gauss(AirlightHalf half_) {
             float _e48 = dv;
             p = (((nodes[_e42].y * hw) * exp((-(half_.big_h) * _e48))) / (1.0 + (y_2 * y_2)));
             k_6 = 0u;
-            bool loop_init_15 = true;
+            bool loop_init_16 = true;
             while(true) {
-                if (!loop_init_15) {
+                if (!loop_init_16) {
                     uint _e70 = k_6;
                     k_6 = (_e70 + 1u);
                 }
-                loop_init_15 = false;
+                loop_init_16 = false;
                 uint _e59 = k_6;
                 if ((_e59 < AIRLIGHT_TERMS)) {
                 } else {
@@ -883,13 +906,13 @@ void airlight_t_moments(AirlightHalf half_1, uint count_1, inout float out_1[16]
     }
     p_hi = half_1.y_hi;
     p_lo = half_1.y_lo;
-    bool loop_init_16 = true;
+    bool loop_init_17 = true;
     while(true) {
-        if (!loop_init_16) {
+        if (!loop_init_17) {
             uint _e68 = order;
             order = (_e68 + 1u);
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e35 = order;
         if ((_e35 < AIRLIGHT_SCRATCH)) {
         } else {
@@ -924,13 +947,13 @@ float airlight_n1_series(AirlightHalf half_2) {
     float _e1[16] = airlight_zero_scratch();
     t_2 = _e1;
     airlight_t_moments(half_2, 13u, t_2);
-    bool loop_init_17 = true;
+    bool loop_init_18 = true;
     while(true) {
-        if (!loop_init_17) {
+        if (!loop_init_18) {
             uint _e31 = i_5;
             i_5 = (_e31 + 1u);
         }
-        loop_init_17 = false;
+        loop_init_18 = false;
         uint _e8 = i_5;
         if ((_e8 < 6u)) {
         } else {
@@ -1105,13 +1128,13 @@ float[6] airlight_phi_moments(float x_3) {
     out_2 = _e1;
     float ex = exp(-(x_3));
     if ((x_3 <= 2.6)) {
-        bool loop_init_18 = true;
+        bool loop_init_19 = true;
         while(true) {
-            if (!loop_init_18) {
+            if (!loop_init_19) {
                 uint _e46 = i_6;
                 i_6 = (_e46 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_19 = false;
             uint _e9 = i_6;
             if ((_e9 < AIRLIGHT_TERMS)) {
             } else {
@@ -1123,13 +1146,13 @@ float[6] airlight_phi_moments(float x_3) {
                 float _e19 = term_1;
                 sum_3 = _e19;
                 j_3 = 1u;
-                bool loop_init_19 = true;
+                bool loop_init_20 = true;
                 while(true) {
-                    if (!loop_init_19) {
+                    if (!loop_init_20) {
                         uint _e39 = j_3;
                         j_3 = (_e39 + 1u);
                     }
-                    loop_init_19 = false;
+                    loop_init_20 = false;
                     uint _e23 = j_3;
                     if ((_e23 <= 14u)) {
                     } else {
@@ -1152,13 +1175,13 @@ float[6] airlight_phi_moments(float x_3) {
         }
     } else {
         prev_1 = ((1.0 - ex) / x_3);
-        bool loop_init_20 = true;
+        bool loop_init_21 = true;
         while(true) {
-            if (!loop_init_20) {
+            if (!loop_init_21) {
                 uint _e70 = i_7;
                 i_7 = (_e70 + 1u);
             }
-            loop_init_20 = false;
+            loop_init_21 = false;
             uint _e54 = i_7;
             if ((_e54 < AIRLIGHT_TERMS)) {
             } else {
@@ -1190,13 +1213,13 @@ float[6] airlight_binomial_shift(float x_4[6], float c_1) {
     uint ii = 0u;
     float _e2[6] = airlight_zero_terms();
     out_3 = _e2;
-    bool loop_init_21 = true;
+    bool loop_init_22 = true;
     while(true) {
-        if (!loop_init_21) {
+        if (!loop_init_22) {
             uint _e48 = j_4;
             j_4 = (_e48 + 1u);
         }
-        loop_init_21 = false;
+        loop_init_22 = false;
         uint _e6 = j_4;
         if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
@@ -1207,13 +1230,13 @@ float[6] airlight_binomial_shift(float x_4[6], float c_1) {
             binom = 1.0;
             cp = 1.0;
             ii = 0u;
-            bool loop_init_22 = true;
+            bool loop_init_23 = true;
             while(true) {
-                if (!loop_init_22) {
+                if (!loop_init_23) {
                     uint _e42 = ii;
                     ii = (_e42 + 1u);
                 }
-                loop_init_22 = false;
+                loop_init_23 = false;
                 uint _e17 = ii;
                 uint _e18 = j_4;
                 if ((_e17 <= _e18)) {
@@ -1305,13 +1328,13 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
             airlight_t_moments(half_4, 7u, t_3);
             float _e62[6] = airlight_zero_terms();
             x_5 = _e62;
-            bool loop_init_23 = true;
+            bool loop_init_24 = true;
             while(true) {
-                if (!loop_init_23) {
+                if (!loop_init_24) {
                     uint _e77 = i_8;
                     i_8 = (_e77 + 1u);
                 }
-                loop_init_23 = false;
+                loop_init_24 = false;
                 uint _e66 = i_8;
                 if ((_e66 < AIRLIGHT_TERMS)) {
                 } else {
@@ -1333,13 +1356,13 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
             float _e86[6] = airlight_zero_terms();
             tau = _e86;
             p_1 = delta;
-            bool loop_init_24 = true;
+            bool loop_init_25 = true;
             while(true) {
-                if (!loop_init_24) {
+                if (!loop_init_25) {
                     uint _e103 = i_9;
                     i_9 = (_e103 + 1u);
                 }
-                loop_init_24 = false;
+                loop_init_25 = false;
                 uint _e91 = i_9;
                 if ((_e91 < AIRLIGHT_TERMS)) {
                 } else {
@@ -1360,13 +1383,13 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
         }
         vec2 b_5 = vec2(yc_1, -1.0);
         q = _e51;
-        bool loop_init_25 = true;
+        bool loop_init_26 = true;
         while(true) {
-            if (!loop_init_25) {
+            if (!loop_init_26) {
                 uint _e133 = k_7;
                 k_7 = (_e133 + 1u);
             }
-            loop_init_25 = false;
+            loop_init_26 = false;
             uint _e115 = k_7;
             if ((_e115 < AIRLIGHT_TERMS)) {
             } else {
@@ -1404,13 +1427,13 @@ float airlight_piece(AirlightScene s_2, AirlightCanonical g_3, float sigma_2, Ai
     uint k_8 = 0u;
     float _e5[6] = airlight_moments(half_5, AIRLIGHT_TERMS);
     float _e14[6] = airlight_chebyshev(s_2, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e30 = k_8;
             k_8 = (_e30 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e19 = k_8;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
@@ -1450,16 +1473,16 @@ float airlight_subdivided(AirlightScene s_3, AirlightCanonical g_4, float sigma_
         return _e25;
     }
     float _e26 = parts;
-    uint n_3 = uint(_e26);
+    uint n_4 = uint(_e26);
     float _e29 = parts;
     float step_ = (piece.dy / _e29);
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e85 = i_10;
             i_10 = (_e85 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e35 = i_10;
         if ((_e35 < 8u)) {
         } else {
@@ -1467,12 +1490,12 @@ float airlight_subdivided(AirlightScene s_3, AirlightCanonical g_4, float sigma_
         }
         {
             uint _e38 = i_10;
-            if ((_e38 < n_3)) {
+            if ((_e38 < n_4)) {
                 uint _e41 = i_10;
                 float lo_1 = (piece.y_lo + (step_ * float(_e41)));
                 hi = (lo_1 + step_);
                 uint _e47 = i_10;
-                if (((_e47 + 1u) == n_3)) {
+                if (((_e47 + 1u) == n_4)) {
                     hi = piece.y_hi;
                 }
                 float _e52 = hi;
@@ -1551,13 +1574,13 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
         vec2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_a);
         vec2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_b);
         cuts = float[4](_e27.x, _e27.y, _e31.x, _e31.y);
-        bool loop_init_28 = true;
+        bool loop_init_29 = true;
         while(true) {
-            if (!loop_init_28) {
+            if (!loop_init_29) {
                 uint _e61 = i_11;
                 i_11 = (_e61 + 1u);
             }
-            loop_init_28 = false;
+            loop_init_29 = false;
             uint _e39 = i_11;
             if ((_e39 < 4u)) {
             } else {
@@ -1580,13 +1603,13 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
                 }
             }
         }
-        bool loop_init_29 = true;
+        bool loop_init_30 = true;
         while(true) {
-            if (!loop_init_29) {
+            if (!loop_init_30) {
                 uint _e102 = i_12;
                 i_12 = (_e102 + 1u);
             }
-            loop_init_29 = false;
+            loop_init_30 = false;
             uint _e65 = i_12;
             if ((_e65 < 3u)) {
             } else {
@@ -1594,13 +1617,13 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
             }
             {
                 j_6 = 0u;
-                bool loop_init_30 = true;
+                bool loop_init_31 = true;
                 while(true) {
-                    if (!loop_init_30) {
+                    if (!loop_init_31) {
                         uint _e99 = j_6;
                         j_6 = (_e99 + 1u);
                     }
-                    loop_init_30 = false;
+                    loop_init_31 = false;
                     uint _e70 = j_6;
                     uint _e72 = i_12;
                     if ((_e70 < (3u - _e72))) {
@@ -1633,13 +1656,13 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
         return _e108;
     }
     lo = half_6.y_lo;
-    bool loop_init_31 = true;
+    bool loop_init_32 = true;
     while(true) {
-        if (!loop_init_31) {
+        if (!loop_init_32) {
             uint _e195 = i_13;
             i_13 = (_e195 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e115 = i_13;
         if ((_e115 < 5u)) {
         } else {

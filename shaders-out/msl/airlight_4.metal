@@ -420,54 +420,46 @@ void airlight_en_scaled(
     uint count,
     thread type_3& out
 ) {
+    uint n_1 = 2u;
     uint pivot = 1u;
-    uint n_1 = 1u;
+    uint n_2 = 1u;
     bool local_1 = {};
     uint i_2 = 1u;
-    bool _e7 = airlight_in_series_region(metal::float2(x_2, 0.0));
-    if (_e7) {
-        metal::float2 _e11 = airlight_e1_scaled(metal::float2(x_2, 0.0));
-        out.inner[0] = _e11.x;
+    if (x_2 == 0.0) {
+        out.inner[0] = AIRLIGHT_FLT_MAX;
+        uint2 loop_bound_4 = uint2(4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e23 = n_1;
+                n_1 = _e23 + 1u;
+            }
+            loop_init_4 = false;
+            uint _e9 = n_1;
+            if (_e9 <= AIRLIGHT_SCRATCH) {
+            } else {
+                break;
+            }
+            {
+                uint _e12 = n_1;
+                uint _e16 = n_1;
+                out.inner[metal::min(unsigned(_e12 - 1u), 15u)] = 1.0 / static_cast<float>(_e16 - 1u);
+            }
+        }
+        return;
+    }
+    bool _e29 = airlight_in_series_region(metal::float2(x_2, 0.0));
+    if (_e29) {
+        metal::float2 _e33 = airlight_e1_scaled(metal::float2(x_2, 0.0));
+        out.inner[0] = _e33.x;
     } else {
         pivot = naga_f2u32(metal::clamp(metal::ceil(x_2), 1.0, static_cast<float>(count)));
-        uint _e18 = pivot;
-        uint _e22 = pivot;
-        float _e23 = airlight_en_scaled_cf(x_2, _e22);
-        out.inner[metal::min(unsigned(_e18 - 1u), 15u)] = _e23;
-    }
-    uint2 loop_bound_4 = uint2(4294967295u);
-    bool loop_init_4 = true;
-    while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e52 = n_1;
-            n_1 = _e52 + 1u;
-        }
-        loop_init_4 = false;
-        uint _e26 = n_1;
-        if (_e26 < AIRLIGHT_SCRATCH) {
-        } else {
-            break;
-        }
-        {
-            uint _e29 = n_1;
-            uint _e30 = pivot;
-            if (_e29 >= _e30) {
-                uint _e34 = n_1;
-                local_1 = _e34 < count;
-            } else {
-                local_1 = false;
-            }
-            bool _e37 = local_1;
-            if (_e37) {
-                uint _e38 = n_1;
-                uint _e40 = n_1;
-                float _e44 = out.inner[metal::min(unsigned(_e40 - 1u), 15u)];
-                uint _e48 = n_1;
-                out.inner[metal::min(unsigned(_e38), 15u)] = (1.0 - (x_2 * _e44)) / static_cast<float>(_e48);
-            }
-        }
+        uint _e40 = pivot;
+        uint _e44 = pivot;
+        float _e45 = airlight_en_scaled_cf(x_2, _e44);
+        out.inner[metal::min(unsigned(_e40 - 1u), 15u)] = _e45;
     }
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_5 = true;
@@ -475,24 +467,58 @@ void airlight_en_scaled(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e76 = i_2;
-            i_2 = _e76 + 1u;
+            uint _e74 = n_2;
+            n_2 = _e74 + 1u;
         }
         loop_init_5 = false;
-        uint _e56 = i_2;
-        if (_e56 < AIRLIGHT_SCRATCH) {
+        uint _e48 = n_2;
+        if (_e48 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            uint _e59 = i_2;
-            uint _e60 = pivot;
-            if (_e59 < _e60) {
-                uint _e62 = pivot;
-                uint _e63 = i_2;
-                uint n_2 = _e62 - _e63;
-                float _e70 = out.inner[metal::min(unsigned(n_2), 15u)];
-                out.inner[metal::min(unsigned(n_2 - 1u), 15u)] = (1.0 - (static_cast<float>(n_2) * _e70)) / x_2;
+            uint _e51 = n_2;
+            uint _e52 = pivot;
+            if (_e51 >= _e52) {
+                uint _e56 = n_2;
+                local_1 = _e56 < count;
+            } else {
+                local_1 = false;
+            }
+            bool _e59 = local_1;
+            if (_e59) {
+                uint _e60 = n_2;
+                uint _e62 = n_2;
+                float _e66 = out.inner[metal::min(unsigned(_e62 - 1u), 15u)];
+                uint _e70 = n_2;
+                out.inner[metal::min(unsigned(_e60), 15u)] = (1.0 - (x_2 * _e66)) / static_cast<float>(_e70);
+            }
+        }
+    }
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e98 = i_2;
+            i_2 = _e98 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e78 = i_2;
+        if (_e78 < AIRLIGHT_SCRATCH) {
+        } else {
+            break;
+        }
+        {
+            uint _e81 = i_2;
+            uint _e82 = pivot;
+            if (_e81 < _e82) {
+                uint _e84 = pivot;
+                uint _e85 = i_2;
+                uint n_3 = _e84 - _e85;
+                float _e92 = out.inner[metal::min(unsigned(n_3), 15u)];
+                out.inner[metal::min(unsigned(n_3 - 1u), 15u)] = (1.0 - (static_cast<float>(n_3) * _e92)) / x_2;
             }
         }
     }
@@ -555,16 +581,16 @@ float airlight_light(
         case 1u: {
             base = c;
             e = naga_f2u32(p0_1);
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_7 = uint2(4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_6) {
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_7) {
                     uint _e29 = i_3;
                     i_3 = _e29 + 1u;
                 }
-                loop_init_6 = false;
+                loop_init_7 = false;
                 uint _e11 = i_3;
                 if (_e11 < 11u) {
                 } else {
@@ -653,16 +679,16 @@ type_2 airlight_chebyshev(
     xi = _e15;
     type_2 _e17 = airlight_zero_terms();
     values = _e17;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
             uint _e42 = j;
             j = _e42 + 1u;
         }
-        loop_init_7 = false;
+        loop_init_8 = false;
         uint _e21 = j;
         if (_e21 < AIRLIGHT_TERMS) {
         } else {
@@ -687,16 +713,16 @@ type_2 airlight_chebyshev(
     }
     type_2 _e44 = airlight_zero_terms();
     cheb = _e44;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e96 = j_1;
             j_1 = _e96 + 1u;
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e48 = j_1;
         if (_e48 < AIRLIGHT_TERMS) {
         } else {
@@ -708,16 +734,16 @@ type_2 airlight_chebyshev(
             float _e55 = xi.inner[metal::min(unsigned(_e53), 3u)];
             t_cur = _e55;
             k_2 = 0u;
-            uint2 loop_bound_9 = uint2(4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_9) {
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_10) {
                     uint _e93 = k_2;
                     k_2 = _e93 + 1u;
                 }
-                loop_init_9 = false;
+                loop_init_10 = false;
                 uint _e59 = k_2;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
@@ -753,16 +779,16 @@ type_2 airlight_chebyshev(
             }
         }
     }
-    uint2 loop_bound_10 = uint2(4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_10) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
             uint _e126 = k_3;
             k_3 = _e126 + 1u;
         }
-        loop_init_10 = false;
+        loop_init_11 = false;
         uint _e102 = k_3;
         if (_e102 < AIRLIGHT_TERMS) {
         } else {
@@ -794,16 +820,16 @@ type_2 airlight_chebyshev(
     t_k.inner[1] = 1.0;
     float _e140 = cheb.inner[0];
     hat.inner[0] = _e140;
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_11 = true;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_11) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
             uint _e189 = k_4;
             k_4 = _e189 + 1u;
         }
-        loop_init_11 = false;
+        loop_init_12 = false;
         uint _e143 = k_4;
         if (_e143 < AIRLIGHT_TERMS) {
         } else {
@@ -813,16 +839,16 @@ type_2 airlight_chebyshev(
             type_2 _e146 = airlight_zero_terms();
             t_next = _e146;
             i_4 = 0u;
-            uint2 loop_bound_12 = uint2(4294967295u);
-            bool loop_init_12 = true;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                if (!loop_init_12) {
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_13) {
                     uint _e184 = i_4;
                     i_4 = _e184 + 1u;
                 }
-                loop_init_12 = false;
+                loop_init_13 = false;
                 uint _e150 = i_4;
                 if (_e150 < AIRLIGHT_TERMS) {
                 } else {
@@ -861,16 +887,16 @@ type_2 airlight_chebyshev(
     float noise = (((4.0 * 4.0) * AIRLIGHT_FLT_EPS) * metal::pow(2.4142137, 4.0)) * _e198;
     type_2 _e200 = airlight_zero_terms();
     a_3 = _e200;
-    uint2 loop_bound_13 = uint2(4294967295u);
-    bool loop_init_13 = true;
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_14 = true;
     while(true) {
-        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_13) {
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_14) {
             uint _e240 = k_5;
             k_5 = _e240 + 1u;
         }
-        loop_init_13 = false;
+        loop_init_14 = false;
         uint _e206 = k_5;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
@@ -926,16 +952,16 @@ type_2 airlight_moments_gauss(
     float hw = half_.dy * 0.5;
     float yc = half_.y_lo + hw;
     type_8 nodes = type_8 {{metal::float2(-0.8611363, 0.34785485), metal::float2(-0.33998105, 0.65214515), metal::float2(0.33998105, 0.65214515), metal::float2(0.8611363, 0.34785485)}};
-    uint2 loop_bound_14 = uint2(4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_15) {
             uint _e73 = j_2;
             j_2 = _e73 + 1u;
         }
-        loop_init_14 = false;
+        loop_init_15 = false;
         uint _e23 = j_2;
         if (_e23 < 4u) {
         } else {
@@ -954,16 +980,16 @@ type_2 airlight_moments_gauss(
             float _e48 = dv;
             p = ((nodes.inner[metal::min(unsigned(_e42), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e48)) / (1.0 + (y_2 * y_2));
             k_6 = 0u;
-            uint2 loop_bound_15 = uint2(4294967295u);
-            bool loop_init_15 = true;
+            uint2 loop_bound_16 = uint2(4294967295u);
+            bool loop_init_16 = true;
             while(true) {
-                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_15) {
+                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_16) {
                     uint _e70 = k_6;
                     k_6 = _e70 + 1u;
                 }
-                loop_init_15 = false;
+                loop_init_16 = false;
                 uint _e59 = k_6;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
@@ -1029,16 +1055,16 @@ void airlight_t_moments(
     }
     p_hi = half_1.y_hi;
     p_lo = half_1.y_lo;
-    uint2 loop_bound_16 = uint2(4294967295u);
-    bool loop_init_16 = true;
+    uint2 loop_bound_17 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e68 = order;
             order = _e68 + 1u;
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e35 = order;
         if (_e35 < AIRLIGHT_SCRATCH) {
         } else {
@@ -1079,16 +1105,16 @@ float airlight_n1_series(
     type_3 _e1 = airlight_zero_scratch();
     t_2 = _e1;
     airlight_t_moments(half_2, 13u, t_2);
-    uint2 loop_bound_17 = uint2(4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_18 = true;
     while(true) {
-        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_17) {
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_18) {
             uint _e31 = i_5;
             i_5 = _e31 + 1u;
         }
-        loop_init_17 = false;
+        loop_init_18 = false;
         uint _e8 = i_5;
         if (_e8 < 6u) {
         } else {
@@ -1268,16 +1294,16 @@ type_2 airlight_phi_moments(
     out_2 = _e1;
     float ex = metal::exp(-(x_3));
     if (x_3 <= 2.6) {
-        uint2 loop_bound_18 = uint2(4294967295u);
-        bool loop_init_18 = true;
+        uint2 loop_bound_19 = uint2(4294967295u);
+        bool loop_init_19 = true;
         while(true) {
-            if (metal::all(loop_bound_18 == uint2(0u))) { break; }
-            loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-            if (!loop_init_18) {
+            if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+            if (!loop_init_19) {
                 uint _e46 = i_6;
                 i_6 = _e46 + 1u;
             }
-            loop_init_18 = false;
+            loop_init_19 = false;
             uint _e9 = i_6;
             if (_e9 < AIRLIGHT_TERMS) {
             } else {
@@ -1289,16 +1315,16 @@ type_2 airlight_phi_moments(
                 float _e19 = term_1;
                 sum_3 = _e19;
                 j_3 = 1u;
-                uint2 loop_bound_19 = uint2(4294967295u);
-                bool loop_init_19 = true;
+                uint2 loop_bound_20 = uint2(4294967295u);
+                bool loop_init_20 = true;
                 while(true) {
-                    if (metal::all(loop_bound_19 == uint2(0u))) { break; }
-                    loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-                    if (!loop_init_19) {
+                    if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+                    loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+                    if (!loop_init_20) {
                         uint _e39 = j_3;
                         j_3 = _e39 + 1u;
                     }
-                    loop_init_19 = false;
+                    loop_init_20 = false;
                     uint _e23 = j_3;
                     if (_e23 <= 14u) {
                     } else {
@@ -1321,16 +1347,16 @@ type_2 airlight_phi_moments(
         }
     } else {
         prev_1 = (1.0 - ex) / x_3;
-        uint2 loop_bound_20 = uint2(4294967295u);
-        bool loop_init_20 = true;
+        uint2 loop_bound_21 = uint2(4294967295u);
+        bool loop_init_21 = true;
         while(true) {
-            if (metal::all(loop_bound_20 == uint2(0u))) { break; }
-            loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-            if (!loop_init_20) {
+            if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+            loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+            if (!loop_init_21) {
                 uint _e70 = i_7;
                 i_7 = _e70 + 1u;
             }
-            loop_init_20 = false;
+            loop_init_21 = false;
             uint _e54 = i_7;
             if (_e54 < AIRLIGHT_TERMS) {
             } else {
@@ -1365,16 +1391,16 @@ type_2 airlight_binomial_shift(
     uint ii = {};
     type_2 _e2 = airlight_zero_terms();
     out_3 = _e2;
-    uint2 loop_bound_21 = uint2(4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_21) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
             uint _e48 = j_4;
             j_4 = _e48 + 1u;
         }
-        loop_init_21 = false;
+        loop_init_22 = false;
         uint _e6 = j_4;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
@@ -1385,16 +1411,16 @@ type_2 airlight_binomial_shift(
             binom = 1.0;
             cp = 1.0;
             ii = 0u;
-            uint2 loop_bound_22 = uint2(4294967295u);
-            bool loop_init_22 = true;
+            uint2 loop_bound_23 = uint2(4294967295u);
+            bool loop_init_23 = true;
             while(true) {
-                if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                if (!loop_init_22) {
+                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                if (!loop_init_23) {
                     uint _e42 = ii;
                     ii = _e42 + 1u;
                 }
-                loop_init_22 = false;
+                loop_init_23 = false;
                 uint _e17 = ii;
                 uint _e18 = j_4;
                 if (_e17 <= _e18) {
@@ -1489,16 +1515,16 @@ type_2 airlight_moments(
             airlight_t_moments(half_4, 5u, t_3);
             type_2 _e62 = airlight_zero_terms();
             x_5 = _e62;
-            uint2 loop_bound_23 = uint2(4294967295u);
-            bool loop_init_23 = true;
+            uint2 loop_bound_24 = uint2(4294967295u);
+            bool loop_init_24 = true;
             while(true) {
-                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-                if (!loop_init_23) {
+                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+                if (!loop_init_24) {
                     uint _e77 = i_8;
                     i_8 = _e77 + 1u;
                 }
-                loop_init_23 = false;
+                loop_init_24 = false;
                 uint _e66 = i_8;
                 if (_e66 < AIRLIGHT_TERMS) {
                 } else {
@@ -1520,16 +1546,16 @@ type_2 airlight_moments(
             type_2 _e86 = airlight_zero_terms();
             tau = _e86;
             p_1 = delta;
-            uint2 loop_bound_24 = uint2(4294967295u);
-            bool loop_init_24 = true;
+            uint2 loop_bound_25 = uint2(4294967295u);
+            bool loop_init_25 = true;
             while(true) {
-                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                if (!loop_init_24) {
+                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_25) {
                     uint _e103 = i_9;
                     i_9 = _e103 + 1u;
                 }
-                loop_init_24 = false;
+                loop_init_25 = false;
                 uint _e91 = i_9;
                 if (_e91 < AIRLIGHT_TERMS) {
                 } else {
@@ -1550,16 +1576,16 @@ type_2 airlight_moments(
         }
         metal::float2 b_5 = metal::float2(yc_1, -1.0);
         q = _e51;
-        uint2 loop_bound_25 = uint2(4294967295u);
-        bool loop_init_25 = true;
+        uint2 loop_bound_26 = uint2(4294967295u);
+        bool loop_init_26 = true;
         while(true) {
-            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_25) {
+            if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+            if (!loop_init_26) {
                 uint _e133 = k_7;
                 k_7 = _e133 + 1u;
             }
-            loop_init_25 = false;
+            loop_init_26 = false;
             uint _e115 = k_7;
             if (_e115 < AIRLIGHT_TERMS) {
             } else {
@@ -1606,16 +1632,16 @@ float airlight_piece(
     uint k_8 = 0u;
     type_2 _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
     type_2 _e14 = airlight_chebyshev(s_2, g_3, sigma_2, half_5.y_lo + (half_5.dy * 0.5), half_5.dy * 0.5);
-    uint2 loop_bound_26 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e30 = k_8;
             k_8 = _e30 + 1u;
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e19 = k_8;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
@@ -1660,19 +1686,19 @@ float airlight_subdivided(
         return _e25;
     }
     float _e26 = parts;
-    uint n_3 = naga_f2u32(_e26);
+    uint n_4 = naga_f2u32(_e26);
     float _e29 = parts;
     float step = piece.dy / _e29;
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_28 = uint2(4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e85 = i_10;
             i_10 = _e85 + 1u;
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e35 = i_10;
         if (_e35 < 8u) {
         } else {
@@ -1680,12 +1706,12 @@ float airlight_subdivided(
         }
         {
             uint _e38 = i_10;
-            if (_e38 < n_3) {
+            if (_e38 < n_4) {
                 uint _e41 = i_10;
                 float lo_1 = piece.y_lo + (step * static_cast<float>(_e41));
                 hi = lo_1 + step;
                 uint _e47 = i_10;
-                if ((_e47 + 1u) == n_3) {
+                if ((_e47 + 1u) == n_4) {
                     hi = piece.y_hi;
                 }
                 float _e52 = hi;
@@ -1775,16 +1801,16 @@ float airlight_half(
         metal::float2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_a);
         metal::float2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_b);
         cuts = type_2 {{_e27.x, _e27.y, _e31.x, _e31.y}};
-        uint2 loop_bound_28 = uint2(4294967295u);
-        bool loop_init_28 = true;
+        uint2 loop_bound_29 = uint2(4294967295u);
+        bool loop_init_29 = true;
         while(true) {
-            if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-            loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-            if (!loop_init_28) {
+            if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+            loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+            if (!loop_init_29) {
                 uint _e61 = i_11;
                 i_11 = _e61 + 1u;
             }
-            loop_init_28 = false;
+            loop_init_29 = false;
             uint _e39 = i_11;
             if (_e39 < 4u) {
             } else {
@@ -1807,16 +1833,16 @@ float airlight_half(
                 }
             }
         }
-        uint2 loop_bound_29 = uint2(4294967295u);
-        bool loop_init_29 = true;
+        uint2 loop_bound_30 = uint2(4294967295u);
+        bool loop_init_30 = true;
         while(true) {
-            if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-            loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-            if (!loop_init_29) {
+            if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+            loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+            if (!loop_init_30) {
                 uint _e102 = i_12;
                 i_12 = _e102 + 1u;
             }
-            loop_init_29 = false;
+            loop_init_30 = false;
             uint _e65 = i_12;
             if (_e65 < 3u) {
             } else {
@@ -1824,16 +1850,16 @@ float airlight_half(
             }
             {
                 j_6 = 0u;
-                uint2 loop_bound_30 = uint2(4294967295u);
-                bool loop_init_30 = true;
+                uint2 loop_bound_31 = uint2(4294967295u);
+                bool loop_init_31 = true;
                 while(true) {
-                    if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-                    loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-                    if (!loop_init_30) {
+                    if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+                    loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+                    if (!loop_init_31) {
                         uint _e99 = j_6;
                         j_6 = _e99 + 1u;
                     }
-                    loop_init_30 = false;
+                    loop_init_31 = false;
                     uint _e70 = j_6;
                     uint _e72 = i_12;
                     if (_e70 < (3u - _e72)) {
@@ -1866,16 +1892,16 @@ float airlight_half(
         return _e108;
     }
     lo = half_6.y_lo;
-    uint2 loop_bound_31 = uint2(4294967295u);
-    bool loop_init_31 = true;
+    uint2 loop_bound_32 = uint2(4294967295u);
+    bool loop_init_32 = true;
     while(true) {
-        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_32) {
             uint _e195 = i_13;
             i_13 = _e195 + 1u;
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e115 = i_13;
         if (_e115 < 5u) {
         } else {

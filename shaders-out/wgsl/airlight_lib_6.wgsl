@@ -345,71 +345,92 @@ fn airlight_en_scaled_cf(x_1: f32, n: u32) -> f32 {
 }
 
 fn airlight_en_scaled(x_2: f32, count: u32, out: ptr<function, array<f32, 16>>) {
+    var n_1: u32 = 2u;
     var pivot: u32 = 1u;
-    var n_1: u32 = 1u;
+    var n_2: u32 = 1u;
     var local_1: bool;
     var i_2: u32 = 1u;
 
-    let _e7 = airlight_in_series_region(vec2<f32>(x_2, 0f));
-    if _e7 {
-        let _e11 = airlight_e1_scaled(vec2<f32>(x_2, 0f));
-        (*out)[0] = _e11.x;
+    if (x_2 == 0f) {
+        (*out)[0] = AIRLIGHT_FLT_MAX;
+        loop {
+            let _e9 = n_1;
+            if (_e9 <= AIRLIGHT_SCRATCH) {
+            } else {
+                break;
+            }
+            {
+                let _e12 = n_1;
+                let _e16 = n_1;
+                (*out)[(_e12 - 1u)] = (1f / f32((_e16 - 1u)));
+            }
+            continuing {
+                let _e23 = n_1;
+                n_1 = (_e23 + 1u);
+            }
+        }
+        return;
+    }
+    let _e29 = airlight_in_series_region(vec2<f32>(x_2, 0f));
+    if _e29 {
+        let _e33 = airlight_e1_scaled(vec2<f32>(x_2, 0f));
+        (*out)[0] = _e33.x;
     } else {
         pivot = u32(clamp(ceil(x_2), 1f, f32(count)));
-        let _e18 = pivot;
-        let _e22 = pivot;
-        let _e23 = airlight_en_scaled_cf(x_2, _e22);
-        (*out)[(_e18 - 1u)] = _e23;
+        let _e40 = pivot;
+        let _e44 = pivot;
+        let _e45 = airlight_en_scaled_cf(x_2, _e44);
+        (*out)[(_e40 - 1u)] = _e45;
     }
     loop {
-        let _e26 = n_1;
-        if (_e26 < AIRLIGHT_SCRATCH) {
+        let _e48 = n_2;
+        if (_e48 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            let _e29 = n_1;
-            let _e30 = pivot;
-            if (_e29 >= _e30) {
-                let _e34 = n_1;
-                local_1 = (_e34 < count);
+            let _e51 = n_2;
+            let _e52 = pivot;
+            if (_e51 >= _e52) {
+                let _e56 = n_2;
+                local_1 = (_e56 < count);
             } else {
                 local_1 = false;
             }
-            let _e37 = local_1;
-            if _e37 {
-                let _e38 = n_1;
-                let _e40 = n_1;
-                let _e44 = (*out)[(_e40 - 1u)];
-                let _e48 = n_1;
-                (*out)[_e38] = ((1f - (x_2 * _e44)) / f32(_e48));
+            let _e59 = local_1;
+            if _e59 {
+                let _e60 = n_2;
+                let _e62 = n_2;
+                let _e66 = (*out)[(_e62 - 1u)];
+                let _e70 = n_2;
+                (*out)[_e60] = ((1f - (x_2 * _e66)) / f32(_e70));
             }
         }
         continuing {
-            let _e52 = n_1;
-            n_1 = (_e52 + 1u);
+            let _e74 = n_2;
+            n_2 = (_e74 + 1u);
         }
     }
     loop {
-        let _e56 = i_2;
-        if (_e56 < AIRLIGHT_SCRATCH) {
+        let _e78 = i_2;
+        if (_e78 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            let _e59 = i_2;
-            let _e60 = pivot;
-            if (_e59 < _e60) {
-                let _e62 = pivot;
-                let _e63 = i_2;
-                let n_2 = (_e62 - _e63);
-                let _e70 = (*out)[n_2];
-                (*out)[(n_2 - 1u)] = ((1f - (f32(n_2) * _e70)) / x_2);
+            let _e81 = i_2;
+            let _e82 = pivot;
+            if (_e81 < _e82) {
+                let _e84 = pivot;
+                let _e85 = i_2;
+                let n_3 = (_e84 - _e85);
+                let _e92 = (*out)[n_3];
+                (*out)[(n_3 - 1u)] = ((1f - (f32(n_3) * _e92)) / x_2);
             }
         }
         continuing {
-            let _e76 = i_2;
-            i_2 = (_e76 + 1u);
+            let _e98 = i_2;
+            i_2 = (_e98 + 1u);
         }
     }
     return;
@@ -1417,7 +1438,7 @@ fn airlight_subdivided(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
         return _e25;
     }
     let _e26 = parts;
-    let n_3 = u32(_e26);
+    let n_4 = u32(_e26);
     let _e29 = parts;
     let step_ = (piece.dy / _e29);
     loop {
@@ -1428,12 +1449,12 @@ fn airlight_subdivided(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
         }
         {
             let _e38 = i_10;
-            if (_e38 < n_3) {
+            if (_e38 < n_4) {
                 let _e41 = i_10;
                 let lo_1 = (piece.y_lo + (step_ * f32(_e41)));
                 hi = (lo_1 + step_);
                 let _e47 = i_10;
-                if ((_e47 + 1u) == n_3) {
+                if ((_e47 + 1u) == n_4) {
                     hi = piece.y_hi;
                 }
                 let _e52 = hi;
