@@ -108,13 +108,75 @@ fn airlight_csqrt(z: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(abs(z.y) / (t + t), select(-t, t, z.y >= 0.0));
 }
 
+/// e^z for |Im z| ≤ 2.2 (the E1 series region).
 fn airlight_cexp(z: vec2<f32>) -> vec2<f32> {
     let m = exp(z.x);
-    return vec2<f32>(m * cos(z.y), m * sin(z.y));
+    let cs = airlight_cos_sin(z.y);
+    return vec2<f32>(m * cs.x, m * cs.y);
 }
 
+/// ln z for Re z ≥ 0.
 fn airlight_cln(z: vec2<f32>) -> vec2<f32> {
-    return vec2<f32>(log(length(z)), atan2(z.y, z.x));
+    // arg z for Re z ≥ 0 (all our arguments), from the accurate atan above
+    var arg = 1.5707963267948966;
+    if (z.x > 0.0) {
+        arg = airlight_atan(abs(z.y) / z.x);
+    }
+    return vec2<f32>(log(length(z)), select(arg, -arg, z.y < 0.0));
+}
+
+// Vulkan allows atan 4096 ulp, sin/cos 2^-11 absolute and log 2^-21 absolute near 1 — far too
+// loose where the moment recurrence amplifies the error of Q_0 — so these are computed here
+// from + − × ÷ (correctly rounded or 2.5 ulp) only.
+
+/// atan(x) for x ≥ 0 (Cephes atanf: reduction by π/2 and π/4, then a degree-9 odd
+/// polynomial; ≈ 2 ulp).
+fn airlight_atan(x: f32) -> f32 {
+    var y = 0.0;
+    var t = x;
+    if (x > 2.414213562373095) {
+        y = 1.5707963267948966;
+        t = -1.0 / x;
+    } else if (x > 0.4142135623730950) {
+        y = 0.7853981633974483;
+        t = (x - 1.0) / (x + 1.0);
+    }
+    let z = t * t;
+    return y + ((((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z - 3.33329491539e-1) * z * t + t);
+}
+
+/// log(1 + x) for x ≥ 0: 2 atanh(x/(2+x)) by its series where x ≤ 1 (ratio s² ≤ 1/9, 9
+/// terms), the built-in log above (where it is 3 ulp).
+fn airlight_log1p(x: f32) -> f32 {
+    if (x > 1.0) {
+        return log(1.0 + x);
+    }
+    let s = x / (2.0 + x);
+    let s2 = s * s;
+    var sum = 0.0;
+    for (var k = 0u; k < 9u; k++) {
+        sum = sum * s2 + 1.0 / f32(2u * (8u - k) + 1u);
+    }
+    return 2.0 * s * sum;
+}
+
+/// (cos x, sin x) for |x| ≤ 2.2 by Taylor polynomials (degree 16/17, error < 2^-24 there).
+fn airlight_cos_sin(x: f32) -> vec2<f32> {
+    let z = x * x;
+    var c = 0.0;
+    var s = 0.0;
+    for (var k = 0u; k < 9u; k++) {
+        let n = 8u - k;
+        // c_n = (−1)^n/(2n)!, s_n = (−1)^n/(2n+1)!; Horner from the top
+        c = c * z;
+        s = s * z;
+        var fc = 1.0;
+        for (var j = 1u; j <= 2u * n; j++) { fc *= f32(j); }
+        let sign = select(1.0, -1.0, (n & 1u) == 1u);
+        c += sign / fc;
+        s += sign / (fc * f32(2u * n + 1u));
+    }
+    return vec2<f32>(c, s * x);
 }
 
 fn airlight_is_finite(x: f32) -> bool {
@@ -391,7 +453,9 @@ fn airlight_chebyshev(s: AirlightScene, g: AirlightCanonical, sigma: f32, y_c: f
         t_km1 = t_k;
         t_k = t_next;
     }
-    let noise = 4.0 * nf * AIRLIGHT_FLT_EPS * pow(2.41421356, nf) * scale_sum;
+    var amplification = 1.0;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { amplification *= 2.41421356; }
+    let noise = 4.0 * nf * AIRLIGHT_FLT_EPS * amplification * scale_sum;
     var a = airlight_zero_terms();
     var rk = 1.0;
     for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
@@ -437,10 +501,10 @@ fn airlight_n1_log_part(v_s: f32, v_e: f32, v_e_infinite: bool) -> f32 {
     var at_e = 0.0;
     if (!v_e_infinite) {
         let y_e = 1.0 / v_e;
-        at_e = log(1.0 + y_e * y_e);
+        at_e = airlight_log1p(y_e * y_e);
     }
     let y_s = 1.0 / v_s;
-    return -0.5 * (at_e - log(1.0 + y_s * y_s));
+    return -0.5 * (at_e - airlight_log1p(y_s * y_s));
 }
 
 /// T_n = y_hi^{n−1} s_n(H v_s) − e^{−HΔv} y_lo^{n−1} s_n(H v_e), out[n−1], 2 ≤ n ≤ count.
@@ -490,10 +554,10 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
         var d_im = 0.0;
         var d_re = 0.0;
         if (!v_e_infinite) {
-            d_im = atan(half.dv / (1.0 + v_s * v_e));
-            d_re = 0.5 * log(1.0 + half.dv * (v_s + v_e) / (1.0 + v_s * v_s));
+            d_im = airlight_atan(half.dv / (1.0 + v_s * v_e));
+            d_re = 0.5 * airlight_log1p(half.dv * (v_s + v_e) / (1.0 + v_s * v_s));
         } else {
-            d_im = atan(1.0 / v_s);
+            d_im = airlight_atan(1.0 / v_s);
         }
         if (big_h == 0.0) {
             if (!half.second) { return vec2<f32>(d_re, d_im); }
@@ -505,15 +569,16 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
         let z_e = vec2<f32>(big_h * v_e, -big_h);
         let hdv = big_h * half.dv;
         let ein_dd = airlight_ein_divided_difference(z_s, z_e);
-        let rot = vec2<f32>(cos(big_h), -sin(big_h));
+        let cs = airlight_cos_sin(big_h);
+        let rot = vec2<f32>(cs.x, -cs.y);
         let scale = exp(big_h * v_s);
         let c = airlight_cmul(rot, vec2<f32>(d_re, d_im) - ein_dd * hdv) * scale;
         if (!half.second) { return c; }
         var n1 = 0.0;
         if (with_re) {
-            let sh = sin(big_h * 0.5);
+            let sh = airlight_cos_sin(big_h * 0.5).y;
             let ein_dd_real = airlight_ein_divided_difference(vec2<f32>(big_h * v_s, 0.0), vec2<f32>(big_h * v_e, 0.0));
-            n1 = (airlight_n1_log_part(v_s, v_e, false) + (sh * sh + sh * sh) * d_re - sin(big_h) * d_im
+            n1 = (airlight_n1_log_part(v_s, v_e, false) + (sh * sh + sh * sh) * d_re - cs.y * d_im
                 - hdv * (ein_dd_real.x - airlight_cmul(rot, ein_dd).x)) * scale;
         }
         return vec2<f32>(n1, c.y);
@@ -650,8 +715,11 @@ fn airlight_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airl
 
 /// A piece between cone edges, cut into ⌈HΔv⌉ ≤ 8 parts when the medium is thick.
 fn airlight_subdivided(s: AirlightScene, g: AirlightCanonical, sigma: f32, piece: AirlightHalf) -> f32 {
+    // parts = ⌈HΔv⌉ ≤ 8 (an unbounded piece, Δv = ∞, gets 8 when H > 0)
     var parts = 1.0;
-    if (!piece.dv_infinite && piece.dy <= 0.25) { parts = clamp(ceil(piece.big_h * piece.dv), 1.0, 8.0); }
+    if (piece.dy <= 0.25 && piece.big_h > 0.0) {
+        if (piece.dv_infinite) { parts = 8.0; } else { parts = clamp(ceil(piece.big_h * piece.dv), 1.0, 8.0); }
+    }
     if (parts <= 1.0) { return airlight_piece(s, g, sigma, piece); }
     let n = u32(parts);
     let step = piece.dy / parts;
@@ -664,11 +732,12 @@ fn airlight_subdivided(s: AirlightScene, g: AirlightCanonical, sigma: f32, piece
             let dy = hi - lo;
             var dv = dy;
             var offset = lo - piece.y_lo;
+            var inf = false;
             if (piece.second) {
-                dv = dy / (lo * hi);
+                if (lo == 0.0) { inf = true; dv = 0.0; } else { dv = dy / (lo * hi); }
                 offset = (piece.y_hi - hi) / (hi * piece.y_hi);
             }
-            let part = AirlightHalf(piece.second, piece.big_h, lo, hi, dy, dv, false);
+            let part = AirlightHalf(piece.second, piece.big_h, lo, hi, dy, dv, inf);
             total += exp(-piece.big_h * offset) * airlight_piece(s, g, sigma, part);
         }
     }

@@ -10,9 +10,9 @@ use std::borrow::Cow;
 pub enum Shader<'a> {
     /// WGSL source (compiled by wgpu's naga).
     Wgsl(&'a str),
-    /// SPIR-V words, handed to the driver as they are when the adapter supports
-    /// pass-through, else translated by naga's SPIR-V front end.
-    SpirV(&'a [u32]),
+    /// SPIR-V words with the name of their compute entry point, handed to the driver as they
+    /// are when the adapter supports pass-through, else translated by naga's SPIR-V front end.
+    SpirV(&'a [u32], &'a str),
 }
 
 /// A device ready to run compute work.
@@ -62,18 +62,18 @@ impl Gpu {
                 label: Some("airlight wgsl"),
                 source: wgpu::ShaderSource::Wgsl(Cow::Borrowed(src)),
             }),
-            Shader::SpirV(words) if self.passthrough => unsafe {
+            Shader::SpirV(words, entry) if self.passthrough => unsafe {
                 self.device.create_shader_module_passthrough(wgpu::ShaderModuleDescriptorPassthrough {
                     label: Some("airlight spirv"),
                     entry_points: Cow::Owned(vec![wgpu::PassthroughShaderEntryPoint {
-                        name: Cow::Borrowed("airlight_main"),
+                        name: Cow::Borrowed(entry),
                         workgroup_size: (64, 1, 1),
                     }]),
                     spirv: Some(Cow::Borrowed(words)),
                     ..Default::default()
                 })
             },
-            Shader::SpirV(words) => self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            Shader::SpirV(words, _) => self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some("airlight spirv (naga)"),
                 source: wgpu::ShaderSource::SpirV(Cow::Borrowed(words)),
             }),
@@ -93,11 +93,36 @@ impl Gpu {
             return Ok(out);
         }
         let module = self.module(shader);
+        let entry = match shader {
+            Shader::Wgsl(_) => "airlight_main",
+            Shader::SpirV(_, entry) => entry,
+        };
+        // Explicit layout (pass-through shaders cannot have one derived): records read-only at
+        // binding 0, results read-write at binding 1, group 0.
+        let storage = |binding, read_only| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let bgl = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("airlight"),
+            entries: &[storage(0, true), storage(1, false)],
+        });
+        let layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("airlight"),
+            bind_group_layouts: &[Some(&bgl)],
+            immediate_size: 0,
+        });
         let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
             label: Some("airlight"),
-            layout: None,
+            layout: Some(&layout),
             module: &module,
-            entry_point: Some("airlight_main"),
+            entry_point: Some(entry),
             compilation_options: Default::default(),
             cache: None,
         });
@@ -130,7 +155,7 @@ impl Gpu {
             });
             let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("airlight"),
-                layout: &pipeline.get_bind_group_layout(0),
+                layout: &bgl,
                 entries: &[
                     wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
                     wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },

@@ -106,54 +106,174 @@ vec2 airlight_csqrt(vec2 z) {
     }
     float r_4 = length(z);
     if ((z.x >= 0.0)) {
-        float t_4 = sqrt(((r_4 + z.x) * 0.5));
-        return vec2(t_4, (z.y / (t_4 + t_4)));
+        float t_5 = sqrt(((r_4 + z.x) * 0.5));
+        return vec2(t_5, (z.y / (t_5 + t_5)));
     }
-    float t_5 = sqrt(((r_4 - z.x) * 0.5));
-    return vec2((abs(z.y) / (t_5 + t_5)), ((z.y >= 0.0) ? t_5 : -(t_5)));
+    float t_6 = sqrt(((r_4 - z.x) * 0.5));
+    return vec2((abs(z.y) / (t_6 + t_6)), ((z.y >= 0.0) ? t_6 : -(t_6)));
+}
+
+vec2 airlight_cos_sin(float x) {
+    float c = 0.0;
+    float s = 0.0;
+    uint k = 0u;
+    float fc = 0.0;
+    uint j = 0u;
+    float z_7 = (x * x);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e55 = k;
+            k = (_e55 + 1u);
+        }
+        loop_init = false;
+        uint _e8 = k;
+        if ((_e8 < 9u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = k;
+            uint n_3 = (8u - _e12);
+            float _e14 = c;
+            c = (_e14 * z_7);
+            float _e16 = s;
+            s = (_e16 * z_7);
+            fc = 1.0;
+            j = 1u;
+            bool loop_init_1 = true;
+            while(true) {
+                if (!loop_init_1) {
+                    uint _e31 = j;
+                    j = (_e31 + 1u);
+                }
+                loop_init_1 = false;
+                uint _e22 = j;
+                if ((_e22 <= (2u * n_3))) {
+                } else {
+                    break;
+                }
+                {
+                    float _e26 = fc;
+                    uint _e27 = j;
+                    fc = (_e26 * float(_e27));
+                }
+            }
+            float sign_1 = (((n_3 & 1u) == 1u) ? -1.0 : 1.0);
+            float _e40 = c;
+            float _e41 = fc;
+            c = (_e40 + (sign_1 / _e41));
+            float _e44 = s;
+            float _e45 = fc;
+            s = (_e44 + (sign_1 / (_e45 * float(((2u * n_3) + 1u)))));
+        }
+    }
+    float _e57 = c;
+    float _e58 = s;
+    return vec2(_e57, (_e58 * x));
 }
 
 vec2 airlight_cexp(vec2 z_1) {
     float m_2 = exp(z_1.x);
-    return vec2((m_2 * cos(z_1.y)), (m_2 * sin(z_1.y)));
+    vec2 _e4 = airlight_cos_sin(z_1.y);
+    return vec2((m_2 * _e4.x), (m_2 * _e4.y));
+}
+
+float airlight_atan(float x_1) {
+    float y = 0.0;
+    float t = 0.0;
+    t = x_1;
+    if ((x_1 > 2.4142137)) {
+        y = 1.5707964;
+        t = (-1.0 / x_1);
+    } else {
+        if ((x_1 > 0.41421357)) {
+            y = 0.7853982;
+            t = ((x_1 - 1.0) / (x_1 + 1.0));
+        }
+    }
+    float _e17 = t;
+    float _e18 = t;
+    float z_8 = (_e17 * _e18);
+    float _e20 = y;
+    float _e32 = t;
+    float _e34 = t;
+    return (_e20 + (((((((((0.080537446 * z_8) - 0.13877685) * z_8) + 0.19977711) * z_8) - 0.3333295) * z_8) * _e32) + _e34));
 }
 
 vec2 airlight_cln(vec2 z_2) {
-    return vec2(log(length(z_2)), atan(z_2.y, z_2.x));
+    float arg = 1.5707964;
+    if ((z_2.x > 0.0)) {
+        float _e10 = airlight_atan((abs(z_2.y) / z_2.x));
+        arg = _e10;
+    }
+    float _e13 = arg;
+    float _e14 = arg;
+    return vec2(log(length(z_2)), ((z_2.y < 0.0) ? -(_e14) : _e13));
 }
 
-bool airlight_is_finite(float x) {
-    return ((floatBitsToUint(x) & 2139095040u) != 2139095040u);
+float airlight_log1p(float x_2) {
+    float sum = 0.0;
+    uint k_1 = 0u;
+    if ((x_2 > 1.0)) {
+        return log((1.0 + x_2));
+    }
+    float s_11 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_11 * s_11);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e31 = k_1;
+            k_1 = (_e31 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e14 = k_1;
+        if ((_e14 < 9u)) {
+        } else {
+            break;
+        }
+        {
+            float _e17 = sum;
+            uint _e21 = k_1;
+            sum = ((_e17 * s2_) + (1.0 / float(((2u * (8u - _e21)) + 1u))));
+        }
+    }
+    float _e35 = sum;
+    return ((2.0 * s_11) * _e35);
+}
+
+bool airlight_is_finite(float x_3) {
+    return ((floatBitsToUint(x_3) & 2139095040u) != 2139095040u);
 }
 
 vec2 airlight_ein(vec2 z_3) {
     vec2 term = vec2(-1.0, 0.0);
-    vec2 sum = vec2(0.0, 0.0);
-    uint k = 1u;
-    bool loop_init = true;
+    vec2 sum_1 = vec2(0.0, 0.0);
+    uint k_2 = 1u;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init) {
-            uint _e27 = k;
-            k = (_e27 + 1u);
+        if (!loop_init_3) {
+            uint _e27 = k_2;
+            k_2 = (_e27 + 1u);
         }
-        loop_init = false;
-        uint _e11 = k;
+        loop_init_3 = false;
+        uint _e11 = k_2;
         if ((_e11 <= 14u)) {
         } else {
             break;
         }
         {
-            uint _e14 = k;
+            uint _e14 = k_2;
             float kf = float(_e14);
             vec2 _e16 = term;
             vec2 _e17 = airlight_cmul(_e16, z_3);
             term = (-(_e17) / vec2(kf));
-            vec2 _e21 = sum;
+            vec2 _e21 = sum_1;
             vec2 _e22 = term;
-            sum = (_e21 + (_e22 / vec2(kf)));
+            sum_1 = (_e21 + (_e22 / vec2(kf)));
         }
     }
-    vec2 _e29 = sum;
+    vec2 _e29 = sum_1;
     return _e29;
 }
 
@@ -162,30 +282,30 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
     vec2 a_pow = vec2(1.0, 0.0);
     float fact = 1.0;
     float sign_ = 1.0;
-    vec2 sum_1 = vec2(0.0, 0.0);
-    uint k_1 = 1u;
-    bool loop_init_1 = true;
+    vec2 sum_2 = vec2(0.0, 0.0);
+    uint k_3 = 1u;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e44 = k_1;
-            k_1 = (_e44 + 1u);
+        if (!loop_init_4) {
+            uint _e44 = k_3;
+            k_3 = (_e44 + 1u);
         }
-        loop_init_1 = false;
-        uint _e20 = k_1;
+        loop_init_4 = false;
+        uint _e20 = k_3;
         if ((_e20 <= 14u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_1;
+            uint _e23 = k_3;
             float kf_1 = float(_e23);
             float _e25 = fact;
             fact = (_e25 * kf_1);
-            vec2 _e27 = sum_1;
+            vec2 _e27 = sum_2;
             vec2 _e28 = h;
             float _e29 = sign_;
             float _e30 = fact;
-            sum_1 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
+            sum_2 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
             vec2 _e35 = a_pow;
             vec2 _e36 = airlight_cmul(_e35, a_2);
             a_pow = _e36;
@@ -197,21 +317,21 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
             sign_ = -(_e41);
         }
     }
-    vec2 _e46 = sum_1;
+    vec2 _e46 = sum_2;
     return _e46;
 }
 
 bool airlight_in_series_region(vec2 z_4) {
-    float x_6 = (z_4.x * 0.7692308);
-    float y_1 = (z_4.y * 0.47619048);
-    return (((x_6 * x_6) + (y_1 * y_1)) < 1.0);
+    float x_9 = (z_4.x * 0.7692308);
+    float y_2 = (z_4.y * 0.47619048);
+    return (((x_9 * x_9) + (y_2 * y_2)) < 1.0);
 }
 
 vec2 airlight_e1_scaled_cf(vec2 z_5) {
     float r2_ = 3e38;
     uint depth = 2u;
     vec2 root = vec2(0.0);
-    vec2 t = vec2(0.0);
+    vec2 t_1 = vec2(0.0);
     uint i = 0u;
     float ax = abs(z_5.x);
     float ay = abs(z_5.y);
@@ -251,14 +371,14 @@ vec2 airlight_e1_scaled_cf(vec2 z_5) {
     }
     vec2 _e63 = root;
     vec2 _e65 = airlight_cmul(b_3, (vec2(1.0, 0.0) + _e63));
-    t = (_e65 * 0.5);
-    bool loop_init_2 = true;
+    t_1 = (_e65 * 0.5);
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_2) {
+        if (!loop_init_5) {
             uint _e95 = i;
             i = (_e95 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_5 = false;
         uint _e71 = i;
         if ((_e71 < 15u)) {
         } else {
@@ -271,13 +391,13 @@ vec2 airlight_e1_scaled_cf(vec2 z_5) {
                 uint _e77 = depth;
                 uint _e78 = i;
                 float kf_2 = float((_e77 - _e78));
-                vec2 _e91 = t;
+                vec2 _e91 = t_1;
                 vec2 _e92 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e91);
-                t = ((z_5 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
+                t_1 = ((z_5 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
             }
         }
     }
-    vec2 _e100 = t;
+    vec2 _e100 = t_1;
     vec2 _e101 = airlight_cdiv(vec2(1.0, 0.0), _e100);
     return _e101;
 }
@@ -296,20 +416,20 @@ vec2 airlight_e1_scaled(vec2 z_6) {
     return _e11;
 }
 
-float airlight_en_scaled_cf(float x_1, uint n) {
+float airlight_en_scaled_cf(float x_4, uint n) {
     uint depth_1 = 2u;
-    float t_1 = 0.0;
+    float t_2 = 0.0;
     uint i_1 = 0u;
-    if ((x_1 < 3.0)) {
+    if ((x_4 < 3.0)) {
         depth_1 = 15u;
     } else {
-        if ((x_1 < 5.0)) {
+        if ((x_4 < 5.0)) {
             depth_1 = 10u;
         } else {
-            if ((x_1 < 10.0)) {
+            if ((x_4 < 10.0)) {
                 depth_1 = 6u;
             } else {
-                if ((x_1 < 30.0)) {
+                if ((x_4 < 30.0)) {
                     depth_1 = 3u;
                 }
             }
@@ -318,20 +438,20 @@ float airlight_en_scaled_cf(float x_1, uint n) {
     float nf_1 = float(n);
     uint _e17 = depth_1;
     float m_3 = float(_e17);
-    float b_4 = ((x_1 + nf_1) + (2.0 * (m_3 + 1.0)));
+    float b_4 = ((x_4 + nf_1) + (2.0 * (m_3 + 1.0)));
     float a_7 = ((m_3 + 2.0) * ((nf_1 + m_3) + 1.0));
     float disc = (1.0 - ((4.0 * a_7) / (b_4 * b_4)));
-    t_1 = b_4;
+    t_2 = b_4;
     if ((disc > 0.0)) {
-        t_1 = ((b_4 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_4 * (1.0 + sqrt(disc))) * 0.5);
     }
-    bool loop_init_3 = true;
+    bool loop_init_6 = true;
     while(true) {
-        if (!loop_init_3) {
+        if (!loop_init_6) {
             uint _e70 = i_1;
             i_1 = (_e70 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_6 = false;
         uint _e48 = i_1;
         if ((_e48 < 15u)) {
         } else {
@@ -344,30 +464,30 @@ float airlight_en_scaled_cf(float x_1, uint n) {
                 uint _e54 = depth_1;
                 uint _e55 = i_1;
                 float kf_3 = float((_e54 - _e55));
-                float _e66 = t_1;
-                t_1 = (((x_1 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e66));
+                float _e66 = t_2;
+                t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e66));
             }
         }
     }
-    float _e73 = t_1;
-    return (1.0 / ((x_1 + nf_1) - (nf_1 / _e73)));
+    float _e73 = t_2;
+    return (1.0 / ((x_4 + nf_1) - (nf_1 / _e73)));
 }
 
-void airlight_en_scaled(float x_2, uint count, inout float out_[16]) {
+void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
     uint n_1 = 2u;
     uint pivot = 1u;
     uint n_2 = 1u;
     bool local_1 = false;
     uint i_2 = 1u;
-    if ((x_2 == 0.0)) {
+    if ((x_5 == 0.0)) {
         out_[0] = AIRLIGHT_FLT_MAX;
-        bool loop_init_4 = true;
+        bool loop_init_7 = true;
         while(true) {
-            if (!loop_init_4) {
+            if (!loop_init_7) {
                 uint _e23 = n_1;
                 n_1 = (_e23 + 1u);
             }
-            loop_init_4 = false;
+            loop_init_7 = false;
             uint _e9 = n_1;
             if ((_e9 <= AIRLIGHT_SCRATCH)) {
             } else {
@@ -381,24 +501,24 @@ void airlight_en_scaled(float x_2, uint count, inout float out_[16]) {
         }
         return;
     }
-    bool _e29 = airlight_in_series_region(vec2(x_2, 0.0));
+    bool _e29 = airlight_in_series_region(vec2(x_5, 0.0));
     if (_e29) {
-        vec2 _e33 = airlight_e1_scaled(vec2(x_2, 0.0));
+        vec2 _e33 = airlight_e1_scaled(vec2(x_5, 0.0));
         out_[0] = _e33.x;
     } else {
-        pivot = uint(clamp(ceil(x_2), 1.0, float(count)));
+        pivot = uint(clamp(ceil(x_5), 1.0, float(count)));
         uint _e40 = pivot;
         uint _e44 = pivot;
-        float _e45 = airlight_en_scaled_cf(x_2, _e44);
+        float _e45 = airlight_en_scaled_cf(x_5, _e44);
         out_[(_e40 - 1u)] = _e45;
     }
-    bool loop_init_5 = true;
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_5) {
+        if (!loop_init_8) {
             uint _e74 = n_2;
             n_2 = (_e74 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_8 = false;
         uint _e48 = n_2;
         if ((_e48 < AIRLIGHT_SCRATCH)) {
         } else {
@@ -419,17 +539,17 @@ void airlight_en_scaled(float x_2, uint count, inout float out_[16]) {
                 uint _e62 = n_2;
                 float _e66 = out_[(_e62 - 1u)];
                 uint _e70 = n_2;
-                out_[_e60] = ((1.0 - (x_2 * _e66)) / float(_e70));
+                out_[_e60] = ((1.0 - (x_5 * _e66)) / float(_e70));
             }
         }
     }
-    bool loop_init_6 = true;
+    bool loop_init_9 = true;
     while(true) {
-        if (!loop_init_6) {
+        if (!loop_init_9) {
             uint _e98 = i_2;
             i_2 = (_e98 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_9 = false;
         uint _e78 = i_2;
         if ((_e78 < AIRLIGHT_SCRATCH)) {
         } else {
@@ -441,9 +561,9 @@ void airlight_en_scaled(float x_2, uint count, inout float out_[16]) {
             if ((_e81 < _e82)) {
                 uint _e84 = pivot;
                 uint _e85 = i_2;
-                uint n_3 = (_e84 - _e85);
-                float _e92 = out_[n_3];
-                out_[(n_3 - 1u)] = ((1.0 - (float(n_3) * _e92)) / x_2);
+                uint n_4 = (_e84 - _e85);
+                float _e92 = out_[n_4];
+                out_[(n_4 - 1u)] = ((1.0 - (float(n_4) * _e92)) / x_5);
             }
         }
     }
@@ -483,22 +603,22 @@ float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu_1) {
     }
 }
 
-float airlight_light(uint kind_1, float p0_1, float p1_1, float c) {
+float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1) {
     float base = 0.0;
     uint e = 0u;
     float acc = 1.0;
     uint i_3 = 0u;
     switch(kind_1) {
         case 1u: {
-            base = c;
+            base = c_1;
             e = uint(p0_1);
-            bool loop_init_7 = true;
+            bool loop_init_10 = true;
             while(true) {
-                if (!loop_init_7) {
+                if (!loop_init_10) {
                     uint _e29 = i_3;
                     i_3 = (_e29 + 1u);
                 }
-                loop_init_7 = false;
+                loop_init_10 = false;
                 uint _e11 = i_3;
                 if ((_e11 < 11u)) {
                 } else {
@@ -522,8 +642,8 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c) {
             return _e31;
         }
         case 2u: {
-            float x_7 = clamp(((c - p1_1) / (p0_1 - p1_1)), 0.0, 1.0);
-            return ((x_7 * x_7) * (3.0 - (2.0 * x_7)));
+            float x_10 = clamp(((c_1 - p1_1) / (p0_1 - p1_1)), 0.0, 1.0);
+            return ((x_10 * x_10) * (3.0 - (2.0 * x_10)));
         }
         default: {
             return 1.0;
@@ -531,41 +651,43 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c) {
     }
 }
 
-float airlight_integrand(AirlightScene s, AirlightCanonical g_1, float sigma, float y) {
-    float y2_ = (y * y);
+float airlight_integrand(AirlightScene s_1, AirlightCanonical g_1, float sigma, float y_1) {
+    float y2_ = (y_1 * y_1);
     float inv = (1.0 / (1.0 + y2_));
     float om = (1.0 - y2_);
     float mu_2 = ((-(sigma) * om) * inv);
-    float c_2 = ((((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y)) * inv);
-    float _e26 = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c_2);
-    float _e31 = airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu_2);
+    float c_3 = ((((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y_1)) * inv);
+    float _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
+    float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
     return (_e26 * _e31);
 }
 
-float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigma_1, float y_c, float r) {
+float[6] airlight_chebyshev(AirlightScene s_2, AirlightCanonical g_2, float sigma_1, float y_c, float r) {
     float prev = 0.0;
     float cur = 0.0;
     float xi[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float values[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint j = 0u;
-    float cheb[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint j_1 = 0u;
+    float cheb[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint j_2 = 0u;
     float t_prev = 0.0;
     float t_cur = 0.0;
-    uint k_2 = 0u;
+    uint k_4 = 0u;
     float tk = 0.0;
     float scale_sum = 0.0;
-    uint k_3 = 0u;
+    uint k_5 = 0u;
     float t_km1_[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float t_k[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float hat[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint k_4 = 1u;
+    uint k_6 = 1u;
     float t_next[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint i_4 = 0u;
     float shifted = 0.0;
+    float amplification = 1.0;
+    uint k_7 = 0u;
     float a_3[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float rk = 1.0;
-    uint k_5 = 0u;
+    uint k_8 = 0u;
     bool local_2 = false;
     float theta = (AIRLIGHT_PI / (6.0 + 6.0));
     float c2_ = cos((theta + theta));
@@ -576,20 +698,20 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     xi = _e15;
     float _e17[6] = airlight_zero_terms();
     values = _e17;
-    bool loop_init_8 = true;
+    bool loop_init_11 = true;
     while(true) {
-        if (!loop_init_8) {
-            uint _e42 = j;
-            j = (_e42 + 1u);
+        if (!loop_init_11) {
+            uint _e42 = j_1;
+            j_1 = (_e42 + 1u);
         }
-        loop_init_8 = false;
-        uint _e21 = j;
+        loop_init_11 = false;
+        uint _e21 = j_1;
         if ((_e21 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e24 = j;
+            uint _e24 = j_1;
             float _e26 = cur;
             xi[_e24] = _e26;
             float _e28 = cur;
@@ -598,41 +720,41 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             float _e32 = cur;
             prev = _e32;
             cur = next;
-            uint _e33 = j;
-            uint _e35 = j;
+            uint _e33 = j_1;
+            uint _e35 = j_1;
             float _e37 = xi[_e35];
-            float _e40 = airlight_integrand(s_1, g_2, sigma_1, (y_c + (r * _e37)));
+            float _e40 = airlight_integrand(s_2, g_2, sigma_1, (y_c + (r * _e37)));
             values[_e33] = _e40;
         }
     }
     float _e44[6] = airlight_zero_terms();
     cheb = _e44;
-    bool loop_init_9 = true;
+    bool loop_init_12 = true;
     while(true) {
-        if (!loop_init_9) {
-            uint _e96 = j_1;
-            j_1 = (_e96 + 1u);
+        if (!loop_init_12) {
+            uint _e96 = j_2;
+            j_2 = (_e96 + 1u);
         }
-        loop_init_9 = false;
-        uint _e48 = j_1;
+        loop_init_12 = false;
+        uint _e48 = j_2;
         if ((_e48 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
             t_prev = 1.0;
-            uint _e53 = j_1;
+            uint _e53 = j_2;
             float _e55 = xi[_e53];
             t_cur = _e55;
-            k_2 = 0u;
-            bool loop_init_10 = true;
+            k_4 = 0u;
+            bool loop_init_13 = true;
             while(true) {
-                if (!loop_init_10) {
-                    uint _e93 = k_2;
-                    k_2 = (_e93 + 1u);
+                if (!loop_init_13) {
+                    uint _e93 = k_4;
+                    k_4 = (_e93 + 1u);
                 }
-                loop_init_10 = false;
-                uint _e59 = k_2;
+                loop_init_13 = false;
+                uint _e59 = k_4;
                 if ((_e59 < AIRLIGHT_TERMS)) {
                 } else {
                     break;
@@ -640,21 +762,21 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
                 {
                     float _e62 = t_cur;
                     tk = _e62;
-                    uint _e64 = k_2;
+                    uint _e64 = k_4;
                     if ((_e64 == 0u)) {
                         tk = 1.0;
                     }
-                    uint _e68 = k_2;
+                    uint _e68 = k_4;
                     float _e70 = cheb[_e68];
-                    uint _e71 = j_1;
+                    uint _e71 = j_2;
                     float _e73 = values[_e71];
                     float _e74 = tk;
                     cheb[_e68] = (_e70 + (_e73 * _e74));
-                    uint _e77 = k_2;
+                    uint _e77 = k_4;
                     if ((_e77 >= 1u)) {
-                        uint _e80 = j_1;
+                        uint _e80 = j_2;
                         float _e82 = xi[_e80];
-                        uint _e83 = j_1;
+                        uint _e83 = j_2;
                         float _e85 = xi[_e83];
                         float _e87 = t_cur;
                         float _e89 = t_prev;
@@ -667,30 +789,30 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             }
         }
     }
-    bool loop_init_11 = true;
+    bool loop_init_14 = true;
     while(true) {
-        if (!loop_init_11) {
-            uint _e126 = k_3;
-            k_3 = (_e126 + 1u);
+        if (!loop_init_14) {
+            uint _e126 = k_5;
+            k_5 = (_e126 + 1u);
         }
-        loop_init_11 = false;
-        uint _e102 = k_3;
+        loop_init_14 = false;
+        uint _e102 = k_5;
         if ((_e102 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e105 = k_3;
+            uint _e105 = k_5;
             float _e107 = cheb[_e105];
             cheb[_e105] = (_e107 * (2.0 / 6.0));
-            uint _e111 = k_3;
+            uint _e111 = k_5;
             if ((_e111 == 0u)) {
-                uint _e114 = k_3;
+                uint _e114 = k_5;
                 float _e116 = cheb[_e114];
                 cheb[_e114] = (_e116 * 0.5);
             }
             float _e119 = scale_sum;
-            uint _e120 = k_3;
+            uint _e120 = k_5;
             float _e122 = cheb[_e120];
             scale_sum = (_e119 + abs(_e122));
         }
@@ -705,14 +827,14 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
     t_k[1] = 1.0;
     float _e140 = cheb[0];
     hat[0] = _e140;
-    bool loop_init_12 = true;
+    bool loop_init_15 = true;
     while(true) {
-        if (!loop_init_12) {
-            uint _e189 = k_4;
-            k_4 = (_e189 + 1u);
+        if (!loop_init_15) {
+            uint _e189 = k_6;
+            k_6 = (_e189 + 1u);
         }
-        loop_init_12 = false;
-        uint _e143 = k_4;
+        loop_init_15 = false;
+        uint _e143 = k_6;
         if ((_e143 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -721,13 +843,13 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             float _e146[6] = airlight_zero_terms();
             t_next = _e146;
             i_4 = 0u;
-            bool loop_init_13 = true;
+            bool loop_init_16 = true;
             while(true) {
-                if (!loop_init_13) {
+                if (!loop_init_16) {
                     uint _e184 = i_4;
                     i_4 = (_e184 + 1u);
                 }
-                loop_init_13 = false;
+                loop_init_16 = false;
                 uint _e150 = i_4;
                 if ((_e150 < AIRLIGHT_TERMS)) {
                 } else {
@@ -736,7 +858,7 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
                 {
                     uint _e153 = i_4;
                     float _e155 = hat[_e153];
-                    uint _e156 = k_4;
+                    uint _e156 = k_6;
                     float _e158 = cheb[_e156];
                     uint _e159 = i_4;
                     float _e161 = t_k[_e159];
@@ -762,114 +884,132 @@ float[6] airlight_chebyshev(AirlightScene s_1, AirlightCanonical g_2, float sigm
             t_k = _e187;
         }
     }
-    float _e198 = scale_sum;
-    float noise = ((((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * pow(2.4142137, 6.0)) * _e198);
-    float _e200[6] = airlight_zero_terms();
-    a_3 = _e200;
-    bool loop_init_14 = true;
+    bool loop_init_17 = true;
     while(true) {
-        if (!loop_init_14) {
-            uint _e240 = k_5;
-            k_5 = (_e240 + 1u);
+        if (!loop_init_17) {
+            uint _e202 = k_7;
+            k_7 = (_e202 + 1u);
         }
-        loop_init_14 = false;
-        uint _e206 = k_5;
-        if ((_e206 < AIRLIGHT_TERMS)) {
+        loop_init_17 = false;
+        uint _e195 = k_7;
+        if ((_e195 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e209 = k_5;
-            if ((_e209 == 0u)) {
-                uint _e212 = k_5;
-                uint _e214 = k_5;
-                float _e216 = hat[_e214];
-                a_3[_e212] = _e216;
+            float _e198 = amplification;
+            amplification = (_e198 * 2.4142137);
+        }
+    }
+    float _e208 = amplification;
+    float _e210 = scale_sum;
+    float noise = ((((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * _e208) * _e210);
+    float _e212[6] = airlight_zero_terms();
+    a_3 = _e212;
+    bool loop_init_18 = true;
+    while(true) {
+        if (!loop_init_18) {
+            uint _e252 = k_8;
+            k_8 = (_e252 + 1u);
+        }
+        loop_init_18 = false;
+        uint _e218 = k_8;
+        if ((_e218 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e221 = k_8;
+            if ((_e221 == 0u)) {
+                uint _e224 = k_8;
+                uint _e226 = k_8;
+                float _e228 = hat[_e226];
+                a_3[_e224] = _e228;
             } else {
-                uint _e217 = k_5;
-                float _e219 = hat[_e217];
-                if ((abs(_e219) > noise)) {
-                    float _e224 = rk;
-                    local_2 = (_e224 > 0.0);
+                uint _e229 = k_8;
+                float _e231 = hat[_e229];
+                if ((abs(_e231) > noise)) {
+                    float _e236 = rk;
+                    local_2 = (_e236 > 0.0);
                 } else {
                     local_2 = false;
                 }
-                bool _e228 = local_2;
-                if (_e228) {
-                    uint _e229 = k_5;
-                    float _e231 = hat[_e229];
-                    float _e232 = rk;
-                    float ak = (_e231 / _e232);
-                    bool _e234 = airlight_is_finite(ak);
-                    if (_e234) {
-                        uint _e235 = k_5;
-                        a_3[_e235] = ak;
+                bool _e240 = local_2;
+                if (_e240) {
+                    uint _e241 = k_8;
+                    float _e243 = hat[_e241];
+                    float _e244 = rk;
+                    float ak = (_e243 / _e244);
+                    bool _e246 = airlight_is_finite(ak);
+                    if (_e246) {
+                        uint _e247 = k_8;
+                        a_3[_e247] = ak;
                     }
                 }
             }
-            float _e237 = rk;
-            rk = (_e237 * r);
+            float _e249 = rk;
+            rk = (_e249 * r);
         }
     }
-    float _e242[6] = a_3;
-    return _e242;
+    float _e254[6] = a_3;
+    return _e254;
 }
 
 float[6] airlight_moments_gauss(AirlightHalf half_) {
     float m[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint j_2 = 0u;
+    uint j_3 = 0u;
     float dv = 0.0;
     float p = 0.0;
-    uint k_6 = 0u;
+    uint k_9 = 0u;
     float _e1[6] = airlight_zero_terms();
     m = _e1;
     float hw = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw);
     vec2 nodes[4] = vec2[4](vec2(-0.8611363, 0.34785485), vec2(-0.33998105, 0.65214515), vec2(0.33998105, 0.65214515), vec2(0.8611363, 0.34785485));
-    bool loop_init_15 = true;
+    bool loop_init_19 = true;
     while(true) {
-        if (!loop_init_15) {
-            uint _e73 = j_2;
-            j_2 = (_e73 + 1u);
+        if (!loop_init_19) {
+            uint _e73 = j_3;
+            j_3 = (_e73 + 1u);
         }
-        loop_init_15 = false;
-        uint _e23 = j_2;
+        loop_init_19 = false;
+        uint _e23 = j_3;
         if ((_e23 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e26 = j_2;
+            uint _e26 = j_3;
             float xi_1 = nodes[_e26].x;
-            float s_10 = (hw * xi_1);
-            float y_2 = (yc + s_10);
+            float s_12 = (hw * xi_1);
+            float y_3 = (yc + s_12);
             dv = (hw * (1.0 + xi_1));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi_1)) / (y_2 * half_.y_hi));
+                dv = ((hw * (1.0 - xi_1)) / (y_3 * half_.y_hi));
             }
-            uint _e42 = j_2;
+            uint _e42 = j_3;
             float _e48 = dv;
-            p = (((nodes[_e42].y * hw) * exp((-(half_.big_h) * _e48))) / (1.0 + (y_2 * y_2)));
-            k_6 = 0u;
-            bool loop_init_16 = true;
+            p = (((nodes[_e42].y * hw) * exp((-(half_.big_h) * _e48))) / (1.0 + (y_3 * y_3)));
+            k_9 = 0u;
+            bool loop_init_20 = true;
             while(true) {
-                if (!loop_init_16) {
-                    uint _e70 = k_6;
-                    k_6 = (_e70 + 1u);
+                if (!loop_init_20) {
+                    uint _e70 = k_9;
+                    k_9 = (_e70 + 1u);
                 }
-                loop_init_16 = false;
-                uint _e59 = k_6;
+                loop_init_20 = false;
+                uint _e59 = k_9;
                 if ((_e59 < AIRLIGHT_TERMS)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e62 = k_6;
+                    uint _e62 = k_9;
                     float _e64 = m[_e62];
                     float _e65 = p;
                     m[_e62] = (_e64 + _e65);
                     float _e67 = p;
-                    p = (_e67 * s_10);
+                    p = (_e67 * s_12);
                 }
             }
         }
@@ -882,11 +1022,13 @@ float airlight_n1_log_part(float v_s, float v_e, bool v_e_infinite) {
     float at_e = 0.0;
     if (!(v_e_infinite)) {
         float y_e = (1.0 / v_e);
-        at_e = log((1.0 + (y_e * y_e)));
+        float _e9 = airlight_log1p((y_e * y_e));
+        at_e = _e9;
     }
     float y_s = (1.0 / v_s);
-    float _e14 = at_e;
-    return (-0.5 * (_e14 - log((1.0 + (y_s * y_s)))));
+    float _e12 = at_e;
+    float _e14 = airlight_log1p((y_s * y_s));
+    return (-0.5 * (_e12 - _e14));
 }
 
 void airlight_t_moments(AirlightHalf half_1, uint count_1, inout float out_1[16]) {
@@ -915,13 +1057,13 @@ void airlight_t_moments(AirlightHalf half_1, uint count_1, inout float out_1[16]
     }
     p_hi = half_1.y_hi;
     p_lo = half_1.y_lo;
-    bool loop_init_17 = true;
+    bool loop_init_21 = true;
     while(true) {
-        if (!loop_init_17) {
+        if (!loop_init_21) {
             uint _e68 = order;
             order = (_e68 + 1u);
         }
-        loop_init_17 = false;
+        loop_init_21 = false;
         uint _e35 = order;
         if ((_e35 < AIRLIGHT_SCRATCH)) {
         } else {
@@ -950,19 +1092,19 @@ void airlight_t_moments(AirlightHalf half_1, uint count_1, inout float out_1[16]
 }
 
 float airlight_n1_series(AirlightHalf half_2) {
-    float t_2[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float sum_2 = 0.0;
+    float t_3[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float sum_3 = 0.0;
     uint i_5 = 0u;
     float _e1[16] = airlight_zero_scratch();
-    t_2 = _e1;
-    airlight_t_moments(half_2, 13u, t_2);
-    bool loop_init_18 = true;
+    t_3 = _e1;
+    airlight_t_moments(half_2, 13u, t_3);
+    bool loop_init_22 = true;
     while(true) {
-        if (!loop_init_18) {
+        if (!loop_init_22) {
             uint _e31 = i_5;
             i_5 = (_e31 + 1u);
         }
-        loop_init_18 = false;
+        loop_init_22 = false;
         uint _e8 = i_5;
         if ((_e8 < 6u)) {
         } else {
@@ -970,18 +1112,18 @@ float airlight_n1_series(AirlightHalf half_2) {
         }
         {
             uint _e12 = i_5;
-            uint j_7 = (5u - _e12);
-            float tn = t_2[((3u + (2u * j_7)) - 1u)];
-            if (((j_7 % 2u) == 0u)) {
-                float _e26 = sum_2;
-                sum_2 = (_e26 + tn);
+            uint j_8 = (5u - _e12);
+            float tn = t_3[((3u + (2u * j_8)) - 1u)];
+            if (((j_8 % 2u) == 0u)) {
+                float _e26 = sum_3;
+                sum_3 = (_e26 + tn);
             } else {
-                float _e28 = sum_2;
-                sum_2 = (_e28 - tn);
+                float _e28 = sum_3;
+                sum_3 = (_e28 - tn);
             }
         }
     }
-    float _e33 = sum_2;
+    float _e33 = sum_3;
     return _e33;
 }
 
@@ -1036,54 +1178,59 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     if (near) {
         if (!(v_e_infinite_1)) {
             float _e55 = v_e_1;
-            d_im = atan((half_3.dv / (1.0 + (v_s_1 * _e55))));
+            float _e60 = airlight_atan((half_3.dv / (1.0 + (v_s_1 * _e55))));
+            d_im = _e60;
             float _e62 = v_e_1;
-            d_re = (0.5 * log((1.0 + ((half_3.dv * (v_s_1 + _e62)) / (1.0 + (v_s_1 * v_s_1))))));
+            float _e69 = airlight_log1p(((half_3.dv * (v_s_1 + _e62)) / (1.0 + (v_s_1 * v_s_1))));
+            d_re = (0.5 * _e69);
         } else {
-            d_im = atan((1.0 / v_s_1));
+            float _e74 = airlight_atan((1.0 / v_s_1));
+            d_im = _e74;
         }
         if ((big_h == 0.0)) {
             if (!(half_3.second)) {
-                float _e81 = d_re;
-                float _e82 = d_im;
-                return vec2(_e81, _e82);
+                float _e79 = d_re;
+                float _e80 = d_im;
+                return vec2(_e79, _e80);
             }
             if (with_re) {
-                float _e86 = v_e_1;
-                float _e87 = airlight_n1_log_part(v_s_1, _e86, v_e_infinite_1);
-                n1_ = _e87;
+                float _e84 = v_e_1;
+                float _e85 = airlight_n1_log_part(v_s_1, _e84, v_e_infinite_1);
+                n1_ = _e85;
             }
-            float _e88 = n1_;
-            float _e89 = d_im;
-            return vec2(_e88, _e89);
+            float _e86 = n1_;
+            float _e87 = d_im;
+            return vec2(_e86, _e87);
         }
         vec2 z_s = vec2((big_h * v_s_1), -(big_h));
-        float _e94 = v_e_1;
-        vec2 z_e = vec2((big_h * _e94), -(big_h));
+        float _e92 = v_e_1;
+        vec2 z_e = vec2((big_h * _e92), -(big_h));
         float hdv = (big_h * half_3.dv);
-        vec2 _e100 = airlight_ein_divided_difference(z_s, z_e);
-        vec2 rot = vec2(cos(big_h), -(sin(big_h)));
+        vec2 _e98 = airlight_ein_divided_difference(z_s, z_e);
+        vec2 _e99 = airlight_cos_sin(big_h);
+        vec2 rot = vec2(_e99.x, -(_e99.y));
         float scale = exp((big_h * v_s_1));
-        float _e107 = d_re;
-        float _e108 = d_im;
-        vec2 _e112 = airlight_cmul(rot, (vec2(_e107, _e108) - (_e100 * hdv)));
-        vec2 c_3 = (_e112 * scale);
+        float _e106 = d_re;
+        float _e107 = d_im;
+        vec2 _e111 = airlight_cmul(rot, (vec2(_e106, _e107) - (_e98 * hdv)));
+        vec2 c_4 = (_e111 * scale);
         if (!(half_3.second)) {
-            return c_3;
+            return c_4;
         }
         if (with_re) {
-            float sh = sin((big_h * 0.5));
+            vec2 _e119 = airlight_cos_sin((big_h * 0.5));
+            float sh = _e119.y;
             float _e124 = v_e_1;
             vec2 _e128 = airlight_ein_divided_difference(vec2((big_h * v_s_1), 0.0), vec2((big_h * _e124), 0.0));
             float _e129 = v_e_1;
             float _e131 = airlight_n1_log_part(v_s_1, _e129, false);
             float _e135 = d_re;
             float _e139 = d_im;
-            vec2 _e143 = airlight_cmul(rot, _e100);
-            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (sin(big_h) * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
+            vec2 _e143 = airlight_cmul(rot, _e98);
+            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (_e99.y * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
         }
         float _e149 = n1_1;
-        return vec2(_e149, c_3.y);
+        return vec2(_e149, c_4.y);
     }
     vec2 _e155 = airlight_e1_scaled(vec2((big_h * v_s_1), -(big_h)));
     if (!(v_e_infinite_1)) {
@@ -1094,9 +1241,9 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     }
     vec2 _e172 = s_e_1;
     float _e173 = decay_1;
-    vec2 c_4 = (_e155 - (_e172 * _e173));
+    vec2 c_5 = (_e155 - (_e172 * _e173));
     if (!(half_3.second)) {
-        return c_4;
+        return c_5;
     }
     if (with_re) {
         if ((half_3.y_hi <= 0.25)) {
@@ -1122,28 +1269,28 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
         }
     }
     float _e209 = n1_2;
-    return vec2(_e209, c_4.y);
+    return vec2(_e209, c_5.y);
 }
 
-float[6] airlight_phi_moments(float x_3) {
+float[6] airlight_phi_moments(float x_6) {
     float out_2[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint i_6 = 0u;
     float term_1 = 0.0;
-    float sum_3 = 0.0;
-    uint j_3 = 0u;
+    float sum_4 = 0.0;
+    uint j_4 = 0u;
     float prev_1 = 0.0;
     uint i_7 = 0u;
     float _e1[6] = airlight_zero_terms();
     out_2 = _e1;
-    float ex = exp(-(x_3));
-    if ((x_3 <= 2.6)) {
-        bool loop_init_19 = true;
+    float ex = exp(-(x_6));
+    if ((x_6 <= 2.6)) {
+        bool loop_init_23 = true;
         while(true) {
-            if (!loop_init_19) {
+            if (!loop_init_23) {
                 uint _e46 = i_6;
                 i_6 = (_e46 + 1u);
             }
-            loop_init_19 = false;
+            loop_init_23 = false;
             uint _e9 = i_6;
             if ((_e9 < AIRLIGHT_TERMS)) {
             } else {
@@ -1153,16 +1300,16 @@ float[6] airlight_phi_moments(float x_3) {
                 uint _e12 = i_6;
                 term_1 = (1.0 / float((_e12 + 1u)));
                 float _e19 = term_1;
-                sum_3 = _e19;
-                j_3 = 1u;
-                bool loop_init_20 = true;
+                sum_4 = _e19;
+                j_4 = 1u;
+                bool loop_init_24 = true;
                 while(true) {
-                    if (!loop_init_20) {
-                        uint _e39 = j_3;
-                        j_3 = (_e39 + 1u);
+                    if (!loop_init_24) {
+                        uint _e39 = j_4;
+                        j_4 = (_e39 + 1u);
                     }
-                    loop_init_20 = false;
-                    uint _e23 = j_3;
+                    loop_init_24 = false;
+                    uint _e23 = j_4;
                     if ((_e23 <= 14u)) {
                     } else {
                         break;
@@ -1170,27 +1317,27 @@ float[6] airlight_phi_moments(float x_3) {
                     {
                         float _e26 = term_1;
                         uint _e27 = i_6;
-                        uint _e28 = j_3;
-                        term_1 = (_e26 * (x_3 / float(((_e27 + _e28) + 1u))));
-                        float _e35 = sum_3;
+                        uint _e28 = j_4;
+                        term_1 = (_e26 * (x_6 / float(((_e27 + _e28) + 1u))));
+                        float _e35 = sum_4;
                         float _e36 = term_1;
-                        sum_3 = (_e35 + _e36);
+                        sum_4 = (_e35 + _e36);
                     }
                 }
                 uint _e41 = i_6;
-                float _e43 = sum_3;
+                float _e43 = sum_4;
                 out_2[_e41] = (ex * _e43);
             }
         }
     } else {
-        prev_1 = ((1.0 - ex) / x_3);
-        bool loop_init_21 = true;
+        prev_1 = ((1.0 - ex) / x_6);
+        bool loop_init_25 = true;
         while(true) {
-            if (!loop_init_21) {
+            if (!loop_init_25) {
                 uint _e70 = i_7;
                 i_7 = (_e70 + 1u);
             }
-            loop_init_21 = false;
+            loop_init_25 = false;
             uint _e54 = i_7;
             if ((_e54 < AIRLIGHT_TERMS)) {
             } else {
@@ -1201,7 +1348,7 @@ float[6] airlight_phi_moments(float x_3) {
                 if ((_e57 > 0u)) {
                     uint _e60 = i_7;
                     float _e62 = prev_1;
-                    prev_1 = (((float(_e60) * _e62) - ex) / x_3);
+                    prev_1 = (((float(_e60) * _e62) - ex) / x_6);
                 }
                 uint _e66 = i_7;
                 float _e68 = prev_1;
@@ -1213,62 +1360,62 @@ float[6] airlight_phi_moments(float x_3) {
     return _e72;
 }
 
-float[6] airlight_binomial_shift(float x_4[6], float c_1) {
+float[6] airlight_binomial_shift(float x_7[6], float c_2) {
     float out_3[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint j_4 = 0u;
-    float sum_4 = 0.0;
+    uint j_5 = 0u;
+    float sum_5 = 0.0;
     float binom = 0.0;
     float cp = 0.0;
     uint ii = 0u;
     float _e2[6] = airlight_zero_terms();
     out_3 = _e2;
-    bool loop_init_22 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_22) {
-            uint _e48 = j_4;
-            j_4 = (_e48 + 1u);
+        if (!loop_init_26) {
+            uint _e48 = j_5;
+            j_5 = (_e48 + 1u);
         }
-        loop_init_22 = false;
-        uint _e6 = j_4;
+        loop_init_26 = false;
+        uint _e6 = j_5;
         if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            sum_4 = 0.0;
+            sum_5 = 0.0;
             binom = 1.0;
             cp = 1.0;
             ii = 0u;
-            bool loop_init_23 = true;
+            bool loop_init_27 = true;
             while(true) {
-                if (!loop_init_23) {
+                if (!loop_init_27) {
                     uint _e42 = ii;
                     ii = (_e42 + 1u);
                 }
-                loop_init_23 = false;
+                loop_init_27 = false;
                 uint _e17 = ii;
-                uint _e18 = j_4;
+                uint _e18 = j_5;
                 if ((_e17 <= _e18)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e20 = j_4;
+                    uint _e20 = j_5;
                     uint _e21 = ii;
                     uint i_14 = (_e20 - _e21);
-                    float _e23 = sum_4;
+                    float _e23 = sum_5;
                     float _e24 = binom;
                     float _e27 = cp;
-                    sum_4 = (_e23 + ((_e24 * x_4[i_14]) * _e27));
+                    sum_5 = (_e23 + ((_e24 * x_7[i_14]) * _e27));
                     float _e30 = binom;
-                    uint _e33 = j_4;
+                    uint _e33 = j_5;
                     binom = ((_e30 * float(i_14)) / float(((_e33 - i_14) + 1u)));
                     float _e39 = cp;
-                    cp = (_e39 * c_1);
+                    cp = (_e39 * c_2);
                 }
             }
-            uint _e44 = j_4;
-            float _e46 = sum_4;
+            uint _e44 = j_5;
+            float _e46 = sum_5;
             out_3[_e44] = _e46;
         }
     }
@@ -1283,14 +1430,14 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
     bool local_10 = false;
     bool local_11 = false;
     float r_1[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float t_3[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float x_5[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float t_4[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float x_8[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint i_8 = 0u;
     float tau[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float p_1 = 0.0;
     uint i_9 = 0u;
     vec2 q = vec2(0.0);
-    uint k_7 = 1u;
+    uint k_10 = 1u;
     float _e2[6] = airlight_zero_terms();
     m_1 = _e2;
     if (!((half_4.dy > 0.0))) {
@@ -1333,17 +1480,17 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
         r_1 = _e56;
         if (half_4.second) {
             float _e59[16] = airlight_zero_scratch();
-            t_3 = _e59;
-            airlight_t_moments(half_4, 7u, t_3);
+            t_4 = _e59;
+            airlight_t_moments(half_4, 7u, t_4);
             float _e62[6] = airlight_zero_terms();
-            x_5 = _e62;
-            bool loop_init_24 = true;
+            x_8 = _e62;
+            bool loop_init_28 = true;
             while(true) {
-                if (!loop_init_24) {
+                if (!loop_init_28) {
                     uint _e77 = i_8;
                     i_8 = (_e77 + 1u);
                 }
-                loop_init_24 = false;
+                loop_init_28 = false;
                 uint _e66 = i_8;
                 if ((_e66 < AIRLIGHT_TERMS)) {
                 } else {
@@ -1352,11 +1499,11 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
                 {
                     uint _e69 = i_8;
                     uint _e71 = i_8;
-                    float _e75 = t_3[(_e71 + 1u)];
-                    x_5[_e69] = _e75;
+                    float _e75 = t_4[(_e71 + 1u)];
+                    x_8[_e69] = _e75;
                 }
             }
-            float _e79[6] = x_5;
+            float _e79[6] = x_8;
             float _e81[6] = airlight_binomial_shift(_e79, -(yc_1));
             r_1 = _e81;
         } else {
@@ -1365,13 +1512,13 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
             float _e86[6] = airlight_zero_terms();
             tau = _e86;
             p_1 = delta;
-            bool loop_init_25 = true;
+            bool loop_init_29 = true;
             while(true) {
-                if (!loop_init_25) {
+                if (!loop_init_29) {
                     uint _e103 = i_9;
                     i_9 = (_e103 + 1u);
                 }
-                loop_init_25 = false;
+                loop_init_29 = false;
                 uint _e91 = i_9;
                 if ((_e91 < AIRLIGHT_TERMS)) {
                 } else {
@@ -1392,25 +1539,25 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
         }
         vec2 b_5 = vec2(yc_1, -1.0);
         q = _e51;
-        bool loop_init_26 = true;
+        bool loop_init_30 = true;
         while(true) {
-            if (!loop_init_26) {
-                uint _e133 = k_7;
-                k_7 = (_e133 + 1u);
+            if (!loop_init_30) {
+                uint _e133 = k_10;
+                k_10 = (_e133 + 1u);
             }
-            loop_init_26 = false;
-            uint _e115 = k_7;
+            loop_init_30 = false;
+            uint _e115 = k_10;
             if ((_e115 < AIRLIGHT_TERMS)) {
             } else {
                 break;
             }
             {
-                uint _e118 = k_7;
+                uint _e118 = k_10;
                 float _e122 = r_1[(_e118 - 1u)];
                 vec2 _e125 = q;
                 vec2 _e126 = airlight_cmul(b_5, _e125);
                 q = (vec2(_e122, 0.0) - _e126);
-                uint _e128 = k_7;
+                uint _e128 = k_10;
                 float _e131 = q.y;
                 m_1[_e128] = _e131;
             }
@@ -1431,35 +1578,35 @@ float airlight_hypot_one(float a_5) {
     return abs(a_5);
 }
 
-float airlight_piece(AirlightScene s_2, AirlightCanonical g_3, float sigma_2, AirlightHalf half_5) {
-    float j_5 = 0.0;
-    uint k_8 = 0u;
+float airlight_piece(AirlightScene s_3, AirlightCanonical g_3, float sigma_2, AirlightHalf half_5) {
+    float j_6 = 0.0;
+    uint k_11 = 0u;
     float _e5[6] = airlight_moments(half_5, AIRLIGHT_TERMS);
-    float _e14[6] = airlight_chebyshev(s_2, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
-    bool loop_init_27 = true;
+    float _e14[6] = airlight_chebyshev(s_3, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
+    bool loop_init_31 = true;
     while(true) {
-        if (!loop_init_27) {
-            uint _e30 = k_8;
-            k_8 = (_e30 + 1u);
+        if (!loop_init_31) {
+            uint _e30 = k_11;
+            k_11 = (_e30 + 1u);
         }
-        loop_init_27 = false;
-        uint _e19 = k_8;
+        loop_init_31 = false;
+        uint _e19 = k_11;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            float _e22 = j_5;
-            uint _e23 = k_8;
-            uint _e25 = k_8;
-            j_5 = (_e22 + (_e14[_e23] * _e5[_e25]));
+            float _e22 = j_6;
+            uint _e23 = k_11;
+            uint _e25 = k_11;
+            j_6 = (_e22 + (_e14[_e23] * _e5[_e25]));
         }
     }
-    float _e32 = j_5;
+    float _e32 = j_6;
     return _e32;
 }
 
-float airlight_subdivided(AirlightScene s_3, AirlightCanonical g_4, float sigma_3, AirlightHalf piece) {
+float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_4, float sigma_3, AirlightHalf piece) {
     float parts = 1.0;
     bool local_12 = false;
     float total = 0.0;
@@ -1467,79 +1614,91 @@ float airlight_subdivided(AirlightScene s_3, AirlightCanonical g_4, float sigma_
     float hi = 0.0;
     float dv_1 = 0.0;
     float offset = 0.0;
-    if (!(piece.dv_infinite)) {
-        local_12 = (piece.dy <= 0.25);
+    bool inf = false;
+    if ((piece.dy <= 0.25)) {
+        local_12 = (piece.big_h > 0.0);
     } else {
         local_12 = false;
     }
-    bool _e14 = local_12;
-    if (_e14) {
-        parts = clamp(ceil((piece.big_h * piece.dv)), 1.0, 8.0);
-    }
-    float _e22 = parts;
-    if ((_e22 <= 1.0)) {
-        float _e25 = airlight_piece(s_3, g_4, sigma_3, piece);
-        return _e25;
-    }
-    float _e26 = parts;
-    uint n_4 = uint(_e26);
-    float _e29 = parts;
-    float step_ = (piece.dy / _e29);
-    bool loop_init_28 = true;
-    while(true) {
-        if (!loop_init_28) {
-            uint _e85 = i_10;
-            i_10 = (_e85 + 1u);
+    bool _e15 = local_12;
+    if (_e15) {
+        if (piece.dv_infinite) {
+            parts = 8.0;
+        } else {
+            parts = clamp(ceil((piece.big_h * piece.dv)), 1.0, 8.0);
         }
-        loop_init_28 = false;
-        uint _e35 = i_10;
-        if ((_e35 < 8u)) {
+    }
+    float _e25 = parts;
+    if ((_e25 <= 1.0)) {
+        float _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        return _e28;
+    }
+    float _e29 = parts;
+    uint n_5 = uint(_e29);
+    float _e32 = parts;
+    float step_ = (piece.dy / _e32);
+    bool loop_init_32 = true;
+    while(true) {
+        if (!loop_init_32) {
+            uint _e94 = i_10;
+            i_10 = (_e94 + 1u);
+        }
+        loop_init_32 = false;
+        uint _e38 = i_10;
+        if ((_e38 < 8u)) {
         } else {
             break;
         }
         {
-            uint _e38 = i_10;
-            if ((_e38 < n_4)) {
-                uint _e41 = i_10;
-                float lo_1 = (piece.y_lo + (step_ * float(_e41)));
+            uint _e41 = i_10;
+            if ((_e41 < n_5)) {
+                uint _e44 = i_10;
+                float lo_1 = (piece.y_lo + (step_ * float(_e44)));
                 hi = (lo_1 + step_);
-                uint _e47 = i_10;
-                if (((_e47 + 1u) == n_4)) {
+                uint _e50 = i_10;
+                if (((_e50 + 1u) == n_5)) {
                     hi = piece.y_hi;
                 }
-                float _e52 = hi;
-                float dy_1 = (_e52 - lo_1);
+                float _e55 = hi;
+                float dy_1 = (_e55 - lo_1);
                 dv_1 = dy_1;
                 offset = (lo_1 - piece.y_lo);
+                inf = false;
                 if (piece.second) {
-                    float _e59 = hi;
-                    dv_1 = (dy_1 / (lo_1 * _e59));
-                    float _e63 = hi;
-                    float _e65 = hi;
-                    offset = ((piece.y_hi - _e63) / (_e65 * piece.y_hi));
+                    if ((lo_1 == 0.0)) {
+                        inf = true;
+                        dv_1 = 0.0;
+                    } else {
+                        float _e68 = hi;
+                        dv_1 = (dy_1 / (lo_1 * _e68));
+                    }
+                    float _e72 = hi;
+                    float _e74 = hi;
+                    offset = ((piece.y_hi - _e72) / (_e74 * piece.y_hi));
                 }
-                float _e71 = hi;
-                float _e72 = dv_1;
-                AirlightHalf part = AirlightHalf(piece.second, piece.big_h, lo_1, _e71, dy_1, _e72, false);
-                float _e75 = total;
-                float _e78 = offset;
-                float _e81 = airlight_piece(s_3, g_4, sigma_3, part);
-                total = (_e75 + (exp((-(piece.big_h) * _e78)) * _e81));
+                float _e80 = hi;
+                float _e81 = dv_1;
+                bool _e82 = inf;
+                AirlightHalf part = AirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
+                float _e84 = total;
+                float _e87 = offset;
+                float _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
             }
         }
     }
-    float _e87 = total;
-    return _e87;
+    float _e96 = total;
+    return _e96;
 }
 
-vec2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_9) {
+vec2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_12) {
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_1 = -1.0;
-    float a_8 = (k_9 + (sigma_4 * d_el));
+    float a_8 = (k_12 + (sigma_4 * d_el));
     float b_6 = -((d_c + d_c));
-    float c_5 = (k_9 - (sigma_4 * d_el));
-    float disc_1 = ((b_6 * b_6) - ((4.0 * a_8) * c_5));
+    float c_6 = (k_12 - (sigma_4 * d_el));
+    float disc_1 = ((b_6 * b_6) - ((4.0 * a_8) * c_6));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
@@ -1549,7 +1708,7 @@ vec2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_9) {
     float _e26 = sb;
     float q_1 = (-0.5 * (b_6 + (_e26 * sqrt(disc_1))));
     if ((q_1 != 0.0)) {
-        r1_ = (c_5 / q_1);
+        r1_ = (c_6 / q_1);
     }
     if ((a_8 != 0.0)) {
         r2_1 = (q_1 / a_8);
@@ -1559,12 +1718,12 @@ vec2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_9) {
     return vec2(_e42, _e43);
 }
 
-float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, AirlightHalf half_6, bool isotropic) {
+float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, AirlightHalf half_6, bool isotropic) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     uint i_11 = 0u;
     bool local_13 = false;
     uint i_12 = 0u;
-    uint j_6 = 0u;
+    uint j_7 = 0u;
     float total_1 = 0.0;
     float lo = 0.0;
     uint i_13 = 0u;
@@ -1572,24 +1731,24 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
     bool local_14 = false;
     float dv_2 = 0.0;
     float offset_1 = 0.0;
-    bool inf = false;
+    bool inf_1 = false;
     bool local_15 = false;
     if (isotropic) {
         float _e6[6] = airlight_moments(half_6, 1u);
-        float _e12 = airlight_integrand(s_4, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5)));
+        float _e12 = airlight_integrand(s_5, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5)));
         return (_e12 * _e6[0]);
     }
-    if ((s_4.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        vec2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_a);
-        vec2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_b);
+    if ((s_5.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        vec2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_a);
+        vec2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_b);
         cuts = float[4](_e27.x, _e27.y, _e31.x, _e31.y);
-        bool loop_init_29 = true;
+        bool loop_init_33 = true;
         while(true) {
-            if (!loop_init_29) {
+            if (!loop_init_33) {
                 uint _e61 = i_11;
                 i_11 = (_e61 + 1u);
             }
-            loop_init_29 = false;
+            loop_init_33 = false;
             uint _e39 = i_11;
             if ((_e39 < 4u)) {
             } else {
@@ -1612,47 +1771,47 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
                 }
             }
         }
-        bool loop_init_30 = true;
+        bool loop_init_34 = true;
         while(true) {
-            if (!loop_init_30) {
+            if (!loop_init_34) {
                 uint _e102 = i_12;
                 i_12 = (_e102 + 1u);
             }
-            loop_init_30 = false;
+            loop_init_34 = false;
             uint _e65 = i_12;
             if ((_e65 < 3u)) {
             } else {
                 break;
             }
             {
-                j_6 = 0u;
-                bool loop_init_31 = true;
+                j_7 = 0u;
+                bool loop_init_35 = true;
                 while(true) {
-                    if (!loop_init_31) {
-                        uint _e99 = j_6;
-                        j_6 = (_e99 + 1u);
+                    if (!loop_init_35) {
+                        uint _e99 = j_7;
+                        j_7 = (_e99 + 1u);
                     }
-                    loop_init_31 = false;
-                    uint _e70 = j_6;
+                    loop_init_35 = false;
+                    uint _e70 = j_7;
                     uint _e72 = i_12;
                     if ((_e70 < (3u - _e72))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e75 = j_6;
+                        uint _e75 = j_7;
                         float _e77 = cuts[_e75];
-                        uint _e78 = j_6;
+                        uint _e78 = j_7;
                         float _e82 = cuts[(_e78 + 1u)];
                         if ((_e77 > _e82)) {
-                            uint _e84 = j_6;
-                            float t_6 = cuts[_e84];
-                            uint _e87 = j_6;
-                            uint _e89 = j_6;
+                            uint _e84 = j_7;
+                            float t_7 = cuts[_e84];
+                            uint _e87 = j_7;
+                            uint _e89 = j_7;
                             float _e93 = cuts[(_e89 + 1u)];
                             cuts[_e87] = _e93;
-                            uint _e94 = j_6;
-                            cuts[(_e94 + 1u)] = t_6;
+                            uint _e94 = j_7;
+                            cuts[(_e94 + 1u)] = t_7;
                         }
                     }
                 }
@@ -1661,17 +1820,17 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
     }
     float _e105 = cuts[0];
     if ((_e105 >= 2.0)) {
-        float _e108 = airlight_piece(s_4, g_5, sigma_5, half_6);
+        float _e108 = airlight_piece(s_5, g_5, sigma_5, half_6);
         return _e108;
     }
     lo = half_6.y_lo;
-    bool loop_init_32 = true;
+    bool loop_init_36 = true;
     while(true) {
-        if (!loop_init_32) {
+        if (!loop_init_36) {
             uint _e195 = i_13;
             i_13 = (_e195 + 1u);
         }
-        loop_init_32 = false;
+        loop_init_36 = false;
         uint _e115 = i_13;
         if ((_e115 < 5u)) {
         } else {
@@ -1702,11 +1861,11 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
                 dv_2 = dy_2;
                 float _e142 = lo;
                 offset_1 = (_e142 - half_6.y_lo);
-                inf = false;
+                inf_1 = false;
                 if (half_6.second) {
                     float _e149 = lo;
                     if ((_e149 == 0.0)) {
-                        inf = true;
+                        inf_1 = true;
                         dv_2 = 0.0;
                     } else {
                         float _e154 = lo;
@@ -1720,11 +1879,11 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
                 float _e167 = lo;
                 float _e168 = hi_1;
                 float _e169 = dv_2;
-                bool _e170 = inf;
+                bool _e170 = inf_1;
                 AirlightHalf piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e167, _e168, dy_2, _e169, _e170);
                 float _e172 = total_1;
                 float _e175 = offset_1;
-                float _e178 = airlight_subdivided(s_4, g_5, sigma_5, piece_1);
+                float _e178 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
                 total_1 = (_e172 + (exp((-(half_6.big_h) * _e175)) * _e178));
                 float _e181 = hi_1;
                 lo = _e181;
@@ -1747,12 +1906,12 @@ float airlight_half(AirlightScene s_4, AirlightCanonical g_5, float sigma_5, Air
     return _e197;
 }
 
-float airlight_on_line(AirlightScene s_5, AirlightCanonical g_6) {
+float airlight_on_line(AirlightScene s_6, AirlightCanonical g_6) {
     bool local_16 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
-    float k_10 = (s_5.sigma_s * s_5.intensity);
+    float k_13 = (s_6.sigma_s * s_6.intensity);
     if (!(g_6.t_hi_infinite)) {
         local_16 = (g_6.x_h > g_6.t_hi);
     } else {
@@ -1760,42 +1919,42 @@ float airlight_on_line(AirlightScene s_5, AirlightCanonical g_6) {
     }
     bool _e13 = local_16;
     if (_e13) {
-        float _e19 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, -(g_6.d_el));
-        float _e25 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, 1.0);
+        float _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        float _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
         float f = (_e19 * _e25);
         float r0_ = (g_6.x_h - g_6.t_lo);
         float r1_1 = (g_6.x_h - g_6.t_hi);
-        return (((k_10 * f) * exp((-(s_5.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
+        return (((k_13 * f) * exp((-(s_6.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
     }
-    float _e49 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, g_6.d_el);
-    float _e55 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, -1.0);
+    float _e49 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    float _e55 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
     float f_1 = (_e49 * _e55);
     float s0_ = (g_6.t_lo - g_6.x_h);
     float s1_ = (g_6.t_hi - g_6.x_h);
-    if ((s_5.sigma_t == 0.0)) {
+    if ((s_6.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_6.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        return ((k_10 * f_1) * _e75);
+        return ((k_13 * f_1) * _e75);
     }
-    float two_st = (s_5.sigma_t + s_5.sigma_t);
+    float two_st = (s_6.sigma_t + s_6.sigma_t);
     float _e80[16] = airlight_zero_scratch();
     e2_ = _e80;
     airlight_en_scaled((two_st * s0_), 2u, e2_);
     float _e89 = e2_[1];
-    float head = ((exp((-(s_5.sigma_t) * s0_)) * _e89) / s0_);
+    float head = ((exp((-(s_6.sigma_t) * s0_)) * _e89) / s0_);
     if (!(g_6.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
         float _e107 = e2_[1];
-        tail_1 = ((exp(((-(s_5.sigma_t) * (s1_ - s0_)) - (s_5.sigma_t * s1_))) * _e107) / s1_);
+        tail_1 = ((exp(((-(s_6.sigma_t) * (s1_ - s0_)) - (s_6.sigma_t * s1_))) * _e107) / s1_);
     }
     float _e111 = tail_1;
-    return ((k_10 * f_1) * (head - _e111));
+    return ((k_13 * f_1) * (head - _e111));
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonical g_7) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonical g_7) {
     bool local_17 = false;
     bool local_18 = false;
     bool local_19 = false;
@@ -1826,7 +1985,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
     }
     bool _e10 = local_17;
     if (!(!(_e10))) {
-        local_18 = ((s_6.sigma_s * s_6.intensity) == 0.0);
+        local_18 = ((s_7.sigma_s * s_7.intensity) == 0.0);
     } else {
         local_18 = true;
     }
@@ -1863,16 +2022,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
     }
     bool _e55 = local_21;
     if (_e55) {
-        float _e56 = airlight_on_line(s_6, g_7);
+        float _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_1 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_1 = (s_6.sigma_t * h_1);
-    if (!((s_6.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_6.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_23 = (s_6.light_param_a == 0.0);
+    float big_h_1 = (s_7.sigma_t * h_1);
+    if (!((s_7.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_23 = (s_7.light_param_a == 0.0);
         } else {
             local_23 = false;
         }
@@ -1883,15 +2042,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
     }
     bool _e85 = local_22;
     if (_e85) {
-        if (!((s_6.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_6.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_26 = (s_6.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_26 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_26 = true;
             }
             bool _e104 = local_26;
             if (_e104) {
-                local_27 = (s_6.phase_param_a == 0.0);
+                local_27 = (s_7.phase_param_a == 0.0);
             } else {
                 local_27 = false;
             }
@@ -1906,7 +2065,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
         local_24 = false;
     }
     bool isotropic_1 = local_24;
-    float prefactor = (((2.0 * s_6.sigma_s) * s_6.intensity) / h_1);
+    float prefactor = (((2.0 * s_7.sigma_s) * s_7.intensity) / h_1);
     if ((t0_ < x_h)) {
         float a_s = ((x_h - t0_) / h_1);
         t_end = x_h;
@@ -1928,7 +2087,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
         float _e142 = t_end;
         float dy_3 = (((((_e142 - t0_) / h_1) * (1.0 + ((a_s + a_e) / (_e138 + _e139)))) * _e140) * _e141);
         AirlightHalf half_7 = AirlightHalf(false, big_h_1, _e140, _e141, dy_3, dy_3, false);
-        float _e157 = airlight_half(s_6, g_7, -1.0, half_7, isotropic_1);
+        float _e157 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
         float _e158 = total_2;
         total_2 = (_e158 + ((prefactor * exp((-(big_h_1) * _e138))) * _e157));
     }
@@ -1966,9 +2125,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_6, AirlightCanonica
         float _e212 = dv_3;
         bool _e213 = infinite;
         AirlightHalf half_8 = AirlightHalf(true, big_h_1, _e210, _e176, _e211, _e212, _e213);
-        float _e216 = airlight_half(s_6, g_7, 1.0, half_8, isotropic_1);
+        float _e216 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
         float _e217 = total_2;
-        total_2 = (_e217 + (((exp((-(s_6.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
+        total_2 = (_e217 + (((exp((-(s_7.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
     }
     float _e230 = total_2;
     return AirlightResult(max(_e230, 0.0), AIRLIGHT_STATUS_OK);
@@ -2003,7 +2162,7 @@ float airlight_safe_length(vec3 v_1) {
     return (m_4 * length((v_1 / vec3(m_4))));
 }
 
-bool airlight_valid(AirlightScene s_7) {
+bool airlight_valid(AirlightScene s_8) {
     bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
@@ -2032,171 +2191,171 @@ bool airlight_valid(AirlightScene s_7) {
     bool local_57 = false;
     bool local_58 = false;
     bool local_59 = false;
-    bool _e2 = airlight_vec_finite(s_7.origin);
+    bool _e2 = airlight_vec_finite(s_8.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_7.dir);
+        bool _e6 = airlight_vec_finite(s_8.dir);
         local_33 = _e6;
     } else {
         local_33 = false;
     }
     bool _e8 = local_33;
     if (_e8) {
-        float _e12 = airlight_safe_length(s_7.dir);
+        float _e12 = airlight_safe_length(s_8.dir);
         local_34 = (_e12 > 0.0);
     } else {
         local_34 = false;
     }
     bool _e16 = local_34;
     if (_e16) {
-        bool _e20 = airlight_is_finite(s_7.t_min);
+        bool _e20 = airlight_is_finite(s_8.t_min);
         local_35 = _e20;
     } else {
         local_35 = false;
     }
     bool _e22 = local_35;
     if (_e22) {
-        bool _e26 = airlight_vec_finite(s_7.light_position);
+        bool _e26 = airlight_vec_finite(s_8.light_position);
         local_36 = _e26;
     } else {
         local_36 = false;
     }
     bool _e28 = local_36;
     if (_e28) {
-        bool _e32 = airlight_is_finite(s_7.intensity);
+        bool _e32 = airlight_is_finite(s_8.intensity);
         local_37 = _e32;
     } else {
         local_37 = false;
     }
     bool _e34 = local_37;
     if (_e34) {
-        local_38 = (s_7.intensity >= 0.0);
+        local_38 = (s_8.intensity >= 0.0);
     } else {
         local_38 = false;
     }
     bool _e41 = local_38;
     if (_e41) {
-        bool _e45 = airlight_is_finite(s_7.sigma_s);
+        bool _e45 = airlight_is_finite(s_8.sigma_s);
         local_39 = _e45;
     } else {
         local_39 = false;
     }
     bool _e47 = local_39;
     if (_e47) {
-        local_40 = (s_7.sigma_s >= 0.0);
+        local_40 = (s_8.sigma_s >= 0.0);
     } else {
         local_40 = false;
     }
     bool _e54 = local_40;
     if (_e54) {
-        bool _e58 = airlight_is_finite(s_7.sigma_t);
+        bool _e58 = airlight_is_finite(s_8.sigma_t);
         local_41 = _e58;
     } else {
         local_41 = false;
     }
     bool _e60 = local_41;
     if (_e60) {
-        local_42 = (s_7.sigma_t >= 0.0);
+        local_42 = (s_8.sigma_t >= 0.0);
     } else {
         local_42 = false;
     }
     bool _e67 = local_42;
     ok = _e67;
-    if (((s_7.flags & 1u) == 0u)) {
+    if (((s_8.flags & 1u) == 0u)) {
         bool _e74 = ok;
         if (_e74) {
-            bool _e78 = airlight_is_finite(s_7.t_max);
+            bool _e78 = airlight_is_finite(s_8.t_max);
             local_43 = _e78;
         } else {
             local_43 = false;
         }
         bool _e80 = local_43;
         if (_e80) {
-            local_44 = (s_7.t_min <= s_7.t_max);
+            local_44 = (s_8.t_min <= s_8.t_max);
         } else {
             local_44 = false;
         }
         bool _e87 = local_44;
         ok = _e87;
     }
-    if ((s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e91 = ok;
         if (_e91) {
-            bool _e95 = airlight_vec_finite(s_7.light_axis);
+            bool _e95 = airlight_vec_finite(s_8.light_axis);
             local_45 = _e95;
         } else {
             local_45 = false;
         }
         bool _e97 = local_45;
         if (_e97) {
-            float _e101 = airlight_safe_length(s_7.light_axis);
+            float _e101 = airlight_safe_length(s_8.light_axis);
             local_46 = (_e101 > 0.0);
         } else {
             local_46 = false;
         }
         bool _e105 = local_46;
         if (_e105) {
-            local_47 = (s_7.light_param_a >= 0.0);
+            local_47 = (s_8.light_param_a >= 0.0);
         } else {
             local_47 = false;
         }
         bool _e112 = local_47;
         if (_e112) {
-            local_48 = (s_7.light_param_a <= 1024.0);
+            local_48 = (s_8.light_param_a <= 1024.0);
         } else {
             local_48 = false;
         }
         bool _e119 = local_48;
         if (_e119) {
-            local_49 = (fract((s_7.light_param_a * 0.5)) == 0.0);
+            local_49 = (fract((s_8.light_param_a * 0.5)) == 0.0);
         } else {
             local_49 = false;
         }
         bool _e129 = local_49;
         ok = _e129;
     } else {
-        if ((s_7.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e133 = ok;
             if (_e133) {
-                bool _e137 = airlight_vec_finite(s_7.light_axis);
+                bool _e137 = airlight_vec_finite(s_8.light_axis);
                 local_50 = _e137;
             } else {
                 local_50 = false;
             }
             bool _e139 = local_50;
             if (_e139) {
-                float _e143 = airlight_safe_length(s_7.light_axis);
+                float _e143 = airlight_safe_length(s_8.light_axis);
                 local_51 = (_e143 > 0.0);
             } else {
                 local_51 = false;
             }
             bool _e147 = local_51;
             if (_e147) {
-                local_52 = (s_7.light_param_b < s_7.light_param_a);
+                local_52 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_52 = false;
             }
             bool _e154 = local_52;
             if (_e154) {
-                local_53 = (s_7.light_param_b >= -1.0);
+                local_53 = (s_8.light_param_b >= -1.0);
             } else {
                 local_53 = false;
             }
             bool _e161 = local_53;
             if (_e161) {
-                local_54 = (s_7.light_param_a <= 1.0);
+                local_54 = (s_8.light_param_a <= 1.0);
             } else {
                 local_54 = false;
             }
             bool _e168 = local_54;
             ok = _e168;
         } else {
-            if ((s_7.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_8.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_7.phase_param_a) < 1.0);
-    switch(s_7.phase_kind) {
+    bool g_ok = (abs(s_8.phase_param_a) < 1.0);
+    switch(s_8.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -2223,19 +2382,19 @@ bool airlight_valid(AirlightScene s_7) {
             }
             bool _e187 = local_56;
             if (_e187) {
-                local_57 = (abs(s_7.phase_param_b) < 1.0);
+                local_57 = (abs(s_8.phase_param_b) < 1.0);
             } else {
                 local_57 = false;
             }
             bool _e195 = local_57;
             if (_e195) {
-                local_58 = (s_7.phase_param_c >= 0.0);
+                local_58 = (s_8.phase_param_c >= 0.0);
             } else {
                 local_58 = false;
             }
             bool _e202 = local_58;
             if (_e202) {
-                local_59 = (s_7.phase_param_c <= 1.0);
+                local_59 = (s_8.phase_param_c <= 1.0);
             } else {
                 local_59 = false;
             }
@@ -2252,16 +2411,16 @@ bool airlight_valid(AirlightScene s_7) {
     return _e211;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_8) {
+AirlightCanonical airlight_canonical(AirlightScene s_9) {
     vec3 a_6 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    float _e3 = airlight_safe_length(s_8.dir);
-    vec3 d_1 = (s_8.dir / vec3(_e3));
-    if ((s_8.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        float _e16 = airlight_safe_length(s_8.light_axis);
-        a_6 = (s_8.light_axis / vec3(_e16));
+    float _e3 = airlight_safe_length(s_9.dir);
+    vec3 d_1 = (s_9.dir / vec3(_e3));
+    if ((s_9.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        float _e16 = airlight_safe_length(s_9.light_axis);
+        a_6 = (s_9.light_axis / vec3(_e16));
     }
-    vec3 to_light = (s_8.light_position - s_8.origin);
+    vec3 to_light = (s_9.light_position - s_9.origin);
     float x_h_1 = dot(to_light, d_1);
     vec3 perp = ((x_h_1 * d_1) - to_light);
     float _e25 = airlight_safe_length(perp);
@@ -2269,19 +2428,19 @@ AirlightCanonical airlight_canonical(AirlightScene s_8) {
         vec3 _e30 = a_6;
         d_c_1 = (dot(perp, _e30) / _e25);
     }
-    bool infinite_1 = ((s_8.flags & 1u) != 0u);
+    bool infinite_1 = ((s_9.flags & 1u) != 0u);
     vec3 _e38 = a_6;
     float _e40 = d_c_1;
-    return AirlightCanonical(_e25, x_h_1, dot(d_1, _e38), _e40, s_8.t_min, (infinite_1 ? 0.0 : s_8.t_max), infinite_1);
+    return AirlightCanonical(_e25, x_h_1, dot(d_1, _e38), _e40, s_9.t_min, (infinite_1 ? 0.0 : s_9.t_max), infinite_1);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_9) {
-    bool _e1 = airlight_valid(s_9);
+AirlightResult airlight_in_scatter(AirlightScene s_10) {
+    bool _e1 = airlight_valid(s_10);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e6 = airlight_canonical(s_9);
-    AirlightResult _e7 = airlight_in_scatter_canonical(s_9, _e6);
+    AirlightCanonical _e6 = airlight_canonical(s_10);
+    AirlightResult _e7 = airlight_in_scatter_canonical(s_10, _e6);
     bool _e9 = airlight_is_finite(_e7.in_scatter);
     if (!(_e9)) {
         return AirlightResult(3.4028235e38, 2u);

@@ -128,65 +128,200 @@ metal::float2 airlight_csqrt(
     }
     float r_4 = metal::length(z);
     if (z.x >= 0.0) {
-        float t_4 = metal::sqrt((r_4 + z.x) * 0.5);
-        return metal::float2(t_4, z.y / (t_4 + t_4));
+        float t_5 = metal::sqrt((r_4 + z.x) * 0.5);
+        return metal::float2(t_5, z.y / (t_5 + t_5));
     }
-    float t_5 = metal::sqrt((r_4 - z.x) * 0.5);
-    return metal::float2(metal::abs(z.y) / (t_5 + t_5), (z.y >= 0.0) ? t_5 : -(t_5));
+    float t_6 = metal::sqrt((r_4 - z.x) * 0.5);
+    return metal::float2(metal::abs(z.y) / (t_6 + t_6), (z.y >= 0.0) ? t_6 : -(t_6));
 }
 
-metal::float2 airlight_cexp(
-    metal::float2 z_1
-) {
-    float m_2 = metal::exp(z_1.x);
-    return metal::float2(m_2 * metal::cos(z_1.y), m_2 * metal::sin(z_1.y));
-}
-
-metal::float2 airlight_cln(
-    metal::float2 z_2
-) {
-    return metal::float2(metal::log(metal::length(z_2)), metal::atan2(z_2.y, z_2.x));
-}
-
-bool airlight_is_finite(
+metal::float2 airlight_cos_sin(
     float x
 ) {
-    return (as_type<uint>(x) & 2139095040u) != 2139095040u;
-}
-
-metal::float2 airlight_ein(
-    metal::float2 z_3
-) {
-    metal::float2 term = metal::float2(-1.0, 0.0);
-    metal::float2 sum = metal::float2(0.0, 0.0);
-    uint k = 1u;
+    float c = 0.0;
+    float s = 0.0;
+    uint k = 0u;
+    float fc = {};
+    uint j = {};
+    float z_7 = x * x;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e27 = k;
-            k = _e27 + 1u;
+            uint _e55 = k;
+            k = _e55 + 1u;
         }
         loop_init = false;
-        uint _e11 = k;
+        uint _e8 = k;
+        if (_e8 < 9u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = k;
+            uint n_3 = 8u - _e12;
+            float _e14 = c;
+            c = _e14 * z_7;
+            float _e16 = s;
+            s = _e16 * z_7;
+            fc = 1.0;
+            j = 1u;
+            uint2 loop_bound_1 = uint2(4294967295u);
+            bool loop_init_1 = true;
+            while(true) {
+                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                if (!loop_init_1) {
+                    uint _e31 = j;
+                    j = _e31 + 1u;
+                }
+                loop_init_1 = false;
+                uint _e22 = j;
+                if (_e22 <= (2u * n_3)) {
+                } else {
+                    break;
+                }
+                {
+                    float _e26 = fc;
+                    uint _e27 = j;
+                    fc = _e26 * static_cast<float>(_e27);
+                }
+            }
+            float sign_1 = ((n_3 & 1u) == 1u) ? -1.0 : 1.0;
+            float _e40 = c;
+            float _e41 = fc;
+            c = _e40 + (sign_1 / _e41);
+            float _e44 = s;
+            float _e45 = fc;
+            s = _e44 + (sign_1 / (_e45 * static_cast<float>((2u * n_3) + 1u)));
+        }
+    }
+    float _e57 = c;
+    float _e58 = s;
+    return metal::float2(_e57, _e58 * x);
+}
+
+metal::float2 airlight_cexp(
+    metal::float2 z_1
+) {
+    float m_2 = metal::exp(z_1.x);
+    metal::float2 _e4 = airlight_cos_sin(z_1.y);
+    return metal::float2(m_2 * _e4.x, m_2 * _e4.y);
+}
+
+float airlight_atan(
+    float x_1
+) {
+    float y = 0.0;
+    float t = {};
+    t = x_1;
+    if (x_1 > 2.4142137) {
+        y = 1.5707964;
+        t = -1.0 / x_1;
+    } else {
+        if (x_1 > 0.41421357) {
+            y = 0.7853982;
+            t = (x_1 - 1.0) / (x_1 + 1.0);
+        }
+    }
+    float _e17 = t;
+    float _e18 = t;
+    float z_8 = _e17 * _e18;
+    float _e20 = y;
+    float _e32 = t;
+    float _e34 = t;
+    return _e20 + (((((((((0.080537446 * z_8) - 0.13877685) * z_8) + 0.19977711) * z_8) - 0.3333295) * z_8) * _e32) + _e34);
+}
+
+metal::float2 airlight_cln(
+    metal::float2 z_2
+) {
+    float arg = 1.5707964;
+    if (z_2.x > 0.0) {
+        float _e10 = airlight_atan(metal::abs(z_2.y) / z_2.x);
+        arg = _e10;
+    }
+    float _e13 = arg;
+    float _e14 = arg;
+    return metal::float2(metal::log(metal::length(z_2)), (z_2.y < 0.0) ? -(_e14) : _e13);
+}
+
+float airlight_log1p(
+    float x_2
+) {
+    float sum = 0.0;
+    uint k_1 = 0u;
+    if (x_2 > 1.0) {
+        return metal::log(1.0 + x_2);
+    }
+    float s_11 = x_2 / (2.0 + x_2);
+    float s2_ = s_11 * s_11;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e31 = k_1;
+            k_1 = _e31 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e14 = k_1;
+        if (_e14 < 9u) {
+        } else {
+            break;
+        }
+        {
+            float _e17 = sum;
+            uint _e21 = k_1;
+            sum = (_e17 * s2_) + (1.0 / static_cast<float>((2u * (8u - _e21)) + 1u));
+        }
+    }
+    float _e35 = sum;
+    return (2.0 * s_11) * _e35;
+}
+
+bool airlight_is_finite(
+    float x_3
+) {
+    return (as_type<uint>(x_3) & 2139095040u) != 2139095040u;
+}
+
+metal::float2 airlight_ein(
+    metal::float2 z_3
+) {
+    metal::float2 term = metal::float2(-1.0, 0.0);
+    metal::float2 sum_1 = metal::float2(0.0, 0.0);
+    uint k_2 = 1u;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e27 = k_2;
+            k_2 = _e27 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e11 = k_2;
         if (_e11 <= 14u) {
         } else {
             break;
         }
         {
-            uint _e14 = k;
+            uint _e14 = k_2;
             float kf = static_cast<float>(_e14);
             metal::float2 _e16 = term;
             metal::float2 _e17 = airlight_cmul(_e16, z_3);
             term = -(_e17) / metal::float2(kf);
-            metal::float2 _e21 = sum;
+            metal::float2 _e21 = sum_1;
             metal::float2 _e22 = term;
-            sum = _e21 + (_e22 / metal::float2(kf));
+            sum_1 = _e21 + (_e22 / metal::float2(kf));
         }
     }
-    metal::float2 _e29 = sum;
+    metal::float2 _e29 = sum_1;
     return _e29;
 }
 
@@ -198,33 +333,33 @@ metal::float2 airlight_ein_divided_difference(
     metal::float2 a_pow = metal::float2(1.0, 0.0);
     float fact = 1.0;
     float sign = 1.0;
-    metal::float2 sum_1 = metal::float2(0.0, 0.0);
-    uint k_1 = 1u;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    metal::float2 sum_2 = metal::float2(0.0, 0.0);
+    uint k_3 = 1u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e44 = k_1;
-            k_1 = _e44 + 1u;
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e44 = k_3;
+            k_3 = _e44 + 1u;
         }
-        loop_init_1 = false;
-        uint _e20 = k_1;
+        loop_init_4 = false;
+        uint _e20 = k_3;
         if (_e20 <= 14u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_1;
+            uint _e23 = k_3;
             float kf_1 = static_cast<float>(_e23);
             float _e25 = fact;
             fact = _e25 * kf_1;
-            metal::float2 _e27 = sum_1;
+            metal::float2 _e27 = sum_2;
             metal::float2 _e28 = h;
             float _e29 = sign;
             float _e30 = fact;
-            sum_1 = _e27 + (_e28 * (_e29 / (kf_1 * _e30)));
+            sum_2 = _e27 + (_e28 * (_e29 / (kf_1 * _e30)));
             metal::float2 _e35 = a_pow;
             metal::float2 _e36 = airlight_cmul(_e35, a_2);
             a_pow = _e36;
@@ -236,16 +371,16 @@ metal::float2 airlight_ein_divided_difference(
             sign = -(_e41);
         }
     }
-    metal::float2 _e46 = sum_1;
+    metal::float2 _e46 = sum_2;
     return _e46;
 }
 
 bool airlight_in_series_region(
     metal::float2 z_4
 ) {
-    float x_6 = z_4.x * 0.7692308;
-    float y_1 = z_4.y * 0.47619048;
-    return ((x_6 * x_6) + (y_1 * y_1)) < 1.0;
+    float x_9 = z_4.x * 0.7692308;
+    float y_2 = z_4.y * 0.47619048;
+    return ((x_9 * x_9) + (y_2 * y_2)) < 1.0;
 }
 
 metal::float2 airlight_e1_scaled_cf(
@@ -254,7 +389,7 @@ metal::float2 airlight_e1_scaled_cf(
     float r2_ = 300000000000000000000000000000000000000.0;
     uint depth = 2u;
     metal::float2 root = {};
-    metal::float2 t = {};
+    metal::float2 t_1 = {};
     uint i = 0u;
     float ax = metal::abs(z_5.x);
     float ay = metal::abs(z_5.y);
@@ -294,17 +429,17 @@ metal::float2 airlight_e1_scaled_cf(
     }
     metal::float2 _e63 = root;
     metal::float2 _e65 = airlight_cmul(b_3, metal::float2(1.0, 0.0) + _e63);
-    t = _e65 * 0.5;
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    t_1 = _e65 * 0.5;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e95 = i;
             i = _e95 + 1u;
         }
-        loop_init_2 = false;
+        loop_init_5 = false;
         uint _e71 = i;
         if (_e71 < 15u) {
         } else {
@@ -317,13 +452,13 @@ metal::float2 airlight_e1_scaled_cf(
                 uint _e77 = depth;
                 uint _e78 = i;
                 float kf_2 = static_cast<float>(_e77 - _e78);
-                metal::float2 _e91 = t;
+                metal::float2 _e91 = t_1;
                 metal::float2 _e92 = airlight_cdiv(metal::float2(kf_2 * kf_2, 0.0), _e91);
-                t = (z_5 + metal::float2((2.0 * kf_2) - 1.0, 0.0)) - _e92;
+                t_1 = (z_5 + metal::float2((2.0 * kf_2) - 1.0, 0.0)) - _e92;
             }
         }
     }
-    metal::float2 _e100 = t;
+    metal::float2 _e100 = t_1;
     metal::float2 _e101 = airlight_cdiv(metal::float2(1.0, 0.0), _e100);
     return _e101;
 }
@@ -345,22 +480,22 @@ metal::float2 airlight_e1_scaled(
 }
 
 float airlight_en_scaled_cf(
-    float x_1,
+    float x_4,
     uint n
 ) {
     uint depth_1 = 2u;
-    float t_1 = {};
+    float t_2 = {};
     uint i_1 = 0u;
-    if (x_1 < 3.0) {
+    if (x_4 < 3.0) {
         depth_1 = 15u;
     } else {
-        if (x_1 < 5.0) {
+        if (x_4 < 5.0) {
             depth_1 = 10u;
         } else {
-            if (x_1 < 10.0) {
+            if (x_4 < 10.0) {
                 depth_1 = 6u;
             } else {
-                if (x_1 < 30.0) {
+                if (x_4 < 30.0) {
                     depth_1 = 3u;
                 }
             }
@@ -369,23 +504,23 @@ float airlight_en_scaled_cf(
     float nf_1 = static_cast<float>(n);
     uint _e17 = depth_1;
     float m_3 = static_cast<float>(_e17);
-    float b_4 = (x_1 + nf_1) + (2.0 * (m_3 + 1.0));
+    float b_4 = (x_4 + nf_1) + (2.0 * (m_3 + 1.0));
     float a_7 = (m_3 + 2.0) * ((nf_1 + m_3) + 1.0);
     float disc = 1.0 - ((4.0 * a_7) / (b_4 * b_4));
-    t_1 = b_4;
+    t_2 = b_4;
     if (disc > 0.0) {
-        t_1 = (b_4 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_4 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e70 = i_1;
             i_1 = _e70 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_6 = false;
         uint _e48 = i_1;
         if (_e48 < 15u) {
         } else {
@@ -398,13 +533,13 @@ float airlight_en_scaled_cf(
                 uint _e54 = depth_1;
                 uint _e55 = i_1;
                 float kf_3 = static_cast<float>(_e54 - _e55);
-                float _e66 = t_1;
-                t_1 = ((x_1 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e66);
+                float _e66 = t_2;
+                t_2 = ((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e66);
             }
         }
     }
-    float _e73 = t_1;
-    return 1.0 / ((x_1 + nf_1) - (nf_1 / _e73));
+    float _e73 = t_2;
+    return 1.0 / ((x_4 + nf_1) - (nf_1 / _e73));
 }
 
 uint naga_f2u32(float value) {
@@ -412,7 +547,7 @@ uint naga_f2u32(float value) {
 }
 
 void airlight_en_scaled(
-    float x_2,
+    float x_5,
     uint count,
     thread type_3& out
 ) {
@@ -421,18 +556,18 @@ void airlight_en_scaled(
     uint n_2 = 1u;
     bool local_1 = {};
     uint i_2 = 1u;
-    if (x_2 == 0.0) {
+    if (x_5 == 0.0) {
         out.inner[0] = AIRLIGHT_FLT_MAX;
-        uint2 loop_bound_4 = uint2(4294967295u);
-        bool loop_init_4 = true;
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_7 = true;
         while(true) {
-            if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-            if (!loop_init_4) {
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_7) {
                 uint _e23 = n_1;
                 n_1 = _e23 + 1u;
             }
-            loop_init_4 = false;
+            loop_init_7 = false;
             uint _e9 = n_1;
             if (_e9 <= AIRLIGHT_SCRATCH) {
             } else {
@@ -446,27 +581,27 @@ void airlight_en_scaled(
         }
         return;
     }
-    bool _e29 = airlight_in_series_region(metal::float2(x_2, 0.0));
+    bool _e29 = airlight_in_series_region(metal::float2(x_5, 0.0));
     if (_e29) {
-        metal::float2 _e33 = airlight_e1_scaled(metal::float2(x_2, 0.0));
+        metal::float2 _e33 = airlight_e1_scaled(metal::float2(x_5, 0.0));
         out.inner[0] = _e33.x;
     } else {
-        pivot = naga_f2u32(metal::clamp(metal::ceil(x_2), 1.0, static_cast<float>(count)));
+        pivot = naga_f2u32(metal::clamp(metal::ceil(x_5), 1.0, static_cast<float>(count)));
         uint _e40 = pivot;
         uint _e44 = pivot;
-        float _e45 = airlight_en_scaled_cf(x_2, _e44);
+        float _e45 = airlight_en_scaled_cf(x_5, _e44);
         out.inner[metal::min(unsigned(_e40 - 1u), 15u)] = _e45;
     }
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
             uint _e74 = n_2;
             n_2 = _e74 + 1u;
         }
-        loop_init_5 = false;
+        loop_init_8 = false;
         uint _e48 = n_2;
         if (_e48 < AIRLIGHT_SCRATCH) {
         } else {
@@ -487,20 +622,20 @@ void airlight_en_scaled(
                 uint _e62 = n_2;
                 float _e66 = out.inner[metal::min(unsigned(_e62 - 1u), 15u)];
                 uint _e70 = n_2;
-                out.inner[metal::min(unsigned(_e60), 15u)] = (1.0 - (x_2 * _e66)) / static_cast<float>(_e70);
+                out.inner[metal::min(unsigned(_e60), 15u)] = (1.0 - (x_5 * _e66)) / static_cast<float>(_e70);
             }
         }
     }
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e98 = i_2;
             i_2 = _e98 + 1u;
         }
-        loop_init_6 = false;
+        loop_init_9 = false;
         uint _e78 = i_2;
         if (_e78 < AIRLIGHT_SCRATCH) {
         } else {
@@ -512,9 +647,9 @@ void airlight_en_scaled(
             if (_e81 < _e82) {
                 uint _e84 = pivot;
                 uint _e85 = i_2;
-                uint n_3 = _e84 - _e85;
-                float _e92 = out.inner[metal::min(unsigned(n_3), 15u)];
-                out.inner[metal::min(unsigned(n_3 - 1u), 15u)] = (1.0 - (static_cast<float>(n_3) * _e92)) / x_2;
+                uint n_4 = _e84 - _e85;
+                float _e92 = out.inner[metal::min(unsigned(n_4), 15u)];
+                out.inner[metal::min(unsigned(n_4 - 1u), 15u)] = (1.0 - (static_cast<float>(n_4) * _e92)) / x_5;
             }
         }
     }
@@ -567,7 +702,7 @@ float airlight_light(
     uint kind_1,
     float p0_1,
     float p1_1,
-    float c
+    float c_1
 ) {
     float base = {};
     uint e = {};
@@ -575,18 +710,18 @@ float airlight_light(
     uint i_3 = 0u;
     switch(kind_1) {
         case 1u: {
-            base = c;
+            base = c_1;
             e = naga_f2u32(p0_1);
-            uint2 loop_bound_7 = uint2(4294967295u);
-            bool loop_init_7 = true;
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                if (!loop_init_7) {
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_10) {
                     uint _e29 = i_3;
                     i_3 = _e29 + 1u;
                 }
-                loop_init_7 = false;
+                loop_init_10 = false;
                 uint _e11 = i_3;
                 if (_e11 < 11u) {
                 } else {
@@ -610,8 +745,8 @@ float airlight_light(
             return _e31;
         }
         case 2u: {
-            float x_7 = metal::clamp((c - p1_1) / (p0_1 - p1_1), 0.0, 1.0);
-            return (x_7 * x_7) * (3.0 - (2.0 * x_7));
+            float x_10 = metal::clamp((c_1 - p1_1) / (p0_1 - p1_1), 0.0, 1.0);
+            return (x_10 * x_10) * (3.0 - (2.0 * x_10));
         }
         default: {
             return 1.0;
@@ -620,23 +755,23 @@ float airlight_light(
 }
 
 float airlight_integrand(
-    AirlightScene s,
+    AirlightScene s_1,
     AirlightCanonical g_1,
     float sigma,
-    float y
+    float y_1
 ) {
-    float y2_ = y * y;
+    float y2_ = y_1 * y_1;
     float inv = 1.0 / (1.0 + y2_);
     float om = 1.0 - y2_;
     float mu_2 = (-(sigma) * om) * inv;
-    float c_2 = (((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y)) * inv;
-    float _e26 = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c_2);
-    float _e31 = airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu_2);
+    float c_3 = (((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y_1)) * inv;
+    float _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
+    float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
     return _e26 * _e31;
 }
 
 type_2 airlight_chebyshev(
-    AirlightScene s_1,
+    AirlightScene s_2,
     AirlightCanonical g_2,
     float sigma_1,
     float y_c,
@@ -646,25 +781,27 @@ type_2 airlight_chebyshev(
     float cur = {};
     type_2 xi = {};
     type_2 values = {};
-    uint j = 0u;
-    type_2 cheb = {};
     uint j_1 = 0u;
+    type_2 cheb = {};
+    uint j_2 = 0u;
     float t_prev = {};
     float t_cur = {};
-    uint k_2 = {};
+    uint k_4 = {};
     float tk = {};
     float scale_sum = 0.0;
-    uint k_3 = 0u;
+    uint k_5 = 0u;
     type_2 t_km1_ = {};
     type_2 t_k = {};
     type_2 hat = {};
-    uint k_4 = 1u;
+    uint k_6 = 1u;
     type_2 t_next = {};
     uint i_4 = {};
     float shifted = {};
+    float amplification = 1.0;
+    uint k_7 = 0u;
     type_2 a_3 = {};
     float rk = 1.0;
-    uint k_5 = 0u;
+    uint k_8 = 0u;
     bool local_2 = {};
     float theta = AIRLIGHT_PI / (6.0 + 6.0);
     float c2_ = metal::cos(theta + theta);
@@ -675,23 +812,23 @@ type_2 airlight_chebyshev(
     xi = _e15;
     type_2 _e17 = airlight_zero_terms();
     values = _e17;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_8) {
-            uint _e42 = j;
-            j = _e42 + 1u;
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e42 = j_1;
+            j_1 = _e42 + 1u;
         }
-        loop_init_8 = false;
-        uint _e21 = j;
+        loop_init_11 = false;
+        uint _e21 = j_1;
         if (_e21 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e24 = j;
+            uint _e24 = j_1;
             float _e26 = cur;
             xi.inner[metal::min(unsigned(_e24), 5u)] = _e26;
             float _e28 = cur;
@@ -700,47 +837,47 @@ type_2 airlight_chebyshev(
             float _e32 = cur;
             prev = _e32;
             cur = next;
-            uint _e33 = j;
-            uint _e35 = j;
+            uint _e33 = j_1;
+            uint _e35 = j_1;
             float _e37 = xi.inner[metal::min(unsigned(_e35), 5u)];
-            float _e40 = airlight_integrand(s_1, g_2, sigma_1, y_c + (r * _e37));
+            float _e40 = airlight_integrand(s_2, g_2, sigma_1, y_c + (r * _e37));
             values.inner[metal::min(unsigned(_e33), 5u)] = _e40;
         }
     }
     type_2 _e44 = airlight_zero_terms();
     cheb = _e44;
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_9 = true;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e96 = j_1;
-            j_1 = _e96 + 1u;
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e96 = j_2;
+            j_2 = _e96 + 1u;
         }
-        loop_init_9 = false;
-        uint _e48 = j_1;
+        loop_init_12 = false;
+        uint _e48 = j_2;
         if (_e48 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             t_prev = 1.0;
-            uint _e53 = j_1;
+            uint _e53 = j_2;
             float _e55 = xi.inner[metal::min(unsigned(_e53), 5u)];
             t_cur = _e55;
-            k_2 = 0u;
-            uint2 loop_bound_10 = uint2(4294967295u);
-            bool loop_init_10 = true;
+            k_4 = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_10) {
-                    uint _e93 = k_2;
-                    k_2 = _e93 + 1u;
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e93 = k_4;
+                    k_4 = _e93 + 1u;
                 }
-                loop_init_10 = false;
-                uint _e59 = k_2;
+                loop_init_13 = false;
+                uint _e59 = k_4;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
                     break;
@@ -748,21 +885,21 @@ type_2 airlight_chebyshev(
                 {
                     float _e62 = t_cur;
                     tk = _e62;
-                    uint _e64 = k_2;
+                    uint _e64 = k_4;
                     if (_e64 == 0u) {
                         tk = 1.0;
                     }
-                    uint _e68 = k_2;
+                    uint _e68 = k_4;
                     float _e70 = cheb.inner[metal::min(unsigned(_e68), 5u)];
-                    uint _e71 = j_1;
+                    uint _e71 = j_2;
                     float _e73 = values.inner[metal::min(unsigned(_e71), 5u)];
                     float _e74 = tk;
                     cheb.inner[metal::min(unsigned(_e68), 5u)] = _e70 + (_e73 * _e74);
-                    uint _e77 = k_2;
+                    uint _e77 = k_4;
                     if (_e77 >= 1u) {
-                        uint _e80 = j_1;
+                        uint _e80 = j_2;
                         float _e82 = xi.inner[metal::min(unsigned(_e80), 5u)];
-                        uint _e83 = j_1;
+                        uint _e83 = j_2;
                         float _e85 = xi.inner[metal::min(unsigned(_e83), 5u)];
                         float _e87 = t_cur;
                         float _e89 = t_prev;
@@ -775,33 +912,33 @@ type_2 airlight_chebyshev(
             }
         }
     }
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_11 = true;
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_14 = true;
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e126 = k_3;
-            k_3 = _e126 + 1u;
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e126 = k_5;
+            k_5 = _e126 + 1u;
         }
-        loop_init_11 = false;
-        uint _e102 = k_3;
+        loop_init_14 = false;
+        uint _e102 = k_5;
         if (_e102 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e105 = k_3;
+            uint _e105 = k_5;
             float _e107 = cheb.inner[metal::min(unsigned(_e105), 5u)];
             cheb.inner[metal::min(unsigned(_e105), 5u)] = _e107 * (2.0 / 6.0);
-            uint _e111 = k_3;
+            uint _e111 = k_5;
             if (_e111 == 0u) {
-                uint _e114 = k_3;
+                uint _e114 = k_5;
                 float _e116 = cheb.inner[metal::min(unsigned(_e114), 5u)];
                 cheb.inner[metal::min(unsigned(_e114), 5u)] = _e116 * 0.5;
             }
             float _e119 = scale_sum;
-            uint _e120 = k_3;
+            uint _e120 = k_5;
             float _e122 = cheb.inner[metal::min(unsigned(_e120), 5u)];
             scale_sum = _e119 + metal::abs(_e122);
         }
@@ -816,17 +953,17 @@ type_2 airlight_chebyshev(
     t_k.inner[1] = 1.0;
     float _e140 = cheb.inner[0];
     hat.inner[0] = _e140;
-    uint2 loop_bound_12 = uint2(4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e189 = k_4;
-            k_4 = _e189 + 1u;
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e189 = k_6;
+            k_6 = _e189 + 1u;
         }
-        loop_init_12 = false;
-        uint _e143 = k_4;
+        loop_init_15 = false;
+        uint _e143 = k_6;
         if (_e143 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -835,16 +972,16 @@ type_2 airlight_chebyshev(
             type_2 _e146 = airlight_zero_terms();
             t_next = _e146;
             i_4 = 0u;
-            uint2 loop_bound_13 = uint2(4294967295u);
-            bool loop_init_13 = true;
+            uint2 loop_bound_16 = uint2(4294967295u);
+            bool loop_init_16 = true;
             while(true) {
-                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                if (!loop_init_13) {
+                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_16) {
                     uint _e184 = i_4;
                     i_4 = _e184 + 1u;
                 }
-                loop_init_13 = false;
+                loop_init_16 = false;
                 uint _e150 = i_4;
                 if (_e150 < AIRLIGHT_TERMS) {
                 } else {
@@ -853,7 +990,7 @@ type_2 airlight_chebyshev(
                 {
                     uint _e153 = i_4;
                     float _e155 = hat.inner[metal::min(unsigned(_e153), 5u)];
-                    uint _e156 = k_4;
+                    uint _e156 = k_6;
                     float _e158 = cheb.inner[metal::min(unsigned(_e156), 5u)];
                     uint _e159 = i_4;
                     float _e161 = t_k.inner[metal::min(unsigned(_e159), 5u)];
@@ -879,125 +1016,146 @@ type_2 airlight_chebyshev(
             t_k = _e187;
         }
     }
-    float _e198 = scale_sum;
-    float noise = (((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * metal::pow(2.4142137, 6.0)) * _e198;
-    type_2 _e200 = airlight_zero_terms();
-    a_3 = _e200;
-    uint2 loop_bound_14 = uint2(4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_17 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e240 = k_5;
-            k_5 = _e240 + 1u;
+        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e202 = k_7;
+            k_7 = _e202 + 1u;
         }
-        loop_init_14 = false;
-        uint _e206 = k_5;
-        if (_e206 < AIRLIGHT_TERMS) {
+        loop_init_17 = false;
+        uint _e195 = k_7;
+        if (_e195 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e209 = k_5;
-            if (_e209 == 0u) {
-                uint _e212 = k_5;
-                uint _e214 = k_5;
-                float _e216 = hat.inner[metal::min(unsigned(_e214), 5u)];
-                a_3.inner[metal::min(unsigned(_e212), 5u)] = _e216;
+            float _e198 = amplification;
+            amplification = _e198 * 2.4142137;
+        }
+    }
+    float _e208 = amplification;
+    float _e210 = scale_sum;
+    float noise = (((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * _e208) * _e210;
+    type_2 _e212 = airlight_zero_terms();
+    a_3 = _e212;
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_18 = true;
+    while(true) {
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e252 = k_8;
+            k_8 = _e252 + 1u;
+        }
+        loop_init_18 = false;
+        uint _e218 = k_8;
+        if (_e218 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            uint _e221 = k_8;
+            if (_e221 == 0u) {
+                uint _e224 = k_8;
+                uint _e226 = k_8;
+                float _e228 = hat.inner[metal::min(unsigned(_e226), 5u)];
+                a_3.inner[metal::min(unsigned(_e224), 5u)] = _e228;
             } else {
-                uint _e217 = k_5;
-                float _e219 = hat.inner[metal::min(unsigned(_e217), 5u)];
-                if (metal::abs(_e219) > noise) {
-                    float _e224 = rk;
-                    local_2 = _e224 > 0.0;
+                uint _e229 = k_8;
+                float _e231 = hat.inner[metal::min(unsigned(_e229), 5u)];
+                if (metal::abs(_e231) > noise) {
+                    float _e236 = rk;
+                    local_2 = _e236 > 0.0;
                 } else {
                     local_2 = false;
                 }
-                bool _e228 = local_2;
-                if (_e228) {
-                    uint _e229 = k_5;
-                    float _e231 = hat.inner[metal::min(unsigned(_e229), 5u)];
-                    float _e232 = rk;
-                    float ak = _e231 / _e232;
-                    bool _e234 = airlight_is_finite(ak);
-                    if (_e234) {
-                        uint _e235 = k_5;
-                        a_3.inner[metal::min(unsigned(_e235), 5u)] = ak;
+                bool _e240 = local_2;
+                if (_e240) {
+                    uint _e241 = k_8;
+                    float _e243 = hat.inner[metal::min(unsigned(_e241), 5u)];
+                    float _e244 = rk;
+                    float ak = _e243 / _e244;
+                    bool _e246 = airlight_is_finite(ak);
+                    if (_e246) {
+                        uint _e247 = k_8;
+                        a_3.inner[metal::min(unsigned(_e247), 5u)] = ak;
                     }
                 }
             }
-            float _e237 = rk;
-            rk = _e237 * r;
+            float _e249 = rk;
+            rk = _e249 * r;
         }
     }
-    type_2 _e242 = a_3;
-    return _e242;
+    type_2 _e254 = a_3;
+    return _e254;
 }
 
 type_2 airlight_moments_gauss(
     AirlightHalf half_
 ) {
     type_2 m = {};
-    uint j_2 = 0u;
+    uint j_3 = 0u;
     float dv = {};
     float p = {};
-    uint k_6 = {};
+    uint k_9 = {};
     type_2 _e1 = airlight_zero_terms();
     m = _e1;
     float hw = half_.dy * 0.5;
     float yc = half_.y_lo + hw;
     type_8 nodes = type_8 {{metal::float2(-0.8611363, 0.34785485), metal::float2(-0.33998105, 0.65214515), metal::float2(0.33998105, 0.65214515), metal::float2(0.8611363, 0.34785485)}};
-    uint2 loop_bound_15 = uint2(4294967295u);
-    bool loop_init_15 = true;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_19 = true;
     while(true) {
-        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_15) {
-            uint _e73 = j_2;
-            j_2 = _e73 + 1u;
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_19) {
+            uint _e73 = j_3;
+            j_3 = _e73 + 1u;
         }
-        loop_init_15 = false;
-        uint _e23 = j_2;
+        loop_init_19 = false;
+        uint _e23 = j_3;
         if (_e23 < 4u) {
         } else {
             break;
         }
         {
-            uint _e26 = j_2;
+            uint _e26 = j_3;
             float xi_1 = nodes.inner[metal::min(unsigned(_e26), 3u)].x;
-            float s_10 = hw * xi_1;
-            float y_2 = yc + s_10;
+            float s_12 = hw * xi_1;
+            float y_3 = yc + s_12;
             dv = hw * (1.0 + xi_1);
             if (half_.second) {
-                dv = (hw * (1.0 - xi_1)) / (y_2 * half_.y_hi);
+                dv = (hw * (1.0 - xi_1)) / (y_3 * half_.y_hi);
             }
-            uint _e42 = j_2;
+            uint _e42 = j_3;
             float _e48 = dv;
-            p = ((nodes.inner[metal::min(unsigned(_e42), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e48)) / (1.0 + (y_2 * y_2));
-            k_6 = 0u;
-            uint2 loop_bound_16 = uint2(4294967295u);
-            bool loop_init_16 = true;
+            p = ((nodes.inner[metal::min(unsigned(_e42), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e48)) / (1.0 + (y_3 * y_3));
+            k_9 = 0u;
+            uint2 loop_bound_20 = uint2(4294967295u);
+            bool loop_init_20 = true;
             while(true) {
-                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_16) {
-                    uint _e70 = k_6;
-                    k_6 = _e70 + 1u;
+                if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+                loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+                if (!loop_init_20) {
+                    uint _e70 = k_9;
+                    k_9 = _e70 + 1u;
                 }
-                loop_init_16 = false;
-                uint _e59 = k_6;
+                loop_init_20 = false;
+                uint _e59 = k_9;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    uint _e62 = k_6;
+                    uint _e62 = k_9;
                     float _e64 = m.inner[metal::min(unsigned(_e62), 5u)];
                     float _e65 = p;
                     m.inner[metal::min(unsigned(_e62), 5u)] = _e64 + _e65;
                     float _e67 = p;
-                    p = _e67 * s_10;
+                    p = _e67 * s_12;
                 }
             }
         }
@@ -1014,11 +1172,13 @@ float airlight_n1_log_part(
     float at_e = 0.0;
     if (!(v_e_infinite)) {
         float y_e = 1.0 / v_e;
-        at_e = metal::log(1.0 + (y_e * y_e));
+        float _e9 = airlight_log1p(y_e * y_e);
+        at_e = _e9;
     }
     float y_s = 1.0 / v_s;
-    float _e14 = at_e;
-    return -0.5 * (_e14 - metal::log(1.0 + (y_s * y_s)));
+    float _e12 = at_e;
+    float _e14 = airlight_log1p(y_s * y_s);
+    return -0.5 * (_e12 - _e14);
 }
 
 void airlight_t_moments(
@@ -1051,16 +1211,16 @@ void airlight_t_moments(
     }
     p_hi = half_1.y_hi;
     p_lo = half_1.y_lo;
-    uint2 loop_bound_17 = uint2(4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_21 = uint2(4294967295u);
+    bool loop_init_21 = true;
     while(true) {
-        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_17) {
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
             uint _e68 = order;
             order = _e68 + 1u;
         }
-        loop_init_17 = false;
+        loop_init_21 = false;
         uint _e35 = order;
         if (_e35 < AIRLIGHT_SCRATCH) {
         } else {
@@ -1095,22 +1255,22 @@ uint naga_mod(uint lhs, uint rhs) {
 float airlight_n1_series(
     AirlightHalf half_2
 ) {
-    type_3 t_2 = {};
-    float sum_2 = 0.0;
+    type_3 t_3 = {};
+    float sum_3 = 0.0;
     uint i_5 = 0u;
     type_3 _e1 = airlight_zero_scratch();
-    t_2 = _e1;
-    airlight_t_moments(half_2, 13u, t_2);
-    uint2 loop_bound_18 = uint2(4294967295u);
-    bool loop_init_18 = true;
+    t_3 = _e1;
+    airlight_t_moments(half_2, 13u, t_3);
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_18) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
             uint _e31 = i_5;
             i_5 = _e31 + 1u;
         }
-        loop_init_18 = false;
+        loop_init_22 = false;
         uint _e8 = i_5;
         if (_e8 < 6u) {
         } else {
@@ -1118,18 +1278,18 @@ float airlight_n1_series(
         }
         {
             uint _e12 = i_5;
-            uint j_7 = 5u - _e12;
-            float tn = t_2.inner[metal::min(unsigned((3u + (2u * j_7)) - 1u), 15u)];
-            if (naga_mod(j_7, 2u) == 0u) {
-                float _e26 = sum_2;
-                sum_2 = _e26 + tn;
+            uint j_8 = 5u - _e12;
+            float tn = t_3.inner[metal::min(unsigned((3u + (2u * j_8)) - 1u), 15u)];
+            if (naga_mod(j_8, 2u) == 0u) {
+                float _e26 = sum_3;
+                sum_3 = _e26 + tn;
             } else {
-                float _e28 = sum_2;
-                sum_2 = _e28 - tn;
+                float _e28 = sum_3;
+                sum_3 = _e28 - tn;
             }
         }
     }
-    float _e33 = sum_2;
+    float _e33 = sum_3;
     return _e33;
 }
 
@@ -1187,54 +1347,59 @@ metal::float2 airlight_q_zero(
     if (near) {
         if (!(v_e_infinite_1)) {
             float _e55 = v_e_1;
-            d_im = metal::atan(half_3.dv / (1.0 + (v_s_1 * _e55)));
+            float _e60 = airlight_atan(half_3.dv / (1.0 + (v_s_1 * _e55)));
+            d_im = _e60;
             float _e62 = v_e_1;
-            d_re = 0.5 * metal::log(1.0 + ((half_3.dv * (v_s_1 + _e62)) / (1.0 + (v_s_1 * v_s_1))));
+            float _e69 = airlight_log1p((half_3.dv * (v_s_1 + _e62)) / (1.0 + (v_s_1 * v_s_1)));
+            d_re = 0.5 * _e69;
         } else {
-            d_im = metal::atan(1.0 / v_s_1);
+            float _e74 = airlight_atan(1.0 / v_s_1);
+            d_im = _e74;
         }
         if (big_h == 0.0) {
             if (!(half_3.second)) {
-                float _e81 = d_re;
-                float _e82 = d_im;
-                return metal::float2(_e81, _e82);
+                float _e79 = d_re;
+                float _e80 = d_im;
+                return metal::float2(_e79, _e80);
             }
             if (with_re) {
-                float _e86 = v_e_1;
-                float _e87 = airlight_n1_log_part(v_s_1, _e86, v_e_infinite_1);
-                n1_ = _e87;
+                float _e84 = v_e_1;
+                float _e85 = airlight_n1_log_part(v_s_1, _e84, v_e_infinite_1);
+                n1_ = _e85;
             }
-            float _e88 = n1_;
-            float _e89 = d_im;
-            return metal::float2(_e88, _e89);
+            float _e86 = n1_;
+            float _e87 = d_im;
+            return metal::float2(_e86, _e87);
         }
         metal::float2 z_s = metal::float2(big_h * v_s_1, -(big_h));
-        float _e94 = v_e_1;
-        metal::float2 z_e = metal::float2(big_h * _e94, -(big_h));
+        float _e92 = v_e_1;
+        metal::float2 z_e = metal::float2(big_h * _e92, -(big_h));
         float hdv = big_h * half_3.dv;
-        metal::float2 _e100 = airlight_ein_divided_difference(z_s, z_e);
-        metal::float2 rot = metal::float2(metal::cos(big_h), -(metal::sin(big_h)));
+        metal::float2 _e98 = airlight_ein_divided_difference(z_s, z_e);
+        metal::float2 _e99 = airlight_cos_sin(big_h);
+        metal::float2 rot = metal::float2(_e99.x, -(_e99.y));
         float scale = metal::exp(big_h * v_s_1);
-        float _e107 = d_re;
-        float _e108 = d_im;
-        metal::float2 _e112 = airlight_cmul(rot, metal::float2(_e107, _e108) - (_e100 * hdv));
-        metal::float2 c_3 = _e112 * scale;
+        float _e106 = d_re;
+        float _e107 = d_im;
+        metal::float2 _e111 = airlight_cmul(rot, metal::float2(_e106, _e107) - (_e98 * hdv));
+        metal::float2 c_4 = _e111 * scale;
         if (!(half_3.second)) {
-            return c_3;
+            return c_4;
         }
         if (with_re) {
-            float sh = metal::sin(big_h * 0.5);
+            metal::float2 _e119 = airlight_cos_sin(big_h * 0.5);
+            float sh = _e119.y;
             float _e124 = v_e_1;
             metal::float2 _e128 = airlight_ein_divided_difference(metal::float2(big_h * v_s_1, 0.0), metal::float2(big_h * _e124, 0.0));
             float _e129 = v_e_1;
             float _e131 = airlight_n1_log_part(v_s_1, _e129, false);
             float _e135 = d_re;
             float _e139 = d_im;
-            metal::float2 _e143 = airlight_cmul(rot, _e100);
-            n1_1 = (((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (metal::sin(big_h) * _e139)) - (hdv * (_e128.x - _e143.x))) * scale;
+            metal::float2 _e143 = airlight_cmul(rot, _e98);
+            n1_1 = (((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (_e99.y * _e139)) - (hdv * (_e128.x - _e143.x))) * scale;
         }
         float _e149 = n1_1;
-        return metal::float2(_e149, c_3.y);
+        return metal::float2(_e149, c_4.y);
     }
     metal::float2 _e155 = airlight_e1_scaled(metal::float2(big_h * v_s_1, -(big_h)));
     if (!(v_e_infinite_1)) {
@@ -1245,9 +1410,9 @@ metal::float2 airlight_q_zero(
     }
     metal::float2 _e172 = s_e_1;
     float _e173 = decay_1;
-    metal::float2 c_4 = _e155 - (_e172 * _e173);
+    metal::float2 c_5 = _e155 - (_e172 * _e173);
     if (!(half_3.second)) {
-        return c_4;
+        return c_5;
     }
     if (with_re) {
         if (half_3.y_hi <= 0.25) {
@@ -1273,33 +1438,33 @@ metal::float2 airlight_q_zero(
         }
     }
     float _e209 = n1_2;
-    return metal::float2(_e209, c_4.y);
+    return metal::float2(_e209, c_5.y);
 }
 
 type_2 airlight_phi_moments(
-    float x_3
+    float x_6
 ) {
     type_2 out_2 = {};
     uint i_6 = 0u;
     float term_1 = {};
-    float sum_3 = {};
-    uint j_3 = {};
+    float sum_4 = {};
+    uint j_4 = {};
     float prev_1 = {};
     uint i_7 = 0u;
     type_2 _e1 = airlight_zero_terms();
     out_2 = _e1;
-    float ex = metal::exp(-(x_3));
-    if (x_3 <= 2.6) {
-        uint2 loop_bound_19 = uint2(4294967295u);
-        bool loop_init_19 = true;
+    float ex = metal::exp(-(x_6));
+    if (x_6 <= 2.6) {
+        uint2 loop_bound_23 = uint2(4294967295u);
+        bool loop_init_23 = true;
         while(true) {
-            if (metal::all(loop_bound_19 == uint2(0u))) { break; }
-            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-            if (!loop_init_19) {
+            if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+            loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+            if (!loop_init_23) {
                 uint _e46 = i_6;
                 i_6 = _e46 + 1u;
             }
-            loop_init_19 = false;
+            loop_init_23 = false;
             uint _e9 = i_6;
             if (_e9 < AIRLIGHT_TERMS) {
             } else {
@@ -1309,19 +1474,19 @@ type_2 airlight_phi_moments(
                 uint _e12 = i_6;
                 term_1 = 1.0 / static_cast<float>(_e12 + 1u);
                 float _e19 = term_1;
-                sum_3 = _e19;
-                j_3 = 1u;
-                uint2 loop_bound_20 = uint2(4294967295u);
-                bool loop_init_20 = true;
+                sum_4 = _e19;
+                j_4 = 1u;
+                uint2 loop_bound_24 = uint2(4294967295u);
+                bool loop_init_24 = true;
                 while(true) {
-                    if (metal::all(loop_bound_20 == uint2(0u))) { break; }
-                    loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-                    if (!loop_init_20) {
-                        uint _e39 = j_3;
-                        j_3 = _e39 + 1u;
+                    if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+                    loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+                    if (!loop_init_24) {
+                        uint _e39 = j_4;
+                        j_4 = _e39 + 1u;
                     }
-                    loop_init_20 = false;
-                    uint _e23 = j_3;
+                    loop_init_24 = false;
+                    uint _e23 = j_4;
                     if (_e23 <= 14u) {
                     } else {
                         break;
@@ -1329,30 +1494,30 @@ type_2 airlight_phi_moments(
                     {
                         float _e26 = term_1;
                         uint _e27 = i_6;
-                        uint _e28 = j_3;
-                        term_1 = _e26 * (x_3 / static_cast<float>((_e27 + _e28) + 1u));
-                        float _e35 = sum_3;
+                        uint _e28 = j_4;
+                        term_1 = _e26 * (x_6 / static_cast<float>((_e27 + _e28) + 1u));
+                        float _e35 = sum_4;
                         float _e36 = term_1;
-                        sum_3 = _e35 + _e36;
+                        sum_4 = _e35 + _e36;
                     }
                 }
                 uint _e41 = i_6;
-                float _e43 = sum_3;
+                float _e43 = sum_4;
                 out_2.inner[metal::min(unsigned(_e41), 5u)] = ex * _e43;
             }
         }
     } else {
-        prev_1 = (1.0 - ex) / x_3;
-        uint2 loop_bound_21 = uint2(4294967295u);
-        bool loop_init_21 = true;
+        prev_1 = (1.0 - ex) / x_6;
+        uint2 loop_bound_25 = uint2(4294967295u);
+        bool loop_init_25 = true;
         while(true) {
-            if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-            loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-            if (!loop_init_21) {
+            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+            if (!loop_init_25) {
                 uint _e70 = i_7;
                 i_7 = _e70 + 1u;
             }
-            loop_init_21 = false;
+            loop_init_25 = false;
             uint _e54 = i_7;
             if (_e54 < AIRLIGHT_TERMS) {
             } else {
@@ -1363,7 +1528,7 @@ type_2 airlight_phi_moments(
                 if (_e57 > 0u) {
                     uint _e60 = i_7;
                     float _e62 = prev_1;
-                    prev_1 = ((static_cast<float>(_e60) * _e62) - ex) / x_3;
+                    prev_1 = ((static_cast<float>(_e60) * _e62) - ex) / x_6;
                 }
                 uint _e66 = i_7;
                 float _e68 = prev_1;
@@ -1376,70 +1541,70 @@ type_2 airlight_phi_moments(
 }
 
 type_2 airlight_binomial_shift(
-    type_2 x_4,
-    float c_1
+    type_2 x_7,
+    float c_2
 ) {
     type_2 out_3 = {};
-    uint j_4 = 0u;
-    float sum_4 = {};
+    uint j_5 = 0u;
+    float sum_5 = {};
     float binom = {};
     float cp = {};
     uint ii = {};
     type_2 _e2 = airlight_zero_terms();
     out_3 = _e2;
-    uint2 loop_bound_22 = uint2(4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_26 = uint2(4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e48 = j_4;
-            j_4 = _e48 + 1u;
+        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e48 = j_5;
+            j_5 = _e48 + 1u;
         }
-        loop_init_22 = false;
-        uint _e6 = j_4;
+        loop_init_26 = false;
+        uint _e6 = j_5;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            sum_4 = 0.0;
+            sum_5 = 0.0;
             binom = 1.0;
             cp = 1.0;
             ii = 0u;
-            uint2 loop_bound_23 = uint2(4294967295u);
-            bool loop_init_23 = true;
+            uint2 loop_bound_27 = uint2(4294967295u);
+            bool loop_init_27 = true;
             while(true) {
-                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-                if (!loop_init_23) {
+                if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (!loop_init_27) {
                     uint _e42 = ii;
                     ii = _e42 + 1u;
                 }
-                loop_init_23 = false;
+                loop_init_27 = false;
                 uint _e17 = ii;
-                uint _e18 = j_4;
+                uint _e18 = j_5;
                 if (_e17 <= _e18) {
                 } else {
                     break;
                 }
                 {
-                    uint _e20 = j_4;
+                    uint _e20 = j_5;
                     uint _e21 = ii;
                     uint i_14 = _e20 - _e21;
-                    float _e23 = sum_4;
+                    float _e23 = sum_5;
                     float _e24 = binom;
                     float _e27 = cp;
-                    sum_4 = _e23 + ((_e24 * x_4.inner[metal::min(unsigned(i_14), 5u)]) * _e27);
+                    sum_5 = _e23 + ((_e24 * x_7.inner[metal::min(unsigned(i_14), 5u)]) * _e27);
                     float _e30 = binom;
-                    uint _e33 = j_4;
+                    uint _e33 = j_5;
                     binom = (_e30 * static_cast<float>(i_14)) / static_cast<float>((_e33 - i_14) + 1u);
                     float _e39 = cp;
-                    cp = _e39 * c_1;
+                    cp = _e39 * c_2;
                 }
             }
-            uint _e44 = j_4;
-            float _e46 = sum_4;
+            uint _e44 = j_5;
+            float _e46 = sum_5;
             out_3.inner[metal::min(unsigned(_e44), 5u)] = _e46;
         }
     }
@@ -1457,14 +1622,14 @@ type_2 airlight_moments(
     bool local_10 = {};
     bool local_11 = {};
     type_2 r_1 = {};
-    type_3 t_3 = {};
-    type_2 x_5 = {};
+    type_3 t_4 = {};
+    type_2 x_8 = {};
     uint i_8 = 0u;
     type_2 tau = {};
     float p_1 = {};
     uint i_9 = 0u;
     metal::float2 q = {};
-    uint k_7 = 1u;
+    uint k_10 = 1u;
     type_2 _e2 = airlight_zero_terms();
     m_1 = _e2;
     if (!((half_4.dy > 0.0))) {
@@ -1507,20 +1672,20 @@ type_2 airlight_moments(
         r_1 = _e56;
         if (half_4.second) {
             type_3 _e59 = airlight_zero_scratch();
-            t_3 = _e59;
-            airlight_t_moments(half_4, 7u, t_3);
+            t_4 = _e59;
+            airlight_t_moments(half_4, 7u, t_4);
             type_2 _e62 = airlight_zero_terms();
-            x_5 = _e62;
-            uint2 loop_bound_24 = uint2(4294967295u);
-            bool loop_init_24 = true;
+            x_8 = _e62;
+            uint2 loop_bound_28 = uint2(4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                if (!loop_init_24) {
+                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+                if (!loop_init_28) {
                     uint _e77 = i_8;
                     i_8 = _e77 + 1u;
                 }
-                loop_init_24 = false;
+                loop_init_28 = false;
                 uint _e66 = i_8;
                 if (_e66 < AIRLIGHT_TERMS) {
                 } else {
@@ -1529,11 +1694,11 @@ type_2 airlight_moments(
                 {
                     uint _e69 = i_8;
                     uint _e71 = i_8;
-                    float _e75 = t_3.inner[metal::min(unsigned(_e71 + 1u), 15u)];
-                    x_5.inner[metal::min(unsigned(_e69), 5u)] = _e75;
+                    float _e75 = t_4.inner[metal::min(unsigned(_e71 + 1u), 15u)];
+                    x_8.inner[metal::min(unsigned(_e69), 5u)] = _e75;
                 }
             }
-            type_2 _e79 = x_5;
+            type_2 _e79 = x_8;
             type_2 _e81 = airlight_binomial_shift(_e79, -(yc_1));
             r_1 = _e81;
         } else {
@@ -1542,16 +1707,16 @@ type_2 airlight_moments(
             type_2 _e86 = airlight_zero_terms();
             tau = _e86;
             p_1 = delta;
-            uint2 loop_bound_25 = uint2(4294967295u);
-            bool loop_init_25 = true;
+            uint2 loop_bound_29 = uint2(4294967295u);
+            bool loop_init_29 = true;
             while(true) {
-                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_25) {
+                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_29) {
                     uint _e103 = i_9;
                     i_9 = _e103 + 1u;
                 }
-                loop_init_25 = false;
+                loop_init_29 = false;
                 uint _e91 = i_9;
                 if (_e91 < AIRLIGHT_TERMS) {
                 } else {
@@ -1572,28 +1737,28 @@ type_2 airlight_moments(
         }
         metal::float2 b_5 = metal::float2(yc_1, -1.0);
         q = _e51;
-        uint2 loop_bound_26 = uint2(4294967295u);
-        bool loop_init_26 = true;
+        uint2 loop_bound_30 = uint2(4294967295u);
+        bool loop_init_30 = true;
         while(true) {
-            if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_26) {
-                uint _e133 = k_7;
-                k_7 = _e133 + 1u;
+            if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+            loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+            if (!loop_init_30) {
+                uint _e133 = k_10;
+                k_10 = _e133 + 1u;
             }
-            loop_init_26 = false;
-            uint _e115 = k_7;
+            loop_init_30 = false;
+            uint _e115 = k_10;
             if (_e115 < AIRLIGHT_TERMS) {
             } else {
                 break;
             }
             {
-                uint _e118 = k_7;
+                uint _e118 = k_10;
                 float _e122 = r_1.inner[metal::min(unsigned(_e118 - 1u), 5u)];
                 metal::float2 _e125 = q;
                 metal::float2 _e126 = airlight_cmul(b_5, _e125);
                 q = metal::float2(_e122, 0.0) - _e126;
-                uint _e128 = k_7;
+                uint _e128 = k_10;
                 float _e131 = q.y;
                 m_1.inner[metal::min(unsigned(_e128), 5u)] = _e131;
             }
@@ -1619,43 +1784,43 @@ float airlight_hypot_one(
 }
 
 float airlight_piece(
-    AirlightScene s_2,
+    AirlightScene s_3,
     AirlightCanonical g_3,
     float sigma_2,
     AirlightHalf half_5
 ) {
-    float j_5 = 0.0;
-    uint k_8 = 0u;
+    float j_6 = 0.0;
+    uint k_11 = 0u;
     type_2 _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
-    type_2 _e14 = airlight_chebyshev(s_2, g_3, sigma_2, half_5.y_lo + (half_5.dy * 0.5), half_5.dy * 0.5);
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    type_2 _e14 = airlight_chebyshev(s_3, g_3, sigma_2, half_5.y_lo + (half_5.dy * 0.5), half_5.dy * 0.5);
+    uint2 loop_bound_31 = uint2(4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e30 = k_8;
-            k_8 = _e30 + 1u;
+        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e30 = k_11;
+            k_11 = _e30 + 1u;
         }
-        loop_init_27 = false;
-        uint _e19 = k_8;
+        loop_init_31 = false;
+        uint _e19 = k_11;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            float _e22 = j_5;
-            uint _e23 = k_8;
-            uint _e25 = k_8;
-            j_5 = _e22 + (_e14.inner[metal::min(unsigned(_e23), 5u)] * _e5.inner[metal::min(unsigned(_e25), 5u)]);
+            float _e22 = j_6;
+            uint _e23 = k_11;
+            uint _e25 = k_11;
+            j_6 = _e22 + (_e14.inner[metal::min(unsigned(_e23), 5u)] * _e5.inner[metal::min(unsigned(_e25), 5u)]);
         }
     }
-    float _e32 = j_5;
+    float _e32 = j_6;
     return _e32;
 }
 
 float airlight_subdivided(
-    AirlightScene s_3,
+    AirlightScene s_4,
     AirlightCanonical g_4,
     float sigma_3,
     AirlightHalf piece
@@ -1667,87 +1832,99 @@ float airlight_subdivided(
     float hi = {};
     float dv_1 = {};
     float offset = {};
-    if (!(piece.dv_infinite)) {
-        local_12 = piece.dy <= 0.25;
+    bool inf = {};
+    if (piece.dy <= 0.25) {
+        local_12 = piece.big_h > 0.0;
     } else {
         local_12 = false;
     }
-    bool _e14 = local_12;
-    if (_e14) {
-        parts = metal::clamp(metal::ceil(piece.big_h * piece.dv), 1.0, 8.0);
-    }
-    float _e22 = parts;
-    if (_e22 <= 1.0) {
-        float _e25 = airlight_piece(s_3, g_4, sigma_3, piece);
-        return _e25;
-    }
-    float _e26 = parts;
-    uint n_4 = naga_f2u32(_e26);
-    float _e29 = parts;
-    float step = piece.dy / _e29;
-    uint2 loop_bound_28 = uint2(4294967295u);
-    bool loop_init_28 = true;
-    while(true) {
-        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_28) {
-            uint _e85 = i_10;
-            i_10 = _e85 + 1u;
+    bool _e15 = local_12;
+    if (_e15) {
+        if (piece.dv_infinite) {
+            parts = 8.0;
+        } else {
+            parts = metal::clamp(metal::ceil(piece.big_h * piece.dv), 1.0, 8.0);
         }
-        loop_init_28 = false;
-        uint _e35 = i_10;
-        if (_e35 < 8u) {
+    }
+    float _e25 = parts;
+    if (_e25 <= 1.0) {
+        float _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        return _e28;
+    }
+    float _e29 = parts;
+    uint n_5 = naga_f2u32(_e29);
+    float _e32 = parts;
+    float step = piece.dy / _e32;
+    uint2 loop_bound_32 = uint2(4294967295u);
+    bool loop_init_32 = true;
+    while(true) {
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_32) {
+            uint _e94 = i_10;
+            i_10 = _e94 + 1u;
+        }
+        loop_init_32 = false;
+        uint _e38 = i_10;
+        if (_e38 < 8u) {
         } else {
             break;
         }
         {
-            uint _e38 = i_10;
-            if (_e38 < n_4) {
-                uint _e41 = i_10;
-                float lo_1 = piece.y_lo + (step * static_cast<float>(_e41));
+            uint _e41 = i_10;
+            if (_e41 < n_5) {
+                uint _e44 = i_10;
+                float lo_1 = piece.y_lo + (step * static_cast<float>(_e44));
                 hi = lo_1 + step;
-                uint _e47 = i_10;
-                if ((_e47 + 1u) == n_4) {
+                uint _e50 = i_10;
+                if ((_e50 + 1u) == n_5) {
                     hi = piece.y_hi;
                 }
-                float _e52 = hi;
-                float dy_1 = _e52 - lo_1;
+                float _e55 = hi;
+                float dy_1 = _e55 - lo_1;
                 dv_1 = dy_1;
                 offset = lo_1 - piece.y_lo;
+                inf = false;
                 if (piece.second) {
-                    float _e59 = hi;
-                    dv_1 = dy_1 / (lo_1 * _e59);
-                    float _e63 = hi;
-                    float _e65 = hi;
-                    offset = (piece.y_hi - _e63) / (_e65 * piece.y_hi);
+                    if (lo_1 == 0.0) {
+                        inf = true;
+                        dv_1 = 0.0;
+                    } else {
+                        float _e68 = hi;
+                        dv_1 = dy_1 / (lo_1 * _e68);
+                    }
+                    float _e72 = hi;
+                    float _e74 = hi;
+                    offset = (piece.y_hi - _e72) / (_e74 * piece.y_hi);
                 }
-                float _e71 = hi;
-                float _e72 = dv_1;
-                AirlightHalf part = AirlightHalf {piece.second, {}, piece.big_h, lo_1, _e71, dy_1, _e72, false};
-                float _e75 = total;
-                float _e78 = offset;
-                float _e81 = airlight_piece(s_3, g_4, sigma_3, part);
-                total = _e75 + (metal::exp(-(piece.big_h) * _e78) * _e81);
+                float _e80 = hi;
+                float _e81 = dv_1;
+                bool _e82 = inf;
+                AirlightHalf part = AirlightHalf {piece.second, {}, piece.big_h, lo_1, _e80, dy_1, _e81, _e82};
+                float _e84 = total;
+                float _e87 = offset;
+                float _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                total = _e84 + (metal::exp(-(piece.big_h) * _e87) * _e90);
             }
         }
     }
-    float _e87 = total;
-    return _e87;
+    float _e96 = total;
+    return _e96;
 }
 
 metal::float2 airlight_crossings(
     float sigma_4,
     float d_el,
     float d_c,
-    float k_9
+    float k_12
 ) {
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_1 = -1.0;
-    float a_8 = k_9 + (sigma_4 * d_el);
+    float a_8 = k_12 + (sigma_4 * d_el);
     float b_6 = -((d_c + d_c));
-    float c_5 = k_9 - (sigma_4 * d_el);
-    float disc_1 = (b_6 * b_6) - ((4.0 * a_8) * c_5);
+    float c_6 = k_12 - (sigma_4 * d_el);
+    float disc_1 = (b_6 * b_6) - ((4.0 * a_8) * c_6);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
@@ -1757,7 +1934,7 @@ metal::float2 airlight_crossings(
     float _e26 = sb;
     float q_1 = -0.5 * (b_6 + (_e26 * metal::sqrt(disc_1)));
     if (q_1 != 0.0) {
-        r1_ = c_5 / q_1;
+        r1_ = c_6 / q_1;
     }
     if (a_8 != 0.0) {
         r2_1 = q_1 / a_8;
@@ -1768,7 +1945,7 @@ metal::float2 airlight_crossings(
 }
 
 float airlight_half(
-    AirlightScene s_4,
+    AirlightScene s_5,
     AirlightCanonical g_5,
     float sigma_5,
     AirlightHalf half_6,
@@ -1778,7 +1955,7 @@ float airlight_half(
     uint i_11 = 0u;
     bool local_13 = {};
     uint i_12 = 0u;
-    uint j_6 = {};
+    uint j_7 = {};
     float total_1 = 0.0;
     float lo = {};
     uint i_13 = 0u;
@@ -1786,27 +1963,27 @@ float airlight_half(
     bool local_14 = {};
     float dv_2 = {};
     float offset_1 = {};
-    bool inf = {};
+    bool inf_1 = {};
     bool local_15 = {};
     if (isotropic) {
         type_2 _e6 = airlight_moments(half_6, 1u);
-        float _e12 = airlight_integrand(s_4, g_5, sigma_5, half_6.y_lo + (half_6.dy * 0.5));
+        float _e12 = airlight_integrand(s_5, g_5, sigma_5, half_6.y_lo + (half_6.dy * 0.5));
         return _e12 * _e6.inner[0];
     }
-    if (s_4.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        metal::float2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_a);
-        metal::float2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_b);
+    if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        metal::float2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_a);
+        metal::float2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_b);
         cuts = type_9 {{_e27.x, _e27.y, _e31.x, _e31.y}};
-        uint2 loop_bound_29 = uint2(4294967295u);
-        bool loop_init_29 = true;
+        uint2 loop_bound_33 = uint2(4294967295u);
+        bool loop_init_33 = true;
         while(true) {
-            if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-            loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-            if (!loop_init_29) {
+            if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+            loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+            if (!loop_init_33) {
                 uint _e61 = i_11;
                 i_11 = _e61 + 1u;
             }
-            loop_init_29 = false;
+            loop_init_33 = false;
             uint _e39 = i_11;
             if (_e39 < 4u) {
             } else {
@@ -1829,53 +2006,53 @@ float airlight_half(
                 }
             }
         }
-        uint2 loop_bound_30 = uint2(4294967295u);
-        bool loop_init_30 = true;
+        uint2 loop_bound_34 = uint2(4294967295u);
+        bool loop_init_34 = true;
         while(true) {
-            if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-            loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-            if (!loop_init_30) {
+            if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+            if (!loop_init_34) {
                 uint _e102 = i_12;
                 i_12 = _e102 + 1u;
             }
-            loop_init_30 = false;
+            loop_init_34 = false;
             uint _e65 = i_12;
             if (_e65 < 3u) {
             } else {
                 break;
             }
             {
-                j_6 = 0u;
-                uint2 loop_bound_31 = uint2(4294967295u);
-                bool loop_init_31 = true;
+                j_7 = 0u;
+                uint2 loop_bound_35 = uint2(4294967295u);
+                bool loop_init_35 = true;
                 while(true) {
-                    if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-                    loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-                    if (!loop_init_31) {
-                        uint _e99 = j_6;
-                        j_6 = _e99 + 1u;
+                    if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+                    if (!loop_init_35) {
+                        uint _e99 = j_7;
+                        j_7 = _e99 + 1u;
                     }
-                    loop_init_31 = false;
-                    uint _e70 = j_6;
+                    loop_init_35 = false;
+                    uint _e70 = j_7;
                     uint _e72 = i_12;
                     if (_e70 < (3u - _e72)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e75 = j_6;
+                        uint _e75 = j_7;
                         float _e77 = cuts.inner[metal::min(unsigned(_e75), 3u)];
-                        uint _e78 = j_6;
+                        uint _e78 = j_7;
                         float _e82 = cuts.inner[metal::min(unsigned(_e78 + 1u), 3u)];
                         if (_e77 > _e82) {
-                            uint _e84 = j_6;
-                            float t_6 = cuts.inner[metal::min(unsigned(_e84), 3u)];
-                            uint _e87 = j_6;
-                            uint _e89 = j_6;
+                            uint _e84 = j_7;
+                            float t_7 = cuts.inner[metal::min(unsigned(_e84), 3u)];
+                            uint _e87 = j_7;
+                            uint _e89 = j_7;
                             float _e93 = cuts.inner[metal::min(unsigned(_e89 + 1u), 3u)];
                             cuts.inner[metal::min(unsigned(_e87), 3u)] = _e93;
-                            uint _e94 = j_6;
-                            cuts.inner[metal::min(unsigned(_e94 + 1u), 3u)] = t_6;
+                            uint _e94 = j_7;
+                            cuts.inner[metal::min(unsigned(_e94 + 1u), 3u)] = t_7;
                         }
                     }
                 }
@@ -1884,20 +2061,20 @@ float airlight_half(
     }
     float _e105 = cuts.inner[0];
     if (_e105 >= 2.0) {
-        float _e108 = airlight_piece(s_4, g_5, sigma_5, half_6);
+        float _e108 = airlight_piece(s_5, g_5, sigma_5, half_6);
         return _e108;
     }
     lo = half_6.y_lo;
-    uint2 loop_bound_32 = uint2(4294967295u);
-    bool loop_init_32 = true;
+    uint2 loop_bound_36 = uint2(4294967295u);
+    bool loop_init_36 = true;
     while(true) {
-        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-        if (!loop_init_32) {
+        if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (!loop_init_36) {
             uint _e195 = i_13;
             i_13 = _e195 + 1u;
         }
-        loop_init_32 = false;
+        loop_init_36 = false;
         uint _e115 = i_13;
         if (_e115 < 5u) {
         } else {
@@ -1928,11 +2105,11 @@ float airlight_half(
                 dv_2 = dy_2;
                 float _e142 = lo;
                 offset_1 = _e142 - half_6.y_lo;
-                inf = false;
+                inf_1 = false;
                 if (half_6.second) {
                     float _e149 = lo;
                     if (_e149 == 0.0) {
-                        inf = true;
+                        inf_1 = true;
                         dv_2 = 0.0;
                     } else {
                         float _e154 = lo;
@@ -1946,11 +2123,11 @@ float airlight_half(
                 float _e167 = lo;
                 float _e168 = hi_1;
                 float _e169 = dv_2;
-                bool _e170 = inf;
+                bool _e170 = inf_1;
                 AirlightHalf piece_1 = AirlightHalf {half_6.second, {}, half_6.big_h, _e167, _e168, dy_2, _e169, _e170};
                 float _e172 = total_1;
                 float _e175 = offset_1;
-                float _e178 = airlight_subdivided(s_4, g_5, sigma_5, piece_1);
+                float _e178 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
                 total_1 = _e172 + (metal::exp(-(half_6.big_h) * _e175) * _e178);
                 float _e181 = hi_1;
                 lo = _e181;
@@ -1974,14 +2151,14 @@ float airlight_half(
 }
 
 float airlight_on_line(
-    AirlightScene s_5,
+    AirlightScene s_6,
     AirlightCanonical g_6
 ) {
     bool local_16 = {};
     float span = {};
     type_3 e2_ = {};
     float tail_1 = 0.0;
-    float k_10 = s_5.sigma_s * s_5.intensity;
+    float k_13 = s_6.sigma_s * s_6.intensity;
     if (!(g_6.t_hi_infinite)) {
         local_16 = g_6.x_h > g_6.t_hi;
     } else {
@@ -1989,43 +2166,43 @@ float airlight_on_line(
     }
     bool _e13 = local_16;
     if (_e13) {
-        float _e19 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, -(g_6.d_el));
-        float _e25 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, 1.0);
+        float _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        float _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
         float f = _e19 * _e25;
         float r0_ = g_6.x_h - g_6.t_lo;
         float r1_1 = g_6.x_h - g_6.t_hi;
-        return ((k_10 * f) * metal::exp(-(s_5.sigma_t) * r0_)) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1);
+        return ((k_13 * f) * metal::exp(-(s_6.sigma_t) * r0_)) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1);
     }
-    float _e49 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, g_6.d_el);
-    float _e55 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, -1.0);
+    float _e49 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    float _e55 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
     float f_1 = _e49 * _e55;
     float s0_ = g_6.t_lo - g_6.x_h;
     float s1_ = g_6.t_hi - g_6.x_h;
-    if (s_5.sigma_t == 0.0) {
+    if (s_6.sigma_t == 0.0) {
         span = 1.0 / s0_;
         if (!(g_6.t_hi_infinite)) {
             span = ((s1_ - s0_) / s1_) / s0_;
         }
         float _e75 = span;
-        return (k_10 * f_1) * _e75;
+        return (k_13 * f_1) * _e75;
     }
-    float two_st = s_5.sigma_t + s_5.sigma_t;
+    float two_st = s_6.sigma_t + s_6.sigma_t;
     type_3 _e80 = airlight_zero_scratch();
     e2_ = _e80;
     airlight_en_scaled(two_st * s0_, 2u, e2_);
     float _e89 = e2_.inner[1];
-    float head = (metal::exp(-(s_5.sigma_t) * s0_) * _e89) / s0_;
+    float head = (metal::exp(-(s_6.sigma_t) * s0_) * _e89) / s0_;
     if (!(g_6.t_hi_infinite)) {
         airlight_en_scaled(two_st * s1_, 2u, e2_);
         float _e107 = e2_.inner[1];
-        tail_1 = (metal::exp((-(s_5.sigma_t) * (s1_ - s0_)) - (s_5.sigma_t * s1_)) * _e107) / s1_;
+        tail_1 = (metal::exp((-(s_6.sigma_t) * (s1_ - s0_)) - (s_6.sigma_t * s1_)) * _e107) / s1_;
     }
     float _e111 = tail_1;
-    return (k_10 * f_1) * (head - _e111);
+    return (k_13 * f_1) * (head - _e111);
 }
 
 AirlightResult airlight_in_scatter_canonical(
-    AirlightScene s_6,
+    AirlightScene s_7,
     AirlightCanonical g_7
 ) {
     bool local_17 = {};
@@ -2058,7 +2235,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e10 = local_17;
     if (!(!(_e10))) {
-        local_18 = (s_6.sigma_s * s_6.intensity) == 0.0;
+        local_18 = (s_7.sigma_s * s_7.intensity) == 0.0;
     } else {
         local_18 = true;
     }
@@ -2095,16 +2272,16 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e55 = local_21;
     if (_e55) {
-        float _e56 = airlight_on_line(s_6, g_7);
+        float _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (h_1 == 0.0) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    float big_h_1 = s_6.sigma_t * h_1;
-    if (!((s_6.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if (s_6.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_23 = s_6.light_param_a == 0.0;
+    float big_h_1 = s_7.sigma_t * h_1;
+    if (!((s_7.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_23 = s_7.light_param_a == 0.0;
         } else {
             local_23 = false;
         }
@@ -2115,15 +2292,15 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e85 = local_22;
     if (_e85) {
-        if (!((s_6.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_6.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_26 = s_6.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+        if (!((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_26 = s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
                 local_26 = true;
             }
             bool _e104 = local_26;
             if (_e104) {
-                local_27 = s_6.phase_param_a == 0.0;
+                local_27 = s_7.phase_param_a == 0.0;
             } else {
                 local_27 = false;
             }
@@ -2138,7 +2315,7 @@ AirlightResult airlight_in_scatter_canonical(
         local_24 = false;
     }
     bool isotropic_1 = local_24;
-    float prefactor = ((2.0 * s_6.sigma_s) * s_6.intensity) / h_1;
+    float prefactor = ((2.0 * s_7.sigma_s) * s_7.intensity) / h_1;
     if (t0_ < x_h) {
         float a_s = (x_h - t0_) / h_1;
         t_end = x_h;
@@ -2160,7 +2337,7 @@ AirlightResult airlight_in_scatter_canonical(
         float _e142 = t_end;
         float dy_3 = ((((_e142 - t0_) / h_1) * (1.0 + ((a_s + a_e) / (_e138 + _e139)))) * _e140) * _e141;
         AirlightHalf half_7 = AirlightHalf {false, {}, big_h_1, _e140, _e141, dy_3, dy_3, false};
-        float _e157 = airlight_half(s_6, g_7, -1.0, half_7, isotropic_1);
+        float _e157 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
         float _e158 = total_2;
         total_2 = _e158 + ((prefactor * metal::exp(-(big_h_1) * _e138)) * _e157);
     }
@@ -2198,9 +2375,9 @@ AirlightResult airlight_in_scatter_canonical(
         float _e212 = dv_3;
         bool _e213 = infinite;
         AirlightHalf half_8 = AirlightHalf {true, {}, big_h_1, _e210, _e176, _e211, _e212, _e213};
-        float _e216 = airlight_half(s_6, g_7, 1.0, half_8, isotropic_1);
+        float _e216 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
         float _e217 = total_2;
-        total_2 = _e217 + (((metal::exp(-(s_6.sigma_t) * (t_start - t0_)) * prefactor) * metal::exp(-(big_h_1) * _e175)) * _e216);
+        total_2 = _e217 + (((metal::exp(-(s_7.sigma_t) * (t_start - t0_)) * prefactor) * metal::exp(-(big_h_1) * _e175)) * _e216);
     }
     float _e230 = total_2;
     return AirlightResult {metal::max(_e230, 0.0), AIRLIGHT_STATUS_OK};
@@ -2240,7 +2417,7 @@ float airlight_safe_length(
 }
 
 bool airlight_valid(
-    AirlightScene s_7
+    AirlightScene s_8
 ) {
     bool local_33 = {};
     bool local_34 = {};
@@ -2270,171 +2447,171 @@ bool airlight_valid(
     bool local_57 = {};
     bool local_58 = {};
     bool local_59 = {};
-    bool _e2 = airlight_vec_finite(s_7.origin);
+    bool _e2 = airlight_vec_finite(s_8.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_7.dir);
+        bool _e6 = airlight_vec_finite(s_8.dir);
         local_33 = _e6;
     } else {
         local_33 = false;
     }
     bool _e8 = local_33;
     if (_e8) {
-        float _e12 = airlight_safe_length(s_7.dir);
+        float _e12 = airlight_safe_length(s_8.dir);
         local_34 = _e12 > 0.0;
     } else {
         local_34 = false;
     }
     bool _e16 = local_34;
     if (_e16) {
-        bool _e20 = airlight_is_finite(s_7.t_min);
+        bool _e20 = airlight_is_finite(s_8.t_min);
         local_35 = _e20;
     } else {
         local_35 = false;
     }
     bool _e22 = local_35;
     if (_e22) {
-        bool _e26 = airlight_vec_finite(s_7.light_position);
+        bool _e26 = airlight_vec_finite(s_8.light_position);
         local_36 = _e26;
     } else {
         local_36 = false;
     }
     bool _e28 = local_36;
     if (_e28) {
-        bool _e32 = airlight_is_finite(s_7.intensity);
+        bool _e32 = airlight_is_finite(s_8.intensity);
         local_37 = _e32;
     } else {
         local_37 = false;
     }
     bool _e34 = local_37;
     if (_e34) {
-        local_38 = s_7.intensity >= 0.0;
+        local_38 = s_8.intensity >= 0.0;
     } else {
         local_38 = false;
     }
     bool _e41 = local_38;
     if (_e41) {
-        bool _e45 = airlight_is_finite(s_7.sigma_s);
+        bool _e45 = airlight_is_finite(s_8.sigma_s);
         local_39 = _e45;
     } else {
         local_39 = false;
     }
     bool _e47 = local_39;
     if (_e47) {
-        local_40 = s_7.sigma_s >= 0.0;
+        local_40 = s_8.sigma_s >= 0.0;
     } else {
         local_40 = false;
     }
     bool _e54 = local_40;
     if (_e54) {
-        bool _e58 = airlight_is_finite(s_7.sigma_t);
+        bool _e58 = airlight_is_finite(s_8.sigma_t);
         local_41 = _e58;
     } else {
         local_41 = false;
     }
     bool _e60 = local_41;
     if (_e60) {
-        local_42 = s_7.sigma_t >= 0.0;
+        local_42 = s_8.sigma_t >= 0.0;
     } else {
         local_42 = false;
     }
     bool _e67 = local_42;
     ok = _e67;
-    if ((s_7.flags & 1u) == 0u) {
+    if ((s_8.flags & 1u) == 0u) {
         bool _e74 = ok;
         if (_e74) {
-            bool _e78 = airlight_is_finite(s_7.t_max);
+            bool _e78 = airlight_is_finite(s_8.t_max);
             local_43 = _e78;
         } else {
             local_43 = false;
         }
         bool _e80 = local_43;
         if (_e80) {
-            local_44 = s_7.t_min <= s_7.t_max;
+            local_44 = s_8.t_min <= s_8.t_max;
         } else {
             local_44 = false;
         }
         bool _e87 = local_44;
         ok = _e87;
     }
-    if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         bool _e91 = ok;
         if (_e91) {
-            bool _e95 = airlight_vec_finite(s_7.light_axis);
+            bool _e95 = airlight_vec_finite(s_8.light_axis);
             local_45 = _e95;
         } else {
             local_45 = false;
         }
         bool _e97 = local_45;
         if (_e97) {
-            float _e101 = airlight_safe_length(s_7.light_axis);
+            float _e101 = airlight_safe_length(s_8.light_axis);
             local_46 = _e101 > 0.0;
         } else {
             local_46 = false;
         }
         bool _e105 = local_46;
         if (_e105) {
-            local_47 = s_7.light_param_a >= 0.0;
+            local_47 = s_8.light_param_a >= 0.0;
         } else {
             local_47 = false;
         }
         bool _e112 = local_47;
         if (_e112) {
-            local_48 = s_7.light_param_a <= 1024.0;
+            local_48 = s_8.light_param_a <= 1024.0;
         } else {
             local_48 = false;
         }
         bool _e119 = local_48;
         if (_e119) {
-            local_49 = metal::fract(s_7.light_param_a * 0.5) == 0.0;
+            local_49 = metal::fract(s_8.light_param_a * 0.5) == 0.0;
         } else {
             local_49 = false;
         }
         bool _e129 = local_49;
         ok = _e129;
     } else {
-        if (s_7.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e133 = ok;
             if (_e133) {
-                bool _e137 = airlight_vec_finite(s_7.light_axis);
+                bool _e137 = airlight_vec_finite(s_8.light_axis);
                 local_50 = _e137;
             } else {
                 local_50 = false;
             }
             bool _e139 = local_50;
             if (_e139) {
-                float _e143 = airlight_safe_length(s_7.light_axis);
+                float _e143 = airlight_safe_length(s_8.light_axis);
                 local_51 = _e143 > 0.0;
             } else {
                 local_51 = false;
             }
             bool _e147 = local_51;
             if (_e147) {
-                local_52 = s_7.light_param_b < s_7.light_param_a;
+                local_52 = s_8.light_param_b < s_8.light_param_a;
             } else {
                 local_52 = false;
             }
             bool _e154 = local_52;
             if (_e154) {
-                local_53 = s_7.light_param_b >= -1.0;
+                local_53 = s_8.light_param_b >= -1.0;
             } else {
                 local_53 = false;
             }
             bool _e161 = local_53;
             if (_e161) {
-                local_54 = s_7.light_param_a <= 1.0;
+                local_54 = s_8.light_param_a <= 1.0;
             } else {
                 local_54 = false;
             }
             bool _e168 = local_54;
             ok = _e168;
         } else {
-            if (s_7.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    bool g_ok = metal::abs(s_7.phase_param_a) < 1.0;
-    switch(s_7.phase_kind) {
+    bool g_ok = metal::abs(s_8.phase_param_a) < 1.0;
+    switch(s_8.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -2461,19 +2638,19 @@ bool airlight_valid(
             }
             bool _e187 = local_56;
             if (_e187) {
-                local_57 = metal::abs(s_7.phase_param_b) < 1.0;
+                local_57 = metal::abs(s_8.phase_param_b) < 1.0;
             } else {
                 local_57 = false;
             }
             bool _e195 = local_57;
             if (_e195) {
-                local_58 = s_7.phase_param_c >= 0.0;
+                local_58 = s_8.phase_param_c >= 0.0;
             } else {
                 local_58 = false;
             }
             bool _e202 = local_58;
             if (_e202) {
-                local_59 = s_7.phase_param_c <= 1.0;
+                local_59 = s_8.phase_param_c <= 1.0;
             } else {
                 local_59 = false;
             }
@@ -2491,17 +2668,17 @@ bool airlight_valid(
 }
 
 AirlightCanonical airlight_canonical(
-    AirlightScene s_8
+    AirlightScene s_9
 ) {
     metal::float3 a_6 = metal::float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    float _e3 = airlight_safe_length(s_8.dir);
-    metal::float3 d_1 = s_8.dir / metal::float3(_e3);
-    if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        float _e16 = airlight_safe_length(s_8.light_axis);
-        a_6 = s_8.light_axis / metal::float3(_e16);
+    float _e3 = airlight_safe_length(s_9.dir);
+    metal::float3 d_1 = s_9.dir / metal::float3(_e3);
+    if (s_9.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        float _e16 = airlight_safe_length(s_9.light_axis);
+        a_6 = s_9.light_axis / metal::float3(_e16);
     }
-    metal::float3 to_light = s_8.light_position - s_8.origin;
+    metal::float3 to_light = s_9.light_position - s_9.origin;
     float x_h_1 = metal::dot(to_light, d_1);
     metal::float3 perp = (x_h_1 * d_1) - to_light;
     float _e25 = airlight_safe_length(perp);
@@ -2509,21 +2686,21 @@ AirlightCanonical airlight_canonical(
         metal::float3 _e30 = a_6;
         d_c_1 = metal::dot(perp, _e30) / _e25;
     }
-    bool infinite_1 = (s_8.flags & 1u) != 0u;
+    bool infinite_1 = (s_9.flags & 1u) != 0u;
     metal::float3 _e38 = a_6;
     float _e40 = d_c_1;
-    return AirlightCanonical {_e25, x_h_1, metal::dot(d_1, _e38), _e40, s_8.t_min, infinite_1 ? 0.0 : s_8.t_max, infinite_1};
+    return AirlightCanonical {_e25, x_h_1, metal::dot(d_1, _e38), _e40, s_9.t_min, infinite_1 ? 0.0 : s_9.t_max, infinite_1};
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_9
+    AirlightScene s_10
 ) {
-    bool _e1 = airlight_valid(s_9);
+    bool _e1 = airlight_valid(s_10);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e6 = airlight_canonical(s_9);
-    AirlightResult _e7 = airlight_in_scatter_canonical(s_9, _e6);
+    AirlightCanonical _e6 = airlight_canonical(s_10);
+    AirlightResult _e7 = airlight_in_scatter_canonical(s_10, _e6);
     bool _e9 = airlight_is_finite(_e7.in_scatter);
     if (!(_e9)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};

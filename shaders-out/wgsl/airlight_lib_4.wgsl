@@ -101,53 +101,171 @@ fn airlight_csqrt(z: vec2<f32>) -> vec2<f32> {
     }
     let r_4 = length(z);
     if (z.x >= 0f) {
-        let t_4 = sqrt(((r_4 + z.x) * 0.5f));
-        return vec2<f32>(t_4, (z.y / (t_4 + t_4)));
+        let t_5 = sqrt(((r_4 + z.x) * 0.5f));
+        return vec2<f32>(t_5, (z.y / (t_5 + t_5)));
     }
-    let t_5 = sqrt(((r_4 - z.x) * 0.5f));
-    return vec2<f32>((abs(z.y) / (t_5 + t_5)), select(-(t_5), t_5, (z.y >= 0f)));
+    let t_6 = sqrt(((r_4 - z.x) * 0.5f));
+    return vec2<f32>((abs(z.y) / (t_6 + t_6)), select(-(t_6), t_6, (z.y >= 0f)));
+}
+
+fn airlight_cos_sin(x: f32) -> vec2<f32> {
+    var c: f32 = 0f;
+    var s: f32 = 0f;
+    var k: u32 = 0u;
+    var fc: f32;
+    var j: u32;
+
+    let z_7 = (x * x);
+    loop {
+        let _e8 = k;
+        if (_e8 < 9u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = k;
+            let n_3 = (8u - _e12);
+            let _e14 = c;
+            c = (_e14 * z_7);
+            let _e16 = s;
+            s = (_e16 * z_7);
+            fc = 1f;
+            j = 1u;
+            loop {
+                let _e22 = j;
+                if (_e22 <= (2u * n_3)) {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = fc;
+                    let _e27 = j;
+                    fc = (_e26 * f32(_e27));
+                }
+                continuing {
+                    let _e31 = j;
+                    j = (_e31 + 1u);
+                }
+            }
+            let sign_1 = select(1f, -1f, ((n_3 & 1u) == 1u));
+            let _e40 = c;
+            let _e41 = fc;
+            c = (_e40 + (sign_1 / _e41));
+            let _e44 = s;
+            let _e45 = fc;
+            s = (_e44 + (sign_1 / (_e45 * f32(((2u * n_3) + 1u)))));
+        }
+        continuing {
+            let _e55 = k;
+            k = (_e55 + 1u);
+        }
+    }
+    let _e57 = c;
+    let _e58 = s;
+    return vec2<f32>(_e57, (_e58 * x));
 }
 
 fn airlight_cexp(z_1: vec2<f32>) -> vec2<f32> {
     let m_2 = exp(z_1.x);
-    return vec2<f32>((m_2 * cos(z_1.y)), (m_2 * sin(z_1.y)));
+    let _e4 = airlight_cos_sin(z_1.y);
+    return vec2<f32>((m_2 * _e4.x), (m_2 * _e4.y));
+}
+
+fn airlight_atan(x_1: f32) -> f32 {
+    var y: f32 = 0f;
+    var t: f32;
+
+    t = x_1;
+    if (x_1 > 2.4142137f) {
+        y = 1.5707964f;
+        t = (-1f / x_1);
+    } else {
+        if (x_1 > 0.41421357f) {
+            y = 0.7853982f;
+            t = ((x_1 - 1f) / (x_1 + 1f));
+        }
+    }
+    let _e17 = t;
+    let _e18 = t;
+    let z_8 = (_e17 * _e18);
+    let _e20 = y;
+    let _e32 = t;
+    let _e34 = t;
+    return (_e20 + (((((((((0.080537446f * z_8) - 0.13877685f) * z_8) + 0.19977711f) * z_8) - 0.3333295f) * z_8) * _e32) + _e34));
 }
 
 fn airlight_cln(z_2: vec2<f32>) -> vec2<f32> {
-    return vec2<f32>(log(length(z_2)), atan2(z_2.y, z_2.x));
+    var arg: f32 = 1.5707964f;
+
+    if (z_2.x > 0f) {
+        let _e10 = airlight_atan((abs(z_2.y) / z_2.x));
+        arg = _e10;
+    }
+    let _e13 = arg;
+    let _e14 = arg;
+    return vec2<f32>(log(length(z_2)), select(_e13, -(_e14), (z_2.y < 0f)));
 }
 
-fn airlight_is_finite(x: f32) -> bool {
-    return ((bitcast<u32>(x) & 2139095040u) != 2139095040u);
+fn airlight_log1p(x_2: f32) -> f32 {
+    var sum: f32 = 0f;
+    var k_1: u32 = 0u;
+
+    if (x_2 > 1f) {
+        return log((1f + x_2));
+    }
+    let s_11 = (x_2 / (2f + x_2));
+    let s2_ = (s_11 * s_11);
+    loop {
+        let _e14 = k_1;
+        if (_e14 < 9u) {
+        } else {
+            break;
+        }
+        {
+            let _e17 = sum;
+            let _e21 = k_1;
+            sum = ((_e17 * s2_) + (1f / f32(((2u * (8u - _e21)) + 1u))));
+        }
+        continuing {
+            let _e31 = k_1;
+            k_1 = (_e31 + 1u);
+        }
+    }
+    let _e35 = sum;
+    return ((2f * s_11) * _e35);
+}
+
+fn airlight_is_finite(x_3: f32) -> bool {
+    return ((bitcast<u32>(x_3) & 2139095040u) != 2139095040u);
 }
 
 fn airlight_ein(z_3: vec2<f32>) -> vec2<f32> {
     var term: vec2<f32> = vec2<f32>(-1f, 0f);
-    var sum: vec2<f32> = vec2<f32>(0f, 0f);
-    var k: u32 = 1u;
+    var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
+    var k_2: u32 = 1u;
 
     loop {
-        let _e11 = k;
+        let _e11 = k_2;
         if (_e11 <= 14u) {
         } else {
             break;
         }
         {
-            let _e14 = k;
+            let _e14 = k_2;
             let kf = f32(_e14);
             let _e16 = term;
             let _e17 = airlight_cmul(_e16, z_3);
             term = (-(_e17) / vec2(kf));
-            let _e21 = sum;
+            let _e21 = sum_1;
             let _e22 = term;
-            sum = (_e21 + (_e22 / vec2(kf)));
+            sum_1 = (_e21 + (_e22 / vec2(kf)));
         }
         continuing {
-            let _e27 = k;
-            k = (_e27 + 1u);
+            let _e27 = k_2;
+            k_2 = (_e27 + 1u);
         }
     }
-    let _e29 = sum;
+    let _e29 = sum_1;
     return _e29;
 }
 
@@ -156,25 +274,25 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
     var a_pow: vec2<f32> = vec2<f32>(1f, 0f);
     var fact: f32 = 1f;
     var sign_: f32 = 1f;
-    var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_1: u32 = 1u;
+    var sum_2: vec2<f32> = vec2<f32>(0f, 0f);
+    var k_3: u32 = 1u;
 
     loop {
-        let _e20 = k_1;
+        let _e20 = k_3;
         if (_e20 <= 14u) {
         } else {
             break;
         }
         {
-            let _e23 = k_1;
+            let _e23 = k_3;
             let kf_1 = f32(_e23);
             let _e25 = fact;
             fact = (_e25 * kf_1);
-            let _e27 = sum_1;
+            let _e27 = sum_2;
             let _e28 = h;
             let _e29 = sign_;
             let _e30 = fact;
-            sum_1 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
+            sum_2 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
             let _e35 = a_pow;
             let _e36 = airlight_cmul(_e35, a_2);
             a_pow = _e36;
@@ -186,25 +304,25 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
             sign_ = -(_e41);
         }
         continuing {
-            let _e44 = k_1;
-            k_1 = (_e44 + 1u);
+            let _e44 = k_3;
+            k_3 = (_e44 + 1u);
         }
     }
-    let _e46 = sum_1;
+    let _e46 = sum_2;
     return _e46;
 }
 
 fn airlight_in_series_region(z_4: vec2<f32>) -> bool {
-    let x_6 = (z_4.x * 0.7692308f);
-    let y_1 = (z_4.y * 0.47619048f);
-    return (((x_6 * x_6) + (y_1 * y_1)) < 1f);
+    let x_9 = (z_4.x * 0.7692308f);
+    let y_2 = (z_4.y * 0.47619048f);
+    return (((x_9 * x_9) + (y_2 * y_2)) < 1f);
 }
 
 fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
     var r2_: f32 = 300000000000000000000000000000000000000f;
     var depth: u32 = 2u;
     var root: vec2<f32>;
-    var t: vec2<f32>;
+    var t_1: vec2<f32>;
     var i: u32 = 0u;
 
     let ax = abs(z_5.x);
@@ -245,7 +363,7 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
     }
     let _e63 = root;
     let _e65 = airlight_cmul(b_3, (vec2<f32>(1f, 0f) + _e63));
-    t = (_e65 * 0.5f);
+    t_1 = (_e65 * 0.5f);
     loop {
         let _e71 = i;
         if (_e71 < 15u) {
@@ -259,9 +377,9 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
                 let _e77 = depth;
                 let _e78 = i;
                 let kf_2 = f32((_e77 - _e78));
-                let _e91 = t;
+                let _e91 = t_1;
                 let _e92 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e91);
-                t = ((z_5 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e92);
+                t_1 = ((z_5 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e92);
             }
         }
         continuing {
@@ -269,7 +387,7 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
             i = (_e95 + 1u);
         }
     }
-    let _e100 = t;
+    let _e100 = t_1;
     let _e101 = airlight_cdiv(vec2<f32>(1f, 0f), _e100);
     return _e101;
 }
@@ -288,21 +406,21 @@ fn airlight_e1_scaled(z_6: vec2<f32>) -> vec2<f32> {
     return _e11;
 }
 
-fn airlight_en_scaled_cf(x_1: f32, n: u32) -> f32 {
+fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     var depth_1: u32 = 2u;
-    var t_1: f32;
+    var t_2: f32;
     var i_1: u32 = 0u;
 
-    if (x_1 < 3f) {
+    if (x_4 < 3f) {
         depth_1 = 15u;
     } else {
-        if (x_1 < 5f) {
+        if (x_4 < 5f) {
             depth_1 = 10u;
         } else {
-            if (x_1 < 10f) {
+            if (x_4 < 10f) {
                 depth_1 = 6u;
             } else {
-                if (x_1 < 30f) {
+                if (x_4 < 30f) {
                     depth_1 = 3u;
                 }
             }
@@ -311,12 +429,12 @@ fn airlight_en_scaled_cf(x_1: f32, n: u32) -> f32 {
     let nf_1 = f32(n);
     let _e17 = depth_1;
     let m_3 = f32(_e17);
-    let b_4 = ((x_1 + nf_1) + (2f * (m_3 + 1f)));
+    let b_4 = ((x_4 + nf_1) + (2f * (m_3 + 1f)));
     let a_7 = ((m_3 + 2f) * ((nf_1 + m_3) + 1f));
     let disc = (1f - ((4f * a_7) / (b_4 * b_4)));
-    t_1 = b_4;
+    t_2 = b_4;
     if (disc > 0f) {
-        t_1 = ((b_4 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_4 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e48 = i_1;
@@ -331,8 +449,8 @@ fn airlight_en_scaled_cf(x_1: f32, n: u32) -> f32 {
                 let _e54 = depth_1;
                 let _e55 = i_1;
                 let kf_3 = f32((_e54 - _e55));
-                let _e66 = t_1;
-                t_1 = (((x_1 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e66));
+                let _e66 = t_2;
+                t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e66));
             }
         }
         continuing {
@@ -340,18 +458,18 @@ fn airlight_en_scaled_cf(x_1: f32, n: u32) -> f32 {
             i_1 = (_e70 + 1u);
         }
     }
-    let _e73 = t_1;
-    return (1f / ((x_1 + nf_1) - (nf_1 / _e73)));
+    let _e73 = t_2;
+    return (1f / ((x_4 + nf_1) - (nf_1 / _e73)));
 }
 
-fn airlight_en_scaled(x_2: f32, count: u32, out: ptr<function, array<f32, 16>>) {
+fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) {
     var n_1: u32 = 2u;
     var pivot: u32 = 1u;
     var n_2: u32 = 1u;
     var local_1: bool;
     var i_2: u32 = 1u;
 
-    if (x_2 == 0f) {
+    if (x_5 == 0f) {
         (*out)[0] = AIRLIGHT_FLT_MAX;
         loop {
             let _e9 = n_1;
@@ -371,15 +489,15 @@ fn airlight_en_scaled(x_2: f32, count: u32, out: ptr<function, array<f32, 16>>) 
         }
         return;
     }
-    let _e29 = airlight_in_series_region(vec2<f32>(x_2, 0f));
+    let _e29 = airlight_in_series_region(vec2<f32>(x_5, 0f));
     if _e29 {
-        let _e33 = airlight_e1_scaled(vec2<f32>(x_2, 0f));
+        let _e33 = airlight_e1_scaled(vec2<f32>(x_5, 0f));
         (*out)[0] = _e33.x;
     } else {
-        pivot = u32(clamp(ceil(x_2), 1f, f32(count)));
+        pivot = u32(clamp(ceil(x_5), 1f, f32(count)));
         let _e40 = pivot;
         let _e44 = pivot;
-        let _e45 = airlight_en_scaled_cf(x_2, _e44);
+        let _e45 = airlight_en_scaled_cf(x_5, _e44);
         (*out)[(_e40 - 1u)] = _e45;
     }
     loop {
@@ -403,7 +521,7 @@ fn airlight_en_scaled(x_2: f32, count: u32, out: ptr<function, array<f32, 16>>) 
                 let _e62 = n_2;
                 let _e66 = (*out)[(_e62 - 1u)];
                 let _e70 = n_2;
-                (*out)[_e60] = ((1f - (x_2 * _e66)) / f32(_e70));
+                (*out)[_e60] = ((1f - (x_5 * _e66)) / f32(_e70));
             }
         }
         continuing {
@@ -423,9 +541,9 @@ fn airlight_en_scaled(x_2: f32, count: u32, out: ptr<function, array<f32, 16>>) 
             if (_e81 < _e82) {
                 let _e84 = pivot;
                 let _e85 = i_2;
-                let n_3 = (_e84 - _e85);
-                let _e92 = (*out)[n_3];
-                (*out)[(n_3 - 1u)] = ((1f - (f32(n_3) * _e92)) / x_2);
+                let n_4 = (_e84 - _e85);
+                let _e92 = (*out)[n_4];
+                (*out)[(n_4 - 1u)] = ((1f - (f32(n_4) * _e92)) / x_5);
             }
         }
         continuing {
@@ -469,7 +587,7 @@ fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu_1: f32) -> f32 {
     }
 }
 
-fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c: f32) -> f32 {
+fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
     var base: f32;
     var e: u32;
     var acc: f32 = 1f;
@@ -477,7 +595,7 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c: f32) -> f32 {
 
     switch kind_1 {
         case 1u: {
-            base = c;
+            base = c_1;
             e = u32(p0_1);
             loop {
                 let _e11 = i_3;
@@ -507,8 +625,8 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c: f32) -> f32 {
             return _e31;
         }
         case 2u: {
-            let x_7 = clamp(((c - p1_1) / (p0_1 - p1_1)), 0f, 1f);
-            return ((x_7 * x_7) * (3f - (2f * x_7)));
+            let x_10 = clamp(((c_1 - p1_1) / (p0_1 - p1_1)), 0f, 1f);
+            return ((x_10 * x_10) * (3f - (2f * x_10)));
         }
         default: {
             return 1f;
@@ -516,41 +634,43 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c: f32) -> f32 {
     }
 }
 
-fn airlight_integrand(s: AirlightScene, g_1: AirlightCanonical, sigma: f32, y: f32) -> f32 {
-    let y2_ = (y * y);
+fn airlight_integrand(s_1: AirlightScene, g_1: AirlightCanonical, sigma: f32, y_1: f32) -> f32 {
+    let y2_ = (y_1 * y_1);
     let inv = (1f / (1f + y2_));
     let om = (1f - y2_);
     let mu_2 = ((-(sigma) * om) * inv);
-    let c_2 = ((((sigma * g_1.d_el) * om) + ((2f * g_1.d_c) * y)) * inv);
-    let _e26 = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c_2);
-    let _e31 = airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu_2);
+    let c_3 = ((((sigma * g_1.d_el) * om) + ((2f * g_1.d_c) * y_1)) * inv);
+    let _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
+    let _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
     return (_e26 * _e31);
 }
 
-fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, y_c: f32, r: f32) -> array<f32, 4> {
+fn airlight_chebyshev(s_2: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, y_c: f32, r: f32) -> array<f32, 4> {
     var prev: f32;
     var cur: f32;
     var xi: array<f32, 4>;
     var values: array<f32, 4>;
-    var j: u32 = 0u;
-    var cheb: array<f32, 4>;
     var j_1: u32 = 0u;
+    var cheb: array<f32, 4>;
+    var j_2: u32 = 0u;
     var t_prev: f32;
     var t_cur: f32;
-    var k_2: u32;
+    var k_4: u32;
     var tk: f32;
     var scale_sum: f32 = 0f;
-    var k_3: u32 = 0u;
+    var k_5: u32 = 0u;
     var t_km1_: array<f32, 4>;
     var t_k: array<f32, 4>;
     var hat: array<f32, 4>;
-    var k_4: u32 = 1u;
+    var k_6: u32 = 1u;
     var t_next: array<f32, 4>;
     var i_4: u32;
     var shifted: f32;
+    var amplification: f32 = 1f;
+    var k_7: u32 = 0u;
     var a_3: array<f32, 4>;
     var rk: f32 = 1f;
-    var k_5: u32 = 0u;
+    var k_8: u32 = 0u;
     var local_2: bool;
 
     let theta = (AIRLIGHT_PI / (4f + 4f));
@@ -563,13 +683,13 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
     let _e17 = airlight_zero_terms();
     values = _e17;
     loop {
-        let _e21 = j;
+        let _e21 = j_1;
         if (_e21 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e24 = j;
+            let _e24 = j_1;
             let _e26 = cur;
             xi[_e24] = _e26;
             let _e28 = cur;
@@ -578,33 +698,33 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
             let _e32 = cur;
             prev = _e32;
             cur = next;
-            let _e33 = j;
-            let _e35 = j;
+            let _e33 = j_1;
+            let _e35 = j_1;
             let _e37 = xi[_e35];
-            let _e40 = airlight_integrand(s_1, g_2, sigma_1, (y_c + (r * _e37)));
+            let _e40 = airlight_integrand(s_2, g_2, sigma_1, (y_c + (r * _e37)));
             values[_e33] = _e40;
         }
         continuing {
-            let _e42 = j;
-            j = (_e42 + 1u);
+            let _e42 = j_1;
+            j_1 = (_e42 + 1u);
         }
     }
     let _e44 = airlight_zero_terms();
     cheb = _e44;
     loop {
-        let _e48 = j_1;
+        let _e48 = j_2;
         if (_e48 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             t_prev = 1f;
-            let _e53 = j_1;
+            let _e53 = j_2;
             let _e55 = xi[_e53];
             t_cur = _e55;
-            k_2 = 0u;
+            k_4 = 0u;
             loop {
-                let _e59 = k_2;
+                let _e59 = k_4;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
                     break;
@@ -612,21 +732,21 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
                 {
                     let _e62 = t_cur;
                     tk = _e62;
-                    let _e64 = k_2;
+                    let _e64 = k_4;
                     if (_e64 == 0u) {
                         tk = 1f;
                     }
-                    let _e68 = k_2;
+                    let _e68 = k_4;
                     let _e70 = cheb[_e68];
-                    let _e71 = j_1;
+                    let _e71 = j_2;
                     let _e73 = values[_e71];
                     let _e74 = tk;
                     cheb[_e68] = (_e70 + (_e73 * _e74));
-                    let _e77 = k_2;
+                    let _e77 = k_4;
                     if (_e77 >= 1u) {
-                        let _e80 = j_1;
+                        let _e80 = j_2;
                         let _e82 = xi[_e80];
-                        let _e83 = j_1;
+                        let _e83 = j_2;
                         let _e85 = xi[_e83];
                         let _e87 = t_cur;
                         let _e89 = t_prev;
@@ -637,40 +757,40 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
                     }
                 }
                 continuing {
-                    let _e93 = k_2;
-                    k_2 = (_e93 + 1u);
+                    let _e93 = k_4;
+                    k_4 = (_e93 + 1u);
                 }
             }
         }
         continuing {
-            let _e96 = j_1;
-            j_1 = (_e96 + 1u);
+            let _e96 = j_2;
+            j_2 = (_e96 + 1u);
         }
     }
     loop {
-        let _e102 = k_3;
+        let _e102 = k_5;
         if (_e102 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e105 = k_3;
+            let _e105 = k_5;
             let _e107 = cheb[_e105];
             cheb[_e105] = (_e107 * (2f / 4f));
-            let _e111 = k_3;
+            let _e111 = k_5;
             if (_e111 == 0u) {
-                let _e114 = k_3;
+                let _e114 = k_5;
                 let _e116 = cheb[_e114];
                 cheb[_e114] = (_e116 * 0.5f);
             }
             let _e119 = scale_sum;
-            let _e120 = k_3;
+            let _e120 = k_5;
             let _e122 = cheb[_e120];
             scale_sum = (_e119 + abs(_e122));
         }
         continuing {
-            let _e126 = k_3;
-            k_3 = (_e126 + 1u);
+            let _e126 = k_5;
+            k_5 = (_e126 + 1u);
         }
     }
     let _e128 = airlight_zero_terms();
@@ -684,7 +804,7 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
     let _e140 = cheb[0];
     hat[0] = _e140;
     loop {
-        let _e143 = k_4;
+        let _e143 = k_6;
         if (_e143 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -702,7 +822,7 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
                 {
                     let _e153 = i_4;
                     let _e155 = hat[_e153];
-                    let _e156 = k_4;
+                    let _e156 = k_6;
                     let _e158 = cheb[_e156];
                     let _e159 = i_4;
                     let _e161 = t_k[_e159];
@@ -732,67 +852,83 @@ fn airlight_chebyshev(s_1: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
             t_k = _e187;
         }
         continuing {
-            let _e189 = k_4;
-            k_4 = (_e189 + 1u);
+            let _e189 = k_6;
+            k_6 = (_e189 + 1u);
         }
     }
-    let _e198 = scale_sum;
-    let noise = ((((4f * 4f) * AIRLIGHT_FLT_EPS) * pow(2.4142137f, 4f)) * _e198);
-    let _e200 = airlight_zero_terms();
-    a_3 = _e200;
     loop {
-        let _e206 = k_5;
-        if (_e206 < AIRLIGHT_TERMS) {
+        let _e195 = k_7;
+        if (_e195 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e209 = k_5;
-            if (_e209 == 0u) {
-                let _e212 = k_5;
-                let _e214 = k_5;
-                let _e216 = hat[_e214];
-                a_3[_e212] = _e216;
+            let _e198 = amplification;
+            amplification = (_e198 * 2.4142137f);
+        }
+        continuing {
+            let _e202 = k_7;
+            k_7 = (_e202 + 1u);
+        }
+    }
+    let _e208 = amplification;
+    let _e210 = scale_sum;
+    let noise = ((((4f * 4f) * AIRLIGHT_FLT_EPS) * _e208) * _e210);
+    let _e212 = airlight_zero_terms();
+    a_3 = _e212;
+    loop {
+        let _e218 = k_8;
+        if (_e218 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e221 = k_8;
+            if (_e221 == 0u) {
+                let _e224 = k_8;
+                let _e226 = k_8;
+                let _e228 = hat[_e226];
+                a_3[_e224] = _e228;
             } else {
-                let _e217 = k_5;
-                let _e219 = hat[_e217];
-                if (abs(_e219) > noise) {
-                    let _e224 = rk;
-                    local_2 = (_e224 > 0f);
+                let _e229 = k_8;
+                let _e231 = hat[_e229];
+                if (abs(_e231) > noise) {
+                    let _e236 = rk;
+                    local_2 = (_e236 > 0f);
                 } else {
                     local_2 = false;
                 }
-                let _e228 = local_2;
-                if _e228 {
-                    let _e229 = k_5;
-                    let _e231 = hat[_e229];
-                    let _e232 = rk;
-                    let ak = (_e231 / _e232);
-                    let _e234 = airlight_is_finite(ak);
-                    if _e234 {
-                        let _e235 = k_5;
-                        a_3[_e235] = ak;
+                let _e240 = local_2;
+                if _e240 {
+                    let _e241 = k_8;
+                    let _e243 = hat[_e241];
+                    let _e244 = rk;
+                    let ak = (_e243 / _e244);
+                    let _e246 = airlight_is_finite(ak);
+                    if _e246 {
+                        let _e247 = k_8;
+                        a_3[_e247] = ak;
                     }
                 }
             }
-            let _e237 = rk;
-            rk = (_e237 * r);
+            let _e249 = rk;
+            rk = (_e249 * r);
         }
         continuing {
-            let _e240 = k_5;
-            k_5 = (_e240 + 1u);
+            let _e252 = k_8;
+            k_8 = (_e252 + 1u);
         }
     }
-    let _e242 = a_3;
-    return _e242;
+    let _e254 = a_3;
+    return _e254;
 }
 
 fn airlight_moments_gauss(half: AirlightHalf) -> array<f32, 4> {
     var m: array<f32, 4>;
-    var j_2: u32 = 0u;
+    var j_3: u32 = 0u;
     var dv: f32;
     var p: f32;
-    var k_6: u32;
+    var k_9: u32;
 
     let _e1 = airlight_zero_terms();
     m = _e1;
@@ -800,47 +936,47 @@ fn airlight_moments_gauss(half: AirlightHalf) -> array<f32, 4> {
     let yc = (half.y_lo + hw);
     let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(0.8611363f, 0.34785485f));
     loop {
-        let _e23 = j_2;
+        let _e23 = j_3;
         if (_e23 < 4u) {
         } else {
             break;
         }
         {
-            let _e26 = j_2;
+            let _e26 = j_3;
             let xi_1 = nodes[_e26].x;
-            let s_10 = (hw * xi_1);
-            let y_2 = (yc + s_10);
+            let s_12 = (hw * xi_1);
+            let y_3 = (yc + s_12);
             dv = (hw * (1f + xi_1));
             if half.second {
-                dv = ((hw * (1f - xi_1)) / (y_2 * half.y_hi));
+                dv = ((hw * (1f - xi_1)) / (y_3 * half.y_hi));
             }
-            let _e42 = j_2;
+            let _e42 = j_3;
             let _e48 = dv;
-            p = (((nodes[_e42].y * hw) * exp((-(half.big_h) * _e48))) / (1f + (y_2 * y_2)));
-            k_6 = 0u;
+            p = (((nodes[_e42].y * hw) * exp((-(half.big_h) * _e48))) / (1f + (y_3 * y_3)));
+            k_9 = 0u;
             loop {
-                let _e59 = k_6;
+                let _e59 = k_9;
                 if (_e59 < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    let _e62 = k_6;
+                    let _e62 = k_9;
                     let _e64 = m[_e62];
                     let _e65 = p;
                     m[_e62] = (_e64 + _e65);
                     let _e67 = p;
-                    p = (_e67 * s_10);
+                    p = (_e67 * s_12);
                 }
                 continuing {
-                    let _e70 = k_6;
-                    k_6 = (_e70 + 1u);
+                    let _e70 = k_9;
+                    k_9 = (_e70 + 1u);
                 }
             }
         }
         continuing {
-            let _e73 = j_2;
-            j_2 = (_e73 + 1u);
+            let _e73 = j_3;
+            j_3 = (_e73 + 1u);
         }
     }
     let _e75 = m;
@@ -852,11 +988,13 @@ fn airlight_n1_log_part(v_s: f32, v_e: f32, v_e_infinite: bool) -> f32 {
 
     if !(v_e_infinite) {
         let y_e = (1f / v_e);
-        at_e = log((1f + (y_e * y_e)));
+        let _e9 = airlight_log1p((y_e * y_e));
+        at_e = _e9;
     }
     let y_s = (1f / v_s);
-    let _e14 = at_e;
-    return (-0.5f * (_e14 - log((1f + (y_s * y_s)))));
+    let _e12 = at_e;
+    let _e14 = airlight_log1p((y_s * y_s));
+    return (-0.5f * (_e12 - _e14));
 }
 
 fn airlight_t_moments(half_1: AirlightHalf, count_1: u32, out_1: ptr<function, array<f32, 16>>) {
@@ -919,13 +1057,13 @@ fn airlight_t_moments(half_1: AirlightHalf, count_1: u32, out_1: ptr<function, a
 }
 
 fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
-    var t_2: array<f32, 16>;
-    var sum_2: f32 = 0f;
+    var t_3: array<f32, 16>;
+    var sum_3: f32 = 0f;
     var i_5: u32 = 0u;
 
     let _e1 = airlight_zero_scratch();
-    t_2 = _e1;
-    airlight_t_moments(half_2, 13u, (&t_2));
+    t_3 = _e1;
+    airlight_t_moments(half_2, 13u, (&t_3));
     loop {
         let _e8 = i_5;
         if (_e8 < 6u) {
@@ -934,14 +1072,14 @@ fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
         }
         {
             let _e12 = i_5;
-            let j_7 = (5u - _e12);
-            let tn = t_2[((3u + (2u * j_7)) - 1u)];
-            if ((j_7 % 2u) == 0u) {
-                let _e26 = sum_2;
-                sum_2 = (_e26 + tn);
+            let j_8 = (5u - _e12);
+            let tn = t_3[((3u + (2u * j_8)) - 1u)];
+            if ((j_8 % 2u) == 0u) {
+                let _e26 = sum_3;
+                sum_3 = (_e26 + tn);
             } else {
-                let _e28 = sum_2;
-                sum_2 = (_e28 - tn);
+                let _e28 = sum_3;
+                sum_3 = (_e28 - tn);
             }
         }
         continuing {
@@ -949,7 +1087,7 @@ fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
             i_5 = (_e31 + 1u);
         }
     }
-    let _e33 = sum_2;
+    let _e33 = sum_3;
     return _e33;
 }
 
@@ -1005,54 +1143,59 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     if near {
         if !(v_e_infinite_1) {
             let _e55 = v_e_1;
-            d_im = atan((half_3.dv / (1f + (v_s_1 * _e55))));
+            let _e60 = airlight_atan((half_3.dv / (1f + (v_s_1 * _e55))));
+            d_im = _e60;
             let _e62 = v_e_1;
-            d_re = (0.5f * log((1f + ((half_3.dv * (v_s_1 + _e62)) / (1f + (v_s_1 * v_s_1))))));
+            let _e69 = airlight_log1p(((half_3.dv * (v_s_1 + _e62)) / (1f + (v_s_1 * v_s_1))));
+            d_re = (0.5f * _e69);
         } else {
-            d_im = atan((1f / v_s_1));
+            let _e74 = airlight_atan((1f / v_s_1));
+            d_im = _e74;
         }
         if (big_h == 0f) {
             if !(half_3.second) {
-                let _e81 = d_re;
-                let _e82 = d_im;
-                return vec2<f32>(_e81, _e82);
+                let _e79 = d_re;
+                let _e80 = d_im;
+                return vec2<f32>(_e79, _e80);
             }
             if with_re {
-                let _e86 = v_e_1;
-                let _e87 = airlight_n1_log_part(v_s_1, _e86, v_e_infinite_1);
-                n1_ = _e87;
+                let _e84 = v_e_1;
+                let _e85 = airlight_n1_log_part(v_s_1, _e84, v_e_infinite_1);
+                n1_ = _e85;
             }
-            let _e88 = n1_;
-            let _e89 = d_im;
-            return vec2<f32>(_e88, _e89);
+            let _e86 = n1_;
+            let _e87 = d_im;
+            return vec2<f32>(_e86, _e87);
         }
         let z_s = vec2<f32>((big_h * v_s_1), -(big_h));
-        let _e94 = v_e_1;
-        let z_e = vec2<f32>((big_h * _e94), -(big_h));
+        let _e92 = v_e_1;
+        let z_e = vec2<f32>((big_h * _e92), -(big_h));
         let hdv = (big_h * half_3.dv);
-        let _e100 = airlight_ein_divided_difference(z_s, z_e);
-        let rot = vec2<f32>(cos(big_h), -(sin(big_h)));
+        let _e98 = airlight_ein_divided_difference(z_s, z_e);
+        let _e99 = airlight_cos_sin(big_h);
+        let rot = vec2<f32>(_e99.x, -(_e99.y));
         let scale = exp((big_h * v_s_1));
-        let _e107 = d_re;
-        let _e108 = d_im;
-        let _e112 = airlight_cmul(rot, (vec2<f32>(_e107, _e108) - (_e100 * hdv)));
-        let c_3 = (_e112 * scale);
+        let _e106 = d_re;
+        let _e107 = d_im;
+        let _e111 = airlight_cmul(rot, (vec2<f32>(_e106, _e107) - (_e98 * hdv)));
+        let c_4 = (_e111 * scale);
         if !(half_3.second) {
-            return c_3;
+            return c_4;
         }
         if with_re {
-            let sh = sin((big_h * 0.5f));
+            let _e119 = airlight_cos_sin((big_h * 0.5f));
+            let sh = _e119.y;
             let _e124 = v_e_1;
             let _e128 = airlight_ein_divided_difference(vec2<f32>((big_h * v_s_1), 0f), vec2<f32>((big_h * _e124), 0f));
             let _e129 = v_e_1;
             let _e131 = airlight_n1_log_part(v_s_1, _e129, false);
             let _e135 = d_re;
             let _e139 = d_im;
-            let _e143 = airlight_cmul(rot, _e100);
-            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (sin(big_h) * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
+            let _e143 = airlight_cmul(rot, _e98);
+            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (_e99.y * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
         }
         let _e149 = n1_1;
-        return vec2<f32>(_e149, c_3.y);
+        return vec2<f32>(_e149, c_4.y);
     }
     let _e155 = airlight_e1_scaled(vec2<f32>((big_h * v_s_1), -(big_h)));
     if !(v_e_infinite_1) {
@@ -1063,9 +1206,9 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     }
     let _e172 = s_e_1;
     let _e173 = decay_1;
-    let c_4 = (_e155 - (_e172 * _e173));
+    let c_5 = (_e155 - (_e172 * _e173));
     if !(half_3.second) {
-        return c_4;
+        return c_5;
     }
     if with_re {
         if (half_3.y_hi <= 0.25f) {
@@ -1091,22 +1234,22 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
         }
     }
     let _e209 = n1_2;
-    return vec2<f32>(_e209, c_4.y);
+    return vec2<f32>(_e209, c_5.y);
 }
 
-fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
+fn airlight_phi_moments(x_6: f32) -> array<f32, 4> {
     var out_2: array<f32, 4>;
     var i_6: u32 = 0u;
     var term_1: f32;
-    var sum_3: f32;
-    var j_3: u32;
+    var sum_4: f32;
+    var j_4: u32;
     var prev_1: f32;
     var i_7: u32 = 0u;
 
     let _e1 = airlight_zero_terms();
     out_2 = _e1;
-    let ex = exp(-(x_3));
-    if (x_3 <= 2.6f) {
+    let ex = exp(-(x_6));
+    if (x_6 <= 2.6f) {
         loop {
             let _e9 = i_6;
             if (_e9 < AIRLIGHT_TERMS) {
@@ -1117,10 +1260,10 @@ fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
                 let _e12 = i_6;
                 term_1 = (1f / f32((_e12 + 1u)));
                 let _e19 = term_1;
-                sum_3 = _e19;
-                j_3 = 1u;
+                sum_4 = _e19;
+                j_4 = 1u;
                 loop {
-                    let _e23 = j_3;
+                    let _e23 = j_4;
                     if (_e23 <= 14u) {
                     } else {
                         break;
@@ -1128,19 +1271,19 @@ fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
                     {
                         let _e26 = term_1;
                         let _e27 = i_6;
-                        let _e28 = j_3;
-                        term_1 = (_e26 * (x_3 / f32(((_e27 + _e28) + 1u))));
-                        let _e35 = sum_3;
+                        let _e28 = j_4;
+                        term_1 = (_e26 * (x_6 / f32(((_e27 + _e28) + 1u))));
+                        let _e35 = sum_4;
                         let _e36 = term_1;
-                        sum_3 = (_e35 + _e36);
+                        sum_4 = (_e35 + _e36);
                     }
                     continuing {
-                        let _e39 = j_3;
-                        j_3 = (_e39 + 1u);
+                        let _e39 = j_4;
+                        j_4 = (_e39 + 1u);
                     }
                 }
                 let _e41 = i_6;
-                let _e43 = sum_3;
+                let _e43 = sum_4;
                 out_2[_e41] = (ex * _e43);
             }
             continuing {
@@ -1149,7 +1292,7 @@ fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
             }
         }
     } else {
-        prev_1 = ((1f - ex) / x_3);
+        prev_1 = ((1f - ex) / x_6);
         loop {
             let _e54 = i_7;
             if (_e54 < AIRLIGHT_TERMS) {
@@ -1161,7 +1304,7 @@ fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
                 if (_e57 > 0u) {
                     let _e60 = i_7;
                     let _e62 = prev_1;
-                    prev_1 = (((f32(_e60) * _e62) - ex) / x_3);
+                    prev_1 = (((f32(_e60) * _e62) - ex) / x_6);
                 }
                 let _e66 = i_7;
                 let _e68 = prev_1;
@@ -1177,10 +1320,10 @@ fn airlight_phi_moments(x_3: f32) -> array<f32, 4> {
     return _e72;
 }
 
-fn airlight_binomial_shift(x_4: array<f32, 4>, c_1: f32) -> array<f32, 4> {
+fn airlight_binomial_shift(x_7: array<f32, 4>, c_2: f32) -> array<f32, 4> {
     var out_3: array<f32, 4>;
-    var j_4: u32 = 0u;
-    var sum_4: f32;
+    var j_5: u32 = 0u;
+    var sum_5: f32;
     var binom: f32;
     var cp: f32;
     var ii: u32;
@@ -1188,49 +1331,49 @@ fn airlight_binomial_shift(x_4: array<f32, 4>, c_1: f32) -> array<f32, 4> {
     let _e2 = airlight_zero_terms();
     out_3 = _e2;
     loop {
-        let _e6 = j_4;
+        let _e6 = j_5;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            sum_4 = 0f;
+            sum_5 = 0f;
             binom = 1f;
             cp = 1f;
             ii = 0u;
             loop {
                 let _e17 = ii;
-                let _e18 = j_4;
+                let _e18 = j_5;
                 if (_e17 <= _e18) {
                 } else {
                     break;
                 }
                 {
-                    let _e20 = j_4;
+                    let _e20 = j_5;
                     let _e21 = ii;
                     let i_14 = (_e20 - _e21);
-                    let _e23 = sum_4;
+                    let _e23 = sum_5;
                     let _e24 = binom;
                     let _e27 = cp;
-                    sum_4 = (_e23 + ((_e24 * x_4[i_14]) * _e27));
+                    sum_5 = (_e23 + ((_e24 * x_7[i_14]) * _e27));
                     let _e30 = binom;
-                    let _e33 = j_4;
+                    let _e33 = j_5;
                     binom = ((_e30 * f32(i_14)) / f32(((_e33 - i_14) + 1u)));
                     let _e39 = cp;
-                    cp = (_e39 * c_1);
+                    cp = (_e39 * c_2);
                 }
                 continuing {
                     let _e42 = ii;
                     ii = (_e42 + 1u);
                 }
             }
-            let _e44 = j_4;
-            let _e46 = sum_4;
+            let _e44 = j_5;
+            let _e46 = sum_5;
             out_3[_e44] = _e46;
         }
         continuing {
-            let _e48 = j_4;
-            j_4 = (_e48 + 1u);
+            let _e48 = j_5;
+            j_5 = (_e48 + 1u);
         }
     }
     let _e50 = out_3;
@@ -1244,14 +1387,14 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
     var local_10: bool;
     var local_11: bool;
     var r_1: array<f32, 4>;
-    var t_3: array<f32, 16>;
-    var x_5: array<f32, 4>;
+    var t_4: array<f32, 16>;
+    var x_8: array<f32, 4>;
     var i_8: u32 = 0u;
     var tau: array<f32, 4>;
     var p_1: f32;
     var i_9: u32 = 0u;
     var q: vec2<f32>;
-    var k_7: u32 = 1u;
+    var k_10: u32 = 1u;
 
     let _e2 = airlight_zero_terms();
     m_1 = _e2;
@@ -1295,10 +1438,10 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
         r_1 = _e56;
         if half_4.second {
             let _e59 = airlight_zero_scratch();
-            t_3 = _e59;
-            airlight_t_moments(half_4, 5u, (&t_3));
+            t_4 = _e59;
+            airlight_t_moments(half_4, 5u, (&t_4));
             let _e62 = airlight_zero_terms();
-            x_5 = _e62;
+            x_8 = _e62;
             loop {
                 let _e66 = i_8;
                 if (_e66 < AIRLIGHT_TERMS) {
@@ -1308,15 +1451,15 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
                 {
                     let _e69 = i_8;
                     let _e71 = i_8;
-                    let _e75 = t_3[(_e71 + 1u)];
-                    x_5[_e69] = _e75;
+                    let _e75 = t_4[(_e71 + 1u)];
+                    x_8[_e69] = _e75;
                 }
                 continuing {
                     let _e77 = i_8;
                     i_8 = (_e77 + 1u);
                 }
             }
-            let _e79 = x_5;
+            let _e79 = x_8;
             let _e81 = airlight_binomial_shift(_e79, -(yc_1));
             r_1 = _e81;
         } else {
@@ -1351,24 +1494,24 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
         let b_5 = vec2<f32>(yc_1, -1f);
         q = _e51;
         loop {
-            let _e115 = k_7;
+            let _e115 = k_10;
             if (_e115 < AIRLIGHT_TERMS) {
             } else {
                 break;
             }
             {
-                let _e118 = k_7;
+                let _e118 = k_10;
                 let _e122 = r_1[(_e118 - 1u)];
                 let _e125 = q;
                 let _e126 = airlight_cmul(b_5, _e125);
                 q = (vec2<f32>(_e122, 0f) - _e126);
-                let _e128 = k_7;
+                let _e128 = k_10;
                 let _e131 = q.y;
                 m_1[_e128] = _e131;
             }
             continuing {
-                let _e133 = k_7;
-                k_7 = (_e133 + 1u);
+                let _e133 = k_10;
+                k_10 = (_e133 + 1u);
             }
         }
     }
@@ -1387,34 +1530,34 @@ fn airlight_hypot_one(a_5: f32) -> f32 {
     return abs(a_5);
 }
 
-fn airlight_piece(s_2: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
-    var j_5: f32 = 0f;
-    var k_8: u32 = 0u;
+fn airlight_piece(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
+    var j_6: f32 = 0f;
+    var k_11: u32 = 0u;
 
     let _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
-    let _e14 = airlight_chebyshev(s_2, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5f)), (half_5.dy * 0.5f));
+    let _e14 = airlight_chebyshev(s_3, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5f)), (half_5.dy * 0.5f));
     loop {
-        let _e19 = k_8;
+        let _e19 = k_11;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = j_5;
-            let _e23 = k_8;
-            let _e25 = k_8;
-            j_5 = (_e22 + (_e14[_e23] * _e5[_e25]));
+            let _e22 = j_6;
+            let _e23 = k_11;
+            let _e25 = k_11;
+            j_6 = (_e22 + (_e14[_e23] * _e5[_e25]));
         }
         continuing {
-            let _e30 = k_8;
-            k_8 = (_e30 + 1u);
+            let _e30 = k_11;
+            k_11 = (_e30 + 1u);
         }
     }
-    let _e32 = j_5;
+    let _e32 = j_6;
     return _e32;
 }
 
-fn airlight_subdivided(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
+fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
     var parts: f32 = 1f;
     var local_12: bool;
     var total: f32 = 0f;
@@ -1422,79 +1565,91 @@ fn airlight_subdivided(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
     var hi: f32;
     var dv_1: f32;
     var offset: f32;
+    var inf: bool;
 
-    if !(piece.dv_infinite) {
-        local_12 = (piece.dy <= 0.25f);
+    if (piece.dy <= 0.25f) {
+        local_12 = (piece.big_h > 0f);
     } else {
         local_12 = false;
     }
-    let _e14 = local_12;
-    if _e14 {
-        parts = clamp(ceil((piece.big_h * piece.dv)), 1f, 8f);
+    let _e15 = local_12;
+    if _e15 {
+        if piece.dv_infinite {
+            parts = 8f;
+        } else {
+            parts = clamp(ceil((piece.big_h * piece.dv)), 1f, 8f);
+        }
     }
-    let _e22 = parts;
-    if (_e22 <= 1f) {
-        let _e25 = airlight_piece(s_3, g_4, sigma_3, piece);
-        return _e25;
+    let _e25 = parts;
+    if (_e25 <= 1f) {
+        let _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        return _e28;
     }
-    let _e26 = parts;
-    let n_4 = u32(_e26);
     let _e29 = parts;
-    let step_ = (piece.dy / _e29);
+    let n_5 = u32(_e29);
+    let _e32 = parts;
+    let step_ = (piece.dy / _e32);
     loop {
-        let _e35 = i_10;
-        if (_e35 < 8u) {
+        let _e38 = i_10;
+        if (_e38 < 8u) {
         } else {
             break;
         }
         {
-            let _e38 = i_10;
-            if (_e38 < n_4) {
-                let _e41 = i_10;
-                let lo_1 = (piece.y_lo + (step_ * f32(_e41)));
+            let _e41 = i_10;
+            if (_e41 < n_5) {
+                let _e44 = i_10;
+                let lo_1 = (piece.y_lo + (step_ * f32(_e44)));
                 hi = (lo_1 + step_);
-                let _e47 = i_10;
-                if ((_e47 + 1u) == n_4) {
+                let _e50 = i_10;
+                if ((_e50 + 1u) == n_5) {
                     hi = piece.y_hi;
                 }
-                let _e52 = hi;
-                let dy_1 = (_e52 - lo_1);
+                let _e55 = hi;
+                let dy_1 = (_e55 - lo_1);
                 dv_1 = dy_1;
                 offset = (lo_1 - piece.y_lo);
+                inf = false;
                 if piece.second {
-                    let _e59 = hi;
-                    dv_1 = (dy_1 / (lo_1 * _e59));
-                    let _e63 = hi;
-                    let _e65 = hi;
-                    offset = ((piece.y_hi - _e63) / (_e65 * piece.y_hi));
+                    if (lo_1 == 0f) {
+                        inf = true;
+                        dv_1 = 0f;
+                    } else {
+                        let _e68 = hi;
+                        dv_1 = (dy_1 / (lo_1 * _e68));
+                    }
+                    let _e72 = hi;
+                    let _e74 = hi;
+                    offset = ((piece.y_hi - _e72) / (_e74 * piece.y_hi));
                 }
-                let _e71 = hi;
-                let _e72 = dv_1;
-                let part = AirlightHalf(piece.second, piece.big_h, lo_1, _e71, dy_1, _e72, false);
-                let _e75 = total;
-                let _e78 = offset;
-                let _e81 = airlight_piece(s_3, g_4, sigma_3, part);
-                total = (_e75 + (exp((-(piece.big_h) * _e78)) * _e81));
+                let _e80 = hi;
+                let _e81 = dv_1;
+                let _e82 = inf;
+                let part = AirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
+                let _e84 = total;
+                let _e87 = offset;
+                let _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
             }
         }
         continuing {
-            let _e85 = i_10;
-            i_10 = (_e85 + 1u);
+            let _e94 = i_10;
+            i_10 = (_e94 + 1u);
         }
     }
-    let _e87 = total;
-    return _e87;
+    let _e96 = total;
+    return _e96;
 }
 
-fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_9: f32) -> vec2<f32> {
+fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32> {
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_1: f32 = -1f;
 
-    let a_8 = (k_9 + (sigma_4 * d_el));
+    let a_8 = (k_12 + (sigma_4 * d_el));
     let b_6 = -((d_c + d_c));
-    let c_5 = (k_9 - (sigma_4 * d_el));
-    let disc_1 = ((b_6 * b_6) - ((4f * a_8) * c_5));
+    let c_6 = (k_12 - (sigma_4 * d_el));
+    let disc_1 = ((b_6 * b_6) - ((4f * a_8) * c_6));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -1504,7 +1659,7 @@ fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_9: f32) -> vec2<f32> 
     let _e26 = sb;
     let q_1 = (-0.5f * (b_6 + (_e26 * sqrt(disc_1))));
     if (q_1 != 0f) {
-        r1_ = (c_5 / q_1);
+        r1_ = (c_6 / q_1);
     }
     if (a_8 != 0f) {
         r2_1 = (q_1 / a_8);
@@ -1514,12 +1669,12 @@ fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_9: f32) -> vec2<f32> 
     return vec2<f32>(_e42, _e43);
 }
 
-fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
+fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var i_11: u32 = 0u;
     var local_13: bool;
     var i_12: u32 = 0u;
-    var j_6: u32;
+    var j_7: u32;
     var total_1: f32 = 0f;
     var lo: f32;
     var i_13: u32 = 0u;
@@ -1527,17 +1682,17 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
     var local_14: bool;
     var dv_2: f32;
     var offset_1: f32;
-    var inf: bool;
+    var inf_1: bool;
     var local_15: bool;
 
     if isotropic {
         let _e6 = airlight_moments(half_6, 1u);
-        let _e12 = airlight_integrand(s_4, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5f)));
+        let _e12 = airlight_integrand(s_5, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5f)));
         return (_e12 * _e6[0]);
     }
-    if (s_4.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        let _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_a);
-        let _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_4.light_param_b);
+    if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        let _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_a);
+        let _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_b);
         cuts = array<f32, 4>(_e27.x, _e27.y, _e31.x, _e31.y);
         loop {
             let _e39 = i_11;
@@ -1573,33 +1728,33 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
                 break;
             }
             {
-                j_6 = 0u;
+                j_7 = 0u;
                 loop {
-                    let _e70 = j_6;
+                    let _e70 = j_7;
                     let _e72 = i_12;
                     if (_e70 < (3u - _e72)) {
                     } else {
                         break;
                     }
                     {
-                        let _e75 = j_6;
+                        let _e75 = j_7;
                         let _e77 = cuts[_e75];
-                        let _e78 = j_6;
+                        let _e78 = j_7;
                         let _e82 = cuts[(_e78 + 1u)];
                         if (_e77 > _e82) {
-                            let _e84 = j_6;
-                            let t_6 = cuts[_e84];
-                            let _e87 = j_6;
-                            let _e89 = j_6;
+                            let _e84 = j_7;
+                            let t_7 = cuts[_e84];
+                            let _e87 = j_7;
+                            let _e89 = j_7;
                             let _e93 = cuts[(_e89 + 1u)];
                             cuts[_e87] = _e93;
-                            let _e94 = j_6;
-                            cuts[(_e94 + 1u)] = t_6;
+                            let _e94 = j_7;
+                            cuts[(_e94 + 1u)] = t_7;
                         }
                     }
                     continuing {
-                        let _e99 = j_6;
-                        j_6 = (_e99 + 1u);
+                        let _e99 = j_7;
+                        j_7 = (_e99 + 1u);
                     }
                 }
             }
@@ -1611,7 +1766,7 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
     }
     let _e105 = cuts[0];
     if (_e105 >= 2f) {
-        let _e108 = airlight_piece(s_4, g_5, sigma_5, half_6);
+        let _e108 = airlight_piece(s_5, g_5, sigma_5, half_6);
         return _e108;
     }
     lo = half_6.y_lo;
@@ -1646,11 +1801,11 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
                 dv_2 = dy_2;
                 let _e142 = lo;
                 offset_1 = (_e142 - half_6.y_lo);
-                inf = false;
+                inf_1 = false;
                 if half_6.second {
                     let _e149 = lo;
                     if (_e149 == 0f) {
-                        inf = true;
+                        inf_1 = true;
                         dv_2 = 0f;
                     } else {
                         let _e154 = lo;
@@ -1664,11 +1819,11 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
                 let _e167 = lo;
                 let _e168 = hi_1;
                 let _e169 = dv_2;
-                let _e170 = inf;
+                let _e170 = inf_1;
                 let piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e167, _e168, dy_2, _e169, _e170);
                 let _e172 = total_1;
                 let _e175 = offset_1;
-                let _e178 = airlight_subdivided(s_4, g_5, sigma_5, piece_1);
+                let _e178 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
                 total_1 = (_e172 + (exp((-(half_6.big_h) * _e175)) * _e178));
                 let _e181 = hi_1;
                 lo = _e181;
@@ -1695,13 +1850,13 @@ fn airlight_half(s_4: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
     return _e197;
 }
 
-fn airlight_on_line(s_5: AirlightScene, g_6: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
     var local_16: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    let k_10 = (s_5.sigma_s * s_5.intensity);
+    let k_13 = (s_6.sigma_s * s_6.intensity);
     if !(g_6.t_hi_infinite) {
         local_16 = (g_6.x_h > g_6.t_hi);
     } else {
@@ -1709,42 +1864,42 @@ fn airlight_on_line(s_5: AirlightScene, g_6: AirlightCanonical) -> f32 {
     }
     let _e13 = local_16;
     if _e13 {
-        let _e19 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, -(g_6.d_el));
-        let _e25 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, 1f);
+        let _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        let _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
         let f = (_e19 * _e25);
         let r0_ = (g_6.x_h - g_6.t_lo);
         let r1_1 = (g_6.x_h - g_6.t_hi);
-        return (((k_10 * f) * exp((-(s_5.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
+        return (((k_13 * f) * exp((-(s_6.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
     }
-    let _e49 = airlight_light(s_5.light_kind, s_5.light_param_a, s_5.light_param_b, g_6.d_el);
-    let _e55 = airlight_phase(s_5.phase_kind, s_5.phase_param_a, s_5.phase_param_b, s_5.phase_param_c, -1f);
+    let _e49 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    let _e55 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1f);
     let f_1 = (_e49 * _e55);
     let s0_ = (g_6.t_lo - g_6.x_h);
     let s1_ = (g_6.t_hi - g_6.x_h);
-    if (s_5.sigma_t == 0f) {
+    if (s_6.sigma_t == 0f) {
         span = (1f / s0_);
         if !(g_6.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        return ((k_10 * f_1) * _e75);
+        return ((k_13 * f_1) * _e75);
     }
-    let two_st = (s_5.sigma_t + s_5.sigma_t);
+    let two_st = (s_6.sigma_t + s_6.sigma_t);
     let _e80 = airlight_zero_scratch();
     e2_ = _e80;
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
     let _e89 = e2_[1];
-    let head = ((exp((-(s_5.sigma_t) * s0_)) * _e89) / s0_);
+    let head = ((exp((-(s_6.sigma_t) * s0_)) * _e89) / s0_);
     if !(g_6.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
         let _e107 = e2_[1];
-        tail_1 = ((exp(((-(s_5.sigma_t) * (s1_ - s0_)) - (s_5.sigma_t * s1_))) * _e107) / s1_);
+        tail_1 = ((exp(((-(s_6.sigma_t) * (s1_ - s0_)) - (s_6.sigma_t * s1_))) * _e107) / s1_);
     }
     let _e111 = tail_1;
-    return ((k_10 * f_1) * (head - _e111));
+    return ((k_13 * f_1) * (head - _e111));
 }
 
-fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> AirlightResult {
     var local_17: bool;
     var local_18: bool;
     var local_19: bool;
@@ -1776,7 +1931,7 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
     }
     let _e10 = local_17;
     if !(!(_e10)) {
-        local_18 = ((s_6.sigma_s * s_6.intensity) == 0f);
+        local_18 = ((s_7.sigma_s * s_7.intensity) == 0f);
     } else {
         local_18 = true;
     }
@@ -1813,16 +1968,16 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
     }
     let _e55 = local_21;
     if _e55 {
-        let _e56 = airlight_on_line(s_6, g_7);
+        let _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_1 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_1 = (s_6.sigma_t * h_1);
-    if !((s_6.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_6.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_23 = (s_6.light_param_a == 0f);
+    let big_h_1 = (s_7.sigma_t * h_1);
+    if !((s_7.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_23 = (s_7.light_param_a == 0f);
         } else {
             local_23 = false;
         }
@@ -1833,15 +1988,15 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
     }
     let _e85 = local_22;
     if _e85 {
-        if !((s_6.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_6.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_26 = (s_6.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_26 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_26 = true;
             }
             let _e104 = local_26;
             if _e104 {
-                local_27 = (s_6.phase_param_a == 0f);
+                local_27 = (s_7.phase_param_a == 0f);
             } else {
                 local_27 = false;
             }
@@ -1856,7 +2011,7 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
         local_24 = false;
     }
     let isotropic_1 = local_24;
-    let prefactor = (((2f * s_6.sigma_s) * s_6.intensity) / h_1);
+    let prefactor = (((2f * s_7.sigma_s) * s_7.intensity) / h_1);
     if (t0_ < x_h) {
         let a_s = ((x_h - t0_) / h_1);
         t_end = x_h;
@@ -1878,7 +2033,7 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
         let _e142 = t_end;
         let dy_3 = (((((_e142 - t0_) / h_1) * (1f + ((a_s + a_e) / (_e138 + _e139)))) * _e140) * _e141);
         let half_7 = AirlightHalf(false, big_h_1, _e140, _e141, dy_3, dy_3, false);
-        let _e157 = airlight_half(s_6, g_7, -1f, half_7, isotropic_1);
+        let _e157 = airlight_half(s_7, g_7, -1f, half_7, isotropic_1);
         let _e158 = total_2;
         total_2 = (_e158 + ((prefactor * exp((-(big_h_1) * _e138))) * _e157));
     }
@@ -1916,9 +2071,9 @@ fn airlight_in_scatter_canonical(s_6: AirlightScene, g_7: AirlightCanonical) -> 
         let _e212 = dv_3;
         let _e213 = infinite;
         let half_8 = AirlightHalf(true, big_h_1, _e210, _e176, _e211, _e212, _e213);
-        let _e216 = airlight_half(s_6, g_7, 1f, half_8, isotropic_1);
+        let _e216 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
         let _e217 = total_2;
-        total_2 = (_e217 + (((exp((-(s_6.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
+        total_2 = (_e217 + (((exp((-(s_7.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
     }
     let _e230 = total_2;
     return AirlightResult(max(_e230, 0f), AIRLIGHT_STATUS_OK);
@@ -1954,7 +2109,7 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
     return (m_4 * length((v_1 / vec3(m_4))));
 }
 
-fn airlight_valid(s_7: AirlightScene) -> bool {
+fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_33: bool;
     var local_34: bool;
     var local_35: bool;
@@ -1984,171 +2139,171 @@ fn airlight_valid(s_7: AirlightScene) -> bool {
     var local_58: bool;
     var local_59: bool;
 
-    let _e2 = airlight_vec_finite(s_7.origin);
+    let _e2 = airlight_vec_finite(s_8.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_7.dir);
+        let _e6 = airlight_vec_finite(s_8.dir);
         local_33 = _e6;
     } else {
         local_33 = false;
     }
     let _e8 = local_33;
     if _e8 {
-        let _e12 = airlight_safe_length(s_7.dir);
+        let _e12 = airlight_safe_length(s_8.dir);
         local_34 = (_e12 > 0f);
     } else {
         local_34 = false;
     }
     let _e16 = local_34;
     if _e16 {
-        let _e20 = airlight_is_finite(s_7.t_min);
+        let _e20 = airlight_is_finite(s_8.t_min);
         local_35 = _e20;
     } else {
         local_35 = false;
     }
     let _e22 = local_35;
     if _e22 {
-        let _e26 = airlight_vec_finite(s_7.light_position);
+        let _e26 = airlight_vec_finite(s_8.light_position);
         local_36 = _e26;
     } else {
         local_36 = false;
     }
     let _e28 = local_36;
     if _e28 {
-        let _e32 = airlight_is_finite(s_7.intensity);
+        let _e32 = airlight_is_finite(s_8.intensity);
         local_37 = _e32;
     } else {
         local_37 = false;
     }
     let _e34 = local_37;
     if _e34 {
-        local_38 = (s_7.intensity >= 0f);
+        local_38 = (s_8.intensity >= 0f);
     } else {
         local_38 = false;
     }
     let _e41 = local_38;
     if _e41 {
-        let _e45 = airlight_is_finite(s_7.sigma_s);
+        let _e45 = airlight_is_finite(s_8.sigma_s);
         local_39 = _e45;
     } else {
         local_39 = false;
     }
     let _e47 = local_39;
     if _e47 {
-        local_40 = (s_7.sigma_s >= 0f);
+        local_40 = (s_8.sigma_s >= 0f);
     } else {
         local_40 = false;
     }
     let _e54 = local_40;
     if _e54 {
-        let _e58 = airlight_is_finite(s_7.sigma_t);
+        let _e58 = airlight_is_finite(s_8.sigma_t);
         local_41 = _e58;
     } else {
         local_41 = false;
     }
     let _e60 = local_41;
     if _e60 {
-        local_42 = (s_7.sigma_t >= 0f);
+        local_42 = (s_8.sigma_t >= 0f);
     } else {
         local_42 = false;
     }
     let _e67 = local_42;
     ok = _e67;
-    if ((s_7.flags & 1u) == 0u) {
+    if ((s_8.flags & 1u) == 0u) {
         let _e74 = ok;
         if _e74 {
-            let _e78 = airlight_is_finite(s_7.t_max);
+            let _e78 = airlight_is_finite(s_8.t_max);
             local_43 = _e78;
         } else {
             local_43 = false;
         }
         let _e80 = local_43;
         if _e80 {
-            local_44 = (s_7.t_min <= s_7.t_max);
+            local_44 = (s_8.t_min <= s_8.t_max);
         } else {
             local_44 = false;
         }
         let _e87 = local_44;
         ok = _e87;
     }
-    if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e91 = ok;
         if _e91 {
-            let _e95 = airlight_vec_finite(s_7.light_axis);
+            let _e95 = airlight_vec_finite(s_8.light_axis);
             local_45 = _e95;
         } else {
             local_45 = false;
         }
         let _e97 = local_45;
         if _e97 {
-            let _e101 = airlight_safe_length(s_7.light_axis);
+            let _e101 = airlight_safe_length(s_8.light_axis);
             local_46 = (_e101 > 0f);
         } else {
             local_46 = false;
         }
         let _e105 = local_46;
         if _e105 {
-            local_47 = (s_7.light_param_a >= 0f);
+            local_47 = (s_8.light_param_a >= 0f);
         } else {
             local_47 = false;
         }
         let _e112 = local_47;
         if _e112 {
-            local_48 = (s_7.light_param_a <= 1024f);
+            local_48 = (s_8.light_param_a <= 1024f);
         } else {
             local_48 = false;
         }
         let _e119 = local_48;
         if _e119 {
-            local_49 = (fract((s_7.light_param_a * 0.5f)) == 0f);
+            local_49 = (fract((s_8.light_param_a * 0.5f)) == 0f);
         } else {
             local_49 = false;
         }
         let _e129 = local_49;
         ok = _e129;
     } else {
-        if (s_7.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e133 = ok;
             if _e133 {
-                let _e137 = airlight_vec_finite(s_7.light_axis);
+                let _e137 = airlight_vec_finite(s_8.light_axis);
                 local_50 = _e137;
             } else {
                 local_50 = false;
             }
             let _e139 = local_50;
             if _e139 {
-                let _e143 = airlight_safe_length(s_7.light_axis);
+                let _e143 = airlight_safe_length(s_8.light_axis);
                 local_51 = (_e143 > 0f);
             } else {
                 local_51 = false;
             }
             let _e147 = local_51;
             if _e147 {
-                local_52 = (s_7.light_param_b < s_7.light_param_a);
+                local_52 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_52 = false;
             }
             let _e154 = local_52;
             if _e154 {
-                local_53 = (s_7.light_param_b >= -1f);
+                local_53 = (s_8.light_param_b >= -1f);
             } else {
                 local_53 = false;
             }
             let _e161 = local_53;
             if _e161 {
-                local_54 = (s_7.light_param_a <= 1f);
+                local_54 = (s_8.light_param_a <= 1f);
             } else {
                 local_54 = false;
             }
             let _e168 = local_54;
             ok = _e168;
         } else {
-            if (s_7.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_7.phase_param_a) < 1f);
-    switch s_7.phase_kind {
+    let g_ok = (abs(s_8.phase_param_a) < 1f);
+    switch s_8.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -2170,19 +2325,19 @@ fn airlight_valid(s_7: AirlightScene) -> bool {
             }
             let _e187 = local_56;
             if _e187 {
-                local_57 = (abs(s_7.phase_param_b) < 1f);
+                local_57 = (abs(s_8.phase_param_b) < 1f);
             } else {
                 local_57 = false;
             }
             let _e195 = local_57;
             if _e195 {
-                local_58 = (s_7.phase_param_c >= 0f);
+                local_58 = (s_8.phase_param_c >= 0f);
             } else {
                 local_58 = false;
             }
             let _e202 = local_58;
             if _e202 {
-                local_59 = (s_7.phase_param_c <= 1f);
+                local_59 = (s_8.phase_param_c <= 1f);
             } else {
                 local_59 = false;
             }
@@ -2197,17 +2352,17 @@ fn airlight_valid(s_7: AirlightScene) -> bool {
     return _e211;
 }
 
-fn airlight_canonical(s_8: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_9: AirlightScene) -> AirlightCanonical {
     var a_6: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e3 = airlight_safe_length(s_8.dir);
-    let d_1 = (s_8.dir / vec3(_e3));
-    if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e16 = airlight_safe_length(s_8.light_axis);
-        a_6 = (s_8.light_axis / vec3(_e16));
+    let _e3 = airlight_safe_length(s_9.dir);
+    let d_1 = (s_9.dir / vec3(_e3));
+    if (s_9.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e16 = airlight_safe_length(s_9.light_axis);
+        a_6 = (s_9.light_axis / vec3(_e16));
     }
-    let to_light = (s_8.light_position - s_8.origin);
+    let to_light = (s_9.light_position - s_9.origin);
     let x_h_1 = dot(to_light, d_1);
     let perp = ((x_h_1 * d_1) - to_light);
     let _e25 = airlight_safe_length(perp);
@@ -2215,19 +2370,19 @@ fn airlight_canonical(s_8: AirlightScene) -> AirlightCanonical {
         let _e30 = a_6;
         d_c_1 = (dot(perp, _e30) / _e25);
     }
-    let infinite_1 = ((s_8.flags & 1u) != 0u);
+    let infinite_1 = ((s_9.flags & 1u) != 0u);
     let _e38 = a_6;
     let _e40 = d_c_1;
-    return AirlightCanonical(_e25, x_h_1, dot(d_1, _e38), _e40, s_8.t_min, select(s_8.t_max, 0f, infinite_1), infinite_1);
+    return AirlightCanonical(_e25, x_h_1, dot(d_1, _e38), _e40, s_9.t_min, select(s_9.t_max, 0f, infinite_1), infinite_1);
 }
 
-fn airlight_in_scatter(s_9: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_valid(s_9);
+fn airlight_in_scatter(s_10: AirlightScene) -> AirlightResult {
+    let _e1 = airlight_valid(s_10);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_canonical(s_9);
-    let _e7 = airlight_in_scatter_canonical(s_9, _e6);
+    let _e6 = airlight_canonical(s_10);
+    let _e7 = airlight_in_scatter_canonical(s_10, _e6);
     let _e9 = airlight_is_finite(_e7.in_scatter);
     if !(_e9) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
