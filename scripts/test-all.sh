@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Every test of the workspace, as the README and CI run it:
 #   1. the shader freshness check (`airlight check`: shaders-out/ is what the source emits),
-#   2. the fuzz targets for a bounded time each (FUZZ_SECONDS, default 60),
-#   3. `cargo test --workspace --release`: unit, reference, property, no_std, allocation,
-#      shader-validation and GPU-agreement tests.
-# Tools it needs (spirv-val, glslangValidator, the lavapipe Vulkan driver, nightly cargo-fuzz)
-# are installed by .ci/run; with CI=true a missing tool or adapter fails the run, never skips.
+#   2. the fuzz targets for a bounded time each (FUZZ_SECONDS, default 60), when fuzz/ exists,
+#   3. `cargo test --workspace --release`: unit, reference, property, no_std, shader-validation
+#      and GPU-agreement tests.
+# The last line totals every test harness's results ("N passed, N failed").
+# Tools the tests need (spirv-val, glslangValidator, the lavapipe Vulkan driver) are installed
+# by .ci/run; with CI=true a missing tool or adapter fails the run, never skips.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,4 +19,13 @@ if [ -d fuzz ] && [ "${SKIP_FUZZ:-0}" != "1" ]; then
 fi
 
 echo "== cargo test"
-cargo test --workspace --release
+log=$(mktemp)
+set +e
+cargo test --workspace --release 2>&1 | tee "$log"
+status=${PIPESTATUS[0]}
+set -e
+passed=$(grep -o '[0-9]* passed' "$log" | awk '{s += $1} END {print s + 0}')
+failed=$(grep -o '[0-9]* failed' "$log" | awk '{s += $1} END {print s + 0}')
+rm -f "$log"
+echo "${passed} passed, ${failed} failed"
+exit "$status"
