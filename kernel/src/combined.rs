@@ -182,16 +182,8 @@ where
         if !(hi > lo) {
             continue;
         }
-        let dy = hi - lo;
-        // Δv of the piece and its offset from the half's v_s (where the weight is 1).
-        let (dv, offset) = if half.second {
-            let dv = if lo == T::zero() { T::infinity() } else { dy / (lo * hi) };
-            (dv, (half.y_hi - hi) / (hi * half.y_hi))
-        } else {
-            (dy, lo - half.y_lo)
-        };
-        let piece = Half { second: half.second, big_h: half.big_h, y_lo: lo, y_hi: hi, dy, dv };
-        total = total + (-half.big_h * offset).exp() * subdivided::<T, _, E, N>(&piece, &f, expansion, ei);
+        let (piece, weight) = half.part(lo, hi);
+        total = total + weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei);
         lo = hi;
     }
     total
@@ -219,14 +211,8 @@ fn subdivided<T: Real, F: Expandable<T>, E: ExpIntegral<T>, const N: usize>(
     for i in 0..parts {
         let lo = piece.y_lo + step * T::from(i).unwrap();
         let hi = if i + 1 == parts { piece.y_hi } else { lo + step };
-        let dy = hi - lo;
-        let (dv, offset) = if piece.second {
-            (dy / (lo * hi), (piece.y_hi - hi) / (hi * piece.y_hi))
-        } else {
-            (dy, lo - piece.y_lo)
-        };
-        let part = Half { second: piece.second, big_h: piece.big_h, y_lo: lo, y_hi: hi, dy, dv };
-        total = total + (-piece.big_h * offset).exp() * piece_integral::<T, _, E, N>(&part, f, expansion, ei);
+        let (part, weight) = piece.part(lo, hi);
+        total = total + weight * piece_integral::<T, _, E, N>(&part, f, expansion, ei);
     }
     total
 }

@@ -123,6 +123,21 @@ impl<T: Real> Half<T> {
             self.y_hi
         }
     }
+    /// The part `[lo, hi] ⊂ [y_lo, y_hi]` as a half of its own, and the factor
+    /// `e^{−H(v_s(part) − v_s(self))}` that rescales its moments to this half's weight.
+    pub fn part(&self, lo: T, hi: T) -> (Half<T>, T) {
+        let dy = hi - lo;
+        let (dv, offset) = if self.second {
+            // Δv = 1/lo − 1/hi (∞ at lo = 0, the segment's end at t = ∞); v_s moves to 1/hi
+            let dv = if lo == T::zero() { T::infinity() } else { dy / (lo * hi) };
+            (dv, (self.y_hi - hi) / (hi * self.y_hi))
+        } else {
+            (dy, lo - self.y_lo)
+        };
+        let part = Half { second: self.second, big_h: self.big_h, y_lo: lo, y_hi: hi, dy, dv };
+        (part, (-self.big_h * offset).exp())
+    }
+
     /// Midpoint `y_c` of the sub-interval (the expansion point).
     #[inline]
     pub fn y_mid(&self) -> T {
