@@ -354,7 +354,12 @@ fn airlight_light(kind: u32, p0: f32, p1: f32, c: f32) -> f32 {
             return acc;
         }
         case 2u: {
-            let x = clamp((c - p1) / (p0 - p1), 0.0, 1.0);
+            // an edge narrower than f32's epsilon is a step at its middle (light.rs)
+            let width = p0 - p1;
+            if (width <= AIRLIGHT_FLT_EPS) {
+                return select(0.0, 1.0, c >= p1 + width * 0.5);
+            }
+            let x = clamp((c - p1) / width, 0.0, 1.0);
             return x * x * (3.0 - 2.0 * x);
         }
         default: { return 1.0; }

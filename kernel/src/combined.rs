@@ -92,10 +92,8 @@ where
     }
     let sigma_t = phys.sigma_t;
     let big_h = sigma_t * h;
-    let two = T::lit(2.0);
     let isotropic = phys.light.is_isotropic() && phys.phase.is_isotropic();
     let count = if isotropic { 1 } else { N };
-    let prefactor = two * phys.sigma_s * phys.intensity / h;
 
     let mut total = T::zero();
     // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
@@ -109,7 +107,7 @@ where
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let half = Half { second: false, big_h, y_lo, y_hi, dy, dv: dy };
         let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), expansion, ei, isotropic, count);
-        total = total + prefactor * (-big_h * r_s).exp() * j;
+        total = total + weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, j);
     }
     // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
     if t1 > x_h {
@@ -126,12 +124,27 @@ where
         };
         let half = Half { second: true, big_h, y_lo, y_hi, dy, dv };
         let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), expansion, ei, isotropic, count);
-        let attenuation = (-sigma_t * (t_start - t0)).exp();
-        total = total + attenuation * prefactor * (-big_h * r_s).exp() * j;
+        total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
     total.max(T::zero())
+}
+
+/// `(2 σs I / h)·e^{−x}·j`: a half's prefactor, its folded exponent (`x ≥ 0`) and its sum
+/// `j`. When the plain product is not finite — `σs I / h` overflowing while `e^{−x}` or `j`
+/// underflows — it is formed through logarithms, so that a representable value never becomes
+/// `∞·0` (NaN); a true value beyond the range stays `+∞`.
+#[inline]
+fn weighted<T: Real>(sigma_s: T, intensity: T, h: T, x: T, j: T) -> T {
+    let plain = T::lit(2.0) * sigma_s * intensity / h * (-x).exp() * j;
+    if plain.is_finite() {
+        plain
+    } else if !(j.abs() > T::zero()) {
+        T::zero()
+    } else {
+        (T::LN_2() + sigma_s.ln() + intensity.ln() - h.ln() - x + j.abs().ln()).exp().copysign(j)
+    }
 }
 
 /// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution.
@@ -260,28 +273,29 @@ fn on_line<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>>(
 ) -> T {
     let (t0, t1, x_h) = (g.t0, g.t1, g.x_h);
     let sigma_t = phys.sigma_t;
-    let k = phys.sigma_s * phys.intensity;
     if x_h > t1 {
         let f: T = phys.light.eval(-g.d_el) * phys.phase.eval(T::one());
         let (r0, r1) = (x_h - t0, x_h - t1);
-        k * f * (-sigma_t * r0).exp() * ((t1 - t0) / r0 / r1)
+        weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * r0, f * ((t1 - t0) / r0 / r1))
     } else {
         let f: T = phys.light.eval(g.d_el) * phys.phase.eval(-T::one());
         let (s0, s1) = (t0 - x_h, t1 - x_h);
         if sigma_t == T::zero() {
             let span = if s1.is_finite() { (s1 - s0) / s1 / s0 } else { s0.recip() };
-            return k * f * span;
+            return weighted(phys.sigma_s, phys.intensity, T::lit(2.0), T::zero(), f * span);
         }
         let two_st = sigma_t + sigma_t;
         let mut e2 = [T::zero(); 2];
         en_scaled(two_st * s0, &mut e2);
-        let head = (-sigma_t * s0).exp() * e2[1] / s0;
+        // σs I e^{−x} as weighted(σs, I, 2, x) (its h = 2 cancels the 2)
+        let head = weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * s0, f * e2[1] / s0);
         let tail = if s1.is_finite() {
             en_scaled(two_st * s1, &mut e2);
-            (-sigma_t * (s1 - s0) - sigma_t * s1).exp() * e2[1] / s1
+            weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * (s1 - s0) + sigma_t * s1, f * e2[1] / s1)
         } else {
             T::zero()
         };
-        k * f * (head - tail)
+        // head ≥ tail in exact arithmetic; ∞ − ∞ (both overflowing) means the value overflows
+        if head.is_infinite() { head } else { head - tail }
     }
 }

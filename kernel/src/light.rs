@@ -79,8 +79,9 @@ impl<T: Real> LightDistribution<T> for TwoLobed<T> {
 /// An engine-style spot cone: full intensity inside `cos_inner`, none outside `cos_outer`,
 /// and the smoothstep `x²(3 − 2x)`, `x = (c − cos_outer)/(cos_inner − cos_outer)`, between.
 ///
-/// Its edges are only C¹, which limits how well a few-term polynomial can follow a ray that
-/// crosses them (the error table in the README shows how much).
+/// Its edges are only C¹; the kernel splits the integration where a ray crosses them
+/// ([`LightDistribution::kinks`]). An edge narrower than the float epsilon (in cosine) is
+/// evaluated as a step at its middle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpotCone<T: Real> {
     /// Cone axis (the direction the spot points to).
@@ -96,7 +97,14 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         T::vec3_to_array(self.axis)
     }
     fn eval<S: Scalar<T>>(&self, c: S) -> S {
-        let x = c.shift(-self.cos_outer).scale((self.cos_inner - self.cos_outer).recip());
+        let width = self.cos_inner - self.cos_outer;
+        if width <= T::epsilon() {
+            // An edge narrower than the precision is a step at its middle (its smoothstep
+            // would scale derivatives by 1/width and overflow the expansion).
+            let mid = self.cos_outer + width * T::lit(0.5);
+            return S::cst(if c.value() >= mid { T::one() } else { T::zero() });
+        }
+        let x = c.shift(-self.cos_outer).scale(width.recip());
         let xv = x.value();
         if xv <= T::zero() {
             S::cst(T::zero())

@@ -172,7 +172,11 @@ where
             g.t0 = a;
             g.t1 = b;
             let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), expansion, &Production);
-            total = total + (-self.medium.sigma_t * (a - self.ray.t_min)).exp() * part;
+            if part > T::zero() {
+                // an overflowing part (+∞) stays +∞ even where the attenuation underflows
+                let attenuation = (-self.medium.sigma_t * (a - self.ray.t_min)).exp();
+                total = total + if part.is_infinite() { part } else { attenuation * part };
+            }
         }
         total
     }

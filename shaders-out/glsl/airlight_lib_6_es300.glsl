@@ -633,7 +633,11 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1) {
             return _e31;
         }
         case 2u: {
-            float x_10 = clamp(((c_1 - p1_1) / (p0_1 - p1_1)), 0.0, 1.0);
+            float width = (p0_1 - p1_1);
+            if ((width <= AIRLIGHT_FLT_EPS)) {
+                return ((c_1 >= (p1_1 + (width * 0.5))) ? 1.0 : 0.0);
+            }
+            float x_10 = clamp(((c_1 - p1_1) / width), 0.0, 1.0);
             return ((x_10 * x_10) * (3.0 - (2.0 * x_10)));
         }
         default: {

@@ -630,7 +630,11 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
             return _e31;
         }
         case 2u: {
-            let x_10 = clamp(((c_1 - p1_1) / (p0_1 - p1_1)), 0f, 1f);
+            let width = (p0_1 - p1_1);
+            if (width <= AIRLIGHT_FLT_EPS) {
+                return select(0f, 1f, (c_1 >= (p1_1 + (width * 0.5f))));
+            }
+            let x_10 = clamp(((c_1 - p1_1) / width), 0f, 1f);
             return ((x_10 * x_10) * (3f - (2f * x_10)));
         }
         default: {

@@ -1,0 +1,49 @@
+//! Target (2), differential: model-exact scenes (isotropic light and phase) with inputs exact
+//! in f32, `|o − p| ≤ 300 h` and `σt h ∈ [1e-3, 100]`: the f32 kernel with 4 terms within 1e-4
+//! of the f64 kernel with 6 terms (the target; the f64 value is within 1e-12 of the
+//! integral) wherever the value is a normal f32. Anisotropic scenes: f32 and f64 at the same
+//! term count, non-negative and finite (their difference depends on the expansion's
+//! conditioning, bounded in tests/tests/properties.rs, not here).
+#![no_main]
+use airlight::glam::{DVec3, Vec3};
+use airlight::light::Omni;
+use airlight::phase::Isotropic;
+use airlight::{Expansion, Medium, PointLight, Ray, Scene};
+use libfuzzer_sys::fuzz_target;
+
+mod common;
+use common::Reader;
+
+fuzz_target!(|data: &[u8]| {
+    let mut r = Reader(data);
+    let f = |x: f64| x as f32 as f64;
+    let o = [f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0))];
+    let d = [f(r.num(-1.0, 1.0)), f(r.num(-1.0, 1.0)), f(r.num(-1.0, 1.0))];
+    let p = [f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0))];
+    let t0 = f(r.num(-5.0, 5.0));
+    let t1 = if r.int(4) == 0 { f64::INFINITY } else { f(t0 + r.num(0.01, 100.0).abs()) };
+    let st = f(r.num(0.0, 10.0).abs());
+    let ss = f(r.num(0.01, 1.0).abs());
+    if !(o.iter().chain(&d).chain(&p).all(|x| x.is_finite()) && t0.is_finite() && st.is_finite() && ss.is_finite()) {
+        return;
+    }
+    let ray64 = Ray { origin: DVec3::from_array(o), dir: DVec3::from_array(d), t_min: t0, t_max: t1 };
+    let light64 = PointLight { position: DVec3::from_array(p), intensity: 10.0, distribution: Omni };
+    let Ok(s64) = Scene::new(ray64, light64, Medium { sigma_s: ss, sigma_t: st }, Isotropic) else { return };
+    let g = *s64.canonical();
+    let dist = ((p[0] - o[0]).powi(2) + (p[1] - o[1]).powi(2) + (p[2] - o[2]).powi(2)).sqrt();
+    if !(g.h > 0.0 && dist <= 300.0 * g.h && (1e-3..=100.0).contains(&(st * g.h))) {
+        return;
+    }
+    let v = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
+    let ray32 = Ray { origin: v(o), dir: v(d), t_min: t0 as f32, t_max: t1 as f32 };
+    let light32 = PointLight { position: v(p), intensity: 10.0f32, distribution: Omni };
+    let s32 = Scene::new(ray32, light32, Medium { sigma_s: ss as f32, sigma_t: st as f32 }, Isotropic).unwrap();
+    let want = s64.in_scatter();
+    let got = s32.in_scatter_with::<4>(Expansion::Chebyshev) as f64;
+    assert!(!got.is_nan() && got >= 0.0);
+    if want >= f32::MIN_POSITIVE as f64 * 1e3 && want <= f32::MAX as f64 / 1e3 {
+        let e = (got - want).abs() / want;
+        assert!(e <= 1e-4, "f32 {got} vs f64 {want} (rel {e:e}) o {o:?} d {d:?} p {p:?} t [{t0}, {t1}] st {st} ss {ss}");
+    }
+});
