@@ -5,4 +5,5 @@ pub mod eval;
 pub mod gpu;
 pub mod layout;
 pub mod targets;
+pub mod verify;
 pub mod scene_json;

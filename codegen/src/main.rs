@@ -11,6 +11,7 @@ USAGE:
     airlight eval [--backend cpu|gpu] [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
     airlight emit [--out DIR] [--terms 4|6|4,6] [--targets wgsl,glsl,spirv,hlsl,msl]
     airlight check [--dir DIR] [--terms ...] [--targets ...]
+    airlight verify [--cases N] [--terms 4|6]
     airlight --help
 
 COMMANDS:
@@ -35,6 +36,11 @@ COMMANDS:
 
     check   Exit 1 and list the stale, missing or unexpected files when DIR (default
             shaders-out/) is not what `emit` would write now.
+
+    verify  Run the CPU/shader agreement check on this machine's GPU: N scenes (default 10000)
+            through the committed compute shader, compared with the f32 CPU kernel; prints
+            the adapter, cases, max/median difference, NaN count and a PASS/FAIL verdict
+            (exit 1 on FAIL).
 
 OPTIONS (eval):
     --backend cpu|gpu                CPU kernel (default) or the emitted compute shader through
@@ -65,6 +71,7 @@ fn main() -> ExitCode {
         "eval" => cmd_eval(&args[1..]),
         "emit" => cmd_emit(&args[1..], false),
         "check" => cmd_emit(&args[1..], true),
+        "verify" => cmd_verify(&args[1..]),
         other => fail(&format!("unknown command '{other}'")),
     }
 }
@@ -182,5 +189,38 @@ fn error_line(e: &airlight_codegen::targets::EmitError) -> ExitCode {
     match e {
         airlight_codegen::targets::EmitError::Usage(_) => ExitCode::from(2),
         _ => ExitCode::from(1),
+    }
+}
+
+fn cmd_verify(args: &[String]) -> ExitCode {
+    let (mut cases, mut terms) = (10_000usize, 4usize);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let v = it.next();
+        match (a.as_str(), v) {
+            ("--cases", Some(v)) => match v.parse() {
+                Ok(n) if n > 0 => cases = n,
+                _ => return fail(&format!("--cases must be a positive number, not '{v}'")),
+            },
+            ("--terms", Some(v)) if v == "4" || v == "6" => terms = v.parse().unwrap(),
+            ("--terms", Some(v)) => return fail(&format!("--terms must be 4 or 6, not '{v}'")),
+            (other, _) => return fail(&format!("unknown or incomplete option '{other}' for verify")),
+        }
+    }
+    match airlight_codegen::verify::verify(cases, terms) {
+        Ok(r) => {
+            println!("adapter:            {}", r.adapter);
+            println!("cases:              {} ({} terms)", r.cases, terms);
+            println!("difference (of scale) to the f32 CPU kernel: max {:.2e}, median {:.2e}", r.max_diff, r.median_diff);
+            println!("NaN/Inf:            {}", r.non_finite);
+            println!("status mismatches:  {}", r.status_mismatches);
+            println!("tolerance:          2·|cpu_f32 − cpu_f64| + 2e-4·scale; largest excess {:.2e}", r.max_excess);
+            println!("verdict:            {}", if r.pass() { "PASS" } else { "FAIL" });
+            if r.pass() { ExitCode::SUCCESS } else { ExitCode::from(1) }
+        }
+        Err(e) => {
+            eprintln!("airlight: {e}");
+            ExitCode::from(1)
+        }
     }
 }
