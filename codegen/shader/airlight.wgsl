@@ -517,7 +517,7 @@ fn airlight_t_moments(half: AirlightHalf, count: u32, out: ptr<function, array<f
     var s_s = airlight_zero_scratch();
     var s_e = airlight_zero_scratch();
     airlight_en_scaled(half.big_h / half.y_hi, count, &s_s);
-    let far_end = half.y_lo > 0.0;
+    let far_end = half.y_lo > 0.0 && airlight_is_finite(half.big_h / half.y_lo);
     var decay = 0.0;
     if (far_end && !half.dv_infinite) {
         decay = exp(-half.big_h * half.dv);
@@ -591,7 +591,9 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
     let s_s = airlight_e1_scaled(vec2<f32>(big_h * v_s, -big_h));
     var s_e = vec2<f32>(0.0, 0.0);
     var decay = 0.0;
-    if (!v_e_infinite) {
+    // the far end contributes e^{−HΔv}·S(z_e): 0 where H·v_e overflows
+    let far_finite = !v_e_infinite && airlight_is_finite(big_h * v_e);
+    if (far_finite) {
         s_e = airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h));
         decay = exp(-big_h * half.dv);
     }
@@ -605,7 +607,7 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
             var e_s = airlight_zero_scratch();
             airlight_en_scaled(big_h * v_s, 1u, &e_s);
             var tail = 0.0;
-            if (!v_e_infinite) {
+            if (far_finite) {
                 var e_e = airlight_zero_scratch();
                 airlight_en_scaled(big_h * v_e, 1u, &e_e);
                 tail = (e_e[0] - s_e.x) * decay;
@@ -774,8 +776,17 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
     }
     var cuts = array<f32, 4>(2.0, 2.0, 2.0, 2.0);
     if (s.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        let r_in = airlight_crossings(sigma, g.d_el, g.d_c, s.light_param_a);
-        let r_out = airlight_crossings(sigma, g.d_el, g.d_c, s.light_param_b);
+        // a needle-thin edge is a step: one cut at its middle (both crossings coincide; the
+        // zero-width piece between them is skipped below)
+        var k_in = s.light_param_a;
+        var k_out = s.light_param_b;
+        let width = k_in - k_out;
+        if (width <= AIRLIGHT_FLT_EPS) {
+            k_in = k_out + width * 0.5;
+            k_out = k_in;
+        }
+        let r_in = airlight_crossings(sigma, g.d_el, g.d_c, k_in);
+        let r_out = airlight_crossings(sigma, g.d_el, g.d_c, k_out);
         cuts = array<f32, 4>(r_in.x, r_in.y, r_out.x, r_out.y);
         for (var i = 0u; i < 4u; i++) {
             if (!(cuts[i] > half.y_lo && cuts[i] < half.y_hi)) { cuts[i] = 2.0; }
@@ -921,6 +932,13 @@ fn airlight_safe_length(v: vec3<f32>) -> f32 {
     return m * length(v / m);
 }
 
+/// v/|v|, scaled by the largest component first (geometry.rs::normalize).
+fn airlight_normalize(v: vec3<f32>) -> vec3<f32> {
+    let m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+    let u = v / m;
+    return u / length(u);
+}
+
 /// The checks of the kernel's checked API; false → the record is invalid.
 fn airlight_valid(s: AirlightScene) -> bool {
     var ok = airlight_vec_finite(s.origin) && airlight_vec_finite(s.dir) && airlight_safe_length(s.dir) > 0.0
@@ -951,9 +969,9 @@ fn airlight_valid(s: AirlightScene) -> bool {
 
 /// World space → canonical (geometry.rs::Canonical::new).
 fn airlight_canonical(s: AirlightScene) -> AirlightCanonical {
-    let d = s.dir / airlight_safe_length(s.dir);
+    let d = airlight_normalize(s.dir);
     var a = vec3<f32>(0.0, 0.0, 1.0);
-    if (s.light_kind != AIRLIGHT_LIGHT_OMNI) { a = s.light_axis / airlight_safe_length(s.light_axis); }
+    if (s.light_kind != AIRLIGHT_LIGHT_OMNI) { a = airlight_normalize(s.light_axis); }
     let to_light = s.light_position - s.origin;
     let x_h = dot(to_light, d);
     let perp = x_h * d - to_light;

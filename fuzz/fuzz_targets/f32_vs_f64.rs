@@ -32,13 +32,16 @@ fuzz_target!(|data: &[u8]| {
     let Ok(s64) = Scene::new(ray64, light64, Medium { sigma_s: ss, sigma_t: st }, Isotropic) else { return };
     let g = *s64.canonical();
     let dist = ((p[0] - o[0]).powi(2) + (p[1] - o[1]).powi(2) + (p[2] - o[2]).powi(2)).sqrt();
-    if !(g.h > 0.0 && dist <= 300.0 * g.h && (1e-3..=100.0).contains(&(st * g.h))) {
+    // the domain, in a moderate physical range: segments of at least 1e-3 and
+    // coefficients below 1e3 (so that no intermediate leaves f32's normal range)
+    if !(g.h > 0.0 && dist <= 300.0 * g.h && (1e-3..=100.0).contains(&(st * g.h)) && t1 - t0 >= 1e-3 && ss <= 1e3) {
         return;
     }
     let v = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
     let ray32 = Ray { origin: v(o), dir: v(d), t_min: t0 as f32, t_max: t1 as f32 };
     let light32 = PointLight { position: v(p), intensity: 10.0f32, distribution: Omni };
-    let s32 = Scene::new(ray32, light32, Medium { sigma_s: ss as f32, sigma_t: st as f32 }, Isotropic).unwrap();
+    // (inputs whose f32 rounding is not a valid scene are not this target's concern)
+    let Ok(s32) = Scene::new(ray32, light32, Medium { sigma_s: ss as f32, sigma_t: st as f32 }, Isotropic) else { return };
     let want = s64.in_scatter();
     let got = s32.in_scatter_with::<4>(Expansion::Chebyshev) as f64;
     assert!(!got.is_nan() && got >= 0.0);

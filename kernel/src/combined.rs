@@ -116,12 +116,10 @@ where
         let a_e = (t1 - x_h) / h;
         let r_s = hypot1(a_s);
         let (y_hi, y_lo) = (bounded(a_s), bounded(a_e));
-        let (dv, dy) = if a_e.is_finite() {
-            let dv = (t1 - t_start) / h * (T::one() + (a_s + a_e) / (r_s + hypot1(a_e)));
-            (dv, dv * y_lo * y_hi)
-        } else {
-            (T::infinity(), y_hi)
-        };
+        let dv = if a_e.is_finite() { (t1 - t_start) / h * (T::one() + (a_s + a_e) / (r_s + hypot1(a_e))) } else { T::infinity() };
+        // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞ (the
+        // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
+        let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
         let half = Half { second: true, big_h, y_lo, y_hi, dy, dv };
         let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), expansion, ei, isotropic, count);
         total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);

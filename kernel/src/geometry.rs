@@ -29,15 +29,17 @@ pub fn length<T: Real>(a: [T; 3]) -> T {
     m * dot(s, s).sqrt()
 }
 
-/// `a / |a|` (zero stays zero).
+/// `a / |a|` (zero stays zero). Scaled by the largest component first, so that tiny
+/// (subnormal) or huge vectors normalise as accurately as ordinary ones.
 #[inline]
 pub fn normalize<T: Real>(a: [T; 3]) -> [T; 3] {
-    let l = length(a);
-    if l > T::zero() && l.is_finite() {
-        [a[0] / l, a[1] / l, a[2] / l]
-    } else {
-        a
+    let m = a[0].abs().max(a[1].abs()).max(a[2].abs());
+    if !(m > T::zero() && m.is_finite()) {
+        return a;
     }
+    let s = [a[0] / m, a[1] / m, a[2] / m];
+    let l = dot(s, s).sqrt();
+    [s[0] / l, s[1] / l, s[2] / l]
 }
 
 /// The ray segment and light in the canonical frame of the light's foot.

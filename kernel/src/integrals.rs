@@ -303,6 +303,8 @@ fn n1_log_part<T: Real>(v_s: T, v_e: T) -> T {
 fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, with_re: bool) -> C<T> {
     let big_h = half.big_h;
     let s_s = ei.e1_scaled(C::new(big_h * v_s, -big_h));
+    // The far end contributes e^{−HΔv}·S(z_e); where H·v_e overflows that is 0.
+    let v_e = if (big_h * v_e).is_finite() { v_e } else { T::infinity() };
     let (s_e, decay) = if v_e.is_finite() {
         (ei.e1_scaled(C::new(big_h * v_e, -big_h)), (-big_h * half.dv).exp())
     } else {
@@ -360,7 +362,8 @@ fn t_moments<T: Real>(half: &Half<T>, out: &mut [T]) {
     let big_h = half.big_h;
     let mut s_s = [T::zero(); MAX];
     en_scaled(big_h * half.y_hi.recip(), &mut s_s[..n]);
-    let far_end = half.y_lo > T::zero();
+    // (where H/y_lo overflows the far end's e^{−HΔv} is 0)
+    let far_end = half.y_lo > T::zero() && (big_h / half.y_lo).is_finite();
     let mut s_e = [T::zero(); MAX];
     let decay = if far_end { (-big_h * half.dv).exp() } else { T::zero() };
     if far_end {

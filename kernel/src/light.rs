@@ -115,6 +115,11 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         }
     }
     fn kinks(&self) -> [Option<T>; 2] {
+        let width = self.cos_inner - self.cos_outer;
+        if width <= T::epsilon() {
+            // evaluated as a step: one discontinuity, at its middle
+            return [Some(self.cos_outer + width * T::lit(0.5)), None];
+        }
         [Some(self.cos_inner), Some(self.cos_outer)]
     }
     fn validate(&self) -> Result<(), InputError> {

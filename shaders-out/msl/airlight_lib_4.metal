@@ -1189,8 +1189,9 @@ void airlight_t_moments(
 ) {
     type_3 s_s = {};
     type_3 s_e = {};
-    float decay = 0.0;
     bool local_3 = {};
+    float decay = 0.0;
+    bool local_4 = {};
     float p_hi = {};
     float p_lo = {};
     uint order = 2u;
@@ -1199,14 +1200,20 @@ void airlight_t_moments(
     type_3 _e5 = airlight_zero_scratch();
     s_e = _e5;
     airlight_en_scaled(half_1.big_h / half_1.y_hi, count_1, s_s);
-    bool far_end = half_1.y_lo > 0.0;
-    if (far_end) {
-        local_3 = !(half_1.dv_infinite);
+    if (half_1.y_lo > 0.0) {
+        bool _e18 = airlight_is_finite(half_1.big_h / half_1.y_lo);
+        local_3 = _e18;
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
+    bool far_end = local_3;
+    if (far_end) {
+        local_4 = !(half_1.dv_infinite);
+    } else {
+        local_4 = false;
+    }
+    bool _e28 = local_4;
+    if (_e28) {
         decay = metal::exp(-(half_1.big_h) * half_1.dv);
         airlight_en_scaled(half_1.big_h / half_1.y_lo, count_1, s_e);
     }
@@ -1218,31 +1225,31 @@ void airlight_t_moments(
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_21) {
-            uint _e68 = order;
-            order = _e68 + 1u;
+            uint _e76 = order;
+            order = _e76 + 1u;
         }
         loop_init_21 = false;
-        uint _e35 = order;
-        if (_e35 < AIRLIGHT_SCRATCH) {
+        uint _e43 = order;
+        if (_e43 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            uint _e38 = order;
-            if (_e38 <= count_1) {
-                uint _e40 = order;
-                float _e44 = p_hi;
-                uint _e45 = order;
-                float _e49 = s_s.inner[metal::min(unsigned(_e45 - 1u), 15u)];
-                float _e51 = p_lo;
-                uint _e52 = order;
-                float _e56 = s_e.inner[metal::min(unsigned(_e52 - 1u), 15u)];
-                float _e58 = decay;
-                out_1.inner[metal::min(unsigned(_e40 - 1u), 15u)] = (_e44 * _e49) - ((_e51 * _e56) * _e58);
-                float _e61 = p_hi;
-                p_hi = _e61 * half_1.y_hi;
-                float _e64 = p_lo;
-                p_lo = _e64 * half_1.y_lo;
+            uint _e46 = order;
+            if (_e46 <= count_1) {
+                uint _e48 = order;
+                float _e52 = p_hi;
+                uint _e53 = order;
+                float _e57 = s_s.inner[metal::min(unsigned(_e53 - 1u), 15u)];
+                float _e59 = p_lo;
+                uint _e60 = order;
+                float _e64 = s_e.inner[metal::min(unsigned(_e60 - 1u), 15u)];
+                float _e66 = decay;
+                out_1.inner[metal::min(unsigned(_e48 - 1u), 15u)] = (_e52 * _e57) - ((_e59 * _e64) * _e66);
+                float _e69 = p_hi;
+                p_hi = _e69 * half_1.y_hi;
+                float _e72 = p_lo;
+                p_lo = _e72 * half_1.y_lo;
             }
         }
     }
@@ -1298,17 +1305,18 @@ metal::float2 airlight_q_zero(
     AirlightHalf half_3,
     bool with_re
 ) {
-    bool local_4 = {};
-    float v_e_1 = {};
     bool local_5 = {};
+    float v_e_1 = {};
     bool local_6 = {};
     bool local_7 = {};
+    bool local_8 = {};
     float d_im = 0.0;
     float d_re = 0.0;
     float n1_ = 0.0;
     float n1_1 = 0.0;
     metal::float2 s_e_1 = metal::float2(0.0, 0.0);
     float decay_1 = 0.0;
+    bool local_9 = {};
     float n1_2 = 0.0;
     type_3 e_s = {};
     float tail = 0.0;
@@ -1316,18 +1324,18 @@ metal::float2 airlight_q_zero(
     float big_h = half_3.big_h;
     float v_s_1 = half_3.second ? (1.0 / half_3.y_hi) : half_3.y_lo;
     if (half_3.second) {
-        local_4 = half_3.y_lo == 0.0;
-    } else {
-        local_4 = false;
-    }
-    bool v_e_infinite_1 = local_4;
-    v_e_1 = half_3.y_hi;
-    if (half_3.second) {
-        local_5 = !(v_e_infinite_1);
+        local_5 = half_3.y_lo == 0.0;
     } else {
         local_5 = false;
     }
-    bool _e24 = local_5;
+    bool v_e_infinite_1 = local_5;
+    v_e_1 = half_3.y_hi;
+    if (half_3.second) {
+        local_6 = !(v_e_infinite_1);
+    } else {
+        local_6 = false;
+    }
+    bool _e24 = local_6;
     if (_e24) {
         v_e_1 = 1.0 / half_3.y_lo;
     }
@@ -1335,16 +1343,16 @@ metal::float2 airlight_q_zero(
         if (!(v_e_infinite_1)) {
             float _e36 = v_e_1;
             float _e37 = v_e_1;
-            local_7 = (big_h * metal::sqrt(1.0 + (_e36 * _e37))) <= 1.0;
+            local_8 = (big_h * metal::sqrt(1.0 + (_e36 * _e37))) <= 1.0;
         } else {
-            local_7 = false;
+            local_8 = false;
         }
-        bool _e46 = local_7;
-        local_6 = _e46;
+        bool _e46 = local_8;
+        local_7 = _e46;
     } else {
-        local_6 = true;
+        local_7 = true;
     }
-    bool near = local_6;
+    bool near = local_7;
     if (near) {
         if (!(v_e_infinite_1)) {
             float _e55 = v_e_1;
@@ -1404,42 +1412,50 @@ metal::float2 airlight_q_zero(
     }
     metal::float2 _e155 = airlight_e1_scaled(metal::float2(big_h * v_s_1, -(big_h)));
     if (!(v_e_infinite_1)) {
-        float _e163 = v_e_1;
-        metal::float2 _e167 = airlight_e1_scaled(metal::float2(big_h * _e163, -(big_h)));
-        s_e_1 = _e167;
+        float _e165 = v_e_1;
+        bool _e167 = airlight_is_finite(big_h * _e165);
+        local_9 = _e167;
+    } else {
+        local_9 = false;
+    }
+    bool far_finite = local_9;
+    if (far_finite) {
+        float _e170 = v_e_1;
+        metal::float2 _e174 = airlight_e1_scaled(metal::float2(big_h * _e170, -(big_h)));
+        s_e_1 = _e174;
         decay_1 = metal::exp(-(big_h) * half_3.dv);
     }
-    metal::float2 _e172 = s_e_1;
-    float _e173 = decay_1;
-    metal::float2 c_5 = _e155 - (_e172 * _e173);
+    metal::float2 _e179 = s_e_1;
+    float _e180 = decay_1;
+    metal::float2 c_5 = _e155 - (_e179 * _e180);
     if (!(half_3.second)) {
         return c_5;
     }
     if (with_re) {
         if (half_3.y_hi <= 0.25) {
-            float _e183 = airlight_n1_series(half_3);
-            n1_2 = _e183;
+            float _e190 = airlight_n1_series(half_3);
+            n1_2 = _e190;
         } else {
-            type_3 _e184 = airlight_zero_scratch();
-            e_s = _e184;
+            type_3 _e191 = airlight_zero_scratch();
+            e_s = _e191;
             airlight_en_scaled(big_h * v_s_1, 1u, e_s);
-            if (!(v_e_infinite_1)) {
-                type_3 _e191 = airlight_zero_scratch();
-                e_e = _e191;
-                float _e193 = v_e_1;
-                airlight_en_scaled(big_h * _e193, 1u, e_e);
-                float _e197 = e_e.inner[0];
-                float _e199 = s_e_1.x;
-                float _e201 = decay_1;
-                tail = (_e197 - _e199) * _e201;
+            if (far_finite) {
+                type_3 _e197 = airlight_zero_scratch();
+                e_e = _e197;
+                float _e199 = v_e_1;
+                airlight_en_scaled(big_h * _e199, 1u, e_e);
+                float _e203 = e_e.inner[0];
+                float _e205 = s_e_1.x;
+                float _e207 = decay_1;
+                tail = (_e203 - _e205) * _e207;
             }
-            float _e204 = e_s.inner[0];
-            float _e207 = tail;
-            n1_2 = (_e204 - _e155.x) - _e207;
+            float _e210 = e_s.inner[0];
+            float _e213 = tail;
+            n1_2 = (_e210 - _e155.x) - _e213;
         }
     }
-    float _e209 = n1_2;
-    return metal::float2(_e209, c_5.y);
+    float _e215 = n1_2;
+    return metal::float2(_e215, c_5.y);
 }
 
 type_2 airlight_phi_moments(
@@ -1618,10 +1634,10 @@ type_2 airlight_moments(
     uint count_2
 ) {
     type_2 m_1 = {};
-    bool local_8 = {};
-    bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
+    bool local_13 = {};
     type_2 r_1 = {};
     type_3 t_4 = {};
     type_2 x_8 = {};
@@ -1638,29 +1654,29 @@ type_2 airlight_moments(
         return _e8;
     }
     if (!(half_4.dv_infinite)) {
-        local_8 = (half_4.big_h * half_4.dv) <= 1.0;
+        local_10 = (half_4.big_h * half_4.dv) <= 1.0;
     } else {
-        local_8 = false;
+        local_10 = false;
     }
-    bool short_exp = local_8;
+    bool short_exp = local_10;
     if (half_4.dy <= 0.25) {
         if (!(!(half_4.second))) {
-            local_10 = half_4.dy <= (half_4.y_lo * 0.5);
+            local_12 = half_4.dy <= (half_4.y_lo * 0.5);
         } else {
-            local_10 = true;
+            local_12 = true;
         }
-        bool _e36 = local_10;
-        local_9 = _e36;
-    } else {
-        local_9 = false;
-    }
-    bool short_len = local_9;
-    if (short_exp) {
-        local_11 = short_len;
+        bool _e36 = local_12;
+        local_11 = _e36;
     } else {
         local_11 = false;
     }
-    bool _e42 = local_11;
+    bool short_len = local_11;
+    if (short_exp) {
+        local_13 = short_len;
+    } else {
+        local_13 = false;
+    }
+    bool _e42 = local_13;
     if (_e42) {
         type_2 _e43 = airlight_moments_gauss(half_4);
         return _e43;
@@ -1827,7 +1843,7 @@ float airlight_subdivided(
     AirlightHalf piece
 ) {
     float parts = 1.0;
-    bool local_12 = {};
+    bool local_14 = {};
     float total = 0.0;
     uint i_10 = 0u;
     float hi = {};
@@ -1835,11 +1851,11 @@ float airlight_subdivided(
     float offset = {};
     bool inf = {};
     if (piece.dy <= 0.25) {
-        local_12 = piece.big_h > 0.0;
+        local_14 = piece.big_h > 0.0;
     } else {
-        local_12 = false;
+        local_14 = false;
     }
-    bool _e15 = local_12;
+    bool _e15 = local_14;
     if (_e15) {
         if (piece.dv_infinite) {
             parts = 8.0;
@@ -1953,57 +1969,72 @@ float airlight_half(
     bool isotropic
 ) {
     type_2 cuts = type_2 {{2.0, 2.0, 2.0, 2.0}};
+    float k_in = {};
+    float k_out = {};
     uint i_11 = 0u;
-    bool local_13 = {};
+    bool local_15 = {};
     uint i_12 = 0u;
     uint j_7 = {};
     float total_1 = 0.0;
     float lo = {};
     uint i_13 = 0u;
     float hi_1 = {};
-    bool local_14 = {};
+    bool local_16 = {};
     float dv_2 = {};
     float offset_1 = {};
     bool inf_1 = {};
-    bool local_15 = {};
+    bool local_17 = {};
     if (isotropic) {
         type_2 _e6 = airlight_moments(half_6, 1u);
         float _e12 = airlight_integrand(s_5, g_5, sigma_5, half_6.y_lo + (half_6.dy * 0.5));
         return _e12 * _e6.inner[0];
     }
     if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        metal::float2 _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_a);
-        metal::float2 _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_b);
-        cuts = type_2 {{_e27.x, _e27.y, _e31.x, _e31.y}};
+        k_in = s_5.light_param_a;
+        k_out = s_5.light_param_b;
+        float _e28 = k_in;
+        float _e29 = k_out;
+        float width_1 = _e28 - _e29;
+        if (width_1 <= AIRLIGHT_FLT_EPS) {
+            float _e33 = k_out;
+            k_in = _e33 + (width_1 * 0.5);
+            float _e37 = k_in;
+            k_out = _e37;
+        }
+        float _e40 = k_in;
+        metal::float2 _e41 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e40);
+        float _e44 = k_out;
+        metal::float2 _e45 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e44);
+        cuts = type_2 {{_e41.x, _e41.y, _e45.x, _e45.y}};
         uint2 loop_bound_33 = uint2(4294967295u);
         bool loop_init_33 = true;
         while(true) {
             if (metal::all(loop_bound_33 == uint2(0u))) { break; }
             loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
             if (!loop_init_33) {
-                uint _e61 = i_11;
-                i_11 = _e61 + 1u;
+                uint _e75 = i_11;
+                i_11 = _e75 + 1u;
             }
             loop_init_33 = false;
-            uint _e39 = i_11;
-            if (_e39 < 4u) {
+            uint _e53 = i_11;
+            if (_e53 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e42 = i_11;
-                float _e44 = cuts.inner[metal::min(unsigned(_e42), 3u)];
-                if (_e44 > half_6.y_lo) {
-                    uint _e49 = i_11;
-                    float _e51 = cuts.inner[metal::min(unsigned(_e49), 3u)];
-                    local_13 = _e51 < half_6.y_hi;
+                uint _e56 = i_11;
+                float _e58 = cuts.inner[metal::min(unsigned(_e56), 3u)];
+                if (_e58 > half_6.y_lo) {
+                    uint _e63 = i_11;
+                    float _e65 = cuts.inner[metal::min(unsigned(_e63), 3u)];
+                    local_15 = _e65 < half_6.y_hi;
                 } else {
-                    local_13 = false;
+                    local_15 = false;
                 }
-                bool _e55 = local_13;
-                if (!(_e55)) {
-                    uint _e57 = i_11;
-                    cuts.inner[metal::min(unsigned(_e57), 3u)] = 2.0;
+                bool _e69 = local_15;
+                if (!(_e69)) {
+                    uint _e71 = i_11;
+                    cuts.inner[metal::min(unsigned(_e71), 3u)] = 2.0;
                 }
             }
         }
@@ -2013,12 +2044,12 @@ float airlight_half(
             if (metal::all(loop_bound_34 == uint2(0u))) { break; }
             loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
             if (!loop_init_34) {
-                uint _e102 = i_12;
-                i_12 = _e102 + 1u;
+                uint _e116 = i_12;
+                i_12 = _e116 + 1u;
             }
             loop_init_34 = false;
-            uint _e65 = i_12;
-            if (_e65 < 3u) {
+            uint _e79 = i_12;
+            if (_e79 < 3u) {
             } else {
                 break;
             }
@@ -2030,40 +2061,40 @@ float airlight_half(
                     if (metal::all(loop_bound_35 == uint2(0u))) { break; }
                     loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
                     if (!loop_init_35) {
-                        uint _e99 = j_7;
-                        j_7 = _e99 + 1u;
+                        uint _e113 = j_7;
+                        j_7 = _e113 + 1u;
                     }
                     loop_init_35 = false;
-                    uint _e70 = j_7;
-                    uint _e72 = i_12;
-                    if (_e70 < (3u - _e72)) {
+                    uint _e84 = j_7;
+                    uint _e86 = i_12;
+                    if (_e84 < (3u - _e86)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e75 = j_7;
-                        float _e77 = cuts.inner[metal::min(unsigned(_e75), 3u)];
-                        uint _e78 = j_7;
-                        float _e82 = cuts.inner[metal::min(unsigned(_e78 + 1u), 3u)];
-                        if (_e77 > _e82) {
-                            uint _e84 = j_7;
-                            float t_7 = cuts.inner[metal::min(unsigned(_e84), 3u)];
-                            uint _e87 = j_7;
-                            uint _e89 = j_7;
-                            float _e93 = cuts.inner[metal::min(unsigned(_e89 + 1u), 3u)];
-                            cuts.inner[metal::min(unsigned(_e87), 3u)] = _e93;
-                            uint _e94 = j_7;
-                            cuts.inner[metal::min(unsigned(_e94 + 1u), 3u)] = t_7;
+                        uint _e89 = j_7;
+                        float _e91 = cuts.inner[metal::min(unsigned(_e89), 3u)];
+                        uint _e92 = j_7;
+                        float _e96 = cuts.inner[metal::min(unsigned(_e92 + 1u), 3u)];
+                        if (_e91 > _e96) {
+                            uint _e98 = j_7;
+                            float t_7 = cuts.inner[metal::min(unsigned(_e98), 3u)];
+                            uint _e101 = j_7;
+                            uint _e103 = j_7;
+                            float _e107 = cuts.inner[metal::min(unsigned(_e103 + 1u), 3u)];
+                            cuts.inner[metal::min(unsigned(_e101), 3u)] = _e107;
+                            uint _e108 = j_7;
+                            cuts.inner[metal::min(unsigned(_e108 + 1u), 3u)] = t_7;
                         }
                     }
                 }
             }
         }
     }
-    float _e105 = cuts.inner[0];
-    if (_e105 >= 2.0) {
-        float _e108 = airlight_piece(s_5, g_5, sigma_5, half_6);
-        return _e108;
+    float _e119 = cuts.inner[0];
+    if (_e119 >= 2.0) {
+        float _e122 = airlight_piece(s_5, g_5, sigma_5, half_6);
+        return _e122;
     }
     lo = half_6.y_lo;
     uint2 loop_bound_36 = uint2(4294967295u);
@@ -2072,100 +2103,100 @@ float airlight_half(
         if (metal::all(loop_bound_36 == uint2(0u))) { break; }
         loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
         if (!loop_init_36) {
-            uint _e195 = i_13;
-            i_13 = _e195 + 1u;
+            uint _e209 = i_13;
+            i_13 = _e209 + 1u;
         }
         loop_init_36 = false;
-        uint _e115 = i_13;
-        if (_e115 < 5u) {
+        uint _e129 = i_13;
+        if (_e129 < 5u) {
         } else {
             break;
         }
         {
             hi_1 = half_6.y_hi;
-            uint _e120 = i_13;
-            if (_e120 < 4u) {
-                uint _e125 = i_13;
-                float _e127 = cuts.inner[metal::min(unsigned(_e125), 3u)];
-                local_14 = _e127 < 2.0;
+            uint _e134 = i_13;
+            if (_e134 < 4u) {
+                uint _e139 = i_13;
+                float _e141 = cuts.inner[metal::min(unsigned(_e139), 3u)];
+                local_16 = _e141 < 2.0;
             } else {
-                local_14 = false;
+                local_16 = false;
             }
-            bool _e131 = local_14;
-            if (_e131) {
-                uint _e132 = i_13;
-                float _e134 = cuts.inner[metal::min(unsigned(_e132), 3u)];
-                hi_1 = _e134;
+            bool _e145 = local_16;
+            if (_e145) {
+                uint _e146 = i_13;
+                float _e148 = cuts.inner[metal::min(unsigned(_e146), 3u)];
+                hi_1 = _e148;
             }
-            float _e135 = hi_1;
-            float _e136 = lo;
-            if (_e135 > _e136) {
-                float _e138 = hi_1;
-                float _e139 = lo;
-                float dy_2 = _e138 - _e139;
+            float _e149 = hi_1;
+            float _e150 = lo;
+            if (_e149 > _e150) {
+                float _e152 = hi_1;
+                float _e153 = lo;
+                float dy_2 = _e152 - _e153;
                 dv_2 = dy_2;
-                float _e142 = lo;
-                offset_1 = _e142 - half_6.y_lo;
+                float _e156 = lo;
+                offset_1 = _e156 - half_6.y_lo;
                 inf_1 = false;
                 if (half_6.second) {
-                    float _e149 = lo;
-                    if (_e149 == 0.0) {
+                    float _e163 = lo;
+                    if (_e163 == 0.0) {
                         inf_1 = true;
                         dv_2 = 0.0;
                     } else {
-                        float _e154 = lo;
-                        float _e155 = hi_1;
-                        dv_2 = dy_2 / (_e154 * _e155);
+                        float _e168 = lo;
+                        float _e169 = hi_1;
+                        dv_2 = dy_2 / (_e168 * _e169);
                     }
-                    float _e159 = hi_1;
-                    float _e161 = hi_1;
-                    offset_1 = (half_6.y_hi - _e159) / (_e161 * half_6.y_hi);
+                    float _e173 = hi_1;
+                    float _e175 = hi_1;
+                    offset_1 = (half_6.y_hi - _e173) / (_e175 * half_6.y_hi);
                 }
-                float _e167 = lo;
-                float _e168 = hi_1;
-                float _e169 = dv_2;
-                bool _e170 = inf_1;
-                AirlightHalf piece_1 = AirlightHalf {half_6.second, {}, half_6.big_h, _e167, _e168, dy_2, _e169, _e170};
-                float _e172 = total_1;
-                float _e175 = offset_1;
-                float _e178 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
-                total_1 = _e172 + (metal::exp(-(half_6.big_h) * _e175) * _e178);
-                float _e181 = hi_1;
-                lo = _e181;
+                float _e181 = lo;
+                float _e182 = hi_1;
+                float _e183 = dv_2;
+                bool _e184 = inf_1;
+                AirlightHalf piece_1 = AirlightHalf {half_6.second, {}, half_6.big_h, _e181, _e182, dy_2, _e183, _e184};
+                float _e186 = total_1;
+                float _e189 = offset_1;
+                float _e192 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
+                total_1 = _e186 + (metal::exp(-(half_6.big_h) * _e189) * _e192);
+                float _e195 = hi_1;
+                lo = _e195;
             }
-            uint _e182 = i_13;
-            if (_e182 < 4u) {
-                uint _e187 = i_13;
-                float _e189 = cuts.inner[metal::min(unsigned(_e187), 3u)];
-                local_15 = _e189 >= 2.0;
+            uint _e196 = i_13;
+            if (_e196 < 4u) {
+                uint _e201 = i_13;
+                float _e203 = cuts.inner[metal::min(unsigned(_e201), 3u)];
+                local_17 = _e203 >= 2.0;
             } else {
-                local_15 = false;
+                local_17 = false;
             }
-            bool _e193 = local_15;
-            if (_e193) {
+            bool _e207 = local_17;
+            if (_e207) {
                 break;
             }
         }
     }
-    float _e197 = total_1;
-    return _e197;
+    float _e211 = total_1;
+    return _e211;
 }
 
 float airlight_on_line(
     AirlightScene s_6,
     AirlightCanonical g_6
 ) {
-    bool local_16 = {};
+    bool local_18 = {};
     float span = {};
     type_3 e2_ = {};
     float tail_1 = 0.0;
     float k_13 = s_6.sigma_s * s_6.intensity;
     if (!(g_6.t_hi_infinite)) {
-        local_16 = g_6.x_h > g_6.t_hi;
+        local_18 = g_6.x_h > g_6.t_hi;
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e13 = local_16;
+    bool _e13 = local_18;
     if (_e13) {
         float _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
         float _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
@@ -2206,41 +2237,41 @@ AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_7,
     AirlightCanonical g_7
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
     bool local_19 = {};
     bool local_20 = {};
-    float gap = 0.0;
     bool local_21 = {};
     bool local_22 = {};
+    float gap = 0.0;
     bool local_23 = {};
     bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
     bool local_27 = {};
-    float total_2 = 0.0;
-    float t_end = {};
     bool local_28 = {};
     bool local_29 = {};
+    float total_2 = 0.0;
+    float t_end = {};
+    bool local_30 = {};
+    bool local_31 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite = true;
-    bool local_30 = {};
+    bool local_32 = {};
     float t0_ = g_7.t_lo;
     float t1_ = g_7.t_hi;
     if (!(g_7.t_hi_infinite)) {
-        local_17 = t1_ > t0_;
+        local_19 = t1_ > t0_;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e10 = local_17;
+    bool _e10 = local_19;
     if (!(!(_e10))) {
-        local_18 = (s_7.sigma_s * s_7.intensity) == 0.0;
+        local_20 = (s_7.sigma_s * s_7.intensity) == 0.0;
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e21 = local_18;
+    bool _e21 = local_20;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
@@ -2248,16 +2279,16 @@ AirlightResult airlight_in_scatter_canonical(
     float x_h = g_7.x_h;
     if (t0_ <= x_h) {
         if (!(g_7.t_hi_infinite)) {
-            local_20 = x_h <= t1_;
+            local_22 = x_h <= t1_;
         } else {
-            local_20 = true;
+            local_22 = true;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_22;
+        local_21 = _e36;
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    bool inside = local_19;
+    bool inside = local_21;
     if (x_h < t0_) {
         gap = t0_ - x_h;
     } else {
@@ -2267,11 +2298,11 @@ AirlightResult airlight_in_scatter_canonical(
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_21 = h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_23 = h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_21 = false;
+        local_23 = false;
     }
-    bool _e55 = local_21;
+    bool _e55 = local_23;
     if (_e55) {
         float _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
@@ -2282,50 +2313,50 @@ AirlightResult airlight_in_scatter_canonical(
     float big_h_1 = s_7.sigma_t * h_1;
     if (!((s_7.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_23 = s_7.light_param_a == 0.0;
+            local_25 = s_7.light_param_a == 0.0;
         } else {
-            local_23 = false;
+            local_25 = false;
         }
-        bool _e83 = local_23;
-        local_22 = _e83;
+        bool _e83 = local_25;
+        local_24 = _e83;
     } else {
-        local_22 = true;
+        local_24 = true;
     }
-    bool _e85 = local_22;
+    bool _e85 = local_24;
     if (_e85) {
         if (!((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_26 = s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_28 = s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_26 = true;
+                local_28 = true;
             }
-            bool _e104 = local_26;
+            bool _e104 = local_28;
             if (_e104) {
-                local_27 = s_7.phase_param_a == 0.0;
+                local_29 = s_7.phase_param_a == 0.0;
             } else {
-                local_27 = false;
+                local_29 = false;
             }
-            bool _e111 = local_27;
-            local_25 = _e111;
+            bool _e111 = local_29;
+            local_27 = _e111;
         } else {
-            local_25 = true;
+            local_27 = true;
         }
-        bool _e113 = local_25;
-        local_24 = _e113;
+        bool _e113 = local_27;
+        local_26 = _e113;
     } else {
-        local_24 = false;
+        local_26 = false;
     }
-    bool isotropic_1 = local_24;
+    bool isotropic_1 = local_26;
     float prefactor = ((2.0 * s_7.sigma_s) * s_7.intensity) / h_1;
     if (t0_ < x_h) {
         float a_s = (x_h - t0_) / h_1;
         t_end = x_h;
         if (!(g_7.t_hi_infinite)) {
-            local_28 = t1_ < x_h;
+            local_30 = t1_ < x_h;
         } else {
-            local_28 = false;
+            local_30 = false;
         }
-        bool _e134 = local_28;
+        bool _e134 = local_30;
         if (_e134) {
             t_end = t1_;
         }
@@ -2343,11 +2374,11 @@ AirlightResult airlight_in_scatter_canonical(
         total_2 = _e158 + ((prefactor * metal::exp(-(big_h_1) * _e138)) * _e157);
     }
     if (!(g_7.t_hi_infinite)) {
-        local_29 = t1_ > x_h;
+        local_31 = t1_ > x_h;
     } else {
-        local_29 = true;
+        local_31 = true;
     }
-    bool _e171 = local_29;
+    bool _e171 = local_31;
     if (_e171) {
         float t_start = metal::max(t0_, x_h);
         float a_s_1 = (t_start - x_h) / h_1;
@@ -2356,11 +2387,11 @@ AirlightResult airlight_in_scatter_canonical(
         dy = _e176;
         float a_e_1 = (t1_ - x_h) / h_1;
         if (!(g_7.t_hi_infinite)) {
-            local_30 = a_e_1 < 1000000000000000000000000000000.0;
+            local_32 = a_e_1 < 1000000000000000000000000000000.0;
         } else {
-            local_30 = false;
+            local_32 = false;
         }
-        bool _e193 = local_30;
+        bool _e193 = local_32;
         if (_e193) {
             float _e194 = airlight_bounded(a_e_1);
             y_lo = _e194;
@@ -2387,23 +2418,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_31 = {};
-    bool local_32 = {};
+    bool local_33 = {};
+    bool local_34 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_31 = _e6;
+        local_33 = _e6;
     } else {
-        local_31 = false;
+        local_33 = false;
     }
-    bool _e8 = local_31;
+    bool _e8 = local_33;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_32 = _e12;
+        local_34 = _e12;
     } else {
-        local_32 = false;
+        local_34 = false;
     }
-    bool _e14 = local_32;
+    bool _e14 = local_34;
     return _e14;
 }
 
@@ -2417,11 +2448,17 @@ float airlight_safe_length(
     return m_4 * metal::length(v_1 / metal::float3(m_4));
 }
 
+metal::float3 airlight_normalize(
+    metal::float3 v_2
+) {
+    float m_5 = metal::max(metal::abs(v_2.x), metal::max(metal::abs(v_2.y), metal::abs(v_2.z)));
+    metal::float3 u = v_2 / metal::float3(m_5);
+    return u / metal::float3(metal::length(u));
+}
+
 bool airlight_valid(
     AirlightScene s_8
 ) {
-    bool local_33 = {};
-    bool local_34 = {};
     bool local_35 = {};
     bool local_36 = {};
     bool local_37 = {};
@@ -2430,9 +2467,9 @@ bool airlight_valid(
     bool local_40 = {};
     bool local_41 = {};
     bool local_42 = {};
-    bool ok = {};
     bool local_43 = {};
     bool local_44 = {};
+    bool ok = {};
     bool local_45 = {};
     bool local_46 = {};
     bool local_47 = {};
@@ -2448,162 +2485,164 @@ bool airlight_valid(
     bool local_57 = {};
     bool local_58 = {};
     bool local_59 = {};
+    bool local_60 = {};
+    bool local_61 = {};
     bool _e2 = airlight_vec_finite(s_8.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_8.dir);
-        local_33 = _e6;
-    } else {
-        local_33 = false;
-    }
-    bool _e8 = local_33;
-    if (_e8) {
-        float _e12 = airlight_safe_length(s_8.dir);
-        local_34 = _e12 > 0.0;
-    } else {
-        local_34 = false;
-    }
-    bool _e16 = local_34;
-    if (_e16) {
-        bool _e20 = airlight_is_finite(s_8.t_min);
-        local_35 = _e20;
+        local_35 = _e6;
     } else {
         local_35 = false;
     }
-    bool _e22 = local_35;
-    if (_e22) {
-        bool _e26 = airlight_vec_finite(s_8.light_position);
-        local_36 = _e26;
+    bool _e8 = local_35;
+    if (_e8) {
+        float _e12 = airlight_safe_length(s_8.dir);
+        local_36 = _e12 > 0.0;
     } else {
         local_36 = false;
     }
-    bool _e28 = local_36;
-    if (_e28) {
-        bool _e32 = airlight_is_finite(s_8.intensity);
-        local_37 = _e32;
+    bool _e16 = local_36;
+    if (_e16) {
+        bool _e20 = airlight_is_finite(s_8.t_min);
+        local_37 = _e20;
     } else {
         local_37 = false;
     }
-    bool _e34 = local_37;
-    if (_e34) {
-        local_38 = s_8.intensity >= 0.0;
+    bool _e22 = local_37;
+    if (_e22) {
+        bool _e26 = airlight_vec_finite(s_8.light_position);
+        local_38 = _e26;
     } else {
         local_38 = false;
     }
-    bool _e41 = local_38;
-    if (_e41) {
-        bool _e45 = airlight_is_finite(s_8.sigma_s);
-        local_39 = _e45;
+    bool _e28 = local_38;
+    if (_e28) {
+        bool _e32 = airlight_is_finite(s_8.intensity);
+        local_39 = _e32;
     } else {
         local_39 = false;
     }
-    bool _e47 = local_39;
-    if (_e47) {
-        local_40 = s_8.sigma_s >= 0.0;
+    bool _e34 = local_39;
+    if (_e34) {
+        local_40 = s_8.intensity >= 0.0;
     } else {
         local_40 = false;
     }
-    bool _e54 = local_40;
-    if (_e54) {
-        bool _e58 = airlight_is_finite(s_8.sigma_t);
-        local_41 = _e58;
+    bool _e41 = local_40;
+    if (_e41) {
+        bool _e45 = airlight_is_finite(s_8.sigma_s);
+        local_41 = _e45;
     } else {
         local_41 = false;
     }
-    bool _e60 = local_41;
-    if (_e60) {
-        local_42 = s_8.sigma_t >= 0.0;
+    bool _e47 = local_41;
+    if (_e47) {
+        local_42 = s_8.sigma_s >= 0.0;
     } else {
         local_42 = false;
     }
-    bool _e67 = local_42;
+    bool _e54 = local_42;
+    if (_e54) {
+        bool _e58 = airlight_is_finite(s_8.sigma_t);
+        local_43 = _e58;
+    } else {
+        local_43 = false;
+    }
+    bool _e60 = local_43;
+    if (_e60) {
+        local_44 = s_8.sigma_t >= 0.0;
+    } else {
+        local_44 = false;
+    }
+    bool _e67 = local_44;
     ok = _e67;
     if ((s_8.flags & 1u) == 0u) {
         bool _e74 = ok;
         if (_e74) {
             bool _e78 = airlight_is_finite(s_8.t_max);
-            local_43 = _e78;
+            local_45 = _e78;
         } else {
-            local_43 = false;
+            local_45 = false;
         }
-        bool _e80 = local_43;
+        bool _e80 = local_45;
         if (_e80) {
-            local_44 = s_8.t_min <= s_8.t_max;
+            local_46 = s_8.t_min <= s_8.t_max;
         } else {
-            local_44 = false;
+            local_46 = false;
         }
-        bool _e87 = local_44;
+        bool _e87 = local_46;
         ok = _e87;
     }
     if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         bool _e91 = ok;
         if (_e91) {
             bool _e95 = airlight_vec_finite(s_8.light_axis);
-            local_45 = _e95;
-        } else {
-            local_45 = false;
-        }
-        bool _e97 = local_45;
-        if (_e97) {
-            float _e101 = airlight_safe_length(s_8.light_axis);
-            local_46 = _e101 > 0.0;
-        } else {
-            local_46 = false;
-        }
-        bool _e105 = local_46;
-        if (_e105) {
-            local_47 = s_8.light_param_a >= 0.0;
+            local_47 = _e95;
         } else {
             local_47 = false;
         }
-        bool _e112 = local_47;
-        if (_e112) {
-            local_48 = s_8.light_param_a <= 1024.0;
+        bool _e97 = local_47;
+        if (_e97) {
+            float _e101 = airlight_safe_length(s_8.light_axis);
+            local_48 = _e101 > 0.0;
         } else {
             local_48 = false;
         }
-        bool _e119 = local_48;
-        if (_e119) {
-            local_49 = metal::fract(s_8.light_param_a * 0.5) == 0.0;
+        bool _e105 = local_48;
+        if (_e105) {
+            local_49 = s_8.light_param_a >= 0.0;
         } else {
             local_49 = false;
         }
-        bool _e129 = local_49;
+        bool _e112 = local_49;
+        if (_e112) {
+            local_50 = s_8.light_param_a <= 1024.0;
+        } else {
+            local_50 = false;
+        }
+        bool _e119 = local_50;
+        if (_e119) {
+            local_51 = metal::fract(s_8.light_param_a * 0.5) == 0.0;
+        } else {
+            local_51 = false;
+        }
+        bool _e129 = local_51;
         ok = _e129;
     } else {
         if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e133 = ok;
             if (_e133) {
                 bool _e137 = airlight_vec_finite(s_8.light_axis);
-                local_50 = _e137;
-            } else {
-                local_50 = false;
-            }
-            bool _e139 = local_50;
-            if (_e139) {
-                float _e143 = airlight_safe_length(s_8.light_axis);
-                local_51 = _e143 > 0.0;
-            } else {
-                local_51 = false;
-            }
-            bool _e147 = local_51;
-            if (_e147) {
-                local_52 = s_8.light_param_b < s_8.light_param_a;
+                local_52 = _e137;
             } else {
                 local_52 = false;
             }
-            bool _e154 = local_52;
-            if (_e154) {
-                local_53 = s_8.light_param_b >= -1.0;
+            bool _e139 = local_52;
+            if (_e139) {
+                float _e143 = airlight_safe_length(s_8.light_axis);
+                local_53 = _e143 > 0.0;
             } else {
                 local_53 = false;
             }
-            bool _e161 = local_53;
-            if (_e161) {
-                local_54 = s_8.light_param_a <= 1.0;
+            bool _e147 = local_53;
+            if (_e147) {
+                local_54 = s_8.light_param_b < s_8.light_param_a;
             } else {
                 local_54 = false;
             }
-            bool _e168 = local_54;
+            bool _e154 = local_54;
+            if (_e154) {
+                local_55 = s_8.light_param_b >= -1.0;
+            } else {
+                local_55 = false;
+            }
+            bool _e161 = local_55;
+            if (_e161) {
+                local_56 = s_8.light_param_a <= 1.0;
+            } else {
+                local_56 = false;
+            }
+            bool _e168 = local_56;
             ok = _e168;
         } else {
             if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2622,40 +2661,40 @@ bool airlight_valid(
         case 4u: {
             bool _e178 = ok;
             if (_e178) {
-                local_55 = g_ok;
+                local_57 = g_ok;
             } else {
-                local_55 = false;
+                local_57 = false;
             }
-            bool _e182 = local_55;
+            bool _e182 = local_57;
             ok = _e182;
             break;
         }
         case 5u: {
             bool _e183 = ok;
             if (_e183) {
-                local_56 = g_ok;
-            } else {
-                local_56 = false;
-            }
-            bool _e187 = local_56;
-            if (_e187) {
-                local_57 = metal::abs(s_8.phase_param_b) < 1.0;
-            } else {
-                local_57 = false;
-            }
-            bool _e195 = local_57;
-            if (_e195) {
-                local_58 = s_8.phase_param_c >= 0.0;
+                local_58 = g_ok;
             } else {
                 local_58 = false;
             }
-            bool _e202 = local_58;
-            if (_e202) {
-                local_59 = s_8.phase_param_c <= 1.0;
+            bool _e187 = local_58;
+            if (_e187) {
+                local_59 = metal::abs(s_8.phase_param_b) < 1.0;
             } else {
                 local_59 = false;
             }
-            bool _e209 = local_59;
+            bool _e195 = local_59;
+            if (_e195) {
+                local_60 = s_8.phase_param_c >= 0.0;
+            } else {
+                local_60 = false;
+            }
+            bool _e202 = local_60;
+            if (_e202) {
+                local_61 = s_8.phase_param_c <= 1.0;
+            } else {
+                local_61 = false;
+            }
+            bool _e209 = local_61;
             ok = _e209;
             break;
         }
@@ -2673,24 +2712,23 @@ AirlightCanonical airlight_canonical(
 ) {
     metal::float3 a_6 = metal::float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    float _e3 = airlight_safe_length(s_9.dir);
-    metal::float3 d_1 = s_9.dir / metal::float3(_e3);
+    metal::float3 _e2 = airlight_normalize(s_9.dir);
     if (s_9.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        float _e16 = airlight_safe_length(s_9.light_axis);
-        a_6 = s_9.light_axis / metal::float3(_e16);
+        metal::float3 _e12 = airlight_normalize(s_9.light_axis);
+        a_6 = _e12;
     }
     metal::float3 to_light = s_9.light_position - s_9.origin;
-    float x_h_1 = metal::dot(to_light, d_1);
-    metal::float3 perp = (x_h_1 * d_1) - to_light;
-    float _e25 = airlight_safe_length(perp);
-    if (_e25 > 0.0) {
-        metal::float3 _e30 = a_6;
-        d_c_1 = metal::dot(perp, _e30) / _e25;
+    float x_h_1 = metal::dot(to_light, _e2);
+    metal::float3 perp = (x_h_1 * _e2) - to_light;
+    float _e19 = airlight_safe_length(perp);
+    if (_e19 > 0.0) {
+        metal::float3 _e24 = a_6;
+        d_c_1 = metal::dot(perp, _e24) / _e19;
     }
     bool infinite_1 = (s_9.flags & 1u) != 0u;
-    metal::float3 _e38 = a_6;
-    float _e40 = d_c_1;
-    return AirlightCanonical {_e25, x_h_1, metal::dot(d_1, _e38), _e40, s_9.t_min, infinite_1 ? 0.0 : s_9.t_max, infinite_1};
+    metal::float3 _e32 = a_6;
+    float _e34 = d_c_1;
+    return AirlightCanonical {_e19, x_h_1, metal::dot(_e2, _e32), _e34, s_9.t_min, infinite_1 ? 0.0 : s_9.t_max, infinite_1};
 }
 
 AirlightResult airlight_in_scatter(

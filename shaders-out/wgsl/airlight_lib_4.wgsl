@@ -1004,8 +1004,9 @@ fn airlight_n1_log_part(v_s: f32, v_e: f32, v_e_infinite: bool) -> f32 {
 fn airlight_t_moments(half_1: AirlightHalf, count_1: u32, out_1: ptr<function, array<f32, 16>>) {
     var s_s: array<f32, 16>;
     var s_e: array<f32, 16>;
-    var decay: f32 = 0f;
     var local_3: bool;
+    var decay: f32 = 0f;
+    var local_4: bool;
     var p_hi: f32;
     var p_lo: f32;
     var order: u32 = 2u;
@@ -1015,46 +1016,52 @@ fn airlight_t_moments(half_1: AirlightHalf, count_1: u32, out_1: ptr<function, a
     let _e5 = airlight_zero_scratch();
     s_e = _e5;
     airlight_en_scaled((half_1.big_h / half_1.y_hi), count_1, (&s_s));
-    let far_end = (half_1.y_lo > 0f);
-    if far_end {
-        local_3 = !(half_1.dv_infinite);
+    if (half_1.y_lo > 0f) {
+        let _e18 = airlight_is_finite((half_1.big_h / half_1.y_lo));
+        local_3 = _e18;
     } else {
         local_3 = false;
     }
-    let _e20 = local_3;
-    if _e20 {
+    let far_end = local_3;
+    if far_end {
+        local_4 = !(half_1.dv_infinite);
+    } else {
+        local_4 = false;
+    }
+    let _e28 = local_4;
+    if _e28 {
         decay = exp((-(half_1.big_h) * half_1.dv));
         airlight_en_scaled((half_1.big_h / half_1.y_lo), count_1, (&s_e));
     }
     p_hi = half_1.y_hi;
     p_lo = half_1.y_lo;
     loop {
-        let _e35 = order;
-        if (_e35 < AIRLIGHT_SCRATCH) {
+        let _e43 = order;
+        if (_e43 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            let _e38 = order;
-            if (_e38 <= count_1) {
-                let _e40 = order;
-                let _e44 = p_hi;
-                let _e45 = order;
-                let _e49 = s_s[(_e45 - 1u)];
-                let _e51 = p_lo;
-                let _e52 = order;
-                let _e56 = s_e[(_e52 - 1u)];
-                let _e58 = decay;
-                (*out_1)[(_e40 - 1u)] = ((_e44 * _e49) - ((_e51 * _e56) * _e58));
-                let _e61 = p_hi;
-                p_hi = (_e61 * half_1.y_hi);
-                let _e64 = p_lo;
-                p_lo = (_e64 * half_1.y_lo);
+            let _e46 = order;
+            if (_e46 <= count_1) {
+                let _e48 = order;
+                let _e52 = p_hi;
+                let _e53 = order;
+                let _e57 = s_s[(_e53 - 1u)];
+                let _e59 = p_lo;
+                let _e60 = order;
+                let _e64 = s_e[(_e60 - 1u)];
+                let _e66 = decay;
+                (*out_1)[(_e48 - 1u)] = ((_e52 * _e57) - ((_e59 * _e64) * _e66));
+                let _e69 = p_hi;
+                p_hi = (_e69 * half_1.y_hi);
+                let _e72 = p_lo;
+                p_lo = (_e72 * half_1.y_lo);
             }
         }
         continuing {
-            let _e68 = order;
-            order = (_e68 + 1u);
+            let _e76 = order;
+            order = (_e76 + 1u);
         }
     }
     return;
@@ -1096,17 +1103,18 @@ fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
 }
 
 fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
-    var local_4: bool;
-    var v_e_1: f32;
     var local_5: bool;
+    var v_e_1: f32;
     var local_6: bool;
     var local_7: bool;
+    var local_8: bool;
     var d_im: f32 = 0f;
     var d_re: f32 = 0f;
     var n1_: f32 = 0f;
     var n1_1: f32 = 0f;
     var s_e_1: vec2<f32> = vec2<f32>(0f, 0f);
     var decay_1: f32 = 0f;
+    var local_9: bool;
     var n1_2: f32 = 0f;
     var e_s: array<f32, 16>;
     var tail: f32 = 0f;
@@ -1115,18 +1123,18 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     let big_h = half_3.big_h;
     let v_s_1 = select(half_3.y_lo, (1f / half_3.y_hi), half_3.second);
     if half_3.second {
-        local_4 = (half_3.y_lo == 0f);
-    } else {
-        local_4 = false;
-    }
-    let v_e_infinite_1 = local_4;
-    v_e_1 = half_3.y_hi;
-    if half_3.second {
-        local_5 = !(v_e_infinite_1);
+        local_5 = (half_3.y_lo == 0f);
     } else {
         local_5 = false;
     }
-    let _e24 = local_5;
+    let v_e_infinite_1 = local_5;
+    v_e_1 = half_3.y_hi;
+    if half_3.second {
+        local_6 = !(v_e_infinite_1);
+    } else {
+        local_6 = false;
+    }
+    let _e24 = local_6;
     if _e24 {
         v_e_1 = (1f / half_3.y_lo);
     }
@@ -1134,16 +1142,16 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
         if !(v_e_infinite_1) {
             let _e36 = v_e_1;
             let _e37 = v_e_1;
-            local_7 = ((big_h * sqrt((1f + (_e36 * _e37)))) <= 1f);
+            local_8 = ((big_h * sqrt((1f + (_e36 * _e37)))) <= 1f);
         } else {
-            local_7 = false;
+            local_8 = false;
         }
-        let _e46 = local_7;
-        local_6 = _e46;
+        let _e46 = local_8;
+        local_7 = _e46;
     } else {
-        local_6 = true;
+        local_7 = true;
     }
-    let near = local_6;
+    let near = local_7;
     if near {
         if !(v_e_infinite_1) {
             let _e55 = v_e_1;
@@ -1203,42 +1211,50 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     }
     let _e155 = airlight_e1_scaled(vec2<f32>((big_h * v_s_1), -(big_h)));
     if !(v_e_infinite_1) {
-        let _e163 = v_e_1;
-        let _e167 = airlight_e1_scaled(vec2<f32>((big_h * _e163), -(big_h)));
-        s_e_1 = _e167;
+        let _e165 = v_e_1;
+        let _e167 = airlight_is_finite((big_h * _e165));
+        local_9 = _e167;
+    } else {
+        local_9 = false;
+    }
+    let far_finite = local_9;
+    if far_finite {
+        let _e170 = v_e_1;
+        let _e174 = airlight_e1_scaled(vec2<f32>((big_h * _e170), -(big_h)));
+        s_e_1 = _e174;
         decay_1 = exp((-(big_h) * half_3.dv));
     }
-    let _e172 = s_e_1;
-    let _e173 = decay_1;
-    let c_5 = (_e155 - (_e172 * _e173));
+    let _e179 = s_e_1;
+    let _e180 = decay_1;
+    let c_5 = (_e155 - (_e179 * _e180));
     if !(half_3.second) {
         return c_5;
     }
     if with_re {
         if (half_3.y_hi <= 0.25f) {
-            let _e183 = airlight_n1_series(half_3);
-            n1_2 = _e183;
+            let _e190 = airlight_n1_series(half_3);
+            n1_2 = _e190;
         } else {
-            let _e184 = airlight_zero_scratch();
-            e_s = _e184;
+            let _e191 = airlight_zero_scratch();
+            e_s = _e191;
             airlight_en_scaled((big_h * v_s_1), 1u, (&e_s));
-            if !(v_e_infinite_1) {
-                let _e191 = airlight_zero_scratch();
-                e_e = _e191;
-                let _e193 = v_e_1;
-                airlight_en_scaled((big_h * _e193), 1u, (&e_e));
-                let _e197 = e_e[0];
-                let _e199 = s_e_1.x;
-                let _e201 = decay_1;
-                tail = ((_e197 - _e199) * _e201);
+            if far_finite {
+                let _e197 = airlight_zero_scratch();
+                e_e = _e197;
+                let _e199 = v_e_1;
+                airlight_en_scaled((big_h * _e199), 1u, (&e_e));
+                let _e203 = e_e[0];
+                let _e205 = s_e_1.x;
+                let _e207 = decay_1;
+                tail = ((_e203 - _e205) * _e207);
             }
-            let _e204 = e_s[0];
-            let _e207 = tail;
-            n1_2 = ((_e204 - _e155.x) - _e207);
+            let _e210 = e_s[0];
+            let _e213 = tail;
+            n1_2 = ((_e210 - _e155.x) - _e213);
         }
     }
-    let _e209 = n1_2;
-    return vec2<f32>(_e209, c_5.y);
+    let _e215 = n1_2;
+    return vec2<f32>(_e215, c_5.y);
 }
 
 fn airlight_phi_moments(x_6: f32) -> array<f32, 4> {
@@ -1386,10 +1402,10 @@ fn airlight_binomial_shift(x_7: array<f32, 4>, c_2: f32) -> array<f32, 4> {
 
 fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
     var m_1: array<f32, 4>;
-    var local_8: bool;
-    var local_9: bool;
     var local_10: bool;
     var local_11: bool;
+    var local_12: bool;
+    var local_13: bool;
     var r_1: array<f32, 4>;
     var t_4: array<f32, 16>;
     var x_8: array<f32, 4>;
@@ -1407,29 +1423,29 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
         return _e8;
     }
     if !(half_4.dv_infinite) {
-        local_8 = ((half_4.big_h * half_4.dv) <= 1f);
+        local_10 = ((half_4.big_h * half_4.dv) <= 1f);
     } else {
-        local_8 = false;
+        local_10 = false;
     }
-    let short_exp = local_8;
+    let short_exp = local_10;
     if (half_4.dy <= 0.25f) {
         if !(!(half_4.second)) {
-            local_10 = (half_4.dy <= (half_4.y_lo * 0.5f));
+            local_12 = (half_4.dy <= (half_4.y_lo * 0.5f));
         } else {
-            local_10 = true;
+            local_12 = true;
         }
-        let _e36 = local_10;
-        local_9 = _e36;
-    } else {
-        local_9 = false;
-    }
-    let short_len = local_9;
-    if short_exp {
-        local_11 = short_len;
+        let _e36 = local_12;
+        local_11 = _e36;
     } else {
         local_11 = false;
     }
-    let _e42 = local_11;
+    let short_len = local_11;
+    if short_exp {
+        local_13 = short_len;
+    } else {
+        local_13 = false;
+    }
+    let _e42 = local_13;
     if _e42 {
         let _e43 = airlight_moments_gauss(half_4);
         return _e43;
@@ -1563,7 +1579,7 @@ fn airlight_piece(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half
 
 fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
     var parts: f32 = 1f;
-    var local_12: bool;
+    var local_14: bool;
     var total: f32 = 0f;
     var i_10: u32 = 0u;
     var hi: f32;
@@ -1572,11 +1588,11 @@ fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
     var inf: bool;
 
     if (piece.dy <= 0.25f) {
-        local_12 = (piece.big_h > 0f);
+        local_14 = (piece.big_h > 0f);
     } else {
-        local_12 = false;
+        local_14 = false;
     }
-    let _e15 = local_12;
+    let _e15 = local_14;
     if _e15 {
         if piece.dv_infinite {
             parts = 8f;
@@ -1675,19 +1691,21 @@ fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32>
 
 fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
+    var k_in: f32;
+    var k_out: f32;
     var i_11: u32 = 0u;
-    var local_13: bool;
+    var local_15: bool;
     var i_12: u32 = 0u;
     var j_7: u32;
     var total_1: f32 = 0f;
     var lo: f32;
     var i_13: u32 = 0u;
     var hi_1: f32;
-    var local_14: bool;
+    var local_16: bool;
     var dv_2: f32;
     var offset_1: f32;
     var inf_1: bool;
-    var local_15: bool;
+    var local_17: bool;
 
     if isotropic {
         let _e6 = airlight_moments(half_6, 1u);
@@ -1695,178 +1713,191 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
         return (_e12 * _e6[0]);
     }
     if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        let _e27 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_a);
-        let _e31 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, s_5.light_param_b);
-        cuts = array<f32, 4>(_e27.x, _e27.y, _e31.x, _e31.y);
+        k_in = s_5.light_param_a;
+        k_out = s_5.light_param_b;
+        let _e28 = k_in;
+        let _e29 = k_out;
+        let width_1 = (_e28 - _e29);
+        if (width_1 <= AIRLIGHT_FLT_EPS) {
+            let _e33 = k_out;
+            k_in = (_e33 + (width_1 * 0.5f));
+            let _e37 = k_in;
+            k_out = _e37;
+        }
+        let _e40 = k_in;
+        let _e41 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e40);
+        let _e44 = k_out;
+        let _e45 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e44);
+        cuts = array<f32, 4>(_e41.x, _e41.y, _e45.x, _e45.y);
         loop {
-            let _e39 = i_11;
-            if (_e39 < 4u) {
+            let _e53 = i_11;
+            if (_e53 < 4u) {
             } else {
                 break;
             }
             {
-                let _e42 = i_11;
-                let _e44 = cuts[_e42];
-                if (_e44 > half_6.y_lo) {
-                    let _e49 = i_11;
-                    let _e51 = cuts[_e49];
-                    local_13 = (_e51 < half_6.y_hi);
+                let _e56 = i_11;
+                let _e58 = cuts[_e56];
+                if (_e58 > half_6.y_lo) {
+                    let _e63 = i_11;
+                    let _e65 = cuts[_e63];
+                    local_15 = (_e65 < half_6.y_hi);
                 } else {
-                    local_13 = false;
+                    local_15 = false;
                 }
-                let _e55 = local_13;
-                if !(_e55) {
-                    let _e57 = i_11;
-                    cuts[_e57] = 2f;
+                let _e69 = local_15;
+                if !(_e69) {
+                    let _e71 = i_11;
+                    cuts[_e71] = 2f;
                 }
             }
             continuing {
-                let _e61 = i_11;
-                i_11 = (_e61 + 1u);
+                let _e75 = i_11;
+                i_11 = (_e75 + 1u);
             }
         }
         loop {
-            let _e65 = i_12;
-            if (_e65 < 3u) {
+            let _e79 = i_12;
+            if (_e79 < 3u) {
             } else {
                 break;
             }
             {
                 j_7 = 0u;
                 loop {
-                    let _e70 = j_7;
-                    let _e72 = i_12;
-                    if (_e70 < (3u - _e72)) {
+                    let _e84 = j_7;
+                    let _e86 = i_12;
+                    if (_e84 < (3u - _e86)) {
                     } else {
                         break;
                     }
                     {
-                        let _e75 = j_7;
-                        let _e77 = cuts[_e75];
-                        let _e78 = j_7;
-                        let _e82 = cuts[(_e78 + 1u)];
-                        if (_e77 > _e82) {
-                            let _e84 = j_7;
-                            let t_7 = cuts[_e84];
-                            let _e87 = j_7;
-                            let _e89 = j_7;
-                            let _e93 = cuts[(_e89 + 1u)];
-                            cuts[_e87] = _e93;
-                            let _e94 = j_7;
-                            cuts[(_e94 + 1u)] = t_7;
+                        let _e89 = j_7;
+                        let _e91 = cuts[_e89];
+                        let _e92 = j_7;
+                        let _e96 = cuts[(_e92 + 1u)];
+                        if (_e91 > _e96) {
+                            let _e98 = j_7;
+                            let t_7 = cuts[_e98];
+                            let _e101 = j_7;
+                            let _e103 = j_7;
+                            let _e107 = cuts[(_e103 + 1u)];
+                            cuts[_e101] = _e107;
+                            let _e108 = j_7;
+                            cuts[(_e108 + 1u)] = t_7;
                         }
                     }
                     continuing {
-                        let _e99 = j_7;
-                        j_7 = (_e99 + 1u);
+                        let _e113 = j_7;
+                        j_7 = (_e113 + 1u);
                     }
                 }
             }
             continuing {
-                let _e102 = i_12;
-                i_12 = (_e102 + 1u);
+                let _e116 = i_12;
+                i_12 = (_e116 + 1u);
             }
         }
     }
-    let _e105 = cuts[0];
-    if (_e105 >= 2f) {
-        let _e108 = airlight_piece(s_5, g_5, sigma_5, half_6);
-        return _e108;
+    let _e119 = cuts[0];
+    if (_e119 >= 2f) {
+        let _e122 = airlight_piece(s_5, g_5, sigma_5, half_6);
+        return _e122;
     }
     lo = half_6.y_lo;
     loop {
-        let _e115 = i_13;
-        if (_e115 < 5u) {
+        let _e129 = i_13;
+        if (_e129 < 5u) {
         } else {
             break;
         }
         {
             hi_1 = half_6.y_hi;
-            let _e120 = i_13;
-            if (_e120 < 4u) {
-                let _e125 = i_13;
-                let _e127 = cuts[_e125];
-                local_14 = (_e127 < 2f);
+            let _e134 = i_13;
+            if (_e134 < 4u) {
+                let _e139 = i_13;
+                let _e141 = cuts[_e139];
+                local_16 = (_e141 < 2f);
             } else {
-                local_14 = false;
+                local_16 = false;
             }
-            let _e131 = local_14;
-            if _e131 {
-                let _e132 = i_13;
-                let _e134 = cuts[_e132];
-                hi_1 = _e134;
+            let _e145 = local_16;
+            if _e145 {
+                let _e146 = i_13;
+                let _e148 = cuts[_e146];
+                hi_1 = _e148;
             }
-            let _e135 = hi_1;
-            let _e136 = lo;
-            if (_e135 > _e136) {
-                let _e138 = hi_1;
-                let _e139 = lo;
-                let dy_2 = (_e138 - _e139);
+            let _e149 = hi_1;
+            let _e150 = lo;
+            if (_e149 > _e150) {
+                let _e152 = hi_1;
+                let _e153 = lo;
+                let dy_2 = (_e152 - _e153);
                 dv_2 = dy_2;
-                let _e142 = lo;
-                offset_1 = (_e142 - half_6.y_lo);
+                let _e156 = lo;
+                offset_1 = (_e156 - half_6.y_lo);
                 inf_1 = false;
                 if half_6.second {
-                    let _e149 = lo;
-                    if (_e149 == 0f) {
+                    let _e163 = lo;
+                    if (_e163 == 0f) {
                         inf_1 = true;
                         dv_2 = 0f;
                     } else {
-                        let _e154 = lo;
-                        let _e155 = hi_1;
-                        dv_2 = (dy_2 / (_e154 * _e155));
+                        let _e168 = lo;
+                        let _e169 = hi_1;
+                        dv_2 = (dy_2 / (_e168 * _e169));
                     }
-                    let _e159 = hi_1;
-                    let _e161 = hi_1;
-                    offset_1 = ((half_6.y_hi - _e159) / (_e161 * half_6.y_hi));
+                    let _e173 = hi_1;
+                    let _e175 = hi_1;
+                    offset_1 = ((half_6.y_hi - _e173) / (_e175 * half_6.y_hi));
                 }
-                let _e167 = lo;
-                let _e168 = hi_1;
-                let _e169 = dv_2;
-                let _e170 = inf_1;
-                let piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e167, _e168, dy_2, _e169, _e170);
-                let _e172 = total_1;
-                let _e175 = offset_1;
-                let _e178 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
-                total_1 = (_e172 + (exp((-(half_6.big_h) * _e175)) * _e178));
-                let _e181 = hi_1;
-                lo = _e181;
+                let _e181 = lo;
+                let _e182 = hi_1;
+                let _e183 = dv_2;
+                let _e184 = inf_1;
+                let piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e181, _e182, dy_2, _e183, _e184);
+                let _e186 = total_1;
+                let _e189 = offset_1;
+                let _e192 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
+                total_1 = (_e186 + (exp((-(half_6.big_h) * _e189)) * _e192));
+                let _e195 = hi_1;
+                lo = _e195;
             }
-            let _e182 = i_13;
-            if (_e182 < 4u) {
-                let _e187 = i_13;
-                let _e189 = cuts[_e187];
-                local_15 = (_e189 >= 2f);
+            let _e196 = i_13;
+            if (_e196 < 4u) {
+                let _e201 = i_13;
+                let _e203 = cuts[_e201];
+                local_17 = (_e203 >= 2f);
             } else {
-                local_15 = false;
+                local_17 = false;
             }
-            let _e193 = local_15;
-            if _e193 {
+            let _e207 = local_17;
+            if _e207 {
                 break;
             }
         }
         continuing {
-            let _e195 = i_13;
-            i_13 = (_e195 + 1u);
+            let _e209 = i_13;
+            i_13 = (_e209 + 1u);
         }
     }
-    let _e197 = total_1;
-    return _e197;
+    let _e211 = total_1;
+    return _e211;
 }
 
 fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
-    var local_16: bool;
+    var local_18: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
     let k_13 = (s_6.sigma_s * s_6.intensity);
     if !(g_6.t_hi_infinite) {
-        local_16 = (g_6.x_h > g_6.t_hi);
+        local_18 = (g_6.x_h > g_6.t_hi);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    let _e13 = local_16;
+    let _e13 = local_18;
     if _e13 {
         let _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
         let _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
@@ -1904,42 +1935,42 @@ fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
 }
 
 fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> AirlightResult {
-    var local_17: bool;
-    var local_18: bool;
     var local_19: bool;
     var local_20: bool;
-    var gap: f32 = 0f;
     var local_21: bool;
     var local_22: bool;
+    var gap: f32 = 0f;
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
     var local_27: bool;
-    var total_2: f32 = 0f;
-    var t_end: f32;
     var local_28: bool;
     var local_29: bool;
+    var total_2: f32 = 0f;
+    var t_end: f32;
+    var local_30: bool;
+    var local_31: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite: bool = true;
-    var local_30: bool;
+    var local_32: bool;
 
     let t0_ = g_7.t_lo;
     let t1_ = g_7.t_hi;
     if !(g_7.t_hi_infinite) {
-        local_17 = (t1_ > t0_);
+        local_19 = (t1_ > t0_);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e10 = local_17;
+    let _e10 = local_19;
     if !(!(_e10)) {
-        local_18 = ((s_7.sigma_s * s_7.intensity) == 0f);
+        local_20 = ((s_7.sigma_s * s_7.intensity) == 0f);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    let _e21 = local_18;
+    let _e21 = local_20;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -1947,16 +1978,16 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     let x_h = g_7.x_h;
     if (t0_ <= x_h) {
         if !(g_7.t_hi_infinite) {
-            local_20 = (x_h <= t1_);
+            local_22 = (x_h <= t1_);
         } else {
-            local_20 = true;
+            local_22 = true;
         }
-        let _e36 = local_20;
-        local_19 = _e36;
+        let _e36 = local_22;
+        local_21 = _e36;
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    let inside = local_19;
+    let inside = local_21;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -1966,11 +1997,11 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     }
     if !(inside) {
         let _e48 = gap;
-        local_21 = (h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_23 = (h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_21 = false;
+        local_23 = false;
     }
-    let _e55 = local_21;
+    let _e55 = local_23;
     if _e55 {
         let _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -1981,50 +2012,50 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     let big_h_1 = (s_7.sigma_t * h_1);
     if !((s_7.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_23 = (s_7.light_param_a == 0f);
+            local_25 = (s_7.light_param_a == 0f);
         } else {
-            local_23 = false;
+            local_25 = false;
         }
-        let _e83 = local_23;
-        local_22 = _e83;
+        let _e83 = local_25;
+        local_24 = _e83;
     } else {
-        local_22 = true;
+        local_24 = true;
     }
-    let _e85 = local_22;
+    let _e85 = local_24;
     if _e85 {
         if !((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_26 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_28 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_26 = true;
+                local_28 = true;
             }
-            let _e104 = local_26;
+            let _e104 = local_28;
             if _e104 {
-                local_27 = (s_7.phase_param_a == 0f);
+                local_29 = (s_7.phase_param_a == 0f);
             } else {
-                local_27 = false;
+                local_29 = false;
             }
-            let _e111 = local_27;
-            local_25 = _e111;
+            let _e111 = local_29;
+            local_27 = _e111;
         } else {
-            local_25 = true;
+            local_27 = true;
         }
-        let _e113 = local_25;
-        local_24 = _e113;
+        let _e113 = local_27;
+        local_26 = _e113;
     } else {
-        local_24 = false;
+        local_26 = false;
     }
-    let isotropic_1 = local_24;
+    let isotropic_1 = local_26;
     let prefactor = (((2f * s_7.sigma_s) * s_7.intensity) / h_1);
     if (t0_ < x_h) {
         let a_s = ((x_h - t0_) / h_1);
         t_end = x_h;
         if !(g_7.t_hi_infinite) {
-            local_28 = (t1_ < x_h);
+            local_30 = (t1_ < x_h);
         } else {
-            local_28 = false;
+            local_30 = false;
         }
-        let _e134 = local_28;
+        let _e134 = local_30;
         if _e134 {
             t_end = t1_;
         }
@@ -2042,11 +2073,11 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         total_2 = (_e158 + ((prefactor * exp((-(big_h_1) * _e138))) * _e157));
     }
     if !(g_7.t_hi_infinite) {
-        local_29 = (t1_ > x_h);
+        local_31 = (t1_ > x_h);
     } else {
-        local_29 = true;
+        local_31 = true;
     }
-    let _e171 = local_29;
+    let _e171 = local_31;
     if _e171 {
         let t_start = max(t0_, x_h);
         let a_s_1 = ((t_start - x_h) / h_1);
@@ -2055,11 +2086,11 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         dy = _e176;
         let a_e_1 = ((t1_ - x_h) / h_1);
         if !(g_7.t_hi_infinite) {
-            local_30 = (a_e_1 < 1000000000000000000000000000000f);
+            local_32 = (a_e_1 < 1000000000000000000000000000000f);
         } else {
-            local_30 = false;
+            local_32 = false;
         }
-        let _e193 = local_30;
+        let _e193 = local_32;
         if _e193 {
             let _e194 = airlight_bounded(a_e_1);
             y_lo = _e194;
@@ -2084,24 +2115,24 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_31: bool;
-    var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_31 = _e6;
+        local_33 = _e6;
     } else {
-        local_31 = false;
+        local_33 = false;
     }
-    let _e8 = local_31;
+    let _e8 = local_33;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_32 = _e12;
+        local_34 = _e12;
     } else {
-        local_32 = false;
+        local_34 = false;
     }
-    let _e14 = local_32;
+    let _e14 = local_34;
     return _e14;
 }
 
@@ -2113,9 +2144,13 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
     return (m_4 * length((v_1 / vec3(m_4))));
 }
 
+fn airlight_normalize(v_2: vec3<f32>) -> vec3<f32> {
+    let m_5 = max(abs(v_2.x), max(abs(v_2.y), abs(v_2.z)));
+    let u = (v_2 / vec3(m_5));
+    return (u / vec3(length(u)));
+}
+
 fn airlight_valid(s_8: AirlightScene) -> bool {
-    var local_33: bool;
-    var local_34: bool;
     var local_35: bool;
     var local_36: bool;
     var local_37: bool;
@@ -2124,9 +2159,9 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
-    var ok: bool;
     var local_43: bool;
     var local_44: bool;
+    var ok: bool;
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
@@ -2142,163 +2177,165 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_57: bool;
     var local_58: bool;
     var local_59: bool;
+    var local_60: bool;
+    var local_61: bool;
 
     let _e2 = airlight_vec_finite(s_8.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_8.dir);
-        local_33 = _e6;
-    } else {
-        local_33 = false;
-    }
-    let _e8 = local_33;
-    if _e8 {
-        let _e12 = airlight_safe_length(s_8.dir);
-        local_34 = (_e12 > 0f);
-    } else {
-        local_34 = false;
-    }
-    let _e16 = local_34;
-    if _e16 {
-        let _e20 = airlight_is_finite(s_8.t_min);
-        local_35 = _e20;
+        local_35 = _e6;
     } else {
         local_35 = false;
     }
-    let _e22 = local_35;
-    if _e22 {
-        let _e26 = airlight_vec_finite(s_8.light_position);
-        local_36 = _e26;
+    let _e8 = local_35;
+    if _e8 {
+        let _e12 = airlight_safe_length(s_8.dir);
+        local_36 = (_e12 > 0f);
     } else {
         local_36 = false;
     }
-    let _e28 = local_36;
-    if _e28 {
-        let _e32 = airlight_is_finite(s_8.intensity);
-        local_37 = _e32;
+    let _e16 = local_36;
+    if _e16 {
+        let _e20 = airlight_is_finite(s_8.t_min);
+        local_37 = _e20;
     } else {
         local_37 = false;
     }
-    let _e34 = local_37;
-    if _e34 {
-        local_38 = (s_8.intensity >= 0f);
+    let _e22 = local_37;
+    if _e22 {
+        let _e26 = airlight_vec_finite(s_8.light_position);
+        local_38 = _e26;
     } else {
         local_38 = false;
     }
-    let _e41 = local_38;
-    if _e41 {
-        let _e45 = airlight_is_finite(s_8.sigma_s);
-        local_39 = _e45;
+    let _e28 = local_38;
+    if _e28 {
+        let _e32 = airlight_is_finite(s_8.intensity);
+        local_39 = _e32;
     } else {
         local_39 = false;
     }
-    let _e47 = local_39;
-    if _e47 {
-        local_40 = (s_8.sigma_s >= 0f);
+    let _e34 = local_39;
+    if _e34 {
+        local_40 = (s_8.intensity >= 0f);
     } else {
         local_40 = false;
     }
-    let _e54 = local_40;
-    if _e54 {
-        let _e58 = airlight_is_finite(s_8.sigma_t);
-        local_41 = _e58;
+    let _e41 = local_40;
+    if _e41 {
+        let _e45 = airlight_is_finite(s_8.sigma_s);
+        local_41 = _e45;
     } else {
         local_41 = false;
     }
-    let _e60 = local_41;
-    if _e60 {
-        local_42 = (s_8.sigma_t >= 0f);
+    let _e47 = local_41;
+    if _e47 {
+        local_42 = (s_8.sigma_s >= 0f);
     } else {
         local_42 = false;
     }
-    let _e67 = local_42;
+    let _e54 = local_42;
+    if _e54 {
+        let _e58 = airlight_is_finite(s_8.sigma_t);
+        local_43 = _e58;
+    } else {
+        local_43 = false;
+    }
+    let _e60 = local_43;
+    if _e60 {
+        local_44 = (s_8.sigma_t >= 0f);
+    } else {
+        local_44 = false;
+    }
+    let _e67 = local_44;
     ok = _e67;
     if ((s_8.flags & 1u) == 0u) {
         let _e74 = ok;
         if _e74 {
             let _e78 = airlight_is_finite(s_8.t_max);
-            local_43 = _e78;
+            local_45 = _e78;
         } else {
-            local_43 = false;
+            local_45 = false;
         }
-        let _e80 = local_43;
+        let _e80 = local_45;
         if _e80 {
-            local_44 = (s_8.t_min <= s_8.t_max);
+            local_46 = (s_8.t_min <= s_8.t_max);
         } else {
-            local_44 = false;
+            local_46 = false;
         }
-        let _e87 = local_44;
+        let _e87 = local_46;
         ok = _e87;
     }
     if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e91 = ok;
         if _e91 {
             let _e95 = airlight_vec_finite(s_8.light_axis);
-            local_45 = _e95;
-        } else {
-            local_45 = false;
-        }
-        let _e97 = local_45;
-        if _e97 {
-            let _e101 = airlight_safe_length(s_8.light_axis);
-            local_46 = (_e101 > 0f);
-        } else {
-            local_46 = false;
-        }
-        let _e105 = local_46;
-        if _e105 {
-            local_47 = (s_8.light_param_a >= 0f);
+            local_47 = _e95;
         } else {
             local_47 = false;
         }
-        let _e112 = local_47;
-        if _e112 {
-            local_48 = (s_8.light_param_a <= 1024f);
+        let _e97 = local_47;
+        if _e97 {
+            let _e101 = airlight_safe_length(s_8.light_axis);
+            local_48 = (_e101 > 0f);
         } else {
             local_48 = false;
         }
-        let _e119 = local_48;
-        if _e119 {
-            local_49 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        let _e105 = local_48;
+        if _e105 {
+            local_49 = (s_8.light_param_a >= 0f);
         } else {
             local_49 = false;
         }
-        let _e129 = local_49;
+        let _e112 = local_49;
+        if _e112 {
+            local_50 = (s_8.light_param_a <= 1024f);
+        } else {
+            local_50 = false;
+        }
+        let _e119 = local_50;
+        if _e119 {
+            local_51 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_51 = false;
+        }
+        let _e129 = local_51;
         ok = _e129;
     } else {
         if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e133 = ok;
             if _e133 {
                 let _e137 = airlight_vec_finite(s_8.light_axis);
-                local_50 = _e137;
-            } else {
-                local_50 = false;
-            }
-            let _e139 = local_50;
-            if _e139 {
-                let _e143 = airlight_safe_length(s_8.light_axis);
-                local_51 = (_e143 > 0f);
-            } else {
-                local_51 = false;
-            }
-            let _e147 = local_51;
-            if _e147 {
-                local_52 = (s_8.light_param_b < s_8.light_param_a);
+                local_52 = _e137;
             } else {
                 local_52 = false;
             }
-            let _e154 = local_52;
-            if _e154 {
-                local_53 = (s_8.light_param_b >= -1f);
+            let _e139 = local_52;
+            if _e139 {
+                let _e143 = airlight_safe_length(s_8.light_axis);
+                local_53 = (_e143 > 0f);
             } else {
                 local_53 = false;
             }
-            let _e161 = local_53;
-            if _e161 {
-                local_54 = (s_8.light_param_a <= 1f);
+            let _e147 = local_53;
+            if _e147 {
+                local_54 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_54 = false;
             }
-            let _e168 = local_54;
+            let _e154 = local_54;
+            if _e154 {
+                local_55 = (s_8.light_param_b >= -1f);
+            } else {
+                local_55 = false;
+            }
+            let _e161 = local_55;
+            if _e161 {
+                local_56 = (s_8.light_param_a <= 1f);
+            } else {
+                local_56 = false;
+            }
+            let _e168 = local_56;
             ok = _e168;
         } else {
             if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2313,39 +2350,39 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e178 = ok;
             if _e178 {
-                local_55 = g_ok;
+                local_57 = g_ok;
             } else {
-                local_55 = false;
+                local_57 = false;
             }
-            let _e182 = local_55;
+            let _e182 = local_57;
             ok = _e182;
         }
         case 5u: {
             let _e183 = ok;
             if _e183 {
-                local_56 = g_ok;
-            } else {
-                local_56 = false;
-            }
-            let _e187 = local_56;
-            if _e187 {
-                local_57 = (abs(s_8.phase_param_b) < 1f);
-            } else {
-                local_57 = false;
-            }
-            let _e195 = local_57;
-            if _e195 {
-                local_58 = (s_8.phase_param_c >= 0f);
+                local_58 = g_ok;
             } else {
                 local_58 = false;
             }
-            let _e202 = local_58;
-            if _e202 {
-                local_59 = (s_8.phase_param_c <= 1f);
+            let _e187 = local_58;
+            if _e187 {
+                local_59 = (abs(s_8.phase_param_b) < 1f);
             } else {
                 local_59 = false;
             }
-            let _e209 = local_59;
+            let _e195 = local_59;
+            if _e195 {
+                local_60 = (s_8.phase_param_c >= 0f);
+            } else {
+                local_60 = false;
+            }
+            let _e202 = local_60;
+            if _e202 {
+                local_61 = (s_8.phase_param_c <= 1f);
+            } else {
+                local_61 = false;
+            }
+            let _e209 = local_61;
             ok = _e209;
         }
         default: {
@@ -2360,24 +2397,23 @@ fn airlight_canonical(s_9: AirlightScene) -> AirlightCanonical {
     var a_6: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e3 = airlight_safe_length(s_9.dir);
-    let d_1 = (s_9.dir / vec3(_e3));
+    let _e2 = airlight_normalize(s_9.dir);
     if (s_9.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e16 = airlight_safe_length(s_9.light_axis);
-        a_6 = (s_9.light_axis / vec3(_e16));
+        let _e12 = airlight_normalize(s_9.light_axis);
+        a_6 = _e12;
     }
     let to_light = (s_9.light_position - s_9.origin);
-    let x_h_1 = dot(to_light, d_1);
-    let perp = ((x_h_1 * d_1) - to_light);
-    let _e25 = airlight_safe_length(perp);
-    if (_e25 > 0f) {
-        let _e30 = a_6;
-        d_c_1 = (dot(perp, _e30) / _e25);
+    let x_h_1 = dot(to_light, _e2);
+    let perp = ((x_h_1 * _e2) - to_light);
+    let _e19 = airlight_safe_length(perp);
+    if (_e19 > 0f) {
+        let _e24 = a_6;
+        d_c_1 = (dot(perp, _e24) / _e19);
     }
     let infinite_1 = ((s_9.flags & 1u) != 0u);
-    let _e38 = a_6;
-    let _e40 = d_c_1;
-    return AirlightCanonical(_e25, x_h_1, dot(d_1, _e38), _e40, s_9.t_min, select(s_9.t_max, 0f, infinite_1), infinite_1);
+    let _e32 = a_6;
+    let _e34 = d_c_1;
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, select(s_9.t_max, 0f, infinite_1), infinite_1);
 }
 
 fn airlight_in_scatter(s_10: AirlightScene) -> AirlightResult {
