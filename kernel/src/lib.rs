@@ -24,7 +24,8 @@
 //! 5. [`special`]: the complex exponential integral with fixed-bound region selection.
 //!
 //! [`scene`] is the public front: [`Scene`], [`in_scatter`], the surface term and total
-//! radiance, and the seeds' [`atan_form`].
+//! radiance, and the seeds' [`atan_form`]. [`march`] is the ray-marching baseline
+//! ([`Scene::ray_march`]) the benchmarks compare against.
 #![no_std]
 #![warn(missing_docs)]
 
@@ -34,6 +35,7 @@ pub mod expansion;
 pub mod geometry;
 pub mod integrals;
 pub mod light;
+pub mod march;
 pub mod phase;
 mod real;
 mod scalar;

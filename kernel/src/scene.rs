@@ -7,6 +7,7 @@ use crate::expansion::Expansion;
 use crate::geometry::{dot, length, normalize, sub, Canonical};
 use crate::integrals::{PaperEq27, Production};
 use crate::light::LightDistribution;
+use crate::march::{ray_march, Steps};
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 
@@ -187,6 +188,26 @@ where
     pub fn in_scatter_paper<const N: usize>(&self, precision: T, max_iterations: usize) -> T {
         let ei = PaperEq27 { precision, max_iterations };
         in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical, &self.physics(), Expansion::Taylor, &ei)
+    }
+
+    /// `L_m` by ray marching with `steps` samples (see [`crate::march`]): the fixed-step
+    /// quadrature the analytic form replaces, for comparison. `Steps::Equiangular` needs the
+    /// light off the ray line.
+    pub fn ray_march(&self, rule: Steps, steps: usize) -> T {
+        ray_march(
+            T::vec3_to_array(self.ray.origin),
+            T::vec3_to_array(self.ray.dir),
+            self.ray.t_min,
+            self.ray.t_max,
+            T::vec3_to_array(self.light.position),
+            self.medium.sigma_s,
+            self.medium.sigma_t,
+            self.light.intensity,
+            &self.light.distribution,
+            &self.phase,
+            rule,
+            steps,
+        )
     }
 
     /// The surface term of paper eq. 7 at the segment's end `t_max` (finite):
