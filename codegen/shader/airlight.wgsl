@@ -11,6 +11,7 @@ const AIRLIGHT_PI: f32 = 3.14159265358979;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772156649015329;
 const AIRLIGHT_FLT_MAX: f32 = 3.40282347e38;
 const AIRLIGHT_FLT_EPS: f32 = 1.1920929e-7;
+const AIRLIGHT_LN_2: f32 = 0.6931472;
 // Scratch size of the E_n and moment arrays: orders up to 3 + 2·5 (N_1 series) and N + 2.
 const AIRLIGHT_SCRATCH: u32 = 16u;
 
@@ -830,12 +831,11 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
 
 /// E_2-based exact limit for a light on the ray line outside the segment (h = 0).
 fn airlight_on_line(s: AirlightScene, g: AirlightCanonical) -> f32 {
-    let k = s.sigma_s * s.intensity;
     if (!g.t_hi_infinite && g.x_h > g.t_hi) {
         let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, -g.d_el) * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, 1.0);
         let r0 = g.x_h - g.t_lo;
         let r1 = g.x_h - g.t_hi;
-        return k * f * exp(-s.sigma_t * r0) * ((g.t_hi - g.t_lo) / r0 / r1);
+        return airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * r0, f * ((g.t_hi - g.t_lo) / r0 / r1));
     }
     let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, g.d_el) * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, -1.0);
     let s0 = g.t_lo - g.x_h;
@@ -843,18 +843,45 @@ fn airlight_on_line(s: AirlightScene, g: AirlightCanonical) -> f32 {
     if (s.sigma_t == 0.0) {
         var span = 1.0 / s0;
         if (!g.t_hi_infinite) { span = (s1 - s0) / s1 / s0; }
-        return k * f * span;
+        return airlight_weighted(s.sigma_s, s.intensity, 2.0, 0.0, f * span);
     }
     let two_st = s.sigma_t + s.sigma_t;
     var e2 = airlight_zero_scratch();
     airlight_en_scaled(two_st * s0, 2u, &e2);
-    let head = exp(-s.sigma_t * s0) * e2[1] / s0;
+    // σs I e^{−x} as weighted(σs, I, 2, x), whose h = 2 cancels its 2
+    let head = airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * s0, f * e2[1] / s0);
     var tail = 0.0;
     if (!g.t_hi_infinite) {
         airlight_en_scaled(two_st * s1, 2u, &e2);
-        tail = exp(-s.sigma_t * (s1 - s0) - s.sigma_t * s1) * e2[1] / s1;
+        tail = airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * (s1 - s0) + s.sigma_t * s1, f * e2[1] / s1);
     }
-    return k * f * (head - tail);
+    // head ≥ tail exactly; ∞ − ∞ (both overflowing) means the value overflows
+    if (!airlight_is_finite(head)) {
+        return head;
+    }
+    return head - tail;
+}
+
+/// H on one half: 0 where e^{−H(v − v_s)} is 1 to working precision (H·Δv < ε; unbounded:
+/// H < ε²), so no H-sized intermediate can be flushed as a denormal (combined.rs `optical`).
+fn airlight_optical(big_h: f32, dv: f32, infinite: bool) -> f32 {
+    var negligible = big_h * dv < AIRLIGHT_FLT_EPS;
+    if (infinite) { negligible = big_h < AIRLIGHT_FLT_EPS * AIRLIGHT_FLT_EPS; }
+    return select(big_h, 0.0, negligible);
+}
+
+/// (2 σs I / h)·e^{−x}·j, a half's prefactor, folded exponent and sum (combined.rs
+/// `weighted`): where the plain product is not finite (σs·I/h overflowing while e^{−x} or j
+/// underflows) it is formed through logarithms, so a representable value stays finite.
+fn airlight_weighted(sigma_s: f32, intensity: f32, h: f32, x: f32, j: f32) -> f32 {
+    let plain = 2.0 * sigma_s * intensity / h * exp(-x) * j;
+    if (airlight_is_finite(plain)) {
+        return plain;
+    }
+    if (!(abs(j) > 0.0)) {
+        return 0.0;
+    }
+    return sign(j) * exp(AIRLIGHT_LN_2 + log(sigma_s) + log(intensity) - log(h) - x + log(abs(j)));
 }
 
 /// The combined formulation on the canonical problem (combined.rs::in_scatter_canonical).
@@ -880,7 +907,6 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
     let isotropic = (s.light_kind == AIRLIGHT_LIGHT_OMNI || (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED && s.light_param_a == 0.0))
         && (s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
             || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
-    let prefactor = 2.0 * s.sigma_s * s.intensity / h;
     var total = 0.0;
     if (t0 < x_h) {
         let a_s = (x_h - t0) / h;
@@ -892,9 +918,9 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         let y_lo = airlight_bounded(a_s);
         let y_hi = airlight_bounded(a_e);
         let dy = (t_end - t0) / h * (1.0 + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
-        let half = AirlightHalf(false, big_h, y_lo, y_hi, dy, dy, false);
+        let half = AirlightHalf(false, airlight_optical(big_h, dy, false), y_lo, y_hi, dy, dy, false);
         let j = airlight_half(s, g, -1.0, half, isotropic);
-        total += prefactor * exp(-big_h * r_s) * j;
+        total += airlight_weighted(s.sigma_s, s.intensity, h, big_h * r_s, j);
     }
     if (g.t_hi_infinite || t1 > x_h) {
         let t_start = max(t0, x_h);
@@ -912,9 +938,9 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
             dy = dv * y_lo * y_hi;
             infinite = false;
         }
-        let half = AirlightHalf(true, big_h, y_lo, y_hi, dy, dv, infinite);
+        let half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
         let j = airlight_half(s, g, 1.0, half, isotropic);
-        total += exp(-s.sigma_t * (t_start - t0)) * prefactor * exp(-big_h * r_s) * j;
+        total += airlight_weighted(s.sigma_s, s.intensity, h, s.sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     return AirlightResult(max(total, 0.0), AIRLIGHT_STATUS_OK);
 }

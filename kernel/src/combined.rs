@@ -105,7 +105,7 @@ where
         let (y_lo, y_hi) = (bounded(a_s), bounded(a_e));
         let da = (t_end - t0) / h;
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
-        let half = Half { second: false, big_h, y_lo, y_hi, dy, dv: dy };
+        let half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
         let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), expansion, ei, isotropic, count);
         total = total + weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, j);
     }
@@ -120,13 +120,28 @@ where
         // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞ (the
         // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
-        let half = Half { second: true, big_h, y_lo, y_hi, dy, dv };
+        let half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
         let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), expansion, ei, isotropic, count);
         total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
     total.max(T::zero())
+}
+
+/// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the
+/// half's `Δv` (`H·Δv < ε`; on an unbounded half `H < ε²`, since there the relative change
+/// is `O(H ln(1/H))`). The exact `H = 0` closed forms then apply, and no `H`-sized
+/// intermediate is left to become subnormal (which Vulkan may flush to zero; the shader
+/// mirrors this).
+#[inline]
+fn optical<T: Real>(big_h: T, dv: T) -> T {
+    let negligible = if dv.is_finite() { big_h * dv < T::epsilon() } else { big_h < T::epsilon() * T::epsilon() };
+    if negligible {
+        T::zero()
+    } else {
+        big_h
+    }
 }
 
 /// `(2 σs I / h)·e^{−x}·j`: a half's prefactor, its folded exponent (`x ≥ 0`) and its sum

@@ -46,6 +46,7 @@ const float AIRLIGHT_PI = 3.1415927;
 const float AIRLIGHT_EULER_GAMMA = 0.5772157;
 const float AIRLIGHT_FLT_MAX = 3.4028235e38;
 const float AIRLIGHT_FLT_EPS = 1.1920929e-7;
+const float AIRLIGHT_LN_2_ = 0.6931472;
 const uint AIRLIGHT_SCRATCH = 16u;
 const uint AIRLIGHT_PHASE_ISOTROPIC = 0u;
 const uint AIRLIGHT_PHASE_RAYLEIGH = 1u;
@@ -313,9 +314,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_4) {
-    float x_9 = (z_4.x * 0.7692308);
+    float x_10 = (z_4.x * 0.7692308);
     float y_2 = (z_4.y * 0.47619048);
-    return (((x_9 * x_9) + (y_2 * y_2)) < 1.0);
+    return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
 }
 
 vec2 airlight_e1_scaled_cf(vec2 z_5) {
@@ -637,8 +638,8 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1) {
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_1 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_10 = clamp(((c_1 - p1_1) / width), 0.0, 1.0);
-            return ((x_10 * x_10) * (3.0 - (2.0 * x_10)));
+            float x_11 = clamp(((c_1 - p1_1) / width), 0.0, 1.0);
+            return ((x_11 * x_11) * (3.0 - (2.0 * x_11)));
         }
         default: {
             return 1.0;
@@ -1114,9 +1115,9 @@ float airlight_n1_series(AirlightHalf half_2) {
         }
         {
             uint _e12 = i_5;
-            uint j_8 = (5u - _e12);
-            float tn = t_3[((3u + (2u * j_8)) - 1u)];
-            if (((j_8 % 2u) == 0u)) {
+            uint j_9 = (5u - _e12);
+            float tn = t_3[((3u + (2u * j_9)) - 1u)];
+            if (((j_9 % 2u) == 0u)) {
                 float _e26 = sum_3;
                 sum_3 = (_e26 + tn);
             } else {
@@ -1146,7 +1147,7 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     float e_s[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
     float e_e[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float big_h = half_3.big_h;
+    float big_h_1 = half_3.big_h;
     float v_s_1 = (half_3.second ? (1.0 / half_3.y_hi) : half_3.y_lo);
     if (half_3.second) {
         local_5 = (half_3.y_lo == 0.0);
@@ -1164,11 +1165,11 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     if (_e24) {
         v_e_1 = (1.0 / half_3.y_lo);
     }
-    if (!((big_h == 0.0))) {
+    if (!((big_h_1 == 0.0))) {
         if (!(v_e_infinite_1)) {
             float _e36 = v_e_1;
             float _e37 = v_e_1;
-            local_8 = ((big_h * sqrt((1.0 + (_e36 * _e37)))) <= 1.0);
+            local_8 = ((big_h_1 * sqrt((1.0 + (_e36 * _e37)))) <= 1.0);
         } else {
             local_8 = false;
         }
@@ -1190,7 +1191,7 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
             float _e74 = airlight_atan((1.0 / v_s_1));
             d_im = _e74;
         }
-        if ((big_h == 0.0)) {
+        if ((big_h_1 == 0.0)) {
             if (!(half_3.second)) {
                 float _e79 = d_re;
                 float _e80 = d_im;
@@ -1205,14 +1206,14 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
             float _e87 = d_im;
             return vec2(_e86, _e87);
         }
-        vec2 z_s = vec2((big_h * v_s_1), -(big_h));
+        vec2 z_s = vec2((big_h_1 * v_s_1), -(big_h_1));
         float _e92 = v_e_1;
-        vec2 z_e = vec2((big_h * _e92), -(big_h));
-        float hdv = (big_h * half_3.dv);
+        vec2 z_e = vec2((big_h_1 * _e92), -(big_h_1));
+        float hdv = (big_h_1 * half_3.dv);
         vec2 _e98 = airlight_ein_divided_difference(z_s, z_e);
-        vec2 _e99 = airlight_cos_sin(big_h);
+        vec2 _e99 = airlight_cos_sin(big_h_1);
         vec2 rot = vec2(_e99.x, -(_e99.y));
-        float scale = exp((big_h * v_s_1));
+        float scale = exp((big_h_1 * v_s_1));
         float _e106 = d_re;
         float _e107 = d_im;
         vec2 _e111 = airlight_cmul(rot, (vec2(_e106, _e107) - (_e98 * hdv)));
@@ -1221,10 +1222,10 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
             return c_4;
         }
         if (with_re) {
-            vec2 _e119 = airlight_cos_sin((big_h * 0.5));
+            vec2 _e119 = airlight_cos_sin((big_h_1 * 0.5));
             float sh = _e119.y;
             float _e124 = v_e_1;
-            vec2 _e128 = airlight_ein_divided_difference(vec2((big_h * v_s_1), 0.0), vec2((big_h * _e124), 0.0));
+            vec2 _e128 = airlight_ein_divided_difference(vec2((big_h_1 * v_s_1), 0.0), vec2((big_h_1 * _e124), 0.0));
             float _e129 = v_e_1;
             float _e131 = airlight_n1_log_part(v_s_1, _e129, false);
             float _e135 = d_re;
@@ -1235,10 +1236,10 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
         float _e149 = n1_1;
         return vec2(_e149, c_4.y);
     }
-    vec2 _e155 = airlight_e1_scaled(vec2((big_h * v_s_1), -(big_h)));
+    vec2 _e155 = airlight_e1_scaled(vec2((big_h_1 * v_s_1), -(big_h_1)));
     if (!(v_e_infinite_1)) {
         float _e165 = v_e_1;
-        bool _e167 = airlight_is_finite((big_h * _e165));
+        bool _e167 = airlight_is_finite((big_h_1 * _e165));
         local_9 = _e167;
     } else {
         local_9 = false;
@@ -1246,9 +1247,9 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     bool far_finite = local_9;
     if (far_finite) {
         float _e170 = v_e_1;
-        vec2 _e174 = airlight_e1_scaled(vec2((big_h * _e170), -(big_h)));
+        vec2 _e174 = airlight_e1_scaled(vec2((big_h_1 * _e170), -(big_h_1)));
         s_e_1 = _e174;
-        decay_1 = exp((-(big_h) * half_3.dv));
+        decay_1 = exp((-(big_h_1) * half_3.dv));
     }
     vec2 _e179 = s_e_1;
     float _e180 = decay_1;
@@ -1263,12 +1264,12 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
         } else {
             float _e191[16] = airlight_zero_scratch();
             e_s = _e191;
-            airlight_en_scaled((big_h * v_s_1), 1u, e_s);
+            airlight_en_scaled((big_h_1 * v_s_1), 1u, e_s);
             if (far_finite) {
                 float _e197[16] = airlight_zero_scratch();
                 e_e = _e197;
                 float _e199 = v_e_1;
-                airlight_en_scaled((big_h * _e199), 1u, e_e);
+                airlight_en_scaled((big_h_1 * _e199), 1u, e_e);
                 float _e203 = e_e[0];
                 float _e205 = s_e_1.x;
                 float _e207 = decay_1;
@@ -1932,29 +1933,41 @@ float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, Air
     return _e211;
 }
 
+float airlight_weighted(float sigma_s, float intensity, float h_1, float x_9, float j_8) {
+    float plain = (((((2.0 * sigma_s) * intensity) / h_1) * exp(-(x_9))) * j_8);
+    bool _e13 = airlight_is_finite(plain);
+    if (_e13) {
+        return plain;
+    }
+    if (!((abs(j_8) > 0.0))) {
+        return 0.0;
+    }
+    return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
+}
+
 float airlight_on_line(AirlightScene s_6, AirlightCanonical g_6) {
     bool local_18 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
-    float k_13 = (s_6.sigma_s * s_6.intensity);
     if (!(g_6.t_hi_infinite)) {
         local_18 = (g_6.x_h > g_6.t_hi);
     } else {
         local_18 = false;
     }
-    bool _e13 = local_18;
-    if (_e13) {
-        float _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
-        float _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
-        float f = (_e19 * _e25);
+    bool _e10 = local_18;
+    if (_e10) {
+        float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        float _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
+        float f = (_e16 * _e22);
         float r0_ = (g_6.x_h - g_6.t_lo);
         float r1_1 = (g_6.x_h - g_6.t_hi);
-        return (((k_13 * f) * exp((-(s_6.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
+        float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * r0_), (f * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1)));
+        return _e41;
     }
-    float _e49 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
-    float _e55 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
-    float f_1 = (_e49 * _e55);
+    float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    float _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
+    float f_1 = (_e46 * _e52);
     float s0_ = (g_6.t_lo - g_6.x_h);
     float s1_ = (g_6.t_hi - g_6.x_h);
     if ((s_6.sigma_t == 0.0)) {
@@ -1963,21 +1976,37 @@ float airlight_on_line(AirlightScene s_6, AirlightCanonical g_6) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        return ((k_13 * f_1) * _e75);
+        float _e77 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, 0.0, (f_1 * _e75));
+        return _e77;
     }
     float two_st = (s_6.sigma_t + s_6.sigma_t);
-    float _e80[16] = airlight_zero_scratch();
-    e2_ = _e80;
+    float _e81[16] = airlight_zero_scratch();
+    e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, e2_);
-    float _e89 = e2_[1];
-    float head = ((exp((-(s_6.sigma_t) * s0_)) * _e89) / s0_);
+    float _e91 = e2_[1];
+    float _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
     if (!(g_6.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
-        float _e107 = e2_[1];
-        tail_1 = ((exp(((-(s_6.sigma_t) * (s1_ - s0_)) - (s_6.sigma_t * s1_))) * _e107) / s1_);
+        float _e111 = e2_[1];
+        float _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        tail_1 = _e114;
     }
-    float _e111 = tail_1;
-    return ((k_13 * f_1) * (head - _e111));
+    bool _e115 = airlight_is_finite(_e94);
+    if (!(_e115)) {
+        return _e94;
+    }
+    float _e117 = tail_1;
+    return (_e94 - _e117);
+}
+
+float airlight_optical(float big_h, float dv_3, bool infinite) {
+    bool negligible = false;
+    negligible = ((big_h * dv_3) < AIRLIGHT_FLT_EPS);
+    if (infinite) {
+        negligible = (big_h < 1.4210855e-14);
+    }
+    bool _e9 = negligible;
+    return (_e9 ? 0.0 : big_h);
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonical g_7) {
@@ -1998,9 +2027,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     bool local_30 = false;
     bool local_31 = false;
     float y_lo = 0.0;
-    float dv_3 = 0.0;
+    float dv_4 = 0.0;
     float dy = 0.0;
-    bool infinite = true;
+    bool infinite_1 = true;
     bool local_32 = false;
     float t0_ = g_7.t_lo;
     float t1_ = g_7.t_hi;
@@ -2019,7 +2048,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
-    float h_1 = g_7.h;
+    float h_2 = g_7.h;
     float x_h = g_7.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_7.t_hi_infinite)) {
@@ -2042,7 +2071,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_23 = (h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_23 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_23 = false;
     }
@@ -2051,10 +2080,10 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         float _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
-    if ((h_1 == 0.0)) {
+    if ((h_2 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_1 = (s_7.sigma_t * h_1);
+    float big_h_2 = (s_7.sigma_t * h_2);
     if (!((s_7.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
             local_25 = (s_7.light_param_a == 0.0);
@@ -2091,72 +2120,77 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         local_26 = false;
     }
     bool isotropic_1 = local_26;
-    float prefactor = (((2.0 * s_7.sigma_s) * s_7.intensity) / h_1);
     if ((t0_ < x_h)) {
-        float a_s = ((x_h - t0_) / h_1);
+        float a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
         if (!(g_7.t_hi_infinite)) {
             local_30 = (t1_ < x_h);
         } else {
             local_30 = false;
         }
-        bool _e134 = local_30;
-        if (_e134) {
+        bool _e128 = local_30;
+        if (_e128) {
             t_end = t1_;
         }
-        float _e135 = t_end;
-        float a_e = ((x_h - _e135) / h_1);
-        float _e138 = airlight_hypot_one(a_s);
-        float _e139 = airlight_hypot_one(a_e);
-        float _e140 = airlight_bounded(a_s);
-        float _e141 = airlight_bounded(a_e);
-        float _e142 = t_end;
-        float dy_3 = (((((_e142 - t0_) / h_1) * (1.0 + ((a_s + a_e) / (_e138 + _e139)))) * _e140) * _e141);
-        AirlightHalf half_7 = AirlightHalf(false, big_h_1, _e140, _e141, dy_3, dy_3, false);
-        float _e157 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
-        float _e158 = total_2;
-        total_2 = (_e158 + ((prefactor * exp((-(big_h_1) * _e138))) * _e157));
+        float _e129 = t_end;
+        float a_e = ((x_h - _e129) / h_2);
+        float _e132 = airlight_hypot_one(a_s);
+        float _e133 = airlight_hypot_one(a_e);
+        float _e134 = airlight_bounded(a_s);
+        float _e135 = airlight_bounded(a_e);
+        float _e136 = t_end;
+        float dy_3 = (((((_e136 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
+        float _e149 = airlight_optical(big_h_2, dy_3, false);
+        AirlightHalf half_7 = AirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
+        float _e153 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
+        float _e154 = total_2;
+        float _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
+        total_2 = (_e154 + _e158);
     }
     if (!(g_7.t_hi_infinite)) {
         local_31 = (t1_ > x_h);
     } else {
         local_31 = true;
     }
-    bool _e171 = local_31;
-    if (_e171) {
+    bool _e166 = local_31;
+    if (_e166) {
         float t_start = max(t0_, x_h);
-        float a_s_1 = ((t_start - x_h) / h_1);
-        float _e175 = airlight_hypot_one(a_s_1);
-        float _e176 = airlight_bounded(a_s_1);
-        dy = _e176;
-        float a_e_1 = ((t1_ - x_h) / h_1);
+        float a_s_1 = ((t_start - x_h) / h_2);
+        float _e170 = airlight_hypot_one(a_s_1);
+        float _e171 = airlight_bounded(a_s_1);
+        dy = _e171;
+        float a_e_1 = ((t1_ - x_h) / h_2);
         if (!(g_7.t_hi_infinite)) {
             local_32 = (a_e_1 < 1e30);
         } else {
             local_32 = false;
         }
-        bool _e193 = local_32;
-        if (_e193) {
-            float _e194 = airlight_bounded(a_e_1);
-            y_lo = _e194;
-            float _e198 = airlight_hypot_one(a_e_1);
-            dv_3 = (((t1_ - t_start) / h_1) * (1.0 + ((a_s_1 + a_e_1) / (_e175 + _e198))));
-            float _e204 = dv_3;
-            float _e205 = y_lo;
-            dy = ((_e204 * _e205) * _e176);
-            infinite = false;
+        bool _e188 = local_32;
+        if (_e188) {
+            float _e189 = airlight_bounded(a_e_1);
+            y_lo = _e189;
+            float _e193 = airlight_hypot_one(a_e_1);
+            dv_4 = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e170 + _e193))));
+            float _e199 = dv_4;
+            float _e200 = y_lo;
+            dy = ((_e199 * _e200) * _e171);
+            infinite_1 = false;
         }
-        float _e210 = y_lo;
-        float _e211 = dy;
-        float _e212 = dv_3;
-        bool _e213 = infinite;
-        AirlightHalf half_8 = AirlightHalf(true, big_h_1, _e210, _e176, _e211, _e212, _e213);
-        float _e216 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
-        float _e217 = total_2;
-        total_2 = (_e217 + (((exp((-(s_7.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
+        float _e205 = dv_4;
+        bool _e206 = infinite_1;
+        float _e207 = airlight_optical(big_h_2, _e205, _e206);
+        float _e208 = y_lo;
+        float _e209 = dy;
+        float _e210 = dv_4;
+        bool _e211 = infinite_1;
+        AirlightHalf half_8 = AirlightHalf(true, _e207, _e208, _e171, _e209, _e210, _e211);
+        float _e214 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
+        float _e215 = total_2;
+        float _e223 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e214);
+        total_2 = (_e215 + _e223);
     }
-    float _e230 = total_2;
-    return AirlightResult(max(_e230, 0.0), AIRLIGHT_STATUS_OK);
+    float _e225 = total_2;
+    return AirlightResult(max(_e225, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 bool airlight_vec_finite(vec3 v) {
@@ -2459,10 +2493,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_9) {
         vec3 _e24 = a_6;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_1 = ((s_9.flags & 1u) != 0u);
+    bool infinite_2 = ((s_9.flags & 1u) != 0u);
     vec3 _e32 = a_6;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, (infinite_1 ? 0.0 : s_9.t_max), infinite_1);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, (infinite_2 ? 0.0 : s_9.t_max), infinite_2);
 }
 
 AirlightResult airlight_in_scatter(AirlightScene s_10) {

@@ -50,6 +50,7 @@ const AIRLIGHT_PI: f32 = 3.1415927f;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772157f;
 const AIRLIGHT_FLT_MAX: f32 = 340282350000000000000000000000000000000f;
 const AIRLIGHT_FLT_EPS: f32 = 0.00000011920929f;
+const AIRLIGHT_LN_2_: f32 = 0.6931472f;
 const AIRLIGHT_SCRATCH: u32 = 16u;
 const AIRLIGHT_PHASE_ISOTROPIC: u32 = 0u;
 const AIRLIGHT_PHASE_RAYLEIGH: u32 = 1u;
@@ -313,9 +314,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_4: vec2<f32>) -> bool {
-    let x_9 = (z_4.x * 0.7692308f);
+    let x_10 = (z_4.x * 0.7692308f);
     let y_2 = (z_4.y * 0.47619048f);
-    return (((x_9 * x_9) + (y_2 * y_2)) < 1f);
+    return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
 }
 
 fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
@@ -629,8 +630,8 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_1 + (width * 0.5f))));
             }
-            let x_10 = clamp(((c_1 - p1_1) / width), 0f, 1f);
-            return ((x_10 * x_10) * (3f - (2f * x_10)));
+            let x_11 = clamp(((c_1 - p1_1) / width), 0f, 1f);
+            return ((x_11 * x_11) * (3f - (2f * x_11)));
         }
         default: {
             return 1f;
@@ -1083,9 +1084,9 @@ fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
         }
         {
             let _e12 = i_5;
-            let j_8 = (5u - _e12);
-            let tn = t_3[((3u + (2u * j_8)) - 1u)];
-            if ((j_8 % 2u) == 0u) {
+            let j_9 = (5u - _e12);
+            let tn = t_3[((3u + (2u * j_9)) - 1u)];
+            if ((j_9 % 2u) == 0u) {
                 let _e26 = sum_3;
                 sum_3 = (_e26 + tn);
             } else {
@@ -1120,7 +1121,7 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     var tail: f32 = 0f;
     var e_e: array<f32, 16>;
 
-    let big_h = half_3.big_h;
+    let big_h_1 = half_3.big_h;
     let v_s_1 = select(half_3.y_lo, (1f / half_3.y_hi), half_3.second);
     if half_3.second {
         local_5 = (half_3.y_lo == 0f);
@@ -1138,11 +1139,11 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     if _e24 {
         v_e_1 = (1f / half_3.y_lo);
     }
-    if !((big_h == 0f)) {
+    if !((big_h_1 == 0f)) {
         if !(v_e_infinite_1) {
             let _e36 = v_e_1;
             let _e37 = v_e_1;
-            local_8 = ((big_h * sqrt((1f + (_e36 * _e37)))) <= 1f);
+            local_8 = ((big_h_1 * sqrt((1f + (_e36 * _e37)))) <= 1f);
         } else {
             local_8 = false;
         }
@@ -1164,7 +1165,7 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
             let _e74 = airlight_atan((1f / v_s_1));
             d_im = _e74;
         }
-        if (big_h == 0f) {
+        if (big_h_1 == 0f) {
             if !(half_3.second) {
                 let _e79 = d_re;
                 let _e80 = d_im;
@@ -1179,14 +1180,14 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
             let _e87 = d_im;
             return vec2<f32>(_e86, _e87);
         }
-        let z_s = vec2<f32>((big_h * v_s_1), -(big_h));
+        let z_s = vec2<f32>((big_h_1 * v_s_1), -(big_h_1));
         let _e92 = v_e_1;
-        let z_e = vec2<f32>((big_h * _e92), -(big_h));
-        let hdv = (big_h * half_3.dv);
+        let z_e = vec2<f32>((big_h_1 * _e92), -(big_h_1));
+        let hdv = (big_h_1 * half_3.dv);
         let _e98 = airlight_ein_divided_difference(z_s, z_e);
-        let _e99 = airlight_cos_sin(big_h);
+        let _e99 = airlight_cos_sin(big_h_1);
         let rot = vec2<f32>(_e99.x, -(_e99.y));
-        let scale = exp((big_h * v_s_1));
+        let scale = exp((big_h_1 * v_s_1));
         let _e106 = d_re;
         let _e107 = d_im;
         let _e111 = airlight_cmul(rot, (vec2<f32>(_e106, _e107) - (_e98 * hdv)));
@@ -1195,10 +1196,10 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
             return c_4;
         }
         if with_re {
-            let _e119 = airlight_cos_sin((big_h * 0.5f));
+            let _e119 = airlight_cos_sin((big_h_1 * 0.5f));
             let sh = _e119.y;
             let _e124 = v_e_1;
-            let _e128 = airlight_ein_divided_difference(vec2<f32>((big_h * v_s_1), 0f), vec2<f32>((big_h * _e124), 0f));
+            let _e128 = airlight_ein_divided_difference(vec2<f32>((big_h_1 * v_s_1), 0f), vec2<f32>((big_h_1 * _e124), 0f));
             let _e129 = v_e_1;
             let _e131 = airlight_n1_log_part(v_s_1, _e129, false);
             let _e135 = d_re;
@@ -1209,10 +1210,10 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
         let _e149 = n1_1;
         return vec2<f32>(_e149, c_4.y);
     }
-    let _e155 = airlight_e1_scaled(vec2<f32>((big_h * v_s_1), -(big_h)));
+    let _e155 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s_1), -(big_h_1)));
     if !(v_e_infinite_1) {
         let _e165 = v_e_1;
-        let _e167 = airlight_is_finite((big_h * _e165));
+        let _e167 = airlight_is_finite((big_h_1 * _e165));
         local_9 = _e167;
     } else {
         local_9 = false;
@@ -1220,9 +1221,9 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     let far_finite = local_9;
     if far_finite {
         let _e170 = v_e_1;
-        let _e174 = airlight_e1_scaled(vec2<f32>((big_h * _e170), -(big_h)));
+        let _e174 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e170), -(big_h_1)));
         s_e_1 = _e174;
-        decay_1 = exp((-(big_h) * half_3.dv));
+        decay_1 = exp((-(big_h_1) * half_3.dv));
     }
     let _e179 = s_e_1;
     let _e180 = decay_1;
@@ -1237,12 +1238,12 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
         } else {
             let _e191 = airlight_zero_scratch();
             e_s = _e191;
-            airlight_en_scaled((big_h * v_s_1), 1u, (&e_s));
+            airlight_en_scaled((big_h_1 * v_s_1), 1u, (&e_s));
             if far_finite {
                 let _e197 = airlight_zero_scratch();
                 e_e = _e197;
                 let _e199 = v_e_1;
-                airlight_en_scaled((big_h * _e199), 1u, (&e_e));
+                airlight_en_scaled((big_h_1 * _e199), 1u, (&e_e));
                 let _e203 = e_e[0];
                 let _e205 = s_e_1.x;
                 let _e207 = decay_1;
@@ -1885,30 +1886,42 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
     return _e211;
 }
 
+fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_9: f32, j_8: f32) -> f32 {
+    let plain = (((((2f * sigma_s) * intensity) / h_1) * exp(-(x_9))) * j_8);
+    let _e13 = airlight_is_finite(plain);
+    if _e13 {
+        return plain;
+    }
+    if !((abs(j_8) > 0f)) {
+        return 0f;
+    }
+    return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
+}
+
 fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
     var local_18: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    let k_13 = (s_6.sigma_s * s_6.intensity);
     if !(g_6.t_hi_infinite) {
         local_18 = (g_6.x_h > g_6.t_hi);
     } else {
         local_18 = false;
     }
-    let _e13 = local_18;
-    if _e13 {
-        let _e19 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
-        let _e25 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
-        let f = (_e19 * _e25);
+    let _e10 = local_18;
+    if _e10 {
+        let _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        let _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
+        let f = (_e16 * _e22);
         let r0_ = (g_6.x_h - g_6.t_lo);
         let r1_1 = (g_6.x_h - g_6.t_hi);
-        return (((k_13 * f) * exp((-(s_6.sigma_t) * r0_))) * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
+        let _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * r0_), (f * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1)));
+        return _e41;
     }
-    let _e49 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
-    let _e55 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1f);
-    let f_1 = (_e49 * _e55);
+    let _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    let _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1f);
+    let f_1 = (_e46 * _e52);
     let s0_ = (g_6.t_lo - g_6.x_h);
     let s1_ = (g_6.t_hi - g_6.x_h);
     if (s_6.sigma_t == 0f) {
@@ -1917,21 +1930,38 @@ fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        return ((k_13 * f_1) * _e75);
+        let _e77 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, 0f, (f_1 * _e75));
+        return _e77;
     }
     let two_st = (s_6.sigma_t + s_6.sigma_t);
-    let _e80 = airlight_zero_scratch();
-    e2_ = _e80;
+    let _e81 = airlight_zero_scratch();
+    e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
-    let _e89 = e2_[1];
-    let head = ((exp((-(s_6.sigma_t) * s0_)) * _e89) / s0_);
+    let _e91 = e2_[1];
+    let _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
     if !(g_6.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
-        let _e107 = e2_[1];
-        tail_1 = ((exp(((-(s_6.sigma_t) * (s1_ - s0_)) - (s_6.sigma_t * s1_))) * _e107) / s1_);
+        let _e111 = e2_[1];
+        let _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        tail_1 = _e114;
     }
-    let _e111 = tail_1;
-    return ((k_13 * f_1) * (head - _e111));
+    let _e115 = airlight_is_finite(_e94);
+    if !(_e115) {
+        return _e94;
+    }
+    let _e117 = tail_1;
+    return (_e94 - _e117);
+}
+
+fn airlight_optical(big_h: f32, dv_3: f32, infinite: bool) -> f32 {
+    var negligible: bool;
+
+    negligible = ((big_h * dv_3) < AIRLIGHT_FLT_EPS);
+    if infinite {
+        negligible = (big_h < 0.000000000000014210855f);
+    }
+    let _e9 = negligible;
+    return select(big_h, 0f, _e9);
 }
 
 fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> AirlightResult {
@@ -1952,9 +1982,9 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     var local_30: bool;
     var local_31: bool;
     var y_lo: f32 = 0f;
-    var dv_3: f32 = 0f;
+    var dv_4: f32 = 0f;
     var dy: f32;
-    var infinite: bool = true;
+    var infinite_1: bool = true;
     var local_32: bool;
 
     let t0_ = g_7.t_lo;
@@ -1974,7 +2004,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_1 = g_7.h;
+    let h_2 = g_7.h;
     let x_h = g_7.x_h;
     if (t0_ <= x_h) {
         if !(g_7.t_hi_infinite) {
@@ -1997,7 +2027,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     }
     if !(inside) {
         let _e48 = gap;
-        local_23 = (h_1 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_23 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_23 = false;
     }
@@ -2006,10 +2036,10 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         let _e56 = airlight_on_line(s_7, g_7);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
-    if (h_1 == 0f) {
+    if (h_2 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_1 = (s_7.sigma_t * h_1);
+    let big_h_2 = (s_7.sigma_t * h_2);
     if !((s_7.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
             local_25 = (s_7.light_param_a == 0f);
@@ -2046,72 +2076,77 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         local_26 = false;
     }
     let isotropic_1 = local_26;
-    let prefactor = (((2f * s_7.sigma_s) * s_7.intensity) / h_1);
     if (t0_ < x_h) {
-        let a_s = ((x_h - t0_) / h_1);
+        let a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
         if !(g_7.t_hi_infinite) {
             local_30 = (t1_ < x_h);
         } else {
             local_30 = false;
         }
-        let _e134 = local_30;
-        if _e134 {
+        let _e128 = local_30;
+        if _e128 {
             t_end = t1_;
         }
-        let _e135 = t_end;
-        let a_e = ((x_h - _e135) / h_1);
-        let _e138 = airlight_hypot_one(a_s);
-        let _e139 = airlight_hypot_one(a_e);
-        let _e140 = airlight_bounded(a_s);
-        let _e141 = airlight_bounded(a_e);
-        let _e142 = t_end;
-        let dy_3 = (((((_e142 - t0_) / h_1) * (1f + ((a_s + a_e) / (_e138 + _e139)))) * _e140) * _e141);
-        let half_7 = AirlightHalf(false, big_h_1, _e140, _e141, dy_3, dy_3, false);
-        let _e157 = airlight_half(s_7, g_7, -1f, half_7, isotropic_1);
-        let _e158 = total_2;
-        total_2 = (_e158 + ((prefactor * exp((-(big_h_1) * _e138))) * _e157));
+        let _e129 = t_end;
+        let a_e = ((x_h - _e129) / h_2);
+        let _e132 = airlight_hypot_one(a_s);
+        let _e133 = airlight_hypot_one(a_e);
+        let _e134 = airlight_bounded(a_s);
+        let _e135 = airlight_bounded(a_e);
+        let _e136 = t_end;
+        let dy_3 = (((((_e136 - t0_) / h_2) * (1f + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
+        let _e149 = airlight_optical(big_h_2, dy_3, false);
+        let half_7 = AirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
+        let _e153 = airlight_half(s_7, g_7, -1f, half_7, isotropic_1);
+        let _e154 = total_2;
+        let _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
+        total_2 = (_e154 + _e158);
     }
     if !(g_7.t_hi_infinite) {
         local_31 = (t1_ > x_h);
     } else {
         local_31 = true;
     }
-    let _e171 = local_31;
-    if _e171 {
+    let _e166 = local_31;
+    if _e166 {
         let t_start = max(t0_, x_h);
-        let a_s_1 = ((t_start - x_h) / h_1);
-        let _e175 = airlight_hypot_one(a_s_1);
-        let _e176 = airlight_bounded(a_s_1);
-        dy = _e176;
-        let a_e_1 = ((t1_ - x_h) / h_1);
+        let a_s_1 = ((t_start - x_h) / h_2);
+        let _e170 = airlight_hypot_one(a_s_1);
+        let _e171 = airlight_bounded(a_s_1);
+        dy = _e171;
+        let a_e_1 = ((t1_ - x_h) / h_2);
         if !(g_7.t_hi_infinite) {
             local_32 = (a_e_1 < 1000000000000000000000000000000f);
         } else {
             local_32 = false;
         }
-        let _e193 = local_32;
-        if _e193 {
-            let _e194 = airlight_bounded(a_e_1);
-            y_lo = _e194;
-            let _e198 = airlight_hypot_one(a_e_1);
-            dv_3 = (((t1_ - t_start) / h_1) * (1f + ((a_s_1 + a_e_1) / (_e175 + _e198))));
-            let _e204 = dv_3;
-            let _e205 = y_lo;
-            dy = ((_e204 * _e205) * _e176);
-            infinite = false;
+        let _e188 = local_32;
+        if _e188 {
+            let _e189 = airlight_bounded(a_e_1);
+            y_lo = _e189;
+            let _e193 = airlight_hypot_one(a_e_1);
+            dv_4 = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e170 + _e193))));
+            let _e199 = dv_4;
+            let _e200 = y_lo;
+            dy = ((_e199 * _e200) * _e171);
+            infinite_1 = false;
         }
-        let _e210 = y_lo;
-        let _e211 = dy;
-        let _e212 = dv_3;
-        let _e213 = infinite;
-        let half_8 = AirlightHalf(true, big_h_1, _e210, _e176, _e211, _e212, _e213);
-        let _e216 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
-        let _e217 = total_2;
-        total_2 = (_e217 + (((exp((-(s_7.sigma_t) * (t_start - t0_))) * prefactor) * exp((-(big_h_1) * _e175))) * _e216));
+        let _e205 = dv_4;
+        let _e206 = infinite_1;
+        let _e207 = airlight_optical(big_h_2, _e205, _e206);
+        let _e208 = y_lo;
+        let _e209 = dy;
+        let _e210 = dv_4;
+        let _e211 = infinite_1;
+        let half_8 = AirlightHalf(true, _e207, _e208, _e171, _e209, _e210, _e211);
+        let _e214 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
+        let _e215 = total_2;
+        let _e223 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e214);
+        total_2 = (_e215 + _e223);
     }
-    let _e230 = total_2;
-    return AirlightResult(max(_e230, 0f), AIRLIGHT_STATUS_OK);
+    let _e225 = total_2;
+    return AirlightResult(max(_e225, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
@@ -2410,10 +2445,10 @@ fn airlight_canonical(s_9: AirlightScene) -> AirlightCanonical {
         let _e24 = a_6;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_1 = ((s_9.flags & 1u) != 0u);
+    let infinite_2 = ((s_9.flags & 1u) != 0u);
     let _e32 = a_6;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, select(s_9.t_max, 0f, infinite_1), infinite_1);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, select(s_9.t_max, 0f, infinite_2), infinite_2);
 }
 
 fn airlight_in_scatter(s_10: AirlightScene) -> AirlightResult {
