@@ -555,7 +555,7 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
     let v_e_infinite = half.second && half.y_lo == 0.0;
     var v_e = half.y_hi;
     if (half.second && !v_e_infinite) { v_e = 1.0 / half.y_lo; }
-    let near = big_h == 0.0 || (!v_e_infinite && big_h * sqrt(1.0 + v_e * v_e) <= 1.0);
+    let near = big_h == 0.0 || (!v_e_infinite && big_h * airlight_hypot_one(v_e) <= 1.0);
     if (near) {
         var d_im = 0.0;
         var d_re = 0.0;
@@ -704,7 +704,7 @@ fn airlight_moments(half: AirlightHalf, count: u32) -> array<f32, AIRLIGHT_TERMS
 // (kernel/src/combined.rs)
 
 fn airlight_bounded(a: f32) -> f32 {
-    return 1.0 / (a + sqrt(1.0 + a * a));
+    return 1.0 / (a + airlight_hypot_one(a));
 }
 
 fn airlight_hypot_one(a: f32) -> f32 {
@@ -931,12 +931,17 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         var dv = 0.0;
         var dy = y_hi;
         var infinite = true;
+        // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞.
         let a_e = (t1 - x_h) / h;
-        if (!g.t_hi_infinite && a_e < 1.0e30) {
-            y_lo = airlight_bounded(a_e);
-            dv = (t1 - t_start) / h * (1.0 + (a_s + a_e) / (r_s + airlight_hypot_one(a_e)));
-            dy = dv * y_lo * y_hi;
-            infinite = false;
+        if (!g.t_hi_infinite && airlight_is_finite(a_e)) {
+            let y_end = airlight_bounded(a_e);
+            let dv_end = (t1 - t_start) / h * (1.0 + (a_s + a_e) / (r_s + airlight_hypot_one(a_e)));
+            if (y_end > 0.0 && airlight_is_finite(dv_end)) {
+                y_lo = y_end;
+                dv = dv_end;
+                dy = dv * y_lo * y_hi;
+                infinite = false;
+            }
         }
         let half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
         let j = airlight_half(s, g, 1.0, half, isotropic);

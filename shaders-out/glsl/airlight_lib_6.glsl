@@ -1130,6 +1130,13 @@ float airlight_n1_series(AirlightHalf half_2) {
     return _e33;
 }
 
+float airlight_hypot_one(float a_4) {
+    if ((abs(a_4) < 1000000000000000.0)) {
+        return sqrt((1.0 + (a_4 * a_4)));
+    }
+    return abs(a_4);
+}
+
 vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     bool local_5 = false;
     float v_e_1 = 0.0;
@@ -1168,120 +1175,120 @@ vec2 airlight_q_zero(AirlightHalf half_3, bool with_re) {
     if (!((big_h_1 == 0.0))) {
         if (!(v_e_infinite_1)) {
             float _e36 = v_e_1;
-            float _e37 = v_e_1;
-            local_8 = ((big_h_1 * sqrt((1.0 + (_e36 * _e37)))) <= 1.0);
+            float _e37 = airlight_hypot_one(_e36);
+            local_8 = ((big_h_1 * _e37) <= 1.0);
         } else {
             local_8 = false;
         }
-        bool _e46 = local_8;
-        local_7 = _e46;
+        bool _e42 = local_8;
+        local_7 = _e42;
     } else {
         local_7 = true;
     }
     bool near = local_7;
     if (near) {
         if (!(v_e_infinite_1)) {
-            float _e55 = v_e_1;
-            float _e60 = airlight_atan((half_3.dv / (1.0 + (v_s_1 * _e55))));
-            d_im = _e60;
-            float _e62 = v_e_1;
-            float _e69 = airlight_log1p(((half_3.dv * (v_s_1 + _e62)) / (1.0 + (v_s_1 * v_s_1))));
-            d_re = (0.5 * _e69);
+            float _e51 = v_e_1;
+            float _e56 = airlight_atan((half_3.dv / (1.0 + (v_s_1 * _e51))));
+            d_im = _e56;
+            float _e58 = v_e_1;
+            float _e65 = airlight_log1p(((half_3.dv * (v_s_1 + _e58)) / (1.0 + (v_s_1 * v_s_1))));
+            d_re = (0.5 * _e65);
         } else {
-            float _e74 = airlight_atan((1.0 / v_s_1));
-            d_im = _e74;
+            float _e70 = airlight_atan((1.0 / v_s_1));
+            d_im = _e70;
         }
         if ((big_h_1 == 0.0)) {
             if (!(half_3.second)) {
-                float _e79 = d_re;
-                float _e80 = d_im;
-                return vec2(_e79, _e80);
+                float _e75 = d_re;
+                float _e76 = d_im;
+                return vec2(_e75, _e76);
             }
             if (with_re) {
-                float _e84 = v_e_1;
-                float _e85 = airlight_n1_log_part(v_s_1, _e84, v_e_infinite_1);
-                n1_ = _e85;
+                float _e80 = v_e_1;
+                float _e81 = airlight_n1_log_part(v_s_1, _e80, v_e_infinite_1);
+                n1_ = _e81;
             }
-            float _e86 = n1_;
-            float _e87 = d_im;
-            return vec2(_e86, _e87);
+            float _e82 = n1_;
+            float _e83 = d_im;
+            return vec2(_e82, _e83);
         }
         vec2 z_s = vec2((big_h_1 * v_s_1), -(big_h_1));
-        float _e92 = v_e_1;
-        vec2 z_e = vec2((big_h_1 * _e92), -(big_h_1));
+        float _e88 = v_e_1;
+        vec2 z_e = vec2((big_h_1 * _e88), -(big_h_1));
         float hdv = (big_h_1 * half_3.dv);
-        vec2 _e98 = airlight_ein_divided_difference(z_s, z_e);
-        vec2 _e99 = airlight_cos_sin(big_h_1);
-        vec2 rot = vec2(_e99.x, -(_e99.y));
+        vec2 _e94 = airlight_ein_divided_difference(z_s, z_e);
+        vec2 _e95 = airlight_cos_sin(big_h_1);
+        vec2 rot = vec2(_e95.x, -(_e95.y));
         float scale = exp((big_h_1 * v_s_1));
-        float _e106 = d_re;
-        float _e107 = d_im;
-        vec2 _e111 = airlight_cmul(rot, (vec2(_e106, _e107) - (_e98 * hdv)));
-        vec2 c_4 = (_e111 * scale);
+        float _e102 = d_re;
+        float _e103 = d_im;
+        vec2 _e107 = airlight_cmul(rot, (vec2(_e102, _e103) - (_e94 * hdv)));
+        vec2 c_4 = (_e107 * scale);
         if (!(half_3.second)) {
             return c_4;
         }
         if (with_re) {
-            vec2 _e119 = airlight_cos_sin((big_h_1 * 0.5));
-            float sh = _e119.y;
-            float _e124 = v_e_1;
-            vec2 _e128 = airlight_ein_divided_difference(vec2((big_h_1 * v_s_1), 0.0), vec2((big_h_1 * _e124), 0.0));
-            float _e129 = v_e_1;
-            float _e131 = airlight_n1_log_part(v_s_1, _e129, false);
-            float _e135 = d_re;
-            float _e139 = d_im;
-            vec2 _e143 = airlight_cmul(rot, _e98);
-            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (_e99.y * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
+            vec2 _e115 = airlight_cos_sin((big_h_1 * 0.5));
+            float sh = _e115.y;
+            float _e120 = v_e_1;
+            vec2 _e124 = airlight_ein_divided_difference(vec2((big_h_1 * v_s_1), 0.0), vec2((big_h_1 * _e120), 0.0));
+            float _e125 = v_e_1;
+            float _e127 = airlight_n1_log_part(v_s_1, _e125, false);
+            float _e131 = d_re;
+            float _e135 = d_im;
+            vec2 _e139 = airlight_cmul(rot, _e94);
+            n1_1 = ((((_e127 + (((sh * sh) + (sh * sh)) * _e131)) - (_e95.y * _e135)) - (hdv * (_e124.x - _e139.x))) * scale);
         }
-        float _e149 = n1_1;
-        return vec2(_e149, c_4.y);
+        float _e145 = n1_1;
+        return vec2(_e145, c_4.y);
     }
-    vec2 _e155 = airlight_e1_scaled(vec2((big_h_1 * v_s_1), -(big_h_1)));
+    vec2 _e151 = airlight_e1_scaled(vec2((big_h_1 * v_s_1), -(big_h_1)));
     if (!(v_e_infinite_1)) {
-        float _e165 = v_e_1;
-        bool _e167 = airlight_is_finite((big_h_1 * _e165));
-        local_9 = _e167;
+        float _e161 = v_e_1;
+        bool _e163 = airlight_is_finite((big_h_1 * _e161));
+        local_9 = _e163;
     } else {
         local_9 = false;
     }
     bool far_finite = local_9;
     if (far_finite) {
-        float _e170 = v_e_1;
-        vec2 _e174 = airlight_e1_scaled(vec2((big_h_1 * _e170), -(big_h_1)));
-        s_e_1 = _e174;
+        float _e166 = v_e_1;
+        vec2 _e170 = airlight_e1_scaled(vec2((big_h_1 * _e166), -(big_h_1)));
+        s_e_1 = _e170;
         decay_1 = exp((-(big_h_1) * half_3.dv));
     }
-    vec2 _e179 = s_e_1;
-    float _e180 = decay_1;
-    vec2 c_5 = (_e155 - (_e179 * _e180));
+    vec2 _e175 = s_e_1;
+    float _e176 = decay_1;
+    vec2 c_5 = (_e151 - (_e175 * _e176));
     if (!(half_3.second)) {
         return c_5;
     }
     if (with_re) {
         if ((half_3.y_hi <= 0.25)) {
-            float _e190 = airlight_n1_series(half_3);
-            n1_2 = _e190;
+            float _e186 = airlight_n1_series(half_3);
+            n1_2 = _e186;
         } else {
-            float _e191[16] = airlight_zero_scratch();
-            e_s = _e191;
+            float _e187[16] = airlight_zero_scratch();
+            e_s = _e187;
             airlight_en_scaled((big_h_1 * v_s_1), 1u, e_s);
             if (far_finite) {
-                float _e197[16] = airlight_zero_scratch();
-                e_e = _e197;
-                float _e199 = v_e_1;
-                airlight_en_scaled((big_h_1 * _e199), 1u, e_e);
-                float _e203 = e_e[0];
-                float _e205 = s_e_1.x;
-                float _e207 = decay_1;
-                tail = ((_e203 - _e205) * _e207);
+                float _e193[16] = airlight_zero_scratch();
+                e_e = _e193;
+                float _e195 = v_e_1;
+                airlight_en_scaled((big_h_1 * _e195), 1u, e_e);
+                float _e199 = e_e[0];
+                float _e201 = s_e_1.x;
+                float _e203 = decay_1;
+                tail = ((_e199 - _e201) * _e203);
             }
-            float _e210 = e_s[0];
-            float _e213 = tail;
-            n1_2 = ((_e210 - _e155.x) - _e213);
+            float _e206 = e_s[0];
+            float _e209 = tail;
+            n1_2 = ((_e206 - _e151.x) - _e209);
         }
     }
-    float _e215 = n1_2;
-    return vec2(_e215, c_5.y);
+    float _e211 = n1_2;
+    return vec2(_e211, c_5.y);
 }
 
 float[6] airlight_phi_moments(float x_6) {
@@ -1579,15 +1586,9 @@ float[6] airlight_moments(AirlightHalf half_4, uint count_2) {
     return _e135;
 }
 
-float airlight_bounded(float a_4) {
-    return (1.0 / (a_4 + sqrt((1.0 + (a_4 * a_4)))));
-}
-
-float airlight_hypot_one(float a_5) {
-    if ((abs(a_5) < 1000000000000000.0)) {
-        return sqrt((1.0 + (a_5 * a_5)));
-    }
-    return abs(a_5);
+float airlight_bounded(float a_5) {
+    float _e1 = airlight_hypot_one(a_5);
+    return (1.0 / (a_5 + _e1));
 }
 
 float airlight_piece(AirlightScene s_3, AirlightCanonical g_3, float sigma_2, AirlightHalf half_5) {
@@ -2031,6 +2032,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     float dy = 0.0;
     bool infinite_1 = true;
     bool local_32 = false;
+    bool local_33 = false;
     float t0_ = g_7.t_lo;
     float t1_ = g_7.t_hi;
     if (!(g_7.t_hi_infinite)) {
@@ -2161,56 +2163,67 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         dy = _e171;
         float a_e_1 = ((t1_ - x_h) / h_2);
         if (!(g_7.t_hi_infinite)) {
-            local_32 = (a_e_1 < 1e30);
+            bool _e185 = airlight_is_finite(a_e_1);
+            local_32 = _e185;
         } else {
             local_32 = false;
         }
-        bool _e188 = local_32;
-        if (_e188) {
-            float _e189 = airlight_bounded(a_e_1);
-            y_lo = _e189;
-            float _e193 = airlight_hypot_one(a_e_1);
-            dv_4 = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e170 + _e193))));
-            float _e199 = dv_4;
-            float _e200 = y_lo;
-            dy = ((_e199 * _e200) * _e171);
-            infinite_1 = false;
+        bool _e187 = local_32;
+        if (_e187) {
+            float _e188 = airlight_bounded(a_e_1);
+            float _e192 = airlight_hypot_one(a_e_1);
+            float dv_end = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e170 + _e192))));
+            if ((_e188 > 0.0)) {
+                bool _e202 = airlight_is_finite(dv_end);
+                local_33 = _e202;
+            } else {
+                local_33 = false;
+            }
+            bool _e204 = local_33;
+            if (_e204) {
+                y_lo = _e188;
+                dv_4 = dv_end;
+                float _e205 = dv_4;
+                float _e206 = y_lo;
+                dy = ((_e205 * _e206) * _e171);
+                infinite_1 = false;
+            }
         }
-        float _e205 = dv_4;
-        bool _e206 = infinite_1;
-        float _e207 = airlight_optical(big_h_2, _e205, _e206);
-        float _e208 = y_lo;
-        float _e209 = dy;
-        float _e210 = dv_4;
-        bool _e211 = infinite_1;
-        AirlightHalf half_8 = AirlightHalf(true, _e207, _e208, _e171, _e209, _e210, _e211);
-        float _e214 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
-        float _e215 = total_2;
-        float _e223 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e214);
-        total_2 = (_e215 + _e223);
+        float _e211 = dv_4;
+        bool _e212 = infinite_1;
+        float _e213 = airlight_optical(big_h_2, _e211, _e212);
+        float _e214 = y_lo;
+        float _e215 = dy;
+        float _e216 = dv_4;
+        bool _e217 = infinite_1;
+        AirlightHalf half_8 = AirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
+        float _e220 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
+        float _e221 = total_2;
+        float _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
+        total_2 = (_e221 + _e229);
     }
-    float _e225 = total_2;
-    return AirlightResult(max(_e225, 0.0), AIRLIGHT_STATUS_OK);
+    float _e231 = total_2;
+    return AirlightResult(max(_e231, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_33 = false;
     bool local_34 = false;
+    bool local_35 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_33 = _e6;
-    } else {
-        local_33 = false;
-    }
-    bool _e8 = local_33;
-    if (_e8) {
-        bool _e12 = airlight_is_finite(v.z);
-        local_34 = _e12;
+        local_34 = _e6;
     } else {
         local_34 = false;
     }
-    bool _e14 = local_34;
+    bool _e8 = local_34;
+    if (_e8) {
+        bool _e12 = airlight_is_finite(v.z);
+        local_35 = _e12;
+    } else {
+        local_35 = false;
+    }
+    bool _e14 = local_35;
     return _e14;
 }
 
@@ -2229,7 +2242,6 @@ vec3 airlight_normalize(vec3 v_2) {
 }
 
 bool airlight_valid(AirlightScene s_8) {
-    bool local_35 = false;
     bool local_36 = false;
     bool local_37 = false;
     bool local_38 = false;
@@ -2239,8 +2251,8 @@ bool airlight_valid(AirlightScene s_8) {
     bool local_42 = false;
     bool local_43 = false;
     bool local_44 = false;
-    bool ok = false;
     bool local_45 = false;
+    bool ok = false;
     bool local_46 = false;
     bool local_47 = false;
     bool local_48 = false;
@@ -2257,162 +2269,163 @@ bool airlight_valid(AirlightScene s_8) {
     bool local_59 = false;
     bool local_60 = false;
     bool local_61 = false;
+    bool local_62 = false;
     bool _e2 = airlight_vec_finite(s_8.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_8.dir);
-        local_35 = _e6;
-    } else {
-        local_35 = false;
-    }
-    bool _e8 = local_35;
-    if (_e8) {
-        float _e12 = airlight_safe_length(s_8.dir);
-        local_36 = (_e12 > 0.0);
+        local_36 = _e6;
     } else {
         local_36 = false;
     }
-    bool _e16 = local_36;
-    if (_e16) {
-        bool _e20 = airlight_is_finite(s_8.t_min);
-        local_37 = _e20;
+    bool _e8 = local_36;
+    if (_e8) {
+        float _e12 = airlight_safe_length(s_8.dir);
+        local_37 = (_e12 > 0.0);
     } else {
         local_37 = false;
     }
-    bool _e22 = local_37;
-    if (_e22) {
-        bool _e26 = airlight_vec_finite(s_8.light_position);
-        local_38 = _e26;
+    bool _e16 = local_37;
+    if (_e16) {
+        bool _e20 = airlight_is_finite(s_8.t_min);
+        local_38 = _e20;
     } else {
         local_38 = false;
     }
-    bool _e28 = local_38;
-    if (_e28) {
-        bool _e32 = airlight_is_finite(s_8.intensity);
-        local_39 = _e32;
+    bool _e22 = local_38;
+    if (_e22) {
+        bool _e26 = airlight_vec_finite(s_8.light_position);
+        local_39 = _e26;
     } else {
         local_39 = false;
     }
-    bool _e34 = local_39;
-    if (_e34) {
-        local_40 = (s_8.intensity >= 0.0);
+    bool _e28 = local_39;
+    if (_e28) {
+        bool _e32 = airlight_is_finite(s_8.intensity);
+        local_40 = _e32;
     } else {
         local_40 = false;
     }
-    bool _e41 = local_40;
-    if (_e41) {
-        bool _e45 = airlight_is_finite(s_8.sigma_s);
-        local_41 = _e45;
+    bool _e34 = local_40;
+    if (_e34) {
+        local_41 = (s_8.intensity >= 0.0);
     } else {
         local_41 = false;
     }
-    bool _e47 = local_41;
-    if (_e47) {
-        local_42 = (s_8.sigma_s >= 0.0);
+    bool _e41 = local_41;
+    if (_e41) {
+        bool _e45 = airlight_is_finite(s_8.sigma_s);
+        local_42 = _e45;
     } else {
         local_42 = false;
     }
-    bool _e54 = local_42;
-    if (_e54) {
-        bool _e58 = airlight_is_finite(s_8.sigma_t);
-        local_43 = _e58;
+    bool _e47 = local_42;
+    if (_e47) {
+        local_43 = (s_8.sigma_s >= 0.0);
     } else {
         local_43 = false;
     }
-    bool _e60 = local_43;
-    if (_e60) {
-        local_44 = (s_8.sigma_t >= 0.0);
+    bool _e54 = local_43;
+    if (_e54) {
+        bool _e58 = airlight_is_finite(s_8.sigma_t);
+        local_44 = _e58;
     } else {
         local_44 = false;
     }
-    bool _e67 = local_44;
+    bool _e60 = local_44;
+    if (_e60) {
+        local_45 = (s_8.sigma_t >= 0.0);
+    } else {
+        local_45 = false;
+    }
+    bool _e67 = local_45;
     ok = _e67;
     if (((s_8.flags & 1u) == 0u)) {
         bool _e74 = ok;
         if (_e74) {
             bool _e78 = airlight_is_finite(s_8.t_max);
-            local_45 = _e78;
-        } else {
-            local_45 = false;
-        }
-        bool _e80 = local_45;
-        if (_e80) {
-            local_46 = (s_8.t_min <= s_8.t_max);
+            local_46 = _e78;
         } else {
             local_46 = false;
         }
-        bool _e87 = local_46;
+        bool _e80 = local_46;
+        if (_e80) {
+            local_47 = (s_8.t_min <= s_8.t_max);
+        } else {
+            local_47 = false;
+        }
+        bool _e87 = local_47;
         ok = _e87;
     }
     if ((s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e91 = ok;
         if (_e91) {
             bool _e95 = airlight_vec_finite(s_8.light_axis);
-            local_47 = _e95;
-        } else {
-            local_47 = false;
-        }
-        bool _e97 = local_47;
-        if (_e97) {
-            float _e101 = airlight_safe_length(s_8.light_axis);
-            local_48 = (_e101 > 0.0);
+            local_48 = _e95;
         } else {
             local_48 = false;
         }
-        bool _e105 = local_48;
-        if (_e105) {
-            local_49 = (s_8.light_param_a >= 0.0);
+        bool _e97 = local_48;
+        if (_e97) {
+            float _e101 = airlight_safe_length(s_8.light_axis);
+            local_49 = (_e101 > 0.0);
         } else {
             local_49 = false;
         }
-        bool _e112 = local_49;
-        if (_e112) {
-            local_50 = (s_8.light_param_a <= 1024.0);
+        bool _e105 = local_49;
+        if (_e105) {
+            local_50 = (s_8.light_param_a >= 0.0);
         } else {
             local_50 = false;
         }
-        bool _e119 = local_50;
-        if (_e119) {
-            local_51 = (fract((s_8.light_param_a * 0.5)) == 0.0);
+        bool _e112 = local_50;
+        if (_e112) {
+            local_51 = (s_8.light_param_a <= 1024.0);
         } else {
             local_51 = false;
         }
-        bool _e129 = local_51;
+        bool _e119 = local_51;
+        if (_e119) {
+            local_52 = (fract((s_8.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_52 = false;
+        }
+        bool _e129 = local_52;
         ok = _e129;
     } else {
         if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e133 = ok;
             if (_e133) {
                 bool _e137 = airlight_vec_finite(s_8.light_axis);
-                local_52 = _e137;
-            } else {
-                local_52 = false;
-            }
-            bool _e139 = local_52;
-            if (_e139) {
-                float _e143 = airlight_safe_length(s_8.light_axis);
-                local_53 = (_e143 > 0.0);
+                local_53 = _e137;
             } else {
                 local_53 = false;
             }
-            bool _e147 = local_53;
-            if (_e147) {
-                local_54 = (s_8.light_param_b < s_8.light_param_a);
+            bool _e139 = local_53;
+            if (_e139) {
+                float _e143 = airlight_safe_length(s_8.light_axis);
+                local_54 = (_e143 > 0.0);
             } else {
                 local_54 = false;
             }
-            bool _e154 = local_54;
-            if (_e154) {
-                local_55 = (s_8.light_param_b >= -1.0);
+            bool _e147 = local_54;
+            if (_e147) {
+                local_55 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_55 = false;
             }
-            bool _e161 = local_55;
-            if (_e161) {
-                local_56 = (s_8.light_param_a <= 1.0);
+            bool _e154 = local_55;
+            if (_e154) {
+                local_56 = (s_8.light_param_b >= -1.0);
             } else {
                 local_56 = false;
             }
-            bool _e168 = local_56;
+            bool _e161 = local_56;
+            if (_e161) {
+                local_57 = (s_8.light_param_a <= 1.0);
+            } else {
+                local_57 = false;
+            }
+            bool _e168 = local_57;
             ok = _e168;
         } else {
             if ((s_8.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -2431,40 +2444,40 @@ bool airlight_valid(AirlightScene s_8) {
         case 4u: {
             bool _e178 = ok;
             if (_e178) {
-                local_57 = g_ok;
+                local_58 = g_ok;
             } else {
-                local_57 = false;
+                local_58 = false;
             }
-            bool _e182 = local_57;
+            bool _e182 = local_58;
             ok = _e182;
             break;
         }
         case 5u: {
             bool _e183 = ok;
             if (_e183) {
-                local_58 = g_ok;
-            } else {
-                local_58 = false;
-            }
-            bool _e187 = local_58;
-            if (_e187) {
-                local_59 = (abs(s_8.phase_param_b) < 1.0);
+                local_59 = g_ok;
             } else {
                 local_59 = false;
             }
-            bool _e195 = local_59;
-            if (_e195) {
-                local_60 = (s_8.phase_param_c >= 0.0);
+            bool _e187 = local_59;
+            if (_e187) {
+                local_60 = (abs(s_8.phase_param_b) < 1.0);
             } else {
                 local_60 = false;
             }
-            bool _e202 = local_60;
-            if (_e202) {
-                local_61 = (s_8.phase_param_c <= 1.0);
+            bool _e195 = local_60;
+            if (_e195) {
+                local_61 = (s_8.phase_param_c >= 0.0);
             } else {
                 local_61 = false;
             }
-            bool _e209 = local_61;
+            bool _e202 = local_61;
+            if (_e202) {
+                local_62 = (s_8.phase_param_c <= 1.0);
+            } else {
+                local_62 = false;
+            }
+            bool _e209 = local_62;
             ok = _e209;
             break;
         }

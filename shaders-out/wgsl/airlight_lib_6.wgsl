@@ -1103,6 +1103,13 @@ fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
     return _e33;
 }
 
+fn airlight_hypot_one(a_4: f32) -> f32 {
+    if (abs(a_4) < 1000000000000000f) {
+        return sqrt((1f + (a_4 * a_4)));
+    }
+    return abs(a_4);
+}
+
 fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     var local_5: bool;
     var v_e_1: f32;
@@ -1142,120 +1149,120 @@ fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
     if !((big_h_1 == 0f)) {
         if !(v_e_infinite_1) {
             let _e36 = v_e_1;
-            let _e37 = v_e_1;
-            local_8 = ((big_h_1 * sqrt((1f + (_e36 * _e37)))) <= 1f);
+            let _e37 = airlight_hypot_one(_e36);
+            local_8 = ((big_h_1 * _e37) <= 1f);
         } else {
             local_8 = false;
         }
-        let _e46 = local_8;
-        local_7 = _e46;
+        let _e42 = local_8;
+        local_7 = _e42;
     } else {
         local_7 = true;
     }
     let near = local_7;
     if near {
         if !(v_e_infinite_1) {
-            let _e55 = v_e_1;
-            let _e60 = airlight_atan((half_3.dv / (1f + (v_s_1 * _e55))));
-            d_im = _e60;
-            let _e62 = v_e_1;
-            let _e69 = airlight_log1p(((half_3.dv * (v_s_1 + _e62)) / (1f + (v_s_1 * v_s_1))));
-            d_re = (0.5f * _e69);
+            let _e51 = v_e_1;
+            let _e56 = airlight_atan((half_3.dv / (1f + (v_s_1 * _e51))));
+            d_im = _e56;
+            let _e58 = v_e_1;
+            let _e65 = airlight_log1p(((half_3.dv * (v_s_1 + _e58)) / (1f + (v_s_1 * v_s_1))));
+            d_re = (0.5f * _e65);
         } else {
-            let _e74 = airlight_atan((1f / v_s_1));
-            d_im = _e74;
+            let _e70 = airlight_atan((1f / v_s_1));
+            d_im = _e70;
         }
         if (big_h_1 == 0f) {
             if !(half_3.second) {
-                let _e79 = d_re;
-                let _e80 = d_im;
-                return vec2<f32>(_e79, _e80);
+                let _e75 = d_re;
+                let _e76 = d_im;
+                return vec2<f32>(_e75, _e76);
             }
             if with_re {
-                let _e84 = v_e_1;
-                let _e85 = airlight_n1_log_part(v_s_1, _e84, v_e_infinite_1);
-                n1_ = _e85;
+                let _e80 = v_e_1;
+                let _e81 = airlight_n1_log_part(v_s_1, _e80, v_e_infinite_1);
+                n1_ = _e81;
             }
-            let _e86 = n1_;
-            let _e87 = d_im;
-            return vec2<f32>(_e86, _e87);
+            let _e82 = n1_;
+            let _e83 = d_im;
+            return vec2<f32>(_e82, _e83);
         }
         let z_s = vec2<f32>((big_h_1 * v_s_1), -(big_h_1));
-        let _e92 = v_e_1;
-        let z_e = vec2<f32>((big_h_1 * _e92), -(big_h_1));
+        let _e88 = v_e_1;
+        let z_e = vec2<f32>((big_h_1 * _e88), -(big_h_1));
         let hdv = (big_h_1 * half_3.dv);
-        let _e98 = airlight_ein_divided_difference(z_s, z_e);
-        let _e99 = airlight_cos_sin(big_h_1);
-        let rot = vec2<f32>(_e99.x, -(_e99.y));
+        let _e94 = airlight_ein_divided_difference(z_s, z_e);
+        let _e95 = airlight_cos_sin(big_h_1);
+        let rot = vec2<f32>(_e95.x, -(_e95.y));
         let scale = exp((big_h_1 * v_s_1));
-        let _e106 = d_re;
-        let _e107 = d_im;
-        let _e111 = airlight_cmul(rot, (vec2<f32>(_e106, _e107) - (_e98 * hdv)));
-        let c_4 = (_e111 * scale);
+        let _e102 = d_re;
+        let _e103 = d_im;
+        let _e107 = airlight_cmul(rot, (vec2<f32>(_e102, _e103) - (_e94 * hdv)));
+        let c_4 = (_e107 * scale);
         if !(half_3.second) {
             return c_4;
         }
         if with_re {
-            let _e119 = airlight_cos_sin((big_h_1 * 0.5f));
-            let sh = _e119.y;
-            let _e124 = v_e_1;
-            let _e128 = airlight_ein_divided_difference(vec2<f32>((big_h_1 * v_s_1), 0f), vec2<f32>((big_h_1 * _e124), 0f));
-            let _e129 = v_e_1;
-            let _e131 = airlight_n1_log_part(v_s_1, _e129, false);
-            let _e135 = d_re;
-            let _e139 = d_im;
-            let _e143 = airlight_cmul(rot, _e98);
-            n1_1 = ((((_e131 + (((sh * sh) + (sh * sh)) * _e135)) - (_e99.y * _e139)) - (hdv * (_e128.x - _e143.x))) * scale);
+            let _e115 = airlight_cos_sin((big_h_1 * 0.5f));
+            let sh = _e115.y;
+            let _e120 = v_e_1;
+            let _e124 = airlight_ein_divided_difference(vec2<f32>((big_h_1 * v_s_1), 0f), vec2<f32>((big_h_1 * _e120), 0f));
+            let _e125 = v_e_1;
+            let _e127 = airlight_n1_log_part(v_s_1, _e125, false);
+            let _e131 = d_re;
+            let _e135 = d_im;
+            let _e139 = airlight_cmul(rot, _e94);
+            n1_1 = ((((_e127 + (((sh * sh) + (sh * sh)) * _e131)) - (_e95.y * _e135)) - (hdv * (_e124.x - _e139.x))) * scale);
         }
-        let _e149 = n1_1;
-        return vec2<f32>(_e149, c_4.y);
+        let _e145 = n1_1;
+        return vec2<f32>(_e145, c_4.y);
     }
-    let _e155 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s_1), -(big_h_1)));
+    let _e151 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s_1), -(big_h_1)));
     if !(v_e_infinite_1) {
-        let _e165 = v_e_1;
-        let _e167 = airlight_is_finite((big_h_1 * _e165));
-        local_9 = _e167;
+        let _e161 = v_e_1;
+        let _e163 = airlight_is_finite((big_h_1 * _e161));
+        local_9 = _e163;
     } else {
         local_9 = false;
     }
     let far_finite = local_9;
     if far_finite {
-        let _e170 = v_e_1;
-        let _e174 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e170), -(big_h_1)));
-        s_e_1 = _e174;
+        let _e166 = v_e_1;
+        let _e170 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e166), -(big_h_1)));
+        s_e_1 = _e170;
         decay_1 = exp((-(big_h_1) * half_3.dv));
     }
-    let _e179 = s_e_1;
-    let _e180 = decay_1;
-    let c_5 = (_e155 - (_e179 * _e180));
+    let _e175 = s_e_1;
+    let _e176 = decay_1;
+    let c_5 = (_e151 - (_e175 * _e176));
     if !(half_3.second) {
         return c_5;
     }
     if with_re {
         if (half_3.y_hi <= 0.25f) {
-            let _e190 = airlight_n1_series(half_3);
-            n1_2 = _e190;
+            let _e186 = airlight_n1_series(half_3);
+            n1_2 = _e186;
         } else {
-            let _e191 = airlight_zero_scratch();
-            e_s = _e191;
+            let _e187 = airlight_zero_scratch();
+            e_s = _e187;
             airlight_en_scaled((big_h_1 * v_s_1), 1u, (&e_s));
             if far_finite {
-                let _e197 = airlight_zero_scratch();
-                e_e = _e197;
-                let _e199 = v_e_1;
-                airlight_en_scaled((big_h_1 * _e199), 1u, (&e_e));
-                let _e203 = e_e[0];
-                let _e205 = s_e_1.x;
-                let _e207 = decay_1;
-                tail = ((_e203 - _e205) * _e207);
+                let _e193 = airlight_zero_scratch();
+                e_e = _e193;
+                let _e195 = v_e_1;
+                airlight_en_scaled((big_h_1 * _e195), 1u, (&e_e));
+                let _e199 = e_e[0];
+                let _e201 = s_e_1.x;
+                let _e203 = decay_1;
+                tail = ((_e199 - _e201) * _e203);
             }
-            let _e210 = e_s[0];
-            let _e213 = tail;
-            n1_2 = ((_e210 - _e155.x) - _e213);
+            let _e206 = e_s[0];
+            let _e209 = tail;
+            n1_2 = ((_e206 - _e151.x) - _e209);
         }
     }
-    let _e215 = n1_2;
-    return vec2<f32>(_e215, c_5.y);
+    let _e211 = n1_2;
+    return vec2<f32>(_e211, c_5.y);
 }
 
 fn airlight_phi_moments(x_6: f32) -> array<f32, 6> {
@@ -1540,15 +1547,9 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 6> {
     return _e135;
 }
 
-fn airlight_bounded(a_4: f32) -> f32 {
-    return (1f / (a_4 + sqrt((1f + (a_4 * a_4)))));
-}
-
-fn airlight_hypot_one(a_5: f32) -> f32 {
-    if (abs(a_5) < 1000000000000000f) {
-        return sqrt((1f + (a_5 * a_5)));
-    }
-    return abs(a_5);
+fn airlight_bounded(a_5: f32) -> f32 {
+    let _e1 = airlight_hypot_one(a_5);
+    return (1f / (a_5 + _e1));
 }
 
 fn airlight_piece(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
@@ -1986,6 +1987,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     var dy: f32;
     var infinite_1: bool = true;
     var local_32: bool;
+    var local_33: bool;
 
     let t0_ = g_7.t_lo;
     let t1_ = g_7.t_hi;
@@ -2117,57 +2119,68 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         dy = _e171;
         let a_e_1 = ((t1_ - x_h) / h_2);
         if !(g_7.t_hi_infinite) {
-            local_32 = (a_e_1 < 1000000000000000000000000000000f);
+            let _e185 = airlight_is_finite(a_e_1);
+            local_32 = _e185;
         } else {
             local_32 = false;
         }
-        let _e188 = local_32;
-        if _e188 {
-            let _e189 = airlight_bounded(a_e_1);
-            y_lo = _e189;
-            let _e193 = airlight_hypot_one(a_e_1);
-            dv_4 = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e170 + _e193))));
-            let _e199 = dv_4;
-            let _e200 = y_lo;
-            dy = ((_e199 * _e200) * _e171);
-            infinite_1 = false;
+        let _e187 = local_32;
+        if _e187 {
+            let _e188 = airlight_bounded(a_e_1);
+            let _e192 = airlight_hypot_one(a_e_1);
+            let dv_end = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e170 + _e192))));
+            if (_e188 > 0f) {
+                let _e202 = airlight_is_finite(dv_end);
+                local_33 = _e202;
+            } else {
+                local_33 = false;
+            }
+            let _e204 = local_33;
+            if _e204 {
+                y_lo = _e188;
+                dv_4 = dv_end;
+                let _e205 = dv_4;
+                let _e206 = y_lo;
+                dy = ((_e205 * _e206) * _e171);
+                infinite_1 = false;
+            }
         }
-        let _e205 = dv_4;
-        let _e206 = infinite_1;
-        let _e207 = airlight_optical(big_h_2, _e205, _e206);
-        let _e208 = y_lo;
-        let _e209 = dy;
-        let _e210 = dv_4;
-        let _e211 = infinite_1;
-        let half_8 = AirlightHalf(true, _e207, _e208, _e171, _e209, _e210, _e211);
-        let _e214 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
-        let _e215 = total_2;
-        let _e223 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e214);
-        total_2 = (_e215 + _e223);
+        let _e211 = dv_4;
+        let _e212 = infinite_1;
+        let _e213 = airlight_optical(big_h_2, _e211, _e212);
+        let _e214 = y_lo;
+        let _e215 = dy;
+        let _e216 = dv_4;
+        let _e217 = infinite_1;
+        let half_8 = AirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
+        let _e220 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
+        let _e221 = total_2;
+        let _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
+        total_2 = (_e221 + _e229);
     }
-    let _e225 = total_2;
-    return AirlightResult(max(_e225, 0f), AIRLIGHT_STATUS_OK);
+    let _e231 = total_2;
+    return AirlightResult(max(_e231, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_33: bool;
     var local_34: bool;
+    var local_35: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_33 = _e6;
-    } else {
-        local_33 = false;
-    }
-    let _e8 = local_33;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_34 = _e12;
+        local_34 = _e6;
     } else {
         local_34 = false;
     }
-    let _e14 = local_34;
+    let _e8 = local_34;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_35 = _e12;
+    } else {
+        local_35 = false;
+    }
+    let _e14 = local_35;
     return _e14;
 }
 
@@ -2186,7 +2199,6 @@ fn airlight_normalize(v_2: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_8: AirlightScene) -> bool {
-    var local_35: bool;
     var local_36: bool;
     var local_37: bool;
     var local_38: bool;
@@ -2196,8 +2208,8 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_42: bool;
     var local_43: bool;
     var local_44: bool;
-    var ok: bool;
     var local_45: bool;
+    var ok: bool;
     var local_46: bool;
     var local_47: bool;
     var local_48: bool;
@@ -2214,163 +2226,164 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_59: bool;
     var local_60: bool;
     var local_61: bool;
+    var local_62: bool;
 
     let _e2 = airlight_vec_finite(s_8.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_8.dir);
-        local_35 = _e6;
-    } else {
-        local_35 = false;
-    }
-    let _e8 = local_35;
-    if _e8 {
-        let _e12 = airlight_safe_length(s_8.dir);
-        local_36 = (_e12 > 0f);
+        local_36 = _e6;
     } else {
         local_36 = false;
     }
-    let _e16 = local_36;
-    if _e16 {
-        let _e20 = airlight_is_finite(s_8.t_min);
-        local_37 = _e20;
+    let _e8 = local_36;
+    if _e8 {
+        let _e12 = airlight_safe_length(s_8.dir);
+        local_37 = (_e12 > 0f);
     } else {
         local_37 = false;
     }
-    let _e22 = local_37;
-    if _e22 {
-        let _e26 = airlight_vec_finite(s_8.light_position);
-        local_38 = _e26;
+    let _e16 = local_37;
+    if _e16 {
+        let _e20 = airlight_is_finite(s_8.t_min);
+        local_38 = _e20;
     } else {
         local_38 = false;
     }
-    let _e28 = local_38;
-    if _e28 {
-        let _e32 = airlight_is_finite(s_8.intensity);
-        local_39 = _e32;
+    let _e22 = local_38;
+    if _e22 {
+        let _e26 = airlight_vec_finite(s_8.light_position);
+        local_39 = _e26;
     } else {
         local_39 = false;
     }
-    let _e34 = local_39;
-    if _e34 {
-        local_40 = (s_8.intensity >= 0f);
+    let _e28 = local_39;
+    if _e28 {
+        let _e32 = airlight_is_finite(s_8.intensity);
+        local_40 = _e32;
     } else {
         local_40 = false;
     }
-    let _e41 = local_40;
-    if _e41 {
-        let _e45 = airlight_is_finite(s_8.sigma_s);
-        local_41 = _e45;
+    let _e34 = local_40;
+    if _e34 {
+        local_41 = (s_8.intensity >= 0f);
     } else {
         local_41 = false;
     }
-    let _e47 = local_41;
-    if _e47 {
-        local_42 = (s_8.sigma_s >= 0f);
+    let _e41 = local_41;
+    if _e41 {
+        let _e45 = airlight_is_finite(s_8.sigma_s);
+        local_42 = _e45;
     } else {
         local_42 = false;
     }
-    let _e54 = local_42;
-    if _e54 {
-        let _e58 = airlight_is_finite(s_8.sigma_t);
-        local_43 = _e58;
+    let _e47 = local_42;
+    if _e47 {
+        local_43 = (s_8.sigma_s >= 0f);
     } else {
         local_43 = false;
     }
-    let _e60 = local_43;
-    if _e60 {
-        local_44 = (s_8.sigma_t >= 0f);
+    let _e54 = local_43;
+    if _e54 {
+        let _e58 = airlight_is_finite(s_8.sigma_t);
+        local_44 = _e58;
     } else {
         local_44 = false;
     }
-    let _e67 = local_44;
+    let _e60 = local_44;
+    if _e60 {
+        local_45 = (s_8.sigma_t >= 0f);
+    } else {
+        local_45 = false;
+    }
+    let _e67 = local_45;
     ok = _e67;
     if ((s_8.flags & 1u) == 0u) {
         let _e74 = ok;
         if _e74 {
             let _e78 = airlight_is_finite(s_8.t_max);
-            local_45 = _e78;
-        } else {
-            local_45 = false;
-        }
-        let _e80 = local_45;
-        if _e80 {
-            local_46 = (s_8.t_min <= s_8.t_max);
+            local_46 = _e78;
         } else {
             local_46 = false;
         }
-        let _e87 = local_46;
+        let _e80 = local_46;
+        if _e80 {
+            local_47 = (s_8.t_min <= s_8.t_max);
+        } else {
+            local_47 = false;
+        }
+        let _e87 = local_47;
         ok = _e87;
     }
     if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e91 = ok;
         if _e91 {
             let _e95 = airlight_vec_finite(s_8.light_axis);
-            local_47 = _e95;
-        } else {
-            local_47 = false;
-        }
-        let _e97 = local_47;
-        if _e97 {
-            let _e101 = airlight_safe_length(s_8.light_axis);
-            local_48 = (_e101 > 0f);
+            local_48 = _e95;
         } else {
             local_48 = false;
         }
-        let _e105 = local_48;
-        if _e105 {
-            local_49 = (s_8.light_param_a >= 0f);
+        let _e97 = local_48;
+        if _e97 {
+            let _e101 = airlight_safe_length(s_8.light_axis);
+            local_49 = (_e101 > 0f);
         } else {
             local_49 = false;
         }
-        let _e112 = local_49;
-        if _e112 {
-            local_50 = (s_8.light_param_a <= 1024f);
+        let _e105 = local_49;
+        if _e105 {
+            local_50 = (s_8.light_param_a >= 0f);
         } else {
             local_50 = false;
         }
-        let _e119 = local_50;
-        if _e119 {
-            local_51 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        let _e112 = local_50;
+        if _e112 {
+            local_51 = (s_8.light_param_a <= 1024f);
         } else {
             local_51 = false;
         }
-        let _e129 = local_51;
+        let _e119 = local_51;
+        if _e119 {
+            local_52 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_52 = false;
+        }
+        let _e129 = local_52;
         ok = _e129;
     } else {
         if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e133 = ok;
             if _e133 {
                 let _e137 = airlight_vec_finite(s_8.light_axis);
-                local_52 = _e137;
-            } else {
-                local_52 = false;
-            }
-            let _e139 = local_52;
-            if _e139 {
-                let _e143 = airlight_safe_length(s_8.light_axis);
-                local_53 = (_e143 > 0f);
+                local_53 = _e137;
             } else {
                 local_53 = false;
             }
-            let _e147 = local_53;
-            if _e147 {
-                local_54 = (s_8.light_param_b < s_8.light_param_a);
+            let _e139 = local_53;
+            if _e139 {
+                let _e143 = airlight_safe_length(s_8.light_axis);
+                local_54 = (_e143 > 0f);
             } else {
                 local_54 = false;
             }
-            let _e154 = local_54;
-            if _e154 {
-                local_55 = (s_8.light_param_b >= -1f);
+            let _e147 = local_54;
+            if _e147 {
+                local_55 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_55 = false;
             }
-            let _e161 = local_55;
-            if _e161 {
-                local_56 = (s_8.light_param_a <= 1f);
+            let _e154 = local_55;
+            if _e154 {
+                local_56 = (s_8.light_param_b >= -1f);
             } else {
                 local_56 = false;
             }
-            let _e168 = local_56;
+            let _e161 = local_56;
+            if _e161 {
+                local_57 = (s_8.light_param_a <= 1f);
+            } else {
+                local_57 = false;
+            }
+            let _e168 = local_57;
             ok = _e168;
         } else {
             if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2385,39 +2398,39 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e178 = ok;
             if _e178 {
-                local_57 = g_ok;
+                local_58 = g_ok;
             } else {
-                local_57 = false;
+                local_58 = false;
             }
-            let _e182 = local_57;
+            let _e182 = local_58;
             ok = _e182;
         }
         case 5u: {
             let _e183 = ok;
             if _e183 {
-                local_58 = g_ok;
-            } else {
-                local_58 = false;
-            }
-            let _e187 = local_58;
-            if _e187 {
-                local_59 = (abs(s_8.phase_param_b) < 1f);
+                local_59 = g_ok;
             } else {
                 local_59 = false;
             }
-            let _e195 = local_59;
-            if _e195 {
-                local_60 = (s_8.phase_param_c >= 0f);
+            let _e187 = local_59;
+            if _e187 {
+                local_60 = (abs(s_8.phase_param_b) < 1f);
             } else {
                 local_60 = false;
             }
-            let _e202 = local_60;
-            if _e202 {
-                local_61 = (s_8.phase_param_c <= 1f);
+            let _e195 = local_60;
+            if _e195 {
+                local_61 = (s_8.phase_param_c >= 0f);
             } else {
                 local_61 = false;
             }
-            let _e209 = local_61;
+            let _e202 = local_61;
+            if _e202 {
+                local_62 = (s_8.phase_param_c <= 1f);
+            } else {
+                local_62 = false;
+            }
+            let _e209 = local_62;
             ok = _e209;
         }
         default: {
