@@ -82,16 +82,22 @@ impl Gpu {
 
     /// Runs `shader` over `records` (a whole number of 112-byte records) and returns the
     /// 8-byte results, in batches that fit the adapter's limits. Progress on stderr when
-    /// `progress` is set and there is more than one batch.
+    /// `progress` is set and there is more than one batch. Builds the pipeline on every call;
+    /// [`Gpu::prepare`] once and [`Prepared::run`] many times to dispatch without that cost.
     pub fn run(&self, shader: Shader<'_>, records: &[u8], progress: bool) -> Result<Vec<u8>, String> {
         if records.len() % RECORD_SIZE != 0 {
             return Err("record buffer is not a whole number of records".into());
         }
-        let n = records.len() / RECORD_SIZE;
-        let mut out = Vec::with_capacity(n * RESULT_SIZE);
-        if n == 0 {
-            return Ok(out);
+        if records.is_empty() {
+            return Ok(Vec::new());
         }
+        self.prepare(shader).run(records, progress)
+    }
+
+    /// Compiles `shader` and builds its compute pipeline (entry `airlight_main` for WGSL, the
+    /// named entry for SPIR-V; records at binding 0, results at binding 1, group 0) once, for
+    /// any number of [`Prepared::run`] calls.
+    pub fn prepare(&self, shader: Shader<'_>) -> Prepared<'_> {
         let module = self.module(shader);
         let entry = match shader {
             Shader::Wgsl(_) => "airlight_main",
@@ -126,56 +132,82 @@ impl Gpu {
             compilation_options: Default::default(),
             cache: None,
         });
-        let by_binding = self.limits.max_storage_buffer_binding_size as usize / RECORD_SIZE;
-        let by_dispatch = self.limits.max_compute_workgroups_per_dimension as usize * 64;
+        Prepared { gpu: self, bgl, pipeline }
+    }
+}
+
+/// A compiled compute pipeline on a [`Gpu`], from [`Gpu::prepare`].
+pub struct Prepared<'g> {
+    gpu: &'g Gpu,
+    bgl: wgpu::BindGroupLayout,
+    pipeline: wgpu::ComputePipeline,
+}
+
+impl Prepared<'_> {
+    /// Runs the pipeline over `records` (a whole number of 112-byte records) and returns the
+    /// 8-byte results, exactly as [`Gpu::run`] does (which calls this): buffers are created,
+    /// filled and read back per call, in batches that fit the adapter's limits.
+    pub fn run(&self, records: &[u8], progress: bool) -> Result<Vec<u8>, String> {
+        if records.len() % RECORD_SIZE != 0 {
+            return Err("record buffer is not a whole number of records".into());
+        }
+        let n = records.len() / RECORD_SIZE;
+        let mut out = Vec::with_capacity(n * RESULT_SIZE);
+        if n == 0 {
+            return Ok(out);
+        }
+        let gpu = self.gpu;
+        let (bgl, pipeline) = (&self.bgl, &self.pipeline);
+        let by_binding = gpu.limits.max_storage_buffer_binding_size as usize / RECORD_SIZE;
+        let by_dispatch = gpu.limits.max_compute_workgroups_per_dimension as usize * 64;
         let batch = by_binding.min(by_dispatch).min(1 << 18).max(64);
         let batches = n.div_ceil(batch);
         let start = std::time::Instant::now();
         for (b, chunk) in records.chunks(batch * RECORD_SIZE).enumerate() {
             let count = chunk.len() / RECORD_SIZE;
-            let input = self.device.create_buffer(&wgpu::BufferDescriptor {
+            let input = gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("records"),
                 size: chunk.len() as u64,
                 usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            self.queue.write_buffer(&input, 0, chunk);
+            gpu.queue.write_buffer(&input, 0, chunk);
             let size = (count * RESULT_SIZE) as u64;
-            let output = self.device.create_buffer(&wgpu::BufferDescriptor {
+            let output = gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("results"),
                 size,
                 usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
                 mapped_at_creation: false,
             });
-            let staging = self.device.create_buffer(&wgpu::BufferDescriptor {
+            let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("staging"),
                 size,
                 usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            let bind = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("airlight"),
-                layout: &bgl,
+                layout: bgl,
                 entries: &[
                     wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
                     wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
                 ],
             });
-            let mut enc = self.device.create_command_encoder(&Default::default());
+            let mut enc = gpu.device.create_command_encoder(&Default::default());
             {
                 let mut pass = enc.begin_compute_pass(&Default::default());
-                pass.set_pipeline(&pipeline);
+                pass.set_pipeline(pipeline);
                 pass.set_bind_group(0, &bind, &[]);
                 pass.dispatch_workgroups(count.div_ceil(64) as u32, 1, 1);
             }
             enc.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
-            self.queue.submit([enc.finish()]);
+            gpu.queue.submit([enc.finish()]);
             let slice = staging.slice(..);
             let (tx, rx) = std::sync::mpsc::channel();
             slice.map_async(wgpu::MapMode::Read, move |r| {
                 let _ = tx.send(r);
             });
-            self.device
+            gpu.device
                 .poll(wgpu::PollType::Wait { submission_index: None, timeout: None })
                 .map_err(|e| format!("GPU poll failed: {e}"))?;
             rx.recv().map_err(|e| e.to_string())?.map_err(|e| format!("cannot read results back: {e}"))?;

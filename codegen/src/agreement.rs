@@ -1,0 +1,207 @@
+//! The CPU/shader agreement criterion, in one place for `airlight verify`, the agreement
+//! tests (tests/tests/gpu_agreement.rs) and the `shader` fuzz target.
+//!
+//! A record's shader result is judged against the f32 CPU kernel at the same term count:
+//!
+//! `|gpu − cpu_f32| ≤ NOISE_FACTOR·noise + ALLOWANCE·scale + DENORMAL_FLOOR` (9·noise +
+//! 2e-4·scale + 2^-100), statuses equal, no NaN.
+//!
+//! ## The allowance, from Vulkan's precision rules (f32)
+//! The shader and the CPU f32 kernel run the same algorithm; they differ by the accuracy of
+//! the built-ins, which Vulkan bounds as: `exp` 3 + 2|x| ulp, `log` 3 ulp (2^-21 absolute in
+//! [0.5, 2]), `sin`/`cos` 2^-11 absolute on [−π, π], `atan` 4096 ulp, division 2.5 ulp,
+//! `sqrt`/`inverseSqrt` 2 ulp. The shader avoids the three loose ones where they matter (its
+//! own `atan`, `log1p`, `sin`/`cos` from + − × ÷, ≈ 2 ulp), so what remains is `exp` of
+//! folded exponents `≥ −88` (≤ 179 ulp = 2.1e-5), `log` (3 ulp) and division: ≈ 2.5e-5 per
+//! closed form, times the cancellation of a difference (≤ 4 outside the short route:
+//! `1/(1 − e^{−0.3})` on its boundary) and two halves: **2e-4** relative for model-exact
+//! scenes, and relative to the integrand's *scale* (`L` with `F` replaced by its maximum)
+//! for anisotropic ones.
+//!
+//! ## The noise: f32 conditioning of the same algorithm
+//! Both sides carry f32 rounding noise that the expansion's moment recurrence amplifies for
+//! sharply peaked `F` (`Q_k = R_{k−1} − b Q_{k−1}` multiplies the error of `Q_0` by
+//! `(|b|/r)^k` on a sub-interval of half-width `r`; with 6 terms and `|g| ≈ 0.8` it reaches
+//! 1e-3 of scale). It is measured per record on the CPU: the largest `|cpu_f32 − cpu_f64|`
+//! (same term count and expansion: the same polynomial, rounding the only difference) over
+//! the record and `PERTURBATIONS` copies with one input moved by one ulp — the spread of
+//! f32 results over inputs that are the same to f32's precision. That error is the
+//! conditioning `κ` of the record times the CPU's per-operation rounding (≤ 1 ulp: correctly
+//! rounded arithmetic, libm's `exp`/`ln` within 1 ulp). The shader's error is the same `κ`
+//! times *its* per-operation errors, which Vulkan lets be up to 8× larger where the
+//! conditioned quantities are formed: `exp` 3 + 2|x| ulp at the small arguments (`|x| ≲ 2.5`)
+//! of the f32 `E1`/`E_n` series regions and the near route (≤ 8 ulp), division 2.5 ulp
+//! (against 0.5). So `|gpu − cpu_f32| ≤ noise + 8·noise`: `NOISE_FACTOR = 9`.
+//!
+//! Discrete choices (route, subdivision count, where a cone edge cuts) can fall differently
+//! when a decision value sits within rounding of its threshold; the two results are then two
+//! valid approximations, each within the expansion error `e_N` of the integral, so `noise`
+//! also holds `e_N`, estimated as `|L_N − L_12|` in f64.
+//!
+//! Vulkan lets denormals flush to zero: below `2^-100` (the result's last factors, the
+//! prefactor `2σsI/h` and the folded exponential, reach `2^26` at most) an intermediate may
+//! have flushed, so that absolute floor is added.
+
+use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
+use crate::scene_json::SceneRecord;
+use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
+use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
+use airlight::{Expansion, Medium, PhaseFunction, PointLight, Ray, Scene};
+
+/// Relative allowance (of scale) for the built-ins' accuracy (module docs).
+pub const ALLOWANCE: f64 = 2e-4;
+/// Absolute floor for denormal flushing (module docs).
+pub const DENORMAL_FLOOR: f64 = 1.0 / (1u128 << 100) as f64;
+/// The noise's multiplier: the CPU's own share plus the shader's, whose per-operation
+/// errors Vulkan lets be up to 8× the CPU's (module docs).
+pub const NOISE_FACTOR: f64 = 9.0;
+/// How many one-ulp perturbations of the inputs sample the f32 noise.
+pub const PERTURBATIONS: usize = 20;
+
+/// What the CPU says a record's shader result should be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Expected {
+    /// The f32 CPU kernel's value (0 for an invalid record, `f32::MAX` for `+∞`, as the shader
+    /// writes them).
+    pub value: f32,
+    /// The status the shader must report.
+    pub status: u32,
+    /// The f64 kernel's value at the same term count.
+    pub f64_value: f64,
+    /// The f32 noise plus the expansion error estimate (module docs), absolute.
+    pub noise: f64,
+    /// The integrand's scale: `L` with `F` replaced by its maximum (≥ |value|).
+    pub scale: f64,
+}
+
+/// How one shader result compares.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Judgement {
+    /// `|gpu − cpu_f32| / scale` (0 for non-OK statuses).
+    pub diff: f64,
+    /// `|gpu − cpu_f64| / scale`.
+    pub diff_f64: f64,
+    /// How far the difference exceeds the tolerance, relative to scale (0 when within).
+    pub excess: f64,
+    /// What disagrees, if anything: a non-finite value, a status, or a value off tolerance.
+    pub problem: Option<String>,
+}
+
+fn in_scatter<T: airlight::Real>(rec: &SceneRecord<T>, terms: usize) -> Option<T> {
+    Scene::new(rec.ray, rec.light, rec.medium, rec.phase).ok().map(|s| match terms {
+        4 => s.in_scatter_with::<4>(Expansion::Chebyshev),
+        6 => s.in_scatter_with::<6>(Expansion::Chebyshev),
+        _ => s.in_scatter_with::<12>(Expansion::Chebyshev),
+    })
+}
+
+/// The record in f64, every number exactly as in f32.
+pub fn widen(rec: &SceneRecord<f32>) -> SceneRecord<f64> {
+    let distribution = match rec.light.distribution {
+        AnyDistribution::Omni => AnyDistribution::Omni,
+        AnyDistribution::TwoLobed(d) => AnyDistribution::TwoLobed(TwoLobed { axis: d.axis.as_dvec3(), power: d.power }),
+        AnyDistribution::SpotCone(d) => {
+            AnyDistribution::SpotCone(SpotCone { axis: d.axis.as_dvec3(), cos_inner: d.cos_inner as f64, cos_outer: d.cos_outer as f64 })
+        }
+    };
+    let phase = match rec.phase {
+        AnyPhase::Isotropic => AnyPhase::Isotropic,
+        AnyPhase::Rayleigh => AnyPhase::Rayleigh,
+        AnyPhase::HenyeyGreenstein(p) => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: p.g as f64 }),
+        AnyPhase::Schlick(p) => AnyPhase::Schlick(Schlick { k: p.k as f64 }),
+        AnyPhase::CornetteShanks(p) => AnyPhase::CornetteShanks(CornetteShanks { g: p.g as f64 }),
+        AnyPhase::TwoLobeHenyeyGreenstein(p) => {
+            AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: p.g1 as f64, g2: p.g2 as f64, w: p.w as f64 })
+        }
+    };
+    SceneRecord {
+        ray: Ray { origin: rec.ray.origin.as_dvec3(), dir: rec.ray.dir.as_dvec3(), t_min: rec.ray.t_min as f64, t_max: rec.ray.t_max as f64 },
+        light: PointLight { position: rec.light.position.as_dvec3(), intensity: rec.light.intensity as f64, distribution },
+        medium: Medium { sigma_s: rec.medium.sigma_s as f64, sigma_t: rec.medium.sigma_t as f64 },
+        phase,
+    }
+}
+
+/// The record with input `k` (of `PERTURBATIONS`) moved by one ulp: `t_min` up/down, `t_max`
+/// down, each coordinate of the light and of the origin up/down, direction components up,
+/// `σt` up/down, the phase function's first parameter up/down (where it stays valid).
+fn perturbed(rec: &SceneRecord<f32>, k: usize) -> SceneRecord<f32> {
+    let mut q = *rec;
+    let step = |x: f32, up: bool| if up { x.next_up() } else { x.next_down() };
+    match k {
+        0 | 1 => q.ray.t_min = step(q.ray.t_min, k == 0),
+        2 => {
+            if q.ray.t_max.is_finite() && q.ray.t_max.next_down() > q.ray.t_min {
+                q.ray.t_max = q.ray.t_max.next_down();
+            }
+        }
+        3..=8 => {
+            let i = (k - 3) / 2;
+            q.light.position[i] = step(q.light.position[i], k % 2 == 1);
+        }
+        9..=14 => {
+            let i = (k - 9) / 2;
+            q.ray.origin[i] = step(q.ray.origin[i], k % 2 == 1);
+        }
+        15 | 16 => q.ray.dir[k - 15] = step(q.ray.dir[k - 15], true),
+        17 => q.medium.sigma_t = q.medium.sigma_t.next_up(),
+        18 => q.medium.sigma_t = q.medium.sigma_t.next_down().max(0.0),
+        _ => match &mut q.phase {
+            AnyPhase::HenyeyGreenstein(p) => p.g = p.g.next_down(),
+            AnyPhase::Schlick(p) => p.k = p.k.next_down(),
+            AnyPhase::CornetteShanks(p) => p.g = p.g.next_down(),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.w = p.w.next_down().max(0.0),
+            _ => q.ray.dir[2] = q.ray.dir[2].next_up(),
+        },
+    }
+    q
+}
+
+/// The CPU's expectation for `rec` at `terms` (4 or 6) expansion terms.
+pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
+    let Some(v) = in_scatter(rec, terms) else {
+        return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
+    };
+    let wide = widen(rec);
+    let same = in_scatter(&wide, terms).unwrap_or(0.0);
+    if v.is_infinite() {
+        return Expected { value: f32::MAX, status: STATUS_INFINITE, f64_value: same, noise: 0.0, scale: 0.0 };
+    }
+    let e_n = (same - in_scatter(&wide, 12).unwrap_or(same)).abs();
+    let mut worst = (v as f64 - same).abs();
+    for k in 0..PERTURBATIONS {
+        if let Some(x) = in_scatter(&perturbed(rec, k), terms) {
+            if x.is_finite() {
+                worst = worst.max((x as f64 - same).abs());
+            }
+        }
+    }
+    let noise = if same.is_finite() { worst + e_n } else { 0.0 };
+    let mut iso = wide;
+    iso.light.distribution = AnyDistribution::Omni;
+    iso.phase = AnyPhase::Isotropic;
+    let p_max = [-1.0f64, 1.0].iter().map(|&mu| wide.phase.eval(mu)).fold(0.0, f64::max);
+    let scale = (in_scatter(&iso, 6).unwrap_or(0.0) * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
+    Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
+}
+
+/// Judges one shader result `(got, status)` against `e`.
+pub fn judge(e: &Expected, got: f32, status: u32) -> Judgement {
+    let verdict = |diff: f64, diff_f64: f64, excess: f64, problem: Option<String>| Judgement { diff, diff_f64, excess, problem };
+    if got.is_nan() || got.is_infinite() {
+        return verdict(0.0, 0.0, 0.0, Some(format!("non-finite result {got}")));
+    }
+    if status != e.status {
+        return verdict(0.0, 0.0, 0.0, Some(format!("status {status}, CPU {}", e.status)));
+    }
+    if status != STATUS_OK || e.scale == 0.0 {
+        let same = got == e.value || (status == STATUS_OK && (got as f64).abs() <= DENORMAL_FLOOR);
+        return verdict(0.0, 0.0, 0.0, (!same).then(|| format!("value {got} with status {status}, want {}", e.value)));
+    }
+    let diff = (got as f64 - e.value as f64).abs();
+    let excess = ((diff - DENORMAL_FLOOR - NOISE_FACTOR * e.noise) / e.scale - ALLOWANCE).max(0.0);
+    let problem = (excess > 0.0).then(|| {
+        format!("gpu {got} cpu {} (differ by {:.2e} of scale {:.3e}, noise {:.2e}; excess {excess:.2e})", e.value, diff / e.scale, e.scale, e.noise / e.scale)
+    });
+    verdict(diff / e.scale, (got as f64 - e.f64_value).abs() / e.scale, excess, problem)
+}
