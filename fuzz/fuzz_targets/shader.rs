@@ -1,0 +1,66 @@
+//! Target (3), differential: the CPU kernel against the committed compute shader
+//! (shaders-out/wgsl/airlight_4.wgsl) on this machine's Vulkan adapter (lavapipe here). Each
+//! input is a batch of up to 64 scenes (decoded as in the `kernel` target: arbitrary values,
+//! special values and raw bits included), run in one dispatch and judged record by record
+//! with the agreement criterion of `airlight_codegen::agreement` (the one the agreement tests
+//! and `airlight verify` use): statuses equal, no NaN or Inf, values within
+//! `9·noise + 2e-4·scale`. Built without a sanitizer (`-s none`: the driver is not
+//! instrumented and wgpu under ASan is slow); `scripts/fuzz.sh` does that.
+#![no_main]
+use airlight::glam::Vec3;
+use airlight_codegen::agreement::{expect, judge};
+use airlight_codegen::gpu::{Gpu, Prepared, Shader};
+use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE};
+use airlight_codegen::scene_json::SceneRecord;
+use libfuzzer_sys::fuzz_target;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::OnceLock;
+
+#[macro_use]
+mod common;
+use common::{decode_from, Raw, Reader};
+
+const TERMS: usize = 4;
+const BATCH: usize = 64;
+
+/// The adapter and the compiled pipeline, built once per process (leaked: they live as long
+/// as the fuzzer).
+fn pipeline() -> &'static Prepared<'static> {
+    static PIPELINE: OnceLock<Prepared<'static>> = OnceLock::new();
+    PIPELINE.get_or_init(|| {
+        let gpu: &'static Gpu = Box::leak(Box::new(Gpu::new().expect("the shader target needs a Vulkan adapter (mesa-vulkan-drivers)")));
+        eprintln!("shader target: {}", gpu.describe());
+        gpu.prepare(Shader::Wgsl(airlight_codegen::eval::compute_wgsl(TERMS)))
+    })
+}
+
+/// Scenes executed on the adapter so far (printed every 100 000).
+static SCENES: AtomicUsize = AtomicUsize::new(0);
+
+fuzz_target!(|data: &[u8]| {
+    let mut reader = Reader(data);
+    let mut records = Vec::new();
+    let mut scenes = Vec::new();
+    while !reader.0.is_empty() && scenes.len() < BATCH {
+        let raw: Raw = decode_from(&mut reader);
+        let (ray, light, medium, phase) = scene_types!(f32, Vec3)(&raw);
+        let rec = SceneRecord { ray, light, medium, phase };
+        records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
+        scenes.push(rec);
+    }
+    if scenes.is_empty() {
+        return;
+    }
+    let out = pipeline().run(&records, false).expect("dispatch failed");
+    for (i, rec) in scenes.iter().enumerate() {
+        let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
+        let j = judge(&expect(rec, TERMS), got, status);
+        if let Some(problem) = j.problem {
+            panic!("CPU and shader disagree: {problem} for {rec:?}");
+        }
+    }
+    let before = SCENES.fetch_add(scenes.len(), Ordering::Relaxed);
+    if (before + scenes.len()) / 100_000 > before / 100_000 {
+        eprintln!("shader target: {} scenes executed on the adapter", before + scenes.len());
+    }
+});
