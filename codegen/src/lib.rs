@@ -5,6 +5,7 @@ pub mod agreement;
 pub mod eval;
 pub mod gpu;
 pub mod layout;
+pub mod render;
 pub mod targets;
 pub mod verify;
 pub mod scene_json;

@@ -12,6 +12,8 @@ USAGE:
     airlight emit [--out DIR] [--terms 4|6|4,6] [--targets wgsl,glsl,spirv,hlsl,msl]
     airlight check [--dir DIR] [--terms ...] [--targets ...]
     airlight verify [--cases N] [--terms 4|6]
+    airlight render [--scene lighthouse|road|stage|bench|all] [--size WxH] [--out DIR]
+                    [--backend cpu|gpu|reference|all]
     airlight --help
 
 COMMANDS:
@@ -41,6 +43,26 @@ COMMANDS:
             through the committed compute shader, compared with the f32 CPU kernel; prints
             the adapter, cases, max/median difference, NaN count and a PASS/FAIL verdict
             (exit 1 on FAIL).
+
+    render  Render the pictures of issue 5 to PNG: a lighthouse with a two-lobed beam in thick
+            brume, a foggy road with headlights and a streetlamp, a stage under three coloured
+            spotlights, a park bench in Rayleigh mist. Writes DIR/<scene>_<backend>.png per
+            backend — cpu (the f64 kernel, 6 Chebyshev terms), gpu (the committed WGSL compute
+            shader through wgpu, f32, 4 terms), reference (brute-force adaptive quadrature of
+            the integral, no closed forms) — and, with the reference, error heat maps
+            DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
+            relative error against the reference, log10 scale from 1e-7 (black) through blue,
+            green, yellow to 1e-1 (red), with a colour bar along the bottom. Prints one summary
+            line per scene (times, max/median error); progress on stderr for renders that take
+            more than a second.
+
+OPTIONS (render):
+    --scene NAME|all                 lighthouse, road, stage, bench or all (default all)
+    --size WxH                       image size in pixels (default 480x270)
+    --out DIR                        output directory, created if missing (default renders)
+    --backend cpu|gpu|reference|all  one backend, a comma list, or all (default all); with
+                                     all, a machine without a GPU adapter skips gpu with a
+                                     warning
 
 OPTIONS (eval):
     --backend cpu|gpu                CPU kernel (default) or the emitted compute shader through
@@ -72,6 +94,7 @@ fn main() -> ExitCode {
         "emit" => cmd_emit(&args[1..], false),
         "check" => cmd_emit(&args[1..], true),
         "verify" => cmd_verify(&args[1..]),
+        "render" => cmd_render(&args[1..]),
         other => fail(&format!("unknown command '{other}'")),
     }
 }
@@ -223,4 +246,134 @@ fn cmd_verify(args: &[String]) -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+fn cmd_render(args: &[String]) -> ExitCode {
+    use airlight_codegen::render::{self, Image};
+    use std::time::Instant;
+    let (mut scenes, mut size, mut out) = (render::SCENES.to_vec(), (480u32, 270u32), std::path::PathBuf::from("renders"));
+    let (mut cpu, mut gpu, mut reference, mut all) = (true, true, true, true);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
+        let r: Result<(), String> = match a.as_str() {
+            "--help" | "-h" => {
+                print!("{HELP}");
+                return ExitCode::SUCCESS;
+            }
+            "--scene" => value("--scene").and_then(|v| match v.as_str() {
+                "all" => Ok(scenes = render::SCENES.to_vec()),
+                s => match render::SCENES.iter().find(|n| **n == s) {
+                    Some(n) => Ok(scenes = vec![*n]),
+                    None => Err(format!("--scene must be lighthouse, road, stage, bench or all, not '{s}'")),
+                },
+            }),
+            "--size" => value("--size").and_then(|v| {
+                let parsed = v.split_once(['x', 'X']).and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)));
+                match parsed {
+                    Some((w, h)) if w > 0 && h > 0 && w <= 8192 && h <= 8192 => Ok(size = (w, h)),
+                    _ => Err(format!("--size must be WxH with 1..8192 pixels each, not '{v}'")),
+                }
+            }),
+            "--out" => value("--out").map(|v| out = v.into()),
+            "--backend" => value("--backend").and_then(|v| {
+                (cpu, gpu, reference, all) = (false, false, false, false);
+                for b in v.split(',') {
+                    match b.trim() {
+                        "cpu" => cpu = true,
+                        "gpu" => gpu = true,
+                        "reference" => reference = true,
+                        "all" => (cpu, gpu, reference, all) = (true, true, true, true),
+                        other => return Err(format!("--backend must be cpu, gpu, reference or all, not '{other}'")),
+                    }
+                }
+                Ok(())
+            }),
+            other => Err(format!("unknown option '{other}' for render")),
+        };
+        if let Err(e) = r {
+            return fail(&e);
+        }
+    }
+    if let Err(e) = std::fs::create_dir_all(&out) {
+        eprintln!("airlight: {}: {e}", out.display());
+        return ExitCode::from(1);
+    }
+    let mut device = None;
+    if gpu {
+        let path = render::shader_path();
+        let opened = std::fs::read_to_string(&path)
+            .map_err(|e| format!("{}: {e}", path.display()))
+            .and_then(|src| airlight_codegen::gpu::Gpu::new().map(|g| (src, g)));
+        match opened {
+            Ok((src, g)) => device = Some((src, g)),
+            Err(e) if all => eprintln!("airlight: warning: skipping the gpu backend: {e}"),
+            Err(e) => {
+                eprintln!("airlight: {e}");
+                return ExitCode::from(1);
+            }
+        }
+    }
+    let save = |name: &str, what: &str, rgb: &[u8]| -> Result<(), String> {
+        let path = out.join(format!("{name}_{what}.png"));
+        render::write_png(&path, size.0, size.1, rgb)
+    };
+    let prepared = device.as_ref().map(|(src, g)| {
+        let start = Instant::now();
+        let p = g.prepare(airlight_codegen::gpu::Shader::Wgsl(src));
+        println!("gpu: {}, shader compiled in {:.2} s", g.describe(), start.elapsed().as_secs_f64());
+        p
+    });
+    for name in scenes {
+        let scene = render::scene_by_name(name, size.0, size.1).expect("known scene");
+        let mut times = Vec::new();
+        let mut timed = |label: &str, f: &mut dyn FnMut() -> Result<Image, String>| -> Result<Image, String> {
+            let start = Instant::now();
+            let img = f()?;
+            times.push(format!("{label} {:.2} s", start.elapsed().as_secs_f64()));
+            save(name, label, &render::tone_map(&img, scene.exposure))?;
+            Ok(img)
+        };
+        let result = (|| -> Result<String, String> {
+            let cpu_img = if cpu { Some(timed("cpu", &mut || Ok(render::render_cpu(&scene, true)))?) } else { None };
+            let gpu_img = match &prepared {
+                Some(p) => Some(timed("gpu", &mut || render::render_gpu(&scene, p, true))?),
+                None => None,
+            };
+            let ref_img = if reference { Some(timed("reference", &mut || Ok(render::render_reference(&scene, true)))?) } else { None };
+            let mut errors = Vec::new();
+            if let Some(r) = &ref_img {
+                let floor = render::error_floor(&scene);
+                for (label, file, img) in [("cpu", "error", &cpu_img), ("gpu", "error_gpu", &gpu_img)] {
+                    if let Some(img) = img {
+                        let e = render::relative_errors(img, r, floor);
+                        let s = render::error_stats(&e);
+                        save(name, file, &render::heat_map(&e, size.0, size.1))?;
+                        errors.push(format!("{label} max {:.1e} median {:.1e}", s.max, s.median));
+                    }
+                }
+                if !errors.is_empty() {
+                    errors.insert(0, format!("relative error vs reference (floor {floor:.1e})"));
+                }
+            }
+            Ok(errors.join(", "))
+        })();
+        match result {
+            Ok(errors) => {
+                let sep = if errors.is_empty() { "" } else { "; " };
+                println!("{name} {}x{}: {}{sep}{errors}", size.0, size.1, times.join(", "));
+            }
+            Err(e) => {
+                eprintln!("airlight: {e}");
+                return ExitCode::from(1);
+            }
+        }
+    }
+    println!(
+        "wrote {} (heat maps: log10 relative error from {} to {})",
+        out.display(),
+        render::HEAT_LOG10_MIN,
+        render::HEAT_LOG10_MAX
+    );
+    ExitCode::SUCCESS
 }

@@ -1,0 +1,158 @@
+//! `airlight render` (issue 5): the four scenes at 48×27 on the CPU kernel (f64, 6
+//! Chebyshev terms) against the brute-force reference (adaptive Gauss–Kronrod quadrature of
+//! the contract integral in `u = atan((t − x_h)/h)`, no closed forms).
+//!
+//! ## The bounds
+//! The reference is converged far below the bounds: its adaptive quadrature stops at a summed
+//! `|K15 − G7|` estimate of 1e-9 of the integral; a 1e-11 run differs by at most 7e-9
+//! relatively on these scenes ([`reference_is_converged`]), and it agrees with the kernel at
+//! 12 terms to ~1e-7 (median).
+//! So the measured differences are the kernel's own error.
+//!
+//! 1. Per pixel and channel, relative to that pixel's *integrand scale* `S` (`L_m` with
+//!    `D·P` replaced by its maximum, summed over the lights with their colours — computed
+//!    here by the kernel's model-exact isotropic path): `|kernel − ref| ≤ ε·S`, `ε = 1e-2`.
+//!    This is the kernel's accuracy contract with 6 Chebyshev terms for peaked anisotropic
+//!    integrands (1e-4..1e-2 of scale, `tests/reference.rs`, `tests/gpu_agreement.rs`): a
+//!    degree-5 polynomial per sub-interval of a `c^12` beam or an HG lobe with `g = 0.6` has
+//!    an interpolation error of that order of the integrand's maximum. It is the premise of 2.
+//! 2. Per pixel, relative to the image's brightest reference value `B` (largest channel of
+//!    any pixel): `max_c |kernel − ref| ≤ ε·B`, the same `ε`. Why `B` bounds the scale that
+//!    matters: a pixel's error is at most `ε` of the scale of the part of its segment where
+//!    `D·P` is large, which is glow the picture shows — no brighter than `B`; the remaining
+//!    scale (a ray passing close to a light that beams or scatters away from it, up to 210 `B`
+//!    in the stage) only carries error where `D·P` is small, i.e. `ε` of a small value.
+//!    (Bound 2 is therefore not a consequence of 1 alone; it is the image-level claim the
+//!    pictures make — "within 1 % of the brightest glow" — checked here.)
+//!
+//! Measured (48×27): of `B`, max 1.7e-3 (lighthouse), 7.1e-4 (road), 4.7e-4 (stage), 2.7e-5
+//! (bench); of the pixel scale, max 2.3e-4. Both bounds hold with a margin of ≥ 6×, as they
+//! should for a stated accuracy that is not the observed maximum. The f32 shader is not
+//! tested here (no GPU test in this file; `tests/gpu_agreement.rs` covers it).
+
+use airlight::light::AnyDistribution;
+use airlight::phase::AnyPhase;
+use airlight::{PhaseFunction, PointLight, Ray, Scene};
+use airlight_codegen::render::{self, Image, SceneDesc};
+
+/// Per pixel: `Σ_lights colour · S`, `S` the integrand's scale of the pixel's segment —
+/// `L_m` with `D·P` replaced by its maximum `max P` (`D ≤ 1`), i.e. the isotropic integral
+/// (computed by the kernel's model-exact isotropic path, 1e-13 accurate) × `4π·max P`.
+fn scales(scene: &SceneDesc) -> Vec<[f64; 3]> {
+    let p_max = PhaseFunction::<f64>::eval(&scene.phase, 1.0).max(PhaseFunction::<f64>::eval(&scene.phase, -1.0));
+    let mut out = Vec::new();
+    for y in 0..scene.camera.height {
+        for x in 0..scene.camera.width {
+            let (d, hit) = scene.primary(x, y);
+            let mut px = [0.0; 3];
+            for l in &scene.lights {
+                let ray = Ray { origin: scene.camera.position, dir: d, t_min: 0.0, t_max: hit.t };
+                let iso = PointLight { position: l.light.position, intensity: l.light.intensity, distribution: AnyDistribution::Omni };
+                let s = Scene::new(ray, iso, scene.medium, AnyPhase::Isotropic).unwrap().in_scatter() * 4.0 * std::f64::consts::PI * p_max;
+                for c in 0..3 {
+                    px[c] += l.color[c] * s;
+                }
+            }
+            out.push(px);
+        }
+    }
+    out
+}
+
+fn worst_of_scale(kernel: &Image, reference: &Image) -> (f64, f64) {
+    let scale = reference.max_value();
+    let mut worst: f64 = 0.0;
+    let mut diffs = Vec::new();
+    for (a, b) in kernel.pixels.iter().zip(&reference.pixels) {
+        let d = (0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f64::max);
+        worst = worst.max(d / scale);
+        diffs.push(d / scale);
+    }
+    diffs.sort_by(f64::total_cmp);
+    (worst, diffs[diffs.len() / 2])
+}
+
+fn check(scene: SceneDesc) {
+    let name = scene.name;
+    let cpu = render::render_cpu(&scene, false);
+    let reference = render::render_reference(&scene, false);
+    assert!(cpu.pixels.iter().flatten().all(|v| v.is_finite() && *v >= 0.0), "{name}: non-finite or negative kernel pixel");
+    assert!(reference.pixels.iter().flatten().all(|v| v.is_finite() && *v >= 0.0), "{name}: non-finite or negative reference pixel");
+    let (worst, median) = worst_of_scale(&cpu, &reference);
+    let rel = render::error_stats(&render::relative_errors(&cpu, &reference, render::error_floor(&scene)));
+    println!(
+        "{name}: brightest {:.3e}; |kernel − ref| / brightest: max {worst:.2e}, median {median:.2e}; per-pixel relative (floor {:.1e}): max {:.2e}, median {:.2e}",
+        reference.max_value(),
+        render::error_floor(&scene),
+        rel.max,
+        rel.median
+    );
+    assert!(reference.max_value() > 0.0, "{name}: black image");
+    // the per-segment premise of the bound: error ≤ EPS_SCALE of the pixel's scale
+    let sc = scales(&scene);
+    let mut worst_of_pixel_scale: f64 = 0.0;
+    for (i, ((a, b), s)) in cpu.pixels.iter().zip(&reference.pixels).zip(&sc).enumerate() {
+        for c in 0..3 {
+            if s[c] > 0.0 {
+                let e = (a[c] - b[c]).abs() / s[c];
+                worst_of_pixel_scale = worst_of_pixel_scale.max(e);
+                assert!(e <= EPS_SCALE, "{name}: pixel {i} channel {c}: error {e:.3e} of its scale exceeds {EPS_SCALE:.0e}");
+            }
+        }
+    }
+    let max_scale = sc.iter().flatten().copied().fold(0.0, f64::max);
+    println!(
+        "{name}: |kernel − ref| / pixel scale: max {worst_of_pixel_scale:.2e}; largest pixel scale / brightest pixel {:.2}",
+        max_scale / reference.max_value()
+    );
+    assert!(worst <= BOUND, "{name}: error {worst:.3e} of the brightest pixel exceeds {BOUND:.0e}");
+}
+
+/// Bound 2: error of the brightest reference value (see the module docs).
+const BOUND: f64 = 1e-2;
+/// Bound 1: error of the pixel's integrand scale (see the module docs).
+const EPS_SCALE: f64 = 1e-2;
+
+#[test]
+fn lighthouse() {
+    check(render::lighthouse(48, 27));
+}
+
+#[test]
+fn road() {
+    check(render::road(48, 27));
+}
+
+#[test]
+fn stage() {
+    check(render::stage(48, 27));
+}
+
+#[test]
+fn bench() {
+    check(render::bench(48, 27));
+}
+
+/// The premise that the reference is converged: on every 5th pixel of each scene, the
+/// quadrature at `REFERENCE_TOL` and at 1e-11 agree to 1e-7 relatively (of the larger value;
+/// segments where both are 0 — a spot that the ray never crosses — count as equal).
+#[test]
+fn reference_is_converged() {
+    for name in render::SCENES {
+        let scene = render::scene_by_name(name, 48, 27).unwrap();
+        let mut worst: f64 = 0.0;
+        for i in (0..48 * 27).step_by(5) {
+            let (d, hit) = scene.primary(i % 48, i / 48);
+            for l in &scene.lights {
+                let q = |tol| render::reference_in_scatter(scene.camera.position, d, 0.0, hit.t, &l.light, &scene.medium, &scene.phase, tol);
+                let (a, b) = (q(render::REFERENCE_TOL), q(1e-11));
+                assert!(a.is_finite() && b.is_finite(), "{name}: pixel {i}: non-finite reference");
+                if a != b {
+                    worst = worst.max((a - b).abs() / a.abs().max(b.abs()));
+                }
+            }
+        }
+        println!("{name}: reference at {:.0e} vs 1e-11: max relative difference {worst:.2e}", render::REFERENCE_TOL);
+        assert!(worst <= 1e-7, "{name}: reference not converged: {worst:.3e}");
+    }
+}
