@@ -1,72 +1,203 @@
-//! ns per evaluation of `L_m`, side by side over the same 256 rays: this kernel (Chebyshev,
-//! and Taylor), the paper's algorithm as published (its eq. 27 `Ei`, Taylor expansion), and the
-//! seeds' `atan` form (isotropic, no extinction: the cheapest analytic glow). Scene
-//! construction and validation are outside the timed loop.
+//! CPU ns per ray, side by side over the same 256 rays, for this kernel and every baseline
+//! (issue 5): the seeds' `atan` form (isotropic, no extinction: the cheapest analytic glow,
+//! our floor), the paper's algorithm as published (its eq. 27 `Ei`, Taylor expansion), and ray
+//! marching ([`airlight::march`]: uniform steps in `t`, and equiangular steps) at the step
+//! counts that reach 1e-3 and 1e-5 relative error on these scenes.
 //!
-//! `cargo bench -p airlight --bench in_scatter`; `python3 scripts/bench_table.py` prints the
-//! ratio table from criterion's estimates.
+//! Accuracy is measured first, outside the timed loops, against an independent reference:
+//! the f64 equiangular midpoint rule at 2^15 and 2^16 steps, Richardson-extrapolated (its
+//! error expansion has even powers only: `(4 M(2n) − M(n))/3` is fourth order; no closed form;
+//! the table prints its distance to the same extrapolation from 2^14 and 2^15 steps). Every
+//! accuracy figure is the **largest** relative error over the 256 rays. "Equal accuracy" for
+//! the paper's algorithm: the first configuration in `PAPER_LADDER` (more Taylor terms, then a
+//! 100× tighter `Ei` tolerance) whose largest error is at most ours at 4 (resp. 6) terms.
+//! "Ours at 1e-3 / 1e-5": the fewest terms (4, 6, 8, 12) whose largest error reaches it. The figures go to `target/criterion/accuracy.json`;
+//! `python3 scripts/bench_table.py` joins them with criterion's timings into BENCHMARKS.md's
+//! table.
+//!
+//! `cargo bench -p airlight --bench in_scatter && python3 scripts/bench_table.py`
 
 use airlight::glam::{DVec3, Vec3};
 use airlight::light::{AnyDistribution, TwoLobed};
+use airlight::march::Steps;
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Expansion, Medium, PointLight, Ray, Real, Scene};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use std::fmt::Write as _;
 use std::time::Duration;
 
 type S<T> = Scene<T, AnyDistribution<T>, AnyPhase<T>>;
 
 /// 256 rays through a street-lamp-like scene: origins on a line, directions fanning out,
-/// light 1–4 units off the rays, media from thin to moderately thick.
-fn scenes<T: Real>(aniso: bool, v: impl Fn([f64; 3]) -> T::Vec3) -> Vec<S<T>> {
+/// light 1–4 units off the rays, media from thin to moderately thick. Every number passes
+/// through `round` (to f32 for the f32 group), so the f64 reference sees the same inputs.
+fn scenes<T: Real>(aniso: bool, v: impl Fn([f64; 3]) -> T::Vec3, round: fn(f64) -> f64) -> Vec<S<T>> {
     let mut out = Vec::new();
     let mut seed = 7u64;
     let mut rnd = || {
         seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
+        round((seed >> 11) as f64 / (1u64 << 53) as f64)
     };
+    let v = |a: [f64; 3]| v(a.map(round));
+    let lit = |x: f64| T::lit(round(x));
     for _ in 0..256 {
         let ray = Ray {
             origin: v([0.0, 0.0, 0.0]),
             dir: v([1.0, 0.2 * rnd() - 0.1, 0.2 * rnd() - 0.1]),
             t_min: T::lit(0.0),
-            t_max: T::lit(5.0 + 60.0 * rnd()),
+            t_max: lit(5.0 + 60.0 * rnd()),
         };
         let distribution = if aniso {
             AnyDistribution::TwoLobed(TwoLobed { axis: v([0.0, -1.0, 0.0]), power: 4 })
         } else {
             AnyDistribution::Omni
         };
-        let light = PointLight { position: v([40.0 * rnd() - 5.0, 1.0 + 3.0 * rnd(), rnd()]), intensity: T::lit(100.0), distribution };
-        let medium = Medium { sigma_s: T::lit(0.05), sigma_t: T::lit(0.01 + 0.3 * rnd()) };
-        let phase = if aniso { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: T::lit(0.5) }) } else { AnyPhase::Isotropic };
+        let light = PointLight { position: v([40.0 * rnd() - 5.0, 1.0 + 3.0 * rnd(), rnd()]), intensity: lit(100.0), distribution };
+        let medium = Medium { sigma_s: lit(0.05), sigma_t: lit(0.01 + 0.3 * rnd()) };
+        let phase = if aniso { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: lit(0.5) }) } else { AnyPhase::Isotropic };
         out.push(Scene::new(ray, light, medium, phase).unwrap());
     }
     out
 }
 
-fn group<T: Real>(c: &mut Criterion, name: &str, v: impl Fn([f64; 3]) -> T::Vec3 + Copy, eps: T) {
+/// A way of computing `L_m`.
+#[derive(Clone, Copy, Debug)]
+enum Method {
+    /// This kernel, Chebyshev, `n` terms.
+    Ours(usize),
+    /// This kernel, the paper's Taylor expansion, 6 terms.
+    Taylor6,
+    /// The paper's algorithm with `n` Taylor terms and its `Ei` tolerance scaled by the factor.
+    Paper(usize, f64),
+    /// The seeds' `atan` form.
+    Atan,
+    /// Ray marching.
+    March(Steps, usize),
+}
+
+/// The paper's algorithm, configurations in the order tried for "equal accuracy".
+const PAPER_LADDER: &[(usize, f64)] = &[(4, 1.0), (6, 1.0), (8, 1.0), (12, 1.0), (16, 1.0), (8, 1e-2), (12, 1e-2), (16, 1e-2)];
+
+fn paper<T: Real>(s: &S<T>, n: usize, eps: T) -> T {
+    match n {
+        4 => s.in_scatter_paper::<4>(eps, 100),
+        6 => s.in_scatter_paper::<6>(eps, 100),
+        8 => s.in_scatter_paper::<8>(eps, 100),
+        12 => s.in_scatter_paper::<12>(eps, 100),
+        _ => s.in_scatter_paper::<16>(eps, 100),
+    }
+}
+
+/// The paper's `Ei` tolerance (absolute) in this precision: 1e-6 in f32, 1e-12 in f64.
+fn paper_eps<T: Real>() -> T {
+    if T::epsilon() < T::lit(1e-10) {
+        T::lit(1e-12)
+    } else {
+        T::lit(1e-6)
+    }
+}
+
+#[inline]
+fn eval<T: Real>(m: Method, s: &S<T>) -> T {
+    match m {
+        Method::Ours(4) => s.in_scatter_with::<4>(Expansion::Chebyshev),
+        Method::Ours(6) => s.in_scatter_with::<6>(Expansion::Chebyshev),
+        Method::Ours(8) => s.in_scatter_with::<8>(Expansion::Chebyshev),
+        Method::Ours(_) => s.in_scatter_with::<12>(Expansion::Chebyshev),
+        Method::Taylor6 => s.in_scatter_with::<6>(Expansion::Taylor),
+        Method::Paper(n, scale) => paper(s, n, paper_eps::<T>() * T::lit(scale)),
+        Method::Atan => airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s),
+        Method::March(rule, steps) => s.ray_march(rule, steps),
+    }
+}
+
+/// Largest and median relative error of `m` over the scenes.
+fn accuracy<T: Real>(m: Method, sc: &[S<T>], reference: &[f64]) -> (f64, f64) {
+    let mut e: Vec<f64> = sc.iter().zip(reference).map(|(s, &r)| ((eval(m, s).to_f64_exact() - r) / r).abs()).collect();
+    e.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    (e[e.len() - 1], e[e.len() / 2])
+}
+
+/// The smallest step count of the ladder 8·√2^k whose largest error is at most `target`.
+fn steps_for<T: Real>(rule: Steps, target: f64, sc: &[S<T>], reference: &[f64]) -> Option<usize> {
+    (0..40).map(|k| (8.0 * 2f64.sqrt().powi(k)).round() as usize).find(|&n| accuracy(Method::March(rule, n), sc, reference).0 <= target)
+}
+
+/// One accuracy record for the JSON file.
+fn record(json: &mut String, group: &str, name: &str, m: Method, acc: (f64, f64)) {
+    let steps = match m {
+        Method::March(_, n) => n.to_string(),
+        Method::Paper(n, scale) => format!("\"{n} terms, tolerance x{scale}\""),
+        Method::Ours(n) => format!("\"{n} terms\""),
+        _ => "null".into(),
+    };
+    let _ = writeln!(json, "{{\"group\": \"{group}\", \"bench\": \"{name}\", \"max_err\": {:e}, \"median_err\": {:e}, \"config\": {steps}}},", acc.0, acc.1);
+}
+
+fn group<T: Real>(c: &mut Criterion, json: &mut String, name: &str, v: impl Fn([f64; 3]) -> T::Vec3 + Copy, round: fn(f64) -> f64) {
     for aniso in [false, true] {
-        let sc = scenes::<T>(aniso, v);
+        let sc = scenes::<T>(aniso, v, round);
+        let sc64 = scenes::<f64>(aniso, DVec3::from_array, round);
+        let richardson = |s: &S<f64>, n: usize| (4.0 * s.ray_march(Steps::Equiangular, 2 * n) - s.ray_march(Steps::Equiangular, n)) / 3.0;
+        let reference: Vec<f64> = sc64.iter().map(|s| richardson(s, 1 << 15)).collect();
+        let converged = sc64.iter().zip(&reference).map(|(s, r)| ((richardson(s, 1 << 14) - r) / r).abs()).fold(0.0, f64::max);
         let kind = if aniso { "aniso" } else { "iso" };
-        let mut g = c.benchmark_group(format!("{name}/{kind}"));
+        let gname = format!("{name}/{kind}");
+        eprintln!("{gname}: reference = f64 equiangular 2^15/2^16 steps extrapolated, max distance to 2^14/2^15 {converged:.1e}");
+
+        let mut methods: Vec<(String, Method)> = vec![
+            ("ours_4".into(), Method::Ours(4)),
+            ("ours_6".into(), Method::Ours(6)),
+            ("taylor_6".into(), Method::Taylor6),
+            ("paper_4".into(), Method::Paper(4, 1.0)),
+            ("paper_6".into(), Method::Paper(6, 1.0)),
+            ("atan_form".into(), Method::Atan),
+        ];
+        for (terms, ours) in [(4, Method::Ours(4)), (6, Method::Ours(6))] {
+            let target = accuracy(ours, &sc, &reference).0;
+            let found = PAPER_LADDER.iter().map(|&(n, k)| Method::Paper(n, k)).find(|&m| accuracy(m, &sc, &reference).0 <= target);
+            match found {
+                Some(m) => methods.push((format!("paper_eq{terms}"), m)),
+                None => eprintln!("{gname}: no paper configuration reaches ours_{terms}'s largest error {target:.1e}"),
+            }
+        }
+        for (target, tag) in [(1e-3, "1e-3"), (1e-5, "1e-5")] {
+            match [4, 6, 8, 12].iter().map(|&n| Method::Ours(n)).find(|&m| accuracy(m, &sc, &reference).0 <= target) {
+                Some(m) => methods.push((format!("ours_{tag}"), m)),
+                None => eprintln!("{gname}: ours does not reach {target:e} with 12 terms in this precision"),
+            }
+        }
+        for (rule, label) in [(Steps::Uniform, "march_uniform"), (Steps::Equiangular, "march_equiangular")] {
+            for (target, tag) in [(1e-3, "1e-3"), (1e-5, "1e-5")] {
+                match steps_for(rule, target, &sc, &reference) {
+                    Some(n) => methods.push((format!("{label}_{tag}"), Method::March(rule, n))),
+                    None => eprintln!("{gname}: {label} does not reach {target:e} in this precision"),
+                }
+            }
+        }
+        let _ = writeln!(json, "{{\"group\": \"{gname}\", \"bench\": \"reference\", \"max_err\": {converged:e}, \"median_err\": null, \"config\": \"f64 equiangular 2^15/2^16 Richardson, vs 2^14/2^15\"}},");
+        for (label, m) in &methods {
+            record(json, &gname, label, *m, accuracy(*m, &sc, &reference));
+        }
+
+        let mut g = c.benchmark_group(&gname);
         g.measurement_time(Duration::from_secs(2)).warm_up_time(Duration::from_millis(500)).sample_size(20);
-        let n = sc.len() as u64;
-        g.throughput(criterion::Throughput::Elements(n));
-        g.bench_function("ours_4", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter_with::<4>(Expansion::Chebyshev)).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("ours_6", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter_with::<6>(Expansion::Chebyshev)).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("taylor_6", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter_with::<6>(Expansion::Taylor)).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("paper_4", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter_paper::<4>(eps, 100)).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("paper_6", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter_paper::<6>(eps, 100)).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("atan_form", |b| {
-            b.iter(|| sc.iter().map(|s| { let s = black_box(s); airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s) }).fold(T::zero(), |a, x| a + x))
-        });
+        g.throughput(criterion::Throughput::Elements(sc.len() as u64));
+        for (label, m) in methods {
+            g.bench_function(label, |b| b.iter(|| sc.iter().map(|s| eval(black_box(m), black_box(s))).fold(T::zero(), |a, x| a + x)));
+        }
         g.finish();
     }
 }
 
 fn benches(c: &mut Criterion) {
-    group::<f32>(c, "f32", |a| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32), 1e-6);
-    group::<f64>(c, "f64", DVec3::from_array, 1e-12);
+    let mut json = String::from("[\n");
+    group::<f32>(c, &mut json, "f32", |a| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32), |x| x as f32 as f64);
+    group::<f64>(c, &mut json, "f64", DVec3::from_array, |x| x);
+    let json = json.trim_end().trim_end_matches(',').to_string() + "\n]\n";
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/criterion");
+    let _ = std::fs::create_dir_all(&dir);
+    std::fs::write(dir.join("accuracy.json"), json).expect("write accuracy.json");
 }
 
 criterion_group!(all, benches);
