@@ -38,6 +38,8 @@ const RAYS: usize = 65_536;
 const GENERATED_4: &str = include_str!("../../shaders-out/wgsl/airlight_4.wgsl");
 const GENERATED_6: &str = include_str!("../../shaders-out/wgsl/airlight_6.wgsl");
 const RAYMARCH: &str = include_str!("raymarch.wgsl");
+/// The include library whose structs and phase/light functions the ray-marcher uses.
+const LIBRARY: &str = include_str!("../../shaders-out/wgsl/airlight_lib_4.wgsl");
 const STEPS_LINE: &str = "const STEPS: u32 = 64u;";
 /// Ray-marcher step counts tried for the accuracy table.
 const STEP_GRID: [u32; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
@@ -58,7 +60,7 @@ fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
 
 fn raymarch_source(steps: u32) -> String {
     assert!(RAYMARCH.contains(STEPS_LINE), "raymarch.wgsl lost its `{STEPS_LINE}` line");
-    RAYMARCH.replace(STEPS_LINE, &format!("const STEPS: u32 = {steps}u;"))
+    format!("{LIBRARY}\n{}", RAYMARCH.replace(STEPS_LINE, &format!("const STEPS: u32 = {steps}u;")))
 }
 
 type S64 = Scene<f64, AnyDistribution<f64>, AnyPhase<f64>>;

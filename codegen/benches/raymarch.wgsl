@@ -11,83 +11,15 @@
 // (t1 = t0 + 14/σt), or at t0 + AIRLIGHT_RM_FAR when σt = 0. No input validation: every record
 // gets status 0 (2 if the sum is not finite).
 //
-// The benchmark replaces the `const STEPS` line below before compiling.
+// The benchmark appends this to the include library (shaders-out/wgsl/airlight_lib_4.wgsl),
+// which brings the record structs and the phase function and light distribution the generated
+// kernel uses (`airlight_phase`, `airlight_light`), and replaces the `const STEPS` line below.
 
 const STEPS: u32 = 64u;
 const AIRLIGHT_RM_FAR: f32 = 1000.0;
-const AIRLIGHT_RM_PI: f32 = 3.14159265358979;
-
-struct AirlightScene {
-    origin: vec3<f32>,
-    t_min: f32,
-    dir: vec3<f32>,
-    t_max: f32,
-    light_position: vec3<f32>,
-    intensity: f32,
-    light_axis: vec3<f32>,
-    light_param_a: f32,
-    light_param_b: f32,
-    sigma_s: f32,
-    sigma_t: f32,
-    phase_param_a: f32,
-    phase_param_b: f32,
-    phase_param_c: f32,
-    light_kind: u32,
-    phase_kind: u32,
-    flags: u32,
-}
-
-struct AirlightResult {
-    in_scatter: f32,
-    status: u32,
-}
 
 @group(0) @binding(0) var<storage, read> airlight_records: array<AirlightScene>;
 @group(0) @binding(1) var<storage, read_write> airlight_results: array<AirlightResult>;
-
-fn rm_hg(g: f32, mu: f32) -> f32 {
-    let base = 1.0 + g * g - 2.0 * g * mu;
-    return (1.0 - g * g) / (4.0 * AIRLIGHT_RM_PI * base * sqrt(base));
-}
-
-/// P(μ), as kernel/src/phase.rs: 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 Cornette–Shanks,
-/// 5 two-lobe HG.
-fn rm_phase(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32) -> f32 {
-    switch kind {
-        case 1u: { return 3.0 / (16.0 * AIRLIGHT_RM_PI) * (1.0 + mu * mu); }
-        case 2u: { return rm_hg(p0, mu); }
-        case 3u: {
-            let d = 1.0 - p0 * mu;
-            return (1.0 - p0 * p0) / (4.0 * AIRLIGHT_RM_PI * d * d);
-        }
-        case 4u: {
-            let base = 1.0 + p0 * p0 - 2.0 * p0 * mu;
-            return 3.0 * (1.0 - p0 * p0) * (1.0 + mu * mu) / (8.0 * AIRLIGHT_RM_PI * (2.0 + p0 * p0) * base * sqrt(base));
-        }
-        case 5u: { return p2 * rm_hg(p0, mu) + (1.0 - p2) * rm_hg(p1, mu); }
-        default: { return 1.0 / (4.0 * AIRLIGHT_RM_PI); }
-    }
-}
-
-/// D(c), as kernel/src/light.rs: 0 omni, 1 two-lobed c^p (p even, so (c²)^(p/2)), 2 spot
-/// smoothstep x²(3−2x), x = (c − cos_outer)/(cos_inner − cos_outer).
-fn rm_light(kind: u32, p0: f32, p1: f32, c: f32) -> f32 {
-    switch kind {
-        case 1u: {
-            if (p0 == 0.0) { return 1.0; }
-            return pow(c * c, 0.5 * p0);
-        }
-        case 2u: {
-            let width = p0 - p1;
-            if (width <= 1.1920929e-7) {
-                return select(0.0, 1.0, c >= p1 + width * 0.5);
-            }
-            let x = clamp((c - p1) / width, 0.0, 1.0);
-            return x * x * (3.0 - 2.0 * x);
-        }
-        default: { return 1.0; }
-    }
-}
 
 fn rm_in_scatter(s: AirlightScene) -> AirlightResult {
     let d = normalize(s.dir);
@@ -112,8 +44,8 @@ fn rm_in_scatter(s: AirlightScene) -> AirlightResult {
         let mu = -dot(u, d) * inv_r;
         let along = (f32(i) + 0.5) * dt;
         let f = exp(-s.sigma_t * (along + r)) / r2;
-        sum += f * rm_light(s.light_kind, s.light_param_a, s.light_param_b, c)
-            * rm_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
+        sum += f * airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c)
+            * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
     }
     let value = s.sigma_s * s.intensity * sum * dt;
     if ((bitcast<u32>(value) & 0x7f800000u) == 0x7f800000u) {
