@@ -963,6 +963,12 @@ fn airlight_safe_length(v: vec3<f32>) -> f32 {
     return m * length(v / m);
 }
 
+/// |v| is non-zero and finite: v can be normalised (error.rs::check_vector).
+fn airlight_normalisable(v: vec3<f32>) -> bool {
+    let l = airlight_safe_length(v);
+    return l > 0.0 && airlight_is_finite(l);
+}
+
 /// v/|v|, scaled by the largest component first (geometry.rs::normalize).
 fn airlight_normalize(v: vec3<f32>) -> vec3<f32> {
     let m = max(abs(v.x), max(abs(v.y), abs(v.z)));
@@ -972,7 +978,7 @@ fn airlight_normalize(v: vec3<f32>) -> vec3<f32> {
 
 /// The checks of the kernel's checked API; false → the record is invalid.
 fn airlight_valid(s: AirlightScene) -> bool {
-    var ok = airlight_vec_finite(s.origin) && airlight_vec_finite(s.dir) && airlight_safe_length(s.dir) > 0.0
+    var ok = airlight_vec_finite(s.origin) && airlight_vec_finite(s.dir) && airlight_normalisable(s.dir)
         && airlight_is_finite(s.t_min) && airlight_vec_finite(s.light_position)
         && airlight_is_finite(s.intensity) && s.intensity >= 0.0
         && airlight_is_finite(s.sigma_s) && s.sigma_s >= 0.0 && airlight_is_finite(s.sigma_t) && s.sigma_t >= 0.0;
@@ -980,10 +986,10 @@ fn airlight_valid(s: AirlightScene) -> bool {
         ok = ok && airlight_is_finite(s.t_max) && s.t_min <= s.t_max;
     }
     if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        ok = ok && airlight_vec_finite(s.light_axis) && airlight_safe_length(s.light_axis) > 0.0
+        ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
             && s.light_param_a >= 0.0 && s.light_param_a <= 1024.0 && fract(s.light_param_a * 0.5) == 0.0;
     } else if (s.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        ok = ok && airlight_vec_finite(s.light_axis) && airlight_safe_length(s.light_axis) > 0.0
+        ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
             && s.light_param_b < s.light_param_a && s.light_param_b >= -1.0 && s.light_param_a <= 1.0;
     } else if (s.light_kind != AIRLIGHT_LIGHT_OMNI) {
         ok = false;

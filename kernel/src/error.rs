@@ -7,7 +7,7 @@ use core::fmt;
 pub enum ErrorKind {
     /// NaN or infinite where a finite number is required.
     NonFinite,
-    /// A direction or axis of zero length.
+    /// A direction or axis whose length is zero, or overflows (it is used to normalise).
     ZeroVector,
     /// A coefficient or intensity below zero.
     Negative,
@@ -42,7 +42,7 @@ impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let what = match self.kind {
             ErrorKind::NonFinite => "must be finite",
-            ErrorKind::ZeroVector => "must have non-zero length",
+            ErrorKind::ZeroVector => "must have a non-zero length that does not overflow",
             ErrorKind::Negative => "must not be negative",
             ErrorKind::EmptyRange => "t_min must not exceed t_max",
             ErrorKind::OutOfRange => "must lie strictly between -1 and 1",

@@ -22,7 +22,7 @@ pub const SHADER_TERMS: usize = 4;
 pub struct Ray<T: Real> {
     /// Ray origin (the camera, usually).
     pub origin: T::Vec3,
-    /// Direction; any non-zero length, normalised by the library.
+    /// Direction; any non-zero length that does not overflow, normalised by the library.
     pub dir: T::Vec3,
     /// Segment start.
     pub t_min: T,

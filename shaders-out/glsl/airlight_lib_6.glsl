@@ -2235,14 +2235,26 @@ float airlight_safe_length(vec3 v_1) {
     return (m_4 * length((v_1 / vec3(m_4))));
 }
 
-vec3 airlight_normalize(vec3 v_2) {
-    float m_5 = max(abs(v_2.x), max(abs(v_2.y), abs(v_2.z)));
-    vec3 u = (v_2 / vec3(m_5));
+bool airlight_normalisable(vec3 v_2) {
+    bool local_36 = false;
+    float _e1 = airlight_safe_length(v_2);
+    if ((_e1 > 0.0)) {
+        bool _e6 = airlight_is_finite(_e1);
+        local_36 = _e6;
+    } else {
+        local_36 = false;
+    }
+    bool _e8 = local_36;
+    return _e8;
+}
+
+vec3 airlight_normalize(vec3 v_3) {
+    float m_5 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    vec3 u = (v_3 / vec3(m_5));
     return (u / vec3(length(u)));
 }
 
 bool airlight_valid(AirlightScene s_8) {
-    bool local_36 = false;
     bool local_37 = false;
     bool local_38 = false;
     bool local_39 = false;
@@ -2252,8 +2264,8 @@ bool airlight_valid(AirlightScene s_8) {
     bool local_43 = false;
     bool local_44 = false;
     bool local_45 = false;
-    bool ok = false;
     bool local_46 = false;
+    bool ok = false;
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
@@ -2270,163 +2282,164 @@ bool airlight_valid(AirlightScene s_8) {
     bool local_60 = false;
     bool local_61 = false;
     bool local_62 = false;
+    bool local_63 = false;
     bool _e2 = airlight_vec_finite(s_8.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_8.dir);
-        local_36 = _e6;
-    } else {
-        local_36 = false;
-    }
-    bool _e8 = local_36;
-    if (_e8) {
-        float _e12 = airlight_safe_length(s_8.dir);
-        local_37 = (_e12 > 0.0);
+        local_37 = _e6;
     } else {
         local_37 = false;
     }
-    bool _e16 = local_37;
-    if (_e16) {
-        bool _e20 = airlight_is_finite(s_8.t_min);
-        local_38 = _e20;
+    bool _e8 = local_37;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_8.dir);
+        local_38 = _e12;
     } else {
         local_38 = false;
     }
-    bool _e22 = local_38;
-    if (_e22) {
-        bool _e26 = airlight_vec_finite(s_8.light_position);
-        local_39 = _e26;
+    bool _e14 = local_38;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_8.t_min);
+        local_39 = _e18;
     } else {
         local_39 = false;
     }
-    bool _e28 = local_39;
-    if (_e28) {
-        bool _e32 = airlight_is_finite(s_8.intensity);
-        local_40 = _e32;
+    bool _e20 = local_39;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_8.light_position);
+        local_40 = _e24;
     } else {
         local_40 = false;
     }
-    bool _e34 = local_40;
-    if (_e34) {
-        local_41 = (s_8.intensity >= 0.0);
+    bool _e26 = local_40;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_8.intensity);
+        local_41 = _e30;
     } else {
         local_41 = false;
     }
-    bool _e41 = local_41;
-    if (_e41) {
-        bool _e45 = airlight_is_finite(s_8.sigma_s);
-        local_42 = _e45;
+    bool _e32 = local_41;
+    if (_e32) {
+        local_42 = (s_8.intensity >= 0.0);
     } else {
         local_42 = false;
     }
-    bool _e47 = local_42;
-    if (_e47) {
-        local_43 = (s_8.sigma_s >= 0.0);
+    bool _e39 = local_42;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_8.sigma_s);
+        local_43 = _e43;
     } else {
         local_43 = false;
     }
-    bool _e54 = local_43;
-    if (_e54) {
-        bool _e58 = airlight_is_finite(s_8.sigma_t);
-        local_44 = _e58;
+    bool _e45 = local_43;
+    if (_e45) {
+        local_44 = (s_8.sigma_s >= 0.0);
     } else {
         local_44 = false;
     }
-    bool _e60 = local_44;
-    if (_e60) {
-        local_45 = (s_8.sigma_t >= 0.0);
+    bool _e52 = local_44;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_8.sigma_t);
+        local_45 = _e56;
     } else {
         local_45 = false;
     }
-    bool _e67 = local_45;
-    ok = _e67;
+    bool _e58 = local_45;
+    if (_e58) {
+        local_46 = (s_8.sigma_t >= 0.0);
+    } else {
+        local_46 = false;
+    }
+    bool _e65 = local_46;
+    ok = _e65;
     if (((s_8.flags & 1u) == 0u)) {
-        bool _e74 = ok;
-        if (_e74) {
-            bool _e78 = airlight_is_finite(s_8.t_max);
-            local_46 = _e78;
-        } else {
-            local_46 = false;
-        }
-        bool _e80 = local_46;
-        if (_e80) {
-            local_47 = (s_8.t_min <= s_8.t_max);
+        bool _e72 = ok;
+        if (_e72) {
+            bool _e76 = airlight_is_finite(s_8.t_max);
+            local_47 = _e76;
         } else {
             local_47 = false;
         }
-        bool _e87 = local_47;
-        ok = _e87;
-    }
-    if ((s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e91 = ok;
-        if (_e91) {
-            bool _e95 = airlight_vec_finite(s_8.light_axis);
-            local_48 = _e95;
+        bool _e78 = local_47;
+        if (_e78) {
+            local_48 = (s_8.t_min <= s_8.t_max);
         } else {
             local_48 = false;
         }
-        bool _e97 = local_48;
-        if (_e97) {
-            float _e101 = airlight_safe_length(s_8.light_axis);
-            local_49 = (_e101 > 0.0);
+        bool _e85 = local_48;
+        ok = _e85;
+    }
+    if ((s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e89 = ok;
+        if (_e89) {
+            bool _e93 = airlight_vec_finite(s_8.light_axis);
+            local_49 = _e93;
         } else {
             local_49 = false;
         }
-        bool _e105 = local_49;
-        if (_e105) {
-            local_50 = (s_8.light_param_a >= 0.0);
+        bool _e95 = local_49;
+        if (_e95) {
+            bool _e99 = airlight_normalisable(s_8.light_axis);
+            local_50 = _e99;
         } else {
             local_50 = false;
         }
-        bool _e112 = local_50;
-        if (_e112) {
-            local_51 = (s_8.light_param_a <= 1024.0);
+        bool _e101 = local_50;
+        if (_e101) {
+            local_51 = (s_8.light_param_a >= 0.0);
         } else {
             local_51 = false;
         }
-        bool _e119 = local_51;
-        if (_e119) {
-            local_52 = (fract((s_8.light_param_a * 0.5)) == 0.0);
+        bool _e108 = local_51;
+        if (_e108) {
+            local_52 = (s_8.light_param_a <= 1024.0);
         } else {
             local_52 = false;
         }
-        bool _e129 = local_52;
-        ok = _e129;
+        bool _e115 = local_52;
+        if (_e115) {
+            local_53 = (fract((s_8.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_53 = false;
+        }
+        bool _e125 = local_53;
+        ok = _e125;
     } else {
         if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e133 = ok;
-            if (_e133) {
-                bool _e137 = airlight_vec_finite(s_8.light_axis);
-                local_53 = _e137;
-            } else {
-                local_53 = false;
-            }
-            bool _e139 = local_53;
-            if (_e139) {
-                float _e143 = airlight_safe_length(s_8.light_axis);
-                local_54 = (_e143 > 0.0);
+            bool _e129 = ok;
+            if (_e129) {
+                bool _e133 = airlight_vec_finite(s_8.light_axis);
+                local_54 = _e133;
             } else {
                 local_54 = false;
             }
-            bool _e147 = local_54;
-            if (_e147) {
-                local_55 = (s_8.light_param_b < s_8.light_param_a);
+            bool _e135 = local_54;
+            if (_e135) {
+                bool _e139 = airlight_normalisable(s_8.light_axis);
+                local_55 = _e139;
             } else {
                 local_55 = false;
             }
-            bool _e154 = local_55;
-            if (_e154) {
-                local_56 = (s_8.light_param_b >= -1.0);
+            bool _e141 = local_55;
+            if (_e141) {
+                local_56 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_56 = false;
             }
-            bool _e161 = local_56;
-            if (_e161) {
-                local_57 = (s_8.light_param_a <= 1.0);
+            bool _e148 = local_56;
+            if (_e148) {
+                local_57 = (s_8.light_param_b >= -1.0);
             } else {
                 local_57 = false;
             }
-            bool _e168 = local_57;
-            ok = _e168;
+            bool _e155 = local_57;
+            if (_e155) {
+                local_58 = (s_8.light_param_a <= 1.0);
+            } else {
+                local_58 = false;
+            }
+            bool _e162 = local_58;
+            ok = _e162;
         } else {
             if ((s_8.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -2442,43 +2455,43 @@ bool airlight_valid(AirlightScene s_8) {
         case 2u:
         case 3u:
         case 4u: {
-            bool _e178 = ok;
-            if (_e178) {
-                local_58 = g_ok;
-            } else {
-                local_58 = false;
-            }
-            bool _e182 = local_58;
-            ok = _e182;
-            break;
-        }
-        case 5u: {
-            bool _e183 = ok;
-            if (_e183) {
+            bool _e172 = ok;
+            if (_e172) {
                 local_59 = g_ok;
             } else {
                 local_59 = false;
             }
-            bool _e187 = local_59;
-            if (_e187) {
-                local_60 = (abs(s_8.phase_param_b) < 1.0);
+            bool _e176 = local_59;
+            ok = _e176;
+            break;
+        }
+        case 5u: {
+            bool _e177 = ok;
+            if (_e177) {
+                local_60 = g_ok;
             } else {
                 local_60 = false;
             }
-            bool _e195 = local_60;
-            if (_e195) {
-                local_61 = (s_8.phase_param_c >= 0.0);
+            bool _e181 = local_60;
+            if (_e181) {
+                local_61 = (abs(s_8.phase_param_b) < 1.0);
             } else {
                 local_61 = false;
             }
-            bool _e202 = local_61;
-            if (_e202) {
-                local_62 = (s_8.phase_param_c <= 1.0);
+            bool _e189 = local_61;
+            if (_e189) {
+                local_62 = (s_8.phase_param_c >= 0.0);
             } else {
                 local_62 = false;
             }
-            bool _e209 = local_62;
-            ok = _e209;
+            bool _e196 = local_62;
+            if (_e196) {
+                local_63 = (s_8.phase_param_c <= 1.0);
+            } else {
+                local_63 = false;
+            }
+            bool _e203 = local_63;
+            ok = _e203;
             break;
         }
         default: {
@@ -2486,8 +2499,8 @@ bool airlight_valid(AirlightScene s_8) {
             break;
         }
     }
-    bool _e211 = ok;
-    return _e211;
+    bool _e205 = ok;
+    return _e205;
 }
 
 AirlightCanonical airlight_canonical(AirlightScene s_9) {

@@ -2192,14 +2192,27 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
     return (m_4 * length((v_1 / vec3(m_4))));
 }
 
-fn airlight_normalize(v_2: vec3<f32>) -> vec3<f32> {
-    let m_5 = max(abs(v_2.x), max(abs(v_2.y), abs(v_2.z)));
-    let u = (v_2 / vec3(m_5));
+fn airlight_normalisable(v_2: vec3<f32>) -> bool {
+    var local_36: bool;
+
+    let _e1 = airlight_safe_length(v_2);
+    if (_e1 > 0f) {
+        let _e6 = airlight_is_finite(_e1);
+        local_36 = _e6;
+    } else {
+        local_36 = false;
+    }
+    let _e8 = local_36;
+    return _e8;
+}
+
+fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
+    let m_5 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    let u = (v_3 / vec3(m_5));
     return (u / vec3(length(u)));
 }
 
 fn airlight_valid(s_8: AirlightScene) -> bool {
-    var local_36: bool;
     var local_37: bool;
     var local_38: bool;
     var local_39: bool;
@@ -2209,8 +2222,8 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_43: bool;
     var local_44: bool;
     var local_45: bool;
-    var ok: bool;
     var local_46: bool;
+    var ok: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
@@ -2227,164 +2240,165 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_60: bool;
     var local_61: bool;
     var local_62: bool;
+    var local_63: bool;
 
     let _e2 = airlight_vec_finite(s_8.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_8.dir);
-        local_36 = _e6;
-    } else {
-        local_36 = false;
-    }
-    let _e8 = local_36;
-    if _e8 {
-        let _e12 = airlight_safe_length(s_8.dir);
-        local_37 = (_e12 > 0f);
+        local_37 = _e6;
     } else {
         local_37 = false;
     }
-    let _e16 = local_37;
-    if _e16 {
-        let _e20 = airlight_is_finite(s_8.t_min);
-        local_38 = _e20;
+    let _e8 = local_37;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_8.dir);
+        local_38 = _e12;
     } else {
         local_38 = false;
     }
-    let _e22 = local_38;
-    if _e22 {
-        let _e26 = airlight_vec_finite(s_8.light_position);
-        local_39 = _e26;
+    let _e14 = local_38;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_8.t_min);
+        local_39 = _e18;
     } else {
         local_39 = false;
     }
-    let _e28 = local_39;
-    if _e28 {
-        let _e32 = airlight_is_finite(s_8.intensity);
-        local_40 = _e32;
+    let _e20 = local_39;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_8.light_position);
+        local_40 = _e24;
     } else {
         local_40 = false;
     }
-    let _e34 = local_40;
-    if _e34 {
-        local_41 = (s_8.intensity >= 0f);
+    let _e26 = local_40;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_8.intensity);
+        local_41 = _e30;
     } else {
         local_41 = false;
     }
-    let _e41 = local_41;
-    if _e41 {
-        let _e45 = airlight_is_finite(s_8.sigma_s);
-        local_42 = _e45;
+    let _e32 = local_41;
+    if _e32 {
+        local_42 = (s_8.intensity >= 0f);
     } else {
         local_42 = false;
     }
-    let _e47 = local_42;
-    if _e47 {
-        local_43 = (s_8.sigma_s >= 0f);
+    let _e39 = local_42;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_8.sigma_s);
+        local_43 = _e43;
     } else {
         local_43 = false;
     }
-    let _e54 = local_43;
-    if _e54 {
-        let _e58 = airlight_is_finite(s_8.sigma_t);
-        local_44 = _e58;
+    let _e45 = local_43;
+    if _e45 {
+        local_44 = (s_8.sigma_s >= 0f);
     } else {
         local_44 = false;
     }
-    let _e60 = local_44;
-    if _e60 {
-        local_45 = (s_8.sigma_t >= 0f);
+    let _e52 = local_44;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_8.sigma_t);
+        local_45 = _e56;
     } else {
         local_45 = false;
     }
-    let _e67 = local_45;
-    ok = _e67;
+    let _e58 = local_45;
+    if _e58 {
+        local_46 = (s_8.sigma_t >= 0f);
+    } else {
+        local_46 = false;
+    }
+    let _e65 = local_46;
+    ok = _e65;
     if ((s_8.flags & 1u) == 0u) {
-        let _e74 = ok;
-        if _e74 {
-            let _e78 = airlight_is_finite(s_8.t_max);
-            local_46 = _e78;
-        } else {
-            local_46 = false;
-        }
-        let _e80 = local_46;
-        if _e80 {
-            local_47 = (s_8.t_min <= s_8.t_max);
+        let _e72 = ok;
+        if _e72 {
+            let _e76 = airlight_is_finite(s_8.t_max);
+            local_47 = _e76;
         } else {
             local_47 = false;
         }
-        let _e87 = local_47;
-        ok = _e87;
-    }
-    if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e91 = ok;
-        if _e91 {
-            let _e95 = airlight_vec_finite(s_8.light_axis);
-            local_48 = _e95;
+        let _e78 = local_47;
+        if _e78 {
+            local_48 = (s_8.t_min <= s_8.t_max);
         } else {
             local_48 = false;
         }
-        let _e97 = local_48;
-        if _e97 {
-            let _e101 = airlight_safe_length(s_8.light_axis);
-            local_49 = (_e101 > 0f);
+        let _e85 = local_48;
+        ok = _e85;
+    }
+    if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        let _e89 = ok;
+        if _e89 {
+            let _e93 = airlight_vec_finite(s_8.light_axis);
+            local_49 = _e93;
         } else {
             local_49 = false;
         }
-        let _e105 = local_49;
-        if _e105 {
-            local_50 = (s_8.light_param_a >= 0f);
+        let _e95 = local_49;
+        if _e95 {
+            let _e99 = airlight_normalisable(s_8.light_axis);
+            local_50 = _e99;
         } else {
             local_50 = false;
         }
-        let _e112 = local_50;
-        if _e112 {
-            local_51 = (s_8.light_param_a <= 1024f);
+        let _e101 = local_50;
+        if _e101 {
+            local_51 = (s_8.light_param_a >= 0f);
         } else {
             local_51 = false;
         }
-        let _e119 = local_51;
-        if _e119 {
-            local_52 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        let _e108 = local_51;
+        if _e108 {
+            local_52 = (s_8.light_param_a <= 1024f);
         } else {
             local_52 = false;
         }
-        let _e129 = local_52;
-        ok = _e129;
+        let _e115 = local_52;
+        if _e115 {
+            local_53 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_53 = false;
+        }
+        let _e125 = local_53;
+        ok = _e125;
     } else {
         if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e133 = ok;
-            if _e133 {
-                let _e137 = airlight_vec_finite(s_8.light_axis);
-                local_53 = _e137;
-            } else {
-                local_53 = false;
-            }
-            let _e139 = local_53;
-            if _e139 {
-                let _e143 = airlight_safe_length(s_8.light_axis);
-                local_54 = (_e143 > 0f);
+            let _e129 = ok;
+            if _e129 {
+                let _e133 = airlight_vec_finite(s_8.light_axis);
+                local_54 = _e133;
             } else {
                 local_54 = false;
             }
-            let _e147 = local_54;
-            if _e147 {
-                local_55 = (s_8.light_param_b < s_8.light_param_a);
+            let _e135 = local_54;
+            if _e135 {
+                let _e139 = airlight_normalisable(s_8.light_axis);
+                local_55 = _e139;
             } else {
                 local_55 = false;
             }
-            let _e154 = local_55;
-            if _e154 {
-                local_56 = (s_8.light_param_b >= -1f);
+            let _e141 = local_55;
+            if _e141 {
+                local_56 = (s_8.light_param_b < s_8.light_param_a);
             } else {
                 local_56 = false;
             }
-            let _e161 = local_56;
-            if _e161 {
-                local_57 = (s_8.light_param_a <= 1f);
+            let _e148 = local_56;
+            if _e148 {
+                local_57 = (s_8.light_param_b >= -1f);
             } else {
                 local_57 = false;
             }
-            let _e168 = local_57;
-            ok = _e168;
+            let _e155 = local_57;
+            if _e155 {
+                local_58 = (s_8.light_param_a <= 1f);
+            } else {
+                local_58 = false;
+            }
+            let _e162 = local_58;
+            ok = _e162;
         } else {
             if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -2396,49 +2410,49 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e178 = ok;
-            if _e178 {
-                local_58 = g_ok;
-            } else {
-                local_58 = false;
-            }
-            let _e182 = local_58;
-            ok = _e182;
-        }
-        case 5u: {
-            let _e183 = ok;
-            if _e183 {
+            let _e172 = ok;
+            if _e172 {
                 local_59 = g_ok;
             } else {
                 local_59 = false;
             }
-            let _e187 = local_59;
-            if _e187 {
-                local_60 = (abs(s_8.phase_param_b) < 1f);
+            let _e176 = local_59;
+            ok = _e176;
+        }
+        case 5u: {
+            let _e177 = ok;
+            if _e177 {
+                local_60 = g_ok;
             } else {
                 local_60 = false;
             }
-            let _e195 = local_60;
-            if _e195 {
-                local_61 = (s_8.phase_param_c >= 0f);
+            let _e181 = local_60;
+            if _e181 {
+                local_61 = (abs(s_8.phase_param_b) < 1f);
             } else {
                 local_61 = false;
             }
-            let _e202 = local_61;
-            if _e202 {
-                local_62 = (s_8.phase_param_c <= 1f);
+            let _e189 = local_61;
+            if _e189 {
+                local_62 = (s_8.phase_param_c >= 0f);
             } else {
                 local_62 = false;
             }
-            let _e209 = local_62;
-            ok = _e209;
+            let _e196 = local_62;
+            if _e196 {
+                local_63 = (s_8.phase_param_c <= 1f);
+            } else {
+                local_63 = false;
+            }
+            let _e203 = local_63;
+            ok = _e203;
         }
         default: {
             ok = false;
         }
     }
-    let _e211 = ok;
-    return _e211;
+    let _e205 = ok;
+    return _e205;
 }
 
 fn airlight_canonical(s_9: AirlightScene) -> AirlightCanonical {

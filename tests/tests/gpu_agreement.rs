@@ -104,11 +104,17 @@ fn case(terms: usize) -> Case {
     }
     // invalid records: the shader must give status INVALID and value 0
     let good = records[..RECORD_SIZE].to_vec();
-    for (field, value) in [(16usize, 0.0f32), (68, -1.0), (72, f32::NAN), (0, f32::INFINITY), (76, 1.5), (60, 3.0)] {
+    for (field, value) in [(16usize, 0.0f32), (20, f32::MAX), (68, -1.0), (72, f32::NAN), (0, f32::INFINITY), (76, 1.5), (60, 3.0)] {
         let mut r = good.clone();
         r[field..field + 4].copy_from_slice(&value.to_le_bytes());
         match field {
             16 => r[16..28].copy_from_slice(&[0u8; 12]),       // zero direction
+            20 => {
+                // a direction whose length overflows (found by the shader fuzz target)
+                for i in [16, 24] {
+                    r[i..i + 4].copy_from_slice(&f32::MAX.to_le_bytes());
+                }
+            }
             76 => r[92..96].copy_from_slice(&2u32.to_le_bytes()), // |g| ≥ 1 for Henyey–Greenstein
             60 => r[88..92].copy_from_slice(&1u32.to_le_bytes()), // odd two-lobed power
             _ => {}

@@ -43,6 +43,27 @@ fn shaders_out_is_what_the_source_emits() {
     assert_eq!(files.len(), 20);
 }
 
+/// shaders-out/README.md's table gives each file's size in bytes; it must be the committed
+/// file's (it went stale twice before this test).
+#[test]
+fn readme_sizes_are_current() {
+    let dir = default_out_dir();
+    let readme = std::fs::read_to_string(dir.join("README.md")).expect("shaders-out/README.md");
+    let mut rows = 0;
+    for line in readme.lines().filter(|l| l.starts_with("| `") && l.contains("{4,6}")) {
+        let pattern = line.split('`').nth(1).unwrap();
+        let sizes = line.trim_end_matches(" |").rsplit("| ").next().unwrap();
+        let listed: Vec<u64> = sizes.split(" / ").map(|n| n.replace(' ', "").parse().expect(line)).collect();
+        for (n, want) in TERM_COUNTS.iter().zip(&listed) {
+            let file = dir.join(pattern.replace("{4,6}", &n.to_string()));
+            let got = std::fs::metadata(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display())).len();
+            assert_eq!(got, *want, "shaders-out/README.md lists {} as {want} bytes; it has {got}", file.display());
+        }
+        rows += 1;
+    }
+    assert_eq!(rows, 10, "rows of the size table in shaders-out/README.md");
+}
+
 #[test]
 fn spirv_validates() {
     if !tool("spirv-val") {
