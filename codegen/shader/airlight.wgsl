@@ -95,12 +95,21 @@ fn airlight_cdiv(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     return vec2<f32>((a.x * r + a.y) / den, (a.y * r - a.x) / den);
 }
 
+/// |z|, scaled by the larger part first: `length` may square its argument, and |z|² underflows
+/// to 0 below |z| ≈ 1e-19 (num-complex's `norm` is a hypot; found by the shader fuzz target:
+/// ln z = −∞ for z = 1.9e-37).
+fn airlight_cabs(z: vec2<f32>) -> f32 {
+    let m = max(abs(z.x), abs(z.y));
+    if (m == 0.0) { return 0.0; }
+    return m * length(z / m);
+}
+
 /// Principal square root (Kahan).
 fn airlight_csqrt(z: vec2<f32>) -> vec2<f32> {
     if (z.x == 0.0 && z.y == 0.0) {
         return vec2<f32>(0.0, z.y);
     }
-    let r = length(z);
+    let r = airlight_cabs(z);
     if (z.x >= 0.0) {
         let t = sqrt((r + z.x) * 0.5);
         return vec2<f32>(t, z.y / (t + t));
@@ -123,7 +132,7 @@ fn airlight_cln(z: vec2<f32>) -> vec2<f32> {
     if (z.x > 0.0) {
         arg = airlight_atan(abs(z.y) / z.x);
     }
-    return vec2<f32>(log(length(z)), select(arg, -arg, z.y < 0.0));
+    return vec2<f32>(log(airlight_cabs(z)), select(arg, -arg, z.y < 0.0));
 }
 
 // Vulkan allows atan 4096 ulp, sin/cos 2^-11 absolute and log 2^-21 absolute near 1 — far too

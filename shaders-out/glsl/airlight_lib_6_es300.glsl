@@ -85,24 +85,32 @@ vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     return vec2((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
 }
 
-vec2 airlight_csqrt(vec2 z) {
+float airlight_cabs(vec2 z) {
+    float m_2 = max(abs(z.x), abs(z.y));
+    if ((m_2 == 0.0)) {
+        return 0.0;
+    }
+    return (m_2 * length((z / vec2(m_2))));
+}
+
+vec2 airlight_csqrt(vec2 z_1) {
     bool local = false;
-    if ((z.x == 0.0)) {
-        local = (z.y == 0.0);
+    if ((z_1.x == 0.0)) {
+        local = (z_1.y == 0.0);
     } else {
         local = false;
     }
     bool _e10 = local;
     if (_e10) {
-        return vec2(0.0, z.y);
+        return vec2(0.0, z_1.y);
     }
-    float r_4 = length(z);
-    if ((z.x >= 0.0)) {
-        float t_5 = sqrt(((r_4 + z.x) * 0.5));
-        return vec2(t_5, (z.y / (t_5 + t_5)));
+    float _e14 = airlight_cabs(z_1);
+    if ((z_1.x >= 0.0)) {
+        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
+        return vec2(t_5, (z_1.y / (t_5 + t_5)));
     }
-    float t_6 = sqrt(((r_4 - z.x) * 0.5));
-    return vec2((abs(z.y) / (t_6 + t_6)), ((z.y >= 0.0) ? t_6 : -(t_6)));
+    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
+    return vec2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
 }
 
 vec2 airlight_cos_sin(float x) {
@@ -111,7 +119,7 @@ vec2 airlight_cos_sin(float x) {
     uint k = 0u;
     float fc = 0.0;
     uint j = 0u;
-    float z_7 = (x * x);
+    float z_8 = (x * x);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
@@ -128,9 +136,9 @@ vec2 airlight_cos_sin(float x) {
             uint _e12 = k;
             uint n_3 = (8u - _e12);
             float _e14 = c;
-            c = (_e14 * z_7);
+            c = (_e14 * z_8);
             float _e16 = s;
-            s = (_e16 * z_7);
+            s = (_e16 * z_8);
             fc = 1.0;
             j = 1u;
             bool loop_init_1 = true;
@@ -165,10 +173,10 @@ vec2 airlight_cos_sin(float x) {
     return vec2(_e57, (_e58 * x));
 }
 
-vec2 airlight_cexp(vec2 z_1) {
-    float m_2 = exp(z_1.x);
-    vec2 _e4 = airlight_cos_sin(z_1.y);
-    return vec2((m_2 * _e4.x), (m_2 * _e4.y));
+vec2 airlight_cexp(vec2 z_2) {
+    float m_3 = exp(z_2.x);
+    vec2 _e4 = airlight_cos_sin(z_2.y);
+    return vec2((m_3 * _e4.x), (m_3 * _e4.y));
 }
 
 float airlight_atan(float x_1) {
@@ -186,22 +194,23 @@ float airlight_atan(float x_1) {
     }
     float _e17 = t;
     float _e18 = t;
-    float z_8 = (_e17 * _e18);
+    float z_9 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_8) - 0.13877685) * z_8) + 0.19977711) * z_8) - 0.3333295) * z_8) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_9) - 0.13877685) * z_9) + 0.19977711) * z_9) - 0.3333295) * z_9) * _e32) + _e34));
 }
 
-vec2 airlight_cln(vec2 z_2) {
+vec2 airlight_cln(vec2 z_3) {
     float arg = 1.5707964;
-    if ((z_2.x > 0.0)) {
-        float _e10 = airlight_atan((abs(z_2.y) / z_2.x));
+    if ((z_3.x > 0.0)) {
+        float _e10 = airlight_atan((abs(z_3.y) / z_3.x));
         arg = _e10;
     }
+    float _e11 = airlight_cabs(z_3);
     float _e13 = arg;
     float _e14 = arg;
-    return vec2(log(length(z_2)), ((z_2.y < 0.0) ? -(_e14) : _e13));
+    return vec2(log(_e11), ((z_3.y < 0.0) ? -(_e14) : _e13));
 }
 
 float airlight_log1p(float x_2) {
@@ -238,7 +247,7 @@ bool airlight_is_finite(float x_3) {
     return ((floatBitsToUint(x_3) & 2139095040u) != 2139095040u);
 }
 
-vec2 airlight_ein(vec2 z_3) {
+vec2 airlight_ein(vec2 z_4) {
     vec2 term = vec2(-1.0, 0.0);
     vec2 sum_1 = vec2(0.0, 0.0);
     uint k_2 = 1u;
@@ -258,7 +267,7 @@ vec2 airlight_ein(vec2 z_3) {
             uint _e14 = k_2;
             float kf = float(_e14);
             vec2 _e16 = term;
-            vec2 _e17 = airlight_cmul(_e16, z_3);
+            vec2 _e17 = airlight_cmul(_e16, z_4);
             term = (-(_e17) / vec2(kf));
             vec2 _e21 = sum_1;
             vec2 _e22 = term;
@@ -313,20 +322,20 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
     return _e46;
 }
 
-bool airlight_in_series_region(vec2 z_4) {
-    float x_10 = (z_4.x * 0.7692308);
-    float y_2 = (z_4.y * 0.47619048);
+bool airlight_in_series_region(vec2 z_5) {
+    float x_10 = (z_5.x * 0.7692308);
+    float y_2 = (z_5.y * 0.47619048);
     return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
 }
 
-vec2 airlight_e1_scaled_cf(vec2 z_5) {
+vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float r2_ = 3e38;
     uint depth = 2u;
     vec2 root = vec2(0.0);
     vec2 t_1 = vec2(0.0);
     uint i = 0u;
-    float ax = abs(z_5.x);
-    float ay = abs(z_5.y);
+    float ax = abs(z_6.x);
+    float ay = abs(z_6.y);
     if ((max(ax, ay) < 1e18)) {
         r2_ = ((ax * ax) + (ay * ay));
     }
@@ -351,7 +360,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_5) {
     }
     uint _e31 = depth;
     float nf = float(_e31);
-    vec2 b_3 = (z_5 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 b_3 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
     vec2 _e46 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_3);
     vec2 _e50 = airlight_cmul(_e46, _e46);
     vec2 _e52 = airlight_csqrt((vec2(1.0, 0.0) - _e50));
@@ -385,7 +394,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_5) {
                 float kf_2 = float((_e77 - _e78));
                 vec2 _e91 = t_1;
                 vec2 _e92 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e91);
-                t_1 = ((z_5 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
+                t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
             }
         }
     }
@@ -394,17 +403,17 @@ vec2 airlight_e1_scaled_cf(vec2 z_5) {
     return _e101;
 }
 
-vec2 airlight_e1_scaled(vec2 z_6) {
-    bool _e1 = airlight_in_series_region(z_6);
+vec2 airlight_e1_scaled(vec2 z_7) {
+    bool _e1 = airlight_in_series_region(z_7);
     if (_e1) {
-        vec2 _e2 = airlight_ein(z_6);
-        vec2 _e3 = airlight_cln(z_6);
+        vec2 _e2 = airlight_ein(z_7);
+        vec2 _e3 = airlight_cln(z_7);
         vec2 e1_ = ((_e2 - _e3) - vec2(0.5772157, 0.0));
-        vec2 _e9 = airlight_cexp(z_6);
+        vec2 _e9 = airlight_cexp(z_7);
         vec2 _e10 = airlight_cmul(e1_, _e9);
         return _e10;
     }
-    vec2 _e11 = airlight_e1_scaled_cf(z_6);
+    vec2 _e11 = airlight_e1_scaled_cf(z_7);
     return _e11;
 }
 
@@ -429,9 +438,9 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     }
     float nf_1 = float(n);
     uint _e17 = depth_1;
-    float m_3 = float(_e17);
-    float b_4 = ((x_4 + nf_1) + (2.0 * (m_3 + 1.0)));
-    float a_7 = ((m_3 + 2.0) * ((nf_1 + m_3) + 1.0));
+    float m_4 = float(_e17);
+    float b_4 = ((x_4 + nf_1) + (2.0 * (m_4 + 1.0)));
+    float a_7 = ((m_4 + 2.0) * ((nf_1 + m_4) + 1.0));
     float disc = (1.0 - ((4.0 * a_7) / (b_4 * b_4)));
     t_2 = b_4;
     if ((disc > 0.0)) {
@@ -2228,11 +2237,11 @@ bool airlight_vec_finite(vec3 v) {
 }
 
 float airlight_safe_length(vec3 v_1) {
-    float m_4 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_4 == 0.0)) {
+    float m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_5 == 0.0)) {
         return 0.0;
     }
-    return (m_4 * length((v_1 / vec3(m_4))));
+    return (m_5 * length((v_1 / vec3(m_5))));
 }
 
 bool airlight_normalisable(vec3 v_2) {
@@ -2249,8 +2258,8 @@ bool airlight_normalisable(vec3 v_2) {
 }
 
 vec3 airlight_normalize(vec3 v_3) {
-    float m_5 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    vec3 u = (v_3 / vec3(m_5));
+    float m_6 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    vec3 u = (v_3 / vec3(m_6));
     return (u / vec3(length(u)));
 }
 

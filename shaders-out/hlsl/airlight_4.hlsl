@@ -112,26 +112,35 @@ float2 airlight_cdiv(float2 a_1, float2 b_1)
     return float2((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
 }
 
-float2 airlight_csqrt(float2 z)
+float airlight_cabs(float2 z)
+{
+    float m_2 = max(abs(z.x), abs(z.y));
+    if ((m_2 == 0.0)) {
+        return 0.0;
+    }
+    return (m_2 * length((z / (m_2).xx)));
+}
+
+float2 airlight_csqrt(float2 z_1)
 {
     bool local = (bool)0;
 
-    if ((z.x == 0.0)) {
-        local = (z.y == 0.0);
+    if ((z_1.x == 0.0)) {
+        local = (z_1.y == 0.0);
     } else {
         local = false;
     }
     bool _e10 = local;
     if (_e10) {
-        return float2(0.0, z.y);
+        return float2(0.0, z_1.y);
     }
-    float r_4 = length(z);
-    if ((z.x >= 0.0)) {
-        float t_5 = sqrt(((r_4 + z.x) * 0.5));
-        return float2(t_5, (z.y / (t_5 + t_5)));
+    const float _e14 = airlight_cabs(z_1);
+    if ((z_1.x >= 0.0)) {
+        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_5, (z_1.y / (t_5 + t_5)));
     }
-    float t_6 = sqrt(((r_4 - z.x) * 0.5));
-    return float2((abs(z.y) / (t_6 + t_6)), ((z.y >= 0.0) ? t_6 : -(t_6)));
+    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
 }
 
 float2 airlight_cos_sin(float x)
@@ -142,7 +151,7 @@ float2 airlight_cos_sin(float x)
     float fc = (float)0;
     uint j = (uint)0;
 
-    float z_7 = (x * x);
+    float z_8 = (x * x);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
@@ -162,9 +171,9 @@ float2 airlight_cos_sin(float x)
             uint _e12 = k;
             uint n_3 = (8u - _e12);
             float _e14 = c;
-            c = (_e14 * z_7);
+            c = (_e14 * z_8);
             float _e16 = s;
-            s = (_e16 * z_7);
+            s = (_e16 * z_8);
             fc = 1.0;
             j = 1u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
@@ -202,11 +211,11 @@ float2 airlight_cos_sin(float x)
     return float2(_e57, (_e58 * x));
 }
 
-float2 airlight_cexp(float2 z_1)
+float2 airlight_cexp(float2 z_2)
 {
-    float m_2 = exp(z_1.x);
-    const float2 _e4 = airlight_cos_sin(z_1.y);
-    return float2((m_2 * _e4.x), (m_2 * _e4.y));
+    float m_3 = exp(z_2.x);
+    const float2 _e4 = airlight_cos_sin(z_2.y);
+    return float2((m_3 * _e4.x), (m_3 * _e4.y));
 }
 
 float airlight_atan(float x_1)
@@ -226,24 +235,25 @@ float airlight_atan(float x_1)
     }
     float _e17 = t;
     float _e18 = t;
-    float z_8 = (_e17 * _e18);
+    float z_9 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_8) - 0.13877685) * z_8) + 0.19977711) * z_8) - 0.3333295) * z_8) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_9) - 0.13877685) * z_9) + 0.19977711) * z_9) - 0.3333295) * z_9) * _e32) + _e34));
 }
 
-float2 airlight_cln(float2 z_2)
+float2 airlight_cln(float2 z_3)
 {
     float arg = 1.5707964;
 
-    if ((z_2.x > 0.0)) {
-        const float _e10 = airlight_atan((abs(z_2.y) / z_2.x));
+    if ((z_3.x > 0.0)) {
+        const float _e10 = airlight_atan((abs(z_3.y) / z_3.x));
         arg = _e10;
     }
+    const float _e11 = airlight_cabs(z_3);
     float _e13 = arg;
     float _e14 = arg;
-    return float2(log(length(z_2)), ((z_2.y < 0.0) ? -(_e14) : _e13));
+    return float2(log(_e11), ((z_3.y < 0.0) ? -(_e14) : _e13));
 }
 
 float airlight_log1p(float x_2)
@@ -286,7 +296,7 @@ bool airlight_is_finite(float x_3)
     return ((asuint(x_3) & 2139095040u) != 2139095040u);
 }
 
-float2 airlight_ein(float2 z_3)
+float2 airlight_ein(float2 z_4)
 {
     float2 term = float2(-1.0, 0.0);
     float2 sum_1 = float2(0.0, 0.0);
@@ -311,7 +321,7 @@ float2 airlight_ein(float2 z_3)
             uint _e14 = k_2;
             float kf = float(_e14);
             float2 _e16 = term;
-            const float2 _e17 = airlight_cmul(_e16, z_3);
+            const float2 _e17 = airlight_cmul(_e16, z_4);
             term = (-(_e17) / (kf).xx);
             float2 _e21 = sum_1;
             float2 _e22 = term;
@@ -371,14 +381,14 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
     return _e46;
 }
 
-bool airlight_in_series_region(float2 z_4)
+bool airlight_in_series_region(float2 z_5)
 {
-    float x_10 = (z_4.x * 0.7692308);
-    float y_2 = (z_4.y * 0.47619048);
+    float x_10 = (z_5.x * 0.7692308);
+    float y_2 = (z_5.y * 0.47619048);
     return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
 }
 
-float2 airlight_e1_scaled_cf(float2 z_5)
+float2 airlight_e1_scaled_cf(float2 z_6)
 {
     float r2_ = 3e38;
     uint depth = 2u;
@@ -386,8 +396,8 @@ float2 airlight_e1_scaled_cf(float2 z_5)
     float2 t_1 = (float2)0;
     uint i = 0u;
 
-    float ax = abs(z_5.x);
-    float ay = abs(z_5.y);
+    float ax = abs(z_6.x);
+    float ay = abs(z_6.y);
     if ((max(ax, ay) < 1e18)) {
         r2_ = ((ax * ax) + (ay * ay));
     }
@@ -412,7 +422,7 @@ float2 airlight_e1_scaled_cf(float2 z_5)
     }
     uint _e31 = depth;
     float nf = float(_e31);
-    float2 b_3 = (z_5 + float2(((2.0 * nf) + 1.0), 0.0));
+    float2 b_3 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
     const float2 _e46 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_3);
     const float2 _e50 = airlight_cmul(_e46, _e46);
     const float2 _e52 = airlight_csqrt((float2(1.0, 0.0) - _e50));
@@ -449,7 +459,7 @@ float2 airlight_e1_scaled_cf(float2 z_5)
                 float kf_2 = float((_e77 - _e78));
                 float2 _e91 = t_1;
                 const float2 _e92 = airlight_cdiv(float2((kf_2 * kf_2), 0.0), _e91);
-                t_1 = ((z_5 + float2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
+                t_1 = ((z_6 + float2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
             }
         }
     }
@@ -458,18 +468,18 @@ float2 airlight_e1_scaled_cf(float2 z_5)
     return _e101;
 }
 
-float2 airlight_e1_scaled(float2 z_6)
+float2 airlight_e1_scaled(float2 z_7)
 {
-    const bool _e1 = airlight_in_series_region(z_6);
+    const bool _e1 = airlight_in_series_region(z_7);
     if (_e1) {
-        const float2 _e2 = airlight_ein(z_6);
-        const float2 _e3 = airlight_cln(z_6);
+        const float2 _e2 = airlight_ein(z_7);
+        const float2 _e3 = airlight_cln(z_7);
         float2 e1_ = ((_e2 - _e3) - float2(0.5772157, 0.0));
-        const float2 _e9 = airlight_cexp(z_6);
+        const float2 _e9 = airlight_cexp(z_7);
         const float2 _e10 = airlight_cmul(e1_, _e9);
         return _e10;
     }
-    const float2 _e11 = airlight_e1_scaled_cf(z_6);
+    const float2 _e11 = airlight_e1_scaled_cf(z_7);
     return _e11;
 }
 
@@ -496,9 +506,9 @@ float airlight_en_scaled_cf(float x_4, uint n)
     }
     float nf_1 = float(n);
     uint _e17 = depth_1;
-    float m_3 = float(_e17);
-    float b_4 = ((x_4 + nf_1) + (2.0 * (m_3 + 1.0)));
-    float a_7 = ((m_3 + 2.0) * ((nf_1 + m_3) + 1.0));
+    float m_4 = float(_e17);
+    float b_4 = ((x_4 + nf_1) + (2.0 * (m_4 + 1.0)));
+    float a_7 = ((m_4 + 2.0) * ((nf_1 + m_4) + 1.0));
     float disc = (1.0 - ((4.0 * a_7) / (b_4 * b_4)));
     t_2 = b_4;
     if ((disc > 0.0)) {
@@ -2475,11 +2485,11 @@ bool airlight_vec_finite(float3 v)
 
 float airlight_safe_length(float3 v_1)
 {
-    float m_4 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_4 == 0.0)) {
+    float m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_5 == 0.0)) {
         return 0.0;
     }
-    return (m_4 * length((v_1 / (m_4).xxx)));
+    return (m_5 * length((v_1 / (m_5).xxx)));
 }
 
 bool airlight_normalisable(float3 v_2)
@@ -2499,8 +2509,8 @@ bool airlight_normalisable(float3 v_2)
 
 float3 airlight_normalize(float3 v_3)
 {
-    float m_5 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u = (v_3 / (m_5).xxx);
+    float m_6 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    float3 u = (v_3 / (m_6).xxx);
     return (u / (length(u)).xxx);
 }
 

@@ -118,26 +118,36 @@ metal::float2 airlight_cdiv(
     return metal::float2(((a_1.x * r_3) + a_1.y) / den_1, ((a_1.y * r_3) - a_1.x) / den_1);
 }
 
-metal::float2 airlight_csqrt(
+float airlight_cabs(
     metal::float2 z
 ) {
+    float m_2 = metal::max(metal::abs(z.x), metal::abs(z.y));
+    if (m_2 == 0.0) {
+        return 0.0;
+    }
+    return m_2 * metal::length(z / metal::float2(m_2));
+}
+
+metal::float2 airlight_csqrt(
+    metal::float2 z_1
+) {
     bool local = {};
-    if (z.x == 0.0) {
-        local = z.y == 0.0;
+    if (z_1.x == 0.0) {
+        local = z_1.y == 0.0;
     } else {
         local = false;
     }
     bool _e10 = local;
     if (_e10) {
-        return metal::float2(0.0, z.y);
+        return metal::float2(0.0, z_1.y);
     }
-    float r_4 = metal::length(z);
-    if (z.x >= 0.0) {
-        float t_5 = metal::sqrt((r_4 + z.x) * 0.5);
-        return metal::float2(t_5, z.y / (t_5 + t_5));
+    float _e14 = airlight_cabs(z_1);
+    if (z_1.x >= 0.0) {
+        float t_5 = metal::sqrt((_e14 + z_1.x) * 0.5);
+        return metal::float2(t_5, z_1.y / (t_5 + t_5));
     }
-    float t_6 = metal::sqrt((r_4 - z.x) * 0.5);
-    return metal::float2(metal::abs(z.y) / (t_6 + t_6), (z.y >= 0.0) ? t_6 : -(t_6));
+    float t_6 = metal::sqrt((_e14 - z_1.x) * 0.5);
+    return metal::float2(metal::abs(z_1.y) / (t_6 + t_6), (z_1.y >= 0.0) ? t_6 : -(t_6));
 }
 
 metal::float2 airlight_cos_sin(
@@ -148,7 +158,7 @@ metal::float2 airlight_cos_sin(
     uint k = 0u;
     float fc = {};
     uint j = {};
-    float z_7 = x * x;
+    float z_8 = x * x;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
@@ -168,9 +178,9 @@ metal::float2 airlight_cos_sin(
             uint _e12 = k;
             uint n_3 = 8u - _e12;
             float _e14 = c;
-            c = _e14 * z_7;
+            c = _e14 * z_8;
             float _e16 = s;
-            s = _e16 * z_7;
+            s = _e16 * z_8;
             fc = 1.0;
             j = 1u;
             uint2 loop_bound_1 = uint2(4294967295u);
@@ -209,11 +219,11 @@ metal::float2 airlight_cos_sin(
 }
 
 metal::float2 airlight_cexp(
-    metal::float2 z_1
+    metal::float2 z_2
 ) {
-    float m_2 = metal::exp(z_1.x);
-    metal::float2 _e4 = airlight_cos_sin(z_1.y);
-    return metal::float2(m_2 * _e4.x, m_2 * _e4.y);
+    float m_3 = metal::exp(z_2.x);
+    metal::float2 _e4 = airlight_cos_sin(z_2.y);
+    return metal::float2(m_3 * _e4.x, m_3 * _e4.y);
 }
 
 float airlight_atan(
@@ -233,24 +243,25 @@ float airlight_atan(
     }
     float _e17 = t;
     float _e18 = t;
-    float z_8 = _e17 * _e18;
+    float z_9 = _e17 * _e18;
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return _e20 + (((((((((0.080537446 * z_8) - 0.13877685) * z_8) + 0.19977711) * z_8) - 0.3333295) * z_8) * _e32) + _e34);
+    return _e20 + (((((((((0.080537446 * z_9) - 0.13877685) * z_9) + 0.19977711) * z_9) - 0.3333295) * z_9) * _e32) + _e34);
 }
 
 metal::float2 airlight_cln(
-    metal::float2 z_2
+    metal::float2 z_3
 ) {
     float arg = 1.5707964;
-    if (z_2.x > 0.0) {
-        float _e10 = airlight_atan(metal::abs(z_2.y) / z_2.x);
+    if (z_3.x > 0.0) {
+        float _e10 = airlight_atan(metal::abs(z_3.y) / z_3.x);
         arg = _e10;
     }
+    float _e11 = airlight_cabs(z_3);
     float _e13 = arg;
     float _e14 = arg;
-    return metal::float2(metal::log(metal::length(z_2)), (z_2.y < 0.0) ? -(_e14) : _e13);
+    return metal::float2(metal::log(_e11), (z_3.y < 0.0) ? -(_e14) : _e13);
 }
 
 float airlight_log1p(
@@ -295,7 +306,7 @@ bool airlight_is_finite(
 }
 
 metal::float2 airlight_ein(
-    metal::float2 z_3
+    metal::float2 z_4
 ) {
     metal::float2 term = metal::float2(-1.0, 0.0);
     metal::float2 sum_1 = metal::float2(0.0, 0.0);
@@ -319,7 +330,7 @@ metal::float2 airlight_ein(
             uint _e14 = k_2;
             float kf = static_cast<float>(_e14);
             metal::float2 _e16 = term;
-            metal::float2 _e17 = airlight_cmul(_e16, z_3);
+            metal::float2 _e17 = airlight_cmul(_e16, z_4);
             term = -(_e17) / metal::float2(kf);
             metal::float2 _e21 = sum_1;
             metal::float2 _e22 = term;
@@ -381,23 +392,23 @@ metal::float2 airlight_ein_divided_difference(
 }
 
 bool airlight_in_series_region(
-    metal::float2 z_4
+    metal::float2 z_5
 ) {
-    float x_10 = z_4.x * 0.7692308;
-    float y_2 = z_4.y * 0.47619048;
+    float x_10 = z_5.x * 0.7692308;
+    float y_2 = z_5.y * 0.47619048;
     return ((x_10 * x_10) + (y_2 * y_2)) < 1.0;
 }
 
 metal::float2 airlight_e1_scaled_cf(
-    metal::float2 z_5
+    metal::float2 z_6
 ) {
     float r2_ = 300000000000000000000000000000000000000.0;
     uint depth = 2u;
     metal::float2 root = {};
     metal::float2 t_1 = {};
     uint i = 0u;
-    float ax = metal::abs(z_5.x);
-    float ay = metal::abs(z_5.y);
+    float ax = metal::abs(z_6.x);
+    float ay = metal::abs(z_6.y);
     if (metal::max(ax, ay) < 1000000000000000000.0) {
         r2_ = (ax * ax) + (ay * ay);
     }
@@ -422,7 +433,7 @@ metal::float2 airlight_e1_scaled_cf(
     }
     uint _e31 = depth;
     float nf = static_cast<float>(_e31);
-    metal::float2 b_3 = z_5 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 b_3 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
     metal::float2 _e46 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_3);
     metal::float2 _e50 = airlight_cmul(_e46, _e46);
     metal::float2 _e52 = airlight_csqrt(metal::float2(1.0, 0.0) - _e50);
@@ -459,7 +470,7 @@ metal::float2 airlight_e1_scaled_cf(
                 float kf_2 = static_cast<float>(_e77 - _e78);
                 metal::float2 _e91 = t_1;
                 metal::float2 _e92 = airlight_cdiv(metal::float2(kf_2 * kf_2, 0.0), _e91);
-                t_1 = (z_5 + metal::float2((2.0 * kf_2) - 1.0, 0.0)) - _e92;
+                t_1 = (z_6 + metal::float2((2.0 * kf_2) - 1.0, 0.0)) - _e92;
             }
         }
     }
@@ -469,18 +480,18 @@ metal::float2 airlight_e1_scaled_cf(
 }
 
 metal::float2 airlight_e1_scaled(
-    metal::float2 z_6
+    metal::float2 z_7
 ) {
-    bool _e1 = airlight_in_series_region(z_6);
+    bool _e1 = airlight_in_series_region(z_7);
     if (_e1) {
-        metal::float2 _e2 = airlight_ein(z_6);
-        metal::float2 _e3 = airlight_cln(z_6);
+        metal::float2 _e2 = airlight_ein(z_7);
+        metal::float2 _e3 = airlight_cln(z_7);
         metal::float2 e1_ = (_e2 - _e3) - metal::float2(0.5772157, 0.0);
-        metal::float2 _e9 = airlight_cexp(z_6);
+        metal::float2 _e9 = airlight_cexp(z_7);
         metal::float2 _e10 = airlight_cmul(e1_, _e9);
         return _e10;
     }
-    metal::float2 _e11 = airlight_e1_scaled_cf(z_6);
+    metal::float2 _e11 = airlight_e1_scaled_cf(z_7);
     return _e11;
 }
 
@@ -508,9 +519,9 @@ float airlight_en_scaled_cf(
     }
     float nf_1 = static_cast<float>(n);
     uint _e17 = depth_1;
-    float m_3 = static_cast<float>(_e17);
-    float b_4 = (x_4 + nf_1) + (2.0 * (m_3 + 1.0));
-    float a_7 = (m_3 + 2.0) * ((nf_1 + m_3) + 1.0);
+    float m_4 = static_cast<float>(_e17);
+    float b_4 = (x_4 + nf_1) + (2.0 * (m_4 + 1.0));
+    float a_7 = (m_4 + 2.0) * ((nf_1 + m_4) + 1.0);
     float disc = 1.0 - ((4.0 * a_7) / (b_4 * b_4));
     t_2 = b_4;
     if (disc > 0.0) {
@@ -2505,11 +2516,11 @@ bool airlight_vec_finite(
 float airlight_safe_length(
     metal::float3 v_1
 ) {
-    float m_4 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
-    if (m_4 == 0.0) {
+    float m_5 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
+    if (m_5 == 0.0) {
         return 0.0;
     }
-    return m_4 * metal::length(v_1 / metal::float3(m_4));
+    return m_5 * metal::length(v_1 / metal::float3(m_5));
 }
 
 bool airlight_normalisable(
@@ -2530,8 +2541,8 @@ bool airlight_normalisable(
 metal::float3 airlight_normalize(
     metal::float3 v_3
 ) {
-    float m_5 = metal::max(metal::abs(v_3.x), metal::max(metal::abs(v_3.y), metal::abs(v_3.z)));
-    metal::float3 u = v_3 / metal::float3(m_5);
+    float m_6 = metal::max(metal::abs(v_3.x), metal::max(metal::abs(v_3.y), metal::abs(v_3.z)));
+    metal::float3 u = v_3 / metal::float3(m_6);
     return u / metal::float3(metal::length(u));
 }
 

@@ -93,25 +93,33 @@ fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     return vec2<f32>((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
 }
 
-fn airlight_csqrt(z: vec2<f32>) -> vec2<f32> {
+fn airlight_cabs(z: vec2<f32>) -> f32 {
+    let m_2 = max(abs(z.x), abs(z.y));
+    if (m_2 == 0f) {
+        return 0f;
+    }
+    return (m_2 * length((z / vec2(m_2))));
+}
+
+fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     var local: bool;
 
-    if (z.x == 0f) {
-        local = (z.y == 0f);
+    if (z_1.x == 0f) {
+        local = (z_1.y == 0f);
     } else {
         local = false;
     }
     let _e10 = local;
     if _e10 {
-        return vec2<f32>(0f, z.y);
+        return vec2<f32>(0f, z_1.y);
     }
-    let r_4 = length(z);
-    if (z.x >= 0f) {
-        let t_5 = sqrt(((r_4 + z.x) * 0.5f));
-        return vec2<f32>(t_5, (z.y / (t_5 + t_5)));
+    let _e14 = airlight_cabs(z_1);
+    if (z_1.x >= 0f) {
+        let t_5 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_5, (z_1.y / (t_5 + t_5)));
     }
-    let t_6 = sqrt(((r_4 - z.x) * 0.5f));
-    return vec2<f32>((abs(z.y) / (t_6 + t_6)), select(-(t_6), t_6, (z.y >= 0f)));
+    let t_6 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_6 + t_6)), select(-(t_6), t_6, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -121,7 +129,7 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
     var fc: f32;
     var j: u32;
 
-    let z_7 = (x * x);
+    let z_8 = (x * x);
     loop {
         let _e8 = k;
         if (_e8 < 9u) {
@@ -132,9 +140,9 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             let _e12 = k;
             let n_3 = (8u - _e12);
             let _e14 = c;
-            c = (_e14 * z_7);
+            c = (_e14 * z_8);
             let _e16 = s;
-            s = (_e16 * z_7);
+            s = (_e16 * z_8);
             fc = 1f;
             j = 1u;
             loop {
@@ -171,10 +179,10 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
     return vec2<f32>(_e57, (_e58 * x));
 }
 
-fn airlight_cexp(z_1: vec2<f32>) -> vec2<f32> {
-    let m_2 = exp(z_1.x);
-    let _e4 = airlight_cos_sin(z_1.y);
-    return vec2<f32>((m_2 * _e4.x), (m_2 * _e4.y));
+fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
+    let m_3 = exp(z_2.x);
+    let _e4 = airlight_cos_sin(z_2.y);
+    return vec2<f32>((m_3 * _e4.x), (m_3 * _e4.y));
 }
 
 fn airlight_atan(x_1: f32) -> f32 {
@@ -193,23 +201,24 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_8 = (_e17 * _e18);
+    let z_9 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_8) - 0.13877685f) * z_8) + 0.19977711f) * z_8) - 0.3333295f) * z_8) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_9) - 0.13877685f) * z_9) + 0.19977711f) * z_9) - 0.3333295f) * z_9) * _e32) + _e34));
 }
 
-fn airlight_cln(z_2: vec2<f32>) -> vec2<f32> {
+fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
     var arg: f32 = 1.5707964f;
 
-    if (z_2.x > 0f) {
-        let _e10 = airlight_atan((abs(z_2.y) / z_2.x));
+    if (z_3.x > 0f) {
+        let _e10 = airlight_atan((abs(z_3.y) / z_3.x));
         arg = _e10;
     }
+    let _e11 = airlight_cabs(z_3);
     let _e13 = arg;
     let _e14 = arg;
-    return vec2<f32>(log(length(z_2)), select(_e13, -(_e14), (z_2.y < 0f)));
+    return vec2<f32>(log(_e11), select(_e13, -(_e14), (z_3.y < 0f)));
 }
 
 fn airlight_log1p(x_2: f32) -> f32 {
@@ -245,7 +254,7 @@ fn airlight_is_finite(x_3: f32) -> bool {
     return ((bitcast<u32>(x_3) & 2139095040u) != 2139095040u);
 }
 
-fn airlight_ein(z_3: vec2<f32>) -> vec2<f32> {
+fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
     var term: vec2<f32> = vec2<f32>(-1f, 0f);
     var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
     var k_2: u32 = 1u;
@@ -260,7 +269,7 @@ fn airlight_ein(z_3: vec2<f32>) -> vec2<f32> {
             let _e14 = k_2;
             let kf = f32(_e14);
             let _e16 = term;
-            let _e17 = airlight_cmul(_e16, z_3);
+            let _e17 = airlight_cmul(_e16, z_4);
             term = (-(_e17) / vec2(kf));
             let _e21 = sum_1;
             let _e22 = term;
@@ -318,21 +327,21 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
     return _e46;
 }
 
-fn airlight_in_series_region(z_4: vec2<f32>) -> bool {
-    let x_10 = (z_4.x * 0.7692308f);
-    let y_2 = (z_4.y * 0.47619048f);
+fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
+    let x_10 = (z_5.x * 0.7692308f);
+    let y_2 = (z_5.y * 0.47619048f);
     return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
 }
 
-fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
+fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     var r2_: f32 = 300000000000000000000000000000000000000f;
     var depth: u32 = 2u;
     var root: vec2<f32>;
     var t_1: vec2<f32>;
     var i: u32 = 0u;
 
-    let ax = abs(z_5.x);
-    let ay = abs(z_5.y);
+    let ax = abs(z_6.x);
+    let ay = abs(z_6.y);
     if (max(ax, ay) < 1000000000000000000f) {
         r2_ = ((ax * ax) + (ay * ay));
     }
@@ -357,7 +366,7 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
     }
     let _e31 = depth;
     let nf = f32(_e31);
-    let b_3 = (z_5 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let b_3 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
     let _e46 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_3);
     let _e50 = airlight_cmul(_e46, _e46);
     let _e52 = airlight_csqrt((vec2<f32>(1f, 0f) - _e50));
@@ -385,7 +394,7 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
                 let kf_2 = f32((_e77 - _e78));
                 let _e91 = t_1;
                 let _e92 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e91);
-                t_1 = ((z_5 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e92);
+                t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e92);
             }
         }
         continuing {
@@ -398,17 +407,17 @@ fn airlight_e1_scaled_cf(z_5: vec2<f32>) -> vec2<f32> {
     return _e101;
 }
 
-fn airlight_e1_scaled(z_6: vec2<f32>) -> vec2<f32> {
-    let _e1 = airlight_in_series_region(z_6);
+fn airlight_e1_scaled(z_7: vec2<f32>) -> vec2<f32> {
+    let _e1 = airlight_in_series_region(z_7);
     if _e1 {
-        let _e2 = airlight_ein(z_6);
-        let _e3 = airlight_cln(z_6);
+        let _e2 = airlight_ein(z_7);
+        let _e3 = airlight_cln(z_7);
         let e1_ = ((_e2 - _e3) - vec2<f32>(0.5772157f, 0f));
-        let _e9 = airlight_cexp(z_6);
+        let _e9 = airlight_cexp(z_7);
         let _e10 = airlight_cmul(e1_, _e9);
         return _e10;
     }
-    let _e11 = airlight_e1_scaled_cf(z_6);
+    let _e11 = airlight_e1_scaled_cf(z_7);
     return _e11;
 }
 
@@ -434,9 +443,9 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     }
     let nf_1 = f32(n);
     let _e17 = depth_1;
-    let m_3 = f32(_e17);
-    let b_4 = ((x_4 + nf_1) + (2f * (m_3 + 1f)));
-    let a_7 = ((m_3 + 2f) * ((nf_1 + m_3) + 1f));
+    let m_4 = f32(_e17);
+    let b_4 = ((x_4 + nf_1) + (2f * (m_4 + 1f)));
+    let a_7 = ((m_4 + 2f) * ((nf_1 + m_4) + 1f));
     let disc = (1f - ((4f * a_7) / (b_4 * b_4)));
     t_2 = b_4;
     if (disc > 0f) {
@@ -2190,11 +2199,11 @@ fn airlight_vec_finite(v: vec3<f32>) -> bool {
 }
 
 fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
-    let m_4 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if (m_4 == 0f) {
+    let m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if (m_5 == 0f) {
         return 0f;
     }
-    return (m_4 * length((v_1 / vec3(m_4))));
+    return (m_5 * length((v_1 / vec3(m_5))));
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
@@ -2212,8 +2221,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 }
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
-    let m_5 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u = (v_3 / vec3(m_5));
+    let m_6 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    let u = (v_3 / vec3(m_6));
     return (u / vec3(length(u)));
 }
 

@@ -57,7 +57,7 @@ fn readme_sizes_are_current() {
         for (n, want) in TERM_COUNTS.iter().zip(&listed) {
             let file = dir.join(pattern.replace("{4,6}", &n.to_string()));
             let got = std::fs::metadata(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display())).len();
-            assert_eq!(got, *want, "shaders-out/README.md lists {} as {want} bytes; it has {got}", file.display());
+            assert_eq!(got, *want, "shaders-out/README.md lists {} as {want} bytes; it has {got} (run scripts/update-shader-sizes.py)", file.display());
         }
         rows += 1;
     }
