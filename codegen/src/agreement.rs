@@ -41,6 +41,18 @@
 //! Vulkan lets denormals flush to zero: below `2^-100` (the result's last factors, the
 //! prefactor `2σsI/h` and the folded exponential, reach `2^26` at most) an intermediate may
 //! have flushed, so that absolute floor is added.
+//!
+//! ## The domain of agreement
+//! Flushing can also hit the *geometry*: with inputs near `f32::MAX` or `f32::MIN_POSITIVE`
+//! a normalised direction component or a product of two inputs is a denormal, which the
+//! shader may read as 0 (lavapipe does; `shaderDenormPreserveFloat32` is optional in
+//! Vulkan) — e.g. a ray from `(3.4e38, …)` whose direction's `z` is `−2.2e-39` after scaling:
+//! the CPU finds the light 0.74 from the line (2.4e33), lavapipe on it (`+∞`). No Vulkan
+//! shader can promise the CPU's value there, so the criterion above is applied to records
+//! [`in_domain`]: every finite input number zero or of magnitude in `[2^-40, 2^40]`, whose
+//! products of up to three stay in f32's normal range `[2^-126, 2^128)`. Outside it a result
+//! is judged by [`judge_defined`]: the same validity, a finite non-negative value (`+∞` as
+//! `FLT_MAX` allowed), 0 for invalid records.
 
 use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
 use crate::scene_json::SceneRecord;
@@ -183,6 +195,38 @@ pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
     let p_max = [-1.0f64, 1.0].iter().map(|&mu| wide.phase.eval(mu)).fold(0.0, f64::max);
     let scale = (in_scatter(&iso, 6).unwrap_or(0.0) * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
     Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
+}
+
+/// Smallest and largest magnitude of an input number [`in_domain`] (module docs).
+pub const DOMAIN: (f32, f32) = (1.0 / (1u64 << 40) as f32, (1u64 << 40) as f32);
+
+/// Whether every finite input number of `rec` is zero or of magnitude within [`DOMAIN`]:
+/// where [`judge`] applies (module docs). Non-finite numbers (an invalid record, or
+/// `t_max = +∞`) do not leave the domain.
+pub fn in_domain(rec: &SceneRecord<f32>) -> bool {
+    let words = crate::layout::pack(&rec.ray, &rec.light, &rec.medium, &rec.phase);
+    // offsets 0..88 of a record are its f32 inputs (layout.rs); unused ones are 0
+    words[..88].chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).all(|x| {
+        let m = x.abs();
+        !m.is_finite() || m == 0.0 || (DOMAIN.0..=DOMAIN.1).contains(&m)
+    })
+}
+
+/// Judges a result outside the domain of agreement (module docs): statuses agree on
+/// validity, the value is finite and non-negative, and 0 for an invalid record.
+pub fn judge_defined(e: &Expected, got: f32, status: u32) -> Judgement {
+    let problem = if !got.is_finite() {
+        Some(format!("non-finite result {got}"))
+    } else if (status == STATUS_INVALID) != (e.status == STATUS_INVALID) || status > STATUS_INFINITE {
+        Some(format!("status {status}, CPU {}", e.status))
+    } else if status == STATUS_INVALID && got != 0.0 {
+        Some(format!("value {got} for an invalid record"))
+    } else if got < 0.0 {
+        Some(format!("negative value {got}"))
+    } else {
+        None
+    };
+    Judgement { diff: 0.0, diff_f64: 0.0, excess: 0.0, problem }
 }
 
 /// Judges one shader result `(got, status)` against `e`.

@@ -4,11 +4,13 @@
 //! special values and raw bits included), run in one dispatch and judged record by record
 //! with the agreement criterion of `airlight_codegen::agreement` (the one the agreement tests
 //! and `airlight verify` use): statuses equal, no NaN or Inf, values within
-//! `9·noise + 2e-4·scale`. Built without a sanitizer (`-s none`: the driver is not
+//! `9·noise + 2e-4·scale` — for records in its domain of agreement (input magnitudes in
+//! `[2^-40, 2^40]`); outside it, where Vulkan's denormal flushing may change the geometry,
+//! the result must be defined: same validity, finite, non-negative. Built without a sanitizer (`-s none`: the driver is not
 //! instrumented and wgpu under ASan is slow); `scripts/fuzz.sh` does that.
 #![no_main]
 use airlight::glam::Vec3;
-use airlight_codegen::agreement::{expect, judge};
+use airlight_codegen::agreement::{expect, in_domain, judge, judge_defined};
 use airlight_codegen::gpu::{Gpu, Prepared, Shader};
 use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE};
 use airlight_codegen::scene_json::SceneRecord;
@@ -34,8 +36,10 @@ fn pipeline() -> &'static Prepared<'static> {
     })
 }
 
-/// Scenes executed on the adapter so far (printed every 100 000).
+/// Scenes executed on the adapter so far, and how many of them in the domain of agreement
+/// (printed every 10 000).
 static SCENES: AtomicUsize = AtomicUsize::new(0);
+static IN_DOMAIN: AtomicUsize = AtomicUsize::new(0);
 
 fuzz_target!(|data: &[u8]| {
     let mut reader = Reader(data);
@@ -54,13 +58,20 @@ fuzz_target!(|data: &[u8]| {
     let out = pipeline().run(&records, false).expect("dispatch failed");
     for (i, rec) in scenes.iter().enumerate() {
         let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
-        let j = judge(&expect(rec, TERMS), got, status);
+        let e = expect(rec, TERMS);
+        let j = if in_domain(rec) {
+            IN_DOMAIN.fetch_add(1, Ordering::Relaxed);
+            judge(&e, got, status)
+        } else {
+            judge_defined(&e, got, status)
+        };
         if let Some(problem) = j.problem {
             panic!("CPU and shader disagree: {problem} for {rec:?}");
         }
     }
     let before = SCENES.fetch_add(scenes.len(), Ordering::Relaxed);
-    if (before + scenes.len()) / 100_000 > before / 100_000 {
-        eprintln!("shader target: {} scenes executed on the adapter", before + scenes.len());
+    if (before + scenes.len()) / 10_000 > before / 10_000 {
+        let judged = IN_DOMAIN.load(Ordering::Relaxed);
+        eprintln!("shader target: {} scenes executed on the adapter, {judged} in the domain of agreement", before + scenes.len());
     }
 });
