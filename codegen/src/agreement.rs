@@ -56,9 +56,9 @@
 
 use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
 use crate::scene_json::SceneRecord;
-use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
-use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
-use airlight::{Expansion, Medium, PhaseFunction, PointLight, Ray, Scene};
+use airlight::light::AnyDistribution;
+use airlight::phase::AnyPhase;
+use airlight::{Expansion, PhaseFunction, Scene};
 
 /// Relative allowance (of scale) for the built-ins' accuracy (module docs).
 pub const ALLOWANCE: f64 = 2e-4;
@@ -109,29 +109,7 @@ fn in_scatter<T: airlight::Real>(rec: &SceneRecord<T>, terms: usize) -> Option<T
 
 /// The record in f64, every number exactly as in f32.
 pub fn widen(rec: &SceneRecord<f32>) -> SceneRecord<f64> {
-    let distribution = match rec.light.distribution {
-        AnyDistribution::Omni => AnyDistribution::Omni,
-        AnyDistribution::TwoLobed(d) => AnyDistribution::TwoLobed(TwoLobed { axis: d.axis.as_dvec3(), power: d.power }),
-        AnyDistribution::SpotCone(d) => {
-            AnyDistribution::SpotCone(SpotCone { axis: d.axis.as_dvec3(), cos_inner: d.cos_inner as f64, cos_outer: d.cos_outer as f64 })
-        }
-    };
-    let phase = match rec.phase {
-        AnyPhase::Isotropic => AnyPhase::Isotropic,
-        AnyPhase::Rayleigh => AnyPhase::Rayleigh,
-        AnyPhase::HenyeyGreenstein(p) => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: p.g as f64 }),
-        AnyPhase::Schlick(p) => AnyPhase::Schlick(Schlick { k: p.k as f64 }),
-        AnyPhase::CornetteShanks(p) => AnyPhase::CornetteShanks(CornetteShanks { g: p.g as f64 }),
-        AnyPhase::TwoLobeHenyeyGreenstein(p) => {
-            AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: p.g1 as f64, g2: p.g2 as f64, w: p.w as f64 })
-        }
-    };
-    SceneRecord {
-        ray: Ray { origin: rec.ray.origin.as_dvec3(), dir: rec.ray.dir.as_dvec3(), t_min: rec.ray.t_min as f64, t_max: rec.ray.t_max as f64 },
-        light: PointLight { position: rec.light.position.as_dvec3(), intensity: rec.light.intensity as f64, distribution },
-        medium: Medium { sigma_s: rec.medium.sigma_s as f64, sigma_t: rec.medium.sigma_t as f64 },
-        phase,
-    }
+    rec.cast()
 }
 
 /// The record with input `k` (of `PERTURBATIONS`) moved by one ulp: `t_min` up/down, `t_max`

@@ -17,10 +17,11 @@
 //! surface (`brdf = albedo/π`); rays that hit nothing see the glow over `[0, ∞)`.
 
 use crate::gpu::Prepared;
+use crate::scene_json::{cast_light, cast_phase};
 use crate::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
 use airlight::glam::DVec3;
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
-use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
+use airlight::phase::{AnyPhase, HenyeyGreenstein, Schlick};
 use airlight::{Expansion, LightDistribution, Medium, PhaseFunction, PointLight, Ray, Scene};
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -442,30 +443,6 @@ pub fn render_cpu(scene: &SceneDesc, progress: bool) -> Image {
     assemble(scene, rows)
 }
 
-fn light_f32(l: &PointLight<f64, AnyDistribution<f64>>) -> PointLight<f32, AnyDistribution<f32>> {
-    let distribution = match l.distribution {
-        AnyDistribution::Omni => AnyDistribution::Omni,
-        AnyDistribution::TwoLobed(d) => AnyDistribution::TwoLobed(TwoLobed { axis: d.axis.as_vec3(), power: d.power }),
-        AnyDistribution::SpotCone(d) => {
-            AnyDistribution::SpotCone(SpotCone { axis: d.axis.as_vec3(), cos_inner: d.cos_inner as f32, cos_outer: d.cos_outer as f32 })
-        }
-    };
-    PointLight { position: l.position.as_vec3(), intensity: l.intensity as f32, distribution }
-}
-
-fn phase_f32(p: &AnyPhase<f64>) -> AnyPhase<f32> {
-    match *p {
-        AnyPhase::Isotropic => AnyPhase::Isotropic,
-        AnyPhase::Rayleigh => AnyPhase::Rayleigh,
-        AnyPhase::HenyeyGreenstein(p) => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: p.g as f32 }),
-        AnyPhase::Schlick(p) => AnyPhase::Schlick(Schlick { k: p.k as f32 }),
-        AnyPhase::CornetteShanks(p) => AnyPhase::CornetteShanks(CornetteShanks { g: p.g as f32 }),
-        AnyPhase::TwoLobeHenyeyGreenstein(p) => {
-            AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: p.g1 as f32, g2: p.g2 as f32, w: p.w as f32 })
-        }
-    }
-}
-
 /// The path of the compute shader the GPU evaluator runs: `shaders-out/wgsl/airlight_4.wgsl`.
 pub fn shader_path() -> std::path::PathBuf {
     crate::targets::default_out_dir().join("wgsl").join("airlight_4.wgsl")
@@ -485,8 +462,8 @@ pub fn shader_path() -> std::path::PathBuf {
 pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> Result<Image, String> {
     let (w, h) = (scene.camera.width, scene.camera.height);
     let medium = Medium { sigma_s: scene.medium.sigma_s as f32, sigma_t: scene.medium.sigma_t as f32 };
-    let phase = phase_f32(&scene.phase);
-    let lights: Vec<_> = scene.lights.iter().map(|l| light_f32(&l.light)).collect();
+    let phase = cast_phase::<f64, f32>(&scene.phase);
+    let lights: Vec<_> = scene.lights.iter().map(|l| cast_light::<f64, f32>(&l.light)).collect();
     let n = scene.lights.len();
     let mut records = Vec::with_capacity(w as usize * h as usize * n * layout::RECORD_SIZE);
     let mut hits = Vec::with_capacity(w as usize * h as usize);

@@ -5,6 +5,7 @@ use airlight::glam::{DVec3, Vec3};
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
+use airlight_codegen::scene_json::{cast_light, cast_phase};
 
 /// A scene in plain f64 numbers, convertible to either precision.
 #[derive(Clone, Copy, Debug)]
@@ -128,32 +129,13 @@ impl Plain {
     /// both precisions see identical inputs).
     pub fn f32(&self) -> Scene<f32, AnyDistribution<f32>, AnyPhase<f32>> {
         let v = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
-        let dist = match self.dist {
-            AnyDistribution::Omni => AnyDistribution::Omni,
-            AnyDistribution::TwoLobed(d) => AnyDistribution::TwoLobed(TwoLobed { axis: d.axis.as_vec3(), power: d.power }),
-            AnyDistribution::SpotCone(d) => AnyDistribution::SpotCone(SpotCone {
-                axis: d.axis.as_vec3(),
-                cos_inner: d.cos_inner as f32,
-                cos_outer: d.cos_outer as f32,
-            }),
-        };
-        let phase = match self.phase {
-            AnyPhase::Isotropic => AnyPhase::Isotropic,
-            AnyPhase::Rayleigh => AnyPhase::Rayleigh,
-            AnyPhase::HenyeyGreenstein(p) => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: p.g as f32 }),
-            AnyPhase::Schlick(p) => AnyPhase::Schlick(Schlick { k: p.k as f32 }),
-            AnyPhase::CornetteShanks(p) => AnyPhase::CornetteShanks(CornetteShanks { g: p.g as f32 }),
-            AnyPhase::TwoLobeHenyeyGreenstein(p) => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein {
-                g1: p.g1 as f32,
-                g2: p.g2 as f32,
-                w: p.w as f32,
-            }),
-        };
+        let light = PointLight { position: self.light.into(), intensity: self.intensity, distribution: self.dist };
+        let light = cast_light::<f64, f32>(&light);
         Scene::new(
             Ray { origin: v(self.origin), dir: v(self.dir), t_min: self.t_min as f32, t_max: self.t_max as f32 },
-            PointLight { position: v(self.light), intensity: self.intensity as f32, distribution: dist },
+            light,
             Medium { sigma_s: self.sigma_s as f32, sigma_t: self.sigma_t as f32 },
-            phase,
+            cast_phase::<f64, f32>(&self.phase),
         )
         .expect("generated scene is valid")
     }
