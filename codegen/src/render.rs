@@ -423,18 +423,30 @@ fn accumulate(px: &mut Rgb, color: Rgb, albedo: Rgb, in_scatter: f64, surface: f
 /// The image on the CPU kernel: f64, [`airlight::CPU_TERMS`] Chebyshev terms per (pixel,
 /// light) segment. A light exactly on a segment (an infinite value) is kept as `+∞`.
 pub fn render_cpu(scene: &SceneDesc, progress: bool) -> Image {
-    let label = format!("{} cpu", scene.name);
+    render_per_light(scene, "cpu", progress, |d, hit, l| {
+        let lm = match Scene::new(scene.ray(d, hit), l.light, scene.medium, scene.phase) {
+            Ok(s) => s.in_scatter_with::<{ airlight::CPU_TERMS }>(Expansion::Chebyshev),
+            Err(_) => 0.0,
+        };
+        (lm, scene.surface_kernel(d, hit, l))
+    })
+}
+
+/// The image with `(in_scatter, surface)` of each (pixel, light) from `per_light`, in
+/// parallel rows with progress labelled `<scene> <what>`.
+fn render_per_light<F>(scene: &SceneDesc, what: &str, progress: bool, per_light: F) -> Image
+where
+    F: Fn(DVec3, &Hit, &Light) -> (f64, f64) + Sync,
+{
+    let label = format!("{} {what}", scene.name);
     let rows = par_rows(scene.camera.height, &label, progress, |y| {
         (0..scene.camera.width)
             .map(|x| {
                 let (d, hit) = scene.primary(x, y);
                 let mut px = [0.0; 3];
                 for l in &scene.lights {
-                    let lm = match Scene::new(scene.ray(d, &hit), l.light, scene.medium, scene.phase) {
-                        Ok(s) => s.in_scatter_with::<{ airlight::CPU_TERMS }>(Expansion::Chebyshev),
-                        Err(_) => 0.0,
-                    };
-                    accumulate(&mut px, l.color, hit.albedo, lm, scene.surface_kernel(d, &hit, l));
+                    let (lm, surface) = per_light(d, &hit, l);
+                    accumulate(&mut px, l.color, hit.albedo, lm, surface);
                 }
                 px
             })
@@ -705,21 +717,10 @@ fn surface_reference(scene: &SceneDesc, d: DVec3, hit: &Hit, light: &Light) -> f
 /// The brute-force reference image: [`reference_in_scatter`] with [`REFERENCE_TOL`] per
 /// (pixel, light) segment and the surface term written out from eq. 7.
 pub fn render_reference(scene: &SceneDesc, progress: bool) -> Image {
-    let label = format!("{} reference", scene.name);
-    let rows = par_rows(scene.camera.height, &label, progress, |y| {
-        (0..scene.camera.width)
-            .map(|x| {
-                let (d, hit) = scene.primary(x, y);
-                let mut px = [0.0; 3];
-                for l in &scene.lights {
-                    let lm = reference_in_scatter(scene.camera.position, d, 0.0, hit.t, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL);
-                    accumulate(&mut px, l.color, hit.albedo, lm, surface_reference(scene, d, &hit, l));
-                }
-                px
-            })
-            .collect()
-    });
-    assemble(scene, rows)
+    render_per_light(scene, "reference", progress, |d, hit, l| {
+        let lm = reference_in_scatter(scene.camera.position, d, 0.0, hit.t, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL);
+        (lm, surface_reference(scene, d, hit, l))
+    })
 }
 
 /// Per-pixel relative error of `test` against `reference`: the largest over the channels of
