@@ -12,7 +12,7 @@
 //! too: the `f32_exact` ones (isotropic, inputs exact in f32) must be within 1e-4 of the
 //! quadrature value at 4 terms, as the CPU kernel is (`tests/reference.rs`).
 //!
-//! Printed (`--nocapture`): per artifact and term count, the largest and median difference to
+//! Printed (`--nocapture`) and written to `target/agreement.md`: per artifact and term count, the largest and median difference to
 //! the f32 CPU kernel and the largest to the f64 kernel (of scale; values above 2^-80), and
 //! the largest error against the `f32_exact` reference values — the closing note's table.
 
@@ -22,7 +22,7 @@ use airlight_codegen::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, ST
 use airlight_codegen::scene_json::{parse_value, SceneRecord};
 use airlight_codegen::targets::default_out_dir;
 use airlight_tests::scenes::{random, Aniso, Plain};
-use airlight_tests::{reference_lines, rel_err, Rng};
+use airlight_tests::{reference_lines, rel_err, repo_root, Rng};
 use std::process::Command;
 
 const CASES: usize = 10_000;
@@ -169,12 +169,26 @@ fn compare(label: &str, c: &Case, out: &[u8]) {
     }
     diffs.sort_by(|a, b| a.partial_cmp(b).unwrap());
     let median = diffs.get(diffs.len() / 2).copied().unwrap_or(0.0);
-    println!(
+    report(&format!(
         "| {label} | {} | {nan} | {worst:.2e} | {median:.2e} | {worst_f64:.2e} | {worst_exact:.2e} | {} |",
         c.expected.len(),
         failures.len()
-    );
+    ));
     assert!(failures.is_empty(), "{label}: {} disagreements, first:\n{}", failures.len(), failures.iter().take(10).cloned().collect::<Vec<_>>().join("\n"));
+}
+
+/// Where the error table goes besides stdout (seen with `--nocapture`): `target/agreement.md`.
+fn report_path() -> std::path::PathBuf {
+    repo_root().join("target/agreement.md")
+}
+
+fn report(line: &str) {
+    use std::io::Write;
+    println!("{line}");
+    let file = std::fs::OpenOptions::new().create(true).append(true).open(report_path());
+    if let Ok(mut f) = file {
+        let _ = writeln!(f, "{line}");
+    }
 }
 
 fn glslang(args: &[&str], input: &std::path::Path, output: &std::path::Path) -> Vec<u32> {
@@ -191,12 +205,13 @@ fn glslang(args: &[&str], input: &std::path::Path, output: &std::path::Path) -> 
 #[test]
 fn every_artifact_agrees_with_the_cpu_kernel() {
     let Some(gpu) = gpu() else { return };
-    println!("adapter: {}; SPIR-V pass-through: {}", gpu.describe(), gpu.spirv_passthrough());
+    let _ = std::fs::remove_file(report_path());
+    report(&format!("adapter: {}; SPIR-V pass-through: {}\n", gpu.describe(), gpu.spirv_passthrough()));
     let dir = default_out_dir();
     let tmp = std::env::temp_dir().join(format!("airlight-agree-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
-    println!("| artifact | records | NaN/Inf | max diff to f32 CPU (of scale) | median | max diff to f64 CPU | max err f32_exact vs mpmath | failures |");
-    println!("|---|---|---|---|---|---|---|---|");
+    report("| artifact | records | NaN/Inf | max diff to f32 CPU (of scale) | median | max diff to f64 CPU | max err f32_exact vs mpmath | failures |");
+    report("|---|---|---|---|---|---|---|---|");
     for terms in [4usize, 6] {
         let c = case(terms);
         let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
