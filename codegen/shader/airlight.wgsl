@@ -325,9 +325,19 @@ fn airlight_en_scaled(x: f32, count: u32, out: ptr<function, array<f32, AIRLIGHT
 // ---------------------------------------------------------------- phase functions, lights
 // (kernel/src/phase.rs, kernel/src/light.rs)
 
+/// 1 + g² − 2gμ as two non-negative terms (phase.rs::hg_kernel): no cancellation at a peak.
+fn airlight_hg_base(g: f32, mu: f32) -> f32 {
+    if (g >= 0.0) {
+        let a = 1.0 - g;
+        return (1.0 - mu) * (g + g) + a * a;
+    }
+    let b = 1.0 + g;
+    return (mu + 1.0) * -(g + g) + b * b;
+}
+
 fn airlight_hg(g: f32, mu: f32) -> f32 {
-    let base = 1.0 + g * g - 2.0 * g * mu;
-    return (1.0 - g * g) / (4.0 * AIRLIGHT_PI * base * sqrt(base));
+    let base = airlight_hg_base(g, mu);
+    return (1.0 - g) * (1.0 + g) / (4.0 * AIRLIGHT_PI * base * sqrt(base));
 }
 
 /// P(μ), normalised over the sphere, μ = 1 forward.
@@ -337,11 +347,11 @@ fn airlight_phase(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32) -> f32 {
         case 2u: { return airlight_hg(p0, mu); }
         case 3u: {
             let d = 1.0 - p0 * mu;
-            return (1.0 - p0 * p0) / (4.0 * AIRLIGHT_PI * d * d);
+            return (1.0 - p0) * (1.0 + p0) / (4.0 * AIRLIGHT_PI * d * d);
         }
         case 4u: {
-            let base = 1.0 + p0 * p0 - 2.0 * p0 * mu;
-            return 3.0 * (1.0 - p0 * p0) * (1.0 + mu * mu) / (8.0 * AIRLIGHT_PI * (2.0 + p0 * p0) * base * sqrt(base));
+            let base = airlight_hg_base(p0, mu);
+            return 3.0 * (1.0 - p0) * (1.0 + p0) * (1.0 + mu * mu) / (8.0 * AIRLIGHT_PI * (2.0 + p0 * p0) * base * sqrt(base));
         }
         case 5u: { return p2 * airlight_hg(p0, mu) + (1.0 - p2) * airlight_hg(p1, mu); }
         default: { return 1.0 / (4.0 * AIRLIGHT_PI); }

@@ -31,8 +31,22 @@ fn inv_4pi<T: Real>() -> T {
 /// `(1 + g² − 2gμ)^{−3/2}`, the Henyey–Greenstein kernel without its constant.
 #[inline]
 fn hg_kernel<T: Real, S: Scalar<T>>(g: T, mu: S) -> S {
-    let base = mu.scale(-(g + g)).shift(T::one() + g * g);
+    // 1 + g² − 2gμ as two non-negative terms, so that it never cancels at the lobe's peak
+    // (μ = ±1 with |g| → 1, where 1 + g² ≈ 2gμ rounded to 0 and gave +∞; fuzz finding):
+    // g ≥ 0: (1 − g)² + 2g(1 − μ); g < 0: (1 + g)² − 2g(1 + μ).
+    let base = if g >= T::zero() {
+        let a = T::one() - g;
+        mu.scale(-T::one()).shift(T::one()).scale(g + g).shift(a * a)
+    } else {
+        let b = T::one() + g;
+        mu.shift(T::one()).scale(-(g + g)).shift(b * b)
+    };
     (base * base.sqrt()).recip()
+}
+
+/// `1 − g²` as `(1 − g)(1 + g)`: exact factors, no cancellation for `|g| → 1`.
+fn one_minus_sq<T: Real>(g: T) -> T {
+    (T::one() - g) * (T::one() + g)
 }
 
 /// Isotropic scattering, `P = 1/(4π)`.
@@ -68,7 +82,7 @@ pub struct HenyeyGreenstein<T> {
 impl<T: Real> PhaseFunction<T> for HenyeyGreenstein<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
         let g = self.g;
-        hg_kernel(g, mu).scale((T::one() - g * g) * inv_4pi::<T>())
+        hg_kernel(g, mu).scale(one_minus_sq(g) * inv_4pi::<T>())
     }
     fn is_isotropic(&self) -> bool {
         self.g == T::zero()
@@ -90,7 +104,7 @@ impl<T: Real> PhaseFunction<T> for Schlick<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
         let k = self.k;
         let d = mu.scale(-k).shift(T::one());
-        (d * d).recip().scale((T::one() - k * k) * inv_4pi::<T>())
+        (d * d).recip().scale(one_minus_sq(k) * inv_4pi::<T>())
     }
     fn is_isotropic(&self) -> bool {
         self.k == T::zero()
@@ -111,7 +125,7 @@ pub struct CornetteShanks<T> {
 impl<T: Real> PhaseFunction<T> for CornetteShanks<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
         let g = self.g;
-        let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * (T::one() - g * g) / (T::lit(2.0) + g * g);
+        let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * one_minus_sq(g) / (T::lit(2.0) + g * g);
         (hg_kernel(g, mu) * (mu * mu).shift(T::one())).scale(k)
     }
     fn validate(&self) -> Result<(), InputError> {

@@ -654,34 +654,44 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16])
     return;
 }
 
-float airlight_hg(float g, float mu)
+float airlight_hg_base(float g, float mu)
 {
-    float base_1 = ((1.0 + (g * g)) - ((2.0 * g) * mu));
-    return ((1.0 - (g * g)) / ((12.566371 * base_1) * sqrt(base_1)));
+    if ((g >= 0.0)) {
+        float a_8 = (1.0 - g);
+        return (((1.0 - mu) * (g + g)) + (a_8 * a_8));
+    }
+    float b_5 = (1.0 + g);
+    return (((mu + 1.0) * -((g + g))) + (b_5 * b_5));
 }
 
-float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu_1)
+float airlight_hg(float g_1, float mu_1)
+{
+    const float _e2 = airlight_hg_base(g_1, mu_1);
+    return (((1.0 - g_1) * (1.0 + g_1)) / ((12.566371 * _e2) * sqrt(_e2)));
+}
+
+float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu_2)
 {
     switch(kind) {
         case 1u: {
-            return (0.059683103 * (1.0 + (mu_1 * mu_1)));
+            return (0.059683103 * (1.0 + (mu_2 * mu_2)));
         }
         case 2u: {
-            const float _e10 = airlight_hg(p0_, mu_1);
+            const float _e10 = airlight_hg(p0_, mu_2);
             return _e10;
         }
         case 3u: {
-            float d = (1.0 - (p0_ * mu_1));
-            return ((1.0 - (p0_ * p0_)) / ((12.566371 * d) * d));
+            float d = (1.0 - (p0_ * mu_2));
+            return (((1.0 - p0_) * (1.0 + p0_)) / ((12.566371 * d) * d));
         }
         case 4u: {
-            float base_2 = ((1.0 + (p0_ * p0_)) - ((2.0 * p0_) * mu_1));
-            return (((3.0 * (1.0 - (p0_ * p0_))) * (1.0 + (mu_1 * mu_1))) / (((25.132742 * (2.0 + (p0_ * p0_))) * base_2) * sqrt(base_2)));
+            const float _e23 = airlight_hg_base(p0_, mu_2);
+            return ((((3.0 * (1.0 - p0_)) * (1.0 + p0_)) * (1.0 + (mu_2 * mu_2))) / (((25.132742 * (2.0 + (p0_ * p0_))) * _e23) * sqrt(_e23)));
         }
         case 5u: {
-            const float _e46 = airlight_hg(p0_, mu_1);
-            const float _e50 = airlight_hg(p1_, mu_1);
-            return ((p2_ * _e46) + ((1.0 - p2_) * _e50));
+            const float _e44 = airlight_hg(p0_, mu_2);
+            const float _e48 = airlight_hg(p1_, mu_2);
+            return ((p2_ * _e44) + ((1.0 - p2_) * _e48));
         }
         default: {
             return 0.07957747;
@@ -746,20 +756,20 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1)
     }
 }
 
-float airlight_integrand(AirlightScene s_1, AirlightCanonical g_1, float sigma, float y_1)
+float airlight_integrand(AirlightScene s_1, AirlightCanonical g_2, float sigma, float y_1)
 {
     float y2_ = (y_1 * y_1);
     float inv = (1.0 / (1.0 + y2_));
     float om = (1.0 - y2_);
-    float mu_2 = ((-(sigma) * om) * inv);
-    float c_3 = ((((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y_1)) * inv);
+    float mu_3 = ((-(sigma) * om) * inv);
+    float c_3 = ((((sigma * g_2.d_el) * om) + ((2.0 * g_2.d_c) * y_1)) * inv);
     const float _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
-    const float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
+    const float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_3);
     return (_e26 * _e31);
 }
 
 typedef float ret_airlight_chebyshev[4];
-ret_airlight_chebyshev airlight_chebyshev(AirlightScene s_2, AirlightCanonical g_2, float sigma_1, float y_c, float r)
+ret_airlight_chebyshev airlight_chebyshev(AirlightScene s_2, AirlightCanonical g_3, float sigma_1, float y_c, float r)
 {
     float prev = (float)0;
     float cur = (float)0;
@@ -825,7 +835,7 @@ ret_airlight_chebyshev airlight_chebyshev(AirlightScene s_2, AirlightCanonical g
             uint _e33 = j_1;
             uint _e35 = j_1;
             float _e37 = xi[min(uint(_e35), 3u)];
-            const float _e40 = airlight_integrand(s_2, g_2, sigma_1, (y_c + (r * _e37)));
+            const float _e40 = airlight_integrand(s_2, g_3, sigma_1, (y_c + (r * _e37)));
             values[min(uint(_e33), 3u)] = _e40;
         }
     }
@@ -1747,7 +1757,7 @@ ret_airlight_moments airlight_moments(AirlightHalf half_4, uint count_2)
             const float _e109[4] = airlight_binomial_shift(_e105, (-(delta) * 0.5));
             r_1 = _e109;
         }
-        float2 b_5 = float2(yc_1, -1.0);
+        float2 b_6 = float2(yc_1, -1.0);
         q = _e51;
         uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
         bool loop_init_30 = true;
@@ -1768,7 +1778,7 @@ ret_airlight_moments airlight_moments(AirlightHalf half_4, uint count_2)
                 uint _e118 = k_10;
                 float _e122 = r_1[min(uint((_e118 - 1u)), 3u)];
                 float2 _e125 = q;
-                const float2 _e126 = airlight_cmul(b_5, _e125);
+                const float2 _e126 = airlight_cmul(b_6, _e125);
                 q = (float2(_e122, 0.0) - _e126);
                 uint _e128 = k_10;
                 float _e131 = q.y;
@@ -1786,13 +1796,13 @@ float airlight_bounded(float a_5)
     return (1.0 / (a_5 + _e1));
 }
 
-float airlight_piece(AirlightScene s_3, AirlightCanonical g_3, float sigma_2, AirlightHalf half_5)
+float airlight_piece(AirlightScene s_3, AirlightCanonical g_4, float sigma_2, AirlightHalf half_5)
 {
     float j_6 = 0.0;
     uint k_11 = 0u;
 
     const float _e5[4] = airlight_moments(half_5, AIRLIGHT_TERMS);
-    const float _e14[4] = airlight_chebyshev(s_3, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
+    const float _e14[4] = airlight_chebyshev(s_3, g_4, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
     uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     bool loop_init_31 = true;
     while(true) {
@@ -1831,7 +1841,7 @@ AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_4, float sigma_3, AirlightHalf piece)
+float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_5, float sigma_3, AirlightHalf piece)
 {
     float parts = 1.0;
     bool local_14 = (bool)0;
@@ -1857,7 +1867,7 @@ float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_4, float sigma_
     }
     float _e25 = parts;
     if ((_e25 <= 1.0)) {
-        const float _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        const float _e28 = airlight_piece(s_4, g_5, sigma_3, piece);
         return _e28;
     }
     float _e29 = parts;
@@ -1912,7 +1922,7 @@ float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_4, float sigma_
                 AirlightHalf part = ConstructAirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
                 float _e84 = total;
                 float _e87 = offset;
-                const float _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                const float _e90 = airlight_piece(s_4, g_5, sigma_3, part);
                 total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
             }
         }
@@ -1927,30 +1937,30 @@ float2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_12)
     float r1_ = -1.0;
     float r2_1 = -1.0;
 
-    float a_8 = (k_12 + (sigma_4 * d_el));
-    float b_6 = -((d_c + d_c));
+    float a_9 = (k_12 + (sigma_4 * d_el));
+    float b_7 = -((d_c + d_c));
     float c_6 = (k_12 - (sigma_4 * d_el));
-    float disc_1 = ((b_6 * b_6) - ((4.0 * a_8) * c_6));
+    float disc_1 = ((b_7 * b_7) - ((4.0 * a_9) * c_6));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_6 < 0.0)) {
+    if ((b_7 < 0.0)) {
         sb = -1.0;
     }
     float _e26 = sb;
-    float q_1 = (-0.5 * (b_6 + (_e26 * sqrt(disc_1))));
+    float q_1 = (-0.5 * (b_7 + (_e26 * sqrt(disc_1))));
     if ((q_1 != 0.0)) {
         r1_ = (c_6 / q_1);
     }
-    if ((a_8 != 0.0)) {
-        r2_1 = (q_1 / a_8);
+    if ((a_9 != 0.0)) {
+        r2_1 = (q_1 / a_9);
     }
     float _e42 = r1_;
     float _e43 = r2_1;
     return float2(_e42, _e43);
 }
 
-float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, AirlightHalf half_6, bool isotropic)
+float airlight_half(AirlightScene s_5, AirlightCanonical g_6, float sigma_5, AirlightHalf half_6, bool isotropic)
 {
     float cuts[4] = Constructarray4_float_(2.0, 2.0, 2.0, 2.0);
     float k_in = (float)0;
@@ -1971,7 +1981,7 @@ float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, Air
 
     if (isotropic) {
         const float _e6[4] = airlight_moments(half_6, 1u);
-        const float _e12 = airlight_integrand(s_5, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5)));
+        const float _e12 = airlight_integrand(s_5, g_6, sigma_5, (half_6.y_lo + (half_6.dy * 0.5)));
         return (_e12 * _e6[0]);
     }
     if ((s_5.light_kind == AIRLIGHT_LIGHT_SPOT)) {
@@ -1987,9 +1997,9 @@ float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, Air
             k_out = _e37;
         }
         float _e40 = k_in;
-        const float2 _e41 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e40);
+        const float2 _e41 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e40);
         float _e44 = k_out;
-        const float2 _e45 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e44);
+        const float2 _e45 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e44);
         cuts = Constructarray4_float_(_e41.x, _e41.y, _e45.x, _e45.y);
         uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
         bool loop_init_33 = true;
@@ -2078,7 +2088,7 @@ float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, Air
     }
     float _e119 = cuts[0];
     if ((_e119 >= 2.0)) {
-        const float _e122 = airlight_piece(s_5, g_5, sigma_5, half_6);
+        const float _e122 = airlight_piece(s_5, g_6, sigma_5, half_6);
         return _e122;
     }
     lo = half_6.y_lo;
@@ -2144,7 +2154,7 @@ float airlight_half(AirlightScene s_5, AirlightCanonical g_5, float sigma_5, Air
                 AirlightHalf piece_1 = ConstructAirlightHalf(half_6.second, half_6.big_h, _e181, _e182, dy_2, _e183, _e184);
                 float _e186 = total_1;
                 float _e189 = offset_1;
-                const float _e192 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
+                const float _e192 = airlight_subdivided(s_5, g_6, sigma_5, piece_1);
                 total_1 = (_e186 + (exp((-(half_6.big_h) * _e189)) * _e192));
                 float _e195 = hi_1;
                 lo = _e195;
@@ -2180,36 +2190,36 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_9, fl
     return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
 }
 
-float airlight_on_line(AirlightScene s_6, AirlightCanonical g_6)
+float airlight_on_line(AirlightScene s_6, AirlightCanonical g_7)
 {
     bool local_18 = (bool)0;
     float span = (float)0;
     float e2_[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail_1 = 0.0;
 
-    if (!(g_6.t_hi_infinite)) {
-        local_18 = (g_6.x_h > g_6.t_hi);
+    if (!(g_7.t_hi_infinite)) {
+        local_18 = (g_7.x_h > g_7.t_hi);
     } else {
         local_18 = false;
     }
     bool _e10 = local_18;
     if (_e10) {
-        const float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        const float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_7.d_el));
         const float _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
         float f = (_e16 * _e22);
-        float r0_ = (g_6.x_h - g_6.t_lo);
-        float r1_1 = (g_6.x_h - g_6.t_hi);
-        const float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * r0_), (f * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1)));
+        float r0_ = (g_7.x_h - g_7.t_lo);
+        float r1_1 = (g_7.x_h - g_7.t_hi);
+        const float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * r0_), (f * (((g_7.t_hi - g_7.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    const float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    const float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_7.d_el);
     const float _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
     float f_1 = (_e46 * _e52);
-    float s0_ = (g_6.t_lo - g_6.x_h);
-    float s1_ = (g_6.t_hi - g_6.x_h);
+    float s0_ = (g_7.t_lo - g_7.x_h);
+    float s1_ = (g_7.t_hi - g_7.x_h);
     if ((s_6.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_6.t_hi_infinite)) {
+        if (!(g_7.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
@@ -2222,7 +2232,7 @@ float airlight_on_line(AirlightScene s_6, AirlightCanonical g_6)
     airlight_en_scaled((two_st * s0_), 2u, e2_);
     float _e91 = e2_[1];
     const float _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if (!(g_6.t_hi_infinite)) {
+    if (!(g_7.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
         float _e111 = e2_[1];
         const float _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
@@ -2255,7 +2265,7 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
     return ret;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonical g_7)
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonical g_8)
 {
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
@@ -2280,9 +2290,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
 
-    float t0_ = g_7.t_lo;
-    float t1_ = g_7.t_hi;
-    if (!(g_7.t_hi_infinite)) {
+    float t0_ = g_8.t_lo;
+    float t1_ = g_8.t_hi;
+    if (!(g_8.t_hi_infinite)) {
         local_19 = (t1_ > t0_);
     } else {
         local_19 = true;
@@ -2298,10 +2308,10 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
     }
-    float h_2 = g_7.h;
-    float x_h = g_7.x_h;
+    float h_2 = g_8.h;
+    float x_h = g_8.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             local_22 = (x_h <= t1_);
         } else {
             local_22 = true;
@@ -2327,7 +2337,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     }
     bool _e55 = local_23;
     if (_e55) {
-        const float _e56 = airlight_on_line(s_7, g_7);
+        const float _e56 = airlight_on_line(s_7, g_8);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
@@ -2375,7 +2385,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     if ((t0_ < x_h)) {
         float a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             local_30 = (t1_ < x_h);
         } else {
             local_30 = false;
@@ -2394,12 +2404,12 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         float dy_3 = (((((_e136 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
         const float _e149 = airlight_optical(big_h_2, dy_3, false);
         AirlightHalf half_7 = ConstructAirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
-        const float _e153 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
+        const float _e153 = airlight_half(s_7, g_8, -1.0, half_7, isotropic_1);
         float _e154 = total_2;
         const float _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
         total_2 = (_e154 + _e158);
     }
-    if (!(g_7.t_hi_infinite)) {
+    if (!(g_8.t_hi_infinite)) {
         local_31 = (t1_ > x_h);
     } else {
         local_31 = true;
@@ -2412,7 +2422,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         const float _e171 = airlight_bounded(a_s_1);
         dy = _e171;
         float a_e_1 = ((t1_ - x_h) / h_2);
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             const bool _e185 = airlight_is_finite(a_e_1);
             local_32 = _e185;
         } else {
@@ -2447,7 +2457,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         float _e216 = dv_4;
         bool _e217 = infinite_1;
         AirlightHalf half_8 = ConstructAirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
-        const float _e220 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
+        const float _e220 = airlight_half(s_7, g_8, 1.0, half_8, isotropic_1);
         float _e221 = total_2;
         const float _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
         total_2 = (_e221 + _e229);

@@ -668,12 +668,24 @@ void airlight_en_scaled(
     return;
 }
 
-float airlight_hg(
+float airlight_hg_base(
     float g,
     float mu
 ) {
-    float base_1 = (1.0 + (g * g)) - ((2.0 * g) * mu);
-    return (1.0 - (g * g)) / ((12.566371 * base_1) * metal::sqrt(base_1));
+    if (g >= 0.0) {
+        float a_8 = 1.0 - g;
+        return ((1.0 - mu) * (g + g)) + (a_8 * a_8);
+    }
+    float b_5 = 1.0 + g;
+    return ((mu + 1.0) * -((g + g))) + (b_5 * b_5);
+}
+
+float airlight_hg(
+    float g_1,
+    float mu_1
+) {
+    float _e2 = airlight_hg_base(g_1, mu_1);
+    return ((1.0 - g_1) * (1.0 + g_1)) / ((12.566371 * _e2) * metal::sqrt(_e2));
 }
 
 float airlight_phase(
@@ -681,28 +693,28 @@ float airlight_phase(
     float p0_,
     float p1_,
     float p2_,
-    float mu_1
+    float mu_2
 ) {
     switch(kind) {
         case 1u: {
-            return 0.059683103 * (1.0 + (mu_1 * mu_1));
+            return 0.059683103 * (1.0 + (mu_2 * mu_2));
         }
         case 2u: {
-            float _e10 = airlight_hg(p0_, mu_1);
+            float _e10 = airlight_hg(p0_, mu_2);
             return _e10;
         }
         case 3u: {
-            float d = 1.0 - (p0_ * mu_1);
-            return (1.0 - (p0_ * p0_)) / ((12.566371 * d) * d);
+            float d = 1.0 - (p0_ * mu_2);
+            return ((1.0 - p0_) * (1.0 + p0_)) / ((12.566371 * d) * d);
         }
         case 4u: {
-            float base_2 = (1.0 + (p0_ * p0_)) - ((2.0 * p0_) * mu_1);
-            return ((3.0 * (1.0 - (p0_ * p0_))) * (1.0 + (mu_1 * mu_1))) / (((25.132742 * (2.0 + (p0_ * p0_))) * base_2) * metal::sqrt(base_2));
+            float _e23 = airlight_hg_base(p0_, mu_2);
+            return (((3.0 * (1.0 - p0_)) * (1.0 + p0_)) * (1.0 + (mu_2 * mu_2))) / (((25.132742 * (2.0 + (p0_ * p0_))) * _e23) * metal::sqrt(_e23));
         }
         case 5u: {
-            float _e46 = airlight_hg(p0_, mu_1);
-            float _e50 = airlight_hg(p1_, mu_1);
-            return (p2_ * _e46) + ((1.0 - p2_) * _e50);
+            float _e44 = airlight_hg(p0_, mu_2);
+            float _e48 = airlight_hg(p1_, mu_2);
+            return (p2_ * _e44) + ((1.0 - p2_) * _e48);
         }
         default: {
             return 0.07957747;
@@ -772,23 +784,23 @@ float airlight_light(
 
 float airlight_integrand(
     AirlightScene s_1,
-    AirlightCanonical g_1,
+    AirlightCanonical g_2,
     float sigma,
     float y_1
 ) {
     float y2_ = y_1 * y_1;
     float inv = 1.0 / (1.0 + y2_);
     float om = 1.0 - y2_;
-    float mu_2 = (-(sigma) * om) * inv;
-    float c_3 = (((sigma * g_1.d_el) * om) + ((2.0 * g_1.d_c) * y_1)) * inv;
+    float mu_3 = (-(sigma) * om) * inv;
+    float c_3 = (((sigma * g_2.d_el) * om) + ((2.0 * g_2.d_c) * y_1)) * inv;
     float _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
-    float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
+    float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_3);
     return _e26 * _e31;
 }
 
 type_2 airlight_chebyshev(
     AirlightScene s_2,
-    AirlightCanonical g_2,
+    AirlightCanonical g_3,
     float sigma_1,
     float y_c,
     float r
@@ -856,7 +868,7 @@ type_2 airlight_chebyshev(
             uint _e33 = j_1;
             uint _e35 = j_1;
             float _e37 = xi.inner[metal::min(unsigned(_e35), 5u)];
-            float _e40 = airlight_integrand(s_2, g_2, sigma_1, y_c + (r * _e37));
+            float _e40 = airlight_integrand(s_2, g_3, sigma_1, y_c + (r * _e37));
             values.inner[metal::min(unsigned(_e33), 5u)] = _e40;
         }
     }
@@ -1776,7 +1788,7 @@ type_2 airlight_moments(
             type_2 _e109 = airlight_binomial_shift(_e105, -(delta) * 0.5);
             r_1 = _e109;
         }
-        metal::float2 b_5 = metal::float2(yc_1, -1.0);
+        metal::float2 b_6 = metal::float2(yc_1, -1.0);
         q = _e51;
         uint2 loop_bound_30 = uint2(4294967295u);
         bool loop_init_30 = true;
@@ -1797,7 +1809,7 @@ type_2 airlight_moments(
                 uint _e118 = k_10;
                 float _e122 = r_1.inner[metal::min(unsigned(_e118 - 1u), 5u)];
                 metal::float2 _e125 = q;
-                metal::float2 _e126 = airlight_cmul(b_5, _e125);
+                metal::float2 _e126 = airlight_cmul(b_6, _e125);
                 q = metal::float2(_e122, 0.0) - _e126;
                 uint _e128 = k_10;
                 float _e131 = q.y;
@@ -1818,14 +1830,14 @@ float airlight_bounded(
 
 float airlight_piece(
     AirlightScene s_3,
-    AirlightCanonical g_3,
+    AirlightCanonical g_4,
     float sigma_2,
     AirlightHalf half_5
 ) {
     float j_6 = 0.0;
     uint k_11 = 0u;
     type_2 _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
-    type_2 _e14 = airlight_chebyshev(s_3, g_3, sigma_2, half_5.y_lo + (half_5.dy * 0.5), half_5.dy * 0.5);
+    type_2 _e14 = airlight_chebyshev(s_3, g_4, sigma_2, half_5.y_lo + (half_5.dy * 0.5), half_5.dy * 0.5);
     uint2 loop_bound_31 = uint2(4294967295u);
     bool loop_init_31 = true;
     while(true) {
@@ -1854,7 +1866,7 @@ float airlight_piece(
 
 float airlight_subdivided(
     AirlightScene s_4,
-    AirlightCanonical g_4,
+    AirlightCanonical g_5,
     float sigma_3,
     AirlightHalf piece
 ) {
@@ -1881,7 +1893,7 @@ float airlight_subdivided(
     }
     float _e25 = parts;
     if (_e25 <= 1.0) {
-        float _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        float _e28 = airlight_piece(s_4, g_5, sigma_3, piece);
         return _e28;
     }
     float _e29 = parts;
@@ -1936,7 +1948,7 @@ float airlight_subdivided(
                 AirlightHalf part = AirlightHalf {piece.second, {}, piece.big_h, lo_1, _e80, dy_1, _e81, _e82};
                 float _e84 = total;
                 float _e87 = offset;
-                float _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                float _e90 = airlight_piece(s_4, g_5, sigma_3, part);
                 total = _e84 + (metal::exp(-(piece.big_h) * _e87) * _e90);
             }
         }
@@ -1954,23 +1966,23 @@ metal::float2 airlight_crossings(
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_1 = -1.0;
-    float a_8 = k_12 + (sigma_4 * d_el);
-    float b_6 = -((d_c + d_c));
+    float a_9 = k_12 + (sigma_4 * d_el);
+    float b_7 = -((d_c + d_c));
     float c_6 = k_12 - (sigma_4 * d_el);
-    float disc_1 = (b_6 * b_6) - ((4.0 * a_8) * c_6);
+    float disc_1 = (b_7 * b_7) - ((4.0 * a_9) * c_6);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_6 < 0.0) {
+    if (b_7 < 0.0) {
         sb = -1.0;
     }
     float _e26 = sb;
-    float q_1 = -0.5 * (b_6 + (_e26 * metal::sqrt(disc_1)));
+    float q_1 = -0.5 * (b_7 + (_e26 * metal::sqrt(disc_1)));
     if (q_1 != 0.0) {
         r1_ = c_6 / q_1;
     }
-    if (a_8 != 0.0) {
-        r2_1 = q_1 / a_8;
+    if (a_9 != 0.0) {
+        r2_1 = q_1 / a_9;
     }
     float _e42 = r1_;
     float _e43 = r2_1;
@@ -1979,7 +1991,7 @@ metal::float2 airlight_crossings(
 
 float airlight_half(
     AirlightScene s_5,
-    AirlightCanonical g_5,
+    AirlightCanonical g_6,
     float sigma_5,
     AirlightHalf half_6,
     bool isotropic
@@ -2002,7 +2014,7 @@ float airlight_half(
     bool local_17 = {};
     if (isotropic) {
         type_2 _e6 = airlight_moments(half_6, 1u);
-        float _e12 = airlight_integrand(s_5, g_5, sigma_5, half_6.y_lo + (half_6.dy * 0.5));
+        float _e12 = airlight_integrand(s_5, g_6, sigma_5, half_6.y_lo + (half_6.dy * 0.5));
         return _e12 * _e6.inner[0];
     }
     if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -2018,9 +2030,9 @@ float airlight_half(
             k_out = _e37;
         }
         float _e40 = k_in;
-        metal::float2 _e41 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e40);
+        metal::float2 _e41 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e40);
         float _e44 = k_out;
-        metal::float2 _e45 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e44);
+        metal::float2 _e45 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e44);
         cuts = type_9 {{_e41.x, _e41.y, _e45.x, _e45.y}};
         uint2 loop_bound_33 = uint2(4294967295u);
         bool loop_init_33 = true;
@@ -2109,7 +2121,7 @@ float airlight_half(
     }
     float _e119 = cuts.inner[0];
     if (_e119 >= 2.0) {
-        float _e122 = airlight_piece(s_5, g_5, sigma_5, half_6);
+        float _e122 = airlight_piece(s_5, g_6, sigma_5, half_6);
         return _e122;
     }
     lo = half_6.y_lo;
@@ -2175,7 +2187,7 @@ float airlight_half(
                 AirlightHalf piece_1 = AirlightHalf {half_6.second, {}, half_6.big_h, _e181, _e182, dy_2, _e183, _e184};
                 float _e186 = total_1;
                 float _e189 = offset_1;
-                float _e192 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
+                float _e192 = airlight_subdivided(s_5, g_6, sigma_5, piece_1);
                 total_1 = _e186 + (metal::exp(-(half_6.big_h) * _e189) * _e192);
                 float _e195 = hi_1;
                 lo = _e195;
@@ -2218,35 +2230,35 @@ float airlight_weighted(
 
 float airlight_on_line(
     AirlightScene s_6,
-    AirlightCanonical g_6
+    AirlightCanonical g_7
 ) {
     bool local_18 = {};
     float span = {};
     type_3 e2_ = {};
     float tail_1 = 0.0;
-    if (!(g_6.t_hi_infinite)) {
-        local_18 = g_6.x_h > g_6.t_hi;
+    if (!(g_7.t_hi_infinite)) {
+        local_18 = g_7.x_h > g_7.t_hi;
     } else {
         local_18 = false;
     }
     bool _e10 = local_18;
     if (_e10) {
-        float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_7.d_el));
         float _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
         float f = _e16 * _e22;
-        float r0_ = g_6.x_h - g_6.t_lo;
-        float r1_1 = g_6.x_h - g_6.t_hi;
-        float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, s_6.sigma_t * r0_, f * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1));
+        float r0_ = g_7.x_h - g_7.t_lo;
+        float r1_1 = g_7.x_h - g_7.t_hi;
+        float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, s_6.sigma_t * r0_, f * (((g_7.t_hi - g_7.t_lo) / r0_) / r1_1));
         return _e41;
     }
-    float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_7.d_el);
     float _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
     float f_1 = _e46 * _e52;
-    float s0_ = g_6.t_lo - g_6.x_h;
-    float s1_ = g_6.t_hi - g_6.x_h;
+    float s0_ = g_7.t_lo - g_7.x_h;
+    float s1_ = g_7.t_hi - g_7.x_h;
     if (s_6.sigma_t == 0.0) {
         span = 1.0 / s0_;
-        if (!(g_6.t_hi_infinite)) {
+        if (!(g_7.t_hi_infinite)) {
             span = ((s1_ - s0_) / s1_) / s0_;
         }
         float _e75 = span;
@@ -2259,7 +2271,7 @@ float airlight_on_line(
     airlight_en_scaled(two_st * s0_, 2u, e2_);
     float _e91 = e2_.inner[1];
     float _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, s_6.sigma_t * s0_, (f_1 * _e91) / s0_);
-    if (!(g_6.t_hi_infinite)) {
+    if (!(g_7.t_hi_infinite)) {
         airlight_en_scaled(two_st * s1_, 2u, e2_);
         float _e111 = e2_.inner[1];
         float _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_), (f_1 * _e111) / s1_);
@@ -2289,7 +2301,7 @@ float airlight_optical(
 
 AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_7,
-    AirlightCanonical g_7
+    AirlightCanonical g_8
 ) {
     bool local_19 = {};
     bool local_20 = {};
@@ -2313,9 +2325,9 @@ AirlightResult airlight_in_scatter_canonical(
     bool infinite_1 = true;
     bool local_32 = {};
     bool local_33 = {};
-    float t0_ = g_7.t_lo;
-    float t1_ = g_7.t_hi;
-    if (!(g_7.t_hi_infinite)) {
+    float t0_ = g_8.t_lo;
+    float t1_ = g_8.t_hi;
+    if (!(g_8.t_hi_infinite)) {
         local_19 = t1_ > t0_;
     } else {
         local_19 = true;
@@ -2330,10 +2342,10 @@ AirlightResult airlight_in_scatter_canonical(
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
-    float h_2 = g_7.h;
-    float x_h = g_7.x_h;
+    float h_2 = g_8.h;
+    float x_h = g_8.x_h;
     if (t0_ <= x_h) {
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             local_22 = x_h <= t1_;
         } else {
             local_22 = true;
@@ -2359,7 +2371,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e55 = local_23;
     if (_e55) {
-        float _e56 = airlight_on_line(s_7, g_7);
+        float _e56 = airlight_on_line(s_7, g_8);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (h_2 == 0.0) {
@@ -2405,7 +2417,7 @@ AirlightResult airlight_in_scatter_canonical(
     if (t0_ < x_h) {
         float a_s = (x_h - t0_) / h_2;
         t_end = x_h;
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             local_30 = t1_ < x_h;
         } else {
             local_30 = false;
@@ -2424,12 +2436,12 @@ AirlightResult airlight_in_scatter_canonical(
         float dy_3 = ((((_e136 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135;
         float _e149 = airlight_optical(big_h_2, dy_3, false);
         AirlightHalf half_7 = AirlightHalf {false, {}, _e149, _e134, _e135, dy_3, dy_3, false};
-        float _e153 = airlight_half(s_7, g_7, -1.0, half_7, isotropic_1);
+        float _e153 = airlight_half(s_7, g_8, -1.0, half_7, isotropic_1);
         float _e154 = total_2;
         float _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, big_h_2 * _e132, _e153);
         total_2 = _e154 + _e158;
     }
-    if (!(g_7.t_hi_infinite)) {
+    if (!(g_8.t_hi_infinite)) {
         local_31 = t1_ > x_h;
     } else {
         local_31 = true;
@@ -2442,7 +2454,7 @@ AirlightResult airlight_in_scatter_canonical(
         float _e171 = airlight_bounded(a_s_1);
         dy = _e171;
         float a_e_1 = (t1_ - x_h) / h_2;
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_8.t_hi_infinite)) {
             bool _e185 = airlight_is_finite(a_e_1);
             local_32 = _e185;
         } else {
@@ -2477,7 +2489,7 @@ AirlightResult airlight_in_scatter_canonical(
         float _e216 = dv_4;
         bool _e217 = infinite_1;
         AirlightHalf half_8 = AirlightHalf {true, {}, _e213, _e214, _e171, _e215, _e216, _e217};
-        float _e220 = airlight_half(s_7, g_7, 1.0, half_8, isotropic_1);
+        float _e220 = airlight_half(s_7, g_8, 1.0, half_8, isotropic_1);
         float _e221 = total_2;
         float _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170), _e220);
         total_2 = _e221 + _e229;

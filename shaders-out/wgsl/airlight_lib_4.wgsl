@@ -564,32 +564,41 @@ fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) 
     return;
 }
 
-fn airlight_hg(g: f32, mu: f32) -> f32 {
-    let base_1 = ((1f + (g * g)) - ((2f * g) * mu));
-    return ((1f - (g * g)) / ((12.566371f * base_1) * sqrt(base_1)));
+fn airlight_hg_base(g: f32, mu: f32) -> f32 {
+    if (g >= 0f) {
+        let a_8 = (1f - g);
+        return (((1f - mu) * (g + g)) + (a_8 * a_8));
+    }
+    let b_5 = (1f + g);
+    return (((mu + 1f) * -((g + g))) + (b_5 * b_5));
 }
 
-fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu_1: f32) -> f32 {
+fn airlight_hg(g_1: f32, mu_1: f32) -> f32 {
+    let _e2 = airlight_hg_base(g_1, mu_1);
+    return (((1f - g_1) * (1f + g_1)) / ((12.566371f * _e2) * sqrt(_e2)));
+}
+
+fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu_2: f32) -> f32 {
     switch kind {
         case 1u: {
-            return (0.059683103f * (1f + (mu_1 * mu_1)));
+            return (0.059683103f * (1f + (mu_2 * mu_2)));
         }
         case 2u: {
-            let _e10 = airlight_hg(p0_, mu_1);
+            let _e10 = airlight_hg(p0_, mu_2);
             return _e10;
         }
         case 3u: {
-            let d = (1f - (p0_ * mu_1));
-            return ((1f - (p0_ * p0_)) / ((12.566371f * d) * d));
+            let d = (1f - (p0_ * mu_2));
+            return (((1f - p0_) * (1f + p0_)) / ((12.566371f * d) * d));
         }
         case 4u: {
-            let base_2 = ((1f + (p0_ * p0_)) - ((2f * p0_) * mu_1));
-            return (((3f * (1f - (p0_ * p0_))) * (1f + (mu_1 * mu_1))) / (((25.132742f * (2f + (p0_ * p0_))) * base_2) * sqrt(base_2)));
+            let _e23 = airlight_hg_base(p0_, mu_2);
+            return ((((3f * (1f - p0_)) * (1f + p0_)) * (1f + (mu_2 * mu_2))) / (((25.132742f * (2f + (p0_ * p0_))) * _e23) * sqrt(_e23)));
         }
         case 5u: {
-            let _e46 = airlight_hg(p0_, mu_1);
-            let _e50 = airlight_hg(p1_, mu_1);
-            return ((p2_ * _e46) + ((1f - p2_) * _e50));
+            let _e44 = airlight_hg(p0_, mu_2);
+            let _e48 = airlight_hg(p1_, mu_2);
+            return ((p2_ * _e44) + ((1f - p2_) * _e48));
         }
         default: {
             return 0.07957747f;
@@ -648,18 +657,18 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
     }
 }
 
-fn airlight_integrand(s_1: AirlightScene, g_1: AirlightCanonical, sigma: f32, y_1: f32) -> f32 {
+fn airlight_integrand(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> f32 {
     let y2_ = (y_1 * y_1);
     let inv = (1f / (1f + y2_));
     let om = (1f - y2_);
-    let mu_2 = ((-(sigma) * om) * inv);
-    let c_3 = ((((sigma * g_1.d_el) * om) + ((2f * g_1.d_c) * y_1)) * inv);
+    let mu_3 = ((-(sigma) * om) * inv);
+    let c_3 = ((((sigma * g_2.d_el) * om) + ((2f * g_2.d_c) * y_1)) * inv);
     let _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
-    let _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2);
+    let _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_3);
     return (_e26 * _e31);
 }
 
-fn airlight_chebyshev(s_2: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, y_c: f32, r: f32) -> array<f32, 4> {
+fn airlight_chebyshev(s_2: AirlightScene, g_3: AirlightCanonical, sigma_1: f32, y_c: f32, r: f32) -> array<f32, 4> {
     var prev: f32;
     var cur: f32;
     var xi: array<f32, 4>;
@@ -715,7 +724,7 @@ fn airlight_chebyshev(s_2: AirlightScene, g_2: AirlightCanonical, sigma_1: f32, 
             let _e33 = j_1;
             let _e35 = j_1;
             let _e37 = xi[_e35];
-            let _e40 = airlight_integrand(s_2, g_2, sigma_1, (y_c + (r * _e37)));
+            let _e40 = airlight_integrand(s_2, g_3, sigma_1, (y_c + (r * _e37)));
             values[_e33] = _e40;
         }
         continuing {
@@ -1528,7 +1537,7 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
             let _e109 = airlight_binomial_shift(_e105, (-(delta) * 0.5f));
             r_1 = _e109;
         }
-        let b_5 = vec2<f32>(yc_1, -1f);
+        let b_6 = vec2<f32>(yc_1, -1f);
         q = _e51;
         loop {
             let _e115 = k_10;
@@ -1540,7 +1549,7 @@ fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
                 let _e118 = k_10;
                 let _e122 = r_1[(_e118 - 1u)];
                 let _e125 = q;
-                let _e126 = airlight_cmul(b_5, _e125);
+                let _e126 = airlight_cmul(b_6, _e125);
                 q = (vec2<f32>(_e122, 0f) - _e126);
                 let _e128 = k_10;
                 let _e131 = q.y;
@@ -1561,12 +1570,12 @@ fn airlight_bounded(a_5: f32) -> f32 {
     return (1f / (a_5 + _e1));
 }
 
-fn airlight_piece(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
+fn airlight_piece(s_3: AirlightScene, g_4: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
     var j_6: f32 = 0f;
     var k_11: u32 = 0u;
 
     let _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
-    let _e14 = airlight_chebyshev(s_3, g_3, sigma_2, (half_5.y_lo + (half_5.dy * 0.5f)), (half_5.dy * 0.5f));
+    let _e14 = airlight_chebyshev(s_3, g_4, sigma_2, (half_5.y_lo + (half_5.dy * 0.5f)), (half_5.dy * 0.5f));
     loop {
         let _e19 = k_11;
         if (_e19 < AIRLIGHT_TERMS) {
@@ -1588,7 +1597,7 @@ fn airlight_piece(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, half
     return _e32;
 }
 
-fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
+fn airlight_subdivided(s_4: AirlightScene, g_5: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
     var parts: f32 = 1f;
     var local_14: bool;
     var total: f32 = 0f;
@@ -1613,7 +1622,7 @@ fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
     }
     let _e25 = parts;
     if (_e25 <= 1f) {
-        let _e28 = airlight_piece(s_4, g_4, sigma_3, piece);
+        let _e28 = airlight_piece(s_4, g_5, sigma_3, piece);
         return _e28;
     }
     let _e29 = parts;
@@ -1659,7 +1668,7 @@ fn airlight_subdivided(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32,
                 let part = AirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
                 let _e84 = total;
                 let _e87 = offset;
-                let _e90 = airlight_piece(s_4, g_4, sigma_3, part);
+                let _e90 = airlight_piece(s_4, g_5, sigma_3, part);
                 total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
             }
         }
@@ -1677,30 +1686,30 @@ fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32>
     var r1_: f32 = -1f;
     var r2_1: f32 = -1f;
 
-    let a_8 = (k_12 + (sigma_4 * d_el));
-    let b_6 = -((d_c + d_c));
+    let a_9 = (k_12 + (sigma_4 * d_el));
+    let b_7 = -((d_c + d_c));
     let c_6 = (k_12 - (sigma_4 * d_el));
-    let disc_1 = ((b_6 * b_6) - ((4f * a_8) * c_6));
+    let disc_1 = ((b_7 * b_7) - ((4f * a_9) * c_6));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_6 < 0f) {
+    if (b_7 < 0f) {
         sb = -1f;
     }
     let _e26 = sb;
-    let q_1 = (-0.5f * (b_6 + (_e26 * sqrt(disc_1))));
+    let q_1 = (-0.5f * (b_7 + (_e26 * sqrt(disc_1))));
     if (q_1 != 0f) {
         r1_ = (c_6 / q_1);
     }
-    if (a_8 != 0f) {
-        r2_1 = (q_1 / a_8);
+    if (a_9 != 0f) {
+        r2_1 = (q_1 / a_9);
     }
     let _e42 = r1_;
     let _e43 = r2_1;
     return vec2<f32>(_e42, _e43);
 }
 
-fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
+fn airlight_half(s_5: AirlightScene, g_6: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
@@ -1720,7 +1729,7 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
 
     if isotropic {
         let _e6 = airlight_moments(half_6, 1u);
-        let _e12 = airlight_integrand(s_5, g_5, sigma_5, (half_6.y_lo + (half_6.dy * 0.5f)));
+        let _e12 = airlight_integrand(s_5, g_6, sigma_5, (half_6.y_lo + (half_6.dy * 0.5f)));
         return (_e12 * _e6[0]);
     }
     if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -1736,9 +1745,9 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
             k_out = _e37;
         }
         let _e40 = k_in;
-        let _e41 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e40);
+        let _e41 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e40);
         let _e44 = k_out;
-        let _e45 = airlight_crossings(sigma_5, g_5.d_el, g_5.d_c, _e44);
+        let _e45 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e44);
         cuts = array<f32, 4>(_e41.x, _e41.y, _e45.x, _e45.y);
         loop {
             let _e53 = i_11;
@@ -1812,7 +1821,7 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
     }
     let _e119 = cuts[0];
     if (_e119 >= 2f) {
-        let _e122 = airlight_piece(s_5, g_5, sigma_5, half_6);
+        let _e122 = airlight_piece(s_5, g_6, sigma_5, half_6);
         return _e122;
     }
     lo = half_6.y_lo;
@@ -1869,7 +1878,7 @@ fn airlight_half(s_5: AirlightScene, g_5: AirlightCanonical, sigma_5: f32, half_
                 let piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e181, _e182, dy_2, _e183, _e184);
                 let _e186 = total_1;
                 let _e189 = offset_1;
-                let _e192 = airlight_subdivided(s_5, g_5, sigma_5, piece_1);
+                let _e192 = airlight_subdivided(s_5, g_6, sigma_5, piece_1);
                 total_1 = (_e186 + (exp((-(half_6.big_h) * _e189)) * _e192));
                 let _e195 = hi_1;
                 lo = _e195;
@@ -1908,35 +1917,35 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_9: f32, j_8: f32)
     return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
 }
 
-fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_6: AirlightScene, g_7: AirlightCanonical) -> f32 {
     var local_18: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    if !(g_6.t_hi_infinite) {
-        local_18 = (g_6.x_h > g_6.t_hi);
+    if !(g_7.t_hi_infinite) {
+        local_18 = (g_7.x_h > g_7.t_hi);
     } else {
         local_18 = false;
     }
     let _e10 = local_18;
     if _e10 {
-        let _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_6.d_el));
+        let _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_7.d_el));
         let _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
         let f = (_e16 * _e22);
-        let r0_ = (g_6.x_h - g_6.t_lo);
-        let r1_1 = (g_6.x_h - g_6.t_hi);
-        let _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * r0_), (f * (((g_6.t_hi - g_6.t_lo) / r0_) / r1_1)));
+        let r0_ = (g_7.x_h - g_7.t_lo);
+        let r1_1 = (g_7.x_h - g_7.t_hi);
+        let _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * r0_), (f * (((g_7.t_hi - g_7.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_6.d_el);
+    let _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_7.d_el);
     let _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1f);
     let f_1 = (_e46 * _e52);
-    let s0_ = (g_6.t_lo - g_6.x_h);
-    let s1_ = (g_6.t_hi - g_6.x_h);
+    let s0_ = (g_7.t_lo - g_7.x_h);
+    let s1_ = (g_7.t_hi - g_7.x_h);
     if (s_6.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_6.t_hi_infinite) {
+        if !(g_7.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
@@ -1949,7 +1958,7 @@ fn airlight_on_line(s_6: AirlightScene, g_6: AirlightCanonical) -> f32 {
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
     let _e91 = e2_[1];
     let _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if !(g_6.t_hi_infinite) {
+    if !(g_7.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
         let _e111 = e2_[1];
         let _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
@@ -1974,7 +1983,7 @@ fn airlight_optical(big_h: f32, dv_3: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_7: AirlightScene, g_8: AirlightCanonical) -> AirlightResult {
     var local_19: bool;
     var local_20: bool;
     var local_21: bool;
@@ -1998,9 +2007,9 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     var local_32: bool;
     var local_33: bool;
 
-    let t0_ = g_7.t_lo;
-    let t1_ = g_7.t_hi;
-    if !(g_7.t_hi_infinite) {
+    let t0_ = g_8.t_lo;
+    let t1_ = g_8.t_hi;
+    if !(g_8.t_hi_infinite) {
         local_19 = (t1_ > t0_);
     } else {
         local_19 = true;
@@ -2015,10 +2024,10 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_2 = g_7.h;
-    let x_h = g_7.x_h;
+    let h_2 = g_8.h;
+    let x_h = g_8.x_h;
     if (t0_ <= x_h) {
-        if !(g_7.t_hi_infinite) {
+        if !(g_8.t_hi_infinite) {
             local_22 = (x_h <= t1_);
         } else {
             local_22 = true;
@@ -2044,7 +2053,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     }
     let _e55 = local_23;
     if _e55 {
-        let _e56 = airlight_on_line(s_7, g_7);
+        let _e56 = airlight_on_line(s_7, g_8);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_2 == 0f) {
@@ -2090,7 +2099,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
     if (t0_ < x_h) {
         let a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
-        if !(g_7.t_hi_infinite) {
+        if !(g_8.t_hi_infinite) {
             local_30 = (t1_ < x_h);
         } else {
             local_30 = false;
@@ -2109,12 +2118,12 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         let dy_3 = (((((_e136 - t0_) / h_2) * (1f + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
         let _e149 = airlight_optical(big_h_2, dy_3, false);
         let half_7 = AirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
-        let _e153 = airlight_half(s_7, g_7, -1f, half_7, isotropic_1);
+        let _e153 = airlight_half(s_7, g_8, -1f, half_7, isotropic_1);
         let _e154 = total_2;
         let _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
         total_2 = (_e154 + _e158);
     }
-    if !(g_7.t_hi_infinite) {
+    if !(g_8.t_hi_infinite) {
         local_31 = (t1_ > x_h);
     } else {
         local_31 = true;
@@ -2127,7 +2136,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         let _e171 = airlight_bounded(a_s_1);
         dy = _e171;
         let a_e_1 = ((t1_ - x_h) / h_2);
-        if !(g_7.t_hi_infinite) {
+        if !(g_8.t_hi_infinite) {
             let _e185 = airlight_is_finite(a_e_1);
             local_32 = _e185;
         } else {
@@ -2162,7 +2171,7 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_7: AirlightCanonical) -> 
         let _e216 = dv_4;
         let _e217 = infinite_1;
         let half_8 = AirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
-        let _e220 = airlight_half(s_7, g_7, 1f, half_8, isotropic_1);
+        let _e220 = airlight_half(s_7, g_8, 1f, half_8, isotropic_1);
         let _e221 = total_2;
         let _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
         total_2 = (_e221 + _e229);

@@ -188,3 +188,30 @@ fn f32_close_to_f64_anisotropic() {
     }
     println!("worst f32/f64 anisotropic (relative to the integrand's scale): {worst:.2e}");
 }
+
+/// Henyey–Greenstein (alone, in Cornette–Shanks, in two lobes) at its peak with `|g| → 1`:
+/// `1 + g² − 2gμ` must not cancel (it rounded to 0 and made a far segment `+∞`; kernel fuzz
+/// finding). At `μ = sign(g)` the exact value is `(1 + |g|) / (4π (1 − |g|)²)`, computed here
+/// from `1 − |g|`, which is exact.
+#[test]
+fn henyey_greenstein_peak_does_not_cancel() {
+    use airlight::phase::{CornetteShanks, HenyeyGreenstein, PhaseFunction};
+    for k in [20, 30, 40, 45, 50] {
+        let one_minus = 2f64.powi(-k);
+        for sign in [1.0, -1.0] {
+            let g = sign * (1.0 - one_minus);
+            let want = (2.0 - one_minus) / (4.0 * std::f64::consts::PI * one_minus * one_minus);
+            let hg = HenyeyGreenstein { g }.eval(sign);
+            assert!(rel_err(hg, want) < 1e-14, "HG g = {g}: {hg:e}, want {want:e}");
+            // Cornette–Shanks at μ = ±1: HG · 3(1 + μ²)/(2(2 + g²)) = HG · 3/(2 + g²)
+            let cs = CornetteShanks { g }.eval(sign);
+            let want_cs = want * 3.0 / (2.0 + g * g);
+            assert!(rel_err(cs, want_cs) < 1e-14, "Cornette–Shanks g = {g}: {cs:e}, want {want_cs:e}");
+            // f32 with the nearest g (1 − 2^-k is exact in f32 only for k ≤ 24)
+            if k <= 24 {
+                let hg32 = HenyeyGreenstein { g: g as f32 }.eval(sign as f32) as f64;
+                assert!(rel_err(hg32, want) < 1e-6, "HG f32 g = {g}: {hg32:e}, want {want:e}");
+            }
+        }
+    }
+}
