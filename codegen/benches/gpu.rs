@@ -22,11 +22,13 @@
 //! 3. A summary table (variant, method, steps, median/p99 error, rays/s, ratio) on stdout and in
 //!    `target/criterion/gpu_summary.md`, from criterion's median estimates.
 
-use airlight::glam::{DVec3, Vec3};
+use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Expansion, Medium, PointLight, Ray, Scene};
+use airlight_codegen::eval::compute_wgsl;
 use airlight_codegen::gpu::{Gpu, Prepared, Shader};
+use airlight_codegen::scene_json::SceneRecord;
 use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use criterion::{Criterion, SamplingMode, Throughput};
 use std::fmt::Write as _;
@@ -35,8 +37,6 @@ use std::time::{Duration, Instant};
 
 /// Rays per timed call.
 const RAYS: usize = 65_536;
-const GENERATED_4: &str = include_str!("../../shaders-out/wgsl/airlight_4.wgsl");
-const GENERATED_6: &str = include_str!("../../shaders-out/wgsl/airlight_6.wgsl");
 const RAYMARCH: &str = include_str!("raymarch.wgsl");
 /// The include library whose structs and phase/light functions the ray-marcher uses.
 const LIBRARY: &str = include_str!("../../shaders-out/wgsl/airlight_lib_4.wgsl");
@@ -97,19 +97,8 @@ fn scenes(aniso: bool) -> (Vec<u8>, Vec<S32>, Vec<S64>) {
         let medium = Medium { sigma_s: 0.05f32, sigma_t };
         records.extend_from_slice(&pack(&ray, &light, &medium, &phase));
         cpu32.push(Scene::new(ray, light, medium, phase).expect("benchmark scene is valid"));
-        let (dist64, phase64) = if aniso {
-            (AnyDistribution::TwoLobed(TwoLobed { axis: axis.as_dvec3(), power: 4 }), AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.5f64 }))
-        } else {
-            (AnyDistribution::Omni, AnyPhase::Isotropic)
-        };
-        let s = Scene::new(
-            Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: t_max as f64 },
-            PointLight { position: position.as_dvec3(), intensity: 100.0, distribution: dist64 },
-            Medium { sigma_s: 0.05f32 as f64, sigma_t: sigma_t as f64 },
-            phase64,
-        )
-        .expect("benchmark scene is valid");
-        reference.push(s);
+        let wide = SceneRecord { ray, light, medium, phase }.cast::<f64>();
+        reference.push(Scene::new(wide.ray, wide.light, wide.medium, wide.phase).expect("benchmark scene is valid"));
     }
     (records, cpu32, reference)
 }
@@ -202,7 +191,7 @@ fn main() {
         p
     };
     // the generated shaders take seconds to compile on lavapipe: once for both variants
-    let generated = [(4u32, prepare("generated_4", GENERATED_4)), (6, prepare("generated_6", GENERATED_6))];
+    let generated = [4u32, 6].map(|terms| (terms, prepare(&format!("generated_{terms}"), compute_wgsl(terms as usize))));
     let copy_only = prepare("copy_only", COPY_ONLY);
     let mut accuracy_md = String::new();
     let mut speed_md = String::new();

@@ -107,11 +107,6 @@ fn in_scatter<T: airlight::Real>(rec: &SceneRecord<T>, terms: usize) -> Option<T
     })
 }
 
-/// The record in f64, every number exactly as in f32.
-pub fn widen(rec: &SceneRecord<f32>) -> SceneRecord<f64> {
-    rec.cast()
-}
-
 /// The record with input `k` (of `PERTURBATIONS`) moved by one ulp: `t_min` up/down, `t_max`
 /// down, each coordinate of the light and of the origin up/down, direction components up,
 /// `σt` up/down, the phase function's first parameter up/down (where it stays valid).
@@ -152,7 +147,7 @@ pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
     let Some(v) = in_scatter(rec, terms) else {
         return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
     };
-    let wide = widen(rec);
+    let wide = rec.cast::<f64>();
     let same = in_scatter(&wide, terms).unwrap_or(0.0);
     if v.is_infinite() {
         return Expected { value: f32::MAX, status: STATUS_INFINITE, f64_value: same, noise: 0.0, scale: 0.0 };
@@ -182,9 +177,9 @@ pub const DOMAIN: (f32, f32) = (1.0 / (1u64 << 40) as f32, (1u64 << 40) as f32);
 /// where [`judge`] applies (module docs). Non-finite numbers (an invalid record, or
 /// `t_max = +∞`) do not leave the domain.
 pub fn in_domain(rec: &SceneRecord<f32>) -> bool {
-    let words = crate::layout::pack(&rec.ray, &rec.light, &rec.medium, &rec.phase);
-    // offsets 0..88 of a record are its f32 inputs (layout.rs); unused ones are 0
-    words[..88].chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).all(|x| {
+    let bytes = crate::layout::pack(&rec.ray, &rec.light, &rec.medium, &rec.phase);
+    // unused inputs are packed as 0
+    bytes[..crate::layout::FLOAT_INPUTS_END].chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).all(|x| {
         let m = x.abs();
         !m.is_finite() || m == 0.0 || (DOMAIN.0..=DOMAIN.1).contains(&m)
     })

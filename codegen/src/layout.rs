@@ -31,6 +31,9 @@ use airlight::{Medium, PointLight, Ray};
 
 /// Bytes per input record.
 pub const RECORD_SIZE: usize = 112;
+/// Bytes `0..FLOAT_INPUTS_END` of a record are its f32 inputs (origin … phase_param2); the
+/// u32 kinds and flags follow.
+pub const FLOAT_INPUTS_END: usize = 88;
 /// Bytes per output record.
 pub const RESULT_SIZE: usize = 8;
 /// Status: value is valid.

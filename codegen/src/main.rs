@@ -301,12 +301,8 @@ fn cmd_render(args: &[String]) -> ExitCode {
     }
     let mut device = None;
     if gpu {
-        let path = render::shader_path();
-        let opened = std::fs::read_to_string(&path)
-            .map_err(|e| format!("{}: {e}", path.display()))
-            .and_then(|src| airlight_codegen::gpu::Gpu::new().map(|g| (src, g)));
-        match opened {
-            Ok((src, g)) => device = Some((src, g)),
+        match airlight_codegen::gpu::Gpu::new() {
+            Ok(g) => device = Some(g),
             Err(e) if all => eprintln!("airlight: warning: skipping the gpu backend: {e}"),
             Err(e) => {
                 eprintln!("airlight: {e}");
@@ -318,9 +314,9 @@ fn cmd_render(args: &[String]) -> ExitCode {
         let path = out.join(format!("{name}_{what}.png"));
         render::write_png(&path, size.0, size.1, rgb)
     };
-    let prepared = device.as_ref().map(|(src, g)| {
+    let prepared = device.as_ref().map(|g| {
         let start = Instant::now();
-        let p = g.prepare(airlight_codegen::gpu::Shader::Wgsl(src));
+        let p = g.prepare(airlight_codegen::gpu::Shader::Wgsl(airlight_codegen::eval::compute_wgsl(airlight::SHADER_TERMS)));
         println!("gpu: {}, shader compiled in {:.2} s", g.describe(), start.elapsed().as_secs_f64());
         p
     });

@@ -455,14 +455,9 @@ where
     assemble(scene, rows)
 }
 
-/// The path of the compute shader the GPU evaluator runs: `shaders-out/wgsl/airlight_4.wgsl`.
-pub fn shader_path() -> std::path::PathBuf {
-    crate::targets::default_out_dir().join("wgsl").join("airlight_4.wgsl")
-}
-
 /// The image through the generated shader: every (pixel, light) segment is packed as an f32
 /// record ([`layout::pack`]) and all of them run in one call of `shader`, the compute entry
-/// point (the contents of [`shader_path`]) prepared once with
+/// point ([`crate::eval::compute_wgsl`] at [`airlight::SHADER_TERMS`]) prepared once with
 /// [`Gpu::prepare`](crate::gpu::Gpu::prepare) — [`Prepared::run`] is what
 /// [`Gpu::run`](crate::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
 /// longer than the dispatch. The surface term, which the

@@ -62,7 +62,7 @@ pub fn decode(data: &[u8]) -> Raw {
 
 /// Reads one scene from `r` (25 or 26 numbers of 9 bytes), leaving the rest.
 pub fn decode_from(r: &mut Reader) -> Raw {
-    let mut v3 = |r: &mut Reader, lo: f64, hi: f64| [r.num(lo, hi), r.num(lo, hi), r.num(lo, hi)];
+    let v3 = |r: &mut Reader, lo: f64, hi: f64| [r.num(lo, hi), r.num(lo, hi), r.num(lo, hi)];
     let o = v3(r, -100.0, 100.0);
     let d = v3(r, -1.0, 1.0);
     let t0 = r.num(-10.0, 10.0);

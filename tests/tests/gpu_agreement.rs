@@ -89,6 +89,9 @@ fn reference_scenes() -> Vec<(SceneRecord<f32>, f64, bool)> {
 struct Case {
     records: Vec<u8>,
     expected: Vec<Expected>,
+    /// The scene of each expected result, for failure messages (`None`: a patched invalid
+    /// record).
+    scenes: Vec<Option<SceneRecord<f32>>>,
     /// Index of the first reference scene in `expected`, and the scenes' (value, f32_exact).
     reference_start: usize,
     reference: Vec<(f64, bool)>,
@@ -97,10 +100,12 @@ struct Case {
 fn case(terms: usize) -> Case {
     let mut records = Vec::new();
     let mut expected = Vec::new();
+    let mut described = Vec::new();
     for p in scenes() {
         let rec = record(&p);
         records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
         expected.push(expect(&rec, terms));
+        described.push(Some(rec));
     }
     // invalid records: the shader must give status INVALID and value 0
     let good = records[..RECORD_SIZE].to_vec();
@@ -121,15 +126,17 @@ fn case(terms: usize) -> Case {
         }
         records.extend_from_slice(&r);
         expected.push(Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 });
+        described.push(None);
     }
     let reference_start = expected.len();
     let mut reference = Vec::new();
     for (rec, want, exact) in reference_scenes() {
         records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
         expected.push(expect(&rec, terms));
+        described.push(Some(rec));
         reference.push((want, exact));
     }
-    Case { records, expected, reference_start, reference }
+    Case { records, expected, scenes: described, reference_start, reference }
 }
 
 fn compare(label: &str, c: &Case, out: &[u8]) {
@@ -138,7 +145,6 @@ fn compare(label: &str, c: &Case, out: &[u8]) {
     let mut worst_exact = 0.0f64;
     let mut diffs = Vec::new();
     let mut failures = Vec::new();
-    let all = scenes();
     for (i, e) in c.expected.iter().enumerate() {
         let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
         if !got.is_finite() {
@@ -154,7 +160,7 @@ fn compare(label: &str, c: &Case, out: &[u8]) {
                 worst_f64 = worst_f64.max(j.diff_f64);
             }
             None => {}
-            Some(msg) => failures.push(format!("#{i}: {msg} {}", all.get(i).map(|p| format!("{p:?}")).unwrap_or_default())),
+            Some(msg) => failures.push(format!("#{i}: {msg} {}", c.scenes[i].map(|r| format!("{r:?}")).unwrap_or_default())),
         }
         if i >= c.reference_start && status == airlight_codegen::layout::STATUS_OK {
             let (want, exact) = c.reference[i - c.reference_start];
