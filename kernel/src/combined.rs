@@ -10,6 +10,7 @@ use crate::expansion::{Expandable, Expansion};
 use crate::geometry::Canonical;
 use crate::integrals::{moments, ExpIntegral, Half};
 use crate::light::LightDistribution;
+use crate::panels::{integrate_piece, Control, Running};
 use crate::phase::PhaseFunction;
 use crate::real::{hypot1, Real};
 use crate::scalar::Scalar;
@@ -52,6 +53,15 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     }
 }
 
+/// How `F` is integrated on each half.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method<T> {
+    /// One `N`-term expansion per piece between kinks (the shaders' fixed-cost method).
+    Fixed(Expansion),
+    /// Error-controlled panels ([`crate::panels`]) with `N` Gauss–Legendre nodes each.
+    Panels(Control<T>),
+}
+
 /// `1/(a + √(1+a²))` for `a ≥ 0`: the bounded variable `y` at `|u| = a` (`+∞ ↦ 0`).
 #[inline]
 fn bounded<T: Real>(a: T) -> T {
@@ -62,11 +72,12 @@ fn bounded<T: Real>(a: T) -> T {
     }
 }
 
-/// In-scattered radiance `L_m` of the canonical problem with `N` expansion terms.
+/// In-scattered radiance `L_m` of the canonical problem with `N` expansion terms (or nodes
+/// per panel).
 pub fn in_scatter_canonical<T, D, P, E, const N: usize>(
     g: &Canonical<T>,
     phys: &Physics<'_, T, D, P>,
-    expansion: Expansion,
+    method: Method<T>,
     ei: &E,
 ) -> T
 where
@@ -75,20 +86,37 @@ where
     P: PhaseFunction<T>,
     E: ExpIntegral<T>,
 {
+    in_scatter_counted::<T, D, P, E, N>(g, phys, method, ei).0
+}
+
+/// [`in_scatter_canonical`] and the number of panels [`Method::Panels`] evaluated (0 for the
+/// fixed method and the exact limits).
+pub fn in_scatter_counted<T, D, P, E, const N: usize>(
+    g: &Canonical<T>,
+    phys: &Physics<'_, T, D, P>,
+    method: Method<T>,
+    ei: &E,
+) -> (T, usize)
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+    E: ExpIntegral<T>,
+{
     let (t0, t1) = (g.t0, g.t1);
     if !(t1 > t0) || phys.sigma_s * phys.intensity == T::zero() {
-        return T::zero();
+        return (T::zero(), 0);
     }
     let (h, x_h) = (g.h, g.x_h);
     let inside = t0 <= x_h && x_h <= t1;
     // Distance from the foot to the nearest segment end.
     let gap = if x_h < t0 { t0 - x_h } else if x_h > t1 { x_h - t1 } else { T::zero() };
     if !inside && h <= gap * T::epsilon() * T::epsilon() {
-        return on_line(g, phys);
+        return (on_line(g, phys), 0);
     }
     if h == T::zero() {
         // The light sits on the segment itself: the integral diverges.
-        return T::infinity();
+        return (T::infinity(), 0);
     }
     let sigma_t = phys.sigma_t;
     let big_h = sigma_t * h;
@@ -96,6 +124,7 @@ where
     let count = if isotropic { 1 } else { N };
 
     let mut total = T::zero();
+    let mut run = Running { f_max: T::zero(), panels: 0 };
     // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
     if t0 < x_h {
         let a_s = (x_h - t0) / h;
@@ -106,7 +135,7 @@ where
         let da = (t_end - t0) / h;
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
-        let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), expansion, ei, isotropic, count);
+        let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, j);
     }
     // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
@@ -121,12 +150,12 @@ where
         // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
         let half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
-        let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), expansion, ei, isotropic, count);
+        let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
-    total.max(T::zero())
+    (total.max(T::zero()), run.panels)
 }
 
 /// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the
@@ -160,17 +189,19 @@ fn weighted<T: Real>(sigma_s: T, intensity: T, h: T, x: T, j: T) -> T {
     }
 }
 
-/// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution.
+/// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution (and,
+/// with [`Method::Panels`], where `|c|` is largest: the beam's axis).
 #[allow(clippy::too_many_arguments)]
 fn half_integral<T, D, P, E, const N: usize>(
     half: &Half<T>,
     g: &Canonical<T>,
     phys: &Physics<'_, T, D, P>,
     sigma: T,
-    expansion: Expansion,
+    method: Method<T>,
     ei: &E,
     isotropic: bool,
     count: usize,
+    run: &mut Running<T>,
 ) -> T
 where
     T: Real,
@@ -183,21 +214,38 @@ where
         let m: [T; N] = moments(half, ei, count);
         return f.eval(half.y_mid()) * m[0];
     }
-    // Up to two kinks, each crossed at most twice: at most 5 pieces.
+    // Up to two kinks, each crossed at most twice, and the two extremes of c: at most 7 pieces.
     let mut cuts = [T::zero(); 6];
     let mut n_cuts = 0;
-    for kink in phys.light.kinks().into_iter().flatten() {
-        for y in crossings(sigma, g.d_el, g.d_c, kink) {
-            if let Some(y) = y {
-                if y > half.y_lo && y < half.y_hi {
-                    cuts[n_cuts] = y;
-                    n_cuts += 1;
-                }
+    let mut add = |y: Option<T>| {
+        if let Some(y) = y {
+            if y > half.y_lo && y < half.y_hi {
+                cuts[n_cuts] = y;
+                n_cuts += 1;
             }
         }
+    };
+    for kink in phys.light.kinks().into_iter().flatten() {
+        crossings(sigma, g.d_el, g.d_c, kink).into_iter().for_each(&mut add);
+    }
+    if let (Method::Panels(_), false) = (method, phys.light.is_isotropic()) {
+        extremes(sigma, g.d_el, g.d_c).into_iter().for_each(&mut add);
     }
     let cuts = &mut cuts[..n_cuts];
     cuts.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
+    let expansion = match method {
+        Method::Fixed(expansion) => expansion,
+        Method::Panels(control) => {
+            let mut total = T::zero();
+            let mut lo = half.y_lo;
+            for i in 0..=n_cuts {
+                let hi = if i < n_cuts { cuts[i] } else { half.y_hi };
+                total = total + integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run);
+                lo = hi;
+            }
+            return total;
+        }
+    };
     if n_cuts == 0 {
         return piece_integral::<T, _, E, N>(half, &f, expansion, ei);
     }
@@ -274,6 +322,16 @@ fn crossings<T: Real>(sigma: T, d_el: T, d_c: T, k: T) -> [Option<T>; 2] {
     let r1 = if q != T::zero() { Some(c / q) } else { None };
     let r2 = if a != T::zero() { Some(q / a) } else { None };
     [r1, r2]
+}
+
+/// The `y ∈ (0, 1)` where `c(y) = σ d_el cos 2ψ + d_c sin 2ψ` (`y = tan ψ`) is largest and
+/// smallest, `c = ±√(d_el² + d_c²)`: `y = tan(φ/2)` for the angle `φ` of `(σ d_el, d_c)`, by the
+/// half-angle formula `tan(φ/2) = sin φ/(1 + cos φ)` (and of `−(σ d_el, d_c)` for the minimum).
+fn extremes<T: Real>(sigma: T, d_el: T, d_c: T) -> [Option<T>; 2] {
+    let (x, y) = (sigma * d_el, d_c);
+    let a = x.hypot(y);
+    let at = |x: T, y: T| if a + x > T::zero() { Some(y / (a + x)) } else { None };
+    [at(x, y), at(-x, -y)]
 }
 
 /// The exact limit for a light on the ray line outside the segment (`h → 0`): `μ = ±1` and

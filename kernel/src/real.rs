@@ -26,6 +26,16 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     const E1_CF_DEPTH: &'static [(f64, usize)];
     /// Gauss–Legendre nodes on `[-1, 1]` (positive half) and weights for short sub-intervals.
     const GAUSS_NODES: &'static [(f64, f64)];
+    /// The default error-controlled path ([`crate::panels`]): Gauss–Legendre nodes per panel,
+    /// tolerance of the per-panel estimate, relative floor (the accuracy target's `τ`) and the
+    /// most panels per piece.
+    const PANEL_NODES: usize;
+    /// See [`Real::PANEL_NODES`].
+    const PANEL_TOLERANCE: f64;
+    /// See [`Real::PANEL_NODES`].
+    const PANEL_FLOOR: f64;
+    /// See [`Real::PANEL_NODES`].
+    const MAX_PANELS: usize;
 
     /// Converts an `f64` constant to this precision (rounding to nearest).
     fn lit(x: f64) -> Self;
@@ -39,6 +49,11 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
 
 impl Real for f64 {
     type Vec3 = glam::DVec3;
+    // Target 1e-10 of max(|exact|, 1e-10·scale); the tail estimate is kept 100× below it.
+    const PANEL_NODES: usize = 12;
+    const PANEL_TOLERANCE: f64 = 1e-12;
+    const PANEL_FLOOR: f64 = 1e-10;
+    const MAX_PANELS: usize = 64;
     const E1_SERIES_ELLIPSE: (f64, f64) = (2.5, 4.0);
     const E1_SERIES_TERMS: usize = 34;
     const E1_CF_DEPTH: &'static [(f64, usize)] =
@@ -70,6 +85,12 @@ impl Real for f64 {
 
 impl Real for f32 {
     type Vec3 = glam::Vec3;
+    // Target 1e-4 of max(|exact|, 1e-4·scale); the estimate is kept 10× below it (its own
+    // rounding noise is ~N·ε ≈ 1e-6).
+    const PANEL_NODES: usize = 8;
+    const PANEL_TOLERANCE: f64 = 1e-5;
+    const PANEL_FLOOR: f64 = 1e-4;
+    const MAX_PANELS: usize = 32;
     const E1_SERIES_ELLIPSE: (f64, f64) = (1.3, 2.1);
     const E1_SERIES_TERMS: usize = 14;
     const E1_CF_DEPTH: &'static [(f64, usize)] =

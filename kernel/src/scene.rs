@@ -1,13 +1,14 @@
 //! The world-space API on glam vectors: a ray, a point light, a medium and a phase function
 //! in; in-scattered radiance, the surface term (paper eq. 7) and total radiance (eq. 2) out.
 
-use crate::combined::{in_scatter_canonical, Physics};
+use crate::combined::{in_scatter_canonical, in_scatter_counted, Method, Physics};
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::expansion::Expansion;
 use crate::geometry::{dot, length, normalize, sub, Canonical};
 use crate::integrals::{PaperEq27, Production};
 use crate::light::LightDistribution;
-use crate::march::{ray_march, Steps};
+use crate::march::{gauss_angle, ray_march, GaussAngle, Steps};
+use crate::panels::Control;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 
@@ -141,18 +142,35 @@ where
         }
     }
 
-    /// In-scattered radiance `L_m` (DESIGN §1) with the defaults: [`CPU_TERMS`] terms,
-    /// Chebyshev expansion.
+    /// In-scattered radiance `L_m` (DESIGN §1), error-controlled: panels with
+    /// [`Real::PANEL_NODES`] Gauss–Legendre nodes each, refined until the estimated error is
+    /// below [`Real::PANEL_TOLERANCE`] of `F` on each ([`default_control`]; see
+    /// [`crate::panels`]).
     ///
     /// `+∞` exactly when the light lies on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`) and
     /// `σs·I > 0`, or when the true value exceeds the float range; never NaN.
     pub fn in_scatter(&self) -> T {
-        self.in_scatter_with::<CPU_TERMS>(Expansion::default())
+        if T::PANEL_NODES == 12 {
+            self.in_scatter_panels::<12>(default_control())
+        } else {
+            self.in_scatter_panels::<8>(default_control())
+        }
     }
 
-    /// `L_m` with `N` expansion terms and the given expansion.
+    /// `L_m` by error-controlled panels with `N` Gauss–Legendre nodes each (`N` ∈ {4, 6, 8, 10,
+    /// 12, 16}; other counts give 0).
+    pub fn in_scatter_panels<const N: usize>(&self, control: Control<T>) -> T {
+        self.in_scatter_panels_counted::<N>(control).0
+    }
+
+    /// [`Scene::in_scatter_panels`] and the number of panels it evaluated.
+    pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>) -> (T, usize) {
+        in_scatter_counted::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Panels(control), &Production)
+    }
+
+    /// `L_m` with one `N`-term expansion per piece (the fixed-cost method the shaders use).
     pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
-        in_scatter_canonical::<T, D, P, Production, N>(&self.canonical, &self.physics(), expansion, &Production)
+        in_scatter_canonical::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Fixed(expansion), &Production)
     }
 
     /// `L_m` over the sub-segments `lit` of `[t_min, t_max]` only (a shadowed ray, as sums of
@@ -172,7 +190,7 @@ where
             let mut g = self.canonical;
             g.t0 = a;
             g.t1 = b;
-            let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), expansion, &Production);
+            let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), Method::Fixed(expansion), &Production);
             if part > T::zero() {
                 // an overflowing part (+∞) stays +∞ even where the attenuation underflows
                 let attenuation = (-self.medium.sigma_t * (a - self.ray.t_min)).exp();
@@ -187,7 +205,7 @@ where
     /// `precision`, at most `max_iterations` iterations), no stabilised routes.
     pub fn in_scatter_paper<const N: usize>(&self, precision: T, max_iterations: usize) -> T {
         let ei = PaperEq27 { precision, max_iterations };
-        in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical, &self.physics(), Expansion::Taylor, &ei)
+        in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical, &self.physics(), Method::Fixed(Expansion::Taylor), &ei)
     }
 
     /// `L_m` by ray marching with `steps` samples (see [`crate::march`]): the fixed-step
@@ -208,6 +226,12 @@ where
             rule,
             steps,
         )
+    }
+
+    /// `L_m` by Gauss–Legendre in the angle seen from the light ([`crate::march::GaussAngle`]):
+    /// the peer the benchmarks compare against. Returns the value and the evaluations used.
+    pub fn gauss_angle(&self, rule: GaussAngle<T>) -> (T, usize) {
+        gauss_angle(&self.canonical, self.medium.sigma_s, self.medium.sigma_t, self.light.intensity, &self.light.distribution, &self.phase, rule)
     }
 
     /// The surface term of paper eq. 7 at the segment's end `t_max` (finite):
@@ -245,7 +269,12 @@ where
     }
 }
 
-/// In-scattered radiance with the defaults ([`CPU_TERMS`] terms, Chebyshev), checked.
+/// The error control of [`Scene::in_scatter`] for the precision `T`.
+pub fn default_control<T: Real>() -> Control<T> {
+    Control { tolerance: T::lit(T::PANEL_TOLERANCE), floor: T::lit(T::PANEL_FLOOR), max_panels: T::MAX_PANELS }
+}
+
+/// In-scattered radiance with the defaults (error-controlled panels), checked.
 ///
 /// # Errors
 /// [`InputError`] naming the first invalid field (see [`Scene::new`]).

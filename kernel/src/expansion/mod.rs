@@ -9,6 +9,8 @@
 //!   evaluations. It is the default: see the error table in the README.
 
 mod chebyshev;
+#[allow(clippy::excessive_precision)]
+pub mod gauss_table;
 mod jet;
 
 pub use chebyshev::chebyshev_coefficients;

@@ -1,0 +1,396 @@
+//! Error-controlled panels on one half: the default path ([`crate::combined`] calls it for each
+//! piece between the light's kinks and beam extremes).
+//!
+//! On either half (module docs of [`crate::integrals`]) the integral is
+//! `∫ e^{−H(v − v_s)} G(v) dv` with `G(v) = F(y(v))/(1 + v²)`: `v = y` before the foot,
+//! `v = 1/y` after it (`du/(1+u²) = 2 dy/(1+y²) = 2 dv/(1+v²)`). The exponential is the
+//! boundary layer (thick media, long rays, a light next to the ray); `F = D·P` holds the peaks
+//! (Henyey–Greenstein near `|g| = 1` at `y = 0`, with half-width `(1 − |g|)/(1 + |g|)`; a narrow
+//! beam where it crosses the ray). So the exponential is integrated exactly and only `G` is
+//! approximated, on panels refined until it is resolved:
+//!
+//! * **v-panel** `[v_a, v_b]`: `G` at the `N` Gauss–Legendre nodes → its Legendre series
+//!   `Σ c_k P_k(ξ)` (discrete transform, exact to degree `N − 1`) → `∫ = r Σ c_k M_k(H r)`,
+//!   `r` the half-width, with the exponential's Legendre moments
+//!   `M_k(λ) = ∫_{−1}^{1} e^{−λ(1+ξ)} P_k(ξ) dξ = 2(−1)^k e^{−λ} i_k(λ)` (`i_k`: modified
+//!   spherical Bessel function, DLMF 10.54.2), computed stably for every `k` and `λ`
+//!   ([`exp_legendre_moments`]): nothing amplifies rounding with the term index.
+//! * **tail panel** `[y_a, y_b]` after the foot with `y_a ≤ y_b/4` (it reaches far along the
+//!   ray, or to `t = ∞` at `y_a = 0`): `G̃(y) = F(y)/(1+y²)` as a polynomial `Σ q_k (y/y_b)^k`,
+//!   against `U_k = ∫ e^{−H(1/y − 1/y_b)} (y/y_b)^k dy = y_b s_{k+2}(H/y_b) − e^{−H(1/y_a − 1/y_b)}
+//!   y_a (y_a/y_b)^k s_{k+2}(H/y_a)`, `s_n(x) = e^x E_n(x)` (A&S 5.1.4): both terms positive,
+//!   the second at most a quarter of the first.
+//!
+//! The estimate of a panel's error is its weight mass times `|c_{N−1}| + |c_{N−2}|`; a panel is
+//! accepted when that is below `tolerance × max(|its value|, floor × its scale)` (`scale`: the
+//! panel's integral with `F` replaced by the largest `F` seen on the segment), so that the sum
+//! of the errors is below `tolerance × (|exact| + floor × scale)` — the accuracy target's form.
+//! Otherwise the panel is split at its midpoint in `y`, the half's bright end (`v = v_s`) first,
+//! so that a panel below `tolerance × floor` of what is already summed is accepted as it is.
+//! At most `max_panels` panels are evaluated per piece (a fixed worst case); where the bound
+//! is hit the panel's own estimate is used and the result stays finite.
+
+use crate::expansion::{gauss_table, Expandable};
+use crate::integrals::Half;
+use crate::real::Real;
+use crate::special::en_scaled;
+
+/// Error control of the panel integration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Control<T> {
+    /// Largest accepted error estimate of a panel, relative to its value (or to `floor` times
+    /// its scale, whichever is larger).
+    pub tolerance: T,
+    /// Relative floor: the accuracy target is relative to `max(|exact|, floor·scale)`.
+    pub floor: T,
+    /// Most panels evaluated per piece.
+    pub max_panels: usize,
+}
+
+/// Running state shared by the pieces of one segment.
+#[derive(Clone, Copy, Debug)]
+pub struct Running<T> {
+    /// Largest `|F|` sampled so far.
+    pub f_max: T,
+    /// Panels evaluated so far.
+    pub panels: usize,
+}
+
+/// The deepest pending stack (the bisection depth plus one).
+const STACK: usize = 64;
+/// The most Legendre terms a panel may use (the largest tabulated rule with `N ≤ MAX_N`).
+const MAX_N: usize = 16;
+/// Miller's backward recurrence for `i_k(λ)` starts this many orders above the highest needed.
+const MILLER_EXTRA: usize = 24;
+
+/// `∫ e^{−H(v − v_s)} G(v) dv` over `y ∈ [lo, hi] ⊂ [half.y_lo, half.y_hi]`, in the half's
+/// scaling (weight 1 at the half's `v_s`). `N`: Gauss–Legendre nodes per panel (4, 6, 8, 10,
+/// 12 or 16; other counts give 0).
+pub fn integrate_piece<T, F, const N: usize>(
+    half: &Half<T>,
+    lo: T,
+    hi: T,
+    f: &F,
+    control: &Control<T>,
+    run: &mut Running<T>,
+) -> T
+where
+    T: Real,
+    F: Expandable<T>,
+{
+    let rule = match gauss_table::rule(N) {
+        Some(r) if N <= MAX_N => r,
+        _ => return T::zero(),
+    };
+    let mut stack = [(T::zero(), T::zero()); STACK];
+    stack[0] = (lo, hi);
+    let mut depth = 1;
+    let mut total = T::zero();
+    let mut budget = control.max_panels;
+    while depth > 0 {
+        depth -= 1;
+        let (a, b) = stack[depth];
+        if !(b > a) {
+            continue;
+        }
+        let panel = if half.second && a <= b * T::lit(0.25) {
+            tail_panel::<T, F, N>(half, a, b, f, rule)
+        } else {
+            v_panel::<T, F, N>(half, a, b, f, rule)
+        };
+        run.panels += 1;
+        budget = budget.saturating_sub(1);
+        run.f_max = run.f_max.max(panel.f_max);
+        let scale = run.f_max * panel.mass_over;
+        let accepted = panel.error <= control.tolerance * panel.value.abs().max(control.floor * scale)
+            || panel.bound <= control.tolerance * control.floor * total.abs();
+        let can_split = budget >= 2 && depth + 2 <= STACK && (b - a) > T::epsilon() * b;
+        if accepted || !can_split {
+            total = total + panel.value;
+            continue;
+        }
+        let mid = a + (b - a) * T::lit(0.5);
+        // the bright end (weight 1: low y before the foot, high y after it) on top of the stack
+        if half.second {
+            stack[depth] = (a, mid);
+            stack[depth + 1] = (mid, b);
+        } else {
+            stack[depth] = (mid, b);
+            stack[depth + 1] = (a, mid);
+        }
+        depth += 2;
+    }
+    total
+}
+
+/// What one panel's samples say, in the half's scaling.
+struct Panel<T> {
+    /// The panel's integral.
+    value: T,
+    /// Its error estimate: weight mass × the last two Legendre coefficients of `G`.
+    error: T,
+    /// Weight mass × largest `|G|`: a bound on `|value|`.
+    bound: T,
+    /// Weight mass × largest `1/(1+v²)`: the panel's scale per unit of `F`.
+    mass_over: T,
+    /// Largest `|F|` at the nodes.
+    f_max: T,
+}
+
+/// `e^{−H(v_s(panel) − v_s(half))}` for the panel `[a, b]` in `y`.
+fn factor<T: Real>(half: &Half<T>, a: T, b: T) -> T {
+    let offset = if half.second { (half.y_hi - b) / (b * half.y_hi) } else { a - half.y_lo };
+    let x = half.big_h * offset;
+    if x > T::zero() {
+        (-x).exp()
+    } else {
+        T::one()
+    }
+}
+
+/// Legendre coefficients of the samples `g(ξ_j)` at the rule's nodes (order: `−x_1, x_1, …`).
+fn legendre<T: Real, const N: usize>(rule: &[(f64, f64)], g: &[T; N]) -> [T; N] {
+    let mut c = [T::zero(); N];
+    for (j, &(x, w)) in rule.iter().enumerate() {
+        for (side, sign) in [-T::one(), T::one()].into_iter().enumerate() {
+            let xi = T::lit(x) * sign;
+            let wg = T::lit(w) * g[2 * j + side];
+            let (mut p_prev, mut p) = (T::zero(), T::one());
+            for k in 0..N {
+                c[k] = c[k] + wg * p;
+                let kf = T::from(k).unwrap();
+                let next = ((kf + kf + T::one()) * xi * p - kf * p_prev) / (kf + T::one());
+                p_prev = p;
+                p = next;
+            }
+        }
+    }
+    for (k, ck) in c.iter_mut().enumerate() {
+        *ck = *ck * (T::from(2 * k + 1).unwrap() * T::lit(0.5));
+    }
+    c
+}
+
+/// The nodes `ξ_j` of the rule in the order [`legendre`] expects.
+fn node<T: Real>(rule: &[(f64, f64)], i: usize) -> T {
+    let x = T::lit(rule[i / 2].0);
+    if i % 2 == 0 {
+        -x
+    } else {
+        x
+    }
+}
+
+fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
+    if N >= 2 {
+        c[N - 1].abs() + c[N - 2].abs()
+    } else {
+        T::zero()
+    }
+}
+
+/// A v-panel (module docs).
+fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)]) -> Panel<T> {
+    // v ∈ [1/b, 1/a] after the foot, [a, b] before it; r its half-width, without cancellation
+    let (vc, r) = if half.second {
+        let r = (b - a) / (a * b) * T::lit(0.5);
+        (b.recip() + r, r)
+    } else {
+        let r = (b - a) * T::lit(0.5);
+        (a + r, r)
+    };
+    let mut g = [T::zero(); N];
+    let (mut f_max, mut g_max, mut over_max) = (T::zero(), T::zero(), T::zero());
+    for (i, gi) in g.iter_mut().enumerate() {
+        let v = vc + r * node::<T>(rule, i);
+        let y = if half.second { v.recip() } else { v };
+        let fy = f.eval(y);
+        let over = (T::one() + v * v).recip();
+        *gi = fy * over;
+        f_max = f_max.max(fy.abs());
+        g_max = g_max.max(gi.abs());
+        over_max = over_max.max(over);
+    }
+    let c = legendre::<T, N>(rule, &g);
+    let mut m = [T::zero(); N];
+    exp_legendre_moments(half.big_h * r, &mut m);
+    let mut sum = T::zero();
+    for k in 0..N {
+        sum = sum + c[k] * m[k];
+    }
+    let w = factor(half, a, b) * r;
+    let mass = w * m[0];
+    Panel { value: w * sum, error: mass * tail_estimate(&c), bound: mass * g_max, mass_over: mass * over_max, f_max }
+}
+
+/// A tail panel (module docs): `[a, b]` after the foot, `a ≤ b/4`.
+fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)]) -> Panel<T> {
+    let r = (b - a) * T::lit(0.5);
+    let yc = a + r;
+    let mut g = [T::zero(); N];
+    let (mut f_max, mut g_max) = (T::zero(), T::zero());
+    for (i, gi) in g.iter_mut().enumerate() {
+        let y = yc + r * node::<T>(rule, i);
+        let fy = f.eval(y);
+        *gi = fy / (T::one() + y * y);
+        f_max = f_max.max(fy.abs());
+        g_max = g_max.max(gi.abs());
+    }
+    let c = legendre::<T, N>(rule, &g);
+    // Σ c_k P_k(ξ) → Σ q_k u^k, u = y/b, ξ = (y − yc)/r = α u + β
+    let (alpha, beta) = (b / r, -yc / r);
+    let hat = legendre_to_monomial(&c);
+    let mut q = [T::zero(); N];
+    for j in (0..N).rev() {
+        // q ← q·(αu + β) + hat_j
+        let mut next = [T::zero(); N];
+        for i in 0..N {
+            let shifted = if i > 0 { q[i - 1] * alpha } else { T::zero() };
+            next[i] = shifted + q[i] * beta;
+        }
+        next[0] = next[0] + hat[j];
+        q = next;
+    }
+    // U_k = b s_{k+2}(H/b) − e^{−H(1/a − 1/b)} a (a/b)^k s_{k+2}(H/a)
+    let big_h = half.big_h;
+    let mut s_b = [T::zero(); MAX_N + 2];
+    en_scaled(big_h / b, &mut s_b[..N + 2]);
+    let mut s_a = [T::zero(); MAX_N + 2];
+    let far = a > T::zero() && (big_h / a).is_finite();
+    let decay = if far { (-big_h * ((b - a) / (a * b))).exp() } else { T::zero() };
+    if far && decay > T::zero() {
+        en_scaled(big_h / a, &mut s_a[..N + 2]);
+    }
+    let (mut sum, mut mass) = (T::zero(), T::zero());
+    let mut ratio = T::one();
+    let ab = if b > T::zero() { a / b } else { T::zero() };
+    for k in 0..N {
+        let tail = if decay > T::zero() { decay * a * ratio * s_a[k + 1] } else { T::zero() };
+        let u = b * s_b[k + 1] - tail;
+        if k == 0 {
+            mass = u;
+        }
+        sum = sum + q[k] * u;
+        ratio = ratio * ab;
+    }
+    let w = factor(half, a, b);
+    let mass = w * mass;
+    Panel { value: w * sum, error: mass * tail_estimate(&c), bound: mass * g_max, mass_over: mass, f_max }
+}
+
+/// The monomial coefficients in `ξ` of `Σ c_k P_k(ξ)`. On a resolved panel `|c_k|` decays
+/// faster than the `< (1+√2)^k` growth of `P_k`'s monomial coefficients, so the rounding this
+/// adds stays of the order of `ε Σ|c_k|`.
+fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
+    let mut hat = [T::zero(); N];
+    let mut p_prev = [T::zero(); N];
+    let mut p_cur = [T::zero(); N];
+    if N == 0 {
+        return hat;
+    }
+    p_cur[0] = T::one();
+    for k in 0..N {
+        for i in 0..=k {
+            hat[i] = hat[i] + c[k] * p_cur[i];
+        }
+        if k + 1 < N {
+            let kf = T::from(k).unwrap();
+            let mut next = [T::zero(); N];
+            for i in 0..=k + 1 {
+                let shifted = if i > 0 { p_cur[i - 1] } else { T::zero() };
+                next[i] = ((kf + kf + T::one()) * shifted - kf * p_prev[i]) / (kf + T::one());
+            }
+            p_prev = p_cur;
+            p_cur = next;
+        }
+    }
+    hat
+}
+
+/// `out[k] = M_k(λ) = ∫_{−1}^{1} e^{−λ(1+ξ)} P_k(ξ) dξ = 2(−1)^k e^{−λ} i_k(λ)`, `λ ≥ 0`,
+/// `k < out.len() ≤ MAX_N`. The three-term recurrence `i_{k−1} − i_{k+1} = (2k+1) i_k/λ`
+/// (DLMF 10.51.4) is stable upward while `k ≲ λ` and downward above, so:
+/// * `λ ≤ 1`: the all-positive series `i_k(λ) = λ^k/(2k+1)!! Σ_m (λ²/2)^m/(m! (2k+3)…(2k+2m+1))`
+///   (DLMF 10.53.1), 10 terms (the 10th is below `0.5^10/10! < 1e-9` of the first, times
+///   `1/((2k+3)…)`: below f64 rounding);
+/// * `1 < λ < K` (`K = out.len()`): Miller's backward recurrence from order
+///   `K + 24` (the minimal solution's share grows by `≥ (2k/λ)` per step: `≥ 2^24`), normalised
+///   by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`;
+/// * `λ ≥ K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`.
+pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
+    let n = out.len().min(MAX_N);
+    if n == 0 {
+        return;
+    }
+    for o in out.iter_mut() {
+        *o = T::zero();
+    }
+    if !(lambda > T::zero()) {
+        out[0] = T::lit(2.0);
+        return;
+    }
+    if !lambda.is_finite() {
+        return;
+    }
+    let two = T::lit(2.0);
+    let e2 = (-(lambda + lambda)).exp();
+    // e^{−λ} i_0(λ)
+    let i0 = -(-(lambda + lambda)).exp_m1() / (lambda + lambda);
+    if lambda <= T::one() {
+        let x = lambda * lambda * T::lit(0.5);
+        let scale = (-lambda).exp();
+        let mut lead = T::one(); // λ^k/(2k+1)!!
+        for k in 0..n {
+            if k > 0 {
+                lead = lead * lambda / T::from(2 * k + 1).unwrap();
+            }
+            let mut term = T::one();
+            let mut sum = T::one();
+            for m in 1..=10 {
+                term = term * x / (T::from(m).unwrap() * T::from(2 * k + 2 * m + 1).unwrap());
+                sum = sum + term;
+            }
+            out[k] = lead * sum * scale;
+        }
+    } else if lambda < T::from(n).unwrap() {
+        let inv = lambda.recip();
+        let top = n + MILLER_EXTRA;
+        let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
+        // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k
+        for k in (1..=top).rev() {
+            if k < n {
+                out[k] = cur;
+            }
+            let below = above + T::from(2 * k + 1).unwrap() * inv * cur;
+            above = cur;
+            cur = below;
+            if cur > T::lit(1e20) {
+                let s = T::lit(1e-20);
+                cur = cur * s;
+                above = above * s;
+                for o in out.iter_mut().take(n) {
+                    *o = *o * s;
+                }
+            }
+        }
+        out[0] = cur;
+        let norm = i0 / cur;
+        for o in out.iter_mut().take(n) {
+            *o = *o * norm;
+        }
+    } else {
+        out[0] = i0;
+        if n > 1 {
+            out[1] = ((T::one() + e2) * T::lit(0.5) - i0) / lambda;
+        }
+        for k in 1..n.saturating_sub(1) {
+            out[k + 1] = out[k - 1] - T::from(2 * k + 1).unwrap() / lambda * out[k];
+        }
+    }
+    for (k, o) in out.iter_mut().enumerate().take(n) {
+        *o = *o * two;
+        if k % 2 == 1 {
+            *o = -*o;
+        }
+    }
+}
