@@ -82,14 +82,15 @@ where
         Some(r) if N <= MAX_N => r,
         _ => return T::zero(),
     };
-    let mut stack = [(T::zero(), T::zero()); STACK];
-    stack[0] = (lo, hi);
+    // (a, b, relative error estimate of the parent panel)
+    let mut stack = [(T::zero(), T::zero(), T::infinity()); STACK];
+    stack[0] = (lo, hi, T::infinity());
     let mut depth = 1;
     let mut total = T::zero();
     let mut budget = control.max_panels;
     while depth > 0 {
         depth -= 1;
-        let (a, b) = stack[depth];
+        let (a, b, parent) = stack[depth];
         if !(b > a) {
             continue;
         }
@@ -102,8 +103,14 @@ where
         budget = budget.saturating_sub(1);
         run.f_max = run.f_max.max(panel.f_max);
         let scale = run.f_max * panel.mass_over;
-        let accepted = panel.error <= control.tolerance * panel.value.abs().max(control.floor * scale)
-            || panel.bound <= control.tolerance * control.floor * total.abs();
+        let relative = if panel.bound > T::zero() { panel.error / panel.bound } else { T::zero() };
+        // Halving a panel shrinks a resolvable tail by far more than 8 (by 2^N on a smooth
+        // stretch); a tail near √ε that did not shrink is the rounding of F's own evaluation
+        // (e.g. 1 − μ formed from μ near a peak), which no refinement removes.
+        let plateau = relative <= T::epsilon().sqrt() && relative * T::lit(8.0) >= parent;
+        let accepted = panel.error <= (control.tolerance * panel.value.abs().max(control.floor * scale)).max(panel.noise)
+            || panel.bound <= control.tolerance * control.floor * total.abs()
+            || plateau;
         let can_split = budget >= 2 && depth + 2 <= STACK && (b - a) > T::epsilon() * b;
         if accepted || !can_split {
             total = total + panel.value;
@@ -112,11 +119,11 @@ where
         let mid = a + (b - a) * T::lit(0.5);
         // the bright end (weight 1: low y before the foot, high y after it) on top of the stack
         if half.second {
-            stack[depth] = (a, mid);
-            stack[depth + 1] = (mid, b);
+            stack[depth] = (a, mid, relative);
+            stack[depth + 1] = (mid, b, relative);
         } else {
-            stack[depth] = (mid, b);
-            stack[depth + 1] = (a, mid);
+            stack[depth] = (mid, b, relative);
+            stack[depth + 1] = (a, mid, relative);
         }
         depth += 2;
     }
@@ -131,6 +138,8 @@ struct Panel<T> {
     error: T,
     /// Weight mass × largest `|G|`: a bound on `|value|`.
     bound: T,
+    /// The error rounding alone leaves in the estimate and the value: no refinement goes below.
+    noise: T,
     /// Weight mass × largest `1/(1+v²)`: the panel's scale per unit of `F`.
     mass_over: T,
     /// Largest `|F|` at the nodes.
@@ -220,7 +229,9 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     }
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
-    Panel { value: w * sum, error: mass * tail_estimate(&c), bound: mass * g_max, mass_over: mass * over_max, f_max }
+    let bound = mass * g_max;
+    let noise = T::from(4 * N).unwrap() * T::epsilon() * bound;
+    Panel { value: w * sum, error: mass * tail_estimate(&c), bound, noise, mass_over: mass * over_max, f_max }
 }
 
 /// A tail panel (module docs): `[a, b]` after the foot, `a ≤ b/4`.
@@ -275,7 +286,22 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     }
     let w = factor(half, a, b);
     let mass = w * mass;
-    Panel { value: w * sum, error: mass * tail_estimate(&c), bound: mass * g_max, mass_over: mass, f_max }
+    let bound = mass * g_max;
+    // Rounding: the conversion to monomials in u sums terms up to D_k |c_k|, D_k the central
+    // Delannoy number (the ℓ1 norm of the shifted P_k's coefficients; OEIS A001850); on a
+    // resolved panel |c_k| falls faster than D_k grows.
+    let (mut d_prev, mut d_cur) = (T::zero(), T::one());
+    let mut spread = T::from(4 * N).unwrap() * g_max;
+    for (k, ck) in c.iter().enumerate() {
+        spread = spread + d_cur * ck.abs();
+        // (k+1) D_{k+1} = 3(2k+1) D_k − k D_{k−1}
+        let kf = T::from(k).unwrap();
+        let next = (T::lit(3.0) * (kf + kf + T::one()) * d_cur - kf * d_prev) / (kf + T::one());
+        d_prev = d_cur;
+        d_cur = next;
+    }
+    let noise = T::epsilon() * mass * spread;
+    Panel { value: w * sum, error: mass * tail_estimate(&c), bound, noise, mass_over: mass, f_max }
 }
 
 /// The monomial coefficients in `ξ` of `Σ c_k P_k(ξ)`. On a resolved panel `|c_k|` decays

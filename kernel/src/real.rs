@@ -37,6 +37,7 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// See [`Real::PANEL_NODES`].
     const MAX_PANELS: usize;
 
+
     /// Converts an `f64` constant to this precision (rounding to nearest).
     fn lit(x: f64) -> Self;
     /// Converts to `f64` (exact for both precisions).
