@@ -35,6 +35,9 @@ pub struct Physics<'a, T, D, P> {
 /// `μ = −σ(1 − y²)/(1 + y²)`, `c = (σ d_el (1 − y²) + 2 d_c y)/(1 + y²)`, `σ = ∓1` before/after.
 struct HalfIntegrand<'a, T, D, P> {
     sigma: T,
+    /// Pass `1 ∓ μ` exactly to the phase function ([`PhaseFunction::eval_sides`]); the fixed
+    /// method forms them from `μ`, as the shaders do.
+    exact_sides: bool,
     d_el: T,
     d_c: T,
     light: &'a D,
@@ -49,7 +52,15 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
         let one_minus = S::cst(T::one()) - y2;
         let mu = (one_minus * inv).scale(-self.sigma);
         let c = (one_minus.scale(self.sigma * self.d_el) + y.scale(self.d_c + self.d_c)) * inv;
-        self.light.eval(c) * self.phase.eval(mu)
+        let p = if self.exact_sides {
+            // 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²), in the order σ decides
+            let (far, near) = ((y2 * inv).scale(T::lit(2.0)), inv.scale(T::lit(2.0)));
+            let (minus, plus) = if self.sigma < T::zero() { (far, near) } else { (near, far) };
+            self.phase.eval_sides(mu, minus, plus)
+        } else {
+            self.phase.eval(mu)
+        };
+        self.light.eval(c) * p
     }
 }
 
@@ -209,7 +220,8 @@ where
     P: PhaseFunction<T>,
     E: ExpIntegral<T>,
 {
-    let f = HalfIntegrand { sigma, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
+    let exact_sides = matches!(method, Method::Panels(_));
+    let f = HalfIntegrand { sigma, exact_sides, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
     if isotropic {
         let m: [T; N] = moments(half, ei, count);
         return f.eval(half.y_mid()) * m[0];

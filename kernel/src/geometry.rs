@@ -42,6 +42,41 @@ pub fn normalize<T: Real>(a: [T; 3]) -> [T; 3] {
     [s[0] / l, s[1] / l, s[2] / l]
 }
 
+/// `(s, e)` with `s = a + b` rounded and `s + e = a + b` exactly (Knuth's two-sum).
+#[inline]
+fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
+    let s = a + b;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    (s, if e.is_finite() { e } else { T::zero() })
+}
+
+/// `(p, e)` with `p = a·b` rounded and `p + e = a·b` exactly (Dekker's product by Veltkamp's
+/// split into halves of `⌈p/2⌉` bits, `T::SPLITTER = 2^⌈p/2⌉ + 1`); `e = 0` where the split
+/// overflows.
+#[inline]
+fn two_product<T: Real>(a: T, b: T) -> (T, T) {
+    let p = a * b;
+    let split = |x: T| {
+        let c = T::lit(T::SPLITTER) * x;
+        let hi = c - (c - x);
+        (hi, x - hi)
+    };
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    (p, if e.is_finite() { e } else { T::zero() })
+}
+
+/// `a·b − c·d` with the products' rounding errors carried: a few ulps of the result even when
+/// the two products nearly cancel.
+#[inline]
+fn diff_of_products<T: Real>(a: T, b: T, c: T, d: T) -> T {
+    let (p, ep) = two_product(a, b);
+    let (q, eq) = two_product(c, d);
+    (p - q) + (ep - eq)
+}
+
 /// The ray segment and light in the canonical frame of the light's foot.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Canonical<T> {
@@ -74,6 +109,44 @@ impl<T: Real> Canonical<T> {
         let h = length(perp);
         let d_c = if h > T::zero() { dot(perp, a) / h } else { T::zero() };
         Canonical { h, x_h, d_el: dot(d, a), d_c, t0, t1 }
+    }
+
+    /// The same reduction with the distance `h` and the cosine `d_c` accurate to a few ulps
+    /// however close the light is to the ray line. [`Canonical::new`] forms
+    /// `x_h d − (p − o)`, which cancels: its absolute error `ε|p − o|` is a relative error
+    /// `ε|p − o|/h` of `h` (1e-6 in f32 at `|p − o| = 300 h`, enough to move a `c^64` beam by
+    /// 1e-3). Here `p − o` is kept exactly as a sum of two floats (Knuth's two-sum), and
+    /// `w = (p − o) × dir` is formed from exact products (Dekker's split): `h = |w|/|dir|`,
+    /// and the unit vector from the light to the foot is `−(dir × w)/(|dir||w|)` (`dir ⊥ w`: no
+    /// cancellation). Where the split would overflow (inputs beyond `√(max)/2^{p/2}`) it falls
+    /// back to [`Canonical::new`].
+    pub fn new_accurate(origin: [T; 3], dir: [T; 3], t0: T, t1: T, light: [T; 3], axis: [T; 3]) -> Self {
+        let plain = Self::new(origin, dir, t0, t1, light, axis);
+        let scale = length(dir);
+        if !(scale > T::zero() && scale.is_finite()) {
+            return plain;
+        }
+        let mut hi = [T::zero(); 3];
+        let mut lo = [T::zero(); 3];
+        for i in 0..3 {
+            (hi[i], lo[i]) = two_sum(light[i], -origin[i]);
+        }
+        // w = (hi + lo) × dir: the hi part from exact products, the lo part plainly
+        let cross_exact = |i: usize, j: usize| diff_of_products(hi[i], dir[j], hi[j], dir[i]) + (lo[i] * dir[j] - lo[j] * dir[i]);
+        let w = [cross_exact(1, 2), cross_exact(2, 0), cross_exact(0, 1)];
+        if !w.iter().all(|x| x.is_finite()) {
+            return plain;
+        }
+        let w_len = length(w);
+        let h = w_len / scale;
+        if !(h.is_finite() && h > T::zero()) {
+            return Canonical { h: if w_len == T::zero() { T::zero() } else { plain.h }, d_c: if w_len == T::zero() { T::zero() } else { plain.d_c }, ..plain };
+        }
+        let a = normalize(axis);
+        // n = −(dir × w)/(|dir||w|), scaled by the largest components first
+        let (dn, wn) = (normalize(dir), normalize(w));
+        let n = [-(dn[1] * wn[2] - dn[2] * wn[1]), -(dn[2] * wn[0] - dn[0] * wn[2]), -(dn[0] * wn[1] - dn[1] * wn[0])];
+        Canonical { h, d_c: dot(n, a), ..plain }
     }
 
     /// `u = (t − x_h)/h` of a segment end.

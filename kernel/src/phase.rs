@@ -12,6 +12,15 @@ use crate::scalar::Scalar;
 pub trait PhaseFunction<T: Real> {
     /// `P(μ)` for `μ ∈ [−1, 1]`.
     fn eval<S: Scalar<T>>(&self, mu: S) -> S;
+    /// `P(μ)` given `1 − μ` and `1 + μ` to full relative accuracy as well (the error-controlled
+    /// path knows them exactly as `2y²/(1+y²)` and `2/(1+y²)`). Near a lobe's peak `μ → ±1`,
+    /// forming `1 ∓ μ` from `μ` loses `ε/(1 ∓ μ)` of it, which a peaked phase function
+    /// amplifies (Henyey–Greenstein at `g = 0.99`: `3/(1 − g)²`-fold). Phase functions peaked
+    /// at the poles override this; the default ignores the sides and calls [`eval`](Self::eval).
+    fn eval_sides<S: Scalar<T>>(&self, mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
+        let _ = (one_minus_mu, one_plus_mu);
+        self.eval(mu)
+    }
     /// `true` if `P` is constant: the kernel then skips the expansion.
     fn is_isotropic(&self) -> bool {
         false
@@ -28,18 +37,25 @@ fn inv_4pi<T: Real>() -> T {
     T::FRAC_1_PI() * T::lit(0.25)
 }
 
-/// `(1 + g² − 2gμ)^{−3/2}`, the Henyey–Greenstein kernel without its constant.
+/// `(1 − μ, 1 + μ)` formed from `μ` (for [`PhaseFunction::eval`]).
 #[inline]
-fn hg_kernel<T: Real, S: Scalar<T>>(g: T, mu: S) -> S {
+fn sides<T: Real, S: Scalar<T>>(mu: S) -> (S, S) {
+    (mu.scale(-T::one()).shift(T::one()), mu.shift(T::one()))
+}
+
+/// `(1 + g² − 2gμ)^{−3/2}`, the Henyey–Greenstein kernel without its constant, from
+/// `1 − μ` and `1 + μ`.
+#[inline]
+fn hg_kernel<T: Real, S: Scalar<T>>(g: T, one_minus_mu: S, one_plus_mu: S) -> S {
     // 1 + g² − 2gμ as two non-negative terms, so that it never cancels at the lobe's peak
-    // (μ = ±1 with |g| → 1, where 1 + g² ≈ 2gμ rounded to 0 and gave +∞; fuzz finding):
+    // (μ = ±1 with |g| → 1, where 1 + g² ≈ 2gμ rounded to 0 and gave +∞):
     // g ≥ 0: (1 − g)² + 2g(1 − μ); g < 0: (1 + g)² − 2g(1 + μ).
     let base = if g >= T::zero() {
         let a = T::one() - g;
-        mu.scale(-T::one()).shift(T::one()).scale(g + g).shift(a * a)
+        one_minus_mu.scale(g + g).shift(a * a)
     } else {
         let b = T::one() + g;
-        mu.shift(T::one()).scale(-(g + g)).shift(b * b)
+        one_plus_mu.scale(-(g + g)).shift(b * b)
     };
     (base * base.sqrt()).recip()
 }
@@ -81,8 +97,12 @@ pub struct HenyeyGreenstein<T> {
 
 impl<T: Real> PhaseFunction<T> for HenyeyGreenstein<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let (minus, plus) = sides(mu);
+        self.eval_sides(mu, minus, plus)
+    }
+    fn eval_sides<S: Scalar<T>>(&self, _mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
         let g = self.g;
-        hg_kernel(g, mu).scale(one_minus_sq(g) * inv_4pi::<T>())
+        hg_kernel(g, one_minus_mu, one_plus_mu).scale(one_minus_sq(g) * inv_4pi::<T>())
     }
     fn is_isotropic(&self) -> bool {
         self.g == T::zero()
@@ -106,6 +126,12 @@ impl<T: Real> PhaseFunction<T> for Schlick<T> {
         let d = mu.scale(-k).shift(T::one());
         (d * d).recip().scale(one_minus_sq(k) * inv_4pi::<T>())
     }
+    fn eval_sides<S: Scalar<T>>(&self, _mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
+        // 1 − kμ = (1 − k) + k(1 − μ) for k ≥ 0, (1 + k) − k(1 + μ) for k < 0: no cancellation
+        let k = self.k;
+        let d = if k >= T::zero() { one_minus_mu.scale(k).shift(T::one() - k) } else { one_plus_mu.scale(-k).shift(T::one() + k) };
+        (d * d).recip().scale(one_minus_sq(k) * inv_4pi::<T>())
+    }
     fn is_isotropic(&self) -> bool {
         self.k == T::zero()
     }
@@ -124,9 +150,13 @@ pub struct CornetteShanks<T> {
 
 impl<T: Real> PhaseFunction<T> for CornetteShanks<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
+        let (minus, plus) = sides(mu);
+        self.eval_sides(mu, minus, plus)
+    }
+    fn eval_sides<S: Scalar<T>>(&self, mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
         let g = self.g;
         let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * one_minus_sq(g) / (T::lit(2.0) + g * g);
-        (hg_kernel(g, mu) * (mu * mu).shift(T::one())).scale(k)
+        (hg_kernel(g, one_minus_mu, one_plus_mu) * (mu * mu).shift(T::one())).scale(k)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g, "phase.g")
@@ -147,8 +177,12 @@ pub struct TwoLobeHenyeyGreenstein<T> {
 
 impl<T: Real> PhaseFunction<T> for TwoLobeHenyeyGreenstein<T> {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
-        let a = HenyeyGreenstein { g: self.g1 }.eval(mu).scale(self.w);
-        let b = HenyeyGreenstein { g: self.g2 }.eval(mu).scale(T::one() - self.w);
+        let (minus, plus) = sides(mu);
+        self.eval_sides(mu, minus, plus)
+    }
+    fn eval_sides<S: Scalar<T>>(&self, mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
+        let a = HenyeyGreenstein { g: self.g1 }.eval_sides(mu, one_minus_mu, one_plus_mu).scale(self.w);
+        let b = HenyeyGreenstein { g: self.g2 }.eval_sides(mu, one_minus_mu, one_plus_mu).scale(T::one() - self.w);
         a + b
     }
     fn is_isotropic(&self) -> bool {
@@ -191,6 +225,16 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
             AnyPhase::Schlick(p) => p.eval(mu),
             AnyPhase::CornetteShanks(p) => p.eval(mu),
             AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval(mu),
+        }
+    }
+    fn eval_sides<S: Scalar<T>>(&self, mu: S, one_minus_mu: S, one_plus_mu: S) -> S {
+        match self {
+            AnyPhase::Isotropic => Isotropic.eval(mu),
+            AnyPhase::Rayleigh => Rayleigh.eval(mu),
+            AnyPhase::HenyeyGreenstein(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::Schlick(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::CornetteShanks(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
         }
     }
     fn is_isotropic(&self) -> bool {

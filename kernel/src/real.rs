@@ -38,6 +38,10 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     const MAX_PANELS: usize;
 
 
+    /// Veltkamp's splitting constant `2^⌈p/2⌉ + 1` (`p`: significand bits) of the exact
+    /// products in [`crate::geometry::Canonical::new_accurate`].
+    const SPLITTER: f64;
+
     /// Converts an `f64` constant to this precision (rounding to nearest).
     fn lit(x: f64) -> Self;
     /// Converts to `f64` (exact for both precisions).
@@ -51,6 +55,7 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
 impl Real for f64 {
     type Vec3 = glam::DVec3;
     // Target 1e-10 of max(|exact|, 1e-10·scale); the tail estimate is kept 100× below it.
+    const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
     const PANEL_NODES: usize = 12;
     const PANEL_TOLERANCE: f64 = 1e-12;
     const PANEL_FLOOR: f64 = 1e-10;
@@ -88,6 +93,7 @@ impl Real for f32 {
     type Vec3 = glam::Vec3;
     // Target 1e-4 of max(|exact|, 1e-4·scale); the estimate is kept 10× below it (its own
     // rounding noise is ~N·ε ≈ 1e-6).
+    const SPLITTER: f64 = 4097.0; // 2^12 + 1
     const PANEL_NODES: usize = 8;
     const PANEL_TOLERANCE: f64 = 1e-5;
     const PANEL_FLOOR: f64 = 1e-4;

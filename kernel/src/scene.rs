@@ -60,6 +60,7 @@ pub struct Scene<T: Real, D, P> {
     medium: Medium<T>,
     phase: P,
     canonical: Canonical<T>,
+    canonical_fixed: Canonical<T>,
 }
 
 /// Checks a ray, light, medium and phase function, naming the first bad field.
@@ -100,7 +101,7 @@ where
     /// power, an inverted spot cone.
     pub fn new(ray: Ray<T>, light: PointLight<T, D>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
         validate(&ray, &light, &medium, &phase)?;
-        let canonical = Canonical::new(
+        let args = (
             T::vec3_to_array(ray.origin),
             T::vec3_to_array(ray.dir),
             ray.t_min,
@@ -108,7 +109,9 @@ where
             T::vec3_to_array(light.position),
             light.distribution.axis(),
         );
-        Ok(Scene { ray, light, medium, phase, canonical })
+        let canonical = Canonical::new_accurate(args.0, args.1, args.2, args.3, args.4, args.5);
+        let canonical_fixed = Canonical::new(args.0, args.1, args.2, args.3, args.4, args.5);
+        Ok(Scene { ray, light, medium, phase, canonical, canonical_fixed })
     }
 
     /// The ray.
@@ -127,7 +130,9 @@ where
     pub fn phase(&self) -> &P {
         &self.phase
     }
-    /// The canonical reduction (DESIGN §2) of the scene.
+    /// The canonical reduction (DESIGN §2) of the scene, by
+    /// [`Canonical::new_accurate`] (the fixed-term methods use [`Canonical::new`], as the
+    /// shaders do).
     pub fn canonical(&self) -> &Canonical<T> {
         &self.canonical
     }
@@ -170,7 +175,7 @@ where
 
     /// `L_m` with one `N`-term expansion per piece (the fixed-cost method the shaders use).
     pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
-        in_scatter_canonical::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Fixed(expansion), &Production)
+        in_scatter_canonical::<T, D, P, Production, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(expansion), &Production)
     }
 
     /// `L_m` over the sub-segments `lit` of `[t_min, t_max]` only (a shadowed ray, as sums of
@@ -187,7 +192,7 @@ where
             if !(b > a) {
                 continue;
             }
-            let mut g = self.canonical;
+            let mut g = self.canonical_fixed;
             g.t0 = a;
             g.t1 = b;
             let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), Method::Fixed(expansion), &Production);
@@ -205,7 +210,7 @@ where
     /// `precision`, at most `max_iterations` iterations), no stabilised routes.
     pub fn in_scatter_paper<const N: usize>(&self, precision: T, max_iterations: usize) -> T {
         let ei = PaperEq27 { precision, max_iterations };
-        in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical, &self.physics(), Method::Fixed(Expansion::Taylor), &ei)
+        in_scatter_canonical::<T, D, P, PaperEq27<T>, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(Expansion::Taylor), &ei)
     }
 
     /// `L_m` by ray marching with `steps` samples (see [`crate::march`]): the fixed-step

@@ -42,7 +42,9 @@ fn cases() -> Vec<Case> {
             let g = scene.canonical();
             let o = rec.ray.origin;
             let p = rec.light.position;
-            let f32_ok = (o - p).length() <= 300.0 * g.h;
+            let _ = (o, p, g);
+            let exact = v["in_scatter"].as_f64().unwrap();
+            let f32_ok = exact >= 1e-30;
             Case {
                 category: v["category"].as_str().unwrap().to_string(),
                 exact: v["in_scatter"].as_f64().unwrap(),
@@ -72,7 +74,9 @@ fn hard_classes_against_quadrature() {
     for c in &cases {
         let s = scene64(c);
         let default = s.in_scatter();
-        let e64 = err(default, c, 1e-10);
+        // a value below f64's normal range (the deepest thick scenes, e^{−σt r} < 1e-308) has
+        // no f64 to be compared with: it must come out 0 or subnormal, not more
+        let e64 = if c.exact < f64::MIN_POSITIVE { if default < f64::MIN_POSITIVE { 0.0 } else { f64::INFINITY } } else { err(default, c, 1e-10) };
         f64_worst = f64_worst.max(e64);
         if !(e64 <= 1e-10) {
             failures.push(format!("f64 {}: err {e64:.2e} (got {default}, exact {})", c.category, c.exact));
