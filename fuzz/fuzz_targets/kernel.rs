@@ -1,5 +1,5 @@
-//! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, both
-//! expansions, 4 and 6 terms, lit sub-segments. Oracle: no panic; never NaN; never negative;
+//! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
+//! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments. Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -47,6 +47,7 @@ fuzz_target!(|data: &[u8]| {
     // f64, checked
     let (r, l, m, p) = scene_types!(f64, DVec3)(&raw);
     if let Ok(s) = Scene::new(r, l, m, p) {
+        check(&raw, s.in_scatter(), f64::MAX, "f64/default");
         for e in [Expansion::Chebyshev, Expansion::Taylor] {
             check(&raw, s.in_scatter_with::<4>(e), f64::MAX, "f64/4");
             check(&raw, s.in_scatter_with::<6>(e), f64::MAX, "f64/6");
@@ -68,6 +69,7 @@ fuzz_target!(|data: &[u8]| {
     };
     let (r, l, m, p) = scene_types!(f32, Vec3)(&raw);
     if let Ok(s) = Scene::new(r, l, m, p) {
+        check(&raw32, s.in_scatter() as f64, f32::MAX as f64, "f32/default");
         for e in [Expansion::Chebyshev, Expansion::Taylor] {
             check(&raw32, s.in_scatter_with::<4>(e) as f64, f32::MAX as f64, "f32/4");
             check(&raw32, s.in_scatter_with::<6>(e) as f64, f32::MAX as f64, "f32/6");

@@ -339,10 +339,11 @@ fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
 /// * `λ ≤ 1`: the all-positive series `i_k(λ) = λ^k/(2k+1)!! Σ_m (λ²/2)^m/(m! (2k+3)…(2k+2m+1))`
 ///   (DLMF 10.53.1), 10 terms (the 10th is below `0.5^10/10! < 1e-9` of the first, times
 ///   `1/((2k+3)…)`: below f64 rounding);
-/// * `1 < λ < K` (`K = out.len()`): Miller's backward recurrence from order
-///   `K + 24` (the minimal solution's share grows by `≥ (2k/λ)` per step: `≥ 2^24`), normalised
-///   by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`;
-/// * `λ ≥ K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`.
+/// * `1 < λ < 2K` (`K = out.len()`): Miller's backward recurrence from order `K + λ + 24`
+///   (above `k ≈ λ` the minimal solution's share grows at least 2-fold per step down),
+///   normalised by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`;
+/// * `λ ≥ 2K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`
+///   (upward is stable while `k ≤ λ/2`; at `k ≈ λ` it loses a few dozen ulps).
 pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
     let n = out.len().min(MAX_N);
     if n == 0 {
@@ -378,9 +379,9 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
             }
             out[k] = lead * sum * scale;
         }
-    } else if lambda < T::from(n).unwrap() {
+    } else if lambda < T::from(2 * n).unwrap() {
         let inv = lambda.recip();
-        let top = n + MILLER_EXTRA;
+        let top = n + MILLER_EXTRA + lambda.ceil().to_usize().unwrap_or(0);
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
         // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k
         for k in (1..=top).rev() {
