@@ -26,11 +26,22 @@ fn e1_by_series<T: Real>(z: C<T>) -> C<T> {
     ein(z) - z.ln() - T::lit(EULER_GAMMA)
 }
 
+/// NaN, the value outside the domain `Re z ≥ 0`.
+#[inline]
+fn outside<T: Real>() -> C<T> {
+    C::new(T::nan(), T::nan())
+}
+
 /// The exponential integral `E1(z) = ∫_z^∞ e^{−t}/t dt` for `Re z ≥ 0` (principal branch).
 /// `E1(0) = +∞`. Underflows to 0 where `Re z` exceeds the exponent range; use
-/// [`e1_scaled`] there.
+/// [`e1_scaled`] there. For `Re z < 0` (or a NaN part) it returns NaN: the fixed term counts
+/// were derived for the right half-plane only, and near the negative real axis neither the
+/// series budget nor the fraction's would hold (A&S 5.1.11, 5.1.22).
 #[inline]
 pub fn e1<T: Real>(z: C<T>) -> C<T> {
+    if !(z.re >= T::zero()) || z.im.is_nan() {
+        return outside();
+    }
     if in_series_region(z) {
         e1_by_series(z)
     } else {
@@ -39,9 +50,12 @@ pub fn e1<T: Real>(z: C<T>) -> C<T> {
 }
 
 /// The scaled exponential integral `e^z E1(z)` for `Re z ≥ 0`; it behaves like `1/z` for large
-/// `|z|` and never overflows there.
+/// `|z|` and never overflows there. NaN for `Re z < 0`, as [`e1`].
 #[inline]
 pub fn e1_scaled<T: Real>(z: C<T>) -> C<T> {
+    if !(z.re >= T::zero()) || z.im.is_nan() {
+        return outside();
+    }
     if in_series_region(z) {
         e1_by_series(z) * z.exp()
     } else {
@@ -49,8 +63,8 @@ pub fn e1_scaled<T: Real>(z: C<T>) -> C<T> {
     }
 }
 
-/// The exponential integral `Ei(z) = −E1(−z) + iπ·sign(Im z)` (A&S 5.1.7), for `Re z ≤ 0`;
-/// on the negative real axis it is the real `−E1(−z)`.
+/// The exponential integral `Ei(z) = −E1(−z) + iπ·sign(Im z)` (A&S 5.1.7), for `Re z ≤ 0`
+/// (NaN elsewhere, as [`e1`]); on the negative real axis it is the real `−E1(−z)`.
 #[inline]
 pub fn ei<T: Real>(z: C<T>) -> C<T> {
     let s = if z.im > T::zero() {
