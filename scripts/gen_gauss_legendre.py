@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """Prints kernel/src/expansion/gauss_table.rs: Gauss–Legendre nodes and weights on [-1, 1]
-(positive half; the rule is symmetric) for the node counts the panel integration offers.
+(positive half; the rule is symmetric) for the node counts the panel integration offers, and
+for the counts up to 16 the discrete Legendre transform at those nodes,
+L[k][i] = (2k+1)/2 · w_i · P_k(x_i) (so that c_k = Σ_i L[k][i] (g(x_i) + (−1)^k g(−x_i)) are
+the Legendre coefficients of the degree-(n−1) interpolant), each rounded once to f64.
 
 Nodes are the roots of P_n found by Newton's method from Tricomi's initial guess at 50 digits
 (mpmath), weights 2/((1 − x²) P_n'(x)²); both rounded once to f64 (error ≤ ½ ulp each).
@@ -39,6 +42,26 @@ for n in COUNTS:
         print(f"    ({mp.nstr(x, 20, min_fixed=-1, max_fixed=1)}, {mp.nstr(w, 20, min_fixed=-1, max_fixed=1)}),")
     print("];")
     print()
+TRANSFORMS = [n for n in COUNTS if n <= 16]
+for n in TRANSFORMS:
+    r = rule(n)
+    print(f"/// Discrete Legendre transform of the {n}-point rule, row `k`, column `i` (positive nodes):")
+    print(f"/// `(2k+1)/2 · w_i · P_k(x_i)`.")
+    print(f"pub const LT{n}: [f64; {n * (n // 2)}] = [")
+    for k in range(n):
+        row = ", ".join(mp.nstr((2 * k + 1) * w * mp.legendre(k, x) / 2, 20, min_fixed=-1, max_fixed=1) for x, w in r)
+        print(f"    {row},")
+    print("];")
+    print()
+print("/// The discrete Legendre transform of the `n`-point rule (row-major, `n/2` columns).")
+print("pub const fn transform(n: usize) -> Option<&'static [f64]> {")
+print("    match n {")
+for n in TRANSFORMS:
+    print(f"        {n} => Some(&LT{n}),")
+print("        _ => None,")
+print("    }")
+print("}")
+print()
 print("/// The rule with `n` points, if tabulated.")
 print("pub const fn rule(n: usize) -> Option<&'static [(f64, f64)]> {")
 print("    match n {")

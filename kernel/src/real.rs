@@ -56,7 +56,7 @@ impl Real for f64 {
     type Vec3 = glam::DVec3;
     // Target 1e-10 of max(|exact|, 1e-10·scale); the tail estimate is kept 100× below it.
     const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
-    const PANEL_NODES: usize = 12;
+    const PANEL_NODES: usize = 16;
     const PANEL_TOLERANCE: f64 = 1e-12;
     const PANEL_FLOOR: f64 = 1e-10;
     const MAX_PANELS: usize = 64;
@@ -94,7 +94,7 @@ impl Real for f32 {
     // Target 1e-4 of max(|exact|, 1e-4·scale); the estimate is kept 10× below it (its own
     // rounding noise is ~N·ε ≈ 1e-6).
     const SPLITTER: f64 = 4097.0; // 2^12 + 1
-    const PANEL_NODES: usize = 8;
+    const PANEL_NODES: usize = 12;
     const PANEL_TOLERANCE: f64 = 1e-5;
     const PANEL_FLOOR: f64 = 1e-4;
     const MAX_PANELS: usize = 32;

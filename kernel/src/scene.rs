@@ -155,10 +155,10 @@ where
     /// `+∞` exactly when the light lies on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`) and
     /// `σs·I > 0`, or when the true value exceeds the float range; never NaN.
     pub fn in_scatter(&self) -> T {
-        if T::PANEL_NODES == 12 {
-            self.in_scatter_panels::<12>(default_control())
+        if T::PANEL_NODES == 16 {
+            self.in_scatter_panels::<16>(default_control())
         } else {
-            self.in_scatter_panels::<8>(default_control())
+            self.in_scatter_panels::<12>(default_control())
         }
     }
 

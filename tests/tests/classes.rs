@@ -94,7 +94,7 @@ fn hard_classes_against_quadrature() {
         let fixed4 = err(s.in_scatter_with::<4>(Expansion::Chebyshev), c, 1e-10);
         let fixed6 = err(s.in_scatter_with::<6>(Expansion::Chebyshev), c, 1e-10);
         let peer = |n: usize| err(s.gauss_angle(GaussAngle { nodes: n, split: true, cut: Some(40.0) }).0, c, 1e-10);
-        let panels = s.in_scatter_panels_counted::<12>(default_control()).1;
+        let panels = s.in_scatter_panels_counted::<16>(default_control()).1;
         table
             .entry(c.category.clone())
             .or_default()

@@ -1,0 +1,173 @@
+//! The default (error-controlled) kernel against Gauss–Legendre in the light angle — the peer a
+//! renderer engineer would write instead — per scene class, side by side in one process, on
+//! the scenes of tests/reference/classes.jsonl (mpmath references; tests/reference/gen_classes.py).
+//!
+//! Accuracy first, outside the timed loops, against the references: the error of a method on a
+//! class is the **largest** over its scenes of `|x − exact| / max(|exact|, τ·scale)` (`τ` =
+//! 1e-10 in f64, 1e-4 in f32). Then, per class and precision, timed over all the class's
+//! scenes per iteration:
+//! * `airlight`: `Scene::in_scatter()` (the default);
+//! * `peer_equal`: the peer (split at the foot, cut where the extinction exponent has grown by
+//!   40 in f64, 20 in f32) at the fewest nodes (4 … 64) whose largest error is at most the
+//!   default's; where no count reaches it, 64 nodes (its best), flagged in the table;
+//! * `peer_24`: the peer at 24 nodes, and `airlight_at_peer_24`: the kernel with the loosest
+//!   tolerance (1e-2 … 1e-12) whose largest error is at most the peer's at 24 nodes — accuracy
+//!   per nanosecond from the other side.
+//! Also `special`: complex `e^z E1(z)` over 256 points against one libm `exp` per point, in
+//! each precision.
+//!
+//! `cargo bench -p airlight-tests --bench classes && python3 scripts/classes_table.py`
+
+use airlight::light::AnyDistribution;
+use airlight::march::GaussAngle;
+use airlight::panels::Control;
+use airlight::phase::AnyPhase;
+use airlight::special::{e1_scaled, C};
+use airlight::{default_control, Real, Scene};
+use airlight_codegen::scene_json::parse_value;
+use airlight_tests::reference_lines;
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::time::Duration;
+
+type S<T> = Scene<T, AnyDistribution<T>, AnyPhase<T>>;
+
+struct Class<T: Real> {
+    scenes: Vec<S<T>>,
+    exact: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+const NODES: [usize; 11] = [4, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+const TOLERANCES: [f64; 11] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
+
+fn load<T: Real>() -> BTreeMap<String, Class<T>> {
+    let mut out: BTreeMap<String, Class<T>> = BTreeMap::new();
+    let f32_run = T::epsilon() > T::lit(1e-10);
+    for v in reference_lines("classes.jsonl") {
+        let exact = v["in_scatter"].as_f64().unwrap();
+        // values below the precision's range (deep in thick media) have nothing to measure
+        if exact < if f32_run { 1e-30 } else { 1e-290 } {
+            continue;
+        }
+        let rec = parse_value::<T>(&v).unwrap();
+        let class = out.entry(v["category"].as_str().unwrap().to_string()).or_insert(Class { scenes: vec![], exact: vec![], scale: vec![] });
+        class.scenes.push(Scene::new(rec.ray, rec.light, rec.medium, rec.phase).unwrap());
+        class.exact.push(exact);
+        class.scale.push(v["scale"].as_f64().unwrap());
+    }
+    out
+}
+
+fn tau<T: Real>() -> f64 {
+    if T::epsilon() > T::lit(1e-10) {
+        1e-4
+    } else {
+        1e-10
+    }
+}
+
+fn largest_error<T: Real>(c: &Class<T>, f: impl Fn(&S<T>) -> T) -> f64 {
+    let t = tau::<T>();
+    c.scenes.iter().enumerate().map(|(i, s)| (f(s).to_f64_exact() - c.exact[i]).abs() / c.exact[i].abs().max(t * c.scale[i])).fold(0.0, f64::max)
+}
+
+fn peer<T: Real>(n: usize) -> GaussAngle<T> {
+    let cut = if T::epsilon() > T::lit(1e-10) { 20.0 } else { 40.0 };
+    GaussAngle { nodes: n, split: true, cut: Some(T::lit(cut)) }
+}
+
+fn ours<T: Real>(s: &S<T>, control: Control<T>) -> T {
+    if T::PANEL_NODES == 16 {
+        s.in_scatter_panels::<16>(control)
+    } else {
+        s.in_scatter_panels::<12>(control)
+    }
+}
+
+fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
+    for (name, class) in load::<T>() {
+        let ours_err = largest_error(&class, |s| s.in_scatter());
+        let panels: Vec<usize> = class
+            .scenes
+            .iter()
+            .map(|s| if T::PANEL_NODES == 16 { s.in_scatter_panels_counted::<16>(default_control()).1 } else { s.in_scatter_panels_counted::<12>(default_control()).1 })
+            .collect();
+        let peer_errs: Vec<f64> = NODES.iter().map(|&n| largest_error(&class, |s| s.gauss_angle(peer(n)).0)).collect();
+        let (n_equal, reached) = match NODES.iter().zip(&peer_errs).find(|(_, &e)| e <= ours_err) {
+            Some((&n, _)) => (n, true),
+            None => (64, false),
+        };
+        let peer_err_equal = peer_errs[NODES.iter().position(|&n| n == n_equal).unwrap()];
+        let peer24_err = peer_errs[NODES.iter().position(|&n| n == 24).unwrap()];
+        let tol_at_peer = TOLERANCES
+            .iter()
+            .copied()
+            .find(|&t| {
+                let c = Control { tolerance: T::lit(t), floor: T::lit(tau::<T>()), max_panels: T::MAX_PANELS };
+                largest_error(&class, |s| ours(s, c)) <= peer24_err
+            })
+            .unwrap_or(1e-12);
+        let control_at_peer = Control { tolerance: T::lit(tol_at_peer), floor: T::lit(tau::<T>()), max_panels: T::MAX_PANELS };
+        let ours_at_peer_err = largest_error(&class, |s| ours(s, control_at_peer));
+        let mut sorted = panels.clone();
+        sorted.sort();
+        writeln!(
+            report,
+            "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"scenes\":{},\"airlight\":{ours_err:e},\"panels_median\":{},\"panels_max\":{},\"peer_equal_nodes\":{n_equal},\"peer_equal_reached\":{reached},\"peer_equal\":{peer_err_equal:e},\"peer_24\":{peer24_err:e},\"airlight_at_peer_24_tolerance\":{tol_at_peer:e},\"airlight_at_peer_24\":{ours_at_peer_err:e}}}",
+            class.scenes.len(),
+            sorted[sorted.len() / 2],
+            sorted[sorted.len() - 1]
+        )
+        .unwrap();
+        let mut g = crit.benchmark_group(format!("classes_{label}_{name}"));
+        let sc = &class.scenes;
+        g.bench_function("airlight", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter()).fold(T::zero(), |a, x| a + x)));
+        g.bench_function("peer_equal", |b| b.iter(|| sc.iter().map(|s| black_box(s).gauss_angle(peer(n_equal)).0).fold(T::zero(), |a, x| a + x)));
+        g.bench_function("peer_24", |b| b.iter(|| sc.iter().map(|s| black_box(s).gauss_angle(peer(24)).0).fold(T::zero(), |a, x| a + x)));
+        g.bench_function("airlight_at_peer_24", |b| b.iter(|| sc.iter().map(|s| ours(black_box(s), control_at_peer)).fold(T::zero(), |a, x| a + x)));
+        g.finish();
+    }
+}
+
+fn special(crit: &mut Criterion) {
+    // 256 points over the domain the kernel uses: |z| from 1e-3 to 1e3, arguments in [−π/2, π/2]
+    let mut z64 = Vec::new();
+    let mut seed = 11u64;
+    for _ in 0..256 {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        let u = (seed >> 11) as f64 / (1u64 << 53) as f64;
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        let w = (seed >> 11) as f64 / (1u64 << 53) as f64;
+        let r = 10f64.powf(-3.0 + 6.0 * u);
+        let a = (w - 0.5) * std::f64::consts::PI;
+        z64.push(C::new(r * a.cos(), r * a.sin()));
+    }
+    let z32: Vec<C<f32>> = z64.iter().map(|z| C::new(z.re as f32, z.im as f32)).collect();
+    let x64: Vec<f64> = z64.iter().map(|z| -z.re.min(80.0)).collect();
+    let x32: Vec<f32> = x64.iter().map(|&x| x as f32).collect();
+    let mut g = crit.benchmark_group("special");
+    g.bench_function("e1_scaled_f64", |b| b.iter(|| z64.iter().map(|&z| e1_scaled(black_box(z)).re).sum::<f64>()));
+    g.bench_function("exp_f64", |b| b.iter(|| x64.iter().map(|&x| libm::exp(black_box(x))).sum::<f64>()));
+    g.bench_function("e1_scaled_f32", |b| b.iter(|| z32.iter().map(|&z| e1_scaled(black_box(z)).re).sum::<f32>()));
+    g.bench_function("exp_f32", |b| b.iter(|| x32.iter().map(|&x| libm::expf(black_box(x))).sum::<f32>()));
+    g.finish();
+}
+
+fn benches(crit: &mut Criterion) {
+    let mut report = String::new();
+    run::<f64>(crit, "f64", &mut report);
+    run::<f32>(crit, "f32", &mut report);
+    special(crit);
+    let dir = airlight_tests::repo_root().join("target/criterion");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("classes_accuracy.jsonl"), report).unwrap();
+}
+
+criterion_group! {
+    name = group;
+    config = Criterion::default().sample_size(20).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_millis(1200));
+    targets = benches
+}
+criterion_main!(group);
