@@ -29,24 +29,27 @@ pub struct EvalOptions {
     pub backend: Backend,
     /// Kernel precision.
     pub precision: Precision,
-    /// Expansion terms: 4 or 6.
-    pub terms: usize,
+    /// `None`: the kernel's default, error-controlled path ([`Scene::in_scatter`]); `Some(4 | 6)`:
+    /// one expansion of that many terms per piece (the shaders' fixed-cost method). The GPU
+    /// backend runs the shader with 4 terms unless 6 is asked for.
+    pub terms: Option<usize>,
     /// Expansion kind.
     pub expansion: Expansion,
 }
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { backend: Backend::Cpu, precision: Precision::F64, terms: 6, expansion: Expansion::Chebyshev }
+        EvalOptions { backend: Backend::Cpu, precision: Precision::F64, terms: None, expansion: Expansion::Chebyshev }
     }
 }
 
-/// `L_m` of a parsed record on the CPU kernel.
-pub fn in_scatter<T: Real>(rec: &SceneRecord<T>, terms: usize, expansion: Expansion) -> T {
+/// `L_m` of a parsed record on the CPU kernel: the default path, or `terms` fixed terms.
+pub fn in_scatter<T: Real>(rec: &SceneRecord<T>, terms: Option<usize>, expansion: Expansion) -> T {
     match Scene::new(rec.ray, rec.light, rec.medium, rec.phase) {
         Ok(s) => match terms {
-            4 => s.in_scatter_with::<4>(expansion),
-            _ => s.in_scatter_with::<6>(expansion),
+            None => s.in_scatter(),
+            Some(4) => s.in_scatter_with::<4>(expansion),
+            Some(_) => s.in_scatter_with::<6>(expansion),
         },
         Err(_) => T::nan(),
     }
@@ -105,7 +108,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         }
     }
     let gpu = crate::gpu::Gpu::new()?;
-    let results = gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms)), &records, true)?;
+    let results = gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true)?;
     let mut k = 0;
     for l in lines {
         let text = match l {

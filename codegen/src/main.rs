@@ -69,8 +69,11 @@ OPTIONS (eval):
                                      wgpu on this machine's GPU (f32; --precision and
                                      --expansion do not apply)
     --precision f32|f64              kernel precision (default f64)
-    --terms 4|6                      expansion terms (default 6; shaders use 4)
-    --expansion chebyshev|taylor     polynomial expansion (default chebyshev)
+    --terms 4|6                      the fixed-cost method with this many expansion terms, as
+                                     the shaders compute it (default: neither — the kernel's
+                                     error-controlled panels, within 1e-10 in f64 and 1e-4 in
+                                     f32 of max(|exact|, tau·scale); the GPU runs 4 terms)
+    --expansion chebyshev|taylor     polynomial expansion of --terms (default chebyshev)
 ";
 
 fn fail(msg: &str) -> ExitCode {
@@ -120,8 +123,8 @@ fn cmd_eval(args: &[String]) -> ExitCode {
                 _ => Err(format!("--precision must be f32 or f64, not '{v}'")),
             }),
             "--terms" => value("--terms").and_then(|v| match v.as_str() {
-                "4" => Ok(opts.terms = 4),
-                "6" => Ok(opts.terms = 6),
+                "4" => Ok(opts.terms = Some(4)),
+                "6" => Ok(opts.terms = Some(6)),
                 _ => Err(format!("--terms must be 4 or 6, not '{v}'")),
             }),
             "--expansion" => value("--expansion").and_then(|v| match v.as_str() {

@@ -2,7 +2,7 @@
 //! thick brume, a foggy road with headlights and a streetlamp, a stage under three coloured
 //! spotlights, a park bench in Rayleigh mist — rendered four ways:
 //!
-//! * [`render_cpu`]: the CPU kernel in f64 with [`airlight::CPU_TERMS`] (6) Chebyshev terms;
+//! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
 //! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_4.wgsl`, f32, 4
 //!   terms) through wgpu, every (pixel, light) segment one record of [`crate::layout`];
 //! * [`render_reference`]: brute-force quadrature of the contract integral (DESIGN §1) that
@@ -22,7 +22,7 @@ use crate::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
 use airlight::glam::DVec3;
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein, Schlick};
-use airlight::{Expansion, LightDistribution, Medium, PhaseFunction, PointLight, Ray, Scene};
+use airlight::{LightDistribution, Medium, PhaseFunction, PointLight, Ray, Scene};
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -420,12 +420,12 @@ fn accumulate(px: &mut Rgb, color: Rgb, albedo: Rgb, in_scatter: f64, surface: f
     }
 }
 
-/// The image on the CPU kernel: f64, [`airlight::CPU_TERMS`] Chebyshev terms per (pixel,
-/// light) segment. A light exactly on a segment (an infinite value) is kept as `+∞`.
+/// The image on the CPU kernel: f64, [`Scene::in_scatter`] (the default, error-controlled
+/// path) per (pixel, light) segment. A light exactly on a segment (an infinite value) is kept as `+∞`.
 pub fn render_cpu(scene: &SceneDesc, progress: bool) -> Image {
     render_per_light(scene, "cpu", progress, |d, hit, l| {
         let lm = match Scene::new(scene.ray(d, hit), l.light, scene.medium, scene.phase) {
-            Ok(s) => s.in_scatter_with::<{ airlight::CPU_TERMS }>(Expansion::Chebyshev),
+            Ok(s) => s.in_scatter(),
             Err(_) => 0.0,
         };
         (lm, scene.surface_kernel(d, hit, l))
