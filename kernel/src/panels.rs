@@ -82,15 +82,14 @@ where
         Some(r) if N <= MAX_N => r,
         _ => return T::zero(),
     };
-    // (a, b, relative error estimate of the parent panel)
-    let mut stack = [(T::zero(), T::zero(), T::infinity()); STACK];
-    stack[0] = (lo, hi, T::infinity());
+    let mut stack = [(T::zero(), T::zero()); STACK];
+    stack[0] = (lo, hi);
     let mut depth = 1;
     let mut total = T::zero();
     let mut budget = control.max_panels;
     while depth > 0 {
         depth -= 1;
-        let (a, b, parent) = stack[depth];
+        let (a, b) = stack[depth];
         if !(b > a) {
             continue;
         }
@@ -103,14 +102,8 @@ where
         budget = budget.saturating_sub(1);
         run.f_max = run.f_max.max(panel.f_max);
         let scale = run.f_max * panel.mass_over;
-        let relative = if panel.bound > T::zero() { panel.error / panel.bound } else { T::zero() };
-        // Halving a panel shrinks a resolvable tail by far more than 8 (by 2^N on a smooth
-        // stretch); a tail near √ε that did not shrink is the rounding of F's own evaluation
-        // (e.g. 1 − μ formed from μ near a peak), which no refinement removes.
-        let plateau = relative <= T::epsilon().sqrt() && relative * T::lit(8.0) >= parent;
         let accepted = panel.error <= (control.tolerance * panel.value.abs().max(control.floor * scale)).max(panel.noise)
-            || panel.bound <= control.tolerance * control.floor * total.abs()
-            || plateau;
+            || panel.bound <= control.tolerance * control.floor * total.abs();
         let can_split = budget >= 2 && depth + 2 <= STACK && (b - a) > T::epsilon() * b;
         if accepted || !can_split {
             total = total + panel.value;
@@ -119,11 +112,11 @@ where
         let mid = a + (b - a) * T::lit(0.5);
         // the bright end (weight 1: low y before the foot, high y after it) on top of the stack
         if half.second {
-            stack[depth] = (a, mid, relative);
-            stack[depth + 1] = (mid, b, relative);
+            stack[depth] = (a, mid);
+            stack[depth + 1] = (mid, b);
         } else {
-            stack[depth] = (mid, b, relative);
-            stack[depth + 1] = (a, mid, relative);
+            stack[depth] = (mid, b);
+            stack[depth + 1] = (a, mid);
         }
         depth += 2;
     }
