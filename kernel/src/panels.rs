@@ -60,8 +60,6 @@ pub struct Running<T> {
 const STACK: usize = 64;
 /// The most Legendre terms a panel may use (the largest tabulated rule with `N ≤ MAX_N`).
 const MAX_N: usize = 16;
-/// Miller's backward recurrence for `i_k(λ)` starts this many orders above the highest needed.
-const MILLER_EXTRA: usize = 24;
 
 /// `∫ e^{−H(v − v_s)} G(v) dv` over `y ∈ [lo, hi] ⊂ [half.y_lo, half.y_hi]`, in the half's
 /// scaling (weight 1 at the half's `v_s`). `N`: Gauss–Legendre nodes per panel (4, 6, 8, 10,
@@ -330,8 +328,9 @@ fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
 /// `out[k] = M_k(λ) = ∫_{−1}^{1} e^{−λ(1+ξ)} P_k(ξ) dξ = 2(−1)^k e^{−λ} i_k(λ)`, `λ ≥ 0`,
 /// `k < out.len() ≤ MAX_N`. The three-term recurrence `i_{k−1} − i_{k+1} = (2k+1) i_k/λ`
 /// (DLMF 10.51.4) is stable upward while `k ≲ λ` and downward above, so:
-/// * `0 < λ < 2K` (`K = out.len()`): Miller's backward recurrence from order `K + λ + 24`
-///   (above `k ≈ λ` the minimal solution's share grows at least 2-fold per step down),
+/// * `0 < λ < 2K` (`K = out.len()`): Miller's backward recurrence from order
+///   `max(K, λ) + 28` (f64; 14 in f32: above `k ≈ λ` the error's share shrinks ≥ 4-fold per
+///   step down),
 ///   normalised by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`, rescaled by 1e-20 whenever a value
 ///   passes 1e20 (for small `λ` each step grows by `(2k+1)/λ`);
 /// * `λ ≥ 2K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`
@@ -363,7 +362,10 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         }
     } else if lambda < T::from(2 * n).unwrap() {
         let inv = lambda.recip();
-        let top = n + MILLER_EXTRA + lambda.ceil().to_usize().unwrap_or(0);
+        // above k ≈ λ the minimal solution's share of the error shrinks ≥ 4-fold per step
+        // (i_{k+1}/i_k < 1/2 while the other solution grows > 2-fold): ⌈log4(1/ε)⌉ + 2 steps
+        let extra = if T::epsilon() < T::lit(1e-10) { 28 } else { 14 };
+        let top = n.max(lambda.ceil().to_usize().unwrap_or(0)) + extra;
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
         // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k
         for k in (1..=top).rev() {
