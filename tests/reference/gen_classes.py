@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Independent references for the hard scene classes: peaked phase functions, narrow beams and
-cone edges, a light next to the ray, long rays, thick media, lights behind the camera.
+cone edges, a light next to the ray, long rays, thick media, lights behind the camera, and the
+benchmark's street lamp (isotropic and anisotropic).
 
 Writes classes.jsonl next to this file: scene records (README "Scene records") with
   "category"    the class,
@@ -288,6 +289,20 @@ def scenes():
         ray, p, q = geometry(rng, 10 ** rng.uniform(-1, 0.5), -back, 0.0, rng.uniform(1, 50) if i % 3 else None)
         li = OMNI if i % 2 else {"kind": "spot", "axis": f32v(unit(rng)), "cos_inner": f32(0.95), "cos_outer": f32(0.8)}
         out.append(record(rng, "behind", ray, p, min(10 ** rng.uniform(-2, 0), 300 / back), phase_mix(i), li))
+    # the benchmark's street lamp: camera at the origin looking down +x through a row of lamps
+    # 1–4 units off the rays, thin to moderate fog; isotropic, and a c^4 beam pointing down in
+    # Henyey–Greenstein g = 0.5 fog
+    for aniso in (False, True):
+        for i in range(32):
+            d = f32v([1.0, 0.2 * rng.random() - 0.1, 0.2 * rng.random() - 0.1])
+            ray = {"origin": [0.0, 0.0, 0.0], "dir": d, "t_min": 0.0, "t_max": f32(5.0 + 60.0 * rng.random())}
+            p = f32v([40.0 * rng.random() - 5.0, 1.0 + 3.0 * rng.random(), rng.random()])
+            li = {"kind": "two_lobed", "axis": [0.0, -1.0, 0.0], "power": 4} if aniso else OMNI
+            ph = hg(0.5) if aniso else {"kind": "isotropic"}
+            rec = record(rng, "street_aniso" if aniso else "street_iso", ray, p, 0.01 + 0.3 * rng.random(), ph, li)
+            rec["medium"]["sigma_s"] = f32(0.05)
+            rec["light"]["intensity"] = f32(100.0)
+            out.append(rec)
     return out
 
 
