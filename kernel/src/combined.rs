@@ -359,22 +359,24 @@ fn on_line<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>>(
     if x_h > t1 {
         let f: T = phys.light.eval(-g.d_el) * phys.phase.eval(T::one());
         let (r0, r1) = (x_h - t0, x_h - t1);
-        weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * r0, f * ((t1 - t0) / r0 / r1))
+        // σs I f Δt/(r0 r1) e^{−σt r0}, with 1/r0 in weighted()'s divisor so that a tiny r0
+        // goes through its logarithmic path instead of overflowing here
+        weighted(phys.sigma_s, phys.intensity, r0 + r0, sigma_t * r0, f * ((t1 - t0) / r1))
     } else {
         let f: T = phys.light.eval(g.d_el) * phys.phase.eval(-T::one());
         let (s0, s1) = (t0 - x_h, t1 - x_h);
         if sigma_t == T::zero() {
-            let span = if s1.is_finite() { (s1 - s0) / s1 / s0 } else { s0.recip() };
-            return weighted(phys.sigma_s, phys.intensity, T::lit(2.0), T::zero(), f * span);
+            let span = if s1.is_finite() { (s1 - s0) / s1 } else { T::one() };
+            return weighted(phys.sigma_s, phys.intensity, s0 + s0, T::zero(), f * span);
         }
         let two_st = sigma_t + sigma_t;
         let mut e2 = [T::zero(); 2];
         en_scaled(two_st * s0, &mut e2);
-        // σs I e^{−x} as weighted(σs, I, 2, x) (its h = 2 cancels the 2)
-        let head = weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * s0, f * e2[1] / s0);
+        // σs I e^{−x}/s0 as weighted(σs, I, 2 s0, x) (its 2 cancels the 2)
+        let head = weighted(phys.sigma_s, phys.intensity, s0 + s0, sigma_t * s0, f * e2[1]);
         let tail = if s1.is_finite() {
             en_scaled(two_st * s1, &mut e2);
-            weighted(phys.sigma_s, phys.intensity, T::lit(2.0), sigma_t * (s1 - s0) + sigma_t * s1, f * e2[1] / s1)
+            weighted(phys.sigma_s, phys.intensity, s1 + s1, sigma_t * (s1 - s0) + sigma_t * s1, f * e2[1])
         } else {
             T::zero()
         };

@@ -118,8 +118,8 @@ impl<T: Real> Canonical<T> {
     /// 1e-3). Here `p − o` is kept exactly as a sum of two floats (Knuth's two-sum), and
     /// `w = (p − o) × dir` is formed from exact products (Dekker's split): `h = |w|/|dir|`,
     /// and the unit vector from the light to the foot is `−(dir × w)/(|dir||w|)` (`dir ⊥ w`: no
-    /// cancellation). Where the split would overflow (inputs beyond `√(max)/2^{p/2}`) it falls
-    /// back to [`Canonical::new`].
+    /// cancellation). Where the products could overflow or underflow (`|p − o|` or `|dir|`
+    /// beyond `T::EXACT_RANGE` or below its reciprocal) it is [`Canonical::new`].
     pub fn new_accurate(origin: [T; 3], dir: [T; 3], t0: T, t1: T, light: [T; 3], axis: [T; 3]) -> Self {
         let plain = Self::new(origin, dir, t0, t1, light, axis);
         let scale = length(dir);
@@ -130,6 +130,16 @@ impl<T: Real> Canonical<T> {
         let mut lo = [T::zero(); 3];
         for i in 0..3 {
             (hi[i], lo[i]) = two_sum(light[i], -origin[i]);
+        }
+        // exact products need factors whose products (and Dekker's splits) neither overflow nor
+        // reach the subnormal range: beyond T::EXACT_RANGE the plain reduction is used
+        let in_range = |v: [T; 3]| {
+            let m = v[0].abs().max(v[1].abs()).max(v[2].abs());
+            let r = T::lit(T::EXACT_RANGE);
+            m == T::zero() || (m >= r.recip() && m <= r)
+        };
+        if !in_range(hi) || !in_range(dir) {
+            return plain;
         }
         // w = (hi + lo) × dir: the hi part from exact products, the lo part plainly
         let cross_exact = |i: usize, j: usize| diff_of_products(hi[i], dir[j], hi[j], dir[i]) + (lo[i] * dir[j] - lo[j] * dir[i]);

@@ -42,6 +42,11 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// products in [`crate::geometry::Canonical::new_accurate`].
     const SPLITTER: f64;
 
+    /// Magnitudes (and reciprocals) within which the exact products of
+    /// [`crate::geometry::Canonical::new_accurate`] stay normal: 2^450 in f64, 2^30 in f32
+    /// (products of two, and the `2^⌈p/2⌉` split, stay within the exponent range).
+    const EXACT_RANGE: f64;
+
     /// Converts an `f64` constant to this precision (rounding to nearest).
     fn lit(x: f64) -> Self;
     /// Converts to `f64` (exact for both precisions).
@@ -56,6 +61,7 @@ impl Real for f64 {
     type Vec3 = glam::DVec3;
     // Target 1e-10 of max(|exact|, 1e-10·scale); the tail estimate is kept 100× below it.
     const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
+    const EXACT_RANGE: f64 = 2.9073548971824276e135; // 2^450
     const PANEL_NODES: usize = 16;
     const PANEL_TOLERANCE: f64 = 1e-12;
     const PANEL_FLOOR: f64 = 1e-10;
@@ -94,6 +100,7 @@ impl Real for f32 {
     // Target 1e-4 of max(|exact|, 1e-4·scale); the estimate is kept 10× below it (its own
     // rounding noise is ~N·ε ≈ 1e-6).
     const SPLITTER: f64 = 4097.0; // 2^12 + 1
+    const EXACT_RANGE: f64 = 1_073_741_824.0; // 2^30
     const PANEL_NODES: usize = 12;
     const PANEL_TOLERANCE: f64 = 1e-5;
     const PANEL_FLOOR: f64 = 1e-4;

@@ -150,3 +150,24 @@ fn eval_lines_in_order_with_errors_naming_line_and_field() {
     assert_eq!(out32[0], format!("{{\"in_scatter\":{y:?}}}"));
     assert!(((y as f64) - x).abs() < 1e-2 * x);
 }
+
+/// Subnormal inputs (a kernel fuzz finding): the exact-product reduction would underflow to
+/// `h = 0` and put the light on the line, where `1/s0` then overflowed; the default path falls
+/// back to the plain reduction outside `Real::EXACT_RANGE`, and the on-line limit divides
+/// through logarithms. The value here is finite: `σs I ∫ e^{−2σt s}/s² ds ≈ σs I D(c)/(4π s0)`.
+#[test]
+fn subnormal_geometry_is_finite() {
+    use airlight::glam::DVec3;
+    use airlight::light::TwoLobed;
+    let ray = airlight::Ray { origin: DVec3::new(4e-323, 0.0, 1.6316e-319), dir: DVec3::new(0.0, 0.0, 1.59366e-319), t_min: 0.0, t_max: f64::INFINITY };
+    let light = airlight::PointLight {
+        position: DVec3::ZERO,
+        intensity: 5.686073565698723e-270,
+        distribution: TwoLobed { axis: DVec3::new(-0.9327512254901962, 0.6782531733770727, -0.7672402119390289), power: 4 },
+    };
+    let medium = airlight::Medium { sigma_s: 0.06274509803921569, sigma_t: 1.5686274509803921 };
+    let s = airlight::Scene::new(ray, light, medium, airlight::phase::Isotropic).unwrap();
+    let l = s.in_scatter();
+    assert!(l.is_finite() && l > 0.0, "{l}");
+    assert!(s.in_scatter_with::<6>(airlight::Expansion::Chebyshev).is_finite());
+}
