@@ -353,8 +353,8 @@ fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
 /// `k < out.len() ≤ MAX_N`. The three-term recurrence `i_{k−1} − i_{k+1} = (2k+1) i_k/λ`
 /// (DLMF 10.51.4) is stable upward while `k ≲ λ` and downward above, so:
 /// * `0 < λ < 2K` (`K = out.len()`): Miller's backward recurrence from order
-///   `max(K, λ) + 28` (f64; 14 in f32: above `k ≈ λ` the error's share shrinks ≥ 4-fold per
-///   step down),
+///   `k0 = max(K, λ)` plus `⌈ln(1/ε)/(2 ln(2k0/λ))⌉ + 2` steps (at most 30: above `k0` the
+///   error's share shrinks by `(λ/2k)² ≤ 1/4` per step down, much faster for small `λ`),
 ///   normalised by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`, rescaled by 1e-20 whenever a value
 ///   passes 1e20 (for small `λ` each step grows by `(2k+1)/λ`);
 /// * `λ ≥ 2K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`
@@ -386,17 +386,23 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         }
     } else if lambda < T::from(2 * n).unwrap() {
         let inv = lambda.recip();
-        // above k ≈ λ the minimal solution's share of the error shrinks ≥ 4-fold per step
-        // (i_{k+1}/i_k < 1/2 while the other solution grows > 2-fold): ⌈log4(1/ε)⌉ + 2 steps
-        let extra = if T::epsilon() < T::lit(1e-10) { 28 } else { 14 };
-        let top = n.max(lambda.ceil().to_usize().unwrap_or(0)) + extra;
+        // Above k0 = max(K, λ) the error's share shrinks by (λ/(2k))² ≤ 1/4 per step down (the
+        // minimal solution falls by λ/(2k+3) per step up, the other grows by (2k+1)/λ): enough
+        // steps for ε, plus two.
+        let k0 = n.max(lambda.ceil().to_usize().unwrap_or(n));
+        let per_step = T::lit(-2.0) * (lambda / T::from(2 * k0).unwrap()).ln();
+        let steps = ((-T::epsilon().ln()) / per_step).ceil().to_usize().unwrap_or(28).min(28) + 2;
+        let top = k0 + steps;
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
+        let mut odd = T::from(2 * top + 1).unwrap(); // 2k + 1
+        let two_t = T::lit(2.0);
         // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k
         for k in (1..=top).rev() {
             if k < n {
                 out[k] = cur;
             }
-            let below = above + T::from(2 * k + 1).unwrap() * inv * cur;
+            let below = above + odd * inv * cur;
+            odd = odd - two_t;
             above = cur;
             cur = below;
             if cur > T::lit(1e20) {

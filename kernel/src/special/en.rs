@@ -7,7 +7,9 @@
 //! otherwise `s_{n*}` from its continued fraction (A&S 5.1.22) — and recur away from it
 //! both ways.
 
-use super::e1::{e1_scaled, in_series_region};
+use super::e1::in_series_region;
+use super::series::ein_real;
+use super::EULER_GAMMA;
 use super::C;
 use crate::real::Real;
 
@@ -26,7 +28,8 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
         return;
     }
     let pivot = if in_series_region(C::new(x, T::zero())) {
-        out[0] = e1_scaled(C::new(x, T::zero())).re;
+        // E1(x) = −γ − ln x + Ein(x) (A&S 5.1.11), in real arithmetic
+        out[0] = (ein_real(x) - x.ln() - T::lit(EULER_GAMMA)) * x.exp();
         1
     } else {
         let n = x.ceil().to_usize().unwrap_or(k_max).clamp(1, k_max);
