@@ -93,6 +93,8 @@ where
         }
         let panel = if half.second && a <= b * T::lit(0.25) {
             tail_panel::<T, F, N>(half, a, b, f, rule)
+        } else if half.second && half.big_h * ((b - a) / (a * b)) <= T::lit(Y_PANEL_EXPONENT) {
+            y_panel::<T, F, N>(half, a, b, f, rule)
         } else {
             v_panel::<T, F, N>(half, a, b, f, rule)
         };
@@ -221,7 +223,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         (a + r, r)
     };
     let mut g = [T::zero(); N];
-    let (mut f_max, mut g_max, mut over_max) = (T::zero(), T::zero(), T::zero());
+    let (mut f_max, mut g_max, mut over_max, mut g_avg) = (T::zero(), T::zero(), T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let v = vc + r * node::<T>(rule, i);
         let y = if half.second { v.recip() } else { v };
@@ -231,6 +233,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         f_max = f_max.max(fy.abs());
         g_max = g_max.max(gi.abs());
         over_max = over_max.max(over);
+        g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
     let c = legendre::<T, N>(&g);
     let mut m = [T::zero(); N];
@@ -242,9 +245,53 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
     let bound = mass * g_max;
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * bound;
+    // the discrete transform's rounding: ~Nε of the weighted mean of |G| per coefficient
+    let noise = T::from(4 * N).unwrap() * T::epsilon() * mass * g_avg;
     let error = mass * tail_estimate(&c) * error_factor(&c, &m);
     Panel { value: w * sum, error, bound, noise, mass_over: mass * over_max, f_max }
+}
+
+/// The largest growth `H(1/a − 1/b)` of the exponent across a y-panel: an `N ≥ 8` point rule
+/// integrates `e^{−λx}` on `[0, 1]` to `λ^{2N}/(2^{2N}(2N)!)` (`< 1e-18` at `λ = 4`, `N = 8`).
+const Y_PANEL_EXPONENT: f64 = 4.0;
+
+/// A y-panel: `[a, b]` after the foot with `b < 4a` and an exponent that grows by at most
+/// [`Y_PANEL_EXPONENT`] across it. There the whole integrand `e^{−H(1/y − 1/b)} F/(1+y²)` is
+/// smooth in `y` (its singularities, `y = 0` and `±i`, lie at least 1.2 half-widths away),
+/// while in `v = 1/y` the poles of `1/(1+v²)` come close to a panel whose `b/a` is near 4: so
+/// it is integrated by the Gauss–Legendre rule in `y`, the estimate from the product's
+/// Legendre tail.
+fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)]) -> Panel<T> {
+    let r = (b - a) * T::lit(0.5);
+    let yc = a + r;
+    let big_h = half.big_h;
+    let mut p = [T::zero(); N];
+    let (mut f_max, mut p_max, mut over_max, mut mass, mut p_avg) = (T::zero(), T::zero(), T::zero(), T::zero(), T::zero());
+    for (i, pi) in p.iter_mut().enumerate() {
+        let xi = node::<T>(rule, i);
+        let y = yc + r * xi;
+        // H(1/y − 1/b) = H (b − y)/(y b), b − y = r(1 − ξ)
+        let weight = (-big_h * (r * (T::one() - xi)) / (y * b)).exp();
+        let fy = f.eval(y);
+        let over = (T::one() + y * y).recip();
+        *pi = fy * over * weight;
+        f_max = f_max.max(fy.abs());
+        p_max = p_max.max(pi.abs());
+        over_max = over_max.max(over);
+        mass = mass + T::lit(rule[i / 2].1) * weight;
+        p_avg = p_avg + T::lit(rule[i / 2].1 * 0.5) * pi.abs();
+    }
+    let c = legendre::<T, N>(&p);
+    let w = factor(half, a, b) * r;
+    let mass = w * mass;
+    // the rule's own weights: the panel's value is 2r·c_0; the error has no truncation term
+    // (no moment weights the tail), only the aliasing one
+    let mut m = [T::zero(); N];
+    m[0] = T::lit(2.0);
+    let bound = w * T::lit(2.0) * p_max;
+    let noise = T::from(4 * N).unwrap() * T::epsilon() * w * T::lit(2.0) * p_avg;
+    let error = w * T::lit(2.0) * tail_estimate(&c) * error_factor(&c, &m);
+    Panel { value: w * T::lit(2.0) * c[0], error, bound, noise, mass_over: mass * over_max, f_max }
 }
 
 /// A tail panel (module docs): `[a, b]` after the foot, `a ≤ b/4`.
@@ -252,13 +299,14 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     let r = (b - a) * T::lit(0.5);
     let yc = a + r;
     let mut g = [T::zero(); N];
-    let (mut f_max, mut g_max) = (T::zero(), T::zero());
+    let (mut f_max, mut g_max, mut g_avg) = (T::zero(), T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let y = yc + r * node::<T>(rule, i);
         let fy = f.eval(y);
         *gi = fy / (T::one() + y * y);
         f_max = f_max.max(fy.abs());
         g_max = g_max.max(gi.abs());
+        g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
     let c = legendre::<T, N>(&g);
     // Σ c_k P_k(ξ) → Σ q_k u^k, u = y/b, ξ = (y − yc)/r = α u + β
@@ -300,23 +348,24 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     let w = factor(half, a, b);
     let mass = w * mass;
     let bound = mass * g_max;
-    // Rounding: the conversion to monomials in u sums terms up to D_k |c_k|, D_k the central
-    // Delannoy number (the ℓ1 norm of the shifted P_k's coefficients; OEIS A001850); on a
-    // resolved panel |c_k| falls faster than D_k grows.
-    let (mut d_prev, mut d_cur) = (T::zero(), T::one());
+    // Rounding: the conversion to monomials in u sums terms up to L_k(|α| + |β|)·|c_k|, L_k the
+    // monomial coefficients of P_k in absolute value summed at x (by the recurrence with every
+    // sign made positive; at x = 3, the case a = 0, it bounds the central Delannoy numbers
+    // 1, 3, 13, 63, …, OEIS A001850). On a resolved panel |c_k| falls faster than L_k grows.
+    let x = alpha.abs() + beta.abs();
+    let (mut l_prev, mut l_cur) = (T::zero(), T::one());
     let mut spread = T::zero();
     for (k, ck) in c.iter().enumerate() {
-        spread = spread + d_cur * ck.abs();
-        // (k+1) D_{k+1} = 3(2k+1) D_k − k D_{k−1}
+        spread = spread + l_cur * ck.abs();
         let kf = T::from(k).unwrap();
-        let next = (T::lit(3.0) * (kf + kf + T::one()) * d_cur - kf * d_prev) / (kf + T::one());
-        d_prev = d_cur;
-        d_cur = next;
+        let next = ((kf + kf + T::one()) * x * l_cur + kf * l_prev) / (kf + T::one());
+        l_prev = l_cur;
+        l_cur = next;
     }
     // the conversion's rounding is an error like the truncation's (splitting the panel
-    // reduces it: the c_k fall faster); the floor is only the sum's own 4Nε
+    // reduces it: the c_k fall faster); the floor is only the transform's own 4Nε
     let conversion = T::epsilon() * mass * spread;
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * bound;
+    let noise = T::from(4 * N).unwrap() * T::epsilon() * mass * g_avg;
     Panel { value: w * sum, error: mass * tail_estimate(&c) + conversion, bound, noise, mass_over: mass, f_max }
 }
 

@@ -1,7 +1,7 @@
 //! The hard scene classes against independent references (tests/reference/classes.jsonl, made
 //! by tests/reference/gen_classes.py: mpmath quadrature in the light angle, 30 digits).
 //!
-//! Error measure (docs/DESIGN.md §7): `|x − exact| / max(|exact|, τ·scale)`, `scale` the
+//! Error measure (docs/DESIGN.md §8): `|x − exact| / max(|exact|, τ·scale)`, `scale` the
 //! integral with `F = D·P` replaced by its maximum on the segment, `τ = 1e-10` in f64 and
 //! `1e-4` in f32. Every record's inputs are exact in binary32, so the f32 kernel sees the same
 //! scene as the reference.
