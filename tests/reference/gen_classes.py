@@ -33,7 +33,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import dist_fn, phase_fn  # noqa: E402  (the same D and P as written there)
+from gen_reference import parse  # noqa: E402  (the same record reading, D and P as there)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DPS = 30
@@ -47,34 +47,10 @@ def f32v(v):
     return [f32(x) for x in v]
 
 
-def norm(v):
-    return mp.sqrt(sum(x * x for x in v))
-
-
 def reference(rec):
     """(value, scale) of one record, or None if the two quadratures disagree."""
     mp.mp.dps = DPS
-    r = rec["ray"]
-    o = [mp.mpf(x) for x in r["origin"]]
-    d = [mp.mpf(x) for x in r["dir"]]
-    dn = norm(d)
-    d = [x / dn for x in d]
-    t0 = mp.mpf(r["t_min"])
-    t1 = mp.inf if r.get("t_max") is None else mp.mpf(r["t_max"])
-    ss, st = mp.mpf(rec["medium"]["sigma_s"]), mp.mpf(rec["medium"]["sigma_t"])
-    lt = rec["light"]
-    p = [mp.mpf(x) for x in lt["position"]]
-    inten = mp.mpf(lt["intensity"])
-    dist = lt.get("distribution") or {"kind": "isotropic"}
-    ph = rec.get("phase") or {"kind": "isotropic"}
-    a = [mp.mpf(x) for x in dist.get("axis", [0, 0, 1])]
-    an = norm(a)
-    a = [x / an for x in a]
-    D, P = dist_fn(dist), phase_fn(ph)
-    op = [p[i] - o[i] for i in range(3)]
-    xh = sum(op[i] * d[i] for i in range(3))
-    perp = [o[i] + xh * d[i] - p[i] for i in range(3)]
-    h = norm(perp)
+    o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h = parse(rec)
     assert h > 0
     nh = [x / h for x in perp]
     d_el = sum(d[i] * a[i] for i in range(3))

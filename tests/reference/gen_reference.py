@@ -81,9 +81,9 @@ def dist_fn(d):
     raise ValueError(k)
 
 
-def reference(rec):
-    """L_m of DESIGN §1 for one record, or None if the two quadratures disagree."""
-    mp.mp.dps = DPS
+def parse(rec):
+    """A record's numbers at the working precision: the ray (direction normalised), medium,
+    light (axis normalised), D and P, and the canonical x_h, perp = o + x_h d − p, h."""
     r = rec["ray"]
     o = [mp.mpf(x) for x in r["origin"]]
     d = [mp.mpf(x) for x in r["dir"]]
@@ -105,6 +105,13 @@ def reference(rec):
     xh = sum(op[i] * d[i] for i in range(3))
     perp = [o[i] + xh * d[i] - p[i] for i in range(3)]
     h = norm(perp)
+    return o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h
+
+
+def reference(rec):
+    """L_m of DESIGN §1 for one record, or None if the two quadratures disagree."""
+    mp.mp.dps = DPS
+    o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h = parse(rec)
     if h == 0 and t0 <= xh <= t1:
         return "inf"
     # value scale at the closest point of the segment
