@@ -22,7 +22,6 @@ halved) and kept only if the two agree to 1e-15 of max(|value|, 1e-10·scale).
 
 Usage: python3 tests/reference/gen_classes.py     (mpmath==1.3.0; about 10 minutes, 2 cores)
 """
-import json
 import math
 import os
 import random
@@ -33,7 +32,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import parse  # noqa: E402  (the same record reading, D and P as there)
+from gen_reference import parse, unit, write_records  # noqa: E402  (the same record reading, D and P as there)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DPS = 30
@@ -142,14 +141,6 @@ def reference(rec):
 
 
 # ---------------------------------------------------------------- scene generation
-def unit(rng):
-    while True:
-        v = [rng.uniform(-1, 1) for _ in range(3)]
-        n = math.sqrt(sum(x * x for x in v))
-        if 0.1 < n <= 1:
-            return [x / n for x in v]
-
-
 def geometry(rng, h, foot, t_min, t_max):
     """A ray along a random direction (f32 components), the light at perpendicular distance
     about h from the ray line with its foot near ray parameter `foot`; all inputs in f32."""
@@ -297,12 +288,7 @@ def main():
         done = pool.map(run_scene, recs, chunksize=2)
     kept = [r for r in done if isinstance(r, dict)]
     dark = sum(1 for r in done if r == "dark")
-    with open(os.path.join(HERE, "classes.jsonl"), "w") as f:
-        for r in kept:
-            f.write(json.dumps(r) + "\n")
-    cats = {}
-    for r in kept:
-        cats[r["category"]] = cats.get(r["category"], 0) + 1
+    cats = write_records("classes.jsonl", kept)
     print(f"classes: {len(kept)} kept, {dark} dark (F = 0 on the segment), {len(done) - len(kept) - dark} dropped (quadratures disagreed); {cats}")
 
 

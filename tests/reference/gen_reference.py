@@ -417,18 +417,23 @@ def en_line(arg):
     return {"n": n, "x": x, "en": float(e), "scaled": float(s), **({"en_underflows": True} if float(e) == 0.0 else {})}
 
 
+def write_records(name, records):
+    """Writes records as JSON lines next to this file; returns the count per category."""
+    cats = {}
+    with open(os.path.join(HERE, name), "w") as f:
+        for r in records:
+            f.write(json.dumps(r) + "\n")
+            cats[r["category"]] = cats.get(r["category"], 0) + 1
+    return cats
+
+
 def main():
     with Pool(2) as pool:
         recs = scenes()
         done = pool.map(run_scene, recs, chunksize=4)
         kept = [r for r in done if r is not None]
         dropped = len(done) - len(kept)
-        with open(os.path.join(HERE, "scenes.jsonl"), "w") as f:
-            for r in kept:
-                f.write(json.dumps(r) + "\n")
-        cats = {}
-        for r in kept:
-            cats[r["category"]] = cats.get(r["category"], 0) + 1
+        cats = write_records("scenes.jsonl", kept)
         print(f"scenes: {len(kept)} kept, {dropped} dropped (quadratures disagreed); {cats}")
         lines = pool.map(e1_line, e1_points(), chunksize=64)
         with open(os.path.join(HERE, "e1.jsonl"), "w") as f:
