@@ -200,8 +200,7 @@ fn weighted<T: Real>(sigma_s: T, intensity: T, h: T, x: T, j: T) -> T {
     }
 }
 
-/// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution (and,
-/// with [`Method::Panels`], where `|c|` is largest: the beam's axis).
+/// `Σ a_k m_k` on one half, split where `c(y)` crosses a kink of the light distribution.
 #[allow(clippy::too_many_arguments)]
 fn half_integral<T, D, P, E, const N: usize>(
     half: &Half<T>,
@@ -226,7 +225,7 @@ where
         let m: [T; N] = moments(half, ei, count);
         return f.eval(half.y_mid()) * m[0];
     }
-    // Up to two kinks, each crossed at most twice, and the two extremes of c: at most 7 pieces.
+    // Up to two kinks, each crossed at most twice: at most 5 pieces.
     let mut cuts = [T::zero(); 6];
     let mut n_cuts = 0;
     let mut add = |y: Option<T>| {
@@ -239,9 +238,6 @@ where
     };
     for kink in phys.light.kinks().into_iter().flatten() {
         crossings(sigma, g.d_el, g.d_c, kink).into_iter().for_each(&mut add);
-    }
-    if let (Method::Panels(_), false) = (method, phys.light.is_isotropic()) {
-        extremes(sigma, g.d_el, g.d_c).into_iter().for_each(&mut add);
     }
     let cuts = &mut cuts[..n_cuts];
     cuts.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
@@ -334,16 +330,6 @@ fn crossings<T: Real>(sigma: T, d_el: T, d_c: T, k: T) -> [Option<T>; 2] {
     let r1 = if q != T::zero() { Some(c / q) } else { None };
     let r2 = if a != T::zero() { Some(q / a) } else { None };
     [r1, r2]
-}
-
-/// The `y ∈ (0, 1)` where `c(y) = σ d_el cos 2ψ + d_c sin 2ψ` (`y = tan ψ`) is largest and
-/// smallest, `c = ±√(d_el² + d_c²)`: `y = tan(φ/2)` for the angle `φ` of `(σ d_el, d_c)`, by the
-/// half-angle formula `tan(φ/2) = sin φ/(1 + cos φ)` (and of `−(σ d_el, d_c)` for the minimum).
-fn extremes<T: Real>(sigma: T, d_el: T, d_c: T) -> [Option<T>; 2] {
-    let (x, y) = (sigma * d_el, d_c);
-    let a = x.hypot(y);
-    let at = |x: T, y: T| if a + x > T::zero() { Some(y / (a + x)) } else { None };
-    [at(x, y), at(-x, -y)]
 }
 
 /// The exact limit for a light on the ray line outside the segment (`h → 0`): `μ = ±1` and
