@@ -18,10 +18,15 @@
 //!
 //! ## The data path, one module per step
 //! 1. [`geometry`]: world space → canonical integral (`h`, `x_h`, `d_el`, `d_c`; paper eq. 4–6).
-//! 2. [`combined`]: split at the light's foot (combined formulation, eq. 20).
-//! 3. [`expansion`]: phase × light as a polynomial on each part (Chebyshev or Taylor by jets).
-//! 4. [`integrals`]: closed forms of both reformulations (eq. 8–19) as moments.
-//! 5. [`special`]: the complex exponential integral with fixed-bound region selection.
+//! 2. [`combined`]: split at the light's foot (combined formulation, eq. 20), and at a cone's
+//!    kinks.
+//! 3. The default, error-controlled path: [`panels`] — panels refined until `F/(1+v²)` is
+//!    resolved, the exponential integrated exactly by its Legendre moments (docs/DESIGN.md §4.1).
+//! 3′. The fixed-cost path the shaders compute: [`expansion`] (phase × light as one polynomial
+//!    per piece, Chebyshev or Taylor by jets) and [`integrals`] (closed forms of both
+//!    reformulations, eq. 8–19, as moments).
+//! 4. [`special`]: the exponential integrals (complex `E1` with fixed-bound region selection,
+//!    real `E_n`).
 //!
 //! [`scene`] is the public front: [`Scene`], [`in_scatter`], the surface term and total
 //! radiance, and the seeds' [`atan_form`]. [`march`] is the ray-marching baseline
