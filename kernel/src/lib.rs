@@ -22,9 +22,9 @@
 //!    kinks.
 //! 3. The default, error-controlled path: [`panels`] — panels refined until `F/(1+v²)` is
 //!    resolved, the exponential integrated exactly by its Legendre moments (docs/DESIGN.md §4.1).
-//! 3′. The fixed-cost path the shaders compute: [`expansion`] (phase × light as one polynomial
-//!    per piece, Chebyshev or Taylor by jets) and [`integrals`] (closed forms of both
-//!    reformulations, eq. 8–19, as moments).
+//!    The fixed-cost path the shaders compute instead: [`expansion`] (phase × light as one
+//!    polynomial per piece, Chebyshev or Taylor by jets) and [`integrals`] (closed forms of
+//!    both reformulations, eq. 8–19, as moments).
 //! 4. [`special`]: the exponential integrals (complex `E1` with fixed-bound region selection,
 //!    real `E_n`).
 //!
