@@ -241,31 +241,24 @@ where
     }
     let cuts = &mut cuts[..n_cuts];
     cuts.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
-    let expansion = match method {
-        Method::Fixed(expansion) => expansion,
-        Method::Panels(control) => {
-            let mut total = T::zero();
-            let mut lo = half.y_lo;
-            for i in 0..=n_cuts {
-                let hi = if i < n_cuts { cuts[i] } else { half.y_hi };
-                total = total + integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run);
-                lo = hi;
-            }
-            return total;
-        }
-    };
-    if n_cuts == 0 {
-        return piece_integral::<T, _, E, N>(half, &f, expansion, ei);
-    }
+    // The pieces between the cuts, each by the method's own rule; a half without cuts is one
+    // piece in the fixed method's own scaling.
     let mut total = T::zero();
     let mut lo = half.y_lo;
     for i in 0..=n_cuts {
         let hi = if i < n_cuts { cuts[i] } else { half.y_hi };
-        if !(hi > lo) {
+        if n_cuts > 0 && !(hi > lo) {
             continue;
         }
-        let (piece, weight) = half.part(lo, hi);
-        total = total + weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei);
+        total = total
+            + match method {
+                Method::Panels(control) => integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run),
+                Method::Fixed(expansion) if n_cuts == 0 => piece_integral::<T, _, E, N>(half, &f, expansion, ei),
+                Method::Fixed(expansion) => {
+                    let (piece, weight) = half.part(lo, hi);
+                    weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei)
+                }
+            };
         lo = hi;
     }
     total

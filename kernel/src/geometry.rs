@@ -121,7 +121,13 @@ impl<T: Real> Canonical<T> {
     /// cancellation). Where the products could overflow or underflow (`|p − o|` or `|dir|`
     /// beyond `T::EXACT_RANGE` or below its reciprocal) it is [`Canonical::new`].
     pub fn new_accurate(origin: [T; 3], dir: [T; 3], t0: T, t1: T, light: [T; 3], axis: [T; 3]) -> Self {
-        let plain = Self::new(origin, dir, t0, t1, light, axis);
+        Self::new(origin, dir, t0, t1, light, axis).refined(origin, dir, light, axis)
+    }
+
+    /// This plain reduction ([`Canonical::new`] of the same inputs) with `h` and `d_c` redone
+    /// as [`Canonical::new_accurate`] does, for a caller that needs both.
+    pub fn refined(self, origin: [T; 3], dir: [T; 3], light: [T; 3], axis: [T; 3]) -> Self {
+        let plain = self;
         let scale = length(dir);
         if !(scale > T::zero() && scale.is_finite()) {
             return plain;
@@ -148,9 +154,13 @@ impl<T: Real> Canonical<T> {
             return plain;
         }
         let w_len = length(w);
+        if w_len == T::zero() {
+            // the light exactly on the ray line
+            return Canonical { h: T::zero(), d_c: T::zero(), ..plain };
+        }
         let h = w_len / scale;
         if !(h.is_finite() && h > T::zero()) {
-            return Canonical { h: if w_len == T::zero() { T::zero() } else { plain.h }, d_c: if w_len == T::zero() { T::zero() } else { plain.d_c }, ..plain };
+            return plain;
         }
         let a = normalize(axis);
         // n = −(dir × w)/(|dir||w|), scaled by the largest components first

@@ -1,5 +1,5 @@
 //! Error-controlled panels on one half: the default path ([`crate::combined`] calls it for each
-//! piece between the light's kinks and beam extremes).
+//! piece between the light's kinks).
 //!
 //! On either half (module docs of [`crate::integrals`]) the integral is
 //! `∫ e^{−H(v − v_s)} G(v) dv` with `G(v) = F(y(v))/(1 + v²)`: `v = y` before the foot,
@@ -20,11 +20,16 @@
 //!   against `U_k = ∫ e^{−H(1/y − 1/y_b)} (y/y_b)^k dy = y_b s_{k+2}(H/y_b) − e^{−H(1/y_a − 1/y_b)}
 //!   y_a (y_a/y_b)^k s_{k+2}(H/y_a)`, `s_n(x) = e^x E_n(x)` (A&S 5.1.4): both terms positive,
 //!   the second at most a quarter of the first.
+//! * **y-panel** after the foot, for a panel that is no tail and across which the exponent grows
+//!   by at most 4 (`Y_PANEL_EXPONENT`; beyond it, a v-panel): the whole integrand by the rule in
+//!   `y`, where `1/(1+v²)` would put its poles close to a wide v-panel.
 //!
-//! The estimate of a panel's error is its weight mass times `|c_{N−1}| + |c_{N−2}|`; a panel is
-//! accepted when that is below `tolerance × max(|its value|, floor × its scale)` (`scale`: the
-//! panel's integral with `F` replaced by the largest `F` seen on the segment), so that the sum
-//! of the errors is below `tolerance × (|exact| + floor × scale)` — the accuracy target's form.
+//! The estimate of a panel's error is its weight mass times `|c_{N−1}| + |c_{N−2}|`, scaled by
+//! the coefficients' decay (`error_factor`) and, on a tail panel, plus the monomial
+//! conversion's rounding; a panel is accepted when that is below
+//! `tolerance × max(|its value|, floor × its scale)` or the transform's own rounding (`scale`:
+//! the panel's integral with `F` replaced by the largest `F` seen on the segment), so that the
+//! sum of the errors is below `tolerance × (|exact| + floor × scale)` — the accuracy target's form.
 //! Otherwise the panel is split at its midpoint in `y`, the half's bright end (`v = v_s`) first,
 //! so that a panel below `tolerance × floor` of what is already summed is accepted as it is.
 //! At most `max_panels` panels are evaluated per piece (a fixed worst case); where the bound
@@ -139,6 +144,13 @@ struct Panel<T> {
     f_max: T,
 }
 
+/// The discrete transform's rounding, the floor below which no refinement helps: about `Nε`
+/// of the weighted mean of the samples' magnitudes per coefficient, times the weight mass
+/// (`4Nε·mass·mean`).
+fn transform_noise<T: Real, const N: usize>(mass: T, mean_abs: T) -> T {
+    T::from(4 * N).unwrap() * T::epsilon() * mass * mean_abs
+}
+
 /// `e^{−H(v_s(panel) − v_s(half))}` for the panel `[a, b]` in `y`.
 fn factor<T: Real>(half: &Half<T>, a: T, b: T) -> T {
     let offset = if half.second { (half.y_hi - b) / (b * half.y_hi) } else { a - half.y_lo };
@@ -245,8 +257,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
     let bound = mass * g_max;
-    // the discrete transform's rounding: ~Nε of the weighted mean of |G| per coefficient
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * mass * g_avg;
+    let noise = transform_noise::<T, N>(mass, g_avg);
     let error = mass * tail_estimate(&c) * error_factor(&c, &m);
     Panel { value: w * sum, error, bound, noise, mass_over: mass * over_max, f_max }
 }
@@ -289,7 +300,7 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let mut m = [T::zero(); N];
     m[0] = T::lit(2.0);
     let bound = w * T::lit(2.0) * p_max;
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * w * T::lit(2.0) * p_avg;
+    let noise = transform_noise::<T, N>(w * T::lit(2.0), p_avg);
     let error = w * T::lit(2.0) * tail_estimate(&c) * error_factor(&c, &m);
     Panel { value: w * T::lit(2.0) * c[0], error, bound, noise, mass_over: mass * over_max, f_max }
 }
@@ -365,7 +376,7 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     // the conversion's rounding is an error like the truncation's (splitting the panel
     // reduces it: the c_k fall faster); the floor is only the transform's own 4Nε
     let conversion = T::epsilon() * mass * spread;
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * mass * g_avg;
+    let noise = transform_noise::<T, N>(mass, g_avg);
     Panel { value: w * sum, error: mass * tail_estimate(&c) + conversion, bound, noise, mass_over: mass, f_max }
 }
 

@@ -109,8 +109,8 @@ where
             T::vec3_to_array(light.position),
             light.distribution.axis(),
         );
-        let canonical = Canonical::new_accurate(args.0, args.1, args.2, args.3, args.4, args.5);
         let canonical_fixed = Canonical::new(args.0, args.1, args.2, args.3, args.4, args.5);
+        let canonical = canonical_fixed.refined(args.0, args.1, args.4, args.5);
         Ok(Scene { ray, light, medium, phase, canonical, canonical_fixed })
     }
 
@@ -155,10 +155,17 @@ where
     /// `+∞` exactly when the light lies on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`) and
     /// `σs·I > 0`, or when the true value exceeds the float range; never NaN.
     pub fn in_scatter(&self) -> T {
+        self.in_scatter_controlled(default_control()).0
+    }
+
+    /// `L_m` by error-controlled panels with the precision's [`Real::PANEL_NODES`] and the
+    /// given control (a looser tolerance trades accuracy for time), and the number of panels
+    /// evaluated.
+    pub fn in_scatter_controlled(&self, control: Control<T>) -> (T, usize) {
         if T::PANEL_NODES == 16 {
-            self.in_scatter_panels::<16>(default_control())
+            self.in_scatter_panels_counted::<16>(control)
         } else {
-            self.in_scatter_panels::<12>(default_control())
+            self.in_scatter_panels_counted::<12>(control)
         }
     }
 

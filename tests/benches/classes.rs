@@ -79,21 +79,13 @@ fn peer<T: Real>(n: usize) -> GaussAngle<T> {
 }
 
 fn ours<T: Real>(s: &S<T>, control: Control<T>) -> T {
-    if T::PANEL_NODES == 16 {
-        s.in_scatter_panels::<16>(control)
-    } else {
-        s.in_scatter_panels::<12>(control)
-    }
+    s.in_scatter_controlled(control).0
 }
 
 fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
     for (name, class) in load::<T>() {
         let ours_err = largest_error(&class, |s| s.in_scatter());
-        let panels: Vec<usize> = class
-            .scenes
-            .iter()
-            .map(|s| if T::PANEL_NODES == 16 { s.in_scatter_panels_counted::<16>(default_control()).1 } else { s.in_scatter_panels_counted::<12>(default_control()).1 })
-            .collect();
+        let panels: Vec<usize> = class.scenes.iter().map(|s| s.in_scatter_controlled(default_control()).1).collect();
         let peer_errs: Vec<f64> = NODES.iter().map(|&n| largest_error(&class, |s| s.gauss_angle(peer(n)).0)).collect();
         let (n_equal, reached) = match NODES.iter().zip(&peer_errs).find(|(_, &e)| e <= ours_err) {
             Some((&n, _)) => (n, true),
