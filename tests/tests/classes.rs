@@ -7,18 +7,19 @@
 //! scene as the reference.
 //!
 //! Asserted, over every record of every class (the maximum, never a subset):
-//! * f64, default `in_scatter` (error-controlled panels): ≤ 1e-10;
-//! * f32, default `in_scatter`, on records whose f32 inputs determine the geometry to 1e-5
-//!   (`|o − p| ≤ 300 h`; beyond it rounding the inputs alone moves `h` by more): ≤ 1e-4;
-//! * the error of the fixed-term path never grows by more than 10× from `N` to `N + 2`, for
-//!   `N = 2 … 14`, on the peaked classes (f64) — the stable-moment property.
+//! * f64, default `in_scatter` (error-controlled panels): ≤ 1e-10 (a value below f64's normal
+//!   range must come out 0 or subnormal);
+//! * f32, default `in_scatter`, on records whose value is at least 1e-30 (far inside f32's
+//!   normal range; the deepest thick scenes are not): ≤ 1e-4;
+//! * the panel method's error never grows with its nodes per panel: f64 N = 8, 10, 12, 16 and
+//!   f32 N = 6, 8, 10, 12, at equal evaluation budgets.
 //!
 //! Printed (`--nocapture`): the per-class table of the default path, the fixed 4 and 6 terms
 //! and Gauss–Legendre in the light angle (the peer) at 8, 16, 24 and 64 nodes, and the panel
 //! counts.
 
 use airlight::march::GaussAngle;
-use airlight::{default_control, Expansion, Real, Scene};
+use airlight::{default_control, Expansion, Scene};
 use airlight_codegen::scene_json::{parse_value, SceneRecord};
 use airlight_tests::reference_lines;
 use std::collections::BTreeMap;
@@ -38,19 +39,14 @@ fn cases() -> Vec<Case> {
         .iter()
         .map(|v| {
             let rec = parse_value::<f64>(v).unwrap_or_else(|e| panic!("record invalid: {e}: {v}"));
-            let scene = Scene::new(rec.ray, rec.light, rec.medium, rec.phase).unwrap();
-            let g = scene.canonical();
-            let o = rec.ray.origin;
-            let p = rec.light.position;
-            let _ = (o, p, g);
             let exact = v["in_scatter"].as_f64().unwrap();
-            let f32_ok = exact >= 1e-30;
             Case {
                 category: v["category"].as_str().unwrap().to_string(),
-                exact: v["in_scatter"].as_f64().unwrap(),
+                exact,
                 scale: v["scale"].as_f64().unwrap(),
                 rec,
-                f32_ok,
+                // judged in f32 where the value is far inside f32's normal range
+                f32_ok: exact >= 1e-30,
             }
         })
         .collect()
@@ -94,7 +90,7 @@ fn hard_classes_against_quadrature() {
         let fixed4 = err(s.in_scatter_with::<4>(Expansion::Chebyshev), c, 1e-10);
         let fixed6 = err(s.in_scatter_with::<6>(Expansion::Chebyshev), c, 1e-10);
         let peer = |n: usize| err(s.gauss_angle(GaussAngle { nodes: n, split: true, cut: Some(40.0) }).0, c, 1e-10);
-        let panels = s.in_scatter_panels_counted::<16>(default_control()).1;
+        let panels = s.in_scatter_controlled(default_control()).1;
         table
             .entry(c.category.clone())
             .or_default()
@@ -133,7 +129,7 @@ fn class_error_with<T: airlight::Real, const N: usize>(cases: &[&Case], tau: f64
     let control = airlight::panels::Control { max_panels: T::MAX_PANELS * T::PANEL_NODES / N, ..base };
     cases
         .iter()
-        .filter(|c| c.exact >= if tau > 1e-6 { 1e-30 } else { f64::MIN_POSITIVE })
+        .filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE })
         .map(|c| {
             let r = c.rec.cast::<T>();
             let s = Scene::new(r.ray, r.light, r.medium, r.phase).unwrap();
