@@ -26,14 +26,14 @@
 //!
 //! The estimate of a panel's error is its weight mass times `|c_{N−1}| + |c_{N−2}|`, scaled by
 //! the coefficients' decay (`error_factor`) and, on a tail panel, plus the monomial
-//! conversion's rounding; a panel is accepted when that is below
-//! `tolerance × max(|its value|, floor × its scale)` or the transform's own rounding (`scale`:
-//! the panel's integral with `F` replaced by the largest `F` seen on the segment), so that the
-//! sum of the errors is below `tolerance × (|exact| + floor × scale)` — the accuracy target's form.
-//! Otherwise the panel is split at its midpoint in `y`, the half's bright end (`v = v_s`) first,
-//! so that a panel below `tolerance × floor` of what is already summed is accepted as it is.
-//! At most `max_panels` panels are evaluated per piece (a fixed worst case); where the bound
-//! is hit the panel's own estimate is used and the result stays finite.
+//! conversion's rounding (0 once it is below the transform's own rounding, where splitting
+//! cannot help). A piece is done when the sum of its panels' estimates is below
+//! `tolerance × max(|their sum|, floor × scale)` (`scale`: the piece's integral with `F`
+//! replaced by the largest `F` seen on the segment) — the accuracy target's form. Until then
+//! the panel with the largest estimate is split at its midpoint in `y` (global adaptive
+//! refinement, as QUADPACK's QAG): a bounded budget is spent where the error is, not on the
+//! first panel the order of a recursion reaches. At most `max_panels` panels are evaluated per
+//! piece (a fixed worst case); where the bound is hit the sum so far is returned, finite.
 
 use crate::expansion::{gauss_table, Expandable};
 use crate::integrals::Half;
@@ -61,8 +61,8 @@ pub struct Running<T> {
     pub panels: usize,
 }
 
-/// The deepest pending stack (the bisection depth plus one).
-const STACK: usize = 64;
+/// The most panels a piece's list holds (each split adds one: `(max_panels + 1)/2` at most).
+const LIST: usize = 64;
 /// The most Legendre terms a panel may use (the largest tabulated rule with `N ≤ MAX_N`).
 const MAX_N: usize = 16;
 
@@ -85,47 +85,71 @@ where
         Some(r) if N <= MAX_N => r,
         _ => return T::zero(),
     };
-    let mut stack = [(T::zero(), T::zero()); STACK];
-    stack[0] = (lo, hi);
-    let mut depth = 1;
-    let mut total = T::zero();
-    let mut budget = control.max_panels;
-    while depth > 0 {
-        depth -= 1;
-        let (a, b) = stack[depth];
-        if !(b > a) {
-            continue;
+    if !(hi > lo) {
+        return T::zero();
+    }
+    let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero(), mass_over: T::zero() }; LIST];
+    list[0] = listed::<T, F, N>(half, lo, hi, f, rule, run);
+    let mut count = 1;
+    let mut budget = control.max_panels.saturating_sub(1);
+    loop {
+        let (mut total, mut errors, mut mass) = (T::zero(), T::zero(), T::zero());
+        let mut worst = 0;
+        for (i, p) in list.iter().enumerate().take(count) {
+            total = total + p.value;
+            errors = errors + p.error;
+            mass = mass + p.mass_over;
+            if p.error > list[worst].error {
+                worst = i;
+            }
         }
-        let panel = if half.second && a <= b * T::lit(0.25) {
-            tail_panel::<T, F, N>(half, a, b, f, rule)
-        } else if half.second && half.big_h * ((b - a) / (a * b)) <= T::lit(Y_PANEL_EXPONENT) {
-            y_panel::<T, F, N>(half, a, b, f, rule)
-        } else {
-            v_panel::<T, F, N>(half, a, b, f, rule)
-        };
-        run.panels += 1;
-        budget = budget.saturating_sub(1);
-        run.f_max = run.f_max.max(panel.f_max);
-        let scale = run.f_max * panel.mass_over;
-        let accepted = panel.error <= (control.tolerance * panel.value.abs().max(control.floor * scale)).max(panel.noise)
-            || panel.bound <= control.tolerance * control.floor * total.abs();
-        let can_split = budget >= 2 && depth + 2 <= STACK && (b - a) > T::epsilon() * b;
-        if accepted || !can_split {
-            total = total + panel.value;
+        let target = control.tolerance * total.abs().max(control.floor * run.f_max * mass);
+        if errors <= target || !(list[worst].error > T::zero()) || budget < 2 || count == LIST {
+            return total;
+        }
+        let (a, b) = (list[worst].a, list[worst].b);
+        if !((b - a) > T::epsilon() * b) {
+            list[worst].error = T::zero();
             continue;
         }
         let mid = a + (b - a) * T::lit(0.5);
-        // the bright end (weight 1: low y before the foot, high y after it) on top of the stack
-        if half.second {
-            stack[depth] = (a, mid);
-            stack[depth + 1] = (mid, b);
-        } else {
-            stack[depth] = (mid, b);
-            stack[depth + 1] = (a, mid);
-        }
-        depth += 2;
+        list[worst] = listed::<T, F, N>(half, a, mid, f, rule, run);
+        list[count] = listed::<T, F, N>(half, mid, b, f, rule, run);
+        count += 1;
+        budget -= 2;
     }
-    total
+}
+
+/// A panel in a piece's list.
+#[derive(Clone, Copy)]
+struct Listed<T> {
+    a: T,
+    b: T,
+    value: T,
+    /// The error estimate; 0 once it is at the transform's own rounding, where splitting
+    /// cannot help.
+    error: T,
+    mass_over: T,
+}
+
+/// Evaluates the panel `[a, b]` and counts it.
+fn listed<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)], run: &mut Running<T>) -> Listed<T> {
+    let p = panel::<T, F, N>(half, a, b, f, rule);
+    run.panels += 1;
+    run.f_max = run.f_max.max(p.f_max);
+    let error = if p.error <= p.noise { T::zero() } else { p.error };
+    Listed { a, b, value: p.value, error, mass_over: p.mass_over }
+}
+
+/// The panel kind for `[a, b]` (module docs): tail, y- or v-panel.
+fn panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)]) -> Panel<T> {
+    if half.second && a <= b * T::lit(0.25) {
+        tail_panel::<T, F, N>(half, a, b, f, rule)
+    } else if half.second && half.big_h * ((b - a) / (a * b)) <= T::lit(Y_PANEL_EXPONENT) {
+        y_panel::<T, F, N>(half, a, b, f, rule)
+    } else {
+        v_panel::<T, F, N>(half, a, b, f, rule)
+    }
 }
 
 /// What one panel's samples say, in the half's scaling.
@@ -134,8 +158,6 @@ struct Panel<T> {
     value: T,
     /// Its error estimate: weight mass × the last two Legendre coefficients of `G`.
     error: T,
-    /// Weight mass × largest `|G|`: a bound on `|value|`.
-    bound: T,
     /// The error rounding alone leaves in the estimate and the value: no refinement goes below.
     noise: T,
     /// Weight mass × largest `1/(1+v²)`: the panel's scale per unit of `F`.
@@ -235,7 +257,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         (a + r, r)
     };
     let mut g = [T::zero(); N];
-    let (mut f_max, mut g_max, mut over_max, mut g_avg) = (T::zero(), T::zero(), T::zero(), T::zero());
+    let (mut f_max, mut over_max, mut g_avg) = (T::zero(), T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let v = vc + r * node::<T>(rule, i);
         let y = if half.second { v.recip() } else { v };
@@ -243,7 +265,6 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         let over = (T::one() + v * v).recip();
         *gi = fy * over;
         f_max = f_max.max(fy.abs());
-        g_max = g_max.max(gi.abs());
         over_max = over_max.max(over);
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
@@ -256,10 +277,9 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     }
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
-    let bound = mass * g_max;
     let noise = transform_noise::<T, N>(mass, g_avg);
     let error = mass * tail_estimate(&c) * error_factor(&c, &m);
-    Panel { value: w * sum, error, bound, noise, mass_over: mass * over_max, f_max }
+    Panel { value: w * sum, error, noise, mass_over: mass * over_max, f_max }
 }
 
 /// The largest growth `H(1/a − 1/b)` of the exponent across a y-panel: an `N ≥ 8` point rule
@@ -277,7 +297,7 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let yc = a + r;
     let big_h = half.big_h;
     let mut p = [T::zero(); N];
-    let (mut f_max, mut p_max, mut over_max, mut mass, mut p_avg) = (T::zero(), T::zero(), T::zero(), T::zero(), T::zero());
+    let (mut f_max, mut over_max, mut mass, mut p_avg) = (T::zero(), T::zero(), T::zero(), T::zero());
     for (i, pi) in p.iter_mut().enumerate() {
         let xi = node::<T>(rule, i);
         let y = yc + r * xi;
@@ -287,7 +307,6 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         let over = (T::one() + y * y).recip();
         *pi = fy * over * weight;
         f_max = f_max.max(fy.abs());
-        p_max = p_max.max(pi.abs());
         over_max = over_max.max(over);
         mass = mass + T::lit(rule[i / 2].1) * weight;
         p_avg = p_avg + T::lit(rule[i / 2].1 * 0.5) * pi.abs();
@@ -299,10 +318,9 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     // (no moment weights the tail), only the aliasing one
     let mut m = [T::zero(); N];
     m[0] = T::lit(2.0);
-    let bound = w * T::lit(2.0) * p_max;
     let noise = transform_noise::<T, N>(w * T::lit(2.0), p_avg);
     let error = w * T::lit(2.0) * tail_estimate(&c) * error_factor(&c, &m);
-    Panel { value: w * T::lit(2.0) * c[0], error, bound, noise, mass_over: mass * over_max, f_max }
+    Panel { value: w * T::lit(2.0) * c[0], error, noise, mass_over: mass * over_max, f_max }
 }
 
 /// A tail panel (module docs): `[a, b]` after the foot, `a ≤ b/4`.
@@ -310,13 +328,12 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     let r = (b - a) * T::lit(0.5);
     let yc = a + r;
     let mut g = [T::zero(); N];
-    let (mut f_max, mut g_max, mut g_avg) = (T::zero(), T::zero(), T::zero());
+    let (mut f_max, mut g_avg) = (T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let y = yc + r * node::<T>(rule, i);
         let fy = f.eval(y);
         *gi = fy / (T::one() + y * y);
         f_max = f_max.max(fy.abs());
-        g_max = g_max.max(gi.abs());
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
     let c = legendre::<T, N>(&g);
@@ -358,7 +375,6 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     }
     let w = factor(half, a, b);
     let mass = w * mass;
-    let bound = mass * g_max;
     // Rounding: the conversion to monomials in u sums terms up to L_k(|α| + |β|)·|c_k|, L_k the
     // monomial coefficients of P_k in absolute value summed at x (by the recurrence with every
     // sign made positive; at x = 3, the case a = 0, it bounds the central Delannoy numbers
@@ -377,7 +393,7 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     // reduces it: the c_k fall faster); the floor is only the transform's own 4Nε
     let conversion = T::epsilon() * mass * spread;
     let noise = transform_noise::<T, N>(mass, g_avg);
-    Panel { value: w * sum, error: mass * tail_estimate(&c) + conversion, bound, noise, mass_over: mass, f_max }
+    Panel { value: w * sum, error: mass * tail_estimate(&c) + conversion, noise, mass_over: mass, f_max }
 }
 
 /// The monomial coefficients in `ξ` of `Σ c_k P_k(ξ)`. On a resolved panel `|c_k|` decays
