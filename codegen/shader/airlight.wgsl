@@ -1,18 +1,32 @@
 // airlight — analytic single-scattered air-light of point and spot lights in a homogeneous
-// medium (Pegoraro, Schott & Parker, Graphics Interface 2009), f32, @TERMS@ expansion terms.
+// medium (Pegoraro, Schott & Parker, Graphics Interface 2009), f32, error-controlled panels of
+// @TERMS@ Gauss–Legendre nodes.
 //
 // The single shader source of truth, mirroring the CPU kernel (crate `airlight`, kernel/src)
-// module by module: special/ (exponential integrals) → expansion/ (Chebyshev) → integrals.rs
-// (moments) → combined.rs (split at the light's foot) → geometry.rs, with phase.rs and light.rs.
-// Every public name starts with `airlight_`. Loops have constant bounds only.
+// module by module: special/ (exponential integrals) → integrals.rs (the isotropic moment) →
+// panels.rs (error-controlled panels) → combined.rs (split at the light's foot) → geometry.rs,
+// with phase.rs and light.rs. Every placeholder between at-signs is filled at emission from
+// the kernel's own tables and constants (codegen/src/targets.rs `source`). Every public name
+// starts with `airlight_`. Loops have constant bounds only.
 
+// Gauss–Legendre nodes per panel, half of them, and the panel control (kernel SHADER_CONTROL).
 const AIRLIGHT_TERMS: u32 = @TERMS@u;
+const AIRLIGHT_HALF_TERMS: u32 = @HALF_TERMS@u;
+const AIRLIGHT_PANEL_TOLERANCE: f32 = @PANEL_TOLERANCE@;
+const AIRLIGHT_PANEL_FLOOR: f32 = @PANEL_FLOOR@;
+const AIRLIGHT_MAX_PANELS: u32 = @MAX_PANELS@u;
+// A piece's panel list: each split adds one panel for two evaluations.
+const AIRLIGHT_PANEL_LIST: u32 = @PANEL_LIST@u;
+// The largest exponent growth across a y-panel (panels.rs Y_PANEL_EXPONENT).
+const AIRLIGHT_Y_PANEL_EXPONENT: f32 = @Y_PANEL_EXPONENT@;
+// The range of exact products (real.rs, f32).
+const AIRLIGHT_EXACT_RANGE: f32 = @EXACT_RANGE@;
 const AIRLIGHT_PI: f32 = 3.14159265358979;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772156649015329;
 const AIRLIGHT_FLT_MAX: f32 = 3.40282347e38;
 const AIRLIGHT_FLT_EPS: f32 = 1.1920929e-7;
 const AIRLIGHT_LN_2: f32 = 0.6931472;
-// Scratch size of the E_n and moment arrays: orders up to 3 + 2·5 (N_1 series) and N + 2.
+// Scratch size of the E_n arrays: orders up to N + 2 (tail panels).
 const AIRLIGHT_SCRATCH: u32 = 16u;
 
 /// Explicitly zeroed arrays (some HLSL front ends reject the zero-value cast naga would
@@ -325,37 +339,46 @@ fn airlight_en_scaled(x: f32, count: u32, out: ptr<function, array<f32, AIRLIGHT
 // ---------------------------------------------------------------- phase functions, lights
 // (kernel/src/phase.rs, kernel/src/light.rs)
 
-/// 1 + g² − 2gμ as two non-negative terms (phase.rs::hg_kernel): no cancellation at a peak.
-fn airlight_hg_base(g: f32, mu: f32) -> f32 {
+/// 1 + g² − 2gμ from 1 − μ and 1 + μ as two non-negative terms (phase.rs::hg_kernel): no
+/// cancellation at a peak.
+fn airlight_hg_base(g: f32, om: f32, op: f32) -> f32 {
     if (g >= 0.0) {
         let a = 1.0 - g;
-        return (1.0 - mu) * (g + g) + a * a;
+        return om * (g + g) + a * a;
     }
     let b = 1.0 + g;
-    return (mu + 1.0) * -(g + g) + b * b;
+    return op * -(g + g) + b * b;
 }
 
-fn airlight_hg(g: f32, mu: f32) -> f32 {
-    let base = airlight_hg_base(g, mu);
-    return (1.0 - g) * (1.0 + g) / (4.0 * AIRLIGHT_PI * base * sqrt(base));
+fn airlight_hg(g: f32, om: f32, op: f32) -> f32 {
+    let base = airlight_hg_base(g, om, op);
+    return (1.0 - g) * (1.0 + g) / (4.0 * AIRLIGHT_PI) / (base * sqrt(base));
 }
 
-/// P(μ), normalised over the sphere, μ = 1 forward.
-fn airlight_phase(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32) -> f32 {
+/// P(μ), normalised over the sphere, μ = 1 forward, given with om = 1 − μ and op = 1 + μ
+/// exact (phase.rs `eval_sides`).
+fn airlight_phase(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32, om: f32, op: f32) -> f32 {
     switch kind {
         case 1u: { return 3.0 / (16.0 * AIRLIGHT_PI) * (1.0 + mu * mu); }
-        case 2u: { return airlight_hg(p0, mu); }
+        case 2u: { return airlight_hg(p0, om, op); }
         case 3u: {
-            let d = 1.0 - p0 * mu;
-            return (1.0 - p0) * (1.0 + p0) / (4.0 * AIRLIGHT_PI * d * d);
+            // 1 − kμ = (1 − k) + k(1 − μ) for k ≥ 0, (1 + k) − k(1 + μ) for k < 0
+            var d = (1.0 + p0) - p0 * op;
+            if (p0 >= 0.0) { d = (1.0 - p0) + p0 * om; }
+            return (1.0 - p0) * (1.0 + p0) / (4.0 * AIRLIGHT_PI) / (d * d);
         }
         case 4u: {
-            let base = airlight_hg_base(p0, mu);
-            return 3.0 * (1.0 - p0) * (1.0 + p0) * (1.0 + mu * mu) / (8.0 * AIRLIGHT_PI * (2.0 + p0 * p0) * base * sqrt(base));
+            let base = airlight_hg_base(p0, om, op);
+            return 3.0 / 8.0 / AIRLIGHT_PI * (1.0 - p0) * (1.0 + p0) / (2.0 + p0 * p0) * ((1.0 + mu * mu) / (base * sqrt(base)));
         }
-        case 5u: { return p2 * airlight_hg(p0, mu) + (1.0 - p2) * airlight_hg(p1, mu); }
+        case 5u: { return p2 * airlight_hg(p0, om, op) + (1.0 - p2) * airlight_hg(p1, om, op); }
         default: { return 1.0 / (4.0 * AIRLIGHT_PI); }
     }
+}
+
+/// P(μ) with 1 ∓ μ formed from μ (the limits at h = 0, where μ = ±1 exactly).
+fn airlight_phase_mu(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32) -> f32 {
+    return airlight_phase(kind, p0, p1, p2, mu, 1.0 - mu, 1.0 + mu);
 }
 
 /// D(c): omni 1, two-lobed c^p, spot smoothstep between cos_outer and cos_inner.
@@ -409,98 +432,32 @@ struct AirlightHalf {
     dv_infinite: bool,
 }
 
-/// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²).
+/// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
+/// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
 fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
     let y2 = y * y;
     let inv = 1.0 / (1.0 + y2);
     let om = 1.0 - y2;
-    let mu = -sigma * om * inv;
+    let mu = -sigma * (om * inv);
     let c = (sigma * g.d_el * om + 2.0 * g.d_c * y) * inv;
+    let far = y2 * inv * 2.0;
+    let near = inv * 2.0;
+    var minus = near;
+    var plus = far;
+    if (sigma < 0.0) {
+        minus = far;
+        plus = near;
+    }
     return airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c)
-        * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
+        * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu, minus, plus);
 }
 
-// ---------------------------------------------------------------- expansion
-// (kernel/src/expansion/chebyshev.rs)
+// ---------------------------------------------------------------- the isotropic moment
+// (kernel/src/integrals.rs, count = 1)
 
-/// Local monomial coefficients a_k of F(y_c + s) ≈ Σ a_k s^k, interpolating at the Chebyshev
-/// nodes of [y_c − r, y_c + r], with the rounding-noise floor of the kernel.
-fn airlight_chebyshev(s: AirlightScene, g: AirlightCanonical, sigma: f32, y_c: f32, r: f32) -> array<f32, AIRLIGHT_TERMS> {
-    let nf = f32(AIRLIGHT_TERMS);
-    let theta = AIRLIGHT_PI / (nf + nf);
-    let c2 = cos(theta + theta);
-    var prev = cos(theta);
-    var cur = prev;
-    var xi = airlight_zero_terms();
-    var values = airlight_zero_terms();
-    for (var j = 0u; j < AIRLIGHT_TERMS; j++) {
-        xi[j] = cur;
-        let next = (c2 + c2) * cur - prev;
-        prev = cur;
-        cur = next;
-        values[j] = airlight_integrand(s, g, sigma, y_c + r * xi[j]);
-    }
-    var cheb = airlight_zero_terms();
-    for (var j = 0u; j < AIRLIGHT_TERMS; j++) {
-        var t_prev = 1.0;
-        var t_cur = xi[j];
-        for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-            var tk = t_cur;
-            if (k == 0u) { tk = 1.0; }
-            cheb[k] += values[j] * tk;
-            if (k >= 1u) {
-                let t_next = (xi[j] + xi[j]) * t_cur - t_prev;
-                t_prev = t_cur;
-                t_cur = t_next;
-            }
-        }
-    }
-    var scale_sum = 0.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        cheb[k] *= 2.0 / nf;
-        if (k == 0u) { cheb[k] *= 0.5; }
-        scale_sum += abs(cheb[k]);
-    }
-    var t_km1 = airlight_zero_terms();
-    var t_k = airlight_zero_terms();
-    var hat = airlight_zero_terms();
-    t_km1[0] = 1.0;
-    t_k[1] = 1.0;
-    hat[0] = cheb[0];
-    for (var k = 1u; k < AIRLIGHT_TERMS; k++) {
-        var t_next = airlight_zero_terms();
-        for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
-            hat[i] += cheb[k] * t_k[i];
-            var shifted = 0.0;
-            if (i > 0u) { shifted = t_k[i - 1u]; }
-            t_next[i] = shifted + shifted - t_km1[i];
-        }
-        t_km1 = t_k;
-        t_k = t_next;
-    }
-    var amplification = 1.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { amplification *= 2.41421356; }
-    let noise = 4.0 * nf * AIRLIGHT_FLT_EPS * amplification * scale_sum;
-    var a = airlight_zero_terms();
-    var rk = 1.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        if (k == 0u) {
-            a[k] = hat[k];
-        } else if (abs(hat[k]) > noise && rk > 0.0) {
-            let ak = hat[k] / rk;
-            if (airlight_is_finite(ak)) { a[k] = ak; }
-        }
-        rk *= r;
-    }
-    return a;
-}
-
-// ---------------------------------------------------------------- moments
-// (kernel/src/integrals.rs)
-
-/// Gauss–Legendre moments on a short sub-interval (route 1), 4 points.
-fn airlight_moments_gauss(half: AirlightHalf) -> array<f32, AIRLIGHT_TERMS> {
-    var m = airlight_zero_terms();
+/// m_0 on a short sub-interval (route 1): 4-point Gauss–Legendre.
+fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
+    var m = 0.0;
     let hw = half.dy * 0.5;
     let yc = half.y_lo + hw;
     let nodes = array<vec2<f32>, 4>(
@@ -508,67 +465,16 @@ fn airlight_moments_gauss(half: AirlightHalf) -> array<f32, AIRLIGHT_TERMS> {
         vec2<f32>(0.3399810435848563, 0.6521451548625461), vec2<f32>(0.8611363115940526, 0.3478548451374538));
     for (var j = 0u; j < 4u; j++) {
         let xi = nodes[j].x;
-        let s = hw * xi;
-        let y = yc + s;
+        let y = yc + hw * xi;
         var dv = hw * (1.0 + xi);
         if (half.second) { dv = hw * (1.0 - xi) / (y * half.y_hi); }
-        var p = nodes[j].y * hw * exp(-half.big_h * dv) / (1.0 + y * y);
-        for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-            m[k] += p;
-            p *= s;
-        }
+        m += nodes[j].y * hw * exp(-half.big_h * dv) / (1.0 + y * y);
     }
     return m;
 }
 
-/// [ln(v/|v − i|)] between v_s and v_e (v_e may be ∞).
-fn airlight_n1_log_part(v_s: f32, v_e: f32, v_e_infinite: bool) -> f32 {
-    var at_e = 0.0;
-    if (!v_e_infinite) {
-        let y_e = 1.0 / v_e;
-        at_e = airlight_log1p(y_e * y_e);
-    }
-    let y_s = 1.0 / v_s;
-    return -0.5 * (at_e - airlight_log1p(y_s * y_s));
-}
-
-/// T_n = y_hi^{n−1} s_n(H v_s) − e^{−HΔv} y_lo^{n−1} s_n(H v_e), out[n−1], 2 ≤ n ≤ count.
-fn airlight_t_moments(half: AirlightHalf, count: u32, out: ptr<function, array<f32, AIRLIGHT_SCRATCH>>) {
-    var s_s = airlight_zero_scratch();
-    var s_e = airlight_zero_scratch();
-    airlight_en_scaled(half.big_h / half.y_hi, count, &s_s);
-    let far_end = half.y_lo > 0.0 && airlight_is_finite(half.big_h / half.y_lo);
-    var decay = 0.0;
-    if (far_end && !half.dv_infinite) {
-        decay = exp(-half.big_h * half.dv);
-        airlight_en_scaled(half.big_h / half.y_lo, count, &s_e);
-    }
-    var p_hi = half.y_hi;
-    var p_lo = half.y_lo;
-    for (var order = 2u; order < AIRLIGHT_SCRATCH; order++) {
-        if (order <= count) {
-            (*out)[order - 1u] = p_hi * s_s[order - 1u] - p_lo * s_e[order - 1u] * decay;
-            p_hi *= half.y_hi;
-            p_lo *= half.y_lo;
-        }
-    }
-}
-
-/// N_1 far from the foot (y ≤ 1/4): Σ_j (−1)^j T_{3+2j}, 6 terms.
-fn airlight_n1_series(half: AirlightHalf) -> f32 {
-    var t = airlight_zero_scratch();
-    airlight_t_moments(half, 13u, &t);
-    var sum = 0.0;
-    for (var i = 0u; i < 6u; i++) {
-        let j = 5u - i;
-        let tn = t[3u + 2u * j - 1u];
-        if (j % 2u == 0u) { sum += tn; } else { sum -= tn; }
-    }
-    return sum;
-}
-
-/// Q_0 (integrals.rs): first half C, second half T_1 − conj(C); routes near and far.
-fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
+/// Im Q_0 = m_0 (integrals.rs `q0`, without its real part): routes near and far.
+fn airlight_q_zero(half: AirlightHalf) -> f32 {
     let big_h = half.big_h;
     let v_s = select(half.y_lo, 1.0 / half.y_hi, half.second);
     let v_e_infinite = half.second && half.y_lo == 0.0;
@@ -584,139 +490,401 @@ fn airlight_q_zero(half: AirlightHalf, with_re: bool) -> vec2<f32> {
         } else {
             d_im = airlight_atan(1.0 / v_s);
         }
-        if (big_h == 0.0) {
-            if (!half.second) { return vec2<f32>(d_re, d_im); }
-            var n1 = 0.0;
-            if (with_re) { n1 = airlight_n1_log_part(v_s, v_e, v_e_infinite); }
-            return vec2<f32>(n1, d_im);
-        }
+        if (big_h == 0.0) { return d_im; }
         let z_s = vec2<f32>(big_h * v_s, -big_h);
         let z_e = vec2<f32>(big_h * v_e, -big_h);
-        let hdv = big_h * half.dv;
         let ein_dd = airlight_ein_divided_difference(z_s, z_e);
         let cs = airlight_cos_sin(big_h);
         let rot = vec2<f32>(cs.x, -cs.y);
-        let scale = exp(big_h * v_s);
-        let c = airlight_cmul(rot, vec2<f32>(d_re, d_im) - ein_dd * hdv) * scale;
-        if (!half.second) { return c; }
-        var n1 = 0.0;
-        if (with_re) {
-            let sh = airlight_cos_sin(big_h * 0.5).y;
-            let ein_dd_real = airlight_ein_divided_difference(vec2<f32>(big_h * v_s, 0.0), vec2<f32>(big_h * v_e, 0.0));
-            n1 = (airlight_n1_log_part(v_s, v_e, false) + (sh * sh + sh * sh) * d_re - cs.y * d_im
-                - hdv * (ein_dd_real.x - airlight_cmul(rot, ein_dd).x)) * scale;
-        }
-        return vec2<f32>(n1, c.y);
+        return airlight_cmul(rot, vec2<f32>(d_re, d_im) - ein_dd * (big_h * half.dv)).y * exp(big_h * v_s);
     }
     let s_s = airlight_e1_scaled(vec2<f32>(big_h * v_s, -big_h));
-    var s_e = vec2<f32>(0.0, 0.0);
-    var decay = 0.0;
     // the far end contributes e^{−HΔv}·S(z_e): 0 where H·v_e overflows
-    let far_finite = !v_e_infinite && airlight_is_finite(big_h * v_e);
-    if (far_finite) {
-        s_e = airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h));
-        decay = exp(-big_h * half.dv);
+    if (!v_e_infinite && airlight_is_finite(big_h * v_e)) {
+        let s_e = airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h));
+        return s_s.y - s_e.y * exp(-big_h * half.dv);
     }
-    let c = s_s - s_e * decay;
-    if (!half.second) { return c; }
-    var n1 = 0.0;
-    if (with_re) {
-        if (half.y_hi <= 0.25) {
-            n1 = airlight_n1_series(half);
-        } else {
-            var e_s = airlight_zero_scratch();
-            airlight_en_scaled(big_h * v_s, 1u, &e_s);
-            var tail = 0.0;
-            if (far_finite) {
-                var e_e = airlight_zero_scratch();
-                airlight_en_scaled(big_h * v_e, 1u, &e_e);
-                tail = (e_e[0] - s_e.x) * decay;
-            }
-            n1 = (e_s[0] - s_s.x) - tail;
-        }
-    }
-    return vec2<f32>(n1, c.y);
+    return s_s.y;
 }
 
-/// φ_i(x) = ∫₀¹ e^{−xt} t^i dt, i < AIRLIGHT_TERMS.
-fn airlight_phi_moments(x: f32) -> array<f32, AIRLIGHT_TERMS> {
-    var out = airlight_zero_terms();
-    let ex = exp(-x);
-    if (x <= 2.6) {
-        for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
-            var term = 1.0 / f32(i + 1u);
-            var sum = term;
-            for (var j = 1u; j <= 14u; j++) {
-                term *= x / f32(i + j + 1u);
-                sum += term;
-            }
-            out[i] = ex * sum;
-        }
-    } else {
-        var prev = (1.0 - ex) / x;
-        for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
-            if (i > 0u) { prev = (f32(i) * prev - ex) / x; }
-            out[i] = prev;
-        }
-    }
-    return out;
-}
-
-/// out_j = Σ_i C(j,i) x_i c^{j−i}.
-fn airlight_binomial_shift(x: array<f32, AIRLIGHT_TERMS>, c: f32) -> array<f32, AIRLIGHT_TERMS> {
-    var out = airlight_zero_terms();
-    for (var j = 0u; j < AIRLIGHT_TERMS; j++) {
-        var sum = 0.0;
-        var binom = 1.0;
-        var cp = 1.0;
-        for (var ii = 0u; ii <= j; ii++) {
-            let i = j - ii;
-            sum += binom * x[i] * cp;
-            binom = binom * f32(i) / f32(j - i + 1u);
-            cp *= c;
-        }
-        out[j] = sum;
-    }
-    return out;
-}
-
-/// The moments m_k of a half (integrals.rs), k < count (1 or AIRLIGHT_TERMS).
-fn airlight_moments(half: AirlightHalf, count: u32) -> array<f32, AIRLIGHT_TERMS> {
-    var m = airlight_zero_terms();
-    if (!(half.dy > 0.0)) { return m; }
+/// The moment m_0 of a half (integrals.rs `moments` with count 1).
+fn airlight_moment_zero(half: AirlightHalf) -> f32 {
+    if (!(half.dy > 0.0)) { return 0.0; }
     let short_exp = !half.dv_infinite && half.big_h * half.dv <= 1.0;
     let short_len = half.dy <= 0.25 && (!half.second || half.dy <= half.y_lo * 0.5);
-    if (short_exp && short_len) { return airlight_moments_gauss(half); }
-    let yc = half.y_lo + half.dy * 0.5;
-    let q0 = airlight_q_zero(half, count > 1u);
-    m[0] = q0.y;
-    if (count > 1u) {
-        var r = airlight_zero_terms();
-        if (half.second) {
-            var t = airlight_zero_scratch();
-            airlight_t_moments(half, AIRLIGHT_TERMS + 1u, &t);
-            var x = airlight_zero_terms();
-            for (var i = 0u; i < AIRLIGHT_TERMS; i++) { x[i] = t[i + 1u]; }
-            r = airlight_binomial_shift(x, -yc);
-        } else {
-            let delta = half.dy;
-            let phi = airlight_phi_moments(half.big_h * delta);
-            var tau = airlight_zero_terms();
-            var p = delta;
-            for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
-                tau[i] = p * phi[i];
-                p *= delta;
-            }
-            r = airlight_binomial_shift(tau, -delta * 0.5);
+    if (short_exp && short_len) { return airlight_moment_gauss(half); }
+    return airlight_q_zero(half);
+}
+
+// ---------------------------------------------------------------- panels
+// (kernel/src/panels.rs, kernel/src/expansion/gauss_table.rs)
+
+/// (x_j, w_j), x_j > 0, of the AIRLIGHT_TERMS-point Gauss–Legendre rule (gauss_table.rs).
+fn airlight_gauss_rule() -> array<vec2<f32>, AIRLIGHT_HALF_TERMS> {
+    return array<vec2<f32>, AIRLIGHT_HALF_TERMS>(@GAUSS_RULE@);
+}
+
+/// The discrete Legendre transform, row k: the weights of g(x_j) ± g(−x_j) (gauss_table.rs).
+fn airlight_legendre_table() -> array<f32, @TRANSFORM_LEN@> {
+    return array<f32, @TRANSFORM_LEN@>(@LEGENDRE_TRANSFORM@);
+}
+
+/// Node i in the order of the samples: −x_0, x_0, −x_1, x_1, …
+fn airlight_node(rule: array<vec2<f32>, AIRLIGHT_HALF_TERMS>, i: u32) -> f32 {
+    let x = rule[i / 2u].x;
+    return select(x, -x, i % 2u == 0u);
+}
+
+/// Legendre coefficients of the samples at the nodes (panels.rs `legendre`).
+fn airlight_legendre(g: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS> {
+    let table = airlight_legendre_table();
+    var c = airlight_zero_terms();
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
+        var sum = 0.0;
+        for (var j = 0u; j < AIRLIGHT_HALF_TERMS; j++) {
+            let minus = g[2u * j];
+            let plus = g[2u * j + 1u];
+            let pair = select(plus - minus, plus + minus, k % 2u == 0u);
+            sum += table[k * AIRLIGHT_HALF_TERMS + j] * pair;
         }
-        let b = vec2<f32>(yc, -1.0);
-        var q = q0;
-        for (var k = 1u; k < AIRLIGHT_TERMS; k++) {
-            q = vec2<f32>(r[k - 1u], 0.0) - airlight_cmul(b, q);
-            m[k] = q.y;
+        c[k] = sum;
+    }
+    return c;
+}
+
+/// e^x − 1 without cancellation near 0 (Taylor below |x| = 1/2, 12 terms: < 2^-35).
+fn airlight_expm1(x: f32) -> f32 {
+    if (abs(x) >= 0.5) { return exp(x) - 1.0; }
+    var sum = 1.0;
+    for (var i = 0u; i < 11u; i++) {
+        sum = 1.0 + x * sum / f32(12u - i);
+    }
+    return x * sum;
+}
+
+/// M_k(λ) = ∫ e^{−λ(1+ξ)} P_k(ξ) dξ = 2(−1)^k e^{−λ} i_k(λ), k < AIRLIGHT_TERMS (panels.rs
+/// `exp_legendre_moments`: Miller's recurrence below λ = 2N, upward above it).
+fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
+    var out = airlight_zero_terms();
+    if (!(lambda > 0.0)) {
+        out[0] = 2.0;
+        return out;
+    }
+    if (!airlight_is_finite(lambda)) { return out; }
+    let n = AIRLIGHT_TERMS;
+    let i0 = -airlight_expm1(-(lambda + lambda)) / (lambda + lambda);
+    if (lambda < AIRLIGHT_FLT_EPS) {
+        out[0] = i0;
+        out[1] = lambda * (1.0 / 3.0);
+    } else if (lambda < f32(2u * n)) {
+        let inv = 1.0 / lambda;
+        let k0 = max(n, u32(ceil(lambda)));
+        let per_step = -2.0 * log(lambda / f32(2u * k0));
+        let steps = u32(min(ceil(-log(AIRLIGHT_FLT_EPS) / per_step), 28.0)) + 2u;
+        let top = k0 + steps;
+        var above = 0.0;
+        var cur = 1.0e-20;
+        var odd = f32(2u * top + 1u);
+        for (var i = 0u; i < 2u * AIRLIGHT_TERMS + 30u; i++) {
+            if (i < top) {
+                let k = top - i;
+                if (k < n) { out[k] = cur; }
+                let below = above + odd * inv * cur;
+                odd -= 2.0;
+                above = cur;
+                cur = below;
+                if (cur > 1.0e20) {
+                    cur *= 1.0e-20;
+                    above *= 1.0e-20;
+                    for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= 1.0e-20; }
+                }
+            }
+        }
+        out[0] = cur;
+        let norm = i0 / cur;
+        for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= norm; }
+    } else {
+        let e2 = exp(-(lambda + lambda));
+        out[0] = i0;
+        out[1] = ((1.0 + e2) * 0.5 - i0) / lambda;
+        for (var k = 1u; k + 1u < AIRLIGHT_TERMS; k++) {
+            out[k + 1u] = out[k - 1u] - f32(2u * k + 1u) / lambda * out[k];
         }
     }
-    return m;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
+        out[k] *= select(2.0, -2.0, k % 2u == 1u);
+    }
+    return out;
+}
+
+/// |c_{N−1}| + |c_{N−2}|.
+fn airlight_tail_estimate(c: array<f32, AIRLIGHT_TERMS>) -> f32 {
+    return abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
+}
+
+/// The error per unit of the tail and of M_0: aliasing q^{N/4} plus truncation (panels.rs
+/// `error_factor`).
+fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_TERMS>) -> f32 {
+    if (!(m[0] > 0.0)) { return 1.0; }
+    let last = abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
+    let before = abs(c[AIRLIGHT_TERMS - 3u]) + abs(c[AIRLIGHT_TERMS - 4u]);
+    if (!(before > 0.0) || !(last < before)) { return 1.0; }
+    let q = sqrt(last / before);
+    var aliasing = 1.0;
+    for (var i = 0u; i < AIRLIGHT_TERMS / 4u; i++) { aliasing *= q; }
+    let truncation = q * max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u])) / m[0];
+    return min(aliasing + truncation, 1.0);
+}
+
+/// The transform's rounding: 4Nε·mass·mean.
+fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
+    return f32(4u * AIRLIGHT_TERMS) * AIRLIGHT_FLT_EPS * mass * mean_abs;
+}
+
+/// e^{−H(v_s(panel) − v_s(half))} for the panel [a, b] in y.
+fn airlight_factor(half: AirlightHalf, a: f32, b: f32) -> f32 {
+    var offset = a - half.y_lo;
+    if (half.second) { offset = (half.y_hi - b) / (b * half.y_hi); }
+    let x = half.big_h * offset;
+    return select(1.0, exp(-x), x > 0.0);
+}
+
+/// value, error (0 at the noise floor), mass_over, f_max of one panel (panels.rs `Panel`).
+struct AirlightPanel {
+    value: f32,
+    error: f32,
+    mass_over: f32,
+    f_max: f32,
+}
+
+fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
+    return AirlightPanel(value, select(error, 0.0, error <= noise), mass_over, f_max);
+}
+
+/// A v-panel (panels.rs `v_panel`).
+fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+    let rule = airlight_gauss_rule();
+    var r = (b - a) * 0.5;
+    var vc = a + r;
+    if (half.second) {
+        r = (b - a) / (a * b) * 0.5;
+        vc = 1.0 / b + r;
+    }
+    var samples = airlight_zero_terms();
+    var f_max = 0.0;
+    var over_max = 0.0;
+    var g_avg = 0.0;
+    for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
+        let v = vc + r * airlight_node(rule, i);
+        let y = select(v, 1.0 / v, half.second);
+        let fy = airlight_integrand(s, g, sigma, y);
+        let over = 1.0 / (1.0 + v * v);
+        samples[i] = fy * over;
+        f_max = max(f_max, abs(fy));
+        over_max = max(over_max, over);
+        g_avg += rule[i / 2u].y * 0.5 * abs(samples[i]);
+    }
+    let c = airlight_legendre(samples);
+    let m = airlight_exp_legendre_moments(half.big_h * r);
+    var sum = 0.0;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { sum += c[k] * m[k]; }
+    let w = airlight_factor(half, a, b) * r;
+    let mass = w * m[0];
+    let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m);
+    return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass * over_max, f_max);
+}
+
+/// A y-panel (panels.rs `y_panel`): the whole integrand by the rule in y.
+fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+    let rule = airlight_gauss_rule();
+    let r = (b - a) * 0.5;
+    let yc = a + r;
+    var samples = airlight_zero_terms();
+    var f_max = 0.0;
+    var over_max = 0.0;
+    var mass = 0.0;
+    var p_avg = 0.0;
+    for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
+        let xi = airlight_node(rule, i);
+        let y = yc + r * xi;
+        let weight = exp(-half.big_h * (r * (1.0 - xi)) / (y * b));
+        let fy = airlight_integrand(s, g, sigma, y);
+        let over = 1.0 / (1.0 + y * y);
+        samples[i] = fy * over * weight;
+        f_max = max(f_max, abs(fy));
+        over_max = max(over_max, over);
+        mass += rule[i / 2u].y * weight;
+        p_avg += rule[i / 2u].y * 0.5 * abs(samples[i]);
+    }
+    let c = airlight_legendre(samples);
+    let w = airlight_factor(half, a, b) * r;
+    var m = airlight_zero_terms();
+    m[0] = 2.0;
+    let error = w * 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m);
+    return airlight_panel_result(w * 2.0 * c[0], error, airlight_transform_noise(w * 2.0, p_avg), w * mass * over_max, f_max);
+}
+
+/// Monomial coefficients in ξ of Σ c_k P_k(ξ) (panels.rs `legendre_to_monomial`).
+fn airlight_legendre_to_monomial(c: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS> {
+    var hat = airlight_zero_terms();
+    var p_prev = airlight_zero_terms();
+    var p_cur = airlight_zero_terms();
+    p_cur[0] = 1.0;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
+        for (var i = 0u; i <= k; i++) { hat[i] += c[k] * p_cur[i]; }
+        if (k + 1u < AIRLIGHT_TERMS) {
+            let kf = f32(k);
+            var next = airlight_zero_terms();
+            for (var i = 0u; i <= k + 1u; i++) {
+                var shifted = 0.0;
+                if (i > 0u) { shifted = p_cur[i - 1u]; }
+                next[i] = ((kf + kf + 1.0) * shifted - kf * p_prev[i]) / (kf + 1.0);
+            }
+            p_prev = p_cur;
+            p_cur = next;
+        }
+    }
+    return hat;
+}
+
+/// A tail panel [a, b], a ≤ b/4, after the foot (panels.rs `tail_panel`).
+fn airlight_tail_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+    let rule = airlight_gauss_rule();
+    let r = (b - a) * 0.5;
+    let yc = a + r;
+    var samples = airlight_zero_terms();
+    var f_max = 0.0;
+    var g_avg = 0.0;
+    for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
+        let y = yc + r * airlight_node(rule, i);
+        let fy = airlight_integrand(s, g, sigma, y);
+        samples[i] = fy / (1.0 + y * y);
+        f_max = max(f_max, abs(fy));
+        g_avg += rule[i / 2u].y * 0.5 * abs(samples[i]);
+    }
+    let c = airlight_legendre(samples);
+    // Σ c_k P_k(ξ) → Σ q_k u^k, u = y/b, ξ = α u + β
+    let alpha = b / r;
+    let beta = -yc / r;
+    let hat = airlight_legendre_to_monomial(c);
+    var q = airlight_zero_terms();
+    for (var jj = 0u; jj < AIRLIGHT_TERMS; jj++) {
+        let j = AIRLIGHT_TERMS - 1u - jj;
+        var next = airlight_zero_terms();
+        for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
+            var shifted = 0.0;
+            if (i > 0u) { shifted = q[i - 1u] * alpha; }
+            next[i] = shifted + q[i] * beta;
+        }
+        next[0] += hat[j];
+        q = next;
+    }
+    // U_k = b s_{k+2}(H/b) − e^{−H(1/a − 1/b)} a (a/b)^k s_{k+2}(H/a)
+    let big_h = half.big_h;
+    var s_b = airlight_zero_scratch();
+    airlight_en_scaled(big_h / b, AIRLIGHT_TERMS + 2u, &s_b);
+    var s_a = airlight_zero_scratch();
+    let far = a > 0.0 && airlight_is_finite(big_h / a);
+    var decay = 0.0;
+    if (far) { decay = exp(-big_h * ((b - a) / (a * b))); }
+    if (far && decay > 0.0) { airlight_en_scaled(big_h / a, AIRLIGHT_TERMS + 2u, &s_a); }
+    var sum = 0.0;
+    var mass = 0.0;
+    var ratio = 1.0;
+    var ab = 0.0;
+    if (b > 0.0) { ab = a / b; }
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
+        var tail = 0.0;
+        if (decay > 0.0) { tail = decay * a * ratio * s_a[k + 1u]; }
+        let u = b * s_b[k + 1u] - tail;
+        if (k == 0u) { mass = u; }
+        sum += q[k] * u;
+        ratio *= ab;
+    }
+    let w = airlight_factor(half, a, b);
+    mass *= w;
+    // the conversion's rounding: ε·mass·Σ L_k(|α| + |β|)|c_k|
+    let x = abs(alpha) + abs(beta);
+    var l_prev = 0.0;
+    var l_cur = 1.0;
+    var spread = 0.0;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
+        spread += l_cur * abs(c[k]);
+        let kf = f32(k);
+        let next = ((kf + kf + 1.0) * x * l_cur + kf * l_prev) / (kf + 1.0);
+        l_prev = l_cur;
+        l_cur = next;
+    }
+    let error = mass * airlight_tail_estimate(c) + AIRLIGHT_FLT_EPS * mass * spread;
+    return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass, f_max);
+}
+
+/// The panel kind for [a, b] (panels.rs `panel`).
+fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+    if (half.second && a <= b * 0.25) {
+        return airlight_tail_panel(s, g, sigma, half, a, b);
+    }
+    if (half.second && half.big_h * ((b - a) / (a * b)) <= AIRLIGHT_Y_PANEL_EXPONENT) {
+        return airlight_y_panel(s, g, sigma, half, a, b);
+    }
+    return airlight_v_panel(s, g, sigma, half, a, b);
+}
+
+/// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split
+/// first until the estimates sum below the target (panels.rs `integrate_piece`); f_max: the
+/// largest |F| seen on the segment.
+fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, lo: f32, hi: f32, f_max: ptr<function, f32>) -> f32 {
+    if (!(hi > lo)) { return 0.0; }
+    // (a, b, value, error) and mass_over per listed panel
+    var list = array<vec4<f32>, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST4@);
+    var mass_over = array<f32, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST@);
+    let first = airlight_panel(s, g, sigma, half, lo, hi);
+    *f_max = max(*f_max, first.f_max);
+    list[0] = vec4<f32>(lo, hi, first.value, first.error);
+    mass_over[0] = first.mass_over;
+    var count = 1u;
+    var budget = AIRLIGHT_MAX_PANELS - 1u;
+    var total = 0.0;
+    // each pass splits a panel (two evaluations) or retires one: fewer than AIRLIGHT_MAX_PANELS
+    for (var round = 0u; round < AIRLIGHT_MAX_PANELS; round++) {
+        total = 0.0;
+        var errors = 0.0;
+        var mass = 0.0;
+        var worst = 0u;
+        for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
+            if (i < count) {
+                total += list[i].z;
+                errors += list[i].w;
+                mass += mass_over[i];
+                if (list[i].w > list[worst].w) { worst = i; }
+            }
+        }
+        let goal = AIRLIGHT_PANEL_TOLERANCE * max(abs(total), AIRLIGHT_PANEL_FLOOR * *f_max * mass);
+        if (errors <= goal || !(list[worst].w > 0.0) || budget < 2u || count == AIRLIGHT_PANEL_LIST) {
+            return total;
+        }
+        let a = list[worst].x;
+        let b = list[worst].y;
+        if (!((b - a) > AIRLIGHT_FLT_EPS * b)) {
+            list[worst].w = 0.0;
+        } else {
+            let mid = a + (b - a) * 0.5;
+            let left = airlight_panel(s, g, sigma, half, a, mid);
+            let right = airlight_panel(s, g, sigma, half, mid, b);
+            *f_max = max(*f_max, max(left.f_max, right.f_max));
+            list[worst] = vec4<f32>(a, mid, left.value, left.error);
+            mass_over[worst] = left.mass_over;
+            list[count] = vec4<f32>(mid, b, right.value, right.error);
+            mass_over[count] = right.mass_over;
+            count += 1u;
+            budget -= 2u;
+        }
+    }
+    total = 0.0;
+    for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
+        if (i < count) { total += list[i].z; }
+    }
+    return total;
 }
 
 // ---------------------------------------------------------------- combined formulation
@@ -729,46 +897,6 @@ fn airlight_bounded(a: f32) -> f32 {
 fn airlight_hypot_one(a: f32) -> f32 {
     if (abs(a) < 1.0e15) { return sqrt(1.0 + a * a); }
     return abs(a);
-}
-
-/// Σ a_k m_k on one smooth piece.
-fn airlight_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf) -> f32 {
-    let m = airlight_moments(half, AIRLIGHT_TERMS);
-    let a = airlight_chebyshev(s, g, sigma, half.y_lo + half.dy * 0.5, half.dy * 0.5);
-    var j = 0.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { j += a[k] * m[k]; }
-    return j;
-}
-
-/// A piece between cone edges, cut into ⌈HΔv⌉ ≤ 8 parts when the medium is thick.
-fn airlight_subdivided(s: AirlightScene, g: AirlightCanonical, sigma: f32, piece: AirlightHalf) -> f32 {
-    // parts = ⌈HΔv⌉ ≤ 8 (an unbounded piece, Δv = ∞, gets 8 when H > 0)
-    var parts = 1.0;
-    if (piece.dy <= 0.25 && piece.big_h > 0.0) {
-        if (piece.dv_infinite) { parts = 8.0; } else { parts = clamp(ceil(piece.big_h * piece.dv), 1.0, 8.0); }
-    }
-    if (parts <= 1.0) { return airlight_piece(s, g, sigma, piece); }
-    let n = u32(parts);
-    let step = piece.dy / parts;
-    var total = 0.0;
-    for (var i = 0u; i < 8u; i++) {
-        if (i < n) {
-            let lo = piece.y_lo + step * f32(i);
-            var hi = lo + step;
-            if (i + 1u == n) { hi = piece.y_hi; }
-            let dy = hi - lo;
-            var dv = dy;
-            var offset = lo - piece.y_lo;
-            var inf = false;
-            if (piece.second) {
-                if (lo == 0.0) { inf = true; dv = 0.0; } else { dv = dy / (lo * hi); }
-                offset = (piece.y_hi - hi) / (hi * piece.y_hi);
-            }
-            let part = AirlightHalf(piece.second, piece.big_h, lo, hi, dy, dv, inf);
-            total += exp(-piece.big_h * offset) * airlight_piece(s, g, sigma, part);
-        }
-    }
-    return total;
 }
 
 /// Roots in y of c(y) = k (two at most); NaN-free: −1 marks "none".
@@ -788,11 +916,11 @@ fn airlight_crossings(sigma: f32, d_el: f32, d_c: f32, k: f32) -> vec2<f32> {
     return vec2<f32>(r1, r2);
 }
 
-/// Σ a_k m_k on one half, split where c(y) crosses a spot cone's edges.
-fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, isotropic: bool) -> f32 {
+/// ∫ e^{−H(v − v_s)} F/(1+v²) dv on one half, in pieces split where c(y) crosses a spot
+/// cone's edges (combined.rs `half_integral`); f_max: the largest |F| seen on the segment.
+fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, isotropic: bool, f_max: ptr<function, f32>) -> f32 {
     if (isotropic) {
-        let m = airlight_moments(half, 1u);
-        return airlight_integrand(s, g, sigma, half.y_lo + half.dy * 0.5) * m[0];
+        return airlight_integrand(s, g, sigma, half.y_lo + half.dy * 0.5) * airlight_moment_zero(half);
     }
     var cuts = array<f32, 4>(2.0, 2.0, 2.0, 2.0);
     if (s.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -822,25 +950,13 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
             }
         }
     }
-    if (cuts[0] >= 2.0) {
-        return airlight_piece(s, g, sigma, half);
-    }
     var total = 0.0;
     var lo = half.y_lo;
     for (var i = 0u; i < 5u; i++) {
         var hi = half.y_hi;
         if (i < 4u && cuts[i] < 2.0) { hi = cuts[i]; }
         if (hi > lo) {
-            let dy = hi - lo;
-            var dv = dy;
-            var offset = lo - half.y_lo;
-            var inf = false;
-            if (half.second) {
-                if (lo == 0.0) { inf = true; dv = 0.0; } else { dv = dy / (lo * hi); }
-                offset = (half.y_hi - hi) / (hi * half.y_hi);
-            }
-            let piece = AirlightHalf(half.second, half.big_h, lo, hi, dy, dv, inf);
-            total += exp(-half.big_h * offset) * airlight_subdivided(s, g, sigma, piece);
+            total += airlight_integrate_piece(s, g, sigma, half, lo, hi, f_max);
             lo = hi;
         }
         if (i < 4u && cuts[i] >= 2.0) { break; }
@@ -851,12 +967,12 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
 /// E_2-based exact limit for a light on the ray line outside the segment (h = 0).
 fn airlight_on_line(s: AirlightScene, g: AirlightCanonical) -> f32 {
     if (!g.t_hi_infinite && g.x_h > g.t_hi) {
-        let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, -g.d_el) * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, 1.0);
+        let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, -g.d_el) * airlight_phase_mu(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, 1.0);
         let r0 = g.x_h - g.t_lo;
         let r1 = g.x_h - g.t_hi;
         return airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * r0, f * ((g.t_hi - g.t_lo) / r0 / r1));
     }
-    let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, g.d_el) * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, -1.0);
+    let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, g.d_el) * airlight_phase_mu(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, -1.0);
     let s0 = g.t_lo - g.x_h;
     let s1 = g.t_hi - g.x_h;
     if (s.sigma_t == 0.0) {
@@ -927,6 +1043,7 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         && (s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
             || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
     var total = 0.0;
+    var f_max = 0.0;
     if (t0 < x_h) {
         let a_s = (x_h - t0) / h;
         var t_end = x_h;
@@ -938,7 +1055,7 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         let y_hi = airlight_bounded(a_e);
         let dy = (t_end - t0) / h * (1.0 + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let half = AirlightHalf(false, airlight_optical(big_h, dy, false), y_lo, y_hi, dy, dy, false);
-        let j = airlight_half(s, g, -1.0, half, isotropic);
+        let j = airlight_half(s, g, -1.0, half, isotropic, &f_max);
         total += airlight_weighted(s.sigma_s, s.intensity, h, big_h * r_s, j);
     }
     if (g.t_hi_infinite || t1 > x_h) {
@@ -963,7 +1080,7 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
             }
         }
         let half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
-        let j = airlight_half(s, g, 1.0, half, isotropic);
+        let j = airlight_half(s, g, 1.0, half, isotropic, &f_max);
         total += airlight_weighted(s.sigma_s, s.intensity, h, s.sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     return AirlightResult(max(total, 0.0), AIRLIGHT_STATUS_OK);
@@ -1038,13 +1155,84 @@ fn airlight_canonical(s: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(h, x_h, dot(d, a), d_c, s.t_min, select(s.t_max, 0.0, infinite), infinite);
 }
 
+/// (s, e) with s = a + b rounded and s + e = a + b exactly (Knuth's two-sum; geometry.rs).
+/// `one` is 1 at run time but unknown to the compiler: it keeps a driver's algebraic
+/// simplification from folding `(a + b) − a` to `b`, which would lose the error term.
+fn airlight_two_sum(a: f32, b: f32, one: f32) -> vec2<f32> {
+    let s = (a + b) * one;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    return vec2<f32>(s, select(0.0, e, airlight_is_finite(e)));
+}
+
+/// (p, e) with p = a·b rounded and p + e = a·b exactly (Dekker's product). The halves are
+/// cut by masking the low 12 bits of the significand rather than by Veltkamp's
+/// `c − (c − x)`, which a driver's algebraic simplification may fold to `x`; `p` is formed
+/// as `(a·b)·one` so that no later `p − q` can be contracted into `fma(a, b, −q)`.
+fn airlight_two_product(a: f32, b: f32, one: f32) -> vec2<f32> {
+    let p = (a * b) * one;
+    let ah = bitcast<f32>(bitcast<u32>(a) & 0xfffff000u);
+    let al = a - ah;
+    let bh = bitcast<f32>(bitcast<u32>(b) & 0xfffff000u);
+    let bl = b - bh;
+    let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    return vec2<f32>(p, select(0.0, e, airlight_is_finite(e)));
+}
+
+/// a·b − c·d with the products' rounding errors carried.
+fn airlight_diff_of_products(a: f32, b: f32, c: f32, d: f32, one: f32) -> f32 {
+    let p = airlight_two_product(a, b, one);
+    let q = airlight_two_product(c, d, one);
+    return (p.x - q.x) + (p.y - q.y);
+}
+
+fn airlight_in_exact_range(v: vec3<f32>) -> bool {
+    let m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+    return m == 0.0 || (m >= 1.0 / AIRLIGHT_EXACT_RANGE && m <= AIRLIGHT_EXACT_RANGE);
+}
+
+/// The plain reduction with h and d_c from exact products (geometry.rs `Canonical::refined`):
+/// p − o kept as a two-sum, w = (p − o) × dir from Dekker's products, h = |w|/|dir|, the unit
+/// vector from the light to the foot −(dir × w)/(|dir||w|).
+fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    // 1, from a test the compiler cannot decide (flags has one defined bit)
+    let one = select(1.0, 0.5, s.flags > 0xfffffff0u);
+    let sx = airlight_two_sum(s.light_position.x, -s.origin.x, one);
+    let sy = airlight_two_sum(s.light_position.y, -s.origin.y, one);
+    let sz = airlight_two_sum(s.light_position.z, -s.origin.z, one);
+    let hi = vec3<f32>(sx.x, sy.x, sz.x);
+    let lo = vec3<f32>(sx.y, sy.y, sz.y);
+    let dir = s.dir;
+    if (!airlight_in_exact_range(hi) || !airlight_in_exact_range(dir)) { return plain; }
+    let w = vec3<f32>(
+        airlight_diff_of_products(hi.y, dir.z, hi.z, dir.y, one) + (lo.y * dir.z - lo.z * dir.y),
+        airlight_diff_of_products(hi.z, dir.x, hi.x, dir.z, one) + (lo.z * dir.x - lo.x * dir.z),
+        airlight_diff_of_products(hi.x, dir.y, hi.y, dir.x, one) + (lo.x * dir.y - lo.y * dir.x));
+    if (!airlight_vec_finite(w)) { return plain; }
+    var out = plain;
+    let w_len = airlight_safe_length(w);
+    if (w_len == 0.0) {
+        out.h = 0.0;
+        out.d_c = 0.0;
+        return out;
+    }
+    let h = w_len / airlight_safe_length(dir);
+    if (!(airlight_is_finite(h) && h > 0.0)) { return plain; }
+    var a = vec3<f32>(0.0, 0.0, 1.0);
+    if (s.light_kind != AIRLIGHT_LIGHT_OMNI) { a = airlight_normalize(s.light_axis); }
+    let n = -cross(airlight_normalize(dir), airlight_normalize(w));
+    out.h = h;
+    out.d_c = dot(n, a);
+    return out;
+}
+
 /// In-scattered radiance L_m of a scene (DESIGN §1): the public entry of the library.
 /// Invalid scenes give (0, INVALID); a light exactly on the segment gives (FLT_MAX, INFINITE).
 fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s)) {
         return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
     }
-    let r = airlight_in_scatter_canonical(s, airlight_canonical(s));
+    let r = airlight_in_scatter_canonical(s, airlight_refined(s, airlight_canonical(s)));
     if (!airlight_is_finite(r.in_scatter)) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }

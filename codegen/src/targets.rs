@@ -116,11 +116,42 @@ impl fmt::Display for EmitError {
 
 impl std::error::Error for EmitError {}
 
-/// The WGSL source for `terms` expansion terms: the library, plus the compute entry point
-/// when `compute` is set.
+/// The WGSL source for `terms` Gauss–Legendre nodes per panel: the library, plus the compute
+/// entry point when `compute` is set. Every number the template leaves open is the kernel's
+/// own (its f32 values, written as the shortest decimal that reads back to the same f32):
+/// the rule and the Legendre transform (`expansion::gauss_table`), the shaders' control
+/// (`SHADER_CONTROL`), the y-panel bound and the exact-product range of `f32`.
+///
+/// # Panics
+/// If `terms` has no tabulated rule (the emitted counts, [`TERM_COUNTS`], have).
 pub fn source(terms: usize, compute: bool) -> String {
-    let zeros = vec!["0.0"; terms].join(", ");
-    let mut s = LIBRARY.replace("@TERMS@", &terms.to_string()).replace("@ZEROS_TERMS@", &zeros);
+    use airlight::expansion::gauss_table;
+    let f = |x: f64| format!("{:?}", x as f32);
+    let list = |xs: Vec<String>| xs.join(", ");
+    let rule = gauss_table::rule(terms).expect("a tabulated Gauss–Legendre rule");
+    let transform = gauss_table::transform(terms).expect("a tabulated Legendre transform");
+    let control = airlight::SHADER_CONTROL;
+    let panel_list = 1 + (control.max_panels - 1) / 2;
+    let fills: [(&str, String); 14] = [
+        ("@TERMS@", terms.to_string()),
+        ("@HALF_TERMS@", (terms / 2).to_string()),
+        ("@ZEROS_TERMS@", list(vec!["0.0".to_string(); terms])),
+        ("@PANEL_TOLERANCE@", f(control.tolerance as f64)),
+        ("@PANEL_FLOOR@", f(control.floor as f64)),
+        ("@MAX_PANELS@", control.max_panels.to_string()),
+        ("@PANEL_LIST@", panel_list.to_string()),
+        ("@ZEROS_LIST@", list(vec!["0.0".to_string(); panel_list])),
+        ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
+        ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
+        ("@EXACT_RANGE@", f(<f32 as airlight::Real>::EXACT_RANGE)),
+        ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
+        ("@TRANSFORM_LEN@", transform.len().to_string()),
+        ("@LEGENDRE_TRANSFORM@", list(transform.iter().map(|&x| f(x)).collect())),
+    ];
+    let mut s = LIBRARY.to_string();
+    for (key, value) in &fills {
+        s = s.replace(key, value);
+    }
     if compute {
         s.push_str(COMPUTE);
     }

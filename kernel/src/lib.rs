@@ -55,4 +55,4 @@ pub use light::LightDistribution;
 pub use phase::PhaseFunction;
 pub use real::Real;
 pub use scalar::Scalar;
-pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_TERMS};
+pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_TERMS};

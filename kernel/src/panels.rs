@@ -284,7 +284,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
 
 /// The largest growth `H(1/a − 1/b)` of the exponent across a y-panel: an `N ≥ 8` point rule
 /// integrates `e^{−λx}` on `[0, 1]` to `λ^{2N}/(2^{2N}(2N)!)` (`< 1e-18` at `λ = 4`, `N = 8`).
-const Y_PANEL_EXPONENT: f64 = 4.0;
+pub const Y_PANEL_EXPONENT: f64 = 4.0;
 
 /// A y-panel: `[a, b]` after the foot with `b < 4a` and an exponent that grows by at most
 /// [`Y_PANEL_EXPONENT`] across it. There the whole integrand `e^{−H(1/y − 1/b)} F/(1+y²)` is

@@ -14,8 +14,13 @@ use crate::real::Real;
 
 /// Expansion terms on the CPU (the paper's software renderer used 6).
 pub const CPU_TERMS: usize = 6;
-/// Expansion terms in shaders (the paper's GPU version used 4).
+/// Gauss–Legendre nodes per panel in the default shader (the paper's GPU version used 4
+/// expansion terms); the shaders are also emitted with 6.
 pub const SHADER_TERMS: usize = 4;
+/// The shaders' error control (they compute [`Scene::in_scatter_panels`] with
+/// [`SHADER_TERMS`] or 6 nodes and this control): tolerance `1e-4` of `F` on each piece, `floor` the f32 `τ` (docs/DESIGN.md §8), at most 16 panels per piece (the
+/// shader's fixed worst-case loop).
+pub const SHADER_CONTROL: Control<f32> = Control { tolerance: 1e-4, floor: 1e-4, max_panels: 16 };
 
 /// A ray segment `x(t) = origin + t·d`, `t ∈ [t_min, t_max]`, with `d = dir/|dir|` (so `t` is
 /// a distance). `t_max` may be `+∞`.
@@ -180,7 +185,7 @@ where
         in_scatter_counted::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Panels(control), &Production)
     }
 
-    /// `L_m` with one `N`-term expansion per piece (the fixed-cost method the shaders use).
+    /// `L_m` with one `N`-term expansion per piece (the paper's fixed-cost method).
     pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
         in_scatter_canonical::<T, D, P, Production, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(expansion), &Production)
     }

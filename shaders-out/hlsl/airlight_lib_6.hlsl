@@ -48,7 +48,21 @@ struct AirlightHalf {
     bool dv_infinite;
 };
 
+struct AirlightPanel {
+    float value;
+    float error;
+    float mass_over;
+    float f_max;
+};
+
 static const uint AIRLIGHT_TERMS = 6u;
+static const uint AIRLIGHT_HALF_TERMS = 3u;
+static const float AIRLIGHT_PANEL_TOLERANCE = 0.0001;
+static const float AIRLIGHT_PANEL_FLOOR = 0.0001;
+static const uint AIRLIGHT_MAX_PANELS = 16u;
+static const uint AIRLIGHT_PANEL_LIST = 8u;
+static const float AIRLIGHT_Y_PANEL_EXPONENT = 4.0;
+static const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 static const float AIRLIGHT_PI = 3.1415927;
 static const float AIRLIGHT_EULER_GAMMA = 0.5772157;
 static const float AIRLIGHT_FLT_MAX = 3.4028235e38;
@@ -100,22 +114,22 @@ float2 airlight_cmul(float2 a, float2 b)
 float2 airlight_cdiv(float2 a_1, float2 b_1)
 {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_2 = (b_1.y / b_1.x);
-        float den = (b_1.x + (b_1.y * r_2));
-        return float2(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
+        float r_1 = (b_1.y / b_1.x);
+        float den = (b_1.x + (b_1.y * r_1));
+        return float2(((a_1.x + (a_1.y * r_1)) / den), ((a_1.y - (a_1.x * r_1)) / den));
     }
-    float r_3 = (b_1.x / b_1.y);
-    float den_1 = ((b_1.x * r_3) + b_1.y);
-    return float2((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
+    float r_2 = (b_1.x / b_1.y);
+    float den_1 = ((b_1.x * r_2) + b_1.y);
+    return float2((((a_1.x * r_2) + a_1.y) / den_1), (((a_1.y * r_2) - a_1.x) / den_1));
 }
 
 float airlight_cabs(float2 z)
 {
-    float m_2 = max(abs(z.x), abs(z.y));
-    if ((m_2 == 0.0)) {
+    float m_3 = max(abs(z.x), abs(z.y));
+    if ((m_3 == 0.0)) {
         return 0.0;
     }
-    return (m_2 * length((z / (m_2).xx)));
+    return (m_3 * length((z / (m_3).xx)));
 }
 
 float2 airlight_csqrt(float2 z_1)
@@ -133,11 +147,11 @@ float2 airlight_csqrt(float2 z_1)
     }
     const float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
-        return float2(t_5, (z_1.y / (t_5 + t_5)));
+        float t_3 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_3, (z_1.y / (t_3 + t_3)));
     }
-    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
-    return float2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
+    float t_4 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_4 + t_4)), ((z_1.y >= 0.0) ? t_4 : -(t_4)));
 }
 
 float2 airlight_cos_sin(float x)
@@ -210,9 +224,9 @@ float2 airlight_cos_sin(float x)
 
 float2 airlight_cexp(float2 z_2)
 {
-    float m_3 = exp(z_2.x);
+    float m_4 = exp(z_2.x);
     const float2 _e4 = airlight_cos_sin(z_2.y);
-    return float2((m_3 * _e4.x), (m_3 * _e4.y));
+    return float2((m_4 * _e4.x), (m_4 * _e4.y));
 }
 
 float airlight_atan(float x_1)
@@ -261,8 +275,8 @@ float airlight_log1p(float x_2)
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_11 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_11 * s_11);
+    float s_14 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_14 * s_14);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -285,7 +299,7 @@ float airlight_log1p(float x_2)
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_11) * _e35);
+    return ((2.0 * s_14) * _e35);
 }
 
 bool airlight_is_finite(float x_3)
@@ -380,9 +394,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_10 = (z_5.x * 0.7692308);
+    float x_8 = (z_5.x * 0.7692308);
     float y_2 = (z_5.y * 0.47619048);
-    return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
+    return (((x_8 * x_8) + (y_2 * y_2)) < 1.0);
 }
 
 float2 airlight_e1_scaled_cf(float2 z_6)
@@ -419,8 +433,8 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     }
     uint _e31 = depth;
     float nf = float(_e31);
-    float2 b_3 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
-    const float2 _e46 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_3);
+    float2 b_11 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
+    const float2 _e46 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_11);
     const float2 _e50 = airlight_cmul(_e46, _e46);
     const float2 _e52 = airlight_csqrt((float2(1.0, 0.0) - _e50));
     root = _e52;
@@ -430,7 +444,7 @@ float2 airlight_e1_scaled_cf(float2 z_6)
         root = -(_e58);
     }
     float2 _e63 = root;
-    const float2 _e65 = airlight_cmul(b_3, (float2(1.0, 0.0) + _e63));
+    const float2 _e65 = airlight_cmul(b_11, (float2(1.0, 0.0) + _e63));
     t_1 = (_e65 * 0.5);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
@@ -503,13 +517,13 @@ float airlight_en_scaled_cf(float x_4, uint n)
     }
     float nf_1 = float(n);
     uint _e17 = depth_1;
-    float m_4 = float(_e17);
-    float b_4 = ((x_4 + nf_1) + (2.0 * (m_4 + 1.0)));
-    float a_7 = ((m_4 + 2.0) * ((nf_1 + m_4) + 1.0));
-    float disc = (1.0 - ((4.0 * a_7) / (b_4 * b_4)));
-    t_2 = b_4;
+    float m_5 = float(_e17);
+    float b_12 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
+    float a_15 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
+    float disc = (1.0 - ((4.0 * a_15) / (b_12 * b_12)));
+    t_2 = b_12;
     if ((disc > 0.0)) {
-        t_2 = ((b_4 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_12 * (1.0 + sqrt(disc))) * 0.5);
     }
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
@@ -654,44 +668,51 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16])
     return;
 }
 
-float airlight_hg_base(float g, float mu)
+float airlight_hg_base(float g, float om, float op)
 {
     if ((g >= 0.0)) {
-        float a_8 = (1.0 - g);
-        return (((1.0 - mu) * (g + g)) + (a_8 * a_8));
+        float a_16 = (1.0 - g);
+        return ((om * (g + g)) + (a_16 * a_16));
     }
-    float b_5 = (1.0 + g);
-    return (((mu + 1.0) * -((g + g))) + (b_5 * b_5));
+    float b_13 = (1.0 + g);
+    return ((op * -((g + g))) + (b_13 * b_13));
 }
 
-float airlight_hg(float g_1, float mu_1)
+float airlight_hg(float g_1, float om_1, float op_1)
 {
-    const float _e2 = airlight_hg_base(g_1, mu_1);
-    return (((1.0 - g_1) * (1.0 + g_1)) / ((12.566371 * _e2) * sqrt(_e2)));
+    const float _e3 = airlight_hg_base(g_1, om_1, op_1);
+    return ((((1.0 - g_1) * (1.0 + g_1)) / 12.566371) / (_e3 * sqrt(_e3)));
 }
 
-float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu_2)
+float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu, float om_2, float op_2)
 {
+    float d = (float)0;
+
     switch(kind) {
         case 1u: {
-            return (0.059683103 * (1.0 + (mu_2 * mu_2)));
+            return (0.059683103 * (1.0 + (mu * mu)));
         }
         case 2u: {
-            const float _e10 = airlight_hg(p0_, mu_2);
-            return _e10;
+            const float _e12 = airlight_hg(p0_, om_2, op_2);
+            return _e12;
         }
         case 3u: {
-            float d = (1.0 - (p0_ * mu_2));
-            return (((1.0 - p0_) * (1.0 + p0_)) / ((12.566371 * d) * d));
+            d = ((1.0 + p0_) - (p0_ * op_2));
+            if ((p0_ >= 0.0)) {
+                d = ((1.0 - p0_) + (p0_ * om_2));
+            }
+            float _e31 = d;
+            float _e32 = d;
+            return ((((1.0 - p0_) * (1.0 + p0_)) / 12.566371) / (_e31 * _e32));
         }
         case 4u: {
-            const float _e23 = airlight_hg_base(p0_, mu_2);
-            return ((((3.0 * (1.0 - p0_)) * (1.0 + p0_)) * (1.0 + (mu_2 * mu_2))) / (((25.132742 * (2.0 + (p0_ * p0_))) * _e23) * sqrt(_e23)));
+            const float _e35 = airlight_hg_base(p0_, om_2, op_2);
+            return ((((0.119366206 * (1.0 - p0_)) * (1.0 + p0_)) / (2.0 + (p0_ * p0_))) * ((1.0 + (mu * mu)) / (_e35 * sqrt(_e35))));
         }
         case 5u: {
-            const float _e44 = airlight_hg(p0_, mu_2);
-            const float _e48 = airlight_hg(p1_, mu_2);
-            return ((p2_ * _e44) + ((1.0 - p2_) * _e48));
+            const float _e54 = airlight_hg(p0_, om_2, op_2);
+            const float _e58 = airlight_hg(p1_, om_2, op_2);
+            return ((p2_ * _e54) + ((1.0 - p2_) * _e58));
         }
         default: {
             return 0.07957747;
@@ -699,17 +720,23 @@ float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu_2)
     }
 }
 
-float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1)
+float airlight_phase_mu(uint kind_1, float p0_1, float p1_1, float p2_1, float mu_1)
+{
+    const float _e9 = airlight_phase(kind_1, p0_1, p1_1, p2_1, mu_1, (1.0 - mu_1), (1.0 + mu_1));
+    return _e9;
+}
+
+float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
 {
     float base = (float)0;
     uint e = (uint)0;
     float acc = 1.0;
     uint i_3 = 0u;
 
-    switch(kind_1) {
+    switch(kind_2) {
         case 1u: {
             base = c_1;
-            e = naga_f2u32(p0_1);
+            e = naga_f2u32(p0_2);
             uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
             bool loop_init_10 = true;
             while(true) {
@@ -743,12 +770,12 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1)
             return _e31;
         }
         case 2u: {
-            float width = (p0_1 - p1_1);
+            float width = (p0_2 - p1_2);
             if ((width <= AIRLIGHT_FLT_EPS)) {
-                return ((c_1 >= (p1_1 + (width * 0.5))) ? 1.0 : 0.0);
+                return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_11 = clamp(((c_1 - p1_1) / width), 0.0, 1.0);
-            return ((x_11 * x_11) * (3.0 - (2.0 * x_11)));
+            float x_9 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_9 * x_9) * (3.0 - (2.0 * x_9)));
         }
         default: {
             return 1.0;
@@ -758,334 +785,27 @@ float airlight_light(uint kind_1, float p0_1, float p1_1, float c_1)
 
 float airlight_integrand(AirlightScene s_1, AirlightCanonical g_2, float sigma, float y_1)
 {
+    float minus = (float)0;
+    float plus = (float)0;
+
     float y2_ = (y_1 * y_1);
     float inv = (1.0 / (1.0 + y2_));
-    float om = (1.0 - y2_);
-    float mu_3 = ((-(sigma) * om) * inv);
-    float c_3 = ((((sigma * g_2.d_el) * om) + ((2.0 * g_2.d_c) * y_1)) * inv);
-    const float _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
-    const float _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_3);
-    return (_e26 * _e31);
-}
-
-typedef float ret_airlight_chebyshev[6];
-ret_airlight_chebyshev airlight_chebyshev(AirlightScene s_2, AirlightCanonical g_3, float sigma_1, float y_c, float r)
-{
-    float prev = (float)0;
-    float cur = (float)0;
-    float xi[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float values[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint j_1 = 0u;
-    float cheb[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint j_2 = 0u;
-    float t_prev = (float)0;
-    float t_cur = (float)0;
-    uint k_4 = (uint)0;
-    float tk = (float)0;
-    float scale_sum = 0.0;
-    uint k_5 = 0u;
-    float t_km1_[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float t_k[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float hat[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint k_6 = 1u;
-    float t_next[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint i_4 = (uint)0;
-    float shifted = (float)0;
-    float amplification = 1.0;
-    uint k_7 = 0u;
-    float a_3[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float rk = 1.0;
-    uint k_8 = 0u;
-    bool local_2 = (bool)0;
-
-    float theta = (AIRLIGHT_PI / (6.0 + 6.0));
-    float c2_ = cos((theta + theta));
-    prev = cos(theta);
-    float _e13 = prev;
-    cur = _e13;
-    const float _e15[6] = airlight_zero_terms();
-    xi = _e15;
-    const float _e17[6] = airlight_zero_terms();
-    values = _e17;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_11 = true;
-    while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e42 = j_1;
-            j_1 = (_e42 + 1u);
-        }
-        loop_init_11 = false;
-        uint _e21 = j_1;
-        if ((_e21 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            uint _e24 = j_1;
-            float _e26 = cur;
-            xi[min(uint(_e24), 5u)] = _e26;
-            float _e28 = cur;
-            float _e30 = prev;
-            float next = (((c2_ + c2_) * _e28) - _e30);
-            float _e32 = cur;
-            prev = _e32;
-            cur = next;
-            uint _e33 = j_1;
-            uint _e35 = j_1;
-            float _e37 = xi[min(uint(_e35), 5u)];
-            const float _e40 = airlight_integrand(s_2, g_3, sigma_1, (y_c + (r * _e37)));
-            values[min(uint(_e33), 5u)] = _e40;
-        }
+    float om_3 = (1.0 - y2_);
+    float mu_2 = (-(sigma) * (om_3 * inv));
+    float c_7 = ((((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv);
+    float far = ((y2_ * inv) * 2.0);
+    float near = (inv * 2.0);
+    minus = near;
+    plus = far;
+    if ((sigma < 0.0)) {
+        minus = far;
+        plus = near;
     }
-    const float _e44[6] = airlight_zero_terms();
-    cheb = _e44;
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
-    while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e96 = j_2;
-            j_2 = (_e96 + 1u);
-        }
-        loop_init_12 = false;
-        uint _e48 = j_2;
-        if ((_e48 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            t_prev = 1.0;
-            uint _e53 = j_2;
-            float _e55 = xi[min(uint(_e53), 5u)];
-            t_cur = _e55;
-            k_4 = 0u;
-            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-            bool loop_init_13 = true;
-            while(true) {
-                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                if (!loop_init_13) {
-                    uint _e93 = k_4;
-                    k_4 = (_e93 + 1u);
-                }
-                loop_init_13 = false;
-                uint _e59 = k_4;
-                if ((_e59 < AIRLIGHT_TERMS)) {
-                } else {
-                    break;
-                }
-                {
-                    float _e62 = t_cur;
-                    tk = _e62;
-                    uint _e64 = k_4;
-                    if ((_e64 == 0u)) {
-                        tk = 1.0;
-                    }
-                    uint _e68 = k_4;
-                    float _e70 = cheb[min(uint(_e68), 5u)];
-                    uint _e71 = j_2;
-                    float _e73 = values[min(uint(_e71), 5u)];
-                    float _e74 = tk;
-                    cheb[min(uint(_e68), 5u)] = (_e70 + (_e73 * _e74));
-                    uint _e77 = k_4;
-                    if ((_e77 >= 1u)) {
-                        uint _e80 = j_2;
-                        float _e82 = xi[min(uint(_e80), 5u)];
-                        uint _e83 = j_2;
-                        float _e85 = xi[min(uint(_e83), 5u)];
-                        float _e87 = t_cur;
-                        float _e89 = t_prev;
-                        float t_next_1 = (((_e82 + _e85) * _e87) - _e89);
-                        float _e91 = t_cur;
-                        t_prev = _e91;
-                        t_cur = t_next_1;
-                    }
-                }
-            }
-        }
-    }
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
-    while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e126 = k_5;
-            k_5 = (_e126 + 1u);
-        }
-        loop_init_14 = false;
-        uint _e102 = k_5;
-        if ((_e102 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            uint _e105 = k_5;
-            float _e107 = cheb[min(uint(_e105), 5u)];
-            cheb[min(uint(_e105), 5u)] = (_e107 * (2.0 / 6.0));
-            uint _e111 = k_5;
-            if ((_e111 == 0u)) {
-                uint _e114 = k_5;
-                float _e116 = cheb[min(uint(_e114), 5u)];
-                cheb[min(uint(_e114), 5u)] = (_e116 * 0.5);
-            }
-            float _e119 = scale_sum;
-            uint _e120 = k_5;
-            float _e122 = cheb[min(uint(_e120), 5u)];
-            scale_sum = (_e119 + abs(_e122));
-        }
-    }
-    const float _e128[6] = airlight_zero_terms();
-    t_km1_ = _e128;
-    const float _e130[6] = airlight_zero_terms();
-    t_k = _e130;
-    const float _e132[6] = airlight_zero_terms();
-    hat = _e132;
-    t_km1_[0] = 1.0;
-    t_k[1] = 1.0;
-    float _e140 = cheb[0];
-    hat[0] = _e140;
-    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-    bool loop_init_15 = true;
-    while(true) {
-        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_15) {
-            uint _e189 = k_6;
-            k_6 = (_e189 + 1u);
-        }
-        loop_init_15 = false;
-        uint _e143 = k_6;
-        if ((_e143 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            const float _e146[6] = airlight_zero_terms();
-            t_next = _e146;
-            i_4 = 0u;
-            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-            bool loop_init_16 = true;
-            while(true) {
-                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_16) {
-                    uint _e184 = i_4;
-                    i_4 = (_e184 + 1u);
-                }
-                loop_init_16 = false;
-                uint _e150 = i_4;
-                if ((_e150 < AIRLIGHT_TERMS)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e153 = i_4;
-                    float _e155 = hat[min(uint(_e153), 5u)];
-                    uint _e156 = k_6;
-                    float _e158 = cheb[min(uint(_e156), 5u)];
-                    uint _e159 = i_4;
-                    float _e161 = t_k[min(uint(_e159), 5u)];
-                    hat[min(uint(_e153), 5u)] = (_e155 + (_e158 * _e161));
-                    shifted = 0.0;
-                    uint _e166 = i_4;
-                    if ((_e166 > 0u)) {
-                        uint _e169 = i_4;
-                        float _e173 = t_k[min(uint((_e169 - 1u)), 5u)];
-                        shifted = _e173;
-                    }
-                    uint _e174 = i_4;
-                    float _e176 = shifted;
-                    float _e177 = shifted;
-                    uint _e179 = i_4;
-                    float _e181 = t_km1_[min(uint(_e179), 5u)];
-                    t_next[min(uint(_e174), 5u)] = ((_e176 + _e177) - _e181);
-                }
-            }
-            float _e186[6] = t_k;
-            t_km1_ = _e186;
-            float _e187[6] = t_next;
-            t_k = _e187;
-        }
-    }
-    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-    bool loop_init_17 = true;
-    while(true) {
-        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e202 = k_7;
-            k_7 = (_e202 + 1u);
-        }
-        loop_init_17 = false;
-        uint _e195 = k_7;
-        if ((_e195 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            float _e198 = amplification;
-            amplification = (_e198 * 2.4142137);
-        }
-    }
-    float _e208 = amplification;
-    float _e210 = scale_sum;
-    float noise_ = ((((4.0 * 6.0) * AIRLIGHT_FLT_EPS) * _e208) * _e210);
-    const float _e212[6] = airlight_zero_terms();
-    a_3 = _e212;
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-    bool loop_init_18 = true;
-    while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_18) {
-            uint _e252 = k_8;
-            k_8 = (_e252 + 1u);
-        }
-        loop_init_18 = false;
-        uint _e218 = k_8;
-        if ((_e218 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            uint _e221 = k_8;
-            if ((_e221 == 0u)) {
-                uint _e224 = k_8;
-                uint _e226 = k_8;
-                float _e228 = hat[min(uint(_e226), 5u)];
-                a_3[min(uint(_e224), 5u)] = _e228;
-            } else {
-                uint _e229 = k_8;
-                float _e231 = hat[min(uint(_e229), 5u)];
-                if ((abs(_e231) > noise_)) {
-                    float _e236 = rk;
-                    local_2 = (_e236 > 0.0);
-                } else {
-                    local_2 = false;
-                }
-                bool _e240 = local_2;
-                if (_e240) {
-                    uint _e241 = k_8;
-                    float _e243 = hat[min(uint(_e241), 5u)];
-                    float _e244 = rk;
-                    float ak = (_e243 / _e244);
-                    const bool _e246 = airlight_is_finite(ak);
-                    if (_e246) {
-                        uint _e247 = k_8;
-                        a_3[min(uint(_e247), 5u)] = ak;
-                    }
-                }
-            }
-            float _e249 = rk;
-            rk = (_e249 * r);
-        }
-    }
-    float _e254[6] = a_3;
-    return _e254;
+    const float _e35 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_7);
+    float _e40 = minus;
+    float _e41 = plus;
+    const float _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
+    return (_e35 * _e42);
 }
 
 typedef float2 ret_Constructarray4_float2_[4];
@@ -1094,866 +814,1377 @@ ret_Constructarray4_float2_ Constructarray4_float2_(float2 arg0, float2 arg1, fl
     return ret;
 }
 
-typedef float ret_airlight_moments_gauss[6];
-ret_airlight_moments_gauss airlight_moments_gauss(AirlightHalf half_)
+float airlight_moment_gauss(AirlightHalf half_)
 {
-    float m[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint j_3 = 0u;
+    float m = 0.0;
+    uint j_1 = 0u;
     float dv = (float)0;
-    float p = (float)0;
-    uint k_9 = (uint)0;
 
-    const float _e1[6] = airlight_zero_terms();
-    m = _e1;
     float hw = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw);
     float2 nodes[4] = Constructarray4_float2_(float2(-0.8611363, 0.34785485), float2(-0.33998105, 0.65214515), float2(0.33998105, 0.65214515), float2(0.8611363, 0.34785485));
-    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-    bool loop_init_19 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-        if (!loop_init_19) {
-            uint _e73 = j_3;
-            j_3 = (_e73 + 1u);
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e59 = j_1;
+            j_1 = (_e59 + 1u);
         }
-        loop_init_19 = false;
-        uint _e23 = j_3;
+        loop_init_11 = false;
+        uint _e23 = j_1;
         if ((_e23 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e26 = j_3;
-            float xi_1 = nodes[min(uint(_e26), 3u)].x;
-            float s_12 = (hw * xi_1);
-            float y_3 = (yc + s_12);
-            dv = (hw * (1.0 + xi_1));
+            uint _e26 = j_1;
+            float xi = nodes[min(uint(_e26), 3u)].x;
+            float y_3 = (yc + (hw * xi));
+            dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi_1)) / (y_3 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_3 * half_.y_hi));
             }
-            uint _e42 = j_3;
-            float _e48 = dv;
-            p = (((nodes[min(uint(_e42), 3u)].y * hw) * exp((-(half_.big_h) * _e48))) / (1.0 + (y_3 * y_3)));
-            k_9 = 0u;
-            uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
-            bool loop_init_20 = true;
-            while(true) {
-                if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-                loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-                if (!loop_init_20) {
-                    uint _e70 = k_9;
-                    k_9 = (_e70 + 1u);
-                }
-                loop_init_20 = false;
-                uint _e59 = k_9;
-                if ((_e59 < AIRLIGHT_TERMS)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e62 = k_9;
-                    float _e64 = m[min(uint(_e62), 5u)];
-                    float _e65 = p;
-                    m[min(uint(_e62), 5u)] = (_e64 + _e65);
-                    float _e67 = p;
-                    p = (_e67 * s_12);
-                }
-            }
+            float _e42 = m;
+            uint _e43 = j_1;
+            float _e49 = dv;
+            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_3 * y_3))));
         }
     }
-    float _e75[6] = m;
-    return _e75;
+    float _e61 = m;
+    return _e61;
 }
 
-float airlight_n1_log_part(float v_s, float v_e, bool v_e_infinite)
+float airlight_hypot_one(float a_3)
 {
-    float at_e = 0.0;
-
-    if (!(v_e_infinite)) {
-        float y_e = (1.0 / v_e);
-        const float _e9 = airlight_log1p((y_e * y_e));
-        at_e = _e9;
+    if ((abs(a_3) < 1000000000000000.0)) {
+        return sqrt((1.0 + (a_3 * a_3)));
     }
-    float y_s = (1.0 / v_s);
-    float _e12 = at_e;
-    const float _e14 = airlight_log1p((y_s * y_s));
-    return (-0.5 * (_e12 - _e14));
+    return abs(a_3);
 }
 
-void airlight_t_moments(AirlightHalf half_1, uint count_1, inout float out_1[16])
+float airlight_q_zero(AirlightHalf half_1)
 {
-    float s_s[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float s_e[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    bool local_2 = (bool)0;
+    float v_e = (float)0;
     bool local_3 = (bool)0;
-    float decay = 0.0;
     bool local_4 = (bool)0;
-    float p_hi = (float)0;
-    float p_lo = (float)0;
-    uint order = 2u;
+    bool local_5 = (bool)0;
+    float d_im = 0.0;
+    float d_re = 0.0;
+    bool local_6 = (bool)0;
 
-    const float _e3[16] = airlight_zero_scratch();
-    s_s = _e3;
-    const float _e5[16] = airlight_zero_scratch();
-    s_e = _e5;
-    airlight_en_scaled((half_1.big_h / half_1.y_hi), count_1, s_s);
-    if ((half_1.y_lo > 0.0)) {
-        const bool _e18 = airlight_is_finite((half_1.big_h / half_1.y_lo));
-        local_3 = _e18;
+    float big_h_1 = half_1.big_h;
+    float v_s = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
+    if (half_1.second) {
+        local_2 = (half_1.y_lo == 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool v_e_infinite = local_2;
+    v_e = half_1.y_hi;
+    if (half_1.second) {
+        local_3 = !(v_e_infinite);
     } else {
         local_3 = false;
     }
-    bool far_end = local_3;
-    if (far_end) {
-        local_4 = !(half_1.dv_infinite);
-    } else {
-        local_4 = false;
+    bool _e23 = local_3;
+    if (_e23) {
+        v_e = (1.0 / half_1.y_lo);
     }
-    bool _e28 = local_4;
-    if (_e28) {
-        decay = exp((-(half_1.big_h) * half_1.dv));
-        airlight_en_scaled((half_1.big_h / half_1.y_lo), count_1, s_e);
-    }
-    p_hi = half_1.y_hi;
-    p_lo = half_1.y_lo;
-    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-    bool loop_init_21 = true;
-    while(true) {
-        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_21) {
-            uint _e76 = order;
-            order = (_e76 + 1u);
-        }
-        loop_init_21 = false;
-        uint _e43 = order;
-        if ((_e43 < AIRLIGHT_SCRATCH)) {
+    if (!((big_h_1 == 0.0))) {
+        if (!(v_e_infinite)) {
+            float _e35 = v_e;
+            const float _e36 = airlight_hypot_one(_e35);
+            local_5 = ((big_h_1 * _e36) <= 1.0);
         } else {
-            break;
+            local_5 = false;
         }
-        {
-            uint _e46 = order;
-            if ((_e46 <= count_1)) {
-                uint _e48 = order;
-                float _e52 = p_hi;
-                uint _e53 = order;
-                float _e57 = s_s[min(uint((_e53 - 1u)), 15u)];
-                float _e59 = p_lo;
-                uint _e60 = order;
-                float _e64 = s_e[min(uint((_e60 - 1u)), 15u)];
-                float _e66 = decay;
-                out_1[min(uint((_e48 - 1u)), 15u)] = ((_e52 * _e57) - ((_e59 * _e64) * _e66));
-                float _e69 = p_hi;
-                p_hi = (_e69 * half_1.y_hi);
-                float _e72 = p_lo;
-                p_lo = (_e72 * half_1.y_lo);
-            }
-        }
+        bool _e41 = local_5;
+        local_4 = _e41;
+    } else {
+        local_4 = true;
     }
-    return;
+    bool near_1 = local_4;
+    if (near_1) {
+        if (!(v_e_infinite)) {
+            float _e50 = v_e;
+            const float _e55 = airlight_atan((half_1.dv / (1.0 + (v_s * _e50))));
+            d_im = _e55;
+            float _e57 = v_e;
+            const float _e64 = airlight_log1p(((half_1.dv * (v_s + _e57)) / (1.0 + (v_s * v_s))));
+            d_re = (0.5 * _e64);
+        } else {
+            const float _e69 = airlight_atan((1.0 / v_s));
+            d_im = _e69;
+        }
+        if ((big_h_1 == 0.0)) {
+            float _e72 = d_im;
+            return _e72;
+        }
+        float2 z_s = float2((big_h_1 * v_s), -(big_h_1));
+        float _e76 = v_e;
+        float2 z_e = float2((big_h_1 * _e76), -(big_h_1));
+        const float2 _e80 = airlight_ein_divided_difference(z_s, z_e);
+        const float2 _e81 = airlight_cos_sin(big_h_1);
+        float2 rot = float2(_e81.x, -(_e81.y));
+        float _e86 = d_re;
+        float _e87 = d_im;
+        const float2 _e93 = airlight_cmul(rot, (float2(_e86, _e87) - (_e80 * (big_h_1 * half_1.dv))));
+        return (_e93.y * exp((big_h_1 * v_s)));
+    }
+    const float2 _e101 = airlight_e1_scaled(float2((big_h_1 * v_s), -(big_h_1)));
+    if (!(v_e_infinite)) {
+        float _e105 = v_e;
+        const bool _e107 = airlight_is_finite((big_h_1 * _e105));
+        local_6 = _e107;
+    } else {
+        local_6 = false;
+    }
+    bool _e109 = local_6;
+    if (_e109) {
+        float _e110 = v_e;
+        const float2 _e114 = airlight_e1_scaled(float2((big_h_1 * _e110), -(big_h_1)));
+        return (_e101.y - (_e114.y * exp((-(big_h_1) * half_1.dv))));
+    }
+    return _e101.y;
+}
+
+float airlight_moment_zero(AirlightHalf half_2)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
+
+    if (!((half_2.dy > 0.0))) {
+        return 0.0;
+    }
+    if (!(half_2.dv_infinite)) {
+        local_7 = ((half_2.big_h * half_2.dv) <= 1.0);
+    } else {
+        local_7 = false;
+    }
+    bool short_exp = local_7;
+    if ((half_2.dy <= 0.25)) {
+        if (!(!(half_2.second))) {
+            local_9 = (half_2.dy <= (half_2.y_lo * 0.5));
+        } else {
+            local_9 = true;
+        }
+        bool _e33 = local_9;
+        local_8 = _e33;
+    } else {
+        local_8 = false;
+    }
+    bool short_len = local_8;
+    if (short_exp) {
+        local_10 = short_len;
+    } else {
+        local_10 = false;
+    }
+    bool _e39 = local_10;
+    if (_e39) {
+        const float _e40 = airlight_moment_gauss(half_2);
+        return _e40;
+    }
+    const float _e41 = airlight_q_zero(half_2);
+    return _e41;
+}
+
+typedef float2 ret_Constructarray3_float2_[3];
+ret_Constructarray3_float2_ Constructarray3_float2_(float2 arg0, float2 arg1, float2 arg2) {
+    float2 ret[3] = { arg0, arg1, arg2 };
+    return ret;
+}
+
+typedef float2 ret_airlight_gauss_rule[3];
+ret_airlight_gauss_rule airlight_gauss_rule()
+{
+    return Constructarray3_float2_(float2(0.2386192, 0.46791393), float2(0.6612094, 0.36076158), float2(0.9324695, 0.17132449));
+}
+
+typedef float ret_Constructarray18_float_[18];
+ret_Constructarray18_float_ Constructarray18_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, float arg14, float arg15, float arg16, float arg17) {
+    float ret[18] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17 };
+    return ret;
+}
+
+typedef float ret_airlight_legendre_table[18];
+ret_airlight_legendre_table airlight_legendre_table()
+{
+    return Constructarray18_float_(0.23395696, 0.18038079, 0.085662246, 0.16747986, 0.3578084, 0.2396323, -0.48498264, 0.14051373, 0.34446892, -0.53055197, -0.3398032, 0.37672108, 0.36987686, -0.69522595, 0.32534906, 0.861151, -0.58413666, 0.19383956);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
 }
 
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-float airlight_n1_series(AirlightHalf half_2)
+float airlight_node(float2 rule[3], uint i_4)
 {
-    float t_3[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float sum_3 = 0.0;
+    float x_10 = rule[min(uint(naga_div(i_4, 2u)), 2u)].x;
+    return ((naga_mod(i_4, 2u) == 0u) ? -(x_10) : x_10);
+}
+
+typedef float ret_airlight_legendre[6];
+ret_airlight_legendre airlight_legendre(float g_3[6])
+{
+    float c_2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    uint k_4 = 0u;
+    float sum_3 = (float)0;
+    uint j_2 = (uint)0;
+
+    const float _e1[18] = airlight_legendre_table();
+    const float _e2[6] = airlight_zero_terms();
+    c_2 = _e2;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
+    while(true) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e50 = k_4;
+            k_4 = (_e50 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e6 = k_4;
+        if ((_e6 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            sum_3 = 0.0;
+            j_2 = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
+            while(true) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e44 = j_2;
+                    j_2 = (_e44 + 1u);
+                }
+                loop_init_13 = false;
+                uint _e13 = j_2;
+                if ((_e13 < AIRLIGHT_HALF_TERMS)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e17 = j_2;
+                    float minus_1 = g_3[min(uint((2u * _e17)), 5u)];
+                    uint _e21 = j_2;
+                    float plus_1 = g_3[min(uint(((2u * _e21) + 1u)), 5u)];
+                    uint _e28 = k_4;
+                    float pair = ((naga_mod(_e28, 2u) == 0u) ? (plus_1 + minus_1) : (plus_1 - minus_1));
+                    float _e34 = sum_3;
+                    uint _e35 = k_4;
+                    uint _e38 = j_2;
+                    sum_3 = (_e34 + (_e1[min(uint(((_e35 * AIRLIGHT_HALF_TERMS) + _e38)), 17u)] * pair));
+                }
+            }
+            uint _e46 = k_4;
+            float _e48 = sum_3;
+            c_2[min(uint(_e46), 5u)] = _e48;
+        }
+    }
+    float _e52[6] = c_2;
+    return _e52;
+}
+
+float airlight_expm1_(float x_6)
+{
+    float sum_4 = 1.0;
     uint i_5 = 0u;
 
-    const float _e1[16] = airlight_zero_scratch();
-    t_3 = _e1;
-    airlight_t_moments(half_2, 13u, t_3);
+    if ((abs(x_6) >= 0.5)) {
+        return (exp(x_6) - 1.0);
+    }
+    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e24 = i_5;
+            i_5 = (_e24 + 1u);
+        }
+        loop_init_14 = false;
+        uint _e11 = i_5;
+        if ((_e11 < 11u)) {
+        } else {
+            break;
+        }
+        {
+            float _e14 = sum_4;
+            uint _e17 = i_5;
+            sum_4 = (1.0 + ((x_6 * _e14) / float((12u - _e17))));
+        }
+    }
+    float _e26 = sum_4;
+    return (x_6 * _e26);
+}
+
+typedef float ret_airlight_exp_legendre_moments[6];
+ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float lambda)
+{
+    float out_1[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float above = 0.0;
+    float cur = 1e-20;
+    float odd = (float)0;
+    uint i_6 = 0u;
+    uint j_3 = (uint)0;
+    uint j_4 = 0u;
+    uint k_5 = 1u;
+    uint k_6 = 0u;
+
+    const float _e1[6] = airlight_zero_terms();
+    out_1 = _e1;
+    if (!((lambda > 0.0))) {
+        out_1[0] = 2.0;
+        float _e8[6] = out_1;
+        return _e8;
+    }
+    const bool _e9 = airlight_is_finite(lambda);
+    if (!(_e9)) {
+        float _e11[6] = out_1;
+        return _e11;
+    }
+    const float _e15 = airlight_expm1_(-((lambda + lambda)));
+    float i0_ = (-(_e15) / (lambda + lambda));
+    if ((lambda < AIRLIGHT_FLT_EPS)) {
+        out_1[0] = i0_;
+        out_1[1] = (lambda * 0.33333334);
+    } else {
+        if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
+            float inv_1 = (1.0 / lambda);
+            uint k0_ = max(AIRLIGHT_TERMS, naga_f2u32(ceil(lambda)));
+            float per_step = (-2.0 * log((lambda / float((2u * k0_)))));
+            uint steps = (naga_f2u32(min(ceil((15.942385 / per_step)), 28.0)) + 2u);
+            uint top = (k0_ + steps);
+            odd = float(((2u * top) + 1u));
+            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+            bool loop_init_15 = true;
+            while(true) {
+                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_15) {
+                    uint _e105 = i_6;
+                    i_6 = (_e105 + 1u);
+                }
+                loop_init_15 = false;
+                uint _e62 = i_6;
+                if ((_e62 < 42u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e65 = i_6;
+                    if ((_e65 < top)) {
+                        uint _e67 = i_6;
+                        uint k_12 = (top - _e67);
+                        if ((k_12 < AIRLIGHT_TERMS)) {
+                            float _e71 = cur;
+                            out_1[min(uint(k_12), 5u)] = _e71;
+                        }
+                        float _e72 = above;
+                        float _e73 = odd;
+                        float _e75 = cur;
+                        float below = (_e72 + ((_e73 * inv_1) * _e75));
+                        float _e78 = odd;
+                        odd = (_e78 - 2.0);
+                        float _e81 = cur;
+                        above = _e81;
+                        cur = below;
+                        float _e82 = cur;
+                        if ((_e82 > 1e20)) {
+                            float _e85 = cur;
+                            cur = (_e85 * 1e-20);
+                            float _e88 = above;
+                            above = (_e88 * 1e-20);
+                            j_3 = 0u;
+                            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+                            bool loop_init_16 = true;
+                            while(true) {
+                                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                                if (!loop_init_16) {
+                                    uint _e102 = j_3;
+                                    j_3 = (_e102 + 1u);
+                                }
+                                loop_init_16 = false;
+                                uint _e93 = j_3;
+                                if ((_e93 < AIRLIGHT_TERMS)) {
+                                } else {
+                                    break;
+                                }
+                                {
+                                    uint _e96 = j_3;
+                                    float _e98 = out_1[min(uint(_e96), 5u)];
+                                    out_1[min(uint(_e96), 5u)] = (_e98 * 1e-20);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            float _e108 = cur;
+            out_1[0] = _e108;
+            float _e109 = cur;
+            float norm = (i0_ / _e109);
+            uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+            bool loop_init_17 = true;
+            while(true) {
+                if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_17) {
+                    uint _e121 = j_4;
+                    j_4 = (_e121 + 1u);
+                }
+                loop_init_17 = false;
+                uint _e113 = j_4;
+                if ((_e113 < AIRLIGHT_TERMS)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e116 = j_4;
+                    float _e118 = out_1[min(uint(_e116), 5u)];
+                    out_1[min(uint(_e116), 5u)] = (_e118 * norm);
+                }
+            }
+        } else {
+            float e2_1 = exp(-((lambda + lambda)));
+            out_1[0] = i0_;
+            out_1[1] = ((((1.0 + e2_1) * 0.5) - i0_) / lambda);
+            uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+            bool loop_init_18 = true;
+            while(true) {
+                if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+                loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+                if (!loop_init_18) {
+                    uint _e163 = k_5;
+                    k_5 = (_e163 + 1u);
+                }
+                loop_init_18 = false;
+                uint _e136 = k_5;
+                if (((_e136 + 1u) < AIRLIGHT_TERMS)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e141 = k_5;
+                    uint _e145 = k_5;
+                    float _e149 = out_1[min(uint((_e145 - 1u)), 5u)];
+                    uint _e151 = k_5;
+                    uint _e157 = k_5;
+                    float _e159 = out_1[min(uint(_e157), 5u)];
+                    out_1[min(uint((_e141 + 1u)), 5u)] = (_e149 - ((float(((2u * _e151) + 1u)) / lambda) * _e159));
+                }
+            }
+        }
+    }
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    bool loop_init_19 = true;
+    while(true) {
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_19) {
+            uint _e183 = k_6;
+            k_6 = (_e183 + 1u);
+        }
+        loop_init_19 = false;
+        uint _e167 = k_6;
+        if ((_e167 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e170 = k_6;
+            float _e172 = out_1[min(uint(_e170), 5u)];
+            uint _e173 = k_6;
+            out_1[min(uint(_e170), 5u)] = (_e172 * ((naga_mod(_e173, 2u) == 1u) ? -2.0 : 2.0));
+        }
+    }
+    float _e185[6] = out_1;
+    return _e185;
+}
+
+float airlight_tail_estimate(float c_3[6])
+{
+    return (abs(c_3[5]) + abs(c_3[4]));
+}
+
+float airlight_error_factor(float c_4[6], float m_1[6])
+{
+    bool local_11 = (bool)0;
+    float aliasing = 1.0;
+    uint i_7 = 0u;
+
+    if (!((m_1[0] > 0.0))) {
+        return 1.0;
+    }
+    float last = (abs(c_4[5]) + abs(c_4[4]));
+    float before = (abs(c_4[3]) + abs(c_4[2]));
+    if (!(!((before > 0.0)))) {
+        local_11 = !((last < before));
+    } else {
+        local_11 = true;
+    }
+    bool _e26 = local_11;
+    if (_e26) {
+        return 1.0;
+    }
+    float q_1 = sqrt((last / before));
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
+    while(true) {
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e40 = i_7;
+            i_7 = (_e40 + 1u);
+        }
+        loop_init_20 = false;
+        uint _e34 = i_7;
+        if ((_e34 < 1u)) {
+        } else {
+            break;
+        }
+        {
+            float _e37 = aliasing;
+            aliasing = (_e37 * q_1);
+        }
+    }
+    float truncation = ((q_1 * max(abs(m_1[5]), abs(m_1[4]))) / m_1[0]);
+    float _e50 = aliasing;
+    return min((_e50 + truncation), 1.0);
+}
+
+float airlight_transform_noise(float mass, float mean_abs)
+{
+    return ((2.861023e-6 * mass) * mean_abs);
+}
+
+float airlight_factor(AirlightHalf half_3, float a_4, float b_3)
+{
+    float offset = (float)0;
+
+    offset = (a_4 - half_3.y_lo);
+    if (half_3.second) {
+        offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
+    }
+    float _e13 = offset;
+    float x_11 = (half_3.big_h * _e13);
+    return ((x_11 > 0.0) ? exp(-(x_11)) : 1.0);
+}
+
+AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
+    AirlightPanel ret = (AirlightPanel)0;
+    ret.value = arg0;
+    ret.error = arg1;
+    ret.mass_over = arg2;
+    ret.f_max = arg3;
+    return ret;
+}
+
+AirlightPanel airlight_panel_result(float value, float error, float noise_, float mass_over, float f_max)
+{
+    const AirlightPanel airlightpanel = ConstructAirlightPanel(value, ((error <= noise_) ? 0.0 : error), mass_over, f_max);
+    return airlightpanel;
+}
+
+AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float sigma_1, AirlightHalf half_4, float a_5, float b_4)
+{
+    float r = (float)0;
+    float vc = (float)0;
+    float samples[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float f_max_1 = 0.0;
+    float over_max = 0.0;
+    float g_avg = 0.0;
+    uint i_8 = 0u;
+    float sum_5 = 0.0;
+    uint k_7 = 0u;
+
+    const float2 _e6[3] = airlight_gauss_rule();
+    r = ((b_4 - a_5) * 0.5);
+    float _e11 = r;
+    vc = (a_5 + _e11);
+    if (half_4.second) {
+        r = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
+        float _e22 = r;
+        vc = ((1.0 / b_4) + _e22);
+    }
+    const float _e24[6] = airlight_zero_terms();
+    samples = _e24;
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e76 = i_8;
+            i_8 = (_e76 + 1u);
+        }
+        loop_init_21 = false;
+        uint _e34 = i_8;
+        if ((_e34 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            float _e37 = vc;
+            float _e38 = r;
+            uint _e39 = i_8;
+            const float _e40 = airlight_node(_e6, _e39);
+            float v_5 = (_e37 + (_e38 * _e40));
+            float y_4 = (half_4.second ? (1.0 / v_5) : v_5);
+            const float _e47 = airlight_integrand(s_2, g_4, sigma_1, y_4);
+            float over = (1.0 / (1.0 + (v_5 * v_5)));
+            uint _e53 = i_8;
+            samples[min(uint(_e53), 5u)] = (_e47 * over);
+            float _e56 = f_max_1;
+            f_max_1 = max(_e56, abs(_e47));
+            float _e59 = over_max;
+            over_max = max(_e59, over);
+            float _e61 = g_avg;
+            uint _e62 = i_8;
+            uint _e69 = i_8;
+            float _e71 = samples[min(uint(_e69), 5u)];
+            g_avg = (_e61 + ((_e6[min(uint(naga_div(_e62, 2u)), 2u)].y * 0.5) * abs(_e71)));
+        }
+    }
+    float _e78[6] = samples;
+    const float _e79[6] = airlight_legendre(_e78);
+    float _e81 = r;
+    const float _e83[6] = airlight_exp_legendre_moments((half_4.big_h * _e81));
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
     bool loop_init_22 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e31 = i_5;
-            i_5 = (_e31 + 1u);
+            uint _e99 = k_7;
+            k_7 = (_e99 + 1u);
         }
         loop_init_22 = false;
-        uint _e8 = i_5;
-        if ((_e8 < 6u)) {
+        uint _e88 = k_7;
+        if ((_e88 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e12 = i_5;
-            uint j_9 = (5u - _e12);
-            float tn = t_3[min(uint(((3u + (2u * j_9)) - 1u)), 15u)];
-            if ((naga_mod(j_9, 2u) == 0u)) {
-                float _e26 = sum_3;
-                sum_3 = (_e26 + tn);
-            } else {
-                float _e28 = sum_3;
-                sum_3 = (_e28 - tn);
-            }
+            float _e91 = sum_5;
+            uint _e92 = k_7;
+            uint _e94 = k_7;
+            sum_5 = (_e91 + (_e79[min(uint(_e92), 5u)] * _e83[min(uint(_e94), 5u)]));
         }
     }
-    float _e33 = sum_3;
-    return _e33;
+    const float _e101 = airlight_factor(half_4, a_5, b_4);
+    float _e102 = r;
+    float w = (_e101 * _e102);
+    float mass_4 = (w * _e83[0]);
+    const float _e106 = airlight_tail_estimate(_e79);
+    const float _e108 = airlight_error_factor(_e79, _e83);
+    float error_1 = ((mass_4 * _e106) * _e108);
+    float _e110 = sum_5;
+    float _e112 = g_avg;
+    const float _e113 = airlight_transform_noise(mass_4, _e112);
+    float _e114 = over_max;
+    float _e116 = f_max_1;
+    const AirlightPanel _e117 = airlight_panel_result((w * _e110), error_1, _e113, (mass_4 * _e114), _e116);
+    const AirlightPanel airlightpanel_1 = _e117;
+    return airlightpanel_1;
 }
 
-float airlight_hypot_one(float a_4)
+AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, AirlightHalf half_5, float a_6, float b_5)
 {
-    if ((abs(a_4) < 1000000000000000.0)) {
-        return sqrt((1.0 + (a_4 * a_4)));
+    float samples_1[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float f_max_2 = 0.0;
+    float over_max_1 = 0.0;
+    float mass_1 = 0.0;
+    float p_avg = 0.0;
+    uint i_9 = 0u;
+    float m_2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+    const float2 _e6[3] = airlight_gauss_rule();
+    float r_3 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_3);
+    const float _e11[6] = airlight_zero_terms();
+    samples_1 = _e11;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
+    while(true) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e77 = i_9;
+            i_9 = (_e77 + 1u);
+        }
+        loop_init_23 = false;
+        uint _e23 = i_9;
+        if ((_e23 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e26 = i_9;
+            const float _e27 = airlight_node(_e6, _e26);
+            float y_5 = (yc_1 + (r_3 * _e27));
+            float weight = exp(((-(half_5.big_h) * (r_3 * (1.0 - _e27))) / (y_5 * b_5)));
+            const float _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
+            float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
+            uint _e45 = i_9;
+            samples_1[min(uint(_e45), 5u)] = ((_e39 * over_1) * weight);
+            float _e49 = f_max_2;
+            f_max_2 = max(_e49, abs(_e39));
+            float _e52 = over_max_1;
+            over_max_1 = max(_e52, over_1);
+            float _e54 = mass_1;
+            uint _e55 = i_9;
+            mass_1 = (_e54 + (_e6[min(uint(naga_div(_e55, 2u)), 2u)].y * weight));
+            float _e62 = p_avg;
+            uint _e63 = i_9;
+            uint _e70 = i_9;
+            float _e72 = samples_1[min(uint(_e70), 5u)];
+            p_avg = (_e62 + ((_e6[min(uint(naga_div(_e63, 2u)), 2u)].y * 0.5) * abs(_e72)));
+        }
     }
-    return abs(a_4);
+    float _e79[6] = samples_1;
+    const float _e80[6] = airlight_legendre(_e79);
+    const float _e81 = airlight_factor(half_5, a_6, b_5);
+    float w_1 = (_e81 * r_3);
+    const float _e83[6] = airlight_zero_terms();
+    m_2 = _e83;
+    m_2[0] = 2.0;
+    const float _e89 = airlight_tail_estimate(_e80);
+    float _e91[6] = m_2;
+    const float _e92 = airlight_error_factor(_e80, _e91);
+    float error_2 = (((w_1 * 2.0) * _e89) * _e92);
+    float _e100 = p_avg;
+    const float _e101 = airlight_transform_noise((w_1 * 2.0), _e100);
+    float _e102 = mass_1;
+    float _e104 = over_max_1;
+    float _e106 = f_max_2;
+    const AirlightPanel _e107 = airlight_panel_result(((w_1 * 2.0) * _e80[0]), error_2, _e101, ((w_1 * _e102) * _e104), _e106);
+    const AirlightPanel airlightpanel_2 = _e107;
+    return airlightpanel_2;
 }
 
-float2 airlight_q_zero(AirlightHalf half_3, bool with_re)
+typedef float ret_airlight_legendre_to_monomial[6];
+ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_5[6])
 {
-    bool local_5 = (bool)0;
-    float v_e_1 = (float)0;
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
-    float d_im = 0.0;
-    float d_re = 0.0;
-    float n1_ = 0.0;
-    float n1_1 = 0.0;
-    float2 s_e_1 = float2(0.0, 0.0);
-    float decay_1 = 0.0;
-    bool local_9 = (bool)0;
-    float n1_2 = 0.0;
-    float e_s[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float tail = 0.0;
-    float e_e[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-
-    float big_h_1 = half_3.big_h;
-    float v_s_1 = (half_3.second ? (1.0 / half_3.y_hi) : half_3.y_lo);
-    if (half_3.second) {
-        local_5 = (half_3.y_lo == 0.0);
-    } else {
-        local_5 = false;
-    }
-    bool v_e_infinite_1 = local_5;
-    v_e_1 = half_3.y_hi;
-    if (half_3.second) {
-        local_6 = !(v_e_infinite_1);
-    } else {
-        local_6 = false;
-    }
-    bool _e24 = local_6;
-    if (_e24) {
-        v_e_1 = (1.0 / half_3.y_lo);
-    }
-    if (!((big_h_1 == 0.0))) {
-        if (!(v_e_infinite_1)) {
-            float _e36 = v_e_1;
-            const float _e37 = airlight_hypot_one(_e36);
-            local_8 = ((big_h_1 * _e37) <= 1.0);
-        } else {
-            local_8 = false;
-        }
-        bool _e42 = local_8;
-        local_7 = _e42;
-    } else {
-        local_7 = true;
-    }
-    bool near = local_7;
-    if (near) {
-        if (!(v_e_infinite_1)) {
-            float _e51 = v_e_1;
-            const float _e56 = airlight_atan((half_3.dv / (1.0 + (v_s_1 * _e51))));
-            d_im = _e56;
-            float _e58 = v_e_1;
-            const float _e65 = airlight_log1p(((half_3.dv * (v_s_1 + _e58)) / (1.0 + (v_s_1 * v_s_1))));
-            d_re = (0.5 * _e65);
-        } else {
-            const float _e70 = airlight_atan((1.0 / v_s_1));
-            d_im = _e70;
-        }
-        if ((big_h_1 == 0.0)) {
-            if (!(half_3.second)) {
-                float _e75 = d_re;
-                float _e76 = d_im;
-                return float2(_e75, _e76);
-            }
-            if (with_re) {
-                float _e80 = v_e_1;
-                const float _e81 = airlight_n1_log_part(v_s_1, _e80, v_e_infinite_1);
-                n1_ = _e81;
-            }
-            float _e82 = n1_;
-            float _e83 = d_im;
-            return float2(_e82, _e83);
-        }
-        float2 z_s = float2((big_h_1 * v_s_1), -(big_h_1));
-        float _e88 = v_e_1;
-        float2 z_e = float2((big_h_1 * _e88), -(big_h_1));
-        float hdv = (big_h_1 * half_3.dv);
-        const float2 _e94 = airlight_ein_divided_difference(z_s, z_e);
-        const float2 _e95 = airlight_cos_sin(big_h_1);
-        float2 rot = float2(_e95.x, -(_e95.y));
-        float scale = exp((big_h_1 * v_s_1));
-        float _e102 = d_re;
-        float _e103 = d_im;
-        const float2 _e107 = airlight_cmul(rot, (float2(_e102, _e103) - (_e94 * hdv)));
-        float2 c_4 = (_e107 * scale);
-        if (!(half_3.second)) {
-            return c_4;
-        }
-        if (with_re) {
-            const float2 _e115 = airlight_cos_sin((big_h_1 * 0.5));
-            float sh = _e115.y;
-            float _e120 = v_e_1;
-            const float2 _e124 = airlight_ein_divided_difference(float2((big_h_1 * v_s_1), 0.0), float2((big_h_1 * _e120), 0.0));
-            float _e125 = v_e_1;
-            const float _e127 = airlight_n1_log_part(v_s_1, _e125, false);
-            float _e131 = d_re;
-            float _e135 = d_im;
-            const float2 _e139 = airlight_cmul(rot, _e94);
-            n1_1 = ((((_e127 + (((sh * sh) + (sh * sh)) * _e131)) - (_e95.y * _e135)) - (hdv * (_e124.x - _e139.x))) * scale);
-        }
-        float _e145 = n1_1;
-        return float2(_e145, c_4.y);
-    }
-    const float2 _e151 = airlight_e1_scaled(float2((big_h_1 * v_s_1), -(big_h_1)));
-    if (!(v_e_infinite_1)) {
-        float _e161 = v_e_1;
-        const bool _e163 = airlight_is_finite((big_h_1 * _e161));
-        local_9 = _e163;
-    } else {
-        local_9 = false;
-    }
-    bool far_finite = local_9;
-    if (far_finite) {
-        float _e166 = v_e_1;
-        const float2 _e170 = airlight_e1_scaled(float2((big_h_1 * _e166), -(big_h_1)));
-        s_e_1 = _e170;
-        decay_1 = exp((-(big_h_1) * half_3.dv));
-    }
-    float2 _e175 = s_e_1;
-    float _e176 = decay_1;
-    float2 c_5 = (_e151 - (_e175 * _e176));
-    if (!(half_3.second)) {
-        return c_5;
-    }
-    if (with_re) {
-        if ((half_3.y_hi <= 0.25)) {
-            const float _e186 = airlight_n1_series(half_3);
-            n1_2 = _e186;
-        } else {
-            const float _e187[16] = airlight_zero_scratch();
-            e_s = _e187;
-            airlight_en_scaled((big_h_1 * v_s_1), 1u, e_s);
-            if (far_finite) {
-                const float _e193[16] = airlight_zero_scratch();
-                e_e = _e193;
-                float _e195 = v_e_1;
-                airlight_en_scaled((big_h_1 * _e195), 1u, e_e);
-                float _e199 = e_e[0];
-                float _e201 = s_e_1.x;
-                float _e203 = decay_1;
-                tail = ((_e199 - _e201) * _e203);
-            }
-            float _e206 = e_s[0];
-            float _e209 = tail;
-            n1_2 = ((_e206 - _e151.x) - _e209);
-        }
-    }
-    float _e211 = n1_2;
-    return float2(_e211, c_5.y);
-}
-
-typedef float ret_airlight_phi_moments[6];
-ret_airlight_phi_moments airlight_phi_moments(float x_6)
-{
-    float out_2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint i_6 = 0u;
-    float term_1 = (float)0;
-    float sum_4 = (float)0;
-    uint j_4 = (uint)0;
-    float prev_1 = (float)0;
-    uint i_7 = 0u;
+    float hat[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float p_prev[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float p_cur[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    uint k_8 = 0u;
+    uint i_10 = (uint)0;
+    float next[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    uint i_11 = (uint)0;
+    float shifted = (float)0;
 
     const float _e1[6] = airlight_zero_terms();
-    out_2 = _e1;
-    float ex = exp(-(x_6));
-    if ((x_6 <= 2.6)) {
-        uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-        bool loop_init_23 = true;
-        while(true) {
-            if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-            loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-            if (!loop_init_23) {
-                uint _e46 = i_6;
-                i_6 = (_e46 + 1u);
+    hat = _e1;
+    const float _e3[6] = airlight_zero_terms();
+    p_prev = _e3;
+    const float _e5[6] = airlight_zero_terms();
+    p_cur = _e5;
+    p_cur[0] = 1.0;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e79 = k_8;
+            k_8 = (_e79 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e11 = k_8;
+        if ((_e11 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            i_10 = 0u;
+            uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+            bool loop_init_25 = true;
+            while(true) {
+                if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_25) {
+                    uint _e30 = i_10;
+                    i_10 = (_e30 + 1u);
+                }
+                loop_init_25 = false;
+                uint _e16 = i_10;
+                uint _e17 = k_8;
+                if ((_e16 <= _e17)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e19 = i_10;
+                    float _e21 = hat[min(uint(_e19), 5u)];
+                    uint _e22 = k_8;
+                    uint _e24 = i_10;
+                    float _e26 = p_cur[min(uint(_e24), 5u)];
+                    hat[min(uint(_e19), 5u)] = (_e21 + (c_5[min(uint(_e22), 5u)] * _e26));
+                }
             }
-            loop_init_23 = false;
-            uint _e9 = i_6;
-            if ((_e9 < AIRLIGHT_TERMS)) {
-            } else {
-                break;
-            }
-            {
-                uint _e12 = i_6;
-                term_1 = (1.0 / float((_e12 + 1u)));
-                float _e19 = term_1;
-                sum_4 = _e19;
-                j_4 = 1u;
-                uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-                bool loop_init_24 = true;
+            uint _e32 = k_8;
+            if (((_e32 + 1u) < AIRLIGHT_TERMS)) {
+                uint _e37 = k_8;
+                float kf_4 = float(_e37);
+                const float _e39[6] = airlight_zero_terms();
+                next = _e39;
+                i_11 = 0u;
+                uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+                bool loop_init_26 = true;
                 while(true) {
-                    if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-                    loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                    if (!loop_init_24) {
-                        uint _e39 = j_4;
-                        j_4 = (_e39 + 1u);
+                    if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+                    loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                    if (!loop_init_26) {
+                        uint _e74 = i_11;
+                        i_11 = (_e74 + 1u);
                     }
-                    loop_init_24 = false;
-                    uint _e23 = j_4;
-                    if ((_e23 <= 14u)) {
+                    loop_init_26 = false;
+                    uint _e43 = i_11;
+                    uint _e44 = k_8;
+                    if ((_e43 <= (_e44 + 1u))) {
                     } else {
                         break;
                     }
                     {
-                        float _e26 = term_1;
-                        uint _e27 = i_6;
-                        uint _e28 = j_4;
-                        term_1 = (_e26 * (x_6 / float(((_e27 + _e28) + 1u))));
-                        float _e35 = sum_4;
-                        float _e36 = term_1;
-                        sum_4 = (_e35 + _e36);
+                        shifted = 0.0;
+                        uint _e50 = i_11;
+                        if ((_e50 > 0u)) {
+                            uint _e53 = i_11;
+                            float _e57 = p_cur[min(uint((_e53 - 1u)), 5u)];
+                            shifted = _e57;
+                        }
+                        uint _e58 = i_11;
+                        float _e63 = shifted;
+                        uint _e65 = i_11;
+                        float _e67 = p_prev[min(uint(_e65), 5u)];
+                        next[min(uint(_e58), 5u)] = (((((kf_4 + kf_4) + 1.0) * _e63) - (kf_4 * _e67)) / (kf_4 + 1.0));
                     }
                 }
-                uint _e41 = i_6;
-                float _e43 = sum_4;
-                out_2[min(uint(_e41), 5u)] = (ex * _e43);
-            }
-        }
-    } else {
-        prev_1 = ((1.0 - ex) / x_6);
-        uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-        bool loop_init_25 = true;
-        while(true) {
-            if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_25) {
-                uint _e70 = i_7;
-                i_7 = (_e70 + 1u);
-            }
-            loop_init_25 = false;
-            uint _e54 = i_7;
-            if ((_e54 < AIRLIGHT_TERMS)) {
-            } else {
-                break;
-            }
-            {
-                uint _e57 = i_7;
-                if ((_e57 > 0u)) {
-                    uint _e60 = i_7;
-                    float _e62 = prev_1;
-                    prev_1 = (((float(_e60) * _e62) - ex) / x_6);
-                }
-                uint _e66 = i_7;
-                float _e68 = prev_1;
-                out_2[min(uint(_e66), 5u)] = _e68;
+                float _e76[6] = p_cur;
+                p_prev = _e76;
+                float _e77[6] = next;
+                p_cur = _e77;
             }
         }
     }
-    float _e72[6] = out_2;
-    return _e72;
+    float _e81[6] = hat;
+    return _e81;
 }
 
-typedef float ret_airlight_binomial_shift[6];
-ret_airlight_binomial_shift airlight_binomial_shift(float x_7[6], float c_2)
+AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, AirlightHalf half_6, float a_7, float b_6)
 {
-    float out_3[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint j_5 = 0u;
-    float sum_5 = (float)0;
-    float binom = (float)0;
-    float cp = (float)0;
-    uint ii = (uint)0;
+    float samples_2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float f_max_3 = 0.0;
+    float g_avg_1 = 0.0;
+    uint i_12 = 0u;
+    float q[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    uint jj = 0u;
+    float next_1[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    uint i_13 = (uint)0;
+    float shifted_1 = (float)0;
+    float s_b[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float s_a[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    bool local_12 = (bool)0;
+    float decay = 0.0;
+    bool local_13 = (bool)0;
+    float sum_6 = 0.0;
+    float mass_2 = 0.0;
+    float ratio = 1.0;
+    float ab = 0.0;
+    uint k_9 = 0u;
+    float tail = (float)0;
+    float l_prev = 0.0;
+    float l_cur = 1.0;
+    float spread = 0.0;
+    uint k_10 = 0u;
 
-    const float _e2[6] = airlight_zero_terms();
-    out_3 = _e2;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    const float2 _e6[3] = airlight_gauss_rule();
+    float r_4 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_4);
+    const float _e11[6] = airlight_zero_terms();
+    samples_2 = _e11;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e48 = j_5;
-            j_5 = (_e48 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e51 = i_12;
+            i_12 = (_e51 + 1u);
         }
-        loop_init_26 = false;
-        uint _e6 = j_5;
-        if ((_e6 < AIRLIGHT_TERMS)) {
+        loop_init_27 = false;
+        uint _e19 = i_12;
+        if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            sum_5 = 0.0;
-            binom = 1.0;
-            cp = 1.0;
-            ii = 0u;
-            uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-            bool loop_init_27 = true;
-            while(true) {
-                if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-                if (!loop_init_27) {
-                    uint _e42 = ii;
-                    ii = (_e42 + 1u);
-                }
-                loop_init_27 = false;
-                uint _e17 = ii;
-                uint _e18 = j_5;
-                if ((_e17 <= _e18)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e20 = j_5;
-                    uint _e21 = ii;
-                    uint i_14 = (_e20 - _e21);
-                    float _e23 = sum_5;
-                    float _e24 = binom;
-                    float _e27 = cp;
-                    sum_5 = (_e23 + ((_e24 * x_7[min(uint(i_14), 5u)]) * _e27));
-                    float _e30 = binom;
-                    uint _e33 = j_5;
-                    binom = ((_e30 * float(i_14)) / float(((_e33 - i_14) + 1u)));
-                    float _e39 = cp;
-                    cp = (_e39 * c_2);
-                }
-            }
-            uint _e44 = j_5;
-            float _e46 = sum_5;
-            out_3[min(uint(_e44), 5u)] = _e46;
+            uint _e22 = i_12;
+            const float _e23 = airlight_node(_e6, _e22);
+            float y_6 = (yc_2 + (r_4 * _e23));
+            const float _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            uint _e27 = i_12;
+            samples_2[min(uint(_e27), 5u)] = (_e26 / (1.0 + (y_6 * y_6)));
+            float _e33 = f_max_3;
+            f_max_3 = max(_e33, abs(_e26));
+            float _e36 = g_avg_1;
+            uint _e37 = i_12;
+            uint _e44 = i_12;
+            float _e46 = samples_2[min(uint(_e44), 5u)];
+            g_avg_1 = (_e36 + ((_e6[min(uint(naga_div(_e37, 2u)), 2u)].y * 0.5) * abs(_e46)));
         }
     }
-    float _e50[6] = out_3;
-    return _e50;
-}
-
-typedef float ret_airlight_moments[6];
-ret_airlight_moments airlight_moments(AirlightHalf half_4, uint count_2)
-{
-    float m_1[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
-    float r_1[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float t_4[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float x_8[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    uint i_8 = 0u;
-    float tau[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float p_1 = (float)0;
-    uint i_9 = 0u;
-    float2 q = (float2)0;
-    uint k_10 = 1u;
-
-    const float _e2[6] = airlight_zero_terms();
-    m_1 = _e2;
-    if (!((half_4.dy > 0.0))) {
-        float _e8[6] = m_1;
-        return _e8;
-    }
-    if (!(half_4.dv_infinite)) {
-        local_10 = ((half_4.big_h * half_4.dv) <= 1.0);
-    } else {
-        local_10 = false;
-    }
-    bool short_exp = local_10;
-    if ((half_4.dy <= 0.25)) {
-        if (!(!(half_4.second))) {
-            local_12 = (half_4.dy <= (half_4.y_lo * 0.5));
-        } else {
-            local_12 = true;
+    float _e53[6] = samples_2;
+    const float _e54[6] = airlight_legendre(_e53);
+    float alpha = (b_6 / r_4);
+    float beta = (-(yc_2) / r_4);
+    const float _e58[6] = airlight_legendre_to_monomial(_e54);
+    const float _e59[6] = airlight_zero_terms();
+    q = _e59;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
+    while(true) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_28) {
+            uint _e104 = jj;
+            jj = (_e104 + 1u);
         }
-        bool _e36 = local_12;
-        local_11 = _e36;
-    } else {
-        local_11 = false;
-    }
-    bool short_len = local_11;
-    if (short_exp) {
-        local_13 = short_len;
-    } else {
-        local_13 = false;
-    }
-    bool _e42 = local_13;
-    if (_e42) {
-        const float _e43[6] = airlight_moments_gauss(half_4);
-        return _e43;
-    }
-    float yc_1 = (half_4.y_lo + (half_4.dy * 0.5));
-    const float2 _e51 = airlight_q_zero(half_4, (count_2 > 1u));
-    m_1[0] = _e51.y;
-    if ((count_2 > 1u)) {
-        const float _e56[6] = airlight_zero_terms();
-        r_1 = _e56;
-        if (half_4.second) {
-            const float _e59[16] = airlight_zero_scratch();
-            t_4 = _e59;
-            airlight_t_moments(half_4, 7u, t_4);
-            const float _e62[6] = airlight_zero_terms();
-            x_8 = _e62;
-            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
-            while(true) {
-                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
-                    uint _e77 = i_8;
-                    i_8 = (_e77 + 1u);
-                }
-                loop_init_28 = false;
-                uint _e66 = i_8;
-                if ((_e66 < AIRLIGHT_TERMS)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e69 = i_8;
-                    uint _e71 = i_8;
-                    float _e75 = t_4[min(uint((_e71 + 1u)), 15u)];
-                    x_8[min(uint(_e69), 5u)] = _e75;
-                }
-            }
-            float _e79[6] = x_8;
-            const float _e81[6] = airlight_binomial_shift(_e79, -(yc_1));
-            r_1 = _e81;
+        loop_init_28 = false;
+        uint _e63 = jj;
+        if ((_e63 < AIRLIGHT_TERMS)) {
         } else {
-            float delta = half_4.dy;
-            const float _e85[6] = airlight_phi_moments((half_4.big_h * delta));
-            const float _e86[6] = airlight_zero_terms();
-            tau = _e86;
-            p_1 = delta;
+            break;
+        }
+        {
+            uint _e67 = jj;
+            uint j_7 = (5u - _e67);
+            const float _e69[6] = airlight_zero_terms();
+            next_1 = _e69;
+            i_13 = 0u;
             uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
             bool loop_init_29 = true;
             while(true) {
                 if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
                 loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
                 if (!loop_init_29) {
-                    uint _e103 = i_9;
-                    i_9 = (_e103 + 1u);
+                    uint _e96 = i_13;
+                    i_13 = (_e96 + 1u);
                 }
                 loop_init_29 = false;
-                uint _e91 = i_9;
-                if ((_e91 < AIRLIGHT_TERMS)) {
+                uint _e73 = i_13;
+                if ((_e73 < AIRLIGHT_TERMS)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e94 = i_9;
-                    float _e96 = p_1;
-                    uint _e97 = i_9;
-                    tau[min(uint(_e94), 5u)] = (_e96 * _e85[min(uint(_e97), 5u)]);
-                    float _e100 = p_1;
-                    p_1 = (_e100 * delta);
+                    shifted_1 = 0.0;
+                    uint _e78 = i_13;
+                    if ((_e78 > 0u)) {
+                        uint _e81 = i_13;
+                        float _e85 = q[min(uint((_e81 - 1u)), 5u)];
+                        shifted_1 = (_e85 * alpha);
+                    }
+                    uint _e87 = i_13;
+                    float _e89 = shifted_1;
+                    uint _e90 = i_13;
+                    float _e92 = q[min(uint(_e90), 5u)];
+                    next_1[min(uint(_e87), 5u)] = (_e89 + (_e92 * beta));
                 }
             }
-            float _e105[6] = tau;
-            const float _e109[6] = airlight_binomial_shift(_e105, (-(delta) * 0.5));
-            r_1 = _e109;
-        }
-        float2 b_6 = float2(yc_1, -1.0);
-        q = _e51;
-        uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-        bool loop_init_30 = true;
-        while(true) {
-            if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-            loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-            if (!loop_init_30) {
-                uint _e133 = k_10;
-                k_10 = (_e133 + 1u);
-            }
-            loop_init_30 = false;
-            uint _e115 = k_10;
-            if ((_e115 < AIRLIGHT_TERMS)) {
-            } else {
-                break;
-            }
-            {
-                uint _e118 = k_10;
-                float _e122 = r_1[min(uint((_e118 - 1u)), 5u)];
-                float2 _e125 = q;
-                const float2 _e126 = airlight_cmul(b_6, _e125);
-                q = (float2(_e122, 0.0) - _e126);
-                uint _e128 = k_10;
-                float _e131 = q.y;
-                m_1[min(uint(_e128), 5u)] = _e131;
-            }
+            float _e99 = next_1[0];
+            next_1[0] = (_e99 + _e58[min(uint(j_7), 5u)]);
+            float _e102[6] = next_1;
+            q = _e102;
         }
     }
-    float _e135[6] = m_1;
-    return _e135;
-}
-
-float airlight_bounded(float a_5)
-{
-    const float _e1 = airlight_hypot_one(a_5);
-    return (1.0 / (a_5 + _e1));
-}
-
-float airlight_piece(AirlightScene s_3, AirlightCanonical g_4, float sigma_2, AirlightHalf half_5)
-{
-    float j_6 = 0.0;
-    uint k_11 = 0u;
-
-    const float _e5[6] = airlight_moments(half_5, AIRLIGHT_TERMS);
-    const float _e14[6] = airlight_chebyshev(s_3, g_4, sigma_2, (half_5.y_lo + (half_5.dy * 0.5)), (half_5.dy * 0.5));
+    float big_h_2 = half_6.big_h;
+    const float _e107[16] = airlight_zero_scratch();
+    s_b = _e107;
+    airlight_en_scaled((big_h_2 / b_6), 8u, s_b);
+    const float _e111[16] = airlight_zero_scratch();
+    s_a = _e111;
+    if ((a_7 > 0.0)) {
+        const bool _e118 = airlight_is_finite((big_h_2 / a_7));
+        local_12 = _e118;
+    } else {
+        local_12 = false;
+    }
+    bool far_1 = local_12;
+    if (far_1) {
+        decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
+    }
+    if (far_1) {
+        float _e131 = decay;
+        local_13 = (_e131 > 0.0);
+    } else {
+        local_13 = false;
+    }
+    bool _e135 = local_13;
+    if (_e135) {
+        airlight_en_scaled((big_h_2 / a_7), 8u, s_a);
+    }
+    if ((b_6 > 0.0)) {
+        ab = (a_7 / b_6);
+    }
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
+    while(true) {
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_30) {
+            uint _e190 = k_9;
+            k_9 = (_e190 + 1u);
+        }
+        loop_init_30 = false;
+        uint _e151 = k_9;
+        if ((_e151 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            tail = 0.0;
+            float _e156 = decay;
+            if ((_e156 > 0.0)) {
+                float _e159 = decay;
+                float _e161 = ratio;
+                uint _e163 = k_9;
+                float _e167 = s_a[min(uint((_e163 + 1u)), 15u)];
+                tail = (((_e159 * a_7) * _e161) * _e167);
+            }
+            uint _e169 = k_9;
+            float _e173 = s_b[min(uint((_e169 + 1u)), 15u)];
+            float _e175 = tail;
+            float u = ((b_6 * _e173) - _e175);
+            uint _e177 = k_9;
+            if ((_e177 == 0u)) {
+                mass_2 = u;
+            }
+            float _e180 = sum_6;
+            uint _e181 = k_9;
+            float _e183 = q[min(uint(_e181), 5u)];
+            sum_6 = (_e180 + (_e183 * u));
+            float _e186 = ratio;
+            float _e187 = ab;
+            ratio = (_e186 * _e187);
+        }
+    }
+    const float _e192 = airlight_factor(half_6, a_7, b_6);
+    float _e193 = mass_2;
+    mass_2 = (_e193 * _e192);
+    float x_12 = (abs(alpha) + abs(beta));
     uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     bool loop_init_31 = true;
     while(true) {
         if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
         loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
         if (!loop_init_31) {
-            uint _e30 = k_11;
-            k_11 = (_e30 + 1u);
+            uint _e232 = k_10;
+            k_10 = (_e232 + 1u);
         }
         loop_init_31 = false;
-        uint _e19 = k_11;
-        if ((_e19 < AIRLIGHT_TERMS)) {
+        uint _e206 = k_10;
+        if ((_e206 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            float _e22 = j_6;
-            uint _e23 = k_11;
-            uint _e25 = k_11;
-            j_6 = (_e22 + (_e14[min(uint(_e23), 5u)] * _e5[min(uint(_e25), 5u)]));
+            float _e209 = spread;
+            float _e210 = l_cur;
+            uint _e211 = k_10;
+            spread = (_e209 + (_e210 * abs(_e54[min(uint(_e211), 5u)])));
+            uint _e216 = k_10;
+            float kf_5 = float(_e216);
+            float _e222 = l_cur;
+            float _e224 = l_prev;
+            float next_2 = ((((((kf_5 + kf_5) + 1.0) * x_12) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0));
+            float _e230 = l_cur;
+            l_prev = _e230;
+            l_cur = next_2;
         }
     }
-    float _e32 = j_6;
-    return _e32;
+    float _e234 = mass_2;
+    const float _e235 = airlight_tail_estimate(_e54);
+    float _e238 = mass_2;
+    float _e240 = spread;
+    float error_3 = ((_e234 * _e235) + ((AIRLIGHT_FLT_EPS * _e238) * _e240));
+    float _e243 = sum_6;
+    float _e245 = mass_2;
+    float _e246 = g_avg_1;
+    const float _e247 = airlight_transform_noise(_e245, _e246);
+    float _e248 = mass_2;
+    float _e249 = f_max_3;
+    const AirlightPanel _e250 = airlight_panel_result((_e192 * _e243), error_3, _e247, _e248, _e249);
+    const AirlightPanel airlightpanel_3 = _e250;
+    return airlightpanel_3;
 }
 
-AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
-    AirlightHalf ret = (AirlightHalf)0;
-    ret.second = arg0;
-    ret.big_h = arg1;
-    ret.y_lo = arg2;
-    ret.y_hi = arg3;
-    ret.dy = arg4;
-    ret.dv = arg5;
-    ret.dv_infinite = arg6;
-    return ret;
-}
-
-float airlight_subdivided(AirlightScene s_4, AirlightCanonical g_5, float sigma_3, AirlightHalf piece)
+AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_7, float a_8, float b_7)
 {
-    float parts = 1.0;
     bool local_14 = (bool)0;
-    float total = 0.0;
-    uint i_10 = 0u;
-    float hi = (float)0;
-    float dv_1 = (float)0;
-    float offset = (float)0;
-    bool inf = (bool)0;
+    bool local_15 = (bool)0;
 
-    if ((piece.dy <= 0.25)) {
-        local_14 = (piece.big_h > 0.0);
+    if (half_7.second) {
+        local_14 = (a_8 <= (b_7 * 0.25));
     } else {
         local_14 = false;
     }
-    bool _e15 = local_14;
-    if (_e15) {
-        if (piece.dv_infinite) {
-            parts = 8.0;
-        } else {
-            parts = clamp(ceil((piece.big_h * piece.dv)), 1.0, 8.0);
-        }
+    bool _e13 = local_14;
+    if (_e13) {
+        const AirlightPanel _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        const AirlightPanel airlightpanel_4 = _e14;
+        return airlightpanel_4;
     }
-    float _e25 = parts;
-    if ((_e25 <= 1.0)) {
-        const float _e28 = airlight_piece(s_4, g_5, sigma_3, piece);
-        return _e28;
+    if (half_7.second) {
+        local_15 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    } else {
+        local_15 = false;
     }
-    float _e29 = parts;
-    uint n_5 = naga_f2u32(_e29);
-    float _e32 = parts;
-    float step_ = (piece.dy / _e32);
+    bool _e26 = local_15;
+    if (_e26) {
+        const AirlightPanel _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        const AirlightPanel airlightpanel_5 = _e27;
+        return airlightpanel_5;
+    }
+    const AirlightPanel _e28 = airlight_v_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+    const AirlightPanel airlightpanel_6 = _e28;
+    return airlightpanel_6;
+}
+
+typedef float4 ret_Constructarray8_float4_[8];
+ret_Constructarray8_float4_ Constructarray8_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7) {
+    float4 ret[8] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7 };
+    return ret;
+}
+
+typedef float ret_Constructarray8_float_[8];
+ret_Constructarray8_float_ Constructarray8_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7) {
+    float ret[8] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7 };
+    return ret;
+}
+
+float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float sigma_5, AirlightHalf half_8, float lo, float hi, inout float f_max_4)
+{
+    float4 list[8] = Constructarray8_float4_((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    float mass_over_1[8] = Constructarray8_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint count_1 = 1u;
+    uint budget = 15u;
+    float total = 0.0;
+    uint round_ = 0u;
+    float errors = (float)0;
+    float mass_3 = (float)0;
+    uint worst = (uint)0;
+    uint i_14 = (uint)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+    uint i_15 = 0u;
+
+    if (!((hi > lo))) {
+        return 0.0;
+    }
+    const AirlightPanel _e38 = airlight_panel(s_6, g_8, sigma_5, half_8, lo, hi);
+    float _e39 = f_max_4;
+    f_max_4 = max(_e39, _e38.f_max);
+    list[0] = float4(lo, hi, _e38.value, _e38.error);
+    mass_over_1[0] = _e38.mass_over;
     uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     bool loop_init_32 = true;
     while(true) {
         if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
         loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         if (!loop_init_32) {
-            uint _e94 = i_10;
-            i_10 = (_e94 + 1u);
+            uint _e196 = round_;
+            round_ = (_e196 + 1u);
         }
         loop_init_32 = false;
-        uint _e38 = i_10;
-        if ((_e38 < 8u)) {
+        uint _e56 = round_;
+        if ((_e56 < AIRLIGHT_MAX_PANELS)) {
         } else {
             break;
         }
         {
-            uint _e41 = i_10;
-            if ((_e41 < n_5)) {
-                uint _e44 = i_10;
-                float lo_1 = (piece.y_lo + (step_ * float(_e44)));
-                hi = (lo_1 + step_);
-                uint _e50 = i_10;
-                if (((_e50 + 1u) == n_5)) {
-                    hi = piece.y_hi;
+            total = 0.0;
+            errors = 0.0;
+            mass_3 = 0.0;
+            worst = 0u;
+            i_14 = 0u;
+            uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+            bool loop_init_33 = true;
+            while(true) {
+                if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+                loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+                if (!loop_init_33) {
+                    uint _e102 = i_14;
+                    i_14 = (_e102 + 1u);
                 }
-                float _e55 = hi;
-                float dy_1 = (_e55 - lo_1);
-                dv_1 = dy_1;
-                offset = (lo_1 - piece.y_lo);
-                inf = false;
-                if (piece.second) {
-                    if ((lo_1 == 0.0)) {
-                        inf = true;
-                        dv_1 = 0.0;
-                    } else {
-                        float _e68 = hi;
-                        dv_1 = (dy_1 / (lo_1 * _e68));
+                loop_init_33 = false;
+                uint _e68 = i_14;
+                if ((_e68 < AIRLIGHT_PANEL_LIST)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e71 = i_14;
+                    uint _e72 = count_1;
+                    if ((_e71 < _e72)) {
+                        float _e74 = total;
+                        uint _e75 = i_14;
+                        float _e78 = list[min(uint(_e75), 7u)].z;
+                        total = (_e74 + _e78);
+                        float _e80 = errors;
+                        uint _e81 = i_14;
+                        float _e84 = list[min(uint(_e81), 7u)].w;
+                        errors = (_e80 + _e84);
+                        float _e86 = mass_3;
+                        uint _e87 = i_14;
+                        float _e89 = mass_over_1[min(uint(_e87), 7u)];
+                        mass_3 = (_e86 + _e89);
+                        uint _e91 = i_14;
+                        float _e94 = list[min(uint(_e91), 7u)].w;
+                        uint _e95 = worst;
+                        float _e98 = list[min(uint(_e95), 7u)].w;
+                        if ((_e94 > _e98)) {
+                            uint _e100 = i_14;
+                            worst = _e100;
+                        }
                     }
-                    float _e72 = hi;
-                    float _e74 = hi;
-                    offset = ((piece.y_hi - _e72) / (_e74 * piece.y_hi));
                 }
-                float _e80 = hi;
-                float _e81 = dv_1;
-                bool _e82 = inf;
-                AirlightHalf part = ConstructAirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
-                float _e84 = total;
-                float _e87 = offset;
-                const float _e90 = airlight_piece(s_4, g_5, sigma_3, part);
-                total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
+            }
+            float _e105 = total;
+            float _e108 = f_max_4;
+            float _e110 = mass_3;
+            float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e105), ((AIRLIGHT_PANEL_FLOOR * _e108) * _e110)));
+            float _e114 = errors;
+            if (!((_e114 <= goal))) {
+                uint _e119 = worst;
+                float _e122 = list[min(uint(_e119), 7u)].w;
+                local_16 = !((_e122 > 0.0));
+            } else {
+                local_16 = true;
+            }
+            bool _e127 = local_16;
+            if (!(_e127)) {
+                uint _e131 = budget;
+                local_17 = (_e131 < 2u);
+            } else {
+                local_17 = true;
+            }
+            bool _e135 = local_17;
+            if (!(_e135)) {
+                uint _e139 = count_1;
+                local_18 = (_e139 == AIRLIGHT_PANEL_LIST);
+            } else {
+                local_18 = true;
+            }
+            bool _e143 = local_18;
+            if (_e143) {
+                float _e144 = total;
+                return _e144;
+            }
+            uint _e145 = worst;
+            float a_17 = list[min(uint(_e145), 7u)].x;
+            uint _e149 = worst;
+            float b_14 = list[min(uint(_e149), 7u)].y;
+            if (!(((b_14 - a_17) > (AIRLIGHT_FLT_EPS * b_14)))) {
+                uint _e158 = worst;
+                list[min(uint(_e158), 7u)].w = 0.0;
+            } else {
+                float mid = (a_17 + ((b_14 - a_17) * 0.5));
+                const AirlightPanel _e166 = airlight_panel(s_6, g_8, sigma_5, half_8, a_17, mid);
+                const AirlightPanel _e167 = airlight_panel(s_6, g_8, sigma_5, half_8, mid, b_14);
+                float _e168 = f_max_4;
+                f_max_4 = max(_e168, max(_e166.f_max, _e167.f_max));
+                uint _e173 = worst;
+                list[min(uint(_e173), 7u)] = float4(a_17, mid, _e166.value, _e166.error);
+                uint _e178 = worst;
+                mass_over_1[min(uint(_e178), 7u)] = _e166.mass_over;
+                uint _e181 = count_1;
+                list[min(uint(_e181), 7u)] = float4(mid, b_14, _e167.value, _e167.error);
+                uint _e186 = count_1;
+                mass_over_1[min(uint(_e186), 7u)] = _e167.mass_over;
+                uint _e189 = count_1;
+                count_1 = (_e189 + 1u);
+                uint _e192 = budget;
+                budget = (_e192 - 2u);
             }
         }
     }
-    float _e96 = total;
-    return _e96;
+    total = 0.0;
+    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
+    bool loop_init_34 = true;
+    while(true) {
+        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_34) {
+            uint _e214 = i_15;
+            i_15 = (_e214 + 1u);
+        }
+        loop_init_34 = false;
+        uint _e201 = i_15;
+        if ((_e201 < AIRLIGHT_PANEL_LIST)) {
+        } else {
+            break;
+        }
+        {
+            uint _e204 = i_15;
+            uint _e205 = count_1;
+            if ((_e204 < _e205)) {
+                float _e207 = total;
+                uint _e208 = i_15;
+                float _e211 = list[min(uint(_e208), 7u)].z;
+                total = (_e207 + _e211);
+            }
+        }
+    }
+    float _e216 = total;
+    return _e216;
 }
 
-float2 airlight_crossings(float sigma_4, float d_el, float d_c, float k_12)
+float airlight_bounded(float a_9)
+{
+    const float _e1 = airlight_hypot_one(a_9);
+    return (1.0 / (a_9 + _e1));
+}
+
+float2 airlight_crossings(float sigma_6, float d_el, float d_c, float k_11)
 {
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_1 = -1.0;
 
-    float a_9 = (k_12 + (sigma_4 * d_el));
-    float b_7 = -((d_c + d_c));
-    float c_6 = (k_12 - (sigma_4 * d_el));
-    float disc_1 = ((b_7 * b_7) - ((4.0 * a_9) * c_6));
+    float a_18 = (k_11 + (sigma_6 * d_el));
+    float b_15 = -((d_c + d_c));
+    float c_8 = (k_11 - (sigma_6 * d_el));
+    float disc_1 = ((b_15 * b_15) - ((4.0 * a_18) * c_8));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_7 < 0.0)) {
+    if ((b_15 < 0.0)) {
         sb = -1.0;
     }
     float _e26 = sb;
-    float q_1 = (-0.5 * (b_7 + (_e26 * sqrt(disc_1))));
-    if ((q_1 != 0.0)) {
-        r1_ = (c_6 / q_1);
+    float q_2 = (-0.5 * (b_15 + (_e26 * sqrt(disc_1))));
+    if ((q_2 != 0.0)) {
+        r1_ = (c_8 / q_2);
     }
-    if ((a_9 != 0.0)) {
-        r2_1 = (q_1 / a_9);
+    if ((a_18 != 0.0)) {
+        r2_1 = (q_2 / a_18);
     }
     float _e42 = r1_;
     float _e43 = r2_1;
@@ -1966,282 +2197,249 @@ ret_Constructarray4_float_ Constructarray4_float_(float arg0, float arg1, float 
     return ret;
 }
 
-float airlight_half(AirlightScene s_5, AirlightCanonical g_6, float sigma_5, AirlightHalf half_6, bool isotropic)
+float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, AirlightHalf half_9, bool isotropic, inout float f_max_5)
 {
     float cuts[4] = Constructarray4_float_(2.0, 2.0, 2.0, 2.0);
     float k_in = (float)0;
     float k_out = (float)0;
-    uint i_11 = 0u;
-    bool local_15 = (bool)0;
-    uint i_12 = 0u;
-    uint j_7 = (uint)0;
+    uint i_16 = 0u;
+    bool local_19 = (bool)0;
+    uint i_17 = 0u;
+    uint j_5 = (uint)0;
     float total_1 = 0.0;
-    float lo = (float)0;
-    uint i_13 = 0u;
+    float lo_1 = (float)0;
+    uint i_18 = 0u;
     float hi_1 = (float)0;
-    bool local_16 = (bool)0;
-    float dv_2 = (float)0;
-    float offset_1 = (float)0;
-    bool inf_1 = (bool)0;
-    bool local_17 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     if (isotropic) {
-        const float _e6[6] = airlight_moments(half_6, 1u);
-        const float _e12 = airlight_integrand(s_5, g_6, sigma_5, (half_6.y_lo + (half_6.dy * 0.5)));
-        return (_e12 * _e6[0]);
+        const float _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5)));
+        const float _e12 = airlight_moment_zero(half_9);
+        return (_e11 * _e12);
     }
-    if ((s_5.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_5.light_param_a;
-        k_out = s_5.light_param_b;
-        float _e28 = k_in;
-        float _e29 = k_out;
-        float width_1 = (_e28 - _e29);
+    if ((s_7.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_7.light_param_a;
+        k_out = s_7.light_param_b;
+        float _e27 = k_in;
+        float _e28 = k_out;
+        float width_1 = (_e27 - _e28);
         if ((width_1 <= AIRLIGHT_FLT_EPS)) {
-            float _e33 = k_out;
-            k_in = (_e33 + (width_1 * 0.5));
-            float _e37 = k_in;
-            k_out = _e37;
+            float _e32 = k_out;
+            k_in = (_e32 + (width_1 * 0.5));
+            float _e36 = k_in;
+            k_out = _e36;
         }
-        float _e40 = k_in;
-        const float2 _e41 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e40);
-        float _e44 = k_out;
-        const float2 _e45 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e44);
-        cuts = Constructarray4_float_(_e41.x, _e41.y, _e45.x, _e45.y);
-        uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
-        bool loop_init_33 = true;
+        float _e39 = k_in;
+        const float2 _e40 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e39);
+        float _e43 = k_out;
+        const float2 _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
+        cuts = Constructarray4_float_(_e40.x, _e40.y, _e44.x, _e44.y);
+        uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+        bool loop_init_35 = true;
         while(true) {
-            if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-            loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-            if (!loop_init_33) {
-                uint _e75 = i_11;
-                i_11 = (_e75 + 1u);
+            if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+            if (!loop_init_35) {
+                uint _e74 = i_16;
+                i_16 = (_e74 + 1u);
             }
-            loop_init_33 = false;
-            uint _e53 = i_11;
-            if ((_e53 < 4u)) {
+            loop_init_35 = false;
+            uint _e52 = i_16;
+            if ((_e52 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e56 = i_11;
-                float _e58 = cuts[min(uint(_e56), 3u)];
-                if ((_e58 > half_6.y_lo)) {
-                    uint _e63 = i_11;
-                    float _e65 = cuts[min(uint(_e63), 3u)];
-                    local_15 = (_e65 < half_6.y_hi);
+                uint _e55 = i_16;
+                float _e57 = cuts[min(uint(_e55), 3u)];
+                if ((_e57 > half_9.y_lo)) {
+                    uint _e62 = i_16;
+                    float _e64 = cuts[min(uint(_e62), 3u)];
+                    local_19 = (_e64 < half_9.y_hi);
                 } else {
-                    local_15 = false;
+                    local_19 = false;
                 }
-                bool _e69 = local_15;
-                if (!(_e69)) {
-                    uint _e71 = i_11;
-                    cuts[min(uint(_e71), 3u)] = 2.0;
+                bool _e68 = local_19;
+                if (!(_e68)) {
+                    uint _e70 = i_16;
+                    cuts[min(uint(_e70), 3u)] = 2.0;
                 }
             }
         }
-        uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
-        bool loop_init_34 = true;
+        uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+        bool loop_init_36 = true;
         while(true) {
-            if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
-            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-            if (!loop_init_34) {
-                uint _e116 = i_12;
-                i_12 = (_e116 + 1u);
+            if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+            if (!loop_init_36) {
+                uint _e115 = i_17;
+                i_17 = (_e115 + 1u);
             }
-            loop_init_34 = false;
-            uint _e79 = i_12;
-            if ((_e79 < 3u)) {
+            loop_init_36 = false;
+            uint _e78 = i_17;
+            if ((_e78 < 3u)) {
             } else {
                 break;
             }
             {
-                j_7 = 0u;
-                uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-                bool loop_init_35 = true;
+                j_5 = 0u;
+                uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+                bool loop_init_37 = true;
                 while(true) {
-                    if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
-                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-                    if (!loop_init_35) {
-                        uint _e113 = j_7;
-                        j_7 = (_e113 + 1u);
+                    if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+                    loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                    if (!loop_init_37) {
+                        uint _e112 = j_5;
+                        j_5 = (_e112 + 1u);
                     }
-                    loop_init_35 = false;
-                    uint _e84 = j_7;
-                    uint _e86 = i_12;
-                    if ((_e84 < (3u - _e86))) {
+                    loop_init_37 = false;
+                    uint _e83 = j_5;
+                    uint _e85 = i_17;
+                    if ((_e83 < (3u - _e85))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e89 = j_7;
-                        float _e91 = cuts[min(uint(_e89), 3u)];
-                        uint _e92 = j_7;
-                        float _e96 = cuts[min(uint((_e92 + 1u)), 3u)];
-                        if ((_e91 > _e96)) {
-                            uint _e98 = j_7;
-                            float t_7 = cuts[min(uint(_e98), 3u)];
-                            uint _e101 = j_7;
-                            uint _e103 = j_7;
-                            float _e107 = cuts[min(uint((_e103 + 1u)), 3u)];
-                            cuts[min(uint(_e101), 3u)] = _e107;
-                            uint _e108 = j_7;
-                            cuts[min(uint((_e108 + 1u)), 3u)] = t_7;
+                        uint _e88 = j_5;
+                        float _e90 = cuts[min(uint(_e88), 3u)];
+                        uint _e91 = j_5;
+                        float _e95 = cuts[min(uint((_e91 + 1u)), 3u)];
+                        if ((_e90 > _e95)) {
+                            uint _e97 = j_5;
+                            float t_5 = cuts[min(uint(_e97), 3u)];
+                            uint _e100 = j_5;
+                            uint _e102 = j_5;
+                            float _e106 = cuts[min(uint((_e102 + 1u)), 3u)];
+                            cuts[min(uint(_e100), 3u)] = _e106;
+                            uint _e107 = j_5;
+                            cuts[min(uint((_e107 + 1u)), 3u)] = t_5;
                         }
                     }
                 }
             }
         }
     }
-    float _e119 = cuts[0];
-    if ((_e119 >= 2.0)) {
-        const float _e122 = airlight_piece(s_5, g_6, sigma_5, half_6);
-        return _e122;
-    }
-    lo = half_6.y_lo;
-    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-    bool loop_init_36 = true;
+    lo_1 = half_9.y_lo;
+    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+    bool loop_init_38 = true;
     while(true) {
-        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
-        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-        if (!loop_init_36) {
-            uint _e209 = i_13;
-            i_13 = (_e209 + 1u);
+        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_38) {
+            uint _e165 = i_18;
+            i_18 = (_e165 + 1u);
         }
-        loop_init_36 = false;
-        uint _e129 = i_13;
-        if ((_e129 < 5u)) {
+        loop_init_38 = false;
+        uint _e123 = i_18;
+        if ((_e123 < 5u)) {
         } else {
             break;
         }
         {
-            hi_1 = half_6.y_hi;
-            uint _e134 = i_13;
-            if ((_e134 < 4u)) {
-                uint _e139 = i_13;
-                float _e141 = cuts[min(uint(_e139), 3u)];
-                local_16 = (_e141 < 2.0);
+            hi_1 = half_9.y_hi;
+            uint _e128 = i_18;
+            if ((_e128 < 4u)) {
+                uint _e133 = i_18;
+                float _e135 = cuts[min(uint(_e133), 3u)];
+                local_20 = (_e135 < 2.0);
             } else {
-                local_16 = false;
+                local_20 = false;
             }
-            bool _e145 = local_16;
-            if (_e145) {
-                uint _e146 = i_13;
-                float _e148 = cuts[min(uint(_e146), 3u)];
-                hi_1 = _e148;
+            bool _e139 = local_20;
+            if (_e139) {
+                uint _e140 = i_18;
+                float _e142 = cuts[min(uint(_e140), 3u)];
+                hi_1 = _e142;
             }
-            float _e149 = hi_1;
-            float _e150 = lo;
-            if ((_e149 > _e150)) {
-                float _e152 = hi_1;
-                float _e153 = lo;
-                float dy_2 = (_e152 - _e153);
-                dv_2 = dy_2;
-                float _e156 = lo;
-                offset_1 = (_e156 - half_6.y_lo);
-                inf_1 = false;
-                if (half_6.second) {
-                    float _e163 = lo;
-                    if ((_e163 == 0.0)) {
-                        inf_1 = true;
-                        dv_2 = 0.0;
-                    } else {
-                        float _e168 = lo;
-                        float _e169 = hi_1;
-                        dv_2 = (dy_2 / (_e168 * _e169));
-                    }
-                    float _e173 = hi_1;
-                    float _e175 = hi_1;
-                    offset_1 = ((half_6.y_hi - _e173) / (_e175 * half_6.y_hi));
-                }
-                float _e181 = lo;
-                float _e182 = hi_1;
-                float _e183 = dv_2;
-                bool _e184 = inf_1;
-                AirlightHalf piece_1 = ConstructAirlightHalf(half_6.second, half_6.big_h, _e181, _e182, dy_2, _e183, _e184);
-                float _e186 = total_1;
-                float _e189 = offset_1;
-                const float _e192 = airlight_subdivided(s_5, g_6, sigma_5, piece_1);
-                total_1 = (_e186 + (exp((-(half_6.big_h) * _e189)) * _e192));
-                float _e195 = hi_1;
-                lo = _e195;
+            float _e143 = hi_1;
+            float _e144 = lo_1;
+            if ((_e143 > _e144)) {
+                float _e146 = total_1;
+                float _e147 = lo_1;
+                float _e148 = hi_1;
+                const float _e149 = airlight_integrate_piece(s_7, g_9, sigma_7, half_9, _e147, _e148, f_max_5);
+                total_1 = (_e146 + _e149);
+                float _e151 = hi_1;
+                lo_1 = _e151;
             }
-            uint _e196 = i_13;
-            if ((_e196 < 4u)) {
-                uint _e201 = i_13;
-                float _e203 = cuts[min(uint(_e201), 3u)];
-                local_17 = (_e203 >= 2.0);
+            uint _e152 = i_18;
+            if ((_e152 < 4u)) {
+                uint _e157 = i_18;
+                float _e159 = cuts[min(uint(_e157), 3u)];
+                local_21 = (_e159 >= 2.0);
             } else {
-                local_17 = false;
+                local_21 = false;
             }
-            bool _e207 = local_17;
-            if (_e207) {
+            bool _e163 = local_21;
+            if (_e163) {
                 break;
             }
         }
     }
-    float _e211 = total_1;
-    return _e211;
+    float _e167 = total_1;
+    return _e167;
 }
 
-float airlight_weighted(float sigma_s, float intensity, float h_1, float x_9, float j_8)
+float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, float j_6)
 {
-    float plain = (((((2.0 * sigma_s) * intensity) / h_1) * exp(-(x_9))) * j_8);
-    const bool _e13 = airlight_is_finite(plain);
+    float plain_1 = (((((2.0 * sigma_s) * intensity) / h_1) * exp(-(x_7))) * j_6);
+    const bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
-        return plain;
+        return plain_1;
     }
-    if (!((abs(j_8) > 0.0))) {
+    if (!((abs(j_6) > 0.0))) {
         return 0.0;
     }
-    return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
+    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-float airlight_on_line(AirlightScene s_6, AirlightCanonical g_7)
+float airlight_on_line(AirlightScene s_8, AirlightCanonical g_10)
 {
-    bool local_18 = (bool)0;
+    bool local_22 = (bool)0;
     float span = (float)0;
     float e2_[16] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail_1 = 0.0;
 
-    if (!(g_7.t_hi_infinite)) {
-        local_18 = (g_7.x_h > g_7.t_hi);
+    if (!(g_10.t_hi_infinite)) {
+        local_22 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_18 = false;
+        local_22 = false;
     }
-    bool _e10 = local_18;
+    bool _e10 = local_22;
     if (_e10) {
-        const float _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_7.d_el));
-        const float _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1.0);
+        const float _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
+        const float _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1.0);
         float f = (_e16 * _e22);
-        float r0_ = (g_7.x_h - g_7.t_lo);
-        float r1_1 = (g_7.x_h - g_7.t_hi);
-        const float _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * r0_), (f * (((g_7.t_hi - g_7.t_lo) / r0_) / r1_1)));
+        float r0_ = (g_10.x_h - g_10.t_lo);
+        float r1_1 = (g_10.x_h - g_10.t_hi);
+        const float _e41 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, (s_8.sigma_t * r0_), (f * (((g_10.t_hi - g_10.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    const float _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_7.d_el);
-    const float _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1.0);
+    const float _e46 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, g_10.d_el);
+    const float _e52 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, -1.0);
     float f_1 = (_e46 * _e52);
-    float s0_ = (g_7.t_lo - g_7.x_h);
-    float s1_ = (g_7.t_hi - g_7.x_h);
-    if ((s_6.sigma_t == 0.0)) {
+    float s0_ = (g_10.t_lo - g_10.x_h);
+    float s1_ = (g_10.t_hi - g_10.x_h);
+    if ((s_8.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_7.t_hi_infinite)) {
+        if (!(g_10.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        const float _e77 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, 0.0, (f_1 * _e75));
+        const float _e77 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, 0.0, (f_1 * _e75));
         return _e77;
     }
-    float two_st = (s_6.sigma_t + s_6.sigma_t);
+    float two_st = (s_8.sigma_t + s_8.sigma_t);
     const float _e81[16] = airlight_zero_scratch();
     e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, e2_);
     float _e91 = e2_[1];
-    const float _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if (!(g_7.t_hi_infinite)) {
+    const float _e94 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, (s_8.sigma_t * s0_), ((f_1 * _e91) / s0_));
+    if (!(g_10.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
         float _e111 = e2_[1];
-        const float _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2.0, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        const float _e114 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, ((s_8.sigma_t * (s1_ - s0_)) + (s_8.sigma_t * s1_)), ((f_1 * _e111) / s1_));
         tail_1 = _e114;
     }
     const bool _e115 = airlight_is_finite(_e94);
@@ -2252,11 +2450,11 @@ float airlight_on_line(AirlightScene s_6, AirlightCanonical g_7)
     return (_e94 - _e117);
 }
 
-float airlight_optical(float big_h, float dv_3, bool infinite)
+float airlight_optical(float big_h, float dv_1, bool infinite)
 {
     bool negligible = (bool)0;
 
-    negligible = ((big_h * dv_3) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h * dv_1) < AIRLIGHT_FLT_EPS);
     if (infinite) {
         negligible = (big_h < 1.4210855e-14);
     }
@@ -2271,63 +2469,76 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
     return ret;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonical g_8)
+AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
+    AirlightHalf ret = (AirlightHalf)0;
+    ret.second = arg0;
+    ret.big_h = arg1;
+    ret.y_lo = arg2;
+    ret.y_hi = arg3;
+    ret.dy = arg4;
+    ret.dv = arg5;
+    ret.dv_infinite = arg6;
+    return ret;
+}
+
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonical g_11)
 {
-    bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
-    bool local_22 = (bool)0;
-    float gap = 0.0;
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
+    float gap = 0.0;
     bool local_27 = (bool)0;
     bool local_28 = (bool)0;
     bool local_29 = (bool)0;
-    float total_2 = 0.0;
-    float t_end = (float)0;
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
-    float y_lo = 0.0;
-    float dv_4 = 0.0;
-    float dy = (float)0;
-    bool infinite_1 = true;
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
+    float total_2 = 0.0;
+    float f_max_6 = 0.0;
+    float t_end = (float)0;
+    bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
+    float y_lo = 0.0;
+    float dv_2 = 0.0;
+    float dy = (float)0;
+    bool infinite_1 = true;
+    bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
 
-    float t0_ = g_8.t_lo;
-    float t1_ = g_8.t_hi;
-    if (!(g_8.t_hi_infinite)) {
-        local_19 = (t1_ > t0_);
+    float t0_ = g_11.t_lo;
+    float t1_ = g_11.t_hi;
+    if (!(g_11.t_hi_infinite)) {
+        local_23 = (t1_ > t0_);
     } else {
-        local_19 = true;
+        local_23 = true;
     }
-    bool _e10 = local_19;
+    bool _e10 = local_23;
     if (!(!(_e10))) {
-        local_20 = ((s_7.sigma_s * s_7.intensity) == 0.0);
+        local_24 = ((s_9.sigma_s * s_9.intensity) == 0.0);
     } else {
-        local_20 = true;
+        local_24 = true;
     }
-    bool _e21 = local_20;
+    bool _e21 = local_24;
     if (_e21) {
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
     }
-    float h_2 = g_8.h;
-    float x_h = g_8.x_h;
+    float h_2 = g_11.h;
+    float x_h = g_11.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_8.t_hi_infinite)) {
-            local_22 = (x_h <= t1_);
+        if (!(g_11.t_hi_infinite)) {
+            local_26 = (x_h <= t1_);
         } else {
-            local_22 = true;
+            local_26 = true;
         }
-        bool _e36 = local_22;
-        local_21 = _e36;
+        bool _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_21 = false;
+        local_25 = false;
     }
-    bool inside = local_21;
+    bool inside = local_25;
     if ((x_h < t0_)) {
         gap = (t0_ - x_h);
     } else {
@@ -2337,13 +2548,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_23 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_27 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_23 = false;
+        local_27 = false;
     }
-    bool _e55 = local_23;
+    bool _e55 = local_27;
     if (_e55) {
-        const float _e56 = airlight_on_line(s_7, g_8);
+        const float _e56 = airlight_on_line(s_9, g_11);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
@@ -2351,199 +2562,195 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_7, AirlightCanonica
         const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_2;
     }
-    float big_h_2 = (s_7.sigma_t * h_2);
-    if (!((s_7.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_25 = (s_7.light_param_a == 0.0);
+    float big_h_3 = (s_9.sigma_t * h_2);
+    if (!((s_9.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_29 = (s_9.light_param_a == 0.0);
         } else {
-            local_25 = false;
+            local_29 = false;
         }
-        bool _e83 = local_25;
-        local_24 = _e83;
+        bool _e83 = local_29;
+        local_28 = _e83;
     } else {
-        local_24 = true;
+        local_28 = true;
     }
-    bool _e85 = local_24;
+    bool _e85 = local_28;
     if (_e85) {
-        if (!((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_28 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_32 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_28 = true;
+                local_32 = true;
             }
-            bool _e104 = local_28;
+            bool _e104 = local_32;
             if (_e104) {
-                local_29 = (s_7.phase_param_a == 0.0);
-            } else {
-                local_29 = false;
-            }
-            bool _e111 = local_29;
-            local_27 = _e111;
-        } else {
-            local_27 = true;
-        }
-        bool _e113 = local_27;
-        local_26 = _e113;
-    } else {
-        local_26 = false;
-    }
-    bool isotropic_1 = local_26;
-    if ((t0_ < x_h)) {
-        float a_s = ((x_h - t0_) / h_2);
-        t_end = x_h;
-        if (!(g_8.t_hi_infinite)) {
-            local_30 = (t1_ < x_h);
-        } else {
-            local_30 = false;
-        }
-        bool _e128 = local_30;
-        if (_e128) {
-            t_end = t1_;
-        }
-        float _e129 = t_end;
-        float a_e = ((x_h - _e129) / h_2);
-        const float _e132 = airlight_hypot_one(a_s);
-        const float _e133 = airlight_hypot_one(a_e);
-        const float _e134 = airlight_bounded(a_s);
-        const float _e135 = airlight_bounded(a_e);
-        float _e136 = t_end;
-        float dy_3 = (((((_e136 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
-        const float _e149 = airlight_optical(big_h_2, dy_3, false);
-        AirlightHalf half_7 = ConstructAirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
-        const float _e153 = airlight_half(s_7, g_8, -1.0, half_7, isotropic_1);
-        float _e154 = total_2;
-        const float _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
-        total_2 = (_e154 + _e158);
-    }
-    if (!(g_8.t_hi_infinite)) {
-        local_31 = (t1_ > x_h);
-    } else {
-        local_31 = true;
-    }
-    bool _e166 = local_31;
-    if (_e166) {
-        float t_start = max(t0_, x_h);
-        float a_s_1 = ((t_start - x_h) / h_2);
-        const float _e170 = airlight_hypot_one(a_s_1);
-        const float _e171 = airlight_bounded(a_s_1);
-        dy = _e171;
-        float a_e_1 = ((t1_ - x_h) / h_2);
-        if (!(g_8.t_hi_infinite)) {
-            const bool _e185 = airlight_is_finite(a_e_1);
-            local_32 = _e185;
-        } else {
-            local_32 = false;
-        }
-        bool _e187 = local_32;
-        if (_e187) {
-            const float _e188 = airlight_bounded(a_e_1);
-            const float _e192 = airlight_hypot_one(a_e_1);
-            float dv_end = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e170 + _e192))));
-            if ((_e188 > 0.0)) {
-                const bool _e202 = airlight_is_finite(dv_end);
-                local_33 = _e202;
+                local_33 = (s_9.phase_param_a == 0.0);
             } else {
                 local_33 = false;
             }
-            bool _e204 = local_33;
-            if (_e204) {
-                y_lo = _e188;
-                dv_4 = dv_end;
-                float _e205 = dv_4;
-                float _e206 = y_lo;
-                dy = ((_e205 * _e206) * _e171);
+            bool _e111 = local_33;
+            local_31 = _e111;
+        } else {
+            local_31 = true;
+        }
+        bool _e113 = local_31;
+        local_30 = _e113;
+    } else {
+        local_30 = false;
+    }
+    bool isotropic_1 = local_30;
+    if ((t0_ < x_h)) {
+        float a_s = ((x_h - t0_) / h_2);
+        t_end = x_h;
+        if (!(g_11.t_hi_infinite)) {
+            local_34 = (t1_ < x_h);
+        } else {
+            local_34 = false;
+        }
+        bool _e130 = local_34;
+        if (_e130) {
+            t_end = t1_;
+        }
+        float _e131 = t_end;
+        float a_e = ((x_h - _e131) / h_2);
+        const float _e134 = airlight_hypot_one(a_s);
+        const float _e135 = airlight_hypot_one(a_e);
+        const float _e136 = airlight_bounded(a_s);
+        const float _e137 = airlight_bounded(a_e);
+        float _e138 = t_end;
+        float dy_1 = (((((_e138 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e134 + _e135)))) * _e136) * _e137);
+        const float _e151 = airlight_optical(big_h_3, dy_1, false);
+        AirlightHalf half_10 = ConstructAirlightHalf(false, _e151, _e136, _e137, dy_1, dy_1, false);
+        const float _e155 = airlight_half(s_9, g_11, -1.0, half_10, isotropic_1, f_max_6);
+        float _e156 = total_2;
+        const float _e160 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_3 * _e134), _e155);
+        total_2 = (_e156 + _e160);
+    }
+    if (!(g_11.t_hi_infinite)) {
+        local_35 = (t1_ > x_h);
+    } else {
+        local_35 = true;
+    }
+    bool _e168 = local_35;
+    if (_e168) {
+        float t_start = max(t0_, x_h);
+        float a_s_1 = ((t_start - x_h) / h_2);
+        const float _e172 = airlight_hypot_one(a_s_1);
+        const float _e173 = airlight_bounded(a_s_1);
+        dy = _e173;
+        float a_e_1 = ((t1_ - x_h) / h_2);
+        if (!(g_11.t_hi_infinite)) {
+            const bool _e187 = airlight_is_finite(a_e_1);
+            local_36 = _e187;
+        } else {
+            local_36 = false;
+        }
+        bool _e189 = local_36;
+        if (_e189) {
+            const float _e190 = airlight_bounded(a_e_1);
+            const float _e194 = airlight_hypot_one(a_e_1);
+            float dv_end = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e172 + _e194))));
+            if ((_e190 > 0.0)) {
+                const bool _e204 = airlight_is_finite(dv_end);
+                local_37 = _e204;
+            } else {
+                local_37 = false;
+            }
+            bool _e206 = local_37;
+            if (_e206) {
+                y_lo = _e190;
+                dv_2 = dv_end;
+                float _e207 = dv_2;
+                float _e208 = y_lo;
+                dy = ((_e207 * _e208) * _e173);
                 infinite_1 = false;
             }
         }
-        float _e211 = dv_4;
-        bool _e212 = infinite_1;
-        const float _e213 = airlight_optical(big_h_2, _e211, _e212);
-        float _e214 = y_lo;
-        float _e215 = dy;
-        float _e216 = dv_4;
-        bool _e217 = infinite_1;
-        AirlightHalf half_8 = ConstructAirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
-        const float _e220 = airlight_half(s_7, g_8, 1.0, half_8, isotropic_1);
-        float _e221 = total_2;
-        const float _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
-        total_2 = (_e221 + _e229);
+        float _e213 = dv_2;
+        bool _e214 = infinite_1;
+        const float _e215 = airlight_optical(big_h_3, _e213, _e214);
+        float _e216 = y_lo;
+        float _e217 = dy;
+        float _e218 = dv_2;
+        bool _e219 = infinite_1;
+        AirlightHalf half_11 = ConstructAirlightHalf(true, _e215, _e216, _e173, _e217, _e218, _e219);
+        const float _e222 = airlight_half(s_9, g_11, 1.0, half_11, isotropic_1, f_max_6);
+        float _e223 = total_2;
+        const float _e231 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, ((s_9.sigma_t * (t_start - t0_)) + (big_h_3 * _e172)), _e222);
+        total_2 = (_e223 + _e231);
     }
-    float _e231 = total_2;
-    const AirlightResult airlightresult_3 = ConstructAirlightResult(max(_e231, 0.0), AIRLIGHT_STATUS_OK);
+    float _e233 = total_2;
+    const AirlightResult airlightresult_3 = ConstructAirlightResult(max(_e233, 0.0), AIRLIGHT_STATUS_OK);
     return airlightresult_3;
 }
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_34 = (bool)0;
-    bool local_35 = (bool)0;
+    bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_34 = _e6;
+        local_38 = _e6;
     } else {
-        local_34 = false;
+        local_38 = false;
     }
-    bool _e8 = local_34;
+    bool _e8 = local_38;
     if (_e8) {
         const bool _e12 = airlight_is_finite(v.z);
-        local_35 = _e12;
+        local_39 = _e12;
     } else {
-        local_35 = false;
+        local_39 = false;
     }
-    bool _e14 = local_35;
+    bool _e14 = local_39;
     return _e14;
 }
 
 float airlight_safe_length(float3 v_1)
 {
-    float m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_5 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return 0.0;
     }
-    return (m_5 * length((v_1 / (m_5).xxx)));
+    return (m_6 * length((v_1 / (m_6).xxx)));
 }
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_36 = (bool)0;
+    bool local_40 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_36 = _e6;
+        local_40 = _e6;
     } else {
-        local_36 = false;
+        local_40 = false;
     }
-    bool _e8 = local_36;
+    bool _e8 = local_40;
     return _e8;
 }
 
 float3 airlight_normalize(float3 v_3)
 {
-    float m_6 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u = (v_3 / (m_6).xxx);
-    return (u / (length(u)).xxx);
+    float m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    float3 u_1 = (v_3 / (m_7).xxx);
+    return (u_1 / (length(u_1)).xxx);
 }
 
-bool airlight_valid(AirlightScene s_8)
+bool airlight_valid(AirlightScene s_10)
 {
-    bool local_37 = (bool)0;
-    bool local_38 = (bool)0;
-    bool local_39 = (bool)0;
-    bool local_40 = (bool)0;
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
     bool local_43 = (bool)0;
     bool local_44 = (bool)0;
     bool local_45 = (bool)0;
     bool local_46 = (bool)0;
-    bool ok = (bool)0;
     bool local_47 = (bool)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
     bool local_50 = (bool)0;
+    bool ok = (bool)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
     bool local_53 = (bool)0;
@@ -2557,172 +2764,176 @@ bool airlight_valid(AirlightScene s_8)
     bool local_61 = (bool)0;
     bool local_62 = (bool)0;
     bool local_63 = (bool)0;
+    bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
+    bool local_66 = (bool)0;
+    bool local_67 = (bool)0;
 
-    const bool _e2 = airlight_vec_finite(s_8.origin);
+    const bool _e2 = airlight_vec_finite(s_10.origin);
     if (_e2) {
-        const bool _e6 = airlight_vec_finite(s_8.dir);
-        local_37 = _e6;
-    } else {
-        local_37 = false;
-    }
-    bool _e8 = local_37;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_8.dir);
-        local_38 = _e12;
-    } else {
-        local_38 = false;
-    }
-    bool _e14 = local_38;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_8.t_min);
-        local_39 = _e18;
-    } else {
-        local_39 = false;
-    }
-    bool _e20 = local_39;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_8.light_position);
-        local_40 = _e24;
-    } else {
-        local_40 = false;
-    }
-    bool _e26 = local_40;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_8.intensity);
-        local_41 = _e30;
+        const bool _e6 = airlight_vec_finite(s_10.dir);
+        local_41 = _e6;
     } else {
         local_41 = false;
     }
-    bool _e32 = local_41;
-    if (_e32) {
-        local_42 = (s_8.intensity >= 0.0);
+    bool _e8 = local_41;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_10.dir);
+        local_42 = _e12;
     } else {
         local_42 = false;
     }
-    bool _e39 = local_42;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_8.sigma_s);
-        local_43 = _e43;
+    bool _e14 = local_42;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_10.t_min);
+        local_43 = _e18;
     } else {
         local_43 = false;
     }
-    bool _e45 = local_43;
-    if (_e45) {
-        local_44 = (s_8.sigma_s >= 0.0);
+    bool _e20 = local_43;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_10.light_position);
+        local_44 = _e24;
     } else {
         local_44 = false;
     }
-    bool _e52 = local_44;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_8.sigma_t);
-        local_45 = _e56;
+    bool _e26 = local_44;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_10.intensity);
+        local_45 = _e30;
     } else {
         local_45 = false;
     }
-    bool _e58 = local_45;
-    if (_e58) {
-        local_46 = (s_8.sigma_t >= 0.0);
+    bool _e32 = local_45;
+    if (_e32) {
+        local_46 = (s_10.intensity >= 0.0);
     } else {
         local_46 = false;
     }
-    bool _e65 = local_46;
+    bool _e39 = local_46;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_10.sigma_s);
+        local_47 = _e43;
+    } else {
+        local_47 = false;
+    }
+    bool _e45 = local_47;
+    if (_e45) {
+        local_48 = (s_10.sigma_s >= 0.0);
+    } else {
+        local_48 = false;
+    }
+    bool _e52 = local_48;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_10.sigma_t);
+        local_49 = _e56;
+    } else {
+        local_49 = false;
+    }
+    bool _e58 = local_49;
+    if (_e58) {
+        local_50 = (s_10.sigma_t >= 0.0);
+    } else {
+        local_50 = false;
+    }
+    bool _e65 = local_50;
     ok = _e65;
-    if (((s_8.flags & 1u) == 0u)) {
+    if (((s_10.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            const bool _e76 = airlight_is_finite(s_8.t_max);
-            local_47 = _e76;
-        } else {
-            local_47 = false;
-        }
-        bool _e78 = local_47;
-        if (_e78) {
-            local_48 = (s_8.t_min <= s_8.t_max);
-        } else {
-            local_48 = false;
-        }
-        bool _e85 = local_48;
-        ok = _e85;
-    }
-    if ((s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e89 = ok;
-        if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_8.light_axis);
-            local_49 = _e93;
-        } else {
-            local_49 = false;
-        }
-        bool _e95 = local_49;
-        if (_e95) {
-            const bool _e99 = airlight_normalisable(s_8.light_axis);
-            local_50 = _e99;
-        } else {
-            local_50 = false;
-        }
-        bool _e101 = local_50;
-        if (_e101) {
-            local_51 = (s_8.light_param_a >= 0.0);
+            const bool _e76 = airlight_is_finite(s_10.t_max);
+            local_51 = _e76;
         } else {
             local_51 = false;
         }
-        bool _e108 = local_51;
-        if (_e108) {
-            local_52 = (s_8.light_param_a <= 1024.0);
+        bool _e78 = local_51;
+        if (_e78) {
+            local_52 = (s_10.t_min <= s_10.t_max);
         } else {
             local_52 = false;
         }
-        bool _e115 = local_52;
-        if (_e115) {
-            local_53 = (frac((s_8.light_param_a * 0.5)) == 0.0);
+        bool _e85 = local_52;
+        ok = _e85;
+    }
+    if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e89 = ok;
+        if (_e89) {
+            const bool _e93 = airlight_vec_finite(s_10.light_axis);
+            local_53 = _e93;
         } else {
             local_53 = false;
         }
-        bool _e125 = local_53;
+        bool _e95 = local_53;
+        if (_e95) {
+            const bool _e99 = airlight_normalisable(s_10.light_axis);
+            local_54 = _e99;
+        } else {
+            local_54 = false;
+        }
+        bool _e101 = local_54;
+        if (_e101) {
+            local_55 = (s_10.light_param_a >= 0.0);
+        } else {
+            local_55 = false;
+        }
+        bool _e108 = local_55;
+        if (_e108) {
+            local_56 = (s_10.light_param_a <= 1024.0);
+        } else {
+            local_56 = false;
+        }
+        bool _e115 = local_56;
+        if (_e115) {
+            local_57 = (frac((s_10.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_57 = false;
+        }
+        bool _e125 = local_57;
         ok = _e125;
     } else {
-        if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e129 = ok;
             if (_e129) {
-                const bool _e133 = airlight_vec_finite(s_8.light_axis);
-                local_54 = _e133;
-            } else {
-                local_54 = false;
-            }
-            bool _e135 = local_54;
-            if (_e135) {
-                const bool _e139 = airlight_normalisable(s_8.light_axis);
-                local_55 = _e139;
-            } else {
-                local_55 = false;
-            }
-            bool _e141 = local_55;
-            if (_e141) {
-                local_56 = (s_8.light_param_b < s_8.light_param_a);
-            } else {
-                local_56 = false;
-            }
-            bool _e148 = local_56;
-            if (_e148) {
-                local_57 = (s_8.light_param_b >= -1.0);
-            } else {
-                local_57 = false;
-            }
-            bool _e155 = local_57;
-            if (_e155) {
-                local_58 = (s_8.light_param_a <= 1.0);
+                const bool _e133 = airlight_vec_finite(s_10.light_axis);
+                local_58 = _e133;
             } else {
                 local_58 = false;
             }
-            bool _e162 = local_58;
+            bool _e135 = local_58;
+            if (_e135) {
+                const bool _e139 = airlight_normalisable(s_10.light_axis);
+                local_59 = _e139;
+            } else {
+                local_59 = false;
+            }
+            bool _e141 = local_59;
+            if (_e141) {
+                local_60 = (s_10.light_param_b < s_10.light_param_a);
+            } else {
+                local_60 = false;
+            }
+            bool _e148 = local_60;
+            if (_e148) {
+                local_61 = (s_10.light_param_b >= -1.0);
+            } else {
+                local_61 = false;
+            }
+            bool _e155 = local_61;
+            if (_e155) {
+                local_62 = (s_10.light_param_a <= 1.0);
+            } else {
+                local_62 = false;
+            }
+            bool _e162 = local_62;
             ok = _e162;
         } else {
-            if ((s_8.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_10.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_8.phase_param_a) < 1.0);
-    switch(s_8.phase_kind) {
+    bool g_ok = (abs(s_10.phase_param_a) < 1.0);
+    switch(s_10.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -2732,40 +2943,40 @@ bool airlight_valid(AirlightScene s_8)
         case 4u: {
             bool _e172 = ok;
             if (_e172) {
-                local_59 = g_ok;
+                local_63 = g_ok;
             } else {
-                local_59 = false;
+                local_63 = false;
             }
-            bool _e176 = local_59;
+            bool _e176 = local_63;
             ok = _e176;
             break;
         }
         case 5u: {
             bool _e177 = ok;
             if (_e177) {
-                local_60 = g_ok;
+                local_64 = g_ok;
             } else {
-                local_60 = false;
+                local_64 = false;
             }
-            bool _e181 = local_60;
+            bool _e181 = local_64;
             if (_e181) {
-                local_61 = (abs(s_8.phase_param_b) < 1.0);
+                local_65 = (abs(s_10.phase_param_b) < 1.0);
             } else {
-                local_61 = false;
+                local_65 = false;
             }
-            bool _e189 = local_61;
+            bool _e189 = local_65;
             if (_e189) {
-                local_62 = (s_8.phase_param_c >= 0.0);
+                local_66 = (s_10.phase_param_c >= 0.0);
             } else {
-                local_62 = false;
+                local_66 = false;
             }
-            bool _e196 = local_62;
+            bool _e196 = local_66;
             if (_e196) {
-                local_63 = (s_8.phase_param_c <= 1.0);
+                local_67 = (s_10.phase_param_c <= 1.0);
             } else {
-                local_63 = false;
+                local_67 = false;
             }
-            bool _e203 = local_63;
+            bool _e203 = local_67;
             ok = _e203;
             break;
         }
@@ -2790,46 +3001,168 @@ AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2,
     return ret;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_9)
+AirlightCanonical airlight_canonical(AirlightScene s_11)
 {
-    float3 a_6 = float3(0.0, 0.0, 1.0);
+    float3 a_10 = float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
 
-    const float3 _e2 = airlight_normalize(s_9.dir);
-    if ((s_9.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e12 = airlight_normalize(s_9.light_axis);
-        a_6 = _e12;
+    const float3 _e2 = airlight_normalize(s_11.dir);
+    if ((s_11.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e12 = airlight_normalize(s_11.light_axis);
+        a_10 = _e12;
     }
-    float3 to_light = (s_9.light_position - s_9.origin);
+    float3 to_light = (s_11.light_position - s_11.origin);
     float x_h_1 = dot(to_light, _e2);
     float3 perp = ((x_h_1 * _e2) - to_light);
     const float _e19 = airlight_safe_length(perp);
     if ((_e19 > 0.0)) {
-        float3 _e24 = a_6;
+        float3 _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_2 = ((s_9.flags & 1u) != 0u);
-    float3 _e32 = a_6;
+    bool infinite_2 = ((s_11.flags & 1u) != 0u);
+    float3 _e32 = a_10;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, (infinite_2 ? 0.0 : s_9.t_max), infinite_2);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_11.t_min, (infinite_2 ? 0.0 : s_11.t_max), infinite_2);
     return airlightcanonical;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_10)
+float2 airlight_two_sum(float a_11, float b_8, float one)
 {
-    const bool _e1 = airlight_valid(s_10);
+    float s_15 = ((a_11 + b_8) * one);
+    float bb = (s_15 - a_11);
+    float e_1 = ((a_11 - (s_15 - bb)) + (b_8 - bb));
+    const bool _e10 = airlight_is_finite(e_1);
+    return float2(s_15, (_e10 ? e_1 : 0.0));
+}
+
+float2 airlight_two_product(float a_12, float b_9, float one_1)
+{
+    float p = ((a_12 * b_9) * one_1);
+    float ah = asfloat((asuint(a_12) & 4294963200u));
+    float al = (a_12 - ah);
+    float bh = asfloat((asuint(b_9) & 4294963200u));
+    float bl = (b_9 - bh);
+    float e_2 = (((((ah * bh) - p) + (ah * bl)) + (al * bh)) + (al * bl));
+    const bool _e23 = airlight_is_finite(e_2);
+    return float2(p, (_e23 ? e_2 : 0.0));
+}
+
+float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, float one_2)
+{
+    const float2 _e5 = airlight_two_product(a_13, b_10, one_2);
+    const float2 _e6 = airlight_two_product(c_6, d_1, one_2);
+    return ((_e5.x - _e6.x) + (_e5.y - _e6.y));
+}
+
+bool airlight_in_exact_range(float3 v_4)
+{
+    bool local_68 = (bool)0;
+    bool local_69 = (bool)0;
+
+    float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if (!((m_8 == 0.0))) {
+        if ((m_8 >= 9.313226e-10)) {
+            local_69 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+        } else {
+            local_69 = false;
+        }
+        bool _e21 = local_69;
+        local_68 = _e21;
+    } else {
+        local_68 = true;
+    }
+    bool _e23 = local_68;
+    return _e23;
+}
+
+AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain)
+{
+    bool local_70 = (bool)0;
+    AirlightCanonical out_2 = (AirlightCanonical)0;
+    bool local_71 = (bool)0;
+    float3 a_14 = float3(0.0, 0.0, 1.0);
+
+    float one_3 = ((s_12.flags > 4294967280u) ? 0.5 : 1.0);
+    const float2 _e13 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), one_3);
+    const float2 _e19 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), one_3);
+    const float2 _e25 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), one_3);
+    float3 hi_2 = float3(_e13.x, _e19.x, _e25.x);
+    float3 lo_2 = float3(_e13.y, _e19.y, _e25.y);
+    float3 dir = s_12.dir;
+    const bool _e35 = airlight_in_exact_range(hi_2);
+    if (!(!(_e35))) {
+        const bool _e40 = airlight_in_exact_range(dir);
+        local_70 = !(_e40);
+    } else {
+        local_70 = true;
+    }
+    bool _e43 = local_70;
+    if (_e43) {
+        const AirlightCanonical airlightcanonical_1 = plain;
+        return airlightcanonical_1;
+    }
+    const float _e48 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, one_3);
+    const float _e61 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, one_3);
+    const float _e74 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, one_3);
+    float3 w_2 = float3((_e48 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e61 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e74 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
+    const bool _e84 = airlight_vec_finite(w_2);
+    if (!(_e84)) {
+        const AirlightCanonical airlightcanonical_2 = plain;
+        return airlightcanonical_2;
+    }
+    out_2 = plain;
+    const float _e87 = airlight_safe_length(w_2);
+    if ((_e87 == 0.0)) {
+        out_2.h = 0.0;
+        out_2.d_c = 0.0;
+        AirlightCanonical _e94 = out_2;
+        const AirlightCanonical airlightcanonical_3 = _e94;
+        return airlightcanonical_3;
+    }
+    const float _e95 = airlight_safe_length(dir);
+    float h_3 = (_e87 / _e95);
+    const bool _e97 = airlight_is_finite(h_3);
+    if (_e97) {
+        local_71 = (h_3 > 0.0);
+    } else {
+        local_71 = false;
+    }
+    bool _e103 = local_71;
+    if (!(_e103)) {
+        const AirlightCanonical airlightcanonical_4 = plain;
+        return airlightcanonical_4;
+    }
+    if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e114 = airlight_normalize(s_12.light_axis);
+        a_14 = _e114;
+    }
+    const float3 _e115 = airlight_normalize(dir);
+    const float3 _e116 = airlight_normalize(w_2);
+    float3 n_5 = -(cross(_e115, _e116));
+    out_2.h = h_3;
+    float3 _e121 = a_14;
+    out_2.d_c = dot(n_5, _e121);
+    AirlightCanonical _e123 = out_2;
+    const AirlightCanonical airlightcanonical_5 = _e123;
+    return airlightcanonical_5;
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_13)
+{
+    const bool _e1 = airlight_valid(s_13);
     if (!(_e1)) {
         const AirlightResult airlightresult_4 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_4;
     }
-    const AirlightCanonical _e6 = airlight_canonical(s_10);
-    const AirlightResult _e7 = airlight_in_scatter_canonical(s_10, _e6);
-    const bool _e9 = airlight_is_finite(_e7.in_scatter);
-    if (!(_e9)) {
+    const AirlightCanonical _e6 = airlight_canonical(s_13);
+    const AirlightCanonical _e7 = airlight_refined(s_13, _e6);
+    const AirlightResult _e8 = airlight_in_scatter_canonical(s_13, _e7);
+    const bool _e10 = airlight_is_finite(_e8.in_scatter);
+    if (!(_e10)) {
         const AirlightResult airlightresult_5 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_5;
     }
-    const AirlightResult airlightresult_6 = _e7;
+    const AirlightResult airlightresult_6 = _e8;
     return airlightresult_6;
 }
 

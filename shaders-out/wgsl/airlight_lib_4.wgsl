@@ -45,7 +45,21 @@ struct AirlightHalf {
     dv_infinite: bool,
 }
 
+struct AirlightPanel {
+    value: f32,
+    error: f32,
+    mass_over: f32,
+    f_max: f32,
+}
+
 const AIRLIGHT_TERMS: u32 = 4u;
+const AIRLIGHT_HALF_TERMS: u32 = 2u;
+const AIRLIGHT_PANEL_TOLERANCE: f32 = 0.0001f;
+const AIRLIGHT_PANEL_FLOOR: f32 = 0.0001f;
+const AIRLIGHT_MAX_PANELS: u32 = 16u;
+const AIRLIGHT_PANEL_LIST: u32 = 8u;
+const AIRLIGHT_Y_PANEL_EXPONENT: f32 = 4f;
+const AIRLIGHT_EXACT_RANGE: f32 = 1073741800f;
 const AIRLIGHT_PI: f32 = 3.1415927f;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772157f;
 const AIRLIGHT_FLT_MAX: f32 = 340282350000000000000000000000000000000f;
@@ -79,21 +93,21 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_2 = (b_1.y / b_1.x);
-        let den = (b_1.x + (b_1.y * r_2));
-        return vec2<f32>(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
+        let r_1 = (b_1.y / b_1.x);
+        let den = (b_1.x + (b_1.y * r_1));
+        return vec2<f32>(((a_1.x + (a_1.y * r_1)) / den), ((a_1.y - (a_1.x * r_1)) / den));
     }
-    let r_3 = (b_1.x / b_1.y);
-    let den_1 = ((b_1.x * r_3) + b_1.y);
-    return vec2<f32>((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
+    let r_2 = (b_1.x / b_1.y);
+    let den_1 = ((b_1.x * r_2) + b_1.y);
+    return vec2<f32>((((a_1.x * r_2) + a_1.y) / den_1), (((a_1.y * r_2) - a_1.x) / den_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
-    let m_2 = max(abs(z.x), abs(z.y));
-    if (m_2 == 0f) {
+    let m_3 = max(abs(z.x), abs(z.y));
+    if (m_3 == 0f) {
         return 0f;
     }
-    return (m_2 * length((z / vec2(m_2))));
+    return (m_3 * length((z / vec2(m_3))));
 }
 
 fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
@@ -110,11 +124,11 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_5 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_5, (z_1.y / (t_5 + t_5)));
+        let t_3 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_3, (z_1.y / (t_3 + t_3)));
     }
-    let t_6 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_6 + t_6)), select(-(t_6), t_6, (z_1.y >= 0f)));
+    let t_4 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_4 + t_4)), select(-(t_4), t_4, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -175,9 +189,9 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
-    let m_3 = exp(z_2.x);
+    let m_4 = exp(z_2.x);
     let _e4 = airlight_cos_sin(z_2.y);
-    return vec2<f32>((m_3 * _e4.x), (m_3 * _e4.y));
+    return vec2<f32>((m_4 * _e4.x), (m_4 * _e4.y));
 }
 
 fn airlight_atan(x_1: f32) -> f32 {
@@ -223,8 +237,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_11 = (x_2 / (2f + x_2));
-    let s2_ = (s_11 * s_11);
+    let s_14 = (x_2 / (2f + x_2));
+    let s2_ = (s_14 * s_14);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -242,7 +256,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_11) * _e35);
+    return ((2f * s_14) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -323,9 +337,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_10 = (z_5.x * 0.7692308f);
+    let x_8 = (z_5.x * 0.7692308f);
     let y_2 = (z_5.y * 0.47619048f);
-    return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
+    return (((x_8 * x_8) + (y_2 * y_2)) < 1f);
 }
 
 fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
@@ -361,8 +375,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     }
     let _e31 = depth;
     let nf = f32(_e31);
-    let b_3 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e46 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_3);
+    let b_11 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e46 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_11);
     let _e50 = airlight_cmul(_e46, _e46);
     let _e52 = airlight_csqrt((vec2<f32>(1f, 0f) - _e50));
     root = _e52;
@@ -372,7 +386,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e58);
     }
     let _e63 = root;
-    let _e65 = airlight_cmul(b_3, (vec2<f32>(1f, 0f) + _e63));
+    let _e65 = airlight_cmul(b_11, (vec2<f32>(1f, 0f) + _e63));
     t_1 = (_e65 * 0.5f);
     loop {
         let _e71 = i;
@@ -438,13 +452,13 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     }
     let nf_1 = f32(n);
     let _e17 = depth_1;
-    let m_4 = f32(_e17);
-    let b_4 = ((x_4 + nf_1) + (2f * (m_4 + 1f)));
-    let a_7 = ((m_4 + 2f) * ((nf_1 + m_4) + 1f));
-    let disc = (1f - ((4f * a_7) / (b_4 * b_4)));
-    t_2 = b_4;
+    let m_5 = f32(_e17);
+    let b_12 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
+    let a_15 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
+    let disc = (1f - ((4f * a_15) / (b_12 * b_12)));
+    t_2 = b_12;
     if (disc > 0f) {
-        t_2 = ((b_4 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_12 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e48 = i_1;
@@ -564,41 +578,48 @@ fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) 
     return;
 }
 
-fn airlight_hg_base(g: f32, mu: f32) -> f32 {
+fn airlight_hg_base(g: f32, om: f32, op: f32) -> f32 {
     if (g >= 0f) {
-        let a_8 = (1f - g);
-        return (((1f - mu) * (g + g)) + (a_8 * a_8));
+        let a_16 = (1f - g);
+        return ((om * (g + g)) + (a_16 * a_16));
     }
-    let b_5 = (1f + g);
-    return (((mu + 1f) * -((g + g))) + (b_5 * b_5));
+    let b_13 = (1f + g);
+    return ((op * -((g + g))) + (b_13 * b_13));
 }
 
-fn airlight_hg(g_1: f32, mu_1: f32) -> f32 {
-    let _e2 = airlight_hg_base(g_1, mu_1);
-    return (((1f - g_1) * (1f + g_1)) / ((12.566371f * _e2) * sqrt(_e2)));
+fn airlight_hg(g_1: f32, om_1: f32, op_1: f32) -> f32 {
+    let _e3 = airlight_hg_base(g_1, om_1, op_1);
+    return ((((1f - g_1) * (1f + g_1)) / 12.566371f) / (_e3 * sqrt(_e3)));
 }
 
-fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu_2: f32) -> f32 {
+fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu: f32, om_2: f32, op_2: f32) -> f32 {
+    var d: f32;
+
     switch kind {
         case 1u: {
-            return (0.059683103f * (1f + (mu_2 * mu_2)));
+            return (0.059683103f * (1f + (mu * mu)));
         }
         case 2u: {
-            let _e10 = airlight_hg(p0_, mu_2);
-            return _e10;
+            let _e12 = airlight_hg(p0_, om_2, op_2);
+            return _e12;
         }
         case 3u: {
-            let d = (1f - (p0_ * mu_2));
-            return (((1f - p0_) * (1f + p0_)) / ((12.566371f * d) * d));
+            d = ((1f + p0_) - (p0_ * op_2));
+            if (p0_ >= 0f) {
+                d = ((1f - p0_) + (p0_ * om_2));
+            }
+            let _e31 = d;
+            let _e32 = d;
+            return ((((1f - p0_) * (1f + p0_)) / 12.566371f) / (_e31 * _e32));
         }
         case 4u: {
-            let _e23 = airlight_hg_base(p0_, mu_2);
-            return ((((3f * (1f - p0_)) * (1f + p0_)) * (1f + (mu_2 * mu_2))) / (((25.132742f * (2f + (p0_ * p0_))) * _e23) * sqrt(_e23)));
+            let _e35 = airlight_hg_base(p0_, om_2, op_2);
+            return ((((0.119366206f * (1f - p0_)) * (1f + p0_)) / (2f + (p0_ * p0_))) * ((1f + (mu * mu)) / (_e35 * sqrt(_e35))));
         }
         case 5u: {
-            let _e44 = airlight_hg(p0_, mu_2);
-            let _e48 = airlight_hg(p1_, mu_2);
-            return ((p2_ * _e44) + ((1f - p2_) * _e48));
+            let _e54 = airlight_hg(p0_, om_2, op_2);
+            let _e58 = airlight_hg(p1_, om_2, op_2);
+            return ((p2_ * _e54) + ((1f - p2_) * _e58));
         }
         default: {
             return 0.07957747f;
@@ -606,16 +627,21 @@ fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu_2: f32) -> f32 {
     }
 }
 
-fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
+fn airlight_phase_mu(kind_1: u32, p0_1: f32, p1_1: f32, p2_1: f32, mu_1: f32) -> f32 {
+    let _e9 = airlight_phase(kind_1, p0_1, p1_1, p2_1, mu_1, (1f - mu_1), (1f + mu_1));
+    return _e9;
+}
+
+fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
     var base: f32;
     var e: u32;
     var acc: f32 = 1f;
     var i_3: u32 = 0u;
 
-    switch kind_1 {
+    switch kind_2 {
         case 1u: {
             base = c_1;
-            e = u32(p0_1);
+            e = u32(p0_2);
             loop {
                 let _e11 = i_3;
                 if (_e11 < 11u) {
@@ -644,12 +670,12 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
             return _e31;
         }
         case 2u: {
-            let width = (p0_1 - p1_1);
+            let width = (p0_2 - p1_2);
             if (width <= AIRLIGHT_FLT_EPS) {
-                return select(0f, 1f, (c_1 >= (p1_1 + (width * 0.5f))));
+                return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_11 = clamp(((c_1 - p1_1) / width), 0f, 1f);
-            return ((x_11 * x_11) * (3f - (2f * x_11)));
+            let x_9 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_9 * x_9) * (3f - (2f * x_9)));
         }
         default: {
             return 1f;
@@ -658,1310 +684,1430 @@ fn airlight_light(kind_1: u32, p0_1: f32, p1_1: f32, c_1: f32) -> f32 {
 }
 
 fn airlight_integrand(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> f32 {
+    var minus: f32;
+    var plus: f32;
+
     let y2_ = (y_1 * y_1);
     let inv = (1f / (1f + y2_));
-    let om = (1f - y2_);
-    let mu_3 = ((-(sigma) * om) * inv);
-    let c_3 = ((((sigma * g_2.d_el) * om) + ((2f * g_2.d_c) * y_1)) * inv);
-    let _e26 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_3);
-    let _e31 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_3);
-    return (_e26 * _e31);
+    let om_3 = (1f - y2_);
+    let mu_2 = (-(sigma) * (om_3 * inv));
+    let c_7 = ((((sigma * g_2.d_el) * om_3) + ((2f * g_2.d_c) * y_1)) * inv);
+    let far = ((y2_ * inv) * 2f);
+    let near = (inv * 2f);
+    minus = near;
+    plus = far;
+    if (sigma < 0f) {
+        minus = far;
+        plus = near;
+    }
+    let _e35 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_7);
+    let _e40 = minus;
+    let _e41 = plus;
+    let _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
+    return (_e35 * _e42);
 }
 
-fn airlight_chebyshev(s_2: AirlightScene, g_3: AirlightCanonical, sigma_1: f32, y_c: f32, r: f32) -> array<f32, 4> {
-    var prev: f32;
-    var cur: f32;
-    var xi: array<f32, 4>;
-    var values: array<f32, 4>;
+fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
+    var m: f32 = 0f;
     var j_1: u32 = 0u;
-    var cheb: array<f32, 4>;
-    var j_2: u32 = 0u;
-    var t_prev: f32;
-    var t_cur: f32;
-    var k_4: u32;
-    var tk: f32;
-    var scale_sum: f32 = 0f;
-    var k_5: u32 = 0u;
-    var t_km1_: array<f32, 4>;
-    var t_k: array<f32, 4>;
-    var hat: array<f32, 4>;
-    var k_6: u32 = 1u;
-    var t_next: array<f32, 4>;
-    var i_4: u32;
-    var shifted: f32;
-    var amplification: f32 = 1f;
-    var k_7: u32 = 0u;
-    var a_3: array<f32, 4>;
-    var rk: f32 = 1f;
-    var k_8: u32 = 0u;
-    var local_2: bool;
-
-    let theta = (AIRLIGHT_PI / (4f + 4f));
-    let c2_ = cos((theta + theta));
-    prev = cos(theta);
-    let _e13 = prev;
-    cur = _e13;
-    let _e15 = airlight_zero_terms();
-    xi = _e15;
-    let _e17 = airlight_zero_terms();
-    values = _e17;
-    loop {
-        let _e21 = j_1;
-        if (_e21 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            let _e24 = j_1;
-            let _e26 = cur;
-            xi[_e24] = _e26;
-            let _e28 = cur;
-            let _e30 = prev;
-            let next = (((c2_ + c2_) * _e28) - _e30);
-            let _e32 = cur;
-            prev = _e32;
-            cur = next;
-            let _e33 = j_1;
-            let _e35 = j_1;
-            let _e37 = xi[_e35];
-            let _e40 = airlight_integrand(s_2, g_3, sigma_1, (y_c + (r * _e37)));
-            values[_e33] = _e40;
-        }
-        continuing {
-            let _e42 = j_1;
-            j_1 = (_e42 + 1u);
-        }
-    }
-    let _e44 = airlight_zero_terms();
-    cheb = _e44;
-    loop {
-        let _e48 = j_2;
-        if (_e48 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            t_prev = 1f;
-            let _e53 = j_2;
-            let _e55 = xi[_e53];
-            t_cur = _e55;
-            k_4 = 0u;
-            loop {
-                let _e59 = k_4;
-                if (_e59 < AIRLIGHT_TERMS) {
-                } else {
-                    break;
-                }
-                {
-                    let _e62 = t_cur;
-                    tk = _e62;
-                    let _e64 = k_4;
-                    if (_e64 == 0u) {
-                        tk = 1f;
-                    }
-                    let _e68 = k_4;
-                    let _e70 = cheb[_e68];
-                    let _e71 = j_2;
-                    let _e73 = values[_e71];
-                    let _e74 = tk;
-                    cheb[_e68] = (_e70 + (_e73 * _e74));
-                    let _e77 = k_4;
-                    if (_e77 >= 1u) {
-                        let _e80 = j_2;
-                        let _e82 = xi[_e80];
-                        let _e83 = j_2;
-                        let _e85 = xi[_e83];
-                        let _e87 = t_cur;
-                        let _e89 = t_prev;
-                        let t_next_1 = (((_e82 + _e85) * _e87) - _e89);
-                        let _e91 = t_cur;
-                        t_prev = _e91;
-                        t_cur = t_next_1;
-                    }
-                }
-                continuing {
-                    let _e93 = k_4;
-                    k_4 = (_e93 + 1u);
-                }
-            }
-        }
-        continuing {
-            let _e96 = j_2;
-            j_2 = (_e96 + 1u);
-        }
-    }
-    loop {
-        let _e102 = k_5;
-        if (_e102 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            let _e105 = k_5;
-            let _e107 = cheb[_e105];
-            cheb[_e105] = (_e107 * (2f / 4f));
-            let _e111 = k_5;
-            if (_e111 == 0u) {
-                let _e114 = k_5;
-                let _e116 = cheb[_e114];
-                cheb[_e114] = (_e116 * 0.5f);
-            }
-            let _e119 = scale_sum;
-            let _e120 = k_5;
-            let _e122 = cheb[_e120];
-            scale_sum = (_e119 + abs(_e122));
-        }
-        continuing {
-            let _e126 = k_5;
-            k_5 = (_e126 + 1u);
-        }
-    }
-    let _e128 = airlight_zero_terms();
-    t_km1_ = _e128;
-    let _e130 = airlight_zero_terms();
-    t_k = _e130;
-    let _e132 = airlight_zero_terms();
-    hat = _e132;
-    t_km1_[0] = 1f;
-    t_k[1] = 1f;
-    let _e140 = cheb[0];
-    hat[0] = _e140;
-    loop {
-        let _e143 = k_6;
-        if (_e143 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            let _e146 = airlight_zero_terms();
-            t_next = _e146;
-            i_4 = 0u;
-            loop {
-                let _e150 = i_4;
-                if (_e150 < AIRLIGHT_TERMS) {
-                } else {
-                    break;
-                }
-                {
-                    let _e153 = i_4;
-                    let _e155 = hat[_e153];
-                    let _e156 = k_6;
-                    let _e158 = cheb[_e156];
-                    let _e159 = i_4;
-                    let _e161 = t_k[_e159];
-                    hat[_e153] = (_e155 + (_e158 * _e161));
-                    shifted = 0f;
-                    let _e166 = i_4;
-                    if (_e166 > 0u) {
-                        let _e169 = i_4;
-                        let _e173 = t_k[(_e169 - 1u)];
-                        shifted = _e173;
-                    }
-                    let _e174 = i_4;
-                    let _e176 = shifted;
-                    let _e177 = shifted;
-                    let _e179 = i_4;
-                    let _e181 = t_km1_[_e179];
-                    t_next[_e174] = ((_e176 + _e177) - _e181);
-                }
-                continuing {
-                    let _e184 = i_4;
-                    i_4 = (_e184 + 1u);
-                }
-            }
-            let _e186 = t_k;
-            t_km1_ = _e186;
-            let _e187 = t_next;
-            t_k = _e187;
-        }
-        continuing {
-            let _e189 = k_6;
-            k_6 = (_e189 + 1u);
-        }
-    }
-    loop {
-        let _e195 = k_7;
-        if (_e195 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            let _e198 = amplification;
-            amplification = (_e198 * 2.4142137f);
-        }
-        continuing {
-            let _e202 = k_7;
-            k_7 = (_e202 + 1u);
-        }
-    }
-    let _e208 = amplification;
-    let _e210 = scale_sum;
-    let noise = ((((4f * 4f) * AIRLIGHT_FLT_EPS) * _e208) * _e210);
-    let _e212 = airlight_zero_terms();
-    a_3 = _e212;
-    loop {
-        let _e218 = k_8;
-        if (_e218 < AIRLIGHT_TERMS) {
-        } else {
-            break;
-        }
-        {
-            let _e221 = k_8;
-            if (_e221 == 0u) {
-                let _e224 = k_8;
-                let _e226 = k_8;
-                let _e228 = hat[_e226];
-                a_3[_e224] = _e228;
-            } else {
-                let _e229 = k_8;
-                let _e231 = hat[_e229];
-                if (abs(_e231) > noise) {
-                    let _e236 = rk;
-                    local_2 = (_e236 > 0f);
-                } else {
-                    local_2 = false;
-                }
-                let _e240 = local_2;
-                if _e240 {
-                    let _e241 = k_8;
-                    let _e243 = hat[_e241];
-                    let _e244 = rk;
-                    let ak = (_e243 / _e244);
-                    let _e246 = airlight_is_finite(ak);
-                    if _e246 {
-                        let _e247 = k_8;
-                        a_3[_e247] = ak;
-                    }
-                }
-            }
-            let _e249 = rk;
-            rk = (_e249 * r);
-        }
-        continuing {
-            let _e252 = k_8;
-            k_8 = (_e252 + 1u);
-        }
-    }
-    let _e254 = a_3;
-    return _e254;
-}
-
-fn airlight_moments_gauss(half: AirlightHalf) -> array<f32, 4> {
-    var m: array<f32, 4>;
-    var j_3: u32 = 0u;
     var dv: f32;
-    var p: f32;
-    var k_9: u32;
 
-    let _e1 = airlight_zero_terms();
-    m = _e1;
     let hw = (half.dy * 0.5f);
     let yc = (half.y_lo + hw);
     let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(0.8611363f, 0.34785485f));
     loop {
-        let _e23 = j_3;
+        let _e23 = j_1;
         if (_e23 < 4u) {
         } else {
             break;
         }
         {
-            let _e26 = j_3;
-            let xi_1 = nodes[_e26].x;
-            let s_12 = (hw * xi_1);
-            let y_3 = (yc + s_12);
-            dv = (hw * (1f + xi_1));
+            let _e26 = j_1;
+            let xi = nodes[_e26].x;
+            let y_3 = (yc + (hw * xi));
+            dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi_1)) / (y_3 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_3 * half.y_hi));
             }
-            let _e42 = j_3;
-            let _e48 = dv;
-            p = (((nodes[_e42].y * hw) * exp((-(half.big_h) * _e48))) / (1f + (y_3 * y_3)));
-            k_9 = 0u;
-            loop {
-                let _e59 = k_9;
-                if (_e59 < AIRLIGHT_TERMS) {
-                } else {
-                    break;
-                }
-                {
-                    let _e62 = k_9;
-                    let _e64 = m[_e62];
-                    let _e65 = p;
-                    m[_e62] = (_e64 + _e65);
-                    let _e67 = p;
-                    p = (_e67 * s_12);
-                }
-                continuing {
-                    let _e70 = k_9;
-                    k_9 = (_e70 + 1u);
-                }
-            }
+            let _e42 = m;
+            let _e43 = j_1;
+            let _e49 = dv;
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_3 * y_3))));
         }
         continuing {
-            let _e73 = j_3;
-            j_3 = (_e73 + 1u);
+            let _e59 = j_1;
+            j_1 = (_e59 + 1u);
         }
     }
-    let _e75 = m;
-    return _e75;
+    let _e61 = m;
+    return _e61;
 }
 
-fn airlight_n1_log_part(v_s: f32, v_e: f32, v_e_infinite: bool) -> f32 {
-    var at_e: f32 = 0f;
-
-    if !(v_e_infinite) {
-        let y_e = (1f / v_e);
-        let _e9 = airlight_log1p((y_e * y_e));
-        at_e = _e9;
+fn airlight_hypot_one(a_3: f32) -> f32 {
+    if (abs(a_3) < 1000000000000000f) {
+        return sqrt((1f + (a_3 * a_3)));
     }
-    let y_s = (1f / v_s);
-    let _e12 = at_e;
-    let _e14 = airlight_log1p((y_s * y_s));
-    return (-0.5f * (_e12 - _e14));
+    return abs(a_3);
 }
 
-fn airlight_t_moments(half_1: AirlightHalf, count_1: u32, out_1: ptr<function, array<f32, 16>>) {
-    var s_s: array<f32, 16>;
-    var s_e: array<f32, 16>;
+fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
+    var local_2: bool;
+    var v_e: f32;
     var local_3: bool;
-    var decay: f32 = 0f;
     var local_4: bool;
-    var p_hi: f32;
-    var p_lo: f32;
-    var order: u32 = 2u;
+    var local_5: bool;
+    var d_im: f32 = 0f;
+    var d_re: f32 = 0f;
+    var local_6: bool;
 
-    let _e3 = airlight_zero_scratch();
-    s_s = _e3;
-    let _e5 = airlight_zero_scratch();
-    s_e = _e5;
-    airlight_en_scaled((half_1.big_h / half_1.y_hi), count_1, (&s_s));
-    if (half_1.y_lo > 0f) {
-        let _e18 = airlight_is_finite((half_1.big_h / half_1.y_lo));
-        local_3 = _e18;
+    let big_h_1 = half_1.big_h;
+    let v_s = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
+    if half_1.second {
+        local_2 = (half_1.y_lo == 0f);
+    } else {
+        local_2 = false;
+    }
+    let v_e_infinite = local_2;
+    v_e = half_1.y_hi;
+    if half_1.second {
+        local_3 = !(v_e_infinite);
     } else {
         local_3 = false;
     }
-    let far_end = local_3;
-    if far_end {
-        local_4 = !(half_1.dv_infinite);
-    } else {
-        local_4 = false;
+    let _e23 = local_3;
+    if _e23 {
+        v_e = (1f / half_1.y_lo);
     }
-    let _e28 = local_4;
-    if _e28 {
-        decay = exp((-(half_1.big_h) * half_1.dv));
-        airlight_en_scaled((half_1.big_h / half_1.y_lo), count_1, (&s_e));
-    }
-    p_hi = half_1.y_hi;
-    p_lo = half_1.y_lo;
-    loop {
-        let _e43 = order;
-        if (_e43 < AIRLIGHT_SCRATCH) {
+    if !((big_h_1 == 0f)) {
+        if !(v_e_infinite) {
+            let _e35 = v_e;
+            let _e36 = airlight_hypot_one(_e35);
+            local_5 = ((big_h_1 * _e36) <= 1f);
         } else {
-            break;
+            local_5 = false;
         }
-        {
-            let _e46 = order;
-            if (_e46 <= count_1) {
-                let _e48 = order;
-                let _e52 = p_hi;
-                let _e53 = order;
-                let _e57 = s_s[(_e53 - 1u)];
-                let _e59 = p_lo;
-                let _e60 = order;
-                let _e64 = s_e[(_e60 - 1u)];
-                let _e66 = decay;
-                (*out_1)[(_e48 - 1u)] = ((_e52 * _e57) - ((_e59 * _e64) * _e66));
-                let _e69 = p_hi;
-                p_hi = (_e69 * half_1.y_hi);
-                let _e72 = p_lo;
-                p_lo = (_e72 * half_1.y_lo);
-            }
-        }
-        continuing {
-            let _e76 = order;
-            order = (_e76 + 1u);
-        }
-    }
-    return;
-}
-
-fn airlight_n1_series(half_2: AirlightHalf) -> f32 {
-    var t_3: array<f32, 16>;
-    var sum_3: f32 = 0f;
-    var i_5: u32 = 0u;
-
-    let _e1 = airlight_zero_scratch();
-    t_3 = _e1;
-    airlight_t_moments(half_2, 13u, (&t_3));
-    loop {
-        let _e8 = i_5;
-        if (_e8 < 6u) {
-        } else {
-            break;
-        }
-        {
-            let _e12 = i_5;
-            let j_9 = (5u - _e12);
-            let tn = t_3[((3u + (2u * j_9)) - 1u)];
-            if ((j_9 % 2u) == 0u) {
-                let _e26 = sum_3;
-                sum_3 = (_e26 + tn);
-            } else {
-                let _e28 = sum_3;
-                sum_3 = (_e28 - tn);
-            }
-        }
-        continuing {
-            let _e31 = i_5;
-            i_5 = (_e31 + 1u);
-        }
-    }
-    let _e33 = sum_3;
-    return _e33;
-}
-
-fn airlight_hypot_one(a_4: f32) -> f32 {
-    if (abs(a_4) < 1000000000000000f) {
-        return sqrt((1f + (a_4 * a_4)));
-    }
-    return abs(a_4);
-}
-
-fn airlight_q_zero(half_3: AirlightHalf, with_re: bool) -> vec2<f32> {
-    var local_5: bool;
-    var v_e_1: f32;
-    var local_6: bool;
-    var local_7: bool;
-    var local_8: bool;
-    var d_im: f32 = 0f;
-    var d_re: f32 = 0f;
-    var n1_: f32 = 0f;
-    var n1_1: f32 = 0f;
-    var s_e_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var decay_1: f32 = 0f;
-    var local_9: bool;
-    var n1_2: f32 = 0f;
-    var e_s: array<f32, 16>;
-    var tail: f32 = 0f;
-    var e_e: array<f32, 16>;
-
-    let big_h_1 = half_3.big_h;
-    let v_s_1 = select(half_3.y_lo, (1f / half_3.y_hi), half_3.second);
-    if half_3.second {
-        local_5 = (half_3.y_lo == 0f);
+        let _e41 = local_5;
+        local_4 = _e41;
     } else {
-        local_5 = false;
+        local_4 = true;
     }
-    let v_e_infinite_1 = local_5;
-    v_e_1 = half_3.y_hi;
-    if half_3.second {
-        local_6 = !(v_e_infinite_1);
+    let near_1 = local_4;
+    if near_1 {
+        if !(v_e_infinite) {
+            let _e50 = v_e;
+            let _e55 = airlight_atan((half_1.dv / (1f + (v_s * _e50))));
+            d_im = _e55;
+            let _e57 = v_e;
+            let _e64 = airlight_log1p(((half_1.dv * (v_s + _e57)) / (1f + (v_s * v_s))));
+            d_re = (0.5f * _e64);
+        } else {
+            let _e69 = airlight_atan((1f / v_s));
+            d_im = _e69;
+        }
+        if (big_h_1 == 0f) {
+            let _e72 = d_im;
+            return _e72;
+        }
+        let z_s = vec2<f32>((big_h_1 * v_s), -(big_h_1));
+        let _e76 = v_e;
+        let z_e = vec2<f32>((big_h_1 * _e76), -(big_h_1));
+        let _e80 = airlight_ein_divided_difference(z_s, z_e);
+        let _e81 = airlight_cos_sin(big_h_1);
+        let rot = vec2<f32>(_e81.x, -(_e81.y));
+        let _e86 = d_re;
+        let _e87 = d_im;
+        let _e93 = airlight_cmul(rot, (vec2<f32>(_e86, _e87) - (_e80 * (big_h_1 * half_1.dv))));
+        return (_e93.y * exp((big_h_1 * v_s)));
+    }
+    let _e101 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s), -(big_h_1)));
+    if !(v_e_infinite) {
+        let _e105 = v_e;
+        let _e107 = airlight_is_finite((big_h_1 * _e105));
+        local_6 = _e107;
     } else {
         local_6 = false;
     }
-    let _e24 = local_6;
-    if _e24 {
-        v_e_1 = (1f / half_3.y_lo);
+    let _e109 = local_6;
+    if _e109 {
+        let _e110 = v_e;
+        let _e114 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e110), -(big_h_1)));
+        return (_e101.y - (_e114.y * exp((-(big_h_1) * half_1.dv))));
     }
-    if !((big_h_1 == 0f)) {
-        if !(v_e_infinite_1) {
-            let _e36 = v_e_1;
-            let _e37 = airlight_hypot_one(_e36);
-            local_8 = ((big_h_1 * _e37) <= 1f);
-        } else {
-            local_8 = false;
-        }
-        let _e42 = local_8;
-        local_7 = _e42;
-    } else {
-        local_7 = true;
-    }
-    let near = local_7;
-    if near {
-        if !(v_e_infinite_1) {
-            let _e51 = v_e_1;
-            let _e56 = airlight_atan((half_3.dv / (1f + (v_s_1 * _e51))));
-            d_im = _e56;
-            let _e58 = v_e_1;
-            let _e65 = airlight_log1p(((half_3.dv * (v_s_1 + _e58)) / (1f + (v_s_1 * v_s_1))));
-            d_re = (0.5f * _e65);
-        } else {
-            let _e70 = airlight_atan((1f / v_s_1));
-            d_im = _e70;
-        }
-        if (big_h_1 == 0f) {
-            if !(half_3.second) {
-                let _e75 = d_re;
-                let _e76 = d_im;
-                return vec2<f32>(_e75, _e76);
-            }
-            if with_re {
-                let _e80 = v_e_1;
-                let _e81 = airlight_n1_log_part(v_s_1, _e80, v_e_infinite_1);
-                n1_ = _e81;
-            }
-            let _e82 = n1_;
-            let _e83 = d_im;
-            return vec2<f32>(_e82, _e83);
-        }
-        let z_s = vec2<f32>((big_h_1 * v_s_1), -(big_h_1));
-        let _e88 = v_e_1;
-        let z_e = vec2<f32>((big_h_1 * _e88), -(big_h_1));
-        let hdv = (big_h_1 * half_3.dv);
-        let _e94 = airlight_ein_divided_difference(z_s, z_e);
-        let _e95 = airlight_cos_sin(big_h_1);
-        let rot = vec2<f32>(_e95.x, -(_e95.y));
-        let scale = exp((big_h_1 * v_s_1));
-        let _e102 = d_re;
-        let _e103 = d_im;
-        let _e107 = airlight_cmul(rot, (vec2<f32>(_e102, _e103) - (_e94 * hdv)));
-        let c_4 = (_e107 * scale);
-        if !(half_3.second) {
-            return c_4;
-        }
-        if with_re {
-            let _e115 = airlight_cos_sin((big_h_1 * 0.5f));
-            let sh = _e115.y;
-            let _e120 = v_e_1;
-            let _e124 = airlight_ein_divided_difference(vec2<f32>((big_h_1 * v_s_1), 0f), vec2<f32>((big_h_1 * _e120), 0f));
-            let _e125 = v_e_1;
-            let _e127 = airlight_n1_log_part(v_s_1, _e125, false);
-            let _e131 = d_re;
-            let _e135 = d_im;
-            let _e139 = airlight_cmul(rot, _e94);
-            n1_1 = ((((_e127 + (((sh * sh) + (sh * sh)) * _e131)) - (_e95.y * _e135)) - (hdv * (_e124.x - _e139.x))) * scale);
-        }
-        let _e145 = n1_1;
-        return vec2<f32>(_e145, c_4.y);
-    }
-    let _e151 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s_1), -(big_h_1)));
-    if !(v_e_infinite_1) {
-        let _e161 = v_e_1;
-        let _e163 = airlight_is_finite((big_h_1 * _e161));
-        local_9 = _e163;
-    } else {
-        local_9 = false;
-    }
-    let far_finite = local_9;
-    if far_finite {
-        let _e166 = v_e_1;
-        let _e170 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e166), -(big_h_1)));
-        s_e_1 = _e170;
-        decay_1 = exp((-(big_h_1) * half_3.dv));
-    }
-    let _e175 = s_e_1;
-    let _e176 = decay_1;
-    let c_5 = (_e151 - (_e175 * _e176));
-    if !(half_3.second) {
-        return c_5;
-    }
-    if with_re {
-        if (half_3.y_hi <= 0.25f) {
-            let _e186 = airlight_n1_series(half_3);
-            n1_2 = _e186;
-        } else {
-            let _e187 = airlight_zero_scratch();
-            e_s = _e187;
-            airlight_en_scaled((big_h_1 * v_s_1), 1u, (&e_s));
-            if far_finite {
-                let _e193 = airlight_zero_scratch();
-                e_e = _e193;
-                let _e195 = v_e_1;
-                airlight_en_scaled((big_h_1 * _e195), 1u, (&e_e));
-                let _e199 = e_e[0];
-                let _e201 = s_e_1.x;
-                let _e203 = decay_1;
-                tail = ((_e199 - _e201) * _e203);
-            }
-            let _e206 = e_s[0];
-            let _e209 = tail;
-            n1_2 = ((_e206 - _e151.x) - _e209);
-        }
-    }
-    let _e211 = n1_2;
-    return vec2<f32>(_e211, c_5.y);
+    return _e101.y;
 }
 
-fn airlight_phi_moments(x_6: f32) -> array<f32, 4> {
-    var out_2: array<f32, 4>;
-    var i_6: u32 = 0u;
-    var term_1: f32;
-    var sum_4: f32;
-    var j_4: u32;
-    var prev_1: f32;
-    var i_7: u32 = 0u;
+fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
+    var local_7: bool;
+    var local_8: bool;
+    var local_9: bool;
+    var local_10: bool;
 
-    let _e1 = airlight_zero_terms();
-    out_2 = _e1;
-    let ex = exp(-(x_6));
-    if (x_6 <= 2.6f) {
-        loop {
-            let _e9 = i_6;
-            if (_e9 < AIRLIGHT_TERMS) {
-            } else {
-                break;
-            }
-            {
-                let _e12 = i_6;
-                term_1 = (1f / f32((_e12 + 1u)));
-                let _e19 = term_1;
-                sum_4 = _e19;
-                j_4 = 1u;
-                loop {
-                    let _e23 = j_4;
-                    if (_e23 <= 14u) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e26 = term_1;
-                        let _e27 = i_6;
-                        let _e28 = j_4;
-                        term_1 = (_e26 * (x_6 / f32(((_e27 + _e28) + 1u))));
-                        let _e35 = sum_4;
-                        let _e36 = term_1;
-                        sum_4 = (_e35 + _e36);
-                    }
-                    continuing {
-                        let _e39 = j_4;
-                        j_4 = (_e39 + 1u);
-                    }
-                }
-                let _e41 = i_6;
-                let _e43 = sum_4;
-                out_2[_e41] = (ex * _e43);
-            }
-            continuing {
-                let _e46 = i_6;
-                i_6 = (_e46 + 1u);
-            }
-        }
-    } else {
-        prev_1 = ((1f - ex) / x_6);
-        loop {
-            let _e54 = i_7;
-            if (_e54 < AIRLIGHT_TERMS) {
-            } else {
-                break;
-            }
-            {
-                let _e57 = i_7;
-                if (_e57 > 0u) {
-                    let _e60 = i_7;
-                    let _e62 = prev_1;
-                    prev_1 = (((f32(_e60) * _e62) - ex) / x_6);
-                }
-                let _e66 = i_7;
-                let _e68 = prev_1;
-                out_2[_e66] = _e68;
-            }
-            continuing {
-                let _e70 = i_7;
-                i_7 = (_e70 + 1u);
-            }
-        }
+    if !((half_2.dy > 0f)) {
+        return 0f;
     }
-    let _e72 = out_2;
-    return _e72;
+    if !(half_2.dv_infinite) {
+        local_7 = ((half_2.big_h * half_2.dv) <= 1f);
+    } else {
+        local_7 = false;
+    }
+    let short_exp = local_7;
+    if (half_2.dy <= 0.25f) {
+        if !(!(half_2.second)) {
+            local_9 = (half_2.dy <= (half_2.y_lo * 0.5f));
+        } else {
+            local_9 = true;
+        }
+        let _e33 = local_9;
+        local_8 = _e33;
+    } else {
+        local_8 = false;
+    }
+    let short_len = local_8;
+    if short_exp {
+        local_10 = short_len;
+    } else {
+        local_10 = false;
+    }
+    let _e39 = local_10;
+    if _e39 {
+        let _e40 = airlight_moment_gauss(half_2);
+        return _e40;
+    }
+    let _e41 = airlight_q_zero(half_2);
+    return _e41;
 }
 
-fn airlight_binomial_shift(x_7: array<f32, 4>, c_2: f32) -> array<f32, 4> {
-    var out_3: array<f32, 4>;
-    var j_5: u32 = 0u;
-    var sum_5: f32;
-    var binom: f32;
-    var cp: f32;
-    var ii: u32;
+fn airlight_gauss_rule() -> array<vec2<f32>, 2> {
+    return array<vec2<f32>, 2>(vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(0.8611363f, 0.34785485f));
+}
 
+fn airlight_legendre_table() -> array<f32, 8> {
+    return array<f32, 8>(0.32607257f, 0.17392743f, 0.3325755f, 0.44932565f, -0.532508f, 0.532508f, -0.9397725f, 0.371027f);
+}
+
+fn airlight_node(rule: array<vec2<f32>, 2>, i_4: u32) -> f32 {
+    let x_10 = rule[(i_4 / 2u)].x;
+    return select(x_10, -(x_10), ((i_4 % 2u) == 0u));
+}
+
+fn airlight_legendre(g_3: array<f32, 4>) -> array<f32, 4> {
+    var c_2: array<f32, 4>;
+    var k_4: u32 = 0u;
+    var sum_3: f32;
+    var j_2: u32;
+
+    let _e1 = airlight_legendre_table();
     let _e2 = airlight_zero_terms();
-    out_3 = _e2;
+    c_2 = _e2;
     loop {
-        let _e6 = j_5;
+        let _e6 = k_4;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            sum_5 = 0f;
-            binom = 1f;
-            cp = 1f;
-            ii = 0u;
+            sum_3 = 0f;
+            j_2 = 0u;
             loop {
-                let _e17 = ii;
-                let _e18 = j_5;
-                if (_e17 <= _e18) {
+                let _e13 = j_2;
+                if (_e13 < AIRLIGHT_HALF_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    let _e20 = j_5;
-                    let _e21 = ii;
-                    let i_14 = (_e20 - _e21);
-                    let _e23 = sum_5;
-                    let _e24 = binom;
-                    let _e27 = cp;
-                    sum_5 = (_e23 + ((_e24 * x_7[i_14]) * _e27));
-                    let _e30 = binom;
-                    let _e33 = j_5;
-                    binom = ((_e30 * f32(i_14)) / f32(((_e33 - i_14) + 1u)));
-                    let _e39 = cp;
-                    cp = (_e39 * c_2);
+                    let _e17 = j_2;
+                    let minus_1 = g_3[(2u * _e17)];
+                    let _e21 = j_2;
+                    let plus_1 = g_3[((2u * _e21) + 1u)];
+                    let _e28 = k_4;
+                    let pair = select((plus_1 - minus_1), (plus_1 + minus_1), ((_e28 % 2u) == 0u));
+                    let _e34 = sum_3;
+                    let _e35 = k_4;
+                    let _e38 = j_2;
+                    sum_3 = (_e34 + (_e1[((_e35 * AIRLIGHT_HALF_TERMS) + _e38)] * pair));
                 }
                 continuing {
-                    let _e42 = ii;
-                    ii = (_e42 + 1u);
+                    let _e44 = j_2;
+                    j_2 = (_e44 + 1u);
                 }
             }
-            let _e44 = j_5;
-            let _e46 = sum_5;
-            out_3[_e44] = _e46;
+            let _e46 = k_4;
+            let _e48 = sum_3;
+            c_2[_e46] = _e48;
         }
         continuing {
-            let _e48 = j_5;
-            j_5 = (_e48 + 1u);
+            let _e50 = k_4;
+            k_4 = (_e50 + 1u);
         }
     }
-    let _e50 = out_3;
-    return _e50;
+    let _e52 = c_2;
+    return _e52;
 }
 
-fn airlight_moments(half_4: AirlightHalf, count_2: u32) -> array<f32, 4> {
-    var m_1: array<f32, 4>;
-    var local_10: bool;
-    var local_11: bool;
-    var local_12: bool;
-    var local_13: bool;
-    var r_1: array<f32, 4>;
-    var t_4: array<f32, 16>;
-    var x_8: array<f32, 4>;
-    var i_8: u32 = 0u;
-    var tau: array<f32, 4>;
-    var p_1: f32;
-    var i_9: u32 = 0u;
-    var q: vec2<f32>;
-    var k_10: u32 = 1u;
+fn airlight_expm1_(x_6: f32) -> f32 {
+    var sum_4: f32 = 1f;
+    var i_5: u32 = 0u;
 
-    let _e2 = airlight_zero_terms();
-    m_1 = _e2;
-    if !((half_4.dy > 0f)) {
-        let _e8 = m_1;
+    if (abs(x_6) >= 0.5f) {
+        return (exp(x_6) - 1f);
+    }
+    loop {
+        let _e11 = i_5;
+        if (_e11 < 11u) {
+        } else {
+            break;
+        }
+        {
+            let _e14 = sum_4;
+            let _e17 = i_5;
+            sum_4 = (1f + ((x_6 * _e14) / f32((12u - _e17))));
+        }
+        continuing {
+            let _e24 = i_5;
+            i_5 = (_e24 + 1u);
+        }
+    }
+    let _e26 = sum_4;
+    return (x_6 * _e26);
+}
+
+fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 4> {
+    var out_1: array<f32, 4>;
+    var above: f32 = 0f;
+    var cur: f32 = 0.00000000000000000001f;
+    var odd: f32;
+    var i_6: u32 = 0u;
+    var j_3: u32;
+    var j_4: u32 = 0u;
+    var k_5: u32 = 1u;
+    var k_6: u32 = 0u;
+
+    let _e1 = airlight_zero_terms();
+    out_1 = _e1;
+    if !((lambda > 0f)) {
+        out_1[0] = 2f;
+        let _e8 = out_1;
         return _e8;
     }
-    if !(half_4.dv_infinite) {
-        local_10 = ((half_4.big_h * half_4.dv) <= 1f);
+    let _e9 = airlight_is_finite(lambda);
+    if !(_e9) {
+        let _e11 = out_1;
+        return _e11;
+    }
+    let _e15 = airlight_expm1_(-((lambda + lambda)));
+    let i0_ = (-(_e15) / (lambda + lambda));
+    if (lambda < AIRLIGHT_FLT_EPS) {
+        out_1[0] = i0_;
+        out_1[1] = (lambda * 0.33333334f);
     } else {
-        local_10 = false;
-    }
-    let short_exp = local_10;
-    if (half_4.dy <= 0.25f) {
-        if !(!(half_4.second)) {
-            local_12 = (half_4.dy <= (half_4.y_lo * 0.5f));
-        } else {
-            local_12 = true;
-        }
-        let _e36 = local_12;
-        local_11 = _e36;
-    } else {
-        local_11 = false;
-    }
-    let short_len = local_11;
-    if short_exp {
-        local_13 = short_len;
-    } else {
-        local_13 = false;
-    }
-    let _e42 = local_13;
-    if _e42 {
-        let _e43 = airlight_moments_gauss(half_4);
-        return _e43;
-    }
-    let yc_1 = (half_4.y_lo + (half_4.dy * 0.5f));
-    let _e51 = airlight_q_zero(half_4, (count_2 > 1u));
-    m_1[0] = _e51.y;
-    if (count_2 > 1u) {
-        let _e56 = airlight_zero_terms();
-        r_1 = _e56;
-        if half_4.second {
-            let _e59 = airlight_zero_scratch();
-            t_4 = _e59;
-            airlight_t_moments(half_4, 5u, (&t_4));
-            let _e62 = airlight_zero_terms();
-            x_8 = _e62;
+        if (lambda < f32((2u * AIRLIGHT_TERMS))) {
+            let inv_1 = (1f / lambda);
+            let k0_ = max(AIRLIGHT_TERMS, u32(ceil(lambda)));
+            let per_step = (-2f * log((lambda / f32((2u * k0_)))));
+            let steps = (u32(min(ceil((15.942385f / per_step)), 28f)) + 2u);
+            let top = (k0_ + steps);
+            odd = f32(((2u * top) + 1u));
             loop {
-                let _e66 = i_8;
-                if (_e66 < AIRLIGHT_TERMS) {
+                let _e62 = i_6;
+                if (_e62 < 38u) {
                 } else {
                     break;
                 }
                 {
-                    let _e69 = i_8;
-                    let _e71 = i_8;
-                    let _e75 = t_4[(_e71 + 1u)];
-                    x_8[_e69] = _e75;
+                    let _e65 = i_6;
+                    if (_e65 < top) {
+                        let _e67 = i_6;
+                        let k_12 = (top - _e67);
+                        if (k_12 < AIRLIGHT_TERMS) {
+                            let _e71 = cur;
+                            out_1[k_12] = _e71;
+                        }
+                        let _e72 = above;
+                        let _e73 = odd;
+                        let _e75 = cur;
+                        let below = (_e72 + ((_e73 * inv_1) * _e75));
+                        let _e78 = odd;
+                        odd = (_e78 - 2f);
+                        let _e81 = cur;
+                        above = _e81;
+                        cur = below;
+                        let _e82 = cur;
+                        if (_e82 > 100000000000000000000f) {
+                            let _e85 = cur;
+                            cur = (_e85 * 0.00000000000000000001f);
+                            let _e88 = above;
+                            above = (_e88 * 0.00000000000000000001f);
+                            j_3 = 0u;
+                            loop {
+                                let _e93 = j_3;
+                                if (_e93 < AIRLIGHT_TERMS) {
+                                } else {
+                                    break;
+                                }
+                                {
+                                    let _e96 = j_3;
+                                    let _e98 = out_1[_e96];
+                                    out_1[_e96] = (_e98 * 0.00000000000000000001f);
+                                }
+                                continuing {
+                                    let _e102 = j_3;
+                                    j_3 = (_e102 + 1u);
+                                }
+                            }
+                        }
+                    }
                 }
                 continuing {
-                    let _e77 = i_8;
-                    i_8 = (_e77 + 1u);
+                    let _e105 = i_6;
+                    i_6 = (_e105 + 1u);
                 }
             }
-            let _e79 = x_8;
-            let _e81 = airlight_binomial_shift(_e79, -(yc_1));
-            r_1 = _e81;
-        } else {
-            let delta = half_4.dy;
-            let _e85 = airlight_phi_moments((half_4.big_h * delta));
-            let _e86 = airlight_zero_terms();
-            tau = _e86;
-            p_1 = delta;
+            let _e108 = cur;
+            out_1[0] = _e108;
+            let _e109 = cur;
+            let norm = (i0_ / _e109);
             loop {
-                let _e91 = i_9;
-                if (_e91 < AIRLIGHT_TERMS) {
+                let _e113 = j_4;
+                if (_e113 < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    let _e94 = i_9;
-                    let _e96 = p_1;
-                    let _e97 = i_9;
-                    tau[_e94] = (_e96 * _e85[_e97]);
-                    let _e100 = p_1;
-                    p_1 = (_e100 * delta);
+                    let _e116 = j_4;
+                    let _e118 = out_1[_e116];
+                    out_1[_e116] = (_e118 * norm);
                 }
                 continuing {
-                    let _e103 = i_9;
-                    i_9 = (_e103 + 1u);
+                    let _e121 = j_4;
+                    j_4 = (_e121 + 1u);
                 }
             }
-            let _e105 = tau;
-            let _e109 = airlight_binomial_shift(_e105, (-(delta) * 0.5f));
-            r_1 = _e109;
-        }
-        let b_6 = vec2<f32>(yc_1, -1f);
-        q = _e51;
-        loop {
-            let _e115 = k_10;
-            if (_e115 < AIRLIGHT_TERMS) {
-            } else {
-                break;
-            }
-            {
-                let _e118 = k_10;
-                let _e122 = r_1[(_e118 - 1u)];
-                let _e125 = q;
-                let _e126 = airlight_cmul(b_6, _e125);
-                q = (vec2<f32>(_e122, 0f) - _e126);
-                let _e128 = k_10;
-                let _e131 = q.y;
-                m_1[_e128] = _e131;
-            }
-            continuing {
-                let _e133 = k_10;
-                k_10 = (_e133 + 1u);
+        } else {
+            let e2_1 = exp(-((lambda + lambda)));
+            out_1[0] = i0_;
+            out_1[1] = ((((1f + e2_1) * 0.5f) - i0_) / lambda);
+            loop {
+                let _e136 = k_5;
+                if ((_e136 + 1u) < AIRLIGHT_TERMS) {
+                } else {
+                    break;
+                }
+                {
+                    let _e141 = k_5;
+                    let _e145 = k_5;
+                    let _e149 = out_1[(_e145 - 1u)];
+                    let _e151 = k_5;
+                    let _e157 = k_5;
+                    let _e159 = out_1[_e157];
+                    out_1[(_e141 + 1u)] = (_e149 - ((f32(((2u * _e151) + 1u)) / lambda) * _e159));
+                }
+                continuing {
+                    let _e163 = k_5;
+                    k_5 = (_e163 + 1u);
+                }
             }
         }
     }
-    let _e135 = m_1;
-    return _e135;
-}
-
-fn airlight_bounded(a_5: f32) -> f32 {
-    let _e1 = airlight_hypot_one(a_5);
-    return (1f / (a_5 + _e1));
-}
-
-fn airlight_piece(s_3: AirlightScene, g_4: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf) -> f32 {
-    var j_6: f32 = 0f;
-    var k_11: u32 = 0u;
-
-    let _e5 = airlight_moments(half_5, AIRLIGHT_TERMS);
-    let _e14 = airlight_chebyshev(s_3, g_4, sigma_2, (half_5.y_lo + (half_5.dy * 0.5f)), (half_5.dy * 0.5f));
     loop {
-        let _e19 = k_11;
+        let _e167 = k_6;
+        if (_e167 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e170 = k_6;
+            let _e172 = out_1[_e170];
+            let _e173 = k_6;
+            out_1[_e170] = (_e172 * select(2f, -2f, ((_e173 % 2u) == 1u)));
+        }
+        continuing {
+            let _e183 = k_6;
+            k_6 = (_e183 + 1u);
+        }
+    }
+    let _e185 = out_1;
+    return _e185;
+}
+
+fn airlight_tail_estimate(c_3: array<f32, 4>) -> f32 {
+    return (abs(c_3[3]) + abs(c_3[2]));
+}
+
+fn airlight_error_factor(c_4: array<f32, 4>, m_1: array<f32, 4>) -> f32 {
+    var local_11: bool;
+    var aliasing: f32 = 1f;
+    var i_7: u32 = 0u;
+
+    if !((m_1[0] > 0f)) {
+        return 1f;
+    }
+    let last = (abs(c_4[3]) + abs(c_4[2]));
+    let before = (abs(c_4[1]) + abs(c_4[0]));
+    if !(!((before > 0f))) {
+        local_11 = !((last < before));
+    } else {
+        local_11 = true;
+    }
+    let _e26 = local_11;
+    if _e26 {
+        return 1f;
+    }
+    let q_1 = sqrt((last / before));
+    loop {
+        let _e34 = i_7;
+        if (_e34 < 1u) {
+        } else {
+            break;
+        }
+        {
+            let _e37 = aliasing;
+            aliasing = (_e37 * q_1);
+        }
+        continuing {
+            let _e40 = i_7;
+            i_7 = (_e40 + 1u);
+        }
+    }
+    let truncation = ((q_1 * max(abs(m_1[3]), abs(m_1[2]))) / m_1[0]);
+    let _e50 = aliasing;
+    return min((_e50 + truncation), 1f);
+}
+
+fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
+    return ((0.0000019073486f * mass) * mean_abs);
+}
+
+fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
+    var offset: f32;
+
+    offset = (a_4 - half_3.y_lo);
+    if half_3.second {
+        offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
+    }
+    let _e13 = offset;
+    let x_11 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_11)), (x_11 > 0f));
+}
+
+fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
+    return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
+}
+
+fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+    var r: f32;
+    var vc: f32;
+    var samples: array<f32, 4>;
+    var f_max_1: f32 = 0f;
+    var over_max: f32 = 0f;
+    var g_avg: f32 = 0f;
+    var i_8: u32 = 0u;
+    var sum_5: f32 = 0f;
+    var k_7: u32 = 0u;
+
+    let _e6 = airlight_gauss_rule();
+    r = ((b_4 - a_5) * 0.5f);
+    let _e11 = r;
+    vc = (a_5 + _e11);
+    if half_4.second {
+        r = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
+        let _e22 = r;
+        vc = ((1f / b_4) + _e22);
+    }
+    let _e24 = airlight_zero_terms();
+    samples = _e24;
+    loop {
+        let _e34 = i_8;
+        if (_e34 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e37 = vc;
+            let _e38 = r;
+            let _e39 = i_8;
+            let _e40 = airlight_node(_e6, _e39);
+            let v_5 = (_e37 + (_e38 * _e40));
+            let y_4 = select(v_5, (1f / v_5), half_4.second);
+            let _e47 = airlight_integrand(s_2, g_4, sigma_1, y_4);
+            let over = (1f / (1f + (v_5 * v_5)));
+            let _e53 = i_8;
+            samples[_e53] = (_e47 * over);
+            let _e56 = f_max_1;
+            f_max_1 = max(_e56, abs(_e47));
+            let _e59 = over_max;
+            over_max = max(_e59, over);
+            let _e61 = g_avg;
+            let _e62 = i_8;
+            let _e69 = i_8;
+            let _e71 = samples[_e69];
+            g_avg = (_e61 + ((_e6[(_e62 / 2u)].y * 0.5f) * abs(_e71)));
+        }
+        continuing {
+            let _e76 = i_8;
+            i_8 = (_e76 + 1u);
+        }
+    }
+    let _e78 = samples;
+    let _e79 = airlight_legendre(_e78);
+    let _e81 = r;
+    let _e83 = airlight_exp_legendre_moments((half_4.big_h * _e81));
+    loop {
+        let _e88 = k_7;
+        if (_e88 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e91 = sum_5;
+            let _e92 = k_7;
+            let _e94 = k_7;
+            sum_5 = (_e91 + (_e79[_e92] * _e83[_e94]));
+        }
+        continuing {
+            let _e99 = k_7;
+            k_7 = (_e99 + 1u);
+        }
+    }
+    let _e101 = airlight_factor(half_4, a_5, b_4);
+    let _e102 = r;
+    let w = (_e101 * _e102);
+    let mass_4 = (w * _e83[0]);
+    let _e106 = airlight_tail_estimate(_e79);
+    let _e108 = airlight_error_factor(_e79, _e83);
+    let error_1 = ((mass_4 * _e106) * _e108);
+    let _e110 = sum_5;
+    let _e112 = g_avg;
+    let _e113 = airlight_transform_noise(mass_4, _e112);
+    let _e114 = over_max;
+    let _e116 = f_max_1;
+    let _e117 = airlight_panel_result((w * _e110), error_1, _e113, (mass_4 * _e114), _e116);
+    return _e117;
+}
+
+fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+    var samples_1: array<f32, 4>;
+    var f_max_2: f32 = 0f;
+    var over_max_1: f32 = 0f;
+    var mass_1: f32 = 0f;
+    var p_avg: f32 = 0f;
+    var i_9: u32 = 0u;
+    var m_2: array<f32, 4>;
+
+    let _e6 = airlight_gauss_rule();
+    let r_3 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_3);
+    let _e11 = airlight_zero_terms();
+    samples_1 = _e11;
+    loop {
+        let _e23 = i_9;
+        if (_e23 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e26 = i_9;
+            let _e27 = airlight_node(_e6, _e26);
+            let y_5 = (yc_1 + (r_3 * _e27));
+            let weight = exp(((-(half_5.big_h) * (r_3 * (1f - _e27))) / (y_5 * b_5)));
+            let _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
+            let over_1 = (1f / (1f + (y_5 * y_5)));
+            let _e45 = i_9;
+            samples_1[_e45] = ((_e39 * over_1) * weight);
+            let _e49 = f_max_2;
+            f_max_2 = max(_e49, abs(_e39));
+            let _e52 = over_max_1;
+            over_max_1 = max(_e52, over_1);
+            let _e54 = mass_1;
+            let _e55 = i_9;
+            mass_1 = (_e54 + (_e6[(_e55 / 2u)].y * weight));
+            let _e62 = p_avg;
+            let _e63 = i_9;
+            let _e70 = i_9;
+            let _e72 = samples_1[_e70];
+            p_avg = (_e62 + ((_e6[(_e63 / 2u)].y * 0.5f) * abs(_e72)));
+        }
+        continuing {
+            let _e77 = i_9;
+            i_9 = (_e77 + 1u);
+        }
+    }
+    let _e79 = samples_1;
+    let _e80 = airlight_legendre(_e79);
+    let _e81 = airlight_factor(half_5, a_6, b_5);
+    let w_1 = (_e81 * r_3);
+    let _e83 = airlight_zero_terms();
+    m_2 = _e83;
+    m_2[0] = 2f;
+    let _e89 = airlight_tail_estimate(_e80);
+    let _e91 = m_2;
+    let _e92 = airlight_error_factor(_e80, _e91);
+    let error_2 = (((w_1 * 2f) * _e89) * _e92);
+    let _e100 = p_avg;
+    let _e101 = airlight_transform_noise((w_1 * 2f), _e100);
+    let _e102 = mass_1;
+    let _e104 = over_max_1;
+    let _e106 = f_max_2;
+    let _e107 = airlight_panel_result(((w_1 * 2f) * _e80[0]), error_2, _e101, ((w_1 * _e102) * _e104), _e106);
+    return _e107;
+}
+
+fn airlight_legendre_to_monomial(c_5: array<f32, 4>) -> array<f32, 4> {
+    var hat: array<f32, 4>;
+    var p_prev: array<f32, 4>;
+    var p_cur: array<f32, 4>;
+    var k_8: u32 = 0u;
+    var i_10: u32;
+    var next: array<f32, 4>;
+    var i_11: u32;
+    var shifted: f32;
+
+    let _e1 = airlight_zero_terms();
+    hat = _e1;
+    let _e3 = airlight_zero_terms();
+    p_prev = _e3;
+    let _e5 = airlight_zero_terms();
+    p_cur = _e5;
+    p_cur[0] = 1f;
+    loop {
+        let _e11 = k_8;
+        if (_e11 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            i_10 = 0u;
+            loop {
+                let _e16 = i_10;
+                let _e17 = k_8;
+                if (_e16 <= _e17) {
+                } else {
+                    break;
+                }
+                {
+                    let _e19 = i_10;
+                    let _e21 = hat[_e19];
+                    let _e22 = k_8;
+                    let _e24 = i_10;
+                    let _e26 = p_cur[_e24];
+                    hat[_e19] = (_e21 + (c_5[_e22] * _e26));
+                }
+                continuing {
+                    let _e30 = i_10;
+                    i_10 = (_e30 + 1u);
+                }
+            }
+            let _e32 = k_8;
+            if ((_e32 + 1u) < AIRLIGHT_TERMS) {
+                let _e37 = k_8;
+                let kf_4 = f32(_e37);
+                let _e39 = airlight_zero_terms();
+                next = _e39;
+                i_11 = 0u;
+                loop {
+                    let _e43 = i_11;
+                    let _e44 = k_8;
+                    if (_e43 <= (_e44 + 1u)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        shifted = 0f;
+                        let _e50 = i_11;
+                        if (_e50 > 0u) {
+                            let _e53 = i_11;
+                            let _e57 = p_cur[(_e53 - 1u)];
+                            shifted = _e57;
+                        }
+                        let _e58 = i_11;
+                        let _e63 = shifted;
+                        let _e65 = i_11;
+                        let _e67 = p_prev[_e65];
+                        next[_e58] = (((((kf_4 + kf_4) + 1f) * _e63) - (kf_4 * _e67)) / (kf_4 + 1f));
+                    }
+                    continuing {
+                        let _e74 = i_11;
+                        i_11 = (_e74 + 1u);
+                    }
+                }
+                let _e76 = p_cur;
+                p_prev = _e76;
+                let _e77 = next;
+                p_cur = _e77;
+            }
+        }
+        continuing {
+            let _e79 = k_8;
+            k_8 = (_e79 + 1u);
+        }
+    }
+    let _e81 = hat;
+    return _e81;
+}
+
+fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+    var samples_2: array<f32, 4>;
+    var f_max_3: f32 = 0f;
+    var g_avg_1: f32 = 0f;
+    var i_12: u32 = 0u;
+    var q: array<f32, 4>;
+    var jj: u32 = 0u;
+    var next_1: array<f32, 4>;
+    var i_13: u32;
+    var shifted_1: f32;
+    var s_b: array<f32, 16>;
+    var s_a: array<f32, 16>;
+    var local_12: bool;
+    var decay: f32 = 0f;
+    var local_13: bool;
+    var sum_6: f32 = 0f;
+    var mass_2: f32 = 0f;
+    var ratio: f32 = 1f;
+    var ab: f32 = 0f;
+    var k_9: u32 = 0u;
+    var tail: f32;
+    var l_prev: f32 = 0f;
+    var l_cur: f32 = 1f;
+    var spread: f32 = 0f;
+    var k_10: u32 = 0u;
+
+    let _e6 = airlight_gauss_rule();
+    let r_4 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_4);
+    let _e11 = airlight_zero_terms();
+    samples_2 = _e11;
+    loop {
+        let _e19 = i_12;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = j_6;
-            let _e23 = k_11;
-            let _e25 = k_11;
-            j_6 = (_e22 + (_e14[_e23] * _e5[_e25]));
+            let _e22 = i_12;
+            let _e23 = airlight_node(_e6, _e22);
+            let y_6 = (yc_2 + (r_4 * _e23));
+            let _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            let _e27 = i_12;
+            samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
+            let _e33 = f_max_3;
+            f_max_3 = max(_e33, abs(_e26));
+            let _e36 = g_avg_1;
+            let _e37 = i_12;
+            let _e44 = i_12;
+            let _e46 = samples_2[_e44];
+            g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5f) * abs(_e46)));
         }
         continuing {
-            let _e30 = k_11;
-            k_11 = (_e30 + 1u);
+            let _e51 = i_12;
+            i_12 = (_e51 + 1u);
         }
     }
-    let _e32 = j_6;
-    return _e32;
-}
-
-fn airlight_subdivided(s_4: AirlightScene, g_5: AirlightCanonical, sigma_3: f32, piece: AirlightHalf) -> f32 {
-    var parts: f32 = 1f;
-    var local_14: bool;
-    var total: f32 = 0f;
-    var i_10: u32 = 0u;
-    var hi: f32;
-    var dv_1: f32;
-    var offset: f32;
-    var inf: bool;
-
-    if (piece.dy <= 0.25f) {
-        local_14 = (piece.big_h > 0f);
-    } else {
-        local_14 = false;
-    }
-    let _e15 = local_14;
-    if _e15 {
-        if piece.dv_infinite {
-            parts = 8f;
-        } else {
-            parts = clamp(ceil((piece.big_h * piece.dv)), 1f, 8f);
-        }
-    }
-    let _e25 = parts;
-    if (_e25 <= 1f) {
-        let _e28 = airlight_piece(s_4, g_5, sigma_3, piece);
-        return _e28;
-    }
-    let _e29 = parts;
-    let n_5 = u32(_e29);
-    let _e32 = parts;
-    let step_ = (piece.dy / _e32);
+    let _e53 = samples_2;
+    let _e54 = airlight_legendre(_e53);
+    let alpha = (b_6 / r_4);
+    let beta = (-(yc_2) / r_4);
+    let _e58 = airlight_legendre_to_monomial(_e54);
+    let _e59 = airlight_zero_terms();
+    q = _e59;
     loop {
-        let _e38 = i_10;
-        if (_e38 < 8u) {
+        let _e63 = jj;
+        if (_e63 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e41 = i_10;
-            if (_e41 < n_5) {
-                let _e44 = i_10;
-                let lo_1 = (piece.y_lo + (step_ * f32(_e44)));
-                hi = (lo_1 + step_);
-                let _e50 = i_10;
-                if ((_e50 + 1u) == n_5) {
-                    hi = piece.y_hi;
+            let _e67 = jj;
+            let j_7 = (3u - _e67);
+            let _e69 = airlight_zero_terms();
+            next_1 = _e69;
+            i_13 = 0u;
+            loop {
+                let _e73 = i_13;
+                if (_e73 < AIRLIGHT_TERMS) {
+                } else {
+                    break;
                 }
-                let _e55 = hi;
-                let dy_1 = (_e55 - lo_1);
-                dv_1 = dy_1;
-                offset = (lo_1 - piece.y_lo);
-                inf = false;
-                if piece.second {
-                    if (lo_1 == 0f) {
-                        inf = true;
-                        dv_1 = 0f;
-                    } else {
-                        let _e68 = hi;
-                        dv_1 = (dy_1 / (lo_1 * _e68));
+                {
+                    shifted_1 = 0f;
+                    let _e78 = i_13;
+                    if (_e78 > 0u) {
+                        let _e81 = i_13;
+                        let _e85 = q[(_e81 - 1u)];
+                        shifted_1 = (_e85 * alpha);
                     }
-                    let _e72 = hi;
-                    let _e74 = hi;
-                    offset = ((piece.y_hi - _e72) / (_e74 * piece.y_hi));
+                    let _e87 = i_13;
+                    let _e89 = shifted_1;
+                    let _e90 = i_13;
+                    let _e92 = q[_e90];
+                    next_1[_e87] = (_e89 + (_e92 * beta));
                 }
-                let _e80 = hi;
-                let _e81 = dv_1;
-                let _e82 = inf;
-                let part = AirlightHalf(piece.second, piece.big_h, lo_1, _e80, dy_1, _e81, _e82);
-                let _e84 = total;
-                let _e87 = offset;
-                let _e90 = airlight_piece(s_4, g_5, sigma_3, part);
-                total = (_e84 + (exp((-(piece.big_h) * _e87)) * _e90));
+                continuing {
+                    let _e96 = i_13;
+                    i_13 = (_e96 + 1u);
+                }
+            }
+            let _e99 = next_1[0];
+            next_1[0] = (_e99 + _e58[j_7]);
+            let _e102 = next_1;
+            q = _e102;
+        }
+        continuing {
+            let _e104 = jj;
+            jj = (_e104 + 1u);
+        }
+    }
+    let big_h_2 = half_6.big_h;
+    let _e107 = airlight_zero_scratch();
+    s_b = _e107;
+    airlight_en_scaled((big_h_2 / b_6), 6u, (&s_b));
+    let _e111 = airlight_zero_scratch();
+    s_a = _e111;
+    if (a_7 > 0f) {
+        let _e118 = airlight_is_finite((big_h_2 / a_7));
+        local_12 = _e118;
+    } else {
+        local_12 = false;
+    }
+    let far_1 = local_12;
+    if far_1 {
+        decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
+    }
+    if far_1 {
+        let _e131 = decay;
+        local_13 = (_e131 > 0f);
+    } else {
+        local_13 = false;
+    }
+    let _e135 = local_13;
+    if _e135 {
+        airlight_en_scaled((big_h_2 / a_7), 6u, (&s_a));
+    }
+    if (b_6 > 0f) {
+        ab = (a_7 / b_6);
+    }
+    loop {
+        let _e151 = k_9;
+        if (_e151 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            tail = 0f;
+            let _e156 = decay;
+            if (_e156 > 0f) {
+                let _e159 = decay;
+                let _e161 = ratio;
+                let _e163 = k_9;
+                let _e167 = s_a[(_e163 + 1u)];
+                tail = (((_e159 * a_7) * _e161) * _e167);
+            }
+            let _e169 = k_9;
+            let _e173 = s_b[(_e169 + 1u)];
+            let _e175 = tail;
+            let u = ((b_6 * _e173) - _e175);
+            let _e177 = k_9;
+            if (_e177 == 0u) {
+                mass_2 = u;
+            }
+            let _e180 = sum_6;
+            let _e181 = k_9;
+            let _e183 = q[_e181];
+            sum_6 = (_e180 + (_e183 * u));
+            let _e186 = ratio;
+            let _e187 = ab;
+            ratio = (_e186 * _e187);
+        }
+        continuing {
+            let _e190 = k_9;
+            k_9 = (_e190 + 1u);
+        }
+    }
+    let _e192 = airlight_factor(half_6, a_7, b_6);
+    let _e193 = mass_2;
+    mass_2 = (_e193 * _e192);
+    let x_12 = (abs(alpha) + abs(beta));
+    loop {
+        let _e206 = k_10;
+        if (_e206 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e209 = spread;
+            let _e210 = l_cur;
+            let _e211 = k_10;
+            spread = (_e209 + (_e210 * abs(_e54[_e211])));
+            let _e216 = k_10;
+            let kf_5 = f32(_e216);
+            let _e222 = l_cur;
+            let _e224 = l_prev;
+            let next_2 = ((((((kf_5 + kf_5) + 1f) * x_12) * _e222) + (kf_5 * _e224)) / (kf_5 + 1f));
+            let _e230 = l_cur;
+            l_prev = _e230;
+            l_cur = next_2;
+        }
+        continuing {
+            let _e232 = k_10;
+            k_10 = (_e232 + 1u);
+        }
+    }
+    let _e234 = mass_2;
+    let _e235 = airlight_tail_estimate(_e54);
+    let _e238 = mass_2;
+    let _e240 = spread;
+    let error_3 = ((_e234 * _e235) + ((AIRLIGHT_FLT_EPS * _e238) * _e240));
+    let _e243 = sum_6;
+    let _e245 = mass_2;
+    let _e246 = g_avg_1;
+    let _e247 = airlight_transform_noise(_e245, _e246);
+    let _e248 = mass_2;
+    let _e249 = f_max_3;
+    let _e250 = airlight_panel_result((_e192 * _e243), error_3, _e247, _e248, _e249);
+    return _e250;
+}
+
+fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+    var local_14: bool;
+    var local_15: bool;
+
+    if half_7.second {
+        local_14 = (a_8 <= (b_7 * 0.25f));
+    } else {
+        local_14 = false;
+    }
+    let _e13 = local_14;
+    if _e13 {
+        let _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        return _e14;
+    }
+    if half_7.second {
+        local_15 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    } else {
+        local_15 = false;
+    }
+    let _e26 = local_15;
+    if _e26 {
+        let _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        return _e27;
+    }
+    let _e28 = airlight_v_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+    return _e28;
+}
+
+fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+    var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
+    var count_1: u32 = 1u;
+    var budget: u32 = 15u;
+    var total: f32 = 0f;
+    var round_: u32 = 0u;
+    var errors: f32;
+    var mass_3: f32;
+    var worst: u32;
+    var i_14: u32;
+    var local_16: bool;
+    var local_17: bool;
+    var local_18: bool;
+    var i_15: u32 = 0u;
+
+    if !((hi > lo)) {
+        return 0f;
+    }
+    let _e38 = airlight_panel(s_6, g_8, sigma_5, half_8, lo, hi);
+    let _e39 = (*f_max_4);
+    (*f_max_4) = max(_e39, _e38.f_max);
+    list[0] = vec4<f32>(lo, hi, _e38.value, _e38.error);
+    mass_over_1[0] = _e38.mass_over;
+    loop {
+        let _e56 = round_;
+        if (_e56 < AIRLIGHT_MAX_PANELS) {
+        } else {
+            break;
+        }
+        {
+            total = 0f;
+            errors = 0f;
+            mass_3 = 0f;
+            worst = 0u;
+            i_14 = 0u;
+            loop {
+                let _e68 = i_14;
+                if (_e68 < AIRLIGHT_PANEL_LIST) {
+                } else {
+                    break;
+                }
+                {
+                    let _e71 = i_14;
+                    let _e72 = count_1;
+                    if (_e71 < _e72) {
+                        let _e74 = total;
+                        let _e75 = i_14;
+                        let _e78 = list[_e75].z;
+                        total = (_e74 + _e78);
+                        let _e80 = errors;
+                        let _e81 = i_14;
+                        let _e84 = list[_e81].w;
+                        errors = (_e80 + _e84);
+                        let _e86 = mass_3;
+                        let _e87 = i_14;
+                        let _e89 = mass_over_1[_e87];
+                        mass_3 = (_e86 + _e89);
+                        let _e91 = i_14;
+                        let _e94 = list[_e91].w;
+                        let _e95 = worst;
+                        let _e98 = list[_e95].w;
+                        if (_e94 > _e98) {
+                            let _e100 = i_14;
+                            worst = _e100;
+                        }
+                    }
+                }
+                continuing {
+                    let _e102 = i_14;
+                    i_14 = (_e102 + 1u);
+                }
+            }
+            let _e105 = total;
+            let _e108 = (*f_max_4);
+            let _e110 = mass_3;
+            let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e105), ((AIRLIGHT_PANEL_FLOOR * _e108) * _e110)));
+            let _e114 = errors;
+            if !((_e114 <= goal)) {
+                let _e119 = worst;
+                let _e122 = list[_e119].w;
+                local_16 = !((_e122 > 0f));
+            } else {
+                local_16 = true;
+            }
+            let _e127 = local_16;
+            if !(_e127) {
+                let _e131 = budget;
+                local_17 = (_e131 < 2u);
+            } else {
+                local_17 = true;
+            }
+            let _e135 = local_17;
+            if !(_e135) {
+                let _e139 = count_1;
+                local_18 = (_e139 == AIRLIGHT_PANEL_LIST);
+            } else {
+                local_18 = true;
+            }
+            let _e143 = local_18;
+            if _e143 {
+                let _e144 = total;
+                return _e144;
+            }
+            let _e145 = worst;
+            let a_17 = list[_e145].x;
+            let _e149 = worst;
+            let b_14 = list[_e149].y;
+            if !(((b_14 - a_17) > (AIRLIGHT_FLT_EPS * b_14))) {
+                let _e158 = worst;
+                list[_e158].w = 0f;
+            } else {
+                let mid = (a_17 + ((b_14 - a_17) * 0.5f));
+                let _e166 = airlight_panel(s_6, g_8, sigma_5, half_8, a_17, mid);
+                let _e167 = airlight_panel(s_6, g_8, sigma_5, half_8, mid, b_14);
+                let _e168 = (*f_max_4);
+                (*f_max_4) = max(_e168, max(_e166.f_max, _e167.f_max));
+                let _e173 = worst;
+                list[_e173] = vec4<f32>(a_17, mid, _e166.value, _e166.error);
+                let _e178 = worst;
+                mass_over_1[_e178] = _e166.mass_over;
+                let _e181 = count_1;
+                list[_e181] = vec4<f32>(mid, b_14, _e167.value, _e167.error);
+                let _e186 = count_1;
+                mass_over_1[_e186] = _e167.mass_over;
+                let _e189 = count_1;
+                count_1 = (_e189 + 1u);
+                let _e192 = budget;
+                budget = (_e192 - 2u);
             }
         }
         continuing {
-            let _e94 = i_10;
-            i_10 = (_e94 + 1u);
+            let _e196 = round_;
+            round_ = (_e196 + 1u);
         }
     }
-    let _e96 = total;
-    return _e96;
+    total = 0f;
+    loop {
+        let _e201 = i_15;
+        if (_e201 < AIRLIGHT_PANEL_LIST) {
+        } else {
+            break;
+        }
+        {
+            let _e204 = i_15;
+            let _e205 = count_1;
+            if (_e204 < _e205) {
+                let _e207 = total;
+                let _e208 = i_15;
+                let _e211 = list[_e208].z;
+                total = (_e207 + _e211);
+            }
+        }
+        continuing {
+            let _e214 = i_15;
+            i_15 = (_e214 + 1u);
+        }
+    }
+    let _e216 = total;
+    return _e216;
 }
 
-fn airlight_crossings(sigma_4: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32> {
+fn airlight_bounded(a_9: f32) -> f32 {
+    let _e1 = airlight_hypot_one(a_9);
+    return (1f / (a_9 + _e1));
+}
+
+fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_1: f32 = -1f;
 
-    let a_9 = (k_12 + (sigma_4 * d_el));
-    let b_7 = -((d_c + d_c));
-    let c_6 = (k_12 - (sigma_4 * d_el));
-    let disc_1 = ((b_7 * b_7) - ((4f * a_9) * c_6));
+    let a_18 = (k_11 + (sigma_6 * d_el));
+    let b_15 = -((d_c + d_c));
+    let c_8 = (k_11 - (sigma_6 * d_el));
+    let disc_1 = ((b_15 * b_15) - ((4f * a_18) * c_8));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_7 < 0f) {
+    if (b_15 < 0f) {
         sb = -1f;
     }
     let _e26 = sb;
-    let q_1 = (-0.5f * (b_7 + (_e26 * sqrt(disc_1))));
-    if (q_1 != 0f) {
-        r1_ = (c_6 / q_1);
+    let q_2 = (-0.5f * (b_15 + (_e26 * sqrt(disc_1))));
+    if (q_2 != 0f) {
+        r1_ = (c_8 / q_2);
     }
-    if (a_9 != 0f) {
-        r2_1 = (q_1 / a_9);
+    if (a_18 != 0f) {
+        r2_1 = (q_2 / a_18);
     }
     let _e42 = r1_;
     let _e43 = r2_1;
     return vec2<f32>(_e42, _e43);
 }
 
-fn airlight_half(s_5: AirlightScene, g_6: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, isotropic: bool) -> f32 {
+fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
-    var i_11: u32 = 0u;
-    var local_15: bool;
-    var i_12: u32 = 0u;
-    var j_7: u32;
+    var i_16: u32 = 0u;
+    var local_19: bool;
+    var i_17: u32 = 0u;
+    var j_5: u32;
     var total_1: f32 = 0f;
-    var lo: f32;
-    var i_13: u32 = 0u;
+    var lo_1: f32;
+    var i_18: u32 = 0u;
     var hi_1: f32;
-    var local_16: bool;
-    var dv_2: f32;
-    var offset_1: f32;
-    var inf_1: bool;
-    var local_17: bool;
+    var local_20: bool;
+    var local_21: bool;
 
     if isotropic {
-        let _e6 = airlight_moments(half_6, 1u);
-        let _e12 = airlight_integrand(s_5, g_6, sigma_5, (half_6.y_lo + (half_6.dy * 0.5f)));
-        return (_e12 * _e6[0]);
+        let _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5f)));
+        let _e12 = airlight_moment_zero(half_9);
+        return (_e11 * _e12);
     }
-    if (s_5.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_5.light_param_a;
-        k_out = s_5.light_param_b;
-        let _e28 = k_in;
-        let _e29 = k_out;
-        let width_1 = (_e28 - _e29);
+    if (s_7.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_7.light_param_a;
+        k_out = s_7.light_param_b;
+        let _e27 = k_in;
+        let _e28 = k_out;
+        let width_1 = (_e27 - _e28);
         if (width_1 <= AIRLIGHT_FLT_EPS) {
-            let _e33 = k_out;
-            k_in = (_e33 + (width_1 * 0.5f));
-            let _e37 = k_in;
-            k_out = _e37;
+            let _e32 = k_out;
+            k_in = (_e32 + (width_1 * 0.5f));
+            let _e36 = k_in;
+            k_out = _e36;
         }
-        let _e40 = k_in;
-        let _e41 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e40);
-        let _e44 = k_out;
-        let _e45 = airlight_crossings(sigma_5, g_6.d_el, g_6.d_c, _e44);
-        cuts = array<f32, 4>(_e41.x, _e41.y, _e45.x, _e45.y);
+        let _e39 = k_in;
+        let _e40 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e39);
+        let _e43 = k_out;
+        let _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
+        cuts = array<f32, 4>(_e40.x, _e40.y, _e44.x, _e44.y);
         loop {
-            let _e53 = i_11;
-            if (_e53 < 4u) {
+            let _e52 = i_16;
+            if (_e52 < 4u) {
             } else {
                 break;
             }
             {
-                let _e56 = i_11;
-                let _e58 = cuts[_e56];
-                if (_e58 > half_6.y_lo) {
-                    let _e63 = i_11;
-                    let _e65 = cuts[_e63];
-                    local_15 = (_e65 < half_6.y_hi);
+                let _e55 = i_16;
+                let _e57 = cuts[_e55];
+                if (_e57 > half_9.y_lo) {
+                    let _e62 = i_16;
+                    let _e64 = cuts[_e62];
+                    local_19 = (_e64 < half_9.y_hi);
                 } else {
-                    local_15 = false;
+                    local_19 = false;
                 }
-                let _e69 = local_15;
-                if !(_e69) {
-                    let _e71 = i_11;
-                    cuts[_e71] = 2f;
+                let _e68 = local_19;
+                if !(_e68) {
+                    let _e70 = i_16;
+                    cuts[_e70] = 2f;
                 }
             }
             continuing {
-                let _e75 = i_11;
-                i_11 = (_e75 + 1u);
+                let _e74 = i_16;
+                i_16 = (_e74 + 1u);
             }
         }
         loop {
-            let _e79 = i_12;
-            if (_e79 < 3u) {
+            let _e78 = i_17;
+            if (_e78 < 3u) {
             } else {
                 break;
             }
             {
-                j_7 = 0u;
+                j_5 = 0u;
                 loop {
-                    let _e84 = j_7;
-                    let _e86 = i_12;
-                    if (_e84 < (3u - _e86)) {
+                    let _e83 = j_5;
+                    let _e85 = i_17;
+                    if (_e83 < (3u - _e85)) {
                     } else {
                         break;
                     }
                     {
-                        let _e89 = j_7;
-                        let _e91 = cuts[_e89];
-                        let _e92 = j_7;
-                        let _e96 = cuts[(_e92 + 1u)];
-                        if (_e91 > _e96) {
-                            let _e98 = j_7;
-                            let t_7 = cuts[_e98];
-                            let _e101 = j_7;
-                            let _e103 = j_7;
-                            let _e107 = cuts[(_e103 + 1u)];
-                            cuts[_e101] = _e107;
-                            let _e108 = j_7;
-                            cuts[(_e108 + 1u)] = t_7;
+                        let _e88 = j_5;
+                        let _e90 = cuts[_e88];
+                        let _e91 = j_5;
+                        let _e95 = cuts[(_e91 + 1u)];
+                        if (_e90 > _e95) {
+                            let _e97 = j_5;
+                            let t_5 = cuts[_e97];
+                            let _e100 = j_5;
+                            let _e102 = j_5;
+                            let _e106 = cuts[(_e102 + 1u)];
+                            cuts[_e100] = _e106;
+                            let _e107 = j_5;
+                            cuts[(_e107 + 1u)] = t_5;
                         }
                     }
                     continuing {
-                        let _e113 = j_7;
-                        j_7 = (_e113 + 1u);
+                        let _e112 = j_5;
+                        j_5 = (_e112 + 1u);
                     }
                 }
             }
             continuing {
-                let _e116 = i_12;
-                i_12 = (_e116 + 1u);
+                let _e115 = i_17;
+                i_17 = (_e115 + 1u);
             }
         }
     }
-    let _e119 = cuts[0];
-    if (_e119 >= 2f) {
-        let _e122 = airlight_piece(s_5, g_6, sigma_5, half_6);
-        return _e122;
-    }
-    lo = half_6.y_lo;
+    lo_1 = half_9.y_lo;
     loop {
-        let _e129 = i_13;
-        if (_e129 < 5u) {
+        let _e123 = i_18;
+        if (_e123 < 5u) {
         } else {
             break;
         }
         {
-            hi_1 = half_6.y_hi;
-            let _e134 = i_13;
-            if (_e134 < 4u) {
-                let _e139 = i_13;
-                let _e141 = cuts[_e139];
-                local_16 = (_e141 < 2f);
+            hi_1 = half_9.y_hi;
+            let _e128 = i_18;
+            if (_e128 < 4u) {
+                let _e133 = i_18;
+                let _e135 = cuts[_e133];
+                local_20 = (_e135 < 2f);
             } else {
-                local_16 = false;
+                local_20 = false;
             }
-            let _e145 = local_16;
-            if _e145 {
-                let _e146 = i_13;
-                let _e148 = cuts[_e146];
-                hi_1 = _e148;
+            let _e139 = local_20;
+            if _e139 {
+                let _e140 = i_18;
+                let _e142 = cuts[_e140];
+                hi_1 = _e142;
             }
-            let _e149 = hi_1;
-            let _e150 = lo;
-            if (_e149 > _e150) {
-                let _e152 = hi_1;
-                let _e153 = lo;
-                let dy_2 = (_e152 - _e153);
-                dv_2 = dy_2;
-                let _e156 = lo;
-                offset_1 = (_e156 - half_6.y_lo);
-                inf_1 = false;
-                if half_6.second {
-                    let _e163 = lo;
-                    if (_e163 == 0f) {
-                        inf_1 = true;
-                        dv_2 = 0f;
-                    } else {
-                        let _e168 = lo;
-                        let _e169 = hi_1;
-                        dv_2 = (dy_2 / (_e168 * _e169));
-                    }
-                    let _e173 = hi_1;
-                    let _e175 = hi_1;
-                    offset_1 = ((half_6.y_hi - _e173) / (_e175 * half_6.y_hi));
-                }
-                let _e181 = lo;
-                let _e182 = hi_1;
-                let _e183 = dv_2;
-                let _e184 = inf_1;
-                let piece_1 = AirlightHalf(half_6.second, half_6.big_h, _e181, _e182, dy_2, _e183, _e184);
-                let _e186 = total_1;
-                let _e189 = offset_1;
-                let _e192 = airlight_subdivided(s_5, g_6, sigma_5, piece_1);
-                total_1 = (_e186 + (exp((-(half_6.big_h) * _e189)) * _e192));
-                let _e195 = hi_1;
-                lo = _e195;
+            let _e143 = hi_1;
+            let _e144 = lo_1;
+            if (_e143 > _e144) {
+                let _e146 = total_1;
+                let _e147 = lo_1;
+                let _e148 = hi_1;
+                let _e149 = airlight_integrate_piece(s_7, g_9, sigma_7, half_9, _e147, _e148, f_max_5);
+                total_1 = (_e146 + _e149);
+                let _e151 = hi_1;
+                lo_1 = _e151;
             }
-            let _e196 = i_13;
-            if (_e196 < 4u) {
-                let _e201 = i_13;
-                let _e203 = cuts[_e201];
-                local_17 = (_e203 >= 2f);
+            let _e152 = i_18;
+            if (_e152 < 4u) {
+                let _e157 = i_18;
+                let _e159 = cuts[_e157];
+                local_21 = (_e159 >= 2f);
             } else {
-                local_17 = false;
+                local_21 = false;
             }
-            let _e207 = local_17;
-            if _e207 {
+            let _e163 = local_21;
+            if _e163 {
                 break;
             }
         }
         continuing {
-            let _e209 = i_13;
-            i_13 = (_e209 + 1u);
+            let _e165 = i_18;
+            i_18 = (_e165 + 1u);
         }
     }
-    let _e211 = total_1;
-    return _e211;
+    let _e167 = total_1;
+    return _e167;
 }
 
-fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_9: f32, j_8: f32) -> f32 {
-    let plain = (((((2f * sigma_s) * intensity) / h_1) * exp(-(x_9))) * j_8);
-    let _e13 = airlight_is_finite(plain);
+fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s) * intensity) / h_1) * exp(-(x_7))) * j_6);
+    let _e13 = airlight_is_finite(plain_1);
     if _e13 {
-        return plain;
+        return plain_1;
     }
-    if !((abs(j_8) > 0f)) {
+    if !((abs(j_6) > 0f)) {
         return 0f;
     }
-    return (sign(j_8) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_9) + log(abs(j_8)))));
+    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-fn airlight_on_line(s_6: AirlightScene, g_7: AirlightCanonical) -> f32 {
-    var local_18: bool;
+fn airlight_on_line(s_8: AirlightScene, g_10: AirlightCanonical) -> f32 {
+    var local_22: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    if !(g_7.t_hi_infinite) {
-        local_18 = (g_7.x_h > g_7.t_hi);
+    if !(g_10.t_hi_infinite) {
+        local_22 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_18 = false;
+        local_22 = false;
     }
-    let _e10 = local_18;
+    let _e10 = local_22;
     if _e10 {
-        let _e16 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, -(g_7.d_el));
-        let _e22 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, 1f);
+        let _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
+        let _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1f);
         let f = (_e16 * _e22);
-        let r0_ = (g_7.x_h - g_7.t_lo);
-        let r1_1 = (g_7.x_h - g_7.t_hi);
-        let _e41 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * r0_), (f * (((g_7.t_hi - g_7.t_lo) / r0_) / r1_1)));
+        let r0_ = (g_10.x_h - g_10.t_lo);
+        let r1_1 = (g_10.x_h - g_10.t_hi);
+        let _e41 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, (s_8.sigma_t * r0_), (f * (((g_10.t_hi - g_10.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_6.light_kind, s_6.light_param_a, s_6.light_param_b, g_7.d_el);
-    let _e52 = airlight_phase(s_6.phase_kind, s_6.phase_param_a, s_6.phase_param_b, s_6.phase_param_c, -1f);
+    let _e46 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, g_10.d_el);
+    let _e52 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, -1f);
     let f_1 = (_e46 * _e52);
-    let s0_ = (g_7.t_lo - g_7.x_h);
-    let s1_ = (g_7.t_hi - g_7.x_h);
-    if (s_6.sigma_t == 0f) {
+    let s0_ = (g_10.t_lo - g_10.x_h);
+    let s1_ = (g_10.t_hi - g_10.x_h);
+    if (s_8.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_7.t_hi_infinite) {
+        if !(g_10.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, 0f, (f_1 * _e75));
+        let _e77 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, 0f, (f_1 * _e75));
         return _e77;
     }
-    let two_st = (s_6.sigma_t + s_6.sigma_t);
+    let two_st = (s_8.sigma_t + s_8.sigma_t);
     let _e81 = airlight_zero_scratch();
     e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
     let _e91 = e2_[1];
-    let _e94 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, (s_6.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if !(g_7.t_hi_infinite) {
+    let _e94 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, (s_8.sigma_t * s0_), ((f_1 * _e91) / s0_));
+    if !(g_10.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
         let _e111 = e2_[1];
-        let _e114 = airlight_weighted(s_6.sigma_s, s_6.intensity, 2f, ((s_6.sigma_t * (s1_ - s0_)) + (s_6.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        let _e114 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, ((s_8.sigma_t * (s1_ - s0_)) + (s_8.sigma_t * s1_)), ((f_1 * _e111) / s1_));
         tail_1 = _e114;
     }
     let _e115 = airlight_is_finite(_e94);
@@ -1972,10 +2118,10 @@ fn airlight_on_line(s_6: AirlightScene, g_7: AirlightCanonical) -> f32 {
     return (_e94 - _e117);
 }
 
-fn airlight_optical(big_h: f32, dv_3: f32, infinite: bool) -> f32 {
+fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     var negligible: bool;
 
-    negligible = ((big_h * dv_3) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h * dv_1) < AIRLIGHT_FLT_EPS);
     if infinite {
         negligible = (big_h < 0.000000000000014210855f);
     }
@@ -1983,61 +2129,62 @@ fn airlight_optical(big_h: f32, dv_3: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_in_scatter_canonical(s_7: AirlightScene, g_8: AirlightCanonical) -> AirlightResult {
-    var local_19: bool;
-    var local_20: bool;
-    var local_21: bool;
-    var local_22: bool;
-    var gap: f32 = 0f;
+fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) -> AirlightResult {
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
+    var gap: f32 = 0f;
     var local_27: bool;
     var local_28: bool;
     var local_29: bool;
-    var total_2: f32 = 0f;
-    var t_end: f32;
     var local_30: bool;
     var local_31: bool;
-    var y_lo: f32 = 0f;
-    var dv_4: f32 = 0f;
-    var dy: f32;
-    var infinite_1: bool = true;
     var local_32: bool;
     var local_33: bool;
+    var total_2: f32 = 0f;
+    var f_max_6: f32 = 0f;
+    var t_end: f32;
+    var local_34: bool;
+    var local_35: bool;
+    var y_lo: f32 = 0f;
+    var dv_2: f32 = 0f;
+    var dy: f32;
+    var infinite_1: bool = true;
+    var local_36: bool;
+    var local_37: bool;
 
-    let t0_ = g_8.t_lo;
-    let t1_ = g_8.t_hi;
-    if !(g_8.t_hi_infinite) {
-        local_19 = (t1_ > t0_);
+    let t0_ = g_11.t_lo;
+    let t1_ = g_11.t_hi;
+    if !(g_11.t_hi_infinite) {
+        local_23 = (t1_ > t0_);
     } else {
-        local_19 = true;
+        local_23 = true;
     }
-    let _e10 = local_19;
+    let _e10 = local_23;
     if !(!(_e10)) {
-        local_20 = ((s_7.sigma_s * s_7.intensity) == 0f);
+        local_24 = ((s_9.sigma_s * s_9.intensity) == 0f);
     } else {
-        local_20 = true;
+        local_24 = true;
     }
-    let _e21 = local_20;
+    let _e21 = local_24;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_2 = g_8.h;
-    let x_h = g_8.x_h;
+    let h_2 = g_11.h;
+    let x_h = g_11.x_h;
     if (t0_ <= x_h) {
-        if !(g_8.t_hi_infinite) {
-            local_22 = (x_h <= t1_);
+        if !(g_11.t_hi_infinite) {
+            local_26 = (x_h <= t1_);
         } else {
-            local_22 = true;
+            local_26 = true;
         }
-        let _e36 = local_22;
-        local_21 = _e36;
+        let _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_21 = false;
+        local_25 = false;
     }
-    let inside = local_21;
+    let inside = local_25;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -2047,205 +2194,201 @@ fn airlight_in_scatter_canonical(s_7: AirlightScene, g_8: AirlightCanonical) -> 
     }
     if !(inside) {
         let _e48 = gap;
-        local_23 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_27 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_23 = false;
+        local_27 = false;
     }
-    let _e55 = local_23;
+    let _e55 = local_27;
     if _e55 {
-        let _e56 = airlight_on_line(s_7, g_8);
+        let _e56 = airlight_on_line(s_9, g_11);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_2 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_2 = (s_7.sigma_t * h_2);
-    if !((s_7.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_7.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_25 = (s_7.light_param_a == 0f);
+    let big_h_3 = (s_9.sigma_t * h_2);
+    if !((s_9.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_29 = (s_9.light_param_a == 0f);
         } else {
-            local_25 = false;
+            local_29 = false;
         }
-        let _e83 = local_25;
-        local_24 = _e83;
+        let _e83 = local_29;
+        local_28 = _e83;
     } else {
-        local_24 = true;
+        local_28 = true;
     }
-    let _e85 = local_24;
+    let _e85 = local_28;
     if _e85 {
-        if !((s_7.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_7.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_28 = (s_7.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_32 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_28 = true;
+                local_32 = true;
             }
-            let _e104 = local_28;
+            let _e104 = local_32;
             if _e104 {
-                local_29 = (s_7.phase_param_a == 0f);
-            } else {
-                local_29 = false;
-            }
-            let _e111 = local_29;
-            local_27 = _e111;
-        } else {
-            local_27 = true;
-        }
-        let _e113 = local_27;
-        local_26 = _e113;
-    } else {
-        local_26 = false;
-    }
-    let isotropic_1 = local_26;
-    if (t0_ < x_h) {
-        let a_s = ((x_h - t0_) / h_2);
-        t_end = x_h;
-        if !(g_8.t_hi_infinite) {
-            local_30 = (t1_ < x_h);
-        } else {
-            local_30 = false;
-        }
-        let _e128 = local_30;
-        if _e128 {
-            t_end = t1_;
-        }
-        let _e129 = t_end;
-        let a_e = ((x_h - _e129) / h_2);
-        let _e132 = airlight_hypot_one(a_s);
-        let _e133 = airlight_hypot_one(a_e);
-        let _e134 = airlight_bounded(a_s);
-        let _e135 = airlight_bounded(a_e);
-        let _e136 = t_end;
-        let dy_3 = (((((_e136 - t0_) / h_2) * (1f + ((a_s + a_e) / (_e132 + _e133)))) * _e134) * _e135);
-        let _e149 = airlight_optical(big_h_2, dy_3, false);
-        let half_7 = AirlightHalf(false, _e149, _e134, _e135, dy_3, dy_3, false);
-        let _e153 = airlight_half(s_7, g_8, -1f, half_7, isotropic_1);
-        let _e154 = total_2;
-        let _e158 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, (big_h_2 * _e132), _e153);
-        total_2 = (_e154 + _e158);
-    }
-    if !(g_8.t_hi_infinite) {
-        local_31 = (t1_ > x_h);
-    } else {
-        local_31 = true;
-    }
-    let _e166 = local_31;
-    if _e166 {
-        let t_start = max(t0_, x_h);
-        let a_s_1 = ((t_start - x_h) / h_2);
-        let _e170 = airlight_hypot_one(a_s_1);
-        let _e171 = airlight_bounded(a_s_1);
-        dy = _e171;
-        let a_e_1 = ((t1_ - x_h) / h_2);
-        if !(g_8.t_hi_infinite) {
-            let _e185 = airlight_is_finite(a_e_1);
-            local_32 = _e185;
-        } else {
-            local_32 = false;
-        }
-        let _e187 = local_32;
-        if _e187 {
-            let _e188 = airlight_bounded(a_e_1);
-            let _e192 = airlight_hypot_one(a_e_1);
-            let dv_end = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e170 + _e192))));
-            if (_e188 > 0f) {
-                let _e202 = airlight_is_finite(dv_end);
-                local_33 = _e202;
+                local_33 = (s_9.phase_param_a == 0f);
             } else {
                 local_33 = false;
             }
-            let _e204 = local_33;
-            if _e204 {
-                y_lo = _e188;
-                dv_4 = dv_end;
-                let _e205 = dv_4;
-                let _e206 = y_lo;
-                dy = ((_e205 * _e206) * _e171);
+            let _e111 = local_33;
+            local_31 = _e111;
+        } else {
+            local_31 = true;
+        }
+        let _e113 = local_31;
+        local_30 = _e113;
+    } else {
+        local_30 = false;
+    }
+    let isotropic_1 = local_30;
+    if (t0_ < x_h) {
+        let a_s = ((x_h - t0_) / h_2);
+        t_end = x_h;
+        if !(g_11.t_hi_infinite) {
+            local_34 = (t1_ < x_h);
+        } else {
+            local_34 = false;
+        }
+        let _e130 = local_34;
+        if _e130 {
+            t_end = t1_;
+        }
+        let _e131 = t_end;
+        let a_e = ((x_h - _e131) / h_2);
+        let _e134 = airlight_hypot_one(a_s);
+        let _e135 = airlight_hypot_one(a_e);
+        let _e136 = airlight_bounded(a_s);
+        let _e137 = airlight_bounded(a_e);
+        let _e138 = t_end;
+        let dy_1 = (((((_e138 - t0_) / h_2) * (1f + ((a_s + a_e) / (_e134 + _e135)))) * _e136) * _e137);
+        let _e151 = airlight_optical(big_h_3, dy_1, false);
+        let half_10 = AirlightHalf(false, _e151, _e136, _e137, dy_1, dy_1, false);
+        let _e155 = airlight_half(s_9, g_11, -1f, half_10, isotropic_1, (&f_max_6));
+        let _e156 = total_2;
+        let _e160 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_3 * _e134), _e155);
+        total_2 = (_e156 + _e160);
+    }
+    if !(g_11.t_hi_infinite) {
+        local_35 = (t1_ > x_h);
+    } else {
+        local_35 = true;
+    }
+    let _e168 = local_35;
+    if _e168 {
+        let t_start = max(t0_, x_h);
+        let a_s_1 = ((t_start - x_h) / h_2);
+        let _e172 = airlight_hypot_one(a_s_1);
+        let _e173 = airlight_bounded(a_s_1);
+        dy = _e173;
+        let a_e_1 = ((t1_ - x_h) / h_2);
+        if !(g_11.t_hi_infinite) {
+            let _e187 = airlight_is_finite(a_e_1);
+            local_36 = _e187;
+        } else {
+            local_36 = false;
+        }
+        let _e189 = local_36;
+        if _e189 {
+            let _e190 = airlight_bounded(a_e_1);
+            let _e194 = airlight_hypot_one(a_e_1);
+            let dv_end = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e172 + _e194))));
+            if (_e190 > 0f) {
+                let _e204 = airlight_is_finite(dv_end);
+                local_37 = _e204;
+            } else {
+                local_37 = false;
+            }
+            let _e206 = local_37;
+            if _e206 {
+                y_lo = _e190;
+                dv_2 = dv_end;
+                let _e207 = dv_2;
+                let _e208 = y_lo;
+                dy = ((_e207 * _e208) * _e173);
                 infinite_1 = false;
             }
         }
-        let _e211 = dv_4;
-        let _e212 = infinite_1;
-        let _e213 = airlight_optical(big_h_2, _e211, _e212);
-        let _e214 = y_lo;
-        let _e215 = dy;
-        let _e216 = dv_4;
-        let _e217 = infinite_1;
-        let half_8 = AirlightHalf(true, _e213, _e214, _e171, _e215, _e216, _e217);
-        let _e220 = airlight_half(s_7, g_8, 1f, half_8, isotropic_1);
-        let _e221 = total_2;
-        let _e229 = airlight_weighted(s_7.sigma_s, s_7.intensity, h_2, ((s_7.sigma_t * (t_start - t0_)) + (big_h_2 * _e170)), _e220);
-        total_2 = (_e221 + _e229);
+        let _e213 = dv_2;
+        let _e214 = infinite_1;
+        let _e215 = airlight_optical(big_h_3, _e213, _e214);
+        let _e216 = y_lo;
+        let _e217 = dy;
+        let _e218 = dv_2;
+        let _e219 = infinite_1;
+        let half_11 = AirlightHalf(true, _e215, _e216, _e173, _e217, _e218, _e219);
+        let _e222 = airlight_half(s_9, g_11, 1f, half_11, isotropic_1, (&f_max_6));
+        let _e223 = total_2;
+        let _e231 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, ((s_9.sigma_t * (t_start - t0_)) + (big_h_3 * _e172)), _e222);
+        total_2 = (_e223 + _e231);
     }
-    let _e231 = total_2;
-    return AirlightResult(max(_e231, 0f), AIRLIGHT_STATUS_OK);
+    let _e233 = total_2;
+    return AirlightResult(max(_e233, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_34: bool;
-    var local_35: bool;
+    var local_38: bool;
+    var local_39: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_34 = _e6;
+        local_38 = _e6;
     } else {
-        local_34 = false;
+        local_38 = false;
     }
-    let _e8 = local_34;
+    let _e8 = local_38;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_35 = _e12;
+        local_39 = _e12;
     } else {
-        local_35 = false;
+        local_39 = false;
     }
-    let _e14 = local_35;
+    let _e14 = local_39;
     return _e14;
 }
 
 fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
-    let m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if (m_5 == 0f) {
+    let m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if (m_6 == 0f) {
         return 0f;
     }
-    return (m_5 * length((v_1 / vec3(m_5))));
+    return (m_6 * length((v_1 / vec3(m_6))));
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_36: bool;
+    var local_40: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_36 = _e6;
+        local_40 = _e6;
     } else {
-        local_36 = false;
+        local_40 = false;
     }
-    let _e8 = local_36;
+    let _e8 = local_40;
     return _e8;
 }
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
-    let m_6 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u = (v_3 / vec3(m_6));
-    return (u / vec3(length(u)));
+    let m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    let u_1 = (v_3 / vec3(m_7));
+    return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_8: AirlightScene) -> bool {
-    var local_37: bool;
-    var local_38: bool;
-    var local_39: bool;
-    var local_40: bool;
+fn airlight_valid(s_10: AirlightScene) -> bool {
     var local_41: bool;
     var local_42: bool;
     var local_43: bool;
     var local_44: bool;
     var local_45: bool;
     var local_46: bool;
-    var ok: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
     var local_50: bool;
+    var ok: bool;
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
@@ -2259,210 +2402,214 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     var local_61: bool;
     var local_62: bool;
     var local_63: bool;
+    var local_64: bool;
+    var local_65: bool;
+    var local_66: bool;
+    var local_67: bool;
 
-    let _e2 = airlight_vec_finite(s_8.origin);
+    let _e2 = airlight_vec_finite(s_10.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_8.dir);
-        local_37 = _e6;
-    } else {
-        local_37 = false;
-    }
-    let _e8 = local_37;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_8.dir);
-        local_38 = _e12;
-    } else {
-        local_38 = false;
-    }
-    let _e14 = local_38;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_8.t_min);
-        local_39 = _e18;
-    } else {
-        local_39 = false;
-    }
-    let _e20 = local_39;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_8.light_position);
-        local_40 = _e24;
-    } else {
-        local_40 = false;
-    }
-    let _e26 = local_40;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_8.intensity);
-        local_41 = _e30;
+        let _e6 = airlight_vec_finite(s_10.dir);
+        local_41 = _e6;
     } else {
         local_41 = false;
     }
-    let _e32 = local_41;
-    if _e32 {
-        local_42 = (s_8.intensity >= 0f);
+    let _e8 = local_41;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_10.dir);
+        local_42 = _e12;
     } else {
         local_42 = false;
     }
-    let _e39 = local_42;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_8.sigma_s);
-        local_43 = _e43;
+    let _e14 = local_42;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_10.t_min);
+        local_43 = _e18;
     } else {
         local_43 = false;
     }
-    let _e45 = local_43;
-    if _e45 {
-        local_44 = (s_8.sigma_s >= 0f);
+    let _e20 = local_43;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_10.light_position);
+        local_44 = _e24;
     } else {
         local_44 = false;
     }
-    let _e52 = local_44;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_8.sigma_t);
-        local_45 = _e56;
+    let _e26 = local_44;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_10.intensity);
+        local_45 = _e30;
     } else {
         local_45 = false;
     }
-    let _e58 = local_45;
-    if _e58 {
-        local_46 = (s_8.sigma_t >= 0f);
+    let _e32 = local_45;
+    if _e32 {
+        local_46 = (s_10.intensity >= 0f);
     } else {
         local_46 = false;
     }
-    let _e65 = local_46;
+    let _e39 = local_46;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_10.sigma_s);
+        local_47 = _e43;
+    } else {
+        local_47 = false;
+    }
+    let _e45 = local_47;
+    if _e45 {
+        local_48 = (s_10.sigma_s >= 0f);
+    } else {
+        local_48 = false;
+    }
+    let _e52 = local_48;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_10.sigma_t);
+        local_49 = _e56;
+    } else {
+        local_49 = false;
+    }
+    let _e58 = local_49;
+    if _e58 {
+        local_50 = (s_10.sigma_t >= 0f);
+    } else {
+        local_50 = false;
+    }
+    let _e65 = local_50;
     ok = _e65;
-    if ((s_8.flags & 1u) == 0u) {
+    if ((s_10.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_8.t_max);
-            local_47 = _e76;
-        } else {
-            local_47 = false;
-        }
-        let _e78 = local_47;
-        if _e78 {
-            local_48 = (s_8.t_min <= s_8.t_max);
-        } else {
-            local_48 = false;
-        }
-        let _e85 = local_48;
-        ok = _e85;
-    }
-    if (s_8.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e89 = ok;
-        if _e89 {
-            let _e93 = airlight_vec_finite(s_8.light_axis);
-            local_49 = _e93;
-        } else {
-            local_49 = false;
-        }
-        let _e95 = local_49;
-        if _e95 {
-            let _e99 = airlight_normalisable(s_8.light_axis);
-            local_50 = _e99;
-        } else {
-            local_50 = false;
-        }
-        let _e101 = local_50;
-        if _e101 {
-            local_51 = (s_8.light_param_a >= 0f);
+            let _e76 = airlight_is_finite(s_10.t_max);
+            local_51 = _e76;
         } else {
             local_51 = false;
         }
-        let _e108 = local_51;
-        if _e108 {
-            local_52 = (s_8.light_param_a <= 1024f);
+        let _e78 = local_51;
+        if _e78 {
+            local_52 = (s_10.t_min <= s_10.t_max);
         } else {
             local_52 = false;
         }
-        let _e115 = local_52;
-        if _e115 {
-            local_53 = (fract((s_8.light_param_a * 0.5f)) == 0f);
+        let _e85 = local_52;
+        ok = _e85;
+    }
+    if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        let _e89 = ok;
+        if _e89 {
+            let _e93 = airlight_vec_finite(s_10.light_axis);
+            local_53 = _e93;
         } else {
             local_53 = false;
         }
-        let _e125 = local_53;
+        let _e95 = local_53;
+        if _e95 {
+            let _e99 = airlight_normalisable(s_10.light_axis);
+            local_54 = _e99;
+        } else {
+            local_54 = false;
+        }
+        let _e101 = local_54;
+        if _e101 {
+            local_55 = (s_10.light_param_a >= 0f);
+        } else {
+            local_55 = false;
+        }
+        let _e108 = local_55;
+        if _e108 {
+            local_56 = (s_10.light_param_a <= 1024f);
+        } else {
+            local_56 = false;
+        }
+        let _e115 = local_56;
+        if _e115 {
+            local_57 = (fract((s_10.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_57 = false;
+        }
+        let _e125 = local_57;
         ok = _e125;
     } else {
-        if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
-                let _e133 = airlight_vec_finite(s_8.light_axis);
-                local_54 = _e133;
-            } else {
-                local_54 = false;
-            }
-            let _e135 = local_54;
-            if _e135 {
-                let _e139 = airlight_normalisable(s_8.light_axis);
-                local_55 = _e139;
-            } else {
-                local_55 = false;
-            }
-            let _e141 = local_55;
-            if _e141 {
-                local_56 = (s_8.light_param_b < s_8.light_param_a);
-            } else {
-                local_56 = false;
-            }
-            let _e148 = local_56;
-            if _e148 {
-                local_57 = (s_8.light_param_b >= -1f);
-            } else {
-                local_57 = false;
-            }
-            let _e155 = local_57;
-            if _e155 {
-                local_58 = (s_8.light_param_a <= 1f);
+                let _e133 = airlight_vec_finite(s_10.light_axis);
+                local_58 = _e133;
             } else {
                 local_58 = false;
             }
-            let _e162 = local_58;
+            let _e135 = local_58;
+            if _e135 {
+                let _e139 = airlight_normalisable(s_10.light_axis);
+                local_59 = _e139;
+            } else {
+                local_59 = false;
+            }
+            let _e141 = local_59;
+            if _e141 {
+                local_60 = (s_10.light_param_b < s_10.light_param_a);
+            } else {
+                local_60 = false;
+            }
+            let _e148 = local_60;
+            if _e148 {
+                local_61 = (s_10.light_param_b >= -1f);
+            } else {
+                local_61 = false;
+            }
+            let _e155 = local_61;
+            if _e155 {
+                local_62 = (s_10.light_param_a <= 1f);
+            } else {
+                local_62 = false;
+            }
+            let _e162 = local_62;
             ok = _e162;
         } else {
-            if (s_8.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_10.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_8.phase_param_a) < 1f);
-    switch s_8.phase_kind {
+    let g_ok = (abs(s_10.phase_param_a) < 1f);
+    switch s_10.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
             let _e172 = ok;
             if _e172 {
-                local_59 = g_ok;
+                local_63 = g_ok;
             } else {
-                local_59 = false;
+                local_63 = false;
             }
-            let _e176 = local_59;
+            let _e176 = local_63;
             ok = _e176;
         }
         case 5u: {
             let _e177 = ok;
             if _e177 {
-                local_60 = g_ok;
+                local_64 = g_ok;
             } else {
-                local_60 = false;
+                local_64 = false;
             }
-            let _e181 = local_60;
+            let _e181 = local_64;
             if _e181 {
-                local_61 = (abs(s_8.phase_param_b) < 1f);
+                local_65 = (abs(s_10.phase_param_b) < 1f);
             } else {
-                local_61 = false;
+                local_65 = false;
             }
-            let _e189 = local_61;
+            let _e189 = local_65;
             if _e189 {
-                local_62 = (s_8.phase_param_c >= 0f);
+                local_66 = (s_10.phase_param_c >= 0f);
             } else {
-                local_62 = false;
+                local_66 = false;
             }
-            let _e196 = local_62;
+            let _e196 = local_66;
             if _e196 {
-                local_63 = (s_8.phase_param_c <= 1f);
+                local_67 = (s_10.phase_param_c <= 1f);
             } else {
-                local_63 = false;
+                local_67 = false;
             }
-            let _e203 = local_63;
+            let _e203 = local_67;
             ok = _e203;
         }
         default: {
@@ -2473,40 +2620,152 @@ fn airlight_valid(s_8: AirlightScene) -> bool {
     return _e205;
 }
 
-fn airlight_canonical(s_9: AirlightScene) -> AirlightCanonical {
-    var a_6: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+fn airlight_canonical(s_11: AirlightScene) -> AirlightCanonical {
+    var a_10: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_9.dir);
-    if (s_9.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_9.light_axis);
-        a_6 = _e12;
+    let _e2 = airlight_normalize(s_11.dir);
+    if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_11.light_axis);
+        a_10 = _e12;
     }
-    let to_light = (s_9.light_position - s_9.origin);
+    let to_light = (s_11.light_position - s_11.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
     if (_e19 > 0f) {
-        let _e24 = a_6;
+        let _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_2 = ((s_9.flags & 1u) != 0u);
-    let _e32 = a_6;
+    let infinite_2 = ((s_11.flags & 1u) != 0u);
+    let _e32 = a_10;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_9.t_min, select(s_9.t_max, 0f, infinite_2), infinite_2);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_11.t_min, select(s_11.t_max, 0f, infinite_2), infinite_2);
 }
 
-fn airlight_in_scatter(s_10: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_valid(s_10);
+fn airlight_two_sum(a_11: f32, b_8: f32, one: f32) -> vec2<f32> {
+    let s_15 = ((a_11 + b_8) * one);
+    let bb = (s_15 - a_11);
+    let e_1 = ((a_11 - (s_15 - bb)) + (b_8 - bb));
+    let _e10 = airlight_is_finite(e_1);
+    return vec2<f32>(s_15, select(0f, e_1, _e10));
+}
+
+fn airlight_two_product(a_12: f32, b_9: f32, one_1: f32) -> vec2<f32> {
+    let p = ((a_12 * b_9) * one_1);
+    let ah = bitcast<f32>((bitcast<u32>(a_12) & 4294963200u));
+    let al = (a_12 - ah);
+    let bh = bitcast<f32>((bitcast<u32>(b_9) & 4294963200u));
+    let bl = (b_9 - bh);
+    let e_2 = (((((ah * bh) - p) + (ah * bl)) + (al * bh)) + (al * bl));
+    let _e23 = airlight_is_finite(e_2);
+    return vec2<f32>(p, select(0f, e_2, _e23));
+}
+
+fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, one_2: f32) -> f32 {
+    let _e5 = airlight_two_product(a_13, b_10, one_2);
+    let _e6 = airlight_two_product(c_6, d_1, one_2);
+    return ((_e5.x - _e6.x) + (_e5.y - _e6.y));
+}
+
+fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
+    var local_68: bool;
+    var local_69: bool;
+
+    let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if !((m_8 == 0f)) {
+        if (m_8 >= 0.0000000009313226f) {
+            local_69 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+        } else {
+            local_69 = false;
+        }
+        let _e21 = local_69;
+        local_68 = _e21;
+    } else {
+        local_68 = true;
+    }
+    let _e23 = local_68;
+    return _e23;
+}
+
+fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    var local_70: bool;
+    var out_2: AirlightCanonical;
+    var local_71: bool;
+    var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+
+    let one_3 = select(1f, 0.5f, (s_12.flags > 4294967280u));
+    let _e13 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), one_3);
+    let _e19 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), one_3);
+    let _e25 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), one_3);
+    let hi_2 = vec3<f32>(_e13.x, _e19.x, _e25.x);
+    let lo_2 = vec3<f32>(_e13.y, _e19.y, _e25.y);
+    let dir = s_12.dir;
+    let _e35 = airlight_in_exact_range(hi_2);
+    if !(!(_e35)) {
+        let _e40 = airlight_in_exact_range(dir);
+        local_70 = !(_e40);
+    } else {
+        local_70 = true;
+    }
+    let _e43 = local_70;
+    if _e43 {
+        return plain;
+    }
+    let _e48 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, one_3);
+    let _e61 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, one_3);
+    let _e74 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, one_3);
+    let w_2 = vec3<f32>((_e48 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e61 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e74 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
+    let _e84 = airlight_vec_finite(w_2);
+    if !(_e84) {
+        return plain;
+    }
+    out_2 = plain;
+    let _e87 = airlight_safe_length(w_2);
+    if (_e87 == 0f) {
+        out_2.h = 0f;
+        out_2.d_c = 0f;
+        let _e94 = out_2;
+        return _e94;
+    }
+    let _e95 = airlight_safe_length(dir);
+    let h_3 = (_e87 / _e95);
+    let _e97 = airlight_is_finite(h_3);
+    if _e97 {
+        local_71 = (h_3 > 0f);
+    } else {
+        local_71 = false;
+    }
+    let _e103 = local_71;
+    if !(_e103) {
+        return plain;
+    }
+    if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e114 = airlight_normalize(s_12.light_axis);
+        a_14 = _e114;
+    }
+    let _e115 = airlight_normalize(dir);
+    let _e116 = airlight_normalize(w_2);
+    let n_5 = -(cross(_e115, _e116));
+    out_2.h = h_3;
+    let _e121 = a_14;
+    out_2.d_c = dot(n_5, _e121);
+    let _e123 = out_2;
+    return _e123;
+}
+
+fn airlight_in_scatter(s_13: AirlightScene) -> AirlightResult {
+    let _e1 = airlight_valid(s_13);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_canonical(s_10);
-    let _e7 = airlight_in_scatter_canonical(s_10, _e6);
-    let _e9 = airlight_is_finite(_e7.in_scatter);
-    if !(_e9) {
+    let _e6 = airlight_canonical(s_13);
+    let _e7 = airlight_refined(s_13, _e6);
+    let _e8 = airlight_in_scatter_canonical(s_13, _e7);
+    let _e10 = airlight_is_finite(_e8.in_scatter);
+    if !(_e10) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return _e7;
+    return _e8;
 }
 
