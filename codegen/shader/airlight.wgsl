@@ -1155,35 +1155,48 @@ fn airlight_canonical(s: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(h, x_h, dot(d, a), d_c, s.t_min, select(s.t_max, 0.0, infinite), infinite);
 }
 
+/// `x` itself (`key` is 0 at run time), in a form no compiler can see through: a driver may
+/// otherwise fold `(a + b) − a` to `b` or contract `a·b − c` into `fma(a, b, −c)`, either of
+/// which destroys an error-free transformation (SPIR-V has `NoContraction` for this, which
+/// naga does not emit).
+fn airlight_opaque(x: f32, key: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x) ^ key);
+}
+
 /// (s, e) with s = a + b rounded and s + e = a + b exactly (Knuth's two-sum; geometry.rs).
-/// `one` is 1 at run time but unknown to the compiler: it keeps a driver's algebraic
-/// simplification from folding `(a + b) − a` to `b`, which would lose the error term.
-fn airlight_two_sum(a: f32, b: f32, one: f32) -> vec2<f32> {
-    let s = (a + b) * one;
-    let bb = s - a;
-    let e = (a - (s - bb)) + (b - bb);
+fn airlight_two_sum(a: f32, b: f32, key: u32) -> vec2<f32> {
+    let s = airlight_opaque(a + b, key);
+    let bb = airlight_opaque(s - a, key);
+    let av = airlight_opaque(s - bb, key);
+    let e = (a - av) + (b - bb);
     return vec2<f32>(s, select(0.0, e, airlight_is_finite(e)));
 }
 
-/// (p, e) with p = a·b rounded and p + e = a·b exactly (Dekker's product). The halves are
-/// cut by masking the low 12 bits of the significand rather than by Veltkamp's
-/// `c − (c − x)`, which a driver's algebraic simplification may fold to `x`; `p` is formed
-/// as `(a·b)·one` so that no later `p − q` can be contracted into `fma(a, b, −q)`.
-fn airlight_two_product(a: f32, b: f32, one: f32) -> vec2<f32> {
-    let p = (a * b) * one;
-    let ah = bitcast<f32>(bitcast<u32>(a) & 0xfffff000u);
+/// The 12 leading bits of `x` rounded to nearest, by integer operations (Veltkamp's
+/// `c − (c − x)` could be folded to `x`): `x − hi` then has 11 bits and a sign, the split
+/// Dekker's product needs (a truncated split leaves 12-bit tails, and its partial sums are
+/// not exact).
+fn airlight_split_high(x: f32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x) + 0x800u) & 0xfffff000u);
+}
+
+/// (p, e) with p = a·b rounded and p + e = a·b exactly (Dekker's product); |a|, |b| within
+/// AIRLIGHT_EXACT_RANGE.
+fn airlight_two_product(a: f32, b: f32, key: u32) -> vec2<f32> {
+    let p = airlight_opaque(a * b, key);
+    let ah = airlight_split_high(a);
     let al = a - ah;
-    let bh = bitcast<f32>(bitcast<u32>(b) & 0xfffff000u);
+    let bh = airlight_split_high(b);
     let bl = b - bh;
     let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
     return vec2<f32>(p, select(0.0, e, airlight_is_finite(e)));
 }
 
 /// a·b − c·d with the products' rounding errors carried.
-fn airlight_diff_of_products(a: f32, b: f32, c: f32, d: f32, one: f32) -> f32 {
-    let p = airlight_two_product(a, b, one);
-    let q = airlight_two_product(c, d, one);
-    return (p.x - q.x) + (p.y - q.y);
+fn airlight_diff_of_products(a: f32, b: f32, c: f32, d: f32, key: u32) -> f32 {
+    let p = airlight_two_product(a, b, key);
+    let q = airlight_two_product(c, d, key);
+    return airlight_opaque(p.x - q.x, key) + airlight_opaque(p.y - q.y, key);
 }
 
 fn airlight_in_exact_range(v: vec3<f32>) -> bool {
@@ -1195,19 +1208,21 @@ fn airlight_in_exact_range(v: vec3<f32>) -> bool {
 /// p − o kept as a two-sum, w = (p − o) × dir from Dekker's products, h = |w|/|dir|, the unit
 /// vector from the light to the foot −(dir × w)/(|dir||w|).
 fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    // 1, from a test the compiler cannot decide (flags has one defined bit)
-    let one = select(1.0, 0.5, s.flags > 0xfffffff0u);
-    let sx = airlight_two_sum(s.light_position.x, -s.origin.x, one);
-    let sy = airlight_two_sum(s.light_position.y, -s.origin.y, one);
-    let sz = airlight_two_sum(s.light_position.z, -s.origin.z, one);
+    // 0 for every record the kernel writes (flags has one defined bit), from an integer
+    // test the compiler cannot decide (a float test such as t_min != t_min it may fold under
+    // its no-NaN assumptions); were it 1, each opaque value would move by one ulp only
+    let key = u32(s.flags > 1u);
+    let sx = airlight_two_sum(s.light_position.x, -s.origin.x, key);
+    let sy = airlight_two_sum(s.light_position.y, -s.origin.y, key);
+    let sz = airlight_two_sum(s.light_position.z, -s.origin.z, key);
     let hi = vec3<f32>(sx.x, sy.x, sz.x);
     let lo = vec3<f32>(sx.y, sy.y, sz.y);
     let dir = s.dir;
     if (!airlight_in_exact_range(hi) || !airlight_in_exact_range(dir)) { return plain; }
     let w = vec3<f32>(
-        airlight_diff_of_products(hi.y, dir.z, hi.z, dir.y, one) + (lo.y * dir.z - lo.z * dir.y),
-        airlight_diff_of_products(hi.z, dir.x, hi.x, dir.z, one) + (lo.z * dir.x - lo.x * dir.z),
-        airlight_diff_of_products(hi.x, dir.y, hi.y, dir.x, one) + (lo.x * dir.y - lo.y * dir.x));
+        airlight_diff_of_products(hi.y, dir.z, hi.z, dir.y, key) + (lo.y * dir.z - lo.z * dir.y),
+        airlight_diff_of_products(hi.z, dir.x, hi.x, dir.z, key) + (lo.z * dir.x - lo.x * dir.z),
+        airlight_diff_of_products(hi.x, dir.y, hi.y, dir.x, key) + (lo.x * dir.y - lo.y * dir.x));
     if (!airlight_vec_finite(w)) { return plain; }
     var out = plain;
     let w_len = airlight_safe_length(w);

@@ -397,9 +397,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_8 = (z_5.x * 0.7692308);
+    float x_10 = (z_5.x * 0.7692308);
     float y_2 = (z_5.y * 0.47619048);
-    return (((x_8 * x_8) + (y_2 * y_2)) < 1.0);
+    return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
 }
 
 float2 airlight_e1_scaled_cf(float2 z_6)
@@ -777,8 +777,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_9 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_9 * x_9) * (3.0 - (2.0 * x_9)));
+            float x_11 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_11 * x_11) * (3.0 - (2.0 * x_11)));
         }
         default: {
             return 1.0;
@@ -1030,8 +1030,8 @@ uint naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[2], uint i_4)
 {
-    float x_10 = rule[min(uint(naga_div(i_4, 2u)), 1u)].x;
-    return ((naga_mod(i_4, 2u) == 0u) ? -(x_10) : x_10);
+    float x_12 = rule[min(uint(naga_div(i_4, 2u)), 1u)].x;
+    return ((naga_mod(i_4, 2u) == 0u) ? -(x_12) : x_12);
 }
 
 typedef float ret_airlight_legendre[4];
@@ -1383,8 +1383,8 @@ float airlight_factor(AirlightHalf half_3, float a_4, float b_3)
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     float _e13 = offset;
-    float x_11 = (half_3.big_h * _e13);
-    return ((x_11 > 0.0) ? exp(-(x_11)) : 1.0);
+    float x_13 = (half_3.big_h * _e13);
+    return ((x_13 > 0.0) ? exp(-(x_13)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -1890,7 +1890,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     const float _e192 = airlight_factor(half_6, a_7, b_6);
     float _e193 = mass_2;
     mass_2 = (_e193 * _e192);
-    float x_12 = (abs(alpha) + abs(beta));
+    float x_14 = (abs(alpha) + abs(beta));
     uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     bool loop_init_31 = true;
     while(true) {
@@ -1915,7 +1915,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             float kf_5 = float(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
-            float next_2 = ((((((kf_5 + kf_5) + 1.0) * x_12) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0));
+            float next_2 = ((((((kf_5 + kf_5) + 1.0) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0));
             float _e230 = l_cur;
             l_prev = _e230;
             l_cur = next_2;
@@ -3017,32 +3017,45 @@ AirlightCanonical airlight_canonical(AirlightScene s_11)
     return airlightcanonical;
 }
 
-float2 airlight_two_sum(float a_11, float b_8, float one)
+float airlight_opaque(float x_8, uint key)
 {
-    float s_15 = ((a_11 + b_8) * one);
-    float bb = (s_15 - a_11);
-    float e_1 = ((a_11 - (s_15 - bb)) + (b_8 - bb));
-    const bool _e10 = airlight_is_finite(e_1);
-    return float2(s_15, (_e10 ? e_1 : 0.0));
+    return asfloat((asuint(x_8) ^ key));
 }
 
-float2 airlight_two_product(float a_12, float b_9, float one_1)
+float2 airlight_two_sum(float a_11, float b_8, uint key_1)
 {
-    float p = ((a_12 * b_9) * one_1);
-    float ah = asfloat((asuint(a_12) & 4294963200u));
-    float al = (a_12 - ah);
-    float bh = asfloat((asuint(b_9) & 4294963200u));
-    float bl = (b_9 - bh);
-    float e_2 = (((((ah * bh) - p) + (ah * bl)) + (al * bh)) + (al * bl));
-    const bool _e23 = airlight_is_finite(e_2);
-    return float2(p, (_e23 ? e_2 : 0.0));
+    const float _e4 = airlight_opaque((a_11 + b_8), key_1);
+    const float _e6 = airlight_opaque((_e4 - a_11), key_1);
+    const float _e8 = airlight_opaque((_e4 - _e6), key_1);
+    float e_1 = ((a_11 - _e8) + (b_8 - _e6));
+    const bool _e12 = airlight_is_finite(e_1);
+    return float2(_e4, (_e12 ? e_1 : 0.0));
 }
 
-float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, float one_2)
+float airlight_split_high(float x_9)
 {
-    const float2 _e5 = airlight_two_product(a_13, b_10, one_2);
-    const float2 _e6 = airlight_two_product(c_6, d_1, one_2);
-    return ((_e5.x - _e6.x) + (_e5.y - _e6.y));
+    return asfloat(((asuint(x_9) + 2048u) & 4294963200u));
+}
+
+float2 airlight_two_product(float a_12, float b_9, uint key_2)
+{
+    const float _e4 = airlight_opaque((a_12 * b_9), key_2);
+    const float _e5 = airlight_split_high(a_12);
+    float al = (a_12 - _e5);
+    const float _e7 = airlight_split_high(b_9);
+    float bl = (b_9 - _e7);
+    float e_2 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_2);
+    return float2(_e4, (_e17 ? e_2 : 0.0));
+}
+
+float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, uint key_3)
+{
+    const float2 _e5 = airlight_two_product(a_13, b_10, key_3);
+    const float2 _e6 = airlight_two_product(c_6, d_1, key_3);
+    const float _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
+    const float _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
+    return (_e10 + _e14);
 }
 
 bool airlight_in_exact_range(float3 v_4)
@@ -3073,68 +3086,68 @@ AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain)
     bool local_71 = (bool)0;
     float3 a_14 = float3(0.0, 0.0, 1.0);
 
-    float one_3 = ((s_12.flags > 4294967280u) ? 0.5 : 1.0);
-    const float2 _e13 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), one_3);
-    const float2 _e19 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), one_3);
-    const float2 _e25 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), one_3);
-    float3 hi_2 = float3(_e13.x, _e19.x, _e25.x);
-    float3 lo_2 = float3(_e13.y, _e19.y, _e25.y);
+    uint key_4 = uint((s_12.flags > 1u));
+    const float2 _e11 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), key_4);
+    const float2 _e17 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), key_4);
+    const float2 _e23 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), key_4);
+    float3 hi_2 = float3(_e11.x, _e17.x, _e23.x);
+    float3 lo_2 = float3(_e11.y, _e17.y, _e23.y);
     float3 dir = s_12.dir;
-    const bool _e35 = airlight_in_exact_range(hi_2);
-    if (!(!(_e35))) {
-        const bool _e40 = airlight_in_exact_range(dir);
-        local_70 = !(_e40);
+    const bool _e33 = airlight_in_exact_range(hi_2);
+    if (!(!(_e33))) {
+        const bool _e38 = airlight_in_exact_range(dir);
+        local_70 = !(_e38);
     } else {
         local_70 = true;
     }
-    bool _e43 = local_70;
-    if (_e43) {
+    bool _e41 = local_70;
+    if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
     }
-    const float _e48 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, one_3);
-    const float _e61 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, one_3);
-    const float _e74 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, one_3);
-    float3 w_2 = float3((_e48 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e61 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e74 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
-    const bool _e84 = airlight_vec_finite(w_2);
-    if (!(_e84)) {
+    const float _e46 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, key_4);
+    const float _e59 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, key_4);
+    const float _e72 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, key_4);
+    float3 w_2 = float3((_e46 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e59 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e72 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
+    const bool _e82 = airlight_vec_finite(w_2);
+    if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e87 = airlight_safe_length(w_2);
-    if ((_e87 == 0.0)) {
+    const float _e85 = airlight_safe_length(w_2);
+    if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e94 = out_2;
-        const AirlightCanonical airlightcanonical_3 = _e94;
+        AirlightCanonical _e92 = out_2;
+        const AirlightCanonical airlightcanonical_3 = _e92;
         return airlightcanonical_3;
     }
-    const float _e95 = airlight_safe_length(dir);
-    float h_3 = (_e87 / _e95);
-    const bool _e97 = airlight_is_finite(h_3);
-    if (_e97) {
+    const float _e93 = airlight_safe_length(dir);
+    float h_3 = (_e85 / _e93);
+    const bool _e95 = airlight_is_finite(h_3);
+    if (_e95) {
         local_71 = (h_3 > 0.0);
     } else {
         local_71 = false;
     }
-    bool _e103 = local_71;
-    if (!(_e103)) {
+    bool _e101 = local_71;
+    if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
     if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e114 = airlight_normalize(s_12.light_axis);
-        a_14 = _e114;
+        const float3 _e112 = airlight_normalize(s_12.light_axis);
+        a_14 = _e112;
     }
-    const float3 _e115 = airlight_normalize(dir);
-    const float3 _e116 = airlight_normalize(w_2);
-    float3 n_5 = -(cross(_e115, _e116));
+    const float3 _e113 = airlight_normalize(dir);
+    const float3 _e114 = airlight_normalize(w_2);
+    float3 n_5 = -(cross(_e113, _e114));
     out_2.h = h_3;
-    float3 _e121 = a_14;
-    out_2.d_c = dot(n_5, _e121);
-    AirlightCanonical _e123 = out_2;
-    const AirlightCanonical airlightcanonical_5 = _e123;
+    float3 _e119 = a_14;
+    out_2.d_c = dot(n_5, _e119);
+    AirlightCanonical _e121 = out_2;
+    const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
 }
 

@@ -415,9 +415,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_8 = z_5.x * 0.7692308;
+    float x_10 = z_5.x * 0.7692308;
     float y_2 = z_5.y * 0.47619048;
-    return ((x_8 * x_8) + (y_2 * y_2)) < 1.0;
+    return ((x_10 * x_10) + (y_2 * y_2)) < 1.0;
 }
 
 metal::float2 airlight_e1_scaled_cf(
@@ -819,8 +819,8 @@ float airlight_light(
             if (width <= AIRLIGHT_FLT_EPS) {
                 return (c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0;
             }
-            float x_9 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
-            return (x_9 * x_9) * (3.0 - (2.0 * x_9));
+            float x_11 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
+            return (x_11 * x_11) * (3.0 - (2.0 * x_11));
         }
         default: {
             return 1.0;
@@ -1058,8 +1058,8 @@ float airlight_node(
     type_9 rule,
     uint i_4
 ) {
-    float x_10 = rule.inner[metal::min(unsigned(naga_div(i_4, 2u)), 2u)].x;
-    return (naga_mod(i_4, 2u) == 0u) ? -(x_10) : x_10;
+    float x_12 = rule.inner[metal::min(unsigned(naga_div(i_4, 2u)), 2u)].x;
+    return (naga_mod(i_4, 2u) == 0u) ? -(x_12) : x_12;
 }
 
 type_2 airlight_legendre(
@@ -1415,8 +1415,8 @@ float airlight_factor(
         offset = (half_3.y_hi - b_3) / (b_3 * half_3.y_hi);
     }
     float _e13 = offset;
-    float x_11 = half_3.big_h * _e13;
-    return (x_11 > 0.0) ? metal::exp(-(x_11)) : 1.0;
+    float x_13 = half_3.big_h * _e13;
+    return (x_13 > 0.0) ? metal::exp(-(x_13)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -1929,7 +1929,7 @@ AirlightPanel airlight_tail_panel(
     float _e192 = airlight_factor(half_6, a_7, b_6);
     float _e193 = mass_2;
     mass_2 = _e193 * _e192;
-    float x_12 = metal::abs(alpha) + metal::abs(beta);
+    float x_14 = metal::abs(alpha) + metal::abs(beta);
     uint2 loop_bound_31 = uint2(4294967295u);
     bool loop_init_31 = true;
     while(true) {
@@ -1954,7 +1954,7 @@ AirlightPanel airlight_tail_panel(
             float kf_5 = static_cast<float>(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
-            float next_2 = (((((kf_5 + kf_5) + 1.0) * x_12) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0);
+            float next_2 = (((((kf_5 + kf_5) + 1.0) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0);
             float _e230 = l_cur;
             l_prev = _e230;
             l_cur = next_2;
@@ -3041,31 +3041,45 @@ AirlightCanonical airlight_canonical(
     return AirlightCanonical {_e19, x_h_1, metal::dot(_e2, _e32), _e34, s_11.t_min, infinite_2 ? 0.0 : s_11.t_max, infinite_2};
 }
 
+float airlight_opaque(
+    float x_8,
+    uint key
+) {
+    return as_type<float>(as_type<uint>(x_8) ^ key);
+}
+
 metal::float2 airlight_two_sum(
     float a_11,
     float b_8,
-    float one
+    uint key_1
 ) {
-    float s_15 = (a_11 + b_8) * one;
-    float bb = s_15 - a_11;
-    float e_1 = (a_11 - (s_15 - bb)) + (b_8 - bb);
-    bool _e10 = airlight_is_finite(e_1);
-    return metal::float2(s_15, _e10 ? e_1 : 0.0);
+    float _e4 = airlight_opaque(a_11 + b_8, key_1);
+    float _e6 = airlight_opaque(_e4 - a_11, key_1);
+    float _e8 = airlight_opaque(_e4 - _e6, key_1);
+    float e_1 = (a_11 - _e8) + (b_8 - _e6);
+    bool _e12 = airlight_is_finite(e_1);
+    return metal::float2(_e4, _e12 ? e_1 : 0.0);
+}
+
+float airlight_split_high(
+    float x_9
+) {
+    return as_type<float>((as_type<uint>(x_9) + 2048u) & 4294963200u);
 }
 
 metal::float2 airlight_two_product(
     float a_12,
     float b_9,
-    float one_1
+    uint key_2
 ) {
-    float p = (a_12 * b_9) * one_1;
-    float ah = as_type<float>(as_type<uint>(a_12) & 4294963200u);
-    float al = a_12 - ah;
-    float bh = as_type<float>(as_type<uint>(b_9) & 4294963200u);
-    float bl = b_9 - bh;
-    float e_2 = ((((ah * bh) - p) + (ah * bl)) + (al * bh)) + (al * bl);
-    bool _e23 = airlight_is_finite(e_2);
-    return metal::float2(p, _e23 ? e_2 : 0.0);
+    float _e4 = airlight_opaque(a_12 * b_9, key_2);
+    float _e5 = airlight_split_high(a_12);
+    float al = a_12 - _e5;
+    float _e7 = airlight_split_high(b_9);
+    float bl = b_9 - _e7;
+    float e_2 = ((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl);
+    bool _e17 = airlight_is_finite(e_2);
+    return metal::float2(_e4, _e17 ? e_2 : 0.0);
 }
 
 float airlight_diff_of_products(
@@ -3073,11 +3087,13 @@ float airlight_diff_of_products(
     float b_10,
     float c_6,
     float d_1,
-    float one_2
+    uint key_3
 ) {
-    metal::float2 _e5 = airlight_two_product(a_13, b_10, one_2);
-    metal::float2 _e6 = airlight_two_product(c_6, d_1, one_2);
-    return (_e5.x - _e6.x) + (_e5.y - _e6.y);
+    metal::float2 _e5 = airlight_two_product(a_13, b_10, key_3);
+    metal::float2 _e6 = airlight_two_product(c_6, d_1, key_3);
+    float _e10 = airlight_opaque(_e5.x - _e6.x, key_3);
+    float _e14 = airlight_opaque(_e5.y - _e6.y, key_3);
+    return _e10 + _e14;
 }
 
 bool airlight_in_exact_range(
@@ -3109,64 +3125,64 @@ AirlightCanonical airlight_refined(
     AirlightCanonical out_2 = {};
     bool local_71 = {};
     metal::float3 a_14 = metal::float3(0.0, 0.0, 1.0);
-    float one_3 = (s_12.flags > 4294967280u) ? 0.5 : 1.0;
-    metal::float2 _e13 = airlight_two_sum(s_12.light_position[0], -(s_12.origin[0]), one_3);
-    metal::float2 _e19 = airlight_two_sum(s_12.light_position[1], -(s_12.origin[1]), one_3);
-    metal::float2 _e25 = airlight_two_sum(s_12.light_position[2], -(s_12.origin[2]), one_3);
-    metal::float3 hi_2 = metal::float3(_e13.x, _e19.x, _e25.x);
-    metal::float3 lo_2 = metal::float3(_e13.y, _e19.y, _e25.y);
+    uint key_4 = static_cast<uint>(s_12.flags > 1u);
+    metal::float2 _e11 = airlight_two_sum(s_12.light_position[0], -(s_12.origin[0]), key_4);
+    metal::float2 _e17 = airlight_two_sum(s_12.light_position[1], -(s_12.origin[1]), key_4);
+    metal::float2 _e23 = airlight_two_sum(s_12.light_position[2], -(s_12.origin[2]), key_4);
+    metal::float3 hi_2 = metal::float3(_e11.x, _e17.x, _e23.x);
+    metal::float3 lo_2 = metal::float3(_e11.y, _e17.y, _e23.y);
     metal::float3 dir = s_12.dir;
-    bool _e35 = airlight_in_exact_range(hi_2);
-    if (!(!(_e35))) {
-        bool _e40 = airlight_in_exact_range(dir);
-        local_70 = !(_e40);
+    bool _e33 = airlight_in_exact_range(hi_2);
+    if (!(!(_e33))) {
+        bool _e38 = airlight_in_exact_range(dir);
+        local_70 = !(_e38);
     } else {
         local_70 = true;
     }
-    bool _e43 = local_70;
-    if (_e43) {
+    bool _e41 = local_70;
+    if (_e41) {
         return plain;
     }
-    float _e48 = airlight_diff_of_products(hi_2.y, s_12.dir[2], hi_2.z, s_12.dir[1], one_3);
-    float _e61 = airlight_diff_of_products(hi_2.z, s_12.dir[0], hi_2.x, s_12.dir[2], one_3);
-    float _e74 = airlight_diff_of_products(hi_2.x, s_12.dir[1], hi_2.y, s_12.dir[0], one_3);
-    metal::float3 w_2 = metal::float3(_e48 + ((lo_2.y * s_12.dir[2]) - (lo_2.z * s_12.dir[1])), _e61 + ((lo_2.z * s_12.dir[0]) - (lo_2.x * s_12.dir[2])), _e74 + ((lo_2.x * s_12.dir[1]) - (lo_2.y * s_12.dir[0])));
-    bool _e84 = airlight_vec_finite(w_2);
-    if (!(_e84)) {
+    float _e46 = airlight_diff_of_products(hi_2.y, s_12.dir[2], hi_2.z, s_12.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_2.z, s_12.dir[0], hi_2.x, s_12.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_2.x, s_12.dir[1], hi_2.y, s_12.dir[0], key_4);
+    metal::float3 w_2 = metal::float3(_e46 + ((lo_2.y * s_12.dir[2]) - (lo_2.z * s_12.dir[1])), _e59 + ((lo_2.z * s_12.dir[0]) - (lo_2.x * s_12.dir[2])), _e72 + ((lo_2.x * s_12.dir[1]) - (lo_2.y * s_12.dir[0])));
+    bool _e82 = airlight_vec_finite(w_2);
+    if (!(_e82)) {
         return plain;
     }
     out_2 = plain;
-    float _e87 = airlight_safe_length(w_2);
-    if (_e87 == 0.0) {
+    float _e85 = airlight_safe_length(w_2);
+    if (_e85 == 0.0) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e94 = out_2;
-        return _e94;
+        AirlightCanonical _e92 = out_2;
+        return _e92;
     }
-    float _e95 = airlight_safe_length(dir);
-    float h_3 = _e87 / _e95;
-    bool _e97 = airlight_is_finite(h_3);
-    if (_e97) {
+    float _e93 = airlight_safe_length(dir);
+    float h_3 = _e85 / _e93;
+    bool _e95 = airlight_is_finite(h_3);
+    if (_e95) {
         local_71 = h_3 > 0.0;
     } else {
         local_71 = false;
     }
-    bool _e103 = local_71;
-    if (!(_e103)) {
+    bool _e101 = local_71;
+    if (!(_e101)) {
         return plain;
     }
     if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e114 = airlight_normalize(s_12.light_axis);
-        a_14 = _e114;
+        metal::float3 _e112 = airlight_normalize(s_12.light_axis);
+        a_14 = _e112;
     }
-    metal::float3 _e115 = airlight_normalize(dir);
-    metal::float3 _e116 = airlight_normalize(w_2);
-    metal::float3 n_5 = -(metal::cross(_e115, _e116));
+    metal::float3 _e113 = airlight_normalize(dir);
+    metal::float3 _e114 = airlight_normalize(w_2);
+    metal::float3 n_5 = -(metal::cross(_e113, _e114));
     out_2.h = h_3;
-    metal::float3 _e121 = a_14;
-    out_2.d_c = metal::dot(n_5, _e121);
-    AirlightCanonical _e123 = out_2;
-    return _e123;
+    metal::float3 _e119 = a_14;
+    out_2.d_c = metal::dot(n_5, _e119);
+    AirlightCanonical _e121 = out_2;
+    return _e121;
 }
 
 AirlightResult airlight_in_scatter(

@@ -337,9 +337,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_8 = (z_5.x * 0.7692308f);
+    let x_10 = (z_5.x * 0.7692308f);
     let y_2 = (z_5.y * 0.47619048f);
-    return (((x_8 * x_8) + (y_2 * y_2)) < 1f);
+    return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
 }
 
 fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
@@ -674,8 +674,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_9 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_9 * x_9) * (3f - (2f * x_9)));
+            let x_11 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_11 * x_11) * (3f - (2f * x_11)));
         }
         default: {
             return 1f;
@@ -886,8 +886,8 @@ fn airlight_legendre_table() -> array<f32, 8> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 2>, i_4: u32) -> f32 {
-    let x_10 = rule[(i_4 / 2u)].x;
-    return select(x_10, -(x_10), ((i_4 % 2u) == 0u));
+    let x_12 = rule[(i_4 / 2u)].x;
+    return select(x_12, -(x_12), ((i_4 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_3: array<f32, 4>) -> array<f32, 4> {
@@ -1185,8 +1185,8 @@ fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     let _e13 = offset;
-    let x_11 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_11)), (x_11 > 0f));
+    let x_13 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_13)), (x_13 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1624,7 +1624,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     let _e192 = airlight_factor(half_6, a_7, b_6);
     let _e193 = mass_2;
     mass_2 = (_e193 * _e192);
-    let x_12 = (abs(alpha) + abs(beta));
+    let x_14 = (abs(alpha) + abs(beta));
     loop {
         let _e206 = k_10;
         if (_e206 < AIRLIGHT_TERMS) {
@@ -1640,7 +1640,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let kf_5 = f32(_e216);
             let _e222 = l_cur;
             let _e224 = l_prev;
-            let next_2 = ((((((kf_5 + kf_5) + 1f) * x_12) * _e222) + (kf_5 * _e224)) / (kf_5 + 1f));
+            let next_2 = ((((((kf_5 + kf_5) + 1f) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1f));
             let _e230 = l_cur;
             l_prev = _e230;
             l_cur = next_2;
@@ -2643,29 +2643,40 @@ fn airlight_canonical(s_11: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_11.t_min, select(s_11.t_max, 0f, infinite_2), infinite_2);
 }
 
-fn airlight_two_sum(a_11: f32, b_8: f32, one: f32) -> vec2<f32> {
-    let s_15 = ((a_11 + b_8) * one);
-    let bb = (s_15 - a_11);
-    let e_1 = ((a_11 - (s_15 - bb)) + (b_8 - bb));
-    let _e10 = airlight_is_finite(e_1);
-    return vec2<f32>(s_15, select(0f, e_1, _e10));
+fn airlight_opaque(x_8: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_8) ^ key));
 }
 
-fn airlight_two_product(a_12: f32, b_9: f32, one_1: f32) -> vec2<f32> {
-    let p = ((a_12 * b_9) * one_1);
-    let ah = bitcast<f32>((bitcast<u32>(a_12) & 4294963200u));
-    let al = (a_12 - ah);
-    let bh = bitcast<f32>((bitcast<u32>(b_9) & 4294963200u));
-    let bl = (b_9 - bh);
-    let e_2 = (((((ah * bh) - p) + (ah * bl)) + (al * bh)) + (al * bl));
-    let _e23 = airlight_is_finite(e_2);
-    return vec2<f32>(p, select(0f, e_2, _e23));
+fn airlight_two_sum(a_11: f32, b_8: f32, key_1: u32) -> vec2<f32> {
+    let _e4 = airlight_opaque((a_11 + b_8), key_1);
+    let _e6 = airlight_opaque((_e4 - a_11), key_1);
+    let _e8 = airlight_opaque((_e4 - _e6), key_1);
+    let e_1 = ((a_11 - _e8) + (b_8 - _e6));
+    let _e12 = airlight_is_finite(e_1);
+    return vec2<f32>(_e4, select(0f, e_1, _e12));
 }
 
-fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, one_2: f32) -> f32 {
-    let _e5 = airlight_two_product(a_13, b_10, one_2);
-    let _e6 = airlight_two_product(c_6, d_1, one_2);
-    return ((_e5.x - _e6.x) + (_e5.y - _e6.y));
+fn airlight_split_high(x_9: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_9) + 2048u) & 4294963200u));
+}
+
+fn airlight_two_product(a_12: f32, b_9: f32, key_2: u32) -> vec2<f32> {
+    let _e4 = airlight_opaque((a_12 * b_9), key_2);
+    let _e5 = airlight_split_high(a_12);
+    let al = (a_12 - _e5);
+    let _e7 = airlight_split_high(b_9);
+    let bl = (b_9 - _e7);
+    let e_2 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_2);
+    return vec2<f32>(_e4, select(0f, e_2, _e17));
+}
+
+fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
+    let _e5 = airlight_two_product(a_13, b_10, key_3);
+    let _e6 = airlight_two_product(c_6, d_1, key_3);
+    let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
+    let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
+    return (_e10 + _e14);
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
@@ -2694,64 +2705,64 @@ fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     var local_71: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let one_3 = select(1f, 0.5f, (s_12.flags > 4294967280u));
-    let _e13 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), one_3);
-    let _e19 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), one_3);
-    let _e25 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), one_3);
-    let hi_2 = vec3<f32>(_e13.x, _e19.x, _e25.x);
-    let lo_2 = vec3<f32>(_e13.y, _e19.y, _e25.y);
+    let key_4 = u32((s_12.flags > 1u));
+    let _e11 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), key_4);
+    let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir = s_12.dir;
-    let _e35 = airlight_in_exact_range(hi_2);
-    if !(!(_e35)) {
-        let _e40 = airlight_in_exact_range(dir);
-        local_70 = !(_e40);
+    let _e33 = airlight_in_exact_range(hi_2);
+    if !(!(_e33)) {
+        let _e38 = airlight_in_exact_range(dir);
+        local_70 = !(_e38);
     } else {
         local_70 = true;
     }
-    let _e43 = local_70;
-    if _e43 {
+    let _e41 = local_70;
+    if _e41 {
         return plain;
     }
-    let _e48 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, one_3);
-    let _e61 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, one_3);
-    let _e74 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, one_3);
-    let w_2 = vec3<f32>((_e48 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e61 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e74 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
-    let _e84 = airlight_vec_finite(w_2);
-    if !(_e84) {
+    let _e46 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, key_4);
+    let w_2 = vec3<f32>((_e46 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e59 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e72 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
+    let _e82 = airlight_vec_finite(w_2);
+    if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e87 = airlight_safe_length(w_2);
-    if (_e87 == 0f) {
+    let _e85 = airlight_safe_length(w_2);
+    if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
-        let _e94 = out_2;
-        return _e94;
+        let _e92 = out_2;
+        return _e92;
     }
-    let _e95 = airlight_safe_length(dir);
-    let h_3 = (_e87 / _e95);
-    let _e97 = airlight_is_finite(h_3);
-    if _e97 {
+    let _e93 = airlight_safe_length(dir);
+    let h_3 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_3);
+    if _e95 {
         local_71 = (h_3 > 0f);
     } else {
         local_71 = false;
     }
-    let _e103 = local_71;
-    if !(_e103) {
+    let _e101 = local_71;
+    if !(_e101) {
         return plain;
     }
     if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e114 = airlight_normalize(s_12.light_axis);
-        a_14 = _e114;
+        let _e112 = airlight_normalize(s_12.light_axis);
+        a_14 = _e112;
     }
-    let _e115 = airlight_normalize(dir);
-    let _e116 = airlight_normalize(w_2);
-    let n_5 = -(cross(_e115, _e116));
+    let _e113 = airlight_normalize(dir);
+    let _e114 = airlight_normalize(w_2);
+    let n_5 = -(cross(_e113, _e114));
     out_2.h = h_3;
-    let _e121 = a_14;
-    out_2.d_c = dot(n_5, _e121);
-    let _e123 = out_2;
-    return _e123;
+    let _e119 = a_14;
+    out_2.d_c = dot(n_5, _e119);
+    let _e121 = out_2;
+    return _e121;
 }
 
 fn airlight_in_scatter(s_13: AirlightScene) -> AirlightResult {
