@@ -13,7 +13,7 @@
 //
 // The benchmark appends this to the include library (shaders-out/wgsl/airlight_lib_4.wgsl),
 // which brings the record structs and the phase function and light distribution the generated
-// kernel uses (`airlight_phase`, `airlight_light`), and replaces the `const STEPS` line below.
+// kernel uses (`airlight_phase_mu`, `airlight_light`), and replaces the `const STEPS` line below.
 
 const STEPS: u32 = 64u;
 const AIRLIGHT_RM_FAR: f32 = 1000.0;
@@ -45,7 +45,7 @@ fn rm_in_scatter(s: AirlightScene) -> AirlightResult {
         let along = (f32(i) + 0.5) * dt;
         let f = exp(-s.sigma_t * (along + r)) / r2;
         sum += f * airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c)
-            * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
+            * airlight_phase_mu(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
     }
     let value = s.sigma_s * s.intensity * sum * dt;
     if ((bitcast<u32>(value) & 0x7f800000u) == 0x7f800000u) {

@@ -39,21 +39,33 @@ fn airlight_zero_scratch() -> array<f32, AIRLIGHT_SCRATCH> {
     return array<f32, AIRLIGHT_SCRATCH>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
 }
 
-// Phase-function and light-distribution kinds (record fields `phase_kind`, `light_kind`).
-const AIRLIGHT_PHASE_ISOTROPIC: u32 = 0u;
-const AIRLIGHT_PHASE_RAYLEIGH: u32 = 1u;
-const AIRLIGHT_PHASE_HENYEY_GREENSTEIN: u32 = 2u;
-const AIRLIGHT_PHASE_SCHLICK: u32 = 3u;
-const AIRLIGHT_PHASE_CORNETTE_SHANKS: u32 = 4u;
-const AIRLIGHT_PHASE_TWO_LOBE_HG: u32 = 5u;
-const AIRLIGHT_LIGHT_OMNI: u32 = 0u;
-const AIRLIGHT_LIGHT_TWO_LOBED: u32 = 1u;
-const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
+// Phase-function and light-distribution kinds (record fields `phase_kind`, `light_kind`;
+// codegen/src/layout.rs).
+const AIRLIGHT_PHASE_ISOTROPIC: u32 = @PHASE_ISOTROPIC@u;
+const AIRLIGHT_PHASE_RAYLEIGH: u32 = @PHASE_RAYLEIGH@u;
+const AIRLIGHT_PHASE_HENYEY_GREENSTEIN: u32 = @PHASE_HENYEY_GREENSTEIN@u;
+const AIRLIGHT_PHASE_SCHLICK: u32 = @PHASE_SCHLICK@u;
+const AIRLIGHT_PHASE_CORNETTE_SHANKS: u32 = @PHASE_CORNETTE_SHANKS@u;
+const AIRLIGHT_PHASE_TWO_LOBE_HG: u32 = @PHASE_TWO_LOBE_HG@u;
+const AIRLIGHT_LIGHT_OMNI: u32 = @LIGHT_OMNI@u;
+const AIRLIGHT_LIGHT_TWO_LOBED: u32 = @LIGHT_TWO_LOBED@u;
+const AIRLIGHT_LIGHT_SPOT: u32 = @LIGHT_SPOT@u;
 
-// Result status codes.
-const AIRLIGHT_STATUS_OK: u32 = 0u;
-const AIRLIGHT_STATUS_INVALID: u32 = 1u;
-const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
+// Result status codes (codegen/src/layout.rs).
+const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
+const AIRLIGHT_STATUS_INVALID: u32 = @STATUS_INVALID@u;
+const AIRLIGHT_STATUS_INFINITE: u32 = @STATUS_INFINITE@u;
+
+// The two-lobed light's largest power and its bit length (light.rs TwoLobed::MAX_POWER).
+const AIRLIGHT_MAX_POWER: u32 = @MAX_POWER@u;
+const AIRLIGHT_MAX_POWER_BITS: u32 = @MAX_POWER_BITS@u;
+
+// The exponential integrals' f32 tuning (kernel/src/real.rs): series terms inside the ellipse
+// (Re z·INV_RE)² + (Im z·INV_IM)² < 1, and the continued fraction's largest depth.
+const AIRLIGHT_E1_SERIES_TERMS: u32 = @E1_SERIES_TERMS@u;
+const AIRLIGHT_E1_INV_RE: f32 = @E1_INV_RE@;
+const AIRLIGHT_E1_INV_IM: f32 = @E1_INV_IM@;
+const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = @E1_CF_MAX_DEPTH@u;
 
 /// A scene: the kernel's Ray, PointLight, Medium and phase function in one struct.
 struct AirlightScene {
@@ -210,11 +222,11 @@ fn airlight_is_finite(x: f32) -> bool {
 // ---------------------------------------------------------------- exponential integrals
 // (kernel/src/special/: series.rs, continued_fraction.rs, e1.rs, en.rs)
 
-/// Ein(z) = Σ_{k≥1} (−1)^{k+1} z^k/(k·k!), 14 terms (A&S 5.1.11).
+/// Ein(z) = Σ_{k≥1} (−1)^{k+1} z^k/(k·k!), AIRLIGHT_E1_SERIES_TERMS terms (A&S 5.1.11).
 fn airlight_ein(z: vec2<f32>) -> vec2<f32> {
     var term = vec2<f32>(-1.0, 0.0);
     var sum = vec2<f32>(0.0, 0.0);
-    for (var k = 1u; k <= 14u; k++) {
+    for (var k = 1u; k <= AIRLIGHT_E1_SERIES_TERMS; k++) {
         let kf = f32(k);
         term = -airlight_cmul(term, z) / kf;
         sum += term / kf;
@@ -222,14 +234,14 @@ fn airlight_ein(z: vec2<f32>) -> vec2<f32> {
     return sum;
 }
 
-/// (Ein(b) − Ein(a))/(b − a) by divided differences, 14 terms.
+/// (Ein(b) − Ein(a))/(b − a) by divided differences, AIRLIGHT_E1_SERIES_TERMS terms.
 fn airlight_ein_divided_difference(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     var h = vec2<f32>(1.0, 0.0);
     var a_pow = vec2<f32>(1.0, 0.0);
     var fact = 1.0;
     var sign = 1.0;
     var sum = vec2<f32>(0.0, 0.0);
-    for (var k = 1u; k <= 14u; k++) {
+    for (var k = 1u; k <= AIRLIGHT_E1_SERIES_TERMS; k++) {
         let kf = f32(k);
         fact *= kf;
         sum += h * (sign / (kf * fact));
@@ -240,11 +252,20 @@ fn airlight_ein_divided_difference(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     return sum;
 }
 
-/// Power series inside the ellipse (Re z/1.3)² + (Im z/2.1)² < 1.
+/// Power series inside the ellipse (e1.rs `in_series_region`).
 fn airlight_in_series_region(z: vec2<f32>) -> bool {
-    let x = z.x * (1.0 / 1.3);
-    let y = z.y * (1.0 / 2.1);
+    let x = z.x * AIRLIGHT_E1_INV_RE;
+    let y = z.y * AIRLIGHT_E1_INV_IM;
     return x * x + y * y < 1.0;
+}
+
+/// The continued fraction's depth at |z| = r (real.rs `E1_CF_DEPTH`), and at |z|² = r2.
+fn airlight_cf_depth(r: f32) -> u32 {
+@E1_CF_DEPTH@
+}
+
+fn airlight_cf_depth_squared(r2: f32) -> u32 {
+@E1_CF_DEPTH_SQUARED@
 }
 
 /// e^z E1(z) by the continued fraction (A&S 5.1.22) with the tail estimate; depth by |z|.
@@ -255,8 +276,7 @@ fn airlight_e1_scaled_cf(z: vec2<f32>) -> vec2<f32> {
     if (max(ax, ay) < 1.0e18) {
         r2 = ax * ax + ay * ay;
     }
-    var depth = 2u;
-    if (r2 < 9.0) { depth = 15u; } else if (r2 < 25.0) { depth = 10u; } else if (r2 < 100.0) { depth = 6u; } else if (r2 < 900.0) { depth = 3u; }
+    let depth = airlight_cf_depth_squared(r2);
     let nf = f32(depth);
     let b = z + vec2<f32>(2.0 * nf + 1.0, 0.0);
     let q = airlight_cdiv(vec2<f32>(2.0 * (nf + 1.0), 0.0), b);
@@ -265,7 +285,7 @@ fn airlight_e1_scaled_cf(z: vec2<f32>) -> vec2<f32> {
         root = -root;
     }
     var t = airlight_cmul(b, vec2<f32>(1.0, 0.0) + root) * 0.5;
-    for (var i = 0u; i < 15u; i++) {
+    for (var i = 0u; i < AIRLIGHT_E1_CF_MAX_DEPTH; i++) {
         if (i < depth) {
             let kf = f32(depth - i);
             t = z + vec2<f32>(2.0 * kf - 1.0, 0.0) - airlight_cdiv(vec2<f32>(kf * kf, 0.0), t);
@@ -285,8 +305,7 @@ fn airlight_e1_scaled(z: vec2<f32>) -> vec2<f32> {
 
 /// e^x E_n(x) by its continued fraction, x outside the series region.
 fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
-    var depth = 2u;
-    if (x < 3.0) { depth = 15u; } else if (x < 5.0) { depth = 10u; } else if (x < 10.0) { depth = 6u; } else if (x < 30.0) { depth = 3u; }
+    let depth = airlight_cf_depth(x);
     let nf = f32(n);
     let m = f32(depth);
     let b = x + nf + 2.0 * (m + 1.0);
@@ -296,7 +315,7 @@ fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
     if (disc > 0.0) {
         t = b * (1.0 + sqrt(disc)) * 0.5;
     }
-    for (var i = 0u; i < 15u; i++) {
+    for (var i = 0u; i < AIRLIGHT_E1_CF_MAX_DEPTH; i++) {
         if (i < depth) {
             let kf = f32(depth - i);
             t = x + nf + 2.0 * kf - (kf + 1.0) * (nf + kf) / t;
@@ -359,19 +378,19 @@ fn airlight_hg(g: f32, om: f32, op: f32) -> f32 {
 /// exact (phase.rs `eval_sides`).
 fn airlight_phase(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32, om: f32, op: f32) -> f32 {
     switch kind {
-        case 1u: { return 3.0 / (16.0 * AIRLIGHT_PI) * (1.0 + mu * mu); }
-        case 2u: { return airlight_hg(p0, om, op); }
-        case 3u: {
+        case AIRLIGHT_PHASE_RAYLEIGH: { return 3.0 / (16.0 * AIRLIGHT_PI) * (1.0 + mu * mu); }
+        case AIRLIGHT_PHASE_HENYEY_GREENSTEIN: { return airlight_hg(p0, om, op); }
+        case AIRLIGHT_PHASE_SCHLICK: {
             // 1 − kμ = (1 − k) + k(1 − μ) for k ≥ 0, (1 + k) − k(1 + μ) for k < 0
             var d = (1.0 + p0) - p0 * op;
             if (p0 >= 0.0) { d = (1.0 - p0) + p0 * om; }
             return (1.0 - p0) * (1.0 + p0) / (4.0 * AIRLIGHT_PI) / (d * d);
         }
-        case 4u: {
+        case AIRLIGHT_PHASE_CORNETTE_SHANKS: {
             let base = airlight_hg_base(p0, om, op);
             return 3.0 / 8.0 / AIRLIGHT_PI * (1.0 - p0) * (1.0 + p0) / (2.0 + p0 * p0) * ((1.0 + mu * mu) / (base * sqrt(base)));
         }
-        case 5u: { return p2 * airlight_hg(p0, om, op) + (1.0 - p2) * airlight_hg(p1, om, op); }
+        case AIRLIGHT_PHASE_TWO_LOBE_HG: { return p2 * airlight_hg(p0, om, op) + (1.0 - p2) * airlight_hg(p1, om, op); }
         default: { return 1.0 / (4.0 * AIRLIGHT_PI); }
     }
 }
@@ -384,19 +403,19 @@ fn airlight_phase_mu(kind: u32, p0: f32, p1: f32, p2: f32, mu: f32) -> f32 {
 /// D(c): omni 1, two-lobed c^p, spot smoothstep between cos_outer and cos_inner.
 fn airlight_light(kind: u32, p0: f32, p1: f32, c: f32) -> f32 {
     switch kind {
-        case 1u: {
-            // c^p by repeated squaring, p ≤ 1024
+        case AIRLIGHT_LIGHT_TWO_LOBED: {
+            // c^p by repeated squaring, p ≤ AIRLIGHT_MAX_POWER (light.rs TwoLobed::MAX_POWER)
             var base = c;
             var e = u32(p0);
             var acc = 1.0;
-            for (var i = 0u; i < 11u; i++) {
+            for (var i = 0u; i < AIRLIGHT_MAX_POWER_BITS; i++) {
                 if ((e & 1u) == 1u) { acc *= base; }
                 e = e >> 1u;
                 base *= base;
             }
             return acc;
         }
-        case 2u: {
+        case AIRLIGHT_LIGHT_SPOT: {
             // an edge narrower than f32's epsilon is a step at its middle (light.rs)
             let width = p0 - p1;
             if (width <= AIRLIGHT_FLT_EPS) {
@@ -455,15 +474,13 @@ fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32
 // ---------------------------------------------------------------- the isotropic moment
 // (kernel/src/integrals.rs, count = 1)
 
-/// m_0 on a short sub-interval (route 1): 4-point Gauss–Legendre.
+/// m_0 on a short sub-interval (route 1): Gauss–Legendre with real.rs `GAUSS_NODES`.
 fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
     var m = 0.0;
     let hw = half.dy * 0.5;
     let yc = half.y_lo + hw;
-    let nodes = array<vec2<f32>, 4>(
-        vec2<f32>(-0.8611363115940526, 0.3478548451374538), vec2<f32>(-0.3399810435848563, 0.6521451548625461),
-        vec2<f32>(0.3399810435848563, 0.6521451548625461), vec2<f32>(0.8611363115940526, 0.3478548451374538));
-    for (var j = 0u; j < 4u; j++) {
+    let nodes = array<vec2<f32>, @SHORT_NODES@>(@SHORT_RULE@);
+    for (var j = 0u; j < @SHORT_NODES@u; j++) {
         let xi = nodes[j].x;
         let y = yc + hw * xi;
         var dv = hw * (1.0 + xi);
@@ -1123,7 +1140,7 @@ fn airlight_valid(s: AirlightScene) -> bool {
     }
     if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
-            && s.light_param_a >= 0.0 && s.light_param_a <= 1024.0 && fract(s.light_param_a * 0.5) == 0.0;
+            && s.light_param_a >= 0.0 && s.light_param_a <= f32(AIRLIGHT_MAX_POWER) && fract(s.light_param_a * 0.5) == 0.0;
     } else if (s.light_kind == AIRLIGHT_LIGHT_SPOT) {
         ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
             && s.light_param_b < s.light_param_a && s.light_param_b >= -1.0 && s.light_param_a <= 1.0;
@@ -1132,9 +1149,9 @@ fn airlight_valid(s: AirlightScene) -> bool {
     }
     let g_ok = abs(s.phase_param_a) < 1.0;
     switch s.phase_kind {
-        case 0u, 1u: {}
-        case 2u, 3u, 4u: { ok = ok && g_ok; }
-        case 5u: { ok = ok && g_ok && abs(s.phase_param_b) < 1.0 && s.phase_param_c >= 0.0 && s.phase_param_c <= 1.0; }
+        case AIRLIGHT_PHASE_ISOTROPIC, AIRLIGHT_PHASE_RAYLEIGH: {}
+        case AIRLIGHT_PHASE_HENYEY_GREENSTEIN, AIRLIGHT_PHASE_SCHLICK, AIRLIGHT_PHASE_CORNETTE_SHANKS: { ok = ok && g_ok; }
+        case AIRLIGHT_PHASE_TWO_LOBE_HG: { ok = ok && g_ok && abs(s.phase_param_b) < 1.0 && s.phase_param_c >= 0.0 && s.phase_param_c <= 1.0; }
         default: { ok = false; }
     }
     return ok;

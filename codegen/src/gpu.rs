@@ -67,7 +67,7 @@ impl Gpu {
                     label: Some("airlight spirv"),
                     entry_points: Cow::Owned(vec![wgpu::PassthroughShaderEntryPoint {
                         name: Cow::Borrowed(entry),
-                        workgroup_size: (64, 1, 1),
+                        workgroup_size: (crate::layout::WORKGROUP_SIZE, 1, 1),
                     }]),
                     spirv: Some(Cow::Borrowed(words)),
                     ..Default::default()
@@ -159,8 +159,8 @@ impl Prepared<'_> {
         let gpu = self.gpu;
         let (bgl, pipeline) = (&self.bgl, &self.pipeline);
         let by_binding = gpu.limits.max_storage_buffer_binding_size as usize / RECORD_SIZE;
-        let by_dispatch = gpu.limits.max_compute_workgroups_per_dimension as usize * 64;
-        let batch = by_binding.min(by_dispatch).min(1 << 18).max(64);
+        let by_dispatch = gpu.limits.max_compute_workgroups_per_dimension as usize * crate::layout::WORKGROUP_SIZE as usize;
+        let batch = by_binding.min(by_dispatch).min(1 << 18).max(crate::layout::WORKGROUP_SIZE as usize);
         let batches = n.div_ceil(batch);
         let start = std::time::Instant::now();
         for (b, chunk) in records.chunks(batch * RECORD_SIZE).enumerate() {
@@ -198,7 +198,7 @@ impl Prepared<'_> {
                 let mut pass = enc.begin_compute_pass(&Default::default());
                 pass.set_pipeline(pipeline);
                 pass.set_bind_group(0, &bind, &[]);
-                pass.dispatch_workgroups(count.div_ceil(64) as u32, 1, 1);
+                pass.dispatch_workgroups(count.div_ceil(crate::layout::WORKGROUP_SIZE as usize) as u32, 1, 1);
             }
             enc.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
             gpu.queue.submit([enc.finish()]);

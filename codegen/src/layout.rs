@@ -43,6 +43,27 @@ pub const STATUS_INVALID: u32 = 1;
 /// Status: the light lies on the segment (or the value overflowed); value `f32::MAX`.
 pub const STATUS_INFINITE: u32 = 2;
 
+/// `light_kind` of an omni light ([`AnyDistribution::Omni`]).
+pub const LIGHT_OMNI: u32 = 0;
+/// `light_kind` of a two-lobed `c^p` light (`light_param_a` = p).
+pub const LIGHT_TWO_LOBED: u32 = 1;
+/// `light_kind` of a spot cone (`light_param_a`, `_b` = cos_inner, cos_outer).
+pub const LIGHT_SPOT: u32 = 2;
+/// `phase_kind` of isotropic scattering.
+pub const PHASE_ISOTROPIC: u32 = 0;
+/// `phase_kind` of Rayleigh scattering.
+pub const PHASE_RAYLEIGH: u32 = 1;
+/// `phase_kind` of Henyey–Greenstein (`phase_param_a` = g).
+pub const PHASE_HENYEY_GREENSTEIN: u32 = 2;
+/// `phase_kind` of Schlick (`phase_param_a` = k).
+pub const PHASE_SCHLICK: u32 = 3;
+/// `phase_kind` of Cornette–Shanks (`phase_param_a` = g).
+pub const PHASE_CORNETTE_SHANKS: u32 = 4;
+/// `phase_kind` of two-lobe Henyey–Greenstein (`phase_param_a`, `_b`, `_c` = g1, g2, w).
+pub const PHASE_TWO_LOBE_HG: u32 = 5;
+/// Invocations per workgroup of the compute entry point (dispatch `⌈n / WORKGROUP_SIZE⌉`).
+pub const WORKGROUP_SIZE: u32 = 64;
+
 /// Packs one scene into its 112-byte record.
 pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> [u8; RECORD_SIZE] {
     let mut w = [0u32; RECORD_SIZE / 4];
@@ -55,18 +76,18 @@ pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, mediu
     put3(16, ray.dir.to_array());
     put3(32, light.position.to_array());
     let (kind, axis, p0, p1) = match light.distribution {
-        AnyDistribution::Omni => (0u32, [0.0, 0.0, 1.0], 0.0, 0.0),
-        AnyDistribution::TwoLobed(d) => (1, d.axis.to_array(), d.power as f32, 0.0),
-        AnyDistribution::SpotCone(d) => (2, d.axis.to_array(), d.cos_inner, d.cos_outer),
+        AnyDistribution::Omni => (LIGHT_OMNI, [0.0, 0.0, 1.0], 0.0, 0.0),
+        AnyDistribution::TwoLobed(d) => (LIGHT_TWO_LOBED, d.axis.to_array(), d.power as f32, 0.0),
+        AnyDistribution::SpotCone(d) => (LIGHT_SPOT, d.axis.to_array(), d.cos_inner, d.cos_outer),
     };
     put3(48, axis);
     let (pk, q0, q1, q2) = match phase {
-        AnyPhase::Isotropic => (0u32, 0.0, 0.0, 0.0),
-        AnyPhase::Rayleigh => (1, 0.0, 0.0, 0.0),
-        AnyPhase::HenyeyGreenstein(p) => (2, p.g, 0.0, 0.0),
-        AnyPhase::Schlick(p) => (3, p.k, 0.0, 0.0),
-        AnyPhase::CornetteShanks(p) => (4, p.g, 0.0, 0.0),
-        AnyPhase::TwoLobeHenyeyGreenstein(p) => (5, p.g1, p.g2, p.w),
+        AnyPhase::Isotropic => (PHASE_ISOTROPIC, 0.0, 0.0, 0.0),
+        AnyPhase::Rayleigh => (PHASE_RAYLEIGH, 0.0, 0.0, 0.0),
+        AnyPhase::HenyeyGreenstein(p) => (PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0),
+        AnyPhase::Schlick(p) => (PHASE_SCHLICK, p.k, 0.0, 0.0),
+        AnyPhase::CornetteShanks(p) => (PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0),
+        AnyPhase::TwoLobeHenyeyGreenstein(p) => (PHASE_TWO_LOBE_HG, p.g1, p.g2, p.w),
     };
     let infinite = ray.t_max == f32::INFINITY;
     w[3] = ray.t_min.to_bits();

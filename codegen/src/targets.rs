@@ -12,6 +12,7 @@
 //! Every artifact comes from a module naga has validated; output is deterministic, so
 //! `check` can compare the committed `shaders-out/` byte for byte.
 
+use airlight::Real;
 use naga::back::{glsl, hlsl, msl, spv, wgsl};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
@@ -116,46 +117,123 @@ impl fmt::Display for EmitError {
 
 impl std::error::Error for EmitError {}
 
-/// The WGSL source for `terms` Gauss–Legendre nodes per panel: the library, plus the compute
-/// entry point when `compute` is set. Every number the template leaves open is the kernel's
-/// own (its f32 values, written as the shortest decimal that reads back to the same f32):
-/// the rule and the Legendre transform (`expansion::gauss_table`), the shaders' control
-/// (`SHADER_CONTROL`), the y-panel bound and the exact-product range of `f32`.
-///
-/// # Panics
-/// If `terms` has no tabulated rule (the emitted counts, [`TERM_COUNTS`], have).
+/// The numbers the WGSL template (`codegen/shader/*.wgsl`) leaves open, each taken from the
+/// kernel or the record layout at emission: placeholder → WGSL text. f32 values are written as
+/// the shortest decimal that reads back to the same f32 (the kernel's `T::lit` rounding).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Constants {
+    /// `("@NAME@", text)` pairs, every placeholder of the template once.
+    pub fills: Vec<(&'static str, String)>,
+}
+
+impl Constants {
+    /// The kernel's values for a shader with `terms` Gauss–Legendre nodes per panel: the rule
+    /// and the Legendre transform (`expansion::gauss_table`), the shaders' control
+    /// (`SHADER_CONTROL`), the y-panel bound, the exact-product range and the exponential
+    /// integrals' tuning of `f32` (`Real`), the short route's Gauss rule, the two-lobed light's
+    /// largest power, and the record's kind and status codes and workgroup size
+    /// ([`crate::layout`]).
+    ///
+    /// # Panics
+    /// If `terms` has no tabulated rule (the emitted counts, [`TERM_COUNTS`], have).
+    pub fn from_kernel(terms: usize) -> Constants {
+        use crate::layout as l;
+        use airlight::expansion::gauss_table;
+        type F32 = f32;
+        let f = |x: f64| format!("{:?}", x as f32);
+        let list = |xs: Vec<String>| xs.join(", ");
+        let rule = gauss_table::rule(terms).expect("a tabulated Gauss–Legendre rule");
+        let transform = gauss_table::transform(terms).expect("a tabulated Legendre transform");
+        let control = airlight::SHADER_CONTROL;
+        let panel_list = 1 + (control.max_panels - 1) / 2;
+        let (re, im) = <F32 as Real>::E1_SERIES_ELLIPSE;
+        let depth = <F32 as Real>::E1_CF_DEPTH;
+        let chain = |square: bool| {
+            let mut body = String::new();
+            for &(bound, d) in depth {
+                if bound.is_finite() {
+                    let (var, b) = if square { ("r2", bound * bound) } else { ("r", bound) };
+                    body.push_str(&format!("    if ({var} < {}) {{ return {d}u; }}\n", f(b)));
+                } else {
+                    body.push_str(&format!("    return {d}u;"));
+                }
+            }
+            body
+        };
+        let short: Vec<String> = <F32 as Real>::GAUSS_NODES
+            .iter()
+            .flat_map(|&(x, w)| [(-x, w), (x, w)])
+            .map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w)))
+            .collect();
+        let max_power = airlight::light::TwoLobed::<f32>::MAX_POWER;
+        let fills = vec![
+            ("@TERMS@", terms.to_string()),
+            ("@HALF_TERMS@", (terms / 2).to_string()),
+            ("@ZEROS_TERMS@", list(vec!["0.0".to_string(); terms])),
+            ("@PANEL_TOLERANCE@", f(control.tolerance as f64)),
+            ("@PANEL_FLOOR@", f(control.floor as f64)),
+            ("@MAX_PANELS@", control.max_panels.to_string()),
+            ("@PANEL_LIST@", panel_list.to_string()),
+            ("@ZEROS_LIST@", list(vec!["0.0".to_string(); panel_list])),
+            ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
+            ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
+            ("@EXACT_RANGE@", f(<F32 as Real>::EXACT_RANGE)),
+            ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
+            ("@TRANSFORM_LEN@", transform.len().to_string()),
+            ("@LEGENDRE_TRANSFORM@", list(transform.iter().map(|&x| f(x)).collect())),
+            ("@E1_SERIES_TERMS@", <F32 as Real>::E1_SERIES_TERMS.to_string()),
+            ("@E1_INV_RE@", f(1.0 / re)),
+            ("@E1_INV_IM@", f(1.0 / im)),
+            ("@E1_CF_MAX_DEPTH@", depth.iter().map(|d| d.1).max().unwrap_or(0).to_string()),
+            ("@E1_CF_DEPTH@", chain(false)),
+            ("@E1_CF_DEPTH_SQUARED@", chain(true)),
+            ("@SHORT_NODES@", short.len().to_string()),
+            ("@SHORT_RULE@", list(short)),
+            ("@MAX_POWER@", max_power.to_string()),
+            ("@MAX_POWER_BITS@", (u32::BITS - max_power.leading_zeros()).to_string()),
+            ("@PHASE_ISOTROPIC@", l::PHASE_ISOTROPIC.to_string()),
+            ("@PHASE_RAYLEIGH@", l::PHASE_RAYLEIGH.to_string()),
+            ("@PHASE_HENYEY_GREENSTEIN@", l::PHASE_HENYEY_GREENSTEIN.to_string()),
+            ("@PHASE_SCHLICK@", l::PHASE_SCHLICK.to_string()),
+            ("@PHASE_CORNETTE_SHANKS@", l::PHASE_CORNETTE_SHANKS.to_string()),
+            ("@PHASE_TWO_LOBE_HG@", l::PHASE_TWO_LOBE_HG.to_string()),
+            ("@LIGHT_OMNI@", l::LIGHT_OMNI.to_string()),
+            ("@LIGHT_TWO_LOBED@", l::LIGHT_TWO_LOBED.to_string()),
+            ("@LIGHT_SPOT@", l::LIGHT_SPOT.to_string()),
+            ("@STATUS_OK@", l::STATUS_OK.to_string()),
+            ("@STATUS_INVALID@", l::STATUS_INVALID.to_string()),
+            ("@STATUS_INFINITE@", l::STATUS_INFINITE.to_string()),
+            ("@WORKGROUP_SIZE@", l::WORKGROUP_SIZE.to_string()),
+        ];
+        Constants { fills }
+    }
+
+    /// The template with every placeholder filled: the library, plus the compute entry point
+    /// when `compute` is set.
+    ///
+    /// # Panics
+    /// If a placeholder of the template has no fill (a template and this table that disagree).
+    pub fn source(&self, compute: bool) -> String {
+        let mut s = LIBRARY.to_string();
+        if compute {
+            s.push_str(COMPUTE);
+        }
+        for (key, value) in &self.fills {
+            s = s.replace(key, value);
+        }
+        if let Some(at) = s.find('@').filter(|&i| s[i + 1..].starts_with(|c: char| c.is_ascii_uppercase())) {
+            let name: String = s[at..].chars().take_while(|c| !c.is_whitespace()).collect();
+            panic!("the shader template's placeholder {name} has no value");
+        }
+        s
+    }
+}
+
+/// The WGSL source for `terms` Gauss–Legendre nodes per panel, filled from the kernel
+/// ([`Constants::from_kernel`]): the library, plus the compute entry point when `compute` is
+/// set.
 pub fn source(terms: usize, compute: bool) -> String {
-    use airlight::expansion::gauss_table;
-    let f = |x: f64| format!("{:?}", x as f32);
-    let list = |xs: Vec<String>| xs.join(", ");
-    let rule = gauss_table::rule(terms).expect("a tabulated Gauss–Legendre rule");
-    let transform = gauss_table::transform(terms).expect("a tabulated Legendre transform");
-    let control = airlight::SHADER_CONTROL;
-    let panel_list = 1 + (control.max_panels - 1) / 2;
-    let fills: [(&str, String); 14] = [
-        ("@TERMS@", terms.to_string()),
-        ("@HALF_TERMS@", (terms / 2).to_string()),
-        ("@ZEROS_TERMS@", list(vec!["0.0".to_string(); terms])),
-        ("@PANEL_TOLERANCE@", f(control.tolerance as f64)),
-        ("@PANEL_FLOOR@", f(control.floor as f64)),
-        ("@MAX_PANELS@", control.max_panels.to_string()),
-        ("@PANEL_LIST@", panel_list.to_string()),
-        ("@ZEROS_LIST@", list(vec!["0.0".to_string(); panel_list])),
-        ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
-        ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
-        ("@EXACT_RANGE@", f(<f32 as airlight::Real>::EXACT_RANGE)),
-        ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
-        ("@TRANSFORM_LEN@", transform.len().to_string()),
-        ("@LEGENDRE_TRANSFORM@", list(transform.iter().map(|&x| f(x)).collect())),
-    ];
-    let mut s = LIBRARY.to_string();
-    for (key, value) in &fills {
-        s = s.replace(key, value);
-    }
-    if compute {
-        s.push_str(COMPUTE);
-    }
-    s
+    Constants::from_kernel(terms).source(compute)
 }
 
 /// Parses and validates WGSL.
@@ -269,6 +347,11 @@ fn msl_text(module: &naga::Module, info: &ModuleInfo, entry: &str) -> Result<Str
 /// SPIR-V words of the compute entry point (Vulkan 1.0 / SPIR-V 1.0, no debug info).
 pub fn spirv_words(terms: usize) -> Result<Vec<u32>, EmitError> {
     let (module, info) = validate(&source(terms, true))?;
+    spirv_of(&module, &info)
+}
+
+/// SPIR-V 1.0 words of a validated compute module.
+fn spirv_of(module: &naga::Module, info: &ModuleInfo) -> Result<Vec<u32>, EmitError> {
     let options = spv::Options {
         lang_version: (1, 0),
         flags: spv::WriterFlags::ADJUST_COORDINATE_SPACE,
@@ -276,7 +359,7 @@ pub fn spirv_words(terms: usize) -> Result<Vec<u32>, EmitError> {
         ..Default::default()
     };
     let pipeline = spv::PipelineOptions { shader_stage: naga::ShaderStage::Compute, entry_point: COMPUTE_ENTRY.to_string() };
-    spv::write_vec(&module, &info, &options, Some(&pipeline)).map_err(|e| EmitError::Shader(format!("spirv: {e}")))
+    spv::write_vec(module, info, &options, Some(&pipeline)).map_err(|e| EmitError::Shader(format!("spirv: {e}")))
 }
 
 fn check_options(opts: &EmitOptions) -> Result<(), EmitError> {
@@ -293,13 +376,20 @@ fn check_options(opts: &EmitOptions) -> Result<(), EmitError> {
 
 /// Renders every artifact in memory: relative file name → bytes.
 pub fn render(opts: &EmitOptions) -> Result<BTreeMap<String, Vec<u8>>, EmitError> {
+    render_with(opts, Constants::from_kernel)
+}
+
+/// [`render`] with the template's numbers from `constants` (per node count) instead of the
+/// kernel: what a shader whose numbers drifted from the kernel's would emit.
+pub fn render_with(opts: &EmitOptions, constants: impl Fn(usize) -> Constants) -> Result<BTreeMap<String, Vec<u8>>, EmitError> {
     check_options(opts)?;
     let mut files = BTreeMap::new();
     for &n in &opts.terms {
-        let (cm, ci) = validate(&source(n, true))?;
-        let lib_src = source(n, false) + LIBRARY_STUB;
+        let filled = constants(n);
+        let (cm, ci) = validate(&filled.source(true))?;
+        let lib_src = filled.source(false) + LIBRARY_STUB;
         let (lm, li) = validate(&lib_src)?;
-        let (lone, lone_info) = validate(&source(n, false))?;
+        let (lone, lone_info) = validate(&filled.source(false))?;
         for &t in &opts.targets {
             match t {
                 Target::Wgsl => {
@@ -315,13 +405,13 @@ pub fn render(opts: &EmitOptions) -> Result<BTreeMap<String, Vec<u8>>, EmitError
                     let l = glsl_text(&lm, &li, glsl::Version::Desktop(450), naga::ShaderStage::Compute, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
                     let l = glsl_library(&l)?;
                     files.insert(format!("glsl/airlight_lib_{n}.glsl"), (header("//", n, "include library (GLSL 450)") + &l).into_bytes());
-                    let (em, ei) = validate(&(source(n, false) + LIBRARY_STUB_ES))?;
+                    let (em, ei) = validate(&(filled.source(false) + LIBRARY_STUB_ES))?;
                     let e = glsl_text(&em, &ei, glsl::Version::Embedded { version: 300, is_webgl: true }, naga::ShaderStage::Fragment, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
                     let e = glsl_library(&e)?;
                     files.insert(format!("glsl/airlight_lib_{n}_es300.glsl"), (header("//", n, "include library (GLSL ES 3.00 / WebGL2)") + &e).into_bytes());
                 }
                 Target::Spirv => {
-                    let words = spirv_words(n)?;
+                    let words = spirv_of(&cm, &ci)?;
                     files.insert(format!("spirv/airlight_{n}.spv"), words.iter().flat_map(|w| w.to_le_bytes()).collect());
                 }
                 Target::Hlsl => {
@@ -402,9 +492,13 @@ pub fn emit(out_dir: &Path, opts: &EmitOptions) -> Result<Vec<PathBuf>, EmitErro
 /// Compares `dir` with what the current source emits: the stale, missing and unexpected
 /// files (empty when up to date). Only the folders of the requested targets are compared.
 pub fn check(dir: &Path, opts: &EmitOptions) -> Result<Vec<String>, EmitError> {
-    let files = render(opts)?;
+    compare(dir, &render(opts)?)
+}
+
+/// The stale, missing and unexpected files of `dir` against `files`.
+fn compare(dir: &Path, files: &BTreeMap<String, Vec<u8>>) -> Result<Vec<String>, EmitError> {
     let mut problems = Vec::new();
-    for (rel, bytes) in &files {
+    for (rel, bytes) in files {
         match std::fs::read(dir.join(rel)) {
             Ok(old) if &old == bytes => {}
             Ok(_) => problems.push(format!("stale: {rel}")),
@@ -423,4 +517,43 @@ pub fn check(dir: &Path, opts: &EmitOptions) -> Result<Vec<String>, EmitError> {
         }
     }
     Ok(problems)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wgsl_only() -> EmitOptions {
+        EmitOptions { terms: TERM_COUNTS.to_vec(), targets: vec![Target::Wgsl] }
+    }
+
+    /// Every placeholder of the template has a value, for every emitted node count.
+    #[test]
+    fn every_placeholder_is_filled() {
+        for n in TERM_COUNTS {
+            let s = source(n, true);
+            assert!(!s.contains("@TERMS@") && !s.contains("@GAUSS_RULE@"));
+        }
+    }
+
+    /// The committed shaders carry the kernel's numbers: emitting them again from the kernel
+    /// changes nothing, and a shader whose one number drifted from the kernel's (here the
+    /// f32 E1 series' term count, one less) no longer matches them — `airlight check` fails.
+    #[test]
+    fn a_drifted_constant_fails_the_check() {
+        let dir = default_out_dir();
+        assert_eq!(check(&dir, &wgsl_only()).unwrap(), Vec::<String>::new(), "shaders-out/ is stale: run `airlight emit`");
+        let drifted = |n: usize| {
+            let mut c = Constants::from_kernel(n);
+            let terms = <f32 as Real>::E1_SERIES_TERMS;
+            for (key, value) in &mut c.fills {
+                if *key == "@E1_SERIES_TERMS@" {
+                    *value = (terms - 1).to_string();
+                }
+            }
+            c
+        };
+        let problems = compare(&dir, &render_with(&wgsl_only(), drifted).unwrap()).unwrap();
+        assert!(problems.contains(&"stale: wgsl/airlight_4.wgsl".to_string()), "{problems:?}");
+    }
 }

@@ -57,6 +57,11 @@ pub struct TwoLobed<T: Real> {
     pub power: u32,
 }
 
+impl<T: Real> TwoLobed<T> {
+    /// The largest accepted power `p`.
+    pub const MAX_POWER: u32 = 1024;
+}
+
 impl<T: Real> LightDistribution<T> for TwoLobed<T> {
     fn axis(&self) -> [T; 3] {
         T::vec3_to_array(self.axis)
@@ -69,7 +74,7 @@ impl<T: Real> LightDistribution<T> for TwoLobed<T> {
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
-        if self.power % 2 != 0 || self.power > 1024 {
+        if self.power % 2 != 0 || self.power > Self::MAX_POWER {
             return Err(InputError::new("light.distribution.power", ErrorKind::OddPower));
         }
         Ok(())

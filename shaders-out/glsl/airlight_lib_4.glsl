@@ -73,6 +73,12 @@ const uint AIRLIGHT_LIGHT_SPOT = 2u;
 const uint AIRLIGHT_STATUS_OK = 0u;
 const uint AIRLIGHT_STATUS_INVALID = 1u;
 const uint AIRLIGHT_STATUS_INFINITE = 2u;
+const uint AIRLIGHT_MAX_POWER = 1024u;
+const uint AIRLIGHT_MAX_POWER_BITS = 11u;
+const uint AIRLIGHT_E1_SERIES_TERMS = 14u;
+const float AIRLIGHT_E1_INV_RE = 0.7692308;
+const float AIRLIGHT_E1_INV_IM = 0.47619048;
+const uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
 
 
 float[4] airlight_zero_terms() {
@@ -89,13 +95,13 @@ vec2 airlight_cmul(vec2 a, vec2 b) {
 
 vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_1 = (b_1.y / b_1.x);
-        float den = (b_1.x + (b_1.y * r_1));
-        return vec2(((a_1.x + (a_1.y * r_1)) / den), ((a_1.y - (a_1.x * r_1)) / den));
+        float r_2 = (b_1.y / b_1.x);
+        float den = (b_1.x + (b_1.y * r_2));
+        return vec2(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
     }
-    float r_2 = (b_1.x / b_1.y);
-    float den_1 = ((b_1.x * r_2) + b_1.y);
-    return vec2((((a_1.x * r_2) + a_1.y) / den_1), (((a_1.y * r_2) - a_1.x) / den_1));
+    float r_3 = (b_1.x / b_1.y);
+    float den_1 = ((b_1.x * r_3) + b_1.y);
+    return vec2((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
 }
 
 float airlight_cabs(vec2 z) {
@@ -272,7 +278,7 @@ vec2 airlight_ein(vec2 z_4) {
         }
         loop_init_3 = false;
         uint _e11 = k_2;
-        if ((_e11 <= 14u)) {
+        if ((_e11 <= AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
@@ -306,7 +312,7 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
         }
         loop_init_4 = false;
         uint _e20 = k_3;
-        if ((_e20 <= 14u)) {
+        if ((_e20 <= AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
@@ -336,84 +342,95 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_10 = (z_5.x * 0.7692308);
-    float y_2 = (z_5.y * 0.47619048);
+    float x_10 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float y_2 = (z_5.y * AIRLIGHT_E1_INV_IM);
     return (((x_10 * x_10) + (y_2 * y_2)) < 1.0);
 }
 
+uint airlight_cf_depth(float r) {
+    if ((r < 3.0)) {
+        return 15u;
+    }
+    if ((r < 5.0)) {
+        return 10u;
+    }
+    if ((r < 10.0)) {
+        return 6u;
+    }
+    if ((r < 30.0)) {
+        return 3u;
+    }
+    return 2u;
+}
+
+uint airlight_cf_depth_squared(float r2_) {
+    if ((r2_ < 9.0)) {
+        return 15u;
+    }
+    if ((r2_ < 25.0)) {
+        return 10u;
+    }
+    if ((r2_ < 100.0)) {
+        return 6u;
+    }
+    if ((r2_ < 900.0)) {
+        return 3u;
+    }
+    return 2u;
+}
+
 vec2 airlight_e1_scaled_cf(vec2 z_6) {
-    float r2_ = 3e38;
-    uint depth = 2u;
+    float r2_1 = 3e38;
     vec2 root = vec2(0.0);
     vec2 t_1 = vec2(0.0);
     uint i = 0u;
     float ax = abs(z_6.x);
     float ay = abs(z_6.y);
     if ((max(ax, ay) < 1e18)) {
-        r2_ = ((ax * ax) + (ay * ay));
+        r2_1 = ((ax * ax) + (ay * ay));
     }
-    float _e15 = r2_;
-    if ((_e15 < 9.0)) {
-        depth = 15u;
-    } else {
-        float _e19 = r2_;
-        if ((_e19 < 25.0)) {
-            depth = 10u;
-        } else {
-            float _e23 = r2_;
-            if ((_e23 < 100.0)) {
-                depth = 6u;
-            } else {
-                float _e27 = r2_;
-                if ((_e27 < 900.0)) {
-                    depth = 3u;
-                }
-            }
-        }
-    }
-    uint _e31 = depth;
-    float nf = float(_e31);
+    float _e13 = r2_1;
+    uint _e14 = airlight_cf_depth_squared(_e13);
+    float nf = float(_e14);
     vec2 b_11 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e46 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_11);
-    vec2 _e50 = airlight_cmul(_e46, _e46);
-    vec2 _e52 = airlight_csqrt((vec2(1.0, 0.0) - _e50));
-    root = _e52;
-    float _e55 = root.x;
-    if ((_e55 < 0.0)) {
-        vec2 _e58 = root;
-        root = -(_e58);
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_11);
+    vec2 _e33 = airlight_cmul(_e29, _e29);
+    vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
+    root = _e35;
+    float _e38 = root.x;
+    if ((_e38 < 0.0)) {
+        vec2 _e41 = root;
+        root = -(_e41);
     }
-    vec2 _e63 = root;
-    vec2 _e65 = airlight_cmul(b_11, (vec2(1.0, 0.0) + _e63));
-    t_1 = (_e65 * 0.5);
+    vec2 _e46 = root;
+    vec2 _e48 = airlight_cmul(b_11, (vec2(1.0, 0.0) + _e46));
+    t_1 = (_e48 * 0.5);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e95 = i;
-            i = (_e95 + 1u);
+            uint _e76 = i;
+            i = (_e76 + 1u);
         }
         loop_init_5 = false;
-        uint _e71 = i;
-        if ((_e71 < 15u)) {
+        uint _e54 = i;
+        if ((_e54 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
             break;
         }
         {
-            uint _e74 = i;
-            uint _e75 = depth;
-            if ((_e74 < _e75)) {
-                uint _e77 = depth;
-                uint _e78 = i;
-                float kf_2 = float((_e77 - _e78));
-                vec2 _e91 = t_1;
-                vec2 _e92 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e91);
-                t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e92);
+            uint _e57 = i;
+            if ((_e57 < _e14)) {
+                uint _e59 = i;
+                float kf_2 = float((_e14 - _e59));
+                vec2 _e72 = t_1;
+                vec2 _e73 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e72);
+                t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e73);
             }
         }
     }
-    vec2 _e100 = t_1;
-    vec2 _e101 = airlight_cdiv(vec2(1.0, 0.0), _e100);
-    return _e101;
+    vec2 _e81 = t_1;
+    vec2 _e82 = airlight_cdiv(vec2(1.0, 0.0), _e81);
+    return _e82;
 }
 
 vec2 airlight_e1_scaled(vec2 z_7) {
@@ -431,27 +448,11 @@ vec2 airlight_e1_scaled(vec2 z_7) {
 }
 
 float airlight_en_scaled_cf(float x_4, uint n) {
-    uint depth_1 = 2u;
     float t_2 = 0.0;
     uint i_1 = 0u;
-    if ((x_4 < 3.0)) {
-        depth_1 = 15u;
-    } else {
-        if ((x_4 < 5.0)) {
-            depth_1 = 10u;
-        } else {
-            if ((x_4 < 10.0)) {
-                depth_1 = 6u;
-            } else {
-                if ((x_4 < 30.0)) {
-                    depth_1 = 3u;
-                }
-            }
-        }
-    }
+    uint _e2 = airlight_cf_depth(x_4);
     float nf_1 = float(n);
-    uint _e17 = depth_1;
-    float m_5 = float(_e17);
+    float m_5 = float(_e2);
     float b_12 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
     float a_15 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
     float disc = (1.0 - ((4.0 * a_15) / (b_12 * b_12)));
@@ -462,29 +463,27 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e70 = i_1;
-            i_1 = (_e70 + 1u);
+            uint _e54 = i_1;
+            i_1 = (_e54 + 1u);
         }
         loop_init_6 = false;
-        uint _e48 = i_1;
-        if ((_e48 < 15u)) {
+        uint _e34 = i_1;
+        if ((_e34 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
             break;
         }
         {
-            uint _e51 = i_1;
-            uint _e52 = depth_1;
-            if ((_e51 < _e52)) {
-                uint _e54 = depth_1;
-                uint _e55 = i_1;
-                float kf_3 = float((_e54 - _e55));
-                float _e66 = t_2;
-                t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e66));
+            uint _e37 = i_1;
+            if ((_e37 < _e2)) {
+                uint _e39 = i_1;
+                float kf_3 = float((_e2 - _e39));
+                float _e50 = t_2;
+                t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e50));
             }
         }
     }
-    float _e73 = t_2;
-    return (1.0 / ((x_4 + nf_1) - (nf_1 / _e73)));
+    float _e57 = t_2;
+    return (1.0 / ((x_4 + nf_1) - (nf_1 / _e57)));
 }
 
 void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
@@ -654,7 +653,7 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
                 }
                 loop_init_10 = false;
                 uint _e11 = i_3;
-                if ((_e11 < 11u)) {
+                if ((_e11 < AIRLIGHT_MAX_POWER_BITS)) {
                 } else {
                     break;
                 }
@@ -718,7 +717,7 @@ float airlight_moment_gauss(AirlightHalf half_) {
     float dv = 0.0;
     float hw = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw);
-    vec2 nodes[4] = vec2[4](vec2(-0.8611363, 0.34785485), vec2(-0.33998105, 0.65214515), vec2(0.33998105, 0.65214515), vec2(0.8611363, 0.34785485));
+    vec2 nodes[4] = vec2[4](vec2(-0.33998105, 0.65214515), vec2(0.33998105, 0.65214515), vec2(-0.8611363, 0.34785485), vec2(0.8611363, 0.34785485));
     bool loop_init_11 = true;
     while(true) {
         if (!loop_init_11) {
@@ -1211,7 +1210,7 @@ AirlightPanel airlight_panel_result(float value, float error, float noise, float
 }
 
 AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float sigma_1, AirlightHalf half_4, float a_5, float b_4) {
-    float r = 0.0;
+    float r_1 = 0.0;
     float vc = 0.0;
     float samples[4] = float[4](0.0, 0.0, 0.0, 0.0);
     float f_max_1 = 0.0;
@@ -1221,12 +1220,12 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
     float sum_5 = 0.0;
     uint k_7 = 0u;
     vec2 _e6[2] = airlight_gauss_rule();
-    r = ((b_4 - a_5) * 0.5);
-    float _e11 = r;
+    r_1 = ((b_4 - a_5) * 0.5);
+    float _e11 = r_1;
     vc = (a_5 + _e11);
     if (half_4.second) {
-        r = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
-        float _e22 = r;
+        r_1 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
+        float _e22 = r_1;
         vc = ((1.0 / b_4) + _e22);
     }
     float _e24[4] = airlight_zero_terms();
@@ -1245,7 +1244,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
         }
         {
             float _e37 = vc;
-            float _e38 = r;
+            float _e38 = r_1;
             uint _e39 = i_8;
             float _e40 = airlight_node(_e6, _e39);
             float v_5 = (_e37 + (_e38 * _e40));
@@ -1267,7 +1266,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
     }
     float _e78[4] = samples;
     float _e79[4] = airlight_legendre(_e78);
-    float _e81 = r;
+    float _e81 = r_1;
     float _e83[4] = airlight_exp_legendre_moments((half_4.big_h * _e81));
     bool loop_init_22 = true;
     while(true) {
@@ -1289,7 +1288,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
         }
     }
     float _e101 = airlight_factor(half_4, a_5, b_4);
-    float _e102 = r;
+    float _e102 = r_1;
     float w = (_e101 * _e102);
     float mass_4 = (w * _e83[0]);
     float _e106 = airlight_tail_estimate(_e79);
@@ -1313,8 +1312,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float s
     uint i_9 = 0u;
     float m_2[4] = float[4](0.0, 0.0, 0.0, 0.0);
     vec2 _e6[2] = airlight_gauss_rule();
-    float r_3 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_3);
+    float r_4 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_4);
     float _e11[4] = airlight_zero_terms();
     samples_1 = _e11;
     bool loop_init_23 = true;
@@ -1332,8 +1331,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float s
         {
             uint _e26 = i_9;
             float _e27 = airlight_node(_e6, _e26);
-            float y_5 = (yc_1 + (r_3 * _e27));
-            float weight = exp(((-(half_5.big_h) * (r_3 * (1.0 - _e27))) / (y_5 * b_5)));
+            float y_5 = (yc_1 + (r_4 * _e27));
+            float weight = exp(((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5)));
             float _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_9;
@@ -1355,7 +1354,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float s
     float _e79[4] = samples_1;
     float _e80[4] = airlight_legendre(_e79);
     float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e81 * r_3);
+    float w_1 = (_e81 * r_4);
     float _e83[4] = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2.0;
@@ -1496,8 +1495,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     float spread = 0.0;
     uint k_10 = 0u;
     vec2 _e6[2] = airlight_gauss_rule();
-    float r_4 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_4);
+    float r_5 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_5);
     float _e11[4] = airlight_zero_terms();
     samples_2 = _e11;
     bool loop_init_27 = true;
@@ -1515,7 +1514,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
         {
             uint _e22 = i_12;
             float _e23 = airlight_node(_e6, _e22);
-            float y_6 = (yc_2 + (r_4 * _e23));
+            float y_6 = (yc_2 + (r_5 * _e23));
             float _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
             uint _e27 = i_12;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
@@ -1530,8 +1529,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     }
     float _e53[4] = samples_2;
     float _e54[4] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_4);
-    float beta = (-(yc_2) / r_4);
+    float alpha = (b_6 / r_5);
+    float beta = (-(yc_2) / r_5);
     float _e58[4] = airlight_legendre_to_monomial(_e54);
     float _e59[4] = airlight_zero_terms();
     q = _e59;
@@ -1902,7 +1901,7 @@ float airlight_bounded(float a_9) {
 vec2 airlight_crossings(float sigma_6, float d_el, float d_c, float k_11) {
     float sb = 1.0;
     float r1_ = -1.0;
-    float r2_1 = -1.0;
+    float r2_2 = -1.0;
     float a_18 = (k_11 + (sigma_6 * d_el));
     float b_15 = -((d_c + d_c));
     float c_8 = (k_11 - (sigma_6 * d_el));
@@ -1919,10 +1918,10 @@ vec2 airlight_crossings(float sigma_6, float d_el, float d_c, float k_11) {
         r1_ = (c_8 / q_2);
     }
     if ((a_18 != 0.0)) {
-        r2_1 = (q_2 / a_18);
+        r2_2 = (q_2 / a_18);
     }
     float _e42 = r1_;
-    float _e43 = r2_1;
+    float _e43 = r2_2;
     return vec2(_e42, _e43);
 }
 

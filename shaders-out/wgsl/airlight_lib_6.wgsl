@@ -78,6 +78,12 @@ const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
 const AIRLIGHT_STATUS_OK: u32 = 0u;
 const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
+const AIRLIGHT_MAX_POWER: u32 = 1024u;
+const AIRLIGHT_MAX_POWER_BITS: u32 = 11u;
+const AIRLIGHT_E1_SERIES_TERMS: u32 = 14u;
+const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
+const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
+const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 15u;
 
 fn airlight_zero_terms() -> array<f32, 6> {
     return array<f32, 6>(0f, 0f, 0f, 0f, 0f, 0f);
@@ -93,13 +99,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_1 = (b_1.y / b_1.x);
-        let den = (b_1.x + (b_1.y * r_1));
-        return vec2<f32>(((a_1.x + (a_1.y * r_1)) / den), ((a_1.y - (a_1.x * r_1)) / den));
+        let r_2 = (b_1.y / b_1.x);
+        let den = (b_1.x + (b_1.y * r_2));
+        return vec2<f32>(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
     }
-    let r_2 = (b_1.x / b_1.y);
-    let den_1 = ((b_1.x * r_2) + b_1.y);
-    return vec2<f32>((((a_1.x * r_2) + a_1.y) / den_1), (((a_1.y * r_2) - a_1.x) / den_1));
+    let r_3 = (b_1.x / b_1.y);
+    let den_1 = ((b_1.x * r_3) + b_1.y);
+    return vec2<f32>((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -270,7 +276,7 @@ fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
 
     loop {
         let _e11 = k_2;
-        if (_e11 <= 14u) {
+        if (_e11 <= AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
@@ -303,7 +309,7 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 
     loop {
         let _e20 = k_3;
-        if (_e20 <= 14u) {
+        if (_e20 <= AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
@@ -337,14 +343,45 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_10 = (z_5.x * 0.7692308f);
-    let y_2 = (z_5.y * 0.47619048f);
+    let x_10 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let y_2 = (z_5.y * AIRLIGHT_E1_INV_IM);
     return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
 }
 
+fn airlight_cf_depth(r: f32) -> u32 {
+    if (r < 3f) {
+        return 15u;
+    }
+    if (r < 5f) {
+        return 10u;
+    }
+    if (r < 10f) {
+        return 6u;
+    }
+    if (r < 30f) {
+        return 3u;
+    }
+    return 2u;
+}
+
+fn airlight_cf_depth_squared(r2_: f32) -> u32 {
+    if (r2_ < 9f) {
+        return 15u;
+    }
+    if (r2_ < 25f) {
+        return 10u;
+    }
+    if (r2_ < 100f) {
+        return 6u;
+    }
+    if (r2_ < 900f) {
+        return 3u;
+    }
+    return 2u;
+}
+
 fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
-    var r2_: f32 = 300000000000000000000000000000000000000f;
-    var depth: u32 = 2u;
+    var r2_1: f32 = 300000000000000000000000000000000000000f;
     var root: vec2<f32>;
     var t_1: vec2<f32>;
     var i: u32 = 0u;
@@ -352,68 +389,48 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let ax = abs(z_6.x);
     let ay = abs(z_6.y);
     if (max(ax, ay) < 1000000000000000000f) {
-        r2_ = ((ax * ax) + (ay * ay));
+        r2_1 = ((ax * ax) + (ay * ay));
     }
-    let _e15 = r2_;
-    if (_e15 < 9f) {
-        depth = 15u;
-    } else {
-        let _e19 = r2_;
-        if (_e19 < 25f) {
-            depth = 10u;
-        } else {
-            let _e23 = r2_;
-            if (_e23 < 100f) {
-                depth = 6u;
-            } else {
-                let _e27 = r2_;
-                if (_e27 < 900f) {
-                    depth = 3u;
-                }
-            }
-        }
-    }
-    let _e31 = depth;
-    let nf = f32(_e31);
+    let _e13 = r2_1;
+    let _e14 = airlight_cf_depth_squared(_e13);
+    let nf = f32(_e14);
     let b_11 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e46 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_11);
-    let _e50 = airlight_cmul(_e46, _e46);
-    let _e52 = airlight_csqrt((vec2<f32>(1f, 0f) - _e50));
-    root = _e52;
-    let _e55 = root.x;
-    if (_e55 < 0f) {
-        let _e58 = root;
-        root = -(_e58);
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_11);
+    let _e33 = airlight_cmul(_e29, _e29);
+    let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
+    root = _e35;
+    let _e38 = root.x;
+    if (_e38 < 0f) {
+        let _e41 = root;
+        root = -(_e41);
     }
-    let _e63 = root;
-    let _e65 = airlight_cmul(b_11, (vec2<f32>(1f, 0f) + _e63));
-    t_1 = (_e65 * 0.5f);
+    let _e46 = root;
+    let _e48 = airlight_cmul(b_11, (vec2<f32>(1f, 0f) + _e46));
+    t_1 = (_e48 * 0.5f);
     loop {
-        let _e71 = i;
-        if (_e71 < 15u) {
+        let _e54 = i;
+        if (_e54 < AIRLIGHT_E1_CF_MAX_DEPTH) {
         } else {
             break;
         }
         {
-            let _e74 = i;
-            let _e75 = depth;
-            if (_e74 < _e75) {
-                let _e77 = depth;
-                let _e78 = i;
-                let kf_2 = f32((_e77 - _e78));
-                let _e91 = t_1;
-                let _e92 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e91);
-                t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e92);
+            let _e57 = i;
+            if (_e57 < _e14) {
+                let _e59 = i;
+                let kf_2 = f32((_e14 - _e59));
+                let _e72 = t_1;
+                let _e73 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e72);
+                t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e73);
             }
         }
         continuing {
-            let _e95 = i;
-            i = (_e95 + 1u);
+            let _e76 = i;
+            i = (_e76 + 1u);
         }
     }
-    let _e100 = t_1;
-    let _e101 = airlight_cdiv(vec2<f32>(1f, 0f), _e100);
-    return _e101;
+    let _e81 = t_1;
+    let _e82 = airlight_cdiv(vec2<f32>(1f, 0f), _e81);
+    return _e82;
 }
 
 fn airlight_e1_scaled(z_7: vec2<f32>) -> vec2<f32> {
@@ -431,28 +448,12 @@ fn airlight_e1_scaled(z_7: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
-    var depth_1: u32 = 2u;
     var t_2: f32;
     var i_1: u32 = 0u;
 
-    if (x_4 < 3f) {
-        depth_1 = 15u;
-    } else {
-        if (x_4 < 5f) {
-            depth_1 = 10u;
-        } else {
-            if (x_4 < 10f) {
-                depth_1 = 6u;
-            } else {
-                if (x_4 < 30f) {
-                    depth_1 = 3u;
-                }
-            }
-        }
-    }
+    let _e2 = airlight_cf_depth(x_4);
     let nf_1 = f32(n);
-    let _e17 = depth_1;
-    let m_5 = f32(_e17);
+    let m_5 = f32(_e2);
     let b_12 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
     let a_15 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
     let disc = (1f - ((4f * a_15) / (b_12 * b_12)));
@@ -461,29 +462,27 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
         t_2 = ((b_12 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
-        let _e48 = i_1;
-        if (_e48 < 15u) {
+        let _e34 = i_1;
+        if (_e34 < AIRLIGHT_E1_CF_MAX_DEPTH) {
         } else {
             break;
         }
         {
-            let _e51 = i_1;
-            let _e52 = depth_1;
-            if (_e51 < _e52) {
-                let _e54 = depth_1;
-                let _e55 = i_1;
-                let kf_3 = f32((_e54 - _e55));
-                let _e66 = t_2;
-                t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e66));
+            let _e37 = i_1;
+            if (_e37 < _e2) {
+                let _e39 = i_1;
+                let kf_3 = f32((_e2 - _e39));
+                let _e50 = t_2;
+                t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e50));
             }
         }
         continuing {
-            let _e70 = i_1;
-            i_1 = (_e70 + 1u);
+            let _e54 = i_1;
+            i_1 = (_e54 + 1u);
         }
     }
-    let _e73 = t_2;
-    return (1f / ((x_4 + nf_1) - (nf_1 / _e73)));
+    let _e57 = t_2;
+    return (1f / ((x_4 + nf_1) - (nf_1 / _e57)));
 }
 
 fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) {
@@ -644,7 +643,7 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             e = u32(p0_2);
             loop {
                 let _e11 = i_3;
-                if (_e11 < 11u) {
+                if (_e11 < AIRLIGHT_MAX_POWER_BITS) {
                 } else {
                     break;
                 }
@@ -714,7 +713,7 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
 
     let hw = (half.dy * 0.5f);
     let yc = (half.y_lo + hw);
-    let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(0.8611363f, 0.34785485f));
+    let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(0.8611363f, 0.34785485f));
     loop {
         let _e23 = j_1;
         if (_e23 < 4u) {
@@ -1194,7 +1193,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
 }
 
 fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
-    var r: f32;
+    var r_1: f32;
     var vc: f32;
     var samples: array<f32, 6>;
     var f_max_1: f32 = 0f;
@@ -1205,12 +1204,12 @@ fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, ha
     var k_7: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
-    r = ((b_4 - a_5) * 0.5f);
-    let _e11 = r;
+    r_1 = ((b_4 - a_5) * 0.5f);
+    let _e11 = r_1;
     vc = (a_5 + _e11);
     if half_4.second {
-        r = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
-        let _e22 = r;
+        r_1 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
+        let _e22 = r_1;
         vc = ((1f / b_4) + _e22);
     }
     let _e24 = airlight_zero_terms();
@@ -1223,7 +1222,7 @@ fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, ha
         }
         {
             let _e37 = vc;
-            let _e38 = r;
+            let _e38 = r_1;
             let _e39 = i_8;
             let _e40 = airlight_node(_e6, _e39);
             let v_5 = (_e37 + (_e38 * _e40));
@@ -1249,7 +1248,7 @@ fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, ha
     }
     let _e78 = samples;
     let _e79 = airlight_legendre(_e78);
-    let _e81 = r;
+    let _e81 = r_1;
     let _e83 = airlight_exp_legendre_moments((half_4.big_h * _e81));
     loop {
         let _e88 = k_7;
@@ -1269,7 +1268,7 @@ fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, ha
         }
     }
     let _e101 = airlight_factor(half_4, a_5, b_4);
-    let _e102 = r;
+    let _e102 = r_1;
     let w = (_e101 * _e102);
     let mass_4 = (w * _e83[0]);
     let _e106 = airlight_tail_estimate(_e79);
@@ -1294,8 +1293,8 @@ fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     var m_2: array<f32, 6>;
 
     let _e6 = airlight_gauss_rule();
-    let r_3 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_3);
+    let r_4 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_4);
     let _e11 = airlight_zero_terms();
     samples_1 = _e11;
     loop {
@@ -1307,8 +1306,8 @@ fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
         {
             let _e26 = i_9;
             let _e27 = airlight_node(_e6, _e26);
-            let y_5 = (yc_1 + (r_3 * _e27));
-            let weight = exp(((-(half_5.big_h) * (r_3 * (1f - _e27))) / (y_5 * b_5)));
+            let y_5 = (yc_1 + (r_4 * _e27));
+            let weight = exp(((-(half_5.big_h) * (r_4 * (1f - _e27))) / (y_5 * b_5)));
             let _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
             let over_1 = (1f / (1f + (y_5 * y_5)));
             let _e45 = i_9;
@@ -1334,7 +1333,7 @@ fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     let _e79 = samples_1;
     let _e80 = airlight_legendre(_e79);
     let _e81 = airlight_factor(half_5, a_6, b_5);
-    let w_1 = (_e81 * r_3);
+    let w_1 = (_e81 * r_4);
     let _e83 = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2f;
@@ -1471,8 +1470,8 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     var k_10: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
-    let r_4 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_4);
+    let r_5 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_5);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
@@ -1484,7 +1483,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
         {
             let _e22 = i_12;
             let _e23 = airlight_node(_e6, _e22);
-            let y_6 = (yc_2 + (r_4 * _e23));
+            let y_6 = (yc_2 + (r_5 * _e23));
             let _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
             let _e27 = i_12;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
@@ -1503,8 +1502,8 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_4);
-    let beta = (-(yc_2) / r_4);
+    let alpha = (b_6 / r_5);
+    let beta = (-(yc_2) / r_5);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -1863,7 +1862,7 @@ fn airlight_bounded(a_9: f32) -> f32 {
 fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
-    var r2_1: f32 = -1f;
+    var r2_2: f32 = -1f;
 
     let a_18 = (k_11 + (sigma_6 * d_el));
     let b_15 = -((d_c + d_c));
@@ -1881,10 +1880,10 @@ fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32>
         r1_ = (c_8 / q_2);
     }
     if (a_18 != 0f) {
-        r2_1 = (q_2 / a_18);
+        r2_2 = (q_2 / a_18);
     }
     let _e42 = r1_;
-    let _e43 = r2_1;
+    let _e43 = r2_2;
     return vec2<f32>(_e42, _e43);
 }
 
