@@ -7,7 +7,7 @@
 // panels.rs (error-controlled panels) → combined.rs (split at the light's foot) → geometry.rs,
 // with phase.rs and light.rs. Every placeholder between at-signs is filled at emission from
 // the kernel's own tables and constants (codegen/src/targets.rs `source`). Every public name
-// starts with `airlight_`. Loops have constant bounds only.
+// starts with `airlight_`. Every loop has a constant bound (some leave early by `break`).
 
 // Gauss–Legendre nodes per panel, half of them, and the panel control (kernel SHADER_CONTROL).
 const AIRLIGHT_TERMS: u32 = @TERMS@u;
@@ -286,10 +286,9 @@ fn airlight_e1_scaled_cf(z: vec2<f32>) -> vec2<f32> {
     }
     var t = airlight_cmul(b, vec2<f32>(1.0, 0.0) + root) * 0.5;
     for (var i = 0u; i < AIRLIGHT_E1_CF_MAX_DEPTH; i++) {
-        if (i < depth) {
-            let kf = f32(depth - i);
-            t = z + vec2<f32>(2.0 * kf - 1.0, 0.0) - airlight_cdiv(vec2<f32>(kf * kf, 0.0), t);
-        }
+        if (i >= depth) { break; }
+        let kf = f32(depth - i);
+        t = z + vec2<f32>(2.0 * kf - 1.0, 0.0) - airlight_cdiv(vec2<f32>(kf * kf, 0.0), t);
     }
     return airlight_cdiv(vec2<f32>(1.0, 0.0), t);
 }
@@ -316,10 +315,9 @@ fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
         t = b * (1.0 + sqrt(disc)) * 0.5;
     }
     for (var i = 0u; i < AIRLIGHT_E1_CF_MAX_DEPTH; i++) {
-        if (i < depth) {
-            let kf = f32(depth - i);
-            t = x + nf + 2.0 * kf - (kf + 1.0) * (nf + kf) / t;
-        }
+        if (i >= depth) { break; }
+        let kf = f32(depth - i);
+        t = x + nf + 2.0 * kf - (kf + 1.0) * (nf + kf) / t;
     }
     return 1.0 / (x + nf - nf / t);
 }
@@ -343,15 +341,15 @@ fn airlight_en_scaled(x: f32, count: u32, out: ptr<function, array<f32, AIRLIGHT
         (*out)[pivot - 1u] = airlight_en_scaled_cf(x, pivot);
     }
     for (var n = 1u; n < AIRLIGHT_SCRATCH; n++) {
-        if (n >= pivot && n < count) {
+        if (n >= count) { break; }
+        if (n >= pivot) {
             (*out)[n] = (1.0 - x * (*out)[n - 1u]) / f32(n);
         }
     }
     for (var i = 1u; i < AIRLIGHT_SCRATCH; i++) {
-        if (i < pivot) {
-            let n = pivot - i;
-            (*out)[n - 1u] = (1.0 - f32(n) * (*out)[n]) / x;
-        }
+        if (i >= pivot) { break; }
+        let n = pivot - i;
+        (*out)[n - 1u] = (1.0 - f32(n) * (*out)[n]) / x;
     }
 }
 
@@ -409,6 +407,7 @@ fn airlight_light(kind: u32, p0: f32, p1: f32, c: f32) -> f32 {
             var e = u32(p0);
             var acc = 1.0;
             for (var i = 0u; i < AIRLIGHT_MAX_POWER_BITS; i++) {
+                if (e == 0u) { break; }
                 if ((e & 1u) == 1u) { acc *= base; }
                 e = e >> 1u;
                 base *= base;
@@ -603,18 +602,17 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
         var cur = 1.0e-20;
         var odd = f32(2u * top + 1u);
         for (var i = 0u; i < 2u * AIRLIGHT_TERMS + 30u; i++) {
-            if (i < top) {
-                let k = top - i;
-                if (k < n) { out[k] = cur; }
-                let below = above + odd * inv * cur;
-                odd -= 2.0;
-                above = cur;
-                cur = below;
-                if (cur > 1.0e20) {
-                    cur *= 1.0e-20;
-                    above *= 1.0e-20;
-                    for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= 1.0e-20; }
-                }
+            if (i >= top) { break; }
+            let k = top - i;
+            if (k < n) { out[k] = cur; }
+            let below = above + odd * inv * cur;
+            odd -= 2.0;
+            above = cur;
+            cur = below;
+            if (cur > 1.0e20) {
+                cur *= 1.0e-20;
+                above *= 1.0e-20;
+                for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= 1.0e-20; }
             }
         }
         out[0] = cur;
@@ -869,12 +867,11 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
         var mass = 0.0;
         var worst = 0u;
         for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
-            if (i < count) {
-                total += list[i].z;
-                errors += list[i].w;
-                mass += mass_over[i];
-                if (list[i].w > list[worst].w) { worst = i; }
-            }
+            if (i >= count) { break; }
+            total += list[i].z;
+            errors += list[i].w;
+            mass += mass_over[i];
+            if (list[i].w > list[worst].w) { worst = i; }
         }
         let goal = AIRLIGHT_PANEL_TOLERANCE * max(abs(total), AIRLIGHT_PANEL_FLOOR * *f_max * mass);
         if (errors <= goal || !(list[worst].w > 0.0) || budget < 2u || count == AIRLIGHT_PANEL_LIST) {
@@ -899,7 +896,8 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     }
     total = 0.0;
     for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
-        if (i < count) { total += list[i].z; }
+        if (i >= count) { break; }
+        total += list[i].z;
     }
     return total;
 }

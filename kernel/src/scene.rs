@@ -18,8 +18,9 @@ pub const CPU_TERMS: usize = 6;
 /// expansion terms); the shaders are also emitted with 6.
 pub const SHADER_TERMS: usize = 4;
 /// The shaders' error control (they compute [`Scene::in_scatter_panels`] with
-/// [`SHADER_TERMS`] or 6 nodes and this control): tolerance `1e-4` of `F` on each piece, `floor` the f32 `τ` (docs/DESIGN.md §8), at most 16 panels per piece (the
-/// shader's fixed worst-case loop).
+/// [`SHADER_TERMS`] or 6 nodes and this control): tolerance `1e-4` of `F` on each piece,
+/// `floor` the f32 `τ` (docs/DESIGN.md §8), at most 16 panels per piece (the shader's fixed
+/// worst-case loop).
 pub const SHADER_CONTROL: Control<f32> = Control { tolerance: 1e-4, floor: 1e-4, max_panels: 16 };
 
 /// A ray segment `x(t) = origin + t·d`, `t ∈ [t_min, t_max]`, with `d = dir/|dir|` (so `t` is

@@ -419,13 +419,14 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         }
         {
             uint _e57 = i;
-            if ((_e57 < _e14)) {
-                uint _e59 = i;
-                float kf_2 = float((_e14 - _e59));
-                vec2 _e72 = t_1;
-                vec2 _e73 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e72);
-                t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e73);
+            if ((_e57 >= _e14)) {
+                break;
             }
+            uint _e59 = i;
+            float kf_2 = float((_e14 - _e59));
+            vec2 _e72 = t_1;
+            vec2 _e73 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e72);
+            t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e73);
         }
     }
     vec2 _e81 = t_1;
@@ -474,12 +475,13 @@ float airlight_en_scaled_cf(float x_4, uint n) {
         }
         {
             uint _e37 = i_1;
-            if ((_e37 < _e2)) {
-                uint _e39 = i_1;
-                float kf_3 = float((_e2 - _e39));
-                float _e50 = t_2;
-                t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e50));
+            if ((_e37 >= _e2)) {
+                break;
             }
+            uint _e39 = i_1;
+            float kf_3 = float((_e2 - _e39));
+            float _e50 = t_2;
+            t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e50));
         }
     }
     float _e57 = t_2;
@@ -490,7 +492,6 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
     uint n_1 = 2u;
     uint pivot = 1u;
     uint n_2 = 1u;
-    bool local_1 = false;
     uint i_2 = 1u;
     if ((x_5 == 0.0)) {
         out_[0] = AIRLIGHT_FLT_MAX;
@@ -528,8 +529,8 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e74 = n_2;
-            n_2 = (_e74 + 1u);
+            uint _e70 = n_2;
+            n_2 = (_e70 + 1u);
         }
         loop_init_8 = false;
         uint _e48 = n_2;
@@ -539,45 +540,43 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
         }
         {
             uint _e51 = n_2;
-            uint _e52 = pivot;
-            if ((_e51 >= _e52)) {
-                uint _e56 = n_2;
-                local_1 = (_e56 < count);
-            } else {
-                local_1 = false;
+            if ((_e51 >= count)) {
+                break;
             }
-            bool _e59 = local_1;
-            if (_e59) {
-                uint _e60 = n_2;
-                uint _e62 = n_2;
-                float _e66 = out_[(_e62 - 1u)];
-                uint _e70 = n_2;
-                out_[_e60] = ((1.0 - (x_5 * _e66)) / float(_e70));
+            uint _e53 = n_2;
+            uint _e54 = pivot;
+            if ((_e53 >= _e54)) {
+                uint _e56 = n_2;
+                uint _e58 = n_2;
+                float _e62 = out_[(_e58 - 1u)];
+                uint _e66 = n_2;
+                out_[_e56] = ((1.0 - (x_5 * _e62)) / float(_e66));
             }
         }
     }
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e98 = i_2;
-            i_2 = (_e98 + 1u);
+            uint _e94 = i_2;
+            i_2 = (_e94 + 1u);
         }
         loop_init_9 = false;
-        uint _e78 = i_2;
-        if ((_e78 < AIRLIGHT_SCRATCH)) {
+        uint _e74 = i_2;
+        if ((_e74 < AIRLIGHT_SCRATCH)) {
         } else {
             break;
         }
         {
-            uint _e81 = i_2;
-            uint _e82 = pivot;
-            if ((_e81 < _e82)) {
-                uint _e84 = pivot;
-                uint _e85 = i_2;
-                uint n_4 = (_e84 - _e85);
-                float _e92 = out_[n_4];
-                out_[(n_4 - 1u)] = ((1.0 - (float(n_4) * _e92)) / x_5);
+            uint _e77 = i_2;
+            uint _e78 = pivot;
+            if ((_e77 >= _e78)) {
+                break;
             }
+            uint _e80 = pivot;
+            uint _e81 = i_2;
+            uint n_4 = (_e80 - _e81);
+            float _e88 = out_[n_4];
+            out_[(n_4 - 1u)] = ((1.0 - (float(n_4) * _e88)) / x_5);
         }
     }
     return;
@@ -648,8 +647,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e29 = i_3;
-                    i_3 = (_e29 + 1u);
+                    uint _e32 = i_3;
+                    i_3 = (_e32 + 1u);
                 }
                 loop_init_10 = false;
                 uint _e11 = i_3;
@@ -659,20 +658,24 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
                 }
                 {
                     uint _e14 = e;
-                    if (((_e14 & 1u) == 1u)) {
-                        float _e19 = acc;
-                        float _e20 = base;
-                        acc = (_e19 * _e20);
+                    if ((_e14 == 0u)) {
+                        break;
                     }
-                    uint _e22 = e;
-                    e = (_e22 >> 1u);
-                    float _e25 = base;
-                    float _e26 = base;
-                    base = (_e25 * _e26);
+                    uint _e17 = e;
+                    if (((_e17 & 1u) == 1u)) {
+                        float _e22 = acc;
+                        float _e23 = base;
+                        acc = (_e22 * _e23);
+                    }
+                    uint _e25 = e;
+                    e = (_e25 >> 1u);
+                    float _e28 = base;
+                    float _e29 = base;
+                    base = (_e28 * _e29);
                 }
             }
-            float _e31 = acc;
-            return _e31;
+            float _e34 = acc;
+            return _e34;
         }
         case 2u: {
             float width = (p0_2 - p1_2);
@@ -756,29 +759,29 @@ float airlight_hypot_one(float a_3) {
 }
 
 float airlight_q_zero(AirlightHalf half_1) {
-    bool local_2 = false;
+    bool local_1 = false;
     float v_e = 0.0;
+    bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
-    bool local_5 = false;
     float d_im = 0.0;
     float d_re = 0.0;
-    bool local_6 = false;
+    bool local_5 = false;
     float big_h_1 = half_1.big_h;
     float v_s = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
     if (half_1.second) {
-        local_2 = (half_1.y_lo == 0.0);
+        local_1 = (half_1.y_lo == 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool v_e_infinite = local_1;
+    v_e = half_1.y_hi;
+    if (half_1.second) {
+        local_2 = !(v_e_infinite);
     } else {
         local_2 = false;
     }
-    bool v_e_infinite = local_2;
-    v_e = half_1.y_hi;
-    if (half_1.second) {
-        local_3 = !(v_e_infinite);
-    } else {
-        local_3 = false;
-    }
-    bool _e23 = local_3;
+    bool _e23 = local_2;
     if (_e23) {
         v_e = (1.0 / half_1.y_lo);
     }
@@ -786,16 +789,16 @@ float airlight_q_zero(AirlightHalf half_1) {
         if (!(v_e_infinite)) {
             float _e35 = v_e;
             float _e36 = airlight_hypot_one(_e35);
-            local_5 = ((big_h_1 * _e36) <= 1.0);
+            local_4 = ((big_h_1 * _e36) <= 1.0);
         } else {
-            local_5 = false;
+            local_4 = false;
         }
-        bool _e41 = local_5;
-        local_4 = _e41;
+        bool _e41 = local_4;
+        local_3 = _e41;
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool near_1 = local_4;
+    bool near_1 = local_3;
     if (near_1) {
         if (!(v_e_infinite)) {
             float _e50 = v_e;
@@ -827,11 +830,11 @@ float airlight_q_zero(AirlightHalf half_1) {
     if (!(v_e_infinite)) {
         float _e105 = v_e;
         bool _e107 = airlight_is_finite((big_h_1 * _e105));
-        local_6 = _e107;
+        local_5 = _e107;
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    bool _e109 = local_6;
+    bool _e109 = local_5;
     if (_e109) {
         float _e110 = v_e;
         vec2 _e114 = airlight_e1_scaled(vec2((big_h_1 * _e110), -(big_h_1)));
@@ -841,37 +844,37 @@ float airlight_q_zero(AirlightHalf half_1) {
 }
 
 float airlight_moment_zero(AirlightHalf half_2) {
+    bool local_6 = false;
     bool local_7 = false;
     bool local_8 = false;
     bool local_9 = false;
-    bool local_10 = false;
     if (!((half_2.dy > 0.0))) {
         return 0.0;
     }
     if (!(half_2.dv_infinite)) {
-        local_7 = ((half_2.big_h * half_2.dv) <= 1.0);
+        local_6 = ((half_2.big_h * half_2.dv) <= 1.0);
+    } else {
+        local_6 = false;
+    }
+    bool short_exp = local_6;
+    if ((half_2.dy <= 0.25)) {
+        if (!(!(half_2.second))) {
+            local_8 = (half_2.dy <= (half_2.y_lo * 0.5));
+        } else {
+            local_8 = true;
+        }
+        bool _e33 = local_8;
+        local_7 = _e33;
     } else {
         local_7 = false;
     }
-    bool short_exp = local_7;
-    if ((half_2.dy <= 0.25)) {
-        if (!(!(half_2.second))) {
-            local_9 = (half_2.dy <= (half_2.y_lo * 0.5));
-        } else {
-            local_9 = true;
-        }
-        bool _e33 = local_9;
-        local_8 = _e33;
-    } else {
-        local_8 = false;
-    }
-    bool short_len = local_8;
+    bool short_len = local_7;
     if (short_exp) {
-        local_10 = short_len;
+        local_9 = short_len;
     } else {
-        local_10 = false;
+        local_9 = false;
     }
-    bool _e39 = local_10;
+    bool _e39 = local_9;
     if (_e39) {
         float _e40 = airlight_moment_gauss(half_2);
         return _e40;
@@ -1027,46 +1030,47 @@ float[4] airlight_exp_legendre_moments(float lambda) {
                 }
                 {
                     uint _e65 = i_6;
-                    if ((_e65 < top)) {
-                        uint _e67 = i_6;
-                        uint k_12 = (top - _e67);
-                        if ((k_12 < AIRLIGHT_TERMS)) {
-                            float _e71 = cur;
-                            out_1[k_12] = _e71;
-                        }
-                        float _e72 = above;
-                        float _e73 = odd;
-                        float _e75 = cur;
-                        float below = (_e72 + ((_e73 * inv_1) * _e75));
-                        float _e78 = odd;
-                        odd = (_e78 - 2.0);
-                        float _e81 = cur;
-                        above = _e81;
-                        cur = below;
-                        float _e82 = cur;
-                        if ((_e82 > 1e20)) {
-                            float _e85 = cur;
-                            cur = (_e85 * 1e-20);
-                            float _e88 = above;
-                            above = (_e88 * 1e-20);
-                            j_3 = 0u;
-                            bool loop_init_16 = true;
-                            while(true) {
-                                if (!loop_init_16) {
-                                    uint _e102 = j_3;
-                                    j_3 = (_e102 + 1u);
-                                }
-                                loop_init_16 = false;
-                                uint _e93 = j_3;
-                                if ((_e93 < AIRLIGHT_TERMS)) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    uint _e96 = j_3;
-                                    float _e98 = out_1[_e96];
-                                    out_1[_e96] = (_e98 * 1e-20);
-                                }
+                    if ((_e65 >= top)) {
+                        break;
+                    }
+                    uint _e67 = i_6;
+                    uint k_12 = (top - _e67);
+                    if ((k_12 < AIRLIGHT_TERMS)) {
+                        float _e71 = cur;
+                        out_1[k_12] = _e71;
+                    }
+                    float _e72 = above;
+                    float _e73 = odd;
+                    float _e75 = cur;
+                    float below = (_e72 + ((_e73 * inv_1) * _e75));
+                    float _e78 = odd;
+                    odd = (_e78 - 2.0);
+                    float _e81 = cur;
+                    above = _e81;
+                    cur = below;
+                    float _e82 = cur;
+                    if ((_e82 > 1e20)) {
+                        float _e85 = cur;
+                        cur = (_e85 * 1e-20);
+                        float _e88 = above;
+                        above = (_e88 * 1e-20);
+                        j_3 = 0u;
+                        bool loop_init_16 = true;
+                        while(true) {
+                            if (!loop_init_16) {
+                                uint _e102 = j_3;
+                                j_3 = (_e102 + 1u);
+                            }
+                            loop_init_16 = false;
+                            uint _e93 = j_3;
+                            if ((_e93 < AIRLIGHT_TERMS)) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e96 = j_3;
+                                float _e98 = out_1[_e96];
+                                out_1[_e96] = (_e98 * 1e-20);
                             }
                         }
                     }
@@ -1150,7 +1154,7 @@ float airlight_tail_estimate(float c_3[4]) {
 }
 
 float airlight_error_factor(float c_4[4], float m_1[4]) {
-    bool local_11 = false;
+    bool local_10 = false;
     float aliasing = 1.0;
     uint i_7 = 0u;
     if (!((m_1[0] > 0.0))) {
@@ -1159,11 +1163,11 @@ float airlight_error_factor(float c_4[4], float m_1[4]) {
     float last = (abs(c_4[3]) + abs(c_4[2]));
     float before = (abs(c_4[1]) + abs(c_4[0]));
     if (!(!((before > 0.0)))) {
-        local_11 = !((last < before));
+        local_10 = !((last < before));
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e26 = local_11;
+    bool _e26 = local_10;
     if (_e26) {
         return 1.0;
     }
@@ -1481,9 +1485,9 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     float shifted_1 = 0.0;
     float s_b[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float s_a[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_12 = false;
+    bool local_11 = false;
     float decay = 0.0;
-    bool local_13 = false;
+    bool local_12 = false;
     float sum_6 = 0.0;
     float mass_2 = 0.0;
     float ratio = 1.0;
@@ -1593,21 +1597,21 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     s_a = _e111;
     if ((a_7 > 0.0)) {
         bool _e118 = airlight_is_finite((big_h_2 / a_7));
-        local_12 = _e118;
+        local_11 = _e118;
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool far_1 = local_12;
+    bool far_1 = local_11;
     if (far_1) {
         decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if (far_1) {
         float _e131 = decay;
-        local_13 = (_e131 > 0.0);
+        local_12 = (_e131 > 0.0);
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e135 = local_13;
+    bool _e135 = local_12;
     if (_e135) {
         airlight_en_scaled((big_h_2 / a_7), 6u, s_a);
     }
@@ -1700,24 +1704,24 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
 }
 
 AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_7, float a_8, float b_7) {
+    bool local_13 = false;
     bool local_14 = false;
-    bool local_15 = false;
     if (half_7.second) {
-        local_14 = (a_8 <= (b_7 * 0.25));
+        local_13 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e13 = local_14;
+    bool _e13 = local_13;
     if (_e13) {
         AirlightPanel _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
-        local_15 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_14 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e26 = local_15;
+    bool _e26 = local_14;
     if (_e26) {
         AirlightPanel _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e27;
@@ -1737,9 +1741,9 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
     float mass_3 = 0.0;
     uint worst = 0u;
     uint i_14 = 0u;
+    bool local_15 = false;
     bool local_16 = false;
     bool local_17 = false;
-    bool local_18 = false;
     uint i_15 = 0u;
     if (!((hi > lo))) {
         return 0.0;
@@ -1782,27 +1786,28 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
                 {
                     uint _e71 = i_14;
                     uint _e72 = count_1;
-                    if ((_e71 < _e72)) {
-                        float _e74 = total;
-                        uint _e75 = i_14;
-                        float _e78 = list[_e75].z;
-                        total = (_e74 + _e78);
-                        float _e80 = errors;
-                        uint _e81 = i_14;
-                        float _e84 = list[_e81].w;
-                        errors = (_e80 + _e84);
-                        float _e86 = mass_3;
-                        uint _e87 = i_14;
-                        float _e89 = mass_over_1[_e87];
-                        mass_3 = (_e86 + _e89);
-                        uint _e91 = i_14;
-                        float _e94 = list[_e91].w;
-                        uint _e95 = worst;
-                        float _e98 = list[_e95].w;
-                        if ((_e94 > _e98)) {
-                            uint _e100 = i_14;
-                            worst = _e100;
-                        }
+                    if ((_e71 >= _e72)) {
+                        break;
+                    }
+                    float _e74 = total;
+                    uint _e75 = i_14;
+                    float _e78 = list[_e75].z;
+                    total = (_e74 + _e78);
+                    float _e80 = errors;
+                    uint _e81 = i_14;
+                    float _e84 = list[_e81].w;
+                    errors = (_e80 + _e84);
+                    float _e86 = mass_3;
+                    uint _e87 = i_14;
+                    float _e89 = mass_over_1[_e87];
+                    mass_3 = (_e86 + _e89);
+                    uint _e91 = i_14;
+                    float _e94 = list[_e91].w;
+                    uint _e95 = worst;
+                    float _e98 = list[_e95].w;
+                    if ((_e94 > _e98)) {
+                        uint _e100 = i_14;
+                        worst = _e100;
                     }
                 }
             }
@@ -1814,25 +1819,25 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
             if (!((_e114 <= goal))) {
                 uint _e119 = worst;
                 float _e122 = list[_e119].w;
-                local_16 = !((_e122 > 0.0));
+                local_15 = !((_e122 > 0.0));
+            } else {
+                local_15 = true;
+            }
+            bool _e127 = local_15;
+            if (!(_e127)) {
+                uint _e131 = budget;
+                local_16 = (_e131 < 2u);
             } else {
                 local_16 = true;
             }
-            bool _e127 = local_16;
-            if (!(_e127)) {
-                uint _e131 = budget;
-                local_17 = (_e131 < 2u);
+            bool _e135 = local_16;
+            if (!(_e135)) {
+                uint _e139 = count_1;
+                local_17 = (_e139 == AIRLIGHT_PANEL_LIST);
             } else {
                 local_17 = true;
             }
-            bool _e135 = local_17;
-            if (!(_e135)) {
-                uint _e139 = count_1;
-                local_18 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_18 = true;
-            }
-            bool _e143 = local_18;
+            bool _e143 = local_17;
             if (_e143) {
                 float _e144 = total;
                 return _e144;
@@ -1881,12 +1886,13 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
         {
             uint _e204 = i_15;
             uint _e205 = count_1;
-            if ((_e204 < _e205)) {
-                float _e207 = total;
-                uint _e208 = i_15;
-                float _e211 = list[_e208].z;
-                total = (_e207 + _e211);
+            if ((_e204 >= _e205)) {
+                break;
             }
+            float _e207 = total;
+            uint _e208 = i_15;
+            float _e211 = list[_e208].z;
+            total = (_e207 + _e211);
         }
     }
     float _e216 = total;
@@ -1930,15 +1936,15 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_16 = 0u;
-    bool local_19 = false;
+    bool local_18 = false;
     uint i_17 = 0u;
     uint j_5 = 0u;
     float total_1 = 0.0;
     float lo_1 = 0.0;
     uint i_18 = 0u;
     float hi_1 = 0.0;
+    bool local_19 = false;
     bool local_20 = false;
-    bool local_21 = false;
     if (isotropic) {
         float _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_9);
@@ -1979,11 +1985,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
                 if ((_e57 > half_9.y_lo)) {
                     uint _e62 = i_16;
                     float _e64 = cuts[_e62];
-                    local_19 = (_e64 < half_9.y_hi);
+                    local_18 = (_e64 < half_9.y_hi);
                 } else {
-                    local_19 = false;
+                    local_18 = false;
                 }
-                bool _e68 = local_19;
+                bool _e68 = local_18;
                 if (!(_e68)) {
                     uint _e70 = i_16;
                     cuts[_e70] = 2.0;
@@ -2056,11 +2062,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             if ((_e128 < 4u)) {
                 uint _e133 = i_18;
                 float _e135 = cuts[_e133];
-                local_20 = (_e135 < 2.0);
+                local_19 = (_e135 < 2.0);
             } else {
-                local_20 = false;
+                local_19 = false;
             }
-            bool _e139 = local_20;
+            bool _e139 = local_19;
             if (_e139) {
                 uint _e140 = i_18;
                 float _e142 = cuts[_e140];
@@ -2081,11 +2087,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             if ((_e152 < 4u)) {
                 uint _e157 = i_18;
                 float _e159 = cuts[_e157];
-                local_21 = (_e159 >= 2.0);
+                local_20 = (_e159 >= 2.0);
             } else {
-                local_21 = false;
+                local_20 = false;
             }
-            bool _e163 = local_21;
+            bool _e163 = local_20;
             if (_e163) {
                 break;
             }
@@ -2108,16 +2114,16 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, fl
 }
 
 float airlight_on_line(AirlightScene s_8, AirlightCanonical g_10) {
-    bool local_22 = false;
+    bool local_21 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
     if (!(g_10.t_hi_infinite)) {
-        local_22 = (g_10.x_h > g_10.t_hi);
+        local_21 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    bool _e10 = local_22;
+    bool _e10 = local_21;
     if (_e10) {
         float _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         float _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1.0);
@@ -2172,43 +2178,43 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonical g_11) {
+    bool local_22 = false;
     bool local_23 = false;
     bool local_24 = false;
     bool local_25 = false;
-    bool local_26 = false;
     float gap = 0.0;
+    bool local_26 = false;
     bool local_27 = false;
     bool local_28 = false;
     bool local_29 = false;
     bool local_30 = false;
     bool local_31 = false;
     bool local_32 = false;
-    bool local_33 = false;
     float total_2 = 0.0;
     float f_max_6 = 0.0;
     float t_end = 0.0;
+    bool local_33 = false;
     bool local_34 = false;
-    bool local_35 = false;
     float y_lo = 0.0;
     float dv_2 = 0.0;
     float dy = 0.0;
     bool infinite_1 = true;
+    bool local_35 = false;
     bool local_36 = false;
-    bool local_37 = false;
     float t0_ = g_11.t_lo;
     float t1_ = g_11.t_hi;
     if (!(g_11.t_hi_infinite)) {
-        local_23 = (t1_ > t0_);
+        local_22 = (t1_ > t0_);
+    } else {
+        local_22 = true;
+    }
+    bool _e10 = local_22;
+    if (!(!(_e10))) {
+        local_23 = ((s_9.sigma_s * s_9.intensity) == 0.0);
     } else {
         local_23 = true;
     }
-    bool _e10 = local_23;
-    if (!(!(_e10))) {
-        local_24 = ((s_9.sigma_s * s_9.intensity) == 0.0);
-    } else {
-        local_24 = true;
-    }
-    bool _e21 = local_24;
+    bool _e21 = local_23;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
@@ -2216,16 +2222,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
     float x_h = g_11.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_11.t_hi_infinite)) {
-            local_26 = (x_h <= t1_);
+            local_25 = (x_h <= t1_);
         } else {
-            local_26 = true;
+            local_25 = true;
         }
-        bool _e36 = local_26;
-        local_25 = _e36;
+        bool _e36 = local_25;
+        local_24 = _e36;
     } else {
-        local_25 = false;
+        local_24 = false;
     }
-    bool inside = local_25;
+    bool inside = local_24;
     if ((x_h < t0_)) {
         gap = (t0_ - x_h);
     } else {
@@ -2235,11 +2241,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_27 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_26 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_27 = false;
+        local_26 = false;
     }
-    bool _e55 = local_27;
+    bool _e55 = local_26;
     if (_e55) {
         float _e56 = airlight_on_line(s_9, g_11);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -2250,49 +2256,49 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
     float big_h_3 = (s_9.sigma_t * h_2);
     if (!((s_9.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_29 = (s_9.light_param_a == 0.0);
+            local_28 = (s_9.light_param_a == 0.0);
         } else {
-            local_29 = false;
+            local_28 = false;
         }
-        bool _e83 = local_29;
-        local_28 = _e83;
+        bool _e83 = local_28;
+        local_27 = _e83;
     } else {
-        local_28 = true;
+        local_27 = true;
     }
-    bool _e85 = local_28;
+    bool _e85 = local_27;
     if (_e85) {
         if (!((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_32 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_31 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_32 = true;
+                local_31 = true;
             }
-            bool _e104 = local_32;
+            bool _e104 = local_31;
             if (_e104) {
-                local_33 = (s_9.phase_param_a == 0.0);
+                local_32 = (s_9.phase_param_a == 0.0);
             } else {
-                local_33 = false;
+                local_32 = false;
             }
-            bool _e111 = local_33;
-            local_31 = _e111;
+            bool _e111 = local_32;
+            local_30 = _e111;
         } else {
-            local_31 = true;
+            local_30 = true;
         }
-        bool _e113 = local_31;
-        local_30 = _e113;
+        bool _e113 = local_30;
+        local_29 = _e113;
     } else {
-        local_30 = false;
+        local_29 = false;
     }
-    bool isotropic_1 = local_30;
+    bool isotropic_1 = local_29;
     if ((t0_ < x_h)) {
         float a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
         if (!(g_11.t_hi_infinite)) {
-            local_34 = (t1_ < x_h);
+            local_33 = (t1_ < x_h);
         } else {
-            local_34 = false;
+            local_33 = false;
         }
-        bool _e130 = local_34;
+        bool _e130 = local_33;
         if (_e130) {
             t_end = t1_;
         }
@@ -2312,11 +2318,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
         total_2 = (_e156 + _e160);
     }
     if (!(g_11.t_hi_infinite)) {
-        local_35 = (t1_ > x_h);
+        local_34 = (t1_ > x_h);
     } else {
-        local_35 = true;
+        local_34 = true;
     }
-    bool _e168 = local_35;
+    bool _e168 = local_34;
     if (_e168) {
         float t_start = max(t0_, x_h);
         float a_s_1 = ((t_start - x_h) / h_2);
@@ -2326,22 +2332,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
         float a_e_1 = ((t1_ - x_h) / h_2);
         if (!(g_11.t_hi_infinite)) {
             bool _e187 = airlight_is_finite(a_e_1);
-            local_36 = _e187;
+            local_35 = _e187;
         } else {
-            local_36 = false;
+            local_35 = false;
         }
-        bool _e189 = local_36;
+        bool _e189 = local_35;
         if (_e189) {
             float _e190 = airlight_bounded(a_e_1);
             float _e194 = airlight_hypot_one(a_e_1);
             float dv_end = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e172 + _e194))));
             if ((_e190 > 0.0)) {
                 bool _e204 = airlight_is_finite(dv_end);
-                local_37 = _e204;
+                local_36 = _e204;
             } else {
-                local_37 = false;
+                local_36 = false;
             }
-            bool _e206 = local_37;
+            bool _e206 = local_36;
             if (_e206) {
                 y_lo = _e190;
                 dv_2 = dv_end;
@@ -2369,23 +2375,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
 }
 
 bool airlight_vec_finite(vec3 v) {
+    bool local_37 = false;
     bool local_38 = false;
-    bool local_39 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_38 = _e6;
+        local_37 = _e6;
+    } else {
+        local_37 = false;
+    }
+    bool _e8 = local_37;
+    if (_e8) {
+        bool _e12 = airlight_is_finite(v.z);
+        local_38 = _e12;
     } else {
         local_38 = false;
     }
-    bool _e8 = local_38;
-    if (_e8) {
-        bool _e12 = airlight_is_finite(v.z);
-        local_39 = _e12;
-    } else {
-        local_39 = false;
-    }
-    bool _e14 = local_39;
+    bool _e14 = local_38;
     return _e14;
 }
 
@@ -2398,15 +2404,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_40 = false;
+    bool local_39 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_40 = _e6;
+        local_39 = _e6;
     } else {
-        local_40 = false;
+        local_39 = false;
     }
-    bool _e8 = local_40;
+    bool _e8 = local_39;
     return _e8;
 }
 
@@ -2417,6 +2423,7 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_10) {
+    bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
@@ -2426,8 +2433,8 @@ bool airlight_valid(AirlightScene s_10) {
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
-    bool local_50 = false;
     bool ok = false;
+    bool local_50 = false;
     bool local_51 = false;
     bool local_52 = false;
     bool local_53 = false;
@@ -2444,163 +2451,162 @@ bool airlight_valid(AirlightScene s_10) {
     bool local_64 = false;
     bool local_65 = false;
     bool local_66 = false;
-    bool local_67 = false;
     bool _e2 = airlight_vec_finite(s_10.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_10.dir);
-        local_41 = _e6;
+        local_40 = _e6;
+    } else {
+        local_40 = false;
+    }
+    bool _e8 = local_40;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_10.dir);
+        local_41 = _e12;
     } else {
         local_41 = false;
     }
-    bool _e8 = local_41;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_10.dir);
-        local_42 = _e12;
+    bool _e14 = local_41;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_10.t_min);
+        local_42 = _e18;
     } else {
         local_42 = false;
     }
-    bool _e14 = local_42;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_10.t_min);
-        local_43 = _e18;
+    bool _e20 = local_42;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_10.light_position);
+        local_43 = _e24;
     } else {
         local_43 = false;
     }
-    bool _e20 = local_43;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_10.light_position);
-        local_44 = _e24;
+    bool _e26 = local_43;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_10.intensity);
+        local_44 = _e30;
     } else {
         local_44 = false;
     }
-    bool _e26 = local_44;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_10.intensity);
-        local_45 = _e30;
+    bool _e32 = local_44;
+    if (_e32) {
+        local_45 = (s_10.intensity >= 0.0);
     } else {
         local_45 = false;
     }
-    bool _e32 = local_45;
-    if (_e32) {
-        local_46 = (s_10.intensity >= 0.0);
+    bool _e39 = local_45;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_10.sigma_s);
+        local_46 = _e43;
     } else {
         local_46 = false;
     }
-    bool _e39 = local_46;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_10.sigma_s);
-        local_47 = _e43;
+    bool _e45 = local_46;
+    if (_e45) {
+        local_47 = (s_10.sigma_s >= 0.0);
     } else {
         local_47 = false;
     }
-    bool _e45 = local_47;
-    if (_e45) {
-        local_48 = (s_10.sigma_s >= 0.0);
+    bool _e52 = local_47;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_10.sigma_t);
+        local_48 = _e56;
     } else {
         local_48 = false;
     }
-    bool _e52 = local_48;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_10.sigma_t);
-        local_49 = _e56;
+    bool _e58 = local_48;
+    if (_e58) {
+        local_49 = (s_10.sigma_t >= 0.0);
     } else {
         local_49 = false;
     }
-    bool _e58 = local_49;
-    if (_e58) {
-        local_50 = (s_10.sigma_t >= 0.0);
-    } else {
-        local_50 = false;
-    }
-    bool _e65 = local_50;
+    bool _e65 = local_49;
     ok = _e65;
     if (((s_10.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_10.t_max);
-            local_51 = _e76;
+            local_50 = _e76;
+        } else {
+            local_50 = false;
+        }
+        bool _e78 = local_50;
+        if (_e78) {
+            local_51 = (s_10.t_min <= s_10.t_max);
         } else {
             local_51 = false;
         }
-        bool _e78 = local_51;
-        if (_e78) {
-            local_52 = (s_10.t_min <= s_10.t_max);
-        } else {
-            local_52 = false;
-        }
-        bool _e85 = local_52;
+        bool _e85 = local_51;
         ok = _e85;
     }
     if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_10.light_axis);
-            local_53 = _e93;
+            local_52 = _e93;
+        } else {
+            local_52 = false;
+        }
+        bool _e95 = local_52;
+        if (_e95) {
+            bool _e99 = airlight_normalisable(s_10.light_axis);
+            local_53 = _e99;
         } else {
             local_53 = false;
         }
-        bool _e95 = local_53;
-        if (_e95) {
-            bool _e99 = airlight_normalisable(s_10.light_axis);
-            local_54 = _e99;
+        bool _e101 = local_53;
+        if (_e101) {
+            local_54 = (s_10.light_param_a >= 0.0);
         } else {
             local_54 = false;
         }
-        bool _e101 = local_54;
-        if (_e101) {
-            local_55 = (s_10.light_param_a >= 0.0);
+        bool _e108 = local_54;
+        if (_e108) {
+            local_55 = (s_10.light_param_a <= 1024.0);
         } else {
             local_55 = false;
         }
-        bool _e108 = local_55;
-        if (_e108) {
-            local_56 = (s_10.light_param_a <= 1024.0);
+        bool _e115 = local_55;
+        if (_e115) {
+            local_56 = (fract((s_10.light_param_a * 0.5)) == 0.0);
         } else {
             local_56 = false;
         }
-        bool _e115 = local_56;
-        if (_e115) {
-            local_57 = (fract((s_10.light_param_a * 0.5)) == 0.0);
-        } else {
-            local_57 = false;
-        }
-        bool _e125 = local_57;
+        bool _e125 = local_56;
         ok = _e125;
     } else {
         if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e129 = ok;
             if (_e129) {
                 bool _e133 = airlight_vec_finite(s_10.light_axis);
-                local_58 = _e133;
+                local_57 = _e133;
+            } else {
+                local_57 = false;
+            }
+            bool _e135 = local_57;
+            if (_e135) {
+                bool _e139 = airlight_normalisable(s_10.light_axis);
+                local_58 = _e139;
             } else {
                 local_58 = false;
             }
-            bool _e135 = local_58;
-            if (_e135) {
-                bool _e139 = airlight_normalisable(s_10.light_axis);
-                local_59 = _e139;
+            bool _e141 = local_58;
+            if (_e141) {
+                local_59 = (s_10.light_param_b < s_10.light_param_a);
             } else {
                 local_59 = false;
             }
-            bool _e141 = local_59;
-            if (_e141) {
-                local_60 = (s_10.light_param_b < s_10.light_param_a);
+            bool _e148 = local_59;
+            if (_e148) {
+                local_60 = (s_10.light_param_b >= -1.0);
             } else {
                 local_60 = false;
             }
-            bool _e148 = local_60;
-            if (_e148) {
-                local_61 = (s_10.light_param_b >= -1.0);
+            bool _e155 = local_60;
+            if (_e155) {
+                local_61 = (s_10.light_param_a <= 1.0);
             } else {
                 local_61 = false;
             }
-            bool _e155 = local_61;
-            if (_e155) {
-                local_62 = (s_10.light_param_a <= 1.0);
-            } else {
-                local_62 = false;
-            }
-            bool _e162 = local_62;
+            bool _e162 = local_61;
             ok = _e162;
         } else {
             if ((s_10.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -2619,40 +2625,40 @@ bool airlight_valid(AirlightScene s_10) {
         case 4u: {
             bool _e172 = ok;
             if (_e172) {
-                local_63 = g_ok;
+                local_62 = g_ok;
             } else {
-                local_63 = false;
+                local_62 = false;
             }
-            bool _e176 = local_63;
+            bool _e176 = local_62;
             ok = _e176;
             break;
         }
         case 5u: {
             bool _e177 = ok;
             if (_e177) {
-                local_64 = g_ok;
+                local_63 = g_ok;
+            } else {
+                local_63 = false;
+            }
+            bool _e181 = local_63;
+            if (_e181) {
+                local_64 = (abs(s_10.phase_param_b) < 1.0);
             } else {
                 local_64 = false;
             }
-            bool _e181 = local_64;
-            if (_e181) {
-                local_65 = (abs(s_10.phase_param_b) < 1.0);
+            bool _e189 = local_64;
+            if (_e189) {
+                local_65 = (s_10.phase_param_c >= 0.0);
             } else {
                 local_65 = false;
             }
-            bool _e189 = local_65;
-            if (_e189) {
-                local_66 = (s_10.phase_param_c >= 0.0);
+            bool _e196 = local_65;
+            if (_e196) {
+                local_66 = (s_10.phase_param_c <= 1.0);
             } else {
                 local_66 = false;
             }
-            bool _e196 = local_66;
-            if (_e196) {
-                local_67 = (s_10.phase_param_c <= 1.0);
-            } else {
-                local_67 = false;
-            }
-            bool _e203 = local_67;
+            bool _e203 = local_66;
             ok = _e203;
             break;
         }
@@ -2724,28 +2730,28 @@ float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
+    bool local_67 = false;
     bool local_68 = false;
-    bool local_69 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_69 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_68 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_69 = false;
+            local_68 = false;
         }
-        bool _e21 = local_69;
-        local_68 = _e21;
+        bool _e21 = local_68;
+        local_67 = _e21;
     } else {
-        local_68 = true;
+        local_67 = true;
     }
-    bool _e23 = local_68;
+    bool _e23 = local_67;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain) {
-    bool local_70 = false;
+    bool local_69 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_71 = false;
+    bool local_70 = false;
     vec3 a_14 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_12.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), key_4);
@@ -2757,11 +2763,11 @@ AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_70 = !(_e38);
+        local_69 = !(_e38);
     } else {
-        local_70 = true;
+        local_69 = true;
     }
-    bool _e41 = local_70;
+    bool _e41 = local_69;
     if (_e41) {
         return plain;
     }
@@ -2785,11 +2791,11 @@ AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain) 
     float h_3 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_3);
     if (_e95) {
-        local_71 = (h_3 > 0.0);
+        local_70 = (h_3 > 0.0);
     } else {
-        local_71 = false;
+        local_70 = false;
     }
-    bool _e101 = local_71;
+    bool _e101 = local_70;
     if (!(_e101)) {
         return plain;
     }

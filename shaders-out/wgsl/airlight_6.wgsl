@@ -420,13 +420,14 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         }
         {
             let _e57 = i;
-            if (_e57 < _e14) {
-                let _e59 = i;
-                let kf_2 = f32((_e14 - _e59));
-                let _e72 = t_1;
-                let _e73 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e72);
-                t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e73);
+            if (_e57 >= _e14) {
+                break;
             }
+            let _e59 = i;
+            let kf_2 = f32((_e14 - _e59));
+            let _e72 = t_1;
+            let _e73 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e72);
+            t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e73);
         }
         continuing {
             let _e76 = i;
@@ -474,12 +475,13 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
         }
         {
             let _e37 = i_1;
-            if (_e37 < _e2) {
-                let _e39 = i_1;
-                let kf_3 = f32((_e2 - _e39));
-                let _e50 = t_2;
-                t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e50));
+            if (_e37 >= _e2) {
+                break;
             }
+            let _e39 = i_1;
+            let kf_3 = f32((_e2 - _e39));
+            let _e50 = t_2;
+            t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e50));
         }
         continuing {
             let _e54 = i_1;
@@ -494,7 +496,6 @@ fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) 
     var n_1: u32 = 2u;
     var pivot: u32 = 1u;
     var n_2: u32 = 1u;
-    var local_1: bool;
     var i_2: u32 = 1u;
 
     if (x_5 == 0f) {
@@ -536,47 +537,45 @@ fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) 
         }
         {
             let _e51 = n_2;
-            let _e52 = pivot;
-            if (_e51 >= _e52) {
-                let _e56 = n_2;
-                local_1 = (_e56 < count);
-            } else {
-                local_1 = false;
+            if (_e51 >= count) {
+                break;
             }
-            let _e59 = local_1;
-            if _e59 {
-                let _e60 = n_2;
-                let _e62 = n_2;
-                let _e66 = (*out)[(_e62 - 1u)];
-                let _e70 = n_2;
-                (*out)[_e60] = ((1f - (x_5 * _e66)) / f32(_e70));
+            let _e53 = n_2;
+            let _e54 = pivot;
+            if (_e53 >= _e54) {
+                let _e56 = n_2;
+                let _e58 = n_2;
+                let _e62 = (*out)[(_e58 - 1u)];
+                let _e66 = n_2;
+                (*out)[_e56] = ((1f - (x_5 * _e62)) / f32(_e66));
             }
         }
         continuing {
-            let _e74 = n_2;
-            n_2 = (_e74 + 1u);
+            let _e70 = n_2;
+            n_2 = (_e70 + 1u);
         }
     }
     loop {
-        let _e78 = i_2;
-        if (_e78 < AIRLIGHT_SCRATCH) {
+        let _e74 = i_2;
+        if (_e74 < AIRLIGHT_SCRATCH) {
         } else {
             break;
         }
         {
-            let _e81 = i_2;
-            let _e82 = pivot;
-            if (_e81 < _e82) {
-                let _e84 = pivot;
-                let _e85 = i_2;
-                let n_4 = (_e84 - _e85);
-                let _e92 = (*out)[n_4];
-                (*out)[(n_4 - 1u)] = ((1f - (f32(n_4) * _e92)) / x_5);
+            let _e77 = i_2;
+            let _e78 = pivot;
+            if (_e77 >= _e78) {
+                break;
             }
+            let _e80 = pivot;
+            let _e81 = i_2;
+            let n_4 = (_e80 - _e81);
+            let _e88 = (*out)[n_4];
+            (*out)[(n_4 - 1u)] = ((1f - (f32(n_4) * _e88)) / x_5);
         }
         continuing {
-            let _e98 = i_2;
-            i_2 = (_e98 + 1u);
+            let _e94 = i_2;
+            i_2 = (_e94 + 1u);
         }
     }
     return;
@@ -654,24 +653,28 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
                 }
                 {
                     let _e14 = e;
-                    if ((_e14 & 1u) == 1u) {
-                        let _e19 = acc;
-                        let _e20 = base;
-                        acc = (_e19 * _e20);
+                    if (_e14 == 0u) {
+                        break;
                     }
-                    let _e22 = e;
-                    e = (_e22 >> 1u);
-                    let _e25 = base;
-                    let _e26 = base;
-                    base = (_e25 * _e26);
+                    let _e17 = e;
+                    if ((_e17 & 1u) == 1u) {
+                        let _e22 = acc;
+                        let _e23 = base;
+                        acc = (_e22 * _e23);
+                    }
+                    let _e25 = e;
+                    e = (_e25 >> 1u);
+                    let _e28 = base;
+                    let _e29 = base;
+                    base = (_e28 * _e29);
                 }
                 continuing {
-                    let _e29 = i_3;
-                    i_3 = (_e29 + 1u);
+                    let _e32 = i_3;
+                    i_3 = (_e32 + 1u);
                 }
             }
-            let _e31 = acc;
-            return _e31;
+            let _e34 = acc;
+            return _e34;
         }
         case 2u: {
             let width = (p0_2 - p1_2);
@@ -755,30 +758,30 @@ fn airlight_hypot_one(a_3: f32) -> f32 {
 }
 
 fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
-    var local_2: bool;
+    var local_1: bool;
     var v_e: f32;
+    var local_2: bool;
     var local_3: bool;
     var local_4: bool;
-    var local_5: bool;
     var d_im: f32 = 0f;
     var d_re: f32 = 0f;
-    var local_6: bool;
+    var local_5: bool;
 
     let big_h_1 = half_1.big_h;
     let v_s = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
     if half_1.second {
-        local_2 = (half_1.y_lo == 0f);
+        local_1 = (half_1.y_lo == 0f);
+    } else {
+        local_1 = false;
+    }
+    let v_e_infinite = local_1;
+    v_e = half_1.y_hi;
+    if half_1.second {
+        local_2 = !(v_e_infinite);
     } else {
         local_2 = false;
     }
-    let v_e_infinite = local_2;
-    v_e = half_1.y_hi;
-    if half_1.second {
-        local_3 = !(v_e_infinite);
-    } else {
-        local_3 = false;
-    }
-    let _e23 = local_3;
+    let _e23 = local_2;
     if _e23 {
         v_e = (1f / half_1.y_lo);
     }
@@ -786,16 +789,16 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
         if !(v_e_infinite) {
             let _e35 = v_e;
             let _e36 = airlight_hypot_one(_e35);
-            local_5 = ((big_h_1 * _e36) <= 1f);
+            local_4 = ((big_h_1 * _e36) <= 1f);
         } else {
-            local_5 = false;
+            local_4 = false;
         }
-        let _e41 = local_5;
-        local_4 = _e41;
+        let _e41 = local_4;
+        local_3 = _e41;
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    let near_1 = local_4;
+    let near_1 = local_3;
     if near_1 {
         if !(v_e_infinite) {
             let _e50 = v_e;
@@ -827,11 +830,11 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     if !(v_e_infinite) {
         let _e105 = v_e;
         let _e107 = airlight_is_finite((big_h_1 * _e105));
-        local_6 = _e107;
+        local_5 = _e107;
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    let _e109 = local_6;
+    let _e109 = local_5;
     if _e109 {
         let _e110 = v_e;
         let _e114 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e110), -(big_h_1)));
@@ -841,38 +844,38 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
 }
 
 fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
+    var local_6: bool;
     var local_7: bool;
     var local_8: bool;
     var local_9: bool;
-    var local_10: bool;
 
     if !((half_2.dy > 0f)) {
         return 0f;
     }
     if !(half_2.dv_infinite) {
-        local_7 = ((half_2.big_h * half_2.dv) <= 1f);
+        local_6 = ((half_2.big_h * half_2.dv) <= 1f);
+    } else {
+        local_6 = false;
+    }
+    let short_exp = local_6;
+    if (half_2.dy <= 0.25f) {
+        if !(!(half_2.second)) {
+            local_8 = (half_2.dy <= (half_2.y_lo * 0.5f));
+        } else {
+            local_8 = true;
+        }
+        let _e33 = local_8;
+        local_7 = _e33;
     } else {
         local_7 = false;
     }
-    let short_exp = local_7;
-    if (half_2.dy <= 0.25f) {
-        if !(!(half_2.second)) {
-            local_9 = (half_2.dy <= (half_2.y_lo * 0.5f));
-        } else {
-            local_9 = true;
-        }
-        let _e33 = local_9;
-        local_8 = _e33;
-    } else {
-        local_8 = false;
-    }
-    let short_len = local_8;
+    let short_len = local_7;
     if short_exp {
-        local_10 = short_len;
+        local_9 = short_len;
     } else {
-        local_10 = false;
+        local_9 = false;
     }
-    let _e39 = local_10;
+    let _e39 = local_9;
     if _e39 {
         let _e40 = airlight_moment_gauss(half_2);
         return _e40;
@@ -1019,44 +1022,45 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
                 }
                 {
                     let _e65 = i_6;
-                    if (_e65 < top) {
-                        let _e67 = i_6;
-                        let k_12 = (top - _e67);
-                        if (k_12 < AIRLIGHT_TERMS) {
-                            let _e71 = cur;
-                            out_1[k_12] = _e71;
-                        }
-                        let _e72 = above;
-                        let _e73 = odd;
-                        let _e75 = cur;
-                        let below = (_e72 + ((_e73 * inv_1) * _e75));
-                        let _e78 = odd;
-                        odd = (_e78 - 2f);
-                        let _e81 = cur;
-                        above = _e81;
-                        cur = below;
-                        let _e82 = cur;
-                        if (_e82 > 100000000000000000000f) {
-                            let _e85 = cur;
-                            cur = (_e85 * 0.00000000000000000001f);
-                            let _e88 = above;
-                            above = (_e88 * 0.00000000000000000001f);
-                            j_3 = 0u;
-                            loop {
-                                let _e93 = j_3;
-                                if (_e93 < AIRLIGHT_TERMS) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    let _e96 = j_3;
-                                    let _e98 = out_1[_e96];
-                                    out_1[_e96] = (_e98 * 0.00000000000000000001f);
-                                }
-                                continuing {
-                                    let _e102 = j_3;
-                                    j_3 = (_e102 + 1u);
-                                }
+                    if (_e65 >= top) {
+                        break;
+                    }
+                    let _e67 = i_6;
+                    let k_12 = (top - _e67);
+                    if (k_12 < AIRLIGHT_TERMS) {
+                        let _e71 = cur;
+                        out_1[k_12] = _e71;
+                    }
+                    let _e72 = above;
+                    let _e73 = odd;
+                    let _e75 = cur;
+                    let below = (_e72 + ((_e73 * inv_1) * _e75));
+                    let _e78 = odd;
+                    odd = (_e78 - 2f);
+                    let _e81 = cur;
+                    above = _e81;
+                    cur = below;
+                    let _e82 = cur;
+                    if (_e82 > 100000000000000000000f) {
+                        let _e85 = cur;
+                        cur = (_e85 * 0.00000000000000000001f);
+                        let _e88 = above;
+                        above = (_e88 * 0.00000000000000000001f);
+                        j_3 = 0u;
+                        loop {
+                            let _e93 = j_3;
+                            if (_e93 < AIRLIGHT_TERMS) {
+                            } else {
+                                break;
+                            }
+                            {
+                                let _e96 = j_3;
+                                let _e98 = out_1[_e96];
+                                out_1[_e96] = (_e98 * 0.00000000000000000001f);
+                            }
+                            continuing {
+                                let _e102 = j_3;
+                                j_3 = (_e102 + 1u);
                             }
                         }
                     }
@@ -1138,7 +1142,7 @@ fn airlight_tail_estimate(c_3: array<f32, 6>) -> f32 {
 }
 
 fn airlight_error_factor(c_4: array<f32, 6>, m_1: array<f32, 6>) -> f32 {
-    var local_11: bool;
+    var local_10: bool;
     var aliasing: f32 = 1f;
     var i_7: u32 = 0u;
 
@@ -1148,11 +1152,11 @@ fn airlight_error_factor(c_4: array<f32, 6>, m_1: array<f32, 6>) -> f32 {
     let last = (abs(c_4[5]) + abs(c_4[4]));
     let before = (abs(c_4[3]) + abs(c_4[2]));
     if !(!((before > 0f))) {
-        local_11 = !((last < before));
+        local_10 = !((last < before));
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e26 = local_11;
+    let _e26 = local_10;
     if _e26 {
         return 1f;
     }
@@ -1460,9 +1464,9 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     var shifted_1: f32;
     var s_b: array<f32, 16>;
     var s_a: array<f32, 16>;
-    var local_12: bool;
+    var local_11: bool;
     var decay: f32 = 0f;
-    var local_13: bool;
+    var local_12: bool;
     var sum_6: f32 = 0f;
     var mass_2: f32 = 0f;
     var ratio: f32 = 1f;
@@ -1567,21 +1571,21 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     s_a = _e111;
     if (a_7 > 0f) {
         let _e118 = airlight_is_finite((big_h_2 / a_7));
-        local_12 = _e118;
+        local_11 = _e118;
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    let far_1 = local_12;
+    let far_1 = local_11;
     if far_1 {
         decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if far_1 {
         let _e131 = decay;
-        local_13 = (_e131 > 0f);
+        local_12 = (_e131 > 0f);
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    let _e135 = local_13;
+    let _e135 = local_12;
     if _e135 {
         airlight_en_scaled((big_h_2 / a_7), 8u, (&s_a));
     }
@@ -1670,25 +1674,25 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
 }
 
 fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+    var local_13: bool;
     var local_14: bool;
-    var local_15: bool;
 
     if half_7.second {
-        local_14 = (a_8 <= (b_7 * 0.25f));
+        local_13 = (a_8 <= (b_7 * 0.25f));
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    let _e13 = local_14;
+    let _e13 = local_13;
     if _e13 {
         let _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
-        local_15 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_14 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    let _e26 = local_15;
+    let _e26 = local_14;
     if _e26 {
         let _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e27;
@@ -1708,9 +1712,9 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
     var mass_3: f32;
     var worst: u32;
     var i_14: u32;
+    var local_15: bool;
     var local_16: bool;
     var local_17: bool;
-    var local_18: bool;
     var i_15: u32 = 0u;
 
     if !((hi > lo)) {
@@ -1742,27 +1746,28 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
                 {
                     let _e71 = i_14;
                     let _e72 = count_1;
-                    if (_e71 < _e72) {
-                        let _e74 = total;
-                        let _e75 = i_14;
-                        let _e78 = list[_e75].z;
-                        total = (_e74 + _e78);
-                        let _e80 = errors;
-                        let _e81 = i_14;
-                        let _e84 = list[_e81].w;
-                        errors = (_e80 + _e84);
-                        let _e86 = mass_3;
-                        let _e87 = i_14;
-                        let _e89 = mass_over_1[_e87];
-                        mass_3 = (_e86 + _e89);
-                        let _e91 = i_14;
-                        let _e94 = list[_e91].w;
-                        let _e95 = worst;
-                        let _e98 = list[_e95].w;
-                        if (_e94 > _e98) {
-                            let _e100 = i_14;
-                            worst = _e100;
-                        }
+                    if (_e71 >= _e72) {
+                        break;
+                    }
+                    let _e74 = total;
+                    let _e75 = i_14;
+                    let _e78 = list[_e75].z;
+                    total = (_e74 + _e78);
+                    let _e80 = errors;
+                    let _e81 = i_14;
+                    let _e84 = list[_e81].w;
+                    errors = (_e80 + _e84);
+                    let _e86 = mass_3;
+                    let _e87 = i_14;
+                    let _e89 = mass_over_1[_e87];
+                    mass_3 = (_e86 + _e89);
+                    let _e91 = i_14;
+                    let _e94 = list[_e91].w;
+                    let _e95 = worst;
+                    let _e98 = list[_e95].w;
+                    if (_e94 > _e98) {
+                        let _e100 = i_14;
+                        worst = _e100;
                     }
                 }
                 continuing {
@@ -1778,25 +1783,25 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
             if !((_e114 <= goal)) {
                 let _e119 = worst;
                 let _e122 = list[_e119].w;
-                local_16 = !((_e122 > 0f));
+                local_15 = !((_e122 > 0f));
+            } else {
+                local_15 = true;
+            }
+            let _e127 = local_15;
+            if !(_e127) {
+                let _e131 = budget;
+                local_16 = (_e131 < 2u);
             } else {
                 local_16 = true;
             }
-            let _e127 = local_16;
-            if !(_e127) {
-                let _e131 = budget;
-                local_17 = (_e131 < 2u);
+            let _e135 = local_16;
+            if !(_e135) {
+                let _e139 = count_1;
+                local_17 = (_e139 == AIRLIGHT_PANEL_LIST);
             } else {
                 local_17 = true;
             }
-            let _e135 = local_17;
-            if !(_e135) {
-                let _e139 = count_1;
-                local_18 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_18 = true;
-            }
-            let _e143 = local_18;
+            let _e143 = local_17;
             if _e143 {
                 let _e144 = total;
                 return _e144;
@@ -1843,12 +1848,13 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
         {
             let _e204 = i_15;
             let _e205 = count_1;
-            if (_e204 < _e205) {
-                let _e207 = total;
-                let _e208 = i_15;
-                let _e211 = list[_e208].z;
-                total = (_e207 + _e211);
+            if (_e204 >= _e205) {
+                break;
             }
+            let _e207 = total;
+            let _e208 = i_15;
+            let _e211 = list[_e208].z;
+            total = (_e207 + _e211);
         }
         continuing {
             let _e214 = i_15;
@@ -1897,15 +1903,15 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
     var k_in: f32;
     var k_out: f32;
     var i_16: u32 = 0u;
-    var local_19: bool;
+    var local_18: bool;
     var i_17: u32 = 0u;
     var j_5: u32;
     var total_1: f32 = 0f;
     var lo_1: f32;
     var i_18: u32 = 0u;
     var hi_1: f32;
+    var local_19: bool;
     var local_20: bool;
-    var local_21: bool;
 
     if isotropic {
         let _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5f)));
@@ -1941,11 +1947,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 if (_e57 > half_9.y_lo) {
                     let _e62 = i_16;
                     let _e64 = cuts[_e62];
-                    local_19 = (_e64 < half_9.y_hi);
+                    local_18 = (_e64 < half_9.y_hi);
                 } else {
-                    local_19 = false;
+                    local_18 = false;
                 }
-                let _e68 = local_19;
+                let _e68 = local_18;
                 if !(_e68) {
                     let _e70 = i_16;
                     cuts[_e70] = 2f;
@@ -2012,11 +2018,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e128 < 4u) {
                 let _e133 = i_18;
                 let _e135 = cuts[_e133];
-                local_20 = (_e135 < 2f);
+                local_19 = (_e135 < 2f);
             } else {
-                local_20 = false;
+                local_19 = false;
             }
-            let _e139 = local_20;
+            let _e139 = local_19;
             if _e139 {
                 let _e140 = i_18;
                 let _e142 = cuts[_e140];
@@ -2037,11 +2043,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e152 < 4u) {
                 let _e157 = i_18;
                 let _e159 = cuts[_e157];
-                local_21 = (_e159 >= 2f);
+                local_20 = (_e159 >= 2f);
             } else {
-                local_21 = false;
+                local_20 = false;
             }
-            let _e163 = local_21;
+            let _e163 = local_20;
             if _e163 {
                 break;
             }
@@ -2068,17 +2074,17 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32)
 }
 
 fn airlight_on_line(s_8: AirlightScene, g_10: AirlightCanonical) -> f32 {
-    var local_22: bool;
+    var local_21: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
     if !(g_10.t_hi_infinite) {
-        local_22 = (g_10.x_h > g_10.t_hi);
+        local_21 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    let _e10 = local_22;
+    let _e10 = local_21;
     if _e10 {
         let _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         let _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1f);
@@ -2134,44 +2140,44 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
 }
 
 fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) -> AirlightResult {
+    var local_22: bool;
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
-    var local_26: bool;
     var gap: f32 = 0f;
+    var local_26: bool;
     var local_27: bool;
     var local_28: bool;
     var local_29: bool;
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
-    var local_33: bool;
     var total_2: f32 = 0f;
     var f_max_6: f32 = 0f;
     var t_end: f32;
+    var local_33: bool;
     var local_34: bool;
-    var local_35: bool;
     var y_lo: f32 = 0f;
     var dv_2: f32 = 0f;
     var dy: f32;
     var infinite_1: bool = true;
+    var local_35: bool;
     var local_36: bool;
-    var local_37: bool;
 
     let t0_ = g_11.t_lo;
     let t1_ = g_11.t_hi;
     if !(g_11.t_hi_infinite) {
-        local_23 = (t1_ > t0_);
+        local_22 = (t1_ > t0_);
+    } else {
+        local_22 = true;
+    }
+    let _e10 = local_22;
+    if !(!(_e10)) {
+        local_23 = ((s_9.sigma_s * s_9.intensity) == 0f);
     } else {
         local_23 = true;
     }
-    let _e10 = local_23;
-    if !(!(_e10)) {
-        local_24 = ((s_9.sigma_s * s_9.intensity) == 0f);
-    } else {
-        local_24 = true;
-    }
-    let _e21 = local_24;
+    let _e21 = local_23;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -2179,16 +2185,16 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
     let x_h = g_11.x_h;
     if (t0_ <= x_h) {
         if !(g_11.t_hi_infinite) {
-            local_26 = (x_h <= t1_);
+            local_25 = (x_h <= t1_);
         } else {
-            local_26 = true;
+            local_25 = true;
         }
-        let _e36 = local_26;
-        local_25 = _e36;
+        let _e36 = local_25;
+        local_24 = _e36;
     } else {
-        local_25 = false;
+        local_24 = false;
     }
-    let inside = local_25;
+    let inside = local_24;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -2198,11 +2204,11 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
     }
     if !(inside) {
         let _e48 = gap;
-        local_27 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_26 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_27 = false;
+        local_26 = false;
     }
-    let _e55 = local_27;
+    let _e55 = local_26;
     if _e55 {
         let _e56 = airlight_on_line(s_9, g_11);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -2213,49 +2219,49 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
     let big_h_3 = (s_9.sigma_t * h_2);
     if !((s_9.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = (s_9.light_param_a == 0f);
+            local_28 = (s_9.light_param_a == 0f);
         } else {
-            local_29 = false;
+            local_28 = false;
         }
-        let _e83 = local_29;
-        local_28 = _e83;
+        let _e83 = local_28;
+        local_27 = _e83;
     } else {
-        local_28 = true;
+        local_27 = true;
     }
-    let _e85 = local_28;
+    let _e85 = local_27;
     if _e85 {
         if !((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_32 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_31 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_32 = true;
+                local_31 = true;
             }
-            let _e104 = local_32;
+            let _e104 = local_31;
             if _e104 {
-                local_33 = (s_9.phase_param_a == 0f);
+                local_32 = (s_9.phase_param_a == 0f);
             } else {
-                local_33 = false;
+                local_32 = false;
             }
-            let _e111 = local_33;
-            local_31 = _e111;
+            let _e111 = local_32;
+            local_30 = _e111;
         } else {
-            local_31 = true;
+            local_30 = true;
         }
-        let _e113 = local_31;
-        local_30 = _e113;
+        let _e113 = local_30;
+        local_29 = _e113;
     } else {
-        local_30 = false;
+        local_29 = false;
     }
-    let isotropic_1 = local_30;
+    let isotropic_1 = local_29;
     if (t0_ < x_h) {
         let a_s = ((x_h - t0_) / h_2);
         t_end = x_h;
         if !(g_11.t_hi_infinite) {
-            local_34 = (t1_ < x_h);
+            local_33 = (t1_ < x_h);
         } else {
-            local_34 = false;
+            local_33 = false;
         }
-        let _e130 = local_34;
+        let _e130 = local_33;
         if _e130 {
             t_end = t1_;
         }
@@ -2275,11 +2281,11 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
         total_2 = (_e156 + _e160);
     }
     if !(g_11.t_hi_infinite) {
-        local_35 = (t1_ > x_h);
+        local_34 = (t1_ > x_h);
     } else {
-        local_35 = true;
+        local_34 = true;
     }
-    let _e168 = local_35;
+    let _e168 = local_34;
     if _e168 {
         let t_start = max(t0_, x_h);
         let a_s_1 = ((t_start - x_h) / h_2);
@@ -2289,22 +2295,22 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
         let a_e_1 = ((t1_ - x_h) / h_2);
         if !(g_11.t_hi_infinite) {
             let _e187 = airlight_is_finite(a_e_1);
-            local_36 = _e187;
+            local_35 = _e187;
         } else {
-            local_36 = false;
+            local_35 = false;
         }
-        let _e189 = local_36;
+        let _e189 = local_35;
         if _e189 {
             let _e190 = airlight_bounded(a_e_1);
             let _e194 = airlight_hypot_one(a_e_1);
             let dv_end = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e172 + _e194))));
             if (_e190 > 0f) {
                 let _e204 = airlight_is_finite(dv_end);
-                local_37 = _e204;
+                local_36 = _e204;
             } else {
-                local_37 = false;
+                local_36 = false;
             }
-            let _e206 = local_37;
+            let _e206 = local_36;
             if _e206 {
                 y_lo = _e190;
                 dv_2 = dv_end;
@@ -2332,24 +2338,24 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
+    var local_37: bool;
     var local_38: bool;
-    var local_39: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_38 = _e6;
+        local_37 = _e6;
+    } else {
+        local_37 = false;
+    }
+    let _e8 = local_37;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_38 = _e12;
     } else {
         local_38 = false;
     }
-    let _e8 = local_38;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_39 = _e12;
-    } else {
-        local_39 = false;
-    }
-    let _e14 = local_39;
+    let _e14 = local_38;
     return _e14;
 }
 
@@ -2362,16 +2368,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_40: bool;
+    var local_39: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_40 = _e6;
+        local_39 = _e6;
     } else {
-        local_40 = false;
+        local_39 = false;
     }
-    let _e8 = local_40;
+    let _e8 = local_39;
     return _e8;
 }
 
@@ -2382,6 +2388,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_10: AirlightScene) -> bool {
+    var local_40: bool;
     var local_41: bool;
     var local_42: bool;
     var local_43: bool;
@@ -2391,8 +2398,8 @@ fn airlight_valid(s_10: AirlightScene) -> bool {
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
-    var local_50: bool;
     var ok: bool;
+    var local_50: bool;
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
@@ -2409,164 +2416,163 @@ fn airlight_valid(s_10: AirlightScene) -> bool {
     var local_64: bool;
     var local_65: bool;
     var local_66: bool;
-    var local_67: bool;
 
     let _e2 = airlight_vec_finite(s_10.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_10.dir);
-        local_41 = _e6;
+        local_40 = _e6;
+    } else {
+        local_40 = false;
+    }
+    let _e8 = local_40;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_10.dir);
+        local_41 = _e12;
     } else {
         local_41 = false;
     }
-    let _e8 = local_41;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_10.dir);
-        local_42 = _e12;
+    let _e14 = local_41;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_10.t_min);
+        local_42 = _e18;
     } else {
         local_42 = false;
     }
-    let _e14 = local_42;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_10.t_min);
-        local_43 = _e18;
+    let _e20 = local_42;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_10.light_position);
+        local_43 = _e24;
     } else {
         local_43 = false;
     }
-    let _e20 = local_43;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_10.light_position);
-        local_44 = _e24;
+    let _e26 = local_43;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_10.intensity);
+        local_44 = _e30;
     } else {
         local_44 = false;
     }
-    let _e26 = local_44;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_10.intensity);
-        local_45 = _e30;
+    let _e32 = local_44;
+    if _e32 {
+        local_45 = (s_10.intensity >= 0f);
     } else {
         local_45 = false;
     }
-    let _e32 = local_45;
-    if _e32 {
-        local_46 = (s_10.intensity >= 0f);
+    let _e39 = local_45;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_10.sigma_s);
+        local_46 = _e43;
     } else {
         local_46 = false;
     }
-    let _e39 = local_46;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_10.sigma_s);
-        local_47 = _e43;
+    let _e45 = local_46;
+    if _e45 {
+        local_47 = (s_10.sigma_s >= 0f);
     } else {
         local_47 = false;
     }
-    let _e45 = local_47;
-    if _e45 {
-        local_48 = (s_10.sigma_s >= 0f);
+    let _e52 = local_47;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_10.sigma_t);
+        local_48 = _e56;
     } else {
         local_48 = false;
     }
-    let _e52 = local_48;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_10.sigma_t);
-        local_49 = _e56;
+    let _e58 = local_48;
+    if _e58 {
+        local_49 = (s_10.sigma_t >= 0f);
     } else {
         local_49 = false;
     }
-    let _e58 = local_49;
-    if _e58 {
-        local_50 = (s_10.sigma_t >= 0f);
-    } else {
-        local_50 = false;
-    }
-    let _e65 = local_50;
+    let _e65 = local_49;
     ok = _e65;
     if ((s_10.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_10.t_max);
-            local_51 = _e76;
+            local_50 = _e76;
+        } else {
+            local_50 = false;
+        }
+        let _e78 = local_50;
+        if _e78 {
+            local_51 = (s_10.t_min <= s_10.t_max);
         } else {
             local_51 = false;
         }
-        let _e78 = local_51;
-        if _e78 {
-            local_52 = (s_10.t_min <= s_10.t_max);
-        } else {
-            local_52 = false;
-        }
-        let _e85 = local_52;
+        let _e85 = local_51;
         ok = _e85;
     }
     if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_10.light_axis);
-            local_53 = _e93;
+            local_52 = _e93;
+        } else {
+            local_52 = false;
+        }
+        let _e95 = local_52;
+        if _e95 {
+            let _e99 = airlight_normalisable(s_10.light_axis);
+            local_53 = _e99;
         } else {
             local_53 = false;
         }
-        let _e95 = local_53;
-        if _e95 {
-            let _e99 = airlight_normalisable(s_10.light_axis);
-            local_54 = _e99;
+        let _e101 = local_53;
+        if _e101 {
+            local_54 = (s_10.light_param_a >= 0f);
         } else {
             local_54 = false;
         }
-        let _e101 = local_54;
-        if _e101 {
-            local_55 = (s_10.light_param_a >= 0f);
+        let _e108 = local_54;
+        if _e108 {
+            local_55 = (s_10.light_param_a <= 1024f);
         } else {
             local_55 = false;
         }
-        let _e108 = local_55;
-        if _e108 {
-            local_56 = (s_10.light_param_a <= 1024f);
+        let _e115 = local_55;
+        if _e115 {
+            local_56 = (fract((s_10.light_param_a * 0.5f)) == 0f);
         } else {
             local_56 = false;
         }
-        let _e115 = local_56;
-        if _e115 {
-            local_57 = (fract((s_10.light_param_a * 0.5f)) == 0f);
-        } else {
-            local_57 = false;
-        }
-        let _e125 = local_57;
+        let _e125 = local_56;
         ok = _e125;
     } else {
         if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
                 let _e133 = airlight_vec_finite(s_10.light_axis);
-                local_58 = _e133;
+                local_57 = _e133;
+            } else {
+                local_57 = false;
+            }
+            let _e135 = local_57;
+            if _e135 {
+                let _e139 = airlight_normalisable(s_10.light_axis);
+                local_58 = _e139;
             } else {
                 local_58 = false;
             }
-            let _e135 = local_58;
-            if _e135 {
-                let _e139 = airlight_normalisable(s_10.light_axis);
-                local_59 = _e139;
+            let _e141 = local_58;
+            if _e141 {
+                local_59 = (s_10.light_param_b < s_10.light_param_a);
             } else {
                 local_59 = false;
             }
-            let _e141 = local_59;
-            if _e141 {
-                local_60 = (s_10.light_param_b < s_10.light_param_a);
+            let _e148 = local_59;
+            if _e148 {
+                local_60 = (s_10.light_param_b >= -1f);
             } else {
                 local_60 = false;
             }
-            let _e148 = local_60;
-            if _e148 {
-                local_61 = (s_10.light_param_b >= -1f);
+            let _e155 = local_60;
+            if _e155 {
+                local_61 = (s_10.light_param_a <= 1f);
             } else {
                 local_61 = false;
             }
-            let _e155 = local_61;
-            if _e155 {
-                local_62 = (s_10.light_param_a <= 1f);
-            } else {
-                local_62 = false;
-            }
-            let _e162 = local_62;
+            let _e162 = local_61;
             ok = _e162;
         } else {
             if (s_10.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2581,39 +2587,39 @@ fn airlight_valid(s_10: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e172 = ok;
             if _e172 {
-                local_63 = g_ok;
+                local_62 = g_ok;
             } else {
-                local_63 = false;
+                local_62 = false;
             }
-            let _e176 = local_63;
+            let _e176 = local_62;
             ok = _e176;
         }
         case 5u: {
             let _e177 = ok;
             if _e177 {
-                local_64 = g_ok;
+                local_63 = g_ok;
+            } else {
+                local_63 = false;
+            }
+            let _e181 = local_63;
+            if _e181 {
+                local_64 = (abs(s_10.phase_param_b) < 1f);
             } else {
                 local_64 = false;
             }
-            let _e181 = local_64;
-            if _e181 {
-                local_65 = (abs(s_10.phase_param_b) < 1f);
+            let _e189 = local_64;
+            if _e189 {
+                local_65 = (s_10.phase_param_c >= 0f);
             } else {
                 local_65 = false;
             }
-            let _e189 = local_65;
-            if _e189 {
-                local_66 = (s_10.phase_param_c >= 0f);
+            let _e196 = local_65;
+            if _e196 {
+                local_66 = (s_10.phase_param_c <= 1f);
             } else {
                 local_66 = false;
             }
-            let _e196 = local_66;
-            if _e196 {
-                local_67 = (s_10.phase_param_c <= 1f);
-            } else {
-                local_67 = false;
-            }
-            let _e203 = local_67;
+            let _e203 = local_66;
             ok = _e203;
         }
         default: {
@@ -2684,29 +2690,29 @@ fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
+    var local_67: bool;
     var local_68: bool;
-    var local_69: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_69 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_68 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_69 = false;
+            local_68 = false;
         }
-        let _e21 = local_69;
-        local_68 = _e21;
+        let _e21 = local_68;
+        local_67 = _e21;
     } else {
-        local_68 = true;
+        local_67 = true;
     }
-    let _e23 = local_68;
+    let _e23 = local_67;
     return _e23;
 }
 
 fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_70: bool;
+    var local_69: bool;
     var out_2: AirlightCanonical;
-    var local_71: bool;
+    var local_70: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_12.flags > 1u));
@@ -2719,11 +2725,11 @@ fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_70 = !(_e38);
+        local_69 = !(_e38);
     } else {
-        local_70 = true;
+        local_69 = true;
     }
-    let _e41 = local_70;
+    let _e41 = local_69;
     if _e41 {
         return plain;
     }
@@ -2747,11 +2753,11 @@ fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_3 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_3);
     if _e95 {
-        local_71 = (h_3 > 0f);
+        local_70 = (h_3 > 0f);
     } else {
-        local_71 = false;
+        local_70 = false;
     }
-    let _e101 = local_71;
+    let _e101 = local_70;
     if !(_e101) {
         return plain;
     }
