@@ -1,8 +1,9 @@
-//! CPU ns per ray, side by side over the same 256 rays, for this kernel and every baseline
-//! (issue 5): the seeds' `atan` form (isotropic, no extinction: the cheapest analytic glow,
-//! our floor), the paper's algorithm as published (its eq. 27 `Ei`, Taylor expansion), and ray
-//! marching ([`airlight::march`]: uniform steps in `t`, and equiangular steps) at the step
-//! counts that reach 1e-3 and 1e-5 relative error on these scenes.
+//! CPU ns per ray, side by side over the same 256 rays, for this kernel (the fixed-cost method
+//! and the default path, `Scene::in_scatter`) and every baseline: the seeds' `atan` form
+//! (isotropic, no extinction: the cheapest analytic glow, our floor), the paper's algorithm as
+//! published (its eq. 27 `Ei`, Taylor expansion), and ray marching ([`airlight::march`]:
+//! uniform steps in `t`, and equiangular steps) at the step counts that reach 1e-3 and 1e-5
+//! relative error on these scenes.
 //!
 //! Accuracy is measured first, outside the timed loops, against an independent reference:
 //! the f64 equiangular midpoint rule at 2^15 and 2^16 steps, Richardson-extrapolated (its
@@ -71,6 +72,8 @@ enum Method {
     Paper(usize, f64),
     /// The seeds' `atan` form.
     Atan,
+    /// This kernel's default path, `Scene::in_scatter` (error-controlled panels).
+    Default,
     /// Ray marching.
     March(Steps, usize),
 }
@@ -106,6 +109,7 @@ fn eval<T: Real>(m: Method, s: &S<T>) -> T {
         Method::Ours(_) => s.in_scatter_with::<12>(Expansion::Chebyshev),
         Method::Taylor6 => s.in_scatter_with::<6>(Expansion::Taylor),
         Method::Paper(n, scale) => paper(s, n, paper_eps::<T>() * T::lit(scale)),
+        Method::Default => s.in_scatter(),
         Method::Atan => airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s),
         Method::March(rule, steps) => s.ray_march(rule, steps),
     }
@@ -152,6 +156,7 @@ fn group<T: Real>(c: &mut Criterion, json: &mut String, name: &str, v: impl Fn([
             ("paper_4".into(), Method::Paper(4, 1.0)),
             ("paper_6".into(), Method::Paper(6, 1.0)),
             ("atan_form".into(), Method::Atan),
+            ("default".into(), Method::Default),
         ];
         for (terms, ours) in [(4, Method::Ours(4)), (6, Method::Ours(6))] {
             let target = accuracy(ours, &sc, &reference).0;
