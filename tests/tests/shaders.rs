@@ -129,6 +129,72 @@ fn include_libraries_compile_in_a_test_shader() {
     }
 }
 
+/// A user's HLSL file that includes the library twice (its guard keeps the second out) next to
+/// another naga-emitted file — whose own helpers (`naga_mod`, `Constructarray…`) the library
+/// would redefine if its names were not all prefixed — compiles with glslang.
+#[test]
+fn hlsl_library_shares_a_file_with_another_naga_output() {
+    if !tool("glslangValidator") {
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("airlight-hlsl-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).unwrap();
+    // another naga output: a WGSL function with an integer remainder and an array constructor
+    let other = "fn other_hash(x: u32, y: u32) -> f32 {\n    let a = array<f32, 4>(1.0, 2.0, 3.0, 4.0);\n    return a[x % 4u] + f32(y % 3u);\n}\n@compute @workgroup_size(1)\nfn other_main() { _ = other_hash(1u, 2u); }\n";
+    let module = naga::front::wgsl::parse_str(other).unwrap();
+    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default()).validate(&module).unwrap();
+    let options = naga::back::hlsl::Options { shader_model: naga::back::hlsl::ShaderModel::V5_1, ..Default::default() };
+    let pipeline = naga::back::hlsl::PipelineOptions { entry_point: Some((naga::ShaderStage::Compute, "other_main".to_string())) };
+    let mut other_hlsl = String::new();
+    naga::back::hlsl::Writer::new(&mut other_hlsl, &options, &pipeline).write(&module, &info, None).unwrap();
+    assert!(other_hlsl.contains("naga_mod") && other_hlsl.contains("Constructarray4_float_"), "the other file no longer has the helpers this test is about:\n{other_hlsl}");
+    // keep its functions, not its entry point
+    let other_hlsl = other_hlsl.split("[numthreads").next().unwrap().to_string();
+    std::fs::write(tmp.join("other.hlsl"), &other_hlsl).unwrap();
+    let dir = default_out_dir();
+    for n in TERM_COUNTS {
+        std::fs::copy(dir.join(format!("hlsl/airlight_lib_{n}.hlsl")), tmp.join("airlight.hlsl")).unwrap();
+        let user = format!(
+            "#include \"airlight.hlsl\"\n#include \"other.hlsl\"\n#include \"airlight.hlsl\"\nRWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u);\n    v[0] = airlight_in_scatter(s).in_scatter + other_hash(3u, 5u);\n}}\n",
+        );
+        std::fs::write(tmp.join("user.hlsl"), user).unwrap();
+        run(Command::new("glslangValidator").args(["-V", "-D", "-e", "test_main", "-S", "comp", "-o"]).arg(tmp.join("u.spv")).arg(tmp.join("user.hlsl")));
+    }
+}
+
+/// Every global name of the HLSL and MSL files is the library's: `airlight_…`, `AIRLIGHT_…`,
+/// `Airlight…` structs and HLSL's `ConstructAirlight…` constructors (naga's own helpers carry
+/// the prefix too).
+#[test]
+fn hlsl_and_msl_globals_are_prefixed() {
+    let dir = default_out_dir();
+    let mut bad = Vec::new();
+    for (folder, ext) in [("hlsl", "hlsl"), ("msl", "metal")] {
+        for entry in std::fs::read_dir(dir.join(folder)).unwrap().flatten() {
+            let path = entry.path();
+            if path.extension().and_then(|e| e.to_str()) != Some(ext) {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            for line in text.lines().filter(|l| l.starts_with(|c: char| c.is_ascii_alphabetic())) {
+                if line.starts_with("using ") {
+                    continue;
+                }
+                // the declared name: before `(` for a function, else the last word before `=`, `[`, `{` or `;`
+                let line = line.replace("::", "__");
+                let head = line.split(['(', '=', '[', '{', ';', ':']).next().unwrap_or("");
+                let Some(name) = head.split_whitespace().last() else { continue };
+                let ok = ["airlight_", "AIRLIGHT_", "Airlight", "ConstructAirlight"].iter().any(|p| name.starts_with(p))
+                    || (line.starts_with("kernel void") || line.contains(" airlight_main"));
+                if !ok {
+                    bad.push(format!("{}: {line}", path.display()));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "unprefixed global names:\n{}", bad.join("\n"));
+}
+
 /// The emitted WGSL re-validates in naga, on its own (compute) and inside a user's module
 /// (library).
 #[test]
