@@ -74,8 +74,91 @@ enum Method {
     Atan,
     /// This kernel's default path, `Scene::in_scatter` (error-controlled panels).
     Default,
+    /// Sun et al. 2005's tabulated `F(u, v)`, an `n × n` table (isotropic only).
+    SunTable(usize),
     /// Ray marching.
     March(Steps, usize),
+}
+
+/// Sun, Ramamoorthi, Narasimhan & Nayar 2005 ("A practical analytic single scattering model
+/// for real time rendering"), the table method the issue names as the speed floor: for an
+/// isotropic point light and phase function, with `t − x_h = h tan θ` and `ξ = θ/2 + π/4`,
+/// `L_m = σs I/(2π h) e^{−σt (x_h − t0)} [F(σt h, ξ1) − F(σt h, ξ0)]`,
+/// `F(u, v) = ∫_0^v e^{−u tan ξ} dξ`, baked once as an `n × n` table over `u ∈ [0, SUN_U_MAX]`,
+/// `v ∈ [0, π/2]` and read by bilinear interpolation. A peer in this benchmark, not the
+/// product: it knows no anisotropy.
+struct SunTable {
+    n: usize,
+    data: Vec<f64>,
+    bake_ms: f64,
+}
+
+/// The table's `u = σt h` range (the street-lamp rays reach 1.3).
+const SUN_U_MAX: f64 = 2.0;
+/// Table sizes baked.
+const SUN_SIZES: [usize; 8] = [16, 32, 64, 128, 256, 512, 1024, 2048];
+
+impl SunTable {
+    fn bake(n: usize) -> SunTable {
+        let t = std::time::Instant::now();
+        let rule = airlight::expansion::gauss_table::rule(16).expect("16-point rule");
+        let mut data = vec![0.0; n * n];
+        let dv = std::f64::consts::FRAC_PI_2 / (n - 1) as f64;
+        for i in 0..n {
+            let u = SUN_U_MAX * i as f64 / (n - 1) as f64;
+            let mut acc = 0.0;
+            for j in 1..n {
+                let (a, b) = (dv * (j - 1) as f64, dv * j as f64);
+                let (m, r) = ((a + b) / 2.0, (b - a) / 2.0);
+                let mut cell = 0.0;
+                for &(x, w) in rule {
+                    for xi in [m - r * x, m + r * x] {
+                        cell += w * (-u * xi.tan()).exp();
+                    }
+                }
+                acc += cell * r;
+                data[i * n + j] = acc;
+            }
+        }
+        SunTable { n, data, bake_ms: t.elapsed().as_secs_f64() * 1e3 }
+    }
+
+    /// `F(u, v)`, bilinear; `u` clamped to the table.
+    #[inline]
+    fn lookup<T: Real>(&self, u: T, v: T) -> T {
+        let last = T::from(self.n - 1).unwrap();
+        let x = (u * (last / T::lit(SUN_U_MAX))).max(T::zero()).min(last);
+        let y = (v * (last / T::FRAC_PI_2())).max(T::zero()).min(last);
+        let (i, j) = (x.floor().to_usize().unwrap().min(self.n - 2), y.floor().to_usize().unwrap().min(self.n - 2));
+        let (fx, fy) = (x - T::from(i).unwrap(), y - T::from(j).unwrap());
+        let at = |a: usize, b: usize| T::lit(self.data[a * self.n + b]);
+        let low = at(i, j) + (at(i, j + 1) - at(i, j)) * fy;
+        let high = at(i + 1, j) + (at(i + 1, j + 1) - at(i + 1, j)) * fy;
+        low + (high - low) * fx
+    }
+}
+
+fn sun_tables() -> &'static [SunTable] {
+    static TABLES: std::sync::OnceLock<Vec<SunTable>> = std::sync::OnceLock::new();
+    TABLES.get_or_init(|| SUN_SIZES.iter().map(|&n| SunTable::bake(n)).collect())
+}
+
+/// `L_m` of an isotropic scene through Sun et al.'s table.
+#[inline]
+fn sun_table<T: Real>(s: &S<T>, table: &SunTable) -> T {
+    let (ray, light, medium) = (s.ray(), s.light(), s.medium());
+    let (o, p) = (T::vec3_to_array(ray.origin), T::vec3_to_array(light.position));
+    let dir = T::vec3_to_array(ray.dir);
+    let len = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();
+    let d = [dir[0] / len, dir[1] / len, dir[2] / len];
+    let q = [p[0] - o[0], p[1] - o[1], p[2] - o[2]];
+    let x_h = q[0] * d[0] + q[1] * d[1] + q[2] * d[2];
+    let w = [q[0] - x_h * d[0], q[1] - x_h * d[1], q[2] - x_h * d[2]];
+    let h = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    let xi = |t: T| if t.is_finite() { ((t - x_h) / h).atan() * T::lit(0.5) + T::FRAC_PI_4() } else { T::FRAC_PI_2() };
+    let u = medium.sigma_t * h;
+    let a0 = medium.sigma_s * light.intensity / (T::lit(2.0) * T::PI() * h) * (-medium.sigma_t * (x_h - ray.t_min)).exp();
+    a0 * (table.lookup(u, xi(ray.t_max)) - table.lookup(u, xi(ray.t_min)))
 }
 
 /// The paper's algorithm, configurations in the order tried for "equal accuracy".
@@ -110,6 +193,7 @@ fn eval<T: Real>(m: Method, s: &S<T>) -> T {
         Method::Taylor6 => s.in_scatter_with::<6>(Expansion::Taylor),
         Method::Paper(n, scale) => paper(s, n, paper_eps::<T>() * T::lit(scale)),
         Method::Default => s.in_scatter(),
+        Method::SunTable(n) => sun_table(s, sun_tables().iter().find(|t| t.n == n).expect("a baked size")),
         Method::Atan => airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s),
         Method::March(rule, steps) => s.ray_march(rule, steps),
     }
@@ -133,6 +217,7 @@ fn record(json: &mut String, group: &str, name: &str, m: Method, acc: (f64, f64)
         Method::March(_, n) => n.to_string(),
         Method::Paper(n, scale) => format!("\"{n} terms, tolerance x{scale}\""),
         Method::Ours(n) => format!("\"{n} terms\""),
+        Method::SunTable(n) => format!("\"{n}x{n} table, {} KiB in f32\"", n * n * 4 / 1024),
         _ => "null".into(),
     };
     let _ = writeln!(json, "{{\"group\": \"{group}\", \"bench\": \"{name}\", \"max_err\": {:e}, \"median_err\": {:e}, \"config\": {steps}}},", acc.0, acc.1);
@@ -170,6 +255,18 @@ fn group<T: Real>(c: &mut Criterion, json: &mut String, name: &str, v: impl Fn([
             match [4, 6, 8, 12].iter().map(|&n| Method::Ours(n)).find(|&m| accuracy(m, &sc, &reference).0 <= target) {
                 Some(m) => methods.push((format!("ours_{tag}"), m)),
                 None => eprintln!("{gname}: ours does not reach {target:e} with 12 terms in this precision"),
+            }
+        }
+        if !aniso {
+            for table in sun_tables() {
+                let acc = accuracy(Method::SunTable(table.n), &sc, &reference);
+                eprintln!("{gname}: Sun et al. table {0}x{0} ({1} KiB in f32, baked in {2:.1} ms): largest error {3:.1e}, median {4:.1e}", table.n, table.n * table.n * 4 / 1024, table.bake_ms, acc.0, acc.1);
+            }
+            for (target, tag) in [(1e-3, "1e-3"), (1e-5, "1e-5")] {
+                match sun_tables().iter().find(|t| accuracy(Method::SunTable(t.n), &sc, &reference).0 <= target) {
+                    Some(t) => methods.push((format!("sun_table_{tag}"), Method::SunTable(t.n))),
+                    None => eprintln!("{gname}: no Sun et al. table up to {0}x{0} reaches {target:e}", SUN_SIZES[SUN_SIZES.len() - 1]),
+                }
             }
         }
         for (rule, label) in [(Steps::Uniform, "march_uniform"), (Steps::Equiangular, "march_equiangular")] {
