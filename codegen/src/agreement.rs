@@ -78,7 +78,7 @@ pub struct Expected {
     pub value: f32,
     /// The status the shader must report.
     pub status: u32,
-    /// The f64 kernel's value at the same term count.
+    /// The f64 kernel's value by the same method (nodes per panel and control).
     pub f64_value: f64,
     /// The f32 noise plus the expansion error estimate (module docs), absolute.
     pub noise: f64,
@@ -145,7 +145,7 @@ fn perturbed(rec: &SceneRecord<f32>, k: usize) -> SceneRecord<f32> {
     q
 }
 
-/// The CPU's expectation for `rec` at `terms` (4 or 6) expansion terms.
+/// The CPU's expectation for `rec` from the shader with `terms` (4 or 6) nodes per panel.
 pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
     let Some(v) = in_scatter(rec, terms) else {
         return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };

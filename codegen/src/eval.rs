@@ -30,8 +30,8 @@ pub struct EvalOptions {
     /// Kernel precision.
     pub precision: Precision,
     /// `None`: the kernel's default, error-controlled path ([`Scene::in_scatter`]); `Some(4 | 6)`:
-    /// one expansion of that many terms per piece (the shaders' fixed-cost method). The GPU
-    /// backend runs the shader with 4 terms unless 6 is asked for.
+    /// one expansion of that many terms per piece (the paper's fixed-cost method). The GPU
+    /// backend runs the shader with 4 Gauss–Legendre nodes per panel unless 6 is asked for.
     pub terms: Option<usize>,
     /// Expansion kind.
     pub expansion: Expansion,

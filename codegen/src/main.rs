@@ -32,7 +32,7 @@ COMMANDS:
                                | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
             t_max null means +infinity; unknown fields are ignored.
 
-    emit    Write the shaders (compute entry point and include library, per target and term
+    emit    Write the shaders (compute entry point and include library, per target and node
             count) through naga into DIR (default: the workspace's shaders-out/). Everything
             is rendered and validated before anything is written.
 
@@ -47,8 +47,8 @@ COMMANDS:
     render  Render the pictures of issue 5 to PNG: a lighthouse with a two-lobed beam in thick
             brume, a foggy road with headlights and a streetlamp, a stage under three coloured
             spotlights, a park bench in Rayleigh mist. Writes DIR/<scene>_<backend>.png per
-            backend — cpu (the f64 kernel, 6 Chebyshev terms), gpu (the committed WGSL compute
-            shader through wgpu, f32, 4 terms), reference (brute-force adaptive quadrature of
+            backend — cpu (the f64 kernel's default path), gpu (the committed WGSL compute
+            shader through wgpu, f32, 4 nodes per panel), reference (brute-force adaptive quadrature of
             the integral, no closed forms) — and, with the reference, error heat maps
             DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
             relative error against the reference, log10 scale from 1e-7 (black) through blue,
@@ -69,10 +69,11 @@ OPTIONS (eval):
                                      wgpu on this machine's GPU (f32; --precision and
                                      --expansion do not apply)
     --precision f32|f64              kernel precision (default f64)
-    --terms 4|6                      the fixed-cost method with this many expansion terms, as
-                                     the shaders compute it (default: neither — the kernel's
+    --terms 4|6                      CPU: the paper's fixed-cost method with this many
+                                     expansion terms (default: neither — the kernel's
                                      error-controlled panels, within 1e-10 in f64 and 1e-4 in
-                                     f32 of max(|exact|, tau·scale); the GPU runs 4 terms)
+                                     f32 of max(|exact|, tau·scale)); GPU: the shader with this
+                                     many nodes per panel (default 4)
     --expansion chebyshev|taylor     polynomial expansion of --terms (default chebyshev)
 ";
 

@@ -4,7 +4,7 @@
 //!
 //! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
 //! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_4.wgsl`, f32, 4
-//!   terms) through wgpu, every (pixel, light) segment one record of [`crate::layout`];
+//!   nodes per panel) through wgpu, every (pixel, light) segment one record of [`crate::layout`];
 //! * [`render_reference`]: brute-force quadrature of the contract integral (DESIGN §1) that
 //!   uses none of the kernel's closed forms (see [`reference_in_scatter`]);
 //! * [`relative_errors`] + [`heat_map`]: per-pixel relative error against the reference in a

@@ -36,7 +36,7 @@ pub struct Physics<'a, T, D, P> {
 struct HalfIntegrand<'a, T, D, P> {
     sigma: T,
     /// Pass `1 ∓ μ` exactly to the phase function ([`PhaseFunction::eval_sides`]); the fixed
-    /// method forms them from `μ`, as the shaders do.
+    /// method forms them from `μ`, as the paper's method does.
     exact_sides: bool,
     d_el: T,
     d_c: T,
@@ -67,7 +67,7 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
 /// How `F` is integrated on each half.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Method<T> {
-    /// One `N`-term expansion per piece between kinks (the shaders' fixed-cost method).
+    /// One `N`-term expansion per piece between kinks (the paper's fixed-cost method).
     Fixed(Expansion),
     /// Error-controlled panels ([`crate::panels`]) with `N` Gauss–Legendre nodes each.
     Panels(Control<T>),

@@ -22,7 +22,7 @@
 //!    kinks.
 //! 3. The default, error-controlled path: [`panels`] — panels refined until `F/(1+v²)` is
 //!    resolved, the exponential integrated exactly by its Legendre moments (docs/DESIGN.md §4.1).
-//!    The fixed-cost path the shaders compute instead: [`expansion`] (phase × light as one
+//!    The paper's fixed-cost path instead: [`expansion`] (phase × light as one
 //!    polynomial per piece, Chebyshev or Taylor by jets) and [`integrals`] (closed forms of
 //!    both reformulations, eq. 8–19, as moments).
 //! 4. [`special`]: the exponential integrals (complex `E1` with fixed-bound region selection,
