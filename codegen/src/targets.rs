@@ -44,7 +44,7 @@ fn airlight_library_entry() -> @location(0) vec4<f32> {
 }
 ";
 
-/// Supported expansion term counts.
+/// The emitted node counts per panel.
 pub const TERM_COUNTS: [usize; 2] = [4, 6];
 
 /// An output language.
@@ -97,7 +97,7 @@ impl Default for EmitOptions {
 /// Why emission failed.
 #[derive(Debug)]
 pub enum EmitError {
-    /// Bad options (unknown target, unsupported term count).
+    /// Bad options (unknown target, unsupported node count).
     Usage(String),
     /// The shader source did not parse or validate, or a back end failed.
     Shader(String),
@@ -139,15 +139,14 @@ impl Constants {
     pub fn from_kernel(terms: usize) -> Constants {
         use crate::layout as l;
         use airlight::expansion::gauss_table;
-        type F32 = f32;
         let f = |x: f64| format!("{:?}", x as f32);
         let list = |xs: Vec<String>| xs.join(", ");
         let rule = gauss_table::rule(terms).expect("a tabulated Gauss–Legendre rule");
         let transform = gauss_table::transform(terms).expect("a tabulated Legendre transform");
         let control = airlight::SHADER_CONTROL;
         let panel_list = 1 + (control.max_panels - 1) / 2;
-        let (re, im) = <F32 as Real>::E1_SERIES_ELLIPSE;
-        let depth = <F32 as Real>::E1_CF_DEPTH;
+        let (re, im) = <f32 as Real>::E1_SERIES_ELLIPSE;
+        let depth = <f32 as Real>::E1_CF_DEPTH;
         let chain = |square: bool| {
             let mut body = String::new();
             for &(bound, d) in depth {
@@ -160,7 +159,7 @@ impl Constants {
             }
             body
         };
-        let short: Vec<String> = <F32 as Real>::GAUSS_NODES
+        let short: Vec<String> = <f32 as Real>::GAUSS_NODES
             .iter()
             .flat_map(|&(x, w)| [(-x, w), (x, w)])
             .map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w)))
@@ -177,11 +176,11 @@ impl Constants {
             ("@ZEROS_LIST@", list(vec!["0.0".to_string(); panel_list])),
             ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
             ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
-            ("@EXACT_RANGE@", f(<F32 as Real>::EXACT_RANGE)),
+            ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
             ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
             ("@TRANSFORM_LEN@", transform.len().to_string()),
             ("@LEGENDRE_TRANSFORM@", list(transform.iter().map(|&x| f(x)).collect())),
-            ("@E1_SERIES_TERMS@", <F32 as Real>::E1_SERIES_TERMS.to_string()),
+            ("@E1_SERIES_TERMS@", <f32 as Real>::E1_SERIES_TERMS.to_string()),
             ("@E1_INV_RE@", f(1.0 / re)),
             ("@E1_INV_IM@", f(1.0 / im)),
             ("@E1_CF_MAX_DEPTH@", depth.iter().map(|d| d.1).max().unwrap_or(0).to_string()),
@@ -311,9 +310,8 @@ fn hlsl_text(module: &naga::Module, info: &ModuleInfo, entry: &str) -> Result<St
 }
 
 /// Whether `name` is one of naga's own helper names (not the source's): `naga_*` and `Naga*`
-/// helpers, MSL's `_msl*` buffer-size struct, the
-/// HLSL array constructors `Constructarray*` and their return typedefs `ret_*`, MSL's
-/// anonymous `type_N` structs.
+/// helpers, the HLSL array constructors `Constructarray*` and their return typedefs `ret_*`,
+/// MSL's anonymous `type_N` structs and its `_msl*` buffer-size struct.
 fn is_naga_name(name: &str) -> bool {
     name.starts_with("naga_")
         || name.starts_with("Naga")
@@ -418,11 +416,11 @@ fn spirv_of(module: &naga::Module, info: &ModuleInfo) -> Result<Vec<u32>, EmitEr
 
 fn check_options(opts: &EmitOptions) -> Result<(), EmitError> {
     if opts.terms.is_empty() || opts.targets.is_empty() {
-        return Err(EmitError::Usage("nothing to emit: give at least one term count and one target".into()));
+        return Err(EmitError::Usage("nothing to emit: give at least one node count and one target".into()));
     }
     for &t in &opts.terms {
         if !TERM_COUNTS.contains(&t) {
-            return Err(EmitError::Usage(format!("unsupported term count {t} (expected 4 or 6)")));
+            return Err(EmitError::Usage(format!("unsupported node count {t} (expected 4 or 6)")));
         }
     }
     Ok(())
@@ -441,9 +439,9 @@ pub fn render_with(opts: &EmitOptions, constants: impl Fn(usize) -> Constants) -
     for &n in &opts.terms {
         let filled = constants(n);
         let (cm, ci) = validate(&filled.source(true))?;
-        let lib_src = filled.source(false) + LIBRARY_STUB;
-        let (lm, li) = validate(&lib_src)?;
-        let (lone, lone_info) = validate(&filled.source(false))?;
+        let library = filled.source(false);
+        let (lm, li) = validate(&(library.clone() + LIBRARY_STUB))?;
+        let (lone, lone_info) = validate(&library)?;
         for &t in &opts.targets {
             match t {
                 Target::Wgsl => {
@@ -459,7 +457,7 @@ pub fn render_with(opts: &EmitOptions, constants: impl Fn(usize) -> Constants) -
                     let l = glsl_text(&lm, &li, glsl::Version::Desktop(450), naga::ShaderStage::Compute, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
                     let l = glsl_library(&l)?;
                     files.insert(format!("glsl/airlight_lib_{n}.glsl"), (header("//", n, "include library (GLSL 450)") + &guarded(&l, n)).into_bytes());
-                    let (em, ei) = validate(&(filled.source(false) + LIBRARY_STUB_ES))?;
+                    let (em, ei) = validate(&(library.clone() + LIBRARY_STUB_ES))?;
                     let e = glsl_text(&em, &ei, glsl::Version::Embedded { version: 300, is_webgl: true }, naga::ShaderStage::Fragment, LIBRARY_ENTRY, glsl::WriterFlags::INCLUDE_UNUSED_ITEMS)?;
                     let e = glsl_library(&e)?;
                     files.insert(format!("glsl/airlight_lib_{n}_es300.glsl"), (header("//", n, "include library (GLSL ES 3.00 / WebGL2)") + &guarded(&e, n)).into_bytes());

@@ -147,6 +147,8 @@ fn sun_tables() -> &'static [SunTable] {
 #[inline]
 fn sun_table<T: Real>(s: &S<T>, table: &SunTable) -> T {
     let (ray, light, medium) = (s.ray(), s.light(), s.medium());
+    // the plain reduction written out rather than `Canonical::new`, which also normalises a
+    // light axis and forms `d_c`, neither of which the table needs: the peer is timed lean
     let (o, p) = (T::vec3_to_array(ray.origin), T::vec3_to_array(light.position));
     let dir = T::vec3_to_array(ray.dir);
     let len = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();

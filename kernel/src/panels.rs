@@ -471,14 +471,13 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         let top = k0 + steps;
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
         let mut odd = T::from(2 * top + 1).unwrap(); // 2k + 1
-        let two_t = T::lit(2.0);
         // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k
         for k in (1..=top).rev() {
             if k < n {
                 out[k] = cur;
             }
             let below = above + odd * inv * cur;
-            odd = odd - two_t;
+            odd = odd - two;
             above = cur;
             cur = below;
             if cur > T::lit(1e20) {

@@ -15,6 +15,42 @@ pub fn reference_lines(name: &str) -> Vec<serde_json::Value> {
     text.lines().filter(|l| !l.trim().is_empty()).map(|l| serde_json::from_str(l).unwrap()).collect()
 }
 
+/// One scene of the hard classes (`tests/reference/classes.jsonl`, made by
+/// `tests/reference/gen_classes.py`), with its mpmath value and the integrand's scale.
+pub struct ClassCase {
+    /// The scene class (`hg_0.99`, `near_light`, …).
+    pub category: String,
+    /// The scene; its inputs are exact in binary32.
+    pub rec: airlight_codegen::scene_json::SceneRecord<f64>,
+    /// The integral by mpmath quadrature.
+    pub exact: f64,
+    /// The integral with `F = D·P` replaced by its maximum on the segment.
+    pub scale: f64,
+    /// Judged in f32: the value is at least 1e-30, far inside f32's normal range.
+    pub f32_ok: bool,
+}
+
+impl ClassCase {
+    /// `|x − exact| / max(|exact|, τ·scale)`, the accuracy measure of docs/DESIGN.md §8.
+    pub fn err(&self, x: f64, tau: f64) -> f64 {
+        (x - self.exact).abs() / self.exact.abs().max(tau * self.scale)
+    }
+}
+
+/// Every scene of `tests/reference/classes.jsonl`.
+pub fn class_cases() -> Vec<ClassCase> {
+    let lines = reference_lines("classes.jsonl");
+    assert!(lines.len() >= 300, "classes.jsonl too small: {}", lines.len());
+    lines
+        .iter()
+        .map(|v| {
+            let rec = airlight_codegen::scene_json::parse_value::<f64>(v).unwrap_or_else(|e| panic!("record invalid: {e}: {v}"));
+            let exact = v["in_scatter"].as_f64().unwrap();
+            ClassCase { category: v["category"].as_str().unwrap().to_string(), rec, exact, scale: v["scale"].as_f64().unwrap(), f32_ok: exact >= 1e-30 }
+        })
+        .collect()
+}
+
 /// `|a − b| / |b|` (0 when both are 0; ∞ when only `b` is 0).
 pub fn rel_err(a: f64, b: f64) -> f64 {
     if a == b {

@@ -20,41 +20,8 @@
 
 use airlight::march::GaussAngle;
 use airlight::{default_control, Expansion, Scene};
-use airlight_codegen::scene_json::{parse_value, SceneRecord};
-use airlight_tests::reference_lines;
+use airlight_tests::{class_cases as cases, ClassCase as Case};
 use std::collections::BTreeMap;
-
-struct Case {
-    category: String,
-    rec: SceneRecord<f64>,
-    exact: f64,
-    scale: f64,
-    f32_ok: bool,
-}
-
-fn cases() -> Vec<Case> {
-    let lines = reference_lines("classes.jsonl");
-    assert!(lines.len() >= 300, "classes.jsonl too small: {}", lines.len());
-    lines
-        .iter()
-        .map(|v| {
-            let rec = parse_value::<f64>(v).unwrap_or_else(|e| panic!("record invalid: {e}: {v}"));
-            let exact = v["in_scatter"].as_f64().unwrap();
-            Case {
-                category: v["category"].as_str().unwrap().to_string(),
-                exact,
-                scale: v["scale"].as_f64().unwrap(),
-                rec,
-                // judged in f32 where the value is far inside f32's normal range
-                f32_ok: exact >= 1e-30,
-            }
-        })
-        .collect()
-}
-
-fn err(x: f64, c: &Case, tau: f64) -> f64 {
-    (x - c.exact).abs() / c.exact.abs().max(tau * c.scale)
-}
 
 fn scene64(c: &Case) -> Scene<f64, airlight::light::AnyDistribution<f64>, airlight::phase::AnyPhase<f64>> {
     Scene::new(c.rec.ray, c.rec.light, c.rec.medium, c.rec.phase).unwrap()
@@ -72,7 +39,7 @@ fn hard_classes_against_quadrature() {
         let default = s.in_scatter();
         // a value below f64's normal range (the deepest thick scenes, e^{−σt r} < 1e-308) has
         // no f64 to be compared with: it must come out 0 or subnormal, not more
-        let e64 = if c.exact < f64::MIN_POSITIVE { if default < f64::MIN_POSITIVE { 0.0 } else { f64::INFINITY } } else { err(default, c, 1e-10) };
+        let e64 = if c.exact < f64::MIN_POSITIVE { if default < f64::MIN_POSITIVE { 0.0 } else { f64::INFINITY } } else { c.err(default, 1e-10) };
         f64_worst = f64_worst.max(e64);
         if !(e64 <= 1e-10) {
             failures.push(format!("f64 {}: err {e64:.2e} (got {default}, exact {})", c.category, c.exact));
@@ -81,15 +48,15 @@ fn hard_classes_against_quadrature() {
         if c.f32_ok {
             let r32 = c.rec.cast::<f32>();
             let s32 = Scene::new(r32.ray, r32.light, r32.medium, r32.phase).unwrap();
-            e32 = err(s32.in_scatter() as f64, c, 1e-4);
+            e32 = c.err(s32.in_scatter() as f64, 1e-4);
             f32_worst = f32_worst.max(e32);
             if !(e32 <= 1e-4) {
                 failures.push(format!("f32 {}: err {e32:.2e} (got {}, exact {})", c.category, s32.in_scatter(), c.exact));
             }
         }
-        let fixed4 = err(s.in_scatter_with::<4>(Expansion::Chebyshev), c, 1e-10);
-        let fixed6 = err(s.in_scatter_with::<6>(Expansion::Chebyshev), c, 1e-10);
-        let peer = |n: usize| err(s.gauss_angle(GaussAngle { nodes: n, split: true, cut: Some(40.0) }).0, c, 1e-10);
+        let fixed4 = c.err(s.in_scatter_with::<4>(Expansion::Chebyshev), 1e-10);
+        let fixed6 = c.err(s.in_scatter_with::<6>(Expansion::Chebyshev), 1e-10);
+        let peer = |n: usize| c.err(s.gauss_angle(GaussAngle { nodes: n, split: true, cut: Some(40.0) }).0, 1e-10);
         let panels = s.in_scatter_controlled(default_control()).1;
         table
             .entry(c.category.clone())
@@ -133,7 +100,7 @@ fn class_error_with<T: airlight::Real, const N: usize>(cases: &[&Case], tau: f64
         .map(|c| {
             let r = c.rec.cast::<T>();
             let s = Scene::new(r.ray, r.light, r.medium, r.phase).unwrap();
-            err(s.in_scatter_panels::<N>(control).to_f64_exact(), c, tau)
+            c.err(s.in_scatter_panels::<N>(control).to_f64_exact(), tau)
         })
         .fold(0.0, f64::max)
 }
@@ -142,7 +109,7 @@ fn class_error_with<T: airlight::Real, const N: usize>(cases: &[&Case], tau: f64
 /// counts, `err(N') ≤ max(err(N), target)` (f64: N = 8, 10, 12, 16 — 4 and 6 nodes cannot
 /// reach 1e-10 on the peaked classes within the budget, both leaving ≥ 2e-3; f32: N = 6, 8,
 /// 10, 12). (The fixed-term path is not held to this: its monomial recurrence is unstable,
-/// tests/moments.rs, and it stays as the shaders compute it.)
+/// tests/moments.rs, and it stays as the paper published it.)
 #[test]
 fn error_never_grows_with_the_node_count() {
     let cases = cases();

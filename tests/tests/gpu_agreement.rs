@@ -25,7 +25,7 @@ use airlight_codegen::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, ST
 use airlight_codegen::scene_json::{parse_value, SceneRecord};
 use airlight_codegen::targets::default_out_dir;
 use airlight_tests::scenes::{random, Aniso, Plain};
-use airlight_tests::{reference_lines, rel_err, repo_root, Rng};
+use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
 
 const CASES: usize = 10_000;
@@ -249,30 +249,27 @@ fn every_artifact_agrees_with_the_cpu_kernel() {
 #[test]
 fn shaders_meet_the_class_targets() {
     let Some(gpu) = gpu() else { return };
-    let lines = reference_lines("classes.jsonl");
-    let cases: Vec<(String, SceneRecord<f32>, f64, f64)> = lines
+    let cases: Vec<ClassCase> = class_cases().into_iter().filter(|c| c.f32_ok).collect();
+    let records: Vec<u8> = cases
         .iter()
-        .filter(|v| v["in_scatter"].as_f64().unwrap() >= 1e-30)
-        .map(|v| {
-            let rec = parse_value::<f64>(v).unwrap().cast::<f32>();
-            (v["category"].as_str().unwrap().to_string(), rec, v["in_scatter"].as_f64().unwrap(), v["scale"].as_f64().unwrap())
+        .flat_map(|c| {
+            let r = c.rec.cast::<f32>();
+            pack(&r.ray, &r.light, &r.medium, &r.phase)
         })
         .collect();
-    assert!(cases.len() >= 300, "classes.jsonl too small: {}", cases.len());
-    let records: Vec<u8> = cases.iter().flat_map(|(_, r, _, _)| pack(&r.ray, &r.light, &r.medium, &r.phase)).collect();
     let dir = default_out_dir();
     let mut failures = Vec::new();
     for terms in [4usize, 6] {
         let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
         let out = gpu.run(Shader::Wgsl(&wgsl), &records, false).unwrap();
         let mut classes: std::collections::BTreeMap<&str, Vec<f64>> = std::collections::BTreeMap::new();
-        for (i, (class, _, exact, scale)) in cases.iter().enumerate() {
+        for (i, c) in cases.iter().enumerate() {
             let (got, _) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
-            let err = (got as f64 - exact).abs() / exact.abs().max(1e-4 * scale);
+            let err = c.err(got as f64, 1e-4);
             if !(err <= 1e-3) {
-                failures.push(format!("{terms} nodes, {class} #{i}: err {err:.2e} (gpu {got}, exact {exact})"));
+                failures.push(format!("{terms} nodes, {} #{i}: err {err:.2e} (gpu {got}, exact {})", c.category, c.exact));
             }
-            classes.entry(class).or_default().push(err);
+            classes.entry(&c.category).or_default().push(err);
         }
         println!("\nshader, {terms} nodes per panel: | class | n | max | median |");
         for (class, errs) in &mut classes {

@@ -89,6 +89,9 @@ fn glsl_and_hlsl_compute_shaders_compile() {
     }
 }
 
+/// The scene the HLSL test shaders build, with the library's constructor.
+const SCENE_HLSL: &str = "ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u)";
+
 const SCENE_GLSL: &str = "AirlightScene(vec3(0.0), 0.0, vec3(1.0, 0.0, 0.0), 25.0, vec3(5.0, 1.0, 0.0), 100.0, vec3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u)";
 
 fn paste(path: &Path, before: &str, after: &str) -> String {
@@ -122,7 +125,7 @@ fn include_libraries_compile_in_a_test_shader() {
         let hl = paste(
             &dir.join(format!("hlsl/airlight_lib_{n}.hlsl")),
             "",
-            "RWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {\n    AirlightScene s = ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u);\n    v[0] = airlight_in_scatter(s).in_scatter;\n}",
+            &format!("RWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = {SCENE_HLSL};\n    v[0] = airlight_in_scatter(s).in_scatter;\n}}"),
         );
         std::fs::write(tmp.join("t.hlsl"), hl).unwrap();
         run(Command::new("glslangValidator").args(["-V", "-D", "-e", "test_main", "-S", "comp", "-o"]).arg(tmp.join("h.spv")).arg(tmp.join("t.hlsl")));
@@ -155,7 +158,7 @@ fn hlsl_library_shares_a_file_with_another_naga_output() {
     for n in TERM_COUNTS {
         std::fs::copy(dir.join(format!("hlsl/airlight_lib_{n}.hlsl")), tmp.join("airlight.hlsl")).unwrap();
         let user = format!(
-            "#include \"airlight.hlsl\"\n#include \"other.hlsl\"\n#include \"airlight.hlsl\"\nRWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u);\n    v[0] = airlight_in_scatter(s).in_scatter + other_hash(3u, 5u);\n}}\n",
+            "#include \"airlight.hlsl\"\n#include \"other.hlsl\"\n#include \"airlight.hlsl\"\nRWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = {SCENE_HLSL};\n    v[0] = airlight_in_scatter(s).in_scatter + other_hash(3u, 5u);\n}}\n",
         );
         std::fs::write(tmp.join("user.hlsl"), user).unwrap();
         run(Command::new("glslangValidator").args(["-V", "-D", "-e", "test_main", "-S", "comp", "-o"]).arg(tmp.join("u.spv")).arg(tmp.join("user.hlsl")));
