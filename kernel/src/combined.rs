@@ -8,7 +8,7 @@
 
 use crate::expansion::{Expandable, Expansion};
 use crate::geometry::Canonical;
-use crate::integrals::{moments, ExpIntegral, Half};
+use crate::integrals::{moments, ExpIntegral, Half, SharedEnds};
 use crate::light::LightDistribution;
 use crate::panels::{integrate_piece, Control, Running};
 use crate::phase::PhaseFunction;
@@ -44,9 +44,10 @@ struct HalfIntegrand<'a, T, D, P> {
     phase: &'a P,
 }
 
-impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for HalfIntegrand<'_, T, D, P> {
+impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> HalfIntegrand<'_, T, D, P> {
+    /// `(F(y), 1/(1 + y²))`.
     #[inline]
-    fn eval<S: Scalar<T>>(&self, y: S) -> S {
+    fn with_over<S: Scalar<T>>(&self, y: S) -> (S, S) {
         let y2 = y * y;
         let inv = y2.shift(T::one()).recip();
         let one_minus = S::cst(T::one()) - y2;
@@ -60,7 +61,18 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
         } else {
             self.phase.eval(mu)
         };
-        self.light.eval(c) * p
+        (self.light.eval(c) * p, inv)
+    }
+}
+
+impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for HalfIntegrand<'_, T, D, P> {
+    #[inline]
+    fn eval<S: Scalar<T>>(&self, y: S) -> S {
+        self.with_over(y).0
+    }
+    #[inline]
+    fn eval_over(&self, y: T) -> (T, T) {
+        self.with_over(y)
     }
 }
 
@@ -131,6 +143,7 @@ where
     }
     let sigma_t = phys.sigma_t;
     let big_h = sigma_t * h;
+    let ei = &SharedEnds::new(ei);
     let isotropic = phys.light.is_isotropic() && phys.phase.is_isotropic();
     let count = if isotropic { 1 } else { N };
 
@@ -146,7 +159,7 @@ where
         let da = (t_end - t0) / h;
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
-        let j = half_integral::<T, D, P, E, N>(&half, g, phys, -T::one(), method, ei, isotropic, count, &mut run);
+        let j = half_integral::<T, D, P, _, N>(&half, g, phys, -T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, j);
     }
     // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
@@ -161,7 +174,7 @@ where
         // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
         let half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
-        let j = half_integral::<T, D, P, E, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);
+        let j = half_integral::<T, D, P, _, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot

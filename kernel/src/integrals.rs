@@ -83,6 +83,39 @@ impl<T: Real> ExpIntegral<T> for PaperEq27<T> {
     }
 }
 
+/// An [`ExpIntegral`] that remembers its last value: the two halves share the foot `v = 1`,
+/// where the first half's far end and the second half's near end are the same `e^z E1(z)`,
+/// `z = H(1 − i)` (route 3), so a segment across the foot evaluates it once.
+#[derive(Debug)]
+pub struct SharedEnds<'a, T: Real, E> {
+    inner: &'a E,
+    last: core::cell::Cell<Option<(C<T>, C<T>)>>,
+}
+
+impl<'a, T: Real, E: ExpIntegral<T>> SharedEnds<'a, T, E> {
+    /// Wraps `inner`, remembering nothing yet.
+    pub fn new(inner: &'a E) -> Self {
+        SharedEnds { inner, last: core::cell::Cell::new(None) }
+    }
+}
+
+impl<T: Real, E: ExpIntegral<T>> ExpIntegral<T> for SharedEnds<'_, T, E> {
+    #[inline]
+    fn e1_scaled(&self, z: C<T>) -> C<T> {
+        if let Some((at, value)) = self.last.get() {
+            if at.re == z.re && at.im == z.im {
+                return value;
+            }
+        }
+        let value = self.inner.e1_scaled(z);
+        self.last.set(Some((z, value)));
+        value
+    }
+    fn stabilised(&self) -> bool {
+        self.inner.stabilised()
+    }
+}
+
 /// One half of the split segment, in the bounded variable `y` (see the module docs).
 #[derive(Clone, Copy, Debug)]
 pub struct Half<T: Real> {

@@ -261,8 +261,9 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     for (i, gi) in g.iter_mut().enumerate() {
         let v = vc + r * node::<T>(rule, i);
         let y = if half.second { v.recip() } else { v };
-        let fy = f.eval(y);
-        let over = (T::one() + v * v).recip();
+        // 1/(1 + v²) is 1/(1 + y²) before the foot, y²/(1 + y²) after it
+        let (fy, inv) = f.eval_over(y);
+        let over = if half.second { y * y * inv } else { inv };
         *gi = fy * over;
         f_max = f_max.max(fy.abs());
         over_max = over_max.max(over);
@@ -303,8 +304,7 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         let y = yc + r * xi;
         // H(1/y − 1/b) = H (b − y)/(y b), b − y = r(1 − ξ)
         let weight = (-big_h * (r * (T::one() - xi)) / (y * b)).exp();
-        let fy = f.eval(y);
-        let over = (T::one() + y * y).recip();
+        let (fy, over) = f.eval_over(y);
         *pi = fy * over * weight;
         f_max = f_max.max(fy.abs());
         over_max = over_max.max(over);
@@ -331,8 +331,8 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     let (mut f_max, mut g_avg) = (T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let y = yc + r * node::<T>(rule, i);
-        let fy = f.eval(y);
-        *gi = fy / (T::one() + y * y);
+        let (fy, over) = f.eval_over(y);
+        *gi = fy * over;
         f_max = f_max.max(fy.abs());
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
@@ -396,31 +396,48 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     Panel { value: w * sum, error: mass * tail_estimate(&c) + conversion, noise, mass_over: mass, f_max }
 }
 
-/// The monomial coefficients in `ξ` of `Σ c_k P_k(ξ)`. On a resolved panel `|c_k|` decays
-/// faster than the `< (1+√2)^k` growth of `P_k`'s monomial coefficients, so the rounding this
-/// adds stays of the order of `ε Σ|c_k|`.
+/// `2^k P_k(ξ) = Σ_j (−1)^j C(k, j) C(2k − 2j, k) ξ^{k−2j}` (DLMF 18.5.8 with `n = k`), row `k`
+/// holding the coefficient of `ξ^i` at `i`: integers below `2^31` for `k < MAX_N`, exact in
+/// f32 and f64 once scaled by `2^{−k}`.
+const LEGENDRE_MONOMIAL: [[i64; MAX_N]; MAX_N] = legendre_monomial_table();
+
+const fn binomial(n: i64, k: i64) -> i64 {
+    let mut out = 1;
+    let mut i = 0;
+    while i < k {
+        out = out * (n - i) / (i + 1);
+        i += 1;
+    }
+    out
+}
+
+const fn legendre_monomial_table() -> [[i64; MAX_N]; MAX_N] {
+    let mut table = [[0; MAX_N]; MAX_N];
+    let mut k = 0;
+    while k < MAX_N {
+        let mut j = 0;
+        while 2 * j <= k {
+            let sign = if j % 2 == 0 { 1 } else { -1 };
+            table[k][k - 2 * j] = sign * binomial(k as i64, j as i64) * binomial((2 * k - 2 * j) as i64, k as i64);
+            j += 1;
+        }
+        k += 1;
+    }
+    table
+}
+
+/// The monomial coefficients in `ξ` of `Σ c_k P_k(ξ)` ([`LEGENDRE_MONOMIAL`]). On a resolved
+/// panel `|c_k|` decays faster than the `< (1+√2)^k` growth of `P_k`'s monomial coefficients,
+/// so the rounding this adds stays of the order of `ε Σ|c_k|`.
 fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
     let mut hat = [T::zero(); N];
-    let mut p_prev = [T::zero(); N];
-    let mut p_cur = [T::zero(); N];
-    if N == 0 {
-        return hat;
-    }
-    p_cur[0] = T::one();
-    for k in 0..N {
-        for i in 0..=k {
-            hat[i] = hat[i] + c[k] * p_cur[i];
+    let mut scale = T::one();
+    for (k, ck) in c.iter().enumerate().take(MAX_N) {
+        let ck = *ck * scale;
+        for (i, h) in hat.iter_mut().enumerate().take(k + 1) {
+            *h = *h + ck * T::lit(LEGENDRE_MONOMIAL[k][i] as f64);
         }
-        if k + 1 < N {
-            let kf = T::from(k).unwrap();
-            let mut next = [T::zero(); N];
-            for i in 0..=k + 1 {
-                let shifted = if i > 0 { p_cur[i - 1] } else { T::zero() };
-                next[i] = ((kf + kf + T::one()) * shifted - kf * p_prev[i]) / (kf + T::one());
-            }
-            p_prev = p_cur;
-            p_cur = next;
-        }
+        scale = scale * T::lit(0.5);
     }
     hat
 }
@@ -507,6 +524,30 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         *o = *o * two;
         if k % 2 == 1 {
             *o = -*o;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tabulated coefficients against Bonnet's recurrence
+    /// `(k+1) P_{k+1} = (2k+1) ξ P_k − k P_{k−1}` (DLMF 18.9.1), a different route to `P_k`.
+    #[test]
+    fn legendre_monomials_match_bonnet() {
+        for &x in &[-0.97f64, -0.31, 0.0, 0.42, 0.999] {
+            let (mut prev, mut cur) = (0.0f64, 1.0f64);
+            for (k, row) in LEGENDRE_MONOMIAL.iter().enumerate() {
+                let from_table = row.iter().rev().fold(0.0, |acc, &a| acc * x + a as f64) / (1u64 << k) as f64;
+                // the sum's rounding: ε Σ|a_i x^i| / 2^k ≤ ε (1+√2)^k
+                let bound = 4.0 * f64::EPSILON * (1.0 + 2f64.sqrt()).powi(k as i32);
+                assert!((from_table - cur).abs() <= bound, "P_{k}({x}): table {from_table}, recurrence {cur}");
+                let kf = k as f64;
+                let next = ((2.0 * kf + 1.0) * x * cur - kf * prev) / (kf + 1.0);
+                prev = cur;
+                cur = next;
+            }
         }
     }
 }

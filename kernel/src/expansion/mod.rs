@@ -33,6 +33,11 @@ pub enum Expansion {
 pub trait Expandable<T: Real> {
     /// `F(y)`.
     fn eval<S: Scalar<T>>(&self, y: S) -> S;
+    /// `(F(y), 1/(1 + y²))`: the panels need both, and an integrand that forms `1/(1 + y²)`
+    /// on its way to `F` returns it instead of having it divided out again.
+    fn eval_over(&self, y: T) -> (T, T) {
+        (self.eval(y), (T::one() + y * y).recip())
+    }
 }
 
 impl Expansion {

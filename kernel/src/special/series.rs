@@ -5,18 +5,15 @@ use super::C;
 use crate::real::Real;
 
 /// `Ein(z)` by its power series, [`Real::E1_SERIES_TERMS`] terms (accurate inside the series
-/// ellipse of [`in_series_region`](super::in_series_region)).
+/// ellipse of [`in_series_region`](super::in_series_region)), by Horner's rule on the
+/// tabulated coefficients: complex multiply-adds, no divisions.
 #[inline]
 pub fn ein<T: Real>(z: C<T>) -> C<T> {
-    // term_k = (−1)^{k+1} z^k / k!, summed as term_k / k.
-    let mut term = -C::new(T::one(), T::zero());
     let mut sum = C::new(T::zero(), T::zero());
-    for k in 1..=T::E1_SERIES_TERMS {
-        let kf = T::from(k).unwrap();
-        term = -term * z / kf;
-        sum = sum + term / kf;
+    for &c in EIN_COEFFS[..T::E1_SERIES_TERMS.min(40)].iter().rev() {
+        sum = sum * z + T::lit(c);
     }
-    sum
+    sum * z
 }
 
 /// `(−1)^{k+1}/(k·k!)`, `k = 1 … 40`: the coefficients of `Ein(x) = Σ c_k x^k`, each from
@@ -53,17 +50,12 @@ pub fn ein_divided_difference<T: Real>(a: C<T>, b: C<T>) -> C<T> {
     let one = C::new(T::one(), T::zero());
     let mut h = one; // h_0
     let mut a_pow = one; // a^m
-    let mut fact = T::one(); // k!
-    let mut sign = T::one();
     let mut sum = C::new(T::zero(), T::zero());
-    for k in 1..=T::E1_SERIES_TERMS {
-        let kf = T::from(k).unwrap();
-        fact = fact * kf;
-        sum = sum + h * (sign / (kf * fact));
+    for &c in EIN_COEFFS[..T::E1_SERIES_TERMS.min(40)].iter() {
+        sum = sum + h * T::lit(c);
         // advance to h_k = b·h_{k−1} + a^k
         a_pow = a_pow * a;
         h = h * b + a_pow;
-        sign = -sign;
     }
     sum
 }
