@@ -66,6 +66,13 @@ const AIRLIGHT_E1_SERIES_TERMS: u32 = @E1_SERIES_TERMS@u;
 const AIRLIGHT_E1_INV_RE: f32 = @E1_INV_RE@;
 const AIRLIGHT_E1_INV_IM: f32 = @E1_INV_IM@;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = @E1_CF_MAX_DEPTH@u;
+// Fractions this deep divide plainly (continued_fraction.rs `PLAIN_FROM`).
+const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = @E1_CF_PLAIN_FROM@u;
+
+/// (−1)^{k+1}/(k·k!), k = 1 … AIRLIGHT_E1_SERIES_TERMS (series.rs `EIN_COEFFS`).
+fn airlight_ein_coefficients() -> array<f32, AIRLIGHT_E1_SERIES_TERMS> {
+    return array<f32, AIRLIGHT_E1_SERIES_TERMS>(@EIN_COEFFS@);
+}
 
 /// A scene: the kernel's Ray, PointLight, Medium and phase function in one struct.
 struct AirlightScene {
@@ -113,12 +120,12 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 fn airlight_cdiv(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     if (abs(b.x) >= abs(b.y)) {
         let r = b.y / b.x;
-        let den = b.x + b.y * r;
-        return vec2<f32>((a.x + a.y * r) / den, (a.y - a.x * r) / den);
+        let inv = 1.0 / (b.x + b.y * r);
+        return vec2<f32>((a.x + a.y * r) * inv, (a.y - a.x * r) * inv);
     }
     let r = b.x / b.y;
-    let den = b.x * r + b.y;
-    return vec2<f32>((a.x * r + a.y) / den, (a.y * r - a.x) / den);
+    let inv = 1.0 / (b.x * r + b.y);
+    return vec2<f32>((a.x * r + a.y) * inv, (a.y * r - a.x) * inv);
 }
 
 /// |z|, scaled by the larger part first: `length` may square its argument, and |z|² underflows
@@ -222,32 +229,26 @@ fn airlight_is_finite(x: f32) -> bool {
 // ---------------------------------------------------------------- exponential integrals
 // (kernel/src/special/: series.rs, continued_fraction.rs, e1.rs, en.rs)
 
-/// Ein(z) = Σ_{k≥1} (−1)^{k+1} z^k/(k·k!), AIRLIGHT_E1_SERIES_TERMS terms (A&S 5.1.11).
+/// Ein(z) = Σ_{k≥1} (−1)^{k+1} z^k/(k·k!), AIRLIGHT_E1_SERIES_TERMS terms (A&S 5.1.11), by Horner.
 fn airlight_ein(z: vec2<f32>) -> vec2<f32> {
-    var term = vec2<f32>(-1.0, 0.0);
+    let c = airlight_ein_coefficients();
     var sum = vec2<f32>(0.0, 0.0);
-    for (var k = 1u; k <= AIRLIGHT_E1_SERIES_TERMS; k++) {
-        let kf = f32(k);
-        term = -airlight_cmul(term, z) / kf;
-        sum += term / kf;
+    for (var k = 0u; k < AIRLIGHT_E1_SERIES_TERMS; k++) {
+        sum = airlight_cmul(sum, z) + vec2<f32>(c[AIRLIGHT_E1_SERIES_TERMS - 1u - k], 0.0);
     }
-    return sum;
+    return airlight_cmul(sum, z);
 }
 
 /// (Ein(b) − Ein(a))/(b − a) by divided differences, AIRLIGHT_E1_SERIES_TERMS terms.
 fn airlight_ein_divided_difference(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
+    let c = airlight_ein_coefficients();
     var h = vec2<f32>(1.0, 0.0);
     var a_pow = vec2<f32>(1.0, 0.0);
-    var fact = 1.0;
-    var sign = 1.0;
     var sum = vec2<f32>(0.0, 0.0);
-    for (var k = 1u; k <= AIRLIGHT_E1_SERIES_TERMS; k++) {
-        let kf = f32(k);
-        fact *= kf;
-        sum += h * (sign / (kf * fact));
+    for (var k = 0u; k < AIRLIGHT_E1_SERIES_TERMS; k++) {
+        sum += h * c[k];
         a_pow = airlight_cmul(a_pow, a);
         h = airlight_cmul(h, b) + a_pow;
-        sign = -sign;
     }
     return sum;
 }
@@ -288,7 +289,14 @@ fn airlight_e1_scaled_cf(z: vec2<f32>) -> vec2<f32> {
     for (var i = 0u; i < AIRLIGHT_E1_CF_MAX_DEPTH; i++) {
         if (i >= depth) { break; }
         let kf = f32(depth - i);
-        t = z + vec2<f32>(2.0 * kf - 1.0, 0.0) - airlight_cdiv(vec2<f32>(kf * kf, 0.0), t);
+        // deep fractions (small |z|, |t| ≤ |z| + 2·depth + 1): k² t̄/|t|², one division
+        var ratio = vec2<f32>(0.0, 0.0);
+        if (depth >= AIRLIGHT_E1_CF_PLAIN_FROM) {
+            ratio = vec2<f32>(t.x, -t.y) * (kf * kf / (t.x * t.x + t.y * t.y));
+        } else {
+            ratio = airlight_cdiv(vec2<f32>(kf * kf, 0.0), t);
+        }
+        t = z + vec2<f32>(2.0 * kf - 1.0, 0.0) - ratio;
     }
     return airlight_cdiv(vec2<f32>(1.0, 0.0), t);
 }
@@ -541,6 +549,11 @@ fn airlight_gauss_rule() -> array<vec2<f32>, AIRLIGHT_HALF_TERMS> {
 }
 
 /// The discrete Legendre transform, row k: the weights of g(x_j) ± g(−x_j) (gauss_table.rs).
+/// P_k's monomial coefficients, row k (panels.rs `LEGENDRE_MONOMIAL` scaled by 2^−k; exact).
+fn airlight_legendre_monomial() -> array<f32, @TERMS_SQUARED@> {
+    return array<f32, @TERMS_SQUARED@>(@LEGENDRE_MONOMIAL@);
+}
+
 fn airlight_legendre_table() -> array<f32, @TRANSFORM_LEN@> {
     return array<f32, @TRANSFORM_LEN@>(@LEGENDRE_TRANSFORM@);
 }
@@ -739,25 +752,12 @@ fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     return airlight_panel_result(w * 2.0 * c[0], error, airlight_transform_noise(w * 2.0, p_avg), w * mass * over_max, f_max);
 }
 
-/// Monomial coefficients in ξ of Σ c_k P_k(ξ) (panels.rs `legendre_to_monomial`).
+/// Monomial coefficients in ξ of Σ c_k P_k(ξ) (panels.rs `legendre_to_monomial`, its table).
 fn airlight_legendre_to_monomial(c: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS> {
+    let table = airlight_legendre_monomial();
     var hat = airlight_zero_terms();
-    var p_prev = airlight_zero_terms();
-    var p_cur = airlight_zero_terms();
-    p_cur[0] = 1.0;
     for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        for (var i = 0u; i <= k; i++) { hat[i] += c[k] * p_cur[i]; }
-        if (k + 1u < AIRLIGHT_TERMS) {
-            let kf = f32(k);
-            var next = airlight_zero_terms();
-            for (var i = 0u; i <= k + 1u; i++) {
-                var shifted = 0.0;
-                if (i > 0u) { shifted = p_cur[i - 1u]; }
-                next[i] = ((kf + kf + 1.0) * shifted - kf * p_prev[i]) / (kf + 1.0);
-            }
-            p_prev = p_cur;
-            p_cur = next;
-        }
+        for (var i = 0u; i <= k; i++) { hat[i] += c[k] * table[k * AIRLIGHT_TERMS + i]; }
     }
     return hat;
 }

@@ -64,7 +64,7 @@ pub struct Running<T> {
 /// The most panels a piece's list holds (each split adds one: `(max_panels + 1)/2` at most).
 const LIST: usize = 64;
 /// The most Legendre terms a panel may use (the largest tabulated rule with `N ≤ MAX_N`).
-const MAX_N: usize = 16;
+pub const MAX_N: usize = 16;
 
 /// `∫ e^{−H(v − v_s)} G(v) dv` over `y ∈ [lo, hi] ⊂ [half.y_lo, half.y_hi]`, in the half's
 /// scaling (weight 1 at the half's `v_s`). `N`: Gauss–Legendre nodes per panel (4, 6, 8, 10,
@@ -399,7 +399,7 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
 /// `2^k P_k(ξ) = Σ_j (−1)^j C(k, j) C(2k − 2j, k) ξ^{k−2j}` (DLMF 18.5.8 with `n = k`), row `k`
 /// holding the coefficient of `ξ^i` at `i`: integers below `2^31` for `k < MAX_N`, exact in
 /// f32 and f64 once scaled by `2^{−k}`.
-const LEGENDRE_MONOMIAL: [[i64; MAX_N]; MAX_N] = legendre_monomial_table();
+pub const LEGENDRE_MONOMIAL: [[i64; MAX_N]; MAX_N] = legendre_monomial_table();
 
 const fn binomial(n: i64, k: i64) -> i64 {
     let mut out = 1;

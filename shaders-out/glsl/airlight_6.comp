@@ -84,10 +84,11 @@ const uint AIRLIGHT_E1_SERIES_TERMS = 14u;
 const float AIRLIGHT_E1_INV_RE = 0.7692308;
 const float AIRLIGHT_E1_INV_IM = 0.47619048;
 const uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
+const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 
-layout(std430, binding = 0) readonly buffer type_16_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_18_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_17_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_19_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
 
 
 float[6] airlight_zero_terms() {
@@ -98,6 +99,10 @@ float[16] airlight_zero_scratch() {
     return float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
 }
 
+float[14] airlight_ein_coefficients() {
+    return float[14](1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11, -8.1933895e-13);
+}
+
 vec2 airlight_cmul(vec2 a, vec2 b) {
     return vec2(((a.x * b.x) - (a.y * b.y)), ((a.x * b.y) + (a.y * b.x)));
 }
@@ -105,12 +110,12 @@ vec2 airlight_cmul(vec2 a, vec2 b) {
 vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     if ((abs(b_1.x) >= abs(b_1.y))) {
         float r_2 = (b_1.y / b_1.x);
-        float den = (b_1.x + (b_1.y * r_2));
-        return vec2(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
+        float inv = (1.0 / (b_1.x + (b_1.y * r_2)));
+        return vec2(((a_1.x + (a_1.y * r_2)) * inv), ((a_1.y - (a_1.x * r_2)) * inv));
     }
     float r_3 = (b_1.x / b_1.y);
-    float den_1 = ((b_1.x * r_3) + b_1.y);
-    return vec2((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
+    float inv_1 = (1.0 / ((b_1.x * r_3) + b_1.y));
+    return vec2((((a_1.x * r_3) + a_1.y) * inv_1), (((a_1.y * r_3) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(vec2 z) {
@@ -187,13 +192,13 @@ vec2 airlight_cos_sin(float x) {
                     fc = (_e26 * float(_e27));
                 }
             }
-            float sign_1 = (((n_3 & 1u) == 1u) ? -1.0 : 1.0);
+            float sign_ = (((n_3 & 1u) == 1u) ? -1.0 : 1.0);
             float _e40 = c;
             float _e41 = fc;
-            c = (_e40 + (sign_1 / _e41));
+            c = (_e40 + (sign_ / _e41));
             float _e44 = s;
             float _e45 = fc;
-            s = (_e44 + (sign_1 / (_e45 * float(((2u * n_3) + 1u)))));
+            s = (_e44 + (sign_ / (_e45 * float(((2u * n_3) + 1u)))));
         }
     }
     float _e57 = c;
@@ -276,78 +281,67 @@ bool airlight_is_finite(float x_3) {
 }
 
 vec2 airlight_ein(vec2 z_4) {
-    vec2 term = vec2(-1.0, 0.0);
     vec2 sum_1 = vec2(0.0, 0.0);
-    uint k_2 = 1u;
+    uint k_2 = 0u;
+    float _e1[14] = airlight_ein_coefficients();
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e27 = k_2;
-            k_2 = (_e27 + 1u);
+            uint _e21 = k_2;
+            k_2 = (_e21 + 1u);
         }
         loop_init_3 = false;
-        uint _e11 = k_2;
-        if ((_e11 <= AIRLIGHT_E1_SERIES_TERMS)) {
+        uint _e8 = k_2;
+        if ((_e8 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
         {
+            vec2 _e11 = sum_1;
+            vec2 _e12 = airlight_cmul(_e11, z_4);
             uint _e14 = k_2;
-            float kf = float(_e14);
-            vec2 _e16 = term;
-            vec2 _e17 = airlight_cmul(_e16, z_4);
-            term = (-(_e17) / vec2(kf));
-            vec2 _e21 = sum_1;
-            vec2 _e22 = term;
-            sum_1 = (_e21 + (_e22 / vec2(kf)));
+            sum_1 = (_e12 + vec2(_e1[(13u - _e14)], 0.0));
         }
     }
-    vec2 _e29 = sum_1;
-    return _e29;
+    vec2 _e23 = sum_1;
+    vec2 _e24 = airlight_cmul(_e23, z_4);
+    return _e24;
 }
 
 vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
     vec2 h = vec2(1.0, 0.0);
     vec2 a_pow = vec2(1.0, 0.0);
-    float fact = 1.0;
-    float sign_ = 1.0;
     vec2 sum_2 = vec2(0.0, 0.0);
-    uint k_3 = 1u;
+    uint k_3 = 0u;
+    float _e2[14] = airlight_ein_coefficients();
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e44 = k_3;
-            k_3 = (_e44 + 1u);
+            uint _e33 = k_3;
+            k_3 = (_e33 + 1u);
         }
         loop_init_4 = false;
-        uint _e20 = k_3;
-        if ((_e20 <= AIRLIGHT_E1_SERIES_TERMS)) {
+        uint _e17 = k_3;
+        if ((_e17 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_3;
-            float kf_1 = float(_e23);
-            float _e25 = fact;
-            fact = (_e25 * kf_1);
-            vec2 _e27 = sum_2;
+            vec2 _e20 = sum_2;
+            vec2 _e21 = h;
+            uint _e22 = k_3;
+            sum_2 = (_e20 + (_e21 * _e2[_e22]));
+            vec2 _e26 = a_pow;
+            vec2 _e27 = airlight_cmul(_e26, a_2);
+            a_pow = _e27;
             vec2 _e28 = h;
-            float _e29 = sign_;
-            float _e30 = fact;
-            sum_2 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
-            vec2 _e35 = a_pow;
-            vec2 _e36 = airlight_cmul(_e35, a_2);
-            a_pow = _e36;
-            vec2 _e37 = h;
-            vec2 _e38 = airlight_cmul(_e37, b_2);
-            vec2 _e39 = a_pow;
-            h = (_e38 + _e39);
-            float _e41 = sign_;
-            sign_ = -(_e41);
+            vec2 _e29 = airlight_cmul(_e28, b_2);
+            vec2 _e30 = a_pow;
+            h = (_e29 + _e30);
         }
     }
-    vec2 _e46 = sum_2;
-    return _e46;
+    vec2 _e35 = sum_2;
+    return _e35;
 }
 
 bool airlight_in_series_region(vec2 z_5) {
@@ -393,6 +387,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     vec2 root = vec2(0.0);
     vec2 t_1 = vec2(0.0);
     uint i = 0u;
+    vec2 ratio = vec2(0.0);
     float ax = abs(z_6.x);
     float ay = abs(z_6.y);
     if ((max(ax, ay) < 1e18)) {
@@ -417,8 +412,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e76 = i;
-            i = (_e76 + 1u);
+            uint _e103 = i;
+            i = (_e103 + 1u);
         }
         loop_init_5 = false;
         uint _e54 = i;
@@ -432,15 +427,28 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
                 break;
             }
             uint _e59 = i;
-            float kf_2 = float((_e14 - _e59));
-            vec2 _e72 = t_1;
-            vec2 _e73 = airlight_cdiv(vec2((kf_2 * kf_2), 0.0), _e72);
-            t_1 = ((z_6 + vec2(((2.0 * kf_2) - 1.0), 0.0)) - _e73);
+            float kf = float((_e14 - _e59));
+            ratio = vec2(0.0, 0.0);
+            if ((_e14 >= AIRLIGHT_E1_CF_PLAIN_FROM)) {
+                float _e69 = t_1.x;
+                float _e71 = t_1.y;
+                float _e76 = t_1.x;
+                float _e78 = t_1.x;
+                float _e81 = t_1.y;
+                float _e83 = t_1.y;
+                ratio = (vec2(_e69, -(_e71)) * ((kf * kf) / ((_e76 * _e78) + (_e81 * _e83))));
+            } else {
+                vec2 _e91 = t_1;
+                vec2 _e92 = airlight_cdiv(vec2((kf * kf), 0.0), _e91);
+                ratio = _e92;
+            }
+            vec2 _e100 = ratio;
+            t_1 = ((z_6 + vec2(((2.0 * kf) - 1.0), 0.0)) - _e100);
         }
     }
-    vec2 _e81 = t_1;
-    vec2 _e82 = airlight_cdiv(vec2(1.0, 0.0), _e81);
-    return _e82;
+    vec2 _e108 = t_1;
+    vec2 _e109 = airlight_cdiv(vec2(1.0, 0.0), _e108);
+    return _e109;
 }
 
 vec2 airlight_e1_scaled(vec2 z_7) {
@@ -488,9 +496,9 @@ float airlight_en_scaled_cf(float x_4, uint n) {
                 break;
             }
             uint _e39 = i_1;
-            float kf_3 = float((_e2 - _e39));
+            float kf_1 = float((_e2 - _e39));
             float _e50 = t_2;
-            t_2 = (((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e50));
+            t_2 = (((x_4 + nf_1) + (2.0 * kf_1)) - (((kf_1 + 1.0) * (nf_1 + kf_1)) / _e50));
         }
     }
     float _e57 = t_2;
@@ -704,12 +712,12 @@ float airlight_integrand(AirlightScene s_1, AirlightCanonical g_2, float sigma, 
     float minus = 0.0;
     float plus = 0.0;
     float y2_ = (y_1 * y_1);
-    float inv = (1.0 / (1.0 + y2_));
+    float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
-    float mu_2 = (-(sigma) * (om_3 * inv));
-    float c_7 = ((((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv);
-    float far = ((y2_ * inv) * 2.0);
-    float near = (inv * 2.0);
+    float mu_2 = (-(sigma) * (om_3 * inv_2));
+    float c_7 = ((((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv_2);
+    float far = ((y2_ * inv_2) * 2.0);
+    float near = (inv_2 * 2.0);
     minus = near;
     plus = far;
     if ((sigma < 0.0)) {
@@ -896,6 +904,10 @@ vec2[3] airlight_gauss_rule() {
     return vec2[3](vec2(0.2386192, 0.46791393), vec2(0.6612094, 0.36076158), vec2(0.9324695, 0.17132449));
 }
 
+float[36] airlight_legendre_monomial() {
+    return float[36](1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, -0.5, 0.0, 1.5, 0.0, 0.0, 0.0, 0.0, -1.5, 0.0, 2.5, 0.0, 0.0, 0.375, 0.0, -3.75, 0.0, 4.375, 0.0, 0.0, 1.875, 0.0, -8.75, 0.0, 7.875);
+}
+
 float[18] airlight_legendre_table() {
     return float[18](0.23395696, 0.18038079, 0.085662246, 0.16747986, 0.3578084, 0.2396323, -0.48498264, 0.14051373, 0.34446892, -0.53055197, -0.3398032, 0.37672108, 0.36987686, -0.69522595, 0.32534906, 0.861151, -0.58413666, 0.19383956);
 }
@@ -1019,7 +1031,7 @@ float[6] airlight_exp_legendre_moments(float lambda) {
         out_1[1] = (lambda * 0.33333334);
     } else {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
-            float inv_1 = (1.0 / lambda);
+            float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, uint(ceil(lambda)));
             float per_step = (-2.0 * log((lambda / float((2u * k0_)))));
             uint steps = (uint(min(ceil((15.942385 / per_step)), 28.0)) + 2u);
@@ -1051,7 +1063,7 @@ float[6] airlight_exp_legendre_moments(float lambda) {
                     float _e72 = above;
                     float _e73 = odd;
                     float _e75 = cur;
-                    float below = (_e72 + ((_e73 * inv_1) * _e75));
+                    float below = (_e72 + ((_e73 * inv_3) * _e75));
                     float _e78 = odd;
                     odd = (_e78 - 2.0);
                     float _e81 = cur;
@@ -1386,29 +1398,20 @@ AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float s
 
 float[6] airlight_legendre_to_monomial(float c_5[6]) {
     float hat[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float p_prev[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float p_cur[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint k_8 = 0u;
     uint i_10 = 0u;
-    float next[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint i_11 = 0u;
-    float shifted = 0.0;
-    float _e1[6] = airlight_zero_terms();
-    hat = _e1;
-    float _e3[6] = airlight_zero_terms();
-    p_prev = _e3;
-    float _e5[6] = airlight_zero_terms();
-    p_cur = _e5;
-    p_cur[0] = 1.0;
+    float _e1[36] = airlight_legendre_monomial();
+    float _e2[6] = airlight_zero_terms();
+    hat = _e2;
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
-            uint _e79 = k_8;
-            k_8 = (_e79 + 1u);
+            uint _e31 = k_8;
+            k_8 = (_e31 + 1u);
         }
         loop_init_24 = false;
-        uint _e11 = k_8;
-        if ((_e11 < AIRLIGHT_TERMS)) {
+        uint _e6 = k_8;
+        if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
@@ -1417,81 +1420,41 @@ float[6] airlight_legendre_to_monomial(float c_5[6]) {
             bool loop_init_25 = true;
             while(true) {
                 if (!loop_init_25) {
-                    uint _e30 = i_10;
-                    i_10 = (_e30 + 1u);
+                    uint _e28 = i_10;
+                    i_10 = (_e28 + 1u);
                 }
                 loop_init_25 = false;
-                uint _e16 = i_10;
-                uint _e17 = k_8;
-                if ((_e16 <= _e17)) {
+                uint _e11 = i_10;
+                uint _e12 = k_8;
+                if ((_e11 <= _e12)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e19 = i_10;
-                    float _e21 = hat[_e19];
-                    uint _e22 = k_8;
-                    uint _e24 = i_10;
-                    float _e26 = p_cur[_e24];
-                    hat[_e19] = (_e21 + (c_5[_e22] * _e26));
+                    uint _e14 = i_10;
+                    float _e16 = hat[_e14];
+                    uint _e17 = k_8;
+                    uint _e19 = k_8;
+                    uint _e22 = i_10;
+                    hat[_e14] = (_e16 + (c_5[_e17] * _e1[((_e19 * AIRLIGHT_TERMS) + _e22)]));
                 }
-            }
-            uint _e32 = k_8;
-            if (((_e32 + 1u) < AIRLIGHT_TERMS)) {
-                uint _e37 = k_8;
-                float kf_4 = float(_e37);
-                float _e39[6] = airlight_zero_terms();
-                next = _e39;
-                i_11 = 0u;
-                bool loop_init_26 = true;
-                while(true) {
-                    if (!loop_init_26) {
-                        uint _e74 = i_11;
-                        i_11 = (_e74 + 1u);
-                    }
-                    loop_init_26 = false;
-                    uint _e43 = i_11;
-                    uint _e44 = k_8;
-                    if ((_e43 <= (_e44 + 1u))) {
-                    } else {
-                        break;
-                    }
-                    {
-                        shifted = 0.0;
-                        uint _e50 = i_11;
-                        if ((_e50 > 0u)) {
-                            uint _e53 = i_11;
-                            float _e57 = p_cur[(_e53 - 1u)];
-                            shifted = _e57;
-                        }
-                        uint _e58 = i_11;
-                        float _e63 = shifted;
-                        uint _e65 = i_11;
-                        float _e67 = p_prev[_e65];
-                        next[_e58] = (((((kf_4 + kf_4) + 1.0) * _e63) - (kf_4 * _e67)) / (kf_4 + 1.0));
-                    }
-                }
-                float _e76[6] = p_cur;
-                p_prev = _e76;
-                float _e77[6] = next;
-                p_cur = _e77;
             }
         }
     }
-    float _e81[6] = hat;
-    return _e81;
+    float _e33[6] = hat;
+    return _e33;
 }
 
 AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     float q[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint jj = 0u;
-    float next_1[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint i_13 = 0u;
-    float shifted_1 = 0.0;
+    float next[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint i_12 = 0u;
+    float shifted = 0.0;
     float s_b[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float s_a[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     bool local_11 = false;
@@ -1499,7 +1462,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     bool local_12 = false;
     float sum_6 = 0.0;
     float mass_2 = 0.0;
-    float ratio = 1.0;
+    float ratio_1 = 1.0;
     float ab = 0.0;
     uint k_9 = 0u;
     float tail = 0.0;
@@ -1512,30 +1475,30 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     float yc_2 = (a_7 + r_5);
     float _e11[6] = airlight_zero_terms();
     samples_2 = _e11;
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_27) {
-            uint _e51 = i_12;
-            i_12 = (_e51 + 1u);
+        if (!loop_init_26) {
+            uint _e51 = i_11;
+            i_11 = (_e51 + 1u);
         }
-        loop_init_27 = false;
-        uint _e19 = i_12;
+        loop_init_26 = false;
+        uint _e19 = i_11;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e22 = i_12;
+            uint _e22 = i_11;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = (yc_2 + (r_5 * _e23));
             float _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
-            uint _e27 = i_12;
+            uint _e27 = i_11;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
-            uint _e37 = i_12;
-            uint _e44 = i_12;
+            uint _e37 = i_11;
+            uint _e44 = i_11;
             float _e46 = samples_2[_e44];
             g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5) * abs(_e46)));
         }
@@ -1547,13 +1510,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     float _e58[6] = airlight_legendre_to_monomial(_e54);
     float _e59[6] = airlight_zero_terms();
     q = _e59;
-    bool loop_init_28 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_28) {
+        if (!loop_init_27) {
             uint _e104 = jj;
             jj = (_e104 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_27 = false;
         uint _e63 = jj;
         if ((_e63 < AIRLIGHT_TERMS)) {
         } else {
@@ -1563,38 +1526,38 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             uint _e67 = jj;
             uint j_7 = (5u - _e67);
             float _e69[6] = airlight_zero_terms();
-            next_1 = _e69;
-            i_13 = 0u;
-            bool loop_init_29 = true;
+            next = _e69;
+            i_12 = 0u;
+            bool loop_init_28 = true;
             while(true) {
-                if (!loop_init_29) {
-                    uint _e96 = i_13;
-                    i_13 = (_e96 + 1u);
+                if (!loop_init_28) {
+                    uint _e96 = i_12;
+                    i_12 = (_e96 + 1u);
                 }
-                loop_init_29 = false;
-                uint _e73 = i_13;
+                loop_init_28 = false;
+                uint _e73 = i_12;
                 if ((_e73 < AIRLIGHT_TERMS)) {
                 } else {
                     break;
                 }
                 {
-                    shifted_1 = 0.0;
-                    uint _e78 = i_13;
+                    shifted = 0.0;
+                    uint _e78 = i_12;
                     if ((_e78 > 0u)) {
-                        uint _e81 = i_13;
+                        uint _e81 = i_12;
                         float _e85 = q[(_e81 - 1u)];
-                        shifted_1 = (_e85 * alpha);
+                        shifted = (_e85 * alpha);
                     }
-                    uint _e87 = i_13;
-                    float _e89 = shifted_1;
-                    uint _e90 = i_13;
+                    uint _e87 = i_12;
+                    float _e89 = shifted;
+                    uint _e90 = i_12;
                     float _e92 = q[_e90];
-                    next_1[_e87] = (_e89 + (_e92 * beta));
+                    next[_e87] = (_e89 + (_e92 * beta));
                 }
             }
-            float _e99 = next_1[0];
-            next_1[0] = (_e99 + _e58[j_7]);
-            float _e102[6] = next_1;
+            float _e99 = next[0];
+            next[0] = (_e99 + _e58[j_7]);
+            float _e102[6] = next;
             q = _e102;
         }
     }
@@ -1627,13 +1590,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     if ((b_6 > 0.0)) {
         ab = (a_7 / b_6);
     }
-    bool loop_init_30 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_30) {
+        if (!loop_init_29) {
             uint _e190 = k_9;
             k_9 = (_e190 + 1u);
         }
-        loop_init_30 = false;
+        loop_init_29 = false;
         uint _e151 = k_9;
         if ((_e151 < AIRLIGHT_TERMS)) {
         } else {
@@ -1644,7 +1607,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             float _e156 = decay;
             if ((_e156 > 0.0)) {
                 float _e159 = decay;
-                float _e161 = ratio;
+                float _e161 = ratio_1;
                 uint _e163 = k_9;
                 float _e167 = s_a[(_e163 + 1u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
@@ -1661,22 +1624,22 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             uint _e181 = k_9;
             float _e183 = q[_e181];
             sum_6 = (_e180 + (_e183 * u));
-            float _e186 = ratio;
+            float _e186 = ratio_1;
             float _e187 = ab;
-            ratio = (_e186 * _e187);
+            ratio_1 = (_e186 * _e187);
         }
     }
     float _e192 = airlight_factor(half_6, a_7, b_6);
     float _e193 = mass_2;
     mass_2 = (_e193 * _e192);
     float x_14 = (abs(alpha) + abs(beta));
-    bool loop_init_31 = true;
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_31) {
+        if (!loop_init_30) {
             uint _e232 = k_10;
             k_10 = (_e232 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_30 = false;
         uint _e206 = k_10;
         if ((_e206 < AIRLIGHT_TERMS)) {
         } else {
@@ -1688,13 +1651,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             uint _e211 = k_10;
             spread = (_e209 + (_e210 * abs(_e54[_e211])));
             uint _e216 = k_10;
-            float kf_5 = float(_e216);
+            float kf_2 = float(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
-            float next_2 = ((((((kf_5 + kf_5) + 1.0) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0));
+            float next_1 = ((((((kf_2 + kf_2) + 1.0) * x_14) * _e222) + (kf_2 * _e224)) / (kf_2 + 1.0));
             float _e230 = l_cur;
             l_prev = _e230;
-            l_cur = next_2;
+            l_cur = next_1;
         }
     }
     float _e234 = mass_2;
@@ -1749,11 +1712,11 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
     float errors = 0.0;
     float mass_3 = 0.0;
     uint worst = 0u;
-    uint i_14 = 0u;
+    uint i_13 = 0u;
     bool local_15 = false;
     bool local_16 = false;
     bool local_17 = false;
-    uint i_15 = 0u;
+    uint i_14 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
@@ -1762,13 +1725,13 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
     f_max_4 = max(_e39, _e38.f_max);
     list[0] = vec4(lo, hi, _e38.value, _e38.error);
     mass_over_1[0] = _e38.mass_over;
-    bool loop_init_32 = true;
+    bool loop_init_31 = true;
     while(true) {
-        if (!loop_init_32) {
+        if (!loop_init_31) {
             uint _e196 = round_;
             round_ = (_e196 + 1u);
         }
-        loop_init_32 = false;
+        loop_init_31 = false;
         uint _e56 = round_;
         if ((_e56 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -1779,43 +1742,43 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
             errors = 0.0;
             mass_3 = 0.0;
             worst = 0u;
-            i_14 = 0u;
-            bool loop_init_33 = true;
+            i_13 = 0u;
+            bool loop_init_32 = true;
             while(true) {
-                if (!loop_init_33) {
-                    uint _e102 = i_14;
-                    i_14 = (_e102 + 1u);
+                if (!loop_init_32) {
+                    uint _e102 = i_13;
+                    i_13 = (_e102 + 1u);
                 }
-                loop_init_33 = false;
-                uint _e68 = i_14;
+                loop_init_32 = false;
+                uint _e68 = i_13;
                 if ((_e68 < AIRLIGHT_PANEL_LIST)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e71 = i_14;
+                    uint _e71 = i_13;
                     uint _e72 = count_1;
                     if ((_e71 >= _e72)) {
                         break;
                     }
                     float _e74 = total;
-                    uint _e75 = i_14;
+                    uint _e75 = i_13;
                     float _e78 = list[_e75].z;
                     total = (_e74 + _e78);
                     float _e80 = errors;
-                    uint _e81 = i_14;
+                    uint _e81 = i_13;
                     float _e84 = list[_e81].w;
                     errors = (_e80 + _e84);
                     float _e86 = mass_3;
-                    uint _e87 = i_14;
+                    uint _e87 = i_13;
                     float _e89 = mass_over_1[_e87];
                     mass_3 = (_e86 + _e89);
-                    uint _e91 = i_14;
+                    uint _e91 = i_13;
                     float _e94 = list[_e91].w;
                     uint _e95 = worst;
                     float _e98 = list[_e95].w;
                     if ((_e94 > _e98)) {
-                        uint _e100 = i_14;
+                        uint _e100 = i_13;
                         worst = _e100;
                     }
                 }
@@ -1880,26 +1843,26 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
         }
     }
     total = 0.0;
-    bool loop_init_34 = true;
+    bool loop_init_33 = true;
     while(true) {
-        if (!loop_init_34) {
-            uint _e214 = i_15;
-            i_15 = (_e214 + 1u);
+        if (!loop_init_33) {
+            uint _e214 = i_14;
+            i_14 = (_e214 + 1u);
         }
-        loop_init_34 = false;
-        uint _e201 = i_15;
+        loop_init_33 = false;
+        uint _e201 = i_14;
         if ((_e201 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e204 = i_15;
+            uint _e204 = i_14;
             uint _e205 = count_1;
             if ((_e204 >= _e205)) {
                 break;
             }
             float _e207 = total;
-            uint _e208 = i_15;
+            uint _e208 = i_14;
             float _e211 = list[_e208].z;
             total = (_e207 + _e211);
         }
@@ -1944,13 +1907,13 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float k_in = 0.0;
     float k_out = 0.0;
-    uint i_16 = 0u;
+    uint i_15 = 0u;
     bool local_18 = false;
-    uint i_17 = 0u;
+    uint i_16 = 0u;
     uint j_5 = 0u;
     float total_1 = 0.0;
     float lo_1 = 0.0;
-    uint i_18 = 0u;
+    uint i_17 = 0u;
     float hi_1 = 0.0;
     bool local_19 = false;
     bool local_20 = false;
@@ -1976,23 +1939,23 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
         float _e43 = k_out;
         vec2 _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
         cuts = float[4](_e40.x, _e40.y, _e44.x, _e44.y);
-        bool loop_init_35 = true;
+        bool loop_init_34 = true;
         while(true) {
-            if (!loop_init_35) {
-                uint _e74 = i_16;
-                i_16 = (_e74 + 1u);
+            if (!loop_init_34) {
+                uint _e74 = i_15;
+                i_15 = (_e74 + 1u);
             }
-            loop_init_35 = false;
-            uint _e52 = i_16;
+            loop_init_34 = false;
+            uint _e52 = i_15;
             if ((_e52 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e55 = i_16;
+                uint _e55 = i_15;
                 float _e57 = cuts[_e55];
                 if ((_e57 > half_9.y_lo)) {
-                    uint _e62 = i_16;
+                    uint _e62 = i_15;
                     float _e64 = cuts[_e62];
                     local_18 = (_e64 < half_9.y_hi);
                 } else {
@@ -2000,34 +1963,34 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
                 }
                 bool _e68 = local_18;
                 if (!(_e68)) {
-                    uint _e70 = i_16;
+                    uint _e70 = i_15;
                     cuts[_e70] = 2.0;
                 }
             }
         }
-        bool loop_init_36 = true;
+        bool loop_init_35 = true;
         while(true) {
-            if (!loop_init_36) {
-                uint _e115 = i_17;
-                i_17 = (_e115 + 1u);
+            if (!loop_init_35) {
+                uint _e115 = i_16;
+                i_16 = (_e115 + 1u);
             }
-            loop_init_36 = false;
-            uint _e78 = i_17;
+            loop_init_35 = false;
+            uint _e78 = i_16;
             if ((_e78 < 3u)) {
             } else {
                 break;
             }
             {
                 j_5 = 0u;
-                bool loop_init_37 = true;
+                bool loop_init_36 = true;
                 while(true) {
-                    if (!loop_init_37) {
+                    if (!loop_init_36) {
                         uint _e112 = j_5;
                         j_5 = (_e112 + 1u);
                     }
-                    loop_init_37 = false;
+                    loop_init_36 = false;
                     uint _e83 = j_5;
-                    uint _e85 = i_17;
+                    uint _e85 = i_16;
                     if ((_e83 < (3u - _e85))) {
                     } else {
                         break;
@@ -2053,23 +2016,23 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
         }
     }
     lo_1 = half_9.y_lo;
-    bool loop_init_38 = true;
+    bool loop_init_37 = true;
     while(true) {
-        if (!loop_init_38) {
-            uint _e165 = i_18;
-            i_18 = (_e165 + 1u);
+        if (!loop_init_37) {
+            uint _e165 = i_17;
+            i_17 = (_e165 + 1u);
         }
-        loop_init_38 = false;
-        uint _e123 = i_18;
+        loop_init_37 = false;
+        uint _e123 = i_17;
         if ((_e123 < 5u)) {
         } else {
             break;
         }
         {
             hi_1 = half_9.y_hi;
-            uint _e128 = i_18;
+            uint _e128 = i_17;
             if ((_e128 < 4u)) {
-                uint _e133 = i_18;
+                uint _e133 = i_17;
                 float _e135 = cuts[_e133];
                 local_19 = (_e135 < 2.0);
             } else {
@@ -2077,7 +2040,7 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             }
             bool _e139 = local_19;
             if (_e139) {
-                uint _e140 = i_18;
+                uint _e140 = i_17;
                 float _e142 = cuts[_e140];
                 hi_1 = _e142;
             }
@@ -2092,9 +2055,9 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
                 float _e151 = hi_1;
                 lo_1 = _e151;
             }
-            uint _e152 = i_18;
+            uint _e152 = i_17;
             if ((_e152 < 4u)) {
-                uint _e157 = i_18;
+                uint _e157 = i_17;
                 float _e159 = cuts[_e157];
                 local_20 = (_e159 >= 2.0);
             } else {
@@ -2839,13 +2802,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_13) {
 
 void main() {
     uvec3 id = gl_GlobalInvocationID;
-    uint i_19 = id.x;
-    if ((i_19 >= uint(_group_0_binding_0_cs.length()))) {
+    uint i_18 = id.x;
+    if ((i_18 >= uint(_group_0_binding_0_cs.length()))) {
         return;
     }
-    AirlightScene _e9 = _group_0_binding_0_cs[i_19];
+    AirlightScene _e9 = _group_0_binding_0_cs[i_18];
     AirlightResult _e10 = airlight_in_scatter(_e9);
-    _group_0_binding_1_cs[i_19] = _e10;
+    _group_0_binding_1_cs[i_18] = _e10;
     return;
 }
 

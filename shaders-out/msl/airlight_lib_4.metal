@@ -14,6 +14,9 @@ struct airlight_type_2 {
 struct airlight_type_3 {
     float inner[16];
 };
+struct airlight_type_4 {
+    float inner[14];
+};
 struct AirlightScene {
     metal::packed_float3 origin;
     float t_min;
@@ -59,13 +62,13 @@ struct AirlightHalf {
     bool dv_infinite;
     char _pad7[3];
 };
-struct airlight_type_8 {
+struct airlight_type_9 {
     metal::float2 inner[4];
 };
-struct airlight_type_9 {
+struct airlight_type_10 {
     metal::float2 inner[2];
 };
-struct airlight_type_10 {
+struct airlight_type_11 {
     float inner[8];
 };
 struct AirlightPanel {
@@ -74,7 +77,7 @@ struct AirlightPanel {
     float mass_over;
     float f_max;
 };
-struct airlight_type_13 {
+struct airlight_type_14 {
     metal::float4 inner[8];
 };
 constant uint AIRLIGHT_TERMS = 4u;
@@ -109,6 +112,7 @@ constant uint AIRLIGHT_E1_SERIES_TERMS = 14u;
 constant float AIRLIGHT_E1_INV_RE = 0.7692308;
 constant float AIRLIGHT_E1_INV_IM = 0.47619048;
 constant uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
+constant uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 
 airlight_type_2 airlight_zero_terms(
 ) {
@@ -118,6 +122,11 @@ airlight_type_2 airlight_zero_terms(
 airlight_type_3 airlight_zero_scratch(
 ) {
     return airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
+}
+
+airlight_type_4 airlight_ein_coefficients(
+) {
+    return airlight_type_4 {{1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 0.000028344672, -0.0000031001985, 0.00000030619245, -0.00000002755732, 0.0000000022774644, -0.00000000017397297, 0.000000000012353111, -0.00000000000081933895}};
 }
 
 metal::float2 airlight_cmul(
@@ -133,12 +142,12 @@ metal::float2 airlight_cdiv(
 ) {
     if (metal::abs(b_1.x) >= metal::abs(b_1.y)) {
         float r_2 = b_1.y / b_1.x;
-        float den = b_1.x + (b_1.y * r_2);
-        return metal::float2((a_1.x + (a_1.y * r_2)) / den, (a_1.y - (a_1.x * r_2)) / den);
+        float inv = 1.0 / (b_1.x + (b_1.y * r_2));
+        return metal::float2((a_1.x + (a_1.y * r_2)) * inv, (a_1.y - (a_1.x * r_2)) * inv);
     }
     float r_3 = b_1.x / b_1.y;
-    float den_1 = (b_1.x * r_3) + b_1.y;
-    return metal::float2(((a_1.x * r_3) + a_1.y) / den_1, ((a_1.y * r_3) - a_1.x) / den_1);
+    float inv_1 = 1.0 / ((b_1.x * r_3) + b_1.y);
+    return metal::float2(((a_1.x * r_3) + a_1.y) * inv_1, ((a_1.y * r_3) - a_1.x) * inv_1);
 }
 
 float airlight_cabs(
@@ -227,13 +236,13 @@ metal::float2 airlight_cos_sin(
                     fc = _e26 * static_cast<float>(_e27);
                 }
             }
-            float sign_1 = ((n_3 & 1u) == 1u) ? -1.0 : 1.0;
+            float sign = ((n_3 & 1u) == 1u) ? -1.0 : 1.0;
             float _e40 = c;
             float _e41 = fc;
-            c = _e40 + (sign_1 / _e41);
+            c = _e40 + (sign / _e41);
             float _e44 = s;
             float _e45 = fc;
-            s = _e44 + (sign_1 / (_e45 * static_cast<float>((2u * n_3) + 1u)));
+            s = _e44 + (sign / (_e45 * static_cast<float>((2u * n_3) + 1u)));
         }
     }
     float _e57 = c;
@@ -331,37 +340,34 @@ bool airlight_is_finite(
 metal::float2 airlight_ein(
     metal::float2 z_4
 ) {
-    metal::float2 term = metal::float2(-1.0, 0.0);
     metal::float2 sum_1 = metal::float2(0.0, 0.0);
-    uint k_2 = 1u;
+    uint k_2 = 0u;
+    airlight_type_4 _e1 = airlight_ein_coefficients();
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e27 = k_2;
-            k_2 = _e27 + 1u;
+            uint _e21 = k_2;
+            k_2 = _e21 + 1u;
         }
         loop_init_3 = false;
-        uint _e11 = k_2;
-        if (_e11 <= AIRLIGHT_E1_SERIES_TERMS) {
+        uint _e8 = k_2;
+        if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
         {
+            metal::float2 _e11 = sum_1;
+            metal::float2 _e12 = airlight_cmul(_e11, z_4);
             uint _e14 = k_2;
-            float kf = static_cast<float>(_e14);
-            metal::float2 _e16 = term;
-            metal::float2 _e17 = airlight_cmul(_e16, z_4);
-            term = -(_e17) / metal::float2(kf);
-            metal::float2 _e21 = sum_1;
-            metal::float2 _e22 = term;
-            sum_1 = _e21 + (_e22 / metal::float2(kf));
+            sum_1 = _e12 + metal::float2(_e1.inner[metal::min(unsigned(13u - _e14), 13u)], 0.0);
         }
     }
-    metal::float2 _e29 = sum_1;
-    return _e29;
+    metal::float2 _e23 = sum_1;
+    metal::float2 _e24 = airlight_cmul(_e23, z_4);
+    return _e24;
 }
 
 metal::float2 airlight_ein_divided_difference(
@@ -370,48 +376,40 @@ metal::float2 airlight_ein_divided_difference(
 ) {
     metal::float2 h = metal::float2(1.0, 0.0);
     metal::float2 a_pow = metal::float2(1.0, 0.0);
-    float fact = 1.0;
-    float sign = 1.0;
     metal::float2 sum_2 = metal::float2(0.0, 0.0);
-    uint k_3 = 1u;
+    uint k_3 = 0u;
+    airlight_type_4 _e2 = airlight_ein_coefficients();
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e44 = k_3;
-            k_3 = _e44 + 1u;
+            uint _e33 = k_3;
+            k_3 = _e33 + 1u;
         }
         loop_init_4 = false;
-        uint _e20 = k_3;
-        if (_e20 <= AIRLIGHT_E1_SERIES_TERMS) {
+        uint _e17 = k_3;
+        if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
         {
-            uint _e23 = k_3;
-            float kf_1 = static_cast<float>(_e23);
-            float _e25 = fact;
-            fact = _e25 * kf_1;
-            metal::float2 _e27 = sum_2;
+            metal::float2 _e20 = sum_2;
+            metal::float2 _e21 = h;
+            uint _e22 = k_3;
+            sum_2 = _e20 + (_e21 * _e2.inner[metal::min(unsigned(_e22), 13u)]);
+            metal::float2 _e26 = a_pow;
+            metal::float2 _e27 = airlight_cmul(_e26, a_2);
+            a_pow = _e27;
             metal::float2 _e28 = h;
-            float _e29 = sign;
-            float _e30 = fact;
-            sum_2 = _e27 + (_e28 * (_e29 / (kf_1 * _e30)));
-            metal::float2 _e35 = a_pow;
-            metal::float2 _e36 = airlight_cmul(_e35, a_2);
-            a_pow = _e36;
-            metal::float2 _e37 = h;
-            metal::float2 _e38 = airlight_cmul(_e37, b_2);
-            metal::float2 _e39 = a_pow;
-            h = _e38 + _e39;
-            float _e41 = sign;
-            sign = -(_e41);
+            metal::float2 _e29 = airlight_cmul(_e28, b_2);
+            metal::float2 _e30 = a_pow;
+            h = _e29 + _e30;
         }
     }
-    metal::float2 _e46 = sum_2;
-    return _e46;
+    metal::float2 _e35 = sum_2;
+    return _e35;
 }
 
 bool airlight_in_series_region(
@@ -465,6 +463,7 @@ metal::float2 airlight_e1_scaled_cf(
     metal::float2 root = {};
     metal::float2 t_1 = {};
     uint i = 0u;
+    metal::float2 ratio = {};
     float ax = metal::abs(z_6.x);
     float ay = metal::abs(z_6.y);
     if (metal::max(ax, ay) < 1000000000000000000.0) {
@@ -492,8 +491,8 @@ metal::float2 airlight_e1_scaled_cf(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e76 = i;
-            i = _e76 + 1u;
+            uint _e103 = i;
+            i = _e103 + 1u;
         }
         loop_init_5 = false;
         uint _e54 = i;
@@ -507,15 +506,28 @@ metal::float2 airlight_e1_scaled_cf(
                 break;
             }
             uint _e59 = i;
-            float kf_2 = static_cast<float>(_e14 - _e59);
-            metal::float2 _e72 = t_1;
-            metal::float2 _e73 = airlight_cdiv(metal::float2(kf_2 * kf_2, 0.0), _e72);
-            t_1 = (z_6 + metal::float2((2.0 * kf_2) - 1.0, 0.0)) - _e73;
+            float kf = static_cast<float>(_e14 - _e59);
+            ratio = metal::float2(0.0, 0.0);
+            if (_e14 >= AIRLIGHT_E1_CF_PLAIN_FROM) {
+                float _e69 = t_1.x;
+                float _e71 = t_1.y;
+                float _e76 = t_1.x;
+                float _e78 = t_1.x;
+                float _e81 = t_1.y;
+                float _e83 = t_1.y;
+                ratio = metal::float2(_e69, -(_e71)) * ((kf * kf) / ((_e76 * _e78) + (_e81 * _e83)));
+            } else {
+                metal::float2 _e91 = t_1;
+                metal::float2 _e92 = airlight_cdiv(metal::float2(kf * kf, 0.0), _e91);
+                ratio = _e92;
+            }
+            metal::float2 _e100 = ratio;
+            t_1 = (z_6 + metal::float2((2.0 * kf) - 1.0, 0.0)) - _e100;
         }
     }
-    metal::float2 _e81 = t_1;
-    metal::float2 _e82 = airlight_cdiv(metal::float2(1.0, 0.0), _e81);
-    return _e82;
+    metal::float2 _e108 = t_1;
+    metal::float2 _e109 = airlight_cdiv(metal::float2(1.0, 0.0), _e108);
+    return _e109;
 }
 
 metal::float2 airlight_e1_scaled(
@@ -571,9 +583,9 @@ float airlight_en_scaled_cf(
                 break;
             }
             uint _e39 = i_1;
-            float kf_3 = static_cast<float>(_e2 - _e39);
+            float kf_1 = static_cast<float>(_e2 - _e39);
             float _e50 = t_2;
-            t_2 = ((x_4 + nf_1) + (2.0 * kf_3)) - (((kf_3 + 1.0) * (nf_1 + kf_3)) / _e50);
+            t_2 = ((x_4 + nf_1) + (2.0 * kf_1)) - (((kf_1 + 1.0) * (nf_1 + kf_1)) / _e50);
         }
     }
     float _e57 = t_2;
@@ -839,12 +851,12 @@ float airlight_integrand(
     float minus = {};
     float plus = {};
     float y2_ = y_1 * y_1;
-    float inv = 1.0 / (1.0 + y2_);
+    float inv_2 = 1.0 / (1.0 + y2_);
     float om_3 = 1.0 - y2_;
-    float mu_2 = -(sigma) * (om_3 * inv);
-    float c_7 = (((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv;
-    float far = (y2_ * inv) * 2.0;
-    float near = inv * 2.0;
+    float mu_2 = -(sigma) * (om_3 * inv_2);
+    float c_7 = (((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv_2;
+    float far = (y2_ * inv_2) * 2.0;
+    float near = inv_2 * 2.0;
     minus = near;
     plus = far;
     if (sigma < 0.0) {
@@ -866,7 +878,7 @@ float airlight_moment_gauss(
     float dv = {};
     float hw = half_.dy * 0.5;
     float yc = half_.y_lo + hw;
-    airlight_type_8 nodes = airlight_type_8 {{metal::float2(-0.33998105, 0.65214515), metal::float2(0.33998105, 0.65214515), metal::float2(-0.8611363, 0.34785485), metal::float2(0.8611363, 0.34785485)}};
+    airlight_type_9 nodes = airlight_type_9 {{metal::float2(-0.33998105, 0.65214515), metal::float2(0.33998105, 0.65214515), metal::float2(-0.8611363, 0.34785485), metal::float2(0.8611363, 0.34785485)}};
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_11 = true;
     while(true) {
@@ -1038,14 +1050,19 @@ float airlight_moment_zero(
     return _e41;
 }
 
-airlight_type_9 airlight_gauss_rule(
+airlight_type_10 airlight_gauss_rule(
 ) {
-    return airlight_type_9 {{metal::float2(0.33998105, 0.65214515), metal::float2(0.8611363, 0.34785485)}};
+    return airlight_type_10 {{metal::float2(0.33998105, 0.65214515), metal::float2(0.8611363, 0.34785485)}};
 }
 
-airlight_type_10 airlight_legendre_table(
+airlight_type_3 airlight_legendre_monomial(
 ) {
-    return airlight_type_10 {{0.32607257, 0.17392743, 0.3325755, 0.44932565, -0.532508, 0.532508, -0.9397725, 0.371027}};
+    return airlight_type_3 {{1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -0.5, 0.0, 1.5, 0.0, 0.0, -1.5, 0.0, 2.5}};
+}
+
+airlight_type_11 airlight_legendre_table(
+) {
+    return airlight_type_11 {{0.32607257, 0.17392743, 0.3325755, 0.44932565, -0.532508, 0.532508, -0.9397725, 0.371027}};
 }
 
 uint airlight_naga_div(uint lhs, uint rhs) {
@@ -1057,7 +1074,7 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 }
 
 float airlight_node(
-    airlight_type_9 rule,
+    airlight_type_10 rule,
     uint i_4
 ) {
     float x_12 = rule.inner[metal::min(unsigned(airlight_naga_div(i_4, 2u)), 1u)].x;
@@ -1071,7 +1088,7 @@ airlight_type_2 airlight_legendre(
     uint k_4 = 0u;
     float sum_3 = {};
     uint j_2 = {};
-    airlight_type_10 _e1 = airlight_legendre_table();
+    airlight_type_11 _e1 = airlight_legendre_table();
     airlight_type_2 _e2 = airlight_zero_terms();
     c_2 = _e2;
     uint2 loop_bound_12 = uint2(4294967295u);
@@ -1193,7 +1210,7 @@ airlight_type_2 airlight_exp_legendre_moments(
         out_1.inner[1] = lambda * 0.33333334;
     } else {
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
-            float inv_1 = 1.0 / lambda;
+            float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(metal::ceil(lambda)));
             float per_step = -2.0 * metal::log(lambda / static_cast<float>(2u * k0_));
             uint steps = airlight_naga_f2u32(metal::min(metal::ceil(15.942385 / per_step), 28.0)) + 2u;
@@ -1228,7 +1245,7 @@ airlight_type_2 airlight_exp_legendre_moments(
                     float _e72 = above;
                     float _e73 = odd;
                     float _e75 = cur;
-                    float below = _e72 + ((_e73 * inv_1) * _e75);
+                    float below = _e72 + ((_e73 * inv_3) * _e75);
                     float _e78 = odd;
                     odd = _e78 - 2.0;
                     float _e81 = cur;
@@ -1449,7 +1466,7 @@ AirlightPanel airlight_v_panel(
     uint i_8 = 0u;
     float sum_5 = 0.0;
     uint k_7 = 0u;
-    airlight_type_9 _e6 = airlight_gauss_rule();
+    airlight_type_10 _e6 = airlight_gauss_rule();
     r_1 = (b_4 - a_5) * 0.5;
     float _e11 = r_1;
     vc = a_5 + _e11;
@@ -1554,7 +1571,7 @@ AirlightPanel airlight_y_panel(
     float p_avg = 0.0;
     uint i_9 = 0u;
     airlight_type_2 m_2 = {};
-    airlight_type_9 _e6 = airlight_gauss_rule();
+    airlight_type_10 _e6 = airlight_gauss_rule();
     float r_4 = (b_5 - a_6) * 0.5;
     float yc_1 = a_6 + r_4;
     airlight_type_2 _e11 = airlight_zero_terms();
@@ -1621,32 +1638,23 @@ airlight_type_2 airlight_legendre_to_monomial(
     airlight_type_2 c_5
 ) {
     airlight_type_2 hat = {};
-    airlight_type_2 p_prev = {};
-    airlight_type_2 p_cur = {};
     uint k_8 = 0u;
     uint i_10 = {};
-    airlight_type_2 next = {};
-    uint i_11 = {};
-    float shifted = {};
-    airlight_type_2 _e1 = airlight_zero_terms();
-    hat = _e1;
-    airlight_type_2 _e3 = airlight_zero_terms();
-    p_prev = _e3;
-    airlight_type_2 _e5 = airlight_zero_terms();
-    p_cur = _e5;
-    p_cur.inner[0] = 1.0;
+    airlight_type_3 _e1 = airlight_legendre_monomial();
+    airlight_type_2 _e2 = airlight_zero_terms();
+    hat = _e2;
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
         if (metal::all(loop_bound_24 == uint2(0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e79 = k_8;
-            k_8 = _e79 + 1u;
+            uint _e31 = k_8;
+            k_8 = _e31 + 1u;
         }
         loop_init_24 = false;
-        uint _e11 = k_8;
-        if (_e11 < AIRLIGHT_TERMS) {
+        uint _e6 = k_8;
+        if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
@@ -1658,72 +1666,29 @@ airlight_type_2 airlight_legendre_to_monomial(
                 if (metal::all(loop_bound_25 == uint2(0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_25) {
-                    uint _e30 = i_10;
-                    i_10 = _e30 + 1u;
+                    uint _e28 = i_10;
+                    i_10 = _e28 + 1u;
                 }
                 loop_init_25 = false;
-                uint _e16 = i_10;
-                uint _e17 = k_8;
-                if (_e16 <= _e17) {
+                uint _e11 = i_10;
+                uint _e12 = k_8;
+                if (_e11 <= _e12) {
                 } else {
                     break;
                 }
                 {
-                    uint _e19 = i_10;
-                    float _e21 = hat.inner[metal::min(unsigned(_e19), 3u)];
-                    uint _e22 = k_8;
-                    uint _e24 = i_10;
-                    float _e26 = p_cur.inner[metal::min(unsigned(_e24), 3u)];
-                    hat.inner[metal::min(unsigned(_e19), 3u)] = _e21 + (c_5.inner[metal::min(unsigned(_e22), 3u)] * _e26);
+                    uint _e14 = i_10;
+                    float _e16 = hat.inner[metal::min(unsigned(_e14), 3u)];
+                    uint _e17 = k_8;
+                    uint _e19 = k_8;
+                    uint _e22 = i_10;
+                    hat.inner[metal::min(unsigned(_e14), 3u)] = _e16 + (c_5.inner[metal::min(unsigned(_e17), 3u)] * _e1.inner[metal::min(unsigned((_e19 * AIRLIGHT_TERMS) + _e22), 15u)]);
                 }
-            }
-            uint _e32 = k_8;
-            if ((_e32 + 1u) < AIRLIGHT_TERMS) {
-                uint _e37 = k_8;
-                float kf_4 = static_cast<float>(_e37);
-                airlight_type_2 _e39 = airlight_zero_terms();
-                next = _e39;
-                i_11 = 0u;
-                uint2 loop_bound_26 = uint2(4294967295u);
-                bool loop_init_26 = true;
-                while(true) {
-                    if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-                    loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-                    if (!loop_init_26) {
-                        uint _e74 = i_11;
-                        i_11 = _e74 + 1u;
-                    }
-                    loop_init_26 = false;
-                    uint _e43 = i_11;
-                    uint _e44 = k_8;
-                    if (_e43 <= (_e44 + 1u)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        shifted = 0.0;
-                        uint _e50 = i_11;
-                        if (_e50 > 0u) {
-                            uint _e53 = i_11;
-                            float _e57 = p_cur.inner[metal::min(unsigned(_e53 - 1u), 3u)];
-                            shifted = _e57;
-                        }
-                        uint _e58 = i_11;
-                        float _e63 = shifted;
-                        uint _e65 = i_11;
-                        float _e67 = p_prev.inner[metal::min(unsigned(_e65), 3u)];
-                        next.inner[metal::min(unsigned(_e58), 3u)] = ((((kf_4 + kf_4) + 1.0) * _e63) - (kf_4 * _e67)) / (kf_4 + 1.0);
-                    }
-                }
-                airlight_type_2 _e76 = p_cur;
-                p_prev = _e76;
-                airlight_type_2 _e77 = next;
-                p_cur = _e77;
             }
         }
     }
-    airlight_type_2 _e81 = hat;
-    return _e81;
+    airlight_type_2 _e33 = hat;
+    return _e33;
 }
 
 AirlightPanel airlight_tail_panel(
@@ -1737,12 +1702,12 @@ AirlightPanel airlight_tail_panel(
     airlight_type_2 samples_2 = {};
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     airlight_type_2 q = {};
     uint jj = 0u;
-    airlight_type_2 next_1 = {};
-    uint i_13 = {};
-    float shifted_1 = {};
+    airlight_type_2 next = {};
+    uint i_12 = {};
+    float shifted = {};
     airlight_type_3 s_b = {};
     airlight_type_3 s_a = {};
     bool local_11 = {};
@@ -1750,7 +1715,7 @@ AirlightPanel airlight_tail_panel(
     bool local_12 = {};
     float sum_6 = 0.0;
     float mass_2 = 0.0;
-    float ratio = 1.0;
+    float ratio_1 = 1.0;
     float ab = 0.0;
     uint k_9 = 0u;
     float tail = {};
@@ -1758,38 +1723,38 @@ AirlightPanel airlight_tail_panel(
     float l_cur = 1.0;
     float spread = 0.0;
     uint k_10 = 0u;
-    airlight_type_9 _e6 = airlight_gauss_rule();
+    airlight_type_10 _e6 = airlight_gauss_rule();
     float r_5 = (b_6 - a_7) * 0.5;
     float yc_2 = a_7 + r_5;
     airlight_type_2 _e11 = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_26 = uint2(4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e51 = i_12;
-            i_12 = _e51 + 1u;
+        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e51 = i_11;
+            i_11 = _e51 + 1u;
         }
-        loop_init_27 = false;
-        uint _e19 = i_12;
+        loop_init_26 = false;
+        uint _e19 = i_11;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e22 = i_12;
+            uint _e22 = i_11;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = yc_2 + (r_5 * _e23);
             float _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
-            uint _e27 = i_12;
+            uint _e27 = i_11;
             samples_2.inner[metal::min(unsigned(_e27), 3u)] = _e26 / (1.0 + (y_6 * y_6));
             float _e33 = f_max_3;
             f_max_3 = metal::max(_e33, metal::abs(_e26));
             float _e36 = g_avg_1;
-            uint _e37 = i_12;
-            uint _e44 = i_12;
+            uint _e37 = i_11;
+            uint _e44 = i_11;
             float _e46 = samples_2.inner[metal::min(unsigned(_e44), 3u)];
             g_avg_1 = _e36 + ((_e6.inner[metal::min(unsigned(airlight_naga_div(_e37, 2u)), 1u)].y * 0.5) * metal::abs(_e46));
         }
@@ -1801,16 +1766,16 @@ AirlightPanel airlight_tail_panel(
     airlight_type_2 _e58 = airlight_legendre_to_monomial(_e54);
     airlight_type_2 _e59 = airlight_zero_terms();
     q = _e59;
-    uint2 loop_bound_28 = uint2(4294967295u);
-    bool loop_init_28 = true;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e104 = jj;
             jj = _e104 + 1u;
         }
-        loop_init_28 = false;
+        loop_init_27 = false;
         uint _e63 = jj;
         if (_e63 < AIRLIGHT_TERMS) {
         } else {
@@ -1820,41 +1785,41 @@ AirlightPanel airlight_tail_panel(
             uint _e67 = jj;
             uint j_7 = 3u - _e67;
             airlight_type_2 _e69 = airlight_zero_terms();
-            next_1 = _e69;
-            i_13 = 0u;
-            uint2 loop_bound_29 = uint2(4294967295u);
-            bool loop_init_29 = true;
+            next = _e69;
+            i_12 = 0u;
+            uint2 loop_bound_28 = uint2(4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_29) {
-                    uint _e96 = i_13;
-                    i_13 = _e96 + 1u;
+                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+                if (!loop_init_28) {
+                    uint _e96 = i_12;
+                    i_12 = _e96 + 1u;
                 }
-                loop_init_29 = false;
-                uint _e73 = i_13;
+                loop_init_28 = false;
+                uint _e73 = i_12;
                 if (_e73 < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    shifted_1 = 0.0;
-                    uint _e78 = i_13;
+                    shifted = 0.0;
+                    uint _e78 = i_12;
                     if (_e78 > 0u) {
-                        uint _e81 = i_13;
+                        uint _e81 = i_12;
                         float _e85 = q.inner[metal::min(unsigned(_e81 - 1u), 3u)];
-                        shifted_1 = _e85 * alpha;
+                        shifted = _e85 * alpha;
                     }
-                    uint _e87 = i_13;
-                    float _e89 = shifted_1;
-                    uint _e90 = i_13;
+                    uint _e87 = i_12;
+                    float _e89 = shifted;
+                    uint _e90 = i_12;
                     float _e92 = q.inner[metal::min(unsigned(_e90), 3u)];
-                    next_1.inner[metal::min(unsigned(_e87), 3u)] = _e89 + (_e92 * beta);
+                    next.inner[metal::min(unsigned(_e87), 3u)] = _e89 + (_e92 * beta);
                 }
             }
-            float _e99 = next_1.inner[0];
-            next_1.inner[0] = _e99 + _e58.inner[metal::min(unsigned(j_7), 3u)];
-            airlight_type_2 _e102 = next_1;
+            float _e99 = next.inner[0];
+            next.inner[0] = _e99 + _e58.inner[metal::min(unsigned(j_7), 3u)];
+            airlight_type_2 _e102 = next;
             q = _e102;
         }
     }
@@ -1887,16 +1852,16 @@ AirlightPanel airlight_tail_panel(
     if (b_6 > 0.0) {
         ab = a_7 / b_6;
     }
-    uint2 loop_bound_30 = uint2(4294967295u);
-    bool loop_init_30 = true;
+    uint2 loop_bound_29 = uint2(4294967295u);
+    bool loop_init_29 = true;
     while(true) {
-        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_30) {
+        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (!loop_init_29) {
             uint _e190 = k_9;
             k_9 = _e190 + 1u;
         }
-        loop_init_30 = false;
+        loop_init_29 = false;
         uint _e151 = k_9;
         if (_e151 < AIRLIGHT_TERMS) {
         } else {
@@ -1907,7 +1872,7 @@ AirlightPanel airlight_tail_panel(
             float _e156 = decay;
             if (_e156 > 0.0) {
                 float _e159 = decay;
-                float _e161 = ratio;
+                float _e161 = ratio_1;
                 uint _e163 = k_9;
                 float _e167 = s_a.inner[metal::min(unsigned(_e163 + 1u), 15u)];
                 tail = ((_e159 * a_7) * _e161) * _e167;
@@ -1924,25 +1889,25 @@ AirlightPanel airlight_tail_panel(
             uint _e181 = k_9;
             float _e183 = q.inner[metal::min(unsigned(_e181), 3u)];
             sum_6 = _e180 + (_e183 * u);
-            float _e186 = ratio;
+            float _e186 = ratio_1;
             float _e187 = ab;
-            ratio = _e186 * _e187;
+            ratio_1 = _e186 * _e187;
         }
     }
     float _e192 = airlight_factor(half_6, a_7, b_6);
     float _e193 = mass_2;
     mass_2 = _e193 * _e192;
     float x_14 = metal::abs(alpha) + metal::abs(beta);
-    uint2 loop_bound_31 = uint2(4294967295u);
-    bool loop_init_31 = true;
+    uint2 loop_bound_30 = uint2(4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e232 = k_10;
             k_10 = _e232 + 1u;
         }
-        loop_init_31 = false;
+        loop_init_30 = false;
         uint _e206 = k_10;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
@@ -1954,13 +1919,13 @@ AirlightPanel airlight_tail_panel(
             uint _e211 = k_10;
             spread = _e209 + (_e210 * metal::abs(_e54.inner[metal::min(unsigned(_e211), 3u)]));
             uint _e216 = k_10;
-            float kf_5 = static_cast<float>(_e216);
+            float kf_2 = static_cast<float>(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
-            float next_2 = (((((kf_5 + kf_5) + 1.0) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1.0);
+            float next_1 = (((((kf_2 + kf_2) + 1.0) * x_14) * _e222) + (kf_2 * _e224)) / (kf_2 + 1.0);
             float _e230 = l_cur;
             l_prev = _e230;
-            l_cur = next_2;
+            l_cur = next_1;
         }
     }
     float _e234 = mass_2;
@@ -2021,8 +1986,8 @@ float airlight_integrate_piece(
     float hi,
     thread float& f_max_4
 ) {
-    airlight_type_13 list = airlight_type_13 {{metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)}};
-    airlight_type_10 mass_over_1 = airlight_type_10 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
+    airlight_type_14 list = airlight_type_14 {{metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)}};
+    airlight_type_11 mass_over_1 = airlight_type_11 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
     uint count_1 = 1u;
     uint budget = 15u;
     float total = 0.0;
@@ -2030,11 +1995,11 @@ float airlight_integrate_piece(
     float errors = {};
     float mass_3 = {};
     uint worst = {};
-    uint i_14 = {};
+    uint i_13 = {};
     bool local_15 = {};
     bool local_16 = {};
     bool local_17 = {};
-    uint i_15 = 0u;
+    uint i_14 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
@@ -2043,16 +2008,16 @@ float airlight_integrate_piece(
     f_max_4 = metal::max(_e39, _e38.f_max);
     list.inner[0] = metal::float4(lo, hi, _e38.value, _e38.error);
     mass_over_1.inner[0] = _e38.mass_over;
-    uint2 loop_bound_32 = uint2(4294967295u);
-    bool loop_init_32 = true;
+    uint2 loop_bound_31 = uint2(4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-        if (!loop_init_32) {
+        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_31) {
             uint _e196 = round;
             round = _e196 + 1u;
         }
-        loop_init_32 = false;
+        loop_init_31 = false;
         uint _e56 = round;
         if (_e56 < AIRLIGHT_MAX_PANELS) {
         } else {
@@ -2063,46 +2028,46 @@ float airlight_integrate_piece(
             errors = 0.0;
             mass_3 = 0.0;
             worst = 0u;
-            i_14 = 0u;
-            uint2 loop_bound_33 = uint2(4294967295u);
-            bool loop_init_33 = true;
+            i_13 = 0u;
+            uint2 loop_bound_32 = uint2(4294967295u);
+            bool loop_init_32 = true;
             while(true) {
-                if (metal::all(loop_bound_33 == uint2(0u))) { break; }
-                loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-                if (!loop_init_33) {
-                    uint _e102 = i_14;
-                    i_14 = _e102 + 1u;
+                if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+                if (!loop_init_32) {
+                    uint _e102 = i_13;
+                    i_13 = _e102 + 1u;
                 }
-                loop_init_33 = false;
-                uint _e68 = i_14;
+                loop_init_32 = false;
+                uint _e68 = i_13;
                 if (_e68 < AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
                 {
-                    uint _e71 = i_14;
+                    uint _e71 = i_13;
                     uint _e72 = count_1;
                     if (_e71 >= _e72) {
                         break;
                     }
                     float _e74 = total;
-                    uint _e75 = i_14;
+                    uint _e75 = i_13;
                     float _e78 = list.inner[metal::min(unsigned(_e75), 7u)].z;
                     total = _e74 + _e78;
                     float _e80 = errors;
-                    uint _e81 = i_14;
+                    uint _e81 = i_13;
                     float _e84 = list.inner[metal::min(unsigned(_e81), 7u)].w;
                     errors = _e80 + _e84;
                     float _e86 = mass_3;
-                    uint _e87 = i_14;
+                    uint _e87 = i_13;
                     float _e89 = mass_over_1.inner[metal::min(unsigned(_e87), 7u)];
                     mass_3 = _e86 + _e89;
-                    uint _e91 = i_14;
+                    uint _e91 = i_13;
                     float _e94 = list.inner[metal::min(unsigned(_e91), 7u)].w;
                     uint _e95 = worst;
                     float _e98 = list.inner[metal::min(unsigned(_e95), 7u)].w;
                     if (_e94 > _e98) {
-                        uint _e100 = i_14;
+                        uint _e100 = i_13;
                         worst = _e100;
                     }
                 }
@@ -2167,29 +2132,29 @@ float airlight_integrate_piece(
         }
     }
     total = 0.0;
-    uint2 loop_bound_34 = uint2(4294967295u);
-    bool loop_init_34 = true;
+    uint2 loop_bound_33 = uint2(4294967295u);
+    bool loop_init_33 = true;
     while(true) {
-        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-        if (!loop_init_34) {
-            uint _e214 = i_15;
-            i_15 = _e214 + 1u;
+        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (!loop_init_33) {
+            uint _e214 = i_14;
+            i_14 = _e214 + 1u;
         }
-        loop_init_34 = false;
-        uint _e201 = i_15;
+        loop_init_33 = false;
+        uint _e201 = i_14;
         if (_e201 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            uint _e204 = i_15;
+            uint _e204 = i_14;
             uint _e205 = count_1;
             if (_e204 >= _e205) {
                 break;
             }
             float _e207 = total;
-            uint _e208 = i_15;
+            uint _e208 = i_14;
             float _e211 = list.inner[metal::min(unsigned(_e208), 7u)].z;
             total = _e207 + _e211;
         }
@@ -2248,13 +2213,13 @@ float airlight_half(
     airlight_type_2 cuts = airlight_type_2 {{2.0, 2.0, 2.0, 2.0}};
     float k_in = {};
     float k_out = {};
-    uint i_16 = 0u;
+    uint i_15 = 0u;
     bool local_18 = {};
-    uint i_17 = 0u;
+    uint i_16 = 0u;
     uint j_5 = {};
     float total_1 = 0.0;
     float lo_1 = {};
-    uint i_18 = 0u;
+    uint i_17 = 0u;
     float hi_1 = {};
     bool local_19 = {};
     bool local_20 = {};
@@ -2280,26 +2245,26 @@ float airlight_half(
         float _e43 = k_out;
         metal::float2 _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
         cuts = airlight_type_2 {{_e40.x, _e40.y, _e44.x, _e44.y}};
-        uint2 loop_bound_35 = uint2(4294967295u);
-        bool loop_init_35 = true;
+        uint2 loop_bound_34 = uint2(4294967295u);
+        bool loop_init_34 = true;
         while(true) {
-            if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-            if (!loop_init_35) {
-                uint _e74 = i_16;
-                i_16 = _e74 + 1u;
+            if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+            if (!loop_init_34) {
+                uint _e74 = i_15;
+                i_15 = _e74 + 1u;
             }
-            loop_init_35 = false;
-            uint _e52 = i_16;
+            loop_init_34 = false;
+            uint _e52 = i_15;
             if (_e52 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e55 = i_16;
+                uint _e55 = i_15;
                 float _e57 = cuts.inner[metal::min(unsigned(_e55), 3u)];
                 if (_e57 > half_9.y_lo) {
-                    uint _e62 = i_16;
+                    uint _e62 = i_15;
                     float _e64 = cuts.inner[metal::min(unsigned(_e62), 3u)];
                     local_18 = _e64 < half_9.y_hi;
                 } else {
@@ -2307,40 +2272,40 @@ float airlight_half(
                 }
                 bool _e68 = local_18;
                 if (!(_e68)) {
-                    uint _e70 = i_16;
+                    uint _e70 = i_15;
                     cuts.inner[metal::min(unsigned(_e70), 3u)] = 2.0;
                 }
             }
         }
-        uint2 loop_bound_36 = uint2(4294967295u);
-        bool loop_init_36 = true;
+        uint2 loop_bound_35 = uint2(4294967295u);
+        bool loop_init_35 = true;
         while(true) {
-            if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-            if (!loop_init_36) {
-                uint _e115 = i_17;
-                i_17 = _e115 + 1u;
+            if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+            if (!loop_init_35) {
+                uint _e115 = i_16;
+                i_16 = _e115 + 1u;
             }
-            loop_init_36 = false;
-            uint _e78 = i_17;
+            loop_init_35 = false;
+            uint _e78 = i_16;
             if (_e78 < 3u) {
             } else {
                 break;
             }
             {
                 j_5 = 0u;
-                uint2 loop_bound_37 = uint2(4294967295u);
-                bool loop_init_37 = true;
+                uint2 loop_bound_36 = uint2(4294967295u);
+                bool loop_init_36 = true;
                 while(true) {
-                    if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-                    loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-                    if (!loop_init_37) {
+                    if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+                    loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+                    if (!loop_init_36) {
                         uint _e112 = j_5;
                         j_5 = _e112 + 1u;
                     }
-                    loop_init_37 = false;
+                    loop_init_36 = false;
                     uint _e83 = j_5;
-                    uint _e85 = i_17;
+                    uint _e85 = i_16;
                     if (_e83 < (3u - _e85)) {
                     } else {
                         break;
@@ -2366,26 +2331,26 @@ float airlight_half(
         }
     }
     lo_1 = half_9.y_lo;
-    uint2 loop_bound_38 = uint2(4294967295u);
-    bool loop_init_38 = true;
+    uint2 loop_bound_37 = uint2(4294967295u);
+    bool loop_init_37 = true;
     while(true) {
-        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_38) {
-            uint _e165 = i_18;
-            i_18 = _e165 + 1u;
+        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+        if (!loop_init_37) {
+            uint _e165 = i_17;
+            i_17 = _e165 + 1u;
         }
-        loop_init_38 = false;
-        uint _e123 = i_18;
+        loop_init_37 = false;
+        uint _e123 = i_17;
         if (_e123 < 5u) {
         } else {
             break;
         }
         {
             hi_1 = half_9.y_hi;
-            uint _e128 = i_18;
+            uint _e128 = i_17;
             if (_e128 < 4u) {
-                uint _e133 = i_18;
+                uint _e133 = i_17;
                 float _e135 = cuts.inner[metal::min(unsigned(_e133), 3u)];
                 local_19 = _e135 < 2.0;
             } else {
@@ -2393,7 +2358,7 @@ float airlight_half(
             }
             bool _e139 = local_19;
             if (_e139) {
-                uint _e140 = i_18;
+                uint _e140 = i_17;
                 float _e142 = cuts.inner[metal::min(unsigned(_e140), 3u)];
                 hi_1 = _e142;
             }
@@ -2408,9 +2373,9 @@ float airlight_half(
                 float _e151 = hi_1;
                 lo_1 = _e151;
             }
-            uint _e152 = i_18;
+            uint _e152 = i_17;
             if (_e152 < 4u) {
-                uint _e157 = i_18;
+                uint _e157 = i_17;
                 float _e159 = cuts.inner[metal::min(unsigned(_e157), 3u)];
                 local_20 = _e159 >= 2.0;
             } else {

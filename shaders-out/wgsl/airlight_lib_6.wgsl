@@ -84,6 +84,7 @@ const AIRLIGHT_E1_SERIES_TERMS: u32 = 14u;
 const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 15u;
+const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
 
 fn airlight_zero_terms() -> array<f32, 6> {
     return array<f32, 6>(0f, 0f, 0f, 0f, 0f, 0f);
@@ -93,6 +94,10 @@ fn airlight_zero_scratch() -> array<f32, 16> {
     return array<f32, 16>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
 }
 
+fn airlight_ein_coefficients() -> array<f32, 14> {
+    return array<f32, 14>(1f, -0.25f, 0.055555556f, -0.010416667f, 0.0016666667f, -0.00023148148f, 0.000028344672f, -0.0000031001985f, 0.00000030619245f, -0.00000002755732f, 0.0000000022774644f, -0.00000000017397297f, 0.000000000012353111f, -0.00000000000081933895f);
+}
+
 fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(((a.x * b.x) - (a.y * b.y)), ((a.x * b.y) + (a.y * b.x)));
 }
@@ -100,12 +105,12 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
         let r_2 = (b_1.y / b_1.x);
-        let den = (b_1.x + (b_1.y * r_2));
-        return vec2<f32>(((a_1.x + (a_1.y * r_2)) / den), ((a_1.y - (a_1.x * r_2)) / den));
+        let inv = (1f / (b_1.x + (b_1.y * r_2)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_2)) * inv), ((a_1.y - (a_1.x * r_2)) * inv));
     }
     let r_3 = (b_1.x / b_1.y);
-    let den_1 = ((b_1.x * r_3) + b_1.y);
-    return vec2<f32>((((a_1.x * r_3) + a_1.y) / den_1), (((a_1.y * r_3) - a_1.x) / den_1));
+    let inv_1 = (1f / ((b_1.x * r_3) + b_1.y));
+    return vec2<f32>((((a_1.x * r_3) + a_1.y) * inv_1), (((a_1.y * r_3) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -176,13 +181,13 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
                     j = (_e31 + 1u);
                 }
             }
-            let sign_1 = select(1f, -1f, ((n_3 & 1u) == 1u));
+            let sign_ = select(1f, -1f, ((n_3 & 1u) == 1u));
             let _e40 = c;
             let _e41 = fc;
-            c = (_e40 + (sign_1 / _e41));
+            c = (_e40 + (sign_ / _e41));
             let _e44 = s;
             let _e45 = fc;
-            s = (_e44 + (sign_1 / (_e45 * f32(((2u * n_3) + 1u)))));
+            s = (_e44 + (sign_ / (_e45 * f32(((2u * n_3) + 1u)))));
         }
         continuing {
             let _e55 = k;
@@ -270,76 +275,65 @@ fn airlight_is_finite(x_3: f32) -> bool {
 }
 
 fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
-    var term: vec2<f32> = vec2<f32>(-1f, 0f);
     var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_2: u32 = 1u;
+    var k_2: u32 = 0u;
 
+    let _e1 = airlight_ein_coefficients();
     loop {
-        let _e11 = k_2;
-        if (_e11 <= AIRLIGHT_E1_SERIES_TERMS) {
+        let _e8 = k_2;
+        if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
         {
+            let _e11 = sum_1;
+            let _e12 = airlight_cmul(_e11, z_4);
             let _e14 = k_2;
-            let kf = f32(_e14);
-            let _e16 = term;
-            let _e17 = airlight_cmul(_e16, z_4);
-            term = (-(_e17) / vec2(kf));
-            let _e21 = sum_1;
-            let _e22 = term;
-            sum_1 = (_e21 + (_e22 / vec2(kf)));
+            sum_1 = (_e12 + vec2<f32>(_e1[(13u - _e14)], 0f));
         }
         continuing {
-            let _e27 = k_2;
-            k_2 = (_e27 + 1u);
+            let _e21 = k_2;
+            k_2 = (_e21 + 1u);
         }
     }
-    let _e29 = sum_1;
-    return _e29;
+    let _e23 = sum_1;
+    let _e24 = airlight_cmul(_e23, z_4);
+    return _e24;
 }
 
 fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> {
     var h: vec2<f32> = vec2<f32>(1f, 0f);
     var a_pow: vec2<f32> = vec2<f32>(1f, 0f);
-    var fact: f32 = 1f;
-    var sign_: f32 = 1f;
     var sum_2: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_3: u32 = 1u;
+    var k_3: u32 = 0u;
 
+    let _e2 = airlight_ein_coefficients();
     loop {
-        let _e20 = k_3;
-        if (_e20 <= AIRLIGHT_E1_SERIES_TERMS) {
+        let _e17 = k_3;
+        if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
         {
-            let _e23 = k_3;
-            let kf_1 = f32(_e23);
-            let _e25 = fact;
-            fact = (_e25 * kf_1);
-            let _e27 = sum_2;
+            let _e20 = sum_2;
+            let _e21 = h;
+            let _e22 = k_3;
+            sum_2 = (_e20 + (_e21 * _e2[_e22]));
+            let _e26 = a_pow;
+            let _e27 = airlight_cmul(_e26, a_2);
+            a_pow = _e27;
             let _e28 = h;
-            let _e29 = sign_;
-            let _e30 = fact;
-            sum_2 = (_e27 + (_e28 * (_e29 / (kf_1 * _e30))));
-            let _e35 = a_pow;
-            let _e36 = airlight_cmul(_e35, a_2);
-            a_pow = _e36;
-            let _e37 = h;
-            let _e38 = airlight_cmul(_e37, b_2);
-            let _e39 = a_pow;
-            h = (_e38 + _e39);
-            let _e41 = sign_;
-            sign_ = -(_e41);
+            let _e29 = airlight_cmul(_e28, b_2);
+            let _e30 = a_pow;
+            h = (_e29 + _e30);
         }
         continuing {
-            let _e44 = k_3;
-            k_3 = (_e44 + 1u);
+            let _e33 = k_3;
+            k_3 = (_e33 + 1u);
         }
     }
-    let _e46 = sum_2;
-    return _e46;
+    let _e35 = sum_2;
+    return _e35;
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
@@ -385,6 +379,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     var root: vec2<f32>;
     var t_1: vec2<f32>;
     var i: u32 = 0u;
+    var ratio: vec2<f32>;
 
     let ax = abs(z_6.x);
     let ay = abs(z_6.y);
@@ -419,19 +414,32 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
                 break;
             }
             let _e59 = i;
-            let kf_2 = f32((_e14 - _e59));
-            let _e72 = t_1;
-            let _e73 = airlight_cdiv(vec2<f32>((kf_2 * kf_2), 0f), _e72);
-            t_1 = ((z_6 + vec2<f32>(((2f * kf_2) - 1f), 0f)) - _e73);
+            let kf = f32((_e14 - _e59));
+            ratio = vec2<f32>(0f, 0f);
+            if (_e14 >= AIRLIGHT_E1_CF_PLAIN_FROM) {
+                let _e69 = t_1.x;
+                let _e71 = t_1.y;
+                let _e76 = t_1.x;
+                let _e78 = t_1.x;
+                let _e81 = t_1.y;
+                let _e83 = t_1.y;
+                ratio = (vec2<f32>(_e69, -(_e71)) * ((kf * kf) / ((_e76 * _e78) + (_e81 * _e83))));
+            } else {
+                let _e91 = t_1;
+                let _e92 = airlight_cdiv(vec2<f32>((kf * kf), 0f), _e91);
+                ratio = _e92;
+            }
+            let _e100 = ratio;
+            t_1 = ((z_6 + vec2<f32>(((2f * kf) - 1f), 0f)) - _e100);
         }
         continuing {
-            let _e76 = i;
-            i = (_e76 + 1u);
+            let _e103 = i;
+            i = (_e103 + 1u);
         }
     }
-    let _e81 = t_1;
-    let _e82 = airlight_cdiv(vec2<f32>(1f, 0f), _e81);
-    return _e82;
+    let _e108 = t_1;
+    let _e109 = airlight_cdiv(vec2<f32>(1f, 0f), _e108);
+    return _e109;
 }
 
 fn airlight_e1_scaled(z_7: vec2<f32>) -> vec2<f32> {
@@ -474,9 +482,9 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
                 break;
             }
             let _e39 = i_1;
-            let kf_3 = f32((_e2 - _e39));
+            let kf_1 = f32((_e2 - _e39));
             let _e50 = t_2;
-            t_2 = (((x_4 + nf_1) + (2f * kf_3)) - (((kf_3 + 1f) * (nf_1 + kf_3)) / _e50));
+            t_2 = (((x_4 + nf_1) + (2f * kf_1)) - (((kf_1 + 1f) * (nf_1 + kf_1)) / _e50));
         }
         continuing {
             let _e54 = i_1;
@@ -690,12 +698,12 @@ fn airlight_integrand(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_
     var plus: f32;
 
     let y2_ = (y_1 * y_1);
-    let inv = (1f / (1f + y2_));
+    let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
-    let mu_2 = (-(sigma) * (om_3 * inv));
-    let c_7 = ((((sigma * g_2.d_el) * om_3) + ((2f * g_2.d_c) * y_1)) * inv);
-    let far = ((y2_ * inv) * 2f);
-    let near = (inv * 2f);
+    let mu_2 = (-(sigma) * (om_3 * inv_2));
+    let c_7 = ((((sigma * g_2.d_el) * om_3) + ((2f * g_2.d_c) * y_1)) * inv_2);
+    let far = ((y2_ * inv_2) * 2f);
+    let near = (inv_2 * 2f);
     minus = near;
     plus = far;
     if (sigma < 0f) {
@@ -883,6 +891,10 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 3> {
     return array<vec2<f32>, 3>(vec2<f32>(0.2386192f, 0.46791393f), vec2<f32>(0.6612094f, 0.36076158f), vec2<f32>(0.9324695f, 0.17132449f));
 }
 
+fn airlight_legendre_monomial() -> array<f32, 36> {
+    return array<f32, 36>(1f, 0f, 0f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, -0.5f, 0f, 1.5f, 0f, 0f, 0f, 0f, -1.5f, 0f, 2.5f, 0f, 0f, 0.375f, 0f, -3.75f, 0f, 4.375f, 0f, 0f, 1.875f, 0f, -8.75f, 0f, 7.875f);
+}
+
 fn airlight_legendre_table() -> array<f32, 18> {
     return array<f32, 18>(0.23395696f, 0.18038079f, 0.085662246f, 0.16747986f, 0.3578084f, 0.2396323f, -0.48498264f, 0.14051373f, 0.34446892f, -0.53055197f, -0.3398032f, 0.37672108f, 0.36987686f, -0.69522595f, 0.32534906f, 0.861151f, -0.58413666f, 0.19383956f);
 }
@@ -1003,7 +1015,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
         out_1[1] = (lambda * 0.33333334f);
     } else {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
-            let inv_1 = (1f / lambda);
+            let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, u32(ceil(lambda)));
             let per_step = (-2f * log((lambda / f32((2u * k0_)))));
             let steps = (u32(min(ceil((15.942385f / per_step)), 28f)) + 2u);
@@ -1029,7 +1041,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
                     let _e72 = above;
                     let _e73 = odd;
                     let _e75 = cur;
-                    let below = (_e72 + ((_e73 * inv_1) * _e75));
+                    let below = (_e72 + ((_e73 * inv_3) * _e75));
                     let _e78 = odd;
                     odd = (_e78 - 2f);
                     let _e81 = cur;
@@ -1356,107 +1368,60 @@ fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
 
 fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
     var hat: array<f32, 6>;
-    var p_prev: array<f32, 6>;
-    var p_cur: array<f32, 6>;
     var k_8: u32 = 0u;
     var i_10: u32;
-    var next: array<f32, 6>;
-    var i_11: u32;
-    var shifted: f32;
 
-    let _e1 = airlight_zero_terms();
-    hat = _e1;
-    let _e3 = airlight_zero_terms();
-    p_prev = _e3;
-    let _e5 = airlight_zero_terms();
-    p_cur = _e5;
-    p_cur[0] = 1f;
+    let _e1 = airlight_legendre_monomial();
+    let _e2 = airlight_zero_terms();
+    hat = _e2;
     loop {
-        let _e11 = k_8;
-        if (_e11 < AIRLIGHT_TERMS) {
+        let _e6 = k_8;
+        if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             i_10 = 0u;
             loop {
-                let _e16 = i_10;
-                let _e17 = k_8;
-                if (_e16 <= _e17) {
+                let _e11 = i_10;
+                let _e12 = k_8;
+                if (_e11 <= _e12) {
                 } else {
                     break;
                 }
                 {
-                    let _e19 = i_10;
-                    let _e21 = hat[_e19];
-                    let _e22 = k_8;
-                    let _e24 = i_10;
-                    let _e26 = p_cur[_e24];
-                    hat[_e19] = (_e21 + (c_5[_e22] * _e26));
+                    let _e14 = i_10;
+                    let _e16 = hat[_e14];
+                    let _e17 = k_8;
+                    let _e19 = k_8;
+                    let _e22 = i_10;
+                    hat[_e14] = (_e16 + (c_5[_e17] * _e1[((_e19 * AIRLIGHT_TERMS) + _e22)]));
                 }
                 continuing {
-                    let _e30 = i_10;
-                    i_10 = (_e30 + 1u);
+                    let _e28 = i_10;
+                    i_10 = (_e28 + 1u);
                 }
-            }
-            let _e32 = k_8;
-            if ((_e32 + 1u) < AIRLIGHT_TERMS) {
-                let _e37 = k_8;
-                let kf_4 = f32(_e37);
-                let _e39 = airlight_zero_terms();
-                next = _e39;
-                i_11 = 0u;
-                loop {
-                    let _e43 = i_11;
-                    let _e44 = k_8;
-                    if (_e43 <= (_e44 + 1u)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        shifted = 0f;
-                        let _e50 = i_11;
-                        if (_e50 > 0u) {
-                            let _e53 = i_11;
-                            let _e57 = p_cur[(_e53 - 1u)];
-                            shifted = _e57;
-                        }
-                        let _e58 = i_11;
-                        let _e63 = shifted;
-                        let _e65 = i_11;
-                        let _e67 = p_prev[_e65];
-                        next[_e58] = (((((kf_4 + kf_4) + 1f) * _e63) - (kf_4 * _e67)) / (kf_4 + 1f));
-                    }
-                    continuing {
-                        let _e74 = i_11;
-                        i_11 = (_e74 + 1u);
-                    }
-                }
-                let _e76 = p_cur;
-                p_prev = _e76;
-                let _e77 = next;
-                p_cur = _e77;
             }
         }
         continuing {
-            let _e79 = k_8;
-            k_8 = (_e79 + 1u);
+            let _e31 = k_8;
+            k_8 = (_e31 + 1u);
         }
     }
-    let _e81 = hat;
-    return _e81;
+    let _e33 = hat;
+    return _e33;
 }
 
 fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 6>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
-    var i_12: u32 = 0u;
+    var i_11: u32 = 0u;
     var q: array<f32, 6>;
     var jj: u32 = 0u;
-    var next_1: array<f32, 6>;
-    var i_13: u32;
-    var shifted_1: f32;
+    var next: array<f32, 6>;
+    var i_12: u32;
+    var shifted: f32;
     var s_b: array<f32, 16>;
     var s_a: array<f32, 16>;
     var local_11: bool;
@@ -1464,7 +1429,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     var local_12: bool;
     var sum_6: f32 = 0f;
     var mass_2: f32 = 0f;
-    var ratio: f32 = 1f;
+    var ratio_1: f32 = 1f;
     var ab: f32 = 0f;
     var k_9: u32 = 0u;
     var tail: f32;
@@ -1479,29 +1444,29 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
-        let _e19 = i_12;
+        let _e19 = i_11;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = i_12;
+            let _e22 = i_11;
             let _e23 = airlight_node(_e6, _e22);
             let y_6 = (yc_2 + (r_5 * _e23));
             let _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
-            let _e27 = i_12;
+            let _e27 = i_11;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
-            let _e37 = i_12;
-            let _e44 = i_12;
+            let _e37 = i_11;
+            let _e44 = i_11;
             let _e46 = samples_2[_e44];
             g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5f) * abs(_e46)));
         }
         continuing {
-            let _e51 = i_12;
-            i_12 = (_e51 + 1u);
+            let _e51 = i_11;
+            i_11 = (_e51 + 1u);
         }
     }
     let _e53 = samples_2;
@@ -1521,36 +1486,36 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let _e67 = jj;
             let j_7 = (5u - _e67);
             let _e69 = airlight_zero_terms();
-            next_1 = _e69;
-            i_13 = 0u;
+            next = _e69;
+            i_12 = 0u;
             loop {
-                let _e73 = i_13;
+                let _e73 = i_12;
                 if (_e73 < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    shifted_1 = 0f;
-                    let _e78 = i_13;
+                    shifted = 0f;
+                    let _e78 = i_12;
                     if (_e78 > 0u) {
-                        let _e81 = i_13;
+                        let _e81 = i_12;
                         let _e85 = q[(_e81 - 1u)];
-                        shifted_1 = (_e85 * alpha);
+                        shifted = (_e85 * alpha);
                     }
-                    let _e87 = i_13;
-                    let _e89 = shifted_1;
-                    let _e90 = i_13;
+                    let _e87 = i_12;
+                    let _e89 = shifted;
+                    let _e90 = i_12;
                     let _e92 = q[_e90];
-                    next_1[_e87] = (_e89 + (_e92 * beta));
+                    next[_e87] = (_e89 + (_e92 * beta));
                 }
                 continuing {
-                    let _e96 = i_13;
-                    i_13 = (_e96 + 1u);
+                    let _e96 = i_12;
+                    i_12 = (_e96 + 1u);
                 }
             }
-            let _e99 = next_1[0];
-            next_1[0] = (_e99 + _e58[j_7]);
-            let _e102 = next_1;
+            let _e99 = next[0];
+            next[0] = (_e99 + _e58[j_7]);
+            let _e102 = next;
             q = _e102;
         }
         continuing {
@@ -1598,7 +1563,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let _e156 = decay;
             if (_e156 > 0f) {
                 let _e159 = decay;
-                let _e161 = ratio;
+                let _e161 = ratio_1;
                 let _e163 = k_9;
                 let _e167 = s_a[(_e163 + 1u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
@@ -1615,9 +1580,9 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let _e181 = k_9;
             let _e183 = q[_e181];
             sum_6 = (_e180 + (_e183 * u));
-            let _e186 = ratio;
+            let _e186 = ratio_1;
             let _e187 = ab;
-            ratio = (_e186 * _e187);
+            ratio_1 = (_e186 * _e187);
         }
         continuing {
             let _e190 = k_9;
@@ -1640,13 +1605,13 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let _e211 = k_10;
             spread = (_e209 + (_e210 * abs(_e54[_e211])));
             let _e216 = k_10;
-            let kf_5 = f32(_e216);
+            let kf_2 = f32(_e216);
             let _e222 = l_cur;
             let _e224 = l_prev;
-            let next_2 = ((((((kf_5 + kf_5) + 1f) * x_14) * _e222) + (kf_5 * _e224)) / (kf_5 + 1f));
+            let next_1 = ((((((kf_2 + kf_2) + 1f) * x_14) * _e222) + (kf_2 * _e224)) / (kf_2 + 1f));
             let _e230 = l_cur;
             l_prev = _e230;
-            l_cur = next_2;
+            l_cur = next_1;
         }
         continuing {
             let _e232 = k_10;
@@ -1706,11 +1671,11 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
     var errors: f32;
     var mass_3: f32;
     var worst: u32;
-    var i_14: u32;
+    var i_13: u32;
     var local_15: bool;
     var local_16: bool;
     var local_17: bool;
-    var i_15: u32 = 0u;
+    var i_14: u32 = 0u;
 
     if !((hi > lo)) {
         return 0f;
@@ -1731,43 +1696,43 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
             errors = 0f;
             mass_3 = 0f;
             worst = 0u;
-            i_14 = 0u;
+            i_13 = 0u;
             loop {
-                let _e68 = i_14;
+                let _e68 = i_13;
                 if (_e68 < AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
                 {
-                    let _e71 = i_14;
+                    let _e71 = i_13;
                     let _e72 = count_1;
                     if (_e71 >= _e72) {
                         break;
                     }
                     let _e74 = total;
-                    let _e75 = i_14;
+                    let _e75 = i_13;
                     let _e78 = list[_e75].z;
                     total = (_e74 + _e78);
                     let _e80 = errors;
-                    let _e81 = i_14;
+                    let _e81 = i_13;
                     let _e84 = list[_e81].w;
                     errors = (_e80 + _e84);
                     let _e86 = mass_3;
-                    let _e87 = i_14;
+                    let _e87 = i_13;
                     let _e89 = mass_over_1[_e87];
                     mass_3 = (_e86 + _e89);
-                    let _e91 = i_14;
+                    let _e91 = i_13;
                     let _e94 = list[_e91].w;
                     let _e95 = worst;
                     let _e98 = list[_e95].w;
                     if (_e94 > _e98) {
-                        let _e100 = i_14;
+                        let _e100 = i_13;
                         worst = _e100;
                     }
                 }
                 continuing {
-                    let _e102 = i_14;
-                    i_14 = (_e102 + 1u);
+                    let _e102 = i_13;
+                    i_13 = (_e102 + 1u);
                 }
             }
             let _e105 = total;
@@ -1835,25 +1800,25 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
     }
     total = 0f;
     loop {
-        let _e201 = i_15;
+        let _e201 = i_14;
         if (_e201 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e204 = i_15;
+            let _e204 = i_14;
             let _e205 = count_1;
             if (_e204 >= _e205) {
                 break;
             }
             let _e207 = total;
-            let _e208 = i_15;
+            let _e208 = i_14;
             let _e211 = list[_e208].z;
             total = (_e207 + _e211);
         }
         continuing {
-            let _e214 = i_15;
-            i_15 = (_e214 + 1u);
+            let _e214 = i_14;
+            i_14 = (_e214 + 1u);
         }
     }
     let _e216 = total;
@@ -1897,13 +1862,13 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
-    var i_16: u32 = 0u;
+    var i_15: u32 = 0u;
     var local_18: bool;
-    var i_17: u32 = 0u;
+    var i_16: u32 = 0u;
     var j_5: u32;
     var total_1: f32 = 0f;
     var lo_1: f32;
-    var i_18: u32 = 0u;
+    var i_17: u32 = 0u;
     var hi_1: f32;
     var local_19: bool;
     var local_20: bool;
@@ -1931,16 +1896,16 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
         let _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
         cuts = array<f32, 4>(_e40.x, _e40.y, _e44.x, _e44.y);
         loop {
-            let _e52 = i_16;
+            let _e52 = i_15;
             if (_e52 < 4u) {
             } else {
                 break;
             }
             {
-                let _e55 = i_16;
+                let _e55 = i_15;
                 let _e57 = cuts[_e55];
                 if (_e57 > half_9.y_lo) {
-                    let _e62 = i_16;
+                    let _e62 = i_15;
                     let _e64 = cuts[_e62];
                     local_18 = (_e64 < half_9.y_hi);
                 } else {
@@ -1948,17 +1913,17 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 }
                 let _e68 = local_18;
                 if !(_e68) {
-                    let _e70 = i_16;
+                    let _e70 = i_15;
                     cuts[_e70] = 2f;
                 }
             }
             continuing {
-                let _e74 = i_16;
-                i_16 = (_e74 + 1u);
+                let _e74 = i_15;
+                i_15 = (_e74 + 1u);
             }
         }
         loop {
-            let _e78 = i_17;
+            let _e78 = i_16;
             if (_e78 < 3u) {
             } else {
                 break;
@@ -1967,7 +1932,7 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 j_5 = 0u;
                 loop {
                     let _e83 = j_5;
-                    let _e85 = i_17;
+                    let _e85 = i_16;
                     if (_e83 < (3u - _e85)) {
                     } else {
                         break;
@@ -1995,23 +1960,23 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 }
             }
             continuing {
-                let _e115 = i_17;
-                i_17 = (_e115 + 1u);
+                let _e115 = i_16;
+                i_16 = (_e115 + 1u);
             }
         }
     }
     lo_1 = half_9.y_lo;
     loop {
-        let _e123 = i_18;
+        let _e123 = i_17;
         if (_e123 < 5u) {
         } else {
             break;
         }
         {
             hi_1 = half_9.y_hi;
-            let _e128 = i_18;
+            let _e128 = i_17;
             if (_e128 < 4u) {
-                let _e133 = i_18;
+                let _e133 = i_17;
                 let _e135 = cuts[_e133];
                 local_19 = (_e135 < 2f);
             } else {
@@ -2019,7 +1984,7 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             }
             let _e139 = local_19;
             if _e139 {
-                let _e140 = i_18;
+                let _e140 = i_17;
                 let _e142 = cuts[_e140];
                 hi_1 = _e142;
             }
@@ -2034,9 +1999,9 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 let _e151 = hi_1;
                 lo_1 = _e151;
             }
-            let _e152 = i_18;
+            let _e152 = i_17;
             if (_e152 < 4u) {
-                let _e157 = i_18;
+                let _e157 = i_17;
                 let _e159 = cuts[_e157];
                 local_20 = (_e159 >= 2f);
             } else {
@@ -2048,8 +2013,8 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             }
         }
         continuing {
-            let _e165 = i_18;
-            i_18 = (_e165 + 1u);
+            let _e165 = i_17;
+            i_17 = (_e165 + 1u);
         }
     }
     let _e167 = total_1;

@@ -27,7 +27,7 @@ pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
 }
 
 /// Depths from this on divide plainly ([`e1_scaled_cf_depth`]).
-const PLAIN_FROM: usize = 6;
+pub const PLAIN_FROM: usize = 6;
 
 /// The continued fraction at an explicit depth `n` (levels `1..=n` plus the tail estimate):
 /// `1/t_1`, `t_k = z + 2k − 1 − k²/t_{k+1}`, `t_{n+1}` the tail, bottom-up.

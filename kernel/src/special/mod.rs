@@ -18,10 +18,10 @@ pub mod paper;
 mod series;
 
 pub use complex::{cdiv, csqrt, C};
-pub use continued_fraction::e1_scaled_cf;
+pub use continued_fraction::{e1_scaled_cf, PLAIN_FROM};
 pub use e1::{e1, e1_scaled, ei, in_series_region};
 pub use en::en_scaled;
-pub use series::{ein, ein_divided_difference, ein_real};
+pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
 
 /// Euler–Mascheroni constant γ (A&S 6.1.3).
 pub const EULER_GAMMA: f64 = 0.577_215_664_901_532_860_606_512_090_082;

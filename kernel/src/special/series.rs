@@ -19,7 +19,7 @@ pub fn ein<T: Real>(z: C<T>) -> C<T> {
 /// `(−1)^{k+1}/(k·k!)`, `k = 1 … 40`: the coefficients of `Ein(x) = Σ c_k x^k`, each from
 /// its predecessor by `c_k = −c_{k−1}·(k−1)/k²` in f64 (at most `k` roundings: the 40th is
 /// within 40 ulps, and its term `x^40/(40·40!)` is below 1e-40 of the sum where it is used).
-const EIN_COEFFS: [f64; 40] = {
+pub const EIN_COEFFS: [f64; 40] = {
     let mut c = [0.0; 40];
     c[0] = 1.0;
     let mut k = 2;
