@@ -501,7 +501,7 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
 fn airlight_q_zero(half: AirlightHalf) -> f32 {
     let big_h = half.big_h;
     let v_s = select(half.y_lo, 1.0 / half.y_hi, half.second);
-    let v_e_infinite = half.second && half.y_lo == 0.0;
+    let v_e_infinite = half.dv_infinite;
     var v_e = half.y_hi;
     if (half.second && !v_e_infinite) { v_e = 1.0 / half.y_lo; }
     let near = big_h == 0.0 || (!v_e_infinite && big_h * airlight_hypot_one(v_e) <= 1.0);
@@ -548,12 +548,12 @@ fn airlight_gauss_rule() -> array<vec2<f32>, AIRLIGHT_HALF_TERMS> {
     return array<vec2<f32>, AIRLIGHT_HALF_TERMS>(@GAUSS_RULE@);
 }
 
-/// The discrete Legendre transform, row k: the weights of g(x_j) ± g(−x_j) (gauss_table.rs).
 /// P_k's monomial coefficients, row k (panels.rs `LEGENDRE_MONOMIAL` scaled by 2^−k; exact).
 fn airlight_legendre_monomial() -> array<f32, @TERMS_SQUARED@> {
     return array<f32, @TERMS_SQUARED@>(@LEGENDRE_MONOMIAL@);
 }
 
+/// The discrete Legendre transform, row k: the weights of g(x_j) ± g(−x_j) (gauss_table.rs).
 fn airlight_legendre_table() -> array<f32, @TRANSFORM_LEN@> {
     return array<f32, @TRANSFORM_LEN@>(@LEGENDRE_TRANSFORM@);
 }
@@ -1034,6 +1034,33 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h: f32, x: f32, j: f32) -> f3
     return sign(j) * exp(AIRLIGHT_LN_2 + log(sigma_s) + log(intensity) - log(h) - x + log(abs(j)));
 }
 
+/// An isotropic segment across the foot in one piece (combined.rs `whole_line`): the first
+/// reformulation's v = u + √(1+u²) over the whole line, two e^z E1(z) values instead of three.
+fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f32 {
+    let h = g.h;
+    let a_s = (g.x_h - g.t_lo) / h;
+    let r_s = airlight_hypot_one(a_s);
+    let v_s = airlight_bounded(a_s);
+    var v_e = AIRLIGHT_FLT_MAX;
+    var dv = AIRLIGHT_FLT_MAX;
+    var infinite = true;
+    // Δv = Δu (v_s + v_e)/(r_s + r_e); an end beyond the float range is the end at t = ∞
+    let u_e = (g.t_hi - g.x_h) / h;
+    if (!g.t_hi_infinite && airlight_is_finite(u_e)) {
+        let r_e = airlight_hypot_one(u_e);
+        let v_end = u_e + r_e;
+        let dv_end = (g.t_hi - g.t_lo) / h * ((v_s + v_end) / (r_s + r_e));
+        if (airlight_is_finite(v_end) && airlight_is_finite(dv_end)) {
+            v_e = v_end;
+            dv = dv_end;
+            infinite = false;
+        }
+    }
+    let half = AirlightHalf(false, airlight_optical(big_h, dv, infinite), v_s, v_e, dv, dv, infinite);
+    let j = airlight_integrand(s, g, -1.0, v_s) * airlight_moment_zero(half);
+    return airlight_weighted(s.sigma_s, s.intensity, h, big_h * r_s, j);
+}
+
 /// The combined formulation on the canonical problem (combined.rs::in_scatter_canonical).
 /// Returns +∞ as FLT_MAX with status INFINITE.
 fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
@@ -1057,6 +1084,9 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
     let isotropic = (s.light_kind == AIRLIGHT_LIGHT_OMNI || (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED && s.light_param_a == 0.0))
         && (s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
             || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
+    if (isotropic && t0 < x_h && (g.t_hi_infinite || x_h < t1)) {
+        return AirlightResult(max(airlight_whole_line(s, g, big_h), 0.0), AIRLIGHT_STATUS_OK);
+    }
     var total = 0.0;
     var f_max = 0.0;
     if (t0 < x_h) {

@@ -147,6 +147,9 @@ where
     let isotropic = phys.light.is_isotropic() && phys.phase.is_isotropic();
     let count = if isotropic { 1 } else { N };
 
+    if isotropic && ei.stabilised() && t0 < x_h && x_h < t1 {
+        return (whole_line(g, phys, big_h, ei), 0);
+    }
     let mut total = T::zero();
     let mut run = Running { f_max: T::zero(), panels: 0 };
     // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
@@ -180,6 +183,33 @@ where
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
     (total.max(T::zero()), run.panels)
+}
+
+/// An isotropic segment across the foot, in one piece: with `F` constant there is nothing to
+/// expand, and the first reformulation's `v = u + √(1+u²)` covers the whole line (`v > 1`
+/// after the foot), so `L = (2σs I/h) e^{−H r_s} F ∫ e^{−H(v−v_s)} dv/(1+v²)` is one closed form
+/// with two `e^z E1(z)` values. Split at the foot it needs three: the foot's value enters both
+/// halves and cancels in their sum.
+fn whole_line<T, D, P, E>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, big_h: T, ei: &E) -> T
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+    E: ExpIntegral<T>,
+{
+    let h = g.h;
+    let (a_s, u_e) = ((g.x_h - g.t0) / h, (g.t1 - g.x_h) / h);
+    let (r_s, r_e) = (hypot1(a_s), hypot1(u_e));
+    let v_s = bounded(a_s);
+    let v_e = u_e + r_e;
+    // Δv = Δu (v_s + v_e)/(r_s + r_e), without cancellation; an end beyond the float range is
+    // the end at t = ∞ (as in the second half)
+    let dv = (g.t1 - g.t0) / h * ((v_s + v_e) / (r_s + r_e));
+    let (v_e, dv) = if v_e.is_finite() && dv.is_finite() { (v_e, dv) } else { (T::infinity(), T::infinity()) };
+    let half = Half { second: false, big_h: optical(big_h, dv), y_lo: v_s, y_hi: v_e, dy: dv, dv };
+    let m: [T; 1] = moments(&half, ei, 1);
+    let f = HalfIntegrand { sigma: -T::one(), exact_sides: true, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
+    weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, f.eval(v_s) * m[0])
 }
 
 /// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the

@@ -245,8 +245,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_14 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_14 * s_14);
+    float s_15 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_15 * s_15);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -266,7 +266,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_14) * _e35);
+    return ((2.0 * s_15) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -769,122 +769,116 @@ float airlight_hypot_one(float a_3) {
 }
 
 float airlight_q_zero(AirlightHalf half_1) {
-    bool local_1 = false;
     float v_e = 0.0;
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
-    bool local_4 = false;
     float d_im = 0.0;
     float d_re = 0.0;
-    bool local_5 = false;
-    float big_h_1 = half_1.big_h;
+    bool local_4 = false;
+    float big_h_2 = half_1.big_h;
     float v_s = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
+    bool v_e_infinite = half_1.dv_infinite;
+    v_e = half_1.y_hi;
     if (half_1.second) {
-        local_1 = (half_1.y_lo == 0.0);
+        local_1 = !(v_e_infinite);
     } else {
         local_1 = false;
     }
-    bool v_e_infinite = local_1;
-    v_e = half_1.y_hi;
-    if (half_1.second) {
-        local_2 = !(v_e_infinite);
-    } else {
-        local_2 = false;
-    }
-    bool _e23 = local_2;
-    if (_e23) {
+    bool _e16 = local_1;
+    if (_e16) {
         v_e = (1.0 / half_1.y_lo);
     }
-    if (!((big_h_1 == 0.0))) {
+    if (!((big_h_2 == 0.0))) {
         if (!(v_e_infinite)) {
-            float _e35 = v_e;
-            float _e36 = airlight_hypot_one(_e35);
-            local_4 = ((big_h_1 * _e36) <= 1.0);
+            float _e28 = v_e;
+            float _e29 = airlight_hypot_one(_e28);
+            local_3 = ((big_h_2 * _e29) <= 1.0);
         } else {
-            local_4 = false;
+            local_3 = false;
         }
-        bool _e41 = local_4;
-        local_3 = _e41;
+        bool _e34 = local_3;
+        local_2 = _e34;
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool near_1 = local_3;
+    bool near_1 = local_2;
     if (near_1) {
         if (!(v_e_infinite)) {
+            float _e43 = v_e;
+            float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s * _e43))));
+            d_im = _e48;
             float _e50 = v_e;
-            float _e55 = airlight_atan((half_1.dv / (1.0 + (v_s * _e50))));
-            d_im = _e55;
-            float _e57 = v_e;
-            float _e64 = airlight_log1p(((half_1.dv * (v_s + _e57)) / (1.0 + (v_s * v_s))));
-            d_re = (0.5 * _e64);
+            float _e57 = airlight_log1p(((half_1.dv * (v_s + _e50)) / (1.0 + (v_s * v_s))));
+            d_re = (0.5 * _e57);
         } else {
-            float _e69 = airlight_atan((1.0 / v_s));
-            d_im = _e69;
+            float _e62 = airlight_atan((1.0 / v_s));
+            d_im = _e62;
         }
-        if ((big_h_1 == 0.0)) {
-            float _e72 = d_im;
-            return _e72;
+        if ((big_h_2 == 0.0)) {
+            float _e65 = d_im;
+            return _e65;
         }
-        vec2 z_s = vec2((big_h_1 * v_s), -(big_h_1));
-        float _e76 = v_e;
-        vec2 z_e = vec2((big_h_1 * _e76), -(big_h_1));
-        vec2 _e80 = airlight_ein_divided_difference(z_s, z_e);
-        vec2 _e81 = airlight_cos_sin(big_h_1);
-        vec2 rot = vec2(_e81.x, -(_e81.y));
-        float _e86 = d_re;
-        float _e87 = d_im;
-        vec2 _e93 = airlight_cmul(rot, (vec2(_e86, _e87) - (_e80 * (big_h_1 * half_1.dv))));
-        return (_e93.y * exp((big_h_1 * v_s)));
+        vec2 z_s = vec2((big_h_2 * v_s), -(big_h_2));
+        float _e69 = v_e;
+        vec2 z_e = vec2((big_h_2 * _e69), -(big_h_2));
+        vec2 _e73 = airlight_ein_divided_difference(z_s, z_e);
+        vec2 _e74 = airlight_cos_sin(big_h_2);
+        vec2 rot = vec2(_e74.x, -(_e74.y));
+        float _e79 = d_re;
+        float _e80 = d_im;
+        vec2 _e86 = airlight_cmul(rot, (vec2(_e79, _e80) - (_e73 * (big_h_2 * half_1.dv))));
+        return (_e86.y * exp((big_h_2 * v_s)));
     }
-    vec2 _e101 = airlight_e1_scaled(vec2((big_h_1 * v_s), -(big_h_1)));
+    vec2 _e94 = airlight_e1_scaled(vec2((big_h_2 * v_s), -(big_h_2)));
     if (!(v_e_infinite)) {
-        float _e105 = v_e;
-        bool _e107 = airlight_is_finite((big_h_1 * _e105));
-        local_5 = _e107;
+        float _e98 = v_e;
+        bool _e100 = airlight_is_finite((big_h_2 * _e98));
+        local_4 = _e100;
     } else {
-        local_5 = false;
+        local_4 = false;
     }
-    bool _e109 = local_5;
-    if (_e109) {
-        float _e110 = v_e;
-        vec2 _e114 = airlight_e1_scaled(vec2((big_h_1 * _e110), -(big_h_1)));
-        return (_e101.y - (_e114.y * exp((-(big_h_1) * half_1.dv))));
+    bool _e102 = local_4;
+    if (_e102) {
+        float _e103 = v_e;
+        vec2 _e107 = airlight_e1_scaled(vec2((big_h_2 * _e103), -(big_h_2)));
+        return (_e94.y - (_e107.y * exp((-(big_h_2) * half_1.dv))));
     }
-    return _e101.y;
+    return _e94.y;
 }
 
 float airlight_moment_zero(AirlightHalf half_2) {
+    bool local_5 = false;
     bool local_6 = false;
     bool local_7 = false;
     bool local_8 = false;
-    bool local_9 = false;
     if (!((half_2.dy > 0.0))) {
         return 0.0;
     }
     if (!(half_2.dv_infinite)) {
-        local_6 = ((half_2.big_h * half_2.dv) <= 1.0);
+        local_5 = ((half_2.big_h * half_2.dv) <= 1.0);
+    } else {
+        local_5 = false;
+    }
+    bool short_exp = local_5;
+    if ((half_2.dy <= 0.25)) {
+        if (!(!(half_2.second))) {
+            local_7 = (half_2.dy <= (half_2.y_lo * 0.5));
+        } else {
+            local_7 = true;
+        }
+        bool _e33 = local_7;
+        local_6 = _e33;
     } else {
         local_6 = false;
     }
-    bool short_exp = local_6;
-    if ((half_2.dy <= 0.25)) {
-        if (!(!(half_2.second))) {
-            local_8 = (half_2.dy <= (half_2.y_lo * 0.5));
-        } else {
-            local_8 = true;
-        }
-        bool _e33 = local_8;
-        local_7 = _e33;
-    } else {
-        local_7 = false;
-    }
-    bool short_len = local_7;
+    bool short_len = local_6;
     if (short_exp) {
-        local_9 = short_len;
+        local_8 = short_len;
     } else {
-        local_9 = false;
+        local_8 = false;
     }
-    bool _e39 = local_9;
+    bool _e39 = local_8;
     if (_e39) {
         float _e40 = airlight_moment_gauss(half_2);
         return _e40;
@@ -1168,7 +1162,7 @@ float airlight_tail_estimate(float c_3[4]) {
 }
 
 float airlight_error_factor(float c_4[4], float m_1[4]) {
-    bool local_10 = false;
+    bool local_9 = false;
     float aliasing = 1.0;
     uint i_7 = 0u;
     if (!((m_1[0] > 0.0))) {
@@ -1177,11 +1171,11 @@ float airlight_error_factor(float c_4[4], float m_1[4]) {
     float last = (abs(c_4[3]) + abs(c_4[2]));
     float before = (abs(c_4[1]) + abs(c_4[0]));
     if (!(!((before > 0.0)))) {
-        local_10 = !((last < before));
+        local_9 = !((last < before));
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e26 = local_10;
+    bool _e26 = local_9;
     if (_e26) {
         return 1.0;
     }
@@ -1450,9 +1444,9 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     float shifted = 0.0;
     float s_b[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float s_a[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_11 = false;
+    bool local_10 = false;
     float decay = 0.0;
-    bool local_12 = false;
+    bool local_11 = false;
     float sum_6 = 0.0;
     float mass_2 = 0.0;
     float ratio_1 = 1.0;
@@ -1554,31 +1548,31 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             q = _e102;
         }
     }
-    float big_h_2 = half_6.big_h;
+    float big_h_3 = half_6.big_h;
     float _e107[16] = airlight_zero_scratch();
     s_b = _e107;
-    airlight_en_scaled((big_h_2 / b_6), 6u, s_b);
+    airlight_en_scaled((big_h_3 / b_6), 6u, s_b);
     float _e111[16] = airlight_zero_scratch();
     s_a = _e111;
     if ((a_7 > 0.0)) {
-        bool _e118 = airlight_is_finite((big_h_2 / a_7));
-        local_11 = _e118;
+        bool _e118 = airlight_is_finite((big_h_3 / a_7));
+        local_10 = _e118;
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool far_1 = local_11;
+    bool far_1 = local_10;
     if (far_1) {
-        decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_3) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if (far_1) {
         float _e131 = decay;
-        local_12 = (_e131 > 0.0);
+        local_11 = (_e131 > 0.0);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e135 = local_12;
+    bool _e135 = local_11;
     if (_e135) {
-        airlight_en_scaled((big_h_2 / a_7), 6u, s_a);
+        airlight_en_scaled((big_h_3 / a_7), 6u, s_a);
     }
     if ((b_6 > 0.0)) {
         ab = (a_7 / b_6);
@@ -1669,24 +1663,24 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
 }
 
 AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_7, float a_8, float b_7) {
+    bool local_12 = false;
     bool local_13 = false;
-    bool local_14 = false;
     if (half_7.second) {
-        local_13 = (a_8 <= (b_7 * 0.25));
+        local_12 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e13 = local_13;
+    bool _e13 = local_12;
     if (_e13) {
         AirlightPanel _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
-        local_14 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_13 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e26 = local_14;
+    bool _e26 = local_13;
     if (_e26) {
         AirlightPanel _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e27;
@@ -1706,9 +1700,9 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
     float mass_3 = 0.0;
     uint worst = 0u;
     uint i_13 = 0u;
+    bool local_14 = false;
     bool local_15 = false;
     bool local_16 = false;
-    bool local_17 = false;
     uint i_14 = 0u;
     if (!((hi > lo))) {
         return 0.0;
@@ -1784,25 +1778,25 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
             if (!((_e114 <= goal))) {
                 uint _e119 = worst;
                 float _e122 = list[_e119].w;
-                local_15 = !((_e122 > 0.0));
+                local_14 = !((_e122 > 0.0));
+            } else {
+                local_14 = true;
+            }
+            bool _e127 = local_14;
+            if (!(_e127)) {
+                uint _e131 = budget;
+                local_15 = (_e131 < 2u);
             } else {
                 local_15 = true;
             }
-            bool _e127 = local_15;
-            if (!(_e127)) {
-                uint _e131 = budget;
-                local_16 = (_e131 < 2u);
+            bool _e135 = local_15;
+            if (!(_e135)) {
+                uint _e139 = count_1;
+                local_16 = (_e139 == AIRLIGHT_PANEL_LIST);
             } else {
                 local_16 = true;
             }
-            bool _e135 = local_16;
-            if (!(_e135)) {
-                uint _e139 = count_1;
-                local_17 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_17 = true;
-            }
-            bool _e143 = local_17;
+            bool _e143 = local_16;
             if (_e143) {
                 float _e144 = total;
                 return _e144;
@@ -1901,15 +1895,15 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_15 = 0u;
-    bool local_18 = false;
+    bool local_17 = false;
     uint i_16 = 0u;
     uint j_5 = 0u;
     float total_1 = 0.0;
     float lo_1 = 0.0;
     uint i_17 = 0u;
     float hi_1 = 0.0;
+    bool local_18 = false;
     bool local_19 = false;
-    bool local_20 = false;
     if (isotropic) {
         float _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_9);
@@ -1950,11 +1944,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
                 if ((_e57 > half_9.y_lo)) {
                     uint _e62 = i_15;
                     float _e64 = cuts[_e62];
-                    local_18 = (_e64 < half_9.y_hi);
+                    local_17 = (_e64 < half_9.y_hi);
                 } else {
-                    local_18 = false;
+                    local_17 = false;
                 }
-                bool _e68 = local_18;
+                bool _e68 = local_17;
                 if (!(_e68)) {
                     uint _e70 = i_15;
                     cuts[_e70] = 2.0;
@@ -2027,11 +2021,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             if ((_e128 < 4u)) {
                 uint _e133 = i_17;
                 float _e135 = cuts[_e133];
-                local_19 = (_e135 < 2.0);
+                local_18 = (_e135 < 2.0);
             } else {
-                local_19 = false;
+                local_18 = false;
             }
-            bool _e139 = local_19;
+            bool _e139 = local_18;
             if (_e139) {
                 uint _e140 = i_17;
                 float _e142 = cuts[_e140];
@@ -2052,11 +2046,11 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             if ((_e152 < 4u)) {
                 uint _e157 = i_17;
                 float _e159 = cuts[_e157];
-                local_20 = (_e159 >= 2.0);
+                local_19 = (_e159 >= 2.0);
             } else {
-                local_20 = false;
+                local_19 = false;
             }
-            bool _e163 = local_20;
+            bool _e163 = local_19;
             if (_e163) {
                 break;
             }
@@ -2079,16 +2073,16 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, fl
 }
 
 float airlight_on_line(AirlightScene s_8, AirlightCanonical g_10) {
-    bool local_21 = false;
+    bool local_20 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
     if (!(g_10.t_hi_infinite)) {
-        local_21 = (g_10.x_h > g_10.t_hi);
+        local_20 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e10 = local_21;
+    bool _e10 = local_20;
     if (_e10) {
         float _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         float _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1.0);
@@ -2142,61 +2136,115 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonical g_11) {
+float airlight_whole_line(AirlightScene s_9, AirlightCanonical g_11, float big_h_1) {
+    float v_e_1 = AIRLIGHT_FLT_MAX;
+    float dv_2 = AIRLIGHT_FLT_MAX;
+    bool infinite_1 = true;
+    bool local_21 = false;
     bool local_22 = false;
+    float h_2 = g_11.h;
+    float a_s = ((g_11.x_h - g_11.t_lo) / h_2);
+    float _e8 = airlight_hypot_one(a_s);
+    float _e9 = airlight_bounded(a_s);
+    float u_e = ((g_11.t_hi - g_11.x_h) / h_2);
+    if (!(g_11.t_hi_infinite)) {
+        bool _e24 = airlight_is_finite(u_e);
+        local_21 = _e24;
+    } else {
+        local_21 = false;
+    }
+    bool _e26 = local_21;
+    if (_e26) {
+        float _e27 = airlight_hypot_one(u_e);
+        float v_end = (u_e + _e27);
+        float dv_end = (((g_11.t_hi - g_11.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        bool _e37 = airlight_is_finite(v_end);
+        if (_e37) {
+            bool _e40 = airlight_is_finite(dv_end);
+            local_22 = _e40;
+        } else {
+            local_22 = false;
+        }
+        bool _e42 = local_22;
+        if (_e42) {
+            v_e_1 = v_end;
+            dv_2 = dv_end;
+            infinite_1 = false;
+        }
+    }
+    float _e45 = dv_2;
+    bool _e46 = infinite_1;
+    float _e47 = airlight_optical(big_h_1, _e45, _e46);
+    float _e48 = v_e_1;
+    float _e49 = dv_2;
+    float _e50 = dv_2;
+    bool _e51 = infinite_1;
+    AirlightHalf half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    float _e54 = airlight_integrand(s_9, g_11, -1.0, _e9);
+    float _e55 = airlight_moment_zero(half_10);
+    float j_8 = (_e54 * _e55);
+    float _e60 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_1 * _e8), j_8);
+    return _e60;
+}
+
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonical g_12) {
     bool local_23 = false;
     bool local_24 = false;
     bool local_25 = false;
-    float gap = 0.0;
     bool local_26 = false;
+    float gap = 0.0;
     bool local_27 = false;
     bool local_28 = false;
     bool local_29 = false;
     bool local_30 = false;
     bool local_31 = false;
     bool local_32 = false;
+    bool local_33 = false;
+    bool local_34 = false;
+    bool local_35 = false;
+    bool local_36 = false;
     float total_2 = 0.0;
     float f_max_6 = 0.0;
     float t_end = 0.0;
-    bool local_33 = false;
-    bool local_34 = false;
+    bool local_37 = false;
+    bool local_38 = false;
     float y_lo = 0.0;
-    float dv_2 = 0.0;
+    float dv_3 = 0.0;
     float dy = 0.0;
-    bool infinite_1 = true;
-    bool local_35 = false;
-    bool local_36 = false;
-    float t0_ = g_11.t_lo;
-    float t1_ = g_11.t_hi;
-    if (!(g_11.t_hi_infinite)) {
-        local_22 = (t1_ > t0_);
-    } else {
-        local_22 = true;
-    }
-    bool _e10 = local_22;
-    if (!(!(_e10))) {
-        local_23 = ((s_9.sigma_s * s_9.intensity) == 0.0);
+    bool infinite_2 = true;
+    bool local_39 = false;
+    bool local_40 = false;
+    float t0_ = g_12.t_lo;
+    float t1_ = g_12.t_hi;
+    if (!(g_12.t_hi_infinite)) {
+        local_23 = (t1_ > t0_);
     } else {
         local_23 = true;
     }
-    bool _e21 = local_23;
+    bool _e10 = local_23;
+    if (!(!(_e10))) {
+        local_24 = ((s_10.sigma_s * s_10.intensity) == 0.0);
+    } else {
+        local_24 = true;
+    }
+    bool _e21 = local_24;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
-    float h_2 = g_11.h;
-    float x_h = g_11.x_h;
+    float h_3 = g_12.h;
+    float x_h = g_12.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_11.t_hi_infinite)) {
-            local_25 = (x_h <= t1_);
+        if (!(g_12.t_hi_infinite)) {
+            local_26 = (x_h <= t1_);
         } else {
-            local_25 = true;
+            local_26 = true;
         }
-        bool _e36 = local_25;
-        local_24 = _e36;
+        bool _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_24 = false;
+        local_25 = false;
     }
-    bool inside = local_24;
+    bool inside = local_25;
     if ((x_h < t0_)) {
         gap = (t0_ - x_h);
     } else {
@@ -2206,157 +2254,179 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_9, AirlightCanonica
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_26 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_27 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_26 = false;
+        local_27 = false;
     }
-    bool _e55 = local_26;
+    bool _e55 = local_27;
     if (_e55) {
-        float _e56 = airlight_on_line(s_9, g_11);
+        float _e56 = airlight_on_line(s_10, g_12);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
-    if ((h_2 == 0.0)) {
+    if ((h_3 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_3 = (s_9.sigma_t * h_2);
-    if (!((s_9.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_28 = (s_9.light_param_a == 0.0);
+    float big_h_4 = (s_10.sigma_t * h_3);
+    if (!((s_10.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_29 = (s_10.light_param_a == 0.0);
         } else {
-            local_28 = false;
+            local_29 = false;
         }
-        bool _e83 = local_28;
-        local_27 = _e83;
+        bool _e83 = local_29;
+        local_28 = _e83;
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    bool _e85 = local_27;
+    bool _e85 = local_28;
     if (_e85) {
-        if (!((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_31 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_32 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_31 = true;
+                local_32 = true;
             }
-            bool _e104 = local_31;
+            bool _e104 = local_32;
             if (_e104) {
-                local_32 = (s_9.phase_param_a == 0.0);
+                local_33 = (s_10.phase_param_a == 0.0);
             } else {
-                local_32 = false;
+                local_33 = false;
             }
-            bool _e111 = local_32;
-            local_30 = _e111;
+            bool _e111 = local_33;
+            local_31 = _e111;
         } else {
-            local_30 = true;
+            local_31 = true;
         }
-        bool _e113 = local_30;
-        local_29 = _e113;
+        bool _e113 = local_31;
+        local_30 = _e113;
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    bool isotropic_1 = local_29;
-    if ((t0_ < x_h)) {
-        float a_s = ((x_h - t0_) / h_2);
-        t_end = x_h;
-        if (!(g_11.t_hi_infinite)) {
-            local_33 = (t1_ < x_h);
+    bool isotropic_1 = local_30;
+    if (isotropic_1) {
+        local_34 = (t0_ < x_h);
+    } else {
+        local_34 = false;
+    }
+    bool _e120 = local_34;
+    if (_e120) {
+        if (!(g_12.t_hi_infinite)) {
+            local_36 = (x_h < t1_);
         } else {
-            local_33 = false;
+            local_36 = true;
         }
-        bool _e130 = local_33;
-        if (_e130) {
+        bool _e129 = local_36;
+        local_35 = _e129;
+    } else {
+        local_35 = false;
+    }
+    bool _e131 = local_35;
+    if (_e131) {
+        float _e132 = airlight_whole_line(s_10, g_12, big_h_4);
+        return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
+    }
+    if ((t0_ < x_h)) {
+        float a_s_1 = ((x_h - t0_) / h_3);
+        t_end = x_h;
+        if (!(g_12.t_hi_infinite)) {
+            local_37 = (t1_ < x_h);
+        } else {
+            local_37 = false;
+        }
+        bool _e151 = local_37;
+        if (_e151) {
             t_end = t1_;
         }
-        float _e131 = t_end;
-        float a_e = ((x_h - _e131) / h_2);
-        float _e134 = airlight_hypot_one(a_s);
-        float _e135 = airlight_hypot_one(a_e);
-        float _e136 = airlight_bounded(a_s);
-        float _e137 = airlight_bounded(a_e);
-        float _e138 = t_end;
-        float dy_1 = (((((_e138 - t0_) / h_2) * (1.0 + ((a_s + a_e) / (_e134 + _e135)))) * _e136) * _e137);
-        float _e151 = airlight_optical(big_h_3, dy_1, false);
-        AirlightHalf half_10 = AirlightHalf(false, _e151, _e136, _e137, dy_1, dy_1, false);
-        float _e155 = airlight_half(s_9, g_11, -1.0, half_10, isotropic_1, f_max_6);
-        float _e156 = total_2;
-        float _e160 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_3 * _e134), _e155);
-        total_2 = (_e156 + _e160);
+        float _e152 = t_end;
+        float a_e = ((x_h - _e152) / h_3);
+        float _e155 = airlight_hypot_one(a_s_1);
+        float _e156 = airlight_hypot_one(a_e);
+        float _e157 = airlight_bounded(a_s_1);
+        float _e158 = airlight_bounded(a_e);
+        float _e159 = t_end;
+        float dy_1 = (((((_e159 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
+        float _e172 = airlight_optical(big_h_4, dy_1, false);
+        AirlightHalf half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
+        float _e176 = airlight_half(s_10, g_12, -1.0, half_11, isotropic_1, f_max_6);
+        float _e177 = total_2;
+        float _e181 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (big_h_4 * _e155), _e176);
+        total_2 = (_e177 + _e181);
     }
-    if (!(g_11.t_hi_infinite)) {
-        local_34 = (t1_ > x_h);
+    if (!(g_12.t_hi_infinite)) {
+        local_38 = (t1_ > x_h);
     } else {
-        local_34 = true;
+        local_38 = true;
     }
-    bool _e168 = local_34;
-    if (_e168) {
+    bool _e189 = local_38;
+    if (_e189) {
         float t_start = max(t0_, x_h);
-        float a_s_1 = ((t_start - x_h) / h_2);
-        float _e172 = airlight_hypot_one(a_s_1);
-        float _e173 = airlight_bounded(a_s_1);
-        dy = _e173;
-        float a_e_1 = ((t1_ - x_h) / h_2);
-        if (!(g_11.t_hi_infinite)) {
-            bool _e187 = airlight_is_finite(a_e_1);
-            local_35 = _e187;
+        float a_s_2 = ((t_start - x_h) / h_3);
+        float _e193 = airlight_hypot_one(a_s_2);
+        float _e194 = airlight_bounded(a_s_2);
+        dy = _e194;
+        float a_e_1 = ((t1_ - x_h) / h_3);
+        if (!(g_12.t_hi_infinite)) {
+            bool _e208 = airlight_is_finite(a_e_1);
+            local_39 = _e208;
         } else {
-            local_35 = false;
+            local_39 = false;
         }
-        bool _e189 = local_35;
-        if (_e189) {
-            float _e190 = airlight_bounded(a_e_1);
-            float _e194 = airlight_hypot_one(a_e_1);
-            float dv_end = (((t1_ - t_start) / h_2) * (1.0 + ((a_s_1 + a_e_1) / (_e172 + _e194))));
-            if ((_e190 > 0.0)) {
-                bool _e204 = airlight_is_finite(dv_end);
-                local_36 = _e204;
+        bool _e210 = local_39;
+        if (_e210) {
+            float _e211 = airlight_bounded(a_e_1);
+            float _e215 = airlight_hypot_one(a_e_1);
+            float dv_end_1 = (((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e193 + _e215))));
+            if ((_e211 > 0.0)) {
+                bool _e225 = airlight_is_finite(dv_end_1);
+                local_40 = _e225;
             } else {
-                local_36 = false;
+                local_40 = false;
             }
-            bool _e206 = local_36;
-            if (_e206) {
-                y_lo = _e190;
-                dv_2 = dv_end;
-                float _e207 = dv_2;
-                float _e208 = y_lo;
-                dy = ((_e207 * _e208) * _e173);
-                infinite_1 = false;
+            bool _e227 = local_40;
+            if (_e227) {
+                y_lo = _e211;
+                dv_3 = dv_end_1;
+                float _e228 = dv_3;
+                float _e229 = y_lo;
+                dy = ((_e228 * _e229) * _e194);
+                infinite_2 = false;
             }
         }
-        float _e213 = dv_2;
-        bool _e214 = infinite_1;
-        float _e215 = airlight_optical(big_h_3, _e213, _e214);
-        float _e216 = y_lo;
-        float _e217 = dy;
-        float _e218 = dv_2;
-        bool _e219 = infinite_1;
-        AirlightHalf half_11 = AirlightHalf(true, _e215, _e216, _e173, _e217, _e218, _e219);
-        float _e222 = airlight_half(s_9, g_11, 1.0, half_11, isotropic_1, f_max_6);
-        float _e223 = total_2;
-        float _e231 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, ((s_9.sigma_t * (t_start - t0_)) + (big_h_3 * _e172)), _e222);
-        total_2 = (_e223 + _e231);
+        float _e234 = dv_3;
+        bool _e235 = infinite_2;
+        float _e236 = airlight_optical(big_h_4, _e234, _e235);
+        float _e237 = y_lo;
+        float _e238 = dy;
+        float _e239 = dv_3;
+        bool _e240 = infinite_2;
+        AirlightHalf half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
+        float _e243 = airlight_half(s_10, g_12, 1.0, half_12, isotropic_1, f_max_6);
+        float _e244 = total_2;
+        float _e252 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, ((s_10.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
+        total_2 = (_e244 + _e252);
     }
-    float _e233 = total_2;
-    return AirlightResult(max(_e233, 0.0), AIRLIGHT_STATUS_OK);
+    float _e254 = total_2;
+    return AirlightResult(max(_e254, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_37 = false;
-    bool local_38 = false;
+    bool local_41 = false;
+    bool local_42 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_37 = _e6;
+        local_41 = _e6;
     } else {
-        local_37 = false;
+        local_41 = false;
     }
-    bool _e8 = local_37;
+    bool _e8 = local_41;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_38 = _e12;
+        local_42 = _e12;
     } else {
-        local_38 = false;
+        local_42 = false;
     }
-    bool _e14 = local_38;
+    bool _e14 = local_42;
     return _e14;
 }
 
@@ -2369,15 +2439,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_39 = false;
+    bool local_43 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_39 = _e6;
+        local_43 = _e6;
     } else {
-        local_39 = false;
+        local_43 = false;
     }
-    bool _e8 = local_39;
+    bool _e8 = local_43;
     return _e8;
 }
 
@@ -2387,22 +2457,18 @@ vec3 airlight_normalize(vec3 v_3) {
     return (u_1 / vec3(length(u_1)));
 }
 
-bool airlight_valid(AirlightScene s_10) {
-    bool local_40 = false;
-    bool local_41 = false;
-    bool local_42 = false;
-    bool local_43 = false;
+bool airlight_valid(AirlightScene s_11) {
     bool local_44 = false;
     bool local_45 = false;
     bool local_46 = false;
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
-    bool ok = false;
     bool local_50 = false;
     bool local_51 = false;
     bool local_52 = false;
     bool local_53 = false;
+    bool ok = false;
     bool local_54 = false;
     bool local_55 = false;
     bool local_56 = false;
@@ -2416,171 +2482,175 @@ bool airlight_valid(AirlightScene s_10) {
     bool local_64 = false;
     bool local_65 = false;
     bool local_66 = false;
-    bool _e2 = airlight_vec_finite(s_10.origin);
+    bool local_67 = false;
+    bool local_68 = false;
+    bool local_69 = false;
+    bool local_70 = false;
+    bool _e2 = airlight_vec_finite(s_11.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_10.dir);
-        local_40 = _e6;
-    } else {
-        local_40 = false;
-    }
-    bool _e8 = local_40;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_10.dir);
-        local_41 = _e12;
-    } else {
-        local_41 = false;
-    }
-    bool _e14 = local_41;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_10.t_min);
-        local_42 = _e18;
-    } else {
-        local_42 = false;
-    }
-    bool _e20 = local_42;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_10.light_position);
-        local_43 = _e24;
-    } else {
-        local_43 = false;
-    }
-    bool _e26 = local_43;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_10.intensity);
-        local_44 = _e30;
+        bool _e6 = airlight_vec_finite(s_11.dir);
+        local_44 = _e6;
     } else {
         local_44 = false;
     }
-    bool _e32 = local_44;
-    if (_e32) {
-        local_45 = (s_10.intensity >= 0.0);
+    bool _e8 = local_44;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_11.dir);
+        local_45 = _e12;
     } else {
         local_45 = false;
     }
-    bool _e39 = local_45;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_10.sigma_s);
-        local_46 = _e43;
+    bool _e14 = local_45;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_11.t_min);
+        local_46 = _e18;
     } else {
         local_46 = false;
     }
-    bool _e45 = local_46;
-    if (_e45) {
-        local_47 = (s_10.sigma_s >= 0.0);
+    bool _e20 = local_46;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_11.light_position);
+        local_47 = _e24;
     } else {
         local_47 = false;
     }
-    bool _e52 = local_47;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_10.sigma_t);
-        local_48 = _e56;
+    bool _e26 = local_47;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_11.intensity);
+        local_48 = _e30;
     } else {
         local_48 = false;
     }
-    bool _e58 = local_48;
-    if (_e58) {
-        local_49 = (s_10.sigma_t >= 0.0);
+    bool _e32 = local_48;
+    if (_e32) {
+        local_49 = (s_11.intensity >= 0.0);
     } else {
         local_49 = false;
     }
-    bool _e65 = local_49;
+    bool _e39 = local_49;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_11.sigma_s);
+        local_50 = _e43;
+    } else {
+        local_50 = false;
+    }
+    bool _e45 = local_50;
+    if (_e45) {
+        local_51 = (s_11.sigma_s >= 0.0);
+    } else {
+        local_51 = false;
+    }
+    bool _e52 = local_51;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_11.sigma_t);
+        local_52 = _e56;
+    } else {
+        local_52 = false;
+    }
+    bool _e58 = local_52;
+    if (_e58) {
+        local_53 = (s_11.sigma_t >= 0.0);
+    } else {
+        local_53 = false;
+    }
+    bool _e65 = local_53;
     ok = _e65;
-    if (((s_10.flags & 1u) == 0u)) {
+    if (((s_11.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_10.t_max);
-            local_50 = _e76;
-        } else {
-            local_50 = false;
-        }
-        bool _e78 = local_50;
-        if (_e78) {
-            local_51 = (s_10.t_min <= s_10.t_max);
-        } else {
-            local_51 = false;
-        }
-        bool _e85 = local_51;
-        ok = _e85;
-    }
-    if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e89 = ok;
-        if (_e89) {
-            bool _e93 = airlight_vec_finite(s_10.light_axis);
-            local_52 = _e93;
-        } else {
-            local_52 = false;
-        }
-        bool _e95 = local_52;
-        if (_e95) {
-            bool _e99 = airlight_normalisable(s_10.light_axis);
-            local_53 = _e99;
-        } else {
-            local_53 = false;
-        }
-        bool _e101 = local_53;
-        if (_e101) {
-            local_54 = (s_10.light_param_a >= 0.0);
+            bool _e76 = airlight_is_finite(s_11.t_max);
+            local_54 = _e76;
         } else {
             local_54 = false;
         }
-        bool _e108 = local_54;
-        if (_e108) {
-            local_55 = (s_10.light_param_a <= 1024.0);
+        bool _e78 = local_54;
+        if (_e78) {
+            local_55 = (s_11.t_min <= s_11.t_max);
         } else {
             local_55 = false;
         }
-        bool _e115 = local_55;
-        if (_e115) {
-            local_56 = (fract((s_10.light_param_a * 0.5)) == 0.0);
+        bool _e85 = local_55;
+        ok = _e85;
+    }
+    if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e89 = ok;
+        if (_e89) {
+            bool _e93 = airlight_vec_finite(s_11.light_axis);
+            local_56 = _e93;
         } else {
             local_56 = false;
         }
-        bool _e125 = local_56;
+        bool _e95 = local_56;
+        if (_e95) {
+            bool _e99 = airlight_normalisable(s_11.light_axis);
+            local_57 = _e99;
+        } else {
+            local_57 = false;
+        }
+        bool _e101 = local_57;
+        if (_e101) {
+            local_58 = (s_11.light_param_a >= 0.0);
+        } else {
+            local_58 = false;
+        }
+        bool _e108 = local_58;
+        if (_e108) {
+            local_59 = (s_11.light_param_a <= 1024.0);
+        } else {
+            local_59 = false;
+        }
+        bool _e115 = local_59;
+        if (_e115) {
+            local_60 = (fract((s_11.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_60 = false;
+        }
+        bool _e125 = local_60;
         ok = _e125;
     } else {
-        if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e129 = ok;
             if (_e129) {
-                bool _e133 = airlight_vec_finite(s_10.light_axis);
-                local_57 = _e133;
-            } else {
-                local_57 = false;
-            }
-            bool _e135 = local_57;
-            if (_e135) {
-                bool _e139 = airlight_normalisable(s_10.light_axis);
-                local_58 = _e139;
-            } else {
-                local_58 = false;
-            }
-            bool _e141 = local_58;
-            if (_e141) {
-                local_59 = (s_10.light_param_b < s_10.light_param_a);
-            } else {
-                local_59 = false;
-            }
-            bool _e148 = local_59;
-            if (_e148) {
-                local_60 = (s_10.light_param_b >= -1.0);
-            } else {
-                local_60 = false;
-            }
-            bool _e155 = local_60;
-            if (_e155) {
-                local_61 = (s_10.light_param_a <= 1.0);
+                bool _e133 = airlight_vec_finite(s_11.light_axis);
+                local_61 = _e133;
             } else {
                 local_61 = false;
             }
-            bool _e162 = local_61;
+            bool _e135 = local_61;
+            if (_e135) {
+                bool _e139 = airlight_normalisable(s_11.light_axis);
+                local_62 = _e139;
+            } else {
+                local_62 = false;
+            }
+            bool _e141 = local_62;
+            if (_e141) {
+                local_63 = (s_11.light_param_b < s_11.light_param_a);
+            } else {
+                local_63 = false;
+            }
+            bool _e148 = local_63;
+            if (_e148) {
+                local_64 = (s_11.light_param_b >= -1.0);
+            } else {
+                local_64 = false;
+            }
+            bool _e155 = local_64;
+            if (_e155) {
+                local_65 = (s_11.light_param_a <= 1.0);
+            } else {
+                local_65 = false;
+            }
+            bool _e162 = local_65;
             ok = _e162;
         } else {
-            if ((s_10.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_11.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_10.phase_param_a) < 1.0);
-    switch(s_10.phase_kind) {
+    bool g_ok = (abs(s_11.phase_param_a) < 1.0);
+    switch(s_11.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -2590,40 +2660,40 @@ bool airlight_valid(AirlightScene s_10) {
         case 4u: {
             bool _e172 = ok;
             if (_e172) {
-                local_62 = g_ok;
+                local_66 = g_ok;
             } else {
-                local_62 = false;
+                local_66 = false;
             }
-            bool _e176 = local_62;
+            bool _e176 = local_66;
             ok = _e176;
             break;
         }
         case 5u: {
             bool _e177 = ok;
             if (_e177) {
-                local_63 = g_ok;
+                local_67 = g_ok;
             } else {
-                local_63 = false;
+                local_67 = false;
             }
-            bool _e181 = local_63;
+            bool _e181 = local_67;
             if (_e181) {
-                local_64 = (abs(s_10.phase_param_b) < 1.0);
+                local_68 = (abs(s_11.phase_param_b) < 1.0);
             } else {
-                local_64 = false;
+                local_68 = false;
             }
-            bool _e189 = local_64;
+            bool _e189 = local_68;
             if (_e189) {
-                local_65 = (s_10.phase_param_c >= 0.0);
+                local_69 = (s_11.phase_param_c >= 0.0);
             } else {
-                local_65 = false;
+                local_69 = false;
             }
-            bool _e196 = local_65;
+            bool _e196 = local_69;
             if (_e196) {
-                local_66 = (s_10.phase_param_c <= 1.0);
+                local_70 = (s_11.phase_param_c <= 1.0);
             } else {
-                local_66 = false;
+                local_70 = false;
             }
-            bool _e203 = local_66;
+            bool _e203 = local_70;
             ok = _e203;
             break;
         }
@@ -2636,15 +2706,15 @@ bool airlight_valid(AirlightScene s_10) {
     return _e205;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_11) {
+AirlightCanonical airlight_canonical(AirlightScene s_12) {
     vec3 a_10 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_11.dir);
-    if ((s_11.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_11.light_axis);
+    vec3 _e2 = airlight_normalize(s_12.dir);
+    if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_12.light_axis);
         a_10 = _e12;
     }
-    vec3 to_light = (s_11.light_position - s_11.origin);
+    vec3 to_light = (s_12.light_position - s_12.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
@@ -2652,10 +2722,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_11) {
         vec3 _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_2 = ((s_11.flags & 1u) != 0u);
+    bool infinite_3 = ((s_12.flags & 1u) != 0u);
     vec3 _e32 = a_10;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_11.t_min, (infinite_2 ? 0.0 : s_11.t_max), infinite_2);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_12.t_min, (infinite_3 ? 0.0 : s_12.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_8, uint key) {
@@ -2695,44 +2765,44 @@ float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_67 = false;
-    bool local_68 = false;
+    bool local_71 = false;
+    bool local_72 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_68 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_72 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_68 = false;
+            local_72 = false;
         }
-        bool _e21 = local_68;
-        local_67 = _e21;
+        bool _e21 = local_72;
+        local_71 = _e21;
     } else {
-        local_67 = true;
+        local_71 = true;
     }
-    bool _e23 = local_67;
+    bool _e23 = local_71;
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain) {
-    bool local_69 = false;
+AirlightCanonical airlight_refined(AirlightScene s_13, AirlightCanonical plain) {
+    bool local_73 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_70 = false;
+    bool local_74 = false;
     vec3 a_14 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_12.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), key_4);
+    uint key_4 = uint((s_13.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_13.light_position.x, -(s_13.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_13.light_position.y, -(s_13.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_13.light_position.z, -(s_13.origin.z), key_4);
     vec3 hi_2 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_2 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir = s_12.dir;
+    vec3 dir = s_13.dir;
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_69 = !(_e38);
+        local_73 = !(_e38);
     } else {
-        local_69 = true;
+        local_73 = true;
     }
-    bool _e41 = local_69;
+    bool _e41 = local_73;
     if (_e41) {
         return plain;
     }
@@ -2753,39 +2823,39 @@ AirlightCanonical airlight_refined(AirlightScene s_12, AirlightCanonical plain) 
         return _e92;
     }
     float _e93 = airlight_safe_length(dir);
-    float h_3 = (_e85 / _e93);
-    bool _e95 = airlight_is_finite(h_3);
+    float h_4 = (_e85 / _e93);
+    bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_70 = (h_3 > 0.0);
+        local_74 = (h_4 > 0.0);
     } else {
-        local_70 = false;
+        local_74 = false;
     }
-    bool _e101 = local_70;
+    bool _e101 = local_74;
     if (!(_e101)) {
         return plain;
     }
-    if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_12.light_axis);
+    if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_13.light_axis);
         a_14 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir);
     vec3 _e114 = airlight_normalize(w_2);
     vec3 n_5 = -(cross(_e113, _e114));
-    out_2.h = h_3;
+    out_2.h = h_4;
     vec3 _e119 = a_14;
     out_2.d_c = dot(n_5, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_13) {
-    bool _e1 = airlight_valid(s_13);
+AirlightResult airlight_in_scatter(AirlightScene s_14) {
+    bool _e1 = airlight_valid(s_14);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e6 = airlight_canonical(s_13);
-    AirlightCanonical _e7 = airlight_refined(s_13, _e6);
-    AirlightResult _e8 = airlight_in_scatter_canonical(s_13, _e7);
+    AirlightCanonical _e6 = airlight_canonical(s_14);
+    AirlightCanonical _e7 = airlight_refined(s_14, _e6);
+    AirlightResult _e8 = airlight_in_scatter_canonical(s_14, _e7);
     bool _e10 = airlight_is_finite(_e8.in_scatter);
     if (!(_e10)) {
         return AirlightResult(3.4028235e38, 2u);

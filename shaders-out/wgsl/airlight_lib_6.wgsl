@@ -248,8 +248,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_14 = (x_2 / (2f + x_2));
-    let s2_ = (s_14 * s_14);
+    let s_15 = (x_2 / (2f + x_2));
+    let s2_ = (s_15 * s_15);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -267,7 +267,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_14) * _e35);
+    return ((2f * s_15) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -761,124 +761,118 @@ fn airlight_hypot_one(a_3: f32) -> f32 {
 }
 
 fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
-    var local_1: bool;
     var v_e: f32;
+    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
-    var local_4: bool;
     var d_im: f32 = 0f;
     var d_re: f32 = 0f;
-    var local_5: bool;
+    var local_4: bool;
 
-    let big_h_1 = half_1.big_h;
+    let big_h_2 = half_1.big_h;
     let v_s = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
+    let v_e_infinite = half_1.dv_infinite;
+    v_e = half_1.y_hi;
     if half_1.second {
-        local_1 = (half_1.y_lo == 0f);
+        local_1 = !(v_e_infinite);
     } else {
         local_1 = false;
     }
-    let v_e_infinite = local_1;
-    v_e = half_1.y_hi;
-    if half_1.second {
-        local_2 = !(v_e_infinite);
-    } else {
-        local_2 = false;
-    }
-    let _e23 = local_2;
-    if _e23 {
+    let _e16 = local_1;
+    if _e16 {
         v_e = (1f / half_1.y_lo);
     }
-    if !((big_h_1 == 0f)) {
+    if !((big_h_2 == 0f)) {
         if !(v_e_infinite) {
-            let _e35 = v_e;
-            let _e36 = airlight_hypot_one(_e35);
-            local_4 = ((big_h_1 * _e36) <= 1f);
+            let _e28 = v_e;
+            let _e29 = airlight_hypot_one(_e28);
+            local_3 = ((big_h_2 * _e29) <= 1f);
         } else {
-            local_4 = false;
+            local_3 = false;
         }
-        let _e41 = local_4;
-        local_3 = _e41;
+        let _e34 = local_3;
+        local_2 = _e34;
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    let near_1 = local_3;
+    let near_1 = local_2;
     if near_1 {
         if !(v_e_infinite) {
+            let _e43 = v_e;
+            let _e48 = airlight_atan((half_1.dv / (1f + (v_s * _e43))));
+            d_im = _e48;
             let _e50 = v_e;
-            let _e55 = airlight_atan((half_1.dv / (1f + (v_s * _e50))));
-            d_im = _e55;
-            let _e57 = v_e;
-            let _e64 = airlight_log1p(((half_1.dv * (v_s + _e57)) / (1f + (v_s * v_s))));
-            d_re = (0.5f * _e64);
+            let _e57 = airlight_log1p(((half_1.dv * (v_s + _e50)) / (1f + (v_s * v_s))));
+            d_re = (0.5f * _e57);
         } else {
-            let _e69 = airlight_atan((1f / v_s));
-            d_im = _e69;
+            let _e62 = airlight_atan((1f / v_s));
+            d_im = _e62;
         }
-        if (big_h_1 == 0f) {
-            let _e72 = d_im;
-            return _e72;
+        if (big_h_2 == 0f) {
+            let _e65 = d_im;
+            return _e65;
         }
-        let z_s = vec2<f32>((big_h_1 * v_s), -(big_h_1));
-        let _e76 = v_e;
-        let z_e = vec2<f32>((big_h_1 * _e76), -(big_h_1));
-        let _e80 = airlight_ein_divided_difference(z_s, z_e);
-        let _e81 = airlight_cos_sin(big_h_1);
-        let rot = vec2<f32>(_e81.x, -(_e81.y));
-        let _e86 = d_re;
-        let _e87 = d_im;
-        let _e93 = airlight_cmul(rot, (vec2<f32>(_e86, _e87) - (_e80 * (big_h_1 * half_1.dv))));
-        return (_e93.y * exp((big_h_1 * v_s)));
+        let z_s = vec2<f32>((big_h_2 * v_s), -(big_h_2));
+        let _e69 = v_e;
+        let z_e = vec2<f32>((big_h_2 * _e69), -(big_h_2));
+        let _e73 = airlight_ein_divided_difference(z_s, z_e);
+        let _e74 = airlight_cos_sin(big_h_2);
+        let rot = vec2<f32>(_e74.x, -(_e74.y));
+        let _e79 = d_re;
+        let _e80 = d_im;
+        let _e86 = airlight_cmul(rot, (vec2<f32>(_e79, _e80) - (_e73 * (big_h_2 * half_1.dv))));
+        return (_e86.y * exp((big_h_2 * v_s)));
     }
-    let _e101 = airlight_e1_scaled(vec2<f32>((big_h_1 * v_s), -(big_h_1)));
+    let _e94 = airlight_e1_scaled(vec2<f32>((big_h_2 * v_s), -(big_h_2)));
     if !(v_e_infinite) {
-        let _e105 = v_e;
-        let _e107 = airlight_is_finite((big_h_1 * _e105));
-        local_5 = _e107;
+        let _e98 = v_e;
+        let _e100 = airlight_is_finite((big_h_2 * _e98));
+        local_4 = _e100;
     } else {
-        local_5 = false;
+        local_4 = false;
     }
-    let _e109 = local_5;
-    if _e109 {
-        let _e110 = v_e;
-        let _e114 = airlight_e1_scaled(vec2<f32>((big_h_1 * _e110), -(big_h_1)));
-        return (_e101.y - (_e114.y * exp((-(big_h_1) * half_1.dv))));
+    let _e102 = local_4;
+    if _e102 {
+        let _e103 = v_e;
+        let _e107 = airlight_e1_scaled(vec2<f32>((big_h_2 * _e103), -(big_h_2)));
+        return (_e94.y - (_e107.y * exp((-(big_h_2) * half_1.dv))));
     }
-    return _e101.y;
+    return _e94.y;
 }
 
 fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
+    var local_5: bool;
     var local_6: bool;
     var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     if !((half_2.dy > 0f)) {
         return 0f;
     }
     if !(half_2.dv_infinite) {
-        local_6 = ((half_2.big_h * half_2.dv) <= 1f);
+        local_5 = ((half_2.big_h * half_2.dv) <= 1f);
+    } else {
+        local_5 = false;
+    }
+    let short_exp = local_5;
+    if (half_2.dy <= 0.25f) {
+        if !(!(half_2.second)) {
+            local_7 = (half_2.dy <= (half_2.y_lo * 0.5f));
+        } else {
+            local_7 = true;
+        }
+        let _e33 = local_7;
+        local_6 = _e33;
     } else {
         local_6 = false;
     }
-    let short_exp = local_6;
-    if (half_2.dy <= 0.25f) {
-        if !(!(half_2.second)) {
-            local_8 = (half_2.dy <= (half_2.y_lo * 0.5f));
-        } else {
-            local_8 = true;
-        }
-        let _e33 = local_8;
-        local_7 = _e33;
-    } else {
-        local_7 = false;
-    }
-    let short_len = local_7;
+    let short_len = local_6;
     if short_exp {
-        local_9 = short_len;
+        local_8 = short_len;
     } else {
-        local_9 = false;
+        local_8 = false;
     }
-    let _e39 = local_9;
+    let _e39 = local_8;
     if _e39 {
         let _e40 = airlight_moment_gauss(half_2);
         return _e40;
@@ -1149,7 +1143,7 @@ fn airlight_tail_estimate(c_3: array<f32, 6>) -> f32 {
 }
 
 fn airlight_error_factor(c_4: array<f32, 6>, m_1: array<f32, 6>) -> f32 {
-    var local_10: bool;
+    var local_9: bool;
     var aliasing: f32 = 1f;
     var i_7: u32 = 0u;
 
@@ -1159,11 +1153,11 @@ fn airlight_error_factor(c_4: array<f32, 6>, m_1: array<f32, 6>) -> f32 {
     let last = (abs(c_4[5]) + abs(c_4[4]));
     let before = (abs(c_4[3]) + abs(c_4[2]));
     if !(!((before > 0f))) {
-        local_10 = !((last < before));
+        local_9 = !((last < before));
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e26 = local_10;
+    let _e26 = local_9;
     if _e26 {
         return 1f;
     }
@@ -1424,9 +1418,9 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     var shifted: f32;
     var s_b: array<f32, 16>;
     var s_a: array<f32, 16>;
-    var local_11: bool;
+    var local_10: bool;
     var decay: f32 = 0f;
-    var local_12: bool;
+    var local_11: bool;
     var sum_6: f32 = 0f;
     var mass_2: f32 = 0f;
     var ratio_1: f32 = 1f;
@@ -1523,31 +1517,31 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             jj = (_e104 + 1u);
         }
     }
-    let big_h_2 = half_6.big_h;
+    let big_h_3 = half_6.big_h;
     let _e107 = airlight_zero_scratch();
     s_b = _e107;
-    airlight_en_scaled((big_h_2 / b_6), 8u, (&s_b));
+    airlight_en_scaled((big_h_3 / b_6), 8u, (&s_b));
     let _e111 = airlight_zero_scratch();
     s_a = _e111;
     if (a_7 > 0f) {
-        let _e118 = airlight_is_finite((big_h_2 / a_7));
-        local_11 = _e118;
+        let _e118 = airlight_is_finite((big_h_3 / a_7));
+        local_10 = _e118;
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    let far_1 = local_11;
+    let far_1 = local_10;
     if far_1 {
-        decay = exp((-(big_h_2) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_3) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if far_1 {
         let _e131 = decay;
-        local_12 = (_e131 > 0f);
+        local_11 = (_e131 > 0f);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    let _e135 = local_12;
+    let _e135 = local_11;
     if _e135 {
-        airlight_en_scaled((big_h_2 / a_7), 8u, (&s_a));
+        airlight_en_scaled((big_h_3 / a_7), 8u, (&s_a));
     }
     if (b_6 > 0f) {
         ab = (a_7 / b_6);
@@ -1634,25 +1628,25 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
 }
 
 fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+    var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
 
     if half_7.second {
-        local_13 = (a_8 <= (b_7 * 0.25f));
+        local_12 = (a_8 <= (b_7 * 0.25f));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    let _e13 = local_13;
+    let _e13 = local_12;
     if _e13 {
         let _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
-        local_14 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_13 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    let _e26 = local_14;
+    let _e26 = local_13;
     if _e26 {
         let _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
         return _e27;
@@ -1672,9 +1666,9 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
     var mass_3: f32;
     var worst: u32;
     var i_13: u32;
+    var local_14: bool;
     var local_15: bool;
     var local_16: bool;
-    var local_17: bool;
     var i_14: u32 = 0u;
 
     if !((hi > lo)) {
@@ -1743,25 +1737,25 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
             if !((_e114 <= goal)) {
                 let _e119 = worst;
                 let _e122 = list[_e119].w;
-                local_15 = !((_e122 > 0f));
+                local_14 = !((_e122 > 0f));
+            } else {
+                local_14 = true;
+            }
+            let _e127 = local_14;
+            if !(_e127) {
+                let _e131 = budget;
+                local_15 = (_e131 < 2u);
             } else {
                 local_15 = true;
             }
-            let _e127 = local_15;
-            if !(_e127) {
-                let _e131 = budget;
-                local_16 = (_e131 < 2u);
+            let _e135 = local_15;
+            if !(_e135) {
+                let _e139 = count_1;
+                local_16 = (_e139 == AIRLIGHT_PANEL_LIST);
             } else {
                 local_16 = true;
             }
-            let _e135 = local_16;
-            if !(_e135) {
-                let _e139 = count_1;
-                local_17 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_17 = true;
-            }
-            let _e143 = local_17;
+            let _e143 = local_16;
             if _e143 {
                 let _e144 = total;
                 return _e144;
@@ -1863,15 +1857,15 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
     var k_in: f32;
     var k_out: f32;
     var i_15: u32 = 0u;
-    var local_18: bool;
+    var local_17: bool;
     var i_16: u32 = 0u;
     var j_5: u32;
     var total_1: f32 = 0f;
     var lo_1: f32;
     var i_17: u32 = 0u;
     var hi_1: f32;
+    var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     if isotropic {
         let _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5f)));
@@ -1907,11 +1901,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 if (_e57 > half_9.y_lo) {
                     let _e62 = i_15;
                     let _e64 = cuts[_e62];
-                    local_18 = (_e64 < half_9.y_hi);
+                    local_17 = (_e64 < half_9.y_hi);
                 } else {
-                    local_18 = false;
+                    local_17 = false;
                 }
-                let _e68 = local_18;
+                let _e68 = local_17;
                 if !(_e68) {
                     let _e70 = i_15;
                     cuts[_e70] = 2f;
@@ -1978,11 +1972,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e128 < 4u) {
                 let _e133 = i_17;
                 let _e135 = cuts[_e133];
-                local_19 = (_e135 < 2f);
+                local_18 = (_e135 < 2f);
             } else {
-                local_19 = false;
+                local_18 = false;
             }
-            let _e139 = local_19;
+            let _e139 = local_18;
             if _e139 {
                 let _e140 = i_17;
                 let _e142 = cuts[_e140];
@@ -2003,11 +1997,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e152 < 4u) {
                 let _e157 = i_17;
                 let _e159 = cuts[_e157];
-                local_20 = (_e159 >= 2f);
+                local_19 = (_e159 >= 2f);
             } else {
-                local_20 = false;
+                local_19 = false;
             }
-            let _e163 = local_20;
+            let _e163 = local_19;
             if _e163 {
                 break;
             }
@@ -2034,17 +2028,17 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32)
 }
 
 fn airlight_on_line(s_8: AirlightScene, g_10: AirlightCanonical) -> f32 {
-    var local_21: bool;
+    var local_20: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
     if !(g_10.t_hi_infinite) {
-        local_21 = (g_10.x_h > g_10.t_hi);
+        local_20 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    let _e10 = local_21;
+    let _e10 = local_20;
     if _e10 {
         let _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         let _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1f);
@@ -2099,62 +2093,117 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) -> AirlightResult {
+fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32) -> f32 {
+    var v_e_1: f32 = AIRLIGHT_FLT_MAX;
+    var dv_2: f32 = AIRLIGHT_FLT_MAX;
+    var infinite_1: bool = true;
+    var local_21: bool;
     var local_22: bool;
+
+    let h_2 = g_11.h;
+    let a_s = ((g_11.x_h - g_11.t_lo) / h_2);
+    let _e8 = airlight_hypot_one(a_s);
+    let _e9 = airlight_bounded(a_s);
+    let u_e = ((g_11.t_hi - g_11.x_h) / h_2);
+    if !(g_11.t_hi_infinite) {
+        let _e24 = airlight_is_finite(u_e);
+        local_21 = _e24;
+    } else {
+        local_21 = false;
+    }
+    let _e26 = local_21;
+    if _e26 {
+        let _e27 = airlight_hypot_one(u_e);
+        let v_end = (u_e + _e27);
+        let dv_end = (((g_11.t_hi - g_11.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        let _e37 = airlight_is_finite(v_end);
+        if _e37 {
+            let _e40 = airlight_is_finite(dv_end);
+            local_22 = _e40;
+        } else {
+            local_22 = false;
+        }
+        let _e42 = local_22;
+        if _e42 {
+            v_e_1 = v_end;
+            dv_2 = dv_end;
+            infinite_1 = false;
+        }
+    }
+    let _e45 = dv_2;
+    let _e46 = infinite_1;
+    let _e47 = airlight_optical(big_h_1, _e45, _e46);
+    let _e48 = v_e_1;
+    let _e49 = dv_2;
+    let _e50 = dv_2;
+    let _e51 = infinite_1;
+    let half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let _e54 = airlight_integrand(s_9, g_11, -1f, _e9);
+    let _e55 = airlight_moment_zero(half_10);
+    let j_8 = (_e54 * _e55);
+    let _e60 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_1 * _e8), j_8);
+    return _e60;
+}
+
+fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -> AirlightResult {
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
-    var gap: f32 = 0f;
     var local_26: bool;
+    var gap: f32 = 0f;
     var local_27: bool;
     var local_28: bool;
     var local_29: bool;
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
+    var local_35: bool;
+    var local_36: bool;
     var total_2: f32 = 0f;
     var f_max_6: f32 = 0f;
     var t_end: f32;
-    var local_33: bool;
-    var local_34: bool;
+    var local_37: bool;
+    var local_38: bool;
     var y_lo: f32 = 0f;
-    var dv_2: f32 = 0f;
+    var dv_3: f32 = 0f;
     var dy: f32;
-    var infinite_1: bool = true;
-    var local_35: bool;
-    var local_36: bool;
+    var infinite_2: bool = true;
+    var local_39: bool;
+    var local_40: bool;
 
-    let t0_ = g_11.t_lo;
-    let t1_ = g_11.t_hi;
-    if !(g_11.t_hi_infinite) {
-        local_22 = (t1_ > t0_);
-    } else {
-        local_22 = true;
-    }
-    let _e10 = local_22;
-    if !(!(_e10)) {
-        local_23 = ((s_9.sigma_s * s_9.intensity) == 0f);
+    let t0_ = g_12.t_lo;
+    let t1_ = g_12.t_hi;
+    if !(g_12.t_hi_infinite) {
+        local_23 = (t1_ > t0_);
     } else {
         local_23 = true;
     }
-    let _e21 = local_23;
+    let _e10 = local_23;
+    if !(!(_e10)) {
+        local_24 = ((s_10.sigma_s * s_10.intensity) == 0f);
+    } else {
+        local_24 = true;
+    }
+    let _e21 = local_24;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_2 = g_11.h;
-    let x_h = g_11.x_h;
+    let h_3 = g_12.h;
+    let x_h = g_12.x_h;
     if (t0_ <= x_h) {
-        if !(g_11.t_hi_infinite) {
-            local_25 = (x_h <= t1_);
+        if !(g_12.t_hi_infinite) {
+            local_26 = (x_h <= t1_);
         } else {
-            local_25 = true;
+            local_26 = true;
         }
-        let _e36 = local_25;
-        local_24 = _e36;
+        let _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_24 = false;
+        local_25 = false;
     }
-    let inside = local_24;
+    let inside = local_25;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -2164,158 +2213,180 @@ fn airlight_in_scatter_canonical(s_9: AirlightScene, g_11: AirlightCanonical) ->
     }
     if !(inside) {
         let _e48 = gap;
-        local_26 = (h_2 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_27 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_26 = false;
+        local_27 = false;
     }
-    let _e55 = local_26;
+    let _e55 = local_27;
     if _e55 {
-        let _e56 = airlight_on_line(s_9, g_11);
+        let _e56 = airlight_on_line(s_10, g_12);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
-    if (h_2 == 0f) {
+    if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_3 = (s_9.sigma_t * h_2);
-    if !((s_9.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_28 = (s_9.light_param_a == 0f);
+    let big_h_4 = (s_10.sigma_t * h_3);
+    if !((s_10.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_29 = (s_10.light_param_a == 0f);
         } else {
-            local_28 = false;
+            local_29 = false;
         }
-        let _e83 = local_28;
-        local_27 = _e83;
+        let _e83 = local_29;
+        local_28 = _e83;
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    let _e85 = local_27;
+    let _e85 = local_28;
     if _e85 {
-        if !((s_9.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_9.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_31 = (s_9.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_32 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_31 = true;
+                local_32 = true;
             }
-            let _e104 = local_31;
+            let _e104 = local_32;
             if _e104 {
-                local_32 = (s_9.phase_param_a == 0f);
+                local_33 = (s_10.phase_param_a == 0f);
             } else {
-                local_32 = false;
+                local_33 = false;
             }
-            let _e111 = local_32;
-            local_30 = _e111;
+            let _e111 = local_33;
+            local_31 = _e111;
         } else {
-            local_30 = true;
+            local_31 = true;
         }
-        let _e113 = local_30;
-        local_29 = _e113;
+        let _e113 = local_31;
+        local_30 = _e113;
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    let isotropic_1 = local_29;
-    if (t0_ < x_h) {
-        let a_s = ((x_h - t0_) / h_2);
-        t_end = x_h;
-        if !(g_11.t_hi_infinite) {
-            local_33 = (t1_ < x_h);
+    let isotropic_1 = local_30;
+    if isotropic_1 {
+        local_34 = (t0_ < x_h);
+    } else {
+        local_34 = false;
+    }
+    let _e120 = local_34;
+    if _e120 {
+        if !(g_12.t_hi_infinite) {
+            local_36 = (x_h < t1_);
         } else {
-            local_33 = false;
+            local_36 = true;
         }
-        let _e130 = local_33;
-        if _e130 {
+        let _e129 = local_36;
+        local_35 = _e129;
+    } else {
+        local_35 = false;
+    }
+    let _e131 = local_35;
+    if _e131 {
+        let _e132 = airlight_whole_line(s_10, g_12, big_h_4);
+        return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
+    }
+    if (t0_ < x_h) {
+        let a_s_1 = ((x_h - t0_) / h_3);
+        t_end = x_h;
+        if !(g_12.t_hi_infinite) {
+            local_37 = (t1_ < x_h);
+        } else {
+            local_37 = false;
+        }
+        let _e151 = local_37;
+        if _e151 {
             t_end = t1_;
         }
-        let _e131 = t_end;
-        let a_e = ((x_h - _e131) / h_2);
-        let _e134 = airlight_hypot_one(a_s);
-        let _e135 = airlight_hypot_one(a_e);
-        let _e136 = airlight_bounded(a_s);
-        let _e137 = airlight_bounded(a_e);
-        let _e138 = t_end;
-        let dy_1 = (((((_e138 - t0_) / h_2) * (1f + ((a_s + a_e) / (_e134 + _e135)))) * _e136) * _e137);
-        let _e151 = airlight_optical(big_h_3, dy_1, false);
-        let half_10 = AirlightHalf(false, _e151, _e136, _e137, dy_1, dy_1, false);
-        let _e155 = airlight_half(s_9, g_11, -1f, half_10, isotropic_1, (&f_max_6));
-        let _e156 = total_2;
-        let _e160 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_3 * _e134), _e155);
-        total_2 = (_e156 + _e160);
+        let _e152 = t_end;
+        let a_e = ((x_h - _e152) / h_3);
+        let _e155 = airlight_hypot_one(a_s_1);
+        let _e156 = airlight_hypot_one(a_e);
+        let _e157 = airlight_bounded(a_s_1);
+        let _e158 = airlight_bounded(a_e);
+        let _e159 = t_end;
+        let dy_1 = (((((_e159 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
+        let _e172 = airlight_optical(big_h_4, dy_1, false);
+        let half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
+        let _e176 = airlight_half(s_10, g_12, -1f, half_11, isotropic_1, (&f_max_6));
+        let _e177 = total_2;
+        let _e181 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (big_h_4 * _e155), _e176);
+        total_2 = (_e177 + _e181);
     }
-    if !(g_11.t_hi_infinite) {
-        local_34 = (t1_ > x_h);
+    if !(g_12.t_hi_infinite) {
+        local_38 = (t1_ > x_h);
     } else {
-        local_34 = true;
+        local_38 = true;
     }
-    let _e168 = local_34;
-    if _e168 {
+    let _e189 = local_38;
+    if _e189 {
         let t_start = max(t0_, x_h);
-        let a_s_1 = ((t_start - x_h) / h_2);
-        let _e172 = airlight_hypot_one(a_s_1);
-        let _e173 = airlight_bounded(a_s_1);
-        dy = _e173;
-        let a_e_1 = ((t1_ - x_h) / h_2);
-        if !(g_11.t_hi_infinite) {
-            let _e187 = airlight_is_finite(a_e_1);
-            local_35 = _e187;
+        let a_s_2 = ((t_start - x_h) / h_3);
+        let _e193 = airlight_hypot_one(a_s_2);
+        let _e194 = airlight_bounded(a_s_2);
+        dy = _e194;
+        let a_e_1 = ((t1_ - x_h) / h_3);
+        if !(g_12.t_hi_infinite) {
+            let _e208 = airlight_is_finite(a_e_1);
+            local_39 = _e208;
         } else {
-            local_35 = false;
+            local_39 = false;
         }
-        let _e189 = local_35;
-        if _e189 {
-            let _e190 = airlight_bounded(a_e_1);
-            let _e194 = airlight_hypot_one(a_e_1);
-            let dv_end = (((t1_ - t_start) / h_2) * (1f + ((a_s_1 + a_e_1) / (_e172 + _e194))));
-            if (_e190 > 0f) {
-                let _e204 = airlight_is_finite(dv_end);
-                local_36 = _e204;
+        let _e210 = local_39;
+        if _e210 {
+            let _e211 = airlight_bounded(a_e_1);
+            let _e215 = airlight_hypot_one(a_e_1);
+            let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e193 + _e215))));
+            if (_e211 > 0f) {
+                let _e225 = airlight_is_finite(dv_end_1);
+                local_40 = _e225;
             } else {
-                local_36 = false;
+                local_40 = false;
             }
-            let _e206 = local_36;
-            if _e206 {
-                y_lo = _e190;
-                dv_2 = dv_end;
-                let _e207 = dv_2;
-                let _e208 = y_lo;
-                dy = ((_e207 * _e208) * _e173);
-                infinite_1 = false;
+            let _e227 = local_40;
+            if _e227 {
+                y_lo = _e211;
+                dv_3 = dv_end_1;
+                let _e228 = dv_3;
+                let _e229 = y_lo;
+                dy = ((_e228 * _e229) * _e194);
+                infinite_2 = false;
             }
         }
-        let _e213 = dv_2;
-        let _e214 = infinite_1;
-        let _e215 = airlight_optical(big_h_3, _e213, _e214);
-        let _e216 = y_lo;
-        let _e217 = dy;
-        let _e218 = dv_2;
-        let _e219 = infinite_1;
-        let half_11 = AirlightHalf(true, _e215, _e216, _e173, _e217, _e218, _e219);
-        let _e222 = airlight_half(s_9, g_11, 1f, half_11, isotropic_1, (&f_max_6));
-        let _e223 = total_2;
-        let _e231 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, ((s_9.sigma_t * (t_start - t0_)) + (big_h_3 * _e172)), _e222);
-        total_2 = (_e223 + _e231);
+        let _e234 = dv_3;
+        let _e235 = infinite_2;
+        let _e236 = airlight_optical(big_h_4, _e234, _e235);
+        let _e237 = y_lo;
+        let _e238 = dy;
+        let _e239 = dv_3;
+        let _e240 = infinite_2;
+        let half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
+        let _e243 = airlight_half(s_10, g_12, 1f, half_12, isotropic_1, (&f_max_6));
+        let _e244 = total_2;
+        let _e252 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, ((s_10.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
+        total_2 = (_e244 + _e252);
     }
-    let _e233 = total_2;
-    return AirlightResult(max(_e233, 0f), AIRLIGHT_STATUS_OK);
+    let _e254 = total_2;
+    return AirlightResult(max(_e254, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_37: bool;
-    var local_38: bool;
+    var local_41: bool;
+    var local_42: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_37 = _e6;
+        local_41 = _e6;
     } else {
-        local_37 = false;
+        local_41 = false;
     }
-    let _e8 = local_37;
+    let _e8 = local_41;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_38 = _e12;
+        local_42 = _e12;
     } else {
-        local_38 = false;
+        local_42 = false;
     }
-    let _e14 = local_38;
+    let _e14 = local_42;
     return _e14;
 }
 
@@ -2328,16 +2399,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_39: bool;
+    var local_43: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_39 = _e6;
+        local_43 = _e6;
     } else {
-        local_39 = false;
+        local_43 = false;
     }
-    let _e8 = local_39;
+    let _e8 = local_43;
     return _e8;
 }
 
@@ -2347,22 +2418,18 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_10: AirlightScene) -> bool {
-    var local_40: bool;
-    var local_41: bool;
-    var local_42: bool;
-    var local_43: bool;
+fn airlight_valid(s_11: AirlightScene) -> bool {
     var local_44: bool;
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
-    var ok: bool;
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
+    var ok: bool;
     var local_54: bool;
     var local_55: bool;
     var local_56: bool;
@@ -2376,210 +2443,214 @@ fn airlight_valid(s_10: AirlightScene) -> bool {
     var local_64: bool;
     var local_65: bool;
     var local_66: bool;
+    var local_67: bool;
+    var local_68: bool;
+    var local_69: bool;
+    var local_70: bool;
 
-    let _e2 = airlight_vec_finite(s_10.origin);
+    let _e2 = airlight_vec_finite(s_11.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_10.dir);
-        local_40 = _e6;
-    } else {
-        local_40 = false;
-    }
-    let _e8 = local_40;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_10.dir);
-        local_41 = _e12;
-    } else {
-        local_41 = false;
-    }
-    let _e14 = local_41;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_10.t_min);
-        local_42 = _e18;
-    } else {
-        local_42 = false;
-    }
-    let _e20 = local_42;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_10.light_position);
-        local_43 = _e24;
-    } else {
-        local_43 = false;
-    }
-    let _e26 = local_43;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_10.intensity);
-        local_44 = _e30;
+        let _e6 = airlight_vec_finite(s_11.dir);
+        local_44 = _e6;
     } else {
         local_44 = false;
     }
-    let _e32 = local_44;
-    if _e32 {
-        local_45 = (s_10.intensity >= 0f);
+    let _e8 = local_44;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_11.dir);
+        local_45 = _e12;
     } else {
         local_45 = false;
     }
-    let _e39 = local_45;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_10.sigma_s);
-        local_46 = _e43;
+    let _e14 = local_45;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_11.t_min);
+        local_46 = _e18;
     } else {
         local_46 = false;
     }
-    let _e45 = local_46;
-    if _e45 {
-        local_47 = (s_10.sigma_s >= 0f);
+    let _e20 = local_46;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_11.light_position);
+        local_47 = _e24;
     } else {
         local_47 = false;
     }
-    let _e52 = local_47;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_10.sigma_t);
-        local_48 = _e56;
+    let _e26 = local_47;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_11.intensity);
+        local_48 = _e30;
     } else {
         local_48 = false;
     }
-    let _e58 = local_48;
-    if _e58 {
-        local_49 = (s_10.sigma_t >= 0f);
+    let _e32 = local_48;
+    if _e32 {
+        local_49 = (s_11.intensity >= 0f);
     } else {
         local_49 = false;
     }
-    let _e65 = local_49;
+    let _e39 = local_49;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_11.sigma_s);
+        local_50 = _e43;
+    } else {
+        local_50 = false;
+    }
+    let _e45 = local_50;
+    if _e45 {
+        local_51 = (s_11.sigma_s >= 0f);
+    } else {
+        local_51 = false;
+    }
+    let _e52 = local_51;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_11.sigma_t);
+        local_52 = _e56;
+    } else {
+        local_52 = false;
+    }
+    let _e58 = local_52;
+    if _e58 {
+        local_53 = (s_11.sigma_t >= 0f);
+    } else {
+        local_53 = false;
+    }
+    let _e65 = local_53;
     ok = _e65;
-    if ((s_10.flags & 1u) == 0u) {
+    if ((s_11.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_10.t_max);
-            local_50 = _e76;
-        } else {
-            local_50 = false;
-        }
-        let _e78 = local_50;
-        if _e78 {
-            local_51 = (s_10.t_min <= s_10.t_max);
-        } else {
-            local_51 = false;
-        }
-        let _e85 = local_51;
-        ok = _e85;
-    }
-    if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e89 = ok;
-        if _e89 {
-            let _e93 = airlight_vec_finite(s_10.light_axis);
-            local_52 = _e93;
-        } else {
-            local_52 = false;
-        }
-        let _e95 = local_52;
-        if _e95 {
-            let _e99 = airlight_normalisable(s_10.light_axis);
-            local_53 = _e99;
-        } else {
-            local_53 = false;
-        }
-        let _e101 = local_53;
-        if _e101 {
-            local_54 = (s_10.light_param_a >= 0f);
+            let _e76 = airlight_is_finite(s_11.t_max);
+            local_54 = _e76;
         } else {
             local_54 = false;
         }
-        let _e108 = local_54;
-        if _e108 {
-            local_55 = (s_10.light_param_a <= 1024f);
+        let _e78 = local_54;
+        if _e78 {
+            local_55 = (s_11.t_min <= s_11.t_max);
         } else {
             local_55 = false;
         }
-        let _e115 = local_55;
-        if _e115 {
-            local_56 = (fract((s_10.light_param_a * 0.5f)) == 0f);
+        let _e85 = local_55;
+        ok = _e85;
+    }
+    if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        let _e89 = ok;
+        if _e89 {
+            let _e93 = airlight_vec_finite(s_11.light_axis);
+            local_56 = _e93;
         } else {
             local_56 = false;
         }
-        let _e125 = local_56;
+        let _e95 = local_56;
+        if _e95 {
+            let _e99 = airlight_normalisable(s_11.light_axis);
+            local_57 = _e99;
+        } else {
+            local_57 = false;
+        }
+        let _e101 = local_57;
+        if _e101 {
+            local_58 = (s_11.light_param_a >= 0f);
+        } else {
+            local_58 = false;
+        }
+        let _e108 = local_58;
+        if _e108 {
+            local_59 = (s_11.light_param_a <= 1024f);
+        } else {
+            local_59 = false;
+        }
+        let _e115 = local_59;
+        if _e115 {
+            local_60 = (fract((s_11.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_60 = false;
+        }
+        let _e125 = local_60;
         ok = _e125;
     } else {
-        if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
-                let _e133 = airlight_vec_finite(s_10.light_axis);
-                local_57 = _e133;
-            } else {
-                local_57 = false;
-            }
-            let _e135 = local_57;
-            if _e135 {
-                let _e139 = airlight_normalisable(s_10.light_axis);
-                local_58 = _e139;
-            } else {
-                local_58 = false;
-            }
-            let _e141 = local_58;
-            if _e141 {
-                local_59 = (s_10.light_param_b < s_10.light_param_a);
-            } else {
-                local_59 = false;
-            }
-            let _e148 = local_59;
-            if _e148 {
-                local_60 = (s_10.light_param_b >= -1f);
-            } else {
-                local_60 = false;
-            }
-            let _e155 = local_60;
-            if _e155 {
-                local_61 = (s_10.light_param_a <= 1f);
+                let _e133 = airlight_vec_finite(s_11.light_axis);
+                local_61 = _e133;
             } else {
                 local_61 = false;
             }
-            let _e162 = local_61;
+            let _e135 = local_61;
+            if _e135 {
+                let _e139 = airlight_normalisable(s_11.light_axis);
+                local_62 = _e139;
+            } else {
+                local_62 = false;
+            }
+            let _e141 = local_62;
+            if _e141 {
+                local_63 = (s_11.light_param_b < s_11.light_param_a);
+            } else {
+                local_63 = false;
+            }
+            let _e148 = local_63;
+            if _e148 {
+                local_64 = (s_11.light_param_b >= -1f);
+            } else {
+                local_64 = false;
+            }
+            let _e155 = local_64;
+            if _e155 {
+                local_65 = (s_11.light_param_a <= 1f);
+            } else {
+                local_65 = false;
+            }
+            let _e162 = local_65;
             ok = _e162;
         } else {
-            if (s_10.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_10.phase_param_a) < 1f);
-    switch s_10.phase_kind {
+    let g_ok = (abs(s_11.phase_param_a) < 1f);
+    switch s_11.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
             let _e172 = ok;
             if _e172 {
-                local_62 = g_ok;
+                local_66 = g_ok;
             } else {
-                local_62 = false;
+                local_66 = false;
             }
-            let _e176 = local_62;
+            let _e176 = local_66;
             ok = _e176;
         }
         case 5u: {
             let _e177 = ok;
             if _e177 {
-                local_63 = g_ok;
+                local_67 = g_ok;
             } else {
-                local_63 = false;
+                local_67 = false;
             }
-            let _e181 = local_63;
+            let _e181 = local_67;
             if _e181 {
-                local_64 = (abs(s_10.phase_param_b) < 1f);
+                local_68 = (abs(s_11.phase_param_b) < 1f);
             } else {
-                local_64 = false;
+                local_68 = false;
             }
-            let _e189 = local_64;
+            let _e189 = local_68;
             if _e189 {
-                local_65 = (s_10.phase_param_c >= 0f);
+                local_69 = (s_11.phase_param_c >= 0f);
             } else {
-                local_65 = false;
+                local_69 = false;
             }
-            let _e196 = local_65;
+            let _e196 = local_69;
             if _e196 {
-                local_66 = (s_10.phase_param_c <= 1f);
+                local_70 = (s_11.phase_param_c <= 1f);
             } else {
-                local_66 = false;
+                local_70 = false;
             }
-            let _e203 = local_66;
+            let _e203 = local_70;
             ok = _e203;
         }
         default: {
@@ -2590,16 +2661,16 @@ fn airlight_valid(s_10: AirlightScene) -> bool {
     return _e205;
 }
 
-fn airlight_canonical(s_11: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_12: AirlightScene) -> AirlightCanonical {
     var a_10: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_11.dir);
-    if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_11.light_axis);
+    let _e2 = airlight_normalize(s_12.dir);
+    if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_12.light_axis);
         a_10 = _e12;
     }
-    let to_light = (s_11.light_position - s_11.origin);
+    let to_light = (s_12.light_position - s_12.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -2607,10 +2678,10 @@ fn airlight_canonical(s_11: AirlightScene) -> AirlightCanonical {
         let _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_2 = ((s_11.flags & 1u) != 0u);
+    let infinite_3 = ((s_12.flags & 1u) != 0u);
     let _e32 = a_10;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_11.t_min, select(s_11.t_max, 0f, infinite_2), infinite_2);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_12.t_min, select(s_12.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_8: f32, key: u32) -> f32 {
@@ -2650,46 +2721,46 @@ fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_67: bool;
-    var local_68: bool;
+    var local_71: bool;
+    var local_72: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_68 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_72 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_68 = false;
+            local_72 = false;
         }
-        let _e21 = local_68;
-        local_67 = _e21;
+        let _e21 = local_72;
+        local_71 = _e21;
     } else {
-        local_67 = true;
+        local_71 = true;
     }
-    let _e23 = local_67;
+    let _e23 = local_71;
     return _e23;
 }
 
-fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_69: bool;
+fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    var local_73: bool;
     var out_2: AirlightCanonical;
-    var local_70: bool;
+    var local_74: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_12.flags > 1u));
-    let _e11 = airlight_two_sum(s_12.light_position.x, -(s_12.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_12.light_position.y, -(s_12.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_12.light_position.z, -(s_12.origin.z), key_4);
+    let key_4 = u32((s_13.flags > 1u));
+    let _e11 = airlight_two_sum(s_13.light_position.x, -(s_13.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_13.light_position.y, -(s_13.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_13.light_position.z, -(s_13.origin.z), key_4);
     let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_12.dir;
+    let dir = s_13.dir;
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_69 = !(_e38);
+        local_73 = !(_e38);
     } else {
-        local_69 = true;
+        local_73 = true;
     }
-    let _e41 = local_69;
+    let _e41 = local_73;
     if _e41 {
         return plain;
     }
@@ -2710,39 +2781,39 @@ fn airlight_refined(s_12: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         return _e92;
     }
     let _e93 = airlight_safe_length(dir);
-    let h_3 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_3);
+    let h_4 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_70 = (h_3 > 0f);
+        local_74 = (h_4 > 0f);
     } else {
-        local_70 = false;
+        local_74 = false;
     }
-    let _e101 = local_70;
+    let _e101 = local_74;
     if !(_e101) {
         return plain;
     }
-    if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_12.light_axis);
+    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_13.light_axis);
         a_14 = _e112;
     }
     let _e113 = airlight_normalize(dir);
     let _e114 = airlight_normalize(w_2);
     let n_5 = -(cross(_e113, _e114));
-    out_2.h = h_3;
+    out_2.h = h_4;
     let _e119 = a_14;
     out_2.d_c = dot(n_5, _e119);
     let _e121 = out_2;
     return _e121;
 }
 
-fn airlight_in_scatter(s_13: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_valid(s_13);
+fn airlight_in_scatter(s_14: AirlightScene) -> AirlightResult {
+    let _e1 = airlight_valid(s_14);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_canonical(s_13);
-    let _e7 = airlight_refined(s_13, _e6);
-    let _e8 = airlight_in_scatter_canonical(s_13, _e7);
+    let _e6 = airlight_canonical(s_14);
+    let _e7 = airlight_refined(s_14, _e6);
+    let _e8 = airlight_in_scatter_canonical(s_14, _e7);
     let _e10 = airlight_is_finite(_e8.in_scatter);
     if !(_e10) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
