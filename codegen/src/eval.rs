@@ -88,27 +88,93 @@ pub fn compute_wgsl(terms: usize) -> &'static str {
     }
 }
 
+/// Why `eval` stopped early.
+#[derive(Debug)]
+pub enum EvalError {
+    /// Reading the input failed.
+    Input(std::io::Error),
+    /// Writing the output failed (a closed pipe among others: the command line ends quietly
+    /// on that one).
+    Output(std::io::Error),
+    /// The GPU backend could not run.
+    Gpu(String),
+}
+
+impl std::fmt::Display for EvalError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            EvalError::Input(e) => write!(f, "reading the input: {e}"),
+            EvalError::Output(e) => write!(f, "writing the output: {e}"),
+            EvalError::Gpu(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for EvalError {}
+
+/// The input's lines, numbered from 1, each as its text or as the error line it gets: every
+/// line (up to `\n`, `\r\n` or the end of the input) is one record, so output lines pair with
+/// input lines by position. A line that is not UTF-8 or holds only white space is an error
+/// line of its own; the lines after it are read on.
+struct Lines<R> {
+    input: R,
+    number: usize,
+    bytes: Vec<u8>,
+}
+
+impl<R: BufRead> Lines<R> {
+    fn new(input: R) -> Self {
+        Lines { input, number: 0, bytes: Vec::new() }
+    }
+
+    /// The next line: `Ok(None)` at the end, `Ok(Some((n, Ok(text))))` or
+    /// `Ok(Some((n, Err(error_line))))`.
+    fn next_line(&mut self) -> Result<Option<(usize, Result<&str, String>)>, EvalError> {
+        self.bytes.clear();
+        if self.input.read_until(b'\n', &mut self.bytes).map_err(EvalError::Input)? == 0 {
+            return Ok(None);
+        }
+        self.number += 1;
+        let mut end = self.bytes.len();
+        if self.bytes[..end].ends_with(b"\n") {
+            end -= 1;
+        }
+        if self.bytes[..end].ends_with(b"\r") {
+            end -= 1;
+        }
+        let n = self.number;
+        let text = match std::str::from_utf8(&self.bytes[..end]) {
+            Err(e) => Err(format_error(n, &format!("(record): not UTF-8 (invalid byte at offset {})", e.valid_up_to()))),
+            Ok(t) if t.trim().is_empty() => Err(format_error(n, "(record): empty line (every line is one record)")),
+            Ok(t) => Ok(t),
+        };
+        Ok(Some((n, text)))
+    }
+}
+
 /// Runs `eval` on the GPU: every record is parsed and checked as on the CPU (bad lines get
-/// the same error lines), the valid ones are packed and run through the compute shader.
-pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), String> {
+/// the same error lines), the valid ones are packed and run through the compute shader in
+/// one batch after the input ends.
+pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
     use crate::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
     let mut lines: Vec<Result<(), String>> = Vec::new();
     let mut records = Vec::new();
-    for (i, line) in input.lines().enumerate() {
-        let line = line.map_err(|e| e.to_string())?;
-        if line.trim().is_empty() {
-            continue;
-        }
-        match parse_line::<f32>(&line) {
-            Ok(r) => {
+    let mut input = Lines::new(input);
+    while let Some((n, text)) = input.next_line()? {
+        match text.map(|t| parse_line::<f32>(t).map_err(|e| format_error(n, &e.to_string()))) {
+            Ok(Ok(r)) => {
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
                 lines.push(Ok(()));
             }
-            Err(e) => lines.push(Err(format_error(i + 1, &e.to_string()))),
+            Ok(Err(e)) | Err(e) => lines.push(Err(e)),
         }
     }
-    let gpu = crate::gpu::Gpu::new()?;
-    let results = gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true)?;
+    let results = if records.is_empty() {
+        Vec::new()
+    } else {
+        let gpu = crate::gpu::Gpu::new().map_err(EvalError::Gpu)?;
+        gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
+    };
     let mut k = 0;
     for l in lines {
         let text = match l {
@@ -123,23 +189,25 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 }
             }
         };
-        writeln!(out, "{text}").map_err(|e| e.to_string())?;
+        writeln!(out, "{text}").map_err(EvalError::Output)?;
     }
-    out.flush().map_err(|e| e.to_string())
+    out.flush().map_err(EvalError::Output)
 }
 
-/// Runs `eval` over `input`, writing one line per non-empty input line to `out`.
-pub fn run(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> std::io::Result<()> {
-    for (i, line) in input.lines().enumerate() {
-        let line = line?;
-        if line.trim().is_empty() {
-            continue;
-        }
-        let result = match opts.precision {
-            Precision::F32 => eval_line::<f32>(&line, i + 1, opts),
-            Precision::F64 => eval_line::<f64>(&line, i + 1, opts),
+/// Runs `eval` over `input`: one output line per input line, each written and flushed as soon
+/// as it is computed (so `eval` works as a co-process).
+pub fn run(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
+    let mut input = Lines::new(input);
+    while let Some((n, text)) = input.next_line()? {
+        let result = match text {
+            Err(e) => e,
+            Ok(line) => match opts.precision {
+                Precision::F32 => eval_line::<f32>(line, n, opts),
+                Precision::F64 => eval_line::<f64>(line, n, opts),
+            },
         };
-        writeln!(out, "{result}")?;
+        writeln!(out, "{result}").map_err(EvalError::Output)?;
+        out.flush().map_err(EvalError::Output)?;
     }
-    out.flush()
+    Ok(())
 }

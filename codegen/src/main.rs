@@ -1,189 +1,232 @@
-//! The `airlight` command: evaluate scenes, emit and check shaders.
+//! The `airlight` command: evaluate scenes, emit and check shaders, verify a GPU, render.
+//! Arguments are parsed by clap; each command's help is `airlight CMD --help`.
 
 use airlight::Expansion;
-use airlight_codegen::eval::{self, EvalOptions, Precision};
+use airlight_codegen::eval::{self, Backend, EvalOptions, Precision};
+use airlight_codegen::targets::{self, EmitOptions, Target};
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-const HELP: &str = "\
-airlight — analytic fog glow (single-scattered air-light) of point and spot lights
+/// Analytic fog glow (single-scattered air-light) of point and spot lights.
+#[derive(Parser)]
+#[command(name = "airlight", version, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
 
-USAGE:
-    airlight eval [--backend cpu|gpu] [--precision f32|f64] [--terms 4|6] [--expansion chebyshev|taylor]
-    airlight emit [--out DIR] [--terms 4|6|4,6] [--targets wgsl,glsl,spirv,hlsl,msl]
-    airlight check [--dir DIR] [--terms ...] [--targets ...]
-    airlight verify [--cases N] [--terms 4|6]
-    airlight render [--scene lighthouse|road|stage|bench|all] [--size WxH] [--out DIR]
-                    [--backend cpu|gpu|reference|all]
-    airlight --help
+#[derive(Subcommand)]
+enum Command {
+    /// Evaluate scene records: JSON lines in, one JSON line out per line in.
+    #[command(long_about = EVAL_ABOUT)]
+    Eval(EvalArgs),
+    /// Write the shaders through naga.
+    ///
+    /// The compute entry point and the include library, per target and node count; everything
+    /// is rendered and validated before anything is written.
+    Emit(EmitArgs),
+    /// Check that the shaders are what `emit` would write now.
+    ///
+    /// Exit 1 and list the stale, missing or unexpected files when DIR is not what `emit`
+    /// would write now.
+    Check(EmitArgs),
+    /// Check this machine's GPU against the CPU kernel.
+    ///
+    /// Random scenes through the committed compute shader, compared with the f32 CPU kernel;
+    /// prints the adapter, the differences and a PASS/FAIL verdict (exit 1 on FAIL).
+    Verify(VerifyArgs),
+    /// Render the example pictures to PNG, with error heat maps.
+    #[command(long_about = RENDER_ABOUT)]
+    Render(RenderArgs),
+}
 
-COMMANDS:
-    eval    Read scene records as JSON lines on stdin, write one JSON line per record on
-            stdout, in input order: {\"in_scatter\": L} (\"inf\" for +infinity, when the light
-            lies exactly on the segment) or {\"error\": \"line N: field: problem\"}. A bad line
-            does not stop the others. Blank lines are skipped.
+const EVAL_ABOUT: &str = "\
+Evaluate scene records: JSON lines on stdin, one JSON line per input line on stdout, in input
+order and written as soon as it is computed (usable as a co-process): {\"in_scatter\": L}
+(\"inf\" for +infinity, when the light lies exactly on the segment) or
+{\"error\": \"line N: field: problem\"}. A bad line (invalid JSON or UTF-8, an empty line, an
+unknown or missing field, an invalid value) gets its error line and does not stop the others.
 
-            Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\": 25 | null},
-                     \"medium\": {\"sigma_s\": 0.08, \"sigma_t\": 0.1},
-                     \"light\": {\"position\": [x,y,z], \"intensity\": 100,
-                               \"distribution\": {\"kind\": \"isotropic\" | \"two_lobed\" (axis, power)
-                                                | \"spot\" (axis, cos_inner, cos_outer)}},
-                     \"phase\": {\"kind\": \"isotropic\" | \"rayleigh\" | \"henyey_greenstein\" (g)
-                               | \"schlick\" (k) | \"cornette_shanks\" (g)
-                               | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
-            t_max null means +infinity; unknown fields are ignored.
+Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\": 25 | null},
+         \"medium\": {\"sigma_s\": 0.08, \"sigma_t\": 0.1},
+         \"light\": {\"position\": [x,y,z], \"intensity\": 100,
+                   \"distribution\": {\"kind\": \"isotropic\" | \"two_lobed\" (axis, power)
+                                    | \"spot\" (axis, cos_inner, cos_outer)}},
+         \"phase\": {\"kind\": \"isotropic\" | \"rayleigh\" | \"henyey_greenstein\" (g)
+                   | \"schlick\" (k) | \"cornette_shanks\" (g)
+                   | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
+t_max null or absent means +infinity, t_min absent 0, distribution absent isotropic, phase
+absent isotropic. Any other key is an error (with a suggestion when it is close to a known one).
+`dir` need not be unit length (it is normalised); t_min and t_max are world distances.";
 
-    emit    Write the shaders (compute entry point and include library, per target and node
-            count) through naga into DIR (default: the workspace's shaders-out/). Everything
-            is rendered and validated before anything is written.
+const RENDER_ABOUT: &str = "\
+Render the pictures to PNG: a lighthouse with a two-lobed beam in thick brume, a foggy road with
+headlights and a streetlamp, a stage under three coloured spotlights, a park bench in Rayleigh
+mist. Writes DIR/<scene>_<backend>.png per backend — cpu (the f64 kernel's default path), gpu
+(the committed WGSL compute shader through wgpu, f32, 4 nodes per panel), reference
+(brute-force adaptive quadrature of the integral, no closed forms) — and, with the reference,
+error heat maps DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
+relative error against the reference, log10 scale from 1e-7 (black) through blue, green,
+yellow to 1e-1 (red), with a colour bar along the bottom. Prints one summary line per scene
+(times, max/median error); progress on stderr for renders that take more than a second.";
 
-    check   Exit 1 and list the stale, missing or unexpected files when DIR (default
-            shaders-out/) is not what `emit` would write now.
+#[derive(Clone, Copy, ValueEnum)]
+enum BackendArg {
+    /// The CPU kernel.
+    Cpu,
+    /// The emitted compute shader through wgpu on this machine's GPU (f32).
+    Gpu,
+}
 
-    verify  Run the CPU/shader agreement check on this machine's GPU: N scenes (default 10000)
-            through the committed compute shader, compared with the f32 CPU kernel; prints
-            the adapter, cases, max/median difference, NaN count and a PASS/FAIL verdict
-            (exit 1 on FAIL).
+#[derive(Clone, Copy, ValueEnum)]
+enum PrecisionArg {
+    F32,
+    F64,
+}
 
-    render  Render the pictures of issue 5 to PNG: a lighthouse with a two-lobed beam in thick
-            brume, a foggy road with headlights and a streetlamp, a stage under three coloured
-            spotlights, a park bench in Rayleigh mist. Writes DIR/<scene>_<backend>.png per
-            backend — cpu (the f64 kernel's default path), gpu (the committed WGSL compute
-            shader through wgpu, f32, 4 nodes per panel), reference (brute-force adaptive quadrature of
-            the integral, no closed forms) — and, with the reference, error heat maps
-            DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
-            relative error against the reference, log10 scale from 1e-7 (black) through blue,
-            green, yellow to 1e-1 (red), with a colour bar along the bottom. Prints one summary
-            line per scene (times, max/median error); progress on stderr for renders that take
-            more than a second.
+#[derive(Clone, Copy, ValueEnum)]
+enum ExpansionArg {
+    Chebyshev,
+    Taylor,
+}
 
-OPTIONS (render):
-    --scene NAME|all                 lighthouse, road, stage, bench or all (default all)
-    --size WxH                       image size in pixels (default 480x270)
-    --out DIR                        output directory, created if missing (default renders)
-    --backend cpu|gpu|reference|all  one backend, a comma list, or all (default all); with
-                                     all, a machine without a GPU adapter skips gpu with a
-                                     warning
+#[derive(clap::Args)]
+struct EvalArgs {
+    /// Where records are evaluated (the GPU backend is f32; --precision and --expansion do
+    /// not apply there).
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: BackendArg,
+    /// Kernel precision.
+    #[arg(long, value_enum, default_value = "f64")]
+    precision: PrecisionArg,
+    /// CPU: the paper's fixed-cost method with this many expansion terms (default: the
+    /// kernel's error-controlled panels, within 1e-10 in f64 and 1e-4 in f32 of
+    /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel (default 4).
+    #[arg(long, value_parser = ["4", "6"])]
+    terms: Option<String>,
+    /// Polynomial expansion of --terms.
+    #[arg(long, value_enum, default_value = "chebyshev")]
+    expansion: ExpansionArg,
+}
 
-OPTIONS (eval):
-    --backend cpu|gpu                CPU kernel (default) or the emitted compute shader through
-                                     wgpu on this machine's GPU (f32; --precision and
-                                     --expansion do not apply)
-    --precision f32|f64              kernel precision (default f64)
-    --terms 4|6                      CPU: the paper's fixed-cost method with this many
-                                     expansion terms (default: neither — the kernel's
-                                     error-controlled panels, within 1e-10 in f64 and 1e-4 in
-                                     f32 of max(|exact|, tau·scale)); GPU: the shader with this
-                                     many nodes per panel (default 4)
-    --expansion chebyshev|taylor     polynomial expansion of --terms (default chebyshev)
-";
+#[derive(clap::Args)]
+struct EmitArgs {
+    /// Output (emit) or checked (check) directory [default: the workspace's shaders-out/].
+    #[arg(long, visible_alias = "dir")]
+    out: Option<PathBuf>,
+    /// Nodes per panel of the emitted shaders, a comma list.
+    #[arg(long, value_delimiter = ',', value_parser = ["4", "6"], default_value = "4,6")]
+    terms: Vec<String>,
+    /// Target languages, a comma list (wgsl, glsl, spirv, hlsl, msl) [default: all].
+    #[arg(long, value_delimiter = ',')]
+    targets: Vec<String>,
+}
 
-fn fail(msg: &str) -> ExitCode {
-    eprintln!("airlight: {msg}");
-    eprintln!("Try 'airlight --help'.");
-    ExitCode::from(2)
+#[derive(clap::Args)]
+struct VerifyArgs {
+    /// Number of random scenes.
+    #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]
+    cases: u32,
+    /// Nodes per panel of the shader under test.
+    #[arg(long, value_parser = ["4", "6"], default_value = "4")]
+    terms: String,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum RenderBackend {
+    Cpu,
+    Gpu,
+    Reference,
+    /// All three; a machine without a GPU adapter skips gpu with a warning.
+    All,
+}
+
+#[derive(clap::Args)]
+struct RenderArgs {
+    /// lighthouse, road, stage, bench or all.
+    #[arg(long, default_value = "all", value_parser = ["lighthouse", "road", "stage", "bench", "all"])]
+    scene: String,
+    /// Image size in pixels, WxH (1..8192 each).
+    #[arg(long, default_value = "480x270", value_parser = parse_size)]
+    size: (u32, u32),
+    /// Output directory, created if missing.
+    #[arg(long, default_value = "renders")]
+    out: PathBuf,
+    /// Backends, a comma list.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "all")]
+    backend: Vec<RenderBackend>,
+}
+
+fn parse_size(v: &str) -> Result<(u32, u32), String> {
+    let parsed = v.split_once(['x', 'X']).and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)));
+    match parsed {
+        Some((w, h)) if w > 0 && h > 0 && w <= 8192 && h <= 8192 => Ok((w, h)),
+        _ => Err("expected WxH with 1..8192 pixels each".to_string()),
+    }
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let Some(cmd) = args.first() else {
-        print!("{HELP}");
-        return ExitCode::from(2);
-    };
-    match cmd.as_str() {
-        "--help" | "-h" | "help" => {
-            print!("{HELP}");
-            ExitCode::SUCCESS
-        }
-        "eval" => cmd_eval(&args[1..]),
-        "emit" => cmd_emit(&args[1..], false),
-        "check" => cmd_emit(&args[1..], true),
-        "verify" => cmd_verify(&args[1..]),
-        "render" => cmd_render(&args[1..]),
-        other => fail(&format!("unknown command '{other}'")),
+    match Cli::parse().command {
+        Command::Eval(a) => cmd_eval(a),
+        Command::Emit(a) => cmd_emit(a, false),
+        Command::Check(a) => cmd_emit(a, true),
+        Command::Verify(a) => cmd_verify(a),
+        Command::Render(a) => cmd_render(a),
     }
 }
 
-fn cmd_eval(args: &[String]) -> ExitCode {
-    let mut opts = EvalOptions::default();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
-        let r: Result<(), String> = match a.as_str() {
-            "--help" | "-h" => {
-                print!("{HELP}");
-                return ExitCode::SUCCESS;
-            }
-            "--backend" => value("--backend").and_then(|v| match v.as_str() {
-                "cpu" => Ok(opts.backend = eval::Backend::Cpu),
-                "gpu" => Ok(opts.backend = eval::Backend::Gpu),
-                _ => Err(format!("--backend must be cpu or gpu, not '{v}'")),
-            }),
-            "--precision" => value("--precision").and_then(|v| match v.as_str() {
-                "f32" => Ok(opts.precision = Precision::F32),
-                "f64" => Ok(opts.precision = Precision::F64),
-                _ => Err(format!("--precision must be f32 or f64, not '{v}'")),
-            }),
-            "--terms" => value("--terms").and_then(|v| match v.as_str() {
-                "4" => Ok(opts.terms = Some(4)),
-                "6" => Ok(opts.terms = Some(6)),
-                _ => Err(format!("--terms must be 4 or 6, not '{v}'")),
-            }),
-            "--expansion" => value("--expansion").and_then(|v| match v.as_str() {
-                "chebyshev" => Ok(opts.expansion = Expansion::Chebyshev),
-                "taylor" => Ok(opts.expansion = Expansion::Taylor),
-                _ => Err(format!("--expansion must be chebyshev or taylor, not '{v}'")),
-            }),
-            other => Err(format!("unknown option '{other}' for eval")),
-        };
-        if let Err(e) = r {
-            return fail(&e);
-        }
+/// An I/O failure of `eval`'s output: a closed pipe (`eval … | head -1`) is the reader's
+/// choice and ends the run quietly; anything else is reported.
+fn output_failed(e: &std::io::Error) -> ExitCode {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        return ExitCode::SUCCESS;
     }
+    eprintln!("airlight: {e}");
+    ExitCode::from(1)
+}
+
+fn cmd_eval(a: EvalArgs) -> ExitCode {
+    let opts = EvalOptions {
+        backend: match a.backend {
+            BackendArg::Cpu => Backend::Cpu,
+            BackendArg::Gpu => Backend::Gpu,
+        },
+        precision: match a.precision {
+            PrecisionArg::F32 => Precision::F32,
+            PrecisionArg::F64 => Precision::F64,
+        },
+        terms: a.terms.map(|t| t.parse().expect("clap checked 4 or 6")),
+        expansion: match a.expansion {
+            ExpansionArg::Chebyshev => Expansion::Chebyshev,
+            ExpansionArg::Taylor => Expansion::Taylor,
+        },
+    };
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
-    if opts.backend == eval::Backend::Gpu {
-        return match eval::run_gpu(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("airlight: {e}");
-                ExitCode::from(1)
-            }
-        };
-    }
-    match eval::run(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts) {
+    let result = match opts.backend {
+        Backend::Gpu => eval::run_gpu(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts),
+        Backend::Cpu => eval::run(stdin.lock(), std::io::BufWriter::new(stdout.lock()), &opts),
+    };
+    match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => fail(&format!("I/O error: {e}")),
+        Err(eval::EvalError::Output(e)) => output_failed(&e),
+        Err(e) => {
+            eprintln!("airlight: {e}");
+            ExitCode::from(1)
+        }
     }
 }
 
-fn cmd_emit(args: &[String], check_only: bool) -> ExitCode {
-    use airlight_codegen::targets::{self, EmitOptions, Target};
-    let mut opts = EmitOptions::default();
-    let mut dir = targets::default_out_dir();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
-        let r: Result<(), String> = match a.as_str() {
-            "--help" | "-h" => {
-                print!("{HELP}");
-                return ExitCode::SUCCESS;
-            }
-            "--out" | "--dir" => value(a).map(|v| dir = v.into()),
-            "--terms" => value("--terms").and_then(|v| {
-                v.split(',')
-                    .map(|t| t.trim().parse::<usize>().map_err(|_| format!("--terms: '{t}' is not a number")))
-                    .collect::<Result<Vec<_>, _>>()
-                    .map(|t| opts.terms = t)
-            }),
-            "--targets" => value("--targets").and_then(|v| {
-                v.split(',').map(|t| Target::parse(t).map_err(|e| e.to_string())).collect::<Result<Vec<_>, _>>().map(|t| opts.targets = t)
-            }),
-            other => Err(format!("unknown option '{other}'")),
-        };
-        if let Err(e) = r {
-            return fail(&e);
+fn cmd_emit(a: EmitArgs, check_only: bool) -> ExitCode {
+    let mut opts = EmitOptions { terms: a.terms.iter().map(|t| t.parse().expect("clap checked 4 or 6")).collect(), ..EmitOptions::default() };
+    if !a.targets.is_empty() {
+        match a.targets.iter().map(|t| Target::parse(t)).collect::<Result<Vec<_>, _>>() {
+            Ok(t) => opts.targets = t,
+            Err(e) => return error_line(&e),
         }
     }
+    let dir = a.out.unwrap_or_else(targets::default_out_dir);
     if check_only {
         match targets::check(&dir, &opts) {
             Ok(problems) if problems.is_empty() => {
@@ -211,29 +254,16 @@ fn cmd_emit(args: &[String], check_only: bool) -> ExitCode {
 }
 
 /// One error line; usage errors exit 2, everything else 1.
-fn error_line(e: &airlight_codegen::targets::EmitError) -> ExitCode {
+fn error_line(e: &targets::EmitError) -> ExitCode {
     eprintln!("airlight: {e}");
     match e {
-        airlight_codegen::targets::EmitError::Usage(_) => ExitCode::from(2),
+        targets::EmitError::Usage(_) => ExitCode::from(2),
         _ => ExitCode::from(1),
     }
 }
 
-fn cmd_verify(args: &[String]) -> ExitCode {
-    let (mut cases, mut terms) = (10_000usize, 4usize);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let v = it.next();
-        match (a.as_str(), v) {
-            ("--cases", Some(v)) => match v.parse() {
-                Ok(n) if n > 0 => cases = n,
-                _ => return fail(&format!("--cases must be a positive number, not '{v}'")),
-            },
-            ("--terms", Some(v)) if v == "4" || v == "6" => terms = v.parse().unwrap(),
-            ("--terms", Some(v)) => return fail(&format!("--terms must be 4 or 6, not '{v}'")),
-            (other, _) => return fail(&format!("unknown or incomplete option '{other}' for verify")),
-        }
-    }
+fn cmd_verify(a: VerifyArgs) -> ExitCode {
+    let (cases, terms) = (a.cases as usize, a.terms.parse::<usize>().expect("clap checked 4 or 6"));
     match airlight_codegen::verify::verify(cases, terms) {
         Ok(r) => {
             println!("adapter:            {}", r.adapter);
@@ -252,53 +282,14 @@ fn cmd_verify(args: &[String]) -> ExitCode {
     }
 }
 
-fn cmd_render(args: &[String]) -> ExitCode {
+fn cmd_render(a: RenderArgs) -> ExitCode {
     use airlight_codegen::render::{self, Image};
     use std::time::Instant;
-    let (mut scenes, mut size, mut out) = (render::SCENES.to_vec(), (480u32, 270u32), std::path::PathBuf::from("renders"));
-    let (mut cpu, mut gpu, mut reference, mut all) = (true, true, true, true);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
-        let r: Result<(), String> = match a.as_str() {
-            "--help" | "-h" => {
-                print!("{HELP}");
-                return ExitCode::SUCCESS;
-            }
-            "--scene" => value("--scene").and_then(|v| match v.as_str() {
-                "all" => Ok(scenes = render::SCENES.to_vec()),
-                s => match render::SCENES.iter().find(|n| **n == s) {
-                    Some(n) => Ok(scenes = vec![*n]),
-                    None => Err(format!("--scene must be lighthouse, road, stage, bench or all, not '{s}'")),
-                },
-            }),
-            "--size" => value("--size").and_then(|v| {
-                let parsed = v.split_once(['x', 'X']).and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)));
-                match parsed {
-                    Some((w, h)) if w > 0 && h > 0 && w <= 8192 && h <= 8192 => Ok(size = (w, h)),
-                    _ => Err(format!("--size must be WxH with 1..8192 pixels each, not '{v}'")),
-                }
-            }),
-            "--out" => value("--out").map(|v| out = v.into()),
-            "--backend" => value("--backend").and_then(|v| {
-                (cpu, gpu, reference, all) = (false, false, false, false);
-                for b in v.split(',') {
-                    match b.trim() {
-                        "cpu" => cpu = true,
-                        "gpu" => gpu = true,
-                        "reference" => reference = true,
-                        "all" => (cpu, gpu, reference, all) = (true, true, true, true),
-                        other => return Err(format!("--backend must be cpu, gpu, reference or all, not '{other}'")),
-                    }
-                }
-                Ok(())
-            }),
-            other => Err(format!("unknown option '{other}' for render")),
-        };
-        if let Err(e) = r {
-            return fail(&e);
-        }
-    }
+    let scenes: Vec<&str> = if a.scene == "all" { render::SCENES.to_vec() } else { render::SCENES.iter().copied().filter(|n| *n == a.scene).collect() };
+    let (size, out) = (a.size, a.out);
+    let all = a.backend.contains(&RenderBackend::All);
+    let has = |b: RenderBackend| all || a.backend.contains(&b);
+    let (cpu, gpu, reference) = (has(RenderBackend::Cpu), has(RenderBackend::Gpu), has(RenderBackend::Reference));
     if let Err(e) = std::fs::create_dir_all(&out) {
         eprintln!("airlight: {}: {e}", out.display());
         return ExitCode::from(1);

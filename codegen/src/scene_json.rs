@@ -7,8 +7,11 @@
 //!            "distribution": {"kind": "two_lobed", "axis": [0,-1,0], "power": 4}},
 //!  "phase": {"kind": "henyey_greenstein", "g": 0.5}}
 //! ```
-//! `t_max: null` (or absent) means `+∞`. Unknown fields are ignored. Numbers are read as f64
-//! and rounded to the evaluation precision.
+//! `t_max: null` (or absent) means `+∞`, an absent `t_min` 0, an absent `distribution` or
+//! `phase` isotropic. Any other key is an error naming it (with the closest known key when one
+//! is close), except the annotations [`ANNOTATIONS`], which never change the evaluation.
+//! Numbers are read as f64 and rounded to the evaluation precision; one that overflows it is
+//! an error.
 
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
@@ -118,9 +121,36 @@ impl GetPath for Value {
     }
 }
 
+/// Top-level keys a record may carry besides `ray`, `medium`, `light` and `phase`, ignored by
+/// the evaluation: `id`, `comment` and `category` (free text), `in_scatter` and `scale` (a
+/// reference value and its scale, as the committed references carry them).
+pub const ANNOTATIONS: [&str; 5] = ["id", "comment", "category", "in_scatter", "scale"];
+
+/// Every key of the object at `path` (`""`: the record) is one of `known`.
+fn known_keys(root: &Value, path: &str, known: &[&str]) -> Result<(), FieldError> {
+    let object = if path.is_empty() { root.as_object() } else { root.get_path(path).and_then(Value::as_object) };
+    let Some(object) = object else { return Ok(()) };
+    for key in object.keys() {
+        if !known.contains(&key.as_str()) {
+            let field = if path.is_empty() { key.clone() } else { format!("{path}.{key}") };
+            // the closest known key, by the Jaro–Winkler similarity clap uses for suggestions
+            let closest = known.iter().map(|k| (strsim::jaro_winkler(key, k), *k)).filter(|(score, _)| *score > 0.7).max_by(|a, b| a.0.total_cmp(&b.0));
+            let message = match closest {
+                Some((_, k)) => format!("unknown field (did you mean `{k}`?)"),
+                None => format!("unknown field (expected one of {})", known.join(", ")),
+            };
+            return Err(FieldError { field, message });
+        }
+    }
+    Ok(())
+}
+
 fn number<T: Real>(root: &Value, field: &str) -> Result<T, FieldError> {
     match root.get_path(field) {
         Some(Value::Number(n)) => match n.as_f64() {
+            Some(x) if x.is_finite() && !T::lit(x).is_finite() => {
+                err(field, &format!("{x:e} is beyond the range of {}", if T::epsilon() > T::lit(1e-10) { "f32" } else { "f64" }))
+            }
             Some(x) => Ok(T::lit(x)),
             None => err(field, "expected a number"),
         },
@@ -156,7 +186,11 @@ fn kind<'a>(root: &'a Value, field: &str) -> Result<&'a str, FieldError> {
 
 /// Parses one record (already decoded as JSON).
 pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> {
+    let mut top = vec!["ray", "medium", "light", "phase"];
+    top.extend(ANNOTATIONS);
+    known_keys(root, "", &top)?;
     object(root, "ray")?;
+    known_keys(root, "ray", &["origin", "dir", "t_min", "t_max"])?;
     let t_max = match root.get_path("ray.t_max") {
         None | Some(Value::Null) => T::infinity(),
         Some(Value::String(s)) if s == "inf" => T::infinity(),
@@ -172,13 +206,19 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
         t_max,
     };
     object(root, "medium")?;
+    known_keys(root, "medium", &["sigma_s", "sigma_t"])?;
     let medium = Medium { sigma_s: number(root, "medium.sigma_s")?, sigma_t: number(root, "medium.sigma_t")? };
     object(root, "light")?;
+    known_keys(root, "light", &["position", "intensity", "distribution"])?;
     let distribution = match root.get_path("light.distribution") {
         None | Some(Value::Null) => AnyDistribution::Omni,
         Some(_) => match kind(root, "light.distribution.kind")? {
-            "isotropic" | "omni" => AnyDistribution::Omni,
+            "isotropic" | "omni" => {
+                known_keys(root, "light.distribution", &["kind"])?;
+                AnyDistribution::Omni
+            }
             "two_lobed" => {
+                known_keys(root, "light.distribution", &["kind", "axis", "power"])?;
                 let p: f64 = number(root, "light.distribution.power")?;
                 if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
                     return err("light.distribution.power", "must be an even non-negative integer");
@@ -186,7 +226,10 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
                 AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>(root, "light.distribution.axis")?, power: p as u32 })
             }
             "spot" => AnyDistribution::SpotCone(SpotCone {
-                axis: vec3::<T>(root, "light.distribution.axis")?,
+                axis: {
+                    known_keys(root, "light.distribution", &["kind", "axis", "cos_inner", "cos_outer"])?;
+                    vec3::<T>(root, "light.distribution.axis")?
+                },
                 cos_inner: number(root, "light.distribution.cos_inner")?,
                 cos_outer: number(root, "light.distribution.cos_outer")?,
             }),
@@ -201,13 +244,25 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
     let phase = match root.get_path("phase") {
         None | Some(Value::Null) => AnyPhase::Isotropic,
         Some(_) => match kind(root, "phase.kind")? {
-            "isotropic" => AnyPhase::Isotropic,
-            "rayleigh" => AnyPhase::Rayleigh,
-            "henyey_greenstein" => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number(root, "phase.g")? }),
-            "schlick" => AnyPhase::Schlick(Schlick { k: number(root, "phase.k")? }),
-            "cornette_shanks" => AnyPhase::CornetteShanks(CornetteShanks { g: number(root, "phase.g")? }),
+            "isotropic" => known_keys(root, "phase", &["kind"]).map(|_| AnyPhase::Isotropic)?,
+            "rayleigh" => known_keys(root, "phase", &["kind"]).map(|_| AnyPhase::Rayleigh)?,
+            "henyey_greenstein" => {
+                known_keys(root, "phase", &["kind", "g"])?;
+                AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number(root, "phase.g")? })
+            }
+            "schlick" => {
+                known_keys(root, "phase", &["kind", "k"])?;
+                AnyPhase::Schlick(Schlick { k: number(root, "phase.k")? })
+            }
+            "cornette_shanks" => {
+                known_keys(root, "phase", &["kind", "g"])?;
+                AnyPhase::CornetteShanks(CornetteShanks { g: number(root, "phase.g")? })
+            }
             "two_lobe_henyey_greenstein" => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein {
-                g1: number(root, "phase.g1")?,
+                g1: {
+                    known_keys(root, "phase", &["kind", "g1", "g2", "w"])?;
+                    number(root, "phase.g1")?
+                },
                 g2: number(root, "phase.g2")?,
                 w: number(root, "phase.w")?,
             }),

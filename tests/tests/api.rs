@@ -128,13 +128,14 @@ fn eval_lines(input: &str, precision: Precision) -> Vec<String> {
 
 #[test]
 fn eval_lines_in_order_with_errors_naming_line_and_field() {
-    let good = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_min": 0.0, "t_max": 25.0}, "medium": {"sigma_s": 0.08, "sigma_t": 0.1}, "light": {"position": [5,1,0], "intensity": 100.0, "distribution": {"kind": "two_lobed", "axis": [0,-1,0], "power": 4}}, "phase": {"kind": "henyey_greenstein", "g": 0.5}, "comment": "unknown fields are ignored"}"#;
+    let good = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_min": 0.0, "t_max": 25.0}, "medium": {"sigma_s": 0.08, "sigma_t": 0.1}, "light": {"position": [5,1,0], "intensity": 100.0, "distribution": {"kind": "two_lobed", "axis": [0,-1,0], "power": 4}}, "phase": {"kind": "henyey_greenstein", "g": 0.5}, "comment": "an annotation, ignored"}"#;
     let bad_power = good.replace("\"power\": 4", "\"power\": 3");
     let bad_dir = good.replace("\"dir\": [1,0,0]", "\"dir\": [1,0]");
     let on_segment = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_min": 0, "t_max": null}, "medium": {"sigma_s": 1, "sigma_t": 0}, "light": {"position": [2,0,0], "intensity": 1}, "phase": {"kind": "isotropic"}}"#;
-    let input = format!("{good}\n{bad_power}\nnot json\n\n{bad_dir}\n{on_segment}\n{good}\n");
+    let input = format!("{good}\n{bad_power}\nnot json\n\n{bad_dir}\n{on_segment}\r\n{good}");
     let out = eval_lines(&input, Precision::F64);
-    assert_eq!(out.len(), 6, "{out:?}");
+    // one output line per input line, the blank one included, the last one without its newline
+    assert_eq!(out.len(), 7, "{out:?}");
     let first: serde_json::Value = serde_json::from_str(&out[0]).unwrap();
     let x = first["in_scatter"].as_f64().unwrap();
     assert!(x > 0.0);
@@ -142,13 +143,40 @@ fn eval_lines_in_order_with_errors_naming_line_and_field() {
     assert_eq!(out[0], format!("{{\"in_scatter\":{x:?}}}"));
     assert!(out[1].contains("line 2") && out[1].contains("light.distribution.power"), "{}", out[1]);
     assert!(out[2].contains("line 3") && out[2].contains("invalid JSON"), "{}", out[2]);
-    assert!(out[3].contains("line 5") && out[3].contains("ray.dir"), "{}", out[3]);
-    assert_eq!(out[4], "{\"in_scatter\":\"inf\"}");
-    assert_eq!(out[5], out[0]);
+    assert!(out[3].contains("line 4") && out[3].contains("empty line"), "{}", out[3]);
+    assert!(out[4].contains("line 5") && out[4].contains("ray.dir"), "{}", out[4]);
+    assert_eq!(out[5], "{\"in_scatter\":\"inf\"}");
+    assert_eq!(out[6], out[0]);
     let out32 = eval_lines(good, Precision::F32);
     let y: f32 = serde_json::from_str::<serde_json::Value>(&out32[0]).unwrap()["in_scatter"].as_f64().unwrap() as f32;
     assert_eq!(out32[0], format!("{{\"in_scatter\":{y:?}}}"));
     assert!(((y as f64) - x).abs() < 1e-2 * x);
+}
+
+/// What a new user mistypes gets an error naming the field, not a silently different scene:
+/// unknown keys (with the closest known one), a number beyond the precision's range, a line
+/// that is not UTF-8 (the lines after it are still evaluated).
+#[test]
+fn eval_rejects_unknown_keys_and_bad_bytes_per_line() {
+    let good = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_max": 25}, "medium": {"sigma_s": 0.08, "sigma_t": 0.1}, "light": {"position": [5,1,0], "intensity": 100}, "phase": {"kind": "henyey_greenstein", "g": 0.5}}"#;
+    let cases = [
+        (good.replace("\"t_max\"", "\"tmax\""), "ray.tmax", "did you mean `t_max`?"),
+        (good.replace("\"phase\"", "\"phase_function\""), "phase_function", "did you mean `phase`?"),
+        (good.replace("\"g\": 0.5", "\"g\": 0.5, \"k\": 0.2"), "phase.k", "unknown field"),
+        (good.replace("\"intensity\": 100", "\"intensity\": 1e39"), "light.intensity", "beyond the range of f32"),
+    ];
+    for (line, field, message) in &cases {
+        let out = eval_lines(line, Precision::F32);
+        assert!(out.len() == 1 && out[0].contains(&format!("line 1: {field}: ")) && out[0].contains(message), "{line} -> {out:?}");
+    }
+    let mut input = b"{\"ray\": \xff}\n".to_vec();
+    input.extend_from_slice(good.as_bytes());
+    let mut out = Vec::new();
+    run(&input[..], &mut out, &EvalOptions::default()).unwrap();
+    let out: Vec<String> = String::from_utf8(out).unwrap().lines().map(str::to_string).collect();
+    assert_eq!(out.len(), 2, "{out:?}");
+    assert!(out[0].contains("line 1") && out[0].contains("not UTF-8"), "{}", out[0]);
+    assert!(out[1].starts_with("{\"in_scatter\":"), "{}", out[1]);
 }
 
 /// Subnormal inputs (a kernel fuzz finding): the exact-product reduction would underflow to
