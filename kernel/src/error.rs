@@ -19,6 +19,10 @@ pub enum ErrorKind {
     OddPower,
     /// A spot cone whose outer cosine is not below its inner cosine.
     InvertedCone,
+    /// A cosine outside `[−1, 1]`.
+    NotACosine,
+    /// A weight outside `[0, 1]`.
+    NotAFraction,
 }
 
 /// An invalid input, naming the field by its path in the JSON scene record (DESIGN §6),
@@ -47,7 +51,9 @@ impl fmt::Display for InputError {
             ErrorKind::EmptyRange => "t_min must not exceed t_max",
             ErrorKind::OutOfRange => "must lie strictly between -1 and 1",
             ErrorKind::OddPower => "must be an even non-negative integer",
-            ErrorKind::InvertedCone => "cos_outer must be below cos_inner, both in [-1, 1]",
+            ErrorKind::InvertedCone => "cos_outer must be below cos_inner",
+            ErrorKind::NotACosine => "must lie in [-1, 1]",
+            ErrorKind::NotAFraction => "must lie in [0, 1]",
         };
         write!(f, "{}: {}", self.field, what)
     }

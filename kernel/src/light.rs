@@ -132,7 +132,12 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         check_finite(self.cos_inner, "light.distribution.cos_inner")?;
         check_finite(self.cos_outer, "light.distribution.cos_outer")?;
         let one = T::one();
-        if !(self.cos_outer < self.cos_inner && self.cos_outer >= -one && self.cos_inner <= one) {
+        for (c, field) in [(self.cos_inner, "light.distribution.cos_inner"), (self.cos_outer, "light.distribution.cos_outer")] {
+            if !(c >= -one && c <= one) {
+                return Err(InputError::new(field, ErrorKind::NotACosine));
+            }
+        }
+        if !(self.cos_outer < self.cos_inner) {
             return Err(InputError::new("light.distribution.cos_outer", ErrorKind::InvertedCone));
         }
         Ok(())

@@ -193,7 +193,7 @@ impl<T: Real> PhaseFunction<T> for TwoLobeHenyeyGreenstein<T> {
         check_asymmetry(self.g2, "phase.g2")?;
         check_finite(self.w, "phase.w")?;
         if self.w < T::zero() || self.w > T::one() {
-            return Err(InputError::new("phase.w", crate::error::ErrorKind::OutOfRange));
+            return Err(InputError::new("phase.w", crate::error::ErrorKind::NotAFraction));
         }
         Ok(())
     }

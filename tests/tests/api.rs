@@ -58,10 +58,13 @@ fn bad_input_gets_a_typed_error_naming_the_field() {
     let mut l = light();
     l.distribution = AnyDistribution::SpotCone(SpotCone { axis: DVec3::Y, cos_inner: 0.5, cos_outer: 0.9 });
     assert_eq!(error_of(ray(), l, medium(), iso), ("light.distribution.cos_outer", ErrorKind::InvertedCone));
+    // a cosine beyond 1 is named where it is, not as an inverted cone
+    l.distribution = AnyDistribution::SpotCone(SpotCone { axis: DVec3::Y, cos_inner: 2.0, cos_outer: 0.9 });
+    assert_eq!(error_of(ray(), l, medium(), iso), ("light.distribution.cos_inner", ErrorKind::NotACosine));
     let hg = AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 1.0 });
     assert_eq!(error_of(ray(), light(), medium(), hg), ("phase.g", ErrorKind::OutOfRange));
     let two = AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.5, g2: -0.2, w: 1.5 });
-    assert_eq!(error_of(ray(), light(), medium(), two), ("phase.w", ErrorKind::OutOfRange));
+    assert_eq!(error_of(ray(), light(), medium(), two), ("phase.w", ErrorKind::NotAFraction));
     // The unchecked API gives the documented defined value instead of failing.
     let mut r = ray();
     r.dir = DVec3::ZERO;
