@@ -1,11 +1,11 @@
-//! Pictures (issue 5): the paper's kinds of scenes — a lighthouse with a two-lobed beam in
+//! Pictures: the paper's kinds of scenes — a lighthouse with a two-lobed beam in
 //! thick brume, a foggy road with headlights and a streetlamp, a stage under three coloured
 //! spotlights, a park bench in Rayleigh mist — rendered four ways:
 //!
 //! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
 //! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_4.wgsl`, f32, 4
 //!   nodes per panel) through wgpu, every (pixel, light) segment one record of [`crate::layout`];
-//! * [`render_reference`]: brute-force quadrature of the contract integral (DESIGN §1) that
+//! * [`render_reference`]: brute-force quadrature of the contract integral (docs/DESIGN.md §1) that
 //!   uses none of the kernel's closed forms (see [`reference_in_scatter`]);
 //! * [`relative_errors`] + [`heat_map`]: per-pixel relative error against the reference in a
 //!   false-colour scale.
@@ -607,7 +607,7 @@ pub const REFERENCE_TOL: f64 = 1e-9;
 /// Panel budget of the reference quadrature per segment (never reached in the four scenes).
 const MAX_PANELS: usize = 4000;
 
-/// `L_m` of one segment by brute-force quadrature of the contract integral (DESIGN §1),
+/// `L_m` of one segment by brute-force quadrature of the contract integral (docs/DESIGN.md §1),
 ///
 /// ```text
 /// L_m = σs·I·∫_{t0}^{t1} e^{−σt(t−t0)} · e^{−σt r}/r² · D(c) · P(μ) dt,

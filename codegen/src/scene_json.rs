@@ -1,4 +1,4 @@
-//! Scene records as JSON lines (DESIGN §6) → kernel types, with errors that name the field.
+//! Scene records as JSON lines (docs/DESIGN.md §6) → kernel types, with errors that name the field.
 //!
 //! ```json
 //! {"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_min": 0.0, "t_max": 25.0},

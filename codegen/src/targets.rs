@@ -1,5 +1,5 @@
 //! Shader emission: the WGSL source of truth (`codegen/shader/*.wgsl`) → naga front end →
-//! validator → naga back ends, in the two shapes engines use (DESIGN §5):
+//! validator → naga back ends, in the two shapes engines use (docs/DESIGN.md §5):
 //!
 //! * the **compute entry point** `airlight_main` over a storage buffer of records
 //!   ([`crate::layout`]): WGSL, GLSL 450, SPIR-V 1.0 (Vulkan 1.0), HLSL (SM 5.1), MSL;

@@ -25,7 +25,7 @@ pub enum ErrorKind {
     NotAFraction,
 }
 
-/// An invalid input, naming the field by its path in the JSON scene record (DESIGN §6),
+/// An invalid input, naming the field by its path in the JSON scene record (docs/DESIGN.md §6),
 /// e.g. `ray.dir` or `phase.g`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct InputError {

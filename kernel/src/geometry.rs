@@ -1,4 +1,4 @@
-//! World space → the canonical integral (paper §3.1–3.2, eq. 4–6; DESIGN §2).
+//! World space → the canonical integral (paper §3.1–3.2, eq. 4–6; docs/DESIGN.md §2).
 //!
 //! `x_h = (p − o)·d` is where the light's perpendicular meets the ray line, `h` the light's
 //! distance from that line, `d_el = d·a` and `d_c = (o + x_h d − p)·a / h` the two direction

@@ -12,14 +12,14 @@
 //!
 //! `m_k = ∫ e^{−H(v − v_s)} s^k / (1 + y²) dy`   (`v_s`: smallest `v` on the half),
 //!
-//! scaled by `e^{H v_s}` so that nothing overflows (DESIGN §3). Since `1/(1+y²) = Im 1/(y−i)`,
+//! scaled by `e^{H v_s}` so that nothing overflows (docs/DESIGN.md §3). Since `1/(1+y²) = Im 1/(y−i)`,
 //! `m_k = Im Q_k` with `Q_k = ∫ e^{…} s^k/(y − i) dy`, and `s^k/(s + b) = s^{k−1} − b s^{k−1}/(s + b)`
 //! (`b = y_c − i`) gives `Q_k = R_{k−1} − b Q_{k−1}`, `R_j = ∫ e^{…} s^j dy`: the paper's
 //! reduction of `vⁿ/(1+v²)` (eq. 12–13, 18–19), in the local variable. Working locally keeps the
 //! products `a_k·m_k` accurate even on tiny sub-intervals, where monomials in `y` would cancel.
 //!
 //! `Q_0` is where the exponential integral enters: with `C = ∫_{v_s}^{v_e} e^{−H(v−v_s)}/(v − i) dv`
-//! (DESIGN §2: `C = e^{Hv_s}(G(v_e) − G(v_s))`, `G(v) = −e^{−iH}E1(H(v − i))`),
+//! (docs/DESIGN.md §2: `C = e^{Hv_s}(G(v_e) − G(v_s))`, `G(v) = −e^{−iH}E1(H(v − i))`),
 //! * first half: `Q_0 = C`;
 //! * second half: `Q_0 = T_1 − conj(C)`, `T_n = ∫ e^{−H(v−v_s)} v^{−n} dv` (eq. 17, 35: the
 //!   paper's `J_e` is `T_1`).

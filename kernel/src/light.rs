@@ -1,5 +1,5 @@
 //! Light distributions `D(c)`: the angular profile of a point light, `c` the cosine between
-//! the direction from the light to the lit point and the light's axis (DESIGN §1). The
+//! the direction from the light to the lit point and the light's axis (docs/DESIGN.md §1). The
 //! radiant intensity towards that direction is `I·D(c)`.
 //!
 //! Implement [`LightDistribution`] to add your own; as with phase functions, one generic

@@ -1,4 +1,4 @@
-//! Ray marching: the fixed-step quadrature of the contract integral (DESIGN §1) that the
+//! Ray marching: the fixed-step quadrature of the contract integral (docs/DESIGN.md §1) that the
 //! analytic form replaces. Not on the data path — the benchmarks' baseline and an independent
 //! check (no closed form, no expansion: it samples `e^{−σt(t−t0)} e^{−σt r}/r² D(c) P(μ)`).
 //!
@@ -6,7 +6,7 @@
 //!   marcher does.
 //! * [`Steps::Equiangular`]: equal steps in the angle `θ = atan((t − x_h)/h)` seen from the
 //!   light, the midpoint rule in `θ` (`dt/r² = dθ/h`: the `1/r²` peak is absorbed; the angle
-//!   formulation of Sun et al. 2005 and Hong's thesis, the seeds' 003, and the equiangular
+//!   formulation of Sun et al. 2005 and Hong's 2006 thesis, and the equiangular
 //!   sampling of Kulla & Fajardo 2012). A much stronger baseline for lights close to the ray.
 //!
 //! An unbounded segment is cut where the transmittance `e^{−σt(t − t0)}` has fallen to
@@ -101,7 +101,7 @@ where
 /// Gauss–Legendre in the angle seen from the light: the strongest simple alternative to the
 /// closed forms, what a renderer engineer writes instead. With `t − x_h = h tan θ`,
 /// `dt/r² = dθ/h`, so `L_m = σs I/h ∫ e^{−σt(t − t0 + r)} D(c) P(μ) dθ` over
-/// `[atan u_0, atan u_1]` with `μ = −sin θ`, `c = d_el sin θ + d_c cos θ` (DESIGN §2): no
+/// `[atan u_0, atan u_1]` with `μ = −sin θ`, `c = d_el sin θ + d_c cos θ` (docs/DESIGN.md §2): no
 /// `1/r²` peak left, noise-free, a fixed cost of one `sin_cos`, one `exp` and `F` per node.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GaussAngle<T> {

@@ -1,5 +1,5 @@
 //! Phase functions `P(μ)`, normalised over the sphere (`∫ P dω = 1`); `μ` is the cosine of
-//! the scattering angle, `μ = 1` for light going straight on towards the viewer (DESIGN §1).
+//! the scattering angle, `μ = 1` for light going straight on towards the viewer (docs/DESIGN.md §1).
 //!
 //! Implement [`PhaseFunction`] to add your own: write `eval` once over [`Scalar`] and the
 //! kernel gets both values (Chebyshev interpolation) and exact Taylor coefficients (jets).

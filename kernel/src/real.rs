@@ -2,7 +2,7 @@
 //!
 //! [`Real`] adds to `num_traits::Float` the few things the kernel needs per precision:
 //! the glam vector type of that precision, and the tuning constants of the exponential
-//! integral's region selection (DESIGN §3), which differ between f32 and f64 because the
+//! integral's region selection (docs/DESIGN.md §3), which differ between f32 and f64 because the
 //! iteration budgets do (16 loop iterations per f32 evaluation, 40 per f64).
 
 use core::fmt::{Debug, Display};

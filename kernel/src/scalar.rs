@@ -3,7 +3,7 @@
 //! A [`PhaseFunction`](crate::PhaseFunction) or [`LightDistribution`](crate::LightDistribution)
 //! is ordinary generic code over [`Scalar`]. Evaluated on a plain float it gives values (used by
 //! the Chebyshev interpolant); evaluated on a [`Jet`](crate::expansion::Jet) it gives exact Taylor
-//! coefficients (DESIGN §4: derive nothing by hand).
+//! coefficients (docs/DESIGN.md §4: derive nothing by hand).
 
 use crate::real::Real;
 use core::ops::{Add, Div, Mul, Neg, Sub};

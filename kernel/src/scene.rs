@@ -136,7 +136,7 @@ where
     pub fn phase(&self) -> &P {
         &self.phase
     }
-    /// The canonical reduction (DESIGN §2) of the scene, by
+    /// The canonical reduction (docs/DESIGN.md §2) of the scene, by
     /// [`Canonical::new_accurate`] (the fixed-term methods use [`Canonical::new`], as the
     /// shaders do).
     pub fn canonical(&self) -> &Canonical<T> {
@@ -153,7 +153,7 @@ where
         }
     }
 
-    /// In-scattered radiance `L_m` (DESIGN §1), error-controlled: panels with
+    /// In-scattered radiance `L_m` (docs/DESIGN.md §1), error-controlled: panels with
     /// [`Real::PANEL_NODES`] Gauss–Legendre nodes each, refined until the estimated error is
     /// below [`Real::PANEL_TOLERANCE`] of `F` on each ([`default_control`]; see
     /// [`crate::panels`]).

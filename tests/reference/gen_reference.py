@@ -2,8 +2,8 @@
 """Independent reference values for the airlight kernel, by mpmath.
 
 Writes, next to this file:
-  scenes.jsonl   scene records (DESIGN.md §6) + "category" + "in_scatter": the air-light
-                 integral of DESIGN.md §1 by adaptive tanh-sinh quadrature at 30 digits
+  scenes.jsonl   scene records (docs/DESIGN.md §6) + "category" + "in_scatter": the air-light
+                 integral of docs/DESIGN.md §1 by adaptive tanh-sinh quadrature at 30 digits
                  ("inf" where the light lies exactly on the segment);
   e1.jsonl       E1(z) = mp.e1(z) and e^z E1(z) over Re z >= 0, |z| in [1e-8, 1e4];
                  every point is exactly representable in binary32, so the same reference
@@ -109,7 +109,7 @@ def parse(rec):
 
 
 def reference(rec):
-    """L_m of DESIGN §1 for one record, or None if the two quadratures disagree."""
+    """L_m of docs/DESIGN.md §1 for one record, or None if the two quadratures disagree."""
     mp.mp.dps = DPS
     o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h = parse(rec)
     if h == 0 and t0 <= xh <= t1:

@@ -1,8 +1,8 @@
-//! Zero heap allocations per evaluation (issue 5): a counting global allocator wraps the
+//! Zero heap allocations per evaluation: a counting global allocator wraps the
 //! system one, and every evaluation entry point of the kernel — checked and unchecked,
 //! f32 and f64, 4/6/12 terms, both expansions, lit sub-segments, the surface term and the
 //! paper's algorithm — runs over property-generated scenes (every phase function and light
-//! distribution, DESIGN §3 extremes included) between two readings of the counter.
+//! distribution, docs/DESIGN.md §3 extremes included) between two readings of the counter.
 //!
 //! The scenes are built *before* the first reading; only evaluation is counted. The test
 //! binary runs this one test, so no other thread allocates in between (libtest's own

@@ -1,7 +1,7 @@
 //! The complex exponential integral against mpmath (tests/reference/e1.jsonl, made by
 //! tests/reference/gen_reference.py), and the iteration budgets of the issue.
 //!
-//! Targets (issue 2): over `Re z ≥ 0`, `|z|` from 1e-8 to 1e4, both signs of `Im z`:
+//! Targets: over `Re z ≥ 0`, `|z|` from 1e-8 to 1e4, both signs of `Im z`:
 //! f64 ≤ 1e-13 relative, f32 ≤ 2e-6 relative, ≤ 40 / ≤ 16 loop iterations per evaluation.
 //! Relative error is measured on the scaled `e^z E1(z)` everywhere (it is what the kernel
 //! uses), and on `E1(z)` itself where that is a normal number.

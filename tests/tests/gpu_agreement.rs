@@ -43,7 +43,7 @@ fn gpu() -> Option<Gpu> {
     }
 }
 
-/// Scenes: random ones over wide ranges, plus the extremes of DESIGN §3.
+/// Scenes: random ones over wide ranges, plus the extremes of docs/DESIGN.md §3.
 fn scenes() -> Vec<Plain> {
     let mut rng = Rng(42);
     let mut out = Vec::new();

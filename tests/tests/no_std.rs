@@ -1,4 +1,4 @@
-//! The no_std proof (issue 2): `nostd-check/` is a `#![no_std]` staticlib with its own
+//! The no_std proof: `nostd-check/` is a `#![no_std]` staticlib with its own
 //! `#[panic_handler]` linking the kernel; if anything in the kernel's dependency graph pulled
 //! in `std`, rustc would reject the duplicate `panic_impl` lang item. Built here with the
 //! same cargo that runs the tests.

@@ -1,4 +1,4 @@
-//! Properties of the exact integral that the kernel must keep (issue 2): linearity in `I` and
+//! Properties of the exact integral that the kernel must keep: linearity in `I` and
 //! `σs`; splitting a segment; continuity to the `atan` form as `σt → 0`; non-negativity;
 //! finite output for finite input; f32 close to f64. Scenes come from a seeded generator
 //! (`airlight_tests::scenes::random`), so every run checks the same few thousand cases.

@@ -1,4 +1,4 @@
-//! The kernel against independent references: mpmath quadrature of the integral of DESIGN §1
+//! The kernel against independent references: mpmath quadrature of the integral of docs/DESIGN.md §1
 //! (tests/reference/scenes.jsonl, made by tests/reference/gen_reference.py).
 //!
 //! Asserted:

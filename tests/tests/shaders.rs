@@ -1,4 +1,4 @@
-//! The emitted shaders (issue 3): the committed `shaders-out/` is exactly what the source emits
+//! The emitted shaders: the committed `shaders-out/` is exactly what the source emits
 //! now (golden test), every artifact validates with the external tools, and the include
 //! libraries compile inside a test shader of each language.
 //!

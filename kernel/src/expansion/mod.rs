@@ -1,4 +1,4 @@
-//! Polynomial expansion of `F = D(c)·P(μ)` over one half's sub-interval (DESIGN §4).
+//! Polynomial expansion of `F = D(c)·P(μ)` over one half's sub-interval (docs/DESIGN.md §4).
 //!
 //! Both expansions return coefficients `a_k` of `F ≈ Σ_{k<N} a_k s^k` in the local offset
 //! `s = y − y_c` from the sub-interval's midpoint, which is what [`crate::integrals`] integrates.

@@ -1,4 +1,4 @@
-//! Exponential integrals (DESIGN §3, paper §4.1–4.2).
+//! Exponential integrals (docs/DESIGN.md §3, paper §4.1–4.2).
 //!
 //! * [`e1`], [`e1_scaled`], [`ei`]: complex `E1(z)`, `e^z E1(z)` and `Ei(z)` for `Re z ≥ 0`
 //!   (for `Ei`: `Re z ≤ 0`), the production path: power series inside an ellipse around the
