@@ -176,18 +176,49 @@ where
     }
 
     /// `L_m` by error-controlled panels with `N` Gauss–Legendre nodes each (`N` ∈ {4, 6, 8, 10,
-    /// 12, 16}; other counts give 0).
+    /// 12, 16}, the tabulated rules; any other count is a compile error).
+    ///
+    /// ```compile_fail,E0080
+    /// use airlight::glam::DVec3;
+    /// use airlight::{default_control, light::Omni, phase::Isotropic, Medium, PointLight, Ray, Scene};
+    /// let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 25.0 };
+    /// let light = PointLight { position: DVec3::new(5.0, 1.0, 0.0), intensity: 100.0, distribution: Omni };
+    /// let scene = Scene::new(ray, light, Medium { sigma_s: 0.08, sigma_t: 0.1 }, Isotropic).unwrap();
+    /// let _ = scene.in_scatter_panels::<5>(default_control());
+    /// ```
     pub fn in_scatter_panels<const N: usize>(&self, control: Control<T>) -> T {
         self.in_scatter_panels_counted::<N>(control).0
     }
 
     /// [`Scene::in_scatter_panels`] and the number of panels it evaluated.
     pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>) -> (T, usize) {
+        const { assert!(matches!(N, 4 | 6 | 8 | 10 | 12 | 16), "panels take 4, 6, 8, 10, 12 or 16 Gauss–Legendre nodes") };
         in_scatter_counted::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Panels(control), &Production)
     }
 
     /// `L_m` with one `N`-term expansion per piece (the paper's fixed-cost method).
+    ///
+    /// ```
+    /// use airlight::glam::DVec3;
+    /// use airlight::{light::Omni, phase::Isotropic, Expansion, Medium, PointLight, Ray, Scene};
+    /// let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 25.0 };
+    /// let light = PointLight { position: DVec3::new(5.0, 1.0, 0.0), intensity: 100.0, distribution: Omni };
+    /// let scene = Scene::new(ray, light, Medium { sigma_s: 0.08, sigma_t: 0.1 }, Isotropic).unwrap();
+    /// assert!(scene.in_scatter_with::<4>(Expansion::Chebyshev) > 0.0);
+    /// ```
+    ///
+    /// `N` must be 1 … 16; anything else is a compile error:
+    ///
+    /// ```compile_fail,E0080
+    /// use airlight::glam::DVec3;
+    /// use airlight::{light::Omni, phase::Isotropic, Expansion, Medium, PointLight, Ray, Scene};
+    /// let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 25.0 };
+    /// let light = PointLight { position: DVec3::new(5.0, 1.0, 0.0), intensity: 100.0, distribution: Omni };
+    /// let scene = Scene::new(ray, light, Medium { sigma_s: 0.08, sigma_t: 0.1 }, Isotropic).unwrap();
+    /// assert!(scene.in_scatter_with::<0>(Expansion::Chebyshev) > 0.0);
+    /// ```
     pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
+        const { assert!(N >= 1 && N <= crate::integrals::MAX_TERMS, "the fixed method takes 1 to 16 expansion terms") };
         in_scatter_canonical::<T, D, P, Production, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(expansion), &Production)
     }
 
