@@ -5,15 +5,29 @@
 //! Analytical Approach to Single Scattering for Anisotropic Media and Light Distributions*
 //! (Graphics Interface 2009): no ray marching, no tables.
 //!
-//! `#![no_std]`, no allocation, one generic implementation for `f32` and `f64`.
+//! `#![no_std]`, no allocation, one generic implementation for `f32` and `f64`. The example is
+//! the README's (a test keeps the two the same):
 //!
 //! ```
-//! use airlight::{glam::DVec3, in_scatter, light::Omni, phase::HenyeyGreenstein, Medium, PointLight, Ray};
-//! let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 25.0 };
-//! let light = PointLight { position: DVec3::new(5.0, 1.0, 0.0), intensity: 100.0, distribution: Omni };
-//! let medium = Medium { sigma_s: 0.08, sigma_t: 0.1 };
-//! let l = in_scatter(ray, light, medium, HenyeyGreenstein { g: 0.5 }).unwrap();
-//! assert!(l > 0.0);
+//! use airlight::glam::Vec3;
+//! use airlight::light::TwoLobed;
+//! use airlight::phase::HenyeyGreenstein;
+//! use airlight::{Expansion, InputError, Medium, PointLight, Ray, Scene};
+//!
+//! fn main() -> Result<(), InputError> {
+//!     let ray = Ray { origin: Vec3::ZERO, dir: Vec3::X, t_min: 0.0, t_max: f32::INFINITY };
+//!     let light = PointLight {
+//!         position: Vec3::new(5.0, 1.0, 0.0),
+//!         intensity: 100.0,
+//!         distribution: TwoLobed { axis: Vec3::NEG_Y, power: 4 },
+//!     };
+//!     let medium = Medium { sigma_s: 0.08, sigma_t: 0.1 };
+//!     let scene = Scene::new(ray, light, medium, HenyeyGreenstein { g: 0.5 })?;
+//!     let glow = scene.in_scatter(); // error-controlled: within 1e-4 in f32 (the default)
+//!     let glow4 = scene.in_scatter_with::<4>(Expansion::Chebyshev); // the paper's fixed cost
+//!     assert!(glow > 0.0 && glow4 > 0.0);
+//!     Ok(())
+//! }
 //! ```
 //!
 //! ## The data path, one module per step

@@ -202,3 +202,18 @@ fn subnormal_geometry_is_finite() {
     assert!(l.is_finite() && l > 0.0, "{l}");
     assert!(s.in_scatter_with::<6>(airlight::Expansion::Chebyshev).is_finite());
 }
+
+/// The README's kernel example is the crate's first doctest, character for character, so the
+/// example a user copies from the README is one that `cargo test` compiles and runs.
+#[test]
+fn readme_example_is_the_kernel_doctest() {
+    let root = airlight_tests::repo_root();
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let start = readme.find("```rust\n").expect("a Rust block in the README") + "```rust\n".len();
+    let from_readme = &readme[start..start + readme[start..].find("```").unwrap()];
+    let lib = std::fs::read_to_string(root.join("kernel/src/lib.rs")).unwrap();
+    let docs: String = lib.lines().take_while(|l| l.starts_with("//!")).map(|l| format!("{}\n", l.trim_start_matches("//!").strip_prefix(' ').unwrap_or(""))).collect();
+    let start = docs.find("```\n").expect("a doctest in the crate docs") + "```\n".len();
+    let from_docs = &docs[start..start + docs[start..].find("```").unwrap()];
+    assert_eq!(from_readme, from_docs, "README.md's example and kernel/src/lib.rs's first doctest differ");
+}
