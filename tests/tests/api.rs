@@ -217,3 +217,19 @@ fn readme_example_is_the_kernel_doctest() {
     let from_docs = &docs[start..start + docs[start..].find("```").unwrap()];
     assert_eq!(from_readme, from_docs, "README.md's example and kernel/src/lib.rs's first doctest differ");
 }
+
+/// With the `mint` feature, an engine on another math crate (or another glam version) hands
+/// its vectors over as `mint` types: `Vec3::from(mint::Vector3)` and back, nothing else.
+#[test]
+fn mint_vectors_convert_in_and_out() {
+    use airlight::glam::Vec3;
+    let origin = mint::Vector3 { x: 0.0f32, y: 0.0, z: 0.0 };
+    let dir = mint::Vector3 { x: 1.0f32, y: 0.0, z: 0.0 };
+    let position = mint::Vector3 { x: 5.0f32, y: 1.0, z: 0.0 };
+    let ray = Ray::<f32> { origin: Vec3::from(origin), dir: dir.into(), t_min: 0.0, t_max: 25.0 };
+    let light = PointLight { position: position.into(), intensity: 100.0, distribution: airlight::light::Omni };
+    let s = Scene::new(ray, light, Medium { sigma_s: 0.08, sigma_t: 0.1 }, airlight::phase::Isotropic).unwrap();
+    assert!(s.in_scatter() > 0.0);
+    let back = mint::Vector3::<f32>::from(ray.dir);
+    assert_eq!((back.x, back.y, back.z), (1.0, 0.0, 0.0));
+}
