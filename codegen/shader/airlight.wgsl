@@ -510,7 +510,13 @@ fn airlight_q_zero(half: AirlightHalf) -> f32 {
         var d_re = 0.0;
         if (!v_e_infinite) {
             d_im = airlight_atan(half.dv / (1.0 + v_s * v_e));
-            d_re = 0.5 * airlight_log1p(half.dv * (v_s + v_e) / (1.0 + v_s * v_s));
+            let x = half.dv * (v_s + v_e) / (1.0 + v_s * v_s);
+            if (airlight_is_finite(x)) {
+                d_re = 0.5 * airlight_log1p(x);
+            } else {
+                // the product overflows, its logarithm does not (integrals.rs `q0_near`)
+                d_re = 0.5 * (log(half.dv) + log(v_s + v_e) - airlight_log1p(v_s * v_s));
+            }
         } else {
             d_im = airlight_atan(1.0 / v_s);
         }
@@ -915,10 +921,17 @@ fn airlight_hypot_one(a: f32) -> f32 {
 }
 
 /// Roots in y of c(y) = k (two at most); NaN-free: −1 marks "none".
+/// The coefficients are scaled by the largest (combined.rs `crossings`): b² of a tiny b must not
+/// underflow to a zero discriminant.
 fn airlight_crossings(sigma: f32, d_el: f32, d_c: f32, k: f32) -> vec2<f32> {
-    let a = k + sigma * d_el;
-    let b = -(d_c + d_c);
-    let c = k - sigma * d_el;
+    let a0 = k + sigma * d_el;
+    let b0 = -(d_c + d_c);
+    let c0 = k - sigma * d_el;
+    let scale = max(abs(a0), max(abs(b0), abs(c0)));
+    if (!(scale > 0.0) || !airlight_is_finite(scale)) { return vec2<f32>(-1.0, -1.0); }
+    let a = a0 / scale;
+    let b = b0 / scale;
+    let c = c0 / scale;
     let disc = b * b - 4.0 * a * c;
     if (!(disc >= 0.0)) { return vec2<f32>(-1.0, -1.0); }
     var sb = 1.0;
@@ -1058,7 +1071,15 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
     }
     let half = AirlightHalf(false, airlight_optical(big_h, dv, infinite), v_s, v_e, dv, dv, infinite);
     let j = airlight_integrand(s, g, -1.0, v_s) * airlight_moment_zero(half);
-    return airlight_weighted(s.sigma_s, s.intensity, h, big_h * r_s, j);
+    // H·r_s = σt·|p − x(t0)|; where r_s overflows (a tiny h) the distance is |x_h − t0|, and
+    // without extinction the exponent is 0, not 0·∞ (combined.rs `whole_line`)
+    var x = 0.0;
+    if (airlight_is_finite(r_s)) {
+        x = big_h * r_s;
+    } else if (s.sigma_t > 0.0) {
+        x = s.sigma_t * abs(g.x_h - g.t_lo);
+    }
+    return airlight_weighted(s.sigma_s, s.intensity, h, x, j);
 }
 
 /// The combined formulation on the canonical problem (combined.rs::in_scatter_canonical).

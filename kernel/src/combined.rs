@@ -210,7 +210,16 @@ where
     let half = Half { second: false, big_h: optical(big_h, dv), y_lo: v_s, y_hi: v_e, dy: dv, dv };
     let m: [T; 1] = moments(&half, ei, 1);
     let f = HalfIntegrand { sigma: -T::one(), exact_sides: true, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
-    weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, f.eval(v_s) * m[0])
+    // H·r_s = σt·|p − x(t0)|; where r_s overflows (a subnormal h) the distance is |x_h − t0|,
+    // and without extinction the exponent is 0, not 0·∞
+    let x = if r_s.is_finite() {
+        big_h * r_s
+    } else if phys.sigma_t > T::zero() {
+        phys.sigma_t * (g.x_h - g.t0).abs()
+    } else {
+        T::zero()
+    };
+    weighted(phys.sigma_s, phys.intensity, h, x, f.eval(v_s) * m[0])
 }
 
 /// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the
@@ -354,11 +363,15 @@ fn piece_integral<T: Real, F: Expandable<T>, E: ExpIntegral<T>, const N: usize>(
 
 /// The `y ∈ (0, 1]` where `c(y) = (σ d_el (1 − y²) + 2 d_c y)/(1 + y²)` equals `k`:
 /// roots of `(k + σ d_el) y² − 2 d_c y + (k − σ d_el) = 0`, by the cancellation-free form of
-/// the quadratic formula.
+/// the quadratic formula, on the coefficients scaled by the largest (the roots do not change;
+/// unscaled, `b²` of a tiny `b` underflowed to a zero discriminant, which doubled the root).
 fn crossings<T: Real>(sigma: T, d_el: T, d_c: T, k: T) -> [Option<T>; 2] {
-    let a = k + sigma * d_el;
-    let b = -(d_c + d_c);
-    let c = k - sigma * d_el;
+    let (a, b, c) = (k + sigma * d_el, -(d_c + d_c), k - sigma * d_el);
+    let scale = a.abs().max(b.abs()).max(c.abs());
+    if !(scale > T::zero()) || !scale.is_finite() {
+        return [None, None];
+    }
+    let (a, b, c) = (a / scale, b / scale, c / scale);
     let disc = b * b - T::lit(4.0) * a * c;
     if !(disc >= T::zero()) {
         return [None, None];

@@ -282,7 +282,14 @@ fn q0_near<T: Real>(half: &Half<T>, v_s: T, v_e: T, with_re: bool) -> C<T> {
         v_s.recip().atan()
     };
     let d_re = if v_e.is_finite() {
-        half_t * (dv * (v_s + v_e) / (T::one() + v_s * v_s)).ln_1p()
+        let x = dv * (v_s + v_e) / (T::one() + v_s * v_s);
+        if x.is_finite() {
+            half_t * x.ln_1p()
+        } else {
+            // the product overflows (Δv and v_e near the range's end) while its logarithm does
+            // not: an infinite Re D would reach Im C through e^{−iH}'s sin H
+            half_t * (dv.ln() + (v_s + v_e).ln() - (v_s * v_s).ln_1p())
+        }
     } else {
         T::infinity()
     };

@@ -424,9 +424,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_10 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_11 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_2 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_10 * x_10) + (y_2 * y_2)) < 1.0;
+    return ((x_11 * x_11) + (y_2 * y_2)) < 1.0;
 }
 
 uint airlight_cf_depth(
@@ -842,8 +842,8 @@ float airlight_light(
             if (width <= AIRLIGHT_FLT_EPS) {
                 return (c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0;
             }
-            float x_11 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
-            return (x_11 * x_11) * (3.0 - (2.0 * x_11));
+            float x_12 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
+            return (x_12 * x_12) * (3.0 - (2.0 * x_12));
         }
         default: {
             return 1.0;
@@ -973,42 +973,50 @@ float airlight_q_zero(
             float _e48 = airlight_atan(half_1.dv / (1.0 + (v_s * _e43)));
             d_im = _e48;
             float _e50 = v_e;
-            float _e57 = airlight_log1p((half_1.dv * (v_s + _e50)) / (1.0 + (v_s * v_s)));
-            d_re = 0.5 * _e57;
+            float x_13 = (half_1.dv * (v_s + _e50)) / (1.0 + (v_s * v_s));
+            bool _e57 = airlight_is_finite(x_13);
+            if (_e57) {
+                float _e58 = airlight_log1p(x_13);
+                d_re = 0.5 * _e58;
+            } else {
+                float _e63 = v_e;
+                float _e68 = airlight_log1p(v_s * v_s);
+                d_re = 0.5 * ((metal::log(half_1.dv) + metal::log(v_s + _e63)) - _e68);
+            }
         } else {
-            float _e62 = airlight_atan(1.0 / v_s);
-            d_im = _e62;
+            float _e74 = airlight_atan(1.0 / v_s);
+            d_im = _e74;
         }
         if (big_h_2 == 0.0) {
-            float _e65 = d_im;
-            return _e65;
+            float _e77 = d_im;
+            return _e77;
         }
         metal::float2 z_s = metal::float2(big_h_2 * v_s, -(big_h_2));
-        float _e69 = v_e;
-        metal::float2 z_e = metal::float2(big_h_2 * _e69, -(big_h_2));
-        metal::float2 _e73 = airlight_ein_divided_difference(z_s, z_e);
-        metal::float2 _e74 = airlight_cos_sin(big_h_2);
-        metal::float2 rot = metal::float2(_e74.x, -(_e74.y));
-        float _e79 = d_re;
-        float _e80 = d_im;
-        metal::float2 _e86 = airlight_cmul(rot, metal::float2(_e79, _e80) - (_e73 * (big_h_2 * half_1.dv)));
-        return _e86.y * metal::exp(big_h_2 * v_s);
+        float _e81 = v_e;
+        metal::float2 z_e = metal::float2(big_h_2 * _e81, -(big_h_2));
+        metal::float2 _e85 = airlight_ein_divided_difference(z_s, z_e);
+        metal::float2 _e86 = airlight_cos_sin(big_h_2);
+        metal::float2 rot = metal::float2(_e86.x, -(_e86.y));
+        float _e91 = d_re;
+        float _e92 = d_im;
+        metal::float2 _e98 = airlight_cmul(rot, metal::float2(_e91, _e92) - (_e85 * (big_h_2 * half_1.dv)));
+        return _e98.y * metal::exp(big_h_2 * v_s);
     }
-    metal::float2 _e94 = airlight_e1_scaled(metal::float2(big_h_2 * v_s, -(big_h_2)));
+    metal::float2 _e106 = airlight_e1_scaled(metal::float2(big_h_2 * v_s, -(big_h_2)));
     if (!(v_e_infinite)) {
-        float _e98 = v_e;
-        bool _e100 = airlight_is_finite(big_h_2 * _e98);
-        local_4 = _e100;
+        float _e110 = v_e;
+        bool _e112 = airlight_is_finite(big_h_2 * _e110);
+        local_4 = _e112;
     } else {
         local_4 = false;
     }
-    bool _e102 = local_4;
-    if (_e102) {
-        float _e103 = v_e;
-        metal::float2 _e107 = airlight_e1_scaled(metal::float2(big_h_2 * _e103, -(big_h_2)));
-        return _e94.y - (_e107.y * metal::exp(-(big_h_2) * half_1.dv));
+    bool _e114 = local_4;
+    if (_e114) {
+        float _e115 = v_e;
+        metal::float2 _e119 = airlight_e1_scaled(metal::float2(big_h_2 * _e115, -(big_h_2)));
+        return _e106.y - (_e119.y * metal::exp(-(big_h_2) * half_1.dv));
     }
-    return _e94.y;
+    return _e106.y;
 }
 
 float airlight_moment_zero(
@@ -1080,8 +1088,8 @@ float airlight_node(
     airlight_type_10 rule,
     uint i_4
 ) {
-    float x_12 = rule.inner[metal::min(unsigned(airlight_naga_div(i_4, 2u)), 2u)].x;
-    return (airlight_naga_mod(i_4, 2u) == 0u) ? -(x_12) : x_12;
+    float x_14 = rule.inner[metal::min(unsigned(airlight_naga_div(i_4, 2u)), 2u)].x;
+    return (airlight_naga_mod(i_4, 2u) == 0u) ? -(x_14) : x_14;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1438,8 +1446,8 @@ float airlight_factor(
         offset = (half_3.y_hi - b_3) / (b_3 * half_3.y_hi);
     }
     float _e13 = offset;
-    float x_13 = half_3.big_h * _e13;
-    return (x_13 > 0.0) ? metal::exp(-(x_13)) : 1.0;
+    float x_15 = half_3.big_h * _e13;
+    return (x_15 > 0.0) ? metal::exp(-(x_15)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -1900,7 +1908,7 @@ AirlightPanel airlight_tail_panel(
     float _e192 = airlight_factor(half_6, a_7, b_6);
     float _e193 = mass_2;
     mass_2 = _e193 * _e192;
-    float x_14 = metal::abs(alpha) + metal::abs(beta);
+    float x_16 = metal::abs(alpha) + metal::abs(beta);
     uint2 loop_bound_30 = uint2(4294967295u);
     bool loop_init_30 = true;
     while(true) {
@@ -1925,7 +1933,7 @@ AirlightPanel airlight_tail_panel(
             float kf_2 = static_cast<float>(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
-            float next_1 = (((((kf_2 + kf_2) + 1.0) * x_14) * _e222) + (kf_2 * _e224)) / (kf_2 + 1.0);
+            float next_1 = (((((kf_2 + kf_2) + 1.0) * x_16) * _e222) + (kf_2 * _e224)) / (kf_2 + 1.0);
             float _e230 = l_cur;
             l_prev = _e230;
             l_cur = next_1;
@@ -2179,12 +2187,27 @@ metal::float2 airlight_crossings(
     float d_c,
     float k_11
 ) {
+    bool local_17 = {};
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
-    float a_18 = k_11 + (sigma_6 * d_el);
-    float b_15 = -((d_c + d_c));
-    float c_8 = k_11 - (sigma_6 * d_el);
+    float a0_ = k_11 + (sigma_6 * d_el);
+    float b0_ = -((d_c + d_c));
+    float c0_ = k_11 - (sigma_6 * d_el);
+    float scale = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
+    if (!(!((scale > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale);
+        local_17 = !(_e21);
+    } else {
+        local_17 = true;
+    }
+    bool _e24 = local_17;
+    if (_e24) {
+        return metal::float2(-1.0, -1.0);
+    }
+    float a_18 = a0_ / scale;
+    float b_15 = b0_ / scale;
+    float c_8 = c0_ / scale;
     float disc_1 = (b_15 * b_15) - ((4.0 * a_18) * c_8);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
@@ -2192,17 +2215,17 @@ metal::float2 airlight_crossings(
     if (b_15 < 0.0) {
         sb = -1.0;
     }
-    float _e26 = sb;
-    float q_2 = -0.5 * (b_15 + (_e26 * metal::sqrt(disc_1)));
+    float _e47 = sb;
+    float q_2 = -0.5 * (b_15 + (_e47 * metal::sqrt(disc_1)));
     if (q_2 != 0.0) {
         r1_ = c_8 / q_2;
     }
     if (a_18 != 0.0) {
         r2_2 = q_2 / a_18;
     }
-    float _e42 = r1_;
-    float _e43 = r2_2;
-    return metal::float2(_e42, _e43);
+    float _e63 = r1_;
+    float _e64 = r2_2;
+    return metal::float2(_e63, _e64);
 }
 
 float airlight_half(
@@ -2217,15 +2240,15 @@ float airlight_half(
     float k_in = {};
     float k_out = {};
     uint i_15 = 0u;
-    bool local_17 = {};
+    bool local_18 = {};
     uint i_16 = 0u;
     uint j_5 = {};
     float total_1 = 0.0;
     float lo_1 = {};
     uint i_17 = 0u;
     float hi_1 = {};
-    bool local_18 = {};
     bool local_19 = {};
+    bool local_20 = {};
     if (isotropic) {
         float _e11 = airlight_integrand(s_7, g_9, sigma_7, half_9.y_lo + (half_9.dy * 0.5));
         float _e12 = airlight_moment_zero(half_9);
@@ -2269,11 +2292,11 @@ float airlight_half(
                 if (_e57 > half_9.y_lo) {
                     uint _e62 = i_15;
                     float _e64 = cuts.inner[metal::min(unsigned(_e62), 3u)];
-                    local_17 = _e64 < half_9.y_hi;
+                    local_18 = _e64 < half_9.y_hi;
                 } else {
-                    local_17 = false;
+                    local_18 = false;
                 }
-                bool _e68 = local_17;
+                bool _e68 = local_18;
                 if (!(_e68)) {
                     uint _e70 = i_15;
                     cuts.inner[metal::min(unsigned(_e70), 3u)] = 2.0;
@@ -2355,11 +2378,11 @@ float airlight_half(
             if (_e128 < 4u) {
                 uint _e133 = i_17;
                 float _e135 = cuts.inner[metal::min(unsigned(_e133), 3u)];
-                local_18 = _e135 < 2.0;
+                local_19 = _e135 < 2.0;
             } else {
-                local_18 = false;
+                local_19 = false;
             }
-            bool _e139 = local_18;
+            bool _e139 = local_19;
             if (_e139) {
                 uint _e140 = i_17;
                 float _e142 = cuts.inner[metal::min(unsigned(_e140), 3u)];
@@ -2380,11 +2403,11 @@ float airlight_half(
             if (_e152 < 4u) {
                 uint _e157 = i_17;
                 float _e159 = cuts.inner[metal::min(unsigned(_e157), 3u)];
-                local_19 = _e159 >= 2.0;
+                local_20 = _e159 >= 2.0;
             } else {
-                local_19 = false;
+                local_20 = false;
             }
-            bool _e163 = local_19;
+            bool _e163 = local_20;
             if (_e163) {
                 break;
             }
@@ -2416,16 +2439,16 @@ float airlight_on_line(
     AirlightScene s_8,
     AirlightCanonical g_10
 ) {
-    bool local_20 = {};
+    bool local_21 = {};
     float span = {};
     airlight_type_3 e2_ = {};
     float tail_1 = 0.0;
     if (!(g_10.t_hi_infinite)) {
-        local_20 = g_10.x_h > g_10.t_hi;
+        local_21 = g_10.x_h > g_10.t_hi;
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e10 = local_20;
+    bool _e10 = local_21;
     if (_e10) {
         float _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         float _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1.0);
@@ -2491,8 +2514,9 @@ float airlight_whole_line(
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_21 = {};
     bool local_22 = {};
+    bool local_23 = {};
+    float x_8 = 0.0;
     float h_2 = g_11.h;
     float a_s = (g_11.x_h - g_11.t_lo) / h_2;
     float _e8 = airlight_hypot_one(a_s);
@@ -2500,11 +2524,11 @@ float airlight_whole_line(
     float u_e = (g_11.t_hi - g_11.x_h) / h_2;
     if (!(g_11.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_21 = _e24;
+        local_22 = _e24;
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e26 = local_21;
+    bool _e26 = local_22;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
@@ -2512,11 +2536,11 @@ float airlight_whole_line(
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_22 = _e40;
+            local_23 = _e40;
         } else {
-            local_22 = false;
+            local_23 = false;
         }
-        bool _e42 = local_22;
+        bool _e42 = local_23;
         if (_e42) {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -2534,20 +2558,28 @@ float airlight_whole_line(
     float _e54 = airlight_integrand(s_9, g_11, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_10);
     float j_8 = _e54 * _e55;
-    float _e60 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, big_h_1 * _e8, j_8);
-    return _e60;
+    bool _e59 = airlight_is_finite(_e8);
+    if (_e59) {
+        x_8 = big_h_1 * _e8;
+    } else {
+        if (s_9.sigma_t > 0.0) {
+            x_8 = s_9.sigma_t * metal::abs(g_11.x_h - g_11.t_lo);
+        }
+    }
+    float _e72 = x_8;
+    float _e73 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, _e72, j_8);
+    return _e73;
 }
 
 AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_10,
     AirlightCanonical g_12
 ) {
-    bool local_23 = {};
     bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
-    float gap = 0.0;
     bool local_27 = {};
+    float gap = 0.0;
     bool local_28 = {};
     bool local_29 = {};
     bool local_30 = {};
@@ -2557,31 +2589,32 @@ AirlightResult airlight_in_scatter_canonical(
     bool local_34 = {};
     bool local_35 = {};
     bool local_36 = {};
+    bool local_37 = {};
     float total_2 = 0.0;
     float f_max_6 = 0.0;
     float t_end = {};
-    bool local_37 = {};
     bool local_38 = {};
+    bool local_39 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
-    bool local_39 = {};
     bool local_40 = {};
+    bool local_41 = {};
     float t0_ = g_12.t_lo;
     float t1_ = g_12.t_hi;
     if (!(g_12.t_hi_infinite)) {
-        local_23 = t1_ > t0_;
-    } else {
-        local_23 = true;
-    }
-    bool _e10 = local_23;
-    if (!(!(_e10))) {
-        local_24 = (s_10.sigma_s * s_10.intensity) == 0.0;
+        local_24 = t1_ > t0_;
     } else {
         local_24 = true;
     }
-    bool _e21 = local_24;
+    bool _e10 = local_24;
+    if (!(!(_e10))) {
+        local_25 = (s_10.sigma_s * s_10.intensity) == 0.0;
+    } else {
+        local_25 = true;
+    }
+    bool _e21 = local_25;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
@@ -2589,16 +2622,16 @@ AirlightResult airlight_in_scatter_canonical(
     float x_h = g_12.x_h;
     if (t0_ <= x_h) {
         if (!(g_12.t_hi_infinite)) {
-            local_26 = x_h <= t1_;
+            local_27 = x_h <= t1_;
         } else {
-            local_26 = true;
+            local_27 = true;
         }
-        bool _e36 = local_26;
-        local_25 = _e36;
+        bool _e36 = local_27;
+        local_26 = _e36;
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    bool inside = local_25;
+    bool inside = local_26;
     if (x_h < t0_) {
         gap = t0_ - x_h;
     } else {
@@ -2608,11 +2641,11 @@ AirlightResult airlight_in_scatter_canonical(
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_27 = h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_28 = h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e55 = local_27;
+    bool _e55 = local_28;
     if (_e55) {
         float _e56 = airlight_on_line(s_10, g_12);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
@@ -2623,58 +2656,58 @@ AirlightResult airlight_in_scatter_canonical(
     float big_h_4 = s_10.sigma_t * h_3;
     if (!((s_10.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = s_10.light_param_a == 0.0;
+            local_30 = s_10.light_param_a == 0.0;
         } else {
-            local_29 = false;
+            local_30 = false;
         }
-        bool _e83 = local_29;
-        local_28 = _e83;
+        bool _e83 = local_30;
+        local_29 = _e83;
     } else {
-        local_28 = true;
+        local_29 = true;
     }
-    bool _e85 = local_28;
+    bool _e85 = local_29;
     if (_e85) {
         if (!((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_32 = s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_33 = s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_32 = true;
+                local_33 = true;
             }
-            bool _e104 = local_32;
+            bool _e104 = local_33;
             if (_e104) {
-                local_33 = s_10.phase_param_a == 0.0;
+                local_34 = s_10.phase_param_a == 0.0;
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            bool _e111 = local_33;
-            local_31 = _e111;
+            bool _e111 = local_34;
+            local_32 = _e111;
         } else {
-            local_31 = true;
+            local_32 = true;
         }
-        bool _e113 = local_31;
-        local_30 = _e113;
+        bool _e113 = local_32;
+        local_31 = _e113;
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool isotropic_1 = local_30;
+    bool isotropic_1 = local_31;
     if (isotropic_1) {
-        local_34 = t0_ < x_h;
-    } else {
-        local_34 = false;
-    }
-    bool _e120 = local_34;
-    if (_e120) {
-        if (!(g_12.t_hi_infinite)) {
-            local_36 = x_h < t1_;
-        } else {
-            local_36 = true;
-        }
-        bool _e129 = local_36;
-        local_35 = _e129;
+        local_35 = t0_ < x_h;
     } else {
         local_35 = false;
     }
-    bool _e131 = local_35;
+    bool _e120 = local_35;
+    if (_e120) {
+        if (!(g_12.t_hi_infinite)) {
+            local_37 = x_h < t1_;
+        } else {
+            local_37 = true;
+        }
+        bool _e129 = local_37;
+        local_36 = _e129;
+    } else {
+        local_36 = false;
+    }
+    bool _e131 = local_36;
     if (_e131) {
         float _e132 = airlight_whole_line(s_10, g_12, big_h_4);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
@@ -2683,11 +2716,11 @@ AirlightResult airlight_in_scatter_canonical(
         float a_s_1 = (x_h - t0_) / h_3;
         t_end = x_h;
         if (!(g_12.t_hi_infinite)) {
-            local_37 = t1_ < x_h;
+            local_38 = t1_ < x_h;
         } else {
-            local_37 = false;
+            local_38 = false;
         }
-        bool _e151 = local_37;
+        bool _e151 = local_38;
         if (_e151) {
             t_end = t1_;
         }
@@ -2707,11 +2740,11 @@ AirlightResult airlight_in_scatter_canonical(
         total_2 = _e177 + _e181;
     }
     if (!(g_12.t_hi_infinite)) {
-        local_38 = t1_ > x_h;
+        local_39 = t1_ > x_h;
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e189 = local_38;
+    bool _e189 = local_39;
     if (_e189) {
         float t_start = metal::max(t0_, x_h);
         float a_s_2 = (t_start - x_h) / h_3;
@@ -2721,22 +2754,22 @@ AirlightResult airlight_in_scatter_canonical(
         float a_e_1 = (t1_ - x_h) / h_3;
         if (!(g_12.t_hi_infinite)) {
             bool _e208 = airlight_is_finite(a_e_1);
-            local_39 = _e208;
+            local_40 = _e208;
         } else {
-            local_39 = false;
+            local_40 = false;
         }
-        bool _e210 = local_39;
+        bool _e210 = local_40;
         if (_e210) {
             float _e211 = airlight_bounded(a_e_1);
             float _e215 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e193 + _e215)));
             if (_e211 > 0.0) {
                 bool _e225 = airlight_is_finite(dv_end_1);
-                local_40 = _e225;
+                local_41 = _e225;
             } else {
-                local_40 = false;
+                local_41 = false;
             }
-            bool _e227 = local_40;
+            bool _e227 = local_41;
             if (_e227) {
                 y_lo = _e211;
                 dv_3 = dv_end_1;
@@ -2766,23 +2799,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_41 = {};
     bool local_42 = {};
+    bool local_43 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_41 = _e6;
-    } else {
-        local_41 = false;
-    }
-    bool _e8 = local_41;
-    if (_e8) {
-        bool _e12 = airlight_is_finite(v.z);
-        local_42 = _e12;
+        local_42 = _e6;
     } else {
         local_42 = false;
     }
-    bool _e14 = local_42;
+    bool _e8 = local_42;
+    if (_e8) {
+        bool _e12 = airlight_is_finite(v.z);
+        local_43 = _e12;
+    } else {
+        local_43 = false;
+    }
+    bool _e14 = local_43;
     return _e14;
 }
 
@@ -2799,15 +2832,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_43 = {};
+    bool local_44 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_43 = _e6;
+        local_44 = _e6;
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    bool _e8 = local_43;
+    bool _e8 = local_44;
     return _e8;
 }
 
@@ -2822,7 +2855,6 @@ metal::float3 airlight_normalize(
 bool airlight_valid(
     AirlightScene s_11
 ) {
-    bool local_44 = {};
     bool local_45 = {};
     bool local_46 = {};
     bool local_47 = {};
@@ -2832,8 +2864,8 @@ bool airlight_valid(
     bool local_51 = {};
     bool local_52 = {};
     bool local_53 = {};
-    bool ok = {};
     bool local_54 = {};
+    bool ok = {};
     bool local_55 = {};
     bool local_56 = {};
     bool local_57 = {};
@@ -2850,162 +2882,163 @@ bool airlight_valid(
     bool local_68 = {};
     bool local_69 = {};
     bool local_70 = {};
+    bool local_71 = {};
     bool _e2 = airlight_vec_finite(s_11.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_11.dir);
-        local_44 = _e6;
-    } else {
-        local_44 = false;
-    }
-    bool _e8 = local_44;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_11.dir);
-        local_45 = _e12;
+        local_45 = _e6;
     } else {
         local_45 = false;
     }
-    bool _e14 = local_45;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_11.t_min);
-        local_46 = _e18;
+    bool _e8 = local_45;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_11.dir);
+        local_46 = _e12;
     } else {
         local_46 = false;
     }
-    bool _e20 = local_46;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_11.light_position);
-        local_47 = _e24;
+    bool _e14 = local_46;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_11.t_min);
+        local_47 = _e18;
     } else {
         local_47 = false;
     }
-    bool _e26 = local_47;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_11.intensity);
-        local_48 = _e30;
+    bool _e20 = local_47;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_11.light_position);
+        local_48 = _e24;
     } else {
         local_48 = false;
     }
-    bool _e32 = local_48;
-    if (_e32) {
-        local_49 = s_11.intensity >= 0.0;
+    bool _e26 = local_48;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_11.intensity);
+        local_49 = _e30;
     } else {
         local_49 = false;
     }
-    bool _e39 = local_49;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_11.sigma_s);
-        local_50 = _e43;
+    bool _e32 = local_49;
+    if (_e32) {
+        local_50 = s_11.intensity >= 0.0;
     } else {
         local_50 = false;
     }
-    bool _e45 = local_50;
-    if (_e45) {
-        local_51 = s_11.sigma_s >= 0.0;
+    bool _e39 = local_50;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_11.sigma_s);
+        local_51 = _e43;
     } else {
         local_51 = false;
     }
-    bool _e52 = local_51;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_11.sigma_t);
-        local_52 = _e56;
+    bool _e45 = local_51;
+    if (_e45) {
+        local_52 = s_11.sigma_s >= 0.0;
     } else {
         local_52 = false;
     }
-    bool _e58 = local_52;
-    if (_e58) {
-        local_53 = s_11.sigma_t >= 0.0;
+    bool _e52 = local_52;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_11.sigma_t);
+        local_53 = _e56;
     } else {
         local_53 = false;
     }
-    bool _e65 = local_53;
+    bool _e58 = local_53;
+    if (_e58) {
+        local_54 = s_11.sigma_t >= 0.0;
+    } else {
+        local_54 = false;
+    }
+    bool _e65 = local_54;
     ok = _e65;
     if ((s_11.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_11.t_max);
-            local_54 = _e76;
-        } else {
-            local_54 = false;
-        }
-        bool _e78 = local_54;
-        if (_e78) {
-            local_55 = s_11.t_min <= s_11.t_max;
+            local_55 = _e76;
         } else {
             local_55 = false;
         }
-        bool _e85 = local_55;
+        bool _e78 = local_55;
+        if (_e78) {
+            local_56 = s_11.t_min <= s_11.t_max;
+        } else {
+            local_56 = false;
+        }
+        bool _e85 = local_56;
         ok = _e85;
     }
     if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_11.light_axis);
-            local_56 = _e93;
-        } else {
-            local_56 = false;
-        }
-        bool _e95 = local_56;
-        if (_e95) {
-            bool _e99 = airlight_normalisable(s_11.light_axis);
-            local_57 = _e99;
+            local_57 = _e93;
         } else {
             local_57 = false;
         }
-        bool _e101 = local_57;
-        if (_e101) {
-            local_58 = s_11.light_param_a >= 0.0;
+        bool _e95 = local_57;
+        if (_e95) {
+            bool _e99 = airlight_normalisable(s_11.light_axis);
+            local_58 = _e99;
         } else {
             local_58 = false;
         }
-        bool _e108 = local_58;
-        if (_e108) {
-            local_59 = s_11.light_param_a <= 1024.0;
+        bool _e101 = local_58;
+        if (_e101) {
+            local_59 = s_11.light_param_a >= 0.0;
         } else {
             local_59 = false;
         }
-        bool _e115 = local_59;
-        if (_e115) {
-            local_60 = metal::fract(s_11.light_param_a * 0.5) == 0.0;
+        bool _e108 = local_59;
+        if (_e108) {
+            local_60 = s_11.light_param_a <= 1024.0;
         } else {
             local_60 = false;
         }
-        bool _e125 = local_60;
+        bool _e115 = local_60;
+        if (_e115) {
+            local_61 = metal::fract(s_11.light_param_a * 0.5) == 0.0;
+        } else {
+            local_61 = false;
+        }
+        bool _e125 = local_61;
         ok = _e125;
     } else {
         if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e129 = ok;
             if (_e129) {
                 bool _e133 = airlight_vec_finite(s_11.light_axis);
-                local_61 = _e133;
-            } else {
-                local_61 = false;
-            }
-            bool _e135 = local_61;
-            if (_e135) {
-                bool _e139 = airlight_normalisable(s_11.light_axis);
-                local_62 = _e139;
+                local_62 = _e133;
             } else {
                 local_62 = false;
             }
-            bool _e141 = local_62;
-            if (_e141) {
-                local_63 = s_11.light_param_b < s_11.light_param_a;
+            bool _e135 = local_62;
+            if (_e135) {
+                bool _e139 = airlight_normalisable(s_11.light_axis);
+                local_63 = _e139;
             } else {
                 local_63 = false;
             }
-            bool _e148 = local_63;
-            if (_e148) {
-                local_64 = s_11.light_param_b >= -1.0;
+            bool _e141 = local_63;
+            if (_e141) {
+                local_64 = s_11.light_param_b < s_11.light_param_a;
             } else {
                 local_64 = false;
             }
-            bool _e155 = local_64;
-            if (_e155) {
-                local_65 = s_11.light_param_a <= 1.0;
+            bool _e148 = local_64;
+            if (_e148) {
+                local_65 = s_11.light_param_b >= -1.0;
             } else {
                 local_65 = false;
             }
-            bool _e162 = local_65;
+            bool _e155 = local_65;
+            if (_e155) {
+                local_66 = s_11.light_param_a <= 1.0;
+            } else {
+                local_66 = false;
+            }
+            bool _e162 = local_66;
             ok = _e162;
         } else {
             if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3024,40 +3057,40 @@ bool airlight_valid(
         case 4u: {
             bool _e172 = ok;
             if (_e172) {
-                local_66 = g_ok;
+                local_67 = g_ok;
             } else {
-                local_66 = false;
+                local_67 = false;
             }
-            bool _e176 = local_66;
+            bool _e176 = local_67;
             ok = _e176;
             break;
         }
         case 5u: {
             bool _e177 = ok;
             if (_e177) {
-                local_67 = g_ok;
-            } else {
-                local_67 = false;
-            }
-            bool _e181 = local_67;
-            if (_e181) {
-                local_68 = metal::abs(s_11.phase_param_b) < 1.0;
+                local_68 = g_ok;
             } else {
                 local_68 = false;
             }
-            bool _e189 = local_68;
-            if (_e189) {
-                local_69 = s_11.phase_param_c >= 0.0;
+            bool _e181 = local_68;
+            if (_e181) {
+                local_69 = metal::abs(s_11.phase_param_b) < 1.0;
             } else {
                 local_69 = false;
             }
-            bool _e196 = local_69;
-            if (_e196) {
-                local_70 = s_11.phase_param_c <= 1.0;
+            bool _e189 = local_69;
+            if (_e189) {
+                local_70 = s_11.phase_param_c >= 0.0;
             } else {
                 local_70 = false;
             }
-            bool _e203 = local_70;
+            bool _e196 = local_70;
+            if (_e196) {
+                local_71 = s_11.phase_param_c <= 1.0;
+            } else {
+                local_71 = false;
+            }
+            bool _e203 = local_71;
             ok = _e203;
             break;
         }
@@ -3095,10 +3128,10 @@ AirlightCanonical airlight_canonical(
 }
 
 float airlight_opaque(
-    float x_8,
+    float x_9,
     uint key
 ) {
-    return as_type<float>(as_type<uint>(x_8) ^ key);
+    return as_type<float>(as_type<uint>(x_9) ^ key);
 }
 
 metal::float2 airlight_two_sum(
@@ -3115,9 +3148,9 @@ metal::float2 airlight_two_sum(
 }
 
 float airlight_split_high(
-    float x_9
+    float x_10
 ) {
-    return as_type<float>((as_type<uint>(x_9) + 2048u) & 4294963200u);
+    return as_type<float>((as_type<uint>(x_10) + 2048u) & 4294963200u);
 }
 
 metal::float2 airlight_two_product(
@@ -3152,21 +3185,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_71 = {};
     bool local_72 = {};
+    bool local_73 = {};
     float m_8 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if (m_8 >= 0.0000000009313226) {
-            local_72 = m_8 <= AIRLIGHT_EXACT_RANGE;
+            local_73 = m_8 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_72 = false;
+            local_73 = false;
         }
-        bool _e21 = local_72;
-        local_71 = _e21;
+        bool _e21 = local_73;
+        local_72 = _e21;
     } else {
-        local_71 = true;
+        local_72 = true;
     }
-    bool _e23 = local_71;
+    bool _e23 = local_72;
     return _e23;
 }
 
@@ -3174,9 +3207,9 @@ AirlightCanonical airlight_refined(
     AirlightScene s_13,
     AirlightCanonical plain
 ) {
-    bool local_73 = {};
-    AirlightCanonical out_2 = {};
     bool local_74 = {};
+    AirlightCanonical out_2 = {};
+    bool local_75 = {};
     metal::float3 a_14 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_13.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_13.light_position[0], -(s_13.origin[0]), key_4);
@@ -3188,11 +3221,11 @@ AirlightCanonical airlight_refined(
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_73 = !(_e38);
+        local_74 = !(_e38);
     } else {
-        local_73 = true;
+        local_74 = true;
     }
-    bool _e41 = local_73;
+    bool _e41 = local_74;
     if (_e41) {
         return plain;
     }
@@ -3216,11 +3249,11 @@ AirlightCanonical airlight_refined(
     float h_4 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_74 = h_4 > 0.0;
+        local_75 = h_4 > 0.0;
     } else {
-        local_74 = false;
+        local_75 = false;
     }
-    bool _e101 = local_74;
+    bool _e101 = local_75;
     if (!(_e101)) {
         return plain;
     }

@@ -342,9 +342,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_10 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_2 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_10 * x_10) + (y_2 * y_2)) < 1f);
+    return (((x_11 * x_11) + (y_2 * y_2)) < 1f);
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
@@ -689,8 +689,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_11 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_11 * x_11) * (3f - (2f * x_11)));
+            let x_12 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_12 * x_12) * (3f - (2f * x_12)));
         }
         default: {
             return 1f;
@@ -807,42 +807,50 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
             let _e48 = airlight_atan((half_1.dv / (1f + (v_s * _e43))));
             d_im = _e48;
             let _e50 = v_e;
-            let _e57 = airlight_log1p(((half_1.dv * (v_s + _e50)) / (1f + (v_s * v_s))));
-            d_re = (0.5f * _e57);
+            let x_13 = ((half_1.dv * (v_s + _e50)) / (1f + (v_s * v_s)));
+            let _e57 = airlight_is_finite(x_13);
+            if _e57 {
+                let _e58 = airlight_log1p(x_13);
+                d_re = (0.5f * _e58);
+            } else {
+                let _e63 = v_e;
+                let _e68 = airlight_log1p((v_s * v_s));
+                d_re = (0.5f * ((log(half_1.dv) + log((v_s + _e63))) - _e68));
+            }
         } else {
-            let _e62 = airlight_atan((1f / v_s));
-            d_im = _e62;
+            let _e74 = airlight_atan((1f / v_s));
+            d_im = _e74;
         }
         if (big_h_2 == 0f) {
-            let _e65 = d_im;
-            return _e65;
+            let _e77 = d_im;
+            return _e77;
         }
         let z_s = vec2<f32>((big_h_2 * v_s), -(big_h_2));
-        let _e69 = v_e;
-        let z_e = vec2<f32>((big_h_2 * _e69), -(big_h_2));
-        let _e73 = airlight_ein_divided_difference(z_s, z_e);
-        let _e74 = airlight_cos_sin(big_h_2);
-        let rot = vec2<f32>(_e74.x, -(_e74.y));
-        let _e79 = d_re;
-        let _e80 = d_im;
-        let _e86 = airlight_cmul(rot, (vec2<f32>(_e79, _e80) - (_e73 * (big_h_2 * half_1.dv))));
-        return (_e86.y * exp((big_h_2 * v_s)));
+        let _e81 = v_e;
+        let z_e = vec2<f32>((big_h_2 * _e81), -(big_h_2));
+        let _e85 = airlight_ein_divided_difference(z_s, z_e);
+        let _e86 = airlight_cos_sin(big_h_2);
+        let rot = vec2<f32>(_e86.x, -(_e86.y));
+        let _e91 = d_re;
+        let _e92 = d_im;
+        let _e98 = airlight_cmul(rot, (vec2<f32>(_e91, _e92) - (_e85 * (big_h_2 * half_1.dv))));
+        return (_e98.y * exp((big_h_2 * v_s)));
     }
-    let _e94 = airlight_e1_scaled(vec2<f32>((big_h_2 * v_s), -(big_h_2)));
+    let _e106 = airlight_e1_scaled(vec2<f32>((big_h_2 * v_s), -(big_h_2)));
     if !(v_e_infinite) {
-        let _e98 = v_e;
-        let _e100 = airlight_is_finite((big_h_2 * _e98));
-        local_4 = _e100;
+        let _e110 = v_e;
+        let _e112 = airlight_is_finite((big_h_2 * _e110));
+        local_4 = _e112;
     } else {
         local_4 = false;
     }
-    let _e102 = local_4;
-    if _e102 {
-        let _e103 = v_e;
-        let _e107 = airlight_e1_scaled(vec2<f32>((big_h_2 * _e103), -(big_h_2)));
-        return (_e94.y - (_e107.y * exp((-(big_h_2) * half_1.dv))));
+    let _e114 = local_4;
+    if _e114 {
+        let _e115 = v_e;
+        let _e119 = airlight_e1_scaled(vec2<f32>((big_h_2 * _e115), -(big_h_2)));
+        return (_e106.y - (_e119.y * exp((-(big_h_2) * half_1.dv))));
     }
-    return _e94.y;
+    return _e106.y;
 }
 
 fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
@@ -899,8 +907,8 @@ fn airlight_legendre_table() -> array<f32, 8> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 2>, i_4: u32) -> f32 {
-    let x_12 = rule[(i_4 / 2u)].x;
-    return select(x_12, -(x_12), ((i_4 % 2u) == 0u));
+    let x_14 = rule[(i_4 / 2u)].x;
+    return select(x_14, -(x_14), ((i_4 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_3: array<f32, 4>) -> array<f32, 4> {
@@ -1199,8 +1207,8 @@ fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     let _e13 = offset;
-    let x_13 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_13)), (x_13 > 0f));
+    let x_15 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_15)), (x_15 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1591,7 +1599,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     let _e192 = airlight_factor(half_6, a_7, b_6);
     let _e193 = mass_2;
     mass_2 = (_e193 * _e192);
-    let x_14 = (abs(alpha) + abs(beta));
+    let x_16 = (abs(alpha) + abs(beta));
     loop {
         let _e206 = k_10;
         if (_e206 < AIRLIGHT_TERMS) {
@@ -1607,7 +1615,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let kf_2 = f32(_e216);
             let _e222 = l_cur;
             let _e224 = l_prev;
-            let next_1 = ((((((kf_2 + kf_2) + 1f) * x_14) * _e222) + (kf_2 * _e224)) / (kf_2 + 1f));
+            let next_1 = ((((((kf_2 + kf_2) + 1f) * x_16) * _e222) + (kf_2 * _e224)) / (kf_2 + 1f));
             let _e230 = l_cur;
             l_prev = _e230;
             l_cur = next_1;
@@ -1830,13 +1838,28 @@ fn airlight_bounded(a_9: f32) -> f32 {
 }
 
 fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
+    var local_17: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a_18 = (k_11 + (sigma_6 * d_el));
-    let b_15 = -((d_c + d_c));
-    let c_8 = (k_11 - (sigma_6 * d_el));
+    let a0_ = (k_11 + (sigma_6 * d_el));
+    let b0_ = -((d_c + d_c));
+    let c0_ = (k_11 - (sigma_6 * d_el));
+    let scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if !(!((scale > 0f))) {
+        let _e21 = airlight_is_finite(scale);
+        local_17 = !(_e21);
+    } else {
+        local_17 = true;
+    }
+    let _e24 = local_17;
+    if _e24 {
+        return vec2<f32>(-1f, -1f);
+    }
+    let a_18 = (a0_ / scale);
+    let b_15 = (b0_ / scale);
+    let c_8 = (c0_ / scale);
     let disc_1 = ((b_15 * b_15) - ((4f * a_18) * c_8));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
@@ -1844,17 +1867,17 @@ fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32>
     if (b_15 < 0f) {
         sb = -1f;
     }
-    let _e26 = sb;
-    let q_2 = (-0.5f * (b_15 + (_e26 * sqrt(disc_1))));
+    let _e47 = sb;
+    let q_2 = (-0.5f * (b_15 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
         r1_ = (c_8 / q_2);
     }
     if (a_18 != 0f) {
         r2_2 = (q_2 / a_18);
     }
-    let _e42 = r1_;
-    let _e43 = r2_2;
-    return vec2<f32>(_e42, _e43);
+    let _e63 = r1_;
+    let _e64 = r2_2;
+    return vec2<f32>(_e63, _e64);
 }
 
 fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
@@ -1862,15 +1885,15 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
     var k_in: f32;
     var k_out: f32;
     var i_15: u32 = 0u;
-    var local_17: bool;
+    var local_18: bool;
     var i_16: u32 = 0u;
     var j_5: u32;
     var total_1: f32 = 0f;
     var lo_1: f32;
     var i_17: u32 = 0u;
     var hi_1: f32;
-    var local_18: bool;
     var local_19: bool;
+    var local_20: bool;
 
     if isotropic {
         let _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5f)));
@@ -1906,11 +1929,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 if (_e57 > half_9.y_lo) {
                     let _e62 = i_15;
                     let _e64 = cuts[_e62];
-                    local_17 = (_e64 < half_9.y_hi);
+                    local_18 = (_e64 < half_9.y_hi);
                 } else {
-                    local_17 = false;
+                    local_18 = false;
                 }
-                let _e68 = local_17;
+                let _e68 = local_18;
                 if !(_e68) {
                     let _e70 = i_15;
                     cuts[_e70] = 2f;
@@ -1977,11 +2000,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e128 < 4u) {
                 let _e133 = i_17;
                 let _e135 = cuts[_e133];
-                local_18 = (_e135 < 2f);
+                local_19 = (_e135 < 2f);
             } else {
-                local_18 = false;
+                local_19 = false;
             }
-            let _e139 = local_18;
+            let _e139 = local_19;
             if _e139 {
                 let _e140 = i_17;
                 let _e142 = cuts[_e140];
@@ -2002,11 +2025,11 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             if (_e152 < 4u) {
                 let _e157 = i_17;
                 let _e159 = cuts[_e157];
-                local_19 = (_e159 >= 2f);
+                local_20 = (_e159 >= 2f);
             } else {
-                local_19 = false;
+                local_20 = false;
             }
-            let _e163 = local_19;
+            let _e163 = local_20;
             if _e163 {
                 break;
             }
@@ -2033,17 +2056,17 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32)
 }
 
 fn airlight_on_line(s_8: AirlightScene, g_10: AirlightCanonical) -> f32 {
-    var local_20: bool;
+    var local_21: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
     if !(g_10.t_hi_infinite) {
-        local_20 = (g_10.x_h > g_10.t_hi);
+        local_21 = (g_10.x_h > g_10.t_hi);
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    let _e10 = local_20;
+    let _e10 = local_21;
     if _e10 {
         let _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
         let _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1f);
@@ -2102,8 +2125,9 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_21: bool;
     var local_22: bool;
+    var local_23: bool;
+    var x_8: f32 = 0f;
 
     let h_2 = g_11.h;
     let a_s = ((g_11.x_h - g_11.t_lo) / h_2);
@@ -2112,11 +2136,11 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     let u_e = ((g_11.t_hi - g_11.x_h) / h_2);
     if !(g_11.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_21 = _e24;
+        local_22 = _e24;
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    let _e26 = local_21;
+    let _e26 = local_22;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -2124,11 +2148,11 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_22 = _e40;
+            local_23 = _e40;
         } else {
-            local_22 = false;
+            local_23 = false;
         }
-        let _e42 = local_22;
+        let _e42 = local_23;
         if _e42 {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -2146,17 +2170,25 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     let _e54 = airlight_integrand(s_9, g_11, -1f, _e9);
     let _e55 = airlight_moment_zero(half_10);
     let j_8 = (_e54 * _e55);
-    let _e60 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, (big_h_1 * _e8), j_8);
-    return _e60;
+    let _e59 = airlight_is_finite(_e8);
+    if _e59 {
+        x_8 = (big_h_1 * _e8);
+    } else {
+        if (s_9.sigma_t > 0f) {
+            x_8 = (s_9.sigma_t * abs((g_11.x_h - g_11.t_lo)));
+        }
+    }
+    let _e72 = x_8;
+    let _e73 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, _e72, j_8);
+    return _e73;
 }
 
 fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -> AirlightResult {
-    var local_23: bool;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
-    var gap: f32 = 0f;
     var local_27: bool;
+    var gap: f32 = 0f;
     var local_28: bool;
     var local_29: bool;
     var local_30: bool;
@@ -2166,32 +2198,33 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     var local_34: bool;
     var local_35: bool;
     var local_36: bool;
+    var local_37: bool;
     var total_2: f32 = 0f;
     var f_max_6: f32 = 0f;
     var t_end: f32;
-    var local_37: bool;
     var local_38: bool;
+    var local_39: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_39: bool;
     var local_40: bool;
+    var local_41: bool;
 
     let t0_ = g_12.t_lo;
     let t1_ = g_12.t_hi;
     if !(g_12.t_hi_infinite) {
-        local_23 = (t1_ > t0_);
-    } else {
-        local_23 = true;
-    }
-    let _e10 = local_23;
-    if !(!(_e10)) {
-        local_24 = ((s_10.sigma_s * s_10.intensity) == 0f);
+        local_24 = (t1_ > t0_);
     } else {
         local_24 = true;
     }
-    let _e21 = local_24;
+    let _e10 = local_24;
+    if !(!(_e10)) {
+        local_25 = ((s_10.sigma_s * s_10.intensity) == 0f);
+    } else {
+        local_25 = true;
+    }
+    let _e21 = local_25;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -2199,16 +2232,16 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     let x_h = g_12.x_h;
     if (t0_ <= x_h) {
         if !(g_12.t_hi_infinite) {
-            local_26 = (x_h <= t1_);
+            local_27 = (x_h <= t1_);
         } else {
-            local_26 = true;
+            local_27 = true;
         }
-        let _e36 = local_26;
-        local_25 = _e36;
+        let _e36 = local_27;
+        local_26 = _e36;
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    let inside = local_25;
+    let inside = local_26;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -2218,11 +2251,11 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     }
     if !(inside) {
         let _e48 = gap;
-        local_27 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_28 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    let _e55 = local_27;
+    let _e55 = local_28;
     if _e55 {
         let _e56 = airlight_on_line(s_10, g_12);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -2233,58 +2266,58 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     let big_h_4 = (s_10.sigma_t * h_3);
     if !((s_10.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = (s_10.light_param_a == 0f);
+            local_30 = (s_10.light_param_a == 0f);
         } else {
-            local_29 = false;
+            local_30 = false;
         }
-        let _e83 = local_29;
-        local_28 = _e83;
+        let _e83 = local_30;
+        local_29 = _e83;
     } else {
-        local_28 = true;
+        local_29 = true;
     }
-    let _e85 = local_28;
+    let _e85 = local_29;
     if _e85 {
         if !((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_32 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_33 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_32 = true;
+                local_33 = true;
             }
-            let _e104 = local_32;
+            let _e104 = local_33;
             if _e104 {
-                local_33 = (s_10.phase_param_a == 0f);
+                local_34 = (s_10.phase_param_a == 0f);
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            let _e111 = local_33;
-            local_31 = _e111;
+            let _e111 = local_34;
+            local_32 = _e111;
         } else {
-            local_31 = true;
+            local_32 = true;
         }
-        let _e113 = local_31;
-        local_30 = _e113;
+        let _e113 = local_32;
+        local_31 = _e113;
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    let isotropic_1 = local_30;
+    let isotropic_1 = local_31;
     if isotropic_1 {
-        local_34 = (t0_ < x_h);
-    } else {
-        local_34 = false;
-    }
-    let _e120 = local_34;
-    if _e120 {
-        if !(g_12.t_hi_infinite) {
-            local_36 = (x_h < t1_);
-        } else {
-            local_36 = true;
-        }
-        let _e129 = local_36;
-        local_35 = _e129;
+        local_35 = (t0_ < x_h);
     } else {
         local_35 = false;
     }
-    let _e131 = local_35;
+    let _e120 = local_35;
+    if _e120 {
+        if !(g_12.t_hi_infinite) {
+            local_37 = (x_h < t1_);
+        } else {
+            local_37 = true;
+        }
+        let _e129 = local_37;
+        local_36 = _e129;
+    } else {
+        local_36 = false;
+    }
+    let _e131 = local_36;
     if _e131 {
         let _e132 = airlight_whole_line(s_10, g_12, big_h_4);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
@@ -2293,11 +2326,11 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         let a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
         if !(g_12.t_hi_infinite) {
-            local_37 = (t1_ < x_h);
+            local_38 = (t1_ < x_h);
         } else {
-            local_37 = false;
+            local_38 = false;
         }
-        let _e151 = local_37;
+        let _e151 = local_38;
         if _e151 {
             t_end = t1_;
         }
@@ -2317,11 +2350,11 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         total_2 = (_e177 + _e181);
     }
     if !(g_12.t_hi_infinite) {
-        local_38 = (t1_ > x_h);
+        local_39 = (t1_ > x_h);
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    let _e189 = local_38;
+    let _e189 = local_39;
     if _e189 {
         let t_start = max(t0_, x_h);
         let a_s_2 = ((t_start - x_h) / h_3);
@@ -2331,22 +2364,22 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         let a_e_1 = ((t1_ - x_h) / h_3);
         if !(g_12.t_hi_infinite) {
             let _e208 = airlight_is_finite(a_e_1);
-            local_39 = _e208;
+            local_40 = _e208;
         } else {
-            local_39 = false;
+            local_40 = false;
         }
-        let _e210 = local_39;
+        let _e210 = local_40;
         if _e210 {
             let _e211 = airlight_bounded(a_e_1);
             let _e215 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e193 + _e215))));
             if (_e211 > 0f) {
                 let _e225 = airlight_is_finite(dv_end_1);
-                local_40 = _e225;
+                local_41 = _e225;
             } else {
-                local_40 = false;
+                local_41 = false;
             }
-            let _e227 = local_40;
+            let _e227 = local_41;
             if _e227 {
                 y_lo = _e211;
                 dv_3 = dv_end_1;
@@ -2374,24 +2407,24 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_41: bool;
     var local_42: bool;
+    var local_43: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_41 = _e6;
-    } else {
-        local_41 = false;
-    }
-    let _e8 = local_41;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_42 = _e12;
+        local_42 = _e6;
     } else {
         local_42 = false;
     }
-    let _e14 = local_42;
+    let _e8 = local_42;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_43 = _e12;
+    } else {
+        local_43 = false;
+    }
+    let _e14 = local_43;
     return _e14;
 }
 
@@ -2404,16 +2437,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_43: bool;
+    var local_44: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_43 = _e6;
+        local_44 = _e6;
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    let _e8 = local_43;
+    let _e8 = local_44;
     return _e8;
 }
 
@@ -2424,7 +2457,6 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_11: AirlightScene) -> bool {
-    var local_44: bool;
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
@@ -2434,8 +2466,8 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
-    var ok: bool;
     var local_54: bool;
+    var ok: bool;
     var local_55: bool;
     var local_56: bool;
     var local_57: bool;
@@ -2452,163 +2484,164 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
     var local_68: bool;
     var local_69: bool;
     var local_70: bool;
+    var local_71: bool;
 
     let _e2 = airlight_vec_finite(s_11.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_11.dir);
-        local_44 = _e6;
-    } else {
-        local_44 = false;
-    }
-    let _e8 = local_44;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_11.dir);
-        local_45 = _e12;
+        local_45 = _e6;
     } else {
         local_45 = false;
     }
-    let _e14 = local_45;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_11.t_min);
-        local_46 = _e18;
+    let _e8 = local_45;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_11.dir);
+        local_46 = _e12;
     } else {
         local_46 = false;
     }
-    let _e20 = local_46;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_11.light_position);
-        local_47 = _e24;
+    let _e14 = local_46;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_11.t_min);
+        local_47 = _e18;
     } else {
         local_47 = false;
     }
-    let _e26 = local_47;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_11.intensity);
-        local_48 = _e30;
+    let _e20 = local_47;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_11.light_position);
+        local_48 = _e24;
     } else {
         local_48 = false;
     }
-    let _e32 = local_48;
-    if _e32 {
-        local_49 = (s_11.intensity >= 0f);
+    let _e26 = local_48;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_11.intensity);
+        local_49 = _e30;
     } else {
         local_49 = false;
     }
-    let _e39 = local_49;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_11.sigma_s);
-        local_50 = _e43;
+    let _e32 = local_49;
+    if _e32 {
+        local_50 = (s_11.intensity >= 0f);
     } else {
         local_50 = false;
     }
-    let _e45 = local_50;
-    if _e45 {
-        local_51 = (s_11.sigma_s >= 0f);
+    let _e39 = local_50;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_11.sigma_s);
+        local_51 = _e43;
     } else {
         local_51 = false;
     }
-    let _e52 = local_51;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_11.sigma_t);
-        local_52 = _e56;
+    let _e45 = local_51;
+    if _e45 {
+        local_52 = (s_11.sigma_s >= 0f);
     } else {
         local_52 = false;
     }
-    let _e58 = local_52;
-    if _e58 {
-        local_53 = (s_11.sigma_t >= 0f);
+    let _e52 = local_52;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_11.sigma_t);
+        local_53 = _e56;
     } else {
         local_53 = false;
     }
-    let _e65 = local_53;
+    let _e58 = local_53;
+    if _e58 {
+        local_54 = (s_11.sigma_t >= 0f);
+    } else {
+        local_54 = false;
+    }
+    let _e65 = local_54;
     ok = _e65;
     if ((s_11.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_11.t_max);
-            local_54 = _e76;
-        } else {
-            local_54 = false;
-        }
-        let _e78 = local_54;
-        if _e78 {
-            local_55 = (s_11.t_min <= s_11.t_max);
+            local_55 = _e76;
         } else {
             local_55 = false;
         }
-        let _e85 = local_55;
+        let _e78 = local_55;
+        if _e78 {
+            local_56 = (s_11.t_min <= s_11.t_max);
+        } else {
+            local_56 = false;
+        }
+        let _e85 = local_56;
         ok = _e85;
     }
     if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_11.light_axis);
-            local_56 = _e93;
-        } else {
-            local_56 = false;
-        }
-        let _e95 = local_56;
-        if _e95 {
-            let _e99 = airlight_normalisable(s_11.light_axis);
-            local_57 = _e99;
+            local_57 = _e93;
         } else {
             local_57 = false;
         }
-        let _e101 = local_57;
-        if _e101 {
-            local_58 = (s_11.light_param_a >= 0f);
+        let _e95 = local_57;
+        if _e95 {
+            let _e99 = airlight_normalisable(s_11.light_axis);
+            local_58 = _e99;
         } else {
             local_58 = false;
         }
-        let _e108 = local_58;
-        if _e108 {
-            local_59 = (s_11.light_param_a <= 1024f);
+        let _e101 = local_58;
+        if _e101 {
+            local_59 = (s_11.light_param_a >= 0f);
         } else {
             local_59 = false;
         }
-        let _e115 = local_59;
-        if _e115 {
-            local_60 = (fract((s_11.light_param_a * 0.5f)) == 0f);
+        let _e108 = local_59;
+        if _e108 {
+            local_60 = (s_11.light_param_a <= 1024f);
         } else {
             local_60 = false;
         }
-        let _e125 = local_60;
+        let _e115 = local_60;
+        if _e115 {
+            local_61 = (fract((s_11.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_61 = false;
+        }
+        let _e125 = local_61;
         ok = _e125;
     } else {
         if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
                 let _e133 = airlight_vec_finite(s_11.light_axis);
-                local_61 = _e133;
-            } else {
-                local_61 = false;
-            }
-            let _e135 = local_61;
-            if _e135 {
-                let _e139 = airlight_normalisable(s_11.light_axis);
-                local_62 = _e139;
+                local_62 = _e133;
             } else {
                 local_62 = false;
             }
-            let _e141 = local_62;
-            if _e141 {
-                local_63 = (s_11.light_param_b < s_11.light_param_a);
+            let _e135 = local_62;
+            if _e135 {
+                let _e139 = airlight_normalisable(s_11.light_axis);
+                local_63 = _e139;
             } else {
                 local_63 = false;
             }
-            let _e148 = local_63;
-            if _e148 {
-                local_64 = (s_11.light_param_b >= -1f);
+            let _e141 = local_63;
+            if _e141 {
+                local_64 = (s_11.light_param_b < s_11.light_param_a);
             } else {
                 local_64 = false;
             }
-            let _e155 = local_64;
-            if _e155 {
-                local_65 = (s_11.light_param_a <= 1f);
+            let _e148 = local_64;
+            if _e148 {
+                local_65 = (s_11.light_param_b >= -1f);
             } else {
                 local_65 = false;
             }
-            let _e162 = local_65;
+            let _e155 = local_65;
+            if _e155 {
+                local_66 = (s_11.light_param_a <= 1f);
+            } else {
+                local_66 = false;
+            }
+            let _e162 = local_66;
             ok = _e162;
         } else {
             if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2623,39 +2656,39 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e172 = ok;
             if _e172 {
-                local_66 = g_ok;
+                local_67 = g_ok;
             } else {
-                local_66 = false;
+                local_67 = false;
             }
-            let _e176 = local_66;
+            let _e176 = local_67;
             ok = _e176;
         }
         case 5u: {
             let _e177 = ok;
             if _e177 {
-                local_67 = g_ok;
-            } else {
-                local_67 = false;
-            }
-            let _e181 = local_67;
-            if _e181 {
-                local_68 = (abs(s_11.phase_param_b) < 1f);
+                local_68 = g_ok;
             } else {
                 local_68 = false;
             }
-            let _e189 = local_68;
-            if _e189 {
-                local_69 = (s_11.phase_param_c >= 0f);
+            let _e181 = local_68;
+            if _e181 {
+                local_69 = (abs(s_11.phase_param_b) < 1f);
             } else {
                 local_69 = false;
             }
-            let _e196 = local_69;
-            if _e196 {
-                local_70 = (s_11.phase_param_c <= 1f);
+            let _e189 = local_69;
+            if _e189 {
+                local_70 = (s_11.phase_param_c >= 0f);
             } else {
                 local_70 = false;
             }
-            let _e203 = local_70;
+            let _e196 = local_70;
+            if _e196 {
+                local_71 = (s_11.phase_param_c <= 1f);
+            } else {
+                local_71 = false;
+            }
+            let _e203 = local_71;
             ok = _e203;
         }
         default: {
@@ -2689,8 +2722,8 @@ fn airlight_canonical(s_12: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_12.t_min, select(s_12.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_8: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_8) ^ key));
+fn airlight_opaque(x_9: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_9) ^ key));
 }
 
 fn airlight_two_sum(a_11: f32, b_8: f32, key_1: u32) -> vec2<f32> {
@@ -2702,8 +2735,8 @@ fn airlight_two_sum(a_11: f32, b_8: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_1, _e12));
 }
 
-fn airlight_split_high(x_9: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_9) + 2048u) & 4294963200u));
+fn airlight_split_high(x_10: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_10) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_12: f32, b_9: f32, key_2: u32) -> vec2<f32> {
@@ -2726,29 +2759,29 @@ fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_71: bool;
     var local_72: bool;
+    var local_73: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_72 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_73 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_72 = false;
+            local_73 = false;
         }
-        let _e21 = local_72;
-        local_71 = _e21;
+        let _e21 = local_73;
+        local_72 = _e21;
     } else {
-        local_71 = true;
+        local_72 = true;
     }
-    let _e23 = local_71;
+    let _e23 = local_72;
     return _e23;
 }
 
 fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_73: bool;
-    var out_2: AirlightCanonical;
     var local_74: bool;
+    var out_2: AirlightCanonical;
+    var local_75: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_13.flags > 1u));
@@ -2761,11 +2794,11 @@ fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_73 = !(_e38);
+        local_74 = !(_e38);
     } else {
-        local_73 = true;
+        local_74 = true;
     }
-    let _e41 = local_73;
+    let _e41 = local_74;
     if _e41 {
         return plain;
     }
@@ -2789,11 +2822,11 @@ fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_74 = (h_4 > 0f);
+        local_75 = (h_4 > 0f);
     } else {
-        local_74 = false;
+        local_75 = false;
     }
-    let _e101 = local_74;
+    let _e101 = local_75;
     if !(_e101) {
         return plain;
     }

@@ -233,3 +233,79 @@ fn mint_vectors_convert_in_and_out() {
     let back = mint::Vector3::<f32>::from(ray.dir);
     assert_eq!((back.x, back.y, back.z), (1.0, 0.0, 0.0));
 }
+
+/// A kernel fuzz finding: an isotropic ray across the foot to `t ≈ 8e298` in a medium with a
+/// subnormal `σt`. `Re ln((v_e − i)/(v_s − i))` overflowed as a product (`Δv·v_e ≈ 6e593`) and
+/// reached `Im C` through `e^{−iH}`'s `sin H ≠ 0`: `−∞`. With `σt·t ≈ 2e-14` the extinction is
+/// negligible, so the value is the `atan` form's (Macklin 2010), to that order.
+#[test]
+fn ray_to_the_range_end_in_a_vanishing_medium_is_the_atan_form() {
+    let ray = Ray::<f64> {
+        origin: DVec3::new(-36.6809172241934, -61.23279014808105, -1.7215010289859124e27),
+        dir: DVec3::new(0.3818469657803454, 0.2752413066208408, 3.4028234663852886e38),
+        t_min: 9.843137254900721,
+        t_max: 7.845911676394542e298,
+    };
+    let position = DVec3::new(98.43137254901958, 98.43137254901958, -46.88112745098041);
+    let light = PointLight { position, intensity: 992.149233350564, distribution: Omni };
+    let medium = Medium { sigma_s: 0.3792906275639931, sigma_t: 3.05137131765e-313 };
+    let s = Scene::new(ray, light, medium, Isotropic).unwrap();
+    let want = airlight::atan_form(&ray, position, 992.149233350564, 0.3792906275639931);
+    for got in [s.in_scatter(), s.in_scatter_with::<6>(Expansion::Chebyshev)] {
+        assert!((got - want).abs() <= 1e-12 * want, "{got} vs the atan form {want}");
+    }
+}
+
+/// A kernel fuzz finding: the light `1.3e-321` off the line, inside an infinite segment, no
+/// extinction. `H·r_s` was `0·∞` (the distance in units of a subnormal `h` overflows): NaN.
+/// The value, `σs·I/(4h) ≈ 3e313`, is beyond the f64 range: `+∞`, as documented.
+#[test]
+fn light_a_subnormal_distance_off_an_infinite_ray_is_infinite_not_nan() {
+    let ray = Ray::<f64> { origin: DVec3::new(1.18e-321, 4.5e-322, 0.0), dir: DVec3::new(0.0, 0.0, -0.9372549019607843), t_min: -9.997549019607844, t_max: f64::INFINITY };
+    let light = PointLight { position: DVec3::new(0.0, 0.0, 1.224167783418391e-250), intensity: 572.5420479675877, distribution: Omni };
+    let s = Scene::new(ray, light, Medium { sigma_s: 2.666780130056168e-10, sigma_t: 0.0 }, Isotropic).unwrap();
+    assert_eq!(s.in_scatter(), f64::INFINITY);
+    assert_eq!(s.in_scatter_with::<6>(Expansion::Chebyshev), f64::INFINITY);
+}
+
+/// A kernel fuzz finding (and the one the fuzz README had left open): a spot cone whose edge
+/// is narrower than any f64 step, seen from a ray `7.7e-121` from the light. The edge's
+/// crossing is a root of `a y² + b y + c` with `b ≈ 1e-190`: `b²` underflowed, the
+/// discriminant became 0 and the cut landed at twice the root, so the fixed method expanded
+/// a step (coefficients to 1e238, `+∞` on a lit part; the Taylor expansion 2× off). With the
+/// coefficients scaled first, every method agrees with the default path.
+#[test]
+fn needle_cone_edge_is_cut_where_it_is() {
+    use airlight::light::SpotCone;
+    let ray = Ray::<f64> { origin: DVec3::new(0.0, 8.487983164e-314, 7.747074743719559e-121), dir: DVec3::new(-1.0, 1.379679969383946e-309, 0.0), t_min: 3.337610787760802e-308, t_max: f64::INFINITY };
+    let cone = SpotCone { axis: DVec3::new(0.0, 1.7976931348623157e308, 0.9999999999985232), cos_inner: 1.17654883e-315, cos_outer: 0.0 };
+    let light = PointLight { position: DVec3::new(0.0, 4.889078302384e-311, 0.0), intensity: 6.00746353852756e95, distribution: cone };
+    let s = Scene::new(ray, light, Medium { sigma_s: 0.6851587594819881, sigma_t: 49.99999758062074 }, Isotropic).unwrap();
+    let want = s.in_scatter();
+    for got in [s.in_scatter_with::<6>(Expansion::Chebyshev), s.in_scatter_with::<4>(Expansion::Chebyshev), s.in_scatter_with::<6>(Expansion::Taylor)] {
+        assert!((got - want).abs() <= 1e-10 * want, "{got} vs the default {want}");
+    }
+    let lit = s.in_scatter_lit::<6>(&[(3.337610787760802e-308, 1.0)], Expansion::Chebyshev);
+    assert!(lit.is_finite() && lit > 0.0 && lit <= want, "{lit}");
+}
+
+/// A kernel fuzz finding in f32: the light at `y = f32::MAX`, an infinite ray across its foot,
+/// `σt` that rounds to 0 in f32. The start's distance `hypot(h, x_h − t0)` overflowed f32 and
+/// met `σt = 0`: NaN. The value is the f64 evaluation of the same (f32-rounded) scene.
+#[test]
+fn light_at_the_f32_range_end_without_extinction_is_finite() {
+    use airlight::glam::Vec3;
+    let o = [-39.87963104248047f32, 12.193191528320313, 35.090694427490234];
+    let d = [1.0f32, 0.5452190041542053, 0.0];
+    let p = [13.72549057006836f32, f32::MAX, -0.0];
+    let ray = Ray::<f32> { origin: Vec3::from_array(o), dir: Vec3::from_array(d), t_min: -0.0, t_max: f32::INFINITY };
+    let light = PointLight { position: Vec3::from_array(p), intensity: f32::MAX, distribution: Omni };
+    let s = Scene::new(ray, light, Medium { sigma_s: f32::MAX, sigma_t: 0.0 }, Isotropic).unwrap();
+    let wide = |a: [f32; 3]| DVec3::from_array(a.map(f64::from));
+    let ray64 = Ray::<f64> { origin: wide(o), dir: wide(d), t_min: 0.0, t_max: f64::INFINITY };
+    let light64 = PointLight { position: wide(p), intensity: f32::MAX as f64, distribution: Omni };
+    let want = Scene::new(ray64, light64, Medium { sigma_s: f32::MAX as f64, sigma_t: 0.0 }, Isotropic).unwrap().in_scatter();
+    for got in [s.in_scatter(), s.in_scatter_with::<6>(Expansion::Chebyshev)] {
+        assert!(((got as f64) - want).abs() <= 1e-5 * want, "{got} vs f64 {want}");
+    }
+}
