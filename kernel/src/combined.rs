@@ -126,6 +126,7 @@ where
     P: PhaseFunction<T>,
     E: ExpIntegral<T>,
 {
+    // every entry point reaches this: a count the kernel cannot compute fails to compile
     const { assert!(N >= 1 && N <= crate::integrals::MAX_TERMS, "1 to 16 terms or nodes") };
     let (t0, t1) = (g.t0, g.t1);
     if !(t1 > t0) || phys.sigma_s * phys.intensity == T::zero() {

@@ -218,7 +218,6 @@ where
     /// assert!(scene.in_scatter_with::<0>(Expansion::Chebyshev) > 0.0);
     /// ```
     pub fn in_scatter_with<const N: usize>(&self, expansion: Expansion) -> T {
-        const { assert!(N >= 1 && N <= crate::integrals::MAX_TERMS, "the fixed method takes 1 to 16 expansion terms") };
         in_scatter_canonical::<T, D, P, Production, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(expansion), &Production)
     }
 
