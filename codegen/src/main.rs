@@ -91,6 +91,24 @@ enum ExpansionArg {
     Taylor,
 }
 
+/// The term or node counts the shaders are emitted with (and the CPU's fixed method takes here).
+#[derive(Clone, Copy, ValueEnum)]
+enum Nodes {
+    #[value(name = "4")]
+    Four,
+    #[value(name = "6")]
+    Six,
+}
+
+impl Nodes {
+    fn count(self) -> usize {
+        match self {
+            Nodes::Four => 4,
+            Nodes::Six => 6,
+        }
+    }
+}
+
 #[derive(clap::Args)]
 struct EvalArgs {
     /// Where records are evaluated (the GPU backend is f32; --precision and --expansion do
@@ -103,8 +121,8 @@ struct EvalArgs {
     /// CPU: the paper's fixed-cost method with this many expansion terms (default: the
     /// kernel's error-controlled panels, within 1e-10 in f64 and 1e-4 in f32 of
     /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel (default 4).
-    #[arg(long, value_parser = ["4", "6"])]
-    terms: Option<String>,
+    #[arg(long, value_enum)]
+    terms: Option<Nodes>,
     /// Polynomial expansion of --terms.
     #[arg(long, value_enum, default_value = "chebyshev")]
     expansion: ExpansionArg,
@@ -116,8 +134,8 @@ struct EmitArgs {
     #[arg(long, visible_alias = "dir")]
     out: Option<PathBuf>,
     /// Nodes per panel of the emitted shaders, a comma list.
-    #[arg(long, value_delimiter = ',', value_parser = ["4", "6"], default_value = "4,6")]
-    terms: Vec<String>,
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "4,6")]
+    terms: Vec<Nodes>,
     /// Target languages, a comma list (wgsl, glsl, spirv, hlsl, msl) [default: all].
     #[arg(long, value_delimiter = ',')]
     targets: Vec<String>,
@@ -129,8 +147,8 @@ struct VerifyArgs {
     #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]
     cases: u32,
     /// Nodes per panel of the shader under test.
-    #[arg(long, value_parser = ["4", "6"], default_value = "4")]
-    terms: String,
+    #[arg(long, value_enum, default_value = "4")]
+    terms: Nodes,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -196,7 +214,7 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
             PrecisionArg::F32 => Precision::F32,
             PrecisionArg::F64 => Precision::F64,
         },
-        terms: a.terms.map(|t| t.parse().expect("clap checked 4 or 6")),
+        terms: a.terms.map(Nodes::count),
         expansion: match a.expansion {
             ExpansionArg::Chebyshev => Expansion::Chebyshev,
             ExpansionArg::Taylor => Expansion::Taylor,
@@ -219,7 +237,7 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
 }
 
 fn cmd_emit(a: EmitArgs, check_only: bool) -> ExitCode {
-    let mut opts = EmitOptions { terms: a.terms.iter().map(|t| t.parse().expect("clap checked 4 or 6")).collect(), ..EmitOptions::default() };
+    let mut opts = EmitOptions { terms: a.terms.iter().map(|t| t.count()).collect(), ..EmitOptions::default() };
     if !a.targets.is_empty() {
         match a.targets.iter().map(|t| Target::parse(t)).collect::<Result<Vec<_>, _>>() {
             Ok(t) => opts.targets = t,
@@ -263,7 +281,7 @@ fn error_line(e: &targets::EmitError) -> ExitCode {
 }
 
 fn cmd_verify(a: VerifyArgs) -> ExitCode {
-    let (cases, terms) = (a.cases as usize, a.terms.parse::<usize>().expect("clap checked 4 or 6"));
+    let (cases, terms) = (a.cases as usize, a.terms.count());
     match airlight_codegen::verify::verify(cases, terms) {
         Ok(r) => {
             println!("adapter:            {}", r.adapter);

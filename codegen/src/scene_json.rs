@@ -145,6 +145,34 @@ fn known_keys(root: &Value, path: &str, known: &[&str]) -> Result<(), FieldError
     Ok(())
 }
 
+/// The keys of a light distribution, per kind.
+const DISTRIBUTION_FIELDS: [(&str, &[&str]); 4] = [
+    ("isotropic", &["kind"]),
+    ("omni", &["kind"]),
+    ("two_lobed", &["kind", "axis", "power"]),
+    ("spot", &["kind", "axis", "cos_inner", "cos_outer"]),
+];
+
+/// The keys of a phase function, per kind.
+const PHASE_FIELDS: [(&str, &[&str]); 6] = [
+    ("isotropic", &["kind"]),
+    ("rayleigh", &["kind"]),
+    ("henyey_greenstein", &["kind", "g"]),
+    ("schlick", &["kind", "k"]),
+    ("cornette_shanks", &["kind", "g"]),
+    ("two_lobe_henyey_greenstein", &["kind", "g1", "g2", "w"]),
+];
+
+/// The `kind` of the object at `path`, after checking that its other keys are that kind's
+/// ([`known_keys`]); an unknown kind is returned as it is, for the caller to report.
+fn fields_known<'a>(root: &'a Value, path: &str, kinds: &[(&str, &[&str])]) -> Result<&'a str, FieldError> {
+    let k = kind(root, &format!("{path}.kind"))?;
+    if let Some((_, fields)) = kinds.iter().find(|(name, _)| *name == k) {
+        known_keys(root, path, fields)?;
+    }
+    Ok(k)
+}
+
 fn number<T: Real>(root: &Value, field: &str) -> Result<T, FieldError> {
     match root.get_path(field) {
         Some(Value::Number(n)) => match n.as_f64() {
@@ -212,13 +240,9 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
     known_keys(root, "light", &["position", "intensity", "distribution"])?;
     let distribution = match root.get_path("light.distribution") {
         None | Some(Value::Null) => AnyDistribution::Omni,
-        Some(_) => match kind(root, "light.distribution.kind")? {
-            "isotropic" | "omni" => {
-                known_keys(root, "light.distribution", &["kind"])?;
-                AnyDistribution::Omni
-            }
+        Some(_) => match fields_known(root, "light.distribution", &DISTRIBUTION_FIELDS)? {
+            "isotropic" | "omni" => AnyDistribution::Omni,
             "two_lobed" => {
-                known_keys(root, "light.distribution", &["kind", "axis", "power"])?;
                 let p: f64 = number(root, "light.distribution.power")?;
                 if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
                     return err("light.distribution.power", "must be an even non-negative integer");
@@ -226,10 +250,7 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
                 AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>(root, "light.distribution.axis")?, power: p as u32 })
             }
             "spot" => AnyDistribution::SpotCone(SpotCone {
-                axis: {
-                    known_keys(root, "light.distribution", &["kind", "axis", "cos_inner", "cos_outer"])?;
-                    vec3::<T>(root, "light.distribution.axis")?
-                },
+                axis: vec3::<T>(root, "light.distribution.axis")?,
                 cos_inner: number(root, "light.distribution.cos_inner")?,
                 cos_outer: number(root, "light.distribution.cos_outer")?,
             }),
@@ -243,26 +264,14 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
     };
     let phase = match root.get_path("phase") {
         None | Some(Value::Null) => AnyPhase::Isotropic,
-        Some(_) => match kind(root, "phase.kind")? {
-            "isotropic" => known_keys(root, "phase", &["kind"]).map(|_| AnyPhase::Isotropic)?,
-            "rayleigh" => known_keys(root, "phase", &["kind"]).map(|_| AnyPhase::Rayleigh)?,
-            "henyey_greenstein" => {
-                known_keys(root, "phase", &["kind", "g"])?;
-                AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number(root, "phase.g")? })
-            }
-            "schlick" => {
-                known_keys(root, "phase", &["kind", "k"])?;
-                AnyPhase::Schlick(Schlick { k: number(root, "phase.k")? })
-            }
-            "cornette_shanks" => {
-                known_keys(root, "phase", &["kind", "g"])?;
-                AnyPhase::CornetteShanks(CornetteShanks { g: number(root, "phase.g")? })
-            }
+        Some(_) => match fields_known(root, "phase", &PHASE_FIELDS)? {
+            "isotropic" => AnyPhase::Isotropic,
+            "rayleigh" => AnyPhase::Rayleigh,
+            "henyey_greenstein" => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number(root, "phase.g")? }),
+            "schlick" => AnyPhase::Schlick(Schlick { k: number(root, "phase.k")? }),
+            "cornette_shanks" => AnyPhase::CornetteShanks(CornetteShanks { g: number(root, "phase.g")? }),
             "two_lobe_henyey_greenstein" => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein {
-                g1: {
-                    known_keys(root, "phase", &["kind", "g1", "g2", "w"])?;
-                    number(root, "phase.g1")?
-                },
+                g1: number(root, "phase.g1")?,
                 g2: number(root, "phase.g2")?,
                 w: number(root, "phase.w")?,
             }),

@@ -122,10 +122,10 @@ fn surface_term_and_total_radiance() {
     assert!((total - want_total).abs() <= 4.0 * f64::EPSILON * want_total);
 }
 
-fn eval_lines(input: &str, precision: Precision) -> Vec<String> {
+fn eval_lines(input: impl AsRef<[u8]>, precision: Precision) -> Vec<String> {
     let mut out = Vec::new();
     let opts = EvalOptions { precision, ..EvalOptions::default() };
-    run(input.as_bytes(), &mut out, &opts).unwrap();
+    run(input.as_ref(), &mut out, &opts).unwrap();
     String::from_utf8(out).unwrap().lines().map(str::to_string).collect()
 }
 
@@ -174,9 +174,7 @@ fn eval_rejects_unknown_keys_and_bad_bytes_per_line() {
     }
     let mut input = b"{\"ray\": \xff}\n".to_vec();
     input.extend_from_slice(good.as_bytes());
-    let mut out = Vec::new();
-    run(&input[..], &mut out, &EvalOptions::default()).unwrap();
-    let out: Vec<String> = String::from_utf8(out).unwrap().lines().map(str::to_string).collect();
+    let out = eval_lines(&input, Precision::F64);
     assert_eq!(out.len(), 2, "{out:?}");
     assert!(out[0].contains("line 1") && out[0].contains("not UTF-8"), "{}", out[0]);
     assert!(out[1].starts_with("{\"in_scatter\":"), "{}", out[1]);

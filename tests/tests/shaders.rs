@@ -64,6 +64,13 @@ fn readme_sizes_are_current() {
     assert_eq!(rows, 10, "rows of the size table in shaders-out/README.md");
 }
 
+/// A fresh directory for this test process's generated files.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 #[test]
 fn spirv_validates() {
     if !tool("spirv-val") {
@@ -80,8 +87,7 @@ fn glsl_and_hlsl_compute_shaders_compile() {
     if !tool("glslangValidator") {
         return;
     }
-    let tmp = std::env::temp_dir().join(format!("airlight-shaders-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).unwrap();
+    let tmp = scratch("airlight-shaders");
     for n in TERM_COUNTS {
         let dir = default_out_dir();
         run(Command::new("glslangValidator").args(["-V", "--target-env", "vulkan1.0", "-o"]).arg(tmp.join("c.spv")).arg(dir.join(format!("glsl/airlight_{n}.comp"))));
@@ -104,8 +110,7 @@ fn include_libraries_compile_in_a_test_shader() {
     if !tool("glslangValidator") {
         return;
     }
-    let tmp = std::env::temp_dir().join(format!("airlight-lib-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).unwrap();
+    let tmp = scratch("airlight-lib");
     let dir = default_out_dir();
     for n in TERM_COUNTS {
         let g450 = paste(
@@ -140,8 +145,7 @@ fn hlsl_library_shares_a_file_with_another_naga_output() {
     if !tool("glslangValidator") {
         return;
     }
-    let tmp = std::env::temp_dir().join(format!("airlight-hlsl-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).unwrap();
+    let tmp = scratch("airlight-hlsl");
     // another naga output: a WGSL function with an integer remainder and an array constructor
     let other = "fn other_hash(x: u32, y: u32) -> f32 {\n    let a = array<f32, 4>(1.0, 2.0, 3.0, 4.0);\n    return a[x % 4u] + f32(y % 3u);\n}\n@compute @workgroup_size(1)\nfn other_main() { _ = other_hash(1u, 2u); }\n";
     let module = naga::front::wgsl::parse_str(other).unwrap();
