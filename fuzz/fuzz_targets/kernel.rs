@@ -53,7 +53,8 @@ fuzz_target!(|data: &[u8]| {
             check(&raw, s.in_scatter_with::<6>(e), f64::MAX, "f64/6");
         }
         let mid = if raw.t1.is_finite() { 0.5 * (raw.t0 + raw.t1) } else { raw.t0 + 1.0 };
-        check(&raw, s.in_scatter_lit::<6>(&[(raw.t0, mid), (mid, raw.t1)], Expansion::Chebyshev), f64::MAX, "f64/lit");
+        check(&raw, s.in_scatter_lit_with::<6>(&[(raw.t0, mid), (mid, raw.t1)], Expansion::Chebyshev), f64::MAX, "f64/lit");
+        check(&raw, s.in_scatter_lit(&[(raw.t0, mid), (mid, raw.t1)]), f64::MAX, "f64/lit default");
     }
     check(&raw, in_scatter_unchecked::<f64, _, _, 6>(r, l, m, p, Expansion::Chebyshev), f64::MAX, "f64/unchecked");
     // f32 on the same inputs rounded to f32 (the oracle judges the rounded scene)

@@ -222,9 +222,27 @@ where
     }
 
     /// `L_m` over the sub-segments `lit` of `[t_min, t_max]` only (a shadowed ray, as sums of
-    /// differences in the manner of Biri et al.): `Σ e^{−σt(a_i − t_min)} L_m(a_i, b_i)`.
-    /// Each `(a_i, b_i)` is clipped to the ray's segment; empty ones contribute nothing.
-    pub fn in_scatter_lit<const N: usize>(&self, lit: &[(T, T)], expansion: Expansion) -> T {
+    /// differences in the manner of Biri et al.): `Σ e^{−σt(a_i − t_min)} L_m(a_i, b_i)`, each
+    /// part by the default error-controlled path ([`Scene::in_scatter`]). Each `(a_i, b_i)` is
+    /// clipped to the ray's segment; empty ones and ones with a NaN end contribute nothing.
+    pub fn in_scatter_lit(&self, lit: &[(T, T)]) -> T {
+        self.lit_sum(lit, &self.canonical, |g| {
+            let control = default_control();
+            if T::PANEL_NODES == 16 {
+                in_scatter_counted::<T, D, P, Production, 16>(g, &self.physics(), Method::Panels(control), &Production).0
+            } else {
+                in_scatter_counted::<T, D, P, Production, 12>(g, &self.physics(), Method::Panels(control), &Production).0
+            }
+        })
+    }
+
+    /// [`Scene::in_scatter_lit`] with one `N`-term expansion per piece (the paper's fixed-cost
+    /// method, as [`Scene::in_scatter_with`]).
+    pub fn in_scatter_lit_with<const N: usize>(&self, lit: &[(T, T)], expansion: Expansion) -> T {
+        self.lit_sum(lit, &self.canonical_fixed, |g| in_scatter_canonical::<T, D, P, Production, N>(g, &self.physics(), Method::Fixed(expansion), &Production))
+    }
+
+    fn lit_sum(&self, lit: &[(T, T)], canonical: &Canonical<T>, part: impl Fn(&Canonical<T>) -> T) -> T {
         let mut total = T::zero();
         for &(a, b) in lit {
             if a.is_nan() || b.is_nan() {
@@ -235,10 +253,8 @@ where
             if !(b > a) {
                 continue;
             }
-            let mut g = self.canonical_fixed;
-            g.t0 = a;
-            g.t1 = b;
-            let part = in_scatter_canonical::<T, D, P, Production, N>(&g, &self.physics(), Method::Fixed(expansion), &Production);
+            let g = Canonical { t0: a, t1: b, ..*canonical };
+            let part = part(&g);
             if part > T::zero() {
                 // an overflowing part (+∞) stays +∞ even where the attenuation underflows
                 let attenuation = (-self.medium.sigma_t * (a - self.ray.t_min)).exp();

@@ -69,9 +69,10 @@ fn evaluation_never_allocates() {
             checksum += (s32.in_scatter_with::<4>(e) + s32.in_scatter_with::<6>(e)) as f64;
         }
         checksum += s64.in_scatter() + s32.in_scatter() as f64;
-        checksum += s64.in_scatter_lit::<6>(segments, Expansion::Chebyshev);
+        checksum += s64.in_scatter_lit_with::<6>(segments, Expansion::Chebyshev) + s64.in_scatter_lit(segments);
         let seg32 = segments.map(|(a, b)| (a as f32, b as f32));
-        checksum += s32.in_scatter_lit::<4>(&seg32, Expansion::Chebyshev) as f64;
+        checksum += s32.in_scatter_lit(&seg32) as f64;
+        checksum += s32.in_scatter_lit_with::<4>(&seg32, Expansion::Chebyshev) as f64;
         checksum += s64.radiance(DVec3::Y, 0.3) + s32.radiance(Vec3::Y, 0.3) as f64;
         checksum += s64.in_scatter_paper::<6>(1e-12, 100) + s32.in_scatter_paper::<4>(1e-6, 100) as f64;
         checksum += in_scatter_unchecked::<f64, _, _, 6>(*s64.ray(), *s64.light(), *s64.medium(), *s64.phase(), Expansion::Chebyshev);

@@ -283,7 +283,7 @@ fn needle_cone_edge_is_cut_where_it_is() {
     for got in [s.in_scatter_with::<6>(Expansion::Chebyshev), s.in_scatter_with::<4>(Expansion::Chebyshev), s.in_scatter_with::<6>(Expansion::Taylor)] {
         assert!((got - want).abs() <= 1e-10 * want, "{got} vs the default {want}");
     }
-    let lit = s.in_scatter_lit::<6>(&[(3.337610787760802e-308, 1.0)], Expansion::Chebyshev);
+    let lit = s.in_scatter_lit_with::<6>(&[(3.337610787760802e-308, 1.0)], Expansion::Chebyshev);
     assert!(lit.is_finite() && lit > 0.0 && lit <= want, "{lit}");
 }
 
