@@ -105,8 +105,11 @@ where
 /// `1/r²` peak left, noise-free, a fixed cost of one `sin_cos`, one `exp` and `F` per node.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GaussAngle<T> {
-    /// Nodes per part (4, 6, 8, 10, 12, 16, 20, 24, 32, 48 or 64; others give 0).
+    /// Nodes per panel (4, 6, 8, 10, 12, 16, 20, 24, 32, 48 or 64; others give 0).
     pub nodes: usize,
+    /// Equal panels per part, each with the `nodes`-point rule (composite Gauss–Legendre, how
+    /// a user goes past the largest tabulated rule); 0 counts as 1.
+    pub panels: usize,
     /// Split at the light's foot `θ = 0` (two parts of `nodes` each when the segment
     /// straddles it).
     pub split: bool,
@@ -155,17 +158,21 @@ where
         if !(b > a) {
             continue;
         }
-        let (mid, hw) = ((a + b) * T::lit(0.5), (b - a) * T::lit(0.5));
+        let panels = rule.panels.max(1);
+        let hw = (b - a) * T::lit(0.5) / T::from(panels).unwrap();
         let mut part = T::zero();
-        for &(x, w) in table {
-            for sign in [-T::one(), T::one()] {
-                let th = mid + hw * T::lit(x) * sign;
-                let (s, c) = th.sin_cos();
-                // t − t0 + r = (x_h − t0) + h (tan θ + sec θ)
-                let exponent = sigma_t * ((g.x_h - g.t0) + g.h * (s + T::one()) / c);
-                let f: T = distribution.eval(g.d_el * s + g.d_c * c) * phase.eval(-s);
-                part = part + T::lit(w) * (-exponent).exp() * f;
-                evaluations += 1;
+        for p in 0..panels {
+            let mid = a + hw * T::from(2 * p + 1).unwrap();
+            for &(x, w) in table {
+                for sign in [-T::one(), T::one()] {
+                    let th = mid + hw * T::lit(x) * sign;
+                    let (s, c) = th.sin_cos();
+                    // t − t0 + r = (x_h − t0) + h (tan θ + sec θ)
+                    let exponent = sigma_t * ((g.x_h - g.t0) + g.h * (s + T::one()) / c);
+                    let f: T = distribution.eval(g.d_el * s + g.d_c * c) * phase.eval(-s);
+                    part = part + T::lit(w) * (-exponent).exp() * f;
+                    evaluations += 1;
+                }
             }
         }
         sum = sum + part * hw;

@@ -4,15 +4,17 @@
 //!
 //! Accuracy first, outside the timed loops, against the references: the error of a method on a
 //! class is the **largest** over its scenes of `|x − exact| / max(|exact|, τ·scale)` (`τ` =
-//! 1e-10 in f64, 1e-4 in f32). Then, per class and precision, timed over all the class's
-//! scenes per iteration:
-//! * `airlight`: `Scene::in_scatter()` (the default);
-//! * `peer_equal`: the peer (split at the foot, cut where the extinction exponent has grown by
-//!   40 in f64, 20 in f32) at the fewest nodes (4 … 64) whose largest error is at most the
-//!   default's; where no count reaches it, 64 nodes (its best), flagged in the table;
-//! * `peer_24`: the peer at 24 nodes, and `airlight_at_peer_24`: the kernel with the loosest
-//!   tolerance (1e-2 … 1e-12) whose largest error is at most the peer's at 24 nodes — accuracy
-//!   per nanosecond from the other side.
+//! 1e-10 in f64, 1e-4 in f32). The peer (split at the foot, cut where the extinction exponent
+//! has grown by 40 in f64, 20 in f32) climbs a ladder of rules: one panel of 4 … 64 nodes, then
+//! composite rules of 16- or 64-node panels up to 4096 nodes per part (`PEER_LADDER`); a
+//! comparison "at error e" takes the cheapest rung whose largest error is at most `e` (where
+//! none is, the last rung, flagged: the peer's true cost there is higher). Then, per class and
+//! precision, timed over all the class's scenes per iteration:
+//! * `airlight`: `Scene::in_scatter()` (the default), and `peer_default`: the peer at the
+//!   default's largest error;
+//! * at each error level of the targets (`LEVELS`: 1e-8 and 1e-10 in f64, 1e-3 and 1e-4 in
+//!   f32), `airlight_<level>`: the kernel with the loosest tolerance (1e-2 … 1e-12) whose largest
+//!   error is at most the level (where none is, the default, flagged), and `peer_<level>`.
 //! Also `special`: complex `e^z E1(z)` over 256 points against one libm `exp` per point, in
 //! each precision.
 //!
@@ -39,8 +41,41 @@ struct Class<T: Real> {
     scale: Vec<f64>,
 }
 
-const NODES: [usize; 11] = [4, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+/// The peer's rungs as (nodes per panel, panels per part), in order of cost.
+const PEER_LADDER: [(usize, usize); 23] = [
+    (4, 1),
+    (6, 1),
+    (8, 1),
+    (10, 1),
+    (12, 1),
+    (16, 1),
+    (20, 1),
+    (24, 1),
+    (32, 1),
+    (48, 1),
+    (64, 1),
+    (16, 8),
+    (64, 2),
+    (16, 16),
+    (64, 4),
+    (16, 32),
+    (64, 8),
+    (16, 64),
+    (64, 16),
+    (16, 128),
+    (64, 32),
+    (16, 256),
+    (64, 64),
+];
 const TOLERANCES: [f64; 11] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
+
+fn levels<T: Real>() -> [f64; 2] {
+    if T::epsilon() > T::lit(1e-10) {
+        [1e-3, 1e-4]
+    } else {
+        [1e-8, 1e-10]
+    }
+}
 
 fn load<T: Real>() -> BTreeMap<String, Class<T>> {
     let mut out: BTreeMap<String, Class<T>> = BTreeMap::new();
@@ -73,52 +108,70 @@ fn largest_error<T: Real>(c: &Class<T>, f: impl Fn(&S<T>) -> T) -> f64 {
     c.scenes.iter().enumerate().map(|(i, s)| (f(s).to_f64_exact() - c.exact[i]).abs() / c.exact[i].abs().max(t * c.scale[i])).fold(0.0, f64::max)
 }
 
-fn peer<T: Real>(n: usize) -> GaussAngle<T> {
+fn peer<T: Real>((nodes, panels): (usize, usize)) -> GaussAngle<T> {
     let cut = if T::epsilon() > T::lit(1e-10) { 20.0 } else { 40.0 };
-    GaussAngle { nodes: n, split: true, cut: Some(T::lit(cut)) }
+    GaussAngle { nodes, panels, split: true, cut: Some(T::lit(cut)) }
 }
 
 fn ours<T: Real>(s: &S<T>, control: Control<T>) -> T {
     s.in_scatter_controlled(control).0
 }
 
+/// The cheapest peer rung at most `e` off over the class (or the last rung), its error, and
+/// whether it reached `e`.
+fn peer_at(errors: &[f64], e: f64) -> (usize, f64, bool) {
+    match errors.iter().position(|&x| x <= e) {
+        Some(i) => (i, errors[i], true),
+        None => (errors.len() - 1, errors[errors.len() - 1], false),
+    }
+}
+
+fn json_rung(i: usize, e: f64, reached: bool) -> String {
+    let (n, p) = PEER_LADDER[i];
+    format!("{{\"nodes\":{n},\"panels\":{p},\"error\":{e:e},\"reached\":{reached}}}")
+}
+
 fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
     for (name, class) in load::<T>() {
         let ours_err = largest_error(&class, |s| s.in_scatter());
-        let panels: Vec<usize> = class.scenes.iter().map(|s| s.in_scatter_controlled(default_control()).1).collect();
-        let peer_errs: Vec<f64> = NODES.iter().map(|&n| largest_error(&class, |s| s.gauss_angle(peer(n)).0)).collect();
-        let (n_equal, reached) = match NODES.iter().zip(&peer_errs).find(|(_, &e)| e <= ours_err) {
-            Some((&n, _)) => (n, true),
-            None => (64, false),
-        };
-        let peer_err_equal = peer_errs[NODES.iter().position(|&n| n == n_equal).unwrap()];
-        let peer24_err = peer_errs[NODES.iter().position(|&n| n == 24).unwrap()];
-        let tol_at_peer = TOLERANCES
-            .iter()
-            .copied()
-            .find(|&t| {
-                let c = Control { tolerance: T::lit(t), floor: T::lit(tau::<T>()), max_panels: T::MAX_PANELS };
-                largest_error(&class, |s| ours(s, c)) <= peer24_err
-            })
-            .unwrap_or(1e-12);
-        let control_at_peer = Control { tolerance: T::lit(tol_at_peer), floor: T::lit(tau::<T>()), max_panels: T::MAX_PANELS };
-        let ours_at_peer_err = largest_error(&class, |s| ours(s, control_at_peer));
-        let mut sorted = panels.clone();
-        sorted.sort();
-        writeln!(
-            report,
-            "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"scenes\":{},\"airlight\":{ours_err:e},\"panels_median\":{},\"panels_max\":{},\"peer_equal_nodes\":{n_equal},\"peer_equal_reached\":{reached},\"peer_equal\":{peer_err_equal:e},\"peer_24\":{peer24_err:e},\"airlight_at_peer_24_tolerance\":{tol_at_peer:e},\"airlight_at_peer_24\":{ours_at_peer_err:e}}}",
+        let mut panels: Vec<usize> = class.scenes.iter().map(|s| s.in_scatter_controlled(default_control()).1).collect();
+        panels.sort();
+        let peer_errs: Vec<f64> = PEER_LADDER.iter().map(|&r| largest_error(&class, |s| s.gauss_angle(peer(r)).0)).collect();
+        let (peer_default, e, reached) = peer_at(&peer_errs, ours_err);
+        let mut line = format!(
+            "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"scenes\":{},\"airlight\":{ours_err:e},\"panels_median\":{},\"panels_max\":{},\"peer_default\":{},\"levels\":[",
             class.scenes.len(),
-            sorted[sorted.len() / 2],
-            sorted[sorted.len() - 1]
-        )
-        .unwrap();
+            panels[panels.len() / 2],
+            panels[panels.len() - 1],
+            json_rung(peer_default, e, reached)
+        );
+        let mut timed: Vec<(String, Control<T>, usize)> = vec![];
+        for (k, level) in levels::<T>().into_iter().enumerate() {
+            let at = |t: f64| Control { tolerance: T::lit(t), ..default_control() };
+            let tol = TOLERANCES.iter().copied().find(|&t| largest_error(&class, |s| ours(s, at(t))) <= level);
+            let control = tol.map_or(default_control(), at);
+            let err = largest_error(&class, |s| ours(s, control));
+            let (rung, e, reached) = peer_at(&peer_errs, level);
+            write!(
+                line,
+                "{}{{\"level\":{level:e},\"tolerance\":{},\"airlight\":{err:e},\"peer\":{}}}",
+                if k > 0 { "," } else { "" },
+                tol.map_or("null".to_string(), |t| format!("{t:e}")),
+                json_rung(rung, e, reached)
+            )
+            .unwrap();
+            timed.push((format!("{level:e}"), control, rung));
+        }
+        writeln!(report, "{line}]}}").unwrap();
         let mut g = crit.benchmark_group(format!("classes_{label}_{name}"));
         let sc = &class.scenes;
-        g.bench_function("airlight", |b| b.iter(|| sc.iter().map(|s| black_box(s).in_scatter()).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("peer_equal", |b| b.iter(|| sc.iter().map(|s| black_box(s).gauss_angle(peer(n_equal)).0).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("peer_24", |b| b.iter(|| sc.iter().map(|s| black_box(s).gauss_angle(peer(24)).0).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("airlight_at_peer_24", |b| b.iter(|| sc.iter().map(|s| ours(black_box(s), control_at_peer)).fold(T::zero(), |a, x| a + x)));
+        let sum = |f: &dyn Fn(&S<T>) -> T| sc.iter().map(|s| f(black_box(s))).fold(T::zero(), |a, x| a + x);
+        g.bench_function("airlight", |b| b.iter(|| sum(&|s| s.in_scatter())));
+        g.bench_function("peer_default", |b| b.iter(|| sum(&|s| s.gauss_angle(peer(PEER_LADDER[peer_default])).0)));
+        for (level, control, rung) in timed {
+            g.bench_function(format!("airlight_{level}"), |b| b.iter(|| sum(&|s| ours(s, control))));
+            g.bench_function(format!("peer_{level}"), |b| b.iter(|| sum(&|s| s.gauss_angle(peer(PEER_LADDER[rung])).0)));
+        }
         g.finish();
     }
 }

@@ -56,7 +56,7 @@ fn hard_classes_against_quadrature() {
         }
         let fixed4 = c.err(s.in_scatter_with::<4>(Expansion::Chebyshev), 1e-10);
         let fixed6 = c.err(s.in_scatter_with::<6>(Expansion::Chebyshev), 1e-10);
-        let peer = |n: usize| c.err(s.gauss_angle(GaussAngle { nodes: n, split: true, cut: Some(40.0) }).0, 1e-10);
+        let peer = |n: usize| c.err(s.gauss_angle(GaussAngle { nodes: n, panels: 1, split: true, cut: Some(40.0) }).0, 1e-10);
         let panels = s.in_scatter_controlled(default_control()).1;
         table
             .entry(c.category.clone())
