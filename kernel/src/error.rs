@@ -23,6 +23,9 @@ pub enum ErrorKind {
     NotACosine,
     /// A weight outside `[0, 1]`.
     NotAFraction,
+    /// A kind code (of a flat record, e.g. the C ABI's) that names no phase function or light
+    /// distribution.
+    UnknownKind,
 }
 
 /// An invalid input, naming the field by its path in the JSON scene record (docs/DESIGN.md §6),
@@ -54,6 +57,7 @@ impl fmt::Display for InputError {
             ErrorKind::InvertedCone => "cos_outer must be below cos_inner",
             ErrorKind::NotACosine => "must lie in [-1, 1]",
             ErrorKind::NotAFraction => "must lie in [0, 1]",
+            ErrorKind::UnknownKind => "is not a known kind code",
         };
         write!(f, "{}: {}", self.field, what)
     }

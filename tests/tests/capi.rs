@@ -1,0 +1,201 @@
+//! The C ABI (capi/): its header is what cbindgen generates from capi/src/lib.rs, its codes are
+//! the shader record's, and a C program compiled with the system `cc` against the header and
+//! the static library evaluates the mpmath reference scenes to the f64/f32 targets
+//! (capi/c/reference_test.c) — with std, and built `#![no_std]` with `panic = "abort"` (the
+//! firmware build: if anything in the kernel's dependency graph pulled in `std`, rustc would
+//! reject the crate's own `#[panic_handler]` as a duplicate `panic_impl` lang item).
+
+use airlight::light::AnyDistribution;
+use airlight::phase::AnyPhase;
+use airlight_codegen::layout;
+use airlight_tests::{class_cases, repo_root};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The committed header is cbindgen's output for the committed source and configuration;
+/// `AIRLIGHT_UPDATE_HEADER=1` rewrites it instead.
+#[test]
+fn header_is_current() {
+    let capi = repo_root().join("capi");
+    let config = cbindgen::Config::from_file(capi.join("cbindgen.toml")).unwrap();
+    let bindings = cbindgen::Builder::new().with_config(config).with_src(capi.join("src/lib.rs")).generate().expect("cbindgen");
+    let mut generated = Vec::new();
+    bindings.write(&mut generated);
+    let path = capi.join("include/airlight.h");
+    if std::env::var_os("AIRLIGHT_UPDATE_HEADER").is_some() {
+        std::fs::write(&path, &generated).unwrap();
+    }
+    let committed = std::fs::read(&path).unwrap_or_default();
+    assert!(
+        committed == generated,
+        "capi/include/airlight.h is not what cbindgen generates from capi/src/lib.rs: run `AIRLIGHT_UPDATE_HEADER=1 cargo test --release -p airlight-tests --test capi`"
+    );
+}
+
+/// The C ABI's kind and status codes are the GPU record's (codegen's layout), which the
+/// shader libraries' `AIRLIGHT_*` constants also are.
+#[test]
+fn codes_are_the_shader_records() {
+    use airlight_c as c;
+    assert_eq!(
+        [c::AIRLIGHT_LIGHT_OMNI, c::AIRLIGHT_LIGHT_TWO_LOBED, c::AIRLIGHT_LIGHT_SPOT],
+        [layout::LIGHT_OMNI, layout::LIGHT_TWO_LOBED, layout::LIGHT_SPOT]
+    );
+    assert_eq!(
+        [
+            c::AIRLIGHT_PHASE_ISOTROPIC,
+            c::AIRLIGHT_PHASE_RAYLEIGH,
+            c::AIRLIGHT_PHASE_HENYEY_GREENSTEIN,
+            c::AIRLIGHT_PHASE_SCHLICK,
+            c::AIRLIGHT_PHASE_CORNETTE_SHANKS,
+            c::AIRLIGHT_PHASE_TWO_LOBE_HENYEY_GREENSTEIN
+        ],
+        [
+            layout::PHASE_ISOTROPIC,
+            layout::PHASE_RAYLEIGH,
+            layout::PHASE_HENYEY_GREENSTEIN,
+            layout::PHASE_SCHLICK,
+            layout::PHASE_CORNETTE_SHANKS,
+            layout::PHASE_TWO_LOBE_HG
+        ]
+    );
+    assert_eq!([c::AIRLIGHT_STATUS_OK, c::AIRLIGHT_STATUS_INVALID, c::AIRLIGHT_STATUS_INFINITE], [layout::STATUS_OK, layout::STATUS_INVALID, layout::STATUS_INFINITE]);
+}
+
+/// Every reference scene as one line of plain numbers, in the order reference_test.c reads.
+fn scenes_as_text() -> String {
+    let mut out = String::new();
+    for c in class_cases() {
+        let (r, l, m) = (&c.rec.ray, &c.rec.light, &c.rec.medium);
+        let (kind, power, axis, cos_inner, cos_outer) = match l.distribution {
+            AnyDistribution::Omni => (0, 0, [0.0, 0.0, 1.0], 0.0, 0.0),
+            AnyDistribution::TwoLobed(d) => (1, d.power, d.axis.to_array(), 0.0, 0.0),
+            AnyDistribution::SpotCone(d) => (2, 0, d.axis.to_array(), d.cos_inner, d.cos_outer),
+        };
+        let (pk, g, k, g1, g2, w) = match c.rec.phase {
+            AnyPhase::Isotropic => (0, 0.0, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::Rayleigh => (1, 0.0, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::HenyeyGreenstein(p) => (2, p.g, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::Schlick(p) => (3, 0.0, p.k, 0.0, 0.0, 0.0),
+            AnyPhase::CornetteShanks(p) => (4, p.g, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => (5, 0.0, 0.0, p.g1, p.g2, p.w),
+        };
+        let v = |x: f64| format!("{x:e}");
+        let v3 = |a: [f64; 3]| a.map(v).join(" ");
+        writeln!(
+            out,
+            "{} {} {} {} {} {} {} {} {} {kind} {power} {} {} {} {} {} {pk} {} {} {} {} {}",
+            c.category,
+            v(c.exact),
+            v(c.scale),
+            v3(r.origin.to_array()),
+            v3(r.dir.to_array()),
+            v(r.t_min),
+            v(r.t_max),
+            v3(l.position.to_array()),
+            v(l.intensity),
+            v3(axis),
+            v(cos_inner),
+            v(cos_outer),
+            v(m.sigma_s),
+            v(m.sigma_t),
+            v(g),
+            v(k),
+            v(g1),
+            v(g2),
+            v(w)
+        )
+        .unwrap();
+    }
+    out
+}
+
+/// The static library this test run built: the capi crate is a dependency of this test, and
+/// cargo builds every crate type of a dependency into `<target>/<profile>/deps/`, beside this
+/// test's executable.
+fn static_library() -> PathBuf {
+    let exe = std::env::current_exe().unwrap();
+    let lib = exe.parent().unwrap().join("libairlight_c.a");
+    assert!(lib.exists(), "{} missing: the capi crate's staticlib was not built", lib.display());
+    lib
+}
+
+/// The firmware build of the static library: `--no-default-features` (`#![no_std]`, its own
+/// panic handler), `-C panic=abort`, built here with the cargo that runs the tests, in a target
+/// directory of its own.
+fn no_std_static_library() -> PathBuf {
+    let target = repo_root().join("target/capi-no-std");
+    let out = Command::new(env!("CARGO"))
+        .args(["build", "--release", "-p", "airlight-capi", "--no-default-features", "--target-dir"])
+        .arg(&target)
+        .env("RUSTFLAGS", "-C panic=abort")
+        .output()
+        .expect("run cargo");
+    assert!(out.status.success(), "the no_std build failed:\n{}", String::from_utf8_lossy(&out.stderr));
+    target.join("release/libairlight_c.a")
+}
+
+/// Compiles `sources` with the system `cc` against the header and the static library `lib`.
+fn compile_c(sources: &[PathBuf], lib: &std::path::Path, exe: &std::path::Path) {
+    let cc = Command::new("cc")
+        .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic", "-I"])
+        .arg(repo_root().join("capi/include"))
+        .args(sources)
+        .arg(lib)
+        // as a firmware link does: unreferenced sections dropped (the no_std build's prebuilt
+        // `core` keeps unwind tables that name a personality routine nothing calls)
+        .arg("-Wl,--gc-sections")
+        // what a std staticlib needs from the system (`rustc --print native-static-libs`)
+        .args(["-lgcc_s", "-lutil", "-lrt", "-lpthread", "-lm", "-ldl", "-lc", "-o"])
+        .arg(exe)
+        .output()
+        .expect("the system C compiler `cc`");
+    assert!(cc.status.success(), "cc failed:\n{}", String::from_utf8_lossy(&cc.stderr));
+}
+
+fn scratch() -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("capi");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn reference_test(lib: &std::path::Path, name: &str) {
+    let dir = scratch();
+    let scenes = dir.join("scenes.txt");
+    std::fs::write(&scenes, scenes_as_text()).unwrap();
+    let exe = dir.join(name);
+    compile_c(&[repo_root().join("capi/c/reference_test.c")], lib, &exe);
+    let run = Command::new(&exe).arg(&scenes).output().unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    println!("{name}: {stdout}");
+    assert!(run.status.success(), "the C reference test ({name}) failed:\n{stdout}{}", String::from_utf8_lossy(&run.stderr));
+    assert!(stdout.contains("0 failures"), "{stdout}");
+}
+
+#[test]
+fn c_program_meets_the_targets_on_the_references() {
+    reference_test(&static_library(), "reference_test");
+}
+
+#[test]
+fn no_std_build_meets_the_targets_on_the_references() {
+    reference_test(&no_std_static_library(), "reference_test_no_std");
+}
+
+/// capi/README.md's C example compiles as shown and prints a positive value.
+#[test]
+fn readme_c_example_runs() {
+    let readme = std::fs::read_to_string(repo_root().join("capi/README.md")).unwrap();
+    let start = readme.find("```c\n").expect("a C block in capi/README.md") + "```c\n".len();
+    let source = &readme[start..start + readme[start..].find("```").unwrap()];
+    let dir = scratch();
+    let path = dir.join("readme_example.c");
+    std::fs::write(&path, source).unwrap();
+    let exe = dir.join("readme_example");
+    compile_c(&[path], &static_library(), &exe);
+    let run = Command::new(&exe).output().unwrap();
+    let printed = String::from_utf8_lossy(&run.stdout);
+    let value: f64 = printed.trim().parse().unwrap_or_else(|_| panic!("the example printed {printed:?}"));
+    assert!(run.status.success() && value > 0.0, "{printed}");
+}
