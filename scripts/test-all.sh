@@ -4,8 +4,11 @@
 #   2. the fuzz targets (kernel, f32_vs_f64, shader) for a bounded time each (FUZZ_SECONDS,
 #      default 60; needs the nightly toolchain and cargo-fuzz — .ci/run installs cargo-fuzz;
 #      SKIP_FUZZ=1 leaves them out on a developer machine, never under CI=true),
-#   3. `cargo test --workspace --release`: unit, reference, property, no_std, shader-validation
-#      and GPU-agreement tests.
+#   3. the kernel as a crates.io package: clippy's `incompatible_msrv` lint against its
+#      `rust-version` (functions and methods newer than it; language features and traits are
+#      not covered), and `cargo publish --dry-run` (packages and builds what crates.io would get),
+#   4. `cargo test --workspace --release`: unit, reference, property, C ABI (no_std included),
+#      shader-validation and GPU-agreement tests.
 # The last line totals every test harness's results ("N passed, N failed").
 # Tools the tests need (spirv-val, glslangValidator, the lavapipe Vulkan driver) are installed
 # by .ci/run; with CI=true a missing tool or adapter fails the run, never skips.
@@ -20,6 +23,14 @@ if [ "${SKIP_FUZZ:-0}" = "1" ] && [ "${CI:-}" != "true" ]; then
 else
   echo "== fuzz (${FUZZ_SECONDS:-60}s per target)"
   bash scripts/fuzz.sh "${FUZZ_SECONDS:-60}"
+fi
+
+echo "== kernel package"
+cargo clippy -q -p airlight -p airlight-capi --all-features --lib -- -A clippy::all -D clippy::incompatible_msrv
+if [ "${CI:-}" = "true" ]; then
+  cargo publish --dry-run -p airlight
+else
+  cargo publish --dry-run -p airlight --allow-dirty
 fi
 
 echo "== cargo test"

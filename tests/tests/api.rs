@@ -206,14 +206,17 @@ fn subnormal_geometry_is_finite() {
 #[test]
 fn readme_example_is_the_kernel_doctest() {
     let root = airlight_tests::repo_root();
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let start = readme.find("```rust\n").expect("a Rust block in the README") + "```rust\n".len();
-    let from_readme = &readme[start..start + readme[start..].find("```").unwrap()];
     let lib = std::fs::read_to_string(root.join("kernel/src/lib.rs")).unwrap();
     let docs: String = lib.lines().take_while(|l| l.starts_with("//!")).map(|l| format!("{}\n", l.trim_start_matches("//!").strip_prefix(' ').unwrap_or(""))).collect();
     let start = docs.find("```\n").expect("a doctest in the crate docs") + "```\n".len();
     let from_docs = &docs[start..start + docs[start..].find("```").unwrap()];
-    assert_eq!(from_readme, from_docs, "README.md's example and kernel/src/lib.rs's first doctest differ");
+    // the workspace's README and the crate's (its crates.io page)
+    for readme in ["README.md", "kernel/README.md"] {
+        let text = std::fs::read_to_string(root.join(readme)).unwrap();
+        let start = text.find("```rust\n").expect("a Rust block in the README") + "```rust\n".len();
+        let from_readme = &text[start..start + text[start..].find("```").unwrap()];
+        assert_eq!(from_readme, from_docs, "{readme}'s example and kernel/src/lib.rs's first doctest differ");
+    }
 }
 
 /// With the `mint` feature, an engine on another math crate (or another glam version) hands
