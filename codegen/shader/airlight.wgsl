@@ -461,6 +461,11 @@ struct AirlightHalf {
 /// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
 /// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
 fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
+    return airlight_integrand_over(s, g, sigma, y).x;
+}
+
+/// (F(y), 1/(1 + y²)) (combined.rs `with_over`).
+fn airlight_integrand_over(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> vec2<f32> {
     let y2 = y * y;
     let inv = 1.0 / (1.0 + y2);
     let om = 1.0 - y2;
@@ -474,8 +479,9 @@ fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32
         minus = far;
         plus = near;
     }
-    return airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c)
+    let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, c)
         * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu, minus, plus);
+    return vec2<f32>(f, inv);
 }
 
 // ---------------------------------------------------------------- the isotropic moment
@@ -710,9 +716,11 @@ fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     var g_avg = 0.0;
     for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
         let v = vc + r * airlight_node(rule, i);
-        let y = select(v, 1.0 / v, half.second);
-        let fy = airlight_integrand(s, g, sigma, y);
-        let over = 1.0 / (1.0 + v * v);
+        // v = y before the foot, 1/y after it: F(1/v) is the integrand with σ negated, at v
+        // (combined.rs `eval_over_reciprocal`)
+        let fo = airlight_integrand_over(s, g, select(sigma, -sigma, half.second), v);
+        let fy = fo.x;
+        let over = fo.y;
         samples[i] = fy * over;
         f_max = max(f_max, abs(fy));
         over_max = max(over_max, over);

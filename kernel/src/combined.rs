@@ -74,6 +74,12 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     fn eval_over(&self, y: T) -> (T, T) {
         self.with_over(y)
     }
+    /// With `y = 1/v`: `(1 − y²)/(1 + y²) = −(1 − v²)/(1 + v²)` and `2y/(1 + y²) = 2v/(1 + v²)`,
+    /// so `F(1/v)` is this integrand with `σ` negated, at `v`.
+    #[inline]
+    fn eval_over_reciprocal(&self, v: T) -> (T, T) {
+        HalfIntegrand { sigma: -self.sigma, ..*self }.with_over(v)
+    }
 }
 
 /// How `F` is integrated on each half.

@@ -260,10 +260,8 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let (mut f_max, mut over_max, mut g_avg) = (T::zero(), T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
         let v = vc + r * node::<T>(rule, i);
-        let y = if half.second { v.recip() } else { v };
-        // 1/(1 + v²) is 1/(1 + y²) before the foot, y²/(1 + y²) after it
-        let (fy, inv) = f.eval_over(y);
-        let over = if half.second { y * y * inv } else { inv };
+        // v = y before the foot, 1/y after it
+        let (fy, over) = if half.second { f.eval_over_reciprocal(v) } else { f.eval_over(v) };
         *gi = fy * over;
         f_max = f_max.max(fy.abs());
         over_max = over_max.max(over);
@@ -468,7 +466,6 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         return;
     }
     let two = T::lit(2.0);
-    let e2 = (-(lambda + lambda)).exp();
     // e^{−λ} i_0(λ)
     let i0 = -(-(lambda + lambda)).exp_m1() / (lambda + lambda);
     if lambda < T::epsilon() {
@@ -484,7 +481,9 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         // steps for ε, plus two.
         let k0 = n.max(lambda.ceil().to_usize().unwrap_or(n));
         let per_step = T::lit(-2.0) * (lambda / T::from(2 * k0).unwrap()).ln();
-        let steps = ((-T::epsilon().ln()) / per_step).ceil().to_usize().unwrap_or(28).min(28) + 2;
+        // ln(1/ε): 52 ln 2 or 23 ln 2
+        let ln_inv_eps = T::lit(if T::epsilon() < T::lit(1e-10) { 36.04365338911715 } else { 15.942385152878742 });
+        let steps = (ln_inv_eps / per_step).ceil().to_usize().unwrap_or(28).min(28) + 2;
         let top = k0 + steps;
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
         let mut odd = T::from(2 * top + 1).unwrap(); // 2k + 1
@@ -512,12 +511,14 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
             *o = *o * norm;
         }
     } else {
+        let e2 = (-(lambda + lambda)).exp();
+        let inv = lambda.recip();
         out[0] = i0;
         if n > 1 {
-            out[1] = ((T::one() + e2) * T::lit(0.5) - i0) / lambda;
+            out[1] = ((T::one() + e2) * T::lit(0.5) - i0) * inv;
         }
         for k in 1..n.saturating_sub(1) {
-            out[k + 1] = out[k - 1] - T::from(2 * k + 1).unwrap() / lambda * out[k];
+            out[k + 1] = out[k - 1] - T::from(2 * k + 1).unwrap() * inv * out[k];
         }
     }
     for (k, o) in out.iter_mut().enumerate().take(n) {

@@ -245,8 +245,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_15 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_15 * s_15);
+    float s_16 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_16 * s_16);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -266,7 +266,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_15) * _e35);
+    return ((2.0 * s_16) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -339,8 +339,8 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 
 bool airlight_in_series_region(vec2 z_5) {
     float x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    float y_2 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_11 * x_11) + (y_2 * y_2)) < 1.0);
+    float y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_11 * x_11) + (y_3 * y_3)) < 1.0);
 }
 
 uint airlight_cf_depth(float r) {
@@ -701,7 +701,7 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
     }
 }
 
-float airlight_integrand(AirlightScene s_1, AirlightCanonical g_2, float sigma, float y_1) {
+vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_2, float sigma, float y_1) {
     float minus = 0.0;
     float plus = 0.0;
     float y2_ = (y_1 * y_1);
@@ -721,7 +721,13 @@ float airlight_integrand(AirlightScene s_1, AirlightCanonical g_2, float sigma, 
     float _e40 = minus;
     float _e41 = plus;
     float _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
-    return (_e35 * _e42);
+    float f = (_e35 * _e42);
+    return vec2(f, inv_2);
+}
+
+float airlight_integrand(AirlightScene s_2, AirlightCanonical g_3, float sigma_1, float y_2) {
+    vec2 _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+    return _e4.x;
 }
 
 float airlight_moment_gauss(AirlightHalf half_) {
@@ -746,15 +752,15 @@ float airlight_moment_gauss(AirlightHalf half_) {
         {
             uint _e26 = j_1;
             float xi = nodes[_e26].x;
-            float y_3 = (yc + (hw * xi));
+            float y_4 = (yc + (hw * xi));
             dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi)) / (y_3 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_4 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j_1;
             float _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_3 * y_3))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_4 * y_4))));
         }
     }
     float _e61 = m;
@@ -912,7 +918,7 @@ float airlight_node(vec2 rule[2], uint i_4) {
     return (((i_4 % 2u) == 0u) ? -(x_14) : x_14);
 }
 
-float[4] airlight_legendre(float g_3[4]) {
+float[4] airlight_legendre(float g_4[4]) {
     float c_2[4] = float[4](0.0, 0.0, 0.0, 0.0);
     uint k_4 = 0u;
     float sum_3 = 0.0;
@@ -949,9 +955,9 @@ float[4] airlight_legendre(float g_3[4]) {
                 }
                 {
                     uint _e17 = j_2;
-                    float minus_1 = g_3[(2u * _e17)];
+                    float minus_1 = g_4[(2u * _e17)];
                     uint _e21 = j_2;
-                    float plus_1 = g_3[((2u * _e21) + 1u)];
+                    float plus_1 = g_4[((2u * _e21) + 1u)];
                     uint _e28 = k_4;
                     float pair = (((_e28 % 2u) == 0u) ? (plus_1 + minus_1) : (plus_1 - minus_1));
                     float _e34 = sum_3;
@@ -1229,7 +1235,7 @@ AirlightPanel airlight_panel_result(float value, float error, float noise, float
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float sigma_1, AirlightHalf half_4, float a_5, float b_4) {
+AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
     float r_1 = 0.0;
     float vc = 0.0;
     float samples[4] = float[4](0.0, 0.0, 0.0, 0.0);
@@ -1253,8 +1259,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
     bool loop_init_21 = true;
     while(true) {
         if (!loop_init_21) {
-            uint _e76 = i_8;
-            i_8 = (_e76 + 1u);
+            uint _e72 = i_8;
+            i_8 = (_e72 + 1u);
         }
         loop_init_21 = false;
         uint _e34 = i_8;
@@ -1268,62 +1274,62 @@ AirlightPanel airlight_v_panel(AirlightScene s_2, AirlightCanonical g_4, float s
             uint _e39 = i_8;
             float _e40 = airlight_node(_e6, _e39);
             float v_5 = (_e37 + (_e38 * _e40));
-            float y_4 = (half_4.second ? (1.0 / v_5) : v_5);
-            float _e47 = airlight_integrand(s_2, g_4, sigma_1, y_4);
-            float over = (1.0 / (1.0 + (v_5 * v_5)));
-            uint _e53 = i_8;
-            samples[_e53] = (_e47 * over);
-            float _e56 = f_max_1;
-            f_max_1 = max(_e56, abs(_e47));
-            float _e59 = over_max;
-            over_max = max(_e59, over);
-            float _e61 = g_avg;
-            uint _e62 = i_8;
-            uint _e69 = i_8;
-            float _e71 = samples[_e69];
-            g_avg = (_e61 + ((_e6[(_e62 / 2u)].y * 0.5) * abs(_e71)));
+            vec2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_5);
+            float fy = _e46.x;
+            float over = _e46.y;
+            uint _e49 = i_8;
+            samples[_e49] = (fy * over);
+            float _e52 = f_max_1;
+            f_max_1 = max(_e52, abs(fy));
+            float _e55 = over_max;
+            over_max = max(_e55, over);
+            float _e57 = g_avg;
+            uint _e58 = i_8;
+            uint _e65 = i_8;
+            float _e67 = samples[_e65];
+            g_avg = (_e57 + ((_e6[(_e58 / 2u)].y * 0.5) * abs(_e67)));
         }
     }
-    float _e78[4] = samples;
-    float _e79[4] = airlight_legendre(_e78);
-    float _e81 = r_1;
-    float _e83[4] = airlight_exp_legendre_moments((half_4.big_h * _e81));
+    float _e74[4] = samples;
+    float _e75[4] = airlight_legendre(_e74);
+    float _e77 = r_1;
+    float _e79[4] = airlight_exp_legendre_moments((half_4.big_h * _e77));
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e99 = k_7;
-            k_7 = (_e99 + 1u);
+            uint _e95 = k_7;
+            k_7 = (_e95 + 1u);
         }
         loop_init_22 = false;
-        uint _e88 = k_7;
-        if ((_e88 < AIRLIGHT_TERMS)) {
+        uint _e84 = k_7;
+        if ((_e84 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            float _e91 = sum_5;
-            uint _e92 = k_7;
-            uint _e94 = k_7;
-            sum_5 = (_e91 + (_e79[_e92] * _e83[_e94]));
+            float _e87 = sum_5;
+            uint _e88 = k_7;
+            uint _e90 = k_7;
+            sum_5 = (_e87 + (_e75[_e88] * _e79[_e90]));
         }
     }
-    float _e101 = airlight_factor(half_4, a_5, b_4);
-    float _e102 = r_1;
-    float w = (_e101 * _e102);
-    float mass_4 = (w * _e83[0]);
-    float _e106 = airlight_tail_estimate(_e79);
-    float _e108 = airlight_error_factor(_e79, _e83);
-    float error_1 = ((mass_4 * _e106) * _e108);
-    float _e110 = sum_5;
-    float _e112 = g_avg;
-    float _e113 = airlight_transform_noise(mass_4, _e112);
-    float _e114 = over_max;
-    float _e116 = f_max_1;
-    AirlightPanel _e117 = airlight_panel_result((w * _e110), error_1, _e113, (mass_4 * _e114), _e116);
-    return _e117;
+    float _e97 = airlight_factor(half_4, a_5, b_4);
+    float _e98 = r_1;
+    float w = (_e97 * _e98);
+    float mass_4 = (w * _e79[0]);
+    float _e102 = airlight_tail_estimate(_e75);
+    float _e104 = airlight_error_factor(_e75, _e79);
+    float error_1 = ((mass_4 * _e102) * _e104);
+    float _e106 = sum_5;
+    float _e108 = g_avg;
+    float _e109 = airlight_transform_noise(mass_4, _e108);
+    float _e110 = over_max;
+    float _e112 = f_max_1;
+    AirlightPanel _e113 = airlight_panel_result((w * _e106), error_1, _e109, (mass_4 * _e110), _e112);
+    return _e113;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, AirlightHalf half_5, float a_6, float b_5) {
+AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
     float samples_1[4] = float[4](0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1353,7 +1359,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_3, AirlightCanonical g_5, float s
             float _e27 = airlight_node(_e6, _e26);
             float y_5 = (yc_1 + (r_4 * _e27));
             float weight = exp(((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5)));
-            float _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
+            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_9;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1440,7 +1446,7 @@ float[4] airlight_legendre_to_monomial(float c_5[4]) {
     return _e33;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[4] = float[4](0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
@@ -1486,7 +1492,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
             uint _e22 = i_11;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = (yc_2 + (r_5 * _e23));
-            float _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
             uint _e27 = i_11;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
             float _e33 = f_max_3;
@@ -1670,7 +1676,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_4, AirlightCanonical g_6, floa
     return _e250;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_7, float a_8, float b_7) {
+AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
     bool local_12 = false;
     bool local_13 = false;
     if (half_7.second) {
@@ -1680,7 +1686,7 @@ AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sig
     }
     bool _e13 = local_12;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -1690,14 +1696,14 @@ AirlightPanel airlight_panel(AirlightScene s_5, AirlightCanonical g_7, float sig
     }
     bool _e26 = local_13;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float sigma_5, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint count_1 = 1u;
@@ -1715,7 +1721,7 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
     if (!((hi > lo))) {
         return 0.0;
     }
-    AirlightPanel _e38 = airlight_panel(s_6, g_8, sigma_5, half_8, lo, hi);
+    AirlightPanel _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
     float _e39 = f_max_4;
     f_max_4 = max(_e39, _e38.f_max);
     list[0] = vec4(lo, hi, _e38.value, _e38.error);
@@ -1818,8 +1824,8 @@ float airlight_integrate_piece(AirlightScene s_6, AirlightCanonical g_8, float s
                 list[_e158].w = 0.0;
             } else {
                 float mid = (a_17 + ((b_14 - a_17) * 0.5));
-                AirlightPanel _e166 = airlight_panel(s_6, g_8, sigma_5, half_8, a_17, mid);
-                AirlightPanel _e167 = airlight_panel(s_6, g_8, sigma_5, half_8, mid, b_14);
+                AirlightPanel _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
+                AirlightPanel _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
                 float _e168 = f_max_4;
                 f_max_4 = max(_e168, max(_e166.f_max, _e167.f_max));
                 uint _e173 = worst;
@@ -1871,14 +1877,14 @@ float airlight_bounded(float a_9) {
     return (1.0 / (a_9 + _e1));
 }
 
-vec2 airlight_crossings(float sigma_6, float d_el, float d_c, float k_11) {
+vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_11) {
     bool local_17 = false;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
-    float a0_ = (k_11 + (sigma_6 * d_el));
+    float a0_ = (k_11 + (sigma_7 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_11 - (sigma_6 * d_el));
+    float c0_ = (k_11 - (sigma_7 * d_el));
     float scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale > 0.0)))) {
         bool _e21 = airlight_is_finite(scale);
@@ -1913,7 +1919,7 @@ vec2 airlight_crossings(float sigma_6, float d_el, float d_c, float k_11) {
     return vec2(_e63, _e64);
 }
 
-float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float k_in = 0.0;
     float k_out = 0.0;
@@ -1928,13 +1934,13 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
     bool local_19 = false;
     bool local_20 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5)));
+        float _e11 = airlight_integrand(s_8, g_10, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
-    if ((s_7.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_7.light_param_a;
-        k_out = s_7.light_param_b;
+    if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_8.light_param_a;
+        k_out = s_8.light_param_b;
         float _e27 = k_in;
         float _e28 = k_out;
         float width_1 = (_e27 - _e28);
@@ -1945,9 +1951,9 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
             k_out = _e36;
         }
         float _e39 = k_in;
-        vec2 _e40 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e39);
+        vec2 _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
         float _e43 = k_out;
-        vec2 _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
+        vec2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
         cuts = float[4](_e40.x, _e40.y, _e44.x, _e44.y);
         bool loop_init_34 = true;
         while(true) {
@@ -2060,7 +2066,7 @@ float airlight_half(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, Air
                 float _e146 = total_1;
                 float _e147 = lo_1;
                 float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_7, g_9, sigma_7, half_9, _e147, _e148, f_max_5);
+                float _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_1 = (_e146 + _e149);
                 float _e151 = hi_1;
                 lo_1 = _e151;
@@ -2095,50 +2101,50 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, fl
     return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-float airlight_on_line(AirlightScene s_8, AirlightCanonical g_10) {
+float airlight_on_line(AirlightScene s_9, AirlightCanonical g_11) {
     bool local_21 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
-    if (!(g_10.t_hi_infinite)) {
-        local_21 = (g_10.x_h > g_10.t_hi);
+    if (!(g_11.t_hi_infinite)) {
+        local_21 = (g_11.x_h > g_11.t_hi);
     } else {
         local_21 = false;
     }
     bool _e10 = local_21;
     if (_e10) {
-        float _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
-        float _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1.0);
-        float f = (_e16 * _e22);
-        float r0_ = (g_10.x_h - g_10.t_lo);
-        float r1_1 = (g_10.x_h - g_10.t_hi);
-        float _e41 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, (s_8.sigma_t * r0_), (f * (((g_10.t_hi - g_10.t_lo) / r0_) / r1_1)));
+        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
+        float f_1 = (_e16 * _e22);
+        float r0_ = (g_11.x_h - g_11.t_lo);
+        float r1_1 = (g_11.x_h - g_11.t_hi);
+        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_1 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, g_10.d_el);
-    float _e52 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, -1.0);
-    float f_1 = (_e46 * _e52);
-    float s0_ = (g_10.t_lo - g_10.x_h);
-    float s1_ = (g_10.t_hi - g_10.x_h);
-    if ((s_8.sigma_t == 0.0)) {
+    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
+    float f_2 = (_e46 * _e52);
+    float s0_ = (g_11.t_lo - g_11.x_h);
+    float s1_ = (g_11.t_hi - g_11.x_h);
+    if ((s_9.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_10.t_hi_infinite)) {
+        if (!(g_11.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        float _e77 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, 0.0, (f_1 * _e75));
+        float _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, 0.0, (f_2 * _e75));
         return _e77;
     }
-    float two_st = (s_8.sigma_t + s_8.sigma_t);
+    float two_st = (s_9.sigma_t + s_9.sigma_t);
     float _e81[16] = airlight_zero_scratch();
     e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, e2_);
     float _e91 = e2_[1];
-    float _e94 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, (s_8.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if (!(g_10.t_hi_infinite)) {
+    float _e94 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * s0_), ((f_2 * _e91) / s0_));
+    if (!(g_11.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
         float _e111 = e2_[1];
-        float _e114 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2.0, ((s_8.sigma_t * (s1_ - s0_)) + (s_8.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        float _e114 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e111) / s1_));
         tail_1 = _e114;
     }
     bool _e115 = airlight_is_finite(_e94);
@@ -2159,19 +2165,19 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_9, AirlightCanonical g_11, float big_h_1) {
+float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
     bool local_22 = false;
     bool local_23 = false;
     float x_8 = 0.0;
-    float h_2 = g_11.h;
-    float a_s = ((g_11.x_h - g_11.t_lo) / h_2);
+    float h_2 = g_12.h;
+    float a_s = ((g_12.x_h - g_12.t_lo) / h_2);
     float _e8 = airlight_hypot_one(a_s);
     float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_11.t_hi - g_11.x_h) / h_2);
-    if (!(g_11.t_hi_infinite)) {
+    float u_e = ((g_12.t_hi - g_12.x_h) / h_2);
+    if (!(g_12.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
         local_22 = _e24;
     } else {
@@ -2181,7 +2187,7 @@ float airlight_whole_line(AirlightScene s_9, AirlightCanonical g_11, float big_h
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_11.t_hi - g_11.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
@@ -2204,23 +2210,23 @@ float airlight_whole_line(AirlightScene s_9, AirlightCanonical g_11, float big_h
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_9, g_11, -1.0, _e9);
+    float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_10);
     float j_8 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
-        if ((s_9.sigma_t > 0.0)) {
-            x_8 = (s_9.sigma_t * abs((g_11.x_h - g_11.t_lo)));
+        if ((s_10.sigma_t > 0.0)) {
+            x_8 = (s_10.sigma_t * abs((g_12.x_h - g_12.t_lo)));
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, _e72, j_8);
+    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_8);
     return _e73;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonical g_12) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_13) {
     bool local_24 = false;
     bool local_25 = false;
     bool local_26 = false;
@@ -2247,16 +2253,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     bool infinite_2 = true;
     bool local_40 = false;
     bool local_41 = false;
-    float t0_ = g_12.t_lo;
-    float t1_ = g_12.t_hi;
-    if (!(g_12.t_hi_infinite)) {
+    float t0_ = g_13.t_lo;
+    float t1_ = g_13.t_hi;
+    if (!(g_13.t_hi_infinite)) {
         local_24 = (t1_ > t0_);
     } else {
         local_24 = true;
     }
     bool _e10 = local_24;
     if (!(!(_e10))) {
-        local_25 = ((s_10.sigma_s * s_10.intensity) == 0.0);
+        local_25 = ((s_11.sigma_s * s_11.intensity) == 0.0);
     } else {
         local_25 = true;
     }
@@ -2264,10 +2270,10 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
-    float h_3 = g_12.h;
-    float x_h = g_12.x_h;
+    float h_3 = g_13.h;
+    float x_h = g_13.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_12.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             local_27 = (x_h <= t1_);
         } else {
             local_27 = true;
@@ -2293,16 +2299,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     }
     bool _e55 = local_28;
     if (_e55) {
-        float _e56 = airlight_on_line(s_10, g_12);
+        float _e56 = airlight_on_line(s_11, g_13);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_4 = (s_10.sigma_t * h_3);
-    if (!((s_10.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_30 = (s_10.light_param_a == 0.0);
+    float big_h_4 = (s_11.sigma_t * h_3);
+    if (!((s_11.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_30 = (s_11.light_param_a == 0.0);
         } else {
             local_30 = false;
         }
@@ -2313,15 +2319,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     }
     bool _e85 = local_29;
     if (_e85) {
-        if (!((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_33 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_33 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_33 = true;
             }
             bool _e104 = local_33;
             if (_e104) {
-                local_34 = (s_10.phase_param_a == 0.0);
+                local_34 = (s_11.phase_param_a == 0.0);
             } else {
                 local_34 = false;
             }
@@ -2343,7 +2349,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     }
     bool _e120 = local_35;
     if (_e120) {
-        if (!(g_12.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             local_37 = (x_h < t1_);
         } else {
             local_37 = true;
@@ -2355,13 +2361,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
     }
     bool _e131 = local_36;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_10, g_12, big_h_4);
+        float _e132 = airlight_whole_line(s_11, g_13, big_h_4);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((t0_ < x_h)) {
         float a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if (!(g_12.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             local_38 = (t1_ < x_h);
         } else {
             local_38 = false;
@@ -2380,12 +2386,12 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
         float dy_1 = (((((_e159 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
         float _e172 = airlight_optical(big_h_4, dy_1, false);
         AirlightHalf half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        float _e176 = airlight_half(s_10, g_12, -1.0, half_11, isotropic_1, f_max_6);
+        float _e176 = airlight_half(s_11, g_13, -1.0, half_11, isotropic_1, f_max_6);
         float _e177 = total_2;
-        float _e181 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (big_h_4 * _e155), _e176);
+        float _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
         total_2 = (_e177 + _e181);
     }
-    if (!(g_12.t_hi_infinite)) {
+    if (!(g_13.t_hi_infinite)) {
         local_39 = (t1_ > x_h);
     } else {
         local_39 = true;
@@ -2398,7 +2404,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
         float _e194 = airlight_bounded(a_s_2);
         dy = _e194;
         float a_e_1 = ((t1_ - x_h) / h_3);
-        if (!(g_12.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             bool _e208 = airlight_is_finite(a_e_1);
             local_40 = _e208;
         } else {
@@ -2433,9 +2439,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_10, AirlightCanonic
         float _e239 = dv_3;
         bool _e240 = infinite_2;
         AirlightHalf half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        float _e243 = airlight_half(s_10, g_12, 1.0, half_12, isotropic_1, f_max_6);
+        float _e243 = airlight_half(s_11, g_13, 1.0, half_12, isotropic_1, f_max_6);
         float _e244 = total_2;
-        float _e252 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, ((s_10.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
+        float _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
         total_2 = (_e244 + _e252);
     }
     float _e254 = total_2;
@@ -2490,7 +2496,7 @@ vec3 airlight_normalize(vec3 v_3) {
     return (u_1 / vec3(length(u_1)));
 }
 
-bool airlight_valid(AirlightScene s_11) {
+bool airlight_valid(AirlightScene s_12) {
     bool local_45 = false;
     bool local_46 = false;
     bool local_47 = false;
@@ -2519,171 +2525,171 @@ bool airlight_valid(AirlightScene s_11) {
     bool local_69 = false;
     bool local_70 = false;
     bool local_71 = false;
-    bool _e2 = airlight_vec_finite(s_11.origin);
+    bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_11.dir);
+        bool _e6 = airlight_vec_finite(s_12.dir);
         local_45 = _e6;
     } else {
         local_45 = false;
     }
     bool _e8 = local_45;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_11.dir);
+        bool _e12 = airlight_normalisable(s_12.dir);
         local_46 = _e12;
     } else {
         local_46 = false;
     }
     bool _e14 = local_46;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_11.t_min);
+        bool _e18 = airlight_is_finite(s_12.t_min);
         local_47 = _e18;
     } else {
         local_47 = false;
     }
     bool _e20 = local_47;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_11.light_position);
+        bool _e24 = airlight_vec_finite(s_12.light_position);
         local_48 = _e24;
     } else {
         local_48 = false;
     }
     bool _e26 = local_48;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_11.intensity);
+        bool _e30 = airlight_is_finite(s_12.intensity);
         local_49 = _e30;
     } else {
         local_49 = false;
     }
     bool _e32 = local_49;
     if (_e32) {
-        local_50 = (s_11.intensity >= 0.0);
+        local_50 = (s_12.intensity >= 0.0);
     } else {
         local_50 = false;
     }
     bool _e39 = local_50;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_11.sigma_s);
+        bool _e43 = airlight_is_finite(s_12.sigma_s);
         local_51 = _e43;
     } else {
         local_51 = false;
     }
     bool _e45 = local_51;
     if (_e45) {
-        local_52 = (s_11.sigma_s >= 0.0);
+        local_52 = (s_12.sigma_s >= 0.0);
     } else {
         local_52 = false;
     }
     bool _e52 = local_52;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_11.sigma_t);
+        bool _e56 = airlight_is_finite(s_12.sigma_t);
         local_53 = _e56;
     } else {
         local_53 = false;
     }
     bool _e58 = local_53;
     if (_e58) {
-        local_54 = (s_11.sigma_t >= 0.0);
+        local_54 = (s_12.sigma_t >= 0.0);
     } else {
         local_54 = false;
     }
     bool _e65 = local_54;
     ok = _e65;
-    if (((s_11.flags & 1u) == 0u)) {
+    if (((s_12.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_11.t_max);
+            bool _e76 = airlight_is_finite(s_12.t_max);
             local_55 = _e76;
         } else {
             local_55 = false;
         }
         bool _e78 = local_55;
         if (_e78) {
-            local_56 = (s_11.t_min <= s_11.t_max);
+            local_56 = (s_12.t_min <= s_12.t_max);
         } else {
             local_56 = false;
         }
         bool _e85 = local_56;
         ok = _e85;
     }
-    if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_11.light_axis);
+            bool _e93 = airlight_vec_finite(s_12.light_axis);
             local_57 = _e93;
         } else {
             local_57 = false;
         }
         bool _e95 = local_57;
         if (_e95) {
-            bool _e99 = airlight_normalisable(s_11.light_axis);
+            bool _e99 = airlight_normalisable(s_12.light_axis);
             local_58 = _e99;
         } else {
             local_58 = false;
         }
         bool _e101 = local_58;
         if (_e101) {
-            local_59 = (s_11.light_param_a >= 0.0);
+            local_59 = (s_12.light_param_a >= 0.0);
         } else {
             local_59 = false;
         }
         bool _e108 = local_59;
         if (_e108) {
-            local_60 = (s_11.light_param_a <= 1024.0);
+            local_60 = (s_12.light_param_a <= 1024.0);
         } else {
             local_60 = false;
         }
         bool _e115 = local_60;
         if (_e115) {
-            local_61 = (fract((s_11.light_param_a * 0.5)) == 0.0);
+            local_61 = (fract((s_12.light_param_a * 0.5)) == 0.0);
         } else {
             local_61 = false;
         }
         bool _e125 = local_61;
         ok = _e125;
     } else {
-        if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e129 = ok;
             if (_e129) {
-                bool _e133 = airlight_vec_finite(s_11.light_axis);
+                bool _e133 = airlight_vec_finite(s_12.light_axis);
                 local_62 = _e133;
             } else {
                 local_62 = false;
             }
             bool _e135 = local_62;
             if (_e135) {
-                bool _e139 = airlight_normalisable(s_11.light_axis);
+                bool _e139 = airlight_normalisable(s_12.light_axis);
                 local_63 = _e139;
             } else {
                 local_63 = false;
             }
             bool _e141 = local_63;
             if (_e141) {
-                local_64 = (s_11.light_param_b < s_11.light_param_a);
+                local_64 = (s_12.light_param_b < s_12.light_param_a);
             } else {
                 local_64 = false;
             }
             bool _e148 = local_64;
             if (_e148) {
-                local_65 = (s_11.light_param_b >= -1.0);
+                local_65 = (s_12.light_param_b >= -1.0);
             } else {
                 local_65 = false;
             }
             bool _e155 = local_65;
             if (_e155) {
-                local_66 = (s_11.light_param_a <= 1.0);
+                local_66 = (s_12.light_param_a <= 1.0);
             } else {
                 local_66 = false;
             }
             bool _e162 = local_66;
             ok = _e162;
         } else {
-            if ((s_11.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_11.phase_param_a) < 1.0);
-    switch(s_11.phase_kind) {
+    bool g_ok = (abs(s_12.phase_param_a) < 1.0);
+    switch(s_12.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -2710,19 +2716,19 @@ bool airlight_valid(AirlightScene s_11) {
             }
             bool _e181 = local_68;
             if (_e181) {
-                local_69 = (abs(s_11.phase_param_b) < 1.0);
+                local_69 = (abs(s_12.phase_param_b) < 1.0);
             } else {
                 local_69 = false;
             }
             bool _e189 = local_69;
             if (_e189) {
-                local_70 = (s_11.phase_param_c >= 0.0);
+                local_70 = (s_12.phase_param_c >= 0.0);
             } else {
                 local_70 = false;
             }
             bool _e196 = local_70;
             if (_e196) {
-                local_71 = (s_11.phase_param_c <= 1.0);
+                local_71 = (s_12.phase_param_c <= 1.0);
             } else {
                 local_71 = false;
             }
@@ -2739,15 +2745,15 @@ bool airlight_valid(AirlightScene s_11) {
     return _e205;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_12) {
+AirlightCanonical airlight_canonical(AirlightScene s_13) {
     vec3 a_10 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_12.dir);
-    if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_12.light_axis);
+    vec3 _e2 = airlight_normalize(s_13.dir);
+    if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_13.light_axis);
         a_10 = _e12;
     }
-    vec3 to_light = (s_12.light_position - s_12.origin);
+    vec3 to_light = (s_13.light_position - s_13.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
@@ -2755,10 +2761,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_12) {
         vec3 _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_12.flags & 1u) != 0u);
+    bool infinite_3 = ((s_13.flags & 1u) != 0u);
     vec3 _e32 = a_10;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_12.t_min, (infinite_3 ? 0.0 : s_12.t_max), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, (infinite_3 ? 0.0 : s_13.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_9, uint key) {
@@ -2816,18 +2822,18 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_13, AirlightCanonical plain) {
+AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) {
     bool local_74 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_75 = false;
     vec3 a_14 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_13.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_13.light_position.x, -(s_13.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_13.light_position.y, -(s_13.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_13.light_position.z, -(s_13.origin.z), key_4);
+    uint key_4 = uint((s_14.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
     vec3 hi_2 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_2 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir = s_13.dir;
+    vec3 dir = s_14.dir;
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
@@ -2867,8 +2873,8 @@ AirlightCanonical airlight_refined(AirlightScene s_13, AirlightCanonical plain) 
     if (!(_e101)) {
         return plain;
     }
-    if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_13.light_axis);
+    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_14.light_axis);
         a_14 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir);
@@ -2881,14 +2887,14 @@ AirlightCanonical airlight_refined(AirlightScene s_13, AirlightCanonical plain) 
     return _e121;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_14) {
-    bool _e1 = airlight_valid(s_14);
+AirlightResult airlight_in_scatter(AirlightScene s_15) {
+    bool _e1 = airlight_valid(s_15);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e6 = airlight_canonical(s_14);
-    AirlightCanonical _e7 = airlight_refined(s_14, _e6);
-    AirlightResult _e8 = airlight_in_scatter_canonical(s_14, _e7);
+    AirlightCanonical _e6 = airlight_canonical(s_15);
+    AirlightCanonical _e7 = airlight_refined(s_15, _e6);
+    AirlightResult _e8 = airlight_in_scatter_canonical(s_15, _e7);
     bool _e10 = airlight_is_finite(_e8.in_scatter);
     if (!(_e10)) {
         return AirlightResult(3.4028235e38, 2u);

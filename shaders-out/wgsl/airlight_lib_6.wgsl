@@ -248,8 +248,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_15 = (x_2 / (2f + x_2));
-    let s2_ = (s_15 * s_15);
+    let s_16 = (x_2 / (2f + x_2));
+    let s2_ = (s_16 * s_16);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -267,7 +267,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_15) * _e35);
+    return ((2f * s_16) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -338,8 +338,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
     let x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_2 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_11 * x_11) + (y_2 * y_2)) < 1f);
+    let y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_11 * x_11) + (y_3 * y_3)) < 1f);
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
@@ -693,7 +693,7 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
     }
 }
 
-fn airlight_integrand(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> f32 {
+fn airlight_integrand_over(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
@@ -714,7 +714,13 @@ fn airlight_integrand(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_
     let _e40 = minus;
     let _e41 = plus;
     let _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
-    return (_e35 * _e42);
+    let f = (_e35 * _e42);
+    return vec2<f32>(f, inv_2);
+}
+
+fn airlight_integrand(s_2: AirlightScene, g_3: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+    return _e4.x;
 }
 
 fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
@@ -734,15 +740,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j_1;
             let xi = nodes[_e26].x;
-            let y_3 = (yc + (hw * xi));
+            let y_4 = (yc + (hw * xi));
             dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi)) / (y_3 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_4 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j_1;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_3 * y_3))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_4 * y_4))));
         }
         continuing {
             let _e59 = j_1;
@@ -906,7 +912,7 @@ fn airlight_node(rule: array<vec2<f32>, 3>, i_4: u32) -> f32 {
     return select(x_14, -(x_14), ((i_4 % 2u) == 0u));
 }
 
-fn airlight_legendre(g_3: array<f32, 6>) -> array<f32, 6> {
+fn airlight_legendre(g_4: array<f32, 6>) -> array<f32, 6> {
     var c_2: array<f32, 6>;
     var k_4: u32 = 0u;
     var sum_3: f32;
@@ -932,9 +938,9 @@ fn airlight_legendre(g_3: array<f32, 6>) -> array<f32, 6> {
                 }
                 {
                     let _e17 = j_2;
-                    let minus_1 = g_3[(2u * _e17)];
+                    let minus_1 = g_4[(2u * _e17)];
                     let _e21 = j_2;
-                    let plus_1 = g_3[((2u * _e21) + 1u)];
+                    let plus_1 = g_4[((2u * _e21) + 1u)];
                     let _e28 = k_4;
                     let pair = select((plus_1 - minus_1), (plus_1 + minus_1), ((_e28 % 2u) == 0u));
                     let _e34 = sum_3;
@@ -1210,7 +1216,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
     var r_1: f32;
     var vc: f32;
     var samples: array<f32, 6>;
@@ -1244,64 +1250,64 @@ fn airlight_v_panel(s_2: AirlightScene, g_4: AirlightCanonical, sigma_1: f32, ha
             let _e39 = i_8;
             let _e40 = airlight_node(_e6, _e39);
             let v_5 = (_e37 + (_e38 * _e40));
-            let y_4 = select(v_5, (1f / v_5), half_4.second);
-            let _e47 = airlight_integrand(s_2, g_4, sigma_1, y_4);
-            let over = (1f / (1f + (v_5 * v_5)));
-            let _e53 = i_8;
-            samples[_e53] = (_e47 * over);
-            let _e56 = f_max_1;
-            f_max_1 = max(_e56, abs(_e47));
-            let _e59 = over_max;
-            over_max = max(_e59, over);
-            let _e61 = g_avg;
-            let _e62 = i_8;
-            let _e69 = i_8;
-            let _e71 = samples[_e69];
-            g_avg = (_e61 + ((_e6[(_e62 / 2u)].y * 0.5f) * abs(_e71)));
+            let _e46 = airlight_integrand_over(s_3, g_5, select(sigma_2, -(sigma_2), half_4.second), v_5);
+            let fy = _e46.x;
+            let over = _e46.y;
+            let _e49 = i_8;
+            samples[_e49] = (fy * over);
+            let _e52 = f_max_1;
+            f_max_1 = max(_e52, abs(fy));
+            let _e55 = over_max;
+            over_max = max(_e55, over);
+            let _e57 = g_avg;
+            let _e58 = i_8;
+            let _e65 = i_8;
+            let _e67 = samples[_e65];
+            g_avg = (_e57 + ((_e6[(_e58 / 2u)].y * 0.5f) * abs(_e67)));
         }
         continuing {
-            let _e76 = i_8;
-            i_8 = (_e76 + 1u);
+            let _e72 = i_8;
+            i_8 = (_e72 + 1u);
         }
     }
-    let _e78 = samples;
-    let _e79 = airlight_legendre(_e78);
-    let _e81 = r_1;
-    let _e83 = airlight_exp_legendre_moments((half_4.big_h * _e81));
+    let _e74 = samples;
+    let _e75 = airlight_legendre(_e74);
+    let _e77 = r_1;
+    let _e79 = airlight_exp_legendre_moments((half_4.big_h * _e77));
     loop {
-        let _e88 = k_7;
-        if (_e88 < AIRLIGHT_TERMS) {
+        let _e84 = k_7;
+        if (_e84 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e91 = sum_5;
-            let _e92 = k_7;
-            let _e94 = k_7;
-            sum_5 = (_e91 + (_e79[_e92] * _e83[_e94]));
+            let _e87 = sum_5;
+            let _e88 = k_7;
+            let _e90 = k_7;
+            sum_5 = (_e87 + (_e75[_e88] * _e79[_e90]));
         }
         continuing {
-            let _e99 = k_7;
-            k_7 = (_e99 + 1u);
+            let _e95 = k_7;
+            k_7 = (_e95 + 1u);
         }
     }
-    let _e101 = airlight_factor(half_4, a_5, b_4);
-    let _e102 = r_1;
-    let w = (_e101 * _e102);
-    let mass_4 = (w * _e83[0]);
-    let _e106 = airlight_tail_estimate(_e79);
-    let _e108 = airlight_error_factor(_e79, _e83);
-    let error_1 = ((mass_4 * _e106) * _e108);
-    let _e110 = sum_5;
-    let _e112 = g_avg;
-    let _e113 = airlight_transform_noise(mass_4, _e112);
-    let _e114 = over_max;
-    let _e116 = f_max_1;
-    let _e117 = airlight_panel_result((w * _e110), error_1, _e113, (mass_4 * _e114), _e116);
-    return _e117;
+    let _e97 = airlight_factor(half_4, a_5, b_4);
+    let _e98 = r_1;
+    let w = (_e97 * _e98);
+    let mass_4 = (w * _e79[0]);
+    let _e102 = airlight_tail_estimate(_e75);
+    let _e104 = airlight_error_factor(_e75, _e79);
+    let error_1 = ((mass_4 * _e102) * _e104);
+    let _e106 = sum_5;
+    let _e108 = g_avg;
+    let _e109 = airlight_transform_noise(mass_4, _e108);
+    let _e110 = over_max;
+    let _e112 = f_max_1;
+    let _e113 = airlight_panel_result((w * _e106), error_1, _e109, (mass_4 * _e110), _e112);
+    return _e113;
 }
 
-fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
     var samples_1: array<f32, 6>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1326,7 +1332,7 @@ fn airlight_y_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
             let _e27 = airlight_node(_e6, _e26);
             let y_5 = (yc_1 + (r_4 * _e27));
             let weight = exp(((-(half_5.big_h) * (r_4 * (1f - _e27))) / (y_5 * b_5)));
-            let _e39 = airlight_integrand(s_3, g_5, sigma_2, y_5);
+            let _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
             let over_1 = (1f / (1f + (y_5 * y_5)));
             let _e45 = i_9;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1414,7 +1420,7 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
     return _e33;
 }
 
-fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 6>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -1455,7 +1461,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
             let _e22 = i_11;
             let _e23 = airlight_node(_e6, _e22);
             let y_6 = (yc_2 + (r_5 * _e23));
-            let _e26 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            let _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
             let _e27 = i_11;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
             let _e33 = f_max_3;
@@ -1635,7 +1641,7 @@ fn airlight_tail_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32,
     return _e250;
 }
 
-fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
     var local_12: bool;
     var local_13: bool;
 
@@ -1646,7 +1652,7 @@ fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half
     }
     let _e13 = local_12;
     if _e13 {
-        let _e14 = airlight_tail_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        let _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
@@ -1656,14 +1662,14 @@ fn airlight_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half
     }
     let _e26 = local_13;
     if _e26 {
-        let _e27 = airlight_y_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+        let _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    let _e28 = airlight_v_panel(s_5, g_7, sigma_4, half_7, a_8, b_7);
+    let _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var count_1: u32 = 1u;
@@ -1682,7 +1688,7 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
     if !((hi > lo)) {
         return 0f;
     }
-    let _e38 = airlight_panel(s_6, g_8, sigma_5, half_8, lo, hi);
+    let _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
     let _e39 = (*f_max_4);
     (*f_max_4) = max(_e39, _e38.f_max);
     list[0] = vec4<f32>(lo, hi, _e38.value, _e38.error);
@@ -1777,8 +1783,8 @@ fn airlight_integrate_piece(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5:
                 list[_e158].w = 0f;
             } else {
                 let mid = (a_17 + ((b_14 - a_17) * 0.5f));
-                let _e166 = airlight_panel(s_6, g_8, sigma_5, half_8, a_17, mid);
-                let _e167 = airlight_panel(s_6, g_8, sigma_5, half_8, mid, b_14);
+                let _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
+                let _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
                 let _e168 = (*f_max_4);
                 (*f_max_4) = max(_e168, max(_e166.f_max, _e167.f_max));
                 let _e173 = worst;
@@ -1832,15 +1838,15 @@ fn airlight_bounded(a_9: f32) -> f32 {
     return (1f / (a_9 + _e1));
 }
 
-fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
+fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
     var local_17: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_11 + (sigma_6 * d_el));
+    let a0_ = (k_11 + (sigma_7 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_11 - (sigma_6 * d_el));
+    let c0_ = (k_11 - (sigma_7 * d_el));
     let scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale > 0f))) {
         let _e21 = airlight_is_finite(scale);
@@ -1875,7 +1881,7 @@ fn airlight_crossings(sigma_6: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32>
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
@@ -1891,13 +1897,13 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
     var local_20: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_7, g_9, sigma_7, (half_9.y_lo + (half_9.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_8, g_10, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
-    if (s_7.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_7.light_param_a;
-        k_out = s_7.light_param_b;
+    if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_8.light_param_a;
+        k_out = s_8.light_param_b;
         let _e27 = k_in;
         let _e28 = k_out;
         let width_1 = (_e27 - _e28);
@@ -1908,9 +1914,9 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
             k_out = _e36;
         }
         let _e39 = k_in;
-        let _e40 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e39);
+        let _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
         let _e43 = k_out;
-        let _e44 = airlight_crossings(sigma_7, g_9.d_el, g_9.d_c, _e43);
+        let _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
         cuts = array<f32, 4>(_e40.x, _e40.y, _e44.x, _e44.y);
         loop {
             let _e52 = i_15;
@@ -2011,7 +2017,7 @@ fn airlight_half(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_
                 let _e146 = total_1;
                 let _e147 = lo_1;
                 let _e148 = hi_1;
-                let _e149 = airlight_integrate_piece(s_7, g_9, sigma_7, half_9, _e147, _e148, f_max_5);
+                let _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_1 = (_e146 + _e149);
                 let _e151 = hi_1;
                 lo_1 = _e151;
@@ -2050,51 +2056,51 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32)
     return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-fn airlight_on_line(s_8: AirlightScene, g_10: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_9: AirlightScene, g_11: AirlightCanonical) -> f32 {
     var local_21: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    if !(g_10.t_hi_infinite) {
-        local_21 = (g_10.x_h > g_10.t_hi);
+    if !(g_11.t_hi_infinite) {
+        local_21 = (g_11.x_h > g_11.t_hi);
     } else {
         local_21 = false;
     }
     let _e10 = local_21;
     if _e10 {
-        let _e16 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, -(g_10.d_el));
-        let _e22 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, 1f);
-        let f = (_e16 * _e22);
-        let r0_ = (g_10.x_h - g_10.t_lo);
-        let r1_1 = (g_10.x_h - g_10.t_hi);
-        let _e41 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, (s_8.sigma_t * r0_), (f * (((g_10.t_hi - g_10.t_lo) / r0_) / r1_1)));
+        let _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        let _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1f);
+        let f_1 = (_e16 * _e22);
+        let r0_ = (g_11.x_h - g_11.t_lo);
+        let r1_1 = (g_11.x_h - g_11.t_hi);
+        let _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * r0_), (f_1 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_8.light_kind, s_8.light_param_a, s_8.light_param_b, g_10.d_el);
-    let _e52 = airlight_phase_mu(s_8.phase_kind, s_8.phase_param_a, s_8.phase_param_b, s_8.phase_param_c, -1f);
-    let f_1 = (_e46 * _e52);
-    let s0_ = (g_10.t_lo - g_10.x_h);
-    let s1_ = (g_10.t_hi - g_10.x_h);
-    if (s_8.sigma_t == 0f) {
+    let _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    let _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1f);
+    let f_2 = (_e46 * _e52);
+    let s0_ = (g_11.t_lo - g_11.x_h);
+    let s1_ = (g_11.t_hi - g_11.x_h);
+    if (s_9.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_10.t_hi_infinite) {
+        if !(g_11.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, 0f, (f_1 * _e75));
+        let _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, 0f, (f_2 * _e75));
         return _e77;
     }
-    let two_st = (s_8.sigma_t + s_8.sigma_t);
+    let two_st = (s_9.sigma_t + s_9.sigma_t);
     let _e81 = airlight_zero_scratch();
     e2_ = _e81;
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
     let _e91 = e2_[1];
-    let _e94 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, (s_8.sigma_t * s0_), ((f_1 * _e91) / s0_));
-    if !(g_10.t_hi_infinite) {
+    let _e94 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * s0_), ((f_2 * _e91) / s0_));
+    if !(g_11.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
         let _e111 = e2_[1];
-        let _e114 = airlight_weighted(s_8.sigma_s, s_8.intensity, 2f, ((s_8.sigma_t * (s1_ - s0_)) + (s_8.sigma_t * s1_)), ((f_1 * _e111) / s1_));
+        let _e114 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e111) / s1_));
         tail_1 = _e114;
     }
     let _e115 = airlight_is_finite(_e94);
@@ -2116,7 +2122,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -2124,12 +2130,12 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     var local_23: bool;
     var x_8: f32 = 0f;
 
-    let h_2 = g_11.h;
-    let a_s = ((g_11.x_h - g_11.t_lo) / h_2);
+    let h_2 = g_12.h;
+    let a_s = ((g_12.x_h - g_12.t_lo) / h_2);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_11.t_hi - g_11.x_h) / h_2);
-    if !(g_11.t_hi_infinite) {
+    let u_e = ((g_12.t_hi - g_12.x_h) / h_2);
+    if !(g_12.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
         local_22 = _e24;
     } else {
@@ -2139,7 +2145,7 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_11.t_hi - g_11.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
@@ -2162,23 +2168,23 @@ fn airlight_whole_line(s_9: AirlightScene, g_11: AirlightCanonical, big_h_1: f32
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_9, g_11, -1f, _e9);
+    let _e54 = airlight_integrand(s_10, g_12, -1f, _e9);
     let _e55 = airlight_moment_zero(half_10);
     let j_8 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_9.sigma_t > 0f) {
-            x_8 = (s_9.sigma_t * abs((g_11.x_h - g_11.t_lo)));
+        if (s_10.sigma_t > 0f) {
+            x_8 = (s_10.sigma_t * abs((g_12.x_h - g_12.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_2, _e72, j_8);
+    let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_8);
     return _e73;
 }
 
-fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -> AirlightResult {
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
@@ -2206,16 +2212,16 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     var local_40: bool;
     var local_41: bool;
 
-    let t0_ = g_12.t_lo;
-    let t1_ = g_12.t_hi;
-    if !(g_12.t_hi_infinite) {
+    let t0_ = g_13.t_lo;
+    let t1_ = g_13.t_hi;
+    if !(g_13.t_hi_infinite) {
         local_24 = (t1_ > t0_);
     } else {
         local_24 = true;
     }
     let _e10 = local_24;
     if !(!(_e10)) {
-        local_25 = ((s_10.sigma_s * s_10.intensity) == 0f);
+        local_25 = ((s_11.sigma_s * s_11.intensity) == 0f);
     } else {
         local_25 = true;
     }
@@ -2223,10 +2229,10 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_3 = g_12.h;
-    let x_h = g_12.x_h;
+    let h_3 = g_13.h;
+    let x_h = g_13.x_h;
     if (t0_ <= x_h) {
-        if !(g_12.t_hi_infinite) {
+        if !(g_13.t_hi_infinite) {
             local_27 = (x_h <= t1_);
         } else {
             local_27 = true;
@@ -2252,16 +2258,16 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     }
     let _e55 = local_28;
     if _e55 {
-        let _e56 = airlight_on_line(s_10, g_12);
+        let _e56 = airlight_on_line(s_11, g_13);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_4 = (s_10.sigma_t * h_3);
-    if !((s_10.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_30 = (s_10.light_param_a == 0f);
+    let big_h_4 = (s_11.sigma_t * h_3);
+    if !((s_11.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_30 = (s_11.light_param_a == 0f);
         } else {
             local_30 = false;
         }
@@ -2272,15 +2278,15 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     }
     let _e85 = local_29;
     if _e85 {
-        if !((s_10.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_10.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_33 = (s_10.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_33 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_33 = true;
             }
             let _e104 = local_33;
             if _e104 {
-                local_34 = (s_10.phase_param_a == 0f);
+                local_34 = (s_11.phase_param_a == 0f);
             } else {
                 local_34 = false;
             }
@@ -2302,7 +2308,7 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     }
     let _e120 = local_35;
     if _e120 {
-        if !(g_12.t_hi_infinite) {
+        if !(g_13.t_hi_infinite) {
             local_37 = (x_h < t1_);
         } else {
             local_37 = true;
@@ -2314,13 +2320,13 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
     }
     let _e131 = local_36;
     if _e131 {
-        let _e132 = airlight_whole_line(s_10, g_12, big_h_4);
+        let _e132 = airlight_whole_line(s_11, g_13, big_h_4);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     if (t0_ < x_h) {
         let a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if !(g_12.t_hi_infinite) {
+        if !(g_13.t_hi_infinite) {
             local_38 = (t1_ < x_h);
         } else {
             local_38 = false;
@@ -2339,12 +2345,12 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         let dy_1 = (((((_e159 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
         let _e172 = airlight_optical(big_h_4, dy_1, false);
         let half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        let _e176 = airlight_half(s_10, g_12, -1f, half_11, isotropic_1, (&f_max_6));
+        let _e176 = airlight_half(s_11, g_13, -1f, half_11, isotropic_1, (&f_max_6));
         let _e177 = total_2;
-        let _e181 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (big_h_4 * _e155), _e176);
+        let _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
         total_2 = (_e177 + _e181);
     }
-    if !(g_12.t_hi_infinite) {
+    if !(g_13.t_hi_infinite) {
         local_39 = (t1_ > x_h);
     } else {
         local_39 = true;
@@ -2357,7 +2363,7 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         let _e194 = airlight_bounded(a_s_2);
         dy = _e194;
         let a_e_1 = ((t1_ - x_h) / h_3);
-        if !(g_12.t_hi_infinite) {
+        if !(g_13.t_hi_infinite) {
             let _e208 = airlight_is_finite(a_e_1);
             local_40 = _e208;
         } else {
@@ -2392,9 +2398,9 @@ fn airlight_in_scatter_canonical(s_10: AirlightScene, g_12: AirlightCanonical) -
         let _e239 = dv_3;
         let _e240 = infinite_2;
         let half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        let _e243 = airlight_half(s_10, g_12, 1f, half_12, isotropic_1, (&f_max_6));
+        let _e243 = airlight_half(s_11, g_13, 1f, half_12, isotropic_1, (&f_max_6));
         let _e244 = total_2;
-        let _e252 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, ((s_10.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
+        let _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
         total_2 = (_e244 + _e252);
     }
     let _e254 = total_2;
@@ -2451,7 +2457,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_11: AirlightScene) -> bool {
+fn airlight_valid(s_12: AirlightScene) -> bool {
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
@@ -2481,171 +2487,171 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
     var local_70: bool;
     var local_71: bool;
 
-    let _e2 = airlight_vec_finite(s_11.origin);
+    let _e2 = airlight_vec_finite(s_12.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_11.dir);
+        let _e6 = airlight_vec_finite(s_12.dir);
         local_45 = _e6;
     } else {
         local_45 = false;
     }
     let _e8 = local_45;
     if _e8 {
-        let _e12 = airlight_normalisable(s_11.dir);
+        let _e12 = airlight_normalisable(s_12.dir);
         local_46 = _e12;
     } else {
         local_46 = false;
     }
     let _e14 = local_46;
     if _e14 {
-        let _e18 = airlight_is_finite(s_11.t_min);
+        let _e18 = airlight_is_finite(s_12.t_min);
         local_47 = _e18;
     } else {
         local_47 = false;
     }
     let _e20 = local_47;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_11.light_position);
+        let _e24 = airlight_vec_finite(s_12.light_position);
         local_48 = _e24;
     } else {
         local_48 = false;
     }
     let _e26 = local_48;
     if _e26 {
-        let _e30 = airlight_is_finite(s_11.intensity);
+        let _e30 = airlight_is_finite(s_12.intensity);
         local_49 = _e30;
     } else {
         local_49 = false;
     }
     let _e32 = local_49;
     if _e32 {
-        local_50 = (s_11.intensity >= 0f);
+        local_50 = (s_12.intensity >= 0f);
     } else {
         local_50 = false;
     }
     let _e39 = local_50;
     if _e39 {
-        let _e43 = airlight_is_finite(s_11.sigma_s);
+        let _e43 = airlight_is_finite(s_12.sigma_s);
         local_51 = _e43;
     } else {
         local_51 = false;
     }
     let _e45 = local_51;
     if _e45 {
-        local_52 = (s_11.sigma_s >= 0f);
+        local_52 = (s_12.sigma_s >= 0f);
     } else {
         local_52 = false;
     }
     let _e52 = local_52;
     if _e52 {
-        let _e56 = airlight_is_finite(s_11.sigma_t);
+        let _e56 = airlight_is_finite(s_12.sigma_t);
         local_53 = _e56;
     } else {
         local_53 = false;
     }
     let _e58 = local_53;
     if _e58 {
-        local_54 = (s_11.sigma_t >= 0f);
+        local_54 = (s_12.sigma_t >= 0f);
     } else {
         local_54 = false;
     }
     let _e65 = local_54;
     ok = _e65;
-    if ((s_11.flags & 1u) == 0u) {
+    if ((s_12.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_11.t_max);
+            let _e76 = airlight_is_finite(s_12.t_max);
             local_55 = _e76;
         } else {
             local_55 = false;
         }
         let _e78 = local_55;
         if _e78 {
-            local_56 = (s_11.t_min <= s_11.t_max);
+            local_56 = (s_12.t_min <= s_12.t_max);
         } else {
             local_56 = false;
         }
         let _e85 = local_56;
         ok = _e85;
     }
-    if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_11.light_axis);
+            let _e93 = airlight_vec_finite(s_12.light_axis);
             local_57 = _e93;
         } else {
             local_57 = false;
         }
         let _e95 = local_57;
         if _e95 {
-            let _e99 = airlight_normalisable(s_11.light_axis);
+            let _e99 = airlight_normalisable(s_12.light_axis);
             local_58 = _e99;
         } else {
             local_58 = false;
         }
         let _e101 = local_58;
         if _e101 {
-            local_59 = (s_11.light_param_a >= 0f);
+            local_59 = (s_12.light_param_a >= 0f);
         } else {
             local_59 = false;
         }
         let _e108 = local_59;
         if _e108 {
-            local_60 = (s_11.light_param_a <= 1024f);
+            local_60 = (s_12.light_param_a <= 1024f);
         } else {
             local_60 = false;
         }
         let _e115 = local_60;
         if _e115 {
-            local_61 = (fract((s_11.light_param_a * 0.5f)) == 0f);
+            local_61 = (fract((s_12.light_param_a * 0.5f)) == 0f);
         } else {
             local_61 = false;
         }
         let _e125 = local_61;
         ok = _e125;
     } else {
-        if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
-                let _e133 = airlight_vec_finite(s_11.light_axis);
+                let _e133 = airlight_vec_finite(s_12.light_axis);
                 local_62 = _e133;
             } else {
                 local_62 = false;
             }
             let _e135 = local_62;
             if _e135 {
-                let _e139 = airlight_normalisable(s_11.light_axis);
+                let _e139 = airlight_normalisable(s_12.light_axis);
                 local_63 = _e139;
             } else {
                 local_63 = false;
             }
             let _e141 = local_63;
             if _e141 {
-                local_64 = (s_11.light_param_b < s_11.light_param_a);
+                local_64 = (s_12.light_param_b < s_12.light_param_a);
             } else {
                 local_64 = false;
             }
             let _e148 = local_64;
             if _e148 {
-                local_65 = (s_11.light_param_b >= -1f);
+                local_65 = (s_12.light_param_b >= -1f);
             } else {
                 local_65 = false;
             }
             let _e155 = local_65;
             if _e155 {
-                local_66 = (s_11.light_param_a <= 1f);
+                local_66 = (s_12.light_param_a <= 1f);
             } else {
                 local_66 = false;
             }
             let _e162 = local_66;
             ok = _e162;
         } else {
-            if (s_11.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_11.phase_param_a) < 1f);
-    switch s_11.phase_kind {
+    let g_ok = (abs(s_12.phase_param_a) < 1f);
+    switch s_12.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -2667,19 +2673,19 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
             }
             let _e181 = local_68;
             if _e181 {
-                local_69 = (abs(s_11.phase_param_b) < 1f);
+                local_69 = (abs(s_12.phase_param_b) < 1f);
             } else {
                 local_69 = false;
             }
             let _e189 = local_69;
             if _e189 {
-                local_70 = (s_11.phase_param_c >= 0f);
+                local_70 = (s_12.phase_param_c >= 0f);
             } else {
                 local_70 = false;
             }
             let _e196 = local_70;
             if _e196 {
-                local_71 = (s_11.phase_param_c <= 1f);
+                local_71 = (s_12.phase_param_c <= 1f);
             } else {
                 local_71 = false;
             }
@@ -2694,16 +2700,16 @@ fn airlight_valid(s_11: AirlightScene) -> bool {
     return _e205;
 }
 
-fn airlight_canonical(s_12: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
     var a_10: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_12.dir);
-    if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_12.light_axis);
+    let _e2 = airlight_normalize(s_13.dir);
+    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_13.light_axis);
         a_10 = _e12;
     }
-    let to_light = (s_12.light_position - s_12.origin);
+    let to_light = (s_13.light_position - s_13.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -2711,10 +2717,10 @@ fn airlight_canonical(s_12: AirlightScene) -> AirlightCanonical {
         let _e24 = a_10;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_12.flags & 1u) != 0u);
+    let infinite_3 = ((s_13.flags & 1u) != 0u);
     let _e32 = a_10;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_12.t_min, select(s_12.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, select(s_13.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -2773,19 +2779,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_74: bool;
     var out_2: AirlightCanonical;
     var local_75: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_13.flags > 1u));
-    let _e11 = airlight_two_sum(s_13.light_position.x, -(s_13.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_13.light_position.y, -(s_13.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_13.light_position.z, -(s_13.origin.z), key_4);
+    let key_4 = u32((s_14.flags > 1u));
+    let _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
     let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_13.dir;
+    let dir = s_14.dir;
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
@@ -2825,8 +2831,8 @@ fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_13.light_axis);
+    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_14.light_axis);
         a_14 = _e112;
     }
     let _e113 = airlight_normalize(dir);
@@ -2839,14 +2845,14 @@ fn airlight_refined(s_13: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     return _e121;
 }
 
-fn airlight_in_scatter(s_14: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_valid(s_14);
+fn airlight_in_scatter(s_15: AirlightScene) -> AirlightResult {
+    let _e1 = airlight_valid(s_15);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_canonical(s_14);
-    let _e7 = airlight_refined(s_14, _e6);
-    let _e8 = airlight_in_scatter_canonical(s_14, _e7);
+    let _e6 = airlight_canonical(s_15);
+    let _e7 = airlight_refined(s_15, _e6);
+    let _e8 = airlight_in_scatter_canonical(s_15, _e7);
     let _e10 = airlight_is_finite(_e8.in_scatter);
     if !(_e10) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);

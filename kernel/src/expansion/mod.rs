@@ -38,6 +38,13 @@ pub trait Expandable<T: Real> {
     fn eval_over(&self, y: T) -> (T, T) {
         (self.eval(y), (T::one() + y * y).recip())
     }
+    /// `(F(1/v), 1/(1 + v²))`: the second half's v-panels sample in `v = 1/y`; an integrand
+    /// that can be written in `v` directly saves the reciprocal.
+    fn eval_over_reciprocal(&self, v: T) -> (T, T) {
+        let y = v.recip();
+        let (f, inv) = self.eval_over(y);
+        (f, y * y * inv)
+    }
 }
 
 impl Expansion {

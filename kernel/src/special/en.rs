@@ -37,11 +37,33 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
         n
     };
     for n in pivot..k_max {
-        out[n] = (T::one() - x * out[n - 1]) / T::from(n).unwrap();
+        out[n] = (T::one() - x * out[n - 1]) * inverse::<T>(n);
     }
+    let inv_x = x.recip();
     for n in (1..pivot).rev() {
         // s_n = (1 − n s_{n+1}) / x
-        out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) / x;
+        out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) * inv_x;
+    }
+}
+
+/// `1/n` for the orders the kernel uses (`n < 32`: `N + 2` with `N ≤ 16` nodes or terms, or the
+/// fixed method's `N ≤ 16` terms) from a table, a division beyond. The table's entry rounded
+/// to `T` adds half an ulp to a step of the upward recurrence, which does not amplify it on
+/// its stable side.
+#[inline]
+fn inverse<T: Real>(n: usize) -> T {
+    const INVERSES: [f64; 32] = {
+        let mut t = [0.0; 32];
+        let mut n = 1;
+        while n < 32 {
+            t[n] = 1.0 / n as f64;
+            n += 1;
+        }
+        t
+    };
+    match INVERSES.get(n) {
+        Some(&inv) if n > 0 => T::lit(inv),
+        _ => T::from(n).unwrap().recip(),
     }
 }
 
