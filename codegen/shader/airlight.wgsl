@@ -109,6 +109,115 @@ struct AirlightResult {
     status: u32,
 }
 
+// ---------------------------------------------------------------- building a scene
+// (kernel/src/scene.rs Ray, PointLight, Medium; light.rs; phase.rs): named parts instead of
+// AirlightScene's 17 positional fields.
+
+/// The segment `origin + t·dir/|dir|`, `t ∈ [t_min, t_max]`: `dir` any non-zero length (it is
+/// normalised inside), `t_min`, `t_max` world distances along it (so `dir = P − eye` needs
+/// `t_max = length(P − eye)`, not 1). `flags` bit 0: `t_max` is +∞.
+struct AirlightRay {
+    origin: vec3<f32>,
+    t_min: f32,
+    dir: vec3<f32>,
+    t_max: f32,
+    flags: u32,
+}
+
+/// A point light: `intensity · D(c)`, `D` by `kind` (`AIRLIGHT_LIGHT_*`) with `axis` and the
+/// parameters as in AirlightScene.
+struct AirlightLight {
+    position: vec3<f32>,
+    intensity: f32,
+    axis: vec3<f32>,
+    param_a: f32,
+    param_b: f32,
+    kind: u32,
+}
+
+/// Scattering and extinction coefficients, per world unit.
+struct AirlightMedium {
+    sigma_s: f32,
+    sigma_t: f32,
+}
+
+/// A phase function: `kind` (`AIRLIGHT_PHASE_*`) and up to three parameters.
+struct AirlightPhase {
+    kind: u32,
+    param_a: f32,
+    param_b: f32,
+    param_c: f32,
+}
+
+/// The segment `[t_min, t_max]` (world distances) of the ray from `origin` along `dir`.
+fn airlight_ray(origin: vec3<f32>, dir: vec3<f32>, t_min: f32, t_max: f32) -> AirlightRay {
+    return AirlightRay(origin, t_min, dir, t_max, 0u);
+}
+
+/// The ray from `t_min` to infinity.
+fn airlight_ray_to_infinity(origin: vec3<f32>, dir: vec3<f32>, t_min: f32) -> AirlightRay {
+    return AirlightRay(origin, t_min, dir, 0.0, 1u);
+}
+
+/// A light shining equally in all directions.
+fn airlight_omni(position: vec3<f32>, intensity: f32) -> AirlightLight {
+    return AirlightLight(position, intensity, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, AIRLIGHT_LIGHT_OMNI);
+}
+
+/// The paper's two-lobed light `D = c^power` about `axis` (`power` even, at most
+/// AIRLIGHT_MAX_POWER).
+fn airlight_two_lobed(position: vec3<f32>, intensity: f32, axis: vec3<f32>, power: u32) -> AirlightLight {
+    return AirlightLight(position, intensity, axis, f32(power), 0.0, AIRLIGHT_LIGHT_TWO_LOBED);
+}
+
+/// A spot cone about `axis`: full intensity inside `cos_inner`, none outside `cos_outer`
+/// (`cos_outer < cos_inner`), smoothstep between.
+fn airlight_spot(position: vec3<f32>, intensity: f32, axis: vec3<f32>, cos_inner: f32, cos_outer: f32) -> AirlightLight {
+    return AirlightLight(position, intensity, axis, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT);
+}
+
+/// Scattering and extinction coefficients (`σs ≤ σt` physically; both ≥ 0), per world unit.
+fn airlight_medium(sigma_s: f32, sigma_t: f32) -> AirlightMedium {
+    return AirlightMedium(sigma_s, sigma_t);
+}
+
+/// Isotropic scattering, `1/(4π)`.
+fn airlight_isotropic() -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_ISOTROPIC, 0.0, 0.0, 0.0);
+}
+
+/// Rayleigh scattering, `3(1 + μ²)/(16π)`.
+fn airlight_rayleigh() -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_RAYLEIGH, 0.0, 0.0, 0.0);
+}
+
+/// Henyey–Greenstein with asymmetry `g ∈ (−1, 1)`.
+fn airlight_henyey_greenstein(g: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_HENYEY_GREENSTEIN, g, 0.0, 0.0);
+}
+
+/// Schlick's approximation with `k ∈ (−1, 1)`.
+fn airlight_schlick(k: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_SCHLICK, k, 0.0, 0.0);
+}
+
+/// Cornette–Shanks with asymmetry `g ∈ (−1, 1)`.
+fn airlight_cornette_shanks(g: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_CORNETTE_SHANKS, g, 0.0, 0.0);
+}
+
+/// `w·HG(g1) + (1 − w)·HG(g2)`, `w ∈ [0, 1]`.
+fn airlight_two_lobe_henyey_greenstein(g1: f32, g2: f32, w: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_TWO_LOBE_HG, g1, g2, w);
+}
+
+/// The scene of its parts.
+fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis,
+        light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c,
+        light.kind, phase.kind, ray.flags);
+}
+
 // ---------------------------------------------------------------- complex arithmetic
 // (kernel/src/special/complex.rs)
 
@@ -1315,7 +1424,7 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
     return out;
 }
 
-/// In-scattered radiance L_m of a scene (DESIGN §1): the public entry of the library.
+/// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library.
 /// Invalid scenes give (0, INVALID); a light exactly on the segment gives (FLT_MAX, INFINITE).
 fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s)) {

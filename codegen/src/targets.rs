@@ -254,6 +254,18 @@ pub fn validate(src: &str) -> Result<(naga::Module, ModuleInfo), EmitError> {
     Ok((module, info))
 }
 
+/// The compute shader's module: validated, then compacted to what `airlight_main` reaches (the
+/// library's scene constructors are for shaders that include it, not for the record buffer),
+/// and validated again.
+fn compute_module(src: &str) -> Result<(naga::Module, ModuleInfo), EmitError> {
+    let (mut module, _) = validate(src)?;
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+        .validate(&module)
+        .map_err(|e| EmitError::Shader(format!("after compaction: {}", e.emit_to_string(src))))?;
+    Ok((module, info))
+}
+
 /// Index clamping everywhere: out-of-range indices read a valid element (the shader only
 /// indexes in range; this makes the guarantee explicit and identical on every target).
 fn policies() -> BoundsCheckPolicies {
@@ -448,7 +460,7 @@ pub fn render_with(opts: &EmitOptions, constants: impl Fn(usize) -> Constants) -
     let mut files = BTreeMap::new();
     for &n in &opts.terms {
         let filled = constants(n);
-        let (cm, ci) = validate(&filled.source(true))?;
+        let (cm, ci) = compute_module(&filled.source(true))?;
         let library = filled.source(false);
         let (lm, li) = validate(&(library.clone() + LIBRARY_STUB))?;
         let (lone, lone_info) = validate(&library)?;

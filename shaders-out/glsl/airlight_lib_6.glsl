@@ -25,6 +25,31 @@ struct AirlightResult {
     float in_scatter;
     uint status;
 };
+struct AirlightRay {
+    vec3 origin;
+    float t_min;
+    vec3 dir;
+    float t_max;
+    uint flags;
+};
+struct AirlightLight {
+    vec3 position;
+    float intensity;
+    vec3 axis;
+    float param_a;
+    float param_b;
+    uint kind;
+};
+struct AirlightMedium {
+    float sigma_s;
+    float sigma_t;
+};
+struct AirlightPhase {
+    uint kind;
+    float param_a;
+    float param_b;
+    float param_c;
+};
 struct AirlightCanonical {
     float h;
     float x_h;
@@ -96,6 +121,58 @@ float[14] airlight_ein_coefficients() {
     return float[14](1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11, -8.1933895e-13);
 }
 
+AirlightRay airlight_ray(vec3 origin, vec3 dir, float t_min, float t_max) {
+    return AirlightRay(origin, t_min, dir, t_max, 0u);
+}
+
+AirlightRay airlight_ray_to_infinity(vec3 origin_1, vec3 dir_1, float t_min_1) {
+    return AirlightRay(origin_1, t_min_1, dir_1, 0.0, 1u);
+}
+
+AirlightLight airlight_omni(vec3 position, float intensity) {
+    return AirlightLight(position, intensity, vec3(0.0, 0.0, 1.0), 0.0, 0.0, AIRLIGHT_LIGHT_OMNI);
+}
+
+AirlightLight airlight_two_lobed(vec3 position_1, float intensity_1, vec3 axis, uint power) {
+    return AirlightLight(position_1, intensity_1, axis, float(power), 0.0, AIRLIGHT_LIGHT_TWO_LOBED);
+}
+
+AirlightLight airlight_spot(vec3 position_2, float intensity_2, vec3 axis_1, float cos_inner, float cos_outer) {
+    return AirlightLight(position_2, intensity_2, axis_1, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT);
+}
+
+AirlightMedium airlight_medium(float sigma_s, float sigma_t) {
+    return AirlightMedium(sigma_s, sigma_t);
+}
+
+AirlightPhase airlight_isotropic() {
+    return AirlightPhase(0u, 0.0, 0.0, 0.0);
+}
+
+AirlightPhase airlight_rayleigh() {
+    return AirlightPhase(1u, 0.0, 0.0, 0.0);
+}
+
+AirlightPhase airlight_henyey_greenstein(float g) {
+    return AirlightPhase(AIRLIGHT_PHASE_HENYEY_GREENSTEIN, g, 0.0, 0.0);
+}
+
+AirlightPhase airlight_schlick(float k) {
+    return AirlightPhase(AIRLIGHT_PHASE_SCHLICK, k, 0.0, 0.0);
+}
+
+AirlightPhase airlight_cornette_shanks(float g_1) {
+    return AirlightPhase(AIRLIGHT_PHASE_CORNETTE_SHANKS, g_1, 0.0, 0.0);
+}
+
+AirlightPhase airlight_two_lobe_henyey_greenstein(float g1_, float g2_, float w) {
+    return AirlightPhase(AIRLIGHT_PHASE_TWO_LOBE_HG, g1_, g2_, w);
+}
+
+AirlightScene airlight_scene(AirlightRay ray, AirlightLight light, AirlightMedium medium, AirlightPhase phase) {
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis, light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light.kind, phase.kind, ray.flags);
+}
+
 vec2 airlight_cmul(vec2 a, vec2 b) {
     return vec2(((a.x * b.x) - (a.y * b.y)), ((a.x * b.y) + (a.y * b.x)));
 }
@@ -142,24 +219,24 @@ vec2 airlight_csqrt(vec2 z_1) {
 vec2 airlight_cos_sin(float x) {
     float c = 0.0;
     float s = 0.0;
-    uint k = 0u;
+    uint k_1 = 0u;
     float fc = 0.0;
     uint j = 0u;
     float z_8 = (x * x);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e55 = k;
-            k = (_e55 + 1u);
+            uint _e55 = k_1;
+            k_1 = (_e55 + 1u);
         }
         loop_init = false;
-        uint _e8 = k;
+        uint _e8 = k_1;
         if ((_e8 < 9u)) {
         } else {
             break;
         }
         {
-            uint _e12 = k;
+            uint _e12 = k_1;
             uint n_3 = (8u - _e12);
             float _e14 = c;
             c = (_e14 * z_8);
@@ -241,7 +318,7 @@ vec2 airlight_cln(vec2 z_3) {
 
 float airlight_log1p(float x_2) {
     float sum = 0.0;
-    uint k_1 = 0u;
+    uint k_2 = 0u;
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
@@ -250,18 +327,18 @@ float airlight_log1p(float x_2) {
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e31 = k_1;
-            k_1 = (_e31 + 1u);
+            uint _e31 = k_2;
+            k_2 = (_e31 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = k_1;
+        uint _e14 = k_2;
         if ((_e14 < 9u)) {
         } else {
             break;
         }
         {
             float _e17 = sum;
-            uint _e21 = k_1;
+            uint _e21 = k_2;
             sum = ((_e17 * s2_) + (1.0 / float(((2u * (8u - _e21)) + 1u))));
         }
     }
@@ -275,16 +352,16 @@ bool airlight_is_finite(float x_3) {
 
 vec2 airlight_ein(vec2 z_4) {
     vec2 sum_1 = vec2(0.0, 0.0);
-    uint k_2 = 0u;
+    uint k_3 = 0u;
     float _e1[14] = airlight_ein_coefficients();
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e21 = k_2;
-            k_2 = (_e21 + 1u);
+            uint _e21 = k_3;
+            k_3 = (_e21 + 1u);
         }
         loop_init_3 = false;
-        uint _e8 = k_2;
+        uint _e8 = k_3;
         if ((_e8 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
@@ -292,7 +369,7 @@ vec2 airlight_ein(vec2 z_4) {
         {
             vec2 _e11 = sum_1;
             vec2 _e12 = airlight_cmul(_e11, z_4);
-            uint _e14 = k_2;
+            uint _e14 = k_3;
             sum_1 = (_e12 + vec2(_e1[(13u - _e14)], 0.0));
         }
     }
@@ -305,16 +382,16 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
     vec2 h = vec2(1.0, 0.0);
     vec2 a_pow = vec2(1.0, 0.0);
     vec2 sum_2 = vec2(0.0, 0.0);
-    uint k_3 = 0u;
+    uint k_4 = 0u;
     float _e2[14] = airlight_ein_coefficients();
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e33 = k_3;
-            k_3 = (_e33 + 1u);
+            uint _e33 = k_4;
+            k_4 = (_e33 + 1u);
         }
         loop_init_4 = false;
-        uint _e17 = k_3;
+        uint _e17 = k_4;
         if ((_e17 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
@@ -322,7 +399,7 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
         {
             vec2 _e20 = sum_2;
             vec2 _e21 = h;
-            uint _e22 = k_3;
+            uint _e22 = k_4;
             sum_2 = (_e20 + (_e21 * _e2[_e22]));
             vec2 _e26 = a_pow;
             vec2 _e27 = airlight_cmul(_e26, a_2);
@@ -592,18 +669,18 @@ void airlight_en_scaled(float x_5, uint count, inout float out_[16]) {
     return;
 }
 
-float airlight_hg_base(float g, float om, float op) {
-    if ((g >= 0.0)) {
-        float a_16 = (1.0 - g);
-        return ((om * (g + g)) + (a_16 * a_16));
+float airlight_hg_base(float g_2, float om, float op) {
+    if ((g_2 >= 0.0)) {
+        float a_16 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_16 * a_16));
     }
-    float b_13 = (1.0 + g);
-    return ((op * -((g + g))) + (b_13 * b_13));
+    float b_13 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_13 * b_13));
 }
 
-float airlight_hg(float g_1, float om_1, float op_1) {
-    float _e3 = airlight_hg_base(g_1, om_1, op_1);
-    return ((((1.0 - g_1) * (1.0 + g_1)) / 12.566371) / (_e3 * sqrt(_e3)));
+float airlight_hg(float g_3, float om_1, float op_1) {
+    float _e3 = airlight_hg_base(g_3, om_1, op_1);
+    return ((((1.0 - g_3) * (1.0 + g_3)) / 12.566371) / (_e3 * sqrt(_e3)));
 }
 
 float airlight_phase(uint kind, float p0_, float p1_, float p2_, float mu, float om_2, float op_2) {
@@ -701,14 +778,14 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
     }
 }
 
-vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_2, float sigma, float y_1) {
+vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_4, float sigma, float y_1) {
     float minus = 0.0;
     float plus = 0.0;
     float y2_ = (y_1 * y_1);
     float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
     float mu_2 = (-(sigma) * (om_3 * inv_2));
-    float c_7 = ((((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv_2);
+    float c_7 = ((((sigma * g_4.d_el) * om_3) + ((2.0 * g_4.d_c) * y_1)) * inv_2);
     float far = ((y2_ * inv_2) * 2.0);
     float near = (inv_2 * 2.0);
     minus = near;
@@ -725,8 +802,8 @@ vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_2, float sig
     return vec2(f, inv_2);
 }
 
-float airlight_integrand(AirlightScene s_2, AirlightCanonical g_3, float sigma_1, float y_2) {
-    vec2 _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+float airlight_integrand(AirlightScene s_2, AirlightCanonical g_5, float sigma_1, float y_2) {
+    vec2 _e4 = airlight_integrand_over(s_2, g_5, sigma_1, y_2);
     return _e4.x;
 }
 
@@ -918,9 +995,9 @@ float airlight_node(vec2 rule[3], uint i_4) {
     return (((i_4 % 2u) == 0u) ? -(x_14) : x_14);
 }
 
-float[6] airlight_legendre(float g_4[6]) {
+float[6] airlight_legendre(float g_6[6]) {
     float c_2[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint k_4 = 0u;
+    uint k_5 = 0u;
     float sum_3 = 0.0;
     uint j_2 = 0u;
     float _e1[18] = airlight_legendre_table();
@@ -929,11 +1006,11 @@ float[6] airlight_legendre(float g_4[6]) {
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
-            uint _e50 = k_4;
-            k_4 = (_e50 + 1u);
+            uint _e50 = k_5;
+            k_5 = (_e50 + 1u);
         }
         loop_init_12 = false;
-        uint _e6 = k_4;
+        uint _e6 = k_5;
         if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -955,18 +1032,18 @@ float[6] airlight_legendre(float g_4[6]) {
                 }
                 {
                     uint _e17 = j_2;
-                    float minus_1 = g_4[(2u * _e17)];
+                    float minus_1 = g_6[(2u * _e17)];
                     uint _e21 = j_2;
-                    float plus_1 = g_4[((2u * _e21) + 1u)];
-                    uint _e28 = k_4;
+                    float plus_1 = g_6[((2u * _e21) + 1u)];
+                    uint _e28 = k_5;
                     float pair = (((_e28 % 2u) == 0u) ? (plus_1 + minus_1) : (plus_1 - minus_1));
                     float _e34 = sum_3;
-                    uint _e35 = k_4;
+                    uint _e35 = k_5;
                     uint _e38 = j_2;
                     sum_3 = (_e34 + (_e1[((_e35 * AIRLIGHT_HALF_TERMS) + _e38)] * pair));
                 }
             }
-            uint _e46 = k_4;
+            uint _e46 = k_5;
             float _e48 = sum_3;
             c_2[_e46] = _e48;
         }
@@ -1011,8 +1088,8 @@ float[6] airlight_exp_legendre_moments(float lambda) {
     uint i_6 = 0u;
     uint j_3 = 0u;
     uint j_4 = 0u;
-    uint k_5 = 1u;
-    uint k_6 = 0u;
+    uint k_6 = 1u;
+    uint k_7 = 0u;
     float _e1[6] = airlight_zero_terms();
     out_1 = _e1;
     if (!((lambda > 0.0))) {
@@ -1056,10 +1133,10 @@ float[6] airlight_exp_legendre_moments(float lambda) {
                         break;
                     }
                     uint _e67 = i_6;
-                    uint k_12 = (top - _e67);
-                    if ((k_12 < AIRLIGHT_TERMS)) {
+                    uint k_13 = (top - _e67);
+                    if ((k_13 < AIRLIGHT_TERMS)) {
                         float _e71 = cur;
-                        out_1[k_12] = _e71;
+                        out_1[k_13] = _e71;
                     }
                     float _e72 = above;
                     float _e73 = odd;
@@ -1127,21 +1204,21 @@ float[6] airlight_exp_legendre_moments(float lambda) {
             bool loop_init_18 = true;
             while(true) {
                 if (!loop_init_18) {
-                    uint _e163 = k_5;
-                    k_5 = (_e163 + 1u);
+                    uint _e163 = k_6;
+                    k_6 = (_e163 + 1u);
                 }
                 loop_init_18 = false;
-                uint _e136 = k_5;
+                uint _e136 = k_6;
                 if (((_e136 + 1u) < AIRLIGHT_TERMS)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e141 = k_5;
-                    uint _e145 = k_5;
+                    uint _e141 = k_6;
+                    uint _e145 = k_6;
                     float _e149 = out_1[(_e145 - 1u)];
-                    uint _e151 = k_5;
-                    uint _e157 = k_5;
+                    uint _e151 = k_6;
+                    uint _e157 = k_6;
                     float _e159 = out_1[_e157];
                     out_1[(_e141 + 1u)] = (_e149 - ((float(((2u * _e151) + 1u)) / lambda) * _e159));
                 }
@@ -1151,19 +1228,19 @@ float[6] airlight_exp_legendre_moments(float lambda) {
     bool loop_init_19 = true;
     while(true) {
         if (!loop_init_19) {
-            uint _e183 = k_6;
-            k_6 = (_e183 + 1u);
+            uint _e183 = k_7;
+            k_7 = (_e183 + 1u);
         }
         loop_init_19 = false;
-        uint _e167 = k_6;
+        uint _e167 = k_7;
         if ((_e167 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e170 = k_6;
+            uint _e170 = k_7;
             float _e172 = out_1[_e170];
-            uint _e173 = k_6;
+            uint _e173 = k_7;
             out_1[_e170] = (_e172 * (((_e173 % 2u) == 1u) ? -2.0 : 2.0));
         }
     }
@@ -1235,7 +1312,7 @@ AirlightPanel airlight_panel_result(float value, float error, float noise, float
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
+AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
     float r_1 = 0.0;
     float vc = 0.0;
     float samples[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1244,7 +1321,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
     float g_avg = 0.0;
     uint i_8 = 0u;
     float sum_5 = 0.0;
-    uint k_7 = 0u;
+    uint k_8 = 0u;
     vec2 _e6[3] = airlight_gauss_rule();
     r_1 = ((b_4 - a_5) * 0.5);
     float _e11 = r_1;
@@ -1274,7 +1351,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
             uint _e39 = i_8;
             float _e40 = airlight_node(_e6, _e39);
             float v_5 = (_e37 + (_e38 * _e40));
-            vec2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_5);
+            vec2 _e46 = airlight_integrand_over(s_3, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_5);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_8;
@@ -1297,26 +1374,26 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e95 = k_7;
-            k_7 = (_e95 + 1u);
+            uint _e95 = k_8;
+            k_8 = (_e95 + 1u);
         }
         loop_init_22 = false;
-        uint _e84 = k_7;
+        uint _e84 = k_8;
         if ((_e84 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
             float _e87 = sum_5;
-            uint _e88 = k_7;
-            uint _e90 = k_7;
+            uint _e88 = k_8;
+            uint _e90 = k_8;
             sum_5 = (_e87 + (_e75[_e88] * _e79[_e90]));
         }
     }
     float _e97 = airlight_factor(half_4, a_5, b_4);
     float _e98 = r_1;
-    float w = (_e97 * _e98);
-    float mass_4 = (w * _e79[0]);
+    float w_1 = (_e97 * _e98);
+    float mass_4 = (w_1 * _e79[0]);
     float _e102 = airlight_tail_estimate(_e75);
     float _e104 = airlight_error_factor(_e75, _e79);
     float error_1 = ((mass_4 * _e102) * _e104);
@@ -1325,11 +1402,11 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
     float _e109 = airlight_transform_noise(mass_4, _e108);
     float _e110 = over_max;
     float _e112 = f_max_1;
-    AirlightPanel _e113 = airlight_panel_result((w * _e106), error_1, _e109, (mass_4 * _e110), _e112);
+    AirlightPanel _e113 = airlight_panel_result((w_1 * _e106), error_1, _e109, (mass_4 * _e110), _e112);
     return _e113;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
+AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
     float samples_1[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1359,7 +1436,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
             float _e27 = airlight_node(_e6, _e26);
             float y_5 = (yc_1 + (r_4 * _e27));
             float weight = exp(((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5)));
-            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
+            float _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_9;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1380,26 +1457,26 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     float _e79[6] = samples_1;
     float _e80[6] = airlight_legendre(_e79);
     float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e81 * r_4);
+    float w_2 = (_e81 * r_4);
     float _e83[6] = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2.0;
     float _e89 = airlight_tail_estimate(_e80);
     float _e91[6] = m_2;
     float _e92 = airlight_error_factor(_e80, _e91);
-    float error_2 = (((w_1 * 2.0) * _e89) * _e92);
+    float error_2 = (((w_2 * 2.0) * _e89) * _e92);
     float _e100 = p_avg;
-    float _e101 = airlight_transform_noise((w_1 * 2.0), _e100);
+    float _e101 = airlight_transform_noise((w_2 * 2.0), _e100);
     float _e102 = mass_1;
     float _e104 = over_max_1;
     float _e106 = f_max_2;
-    AirlightPanel _e107 = airlight_panel_result(((w_1 * 2.0) * _e80[0]), error_2, _e101, ((w_1 * _e102) * _e104), _e106);
+    AirlightPanel _e107 = airlight_panel_result(((w_2 * 2.0) * _e80[0]), error_2, _e101, ((w_2 * _e102) * _e104), _e106);
     return _e107;
 }
 
 float[6] airlight_legendre_to_monomial(float c_5[6]) {
     float hat[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint k_8 = 0u;
+    uint k_9 = 0u;
     uint i_10 = 0u;
     float _e1[36] = airlight_legendre_monomial();
     float _e2[6] = airlight_zero_terms();
@@ -1407,11 +1484,11 @@ float[6] airlight_legendre_to_monomial(float c_5[6]) {
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
-            uint _e31 = k_8;
-            k_8 = (_e31 + 1u);
+            uint _e31 = k_9;
+            k_9 = (_e31 + 1u);
         }
         loop_init_24 = false;
-        uint _e6 = k_8;
+        uint _e6 = k_9;
         if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -1426,7 +1503,7 @@ float[6] airlight_legendre_to_monomial(float c_5[6]) {
                 }
                 loop_init_25 = false;
                 uint _e11 = i_10;
-                uint _e12 = k_8;
+                uint _e12 = k_9;
                 if ((_e11 <= _e12)) {
                 } else {
                     break;
@@ -1434,8 +1511,8 @@ float[6] airlight_legendre_to_monomial(float c_5[6]) {
                 {
                     uint _e14 = i_10;
                     float _e16 = hat[_e14];
-                    uint _e17 = k_8;
-                    uint _e19 = k_8;
+                    uint _e17 = k_9;
+                    uint _e19 = k_9;
                     uint _e22 = i_10;
                     hat[_e14] = (_e16 + (c_5[_e17] * _e1[((_e19 * AIRLIGHT_TERMS) + _e22)]));
                 }
@@ -1446,7 +1523,7 @@ float[6] airlight_legendre_to_monomial(float c_5[6]) {
     return _e33;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
@@ -1465,12 +1542,12 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     float mass_2 = 0.0;
     float ratio_1 = 1.0;
     float ab = 0.0;
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     float tail = 0.0;
     float l_prev = 0.0;
     float l_cur = 1.0;
     float spread = 0.0;
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     vec2 _e6[3] = airlight_gauss_rule();
     float r_5 = ((b_6 - a_7) * 0.5);
     float yc_2 = (a_7 + r_5);
@@ -1492,7 +1569,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
             uint _e22 = i_11;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = (yc_2 + (r_5 * _e23));
-            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
+            float _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
             uint _e27 = i_11;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
             float _e33 = f_max_3;
@@ -1594,11 +1671,11 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     bool loop_init_29 = true;
     while(true) {
         if (!loop_init_29) {
-            uint _e190 = k_9;
-            k_9 = (_e190 + 1u);
+            uint _e190 = k_10;
+            k_10 = (_e190 + 1u);
         }
         loop_init_29 = false;
-        uint _e151 = k_9;
+        uint _e151 = k_10;
         if ((_e151 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -1609,20 +1686,20 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
             if ((_e156 > 0.0)) {
                 float _e159 = decay;
                 float _e161 = ratio_1;
-                uint _e163 = k_9;
+                uint _e163 = k_10;
                 float _e167 = s_a[(_e163 + 1u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
             }
-            uint _e169 = k_9;
+            uint _e169 = k_10;
             float _e173 = s_b[(_e169 + 1u)];
             float _e175 = tail;
             float u = ((b_6 * _e173) - _e175);
-            uint _e177 = k_9;
+            uint _e177 = k_10;
             if ((_e177 == 0u)) {
                 mass_2 = u;
             }
             float _e180 = sum_6;
-            uint _e181 = k_9;
+            uint _e181 = k_10;
             float _e183 = q[_e181];
             sum_6 = (_e180 + (_e183 * u));
             float _e186 = ratio_1;
@@ -1637,11 +1714,11 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     bool loop_init_30 = true;
     while(true) {
         if (!loop_init_30) {
-            uint _e232 = k_10;
-            k_10 = (_e232 + 1u);
+            uint _e232 = k_11;
+            k_11 = (_e232 + 1u);
         }
         loop_init_30 = false;
-        uint _e206 = k_10;
+        uint _e206 = k_11;
         if ((_e206 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -1649,9 +1726,9 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
         {
             float _e209 = spread;
             float _e210 = l_cur;
-            uint _e211 = k_10;
+            uint _e211 = k_11;
             spread = (_e209 + (_e210 * abs(_e54[_e211])));
-            uint _e216 = k_10;
+            uint _e216 = k_11;
             float kf_2 = float(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
@@ -1676,7 +1753,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     return _e250;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
+AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
     bool local_12 = false;
     bool local_13 = false;
     if (half_7.second) {
@@ -1686,7 +1763,7 @@ AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_8, float sig
     }
     bool _e13 = local_12;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -1696,14 +1773,14 @@ AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_8, float sig
     }
     bool _e26 = local_13;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint count_1 = 1u;
@@ -1721,7 +1798,7 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float s
     if (!((hi > lo))) {
         return 0.0;
     }
-    AirlightPanel _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
+    AirlightPanel _e38 = airlight_panel(s_7, g_11, sigma_6, half_8, lo, hi);
     float _e39 = f_max_4;
     f_max_4 = max(_e39, _e38.f_max);
     list[0] = vec4(lo, hi, _e38.value, _e38.error);
@@ -1824,8 +1901,8 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float s
                 list[_e158].w = 0.0;
             } else {
                 float mid = (a_17 + ((b_14 - a_17) * 0.5));
-                AirlightPanel _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
-                AirlightPanel _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
+                AirlightPanel _e166 = airlight_panel(s_7, g_11, sigma_6, half_8, a_17, mid);
+                AirlightPanel _e167 = airlight_panel(s_7, g_11, sigma_6, half_8, mid, b_14);
                 float _e168 = f_max_4;
                 f_max_4 = max(_e168, max(_e166.f_max, _e167.f_max));
                 uint _e173 = worst;
@@ -1877,14 +1954,14 @@ float airlight_bounded(float a_9) {
     return (1.0 / (a_9 + _e1));
 }
 
-vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_11) {
+vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_12) {
     bool local_17 = false;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
-    float a0_ = (k_11 + (sigma_7 * d_el));
+    float a0_ = (k_12 + (sigma_7 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_11 - (sigma_7 * d_el));
+    float c0_ = (k_12 - (sigma_7 * d_el));
     float scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale > 0.0)))) {
         bool _e21 = airlight_is_finite(scale);
@@ -1919,7 +1996,7 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_11) {
     return vec2(_e63, _e64);
 }
 
-float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float k_in = 0.0;
     float k_out = 0.0;
@@ -1934,7 +2011,7 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
     bool local_19 = false;
     bool local_20 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_8, g_10, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
+        float _e11 = airlight_integrand(s_8, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
@@ -1951,9 +2028,9 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
             k_out = _e36;
         }
         float _e39 = k_in;
-        vec2 _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
+        vec2 _e40 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e39);
         float _e43 = k_out;
-        vec2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
+        vec2 _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
         cuts = float[4](_e40.x, _e40.y, _e44.x, _e44.y);
         bool loop_init_34 = true;
         while(true) {
@@ -2066,7 +2143,7 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
                 float _e146 = total_1;
                 float _e147 = lo_1;
                 float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
+                float _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_1 = (_e146 + _e149);
                 float _e151 = hi_1;
                 lo_1 = _e151;
@@ -2089,8 +2166,8 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
     return _e167;
 }
 
-float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, float j_6) {
-    float plain_1 = (((((2.0 * sigma_s) * intensity) / h_1) * exp(-(x_7))) * j_6);
+float airlight_weighted(float sigma_s_1, float intensity_3, float h_1, float x_7, float j_6) {
+    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_1) * exp(-(x_7))) * j_6);
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -2098,37 +2175,37 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, fl
     if (!((abs(j_6) > 0.0))) {
         return 0.0;
     }
-    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
+    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-float airlight_on_line(AirlightScene s_9, AirlightCanonical g_11) {
+float airlight_on_line(AirlightScene s_9, AirlightCanonical g_13) {
     bool local_21 = false;
     float span = 0.0;
     float e2_[16] = float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail_1 = 0.0;
-    if (!(g_11.t_hi_infinite)) {
-        local_21 = (g_11.x_h > g_11.t_hi);
+    if (!(g_13.t_hi_infinite)) {
+        local_21 = (g_13.x_h > g_13.t_hi);
     } else {
         local_21 = false;
     }
     bool _e10 = local_21;
     if (_e10) {
-        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
         float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
         float f_1 = (_e16 * _e22);
-        float r0_ = (g_11.x_h - g_11.t_lo);
-        float r1_1 = (g_11.x_h - g_11.t_hi);
-        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_1 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1)));
+        float r0_ = (g_13.x_h - g_13.t_lo);
+        float r1_1 = (g_13.x_h - g_13.t_hi);
+        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_1 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
     float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
     float f_2 = (_e46 * _e52);
-    float s0_ = (g_11.t_lo - g_11.x_h);
-    float s1_ = (g_11.t_hi - g_11.x_h);
+    float s0_ = (g_13.t_lo - g_13.x_h);
+    float s1_ = (g_13.t_hi - g_13.x_h);
     if ((s_9.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_11.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
@@ -2141,7 +2218,7 @@ float airlight_on_line(AirlightScene s_9, AirlightCanonical g_11) {
     airlight_en_scaled((two_st * s0_), 2u, e2_);
     float _e91 = e2_[1];
     float _e94 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * s0_), ((f_2 * _e91) / s0_));
-    if (!(g_11.t_hi_infinite)) {
+    if (!(g_13.t_hi_infinite)) {
         airlight_en_scaled((two_st * s1_), 2u, e2_);
         float _e111 = e2_[1];
         float _e114 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e111) / s1_));
@@ -2165,19 +2242,19 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_h_1) {
+float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
     bool local_22 = false;
     bool local_23 = false;
     float x_8 = 0.0;
-    float h_2 = g_12.h;
-    float a_s = ((g_12.x_h - g_12.t_lo) / h_2);
+    float h_2 = g_14.h;
+    float a_s = ((g_14.x_h - g_14.t_lo) / h_2);
     float _e8 = airlight_hypot_one(a_s);
     float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_12.t_hi - g_12.x_h) / h_2);
-    if (!(g_12.t_hi_infinite)) {
+    float u_e = ((g_14.t_hi - g_14.x_h) / h_2);
+    if (!(g_14.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
         local_22 = _e24;
     } else {
@@ -2187,7 +2264,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
@@ -2210,7 +2287,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
+    float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_10);
     float j_8 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
@@ -2218,7 +2295,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
         x_8 = (big_h_1 * _e8);
     } else {
         if ((s_10.sigma_t > 0.0)) {
-            x_8 = (s_10.sigma_t * abs((g_12.x_h - g_12.t_lo)));
+            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
         }
     }
     float _e72 = x_8;
@@ -2226,7 +2303,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     return _e73;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_13) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_15) {
     bool local_24 = false;
     bool local_25 = false;
     bool local_26 = false;
@@ -2253,9 +2330,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     bool infinite_2 = true;
     bool local_40 = false;
     bool local_41 = false;
-    float t0_ = g_13.t_lo;
-    float t1_ = g_13.t_hi;
-    if (!(g_13.t_hi_infinite)) {
+    float t0_ = g_15.t_lo;
+    float t1_ = g_15.t_hi;
+    if (!(g_15.t_hi_infinite)) {
         local_24 = (t1_ > t0_);
     } else {
         local_24 = true;
@@ -2270,10 +2347,10 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
-    float h_3 = g_13.h;
-    float x_h = g_13.x_h;
+    float h_3 = g_15.h;
+    float x_h = g_15.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_27 = (x_h <= t1_);
         } else {
             local_27 = true;
@@ -2299,7 +2376,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e55 = local_28;
     if (_e55) {
-        float _e56 = airlight_on_line(s_11, g_13);
+        float _e56 = airlight_on_line(s_11, g_15);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
@@ -2349,7 +2426,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e120 = local_35;
     if (_e120) {
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_37 = (x_h < t1_);
         } else {
             local_37 = true;
@@ -2361,13 +2438,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e131 = local_36;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_11, g_13, big_h_4);
+        float _e132 = airlight_whole_line(s_11, g_15, big_h_4);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((t0_ < x_h)) {
         float a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_38 = (t1_ < x_h);
         } else {
             local_38 = false;
@@ -2386,12 +2463,12 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float dy_1 = (((((_e159 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
         float _e172 = airlight_optical(big_h_4, dy_1, false);
         AirlightHalf half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        float _e176 = airlight_half(s_11, g_13, -1.0, half_11, isotropic_1, f_max_6);
+        float _e176 = airlight_half(s_11, g_15, -1.0, half_11, isotropic_1, f_max_6);
         float _e177 = total_2;
         float _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
         total_2 = (_e177 + _e181);
     }
-    if (!(g_13.t_hi_infinite)) {
+    if (!(g_15.t_hi_infinite)) {
         local_39 = (t1_ > x_h);
     } else {
         local_39 = true;
@@ -2404,7 +2481,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float _e194 = airlight_bounded(a_s_2);
         dy = _e194;
         float a_e_1 = ((t1_ - x_h) / h_3);
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             bool _e208 = airlight_is_finite(a_e_1);
             local_40 = _e208;
         } else {
@@ -2439,7 +2516,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float _e239 = dv_3;
         bool _e240 = infinite_2;
         AirlightHalf half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        float _e243 = airlight_half(s_11, g_13, 1.0, half_12, isotropic_1, f_max_6);
+        float _e243 = airlight_half(s_11, g_15, 1.0, half_12, isotropic_1, f_max_6);
         float _e244 = total_2;
         float _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
         total_2 = (_e244 + _e252);
@@ -2833,10 +2910,10 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     vec2 _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
     vec3 hi_2 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_2 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir = s_14.dir;
+    vec3 dir_2 = s_14.dir;
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir);
+        bool _e38 = airlight_in_exact_range(dir_2);
         local_74 = !(_e38);
     } else {
         local_74 = true;
@@ -2845,23 +2922,23 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, key_4);
-    vec3 w_2 = vec3((_e46 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e59 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e72 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
-    bool _e82 = airlight_vec_finite(w_2);
+    float _e46 = airlight_diff_of_products(hi_2.y, dir_2.z, hi_2.z, dir_2.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_2.z, dir_2.x, hi_2.x, dir_2.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_2.x, dir_2.y, hi_2.y, dir_2.x, key_4);
+    vec3 w_3 = vec3((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
+    bool _e82 = airlight_vec_finite(w_3);
     if (!(_e82)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_2);
+    float _e85 = airlight_safe_length(w_3);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
         AirlightCanonical _e92 = out_2;
         return _e92;
     }
-    float _e93 = airlight_safe_length(dir);
+    float _e93 = airlight_safe_length(dir_2);
     float h_4 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
@@ -2877,8 +2954,8 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
         vec3 _e112 = airlight_normalize(s_14.light_axis);
         a_14 = _e112;
     }
-    vec3 _e113 = airlight_normalize(dir);
-    vec3 _e114 = airlight_normalize(w_2);
+    vec3 _e113 = airlight_normalize(dir_2);
+    vec3 _e114 = airlight_normalize(w_3);
     vec3 n_5 = -(cross(_e113, _e114));
     out_2.h = h_4;
     vec3 _e119 = a_14;

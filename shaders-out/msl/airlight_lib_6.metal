@@ -41,6 +41,33 @@ struct AirlightResult {
     float in_scatter;
     uint status;
 };
+struct AirlightRay {
+    metal::packed_float3 origin;
+    float t_min;
+    metal::packed_float3 dir;
+    float t_max;
+    uint flags;
+    char _pad5[12];
+};
+struct AirlightLight {
+    metal::packed_float3 position;
+    float intensity;
+    metal::packed_float3 axis;
+    float param_a;
+    float param_b;
+    uint kind;
+    char _pad6[8];
+};
+struct AirlightMedium {
+    float sigma_s;
+    float sigma_t;
+};
+struct AirlightPhase {
+    uint kind;
+    float param_a;
+    float param_b;
+    float param_c;
+};
 struct AirlightCanonical {
     float h;
     float x_h;
@@ -138,6 +165,101 @@ airlight_type_4 airlight_ein_coefficients(
     return airlight_type_4 {{1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 0.000028344672, -0.0000031001985, 0.00000030619245, -0.00000002755732, 0.0000000022774644, -0.00000000017397297, 0.000000000012353111, -0.00000000000081933895}};
 }
 
+AirlightRay airlight_ray(
+    metal::float3 origin,
+    metal::float3 dir,
+    float t_min,
+    float t_max
+) {
+    return AirlightRay {origin, t_min, dir, t_max, 0u};
+}
+
+AirlightRay airlight_ray_to_infinity(
+    metal::float3 origin_1,
+    metal::float3 dir_1,
+    float t_min_1
+) {
+    return AirlightRay {origin_1, t_min_1, dir_1, 0.0, 1u};
+}
+
+AirlightLight airlight_omni(
+    metal::float3 position,
+    float intensity
+) {
+    return AirlightLight {position, intensity, metal::float3(0.0, 0.0, 1.0), 0.0, 0.0, AIRLIGHT_LIGHT_OMNI};
+}
+
+AirlightLight airlight_two_lobed(
+    metal::float3 position_1,
+    float intensity_1,
+    metal::float3 axis,
+    uint power
+) {
+    return AirlightLight {position_1, intensity_1, axis, static_cast<float>(power), 0.0, AIRLIGHT_LIGHT_TWO_LOBED};
+}
+
+AirlightLight airlight_spot(
+    metal::float3 position_2,
+    float intensity_2,
+    metal::float3 axis_1,
+    float cos_inner,
+    float cos_outer
+) {
+    return AirlightLight {position_2, intensity_2, axis_1, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT};
+}
+
+AirlightMedium airlight_medium(
+    float sigma_s,
+    float sigma_t
+) {
+    return AirlightMedium {sigma_s, sigma_t};
+}
+
+AirlightPhase airlight_isotropic(
+) {
+    return AirlightPhase {0u, 0.0, 0.0, 0.0};
+}
+
+AirlightPhase airlight_rayleigh(
+) {
+    return AirlightPhase {1u, 0.0, 0.0, 0.0};
+}
+
+AirlightPhase airlight_henyey_greenstein(
+    float g
+) {
+    return AirlightPhase {AIRLIGHT_PHASE_HENYEY_GREENSTEIN, g, 0.0, 0.0};
+}
+
+AirlightPhase airlight_schlick(
+    float k
+) {
+    return AirlightPhase {AIRLIGHT_PHASE_SCHLICK, k, 0.0, 0.0};
+}
+
+AirlightPhase airlight_cornette_shanks(
+    float g_1
+) {
+    return AirlightPhase {AIRLIGHT_PHASE_CORNETTE_SHANKS, g_1, 0.0, 0.0};
+}
+
+AirlightPhase airlight_two_lobe_henyey_greenstein(
+    float g1_,
+    float g2_,
+    float w
+) {
+    return AirlightPhase {AIRLIGHT_PHASE_TWO_LOBE_HG, g1_, g2_, w};
+}
+
+AirlightScene airlight_scene(
+    AirlightRay ray,
+    AirlightLight light,
+    AirlightMedium medium,
+    AirlightPhase phase
+) {
+    return AirlightScene {ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis, light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light.kind, phase.kind, ray.flags};
+}
+
 metal::float2 airlight_cmul(
     metal::float2 a,
     metal::float2 b
@@ -196,7 +318,7 @@ metal::float2 airlight_cos_sin(
 ) {
     float c = 0.0;
     float s = 0.0;
-    uint k = 0u;
+    uint k_1 = 0u;
     float fc = {};
     uint j = {};
     float z_8 = x * x;
@@ -206,17 +328,17 @@ metal::float2 airlight_cos_sin(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e55 = k;
-            k = _e55 + 1u;
+            uint _e55 = k_1;
+            k_1 = _e55 + 1u;
         }
         loop_init = false;
-        uint _e8 = k;
+        uint _e8 = k_1;
         if (_e8 < 9u) {
         } else {
             break;
         }
         {
-            uint _e12 = k;
+            uint _e12 = k_1;
             uint n_3 = 8u - _e12;
             float _e14 = c;
             c = _e14 * z_8;
@@ -309,7 +431,7 @@ float airlight_log1p(
     float x_2
 ) {
     float sum = 0.0;
-    uint k_1 = 0u;
+    uint k_2 = 0u;
     if (x_2 > 1.0) {
         return metal::log(1.0 + x_2);
     }
@@ -321,18 +443,18 @@ float airlight_log1p(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e31 = k_1;
-            k_1 = _e31 + 1u;
+            uint _e31 = k_2;
+            k_2 = _e31 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = k_1;
+        uint _e14 = k_2;
         if (_e14 < 9u) {
         } else {
             break;
         }
         {
             float _e17 = sum;
-            uint _e21 = k_1;
+            uint _e21 = k_2;
             sum = (_e17 * s2_) + (1.0 / static_cast<float>((2u * (8u - _e21)) + 1u));
         }
     }
@@ -350,7 +472,7 @@ metal::float2 airlight_ein(
     metal::float2 z_4
 ) {
     metal::float2 sum_1 = metal::float2(0.0, 0.0);
-    uint k_2 = 0u;
+    uint k_3 = 0u;
     airlight_type_4 _e1 = airlight_ein_coefficients();
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -358,11 +480,11 @@ metal::float2 airlight_ein(
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e21 = k_2;
-            k_2 = _e21 + 1u;
+            uint _e21 = k_3;
+            k_3 = _e21 + 1u;
         }
         loop_init_3 = false;
-        uint _e8 = k_2;
+        uint _e8 = k_3;
         if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
@@ -370,7 +492,7 @@ metal::float2 airlight_ein(
         {
             metal::float2 _e11 = sum_1;
             metal::float2 _e12 = airlight_cmul(_e11, z_4);
-            uint _e14 = k_2;
+            uint _e14 = k_3;
             sum_1 = _e12 + metal::float2(_e1.inner[metal::min(unsigned(13u - _e14), 13u)], 0.0);
         }
     }
@@ -386,7 +508,7 @@ metal::float2 airlight_ein_divided_difference(
     metal::float2 h = metal::float2(1.0, 0.0);
     metal::float2 a_pow = metal::float2(1.0, 0.0);
     metal::float2 sum_2 = metal::float2(0.0, 0.0);
-    uint k_3 = 0u;
+    uint k_4 = 0u;
     airlight_type_4 _e2 = airlight_ein_coefficients();
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_4 = true;
@@ -394,11 +516,11 @@ metal::float2 airlight_ein_divided_difference(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e33 = k_3;
-            k_3 = _e33 + 1u;
+            uint _e33 = k_4;
+            k_4 = _e33 + 1u;
         }
         loop_init_4 = false;
-        uint _e17 = k_3;
+        uint _e17 = k_4;
         if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
@@ -406,7 +528,7 @@ metal::float2 airlight_ein_divided_difference(
         {
             metal::float2 _e20 = sum_2;
             metal::float2 _e21 = h;
-            uint _e22 = k_3;
+            uint _e22 = k_4;
             sum_2 = _e20 + (_e21 * _e2.inner[metal::min(unsigned(_e22), 13u)]);
             metal::float2 _e26 = a_pow;
             metal::float2 _e27 = airlight_cmul(_e26, a_2);
@@ -713,25 +835,25 @@ void airlight_en_scaled(
 }
 
 float airlight_hg_base(
-    float g,
+    float g_2,
     float om,
     float op
 ) {
-    if (g >= 0.0) {
-        float a_16 = 1.0 - g;
-        return (om * (g + g)) + (a_16 * a_16);
+    if (g_2 >= 0.0) {
+        float a_16 = 1.0 - g_2;
+        return (om * (g_2 + g_2)) + (a_16 * a_16);
     }
-    float b_13 = 1.0 + g;
-    return (op * -((g + g))) + (b_13 * b_13);
+    float b_13 = 1.0 + g_2;
+    return (op * -((g_2 + g_2))) + (b_13 * b_13);
 }
 
 float airlight_hg(
-    float g_1,
+    float g_3,
     float om_1,
     float op_1
 ) {
-    float _e3 = airlight_hg_base(g_1, om_1, op_1);
-    return (((1.0 - g_1) * (1.0 + g_1)) / 12.566371) / (_e3 * metal::sqrt(_e3));
+    float _e3 = airlight_hg_base(g_3, om_1, op_1);
+    return (((1.0 - g_3) * (1.0 + g_3)) / 12.566371) / (_e3 * metal::sqrt(_e3));
 }
 
 float airlight_phase(
@@ -853,7 +975,7 @@ float airlight_light(
 
 metal::float2 airlight_integrand_over(
     AirlightScene s_1,
-    AirlightCanonical g_2,
+    AirlightCanonical g_4,
     float sigma,
     float y_1
 ) {
@@ -863,7 +985,7 @@ metal::float2 airlight_integrand_over(
     float inv_2 = 1.0 / (1.0 + y2_);
     float om_3 = 1.0 - y2_;
     float mu_2 = -(sigma) * (om_3 * inv_2);
-    float c_7 = (((sigma * g_2.d_el) * om_3) + ((2.0 * g_2.d_c) * y_1)) * inv_2;
+    float c_7 = (((sigma * g_4.d_el) * om_3) + ((2.0 * g_4.d_c) * y_1)) * inv_2;
     float far = (y2_ * inv_2) * 2.0;
     float near = inv_2 * 2.0;
     minus = near;
@@ -882,11 +1004,11 @@ metal::float2 airlight_integrand_over(
 
 float airlight_integrand(
     AirlightScene s_2,
-    AirlightCanonical g_3,
+    AirlightCanonical g_5,
     float sigma_1,
     float y_2
 ) {
-    metal::float2 _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+    metal::float2 _e4 = airlight_integrand_over(s_2, g_5, sigma_1, y_2);
     return _e4.x;
 }
 
@@ -1104,10 +1226,10 @@ float airlight_node(
 }
 
 airlight_type_2 airlight_legendre(
-    airlight_type_2 g_4
+    airlight_type_2 g_6
 ) {
     airlight_type_2 c_2 = {};
-    uint k_4 = 0u;
+    uint k_5 = 0u;
     float sum_3 = {};
     uint j_2 = {};
     airlight_type_12 _e1 = airlight_legendre_table();
@@ -1119,11 +1241,11 @@ airlight_type_2 airlight_legendre(
         if (metal::all(loop_bound_12 == uint2(0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_12) {
-            uint _e50 = k_4;
-            k_4 = _e50 + 1u;
+            uint _e50 = k_5;
+            k_5 = _e50 + 1u;
         }
         loop_init_12 = false;
-        uint _e6 = k_4;
+        uint _e6 = k_5;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1148,18 +1270,18 @@ airlight_type_2 airlight_legendre(
                 }
                 {
                     uint _e17 = j_2;
-                    float minus_1 = g_4.inner[metal::min(unsigned(2u * _e17), 5u)];
+                    float minus_1 = g_6.inner[metal::min(unsigned(2u * _e17), 5u)];
                     uint _e21 = j_2;
-                    float plus_1 = g_4.inner[metal::min(unsigned((2u * _e21) + 1u), 5u)];
-                    uint _e28 = k_4;
+                    float plus_1 = g_6.inner[metal::min(unsigned((2u * _e21) + 1u), 5u)];
+                    uint _e28 = k_5;
                     float pair = (airlight_naga_mod(_e28, 2u) == 0u) ? (plus_1 + minus_1) : (plus_1 - minus_1);
                     float _e34 = sum_3;
-                    uint _e35 = k_4;
+                    uint _e35 = k_5;
                     uint _e38 = j_2;
                     sum_3 = _e34 + (_e1.inner[metal::min(unsigned((_e35 * AIRLIGHT_HALF_TERMS) + _e38), 17u)] * pair);
                 }
             }
-            uint _e46 = k_4;
+            uint _e46 = k_5;
             float _e48 = sum_3;
             c_2.inner[metal::min(unsigned(_e46), 5u)] = _e48;
         }
@@ -1211,8 +1333,8 @@ airlight_type_2 airlight_exp_legendre_moments(
     uint i_6 = 0u;
     uint j_3 = {};
     uint j_4 = 0u;
-    uint k_5 = 1u;
-    uint k_6 = 0u;
+    uint k_6 = 1u;
+    uint k_7 = 0u;
     airlight_type_2 _e1 = airlight_zero_terms();
     out_1 = _e1;
     if (!((lambda > 0.0))) {
@@ -1259,10 +1381,10 @@ airlight_type_2 airlight_exp_legendre_moments(
                         break;
                     }
                     uint _e67 = i_6;
-                    uint k_12 = top - _e67;
-                    if (k_12 < AIRLIGHT_TERMS) {
+                    uint k_13 = top - _e67;
+                    if (k_13 < AIRLIGHT_TERMS) {
                         float _e71 = cur;
-                        out_1.inner[metal::min(unsigned(k_12), 5u)] = _e71;
+                        out_1.inner[metal::min(unsigned(k_13), 5u)] = _e71;
                     }
                     float _e72 = above;
                     float _e73 = odd;
@@ -1339,21 +1461,21 @@ airlight_type_2 airlight_exp_legendre_moments(
                 if (metal::all(loop_bound_18 == uint2(0u))) { break; }
                 loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
                 if (!loop_init_18) {
-                    uint _e163 = k_5;
-                    k_5 = _e163 + 1u;
+                    uint _e163 = k_6;
+                    k_6 = _e163 + 1u;
                 }
                 loop_init_18 = false;
-                uint _e136 = k_5;
+                uint _e136 = k_6;
                 if ((_e136 + 1u) < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    uint _e141 = k_5;
-                    uint _e145 = k_5;
+                    uint _e141 = k_6;
+                    uint _e145 = k_6;
                     float _e149 = out_1.inner[metal::min(unsigned(_e145 - 1u), 5u)];
-                    uint _e151 = k_5;
-                    uint _e157 = k_5;
+                    uint _e151 = k_6;
+                    uint _e157 = k_6;
                     float _e159 = out_1.inner[metal::min(unsigned(_e157), 5u)];
                     out_1.inner[metal::min(unsigned(_e141 + 1u), 5u)] = _e149 - ((static_cast<float>((2u * _e151) + 1u) / lambda) * _e159);
                 }
@@ -1366,19 +1488,19 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e183 = k_6;
-            k_6 = _e183 + 1u;
+            uint _e183 = k_7;
+            k_7 = _e183 + 1u;
         }
         loop_init_19 = false;
-        uint _e167 = k_6;
+        uint _e167 = k_7;
         if (_e167 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e170 = k_6;
+            uint _e170 = k_7;
             float _e172 = out_1.inner[metal::min(unsigned(_e170), 5u)];
-            uint _e173 = k_6;
+            uint _e173 = k_7;
             out_1.inner[metal::min(unsigned(_e170), 5u)] = _e172 * ((airlight_naga_mod(_e173, 2u) == 1u) ? -2.0 : 2.0);
         }
     }
@@ -1473,7 +1595,7 @@ AirlightPanel airlight_panel_result(
 
 AirlightPanel airlight_v_panel(
     AirlightScene s_3,
-    AirlightCanonical g_5,
+    AirlightCanonical g_7,
     float sigma_2,
     AirlightHalf half_4,
     float a_5,
@@ -1487,7 +1609,7 @@ AirlightPanel airlight_v_panel(
     float g_avg = 0.0;
     uint i_8 = 0u;
     float sum_5 = 0.0;
-    uint k_7 = 0u;
+    uint k_8 = 0u;
     airlight_type_10 _e6 = airlight_gauss_rule();
     r_1 = (b_4 - a_5) * 0.5;
     float _e11 = r_1;
@@ -1520,7 +1642,7 @@ AirlightPanel airlight_v_panel(
             uint _e39 = i_8;
             float _e40 = airlight_node(_e6, _e39);
             float v_5 = _e37 + (_e38 * _e40);
-            metal::float2 _e46 = airlight_integrand_over(s_3, g_5, half_4.second ? -(sigma_2) : sigma_2, v_5);
+            metal::float2 _e46 = airlight_integrand_over(s_3, g_7, half_4.second ? -(sigma_2) : sigma_2, v_5);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_8;
@@ -1546,26 +1668,26 @@ AirlightPanel airlight_v_panel(
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e95 = k_7;
-            k_7 = _e95 + 1u;
+            uint _e95 = k_8;
+            k_8 = _e95 + 1u;
         }
         loop_init_22 = false;
-        uint _e84 = k_7;
+        uint _e84 = k_8;
         if (_e84 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             float _e87 = sum_5;
-            uint _e88 = k_7;
-            uint _e90 = k_7;
+            uint _e88 = k_8;
+            uint _e90 = k_8;
             sum_5 = _e87 + (_e75.inner[metal::min(unsigned(_e88), 5u)] * _e79.inner[metal::min(unsigned(_e90), 5u)]);
         }
     }
     float _e97 = airlight_factor(half_4, a_5, b_4);
     float _e98 = r_1;
-    float w = _e97 * _e98;
-    float mass_4 = w * _e79.inner[0];
+    float w_1 = _e97 * _e98;
+    float mass_4 = w_1 * _e79.inner[0];
     float _e102 = airlight_tail_estimate(_e75);
     float _e104 = airlight_error_factor(_e75, _e79);
     float error_1 = (mass_4 * _e102) * _e104;
@@ -1574,13 +1696,13 @@ AirlightPanel airlight_v_panel(
     float _e109 = airlight_transform_noise(mass_4, _e108);
     float _e110 = over_max;
     float _e112 = f_max_1;
-    AirlightPanel _e113 = airlight_panel_result(w * _e106, error_1, _e109, mass_4 * _e110, _e112);
+    AirlightPanel _e113 = airlight_panel_result(w_1 * _e106, error_1, _e109, mass_4 * _e110, _e112);
     return _e113;
 }
 
 AirlightPanel airlight_y_panel(
     AirlightScene s_4,
-    AirlightCanonical g_6,
+    AirlightCanonical g_8,
     float sigma_3,
     AirlightHalf half_5,
     float a_6,
@@ -1618,7 +1740,7 @@ AirlightPanel airlight_y_panel(
             float _e27 = airlight_node(_e6, _e26);
             float y_5 = yc_1 + (r_4 * _e27);
             float weight = metal::exp((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5));
-            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
+            float _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
             float over_1 = 1.0 / (1.0 + (y_5 * y_5));
             uint _e45 = i_9;
             samples_1.inner[metal::min(unsigned(_e45), 5u)] = (_e39 * over_1) * weight;
@@ -1639,20 +1761,20 @@ AirlightPanel airlight_y_panel(
     airlight_type_2 _e79 = samples_1;
     airlight_type_2 _e80 = airlight_legendre(_e79);
     float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = _e81 * r_4;
+    float w_2 = _e81 * r_4;
     airlight_type_2 _e83 = airlight_zero_terms();
     m_2 = _e83;
     m_2.inner[0] = 2.0;
     float _e89 = airlight_tail_estimate(_e80);
     airlight_type_2 _e91 = m_2;
     float _e92 = airlight_error_factor(_e80, _e91);
-    float error_2 = ((w_1 * 2.0) * _e89) * _e92;
+    float error_2 = ((w_2 * 2.0) * _e89) * _e92;
     float _e100 = p_avg;
-    float _e101 = airlight_transform_noise(w_1 * 2.0, _e100);
+    float _e101 = airlight_transform_noise(w_2 * 2.0, _e100);
     float _e102 = mass_1;
     float _e104 = over_max_1;
     float _e106 = f_max_2;
-    AirlightPanel _e107 = airlight_panel_result((w_1 * 2.0) * _e80.inner[0], error_2, _e101, (w_1 * _e102) * _e104, _e106);
+    AirlightPanel _e107 = airlight_panel_result((w_2 * 2.0) * _e80.inner[0], error_2, _e101, (w_2 * _e102) * _e104, _e106);
     return _e107;
 }
 
@@ -1660,7 +1782,7 @@ airlight_type_2 airlight_legendre_to_monomial(
     airlight_type_2 c_5
 ) {
     airlight_type_2 hat = {};
-    uint k_8 = 0u;
+    uint k_9 = 0u;
     uint i_10 = {};
     airlight_type_11 _e1 = airlight_legendre_monomial();
     airlight_type_2 _e2 = airlight_zero_terms();
@@ -1671,11 +1793,11 @@ airlight_type_2 airlight_legendre_to_monomial(
         if (metal::all(loop_bound_24 == uint2(0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e31 = k_8;
-            k_8 = _e31 + 1u;
+            uint _e31 = k_9;
+            k_9 = _e31 + 1u;
         }
         loop_init_24 = false;
-        uint _e6 = k_8;
+        uint _e6 = k_9;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1693,7 +1815,7 @@ airlight_type_2 airlight_legendre_to_monomial(
                 }
                 loop_init_25 = false;
                 uint _e11 = i_10;
-                uint _e12 = k_8;
+                uint _e12 = k_9;
                 if (_e11 <= _e12) {
                 } else {
                     break;
@@ -1701,8 +1823,8 @@ airlight_type_2 airlight_legendre_to_monomial(
                 {
                     uint _e14 = i_10;
                     float _e16 = hat.inner[metal::min(unsigned(_e14), 5u)];
-                    uint _e17 = k_8;
-                    uint _e19 = k_8;
+                    uint _e17 = k_9;
+                    uint _e19 = k_9;
                     uint _e22 = i_10;
                     hat.inner[metal::min(unsigned(_e14), 5u)] = _e16 + (c_5.inner[metal::min(unsigned(_e17), 5u)] * _e1.inner[metal::min(unsigned((_e19 * AIRLIGHT_TERMS) + _e22), 35u)]);
                 }
@@ -1715,7 +1837,7 @@ airlight_type_2 airlight_legendre_to_monomial(
 
 AirlightPanel airlight_tail_panel(
     AirlightScene s_5,
-    AirlightCanonical g_7,
+    AirlightCanonical g_9,
     float sigma_4,
     AirlightHalf half_6,
     float a_7,
@@ -1739,12 +1861,12 @@ AirlightPanel airlight_tail_panel(
     float mass_2 = 0.0;
     float ratio_1 = 1.0;
     float ab = 0.0;
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     float tail = {};
     float l_prev = 0.0;
     float l_cur = 1.0;
     float spread = 0.0;
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     airlight_type_10 _e6 = airlight_gauss_rule();
     float r_5 = (b_6 - a_7) * 0.5;
     float yc_2 = a_7 + r_5;
@@ -1769,7 +1891,7 @@ AirlightPanel airlight_tail_panel(
             uint _e22 = i_11;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = yc_2 + (r_5 * _e23);
-            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
+            float _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
             uint _e27 = i_11;
             samples_2.inner[metal::min(unsigned(_e27), 5u)] = _e26 / (1.0 + (y_6 * y_6));
             float _e33 = f_max_3;
@@ -1880,11 +2002,11 @@ AirlightPanel airlight_tail_panel(
         if (metal::all(loop_bound_29 == uint2(0u))) { break; }
         loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
         if (!loop_init_29) {
-            uint _e190 = k_9;
-            k_9 = _e190 + 1u;
+            uint _e190 = k_10;
+            k_10 = _e190 + 1u;
         }
         loop_init_29 = false;
-        uint _e151 = k_9;
+        uint _e151 = k_10;
         if (_e151 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1895,20 +2017,20 @@ AirlightPanel airlight_tail_panel(
             if (_e156 > 0.0) {
                 float _e159 = decay;
                 float _e161 = ratio_1;
-                uint _e163 = k_9;
+                uint _e163 = k_10;
                 float _e167 = s_a.inner[metal::min(unsigned(_e163 + 1u), 15u)];
                 tail = ((_e159 * a_7) * _e161) * _e167;
             }
-            uint _e169 = k_9;
+            uint _e169 = k_10;
             float _e173 = s_b.inner[metal::min(unsigned(_e169 + 1u), 15u)];
             float _e175 = tail;
             float u = (b_6 * _e173) - _e175;
-            uint _e177 = k_9;
+            uint _e177 = k_10;
             if (_e177 == 0u) {
                 mass_2 = u;
             }
             float _e180 = sum_6;
-            uint _e181 = k_9;
+            uint _e181 = k_10;
             float _e183 = q.inner[metal::min(unsigned(_e181), 5u)];
             sum_6 = _e180 + (_e183 * u);
             float _e186 = ratio_1;
@@ -1926,11 +2048,11 @@ AirlightPanel airlight_tail_panel(
         if (metal::all(loop_bound_30 == uint2(0u))) { break; }
         loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
         if (!loop_init_30) {
-            uint _e232 = k_10;
-            k_10 = _e232 + 1u;
+            uint _e232 = k_11;
+            k_11 = _e232 + 1u;
         }
         loop_init_30 = false;
-        uint _e206 = k_10;
+        uint _e206 = k_11;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1938,9 +2060,9 @@ AirlightPanel airlight_tail_panel(
         {
             float _e209 = spread;
             float _e210 = l_cur;
-            uint _e211 = k_10;
+            uint _e211 = k_11;
             spread = _e209 + (_e210 * metal::abs(_e54.inner[metal::min(unsigned(_e211), 5u)]));
-            uint _e216 = k_10;
+            uint _e216 = k_11;
             float kf_2 = static_cast<float>(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
@@ -1967,7 +2089,7 @@ AirlightPanel airlight_tail_panel(
 
 AirlightPanel airlight_panel(
     AirlightScene s_6,
-    AirlightCanonical g_8,
+    AirlightCanonical g_10,
     float sigma_5,
     AirlightHalf half_7,
     float a_8,
@@ -1982,7 +2104,7 @@ AirlightPanel airlight_panel(
     }
     bool _e13 = local_12;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -1992,16 +2114,16 @@ AirlightPanel airlight_panel(
     }
     bool _e26 = local_13;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
 float airlight_integrate_piece(
     AirlightScene s_7,
-    AirlightCanonical g_9,
+    AirlightCanonical g_11,
     float sigma_6,
     AirlightHalf half_8,
     float lo,
@@ -2025,7 +2147,7 @@ float airlight_integrate_piece(
     if (!((hi > lo))) {
         return 0.0;
     }
-    AirlightPanel _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
+    AirlightPanel _e38 = airlight_panel(s_7, g_11, sigma_6, half_8, lo, hi);
     float _e39 = f_max_4;
     f_max_4 = metal::max(_e39, _e38.f_max);
     list.inner[0] = metal::float4(lo, hi, _e38.value, _e38.error);
@@ -2134,8 +2256,8 @@ float airlight_integrate_piece(
                 list.inner[metal::min(unsigned(_e158), 7u)].w = 0.0;
             } else {
                 float mid = a_17 + ((b_14 - a_17) * 0.5);
-                AirlightPanel _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
-                AirlightPanel _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
+                AirlightPanel _e166 = airlight_panel(s_7, g_11, sigma_6, half_8, a_17, mid);
+                AirlightPanel _e167 = airlight_panel(s_7, g_11, sigma_6, half_8, mid, b_14);
                 float _e168 = f_max_4;
                 f_max_4 = metal::max(_e168, metal::max(_e166.f_max, _e167.f_max));
                 uint _e173 = worst;
@@ -2196,15 +2318,15 @@ metal::float2 airlight_crossings(
     float sigma_7,
     float d_el,
     float d_c,
-    float k_11
+    float k_12
 ) {
     bool local_17 = {};
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
-    float a0_ = k_11 + (sigma_7 * d_el);
+    float a0_ = k_12 + (sigma_7 * d_el);
     float b0_ = -((d_c + d_c));
-    float c0_ = k_11 - (sigma_7 * d_el);
+    float c0_ = k_12 - (sigma_7 * d_el);
     float scale = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
     if (!(!((scale > 0.0)))) {
         bool _e21 = airlight_is_finite(scale);
@@ -2241,7 +2363,7 @@ metal::float2 airlight_crossings(
 
 float airlight_half(
     AirlightScene s_8,
-    AirlightCanonical g_10,
+    AirlightCanonical g_12,
     float sigma_8,
     AirlightHalf half_9,
     bool isotropic,
@@ -2261,7 +2383,7 @@ float airlight_half(
     bool local_19 = {};
     bool local_20 = {};
     if (isotropic) {
-        float _e11 = airlight_integrand(s_8, g_10, sigma_8, half_9.y_lo + (half_9.dy * 0.5));
+        float _e11 = airlight_integrand(s_8, g_12, sigma_8, half_9.y_lo + (half_9.dy * 0.5));
         float _e12 = airlight_moment_zero(half_9);
         return _e11 * _e12;
     }
@@ -2278,9 +2400,9 @@ float airlight_half(
             k_out = _e36;
         }
         float _e39 = k_in;
-        metal::float2 _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
+        metal::float2 _e40 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e39);
         float _e43 = k_out;
-        metal::float2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
+        metal::float2 _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
         cuts = airlight_type_17 {{_e40.x, _e40.y, _e44.x, _e44.y}};
         uint2 loop_bound_34 = uint2(4294967295u);
         bool loop_init_34 = true;
@@ -2405,7 +2527,7 @@ float airlight_half(
                 float _e146 = total_1;
                 float _e147 = lo_1;
                 float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
+                float _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_1 = _e146 + _e149;
                 float _e151 = hi_1;
                 lo_1 = _e151;
@@ -2429,13 +2551,13 @@ float airlight_half(
 }
 
 float airlight_weighted(
-    float sigma_s,
-    float intensity,
+    float sigma_s_1,
+    float intensity_3,
     float h_1,
     float x_7,
     float j_6
 ) {
-    float plain_1 = ((((2.0 * sigma_s) * intensity) / h_1) * metal::exp(-(x_7))) * j_6;
+    float plain_1 = ((((2.0 * sigma_s_1) * intensity_3) / h_1) * metal::exp(-(x_7))) * j_6;
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -2443,40 +2565,40 @@ float airlight_weighted(
     if (!((metal::abs(j_6) > 0.0))) {
         return 0.0;
     }
-    return metal::sign(j_6) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s)) + metal::log(intensity)) - metal::log(h_1)) - x_7) + metal::log(metal::abs(j_6)));
+    return metal::sign(j_6) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s_1)) + metal::log(intensity_3)) - metal::log(h_1)) - x_7) + metal::log(metal::abs(j_6)));
 }
 
 float airlight_on_line(
     AirlightScene s_9,
-    AirlightCanonical g_11
+    AirlightCanonical g_13
 ) {
     bool local_21 = {};
     float span = {};
     airlight_type_3 e2_ = {};
     float tail_1 = 0.0;
-    if (!(g_11.t_hi_infinite)) {
-        local_21 = g_11.x_h > g_11.t_hi;
+    if (!(g_13.t_hi_infinite)) {
+        local_21 = g_13.x_h > g_13.t_hi;
     } else {
         local_21 = false;
     }
     bool _e10 = local_21;
     if (_e10) {
-        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
         float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
         float f_1 = _e16 * _e22;
-        float r0_ = g_11.x_h - g_11.t_lo;
-        float r1_1 = g_11.x_h - g_11.t_hi;
-        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, s_9.sigma_t * r0_, f_1 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1));
+        float r0_ = g_13.x_h - g_13.t_lo;
+        float r1_1 = g_13.x_h - g_13.t_hi;
+        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, s_9.sigma_t * r0_, f_1 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1));
         return _e41;
     }
-    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
     float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
     float f_2 = _e46 * _e52;
-    float s0_ = g_11.t_lo - g_11.x_h;
-    float s1_ = g_11.t_hi - g_11.x_h;
+    float s0_ = g_13.t_lo - g_13.x_h;
+    float s1_ = g_13.t_hi - g_13.x_h;
     if (s_9.sigma_t == 0.0) {
         span = 1.0 / s0_;
-        if (!(g_11.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             span = ((s1_ - s0_) / s1_) / s0_;
         }
         float _e75 = span;
@@ -2489,7 +2611,7 @@ float airlight_on_line(
     airlight_en_scaled(two_st * s0_, 2u, e2_);
     float _e91 = e2_.inner[1];
     float _e94 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, s_9.sigma_t * s0_, (f_2 * _e91) / s0_);
-    if (!(g_11.t_hi_infinite)) {
+    if (!(g_13.t_hi_infinite)) {
         airlight_en_scaled(two_st * s1_, 2u, e2_);
         float _e111 = e2_.inner[1];
         float _e114 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_), (f_2 * _e111) / s1_);
@@ -2519,7 +2641,7 @@ float airlight_optical(
 
 float airlight_whole_line(
     AirlightScene s_10,
-    AirlightCanonical g_12,
+    AirlightCanonical g_14,
     float big_h_1
 ) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
@@ -2528,12 +2650,12 @@ float airlight_whole_line(
     bool local_22 = {};
     bool local_23 = {};
     float x_8 = 0.0;
-    float h_2 = g_12.h;
-    float a_s = (g_12.x_h - g_12.t_lo) / h_2;
+    float h_2 = g_14.h;
+    float a_s = (g_14.x_h - g_14.t_lo) / h_2;
     float _e8 = airlight_hypot_one(a_s);
     float _e9 = airlight_bounded(a_s);
-    float u_e = (g_12.t_hi - g_12.x_h) / h_2;
-    if (!(g_12.t_hi_infinite)) {
+    float u_e = (g_14.t_hi - g_14.x_h) / h_2;
+    if (!(g_14.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
         local_22 = _e24;
     } else {
@@ -2543,7 +2665,7 @@ float airlight_whole_line(
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
-        float dv_end = ((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27));
+        float dv_end = ((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27));
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
@@ -2566,7 +2688,7 @@ float airlight_whole_line(
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_10 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
-    float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
+    float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_10);
     float j_8 = _e54 * _e55;
     bool _e59 = airlight_is_finite(_e8);
@@ -2574,7 +2696,7 @@ float airlight_whole_line(
         x_8 = big_h_1 * _e8;
     } else {
         if (s_10.sigma_t > 0.0) {
-            x_8 = s_10.sigma_t * metal::abs(g_12.x_h - g_12.t_lo);
+            x_8 = s_10.sigma_t * metal::abs(g_14.x_h - g_14.t_lo);
         }
     }
     float _e72 = x_8;
@@ -2584,7 +2706,7 @@ float airlight_whole_line(
 
 AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_11,
-    AirlightCanonical g_13
+    AirlightCanonical g_15
 ) {
     bool local_24 = {};
     bool local_25 = {};
@@ -2612,9 +2734,9 @@ AirlightResult airlight_in_scatter_canonical(
     bool infinite_2 = true;
     bool local_40 = {};
     bool local_41 = {};
-    float t0_ = g_13.t_lo;
-    float t1_ = g_13.t_hi;
-    if (!(g_13.t_hi_infinite)) {
+    float t0_ = g_15.t_lo;
+    float t1_ = g_15.t_hi;
+    if (!(g_15.t_hi_infinite)) {
         local_24 = t1_ > t0_;
     } else {
         local_24 = true;
@@ -2629,10 +2751,10 @@ AirlightResult airlight_in_scatter_canonical(
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
-    float h_3 = g_13.h;
-    float x_h = g_13.x_h;
+    float h_3 = g_15.h;
+    float x_h = g_15.x_h;
     if (t0_ <= x_h) {
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_27 = x_h <= t1_;
         } else {
             local_27 = true;
@@ -2658,7 +2780,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e55 = local_28;
     if (_e55) {
-        float _e56 = airlight_on_line(s_11, g_13);
+        float _e56 = airlight_on_line(s_11, g_15);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (h_3 == 0.0) {
@@ -2708,7 +2830,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e120 = local_35;
     if (_e120) {
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_37 = x_h < t1_;
         } else {
             local_37 = true;
@@ -2720,13 +2842,13 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e131 = local_36;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_11, g_13, big_h_4);
+        float _e132 = airlight_whole_line(s_11, g_15, big_h_4);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (t0_ < x_h) {
         float a_s_1 = (x_h - t0_) / h_3;
         t_end = x_h;
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             local_38 = t1_ < x_h;
         } else {
             local_38 = false;
@@ -2745,12 +2867,12 @@ AirlightResult airlight_in_scatter_canonical(
         float dy_1 = ((((_e159 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158;
         float _e172 = airlight_optical(big_h_4, dy_1, false);
         AirlightHalf half_11 = AirlightHalf {false, {}, _e172, _e157, _e158, dy_1, dy_1, false};
-        float _e176 = airlight_half(s_11, g_13, -1.0, half_11, isotropic_1, f_max_6);
+        float _e176 = airlight_half(s_11, g_15, -1.0, half_11, isotropic_1, f_max_6);
         float _e177 = total_2;
         float _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, big_h_4 * _e155, _e176);
         total_2 = _e177 + _e181;
     }
-    if (!(g_13.t_hi_infinite)) {
+    if (!(g_15.t_hi_infinite)) {
         local_39 = t1_ > x_h;
     } else {
         local_39 = true;
@@ -2763,7 +2885,7 @@ AirlightResult airlight_in_scatter_canonical(
         float _e194 = airlight_bounded(a_s_2);
         dy = _e194;
         float a_e_1 = (t1_ - x_h) / h_3;
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             bool _e208 = airlight_is_finite(a_e_1);
             local_40 = _e208;
         } else {
@@ -2798,7 +2920,7 @@ AirlightResult airlight_in_scatter_canonical(
         float _e239 = dv_3;
         bool _e240 = infinite_2;
         AirlightHalf half_12 = AirlightHalf {true, {}, _e236, _e237, _e194, _e238, _e239, _e240};
-        float _e243 = airlight_half(s_11, g_13, 1.0, half_12, isotropic_1, f_max_6);
+        float _e243 = airlight_half(s_11, g_15, 1.0, half_12, isotropic_1, f_max_6);
         float _e244 = total_2;
         float _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193), _e243);
         total_2 = _e244 + _e252;
@@ -3228,10 +3350,10 @@ AirlightCanonical airlight_refined(
     metal::float2 _e23 = airlight_two_sum(s_14.light_position[2], -(s_14.origin[2]), key_4);
     metal::float3 hi_2 = metal::float3(_e11.x, _e17.x, _e23.x);
     metal::float3 lo_2 = metal::float3(_e11.y, _e17.y, _e23.y);
-    metal::float3 dir = s_14.dir;
+    metal::float3 dir_2 = s_14.dir;
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir);
+        bool _e38 = airlight_in_exact_range(dir_2);
         local_74 = !(_e38);
     } else {
         local_74 = true;
@@ -3243,20 +3365,20 @@ AirlightCanonical airlight_refined(
     float _e46 = airlight_diff_of_products(hi_2.y, s_14.dir[2], hi_2.z, s_14.dir[1], key_4);
     float _e59 = airlight_diff_of_products(hi_2.z, s_14.dir[0], hi_2.x, s_14.dir[2], key_4);
     float _e72 = airlight_diff_of_products(hi_2.x, s_14.dir[1], hi_2.y, s_14.dir[0], key_4);
-    metal::float3 w_2 = metal::float3(_e46 + ((lo_2.y * s_14.dir[2]) - (lo_2.z * s_14.dir[1])), _e59 + ((lo_2.z * s_14.dir[0]) - (lo_2.x * s_14.dir[2])), _e72 + ((lo_2.x * s_14.dir[1]) - (lo_2.y * s_14.dir[0])));
-    bool _e82 = airlight_vec_finite(w_2);
+    metal::float3 w_3 = metal::float3(_e46 + ((lo_2.y * s_14.dir[2]) - (lo_2.z * s_14.dir[1])), _e59 + ((lo_2.z * s_14.dir[0]) - (lo_2.x * s_14.dir[2])), _e72 + ((lo_2.x * s_14.dir[1]) - (lo_2.y * s_14.dir[0])));
+    bool _e82 = airlight_vec_finite(w_3);
     if (!(_e82)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_2);
+    float _e85 = airlight_safe_length(w_3);
     if (_e85 == 0.0) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
         AirlightCanonical _e92 = out_2;
         return _e92;
     }
-    float _e93 = airlight_safe_length(dir);
+    float _e93 = airlight_safe_length(dir_2);
     float h_4 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
@@ -3272,8 +3394,8 @@ AirlightCanonical airlight_refined(
         metal::float3 _e112 = airlight_normalize(s_14.light_axis);
         a_14 = _e112;
     }
-    metal::float3 _e113 = airlight_normalize(dir);
-    metal::float3 _e114 = airlight_normalize(w_2);
+    metal::float3 _e113 = airlight_normalize(dir_2);
+    metal::float3 _e114 = airlight_normalize(w_3);
     metal::float3 n_5 = -(metal::cross(_e113, _e114));
     out_2.h = h_4;
     metal::float3 _e119 = a_14;

@@ -25,6 +25,35 @@ struct AirlightResult {
     status: u32,
 }
 
+struct AirlightRay {
+    origin: vec3<f32>,
+    t_min: f32,
+    dir: vec3<f32>,
+    t_max: f32,
+    flags: u32,
+}
+
+struct AirlightLight {
+    position: vec3<f32>,
+    intensity: f32,
+    axis: vec3<f32>,
+    param_a: f32,
+    param_b: f32,
+    kind: u32,
+}
+
+struct AirlightMedium {
+    sigma_s: f32,
+    sigma_t: f32,
+}
+
+struct AirlightPhase {
+    kind: u32,
+    param_a: f32,
+    param_b: f32,
+    param_c: f32,
+}
+
 struct AirlightCanonical {
     h: f32,
     x_h: f32,
@@ -98,6 +127,58 @@ fn airlight_ein_coefficients() -> array<f32, 14> {
     return array<f32, 14>(1f, -0.25f, 0.055555556f, -0.010416667f, 0.0016666667f, -0.00023148148f, 0.000028344672f, -0.0000031001985f, 0.00000030619245f, -0.00000002755732f, 0.0000000022774644f, -0.00000000017397297f, 0.000000000012353111f, -0.00000000000081933895f);
 }
 
+fn airlight_ray(origin: vec3<f32>, dir: vec3<f32>, t_min: f32, t_max: f32) -> AirlightRay {
+    return AirlightRay(origin, t_min, dir, t_max, 0u);
+}
+
+fn airlight_ray_to_infinity(origin_1: vec3<f32>, dir_1: vec3<f32>, t_min_1: f32) -> AirlightRay {
+    return AirlightRay(origin_1, t_min_1, dir_1, 0f, 1u);
+}
+
+fn airlight_omni(position: vec3<f32>, intensity: f32) -> AirlightLight {
+    return AirlightLight(position, intensity, vec3<f32>(0f, 0f, 1f), 0f, 0f, AIRLIGHT_LIGHT_OMNI);
+}
+
+fn airlight_two_lobed(position_1: vec3<f32>, intensity_1: f32, axis: vec3<f32>, power: u32) -> AirlightLight {
+    return AirlightLight(position_1, intensity_1, axis, f32(power), 0f, AIRLIGHT_LIGHT_TWO_LOBED);
+}
+
+fn airlight_spot(position_2: vec3<f32>, intensity_2: f32, axis_1: vec3<f32>, cos_inner: f32, cos_outer: f32) -> AirlightLight {
+    return AirlightLight(position_2, intensity_2, axis_1, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT);
+}
+
+fn airlight_medium(sigma_s: f32, sigma_t: f32) -> AirlightMedium {
+    return AirlightMedium(sigma_s, sigma_t);
+}
+
+fn airlight_isotropic() -> AirlightPhase {
+    return AirlightPhase(0u, 0f, 0f, 0f);
+}
+
+fn airlight_rayleigh() -> AirlightPhase {
+    return AirlightPhase(1u, 0f, 0f, 0f);
+}
+
+fn airlight_henyey_greenstein(g: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_HENYEY_GREENSTEIN, g, 0f, 0f);
+}
+
+fn airlight_schlick(k: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_SCHLICK, k, 0f, 0f);
+}
+
+fn airlight_cornette_shanks(g_1: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_CORNETTE_SHANKS, g_1, 0f, 0f);
+}
+
+fn airlight_two_lobe_henyey_greenstein(g1_: f32, g2_: f32, w: f32) -> AirlightPhase {
+    return AirlightPhase(AIRLIGHT_PHASE_TWO_LOBE_HG, g1_, g2_, w);
+}
+
+fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis, light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light.kind, phase.kind, ray.flags);
+}
+
 fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(((a.x * b.x) - (a.y * b.y)), ((a.x * b.y) + (a.y * b.x)));
 }
@@ -145,19 +226,19 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     var c: f32 = 0f;
     var s: f32 = 0f;
-    var k: u32 = 0u;
+    var k_1: u32 = 0u;
     var fc: f32;
     var j: u32;
 
     let z_8 = (x * x);
     loop {
-        let _e8 = k;
+        let _e8 = k_1;
         if (_e8 < 9u) {
         } else {
             break;
         }
         {
-            let _e12 = k;
+            let _e12 = k_1;
             let n_3 = (8u - _e12);
             let _e14 = c;
             c = (_e14 * z_8);
@@ -190,8 +271,8 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             s = (_e44 + (sign_ / (_e45 * f32(((2u * n_3) + 1u)))));
         }
         continuing {
-            let _e55 = k;
-            k = (_e55 + 1u);
+            let _e55 = k_1;
+            k_1 = (_e55 + 1u);
         }
     }
     let _e57 = c;
@@ -243,7 +324,7 @@ fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
 
 fn airlight_log1p(x_2: f32) -> f32 {
     var sum: f32 = 0f;
-    var k_1: u32 = 0u;
+    var k_2: u32 = 0u;
 
     if (x_2 > 1f) {
         return log((1f + x_2));
@@ -251,19 +332,19 @@ fn airlight_log1p(x_2: f32) -> f32 {
     let s_16 = (x_2 / (2f + x_2));
     let s2_ = (s_16 * s_16);
     loop {
-        let _e14 = k_1;
+        let _e14 = k_2;
         if (_e14 < 9u) {
         } else {
             break;
         }
         {
             let _e17 = sum;
-            let _e21 = k_1;
+            let _e21 = k_2;
             sum = ((_e17 * s2_) + (1f / f32(((2u * (8u - _e21)) + 1u))));
         }
         continuing {
-            let _e31 = k_1;
-            k_1 = (_e31 + 1u);
+            let _e31 = k_2;
+            k_2 = (_e31 + 1u);
         }
     }
     let _e35 = sum;
@@ -276,11 +357,11 @@ fn airlight_is_finite(x_3: f32) -> bool {
 
 fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
     var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_2: u32 = 0u;
+    var k_3: u32 = 0u;
 
     let _e1 = airlight_ein_coefficients();
     loop {
-        let _e8 = k_2;
+        let _e8 = k_3;
         if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
@@ -288,12 +369,12 @@ fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
         {
             let _e11 = sum_1;
             let _e12 = airlight_cmul(_e11, z_4);
-            let _e14 = k_2;
+            let _e14 = k_3;
             sum_1 = (_e12 + vec2<f32>(_e1[(13u - _e14)], 0f));
         }
         continuing {
-            let _e21 = k_2;
-            k_2 = (_e21 + 1u);
+            let _e21 = k_3;
+            k_3 = (_e21 + 1u);
         }
     }
     let _e23 = sum_1;
@@ -305,11 +386,11 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
     var h: vec2<f32> = vec2<f32>(1f, 0f);
     var a_pow: vec2<f32> = vec2<f32>(1f, 0f);
     var sum_2: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_3: u32 = 0u;
+    var k_4: u32 = 0u;
 
     let _e2 = airlight_ein_coefficients();
     loop {
-        let _e17 = k_3;
+        let _e17 = k_4;
         if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
@@ -317,7 +398,7 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
         {
             let _e20 = sum_2;
             let _e21 = h;
-            let _e22 = k_3;
+            let _e22 = k_4;
             sum_2 = (_e20 + (_e21 * _e2[_e22]));
             let _e26 = a_pow;
             let _e27 = airlight_cmul(_e26, a_2);
@@ -328,8 +409,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
             h = (_e29 + _e30);
         }
         continuing {
-            let _e33 = k_3;
-            k_3 = (_e33 + 1u);
+            let _e33 = k_4;
+            k_4 = (_e33 + 1u);
         }
     }
     let _e35 = sum_2;
@@ -584,18 +665,18 @@ fn airlight_en_scaled(x_5: f32, count: u32, out: ptr<function, array<f32, 16>>) 
     return;
 }
 
-fn airlight_hg_base(g: f32, om: f32, op: f32) -> f32 {
-    if (g >= 0f) {
-        let a_16 = (1f - g);
-        return ((om * (g + g)) + (a_16 * a_16));
+fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
+    if (g_2 >= 0f) {
+        let a_16 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_16 * a_16));
     }
-    let b_13 = (1f + g);
-    return ((op * -((g + g))) + (b_13 * b_13));
+    let b_13 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_13 * b_13));
 }
 
-fn airlight_hg(g_1: f32, om_1: f32, op_1: f32) -> f32 {
-    let _e3 = airlight_hg_base(g_1, om_1, op_1);
-    return ((((1f - g_1) * (1f + g_1)) / 12.566371f) / (_e3 * sqrt(_e3)));
+fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
+    let _e3 = airlight_hg_base(g_3, om_1, op_1);
+    return ((((1f - g_3) * (1f + g_3)) / 12.566371f) / (_e3 * sqrt(_e3)));
 }
 
 fn airlight_phase(kind: u32, p0_: f32, p1_: f32, p2_: f32, mu: f32, om_2: f32, op_2: f32) -> f32 {
@@ -693,7 +774,7 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
     }
 }
 
-fn airlight_integrand_over(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
+fn airlight_integrand_over(s_1: AirlightScene, g_4: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
@@ -701,7 +782,7 @@ fn airlight_integrand_over(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f3
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
     let mu_2 = (-(sigma) * (om_3 * inv_2));
-    let c_7 = ((((sigma * g_2.d_el) * om_3) + ((2f * g_2.d_c) * y_1)) * inv_2);
+    let c_7 = ((((sigma * g_4.d_el) * om_3) + ((2f * g_4.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
@@ -718,8 +799,8 @@ fn airlight_integrand_over(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f3
     return vec2<f32>(f, inv_2);
 }
 
-fn airlight_integrand(s_2: AirlightScene, g_3: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
-    let _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+fn airlight_integrand(s_2: AirlightScene, g_5: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_2, g_5, sigma_1, y_2);
     return _e4.x;
 }
 
@@ -912,9 +993,9 @@ fn airlight_node(rule: array<vec2<f32>, 3>, i_4: u32) -> f32 {
     return select(x_14, -(x_14), ((i_4 % 2u) == 0u));
 }
 
-fn airlight_legendre(g_4: array<f32, 6>) -> array<f32, 6> {
+fn airlight_legendre(g_6: array<f32, 6>) -> array<f32, 6> {
     var c_2: array<f32, 6>;
-    var k_4: u32 = 0u;
+    var k_5: u32 = 0u;
     var sum_3: f32;
     var j_2: u32;
 
@@ -922,7 +1003,7 @@ fn airlight_legendre(g_4: array<f32, 6>) -> array<f32, 6> {
     let _e2 = airlight_zero_terms();
     c_2 = _e2;
     loop {
-        let _e6 = k_4;
+        let _e6 = k_5;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -938,13 +1019,13 @@ fn airlight_legendre(g_4: array<f32, 6>) -> array<f32, 6> {
                 }
                 {
                     let _e17 = j_2;
-                    let minus_1 = g_4[(2u * _e17)];
+                    let minus_1 = g_6[(2u * _e17)];
                     let _e21 = j_2;
-                    let plus_1 = g_4[((2u * _e21) + 1u)];
-                    let _e28 = k_4;
+                    let plus_1 = g_6[((2u * _e21) + 1u)];
+                    let _e28 = k_5;
                     let pair = select((plus_1 - minus_1), (plus_1 + minus_1), ((_e28 % 2u) == 0u));
                     let _e34 = sum_3;
-                    let _e35 = k_4;
+                    let _e35 = k_5;
                     let _e38 = j_2;
                     sum_3 = (_e34 + (_e1[((_e35 * AIRLIGHT_HALF_TERMS) + _e38)] * pair));
                 }
@@ -953,13 +1034,13 @@ fn airlight_legendre(g_4: array<f32, 6>) -> array<f32, 6> {
                     j_2 = (_e44 + 1u);
                 }
             }
-            let _e46 = k_4;
+            let _e46 = k_5;
             let _e48 = sum_3;
             c_2[_e46] = _e48;
         }
         continuing {
-            let _e50 = k_4;
-            k_4 = (_e50 + 1u);
+            let _e50 = k_5;
+            k_5 = (_e50 + 1u);
         }
     }
     let _e52 = c_2;
@@ -1001,8 +1082,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
     var i_6: u32 = 0u;
     var j_3: u32;
     var j_4: u32 = 0u;
-    var k_5: u32 = 1u;
-    var k_6: u32 = 0u;
+    var k_6: u32 = 1u;
+    var k_7: u32 = 0u;
 
     let _e1 = airlight_zero_terms();
     out_1 = _e1;
@@ -1041,10 +1122,10 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
                         break;
                     }
                     let _e67 = i_6;
-                    let k_12 = (top - _e67);
-                    if (k_12 < AIRLIGHT_TERMS) {
+                    let k_13 = (top - _e67);
+                    if (k_13 < AIRLIGHT_TERMS) {
                         let _e71 = cur;
-                        out_1[k_12] = _e71;
+                        out_1[k_13] = _e71;
                     }
                     let _e72 = above;
                     let _e73 = odd;
@@ -1110,42 +1191,42 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 6> {
             out_1[0] = i0_;
             out_1[1] = ((((1f + e2_1) * 0.5f) - i0_) / lambda);
             loop {
-                let _e136 = k_5;
+                let _e136 = k_6;
                 if ((_e136 + 1u) < AIRLIGHT_TERMS) {
                 } else {
                     break;
                 }
                 {
-                    let _e141 = k_5;
-                    let _e145 = k_5;
+                    let _e141 = k_6;
+                    let _e145 = k_6;
                     let _e149 = out_1[(_e145 - 1u)];
-                    let _e151 = k_5;
-                    let _e157 = k_5;
+                    let _e151 = k_6;
+                    let _e157 = k_6;
                     let _e159 = out_1[_e157];
                     out_1[(_e141 + 1u)] = (_e149 - ((f32(((2u * _e151) + 1u)) / lambda) * _e159));
                 }
                 continuing {
-                    let _e163 = k_5;
-                    k_5 = (_e163 + 1u);
+                    let _e163 = k_6;
+                    k_6 = (_e163 + 1u);
                 }
             }
         }
     }
     loop {
-        let _e167 = k_6;
+        let _e167 = k_7;
         if (_e167 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e170 = k_6;
+            let _e170 = k_7;
             let _e172 = out_1[_e170];
-            let _e173 = k_6;
+            let _e173 = k_7;
             out_1[_e170] = (_e172 * select(2f, -2f, ((_e173 % 2u) == 1u)));
         }
         continuing {
-            let _e183 = k_6;
-            k_6 = (_e183 + 1u);
+            let _e183 = k_7;
+            k_7 = (_e183 + 1u);
         }
     }
     let _e185 = out_1;
@@ -1216,7 +1297,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+fn airlight_v_panel(s_3: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
     var r_1: f32;
     var vc: f32;
     var samples: array<f32, 6>;
@@ -1225,7 +1306,7 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     var g_avg: f32 = 0f;
     var i_8: u32 = 0u;
     var sum_5: f32 = 0f;
-    var k_7: u32 = 0u;
+    var k_8: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
     r_1 = ((b_4 - a_5) * 0.5f);
@@ -1250,7 +1331,7 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
             let _e39 = i_8;
             let _e40 = airlight_node(_e6, _e39);
             let v_5 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_3, g_5, select(sigma_2, -(sigma_2), half_4.second), v_5);
+            let _e46 = airlight_integrand_over(s_3, g_7, select(sigma_2, -(sigma_2), half_4.second), v_5);
             let fy = _e46.x;
             let over = _e46.y;
             let _e49 = i_8;
@@ -1275,26 +1356,26 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     let _e77 = r_1;
     let _e79 = airlight_exp_legendre_moments((half_4.big_h * _e77));
     loop {
-        let _e84 = k_7;
+        let _e84 = k_8;
         if (_e84 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             let _e87 = sum_5;
-            let _e88 = k_7;
-            let _e90 = k_7;
+            let _e88 = k_8;
+            let _e90 = k_8;
             sum_5 = (_e87 + (_e75[_e88] * _e79[_e90]));
         }
         continuing {
-            let _e95 = k_7;
-            k_7 = (_e95 + 1u);
+            let _e95 = k_8;
+            k_8 = (_e95 + 1u);
         }
     }
     let _e97 = airlight_factor(half_4, a_5, b_4);
     let _e98 = r_1;
-    let w = (_e97 * _e98);
-    let mass_4 = (w * _e79[0]);
+    let w_1 = (_e97 * _e98);
+    let mass_4 = (w_1 * _e79[0]);
     let _e102 = airlight_tail_estimate(_e75);
     let _e104 = airlight_error_factor(_e75, _e79);
     let error_1 = ((mass_4 * _e102) * _e104);
@@ -1303,11 +1384,11 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     let _e109 = airlight_transform_noise(mass_4, _e108);
     let _e110 = over_max;
     let _e112 = f_max_1;
-    let _e113 = airlight_panel_result((w * _e106), error_1, _e109, (mass_4 * _e110), _e112);
+    let _e113 = airlight_panel_result((w_1 * _e106), error_1, _e109, (mass_4 * _e110), _e112);
     return _e113;
 }
 
-fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
     var samples_1: array<f32, 6>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1332,7 +1413,7 @@ fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, ha
             let _e27 = airlight_node(_e6, _e26);
             let y_5 = (yc_1 + (r_4 * _e27));
             let weight = exp(((-(half_5.big_h) * (r_4 * (1f - _e27))) / (y_5 * b_5)));
-            let _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
+            let _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
             let over_1 = (1f / (1f + (y_5 * y_5)));
             let _e45 = i_9;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1357,33 +1438,33 @@ fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, ha
     let _e79 = samples_1;
     let _e80 = airlight_legendre(_e79);
     let _e81 = airlight_factor(half_5, a_6, b_5);
-    let w_1 = (_e81 * r_4);
+    let w_2 = (_e81 * r_4);
     let _e83 = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2f;
     let _e89 = airlight_tail_estimate(_e80);
     let _e91 = m_2;
     let _e92 = airlight_error_factor(_e80, _e91);
-    let error_2 = (((w_1 * 2f) * _e89) * _e92);
+    let error_2 = (((w_2 * 2f) * _e89) * _e92);
     let _e100 = p_avg;
-    let _e101 = airlight_transform_noise((w_1 * 2f), _e100);
+    let _e101 = airlight_transform_noise((w_2 * 2f), _e100);
     let _e102 = mass_1;
     let _e104 = over_max_1;
     let _e106 = f_max_2;
-    let _e107 = airlight_panel_result(((w_1 * 2f) * _e80[0]), error_2, _e101, ((w_1 * _e102) * _e104), _e106);
+    let _e107 = airlight_panel_result(((w_2 * 2f) * _e80[0]), error_2, _e101, ((w_2 * _e102) * _e104), _e106);
     return _e107;
 }
 
 fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
     var hat: array<f32, 6>;
-    var k_8: u32 = 0u;
+    var k_9: u32 = 0u;
     var i_10: u32;
 
     let _e1 = airlight_legendre_monomial();
     let _e2 = airlight_zero_terms();
     hat = _e2;
     loop {
-        let _e6 = k_8;
+        let _e6 = k_9;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1392,7 +1473,7 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
             i_10 = 0u;
             loop {
                 let _e11 = i_10;
-                let _e12 = k_8;
+                let _e12 = k_9;
                 if (_e11 <= _e12) {
                 } else {
                     break;
@@ -1400,8 +1481,8 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
                 {
                     let _e14 = i_10;
                     let _e16 = hat[_e14];
-                    let _e17 = k_8;
-                    let _e19 = k_8;
+                    let _e17 = k_9;
+                    let _e19 = k_9;
                     let _e22 = i_10;
                     hat[_e14] = (_e16 + (c_5[_e17] * _e1[((_e19 * AIRLIGHT_TERMS) + _e22)]));
                 }
@@ -1412,15 +1493,15 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 6>) -> array<f32, 6> {
             }
         }
         continuing {
-            let _e31 = k_8;
-            k_8 = (_e31 + 1u);
+            let _e31 = k_9;
+            k_9 = (_e31 + 1u);
         }
     }
     let _e33 = hat;
     return _e33;
 }
 
-fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 6>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -1439,12 +1520,12 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     var mass_2: f32 = 0f;
     var ratio_1: f32 = 1f;
     var ab: f32 = 0f;
-    var k_9: u32 = 0u;
+    var k_10: u32 = 0u;
     var tail: f32;
     var l_prev: f32 = 0f;
     var l_cur: f32 = 1f;
     var spread: f32 = 0f;
-    var k_10: u32 = 0u;
+    var k_11: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
     let r_5 = ((b_6 - a_7) * 0.5f);
@@ -1461,7 +1542,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             let _e22 = i_11;
             let _e23 = airlight_node(_e6, _e22);
             let y_6 = (yc_2 + (r_5 * _e23));
-            let _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
+            let _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
             let _e27 = i_11;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
             let _e33 = f_max_3;
@@ -1561,7 +1642,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
         ab = (a_7 / b_6);
     }
     loop {
-        let _e151 = k_9;
+        let _e151 = k_10;
         if (_e151 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1572,20 +1653,20 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             if (_e156 > 0f) {
                 let _e159 = decay;
                 let _e161 = ratio_1;
-                let _e163 = k_9;
+                let _e163 = k_10;
                 let _e167 = s_a[(_e163 + 1u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
             }
-            let _e169 = k_9;
+            let _e169 = k_10;
             let _e173 = s_b[(_e169 + 1u)];
             let _e175 = tail;
             let u = ((b_6 * _e173) - _e175);
-            let _e177 = k_9;
+            let _e177 = k_10;
             if (_e177 == 0u) {
                 mass_2 = u;
             }
             let _e180 = sum_6;
-            let _e181 = k_9;
+            let _e181 = k_10;
             let _e183 = q[_e181];
             sum_6 = (_e180 + (_e183 * u));
             let _e186 = ratio_1;
@@ -1593,8 +1674,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             ratio_1 = (_e186 * _e187);
         }
         continuing {
-            let _e190 = k_9;
-            k_9 = (_e190 + 1u);
+            let _e190 = k_10;
+            k_10 = (_e190 + 1u);
         }
     }
     let _e192 = airlight_factor(half_6, a_7, b_6);
@@ -1602,7 +1683,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     mass_2 = (_e193 * _e192);
     let x_16 = (abs(alpha) + abs(beta));
     loop {
-        let _e206 = k_10;
+        let _e206 = k_11;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1610,9 +1691,9 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
         {
             let _e209 = spread;
             let _e210 = l_cur;
-            let _e211 = k_10;
+            let _e211 = k_11;
             spread = (_e209 + (_e210 * abs(_e54[_e211])));
-            let _e216 = k_10;
+            let _e216 = k_11;
             let kf_2 = f32(_e216);
             let _e222 = l_cur;
             let _e224 = l_prev;
@@ -1622,8 +1703,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             l_cur = next_1;
         }
         continuing {
-            let _e232 = k_10;
-            k_10 = (_e232 + 1u);
+            let _e232 = k_11;
+            k_11 = (_e232 + 1u);
         }
     }
     let _e234 = mass_2;
@@ -1641,7 +1722,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     return _e250;
 }
 
-fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_6: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
     var local_12: bool;
     var local_13: bool;
 
@@ -1652,7 +1733,7 @@ fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half
     }
     let _e13 = local_12;
     if _e13 {
-        let _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        let _e14 = airlight_tail_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
@@ -1662,14 +1743,14 @@ fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half
     }
     let _e26 = local_13;
     if _e26 {
-        let _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+        let _e27 = airlight_y_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    let _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
+    let _e28 = airlight_v_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_7: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var count_1: u32 = 1u;
@@ -1688,7 +1769,7 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6:
     if !((hi > lo)) {
         return 0f;
     }
-    let _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
+    let _e38 = airlight_panel(s_7, g_11, sigma_6, half_8, lo, hi);
     let _e39 = (*f_max_4);
     (*f_max_4) = max(_e39, _e38.f_max);
     list[0] = vec4<f32>(lo, hi, _e38.value, _e38.error);
@@ -1783,8 +1864,8 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6:
                 list[_e158].w = 0f;
             } else {
                 let mid = (a_17 + ((b_14 - a_17) * 0.5f));
-                let _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
-                let _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
+                let _e166 = airlight_panel(s_7, g_11, sigma_6, half_8, a_17, mid);
+                let _e167 = airlight_panel(s_7, g_11, sigma_6, half_8, mid, b_14);
                 let _e168 = (*f_max_4);
                 (*f_max_4) = max(_e168, max(_e166.f_max, _e167.f_max));
                 let _e173 = worst;
@@ -1838,15 +1919,15 @@ fn airlight_bounded(a_9: f32) -> f32 {
     return (1f / (a_9 + _e1));
 }
 
-fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
+fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32> {
     var local_17: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_11 + (sigma_7 * d_el));
+    let a0_ = (k_12 + (sigma_7 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_11 - (sigma_7 * d_el));
+    let c0_ = (k_12 - (sigma_7 * d_el));
     let scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale > 0f))) {
         let _e21 = airlight_is_finite(scale);
@@ -1881,7 +1962,7 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32>
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
@@ -1897,7 +1978,7 @@ fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half
     var local_20: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_8, g_10, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_8, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
@@ -1914,9 +1995,9 @@ fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half
             k_out = _e36;
         }
         let _e39 = k_in;
-        let _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
+        let _e40 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e39);
         let _e43 = k_out;
-        let _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
+        let _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
         cuts = array<f32, 4>(_e40.x, _e40.y, _e44.x, _e44.y);
         loop {
             let _e52 = i_15;
@@ -2017,7 +2098,7 @@ fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half
                 let _e146 = total_1;
                 let _e147 = lo_1;
                 let _e148 = hi_1;
-                let _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
+                let _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_1 = (_e146 + _e149);
                 let _e151 = hi_1;
                 lo_1 = _e151;
@@ -2044,8 +2125,8 @@ fn airlight_half(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half
     return _e167;
 }
 
-fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s) * intensity) / h_1) * exp(-(x_7))) * j_6);
+fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_6: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_1) * exp(-(x_7))) * j_6);
     let _e13 = airlight_is_finite(plain_1);
     if _e13 {
         return plain_1;
@@ -2053,38 +2134,38 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_6: f32)
     if !((abs(j_6) > 0f)) {
         return 0f;
     }
-    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_6)))));
+    return (sign(j_6) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_6)))));
 }
 
-fn airlight_on_line(s_9: AirlightScene, g_11: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_9: AirlightScene, g_13: AirlightCanonical) -> f32 {
     var local_21: bool;
     var span: f32;
     var e2_: array<f32, 16>;
     var tail_1: f32 = 0f;
 
-    if !(g_11.t_hi_infinite) {
-        local_21 = (g_11.x_h > g_11.t_hi);
+    if !(g_13.t_hi_infinite) {
+        local_21 = (g_13.x_h > g_13.t_hi);
     } else {
         local_21 = false;
     }
     let _e10 = local_21;
     if _e10 {
-        let _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        let _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
         let _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1f);
         let f_1 = (_e16 * _e22);
-        let r0_ = (g_11.x_h - g_11.t_lo);
-        let r1_1 = (g_11.x_h - g_11.t_hi);
-        let _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * r0_), (f_1 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1)));
+        let r0_ = (g_13.x_h - g_13.t_lo);
+        let r1_1 = (g_13.x_h - g_13.t_hi);
+        let _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * r0_), (f_1 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    let _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
     let _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1f);
     let f_2 = (_e46 * _e52);
-    let s0_ = (g_11.t_lo - g_11.x_h);
-    let s1_ = (g_11.t_hi - g_11.x_h);
+    let s0_ = (g_13.t_lo - g_13.x_h);
+    let s1_ = (g_13.t_hi - g_13.x_h);
     if (s_9.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_11.t_hi_infinite) {
+        if !(g_13.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
@@ -2097,7 +2178,7 @@ fn airlight_on_line(s_9: AirlightScene, g_11: AirlightCanonical) -> f32 {
     airlight_en_scaled((two_st * s0_), 2u, (&e2_));
     let _e91 = e2_[1];
     let _e94 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * s0_), ((f_2 * _e91) / s0_));
-    if !(g_11.t_hi_infinite) {
+    if !(g_13.t_hi_infinite) {
         airlight_en_scaled((two_st * s1_), 2u, (&e2_));
         let _e111 = e2_[1];
         let _e114 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e111) / s1_));
@@ -2122,7 +2203,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -2130,12 +2211,12 @@ fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f3
     var local_23: bool;
     var x_8: f32 = 0f;
 
-    let h_2 = g_12.h;
-    let a_s = ((g_12.x_h - g_12.t_lo) / h_2);
+    let h_2 = g_14.h;
+    let a_s = ((g_14.x_h - g_14.t_lo) / h_2);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_12.t_hi - g_12.x_h) / h_2);
-    if !(g_12.t_hi_infinite) {
+    let u_e = ((g_14.t_hi - g_14.x_h) / h_2);
+    if !(g_14.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
         local_22 = _e24;
     } else {
@@ -2145,7 +2226,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f3
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
@@ -2168,7 +2249,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_10, g_12, -1f, _e9);
+    let _e54 = airlight_integrand(s_10, g_14, -1f, _e9);
     let _e55 = airlight_moment_zero(half_10);
     let j_8 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
@@ -2176,7 +2257,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f3
         x_8 = (big_h_1 * _e8);
     } else {
         if (s_10.sigma_t > 0f) {
-            x_8 = (s_10.sigma_t * abs((g_12.x_h - g_12.t_lo)));
+            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
         }
     }
     let _e72 = x_8;
@@ -2184,7 +2265,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_12: AirlightCanonical, big_h_1: f3
     return _e73;
 }
 
-fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
@@ -2212,9 +2293,9 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
     var local_40: bool;
     var local_41: bool;
 
-    let t0_ = g_13.t_lo;
-    let t1_ = g_13.t_hi;
-    if !(g_13.t_hi_infinite) {
+    let t0_ = g_15.t_lo;
+    let t1_ = g_15.t_hi;
+    if !(g_15.t_hi_infinite) {
         local_24 = (t1_ > t0_);
     } else {
         local_24 = true;
@@ -2229,10 +2310,10 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_3 = g_13.h;
-    let x_h = g_13.x_h;
+    let h_3 = g_15.h;
+    let x_h = g_15.x_h;
     if (t0_ <= x_h) {
-        if !(g_13.t_hi_infinite) {
+        if !(g_15.t_hi_infinite) {
             local_27 = (x_h <= t1_);
         } else {
             local_27 = true;
@@ -2258,7 +2339,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
     }
     let _e55 = local_28;
     if _e55 {
-        let _e56 = airlight_on_line(s_11, g_13);
+        let _e56 = airlight_on_line(s_11, g_15);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
@@ -2308,7 +2389,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
     }
     let _e120 = local_35;
     if _e120 {
-        if !(g_13.t_hi_infinite) {
+        if !(g_15.t_hi_infinite) {
             local_37 = (x_h < t1_);
         } else {
             local_37 = true;
@@ -2320,13 +2401,13 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
     }
     let _e131 = local_36;
     if _e131 {
-        let _e132 = airlight_whole_line(s_11, g_13, big_h_4);
+        let _e132 = airlight_whole_line(s_11, g_15, big_h_4);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     if (t0_ < x_h) {
         let a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if !(g_13.t_hi_infinite) {
+        if !(g_15.t_hi_infinite) {
             local_38 = (t1_ < x_h);
         } else {
             local_38 = false;
@@ -2345,12 +2426,12 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
         let dy_1 = (((((_e159 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
         let _e172 = airlight_optical(big_h_4, dy_1, false);
         let half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        let _e176 = airlight_half(s_11, g_13, -1f, half_11, isotropic_1, (&f_max_6));
+        let _e176 = airlight_half(s_11, g_15, -1f, half_11, isotropic_1, (&f_max_6));
         let _e177 = total_2;
         let _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
         total_2 = (_e177 + _e181);
     }
-    if !(g_13.t_hi_infinite) {
+    if !(g_15.t_hi_infinite) {
         local_39 = (t1_ > x_h);
     } else {
         local_39 = true;
@@ -2363,7 +2444,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
         let _e194 = airlight_bounded(a_s_2);
         dy = _e194;
         let a_e_1 = ((t1_ - x_h) / h_3);
-        if !(g_13.t_hi_infinite) {
+        if !(g_15.t_hi_infinite) {
             let _e208 = airlight_is_finite(a_e_1);
             local_40 = _e208;
         } else {
@@ -2398,7 +2479,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_13: AirlightCanonical) -
         let _e239 = dv_3;
         let _e240 = infinite_2;
         let half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        let _e243 = airlight_half(s_11, g_13, 1f, half_12, isotropic_1, (&f_max_6));
+        let _e243 = airlight_half(s_11, g_15, 1f, half_12, isotropic_1, (&f_max_6));
         let _e244 = total_2;
         let _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
         total_2 = (_e244 + _e252);
@@ -2791,10 +2872,10 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
     let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_14.dir;
+    let dir_2 = s_14.dir;
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
-        let _e38 = airlight_in_exact_range(dir);
+        let _e38 = airlight_in_exact_range(dir_2);
         local_74 = !(_e38);
     } else {
         local_74 = true;
@@ -2803,23 +2884,23 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, key_4);
-    let w_2 = vec3<f32>((_e46 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e59 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e72 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
-    let _e82 = airlight_vec_finite(w_2);
+    let _e46 = airlight_diff_of_products(hi_2.y, dir_2.z, hi_2.z, dir_2.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_2.z, dir_2.x, hi_2.x, dir_2.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_2.x, dir_2.y, hi_2.y, dir_2.x, key_4);
+    let w_3 = vec3<f32>((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
+    let _e82 = airlight_vec_finite(w_3);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_2);
+    let _e85 = airlight_safe_length(w_3);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
         let _e92 = out_2;
         return _e92;
     }
-    let _e93 = airlight_safe_length(dir);
+    let _e93 = airlight_safe_length(dir_2);
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
@@ -2835,8 +2916,8 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         let _e112 = airlight_normalize(s_14.light_axis);
         a_14 = _e112;
     }
-    let _e113 = airlight_normalize(dir);
-    let _e114 = airlight_normalize(w_2);
+    let _e113 = airlight_normalize(dir_2);
+    let _e114 = airlight_normalize(w_3);
     let n_5 = -(cross(_e113, _e114));
     out_2.h = h_4;
     let _e119 = a_14;

@@ -218,3 +218,51 @@ fn wgsl_revalidates_in_naga() {
     }
     let _ = repo_root();
 }
+
+/// The fenced block after `<!-- snippet: {tag} -->` in shaders-out/README.md.
+fn readme_snippet(readme: &str, tag: &str) -> String {
+    let marker = format!("<!-- snippet: {tag} -->\n```");
+    let at = readme.find(&marker).unwrap_or_else(|| panic!("shaders-out/README.md has no snippet `{tag}`"));
+    let body = &readme[at + marker.len()..];
+    let body = &body[body.find('\n').unwrap() + 1..];
+    body[..body.find("```").unwrap()].to_string()
+}
+
+/// `snippet` with its `// <file pasted here>` line replaced by that file of shaders-out/.
+fn pasted(snippet: &str, file: &str) -> String {
+    let line = format!("// <{file} pasted here>");
+    assert!(snippet.contains(&line), "the snippet does not say where {file} goes");
+    snippet.replace(&line, &std::fs::read_to_string(default_out_dir().join(file)).unwrap())
+}
+
+/// Every usage snippet of shaders-out/README.md compiles exactly as shown, the library where
+/// it says (an `#include` resolved from shaders-out/, or pasted at its marker line): WGSL by
+/// naga, GLSL 450 by glslang to SPIR-V (then `spirv-val`), GLSL ES 3.00 and HLSL by glslang.
+/// The MSL snippet has no compiler on Linux; it is checked to call only what the MSL library
+/// defines.
+#[test]
+fn readme_snippets_compile() {
+    let dir = default_out_dir();
+    let readme = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    let wgsl = pasted(&readme_snippet(&readme, "wgsl"), "wgsl/airlight_lib_4.wgsl");
+    validate(&wgsl).unwrap_or_else(|e| panic!("the WGSL snippet: {e}"));
+    let msl = readme_snippet(&readme, "msl");
+    let msl_lib = std::fs::read_to_string(dir.join("msl/airlight_lib_4.metal")).unwrap();
+    let code: String = msl.lines().filter(|l| !l.starts_with("#include")).collect::<Vec<_>>().join("\n");
+    for name in code.split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| w.starts_with("airlight_") || w.starts_with("Airlight") || w.starts_with("AIRLIGHT_")) {
+        assert!(msl_lib.contains(name), "the MSL snippet uses {name}, which the MSL library does not define");
+    }
+    if !tool("glslangValidator") || !tool("spirv-val") {
+        return;
+    }
+    let tmp = scratch("airlight-snippets");
+    std::fs::write(tmp.join("fog.frag"), readme_snippet(&readme, "glsl450")).unwrap();
+    run(Command::new("glslangValidator").arg("-V").arg(format!("-I{}", dir.join("glsl").display())).arg("-o").arg(tmp.join("fog.spv")).arg(tmp.join("fog.frag")));
+    run(Command::new("spirv-val").args(["--target-env", "vulkan1.0"]).arg(tmp.join("fog.spv")));
+    let size = std::fs::metadata(tmp.join("fog.spv")).unwrap().len();
+    println!("GLSL 450 snippet as SPIR-V (glslang): {size} bytes");
+    std::fs::write(tmp.join("fog_es.frag"), pasted(&readme_snippet(&readme, "es300"), "glsl/airlight_lib_4_es300.glsl")).unwrap();
+    run(Command::new("glslangValidator").arg(tmp.join("fog_es.frag")));
+    std::fs::write(tmp.join("fog.hlsl"), readme_snippet(&readme, "hlsl")).unwrap();
+    run(Command::new("glslangValidator").args(["-V", "-D", "-e", "fog_glow", "-S", "frag"]).arg(format!("-I{}", dir.join("hlsl").display())).arg("-o").arg(tmp.join("fog_hlsl.spv")).arg(tmp.join("fog.hlsl")));
+}
