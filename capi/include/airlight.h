@@ -137,7 +137,7 @@ typedef struct AirlightDistribution_f32 {
    */
   uint32_t kind;
   /**
-   * Two-lobed: the exponent `p` (even, at most 256).
+   * Two-lobed: the exponent `p` (even, at most 1024).
    */
   uint32_t power;
   /**
@@ -300,7 +300,7 @@ typedef struct AirlightDistribution_f64 {
    */
   uint32_t kind;
   /**
-   * Two-lobed: the exponent `p` (even, at most 256).
+   * Two-lobed: the exponent `p` (even, at most 1024).
    */
   uint32_t power;
   /**

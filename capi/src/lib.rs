@@ -79,7 +79,7 @@ pub struct AirlightRay<T> {
 pub struct AirlightDistribution<T> {
     /// `AIRLIGHT_LIGHT_OMNI`, `_TWO_LOBED` or `_SPOT`.
     pub kind: u32,
-    /// Two-lobed: the exponent `p` (even, at most 256).
+    /// Two-lobed: the exponent `p` (even, at most 1024).
     pub power: u32,
     /// Two-lobed and spot: the axis, any non-zero length.
     pub axis: [T; 3],
