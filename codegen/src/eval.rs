@@ -43,13 +43,13 @@ impl Default for EvalOptions {
     }
 }
 
-/// `L_m` of a parsed record on the CPU kernel: the default path, or `terms` fixed terms.
+/// `L_m` of a parsed record on the CPU kernel: the default path, or `terms` fixed terms
+/// (1 … 16; NaN outside, and for a record the kernel rejects).
 pub fn in_scatter<T: Real>(rec: &SceneRecord<T>, terms: Option<usize>, expansion: Expansion) -> T {
     match Scene::new(rec.ray, rec.light, rec.medium, rec.phase) {
         Ok(s) => match terms {
             None => s.in_scatter(),
-            Some(4) => s.in_scatter_with::<4>(expansion),
-            Some(_) => s.in_scatter_with::<6>(expansion),
+            Some(n) => s.in_scatter_with_terms(n, expansion).unwrap_or(T::nan()),
         },
         Err(_) => T::nan(),
     }
@@ -74,9 +74,22 @@ pub fn format_error(line_no: usize, message: &str) -> String {
 }
 
 fn eval_line<T: Real>(line: &str, line_no: usize, opts: &EvalOptions) -> String {
-    match parse_line::<T>(line) {
+    let answer = match parse_line::<T>(line) {
         Ok(rec) => format_value(in_scatter(&rec, opts.terms, opts.expansion)),
         Err(e) => format_error(line_no, &e.to_string()),
+    };
+    with_id(line, answer)
+}
+
+/// The answer with the record's `"id"` (any JSON value) echoed first, when the line is a JSON
+/// object that has one: `{"id":7,"in_scatter":…}`.
+pub fn with_id(line: &str, answer: String) -> String {
+    if !line.contains("\"id\"") {
+        return answer;
+    }
+    match serde_json::from_str::<serde_json::Value>(line).ok().as_ref().and_then(|v| v.get("id")) {
+        Some(id) => format!("{{\"id\":{id},{}", &answer[1..]),
+        None => answer,
     }
 }
 
@@ -157,16 +170,18 @@ impl<R: BufRead> Lines<R> {
 /// one batch after the input ends.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
     use crate::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
-    let mut lines: Vec<Result<(), String>> = Vec::new();
+    // per input line: its text (to echo an "id") and its error line, or a packed record
+    let mut lines: Vec<(String, Result<(), String>)> = Vec::new();
     let mut records = Vec::new();
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
+        let line = text.as_ref().map(|t| t.to_string()).unwrap_or_default();
         match text.map(|t| parse_line::<f32>(t).map_err(|e| format_error(n, &e.to_string()))) {
             Ok(Ok(r)) => {
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
-                lines.push(Ok(()));
+                lines.push((line, Ok(())));
             }
-            Ok(Err(e)) | Err(e) => lines.push(Err(e)),
+            Ok(Err(e)) | Err(e) => lines.push((line, Err(e))),
         }
     }
     let results = if records.is_empty() {
@@ -176,7 +191,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
-    for l in lines {
+    for (line, l) in lines {
         let text = match l {
             Err(e) => e,
             Ok(()) => {
@@ -189,7 +204,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 }
             }
         };
-        writeln!(out, "{text}").map_err(EvalError::Output)?;
+        writeln!(out, "{}", with_id(&line, text)).map_err(EvalError::Output)?;
     }
     out.flush().map_err(EvalError::Output)
 }

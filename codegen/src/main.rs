@@ -47,6 +47,7 @@ order and written as soon as it is computed (usable as a co-process): {\"in_scat
 (\"inf\" for +infinity, when the light lies exactly on the segment) or
 {\"error\": \"line N: field: problem\"}. A bad line (invalid JSON or UTF-8, an empty line, an
 unknown or missing field, an invalid value) gets its error line and does not stop the others.
+A record's \"id\" (any JSON value) is echoed first in its answer: {\"id\": 7, \"in_scatter\": L}.
 
 Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\": 25 | null},
          \"medium\": {\"sigma_s\": 0.08, \"sigma_t\": 0.1},
@@ -118,11 +119,12 @@ struct EvalArgs {
     /// Kernel precision.
     #[arg(long, value_enum, default_value = "f64")]
     precision: PrecisionArg,
-    /// CPU: the paper's fixed-cost method with this many expansion terms (default: the
-    /// kernel's error-controlled panels, within 1e-10 in f64 and 1e-4 in f32 of
-    /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel (default 4).
-    #[arg(long, value_enum)]
-    terms: Option<Nodes>,
+    /// CPU: the paper's fixed-cost method with this many expansion terms, 1 to 16 (default:
+    /// the kernel's error-controlled panels, within 1e-10 in f64 and 1e-4 in f32 of
+    /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel, 4 or 6
+    /// (default 4).
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=16))]
+    terms: Option<u8>,
     /// Polynomial expansion of --terms.
     #[arg(long, value_enum, default_value = "chebyshev")]
     expansion: ExpansionArg,
@@ -214,12 +216,18 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
             PrecisionArg::F32 => Precision::F32,
             PrecisionArg::F64 => Precision::F64,
         },
-        terms: a.terms.map(Nodes::count),
+        terms: a.terms.map(usize::from),
         expansion: match a.expansion {
             ExpansionArg::Chebyshev => Expansion::Chebyshev,
             ExpansionArg::Taylor => Expansion::Taylor,
         },
     };
+    if let (Backend::Gpu, Some(n)) = (opts.backend, opts.terms) {
+        if !airlight_codegen::targets::TERM_COUNTS.contains(&n) {
+            eprintln!("airlight: --terms {n} with --backend gpu: the shaders are emitted with 4 or 6 nodes per panel");
+            return ExitCode::from(2);
+        }
+    }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
     let result = match opts.backend {

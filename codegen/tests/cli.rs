@@ -39,7 +39,7 @@ fn options_take_both_spellings_and_bad_values_are_named() {
     let a = run(&["eval", "--terms=4", "--precision=f32"]);
     let b = run(&["eval", "--terms", "4", "--precision", "f32"]);
     assert!(a.status.success() && a.stdout == b.stdout && a.stdout.starts_with(b"{\"in_scatter\":"), "{a:?}");
-    let bad = run(&["eval", "--terms", "5"]);
+    let bad = run(&["eval", "--terms", "0"]);
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--terms"), "{bad:?}");
 }
@@ -70,4 +70,34 @@ fn eval_answers_line_by_line_and_ends_quietly_on_a_closed_pipe() {
     let out = child.wait_with_output().unwrap();
     assert_eq!(out.status.code(), Some(0), "stderr: {}", String::from_utf8_lossy(&out.stderr));
     assert!(out.stderr.is_empty(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// `--terms` takes every count the kernel compiles (1 … 16) on the CPU and the emitted ones (4,
+/// 6) on the GPU; a record's `"id"` comes back first in its answer, error lines included.
+#[test]
+fn every_term_count_and_ids_echoed() {
+    let good = r#"{"id": "lamp-3", "ray": {"origin": [0,0,0], "dir": [1,0,0], "t_max": 25}, "medium": {"sigma_s": 0.08, "sigma_t": 0.1}, "light": {"position": [5,1,0], "intensity": 100}, "phase": {"kind": "henyey_greenstein", "g": 0.5}}"#;
+    let bad = r#"{"id": 17, "ray": {"origin": [0,0,0], "dir": [1,0,0], "tmax": 25}}"#;
+    let run = |args: &[&str]| {
+        let mut child = airlight().args(args).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+        child.stdin.take().unwrap().write_all(format!("{good}\n{bad}\n").as_bytes()).unwrap();
+        child.wait_with_output().unwrap()
+    };
+    let mut values = Vec::new();
+    for terms in 1..=16 {
+        let o = run(&["eval", &format!("--terms={terms}")]);
+        let out = String::from_utf8_lossy(&o.stdout);
+        let lines: Vec<&str> = out.lines().collect();
+        assert!(o.status.success() && lines.len() == 2, "--terms {terms}: {out}");
+        let v: serde_json::Value = serde_json::from_str(lines[0]).unwrap();
+        assert_eq!(v["id"], "lamp-3", "{}", lines[0]);
+        values.push(v["in_scatter"].as_f64().unwrap_or_else(|| panic!("--terms {terms}: {}", lines[0])));
+        assert!(lines[1].starts_with(r#"{"id":17,"error":"line 2: ray.tmax"#), "{}", lines[1]);
+    }
+    // a gentle scene: the fixed method converges with the term count
+    assert!((values[15] - values[11]).abs() < 1e-6 * values[15], "{values:?}");
+    let o = run(&["eval", "--terms", "17"]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("17 is not in 1..=16"));
+    let o = run(&["eval", "--terms", "5", "--backend", "gpu"]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("4 or 6 nodes"), "{}", String::from_utf8_lossy(&o.stderr));
 }

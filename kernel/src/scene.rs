@@ -221,6 +221,35 @@ where
         in_scatter_canonical::<T, D, P, Production, N>(&self.canonical_fixed, &self.physics(), Method::Fixed(expansion), &Production)
     }
 
+    /// [`Scene::in_scatter_with`] with the term count chosen at run time (a command line's,
+    /// a configuration's): `None` outside 1 … 16. The one runtime-to-compile-time dispatch of
+    /// the term count; each count it reaches is compiled in.
+    pub fn in_scatter_with_terms(&self, terms: usize, expansion: Expansion) -> Option<T> {
+        macro_rules! dispatch {
+            ($($n:literal)*) => {
+                match terms {
+                    $($n => Some(self.in_scatter_with::<$n>(expansion)),)*
+                    _ => None,
+                }
+            };
+        }
+        dispatch!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16)
+    }
+
+    /// [`Scene::in_scatter_panels`] with the node count chosen at run time: `None` for a count
+    /// without a tabulated rule (4, 6, 8, 10, 12, 16 have one).
+    pub fn in_scatter_panels_with_nodes(&self, nodes: usize, control: Control<T>) -> Option<T> {
+        macro_rules! dispatch {
+            ($($n:literal)*) => {
+                match nodes {
+                    $($n => Some(self.in_scatter_panels::<$n>(control)),)*
+                    _ => None,
+                }
+            };
+        }
+        dispatch!(4 6 8 10 12 16)
+    }
+
     /// `L_m` over the sub-segments `lit` of `[t_min, t_max]` only (a shadowed ray, as sums of
     /// differences in the manner of Biri et al.): `Σ e^{−σt(a_i − t_min)} L_m(a_i, b_i)`, each
     /// part by the default error-controlled path ([`Scene::in_scatter`]). Each `(a_i, b_i)` is
