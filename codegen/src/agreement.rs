@@ -178,9 +178,9 @@ pub const DOMAIN: (f32, f32) = (1.0 / (1u64 << 40) as f32, (1u64 << 40) as f32);
 /// where [`judge`] applies (module docs). Non-finite numbers (an invalid record, or
 /// `t_max = +∞`) do not leave the domain.
 pub fn in_domain(rec: &SceneRecord<f32>) -> bool {
-    let bytes = crate::layout::pack(&rec.ray, &rec.light, &rec.medium, &rec.phase);
+    let record = crate::layout::Record::new(&rec.ray, &rec.light, &rec.medium, &rec.phase);
     // unused inputs are packed as 0
-    bytes[..crate::layout::FLOAT_INPUTS_END].chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).all(|x| {
+    record.float_inputs().iter().all(|x| {
         let m = x.abs();
         !m.is_finite() || m == 0.0 || (DOMAIN.0..=DOMAIN.1).contains(&m)
     })

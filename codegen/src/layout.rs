@@ -1,29 +1,8 @@
-//! The record layout of the compute entry point (std430 / WGSL storage layout), and a packer
-//! from kernel types. Byte offsets (112 bytes per record, 16-byte aligned):
-//!
-//! | offset | field | type | meaning |
-//! |---|---|---|---|
-//! | 0 | origin | vec3 f32 | ray origin |
-//! | 12 | t_min | f32 | segment start |
-//! | 16 | dir | vec3 f32 | ray direction (any non-zero length) |
-//! | 28 | t_max | f32 | segment end (ignored if flags bit 0) |
-//! | 32 | light_position | vec3 f32 | |
-//! | 44 | intensity | f32 | |
-//! | 48 | light_axis | vec3 f32 | two-lobed / spot axis |
-//! | 60 | light_param0 | f32 | two-lobed: power; spot: cos_inner |
-//! | 64 | light_param1 | f32 | spot: cos_outer |
-//! | 68 | sigma_s | f32 | |
-//! | 72 | sigma_t | f32 | |
-//! | 76 | phase_param0 | f32 | g (HG, Cornette–Shanks), k (Schlick), g1 (two-lobe HG) |
-//! | 80 | phase_param1 | f32 | g2 (two-lobe HG) |
-//! | 84 | phase_param2 | f32 | w (two-lobe HG) |
-//! | 88 | light_kind | u32 | 0 omni, 1 two-lobed, 2 spot |
-//! | 92 | phase_kind | u32 | 0 isotropic, 1 Rayleigh, 2 HG, 3 Schlick, 4 Cornette–Shanks, 5 two-lobe HG |
-//! | 96 | flags | u32 | bit 0: t_max = +∞ |
-//! | 100 | (padding) | 12 bytes | |
-//!
-//! Output, 8 bytes per record: `in_scatter: f32` at 0, `status: u32` at 4 (0 ok, 1 invalid
-//! record → value 0, 2 infinite → value `f32::MAX`).
+//! The records of the compute entry point: [`Record`] in (the WGSL `AirlightScene`, 112 bytes,
+//! std430 / WGSL storage layout; the offset table is in shaders-out/README.md), [`GpuResult`]
+//! out (8 bytes), both plain `#[repr(C)]` types the host writes and reads with bytemuck; a test
+//! checks their offsets and strides against naga's layout of the WGSL structs. Also the kind and
+//! status codes the shader takes from here at emission, and the workgroup size.
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
@@ -64,55 +43,157 @@ pub const PHASE_TWO_LOBE_HG: u32 = 5;
 /// Invocations per workgroup of the compute entry point (dispatch `⌈n / WORKGROUP_SIZE⌉`).
 pub const WORKGROUP_SIZE: u32 = 64;
 
-/// Packs one scene into its 112-byte record.
-pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> [u8; RECORD_SIZE] {
-    let mut w = [0u32; RECORD_SIZE / 4];
-    let mut put3 = |at: usize, v: [f32; 3]| {
-        for (i, x) in v.iter().enumerate() {
-            w[at / 4 + i] = x.to_bits();
+/// One record of the compute entry point's input buffer: the WGSL `AirlightScene` struct of
+/// `codegen/shader/airlight.wgsl` as the host writes it (std430 / WGSL storage layout, so each
+/// `vec3` is followed by a scalar in its 16-byte slot). `record_matches_the_wgsl_struct` checks
+/// every offset and the array stride against naga's layout of the WGSL struct.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Record {
+    /// Ray origin.
+    pub origin: [f32; 3],
+    /// Segment start (world distance).
+    pub t_min: f32,
+    /// Ray direction, any non-zero length.
+    pub dir: [f32; 3],
+    /// Segment end (world distance); ignored when `flags` bit 0 is set.
+    pub t_max: f32,
+    /// Light position.
+    pub light_position: [f32; 3],
+    /// Light intensity.
+    pub intensity: f32,
+    /// Two-lobed / spot axis.
+    pub light_axis: [f32; 3],
+    /// Two-lobed: power; spot: cos_inner.
+    pub light_param_a: f32,
+    /// Spot: cos_outer.
+    pub light_param_b: f32,
+    /// Scattering coefficient.
+    pub sigma_s: f32,
+    /// Extinction coefficient.
+    pub sigma_t: f32,
+    /// g (Henyey–Greenstein, Cornette–Shanks), k (Schlick), g1 (two-lobe HG).
+    pub phase_param_a: f32,
+    /// g2 (two-lobe HG).
+    pub phase_param_b: f32,
+    /// w (two-lobe HG).
+    pub phase_param_c: f32,
+    /// `LIGHT_*`.
+    pub light_kind: u32,
+    /// `PHASE_*`.
+    pub phase_kind: u32,
+    /// Bit 0: `t_max = +∞`.
+    pub flags: u32,
+    /// Up to the array stride, 112 (the struct's alignment is 16).
+    pub padding: [u32; 3],
+}
+
+/// One output of the compute entry point: the WGSL `AirlightResult` struct.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuResult {
+    /// `L_m` (0 for an invalid record, `f32::MAX` for an infinite one).
+    pub in_scatter: f32,
+    /// `STATUS_*`.
+    pub status: u32,
+}
+
+impl Record {
+    /// The record of a scene given as the kernel's types.
+    pub fn new(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> Self {
+        let (light_kind, light_axis, light_param_a, light_param_b) = match light.distribution {
+            AnyDistribution::Omni => (LIGHT_OMNI, [0.0, 0.0, 1.0], 0.0, 0.0),
+            AnyDistribution::TwoLobed(d) => (LIGHT_TWO_LOBED, d.axis.to_array(), d.power as f32, 0.0),
+            AnyDistribution::SpotCone(d) => (LIGHT_SPOT, d.axis.to_array(), d.cos_inner, d.cos_outer),
+        };
+        let (phase_kind, phase_param_a, phase_param_b, phase_param_c) = match *phase {
+            AnyPhase::Isotropic => (PHASE_ISOTROPIC, 0.0, 0.0, 0.0),
+            AnyPhase::Rayleigh => (PHASE_RAYLEIGH, 0.0, 0.0, 0.0),
+            AnyPhase::HenyeyGreenstein(p) => (PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0),
+            AnyPhase::Schlick(p) => (PHASE_SCHLICK, p.k, 0.0, 0.0),
+            AnyPhase::CornetteShanks(p) => (PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => (PHASE_TWO_LOBE_HG, p.g1, p.g2, p.w),
+        };
+        let infinite = ray.t_max == f32::INFINITY;
+        Record {
+            origin: ray.origin.to_array(),
+            t_min: ray.t_min,
+            dir: ray.dir.to_array(),
+            t_max: if infinite { 0.0 } else { ray.t_max },
+            light_position: light.position.to_array(),
+            intensity: light.intensity,
+            light_axis,
+            light_param_a,
+            light_param_b,
+            sigma_s: medium.sigma_s,
+            sigma_t: medium.sigma_t,
+            phase_param_a,
+            phase_param_b,
+            phase_param_c,
+            light_kind,
+            phase_kind,
+            flags: infinite as u32,
+            padding: [0; 3],
         }
-    };
-    put3(0, ray.origin.to_array());
-    put3(16, ray.dir.to_array());
-    put3(32, light.position.to_array());
-    let (kind, axis, p0, p1) = match light.distribution {
-        AnyDistribution::Omni => (LIGHT_OMNI, [0.0, 0.0, 1.0], 0.0, 0.0),
-        AnyDistribution::TwoLobed(d) => (LIGHT_TWO_LOBED, d.axis.to_array(), d.power as f32, 0.0),
-        AnyDistribution::SpotCone(d) => (LIGHT_SPOT, d.axis.to_array(), d.cos_inner, d.cos_outer),
-    };
-    put3(48, axis);
-    let (pk, q0, q1, q2) = match phase {
-        AnyPhase::Isotropic => (PHASE_ISOTROPIC, 0.0, 0.0, 0.0),
-        AnyPhase::Rayleigh => (PHASE_RAYLEIGH, 0.0, 0.0, 0.0),
-        AnyPhase::HenyeyGreenstein(p) => (PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0),
-        AnyPhase::Schlick(p) => (PHASE_SCHLICK, p.k, 0.0, 0.0),
-        AnyPhase::CornetteShanks(p) => (PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0),
-        AnyPhase::TwoLobeHenyeyGreenstein(p) => (PHASE_TWO_LOBE_HG, p.g1, p.g2, p.w),
-    };
-    let infinite = ray.t_max == f32::INFINITY;
-    w[3] = ray.t_min.to_bits();
-    w[7] = if infinite { 0 } else { ray.t_max.to_bits() };
-    w[11] = light.intensity.to_bits();
-    w[15] = f32::to_bits(p0);
-    w[16] = f32::to_bits(p1);
-    w[17] = medium.sigma_s.to_bits();
-    w[18] = medium.sigma_t.to_bits();
-    w[19] = f32::to_bits(q0);
-    w[20] = f32::to_bits(q1);
-    w[21] = f32::to_bits(q2);
-    w[22] = kind;
-    w[23] = pk;
-    w[24] = infinite as u32;
-    let mut out = [0u8; RECORD_SIZE];
-    for (i, x) in w.iter().enumerate() {
-        out[i * 4..i * 4 + 4].copy_from_slice(&x.to_le_bytes());
     }
-    out
+
+    /// Its f32 inputs, `origin` … `phase_param_c` (the kinds and flags follow them).
+    pub fn float_inputs(&self) -> &[f32] {
+        &bytemuck::cast_slice(bytemuck::bytes_of(self))[..FLOAT_INPUTS_END / 4]
+    }
+}
+
+/// Packs one scene into its 112-byte record (little-endian, as every GPU wgpu runs on).
+pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> [u8; RECORD_SIZE] {
+    bytemuck::cast(Record::new(ray, light, medium, phase))
 }
 
 /// Reads one result: `(in_scatter, status)`.
 pub fn unpack_result(bytes: &[u8]) -> (f32, u32) {
-    let v = f32::from_le_bytes(bytes[0..4].try_into().unwrap());
-    let s = u32::from_le_bytes(bytes[4..8].try_into().unwrap());
-    (v, s)
+    let r: GpuResult = bytemuck::pod_read_unaligned(&bytes[..RESULT_SIZE]);
+    (r.in_scatter, r.status)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every field of [`Record`] sits where naga lays out the same member of the WGSL
+    /// `AirlightScene` (storage layout), the array stride is the record's size, and likewise
+    /// for [`GpuResult`] / `AirlightResult`: the host and the shader read the same bytes.
+    #[test]
+    fn record_matches_the_wgsl_struct() {
+        let (module, _) = crate::targets::validate(&crate::targets::source(4, true)).unwrap();
+        let mut layouter = naga::proc::Layouter::default();
+        layouter.update(module.to_ctx()).unwrap();
+        let rust: [(&str, usize); 17] = [
+            ("origin", core::mem::offset_of!(Record, origin)),
+            ("t_min", core::mem::offset_of!(Record, t_min)),
+            ("dir", core::mem::offset_of!(Record, dir)),
+            ("t_max", core::mem::offset_of!(Record, t_max)),
+            ("light_position", core::mem::offset_of!(Record, light_position)),
+            ("intensity", core::mem::offset_of!(Record, intensity)),
+            ("light_axis", core::mem::offset_of!(Record, light_axis)),
+            ("light_param_a", core::mem::offset_of!(Record, light_param_a)),
+            ("light_param_b", core::mem::offset_of!(Record, light_param_b)),
+            ("sigma_s", core::mem::offset_of!(Record, sigma_s)),
+            ("sigma_t", core::mem::offset_of!(Record, sigma_t)),
+            ("phase_param_a", core::mem::offset_of!(Record, phase_param_a)),
+            ("phase_param_b", core::mem::offset_of!(Record, phase_param_b)),
+            ("phase_param_c", core::mem::offset_of!(Record, phase_param_c)),
+            ("light_kind", core::mem::offset_of!(Record, light_kind)),
+            ("phase_kind", core::mem::offset_of!(Record, phase_kind)),
+            ("flags", core::mem::offset_of!(Record, flags)),
+        ];
+        let result: [(&str, usize); 2] = [("in_scatter", core::mem::offset_of!(GpuResult, in_scatter)), ("status", core::mem::offset_of!(GpuResult, status))];
+        for (name, fields, size) in [("AirlightScene", &rust[..], core::mem::size_of::<Record>()), ("AirlightResult", &result[..], core::mem::size_of::<GpuResult>())] {
+            let (handle, ty) = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("no struct {name} in the WGSL"));
+            let naga::TypeInner::Struct { members, .. } = &ty.inner else { panic!("{name} is not a struct") };
+            let wgsl: Vec<(&str, usize)> = members.iter().map(|m| (m.name.as_deref().unwrap(), m.offset as usize)).collect();
+            assert_eq!(wgsl, fields, "{name}: member offsets (naga) against the Rust struct's");
+            assert_eq!(layouter[handle].to_stride() as usize, size, "{name}: array stride (naga) against size_of");
+        }
+        assert_eq!((core::mem::size_of::<Record>(), core::mem::size_of::<GpuResult>()), (RECORD_SIZE, RESULT_SIZE));
+        assert_eq!(core::mem::offset_of!(Record, light_kind), FLOAT_INPUTS_END);
+    }
 }
