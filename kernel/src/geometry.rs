@@ -175,3 +175,25 @@ impl<T: Real> Canonical<T> {
         (t - self.x_h) / self.h
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A ray along +x from the origin and a light at (5, 1, 0) with axis −y: the foot is at
+    /// `x_h = 5`, the distance `h = 1`, the axis is perpendicular to the ray (`d_el = 0`) and
+    /// points from the light to its foot (`d_c = 1`), by hand; `u(t) = (t − x_h)/h`.
+    #[test]
+    fn canonical_form_by_hand() {
+        for g in [
+            Canonical::new([0.0f64; 3], [2.0, 0.0, 0.0], 0.0, 25.0, [5.0, 1.0, 0.0], [0.0, -1.0, 0.0]),
+            Canonical::new_accurate([0.0f64; 3], [2.0, 0.0, 0.0], 0.0, 25.0, [5.0, 1.0, 0.0], [0.0, -1.0, 0.0]),
+        ] {
+            assert_eq!((g.x_h, g.h, g.d_el, g.d_c, g.t0, g.t1), (5.0, 1.0, 0.0, 1.0, 0.0, 25.0));
+            assert_eq!(g.u(8.0), 3.0);
+        }
+        // the light on the ray line: h = 0 exactly, and d_c = 0
+        let g = Canonical::new([0.0f32; 3], [1.0, 0.0, 0.0], 0.0, 10.0, [3.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        assert_eq!((g.h, g.x_h, g.d_c), (0.0, 3.0, 0.0));
+    }
+}

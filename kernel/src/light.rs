@@ -191,3 +191,22 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// The engine smoothstep `x²(3 − 2x)`, `x = (c − cos_outer)/(cos_inner − cos_outer)`: 0 at
+    /// the outer edge, 1/2 halfway, 1 from the inner edge on; the two-lobed `c^p` by hand.
+    #[test]
+    fn distributions_by_hand() {
+        let spot = SpotCone::<f64> { axis: DVec3::Z, cos_inner: 0.9, cos_outer: 0.7 };
+        let d = |c: f64| -> f64 { spot.eval(c) };
+        assert_eq!((d(0.6), d(0.7), d(0.9), d(1.0)), (0.0, 0.0, 1.0, 1.0));
+        assert!((d(0.8) - 0.5).abs() < 1e-15 && (d(0.75) - 0.15625).abs() < 1e-15);
+        let beam = TwoLobed::<f64> { axis: DVec3::Z, power: 4 };
+        let b = |c: f64| -> f64 { beam.eval(c) };
+        assert_eq!((b(0.5), b(-0.5), b(1.0)), (0.0625, 0.0625, 1.0));
+    }
+}

@@ -533,6 +533,25 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
 mod tests {
     use super::*;
 
+    /// `M_0(λ) = (1 − e^{−2λ})/λ` and, with `w = 1 + ξ`, `M_1(λ) = ∫_0^2 (w − 1) e^{−λw} dw =
+    /// −2e^{−2λ}/λ + (1 − e^{−2λ})/λ² − M_0`, integrated by hand; at `λ` in the Miller branch
+    /// (0.3, 3) and the upward one (50, 1e3).
+    #[test]
+    fn first_moments_by_hand() {
+        for lambda in [0.3f64, 3.0, 50.0, 1e3] {
+            let mut m = [0.0f64; 12];
+            exp_legendre_moments(lambda, &mut m);
+            let e2 = (-2.0 * lambda).exp();
+            let m0 = (1.0 - e2) / lambda;
+            let m1 = -2.0 * e2 / lambda + (1.0 - e2) / (lambda * lambda) - m0;
+            assert!((m[0] - m0).abs() <= 4.0 * f64::EPSILON * m0, "λ = {lambda}: M_0 {} vs {m0}", m[0]);
+            assert!((m[1] - m1).abs() <= 16.0 * f64::EPSILON * m0, "λ = {lambda}: M_1 {} vs {m1}", m[1]);
+        }
+        let mut m = [0.0f64; 4];
+        exp_legendre_moments(0.0, &mut m);
+        assert_eq!(m, [2.0, 0.0, 0.0, 0.0], "λ = 0: ∫ P_k = 2δ_k0");
+    }
+
     /// The tabulated coefficients against Bonnet's recurrence
     /// `(k+1) P_{k+1} = (2k+1) ξ P_k − k P_{k−1}` (DLMF 18.9.1), a different route to `P_k`.
     #[test]

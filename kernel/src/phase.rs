@@ -257,3 +257,47 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every phase function integrates to 1 over the sphere, `2π ∫_{−1}^{1} P(μ) dμ = 1`
+    /// (composite Simpson, 20 000 intervals; the peaked ones at moderate asymmetry so that
+    /// Simpson's error stays below 1e-9).
+    #[test]
+    fn normalised_over_the_sphere() {
+        fn sphere<P: PhaseFunction<f64>>(p: &P) -> f64 {
+            let n = 20_000;
+            let h = 2.0 / n as f64;
+            let mut s = 0.0;
+            for i in 0..=n {
+                let mu = -1.0 + i as f64 * h;
+                let w = if i == 0 || i == n { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                s += w * p.eval(mu);
+            }
+            2.0 * core::f64::consts::PI * s * h / 3.0
+        }
+        let total = [
+            sphere(&Isotropic),
+            sphere(&Rayleigh),
+            sphere(&HenyeyGreenstein { g: 0.6 }),
+            sphere(&HenyeyGreenstein { g: -0.6 }),
+            sphere(&Schlick { k: 0.6 }),
+            sphere(&CornetteShanks { g: 0.6 }),
+            sphere(&TwoLobeHenyeyGreenstein { g1: 0.7, g2: -0.3, w: 0.8 }),
+        ];
+        for (i, t) in total.iter().enumerate() {
+            assert!((t - 1.0).abs() < 1e-9, "phase function {i}: {t}");
+        }
+    }
+
+    /// Passing `1 ∓ μ` exactly agrees with forming them from `μ` where that is exact.
+    #[test]
+    fn sides_agree_with_mu() {
+        let hg = HenyeyGreenstein { g: 0.9f64 };
+        for mu in [-1.0, -0.5, 0.0, 0.25, 0.5, 1.0] {
+            assert_eq!(hg.eval_sides(mu, 1.0 - mu, 1.0 + mu), hg.eval(mu));
+        }
+    }
+}

@@ -416,3 +416,41 @@ pub fn atan_form<T: Real>(ray: &Ray<T>, light_position: T::Vec3, intensity: T, s
     let span = g.u(g.t1).atan() - g.u(g.t0).atan();
     sigma_s * intensity * T::FRAC_1_PI() * T::lit(0.25) / g.h * span
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::Omni;
+    use crate::phase::{HenyeyGreenstein, Isotropic};
+    use glam::DVec3;
+
+    /// Without extinction and with isotropic light and phase the integral is
+    /// `σs I/(4π h) (atan u_1 − atan u_0)`, `u = (t − x_h)/h` (docs/DESIGN.md §1 with `σt = 0`):
+    /// a light at (5, 2, 0), the ray along +x from 1 to 20, `h = 2`, `x_h = 5`.
+    #[test]
+    fn without_extinction_it_is_the_atan_form() {
+        let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 1.0, t_max: 20.0 };
+        let light = PointLight { position: DVec3::new(5.0, 2.0, 0.0), intensity: 3.0, distribution: Omni };
+        let s = Scene::new(ray, light, Medium { sigma_s: 0.5, sigma_t: 0.0 }, Isotropic).unwrap();
+        let want = 0.5 * 3.0 / (4.0 * core::f64::consts::PI * 2.0) * ((15.0f64 / 2.0).atan() - (-4.0f64 / 2.0).atan());
+        for got in [s.in_scatter(), s.in_scatter_with::<6>(Expansion::Chebyshev), s.in_scatter_lit(&[(1.0, 20.0)])] {
+            assert!((got - want).abs() <= 1e-14 * want, "{got} vs {want}");
+        }
+    }
+
+    /// Invalid input is a typed error naming the field.
+    #[test]
+    fn bad_input_names_its_field() {
+        let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 20.0 };
+        let light = PointLight { position: DVec3::new(5.0, 2.0, 0.0), intensity: 3.0, distribution: Omni };
+        let medium = Medium { sigma_s: 0.5, sigma_t: 0.1 };
+        let e = Scene::new(ray, light, medium, HenyeyGreenstein { g: 1.0 }).unwrap_err();
+        assert_eq!((e.field, e.kind), ("phase.g", ErrorKind::OutOfRange));
+        let e = Scene::new(Ray { dir: DVec3::ZERO, ..ray }, light, medium, Isotropic).unwrap_err();
+        assert_eq!((e.field, e.kind), ("ray.dir", ErrorKind::ZeroVector));
+        let e = Scene::new(Ray { t_min: 30.0, ..ray }, light, medium, Isotropic).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::EmptyRange);
+        let e = Scene::new(ray, light, Medium { sigma_s: -1.0, ..medium }, Isotropic).unwrap_err();
+        assert_eq!((e.field, e.kind), ("medium.sigma_s", ErrorKind::Negative));
+    }
+}

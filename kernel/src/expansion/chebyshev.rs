@@ -86,3 +86,19 @@ pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: 
     }
     a
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Interpolation at `N` nodes is exact for a polynomial of degree below `N`: the cubic
+    /// `2 − y + 3y³` about `y_c = 0.5` is `1.875 + 1.25 s + 4.5 s² + 3 s³` (expanded by hand).
+    #[test]
+    fn reproduces_a_cubic() {
+        let a: [f64; 6] = chebyshev_coefficients(|y: f64| 2.0 - y + 3.0 * y * y * y, 0.5, 0.25);
+        let want = [1.875, 1.25, 4.5, 3.0, 0.0, 0.0];
+        for (k, (&got, &w)) in a.iter().zip(&want).enumerate() {
+            assert!((got - w).abs() <= 1e-12, "a_{k} = {got}, want {w}");
+        }
+    }
+}

@@ -25,3 +25,32 @@ pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
 
 /// Euler–Mascheroni constant γ (A&S 6.1.3).
 pub const EULER_GAMMA: f64 = 0.577_215_664_901_532_860_606_512_090_082;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Published values: `E1(0.5)`, `E1(1)` (A&S table 5.1), and on the imaginary axis
+    /// `E1(i) = −Ci(1) + i(Si(1) − π/2)` (A&S 5.2.23, Ci(1), Si(1) from table 5.2); `E_2(1) =
+    /// e^{−1} − E1(1)` (A&S 5.1.14).
+    #[test]
+    fn exponential_integrals_against_published_tables() {
+        let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs();
+        assert!(close(e1(C::new(0.5f64, 0.0)).re, 0.559_773_594_776_161, 1e-14));
+        assert!(close(e1(C::new(1.0f64, 0.0)).re, 0.219_383_934_395_520, 1e-14));
+        let z = e1(C::new(0.0f64, 1.0));
+        assert!(close(z.re, -0.337_403_922_900_968, 1e-14) && close(z.im, 0.946_083_070_367_183 - core::f64::consts::FRAC_PI_2, 1e-14), "{z:?}");
+        let z32 = e1(C::new(0.0f32, 1.0));
+        assert!(close(z32.re as f64, -0.337_403_922_900_968, 1e-6) && close(z32.im as f64, -0.624_713_256_427_714, 1e-6), "{z32:?}");
+        // far out, e^x E1(x) ~ (1/x) Σ (−1)^k k!/x^k (A&S 5.1.51): at x = 1e4 the terms
+        // after 24/x⁴ are below 1e-17
+        let x = 1e4f64;
+        let s = e1_scaled(C::new(x, 0.0)).re;
+        assert!(close(s, (1.0 - 1.0 / x + 2.0 / (x * x) - 6.0 / (x * x * x) + 24.0 / (x * x * x * x)) / x, 1e-15));
+        let mut en = [0.0f64; 3];
+        en_scaled(1.0, &mut en);
+        assert!(close(en[1] * (-1.0f64).exp(), (-1.0f64).exp() - 0.219_383_934_395_520, 1e-14));
+        // outside the domain: NaN, not a wrong number
+        assert!(e1(C::new(-2.53f64, 0.043)).re.is_nan());
+    }
+}
