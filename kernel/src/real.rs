@@ -68,9 +68,11 @@ impl Real for f64 {
     const PANEL_FLOOR: f64 = 1e-10;
     const MAX_PANELS: usize = 64;
     const E1_SERIES_ELLIPSE: (f64, f64) = (2.5, 4.0);
-    const E1_SERIES_TERMS: usize = 34;
+    // E1 tuning: tests/reference/gen_e1_tuning.py derives the term count and depths from the
+    // region bounds (truncation ≤ 8 unit roundoffs, measured against mpmath).
+    const E1_SERIES_TERMS: usize = 29;
     const E1_CF_DEPTH: &'static [(f64, usize)] =
-        &[(5.0, 40), (8.0, 31), (15.0, 20), (50.0, 11), (300.0, 5), (f64::INFINITY, 2)];
+        &[(5.0, 39), (8.0, 31), (15.0, 20), (50.0, 11), (300.0, 5), (f64::INFINITY, 2)];
     // 8-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
@@ -107,9 +109,10 @@ impl Real for f32 {
     const PANEL_FLOOR: f64 = 1e-4;
     const MAX_PANELS: usize = 32;
     const E1_SERIES_ELLIPSE: (f64, f64) = (1.3, 2.1);
-    const E1_SERIES_TERMS: usize = 14;
+    // E1 tuning: derived by tests/reference/gen_e1_tuning.py, as for f64.
+    const E1_SERIES_TERMS: usize = 13;
     const E1_CF_DEPTH: &'static [(f64, usize)] =
-        &[(3.0, 15), (5.0, 10), (10.0, 6), (30.0, 3), (f64::INFINITY, 2)];
+        &[(3.0, 14), (5.0, 9), (10.0, 6), (30.0, 3), (f64::INFINITY, 1)];
     // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),

@@ -80,10 +80,10 @@ const uint AIRLIGHT_STATUS_INVALID = 1u;
 const uint AIRLIGHT_STATUS_INFINITE = 2u;
 const uint AIRLIGHT_MAX_POWER = 1024u;
 const uint AIRLIGHT_MAX_POWER_BITS = 11u;
-const uint AIRLIGHT_E1_SERIES_TERMS = 14u;
+const uint AIRLIGHT_E1_SERIES_TERMS = 13u;
 const float AIRLIGHT_E1_INV_RE = 0.7692308;
 const float AIRLIGHT_E1_INV_IM = 0.47619048;
-const uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
+const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 
 layout(std430, binding = 0) readonly buffer type_18_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
@@ -99,8 +99,8 @@ float[16] airlight_zero_scratch() {
     return float[16](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
 }
 
-float[14] airlight_ein_coefficients() {
-    return float[14](1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11, -8.1933895e-13);
+float[13] airlight_ein_coefficients() {
+    return float[13](1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11);
 }
 
 vec2 airlight_cmul(vec2 a, vec2 b) {
@@ -283,7 +283,7 @@ bool airlight_is_finite(float x_3) {
 vec2 airlight_ein(vec2 z_4) {
     vec2 sum_1 = vec2(0.0, 0.0);
     uint k_2 = 0u;
-    float _e1[14] = airlight_ein_coefficients();
+    float _e1[13] = airlight_ein_coefficients();
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
@@ -300,7 +300,7 @@ vec2 airlight_ein(vec2 z_4) {
             vec2 _e11 = sum_1;
             vec2 _e12 = airlight_cmul(_e11, z_4);
             uint _e14 = k_2;
-            sum_1 = (_e12 + vec2(_e1[(13u - _e14)], 0.0));
+            sum_1 = (_e12 + vec2(_e1[(12u - _e14)], 0.0));
         }
     }
     vec2 _e23 = sum_1;
@@ -313,7 +313,7 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
     vec2 a_pow = vec2(1.0, 0.0);
     vec2 sum_2 = vec2(0.0, 0.0);
     uint k_3 = 0u;
-    float _e2[14] = airlight_ein_coefficients();
+    float _e2[13] = airlight_ein_coefficients();
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
@@ -352,10 +352,10 @@ bool airlight_in_series_region(vec2 z_5) {
 
 uint airlight_cf_depth(float r) {
     if ((r < 3.0)) {
-        return 15u;
+        return 14u;
     }
     if ((r < 5.0)) {
-        return 10u;
+        return 9u;
     }
     if ((r < 10.0)) {
         return 6u;
@@ -363,15 +363,15 @@ uint airlight_cf_depth(float r) {
     if ((r < 30.0)) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 uint airlight_cf_depth_squared(float r2_) {
     if ((r2_ < 9.0)) {
-        return 15u;
+        return 14u;
     }
     if ((r2_ < 25.0)) {
-        return 10u;
+        return 9u;
     }
     if ((r2_ < 100.0)) {
         return 6u;
@@ -379,7 +379,7 @@ uint airlight_cf_depth_squared(float r2_) {
     if ((r2_ < 900.0)) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 vec2 airlight_e1_scaled_cf(vec2 z_6) {

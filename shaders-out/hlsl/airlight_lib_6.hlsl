@@ -119,10 +119,10 @@ static const uint AIRLIGHT_STATUS_INVALID = 1u;
 static const uint AIRLIGHT_STATUS_INFINITE = 2u;
 static const uint AIRLIGHT_MAX_POWER = 1024u;
 static const uint AIRLIGHT_MAX_POWER_BITS = 11u;
-static const uint AIRLIGHT_E1_SERIES_TERMS = 14u;
+static const uint AIRLIGHT_E1_SERIES_TERMS = 13u;
 static const float AIRLIGHT_E1_INV_RE = 0.7692308;
 static const float AIRLIGHT_E1_INV_IM = 0.47619048;
-static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
+static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 
 typedef float airlight_ret_Constructarray6_float_[6];
@@ -149,16 +149,16 @@ airlight_ret_airlight_zero_scratch airlight_zero_scratch()
     return airlight_Constructarray16_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
 }
 
-typedef float airlight_ret_Constructarray14_float_[14];
-airlight_ret_Constructarray14_float_ airlight_Constructarray14_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13) {
-    float ret[14] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13 };
+typedef float airlight_ret_Constructarray13_float_[13];
+airlight_ret_Constructarray13_float_ airlight_Constructarray13_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12) {
+    float ret[13] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12 };
     return ret;
 }
 
-typedef float airlight_ret_airlight_ein_coefficients[14];
+typedef float airlight_ret_airlight_ein_coefficients[13];
 airlight_ret_airlight_ein_coefficients airlight_ein_coefficients()
 {
-    return airlight_Constructarray14_float_(1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11, -8.1933895e-13);
+    return airlight_Constructarray13_float_(1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 2.8344672e-5, -3.1001985e-6, 3.0619245e-7, -2.755732e-8, 2.2774644e-9, -1.7397297e-10, 1.2353111e-11);
 }
 
 AirlightRay ConstructAirlightRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4) {
@@ -504,7 +504,7 @@ float2 airlight_ein(float2 z_4)
     float2 sum_1 = float2(0.0, 0.0);
     uint k_3 = 0u;
 
-    const float _e1[14] = airlight_ein_coefficients();
+    const float _e1[13] = airlight_ein_coefficients();
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -524,7 +524,7 @@ float2 airlight_ein(float2 z_4)
             float2 _e11 = sum_1;
             const float2 _e12 = airlight_cmul(_e11, z_4);
             uint _e14 = k_3;
-            sum_1 = (_e12 + float2(_e1[min(uint((13u - _e14)), 13u)], 0.0));
+            sum_1 = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
         }
     }
     float2 _e23 = sum_1;
@@ -539,7 +539,7 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
     float2 sum_2 = float2(0.0, 0.0);
     uint k_4 = 0u;
 
-    const float _e2[14] = airlight_ein_coefficients();
+    const float _e2[13] = airlight_ein_coefficients();
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
@@ -559,7 +559,7 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
             float2 _e20 = sum_2;
             float2 _e21 = h;
             uint _e22 = k_4;
-            sum_2 = (_e20 + (_e21 * _e2[min(uint(_e22), 13u)]));
+            sum_2 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
             float2 _e26 = a_pow;
             const float2 _e27 = airlight_cmul(_e26, a_2);
             a_pow = _e27;
@@ -583,10 +583,10 @@ bool airlight_in_series_region(float2 z_5)
 uint airlight_cf_depth(float r)
 {
     if ((r < 3.0)) {
-        return 15u;
+        return 14u;
     }
     if ((r < 5.0)) {
-        return 10u;
+        return 9u;
     }
     if ((r < 10.0)) {
         return 6u;
@@ -594,16 +594,16 @@ uint airlight_cf_depth(float r)
     if ((r < 30.0)) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 uint airlight_cf_depth_squared(float r2_)
 {
     if ((r2_ < 9.0)) {
-        return 15u;
+        return 14u;
     }
     if ((r2_ < 25.0)) {
-        return 10u;
+        return 9u;
     }
     if ((r2_ < 100.0)) {
         return 6u;
@@ -611,7 +611,7 @@ uint airlight_cf_depth_squared(float r2_)
     if ((r2_ < 900.0)) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 float2 airlight_e1_scaled_cf(float2 z_6)

@@ -15,7 +15,7 @@ struct airlight_type_3 {
     float inner[16];
 };
 struct airlight_type_4 {
-    float inner[14];
+    float inner[13];
 };
 struct AirlightScene {
     metal::packed_float3 origin;
@@ -135,10 +135,10 @@ constant uint AIRLIGHT_STATUS_INVALID = 1u;
 constant uint AIRLIGHT_STATUS_INFINITE = 2u;
 constant uint AIRLIGHT_MAX_POWER = 1024u;
 constant uint AIRLIGHT_MAX_POWER_BITS = 11u;
-constant uint AIRLIGHT_E1_SERIES_TERMS = 14u;
+constant uint AIRLIGHT_E1_SERIES_TERMS = 13u;
 constant float AIRLIGHT_E1_INV_RE = 0.7692308;
 constant float AIRLIGHT_E1_INV_IM = 0.47619048;
-constant uint AIRLIGHT_E1_CF_MAX_DEPTH = 15u;
+constant uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 constant uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 
 airlight_type_2 airlight_zero_terms(
@@ -153,7 +153,7 @@ airlight_type_3 airlight_zero_scratch(
 
 airlight_type_4 airlight_ein_coefficients(
 ) {
-    return airlight_type_4 {{1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 0.000028344672, -0.0000031001985, 0.00000030619245, -0.00000002755732, 0.0000000022774644, -0.00000000017397297, 0.000000000012353111, -0.00000000000081933895}};
+    return airlight_type_4 {{1.0, -0.25, 0.055555556, -0.010416667, 0.0016666667, -0.00023148148, 0.000028344672, -0.0000031001985, 0.00000030619245, -0.00000002755732, 0.0000000022774644, -0.00000000017397297, 0.000000000012353111}};
 }
 
 AirlightRay airlight_ray(
@@ -484,7 +484,7 @@ metal::float2 airlight_ein(
             metal::float2 _e11 = sum_1;
             metal::float2 _e12 = airlight_cmul(_e11, z_4);
             uint _e14 = k_3;
-            sum_1 = _e12 + metal::float2(_e1.inner[metal::min(unsigned(13u - _e14), 13u)], 0.0);
+            sum_1 = _e12 + metal::float2(_e1.inner[metal::min(unsigned(12u - _e14), 12u)], 0.0);
         }
     }
     metal::float2 _e23 = sum_1;
@@ -520,7 +520,7 @@ metal::float2 airlight_ein_divided_difference(
             metal::float2 _e20 = sum_2;
             metal::float2 _e21 = h;
             uint _e22 = k_4;
-            sum_2 = _e20 + (_e21 * _e2.inner[metal::min(unsigned(_e22), 13u)]);
+            sum_2 = _e20 + (_e21 * _e2.inner[metal::min(unsigned(_e22), 12u)]);
             metal::float2 _e26 = a_pow;
             metal::float2 _e27 = airlight_cmul(_e26, a_2);
             a_pow = _e27;
@@ -546,10 +546,10 @@ uint airlight_cf_depth(
     float r
 ) {
     if (r < 3.0) {
-        return 15u;
+        return 14u;
     }
     if (r < 5.0) {
-        return 10u;
+        return 9u;
     }
     if (r < 10.0) {
         return 6u;
@@ -557,17 +557,17 @@ uint airlight_cf_depth(
     if (r < 30.0) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 uint airlight_cf_depth_squared(
     float r2_
 ) {
     if (r2_ < 9.0) {
-        return 15u;
+        return 14u;
     }
     if (r2_ < 25.0) {
-        return 10u;
+        return 9u;
     }
     if (r2_ < 100.0) {
         return 6u;
@@ -575,7 +575,7 @@ uint airlight_cf_depth_squared(
     if (r2_ < 900.0) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 metal::float2 airlight_e1_scaled_cf(

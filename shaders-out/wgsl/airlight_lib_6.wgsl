@@ -109,10 +109,10 @@ const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
 const AIRLIGHT_MAX_POWER: u32 = 1024u;
 const AIRLIGHT_MAX_POWER_BITS: u32 = 11u;
-const AIRLIGHT_E1_SERIES_TERMS: u32 = 14u;
+const AIRLIGHT_E1_SERIES_TERMS: u32 = 13u;
 const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
-const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 15u;
+const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
 
 fn airlight_zero_terms() -> array<f32, 6> {
@@ -123,8 +123,8 @@ fn airlight_zero_scratch() -> array<f32, 16> {
     return array<f32, 16>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
 }
 
-fn airlight_ein_coefficients() -> array<f32, 14> {
-    return array<f32, 14>(1f, -0.25f, 0.055555556f, -0.010416667f, 0.0016666667f, -0.00023148148f, 0.000028344672f, -0.0000031001985f, 0.00000030619245f, -0.00000002755732f, 0.0000000022774644f, -0.00000000017397297f, 0.000000000012353111f, -0.00000000000081933895f);
+fn airlight_ein_coefficients() -> array<f32, 13> {
+    return array<f32, 13>(1f, -0.25f, 0.055555556f, -0.010416667f, 0.0016666667f, -0.00023148148f, 0.000028344672f, -0.0000031001985f, 0.00000030619245f, -0.00000002755732f, 0.0000000022774644f, -0.00000000017397297f, 0.000000000012353111f);
 }
 
 fn airlight_ray(origin: vec3<f32>, dir: vec3<f32>, t_min: f32, t_max: f32) -> AirlightRay {
@@ -370,7 +370,7 @@ fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
             let _e11 = sum_1;
             let _e12 = airlight_cmul(_e11, z_4);
             let _e14 = k_3;
-            sum_1 = (_e12 + vec2<f32>(_e1[(13u - _e14)], 0f));
+            sum_1 = (_e12 + vec2<f32>(_e1[(12u - _e14)], 0f));
         }
         continuing {
             let _e21 = k_3;
@@ -425,10 +425,10 @@ fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
 
 fn airlight_cf_depth(r: f32) -> u32 {
     if (r < 3f) {
-        return 15u;
+        return 14u;
     }
     if (r < 5f) {
-        return 10u;
+        return 9u;
     }
     if (r < 10f) {
         return 6u;
@@ -436,15 +436,15 @@ fn airlight_cf_depth(r: f32) -> u32 {
     if (r < 30f) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
     if (r2_ < 9f) {
-        return 15u;
+        return 14u;
     }
     if (r2_ < 25f) {
-        return 10u;
+        return 9u;
     }
     if (r2_ < 100f) {
         return 6u;
@@ -452,7 +452,7 @@ fn airlight_cf_depth_squared(r2_: f32) -> u32 {
     if (r2_ < 900f) {
         return 3u;
     }
-    return 2u;
+    return 1u;
 }
 
 fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {

@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Derives the complex E1 tuning of kernel/src/real.rs (E1_SERIES_TERMS, E1_CF_DEPTH) from the
+region bounds, and shows each choice's measured truncation error, so the tables can be
+reproduced and re-derived when a bound moves.
+
+What the kernel evaluates (kernel/src/special/): for Re z >= 0,
+  * inside the ellipse (Re z / a)^2 + (Im z / b)^2 < 1 (E1_SERIES_ELLIPSE = (a, b)):
+      E1(z) = -gamma - ln z + Ein(z),  Ein(z) = sum_{k=1}^{n} (-1)^(k+1) z^k / (k k!)   (A&S 5.1.11)
+    with n = E1_SERIES_TERMS;
+  * outside it, e^z E1(z) by the continued fraction (A&S 5.1.22, even contraction)
+      1/(z + 1 - 1^2/(z + 3 - 2^2/(z + 5 - ...)))
+    cut at depth d, the tail t_{d+1} replaced by the fixed point of t = b - (d+1)^2/t,
+    b = z + 2d + 1; d from E1_CF_DEPTH, the first band (R, d) with |z| < R.
+
+Derived here, in mpmath at 50 digits against mpmath's own e1 (so only truncation is measured,
+not the float rounding the kernel's tests cover):
+  * n: the fewest series terms whose truncation error, relative to |E1(z)|, is at most
+    TOLERANCE = 8 unit roundoffs u (u = 2^-53, 2^-24) on the ellipse's boundary (where |z|, and so the
+    truncation, is largest; 64 points on the quarter ellipse, Im z >= 0 by symmetry);
+  * per band: the smallest depth whose relative error is at most 8u over the band's inner
+    edge (|z| = previous bound, or the ellipse for the first band; 48 angles in [0, pi/2],
+    points inside the ellipse skipped), where the fraction converges slowest.
+The band bounds and ellipse are the kernel's choices (e1.rs module docs: where the series'
+cancellation along the real axis, ~e^{2x} ulps, and the fraction's depth along the imaginary
+axis balance); this script takes them as given and checks what they imply.
+
+Usage: python3 tests/reference/gen_e1_tuning.py    (mpmath==1.3.0; about a minute)
+Exit status 1 when a derived number differs from the one in kernel/src/real.rs.
+"""
+import math
+import os
+import re
+import sys
+
+import mpmath as mp
+
+mp.mp.dps = 50
+
+# The criterion: truncation at most 8 unit roundoffs (4 ulp) relative to the value — below the
+# rounding the evaluation itself leaves (the series' cancellation, the fraction's levels), and
+# 1e5 (f32) / 1e6 (f64) times below the kernel's accuracy targets.
+TOLERANCE = 8
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+def committed():
+    """(ellipse, series terms, depth table) per precision, read from kernel/src/real.rs."""
+    text = open(os.path.join(ROOT, "kernel", "src", "real.rs")).read()
+    out = {}
+    for prec in ("f64", "f32"):
+        block = text[text.index(f"impl Real for {prec}"):]
+        ell = re.search(r"E1_SERIES_ELLIPSE: \(f64, f64\) = \(([\d.]+), ([\d.]+)\)", block)
+        terms = re.search(r"E1_SERIES_TERMS: usize = (\d+)", block)
+        table = re.search(r"E1_CF_DEPTH: &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
+        bands = [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", table.group(1))]
+        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), bands)
+    return out
+
+
+def series_error(z, n):
+    """|E1 by n series terms - E1| / |E1|."""
+    ein = mp.mpf(0)
+    term = mp.mpf(1)
+    for k in range(1, n + 1):
+        term = term * z / k  # z^k / k!
+        ein += (-1) ** (k + 1) * term / k
+    approx = -mp.euler - mp.log(z) + ein
+    exact = mp.e1(z)
+    return abs(approx - exact) / abs(exact)
+
+
+def cf_error(z, d):
+    """|e^z E1 by the fraction at depth d - e^z E1| / |e^z E1|."""
+    b = z + 2 * d + 1
+    q = 2 * (d + 1) / b
+    root = mp.sqrt(1 - q * q)
+    if mp.re(root) < 0:
+        root = -root
+    t = b * (1 + root) / 2
+    for k in range(d, 0, -1):
+        t = z + (2 * k - 1) - k * k / t
+    approx = 1 / t
+    exact = mp.exp(z) * mp.e1(z)
+    return abs(approx - exact) / abs(exact)
+
+
+def fewest(error, points, unit):
+    """The smallest count (terms or depth) whose largest error over `points` is at most
+    TOLERANCE units, and that error."""
+    n = 1
+    while True:
+        worst = max(error(z, n) for z in points)
+        if worst <= TOLERANCE * unit:
+            return n, worst
+        n += 1
+
+
+def inside(z, ell):
+    a, b = ell
+    return (mp.re(z) / a) ** 2 + (mp.im(z) / b) ** 2 < 1
+
+
+def main():
+    mismatches = 0
+    for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
+        ell, terms_now, bands_now = committed()[prec]
+        a, b = ell
+        boundary = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in (math.pi / 2 * i / 63 for i in range(64))]
+        n, worst = fewest(series_error, boundary, unit)
+        flag = "" if n == terms_now else f"   <-- real.rs has {terms_now}"
+        mismatches += n != terms_now
+        print(f"{prec}: series inside the ellipse ({a}, {b}): {n} terms, truncation <= {float(worst) / unit:.2f} u{flag}")
+        inner = None
+        for bound, depth_now in bands_now:
+            angles = [math.pi / 2 * i / 47 for i in range(48)]
+            if inner is None:
+                # the ellipse's edge: |z| there is the smallest the fraction sees at that angle
+                edge = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in angles]
+            else:
+                edge = [mp.mpc(inner * math.cos(th), inner * math.sin(th)) for th in angles]
+                edge = [z for z in edge if not inside(z, ell)]
+            d, worst = fewest(cf_error, edge, unit)
+            flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
+            mismatches += d != depth_now
+            lo = "ellipse" if inner is None else f"{inner:g}"
+            print(f"{prec}: fraction for {lo} <= |z| < {bound:g}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
+            inner = bound
+    print(f"{mismatches} differences from kernel/src/real.rs")
+    return 1 if mismatches else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
