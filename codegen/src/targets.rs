@@ -472,6 +472,9 @@ pub fn render_with(opts: &EmitOptions, constants: impl Fn(usize) -> Constants) -
                     files.insert(format!("wgsl/airlight_{n}.wgsl"), (header("//", n, "compute shader (entry airlight_main)") + &c).into_bytes());
                     let l = wgsl::write_string(&lone, &lone_info, flags).map_err(|e| EmitError::Shader(format!("wgsl: {e}")))?;
                     files.insert(format!("wgsl/airlight_lib_{n}.wgsl"), (header("//", n, "include library") + &l).into_bytes());
+                    // the same library as a naga_oil / Bevy module: `#import airlight::{…}`
+                    let import = format!("{}#define_import_path airlight\n\n{l}", header("//", n, "naga_oil import module"));
+                    files.insert(format!("wgsl/airlight_lib_{n}_import.wgsl"), import.into_bytes());
                 }
                 Target::Glsl => {
                     let c = glsl_text(&cm, &ci, glsl::Version::Desktop(450), naga::ShaderStage::Compute, COMPUTE_ENTRY, glsl::WriterFlags::empty())?;

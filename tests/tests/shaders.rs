@@ -40,7 +40,7 @@ fn shaders_out_is_what_the_source_emits() {
     let dir = default_out_dir();
     let problems = airlight_codegen::targets::check(&dir, &EmitOptions::default()).unwrap();
     assert!(problems.is_empty(), "shaders-out/ is stale, run `cargo run -p airlight-codegen -- emit`:\n{}", problems.join("\n"));
-    assert_eq!(files.len(), 20);
+    assert_eq!(files.len(), 22);
 }
 
 /// shaders-out/README.md's table gives each file's size in bytes; it must be the committed
@@ -61,7 +61,7 @@ fn readme_sizes_are_current() {
         }
         rows += 1;
     }
-    assert_eq!(rows, 10, "rows of the size table in shaders-out/README.md");
+    assert_eq!(rows, 11, "rows of the size table in shaders-out/README.md");
 }
 
 /// A fresh directory for this test process's generated files.
@@ -265,4 +265,40 @@ fn readme_snippets_compile() {
     run(Command::new("glslangValidator").arg(tmp.join("fog_es.frag")));
     std::fs::write(tmp.join("fog.hlsl"), readme_snippet(&readme, "hlsl")).unwrap();
     run(Command::new("glslangValidator").args(["-V", "-D", "-e", "fog_glow", "-S", "frag"]).arg(format!("-I{}", dir.join("hlsl").display())).arg("-o").arg(tmp.join("fog_hlsl.spv")).arg(tmp.join("fog.hlsl")));
+}
+
+/// The naga_oil module variant composes into a user's shader that imports from it by name
+/// (as Bevy's shader imports do), and the composed module validates.
+#[test]
+fn naga_oil_import_module_composes() {
+    use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor};
+    let dir = default_out_dir();
+    for n in TERM_COUNTS {
+        let file = format!("wgsl/airlight_lib_{n}_import.wgsl");
+        let library = std::fs::read_to_string(dir.join(&file)).unwrap();
+        let mut composer = Composer::default();
+        if let Err(e) = composer.add_composable_module(ComposableModuleDescriptor { source: &library, file_path: &file, ..Default::default() }) {
+            panic!("{file} as a naga_oil module: {}", e.emit_to_string(&composer));
+        }
+        let user = "#import airlight::{airlight_in_scatter, airlight_scene, airlight_ray, airlight_spot, airlight_medium, airlight_henyey_greenstein, AIRLIGHT_STATUS_OK}
+
+@fragment
+fn fog_glow(@location(0) world_pos: vec3<f32>) -> @location(0) vec4<f32> {
+    let eye = vec3<f32>(0.0, 1.7, 0.0);
+    let to_p = world_pos - eye;
+    let r = airlight_in_scatter(airlight_scene(
+        airlight_ray(eye, to_p, 0.0, length(to_p)),
+        airlight_spot(vec3<f32>(5.0, 4.0, 0.0), 100.0, vec3<f32>(0.0, -1.0, 0.0), 0.95, 0.8),
+        airlight_medium(0.05, 0.1),
+        airlight_henyey_greenstein(0.9)));
+    return vec4<f32>(vec3<f32>(select(0.0, r.in_scatter, r.status == AIRLIGHT_STATUS_OK)), 1.0);
+}
+";
+        let module = composer
+            .make_naga_module(NagaModuleDescriptor { source: user, file_path: "user.wgsl", ..Default::default() })
+            .unwrap_or_else(|e| panic!("composing a user shader with {file}: {}", e.emit_to_string(&composer)));
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("the composed module ({file}): {e:?}"));
+    }
 }
