@@ -35,7 +35,7 @@ use airlight::{Medium, PointLight, Ray, Scene};
 use airlight_codegen::eval::compute_wgsl;
 use airlight_codegen::gpu::{Gpu, Prepared, Shader};
 use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
-use airlight_codegen::scene_json::SceneRecord;
+use airlight::record::SceneRecord;
 use criterion::{Criterion, SamplingMode, Throughput};
 use std::fmt::Write as _;
 use std::path::PathBuf;

@@ -55,7 +55,7 @@
 //! `FLT_MAX` allowed), 0 for invalid records.
 
 use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
-use crate::scene_json::SceneRecord;
+use airlight::record::SceneRecord;
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
 use airlight::{PhaseFunction, Scene};

@@ -1,6 +1,7 @@
 //! `airlight eval`: JSON-lines scene records in, one JSON line per record out, in order.
 
-use crate::scene_json::{parse_line, SceneRecord};
+use crate::scene_json::parse_line;
+use airlight::record::SceneRecord;
 use airlight::{Expansion, Real, Scene};
 use std::io::{BufRead, Write};
 

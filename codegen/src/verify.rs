@@ -8,7 +8,7 @@
 use crate::agreement::{expect, judge};
 use crate::gpu::{Gpu, Shader};
 use crate::layout::{pack, unpack_result, RESULT_SIZE};
-use crate::scene_json::SceneRecord;
+use airlight::record::SceneRecord;
 use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};

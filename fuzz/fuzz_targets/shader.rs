@@ -13,7 +13,7 @@ use airlight::glam::Vec3;
 use airlight_codegen::agreement::{expect, in_domain, judge, judge_defined};
 use airlight_codegen::gpu::{Gpu, Prepared, Shader};
 use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE};
-use airlight_codegen::scene_json::SceneRecord;
+use airlight::record::SceneRecord;
 use libfuzzer_sys::fuzz_target;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::OnceLock;

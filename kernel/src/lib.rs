@@ -58,6 +58,7 @@ pub mod march;
 pub mod panels;
 pub mod phase;
 pub mod precision;
+pub mod record;
 mod real;
 mod scalar;
 pub mod scene;

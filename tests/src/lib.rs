@@ -21,7 +21,7 @@ pub struct ClassCase {
     /// The scene class (`hg_0.99`, `near_light`, …).
     pub category: String,
     /// The scene; its inputs are exact in binary32.
-    pub rec: airlight_codegen::scene_json::SceneRecord<f64>,
+    pub rec: airlight::record::SceneRecord<f64>,
     /// The integral by mpmath quadrature.
     pub exact: f64,
     /// The integral with `F = D·P` replaced by its maximum on the segment.

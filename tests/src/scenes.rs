@@ -5,7 +5,7 @@ use airlight::glam::{DVec3, Vec3};
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_codegen::scene_json::{cast_light, cast_phase};
+use airlight::record::{cast_light, cast_phase};
 
 /// A scene in plain f64 numbers, convertible to either precision.
 #[derive(Clone, Copy, Debug)]

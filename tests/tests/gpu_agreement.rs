@@ -22,7 +22,8 @@
 use airlight_codegen::agreement::{expect, judge, Expected};
 use airlight_codegen::gpu::{Gpu, Shader};
 use airlight_codegen::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
-use airlight_codegen::scene_json::{parse_value, SceneRecord};
+use airlight::record::SceneRecord;
+use airlight_codegen::scene_json::parse_value;
 use airlight_codegen::targets::default_out_dir;
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};

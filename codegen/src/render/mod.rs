@@ -33,7 +33,7 @@ pub use world::{Camera, Cuboid, Hit, Light, Rgb, SceneDesc};
 use crate::gpu::Prepared;
 use crate::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
 use airlight::glam::DVec3;
-use crate::scene_json::{cast_light, cast_phase};
+use airlight::record::{cast_light, cast_phase};
 use airlight::{Medium, Ray, Scene};
 use rayon::prelude::*;
 use reference::surface_reference;
