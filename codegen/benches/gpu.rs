@@ -33,8 +33,8 @@ use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
 use airlight_codegen::eval::compute_wgsl;
-use airlight_codegen::gpu::{Gpu, Prepared, Shader};
-use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
+use airlight_shaders::gpu::{Gpu, Prepared, Shader};
+use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
 use criterion::{Criterion, SamplingMode, Throughput};
 use std::fmt::Write as _;
@@ -137,7 +137,7 @@ fn scenes(aniso: bool) -> (Vec<u8>, Vec<S32>, Vec<S64>) {
     };
     let r32 = |x: f64| x as f32;
     let v32 = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
-    let mut records = Vec::with_capacity(RAYS * airlight_codegen::layout::RECORD_SIZE);
+    let mut records = Vec::with_capacity(RAYS * airlight_shaders::layout::RECORD_SIZE);
     let mut cpu32 = Vec::with_capacity(RAYS);
     let mut reference = Vec::with_capacity(RAYS);
     for _ in 0..RAYS {

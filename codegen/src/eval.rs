@@ -170,7 +170,7 @@ impl<R: BufRead> Lines<R> {
 /// the same error lines), the valid ones are packed and run through the compute shader in
 /// one batch after the input ends.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
-    use crate::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
     // per input line: its text (to echo an "id") and its error line, or a packed record
     let mut lines: Vec<(String, Result<(), String>)> = Vec::new();
     let mut records = Vec::new();
@@ -188,8 +188,8 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
     let results = if records.is_empty() {
         Vec::new()
     } else {
-        let gpu = crate::gpu::Gpu::new().map_err(EvalError::Gpu)?;
-        gpu.run(crate::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
+        let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
+        gpu.run(airlight_shaders::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
     for (line, l) in lines {

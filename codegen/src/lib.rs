@@ -1,11 +1,9 @@
-//! The `airlight` tool as a library: scene records (JSON lines) and their evaluation on the
-//! CPU kernel; shader emission through naga (for build scripts); the GPU backend.
+//! The `airlight` tool as a library: scene records as JSON lines ([`scene_json`]) and their
+//! evaluation ([`eval`]), the GPU check ([`verify`]) and the pictures ([`render`]). The shaders
+//! themselves (emission, record layout, wgpu runner, agreement criterion) are the
+//! `airlight-shaders` crate.
 
-pub mod agreement;
 pub mod eval;
-pub mod gpu;
-pub mod layout;
 pub mod render;
-pub mod targets;
-pub mod verify;
 pub mod scene_json;
+pub mod verify;

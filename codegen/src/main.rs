@@ -3,7 +3,7 @@
 
 use airlight::Expansion;
 use airlight_codegen::eval::{self, Backend, EvalOptions, Precision};
-use airlight_codegen::targets::{self, EmitOptions, Target};
+use airlight_shaders::targets::{self, EmitOptions, Target};
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -223,7 +223,7 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
         },
     };
     if let (Backend::Gpu, Some(n)) = (opts.backend, opts.terms) {
-        if !airlight_codegen::targets::TERM_COUNTS.contains(&n) {
+        if !airlight_shaders::targets::TERM_COUNTS.contains(&n) {
             eprintln!("airlight: --terms {n} with --backend gpu: the shaders are emitted with 4 or 6 nodes per panel");
             return ExitCode::from(2);
         }
@@ -322,7 +322,7 @@ fn cmd_render(a: RenderArgs) -> ExitCode {
     }
     let mut device = None;
     if gpu {
-        match airlight_codegen::gpu::Gpu::new() {
+        match airlight_shaders::gpu::Gpu::new() {
             Ok(g) => device = Some(g),
             Err(e) if all => eprintln!("airlight: warning: skipping the gpu backend: {e}"),
             Err(e) => {
@@ -337,7 +337,7 @@ fn cmd_render(a: RenderArgs) -> ExitCode {
     };
     let prepared = device.as_ref().map(|g| {
         let start = Instant::now();
-        let p = g.prepare(airlight_codegen::gpu::Shader::Wgsl(airlight_codegen::eval::compute_wgsl(airlight::SHADER_TERMS)));
+        let p = g.prepare(airlight_shaders::gpu::Shader::Wgsl(airlight_codegen::eval::compute_wgsl(airlight::SHADER_TERMS)));
         println!("gpu: {}, shader compiled in {:.2} s", g.describe(), start.elapsed().as_secs_f64());
         p
     });

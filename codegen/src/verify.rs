@@ -2,12 +2,12 @@
 //!
 //! Generates `cases` scenes (deterministic, wide ranges, every phase function and light
 //! distribution), runs the committed compute shader on the first adapter wgpu finds, and
-//! judges every result with the criterion of [`crate::agreement`] (the one the agreement
+//! judges every result with the criterion of [`airlight_shaders::agreement`] (the one the agreement
 //! tests use): `|gpu − cpu_f32| ≤ 9·noise + 2e-4·scale (+ 2^-100)`.
 
-use crate::agreement::{expect, judge};
-use crate::gpu::{Gpu, Shader};
-use crate::layout::{pack, unpack_result, RESULT_SIZE};
+use airlight_shaders::agreement::{expect, judge};
+use airlight_shaders::gpu::{Gpu, Shader};
+use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE};
 use airlight::record::SceneRecord;
 use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
@@ -103,7 +103,7 @@ pub fn verify(cases: usize, terms: usize) -> Result<Report, String> {
         let j = judge(e, got, status);
         max_excess = max_excess.max(j.excess);
         // the statistics leave out values where Vulkan's denormal flushing dominates
-        if e.status == crate::layout::STATUS_OK && status == e.status && got.is_finite() && e.scale > 2f64.powi(-80) {
+        if e.status == airlight_shaders::layout::STATUS_OK && status == e.status && got.is_finite() && e.scale > 2f64.powi(-80) {
             diffs.push(j.diff);
         }
     }

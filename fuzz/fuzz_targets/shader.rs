@@ -2,7 +2,7 @@
 //! (shaders-out/wgsl/airlight_4.wgsl) on this machine's Vulkan adapter (lavapipe here). Each
 //! input is a batch of up to 64 scenes (decoded as in the `kernel` target: arbitrary values,
 //! special values and raw bits included), run in one dispatch and judged record by record
-//! with the agreement criterion of `airlight_codegen::agreement` (the one the agreement tests
+//! with the agreement criterion of `airlight_shaders::agreement` (the one the agreement tests
 //! and `airlight verify` use): statuses equal, no NaN or Inf, values within
 //! `9·noise + 2e-4·scale` — for records in its domain of agreement (input magnitudes in
 //! `[2^-40, 2^40]`); outside it, where Vulkan's denormal flushing may change the geometry,
@@ -10,9 +10,9 @@
 //! instrumented and wgpu under ASan is slow); `scripts/fuzz.sh` does that.
 #![no_main]
 use airlight::glam::Vec3;
-use airlight_codegen::agreement::{expect, in_domain, judge, judge_defined};
-use airlight_codegen::gpu::{Gpu, Prepared, Shader};
-use airlight_codegen::layout::{pack, unpack_result, RESULT_SIZE};
+use airlight_shaders::agreement::{expect, in_domain, judge, judge_defined};
+use airlight_shaders::gpu::{Gpu, Prepared, Shader};
+use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE};
 use airlight::record::SceneRecord;
 use libfuzzer_sys::fuzz_target;
 use std::sync::atomic::{AtomicUsize, Ordering};

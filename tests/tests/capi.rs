@@ -7,7 +7,7 @@
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight_codegen::layout;
+use airlight_shaders::layout;
 use airlight_tests::{class_cases, repo_root};
 use std::fmt::Write as _;
 use std::path::PathBuf;

@@ -5,7 +5,7 @@
 //! `airlight::SHADER_CONTROL`), and with the f64 kernel, over property-generated scenes
 //! (including the extremes of docs/DESIGN.md §3) and invalid records.
 //!
-//! Judged with the one criterion of `airlight_codegen::agreement` (its module docs derive it
+//! Judged with the one criterion of `airlight_shaders::agreement` (its module docs derive it
 //! from Vulkan's precision rules): `|gpu − cpu_f32| ≤ 9·noise + 2e-4·scale (+ 2^-100)`, `noise`
 //! the f32 spread of the same method over one-ulp input perturbations plus its error against
 //! the f64 default path; statuses equal; no NaN, no Inf. Asserted for every artifact kind at 4
@@ -19,12 +19,12 @@
 //! (of scale; values above 2^-80), and the largest error against the `f32_exact` reference
 //! values — the closing note's table.
 
-use airlight_codegen::agreement::{expect, judge, Expected};
-use airlight_codegen::gpu::{Gpu, Shader};
-use airlight_codegen::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
+use airlight_shaders::agreement::{expect, judge, Expected};
+use airlight_shaders::gpu::{Gpu, Shader};
+use airlight_shaders::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
 use airlight::record::SceneRecord;
 use airlight_codegen::scene_json::parse_value;
-use airlight_codegen::targets::default_out_dir;
+use airlight_shaders::targets::default_out_dir;
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
@@ -166,7 +166,7 @@ fn compare(label: &str, c: &Case, out: &[u8]) {
             None => {}
             Some(msg) => failures.push(format!("#{i}: {msg} {}", c.scenes[i].map(|r| format!("{r:?}")).unwrap_or_default())),
         }
-        if i >= c.reference_start && status == airlight_codegen::layout::STATUS_OK {
+        if i >= c.reference_start && status == airlight_shaders::layout::STATUS_OK {
             let (want, exact) = c.reference[i - c.reference_start];
             let err = rel_err(got as f64, want);
             if exact {

@@ -7,7 +7,7 @@
 //! reported loudly and the tool's check is skipped. MSL has no validator on Linux: MSL output
 //! is what naga wrote from a module naga validated, nothing more is claimed.
 
-use airlight_codegen::targets::{default_out_dir, render, validate, EmitOptions, TERM_COUNTS};
+use airlight_shaders::targets::{default_out_dir, render, validate, EmitOptions, TERM_COUNTS};
 use airlight_tests::repo_root;
 use std::path::Path;
 use std::process::Command;
@@ -38,7 +38,7 @@ fn run(cmd: &mut Command) {
 fn shaders_out_is_what_the_source_emits() {
     let files = render(&EmitOptions::default()).expect("render");
     let dir = default_out_dir();
-    let problems = airlight_codegen::targets::check(&dir, &EmitOptions::default()).unwrap();
+    let problems = airlight_shaders::targets::check(&dir, &EmitOptions::default()).unwrap();
     assert!(problems.is_empty(), "shaders-out/ is stale, run `cargo run -p airlight-codegen -- emit`:\n{}", problems.join("\n"));
     assert_eq!(files.len(), 22);
 }

@@ -4,7 +4,7 @@
 //!
 //! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
 //! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_4.wgsl`, f32, 4
-//!   nodes per panel) through wgpu, every (pixel, light) segment one record of [`crate::layout`];
+//!   nodes per panel) through wgpu, every (pixel, light) segment one record of [`airlight_shaders::layout`];
 //! * [`render_reference`]: brute-force quadrature of the contract integral (docs/DESIGN.md §1) that
 //!   uses none of the kernel's closed forms (see [`reference_in_scatter`]);
 //! * [`relative_errors`] + [`heat_map`]: per-pixel relative error against the reference in a
@@ -30,8 +30,8 @@ pub use reference::{reference_in_scatter, REFERENCE_TOL};
 pub use scenes::{bench, lighthouse, road, scene_by_name, stage, SCENES};
 pub use world::{Camera, Cuboid, Hit, Light, Rgb, SceneDesc};
 
-use crate::gpu::Prepared;
-use crate::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+use airlight_shaders::gpu::Prepared;
+use airlight_shaders::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
 use airlight::glam::DVec3;
 use airlight::record::{cast_light, cast_phase};
 use airlight::{Medium, Ray, Scene};
@@ -131,8 +131,8 @@ where
 /// The image through the generated shader: every (pixel, light) segment is packed as an f32
 /// record ([`layout::pack`]) and all of them run in one call of `shader`, the compute entry
 /// point ([`crate::eval::compute_wgsl`] at [`airlight::SHADER_TERMS`]) prepared once with
-/// [`Gpu::prepare`](crate::gpu::Gpu::prepare) — [`Prepared::run`] is what
-/// [`Gpu::run`](crate::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
+/// [`Gpu::prepare`](airlight_shaders::gpu::Gpu::prepare) — [`Prepared::run`] is what
+/// [`Gpu::run`](airlight_shaders::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
 /// longer than the dispatch. The surface term, which the
 /// shader does not compute, comes from the f64 CPU kernel as in [`render_cpu`]. A record with
 /// status "infinite" (the light on the segment) gives `+∞`.

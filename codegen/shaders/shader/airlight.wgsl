@@ -6,7 +6,7 @@
 // module by module: special/ (exponential integrals) → integrals.rs (the isotropic moment) →
 // panels.rs (error-controlled panels) → combined.rs (split at the light's foot) → geometry.rs,
 // with phase.rs and light.rs. Every placeholder between at-signs is filled at emission from
-// the kernel's own tables and constants (codegen/src/targets.rs `source`). Every public name
+// the kernel's own tables and constants (codegen/shaders/src/targets.rs `source`). Every public name
 // starts with `airlight_`. Every loop has a constant bound (some leave early by `break`).
 
 // Gauss–Legendre nodes per panel, half of them, and the panel control (kernel SHADER_CONTROL).
@@ -40,7 +40,7 @@ fn airlight_zero_scratch() -> array<f32, AIRLIGHT_SCRATCH> {
 }
 
 // Phase-function and light-distribution kinds (record fields `phase_kind`, `light_kind`;
-// codegen/src/layout.rs).
+// codegen/shaders/src/layout.rs).
 const AIRLIGHT_PHASE_ISOTROPIC: u32 = @PHASE_ISOTROPIC@u;
 const AIRLIGHT_PHASE_RAYLEIGH: u32 = @PHASE_RAYLEIGH@u;
 const AIRLIGHT_PHASE_HENYEY_GREENSTEIN: u32 = @PHASE_HENYEY_GREENSTEIN@u;
@@ -51,7 +51,7 @@ const AIRLIGHT_LIGHT_OMNI: u32 = @LIGHT_OMNI@u;
 const AIRLIGHT_LIGHT_TWO_LOBED: u32 = @LIGHT_TWO_LOBED@u;
 const AIRLIGHT_LIGHT_SPOT: u32 = @LIGHT_SPOT@u;
 
-// Result status codes (codegen/src/layout.rs).
+// Result status codes (codegen/shaders/src/layout.rs).
 const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
 const AIRLIGHT_STATUS_INVALID: u32 = @STATUS_INVALID@u;
 const AIRLIGHT_STATUS_INFINITE: u32 = @STATUS_INFINITE@u;

@@ -44,7 +44,7 @@ pub const PHASE_TWO_LOBE_HG: u32 = 5;
 pub const WORKGROUP_SIZE: u32 = 64;
 
 /// One record of the compute entry point's input buffer: the WGSL `AirlightScene` struct of
-/// `codegen/shader/airlight.wgsl` as the host writes it (std430 / WGSL storage layout, so each
+/// `codegen/shaders/shader/airlight.wgsl` as the host writes it (std430 / WGSL storage layout, so each
 /// `vec3` is followed by a scalar in its 16-byte slot). `record_matches_the_wgsl_struct` checks
 /// every offset and the array stride against naga's layout of the WGSL struct.
 #[repr(C)]
