@@ -8,7 +8,8 @@
 //!
 //! Asserted, over every record of every class (the maximum, never a subset):
 //! * f64, default `in_scatter` (error-controlled panels): ≤ 1e-10 (a value below f64's normal
-//!   range must come out 0 or subnormal);
+//!   range must come out 0 or subnormal), and on the thick class's finite segments
+//!   ≤ 1e-13·(1 + σt·path length);
 //! * f32, default `in_scatter`, on records whose value is at least 1e-30 (far inside f32's
 //!   normal range; the deepest thick scenes are not): ≤ 1e-4;
 //! * the panel method's error never grows with its nodes per panel: f64 N = 8, 10, 12, 16 and
@@ -43,6 +44,12 @@ fn hard_classes_against_quadrature() {
         f64_worst = f64_worst.max(e64);
         if !(e64 <= 1e-10) {
             failures.push(format!("f64 {}: err {e64:.2e} (got {default}, exact {})", c.category, c.exact));
+        }
+        // thick media: the target tightens to 1e-13·(1 + σt·path length), the conditioning of
+        // e^{−σt·path} (infinite segments have no such bound beyond the class's 1e-10)
+        let path = c.rec.ray.t_max - c.rec.ray.t_min;
+        if c.category == "thick" && path.is_finite() && !(e64 <= 1e-13 * (1.0 + c.rec.medium.sigma_t * path)) {
+            failures.push(format!("f64 thick: err {e64:.2e} above 1e-13·(1 + σt·path) = {:.2e}", 1e-13 * (1.0 + c.rec.medium.sigma_t * path)));
         }
         let mut e32 = f64::NAN;
         if c.f32_ok {
