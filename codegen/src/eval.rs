@@ -2,7 +2,7 @@
 
 use crate::scene_json::parse_line;
 use airlight::record::SceneRecord;
-use airlight::{Expansion, Real, Scene};
+use airlight::{Expansion, Real};
 use std::io::{BufRead, Write};
 
 /// Evaluation precision.
@@ -47,7 +47,7 @@ impl Default for EvalOptions {
 /// `L_m` of a parsed record on the CPU kernel: the default path, or `terms` fixed terms
 /// (1 … 16; NaN outside, and for a record the kernel rejects).
 pub fn in_scatter<T: Real>(rec: &SceneRecord<T>, terms: Option<usize>, expansion: Expansion) -> T {
-    match Scene::new(rec.ray, rec.light, rec.medium, rec.phase) {
+    match rec.scene() {
         Ok(s) => match terms {
             None => s.in_scatter(),
             Some(n) => s.in_scatter_with_terms(n, expansion).unwrap_or(T::nan()),

@@ -66,9 +66,7 @@ impl<T: Real> SceneRecord<T> {
             phase: cast_phase(&self.phase),
         }
     }
-}
 
-impl<T: Real> SceneRecord<T> {
     /// The checked scene ([`Scene::new`]).
     ///
     /// # Errors

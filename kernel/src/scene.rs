@@ -168,10 +168,17 @@ where
     /// given control (a looser tolerance trades accuracy for time), and the number of panels
     /// evaluated.
     pub fn in_scatter_controlled(&self, control: Control<T>) -> (T, usize) {
+        self.default_panels(&self.canonical, control)
+    }
+
+    /// The panels with the precision's [`Real::PANEL_NODES`] over `g` (the scene's canonical
+    /// form, or a lit part of it).
+    fn default_panels(&self, g: &Canonical<T>, control: Control<T>) -> (T, usize) {
+        let method = Method::Panels(control);
         if T::PANEL_NODES == 16 {
-            self.in_scatter_panels_counted::<16>(control)
+            in_scatter_counted::<T, D, P, Production, 16>(g, &self.physics(), method, &Production)
         } else {
-            self.in_scatter_panels_counted::<12>(control)
+            in_scatter_counted::<T, D, P, Production, 12>(g, &self.physics(), method, &Production)
         }
     }
 
@@ -255,14 +262,7 @@ where
     /// part by the default error-controlled path ([`Scene::in_scatter`]). Each `(a_i, b_i)` is
     /// clipped to the ray's segment; empty ones and ones with a NaN end contribute nothing.
     pub fn in_scatter_lit(&self, lit: &[(T, T)]) -> T {
-        self.lit_sum(lit, &self.canonical, |g| {
-            let control = default_control();
-            if T::PANEL_NODES == 16 {
-                in_scatter_counted::<T, D, P, Production, 16>(g, &self.physics(), Method::Panels(control), &Production).0
-            } else {
-                in_scatter_counted::<T, D, P, Production, 12>(g, &self.physics(), Method::Panels(control), &Production).0
-            }
-        })
+        self.lit_sum(lit, &self.canonical, |g| self.default_panels(g, default_control()).0)
     }
 
     /// [`Scene::in_scatter_lit`] with one `N`-term expansion per piece (the paper's fixed-cost

@@ -88,7 +88,7 @@ fn load<T: Real>() -> BTreeMap<String, Class<T>> {
         }
         let rec = parse_value::<T>(&v).unwrap();
         let class = out.entry(v["category"].as_str().unwrap().to_string()).or_insert(Class { scenes: vec![], exact: vec![], scale: vec![] });
-        class.scenes.push(Scene::new(rec.ray, rec.light, rec.medium, rec.phase).unwrap());
+        class.scenes.push(rec.scene().unwrap());
         class.exact.push(exact);
         class.scale.push(v["scale"].as_f64().unwrap());
     }

@@ -25,7 +25,7 @@ use airlight_tests::{class_cases as cases, ClassCase as Case};
 use std::collections::BTreeMap;
 
 fn scene64(c: &Case) -> Scene<f64, airlight::light::AnyDistribution<f64>, airlight::phase::AnyPhase<f64>> {
-    Scene::new(c.rec.ray, c.rec.light, c.rec.medium, c.rec.phase).unwrap()
+    c.rec.scene().unwrap()
 }
 
 #[test]
@@ -106,7 +106,7 @@ fn class_error_with<T: airlight::Real, const N: usize>(cases: &[&Case], tau: f64
         .filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE })
         .map(|c| {
             let r = c.rec.cast::<T>();
-            let s = Scene::new(r.ray, r.light, r.medium, r.phase).unwrap();
+            let s = r.scene().unwrap();
             c.err(s.in_scatter_panels::<N>(control).to_f64_exact(), tau)
         })
         .fold(0.0, f64::max)

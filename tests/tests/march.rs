@@ -28,7 +28,7 @@ fn ray_marchers_converge_to_the_reference() {
         for v in reference_lines("scenes.jsonl") {
             let Some(want) = v["in_scatter"].as_f64() else { continue };
             let rec = parse_value::<f64>(&v).unwrap();
-            let scene = airlight::Scene::new(rec.ray, rec.light, rec.medium, rec.phase).unwrap();
+            let scene = rec.scene().unwrap();
             if scene.canonical().h == 0.0 || want == 0.0 {
                 continue; // light on the ray line: the equiangular variable degenerates
             }

@@ -104,7 +104,7 @@ pub struct Judgement {
 fn in_scatter<T: airlight::Real>(rec: &SceneRecord<T>, terms: usize) -> Option<T> {
     let c = airlight::SHADER_CONTROL;
     let control = airlight::panels::Control { tolerance: T::lit(c.tolerance as f64), floor: T::lit(c.floor as f64), max_panels: c.max_panels };
-    Scene::new(rec.ray, rec.light, rec.medium, rec.phase).ok().and_then(|s| s.in_scatter_panels_with_nodes(terms, control))
+    rec.scene().ok().and_then(|s| s.in_scatter_panels_with_nodes(terms, control))
 }
 
 /// The record with input `k` (of `PERTURBATIONS`) moved by one ulp: `t_min` up/down, `t_max`
