@@ -1,6 +1,6 @@
 //! `airlight eval`: JSON-lines scene records in, one JSON line per record out, in order.
 
-use crate::scene_json::parse_line;
+use crate::scene_json::parse_line_with_id;
 use airlight::record::SceneRecord;
 use airlight::{Expansion, Real};
 use std::io::{BufRead, Write};
@@ -75,20 +75,18 @@ pub fn format_error(line_no: usize, message: &str) -> String {
 }
 
 fn eval_line<T: Real>(line: &str, line_no: usize, opts: &EvalOptions) -> String {
-    let answer = match parse_line::<T>(line) {
+    let (id, record) = parse_line_with_id::<T>(line);
+    let answer = match record {
         Ok(rec) => format_value(in_scatter(&rec, opts.terms, opts.expansion)),
         Err(e) => format_error(line_no, &e.to_string()),
     };
-    with_id(line, answer)
+    with_id(id.as_ref(), answer)
 }
 
-/// The answer with the record's `"id"` (any JSON value) echoed first, when the line is a JSON
-/// object that has one: `{"id":7,"in_scatter":…}`.
-pub fn with_id(line: &str, answer: String) -> String {
-    if !line.contains("\"id\"") {
-        return answer;
-    }
-    match serde_json::from_str::<serde_json::Value>(line).ok().as_ref().and_then(|v| v.get("id")) {
+/// The answer line with the record's `"id"` (any JSON value) echoed first:
+/// `{"id":7,"in_scatter":…}`.
+pub fn with_id(id: Option<&serde_json::Value>, answer: String) -> String {
+    match id {
         Some(id) => format!("{{\"id\":{id},{}", &answer[1..]),
         None => answer,
     }
@@ -171,18 +169,18 @@ impl<R: BufRead> Lines<R> {
 /// one batch after the input ends.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
     use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
-    // per input line: its text (to echo an "id") and its error line, or a packed record
-    let mut lines: Vec<(String, Result<(), String>)> = Vec::new();
+    // per input line: its "id" and its error line, or a packed record
+    let mut lines: Vec<(Option<serde_json::Value>, Result<(), String>)> = Vec::new();
     let mut records = Vec::new();
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
-        let line = text.as_ref().map(|t| t.to_string()).unwrap_or_default();
-        match text.map(|t| parse_line::<f32>(t).map_err(|e| format_error(n, &e.to_string()))) {
-            Ok(Ok(r)) => {
+        match text.map(parse_line_with_id::<f32>) {
+            Ok((id, Ok(r))) => {
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
-                lines.push((line, Ok(())));
+                lines.push((id, Ok(())));
             }
-            Ok(Err(e)) | Err(e) => lines.push((line, Err(e))),
+            Ok((id, Err(e))) => lines.push((id, Err(format_error(n, &e.to_string())))),
+            Err(e) => lines.push((None, Err(e))),
         }
     }
     let results = if records.is_empty() {
@@ -192,7 +190,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         gpu.run(airlight_shaders::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
-    for (line, l) in lines {
+    for (id, l) in lines {
         let text = match l {
             Err(e) => e,
             Ok(()) => {
@@ -205,7 +203,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 }
             }
         };
-        writeln!(out, "{}", with_id(&line, text)).map_err(EvalError::Output)?;
+        writeln!(out, "{}", with_id(id.as_ref(), text)).map_err(EvalError::Output)?;
     }
     out.flush().map_err(EvalError::Output)
 }

@@ -230,9 +230,18 @@ pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> 
 
 /// Parses one JSON line.
 pub fn parse_line<T: Real>(line: &str) -> Result<SceneRecord<T>, FieldError> {
-    let v: Value = serde_json::from_str(line).map_err(|e| FieldError { field: "(record)".into(), message: format!("invalid JSON: {e}") })?;
+    parse_line_with_id(line).1
+}
+
+/// Parses one JSON line, and returns with it the record's `"id"` annotation (any JSON value)
+/// when the line is a JSON object that has one, valid record or not.
+pub fn parse_line_with_id<T: Real>(line: &str) -> (Option<Value>, Result<SceneRecord<T>, FieldError>) {
+    let v: Value = match serde_json::from_str(line) {
+        Ok(v) => v,
+        Err(e) => return (None, Err(FieldError { field: "(record)".into(), message: format!("invalid JSON: {e}") })),
+    };
     if !v.is_object() {
-        return err("(record)", "expected a JSON object");
+        return (None, err("(record)", "expected a JSON object"));
     }
-    parse_value(&v)
+    (v.get("id").cloned(), parse_value(&v))
 }
