@@ -66,29 +66,30 @@ fn codes_are_the_shader_records() {
 /// Every reference scene as one line of plain numbers, in the order reference_test.c reads.
 fn scenes_as_text() -> String {
     let mut out = String::new();
-    for c in class_cases() {
-        let (r, l, m) = (&c.rec.ray, &c.rec.light, &c.rec.medium);
+    use airlight_c as c;
+    for case in class_cases() {
+        let (r, l, m) = (&case.rec.ray, &case.rec.light, &case.rec.medium);
         let (kind, power, axis, cos_inner, cos_outer) = match l.distribution {
-            AnyDistribution::Omni => (0, 0, [0.0, 0.0, 1.0], 0.0, 0.0),
-            AnyDistribution::TwoLobed(d) => (1, d.power, d.axis.to_array(), 0.0, 0.0),
-            AnyDistribution::SpotCone(d) => (2, 0, d.axis.to_array(), d.cos_inner, d.cos_outer),
+            AnyDistribution::Omni => (c::AIRLIGHT_LIGHT_OMNI, 0, [0.0, 0.0, 1.0], 0.0, 0.0),
+            AnyDistribution::TwoLobed(d) => (c::AIRLIGHT_LIGHT_TWO_LOBED, d.power, d.axis.to_array(), 0.0, 0.0),
+            AnyDistribution::SpotCone(d) => (c::AIRLIGHT_LIGHT_SPOT, 0, d.axis.to_array(), d.cos_inner, d.cos_outer),
         };
-        let (pk, g, k, g1, g2, w) = match c.rec.phase {
-            AnyPhase::Isotropic => (0, 0.0, 0.0, 0.0, 0.0, 0.0),
-            AnyPhase::Rayleigh => (1, 0.0, 0.0, 0.0, 0.0, 0.0),
-            AnyPhase::HenyeyGreenstein(p) => (2, p.g, 0.0, 0.0, 0.0, 0.0),
-            AnyPhase::Schlick(p) => (3, 0.0, p.k, 0.0, 0.0, 0.0),
-            AnyPhase::CornetteShanks(p) => (4, p.g, 0.0, 0.0, 0.0, 0.0),
-            AnyPhase::TwoLobeHenyeyGreenstein(p) => (5, 0.0, 0.0, p.g1, p.g2, p.w),
+        let (pk, g, k, g1, g2, w) = match case.rec.phase {
+            AnyPhase::Isotropic => (c::AIRLIGHT_PHASE_ISOTROPIC, 0.0, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::Rayleigh => (c::AIRLIGHT_PHASE_RAYLEIGH, 0.0, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::HenyeyGreenstein(p) => (c::AIRLIGHT_PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::Schlick(p) => (c::AIRLIGHT_PHASE_SCHLICK, 0.0, p.k, 0.0, 0.0, 0.0),
+            AnyPhase::CornetteShanks(p) => (c::AIRLIGHT_PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0, 0.0, 0.0),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => (c::AIRLIGHT_PHASE_TWO_LOBE_HENYEY_GREENSTEIN, 0.0, 0.0, p.g1, p.g2, p.w),
         };
         let v = |x: f64| format!("{x:e}");
         let v3 = |a: [f64; 3]| a.map(v).join(" ");
         writeln!(
             out,
             "{} {} {} {} {} {} {} {} {} {kind} {power} {} {} {} {} {} {pk} {} {} {} {} {}",
-            c.category,
-            v(c.exact),
-            v(c.scale),
+            case.category,
+            v(case.exact),
+            v(case.scale),
             v3(r.origin.to_array()),
             v3(r.dir.to_array()),
             v(r.t_min),
