@@ -32,7 +32,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_codegen::eval::compute_wgsl;
+use airlight_shaders::targets::compute_wgsl;
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;

@@ -92,14 +92,6 @@ pub fn with_id(id: Option<&serde_json::Value>, answer: String) -> String {
     }
 }
 
-/// The committed WGSL compute shader for `terms` (4 or 6).
-pub fn compute_wgsl(terms: usize) -> &'static str {
-    match terms {
-        4 => include_str!("../../shaders-out/wgsl/airlight_4.wgsl"),
-        _ => include_str!("../../shaders-out/wgsl/airlight_6.wgsl"),
-    }
-}
-
 /// Why `eval` stopped early.
 #[derive(Debug)]
 pub enum EvalError {
@@ -187,7 +179,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         Vec::new()
     } else {
         let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
-        gpu.run(airlight_shaders::gpu::Shader::Wgsl(compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
+        gpu.run(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
     for (id, l) in lines {

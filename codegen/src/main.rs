@@ -337,7 +337,7 @@ fn cmd_render(a: RenderArgs) -> ExitCode {
     };
     let prepared = device.as_ref().map(|g| {
         let start = Instant::now();
-        let p = g.prepare(airlight_shaders::gpu::Shader::Wgsl(airlight_codegen::eval::compute_wgsl(airlight::SHADER_TERMS)));
+        let p = g.prepare(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(airlight::SHADER_TERMS)));
         println!("gpu: {}, shader compiled in {:.2} s", g.describe(), start.elapsed().as_secs_f64());
         p
     });

@@ -89,7 +89,7 @@ pub fn verify(cases: usize, terms: usize) -> Result<Report, String> {
         records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
         expected.push(expect(&rec, terms));
     }
-    let wgsl = crate::eval::compute_wgsl(terms);
+    let wgsl = airlight_shaders::targets::compute_wgsl(terms);
     let out = gpu.run(Shader::Wgsl(wgsl), &records, true)?;
     let mut diffs = Vec::new();
     let (mut max_excess, mut non_finite, mut status_mismatches) = (0.0f64, 0, 0);

@@ -32,7 +32,7 @@ fn pipeline() -> &'static Prepared<'static> {
     PIPELINE.get_or_init(|| {
         let gpu: &'static Gpu = Box::leak(Box::new(Gpu::new().expect("the shader target needs a Vulkan adapter (mesa-vulkan-drivers)")));
         eprintln!("shader target: {}", gpu.describe());
-        gpu.prepare(Shader::Wgsl(airlight_codegen::eval::compute_wgsl(TERMS)))
+        gpu.prepare(Shader::Wgsl(airlight_shaders::targets::compute_wgsl(TERMS)))
     })
 }
 

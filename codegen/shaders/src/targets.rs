@@ -245,6 +245,15 @@ pub fn source(terms: usize, compute: bool) -> String {
     Constants::from_kernel(terms).source(compute)
 }
 
+/// The committed WGSL compute shader (`shaders-out/wgsl/airlight_{4,6}.wgsl`) for `terms` (4,
+/// else 6): what `airlight eval --backend gpu`, `verify`, `render` and the GPU bench run.
+pub fn compute_wgsl(terms: usize) -> &'static str {
+    match terms {
+        4 => include_str!("../../../shaders-out/wgsl/airlight_4.wgsl"),
+        _ => include_str!("../../../shaders-out/wgsl/airlight_6.wgsl"),
+    }
+}
+
 /// Parses and validates WGSL.
 pub fn validate(src: &str) -> Result<(naga::Module, ModuleInfo), EmitError> {
     let module = naga::front::wgsl::parse_str(src).map_err(|e| EmitError::Shader(e.emit_to_string(src)))?;

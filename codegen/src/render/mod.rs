@@ -130,7 +130,7 @@ where
 
 /// The image through the generated shader: every (pixel, light) segment is packed as an f32
 /// record ([`layout::pack`]) and all of them run in one call of `shader`, the compute entry
-/// point ([`crate::eval::compute_wgsl`] at [`airlight::SHADER_TERMS`]) prepared once with
+/// point ([`airlight_shaders::targets::compute_wgsl`] at [`airlight::SHADER_TERMS`]) prepared once with
 /// [`Gpu::prepare`](airlight_shaders::gpu::Gpu::prepare) — [`Prepared::run`] is what
 /// [`Gpu::run`](airlight_shaders::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
 /// longer than the dispatch. The surface term, which the
