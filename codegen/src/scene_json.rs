@@ -7,18 +7,23 @@
 //!            "distribution": {"kind": "two_lobed", "axis": [0,-1,0], "power": 4}},
 //!  "phase": {"kind": "henyey_greenstein", "g": 0.5}}
 //! ```
-//! `t_max: null` (or absent) means `+∞`, an absent `t_min` 0, an absent `distribution` or
-//! `phase` isotropic. Any other key is an error naming it (with the closest known key when one
-//! is close), except the annotations [`ANNOTATIONS`], which never change the evaluation.
-//! Numbers are read as f64 and rounded to the evaluation precision; one that overflows it is
-//! an error.
+//! `t_max: null` (or absent, or `"inf"`) means `+∞`, an absent `t_min` 0, an absent
+//! `distribution` or `phase` isotropic. Any other key is an error naming it (with the closest
+//! known key when one is close), except the annotations [`ANNOTATIONS`], which never change the
+//! evaluation. Numbers are read as f64 and rounded to the evaluation precision; one that
+//! overflows it is an error.
+//!
+//! The format is the serde types below (`deny_unknown_fields`); serde_path_to_error names the
+//! field of a decoding error, and [`SceneJson::to_record`] converts to the kernel's
+//! [`SceneRecord`] and validates it.
 
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::record::SceneRecord;
 use airlight::{Medium, PointLight, Ray, Real};
+use serde::de::IgnoredAny;
+use serde::{de, Deserialize, Deserializer};
 use serde_json::Value;
-
 
 /// A record that could not be read: the field path and what was expected.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -35,197 +40,331 @@ impl std::fmt::Display for FieldError {
     }
 }
 
-fn err<X>(field: &str, message: &str) -> Result<X, FieldError> {
-    Err(FieldError { field: field.to_string(), message: message.to_string() })
-}
-
-fn object<'a>(v: &'a Value, field: &str) -> Result<&'a serde_json::Map<String, Value>, FieldError> {
-    match v.get_path(field) {
-        Some(Value::Object(m)) => Ok(m),
-        Some(_) => err(field, "expected an object"),
-        None => err(field, "missing"),
-    }
-}
-
-trait GetPath {
-    fn get_path(&self, path: &str) -> Option<&Value>;
-}
-
-impl GetPath for Value {
-    fn get_path(&self, path: &str) -> Option<&Value> {
-        let mut cur = self;
-        for key in path.split('.') {
-            cur = cur.get(key)?;
-        }
-        Some(cur)
-    }
-}
-
 /// Top-level keys a record may carry besides `ray`, `medium`, `light` and `phase`, ignored by
 /// the evaluation: `id`, `comment` and `category` (free text), `in_scatter` and `scale` (a
 /// reference value and its scale, as the committed references carry them).
 pub const ANNOTATIONS: [&str; 5] = ["id", "comment", "category", "in_scatter", "scale"];
 
-/// Every key of the object at `path` (`""`: the record) is one of `known`.
-fn known_keys(root: &Value, path: &str, known: &[&str]) -> Result<(), FieldError> {
-    let object = if path.is_empty() { root.as_object() } else { root.get_path(path).and_then(Value::as_object) };
-    let Some(object) = object else { return Ok(()) };
-    for key in object.keys() {
-        if !known.contains(&key.as_str()) {
-            let field = if path.is_empty() { key.clone() } else { format!("{path}.{key}") };
-            // the closest known key, by the Jaro–Winkler similarity clap uses for suggestions
-            let closest = known.iter().map(|k| (strsim::jaro_winkler(key, k), *k)).filter(|(score, _)| *score > 0.7).max_by(|a, b| a.0.total_cmp(&b.0));
-            let message = match closest {
-                Some((_, k)) => format!("unknown field (did you mean `{k}`?)"),
-                None => format!("unknown field (expected one of {})", known.join(", ")),
-            };
-            return Err(FieldError { field, message });
-        }
-    }
-    Ok(())
+/// One JSON-lines record, as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneJson {
+    /// The ray.
+    pub ray: RayJson,
+    /// The medium.
+    pub medium: MediumJson,
+    /// The point light.
+    pub light: LightJson,
+    /// The phase function; absent or `null`: isotropic.
+    #[serde(default)]
+    pub phase: Option<PhaseJson>,
+    #[serde(default, rename = "id")]
+    _id: Option<IgnoredAny>,
+    #[serde(default, rename = "comment")]
+    _comment: Option<IgnoredAny>,
+    #[serde(default, rename = "category")]
+    _category: Option<IgnoredAny>,
+    #[serde(default, rename = "in_scatter")]
+    _in_scatter: Option<IgnoredAny>,
+    #[serde(default, rename = "scale")]
+    _scale: Option<IgnoredAny>,
 }
 
-/// The keys of a light distribution, per kind.
-const DISTRIBUTION_FIELDS: [(&str, &[&str]); 4] = [
-    ("isotropic", &["kind"]),
-    ("omni", &["kind"]),
-    ("two_lobed", &["kind", "axis", "power"]),
-    ("spot", &["kind", "axis", "cos_inner", "cos_outer"]),
-];
-
-/// The keys of a phase function, per kind.
-const PHASE_FIELDS: [(&str, &[&str]); 6] = [
-    ("isotropic", &["kind"]),
-    ("rayleigh", &["kind"]),
-    ("henyey_greenstein", &["kind", "g"]),
-    ("schlick", &["kind", "k"]),
-    ("cornette_shanks", &["kind", "g"]),
-    ("two_lobe_henyey_greenstein", &["kind", "g1", "g2", "w"]),
-];
-
-/// The `kind` of the object at `path`, after checking that its other keys are that kind's
-/// ([`known_keys`]); an unknown kind is returned as it is, for the caller to report.
-fn fields_known<'a>(root: &'a Value, path: &str, kinds: &[(&str, &[&str])]) -> Result<&'a str, FieldError> {
-    let k = kind(root, &format!("{path}.kind"))?;
-    if let Some((_, fields)) = kinds.iter().find(|(name, _)| *name == k) {
-        known_keys(root, path, fields)?;
-    }
-    Ok(k)
+/// `ray`: `origin + t·dir`, `t ∈ [t_min, t_max]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RayJson {
+    /// Origin.
+    pub origin: [f64; 3],
+    /// Direction (any length but zero).
+    pub dir: [f64; 3],
+    /// Start; absent: 0.
+    #[serde(default)]
+    pub t_min: f64,
+    /// End; absent, `null` or `"inf"`: `+∞`.
+    #[serde(default = "infinity", deserialize_with = "t_max")]
+    pub t_max: f64,
 }
 
-fn number<T: Real>(root: &Value, field: &str) -> Result<T, FieldError> {
-    match root.get_path(field) {
-        Some(Value::Number(n)) => match n.as_f64() {
-            Some(x) if x.is_finite() && !T::lit(x).is_finite() => {
-                err(field, &format!("{x:e} is beyond the range of {}", if T::epsilon() > T::lit(1e-10) { "f32" } else { "f64" }))
+fn infinity() -> f64 {
+    f64::INFINITY
+}
+
+/// A number, `null` or the string `"inf"` (both `+∞`).
+fn t_max<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Bound {
+        Number(f64),
+        Text(String),
+        Null(()),
+    }
+    match Bound::deserialize(d)? {
+        Bound::Number(x) => Ok(x),
+        Bound::Null(()) => Ok(f64::INFINITY),
+        Bound::Text(s) if s == "inf" => Ok(f64::INFINITY),
+        Bound::Text(s) => Err(serde::de::Error::custom(format!("expected a number, null or \"inf\", found \"{s}\""))),
+    }
+}
+
+/// `medium`: scattering and extinction coefficients.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MediumJson {
+    /// σs.
+    pub sigma_s: f64,
+    /// σt.
+    pub sigma_t: f64,
+}
+
+/// `light`: a point light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightJson {
+    /// Position.
+    pub position: [f64; 3],
+    /// Intensity.
+    pub intensity: f64,
+    /// Emission distribution; absent or `null`: isotropic.
+    #[serde(default)]
+    pub distribution: Option<DistributionJson>,
+}
+
+/// `light.distribution`, by `kind`.
+#[derive(Debug)]
+pub enum DistributionJson {
+    /// `"isotropic"` or `"omni"`: the same in every direction.
+    Isotropic,
+    /// `"two_lobed"`: `c^p` about `axis`.
+    TwoLobed(TwoLobedJson),
+    /// `"spot"`: a cone with a smoothstep edge.
+    Spot(SpotJson),
+}
+
+/// The fields of a `"two_lobed"` distribution.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TwoLobedJson {
+    /// Axis.
+    pub axis: [f64; 3],
+    /// Power (an even integer, read as a number).
+    pub power: f64,
+}
+
+/// The fields of a `"spot"` distribution.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpotJson {
+    /// Axis.
+    pub axis: [f64; 3],
+    /// Cosine of the fully lit half angle.
+    pub cos_inner: f64,
+    /// Cosine of the dark half angle.
+    pub cos_outer: f64,
+}
+
+/// `phase`, by `kind`.
+#[derive(Debug)]
+pub enum PhaseJson {
+    /// `"isotropic"`: `1/4π`.
+    Isotropic,
+    /// `"rayleigh"`.
+    Rayleigh,
+    /// `"henyey_greenstein"` with `g`.
+    HenyeyGreenstein(AsymmetryJson),
+    /// `"schlick"` with `k`.
+    Schlick(SchlickJson),
+    /// `"cornette_shanks"` with `g`.
+    CornetteShanks(AsymmetryJson),
+    /// `"two_lobe_henyey_greenstein"`: `w·HG(g1) + (1−w)·HG(g2)`.
+    TwoLobeHenyeyGreenstein(TwoLobeJson),
+}
+
+/// A kind without fields of its own.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NoFields {}
+
+/// The field of a one-parameter phase function.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AsymmetryJson {
+    /// Asymmetry.
+    pub g: f64,
+}
+
+/// The field of Schlick's phase function.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SchlickJson {
+    /// Asymmetry.
+    pub k: f64,
+}
+
+/// The fields of the two-lobed Henyey–Greenstein phase function.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TwoLobeJson {
+    /// First lobe's asymmetry.
+    pub g1: f64,
+    /// Second lobe's asymmetry.
+    pub g2: f64,
+    /// First lobe's weight.
+    pub w: f64,
+}
+
+/// Separates the path inside a kind's fields from the message in errors raised by [`fields`],
+/// so that [`parse_value`] names the whole path (serde's own internally tagged enums buffer the
+/// object and lose the path inside it).
+const INNER_PATH: char = '\u{1f}';
+
+/// An object with a `"kind"`: the kind and the object without it.
+fn kind_and_fields<'de, D: Deserializer<'de>>(d: D) -> Result<(String, Value), D::Error> {
+    let mut object = serde_json::Map::deserialize(d)?;
+    match object.remove("kind") {
+        Some(Value::String(kind)) => Ok((kind, Value::Object(object))),
+        Some(_) => Err(de::Error::custom(format_args!("{INNER_PATH}kind{INNER_PATH}expected a string"))),
+        None => Err(de::Error::missing_field("kind")),
+    }
+}
+
+/// A kind's fields, with the path of an error inside them kept.
+fn fields<T: de::DeserializeOwned, E: de::Error>(object: Value) -> Result<T, E> {
+    serde_path_to_error::deserialize(object).map_err(|e| E::custom(format_args!("{INNER_PATH}{}{INNER_PATH}{}", e.path(), e.inner())))
+}
+
+impl<'de> Deserialize<'de> for DistributionJson {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (kind, object) = kind_and_fields(d)?;
+        Ok(match kind.as_str() {
+            "isotropic" | "omni" => fields::<NoFields, _>(object).map(|_| Self::Isotropic)?,
+            "two_lobed" => Self::TwoLobed(fields(object)?),
+            "spot" => Self::Spot(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&kind, &["isotropic", "omni", "two_lobed", "spot"])),
+        })
+    }
+}
+
+impl<'de> Deserialize<'de> for PhaseJson {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (kind, object) = kind_and_fields(d)?;
+        Ok(match kind.as_str() {
+            "isotropic" => fields::<NoFields, _>(object).map(|_| Self::Isotropic)?,
+            "rayleigh" => fields::<NoFields, _>(object).map(|_| Self::Rayleigh)?,
+            "henyey_greenstein" => Self::HenyeyGreenstein(fields(object)?),
+            "schlick" => Self::Schlick(fields(object)?),
+            "cornette_shanks" => Self::CornetteShanks(fields(object)?),
+            "two_lobe_henyey_greenstein" => Self::TwoLobeHenyeyGreenstein(fields(object)?),
+            _ => {
+                const KINDS: &[&str] = &["isotropic", "rayleigh", "henyey_greenstein", "schlick", "cornette_shanks", "two_lobe_henyey_greenstein"];
+                return Err(de::Error::unknown_variant(&kind, KINDS));
             }
-            Some(x) => Ok(T::lit(x)),
-            None => err(field, "expected a number"),
-        },
-        Some(_) => err(field, "expected a number"),
-        None => err(field, "missing"),
+        })
     }
 }
 
-fn vec3<T: Real>(root: &Value, field: &str) -> Result<T::Vec3, FieldError> {
-    match root.get_path(field) {
-        Some(Value::Array(a)) if a.len() == 3 => {
-            let mut out = [T::zero(); 3];
-            for (o, x) in out.iter_mut().zip(a) {
-                match x.as_f64() {
-                    Some(x) => *o = T::lit(x),
-                    None => return err(field, "expected an array of 3 numbers"),
+/// `x` in precision `T`, or an error naming `field` when it overflows.
+fn number<T: Real>(field: &str, x: f64) -> Result<T, FieldError> {
+    let y = T::lit(x);
+    if x.is_finite() && !y.is_finite() {
+        let name = if T::epsilon() > T::lit(1e-10) { "f32" } else { "f64" };
+        return Err(FieldError { field: field.into(), message: format!("{x:e} is beyond the range of {name}") });
+    }
+    Ok(y)
+}
+
+fn vec3<T: Real>(field: &str, a: [f64; 3]) -> Result<T::Vec3, FieldError> {
+    let mut out = [T::zero(); 3];
+    for (o, x) in out.iter_mut().zip(a) {
+        *o = number(field, x)?;
+    }
+    Ok(T::vec3_from_array(out))
+}
+
+impl SceneJson {
+    /// The kernel's record in precision `T`, validated as [`airlight::Scene::new`] does.
+    pub fn to_record<T: Real>(&self) -> Result<SceneRecord<T>, FieldError> {
+        let RayJson { origin, dir, t_min, t_max } = self.ray;
+        let ray = Ray { origin: vec3::<T>("ray.origin", origin)?, dir: vec3::<T>("ray.dir", dir)?, t_min: number("ray.t_min", t_min)?, t_max: number("ray.t_max", t_max)? };
+        let medium = Medium { sigma_s: number("medium.sigma_s", self.medium.sigma_s)?, sigma_t: number("medium.sigma_t", self.medium.sigma_t)? };
+        let distribution = match self.light.distribution {
+            None | Some(DistributionJson::Isotropic) => AnyDistribution::Omni,
+            Some(DistributionJson::TwoLobed(TwoLobedJson { axis, power: p })) => {
+                if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
+                    return Err(FieldError { field: "light.distribution.power".into(), message: "must be an even non-negative integer".into() });
                 }
+                AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>("light.distribution.axis", axis)?, power: p as u32 })
             }
-            Ok(T::vec3_from_array(out))
-        }
-        Some(_) => err(field, "expected an array of 3 numbers"),
-        None => err(field, "missing"),
+            Some(DistributionJson::Spot(SpotJson { axis, cos_inner, cos_outer })) => AnyDistribution::SpotCone(SpotCone {
+                axis: vec3::<T>("light.distribution.axis", axis)?,
+                cos_inner: number("light.distribution.cos_inner", cos_inner)?,
+                cos_outer: number("light.distribution.cos_outer", cos_outer)?,
+            }),
+        };
+        let light = PointLight {
+            position: vec3::<T>("light.position", self.light.position)?,
+            intensity: number("light.intensity", self.light.intensity)?,
+            distribution,
+        };
+        let phase = match self.phase {
+            None | Some(PhaseJson::Isotropic) => AnyPhase::Isotropic,
+            Some(PhaseJson::Rayleigh) => AnyPhase::Rayleigh,
+            Some(PhaseJson::HenyeyGreenstein(AsymmetryJson { g })) => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number("phase.g", g)? }),
+            Some(PhaseJson::Schlick(SchlickJson { k })) => AnyPhase::Schlick(Schlick { k: number("phase.k", k)? }),
+            Some(PhaseJson::CornetteShanks(AsymmetryJson { g })) => AnyPhase::CornetteShanks(CornetteShanks { g: number("phase.g", g)? }),
+            Some(PhaseJson::TwoLobeHenyeyGreenstein(TwoLobeJson { g1, g2, w })) => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein {
+                g1: number("phase.g1", g1)?,
+                g2: number("phase.g2", g2)?,
+                w: number("phase.w", w)?,
+            }),
+        };
+        airlight::scene::validate(&ray, &light, &medium, &phase)
+            .map_err(|e| FieldError { field: e.field.to_string(), message: e.to_string()[e.field.len() + 2..].to_string() })?;
+        Ok(SceneRecord { ray, light, medium, phase })
     }
 }
 
-fn kind<'a>(root: &'a Value, field: &str) -> Result<&'a str, FieldError> {
-    match root.get_path(field) {
-        Some(Value::String(s)) => Ok(s.as_str()),
-        Some(_) => err(field, "expected a string"),
-        None => err(field, "missing"),
+/// serde's message for an unknown key or kind, with the closest expected name (by the
+/// Jaro–Winkler similarity clap uses for its suggestions) when one is close.
+fn with_suggestion(message: String) -> String {
+    // serde writes "unknown field `x`, expected one of `a`, `b`" (likewise "unknown variant",
+    // "expected `a`", "expected `a` or `b`")
+    let Some(rest) = message.strip_prefix("unknown field `").or_else(|| message.strip_prefix("unknown variant `")) else {
+        return message;
+    };
+    if let Some(name) = rest.strip_suffix("`, there are no fields") {
+        return format!("unknown field `{name}` (this kind has no fields)");
+    }
+    let Some((name, expected)) = rest.split_once("`, expected ") else { return message };
+    let closest = expected
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .map(|k| (strsim::jaro_winkler(name, k), k))
+        .filter(|(score, _)| *score > 0.7)
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    let what = if message.starts_with("unknown field") { "unknown field" } else { "unknown kind" };
+    match closest {
+        Some((_, k)) => format!("{what} `{name}` (did you mean `{k}`?)"),
+        None => format!("{what} `{name}` (expected {expected})"),
     }
 }
 
 /// Parses one record (already decoded as JSON).
 pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> {
-    let mut top = vec!["ray", "medium", "light", "phase"];
-    top.extend(ANNOTATIONS);
-    known_keys(root, "", &top)?;
-    object(root, "ray")?;
-    known_keys(root, "ray", &["origin", "dir", "t_min", "t_max"])?;
-    let t_max = match root.get_path("ray.t_max") {
-        None | Some(Value::Null) => T::infinity(),
-        Some(Value::String(s)) if s == "inf" => T::infinity(),
-        Some(_) => number(root, "ray.t_max")?,
-    };
-    let ray = Ray {
-        origin: vec3::<T>(root, "ray.origin")?,
-        dir: vec3::<T>(root, "ray.dir")?,
-        t_min: match root.get_path("ray.t_min") {
-            None => T::zero(),
-            Some(_) => number(root, "ray.t_min")?,
-        },
-        t_max,
-    };
-    object(root, "medium")?;
-    known_keys(root, "medium", &["sigma_s", "sigma_t"])?;
-    let medium = Medium { sigma_s: number(root, "medium.sigma_s")?, sigma_t: number(root, "medium.sigma_t")? };
-    object(root, "light")?;
-    known_keys(root, "light", &["position", "intensity", "distribution"])?;
-    let distribution = match root.get_path("light.distribution") {
-        None | Some(Value::Null) => AnyDistribution::Omni,
-        Some(_) => match fields_known(root, "light.distribution", &DISTRIBUTION_FIELDS)? {
-            "isotropic" | "omni" => AnyDistribution::Omni,
-            "two_lobed" => {
-                let p: f64 = number(root, "light.distribution.power")?;
-                if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
-                    return err("light.distribution.power", "must be an even non-negative integer");
-                }
-                AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>(root, "light.distribution.axis")?, power: p as u32 })
-            }
-            "spot" => AnyDistribution::SpotCone(SpotCone {
-                axis: vec3::<T>(root, "light.distribution.axis")?,
-                cos_inner: number(root, "light.distribution.cos_inner")?,
-                cos_outer: number(root, "light.distribution.cos_outer")?,
-            }),
-            _ => return err("light.distribution.kind", "unknown kind (isotropic, two_lobed, spot)"),
-        },
-    };
-    let light = PointLight {
-        position: vec3::<T>(root, "light.position")?,
-        intensity: number(root, "light.intensity")?,
-        distribution,
-    };
-    let phase = match root.get_path("phase") {
-        None | Some(Value::Null) => AnyPhase::Isotropic,
-        Some(_) => match fields_known(root, "phase", &PHASE_FIELDS)? {
-            "isotropic" => AnyPhase::Isotropic,
-            "rayleigh" => AnyPhase::Rayleigh,
-            "henyey_greenstein" => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: number(root, "phase.g")? }),
-            "schlick" => AnyPhase::Schlick(Schlick { k: number(root, "phase.k")? }),
-            "cornette_shanks" => AnyPhase::CornetteShanks(CornetteShanks { g: number(root, "phase.g")? }),
-            "two_lobe_henyey_greenstein" => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein {
-                g1: number(root, "phase.g1")?,
-                g2: number(root, "phase.g2")?,
-                w: number(root, "phase.w")?,
-            }),
-            _ => {
-                return err(
-                    "phase.kind",
-                    "unknown kind (isotropic, rayleigh, henyey_greenstein, schlick, cornette_shanks, two_lobe_henyey_greenstein)",
-                )
-            }
-        },
-    };
-    airlight::scene::validate(&ray, &light, &medium, &phase)
-        .map_err(|e| FieldError { field: e.field.to_string(), message: e.to_string()[e.field.len() + 2..].to_string() })?;
-    Ok(SceneRecord { ray, light, medium, phase })
+    let scene: SceneJson = serde_path_to_error::deserialize(root).map_err(|e| {
+        let path = e.path().to_string();
+        let message = e.into_inner().to_string();
+        // an error inside a kind's fields carries its inner path (see `fields`)
+        let (field, message) = match message.split(INNER_PATH).collect::<Vec<_>>()[..] {
+            [_, inner, message] => (format!("{path}.{inner}"), message.to_string()),
+            _ if message.starts_with("unknown variant") => (format!("{path}.kind"), message),
+            _ if path == "." => ("(record)".to_string(), message),
+            _ => (path, message),
+        };
+        FieldError { field, message: with_suggestion(message) }
+    })?;
+    scene.to_record()
 }
 
 /// Parses one JSON line.
@@ -241,7 +380,7 @@ pub fn parse_line_with_id<T: Real>(line: &str) -> (Option<Value>, Result<SceneRe
         Err(e) => return (None, Err(FieldError { field: "(record)".into(), message: format!("invalid JSON: {e}") })),
     };
     if !v.is_object() {
-        return (None, err("(record)", "expected a JSON object"));
+        return (None, Err(FieldError { field: "(record)".into(), message: "expected a JSON object".into() }));
     }
     (v.get("id").cloned(), parse_value(&v))
 }

@@ -157,7 +157,9 @@ fn eval_lines_in_order_with_errors_naming_line_and_field() {
 }
 
 /// What a new user mistypes gets an error naming the field, not a silently different scene:
-/// unknown keys (with the closest known one), a number beyond the precision's range, a line
+/// unknown keys and kinds (with the closest known one), a field a kind does not have, a field
+/// of a kind that is not what it should be (named by its own path), a number beyond the
+/// precision's range, a line
 /// that is not UTF-8 (the lines after it are still evaluated).
 #[test]
 fn eval_rejects_unknown_keys_and_bad_bytes_per_line() {
@@ -167,6 +169,9 @@ fn eval_rejects_unknown_keys_and_bad_bytes_per_line() {
         (good.replace("\"phase\"", "\"phase_function\""), "phase_function", "did you mean `phase`?"),
         (good.replace("\"g\": 0.5", "\"g\": 0.5, \"k\": 0.2"), "phase.k", "unknown field"),
         (good.replace("\"intensity\": 100", "\"intensity\": 1e39"), "light.intensity", "beyond the range of f32"),
+        (good.replace("\"henyey_greenstein\"", "\"henyey_green\""), "phase.kind", "did you mean `henyey_greenstein`?"),
+        (good.replace("\"intensity\": 100", "\"intensity\": 100, \"distribution\": {\"kind\": \"omni\", \"axis\": [1,0,0]}"), "light.distribution.axis", "no fields"),
+        (good.replace("\"intensity\": 100", "\"intensity\": 100, \"distribution\": {\"kind\": \"spot\", \"axis\": [1,0], \"cos_inner\": 0.9, \"cos_outer\": 0.8}"), "light.distribution.axis", "length 3"),
     ];
     for (line, field, message) in &cases {
         let out = eval_lines(line, Precision::F32);
