@@ -1,36 +1,27 @@
 //! Decoding fuzz bytes into scenes, shared by the targets.
 #![allow(dead_code, unused_macros)]
 
-/// Reads numbers from the fuzz input: each takes 9 bytes, a mode byte and 8 payload bytes.
-pub struct Reader<'a>(pub &'a [u8]);
+use libfuzzer_sys::arbitrary::{Arbitrary, Result, Unstructured};
 
-impl Reader<'_> {
-    fn take(&mut self) -> (u8, u64) {
-        if self.0.len() < 9 {
-            let mut buf = [0u8; 9];
-            buf[..self.0.len()].copy_from_slice(self.0);
-            self.0 = &[];
-            return (buf[0], u64::from_le_bytes(buf[1..9].try_into().unwrap()));
-        }
-        let (head, rest) = self.0.split_at(9);
-        self.0 = rest;
-        (head[0], u64::from_le_bytes(head[1..9].try_into().unwrap()))
-    }
-    /// A number in `[lo, hi]` most of the time; raw bits or a special value otherwise.
-    pub fn num(&mut self, lo: f64, hi: f64) -> f64 {
-        let (mode, bits) = self.take();
-        let unit = (bits >> 11) as f64 / (1u64 << 53) as f64;
-        match mode % 16 {
-            0 => f64::from_bits(bits),
-            1 => [0.0, -0.0, 1.0, -1.0, f64::MIN_POSITIVE, 5e-324, f64::MAX, f64::INFINITY, f64::NAN, 1e-300, 1e300, f32::MAX as f64, f32::MIN_POSITIVE as f64, 1e-45][(bits % 14) as usize],
-            2 => lo.signum() * (unit * 600.0 - 300.0).exp(),
-            _ => lo + (hi - lo) * unit,
-        }
-    }
-    /// A small integer.
-    pub fn int(&mut self, n: u64) -> u64 {
-        self.take().1 % n.max(1)
-    }
+/// A number in `[lo, hi]` most of the time; raw bits, a special value or a log-uniform
+/// magnitude otherwise. It takes a mode byte and 8 payload bytes (little-endian), the layout
+/// of the committed seeds in `corpus/`.
+pub fn num(u: &mut Unstructured, lo: f64, hi: f64) -> Result<f64> {
+    let mode = u8::arbitrary(u)?;
+    let bits = u64::arbitrary(u)?;
+    let unit = (bits >> 11) as f64 / (1u64 << 53) as f64;
+    Ok(match mode % 16 {
+        0 => f64::from_bits(bits),
+        1 => [0.0, -0.0, 1.0, -1.0, f64::MIN_POSITIVE, 5e-324, f64::MAX, f64::INFINITY, f64::NAN, 1e-300, 1e300, f32::MAX as f64, f32::MIN_POSITIVE as f64, 1e-45][(bits % 14) as usize],
+        2 => lo.signum() * (unit * 600.0 - 300.0).exp(),
+        _ => lo + (hi - lo) * unit,
+    })
+}
+
+/// A small integer in `[0, n)`; it takes 9 bytes, as a number does.
+pub fn int(u: &mut Unstructured, n: u64) -> Result<u64> {
+    let _mode = u8::arbitrary(u)?;
+    Ok(u64::arbitrary(u)? % n.max(1))
 }
 
 /// A scene as the fuzzer's bytes give it, in f64 (each field may be anything).
@@ -55,37 +46,53 @@ pub struct Raw {
     pub w: f64,
 }
 
-/// Reads one scene from the front of `data`.
-pub fn decode(data: &[u8]) -> Raw {
-    decode_from(&mut Reader(data))
+/// One scene: 25 or 26 numbers of 9 bytes ([`num`], [`int`]).
+impl<'a> Arbitrary<'a> for Raw {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let v3 = |u: &mut Unstructured, lo: f64, hi: f64| -> Result<[f64; 3]> { Ok([num(u, lo, hi)?, num(u, lo, hi)?, num(u, lo, hi)?]) };
+        let o = v3(u, -100.0, 100.0)?;
+        let d = v3(u, -1.0, 1.0)?;
+        let t0 = num(u, -10.0, 10.0)?;
+        let t1 = if int(u, 5)? == 0 { f64::INFINITY } else { t0 + num(u, 0.0, 200.0)?.abs() };
+        let p = v3(u, -100.0, 100.0)?;
+        Ok(Raw {
+            o,
+            d,
+            t0,
+            t1,
+            p,
+            i: num(u, 0.0, 1000.0)?,
+            ss: num(u, 0.0, 2.0)?,
+            st: num(u, 0.0, 50.0)?,
+            light: int(u, 3)?,
+            axis: v3(u, -1.0, 1.0)?,
+            power: int(u, 20)?,
+            ci: num(u, -1.0, 1.0)?,
+            co: num(u, -1.0, 1.0)?,
+            phase: int(u, 6)?,
+            g1: num(u, -0.99, 0.99)?,
+            g2: num(u, -0.99, 0.99)?,
+            w: num(u, 0.0, 1.0)?,
+        })
+    }
 }
 
-/// Reads one scene from `r` (25 or 26 numbers of 9 bytes), leaving the rest.
-pub fn decode_from(r: &mut Reader) -> Raw {
-    let v3 = |r: &mut Reader, lo: f64, hi: f64| [r.num(lo, hi), r.num(lo, hi), r.num(lo, hi)];
-    let o = v3(r, -100.0, 100.0);
-    let d = v3(r, -1.0, 1.0);
-    let t0 = r.num(-10.0, 10.0);
-    let t1 = if r.int(5) == 0 { f64::INFINITY } else { t0 + r.num(0.0, 200.0).abs() };
-    let p = v3(r, -100.0, 100.0);
-    Raw {
-        o,
-        d,
-        t0,
-        t1,
-        p,
-        i: r.num(0.0, 1000.0),
-        ss: r.num(0.0, 2.0),
-        st: r.num(0.0, 50.0),
-        light: r.int(3),
-        axis: v3(r, -1.0, 1.0),
-        power: r.int(20),
-        ci: r.num(-1.0, 1.0),
-        co: r.num(-1.0, 1.0),
-        phase: r.int(6),
-        g1: r.num(-0.99, 0.99),
-        g2: r.num(-0.99, 0.99),
-        w: r.num(0.0, 1.0),
+/// Up to [`Batch::MAX`] scenes, one after the other until the input ends.
+#[derive(Debug)]
+pub struct Batch(pub Vec<Raw>);
+
+impl Batch {
+    /// The most scenes in one batch.
+    pub const MAX: usize = 64;
+}
+
+impl<'a> Arbitrary<'a> for Batch {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let mut scenes = Vec::new();
+        while !u.is_empty() && scenes.len() < Batch::MAX {
+            scenes.push(Raw::arbitrary(u)?);
+        }
+        Ok(Batch(scenes))
     }
 }
 
@@ -113,7 +120,7 @@ pub fn p_max(raw: &Raw) -> f64 {
 /// `(ray, light, medium, phase)` of a [`Raw`] scene in the given precision and glam vector.
 macro_rules! scene_types {
     ($t:ty, $v:ident) => {{
-        |raw: &Raw| {
+        |raw: &common::Raw| {
             let v = |a: [f64; 3]| $v::new(a[0] as $t, a[1] as $t, a[2] as $t);
             let dist = match raw.light {
                 0 => airlight::light::AnyDistribution::Omni,

@@ -11,19 +11,37 @@ use airlight::phase::Isotropic;
 use airlight::{Expansion, Medium, PointLight, Ray, Scene};
 use libfuzzer_sys::fuzz_target;
 
+#[allow(dead_code)]
 mod common;
-use common::Reader;
+use common::{int, num};
+use libfuzzer_sys::arbitrary::{Arbitrary, Result, Unstructured};
 
-fuzz_target!(|data: &[u8]| {
-    let mut r = Reader(data);
-    let f = |x: f64| x as f32 as f64;
-    let o = [f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0))];
-    let d = [f(r.num(-1.0, 1.0)), f(r.num(-1.0, 1.0)), f(r.num(-1.0, 1.0))];
-    let p = [f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0)), f(r.num(-50.0, 50.0))];
-    let t0 = f(r.num(-5.0, 5.0));
-    let t1 = if r.int(4) == 0 { f64::INFINITY } else { f(t0 + r.num(0.01, 100.0).abs()) };
-    let st = f(r.num(0.0, 10.0).abs());
-    let ss = f(r.num(0.01, 1.0).abs());
+/// A model-exact scene's inputs, each rounded to f32 (numbers as in the `kernel` target).
+#[derive(Debug)]
+struct Input {
+    o: [f64; 3],
+    d: [f64; 3],
+    p: [f64; 3],
+    t0: f64,
+    t1: f64,
+    st: f64,
+    ss: f64,
+}
+
+impl<'a> Arbitrary<'a> for Input {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let f = |u: &mut Unstructured, lo: f64, hi: f64| num(u, lo, hi).map(|x| x as f32 as f64);
+        let o = [f(u, -50.0, 50.0)?, f(u, -50.0, 50.0)?, f(u, -50.0, 50.0)?];
+        let d = [f(u, -1.0, 1.0)?, f(u, -1.0, 1.0)?, f(u, -1.0, 1.0)?];
+        let p = [f(u, -50.0, 50.0)?, f(u, -50.0, 50.0)?, f(u, -50.0, 50.0)?];
+        let t0 = f(u, -5.0, 5.0)?;
+        let t1 = if int(u, 4)? == 0 { f64::INFINITY } else { (t0 + num(u, 0.01, 100.0)?.abs()) as f32 as f64 };
+        Ok(Input { o, d, p, t0, t1, st: f(u, 0.0, 10.0)?.abs(), ss: f(u, 0.01, 1.0)?.abs() })
+    }
+}
+
+fuzz_target!(|input: Input| {
+    let Input { o, d, p, t0, t1, st, ss } = input;
     if !(o.iter().chain(&d).chain(&p).all(|x| x.is_finite()) && t0.is_finite() && st.is_finite() && ss.is_finite()) {
         return;
     }

@@ -14,7 +14,7 @@ use libfuzzer_sys::fuzz_target;
 
 #[macro_use]
 mod common;
-use common::{decode, h_and_xh, p_max, Raw};
+use common::{h_and_xh, p_max, Raw};
 
 /// `eps`: the evaluation precision's epsilon; a light within a few ulps of `|p − o|` of the
 /// line counts as on it (its computed distance is rounding noise, possibly exactly 0), and so
@@ -42,8 +42,7 @@ fn check(raw: &Raw, x: f64, max: f64, label: &str) {
     }
 }
 
-fuzz_target!(|data: &[u8]| {
-    let raw = decode(data);
+fuzz_target!(|raw: Raw| {
     // f64, checked
     let (r, l, m, p) = scene_types!(f64, DVec3)(&raw);
     if let Ok(s) = Scene::new(r, l, m, p) {

@@ -20,10 +20,9 @@ use std::sync::OnceLock;
 
 #[macro_use]
 mod common;
-use common::{decode_from, Raw, Reader};
+use common::Batch;
 
 const TERMS: usize = 4;
-const BATCH: usize = 64;
 
 /// The adapter and the compiled pipeline, built once per process (leaked: they live as long
 /// as the fuzzer).
@@ -41,13 +40,11 @@ fn pipeline() -> &'static Prepared<'static> {
 static SCENES: AtomicUsize = AtomicUsize::new(0);
 static IN_DOMAIN: AtomicUsize = AtomicUsize::new(0);
 
-fuzz_target!(|data: &[u8]| {
-    let mut reader = Reader(data);
+fuzz_target!(|batch: Batch| {
     let mut records = Vec::new();
     let mut scenes = Vec::new();
-    while !reader.0.is_empty() && scenes.len() < BATCH {
-        let raw: Raw = decode_from(&mut reader);
-        let (ray, light, medium, phase) = scene_types!(f32, Vec3)(&raw);
+    for raw in &batch.0 {
+        let (ray, light, medium, phase) = scene_types!(f32, Vec3)(raw);
         let rec = SceneRecord { ray, light, medium, phase };
         records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
         scenes.push(rec);
