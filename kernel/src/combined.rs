@@ -303,22 +303,26 @@ where
     cuts.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
     // The pieces between the cuts, each by the method's own rule; a half without cuts is one
     // piece in the fixed method's own scaling.
+    let cuts = cuts.iter().copied();
+    match method {
+        Method::Fixed(expansion) if n_cuts == 0 => piece_integral::<T, _, E, N>(half, &f, expansion, ei),
+        Method::Fixed(expansion) => sum_between(half.y_lo, half.y_hi, cuts, |lo, hi| {
+            let (piece, weight) = half.part(lo, hi);
+            weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei)
+        }),
+        Method::Panels(control) => sum_between(half.y_lo, half.y_hi, cuts, |lo, hi| integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run)),
+    }
+}
+
+/// `Σ each(lo, hi)` over the parts of `[y_lo, y_hi]` between ascending `cuts`, empty parts
+/// skipped.
+fn sum_between<T: Real>(y_lo: T, y_hi: T, cuts: impl Iterator<Item = T>, mut each: impl FnMut(T, T) -> T) -> T {
     let mut total = T::zero();
-    let mut lo = half.y_lo;
-    for i in 0..=n_cuts {
-        let hi = if i < n_cuts { cuts[i] } else { half.y_hi };
-        if n_cuts > 0 && !(hi > lo) {
-            continue;
+    let mut lo = y_lo;
+    for hi in cuts.chain([y_hi]) {
+        if hi > lo {
+            total = total + each(lo, hi);
         }
-        total = total
-            + match method {
-                Method::Panels(control) => integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run),
-                Method::Fixed(expansion) if n_cuts == 0 => piece_integral::<T, _, E, N>(half, &f, expansion, ei),
-                Method::Fixed(expansion) => {
-                    let (piece, weight) = half.part(lo, hi);
-                    weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei)
-                }
-            };
         lo = hi;
     }
     total
@@ -342,14 +346,11 @@ fn subdivided<T: Real, F: Expandable<T>, E: ExpIntegral<T>, const N: usize>(
     }
     let parts = parts.min(T::lit(8.0)).to_usize().unwrap_or(1);
     let step = piece.dy / T::from(parts).unwrap();
-    let mut total = T::zero();
-    for i in 0..parts {
-        let lo = piece.y_lo + step * T::from(i).unwrap();
-        let hi = if i + 1 == parts { piece.y_hi } else { lo + step };
+    let cuts = (1..parts).map(|i| piece.y_lo + step * T::from(i).unwrap());
+    sum_between(piece.y_lo, piece.y_hi, cuts, |lo, hi| {
         let (part, weight) = piece.part(lo, hi);
-        total = total + weight * piece_integral::<T, _, E, N>(&part, f, expansion, ei);
-    }
-    total
+        weight * piece_integral::<T, _, E, N>(&part, f, expansion, ei)
+    })
 }
 
 /// `Σ a_k m_k` on one smooth piece.

@@ -57,6 +57,28 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     fn vec3_from_array(a: [Self; 3]) -> Self::Vec3;
 }
 
+/// The conversions of [`Real`], alike for both precisions.
+macro_rules! conversions {
+    ($t:ty) => {
+        #[inline(always)]
+        fn lit(x: f64) -> Self {
+            x as $t
+        }
+        #[inline(always)]
+        fn to_f64_exact(self) -> f64 {
+            self as f64
+        }
+        #[inline(always)]
+        fn vec3_to_array(v: Self::Vec3) -> [Self; 3] {
+            v.to_array()
+        }
+        #[inline(always)]
+        fn vec3_from_array(a: [Self; 3]) -> Self::Vec3 {
+            Self::Vec3::from_array(a)
+        }
+    };
+}
+
 impl Real for f64 {
     type Vec3 = glam::DVec3;
     const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
@@ -80,22 +102,7 @@ impl Real for f64 {
         (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
         (0.960_289_856_497_536_2, 0.101_228_536_290_376_3),
     ];
-    #[inline(always)]
-    fn lit(x: f64) -> Self {
-        x
-    }
-    #[inline(always)]
-    fn to_f64_exact(self) -> f64 {
-        self
-    }
-    #[inline(always)]
-    fn vec3_to_array(v: Self::Vec3) -> [Self; 3] {
-        v.to_array()
-    }
-    #[inline(always)]
-    fn vec3_from_array(a: [Self; 3]) -> Self::Vec3 {
-        glam::DVec3::from_array(a)
-    }
+    conversions!(f64);
 }
 
 impl Real for f32 {
@@ -118,22 +125,7 @@ impl Real for f32 {
         (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
         (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
     ];
-    #[inline(always)]
-    fn lit(x: f64) -> Self {
-        x as f32
-    }
-    #[inline(always)]
-    fn to_f64_exact(self) -> f64 {
-        self as f64
-    }
-    #[inline(always)]
-    fn vec3_to_array(v: Self::Vec3) -> [Self; 3] {
-        v.to_array()
-    }
-    #[inline(always)]
-    fn vec3_from_array(a: [Self; 3]) -> Self::Vec3 {
-        glam::Vec3::from_array(a)
-    }
+    conversions!(f32);
 }
 
 /// `√(1 + x²)` without overflow for huge `|x|` (where it is `|x|` to the last bit:
