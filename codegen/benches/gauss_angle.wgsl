@@ -10,18 +10,15 @@
 // NODES Gauss–Legendre nodes per part, with the shader language's own atan, sin, cos and exp,
 // as a user would write it. The canonical reduction is the library's plain one.
 //
-// The benchmark appends this to the include library (shaders-out/wgsl/airlight_lib_4.wgsl,
+// The benchmark puts this between the include library (shaders-out/wgsl/airlight_lib_4.wgsl,
 // for the record structs, `airlight_canonical`, `airlight_light` and `airlight_phase_mu`) and
-// replaces the two lines below: NODES, and RULE with the kernel's own rule of that many nodes
+// the shared entry point (baseline_entry.wgsl), and replaces the two lines below: NODES, and RULE with the kernel's own rule of that many nodes
 // (`airlight::expansion::gauss_table`, (x, w) for x > 0).
 
 const NODES: u32 = 8u;
 const RULE = array<vec2<f32>, 4>(vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0));
 const CUT: f32 = 20.0;
 const HALF_PI: f32 = 1.5707963267948966;
-
-@group(0) @binding(0) var<storage, read> airlight_records: array<AirlightScene>;
-@group(0) @binding(1) var<storage, read_write> airlight_results: array<AirlightResult>;
 
 fn ga_part(s: AirlightScene, g: AirlightCanonical, a: f32, b: f32) -> f32 {
     let mid = (a + b) * 0.5;
@@ -42,7 +39,7 @@ fn ga_part(s: AirlightScene, g: AirlightCanonical, a: f32, b: f32) -> f32 {
     return part * hw;
 }
 
-fn ga_in_scatter(s: AirlightScene) -> AirlightResult {
+fn baseline_in_scatter(s: AirlightScene) -> AirlightResult {
     let g = airlight_canonical(s);
     let th0 = atan((g.t_lo - g.x_h) / g.h);
     var th1 = HALF_PI;
@@ -59,17 +56,5 @@ fn ga_in_scatter(s: AirlightScene) -> AirlightResult {
         sum = ga_part(s, g, th0, th1);
     }
     let value = s.sigma_s * s.intensity / g.h * sum;
-    if ((bitcast<u32>(value) & 0x7f800000u) == 0x7f800000u) {
-        return AirlightResult(3.40282347e38, 2u);
-    }
-    return AirlightResult(value, 0u);
-}
-
-@compute @workgroup_size(64)
-fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
-    let i = id.x;
-    if (i >= arrayLength(&airlight_records)) {
-        return;
-    }
-    airlight_results[i] = ga_in_scatter(airlight_records[i]);
+    return baseline_result(value);
 }

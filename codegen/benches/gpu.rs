@@ -45,6 +45,7 @@ use std::time::{Duration, Instant};
 const RAYS: usize = 65_536;
 const RAYMARCH: &str = include_str!("raymarch.wgsl");
 const GAUSS_ANGLE: &str = include_str!("gauss_angle.wgsl");
+const BASELINE_ENTRY: &str = include_str!("baseline_entry.wgsl");
 /// The include library whose structs and phase/light functions the baselines use.
 const LIBRARY: &str = include_str!("../../shaders-out/wgsl/airlight_lib_4.wgsl");
 const STEPS_LINE: &str = "const STEPS: u32 = 64u;";
@@ -103,20 +104,20 @@ impl Baseline {
             Baseline::RayMarch => &STEP_GRID,
         }
     }
-    /// The WGSL source at grid point `n`: the include library plus the baseline with its
-    /// constants filled in (the Gauss–Legendre rule from the kernel's table).
+    /// The WGSL source at grid point `n`: the include library, the baseline with its constants
+    /// filled in (the Gauss–Legendre rule from the kernel's table), the shared entry point.
     fn source(self, n: u32) -> String {
         match self {
             Baseline::RayMarch => {
                 assert!(RAYMARCH.contains(STEPS_LINE), "raymarch.wgsl lost its `{STEPS_LINE}` line");
-                format!("{LIBRARY}\n{}", RAYMARCH.replace(STEPS_LINE, &format!("const STEPS: u32 = {n}u;")))
+                format!("{LIBRARY}\n{}\n{BASELINE_ENTRY}", RAYMARCH.replace(STEPS_LINE, &format!("const STEPS: u32 = {n}u;")))
             }
             Baseline::GaussAngle => {
                 assert!(GAUSS_ANGLE.contains(NODES_LINE) && GAUSS_ANGLE.contains(RULE_LINE), "gauss_angle.wgsl lost its NODES or RULE line");
                 let rule = airlight::expansion::gauss_table::rule(n as usize).expect("a tabulated rule");
                 let pairs: Vec<String> = rule.iter().map(|&(x, w)| format!("vec2<f32>({:?}, {:?})", x as f32, w as f32)).collect();
                 let rule_line = format!("const RULE = array<vec2<f32>, {}>({});", rule.len(), pairs.join(", "));
-                format!("{LIBRARY}\n{}", GAUSS_ANGLE.replace(NODES_LINE, &format!("const NODES: u32 = {n}u;")).replace(RULE_LINE, &rule_line))
+                format!("{LIBRARY}\n{}\n{BASELINE_ENTRY}", GAUSS_ANGLE.replace(NODES_LINE, &format!("const NODES: u32 = {n}u;")).replace(RULE_LINE, &rule_line))
             }
         }
     }
