@@ -11,18 +11,15 @@ Writes moments.jsonl next to this file:
 
 Usage: python3 tests/reference/gen_moments.py      (mpmath==1.3.0; a few seconds)
 """
-import json
 import os
-import struct
+import sys
 
 import mpmath as mp
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gen_reference import f32, write_jsonl  # noqa: E402
+
 mp.mp.dps = 40
-
-
-def f32(x):
-    return struct.unpack("f", struct.pack("f", x))[0]
 
 
 LAMBDAS = [0.0, 1e-8, 1e-3, 0.1, 0.5, 0.999, 1.0, 1.001, 1.5, 2.0, 3.0, 5.0, 7.9, 8.0, 8.1, 11.9, 12.0,
@@ -46,10 +43,7 @@ def main():
         for k in range(16):
             v = mp.quad(lambda y: mp.exp(-H * (y - A)) * (y - c) ** k / (1 + y * y), [A, B])
             out.append({"kind": "monomial", "big_h": h, "y_lo": a, "y_hi": b, "k": k, "value": float(v)})
-    with open(os.path.join(HERE, "moments.jsonl"), "w") as fh:
-        for r in out:
-            fh.write(json.dumps(r) + "\n")
-    print(f"moments: {len(out)} lines")
+    print(f"moments: {write_jsonl('moments.jsonl', out)} lines")
 
 
 if __name__ == "__main__":

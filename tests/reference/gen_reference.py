@@ -417,13 +417,20 @@ def en_line(arg):
     return {"n": n, "x": x, "en": float(e), "scaled": float(s), **({"en_underflows": True} if float(e) == 0.0 else {})}
 
 
+def write_jsonl(name, lines):
+    """Writes dicts as JSON lines to the file `name` next to this file; returns how many."""
+    with open(os.path.join(HERE, name), "w") as f:
+        for line in lines:
+            f.write(json.dumps(line) + "\n")
+    return len(lines)
+
+
 def write_records(name, records):
     """Writes records as JSON lines next to this file; returns the count per category."""
+    write_jsonl(name, records)
     cats = {}
-    with open(os.path.join(HERE, name), "w") as f:
-        for r in records:
-            f.write(json.dumps(r) + "\n")
-            cats[r["category"]] = cats.get(r["category"], 0) + 1
+    for r in records:
+        cats[r["category"]] = cats.get(r["category"], 0) + 1
     return cats
 
 
@@ -435,19 +442,11 @@ def main():
         dropped = len(done) - len(kept)
         cats = write_records("scenes.jsonl", kept)
         print(f"scenes: {len(kept)} kept, {dropped} dropped (quadratures disagreed); {cats}")
-        lines = pool.map(e1_line, e1_points(), chunksize=64)
-        with open(os.path.join(HERE, "e1.jsonl"), "w") as f:
-            for l in lines:
-                f.write(json.dumps(l) + "\n")
-        print(f"e1: {len(lines)} points")
+        print(f"e1: {write_jsonl('e1.jsonl', pool.map(e1_line, e1_points(), chunksize=64))} points")
         rng = random.Random(11)
         args = [(n, 0.0) for n in range(2, 9)]
         args += [(n, 10 ** rng.uniform(-8, 4)) for n in range(1, 9) for _ in range(125)]
-        lines = pool.map(en_line, args, chunksize=64)
-        with open(os.path.join(HERE, "en_real.jsonl"), "w") as f:
-            for l in lines:
-                f.write(json.dumps(l) + "\n")
-        print(f"en_real: {len(lines)} points")
+        print(f"en_real: {write_jsonl('en_real.jsonl', pool.map(en_line, args, chunksize=64))} points")
 
 
 if __name__ == "__main__":
