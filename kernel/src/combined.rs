@@ -160,6 +160,9 @@ where
     }
     let mut total = T::zero();
     let mut run = Running { f_max: T::zero(), panels: 0 };
+    // panels only: the exponent's boundary layer is cut where the rest is below rounding
+    let cut = matches!(method, Method::Panels(_)) && !isotropic;
+    let mut behind_cut = false;
     // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
     if t0 < x_h {
         let a_s = (x_h - t0) / h;
@@ -169,12 +172,20 @@ where
         let (y_lo, y_hi) = (bounded(a_s), bounded(a_e));
         let da = (t_end - t0) / h;
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
-        let half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
+        let mut half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
+        if cut {
+            let dv = cut_length(half.big_h, y_lo);
+            if dv < dy {
+                // the rest of this half and all of the second lie beyond the cut
+                half = Half { y_hi: y_lo + dv, dy: dv, dv, ..half };
+                behind_cut = true;
+            }
+        }
         let j = half_integral::<T, D, P, _, N>(&half, g, phys, -T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, big_h * r_s, j);
     }
     // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
-    if t1 > x_h {
+    if t1 > x_h && !behind_cut {
         let t_start = if t0 > x_h { t0 } else { x_h };
         let a_s = (t_start - x_h) / h;
         let a_e = (t1 - x_h) / h;
@@ -184,13 +195,45 @@ where
         // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞ (the
         // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
-        let half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
+        let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
+        if cut {
+            let cut_dv = cut_length(half.big_h, y_hi.recip());
+            if cut_dv < dv {
+                // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
+                let y_lo = y_hi / (T::one() + y_hi * cut_dv);
+                half = Half { y_lo, dy: cut_dv * y_lo * y_hi, dv: cut_dv, ..half };
+            }
+        }
         let j = half_integral::<T, D, P, _, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);
         total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
     (total.max(T::zero()), run.panels)
+}
+
+/// The length `Δv` of a half beyond which the error-controlled panels cut it (`+∞`: no cut),
+/// for `H = σt·h` and the half's first `v_s`. The weight `e^{−H(v − v_s)}` is then below
+/// `e^{−E}`: the part dropped is at most `F_max e^{−E}/(H(1 + v_s²))` (`G ≤ F_max/(1+v²)`), and
+/// behind a cut first half the whole second half at most `F_max e^{−E}/(2H)` (its weight at the
+/// foot is below `e^{−E}`, and `∫_1^∞ e^{−H(v−1)} dv/(1+v²) ≤ 1/(2H)`); the half's scale (its
+/// integral with `F` at its maximum) is at least `F_max e^{−1}/(H(1 + (v_s + 1/H)²))`, from the
+/// first `1/H` of `v`, where the weight is at least `e^{−1}`. So with `R = (1 + (v_s + 1/H)²)/(1
+/// + v_s²) ≥ 1` everything dropped is at most `8 R e^{1−E}` of the scale, and
+/// `E = 1 + ln(8R/(ε·τ))` (`τ` = [`Real::PANEL_FLOOR`], the accuracy target's floor) keeps it
+/// below one rounding of the smallest value the target resolves: cut, the boundary layer of a
+/// thick medium or a long ray is still integrated exactly, and the panels are spent on the part
+/// that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
+#[inline]
+fn cut_length<T: Real>(big_h: T, v_s: T) -> T {
+    if !(big_h > T::zero()) {
+        return T::infinity();
+    }
+    let inv_h = big_h.recip();
+    let w = v_s + inv_h;
+    let r = (T::one() + w * w) / (T::one() + v_s * v_s);
+    let e = T::one() + (T::lit(8.0) * r / (T::epsilon() * T::lit(T::PANEL_FLOOR))).ln();
+    e * inv_h
 }
 
 /// An isotropic segment across the foot, in one piece: with `F` constant there is nothing to
