@@ -178,7 +178,7 @@ where
         if T::PANEL_NODES == 16 {
             in_scatter_counted::<T, D, P, Production, 16>(g, &self.physics(), method, &Production)
         } else {
-            in_scatter_counted::<T, D, P, Production, 12>(g, &self.physics(), method, &Production)
+            in_scatter_counted::<T, D, P, Production, 8>(g, &self.physics(), method, &Production)
         }
     }
 
