@@ -25,7 +25,7 @@ def row(m):
     sizes = [os.path.getsize(p) for p in paths]
     if suffix == ".spv":
         counts = [instructions(p) for p in paths]
-        what = re.sub(r"\([\d ]+ / [\d ]+ instructions\)", f"({spaced(counts[0])} / {spaced(counts[1])} instructions)", what)
+        what = re.sub(r"\([\d ]+ / [\d ]+ instructions", f"({spaced(counts[0])} / {spaced(counts[1])} instructions", what)
     return f"| `{prefix}{{4,6}}{suffix}` |{what}| {spaced(sizes[0])} / {spaced(sizes[1])} |"
 
 

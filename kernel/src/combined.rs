@@ -198,10 +198,10 @@ where
         let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
         if cut {
             let cut_dv = cut_length(half.big_h, y_hi.recip());
-            if cut_dv < dv {
-                // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
-                let y_lo = y_hi / (T::one() + y_hi * cut_dv);
-                half = Half { y_lo, dy: cut_dv * y_lo * y_hi, dv: cut_dv, ..half };
+            // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
+            let cut_y_lo = y_hi / (T::one() + y_hi * cut_dv);
+            if cut_dv < dv && cut_y_lo > T::zero() {
+                half = Half { y_lo: cut_y_lo, dy: cut_dv * cut_y_lo * y_hi, dv: cut_dv, ..half };
             }
         }
         let j = half_integral::<T, D, P, _, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);

@@ -1074,8 +1074,8 @@ float airlight_q_zero(AirlightHalf half_1)
     float d_re = 0.0;
     bool local_4 = (bool)0;
 
-    float big_h_2 = half_1.big_h;
-    float v_s = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
+    float big_h_3 = half_1.big_h;
+    float v_s_1 = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
     bool v_e_infinite = half_1.dv_infinite;
     v_e = half_1.y_hi;
     if (half_1.second) {
@@ -1087,11 +1087,11 @@ float airlight_q_zero(AirlightHalf half_1)
     if (_e16) {
         v_e = (1.0 / half_1.y_lo);
     }
-    if (!((big_h_2 == 0.0))) {
+    if (!((big_h_3 == 0.0))) {
         if (!(v_e_infinite)) {
             float _e28 = v_e;
             const float _e29 = airlight_hypot_one(_e28);
-            local_3 = ((big_h_2 * _e29) <= 1.0);
+            local_3 = ((big_h_3 * _e29) <= 1.0);
         } else {
             local_3 = false;
         }
@@ -1104,42 +1104,42 @@ float airlight_q_zero(AirlightHalf half_1)
     if (near_1) {
         if (!(v_e_infinite)) {
             float _e43 = v_e;
-            const float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s * _e43))));
+            const float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
             d_im = _e48;
             float _e50 = v_e;
-            float x_13 = ((half_1.dv * (v_s + _e50)) / (1.0 + (v_s * v_s)));
+            float x_13 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
             const bool _e57 = airlight_is_finite(x_13);
             if (_e57) {
                 const float _e58 = airlight_log1p(x_13);
                 d_re = (0.5 * _e58);
             } else {
                 float _e63 = v_e;
-                const float _e68 = airlight_log1p((v_s * v_s));
-                d_re = (0.5 * ((log(half_1.dv) + log((v_s + _e63))) - _e68));
+                const float _e68 = airlight_log1p((v_s_1 * v_s_1));
+                d_re = (0.5 * ((log(half_1.dv) + log((v_s_1 + _e63))) - _e68));
             }
         } else {
-            const float _e74 = airlight_atan((1.0 / v_s));
+            const float _e74 = airlight_atan((1.0 / v_s_1));
             d_im = _e74;
         }
-        if ((big_h_2 == 0.0)) {
+        if ((big_h_3 == 0.0)) {
             float _e77 = d_im;
             return _e77;
         }
-        float2 z_s = float2((big_h_2 * v_s), -(big_h_2));
+        float2 z_s = float2((big_h_3 * v_s_1), -(big_h_3));
         float _e81 = v_e;
-        float2 z_e = float2((big_h_2 * _e81), -(big_h_2));
+        float2 z_e = float2((big_h_3 * _e81), -(big_h_3));
         const float2 _e85 = airlight_ein_divided_difference(z_s, z_e);
-        const float2 _e86 = airlight_cos_sin(big_h_2);
+        const float2 _e86 = airlight_cos_sin(big_h_3);
         float2 rot = float2(_e86.x, -(_e86.y));
         float _e91 = d_re;
         float _e92 = d_im;
-        const float2 _e98 = airlight_cmul(rot, (float2(_e91, _e92) - (_e85 * (big_h_2 * half_1.dv))));
-        return (_e98.y * exp((big_h_2 * v_s)));
+        const float2 _e98 = airlight_cmul(rot, (float2(_e91, _e92) - (_e85 * (big_h_3 * half_1.dv))));
+        return (_e98.y * exp((big_h_3 * v_s_1)));
     }
-    const float2 _e106 = airlight_e1_scaled(float2((big_h_2 * v_s), -(big_h_2)));
+    const float2 _e106 = airlight_e1_scaled(float2((big_h_3 * v_s_1), -(big_h_3)));
     if (!(v_e_infinite)) {
         float _e110 = v_e;
-        const bool _e112 = airlight_is_finite((big_h_2 * _e110));
+        const bool _e112 = airlight_is_finite((big_h_3 * _e110));
         local_4 = _e112;
     } else {
         local_4 = false;
@@ -1147,8 +1147,8 @@ float airlight_q_zero(AirlightHalf half_1)
     bool _e114 = local_4;
     if (_e114) {
         float _e115 = v_e;
-        const float2 _e119 = airlight_e1_scaled(float2((big_h_2 * _e115), -(big_h_2)));
-        return (_e106.y - (_e119.y * exp((-(big_h_2) * half_1.dv))));
+        const float2 _e119 = airlight_e1_scaled(float2((big_h_3 * _e115), -(big_h_3)));
+        return (_e106.y - (_e119.y * exp((-(big_h_3) * half_1.dv))));
     }
     return _e106.y;
 }
@@ -1970,21 +1970,21 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
             q = _e102;
         }
     }
-    float big_h_3 = half_6.big_h;
+    float big_h_4 = half_6.big_h;
     const float _e107[16] = airlight_zero_scratch();
     s_b = _e107;
-    airlight_en_scaled((big_h_3 / b_6), 6u, s_b);
+    airlight_en_scaled((big_h_4 / b_6), 6u, s_b);
     const float _e111[16] = airlight_zero_scratch();
     s_a = _e111;
     if ((a_7 > 0.0)) {
-        const bool _e118 = airlight_is_finite((big_h_3 / a_7));
+        const bool _e118 = airlight_is_finite((big_h_4 / a_7));
         local_10 = _e118;
     } else {
         local_10 = false;
     }
     bool far_1 = local_10;
     if (far_1) {
-        decay = exp((-(big_h_3) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_4) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if (far_1) {
         float _e131 = decay;
@@ -1994,7 +1994,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     }
     bool _e135 = local_11;
     if (_e135) {
-        airlight_en_scaled((big_h_3 / a_7), 6u, s_a);
+        airlight_en_scaled((big_h_4 / a_7), 6u, s_a);
     }
     if ((b_6 > 0.0)) {
         ab = (a_7 / b_6);
@@ -2682,9 +2682,9 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_10 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    AirlightHalf half_12 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     const float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
-    const float _e55 = airlight_moment_zero(half_10);
+    const float _e55 = airlight_moment_zero(half_12);
     float j_8 = (_e54 * _e55);
     const bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
@@ -2697,6 +2697,15 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_
     float _e72 = x_8;
     const float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_8);
     return _e73;
+}
+
+float airlight_cut_length(float big_h_2, float v_s)
+{
+    float inv_h = (1.0 / big_h_2);
+    float w_3 = (v_s + inv_h);
+    float r_6 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_6) / 1.1920929e-11)));
+    return (e_1 * inv_h);
 }
 
 AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
@@ -2725,15 +2734,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     bool local_37 = (bool)0;
     float total_2 = 0.0;
     float f_max_6 = 0.0;
+    bool behind_cut = false;
     float t_end = (float)0;
     bool local_38 = (bool)0;
+    AirlightHalf half_10 = (AirlightHalf)0;
     bool local_39 = (bool)0;
+    bool local_40 = (bool)0;
+    bool local_41 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_40 = (bool)0;
-    bool local_41 = (bool)0;
+    bool local_42 = (bool)0;
+    bool local_43 = (bool)0;
+    AirlightHalf half_11 = (AirlightHalf)0;
+    bool local_44 = (bool)0;
+    bool local_45 = (bool)0;
+    bool local_46 = (bool)0;
 
     float t0_ = g_15.t_lo;
     float t1_ = g_15.t_hi;
@@ -2790,7 +2807,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_2;
     }
-    float big_h_4 = (s_11.sigma_t * h_3);
+    float big_h_5 = (s_11.sigma_t * h_3);
     if (!((s_11.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
             local_30 = (s_11.light_param_a == 0.0);
@@ -2846,10 +2863,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e131 = local_36;
     if (_e131) {
-        const float _e132 = airlight_whole_line(s_11, g_15, big_h_4);
+        const float _e132 = airlight_whole_line(s_11, g_15, big_h_5);
         const AirlightResult airlightresult_3 = ConstructAirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_3;
     }
+    bool cut = !(isotropic_1);
     if ((t0_ < x_h)) {
         float a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
@@ -2858,103 +2876,161 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         } else {
             local_38 = false;
         }
-        bool _e151 = local_38;
-        if (_e151) {
+        bool _e154 = local_38;
+        if (_e154) {
             t_end = t1_;
         }
-        float _e152 = t_end;
-        float a_e = ((x_h - _e152) / h_3);
-        const float _e155 = airlight_hypot_one(a_s_1);
-        const float _e156 = airlight_hypot_one(a_e);
-        const float _e157 = airlight_bounded(a_s_1);
-        const float _e158 = airlight_bounded(a_e);
-        float _e159 = t_end;
-        float dy_1 = (((((_e159 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
-        const float _e172 = airlight_optical(big_h_4, dy_1, false);
-        AirlightHalf half_11 = ConstructAirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        const float _e176 = airlight_half(s_11, g_15, -1.0, half_11, isotropic_1, f_max_6);
-        float _e177 = total_2;
-        const float _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
-        total_2 = (_e177 + _e181);
+        float _e155 = t_end;
+        float a_e = ((x_h - _e155) / h_3);
+        const float _e158 = airlight_hypot_one(a_s_1);
+        const float _e159 = airlight_hypot_one(a_e);
+        const float _e160 = airlight_bounded(a_s_1);
+        const float _e161 = airlight_bounded(a_e);
+        float _e162 = t_end;
+        float dy_1 = (((((_e162 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
+        const float _e175 = airlight_optical(big_h_5, dy_1, false);
+        half_10 = ConstructAirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        if (cut) {
+            float _e182 = half_10.big_h;
+            local_39 = (_e182 > 0.0);
+        } else {
+            local_39 = false;
+        }
+        bool _e186 = local_39;
+        if (_e186) {
+            float _e188 = half_10.big_h;
+            const float _e189 = airlight_cut_length(_e188, _e160);
+            if ((_e189 < dy_1)) {
+                float _e193 = half_10.big_h;
+                half_10 = ConstructAirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                behind_cut = true;
+            }
+        }
+        AirlightHalf _e199 = half_10;
+        const float _e200 = airlight_half(s_11, g_15, -1.0, _e199, isotropic_1, f_max_6);
+        float _e201 = total_2;
+        const float _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
+        total_2 = (_e201 + _e205);
     }
     if (!(g_15.t_hi_infinite)) {
-        local_39 = (t1_ > x_h);
+        local_40 = (t1_ > x_h);
     } else {
-        local_39 = true;
+        local_40 = true;
     }
-    bool _e189 = local_39;
-    if (_e189) {
+    bool _e213 = local_40;
+    if (_e213) {
+        bool _e216 = behind_cut;
+        local_41 = !(_e216);
+    } else {
+        local_41 = false;
+    }
+    bool _e219 = local_41;
+    if (_e219) {
         float t_start = max(t0_, x_h);
         float a_s_2 = ((t_start - x_h) / h_3);
-        const float _e193 = airlight_hypot_one(a_s_2);
-        const float _e194 = airlight_bounded(a_s_2);
-        dy = _e194;
+        const float _e223 = airlight_hypot_one(a_s_2);
+        const float _e224 = airlight_bounded(a_s_2);
+        dy = _e224;
         float a_e_1 = ((t1_ - x_h) / h_3);
         if (!(g_15.t_hi_infinite)) {
-            const bool _e208 = airlight_is_finite(a_e_1);
-            local_40 = _e208;
+            const bool _e238 = airlight_is_finite(a_e_1);
+            local_42 = _e238;
         } else {
-            local_40 = false;
+            local_42 = false;
         }
-        bool _e210 = local_40;
-        if (_e210) {
-            const float _e211 = airlight_bounded(a_e_1);
-            const float _e215 = airlight_hypot_one(a_e_1);
-            float dv_end_1 = (((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e193 + _e215))));
-            if ((_e211 > 0.0)) {
-                const bool _e225 = airlight_is_finite(dv_end_1);
-                local_41 = _e225;
+        bool _e240 = local_42;
+        if (_e240) {
+            const float _e241 = airlight_bounded(a_e_1);
+            const float _e245 = airlight_hypot_one(a_e_1);
+            float dv_end_1 = (((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245))));
+            if ((_e241 > 0.0)) {
+                const bool _e255 = airlight_is_finite(dv_end_1);
+                local_43 = _e255;
             } else {
-                local_41 = false;
+                local_43 = false;
             }
-            bool _e227 = local_41;
-            if (_e227) {
-                y_lo = _e211;
+            bool _e257 = local_43;
+            if (_e257) {
+                y_lo = _e241;
                 dv_3 = dv_end_1;
-                float _e228 = dv_3;
-                float _e229 = y_lo;
-                dy = ((_e228 * _e229) * _e194);
+                float _e258 = dv_3;
+                float _e259 = y_lo;
+                dy = ((_e258 * _e259) * _e224);
                 infinite_2 = false;
             }
         }
-        float _e234 = dv_3;
-        bool _e235 = infinite_2;
-        const float _e236 = airlight_optical(big_h_4, _e234, _e235);
-        float _e237 = y_lo;
-        float _e238 = dy;
-        float _e239 = dv_3;
-        bool _e240 = infinite_2;
-        AirlightHalf half_12 = ConstructAirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        const float _e243 = airlight_half(s_11, g_15, 1.0, half_12, isotropic_1, f_max_6);
-        float _e244 = total_2;
-        const float _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
-        total_2 = (_e244 + _e252);
+        float _e264 = dv_3;
+        bool _e265 = infinite_2;
+        const float _e266 = airlight_optical(big_h_5, _e264, _e265);
+        float _e267 = y_lo;
+        float _e268 = dy;
+        float _e269 = dv_3;
+        bool _e270 = infinite_2;
+        half_11 = ConstructAirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        if (cut) {
+            float _e276 = half_11.big_h;
+            local_44 = (_e276 > 0.0);
+        } else {
+            local_44 = false;
+        }
+        bool _e280 = local_44;
+        if (_e280) {
+            float _e282 = half_11.big_h;
+            const float _e285 = airlight_cut_length(_e282, (1.0 / _e224));
+            bool _e286 = infinite_2;
+            if (!(_e286)) {
+                float _e290 = dv_3;
+                local_45 = (_e285 < _e290);
+            } else {
+                local_45 = true;
+            }
+            bool _e293 = local_45;
+            if (_e293) {
+                float cut_y_lo = (_e224 / (1.0 + (_e224 * _e285)));
+                if ((cut_y_lo > 0.0)) {
+                    const bool _e302 = airlight_is_finite(_e285);
+                    local_46 = _e302;
+                } else {
+                    local_46 = false;
+                }
+                bool _e304 = local_46;
+                if (_e304) {
+                    float _e307 = half_11.big_h;
+                    half_11 = ConstructAirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                }
+            }
+        }
+        AirlightHalf _e313 = half_11;
+        const float _e314 = airlight_half(s_11, g_15, 1.0, _e313, isotropic_1, f_max_6);
+        float _e315 = total_2;
+        const float _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        total_2 = (_e315 + _e323);
     }
-    float _e254 = total_2;
-    const AirlightResult airlightresult_4 = ConstructAirlightResult(max(_e254, 0.0), AIRLIGHT_STATUS_OK);
+    float _e325 = total_2;
+    const AirlightResult airlightresult_4 = ConstructAirlightResult(max(_e325, 0.0), AIRLIGHT_STATUS_OK);
     return airlightresult_4;
 }
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_42 = (bool)0;
-    bool local_43 = (bool)0;
+    bool local_47 = (bool)0;
+    bool local_48 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_42 = _e6;
+        local_47 = _e6;
     } else {
-        local_42 = false;
+        local_47 = false;
     }
-    bool _e8 = local_42;
+    bool _e8 = local_47;
     if (_e8) {
         const bool _e12 = airlight_is_finite(v.z);
-        local_43 = _e12;
+        local_48 = _e12;
     } else {
-        local_43 = false;
+        local_48 = false;
     }
-    bool _e14 = local_43;
+    bool _e14 = local_48;
     return _e14;
 }
 
@@ -2969,16 +3045,16 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_44 = (bool)0;
+    bool local_49 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_44 = _e6;
+        local_49 = _e6;
     } else {
-        local_44 = false;
+        local_49 = false;
     }
-    bool _e8 = local_44;
+    bool _e8 = local_49;
     return _e8;
 }
 
@@ -2991,22 +3067,17 @@ float3 airlight_normalize(float3 v_3)
 
 bool airlight_valid(AirlightScene s_12)
 {
-    bool local_45 = (bool)0;
-    bool local_46 = (bool)0;
-    bool local_47 = (bool)0;
-    bool local_48 = (bool)0;
-    bool local_49 = (bool)0;
     bool local_50 = (bool)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
     bool local_53 = (bool)0;
     bool local_54 = (bool)0;
-    bool ok = (bool)0;
     bool local_55 = (bool)0;
     bool local_56 = (bool)0;
     bool local_57 = (bool)0;
     bool local_58 = (bool)0;
     bool local_59 = (bool)0;
+    bool ok = (bool)0;
     bool local_60 = (bool)0;
     bool local_61 = (bool)0;
     bool local_62 = (bool)0;
@@ -3019,163 +3090,168 @@ bool airlight_valid(AirlightScene s_12)
     bool local_69 = (bool)0;
     bool local_70 = (bool)0;
     bool local_71 = (bool)0;
+    bool local_72 = (bool)0;
+    bool local_73 = (bool)0;
+    bool local_74 = (bool)0;
+    bool local_75 = (bool)0;
+    bool local_76 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
         const bool _e6 = airlight_vec_finite(s_12.dir);
-        local_45 = _e6;
-    } else {
-        local_45 = false;
-    }
-    bool _e8 = local_45;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_12.dir);
-        local_46 = _e12;
-    } else {
-        local_46 = false;
-    }
-    bool _e14 = local_46;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_12.t_min);
-        local_47 = _e18;
-    } else {
-        local_47 = false;
-    }
-    bool _e20 = local_47;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_12.light_position);
-        local_48 = _e24;
-    } else {
-        local_48 = false;
-    }
-    bool _e26 = local_48;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_12.intensity);
-        local_49 = _e30;
-    } else {
-        local_49 = false;
-    }
-    bool _e32 = local_49;
-    if (_e32) {
-        local_50 = (s_12.intensity >= 0.0);
+        local_50 = _e6;
     } else {
         local_50 = false;
     }
-    bool _e39 = local_50;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_12.sigma_s);
-        local_51 = _e43;
+    bool _e8 = local_50;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_12.dir);
+        local_51 = _e12;
     } else {
         local_51 = false;
     }
-    bool _e45 = local_51;
-    if (_e45) {
-        local_52 = (s_12.sigma_s >= 0.0);
+    bool _e14 = local_51;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_12.t_min);
+        local_52 = _e18;
     } else {
         local_52 = false;
     }
-    bool _e52 = local_52;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_12.sigma_t);
-        local_53 = _e56;
+    bool _e20 = local_52;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_12.light_position);
+        local_53 = _e24;
     } else {
         local_53 = false;
     }
-    bool _e58 = local_53;
-    if (_e58) {
-        local_54 = (s_12.sigma_t >= 0.0);
+    bool _e26 = local_53;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_12.intensity);
+        local_54 = _e30;
     } else {
         local_54 = false;
     }
-    bool _e65 = local_54;
+    bool _e32 = local_54;
+    if (_e32) {
+        local_55 = (s_12.intensity >= 0.0);
+    } else {
+        local_55 = false;
+    }
+    bool _e39 = local_55;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_12.sigma_s);
+        local_56 = _e43;
+    } else {
+        local_56 = false;
+    }
+    bool _e45 = local_56;
+    if (_e45) {
+        local_57 = (s_12.sigma_s >= 0.0);
+    } else {
+        local_57 = false;
+    }
+    bool _e52 = local_57;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_12.sigma_t);
+        local_58 = _e56;
+    } else {
+        local_58 = false;
+    }
+    bool _e58 = local_58;
+    if (_e58) {
+        local_59 = (s_12.sigma_t >= 0.0);
+    } else {
+        local_59 = false;
+    }
+    bool _e65 = local_59;
     ok = _e65;
     if (((s_12.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             const bool _e76 = airlight_is_finite(s_12.t_max);
-            local_55 = _e76;
+            local_60 = _e76;
         } else {
-            local_55 = false;
+            local_60 = false;
         }
-        bool _e78 = local_55;
+        bool _e78 = local_60;
         if (_e78) {
-            local_56 = (s_12.t_min <= s_12.t_max);
+            local_61 = (s_12.t_min <= s_12.t_max);
         } else {
-            local_56 = false;
+            local_61 = false;
         }
-        bool _e85 = local_56;
+        bool _e85 = local_61;
         ok = _e85;
     }
     if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e89 = ok;
         if (_e89) {
             const bool _e93 = airlight_vec_finite(s_12.light_axis);
-            local_57 = _e93;
+            local_62 = _e93;
         } else {
-            local_57 = false;
+            local_62 = false;
         }
-        bool _e95 = local_57;
+        bool _e95 = local_62;
         if (_e95) {
             const bool _e99 = airlight_normalisable(s_12.light_axis);
-            local_58 = _e99;
+            local_63 = _e99;
         } else {
-            local_58 = false;
+            local_63 = false;
         }
-        bool _e101 = local_58;
+        bool _e101 = local_63;
         if (_e101) {
-            local_59 = (s_12.light_param_a >= 0.0);
+            local_64 = (s_12.light_param_a >= 0.0);
         } else {
-            local_59 = false;
+            local_64 = false;
         }
-        bool _e108 = local_59;
+        bool _e108 = local_64;
         if (_e108) {
-            local_60 = (s_12.light_param_a <= 1024.0);
+            local_65 = (s_12.light_param_a <= 1024.0);
         } else {
-            local_60 = false;
+            local_65 = false;
         }
-        bool _e115 = local_60;
+        bool _e115 = local_65;
         if (_e115) {
-            local_61 = (frac((s_12.light_param_a * 0.5)) == 0.0);
+            local_66 = (frac((s_12.light_param_a * 0.5)) == 0.0);
         } else {
-            local_61 = false;
+            local_66 = false;
         }
-        bool _e125 = local_61;
+        bool _e125 = local_66;
         ok = _e125;
     } else {
         if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e129 = ok;
             if (_e129) {
                 const bool _e133 = airlight_vec_finite(s_12.light_axis);
-                local_62 = _e133;
+                local_67 = _e133;
             } else {
-                local_62 = false;
+                local_67 = false;
             }
-            bool _e135 = local_62;
+            bool _e135 = local_67;
             if (_e135) {
                 const bool _e139 = airlight_normalisable(s_12.light_axis);
-                local_63 = _e139;
+                local_68 = _e139;
             } else {
-                local_63 = false;
+                local_68 = false;
             }
-            bool _e141 = local_63;
+            bool _e141 = local_68;
             if (_e141) {
-                local_64 = (s_12.light_param_b < s_12.light_param_a);
+                local_69 = (s_12.light_param_b < s_12.light_param_a);
             } else {
-                local_64 = false;
+                local_69 = false;
             }
-            bool _e148 = local_64;
+            bool _e148 = local_69;
             if (_e148) {
-                local_65 = (s_12.light_param_b >= -1.0);
+                local_70 = (s_12.light_param_b >= -1.0);
             } else {
-                local_65 = false;
+                local_70 = false;
             }
-            bool _e155 = local_65;
+            bool _e155 = local_70;
             if (_e155) {
-                local_66 = (s_12.light_param_a <= 1.0);
+                local_71 = (s_12.light_param_a <= 1.0);
             } else {
-                local_66 = false;
+                local_71 = false;
             }
-            bool _e162 = local_66;
+            bool _e162 = local_71;
             ok = _e162;
         } else {
             if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -3194,40 +3270,40 @@ bool airlight_valid(AirlightScene s_12)
         case 4u: {
             bool _e172 = ok;
             if (_e172) {
-                local_67 = g_ok;
+                local_72 = g_ok;
             } else {
-                local_67 = false;
+                local_72 = false;
             }
-            bool _e176 = local_67;
+            bool _e176 = local_72;
             ok = _e176;
             break;
         }
         case 5u: {
             bool _e177 = ok;
             if (_e177) {
-                local_68 = g_ok;
+                local_73 = g_ok;
             } else {
-                local_68 = false;
+                local_73 = false;
             }
-            bool _e181 = local_68;
+            bool _e181 = local_73;
             if (_e181) {
-                local_69 = (abs(s_12.phase_param_b) < 1.0);
+                local_74 = (abs(s_12.phase_param_b) < 1.0);
             } else {
-                local_69 = false;
+                local_74 = false;
             }
-            bool _e189 = local_69;
+            bool _e189 = local_74;
             if (_e189) {
-                local_70 = (s_12.phase_param_c >= 0.0);
+                local_75 = (s_12.phase_param_c >= 0.0);
             } else {
-                local_70 = false;
+                local_75 = false;
             }
-            bool _e196 = local_70;
+            bool _e196 = local_75;
             if (_e196) {
-                local_71 = (s_12.phase_param_c <= 1.0);
+                local_76 = (s_12.phase_param_c <= 1.0);
             } else {
-                local_71 = false;
+                local_76 = false;
             }
-            bool _e203 = local_71;
+            bool _e203 = local_76;
             ok = _e203;
             break;
         }
@@ -3287,9 +3363,9 @@ float2 airlight_two_sum(float a_11, float b_8, uint key_1)
     const float _e4 = airlight_opaque((a_11 + b_8), key_1);
     const float _e6 = airlight_opaque((_e4 - a_11), key_1);
     const float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_1 = ((a_11 - _e8) + (b_8 - _e6));
-    const bool _e12 = airlight_is_finite(e_1);
-    return float2(_e4, (_e12 ? e_1 : 0.0));
+    float e_2 = ((a_11 - _e8) + (b_8 - _e6));
+    const bool _e12 = airlight_is_finite(e_2);
+    return float2(_e4, (_e12 ? e_2 : 0.0));
 }
 
 float airlight_split_high(float x_10)
@@ -3304,9 +3380,9 @@ float2 airlight_two_product(float a_12, float b_9, uint key_2)
     float al = (a_12 - _e5);
     const float _e7 = airlight_split_high(b_9);
     float bl = (b_9 - _e7);
-    float e_2 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    const bool _e17 = airlight_is_finite(e_2);
-    return float2(_e4, (_e17 ? e_2 : 0.0));
+    float e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_3);
+    return float2(_e4, (_e17 ? e_3 : 0.0));
 }
 
 float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, uint key_3)
@@ -3320,30 +3396,30 @@ float airlight_diff_of_products(float a_13, float b_10, float c_6, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_72 = (bool)0;
-    bool local_73 = (bool)0;
+    bool local_77 = (bool)0;
+    bool local_78 = (bool)0;
 
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_73 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_73 = false;
+            local_78 = false;
         }
-        bool _e21 = local_73;
-        local_72 = _e21;
+        bool _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_72 = true;
+        local_77 = true;
     }
-    bool _e23 = local_72;
+    bool _e23 = local_77;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
 {
-    bool local_74 = (bool)0;
+    bool local_79 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_75 = (bool)0;
+    bool local_80 = (bool)0;
     float3 a_14 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_14.flags > 1u));
@@ -3356,11 +3432,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     const bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir_2);
-        local_74 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_74 = true;
+        local_79 = true;
     }
-    bool _e41 = local_74;
+    bool _e41 = local_79;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -3368,14 +3444,14 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     const float _e46 = airlight_diff_of_products(hi_2.y, dir_2.z, hi_2.z, dir_2.y, key_4);
     const float _e59 = airlight_diff_of_products(hi_2.z, dir_2.x, hi_2.x, dir_2.z, key_4);
     const float _e72 = airlight_diff_of_products(hi_2.x, dir_2.y, hi_2.y, dir_2.x, key_4);
-    float3 w_3 = float3((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
-    const bool _e82 = airlight_vec_finite(w_3);
+    float3 w_4 = float3((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
+    const bool _e82 = airlight_vec_finite(w_4);
     if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_3);
+    const float _e85 = airlight_safe_length(w_4);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -3387,11 +3463,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     float h_4 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_75 = (h_4 > 0.0);
+        local_80 = (h_4 > 0.0);
     } else {
-        local_75 = false;
+        local_80 = false;
     }
-    bool _e101 = local_75;
+    bool _e101 = local_80;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -3401,7 +3477,7 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
         a_14 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir_2);
-    const float3 _e114 = airlight_normalize(w_3);
+    const float3 _e114 = airlight_normalize(w_4);
     float3 n_5 = -(cross(_e113, _e114));
     out_2.h = h_4;
     float3 _e119 = a_14;

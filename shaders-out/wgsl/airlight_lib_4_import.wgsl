@@ -858,8 +858,8 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     var d_re: f32 = 0f;
     var local_4: bool;
 
-    let big_h_2 = half_1.big_h;
-    let v_s = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
+    let big_h_3 = half_1.big_h;
+    let v_s_1 = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
     let v_e_infinite = half_1.dv_infinite;
     v_e = half_1.y_hi;
     if half_1.second {
@@ -871,11 +871,11 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     if _e16 {
         v_e = (1f / half_1.y_lo);
     }
-    if !((big_h_2 == 0f)) {
+    if !((big_h_3 == 0f)) {
         if !(v_e_infinite) {
             let _e28 = v_e;
             let _e29 = airlight_hypot_one(_e28);
-            local_3 = ((big_h_2 * _e29) <= 1f);
+            local_3 = ((big_h_3 * _e29) <= 1f);
         } else {
             local_3 = false;
         }
@@ -888,42 +888,42 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     if near_1 {
         if !(v_e_infinite) {
             let _e43 = v_e;
-            let _e48 = airlight_atan((half_1.dv / (1f + (v_s * _e43))));
+            let _e48 = airlight_atan((half_1.dv / (1f + (v_s_1 * _e43))));
             d_im = _e48;
             let _e50 = v_e;
-            let x_13 = ((half_1.dv * (v_s + _e50)) / (1f + (v_s * v_s)));
+            let x_13 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
             let _e57 = airlight_is_finite(x_13);
             if _e57 {
                 let _e58 = airlight_log1p(x_13);
                 d_re = (0.5f * _e58);
             } else {
                 let _e63 = v_e;
-                let _e68 = airlight_log1p((v_s * v_s));
-                d_re = (0.5f * ((log(half_1.dv) + log((v_s + _e63))) - _e68));
+                let _e68 = airlight_log1p((v_s_1 * v_s_1));
+                d_re = (0.5f * ((log(half_1.dv) + log((v_s_1 + _e63))) - _e68));
             }
         } else {
-            let _e74 = airlight_atan((1f / v_s));
+            let _e74 = airlight_atan((1f / v_s_1));
             d_im = _e74;
         }
-        if (big_h_2 == 0f) {
+        if (big_h_3 == 0f) {
             let _e77 = d_im;
             return _e77;
         }
-        let z_s = vec2<f32>((big_h_2 * v_s), -(big_h_2));
+        let z_s = vec2<f32>((big_h_3 * v_s_1), -(big_h_3));
         let _e81 = v_e;
-        let z_e = vec2<f32>((big_h_2 * _e81), -(big_h_2));
+        let z_e = vec2<f32>((big_h_3 * _e81), -(big_h_3));
         let _e85 = airlight_ein_divided_difference(z_s, z_e);
-        let _e86 = airlight_cos_sin(big_h_2);
+        let _e86 = airlight_cos_sin(big_h_3);
         let rot = vec2<f32>(_e86.x, -(_e86.y));
         let _e91 = d_re;
         let _e92 = d_im;
-        let _e98 = airlight_cmul(rot, (vec2<f32>(_e91, _e92) - (_e85 * (big_h_2 * half_1.dv))));
-        return (_e98.y * exp((big_h_2 * v_s)));
+        let _e98 = airlight_cmul(rot, (vec2<f32>(_e91, _e92) - (_e85 * (big_h_3 * half_1.dv))));
+        return (_e98.y * exp((big_h_3 * v_s_1)));
     }
-    let _e106 = airlight_e1_scaled(vec2<f32>((big_h_2 * v_s), -(big_h_2)));
+    let _e106 = airlight_e1_scaled(vec2<f32>((big_h_3 * v_s_1), -(big_h_3)));
     if !(v_e_infinite) {
         let _e110 = v_e;
-        let _e112 = airlight_is_finite((big_h_2 * _e110));
+        let _e112 = airlight_is_finite((big_h_3 * _e110));
         local_4 = _e112;
     } else {
         local_4 = false;
@@ -931,8 +931,8 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     let _e114 = local_4;
     if _e114 {
         let _e115 = v_e;
-        let _e119 = airlight_e1_scaled(vec2<f32>((big_h_2 * _e115), -(big_h_2)));
-        return (_e106.y - (_e119.y * exp((-(big_h_2) * half_1.dv))));
+        let _e119 = airlight_e1_scaled(vec2<f32>((big_h_3 * _e115), -(big_h_3)));
+        return (_e106.y - (_e119.y * exp((-(big_h_3) * half_1.dv))));
     }
     return _e106.y;
 }
@@ -1614,21 +1614,21 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
             jj = (_e104 + 1u);
         }
     }
-    let big_h_3 = half_6.big_h;
+    let big_h_4 = half_6.big_h;
     let _e107 = airlight_zero_scratch();
     s_b = _e107;
-    airlight_en_scaled((big_h_3 / b_6), 6u, (&s_b));
+    airlight_en_scaled((big_h_4 / b_6), 6u, (&s_b));
     let _e111 = airlight_zero_scratch();
     s_a = _e111;
     if (a_7 > 0f) {
-        let _e118 = airlight_is_finite((big_h_3 / a_7));
+        let _e118 = airlight_is_finite((big_h_4 / a_7));
         local_10 = _e118;
     } else {
         local_10 = false;
     }
     let far_1 = local_10;
     if far_1 {
-        decay = exp((-(big_h_3) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_4) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     if far_1 {
         let _e131 = decay;
@@ -1638,7 +1638,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     }
     let _e135 = local_11;
     if _e135 {
-        airlight_en_scaled((big_h_3 / a_7), 6u, (&s_a));
+        airlight_en_scaled((big_h_4 / a_7), 6u, (&s_a));
     }
     if (b_6 > 0f) {
         ab = (a_7 / b_6);
@@ -2250,9 +2250,9 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_10 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e54 = airlight_integrand(s_10, g_14, -1f, _e9);
-    let _e55 = airlight_moment_zero(half_10);
+    let _e55 = airlight_moment_zero(half_12);
     let j_8 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
@@ -2265,6 +2265,14 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let _e72 = x_8;
     let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_8);
     return _e73;
+}
+
+fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
+    let inv_h = (1f / big_h_2);
+    let w_3 = (v_s + inv_h);
+    let r_6 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_6) / 0.000000000011920929f)));
+    return (e_1 * inv_h);
 }
 
 fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
@@ -2285,15 +2293,23 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     var local_37: bool;
     var total_2: f32 = 0f;
     var f_max_6: f32 = 0f;
+    var behind_cut: bool = false;
     var t_end: f32;
     var local_38: bool;
+    var half_10: AirlightHalf;
     var local_39: bool;
+    var local_40: bool;
+    var local_41: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_40: bool;
-    var local_41: bool;
+    var local_42: bool;
+    var local_43: bool;
+    var half_11: AirlightHalf;
+    var local_44: bool;
+    var local_45: bool;
+    var local_46: bool;
 
     let t0_ = g_15.t_lo;
     let t1_ = g_15.t_hi;
@@ -2347,7 +2363,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_4 = (s_11.sigma_t * h_3);
+    let big_h_5 = (s_11.sigma_t * h_3);
     if !((s_11.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
             local_30 = (s_11.light_param_a == 0f);
@@ -2403,9 +2419,10 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e131 = local_36;
     if _e131 {
-        let _e132 = airlight_whole_line(s_11, g_15, big_h_4);
+        let _e132 = airlight_whole_line(s_11, g_15, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
+    let cut = !(isotropic_1);
     if (t0_ < x_h) {
         let a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
@@ -2414,101 +2431,159 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
         } else {
             local_38 = false;
         }
-        let _e151 = local_38;
-        if _e151 {
+        let _e154 = local_38;
+        if _e154 {
             t_end = t1_;
         }
-        let _e152 = t_end;
-        let a_e = ((x_h - _e152) / h_3);
-        let _e155 = airlight_hypot_one(a_s_1);
-        let _e156 = airlight_hypot_one(a_e);
-        let _e157 = airlight_bounded(a_s_1);
-        let _e158 = airlight_bounded(a_e);
-        let _e159 = t_end;
-        let dy_1 = (((((_e159 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e155 + _e156)))) * _e157) * _e158);
-        let _e172 = airlight_optical(big_h_4, dy_1, false);
-        let half_11 = AirlightHalf(false, _e172, _e157, _e158, dy_1, dy_1, false);
-        let _e176 = airlight_half(s_11, g_15, -1f, half_11, isotropic_1, (&f_max_6));
-        let _e177 = total_2;
-        let _e181 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_4 * _e155), _e176);
-        total_2 = (_e177 + _e181);
+        let _e155 = t_end;
+        let a_e = ((x_h - _e155) / h_3);
+        let _e158 = airlight_hypot_one(a_s_1);
+        let _e159 = airlight_hypot_one(a_e);
+        let _e160 = airlight_bounded(a_s_1);
+        let _e161 = airlight_bounded(a_e);
+        let _e162 = t_end;
+        let dy_1 = (((((_e162 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
+        let _e175 = airlight_optical(big_h_5, dy_1, false);
+        half_10 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        if cut {
+            let _e182 = half_10.big_h;
+            local_39 = (_e182 > 0f);
+        } else {
+            local_39 = false;
+        }
+        let _e186 = local_39;
+        if _e186 {
+            let _e188 = half_10.big_h;
+            let _e189 = airlight_cut_length(_e188, _e160);
+            if (_e189 < dy_1) {
+                let _e193 = half_10.big_h;
+                half_10 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                behind_cut = true;
+            }
+        }
+        let _e199 = half_10;
+        let _e200 = airlight_half(s_11, g_15, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e201 = total_2;
+        let _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
+        total_2 = (_e201 + _e205);
     }
     if !(g_15.t_hi_infinite) {
-        local_39 = (t1_ > x_h);
+        local_40 = (t1_ > x_h);
     } else {
-        local_39 = true;
+        local_40 = true;
     }
-    let _e189 = local_39;
-    if _e189 {
+    let _e213 = local_40;
+    if _e213 {
+        let _e216 = behind_cut;
+        local_41 = !(_e216);
+    } else {
+        local_41 = false;
+    }
+    let _e219 = local_41;
+    if _e219 {
         let t_start = max(t0_, x_h);
         let a_s_2 = ((t_start - x_h) / h_3);
-        let _e193 = airlight_hypot_one(a_s_2);
-        let _e194 = airlight_bounded(a_s_2);
-        dy = _e194;
+        let _e223 = airlight_hypot_one(a_s_2);
+        let _e224 = airlight_bounded(a_s_2);
+        dy = _e224;
         let a_e_1 = ((t1_ - x_h) / h_3);
         if !(g_15.t_hi_infinite) {
-            let _e208 = airlight_is_finite(a_e_1);
-            local_40 = _e208;
+            let _e238 = airlight_is_finite(a_e_1);
+            local_42 = _e238;
         } else {
-            local_40 = false;
+            local_42 = false;
         }
-        let _e210 = local_40;
-        if _e210 {
-            let _e211 = airlight_bounded(a_e_1);
-            let _e215 = airlight_hypot_one(a_e_1);
-            let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e193 + _e215))));
-            if (_e211 > 0f) {
-                let _e225 = airlight_is_finite(dv_end_1);
-                local_41 = _e225;
+        let _e240 = local_42;
+        if _e240 {
+            let _e241 = airlight_bounded(a_e_1);
+            let _e245 = airlight_hypot_one(a_e_1);
+            let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
+            if (_e241 > 0f) {
+                let _e255 = airlight_is_finite(dv_end_1);
+                local_43 = _e255;
             } else {
-                local_41 = false;
+                local_43 = false;
             }
-            let _e227 = local_41;
-            if _e227 {
-                y_lo = _e211;
+            let _e257 = local_43;
+            if _e257 {
+                y_lo = _e241;
                 dv_3 = dv_end_1;
-                let _e228 = dv_3;
-                let _e229 = y_lo;
-                dy = ((_e228 * _e229) * _e194);
+                let _e258 = dv_3;
+                let _e259 = y_lo;
+                dy = ((_e258 * _e259) * _e224);
                 infinite_2 = false;
             }
         }
-        let _e234 = dv_3;
-        let _e235 = infinite_2;
-        let _e236 = airlight_optical(big_h_4, _e234, _e235);
-        let _e237 = y_lo;
-        let _e238 = dy;
-        let _e239 = dv_3;
-        let _e240 = infinite_2;
-        let half_12 = AirlightHalf(true, _e236, _e237, _e194, _e238, _e239, _e240);
-        let _e243 = airlight_half(s_11, g_15, 1f, half_12, isotropic_1, (&f_max_6));
-        let _e244 = total_2;
-        let _e252 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_4 * _e193)), _e243);
-        total_2 = (_e244 + _e252);
+        let _e264 = dv_3;
+        let _e265 = infinite_2;
+        let _e266 = airlight_optical(big_h_5, _e264, _e265);
+        let _e267 = y_lo;
+        let _e268 = dy;
+        let _e269 = dv_3;
+        let _e270 = infinite_2;
+        half_11 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        if cut {
+            let _e276 = half_11.big_h;
+            local_44 = (_e276 > 0f);
+        } else {
+            local_44 = false;
+        }
+        let _e280 = local_44;
+        if _e280 {
+            let _e282 = half_11.big_h;
+            let _e285 = airlight_cut_length(_e282, (1f / _e224));
+            let _e286 = infinite_2;
+            if !(_e286) {
+                let _e290 = dv_3;
+                local_45 = (_e285 < _e290);
+            } else {
+                local_45 = true;
+            }
+            let _e293 = local_45;
+            if _e293 {
+                let cut_y_lo = (_e224 / (1f + (_e224 * _e285)));
+                if (cut_y_lo > 0f) {
+                    let _e302 = airlight_is_finite(_e285);
+                    local_46 = _e302;
+                } else {
+                    local_46 = false;
+                }
+                let _e304 = local_46;
+                if _e304 {
+                    let _e307 = half_11.big_h;
+                    half_11 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                }
+            }
+        }
+        let _e313 = half_11;
+        let _e314 = airlight_half(s_11, g_15, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e315 = total_2;
+        let _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        total_2 = (_e315 + _e323);
     }
-    let _e254 = total_2;
-    return AirlightResult(max(_e254, 0f), AIRLIGHT_STATUS_OK);
+    let _e325 = total_2;
+    return AirlightResult(max(_e325, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_42: bool;
-    var local_43: bool;
+    var local_47: bool;
+    var local_48: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_42 = _e6;
+        local_47 = _e6;
     } else {
-        local_42 = false;
+        local_47 = false;
     }
-    let _e8 = local_42;
+    let _e8 = local_47;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_43 = _e12;
+        local_48 = _e12;
     } else {
-        local_43 = false;
+        local_48 = false;
     }
-    let _e14 = local_43;
+    let _e14 = local_48;
     return _e14;
 }
 
@@ -2521,16 +2596,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_44: bool;
+    var local_49: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_44 = _e6;
+        local_49 = _e6;
     } else {
-        local_44 = false;
+        local_49 = false;
     }
-    let _e8 = local_44;
+    let _e8 = local_49;
     return _e8;
 }
 
@@ -2541,22 +2616,17 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_12: AirlightScene) -> bool {
-    var local_45: bool;
-    var local_46: bool;
-    var local_47: bool;
-    var local_48: bool;
-    var local_49: bool;
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
     var local_54: bool;
-    var ok: bool;
     var local_55: bool;
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
     var local_59: bool;
+    var ok: bool;
     var local_60: bool;
     var local_61: bool;
     var local_62: bool;
@@ -2569,163 +2639,168 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
     var local_69: bool;
     var local_70: bool;
     var local_71: bool;
+    var local_72: bool;
+    var local_73: bool;
+    var local_74: bool;
+    var local_75: bool;
+    var local_76: bool;
 
     let _e2 = airlight_vec_finite(s_12.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_12.dir);
-        local_45 = _e6;
-    } else {
-        local_45 = false;
-    }
-    let _e8 = local_45;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_12.dir);
-        local_46 = _e12;
-    } else {
-        local_46 = false;
-    }
-    let _e14 = local_46;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_12.t_min);
-        local_47 = _e18;
-    } else {
-        local_47 = false;
-    }
-    let _e20 = local_47;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_12.light_position);
-        local_48 = _e24;
-    } else {
-        local_48 = false;
-    }
-    let _e26 = local_48;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_12.intensity);
-        local_49 = _e30;
-    } else {
-        local_49 = false;
-    }
-    let _e32 = local_49;
-    if _e32 {
-        local_50 = (s_12.intensity >= 0f);
+        local_50 = _e6;
     } else {
         local_50 = false;
     }
-    let _e39 = local_50;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_12.sigma_s);
-        local_51 = _e43;
+    let _e8 = local_50;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_12.dir);
+        local_51 = _e12;
     } else {
         local_51 = false;
     }
-    let _e45 = local_51;
-    if _e45 {
-        local_52 = (s_12.sigma_s >= 0f);
+    let _e14 = local_51;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_12.t_min);
+        local_52 = _e18;
     } else {
         local_52 = false;
     }
-    let _e52 = local_52;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_12.sigma_t);
-        local_53 = _e56;
+    let _e20 = local_52;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_12.light_position);
+        local_53 = _e24;
     } else {
         local_53 = false;
     }
-    let _e58 = local_53;
-    if _e58 {
-        local_54 = (s_12.sigma_t >= 0f);
+    let _e26 = local_53;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_12.intensity);
+        local_54 = _e30;
     } else {
         local_54 = false;
     }
-    let _e65 = local_54;
+    let _e32 = local_54;
+    if _e32 {
+        local_55 = (s_12.intensity >= 0f);
+    } else {
+        local_55 = false;
+    }
+    let _e39 = local_55;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_12.sigma_s);
+        local_56 = _e43;
+    } else {
+        local_56 = false;
+    }
+    let _e45 = local_56;
+    if _e45 {
+        local_57 = (s_12.sigma_s >= 0f);
+    } else {
+        local_57 = false;
+    }
+    let _e52 = local_57;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_12.sigma_t);
+        local_58 = _e56;
+    } else {
+        local_58 = false;
+    }
+    let _e58 = local_58;
+    if _e58 {
+        local_59 = (s_12.sigma_t >= 0f);
+    } else {
+        local_59 = false;
+    }
+    let _e65 = local_59;
     ok = _e65;
     if ((s_12.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_12.t_max);
-            local_55 = _e76;
+            local_60 = _e76;
         } else {
-            local_55 = false;
+            local_60 = false;
         }
-        let _e78 = local_55;
+        let _e78 = local_60;
         if _e78 {
-            local_56 = (s_12.t_min <= s_12.t_max);
+            local_61 = (s_12.t_min <= s_12.t_max);
         } else {
-            local_56 = false;
+            local_61 = false;
         }
-        let _e85 = local_56;
+        let _e85 = local_61;
         ok = _e85;
     }
     if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_12.light_axis);
-            local_57 = _e93;
+            local_62 = _e93;
         } else {
-            local_57 = false;
+            local_62 = false;
         }
-        let _e95 = local_57;
+        let _e95 = local_62;
         if _e95 {
             let _e99 = airlight_normalisable(s_12.light_axis);
-            local_58 = _e99;
+            local_63 = _e99;
         } else {
-            local_58 = false;
+            local_63 = false;
         }
-        let _e101 = local_58;
+        let _e101 = local_63;
         if _e101 {
-            local_59 = (s_12.light_param_a >= 0f);
+            local_64 = (s_12.light_param_a >= 0f);
         } else {
-            local_59 = false;
+            local_64 = false;
         }
-        let _e108 = local_59;
+        let _e108 = local_64;
         if _e108 {
-            local_60 = (s_12.light_param_a <= 1024f);
+            local_65 = (s_12.light_param_a <= 1024f);
         } else {
-            local_60 = false;
+            local_65 = false;
         }
-        let _e115 = local_60;
+        let _e115 = local_65;
         if _e115 {
-            local_61 = (fract((s_12.light_param_a * 0.5f)) == 0f);
+            local_66 = (fract((s_12.light_param_a * 0.5f)) == 0f);
         } else {
-            local_61 = false;
+            local_66 = false;
         }
-        let _e125 = local_61;
+        let _e125 = local_66;
         ok = _e125;
     } else {
         if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e129 = ok;
             if _e129 {
                 let _e133 = airlight_vec_finite(s_12.light_axis);
-                local_62 = _e133;
+                local_67 = _e133;
             } else {
-                local_62 = false;
+                local_67 = false;
             }
-            let _e135 = local_62;
+            let _e135 = local_67;
             if _e135 {
                 let _e139 = airlight_normalisable(s_12.light_axis);
-                local_63 = _e139;
+                local_68 = _e139;
             } else {
-                local_63 = false;
+                local_68 = false;
             }
-            let _e141 = local_63;
+            let _e141 = local_68;
             if _e141 {
-                local_64 = (s_12.light_param_b < s_12.light_param_a);
+                local_69 = (s_12.light_param_b < s_12.light_param_a);
             } else {
-                local_64 = false;
+                local_69 = false;
             }
-            let _e148 = local_64;
+            let _e148 = local_69;
             if _e148 {
-                local_65 = (s_12.light_param_b >= -1f);
+                local_70 = (s_12.light_param_b >= -1f);
             } else {
-                local_65 = false;
+                local_70 = false;
             }
-            let _e155 = local_65;
+            let _e155 = local_70;
             if _e155 {
-                local_66 = (s_12.light_param_a <= 1f);
+                local_71 = (s_12.light_param_a <= 1f);
             } else {
-                local_66 = false;
+                local_71 = false;
             }
-            let _e162 = local_66;
+            let _e162 = local_71;
             ok = _e162;
         } else {
             if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -2740,39 +2815,39 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e172 = ok;
             if _e172 {
-                local_67 = g_ok;
+                local_72 = g_ok;
             } else {
-                local_67 = false;
+                local_72 = false;
             }
-            let _e176 = local_67;
+            let _e176 = local_72;
             ok = _e176;
         }
         case 5u: {
             let _e177 = ok;
             if _e177 {
-                local_68 = g_ok;
+                local_73 = g_ok;
             } else {
-                local_68 = false;
+                local_73 = false;
             }
-            let _e181 = local_68;
+            let _e181 = local_73;
             if _e181 {
-                local_69 = (abs(s_12.phase_param_b) < 1f);
+                local_74 = (abs(s_12.phase_param_b) < 1f);
             } else {
-                local_69 = false;
+                local_74 = false;
             }
-            let _e189 = local_69;
+            let _e189 = local_74;
             if _e189 {
-                local_70 = (s_12.phase_param_c >= 0f);
+                local_75 = (s_12.phase_param_c >= 0f);
             } else {
-                local_70 = false;
+                local_75 = false;
             }
-            let _e196 = local_70;
+            let _e196 = local_75;
             if _e196 {
-                local_71 = (s_12.phase_param_c <= 1f);
+                local_76 = (s_12.phase_param_c <= 1f);
             } else {
-                local_71 = false;
+                local_76 = false;
             }
-            let _e203 = local_71;
+            let _e203 = local_76;
             ok = _e203;
         }
         default: {
@@ -2814,9 +2889,9 @@ fn airlight_two_sum(a_11: f32, b_8: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_11 + b_8), key_1);
     let _e6 = airlight_opaque((_e4 - a_11), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_1 = ((a_11 - _e8) + (b_8 - _e6));
-    let _e12 = airlight_is_finite(e_1);
-    return vec2<f32>(_e4, select(0f, e_1, _e12));
+    let e_2 = ((a_11 - _e8) + (b_8 - _e6));
+    let _e12 = airlight_is_finite(e_2);
+    return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
 fn airlight_split_high(x_10: f32) -> f32 {
@@ -2829,9 +2904,9 @@ fn airlight_two_product(a_12: f32, b_9: f32, key_2: u32) -> vec2<f32> {
     let al = (a_12 - _e5);
     let _e7 = airlight_split_high(b_9);
     let bl = (b_9 - _e7);
-    let e_2 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_2);
-    return vec2<f32>(_e4, select(0f, e_2, _e17));
+    let e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_3);
+    return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
 fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
@@ -2843,29 +2918,29 @@ fn airlight_diff_of_products(a_13: f32, b_10: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_72: bool;
-    var local_73: bool;
+    var local_77: bool;
+    var local_78: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_73 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_73 = false;
+            local_78 = false;
         }
-        let _e21 = local_73;
-        local_72 = _e21;
+        let _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_72 = true;
+        local_77 = true;
     }
-    let _e23 = local_72;
+    let _e23 = local_77;
     return _e23;
 }
 
 fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_74: bool;
+    var local_79: bool;
     var out_2: AirlightCanonical;
-    var local_75: bool;
+    var local_80: bool;
     var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_14.flags > 1u));
@@ -2878,24 +2953,24 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_74 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_74 = true;
+        local_79 = true;
     }
-    let _e41 = local_74;
+    let _e41 = local_79;
     if _e41 {
         return plain;
     }
     let _e46 = airlight_diff_of_products(hi_2.y, dir_2.z, hi_2.z, dir_2.y, key_4);
     let _e59 = airlight_diff_of_products(hi_2.z, dir_2.x, hi_2.x, dir_2.z, key_4);
     let _e72 = airlight_diff_of_products(hi_2.x, dir_2.y, hi_2.y, dir_2.x, key_4);
-    let w_3 = vec3<f32>((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
-    let _e82 = airlight_vec_finite(w_3);
+    let w_4 = vec3<f32>((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
+    let _e82 = airlight_vec_finite(w_4);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_3);
+    let _e85 = airlight_safe_length(w_4);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
@@ -2906,11 +2981,11 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_75 = (h_4 > 0f);
+        local_80 = (h_4 > 0f);
     } else {
-        local_75 = false;
+        local_80 = false;
     }
-    let _e101 = local_75;
+    let _e101 = local_80;
     if !(_e101) {
         return plain;
     }
@@ -2919,7 +2994,7 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         a_14 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
-    let _e114 = airlight_normalize(w_3);
+    let _e114 = airlight_normalize(w_4);
     let n_5 = -(cross(_e113, _e114));
     out_2.h = h_4;
     let _e119 = a_14;

@@ -1199,6 +1199,16 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
     return airlight_weighted(s.sigma_s, s.intensity, h, x, j);
 }
 
+/// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(ε·τ)) over H > 0
+/// (combined.rs::cut_length, where the bound is derived).
+fn airlight_cut_length(big_h: f32, v_s: f32) -> f32 {
+    let inv_h = 1.0 / big_h;
+    let w = v_s + inv_h;
+    let r = (1.0 + w * w) / (1.0 + v_s * v_s);
+    let e = 1.0 + log(8.0 * r / (AIRLIGHT_FLT_EPS * AIRLIGHT_PANEL_FLOOR));
+    return e * inv_h;
+}
+
 /// The combined formulation on the canonical problem (combined.rs::in_scatter_canonical).
 /// Returns +∞ as FLT_MAX with status INFINITE.
 fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
@@ -1227,6 +1237,9 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
     }
     var total = 0.0;
     var f_max = 0.0;
+    // the exponent's boundary layer is cut where the rest is below rounding (isotropic: exact)
+    let cut = !isotropic;
+    var behind_cut = false;
     if (t0 < x_h) {
         let a_s = (x_h - t0) / h;
         var t_end = x_h;
@@ -1237,11 +1250,19 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         let y_lo = airlight_bounded(a_s);
         let y_hi = airlight_bounded(a_e);
         let dy = (t_end - t0) / h * (1.0 + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
-        let half = AirlightHalf(false, airlight_optical(big_h, dy, false), y_lo, y_hi, dy, dy, false);
+        var half = AirlightHalf(false, airlight_optical(big_h, dy, false), y_lo, y_hi, dy, dy, false);
+        if (cut && half.big_h > 0.0) {
+            let cut_dv = airlight_cut_length(half.big_h, y_lo);
+            if (cut_dv < dy) {
+                // the rest of this half and all of the second lie beyond the cut
+                half = AirlightHalf(false, half.big_h, y_lo, y_lo + cut_dv, cut_dv, cut_dv, false);
+                behind_cut = true;
+            }
+        }
         let j = airlight_half(s, g, -1.0, half, isotropic, &f_max);
         total += airlight_weighted(s.sigma_s, s.intensity, h, big_h * r_s, j);
     }
-    if (g.t_hi_infinite || t1 > x_h) {
+    if ((g.t_hi_infinite || t1 > x_h) && !behind_cut) {
         let t_start = max(t0, x_h);
         let a_s = (t_start - x_h) / h;
         let r_s = airlight_hypot_one(a_s);
@@ -1262,7 +1283,17 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
                 infinite = false;
             }
         }
-        let half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
+        var half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
+        if (cut && half.big_h > 0.0) {
+            let cut_dv = airlight_cut_length(half.big_h, 1.0 / y_hi);
+            if (infinite || cut_dv < dv) {
+                // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
+                let cut_y_lo = y_hi / (1.0 + y_hi * cut_dv);
+                if (cut_y_lo > 0.0 && airlight_is_finite(cut_dv)) {
+                    half = AirlightHalf(true, half.big_h, cut_y_lo, y_hi, cut_dv * cut_y_lo * y_hi, cut_dv, false);
+                }
+            }
+        }
         let j = airlight_half(s, g, 1.0, half, isotropic, &f_max);
         total += airlight_weighted(s.sigma_s, s.intensity, h, s.sigma_t * (t_start - t0) + big_h * r_s, j);
     }
