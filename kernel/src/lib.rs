@@ -51,6 +51,7 @@
 pub mod combined;
 pub mod error;
 pub mod expansion;
+pub mod extended;
 pub mod geometry;
 pub mod integrals;
 pub mod light;
@@ -67,6 +68,7 @@ pub mod special;
 pub use glam;
 pub use error::{ErrorKind, InputError};
 pub use expansion::Expansion;
+pub use extended::{SegmentLight, SegmentScene};
 pub use light::LightDistribution;
 pub use phase::PhaseFunction;
 pub use precision::{f32, f64};

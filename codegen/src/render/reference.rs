@@ -2,49 +2,11 @@
 //! (docs/DESIGN.md §1), with none of the kernel's closed forms.
 
 use super::world::{Hit, Light, SceneDesc};
+use airlight::extended::gauss_kronrod_15;
 use airlight::glam::DVec3;
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
 use airlight::{LightDistribution, Medium, PhaseFunction, PointLight};
-
-// Gauss–Kronrod 7/15 nodes and weights (QUADPACK qk15): abscissae in [0, 1) on one half.
-const XGK: [f64; 8] = [
-    0.991455371120812639206854697526329,
-    0.949107912342758524526189684047851,
-    0.864864423359769072789712788640926,
-    0.741531185599394439863864773280788,
-    0.586087235467691130294144845693013,
-    0.405845151377397166906606412076961,
-    0.207784955007898467600689403773245,
-    0.0,
-];
-const WGK: [f64; 8] = [
-    0.022935322010529224963732008058970,
-    0.063092092629978553290700663189204,
-    0.104790010322250183839876322541518,
-    0.140653259715525918745189590510238,
-    0.169004726639267902826583426598550,
-    0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649,
-    0.209482141084727828012999174891714,
-];
-/// Gauss 7-point weights at `XGK[1], XGK[3], XGK[5], XGK[7]`.
-const WG: [f64; 4] = [0.129484966168869693270611432679082, 0.279705391489276667901467771423780, 0.381830050505118944950369775488975, 0.417959183673469387755102040816327];
-
-/// `(Kronrod 15, Gauss 7)` estimates of `∫_a^b f`.
-fn gk15(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
-    let (c, hw) = (0.5 * (a + b), 0.5 * (b - a));
-    let fc = f(c);
-    let (mut k, mut g) = (WGK[7] * fc, WG[3] * fc);
-    for i in 0..7 {
-        let s = f(c - hw * XGK[i]) + f(c + hw * XGK[i]);
-        k += WGK[i] * s;
-        if i % 2 == 1 {
-            g += WG[i / 2] * s;
-        }
-    }
-    (k * hw, g * hw)
-}
 
 /// Globally adaptive Gauss–Kronrod over `edges` (QUADPACK's QAG strategy): keeps bisecting
 /// the panel with the largest error estimate `|K15 − G7|` until the sum of the estimates is
@@ -74,7 +36,7 @@ fn adapt(f: &impl Fn(f64) -> f64, edges: &[f64], rel_tol: f64, max_panels: usize
         }
     }
     let panel = |a: f64, b: f64| {
-        let (k, g) = gk15(f, a, b);
+        let (k, g) = gauss_kronrod_15(&mut |x| f(x), a, b);
         Panel { a, b, k, err: (k - g).abs() }
     };
     let mut heap: std::collections::BinaryHeap<Panel> = edges.windows(2).map(|e| panel(e[0], e[1])).collect();
