@@ -1,6 +1,6 @@
 //! `airlight eval`: JSON-lines scene records in, one JSON line per record out, in order.
 
-use crate::scene_json::parse_line_with_id;
+use crate::scene_json::{parse_line_with_id, AnyRecord};
 use airlight::record::SceneRecord;
 use airlight::{Expansion, Real};
 use std::io::{BufRead, Write};
@@ -77,7 +77,11 @@ pub fn format_error(line_no: usize, message: &str) -> String {
 fn eval_line<T: Real>(line: &str, line_no: usize, opts: &EvalOptions) -> String {
     let (id, record) = parse_line_with_id::<T>(line);
     let answer = match record {
-        Ok(rec) => format_value(in_scatter(&rec, opts.terms, opts.expansion)),
+        Ok(AnyRecord::Point(rec)) => format_value(in_scatter(&rec, opts.terms, opts.expansion)),
+        Ok(AnyRecord::Segment(_)) if opts.terms.is_some() => {
+            format_error(line_no, "light.shape: a segment light has no fixed-term method (--terms is for point lights)")
+        }
+        Ok(AnyRecord::Segment(scene)) => format_value(scene.in_scatter()),
         Err(e) => format_error(line_no, &e.to_string()),
     };
     with_id(id.as_ref(), answer)
@@ -167,9 +171,12 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
         match text.map(parse_line_with_id::<f32>) {
-            Ok((id, Ok(r))) => {
+            Ok((id, Ok(AnyRecord::Point(r)))) => {
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
                 lines.push((id, Ok(())));
+            }
+            Ok((id, Ok(AnyRecord::Segment(_)))) => {
+                lines.push((id, Err(format_error(n, "light.shape: segment lights are evaluated on the CPU backend (the shader library has point lights)"))))
             }
             Ok((id, Err(e))) => lines.push((id, Err(format_error(n, &e.to_string())))),
             Err(e) => lines.push((None, Err(e))),

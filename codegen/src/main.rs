@@ -59,7 +59,9 @@ Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\
                    | \"two_lobe_henyey_greenstein\" (g1, g2, w)}}
 t_max null or absent means +infinity, t_min absent 0, distribution absent isotropic, phase
 absent isotropic. Any other key is an error (with a suggestion when it is close to a known one).
-`dir` need not be unit length (it is normalised); t_min and t_max are world distances.";
+`dir` need not be unit length (it is normalised); t_min and t_max are world distances.
+A segment light (CPU backend, default path): \"light\": {\"shape\": \"segment\", \"a\": [x,y,z],
+\"b\": [x,y,z], \"intensity\": I, \"distribution\": {...}}, every point emitting I per unit length.";
 
 const RENDER_ABOUT: &str = "\
 Render the pictures to PNG: a lighthouse with a two-lobed beam in thick brume, a foggy road with

@@ -20,7 +20,7 @@
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::record::SceneRecord;
-use airlight::{Medium, PointLight, Ray, Real};
+use airlight::{Medium, PointLight, Ray, Real, SegmentLight, SegmentScene};
 use serde::de::IgnoredAny;
 use serde::{de, Deserialize, Deserializer};
 use serde_json::Value;
@@ -117,10 +117,20 @@ pub struct MediumJson {
     pub sigma_t: f64,
 }
 
-/// `light`: a point light.
+/// `light`, by `shape`: a point light (`shape` absent or `"point"`) or a segment light
+/// (`"segment"`, docs/DESIGN.md §10).
+#[derive(Debug)]
+pub enum LightJson {
+    /// A point light.
+    Point(PointLightJson),
+    /// A segment light: every point of `a → b` emits `intensity` per unit length.
+    Segment(SegmentLightJson),
+}
+
+/// The fields of a point light.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct LightJson {
+pub struct PointLightJson {
     /// Position.
     pub position: [f64; 3],
     /// Intensity.
@@ -128,6 +138,32 @@ pub struct LightJson {
     /// Emission distribution; absent or `null`: isotropic.
     #[serde(default)]
     pub distribution: Option<DistributionJson>,
+}
+
+/// The fields of a segment light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SegmentLightJson {
+    /// One end.
+    pub a: [f64; 3],
+    /// The other end.
+    pub b: [f64; 3],
+    /// Intensity per unit length.
+    pub intensity: f64,
+    /// Emission distribution of every point; absent or `null`: isotropic.
+    #[serde(default)]
+    pub distribution: Option<DistributionJson>,
+}
+
+impl<'de> Deserialize<'de> for LightJson {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (shape, object) = tag_and_fields(d, "shape", Some("point"))?;
+        Ok(match shape.as_str() {
+            "point" => Self::Point(fields(object)?),
+            "segment" => Self::Segment(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&shape, &["point", "segment"])),
+        })
+    }
 }
 
 /// `light.distribution`, by `kind`.
@@ -218,14 +254,21 @@ pub struct TwoLobeJson {
 /// object and lose the path inside it).
 const INNER_PATH: char = '\u{1f}';
 
+/// An object with a `tag` (`"kind"`, `"shape"`): its value (`default` where absent, if any)
+/// and the object without it.
+fn tag_and_fields<'de, D: Deserializer<'de>>(d: D, tag: &'static str, default: Option<&str>) -> Result<(String, Value), D::Error> {
+    let mut object = serde_json::Map::deserialize(d)?;
+    match (object.remove(tag), default) {
+        (Some(Value::String(value)), _) => Ok((value, Value::Object(object))),
+        (Some(_), _) => Err(de::Error::custom(format_args!("{INNER_PATH}{tag}{INNER_PATH}expected a string"))),
+        (None, Some(value)) => Ok((value.to_string(), Value::Object(object))),
+        (None, None) => Err(de::Error::missing_field(tag)),
+    }
+}
+
 /// An object with a `"kind"`: the kind and the object without it.
 fn kind_and_fields<'de, D: Deserializer<'de>>(d: D) -> Result<(String, Value), D::Error> {
-    let mut object = serde_json::Map::deserialize(d)?;
-    match object.remove("kind") {
-        Some(Value::String(kind)) => Ok((kind, Value::Object(object))),
-        Some(_) => Err(de::Error::custom(format_args!("{INNER_PATH}kind{INNER_PATH}expected a string"))),
-        None => Err(de::Error::missing_field("kind")),
-    }
+    tag_and_fields(d, "kind", None)
 }
 
 /// A kind's fields, with the path of an error inside them kept.
@@ -281,31 +324,45 @@ fn vec3<T: Real>(field: &str, a: [f64; 3]) -> Result<T::Vec3, FieldError> {
     Ok(T::vec3_from_array(out))
 }
 
+/// A record's scene in precision `T`, validated: a point light's (the kernel's flat record, as
+/// the GPU takes it) or a segment light's.
+#[derive(Clone, Debug)]
+pub enum AnyRecord<T: Real> {
+    /// A point light.
+    Point(SceneRecord<T>),
+    /// A segment light.
+    Segment(SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>),
+}
+
+fn distribution<T: Real>(json: &Option<DistributionJson>) -> Result<AnyDistribution<T>, FieldError> {
+    Ok(match json {
+        None | Some(DistributionJson::Isotropic) => AnyDistribution::Omni,
+        Some(DistributionJson::TwoLobed(TwoLobedJson { axis, power: p })) => {
+            let p = *p;
+            if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
+                return Err(FieldError { field: "light.distribution.power".into(), message: "must be an even non-negative integer".into() });
+            }
+            AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>("light.distribution.axis", *axis)?, power: p as u32 })
+        }
+        Some(DistributionJson::Spot(SpotJson { axis, cos_inner, cos_outer })) => AnyDistribution::SpotCone(SpotCone {
+            axis: vec3::<T>("light.distribution.axis", *axis)?,
+            cos_inner: number("light.distribution.cos_inner", *cos_inner)?,
+            cos_outer: number("light.distribution.cos_outer", *cos_outer)?,
+        }),
+    })
+}
+
+/// The kernel's error as a [`FieldError`].
+fn field_error(e: airlight::InputError) -> FieldError {
+    FieldError { field: e.field.to_string(), message: e.to_string()[e.field.len() + 2..].to_string() }
+}
+
 impl SceneJson {
-    /// The kernel's record in precision `T`, validated as [`airlight::Scene::new`] does.
-    pub fn to_record<T: Real>(&self) -> Result<SceneRecord<T>, FieldError> {
+    /// The record's scene in precision `T`, validated as the kernel's constructors do.
+    pub fn to_any<T: Real>(&self) -> Result<AnyRecord<T>, FieldError> {
         let RayJson { origin, dir, t_min, t_max } = self.ray;
         let ray = Ray { origin: vec3::<T>("ray.origin", origin)?, dir: vec3::<T>("ray.dir", dir)?, t_min: number("ray.t_min", t_min)?, t_max: number("ray.t_max", t_max)? };
         let medium = Medium { sigma_s: number("medium.sigma_s", self.medium.sigma_s)?, sigma_t: number("medium.sigma_t", self.medium.sigma_t)? };
-        let distribution = match self.light.distribution {
-            None | Some(DistributionJson::Isotropic) => AnyDistribution::Omni,
-            Some(DistributionJson::TwoLobed(TwoLobedJson { axis, power: p })) => {
-                if !(p >= 0.0 && p.fract() == 0.0 && p <= 1024.0 && (p as u32) % 2 == 0) {
-                    return Err(FieldError { field: "light.distribution.power".into(), message: "must be an even non-negative integer".into() });
-                }
-                AnyDistribution::TwoLobed(TwoLobed { axis: vec3::<T>("light.distribution.axis", axis)?, power: p as u32 })
-            }
-            Some(DistributionJson::Spot(SpotJson { axis, cos_inner, cos_outer })) => AnyDistribution::SpotCone(SpotCone {
-                axis: vec3::<T>("light.distribution.axis", axis)?,
-                cos_inner: number("light.distribution.cos_inner", cos_inner)?,
-                cos_outer: number("light.distribution.cos_outer", cos_outer)?,
-            }),
-        };
-        let light = PointLight {
-            position: vec3::<T>("light.position", self.light.position)?,
-            intensity: number("light.intensity", self.light.intensity)?,
-            distribution,
-        };
         let phase = match self.phase {
             None | Some(PhaseJson::Isotropic) => AnyPhase::Isotropic,
             Some(PhaseJson::Rayleigh) => AnyPhase::Rayleigh,
@@ -318,9 +375,26 @@ impl SceneJson {
                 w: number("phase.w", w)?,
             }),
         };
-        airlight::scene::validate(&ray, &light, &medium, &phase)
-            .map_err(|e| FieldError { field: e.field.to_string(), message: e.to_string()[e.field.len() + 2..].to_string() })?;
-        Ok(SceneRecord { ray, light, medium, phase })
+        match &self.light {
+            LightJson::Point(l) => {
+                let light = PointLight { position: vec3::<T>("light.position", l.position)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? };
+                airlight::scene::validate(&ray, &light, &medium, &phase).map_err(field_error)?;
+                Ok(AnyRecord::Point(SceneRecord { ray, light, medium, phase }))
+            }
+            LightJson::Segment(l) => {
+                let light = SegmentLight { a: vec3::<T>("light.a", l.a)?, b: vec3::<T>("light.b", l.b)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? };
+                Ok(AnyRecord::Segment(SegmentScene::new(ray, light, medium, phase).map_err(field_error)?))
+            }
+        }
+    }
+
+    /// The kernel's point-light record in precision `T`, validated as [`airlight::Scene::new`]
+    /// does; a segment light is an error (see [`SceneJson::to_any`]).
+    pub fn to_record<T: Real>(&self) -> Result<SceneRecord<T>, FieldError> {
+        match self.to_any()? {
+            AnyRecord::Point(r) => Ok(r),
+            AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
+        }
     }
 }
 
@@ -350,31 +424,47 @@ fn with_suggestion(message: String) -> String {
     }
 }
 
-/// Parses one record (already decoded as JSON).
-pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> {
-    let scene: SceneJson = serde_path_to_error::deserialize(root).map_err(|e| {
+/// Decodes one record (already parsed as JSON) into its serde form.
+fn decode(root: &Value) -> Result<SceneJson, FieldError> {
+    serde_path_to_error::deserialize(root).map_err(|e| {
         let path = e.path().to_string();
         let message = e.into_inner().to_string();
         // an error inside a kind's fields carries its inner path (see `fields`)
         let (field, message) = match message.split(INNER_PATH).collect::<Vec<_>>()[..] {
             [_, inner, message] => (format!("{path}.{inner}"), message.to_string()),
+            _ if message.starts_with("unknown variant") && path == "light" => (format!("{path}.shape"), message),
             _ if message.starts_with("unknown variant") => (format!("{path}.kind"), message),
             _ if path == "." => ("(record)".to_string(), message),
             _ => (path, message),
         };
-        FieldError { field, message: with_suggestion(message) }
-    })?;
-    scene.to_record()
+        let message = with_suggestion(message);
+        let message = if field.ends_with(".shape") { message.replacen("unknown kind", "unknown shape", 1) } else { message };
+        FieldError { field, message }
+    })
 }
 
-/// Parses one JSON line.
+/// Parses one point-light record (already decoded as JSON).
+pub fn parse_value<T: Real>(root: &Value) -> Result<SceneRecord<T>, FieldError> {
+    decode(root)?.to_record()
+}
+
+/// Parses one record of any light shape (already decoded as JSON).
+pub fn parse_any_value<T: Real>(root: &Value) -> Result<AnyRecord<T>, FieldError> {
+    decode(root)?.to_any()
+}
+
+/// Parses one JSON line (a point light's record).
 pub fn parse_line<T: Real>(line: &str) -> Result<SceneRecord<T>, FieldError> {
-    parse_line_with_id(line).1
+    let (_, record) = parse_line_with_id::<T>(line);
+    match record? {
+        AnyRecord::Point(r) => Ok(r),
+        AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
+    }
 }
 
-/// Parses one JSON line, and returns with it the record's `"id"` annotation (any JSON value)
-/// when the line is a JSON object that has one, valid record or not.
-pub fn parse_line_with_id<T: Real>(line: &str) -> (Option<Value>, Result<SceneRecord<T>, FieldError>) {
+/// Parses one JSON line of any light shape, and returns with it the record's `"id"` annotation
+/// (any JSON value) when the line is a JSON object that has one, valid record or not.
+pub fn parse_line_with_id<T: Real>(line: &str) -> (Option<Value>, Result<AnyRecord<T>, FieldError>) {
     let v: Value = match serde_json::from_str(line) {
         Ok(v) => v,
         Err(e) => return (None, Err(FieldError { field: "(record)".into(), message: format!("invalid JSON: {e}") })),
@@ -382,5 +472,5 @@ pub fn parse_line_with_id<T: Real>(line: &str) -> (Option<Value>, Result<SceneRe
     if !v.is_object() {
         return (None, Err(FieldError { field: "(record)".into(), message: "expected a JSON object".into() }));
     }
-    (v.get("id").cloned(), parse_value(&v))
+    (v.get("id").cloned(), parse_any_value(&v))
 }

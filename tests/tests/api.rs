@@ -315,3 +315,28 @@ fn light_at_the_f32_range_end_without_extinction_is_finite() {
         assert!(((got as f64) - want).abs() <= 1e-5 * want, "{got} vs f64 {want}");
     }
 }
+
+/// A segment light's record (docs/DESIGN.md §6, §10) evaluates on the CPU; its errors name
+/// `light.a`/`light.b`/`light.shape`; the fixed-term method and the GPU backend are point
+/// lights only and say so per line.
+#[test]
+fn eval_segment_light_records() {
+    let seg = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0], "t_max": 30}, "medium": {"sigma_s": 0.05, "sigma_t": 0.1}, "light": {"shape": "segment", "a": [10, 1, -2], "b": [10, 1, 2], "intensity": 10}, "phase": {"kind": "henyey_greenstein", "g": 0.8}}"#;
+    let input = [
+        seg.to_string(),
+        seg.replace("\"shape\": \"segment\"", "\"shape\": \"segmnet\""),
+        seg.replace("\"a\": [10, 1, -2]", "\"position\": [10, 1, -2]"),
+        seg.replace("\"b\": [10, 1, 2]", "\"b\": [10, 1, 1e400]"),
+    ]
+    .join("\n");
+    let out = eval_lines(&input, Precision::F64);
+    assert_eq!(out.len(), 4, "{out:?}");
+    let x: f64 = serde_json::from_str::<serde_json::Value>(&out[0]).unwrap()["in_scatter"].as_f64().unwrap();
+    assert!(x > 0.0 && x.is_finite(), "{}", out[0]);
+    assert!(out[1].contains("light.shape") && out[1].contains("did you mean `segment`?"), "{}", out[1]);
+    assert!(out[2].contains("light.position") && out[2].contains("unknown field"), "{}", out[2]);
+    assert!(out[3].contains("line 4"), "{}", out[3]);
+    let mut fixed = Vec::new();
+    run(seg.as_bytes(), &mut fixed, &EvalOptions { terms: Some(4), ..EvalOptions::default() }).unwrap();
+    assert!(String::from_utf8(fixed).unwrap().contains("--terms is for point lights"));
+}
