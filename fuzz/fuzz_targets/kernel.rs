@@ -1,5 +1,6 @@
 //! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
-//! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments. Oracle: no panic; never NaN; never negative;
+//! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments, a segment
+//! light along the light's axis (f64). Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -9,7 +10,7 @@
 //! may overflow before the result would, which is documented rather than hidden.
 #![no_main]
 use airlight::glam::{DVec3, Vec3};
-use airlight::{in_scatter_unchecked, Expansion, Scene};
+use airlight::{in_scatter_unchecked, Expansion, Scene, SegmentLight, SegmentScene};
 use libfuzzer_sys::fuzz_target;
 
 #[macro_use]
@@ -76,4 +77,17 @@ fuzz_target!(|raw: Raw| {
         }
     }
     check(&raw32, in_scatter_unchecked::<f32, _, _, 4>(r, l, m, p, Expansion::Chebyshev) as f64, f32::MAX as f64, "f32/unchecked");
+    // a segment light from the light's position along its axis (length 10·w), on one input in
+    // 8 (it costs 15 point lights or more): never NaN, never negative (+∞ where the emitter
+    // meets the segment)
+    if raw.power % 8 != 0 {
+        return;
+    }
+    let (r, l, m, p) = scene_types!(f64, DVec3)(&raw);
+    let b = DVec3::from_array(raw.p) + DVec3::from_array(raw.axis) * (10.0 * raw.w);
+    let segment = SegmentLight { a: l.position, b, intensity: l.intensity, distribution: l.distribution };
+    if let Ok(s) = SegmentScene::new(r, segment, m, p) {
+        let x = s.in_scatter();
+        assert!(!x.is_nan() && x >= 0.0, "f64/segment: {x} for {raw:?}");
+    }
 });
