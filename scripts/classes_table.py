@@ -68,3 +68,13 @@ if all(special.values()):
     for p in ("f64", "f32"):
         e, x = special[f"e1_scaled_{p}"], special[f"exp_{p}"]
         print(f"| {p} | {e:.1f} | {x:.1f} | {e / x:.1f}× |")
+
+node_path = os.path.join(root, "node_count.jsonl")
+if os.path.exists(node_path):
+    print("\n### node count of the default path (every scene of every class, default tolerance)\n")
+    print("| precision | nodes per panel | largest error | ns/ray |")
+    print("|---|---|---|---|")
+    for line in open(node_path):
+        r = json.loads(line)
+        t = ns(f"node_count_{r['precision']}", str(r["node_count"]), r["scenes"])
+        print(f"| {r['precision']} | {r['node_count']} | {r['error']:.1e} | {fmt(t)} |")

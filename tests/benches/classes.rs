@@ -15,8 +15,9 @@
 //! * at each error level of the targets (`LEVELS`: 1e-8 and 1e-10 in f64, 1e-3 and 1e-4 in
 //!   f32), `airlight_<level>`: the kernel with the loosest tolerance (1e-2 … 1e-12) whose largest
 //!   error is at most the level (where none is, the default, flagged), and `peer_<level>`.
-//! Also `special`: complex `e^z E1(z)` over 256 points against one libm `exp` per point, in
-//! each precision.
+//! Also `node_count_<precision>`: every scene of every class at the default tolerance with 6 … 16
+//! Gauss–Legendre nodes per panel (the choice of `Real::PANEL_NODES`), and `special`: complex
+//! `e^z E1(z)` over 256 points against one libm `exp` per point, in each precision.
 //!
 //! `cargo bench -p airlight-tests --bench classes && python3 scripts/classes_table.py`
 
@@ -176,6 +177,21 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
     }
 }
 
+/// The default's node count: every class's scenes at the default tolerance with 6 … 16 nodes
+/// per panel, largest error over all classes (relative to `max(|exact|, τ·scale)`) and time.
+fn node_count<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
+    let classes = load::<T>();
+    let all: Vec<&S<T>> = classes.values().flat_map(|c| c.scenes.iter()).collect();
+    let mut g = crit.benchmark_group(format!("node_count_{label}"));
+    for nodes in [6usize, 8, 10, 12, 16] {
+        let at = |s: &S<T>| s.in_scatter_panels_with_nodes(nodes, default_control()).unwrap();
+        let err = classes.values().map(|c| largest_error(c, at)).fold(0.0, f64::max);
+        writeln!(report, "{{\"precision\":\"{label}\",\"node_count\":{nodes},\"scenes\":{},\"error\":{err:e}}}", all.len()).unwrap();
+        g.bench_function(format!("{nodes}"), |b| b.iter(|| all.iter().map(|s| at(black_box(s))).fold(T::zero(), |a, x| a + x)));
+    }
+    g.finish();
+}
+
 fn special(crit: &mut Criterion) {
     // 256 points over the domain the kernel uses: |z| from 1e-3 to 1e3, arguments in [−π/2, π/2]
     let mut z64 = Vec::new();
@@ -204,10 +220,14 @@ fn benches(crit: &mut Criterion) {
     let mut report = String::new();
     run::<f64>(crit, "f64", &mut report);
     run::<f32>(crit, "f32", &mut report);
+    let mut nodes = String::new();
+    node_count::<f64>(crit, "f64", &mut nodes);
+    node_count::<f32>(crit, "f32", &mut nodes);
     special(crit);
     let dir = airlight_tests::repo_root().join("target/criterion");
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("classes_accuracy.jsonl"), report).unwrap();
+    std::fs::write(dir.join("node_count.jsonl"), nodes).unwrap();
 }
 
 criterion_group! {

@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""Prints BENCHMARKS.md's segment-light table from `cargo bench -p airlight-tests --bench
+extended`: criterion's median time per iteration (target/criterion/extended_<precision>_<class>/
+<bench>/new/estimates.json; one iteration evaluates every record of the class once) divided by
+the record count, joined with the accuracy the bench measured first
+(target/criterion/extended_accuracy.jsonl: largest relative error against the mpmath
+references; panels: Gauss–Kronrod panels per segment, median / max)."""
+import json
+import os
+
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "target", "criterion")
+
+
+def ns(group, bench, n):
+    path = os.path.join(root, group, bench, "new", "estimates.json")
+    return json.load(open(path))["median"]["point_estimate"] / n
+
+
+print("| precision | class | records | default: largest error | panels | ns/segment | 1e-3: largest error | panels | ns/segment | point light, ns | default / point | 1e-3 / point |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+for line in open(os.path.join(root, "extended_accuracy.jsonl")):
+    r = json.loads(line)
+    g = f"extended_{r['precision']}_{r['class']}"
+    n = r["records"]
+    d, l, p = ns(g, "segment_default", n), ns(g, "segment_1e-3", n), ns(g, "point", n)
+    print(f"| {r['precision']} | {r['class']} | {n} | {r['default']:.1e} | {r['default_panels'][0]} / {r['default_panels'][1]} | {d:.0f} "
+          f"| {r['loose']:.1e} | {r['loose_panels'][0]} / {r['loose_panels'][1]} | {l:.0f} | {p:.0f} | {d / p:.1f}× | {l / p:.1f}× |")
