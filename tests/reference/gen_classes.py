@@ -32,7 +32,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import parse, unit, write_records  # noqa: E402  (the same record reading, D and P as there)
+from gen_reference import light_angle, parse, unit, write_records  # noqa: E402  (the same record reading, D and P as there)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DPS = 30
@@ -51,11 +51,7 @@ def reference(rec):
     mp.mp.dps = DPS
     o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h = parse(rec)
     assert h > 0
-    nh = [x / h for x in perp]
-    d_el = sum(d[i] * a[i] for i in range(3))
-    d_c = sum(nh[i] * a[i] for i in range(3))
-    th0 = mp.atan((t0 - xh) / h)
-    th1 = mp.pi / 2 if t1 == mp.inf else mp.atan((t1 - xh) / h)
+    d_el, d_c, th0, th1 = light_angle(d, t0, t1, a, xh, perp, h)
 
     def F(th):
         # (x − p)/r = sin(th) d + cos(th) n

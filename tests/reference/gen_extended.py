@@ -27,7 +27,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import f32, norm, parse, unit, write_records  # noqa: E402
+from gen_reference import f32, light_angle, norm, parse, unit, write_records  # noqa: E402
 
 DPS = 20
 
@@ -43,11 +43,7 @@ def point_light(o, d, t0, t1, ss, st, p, inten, dist, a, D, P):
         sgn = 1 if t0 > xh else -1
         f = lambda t: mp.exp(-st * (t - t0 + abs(t - xh))) / (t - xh) ** 2 * D(sgn * sum(d[i] * a[i] for i in range(3))) * P(-sgn)
         return ss * inten * mp.quad(f, [t0, t1])
-    nh = [x / h for x in perp]
-    d_el = sum(d[i] * a[i] for i in range(3))
-    d_c = sum(nh[i] * a[i] for i in range(3))
-    th0 = mp.atan((t0 - xh) / h)
-    th1 = mp.pi / 2 if t1 == mp.inf else mp.atan((t1 - xh) / h)
+    d_el, d_c, th0, th1 = light_angle(d, t0, t1, a, xh, perp, h)
 
     def f(th):
         if th >= mp.pi / 2:

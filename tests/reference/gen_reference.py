@@ -108,6 +108,17 @@ def parse(rec):
     return o, d, t0, t1, ss, st, p, inten, dist, a, D, P, xh, perp, h
 
 
+def light_angle(d, t0, t1, a, xh, perp, h):
+    """The constants of the integral in the angle θ seen from the light (t − x_h = h tan θ,
+    docs/DESIGN.md §9): c(θ) = sin θ·d_el + cos θ·d_c, and the ends θ0, θ1 (π/2 at t = ∞)."""
+    nh = [x / h for x in perp]
+    d_el = sum(d[i] * a[i] for i in range(3))
+    d_c = sum(nh[i] * a[i] for i in range(3))
+    th0 = mp.atan((t0 - xh) / h)
+    th1 = mp.pi / 2 if t1 == mp.inf else mp.atan((t1 - xh) / h)
+    return d_el, d_c, th0, th1
+
+
 def reference(rec):
     """L_m of docs/DESIGN.md §1 for one record, or None if the two quadratures disagree."""
     mp.mp.dps = DPS
