@@ -72,9 +72,9 @@ if all(special.values()):
 node_path = os.path.join(root, "node_count.jsonl")
 if os.path.exists(node_path):
     print("\n### node count of the default path (every scene of every class, default tolerance)\n")
-    print("| precision | nodes per panel | largest error | ns/ray |")
-    print("|---|---|---|---|")
+    print("| precision | nodes per panel | largest error | ns/ray | largest error at tolerance 1e-3 |")
+    print("|---|---|---|---|---|")
     for line in open(node_path):
         r = json.loads(line)
         t = ns(f"node_count_{r['precision']}", str(r["node_count"]), r["scenes"])
-        print(f"| {r['precision']} | {r['node_count']} | {r['error']:.1e} | {fmt(t)} |")
+        print(f"| {r['precision']} | {r['node_count']} | {r['error']:.1e} | {fmt(t)} | {r['error_at_1e-3']:.1e} |")

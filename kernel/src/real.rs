@@ -108,9 +108,10 @@ impl Real for f64 {
 impl Real for f32 {
     type Vec3 = glam::Vec3;
     // Target 1e-4 of max(|exact|, 1e-4·scale); the estimate is kept 10× below it (its own
-    // rounding noise is ~N·ε ≈ 1e-6). 8 nodes: over tests/reference/classes.jsonl, 8 is the
-    // fastest count at every tolerance from 1e-2 to 1e-5 (mean 1809 ns per ray at 1e-5 against
-    // 2107 with 12, largest error 9e-6 with either; BENCHMARKS.md, "node count").
+    // rounding noise is ~N·ε ≈ 1e-6). 8 nodes: at this tolerance 8, 10 and 12 nodes are within
+    // 10 % of each other over tests/reference/classes.jsonl, while at tolerance 1e-3 the
+    // estimate holds with 8 (largest error 5.8e-5) and not with 12 (3.1e-3); BENCHMARKS.md,
+    // "node count".
     const SPLITTER: f64 = 4097.0; // 2^12 + 1
     const EXACT_RANGE: f64 = 1_073_741_824.0; // 2^30
     const PANEL_NODES: usize = 8;
