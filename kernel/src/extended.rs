@@ -9,8 +9,8 @@
 //! `ρ(s)² = ρ*² + (s − s*)² sin²α` (`α` the angle between the lines): so the outer integral is
 //! taken in `w` with `s = s* + (ρ*/sin α) sinh w`, where `ds/ρ = dw/sin α` and the peak is
 //! smooth, split where the light's foot passes the ray's ends, by globally adaptive
-//! Gauss–Kronrod 7/15 (QUADPACK's QAG strategy) to a relative tolerance, with a bounded number
-//! of panels.
+//! Gauss–Kronrod 7/15 (3/7 at tolerances of 1e-4 and looser; QUADPACK's QAG strategy) to a
+//! relative tolerance, with a bounded number of panels.
 //!
 //! An emitter that meets the ray segment gives `+∞` (as a point light on it does); one that
 //! meets the ray's line outside the segment, or lies along it, is finite and integrated through
@@ -39,12 +39,28 @@ pub const GAUSS_KRONROD_15: [(f64, f64, f64); 8] = [
     (0.0, 0.209482141084727828012999174891714, 0.417959183673469387755102040816327),
 ];
 
+/// Gauss–Kronrod 3/7 on `[−1, 1]`, as [`GAUSS_KRONROD_15`]: the Kronrod extension of the
+/// 3-point Gauss rule (nodes `±√(3/5)`, `0`; weights `5/9`, `8/9`), to 33 digits (Piessens et al.
+/// 1983's construction; exact to degree 11, which `tests` checks against `2/(k+1)`).
+#[allow(clippy::excessive_precision)] // the published digits, rounded once by the compiler
+pub const GAUSS_KRONROD_7: [(f64, f64, f64); 4] = [
+    (0.960491268708020283423507092629080, 0.104656226026467265193823857192073, 0.0),
+    (0.774596669241483377035853079956480, 0.268488089868333440728569280666710, 0.555555555555555555555555555555556),
+    (0.434243749346802558002071502844628, 0.401397414775962222905051818618432, 0.0),
+    (0.0, 0.450916538658474142345110087045571, 0.888888888888888888888888888888889),
+];
+
 /// `(Kronrod 15, Gauss 7)` estimates of `∫_a^b f`.
 pub fn gauss_kronrod_15<T: Real>(f: &mut impl FnMut(T) -> T, a: T, b: T) -> (T, T) {
+    gauss_kronrod(&GAUSS_KRONROD_15, f, a, b)
+}
+
+/// `(Kronrod, Gauss)` estimates of `∫_a^b f` by a rule of [`GAUSS_KRONROD_15`]'s form.
+pub fn gauss_kronrod<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, a: T, b: T) -> (T, T) {
     let half = T::lit(0.5);
     let (c, hw) = ((a + b) * half, (b - a) * half);
     let (mut k, mut g) = (T::zero(), T::zero());
-    for &(x, wk, wg) in &GAUSS_KRONROD_15 {
+    for &(x, wk, wg) in rule {
         let s = if x == 0.0 { f(c) } else { f(c - hw * T::lit(x)) + f(c + hw * T::lit(x)) };
         k = k + T::lit(wk) * s;
         g = g + T::lit(wg) * s;
@@ -195,7 +211,11 @@ where
         }
         n += 1;
         edges[n] = w_hi;
-        adaptive(&mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
+        // 7 points per panel where 1e-4 of the value will do (on the classes of
+        // tests/reference/extended.jsonl at 1e-3 it is faster on 8 of 12, slower where the peak
+        // is sharp: BENCHMARKS.md, segment lights), 15 below
+        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
+        adaptive(rule, &mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
     }
 }
 
@@ -208,15 +228,15 @@ struct Listed<T> {
     error: T,
 }
 
-/// Globally adaptive Gauss–Kronrod 7/15 over the panels between `edges`: bisects the panel with
-/// the largest `|K15 − G7|` until their sum is at most `tolerance` of the sum of the values (the
+/// Globally adaptive Gauss–Kronrod (`rule`) over the panels between `edges`: bisects the panel
+/// with the largest `|K − G|` until their sum is at most `tolerance` of the sum of the values (the
 /// integrand is non-negative), or `max_panels` panels are held; the sum and the panels
 /// evaluated.
-fn adaptive<T: Real>(f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
+fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
     let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero() }; MAX_SEGMENT_PANELS];
     let max_panels = max_panels.clamp(edges.len() - 1, MAX_SEGMENT_PANELS);
     let evaluate = |f: &mut dyn FnMut(T) -> T, a: T, b: T| {
-        let (k, g) = gauss_kronrod_15(&mut |x| f(x), a, b);
+        let (k, g) = gauss_kronrod(rule, &mut |x| f(x), a, b);
         Listed { a, b, value: k, error: (k - g).abs() }
     };
     let mut count = 0;
@@ -272,6 +292,27 @@ mod tests {
             }
             if k == 24 {
                 assert!((kr - exact).abs() > 1e-9, "K15 is not exact at degree 24");
+            }
+        }
+    }
+
+    /// The 7-point Kronrod rule is exact to degree 11, its Gauss 3-point rule to degree 5
+    /// (`∫_{−1}^{1} x^k dx = 2/(k+1)`, even `k`).
+    #[test]
+    fn gauss_kronrod_7_degrees() {
+        for k in 0..=12i32 {
+            let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
+            let (kr, g) = gauss_kronrod(&GAUSS_KRONROD_7, &mut |x: f64| x.powi(k), -1.0, 1.0);
+            // exact up to the degree; not at the next even one (odd powers vanish by symmetry)
+            if k <= 11 || k % 2 == 1 {
+                assert!((kr - exact).abs() <= 1e-15, "K7, x^{k}: {kr} vs {exact}");
+            } else {
+                assert!((kr - exact).abs() > 1e-6, "K7 is not exact at degree {k}");
+            }
+            if k <= 5 || k % 2 == 1 {
+                assert!((g - exact).abs() <= 1e-15, "G3, x^{k}: {g} vs {exact}");
+            } else if k == 6 {
+                assert!((g - exact).abs() > 1e-3, "G3 is not exact at degree 6");
             }
         }
     }
