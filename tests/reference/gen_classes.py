@@ -32,7 +32,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import light_angle, parse, unit, write_records  # noqa: E402  (the same record reading, D and P as there)
+from gen_reference import angle_breakpoints, light_angle, parse, unit, write_records  # noqa: E402  (the same record reading, D and P as there)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DPS = 30
@@ -68,25 +68,8 @@ def reference(rec):
         t = xh + h * mp.tan(th)
         return mp.exp(-st * (t - t0) - st * h / mp.cos(th) + e0)
 
-    pts = {th0, th1}
-
-    def add(th):
-        if th0 < th < th1:
-            pts.add(th)
-
-    add(mp.mpf(0))
-    # c(th) = R cos(th − phi)
-    R = mp.sqrt(d_el * d_el + d_c * d_c)
-    phi = mp.atan2(d_el, d_c)
-    if dist["kind"] != "isotropic" and R > 0:
-        for k in (-1, 0, 1):
-            add(phi + k * mp.pi)
-        if dist["kind"] == "spot":
-            for kk in (mp.mpf(dist["cos_inner"]), mp.mpf(dist["cos_outer"])):
-                if abs(kk) < R:
-                    for sgn in (1, -1):
-                        for k in (-2, -1, 0, 1, 2):
-                            add(phi + sgn * mp.acos(kk / R) + 2 * k * mp.pi)
+    # the foot, c's peaks and a cone's edges
+    pts, add = angle_breakpoints(th0, th1, d_el, d_c, dist, (-1, 0, 1), (-2, -1, 0, 1, 2))
     for k in range(0, 60):
         add(mp.pi / 2 - mp.mpf(2) ** -k)
         add(-mp.pi / 2 + mp.mpf(2) ** -k)

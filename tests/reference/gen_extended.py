@@ -27,7 +27,7 @@ from multiprocessing import Pool
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_reference import f32, light_angle, norm, parse, unit, write_records  # noqa: E402
+from gen_reference import angle_breakpoints, f32, light_angle, norm, parse, unit, write_records  # noqa: E402
 
 DPS = 20
 
@@ -52,21 +52,8 @@ def point_light(o, d, t0, t1, ss, st, p, inten, dist, a, D, P):
         t = xh + h * mp.tan(th)
         return mp.exp(-st * (t - t0) - st * h / mp.cos(th)) * D(c) * P(-mp.sin(th))
 
-    pts = {th0, th1}
-
-    def add(th):
-        if th0 < th < th1:
-            pts.add(th)
-
-    add(mp.mpf(0))
-    R = mp.sqrt(d_el * d_el + d_c * d_c)
-    phi = mp.atan2(d_el, d_c)
-    if dist["kind"] == "spot" and R > 0:
-        for kk in (mp.mpf(dist["cos_inner"]), mp.mpf(dist["cos_outer"])):
-            if abs(kk) < R:
-                for sgn in (1, -1):
-                    for k in (-1, 0, 1):
-                        add(phi + sgn * mp.acos(kk / R) + 2 * k * mp.pi)
+    # the foot and a cone's edges
+    pts, add = angle_breakpoints(th0, th1, d_el, d_c, dist, (), (-1, 0, 1))
     big_h = st * h
     if big_h > 0:
         y0 = mp.tan(th0 / 2 + mp.pi / 4)

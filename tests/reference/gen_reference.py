@@ -119,6 +119,32 @@ def light_angle(d, t0, t1, a, xh, perp, h):
     return d_el, d_c, th0, th1
 
 
+def angle_breakpoints(th0, th1, d_el, d_c, dist, axis_turns, edge_turns):
+    """Breakpoints in θ for the light-angle integral: θ0, θ1, the foot θ = 0, and, for a light
+    that is not isotropic, where c(θ) = R cos(θ − φ) peaks (φ + kπ, k in axis_turns) and where
+    it crosses a spot cone's edges (k in edge_turns: turns of 2π). Returns the set and the
+    function that adds a point inside (θ0, θ1) to it."""
+    pts = {th0, th1}
+
+    def add(th):
+        if th0 < th < th1:
+            pts.add(th)
+
+    add(mp.mpf(0))
+    R = mp.sqrt(d_el * d_el + d_c * d_c)
+    phi = mp.atan2(d_el, d_c)
+    if dist["kind"] != "isotropic" and R > 0:
+        for k in axis_turns:
+            add(phi + k * mp.pi)
+        if dist["kind"] == "spot":
+            for kk in (mp.mpf(dist["cos_inner"]), mp.mpf(dist["cos_outer"])):
+                if abs(kk) < R:
+                    for sgn in (1, -1):
+                        for k in edge_turns:
+                            add(phi + sgn * mp.acos(kk / R) + 2 * k * mp.pi)
+    return pts, add
+
+
 def reference(rec):
     """L_m of docs/DESIGN.md §1 for one record, or None if the two quadratures disagree."""
     mp.mp.dps = DPS
