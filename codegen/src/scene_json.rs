@@ -273,7 +273,14 @@ fn kind_and_fields<'de, D: Deserializer<'de>>(d: D) -> Result<(String, Value), D
 
 /// A kind's fields, with the path of an error inside them kept.
 fn fields<T: de::DeserializeOwned, E: de::Error>(object: Value) -> Result<T, E> {
-    serde_path_to_error::deserialize(object).map_err(|e| E::custom(format_args!("{INNER_PATH}{}{INNER_PATH}{}", e.path(), e.inner())))
+    serde_path_to_error::deserialize(object).map_err(|e| {
+        let (path, message) = (e.path().to_string(), e.inner().to_string());
+        // an error of a kind nested in these fields (a light's distribution) carries its own
+        match message.split(INNER_PATH).collect::<Vec<_>>()[..] {
+            [_, inner, message] => E::custom(format_args!("{INNER_PATH}{path}.{inner}{INNER_PATH}{message}")),
+            _ => E::custom(format_args!("{INNER_PATH}{path}{INNER_PATH}{message}")),
+        }
+    })
 }
 
 impl<'de> Deserialize<'de> for DistributionJson {
