@@ -341,6 +341,16 @@ pub enum AnyRecord<T: Real> {
     Segment(SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>),
 }
 
+impl<T: Real> AnyRecord<T> {
+    /// The point light's record; a segment light is an error naming `light.shape`.
+    pub fn into_point(self) -> Result<SceneRecord<T>, FieldError> {
+        match self {
+            AnyRecord::Point(r) => Ok(r),
+            AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
+        }
+    }
+}
+
 fn distribution<T: Real>(json: &Option<DistributionJson>) -> Result<AnyDistribution<T>, FieldError> {
     Ok(match json {
         None | Some(DistributionJson::Isotropic) => AnyDistribution::Omni,
@@ -398,10 +408,7 @@ impl SceneJson {
     /// The kernel's point-light record in precision `T`, validated as [`airlight::Scene::new`]
     /// does; a segment light is an error (see [`SceneJson::to_any`]).
     pub fn to_record<T: Real>(&self) -> Result<SceneRecord<T>, FieldError> {
-        match self.to_any()? {
-            AnyRecord::Point(r) => Ok(r),
-            AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
-        }
+        self.to_any()?.into_point()
     }
 }
 
@@ -462,11 +469,7 @@ pub fn parse_any_value<T: Real>(root: &Value) -> Result<AnyRecord<T>, FieldError
 
 /// Parses one JSON line (a point light's record).
 pub fn parse_line<T: Real>(line: &str) -> Result<SceneRecord<T>, FieldError> {
-    let (_, record) = parse_line_with_id::<T>(line);
-    match record? {
-        AnyRecord::Point(r) => Ok(r),
-        AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
-    }
+    parse_line_with_id::<T>(line).1?.into_point()
 }
 
 /// Parses one JSON line of any light shape, and returns with it the record's `"id"` annotation

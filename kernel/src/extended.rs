@@ -16,7 +16,7 @@
 //! meets the ray's line outside the segment, or lies along it, is finite and integrated through
 //! the point light's on-line limit.
 
-use crate::error::{check_non_negative, check_vector, InputError};
+use crate::error::{check_vector, InputError};
 use crate::geometry::{dot, length, sub};
 use crate::light::LightDistribution;
 use crate::panels::Control;
@@ -113,9 +113,9 @@ where
     /// [`InputError`] naming the first invalid field, as [`Scene::new`]; the ends are `light.a`
     /// and `light.b`.
     pub fn new(ray: Ray<T>, light: SegmentLight<T, D>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
+        // the ends by their own names; the rest as the point light at `a` (`light.intensity`…)
         check_vector(T::vec3_to_array(light.a), "light.a", false)?;
         check_vector(T::vec3_to_array(light.b), "light.b", false)?;
-        check_non_negative(light.intensity, "light.intensity")?;
         let point = PointLight { position: light.a, intensity: light.intensity, distribution: light.distribution.clone() };
         validate(&ray, &point, &medium, &phase)?;
         Ok(SegmentScene { ray, light, medium, phase })
