@@ -88,10 +88,14 @@ where
     if !(hi > lo) {
         return T::zero();
     }
-    let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero(), mass_over: T::zero() }; LIST];
-    list[0] = listed::<T, F, N>(half, lo, hi, f, rule, run);
-    let mut count = 1;
+    let first = listed::<T, F, N>(half, lo, hi, f, rule, run);
     let mut budget = control.max_panels.saturating_sub(1);
+    // most pieces are done in one panel: no list for them
+    if first.error <= control.tolerance * first.value.abs().max(control.floor * run.f_max * first.mass_over) || budget < 2 {
+        return first.value;
+    }
+    let mut list = [first; LIST];
+    let mut count = 1;
     loop {
         let (mut total, mut errors, mut mass) = (T::zero(), T::zero(), T::zero());
         let mut worst = 0;
@@ -354,8 +358,11 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     let mut s_b = [T::zero(); MAX_N + 2];
     en_scaled(big_h / b, &mut s_b[..N + 2]);
     let mut s_a = [T::zero(); MAX_N + 2];
+    // the far end's terms are at most `decay` of the near end's (s_n is decreasing and
+    // a (a/b)^k ≤ b): below ε/4 of them they change nothing and are not computed
     let far = a > T::zero() && (big_h / a).is_finite();
     let decay = if far { (-big_h * ((b - a) / (a * b))).exp() } else { T::zero() };
+    let decay = if decay > T::epsilon() * T::lit(0.25) { decay } else { T::zero() };
     if far && decay > T::zero() {
         en_scaled(big_h / a, &mut s_a[..N + 2]);
     }
