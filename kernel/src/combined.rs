@@ -160,8 +160,12 @@ where
     }
     let mut total = T::zero();
     let mut run = Running { f_max: T::zero(), panels: 0 };
-    // panels only: the exponent's boundary layer is cut where the rest is below rounding
-    let cut = matches!(method, Method::Panels(_)) && !isotropic;
+    // panels only: the exponent's boundary layer is cut where the rest is below what the
+    // target resolves
+    let cut = match method {
+        Method::Panels(control) if !isotropic => Some(control),
+        _ => None,
+    };
     let mut behind_cut = false;
     // First reformulation: t ∈ [t0, min(t1, x_h)], a = −u from a_s down to a_e.
     if t0 < x_h {
@@ -173,8 +177,8 @@ where
         let da = (t_end - t0) / h;
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let mut half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
-        if cut {
-            let dv = cut_length(half.big_h, y_lo);
+        if let Some(control) = cut {
+            let dv = cut_length(half.big_h, y_lo, &control);
             if dv < dy {
                 // the rest of this half and all of the second lie beyond the cut
                 half = Half { y_hi: y_lo + dv, dy: dv, dv, ..half };
@@ -196,8 +200,8 @@ where
         // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
         let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
-        if cut {
-            let cut_dv = cut_length(half.big_h, y_hi.recip());
+        if let Some(control) = cut {
+            let cut_dv = cut_length(half.big_h, y_hi.recip(), &control);
             // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
             let cut_y_lo = y_hi / (T::one() + y_hi * cut_dv);
             if cut_dv < dv && cut_y_lo > T::zero() {
@@ -213,26 +217,29 @@ where
 }
 
 /// The length `Δv` of a half beyond which the error-controlled panels cut it (`+∞`: no cut),
-/// for `H = σt·h` and the half's first `v_s`. The weight `e^{−H(v − v_s)}` is then below
-/// `e^{−E}`: the part dropped is at most `F_max e^{−E}/(H(1 + v_s²))` (`G ≤ F_max/(1+v²)`), and
-/// behind a cut first half the whole second half at most `F_max e^{−E}/(2H)` (its weight at the
-/// foot is below `e^{−E}`, and `∫_1^∞ e^{−H(v−1)} dv/(1+v²) ≤ 1/(2H)`); the half's scale (its
-/// integral with `F` at its maximum) is at least `F_max e^{−1}/(H(1 + (v_s + 1/H)²))`, from the
-/// first `1/H` of `v`, where the weight is at least `e^{−1}`. So with `R = (1 + (v_s + 1/H)²)/(1
-/// + v_s²) ≥ 1` everything dropped is at most `8 R e^{1−E}` of the scale, and
-/// `E = 1 + ln(8R/(ε·τ))` (`τ` = [`Real::PANEL_FLOOR`], the accuracy target's floor) keeps it
-/// below one rounding of the smallest value the target resolves: cut, the boundary layer of a
-/// thick medium or a long ray is still integrated exactly, and the panels are spent on the part
-/// that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
+/// for `H = σt·h`, the half's first `v_s` and the panels' control. The weight `e^{−H(v − v_s)}`
+/// is then below `e^{−E}`: the part dropped is at most `F_max e^{−E}/(H(1 + v_s²))` (`G ≤
+/// F_max/(1+v²)`), and behind a cut first half the whole second half at most
+/// `F_max e^{−E}/(2H)` (its weight at the foot is below `e^{−E}`, and `∫_1^∞ e^{−H(v−1)}
+/// dv/(1+v²) ≤ 1/(2H)`); the half's scale (its integral with `F` at its maximum) is at least
+/// `F_max e^{−1}/(H(1 + (v_s + 1/H)²))`, from the first `1/H` of `v`, where the weight is at
+/// least `e^{−1}`. So with `R = (1 + (v_s + 1/H)²)/(1 + v_s²) ≥ 1` everything dropped is at
+/// most `8 R e^{1−E}` of the scale, and `E = 1 + ln(8R/(δ·τ))` (`τ`: the control's floor,
+/// `δ = max(tolerance/10, ε)`) keeps it below a tenth of the smallest error the target allows,
+/// `tolerance·τ·scale`, and never below one rounding of it: cut, the boundary layer of a thick
+/// medium or a long ray is still integrated to the target, and the panels are spent on the
+/// part that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
 #[inline]
-fn cut_length<T: Real>(big_h: T, v_s: T) -> T {
-    if !(big_h > T::zero()) {
+fn cut_length<T: Real>(big_h: T, v_s: T, control: &Control<T>) -> T {
+    let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
+    let floor = control.floor.max(T::epsilon());
+    if !(big_h > T::zero()) || !(delta * floor > T::zero()) {
         return T::infinity();
     }
     let inv_h = big_h.recip();
     let w = v_s + inv_h;
     let r = (T::one() + w * w) / (T::one() + v_s * v_s);
-    let e = T::one() + (T::lit(8.0) * r / (T::epsilon() * T::lit(T::PANEL_FLOOR))).ln();
+    let e = T::one() + (T::lit(8.0) * r / (delta * floor)).ln();
     e * inv_h
 }
 

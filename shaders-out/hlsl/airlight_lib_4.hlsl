@@ -1397,10 +1397,10 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
                         break;
                     }
                     uint _e67 = i_6;
-                    uint k_13 = (top - _e67);
-                    if ((k_13 < AIRLIGHT_TERMS)) {
+                    uint k_14 = (top - _e67);
+                    if ((k_14 < AIRLIGHT_TERMS)) {
                         float _e71 = cur;
-                        out_1[min(uint(k_13), 3u)] = _e71;
+                        out_1[min(uint(k_14), 3u)] = _e71;
                     }
                     float _e72 = above;
                     float _e73 = odd;
@@ -1532,6 +1532,8 @@ float airlight_tail_estimate(float c_3[4])
 float airlight_error_factor(float c_4[4], float m_1[4])
 {
     bool local_9 = (bool)0;
+    float c_max = 0.0;
+    uint k_8 = 0u;
     float aliasing = 1.0;
     uint i_7 = 0u;
 
@@ -1556,23 +1558,46 @@ float airlight_error_factor(float c_4[4], float m_1[4])
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e40 = i_7;
-            i_7 = (_e40 + 1u);
+            uint _e43 = k_8;
+            k_8 = (_e43 + 1u);
         }
         loop_init_20 = false;
-        uint _e34 = i_7;
-        if ((_e34 < 1u)) {
+        uint _e34 = k_8;
+        if ((_e34 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            float _e37 = aliasing;
-            aliasing = (_e37 * q_1);
+            float _e37 = c_max;
+            uint _e38 = k_8;
+            c_max = max(_e37, abs(c_4[min(uint(_e38), 3u)]));
+        }
+    }
+    float _e47 = c_max;
+    uint power_1 = ((_e47 > (1.2 * abs(c_4[0]))) ? 0u : 1u);
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e63 = i_7;
+            i_7 = (_e63 + 1u);
+        }
+        loop_init_21 = false;
+        uint _e58 = i_7;
+        if ((_e58 < power_1)) {
+        } else {
+            break;
+        }
+        {
+            float _e60 = aliasing;
+            aliasing = (_e60 * q_1);
         }
     }
     float truncation = ((q_1 * max(abs(m_1[3]), abs(m_1[2]))) / m_1[0]);
-    float _e50 = aliasing;
-    return min((_e50 + truncation), 1.0);
+    float _e73 = aliasing;
+    return min((_e73 + truncation), 1.0);
 }
 
 float airlight_transform_noise(float mass, float mean_abs)
@@ -1618,7 +1643,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float s
     float g_avg = 0.0;
     uint i_8 = 0u;
     float sum_5 = 0.0;
-    uint k_8 = 0u;
+    uint k_9 = 0u;
 
     const float2 _e6[2] = airlight_gauss_rule();
     r_1 = ((b_4 - a_5) * 0.5);
@@ -1631,16 +1656,16 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float s
     }
     const float _e24[4] = airlight_zero_terms();
     samples = _e24;
-    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_21) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
             uint _e72 = i_8;
             i_8 = (_e72 + 1u);
         }
-        loop_init_21 = false;
+        loop_init_22 = false;
         uint _e34 = i_8;
         if ((_e34 < AIRLIGHT_TERMS)) {
         } else {
@@ -1672,25 +1697,25 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float s
     const float _e75[4] = airlight_legendre(_e74);
     float _e77 = r_1;
     const float _e79[4] = airlight_exp_legendre_moments((half_4.big_h * _e77));
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e95 = k_8;
-            k_8 = (_e95 + 1u);
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e95 = k_9;
+            k_9 = (_e95 + 1u);
         }
-        loop_init_22 = false;
-        uint _e84 = k_8;
+        loop_init_23 = false;
+        uint _e84 = k_9;
         if ((_e84 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
             float _e87 = sum_5;
-            uint _e88 = k_8;
-            uint _e90 = k_8;
+            uint _e88 = k_9;
+            uint _e90 = k_9;
             sum_5 = (_e87 + (_e75[min(uint(_e88), 3u)] * _e79[min(uint(_e90), 3u)]));
         }
     }
@@ -1726,16 +1751,16 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_8, float s
     float yc_1 = (a_6 + r_4);
     const float _e11[4] = airlight_zero_terms();
     samples_1 = _e11;
-    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
             uint _e77 = i_9;
             i_9 = (_e77 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_24 = false;
         uint _e23 = i_9;
         if ((_e23 < AIRLIGHT_TERMS)) {
         } else {
@@ -1789,41 +1814,41 @@ typedef float airlight_ret_airlight_legendre_to_monomial[4];
 airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_5[4])
 {
     float hat[4] = {0.0, 0.0, 0.0, 0.0};
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     uint i_10 = (uint)0;
 
     const float _e1[16] = airlight_legendre_monomial();
     const float _e2[4] = airlight_zero_terms();
     hat = _e2;
-    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e31 = k_9;
-            k_9 = (_e31 + 1u);
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e31 = k_10;
+            k_10 = (_e31 + 1u);
         }
-        loop_init_24 = false;
-        uint _e6 = k_9;
+        loop_init_25 = false;
+        uint _e6 = k_10;
         if ((_e6 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
             i_10 = 0u;
-            uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-            bool loop_init_25 = true;
+            uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+            bool loop_init_26 = true;
             while(true) {
-                if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_25) {
+                if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_26) {
                     uint _e28 = i_10;
                     i_10 = (_e28 + 1u);
                 }
-                loop_init_25 = false;
+                loop_init_26 = false;
                 uint _e11 = i_10;
-                uint _e12 = k_9;
+                uint _e12 = k_10;
                 if ((_e11 <= _e12)) {
                 } else {
                     break;
@@ -1831,8 +1856,8 @@ airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c
                 {
                     uint _e14 = i_10;
                     float _e16 = hat[min(uint(_e14), 3u)];
-                    uint _e17 = k_9;
-                    uint _e19 = k_9;
+                    uint _e17 = k_10;
+                    uint _e19 = k_10;
                     uint _e22 = i_10;
                     hat[min(uint(_e14), 3u)] = (_e16 + (c_5[min(uint(_e17), 3u)] * _e1[min(uint(((_e19 * AIRLIGHT_TERMS) + _e22)), 15u)]));
                 }
@@ -1863,28 +1888,28 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     float mass_2 = 0.0;
     float ratio_1 = 1.0;
     float ab = 0.0;
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     float tail = (float)0;
     float l_prev = 0.0;
     float l_cur = 1.0;
     float spread = 0.0;
-    uint k_11 = 0u;
+    uint k_12 = 0u;
 
     const float2 _e6[2] = airlight_gauss_rule();
     float r_5 = ((b_6 - a_7) * 0.5);
     float yc_2 = (a_7 + r_5);
     const float _e11[4] = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e51 = i_11;
             i_11 = (_e51 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e19 = i_11;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
@@ -1913,16 +1938,16 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     const float _e58[4] = airlight_legendre_to_monomial(_e54);
     const float _e59[4] = airlight_zero_terms();
     q = _e59;
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e104 = jj;
             jj = (_e104 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e63 = jj;
         if ((_e63 < AIRLIGHT_TERMS)) {
         } else {
@@ -1934,16 +1959,16 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
             const float _e69[4] = airlight_zero_terms();
             next = _e69;
             i_12 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
+            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            bool loop_init_29 = true;
             while(true) {
-                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
+                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_29) {
                     uint _e96 = i_12;
                     i_12 = (_e96 + 1u);
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e73 = i_12;
                 if ((_e73 < AIRLIGHT_TERMS)) {
                 } else {
@@ -1999,17 +2024,17 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     if ((b_6 > 0.0)) {
         ab = (a_7 / b_6);
     }
-    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-    bool loop_init_29 = true;
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-        if (!loop_init_29) {
-            uint _e190 = k_10;
-            k_10 = (_e190 + 1u);
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_30) {
+            uint _e190 = k_11;
+            k_11 = (_e190 + 1u);
         }
-        loop_init_29 = false;
-        uint _e151 = k_10;
+        loop_init_30 = false;
+        uint _e151 = k_11;
         if ((_e151 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -2020,20 +2045,20 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
             if ((_e156 > 0.0)) {
                 float _e159 = decay;
                 float _e161 = ratio_1;
-                uint _e163 = k_10;
+                uint _e163 = k_11;
                 float _e167 = s_a[min(uint((_e163 + 1u)), 15u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
             }
-            uint _e169 = k_10;
+            uint _e169 = k_11;
             float _e173 = s_b[min(uint((_e169 + 1u)), 15u)];
             float _e175 = tail;
             float u = ((b_6 * _e173) - _e175);
-            uint _e177 = k_10;
+            uint _e177 = k_11;
             if ((_e177 == 0u)) {
                 mass_2 = u;
             }
             float _e180 = sum_6;
-            uint _e181 = k_10;
+            uint _e181 = k_11;
             float _e183 = q[min(uint(_e181), 3u)];
             sum_6 = (_e180 + (_e183 * u));
             float _e186 = ratio_1;
@@ -2045,17 +2070,17 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     float _e193 = mass_2;
     mass_2 = (_e193 * _e192);
     float x_16 = (abs(alpha) + abs(beta));
-    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
+    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e232 = k_11;
-            k_11 = (_e232 + 1u);
+        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e232 = k_12;
+            k_12 = (_e232 + 1u);
         }
-        loop_init_30 = false;
-        uint _e206 = k_11;
+        loop_init_31 = false;
+        uint _e206 = k_12;
         if ((_e206 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -2063,9 +2088,9 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
         {
             float _e209 = spread;
             float _e210 = l_cur;
-            uint _e211 = k_11;
+            uint _e211 = k_12;
             spread = (_e209 + (_e210 * abs(_e54[min(uint(_e211), 3u)])));
-            uint _e216 = k_11;
+            uint _e216 = k_12;
             float kf_2 = float(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
@@ -2154,16 +2179,16 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float 
     f_max_4 = max(_e39, _e38.f_max);
     list[0] = float4(lo, hi, _e38.value, _e38.error);
     mass_over_1[0] = _e38.mass_over;
-    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
-    bool loop_init_31 = true;
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    bool loop_init_32 = true;
     while(true) {
-        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_32) {
             uint _e196 = round_;
             round_ = (_e196 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e56 = round_;
         if ((_e56 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -2175,16 +2200,16 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float 
             mass_3 = 0.0;
             worst = 0u;
             i_13 = 0u;
-            uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
-            bool loop_init_32 = true;
+            uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+            bool loop_init_33 = true;
             while(true) {
-                if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
-                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-                if (!loop_init_32) {
+                if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+                loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+                if (!loop_init_33) {
                     uint _e102 = i_13;
                     i_13 = (_e102 + 1u);
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e68 = i_13;
                 if ((_e68 < AIRLIGHT_PANEL_LIST)) {
                 } else {
@@ -2278,16 +2303,16 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float 
         }
     }
     total = 0.0;
-    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
-    bool loop_init_33 = true;
+    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
+    bool loop_init_34 = true;
     while(true) {
-        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-        if (!loop_init_33) {
+        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_34) {
             uint _e214 = i_14;
             i_14 = (_e214 + 1u);
         }
-        loop_init_33 = false;
+        loop_init_34 = false;
         uint _e201 = i_14;
         if ((_e201 < AIRLIGHT_PANEL_LIST)) {
         } else {
@@ -2315,16 +2340,16 @@ float airlight_bounded(float a_9)
     return (1.0 / (a_9 + _e1));
 }
 
-float2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_12)
+float2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_13)
 {
     bool local_17 = (bool)0;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
 
-    float a0_ = (k_12 + (sigma_7 * d_el));
+    float a0_ = (k_13 + (sigma_7 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_12 - (sigma_7 * d_el));
+    float c0_ = (k_13 - (sigma_7 * d_el));
     float scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale > 0.0)))) {
         const bool _e21 = airlight_is_finite(scale);
@@ -2397,16 +2422,16 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
         float _e43 = k_out;
         const float2 _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
         cuts = airlight_Constructarray4_float_(_e40.x, _e40.y, _e44.x, _e44.y);
-        uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
-        bool loop_init_34 = true;
+        uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+        bool loop_init_35 = true;
         while(true) {
-            if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
-            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-            if (!loop_init_34) {
+            if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+            if (!loop_init_35) {
                 uint _e74 = i_15;
                 i_15 = (_e74 + 1u);
             }
-            loop_init_34 = false;
+            loop_init_35 = false;
             uint _e52 = i_15;
             if ((_e52 < 4u)) {
             } else {
@@ -2429,16 +2454,16 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
                 }
             }
         }
-        uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-        bool loop_init_35 = true;
+        uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+        bool loop_init_36 = true;
         while(true) {
-            if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
-            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-            if (!loop_init_35) {
+            if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+            if (!loop_init_36) {
                 uint _e115 = i_16;
                 i_16 = (_e115 + 1u);
             }
-            loop_init_35 = false;
+            loop_init_36 = false;
             uint _e78 = i_16;
             if ((_e78 < 3u)) {
             } else {
@@ -2446,16 +2471,16 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
             }
             {
                 j_5 = 0u;
-                uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-                bool loop_init_36 = true;
+                uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+                bool loop_init_37 = true;
                 while(true) {
-                    if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
-                    loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                    if (!loop_init_36) {
+                    if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+                    loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                    if (!loop_init_37) {
                         uint _e112 = j_5;
                         j_5 = (_e112 + 1u);
                     }
-                    loop_init_36 = false;
+                    loop_init_37 = false;
                     uint _e83 = j_5;
                     uint _e85 = i_16;
                     if ((_e83 < (3u - _e85))) {
@@ -2483,16 +2508,16 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
         }
     }
     lo_1 = half_9.y_lo;
-    uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-    bool loop_init_37 = true;
+    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+    bool loop_init_38 = true;
     while(true) {
-        if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_37) {
+        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_38) {
             uint _e165 = i_17;
             i_17 = (_e165 + 1u);
         }
-        loop_init_37 = false;
+        loop_init_38 = false;
         uint _e123 = i_17;
         if ((_e123 < 5u)) {
         } else {
@@ -2704,7 +2729,7 @@ float airlight_cut_length(float big_h_2, float v_s)
     float inv_h = (1.0 / big_h_2);
     float w_3 = (v_s + inv_h);
     float r_6 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_6) / 1.1920929e-11)));
+    float e_1 = (1.0 + log(((8.0 * r_6) / (1e-5 * 0.0001))));
     return (e_1 * inv_h);
 }
 

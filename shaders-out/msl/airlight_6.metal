@@ -1264,10 +1264,10 @@ airlight_type_2 airlight_exp_legendre_moments(
                         break;
                     }
                     uint _e67 = i_6;
-                    uint k_12 = top - _e67;
-                    if (k_12 < AIRLIGHT_TERMS) {
+                    uint k_13 = top - _e67;
+                    if (k_13 < AIRLIGHT_TERMS) {
                         float _e71 = cur;
-                        out_1.inner[metal::min(unsigned(k_12), 5u)] = _e71;
+                        out_1.inner[metal::min(unsigned(k_13), 5u)] = _e71;
                     }
                     float _e72 = above;
                     float _e73 = odd;
@@ -1402,6 +1402,8 @@ float airlight_error_factor(
     airlight_type_2 m_1
 ) {
     bool local_9 = {};
+    float c_max = 0.0;
+    uint k_7 = 0u;
     float aliasing = 1.0;
     uint i_7 = 0u;
     if (!((m_1.inner[0] > 0.0))) {
@@ -1425,23 +1427,46 @@ float airlight_error_factor(
         if (metal::all(loop_bound_20 == uint2(0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e40 = i_7;
-            i_7 = _e40 + 1u;
+            uint _e43 = k_7;
+            k_7 = _e43 + 1u;
         }
         loop_init_20 = false;
-        uint _e34 = i_7;
-        if (_e34 < 1u) {
+        uint _e34 = k_7;
+        if (_e34 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            float _e37 = aliasing;
-            aliasing = _e37 * q_1;
+            float _e37 = c_max;
+            uint _e38 = k_7;
+            c_max = metal::max(_e37, metal::abs(c_4.inner[metal::min(unsigned(_e38), 5u)]));
+        }
+    }
+    float _e47 = c_max;
+    uint power = (_e47 > (1.2 * metal::abs(c_4.inner[0]))) ? 1u : 1u;
+    uint2 loop_bound_21 = uint2(4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e63 = i_7;
+            i_7 = _e63 + 1u;
+        }
+        loop_init_21 = false;
+        uint _e58 = i_7;
+        if (_e58 < power) {
+        } else {
+            break;
+        }
+        {
+            float _e60 = aliasing;
+            aliasing = _e60 * q_1;
         }
     }
     float truncation = (q_1 * metal::max(metal::abs(m_1.inner[5]), metal::abs(m_1.inner[4]))) / m_1.inner[0];
-    float _e50 = aliasing;
-    return metal::min(_e50 + truncation, 1.0);
+    float _e73 = aliasing;
+    return metal::min(_e73 + truncation, 1.0);
 }
 
 float airlight_transform_noise(
@@ -1492,7 +1517,7 @@ AirlightPanel airlight_v_panel(
     float g_avg = 0.0;
     uint i_8 = 0u;
     float sum_5 = 0.0;
-    uint k_7 = 0u;
+    uint k_8 = 0u;
     airlight_type_10 _e6 = airlight_gauss_rule();
     r_1 = (b_4 - a_5) * 0.5;
     float _e11 = r_1;
@@ -1504,16 +1529,16 @@ AirlightPanel airlight_v_panel(
     }
     airlight_type_2 _e24 = airlight_zero_terms();
     samples = _e24;
-    uint2 loop_bound_21 = uint2(4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_21) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
             uint _e72 = i_8;
             i_8 = _e72 + 1u;
         }
-        loop_init_21 = false;
+        loop_init_22 = false;
         uint _e34 = i_8;
         if (_e34 < AIRLIGHT_TERMS) {
         } else {
@@ -1545,25 +1570,25 @@ AirlightPanel airlight_v_panel(
     airlight_type_2 _e75 = airlight_legendre(_e74);
     float _e77 = r_1;
     airlight_type_2 _e79 = airlight_exp_legendre_moments(half_4.big_h * _e77);
-    uint2 loop_bound_22 = uint2(4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_23 = uint2(4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e95 = k_7;
-            k_7 = _e95 + 1u;
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e95 = k_8;
+            k_8 = _e95 + 1u;
         }
-        loop_init_22 = false;
-        uint _e84 = k_7;
+        loop_init_23 = false;
+        uint _e84 = k_8;
         if (_e84 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             float _e87 = sum_5;
-            uint _e88 = k_7;
-            uint _e90 = k_7;
+            uint _e88 = k_8;
+            uint _e90 = k_8;
             sum_5 = _e87 + (_e75.inner[metal::min(unsigned(_e88), 5u)] * _e79.inner[metal::min(unsigned(_e90), 5u)]);
         }
     }
@@ -1603,16 +1628,16 @@ AirlightPanel airlight_y_panel(
     float yc_1 = a_6 + r_4;
     airlight_type_2 _e11 = airlight_zero_terms();
     samples_1 = _e11;
-    uint2 loop_bound_23 = uint2(4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_24 = uint2(4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
             uint _e77 = i_9;
             i_9 = _e77 + 1u;
         }
-        loop_init_23 = false;
+        loop_init_24 = false;
         uint _e23 = i_9;
         if (_e23 < AIRLIGHT_TERMS) {
         } else {
@@ -1665,40 +1690,40 @@ airlight_type_2 airlight_legendre_to_monomial(
     airlight_type_2 c_5
 ) {
     airlight_type_2 hat = {};
-    uint k_8 = 0u;
+    uint k_9 = 0u;
     uint i_10 = {};
     airlight_type_11 _e1 = airlight_legendre_monomial();
     airlight_type_2 _e2 = airlight_zero_terms();
     hat = _e2;
-    uint2 loop_bound_24 = uint2(4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_25 = uint2(4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e31 = k_8;
-            k_8 = _e31 + 1u;
+        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e31 = k_9;
+            k_9 = _e31 + 1u;
         }
-        loop_init_24 = false;
-        uint _e6 = k_8;
+        loop_init_25 = false;
+        uint _e6 = k_9;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             i_10 = 0u;
-            uint2 loop_bound_25 = uint2(4294967295u);
-            bool loop_init_25 = true;
+            uint2 loop_bound_26 = uint2(4294967295u);
+            bool loop_init_26 = true;
             while(true) {
-                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_25) {
+                if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_26) {
                     uint _e28 = i_10;
                     i_10 = _e28 + 1u;
                 }
-                loop_init_25 = false;
+                loop_init_26 = false;
                 uint _e11 = i_10;
-                uint _e12 = k_8;
+                uint _e12 = k_9;
                 if (_e11 <= _e12) {
                 } else {
                     break;
@@ -1706,8 +1731,8 @@ airlight_type_2 airlight_legendre_to_monomial(
                 {
                     uint _e14 = i_10;
                     float _e16 = hat.inner[metal::min(unsigned(_e14), 5u)];
-                    uint _e17 = k_8;
-                    uint _e19 = k_8;
+                    uint _e17 = k_9;
+                    uint _e19 = k_9;
                     uint _e22 = i_10;
                     hat.inner[metal::min(unsigned(_e14), 5u)] = _e16 + (c_5.inner[metal::min(unsigned(_e17), 5u)] * _e1.inner[metal::min(unsigned((_e19 * AIRLIGHT_TERMS) + _e22), 35u)]);
                 }
@@ -1744,27 +1769,27 @@ AirlightPanel airlight_tail_panel(
     float mass_2 = 0.0;
     float ratio_1 = 1.0;
     float ab = 0.0;
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     float tail = {};
     float l_prev = 0.0;
     float l_cur = 1.0;
     float spread = 0.0;
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     airlight_type_10 _e6 = airlight_gauss_rule();
     float r_5 = (b_6 - a_7) * 0.5;
     float yc_2 = a_7 + r_5;
     airlight_type_2 _e11 = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_26 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e51 = i_11;
             i_11 = _e51 + 1u;
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e19 = i_11;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
@@ -1793,16 +1818,16 @@ AirlightPanel airlight_tail_panel(
     airlight_type_2 _e58 = airlight_legendre_to_monomial(_e54);
     airlight_type_2 _e59 = airlight_zero_terms();
     q = _e59;
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_28 = uint2(4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e104 = jj;
             jj = _e104 + 1u;
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e63 = jj;
         if (_e63 < AIRLIGHT_TERMS) {
         } else {
@@ -1814,16 +1839,16 @@ AirlightPanel airlight_tail_panel(
             airlight_type_2 _e69 = airlight_zero_terms();
             next = _e69;
             i_12 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u);
-            bool loop_init_28 = true;
+            uint2 loop_bound_29 = uint2(4294967295u);
+            bool loop_init_29 = true;
             while(true) {
-                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
+                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_29) {
                     uint _e96 = i_12;
                     i_12 = _e96 + 1u;
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e73 = i_12;
                 if (_e73 < AIRLIGHT_TERMS) {
                 } else {
@@ -1879,17 +1904,17 @@ AirlightPanel airlight_tail_panel(
     if (b_6 > 0.0) {
         ab = a_7 / b_6;
     }
-    uint2 loop_bound_29 = uint2(4294967295u);
-    bool loop_init_29 = true;
+    uint2 loop_bound_30 = uint2(4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-        if (!loop_init_29) {
-            uint _e190 = k_9;
-            k_9 = _e190 + 1u;
+        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_30) {
+            uint _e190 = k_10;
+            k_10 = _e190 + 1u;
         }
-        loop_init_29 = false;
-        uint _e151 = k_9;
+        loop_init_30 = false;
+        uint _e151 = k_10;
         if (_e151 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1900,20 +1925,20 @@ AirlightPanel airlight_tail_panel(
             if (_e156 > 0.0) {
                 float _e159 = decay;
                 float _e161 = ratio_1;
-                uint _e163 = k_9;
+                uint _e163 = k_10;
                 float _e167 = s_a.inner[metal::min(unsigned(_e163 + 1u), 15u)];
                 tail = ((_e159 * a_7) * _e161) * _e167;
             }
-            uint _e169 = k_9;
+            uint _e169 = k_10;
             float _e173 = s_b.inner[metal::min(unsigned(_e169 + 1u), 15u)];
             float _e175 = tail;
             float u = (b_6 * _e173) - _e175;
-            uint _e177 = k_9;
+            uint _e177 = k_10;
             if (_e177 == 0u) {
                 mass_2 = u;
             }
             float _e180 = sum_6;
-            uint _e181 = k_9;
+            uint _e181 = k_10;
             float _e183 = q.inner[metal::min(unsigned(_e181), 5u)];
             sum_6 = _e180 + (_e183 * u);
             float _e186 = ratio_1;
@@ -1925,17 +1950,17 @@ AirlightPanel airlight_tail_panel(
     float _e193 = mass_2;
     mass_2 = _e193 * _e192;
     float x_16 = metal::abs(alpha) + metal::abs(beta);
-    uint2 loop_bound_30 = uint2(4294967295u);
-    bool loop_init_30 = true;
+    uint2 loop_bound_31 = uint2(4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e232 = k_10;
-            k_10 = _e232 + 1u;
+        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e232 = k_11;
+            k_11 = _e232 + 1u;
         }
-        loop_init_30 = false;
-        uint _e206 = k_10;
+        loop_init_31 = false;
+        uint _e206 = k_11;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1943,9 +1968,9 @@ AirlightPanel airlight_tail_panel(
         {
             float _e209 = spread;
             float _e210 = l_cur;
-            uint _e211 = k_10;
+            uint _e211 = k_11;
             spread = _e209 + (_e210 * metal::abs(_e54.inner[metal::min(unsigned(_e211), 5u)]));
-            uint _e216 = k_10;
+            uint _e216 = k_11;
             float kf_2 = static_cast<float>(_e216);
             float _e222 = l_cur;
             float _e224 = l_prev;
@@ -2035,16 +2060,16 @@ float airlight_integrate_piece(
     f_max_4 = metal::max(_e39, _e38.f_max);
     list.inner[0] = metal::float4(lo, hi, _e38.value, _e38.error);
     mass_over_1.inner[0] = _e38.mass_over;
-    uint2 loop_bound_31 = uint2(4294967295u);
-    bool loop_init_31 = true;
+    uint2 loop_bound_32 = uint2(4294967295u);
+    bool loop_init_32 = true;
     while(true) {
-        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_32) {
             uint _e196 = round;
             round = _e196 + 1u;
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e56 = round;
         if (_e56 < AIRLIGHT_MAX_PANELS) {
         } else {
@@ -2056,16 +2081,16 @@ float airlight_integrate_piece(
             mass_3 = 0.0;
             worst = 0u;
             i_13 = 0u;
-            uint2 loop_bound_32 = uint2(4294967295u);
-            bool loop_init_32 = true;
+            uint2 loop_bound_33 = uint2(4294967295u);
+            bool loop_init_33 = true;
             while(true) {
-                if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-                if (!loop_init_32) {
+                if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+                loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+                if (!loop_init_33) {
                     uint _e102 = i_13;
                     i_13 = _e102 + 1u;
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e68 = i_13;
                 if (_e68 < AIRLIGHT_PANEL_LIST) {
                 } else {
@@ -2159,16 +2184,16 @@ float airlight_integrate_piece(
         }
     }
     total = 0.0;
-    uint2 loop_bound_33 = uint2(4294967295u);
-    bool loop_init_33 = true;
+    uint2 loop_bound_34 = uint2(4294967295u);
+    bool loop_init_34 = true;
     while(true) {
-        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-        if (!loop_init_33) {
+        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_34) {
             uint _e214 = i_14;
             i_14 = _e214 + 1u;
         }
-        loop_init_33 = false;
+        loop_init_34 = false;
         uint _e201 = i_14;
         if (_e201 < AIRLIGHT_PANEL_LIST) {
         } else {
@@ -2201,15 +2226,15 @@ metal::float2 airlight_crossings(
     float sigma_7,
     float d_el,
     float d_c,
-    float k_11
+    float k_12
 ) {
     bool local_17 = {};
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
-    float a0_ = k_11 + (sigma_7 * d_el);
+    float a0_ = k_12 + (sigma_7 * d_el);
     float b0_ = -((d_c + d_c));
-    float c0_ = k_11 - (sigma_7 * d_el);
+    float c0_ = k_12 - (sigma_7 * d_el);
     float scale = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
     if (!(!((scale > 0.0)))) {
         bool _e21 = airlight_is_finite(scale);
@@ -2287,16 +2312,16 @@ float airlight_half(
         float _e43 = k_out;
         metal::float2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
         cuts = airlight_type_17 {{_e40.x, _e40.y, _e44.x, _e44.y}};
-        uint2 loop_bound_34 = uint2(4294967295u);
-        bool loop_init_34 = true;
+        uint2 loop_bound_35 = uint2(4294967295u);
+        bool loop_init_35 = true;
         while(true) {
-            if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-            if (!loop_init_34) {
+            if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+            if (!loop_init_35) {
                 uint _e74 = i_15;
                 i_15 = _e74 + 1u;
             }
-            loop_init_34 = false;
+            loop_init_35 = false;
             uint _e52 = i_15;
             if (_e52 < 4u) {
             } else {
@@ -2319,16 +2344,16 @@ float airlight_half(
                 }
             }
         }
-        uint2 loop_bound_35 = uint2(4294967295u);
-        bool loop_init_35 = true;
+        uint2 loop_bound_36 = uint2(4294967295u);
+        bool loop_init_36 = true;
         while(true) {
-            if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-            if (!loop_init_35) {
+            if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+            if (!loop_init_36) {
                 uint _e115 = i_16;
                 i_16 = _e115 + 1u;
             }
-            loop_init_35 = false;
+            loop_init_36 = false;
             uint _e78 = i_16;
             if (_e78 < 3u) {
             } else {
@@ -2336,16 +2361,16 @@ float airlight_half(
             }
             {
                 j_5 = 0u;
-                uint2 loop_bound_36 = uint2(4294967295u);
-                bool loop_init_36 = true;
+                uint2 loop_bound_37 = uint2(4294967295u);
+                bool loop_init_37 = true;
                 while(true) {
-                    if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-                    loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                    if (!loop_init_36) {
+                    if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+                    loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                    if (!loop_init_37) {
                         uint _e112 = j_5;
                         j_5 = _e112 + 1u;
                     }
-                    loop_init_36 = false;
+                    loop_init_37 = false;
                     uint _e83 = j_5;
                     uint _e85 = i_16;
                     if (_e83 < (3u - _e85)) {
@@ -2373,16 +2398,16 @@ float airlight_half(
         }
     }
     lo_1 = half_9.y_lo;
-    uint2 loop_bound_37 = uint2(4294967295u);
-    bool loop_init_37 = true;
+    uint2 loop_bound_38 = uint2(4294967295u);
+    bool loop_init_38 = true;
     while(true) {
-        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_37) {
+        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_38) {
             uint _e165 = i_17;
             i_17 = _e165 + 1u;
         }
-        loop_init_37 = false;
+        loop_init_38 = false;
         uint _e123 = i_17;
         if (_e123 < 5u) {
         } else {
@@ -2594,7 +2619,7 @@ float airlight_cut_length(
     float inv_h = 1.0 / big_h_2;
     float w_2 = v_s + inv_h;
     float r_6 = (1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s));
-    float e_1 = 1.0 + metal::log((8.0 * r_6) / 0.000000000011920929);
+    float e_1 = 1.0 + metal::log((8.0 * r_6) / (0.00001 * 0.0001));
     return e_1 * inv_h;
 }
 

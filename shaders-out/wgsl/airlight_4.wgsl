@@ -1046,10 +1046,10 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 4> {
                         break;
                     }
                     let _e67 = i_6;
-                    let k_12 = (top - _e67);
-                    if (k_12 < AIRLIGHT_TERMS) {
+                    let k_13 = (top - _e67);
+                    if (k_13 < AIRLIGHT_TERMS) {
                         let _e71 = cur;
-                        out_1[k_12] = _e71;
+                        out_1[k_13] = _e71;
                     }
                     let _e72 = above;
                     let _e73 = odd;
@@ -1163,6 +1163,8 @@ fn airlight_tail_estimate(c_3: array<f32, 4>) -> f32 {
 
 fn airlight_error_factor(c_4: array<f32, 4>, m_1: array<f32, 4>) -> f32 {
     var local_9: bool;
+    var c_max: f32 = 0f;
+    var k_7: u32 = 0u;
     var aliasing: f32 = 1f;
     var i_7: u32 = 0u;
 
@@ -1182,23 +1184,41 @@ fn airlight_error_factor(c_4: array<f32, 4>, m_1: array<f32, 4>) -> f32 {
     }
     let q_1 = sqrt((last / before));
     loop {
-        let _e34 = i_7;
-        if (_e34 < 1u) {
+        let _e34 = k_7;
+        if (_e34 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e37 = aliasing;
-            aliasing = (_e37 * q_1);
+            let _e37 = c_max;
+            let _e38 = k_7;
+            c_max = max(_e37, abs(c_4[_e38]));
         }
         continuing {
-            let _e40 = i_7;
-            i_7 = (_e40 + 1u);
+            let _e43 = k_7;
+            k_7 = (_e43 + 1u);
+        }
+    }
+    let _e47 = c_max;
+    let power = select(1u, 0u, (_e47 > (1.2f * abs(c_4[0]))));
+    loop {
+        let _e58 = i_7;
+        if (_e58 < power) {
+        } else {
+            break;
+        }
+        {
+            let _e60 = aliasing;
+            aliasing = (_e60 * q_1);
+        }
+        continuing {
+            let _e63 = i_7;
+            i_7 = (_e63 + 1u);
         }
     }
     let truncation = ((q_1 * max(abs(m_1[3]), abs(m_1[2]))) / m_1[0]);
-    let _e50 = aliasing;
-    return min((_e50 + truncation), 1f);
+    let _e73 = aliasing;
+    return min((_e73 + truncation), 1f);
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -1230,7 +1250,7 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     var g_avg: f32 = 0f;
     var i_8: u32 = 0u;
     var sum_5: f32 = 0f;
-    var k_7: u32 = 0u;
+    var k_8: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
     r_1 = ((b_4 - a_5) * 0.5f);
@@ -1280,20 +1300,20 @@ fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, ha
     let _e77 = r_1;
     let _e79 = airlight_exp_legendre_moments((half_4.big_h * _e77));
     loop {
-        let _e84 = k_7;
+        let _e84 = k_8;
         if (_e84 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
             let _e87 = sum_5;
-            let _e88 = k_7;
-            let _e90 = k_7;
+            let _e88 = k_8;
+            let _e90 = k_8;
             sum_5 = (_e87 + (_e75[_e88] * _e79[_e90]));
         }
         continuing {
-            let _e95 = k_7;
-            k_7 = (_e95 + 1u);
+            let _e95 = k_8;
+            k_8 = (_e95 + 1u);
         }
     }
     let _e97 = airlight_factor(half_4, a_5, b_4);
@@ -1381,14 +1401,14 @@ fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, ha
 
 fn airlight_legendre_to_monomial(c_5: array<f32, 4>) -> array<f32, 4> {
     var hat: array<f32, 4>;
-    var k_8: u32 = 0u;
+    var k_9: u32 = 0u;
     var i_10: u32;
 
     let _e1 = airlight_legendre_monomial();
     let _e2 = airlight_zero_terms();
     hat = _e2;
     loop {
-        let _e6 = k_8;
+        let _e6 = k_9;
         if (_e6 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1397,7 +1417,7 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 4>) -> array<f32, 4> {
             i_10 = 0u;
             loop {
                 let _e11 = i_10;
-                let _e12 = k_8;
+                let _e12 = k_9;
                 if (_e11 <= _e12) {
                 } else {
                     break;
@@ -1405,8 +1425,8 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 4>) -> array<f32, 4> {
                 {
                     let _e14 = i_10;
                     let _e16 = hat[_e14];
-                    let _e17 = k_8;
-                    let _e19 = k_8;
+                    let _e17 = k_9;
+                    let _e19 = k_9;
                     let _e22 = i_10;
                     hat[_e14] = (_e16 + (c_5[_e17] * _e1[((_e19 * AIRLIGHT_TERMS) + _e22)]));
                 }
@@ -1417,8 +1437,8 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 4>) -> array<f32, 4> {
             }
         }
         continuing {
-            let _e31 = k_8;
-            k_8 = (_e31 + 1u);
+            let _e31 = k_9;
+            k_9 = (_e31 + 1u);
         }
     }
     let _e33 = hat;
@@ -1444,12 +1464,12 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     var mass_2: f32 = 0f;
     var ratio_1: f32 = 1f;
     var ab: f32 = 0f;
-    var k_9: u32 = 0u;
+    var k_10: u32 = 0u;
     var tail: f32;
     var l_prev: f32 = 0f;
     var l_cur: f32 = 1f;
     var spread: f32 = 0f;
-    var k_10: u32 = 0u;
+    var k_11: u32 = 0u;
 
     let _e6 = airlight_gauss_rule();
     let r_5 = ((b_6 - a_7) * 0.5f);
@@ -1566,7 +1586,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
         ab = (a_7 / b_6);
     }
     loop {
-        let _e151 = k_9;
+        let _e151 = k_10;
         if (_e151 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1577,20 +1597,20 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             if (_e156 > 0f) {
                 let _e159 = decay;
                 let _e161 = ratio_1;
-                let _e163 = k_9;
+                let _e163 = k_10;
                 let _e167 = s_a[(_e163 + 1u)];
                 tail = (((_e159 * a_7) * _e161) * _e167);
             }
-            let _e169 = k_9;
+            let _e169 = k_10;
             let _e173 = s_b[(_e169 + 1u)];
             let _e175 = tail;
             let u = ((b_6 * _e173) - _e175);
-            let _e177 = k_9;
+            let _e177 = k_10;
             if (_e177 == 0u) {
                 mass_2 = u;
             }
             let _e180 = sum_6;
-            let _e181 = k_9;
+            let _e181 = k_10;
             let _e183 = q[_e181];
             sum_6 = (_e180 + (_e183 * u));
             let _e186 = ratio_1;
@@ -1598,8 +1618,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             ratio_1 = (_e186 * _e187);
         }
         continuing {
-            let _e190 = k_9;
-            k_9 = (_e190 + 1u);
+            let _e190 = k_10;
+            k_10 = (_e190 + 1u);
         }
     }
     let _e192 = airlight_factor(half_6, a_7, b_6);
@@ -1607,7 +1627,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     mass_2 = (_e193 * _e192);
     let x_16 = (abs(alpha) + abs(beta));
     loop {
-        let _e206 = k_10;
+        let _e206 = k_11;
         if (_e206 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1615,9 +1635,9 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
         {
             let _e209 = spread;
             let _e210 = l_cur;
-            let _e211 = k_10;
+            let _e211 = k_11;
             spread = (_e209 + (_e210 * abs(_e54[_e211])));
-            let _e216 = k_10;
+            let _e216 = k_11;
             let kf_2 = f32(_e216);
             let _e222 = l_cur;
             let _e224 = l_prev;
@@ -1627,8 +1647,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
             l_cur = next_1;
         }
         continuing {
-            let _e232 = k_10;
-            k_10 = (_e232 + 1u);
+            let _e232 = k_11;
+            k_11 = (_e232 + 1u);
         }
     }
     let _e234 = mass_2;
@@ -1843,15 +1863,15 @@ fn airlight_bounded(a_9: f32) -> f32 {
     return (1f / (a_9 + _e1));
 }
 
-fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_11: f32) -> vec2<f32> {
+fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_12: f32) -> vec2<f32> {
     var local_17: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_11 + (sigma_7 * d_el));
+    let a0_ = (k_12 + (sigma_7 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_11 - (sigma_7 * d_el));
+    let c0_ = (k_12 - (sigma_7 * d_el));
     let scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale > 0f))) {
         let _e21 = airlight_is_finite(scale);
@@ -2193,7 +2213,7 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_2 = (v_s + inv_h);
     let r_6 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_6) / 0.000000000011920929f)));
+    let e_1 = (1f + log(((8f * r_6) / (0.00001f * 0.0001f))));
     return (e_1 * inv_h);
 }
 

@@ -779,8 +779,12 @@ fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_T
     let before = abs(c[AIRLIGHT_TERMS - 3u]) + abs(c[AIRLIGHT_TERMS - 4u]);
     if (!(before > 0.0) || !(last < before)) { return 1.0; }
     let q = sqrt(last / before);
+    // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end (panels.rs)
+    var c_max = 0.0;
+    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { c_max = max(c_max, abs(c[k])); }
+    let power = select(AIRLIGHT_TERMS / 4u, AIRLIGHT_TERMS / 6u, c_max > 1.2 * abs(c[0]));
     var aliasing = 1.0;
-    for (var i = 0u; i < AIRLIGHT_TERMS / 4u; i++) { aliasing *= q; }
+    for (var i = 0u; i < power; i++) { aliasing *= q; }
     let truncation = q * max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u])) / m[0];
     return min(aliasing + truncation, 1.0);
 }
@@ -1199,13 +1203,14 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
     return airlight_weighted(s.sigma_s, s.intensity, h, x, j);
 }
 
-/// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(ε·τ)) over H > 0
-/// (combined.rs::cut_length, where the bound is derived).
+/// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(δ·τ)) over H > 0,
+/// δ = max(tolerance/10, ε) (combined.rs::cut_length, where the bound is derived).
 fn airlight_cut_length(big_h: f32, v_s: f32) -> f32 {
     let inv_h = 1.0 / big_h;
     let w = v_s + inv_h;
     let r = (1.0 + w * w) / (1.0 + v_s * v_s);
-    let e = 1.0 + log(8.0 * r / (AIRLIGHT_FLT_EPS * AIRLIGHT_PANEL_FLOOR));
+    let delta = max(AIRLIGHT_PANEL_TOLERANCE * 0.1, AIRLIGHT_FLT_EPS);
+    let e = 1.0 + log(8.0 * r / (delta * max(AIRLIGHT_PANEL_FLOOR, AIRLIGHT_FLT_EPS)));
     return e * inv_h;
 }
 
