@@ -232,7 +232,7 @@ struct Listed<T> {
 /// with the largest `|K − G|` until their sum is at most `tolerance` of the sum of the values (the
 /// integrand is non-negative), or `max_panels` panels are held; the sum and the panels
 /// evaluated.
-fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
+pub(crate) fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
     let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero() }; MAX_SEGMENT_PANELS];
     let max_panels = max_panels.clamp(edges.len() - 1, MAX_SEGMENT_PANELS);
     let evaluate = |f: &mut dyn FnMut(T) -> T, a: T, b: T| {

@@ -48,6 +48,7 @@
 #![no_std]
 #![warn(missing_docs)]
 
+pub mod area;
 pub mod combined;
 pub mod error;
 pub mod expansion;
@@ -64,8 +65,10 @@ mod real;
 mod scalar;
 pub mod scene;
 pub mod special;
+pub mod surface;
 
 pub use glam;
+pub use area::{AreaLight, AreaScene, Emitter};
 pub use error::{ErrorKind, InputError};
 pub use expansion::Expansion;
 pub use extended::{SegmentLight, SegmentScene};
@@ -74,4 +77,5 @@ pub use phase::PhaseFunction;
 pub use precision::{f32, f64};
 pub use real::Real;
 pub use scalar::Scalar;
+pub use surface::{Brdf, Surface, SurfaceScene};
 pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_TERMS};

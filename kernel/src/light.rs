@@ -144,6 +144,34 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
     }
 }
 
+/// A flat emitter's element of uniform radiance: `D = max(0, c)` about its normal (Lambert's
+/// cosine law, emitting on the side the axis points to). Used by the area lights
+/// ([`crate::area`]); its one kink, `c = 0`, is where a ray crosses the emitter's plane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lambertian<T: Real> {
+    /// The normal of the emitting side.
+    pub axis: T::Vec3,
+}
+
+impl<T: Real> LightDistribution<T> for Lambertian<T> {
+    fn axis(&self) -> [T; 3] {
+        T::vec3_to_array(self.axis)
+    }
+    fn eval<S: Scalar<T>>(&self, c: S) -> S {
+        if c.value() > T::zero() {
+            c
+        } else {
+            S::cst(T::zero())
+        }
+    }
+    fn kinks(&self) -> [Option<T>; 2] {
+        [Some(T::zero()), None]
+    }
+    fn validate(&self) -> Result<(), InputError> {
+        check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)
+    }
+}
+
 /// Any of the built-in distributions, chosen at run time.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum AnyDistribution<T: Real> {

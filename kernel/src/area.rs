@@ -1,0 +1,384 @@
+//! Area lights: a disc and a parallelogram (rectangle) of uniform radiance, as the integral
+//! over the emitter of the point-light kernel (docs/DESIGN.md §12; Packard 2004
+//! integrates area lights over the emitter in the same way).
+//!
+//! An emitter of radiance `L_e` is a surface of Lambertian elements: `dA` at `q` with normal
+//! `n(q)` is a point light of intensity `L_e dA` and distribution `max(0, n·ω)`
+//! ([`Lambertian`]), so `L = ∫_A L_point(q) dA(q)`, `L_point` the point light of intensity `L_e`
+//! ([`Scene::in_scatter`]). Near the ray's line `L_point ∝ 1/ρ` (`ρ` the distance from `q` to
+//! it): integrable over an area, so a ray through the emitter sees a finite glow, but a peak.
+//! So the emitter is taken in polar coordinates about its point nearest the ray segment, the
+//! focus `f` (`dA = r dr dψ` cancels a `1/ρ` at `f`), with `r = ρ₀ sinh w` where the focus is
+//! within a quarter of the emitter's size from the ray (`ρ₀`: their distance; `dr/ρ` is then
+//! smooth in `w`); a rectangle as the triangles from `f` to its edges. All elements of a flat
+//! emitter share its plane, so the part of the ray each one lights is the same: `L_point` has
+//! no kinks over the emitter. Both levels are globally adaptive Gauss–Kronrod (QUADPACK's QAG,
+//! as [`crate::extended`]), the inner to a tenth of the outer tolerance, each point light to a
+//! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
+
+use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
+use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::geometry::{dot, length, normalize, sub};
+use crate::light::{Lambertian, Omni};
+use crate::panels::Control;
+use crate::phase::PhaseFunction;
+use crate::real::Real;
+use crate::scene::{default_control, validate, Medium, PointLight, Ray, Scene};
+
+/// The shape of an area light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Emitter<T: Real> {
+    /// A disc emitting on the side its normal points to.
+    Disc {
+        /// Centre.
+        center: T::Vec3,
+        /// Normal of the emitting side (any length but zero).
+        normal: T::Vec3,
+        /// Radius `≥ 0`.
+        radius: T,
+    },
+    /// The parallelogram `corner + u·edge_u + v·edge_v`, `u, v ∈ [0, 1]`, emitting on the side
+    /// of `edge_u × edge_v` (a rectangle when the edges are perpendicular).
+    Rectangle {
+        /// One corner.
+        corner: T::Vec3,
+        /// The first edge from it.
+        edge_u: T::Vec3,
+        /// The second edge from it (not parallel to the first).
+        edge_v: T::Vec3,
+    },
+}
+
+/// An area light: an emitter of uniform radiance `L_e` (Lambertian).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaLight<T: Real> {
+    /// The shape.
+    pub emitter: Emitter<T>,
+    /// Radiance `L_e ≥ 0` of every point, in every direction of its emitting side.
+    pub radiance: T,
+}
+
+/// The most Gauss–Kronrod panels of each of the two integrals over the emitter.
+pub const MAX_AREA_PANELS: usize = 48;
+
+/// The default relative tolerance of the outer integral's estimate: a tenth of the precision's
+/// target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
+pub fn area_tolerance<T: Real>() -> T {
+    T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
+}
+
+/// A validated scene with an area light.
+#[derive(Clone, Copy, Debug)]
+pub struct AreaScene<T: Real, P> {
+    ray: Ray<T>,
+    light: AreaLight<T>,
+    medium: Medium<T>,
+    phase: P,
+}
+
+fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn axpy<T: Real>(p: [T; 3], s: T, v: [T; 3]) -> [T; 3] {
+    [p[0] + s * v[0], p[1] + s * v[1], p[2] + s * v[2]]
+}
+
+/// Two unit vectors completing the unit `n` to a right-handed orthonormal frame.
+fn basis<T: Real>(n: [T; 3]) -> ([T; 3], [T; 3]) {
+    let k = if n[0].abs() <= n[1].abs() && n[0].abs() <= n[2].abs() {
+        0
+    } else if n[1].abs() <= n[2].abs() {
+        1
+    } else {
+        2
+    };
+    let mut u = [T::zero(); 3];
+    u[k] = T::one();
+    let a1 = normalize(cross(u, n));
+    (a1, cross(n, a1))
+}
+
+impl<T, P> AreaScene<T, P>
+where
+    T: Real,
+    P: PhaseFunction<T> + Clone,
+{
+    /// Validates and builds a scene.
+    ///
+    /// # Errors
+    /// [`InputError`] naming the first invalid field: `light.center`, `light.normal` (also zero),
+    /// `light.radius` (negative or non-finite), `light.corner`, `light.edge_u`, `light.edge_v`
+    /// (also zero or parallel to `edge_u`), `light.radiance`, then the ray, medium and phase
+    /// function as [`Scene::new`] names them.
+    pub fn new(ray: Ray<T>, light: AreaLight<T>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
+        let anchor = match light.emitter {
+            Emitter::Disc { center, normal, radius } => {
+                check_vector(T::vec3_to_array(center), "light.center", false)?;
+                check_vector(T::vec3_to_array(normal), "light.normal", true)?;
+                check_non_negative(radius, "light.radius")?;
+                center
+            }
+            Emitter::Rectangle { corner, edge_u, edge_v } => {
+                check_vector(T::vec3_to_array(corner), "light.corner", false)?;
+                check_vector(T::vec3_to_array(edge_u), "light.edge_u", true)?;
+                check_vector(T::vec3_to_array(edge_v), "light.edge_v", true)?;
+                let (u, v) = (normalize(T::vec3_to_array(edge_u)), normalize(T::vec3_to_array(edge_v)));
+                if !(length(cross(u, v)) > T::epsilon()) {
+                    return Err(InputError::new("light.edge_v", ErrorKind::ZeroVector));
+                }
+                corner
+            }
+        };
+        check_non_negative(light.radiance, "light.radiance")?;
+        let point = PointLight { position: anchor, intensity: light.radiance, distribution: Omni };
+        validate(&ray, &point, &medium, &phase)?;
+        Ok(AreaScene { ray, light, medium, phase })
+    }
+
+    /// The ray.
+    pub fn ray(&self) -> &Ray<T> {
+        &self.ray
+    }
+    /// The area light.
+    pub fn light(&self) -> &AreaLight<T> {
+        &self.light
+    }
+    /// The medium.
+    pub fn medium(&self) -> &Medium<T> {
+        &self.medium
+    }
+    /// The phase function.
+    pub fn phase(&self) -> &P {
+        &self.phase
+    }
+
+    /// In-scattered radiance of the area light, error-controlled to [`area_tolerance`].
+    pub fn in_scatter(&self) -> T {
+        self.in_scatter_counted(area_tolerance()).0
+    }
+
+    /// The same to a relative tolerance of the outer estimate, and the point lights evaluated.
+    pub fn in_scatter_counted(&self, tolerance: T) -> (T, usize) {
+        if self.light.radiance == T::zero() || self.medium.sigma_s == T::zero() {
+            return (T::zero(), 0);
+        }
+        let o = T::vec3_to_array(self.ray.origin);
+        let d = normalize(T::vec3_to_array(self.ray.dir));
+        let (t0, t1) = (self.ray.t_min, self.ray.t_max);
+        // the ray segment's point nearest to x
+        let nearest = |x: [T; 3]| {
+            let t = dot(sub(x, o), d).max(t0).min(t1);
+            axpy(o, t, d)
+        };
+        let inner = Control { tolerance: (tolerance * T::lit(0.1)).max(T::lit(T::PANEL_TOLERANCE)), ..default_control() };
+        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
+        let inner_tolerance = tolerance * T::lit(0.1);
+        let mut evaluated = 0;
+        let mut point = |q: [T; 3], n: [T; 3]| -> T {
+            evaluated += 1;
+            let light = PointLight { position: T::vec3_from_array(q), intensity: self.light.radiance, distribution: Lambertian { axis: T::vec3_from_array(n) } };
+            match Scene::new(self.ray, light, self.medium, self.phase.clone()) {
+                Ok(scene) => scene.in_scatter_controlled(inner).0,
+                Err(_) => T::zero(),
+            }
+        };
+        let value = match self.light.emitter {
+            Emitter::Disc { center, normal, radius } => {
+                if !(radius > T::zero()) {
+                    return (T::zero(), 0);
+                }
+                let (c, n) = (T::vec3_to_array(center), normalize(T::vec3_to_array(normal)));
+                let (a1, a2) = basis(n);
+                // the focus: the plane's point nearest the ray segment, drawn into the disc
+                let f = project(nearest(pierce(o, d, t0, t1, c, n).unwrap_or(c)), c, n);
+                let off = sub(f, c);
+                let dist = length(off);
+                let f = if dist > radius { axpy(c, radius / dist, off) } else { f };
+                let off = sub(f, c);
+                let k = dot(off, off) - radius * radius;
+                // r to the circle along e: the positive root of r² + 2br + k = 0, b = off·e
+                let r_max = |e: [T; 3]| {
+                    let b = dot(off, e);
+                    let disc = (b * b - k).max(T::zero()).sqrt();
+                    if b > T::zero() {
+                        (-k / (b + disc)).max(T::zero())
+                    } else {
+                        disc - b
+                    }
+                };
+                // on the rim only the half-plane towards the centre holds the disc
+                let (lo, hi) = if k >= -(T::epsilon() * radius * radius) && dist > T::zero() {
+                    let towards = (-dot(off, a2)).atan2(-dot(off, a1));
+                    (towards - T::FRAC_PI_2(), towards + T::FRAC_PI_2())
+                } else {
+                    (T::zero(), T::PI() + T::PI())
+                };
+                let rho0 = length(sub(f, nearest(f)));
+                polar(rule, &mut point, f, n, a1, a2, &[lo, hi], &|e| r_max(e), rho0, radius, tolerance, inner_tolerance)
+            }
+            Emitter::Rectangle { corner, edge_u, edge_v } => {
+                let (p0, eu, ev) = (T::vec3_to_array(corner), T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
+                let n = normalize(cross(eu, ev));
+                let (a1, a2) = basis(n);
+                // the focus: the plane's point nearest the ray segment, clamped into [0, 1]²
+                let x = project(nearest(pierce(o, d, t0, t1, p0, n).unwrap_or(axpy(axpy(p0, T::lit(0.5), eu), T::lit(0.5), ev))), p0, n);
+                let w = sub(x, p0);
+                // (u, v) by the dual basis of (eu, ev) in the plane
+                let (uu, uv, vv) = (dot(eu, eu), dot(eu, ev), dot(ev, ev));
+                let det = uu * vv - uv * uv;
+                let (wu, wv) = (dot(w, eu), dot(w, ev));
+                let clamp = |x: T| x.max(T::zero()).min(T::one());
+                let (u, v) = (clamp((wu * vv - wv * uv) / det), clamp((wv * uu - wu * uv) / det));
+                let f = axpy(axpy(p0, u, eu), v, ev);
+                let corners = [p0, axpy(p0, T::one(), eu), axpy(axpy(p0, T::one(), eu), T::one(), ev), axpy(p0, T::one(), ev)];
+                let angle = |p: [T; 3]| {
+                    let q = sub(p, f);
+                    dot(q, a2).atan2(dot(q, a1))
+                };
+                // the triangles (f, C_i, C_{i+1}) that have an area, as ψ ranges, each with the
+                // edge it reaches: its outward normal m and distance h = (C_i − f)·m
+                let mut edges = [T::zero(); 5];
+                let mut lines = [([T::zero(); 3], T::zero()); 4];
+                let mut count = 0;
+                let mut start = T::zero();
+                let line = |i: usize| {
+                    let (ci, cj) = (corners[i % 4], corners[(i + 1) % 4]);
+                    let m = normalize(cross(sub(cj, ci), n));
+                    (ci, cj, m, dot(sub(ci, f), m))
+                };
+                let thin = T::epsilon() * (uu.max(vv)).sqrt();
+                // start after a triangle without area (f on its edge), so that the others follow
+                // each other around f without a gap
+                let first = (0..4).find(|&i| !(line(i + 3).3 > thin)).unwrap_or(0);
+                for i in first..first + 4 {
+                    let (ci, cj, m, h) = line(i);
+                    if !(h > thin) {
+                        continue;
+                    }
+                    let (mut psi_i, mut psi_j) = (angle(ci), angle(cj));
+                    if count == 0 {
+                        start = psi_i;
+                    }
+                    // unwrap: increasing from the first triangle's start
+                    while psi_i < start - T::lit(1e-9) {
+                        psi_i = psi_i + T::PI() + T::PI();
+                    }
+                    while psi_j <= psi_i {
+                        psi_j = psi_j + T::PI() + T::PI();
+                    }
+                    if count == 0 {
+                        edges[0] = psi_i;
+                    }
+                    edges[count + 1] = psi_j;
+                    lines[count] = (m, h);
+                    count += 1;
+                }
+                if count == 0 {
+                    return (T::zero(), 0);
+                }
+                let r_max = |e: [T; 3], psi: T| {
+                    // the triangle holding ψ
+                    let mut i = 0;
+                    while i + 1 < count && psi > edges[i + 1] {
+                        i += 1;
+                    }
+                    let (m, h) = lines[i];
+                    let c = dot(e, m);
+                    if c > T::zero() {
+                        h / c
+                    } else {
+                        T::zero()
+                    }
+                };
+                let size = (uu.max(vv)).sqrt();
+                let rho0 = length(sub(f, nearest(f)));
+                polar_indexed(rule, &mut point, f, n, a1, a2, &edges[..=count], &r_max, rho0, size, tolerance, inner_tolerance)
+            }
+        };
+        (value, evaluated)
+    }
+}
+
+/// Where the ray's line meets the plane through `c` with unit normal `n` (`None`: parallel),
+/// as the ray segment's point nearest to that meeting point (`t` clamped into `[t0, t1]`).
+fn pierce<T: Real>(o: [T; 3], d: [T; 3], t0: T, t1: T, c: [T; 3], n: [T; 3]) -> Option<[T; 3]> {
+    let dn = dot(d, n);
+    if !(dn.abs() > T::epsilon()) {
+        return None;
+    }
+    let t = (dot(sub(c, o), n) / dn).max(t0).min(t1);
+    t.is_finite().then(|| axpy(o, t, d))
+}
+
+/// `x` projected onto the plane through `c` with unit normal `n`.
+fn project<T: Real>(x: [T; 3], c: [T; 3], n: [T; 3]) -> [T; 3] {
+    axpy(x, -dot(sub(x, c), n), n)
+}
+
+/// `∫∫ point(f + r e_ψ) r dr dψ` over `ψ` between `edges` and `r ∈ [0, r_max(e_ψ)]`, `e_ψ =
+/// cos ψ a₁ + sin ψ a₂`; `r = ρ₀ sinh w` when the ray passes within a quarter of `size` of `f`.
+#[allow(clippy::too_many_arguments)]
+fn polar<T: Real>(
+    rule: &[(f64, f64, f64)],
+    point: &mut impl FnMut([T; 3], [T; 3]) -> T,
+    f: [T; 3],
+    n: [T; 3],
+    a1: [T; 3],
+    a2: [T; 3],
+    edges: &[T],
+    r_max: &dyn Fn([T; 3]) -> T,
+    rho0: T,
+    size: T,
+    tolerance: T,
+    inner_tolerance: T,
+) -> T {
+    polar_indexed(rule, point, f, n, a1, a2, edges, &|e, _| r_max(e), rho0, size, tolerance, inner_tolerance)
+}
+
+/// [`polar`] with `r_max` also given `ψ`.
+#[allow(clippy::too_many_arguments)]
+fn polar_indexed<T: Real>(
+    rule: &[(f64, f64, f64)],
+    point: &mut impl FnMut([T; 3], [T; 3]) -> T,
+    f: [T; 3],
+    n: [T; 3],
+    a1: [T; 3],
+    a2: [T; 3],
+    edges: &[T],
+    r_max: &dyn Fn([T; 3], T) -> T,
+    rho0: T,
+    size: T,
+    tolerance: T,
+    inner_tolerance: T,
+) -> T {
+    let scale = if rho0 < size * T::lit(0.25) { rho0.max(size * T::epsilon()) } else { T::zero() };
+    // each ψ range in quarters at most π/2 wide, so that the outer rule starts resolved
+    let mut knots = [T::zero(); 24];
+    let mut count = 0;
+    for pair in edges.windows(2) {
+        let parts = ((pair[1] - pair[0]) / T::FRAC_PI_2()).ceil().max(T::one()).min(T::lit(4.0)).to_usize().unwrap_or(1);
+        for j in 0..parts {
+            if count < knots.len() - 1 {
+                knots[count] = pair[0] + (pair[1] - pair[0]) * T::from(j).unwrap_or(T::zero()) / T::from(parts).unwrap_or(T::one());
+                count += 1;
+            }
+        }
+    }
+    knots[count] = edges[edges.len() - 1];
+    let mut outer = |psi: T| {
+        let (s, c) = psi.sin_cos();
+        let e: [T; 3] = core::array::from_fn(|i| c * a1[i] + s * a2[i]);
+        let reach = r_max(e, psi);
+        if !(reach > T::zero()) {
+            return T::zero();
+        }
+        let mut radial = |w: T| {
+            let (r, dr) = if scale > T::zero() { (scale * w.sinh(), scale * w.cosh()) } else { (w, T::one()) };
+            point(axpy(f, r, e), n) * r * dr
+        };
+        let w_hi = if scale > T::zero() { (reach / scale).asinh() } else { reach };
+        adaptive(rule, &mut radial, &[T::zero(), w_hi], inner_tolerance, MAX_AREA_PANELS).0
+    };
+    adaptive(rule, &mut outer, &knots[..=count], tolerance, MAX_AREA_PANELS).0
+}

@@ -1,0 +1,426 @@
+//! Surface radiance from air-light: the light the medium scatters onto a surface point from
+//! every direction of its hemisphere (Sun et al. 2005; Hong 2006, §4.2.2; docs/DESIGN.md §11),
+//! as the crate's own ray integral integrated over the hemisphere.
+//!
+//! At a surface point `s` with unit normal `n`,
+//! `L_{p,a} = ∫_{n·ω>0} L_a(s, ω) f_r(ω) (n·ω) dω`, where `L_a(s, ω)` is the in-scattered
+//! radiance along the ray from `s` in direction `ω`, `t ∈ [0, ∞)` ([`Scene::in_scatter`]) and
+//! `f_r` the BRDF ([`Brdf`]). Directions are written about the light's direction `ℓ` from
+//! `s`: `ω = cos γ ℓ + sin γ (cos φ e₁ + sin φ e₂)`, `dω = sin γ dγ dφ`. Then
+//! * `L_a` grows like `1/sin γ` towards the light (the ray passes the light at `h = d sin γ`),
+//!   which `sin γ` cancels: the integrand is bounded;
+//! * for a light without an axis (omni) `L_a` depends on `γ` alone, and the inner integral is
+//!   `L_a(γ)` times the BRDF's `∫ f_r (n·ω)⁺ dφ` (for Lambert in closed form:
+//!   `∫_{−ψ}^{ψ} (A + B cos x) dx = 2(Aψ + B sin ψ)`);
+//! * `(n·ω)⁺ = (A + B cos(φ − φ_n))⁺` with `A = cos γ (n·ℓ)`, `B = sin γ |n − (n·ℓ)ℓ|`: the arc
+//!   of the hemisphere at `γ` is `|φ − φ_n| < ψ = arccos(−A/B)`; it is the whole circle below
+//!   `γ = |π/2 − α_n|` (or empty) and changes kind again at `π − |π/2 − α_n|`, `α_n` the
+//!   angle between `n` and `ℓ`: the outer integral is split there. A Phong lobe `(r·ω)⁺ⁿ` adds
+//!   its own arc, its peak `γ = α_r` and its arc's turning points.
+//!
+//! Both integrals are globally adaptive Gauss–Kronrod (QUADPACK's QAG, as
+//! [`crate::extended`]), the inner to a tenth of the outer tolerance, each ray integral
+//! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
+
+use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
+use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::geometry::{dot, length, normalize, sub};
+use crate::light::LightDistribution;
+use crate::panels::Control;
+use crate::phase::PhaseFunction;
+use crate::real::Real;
+use crate::scene::{default_control, validate, Medium, PointLight, Ray, Scene};
+
+/// The surface's reflectance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Brdf<T: Real> {
+    /// Lambertian: `f_r = albedo/π`.
+    Lambert {
+        /// Albedo `ρ ≥ 0`.
+        albedo: T,
+    },
+    /// A normalised Phong lobe about the mirror direction:
+    /// `f_r(ω) = k_s (n + 2)/(2π) · max(0, r·ω)ⁿ`, `r` the mirror image of `view` about the
+    /// normal.
+    Phong {
+        /// Specular coefficient `k_s ≥ 0`.
+        k_s: T,
+        /// Exponent `n ≥ 0`.
+        exponent: T,
+        /// From the surface towards the eye (any non-zero length).
+        view: T::Vec3,
+    },
+}
+
+/// A surface point and its normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface<T: Real> {
+    /// The point `s`.
+    pub position: T::Vec3,
+    /// Its normal (any non-zero length; the lit side is the one it points to).
+    pub normal: T::Vec3,
+}
+
+/// The most Gauss–Kronrod panels of each of the two integrals over the hemisphere.
+pub const MAX_SURFACE_PANELS: usize = 48;
+
+/// The default relative tolerance of the outer integral's estimate: a tenth of the precision's
+/// target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
+pub fn surface_tolerance<T: Real>() -> T {
+    T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
+}
+
+/// A validated surface point lit by air-light of a point light.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceScene<T: Real, D, P> {
+    surface: Surface<T>,
+    brdf: Brdf<T>,
+    light: PointLight<T, D>,
+    medium: Medium<T>,
+    phase: P,
+}
+
+/// The frame about the light's direction and the cosines the hemisphere's arcs need.
+struct Frame<T> {
+    /// Distance to the light and its direction `ℓ`, with `e₁, e₂ ⊥ ℓ`.
+    d: T,
+    l: [T; 3],
+    e1: [T; 3],
+    e2: [T; 3],
+    /// The normal's and the mirror direction's `(cos α, sin α, φ)` about `ℓ`.
+    n: (T, T, T),
+    r: (T, T, T),
+    /// The mirror direction (Phong).
+    r_dir: [T; 3],
+}
+
+/// `(cos α, sin α, φ)` of a unit vector `v` in the frame `(ℓ, e₁, e₂)`.
+fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3]) -> (T, T, T) {
+    let (c, x, y) = (dot(v, l), dot(v, e1), dot(v, e2));
+    (c, x.hypot(y), y.atan2(x))
+}
+
+/// The arc `|φ − φ_c| < ψ` where `cos α cos γ + sin α sin γ cos(φ − φ_c) > 0`, as `ψ ∈ [0, π]`.
+fn half_arc<T: Real>((cos_a, sin_a, _): (T, T, T), cos_g: T, sin_g: T) -> T {
+    let (a, b) = (cos_a * cos_g, sin_a * sin_g);
+    if b <= a.abs() {
+        return if a > T::zero() { T::PI() } else { T::zero() };
+    }
+    (-a / b).max(-T::one()).min(T::one()).acos()
+}
+
+impl<T, D, P> SurfaceScene<T, D, P>
+where
+    T: Real,
+    D: LightDistribution<T> + Clone,
+    P: PhaseFunction<T> + Clone,
+{
+    /// Validates and builds a scene.
+    ///
+    /// # Errors
+    /// [`InputError`] naming the first invalid field: `surface.position`, `surface.normal` (also
+    /// zero), `brdf.albedo`, `brdf.k_s`, `brdf.exponent` (negative or non-finite), `brdf.view`
+    /// (also zero), then the light, medium and phase function as [`Scene::new`] names them.
+    pub fn new(surface: Surface<T>, brdf: Brdf<T>, light: PointLight<T, D>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
+        check_vector(T::vec3_to_array(surface.position), "surface.position", false)?;
+        check_vector(T::vec3_to_array(surface.normal), "surface.normal", true)?;
+        match brdf {
+            Brdf::Lambert { albedo } => check_non_negative(albedo, "brdf.albedo")?,
+            Brdf::Phong { k_s, exponent, view } => {
+                check_non_negative(k_s, "brdf.k_s")?;
+                check_non_negative(exponent, "brdf.exponent")?;
+                check_vector(T::vec3_to_array(view), "brdf.view", true)?;
+            }
+        }
+        // the rays start at the surface point: their fields are valid by the checks above
+        let ray = Ray { origin: surface.position, dir: surface.normal, t_min: T::zero(), t_max: T::infinity() };
+        validate(&ray, &light, &medium, &phase)?;
+        check_finite(light.intensity, "light.intensity")?;
+        if length(sub(T::vec3_to_array(light.position), T::vec3_to_array(surface.position))).is_infinite() {
+            return Err(InputError::new("light.position", ErrorKind::NonFinite));
+        }
+        Ok(SurfaceScene { surface, brdf, light, medium, phase })
+    }
+
+    /// The surface point.
+    pub fn surface(&self) -> &Surface<T> {
+        &self.surface
+    }
+    /// The BRDF.
+    pub fn brdf(&self) -> &Brdf<T> {
+        &self.brdf
+    }
+    /// The point light.
+    pub fn light(&self) -> &PointLight<T, D> {
+        &self.light
+    }
+    /// The medium.
+    pub fn medium(&self) -> &Medium<T> {
+        &self.medium
+    }
+    /// The phase function.
+    pub fn phase(&self) -> &P {
+        &self.phase
+    }
+
+    /// `f_r(ω)` for a unit direction `ω` (without the hemisphere's clip).
+    fn brdf_at(&self, frame: &Frame<T>, w: [T; 3]) -> T {
+        match self.brdf {
+            Brdf::Lambert { albedo } => albedo * T::FRAC_1_PI(),
+            Brdf::Phong { k_s, exponent, .. } => {
+                let c = dot(frame.r_dir, w);
+                if c > T::zero() {
+                    k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * c.powf(exponent)
+                } else {
+                    T::zero()
+                }
+            }
+        }
+    }
+
+    fn frame(&self) -> Frame<T> {
+        let s = T::vec3_to_array(self.surface.position);
+        let to_light = sub(T::vec3_to_array(self.light.position), s);
+        let d = length(to_light);
+        let l = to_light.map(|x| x / d);
+        // e₁: ℓ × (the axis ℓ is least aligned with), e₂ = ℓ × e₁
+        let k = if l[0].abs() <= l[1].abs() && l[0].abs() <= l[2].abs() {
+            0
+        } else if l[1].abs() <= l[2].abs() {
+            1
+        } else {
+            2
+        };
+        let mut u = [T::zero(); 3];
+        u[k] = T::one();
+        let e1 = normalize(cross(l, u));
+        let e2 = cross(l, e1);
+        let n = normalize(T::vec3_to_array(self.surface.normal));
+        let r_dir = match self.brdf {
+            Brdf::Phong { view, .. } => {
+                let v = normalize(T::vec3_to_array(view));
+                let twice = T::lit(2.0) * dot(n, v);
+                normalize([twice * n[0] - v[0], twice * n[1] - v[1], twice * n[2] - v[2]])
+            }
+            Brdf::Lambert { .. } => n,
+        };
+        Frame { d, l, e1, e2, n: polar(n, l, e1, e2), r: polar(r_dir, l, e1, e2), r_dir }
+    }
+
+    /// Direct + air-light radiance leaving the surface towards the eye: the surface term of
+    /// paper eq. 7 (`e^{−σt d}/d² · I·D(c) · f_r(ℓ) · (n·ℓ)⁺`, `ℓ` towards the light at
+    /// distance `d`) plus [`SurfaceScene::air_light`].
+    pub fn radiance(&self) -> T {
+        self.direct() + self.air_light()
+    }
+
+    /// The surface term of paper eq. 7 alone (light reaching the point unscattered).
+    pub fn direct(&self) -> T {
+        let f = self.frame();
+        if !(f.d > T::zero()) {
+            return T::zero();
+        }
+        let cos = f.n.0.max(T::zero());
+        let c = -dot(f.l, normalize(self.light.distribution.axis()));
+        let emitted: T = self.light.distribution.eval(c);
+        (-self.medium.sigma_t * f.d).exp() / (f.d * f.d) * self.light.intensity * emitted * self.brdf_at(&f, f.l) * cos
+    }
+
+    /// Surface radiance from air-light, error-controlled to [`surface_tolerance`]. `+∞` when the
+    /// light sits on the surface point and `σs·I > 0`.
+    pub fn air_light(&self) -> T {
+        self.air_light_counted(surface_tolerance()).0
+    }
+
+    /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate, and the ray
+    /// integrals it evaluated.
+    pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
+        if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
+            return (T::zero(), 0);
+        }
+        let fr = self.frame();
+        if !(fr.d > T::zero()) {
+            return (T::infinity(), 0);
+        }
+        if let Brdf::Lambert { albedo } = self.brdf {
+            if albedo == T::zero() {
+                return (T::zero(), 0);
+            }
+        }
+        if let Brdf::Phong { k_s, .. } = self.brdf {
+            if k_s == T::zero() {
+                return (T::zero(), 0);
+            }
+        }
+        let inner_tolerance = tolerance * T::lit(0.1);
+        let control = Control { tolerance: inner_tolerance.max(T::lit(T::PANEL_TOLERANCE)), ..default_control() };
+        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
+        let omni = self.light.distribution.is_isotropic();
+        let phong = matches!(self.brdf, Brdf::Phong { .. });
+        let mut rays = 0;
+        // L_a along ω; 0 where the ray integral cannot be formed (not reached on valid input)
+        let mut along = |w: [T; 3]| {
+            rays += 1;
+            let ray = Ray { origin: self.surface.position, dir: T::vec3_from_array(w), t_min: T::zero(), t_max: T::infinity() };
+            match Scene::new(ray, self.light.clone(), self.medium, self.phase.clone()) {
+                Ok(scene) => scene.in_scatter_controlled(control).0,
+                Err(_) => T::zero(),
+            }
+        };
+        let direction = |cos_g: T, sin_g: T, phi: T| {
+            let (s, c) = phi.sin_cos();
+            core::array::from_fn(|i| cos_g * fr.l[i] + sin_g * (c * fr.e1[i] + s * fr.e2[i]))
+        };
+        let mut outer = |g: T| -> T {
+            let (sin_g, cos_g) = g.sin_cos();
+            let psi_n = half_arc(fr.n, cos_g, sin_g);
+            if !(psi_n > T::zero()) {
+                return T::zero();
+            }
+            let phi_n = fr.n.2;
+            let cosine = |phi: T| (fr.n.0 * cos_g + fr.n.1 * sin_g * (phi - phi_n).cos()).max(T::zero());
+            // the arc's ends, and a Phong lobe's ends and peak: the inner panels' edges
+            let mut edges = [T::zero(); 8];
+            let mut count = 0;
+            let mut push = |x: T| {
+                edges[count] = x;
+                count += 1;
+            };
+            if psi_n < T::PI() {
+                push(phi_n - psi_n);
+                push(phi_n + psi_n);
+            }
+            if phong {
+                let psi_r = half_arc(fr.r, cos_g, sin_g);
+                if !(psi_r > T::zero()) {
+                    return T::zero();
+                }
+                if psi_r < T::PI() {
+                    push(fr.r.2 - psi_r);
+                    push(fr.r.2 + psi_r);
+                }
+                push(fr.r.2);
+            }
+            let circle = sorted_circle(&mut edges[..count], phi_n);
+            // f_r (n·ω)⁺ at φ: its sign is constant between the edges, so a panel where it
+            // vanishes at the middle is skipped
+            let geometric = |phi: T| cosine(phi) * self.brdf_at(&fr, direction(cos_g, sin_g, phi));
+            let inner_sum = |f: &mut dyn FnMut(T) -> T| -> T {
+                let mut sum = T::zero();
+                for pair in circle.windows(2) {
+                    let (a, b) = (pair[0], pair[1]);
+                    if !(b > a) || !(geometric((a + b) * T::lit(0.5)) > T::zero()) {
+                        continue;
+                    }
+                    sum = sum + adaptive(rule, &mut |x| f(x), &[a, b], inner_tolerance, MAX_SURFACE_PANELS).0;
+                }
+                sum
+            };
+            let value = match (omni, self.brdf) {
+                (true, Brdf::Lambert { albedo }) => {
+                    // ∫ (A + B cos x)⁺ over the arc, closed form
+                    let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
+                    let arc = T::lit(2.0) * (a * psi_n + b * psi_n.sin());
+                    along(direction(cos_g, sin_g, phi_n)) * albedo * T::FRAC_1_PI() * arc
+                }
+                (true, _) => {
+                    let la = along(direction(cos_g, sin_g, phi_n));
+                    la * inner_sum(&mut |phi| geometric(phi))
+                }
+                (false, _) => inner_sum(&mut |phi| {
+                    let f = geometric(phi);
+                    if f > T::zero() {
+                        f * along(direction(cos_g, sin_g, phi))
+                    } else {
+                        T::zero()
+                    }
+                }),
+            };
+            value * sin_g
+        };
+        // outer edges: where the arcs change kind, the lobe's peak, where the arcs' ends meet
+        let mut cuts = [T::zero(); 8];
+        let mut count = 0;
+        let turning = |(cos_a, sin_a, _): (T, T, T)| {
+            let alpha = sin_a.atan2(cos_a);
+            let first = (T::FRAC_PI_2() - alpha).abs();
+            [first, T::PI() - first]
+        };
+        let mut push = |c: T| {
+            cuts[count] = c;
+            count += 1;
+        };
+        turning(fr.n).into_iter().for_each(&mut push);
+        if phong {
+            turning(fr.r).into_iter().for_each(&mut push);
+            push(fr.r.1.atan2(fr.r.0));
+            // the great circles n·ω = 0 and r·ω = 0 cross at ±u, u ∥ n × r
+            let n = normalize(T::vec3_to_array(self.surface.normal));
+            let u = cross(n, fr.r_dir);
+            let norm = length(u);
+            if norm > T::epsilon() {
+                let c = (dot(u, fr.l) / norm).max(-T::one()).min(T::one());
+                push(c.acos());
+                push(T::PI() - c.acos());
+            }
+        }
+        let cuts = &mut cuts[..count];
+        cuts.sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
+        let mut edges = [T::zero(); 10];
+        let mut n = 0;
+        for &c in cuts.iter() {
+            if c > edges[n] && c < T::PI() {
+                n += 1;
+                edges[n] = c;
+            }
+        }
+        n += 1;
+        edges[n] = T::PI();
+        // piece i of the outer variable x ∈ [i, i + 1] is γ = a + (b − a)(3t² − 2t³), t = x − i:
+        // where an arc opens or closes the inner integral goes like |γ − γ*|^{3/2}, smooth in t
+        let mut mapped = |x: T| {
+            let i = x.floor().to_usize().unwrap_or(0).min(n - 1);
+            let t = x - T::from(i).unwrap_or(T::zero());
+            let (a, b) = (edges[i], edges[i + 1]);
+            let g = a + (b - a) * t * t * (T::lit(3.0) - t - t);
+            let jacobian = (b - a) * T::lit(6.0) * t * (T::one() - t);
+            if jacobian > T::zero() {
+                outer(g) * jacobian
+            } else {
+                T::zero()
+            }
+        };
+        let mut knots = [T::zero(); 10];
+        for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
+            *k = T::from(i).unwrap_or(T::zero());
+        }
+        let (value, _) = adaptive(rule, &mut mapped, &knots[..=n], tolerance, MAX_SURFACE_PANELS);
+        (value, rays)
+    }
+}
+
+/// The edges `x` brought into `[φ₀ − π, φ₀ + π]` and sorted, with the circle's two ends
+/// `φ₀ ± π` (the point opposite `φ₀`, where no arc about `φ₀` ends) added: consecutive pairs
+/// tile the circle.
+fn sorted_circle<T: Real>(x: &mut [T], phi0: T) -> [T; 10] {
+    let two_pi = T::PI() + T::PI();
+    let mut out = [phi0 + T::PI(); 10];
+    out[0] = phi0 - T::PI();
+    for (i, v) in x.iter().enumerate() {
+        let mut y = *v;
+        while y < phi0 - T::PI() {
+            y = y + two_pi;
+        }
+        while y > phi0 + T::PI() {
+            y = y - two_pi;
+        }
+        out[i + 1] = y;
+    }
+    let used = &mut out[..x.len() + 2];
+    used.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
+    out
+}
+
+fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
