@@ -59,14 +59,19 @@ pub fn in_scatter<T: Real>(rec: &SceneRecord<T>, terms: Option<usize>, expansion
 /// Formats a result as its output line: `{"in_scatter": x}` with the shortest representation
 /// that parses back to the same value of the evaluation precision, `"inf"` for `+∞`.
 pub fn format_value<T: Real>(x: T) -> String {
+    format_named("in_scatter", x)
+}
+
+/// [`format_value`] under another key (`surface_air_light`).
+pub fn format_named<T: Real>(key: &str, x: T) -> String {
     if x == T::infinity() {
-        return "{\"in_scatter\":\"inf\"}".to_string();
+        return format!("{{\"{key}\":\"inf\"}}");
     }
     if !x.is_finite() {
         return "{\"error\":\"internal: the kernel produced a non-finite value\"}".to_string();
     }
     // f32 Display is the shortest round-trip representation of the f32 value; likewise f64.
-    format!("{{\"in_scatter\":{:?}}}", x)
+    format!("{{\"{key}\":{:?}}}", x)
 }
 
 /// An error line naming the input line (1-based) and the field.
@@ -82,6 +87,10 @@ fn eval_line<T: Real>(line: &str, line_no: usize, opts: &EvalOptions) -> String 
             format_error(line_no, "light.shape: a segment light has no fixed-term method (--terms is for point lights)")
         }
         Ok(AnyRecord::Segment(scene)) => format_value(scene.in_scatter()),
+        Ok(AnyRecord::Area(_)) if opts.terms.is_some() => format_error(line_no, "light.shape: an area light has no fixed-term method (--terms is for point lights)"),
+        Ok(AnyRecord::Area(scene)) => format_value(scene.in_scatter()),
+        Ok(AnyRecord::Surface(_)) if opts.terms.is_some() => format_error(line_no, "surface: surface records have no fixed-term method (--terms is for point lights)"),
+        Ok(AnyRecord::Surface(scene)) => format_named("surface_air_light", scene.air_light()),
         Err(e) => format_error(line_no, &e.to_string()),
     };
     with_id(id.as_ref(), answer)
@@ -177,6 +186,12 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
             }
             Ok((id, Ok(AnyRecord::Segment(_)))) => {
                 lines.push((id, Err(format_error(n, "light.shape: segment lights are evaluated on the CPU backend (the shader library has point lights)"))))
+            }
+            Ok((id, Ok(AnyRecord::Area(_)))) => {
+                lines.push((id, Err(format_error(n, "light.shape: area lights are evaluated on the CPU backend (the shader library has point lights)"))))
+            }
+            Ok((id, Ok(AnyRecord::Surface(_)))) => {
+                lines.push((id, Err(format_error(n, "surface: surface records are evaluated on the CPU backend (the shader library has rays)"))))
             }
             Ok((id, Err(e))) => lines.push((id, Err(format_error(n, &e.to_string())))),
             Err(e) => lines.push((None, Err(e))),

@@ -7,6 +7,10 @@
 //!            "distribution": {"kind": "two_lobed", "axis": [0,-1,0], "power": 4}},
 //!  "phase": {"kind": "henyey_greenstein", "g": 0.5}}
 //! ```
+//! A surface record (docs/DESIGN.md §11) has `"surface": {"position": [..], "normal": [..],
+//! "brdf": {"kind": "lambert", "albedo": ρ}}` (or `{"kind": "phong", "k_s": k, "exponent": n,
+//! "view": [..]}`) in place of the ray, and a point light.
+//!
 //! `t_max: null` (or absent, or `"inf"`) means `+∞`, an absent `t_min` 0, an absent
 //! `distribution` or `phase` isotropic. Any other key is an error naming it (with the closest
 //! known key when one is close), except the annotations [`ANNOTATIONS`], which never change the
@@ -20,7 +24,7 @@
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::record::SceneRecord;
-use airlight::{Medium, PointLight, Ray, Real, SegmentLight, SegmentScene};
+use airlight::{AreaLight, AreaScene, Brdf, Emitter, Medium, PointLight, Ray, Real, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use serde::de::IgnoredAny;
 use serde::{de, Deserialize, Deserializer};
 use serde_json::Value;
@@ -40,17 +44,22 @@ impl std::fmt::Display for FieldError {
     }
 }
 
-/// Top-level keys a record may carry besides `ray`, `medium`, `light` and `phase`, ignored by
-/// the evaluation: `id`, `comment` and `category` (free text), `in_scatter` and `scale` (a
-/// reference value and its scale, as the committed references carry them).
-pub const ANNOTATIONS: [&str; 5] = ["id", "comment", "category", "in_scatter", "scale"];
+/// Top-level keys a record may carry besides `ray` (or `surface`), `medium`, `light` and
+/// `phase`, ignored by the evaluation: `id`, `comment` and `category` (free text),
+/// `in_scatter`, `scale` and `surface_air_light` (reference values, as the committed references
+/// carry them).
+pub const ANNOTATIONS: [&str; 6] = ["id", "comment", "category", "in_scatter", "scale", "surface_air_light"];
 
 /// One JSON-lines record, as written.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneJson {
-    /// The ray.
-    pub ray: RayJson,
+    /// The ray (a record has a ray or a surface).
+    #[serde(default)]
+    pub ray: Option<RayJson>,
+    /// The surface point whose air-light is wanted, in place of a ray.
+    #[serde(default)]
+    pub surface: Option<SurfaceJson>,
     /// The medium.
     pub medium: MediumJson,
     /// The point light.
@@ -68,6 +77,60 @@ pub struct SceneJson {
     _in_scatter: Option<IgnoredAny>,
     #[serde(default, rename = "scale")]
     _scale: Option<IgnoredAny>,
+    #[serde(default, rename = "surface_air_light")]
+    _surface_air_light: Option<IgnoredAny>,
+}
+
+/// `surface`: a point, its normal and its BRDF.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceJson {
+    /// The point.
+    pub position: [f64; 3],
+    /// Its normal (any length but zero).
+    pub normal: [f64; 3],
+    /// Its reflectance.
+    pub brdf: BrdfJson,
+}
+
+/// `surface.brdf`, by `kind`.
+#[derive(Debug)]
+pub enum BrdfJson {
+    /// `"lambert"`: `albedo/π`.
+    Lambert(LambertJson),
+    /// `"phong"`: `k_s (n+2)/(2π) max(0, r·ω)^n` about the mirror image `r` of `view`.
+    Phong(PhongJson),
+}
+
+/// The field of a Lambertian BRDF.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LambertJson {
+    /// Albedo.
+    pub albedo: f64,
+}
+
+/// The fields of a Phong lobe.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhongJson {
+    /// Specular coefficient.
+    pub k_s: f64,
+    /// Exponent.
+    pub exponent: f64,
+    /// From the surface towards the eye.
+    pub view: [f64; 3],
+}
+
+impl<'de> Deserialize<'de> for BrdfJson {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (kind, object) = kind_and_fields(d)?;
+        Ok(match kind.as_str() {
+            "lambert" => Self::Lambert(fields(object)?),
+            "phong" => Self::Phong(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&kind, &["lambert", "phong"])),
+        })
+    }
 }
 
 /// `ray`: `origin + t·dir`, `t ∈ [t_min, t_max]`.
@@ -117,15 +180,48 @@ pub struct MediumJson {
     pub sigma_t: f64,
 }
 
-/// `light`, by `shape`: a point light (`shape` absent or `"point"`) or a segment light
-/// (`"segment"`, docs/DESIGN.md §10).
+/// `light`, by `shape`: a point light (`shape` absent or `"point"`), a segment light
+/// (`"segment"`, docs/DESIGN.md §10), or an area light (`"disc"`, `"rectangle"`, §12).
 #[derive(Debug)]
 pub enum LightJson {
     /// A point light.
     Point(PointLightJson),
     /// A segment light: every point of `a → b` emits `intensity` per unit length.
     Segment(SegmentLightJson),
+    /// A disc of uniform radiance (docs/DESIGN.md §12).
+    Disc(DiscJson),
+    /// A parallelogram of uniform radiance.
+    Rectangle(RectangleJson),
 }
+
+/// The fields of a disc light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiscJson {
+    /// Centre.
+    pub center: [f64; 3],
+    /// Normal of the emitting side.
+    pub normal: [f64; 3],
+    /// Radius.
+    pub radius: f64,
+    /// Radiance of every point.
+    pub radiance: f64,
+}
+
+/// The fields of a rectangle (parallelogram) light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RectangleJson {
+    /// One corner.
+    pub corner: [f64; 3],
+    /// The first edge from it.
+    pub edge_u: [f64; 3],
+    /// The second edge from it; the emitting side is that of `edge_u × edge_v`.
+    pub edge_v: [f64; 3],
+    /// Radiance of every point.
+    pub radiance: f64,
+}
+
 
 /// The fields of a point light.
 #[derive(Debug, Deserialize)]
@@ -161,7 +257,9 @@ impl<'de> Deserialize<'de> for LightJson {
         Ok(match shape.as_str() {
             "point" => Self::Point(fields(object)?),
             "segment" => Self::Segment(fields(object)?),
-            _ => return Err(de::Error::unknown_variant(&shape, &["point", "segment"])),
+            "disc" => Self::Disc(fields(object)?),
+            "rectangle" => Self::Rectangle(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&shape, &["point", "segment", "disc", "rectangle"])),
         })
     }
 }
@@ -339,6 +437,10 @@ pub enum AnyRecord<T: Real> {
     Point(SceneRecord<T>),
     /// A segment light.
     Segment(SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>),
+    /// A surface point lit by a point light's air-light.
+    Surface(SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>),
+    /// An area light (disc, rectangle).
+    Area(AreaScene<T, AnyPhase<T>>),
 }
 
 impl<T: Real> AnyRecord<T> {
@@ -347,6 +449,8 @@ impl<T: Real> AnyRecord<T> {
         match self {
             AnyRecord::Point(r) => Ok(r),
             AnyRecord::Segment(_) => Err(FieldError { field: "light.shape".into(), message: "a segment light, where a point light's record is needed".into() }),
+            AnyRecord::Surface(_) => Err(FieldError { field: "surface".into(), message: "a surface record, where a ray's is needed".into() }),
+            AnyRecord::Area(_) => Err(FieldError { field: "light.shape".into(), message: "an area light, where a point light's record is needed".into() }),
         }
     }
 }
@@ -369,6 +473,16 @@ fn distribution<T: Real>(json: &Option<DistributionJson>) -> Result<AnyDistribut
     })
 }
 
+/// An area light's scene.
+fn area<T: Real>(ray: Ray<T>, emitter: Emitter<T>, radiance: T, medium: Medium<T>, phase: AnyPhase<T>) -> Result<AnyRecord<T>, FieldError> {
+    Ok(AnyRecord::Area(AreaScene::new(ray, AreaLight { emitter, radiance }, medium, phase).map_err(field_error)?))
+}
+
+/// A point light's fields.
+fn point_light<T: Real>(l: &PointLightJson) -> Result<PointLight<T, AnyDistribution<T>>, FieldError> {
+    Ok(PointLight { position: vec3::<T>("light.position", l.position)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? })
+}
+
 /// The kernel's error as a [`FieldError`].
 fn field_error(e: airlight::InputError) -> FieldError {
     FieldError { field: e.field.to_string(), message: e.to_string()[e.field.len() + 2..].to_string() }
@@ -377,8 +491,64 @@ fn field_error(e: airlight::InputError) -> FieldError {
 impl SceneJson {
     /// The record's scene in precision `T`, validated as the kernel's constructors do.
     pub fn to_any<T: Real>(&self) -> Result<AnyRecord<T>, FieldError> {
-        let RayJson { origin, dir, t_min, t_max } = self.ray;
-        let ray = Ray { origin: vec3::<T>("ray.origin", origin)?, dir: vec3::<T>("ray.dir", dir)?, t_min: number("ray.t_min", t_min)?, t_max: number("ray.t_max", t_max)? };
+        let ray = match (&self.ray, &self.surface) {
+            (Some(RayJson { origin, dir, t_min, t_max }), None) => {
+                Ray { origin: vec3::<T>("ray.origin", *origin)?, dir: vec3::<T>("ray.dir", *dir)?, t_min: number("ray.t_min", *t_min)?, t_max: number("ray.t_max", *t_max)? }
+            }
+            (None, Some(surface)) => return self.to_surface(surface),
+            (Some(_), Some(_)) => return Err(FieldError { field: "surface".into(), message: "a record has a ray or a surface, not both".into() }),
+            (None, None) => return Err(FieldError { field: "ray".into(), message: "missing field `ray` (or `surface`)".into() }),
+        };
+        let (medium, phase) = self.medium_and_phase()?;
+        match &self.light {
+            LightJson::Point(l) => {
+                let light = point_light(l)?;
+                airlight::scene::validate(&ray, &light, &medium, &phase).map_err(field_error)?;
+                Ok(AnyRecord::Point(SceneRecord { ray, light, medium, phase }))
+            }
+            LightJson::Segment(l) => {
+                let light = SegmentLight { a: vec3::<T>("light.a", l.a)?, b: vec3::<T>("light.b", l.b)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? };
+                Ok(AnyRecord::Segment(SegmentScene::new(ray, light, medium, phase).map_err(field_error)?))
+            }
+            LightJson::Disc(l) => {
+                let emitter = Emitter::Disc { center: vec3::<T>("light.center", l.center)?, normal: vec3::<T>("light.normal", l.normal)?, radius: number("light.radius", l.radius)? };
+                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+            }
+            LightJson::Rectangle(l) => {
+                let emitter = Emitter::Rectangle { corner: vec3::<T>("light.corner", l.corner)?, edge_u: vec3::<T>("light.edge_u", l.edge_u)?, edge_v: vec3::<T>("light.edge_v", l.edge_v)? };
+                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+            }
+        }
+    }
+
+    /// A surface record's scene.
+    fn to_surface<T: Real>(&self, surface: &SurfaceJson) -> Result<AnyRecord<T>, FieldError> {
+        let (medium, phase) = self.medium_and_phase()?;
+        let light = match &self.light {
+            LightJson::Point(l) => point_light(l)?,
+            _ => return Err(FieldError { field: "light.shape".into(), message: "a surface record takes a point light".into() }),
+        };
+        let brdf = match &surface.brdf {
+            BrdfJson::Lambert(LambertJson { albedo }) => Brdf::Lambert { albedo: number("surface.brdf.albedo", *albedo)? },
+            BrdfJson::Phong(PhongJson { k_s, exponent, view }) => {
+                Brdf::Phong { k_s: number("surface.brdf.k_s", *k_s)?, exponent: number("surface.brdf.exponent", *exponent)?, view: vec3::<T>("surface.brdf.view", *view)? }
+            }
+        };
+        let point = Surface { position: vec3::<T>("surface.position", surface.position)?, normal: vec3::<T>("surface.normal", surface.normal)? };
+        // the kernel names the BRDF's fields `brdf.…`; here they sit under `surface`
+        let scene = SurfaceScene::new(point, brdf, light, medium, phase).map_err(|e| {
+            let e = field_error(e);
+            if e.field.starts_with("brdf.") {
+                FieldError { field: format!("surface.{}", e.field), ..e }
+            } else {
+                e
+            }
+        })?;
+        Ok(AnyRecord::Surface(scene))
+    }
+
+    /// The medium and the phase function.
+    fn medium_and_phase<T: Real>(&self) -> Result<(Medium<T>, AnyPhase<T>), FieldError> {
         let medium = Medium { sigma_s: number("medium.sigma_s", self.medium.sigma_s)?, sigma_t: number("medium.sigma_t", self.medium.sigma_t)? };
         let phase = match self.phase {
             None | Some(PhaseJson::Isotropic) => AnyPhase::Isotropic,
@@ -392,17 +562,7 @@ impl SceneJson {
                 w: number("phase.w", w)?,
             }),
         };
-        match &self.light {
-            LightJson::Point(l) => {
-                let light = PointLight { position: vec3::<T>("light.position", l.position)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? };
-                airlight::scene::validate(&ray, &light, &medium, &phase).map_err(field_error)?;
-                Ok(AnyRecord::Point(SceneRecord { ray, light, medium, phase }))
-            }
-            LightJson::Segment(l) => {
-                let light = SegmentLight { a: vec3::<T>("light.a", l.a)?, b: vec3::<T>("light.b", l.b)?, intensity: number("light.intensity", l.intensity)?, distribution: distribution(&l.distribution)? };
-                Ok(AnyRecord::Segment(SegmentScene::new(ray, light, medium, phase).map_err(field_error)?))
-            }
-        }
+        Ok((medium, phase))
     }
 
     /// The kernel's point-light record in precision `T`, validated as [`airlight::Scene::new`]

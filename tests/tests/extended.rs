@@ -13,7 +13,7 @@ use airlight_tests::reference_lines;
 fn segment<T: airlight::Real>(v: &serde_json::Value) -> SegmentScene<T, AnyDistribution<T>, AnyPhase<T>> {
     match parse_any_value::<T>(v).unwrap_or_else(|e| panic!("reference record invalid: {e}: {v}")) {
         AnyRecord::Segment(s) => s,
-        AnyRecord::Point(_) => panic!("a point light in extended.jsonl: {v}"),
+        AnyRecord::Point(_) | AnyRecord::Surface(_) | AnyRecord::Area(_) => panic!("not a segment light in extended.jsonl: {v}"),
     }
 }
 
