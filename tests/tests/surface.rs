@@ -1,0 +1,125 @@
+//! Surface radiance from air-light (docs/DESIGN.md §11) against nested quadrature
+//! (tests/reference/surface.jsonl, tests/reference/gen_surface.py), against closed forms derived
+//! by hand for a non-absorbing isotropic medium, and its edges.
+
+use airlight::glam::DVec3;
+use airlight::light::{AnyDistribution, Omni};
+use airlight::phase::{AnyPhase, Isotropic};
+use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
+use airlight_codegen::scene_json::{parse_any_value, parse_line_with_id, AnyRecord};
+use airlight_tests::reference_lines;
+use std::collections::BTreeMap;
+use std::f64::consts::PI;
+
+fn surface<T: airlight::Real>(v: &serde_json::Value) -> SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>> {
+    match parse_any_value::<T>(v).unwrap_or_else(|e| panic!("reference record invalid: {e}: {v}")) {
+        AnyRecord::Surface(s) => s,
+        _ => panic!("not a surface record in surface.jsonl: {v}"),
+    }
+}
+
+/// Targets (docs/DESIGN.md §8): f64 within 1e-9 of the reference, f32 within 1e-4 (the inputs
+/// are f32-exact), relative to `max(|exact|, τ·scale)` (`τ` = 1e-10 in f64, 1e-4 in f32;
+/// `scale`: the integral with the BRDF at its maximum, so a Phong lobe that leaves the value
+/// 1e-27 is judged against what the lobe could reflect), on every record of every class; the
+/// references agree between two resolutions to 1e-11.
+#[test]
+fn surface_radiance_against_nested_quadrature() {
+    let lines = reference_lines("surface.jsonl");
+    assert!(lines.len() >= 30, "surface.jsonl has {} records", lines.len());
+    let mut worst: BTreeMap<String, (f64, f64, usize)> = BTreeMap::new();
+    let mut failures = vec![];
+    for v in &lines {
+        let exact = v["surface_air_light"].as_f64().unwrap();
+        let scale = v["scale"].as_f64().unwrap();
+        let category = v["category"].as_str().unwrap().to_string();
+        let got64 = surface::<f64>(v).air_light();
+        let got32 = surface::<f32>(v).air_light() as f64;
+        let (e64, e32) = ((got64 - exact).abs() / exact.max(1e-10 * scale), (got32 - exact).abs() / exact.max(1e-4 * scale));
+        let w = worst.entry(category.clone()).or_insert((0.0, 0.0, 0));
+        *w = (w.0.max(e64), w.1.max(e32), w.2 + 1);
+        if !(e64 <= 1e-9) || !(e32 <= 1e-4) {
+            failures.push(format!("{category}: f64 {got64} ({e64:.1e}), f32 {got32} ({e32:.1e}), exact {exact}"));
+        }
+    }
+    for (c, (e64, e32, n)) in &worst {
+        println!("{c:>14}: {n} records, largest error f64 {e64:.2e}, f32 {e32:.2e}");
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+fn lit(normal: DVec3, albedo: f64, sigma_s: f64, sigma_t: f64) -> SurfaceScene<f64, Omni, Isotropic> {
+    let light = PointLight { position: DVec3::new(0.3, 1.7, -2.0), intensity: 40.0, distribution: Omni };
+    let surface = Surface { position: DVec3::new(0.3, 1.7, -2.0) + DVec3::new(1.0, 2.0, 2.0), normal };
+    SurfaceScene::new(surface, Brdf::Lambert { albedo }, light, Medium { sigma_s, sigma_t }, Isotropic).unwrap()
+}
+
+/// Without extinction, isotropic scattering and an omni light at distance `d`, the ray from the
+/// surface at angle `γ` from the light's direction gathers `L_a = σs I (π − γ)/(4π d sin γ)`
+/// (the light-angle integral `σs I/(4π h) ∫ dθ` over `θ ∈ [γ − π/2, π/2]`, `h = d sin γ`). With
+/// the normal towards the light the hemisphere is `γ < π/2`, `n·ω = cos γ`, so
+/// `L = (ρ/π) 2π ∫_0^{π/2} L_a sin γ cos γ dγ = ρ σs I (π/2 + 1)/(2π d)` (by parts:
+/// `∫ (π − γ) cos γ = (π − γ) sin γ − cos γ`); with the normal away from it, `γ > π/2`,
+/// `ρ σs I (π/2 − 1)/(2π d)`.
+#[test]
+fn non_absorbing_isotropic_closed_forms() {
+    let (albedo, sigma_s, intensity, d) = (0.7, 0.05, 40.0, 3.0);
+    let towards = DVec3::new(-1.0, -2.0, -2.0);
+    for (normal, factor, what) in [(towards, PI / 2.0 + 1.0, "towards"), (-towards, PI / 2.0 - 1.0, "away")] {
+        let exact = albedo * sigma_s * intensity * factor / (2.0 * PI * d);
+        let got = lit(normal, albedo, sigma_s, 0.0).air_light();
+        assert!((got - exact).abs() <= 1e-9 * exact, "normal {what} the light: {got} vs {exact}");
+    }
+}
+
+/// A Phong lobe of exponent 0 about the normal (the view along the normal: `r = n`) is the
+/// Lambertian BRDF `k_s/π`: the lobe's numerical inner integral against the closed form of
+/// the Lambertian arc, in anisotropic fog with an axis-less light.
+#[test]
+fn phong_exponent_zero_is_lambert() {
+    let light = PointLight { position: DVec3::new(2.0, 1.0, 0.5), intensity: 10.0, distribution: AnyDistribution::Omni };
+    let normal = DVec3::new(0.2, 1.0, -0.3);
+    let surface = Surface { position: DVec3::ZERO, normal };
+    let medium = Medium { sigma_s: 0.2, sigma_t: 0.3 };
+    let phase = AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: 0.7 });
+    let phong: f64 = SurfaceScene::new(surface, Brdf::Phong { k_s: 0.6, exponent: 0.0, view: normal }, light, medium, phase).unwrap().air_light();
+    let lambert = SurfaceScene::new(surface, Brdf::Lambert { albedo: 0.6 }, light, medium, phase).unwrap().air_light();
+    assert!((phong - lambert).abs() <= 1e-9 * lambert, "Phong n = 0: {phong}, Lambert: {lambert}");
+}
+
+/// No scattering, no albedo: 0; the light on the surface point: `+∞`; `radiance` is the
+/// surface term plus the air-light.
+#[test]
+fn edges() {
+    let n = DVec3::new(-1.0, -2.0, -2.0);
+    assert_eq!(lit(n, 0.7, 0.0, 0.1).air_light(), 0.0);
+    assert_eq!(lit(n, 0.0, 0.05, 0.1).air_light(), 0.0);
+    let light = PointLight { position: DVec3::ONE, intensity: 1.0, distribution: Omni };
+    let on = SurfaceScene::new(Surface { position: DVec3::ONE, normal: DVec3::Z }, Brdf::Lambert { albedo: 0.5 }, light, Medium { sigma_s: 0.1, sigma_t: 0.1 }, Isotropic);
+    assert_eq!(on.unwrap().air_light(), f64::INFINITY);
+    let s = lit(n, 0.7, 0.05, 0.1);
+    // direct: e^{−σt d}/d² · I · (ρ/π) · 1 at d = 3, the normal towards the light
+    let direct = (-0.1f64 * 3.0).exp() / 9.0 * 40.0 * 0.7 / PI;
+    assert!((s.direct() - direct).abs() <= 1e-14 * direct, "direct {} vs {direct}", s.direct());
+    assert_eq!(s.radiance(), s.direct() + s.air_light());
+}
+
+/// A surface record's errors name the field.
+#[test]
+fn surface_record_errors() {
+    let base = r#"{"surface": {"position": [0,0,0], "normal": [0,0,1], "brdf": BRDF}, "medium": {"sigma_s": 0.1, "sigma_t": 0.1}, "light": {"position": [0,0,1], "intensity": 1}}"#;
+    for (brdf, field) in [
+        (r#"{"kind": "phong", "k_s": 1, "exponent": -2, "view": [0,0,1]}"#, "surface.brdf.exponent"),
+        (r#"{"kind": "phong", "k_s": 1, "exponent": 2, "view": [0,0,0]}"#, "surface.brdf.view"),
+        (r#"{"kind": "lambert", "albedo": 1, "view": [0,0,1]}"#, "surface.brdf.view"),
+        (r#"{"kind": "lamber", "albedo": 1}"#, "surface.brdf.kind"),
+    ] {
+        let (_, r) = parse_line_with_id::<f64>(&base.replace("BRDF", brdf));
+        let e = r.err().unwrap_or_else(|| panic!("{brdf} accepted"));
+        assert_eq!(e.field, field, "{brdf}: {e}");
+    }
+    let both = r#"{"ray": {"origin": [0,0,0], "dir": [1,0,0]}, "surface": {"position": [0,0,0], "normal": [0,0,1], "brdf": {"kind": "lambert", "albedo": 1}}, "medium": {"sigma_s": 0.1, "sigma_t": 0.1}, "light": {"position": [0,0,1], "intensity": 1}}"#;
+    assert_eq!(parse_line_with_id::<f64>(both).1.err().unwrap().field, "surface");
+    let zero_normal = base.replace("[0,0,1], \"brdf\"", "[0,0,0], \"brdf\"").replace("BRDF", r#"{"kind": "lambert", "albedo": 1}"#);
+    assert_eq!(parse_line_with_id::<f64>(&zero_normal).1.err().unwrap().field, "surface.normal");
+}
