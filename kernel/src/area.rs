@@ -18,7 +18,7 @@
 
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
-use crate::geometry::{dot, length, normalize, sub};
+use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{Lambertian, Omni};
 use crate::panels::Control;
 use crate::phase::PhaseFunction;
@@ -76,27 +76,8 @@ pub struct AreaScene<T: Real, P> {
     phase: P,
 }
 
-fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
 fn axpy<T: Real>(p: [T; 3], s: T, v: [T; 3]) -> [T; 3] {
     [p[0] + s * v[0], p[1] + s * v[1], p[2] + s * v[2]]
-}
-
-/// Two unit vectors completing the unit `n` to a right-handed orthonormal frame.
-fn basis<T: Real>(n: [T; 3]) -> ([T; 3], [T; 3]) {
-    let k = if n[0].abs() <= n[1].abs() && n[0].abs() <= n[2].abs() {
-        0
-    } else if n[1].abs() <= n[2].abs() {
-        1
-    } else {
-        2
-    };
-    let mut u = [T::zero(); 3];
-    u[k] = T::one();
-    let a1 = normalize(cross(u, n));
-    (a1, cross(n, a1))
 }
 
 impl<T, P> AreaScene<T, P>
@@ -215,7 +196,7 @@ where
                     (T::zero(), T::PI() + T::PI())
                 };
                 let rho0 = length(sub(f, nearest(f)));
-                polar(rule, &mut point, f, n, a1, a2, &[lo, hi], &|e| r_max(e), rho0, radius, tolerance, inner_tolerance)
+                polar(rule, &mut point, f, n, a1, a2, &[lo, hi], &|e, _| r_max(e), rho0, radius, tolerance, inner_tolerance)
             }
             Emitter::Rectangle { corner, edge_u, edge_v } => {
                 let (p0, eu, ev) = (T::vec3_to_array(corner), T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
@@ -293,7 +274,7 @@ where
                 };
                 let size = (uu.max(vv)).sqrt();
                 let rho0 = length(sub(f, nearest(f)));
-                polar_indexed(rule, &mut point, f, n, a1, a2, &edges[..=count], &r_max, rho0, size, tolerance, inner_tolerance)
+                polar(rule, &mut point, f, n, a1, a2, &edges[..=count], &r_max, rho0, size, tolerance, inner_tolerance)
             }
         };
         (value, evaluated)
@@ -316,29 +297,10 @@ fn project<T: Real>(x: [T; 3], c: [T; 3], n: [T; 3]) -> [T; 3] {
     axpy(x, -dot(sub(x, c), n), n)
 }
 
-/// `∫∫ point(f + r e_ψ) r dr dψ` over `ψ` between `edges` and `r ∈ [0, r_max(e_ψ)]`, `e_ψ =
+/// `∫∫ point(f + r e_ψ) r dr dψ` over `ψ` between `edges` and `r ∈ [0, r_max(e_ψ, ψ)]`, `e_ψ =
 /// cos ψ a₁ + sin ψ a₂`; `r = ρ₀ sinh w` when the ray passes within a quarter of `size` of `f`.
 #[allow(clippy::too_many_arguments)]
 fn polar<T: Real>(
-    rule: &[(f64, f64, f64)],
-    point: &mut impl FnMut([T; 3], [T; 3]) -> T,
-    f: [T; 3],
-    n: [T; 3],
-    a1: [T; 3],
-    a2: [T; 3],
-    edges: &[T],
-    r_max: &dyn Fn([T; 3]) -> T,
-    rho0: T,
-    size: T,
-    tolerance: T,
-    inner_tolerance: T,
-) -> T {
-    polar_indexed(rule, point, f, n, a1, a2, edges, &|e, _| r_max(e), rho0, size, tolerance, inner_tolerance)
-}
-
-/// [`polar`] with `r_max` also given `ψ`.
-#[allow(clippy::too_many_arguments)]
-fn polar_indexed<T: Real>(
     rule: &[(f64, f64, f64)],
     point: &mut impl FnMut([T; 3], [T; 3]) -> T,
     f: [T; 3],

@@ -29,6 +29,28 @@ pub fn length<T: Real>(a: [T; 3]) -> T {
     m * dot(s, s).sqrt()
 }
 
+/// `a × b`.
+#[inline]
+pub fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// Two unit vectors `(e₁, e₂)` completing the unit `n` to a right-handed orthonormal frame
+/// (`e₁ ∥ u × n` for the coordinate axis `u` least aligned with `n`, `e₂ = n × e₁`).
+pub fn basis<T: Real>(n: [T; 3]) -> ([T; 3], [T; 3]) {
+    let k = if n[0].abs() <= n[1].abs() && n[0].abs() <= n[2].abs() {
+        0
+    } else if n[1].abs() <= n[2].abs() {
+        1
+    } else {
+        2
+    };
+    let mut u = [T::zero(); 3];
+    u[k] = T::one();
+    let e1 = normalize(cross(u, n));
+    (e1, cross(n, e1))
+}
+
 /// `a / |a|` (zero stays zero). Scaled by the largest component first, so that tiny
 /// (subnormal) or huge vectors normalise as accurately as ordinary ones.
 #[inline]

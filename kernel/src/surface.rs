@@ -24,7 +24,7 @@
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
-use crate::geometry::{dot, length, normalize, sub};
+use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
 use crate::panels::Control;
 use crate::phase::PhaseFunction;
@@ -183,18 +183,7 @@ where
         let to_light = sub(T::vec3_to_array(self.light.position), s);
         let d = length(to_light);
         let l = to_light.map(|x| x / d);
-        // e₁: ℓ × (the axis ℓ is least aligned with), e₂ = ℓ × e₁
-        let k = if l[0].abs() <= l[1].abs() && l[0].abs() <= l[2].abs() {
-            0
-        } else if l[1].abs() <= l[2].abs() {
-            1
-        } else {
-            2
-        };
-        let mut u = [T::zero(); 3];
-        u[k] = T::one();
-        let e1 = normalize(cross(l, u));
-        let e2 = cross(l, e1);
+        let (e1, e2) = basis(l);
         let n = normalize(T::vec3_to_array(self.surface.normal));
         let r_dir = match self.brdf {
             Brdf::Phong { view, .. } => {
@@ -419,8 +408,4 @@ fn sorted_circle<T: Real>(x: &mut [T], phi0: T) -> [T; 10] {
     let used = &mut out[..x.len() + 2];
     used.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
     out
-}
-
-fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
