@@ -26,15 +26,13 @@ agrees to 1e-11 with mpmath's tanh-sinh (gen_extended.point_light).
 
 Usage: python3 tests/reference/gen_surface.py     (numpy and mpmath; some minutes)
 """
-import json
 import math
-import os
 import random
 import struct
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from gen_reference import write_jsonl
 
 
 def f32(x):
@@ -385,10 +383,8 @@ def main():
                 r["scale"] = Scene({**r, "surface": {**r["surface"], "brdf": peak}}).value(24, 3)
             else:
                 r["scale"] = value
-            lines.append(json.dumps(r, separators=(",", ":")))
-    with open(os.path.join(HERE, "surface.jsonl"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(f"{len(lines)} records")
+            lines.append(r)
+    print(f"{write_jsonl('surface.jsonl', lines)} records")
 
 
 if __name__ == "__main__":
