@@ -1,6 +1,6 @@
 //! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
 //! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments, a segment
-//! light along the light's axis (f64). Oracle: no panic; never NaN; never negative;
+//! light along the light's axis, a disc light and a fog-lit surface point (f64). Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -10,7 +10,7 @@
 //! may overflow before the result would, which is documented rather than hidden.
 #![no_main]
 use airlight::glam::{DVec3, Vec3};
-use airlight::{in_scatter_unchecked, Expansion, Scene, SegmentLight, SegmentScene};
+use airlight::{in_scatter_unchecked, AreaLight, AreaScene, Brdf, Emitter, Expansion, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use libfuzzer_sys::fuzz_target;
 
 #[macro_use]
@@ -80,14 +80,32 @@ fuzz_target!(|raw: Raw| {
     // a segment light from the light's position along its axis (length 10·w), on one input in
     // 8 (it costs 15 point lights or more): never NaN, never negative (+∞ where the emitter
     // meets the segment)
-    if raw.power % 8 != 0 {
+    let (r, l, m, p) = scene_types!(f64, DVec3)(&raw);
+    if raw.power % 8 == 0 {
+        let b = DVec3::from_array(raw.p) + DVec3::from_array(raw.axis) * (10.0 * raw.w);
+        let segment = SegmentLight { a: l.position, b, intensity: l.intensity, distribution: l.distribution };
+        if let Ok(s) = SegmentScene::new(r, segment, m, p) {
+            let x = s.in_scatter();
+            assert!(!x.is_nan() && x >= 0.0, "f64/segment: {x} for {raw:?}");
+        }
+    }
+    // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
+    // zeros most inputs decode to), at tolerance 1e-3 (hundreds of point lights or rays
+    // each): a disc of
+    // radius |w| at the light facing along its axis, and the ray's origin as a Lambertian
+    // surface facing along the ray: never NaN, never negative (+∞ only for the light on the
+    // surface point, or a true value beyond the range)
+    if !(raw.power == 18 && raw.phase == 5) {
         return;
     }
-    let (r, l, m, p) = scene_types!(f64, DVec3)(&raw);
-    let b = DVec3::from_array(raw.p) + DVec3::from_array(raw.axis) * (10.0 * raw.w);
-    let segment = SegmentLight { a: l.position, b, intensity: l.intensity, distribution: l.distribution };
-    if let Ok(s) = SegmentScene::new(r, segment, m, p) {
-        let x = s.in_scatter();
-        assert!(!x.is_nan() && x >= 0.0, "f64/segment: {x} for {raw:?}");
+    let disc = Emitter::Disc { center: l.position, normal: DVec3::from_array(raw.axis), radius: raw.w.abs() };
+    if let Ok(s) = AreaScene::new(r, AreaLight { emitter: disc, radiance: l.intensity }, m, p) {
+        let x = s.in_scatter_counted(1e-3).0;
+        assert!(!x.is_nan() && x >= 0.0, "f64/disc: {x} for {raw:?}");
+    }
+    let surface = Surface { position: r.origin, normal: r.dir };
+    if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, l, m, p) {
+        let x = s.air_light_counted(1e-3).0;
+        assert!(!x.is_nan() && x >= 0.0, "f64/surface: {x} for {raw:?}");
     }
 });
