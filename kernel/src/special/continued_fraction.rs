@@ -26,7 +26,7 @@ pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
     e1_scaled_cf_depth(z, depth)
 }
 
-/// Depths from this on divide plainly ([`e1_scaled_cf_depth`]).
+/// Depths from this on divide plainly (`e1_scaled_cf_depth`, private).
 pub const PLAIN_FROM: usize = 6;
 
 /// The continued fraction at an explicit depth `n` (levels `1..=n` plus the tail estimate):
