@@ -1,0 +1,313 @@
+#!/usr/bin/env python3
+"""References for area lights (docs/DESIGN.md §12): discs and rectangles of uniform radiance, by
+nested quadrature.
+
+Writes area.jsonl next to this file: JSON-lines scene records (docs/DESIGN.md §6) whose light is
+  {"shape": "disc", "center": [..], "normal": [..], "radius": R, "radiance": L}
+  {"shape": "rectangle", "corner": [..], "edge_u": [..], "edge_v": [..], "radiance": L}
+with "category" (far; near: the ray crosses the emitter's plane a few hundredths outside its rim;
+pierce: the ray passes through the emitter; thick: optical distances up to 20; behind: the
+emitter behind the camera) and "in_scatter" = ∫_A L_point(q) dA(q), L_point the air-light integral of a point
+light at q of intensity L and distribution max(0, n(q)·ω) (a Lambertian element).
+
+Independent of the kernel's method: every level is composite Gauss–Legendre in float64 on
+pieces placed by hand. The inner L_point in the angle θ seen from the light (t − x_h = h tan θ),
+split at the foot, where the element's plane is crossed, where the extinction exponent has grown
+by 1, 2, 4, …, 64, and in octaves towards both ends; the emitter in polar coordinates about its
+point nearest the ray segment, r in octaves of their distance (a rectangle as the four
+triangles from that point). Each record is computed twice (16 and 24 nodes
+per piece) and kept only if the two agree to 1e-11 and one
+L_point agrees to 1e-11 with mpmath's tanh-sinh (gen_extended.point_light).
+
+Usage: python3 tests/reference/gen_area.py     (numpy and mpmath; some minutes)
+"""
+import math
+import random
+from multiprocessing import Pool
+
+import numpy as np
+
+from gen_reference import write_jsonl
+from gen_surface import composite, f32, f32v, phase_np, random_unit, unit
+
+
+def point_lights(o, d, t0, t1, ss, st, P, A, inten, phase, q):
+    """L_point along o + t d, t ∈ [t0, t1], for lights at the rows of P with Lambertian axes A."""
+    op = P - o
+    xh = op @ d
+    perp = xh[:, None] * d - op
+    h = np.linalg.norm(perp, axis=1)
+    d_el = A @ d
+    d_c = np.einsum("ij,ij->i", perp / h[:, None], A)
+    th0 = np.arctan2(t0 - xh, h)
+    th1 = np.full_like(th0, np.pi / 2) if math.isinf(t1) else np.arctan2(t1 - xh, h)
+    clip = lambda x: np.clip(x, th0, th1)
+    pts = [th0, th1, clip(np.zeros_like(th0))]
+    for turn in (-1, 0, 1):
+        pts.append(clip(np.arctan2(-d_c, d_el) + np.pi * turn))
+    big_h = st * h
+    if st > 0:
+        y0 = np.tan(th0 / 2 + np.pi / 4)
+        for k in (1, 2, 4, 8, 16, 32, 64):
+            pts.append(clip(2 * np.arctan(y0 + k / big_h) - np.pi / 2))
+    mid = clip(np.zeros_like(th0))
+    # towards θ1: at t = ∞ the exponent turns over within ~σt h of π/2 (down to a 64th of
+    # that); a finite end is smooth, six octaves
+    for j in range(1, 48):
+        x = np.clip(th1 - (th1 - np.maximum(th0, 0)) * 0.5 ** j, th0, th1)
+        keep = np.where(th1 < np.pi / 2, j <= 6, th1 - x >= big_h / 64)
+        pts.append(np.where(keep, x, th1))
+    for j in range(1, 16):
+        pts.append(clip(th0 + (np.minimum(mid, th1) - th0) * 0.5 ** j))
+    pts = np.sort(np.stack(pts, axis=1), axis=1)
+    th, wt = composite(pts[:, :-1], pts[:, 1:], q, 1)
+    s, c = np.sin(th), np.cos(th)
+    hh = h[:, None, None]
+    t = xh[:, None, None] + hh * np.tan(th)
+    r = hh / c
+    f = np.maximum(s * d_el[:, None, None] + c * d_c[:, None, None], 0.0) * phase(-s)
+    with np.errstate(over="ignore", invalid="ignore"):
+        e = np.exp(-st * ((t - t0) + r)) if st > 0 else np.ones_like(t)
+    return ss * inten / h * np.sum(wt * f * e, axis=(1, 2))
+
+
+class Scene:
+    def __init__(self, rec):
+        r = rec["ray"]
+        self.o = np.array(r["origin"], float)
+        self.d = unit(r["dir"])
+        self.t0 = r.get("t_min", 0.0)
+        self.t1 = math.inf if r.get("t_max") is None else r["t_max"]
+        self.ss, self.st = rec["medium"]["sigma_s"], rec["medium"]["sigma_t"]
+        self.phase = phase_np(rec.get("phase") or {"kind": "isotropic"})
+        self.light = rec["light"]
+        self.L = self.light["radiance"]
+
+    def nearest(self, x):
+        t = min(max(np.dot(x - self.o, self.d), self.t0), self.t1)
+        return self.o + t * self.d
+
+    def lights(self, P, A, q):
+        out = np.empty(len(P))
+        for i in range(0, len(P), 4096):
+            out[i:i + 4096] = point_lights(self.o, self.d, self.t0, self.t1, self.ss, self.st, P[i:i + 4096], A[i:i + 4096], self.L, self.phase, q)
+        return out
+
+    def flat(self, f, n, a1, a2, psi_edges, reach, size, q, m):
+        """∫∫ L_point(f + r e_ψ) r dr dψ over ψ pieces and r ∈ [0, reach(ψ)]."""
+        rho0 = np.linalg.norm(f - self.nearest(f))
+        # where e_ψ runs along the ray's shadow in the plane, the r integral peaks within
+        # ~ρ0/size of ψ, or ~|d·n| for a ray through f (r L_point ∝ 1/|e_ψ × d|): octaves about
+        # those two directions
+        d_in = self.d - np.dot(self.d, n) * n
+        if np.linalg.norm(d_in) > 1e-12:
+            psi_d = math.atan2(np.dot(d_in, a2), np.dot(d_in, a1))
+            width = rho0 / size if rho0 > 1e-9 * size else max(abs(np.dot(self.d, n)), 1e-12)
+            lo_, hi_ = psi_edges[0], psi_edges[-1]
+            extra = set()
+            for turn in range(-1, 3):
+                centre = psi_d + np.pi * turn
+                for j in range(-2, 60):
+                    w = width * 2.0 ** j
+                    if w > np.pi / 2:
+                        break
+                    extra |= {centre - w, centre + w}
+                extra.add(centre)
+            psi_edges = sorted(set(psi_edges) | {x for x in extra if lo_ < x < hi_})
+        lo, hi = np.array(psi_edges[:-1]), np.array(psi_edges[1:])
+        Psi, Wpsi = composite(lo, hi, q, 1)
+        Psi, Wpsi = Psi.ravel(), Wpsi.ravel()
+        E = np.cos(Psi)[:, None] * a1 + np.sin(Psi)[:, None] * a2
+        R = reach(E, Psi)
+        # r in octaves of ρ0 (down to ρ0/16; from 1e-5 of the emitter's size where the ray
+        # pierces it, r L_point → const + O(r log r))
+        base = max(rho0, 1e-5 * size)
+        marks = np.array([0.0] + [base * 2.0 ** j for j in range(-4, 60) if base * 2.0 ** j < 2 * size])
+        edges = np.minimum(marks[None, :], R[:, None])
+        edges = np.concatenate([edges, R[:, None]], axis=1)
+        Rn, Rw = composite(edges[:, :-1], edges[:, 1:], q, 1)
+        pts = f + Rn[..., None] * E[:, None, None, :]
+        vals = self.lights(pts.reshape(-1, 3), np.broadcast_to(n, pts.reshape(-1, 3).shape), q).reshape(Rn.shape)
+        return np.sum(Wpsi * np.sum(Rw * Rn * vals, axis=(1, 2)))
+
+    def value(self, q, m):
+        lt = self.light
+        if lt["shape"] == "disc":
+            c, n, R = np.array(lt["center"], float), unit(lt["normal"]), lt["radius"]
+            a1 = unit(np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0]))
+            a2 = np.cross(n, a1)
+            f = self.focus(c, n)
+            off = f - c
+            if np.linalg.norm(off) > R:
+                off = off * R / np.linalg.norm(off)
+                f = c + off
+            k = np.dot(off, off) - R * R
+
+            def reach(E, _psi):
+                b = E @ off
+                return np.maximum(-b + np.sqrt(np.maximum(b * b - k, 0.0)), 0.0)
+
+            psi = list(np.linspace(0, 2 * np.pi, 9))
+            if k > -1e-12 * R * R:
+                # f on the rim: the reach falls to 0 at the tangents, ψ_c ± π/2 (ψ_c towards c)
+                pc = math.atan2(-np.dot(off, a2), -np.dot(off, a1))
+                psi = sorted(set(psi) | {(pc + sgn * np.pi / 2) % (2 * np.pi) for sgn in (1, -1)})
+            return self.flat(f, n, a1, a2, psi, reach, R, q, m)
+        if lt["shape"] == "rectangle":
+            p0, eu, ev = (np.array(lt[k], float) for k in ("corner", "edge_u", "edge_v"))
+            n = unit(np.cross(eu, ev))
+            a1 = unit(eu)
+            a2 = np.cross(n, a1)
+            x = self.focus(p0, n)
+            G = np.array([[eu @ eu, eu @ ev], [eu @ ev, ev @ ev]])
+            u, v = np.clip(np.linalg.solve(G, [eu @ (x - p0), ev @ (x - p0)]), 0, 1)
+            f = p0 + u * eu + v * ev
+            corners = [p0, p0 + eu, p0 + eu + ev, p0 + ev]
+            total = 0.0
+            for i in range(4):
+                ci, cj = corners[i], corners[(i + 1) % 4]
+                mm = unit(np.cross(cj - ci, n))
+                h = np.dot(ci - f, mm)
+                if h <= 1e-12:
+                    continue
+                ang = lambda p: math.atan2(np.dot(p - f, a2), np.dot(p - f, a1))
+                pi_, pj = ang(ci), ang(cj)
+                while pj <= pi_:
+                    pj += 2 * np.pi
+
+                def reach(E, _psi, mm=mm, h=h):
+                    return h / np.maximum(E @ mm, 1e-300)
+
+                total += self.flat(f, n, a1, a2, list(np.linspace(pi_, pj, 3)), reach, math.sqrt(max(eu @ eu, ev @ ev)), q, m)
+            return total
+        raise ValueError(lt["shape"])
+
+    def focus(self, c, n):
+        dn = np.dot(self.d, n)
+        if abs(dn) > 1e-12:
+            t = np.dot(c - self.o, n) / dn
+            t = min(max(t, self.t0), self.t1)
+            x = self.o + t * self.d
+        else:
+            x = self.nearest(c)
+        return x - np.dot(x - c, n) * n
+
+
+def spot_check(sc, rec, rng):
+    """One L_point (a random point near the emitter's anchor, Lambertian about an axis facing the
+    ray) against mpmath's tanh-sinh (gen_extended.point_light)."""
+    import mpmath as mp
+    from gen_extended import point_light
+    from gen_reference import phase_fn
+
+    lt = rec["light"]
+    c = np.array(lt.get("center") or lt["corner"], float)
+    p = c + 0.1 * np.array(random_unit(rng))
+    # an axis facing the ray segment (a random one may light none of it: 0/0)
+    a = unit(unit(sc.nearest(p) - p) + 0.5 * np.array(random_unit(rng)))
+    mine = point_lights(sc.o, sc.d, sc.t0, sc.t1, sc.ss, sc.st, p[None, :], a[None, :], sc.L, sc.phase, 24)[0]
+    mp.mp.dps = 20
+    D = lambda cc: max(cc, 0)
+    theirs = point_light([mp.mpf(x) for x in sc.o], [mp.mpf(x) for x in sc.d], mp.mpf(sc.t0), mp.inf if math.isinf(sc.t1) else mp.mpf(sc.t1),
+                         mp.mpf(sc.ss), mp.mpf(sc.st), [mp.mpf(x) for x in p], mp.mpf(sc.L), {"kind": "spot", "cos_inner": 1e-300, "cos_outer": 0.0},
+                         [mp.mpf(x) for x in a], D, phase_fn(rec.get("phase") or {"kind": "isotropic"}))
+    return abs(mine - float(theirs)) / abs(float(theirs))
+
+
+def reference(rec, rng):
+    sc = Scene(rec)
+    coarse, fine = sc.value(16, 2), sc.value(24, 3)
+    check = spot_check(sc, rec, rng)
+    ok = abs(coarse - fine) <= 1e-11 * abs(fine) and check <= 1e-11
+    return (fine if ok else None), coarse, fine, check
+
+
+def scenes():
+    rng = random.Random(20261130)
+    out = []
+    hg = lambda g: {"kind": "henyey_greenstein", "g": f32(g)}
+
+    def record(category, o, d, light, st, ray_len=None, phase=None):
+        return {
+            "category": category,
+            "ray": {"origin": f32v(o), "dir": f32v(d), "t_min": 0.0, "t_max": None if ray_len is None else f32(ray_len)},
+            "medium": {"sigma_s": f32(st * rng.uniform(0.3, 1.0)), "sigma_t": f32(st)},
+            "light": light,
+            "phase": phase or {"kind": "isotropic"},
+        }
+
+    def emitter(kind, center, n, size):
+        """A disc or rectangle about `center` with normal `n` (its emitting side)."""
+        L = f32(rng.uniform(1, 10))
+        if kind == "disc":
+            return {"shape": "disc", "center": f32v(center), "normal": f32v(n), "radius": f32(size), "radiance": L}
+        a1 = unit(np.cross(n, random_unit(rng)))
+        a2 = np.cross(n, a1)
+        eu, ev = a1 * size * rng.uniform(0.7, 1.5), (a2 + 0.3 * rng.uniform(-1, 1) * a1) * size * rng.uniform(0.7, 1.5)
+        return {"shape": "rectangle", "corner": f32v(center - 0.5 * eu - 0.5 * ev), "edge_u": f32v(eu), "edge_v": f32v(ev), "radiance": L}
+
+    def placed(category, kind, dist, st, behind=False, ray_len=None, phase=None):
+        """An emitter at distance `dist` from the ray's line, its emitting side towards it."""
+        d = unit(random_unit(rng))
+        o = np.array([rng.uniform(-3, 3) for _ in range(3)])
+        t_foot = -rng.uniform(2, 10) if behind else rng.uniform(2, 10)
+        side = unit(np.cross(d, random_unit(rng)))
+        center = o + t_foot * d + dist * side
+        n = unit(random_unit(rng))
+        # facing the ray's start, or its far part for an emitter behind the camera
+        towards = (o + (5.0 if behind else t_foot) * d) - center
+        if np.dot(n, towards) < 0:
+            n = -n
+        return record(category, o, d, emitter(kind, center, n, rng.uniform(0.3, 1.2)), st, ray_len, phase)
+
+    for i in range(3):
+        out.append(placed("far", "disc", rng.uniform(3, 8), 10 ** rng.uniform(-2, -0.5), phase=hg(0.6) if i else None))
+        out.append(placed("far", "rectangle", rng.uniform(3, 8), 10 ** rng.uniform(-2, -0.5), ray_len=rng.uniform(5, 30) if i == 1 else None, phase=hg(0.8) if i == 2 else None))
+    for i in range(3):
+        # near: the ray crosses the emitter's plane δ outside its rim, perpendicular to the rim
+        kind = ["disc", "rectangle", "disc"][i]
+        n = unit(random_unit(rng))
+        u = unit(np.cross(n, random_unit(rng)))
+        R = rng.uniform(0.3, 1.0)
+        center = np.array([rng.uniform(-3, 3) for _ in range(3)])
+        delta = 10 ** rng.uniform(-2.5, -1.5)
+        alpha = rng.uniform(0.3, 1.2)
+        d = unit(math.cos(alpha) * n + math.sin(alpha) * np.cross(n, u))
+        t_cross = rng.uniform(2, 6)
+        o = center + (R + delta) * u - t_cross * d
+        light = emitter(kind, center, n, R)
+        if kind == "rectangle":
+            # an edge-aligned square of half-width R, the crossing δ outside its edge midpoint
+            v = np.cross(n, u)
+            light = {"shape": "rectangle", "corner": f32v(center - R * u - R * v), "edge_u": f32v(2 * R * u), "edge_v": f32v(2 * R * v), "radiance": light["radiance"]}
+        out.append(record("near", o, d, light, 10 ** rng.uniform(-2, -0.5), phase=hg(0.5) if i == 1 else None))
+    for i in range(2):
+        out.append(placed("pierce", "disc", rng.uniform(0.0, 0.2), 10 ** rng.uniform(-2, -0.5)))
+        out.append(placed("pierce", "rectangle", rng.uniform(0.0, 0.2), 10 ** rng.uniform(-2, -0.5), phase=hg(0.7)))
+    for i in range(2):
+        out.append(placed("thick", ["disc", "rectangle"][i], rng.uniform(2, 5), rng.uniform(1, 4)))
+        out.append(placed("behind", ["rectangle", "disc"][i], rng.uniform(1, 4), 10 ** rng.uniform(-2, -0.5)))
+    return out
+
+
+def run(args):
+    i, r = args
+    return reference(r, random.Random(7 + i))
+
+
+def main():
+    lines = []
+    records = scenes()
+    with Pool(2) as pool:
+        results = pool.map(run, list(enumerate(records)))
+    for r, (value, coarse, fine, check) in zip(records, results):
+        status = "kept" if value is not None else "DROPPED"
+        print(f"{r['category']:>8} {r['light']['shape']:>9} {status} {fine:.17e} (coarse {abs(coarse - fine) / abs(fine):.1e}, L_point vs mpmath {check:.1e})", flush=True)
+        if value is not None:
+            r["in_scatter"] = value
+            lines.append(r)
+    print(f"{write_jsonl('area.jsonl', lines)} records")
+
+
+if __name__ == "__main__":
+    main()
