@@ -17,7 +17,7 @@
 //! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
 
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::extended::{adaptive, outer_tolerance, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{Lambertian, Omni};
 use crate::panels::Control;
@@ -60,12 +60,6 @@ pub struct AreaLight<T: Real> {
 
 /// The most Gauss–Kronrod panels of each of the two integrals over the emitter.
 pub const MAX_AREA_PANELS: usize = 48;
-
-/// The default relative tolerance of the outer integral's estimate: a tenth of the precision's
-/// target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
-pub fn area_tolerance<T: Real>() -> T {
-    T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
-}
 
 /// A validated scene with an area light.
 #[derive(Clone, Copy, Debug)]
@@ -134,9 +128,9 @@ where
         &self.phase
     }
 
-    /// In-scattered radiance of the area light, error-controlled to [`area_tolerance`].
+    /// In-scattered radiance of the area light, error-controlled to [`outer_tolerance`].
     pub fn in_scatter(&self) -> T {
-        self.in_scatter_counted(area_tolerance()).0
+        self.in_scatter_counted(outer_tolerance()).0
     }
 
     /// The same to a relative tolerance of the outer estimate, and the point lights evaluated.

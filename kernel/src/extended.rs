@@ -85,10 +85,11 @@ pub struct SegmentLight<T: Real, D> {
 /// The most Gauss–Kronrod panels of one segment light (each 15 point-light evaluations).
 pub const MAX_SEGMENT_PANELS: usize = 48;
 
-/// The relative tolerance of the outer integral's estimate (`|K15 − G7|` summed over the
-/// panels, itself far above the Kronrod sum's error on a resolved panel): a tenth of the
-/// precision's target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
-pub fn segment_tolerance<T: Real>() -> T {
+/// The default relative tolerance of the outer integral's estimate of every integral over an
+/// emitter or a hemisphere (segment, area and surface lights; `|K − G|` summed over the panels,
+/// itself far above the Kronrod sum's error on a resolved panel): a tenth of the precision's
+/// target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
+pub fn outer_tolerance<T: Real>() -> T {
     T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
 }
 
@@ -138,10 +139,10 @@ where
         &self.phase
     }
 
-    /// In-scattered radiance of the segment light, error-controlled to [`segment_tolerance`].
+    /// In-scattered radiance of the segment light, error-controlled to [`outer_tolerance`].
     /// `+∞` when the emitter meets the ray segment and `σs·I > 0`.
     pub fn in_scatter(&self) -> T {
-        self.in_scatter_counted(segment_tolerance()).0
+        self.in_scatter_counted(outer_tolerance()).0
     }
 
     /// The same to a relative tolerance of the outer estimate, and the panels evaluated.

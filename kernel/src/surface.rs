@@ -23,7 +23,7 @@
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::extended::{adaptive, outer_tolerance, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
 use crate::panels::Control;
@@ -63,12 +63,6 @@ pub struct Surface<T: Real> {
 
 /// The most Gauss–Kronrod panels of each of the two integrals over the hemisphere.
 pub const MAX_SURFACE_PANELS: usize = 48;
-
-/// The default relative tolerance of the outer integral's estimate: a tenth of the precision's
-/// target (docs/DESIGN.md §8: 1e-9 in f64, 1e-4 in f32).
-pub fn surface_tolerance<T: Real>() -> T {
-    T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
-}
 
 /// A validated surface point lit by air-light of a point light.
 #[derive(Clone, Copy, Debug)]
@@ -215,10 +209,10 @@ where
         (-self.medium.sigma_t * f.d).exp() / (f.d * f.d) * self.light.intensity * emitted * self.brdf_at(&f, f.l) * cos
     }
 
-    /// Surface radiance from air-light, error-controlled to [`surface_tolerance`]. `+∞` when the
+    /// Surface radiance from air-light, error-controlled to [`outer_tolerance`]. `+∞` when the
     /// light sits on the surface point and `σs·I > 0`.
     pub fn air_light(&self) -> T {
-        self.air_light_counted(surface_tolerance()).0
+        self.air_light_counted(outer_tolerance()).0
     }
 
     /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate, and the ray

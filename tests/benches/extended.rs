@@ -58,7 +58,7 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
             panels.sort();
             (e, panels[panels.len() / 2], panels[panels.len() - 1])
         };
-        let (e_default, med_default, max_default) = worst(&|s| s.in_scatter_counted(airlight::extended::segment_tolerance()));
+        let (e_default, med_default, max_default) = worst(&|s| s.in_scatter_counted(airlight::extended::outer_tolerance()));
         let (e_loose, med_loose, max_loose) = worst(&|s| s.in_scatter_counted(T::lit(1e-3)));
         writeln!(
             report,

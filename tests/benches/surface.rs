@@ -63,7 +63,7 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
             rays.sort();
             (e, rays[rays.len() / 2], rays[rays.len() - 1])
         };
-        let (e_default, med_default, max_default) = worst(&|s| s.air_light_counted(airlight::surface::surface_tolerance()));
+        let (e_default, med_default, max_default) = worst(&|s| s.air_light_counted(airlight::extended::outer_tolerance()));
         let (e_loose, med_loose, max_loose) = worst(&|s| s.air_light_counted(T::lit(1e-3)));
         writeln!(
             report,
