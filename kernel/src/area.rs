@@ -17,13 +17,12 @@
 //! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
 
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, outer_tolerance, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{Lambertian, Omni};
-use crate::panels::Control;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
-use crate::scene::{default_control, validate, Medium, PointLight, Ray, Scene};
+use crate::scene::{validate, Medium, PointLight, Ray, Scene};
 
 /// The shape of an area light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -146,8 +145,8 @@ where
             let t = dot(sub(x, o), d).max(t0).min(t1);
             axpy(o, t, d)
         };
-        let inner = Control { tolerance: (tolerance * T::lit(0.1)).max(T::lit(T::PANEL_TOLERANCE)), ..default_control() };
-        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
+        let inner = inner_control(tolerance);
+        let rule = outer_rule(tolerance);
         let inner_tolerance = tolerance * T::lit(0.1);
         let mut evaluated = 0;
         let mut point = |q: [T; 3], n: [T; 3]| -> T {

@@ -93,6 +93,23 @@ pub fn outer_tolerance<T: Real>() -> T {
     T::lit(if T::epsilon() < T::lit(1e-10) { 1e-10 } else { 1e-5 })
 }
 
+/// The Gauss–Kronrod rule of an outer integral at `tolerance`: 7 points per panel where 1e-4 of
+/// the value will do (on the classes of tests/reference/extended.jsonl at 1e-3 it is faster on 8
+/// of 12, slower where the peak is sharp: BENCHMARKS.md, segment lights), 15 below.
+pub(crate) fn outer_rule<T: Real>(tolerance: T) -> &'static [(f64, f64, f64)] {
+    if tolerance >= T::lit(1e-4) {
+        &GAUSS_KRONROD_7
+    } else {
+        &GAUSS_KRONROD_15
+    }
+}
+
+/// The control of each inner ray integral (a point light's, a ray's from a surface) under an
+/// outer integral at `tolerance`: a tenth of it, the default's where that is finer.
+pub(crate) fn inner_control<T: Real>(tolerance: T) -> Control<T> {
+    Control { tolerance: (tolerance * T::lit(0.1)).max(T::lit(T::PANEL_TOLERANCE)), ..default_control() }
+}
+
 /// A validated scene with a segment light.
 #[derive(Clone, Copy, Debug)]
 pub struct SegmentScene<T: Real, D, P> {
@@ -181,8 +198,7 @@ where
             scale = T::zero();
         }
         let to_w = |s: T| if scale > T::zero() { ((s - s_star) / scale).asinh() } else { s };
-        // each point light to a tenth of the outer tolerance (the default's where that is finer)
-        let inner = Control { tolerance: (tolerance * T::lit(0.1)).max(T::lit(T::PANEL_TOLERANCE)), ..default_control() };
+        let inner = inner_control(tolerance);
         let mut point = |w: T| {
             let (s, ds) = if scale > T::zero() { (s_star + scale * w.sinh(), scale * w.cosh()) } else { (w, T::one()) };
             let position = T::vec3_from_array([a[0] + s * e[0], a[1] + s * e[1], a[2] + s * e[2]]);
@@ -212,11 +228,7 @@ where
         }
         n += 1;
         edges[n] = w_hi;
-        // 7 points per panel where 1e-4 of the value will do (on the classes of
-        // tests/reference/extended.jsonl at 1e-3 it is faster on 8 of 12, slower where the peak
-        // is sharp: BENCHMARKS.md, segment lights), 15 below
-        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
-        adaptive(rule, &mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
+        adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
     }
 }
 

@@ -23,13 +23,12 @@
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, outer_tolerance, GAUSS_KRONROD_15, GAUSS_KRONROD_7};
+use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
-use crate::panels::Control;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
-use crate::scene::{default_control, validate, Medium, PointLight, Ray, Scene};
+use crate::scene::{validate, Medium, PointLight, Ray, Scene};
 
 /// The surface's reflectance.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -236,8 +235,8 @@ where
             }
         }
         let inner_tolerance = tolerance * T::lit(0.1);
-        let control = Control { tolerance: inner_tolerance.max(T::lit(T::PANEL_TOLERANCE)), ..default_control() };
-        let rule: &[(f64, f64, f64)] = if tolerance >= T::lit(1e-4) { &GAUSS_KRONROD_7 } else { &GAUSS_KRONROD_15 };
+        let control = inner_control(tolerance);
+        let rule = outer_rule(tolerance);
         let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
         let mut rays = 0;
