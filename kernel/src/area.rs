@@ -233,6 +233,7 @@ where
                     let (mut psi_i, mut psi_j) = (angle(ci), angle(cj));
                     if count == 0 {
                         start = psi_i;
+                        edges[0] = psi_i;
                     }
                     // unwrap: increasing from the first triangle's start
                     while psi_i < start - T::lit(1e-9) {
@@ -240,9 +241,6 @@ where
                     }
                     while psi_j <= psi_i {
                         psi_j = psi_j + T::PI() + T::PI();
-                    }
-                    if count == 0 {
-                        edges[0] = psi_i;
                     }
                     edges[count + 1] = psi_j;
                     lines[count] = (m, h);

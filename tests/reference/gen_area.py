@@ -93,7 +93,7 @@ class Scene:
             out[i:i + 4096] = point_lights(self.o, self.d, self.t0, self.t1, self.ss, self.st, P[i:i + 4096], A[i:i + 4096], self.L, self.phase, q)
         return out
 
-    def flat(self, f, n, a1, a2, psi_edges, reach, size, q, m):
+    def flat(self, f, n, a1, a2, psi_edges, reach, size, q):
         """∫∫ L_point(f + r e_ψ) r dr dψ over ψ pieces and r ∈ [0, reach(ψ)]."""
         rho0 = np.linalg.norm(f - self.nearest(f))
         # where e_ψ runs along the ray's shadow in the plane, the r integral peaks within
@@ -130,7 +130,7 @@ class Scene:
         vals = self.lights(pts.reshape(-1, 3), np.broadcast_to(n, pts.reshape(-1, 3).shape), q).reshape(Rn.shape)
         return np.sum(Wpsi * np.sum(Rw * Rn * vals, axis=(1, 2)))
 
-    def value(self, q, m):
+    def value(self, q):
         lt = self.light
         if lt["shape"] == "disc":
             c, n, R = np.array(lt["center"], float), unit(lt["normal"]), lt["radius"]
@@ -152,7 +152,7 @@ class Scene:
                 # f on the rim: the reach falls to 0 at the tangents, ψ_c ± π/2 (ψ_c towards c)
                 pc = math.atan2(-np.dot(off, a2), -np.dot(off, a1))
                 psi = sorted(set(psi) | {(pc + sgn * np.pi / 2) % (2 * np.pi) for sgn in (1, -1)})
-            return self.flat(f, n, a1, a2, psi, reach, R, q, m)
+            return self.flat(f, n, a1, a2, psi, reach, R, q)
         if lt["shape"] == "rectangle":
             p0, eu, ev = (np.array(lt[k], float) for k in ("corner", "edge_u", "edge_v"))
             n = unit(np.cross(eu, ev))
@@ -178,7 +178,7 @@ class Scene:
                 def reach(E, _psi, mm=mm, h=h):
                     return h / np.maximum(E @ mm, 1e-300)
 
-                total += self.flat(f, n, a1, a2, list(np.linspace(pi_, pj, 3)), reach, math.sqrt(max(eu @ eu, ev @ ev)), q, m)
+                total += self.flat(f, n, a1, a2, list(np.linspace(pi_, pj, 3)), reach, math.sqrt(max(eu @ eu, ev @ ev)), q)
             return total
         raise ValueError(lt["shape"])
 
@@ -216,7 +216,7 @@ def spot_check(sc, rec, rng):
 
 def reference(rec, rng):
     sc = Scene(rec)
-    coarse, fine = sc.value(16, 2), sc.value(24, 3)
+    coarse, fine = sc.value(16), sc.value(24)
     check = spot_check(sc, rec, rng)
     ok = abs(coarse - fine) <= 1e-11 * abs(fine) and check <= 1e-11
     return (fine if ok else None), coarse, fine, check
