@@ -88,10 +88,12 @@ where
     if !(hi > lo) {
         return T::zero();
     }
+    // the accuracy target's form: tolerance × max(|sum|, floor × scale)
+    let target = |total: T, mass: T, f_max: T| control.tolerance * total.abs().max(control.floor * f_max * mass);
     let first = listed::<T, F, N>(half, lo, hi, f, rule, run);
     let mut budget = control.max_panels.saturating_sub(1);
     // most pieces are done in one panel: no list for them
-    if first.error <= control.tolerance * first.value.abs().max(control.floor * run.f_max * first.mass_over) || budget < 2 {
+    if first.error <= target(first.value, first.mass_over, run.f_max) || budget < 2 {
         return first.value;
     }
     let mut list = [first; LIST];
@@ -107,8 +109,7 @@ where
                 worst = i;
             }
         }
-        let target = control.tolerance * total.abs().max(control.floor * run.f_max * mass);
-        if errors <= target || !(list[worst].error > T::zero()) || budget < 2 || count == LIST {
+        if errors <= target(total, mass, run.f_max) || !(list[worst].error > T::zero()) || budget < 2 || count == LIST {
             return total;
         }
         let (a, b) = (list[worst].a, list[worst].b);
