@@ -7,7 +7,7 @@ import re
 import subprocess
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "shaders-out")
-ROW = re.compile(r"\| `([a-z]+/airlight_(?:lib_)?)\{4,6\}([^`]*)` \|(.*)\| ([\d ]+) / ([\d ]+) \|$")
+ROW = re.compile(r"\| `([a-z]+/airlight_(?:lib_)?)\{8,12\}([^`]*)` \|(.*)\| ([\d ]+) / ([\d ]+) \|$")
 
 
 def spaced(n):
@@ -21,12 +21,12 @@ def instructions(path):
 
 def row(m):
     prefix, suffix, what = m.group(1), m.group(2), m.group(3)
-    paths = [os.path.join(ROOT, f"{prefix}{t}{suffix}") for t in (4, 6)]
+    paths = [os.path.join(ROOT, f"{prefix}{t}{suffix}") for t in (8, 12)]
     sizes = [os.path.getsize(p) for p in paths]
     if suffix == ".spv":
         counts = [instructions(p) for p in paths]
         what = re.sub(r"\([\d ]+ / [\d ]+ instructions", f"({spaced(counts[0])} / {spaced(counts[1])} instructions", what)
-    return f"| `{prefix}{{4,6}}{suffix}` |{what}| {spaced(sizes[0])} / {spaced(sizes[1])} |"
+    return f"| `{prefix}{{8,12}}{suffix}` |{what}| {spaced(sizes[0])} / {spaced(sizes[1])} |"
 
 
 readme = os.path.join(ROOT, "README.md")

@@ -1,5 +1,5 @@
-//! GPU throughput (rays/s) of the generated compute shader (`shaders-out/wgsl/airlight_4.wgsl`
-//! and `airlight_6.wgsl`: error-controlled panels of 4 or 6 nodes) against two WGSL baselines
+//! GPU throughput (rays/s) of the generated compute shader (`shaders-out/wgsl/airlight_8.wgsl`
+//! and `airlight_12.wgsl`: error-controlled panels of 8 or 12 nodes) against two WGSL baselines
 //! at equal accuracy, side by side in one run on whatever adapter wgpu finds (Mesa lavapipe on
 //! machines without a GPU):
 //!
@@ -32,7 +32,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_shaders::targets::compute_wgsl;
+use airlight_shaders::targets::{compute_wgsl, NODE_COUNTS};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
@@ -47,7 +47,7 @@ const RAYMARCH: &str = include_str!("raymarch.wgsl");
 const GAUSS_ANGLE: &str = include_str!("gauss_angle.wgsl");
 const BASELINE_ENTRY: &str = include_str!("baseline_entry.wgsl");
 /// The include library whose structs and phase/light functions the baselines use.
-const LIBRARY: &str = include_str!("../../shaders-out/wgsl/airlight_lib_4.wgsl");
+const LIBRARY: &str = include_str!("../../shaders-out/wgsl/airlight_lib_8.wgsl");
 const STEPS_LINE: &str = "const STEPS: u32 = 64u;";
 const NODES_LINE: &str = "const NODES: u32 = 8u;";
 const RULE_LINE: &str = "const RULE = array<vec2<f32>, 4>(vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0));";
@@ -240,7 +240,7 @@ fn main() {
         p
     };
     // the generated shaders take seconds to compile on lavapipe: once for both variants
-    let generated = [4u32, 6].map(|terms| (terms, prepare(&format!("generated_{terms}"), compute_wgsl(terms as usize))));
+    let generated = NODE_COUNTS.map(|terms| (terms as u32, prepare(&format!("generated_{terms}"), compute_wgsl(terms))));
     let copy_only = prepare("copy_only", COPY_ONLY);
     let mut accuracy_md = String::new();
     let mut speed_md = String::new();
@@ -257,10 +257,7 @@ fn main() {
         let gen_err: Vec<(u32, [f64; 3])> =
             generated.iter().map(|(terms, p)| (*terms, errors(&p.run(&records, false).expect("generated shader runs"), &reference))).collect();
         let control = airlight::SHADER_CONTROL;
-        let cpu_err = [
-            (4, quantiles(cpu32.iter().map(|s| s.in_scatter_panels::<4>(control) as f64), &reference)),
-            (6, quantiles(cpu32.iter().map(|s| s.in_scatter_panels::<6>(control) as f64), &reference)),
-        ];
+        let cpu_err = NODE_COUNTS.map(|n| (n, quantiles(cpu32.iter().map(|s| s.in_scatter_panels_with_nodes(n, control).unwrap() as f64), &reference)));
         let _ = writeln!(accuracy_md, "\n**{label}**, {RAYS} rays; relative error against the f64 CPU kernel's default path:\n");
         let _ = writeln!(accuracy_md, "| method | grid point | median | p99 | max | timed as |");
         let _ = writeln!(accuracy_md, "|---|---|---|---|---|---|");
@@ -379,7 +376,7 @@ fn main() {
     md.push_str(&ratio_md);
     let _ = writeln!(md, "\nPipeline build (shader compilation by the driver), once per shader, outside the timing:\n\n| shader | ms |\n|---|---|");
     md.push_str(&build_md);
-    let counts: Vec<String> = [4u32, 6].iter().map(|&t| spirv_instructions(t).map(|n| format!("{t} nodes: {n}")).unwrap_or_else(|| format!("{t} nodes: spirv-dis not found"))).collect();
+    let counts: Vec<String> = NODE_COUNTS.iter().map(|&t| spirv_instructions(t as u32).map(|n| format!("{t} nodes: {n}")).unwrap_or_else(|| format!("{t} nodes: spirv-dis not found"))).collect();
     let _ = writeln!(md, "\nSPIR-V instructions of the committed compute shaders: {}.", counts.join(", "));
     println!("\n{md}");
     let path = target_dir().join("criterion").join("gpu_summary.md");

@@ -32,7 +32,7 @@ pub struct EvalOptions {
     pub precision: Precision,
     /// `None`: the kernel's default, error-controlled path ([`Scene::in_scatter`]); `Some(4 | 6)`:
     /// one expansion of that many terms per piece (the paper's fixed-cost method). The GPU
-    /// backend runs the shader with 4 Gauss–Legendre nodes per panel unless 6 is asked for.
+    /// backend runs the shader with 8 Gauss–Legendre nodes per panel unless 12 is asked for.
     pub terms: Option<usize>,
     /// Expansion kind.
     pub expansion: Expansion,
@@ -201,7 +201,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         Vec::new()
     } else {
         let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
-        gpu.run(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_TERMS))), &records, true).map_err(EvalError::Gpu)?
+        gpu.run(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_NODES))), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
     for (id, l) in lines {

@@ -74,7 +74,7 @@ const RENDER_ABOUT: &str = "\
 Render the pictures to PNG: a lighthouse with a two-lobed beam in thick brume, a foggy road with
 headlights and a streetlamp, a stage under three coloured spotlights, a park bench in Rayleigh
 mist. Writes DIR/<scene>_<backend>.png per backend — cpu (the f64 kernel's default path), gpu
-(the committed WGSL compute shader through wgpu, f32, 4 nodes per panel), reference
+(the committed WGSL compute shader through wgpu, f32, 8 nodes per panel), reference
 (brute-force adaptive quadrature of the integral, no closed forms) — and, with the reference,
 error heat maps DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
 relative error against the reference, log10 scale from 1e-7 (black) through blue, green,
@@ -104,17 +104,17 @@ enum ExpansionArg {
 /// The term or node counts the shaders are emitted with (and the CPU's fixed method takes here).
 #[derive(Clone, Copy, ValueEnum)]
 enum Nodes {
-    #[value(name = "4")]
-    Four,
-    #[value(name = "6")]
-    Six,
+    #[value(name = "8")]
+    Eight,
+    #[value(name = "12")]
+    Twelve,
 }
 
 impl Nodes {
     fn count(self) -> usize {
         match self {
-            Nodes::Four => 4,
-            Nodes::Six => 6,
+            Nodes::Eight => 8,
+            Nodes::Twelve => 12,
         }
     }
 }
@@ -130,8 +130,8 @@ struct EvalArgs {
     precision: PrecisionArg,
     /// CPU: the paper's fixed-cost method with this many expansion terms, 1 to 16 (default:
     /// the kernel's error-controlled panels, within 1e-10 in f64 and 1e-4 in f32 of
-    /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel, 4 or 6
-    /// (default 4).
+    /// max(|exact|, tau·scale)). GPU: the shader with this many nodes per panel, 8 or 12
+    /// (default 8).
     #[arg(long, value_parser = clap::value_parser!(u8).range(1..=16))]
     terms: Option<u8>,
     /// Polynomial expansion of --terms.
@@ -145,7 +145,7 @@ struct EmitArgs {
     #[arg(long, visible_alias = "dir")]
     out: Option<PathBuf>,
     /// Nodes per panel of the emitted shaders, a comma list.
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "4,6")]
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "8,12")]
     terms: Vec<Nodes>,
     /// Target languages, a comma list (wgsl, glsl, spirv, hlsl, msl) [default: all].
     #[arg(long, value_delimiter = ',')]
@@ -158,7 +158,7 @@ struct VerifyArgs {
     #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]
     cases: u32,
     /// Nodes per panel of the shader under test.
-    #[arg(long, value_enum, default_value = "4")]
+    #[arg(long, value_enum, default_value = "8")]
     terms: Nodes,
 }
 
@@ -232,8 +232,8 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
         },
     };
     if let (Backend::Gpu, Some(n)) = (opts.backend, opts.terms) {
-        if !airlight_shaders::targets::TERM_COUNTS.contains(&n) {
-            eprintln!("airlight: --terms {n} with --backend gpu: the shaders are emitted with 4 or 6 nodes per panel");
+        if !airlight_shaders::targets::NODE_COUNTS.contains(&n) {
+            eprintln!("airlight: --terms {n} with --backend gpu: the shaders are emitted with 8 or 12 nodes per panel");
             return ExitCode::from(2);
         }
     }
@@ -346,7 +346,7 @@ fn cmd_render(a: RenderArgs) -> ExitCode {
     };
     let prepared = device.as_ref().map(|g| {
         let start = Instant::now();
-        let p = g.prepare(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(airlight::SHADER_TERMS)));
+        let p = g.prepare(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(airlight::SHADER_NODES)));
         println!("gpu: {}, shader compiled in {:.2} s", g.describe(), start.elapsed().as_secs_f64());
         p
     });

@@ -50,7 +50,7 @@ impl Lcg {
     }
 }
 
-/// Runs the check with `cases` scenes through the shader with `terms` (4 or 6) nodes per panel.
+/// Runs the check with `cases` scenes through the shader with `terms` (8 or 12) nodes per panel.
 pub fn verify(cases: usize, terms: usize) -> Result<Report, String> {
     let gpu = Gpu::new()?;
     let mut rng = Lcg(2009);

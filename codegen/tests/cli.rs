@@ -99,5 +99,5 @@ fn every_term_count_and_ids_echoed() {
     let o = run(&["eval", "--terms", "17"]);
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("17 is not in 1..=16"));
     let o = run(&["eval", "--terms", "5", "--backend", "gpu"]);
-    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("4 or 6 nodes"), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("8 or 12 nodes"), "{}", String::from_utf8_lossy(&o.stderr));
 }

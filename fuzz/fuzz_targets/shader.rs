@@ -1,5 +1,5 @@
 //! Target (3), differential: the CPU kernel against the committed compute shader
-//! (shaders-out/wgsl/airlight_4.wgsl) on this machine's Vulkan adapter (lavapipe here). Each
+//! (shaders-out/wgsl/airlight_8.wgsl) on this machine's Vulkan adapter (lavapipe here). Each
 //! input is a batch of up to 64 scenes (decoded as in the `kernel` target: arbitrary values,
 //! special values and raw bits included), run in one dispatch and judged record by record
 //! with the agreement criterion of `airlight_shaders::agreement` (the one the agreement tests
@@ -22,7 +22,7 @@ use std::sync::OnceLock;
 mod common;
 use common::Batch;
 
-const TERMS: usize = 4;
+const TERMS: usize = airlight::SHADER_NODES;
 
 /// The adapter and the compiled pipeline, built once per process (leaked: they live as long
 /// as the fuzzer).

@@ -78,4 +78,4 @@ pub use precision::{f32, f64};
 pub use real::Real;
 pub use scalar::Scalar;
 pub use surface::{Brdf, Surface, SurfaceScene};
-pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_TERMS};
+pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_NODES};

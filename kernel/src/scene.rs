@@ -14,11 +14,13 @@ use crate::real::Real;
 
 /// Expansion terms on the CPU (the paper's software renderer used 6).
 pub const CPU_TERMS: usize = 6;
-/// Gauss–Legendre nodes per panel in the default shader (the paper's GPU version used 4
-/// expansion terms); the shaders are also emitted with 6.
-pub const SHADER_TERMS: usize = 4;
+/// Gauss–Legendre nodes per panel in the default shader: the f32 default path's count (the
+/// paper's GPU version used one 4-term expansion per half; panels of 4 nodes need 3–4× the
+/// panels of 8 and were slower on every class measured, BENCHMARKS.md); the shaders are also
+/// emitted with 12.
+pub const SHADER_NODES: usize = 8;
 /// The shaders' error control (they compute [`Scene::in_scatter_panels`] with
-/// [`SHADER_TERMS`] or 6 nodes and this control): tolerance `1e-4` of `F` on each piece,
+/// [`SHADER_NODES`] or 12 nodes and this control): tolerance `1e-4` of `F` on each piece,
 /// `floor` the f32 `τ` (docs/DESIGN.md §8), at most 16 panels per piece (the shader's fixed
 /// worst-case loop).
 pub const SHADER_CONTROL: Control<f32> = Control { tolerance: 1e-4, floor: 1e-4, max_panels: 16 };

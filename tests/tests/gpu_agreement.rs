@@ -8,8 +8,8 @@
 //! Judged with the one criterion of `airlight_shaders::agreement` (its module docs derive it
 //! from Vulkan's precision rules): `|gpu − cpu_f32| ≤ 9·noise + 2e-4·scale (+ 2^-100)`, `noise`
 //! the f32 spread of the same method over one-ulp input perturbations plus its error against
-//! the f64 default path; statuses equal; no NaN, no Inf. Asserted for every artifact kind at 4
-//! and 6 nodes. The mpmath reference scenes (tests/reference/scenes.jsonl) run through the
+//! the f64 default path; statuses equal; no NaN, no Inf. Asserted for every artifact kind at 8
+//! and 12 nodes. The mpmath reference scenes (tests/reference/scenes.jsonl) run through the
 //! shaders too: the `f32_exact` ones (isotropic, inputs exact in f32) must be within 1e-4 of
 //! the quadrature value, as the CPU kernel is (`tests/reference.rs`). The hard scene classes
 //! (tests/reference/classes.jsonl) must be within 1e-3 (`shaders_meet_the_class_targets`).
@@ -24,7 +24,7 @@ use airlight_shaders::gpu::{Gpu, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
 use airlight::record::SceneRecord;
 use airlight_codegen::scene_json::parse_value;
-use airlight_shaders::targets::default_out_dir;
+use airlight_shaders::targets::{default_out_dir, NODE_COUNTS};
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
@@ -222,7 +222,7 @@ fn every_artifact_agrees_with_the_cpu_kernel() {
     std::fs::create_dir_all(&tmp).unwrap();
     report("| artifact | records | NaN/Inf | max diff to f32 CPU (of scale) | median | max diff to f64 CPU | max err f32_exact vs mpmath | failures |");
     report("|---|---|---|---|---|---|---|---|");
-    for terms in [4usize, 6] {
+    for terms in NODE_COUNTS {
         let c = case(terms);
         let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
         compare(&format!("wgsl/{terms}"), &c, &gpu.run(Shader::Wgsl(&wgsl), &c.records, false).unwrap());
@@ -242,7 +242,7 @@ fn every_artifact_agrees_with_the_cpu_kernel() {
     }
 }
 
-/// The committed compute shaders (WGSL, 4 and 6 nodes per panel) on the hard scene classes
+/// The committed compute shaders (WGSL, 8 and 12 nodes per panel) on the hard scene classes
 /// against the mpmath references (tests/reference/classes.jsonl, as `tests/classes.rs` uses
 /// them): error `|x − exact| / max(|exact|, 1e-4·scale)` at most 1e-3 on every record whose
 /// value is at least 1e-30 (far inside f32's normal range), every class — the shaders' target
@@ -260,7 +260,7 @@ fn shaders_meet_the_class_targets() {
         .collect();
     let dir = default_out_dir();
     let mut failures = Vec::new();
-    for terms in [4usize, 6] {
+    for terms in NODE_COUNTS {
         let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
         let out = gpu.run(Shader::Wgsl(&wgsl), &records, false).unwrap();
         let mut classes: std::collections::BTreeMap<&str, Vec<f64>> = std::collections::BTreeMap::new();

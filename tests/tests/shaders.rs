@@ -7,7 +7,7 @@
 //! reported loudly and the tool's check is skipped. MSL has no validator on Linux: MSL output
 //! is what naga wrote from a module naga validated, nothing more is claimed.
 
-use airlight_shaders::targets::{default_out_dir, render, validate, EmitOptions, TERM_COUNTS};
+use airlight_shaders::targets::{default_out_dir, render, validate, EmitOptions, NODE_COUNTS};
 use airlight_tests::repo_root;
 use std::path::Path;
 use std::process::Command;
@@ -50,12 +50,13 @@ fn readme_sizes_are_current() {
     let dir = default_out_dir();
     let readme = std::fs::read_to_string(dir.join("README.md")).expect("shaders-out/README.md");
     let mut rows = 0;
-    for line in readme.lines().filter(|l| l.starts_with("| `") && l.contains("{4,6}")) {
+    let counts = format!("{{{}}}", NODE_COUNTS.map(|n| n.to_string()).join(","));
+    for line in readme.lines().filter(|l| l.starts_with("| `") && l.contains(&counts)) {
         let pattern = line.split('`').nth(1).unwrap();
         let sizes = line.trim_end_matches(" |").rsplit("| ").next().unwrap();
         let listed: Vec<u64> = sizes.split(" / ").map(|n| n.replace(' ', "").parse().expect(line)).collect();
-        for (n, want) in TERM_COUNTS.iter().zip(&listed) {
-            let file = dir.join(pattern.replace("{4,6}", &n.to_string()));
+        for (n, want) in NODE_COUNTS.iter().zip(&listed) {
+            let file = dir.join(pattern.replace(&counts, &n.to_string()));
             let got = std::fs::metadata(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display())).len();
             assert_eq!(got, *want, "shaders-out/README.md lists {} as {want} bytes; it has {got} (run scripts/update-shader-sizes.py)", file.display());
         }
@@ -76,7 +77,7 @@ fn spirv_validates() {
     if !tool("spirv-val") {
         return;
     }
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         let path = default_out_dir().join(format!("spirv/airlight_{n}.spv"));
         run(Command::new("spirv-val").arg("--target-env").arg("vulkan1.0").arg(&path));
     }
@@ -88,7 +89,7 @@ fn glsl_and_hlsl_compute_shaders_compile() {
         return;
     }
     let tmp = scratch("airlight-shaders");
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         let dir = default_out_dir();
         run(Command::new("glslangValidator").args(["-V", "--target-env", "vulkan1.0", "-o"]).arg(tmp.join("c.spv")).arg(dir.join(format!("glsl/airlight_{n}.comp"))));
         run(Command::new("glslangValidator").args(["-V", "-D", "-e", "airlight_main", "-S", "comp", "-o"]).arg(tmp.join("h.spv")).arg(dir.join(format!("hlsl/airlight_{n}.hlsl"))));
@@ -112,7 +113,7 @@ fn include_libraries_compile_in_a_test_shader() {
     }
     let tmp = scratch("airlight-lib");
     let dir = default_out_dir();
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         let g450 = paste(
             &dir.join(format!("glsl/airlight_lib_{n}.glsl")),
             "#version 450",
@@ -159,7 +160,7 @@ fn hlsl_library_shares_a_file_with_another_naga_output() {
     let other_hlsl = other_hlsl.split("[numthreads").next().unwrap().to_string();
     std::fs::write(tmp.join("other.hlsl"), &other_hlsl).unwrap();
     let dir = default_out_dir();
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         std::fs::copy(dir.join(format!("hlsl/airlight_lib_{n}.hlsl")), tmp.join("airlight.hlsl")).unwrap();
         let user = format!(
             "#include \"airlight.hlsl\"\n#include \"other.hlsl\"\n#include \"airlight.hlsl\"\nRWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = {SCENE_HLSL};\n    v[0] = airlight_in_scatter(s).in_scatter + other_hash(3u, 5u);\n}}\n",
@@ -207,7 +208,7 @@ fn hlsl_and_msl_globals_are_prefixed() {
 #[test]
 fn wgsl_revalidates_in_naga() {
     let dir = default_out_dir();
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         let c = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{n}.wgsl"))).unwrap();
         validate(&c).unwrap_or_else(|e| panic!("wgsl/airlight_{n}.wgsl: {e}"));
         let l = std::fs::read_to_string(dir.join(format!("wgsl/airlight_lib_{n}.wgsl"))).unwrap();
@@ -244,10 +245,10 @@ fn pasted(snippet: &str, file: &str) -> String {
 fn readme_snippets_compile() {
     let dir = default_out_dir();
     let readme = std::fs::read_to_string(dir.join("README.md")).unwrap();
-    let wgsl = pasted(&readme_snippet(&readme, "wgsl"), "wgsl/airlight_lib_4.wgsl");
+    let wgsl = pasted(&readme_snippet(&readme, "wgsl"), "wgsl/airlight_lib_8.wgsl");
     validate(&wgsl).unwrap_or_else(|e| panic!("the WGSL snippet: {e}"));
     let msl = readme_snippet(&readme, "msl");
-    let msl_lib = std::fs::read_to_string(dir.join("msl/airlight_lib_4.metal")).unwrap();
+    let msl_lib = std::fs::read_to_string(dir.join("msl/airlight_lib_8.metal")).unwrap();
     let code: String = msl.lines().filter(|l| !l.starts_with("#include")).collect::<Vec<_>>().join("\n");
     for name in code.split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| w.starts_with("airlight_") || w.starts_with("Airlight") || w.starts_with("AIRLIGHT_")) {
         assert!(msl_lib.contains(name), "the MSL snippet uses {name}, which the MSL library does not define");
@@ -261,7 +262,7 @@ fn readme_snippets_compile() {
     run(Command::new("spirv-val").args(["--target-env", "vulkan1.0"]).arg(tmp.join("fog.spv")));
     let size = std::fs::metadata(tmp.join("fog.spv")).unwrap().len();
     println!("GLSL 450 snippet as SPIR-V (glslang): {size} bytes");
-    std::fs::write(tmp.join("fog_es.frag"), pasted(&readme_snippet(&readme, "es300"), "glsl/airlight_lib_4_es300.glsl")).unwrap();
+    std::fs::write(tmp.join("fog_es.frag"), pasted(&readme_snippet(&readme, "es300"), "glsl/airlight_lib_8_es300.glsl")).unwrap();
     run(Command::new("glslangValidator").arg(tmp.join("fog_es.frag")));
     std::fs::write(tmp.join("fog.hlsl"), readme_snippet(&readme, "hlsl")).unwrap();
     run(Command::new("glslangValidator").args(["-V", "-D", "-e", "fog_glow", "-S", "frag"]).arg(format!("-I{}", dir.join("hlsl").display())).arg("-o").arg(tmp.join("fog_hlsl.spv")).arg(tmp.join("fog.hlsl")));
@@ -273,7 +274,7 @@ fn readme_snippets_compile() {
 fn naga_oil_import_module_composes() {
     use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor};
     let dir = default_out_dir();
-    for n in TERM_COUNTS {
+    for n in NODE_COUNTS {
         let file = format!("wgsl/airlight_lib_{n}_import.wgsl");
         let library = std::fs::read_to_string(dir.join(&file)).unwrap();
         let mut composer = Composer::default();

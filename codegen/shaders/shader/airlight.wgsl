@@ -26,17 +26,13 @@ const AIRLIGHT_EULER_GAMMA: f32 = 0.5772156649015329;
 const AIRLIGHT_FLT_MAX: f32 = 3.40282347e38;
 const AIRLIGHT_FLT_EPS: f32 = 1.1920929e-7;
 const AIRLIGHT_LN_2: f32 = 0.6931472;
-// Scratch size of the E_n arrays: orders up to N + 2 (tail panels).
-const AIRLIGHT_SCRATCH: u32 = 16u;
+/// Orders of e^x E_n(x) a tail panel uses: n = 1 … N + 2.
+const AIRLIGHT_EN_ORDERS: u32 = @EN_ORDERS@u;
 
 /// Explicitly zeroed arrays (some HLSL front ends reject the zero-value cast naga would
 /// otherwise write for an uninitialised `var`).
 fn airlight_zero_terms() -> array<f32, AIRLIGHT_TERMS> {
     return array<f32, AIRLIGHT_TERMS>(@ZEROS_TERMS@);
-}
-
-fn airlight_zero_scratch() -> array<f32, AIRLIGHT_SCRATCH> {
-    return array<f32, AIRLIGHT_SCRATCH>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
 }
 
 // Phase-function and light-distribution kinds (record fields `phase_kind`, `light_kind`;
@@ -439,35 +435,25 @@ fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
     return 1.0 / (x + nf - nf / t);
 }
 
-/// out[k] = e^x E_{k+1}(x), k < count ≤ AIRLIGHT_SCRATCH, x ≥ 0; recurrences away from the
-/// pivot order n* ≈ x (Miller's rule).
-fn airlight_en_scaled(x: f32, count: u32, out: ptr<function, array<f32, AIRLIGHT_SCRATCH>>) {
+/// out[n − 1] = e^x E_n(x), n = 1 … AIRLIGHT_EN_ORDERS, x ≥ 0 (special/en.rs `en_scaled`):
+/// recurrences away from the pivot order n* ≈ x (Miller's rule), written out (unrolled.rs).
+fn airlight_en_scaled(x: f32) -> array<f32, AIRLIGHT_EN_ORDERS> {
+    var out = array<f32, AIRLIGHT_EN_ORDERS>(@ZEROS_EN@);
     if (x == 0.0) {
         // E_1(0) = +∞ (never used at x = 0), E_n(0) = 1/(n − 1)
-        (*out)[0] = AIRLIGHT_FLT_MAX;
-        for (var n = 2u; n <= AIRLIGHT_SCRATCH; n++) {
-            (*out)[n - 1u] = 1.0 / f32(n - 1u);
-        }
-        return;
+        @EN_AT_ZERO@
+        return out;
     }
     var pivot = 1u;
+    var start = 0.0;
     if (airlight_in_series_region(vec2<f32>(x, 0.0))) {
-        (*out)[0] = airlight_e1_scaled(vec2<f32>(x, 0.0)).x;
+        start = airlight_e1_scaled(vec2<f32>(x, 0.0)).x;
     } else {
-        pivot = u32(clamp(ceil(x), 1.0, f32(count)));
-        (*out)[pivot - 1u] = airlight_en_scaled_cf(x, pivot);
+        pivot = u32(clamp(ceil(x), 1.0, f32(AIRLIGHT_EN_ORDERS)));
+        start = airlight_en_scaled_cf(x, pivot);
     }
-    for (var n = 1u; n < AIRLIGHT_SCRATCH; n++) {
-        if (n >= count) { break; }
-        if (n >= pivot) {
-            (*out)[n] = (1.0 - x * (*out)[n - 1u]) / f32(n);
-        }
-    }
-    for (var i = 1u; i < AIRLIGHT_SCRATCH; i++) {
-        if (i >= pivot) { break; }
-        let n = pivot - i;
-        (*out)[n - 1u] = (1.0 - f32(n) * (*out)[n]) / x;
-    }
+    let inv_x = 1.0 / x;
+@EN_RECURRENCES@    return out;
 }
 
 // ---------------------------------------------------------------- phase functions, lights
@@ -669,16 +655,6 @@ fn airlight_gauss_rule() -> array<vec2<f32>, AIRLIGHT_HALF_TERMS> {
     return array<vec2<f32>, AIRLIGHT_HALF_TERMS>(@GAUSS_RULE@);
 }
 
-/// P_k's monomial coefficients, row k (panels.rs `LEGENDRE_MONOMIAL` scaled by 2^−k; exact).
-fn airlight_legendre_monomial() -> array<f32, @TERMS_SQUARED@> {
-    return array<f32, @TERMS_SQUARED@>(@LEGENDRE_MONOMIAL@);
-}
-
-/// The discrete Legendre transform, row k: the weights of g(x_j) ± g(−x_j) (gauss_table.rs).
-fn airlight_legendre_table() -> array<f32, @TRANSFORM_LEN@> {
-    return array<f32, @TRANSFORM_LEN@>(@LEGENDRE_TRANSFORM@);
-}
-
 /// Node i in the order of the samples: −x_0, x_0, −x_1, x_1, …
 fn airlight_node(rule: array<vec2<f32>, AIRLIGHT_HALF_TERMS>, i: u32) -> f32 {
     let x = rule[i / 2u].x;
@@ -687,19 +663,7 @@ fn airlight_node(rule: array<vec2<f32>, AIRLIGHT_HALF_TERMS>, i: u32) -> f32 {
 
 /// Legendre coefficients of the samples at the nodes (panels.rs `legendre`).
 fn airlight_legendre(g: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS> {
-    let table = airlight_legendre_table();
-    var c = airlight_zero_terms();
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        var sum = 0.0;
-        for (var j = 0u; j < AIRLIGHT_HALF_TERMS; j++) {
-            let minus = g[2u * j];
-            let plus = g[2u * j + 1u];
-            let pair = select(plus - minus, plus + minus, k % 2u == 0u);
-            sum += table[k * AIRLIGHT_HALF_TERMS + j] * pair;
-        }
-        c[k] = sum;
-    }
-    return c;
+@LEGENDRE_BODY@
 }
 
 /// e^x − 1 without cancellation near 0 (Taylor below |x| = 1/2, 12 terms: < 2^-35).
@@ -734,35 +698,30 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
         let top = k0 + steps;
         var above = 0.0;
         var cur = 1.0e-20;
+        var below = 0.0;
         var odd = f32(2u * top + 1u);
+        // orders top … N: nothing stored (top − N < N + 30 steps)
         for (var i = 0u; i < 2u * AIRLIGHT_TERMS + 30u; i++) {
-            if (i >= top) { break; }
-            let k = top - i;
-            if (k < n) { out[k] = cur; }
-            let below = above + odd * inv * cur;
+            if (i + n > top) { break; }
+            below = above + odd * inv * cur;
             odd -= 2.0;
             above = cur;
             cur = below;
             if (cur > 1.0e20) {
                 cur *= 1.0e-20;
                 above *= 1.0e-20;
-                for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= 1.0e-20; }
             }
         }
-        out[0] = cur;
+        // orders N − 1 … 1, stored (unrolled.rs)
+@MILLER_STORED@        out[0] = cur;
         let norm = i0 / cur;
-        for (var j = 0u; j < AIRLIGHT_TERMS; j++) { out[j] *= norm; }
+        @MOMENTS_NORM@
     } else {
         let e2 = exp(-(lambda + lambda));
         out[0] = i0;
         out[1] = ((1.0 + e2) * 0.5 - i0) / lambda;
-        for (var k = 1u; k + 1u < AIRLIGHT_TERMS; k++) {
-            out[k + 1u] = out[k - 1u] - f32(2u * k + 1u) / lambda * out[k];
-        }
-    }
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        out[k] *= select(2.0, -2.0, k % 2u == 1u);
-    }
+@MOMENTS_UPWARD@    }
+    @MOMENTS_SIGNS@
     return out;
 }
 
@@ -781,7 +740,7 @@ fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_T
     let q = sqrt(last / before);
     // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end (panels.rs)
     var c_max = 0.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { c_max = max(c_max, abs(c[k])); }
+    @EACH_TERM@ c_max = max(c_max, abs(c[{k}]));
     let power = select(AIRLIGHT_TERMS / 4u, AIRLIGHT_TERMS / 6u, c_max > 1.2 * abs(c[0]));
     var aliasing = 1.0;
     for (var i = 0u; i < power; i++) { aliasing *= q; }
@@ -842,7 +801,7 @@ fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     let c = airlight_legendre(samples);
     let m = airlight_exp_legendre_moments(half.big_h * r);
     var sum = 0.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) { sum += c[k] * m[k]; }
+    @EACH_TERM@ sum += c[{k}] * m[{k}];
     let w = airlight_factor(half, a, b) * r;
     let mass = w * m[0];
     let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m);
@@ -881,12 +840,7 @@ fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
 
 /// Monomial coefficients in ξ of Σ c_k P_k(ξ) (panels.rs `legendre_to_monomial`, its table).
 fn airlight_legendre_to_monomial(c: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS> {
-    let table = airlight_legendre_monomial();
-    var hat = airlight_zero_terms();
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        for (var i = 0u; i <= k; i++) { hat[i] += c[k] * table[k * AIRLIGHT_TERMS + i]; }
-    }
-    return hat;
+@LEGENDRE_TO_MONOMIAL_BODY@
 }
 
 /// A tail panel [a, b], a ≤ b/4, after the foot (panels.rs `tail_panel`).
@@ -909,40 +863,28 @@ fn airlight_tail_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half:
     let alpha = b / r;
     let beta = -yc / r;
     let hat = airlight_legendre_to_monomial(c);
+    // Horner's scheme from the highest power, written out (unrolled.rs)
     var q = airlight_zero_terms();
-    for (var jj = 0u; jj < AIRLIGHT_TERMS; jj++) {
-        let j = AIRLIGHT_TERMS - 1u - jj;
-        var next = airlight_zero_terms();
-        for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
-            var shifted = 0.0;
-            if (i > 0u) { shifted = q[i - 1u] * alpha; }
-            next[i] = shifted + q[i] * beta;
-        }
-        next[0] += hat[j];
-        q = next;
-    }
+@MONOMIAL_SHIFT@
     // U_k = b s_{k+2}(H/b) − e^{−H(1/a − 1/b)} a (a/b)^k s_{k+2}(H/a)
     let big_h = half.big_h;
-    var s_b = airlight_zero_scratch();
-    airlight_en_scaled(big_h / b, AIRLIGHT_TERMS + 2u, &s_b);
-    var s_a = airlight_zero_scratch();
+    let s_b = airlight_en_scaled(big_h / b);
+    var s_a = array<f32, AIRLIGHT_EN_ORDERS>(@ZEROS_EN@);
+    // the far end's terms are at most `decay` of the near end's: below ε/4 of them they change
+    // nothing and are not computed
     let far = a > 0.0 && airlight_is_finite(big_h / a);
     var decay = 0.0;
     if (far) { decay = exp(-big_h * ((b - a) / (a * b))); }
-    if (far && decay > 0.0) { airlight_en_scaled(big_h / a, AIRLIGHT_TERMS + 2u, &s_a); }
-    var sum = 0.0;
-    var mass = 0.0;
-    var ratio = 1.0;
+    if (!(decay > AIRLIGHT_FLT_EPS * 0.25)) { decay = 0.0; }
+    if (decay > 0.0) { s_a = airlight_en_scaled(big_h / a); }
     var ab = 0.0;
     if (b > 0.0) { ab = a / b; }
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        var tail = 0.0;
-        if (decay > 0.0) { tail = decay * a * ratio * s_a[k + 1u]; }
-        let u = b * s_b[k + 1u] - tail;
-        if (k == 0u) { mass = u; }
-        sum += q[k] * u;
-        ratio *= ab;
-    }
+    // k = 0 sets the mass
+    let mass_u = b * s_b[1] - select(0.0, decay * a * s_a[1], decay > 0.0);
+    var mass = mass_u;
+    var sum = q[0] * mass_u;
+    var ratio = ab;
+    @EACH_TERM_FROM_1@ sum += q[{k}] * (b * s_b[{k1}] - select(0.0, decay * a * ratio * s_a[{k1}], decay > 0.0)); ratio *= ab;
     let w = airlight_factor(half, a, b);
     mass *= w;
     // the conversion's rounding: ε·mass·Σ L_k(|α| + |β|)|c_k|
@@ -950,13 +892,8 @@ fn airlight_tail_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half:
     var l_prev = 0.0;
     var l_cur = 1.0;
     var spread = 0.0;
-    for (var k = 0u; k < AIRLIGHT_TERMS; k++) {
-        spread += l_cur * abs(c[k]);
-        let kf = f32(k);
-        let next = ((kf + kf + 1.0) * x * l_cur + kf * l_prev) / (kf + 1.0);
-        l_prev = l_cur;
-        l_cur = next;
-    }
+    var next = 0.0;
+    @EACH_TERM@ spread += l_cur * abs(c[{k}]); next = (({kf} + {kf} + 1.0) * x * l_cur + {kf} * l_prev) / ({kf} + 1.0); l_prev = l_cur; l_cur = next;
     let error = mass * airlight_tail_estimate(c) + AIRLIGHT_FLT_EPS * mass * spread;
     return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass, f_max);
 }
@@ -1130,13 +1067,12 @@ fn airlight_on_line(s: AirlightScene, g: AirlightCanonical) -> f32 {
         return airlight_weighted(s.sigma_s, s.intensity, 2.0, 0.0, f * span);
     }
     let two_st = s.sigma_t + s.sigma_t;
-    var e2 = airlight_zero_scratch();
-    airlight_en_scaled(two_st * s0, 2u, &e2);
+    var e2 = airlight_en_scaled(two_st * s0);
     // σs I e^{−x} as weighted(σs, I, 2, x), whose h = 2 cancels its 2
     let head = airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * s0, f * e2[1] / s0);
     var tail = 0.0;
     if (!g.t_hi_infinite) {
-        airlight_en_scaled(two_st * s1, 2u, &e2);
+        e2 = airlight_en_scaled(two_st * s1);
         tail = airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * (s1 - s0) + s.sigma_t * s1, f * e2[1] / s1);
     }
     // head ≥ tail exactly; ∞ − ∞ (both overflowing) means the value overflows

@@ -142,7 +142,7 @@ fn perturbed(rec: &SceneRecord<f32>, k: usize) -> SceneRecord<f32> {
     q
 }
 
-/// The CPU's expectation for `rec` from the shader with `terms` (4 or 6) nodes per panel.
+/// The CPU's expectation for `rec` from the shader with `terms` (8 or 12) nodes per panel.
 pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
     let Some(v) = in_scatter(rec, terms) else {
         return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };

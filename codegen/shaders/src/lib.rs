@@ -8,3 +8,4 @@ pub mod agreement;
 pub mod gpu;
 pub mod layout;
 pub mod targets;
+pub mod unrolled;

@@ -12,6 +12,7 @@
 //! Every artifact comes from a module naga has validated; output is deterministic, so
 //! `check` can compare the committed `shaders-out/` byte for byte.
 
+use crate::unrolled;
 use airlight::Real;
 use naga::back::{glsl, hlsl, msl, spv, wgsl};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
@@ -45,7 +46,7 @@ fn airlight_library_entry() -> @location(0) vec4<f32> {
 ";
 
 /// The emitted node counts per panel.
-pub const TERM_COUNTS: [usize; 2] = [4, 6];
+pub const NODE_COUNTS: [usize; 2] = [8, 12];
 
 /// An output language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -82,7 +83,7 @@ impl Target {
 /// What to emit.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EmitOptions {
-    /// Term counts (each 4 or 6).
+    /// Node counts per panel (each 8 or 12).
     pub terms: Vec<usize>,
     /// Output languages.
     pub targets: Vec<Target>,
@@ -90,7 +91,7 @@ pub struct EmitOptions {
 
 impl Default for EmitOptions {
     fn default() -> Self {
-        EmitOptions { terms: TERM_COUNTS.to_vec(), targets: Target::ALL.to_vec() }
+        EmitOptions { terms: NODE_COUNTS.to_vec(), targets: Target::ALL.to_vec() }
     }
 }
 
@@ -124,6 +125,8 @@ impl std::error::Error for EmitError {}
 pub struct Constants {
     /// `("@NAME@", text)` pairs, every placeholder of the template once.
     pub fills: Vec<(&'static str, String)>,
+    /// Gauss–Legendre nodes per panel: the count `@EACH_TERM@` lines repeat for.
+    pub terms: usize,
 }
 
 impl Constants {
@@ -135,7 +138,7 @@ impl Constants {
     /// ([`crate::layout`]).
     ///
     /// # Panics
-    /// If `terms` has no tabulated rule (the emitted counts, [`TERM_COUNTS`], have).
+    /// If `terms` has no tabulated rule (the emitted counts, [`NODE_COUNTS`], have).
     pub fn from_kernel(terms: usize) -> Constants {
         use crate::layout as l;
         use airlight::expansion::gauss_table;
@@ -165,12 +168,6 @@ impl Constants {
             .map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w)))
             .collect();
         let max_power = airlight::light::TwoLobed::<f32>::MAX_POWER;
-        // P_k's monomial coefficients, 2^k P_k's integers scaled by 2^−k (exact in f32)
-        let monomial: Vec<String> = airlight::panels::LEGENDRE_MONOMIAL[..terms]
-            .iter()
-            .enumerate()
-            .flat_map(|(k, row)| row[..terms].iter().map(move |&a| f(a as f64 / (1u64 << k) as f64)))
-            .collect();
         let fills = vec![
             ("@TERMS@", terms.to_string()),
             ("@HALF_TERMS@", (terms / 2).to_string()),
@@ -184,13 +181,20 @@ impl Constants {
             ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
             ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
             ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
-            ("@TRANSFORM_LEN@", transform.len().to_string()),
-            ("@LEGENDRE_TRANSFORM@", list(transform.iter().map(|&x| f(x)).collect())),
+            ("@LEGENDRE_BODY@", unrolled::legendre_body(terms, transform)),
+            ("@MILLER_STORED@", unrolled::miller_stored(terms)),
+            ("@MOMENTS_NORM@", unrolled::scale_all(terms, "out", "norm")),
+            ("@MOMENTS_UPWARD@", unrolled::moments_upward(terms)),
+            ("@MOMENTS_SIGNS@", unrolled::moments_signs(terms)),
+            ("@LEGENDRE_TO_MONOMIAL_BODY@", unrolled::legendre_to_monomial_body(terms, &airlight::panels::LEGENDRE_MONOMIAL)),
+            ("@MONOMIAL_SHIFT@", unrolled::monomial_shift(terms)),
+            ("@EN_ORDERS@", (terms + 2).to_string()),
+            ("@ZEROS_EN@", list(vec!["0.0".to_string(); terms + 2])),
+            ("@EN_AT_ZERO@", unrolled::en_scaled_at_zero(terms + 2)),
+            ("@EN_RECURRENCES@", unrolled::en_scaled_recurrences(terms + 2)),
             ("@E1_SERIES_TERMS@", <f32 as Real>::E1_SERIES_TERMS.to_string()),
             ("@EIN_COEFFS@", list(airlight::special::EIN_COEFFS[..<f32 as Real>::E1_SERIES_TERMS].iter().map(|&c| f(c)).collect())),
             ("@E1_CF_PLAIN_FROM@", airlight::special::PLAIN_FROM.to_string()),
-            ("@TERMS_SQUARED@", (terms * terms).to_string()),
-            ("@LEGENDRE_MONOMIAL@", list(monomial)),
             ("@E1_INV_RE@", f(1.0 / re)),
             ("@E1_INV_IM@", f(1.0 / im)),
             ("@E1_CF_MAX_DEPTH@", depth.iter().map(|d| d.1).max().unwrap_or(0).to_string()),
@@ -214,7 +218,7 @@ impl Constants {
             ("@STATUS_INFINITE@", l::STATUS_INFINITE.to_string()),
             ("@WORKGROUP_SIZE@", l::WORKGROUP_SIZE.to_string()),
         ];
-        Constants { fills }
+        Constants { fills, terms }
     }
 
     /// The template with every placeholder filled: the library, plus the compute entry point
@@ -230,6 +234,7 @@ impl Constants {
         for (key, value) in &self.fills {
             s = s.replace(key, value);
         }
+        s = unrolled::expand_each_term(&s, self.terms);
         if let Some(at) = s.find('@').filter(|&i| s[i + 1..].starts_with(|c: char| c.is_ascii_uppercase())) {
             let name: String = s[at..].chars().take_while(|c| !c.is_whitespace()).collect();
             panic!("the shader template's placeholder {name} has no value");
@@ -245,12 +250,12 @@ pub fn source(terms: usize, compute: bool) -> String {
     Constants::from_kernel(terms).source(compute)
 }
 
-/// The committed WGSL compute shader (`shaders-out/wgsl/airlight_{4,6}.wgsl`) for `terms` (4,
-/// else 6): what `airlight eval --backend gpu`, `verify`, `render` and the GPU bench run.
+/// The committed WGSL compute shader (`shaders-out/wgsl/airlight_{8,12}.wgsl`) for `terms` (8,
+/// else 12): what `airlight eval --backend gpu`, `verify`, `render` and the GPU bench run.
 pub fn compute_wgsl(terms: usize) -> &'static str {
     match terms {
-        4 => include_str!("../../../shaders-out/wgsl/airlight_4.wgsl"),
-        _ => include_str!("../../../shaders-out/wgsl/airlight_6.wgsl"),
+        8 => include_str!("../../../shaders-out/wgsl/airlight_8.wgsl"),
+        _ => include_str!("../../../shaders-out/wgsl/airlight_12.wgsl"),
     }
 }
 
@@ -450,8 +455,8 @@ fn check_options(opts: &EmitOptions) -> Result<(), EmitError> {
         return Err(EmitError::Usage("nothing to emit: give at least one node count and one target".into()));
     }
     for &t in &opts.terms {
-        if !TERM_COUNTS.contains(&t) {
-            return Err(EmitError::Usage(format!("unsupported node count {t} (expected 4 or 6)")));
+        if !NODE_COUNTS.contains(&t) {
+            return Err(EmitError::Usage(format!("unsupported node count {t} (expected 8 or 12)")));
         }
     }
     Ok(())
@@ -610,13 +615,13 @@ mod tests {
     use super::*;
 
     fn wgsl_only() -> EmitOptions {
-        EmitOptions { terms: TERM_COUNTS.to_vec(), targets: vec![Target::Wgsl] }
+        EmitOptions { terms: NODE_COUNTS.to_vec(), targets: vec![Target::Wgsl] }
     }
 
     /// Every placeholder of the template has a value, for every emitted node count.
     #[test]
     fn every_placeholder_is_filled() {
-        for n in TERM_COUNTS {
+        for n in NODE_COUNTS {
             let s = source(n, true);
             assert!(!s.contains("@TERMS@") && !s.contains("@GAUSS_RULE@"));
         }
@@ -639,6 +644,6 @@ mod tests {
             c
         };
         let problems = compare(&dir, &render_with(&wgsl_only(), drifted).unwrap()).unwrap();
-        assert!(problems.contains(&"stale: wgsl/airlight_4.wgsl".to_string()), "{problems:?}");
+        assert!(problems.contains(&"stale: wgsl/airlight_8.wgsl".to_string()), "{problems:?}");
     }
 }

@@ -3,7 +3,7 @@
 //! spotlights, a park bench in Rayleigh mist — rendered four ways:
 //!
 //! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
-//! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_4.wgsl`, f32, 4
+//! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_8.wgsl`, f32, 8
 //!   nodes per panel) through wgpu, every (pixel, light) segment one record of [`airlight_shaders::layout`];
 //! * [`render_reference`]: brute-force quadrature of the contract integral (docs/DESIGN.md §1) that
 //!   uses none of the kernel's closed forms (see [`reference_in_scatter`]);
@@ -130,7 +130,7 @@ where
 
 /// The image through the generated shader: every (pixel, light) segment is packed as an f32
 /// record ([`layout::pack`]) and all of them run in one call of `shader`, the compute entry
-/// point ([`airlight_shaders::targets::compute_wgsl`] at [`airlight::SHADER_TERMS`]) prepared once with
+/// point ([`airlight_shaders::targets::compute_wgsl`] at [`airlight::SHADER_NODES`]) prepared once with
 /// [`Gpu::prepare`](airlight_shaders::gpu::Gpu::prepare) — [`Prepared::run`] is what
 /// [`Gpu::run`](airlight_shaders::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
 /// longer than the dispatch. The surface term, which the
