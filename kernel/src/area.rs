@@ -17,7 +17,7 @@
 //! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
 
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance};
+use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{Lambertian, Omni};
 use crate::phase::PhaseFunction;
@@ -132,8 +132,10 @@ where
         self.in_scatter_counted(outer_tolerance()).0
     }
 
-    /// The same to a relative tolerance of the outer estimate, and the point lights evaluated.
+    /// The same to a relative tolerance of the outer estimate (no finer than
+    /// [`Real::PANEL_TOLERANCE`], the point lights' own), and the point lights evaluated.
     pub fn in_scatter_counted(&self, tolerance: T) -> (T, usize) {
+        let tolerance = working_tolerance(tolerance);
         if self.light.radiance == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }

@@ -23,7 +23,7 @@
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance};
+use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
 use crate::phase::PhaseFunction;
@@ -214,9 +214,10 @@ where
         self.air_light_counted(outer_tolerance()).0
     }
 
-    /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate, and the ray
-    /// integrals it evaluated.
+    /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate (no finer than
+    /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated.
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
+        let tolerance = working_tolerance(tolerance);
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
