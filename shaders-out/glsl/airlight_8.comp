@@ -392,8 +392,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    vec2 b_11 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_11);
+    vec2 b_12 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_12);
     vec2 _e33 = airlight_cmul(_e29, _e29);
     vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
     root = _e35;
@@ -403,7 +403,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         root = -(_e41);
     }
     vec2 _e46 = root;
-    vec2 _e48 = airlight_cmul(b_11, (vec2(1.0, 0.0) + _e46));
+    vec2 _e48 = airlight_cmul(b_12, (vec2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     bool loop_init_5 = true;
     while(true) {
@@ -467,12 +467,12 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint _e2 = airlight_cf_depth(x_4);
     float nf_1 = float(n);
     float m_5 = float(_e2);
-    float b_12 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
-    float a_15 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
-    float disc = (1.0 - ((4.0 * a_15) / (b_12 * b_12)));
-    t_2 = b_12;
+    float b_13 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
+    float a_16 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
+    float disc = (1.0 - ((4.0 * a_16) / (b_13 * b_13)));
+    t_2 = b_13;
     if ((disc > 0.0)) {
-        t_2 = ((b_12 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_13 * (1.0 + sqrt(disc))) * 0.5);
     }
     bool loop_init_6 = true;
     while(true) {
@@ -611,11 +611,11 @@ float[10] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g, float om, float op) {
     if ((g >= 0.0)) {
-        float a_16 = (1.0 - g);
-        return ((om * (g + g)) + (a_16 * a_16));
+        float a_17 = (1.0 - g);
+        return ((om * (g + g)) + (a_17 * a_17));
     }
-    float b_13 = (1.0 + g);
-    return ((op * -((g + g))) + (b_13 * b_13));
+    float b_14 = (1.0 + g);
+    return ((op * -((g + g))) + (b_14 * b_14));
 }
 
 float airlight_hg(float g_1, float om_1, float op_1) {
@@ -1930,10 +1930,17 @@ AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_8, float sig
 float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint count = 1u;
-    uint budget = 15u;
+    float a_9 = 0.0;
+    float b_8 = 0.0;
+    uint slot = 0u;
+    bool pending = false;
+    float next_a = 0.0;
+    float next_b = 0.0;
+    uint count = 0u;
+    uint budget = AIRLIGHT_MAX_PANELS;
+    uint step_ = 0u;
+    uint retire = 0u;
     float total = 0.0;
-    uint round_ = 0u;
     float errors = 0.0;
     float mass_3 = 0.0;
     uint worst = 0u;
@@ -1941,164 +1948,199 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_9, float s
     bool local_13 = false;
     bool local_14 = false;
     bool local_15 = false;
+    float total_1 = 0.0;
     uint i_11 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
-    AirlightPanel _e38 = airlight_panel(s_7, g_9, sigma_6, half_8, lo, hi);
-    float _e39 = f_max_4;
-    f_max_4 = max(_e39, _e38.f_max);
-    list[0] = vec4(lo, hi, _e38.value, _e38.error);
-    mass_over_1[0] = _e38.mass_over;
+    a_9 = lo;
+    b_8 = hi;
     bool loop_init_15 = true;
     while(true) {
         if (!loop_init_15) {
-            uint _e196 = round_;
-            round_ = (_e196 + 1u);
+            uint _e206 = step_;
+            step_ = (_e206 + 1u);
         }
         loop_init_15 = false;
-        uint _e56 = round_;
-        if ((_e56 < AIRLIGHT_MAX_PANELS)) {
+        uint _e54 = step_;
+        if ((_e54 < AIRLIGHT_MAX_PANELS)) {
         } else {
             break;
         }
         {
-            total = 0.0;
-            errors = 0.0;
-            mass_3 = 0.0;
-            worst = 0u;
-            i_10 = 0u;
+            float _e57 = a_9;
+            float _e58 = b_8;
+            AirlightPanel _e59 = airlight_panel(s_7, g_9, sigma_6, half_8, _e57, _e58);
+            float _e60 = f_max_4;
+            f_max_4 = max(_e60, _e59.f_max);
+            uint _e63 = slot;
+            float _e65 = a_9;
+            float _e66 = b_8;
+            list[_e63] = vec4(_e65, _e66, _e59.value, _e59.error);
+            uint _e70 = slot;
+            mass_over_1[_e70] = _e59.mass_over;
+            uint _e73 = budget;
+            budget = (_e73 - 1u);
+            uint _e76 = slot;
+            uint _e77 = count;
+            if ((_e76 == _e77)) {
+                uint _e79 = count;
+                count = (_e79 + 1u);
+            }
+            bool _e82 = pending;
+            if (_e82) {
+                float _e83 = next_a;
+                a_9 = _e83;
+                float _e84 = next_b;
+                b_8 = _e84;
+                uint _e85 = count;
+                slot = _e85;
+                pending = false;
+                continue;
+            }
+            retire = 0u;
             bool loop_init_16 = true;
             while(true) {
                 if (!loop_init_16) {
-                    uint _e102 = i_10;
-                    i_10 = (_e102 + 1u);
+                    uint _e203 = retire;
+                    retire = (_e203 + 1u);
                 }
                 loop_init_16 = false;
-                uint _e68 = i_10;
-                if ((_e68 < AIRLIGHT_PANEL_LIST)) {
+                uint _e89 = retire;
+                if ((_e89 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e71 = i_10;
-                    uint _e72 = count;
-                    if ((_e71 >= _e72)) {
-                        break;
+                    total = 0.0;
+                    errors = 0.0;
+                    mass_3 = 0.0;
+                    worst = 0u;
+                    i_10 = 0u;
+                    bool loop_init_17 = true;
+                    while(true) {
+                        if (!loop_init_17) {
+                            uint _e136 = i_10;
+                            i_10 = (_e136 + 1u);
+                        }
+                        loop_init_17 = false;
+                        uint _e102 = i_10;
+                        if ((_e102 < AIRLIGHT_PANEL_LIST)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e105 = i_10;
+                            uint _e106 = count;
+                            if ((_e105 >= _e106)) {
+                                break;
+                            }
+                            float _e108 = total;
+                            uint _e109 = i_10;
+                            float _e112 = list[_e109].z;
+                            total = (_e108 + _e112);
+                            float _e114 = errors;
+                            uint _e115 = i_10;
+                            float _e118 = list[_e115].w;
+                            errors = (_e114 + _e118);
+                            float _e120 = mass_3;
+                            uint _e121 = i_10;
+                            float _e123 = mass_over_1[_e121];
+                            mass_3 = (_e120 + _e123);
+                            uint _e125 = i_10;
+                            float _e128 = list[_e125].w;
+                            uint _e129 = worst;
+                            float _e132 = list[_e129].w;
+                            if ((_e128 > _e132)) {
+                                uint _e134 = i_10;
+                                worst = _e134;
+                            }
+                        }
                     }
-                    float _e74 = total;
-                    uint _e75 = i_10;
-                    float _e78 = list[_e75].z;
-                    total = (_e74 + _e78);
-                    float _e80 = errors;
-                    uint _e81 = i_10;
-                    float _e84 = list[_e81].w;
-                    errors = (_e80 + _e84);
-                    float _e86 = mass_3;
-                    uint _e87 = i_10;
-                    float _e89 = mass_over_1[_e87];
-                    mass_3 = (_e86 + _e89);
-                    uint _e91 = i_10;
-                    float _e94 = list[_e91].w;
-                    uint _e95 = worst;
-                    float _e98 = list[_e95].w;
-                    if ((_e94 > _e98)) {
-                        uint _e100 = i_10;
-                        worst = _e100;
+                    float _e139 = total;
+                    float _e142 = f_max_4;
+                    float _e144 = mass_3;
+                    float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e139), ((AIRLIGHT_PANEL_FLOOR * _e142) * _e144)));
+                    float _e148 = errors;
+                    if (!((_e148 <= goal))) {
+                        uint _e153 = worst;
+                        float _e156 = list[_e153].w;
+                        local_13 = !((_e156 > 0.0));
+                    } else {
+                        local_13 = true;
                     }
+                    bool _e161 = local_13;
+                    if (!(_e161)) {
+                        uint _e165 = budget;
+                        local_14 = (_e165 < 2u);
+                    } else {
+                        local_14 = true;
+                    }
+                    bool _e169 = local_14;
+                    if (!(_e169)) {
+                        uint _e173 = count;
+                        local_15 = (_e173 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_15 = true;
+                    }
+                    bool _e177 = local_15;
+                    if (_e177) {
+                        float _e178 = total;
+                        return _e178;
+                    }
+                    uint _e179 = worst;
+                    float wa = list[_e179].x;
+                    uint _e183 = worst;
+                    float wb = list[_e183].y;
+                    if (!(((wb - wa) > (AIRLIGHT_FLT_EPS * wb)))) {
+                        uint _e192 = worst;
+                        list[_e192].w = 0.0;
+                        continue;
+                    }
+                    float mid = (wa + ((wb - wa) * 0.5));
+                    a_9 = wa;
+                    b_8 = mid;
+                    uint _e200 = worst;
+                    slot = _e200;
+                    pending = true;
+                    next_a = mid;
+                    next_b = wb;
+                    break;
                 }
-            }
-            float _e105 = total;
-            float _e108 = f_max_4;
-            float _e110 = mass_3;
-            float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e105), ((AIRLIGHT_PANEL_FLOOR * _e108) * _e110)));
-            float _e114 = errors;
-            if (!((_e114 <= goal))) {
-                uint _e119 = worst;
-                float _e122 = list[_e119].w;
-                local_13 = !((_e122 > 0.0));
-            } else {
-                local_13 = true;
-            }
-            bool _e127 = local_13;
-            if (!(_e127)) {
-                uint _e131 = budget;
-                local_14 = (_e131 < 2u);
-            } else {
-                local_14 = true;
-            }
-            bool _e135 = local_14;
-            if (!(_e135)) {
-                uint _e139 = count;
-                local_15 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_15 = true;
-            }
-            bool _e143 = local_15;
-            if (_e143) {
-                float _e144 = total;
-                return _e144;
-            }
-            uint _e145 = worst;
-            float a_17 = list[_e145].x;
-            uint _e149 = worst;
-            float b_14 = list[_e149].y;
-            if (!(((b_14 - a_17) > (AIRLIGHT_FLT_EPS * b_14)))) {
-                uint _e158 = worst;
-                list[_e158].w = 0.0;
-            } else {
-                float mid = (a_17 + ((b_14 - a_17) * 0.5));
-                AirlightPanel _e166 = airlight_panel(s_7, g_9, sigma_6, half_8, a_17, mid);
-                AirlightPanel _e167 = airlight_panel(s_7, g_9, sigma_6, half_8, mid, b_14);
-                float _e168 = f_max_4;
-                f_max_4 = max(_e168, max(_e166.f_max, _e167.f_max));
-                uint _e173 = worst;
-                list[_e173] = vec4(a_17, mid, _e166.value, _e166.error);
-                uint _e178 = worst;
-                mass_over_1[_e178] = _e166.mass_over;
-                uint _e181 = count;
-                list[_e181] = vec4(mid, b_14, _e167.value, _e167.error);
-                uint _e186 = count;
-                mass_over_1[_e186] = _e167.mass_over;
-                uint _e189 = count;
-                count = (_e189 + 1u);
-                uint _e192 = budget;
-                budget = (_e192 - 2u);
             }
         }
     }
-    total = 0.0;
-    bool loop_init_17 = true;
+    bool loop_init_18 = true;
     while(true) {
-        if (!loop_init_17) {
-            uint _e214 = i_11;
-            i_11 = (_e214 + 1u);
+        if (!loop_init_18) {
+            uint _e225 = i_11;
+            i_11 = (_e225 + 1u);
         }
-        loop_init_17 = false;
-        uint _e201 = i_11;
-        if ((_e201 < AIRLIGHT_PANEL_LIST)) {
+        loop_init_18 = false;
+        uint _e212 = i_11;
+        if ((_e212 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e204 = i_11;
-            uint _e205 = count;
-            if ((_e204 >= _e205)) {
+            uint _e215 = i_11;
+            uint _e216 = count;
+            if ((_e215 >= _e216)) {
                 break;
             }
-            float _e207 = total;
-            uint _e208 = i_11;
-            float _e211 = list[_e208].z;
-            total = (_e207 + _e211);
+            float _e218 = total_1;
+            uint _e219 = i_11;
+            float _e222 = list[_e219].z;
+            total_1 = (_e218 + _e222);
         }
     }
-    float _e216 = total;
-    return _e216;
+    float _e227 = total_1;
+    return _e227;
 }
 
-float airlight_bounded(float a_9) {
-    float _e1 = airlight_hypot_one(a_9);
-    return (1.0 / (a_9 + _e1));
+float airlight_bounded(float a_10) {
+    float _e1 = airlight_hypot_one(a_10);
+    return (1.0 / (a_10 + _e1));
 }
 
 vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4) {
@@ -2151,7 +2193,7 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
     bool local_17 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
-    float total_1 = 0.0;
+    float total_2 = 0.0;
     float lo_1 = 0.0;
     uint i_14 = 0u;
     float hi_1 = 0.0;
@@ -2179,13 +2221,13 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
         float _e43 = k_out;
         vec2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
         cuts = float[4](_e40.x, _e40.y, _e44.x, _e44.y);
-        bool loop_init_18 = true;
+        bool loop_init_19 = true;
         while(true) {
-            if (!loop_init_18) {
+            if (!loop_init_19) {
                 uint _e74 = i_12;
                 i_12 = (_e74 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_19 = false;
             uint _e52 = i_12;
             if ((_e52 < 4u)) {
             } else {
@@ -2208,13 +2250,13 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
                 }
             }
         }
-        bool loop_init_19 = true;
+        bool loop_init_20 = true;
         while(true) {
-            if (!loop_init_19) {
+            if (!loop_init_20) {
                 uint _e115 = i_13;
                 i_13 = (_e115 + 1u);
             }
-            loop_init_19 = false;
+            loop_init_20 = false;
             uint _e78 = i_13;
             if ((_e78 < 3u)) {
             } else {
@@ -2222,13 +2264,13 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
             }
             {
                 j_2 = 0u;
-                bool loop_init_20 = true;
+                bool loop_init_21 = true;
                 while(true) {
-                    if (!loop_init_20) {
+                    if (!loop_init_21) {
                         uint _e112 = j_2;
                         j_2 = (_e112 + 1u);
                     }
-                    loop_init_20 = false;
+                    loop_init_21 = false;
                     uint _e83 = j_2;
                     uint _e85 = i_13;
                     if ((_e83 < (3u - _e85))) {
@@ -2256,13 +2298,13 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
         }
     }
     lo_1 = half_9.y_lo;
-    bool loop_init_21 = true;
+    bool loop_init_22 = true;
     while(true) {
-        if (!loop_init_21) {
+        if (!loop_init_22) {
             uint _e165 = i_14;
             i_14 = (_e165 + 1u);
         }
-        loop_init_21 = false;
+        loop_init_22 = false;
         uint _e123 = i_14;
         if ((_e123 < 5u)) {
         } else {
@@ -2287,11 +2329,11 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
             float _e143 = hi_1;
             float _e144 = lo_1;
             if ((_e143 > _e144)) {
-                float _e146 = total_1;
+                float _e146 = total_2;
                 float _e147 = lo_1;
                 float _e148 = hi_1;
                 float _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
-                total_1 = (_e146 + _e149);
+                total_2 = (_e146 + _e149);
                 float _e151 = hi_1;
                 lo_1 = _e151;
             }
@@ -2309,7 +2351,7 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
             }
         }
     }
-    float _e167 = total_1;
+    float _e167 = total_2;
     return _e167;
 }
 
@@ -2474,7 +2516,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     bool local_34 = false;
     bool local_35 = false;
     bool local_36 = false;
-    float total_2 = 0.0;
+    float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
@@ -2645,9 +2687,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         }
         AirlightHalf _e199 = half_10;
         float _e200 = airlight_half(s_11, g_13, -1.0, _e199, isotropic_1, f_max_6);
-        float _e201 = total_2;
+        float _e201 = total_3;
         float _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
-        total_2 = (_e201 + _e205);
+        total_3 = (_e201 + _e205);
     }
     if (!(g_13.t_hi_infinite)) {
         local_39 = (t1_ > x_h);
@@ -2739,11 +2781,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         }
         AirlightHalf _e313 = half_11;
         float _e314 = airlight_half(s_11, g_13, 1.0, _e313, isotropic_1, f_max_6);
-        float _e315 = total_2;
+        float _e315 = total_3;
         float _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
-        total_2 = (_e315 + _e323);
+        total_3 = (_e315 + _e323);
     }
-    float _e325 = total_2;
+    float _e325 = total_3;
     return AirlightResult(max(_e325, 0.0), AIRLIGHT_STATUS_OK);
 }
 
@@ -3045,23 +3087,23 @@ bool airlight_valid(AirlightScene s_12) {
 }
 
 AirlightCanonical airlight_canonical(AirlightScene s_13) {
-    vec3 a_10 = vec3(0.0, 0.0, 1.0);
+    vec3 a_11 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
     vec3 _e2 = airlight_normalize(s_13.dir);
     if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
         vec3 _e12 = airlight_normalize(s_13.light_axis);
-        a_10 = _e12;
+        a_11 = _e12;
     }
     vec3 to_light = (s_13.light_position - s_13.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
     if ((_e19 > 0.0)) {
-        vec3 _e24 = a_10;
+        vec3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
     bool infinite_3 = ((s_13.flags & 1u) != 0u);
-    vec3 _e32 = a_10;
+    vec3 _e32 = a_11;
     float _e34 = d_c_1;
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, (infinite_3 ? 0.0 : s_13.t_max), infinite_3);
 }
@@ -3070,11 +3112,11 @@ float airlight_opaque(float x_9, uint key) {
     return uintBitsToFloat((floatBitsToUint(x_9) ^ key));
 }
 
-vec2 airlight_two_sum(float a_11, float b_8, uint key_1) {
-    float _e4 = airlight_opaque((a_11 + b_8), key_1);
-    float _e6 = airlight_opaque((_e4 - a_11), key_1);
+vec2 airlight_two_sum(float a_12, float b_9, uint key_1) {
+    float _e4 = airlight_opaque((a_12 + b_9), key_1);
+    float _e6 = airlight_opaque((_e4 - a_12), key_1);
     float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_2 = ((a_11 - _e8) + (b_8 - _e6));
+    float e_2 = ((a_12 - _e8) + (b_9 - _e6));
     bool _e12 = airlight_is_finite(e_2);
     return vec2(_e4, (_e12 ? e_2 : 0.0));
 }
@@ -3083,19 +3125,19 @@ float airlight_split_high(float x_10) {
     return uintBitsToFloat(((floatBitsToUint(x_10) + 2048u) & 4294963200u));
 }
 
-vec2 airlight_two_product(float a_12, float b_9, uint key_2) {
-    float _e4 = airlight_opaque((a_12 * b_9), key_2);
-    float _e5 = airlight_split_high(a_12);
-    float al = (a_12 - _e5);
-    float _e7 = airlight_split_high(b_9);
-    float bl = (b_9 - _e7);
+vec2 airlight_two_product(float a_13, float b_10, uint key_2) {
+    float _e4 = airlight_opaque((a_13 * b_10), key_2);
+    float _e5 = airlight_split_high(a_13);
+    float al = (a_13 - _e5);
+    float _e7 = airlight_split_high(b_10);
+    float bl = (b_10 - _e7);
     float e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
     bool _e17 = airlight_is_finite(e_3);
     return vec2(_e4, (_e17 ? e_3 : 0.0));
 }
 
-float airlight_diff_of_products(float a_13, float b_10, float c_5, float d_1, uint key_3) {
-    vec2 _e5 = airlight_two_product(a_13, b_10, key_3);
+float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, uint key_3) {
+    vec2 _e5 = airlight_two_product(a_14, b_11, key_3);
     vec2 _e6 = airlight_two_product(c_5, d_1, key_3);
     float _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     float _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
@@ -3125,7 +3167,7 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     bool local_78 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_79 = false;
-    vec3 a_14 = vec3(0.0, 0.0, 1.0);
+    vec3 a_15 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_14.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
@@ -3174,13 +3216,13 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     }
     if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
         vec3 _e112 = airlight_normalize(s_14.light_axis);
-        a_14 = _e112;
+        a_15 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir);
     vec3 _e114 = airlight_normalize(w_3);
     vec3 n_2 = -(cross(_e113, _e114));
     out_2.h = h_4;
-    vec3 _e119 = a_14;
+    vec3 _e119 = a_15;
     out_2.d_c = dot(n_2, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;

@@ -466,8 +466,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_11 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_11);
+    let b_12 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_12);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -477,7 +477,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_11, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_12, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -540,12 +540,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_5 = f32(_e2);
-    let b_12 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
-    let a_15 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
-    let disc = (1f - ((4f * a_15) / (b_12 * b_12)));
-    t_2 = b_12;
+    let b_13 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
+    let a_16 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
+    let disc = (1f - ((4f * a_16) / (b_13 * b_13)));
+    t_2 = b_13;
     if (disc > 0f) {
-        t_2 = ((b_12 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_13 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -719,11 +719,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 14> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_16 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_16 * a_16));
+        let a_17 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_17 * a_17));
     }
-    let b_13 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_13 * b_13));
+    let b_14 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_14 * b_14));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -2441,10 +2441,17 @@ fn airlight_panel(s_6: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
 fn airlight_integrate_piece(s_7: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    var count: u32 = 1u;
-    var budget: u32 = 15u;
-    var total: f32 = 0f;
-    var round_: u32 = 0u;
+    var a_9: f32;
+    var b_8: f32;
+    var slot: u32 = 0u;
+    var pending: bool = false;
+    var next_a: f32 = 0f;
+    var next_b: f32 = 0f;
+    var count: u32 = 0u;
+    var budget: u32 = AIRLIGHT_MAX_PANELS;
+    var step_: u32 = 0u;
+    var retire: u32;
+    var total: f32;
     var errors: f32;
     var mass_3: f32;
     var worst: u32;
@@ -2452,159 +2459,192 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_11: AirlightCanonical, sigma_6
     var local_13: bool;
     var local_14: bool;
     var local_15: bool;
+    var total_1: f32 = 0f;
     var i_11: u32 = 0u;
 
     if !((hi > lo)) {
         return 0f;
     }
-    let _e38 = airlight_panel(s_7, g_11, sigma_6, half_8, lo, hi);
-    let _e39 = (*f_max_4);
-    (*f_max_4) = max(_e39, _e38.f_max);
-    list[0] = vec4<f32>(lo, hi, _e38.value, _e38.error);
-    mass_over_1[0] = _e38.mass_over;
+    a_9 = lo;
+    b_8 = hi;
     loop {
-        let _e56 = round_;
-        if (_e56 < AIRLIGHT_MAX_PANELS) {
+        let _e54 = step_;
+        if (_e54 < AIRLIGHT_MAX_PANELS) {
         } else {
             break;
         }
         {
-            total = 0f;
-            errors = 0f;
-            mass_3 = 0f;
-            worst = 0u;
-            i_10 = 0u;
+            let _e57 = a_9;
+            let _e58 = b_8;
+            let _e59 = airlight_panel(s_7, g_11, sigma_6, half_8, _e57, _e58);
+            let _e60 = (*f_max_4);
+            (*f_max_4) = max(_e60, _e59.f_max);
+            let _e63 = slot;
+            let _e65 = a_9;
+            let _e66 = b_8;
+            list[_e63] = vec4<f32>(_e65, _e66, _e59.value, _e59.error);
+            let _e70 = slot;
+            mass_over_1[_e70] = _e59.mass_over;
+            let _e73 = budget;
+            budget = (_e73 - 1u);
+            let _e76 = slot;
+            let _e77 = count;
+            if (_e76 == _e77) {
+                let _e79 = count;
+                count = (_e79 + 1u);
+            }
+            let _e82 = pending;
+            if _e82 {
+                let _e83 = next_a;
+                a_9 = _e83;
+                let _e84 = next_b;
+                b_8 = _e84;
+                let _e85 = count;
+                slot = _e85;
+                pending = false;
+                continue;
+            }
+            retire = 0u;
             loop {
-                let _e68 = i_10;
-                if (_e68 < AIRLIGHT_PANEL_LIST) {
+                let _e89 = retire;
+                if (_e89 <= AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
                 {
-                    let _e71 = i_10;
-                    let _e72 = count;
-                    if (_e71 >= _e72) {
-                        break;
+                    total = 0f;
+                    errors = 0f;
+                    mass_3 = 0f;
+                    worst = 0u;
+                    i_10 = 0u;
+                    loop {
+                        let _e102 = i_10;
+                        if (_e102 < AIRLIGHT_PANEL_LIST) {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e105 = i_10;
+                            let _e106 = count;
+                            if (_e105 >= _e106) {
+                                break;
+                            }
+                            let _e108 = total;
+                            let _e109 = i_10;
+                            let _e112 = list[_e109].z;
+                            total = (_e108 + _e112);
+                            let _e114 = errors;
+                            let _e115 = i_10;
+                            let _e118 = list[_e115].w;
+                            errors = (_e114 + _e118);
+                            let _e120 = mass_3;
+                            let _e121 = i_10;
+                            let _e123 = mass_over_1[_e121];
+                            mass_3 = (_e120 + _e123);
+                            let _e125 = i_10;
+                            let _e128 = list[_e125].w;
+                            let _e129 = worst;
+                            let _e132 = list[_e129].w;
+                            if (_e128 > _e132) {
+                                let _e134 = i_10;
+                                worst = _e134;
+                            }
+                        }
+                        continuing {
+                            let _e136 = i_10;
+                            i_10 = (_e136 + 1u);
+                        }
                     }
-                    let _e74 = total;
-                    let _e75 = i_10;
-                    let _e78 = list[_e75].z;
-                    total = (_e74 + _e78);
-                    let _e80 = errors;
-                    let _e81 = i_10;
-                    let _e84 = list[_e81].w;
-                    errors = (_e80 + _e84);
-                    let _e86 = mass_3;
-                    let _e87 = i_10;
-                    let _e89 = mass_over_1[_e87];
-                    mass_3 = (_e86 + _e89);
-                    let _e91 = i_10;
-                    let _e94 = list[_e91].w;
-                    let _e95 = worst;
-                    let _e98 = list[_e95].w;
-                    if (_e94 > _e98) {
-                        let _e100 = i_10;
-                        worst = _e100;
+                    let _e139 = total;
+                    let _e142 = (*f_max_4);
+                    let _e144 = mass_3;
+                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e139), ((AIRLIGHT_PANEL_FLOOR * _e142) * _e144)));
+                    let _e148 = errors;
+                    if !((_e148 <= goal)) {
+                        let _e153 = worst;
+                        let _e156 = list[_e153].w;
+                        local_13 = !((_e156 > 0f));
+                    } else {
+                        local_13 = true;
                     }
+                    let _e161 = local_13;
+                    if !(_e161) {
+                        let _e165 = budget;
+                        local_14 = (_e165 < 2u);
+                    } else {
+                        local_14 = true;
+                    }
+                    let _e169 = local_14;
+                    if !(_e169) {
+                        let _e173 = count;
+                        local_15 = (_e173 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_15 = true;
+                    }
+                    let _e177 = local_15;
+                    if _e177 {
+                        let _e178 = total;
+                        return _e178;
+                    }
+                    let _e179 = worst;
+                    let wa = list[_e179].x;
+                    let _e183 = worst;
+                    let wb = list[_e183].y;
+                    if !(((wb - wa) > (AIRLIGHT_FLT_EPS * wb))) {
+                        let _e192 = worst;
+                        list[_e192].w = 0f;
+                        continue;
+                    }
+                    let mid = (wa + ((wb - wa) * 0.5f));
+                    a_9 = wa;
+                    b_8 = mid;
+                    let _e200 = worst;
+                    slot = _e200;
+                    pending = true;
+                    next_a = mid;
+                    next_b = wb;
+                    break;
                 }
                 continuing {
-                    let _e102 = i_10;
-                    i_10 = (_e102 + 1u);
+                    let _e203 = retire;
+                    retire = (_e203 + 1u);
                 }
-            }
-            let _e105 = total;
-            let _e108 = (*f_max_4);
-            let _e110 = mass_3;
-            let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e105), ((AIRLIGHT_PANEL_FLOOR * _e108) * _e110)));
-            let _e114 = errors;
-            if !((_e114 <= goal)) {
-                let _e119 = worst;
-                let _e122 = list[_e119].w;
-                local_13 = !((_e122 > 0f));
-            } else {
-                local_13 = true;
-            }
-            let _e127 = local_13;
-            if !(_e127) {
-                let _e131 = budget;
-                local_14 = (_e131 < 2u);
-            } else {
-                local_14 = true;
-            }
-            let _e135 = local_14;
-            if !(_e135) {
-                let _e139 = count;
-                local_15 = (_e139 == AIRLIGHT_PANEL_LIST);
-            } else {
-                local_15 = true;
-            }
-            let _e143 = local_15;
-            if _e143 {
-                let _e144 = total;
-                return _e144;
-            }
-            let _e145 = worst;
-            let a_17 = list[_e145].x;
-            let _e149 = worst;
-            let b_14 = list[_e149].y;
-            if !(((b_14 - a_17) > (AIRLIGHT_FLT_EPS * b_14))) {
-                let _e158 = worst;
-                list[_e158].w = 0f;
-            } else {
-                let mid = (a_17 + ((b_14 - a_17) * 0.5f));
-                let _e166 = airlight_panel(s_7, g_11, sigma_6, half_8, a_17, mid);
-                let _e167 = airlight_panel(s_7, g_11, sigma_6, half_8, mid, b_14);
-                let _e168 = (*f_max_4);
-                (*f_max_4) = max(_e168, max(_e166.f_max, _e167.f_max));
-                let _e173 = worst;
-                list[_e173] = vec4<f32>(a_17, mid, _e166.value, _e166.error);
-                let _e178 = worst;
-                mass_over_1[_e178] = _e166.mass_over;
-                let _e181 = count;
-                list[_e181] = vec4<f32>(mid, b_14, _e167.value, _e167.error);
-                let _e186 = count;
-                mass_over_1[_e186] = _e167.mass_over;
-                let _e189 = count;
-                count = (_e189 + 1u);
-                let _e192 = budget;
-                budget = (_e192 - 2u);
             }
         }
         continuing {
-            let _e196 = round_;
-            round_ = (_e196 + 1u);
+            let _e206 = step_;
+            step_ = (_e206 + 1u);
         }
     }
-    total = 0f;
     loop {
-        let _e201 = i_11;
-        if (_e201 < AIRLIGHT_PANEL_LIST) {
+        let _e212 = i_11;
+        if (_e212 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e204 = i_11;
-            let _e205 = count;
-            if (_e204 >= _e205) {
+            let _e215 = i_11;
+            let _e216 = count;
+            if (_e215 >= _e216) {
                 break;
             }
-            let _e207 = total;
-            let _e208 = i_11;
-            let _e211 = list[_e208].z;
-            total = (_e207 + _e211);
+            let _e218 = total_1;
+            let _e219 = i_11;
+            let _e222 = list[_e219].z;
+            total_1 = (_e218 + _e222);
         }
         continuing {
-            let _e214 = i_11;
-            i_11 = (_e214 + 1u);
+            let _e225 = i_11;
+            i_11 = (_e225 + 1u);
         }
     }
-    let _e216 = total;
-    return _e216;
+    let _e227 = total_1;
+    return _e227;
 }
 
-fn airlight_bounded(a_9: f32) -> f32 {
-    let _e1 = airlight_hypot_one(a_9);
-    return (1f / (a_9 + _e1));
+fn airlight_bounded(a_10: f32) -> f32 {
+    let _e1 = airlight_hypot_one(a_10);
+    return (1f / (a_10 + _e1));
 }
 
 fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> {
@@ -2658,7 +2698,7 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half
     var local_17: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
-    var total_1: f32 = 0f;
+    var total_2: f32 = 0f;
     var lo_1: f32;
     var i_14: u32 = 0u;
     var hi_1: f32;
@@ -2783,11 +2823,11 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half
             let _e143 = hi_1;
             let _e144 = lo_1;
             if (_e143 > _e144) {
-                let _e146 = total_1;
+                let _e146 = total_2;
                 let _e147 = lo_1;
                 let _e148 = hi_1;
                 let _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
-                total_1 = (_e146 + _e149);
+                total_2 = (_e146 + _e149);
                 let _e151 = hi_1;
                 lo_1 = _e151;
             }
@@ -2809,7 +2849,7 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half
             i_14 = (_e165 + 1u);
         }
     }
-    let _e167 = total_1;
+    let _e167 = total_2;
     return _e167;
 }
 
@@ -2977,7 +3017,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     var local_34: bool;
     var local_35: bool;
     var local_36: bool;
-    var total_2: f32 = 0f;
+    var total_3: f32 = 0f;
     var f_max_6: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
@@ -3149,9 +3189,9 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
         }
         let _e199 = half_10;
         let _e200 = airlight_half(s_11, g_15, -1f, _e199, isotropic_1, (&f_max_6));
-        let _e201 = total_2;
+        let _e201 = total_3;
         let _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
-        total_2 = (_e201 + _e205);
+        total_3 = (_e201 + _e205);
     }
     if !(g_15.t_hi_infinite) {
         local_39 = (t1_ > x_h);
@@ -3243,11 +3283,11 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
         }
         let _e313 = half_11;
         let _e314 = airlight_half(s_11, g_15, 1f, _e313, isotropic_1, (&f_max_6));
-        let _e315 = total_2;
+        let _e315 = total_3;
         let _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
-        total_2 = (_e315 + _e323);
+        total_3 = (_e315 + _e323);
     }
-    let _e325 = total_2;
+    let _e325 = total_3;
     return AirlightResult(max(_e325, 0f), AIRLIGHT_STATUS_OK);
 }
 
@@ -3545,24 +3585,24 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
 }
 
 fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
-    var a_10: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+    var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
     let _e2 = airlight_normalize(s_13.dir);
     if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
         let _e12 = airlight_normalize(s_13.light_axis);
-        a_10 = _e12;
+        a_11 = _e12;
     }
     let to_light = (s_13.light_position - s_13.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
     if (_e19 > 0f) {
-        let _e24 = a_10;
+        let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
     let infinite_3 = ((s_13.flags & 1u) != 0u);
-    let _e32 = a_10;
+    let _e32 = a_11;
     let _e34 = d_c_1;
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, select(s_13.t_max, 0f, infinite_3), infinite_3);
 }
@@ -3571,11 +3611,11 @@ fn airlight_opaque(x_9: f32, key: u32) -> f32 {
     return bitcast<f32>((bitcast<u32>(x_9) ^ key));
 }
 
-fn airlight_two_sum(a_11: f32, b_8: f32, key_1: u32) -> vec2<f32> {
-    let _e4 = airlight_opaque((a_11 + b_8), key_1);
-    let _e6 = airlight_opaque((_e4 - a_11), key_1);
+fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
+    let _e4 = airlight_opaque((a_12 + b_9), key_1);
+    let _e6 = airlight_opaque((_e4 - a_12), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_2 = ((a_11 - _e8) + (b_8 - _e6));
+    let e_2 = ((a_12 - _e8) + (b_9 - _e6));
     let _e12 = airlight_is_finite(e_2);
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
@@ -3584,19 +3624,19 @@ fn airlight_split_high(x_10: f32) -> f32 {
     return bitcast<f32>(((bitcast<u32>(x_10) + 2048u) & 4294963200u));
 }
 
-fn airlight_two_product(a_12: f32, b_9: f32, key_2: u32) -> vec2<f32> {
-    let _e4 = airlight_opaque((a_12 * b_9), key_2);
-    let _e5 = airlight_split_high(a_12);
-    let al = (a_12 - _e5);
-    let _e7 = airlight_split_high(b_9);
-    let bl = (b_9 - _e7);
+fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
+    let _e4 = airlight_opaque((a_13 * b_10), key_2);
+    let _e5 = airlight_split_high(a_13);
+    let al = (a_13 - _e5);
+    let _e7 = airlight_split_high(b_10);
+    let bl = (b_10 - _e7);
     let e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
     let _e17 = airlight_is_finite(e_3);
     return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
-fn airlight_diff_of_products(a_13: f32, b_10: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
-    let _e5 = airlight_two_product(a_13, b_10, key_3);
+fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
+    let _e5 = airlight_two_product(a_14, b_11, key_3);
     let _e6 = airlight_two_product(c_5, d_1, key_3);
     let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
@@ -3627,7 +3667,7 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     var local_78: bool;
     var out_2: AirlightCanonical;
     var local_79: bool;
-    var a_14: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+    var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_14.flags > 1u));
     let _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
@@ -3677,13 +3717,13 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
         let _e112 = airlight_normalize(s_14.light_axis);
-        a_14 = _e112;
+        a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_4);
     let n_2 = -(cross(_e113, _e114));
     out_2.h = h_4;
-    let _e119 = a_14;
+    let _e119 = a_15;
     out_2.d_c = dot(n_2, _e119);
     let _e121 = out_2;
     return _e121;

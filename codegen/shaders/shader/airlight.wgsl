@@ -917,48 +917,65 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     // (a, b, value, error) and mass_over per listed panel
     var list = array<vec4<f32>, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST4@);
     var mass_over = array<f32, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST@);
-    let first = airlight_panel(s, g, sigma, half, lo, hi);
-    *f_max = max(*f_max, first.f_max);
-    list[0] = vec4<f32>(lo, hi, first.value, first.error);
-    mass_over[0] = first.mass_over;
-    var count = 1u;
-    var budget = AIRLIGHT_MAX_PANELS - 1u;
-    var total = 0.0;
-    // each pass splits a panel (two evaluations) or retires one: fewer than AIRLIGHT_MAX_PANELS
-    for (var round = 0u; round < AIRLIGHT_MAX_PANELS; round++) {
-        total = 0.0;
-        var errors = 0.0;
-        var mass = 0.0;
-        var worst = 0u;
-        for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
-            if (i >= count) { break; }
-            total += list[i].z;
-            errors += list[i].w;
-            mass += mass_over[i];
-            if (list[i].w > list[worst].w) { worst = i; }
+    // One panel is evaluated per step, at this one call site (a split's halves on consecutive
+    // steps): the panel code is inlined once, not three times. [a, b] goes to `slot`; a split's
+    // right half [next_a, next_b] is pending for the next step.
+    var a = lo;
+    var b = hi;
+    var slot = 0u;
+    var pending = false;
+    var next_a = 0.0;
+    var next_b = 0.0;
+    var count = 0u;
+    var budget = AIRLIGHT_MAX_PANELS;
+    for (var step = 0u; step < AIRLIGHT_MAX_PANELS; step++) {
+        let p = airlight_panel(s, g, sigma, half, a, b);
+        *f_max = max(*f_max, p.f_max);
+        list[slot] = vec4<f32>(a, b, p.value, p.error);
+        mass_over[slot] = p.mass_over;
+        budget -= 1u;
+        if (slot == count) { count += 1u; }
+        if (pending) {
+            a = next_a;
+            b = next_b;
+            slot = count;
+            pending = false;
+            continue;
         }
-        let goal = AIRLIGHT_PANEL_TOLERANCE * max(abs(total), AIRLIGHT_PANEL_FLOOR * *f_max * mass);
-        if (errors <= goal || !(list[worst].w > 0.0) || budget < 2u || count == AIRLIGHT_PANEL_LIST) {
-            return total;
-        }
-        let a = list[worst].x;
-        let b = list[worst].y;
-        if (!((b - a) > AIRLIGHT_FLT_EPS * b)) {
-            list[worst].w = 0.0;
-        } else {
-            let mid = a + (b - a) * 0.5;
-            let left = airlight_panel(s, g, sigma, half, a, mid);
-            let right = airlight_panel(s, g, sigma, half, mid, b);
-            *f_max = max(*f_max, max(left.f_max, right.f_max));
-            list[worst] = vec4<f32>(a, mid, left.value, left.error);
-            mass_over[worst] = left.mass_over;
-            list[count] = vec4<f32>(mid, b, right.value, right.error);
-            mass_over[count] = right.mass_over;
-            count += 1u;
-            budget -= 2u;
+        // the worst panel is split; one too narrow to split is retired (its error set to 0)
+        for (var retire = 0u; retire <= AIRLIGHT_PANEL_LIST; retire++) {
+            var total = 0.0;
+            var errors = 0.0;
+            var mass = 0.0;
+            var worst = 0u;
+            for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
+                if (i >= count) { break; }
+                total += list[i].z;
+                errors += list[i].w;
+                mass += mass_over[i];
+                if (list[i].w > list[worst].w) { worst = i; }
+            }
+            let goal = AIRLIGHT_PANEL_TOLERANCE * max(abs(total), AIRLIGHT_PANEL_FLOOR * *f_max * mass);
+            if (errors <= goal || !(list[worst].w > 0.0) || budget < 2u || count == AIRLIGHT_PANEL_LIST) {
+                return total;
+            }
+            let wa = list[worst].x;
+            let wb = list[worst].y;
+            if (!((wb - wa) > AIRLIGHT_FLT_EPS * wb)) {
+                list[worst].w = 0.0;
+                continue;
+            }
+            let mid = wa + (wb - wa) * 0.5;
+            a = wa;
+            b = mid;
+            slot = worst;
+            pending = true;
+            next_a = mid;
+            next_b = wb;
+            break;
         }
     }
-    total = 0.0;
+    var total = 0.0;
     for (var i = 0u; i < AIRLIGHT_PANEL_LIST; i++) {
         if (i >= count) { break; }
         total += list[i].z;
