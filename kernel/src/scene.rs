@@ -16,8 +16,8 @@ use crate::real::Real;
 pub const CPU_TERMS: usize = 6;
 /// Gauss–Legendre nodes per panel in the default shader: the f32 default path's count (the
 /// paper's GPU version used one 4-term expansion per half; panels of 4 nodes need 3–4× the
-/// panels of 8 and were slower on every class measured, BENCHMARKS.md); the shaders are also
-/// emitted with 12.
+/// panels of 8, were slower on 14 of the 16 scene classes of tests/reference/classes.jsonl and
+/// 2–3× slower on lavapipe, BENCHMARKS.md); the shaders are also emitted with 12.
 pub const SHADER_NODES: usize = 8;
 /// The shaders' error control (they compute [`Scene::in_scatter_panels`] with
 /// [`SHADER_NODES`] or 12 nodes and this control): tolerance `1e-4` of `F` on each piece,
