@@ -103,6 +103,24 @@ pub(crate) fn working_tolerance<T: Real>(tolerance: T) -> T {
     tolerance.max(T::lit(T::PANEL_TOLERANCE))
 }
 
+/// The panel edges of an outer integral over `[lo, hi]`: `lo`, the `cuts` strictly inside in
+/// increasing order (repeats dropped), `hi`; the array (`K > cuts.len() + 1`) and the index of
+/// `hi` in it.
+pub(crate) fn edges_between<T: Real, const K: usize>(lo: T, hi: T, cuts: &mut [T]) -> ([T; K], usize) {
+    cuts.sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
+    let mut edges = [lo; K];
+    let mut n = 0;
+    for &c in cuts.iter() {
+        if c > edges[n] && c < hi {
+            n += 1;
+            edges[n] = c;
+        }
+    }
+    n += 1;
+    edges[n] = hi;
+    (edges, n)
+}
+
 /// The Gauss–Kronrod rule of an outer integral at `tolerance`: 7 points per panel where 1e-4 of
 /// the value will do (on the classes of tests/reference/extended.jsonl at 1e-3 it is faster on 8
 /// of 12, slower where the peak is sharp: BENCHMARKS.md, segment lights), 15 below.
@@ -229,17 +247,7 @@ where
                 *c = to_w(s);
             }
         }
-        cuts.sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
-        let mut edges = [w_lo; 5];
-        let mut n = 0;
-        for c in cuts {
-            if c > edges[n] && c < w_hi {
-                n += 1;
-                edges[n] = c;
-            }
-        }
-        n += 1;
-        edges[n] = w_hi;
+        let (edges, n): ([T; 5], usize) = edges_between(w_lo, w_hi, &mut cuts);
         adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
     }
 }

@@ -23,7 +23,7 @@
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance, working_tolerance};
+use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
 use crate::phase::PhaseFunction;
@@ -347,18 +347,7 @@ where
                 push(T::PI() - c.acos());
             }
         }
-        let cuts = &mut cuts[..count];
-        cuts.sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
-        let mut edges = [T::zero(); 10];
-        let mut n = 0;
-        for &c in cuts.iter() {
-            if c > edges[n] && c < T::PI() {
-                n += 1;
-                edges[n] = c;
-            }
-        }
-        n += 1;
-        edges[n] = T::PI();
+        let (edges, n): ([T; 10], usize) = edges_between(T::zero(), T::PI(), &mut cuts[..count]);
         // piece i of the outer variable x ∈ [i, i + 1] is γ = a + (b − a)(3t² − 2t³), t = x − i:
         // where an arc opens or closes the inner integral goes like |γ − γ*|^{3/2}, smooth in t
         let mut mapped = |x: T| {
