@@ -715,7 +715,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
         // orders N − 1 … 1, stored (unrolled.rs)
 @MILLER_STORED@        out[0] = cur;
         let norm = i0 / cur;
-        @MOMENTS_NORM@
+        @EACH_TERM@ out[{k}] *= norm;
     } else {
         let e2 = exp(-(lambda + lambda));
         out[0] = i0;

@@ -183,7 +183,6 @@ impl Constants {
             ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
             ("@LEGENDRE_BODY@", unrolled::legendre_body(terms, transform)),
             ("@MILLER_STORED@", unrolled::miller_stored(terms)),
-            ("@MOMENTS_NORM@", unrolled::scale_all(terms, "out", "norm")),
             ("@MOMENTS_UPWARD@", unrolled::moments_upward(terms)),
             ("@MOMENTS_SIGNS@", unrolled::moments_signs(terms)),
             ("@LEGENDRE_TO_MONOMIAL_BODY@", unrolled::legendre_to_monomial_body(terms, &airlight::panels::LEGENDRE_MONOMIAL)),

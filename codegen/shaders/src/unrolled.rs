@@ -53,11 +53,6 @@ pub fn miller_stored(terms: usize) -> String {
     s
 }
 
-/// `out[k] *= norm` for every term.
-pub fn scale_all(terms: usize, var: &str, factor: &str) -> String {
-    (0..terms).map(|k| format!("{var}[{k}] *= {factor};")).collect::<Vec<_>>().join(" ")
-}
-
 /// The upward recurrence `out[k+1] = out[k−1] − (2k+1)/λ·out[k]`, `k = 1 … terms − 2`.
 pub fn moments_upward(terms: usize) -> String {
     let mut s = String::new();
