@@ -22,12 +22,12 @@
 //!
 //! `cargo bench -p airlight-tests --bench surface_table && python3 scripts/surface_table_peer.py`
 
-use airlight::glam::{DVec3, Vec3};
+use airlight::glam::Vec3;
 use airlight::light::Omni;
 use airlight::phase::{Isotropic, PhaseFunction};
-use airlight::{Brdf, LightDistribution, Medium, PointLight, Real, Surface, SurfaceScene};
+use airlight::{Brdf, LightDistribution, SurfaceScene};
 use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-use airlight_tests::{reference_lines, rel_err, Rng};
+use airlight_tests::{canonical_surface, reference_lines, rel_err, Rng};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
@@ -40,23 +40,6 @@ const SIZES: [usize; 6] = [16, 32, 64, 128, 256, 512];
 const POINTS: usize = 2000;
 /// Our tolerances, loosest first.
 const TOLERANCES: [f64; 7] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8];
-
-/// The canonical surface point for `(T, θ_s)`: at the origin, normal `+z`, the light at distance
-/// 1 at `θ_s` from the normal, `σt = T`, `σs = I = ρ = 1` (so the air-light is `J` itself).
-fn canonical<T: Real<Vec3 = V>, V>(t: f64, theta: f64, vec: impl Fn(f64, f64, f64) -> V) -> SurfaceScene<T, Omni, Isotropic> {
-    let surface = Surface { position: vec(0.0, 0.0, 0.0), normal: vec(0.0, 0.0, 1.0) };
-    let light = PointLight { position: vec(theta.sin(), 0.0, theta.cos()), intensity: T::one(), distribution: Omni };
-    let medium = Medium { sigma_s: T::one(), sigma_t: T::lit(t) };
-    SurfaceScene::new(surface, Brdf::Lambert { albedo: T::one() }, light, medium, Isotropic).expect("a valid canonical surface")
-}
-
-fn canonical_f64(t: f64, theta: f64) -> SurfaceScene<f64, Omni, Isotropic> {
-    canonical::<f64, DVec3>(t, theta, DVec3::new)
-}
-
-fn canonical_f32(t: f64, theta: f64) -> SurfaceScene<f32, Omni, Isotropic> {
-    canonical::<f32, Vec3>(t as f32 as f64, theta as f32 as f64, |x, y, z| Vec3::new(x as f32, y as f32, z as f32))
-}
 
 /// Hong's `J(T, θ_s)` on an `n × n` grid, f32, row-major in `T`: uniform in `T` as Hong's
 /// (`Axis::Linear`), or uniform in `√T` (`Axis::Sqrt`, this bench's own variant: `J` has a
@@ -82,7 +65,7 @@ impl Table {
             let t = T_MAX * if axis == Axis::Sqrt { x * x } else { x };
             for j in 0..n {
                 let theta = std::f64::consts::PI * j as f64 / (n - 1) as f64;
-                data.push(canonical_f64(t, theta).air_light_counted(1e-9).0 as f32);
+                data.push(canonical_surface(t, theta).air_light_counted(1e-9).0 as f32);
             }
         }
         (Table { n, axis, data }, start.elapsed())
@@ -154,8 +137,8 @@ fn records() -> Vec<Record> {
 fn benches(crit: &mut Criterion) {
     let mut rng = Rng(2005);
     let points: Vec<(f64, f64)> = (0..POINTS).map(|_| (rng.log_range(1e-3, T_MAX), rng.range(0.0, std::f64::consts::PI))).collect();
-    let exact: Vec<f64> = points.iter().map(|&(t, th)| canonical_f64(t as f32 as f64, th as f32 as f64).air_light()).collect();
-    let ours32: Vec<SurfaceScene<f32, Omni, Isotropic>> = points.iter().map(|&(t, th)| canonical_f32(t, th)).collect();
+    let exact: Vec<f64> = points.iter().map(|&(t, th)| canonical_surface(t as f32 as f64, th as f32 as f64).air_light()).collect();
+    let ours32: Vec<SurfaceScene<f32, Omni, Isotropic>> = points.iter().map(|&(t, th)| canonical_surface(t as f32, th as f32)).collect();
     let recs = records();
     let rel = rel_err;
     // ours: largest error over the points at each tolerance

@@ -8,6 +8,18 @@ pub fn repo_root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
 }
 
+/// The surface point of Hong 2006's `J(T, θ_s)` (thesis eq. 4.13): at the origin, normal `+z`,
+/// an omni light of intensity 1 at distance 1 and angle `θ_s` from the normal, `σt = T`,
+/// `σs = 1`, a Lambertian BRDF of albedo 1, isotropic scattering — its air-light is `J` itself.
+pub fn canonical_surface<T: airlight::Real>(t: T, theta: T) -> airlight::SurfaceScene<T, airlight::light::Omni, airlight::phase::Isotropic> {
+    use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
+    let (s, c) = theta.sin_cos();
+    let (zero, one) = (T::zero(), T::one());
+    let surface = Surface { position: T::vec3_from_array([zero; 3]), normal: T::vec3_from_array([zero, zero, one]) };
+    let light = PointLight { position: T::vec3_from_array([s, zero, c]), intensity: one, distribution: airlight::light::Omni };
+    SurfaceScene::new(surface, Brdf::Lambert { albedo: one }, light, Medium { sigma_s: one, sigma_t: t }, airlight::phase::Isotropic).expect("a valid canonical surface")
+}
+
 /// Lines of a reference file under `tests/reference/`, parsed as JSON.
 pub fn reference_lines(name: &str) -> Vec<serde_json::Value> {
     let path = repo_root().join("tests/reference").join(name);

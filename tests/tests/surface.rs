@@ -132,28 +132,12 @@ fn surface_record_errors() {
 /// f32's world-space geometry is ill-conditioned, and returned values 2–4× too large.
 #[test]
 fn tolerance_below_the_rays_floor_does_not_hurt() {
-    use airlight::glam::Vec3;
     let mut rng = airlight_tests::Rng(2005);
     let mut worst = (0.0f64, 0.0, 0.0);
     for _ in 0..300 {
         let (t, th) = (rng.log_range(1e-3, 20.0) as f32, rng.range(0.0, PI) as f32);
-        let (s, c) = th.sin_cos();
-        let f32_scene = SurfaceScene::new(
-            Surface { position: Vec3::ZERO, normal: Vec3::Z },
-            Brdf::Lambert { albedo: 1.0f32 },
-            PointLight { position: Vec3::new(s, 0.0, c), intensity: 1.0, distribution: Omni },
-            Medium { sigma_s: 1.0, sigma_t: t },
-            Isotropic,
-        )
-        .unwrap();
-        let f64_scene = SurfaceScene::new(
-            Surface { position: DVec3::ZERO, normal: DVec3::Z },
-            Brdf::Lambert { albedo: 1.0f64 },
-            PointLight { position: DVec3::new(s as f64, 0.0, c as f64), intensity: 1.0, distribution: Omni },
-            Medium { sigma_s: 1.0, sigma_t: t as f64 },
-            Isotropic,
-        )
-        .unwrap();
+        let f32_scene = airlight_tests::canonical_surface(t, th);
+        let f64_scene = airlight_tests::canonical_surface(t as f64, th as f64);
         let exact = f64_scene.air_light();
         let e = (f32_scene.air_light_counted(1e-7).0 as f64 - exact).abs() / exact;
         if e > worst.0 {
