@@ -19,8 +19,13 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// Semi-axes `(a, b)` of the ellipse `(Re z/a)² + (Im z/b)² < 1` inside which `E1(z)`
     /// is evaluated by its power series; outside, by the continued fraction.
     const E1_SERIES_ELLIPSE: (f64, f64);
-    /// Number of power-series terms used inside that ellipse (fixed, no early exit).
+    /// Number of power-series terms used at the ellipse's edge: the most any series in the
+    /// kernel sums (fixed, no early exit).
     const E1_SERIES_TERMS: usize;
+    /// Power-series terms by band of `|z|` inside the ellipse (as the fraction's depths): the
+    /// first entry whose bound exceeds `|z|` gives the count; the last entry, unbounded, is
+    /// [`Real::E1_SERIES_TERMS`].
+    const E1_SERIES_BANDS: &'static [(f64, usize)];
     /// Continued-fraction depth by band of `|z|`: the first entry whose bound exceeds `|z|`
     /// gives the depth; the last entry applies to all larger `|z|`.
     const E1_CF_DEPTH: &'static [(f64, usize)];
@@ -93,6 +98,7 @@ impl Real for f64 {
     // E1 tuning: tests/reference/gen_e1_tuning.py derives the term count and depths from the
     // region bounds (truncation ≤ 8 unit roundoffs, measured against mpmath).
     const E1_SERIES_TERMS: usize = 29;
+    const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.125, 9), (0.5, 13), (1.0, 16), (2.0, 22), (f64::INFINITY, 29)];
     const E1_CF_DEPTH: &'static [(f64, usize)] =
         &[(5.0, 39), (8.0, 31), (15.0, 20), (50.0, 11), (300.0, 5), (f64::INFINITY, 2)];
     // 8-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
@@ -121,6 +127,7 @@ impl Real for f32 {
     const E1_SERIES_ELLIPSE: (f64, f64) = (1.3, 2.1);
     // E1 tuning: derived by tests/reference/gen_e1_tuning.py, as for f64.
     const E1_SERIES_TERMS: usize = 13;
+    const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.25, 5), (0.5, 6), (1.0, 9), (f64::INFINITY, 13)];
     const E1_CF_DEPTH: &'static [(f64, usize)] =
         &[(3.0, 14), (5.0, 9), (10.0, 6), (30.0, 3), (f64::INFINITY, 1)];
     // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Derives the complex E1 tuning of kernel/src/real.rs (E1_SERIES_TERMS, E1_CF_DEPTH) from the
-region bounds, and shows each choice's measured truncation error, so the tables can be
+"""Derives the complex E1 tuning of kernel/src/real.rs (E1_SERIES_TERMS, E1_SERIES_BANDS,
+E1_CF_DEPTH) from the region bounds, and shows each choice's measured truncation error, so the tables can be
 reproduced and re-derived when a bound moves.
 
 What the kernel evaluates (kernel/src/special/): for Re z >= 0,
   * inside the ellipse (Re z / a)^2 + (Im z / b)^2 < 1 (E1_SERIES_ELLIPSE = (a, b)):
       E1(z) = -gamma - ln z + Ein(z),  Ein(z) = sum_{k=1}^{n} (-1)^(k+1) z^k / (k k!)   (A&S 5.1.11)
-    with n = E1_SERIES_TERMS;
+    with n from E1_SERIES_BANDS, the first band (R, n) with |z| < R (the last, unbounded band
+    is E1_SERIES_TERMS, the ellipse's own count);
   * outside it, e^z E1(z) by the continued fraction (A&S 5.1.22, even contraction)
       1/(z + 1 - 1^2/(z + 3 - 2^2/(z + 5 - ...)))
     cut at depth d, the tail t_{d+1} replaced by the fixed point of t = b - (d+1)^2/t,
@@ -17,6 +18,9 @@ not the float rounding the kernel's tests cover):
   * n: the fewest series terms whose truncation error, relative to |E1(z)|, is at most
     TOLERANCE = 8 unit roundoffs u (u = 2^-53, 2^-24) on the ellipse's boundary (where |z|, and so the
     truncation, is largest; 64 points on the quarter ellipse, Im z >= 0 by symmetry);
+  * per series band: the same on the band's outer circle |z| = R and at 3/4 and 1/2 of it
+    (32 angles each, points outside the ellipse skipped): the truncation, ~|z|^(n+1), is
+    largest on the outer circle, and |E1| does not grow towards it faster than that;
   * per band: the smallest depth whose relative error is at most 8u over the band's inner
     edge (|z| = previous bound, or the ellipse for the first band; 48 angles in [0, pi/2],
     points inside the ellipse skipped), where the fraction converges slowest.
@@ -52,9 +56,12 @@ def committed():
         block = text[text.index(f"impl Real for {prec}"):]
         ell = re.search(r"E1_SERIES_ELLIPSE: \(f64, f64\) = \(([\d.]+), ([\d.]+)\)", block)
         terms = re.search(r"E1_SERIES_TERMS: usize = (\d+)", block)
-        table = re.search(r"E1_CF_DEPTH: &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
-        bands = [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", table.group(1))]
-        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), bands)
+
+        def table(name):
+            t = re.search(name + r": &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
+            return [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", t.group(1))]
+
+        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"))
     return out
 
 
@@ -104,13 +111,25 @@ def inside(z, ell):
 def main():
     mismatches = 0
     for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
-        ell, terms_now, bands_now = committed()[prec]
+        ell, terms_now, series_now, bands_now = committed()[prec]
         a, b = ell
         boundary = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in (math.pi / 2 * i / 63 for i in range(64))]
         n, worst = fewest(series_error, boundary, unit)
         flag = "" if n == terms_now else f"   <-- real.rs has {terms_now}"
         mismatches += n != terms_now
         print(f"{prec}: series inside the ellipse ({a}, {b}): {n} terms, truncation <= {float(worst) / unit:.2f} u{flag}")
+        for bound, n_now in series_now:
+            if math.isinf(bound):
+                flag = "" if n_now == terms_now else f"   <-- the last band has {n_now}, E1_SERIES_TERMS {terms_now}"
+                mismatches += n_now != terms_now
+                print(f"{prec}: series beyond the last band: the ellipse's count{flag}")
+                continue
+            circles = [mp.mpc(f * bound * math.cos(th), f * bound * math.sin(th)) for f in (1.0, 0.75, 0.5) for th in (math.pi / 2 * i / 31 for i in range(32))]
+            circles = [z for z in circles if inside(z, ell)]
+            n, worst = fewest(series_error, circles, unit)
+            flag = "" if n == n_now else f"   <-- real.rs has {n_now}"
+            mismatches += n != n_now
+            print(f"{prec}: series for |z| < {bound:g}: {n} terms, truncation <= {float(worst) / unit:.2f} u{flag}")
         inner = None
         for bound, depth_now in bands_now:
             angles = [math.pi / 2 * i / 47 for i in range(48)]

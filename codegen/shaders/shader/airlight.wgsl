@@ -335,6 +335,9 @@ fn airlight_is_finite(x: f32) -> bool {
 // (kernel/src/special/: series.rs, continued_fraction.rs, e1.rs, en.rs)
 
 /// Ein(z) = Σ_{k≥1} (−1)^{k+1} z^k/(k·k!), AIRLIGHT_E1_SERIES_TERMS terms (A&S 5.1.11), by Horner.
+/// The ellipse's count everywhere, where the kernel takes fewer for small |z| (real.rs
+/// `E1_SERIES_BANDS`; the same value within the 8-unit-roundoff truncation both counts allow): a
+/// loop with constant bounds, and lanes running in step would wait for the longest anyway.
 fn airlight_ein(z: vec2<f32>) -> vec2<f32> {
     let c = airlight_ein_coefficients();
     var sum = vec2<f32>(0.0, 0.0);

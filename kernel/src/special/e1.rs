@@ -1,8 +1,9 @@
 //! Region selection for the complex exponential integral (in the style of Julia's
 //! `SpecialFunctions.expint`): power series inside an ellipse around the origin, continued
-//! fraction outside. Each side has a fixed iteration count, so there is no data-dependent
-//! loop: at most 29 series terms or 39 fraction levels in f64, 13 or 14 in f32
-//! (tests/reference/gen_e1_tuning.py derives them from the bounds below).
+//! fraction outside. Each side takes its iteration count from a table by band of `|z|` (the
+//! fewest terms that band needs), so no loop waits on convergence: at most 29 series terms or
+//! 39 fraction levels in f64, 13 or 14 in f32 (tests/reference/gen_e1_tuning.py derives every
+//! count from the bounds below).
 //!
 //! The ellipse semi-axes (`Real::E1_SERIES_ELLIPSE`) sit where both methods meet their
 //! budget: along the real axis the series loses `≈ e^{2x}` ulps to cancellation (so it must

@@ -4,16 +4,30 @@
 use super::C;
 use crate::real::Real;
 
-/// `Ein(z)` by its power series, [`Real::E1_SERIES_TERMS`] terms (accurate inside the series
-/// ellipse of [`in_series_region`](super::in_series_region)), by Horner's rule on the
-/// tabulated coefficients: complex multiply-adds, no divisions.
+/// `Ein(z)` by its power series, as many terms as [`Real::E1_SERIES_BANDS`] gives for `|z|`
+/// (accurate inside the series ellipse of [`in_series_region`](super::in_series_region)), by
+/// Horner's rule on the tabulated coefficients: complex multiply-adds, no divisions.
 #[inline]
 pub fn ein<T: Real>(z: C<T>) -> C<T> {
     let mut sum = C::new(T::zero(), T::zero());
-    for &c in EIN_COEFFS[..T::E1_SERIES_TERMS.min(40)].iter().rev() {
+    for &c in EIN_COEFFS[..series_terms(z).min(40)].iter().rev() {
         sum = sum * z + T::lit(c);
     }
     sum * z
+}
+
+/// The series terms [`Real::E1_SERIES_BANDS`] gives at `z` (compared as `|z|²`, no square root).
+#[inline]
+pub fn series_terms<T: Real>(z: C<T>) -> usize {
+    let r2 = z.norm_sqr().to_f64_exact();
+    let mut terms = T::E1_SERIES_TERMS;
+    for &(bound, n) in T::E1_SERIES_BANDS {
+        terms = n;
+        if r2 < bound * bound {
+            break;
+        }
+    }
+    terms
 }
 
 /// `(−1)^{k+1}/(k·k!)`, `k = 1 … 40`: the coefficients of `Ein(x) = Σ c_k x^k`, each from
