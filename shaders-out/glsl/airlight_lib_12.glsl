@@ -76,7 +76,7 @@ struct AirlightPanel {
 };
 const uint AIRLIGHT_TERMS = 12u;
 const uint AIRLIGHT_HALF_TERMS = 6u;
-const float AIRLIGHT_PANEL_TOLERANCE = 0.0001;
+const float AIRLIGHT_PANEL_TOLERANCE = 0.001;
 const float AIRLIGHT_PANEL_FLOOR = 0.0001;
 const uint AIRLIGHT_MAX_PANELS = 16u;
 const uint AIRLIGHT_PANEL_LIST = 8u;
@@ -3006,7 +3006,7 @@ float airlight_cut_length(float big_h_2, float v_s) {
     float inv_h = (1.0 / big_h_2);
     float w_3 = (v_s + inv_h);
     float r_6 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_6) / (1e-5 * 0.0001))));
+    float e_1 = (1.0 + log(((8.0 * r_6) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 

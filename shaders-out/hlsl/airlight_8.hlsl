@@ -57,7 +57,7 @@ struct AirlightPanel {
 
 static const uint AIRLIGHT_TERMS = 8u;
 static const uint AIRLIGHT_HALF_TERMS = 4u;
-static const float AIRLIGHT_PANEL_TOLERANCE = 0.0001;
+static const float AIRLIGHT_PANEL_TOLERANCE = 0.001;
 static const float AIRLIGHT_PANEL_FLOOR = 0.0001;
 static const uint AIRLIGHT_MAX_PANELS = 16u;
 static const uint AIRLIGHT_PANEL_LIST = 8u;
@@ -2736,7 +2736,7 @@ float airlight_cut_length(float big_h_2, float v_s)
     float inv_h = (1.0 / big_h_2);
     float w_2 = (v_s + inv_h);
     float r_6 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_6) / (1e-5 * 0.0001))));
+    float e_1 = (1.0 + log(((8.0 * r_6) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 

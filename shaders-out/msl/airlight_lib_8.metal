@@ -106,7 +106,7 @@ struct airlight_type_12 {
 };
 constant uint AIRLIGHT_TERMS = 8u;
 constant uint AIRLIGHT_HALF_TERMS = 4u;
-constant float AIRLIGHT_PANEL_TOLERANCE = 0.0001;
+constant float AIRLIGHT_PANEL_TOLERANCE = 0.001;
 constant float AIRLIGHT_PANEL_FLOOR = 0.0001;
 constant uint AIRLIGHT_MAX_PANELS = 16u;
 constant uint AIRLIGHT_PANEL_LIST = 8u;
@@ -2908,7 +2908,7 @@ float airlight_cut_length(
     float inv_h = 1.0 / big_h_2;
     float w_3 = v_s + inv_h;
     float r_6 = (1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s));
-    float e_1 = 1.0 + metal::log((8.0 * r_6) / (0.00001 * 0.0001));
+    float e_1 = 1.0 + metal::log((8.0 * r_6) / (0.000100000005 * 0.0001));
     return e_1 * inv_h;
 }
 

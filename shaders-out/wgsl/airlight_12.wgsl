@@ -54,7 +54,7 @@ struct AirlightPanel {
 
 const AIRLIGHT_TERMS: u32 = 12u;
 const AIRLIGHT_HALF_TERMS: u32 = 6u;
-const AIRLIGHT_PANEL_TOLERANCE: f32 = 0.0001f;
+const AIRLIGHT_PANEL_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_PANEL_FLOOR: f32 = 0.0001f;
 const AIRLIGHT_MAX_PANELS: u32 = 16u;
 const AIRLIGHT_PANEL_LIST: u32 = 8u;
@@ -2921,7 +2921,7 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_2 = (v_s + inv_h);
     let r_6 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_6) / (0.00001f * 0.0001f))));
+    let e_1 = (1f + log(((8f * r_6) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
