@@ -44,12 +44,13 @@ pub const EIN_COEFFS: [f64; 40] = {
     c
 };
 
-/// `Ein(x)` for real `x` by Horner's rule on [`Real::E1_SERIES_TERMS`] tabulated coefficients
-/// (the real axis of the series ellipse: `0 ≤ x < 2.5` in f64, `< 1.3` in f32): no divisions.
+/// `Ein(x)` for real `x` by Horner's rule on the tabulated coefficients, as many as
+/// [`Real::E1_SERIES_BANDS`] gives for `|x|` (the real axis of the series ellipse: `0 ≤ x < 2.5`
+/// in f64, `< 1.3` in f32): no divisions.
 #[inline]
 pub fn ein_real<T: Real>(x: T) -> T {
     let mut sum = T::zero();
-    for &c in EIN_COEFFS[..T::E1_SERIES_TERMS.min(40)].iter().rev() {
+    for &c in EIN_COEFFS[..series_terms(C::new(x, T::zero())).min(40)].iter().rev() {
         sum = sum * x + T::lit(c);
     }
     sum * x
