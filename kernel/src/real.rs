@@ -99,8 +99,18 @@ impl Real for f64 {
     // region bounds (truncation ≤ 8 unit roundoffs, measured against mpmath).
     const E1_SERIES_TERMS: usize = 29;
     const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.125, 9), (0.5, 13), (1.0, 16), (2.0, 22), (f64::INFINITY, 29)];
-    const E1_CF_DEPTH: &'static [(f64, usize)] =
-        &[(5.0, 39), (8.0, 31), (15.0, 20), (50.0, 11), (300.0, 5), (f64::INFINITY, 2)];
+    const E1_CF_DEPTH: &'static [(f64, usize)] = &[
+        (5.0, 39),
+        (6.0, 31),
+        (8.0, 26),
+        (11.0, 20),
+        (15.0, 15),
+        (25.0, 11),
+        (50.0, 7),
+        (100.0, 5),
+        (300.0, 4),
+        (f64::INFINITY, 2),
+    ];
     // 8-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
@@ -129,7 +139,7 @@ impl Real for f32 {
     const E1_SERIES_TERMS: usize = 13;
     const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.25, 5), (0.5, 6), (1.0, 9), (f64::INFINITY, 13)];
     const E1_CF_DEPTH: &'static [(f64, usize)] =
-        &[(3.0, 14), (5.0, 9), (10.0, 6), (30.0, 3), (f64::INFINITY, 1)];
+        &[(2.5, 14), (3.0, 11), (4.0, 9), (5.0, 7), (7.0, 6), (10.0, 4), (15.0, 3), (30.0, 2), (f64::INFINITY, 1)];
     // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),

@@ -347,33 +347,57 @@ bool airlight_in_series_region(vec2 z_5) {
 }
 
 uint airlight_cf_depth(float r) {
-    if ((r < 3.0)) {
+    if ((r < 2.5)) {
         return 14u;
     }
-    if ((r < 5.0)) {
+    if ((r < 3.0)) {
+        return 11u;
+    }
+    if ((r < 4.0)) {
         return 9u;
     }
-    if ((r < 10.0)) {
+    if ((r < 5.0)) {
+        return 7u;
+    }
+    if ((r < 7.0)) {
         return 6u;
     }
-    if ((r < 30.0)) {
+    if ((r < 10.0)) {
+        return 4u;
+    }
+    if ((r < 15.0)) {
         return 3u;
+    }
+    if ((r < 30.0)) {
+        return 2u;
     }
     return 1u;
 }
 
 uint airlight_cf_depth_squared(float r2_) {
-    if ((r2_ < 9.0)) {
+    if ((r2_ < 6.25)) {
         return 14u;
     }
-    if ((r2_ < 25.0)) {
+    if ((r2_ < 9.0)) {
+        return 11u;
+    }
+    if ((r2_ < 16.0)) {
         return 9u;
     }
-    if ((r2_ < 100.0)) {
+    if ((r2_ < 25.0)) {
+        return 7u;
+    }
+    if ((r2_ < 49.0)) {
         return 6u;
     }
-    if ((r2_ < 900.0)) {
+    if ((r2_ < 100.0)) {
+        return 4u;
+    }
+    if ((r2_ < 225.0)) {
         return 3u;
+    }
+    if ((r2_ < 900.0)) {
+        return 2u;
     }
     return 1u;
 }

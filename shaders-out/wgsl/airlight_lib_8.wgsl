@@ -420,33 +420,57 @@ fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
-    if (r < 3f) {
+    if (r < 2.5f) {
         return 14u;
     }
-    if (r < 5f) {
+    if (r < 3f) {
+        return 11u;
+    }
+    if (r < 4f) {
         return 9u;
     }
-    if (r < 10f) {
+    if (r < 5f) {
+        return 7u;
+    }
+    if (r < 7f) {
         return 6u;
     }
-    if (r < 30f) {
+    if (r < 10f) {
+        return 4u;
+    }
+    if (r < 15f) {
         return 3u;
+    }
+    if (r < 30f) {
+        return 2u;
     }
     return 1u;
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
-    if (r2_ < 9f) {
+    if (r2_ < 6.25f) {
         return 14u;
     }
-    if (r2_ < 25f) {
+    if (r2_ < 9f) {
+        return 11u;
+    }
+    if (r2_ < 16f) {
         return 9u;
     }
-    if (r2_ < 100f) {
+    if (r2_ < 25f) {
+        return 7u;
+    }
+    if (r2_ < 49f) {
         return 6u;
     }
-    if (r2_ < 900f) {
+    if (r2_ < 100f) {
+        return 4u;
+    }
+    if (r2_ < 225f) {
         return 3u;
+    }
+    if (r2_ < 900f) {
+        return 2u;
     }
     return 1u;
 }

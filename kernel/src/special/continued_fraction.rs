@@ -32,7 +32,7 @@ pub const PLAIN_FROM: usize = 6;
 /// The continued fraction at an explicit depth `n` (levels `1..=n` plus the tail estimate):
 /// `1/t_1`, `t_k = z + 2k − 1 − k²/t_{k+1}`, `t_{n+1}` the tail, bottom-up.
 ///
-/// Deep fractions (`n ≥ 6`: `|z| < 10` in f32, `< 50` in f64 by the depth table) have
+/// Deep fractions (`n ≥ 6`: `|z| < 7` in f32, `< 50` in f64 by the depth table) have
 /// `|t_k| ≤ |z| + 2n + 1 ≤ 91`, so `k²/t = k² t̄/|t|²` cannot overflow: one division per level
 /// (the levels form a chain, so its latency is the fraction's cost). Shallow fractions serve
 /// any `|z|` up to the float range, with Smith's division. (The top-down convergents would need
