@@ -26,6 +26,10 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// first entry whose bound exceeds `|z|` gives the count; the last entry, unbounded, is
     /// [`Real::E1_SERIES_TERMS`].
     const E1_SERIES_BANDS: &'static [(f64, usize)];
+    /// Terms of [`ein_divided_difference`](crate::special::ein_divided_difference) by band of
+    /// `max(|a|, |b|)` (as the series bands; the last entry serves up to the routine's domain
+    /// bound, 1).
+    const E1_DD_BANDS: &'static [(f64, usize)];
     /// Continued-fraction depth by band of `|z|`: the first entry whose bound exceeds `|z|`
     /// gives the depth; the last entry applies to all larger `|z|`.
     const E1_CF_DEPTH: &'static [(f64, usize)];
@@ -99,6 +103,7 @@ impl Real for f64 {
     // region bounds (truncation ≤ 8 unit roundoffs, measured against mpmath).
     const E1_SERIES_TERMS: usize = 29;
     const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.125, 9), (0.5, 13), (1.0, 16), (2.0, 22), (f64::INFINITY, 29)];
+    const E1_DD_BANDS: &'static [(f64, usize)] = &[(0.125, 10), (0.5, 14), (f64::INFINITY, 17)];
     const E1_CF_DEPTH: &'static [(f64, usize)] = &[
         (5.0, 39),
         (6.0, 31),
@@ -138,6 +143,7 @@ impl Real for f32 {
     // E1 tuning: derived by tests/reference/gen_e1_tuning.py, as for f64.
     const E1_SERIES_TERMS: usize = 13;
     const E1_SERIES_BANDS: &'static [(f64, usize)] = &[(0.25, 5), (0.5, 6), (1.0, 9), (f64::INFINITY, 13)];
+    const E1_DD_BANDS: &'static [(f64, usize)] = &[(0.125, 5), (0.5, 7), (f64::INFINITY, 10)];
     const E1_CF_DEPTH: &'static [(f64, usize)] =
         &[(2.5, 14), (3.0, 11), (4.0, 9), (5.0, 7), (7.0, 6), (10.0, 4), (15.0, 3), (30.0, 2), (f64::INFINITY, 1)];
     // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).

@@ -103,6 +103,7 @@ const uint AIRLIGHT_STATUS_INFINITE = 2u;
 const uint AIRLIGHT_MAX_POWER = 1024u;
 const uint AIRLIGHT_MAX_POWER_BITS = 11u;
 const uint AIRLIGHT_E1_SERIES_TERMS = 13u;
+const uint AIRLIGHT_EIN_DD_TERMS = 10u;
 const float AIRLIGHT_E1_INV_RE = 0.7692308;
 const float AIRLIGHT_E1_INV_IM = 0.47619048;
 const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
@@ -388,7 +389,7 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
         }
         loop_init_4 = false;
         uint _e17 = k_4;
-        if ((_e17 < AIRLIGHT_E1_SERIES_TERMS)) {
+        if ((_e17 < AIRLIGHT_EIN_DD_TERMS)) {
         } else {
             break;
         }

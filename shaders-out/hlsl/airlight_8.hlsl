@@ -84,6 +84,7 @@ static const uint AIRLIGHT_STATUS_INFINITE = 2u;
 static const uint AIRLIGHT_MAX_POWER = 1024u;
 static const uint AIRLIGHT_MAX_POWER_BITS = 11u;
 static const uint AIRLIGHT_E1_SERIES_TERMS = 13u;
+static const uint AIRLIGHT_EIN_DD_TERMS = 10u;
 static const float AIRLIGHT_E1_INV_RE = 0.7692308;
 static const float AIRLIGHT_E1_INV_IM = 0.47619048;
 static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
@@ -369,7 +370,7 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
         }
         loop_init_4 = false;
         uint _e17 = k_3;
-        if ((_e17 < AIRLIGHT_E1_SERIES_TERMS)) {
+        if ((_e17 < AIRLIGHT_EIN_DD_TERMS)) {
         } else {
             break;
         }

@@ -139,6 +139,7 @@ constant uint AIRLIGHT_STATUS_INFINITE = 2u;
 constant uint AIRLIGHT_MAX_POWER = 1024u;
 constant uint AIRLIGHT_MAX_POWER_BITS = 11u;
 constant uint AIRLIGHT_E1_SERIES_TERMS = 13u;
+constant uint AIRLIGHT_EIN_DD_TERMS = 10u;
 constant float AIRLIGHT_E1_INV_RE = 0.7692308;
 constant float AIRLIGHT_E1_INV_IM = 0.47619048;
 constant uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
@@ -510,7 +511,7 @@ metal::float2 airlight_ein_divided_difference(
         }
         loop_init_4 = false;
         uint _e17 = k_4;
-        if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
+        if (_e17 < AIRLIGHT_EIN_DD_TERMS) {
         } else {
             break;
         }

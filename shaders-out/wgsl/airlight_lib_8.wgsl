@@ -110,6 +110,7 @@ const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
 const AIRLIGHT_MAX_POWER: u32 = 1024u;
 const AIRLIGHT_MAX_POWER_BITS: u32 = 11u;
 const AIRLIGHT_E1_SERIES_TERMS: u32 = 13u;
+const AIRLIGHT_EIN_DD_TERMS: u32 = 10u;
 const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
@@ -387,7 +388,7 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
     let _e2 = airlight_ein_coefficients();
     loop {
         let _e17 = k_4;
-        if (_e17 < AIRLIGHT_E1_SERIES_TERMS) {
+        if (_e17 < AIRLIGHT_EIN_DD_TERMS) {
         } else {
             break;
         }

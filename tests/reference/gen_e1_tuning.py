@@ -21,6 +21,11 @@ not the float rounding the kernel's tests cover):
   * per series band: the same on the band's outer circle |z| = R and at 3/4 and 1/2 of it
     (32 angles each, points outside the ellipse skipped): the truncation, ~|z|^(n+1), is
     largest on the outer circle, and |E1| does not grow towards it faster than that;
+  * per divided-difference band (E1_DD_BANDS, R = the band's bound, 1 for the last): the fewest
+    terms n of (Ein(b) - Ein(a))/(b - a) = sum_k c_k h_(k-1)(a, b) with the bound on what is
+    dropped, sum_(k>n) R^(k-1)/k! (|c_k| = 1/(k k!), |h_(k-1)| <= k R^(k-1)), at most 8u of the
+    smallest |Ein'| = |(1 - e^-x)/x| on |x| = R (the value is Ein' averaged over the segment;
+    its minimum modulus on the disc is on the circle, 128 points);
   * per band: the smallest depth whose relative error is at most 8u over the band's inner
     edge (|z| = previous bound, or the ellipse for the first band; 48 angles in [0, pi/2],
     points inside the ellipse skipped), where the fraction converges slowest.
@@ -61,7 +66,7 @@ def committed():
             t = re.search(name + r": &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
             return [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", t.group(1))]
 
-        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"))
+        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"), table("E1_DD_BANDS"))
     return out
 
 
@@ -92,6 +97,18 @@ def cf_error(z, d):
     return abs(approx - exact) / abs(exact)
 
 
+def dd_terms(radius, unit):
+    """The fewest divided-difference terms for max(|a|, |b|) <= radius, and the bound's ratio."""
+    circle = [mp.mpc(radius * math.cos(th), radius * math.sin(th)) for th in (2 * math.pi * i / 128 for i in range(128))]
+    smallest = min(abs((1 - mp.exp(-x)) / x) for x in circle)
+    n = 1
+    while True:
+        dropped = mp.nsum(lambda k: mp.mpf(radius) ** (k - 1) / mp.factorial(k), [n + 1, mp.inf])
+        if dropped <= TOLERANCE * unit * smallest:
+            return n, dropped / smallest
+        n += 1
+
+
 def fewest(error, points, unit):
     """The smallest count (terms or depth) whose largest error over `points` is at most
     TOLERANCE units, and that error."""
@@ -111,7 +128,7 @@ def inside(z, ell):
 def main():
     mismatches = 0
     for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
-        ell, terms_now, series_now, bands_now = committed()[prec]
+        ell, terms_now, series_now, bands_now, dd_now = committed()[prec]
         a, b = ell
         boundary = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in (math.pi / 2 * i / 63 for i in range(64))]
         n, worst = fewest(series_error, boundary, unit)
@@ -130,6 +147,13 @@ def main():
             flag = "" if n == n_now else f"   <-- real.rs has {n_now}"
             mismatches += n != n_now
             print(f"{prec}: series for |z| < {bound:g}: {n} terms, truncation <= {float(worst) / unit:.2f} u{flag}")
+        for bound, n_now in dd_now:
+            radius = 1.0 if math.isinf(bound) else bound
+            n, ratio = dd_terms(radius, unit)
+            flag = "" if n == n_now else f"   <-- real.rs has {n_now}"
+            mismatches += n != n_now
+            edge = "<= 1 (the routine's domain)" if math.isinf(bound) else f"< {radius:g}"
+            print(f"{prec}: divided differences for max(|a|, |b|) {edge}: {n} terms, dropped <= {float(ratio) / unit:.2f} u of the value")
         inner = None
         for bound, depth_now in bands_now:
             angles = [math.pi / 2 * i / 47 for i in range(48)]

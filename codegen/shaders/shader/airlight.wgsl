@@ -57,8 +57,10 @@ const AIRLIGHT_MAX_POWER: u32 = @MAX_POWER@u;
 const AIRLIGHT_MAX_POWER_BITS: u32 = @MAX_POWER_BITS@u;
 
 // The exponential integrals' f32 tuning (kernel/src/real.rs): series terms inside the ellipse
-// (Re z·INV_RE)² + (Im z·INV_IM)² < 1, and the continued fraction's largest depth.
+// (Re z·INV_RE)² + (Im z·INV_IM)² < 1, the divided differences' terms for |a|, |b| ≤ 1, and the
+// continued fraction's largest depth.
 const AIRLIGHT_E1_SERIES_TERMS: u32 = @E1_SERIES_TERMS@u;
+const AIRLIGHT_EIN_DD_TERMS: u32 = @EIN_DD_TERMS@u;
 const AIRLIGHT_E1_INV_RE: f32 = @E1_INV_RE@;
 const AIRLIGHT_E1_INV_IM: f32 = @E1_INV_IM@;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = @E1_CF_MAX_DEPTH@u;
@@ -347,13 +349,14 @@ fn airlight_ein(z: vec2<f32>) -> vec2<f32> {
     return airlight_cmul(sum, z);
 }
 
-/// (Ein(b) − Ein(a))/(b − a) by divided differences, AIRLIGHT_E1_SERIES_TERMS terms.
+/// (Ein(b) − Ein(a))/(b − a) by divided differences, |a|, |b| ≤ 1: the kernel's count for its
+/// widest band (series.rs `ein_divided_difference`, real.rs `E1_DD_BANDS`), a constant bound.
 fn airlight_ein_divided_difference(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     let c = airlight_ein_coefficients();
     var h = vec2<f32>(1.0, 0.0);
     var a_pow = vec2<f32>(1.0, 0.0);
     var sum = vec2<f32>(0.0, 0.0);
-    for (var k = 0u; k < AIRLIGHT_E1_SERIES_TERMS; k++) {
+    for (var k = 0u; k < AIRLIGHT_EIN_DD_TERMS; k++) {
         sum += h * c[k];
         a_pow = airlight_cmul(a_pow, a);
         h = airlight_cmul(h, b) + a_pow;

@@ -192,6 +192,7 @@ impl Constants {
             ("@EN_AT_ZERO@", unrolled::en_scaled_at_zero(terms + 2)),
             ("@EN_RECURRENCES@", unrolled::en_scaled_recurrences(terms + 2)),
             ("@E1_SERIES_TERMS@", <f32 as Real>::E1_SERIES_TERMS.to_string()),
+            ("@EIN_DD_TERMS@", <f32 as Real>::E1_DD_BANDS.last().map_or(<f32 as Real>::E1_SERIES_TERMS, |b| b.1).to_string()),
             ("@EIN_COEFFS@", list(airlight::special::EIN_COEFFS[..<f32 as Real>::E1_SERIES_TERMS].iter().map(|&c| f(c)).collect())),
             ("@E1_CF_PLAIN_FROM@", airlight::special::PLAIN_FROM.to_string()),
             ("@E1_INV_RE@", f(1.0 / re)),

@@ -7,7 +7,7 @@
 //! `t = b − (n+1)²/t`, which roughly halves the depth needed for a given accuracy
 //! (measured against mpmath; see `Real::E1_CF_DEPTH`).
 
-use super::{cdiv, csqrt, C};
+use super::{banded, cdiv, csqrt, C};
 use crate::real::Real;
 
 /// `e^z E1(z)` by the continued fraction at the depth [`Real::E1_CF_DEPTH`] gives for `|z|`.
@@ -16,14 +16,7 @@ pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
     // |z|² against the squared band bounds (no square root needed).
     let (x, y) = (z.re.abs().to_f64_exact(), z.im.abs().to_f64_exact());
     let r2 = if x.max(y) < 1e150 { x * x + y * y } else { f64::INFINITY };
-    let mut depth = 0;
-    for &(bound, d) in T::E1_CF_DEPTH {
-        depth = d;
-        if r2 < bound * bound {
-            break;
-        }
-    }
-    e1_scaled_cf_depth(z, depth)
+    e1_scaled_cf_depth(z, banded(r2, T::E1_CF_DEPTH))
 }
 
 /// Depths from this on divide plainly (`e1_scaled_cf_depth`, private).

@@ -10,7 +10,7 @@
 use super::e1::in_series_region;
 use super::series::ein_real;
 use super::EULER_GAMMA;
-use super::C;
+use super::{banded, C};
 use crate::real::Real;
 
 /// Fills `out[k] = e^x E_{k+1}(x)` for `k = 0..out.len()`, `x ≥ 0`.
@@ -73,13 +73,7 @@ fn inverse<T: Real>(n: usize) -> T {
 /// converges slowest, so the table is conservative for `n > 1`).
 fn en_scaled_cf<T: Real>(x: T, n: usize) -> T {
     let xf = x.to_f64_exact();
-    let mut depth = 0;
-    for &(bound, d) in T::E1_CF_DEPTH {
-        depth = d;
-        if xf < bound {
-            break;
-        }
-    }
+    let depth = banded(xf * xf, T::E1_CF_DEPTH);
     let nf = T::from(n).unwrap();
     let two = T::lit(2.0);
     let m = T::from(depth).unwrap();

@@ -23,6 +23,20 @@ pub use e1::{e1, e1_scaled, ei, in_series_region};
 pub use en::en_scaled;
 pub use series::{ein, ein_divided_difference, ein_real, series_terms, EIN_COEFFS};
 
+/// The count of the first band `(bound, count)` with `|z| < bound`, given `|z|²` (the last
+/// band's for larger `|z|`, or a NaN): the iteration tables of [`crate::Real`].
+#[inline]
+pub(crate) fn banded(r2: f64, bands: &[(f64, usize)]) -> usize {
+    let mut count = 0;
+    for &(bound, n) in bands {
+        count = n;
+        if r2 < bound * bound {
+            break;
+        }
+    }
+    count
+}
+
 /// Euler–Mascheroni constant γ (A&S 6.1.3).
 pub const EULER_GAMMA: f64 = 0.577_215_664_901_532_860_606_512_090_082;
 
