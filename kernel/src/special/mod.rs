@@ -21,7 +21,7 @@ pub use complex::{cdiv, csqrt, C};
 pub use continued_fraction::{e1_scaled_cf, PLAIN_FROM};
 pub use e1::{e1, e1_scaled, ei, in_series_region};
 pub use en::en_scaled;
-pub use series::{ein, ein_divided_difference, ein_real, series_terms, EIN_COEFFS};
+pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
 
 /// The count of the first band `(bound, count)` with `|z| < bound`, given `|z|²` (the last
 /// band's for larger `|z|`, or a NaN): the iteration tables of [`crate::Real`].

@@ -18,7 +18,7 @@ pub fn ein<T: Real>(z: C<T>) -> C<T> {
 
 /// The series terms [`Real::E1_SERIES_BANDS`] gives at `z` (compared as `|z|²`, no square root).
 #[inline]
-pub fn series_terms<T: Real>(z: C<T>) -> usize {
+fn series_terms<T: Real>(z: C<T>) -> usize {
     banded(z.norm_sqr().to_f64_exact(), T::E1_SERIES_BANDS)
 }
 
