@@ -181,7 +181,7 @@ pub struct MediumJson {
 }
 
 /// `light`, by `shape`: a point light (`shape` absent or `"point"`), a segment light
-/// (`"segment"`, docs/DESIGN.md §10), or an area light (`"disc"`, `"rectangle"`, §12).
+/// (`"segment"`, docs/DESIGN.md §10), or an area light (`"disc"`, `"rectangle"`, `"sphere"`, §12).
 #[derive(Debug)]
 pub enum LightJson {
     /// A point light.
@@ -192,6 +192,8 @@ pub enum LightJson {
     Disc(DiscJson),
     /// A parallelogram of uniform radiance.
     Rectangle(RectangleJson),
+    /// A sphere of uniform radiance.
+    Sphere(SphereJson),
 }
 
 /// The fields of a disc light.
@@ -222,6 +224,17 @@ pub struct RectangleJson {
     pub radiance: f64,
 }
 
+/// The fields of a sphere light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SphereJson {
+    /// Centre.
+    pub center: [f64; 3],
+    /// Radius.
+    pub radius: f64,
+    /// Radiance of every point, outward.
+    pub radiance: f64,
+}
 
 /// The fields of a point light.
 #[derive(Debug, Deserialize)]
@@ -259,7 +272,8 @@ impl<'de> Deserialize<'de> for LightJson {
             "segment" => Self::Segment(fields(object)?),
             "disc" => Self::Disc(fields(object)?),
             "rectangle" => Self::Rectangle(fields(object)?),
-            _ => return Err(de::Error::unknown_variant(&shape, &["point", "segment", "disc", "rectangle"])),
+            "sphere" => Self::Sphere(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&shape, &["point", "segment", "disc", "rectangle", "sphere"])),
         })
     }
 }
@@ -516,6 +530,10 @@ impl SceneJson {
             }
             LightJson::Rectangle(l) => {
                 let emitter = Emitter::Rectangle { corner: vec3::<T>("light.corner", l.corner)?, edge_u: vec3::<T>("light.edge_u", l.edge_u)?, edge_v: vec3::<T>("light.edge_v", l.edge_v)? };
+                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+            }
+            LightJson::Sphere(l) => {
+                let emitter = Emitter::Sphere { center: vec3::<T>("light.center", l.center)?, radius: number("light.radius", l.radius)? };
                 area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
             }
         }

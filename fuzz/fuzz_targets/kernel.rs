@@ -1,6 +1,6 @@
 //! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
 //! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments, a segment
-//! light along the light's axis, a disc light and a fog-lit surface point (f64). Oracle: no panic; never NaN; never negative;
+//! light along the light's axis, a disc and a sphere light and a fog-lit surface point (f64). Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -92,7 +92,7 @@ fuzz_target!(|raw: Raw| {
     // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
     // zeros most inputs decode to), at tolerance 1e-3 (hundreds of point lights or rays
     // each): a disc of
-    // radius |w| at the light facing along its axis, and the ray's origin as a Lambertian
+    // radius |w| at the light facing along its axis, a sphere of that radius there, and the ray's origin as a Lambertian
     // surface facing along the ray: never NaN, never negative (+∞ only for the light on the
     // surface point, or a true value beyond the range)
     if !(raw.power == 18 && raw.phase == 5) {
@@ -102,6 +102,11 @@ fuzz_target!(|raw: Raw| {
     if let Ok(s) = AreaScene::new(r, AreaLight { emitter: disc, radiance: l.intensity }, m, p) {
         let x = s.in_scatter_counted(1e-3).0;
         assert!(!x.is_nan() && x >= 0.0, "f64/disc: {x} for {raw:?}");
+    }
+    let sphere = Emitter::Sphere { center: l.position, radius: raw.w.abs() };
+    if let Ok(s) = AreaScene::new(r, AreaLight { emitter: sphere, radiance: l.intensity }, m, p) {
+        let x = s.in_scatter_counted(1e-3).0;
+        assert!(!x.is_nan() && x >= 0.0, "f64/sphere: {x} for {raw:?}");
     }
     let surface = Surface { position: r.origin, normal: r.dir };
     if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, l, m, p) {

@@ -1,4 +1,4 @@
-//! Area lights: a disc and a parallelogram (rectangle) of uniform radiance, as the integral
+//! Area lights: a disc, a parallelogram (rectangle) and a sphere of uniform radiance, as the integral
 //! over the emitter of the point-light kernel (docs/DESIGN.md §12; Packard 2004
 //! integrates area lights over the emitter in the same way).
 //!
@@ -12,12 +12,16 @@
 //! within a quarter of the emitter's size from the ray (`ρ₀`: their distance; `dr/ρ` is then
 //! smooth in `w`); a rectangle as the triangles from `f` to its edges. All elements of a flat
 //! emitter share its plane, so the part of the ray each one lights is the same: `L_point` has
-//! no kinks over the emitter. Both levels are globally adaptive Gauss–Kronrod (QUADPACK's QAG,
+//! no kinks over the emitter. A sphere's elements light only what lies outside their tangent
+//! planes (nothing inside the sphere); it is taken in spherical coordinates about the point
+//! where the ray segment enters or leaves it (two hemispheres if it does both), or else about
+//! its point nearest the segment, the `β` integral split at the horizons of the segment's ends,
+//! where `L_point` has kinks (docs/DESIGN.md §12). Both levels are globally adaptive Gauss–Kronrod (QUADPACK's QAG,
 //! as [`crate::extended`]), the inner to a tenth of the outer tolerance, each point light to a
 //! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
 
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
-use crate::extended::{adaptive, inner_control, outer_rule, outer_tolerance, working_tolerance};
+use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{Lambertian, Omni};
 use crate::phase::PhaseFunction;
@@ -45,6 +49,14 @@ pub enum Emitter<T: Real> {
         edge_u: T::Vec3,
         /// The second edge from it (not parallel to the first).
         edge_v: T::Vec3,
+    },
+    /// A sphere emitting outward from every point of its surface (docs/DESIGN.md §12: zero on
+    /// the part of the ray inside it, which no element faces).
+    Sphere {
+        /// Centre.
+        center: T::Vec3,
+        /// Radius `≥ 0`.
+        radius: T,
     },
 }
 
@@ -82,7 +94,7 @@ where
     ///
     /// # Errors
     /// [`InputError`] naming the first invalid field: `light.center`, `light.normal` (also zero),
-    /// `light.radius` (negative or non-finite), `light.corner`, `light.edge_u`, `light.edge_v`
+    /// `light.radius` (negative or non-finite; a disc's or a sphere's), `light.corner`, `light.edge_u`, `light.edge_v`
     /// (also zero or parallel to `edge_u`), `light.radiance`, then the ray, medium and phase
     /// function as [`Scene::new`] names them.
     pub fn new(ray: Ray<T>, light: AreaLight<T>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
@@ -102,6 +114,11 @@ where
                     return Err(InputError::new("light.edge_v", ErrorKind::ZeroVector));
                 }
                 corner
+            }
+            Emitter::Sphere { center, radius } => {
+                check_vector(T::vec3_to_array(center), "light.center", false)?;
+                check_non_negative(radius, "light.radius")?;
+                center
             }
         };
         check_non_negative(light.radiance, "light.radiance")?;
@@ -269,8 +286,173 @@ where
                 let rho0 = length(sub(f, nearest(f)));
                 polar(rule, &mut point, f, n, a1, a2, &edges[..=count], &r_max, rho0, size, tolerance, inner_tolerance)
             }
+            Emitter::Sphere { center, radius } => {
+                if !(radius > T::zero()) {
+                    return (T::zero(), 0);
+                }
+                let c = T::vec3_to_array(center);
+                let sphere = Sphere { c, radius, o, d, t0, t1 };
+                match sphere.foci() {
+                    Foci::None => return (T::zero(), 0),
+                    Foci::One(a) => sphere.cap(rule, &mut point, a, None, tolerance, inner_tolerance),
+                    Foci::Two(entry, exit) => {
+                        // the hemispheres n·d ≤ 0 (the entry's) and n·d ≥ 0, each a cap about
+                        // its pierce point, each to the tolerance: their sum is within it
+                        sphere.cap(rule, &mut point, entry, Some(-T::one()), tolerance, inner_tolerance)
+                            + sphere.cap(rule, &mut point, exit, Some(T::one()), tolerance, inner_tolerance)
+                    }
+                }
+            }
         };
         (value, evaluated)
+    }
+}
+
+/// The sphere and the ray segment `o + t d`, `t ∈ [t0, t1]` (`d` a unit vector).
+struct Sphere<T> {
+    c: [T; 3],
+    radius: T,
+    o: [T; 3],
+    d: [T; 3],
+    t0: T,
+    t1: T,
+}
+
+/// Where the sphere's integral is centred (unit vectors from the centre).
+enum Foci<T> {
+    /// The segment lies inside the sphere: no element faces any of it.
+    None,
+    /// One pole: the point nearest the segment, or the one pierce point the segment holds.
+    One([T; 3]),
+    /// The segment enters and leaves the sphere: the entry and exit points.
+    Two([T; 3], [T; 3]),
+}
+
+impl<T: Real> Sphere<T> {
+    /// The poles of the spherical coordinates: where the ray segment meets the sphere, else
+    /// the direction of the segment's point nearest the centre. A ray that meets the sphere
+    /// within a thousandth of its radius of tangency has one pole (its two pierce points are
+    /// a thousandth of a radian from it).
+    fn foci(&self) -> Foci<T> {
+        let (o, d, c, radius) = (self.o, self.d, self.c, self.radius);
+        let tc = dot(sub(c, o), d);
+        let rho_c = length(sub(c, axpy(o, tc, d)));
+        let at = |t: T| normalize(sub(axpy(o, t, d), c));
+        if rho_c < radius {
+            let half = ((radius - rho_c) * (radius + rho_c)).sqrt();
+            let (t_in, t_out) = (tc - half, tc + half);
+            if t_in <= self.t0 && self.t1 <= t_out {
+                return Foci::None;
+            }
+            let (has_in, has_out) = (self.t0 < t_in && t_in < self.t1, self.t0 < t_out && t_out < self.t1);
+            if has_in && has_out && half > T::lit(1e-3) * radius {
+                return Foci::Two(at(t_in), at(t_out));
+            }
+            if has_in != has_out {
+                return Foci::One(at(if has_in { t_in } else { t_out }));
+            }
+        }
+        let nearest = tc.max(self.t0).min(self.t1);
+        let a = at(nearest);
+        // a segment through the centre (only when it also starts or ends there): any pole
+        if length(a) > T::zero() { Foci::One(a) } else { Foci::One(basis(d).0) }
+    }
+
+    /// `∫∫ point(c + R n, n) R² sin β dβ dψ` over the cap about the unit `a`: `n = cos β a +
+    /// sin β e_ψ`, `ψ ∈ [0, 2π]`, `β` from 0 to `π`, or, with `side = s`, to where `s n·d`
+    /// turns negative (`s a·d > 0`: the hemisphere holding `a`). `L_point` has kinks where
+    /// an element's tangent plane passes an end of the ray segment (`n·(x − c) = R`; the far
+    /// end of an infinite ray: `n·d = 0`): the `β` integral is split there. `β = (ρ₀/R) sinh
+    /// w` where the ray passes within a quarter radius of the pole (`ρ₀`), as [`polar`].
+    fn cap(
+        &self,
+        rule: &[(f64, f64, f64)],
+        point: &mut impl FnMut([T; 3], [T; 3]) -> T,
+        a: [T; 3],
+        side: Option<T>,
+        tolerance: T,
+        inner_tolerance: T,
+    ) -> T {
+        let (c, radius, d) = (self.c, self.radius, self.d);
+        let (b1, b2) = basis(a);
+        let pole = axpy(c, radius, a);
+        let t = dot(sub(pole, self.o), d).max(self.t0).min(self.t1);
+        let rho0 = length(sub(pole, axpy(self.o, t, d)));
+        let scale = if rho0 < radius * T::lit(0.25) { (rho0 / radius).max(T::epsilon()) } else { T::zero() };
+        let to_w = |beta: T| if scale > T::zero() { (beta / scale).asinh() } else { beta };
+        // the ends' horizons: a finite end x (offset p = x − c from the centre), the far end of
+        // an infinite ray as the direction d
+        let start = sub(axpy(self.o, self.t0, d), c);
+        let end = if self.t1.is_finite() { Some(sub(axpy(self.o, self.t1, d), c)) } else { None };
+        let two_pi = T::PI() + T::PI();
+        let mut outer = |psi: T| {
+            let (s, co) = psi.sin_cos();
+            let e: [T; 3] = core::array::from_fn(|i| co * b1[i] + s * b2[i]);
+            let beta_max = match side {
+                Some(sign) => (sign * dot(a, d)).atan2(-sign * dot(e, d)),
+                None => T::PI(),
+            };
+            // n(β)·p = A cos β + B sin β = |(A, B)| cos(β − φ), φ = atan2(B, A)
+            let mut cuts = [T::infinity(); 4];
+            let mut crossing = |p: [T; 3], level: T, slot: usize| {
+                let (big_a, big_b) = (dot(a, p), dot(e, p));
+                let norm = big_a.hypot(big_b);
+                if norm > level {
+                    let (phi, delta) = (big_b.atan2(big_a), (level / norm).acos());
+                    for (k, beta) in [phi - delta, phi + delta].into_iter().enumerate() {
+                        // into (−π, π]: β ∈ [0, π] is where the half great circle runs
+                        let beta = if beta > T::PI() { beta - two_pi } else if beta <= -T::PI() { beta + two_pi } else { beta };
+                        if beta > T::zero() && beta < beta_max {
+                            cuts[slot + k] = to_w(beta);
+                        }
+                    }
+                }
+            };
+            crossing(start, radius, 0);
+            match end {
+                Some(p) => crossing(p, radius, 2),
+                None => crossing(d, T::zero(), 2),
+            }
+            let (edges, n): ([T; 6], usize) = edges_between(T::zero(), to_w(beta_max), &mut cuts);
+            let mut radial = |w: T| {
+                let (beta, dbeta) = if scale > T::zero() { (scale * w.sinh(), scale * w.cosh()) } else { (w, T::one()) };
+                let (sb, cb) = beta.sin_cos();
+                let n: [T; 3] = core::array::from_fn(|i| cb * a[i] + sb * e[i]);
+                point(axpy(c, radius, n), n) * radius * radius * sb * dbeta
+            };
+            adaptive(rule, &mut radial, &edges[..=n], inner_tolerance, MAX_AREA_PANELS).0
+        };
+        // knots: the quarters, and the meridians where a horizon's crossing appears or swings
+        // fast (a singularity of the ψ integrand): for a finite end, with `A = a·p` and `p⊥`
+        // the rest of `p`, where the horizon touches the meridian (`e_ψ·p = √(R² − A²)`, for
+        // `|A| < R`), or `ψ_p ± π/2` where the horizon passes within a quarter radius of a
+        // pole (`R ≤ |A| < 1.25 R`); for the far end of an infinite ray, whose horizon is the
+        // great circle `n·d = 0`, `ψ_d ± π/2` where it passes near the poles (`|a·d| < 1/4`; at
+        // `a·d = 0` it is those two meridians)
+        let quarter = T::FRAC_PI_2();
+        let mut cuts = [quarter, T::PI(), T::PI() + quarter, T::infinity(), T::infinity(), T::infinity(), T::infinity()];
+        let near = radius * T::lit(1.25);
+        let horizons = [(start, radius, near), end.map_or((d, T::zero(), T::lit(0.25)), |p| (p, radius, near))];
+        for (slot, (p, level, near)) in horizons.into_iter().enumerate() {
+            let big_a = dot(a, p).abs();
+            let (p1, p2) = (dot(b1, p), dot(b2, p));
+            let across = p1.hypot(p2);
+            let touch = ((level - big_a).max(T::zero()) * (level + big_a)).sqrt();
+            let delta = if big_a < level && touch < across {
+                (touch / across).acos()
+            } else if big_a >= level && big_a < near {
+                quarter
+            } else {
+                continue;
+            };
+            let psi_p = p2.atan2(p1);
+            for (k, psi) in [psi_p - delta, psi_p + delta].into_iter().enumerate() {
+                // into [0, 2π)
+                cuts[3 + 2 * slot + k] = psi - two_pi * (psi / two_pi).floor();
+            }
+        }
+        let (knots, n): ([T; 9], usize) = edges_between(T::zero(), two_pi, &mut cuts);
+        adaptive(rule, &mut outer, &knots[..=n], tolerance, MAX_AREA_PANELS).0
     }
 }
 

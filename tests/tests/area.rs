@@ -70,6 +70,49 @@ fn small_disc_is_the_lambertian_point_light() {
     }
 }
 
+/// A sphere of radius `r` and radiance `L_e` sheds `π r² L_e` in every direction: the isotropic
+/// point light of that intensity at its centre, but the half it shows is nearer the ray, on
+/// average by `(2/3) r` (`∫ cos² dΩ / ∫ cos dΩ` over a hemisphere), so attenuation gives the
+/// first-order excess `(2/3) σt r`; the other first-order terms (the nearer half's larger
+/// `1/d²`, the spread of directions) cancel by the sphere's symmetry, leaving `O(r²/d²)`
+/// (`d ≥ 2.6` here) and `O((σt r)²)`.
+#[test]
+fn small_sphere_is_the_isotropic_point_light() {
+    let (center, radiance) = (DVec3::new(6.0, 2.5, -1.0), 3.0);
+    for r in [1e-2f64, 1e-3] {
+        let sphere = AreaScene::new(ray(), AreaLight { emitter: Emitter::Sphere { center, radius: r }, radiance }, medium(), phase()).unwrap().in_scatter();
+        let light = PointLight { position: center, intensity: radiance * std::f64::consts::PI * r * r, distribution: airlight::light::Omni };
+        let point = Scene::new(ray(), light, medium(), phase()).unwrap().in_scatter();
+        let first_order = point * (1.0 + 2.0 / 3.0 * medium().sigma_t * r);
+        assert!((sphere - first_order).abs() <= 0.2 * r * r * point, "radius {r}: sphere {sphere} vs point light {point} (to first order {first_order})");
+        // and the excess is there: without it the difference is the first-order term itself
+        assert!((sphere - point).abs() > 0.5 * (2.0 / 3.0 * medium().sigma_t * r) * point, "radius {r}: no attenuation excess");
+    }
+}
+
+/// No element of a sphere faces a point inside it: a segment inside sees nothing, and one that
+/// starts inside sees what the part after the exit sees, attenuated by the path to the exit
+/// (computed about another pole: the exit point is inside the segment in one case, its start in
+/// the other).
+#[test]
+fn sphere_interior_is_dark() {
+    let (center, radius) = (DVec3::new(5.0, 0.6, 0.2), 1.5);
+    let light = AreaLight { emitter: Emitter::Sphere { center, radius }, radiance: 2.0 };
+    let dir = DVec3::new(1.0, 0.1, -0.05).normalize();
+    let origin = center - dir * 0.4 + DVec3::new(0.0, 0.3, 0.1);
+    // the exit: |origin + t dir − center| = radius
+    let w = origin - center;
+    let (b, c) = (w.dot(dir), w.length_squared() - radius * radius);
+    let t_out = -b + (b * b - c).sqrt();
+    let scene = |t_min, t_max| AreaScene::new(Ray { origin, dir, t_min, t_max }, light, medium(), phase()).unwrap().in_scatter();
+    assert_eq!(scene(0.0, 0.9 * t_out), 0.0, "a segment inside the sphere");
+    for t_max in [t_out + 4.0, f64::INFINITY] {
+        let (from_inside, from_exit) = (scene(0.0, t_max), scene(t_out, t_max) * (-medium().sigma_t * t_out).exp());
+        assert!(from_exit > 0.0);
+        assert!((from_inside - from_exit).abs() <= 1e-9 * from_exit, "t_max {t_max}: from inside {from_inside} vs from the exit {from_exit}");
+    }
+}
+
 /// A rectangle is the sum of its two halves (cut across `edge_u`), here pierced by the ray: each
 /// half has its own focus and triangles.
 #[test]
@@ -108,7 +151,10 @@ fn area_record_errors() {
         (r#"{"shape": "rectangle", "corner": [1,1,0], "edge_u": [1,0,0], "edge_v": [2,0,0], "radiance": 1}"#, "light.edge_v"),
         (r#"{"shape": "rectangle", "corner": [1,1,0], "edge_u": [1,0,0], "edge_v": [0,0,1], "radiance": -2}"#, "light.radiance"),
         (r#"{"shape": "disc", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1, "intensity": 3}"#, "light.intensity"),
-        (r#"{"shape": "sphere", "center": [1,1,0], "radius": 1, "radiance": 1}"#, "light.shape"),
+        (r#"{"shape": "sphere", "center": [1,1,0], "radius": -1, "radiance": 1}"#, "light.radius"),
+        (r#"{"shape": "sphere", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1}"#, "light.normal"),
+        (r#"{"shape": "sphere", "center": [1,1,0], "radius": 1, "radiance": -1}"#, "light.radiance"),
+        (r#"{"shape": "cylinder", "center": [1,1,0], "radius": 1, "radiance": 1}"#, "light.shape"),
     ] {
         let (_, r) = parse_line_with_id::<f64>(&base.replace("LIGHT", light));
         let e = r.err().unwrap_or_else(|| panic!("{light} accepted"));
