@@ -173,7 +173,7 @@ impl<R: BufRead> Lines<R> {
 /// the same error lines), the valid ones are packed and run through the compute shader in
 /// one batch after the input ends.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
-    use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    use airlight_shaders::layout::{pack, pack_segment, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
     // per input line: its "id" and its error line, or a packed record
     let mut lines: Vec<(Option<serde_json::Value>, Result<(), String>)> = Vec::new();
     let mut records = Vec::new();
@@ -184,11 +184,12 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
                 lines.push((id, Ok(())));
             }
-            Ok((id, Ok(AnyRecord::Segment(_)))) => {
-                lines.push((id, Err(format_error(n, "light.shape: segment lights are evaluated on the CPU backend (the shader library has point lights)"))))
+            Ok((id, Ok(AnyRecord::Segment(r)))) => {
+                records.extend_from_slice(&pack_segment(&r));
+                lines.push((id, Ok(())));
             }
             Ok((id, Ok(AnyRecord::Area(_)))) => {
-                lines.push((id, Err(format_error(n, "light.shape: area lights are evaluated on the CPU backend (the shader library has point lights)"))))
+                lines.push((id, Err(format_error(n, "light.shape: area lights are evaluated on the CPU backend (the shader library has point and segment lights)"))))
             }
             Ok((id, Ok(AnyRecord::Surface(_)))) => {
                 lines.push((id, Err(format_error(n, "surface: surface records are evaluated on the CPU backend (the shader library has rays)"))))

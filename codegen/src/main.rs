@@ -60,11 +60,12 @@ Record: {\"ray\": {\"origin\": [x,y,z], \"dir\": [x,y,z], \"t_min\": 0, \"t_max\
 t_max null or absent means +infinity, t_min absent 0, distribution absent isotropic, phase
 absent isotropic. Any other key is an error (with a suggestion when it is close to a known one).
 `dir` need not be unit length (it is normalised); t_min and t_max are world distances.
-A segment light (CPU backend, default path): \"light\": {\"shape\": \"segment\", \"a\": [x,y,z],
+A segment light (CPU default path, or --backend gpu): \"light\": {\"shape\": \"segment\", \"a\": [x,y,z],
 \"b\": [x,y,z], \"intensity\": I, \"distribution\": {...}}, every point emitting I per unit length.
 Area lights of uniform radiance L (CPU backend): \"light\": {\"shape\": \"disc\", \"center\": [x,y,z],
 \"normal\": [x,y,z], \"radius\": R, \"radiance\": L} or {\"shape\": \"rectangle\", \"corner\": [x,y,z],
-\"edge_u\": [x,y,z], \"edge_v\": [x,y,z], \"radiance\": L} (emitting on the side of edge_u x edge_v).
+\"edge_u\": [x,y,z], \"edge_v\": [x,y,z], \"radiance\": L} (emitting on the side of edge_u x edge_v)
+or {\"shape\": \"sphere\", \"center\": [x,y,z], \"radius\": R, \"radiance\": L}.
 A surface point (CPU backend), in place of the ray: \"surface\": {\"position\": [x,y,z],
 \"normal\": [x,y,z], \"brdf\": {\"kind\": \"lambert\", \"albedo\": a} | {\"kind\": \"phong\", \"k_s\": k,
 \"exponent\": n, \"view\": [x,y,z]}} -> {\"surface_air_light\": L}: the air-light reflected towards

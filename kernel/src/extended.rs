@@ -85,6 +85,13 @@ pub struct SegmentLight<T: Real, D> {
 /// The most Gauss–Kronrod panels of one segment light (each 15 point-light evaluations).
 pub const MAX_SEGMENT_PANELS: usize = 48;
 
+/// The most Gauss–Kronrod panels of one segment light in the shaders
+/// ([`SegmentScene::in_scatter_panels_counted`]; `7·(2·6 − 1) = 77` point lights at most):
+/// within 2.4e-6 of the mpmath values of tests/reference/extended.jsonl in f32 (4 panels:
+/// 1.6e-3), and few enough loop iterations for Mesa's lavapipe, which ends all loops of an
+/// invocation after 65 535 (codegen/shaders/shader/airlight.wgsl).
+pub const SHADER_SEGMENT_PANELS: usize = 6;
+
 /// The default relative tolerance of the outer integral's estimate of every integral over an
 /// emitter or a hemisphere (segment, area and surface lights; `|K − G|` summed over the panels,
 /// itself far above the Kronrod sum's error on a resolved panel): a tenth of the precision's
@@ -194,6 +201,20 @@ where
     /// [`Real::PANEL_TOLERANCE`], the point lights' own), and the panels evaluated.
     pub fn in_scatter_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
+        let inner = inner_control(tolerance);
+        self.integrate(tolerance, MAX_SEGMENT_PANELS, |scene| scene.in_scatter_controlled(inner).0)
+    }
+
+    /// What the shaders compute (fixed cost): the outer rule of [`outer_rule`] to
+    /// `control.tolerance`, at most `max_panels` panels (the shaders:
+    /// [`SHADER_SEGMENT_PANELS`]), every point light as
+    /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the panels evaluated.
+    pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
+        self.integrate(control.tolerance, max_panels, |scene| scene.in_scatter_panels::<N>(control))
+    }
+
+    /// `∫ L_point ds` by the outer rule to `tolerance`, each point light by `point`.
+    fn integrate(&self, tolerance: T, max_panels: usize, point_light: impl Fn(&Scene<T, D, P>) -> T) -> (T, usize) {
         let a = T::vec3_to_array(self.light.a);
         let ab = sub(T::vec3_to_array(self.light.b), a);
         let len = length(ab);
@@ -228,13 +249,12 @@ where
             scale = T::zero();
         }
         let to_w = |s: T| if scale > T::zero() { ((s - s_star) / scale).asinh() } else { s };
-        let inner = inner_control(tolerance);
         let mut point = |w: T| {
             let (s, ds) = if scale > T::zero() { (s_star + scale * w.sinh(), scale * w.cosh()) } else { (w, T::one()) };
             let position = T::vec3_from_array([a[0] + s * e[0], a[1] + s * e[1], a[2] + s * e[2]]);
             let light = PointLight { position, intensity: self.light.intensity, distribution: self.light.distribution.clone() };
             match Scene::new(self.ray, light, self.medium, self.phase.clone()) {
-                Ok(scene) => scene.in_scatter_controlled(inner).0 * ds,
+                Ok(scene) => point_light(&scene) * ds,
                 Err(_) => T::zero(),
             }
         };
@@ -248,7 +268,7 @@ where
             }
         }
         let (edges, n): ([T; 5], usize) = edges_between(w_lo, w_hi, &mut cuts);
-        adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, MAX_SEGMENT_PANELS)
+        adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, max_panels)
     }
 }
 

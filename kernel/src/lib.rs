@@ -71,7 +71,7 @@ pub use glam;
 pub use area::{AreaLight, AreaScene, Emitter};
 pub use error::{ErrorKind, InputError};
 pub use expansion::Expansion;
-pub use extended::{SegmentLight, SegmentScene};
+pub use extended::{SegmentLight, SegmentScene, SHADER_SEGMENT_PANELS};
 pub use light::LightDistribution;
 pub use phase::PhaseFunction;
 pub use precision::{f32, f64};

@@ -23,6 +23,8 @@ struct AirlightScene {
     uint light_kind;
     uint phase_kind;
     uint flags;
+    vec3 light_end;
+    uint light_shape;
 };
 struct AirlightResult {
     float in_scatter;
@@ -52,6 +54,28 @@ struct AirlightPanel {
     float mass_over;
     float f_max;
 };
+struct AirlightPanelList {
+    vec4 panel_a;
+    vec4 panel_b;
+    vec4 panel_c;
+    vec4 panel_d;
+    vec4 panel_e;
+    vec4 panel_f;
+};
+struct AirlightListScan {
+    float total;
+    float errors;
+    uint worst;
+};
+struct AirlightSegment {
+    vec3 a;
+    vec3 e;
+    float s_star;
+    float scale;
+    float edges[5];
+    uint panels;
+    uint outcome;
+};
 const uint AIRLIGHT_TERMS = 12u;
 const uint AIRLIGHT_HALF_TERMS = 6u;
 const float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -75,6 +99,8 @@ const uint AIRLIGHT_PHASE_TWO_LOBE_HG = 5u;
 const uint AIRLIGHT_LIGHT_OMNI = 0u;
 const uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 const uint AIRLIGHT_LIGHT_SPOT = 2u;
+const uint AIRLIGHT_SHAPE_POINT = 0u;
+const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
 const uint AIRLIGHT_STATUS_OK = 0u;
 const uint AIRLIGHT_STATUS_INVALID = 1u;
 const uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -86,10 +112,12 @@ const float AIRLIGHT_E1_INV_RE = 0.7692308;
 const float AIRLIGHT_E1_INV_IM = 0.47619048;
 const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
+const uint AIRLIGHT_SEGMENT_PANELS = 6u;
+const uint AIRLIGHT_SEGMENT_EVALUATIONS = 11u;
 
-layout(std430, binding = 0) readonly buffer type_15_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_19_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_16_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_20_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
 
 
 float[12] airlight_zero_terms() {
@@ -106,13 +134,13 @@ vec2 airlight_cmul(vec2 a, vec2 b) {
 
 vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_2 = (b_1.y / b_1.x);
-        float inv = (1.0 / (b_1.x + (b_1.y * r_2)));
-        return vec2(((a_1.x + (a_1.y * r_2)) * inv), ((a_1.y - (a_1.x * r_2)) * inv));
+        float r_5 = (b_1.y / b_1.x);
+        float inv = (1.0 / (b_1.x + (b_1.y * r_5)));
+        return vec2(((a_1.x + (a_1.y * r_5)) * inv), ((a_1.y - (a_1.x * r_5)) * inv));
     }
-    float r_3 = (b_1.x / b_1.y);
-    float inv_1 = (1.0 / ((b_1.x * r_3) + b_1.y));
-    return vec2((((a_1.x * r_3) + a_1.y) * inv_1), (((a_1.y * r_3) - a_1.x) * inv_1));
+    float r_6 = (b_1.x / b_1.y);
+    float inv_1 = (1.0 / ((b_1.x * r_6) + b_1.y));
+    return vec2((((a_1.x * r_6) + a_1.y) * inv_1), (((a_1.y * r_6) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(vec2 z) {
@@ -164,7 +192,7 @@ vec2 airlight_cos_sin(float x) {
         }
         {
             uint _e12 = k;
-            uint n_1 = (8u - _e12);
+            uint n_2 = (8u - _e12);
             float _e14 = c;
             c = (_e14 * z_8);
             float _e16 = s;
@@ -179,7 +207,7 @@ vec2 airlight_cos_sin(float x) {
                 }
                 loop_init_1 = false;
                 uint _e22 = j;
-                if ((_e22 <= (2u * n_1))) {
+                if ((_e22 <= (2u * n_2))) {
                 } else {
                     break;
                 }
@@ -189,13 +217,13 @@ vec2 airlight_cos_sin(float x) {
                     fc = (_e26 * float(_e27));
                 }
             }
-            float sign_ = (((n_1 & 1u) == 1u) ? -1.0 : 1.0);
+            float sign_ = (((n_2 & 1u) == 1u) ? -1.0 : 1.0);
             float _e40 = c;
             float _e41 = fc;
             c = (_e40 + (sign_ / _e41));
             float _e44 = s;
             float _e45 = fc;
-            s = (_e44 + (sign_ / (_e45 * float(((2u * n_1) + 1u)))));
+            s = (_e44 + (sign_ / (_e45 * float(((2u * n_2) + 1u)))));
         }
     }
     float _e57 = c;
@@ -249,8 +277,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_16 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_16 * s_16);
+    float s_18 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_18 * s_18);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -270,7 +298,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_16) * _e35);
+    return ((2.0 * s_18) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -342,9 +370,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_12 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_11 * x_11) + (y_3 * y_3)) < 1.0);
+    return (((x_12 * x_12) + (y_3 * y_3)) < 1.0);
 }
 
 uint airlight_cf_depth(float r) {
@@ -417,8 +445,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    vec2 b_12 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_12);
+    vec2 b_13 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_13);
     vec2 _e33 = airlight_cmul(_e29, _e29);
     vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
     root = _e35;
@@ -428,7 +456,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         root = -(_e41);
     }
     vec2 _e46 = root;
-    vec2 _e48 = airlight_cmul(b_12, (vec2(1.0, 0.0) + _e46));
+    vec2 _e48 = airlight_cmul(b_13, (vec2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     bool loop_init_5 = true;
     while(true) {
@@ -492,12 +520,12 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint _e2 = airlight_cf_depth(x_4);
     float nf_1 = float(n);
     float m_5 = float(_e2);
-    float b_13 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
-    float a_16 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
-    float disc = (1.0 - ((4.0 * a_16) / (b_13 * b_13)));
-    t_2 = b_13;
+    float b_14 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
+    float a_17 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
+    float disc = (1.0 - ((4.0 * a_17) / (b_14 * b_14)));
+    t_2 = b_14;
     if ((disc > 0.0)) {
-        t_2 = ((b_13 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
     bool loop_init_6 = true;
     while(true) {
@@ -672,11 +700,11 @@ float[14] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g, float om, float op) {
     if ((g >= 0.0)) {
-        float a_17 = (1.0 - g);
-        return ((om * (g + g)) + (a_17 * a_17));
+        float a_18 = (1.0 - g);
+        return ((om * (g + g)) + (a_18 * a_18));
     }
-    float b_14 = (1.0 + g);
-    return ((op * -((g + g))) + (b_14 * b_14));
+    float b_15 = (1.0 + g);
+    return ((op * -((g + g))) + (b_15 * b_15));
 }
 
 float airlight_hg(float g_1, float om_1, float op_1) {
@@ -770,8 +798,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_12 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_12 * x_12) * (3.0 - (2.0 * x_12)));
+            float x_13 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_13 * x_13) * (3.0 - (2.0 * x_13)));
         }
         default: {
             return 1.0;
@@ -893,10 +921,10 @@ float airlight_q_zero(AirlightHalf half_1) {
             float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
             d_im = _e48;
             float _e50 = v_e;
-            float x_13 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e57 = airlight_is_finite(x_13);
+            float x_14 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e57 = airlight_is_finite(x_14);
             if (_e57) {
-                float _e58 = airlight_log1p(x_13);
+                float _e58 = airlight_log1p(x_14);
                 d_re = (0.5 * _e58);
             } else {
                 float _e63 = v_e;
@@ -984,8 +1012,8 @@ vec2[6] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[6], uint i_3) {
-    float x_14 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_14) : x_14);
+    float x_15 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_15) : x_15);
 }
 
 float[12] airlight_legendre(float g_4[12]) {
@@ -1616,8 +1644,8 @@ float airlight_factor(AirlightHalf half_3, float a_4, float b_3) {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     float _e13 = offset;
-    float x_15 = (half_3.big_h * _e13);
-    return ((x_15 > 0.0) ? exp(-(x_15)) : 1.0);
+    float x_16 = (half_3.big_h * _e13);
+    return ((x_16 > 0.0) ? exp(-(x_16)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -1661,8 +1689,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
             float _e38 = r_1;
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
-            float v_5 = (_e37 + (_e38 * _e40));
-            vec2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_5);
+            float v_6 = (_e37 + (_e38 * _e40));
+            vec2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1731,8 +1759,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     uint i_8 = 0u;
     float m_2[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 _e6[6] = airlight_gauss_rule();
-    float r_4 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_4);
+    float r_7 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_7);
     float _e11[12] = airlight_zero_terms();
     samples_1 = _e11;
     bool loop_init_13 = true;
@@ -1750,8 +1778,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
         {
             uint _e26 = i_8;
             float _e27 = airlight_node(_e6, _e26);
-            float y_5 = (yc_1 + (r_4 * _e27));
-            float weight = exp(((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5)));
+            float y_5 = (yc_1 + (r_7 * _e27));
+            float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5)));
             float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_8;
@@ -1773,7 +1801,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     float _e79[12] = samples_1;
     float _e80[12] = airlight_legendre(_e79);
     float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e81 * r_4);
+    float w_1 = (_e81 * r_7);
     float _e83[12] = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2.0;
@@ -1900,8 +1928,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     float spread = 0.0;
     float next = 0.0;
     vec2 _e6[6] = airlight_gauss_rule();
-    float r_5 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_5);
+    float r_8 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_8);
     float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
     bool loop_init_14 = true;
@@ -1919,7 +1947,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_6 = (yc_2 + (r_5 * _e23));
+            float y_6 = (yc_2 + (r_8 * _e23));
             float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
@@ -1934,8 +1962,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     }
     float _e53[12] = samples_2;
     float _e54[12] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_5);
-    float beta = (-(yc_2) / r_5);
+    float alpha = (b_6 / r_8);
+    float beta = (-(yc_2) / r_8);
     float _e58[12] = airlight_legendre_to_monomial(_e54);
     float _e59[12] = airlight_zero_terms();
     q = _e59;
@@ -2229,13 +2257,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     float _e936 = airlight_factor(half_6, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_16 = (abs(alpha) + abs(beta));
+    float x_17 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_16) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_17) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2245,7 +2273,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_16) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_17) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2255,7 +2283,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_16) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_17) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2265,7 +2293,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_16) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_17) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2275,7 +2303,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_16) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_17) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2285,7 +2313,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_16) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_17) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2295,7 +2323,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_16) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_17) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2305,7 +2333,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_16) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_17) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2315,7 +2343,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_16) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_17) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2325,7 +2353,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_16) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_17) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2335,7 +2363,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_16) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_17) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2345,7 +2373,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_16) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_17) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -2616,9 +2644,9 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4) {
     float a0_ = (k_4 + (sigma_7 * d_el));
     float b0_ = -((d_c + d_c));
     float c0_ = (k_4 - (sigma_7 * d_el));
-    float scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if (!(!((scale > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale);
+    float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if (!(!((scale_1 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_1);
         local_16 = !(_e21);
     } else {
         local_16 = true;
@@ -2627,23 +2655,23 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4) {
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
-    float a_18 = (a0_ / scale);
-    float b_15 = (b0_ / scale);
-    float c_7 = (c0_ / scale);
-    float disc_1 = ((b_15 * b_15) - ((4.0 * a_18) * c_7));
+    float a_19 = (a0_ / scale_1);
+    float b_16 = (b0_ / scale_1);
+    float c_7 = (c0_ / scale_1);
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_19) * c_7));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
-    if ((b_15 < 0.0)) {
+    if ((b_16 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_2 = (-0.5 * (b_15 + (_e47 * sqrt(disc_1))));
+    float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_2 != 0.0)) {
         r1_ = (c_7 / q_2);
     }
-    if ((a_18 != 0.0)) {
-        r2_2 = (q_2 / a_18);
+    if ((a_19 != 0.0)) {
+        r2_2 = (q_2 / a_19);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -2943,7 +2971,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     AirlightHalf half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_12);
-    float j_4 = (_e54 * _e55);
+    float j_5 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
@@ -2953,15 +2981,15 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_4);
+    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
 float airlight_cut_length(float big_h_2, float v_s) {
     float inv_h = (1.0 / big_h_2);
     float w_2 = (v_s + inv_h);
-    float r_6 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_6) / (0.000100000005 * 0.0001))));
+    float r_9 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_9) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 
@@ -3331,6 +3359,7 @@ bool airlight_valid(AirlightScene s_12) {
     bool local_73 = false;
     bool local_74 = false;
     bool local_75 = false;
+    bool local_76 = false;
     bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_12.dir);
@@ -3417,77 +3446,92 @@ bool airlight_valid(AirlightScene s_12) {
         bool _e85 = local_60;
         ok = _e85;
     }
-    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_12.light_axis);
+            bool _e93 = airlight_vec_finite(s_12.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
         }
         bool _e95 = local_61;
-        if (_e95) {
-            bool _e99 = airlight_normalisable(s_12.light_axis);
-            local_62 = _e99;
+        ok = _e95;
+    } else {
+        if ((s_12.light_shape != AIRLIGHT_SHAPE_POINT)) {
+            ok = false;
+        }
+    }
+    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e103 = ok;
+        if (_e103) {
+            bool _e107 = airlight_vec_finite(s_12.light_axis);
+            local_62 = _e107;
         } else {
             local_62 = false;
         }
-        bool _e101 = local_62;
-        if (_e101) {
-            local_63 = (s_12.light_param_a >= 0.0);
+        bool _e109 = local_62;
+        if (_e109) {
+            bool _e113 = airlight_normalisable(s_12.light_axis);
+            local_63 = _e113;
         } else {
             local_63 = false;
         }
-        bool _e108 = local_63;
-        if (_e108) {
-            local_64 = (s_12.light_param_a <= 1024.0);
+        bool _e115 = local_63;
+        if (_e115) {
+            local_64 = (s_12.light_param_a >= 0.0);
         } else {
             local_64 = false;
         }
-        bool _e115 = local_64;
-        if (_e115) {
-            local_65 = (fract((s_12.light_param_a * 0.5)) == 0.0);
+        bool _e122 = local_64;
+        if (_e122) {
+            local_65 = (s_12.light_param_a <= 1024.0);
         } else {
             local_65 = false;
         }
-        bool _e125 = local_65;
-        ok = _e125;
+        bool _e129 = local_65;
+        if (_e129) {
+            local_66 = (fract((s_12.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_66 = false;
+        }
+        bool _e139 = local_66;
+        ok = _e139;
     } else {
         if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e129 = ok;
-            if (_e129) {
-                bool _e133 = airlight_vec_finite(s_12.light_axis);
-                local_66 = _e133;
-            } else {
-                local_66 = false;
-            }
-            bool _e135 = local_66;
-            if (_e135) {
-                bool _e139 = airlight_normalisable(s_12.light_axis);
-                local_67 = _e139;
+            bool _e143 = ok;
+            if (_e143) {
+                bool _e147 = airlight_vec_finite(s_12.light_axis);
+                local_67 = _e147;
             } else {
                 local_67 = false;
             }
-            bool _e141 = local_67;
-            if (_e141) {
-                local_68 = (s_12.light_param_b < s_12.light_param_a);
+            bool _e149 = local_67;
+            if (_e149) {
+                bool _e153 = airlight_normalisable(s_12.light_axis);
+                local_68 = _e153;
             } else {
                 local_68 = false;
             }
-            bool _e148 = local_68;
-            if (_e148) {
-                local_69 = (s_12.light_param_b >= -1.0);
+            bool _e155 = local_68;
+            if (_e155) {
+                local_69 = (s_12.light_param_b < s_12.light_param_a);
             } else {
                 local_69 = false;
             }
-            bool _e155 = local_69;
-            if (_e155) {
-                local_70 = (s_12.light_param_a <= 1.0);
+            bool _e162 = local_69;
+            if (_e162) {
+                local_70 = (s_12.light_param_b >= -1.0);
             } else {
                 local_70 = false;
             }
-            bool _e162 = local_70;
-            ok = _e162;
+            bool _e169 = local_70;
+            if (_e169) {
+                local_71 = (s_12.light_param_a <= 1.0);
+            } else {
+                local_71 = false;
+            }
+            bool _e176 = local_71;
+            ok = _e176;
         } else {
             if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -3503,43 +3547,43 @@ bool airlight_valid(AirlightScene s_12) {
         case 2u:
         case 3u:
         case 4u: {
-            bool _e172 = ok;
-            if (_e172) {
-                local_71 = g_ok;
-            } else {
-                local_71 = false;
-            }
-            bool _e176 = local_71;
-            ok = _e176;
-            break;
-        }
-        case 5u: {
-            bool _e177 = ok;
-            if (_e177) {
+            bool _e186 = ok;
+            if (_e186) {
                 local_72 = g_ok;
             } else {
                 local_72 = false;
             }
-            bool _e181 = local_72;
-            if (_e181) {
-                local_73 = (abs(s_12.phase_param_b) < 1.0);
+            bool _e190 = local_72;
+            ok = _e190;
+            break;
+        }
+        case 5u: {
+            bool _e191 = ok;
+            if (_e191) {
+                local_73 = g_ok;
             } else {
                 local_73 = false;
             }
-            bool _e189 = local_73;
-            if (_e189) {
-                local_74 = (s_12.phase_param_c >= 0.0);
+            bool _e195 = local_73;
+            if (_e195) {
+                local_74 = (abs(s_12.phase_param_b) < 1.0);
             } else {
                 local_74 = false;
             }
-            bool _e196 = local_74;
-            if (_e196) {
-                local_75 = (s_12.phase_param_c <= 1.0);
+            bool _e203 = local_74;
+            if (_e203) {
+                local_75 = (s_12.phase_param_c >= 0.0);
             } else {
                 local_75 = false;
             }
-            bool _e203 = local_75;
-            ok = _e203;
+            bool _e210 = local_75;
+            if (_e210) {
+                local_76 = (s_12.phase_param_c <= 1.0);
+            } else {
+                local_76 = false;
+            }
+            bool _e217 = local_76;
+            ok = _e217;
             break;
         }
         default: {
@@ -3547,8 +3591,8 @@ bool airlight_valid(AirlightScene s_12) {
             break;
         }
     }
-    bool _e205 = ok;
-    return _e205;
+    bool _e219 = ok;
+    return _e219;
 }
 
 AirlightCanonical airlight_canonical(AirlightScene s_13) {
@@ -3610,28 +3654,28 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_76 = false;
     bool local_77 = false;
+    bool local_78 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_77 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        bool _e21 = local_77;
-        local_76 = _e21;
+        bool _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_76 = true;
+        local_77 = true;
     }
-    bool _e23 = local_76;
+    bool _e23 = local_77;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) {
-    bool local_78 = false;
-    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_79 = false;
+    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_80 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_14.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
@@ -3643,11 +3687,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_78 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_78 = true;
+        local_79 = true;
     }
-    bool _e41 = local_78;
+    bool _e41 = local_79;
     if (_e41) {
         return plain;
     }
@@ -3671,11 +3715,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     float h_4 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_79 = (h_4 > 0.0);
+        local_80 = (h_4 > 0.0);
     } else {
-        local_79 = false;
+        local_80 = false;
     }
-    bool _e101 = local_79;
+    bool _e101 = local_80;
     if (!(_e101)) {
         return plain;
     }
@@ -3685,38 +3729,712 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     }
     vec3 _e113 = airlight_normalize(dir);
     vec3 _e114 = airlight_normalize(w_3);
-    vec3 n_2 = -(cross(_e113, _e114));
+    vec3 n_3 = -(cross(_e113, _e114));
     out_2.h = h_4;
     vec3 _e119 = a_15;
-    out_2.d_c = dot(n_2, _e119);
+    out_2.d_c = dot(n_3, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_15) {
-    bool _e1 = airlight_valid(s_15);
+vec3[4] airlight_kronrod_rule() {
+    return vec3[4](vec3(0.96049124, 0.10465623, 0.0), vec3(0.7745967, 0.26848808, 0.5555556), vec3(0.43424374, 0.4013974, 0.0), vec3(0.0, 0.45091653, 0.8888889));
+}
+
+vec4 airlight_list_get(AirlightPanelList l, uint i_15) {
+    switch(i_15) {
+        case 0u: {
+            return l.panel_a;
+        }
+        case 1u: {
+            return l.panel_b;
+        }
+        case 2u: {
+            return l.panel_c;
+        }
+        case 3u: {
+            return l.panel_d;
+        }
+        case 4u: {
+            return l.panel_e;
+        }
+        default: {
+            return l.panel_f;
+        }
+    }
+}
+
+void airlight_list_set(inout AirlightPanelList l_1, uint i_16, vec4 v_5) {
+    switch(i_16) {
+        case 0u: {
+            l_1.panel_a = v_5;
+            return;
+        }
+        case 1u: {
+            l_1.panel_b = v_5;
+            return;
+        }
+        case 2u: {
+            l_1.panel_c = v_5;
+            return;
+        }
+        case 3u: {
+            l_1.panel_d = v_5;
+            return;
+        }
+        case 4u: {
+            l_1.panel_e = v_5;
+            return;
+        }
+        case 5u: {
+            l_1.panel_f = v_5;
+            return;
+        }
+        default: {
+            return;
+        }
+    }
+}
+
+AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
+    AirlightListScan r_2 = AirlightListScan(0.0, 0.0, 0u);
+    float worst_error = -1.0;
+    if ((count_1 > 0u)) {
+        float _e12 = r_2.total;
+        r_2.total = (_e12 + l_2.panel_a.z);
+        float _e17 = r_2.errors;
+        r_2.errors = (_e17 + l_2.panel_a.w);
+        float _e23 = worst_error;
+        if ((l_2.panel_a.w > _e23)) {
+            r_2.worst = 0u;
+            worst_error = l_2.panel_a.w;
+        }
+    }
+    if ((count_1 > 1u)) {
+        float _e32 = r_2.total;
+        r_2.total = (_e32 + l_2.panel_b.z);
+        float _e37 = r_2.errors;
+        r_2.errors = (_e37 + l_2.panel_b.w);
+        float _e43 = worst_error;
+        if ((l_2.panel_b.w > _e43)) {
+            r_2.worst = 1u;
+            worst_error = l_2.panel_b.w;
+        }
+    }
+    if ((count_1 > 2u)) {
+        float _e52 = r_2.total;
+        r_2.total = (_e52 + l_2.panel_c.z);
+        float _e57 = r_2.errors;
+        r_2.errors = (_e57 + l_2.panel_c.w);
+        float _e63 = worst_error;
+        if ((l_2.panel_c.w > _e63)) {
+            r_2.worst = 2u;
+            worst_error = l_2.panel_c.w;
+        }
+    }
+    if ((count_1 > 3u)) {
+        float _e72 = r_2.total;
+        r_2.total = (_e72 + l_2.panel_d.z);
+        float _e77 = r_2.errors;
+        r_2.errors = (_e77 + l_2.panel_d.w);
+        float _e83 = worst_error;
+        if ((l_2.panel_d.w > _e83)) {
+            r_2.worst = 3u;
+            worst_error = l_2.panel_d.w;
+        }
+    }
+    if ((count_1 > 4u)) {
+        float _e92 = r_2.total;
+        r_2.total = (_e92 + l_2.panel_e.z);
+        float _e97 = r_2.errors;
+        r_2.errors = (_e97 + l_2.panel_e.w);
+        float _e103 = worst_error;
+        if ((l_2.panel_e.w > _e103)) {
+            r_2.worst = 4u;
+            worst_error = l_2.panel_e.w;
+        }
+    }
+    if ((count_1 > 5u)) {
+        float _e112 = r_2.total;
+        r_2.total = (_e112 + l_2.panel_f.z);
+        float _e117 = r_2.errors;
+        r_2.errors = (_e117 + l_2.panel_f.w);
+        float _e123 = worst_error;
+        if ((l_2.panel_f.w > _e123)) {
+            r_2.worst = 5u;
+            worst_error = l_2.panel_f.w;
+        }
+    }
+    AirlightListScan _e129 = r_2;
+    return _e129;
+}
+
+float airlight_asinh(float x_11) {
+    float r_3 = 0.0;
+    float a_20 = abs(x_11);
+    r_3 = (AIRLIGHT_LN_2_ + log(a_20));
+    if ((a_20 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_20 + ((a_20 * a_20) / (1.0 + sqrt((1.0 + (a_20 * a_20)))))));
+        r_3 = _e17;
+    }
+    float _e18 = r_3;
+    float _e19 = r_3;
+    return ((x_11 < 0.0) ? -(_e19) : _e18);
+}
+
+float airlight_to_w(AirlightSegment g_14, float s_15) {
+    if ((g_14.scale > 0.0)) {
+        float _e9 = airlight_asinh(((s_15 - g_14.s_star) / g_14.scale));
+        return _e9;
+    }
+    return s_15;
+}
+
+AirlightSegment airlight_segment(AirlightScene s_16) {
+    AirlightSegment g_15 = AirlightSegment(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u);
+    bool local_81 = false;
+    bool local_82 = false;
+    float s_star = 0.0;
+    float t_star = 0.0;
+    bool local_83 = false;
+    bool local_84 = false;
+    bool local_85 = false;
+    bool local_86 = false;
+    bool local_87 = false;
+    bool local_88 = false;
+    float scale = 0.0;
+    bool local_89 = false;
+    bool local_90 = false;
+    bool local_91 = false;
+    bool local_92 = false;
+    bool local_93 = false;
+    float cuts_1[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
+    uint i_17 = 0u;
+    bool local_94 = false;
+    bool local_95 = false;
+    bool local_96 = false;
+    uint n_1 = 0u;
+    uint i_18 = 0u;
+    bool local_97 = false;
+    g_15 = AirlightSegment(s_16.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u);
+    if ((s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightSegment _e19 = g_15;
+        return _e19;
+    }
+    vec3 ab_1 = (s_16.light_end - s_16.light_position);
+    float _e23 = airlight_safe_length(ab_1);
+    if (!(!((_e23 > 0.0)))) {
+        local_81 = (s_16.intensity == 0.0);
+    } else {
+        local_81 = true;
+    }
+    bool _e34 = local_81;
+    if (!(_e34)) {
+        local_82 = (s_16.sigma_s == 0.0);
+    } else {
+        local_82 = true;
+    }
+    bool _e42 = local_82;
+    if (_e42) {
+        g_15.outcome = 1u;
+        AirlightSegment _e45 = g_15;
+        return _e45;
+    }
+    vec3 e_4 = (ab_1 / vec3(_e23));
+    vec3 _e49 = airlight_normalize(s_16.dir);
+    vec3 w0_ = (s_16.light_position - s_16.origin);
+    float cos_a = dot(e_4, _e49);
+    float along_e = dot(e_4, w0_);
+    float along_d = dot(_e49, w0_);
+    float sin2_ = (1.0 - (cos_a * cos_a));
+    bool infinite_4 = ((s_16.flags & 1u) != 0u);
+    t_star = along_d;
+    if ((sin2_ > AIRLIGHT_FLT_EPS)) {
+        s_star = (((cos_a * along_d) - along_e) / sin2_);
+        t_star = ((along_d - (cos_a * along_e)) / sin2_);
+    }
+    float _e75 = t_star;
+    float _e78 = s_star;
+    float _e81 = airlight_safe_length(((w0_ - (_e49 * _e75)) + (e_4 * _e78)));
+    float sin_a = sqrt(max(sin2_, 0.0));
+    if ((_e81 == 0.0)) {
+        local_83 = (sin_a > 0.0);
+    } else {
+        local_83 = false;
+    }
+    bool _e92 = local_83;
+    if (_e92) {
+        float _e95 = s_star;
+        local_84 = (_e95 >= 0.0);
+    } else {
+        local_84 = false;
+    }
+    bool _e99 = local_84;
+    if (_e99) {
+        float _e102 = s_star;
+        local_85 = (_e102 <= _e23);
+    } else {
+        local_85 = false;
+    }
+    bool _e105 = local_85;
+    if (_e105) {
+        float _e109 = t_star;
+        local_86 = (s_16.t_min <= _e109);
+    } else {
+        local_86 = false;
+    }
+    bool _e112 = local_86;
+    if (_e112) {
+        if (!(infinite_4)) {
+            float _e118 = t_star;
+            local_88 = (_e118 <= s_16.t_max);
+        } else {
+            local_88 = true;
+        }
+        bool _e122 = local_88;
+        local_87 = _e122;
+    } else {
+        local_87 = false;
+    }
+    bool _e124 = local_87;
+    if (_e124) {
+        g_15.outcome = 2u;
+        AirlightSegment _e127 = g_15;
+        return _e127;
+    }
+    if ((sin_a > 0.0)) {
+        local_89 = (_e81 > 0.0);
+    } else {
+        local_89 = false;
+    }
+    bool _e137 = local_89;
+    if (_e137) {
+        scale = (_e81 / sin_a);
+    }
+    float _e139 = s_star;
+    if ((_e139 > -(_e23))) {
+        float _e144 = s_star;
+        local_90 = (_e144 < (_e23 + _e23));
+    } else {
+        local_90 = false;
+    }
+    bool _e148 = local_90;
+    if (_e148) {
+        float _e151 = scale;
+        local_91 = (_e151 < _e23);
+    } else {
+        local_91 = false;
+    }
+    bool near_2 = local_91;
+    if (near_2) {
+        float _e157 = s_star;
+        float _e159 = scale;
+        float _e161 = airlight_asinh(((_e23 - _e157) / _e159));
+        bool _e162 = airlight_is_finite(_e161);
+        local_92 = _e162;
+    } else {
+        local_92 = false;
+    }
+    bool _e164 = local_92;
+    if (_e164) {
+        float _e167 = s_star;
+        float _e168 = scale;
+        float _e170 = airlight_asinh((_e167 / _e168));
+        bool _e171 = airlight_is_finite(_e170);
+        local_93 = _e171;
+    } else {
+        local_93 = false;
+    }
+    bool _e173 = local_93;
+    if (!(_e173)) {
+        scale = 0.0;
+    }
+    g_15.e = e_4;
+    float _e178 = s_star;
+    g_15.s_star = _e178;
+    float _e180 = scale;
+    g_15.scale = _e180;
+    float _e186 = s_star;
+    at = float[3](_e186, ((s_16.t_min - along_d) / cos_a), ((s_16.t_max - along_d) / cos_a));
+    bool loop_init_23 = true;
+    while(true) {
+        if (!loop_init_23) {
+            uint _e237 = i_17;
+            i_17 = (_e237 + 1u);
+        }
+        loop_init_23 = false;
+        uint _e197 = i_17;
+        if ((_e197 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            if ((cos_a == 0.0)) {
+                uint _e204 = i_17;
+                local_94 = (_e204 > 0u);
+            } else {
+                local_94 = false;
+            }
+            bool _e208 = local_94;
+            if (_e208) {
+                continue;
+            }
+            uint _e209 = i_17;
+            if ((_e209 == 2u)) {
+                local_95 = infinite_4;
+            } else {
+                local_95 = false;
+            }
+            bool _e215 = local_95;
+            if (_e215) {
+                continue;
+            }
+            uint _e216 = i_17;
+            float _e218 = at[_e216];
+            if ((_e218 > 0.0)) {
+                uint _e223 = i_17;
+                float _e225 = at[_e223];
+                local_96 = (_e225 < _e23);
+            } else {
+                local_96 = false;
+            }
+            bool _e228 = local_96;
+            if (_e228) {
+                uint _e229 = i_17;
+                AirlightSegment _e231 = g_15;
+                uint _e232 = i_17;
+                float _e234 = at[_e232];
+                float _e235 = airlight_to_w(_e231, _e234);
+                cuts_1[_e229] = _e235;
+            }
+        }
+    }
+    float _e240 = cuts_1[1];
+    float _e242 = cuts_1[0];
+    if ((_e240 < _e242)) {
+        float c_8 = cuts_1[0];
+        float _e248 = cuts_1[1];
+        cuts_1[0] = _e248;
+        cuts_1[1] = c_8;
+    }
+    float _e251 = cuts_1[2];
+    float _e253 = cuts_1[1];
+    if ((_e251 < _e253)) {
+        float c_9 = cuts_1[1];
+        float _e259 = cuts_1[2];
+        cuts_1[1] = _e259;
+        cuts_1[2] = c_9;
+    }
+    float _e262 = cuts_1[1];
+    float _e264 = cuts_1[0];
+    if ((_e262 < _e264)) {
+        float c_10 = cuts_1[0];
+        float _e270 = cuts_1[1];
+        cuts_1[0] = _e270;
+        cuts_1[1] = c_10;
+    }
+    AirlightSegment _e272 = g_15;
+    float _e273 = airlight_to_w(_e272, _e23);
+    AirlightSegment _e276 = g_15;
+    float _e278 = airlight_to_w(_e276, 0.0);
+    g_15.edges[0] = _e278;
+    bool loop_init_24 = true;
+    while(true) {
+        if (!loop_init_24) {
+            uint _e312 = i_18;
+            i_18 = (_e312 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e283 = i_18;
+        if ((_e283 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e286 = i_18;
+            float _e288 = cuts_1[_e286];
+            uint _e290 = n_1;
+            float _e292 = g_15.edges[_e290];
+            if ((_e288 > _e292)) {
+                uint _e296 = i_18;
+                float _e298 = cuts_1[_e296];
+                local_97 = (_e298 < _e273);
+            } else {
+                local_97 = false;
+            }
+            bool _e301 = local_97;
+            if (_e301) {
+                uint _e302 = n_1;
+                n_1 = (_e302 + 1u);
+                uint _e306 = n_1;
+                uint _e308 = i_18;
+                float _e310 = cuts_1[_e308];
+                g_15.edges[_e306] = _e310;
+            }
+        }
+    }
+    uint _e315 = n_1;
+    g_15.edges[(_e315 + 1u)] = _e273;
+    uint _e320 = n_1;
+    g_15.panels = (_e320 + 1u);
+    AirlightSegment _e323 = g_15;
+    return _e323;
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_17) {
+    AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    uint count_2 = 0u;
+    float a_16 = 0.0;
+    float b_12 = 0.0;
+    uint slot_1 = 0u;
+    bool queued = false;
+    float queued_lo = 0.0;
+    float queued_hi = 0.0;
+    uint step_1 = 0u;
+    float k_5 = 0.0;
+    float gauss = 0.0;
+    uint j_4 = 0u;
+    bool local_98 = false;
+    float at_1 = 0.0;
+    float ds = 0.0;
+    AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3(0.0), 0u);
+    AirlightResult r_4 = AirlightResult(0.0, 0u);
+    bool local_99 = false;
+    bool split = false;
+    uint tries = 0u;
+    bool local_100 = false;
+    bool local_101 = false;
+    bool local_102 = false;
+    bool _e1 = airlight_valid(s_17);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e6 = airlight_canonical(s_15);
-    AirlightCanonical _e7 = airlight_refined(s_15, _e6);
-    AirlightResult _e8 = airlight_in_scatter_canonical(s_15, _e7);
-    bool _e10 = airlight_is_finite(_e8.in_scatter);
-    if (!(_e10)) {
+    AirlightSegment _e6 = airlight_segment(s_17);
+    if ((_e6.outcome == 1u)) {
+        return AirlightResult(0.0, 0u);
+    }
+    if ((_e6.outcome == 2u)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    return _e8;
+    vec3 _e19[4] = airlight_kronrod_rule();
+    a_16 = _e6.edges[0];
+    b_12 = _e6.edges[1];
+    bool loop_init_25 = true;
+    while(true) {
+        if (!loop_init_25) {
+            uint _e261 = step_1;
+            step_1 = (_e261 + 1u);
+        }
+        loop_init_25 = false;
+        uint _e53 = step_1;
+        if ((_e53 < AIRLIGHT_SEGMENT_EVALUATIONS)) {
+        } else {
+            break;
+        }
+        {
+            float _e56 = a_16;
+            float _e57 = b_12;
+            float c_11 = (0.5 * (_e56 + _e57));
+            float _e61 = b_12;
+            float _e62 = a_16;
+            float hw_1 = (0.5 * (_e61 - _e62));
+            k_5 = 0.0;
+            gauss = 0.0;
+            j_4 = 0u;
+            bool loop_init_26 = true;
+            while(true) {
+                if (!loop_init_26) {
+                    uint _e167 = j_4;
+                    j_4 = (_e167 + 1u);
+                }
+                loop_init_26 = false;
+                uint _e72 = j_4;
+                if ((_e72 < 7u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e75 = j_4;
+                    vec3 node = _e19[(_e75 / 2u)];
+                    uint _e85 = j_4;
+                    if (((_e85 & 1u) == 0u)) {
+                        uint _e92 = j_4;
+                        local_98 = (_e92 < 6u);
+                    } else {
+                        local_98 = false;
+                    }
+                    bool _e96 = local_98;
+                    float w_4 = (_e96 ? (c_11 - (hw_1 * node.x)) : (c_11 + (hw_1 * node.x)));
+                    at_1 = w_4;
+                    ds = 1.0;
+                    if ((_e6.scale > 0.0)) {
+                        at_1 = (_e6.s_star + (_e6.scale * sinh(w_4)));
+                        ds = (_e6.scale * cosh(w_4));
+                    }
+                    p = s_17;
+                    float _e115 = at_1;
+                    p.light_position = (_e6.a + (_e115 * _e6.e));
+                    p.light_shape = AIRLIGHT_SHAPE_POINT;
+                    r_4 = AirlightResult(0.0, 0u);
+                    vec3 _e126 = p.light_position;
+                    bool _e127 = airlight_vec_finite(_e126);
+                    if (_e127) {
+                        AirlightScene _e128 = p;
+                        AirlightScene _e129 = p;
+                        AirlightScene _e130 = p;
+                        AirlightCanonical _e131 = airlight_canonical(_e130);
+                        AirlightCanonical _e132 = airlight_refined(_e129, _e131);
+                        AirlightResult _e133 = airlight_in_scatter_canonical(_e128, _e132);
+                        r_4 = _e133;
+                    }
+                    float _e135 = r_4.in_scatter;
+                    bool _e136 = airlight_is_finite(_e135);
+                    if (!(!(_e136))) {
+                        uint _e142 = r_4.status;
+                        local_99 = (_e142 == AIRLIGHT_STATUS_INFINITE);
+                    } else {
+                        local_99 = true;
+                    }
+                    bool _e146 = local_99;
+                    if (_e146) {
+                        return AirlightResult(3.4028235e38, 2u);
+                    }
+                    if ((s_17.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                        AirlightResult _e153 = r_4;
+                        return _e153;
+                    }
+                    float _e155 = r_4.in_scatter;
+                    float _e156 = ds;
+                    float f_3 = (_e155 * _e156);
+                    float _e158 = k_5;
+                    k_5 = (_e158 + (node.y * f_3));
+                    float _e162 = gauss;
+                    gauss = (_e162 + (node.z * f_3));
+                }
+            }
+            uint _e169 = slot_1;
+            float _e170 = a_16;
+            float _e171 = b_12;
+            float _e172 = k_5;
+            float _e174 = k_5;
+            float _e176 = gauss;
+            airlight_list_set(list_1, _e169, vec4(_e170, _e171, (_e172 * hw_1), abs(((_e174 * hw_1) - (_e176 * hw_1)))));
+            uint _e181 = slot_1;
+            uint _e182 = count_2;
+            if ((_e181 == _e182)) {
+                uint _e184 = count_2;
+                count_2 = (_e184 + 1u);
+            }
+            uint _e187 = count_2;
+            if ((_e187 < _e6.panels)) {
+                uint _e191 = count_2;
+                a_16 = _e6.edges[_e191];
+                uint _e194 = count_2;
+                b_12 = _e6.edges[(_e194 + 1u)];
+                uint _e198 = count_2;
+                slot_1 = _e198;
+            } else {
+                bool _e199 = queued;
+                if (_e199) {
+                    float _e200 = queued_lo;
+                    a_16 = _e200;
+                    float _e201 = queued_hi;
+                    b_12 = _e201;
+                    uint _e202 = count_2;
+                    slot_1 = _e202;
+                    queued = false;
+                } else {
+                    split = false;
+                    tries = 0u;
+                    bool loop_init_27 = true;
+                    while(true) {
+                        if (!loop_init_27) {
+                            uint _e256 = tries;
+                            tries = (_e256 + 1u);
+                        }
+                        loop_init_27 = false;
+                        uint _e208 = tries;
+                        if ((_e208 < AIRLIGHT_SEGMENT_PANELS)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            AirlightPanelList _e211 = list_1;
+                            uint _e212 = count_2;
+                            AirlightListScan _e213 = airlight_list_scan(_e211, _e212);
+                            float total_4 = _e213.total;
+                            uint worst_1 = _e213.worst;
+                            if (!(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e224 = count_2;
+                                local_100 = (_e224 == AIRLIGHT_SEGMENT_PANELS);
+                            } else {
+                                local_100 = true;
+                            }
+                            bool _e228 = local_100;
+                            if (!(_e228)) {
+                                bool _e232 = airlight_is_finite(total_4);
+                                local_101 = !(_e232);
+                            } else {
+                                local_101 = true;
+                            }
+                            bool _e235 = local_101;
+                            if (_e235) {
+                                break;
+                            }
+                            AirlightPanelList _e236 = list_1;
+                            vec4 _e237 = airlight_list_get(_e236, worst_1);
+                            float wa_1 = _e237.x;
+                            float wb_1 = _e237.y;
+                            float mid_1 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_1 > wa_1)) {
+                                local_102 = (mid_1 < wb_1);
+                            } else {
+                                local_102 = false;
+                            }
+                            bool _e248 = local_102;
+                            if (!(_e248)) {
+                                airlight_list_set(list_1, worst_1, vec4(_e237.xyz, 0.0));
+                                continue;
+                            }
+                            a_16 = wa_1;
+                            b_12 = mid_1;
+                            slot_1 = worst_1;
+                            queued = true;
+                            queued_lo = mid_1;
+                            queued_hi = wb_1;
+                            split = true;
+                            break;
+                        }
+                    }
+                    bool _e258 = split;
+                    if (!(_e258)) {
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    AirlightPanelList _e263 = list_1;
+    uint _e264 = count_2;
+    AirlightListScan _e265 = airlight_list_scan(_e263, _e264);
+    float total_5 = _e265.total;
+    bool _e267 = airlight_is_finite(total_5);
+    if (!(_e267)) {
+        return AirlightResult(3.4028235e38, 2u);
+    }
+    return AirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 void main() {
     uvec3 id = gl_GlobalInvocationID;
-    uint i_15 = id.x;
-    if ((i_15 >= uint(_group_0_binding_0_cs.length()))) {
+    uint i_19 = id.x;
+    if ((i_19 >= uint(_group_0_binding_0_cs.length()))) {
         return;
     }
-    AirlightScene _e9 = _group_0_binding_0_cs[i_15];
+    AirlightScene _e9 = _group_0_binding_0_cs[i_19];
     AirlightResult _e10 = airlight_in_scatter(_e9);
-    _group_0_binding_1_cs[i_15] = _e10;
+    _group_0_binding_1_cs[i_19] = _e10;
     return;
 }
 

@@ -18,9 +18,11 @@ struct AirlightScene {
     uint light_kind;
     uint phase_kind;
     uint flags;
-    int _end_pad_0;
-    int _end_pad_1;
-    int _end_pad_2;
+    int _pad17_0;
+    int _pad17_1;
+    int _pad17_2;
+    float3 light_end;
+    uint light_shape;
 };
 
 struct AirlightResult {
@@ -55,6 +57,32 @@ struct AirlightPanel {
     float f_max;
 };
 
+struct AirlightPanelList {
+    float4 panel_a;
+    float4 panel_b;
+    float4 panel_c;
+    float4 panel_d;
+    float4 panel_e;
+    float4 panel_f;
+};
+
+struct AirlightListScan {
+    float total;
+    float errors;
+    uint worst;
+};
+
+struct AirlightSegment {
+    float3 a;
+    int _pad1_0;
+    float3 e;
+    float s_star;
+    float scale;
+    float edges[5];
+    uint panels;
+    uint outcome;
+};
+
 static const uint AIRLIGHT_TERMS = 12u;
 static const uint AIRLIGHT_HALF_TERMS = 6u;
 static const float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -78,6 +106,8 @@ static const uint AIRLIGHT_PHASE_TWO_LOBE_HG = 5u;
 static const uint AIRLIGHT_LIGHT_OMNI = 0u;
 static const uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 static const uint AIRLIGHT_LIGHT_SPOT = 2u;
+static const uint AIRLIGHT_SHAPE_POINT = 0u;
+static const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
 static const uint AIRLIGHT_STATUS_OK = 0u;
 static const uint AIRLIGHT_STATUS_INVALID = 1u;
 static const uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -89,6 +119,8 @@ static const float AIRLIGHT_E1_INV_RE = 0.7692308;
 static const float AIRLIGHT_E1_INV_IM = 0.47619048;
 static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
+static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
+static const uint AIRLIGHT_SEGMENT_EVALUATIONS = 11u;
 
 ByteAddressBuffer airlight_records : register(t0);
 RWByteAddressBuffer airlight_results : register(u1);
@@ -125,13 +157,13 @@ float2 airlight_cmul(float2 a, float2 b)
 float2 airlight_cdiv(float2 a_1, float2 b_1)
 {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_2 = (b_1.y / b_1.x);
-        float inv = (1.0 / (b_1.x + (b_1.y * r_2)));
-        return float2(((a_1.x + (a_1.y * r_2)) * inv), ((a_1.y - (a_1.x * r_2)) * inv));
+        float r_5 = (b_1.y / b_1.x);
+        float inv = (1.0 / (b_1.x + (b_1.y * r_5)));
+        return float2(((a_1.x + (a_1.y * r_5)) * inv), ((a_1.y - (a_1.x * r_5)) * inv));
     }
-    float r_3 = (b_1.x / b_1.y);
-    float inv_1 = (1.0 / ((b_1.x * r_3) + b_1.y));
-    return float2((((a_1.x * r_3) + a_1.y) * inv_1), (((a_1.y * r_3) - a_1.x) * inv_1));
+    float r_6 = (b_1.x / b_1.y);
+    float inv_1 = (1.0 / ((b_1.x * r_6) + b_1.y));
+    return float2((((a_1.x * r_6) + a_1.y) * inv_1), (((a_1.y * r_6) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(float2 z)
@@ -191,7 +223,7 @@ float2 airlight_cos_sin(float x)
         }
         {
             uint _e12 = k;
-            uint n_1 = (8u - _e12);
+            uint n_2 = (8u - _e12);
             float _e14 = c;
             c = (_e14 * z_8);
             float _e16 = s;
@@ -209,7 +241,7 @@ float2 airlight_cos_sin(float x)
                 }
                 loop_init_1 = false;
                 uint _e22 = j;
-                if ((_e22 <= (2u * n_1))) {
+                if ((_e22 <= (2u * n_2))) {
                 } else {
                     break;
                 }
@@ -219,13 +251,13 @@ float2 airlight_cos_sin(float x)
                     fc = (_e26 * float(_e27));
                 }
             }
-            float sign_ = (((n_1 & 1u) == 1u) ? -1.0 : 1.0);
+            float sign_ = (((n_2 & 1u) == 1u) ? -1.0 : 1.0);
             float _e40 = c;
             float _e41 = fc;
             c = (_e40 + (sign_ / _e41));
             float _e44 = s;
             float _e45 = fc;
-            s = (_e44 + (sign_ / (_e45 * float(((2u * n_1) + 1u)))));
+            s = (_e44 + (sign_ / (_e45 * float(((2u * n_2) + 1u)))));
         }
     }
     float _e57 = c;
@@ -286,8 +318,8 @@ float airlight_log1p(float x_2)
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_16 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_16 * s_16);
+    float s_18 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_18 * s_18);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -310,7 +342,7 @@ float airlight_log1p(float x_2)
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_16) * _e35);
+    return ((2.0 * s_18) * _e35);
 }
 
 bool airlight_is_finite(float x_3)
@@ -394,9 +426,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_12 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_11 * x_11) + (y_3 * y_3)) < 1.0);
+    return (((x_12 * x_12) + (y_3 * y_3)) < 1.0);
 }
 
 uint airlight_cf_depth(float r)
@@ -473,8 +505,8 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float _e13 = r2_1;
     const uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    float2 b_12 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
-    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_12);
+    float2 b_13 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
+    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_13);
     const float2 _e33 = airlight_cmul(_e29, _e29);
     const float2 _e35 = airlight_csqrt((float2(1.0, 0.0) - _e33));
     root = _e35;
@@ -484,7 +516,7 @@ float2 airlight_e1_scaled_cf(float2 z_6)
         root = -(_e41);
     }
     float2 _e46 = root;
-    const float2 _e48 = airlight_cmul(b_12, (float2(1.0, 0.0) + _e46));
+    const float2 _e48 = airlight_cmul(b_13, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
@@ -554,12 +586,12 @@ float airlight_en_scaled_cf(float x_4, uint n)
     const uint _e2 = airlight_cf_depth(x_4);
     float nf_1 = float(n);
     float m_5 = float(_e2);
-    float b_13 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
-    float a_16 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
-    float disc = (1.0 - ((4.0 * a_16) / (b_13 * b_13)));
-    t_2 = b_13;
+    float b_14 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
+    float a_17 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
+    float disc = (1.0 - ((4.0 * a_17) / (b_14 * b_14)));
+    t_2 = b_14;
     if ((disc > 0.0)) {
-        t_2 = ((b_13 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
@@ -751,11 +783,11 @@ airlight_ret_airlight_en_scaled airlight_en_scaled(float x_5)
 float airlight_hg_base(float g, float om, float op)
 {
     if ((g >= 0.0)) {
-        float a_17 = (1.0 - g);
-        return ((om * (g + g)) + (a_17 * a_17));
+        float a_18 = (1.0 - g);
+        return ((om * (g + g)) + (a_18 * a_18));
     }
-    float b_14 = (1.0 + g);
-    return ((op * -((g + g))) + (b_14 * b_14));
+    float b_15 = (1.0 + g);
+    return ((op * -((g + g))) + (b_15 * b_15));
 }
 
 float airlight_hg(float g_1, float om_1, float op_1)
@@ -858,8 +890,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_12 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_12 * x_12) * (3.0 - (2.0 * x_12)));
+            float x_13 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_13 * x_13) * (3.0 - (2.0 * x_13)));
         }
         default: {
             return 1.0;
@@ -998,10 +1030,10 @@ float airlight_q_zero(AirlightHalf half_1)
             const float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
             d_im = _e48;
             float _e50 = v_e;
-            float x_13 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e57 = airlight_is_finite(x_13);
+            float x_14 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e57 = airlight_is_finite(x_14);
             if (_e57) {
-                const float _e58 = airlight_log1p(x_13);
+                const float _e58 = airlight_log1p(x_14);
                 d_re = (0.5 * _e58);
             } else {
                 float _e63 = v_e;
@@ -1108,8 +1140,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[6], uint i_3)
 {
-    float x_14 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_14) : x_14);
+    float x_15 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_15) : x_15);
 }
 
 typedef float airlight_ret_airlight_legendre[12];
@@ -1762,8 +1794,8 @@ float airlight_factor(AirlightHalf half_3, float a_4, float b_3)
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     float _e13 = offset;
-    float x_15 = (half_3.big_h * _e13);
-    return ((x_15 > 0.0) ? exp(-(x_15)) : 1.0);
+    float x_16 = (half_3.big_h * _e13);
+    return ((x_16 > 0.0) ? exp(-(x_16)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -1823,8 +1855,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_5, float s
             float _e38 = r_1;
             uint _e39 = i_7;
             const float _e40 = airlight_node(_e6, _e39);
-            float v_5 = (_e37 + (_e38 * _e40));
-            const float2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_5);
+            float v_6 = (_e37 + (_e38 * _e40));
+            const float2 _e46 = airlight_integrand_over(s_3, g_5, (half_4.second ? -(sigma_2) : sigma_2), v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1896,8 +1928,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     float m_2[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     const float2 _e6[6] = airlight_gauss_rule();
-    float r_4 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_4);
+    float r_7 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_7);
     const float _e11[12] = airlight_zero_terms();
     samples_1 = _e11;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
@@ -1918,8 +1950,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
         {
             uint _e26 = i_8;
             const float _e27 = airlight_node(_e6, _e26);
-            float y_5 = (yc_1 + (r_4 * _e27));
-            float weight = exp(((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5)));
+            float y_5 = (yc_1 + (r_7 * _e27));
+            float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5)));
             const float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_8;
@@ -1941,7 +1973,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     float _e79[12] = samples_1;
     const float _e80[12] = airlight_legendre(_e79);
     const float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e81 * r_4);
+    float w_1 = (_e81 * r_7);
     const float _e83[12] = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2.0;
@@ -2074,8 +2106,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     float next = 0.0;
 
     const float2 _e6[6] = airlight_gauss_rule();
-    float r_5 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_5);
+    float r_8 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_8);
     const float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
     uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
@@ -2096,7 +2128,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
         {
             uint _e22 = i_9;
             const float _e23 = airlight_node(_e6, _e22);
-            float y_6 = (yc_2 + (r_5 * _e23));
+            float y_6 = (yc_2 + (r_8 * _e23));
             const float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
             uint _e27 = i_9;
             samples_2[min(uint(_e27), 11u)] = (_e26 / (1.0 + (y_6 * y_6)));
@@ -2111,8 +2143,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     }
     float _e53[12] = samples_2;
     const float _e54[12] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_5);
-    float beta = (-(yc_2) / r_5);
+    float alpha = (b_6 / r_8);
+    float beta = (-(yc_2) / r_8);
     const float _e58[12] = airlight_legendre_to_monomial(_e54);
     const float _e59[12] = airlight_zero_terms();
     q = _e59;
@@ -2406,13 +2438,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     const float _e936 = airlight_factor(half_6, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_16 = (abs(alpha) + abs(beta));
+    float x_17 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_16) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_17) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2422,7 +2454,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_16) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_17) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2432,7 +2464,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_16) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_17) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2442,7 +2474,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_16) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_17) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2452,7 +2484,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_16) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_17) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2462,7 +2494,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_16) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_17) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2472,7 +2504,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_16) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_17) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2482,7 +2514,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_16) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_17) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2492,7 +2524,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_16) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_17) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2502,7 +2534,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_16) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_17) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2512,7 +2544,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_16) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_17) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2522,7 +2554,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_16) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_17) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -2828,9 +2860,9 @@ float2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4)
     float a0_ = (k_4 + (sigma_7 * d_el));
     float b0_ = -((d_c + d_c));
     float c0_ = (k_4 - (sigma_7 * d_el));
-    float scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if (!(!((scale > 0.0)))) {
-        const bool _e21 = airlight_is_finite(scale);
+    float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if (!(!((scale_1 > 0.0)))) {
+        const bool _e21 = airlight_is_finite(scale_1);
         local_16 = !(_e21);
     } else {
         local_16 = true;
@@ -2839,23 +2871,23 @@ float2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4)
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_18 = (a0_ / scale);
-    float b_15 = (b0_ / scale);
-    float c_7 = (c0_ / scale);
-    float disc_1 = ((b_15 * b_15) - ((4.0 * a_18) * c_7));
+    float a_19 = (a0_ / scale_1);
+    float b_16 = (b0_ / scale_1);
+    float c_7 = (c0_ / scale_1);
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_19) * c_7));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_15 < 0.0)) {
+    if ((b_16 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_2 = (-0.5 * (b_15 + (_e47 * sqrt(disc_1))));
+    float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_2 != 0.0)) {
         r1_ = (c_7 / q_2);
     }
-    if ((a_18 != 0.0)) {
-        r2_2 = (q_2 / a_18);
+    if ((a_19 != 0.0)) {
+        r2_2 = (q_2 / a_19);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3194,7 +3226,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     AirlightHalf half_12 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     const float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
     const float _e55 = airlight_moment_zero(half_12);
-    float j_4 = (_e54 * _e55);
+    float j_5 = (_e54 * _e55);
     const bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
@@ -3204,7 +3236,7 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
         }
     }
     float _e72 = x_8;
-    const float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_4);
+    const float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -3212,8 +3244,8 @@ float airlight_cut_length(float big_h_2, float v_s)
 {
     float inv_h = (1.0 / big_h_2);
     float w_2 = (v_s + inv_h);
-    float r_6 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_6) / (0.000100000005 * 0.0001))));
+    float r_9 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_9) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 
@@ -3604,6 +3636,7 @@ bool airlight_valid(AirlightScene s_12)
     bool local_73 = (bool)0;
     bool local_74 = (bool)0;
     bool local_75 = (bool)0;
+    bool local_76 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
@@ -3691,77 +3724,92 @@ bool airlight_valid(AirlightScene s_12)
         bool _e85 = local_60;
         ok = _e85;
     }
-    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_12.light_axis);
+            const bool _e93 = airlight_vec_finite(s_12.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
         }
         bool _e95 = local_61;
-        if (_e95) {
-            const bool _e99 = airlight_normalisable(s_12.light_axis);
-            local_62 = _e99;
+        ok = _e95;
+    } else {
+        if ((s_12.light_shape != AIRLIGHT_SHAPE_POINT)) {
+            ok = false;
+        }
+    }
+    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e103 = ok;
+        if (_e103) {
+            const bool _e107 = airlight_vec_finite(s_12.light_axis);
+            local_62 = _e107;
         } else {
             local_62 = false;
         }
-        bool _e101 = local_62;
-        if (_e101) {
-            local_63 = (s_12.light_param_a >= 0.0);
+        bool _e109 = local_62;
+        if (_e109) {
+            const bool _e113 = airlight_normalisable(s_12.light_axis);
+            local_63 = _e113;
         } else {
             local_63 = false;
         }
-        bool _e108 = local_63;
-        if (_e108) {
-            local_64 = (s_12.light_param_a <= 1024.0);
+        bool _e115 = local_63;
+        if (_e115) {
+            local_64 = (s_12.light_param_a >= 0.0);
         } else {
             local_64 = false;
         }
-        bool _e115 = local_64;
-        if (_e115) {
-            local_65 = (frac((s_12.light_param_a * 0.5)) == 0.0);
+        bool _e122 = local_64;
+        if (_e122) {
+            local_65 = (s_12.light_param_a <= 1024.0);
         } else {
             local_65 = false;
         }
-        bool _e125 = local_65;
-        ok = _e125;
+        bool _e129 = local_65;
+        if (_e129) {
+            local_66 = (frac((s_12.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_66 = false;
+        }
+        bool _e139 = local_66;
+        ok = _e139;
     } else {
         if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e129 = ok;
-            if (_e129) {
-                const bool _e133 = airlight_vec_finite(s_12.light_axis);
-                local_66 = _e133;
-            } else {
-                local_66 = false;
-            }
-            bool _e135 = local_66;
-            if (_e135) {
-                const bool _e139 = airlight_normalisable(s_12.light_axis);
-                local_67 = _e139;
+            bool _e143 = ok;
+            if (_e143) {
+                const bool _e147 = airlight_vec_finite(s_12.light_axis);
+                local_67 = _e147;
             } else {
                 local_67 = false;
             }
-            bool _e141 = local_67;
-            if (_e141) {
-                local_68 = (s_12.light_param_b < s_12.light_param_a);
+            bool _e149 = local_67;
+            if (_e149) {
+                const bool _e153 = airlight_normalisable(s_12.light_axis);
+                local_68 = _e153;
             } else {
                 local_68 = false;
             }
-            bool _e148 = local_68;
-            if (_e148) {
-                local_69 = (s_12.light_param_b >= -1.0);
+            bool _e155 = local_68;
+            if (_e155) {
+                local_69 = (s_12.light_param_b < s_12.light_param_a);
             } else {
                 local_69 = false;
             }
-            bool _e155 = local_69;
-            if (_e155) {
-                local_70 = (s_12.light_param_a <= 1.0);
+            bool _e162 = local_69;
+            if (_e162) {
+                local_70 = (s_12.light_param_b >= -1.0);
             } else {
                 local_70 = false;
             }
-            bool _e162 = local_70;
-            ok = _e162;
+            bool _e169 = local_70;
+            if (_e169) {
+                local_71 = (s_12.light_param_a <= 1.0);
+            } else {
+                local_71 = false;
+            }
+            bool _e176 = local_71;
+            ok = _e176;
         } else {
             if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -3777,43 +3825,43 @@ bool airlight_valid(AirlightScene s_12)
         case 2u:
         case 3u:
         case 4u: {
-            bool _e172 = ok;
-            if (_e172) {
-                local_71 = g_ok;
-            } else {
-                local_71 = false;
-            }
-            bool _e176 = local_71;
-            ok = _e176;
-            break;
-        }
-        case 5u: {
-            bool _e177 = ok;
-            if (_e177) {
+            bool _e186 = ok;
+            if (_e186) {
                 local_72 = g_ok;
             } else {
                 local_72 = false;
             }
-            bool _e181 = local_72;
-            if (_e181) {
-                local_73 = (abs(s_12.phase_param_b) < 1.0);
+            bool _e190 = local_72;
+            ok = _e190;
+            break;
+        }
+        case 5u: {
+            bool _e191 = ok;
+            if (_e191) {
+                local_73 = g_ok;
             } else {
                 local_73 = false;
             }
-            bool _e189 = local_73;
-            if (_e189) {
-                local_74 = (s_12.phase_param_c >= 0.0);
+            bool _e195 = local_73;
+            if (_e195) {
+                local_74 = (abs(s_12.phase_param_b) < 1.0);
             } else {
                 local_74 = false;
             }
-            bool _e196 = local_74;
-            if (_e196) {
-                local_75 = (s_12.phase_param_c <= 1.0);
+            bool _e203 = local_74;
+            if (_e203) {
+                local_75 = (s_12.phase_param_c >= 0.0);
             } else {
                 local_75 = false;
             }
-            bool _e203 = local_75;
-            ok = _e203;
+            bool _e210 = local_75;
+            if (_e210) {
+                local_76 = (s_12.phase_param_c <= 1.0);
+            } else {
+                local_76 = false;
+            }
+            bool _e217 = local_76;
+            ok = _e217;
             break;
         }
         default: {
@@ -3821,8 +3869,8 @@ bool airlight_valid(AirlightScene s_12)
             break;
         }
     }
-    bool _e205 = ok;
-    return _e205;
+    bool _e219 = ok;
+    return _e219;
 }
 
 AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -3905,30 +3953,30 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_76 = (bool)0;
     bool local_77 = (bool)0;
+    bool local_78 = (bool)0;
 
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_77 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        bool _e21 = local_77;
-        local_76 = _e21;
+        bool _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_76 = true;
+        local_77 = true;
     }
-    bool _e23 = local_76;
+    bool _e23 = local_77;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
 {
-    bool local_78 = (bool)0;
-    AirlightCanonical out_2 = (AirlightCanonical)0;
     bool local_79 = (bool)0;
+    AirlightCanonical out_2 = (AirlightCanonical)0;
+    bool local_80 = (bool)0;
     float3 a_15 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_14.flags > 1u));
@@ -3941,11 +3989,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     const bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
-        local_78 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_78 = true;
+        local_79 = true;
     }
-    bool _e41 = local_78;
+    bool _e41 = local_79;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -3972,11 +4020,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     float h_4 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_79 = (h_4 > 0.0);
+        local_80 = (h_4 > 0.0);
     } else {
-        local_79 = false;
+        local_80 = false;
     }
-    bool _e101 = local_79;
+    bool _e101 = local_80;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -3987,32 +4035,791 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain)
     }
     const float3 _e113 = airlight_normalize(dir);
     const float3 _e114 = airlight_normalize(w_3);
-    float3 n_2 = -(cross(_e113, _e114));
+    float3 n_3 = -(cross(_e113, _e114));
     out_2.h = h_4;
     float3 _e119 = a_15;
-    out_2.d_c = dot(n_2, _e119);
+    out_2.d_c = dot(n_3, _e119);
     AirlightCanonical _e121 = out_2;
     const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_15)
+typedef float3 airlight_ret_Constructarray4_float3_[4];
+airlight_ret_Constructarray4_float3_ airlight_Constructarray4_float3_(float3 arg0, float3 arg1, float3 arg2, float3 arg3) {
+    float3 ret[4] = { arg0, arg1, arg2, arg3 };
+    return ret;
+}
+
+typedef float3 airlight_ret_airlight_kronrod_rule[4];
+airlight_ret_airlight_kronrod_rule airlight_kronrod_rule()
 {
-    const bool _e1 = airlight_valid(s_15);
+    return airlight_Constructarray4_float3_(float3(0.96049124, 0.10465623, 0.0), float3(0.7745967, 0.26848808, 0.5555556), float3(0.43424374, 0.4013974, 0.0), float3(0.0, 0.45091653, 0.8888889));
+}
+
+float4 airlight_list_get(AirlightPanelList l, uint i_15)
+{
+    switch(i_15) {
+        case 0u: {
+            return l.panel_a;
+        }
+        case 1u: {
+            return l.panel_b;
+        }
+        case 2u: {
+            return l.panel_c;
+        }
+        case 3u: {
+            return l.panel_d;
+        }
+        case 4u: {
+            return l.panel_e;
+        }
+        default: {
+            return l.panel_f;
+        }
+    }
+}
+
+void airlight_list_set(inout AirlightPanelList l_1, uint i_16, float4 v_5)
+{
+    switch(i_16) {
+        case 0u: {
+            l_1.panel_a = v_5;
+            return;
+        }
+        case 1u: {
+            l_1.panel_b = v_5;
+            return;
+        }
+        case 2u: {
+            l_1.panel_c = v_5;
+            return;
+        }
+        case 3u: {
+            l_1.panel_d = v_5;
+            return;
+        }
+        case 4u: {
+            l_1.panel_e = v_5;
+            return;
+        }
+        case 5u: {
+            l_1.panel_f = v_5;
+            return;
+        }
+        default: {
+            return;
+        }
+    }
+}
+
+AirlightListScan ConstructAirlightListScan(float arg0, float arg1, uint arg2) {
+    AirlightListScan ret = (AirlightListScan)0;
+    ret.total = arg0;
+    ret.errors = arg1;
+    ret.worst = arg2;
+    return ret;
+}
+
+AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
+{
+    AirlightListScan r_2 = ConstructAirlightListScan(0.0, 0.0, 0u);
+    float worst_error = -1.0;
+
+    if ((count_1 > 0u)) {
+        float _e12 = r_2.total;
+        r_2.total = (_e12 + l_2.panel_a.z);
+        float _e17 = r_2.errors;
+        r_2.errors = (_e17 + l_2.panel_a.w);
+        float _e23 = worst_error;
+        if ((l_2.panel_a.w > _e23)) {
+            r_2.worst = 0u;
+            worst_error = l_2.panel_a.w;
+        }
+    }
+    if ((count_1 > 1u)) {
+        float _e32 = r_2.total;
+        r_2.total = (_e32 + l_2.panel_b.z);
+        float _e37 = r_2.errors;
+        r_2.errors = (_e37 + l_2.panel_b.w);
+        float _e43 = worst_error;
+        if ((l_2.panel_b.w > _e43)) {
+            r_2.worst = 1u;
+            worst_error = l_2.panel_b.w;
+        }
+    }
+    if ((count_1 > 2u)) {
+        float _e52 = r_2.total;
+        r_2.total = (_e52 + l_2.panel_c.z);
+        float _e57 = r_2.errors;
+        r_2.errors = (_e57 + l_2.panel_c.w);
+        float _e63 = worst_error;
+        if ((l_2.panel_c.w > _e63)) {
+            r_2.worst = 2u;
+            worst_error = l_2.panel_c.w;
+        }
+    }
+    if ((count_1 > 3u)) {
+        float _e72 = r_2.total;
+        r_2.total = (_e72 + l_2.panel_d.z);
+        float _e77 = r_2.errors;
+        r_2.errors = (_e77 + l_2.panel_d.w);
+        float _e83 = worst_error;
+        if ((l_2.panel_d.w > _e83)) {
+            r_2.worst = 3u;
+            worst_error = l_2.panel_d.w;
+        }
+    }
+    if ((count_1 > 4u)) {
+        float _e92 = r_2.total;
+        r_2.total = (_e92 + l_2.panel_e.z);
+        float _e97 = r_2.errors;
+        r_2.errors = (_e97 + l_2.panel_e.w);
+        float _e103 = worst_error;
+        if ((l_2.panel_e.w > _e103)) {
+            r_2.worst = 4u;
+            worst_error = l_2.panel_e.w;
+        }
+    }
+    if ((count_1 > 5u)) {
+        float _e112 = r_2.total;
+        r_2.total = (_e112 + l_2.panel_f.z);
+        float _e117 = r_2.errors;
+        r_2.errors = (_e117 + l_2.panel_f.w);
+        float _e123 = worst_error;
+        if ((l_2.panel_f.w > _e123)) {
+            r_2.worst = 5u;
+            worst_error = l_2.panel_f.w;
+        }
+    }
+    AirlightListScan _e129 = r_2;
+    const AirlightListScan airlightlistscan = _e129;
+    return airlightlistscan;
+}
+
+float airlight_asinh(float x_11)
+{
+    float r_3 = (float)0;
+
+    float a_20 = abs(x_11);
+    r_3 = (AIRLIGHT_LN_2_ + log(a_20));
+    if ((a_20 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_20 + ((a_20 * a_20) / (1.0 + sqrt((1.0 + (a_20 * a_20)))))));
+        r_3 = _e17;
+    }
+    float _e18 = r_3;
+    float _e19 = r_3;
+    return ((x_11 < 0.0) ? -(_e19) : _e18);
+}
+
+float airlight_to_w(AirlightSegment g_14, float s_15)
+{
+    if ((g_14.scale > 0.0)) {
+        const float _e9 = airlight_asinh(((s_15 - g_14.s_star) / g_14.scale));
+        return _e9;
+    }
+    return s_15;
+}
+
+typedef float airlight_ret_Constructarray5_float_[5];
+airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
+    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
+AirlightSegment ConstructAirlightSegment(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[5], uint arg5, uint arg6) {
+    AirlightSegment ret = (AirlightSegment)0;
+    ret.a = arg0;
+    ret.e = arg1;
+    ret.s_star = arg2;
+    ret.scale = arg3;
+    ret.edges = arg4;
+    ret.panels = arg5;
+    ret.outcome = arg6;
+    return ret;
+}
+
+typedef float airlight_ret_Constructarray3_float_[3];
+airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, float arg1, float arg2) {
+    float ret[3] = { arg0, arg1, arg2 };
+    return ret;
+}
+
+AirlightSegment airlight_segment(AirlightScene s_16)
+{
+    AirlightSegment g_15 = (AirlightSegment)0;
+    bool local_81 = (bool)0;
+    bool local_82 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
+    bool local_83 = (bool)0;
+    bool local_84 = (bool)0;
+    bool local_85 = (bool)0;
+    bool local_86 = (bool)0;
+    bool local_87 = (bool)0;
+    bool local_88 = (bool)0;
+    float scale = 0.0;
+    bool local_89 = (bool)0;
+    bool local_90 = (bool)0;
+    bool local_91 = (bool)0;
+    bool local_92 = (bool)0;
+    bool local_93 = (bool)0;
+    float cuts_1[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
+    uint i_17 = 0u;
+    bool local_94 = (bool)0;
+    bool local_95 = (bool)0;
+    bool local_96 = (bool)0;
+    uint n_1 = 0u;
+    uint i_18 = 0u;
+    bool local_97 = (bool)0;
+
+    g_15 = ConstructAirlightSegment(s_16.light_position, (0.0).xxx, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u);
+    if ((s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightSegment _e19 = g_15;
+        const AirlightSegment airlightsegment = _e19;
+        return airlightsegment;
+    }
+    float3 ab_1 = (s_16.light_end - s_16.light_position);
+    const float _e23 = airlight_safe_length(ab_1);
+    if (!(!((_e23 > 0.0)))) {
+        local_81 = (s_16.intensity == 0.0);
+    } else {
+        local_81 = true;
+    }
+    bool _e34 = local_81;
+    if (!(_e34)) {
+        local_82 = (s_16.sigma_s == 0.0);
+    } else {
+        local_82 = true;
+    }
+    bool _e42 = local_82;
+    if (_e42) {
+        g_15.outcome = 1u;
+        AirlightSegment _e45 = g_15;
+        const AirlightSegment airlightsegment_1 = _e45;
+        return airlightsegment_1;
+    }
+    float3 e_4 = (ab_1 / (_e23).xxx);
+    const float3 _e49 = airlight_normalize(s_16.dir);
+    float3 w0_ = (s_16.light_position - s_16.origin);
+    float cos_a = dot(e_4, _e49);
+    float along_e = dot(e_4, w0_);
+    float along_d = dot(_e49, w0_);
+    float sin2_ = (1.0 - (cos_a * cos_a));
+    bool infinite_4 = ((s_16.flags & 1u) != 0u);
+    t_star = along_d;
+    if ((sin2_ > AIRLIGHT_FLT_EPS)) {
+        s_star = (((cos_a * along_d) - along_e) / sin2_);
+        t_star = ((along_d - (cos_a * along_e)) / sin2_);
+    }
+    float _e75 = t_star;
+    float _e78 = s_star;
+    const float _e81 = airlight_safe_length(((w0_ - (_e49 * _e75)) + (e_4 * _e78)));
+    float sin_a = sqrt(max(sin2_, 0.0));
+    if ((_e81 == 0.0)) {
+        local_83 = (sin_a > 0.0);
+    } else {
+        local_83 = false;
+    }
+    bool _e92 = local_83;
+    if (_e92) {
+        float _e95 = s_star;
+        local_84 = (_e95 >= 0.0);
+    } else {
+        local_84 = false;
+    }
+    bool _e99 = local_84;
+    if (_e99) {
+        float _e102 = s_star;
+        local_85 = (_e102 <= _e23);
+    } else {
+        local_85 = false;
+    }
+    bool _e105 = local_85;
+    if (_e105) {
+        float _e109 = t_star;
+        local_86 = (s_16.t_min <= _e109);
+    } else {
+        local_86 = false;
+    }
+    bool _e112 = local_86;
+    if (_e112) {
+        if (!(infinite_4)) {
+            float _e118 = t_star;
+            local_88 = (_e118 <= s_16.t_max);
+        } else {
+            local_88 = true;
+        }
+        bool _e122 = local_88;
+        local_87 = _e122;
+    } else {
+        local_87 = false;
+    }
+    bool _e124 = local_87;
+    if (_e124) {
+        g_15.outcome = 2u;
+        AirlightSegment _e127 = g_15;
+        const AirlightSegment airlightsegment_2 = _e127;
+        return airlightsegment_2;
+    }
+    if ((sin_a > 0.0)) {
+        local_89 = (_e81 > 0.0);
+    } else {
+        local_89 = false;
+    }
+    bool _e137 = local_89;
+    if (_e137) {
+        scale = (_e81 / sin_a);
+    }
+    float _e139 = s_star;
+    if ((_e139 > -(_e23))) {
+        float _e144 = s_star;
+        local_90 = (_e144 < (_e23 + _e23));
+    } else {
+        local_90 = false;
+    }
+    bool _e148 = local_90;
+    if (_e148) {
+        float _e151 = scale;
+        local_91 = (_e151 < _e23);
+    } else {
+        local_91 = false;
+    }
+    bool near_2 = local_91;
+    if (near_2) {
+        float _e157 = s_star;
+        float _e159 = scale;
+        const float _e161 = airlight_asinh(((_e23 - _e157) / _e159));
+        const bool _e162 = airlight_is_finite(_e161);
+        local_92 = _e162;
+    } else {
+        local_92 = false;
+    }
+    bool _e164 = local_92;
+    if (_e164) {
+        float _e167 = s_star;
+        float _e168 = scale;
+        const float _e170 = airlight_asinh((_e167 / _e168));
+        const bool _e171 = airlight_is_finite(_e170);
+        local_93 = _e171;
+    } else {
+        local_93 = false;
+    }
+    bool _e173 = local_93;
+    if (!(_e173)) {
+        scale = 0.0;
+    }
+    g_15.e = e_4;
+    float _e178 = s_star;
+    g_15.s_star = _e178;
+    float _e180 = scale;
+    g_15.scale = _e180;
+    float _e186 = s_star;
+    at = airlight_Constructarray3_float_(_e186, ((s_16.t_min - along_d) / cos_a), ((s_16.t_max - along_d) / cos_a));
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
+    while(true) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e237 = i_17;
+            i_17 = (_e237 + 1u);
+        }
+        loop_init_23 = false;
+        uint _e197 = i_17;
+        if ((_e197 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            if ((cos_a == 0.0)) {
+                uint _e204 = i_17;
+                local_94 = (_e204 > 0u);
+            } else {
+                local_94 = false;
+            }
+            bool _e208 = local_94;
+            if (_e208) {
+                continue;
+            }
+            uint _e209 = i_17;
+            if ((_e209 == 2u)) {
+                local_95 = infinite_4;
+            } else {
+                local_95 = false;
+            }
+            bool _e215 = local_95;
+            if (_e215) {
+                continue;
+            }
+            uint _e216 = i_17;
+            float _e218 = at[min(uint(_e216), 2u)];
+            if ((_e218 > 0.0)) {
+                uint _e223 = i_17;
+                float _e225 = at[min(uint(_e223), 2u)];
+                local_96 = (_e225 < _e23);
+            } else {
+                local_96 = false;
+            }
+            bool _e228 = local_96;
+            if (_e228) {
+                uint _e229 = i_17;
+                AirlightSegment _e231 = g_15;
+                uint _e232 = i_17;
+                float _e234 = at[min(uint(_e232), 2u)];
+                const float _e235 = airlight_to_w(_e231, _e234);
+                cuts_1[min(uint(_e229), 2u)] = _e235;
+            }
+        }
+    }
+    float _e240 = cuts_1[1];
+    float _e242 = cuts_1[0];
+    if ((_e240 < _e242)) {
+        float c_8 = cuts_1[0];
+        float _e248 = cuts_1[1];
+        cuts_1[0] = _e248;
+        cuts_1[1] = c_8;
+    }
+    float _e251 = cuts_1[2];
+    float _e253 = cuts_1[1];
+    if ((_e251 < _e253)) {
+        float c_9 = cuts_1[1];
+        float _e259 = cuts_1[2];
+        cuts_1[1] = _e259;
+        cuts_1[2] = c_9;
+    }
+    float _e262 = cuts_1[1];
+    float _e264 = cuts_1[0];
+    if ((_e262 < _e264)) {
+        float c_10 = cuts_1[0];
+        float _e270 = cuts_1[1];
+        cuts_1[0] = _e270;
+        cuts_1[1] = c_10;
+    }
+    AirlightSegment _e272 = g_15;
+    const float _e273 = airlight_to_w(_e272, _e23);
+    AirlightSegment _e276 = g_15;
+    const float _e278 = airlight_to_w(_e276, 0.0);
+    g_15.edges[0] = _e278;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e312 = i_18;
+            i_18 = (_e312 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e283 = i_18;
+        if ((_e283 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e286 = i_18;
+            float _e288 = cuts_1[min(uint(_e286), 2u)];
+            uint _e290 = n_1;
+            float _e292 = g_15.edges[min(uint(_e290), 4u)];
+            if ((_e288 > _e292)) {
+                uint _e296 = i_18;
+                float _e298 = cuts_1[min(uint(_e296), 2u)];
+                local_97 = (_e298 < _e273);
+            } else {
+                local_97 = false;
+            }
+            bool _e301 = local_97;
+            if (_e301) {
+                uint _e302 = n_1;
+                n_1 = (_e302 + 1u);
+                uint _e306 = n_1;
+                uint _e308 = i_18;
+                float _e310 = cuts_1[min(uint(_e308), 2u)];
+                g_15.edges[min(uint(_e306), 4u)] = _e310;
+            }
+        }
+    }
+    uint _e315 = n_1;
+    g_15.edges[min(uint((_e315 + 1u)), 4u)] = _e273;
+    uint _e320 = n_1;
+    g_15.panels = (_e320 + 1u);
+    AirlightSegment _e323 = g_15;
+    const AirlightSegment airlightsegment_3 = _e323;
+    return airlightsegment_3;
+}
+
+AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5) {
+    AirlightPanelList ret = (AirlightPanelList)0;
+    ret.panel_a = arg0;
+    ret.panel_b = arg1;
+    ret.panel_c = arg2;
+    ret.panel_d = arg3;
+    ret.panel_e = arg4;
+    ret.panel_f = arg5;
+    return ret;
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_17)
+{
+    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    uint count_2 = 0u;
+    float a_16 = (float)0;
+    float b_12 = (float)0;
+    uint slot_1 = 0u;
+    bool queued = false;
+    float queued_lo = 0.0;
+    float queued_hi = 0.0;
+    uint step_1 = 0u;
+    float k_5 = (float)0;
+    float gauss = (float)0;
+    uint j_4 = (uint)0;
+    bool local_98 = (bool)0;
+    float at_1 = (float)0;
+    float ds = (float)0;
+    AirlightScene p = (AirlightScene)0;
+    AirlightResult r_4 = (AirlightResult)0;
+    bool local_99 = (bool)0;
+    bool split = (bool)0;
+    uint tries = (uint)0;
+    bool local_100 = (bool)0;
+    bool local_101 = (bool)0;
+    bool local_102 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_17);
     if (!(_e1)) {
         const AirlightResult airlightresult_5 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_5;
     }
-    const AirlightCanonical _e6 = airlight_canonical(s_15);
-    const AirlightCanonical _e7 = airlight_refined(s_15, _e6);
-    const AirlightResult _e8 = airlight_in_scatter_canonical(s_15, _e7);
-    const bool _e10 = airlight_is_finite(_e8.in_scatter);
-    if (!(_e10)) {
-        const AirlightResult airlightresult_6 = ConstructAirlightResult(3.4028235e38, 2u);
+    const AirlightSegment _e6 = airlight_segment(s_17);
+    if ((_e6.outcome == 1u)) {
+        const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_6;
     }
-    const AirlightResult airlightresult_7 = _e8;
-    return airlightresult_7;
+    if ((_e6.outcome == 2u)) {
+        const AirlightResult airlightresult_7 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_7;
+    }
+    const float3 _e19[4] = airlight_kronrod_rule();
+    a_16 = _e6.edges[0];
+    b_12 = _e6.edges[1];
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
+    while(true) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e261 = step_1;
+            step_1 = (_e261 + 1u);
+        }
+        loop_init_25 = false;
+        uint _e53 = step_1;
+        if ((_e53 < AIRLIGHT_SEGMENT_EVALUATIONS)) {
+        } else {
+            break;
+        }
+        {
+            float _e56 = a_16;
+            float _e57 = b_12;
+            float c_11 = (0.5 * (_e56 + _e57));
+            float _e61 = b_12;
+            float _e62 = a_16;
+            float hw_1 = (0.5 * (_e61 - _e62));
+            k_5 = 0.0;
+            gauss = 0.0;
+            j_4 = 0u;
+            uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+            bool loop_init_26 = true;
+            while(true) {
+                if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_26) {
+                    uint _e167 = j_4;
+                    j_4 = (_e167 + 1u);
+                }
+                loop_init_26 = false;
+                uint _e72 = j_4;
+                if ((_e72 < 7u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e75 = j_4;
+                    float3 node = _e19[min(uint(airlight_naga_div(_e75, 2u)), 3u)];
+                    uint _e85 = j_4;
+                    if (((_e85 & 1u) == 0u)) {
+                        uint _e92 = j_4;
+                        local_98 = (_e92 < 6u);
+                    } else {
+                        local_98 = false;
+                    }
+                    bool _e96 = local_98;
+                    float w_4 = (_e96 ? (c_11 - (hw_1 * node.x)) : (c_11 + (hw_1 * node.x)));
+                    at_1 = w_4;
+                    ds = 1.0;
+                    if ((_e6.scale > 0.0)) {
+                        at_1 = (_e6.s_star + (_e6.scale * sinh(w_4)));
+                        ds = (_e6.scale * cosh(w_4));
+                    }
+                    p = s_17;
+                    float _e115 = at_1;
+                    p.light_position = (_e6.a + (_e115 * _e6.e));
+                    p.light_shape = AIRLIGHT_SHAPE_POINT;
+                    r_4 = ConstructAirlightResult(0.0, 0u);
+                    float3 _e126 = p.light_position;
+                    const bool _e127 = airlight_vec_finite(_e126);
+                    if (_e127) {
+                        AirlightScene _e128 = p;
+                        AirlightScene _e129 = p;
+                        AirlightScene _e130 = p;
+                        const AirlightCanonical _e131 = airlight_canonical(_e130);
+                        const AirlightCanonical _e132 = airlight_refined(_e129, _e131);
+                        const AirlightResult _e133 = airlight_in_scatter_canonical(_e128, _e132);
+                        r_4 = _e133;
+                    }
+                    float _e135 = r_4.in_scatter;
+                    const bool _e136 = airlight_is_finite(_e135);
+                    if (!(!(_e136))) {
+                        uint _e142 = r_4.status;
+                        local_99 = (_e142 == AIRLIGHT_STATUS_INFINITE);
+                    } else {
+                        local_99 = true;
+                    }
+                    bool _e146 = local_99;
+                    if (_e146) {
+                        const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
+                        return airlightresult_8;
+                    }
+                    if ((s_17.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                        AirlightResult _e153 = r_4;
+                        const AirlightResult airlightresult_9 = _e153;
+                        return airlightresult_9;
+                    }
+                    float _e155 = r_4.in_scatter;
+                    float _e156 = ds;
+                    float f_3 = (_e155 * _e156);
+                    float _e158 = k_5;
+                    k_5 = (_e158 + (node.y * f_3));
+                    float _e162 = gauss;
+                    gauss = (_e162 + (node.z * f_3));
+                }
+            }
+            uint _e169 = slot_1;
+            float _e170 = a_16;
+            float _e171 = b_12;
+            float _e172 = k_5;
+            float _e174 = k_5;
+            float _e176 = gauss;
+            airlight_list_set(list_1, _e169, float4(_e170, _e171, (_e172 * hw_1), abs(((_e174 * hw_1) - (_e176 * hw_1)))));
+            uint _e181 = slot_1;
+            uint _e182 = count_2;
+            if ((_e181 == _e182)) {
+                uint _e184 = count_2;
+                count_2 = (_e184 + 1u);
+            }
+            uint _e187 = count_2;
+            if ((_e187 < _e6.panels)) {
+                uint _e191 = count_2;
+                a_16 = _e6.edges[min(uint(_e191), 4u)];
+                uint _e194 = count_2;
+                b_12 = _e6.edges[min(uint((_e194 + 1u)), 4u)];
+                uint _e198 = count_2;
+                slot_1 = _e198;
+            } else {
+                bool _e199 = queued;
+                if (_e199) {
+                    float _e200 = queued_lo;
+                    a_16 = _e200;
+                    float _e201 = queued_hi;
+                    b_12 = _e201;
+                    uint _e202 = count_2;
+                    slot_1 = _e202;
+                    queued = false;
+                } else {
+                    split = false;
+                    tries = 0u;
+                    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_27 = true;
+                    while(true) {
+                        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+                        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                        if (!loop_init_27) {
+                            uint _e256 = tries;
+                            tries = (_e256 + 1u);
+                        }
+                        loop_init_27 = false;
+                        uint _e208 = tries;
+                        if ((_e208 < AIRLIGHT_SEGMENT_PANELS)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            AirlightPanelList _e211 = list_1;
+                            uint _e212 = count_2;
+                            const AirlightListScan _e213 = airlight_list_scan(_e211, _e212);
+                            float total_4 = _e213.total;
+                            uint worst_1 = _e213.worst;
+                            if (!(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e224 = count_2;
+                                local_100 = (_e224 == AIRLIGHT_SEGMENT_PANELS);
+                            } else {
+                                local_100 = true;
+                            }
+                            bool _e228 = local_100;
+                            if (!(_e228)) {
+                                const bool _e232 = airlight_is_finite(total_4);
+                                local_101 = !(_e232);
+                            } else {
+                                local_101 = true;
+                            }
+                            bool _e235 = local_101;
+                            if (_e235) {
+                                break;
+                            }
+                            AirlightPanelList _e236 = list_1;
+                            const float4 _e237 = airlight_list_get(_e236, worst_1);
+                            float wa_1 = _e237.x;
+                            float wb_1 = _e237.y;
+                            float mid_1 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_1 > wa_1)) {
+                                local_102 = (mid_1 < wb_1);
+                            } else {
+                                local_102 = false;
+                            }
+                            bool _e248 = local_102;
+                            if (!(_e248)) {
+                                airlight_list_set(list_1, worst_1, float4(_e237.xyz, 0.0));
+                                continue;
+                            }
+                            a_16 = wa_1;
+                            b_12 = mid_1;
+                            slot_1 = worst_1;
+                            queued = true;
+                            queued_lo = mid_1;
+                            queued_hi = wb_1;
+                            split = true;
+                            break;
+                        }
+                    }
+                    bool _e258 = split;
+                    if (!(_e258)) {
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    AirlightPanelList _e263 = list_1;
+    uint _e264 = count_2;
+    const AirlightListScan _e265 = airlight_list_scan(_e263, _e264);
+    float total_5 = _e265.total;
+    const bool _e267 = airlight_is_finite(total_5);
+    if (!(_e267)) {
+        const AirlightResult airlightresult_10 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_10;
+    }
+    const AirlightResult airlightresult_11 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_11;
 }
 
 uint airlight_NagaBufferLength(ByteAddressBuffer buffer)
@@ -4022,7 +4829,7 @@ uint airlight_NagaBufferLength(ByteAddressBuffer buffer)
     return ret;
 }
 
-AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16) {
+AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16, float3 arg17, uint arg18) {
     AirlightScene ret = (AirlightScene)0;
     ret.origin = arg0;
     ret.t_min = arg1;
@@ -4041,22 +4848,24 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
     ret.light_kind = arg14;
     ret.phase_kind = arg15;
     ret.flags = arg16;
+    ret.light_end = arg17;
+    ret.light_shape = arg18;
     return ret;
 }
 
 [numthreads(64, 1, 1)]
 void airlight_main(uint3 id : SV_DispatchThreadID)
 {
-    uint i_15 = id.x;
-    if ((i_15 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 112))) {
+    uint i_19 = id.x;
+    if ((i_19 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 128))) {
         return;
     }
-    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_15*112+0)), asfloat(airlight_records.Load(i_15*112+12)), asfloat(airlight_records.Load3(i_15*112+16)), asfloat(airlight_records.Load(i_15*112+28)), asfloat(airlight_records.Load3(i_15*112+32)), asfloat(airlight_records.Load(i_15*112+44)), asfloat(airlight_records.Load3(i_15*112+48)), asfloat(airlight_records.Load(i_15*112+60)), asfloat(airlight_records.Load(i_15*112+64)), asfloat(airlight_records.Load(i_15*112+68)), asfloat(airlight_records.Load(i_15*112+72)), asfloat(airlight_records.Load(i_15*112+76)), asfloat(airlight_records.Load(i_15*112+80)), asfloat(airlight_records.Load(i_15*112+84)), asuint(airlight_records.Load(i_15*112+88)), asuint(airlight_records.Load(i_15*112+92)), asuint(airlight_records.Load(i_15*112+96)));
+    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_19*128+0)), asfloat(airlight_records.Load(i_19*128+12)), asfloat(airlight_records.Load3(i_19*128+16)), asfloat(airlight_records.Load(i_19*128+28)), asfloat(airlight_records.Load3(i_19*128+32)), asfloat(airlight_records.Load(i_19*128+44)), asfloat(airlight_records.Load3(i_19*128+48)), asfloat(airlight_records.Load(i_19*128+60)), asfloat(airlight_records.Load(i_19*128+64)), asfloat(airlight_records.Load(i_19*128+68)), asfloat(airlight_records.Load(i_19*128+72)), asfloat(airlight_records.Load(i_19*128+76)), asfloat(airlight_records.Load(i_19*128+80)), asfloat(airlight_records.Load(i_19*128+84)), asuint(airlight_records.Load(i_19*128+88)), asuint(airlight_records.Load(i_19*128+92)), asuint(airlight_records.Load(i_19*128+96)), asfloat(airlight_records.Load3(i_19*128+112)), asuint(airlight_records.Load(i_19*128+124)));
     const AirlightResult _e10 = airlight_in_scatter(_e9);
     {
         AirlightResult _value2 = _e10;
-        airlight_results.Store(i_15*8+0, asuint(_value2.in_scatter));
-        airlight_results.Store(i_15*8+4, asuint(_value2.status));
+        airlight_results.Store(i_19*8+0, asuint(_value2.in_scatter));
+        airlight_results.Store(i_19*8+4, asuint(_value2.status));
     }
     return;
 }

@@ -36,6 +36,8 @@ struct AirlightScene {
     uint phase_kind;
     uint flags;
     char _pad17[12];
+    metal::packed_float3 light_end;
+    uint light_shape;
 };
 struct AirlightResult {
     float in_scatter;
@@ -80,8 +82,39 @@ struct airlight_type_11 {
 struct airlight_type_12 {
     float inner[4];
 };
-typedef AirlightScene airlight_type_13[1];
-typedef AirlightResult airlight_type_14[1];
+struct airlight_type_13 {
+    metal::float3 inner[4];
+};
+struct AirlightPanelList {
+    metal::float4 panel_a;
+    metal::float4 panel_b;
+    metal::float4 panel_c;
+    metal::float4 panel_d;
+    metal::float4 panel_e;
+    metal::float4 panel_f;
+};
+struct AirlightListScan {
+    float total;
+    float errors;
+    uint worst;
+};
+struct airlight_type_15 {
+    float inner[5];
+};
+struct AirlightSegment {
+    metal::float3 a;
+    metal::packed_float3 e;
+    float s_star;
+    float scale;
+    airlight_type_15 edges;
+    uint panels;
+    uint outcome;
+};
+struct airlight_type_16 {
+    float inner[3];
+};
+typedef AirlightScene airlight_type_17[1];
+typedef AirlightResult airlight_type_18[1];
 constant uint AIRLIGHT_TERMS = 8u;
 constant uint AIRLIGHT_HALF_TERMS = 4u;
 constant float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -105,6 +138,8 @@ constant uint AIRLIGHT_PHASE_TWO_LOBE_HG = 5u;
 constant uint AIRLIGHT_LIGHT_OMNI = 0u;
 constant uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 constant uint AIRLIGHT_LIGHT_SPOT = 2u;
+constant uint AIRLIGHT_SHAPE_POINT = 0u;
+constant uint AIRLIGHT_SHAPE_SEGMENT = 1u;
 constant uint AIRLIGHT_STATUS_OK = 0u;
 constant uint AIRLIGHT_STATUS_INVALID = 1u;
 constant uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -116,6 +151,8 @@ constant float AIRLIGHT_E1_INV_RE = 0.7692308;
 constant float AIRLIGHT_E1_INV_IM = 0.47619048;
 constant uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 constant uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
+constant uint AIRLIGHT_SEGMENT_PANELS = 6u;
+constant uint AIRLIGHT_SEGMENT_EVALUATIONS = 11u;
 
 airlight_type_2 airlight_zero_terms(
 ) {
@@ -139,13 +176,13 @@ metal::float2 airlight_cdiv(
     metal::float2 b_1
 ) {
     if (metal::abs(b_1.x) >= metal::abs(b_1.y)) {
-        float r_2 = b_1.y / b_1.x;
-        float inv = 1.0 / (b_1.x + (b_1.y * r_2));
-        return metal::float2((a_1.x + (a_1.y * r_2)) * inv, (a_1.y - (a_1.x * r_2)) * inv);
+        float r_5 = b_1.y / b_1.x;
+        float inv = 1.0 / (b_1.x + (b_1.y * r_5));
+        return metal::float2((a_1.x + (a_1.y * r_5)) * inv, (a_1.y - (a_1.x * r_5)) * inv);
     }
-    float r_3 = b_1.x / b_1.y;
-    float inv_1 = 1.0 / ((b_1.x * r_3) + b_1.y);
-    return metal::float2(((a_1.x * r_3) + a_1.y) * inv_1, ((a_1.y * r_3) - a_1.x) * inv_1);
+    float r_6 = b_1.x / b_1.y;
+    float inv_1 = 1.0 / ((b_1.x * r_6) + b_1.y);
+    return metal::float2(((a_1.x * r_6) + a_1.y) * inv_1, ((a_1.y * r_6) - a_1.x) * inv_1);
 }
 
 float airlight_cabs(
@@ -206,7 +243,7 @@ metal::float2 airlight_cos_sin(
         }
         {
             uint _e12 = k;
-            uint n_1 = 8u - _e12;
+            uint n_2 = 8u - _e12;
             float _e14 = c;
             c = _e14 * z_8;
             float _e16 = s;
@@ -224,7 +261,7 @@ metal::float2 airlight_cos_sin(
                 }
                 loop_init_1 = false;
                 uint _e22 = j;
-                if (_e22 <= (2u * n_1)) {
+                if (_e22 <= (2u * n_2)) {
                 } else {
                     break;
                 }
@@ -234,13 +271,13 @@ metal::float2 airlight_cos_sin(
                     fc = _e26 * static_cast<float>(_e27);
                 }
             }
-            float sign = ((n_1 & 1u) == 1u) ? -1.0 : 1.0;
+            float sign = ((n_2 & 1u) == 1u) ? -1.0 : 1.0;
             float _e40 = c;
             float _e41 = fc;
             c = _e40 + (sign / _e41);
             float _e44 = s;
             float _e45 = fc;
-            s = _e44 + (sign / (_e45 * static_cast<float>((2u * n_1) + 1u)));
+            s = _e44 + (sign / (_e45 * static_cast<float>((2u * n_2) + 1u)));
         }
     }
     float _e57 = c;
@@ -302,8 +339,8 @@ float airlight_log1p(
     if (x_2 > 1.0) {
         return metal::log(1.0 + x_2);
     }
-    float s_16 = x_2 / (2.0 + x_2);
-    float s2_ = s_16 * s_16;
+    float s_18 = x_2 / (2.0 + x_2);
+    float s2_ = s_18 * s_18;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -326,7 +363,7 @@ float airlight_log1p(
         }
     }
     float _e35 = sum;
-    return (2.0 * s_16) * _e35;
+    return (2.0 * s_18) * _e35;
 }
 
 bool airlight_is_finite(
@@ -413,9 +450,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_11 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_12 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_3 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_11 * x_11) + (y_3 * y_3)) < 1.0;
+    return ((x_12 * x_12) + (y_3 * y_3)) < 1.0;
 }
 
 uint airlight_cf_depth(
@@ -494,8 +531,8 @@ metal::float2 airlight_e1_scaled_cf(
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = static_cast<float>(_e14);
-    metal::float2 b_12 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
-    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_12);
+    metal::float2 b_13 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_13);
     metal::float2 _e33 = airlight_cmul(_e29, _e29);
     metal::float2 _e35 = airlight_csqrt(metal::float2(1.0, 0.0) - _e33);
     root = _e35;
@@ -505,7 +542,7 @@ metal::float2 airlight_e1_scaled_cf(
         root = -(_e41);
     }
     metal::float2 _e46 = root;
-    metal::float2 _e48 = airlight_cmul(b_12, metal::float2(1.0, 0.0) + _e46);
+    metal::float2 _e48 = airlight_cmul(b_13, metal::float2(1.0, 0.0) + _e46);
     t_1 = _e48 * 0.5;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_5 = true;
@@ -577,12 +614,12 @@ float airlight_en_scaled_cf(
     uint _e2 = airlight_cf_depth(x_4);
     float nf_1 = static_cast<float>(n);
     float m_5 = static_cast<float>(_e2);
-    float b_13 = (x_4 + nf_1) + (2.0 * (m_5 + 1.0));
-    float a_16 = (m_5 + 2.0) * ((nf_1 + m_5) + 1.0);
-    float disc = 1.0 - ((4.0 * a_16) / (b_13 * b_13));
-    t_2 = b_13;
+    float b_14 = (x_4 + nf_1) + (2.0 * (m_5 + 1.0));
+    float a_17 = (m_5 + 2.0) * ((nf_1 + m_5) + 1.0);
+    float disc = 1.0 - ((4.0 * a_17) / (b_14 * b_14));
+    t_2 = b_14;
     if (disc > 0.0) {
-        t_2 = (b_13 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_14 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
     uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_6 = true;
@@ -734,11 +771,11 @@ float airlight_hg_base(
     float op
 ) {
     if (g >= 0.0) {
-        float a_17 = 1.0 - g;
-        return (om * (g + g)) + (a_17 * a_17);
+        float a_18 = 1.0 - g;
+        return (om * (g + g)) + (a_18 * a_18);
     }
-    float b_14 = 1.0 + g;
-    return (op * -((g + g))) + (b_14 * b_14);
+    float b_15 = 1.0 + g;
+    return (op * -((g + g))) + (b_15 * b_15);
 }
 
 float airlight_hg(
@@ -858,8 +895,8 @@ float airlight_light(
             if (width <= AIRLIGHT_FLT_EPS) {
                 return (c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0;
             }
-            float x_12 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
-            return (x_12 * x_12) * (3.0 - (2.0 * x_12));
+            float x_13 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
+            return (x_13 * x_13) * (3.0 - (2.0 * x_13));
         }
         default: {
             return 1.0;
@@ -1000,10 +1037,10 @@ float airlight_q_zero(
             float _e48 = airlight_atan(half_1.dv / (1.0 + (v_s_1 * _e43)));
             d_im = _e48;
             float _e50 = v_e;
-            float x_13 = (half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e57 = airlight_is_finite(x_13);
+            float x_14 = (half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e57 = airlight_is_finite(x_14);
             if (_e57) {
-                float _e58 = airlight_log1p(x_13);
+                float _e58 = airlight_log1p(x_14);
                 d_re = 0.5 * _e58;
             } else {
                 float _e63 = v_e;
@@ -1105,8 +1142,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_14 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_14) : x_14;
+    float x_15 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_15) : x_15;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1572,8 +1609,8 @@ float airlight_factor(
         offset = (half_3.y_hi - b_3) / (b_3 * half_3.y_hi);
     }
     float _e13 = offset;
-    float x_15 = half_3.big_h * _e13;
-    return (x_15 > 0.0) ? metal::exp(-(x_15)) : 1.0;
+    float x_16 = half_3.big_h * _e13;
+    return (x_16 > 0.0) ? metal::exp(-(x_16)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -1633,8 +1670,8 @@ AirlightPanel airlight_v_panel(
             float _e38 = r_1;
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
-            float v_5 = _e37 + (_e38 * _e40);
-            metal::float2 _e46 = airlight_integrand_over(s_3, g_5, half_4.second ? -(sigma_2) : sigma_2, v_5);
+            float v_6 = _e37 + (_e38 * _e40);
+            metal::float2 _e46 = airlight_integrand_over(s_3, g_5, half_4.second ? -(sigma_2) : sigma_2, v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1702,8 +1739,8 @@ AirlightPanel airlight_y_panel(
     uint i_8 = 0u;
     airlight_type_2 m_2 = {};
     airlight_type_8 _e6 = airlight_gauss_rule();
-    float r_4 = (b_5 - a_6) * 0.5;
-    float yc_1 = a_6 + r_4;
+    float r_7 = (b_5 - a_6) * 0.5;
+    float yc_1 = a_6 + r_7;
     airlight_type_2 _e11 = airlight_zero_terms();
     samples_1 = _e11;
     uint2 loop_bound_13 = uint2(4294967295u);
@@ -1724,8 +1761,8 @@ AirlightPanel airlight_y_panel(
         {
             uint _e26 = i_8;
             float _e27 = airlight_node(_e6, _e26);
-            float y_5 = yc_1 + (r_4 * _e27);
-            float weight = metal::exp((-(half_5.big_h) * (r_4 * (1.0 - _e27))) / (y_5 * b_5));
+            float y_5 = yc_1 + (r_7 * _e27);
+            float weight = metal::exp((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5));
             float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
             float over_1 = 1.0 / (1.0 + (y_5 * y_5));
             uint _e45 = i_8;
@@ -1747,7 +1784,7 @@ AirlightPanel airlight_y_panel(
     airlight_type_2 _e79 = samples_1;
     airlight_type_2 _e80 = airlight_legendre(_e79);
     float _e81 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = _e81 * r_4;
+    float w_1 = _e81 * r_7;
     airlight_type_2 _e83 = airlight_zero_terms();
     m_2 = _e83;
     m_2.inner[0] = 2.0;
@@ -1839,8 +1876,8 @@ AirlightPanel airlight_tail_panel(
     float spread = 0.0;
     float next = 0.0;
     airlight_type_8 _e6 = airlight_gauss_rule();
-    float r_5 = (b_6 - a_7) * 0.5;
-    float yc_2 = a_7 + r_5;
+    float r_8 = (b_6 - a_7) * 0.5;
+    float yc_2 = a_7 + r_8;
     airlight_type_2 _e11 = airlight_zero_terms();
     samples_2 = _e11;
     uint2 loop_bound_14 = uint2(4294967295u);
@@ -1861,7 +1898,7 @@ AirlightPanel airlight_tail_panel(
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_6 = yc_2 + (r_5 * _e23);
+            float y_6 = yc_2 + (r_8 * _e23);
             float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
             uint _e27 = i_9;
             samples_2.inner[metal::min(unsigned(_e27), 7u)] = _e26 / (1.0 + (y_6 * y_6));
@@ -1876,8 +1913,8 @@ AirlightPanel airlight_tail_panel(
     }
     airlight_type_2 _e53 = samples_2;
     airlight_type_2 _e54 = airlight_legendre(_e53);
-    float alpha = b_6 / r_5;
-    float beta = -(yc_2) / r_5;
+    float alpha = b_6 / r_8;
+    float beta = -(yc_2) / r_8;
     airlight_type_2 _e58 = airlight_legendre_to_monomial(_e54);
     airlight_type_2 _e59 = airlight_zero_terms();
     q = _e59;
@@ -2051,13 +2088,13 @@ AirlightPanel airlight_tail_panel(
     float _e528 = airlight_factor(half_6, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_16 = metal::abs(alpha) + metal::abs(beta);
+    float x_17 = metal::abs(alpha) + metal::abs(beta);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_16) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_17) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2067,7 +2104,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_16) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_17) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2077,7 +2114,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_16) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_17) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2087,7 +2124,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_16) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_17) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2097,7 +2134,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_16) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_17) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2107,7 +2144,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_16) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_17) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2117,7 +2154,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_16) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_17) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2127,7 +2164,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_16) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_17) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2432,9 +2469,9 @@ metal::float2 airlight_crossings(
     float a0_ = k_4 + (sigma_7 * d_el);
     float b0_ = -((d_c + d_c));
     float c0_ = k_4 - (sigma_7 * d_el);
-    float scale = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
-    if (!(!((scale > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale);
+    float scale_1 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
+    if (!(!((scale_1 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_1);
         local_16 = !(_e21);
     } else {
         local_16 = true;
@@ -2443,23 +2480,23 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_18 = a0_ / scale;
-    float b_15 = b0_ / scale;
-    float c_7 = c0_ / scale;
-    float disc_1 = (b_15 * b_15) - ((4.0 * a_18) * c_7);
+    float a_19 = a0_ / scale_1;
+    float b_16 = b0_ / scale_1;
+    float c_7 = c0_ / scale_1;
+    float disc_1 = (b_16 * b_16) - ((4.0 * a_19) * c_7);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_15 < 0.0) {
+    if (b_16 < 0.0) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_2 = -0.5 * (b_15 + (_e47 * metal::sqrt(disc_1)));
+    float q_2 = -0.5 * (b_16 + (_e47 * metal::sqrt(disc_1)));
     if (q_2 != 0.0) {
         r1_ = c_7 / q_2;
     }
-    if (a_18 != 0.0) {
-        r2_2 = q_2 / a_18;
+    if (a_19 != 0.0) {
+        r2_2 = q_2 / a_19;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -2795,7 +2832,7 @@ float airlight_whole_line(
     AirlightHalf half_12 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
     float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_12);
-    float j_4 = _e54 * _e55;
+    float j_5 = _e54 * _e55;
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = big_h_1 * _e8;
@@ -2805,7 +2842,7 @@ float airlight_whole_line(
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_4);
+    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -2815,8 +2852,8 @@ float airlight_cut_length(
 ) {
     float inv_h = 1.0 / big_h_2;
     float w_2 = v_s + inv_h;
-    float r_6 = (1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s));
-    float e_1 = 1.0 + metal::log((8.0 * r_6) / (0.000100000005 * 0.0001));
+    float r_9 = (1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s));
+    float e_1 = 1.0 + metal::log((8.0 * r_9) / (0.000100000005 * 0.0001));
     return e_1 * inv_h;
 }
 
@@ -3199,6 +3236,7 @@ bool airlight_valid(
     bool local_73 = {};
     bool local_74 = {};
     bool local_75 = {};
+    bool local_76 = {};
     bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_12.dir);
@@ -3285,77 +3323,92 @@ bool airlight_valid(
         bool _e85 = local_60;
         ok = _e85;
     }
-    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_12.light_axis);
+            bool _e93 = airlight_vec_finite(s_12.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
         }
         bool _e95 = local_61;
-        if (_e95) {
-            bool _e99 = airlight_normalisable(s_12.light_axis);
-            local_62 = _e99;
+        ok = _e95;
+    } else {
+        if (s_12.light_shape != AIRLIGHT_SHAPE_POINT) {
+            ok = false;
+        }
+    }
+    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        bool _e103 = ok;
+        if (_e103) {
+            bool _e107 = airlight_vec_finite(s_12.light_axis);
+            local_62 = _e107;
         } else {
             local_62 = false;
         }
-        bool _e101 = local_62;
-        if (_e101) {
-            local_63 = s_12.light_param_a >= 0.0;
+        bool _e109 = local_62;
+        if (_e109) {
+            bool _e113 = airlight_normalisable(s_12.light_axis);
+            local_63 = _e113;
         } else {
             local_63 = false;
         }
-        bool _e108 = local_63;
-        if (_e108) {
-            local_64 = s_12.light_param_a <= 1024.0;
+        bool _e115 = local_63;
+        if (_e115) {
+            local_64 = s_12.light_param_a >= 0.0;
         } else {
             local_64 = false;
         }
-        bool _e115 = local_64;
-        if (_e115) {
-            local_65 = metal::fract(s_12.light_param_a * 0.5) == 0.0;
+        bool _e122 = local_64;
+        if (_e122) {
+            local_65 = s_12.light_param_a <= 1024.0;
         } else {
             local_65 = false;
         }
-        bool _e125 = local_65;
-        ok = _e125;
+        bool _e129 = local_65;
+        if (_e129) {
+            local_66 = metal::fract(s_12.light_param_a * 0.5) == 0.0;
+        } else {
+            local_66 = false;
+        }
+        bool _e139 = local_66;
+        ok = _e139;
     } else {
         if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            bool _e129 = ok;
-            if (_e129) {
-                bool _e133 = airlight_vec_finite(s_12.light_axis);
-                local_66 = _e133;
-            } else {
-                local_66 = false;
-            }
-            bool _e135 = local_66;
-            if (_e135) {
-                bool _e139 = airlight_normalisable(s_12.light_axis);
-                local_67 = _e139;
+            bool _e143 = ok;
+            if (_e143) {
+                bool _e147 = airlight_vec_finite(s_12.light_axis);
+                local_67 = _e147;
             } else {
                 local_67 = false;
             }
-            bool _e141 = local_67;
-            if (_e141) {
-                local_68 = s_12.light_param_b < s_12.light_param_a;
+            bool _e149 = local_67;
+            if (_e149) {
+                bool _e153 = airlight_normalisable(s_12.light_axis);
+                local_68 = _e153;
             } else {
                 local_68 = false;
             }
-            bool _e148 = local_68;
-            if (_e148) {
-                local_69 = s_12.light_param_b >= -1.0;
+            bool _e155 = local_68;
+            if (_e155) {
+                local_69 = s_12.light_param_b < s_12.light_param_a;
             } else {
                 local_69 = false;
             }
-            bool _e155 = local_69;
-            if (_e155) {
-                local_70 = s_12.light_param_a <= 1.0;
+            bool _e162 = local_69;
+            if (_e162) {
+                local_70 = s_12.light_param_b >= -1.0;
             } else {
                 local_70 = false;
             }
-            bool _e162 = local_70;
-            ok = _e162;
+            bool _e169 = local_70;
+            if (_e169) {
+                local_71 = s_12.light_param_a <= 1.0;
+            } else {
+                local_71 = false;
+            }
+            bool _e176 = local_71;
+            ok = _e176;
         } else {
             if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -3371,43 +3424,43 @@ bool airlight_valid(
         case 2u:
         case 3u:
         case 4u: {
-            bool _e172 = ok;
-            if (_e172) {
-                local_71 = g_ok;
-            } else {
-                local_71 = false;
-            }
-            bool _e176 = local_71;
-            ok = _e176;
-            break;
-        }
-        case 5u: {
-            bool _e177 = ok;
-            if (_e177) {
+            bool _e186 = ok;
+            if (_e186) {
                 local_72 = g_ok;
             } else {
                 local_72 = false;
             }
-            bool _e181 = local_72;
-            if (_e181) {
-                local_73 = metal::abs(s_12.phase_param_b) < 1.0;
+            bool _e190 = local_72;
+            ok = _e190;
+            break;
+        }
+        case 5u: {
+            bool _e191 = ok;
+            if (_e191) {
+                local_73 = g_ok;
             } else {
                 local_73 = false;
             }
-            bool _e189 = local_73;
-            if (_e189) {
-                local_74 = s_12.phase_param_c >= 0.0;
+            bool _e195 = local_73;
+            if (_e195) {
+                local_74 = metal::abs(s_12.phase_param_b) < 1.0;
             } else {
                 local_74 = false;
             }
-            bool _e196 = local_74;
-            if (_e196) {
-                local_75 = s_12.phase_param_c <= 1.0;
+            bool _e203 = local_74;
+            if (_e203) {
+                local_75 = s_12.phase_param_c >= 0.0;
             } else {
                 local_75 = false;
             }
-            bool _e203 = local_75;
-            ok = _e203;
+            bool _e210 = local_75;
+            if (_e210) {
+                local_76 = s_12.phase_param_c <= 1.0;
+            } else {
+                local_76 = false;
+            }
+            bool _e217 = local_76;
+            ok = _e217;
             break;
         }
         default: {
@@ -3415,8 +3468,8 @@ bool airlight_valid(
             break;
         }
     }
-    bool _e205 = ok;
-    return _e205;
+    bool _e219 = ok;
+    return _e219;
 }
 
 AirlightCanonical airlight_canonical(
@@ -3501,21 +3554,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_76 = {};
     bool local_77 = {};
+    bool local_78 = {};
     float m_8 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if (m_8 >= 0.0000000009313226) {
-            local_77 = m_8 <= AIRLIGHT_EXACT_RANGE;
+            local_78 = m_8 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        bool _e21 = local_77;
-        local_76 = _e21;
+        bool _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_76 = true;
+        local_77 = true;
     }
-    bool _e23 = local_76;
+    bool _e23 = local_77;
     return _e23;
 }
 
@@ -3523,9 +3576,9 @@ AirlightCanonical airlight_refined(
     AirlightScene s_14,
     AirlightCanonical plain
 ) {
-    bool local_78 = {};
-    AirlightCanonical out_2 = {};
     bool local_79 = {};
+    AirlightCanonical out_2 = {};
+    bool local_80 = {};
     metal::float3 a_15 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_14.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_14.light_position[0], -(s_14.origin[0]), key_4);
@@ -3537,11 +3590,11 @@ AirlightCanonical airlight_refined(
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_78 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_78 = true;
+        local_79 = true;
     }
-    bool _e41 = local_78;
+    bool _e41 = local_79;
     if (_e41) {
         return plain;
     }
@@ -3565,11 +3618,11 @@ AirlightCanonical airlight_refined(
     float h_4 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_79 = h_4 > 0.0;
+        local_80 = h_4 > 0.0;
     } else {
-        local_79 = false;
+        local_80 = false;
     }
-    bool _e101 = local_79;
+    bool _e101 = local_80;
     if (!(_e101)) {
         return plain;
     }
@@ -3579,45 +3632,752 @@ AirlightCanonical airlight_refined(
     }
     metal::float3 _e113 = airlight_normalize(dir);
     metal::float3 _e114 = airlight_normalize(w_3);
-    metal::float3 n_2 = -(metal::cross(_e113, _e114));
+    metal::float3 n_3 = -(metal::cross(_e113, _e114));
     out_2.h = h_4;
     metal::float3 _e119 = a_15;
-    out_2.d_c = metal::dot(n_2, _e119);
+    out_2.d_c = metal::dot(n_3, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
 
-AirlightResult airlight_in_scatter(
-    AirlightScene s_15
+airlight_type_13 airlight_kronrod_rule(
 ) {
-    bool _e1 = airlight_valid(s_15);
+    return airlight_type_13 {{metal::float3(0.96049124, 0.10465623, 0.0), metal::float3(0.7745967, 0.26848808, 0.5555556), metal::float3(0.43424374, 0.4013974, 0.0), metal::float3(0.0, 0.45091653, 0.8888889)}};
+}
+
+metal::float4 airlight_list_get(
+    AirlightPanelList l,
+    uint i_15
+) {
+    switch(i_15) {
+        case 0u: {
+            return l.panel_a;
+        }
+        case 1u: {
+            return l.panel_b;
+        }
+        case 2u: {
+            return l.panel_c;
+        }
+        case 3u: {
+            return l.panel_d;
+        }
+        case 4u: {
+            return l.panel_e;
+        }
+        default: {
+            return l.panel_f;
+        }
+    }
+}
+
+void airlight_list_set(
+    thread AirlightPanelList& l_1,
+    uint i_16,
+    metal::float4 v_5
+) {
+    switch(i_16) {
+        case 0u: {
+            l_1.panel_a = v_5;
+            return;
+        }
+        case 1u: {
+            l_1.panel_b = v_5;
+            return;
+        }
+        case 2u: {
+            l_1.panel_c = v_5;
+            return;
+        }
+        case 3u: {
+            l_1.panel_d = v_5;
+            return;
+        }
+        case 4u: {
+            l_1.panel_e = v_5;
+            return;
+        }
+        case 5u: {
+            l_1.panel_f = v_5;
+            return;
+        }
+        default: {
+            return;
+        }
+    }
+}
+
+AirlightListScan airlight_list_scan(
+    AirlightPanelList l_2,
+    uint count_1
+) {
+    AirlightListScan r_2 = AirlightListScan {0.0, 0.0, 0u};
+    float worst_error = -1.0;
+    if (count_1 > 0u) {
+        float _e12 = r_2.total;
+        r_2.total = _e12 + l_2.panel_a.z;
+        float _e17 = r_2.errors;
+        r_2.errors = _e17 + l_2.panel_a.w;
+        float _e23 = worst_error;
+        if (l_2.panel_a.w > _e23) {
+            r_2.worst = 0u;
+            worst_error = l_2.panel_a.w;
+        }
+    }
+    if (count_1 > 1u) {
+        float _e32 = r_2.total;
+        r_2.total = _e32 + l_2.panel_b.z;
+        float _e37 = r_2.errors;
+        r_2.errors = _e37 + l_2.panel_b.w;
+        float _e43 = worst_error;
+        if (l_2.panel_b.w > _e43) {
+            r_2.worst = 1u;
+            worst_error = l_2.panel_b.w;
+        }
+    }
+    if (count_1 > 2u) {
+        float _e52 = r_2.total;
+        r_2.total = _e52 + l_2.panel_c.z;
+        float _e57 = r_2.errors;
+        r_2.errors = _e57 + l_2.panel_c.w;
+        float _e63 = worst_error;
+        if (l_2.panel_c.w > _e63) {
+            r_2.worst = 2u;
+            worst_error = l_2.panel_c.w;
+        }
+    }
+    if (count_1 > 3u) {
+        float _e72 = r_2.total;
+        r_2.total = _e72 + l_2.panel_d.z;
+        float _e77 = r_2.errors;
+        r_2.errors = _e77 + l_2.panel_d.w;
+        float _e83 = worst_error;
+        if (l_2.panel_d.w > _e83) {
+            r_2.worst = 3u;
+            worst_error = l_2.panel_d.w;
+        }
+    }
+    if (count_1 > 4u) {
+        float _e92 = r_2.total;
+        r_2.total = _e92 + l_2.panel_e.z;
+        float _e97 = r_2.errors;
+        r_2.errors = _e97 + l_2.panel_e.w;
+        float _e103 = worst_error;
+        if (l_2.panel_e.w > _e103) {
+            r_2.worst = 4u;
+            worst_error = l_2.panel_e.w;
+        }
+    }
+    if (count_1 > 5u) {
+        float _e112 = r_2.total;
+        r_2.total = _e112 + l_2.panel_f.z;
+        float _e117 = r_2.errors;
+        r_2.errors = _e117 + l_2.panel_f.w;
+        float _e123 = worst_error;
+        if (l_2.panel_f.w > _e123) {
+            r_2.worst = 5u;
+            worst_error = l_2.panel_f.w;
+        }
+    }
+    AirlightListScan _e129 = r_2;
+    return _e129;
+}
+
+float airlight_asinh(
+    float x_11
+) {
+    float r_3 = {};
+    float a_20 = metal::abs(x_11);
+    r_3 = AIRLIGHT_LN_2_ + metal::log(a_20);
+    if (a_20 <= 4096.0) {
+        float _e17 = airlight_log1p(a_20 + ((a_20 * a_20) / (1.0 + metal::sqrt(1.0 + (a_20 * a_20)))));
+        r_3 = _e17;
+    }
+    float _e18 = r_3;
+    float _e19 = r_3;
+    return (x_11 < 0.0) ? -(_e19) : _e18;
+}
+
+float airlight_to_w(
+    AirlightSegment g_14,
+    float s_15
+) {
+    if (g_14.scale > 0.0) {
+        float _e9 = airlight_asinh((s_15 - g_14.s_star) / g_14.scale);
+        return _e9;
+    }
+    return s_15;
+}
+
+AirlightSegment airlight_segment(
+    AirlightScene s_16
+) {
+    AirlightSegment g_15 = {};
+    bool local_81 = {};
+    bool local_82 = {};
+    float s_star = 0.0;
+    float t_star = {};
+    bool local_83 = {};
+    bool local_84 = {};
+    bool local_85 = {};
+    bool local_86 = {};
+    bool local_87 = {};
+    bool local_88 = {};
+    float scale = 0.0;
+    bool local_89 = {};
+    bool local_90 = {};
+    bool local_91 = {};
+    bool local_92 = {};
+    bool local_93 = {};
+    airlight_type_16 cuts_1 = airlight_type_16 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_16 at = {};
+    uint i_17 = 0u;
+    bool local_94 = {};
+    bool local_95 = {};
+    bool local_96 = {};
+    uint n_1 = 0u;
+    uint i_18 = 0u;
+    bool local_97 = {};
+    g_15 = AirlightSegment {s_16.light_position, metal::float3(0.0), 0.0, 0.0, airlight_type_15 {{0.0, 0.0, 0.0, 0.0, 0.0}}, 1u, 0u};
+    if (s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        AirlightSegment _e19 = g_15;
+        return _e19;
+    }
+    metal::float3 ab_1 = s_16.light_end - s_16.light_position;
+    float _e23 = airlight_safe_length(ab_1);
+    if (!(!((_e23 > 0.0)))) {
+        local_81 = s_16.intensity == 0.0;
+    } else {
+        local_81 = true;
+    }
+    bool _e34 = local_81;
+    if (!(_e34)) {
+        local_82 = s_16.sigma_s == 0.0;
+    } else {
+        local_82 = true;
+    }
+    bool _e42 = local_82;
+    if (_e42) {
+        g_15.outcome = 1u;
+        AirlightSegment _e45 = g_15;
+        return _e45;
+    }
+    metal::float3 e_4 = ab_1 / metal::float3(_e23);
+    metal::float3 _e49 = airlight_normalize(s_16.dir);
+    metal::float3 w0_ = s_16.light_position - s_16.origin;
+    float cos_a = metal::dot(e_4, _e49);
+    float along_e = metal::dot(e_4, w0_);
+    float along_d = metal::dot(_e49, w0_);
+    float sin2_ = 1.0 - (cos_a * cos_a);
+    bool infinite_4 = (s_16.flags & 1u) != 0u;
+    t_star = along_d;
+    if (sin2_ > AIRLIGHT_FLT_EPS) {
+        s_star = ((cos_a * along_d) - along_e) / sin2_;
+        t_star = (along_d - (cos_a * along_e)) / sin2_;
+    }
+    float _e75 = t_star;
+    float _e78 = s_star;
+    float _e81 = airlight_safe_length((w0_ - (_e49 * _e75)) + (e_4 * _e78));
+    float sin_a = metal::sqrt(metal::max(sin2_, 0.0));
+    if (_e81 == 0.0) {
+        local_83 = sin_a > 0.0;
+    } else {
+        local_83 = false;
+    }
+    bool _e92 = local_83;
+    if (_e92) {
+        float _e95 = s_star;
+        local_84 = _e95 >= 0.0;
+    } else {
+        local_84 = false;
+    }
+    bool _e99 = local_84;
+    if (_e99) {
+        float _e102 = s_star;
+        local_85 = _e102 <= _e23;
+    } else {
+        local_85 = false;
+    }
+    bool _e105 = local_85;
+    if (_e105) {
+        float _e109 = t_star;
+        local_86 = s_16.t_min <= _e109;
+    } else {
+        local_86 = false;
+    }
+    bool _e112 = local_86;
+    if (_e112) {
+        if (!(infinite_4)) {
+            float _e118 = t_star;
+            local_88 = _e118 <= s_16.t_max;
+        } else {
+            local_88 = true;
+        }
+        bool _e122 = local_88;
+        local_87 = _e122;
+    } else {
+        local_87 = false;
+    }
+    bool _e124 = local_87;
+    if (_e124) {
+        g_15.outcome = 2u;
+        AirlightSegment _e127 = g_15;
+        return _e127;
+    }
+    if (sin_a > 0.0) {
+        local_89 = _e81 > 0.0;
+    } else {
+        local_89 = false;
+    }
+    bool _e137 = local_89;
+    if (_e137) {
+        scale = _e81 / sin_a;
+    }
+    float _e139 = s_star;
+    if (_e139 > -(_e23)) {
+        float _e144 = s_star;
+        local_90 = _e144 < (_e23 + _e23);
+    } else {
+        local_90 = false;
+    }
+    bool _e148 = local_90;
+    if (_e148) {
+        float _e151 = scale;
+        local_91 = _e151 < _e23;
+    } else {
+        local_91 = false;
+    }
+    bool near_2 = local_91;
+    if (near_2) {
+        float _e157 = s_star;
+        float _e159 = scale;
+        float _e161 = airlight_asinh((_e23 - _e157) / _e159);
+        bool _e162 = airlight_is_finite(_e161);
+        local_92 = _e162;
+    } else {
+        local_92 = false;
+    }
+    bool _e164 = local_92;
+    if (_e164) {
+        float _e167 = s_star;
+        float _e168 = scale;
+        float _e170 = airlight_asinh(_e167 / _e168);
+        bool _e171 = airlight_is_finite(_e170);
+        local_93 = _e171;
+    } else {
+        local_93 = false;
+    }
+    bool _e173 = local_93;
+    if (!(_e173)) {
+        scale = 0.0;
+    }
+    g_15.e = e_4;
+    float _e178 = s_star;
+    g_15.s_star = _e178;
+    float _e180 = scale;
+    g_15.scale = _e180;
+    float _e186 = s_star;
+    at = airlight_type_16 {{_e186, (s_16.t_min - along_d) / cos_a, (s_16.t_max - along_d) / cos_a}};
+    uint2 loop_bound_23 = uint2(4294967295u);
+    bool loop_init_23 = true;
+    while(true) {
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e237 = i_17;
+            i_17 = _e237 + 1u;
+        }
+        loop_init_23 = false;
+        uint _e197 = i_17;
+        if (_e197 < 3u) {
+        } else {
+            break;
+        }
+        {
+            if (cos_a == 0.0) {
+                uint _e204 = i_17;
+                local_94 = _e204 > 0u;
+            } else {
+                local_94 = false;
+            }
+            bool _e208 = local_94;
+            if (_e208) {
+                continue;
+            }
+            uint _e209 = i_17;
+            if (_e209 == 2u) {
+                local_95 = infinite_4;
+            } else {
+                local_95 = false;
+            }
+            bool _e215 = local_95;
+            if (_e215) {
+                continue;
+            }
+            uint _e216 = i_17;
+            float _e218 = at.inner[metal::min(unsigned(_e216), 2u)];
+            if (_e218 > 0.0) {
+                uint _e223 = i_17;
+                float _e225 = at.inner[metal::min(unsigned(_e223), 2u)];
+                local_96 = _e225 < _e23;
+            } else {
+                local_96 = false;
+            }
+            bool _e228 = local_96;
+            if (_e228) {
+                uint _e229 = i_17;
+                AirlightSegment _e231 = g_15;
+                uint _e232 = i_17;
+                float _e234 = at.inner[metal::min(unsigned(_e232), 2u)];
+                float _e235 = airlight_to_w(_e231, _e234);
+                cuts_1.inner[metal::min(unsigned(_e229), 2u)] = _e235;
+            }
+        }
+    }
+    float _e240 = cuts_1.inner[1];
+    float _e242 = cuts_1.inner[0];
+    if (_e240 < _e242) {
+        float c_8 = cuts_1.inner[0];
+        float _e248 = cuts_1.inner[1];
+        cuts_1.inner[0] = _e248;
+        cuts_1.inner[1] = c_8;
+    }
+    float _e251 = cuts_1.inner[2];
+    float _e253 = cuts_1.inner[1];
+    if (_e251 < _e253) {
+        float c_9 = cuts_1.inner[1];
+        float _e259 = cuts_1.inner[2];
+        cuts_1.inner[1] = _e259;
+        cuts_1.inner[2] = c_9;
+    }
+    float _e262 = cuts_1.inner[1];
+    float _e264 = cuts_1.inner[0];
+    if (_e262 < _e264) {
+        float c_10 = cuts_1.inner[0];
+        float _e270 = cuts_1.inner[1];
+        cuts_1.inner[0] = _e270;
+        cuts_1.inner[1] = c_10;
+    }
+    AirlightSegment _e272 = g_15;
+    float _e273 = airlight_to_w(_e272, _e23);
+    AirlightSegment _e276 = g_15;
+    float _e278 = airlight_to_w(_e276, 0.0);
+    g_15.edges.inner[0] = _e278;
+    uint2 loop_bound_24 = uint2(4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e312 = i_18;
+            i_18 = _e312 + 1u;
+        }
+        loop_init_24 = false;
+        uint _e283 = i_18;
+        if (_e283 < 3u) {
+        } else {
+            break;
+        }
+        {
+            uint _e286 = i_18;
+            float _e288 = cuts_1.inner[metal::min(unsigned(_e286), 2u)];
+            uint _e290 = n_1;
+            float _e292 = g_15.edges.inner[metal::min(unsigned(_e290), 4u)];
+            if (_e288 > _e292) {
+                uint _e296 = i_18;
+                float _e298 = cuts_1.inner[metal::min(unsigned(_e296), 2u)];
+                local_97 = _e298 < _e273;
+            } else {
+                local_97 = false;
+            }
+            bool _e301 = local_97;
+            if (_e301) {
+                uint _e302 = n_1;
+                n_1 = _e302 + 1u;
+                uint _e306 = n_1;
+                uint _e308 = i_18;
+                float _e310 = cuts_1.inner[metal::min(unsigned(_e308), 2u)];
+                g_15.edges.inner[metal::min(unsigned(_e306), 4u)] = _e310;
+            }
+        }
+    }
+    uint _e315 = n_1;
+    g_15.edges.inner[metal::min(unsigned(_e315 + 1u), 4u)] = _e273;
+    uint _e320 = n_1;
+    g_15.panels = _e320 + 1u;
+    AirlightSegment _e323 = g_15;
+    return _e323;
+}
+
+AirlightResult airlight_in_scatter(
+    AirlightScene s_17
+) {
+    AirlightPanelList list_1 = AirlightPanelList {metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)};
+    uint count_2 = 0u;
+    float a_16 = {};
+    float b_12 = {};
+    uint slot_1 = 0u;
+    bool queued = false;
+    float queued_lo = 0.0;
+    float queued_hi = 0.0;
+    uint step_1 = 0u;
+    float k_5 = {};
+    float gauss = {};
+    uint j_4 = {};
+    bool local_98 = {};
+    float at_1 = {};
+    float ds = {};
+    AirlightScene p = {};
+    AirlightResult r_4 = {};
+    bool local_99 = {};
+    bool split = {};
+    uint tries = {};
+    bool local_100 = {};
+    bool local_101 = {};
+    bool local_102 = {};
+    bool _e1 = airlight_valid(s_17);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e6 = airlight_canonical(s_15);
-    AirlightCanonical _e7 = airlight_refined(s_15, _e6);
-    AirlightResult _e8 = airlight_in_scatter_canonical(s_15, _e7);
-    bool _e10 = airlight_is_finite(_e8.in_scatter);
-    if (!(_e10)) {
+    AirlightSegment _e6 = airlight_segment(s_17);
+    if (_e6.outcome == 1u) {
+        return AirlightResult {0.0, 0u};
+    }
+    if (_e6.outcome == 2u) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    return _e8;
+    airlight_type_13 _e19 = airlight_kronrod_rule();
+    a_16 = _e6.edges.inner[0];
+    b_12 = _e6.edges.inner[1];
+    uint2 loop_bound_25 = uint2(4294967295u);
+    bool loop_init_25 = true;
+    while(true) {
+        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e261 = step_1;
+            step_1 = _e261 + 1u;
+        }
+        loop_init_25 = false;
+        uint _e53 = step_1;
+        if (_e53 < AIRLIGHT_SEGMENT_EVALUATIONS) {
+        } else {
+            break;
+        }
+        {
+            float _e56 = a_16;
+            float _e57 = b_12;
+            float c_11 = 0.5 * (_e56 + _e57);
+            float _e61 = b_12;
+            float _e62 = a_16;
+            float hw_1 = 0.5 * (_e61 - _e62);
+            k_5 = 0.0;
+            gauss = 0.0;
+            j_4 = 0u;
+            uint2 loop_bound_26 = uint2(4294967295u);
+            bool loop_init_26 = true;
+            while(true) {
+                if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_26) {
+                    uint _e167 = j_4;
+                    j_4 = _e167 + 1u;
+                }
+                loop_init_26 = false;
+                uint _e72 = j_4;
+                if (_e72 < 7u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e75 = j_4;
+                    metal::float3 node = _e19.inner[metal::min(unsigned(airlight_naga_div(_e75, 2u)), 3u)];
+                    uint _e85 = j_4;
+                    if ((_e85 & 1u) == 0u) {
+                        uint _e92 = j_4;
+                        local_98 = _e92 < 6u;
+                    } else {
+                        local_98 = false;
+                    }
+                    bool _e96 = local_98;
+                    float w_4 = _e96 ? (c_11 - (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e75, 2u)), 3u)].x)) : (c_11 + (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e75, 2u)), 3u)].x));
+                    at_1 = w_4;
+                    ds = 1.0;
+                    if (_e6.scale > 0.0) {
+                        at_1 = _e6.s_star + (_e6.scale * metal::sinh(w_4));
+                        ds = _e6.scale * metal::cosh(w_4);
+                    }
+                    p = s_17;
+                    float _e115 = at_1;
+                    p.light_position = _e6.a + (_e115 * _e6.e);
+                    p.light_shape = AIRLIGHT_SHAPE_POINT;
+                    r_4 = AirlightResult {0.0, 0u};
+                    metal::float3 _e126 = p.light_position;
+                    bool _e127 = airlight_vec_finite(_e126);
+                    if (_e127) {
+                        AirlightScene _e128 = p;
+                        AirlightScene _e129 = p;
+                        AirlightScene _e130 = p;
+                        AirlightCanonical _e131 = airlight_canonical(_e130);
+                        AirlightCanonical _e132 = airlight_refined(_e129, _e131);
+                        AirlightResult _e133 = airlight_in_scatter_canonical(_e128, _e132);
+                        r_4 = _e133;
+                    }
+                    float _e135 = r_4.in_scatter;
+                    bool _e136 = airlight_is_finite(_e135);
+                    if (!(!(_e136))) {
+                        uint _e142 = r_4.status;
+                        local_99 = _e142 == AIRLIGHT_STATUS_INFINITE;
+                    } else {
+                        local_99 = true;
+                    }
+                    bool _e146 = local_99;
+                    if (_e146) {
+                        return AirlightResult {340282350000000000000000000000000000000.0, 2u};
+                    }
+                    if (s_17.light_shape == AIRLIGHT_SHAPE_POINT) {
+                        AirlightResult _e153 = r_4;
+                        return _e153;
+                    }
+                    float _e155 = r_4.in_scatter;
+                    float _e156 = ds;
+                    float f_3 = _e155 * _e156;
+                    float _e158 = k_5;
+                    k_5 = _e158 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e75, 2u)), 3u)].y * f_3);
+                    float _e162 = gauss;
+                    gauss = _e162 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e75, 2u)), 3u)].z * f_3);
+                }
+            }
+            uint _e169 = slot_1;
+            float _e170 = a_16;
+            float _e171 = b_12;
+            float _e172 = k_5;
+            float _e174 = k_5;
+            float _e176 = gauss;
+            airlight_list_set(list_1, _e169, metal::float4(_e170, _e171, _e172 * hw_1, metal::abs((_e174 * hw_1) - (_e176 * hw_1))));
+            uint _e181 = slot_1;
+            uint _e182 = count_2;
+            if (_e181 == _e182) {
+                uint _e184 = count_2;
+                count_2 = _e184 + 1u;
+            }
+            uint _e187 = count_2;
+            if (_e187 < _e6.panels) {
+                uint _e191 = count_2;
+                a_16 = _e6.edges.inner[metal::min(unsigned(_e191), 4u)];
+                uint _e194 = count_2;
+                b_12 = _e6.edges.inner[metal::min(unsigned(_e194 + 1u), 4u)];
+                uint _e198 = count_2;
+                slot_1 = _e198;
+            } else {
+                bool _e199 = queued;
+                if (_e199) {
+                    float _e200 = queued_lo;
+                    a_16 = _e200;
+                    float _e201 = queued_hi;
+                    b_12 = _e201;
+                    uint _e202 = count_2;
+                    slot_1 = _e202;
+                    queued = false;
+                } else {
+                    split = false;
+                    tries = 0u;
+                    uint2 loop_bound_27 = uint2(4294967295u);
+                    bool loop_init_27 = true;
+                    while(true) {
+                        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+                        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                        if (!loop_init_27) {
+                            uint _e256 = tries;
+                            tries = _e256 + 1u;
+                        }
+                        loop_init_27 = false;
+                        uint _e208 = tries;
+                        if (_e208 < AIRLIGHT_SEGMENT_PANELS) {
+                        } else {
+                            break;
+                        }
+                        {
+                            AirlightPanelList _e211 = list_1;
+                            uint _e212 = count_2;
+                            AirlightListScan _e213 = airlight_list_scan(_e211, _e212);
+                            float total_4 = _e213.total;
+                            uint worst_1 = _e213.worst;
+                            if (!(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
+                                uint _e224 = count_2;
+                                local_100 = _e224 == AIRLIGHT_SEGMENT_PANELS;
+                            } else {
+                                local_100 = true;
+                            }
+                            bool _e228 = local_100;
+                            if (!(_e228)) {
+                                bool _e232 = airlight_is_finite(total_4);
+                                local_101 = !(_e232);
+                            } else {
+                                local_101 = true;
+                            }
+                            bool _e235 = local_101;
+                            if (_e235) {
+                                break;
+                            }
+                            AirlightPanelList _e236 = list_1;
+                            metal::float4 _e237 = airlight_list_get(_e236, worst_1);
+                            float wa_1 = _e237.x;
+                            float wb_1 = _e237.y;
+                            float mid_1 = 0.5 * (wa_1 + wb_1);
+                            if (mid_1 > wa_1) {
+                                local_102 = mid_1 < wb_1;
+                            } else {
+                                local_102 = false;
+                            }
+                            bool _e248 = local_102;
+                            if (!(_e248)) {
+                                airlight_list_set(list_1, worst_1, metal::float4(_e237.xyz, 0.0));
+                                continue;
+                            }
+                            a_16 = wa_1;
+                            b_12 = mid_1;
+                            slot_1 = worst_1;
+                            queued = true;
+                            queued_lo = mid_1;
+                            queued_hi = wb_1;
+                            split = true;
+                            break;
+                        }
+                    }
+                    bool _e258 = split;
+                    if (!(_e258)) {
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    AirlightPanelList _e263 = list_1;
+    uint _e264 = count_2;
+    AirlightListScan _e265 = airlight_list_scan(_e263, _e264);
+    float total_5 = _e265.total;
+    bool _e267 = airlight_is_finite(total_5);
+    if (!(_e267)) {
+        return AirlightResult {340282350000000000000000000000000000000.0, 2u};
+    }
+    return AirlightResult {metal::max(total_5, 0.0), AIRLIGHT_STATUS_OK};
 }
 
 struct airlight_mainInput {
 };
 kernel void airlight_main(
   metal::uint3 id [[thread_position_in_grid]]
-, device airlight_type_13 const& airlight_records [[user(fake0)]]
-, device airlight_type_14& airlight_results [[user(fake0)]]
+, device airlight_type_17 const& airlight_records [[user(fake0)]]
+, device airlight_type_18& airlight_results [[user(fake0)]]
 , constant airlight__mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint i_15 = id.x;
-    if (i_15 >= (1 + (_buffer_sizes.size0 - 0 - 112) / 112)) {
+    uint i_19 = id.x;
+    if (i_19 >= (1 + (_buffer_sizes.size0 - 0 - 128) / 128)) {
         return;
     }
-    AirlightScene _e9 = airlight_records[metal::min(unsigned(i_15), (_buffer_sizes.size0 - 0 - 112) / 112)];
+    AirlightScene _e9 = airlight_records[metal::min(unsigned(i_19), (_buffer_sizes.size0 - 0 - 128) / 128)];
     AirlightResult _e10 = airlight_in_scatter(_e9);
-    airlight_results[metal::min(unsigned(i_15), (_buffer_sizes.size1 - 0 - 8) / 8)] = _e10;
+    airlight_results[metal::min(unsigned(i_19), (_buffer_sizes.size1 - 0 - 8) / 8)] = _e10;
     return;
 }

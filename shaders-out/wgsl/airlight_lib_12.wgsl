@@ -18,6 +18,8 @@ struct AirlightScene {
     light_kind: u32,
     phase_kind: u32,
     flags: u32,
+    light_end: vec3<f32>,
+    light_shape: u32,
 }
 
 struct AirlightResult {
@@ -40,6 +42,8 @@ struct AirlightLight {
     param_a: f32,
     param_b: f32,
     kind: u32,
+    end: vec3<f32>,
+    shape: u32,
 }
 
 struct AirlightMedium {
@@ -81,6 +85,31 @@ struct AirlightPanel {
     f_max: f32,
 }
 
+struct AirlightPanelList {
+    panel_a: vec4<f32>,
+    panel_b: vec4<f32>,
+    panel_c: vec4<f32>,
+    panel_d: vec4<f32>,
+    panel_e: vec4<f32>,
+    panel_f: vec4<f32>,
+}
+
+struct AirlightListScan {
+    total: f32,
+    errors: f32,
+    worst: u32,
+}
+
+struct AirlightSegment {
+    a: vec3<f32>,
+    e: vec3<f32>,
+    s_star: f32,
+    scale: f32,
+    edges: array<f32, 5>,
+    panels: u32,
+    outcome: u32,
+}
+
 const AIRLIGHT_TERMS: u32 = 12u;
 const AIRLIGHT_HALF_TERMS: u32 = 6u;
 const AIRLIGHT_PANEL_TOLERANCE: f32 = 0.001f;
@@ -104,6 +133,8 @@ const AIRLIGHT_PHASE_TWO_LOBE_HG: u32 = 5u;
 const AIRLIGHT_LIGHT_OMNI: u32 = 0u;
 const AIRLIGHT_LIGHT_TWO_LOBED: u32 = 1u;
 const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
+const AIRLIGHT_SHAPE_POINT: u32 = 0u;
+const AIRLIGHT_SHAPE_SEGMENT: u32 = 1u;
 const AIRLIGHT_STATUS_OK: u32 = 0u;
 const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
@@ -115,6 +146,8 @@ const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
+const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
+const AIRLIGHT_SEGMENT_EVALUATIONS: u32 = 11u;
 
 fn airlight_zero_terms() -> array<f32, 12> {
     return array<f32, 12>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
@@ -133,15 +166,25 @@ fn airlight_ray_to_infinity(origin_1: vec3<f32>, dir_1: vec3<f32>, t_min_1: f32)
 }
 
 fn airlight_omni(position: vec3<f32>, intensity: f32) -> AirlightLight {
-    return AirlightLight(position, intensity, vec3<f32>(0f, 0f, 1f), 0f, 0f, AIRLIGHT_LIGHT_OMNI);
+    return AirlightLight(position, intensity, vec3<f32>(0f, 0f, 1f), 0f, 0f, AIRLIGHT_LIGHT_OMNI, position, AIRLIGHT_SHAPE_POINT);
 }
 
 fn airlight_two_lobed(position_1: vec3<f32>, intensity_1: f32, axis: vec3<f32>, power: u32) -> AirlightLight {
-    return AirlightLight(position_1, intensity_1, axis, f32(power), 0f, AIRLIGHT_LIGHT_TWO_LOBED);
+    return AirlightLight(position_1, intensity_1, axis, f32(power), 0f, AIRLIGHT_LIGHT_TWO_LOBED, position_1, AIRLIGHT_SHAPE_POINT);
 }
 
 fn airlight_spot(position_2: vec3<f32>, intensity_2: f32, axis_1: vec3<f32>, cos_inner: f32, cos_outer: f32) -> AirlightLight {
-    return AirlightLight(position_2, intensity_2, axis_1, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT);
+    return AirlightLight(position_2, intensity_2, axis_1, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT, position_2, AIRLIGHT_SHAPE_POINT);
+}
+
+fn airlight_segment_light(light: AirlightLight, end: vec3<f32>) -> AirlightLight {
+    var segment: AirlightLight;
+
+    segment = light;
+    segment.end = end;
+    segment.shape = AIRLIGHT_SHAPE_SEGMENT;
+    let _e6 = segment;
+    return _e6;
 }
 
 fn airlight_medium(sigma_s: f32, sigma_t: f32) -> AirlightMedium {
@@ -172,8 +215,8 @@ fn airlight_two_lobe_henyey_greenstein(g1_: f32, g2_: f32, w: f32) -> AirlightPh
     return AirlightPhase(AIRLIGHT_PHASE_TWO_LOBE_HG, g1_, g2_, w);
 }
 
-fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
-    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis, light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light.kind, phase.kind, ray.flags);
+fn airlight_scene(ray: AirlightRay, light_1: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, light_1.end, light_1.shape);
 }
 
 fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
@@ -182,13 +225,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_2 = (b_1.y / b_1.x);
-        let inv = (1f / (b_1.x + (b_1.y * r_2)));
-        return vec2<f32>(((a_1.x + (a_1.y * r_2)) * inv), ((a_1.y - (a_1.x * r_2)) * inv));
+        let r_5 = (b_1.y / b_1.x);
+        let inv = (1f / (b_1.x + (b_1.y * r_5)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_5)) * inv), ((a_1.y - (a_1.x * r_5)) * inv));
     }
-    let r_3 = (b_1.x / b_1.y);
-    let inv_1 = (1f / ((b_1.x * r_3) + b_1.y));
-    return vec2<f32>((((a_1.x * r_3) + a_1.y) * inv_1), (((a_1.y * r_3) - a_1.x) * inv_1));
+    let r_6 = (b_1.x / b_1.y);
+    let inv_1 = (1f / ((b_1.x * r_6) + b_1.y));
+    return vec2<f32>((((a_1.x * r_6) + a_1.y) * inv_1), (((a_1.y * r_6) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -236,7 +279,7 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
         }
         {
             let _e12 = k_1;
-            let n_1 = (8u - _e12);
+            let n_2 = (8u - _e12);
             let _e14 = c;
             c = (_e14 * z_8);
             let _e16 = s;
@@ -245,7 +288,7 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             j = 1u;
             loop {
                 let _e22 = j;
-                if (_e22 <= (2u * n_1)) {
+                if (_e22 <= (2u * n_2)) {
                 } else {
                     break;
                 }
@@ -259,13 +302,13 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
                     j = (_e31 + 1u);
                 }
             }
-            let sign_ = select(1f, -1f, ((n_1 & 1u) == 1u));
+            let sign_ = select(1f, -1f, ((n_2 & 1u) == 1u));
             let _e40 = c;
             let _e41 = fc;
             c = (_e40 + (sign_ / _e41));
             let _e44 = s;
             let _e45 = fc;
-            s = (_e44 + (sign_ / (_e45 * f32(((2u * n_1) + 1u)))));
+            s = (_e44 + (sign_ / (_e45 * f32(((2u * n_2) + 1u)))));
         }
         continuing {
             let _e55 = k_1;
@@ -326,8 +369,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_16 = (x_2 / (2f + x_2));
-    let s2_ = (s_16 * s_16);
+    let s_18 = (x_2 / (2f + x_2));
+    let s2_ = (s_18 * s_18);
     loop {
         let _e14 = k_2;
         if (_e14 < 9u) {
@@ -345,7 +388,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_16) * _e35);
+    return ((2f * s_18) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -415,9 +458,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_11 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_12 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_11 * x_11) + (y_3 * y_3)) < 1f);
+    return (((x_12 * x_12) + (y_3 * y_3)) < 1f);
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
@@ -491,8 +534,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_12 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_12);
+    let b_13 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_13);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -502,7 +545,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_12, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_13, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -565,12 +608,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_5 = f32(_e2);
-    let b_13 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
-    let a_16 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
-    let disc = (1f - ((4f * a_16) / (b_13 * b_13)));
-    t_2 = b_13;
+    let b_14 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
+    let a_17 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
+    let disc = (1f - ((4f * a_17) / (b_14 * b_14)));
+    t_2 = b_14;
     if (disc > 0f) {
-        t_2 = ((b_13 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_14 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -744,11 +787,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 14> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_17 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_17 * a_17));
+        let a_18 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_18 * a_18));
     }
-    let b_14 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_14 * b_14));
+    let b_15 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_15 * b_15));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -842,8 +885,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_12 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_12 * x_12) * (3f - (2f * x_12)));
+            let x_13 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_13 * x_13) * (3f - (2f * x_13)));
         }
         default: {
             return 1f;
@@ -966,10 +1009,10 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
             let _e48 = airlight_atan((half_1.dv / (1f + (v_s_1 * _e43))));
             d_im = _e48;
             let _e50 = v_e;
-            let x_13 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
-            let _e57 = airlight_is_finite(x_13);
+            let x_14 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
+            let _e57 = airlight_is_finite(x_14);
             if _e57 {
-                let _e58 = airlight_log1p(x_13);
+                let _e58 = airlight_log1p(x_14);
                 d_re = (0.5f * _e58);
             } else {
                 let _e63 = v_e;
@@ -1058,8 +1101,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_14 = rule[(i_3 / 2u)].x;
-    return select(x_14, -(x_14), ((i_3 % 2u) == 0u));
+    let x_15 = rule[(i_3 / 2u)].x;
+    return select(x_15, -(x_15), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_6: array<f32, 12>) -> array<f32, 12> {
@@ -1688,8 +1731,8 @@ fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     let _e13 = offset;
-    let x_15 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_15)), (x_15 > 0f));
+    let x_16 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_16)), (x_16 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1728,8 +1771,8 @@ fn airlight_v_panel(s_3: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
             let _e38 = r_1;
             let _e39 = i_7;
             let _e40 = airlight_node(_e6, _e39);
-            let v_5 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_3, g_7, select(sigma_2, -(sigma_2), half_4.second), v_5);
+            let v_6 = (_e37 + (_e38 * _e40));
+            let _e46 = airlight_integrand_over(s_3, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
             let fy = _e46.x;
             let over = _e46.y;
             let _e49 = i_7;
@@ -1803,8 +1846,8 @@ fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
     var m_2: array<f32, 12>;
 
     let _e6 = airlight_gauss_rule();
-    let r_4 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_4);
+    let r_7 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_7);
     let _e11 = airlight_zero_terms();
     samples_1 = _e11;
     loop {
@@ -1816,8 +1859,8 @@ fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
         {
             let _e26 = i_8;
             let _e27 = airlight_node(_e6, _e26);
-            let y_5 = (yc_1 + (r_4 * _e27));
-            let weight = exp(((-(half_5.big_h) * (r_4 * (1f - _e27))) / (y_5 * b_5)));
+            let y_5 = (yc_1 + (r_7 * _e27));
+            let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_5 * b_5)));
             let _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
             let over_1 = (1f / (1f + (y_5 * y_5)));
             let _e45 = i_8;
@@ -1843,7 +1886,7 @@ fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
     let _e79 = samples_1;
     let _e80 = airlight_legendre(_e79);
     let _e81 = airlight_factor(half_5, a_6, b_5);
-    let w_2 = (_e81 * r_4);
+    let w_2 = (_e81 * r_7);
     let _e83 = airlight_zero_terms();
     m_2 = _e83;
     m_2[0] = 2f;
@@ -1972,8 +2015,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     var next: f32 = 0f;
 
     let _e6 = airlight_gauss_rule();
-    let r_5 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_5);
+    let r_8 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_8);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
@@ -1985,7 +2028,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_6 = (yc_2 + (r_5 * _e23));
+            let y_6 = (yc_2 + (r_8 * _e23));
             let _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
@@ -2004,8 +2047,8 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_5);
-    let beta = (-(yc_2) / r_5);
+    let alpha = (b_6 / r_8);
+    let beta = (-(yc_2) / r_8);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -2299,13 +2342,13 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     let _e936 = airlight_factor(half_6, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_16 = (abs(alpha) + abs(beta));
+    let x_17 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_16) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_17) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2315,7 +2358,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_16) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_17) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2325,7 +2368,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_16) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_17) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2335,7 +2378,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_16) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_17) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2345,7 +2388,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_16) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_17) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2355,7 +2398,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_16) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_17) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2365,7 +2408,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_16) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_17) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2375,7 +2418,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_16) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_17) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2385,7 +2428,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_16) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_17) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2395,7 +2438,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_16) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_17) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2405,7 +2448,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_16) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_17) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2415,7 +2458,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_16) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_17) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2681,9 +2724,9 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     let a0_ = (k_5 + (sigma_7 * d_el));
     let b0_ = -((d_c + d_c));
     let c0_ = (k_5 - (sigma_7 * d_el));
-    let scale = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if !(!((scale > 0f))) {
-        let _e21 = airlight_is_finite(scale);
+    let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if !(!((scale_1 > 0f))) {
+        let _e21 = airlight_is_finite(scale_1);
         local_16 = !(_e21);
     } else {
         local_16 = true;
@@ -2692,23 +2735,23 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_18 = (a0_ / scale);
-    let b_15 = (b0_ / scale);
-    let c_7 = (c0_ / scale);
-    let disc_1 = ((b_15 * b_15) - ((4f * a_18) * c_7));
+    let a_19 = (a0_ / scale_1);
+    let b_16 = (b0_ / scale_1);
+    let c_7 = (c0_ / scale_1);
+    let disc_1 = ((b_16 * b_16) - ((4f * a_19) * c_7));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_15 < 0f) {
+    if (b_16 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_2 = (-0.5f * (b_15 + (_e47 * sqrt(disc_1))));
+    let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
         r1_ = (c_7 / q_2);
     }
-    if (a_18 != 0f) {
-        r2_2 = (q_2 / a_18);
+    if (a_19 != 0f) {
+        r2_2 = (q_2 / a_19);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3004,7 +3047,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e54 = airlight_integrand(s_10, g_14, -1f, _e9);
     let _e55 = airlight_moment_zero(half_12);
-    let j_4 = (_e54 * _e55);
+    let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
@@ -3014,15 +3057,15 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_4);
+    let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
 fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_3 = (v_s + inv_h);
-    let r_6 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_6) / (0.000100000005f * 0.0001f))));
+    let r_9 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_9) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
@@ -3395,6 +3438,7 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
     var local_73: bool;
     var local_74: bool;
     var local_75: bool;
+    var local_76: bool;
 
     let _e2 = airlight_vec_finite(s_12.origin);
     if _e2 {
@@ -3482,77 +3526,92 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         let _e85 = local_60;
         ok = _e85;
     }
-    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_12.light_axis);
+            let _e93 = airlight_vec_finite(s_12.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
         }
         let _e95 = local_61;
-        if _e95 {
-            let _e99 = airlight_normalisable(s_12.light_axis);
-            local_62 = _e99;
+        ok = _e95;
+    } else {
+        if (s_12.light_shape != AIRLIGHT_SHAPE_POINT) {
+            ok = false;
+        }
+    }
+    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        let _e103 = ok;
+        if _e103 {
+            let _e107 = airlight_vec_finite(s_12.light_axis);
+            local_62 = _e107;
         } else {
             local_62 = false;
         }
-        let _e101 = local_62;
-        if _e101 {
-            local_63 = (s_12.light_param_a >= 0f);
+        let _e109 = local_62;
+        if _e109 {
+            let _e113 = airlight_normalisable(s_12.light_axis);
+            local_63 = _e113;
         } else {
             local_63 = false;
         }
-        let _e108 = local_63;
-        if _e108 {
-            local_64 = (s_12.light_param_a <= 1024f);
+        let _e115 = local_63;
+        if _e115 {
+            local_64 = (s_12.light_param_a >= 0f);
         } else {
             local_64 = false;
         }
-        let _e115 = local_64;
-        if _e115 {
-            local_65 = (fract((s_12.light_param_a * 0.5f)) == 0f);
+        let _e122 = local_64;
+        if _e122 {
+            local_65 = (s_12.light_param_a <= 1024f);
         } else {
             local_65 = false;
         }
-        let _e125 = local_65;
-        ok = _e125;
+        let _e129 = local_65;
+        if _e129 {
+            local_66 = (fract((s_12.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_66 = false;
+        }
+        let _e139 = local_66;
+        ok = _e139;
     } else {
         if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e129 = ok;
-            if _e129 {
-                let _e133 = airlight_vec_finite(s_12.light_axis);
-                local_66 = _e133;
-            } else {
-                local_66 = false;
-            }
-            let _e135 = local_66;
-            if _e135 {
-                let _e139 = airlight_normalisable(s_12.light_axis);
-                local_67 = _e139;
+            let _e143 = ok;
+            if _e143 {
+                let _e147 = airlight_vec_finite(s_12.light_axis);
+                local_67 = _e147;
             } else {
                 local_67 = false;
             }
-            let _e141 = local_67;
-            if _e141 {
-                local_68 = (s_12.light_param_b < s_12.light_param_a);
+            let _e149 = local_67;
+            if _e149 {
+                let _e153 = airlight_normalisable(s_12.light_axis);
+                local_68 = _e153;
             } else {
                 local_68 = false;
             }
-            let _e148 = local_68;
-            if _e148 {
-                local_69 = (s_12.light_param_b >= -1f);
+            let _e155 = local_68;
+            if _e155 {
+                local_69 = (s_12.light_param_b < s_12.light_param_a);
             } else {
                 local_69 = false;
             }
-            let _e155 = local_69;
-            if _e155 {
-                local_70 = (s_12.light_param_a <= 1f);
+            let _e162 = local_69;
+            if _e162 {
+                local_70 = (s_12.light_param_b >= -1f);
             } else {
                 local_70 = false;
             }
-            let _e162 = local_70;
-            ok = _e162;
+            let _e169 = local_70;
+            if _e169 {
+                local_71 = (s_12.light_param_a <= 1f);
+            } else {
+                local_71 = false;
+            }
+            let _e176 = local_71;
+            ok = _e176;
         } else {
             if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -3564,49 +3623,49 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e172 = ok;
-            if _e172 {
-                local_71 = g_ok;
-            } else {
-                local_71 = false;
-            }
-            let _e176 = local_71;
-            ok = _e176;
-        }
-        case 5u: {
-            let _e177 = ok;
-            if _e177 {
+            let _e186 = ok;
+            if _e186 {
                 local_72 = g_ok;
             } else {
                 local_72 = false;
             }
-            let _e181 = local_72;
-            if _e181 {
-                local_73 = (abs(s_12.phase_param_b) < 1f);
+            let _e190 = local_72;
+            ok = _e190;
+        }
+        case 5u: {
+            let _e191 = ok;
+            if _e191 {
+                local_73 = g_ok;
             } else {
                 local_73 = false;
             }
-            let _e189 = local_73;
-            if _e189 {
-                local_74 = (s_12.phase_param_c >= 0f);
+            let _e195 = local_73;
+            if _e195 {
+                local_74 = (abs(s_12.phase_param_b) < 1f);
             } else {
                 local_74 = false;
             }
-            let _e196 = local_74;
-            if _e196 {
-                local_75 = (s_12.phase_param_c <= 1f);
+            let _e203 = local_74;
+            if _e203 {
+                local_75 = (s_12.phase_param_c >= 0f);
             } else {
                 local_75 = false;
             }
-            let _e203 = local_75;
-            ok = _e203;
+            let _e210 = local_75;
+            if _e210 {
+                local_76 = (s_12.phase_param_c <= 1f);
+            } else {
+                local_76 = false;
+            }
+            let _e217 = local_76;
+            ok = _e217;
         }
         default: {
             ok = false;
         }
     }
-    let _e205 = ok;
-    return _e205;
+    let _e219 = ok;
+    return _e219;
 }
 
 fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
@@ -3669,29 +3728,29 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_76: bool;
     var local_77: bool;
+    var local_78: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_77 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        let _e21 = local_77;
-        local_76 = _e21;
+        let _e21 = local_78;
+        local_77 = _e21;
     } else {
-        local_76 = true;
+        local_77 = true;
     }
-    let _e23 = local_76;
+    let _e23 = local_77;
     return _e23;
 }
 
 fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_78: bool;
-    var out_2: AirlightCanonical;
     var local_79: bool;
+    var out_2: AirlightCanonical;
+    var local_80: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_14.flags > 1u));
@@ -3704,11 +3763,11 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_78 = !(_e38);
+        local_79 = !(_e38);
     } else {
-        local_78 = true;
+        local_79 = true;
     }
-    let _e41 = local_78;
+    let _e41 = local_79;
     if _e41 {
         return plain;
     }
@@ -3732,11 +3791,11 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_79 = (h_4 > 0f);
+        local_80 = (h_4 > 0f);
     } else {
-        local_79 = false;
+        local_80 = false;
     }
-    let _e101 = local_79;
+    let _e101 = local_80;
     if !(_e101) {
         return plain;
     }
@@ -3746,26 +3805,694 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_4);
-    let n_2 = -(cross(_e113, _e114));
+    let n_3 = -(cross(_e113, _e114));
     out_2.h = h_4;
     let _e119 = a_15;
-    out_2.d_c = dot(n_2, _e119);
+    out_2.d_c = dot(n_3, _e119);
     let _e121 = out_2;
     return _e121;
 }
 
-fn airlight_in_scatter(s_15: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_valid(s_15);
+fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
+    return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
+}
+
+fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
+    switch i_15 {
+        case 0u: {
+            return l.panel_a;
+        }
+        case 1u: {
+            return l.panel_b;
+        }
+        case 2u: {
+            return l.panel_c;
+        }
+        case 3u: {
+            return l.panel_d;
+        }
+        case 4u: {
+            return l.panel_e;
+        }
+        default: {
+            return l.panel_f;
+        }
+    }
+}
+
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
+    switch i_16 {
+        case 0u: {
+            (*l_1).panel_a = v_5;
+            return;
+        }
+        case 1u: {
+            (*l_1).panel_b = v_5;
+            return;
+        }
+        case 2u: {
+            (*l_1).panel_c = v_5;
+            return;
+        }
+        case 3u: {
+            (*l_1).panel_d = v_5;
+            return;
+        }
+        case 4u: {
+            (*l_1).panel_e = v_5;
+            return;
+        }
+        case 5u: {
+            (*l_1).panel_f = v_5;
+            return;
+        }
+        default: {
+            return;
+        }
+    }
+}
+
+fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan {
+    var r_2: AirlightListScan = AirlightListScan(0f, 0f, 0u);
+    var worst_error: f32 = -1f;
+
+    if (count_1 > 0u) {
+        let _e12 = r_2.total;
+        r_2.total = (_e12 + l_2.panel_a.z);
+        let _e17 = r_2.errors;
+        r_2.errors = (_e17 + l_2.panel_a.w);
+        let _e23 = worst_error;
+        if (l_2.panel_a.w > _e23) {
+            r_2.worst = 0u;
+            worst_error = l_2.panel_a.w;
+        }
+    }
+    if (count_1 > 1u) {
+        let _e32 = r_2.total;
+        r_2.total = (_e32 + l_2.panel_b.z);
+        let _e37 = r_2.errors;
+        r_2.errors = (_e37 + l_2.panel_b.w);
+        let _e43 = worst_error;
+        if (l_2.panel_b.w > _e43) {
+            r_2.worst = 1u;
+            worst_error = l_2.panel_b.w;
+        }
+    }
+    if (count_1 > 2u) {
+        let _e52 = r_2.total;
+        r_2.total = (_e52 + l_2.panel_c.z);
+        let _e57 = r_2.errors;
+        r_2.errors = (_e57 + l_2.panel_c.w);
+        let _e63 = worst_error;
+        if (l_2.panel_c.w > _e63) {
+            r_2.worst = 2u;
+            worst_error = l_2.panel_c.w;
+        }
+    }
+    if (count_1 > 3u) {
+        let _e72 = r_2.total;
+        r_2.total = (_e72 + l_2.panel_d.z);
+        let _e77 = r_2.errors;
+        r_2.errors = (_e77 + l_2.panel_d.w);
+        let _e83 = worst_error;
+        if (l_2.panel_d.w > _e83) {
+            r_2.worst = 3u;
+            worst_error = l_2.panel_d.w;
+        }
+    }
+    if (count_1 > 4u) {
+        let _e92 = r_2.total;
+        r_2.total = (_e92 + l_2.panel_e.z);
+        let _e97 = r_2.errors;
+        r_2.errors = (_e97 + l_2.panel_e.w);
+        let _e103 = worst_error;
+        if (l_2.panel_e.w > _e103) {
+            r_2.worst = 4u;
+            worst_error = l_2.panel_e.w;
+        }
+    }
+    if (count_1 > 5u) {
+        let _e112 = r_2.total;
+        r_2.total = (_e112 + l_2.panel_f.z);
+        let _e117 = r_2.errors;
+        r_2.errors = (_e117 + l_2.panel_f.w);
+        let _e123 = worst_error;
+        if (l_2.panel_f.w > _e123) {
+            r_2.worst = 5u;
+            worst_error = l_2.panel_f.w;
+        }
+    }
+    let _e129 = r_2;
+    return _e129;
+}
+
+fn airlight_asinh(x_11: f32) -> f32 {
+    var r_3: f32;
+
+    let a_20 = abs(x_11);
+    r_3 = (AIRLIGHT_LN_2_ + log(a_20));
+    if (a_20 <= 4096f) {
+        let _e17 = airlight_log1p((a_20 + ((a_20 * a_20) / (1f + sqrt((1f + (a_20 * a_20)))))));
+        r_3 = _e17;
+    }
+    let _e18 = r_3;
+    let _e19 = r_3;
+    return select(_e18, -(_e19), (x_11 < 0f));
+}
+
+fn airlight_to_w(g_16: AirlightSegment, s_15: f32) -> f32 {
+    if (g_16.scale > 0f) {
+        let _e9 = airlight_asinh(((s_15 - g_16.s_star) / g_16.scale));
+        return _e9;
+    }
+    return s_15;
+}
+
+fn airlight_segment(s_16: AirlightScene) -> AirlightSegment {
+    var g_17: AirlightSegment;
+    var local_81: bool;
+    var local_82: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
+    var local_83: bool;
+    var local_84: bool;
+    var local_85: bool;
+    var local_86: bool;
+    var local_87: bool;
+    var local_88: bool;
+    var scale: f32 = 0f;
+    var local_89: bool;
+    var local_90: bool;
+    var local_91: bool;
+    var local_92: bool;
+    var local_93: bool;
+    var cuts_1: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
+    var i_17: u32 = 0u;
+    var local_94: bool;
+    var local_95: bool;
+    var local_96: bool;
+    var n_1: u32 = 0u;
+    var i_18: u32 = 0u;
+    var local_97: bool;
+
+    g_17 = AirlightSegment(s_16.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u);
+    if (s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        let _e19 = g_17;
+        return _e19;
+    }
+    let ab_1 = (s_16.light_end - s_16.light_position);
+    let _e23 = airlight_safe_length(ab_1);
+    if !(!((_e23 > 0f))) {
+        local_81 = (s_16.intensity == 0f);
+    } else {
+        local_81 = true;
+    }
+    let _e34 = local_81;
+    if !(_e34) {
+        local_82 = (s_16.sigma_s == 0f);
+    } else {
+        local_82 = true;
+    }
+    let _e42 = local_82;
+    if _e42 {
+        g_17.outcome = 1u;
+        let _e45 = g_17;
+        return _e45;
+    }
+    let e_4 = (ab_1 / vec3(_e23));
+    let _e49 = airlight_normalize(s_16.dir);
+    let w0_ = (s_16.light_position - s_16.origin);
+    let cos_a = dot(e_4, _e49);
+    let along_e = dot(e_4, w0_);
+    let along_d = dot(_e49, w0_);
+    let sin2_ = (1f - (cos_a * cos_a));
+    let infinite_4 = ((s_16.flags & 1u) != 0u);
+    t_star = along_d;
+    if (sin2_ > AIRLIGHT_FLT_EPS) {
+        s_star = (((cos_a * along_d) - along_e) / sin2_);
+        t_star = ((along_d - (cos_a * along_e)) / sin2_);
+    }
+    let _e75 = t_star;
+    let _e78 = s_star;
+    let _e81 = airlight_safe_length(((w0_ - (_e49 * _e75)) + (e_4 * _e78)));
+    let sin_a = sqrt(max(sin2_, 0f));
+    if (_e81 == 0f) {
+        local_83 = (sin_a > 0f);
+    } else {
+        local_83 = false;
+    }
+    let _e92 = local_83;
+    if _e92 {
+        let _e95 = s_star;
+        local_84 = (_e95 >= 0f);
+    } else {
+        local_84 = false;
+    }
+    let _e99 = local_84;
+    if _e99 {
+        let _e102 = s_star;
+        local_85 = (_e102 <= _e23);
+    } else {
+        local_85 = false;
+    }
+    let _e105 = local_85;
+    if _e105 {
+        let _e109 = t_star;
+        local_86 = (s_16.t_min <= _e109);
+    } else {
+        local_86 = false;
+    }
+    let _e112 = local_86;
+    if _e112 {
+        if !(infinite_4) {
+            let _e118 = t_star;
+            local_88 = (_e118 <= s_16.t_max);
+        } else {
+            local_88 = true;
+        }
+        let _e122 = local_88;
+        local_87 = _e122;
+    } else {
+        local_87 = false;
+    }
+    let _e124 = local_87;
+    if _e124 {
+        g_17.outcome = 2u;
+        let _e127 = g_17;
+        return _e127;
+    }
+    if (sin_a > 0f) {
+        local_89 = (_e81 > 0f);
+    } else {
+        local_89 = false;
+    }
+    let _e137 = local_89;
+    if _e137 {
+        scale = (_e81 / sin_a);
+    }
+    let _e139 = s_star;
+    if (_e139 > -(_e23)) {
+        let _e144 = s_star;
+        local_90 = (_e144 < (_e23 + _e23));
+    } else {
+        local_90 = false;
+    }
+    let _e148 = local_90;
+    if _e148 {
+        let _e151 = scale;
+        local_91 = (_e151 < _e23);
+    } else {
+        local_91 = false;
+    }
+    let near_2 = local_91;
+    if near_2 {
+        let _e157 = s_star;
+        let _e159 = scale;
+        let _e161 = airlight_asinh(((_e23 - _e157) / _e159));
+        let _e162 = airlight_is_finite(_e161);
+        local_92 = _e162;
+    } else {
+        local_92 = false;
+    }
+    let _e164 = local_92;
+    if _e164 {
+        let _e167 = s_star;
+        let _e168 = scale;
+        let _e170 = airlight_asinh((_e167 / _e168));
+        let _e171 = airlight_is_finite(_e170);
+        local_93 = _e171;
+    } else {
+        local_93 = false;
+    }
+    let _e173 = local_93;
+    if !(_e173) {
+        scale = 0f;
+    }
+    g_17.e = e_4;
+    let _e178 = s_star;
+    g_17.s_star = _e178;
+    let _e180 = scale;
+    g_17.scale = _e180;
+    let _e186 = s_star;
+    at = array<f32, 3>(_e186, ((s_16.t_min - along_d) / cos_a), ((s_16.t_max - along_d) / cos_a));
+    loop {
+        let _e197 = i_17;
+        if (_e197 < 3u) {
+        } else {
+            break;
+        }
+        {
+            if (cos_a == 0f) {
+                let _e204 = i_17;
+                local_94 = (_e204 > 0u);
+            } else {
+                local_94 = false;
+            }
+            let _e208 = local_94;
+            if _e208 {
+                continue;
+            }
+            let _e209 = i_17;
+            if (_e209 == 2u) {
+                local_95 = infinite_4;
+            } else {
+                local_95 = false;
+            }
+            let _e215 = local_95;
+            if _e215 {
+                continue;
+            }
+            let _e216 = i_17;
+            let _e218 = at[_e216];
+            if (_e218 > 0f) {
+                let _e223 = i_17;
+                let _e225 = at[_e223];
+                local_96 = (_e225 < _e23);
+            } else {
+                local_96 = false;
+            }
+            let _e228 = local_96;
+            if _e228 {
+                let _e229 = i_17;
+                let _e231 = g_17;
+                let _e232 = i_17;
+                let _e234 = at[_e232];
+                let _e235 = airlight_to_w(_e231, _e234);
+                cuts_1[_e229] = _e235;
+            }
+        }
+        continuing {
+            let _e237 = i_17;
+            i_17 = (_e237 + 1u);
+        }
+    }
+    let _e240 = cuts_1[1];
+    let _e242 = cuts_1[0];
+    if (_e240 < _e242) {
+        let c_8 = cuts_1[0];
+        let _e248 = cuts_1[1];
+        cuts_1[0] = _e248;
+        cuts_1[1] = c_8;
+    }
+    let _e251 = cuts_1[2];
+    let _e253 = cuts_1[1];
+    if (_e251 < _e253) {
+        let c_9 = cuts_1[1];
+        let _e259 = cuts_1[2];
+        cuts_1[1] = _e259;
+        cuts_1[2] = c_9;
+    }
+    let _e262 = cuts_1[1];
+    let _e264 = cuts_1[0];
+    if (_e262 < _e264) {
+        let c_10 = cuts_1[0];
+        let _e270 = cuts_1[1];
+        cuts_1[0] = _e270;
+        cuts_1[1] = c_10;
+    }
+    let _e272 = g_17;
+    let _e273 = airlight_to_w(_e272, _e23);
+    let _e276 = g_17;
+    let _e278 = airlight_to_w(_e276, 0f);
+    g_17.edges[0] = _e278;
+    loop {
+        let _e283 = i_18;
+        if (_e283 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e286 = i_18;
+            let _e288 = cuts_1[_e286];
+            let _e290 = n_1;
+            let _e292 = g_17.edges[_e290];
+            if (_e288 > _e292) {
+                let _e296 = i_18;
+                let _e298 = cuts_1[_e296];
+                local_97 = (_e298 < _e273);
+            } else {
+                local_97 = false;
+            }
+            let _e301 = local_97;
+            if _e301 {
+                let _e302 = n_1;
+                n_1 = (_e302 + 1u);
+                let _e306 = n_1;
+                let _e308 = i_18;
+                let _e310 = cuts_1[_e308];
+                g_17.edges[_e306] = _e310;
+            }
+        }
+        continuing {
+            let _e312 = i_18;
+            i_18 = (_e312 + 1u);
+        }
+    }
+    let _e315 = n_1;
+    g_17.edges[(_e315 + 1u)] = _e273;
+    let _e320 = n_1;
+    g_17.panels = (_e320 + 1u);
+    let _e323 = g_17;
+    return _e323;
+}
+
+fn airlight_in_scatter(s_17: AirlightScene) -> AirlightResult {
+    var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var count_2: u32 = 0u;
+    var a_16: f32;
+    var b_12: f32;
+    var slot_1: u32 = 0u;
+    var queued: bool = false;
+    var queued_lo: f32 = 0f;
+    var queued_hi: f32 = 0f;
+    var step_1: u32 = 0u;
+    var k_6: f32;
+    var gauss: f32;
+    var j_4: u32;
+    var local_98: bool;
+    var at_1: f32;
+    var ds: f32;
+    var p: AirlightScene;
+    var r_4: AirlightResult;
+    var local_99: bool;
+    var split: bool;
+    var tries: u32;
+    var local_100: bool;
+    var local_101: bool;
+    var local_102: bool;
+
+    let _e1 = airlight_valid(s_17);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_canonical(s_15);
-    let _e7 = airlight_refined(s_15, _e6);
-    let _e8 = airlight_in_scatter_canonical(s_15, _e7);
-    let _e10 = airlight_is_finite(_e8.in_scatter);
-    if !(_e10) {
+    let _e6 = airlight_segment(s_17);
+    if (_e6.outcome == 1u) {
+        return AirlightResult(0f, 0u);
+    }
+    if (_e6.outcome == 2u) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return _e8;
+    let _e19 = airlight_kronrod_rule();
+    a_16 = _e6.edges[0];
+    b_12 = _e6.edges[1];
+    loop {
+        let _e53 = step_1;
+        if (_e53 < AIRLIGHT_SEGMENT_EVALUATIONS) {
+        } else {
+            break;
+        }
+        {
+            let _e56 = a_16;
+            let _e57 = b_12;
+            let c_11 = (0.5f * (_e56 + _e57));
+            let _e61 = b_12;
+            let _e62 = a_16;
+            let hw_1 = (0.5f * (_e61 - _e62));
+            k_6 = 0f;
+            gauss = 0f;
+            j_4 = 0u;
+            loop {
+                let _e72 = j_4;
+                if (_e72 < 7u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e75 = j_4;
+                    let node = _e19[(_e75 / 2u)];
+                    let _e85 = j_4;
+                    if ((_e85 & 1u) == 0u) {
+                        let _e92 = j_4;
+                        local_98 = (_e92 < 6u);
+                    } else {
+                        local_98 = false;
+                    }
+                    let _e96 = local_98;
+                    let w_5 = select((c_11 + (hw_1 * node.x)), (c_11 - (hw_1 * node.x)), _e96);
+                    at_1 = w_5;
+                    ds = 1f;
+                    if (_e6.scale > 0f) {
+                        at_1 = (_e6.s_star + (_e6.scale * sinh(w_5)));
+                        ds = (_e6.scale * cosh(w_5));
+                    }
+                    p = s_17;
+                    let _e115 = at_1;
+                    p.light_position = (_e6.a + (_e115 * _e6.e));
+                    p.light_shape = AIRLIGHT_SHAPE_POINT;
+                    r_4 = AirlightResult(0f, 0u);
+                    let _e126 = p.light_position;
+                    let _e127 = airlight_vec_finite(_e126);
+                    if _e127 {
+                        let _e128 = p;
+                        let _e129 = p;
+                        let _e130 = p;
+                        let _e131 = airlight_canonical(_e130);
+                        let _e132 = airlight_refined(_e129, _e131);
+                        let _e133 = airlight_in_scatter_canonical(_e128, _e132);
+                        r_4 = _e133;
+                    }
+                    let _e135 = r_4.in_scatter;
+                    let _e136 = airlight_is_finite(_e135);
+                    if !(!(_e136)) {
+                        let _e142 = r_4.status;
+                        local_99 = (_e142 == AIRLIGHT_STATUS_INFINITE);
+                    } else {
+                        local_99 = true;
+                    }
+                    let _e146 = local_99;
+                    if _e146 {
+                        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+                    }
+                    if (s_17.light_shape == AIRLIGHT_SHAPE_POINT) {
+                        let _e153 = r_4;
+                        return _e153;
+                    }
+                    let _e155 = r_4.in_scatter;
+                    let _e156 = ds;
+                    let f_3 = (_e155 * _e156);
+                    let _e158 = k_6;
+                    k_6 = (_e158 + (node.y * f_3));
+                    let _e162 = gauss;
+                    gauss = (_e162 + (node.z * f_3));
+                }
+                continuing {
+                    let _e167 = j_4;
+                    j_4 = (_e167 + 1u);
+                }
+            }
+            let _e169 = slot_1;
+            let _e170 = a_16;
+            let _e171 = b_12;
+            let _e172 = k_6;
+            let _e174 = k_6;
+            let _e176 = gauss;
+            airlight_list_set((&list_1), _e169, vec4<f32>(_e170, _e171, (_e172 * hw_1), abs(((_e174 * hw_1) - (_e176 * hw_1)))));
+            let _e181 = slot_1;
+            let _e182 = count_2;
+            if (_e181 == _e182) {
+                let _e184 = count_2;
+                count_2 = (_e184 + 1u);
+            }
+            let _e187 = count_2;
+            if (_e187 < _e6.panels) {
+                let _e191 = count_2;
+                a_16 = _e6.edges[_e191];
+                let _e194 = count_2;
+                b_12 = _e6.edges[(_e194 + 1u)];
+                let _e198 = count_2;
+                slot_1 = _e198;
+            } else {
+                let _e199 = queued;
+                if _e199 {
+                    let _e200 = queued_lo;
+                    a_16 = _e200;
+                    let _e201 = queued_hi;
+                    b_12 = _e201;
+                    let _e202 = count_2;
+                    slot_1 = _e202;
+                    queued = false;
+                } else {
+                    split = false;
+                    tries = 0u;
+                    loop {
+                        let _e208 = tries;
+                        if (_e208 < AIRLIGHT_SEGMENT_PANELS) {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e211 = list_1;
+                            let _e212 = count_2;
+                            let _e213 = airlight_list_scan(_e211, _e212);
+                            let total_4 = _e213.total;
+                            let worst_1 = _e213.worst;
+                            if !(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
+                                let _e224 = count_2;
+                                local_100 = (_e224 == AIRLIGHT_SEGMENT_PANELS);
+                            } else {
+                                local_100 = true;
+                            }
+                            let _e228 = local_100;
+                            if !(_e228) {
+                                let _e232 = airlight_is_finite(total_4);
+                                local_101 = !(_e232);
+                            } else {
+                                local_101 = true;
+                            }
+                            let _e235 = local_101;
+                            if _e235 {
+                                break;
+                            }
+                            let _e236 = list_1;
+                            let _e237 = airlight_list_get(_e236, worst_1);
+                            let wa_1 = _e237.x;
+                            let wb_1 = _e237.y;
+                            let mid_1 = (0.5f * (wa_1 + wb_1));
+                            if (mid_1 > wa_1) {
+                                local_102 = (mid_1 < wb_1);
+                            } else {
+                                local_102 = false;
+                            }
+                            let _e248 = local_102;
+                            if !(_e248) {
+                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e237.xyz, 0f));
+                                continue;
+                            }
+                            a_16 = wa_1;
+                            b_12 = mid_1;
+                            slot_1 = worst_1;
+                            queued = true;
+                            queued_lo = mid_1;
+                            queued_hi = wb_1;
+                            split = true;
+                            break;
+                        }
+                        continuing {
+                            let _e256 = tries;
+                            tries = (_e256 + 1u);
+                        }
+                    }
+                    let _e258 = split;
+                    if !(_e258) {
+                        break;
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e261 = step_1;
+            step_1 = (_e261 + 1u);
+        }
+    }
+    let _e263 = list_1;
+    let _e264 = count_2;
+    let _e265 = airlight_list_scan(_e263, _e264);
+    let total_5 = _e265.total;
+    let _e267 = airlight_is_finite(total_5);
+    if !(_e267) {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);
 }
 

@@ -46,6 +46,9 @@ const AIRLIGHT_PHASE_TWO_LOBE_HG: u32 = @PHASE_TWO_LOBE_HG@u;
 const AIRLIGHT_LIGHT_OMNI: u32 = @LIGHT_OMNI@u;
 const AIRLIGHT_LIGHT_TWO_LOBED: u32 = @LIGHT_TWO_LOBED@u;
 const AIRLIGHT_LIGHT_SPOT: u32 = @LIGHT_SPOT@u;
+// Emitter shapes (record field `light_shape`).
+const AIRLIGHT_SHAPE_POINT: u32 = @SHAPE_POINT@u;
+const AIRLIGHT_SHAPE_SEGMENT: u32 = @SHAPE_SEGMENT@u;
 
 // Result status codes (codegen/shaders/src/layout.rs).
 const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
@@ -99,6 +102,11 @@ struct AirlightScene {
     phase_kind: u32,
     /// bit 0: t_max is +∞.
     flags: u32,
+    /// A segment light's other end (its first is `light_position`).
+    light_end: vec3<f32>,
+    /// AIRLIGHT_SHAPE_POINT, or AIRLIGHT_SHAPE_SEGMENT: every point of `light_position →
+    /// light_end` emits `intensity` per unit length with the light's distribution.
+    light_shape: u32,
 }
 
 /// `in_scatter` (L_m) and a status: OK, INVALID (value 0) or INFINITE (value FLT_MAX).
@@ -123,7 +131,8 @@ struct AirlightRay {
 }
 
 /// A point light: `intensity · D(c)`, `D` by `kind` (`AIRLIGHT_LIGHT_*`) with `axis` and the
-/// parameters as in AirlightScene.
+/// parameters as in AirlightScene; or, with `shape` AIRLIGHT_SHAPE_SEGMENT, a segment light
+/// `position → end` (airlight_segment_light).
 struct AirlightLight {
     position: vec3<f32>,
     intensity: f32,
@@ -131,6 +140,8 @@ struct AirlightLight {
     param_a: f32,
     param_b: f32,
     kind: u32,
+    end: vec3<f32>,
+    shape: u32,
 }
 
 /// Scattering and extinction coefficients, per world unit.
@@ -159,19 +170,28 @@ fn airlight_ray_to_infinity(origin: vec3<f32>, dir: vec3<f32>, t_min: f32) -> Ai
 
 /// A light shining equally in all directions.
 fn airlight_omni(position: vec3<f32>, intensity: f32) -> AirlightLight {
-    return AirlightLight(position, intensity, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, AIRLIGHT_LIGHT_OMNI);
+    return AirlightLight(position, intensity, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, AIRLIGHT_LIGHT_OMNI, position, AIRLIGHT_SHAPE_POINT);
 }
 
 /// The paper's two-lobed light `D = c^power` about `axis` (`power` even, at most
 /// AIRLIGHT_MAX_POWER).
 fn airlight_two_lobed(position: vec3<f32>, intensity: f32, axis: vec3<f32>, power: u32) -> AirlightLight {
-    return AirlightLight(position, intensity, axis, f32(power), 0.0, AIRLIGHT_LIGHT_TWO_LOBED);
+    return AirlightLight(position, intensity, axis, f32(power), 0.0, AIRLIGHT_LIGHT_TWO_LOBED, position, AIRLIGHT_SHAPE_POINT);
 }
 
 /// A spot cone about `axis`: full intensity inside `cos_inner`, none outside `cos_outer`
 /// (`cos_outer < cos_inner`), smoothstep between.
 fn airlight_spot(position: vec3<f32>, intensity: f32, axis: vec3<f32>, cos_inner: f32, cos_outer: f32) -> AirlightLight {
-    return AirlightLight(position, intensity, axis, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT);
+    return AirlightLight(position, intensity, axis, cos_inner, cos_outer, AIRLIGHT_LIGHT_SPOT, position, AIRLIGHT_SHAPE_POINT);
+}
+
+/// The segment light (a fluorescent tube) from `light.position` to `end`: every point of it
+/// emits `light.intensity` per unit length with `light`'s distribution.
+fn airlight_segment_light(light: AirlightLight, end: vec3<f32>) -> AirlightLight {
+    var segment = light;
+    segment.end = end;
+    segment.shape = AIRLIGHT_SHAPE_SEGMENT;
+    return segment;
 }
 
 /// Scattering and extinction coefficients (`σs ≤ σt` physically; both ≥ 0), per world unit.
@@ -213,7 +233,7 @@ fn airlight_two_lobe_henyey_greenstein(g1: f32, g2: f32, w: f32) -> AirlightPhas
 fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
     return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis,
         light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c,
-        light.kind, phase.kind, ray.flags);
+        light.kind, phase.kind, ray.flags, light.end, light.shape);
 }
 
 // ---------------------------------------------------------------- complex arithmetic
@@ -1299,6 +1319,11 @@ fn airlight_valid(s: AirlightScene) -> bool {
     if ((s.flags & 1u) == 0u) {
         ok = ok && airlight_is_finite(s.t_max) && s.t_min <= s.t_max;
     }
+    if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        ok = ok && airlight_vec_finite(s.light_end);
+    } else if (s.light_shape != AIRLIGHT_SHAPE_POINT) {
+        ok = false;
+    }
     if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
             && s.light_param_a >= 0.0 && s.light_param_a <= f32(AIRLIGHT_MAX_POWER) && fract(s.light_param_a * 0.5) == 0.0;
@@ -1419,15 +1444,262 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
     return out;
 }
 
+// ---------------------------------------------------------------- extended lights
+// (kernel/src/extended.rs, SegmentScene::in_scatter_panels_counted with SHADER_CONTROL): a
+// segment light `a → b` of intensity I per unit length sheds L = ∫_0^ℓ L_point(a + s·e) ds,
+// taken in w with s = s* + (ρ*/sin α) sinh w about the emitter's closest approach to the ray's
+// line (ds/ρ = dw/sin α: the 1/ρ peak is smooth in w), split where the light's foot passes the
+// ray's ends, by globally adaptive Gauss–Kronrod 3/7 to the panels' tolerance, at most
+// AIRLIGHT_SEGMENT_PANELS panels. A point light is the first node of the same loop, so the
+// point-light integral has one call site.
+
+// At most this many panels (kernel SHADER_SEGMENT_PANELS), so at most 7·(2·6 − 1) = 77 point
+// lights. Mesa's lavapipe (llvmpipe) ends every loop of an invocation once all loops together
+// have run 65 535 iterations (gallivm LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop): at 8
+// panels, 98 point lights of 12 nodes reached it and came out 10–43 % low there.
+const AIRLIGHT_SEGMENT_PANELS: u32 = @SEGMENT_PANELS@u;
+// Panel evaluations: the first ones (≤ 4) and two per split, until the list is full.
+const AIRLIGHT_SEGMENT_EVALUATIONS: u32 = 2u * AIRLIGHT_SEGMENT_PANELS - 1u;
+
+/// Gauss–Kronrod 3/7 (extended.rs GAUSS_KRONROD_7): (x ≥ 0 descending, Kronrod weight, Gauss
+/// weight or 0); the rule takes ±x.
+fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
+    return array<vec3<f32>, 4>(@KRONROD_RULE@);
+}
+
+/// A segment's panel list: (a, b, Kronrod value, |Kronrod − Gauss|) per panel, one field
+/// each, read and written through a switch and scanned in straight-line code, so that every
+/// index is a literal and the list stays in registers (as codegen/shaders/src/unrolled.rs
+/// explains for the panels' arrays), and the scans add no loop iterations (see
+/// AIRLIGHT_SEGMENT_PANELS).
+struct AirlightPanelList {
+@SEGMENT_LIST_FIELDS@}
+
+fn airlight_list_get(l: AirlightPanelList, i: u32) -> vec4<f32> {
+    switch i {
+@SEGMENT_LIST_GET@    }
+}
+
+fn airlight_list_set(l: ptr<function, AirlightPanelList>, i: u32, v: vec4<f32>) {
+    switch i {
+@SEGMENT_LIST_SET@    }
+}
+
+/// The sums of the first `count` panels' values and errors, in order, and the first panel
+/// with the largest error.
+struct AirlightListScan {
+    total: f32,
+    errors: f32,
+    worst: u32,
+}
+
+fn airlight_list_scan(l: AirlightPanelList, count: u32) -> AirlightListScan {
+    var r = AirlightListScan(0.0, 0.0, 0u);
+    var worst_error = -1.0;
+@SEGMENT_LIST_SCAN@    return r;
+}
+
+/// asinh x: log1p(|x| + x²/(1 + √(1 + x²))) (no cancellation for x < 0, where Vulkan's asinh
+/// may take log(x + √(x² + 1))); ln 2 + ln|x| beyond 2^12, where the omitted 1/(4x²) < 2^-26.
+fn airlight_asinh(x: f32) -> f32 {
+    let a = abs(x);
+    var r = AIRLIGHT_LN_2 + log(a);
+    if (a <= 4096.0) {
+        r = airlight_log1p(a + a * a / (1.0 + sqrt(1.0 + a * a)));
+    }
+    return select(r, -r, x < 0.0);
+}
+
+/// A segment light's outer integral: s(w) = s* + scale·sinh w (scale > 0) or w, the emitter
+/// point a + s·e, and the panel edges in w.
+struct AirlightSegment {
+    a: vec3<f32>,
+    e: vec3<f32>,
+    s_star: f32,
+    scale: f32,
+    edges: array<f32, 5>,
+    /// Panels between the edges (a point light: one, [0, 0]).
+    panels: u32,
+    /// 0: integrate; 1: the result is 0; 2: the emitter meets the ray segment (+∞).
+    outcome: u32,
+}
+
+fn airlight_to_w(g: AirlightSegment, s: f32) -> f32 {
+    if (g.scale > 0.0) { return airlight_asinh((s - g.s_star) / g.scale); }
+    return s;
+}
+
+/// The outer integral of a scene's light (extended.rs SegmentScene::integrate).
+fn airlight_segment(s: AirlightScene) -> AirlightSegment {
+    var g = AirlightSegment(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u);
+    if (s.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        return g;
+    }
+    let ab = s.light_end - s.light_position;
+    let len = airlight_safe_length(ab);
+    if (!(len > 0.0) || s.intensity == 0.0 || s.sigma_s == 0.0) {
+        g.outcome = 1u;
+        return g;
+    }
+    let e = ab / len;
+    let d = airlight_normalize(s.dir);
+    let w0 = s.light_position - s.origin;
+    let cos_a = dot(e, d);
+    let along_e = dot(e, w0);
+    let along_d = dot(d, w0);
+    let sin2 = 1.0 - cos_a * cos_a;
+    let infinite = (s.flags & 1u) != 0u;
+    // the emitter's closest approach to the ray's line: s*, the ray's t*, the distance ρ*
+    var s_star = 0.0;
+    var t_star = along_d;
+    if (sin2 > AIRLIGHT_FLT_EPS) {
+        s_star = (cos_a * along_d - along_e) / sin2;
+        t_star = (along_d - cos_a * along_e) / sin2;
+    }
+    let rho = airlight_safe_length(w0 - d * t_star + e * s_star);
+    let sin_a = sqrt(max(sin2, 0.0));
+    if (rho == 0.0 && sin_a > 0.0 && s_star >= 0.0 && s_star <= len && s.t_min <= t_star && (infinite || t_star <= s.t_max)) {
+        g.outcome = 2u;
+        return g;
+    }
+    // sinh about s* where the lines are skew and the peak is narrower than the segment and
+    // within a length of it; else s itself
+    var scale = 0.0;
+    if (sin_a > 0.0 && rho > 0.0) { scale = rho / sin_a; }
+    let near = s_star > -len && s_star < len + len && scale < len;
+    if (!(near && airlight_is_finite(airlight_asinh((len - s_star) / scale)) && airlight_is_finite(airlight_asinh(s_star / scale)))) {
+        scale = 0.0;
+    }
+    g.e = e;
+    g.s_star = s_star;
+    g.scale = scale;
+    // panels: split at the closest approach and where the light's foot passes a ray end
+    var cuts = array<f32, 3>(AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX);
+    var at = array<f32, 3>(s_star, (s.t_min - along_d) / cos_a, (s.t_max - along_d) / cos_a);
+    for (var i = 0u; i < 3u; i++) {
+        if (cos_a == 0.0 && i > 0u) { continue; }
+        if (i == 2u && infinite) { continue; }
+        if (at[i] > 0.0 && at[i] < len) { cuts[i] = airlight_to_w(g, at[i]); }
+    }
+    // sorted (three compare-and-swaps), then those strictly inside and increasing kept
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    let hi = airlight_to_w(g, len);
+    g.edges[0] = airlight_to_w(g, 0.0);
+    var n = 0u;
+    for (var i = 0u; i < 3u; i++) {
+        if (cuts[i] > g.edges[n] && cuts[i] < hi) {
+            n += 1u;
+            g.edges[n] = cuts[i];
+        }
+    }
+    g.edges[n + 1u] = hi;
+    g.panels = n + 1u;
+    return g;
+}
+
 /// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library.
-/// Invalid scenes give (0, INVALID); a light exactly on the segment gives (FLT_MAX, INFINITE).
+/// Invalid scenes give (0, INVALID); a light on the segment gives (FLT_MAX, INFINITE).
 fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s)) {
         return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
     }
-    let r = airlight_in_scatter_canonical(s, airlight_refined(s, airlight_canonical(s)));
-    if (!airlight_is_finite(r.in_scatter)) {
+    let g = airlight_segment(s);
+    if (g.outcome == 1u) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_OK);
+    }
+    if (g.outcome == 2u) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
-    return r;
+    let rule = airlight_kronrod_rule();
+    let tolerance = AIRLIGHT_PANEL_TOLERANCE;
+    // the panel list (extended.rs adaptive): (a, b, Kronrod value, |Kronrod − Gauss|)
+    var list = AirlightPanelList(@ZEROS_SEGMENT_LIST@);
+    var count = 0u;
+    // the panel to evaluate next and its slot; a split's second half waits in `queued`
+    var a = g.edges[0];
+    var b = g.edges[1];
+    var slot = 0u;
+    var queued = false;
+    var queued_lo = 0.0;
+    var queued_hi = 0.0;
+    for (var step = 0u; step < AIRLIGHT_SEGMENT_EVALUATIONS; step++) {
+        let c = 0.5 * (a + b);
+        let hw = 0.5 * (b - a);
+        var k = 0.0;
+        var gauss = 0.0;
+        for (var j = 0u; j < 7u; j++) {
+            let node = rule[j / 2u];
+            let w = select(c + hw * node.x, c - hw * node.x, (j & 1u) == 0u && j < 6u);
+            var at = w;
+            var ds = 1.0;
+            if (g.scale > 0.0) {
+                at = g.s_star + g.scale * sinh(w);
+                ds = g.scale * cosh(w);
+            }
+            var p = s;
+            p.light_position = g.a + at * g.e;
+            p.light_shape = AIRLIGHT_SHAPE_POINT;
+            var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
+            if (airlight_vec_finite(p.light_position)) {
+                r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
+            }
+            // a point light, or a node on the ray (the kernel's sum is then +∞ at once)
+            if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
+                return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+            }
+            if (s.light_shape == AIRLIGHT_SHAPE_POINT) {
+                return r;
+            }
+            let f = r.in_scatter * ds;
+            k += node.y * f;
+            gauss += node.z * f;
+        }
+        airlight_list_set(&list, slot, vec4<f32>(a, b, k * hw, abs(k * hw - gauss * hw)));
+        if (slot == count) { count += 1u; }
+        // next: the remaining first panels, a split's second half, or the worst panel's first
+        if (count < g.panels) {
+            a = g.edges[count];
+            b = g.edges[count + 1u];
+            slot = count;
+        } else if (queued) {
+            a = queued_lo;
+            b = queued_hi;
+            slot = count;
+            queued = false;
+        } else {
+            var split = false;
+            for (var tries = 0u; tries < AIRLIGHT_SEGMENT_PANELS; tries++) {
+                let scan = airlight_list_scan(list, count);
+                let total = scan.total;
+                let worst = scan.worst;
+                if (!(scan.errors > tolerance * abs(total)) || count == AIRLIGHT_SEGMENT_PANELS || !airlight_is_finite(total)) {
+                    break;
+                }
+                let w = airlight_list_get(list, worst);
+                let wa = w.x;
+                let wb = w.y;
+                let mid = 0.5 * (wa + wb);
+                if (!(mid > wa && mid < wb)) {
+                    airlight_list_set(&list, worst, vec4<f32>(w.xyz, 0.0));
+                    continue;
+                }
+                a = wa;
+                b = mid;
+                slot = worst;
+                queued = true;
+                queued_lo = mid;
+                queued_hi = wb;
+                split = true;
+                break;
+            }
+            if (!split) { break; }
+        }
+    }
+    let total = airlight_list_scan(list, count).total;
+    if (!airlight_is_finite(total)) {
+        return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+    }
+    return AirlightResult(max(total, 0.0), AIRLIGHT_STATUS_OK);
 }

@@ -58,7 +58,7 @@ use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
 use airlight::record::SceneRecord;
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{PhaseFunction, Scene};
+use airlight::{PhaseFunction, PointLight, Scene, SegmentLight, SegmentScene};
 
 /// Relative allowance (of scale) for the built-ins' accuracy (module docs).
 pub const ALLOWANCE: f64 = 2e-4;
@@ -168,6 +168,75 @@ pub fn expect(rec: &SceneRecord<f32>, terms: usize) -> Expected {
     iso.phase = AnyPhase::Isotropic;
     let p_max = [-1.0f64, 1.0].iter().map(|&mu| wide.phase.eval(mu)).fold(0.0, f64::max);
     let scale = (in_scatter(&iso, 6).unwrap_or(0.0) * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
+    Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
+}
+
+/// A segment light's scene in the record types.
+pub type SegmentRecord<T> = SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>;
+
+/// What the shader computes for a segment light, on the CPU
+/// ([`SegmentScene::in_scatter_panels_counted`] with the shaders' control and
+/// [`airlight::SHADER_SEGMENT_PANELS`]).
+fn segment_in_scatter<T: airlight::Real>(scene: &SegmentRecord<T>, terms: usize) -> T {
+    let c = airlight::SHADER_CONTROL;
+    let control = airlight::panels::Control { tolerance: T::lit(c.tolerance as f64), floor: T::lit(c.floor as f64), max_panels: c.max_panels };
+    let panels = airlight::SHADER_SEGMENT_PANELS;
+    match terms {
+        8 => scene.in_scatter_panels_counted::<8>(control, panels).0,
+        12 => scene.in_scatter_panels_counted::<12>(control, panels).0,
+        _ => panic!("the shaders are emitted with 8 or 12 nodes per panel, not {terms}"),
+    }
+}
+
+/// The segment light with input `k` moved by one ulp: the inputs [`perturbed`] moves (the
+/// light's position is the end `a`), then (`k ≥ PERTURBATIONS`) each coordinate of `b` up/down.
+fn perturbed_segment(scene: &SegmentRecord<f32>, k: usize) -> Option<SegmentRecord<f32>> {
+    let l = *scene.light();
+    let mut b = l.b.to_array();
+    let rec = SceneRecord { ray: *scene.ray(), light: PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }, medium: *scene.medium(), phase: *scene.phase() };
+    let q = if k < PERTURBATIONS {
+        perturbed(&rec, k)
+    } else {
+        let i = (k - PERTURBATIONS) / 2;
+        b[i] = if k % 2 == 0 { b[i].next_up() } else { b[i].next_down() };
+        rec
+    };
+    let light = SegmentLight { a: q.light.position, b: airlight::glam::Vec3::from_array(b), intensity: l.intensity, distribution: l.distribution };
+    SegmentScene::new(q.ray, light, q.medium, q.phase).ok()
+}
+
+/// The CPU's expectation for a segment light from the shader with `terms` nodes per panel,
+/// by the same criterion as [`expect`]: the noise over the record and its one-ulp
+/// perturbations (also of `b`) plus the error of the same method in f64 against the default
+/// `in_scatter` (error-controlled to 1e-10); the scale is the segment with `F` replaced by its
+/// maximum (isotropic light and phase, times `4π·max P`), at least the value.
+pub fn expect_segment(scene: &SegmentRecord<f32>, terms: usize) -> Expected {
+    let v = segment_in_scatter(scene, terms);
+    let l = *scene.light();
+    let cast = |x: airlight::glam::Vec3| airlight::glam::DVec3::new(x.x as f64, x.y as f64, x.z as f64);
+    let rec = SceneRecord { ray: *scene.ray(), light: PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }, medium: *scene.medium(), phase: *scene.phase() }.cast::<f64>();
+    let light = SegmentLight { a: rec.light.position, b: cast(l.b), intensity: rec.light.intensity, distribution: rec.light.distribution };
+    let Ok(wide) = SegmentScene::new(rec.ray, light, rec.medium, rec.phase) else {
+        return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
+    };
+    let same = segment_in_scatter(&wide, terms);
+    if v.is_infinite() {
+        return Expected { value: f32::MAX, status: STATUS_INFINITE, f64_value: same, noise: 0.0, scale: 0.0 };
+    }
+    let e_n = (same - wide.in_scatter()).abs();
+    let mut worst = (v as f64 - same).abs();
+    for k in 0..PERTURBATIONS + 6 {
+        if let Some(x) = perturbed_segment(scene, k).map(|q| segment_in_scatter(&q, terms)) {
+            if x.is_finite() {
+                worst = worst.max((x as f64 - same).abs());
+            }
+        }
+    }
+    let noise = if same.is_finite() { worst + e_n } else { 0.0 };
+    let iso_light = SegmentLight { distribution: AnyDistribution::Omni, ..light };
+    let iso = SegmentScene::new(rec.ray, iso_light, rec.medium, AnyPhase::Isotropic).map(|s| segment_in_scatter(&s, terms)).unwrap_or(0.0);
+    let p_max = [-1.0f64, 1.0].iter().map(|&mu| rec.phase.eval(mu)).fold(0.0, f64::max);
+    let scale = (iso * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
     Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
 }
 

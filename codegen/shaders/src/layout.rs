@@ -1,4 +1,4 @@
-//! The records of the compute entry point: [`Record`] in (the WGSL `AirlightScene`, 112 bytes,
+//! The records of the compute entry point: [`Record`] in (the WGSL `AirlightScene`, 128 bytes,
 //! std430 / WGSL storage layout; the offset table is in shaders-out/README.md), [`GpuResult`]
 //! out (8 bytes), both plain `#[repr(C)]` types the host writes and reads with bytemuck; a test
 //! checks their offsets and strides against naga's layout of the WGSL structs. Also the kind and
@@ -6,12 +6,12 @@
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{Medium, PointLight, Ray};
+use airlight::{Medium, PointLight, Ray, SegmentScene};
 
 /// Bytes per input record.
-pub const RECORD_SIZE: usize = 112;
-/// Bytes `0..FLOAT_INPUTS_END` of a record are its f32 inputs (origin … phase_param2); the
-/// u32 kinds and flags follow.
+pub const RECORD_SIZE: usize = 128;
+/// Bytes `0..FLOAT_INPUTS_END` of a record are its f32 inputs (origin … phase_param_c) but for
+/// a segment light's `light_end`; the u32 kinds and flags follow.
 pub const FLOAT_INPUTS_END: usize = 88;
 /// Bytes per output record.
 pub const RESULT_SIZE: usize = 8;
@@ -28,6 +28,11 @@ pub const LIGHT_OMNI: u32 = 0;
 pub const LIGHT_TWO_LOBED: u32 = 1;
 /// `light_kind` of a spot cone (`light_param_a`, `_b` = cos_inner, cos_outer).
 pub const LIGHT_SPOT: u32 = 2;
+/// `light_shape` of a point light.
+pub const SHAPE_POINT: u32 = 0;
+/// `light_shape` of a segment light `light_position → light_end`, `intensity` per unit length
+/// ([`airlight::SegmentLight`]).
+pub const SHAPE_SEGMENT: u32 = 1;
 /// `phase_kind` of isotropic scattering.
 pub const PHASE_ISOTROPIC: u32 = 0;
 /// `phase_kind` of Rayleigh scattering.
@@ -84,8 +89,12 @@ pub struct Record {
     pub phase_kind: u32,
     /// Bit 0: `t_max = +∞`.
     pub flags: u32,
-    /// Up to the array stride, 112 (the struct's alignment is 16).
+    /// Up to `light_end`'s 16-byte alignment.
     pub padding: [u32; 3],
+    /// A segment light's other end.
+    pub light_end: [f32; 3],
+    /// `SHAPE_*`.
+    pub light_shape: u32,
 }
 
 /// One output of the compute entry point: the WGSL `AirlightResult` struct.
@@ -101,6 +110,17 @@ pub struct GpuResult {
 impl Record {
     /// The record of a scene given as the kernel's types.
     pub fn new(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> Self {
+        Self::with_shape(ray, light, medium, phase, SHAPE_POINT, light.position.to_array())
+    }
+
+    /// The record of a segment light (its `a` the record's `light_position`).
+    pub fn segment(scene: &SegmentScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> Self {
+        let l = scene.light();
+        let light = PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution };
+        Self::with_shape(scene.ray(), &light, scene.medium(), scene.phase(), SHAPE_SEGMENT, l.b.to_array())
+    }
+
+    fn with_shape(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>, light_shape: u32, light_end: [f32; 3]) -> Self {
         let (light_kind, light_axis, light_param_a, light_param_b) = match light.distribution {
             AnyDistribution::Omni => (LIGHT_OMNI, [0.0, 0.0, 1.0], 0.0, 0.0),
             AnyDistribution::TwoLobed(d) => (LIGHT_TWO_LOBED, d.axis.to_array(), d.power as f32, 0.0),
@@ -134,6 +154,8 @@ impl Record {
             phase_kind,
             flags: infinite as u32,
             padding: [0; 3],
+            light_end,
+            light_shape,
         }
     }
 
@@ -143,9 +165,14 @@ impl Record {
     }
 }
 
-/// Packs one scene into its 112-byte record (little-endian, as every GPU wgpu runs on).
+/// Packs one scene into its 128-byte record (little-endian, as every GPU wgpu runs on).
 pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> [u8; RECORD_SIZE] {
     bytemuck::cast(Record::new(ray, light, medium, phase))
+}
+
+/// Packs one segment light's scene into its record.
+pub fn pack_segment(scene: &SegmentScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> [u8; RECORD_SIZE] {
+    bytemuck::cast(Record::segment(scene))
 }
 
 /// Reads one result: `(in_scatter, status)`.
@@ -166,7 +193,7 @@ mod tests {
         let (module, _) = crate::targets::validate(&crate::targets::source(4, true)).unwrap();
         let mut layouter = naga::proc::Layouter::default();
         layouter.update(module.to_ctx()).unwrap();
-        let rust: [(&str, usize); 17] = [
+        let rust: [(&str, usize); 19] = [
             ("origin", core::mem::offset_of!(Record, origin)),
             ("t_min", core::mem::offset_of!(Record, t_min)),
             ("dir", core::mem::offset_of!(Record, dir)),
@@ -184,6 +211,8 @@ mod tests {
             ("light_kind", core::mem::offset_of!(Record, light_kind)),
             ("phase_kind", core::mem::offset_of!(Record, phase_kind)),
             ("flags", core::mem::offset_of!(Record, flags)),
+            ("light_end", core::mem::offset_of!(Record, light_end)),
+            ("light_shape", core::mem::offset_of!(Record, light_shape)),
         ];
         let result: [(&str, usize); 2] = [("in_scatter", core::mem::offset_of!(GpuResult, in_scatter)), ("status", core::mem::offset_of!(GpuResult, status))];
         for (name, fields, size) in [("AirlightScene", &rust[..], core::mem::size_of::<Record>()), ("AirlightResult", &result[..], core::mem::size_of::<GpuResult>())] {

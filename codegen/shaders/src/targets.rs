@@ -31,7 +31,7 @@ const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
     let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u));
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
 }
 ";
 
@@ -40,7 +40,7 @@ const LIBRARY_STUB_ES: &str = "
 @fragment
 fn airlight_library_entry() -> @location(0) vec4<f32> {
     let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u));
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
     return vec4<f32>(r.in_scatter);
 }
 ";
@@ -213,6 +213,18 @@ impl Constants {
             ("@LIGHT_OMNI@", l::LIGHT_OMNI.to_string()),
             ("@LIGHT_TWO_LOBED@", l::LIGHT_TWO_LOBED.to_string()),
             ("@LIGHT_SPOT@", l::LIGHT_SPOT.to_string()),
+            ("@SHAPE_POINT@", l::SHAPE_POINT.to_string()),
+            ("@SHAPE_SEGMENT@", l::SHAPE_SEGMENT.to_string()),
+            ("@SEGMENT_PANELS@", airlight::SHADER_SEGMENT_PANELS.to_string()),
+            ("@ZEROS_SEGMENT_LIST@", list(vec!["vec4<f32>(0.0)".to_string(); airlight::SHADER_SEGMENT_PANELS])),
+            ("@SEGMENT_LIST_FIELDS@", unrolled::list_fields(airlight::SHADER_SEGMENT_PANELS)),
+            ("@SEGMENT_LIST_GET@", unrolled::list_get(airlight::SHADER_SEGMENT_PANELS)),
+            ("@SEGMENT_LIST_SET@", unrolled::list_set(airlight::SHADER_SEGMENT_PANELS)),
+            ("@SEGMENT_LIST_SCAN@", unrolled::list_scan(airlight::SHADER_SEGMENT_PANELS)),
+            (
+                "@KRONROD_RULE@",
+                list(airlight::extended::GAUSS_KRONROD_7.iter().map(|&(x, k, g)| format!("vec3<f32>({}, {}, {})", f(x), f(k), f(g))).collect()),
+            ),
             ("@STATUS_OK@", l::STATUS_OK.to_string()),
             ("@STATUS_INVALID@", l::STATUS_INVALID.to_string()),
             ("@STATUS_INFINITE@", l::STATUS_INFINITE.to_string()),

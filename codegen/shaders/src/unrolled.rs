@@ -155,3 +155,53 @@ pub fn expand_each_term(source: &str, terms: usize) -> String {
     }
     out
 }
+
+/// The field of panel `i` in `AirlightPanelList` (letters: naga renames names ending in a
+/// digit).
+fn list_field(i: usize) -> String {
+    format!("panel_{}", (b'a' + i as u8) as char)
+}
+
+/// The fields of `AirlightPanelList`, `panels` of them.
+///
+/// # Panics
+/// Beyond 26 panels (one letter each).
+pub fn list_fields(panels: usize) -> String {
+    assert!(panels <= 26, "at most 26 listed panels");
+    (0..panels).map(|i| format!("    {}: vec4<f32>,\n", list_field(i))).collect()
+}
+
+/// The cases of `airlight_list_get`: panel `i`'s field (the last for any larger `i`).
+pub fn list_get(panels: usize) -> String {
+    let mut s = String::new();
+    for i in 0..panels {
+        let case = if i + 1 == panels { "default".to_string() } else { format!("case {i}u") };
+        let _ = writeln!(s, "        {case}: {{ return l.{}; }}", list_field(i));
+    }
+    s
+}
+
+/// The cases of `airlight_list_set` (indices beyond the list write nothing).
+pub fn list_set(panels: usize) -> String {
+    let mut s = String::new();
+    for i in 0..panels {
+        let _ = writeln!(s, "        case {i}u: {{ (*l).{} = v; }}", list_field(i));
+    }
+    s.push_str("        default: {}\n");
+    s
+}
+
+/// The body of `airlight_list_scan`: panel by panel while `i < count`, the sums and the first
+/// largest error (extended.rs `adaptive`'s scan, in its order).
+pub fn list_scan(panels: usize) -> String {
+    let mut s = String::new();
+    for i in 0..panels {
+        let f = list_field(i);
+        let _ = writeln!(s, "    if (count > {i}u) {{");
+        let _ = writeln!(s, "        r.total += l.{f}.z;");
+        let _ = writeln!(s, "        r.errors += l.{f}.w;");
+        let _ = writeln!(s, "        if (l.{f}.w > worst_error) {{ r.worst = {i}u; worst_error = l.{f}.w; }}");
+        let _ = writeln!(s, "    }}");
+    }
+    s
+}
