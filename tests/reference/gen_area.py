@@ -75,6 +75,22 @@ def point_lights(o, d, t0, t1, ss, st, P, A, inten, phase, q):
     return ss * inten / h * np.sum(wt * f * e, axis=(1, 2))
 
 
+
+def psi_octaves(psi_d, width):
+    """Knots in ψ at octaves `width·2^j` (up to π/2) either side of the ray's direction
+    `psi_d` and of its turns by π: where a ray close to the pole's tangent plane makes the
+    integrand vary on the scale of the gap."""
+    extra = set()
+    for turn in range(-1, 3):
+        centre = psi_d + np.pi * turn
+        for j in range(-2, 60):
+            w = width * 2.0 ** j
+            if w > np.pi / 2:
+                break
+            extra |= {centre - w, centre + w}
+        extra.add(centre)
+    return extra
+
 class Scene:
     def __init__(self, rec):
         r = rec["ray"]
@@ -108,15 +124,7 @@ class Scene:
             psi_d = math.atan2(np.dot(d_in, a2), np.dot(d_in, a1))
             width = rho0 / size if rho0 > 1e-9 * size else max(abs(np.dot(self.d, n)), 1e-12)
             lo_, hi_ = psi_edges[0], psi_edges[-1]
-            extra = set()
-            for turn in range(-1, 3):
-                centre = psi_d + np.pi * turn
-                for j in range(-2, 60):
-                    w = width * 2.0 ** j
-                    if w > np.pi / 2:
-                        break
-                    extra |= {centre - w, centre + w}
-                extra.add(centre)
+            extra = psi_octaves(psi_d, width)
             psi_edges = sorted(set(psi_edges) | {x for x in extra if lo_ < x < hi_})
         lo, hi = np.array(psi_edges[:-1]), np.array(psi_edges[1:])
         Psi, Wpsi = composite(lo, hi, q, 1)
@@ -247,15 +255,7 @@ class Scene:
         if np.linalg.norm(d_in) > 1e-12 and rho0 < R:
             psi_d = math.atan2(np.dot(d_in, b2), np.dot(d_in, b1))
             width = rho0 / R if rho0 > 1e-9 * R else max(abs(np.dot(d, a)), 1e-12)
-            extra = set()
-            for turn in range(-1, 3):
-                centre = psi_d + np.pi * turn
-                for j in range(-2, 60):
-                    w = width * 2.0 ** j
-                    if w > np.pi / 2:
-                        break
-                    extra |= {centre - w, centre + w}
-                extra.add(centre)
+            extra = psi_octaves(psi_d, width)
             psi_edges = sorted(set(psi_edges) | {x for x in extra if 0 < x < 2 * np.pi})
         lo, hi = np.array(psi_edges[:-1]), np.array(psi_edges[1:])
         Psi, Wpsi = composite(lo, hi, q, 1)
