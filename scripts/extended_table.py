@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""Prints BENCHMARKS.md's segment-light table from `cargo bench -p airlight-tests --bench
-extended`: criterion's median time per iteration (target/criterion/extended_<precision>_<class>/
-<bench>/new/estimates.json; one iteration evaluates every record of the class once) divided by
-the record count, joined with the accuracy the bench measured first
-(target/criterion/extended_accuracy.jsonl: largest relative error against the mpmath
-references; panels: Gauss–Kronrod panels per segment, median / max)."""
+"""Prints BENCHMARKS.md's extended-light table from `cargo bench -p airlight-tests --bench
+extended`: criterion's median time per iteration (target/criterion/extended_<precision>_<shape>_
+<class>/<bench>/new/estimates.json; one iteration evaluates every record of the class once)
+divided by the record count, joined with the accuracy the bench measured first
+(target/criterion/extended_accuracy.jsonl: largest relative error against the references;
+evaluated: Gauss–Kronrod panels per segment, point lights per disc, rectangle or sphere, median /
+max)."""
 import json
 import os
 
@@ -16,12 +17,13 @@ def ns(group, bench, n):
     return json.load(open(path))["median"]["point_estimate"] / n
 
 
-print("| precision | class | records | default: largest error | panels | ns/segment | 1e-3: largest error | panels | ns/segment | point light, ns | default / point | 1e-3 / point |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("| precision | shape | class | records | default: largest error | evaluated | ns/light | 1e-3: largest error | evaluated | ns/light | point light, ns | default / point | 1e-3 / point |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for line in open(os.path.join(root, "extended_accuracy.jsonl")):
     r = json.loads(line)
     g = f"extended_{r['precision']}_{r['class']}"
+    shape, cls = r["class"].split("_", 1)
     n = r["records"]
-    d, l, p = ns(g, "segment_default", n), ns(g, "segment_1e-3", n), ns(g, "point", n)
-    print(f"| {r['precision']} | {r['class']} | {n} | {r['default']:.1e} | {r['default_panels'][0]} / {r['default_panels'][1]} | {d:.0f} "
+    d, l, p = ns(g, "emitter_default", n), ns(g, "emitter_1e-3", n), ns(g, "point", n)
+    print(f"| {r['precision']} | {shape} | {cls} | {n} | {r['default']:.1e} | {r['default_panels'][0]} / {r['default_panels'][1]} | {d:.0f} "
           f"| {r['loose']:.1e} | {r['loose_panels'][0]} / {r['loose_panels'][1]} | {l:.0f} | {p:.0f} | {d / p:.1f}× | {l / p:.1f}× |")

@@ -1,17 +1,21 @@
-//! Segment lights against one point light, side by side in one process, on the records of
-//! tests/reference/extended.jsonl (nested mpmath references; tests/reference/gen_extended.py).
+//! Extended lights against one point light, side by side in one process: segment lights on the
+//! records of tests/reference/extended.jsonl (nested mpmath references;
+//! tests/reference/gen_extended.py), discs, rectangles and spheres on those of
+//! tests/reference/area.jsonl (tests/reference/gen_area.py).
 //!
 //! Accuracy first, outside the timed loops: per class and precision, the largest relative error
-//! of `SegmentScene::in_scatter()` (the default) and of `in_scatter_counted(1e-3)` against the
-//! references, and the panels each takes. Timed, per class, over all its records per iteration:
-//! `segment_default`, `segment_1e-3`, and `point`: the default point light of intensity `I·ℓ`
-//! at each segment's midpoint (the cost a segment is compared with).
+//! of the default (`in_scatter()`, the outer tolerance `extended::outer_tolerance`) and of
+//! `in_scatter_counted(1e-3)` against the references, and what each evaluates (a segment:
+//! Gauss–Kronrod panels; an area light: point lights). Timed, per class, over all its records
+//! per iteration: `emitter_default`, `emitter_1e-3`, and `point`: the default point light of
+//! the emitter's whole output at its middle (a segment: intensity `I·ℓ` at its midpoint; a disc
+//! or rectangle: the Lambertian point light of intensity `L_e·area` at its centre; a sphere: the
+//! isotropic one of intensity `π R² L_e` at its centre), the cost an emitter is compared with.
 //!
 //! `cargo bench -p airlight-tests --bench extended && python3 scripts/extended_table.py`
 
-use airlight::light::AnyDistribution;
-use airlight::phase::AnyPhase;
-use airlight::{PointLight, Real, Scene, SegmentScene};
+use airlight::light::{Lambertian, Omni};
+use airlight::{Emitter, PointLight, Real, Scene};
 use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
 use airlight_tests::reference_lines;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -19,27 +23,61 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::time::Duration;
 
-type Seg<T> = SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>;
-type Point<T> = Scene<T, AnyDistribution<T>, AnyPhase<T>>;
+/// One emitter of a class: its counted evaluation at a tolerance, and the point light it is
+/// compared with.
+struct Record<T> {
+    counted: Box<dyn Fn(T) -> (T, usize)>,
+    point: Box<dyn Fn() -> T>,
+}
 
 struct Class<T: Real> {
-    segments: Vec<Seg<T>>,
-    points: Vec<Point<T>>,
+    records: Vec<Record<T>>,
     exact: Vec<f64>,
 }
 
 fn load<T: Real>() -> BTreeMap<String, Class<T>> {
     let mut out: BTreeMap<String, Class<T>> = BTreeMap::new();
-    for v in reference_lines("extended.jsonl") {
-        let AnyRecord::Segment(seg) = parse_any_value::<T>(&v).unwrap() else { panic!("not a segment light: {v}") };
-        let (a, b) = (T::vec3_to_array(seg.light().a), T::vec3_to_array(seg.light().b));
-        let mid = T::vec3_from_array([0, 1, 2].map(|i| (a[i] + b[i]) * T::lit(0.5)));
-        let len = [0, 1, 2].map(|i| b[i] - a[i]).iter().fold(T::zero(), |s, x| s + *x * *x).sqrt();
-        let light = PointLight { position: mid, intensity: seg.light().intensity * len, distribution: seg.light().distribution };
-        let point = Scene::new(*seg.ray(), light, *seg.medium(), *seg.phase()).unwrap();
-        let class = out.entry(v["category"].as_str().unwrap().to_string()).or_insert(Class { segments: vec![], points: vec![], exact: vec![] });
-        class.segments.push(seg);
-        class.points.push(point);
+    for v in reference_lines("extended.jsonl").into_iter().chain(reference_lines("area.jsonl")) {
+        let record = match parse_any_value::<T>(&v).unwrap() {
+            AnyRecord::Segment(seg) => {
+                let (a, b) = (T::vec3_to_array(seg.light().a), T::vec3_to_array(seg.light().b));
+                let mid = T::vec3_from_array([0, 1, 2].map(|i| (a[i] + b[i]) * T::lit(0.5)));
+                let len = [0, 1, 2].map(|i| b[i] - a[i]).iter().fold(T::zero(), |s, x| s + *x * *x).sqrt();
+                let light = PointLight { position: mid, intensity: seg.light().intensity * len, distribution: seg.light().distribution };
+                let point = Scene::new(*seg.ray(), light, *seg.medium(), *seg.phase()).unwrap();
+                Record { counted: Box::new(move |tol| seg.in_scatter_counted(tol)), point: Box::new(move || point.in_scatter()) }
+            }
+            AnyRecord::Area(area) => {
+                let l = *area.light();
+                let (ray, medium, phase) = (*area.ray(), *area.medium(), *area.phase());
+                let point: Box<dyn Fn() -> T> = match l.emitter {
+                    Emitter::Disc { center, normal, radius } => {
+                        let light = PointLight { position: center, intensity: l.radiance * T::PI() * radius * radius, distribution: Lambertian { axis: normal } };
+                        let s = Scene::new(ray, light, medium, phase).unwrap();
+                        Box::new(move || s.in_scatter())
+                    }
+                    Emitter::Rectangle { corner, edge_u, edge_v } => {
+                        let (c, u, w) = (T::vec3_to_array(corner), T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
+                        let n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+                        let area_size = n.iter().fold(T::zero(), |s, x| s + *x * *x).sqrt();
+                        let centre = T::vec3_from_array([0, 1, 2].map(|i| c[i] + (u[i] + w[i]) * T::lit(0.5)));
+                        let light = PointLight { position: centre, intensity: l.radiance * area_size, distribution: Lambertian { axis: T::vec3_from_array(n) } };
+                        let s = Scene::new(ray, light, medium, phase).unwrap();
+                        Box::new(move || s.in_scatter())
+                    }
+                    Emitter::Sphere { center, radius } => {
+                        let light = PointLight { position: center, intensity: l.radiance * T::PI() * radius * radius, distribution: Omni };
+                        let s = Scene::new(ray, light, medium, phase).unwrap();
+                        Box::new(move || s.in_scatter())
+                    }
+                };
+                Record { counted: Box::new(move |tol| area.in_scatter_counted(tol)), point }
+            }
+            _ => panic!("not an extended light: {v}"),
+        };
+        let shape = v["light"]["shape"].as_str().unwrap();
+        let class = out.entry(format!("{shape}_{}", v["category"].as_str().unwrap())).or_insert(Class { records: vec![], exact: vec![] });
+        class.records.push(record);
         class.exact.push(v["in_scatter"].as_f64().unwrap());
     }
     out
@@ -47,29 +85,30 @@ fn load<T: Real>() -> BTreeMap<String, Class<T>> {
 
 fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
     for (name, class) in load::<T>() {
-        let worst = |f: &dyn Fn(&Seg<T>) -> (T, usize)| {
+        let worst = |tol: T| {
             let mut e = 0.0f64;
-            let mut panels = vec![];
-            for (s, exact) in class.segments.iter().zip(&class.exact) {
-                let (x, p) = f(s);
+            let mut counts = vec![];
+            for (r, exact) in class.records.iter().zip(&class.exact) {
+                let (x, p) = (r.counted)(tol);
                 e = e.max((x.to_f64_exact() - exact).abs() / exact);
-                panels.push(p);
+                counts.push(p);
             }
-            panels.sort();
-            (e, panels[panels.len() / 2], panels[panels.len() - 1])
+            counts.sort();
+            (e, counts[counts.len() / 2], counts[counts.len() - 1])
         };
-        let (e_default, med_default, max_default) = worst(&|s| s.in_scatter_counted(airlight::extended::outer_tolerance()));
-        let (e_loose, med_loose, max_loose) = worst(&|s| s.in_scatter_counted(T::lit(1e-3)));
+        let (e_default, med_default, max_default) = worst(airlight::extended::outer_tolerance());
+        let (e_loose, med_loose, max_loose) = worst(T::lit(1e-3));
         writeln!(
             report,
             "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"records\":{},\"default\":{e_default:e},\"default_panels\":[{med_default},{max_default}],\"loose\":{e_loose:e},\"loose_panels\":[{med_loose},{max_loose}]}}",
-            class.segments.len()
+            class.records.len()
         )
         .unwrap();
         let mut g = crit.benchmark_group(format!("extended_{label}_{name}"));
-        g.bench_function("segment_default", |b| b.iter(|| class.segments.iter().map(|s| black_box(s).in_scatter()).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("segment_1e-3", |b| b.iter(|| class.segments.iter().map(|s| black_box(s).in_scatter_counted(T::lit(1e-3)).0).fold(T::zero(), |a, x| a + x)));
-        g.bench_function("point", |b| b.iter(|| class.points.iter().map(|s| black_box(s).in_scatter()).fold(T::zero(), |a, x| a + x)));
+        let default = airlight::extended::outer_tolerance::<T>();
+        g.bench_function("emitter_default", |b| b.iter(|| class.records.iter().map(|r| (r.counted)(black_box(default)).0).fold(T::zero(), |a, x| a + x)));
+        g.bench_function("emitter_1e-3", |b| b.iter(|| class.records.iter().map(|r| (r.counted)(black_box(T::lit(1e-3))).0).fold(T::zero(), |a, x| a + x)));
+        g.bench_function("point", |b| b.iter(|| class.records.iter().map(|r| black_box((r.point)())).fold(T::zero(), |a, x| a + x)));
         g.finish();
     }
 }
