@@ -88,8 +88,8 @@ pub const MAX_SEGMENT_PANELS: usize = 48;
 /// The most Gauss–Kronrod panels of one segment light in the shaders
 /// ([`SegmentScene::in_scatter_panels_counted`]; `7·(2·6 − 1) = 77` point lights at most):
 /// within 2.4e-6 of the mpmath values of tests/reference/extended.jsonl in f32 (4 panels:
-/// 1.6e-3), and few enough loop iterations for Mesa's lavapipe, which ends all loops of an
-/// invocation after 65 535 (codegen/shaders/shader/airlight.wgsl).
+/// 1.6e-3), and few enough loop iterations for those tubes on Mesa's lavapipe, which ends all
+/// loops after 65 535 in total (codegen/shaders/shader/airlight.wgsl).
 pub const SHADER_SEGMENT_PANELS: usize = 6;
 
 /// The default relative tolerance of the outer integral's estimate of every integral over an

@@ -282,8 +282,8 @@ fn shaders_meet_the_class_targets() {
 }
 
 /// Segment lights (tests/reference/extended.jsonl: near, far, behind, end-on, thick and short
-/// tubes; isotropic, HG g = 0.8 and Rayleigh; omni, c^4 and spot distributions): the WGSL and
-/// SPIR-V compute shaders at 8 and 12 nodes agree with the f32 CPU kernel computing the same
+/// tubes; isotropic, HG g = 0.8 and Rayleigh; omni, c^4 and spot distributions): the WGSL,
+/// SPIR-V, GLSL and HLSL compute shaders at 8 and 12 nodes agree with the f32 CPU kernel computing the same
 /// method (`SegmentScene::in_scatter_panels_counted` with the shaders' control and
 /// `SHADER_SEGMENT_PANELS`) by the criterion of the point light, and are within 1e-3 of the
 /// mpmath value (the shaders' target, docs/DESIGN.md §8). Invalid segment records (an unknown
@@ -312,6 +312,8 @@ fn segment_lights_agree_with_the_cpu_kernel() {
         records.extend_from_slice(&r);
     }
     let dir = default_out_dir();
+    let tmp = std::env::temp_dir().join(format!("airlight-segment-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).unwrap();
     let mut failures = Vec::new();
     println!("| artifact | records | max diff to f32 CPU (of scale) | max err vs mpmath | worst class |");
     println!("|---|---|---|---|---|");
@@ -319,8 +321,16 @@ fn segment_lights_agree_with_the_cpu_kernel() {
         let expected: Vec<Expected> = cases.iter().map(|c| expect_segment(&c.0, terms)).collect();
         let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
         let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
-        for (label, shader) in [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spv, "airlight_main"))] {
-            let out = gpu.run(shader, &records, false).unwrap();
+        let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
+        let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
+        let shaders = [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spv, "airlight_main")), ("glsl", Shader::SpirV(&glsl, "main")), ("hlsl", Shader::SpirV(&hlsl, "airlight_main"))];
+        for (label, shader) in shaders {
+            // glslang's HLSL buffer length is in words: pad to 4× (every_artifact_agrees_with_the_cpu_kernel)
+            let mut padded = records.clone();
+            if label == "hlsl" {
+                padded.resize(records.len() * 4, 0);
+            }
+            let out = gpu.run(shader, &padded, false).unwrap();
             let (mut worst, mut worst_ref, mut worst_class) = (0.0f64, 0.0f64, String::new());
             for (i, (c, e)) in cases.iter().zip(&expected).enumerate() {
                 let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);

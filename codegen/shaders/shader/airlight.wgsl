@@ -1454,9 +1454,10 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
 // point-light integral has one call site.
 
 // At most this many panels (kernel SHADER_SEGMENT_PANELS), so at most 7·(2·6 − 1) = 77 point
-// lights. Mesa's lavapipe (llvmpipe) ends every loop of an invocation once all loops together
-// have run 65 535 iterations (gallivm LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop): at 8
-// panels, 98 point lights of 12 nodes reached it and came out 10–43 % low there.
+// lights. Mesa's lavapipe (llvmpipe) ends every loop once all loops together have run 65 535
+// iterations (gallivm LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop; as observed, over the
+// 8 lanes it runs together): at 8 panels, tubes of 98 point lights of 12 nodes reached it and
+// came out 10–43 % low there. A tube whose every point light takes many panels still can.
 const AIRLIGHT_SEGMENT_PANELS: u32 = @SEGMENT_PANELS@u;
 // Panel evaluations: the first ones (≤ 4) and two per split, until the list is full.
 const AIRLIGHT_SEGMENT_EVALUATIONS: u32 = 2u * AIRLIGHT_SEGMENT_PANELS - 1u;
