@@ -102,9 +102,13 @@ pub struct Judgement {
 /// What the shader computes, on the CPU: the panels with `terms` nodes each and the shaders'
 /// control ([`airlight::SHADER_CONTROL`], in `T`).
 fn in_scatter<T: airlight::Real>(rec: &SceneRecord<T>, terms: usize) -> Option<T> {
+    rec.scene().ok().and_then(|s| s.in_scatter_panels_with_nodes(terms, shader_control()))
+}
+
+/// [`airlight::SHADER_CONTROL`] in `T`.
+fn shader_control<T: airlight::Real>() -> airlight::panels::Control<T> {
     let c = airlight::SHADER_CONTROL;
-    let control = airlight::panels::Control { tolerance: T::lit(c.tolerance as f64), floor: T::lit(c.floor as f64), max_panels: c.max_panels };
-    rec.scene().ok().and_then(|s| s.in_scatter_panels_with_nodes(terms, control))
+    airlight::panels::Control { tolerance: T::lit(c.tolerance as f64), floor: T::lit(c.floor as f64), max_panels: c.max_panels }
 }
 
 /// The record with input `k` (of `PERTURBATIONS`) moved by one ulp: `t_min` up/down, `t_max`
@@ -178,8 +182,7 @@ pub type SegmentRecord<T> = SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>;
 /// ([`SegmentScene::in_scatter_panels_counted`] with the shaders' control and
 /// [`airlight::SHADER_SEGMENT_PANELS`]).
 fn segment_in_scatter<T: airlight::Real>(scene: &SegmentRecord<T>, terms: usize) -> T {
-    let c = airlight::SHADER_CONTROL;
-    let control = airlight::panels::Control { tolerance: T::lit(c.tolerance as f64), floor: T::lit(c.floor as f64), max_panels: c.max_panels };
+    let control = shader_control();
     let panels = airlight::SHADER_SEGMENT_PANELS;
     match terms {
         8 => scene.in_scatter_panels_counted::<8>(control, panels).0,
@@ -188,12 +191,19 @@ fn segment_in_scatter<T: airlight::Real>(scene: &SegmentRecord<T>, terms: usize)
     }
 }
 
+/// The segment's scene with a point light at its end `a` in its place (same intensity and
+/// distribution): the record [`perturbed`] moves.
+fn at_first_end(scene: &SegmentRecord<f32>) -> SceneRecord<f32> {
+    let l = scene.light();
+    SceneRecord { ray: *scene.ray(), light: PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }, medium: *scene.medium(), phase: *scene.phase() }
+}
+
 /// The segment light with input `k` moved by one ulp: the inputs [`perturbed`] moves (the
 /// light's position is the end `a`), then (`k ≥ PERTURBATIONS`) each coordinate of `b` up/down.
 fn perturbed_segment(scene: &SegmentRecord<f32>, k: usize) -> Option<SegmentRecord<f32>> {
     let l = *scene.light();
     let mut b = l.b.to_array();
-    let rec = SceneRecord { ray: *scene.ray(), light: PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }, medium: *scene.medium(), phase: *scene.phase() };
+    let rec = at_first_end(scene);
     let q = if k < PERTURBATIONS {
         perturbed(&rec, k)
     } else {
@@ -214,7 +224,7 @@ pub fn expect_segment(scene: &SegmentRecord<f32>, terms: usize) -> Expected {
     let v = segment_in_scatter(scene, terms);
     let l = *scene.light();
     let cast = |x: airlight::glam::Vec3| airlight::glam::DVec3::new(x.x as f64, x.y as f64, x.z as f64);
-    let rec = SceneRecord { ray: *scene.ray(), light: PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }, medium: *scene.medium(), phase: *scene.phase() }.cast::<f64>();
+    let rec = at_first_end(scene).cast::<f64>();
     let light = SegmentLight { a: rec.light.position, b: cast(l.b), intensity: rec.light.intensity, distribution: rec.light.distribution };
     let Ok(wide) = SegmentScene::new(rec.ray, light, rec.medium, rec.phase) else {
         return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
