@@ -173,27 +173,34 @@ impl<R: BufRead> Lines<R> {
 /// the same error lines), the valid ones are packed and run through the compute shader in
 /// one batch after the input ends.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
-    use airlight_shaders::layout::{pack, pack_segment, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
-    // per input line: its "id" and its error line, or a packed record
-    let mut lines: Vec<(Option<serde_json::Value>, Result<(), String>)> = Vec::new();
+    use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    // per input line: its "id" and its error line, or the output key of a packed record
+    let mut lines: Vec<(Option<serde_json::Value>, Result<Option<&str>, String>)> = Vec::new();
     let mut records = Vec::new();
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
         match text.map(parse_line_with_id::<f32>) {
             Ok((id, Ok(AnyRecord::Point(r)))) => {
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
-                lines.push((id, Ok(())));
+                lines.push((id, Ok(None)));
             }
             Ok((id, Ok(AnyRecord::Segment(r)))) => {
                 records.extend_from_slice(&pack_segment(&r));
-                lines.push((id, Ok(())));
+                lines.push((id, Ok(None)));
             }
             Ok((id, Ok(AnyRecord::Area(_)))) => {
                 lines.push((id, Err(format_error(n, "light.shape: area lights are evaluated on the CPU backend (the shader library has point and segment lights)"))))
             }
-            Ok((id, Ok(AnyRecord::Surface(_)))) => {
-                lines.push((id, Err(format_error(n, "surface: surface records are evaluated on the CPU backend (the shader library has rays)"))))
-            }
+            Ok((id, Ok(AnyRecord::Surface(r)))) => match pack_surface(&r) {
+                Some(record) => {
+                    records.extend_from_slice(&record);
+                    lines.push((id, Ok(Some("surface_air_light"))));
+                }
+                None => lines.push((
+                    id,
+                    Err(format_error(n, "surface: Phong lobes and lights with an axis are evaluated on the CPU backend (the shader library has Lambertian surfaces lit by omni lights)")),
+                )),
+            },
             Ok((id, Err(e))) => lines.push((id, Err(format_error(n, &e.to_string())))),
             Err(e) => lines.push((None, Err(e))),
         }
@@ -208,12 +215,16 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
     for (id, l) in lines {
         let text = match l {
             Err(e) => e,
-            Ok(()) => {
+            Ok(key) => {
                 let (v, status) = unpack_result(&results[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);
                 k += 1;
+                let value = |x: f32| match key {
+                    Some(key) => format_named(key, x),
+                    None => format_value(x),
+                };
                 match status {
-                    STATUS_OK => format_value(v),
-                    STATUS_INFINITE => format_value(f32::INFINITY),
+                    STATUS_OK => value(v),
+                    STATUS_INFINITE => value(f32::INFINITY),
                     _ => "{\"error\":\"the shader rejected a record the CPU accepted\"}".to_string(),
                 }
             }

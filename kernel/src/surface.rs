@@ -28,6 +28,7 @@ use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::LightDistribution;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
+use crate::panels::Control;
 use crate::scene::{validate, Medium, PointLight, Ray, Scene};
 
 /// The surface's reflectance.
@@ -62,6 +63,12 @@ pub struct Surface<T: Real> {
 
 /// The most Gauss–Kronrod panels of each of the two integrals over the hemisphere.
 pub const MAX_SURFACE_PANELS: usize = 48;
+
+/// The most Gauss–Kronrod panels of the outer integral of a surface point in the shaders
+/// ([`SurfaceScene::air_light_panels_counted`]; `7·(2·6 − 1) = 77` rays at most): within
+/// 5.7e-6 of the references of the 30 Lambertian records lit by omni lights in
+/// tests/reference/surface.jsonl in f32 (4 panels: 4.8e-3; 8 or 12: no change).
+pub const SHADER_SURFACE_PANELS: usize = 6;
 
 /// A validated surface point lit by air-light of a point light.
 #[derive(Clone, Copy, Debug)]
@@ -218,6 +225,23 @@ where
     /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated.
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
+        let control = inner_control(tolerance);
+        self.integrate(tolerance, MAX_SURFACE_PANELS, |scene| scene.in_scatter_controlled(control).0)
+    }
+
+    /// What the shaders compute (fixed cost): the outer rule of `outer_rule` to
+    /// `control.tolerance`, at most `max_panels` panels of the outer integral (the shaders:
+    /// [`SHADER_SURFACE_PANELS`]), every ray integral as
+    /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the ray integrals evaluated. The
+    /// shaders have this for a Lambertian surface lit by a light without an axis, where the
+    /// hemisphere's inner integral is in closed form and the outer one is the only loop.
+    pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
+        self.integrate(control.tolerance, max_panels, |scene| scene.in_scatter_panels::<N>(control))
+    }
+
+    /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
+    /// at most `max_panels` panels each, every ray integral by `ray_integral`; and the rays evaluated.
+    fn integrate(&self, tolerance: T, max_panels: usize, ray_integral: impl Fn(&Scene<T, D, P>) -> T) -> (T, usize) {
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
@@ -236,7 +260,6 @@ where
             }
         }
         let inner_tolerance = tolerance * T::lit(0.1);
-        let control = inner_control(tolerance);
         let rule = outer_rule(tolerance);
         let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
@@ -246,7 +269,7 @@ where
             rays += 1;
             let ray = Ray { origin: self.surface.position, dir: T::vec3_from_array(w), t_min: T::zero(), t_max: T::infinity() };
             match Scene::new(ray, self.light.clone(), self.medium, self.phase.clone()) {
-                Ok(scene) => scene.in_scatter_controlled(control).0,
+                Ok(scene) => ray_integral(&scene),
                 Err(_) => T::zero(),
             }
         };
@@ -295,7 +318,7 @@ where
                     if !(b > a) || !(geometric((a + b) * T::lit(0.5)) > T::zero()) {
                         continue;
                     }
-                    sum = sum + adaptive(rule, &mut |x| f(x), &[a, b], inner_tolerance, MAX_SURFACE_PANELS).0;
+                    sum = sum + adaptive(rule, &mut |x| f(x), &[a, b], inner_tolerance, max_panels).0;
                 }
                 sum
             };
@@ -366,7 +389,7 @@ where
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
         }
-        let (value, _) = adaptive(rule, &mut mapped, &knots[..=n], tolerance, MAX_SURFACE_PANELS);
+        let (value, _) = adaptive(rule, &mut mapped, &knots[..=n], tolerance, max_panels);
         (value, rays)
     }
 }

@@ -20,6 +20,8 @@ struct AirlightScene {
     uint light_kind;
     uint phase_kind;
     uint flags;
+    float brdf_albedo;
+    uint surface_kind;
     vec3 light_end;
     uint light_shape;
 };
@@ -91,7 +93,7 @@ struct AirlightListScan {
     float errors;
     uint worst;
 };
-struct AirlightSegment {
+struct AirlightOuter {
     vec3 a;
     vec3 e;
     float s_star;
@@ -99,6 +101,16 @@ struct AirlightSegment {
     float edges[5];
     uint panels;
     uint outcome;
+    uint max_panels;
+    vec3 l;
+    vec3 u;
+    float cos_a;
+    float sin_a;
+    float gamma[4];
+};
+struct AirlightNode {
+    AirlightScene scene;
+    float weight;
 };
 const uint AIRLIGHT_TERMS = 8u;
 const uint AIRLIGHT_HALF_TERMS = 4u;
@@ -125,6 +137,8 @@ const uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 const uint AIRLIGHT_LIGHT_SPOT = 2u;
 const uint AIRLIGHT_SHAPE_POINT = 0u;
 const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
+const uint AIRLIGHT_SURFACE_NONE = 0u;
+const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
 const uint AIRLIGHT_STATUS_OK = 0u;
 const uint AIRLIGHT_STATUS_INVALID = 1u;
 const uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -137,7 +151,7 @@ const float AIRLIGHT_E1_INV_IM = 0.47619048;
 const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 const uint AIRLIGHT_SEGMENT_PANELS = 6u;
-const uint AIRLIGHT_SEGMENT_EVALUATIONS = 11u;
+const uint AIRLIGHT_SURFACE_PANELS = 6u;
 
 
 float[8] airlight_zero_terms() {
@@ -206,7 +220,18 @@ AirlightPhase airlight_two_lobe_henyey_greenstein(float g1_, float g2_, float w)
 }
 
 AirlightScene airlight_scene(AirlightRay ray, AirlightLight light_1, AirlightMedium medium, AirlightPhase phase) {
-    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, light_1.end, light_1.shape);
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, light_1.end, light_1.shape);
+}
+
+AirlightScene airlight_lambert_surface(vec3 position_3, vec3 normal, float albedo, AirlightLight light_2, AirlightMedium medium_1, AirlightPhase phase_1) {
+    AirlightScene s = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
+    AirlightRay _e7 = airlight_ray_to_infinity(position_3, normal, 0.0);
+    AirlightScene _e8 = airlight_scene(_e7, light_2, medium_1, phase_1);
+    s = _e8;
+    s.brdf_albedo = albedo;
+    s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
+    AirlightScene _e13 = s;
+    return _e13;
 }
 
 vec2 airlight_cmul(vec2 a, vec2 b) {
@@ -254,7 +279,7 @@ vec2 airlight_csqrt(vec2 z_1) {
 
 vec2 airlight_cos_sin(float x) {
     float c = 0.0;
-    float s = 0.0;
+    float s_1 = 0.0;
     uint k_1 = 0u;
     float fc = 0.0;
     uint j = 0u;
@@ -276,8 +301,8 @@ vec2 airlight_cos_sin(float x) {
             uint n_2 = (8u - _e12);
             float _e14 = c;
             c = (_e14 * z_8);
-            float _e16 = s;
-            s = (_e16 * z_8);
+            float _e16 = s_1;
+            s_1 = (_e16 * z_8);
             fc = 1.0;
             j = 1u;
             bool loop_init_1 = true;
@@ -302,13 +327,13 @@ vec2 airlight_cos_sin(float x) {
             float _e40 = c;
             float _e41 = fc;
             c = (_e40 + (sign_ / _e41));
-            float _e44 = s;
+            float _e44 = s_1;
             float _e45 = fc;
-            s = (_e44 + (sign_ / (_e45 * float(((2u * n_2) + 1u)))));
+            s_1 = (_e44 + (sign_ / (_e45 * float(((2u * n_2) + 1u)))));
         }
     }
     float _e57 = c;
-    float _e58 = s;
+    float _e58 = s_1;
     return vec2(_e57, (_e58 * x));
 }
 
@@ -358,8 +383,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_18 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_18 * s_18);
+    float s_22 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_22 * s_22);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -379,7 +404,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_18) * _e35);
+    return ((2.0 * s_22) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -451,9 +476,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_12 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_12 * x_12) + (y_3 * y_3)) < 1.0);
+    return (((x_15 * x_15) + (y_3 * y_3)) < 1.0);
 }
 
 uint airlight_cf_depth(float r) {
@@ -843,8 +868,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_13 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_13 * x_13) * (3.0 - (2.0 * x_13)));
+            float x_16 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_16 * x_16) * (3.0 - (2.0 * x_16)));
         }
         default: {
             return 1.0;
@@ -852,14 +877,14 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
     }
 }
 
-vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_4, float sigma, float y_1) {
+vec2 airlight_integrand_over(AirlightScene s_2, AirlightCanonical g_4, float sigma, float y_1) {
     float minus = 0.0;
     float plus = 0.0;
     float y2_ = (y_1 * y_1);
     float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
     float mu_2 = (-(sigma) * (om_3 * inv_2));
-    float c_6 = ((((sigma * g_4.d_el) * om_3) + ((2.0 * g_4.d_c) * y_1)) * inv_2);
+    float c_7 = ((((sigma * g_4.d_el) * om_3) + ((2.0 * g_4.d_c) * y_1)) * inv_2);
     float far = ((y2_ * inv_2) * 2.0);
     float near = (inv_2 * 2.0);
     minus = near;
@@ -868,16 +893,16 @@ vec2 airlight_integrand_over(AirlightScene s_1, AirlightCanonical g_4, float sig
         minus = far;
         plus = near;
     }
-    float _e35 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_6);
+    float _e35 = airlight_light(s_2.light_kind, s_2.light_param_a, s_2.light_param_b, c_7);
     float _e40 = minus;
     float _e41 = plus;
-    float _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
-    float f = (_e35 * _e42);
-    return vec2(f, inv_2);
+    float _e42 = airlight_phase(s_2.phase_kind, s_2.phase_param_a, s_2.phase_param_b, s_2.phase_param_c, mu_2, _e40, _e41);
+    float f_1 = (_e35 * _e42);
+    return vec2(f_1, inv_2);
 }
 
-float airlight_integrand(AirlightScene s_2, AirlightCanonical g_5, float sigma_1, float y_2) {
-    vec2 _e4 = airlight_integrand_over(s_2, g_5, sigma_1, y_2);
+float airlight_integrand(AirlightScene s_3, AirlightCanonical g_5, float sigma_1, float y_2) {
+    vec2 _e4 = airlight_integrand_over(s_3, g_5, sigma_1, y_2);
     return _e4.x;
 }
 
@@ -966,10 +991,10 @@ float airlight_q_zero(AirlightHalf half_1) {
             float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
             d_im = _e48;
             float _e50 = v_e;
-            float x_14 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e57 = airlight_is_finite(x_14);
+            float x_17 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e57 = airlight_is_finite(x_17);
             if (_e57) {
-                float _e58 = airlight_log1p(x_14);
+                float _e58 = airlight_log1p(x_17);
                 d_re = (0.5 * _e58);
             } else {
                 float _e63 = v_e;
@@ -1057,8 +1082,8 @@ vec2[4] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[4], uint i_3) {
-    float x_15 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_15) : x_15);
+    float x_18 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_18) : x_18);
 }
 
 float[8] airlight_legendre(float g_6[8]) {
@@ -1497,15 +1522,15 @@ float airlight_factor(AirlightHalf half_3, float a_4, float b_3) {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     float _e13 = offset;
-    float x_16 = (half_3.big_h * _e13);
-    return ((x_16 > 0.0) ? exp(-(x_16)) : 1.0);
+    float x_19 = (half_3.big_h * _e13);
+    return ((x_19 > 0.0) ? exp(-(x_19)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
+AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
     float r_1 = 0.0;
     float vc = 0.0;
     float samples[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1543,7 +1568,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float s
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
             float v_6 = (_e37 + (_e38 * _e40));
-            vec2 _e46 = airlight_integrand_over(s_3, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
+            vec2 _e46 = airlight_integrand_over(s_4, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1595,7 +1620,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_3, AirlightCanonical g_7, float s
     return _e138;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
+AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
     float samples_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1625,7 +1650,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_8, float s
             float _e27 = airlight_node(_e6, _e26);
             float y_5 = (yc_1 + (r_7 * _e27));
             float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5)));
-            float _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
+            float _e39 = airlight_integrand(s_5, g_8, sigma_3, y_5);
             float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
             uint _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1711,7 +1736,7 @@ float[8] airlight_legendre_to_monomial(float c_4[8]) {
     return _e123;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
@@ -1749,7 +1774,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
             float y_6 = (yc_2 + (r_8 * _e23));
-            float _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
+            float _e26 = airlight_integrand(s_6, g_9, sigma_4, y_6);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
             float _e33 = f_max_3;
@@ -1938,13 +1963,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     float _e528 = airlight_factor(half_6, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_17 = (abs(alpha) + abs(beta));
+    float x_20 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_17) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_20) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -1954,7 +1979,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_17) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_20) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -1964,7 +1989,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_17) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_20) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -1974,7 +1999,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_17) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_20) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -1984,7 +2009,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_17) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_20) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -1994,7 +2019,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_17) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_20) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2004,7 +2029,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_17) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_20) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2014,7 +2039,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_17) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_20) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2034,7 +2059,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_9, floa
     return _e702;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
+AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
     bool local_11 = false;
     bool local_12 = false;
     if (half_7.second) {
@@ -2044,7 +2069,7 @@ AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_10, float si
     }
     bool _e13 = local_11;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -2054,14 +2079,14 @@ AirlightPanel airlight_panel(AirlightScene s_6, AirlightCanonical g_10, float si
     }
     bool _e26 = local_12;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float a_9 = 0.0;
@@ -2104,7 +2129,7 @@ float airlight_integrate_piece(AirlightScene s_7, AirlightCanonical g_11, float 
         {
             float _e57 = a_9;
             float _e58 = b_8;
-            AirlightPanel _e59 = airlight_panel(s_7, g_11, sigma_6, half_8, _e57, _e58);
+            AirlightPanel _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
             float _e60 = f_max_4;
             f_max_4 = max(_e60, _e59.f_max);
             uint _e63 = slot;
@@ -2298,8 +2323,8 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_5) {
     }
     float a_19 = (a0_ / scale_1);
     float b_16 = (b0_ / scale_1);
-    float c_7 = (c0_ / scale_1);
-    float disc_1 = ((b_16 * b_16) - ((4.0 * a_19) * c_7));
+    float c_8 = (c0_ / scale_1);
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_19) * c_8));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
@@ -2309,7 +2334,7 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_5) {
     float _e47 = sb;
     float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_2 != 0.0)) {
-        r1_ = (c_7 / q_2);
+        r1_ = (c_8 / q_2);
     }
     if ((a_19 != 0.0)) {
         r2_2 = (q_2 / a_19);
@@ -2319,7 +2344,7 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_5) {
     return vec2(_e63, _e64);
 }
 
-float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_9, AirlightCanonical g_12, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float k_in = 0.0;
     float k_out = 0.0;
@@ -2334,13 +2359,13 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
     bool local_18 = false;
     bool local_19 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_8, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
+        float _e11 = airlight_integrand(s_9, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
-    if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_8.light_param_a;
-        k_out = s_8.light_param_b;
+    if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_9.light_param_a;
+        k_out = s_9.light_param_b;
         float _e27 = k_in;
         float _e28 = k_out;
         float width_1 = (_e27 - _e28);
@@ -2466,7 +2491,7 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_8, Ai
                 float _e146 = total_2;
                 float _e147 = lo_1;
                 float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
+                float _e149 = airlight_integrate_piece(s_9, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_2 = (_e146 + _e149);
                 float _e151 = hi_1;
                 lo_1 = _e151;
@@ -2501,7 +2526,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_1, float x_7
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-float airlight_on_line(AirlightScene s_9, AirlightCanonical g_13) {
+float airlight_on_line(AirlightScene s_10, AirlightCanonical g_13) {
     bool local_20 = false;
     float span = 0.0;
     float e2_[10] = float[10](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -2513,38 +2538,38 @@ float airlight_on_line(AirlightScene s_9, AirlightCanonical g_13) {
     }
     bool _e10 = local_20;
     if (_e10) {
-        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
-        float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
-        float f_1 = (_e16 * _e22);
+        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_13.d_el));
+        float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
+        float f_2 = (_e16 * _e22);
         float r0_ = (g_13.x_h - g_13.t_lo);
         float r1_1 = (g_13.x_h - g_13.t_hi);
-        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_1 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
+        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * r0_), (f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
-    float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
-    float f_2 = (_e46 * _e52);
+    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_13.d_el);
+    float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
+    float f_3 = (_e46 * _e52);
     float s0_ = (g_13.t_lo - g_13.x_h);
     float s1_ = (g_13.t_hi - g_13.x_h);
-    if ((s_9.sigma_t == 0.0)) {
+    if ((s_10.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_13.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        float _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, 0.0, (f_2 * _e75));
+        float _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, 0.0, (f_3 * _e75));
         return _e77;
     }
-    float two_st = (s_9.sigma_t + s_9.sigma_t);
+    float two_st = (s_10.sigma_t + s_10.sigma_t);
     float _e82[10] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    float _e93 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * s0_), ((f_2 * _e90) / s0_));
+    float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if (!(g_13.t_hi_infinite)) {
         float _e99[10] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        float _e113 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e110) / s1_));
+        float _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     bool _e114 = airlight_is_finite(_e93);
@@ -2565,7 +2590,7 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_h_1) {
+float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_14, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
@@ -2610,19 +2635,19 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
+    float _e54 = airlight_integrand(s_11, g_14, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_12);
     float j_5 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
-        if ((s_10.sigma_t > 0.0)) {
-            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
+        if ((s_11.sigma_t > 0.0)) {
+            x_8 = (s_11.sigma_t * abs((g_14.x_h - g_14.t_lo)));
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
+    float _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -2634,7 +2659,7 @@ float airlight_cut_length(float big_h_2, float v_s) {
     return (e_1 * inv_h);
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_15) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonical g_15) {
     bool local_23 = false;
     bool local_24 = false;
     bool local_25 = false;
@@ -2678,7 +2703,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e10 = local_23;
     if (!(!(_e10))) {
-        local_24 = ((s_11.sigma_s * s_11.intensity) == 0.0);
+        local_24 = ((s_12.sigma_s * s_12.intensity) == 0.0);
     } else {
         local_24 = true;
     }
@@ -2715,16 +2740,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e55 = local_27;
     if (_e55) {
-        float _e56 = airlight_on_line(s_11, g_15);
+        float _e56 = airlight_on_line(s_12, g_15);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_5 = (s_11.sigma_t * h_3);
-    if (!((s_11.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_29 = (s_11.light_param_a == 0.0);
+    float big_h_5 = (s_12.sigma_t * h_3);
+    if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_29 = (s_12.light_param_a == 0.0);
         } else {
             local_29 = false;
         }
@@ -2735,15 +2760,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e85 = local_28;
     if (_e85) {
-        if (!((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_32 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_32 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_32 = true;
             }
             bool _e104 = local_32;
             if (_e104) {
-                local_33 = (s_11.phase_param_a == 0.0);
+                local_33 = (s_12.phase_param_a == 0.0);
             } else {
                 local_33 = false;
             }
@@ -2777,7 +2802,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     bool _e131 = local_35;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_11, g_15, big_h_5);
+        float _e132 = airlight_whole_line(s_12, g_15, big_h_5);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
@@ -2820,9 +2845,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
             }
         }
         AirlightHalf _e199 = half_10;
-        float _e200 = airlight_half(s_11, g_15, -1.0, _e199, isotropic_1, f_max_6);
+        float _e200 = airlight_half(s_12, g_15, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
+        float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_15.t_hi_infinite)) {
@@ -2914,9 +2939,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
             }
         }
         AirlightHalf _e313 = half_11;
-        float _e314 = airlight_half(s_11, g_15, 1.0, _e313, isotropic_1, f_max_6);
+        float _e314 = airlight_half(s_12, g_15, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -2967,11 +2992,11 @@ bool airlight_normalisable(vec3 v_2) {
 
 vec3 airlight_normalize(vec3 v_3) {
     float m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    vec3 u = (v_3 / vec3(m_7));
-    return (u / vec3(length(u)));
+    vec3 u_1 = (v_3 / vec3(m_7));
+    return (u_1 / vec3(length(u_1)));
 }
 
-bool airlight_valid(AirlightScene s_12) {
+bool airlight_valid(AirlightScene s_13) {
     bool local_49 = false;
     bool local_50 = false;
     bool local_51 = false;
@@ -3001,96 +3026,101 @@ bool airlight_valid(AirlightScene s_12) {
     bool local_74 = false;
     bool local_75 = false;
     bool local_76 = false;
-    bool _e2 = airlight_vec_finite(s_12.origin);
+    bool local_77 = false;
+    bool local_78 = false;
+    bool local_79 = false;
+    bool local_80 = false;
+    bool local_81 = false;
+    bool _e2 = airlight_vec_finite(s_13.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_12.dir);
+        bool _e6 = airlight_vec_finite(s_13.dir);
         local_49 = _e6;
     } else {
         local_49 = false;
     }
     bool _e8 = local_49;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_12.dir);
+        bool _e12 = airlight_normalisable(s_13.dir);
         local_50 = _e12;
     } else {
         local_50 = false;
     }
     bool _e14 = local_50;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_12.t_min);
+        bool _e18 = airlight_is_finite(s_13.t_min);
         local_51 = _e18;
     } else {
         local_51 = false;
     }
     bool _e20 = local_51;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_12.light_position);
+        bool _e24 = airlight_vec_finite(s_13.light_position);
         local_52 = _e24;
     } else {
         local_52 = false;
     }
     bool _e26 = local_52;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_12.intensity);
+        bool _e30 = airlight_is_finite(s_13.intensity);
         local_53 = _e30;
     } else {
         local_53 = false;
     }
     bool _e32 = local_53;
     if (_e32) {
-        local_54 = (s_12.intensity >= 0.0);
+        local_54 = (s_13.intensity >= 0.0);
     } else {
         local_54 = false;
     }
     bool _e39 = local_54;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_12.sigma_s);
+        bool _e43 = airlight_is_finite(s_13.sigma_s);
         local_55 = _e43;
     } else {
         local_55 = false;
     }
     bool _e45 = local_55;
     if (_e45) {
-        local_56 = (s_12.sigma_s >= 0.0);
+        local_56 = (s_13.sigma_s >= 0.0);
     } else {
         local_56 = false;
     }
     bool _e52 = local_56;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_12.sigma_t);
+        bool _e56 = airlight_is_finite(s_13.sigma_t);
         local_57 = _e56;
     } else {
         local_57 = false;
     }
     bool _e58 = local_57;
     if (_e58) {
-        local_58 = (s_12.sigma_t >= 0.0);
+        local_58 = (s_13.sigma_t >= 0.0);
     } else {
         local_58 = false;
     }
     bool _e65 = local_58;
     ok = _e65;
-    if (((s_12.flags & 1u) == 0u)) {
+    if (((s_13.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_12.t_max);
+            bool _e76 = airlight_is_finite(s_13.t_max);
             local_59 = _e76;
         } else {
             local_59 = false;
         }
         bool _e78 = local_59;
         if (_e78) {
-            local_60 = (s_12.t_min <= s_12.t_max);
+            local_60 = (s_13.t_min <= s_13.t_max);
         } else {
             local_60 = false;
         }
         bool _e85 = local_60;
         ok = _e85;
     }
-    if ((s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_12.light_end);
+            bool _e93 = airlight_vec_finite(s_13.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
@@ -3098,89 +3128,130 @@ bool airlight_valid(AirlightScene s_12) {
         bool _e95 = local_61;
         ok = _e95;
     } else {
-        if ((s_12.light_shape != AIRLIGHT_SHAPE_POINT)) {
+        if ((s_13.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         bool _e103 = ok;
         if (_e103) {
-            bool _e107 = airlight_vec_finite(s_12.light_axis);
+            bool _e107 = airlight_is_finite(s_13.brdf_albedo);
             local_62 = _e107;
         } else {
             local_62 = false;
         }
         bool _e109 = local_62;
         if (_e109) {
-            bool _e113 = airlight_normalisable(s_12.light_axis);
-            local_63 = _e113;
+            local_63 = (s_13.brdf_albedo >= 0.0);
         } else {
             local_63 = false;
         }
-        bool _e115 = local_63;
-        if (_e115) {
-            local_64 = (s_12.light_param_a >= 0.0);
+        bool _e116 = local_63;
+        if (_e116) {
+            local_64 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_64 = false;
         }
-        bool _e122 = local_64;
-        if (_e122) {
-            local_65 = (s_12.light_param_a <= 1024.0);
+        bool _e123 = local_64;
+        if (_e123) {
+            local_65 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_65 = false;
         }
-        bool _e129 = local_65;
-        if (_e129) {
-            local_66 = (fract((s_12.light_param_a * 0.5)) == 0.0);
+        bool _e130 = local_65;
+        if (_e130) {
+            float _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            bool _e137 = airlight_is_finite(_e136);
+            local_66 = _e137;
         } else {
             local_66 = false;
         }
         bool _e139 = local_66;
         ok = _e139;
     } else {
-        if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e143 = ok;
-            if (_e143) {
-                bool _e147 = airlight_vec_finite(s_12.light_axis);
-                local_67 = _e147;
-            } else {
-                local_67 = false;
-            }
-            bool _e149 = local_67;
-            if (_e149) {
-                bool _e153 = airlight_normalisable(s_12.light_axis);
-                local_68 = _e153;
-            } else {
-                local_68 = false;
-            }
-            bool _e155 = local_68;
-            if (_e155) {
-                local_69 = (s_12.light_param_b < s_12.light_param_a);
-            } else {
-                local_69 = false;
-            }
-            bool _e162 = local_69;
-            if (_e162) {
-                local_70 = (s_12.light_param_b >= -1.0);
-            } else {
-                local_70 = false;
-            }
-            bool _e169 = local_70;
-            if (_e169) {
-                local_71 = (s_12.light_param_a <= 1.0);
-            } else {
-                local_71 = false;
-            }
-            bool _e176 = local_71;
-            ok = _e176;
+        if ((s_13.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+            ok = false;
+        }
+    }
+    if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e147 = ok;
+        if (_e147) {
+            bool _e151 = airlight_vec_finite(s_13.light_axis);
+            local_67 = _e151;
         } else {
-            if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            local_67 = false;
+        }
+        bool _e153 = local_67;
+        if (_e153) {
+            bool _e157 = airlight_normalisable(s_13.light_axis);
+            local_68 = _e157;
+        } else {
+            local_68 = false;
+        }
+        bool _e159 = local_68;
+        if (_e159) {
+            local_69 = (s_13.light_param_a >= 0.0);
+        } else {
+            local_69 = false;
+        }
+        bool _e166 = local_69;
+        if (_e166) {
+            local_70 = (s_13.light_param_a <= 1024.0);
+        } else {
+            local_70 = false;
+        }
+        bool _e173 = local_70;
+        if (_e173) {
+            local_71 = (fract((s_13.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_71 = false;
+        }
+        bool _e183 = local_71;
+        ok = _e183;
+    } else {
+        if ((s_13.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+            bool _e187 = ok;
+            if (_e187) {
+                bool _e191 = airlight_vec_finite(s_13.light_axis);
+                local_72 = _e191;
+            } else {
+                local_72 = false;
+            }
+            bool _e193 = local_72;
+            if (_e193) {
+                bool _e197 = airlight_normalisable(s_13.light_axis);
+                local_73 = _e197;
+            } else {
+                local_73 = false;
+            }
+            bool _e199 = local_73;
+            if (_e199) {
+                local_74 = (s_13.light_param_b < s_13.light_param_a);
+            } else {
+                local_74 = false;
+            }
+            bool _e206 = local_74;
+            if (_e206) {
+                local_75 = (s_13.light_param_b >= -1.0);
+            } else {
+                local_75 = false;
+            }
+            bool _e213 = local_75;
+            if (_e213) {
+                local_76 = (s_13.light_param_a <= 1.0);
+            } else {
+                local_76 = false;
+            }
+            bool _e220 = local_76;
+            ok = _e220;
+        } else {
+            if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_12.phase_param_a) < 1.0);
-    switch(s_12.phase_kind) {
+    bool g_ok = (abs(s_13.phase_param_a) < 1.0);
+    switch(s_13.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -3188,43 +3259,43 @@ bool airlight_valid(AirlightScene s_12) {
         case 2u:
         case 3u:
         case 4u: {
-            bool _e186 = ok;
-            if (_e186) {
-                local_72 = g_ok;
+            bool _e230 = ok;
+            if (_e230) {
+                local_77 = g_ok;
             } else {
-                local_72 = false;
+                local_77 = false;
             }
-            bool _e190 = local_72;
-            ok = _e190;
+            bool _e234 = local_77;
+            ok = _e234;
             break;
         }
         case 5u: {
-            bool _e191 = ok;
-            if (_e191) {
-                local_73 = g_ok;
+            bool _e235 = ok;
+            if (_e235) {
+                local_78 = g_ok;
             } else {
-                local_73 = false;
+                local_78 = false;
             }
-            bool _e195 = local_73;
-            if (_e195) {
-                local_74 = (abs(s_12.phase_param_b) < 1.0);
+            bool _e239 = local_78;
+            if (_e239) {
+                local_79 = (abs(s_13.phase_param_b) < 1.0);
             } else {
-                local_74 = false;
+                local_79 = false;
             }
-            bool _e203 = local_74;
-            if (_e203) {
-                local_75 = (s_12.phase_param_c >= 0.0);
+            bool _e247 = local_79;
+            if (_e247) {
+                local_80 = (s_13.phase_param_c >= 0.0);
             } else {
-                local_75 = false;
+                local_80 = false;
             }
-            bool _e210 = local_75;
-            if (_e210) {
-                local_76 = (s_12.phase_param_c <= 1.0);
+            bool _e254 = local_80;
+            if (_e254) {
+                local_81 = (s_13.phase_param_c <= 1.0);
             } else {
-                local_76 = false;
+                local_81 = false;
             }
-            bool _e217 = local_76;
-            ok = _e217;
+            bool _e261 = local_81;
+            ok = _e261;
             break;
         }
         default: {
@@ -3232,19 +3303,19 @@ bool airlight_valid(AirlightScene s_12) {
             break;
         }
     }
-    bool _e219 = ok;
-    return _e219;
+    bool _e263 = ok;
+    return _e263;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_13) {
+AirlightCanonical airlight_canonical(AirlightScene s_14) {
     vec3 a_11 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_13.dir);
-    if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_13.light_axis);
+    vec3 _e2 = airlight_normalize(s_14.dir);
+    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_14.light_axis);
         a_11 = _e12;
     }
-    vec3 to_light = (s_13.light_position - s_13.origin);
+    vec3 to_light = (s_14.light_position - s_14.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
@@ -3252,10 +3323,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_13) {
         vec3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_13.flags & 1u) != 0u);
+    bool infinite_3 = ((s_14.flags & 1u) != 0u);
     vec3 _e32 = a_11;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, (infinite_3 ? 0.0 : s_13.t_max), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, (infinite_3 ? 0.0 : s_14.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_9, uint key) {
@@ -3295,44 +3366,44 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_77 = false;
-    bool local_78 = false;
+    bool local_82 = false;
+    bool local_83 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_83 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_78 = false;
+            local_83 = false;
         }
-        bool _e21 = local_78;
-        local_77 = _e21;
+        bool _e21 = local_83;
+        local_82 = _e21;
     } else {
-        local_77 = true;
+        local_82 = true;
     }
-    bool _e23 = local_77;
+    bool _e23 = local_82;
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) {
-    bool local_79 = false;
+AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain) {
+    bool local_84 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_80 = false;
+    bool local_85 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_14.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
+    uint key_4 = uint((s_15.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
     vec3 hi_2 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_2 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir_2 = s_14.dir;
+    vec3 dir_2 = s_15.dir;
     bool _e33 = airlight_in_exact_range(hi_2);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_79 = !(_e38);
+        local_84 = !(_e38);
     } else {
-        local_79 = true;
+        local_84 = true;
     }
-    bool _e41 = local_79;
+    bool _e41 = local_84;
     if (_e41) {
         return plain;
     }
@@ -3356,16 +3427,16 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     float h_4 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_80 = (h_4 > 0.0);
+        local_85 = (h_4 > 0.0);
     } else {
-        local_80 = false;
+        local_85 = false;
     }
-    bool _e101 = local_80;
+    bool _e101 = local_85;
     if (!(_e101)) {
         return plain;
     }
-    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_14.light_axis);
+    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_15.light_axis);
         a_15 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir_2);
@@ -3523,307 +3594,523 @@ float airlight_asinh(float x_11) {
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightSegment g_16, float s_15) {
+float airlight_to_w(AirlightOuter g_16, float s_16) {
     if ((g_16.scale > 0.0)) {
-        float _e9 = airlight_asinh(((s_15 - g_16.s_star) / g_16.scale));
+        float _e9 = airlight_asinh(((s_16 - g_16.s_star) / g_16.scale));
         return _e9;
     }
-    return s_15;
+    return s_16;
 }
 
-AirlightSegment airlight_segment(AirlightScene s_16) {
-    AirlightSegment g_17 = AirlightSegment(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u);
-    bool local_81 = false;
-    bool local_82 = false;
+vec2 airlight_cos_sin_half_turn(float x_12) {
+    float r_10 = (x_12 - 1.5707964);
+    float z_10 = (r_10 * r_10);
+    float cos_r = (1.0 - ((z_10 / 2.0) * (1.0 - ((z_10 / 12.0) * (1.0 - ((z_10 / 30.0) * (1.0 - ((z_10 / 56.0) * (1.0 - ((z_10 / 90.0) * (1.0 - ((z_10 / 132.0) * (1.0 - (z_10 / 182.0))))))))))))));
+    float sin_r = (r_10 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
+    return vec2(-(sin_r), cos_r);
+}
+
+float airlight_acos(float x_13) {
+    float a_21 = abs(x_13);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_21) / (1.0 + a_21))));
+    return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+}
+
+float airlight_angle(float c_6, float s_17) {
+    if ((s_17 <= c_6)) {
+        float _e4 = airlight_atan((s_17 / c_6));
+        return _e4;
+    }
+    if ((s_17 <= -(c_6))) {
+        float _e10 = airlight_atan((s_17 / -(c_6)));
+        return (AIRLIGHT_PI - _e10);
+    }
+    if ((c_6 >= 0.0)) {
+        float _e16 = airlight_atan((c_6 / s_17));
+        return (1.5707964 - _e16);
+    }
+    float _e21 = airlight_atan((-(c_6) / s_17));
+    return (1.5707964 + _e21);
+}
+
+float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
+    float a_22 = (cos_a * cos_g);
+    float b_17 = (sin_a * sin_g);
+    if ((b_17 <= abs(a_22))) {
+        return ((a_22 > 0.0) ? AIRLIGHT_PI : 0.0);
+    }
+    float _e18 = airlight_acos(clamp((-(a_22) / b_17), -1.0, 1.0));
+    return _e18;
+}
+
+AirlightOuter airlight_surface(AirlightScene s_18) {
+    AirlightOuter g_17 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    bool local_86 = false;
+    vec3 u = vec3(0.0);
+    float cuts_1[2] = float[2](0.0, 0.0);
+    uint k_6 = 0u;
+    uint i_17 = 0u;
+    bool local_87 = false;
+    uint i_18 = 0u;
+    g_17 = AirlightOuter(s_18.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, AIRLIGHT_SURFACE_PANELS, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    vec3 to_light_1 = (s_18.light_position - s_18.origin);
+    float _e31 = airlight_safe_length(to_light_1);
+    if (!((s_18.intensity == 0.0))) {
+        local_86 = (s_18.sigma_s == 0.0);
+    } else {
+        local_86 = true;
+    }
+    bool _e42 = local_86;
+    if (_e42) {
+        g_17.outcome = 1u;
+        AirlightOuter _e45 = g_17;
+        return _e45;
+    }
+    if (!((_e31 > 0.0))) {
+        g_17.outcome = 2u;
+        AirlightOuter _e51 = g_17;
+        return _e51;
+    }
+    if ((s_18.brdf_albedo == 0.0)) {
+        g_17.outcome = 1u;
+        AirlightOuter _e57 = g_17;
+        return _e57;
+    }
+    vec3 l_3 = (to_light_1 / vec3(_e31));
+    vec3 _e61 = airlight_normalize(s_18.dir);
+    float cos_a_1 = dot(_e61, l_3);
+    vec3 across = (_e61 - (cos_a_1 * l_3));
+    float _e65 = airlight_safe_length(across);
+    u = (across / vec3(_e65));
+    if (!((_e65 > 0.0))) {
+        vec3 pick = ((abs(l_3.x) > 0.7) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0));
+        vec3 _e88 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
+        u = _e88;
+    }
+    g_17.l = l_3;
+    vec3 _e91 = u;
+    g_17.u = _e91;
+    g_17.cos_a = cos_a_1;
+    g_17.sin_a = _e65;
+    float _e95 = airlight_angle(cos_a_1, _e65);
+    float first = abs((1.5707964 - _e95));
+    cuts_1 = float[2](first, (AIRLIGHT_PI - first));
+    float _e103 = cuts_1[1];
+    float _e105 = cuts_1[0];
+    if ((_e103 < _e105)) {
+        float c_9 = cuts_1[0];
+        float _e111 = cuts_1[1];
+        cuts_1[0] = _e111;
+        cuts_1[1] = c_9;
+    }
+    bool loop_init_23 = true;
+    while(true) {
+        if (!loop_init_23) {
+            uint _e147 = i_17;
+            i_17 = (_e147 + 1u);
+        }
+        loop_init_23 = false;
+        uint _e117 = i_17;
+        if ((_e117 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e120 = i_17;
+            float _e122 = cuts_1[_e120];
+            uint _e124 = k_6;
+            float _e126 = g_17.gamma[_e124];
+            if ((_e122 > _e126)) {
+                uint _e130 = i_17;
+                float _e132 = cuts_1[_e130];
+                local_87 = (_e132 < AIRLIGHT_PI);
+            } else {
+                local_87 = false;
+            }
+            bool _e136 = local_87;
+            if (_e136) {
+                uint _e137 = k_6;
+                k_6 = (_e137 + 1u);
+                uint _e141 = k_6;
+                uint _e143 = i_17;
+                float _e145 = cuts_1[_e143];
+                g_17.gamma[_e141] = _e145;
+            }
+        }
+    }
+    uint _e150 = k_6;
+    g_17.gamma[(_e150 + 1u)] = AIRLIGHT_PI;
+    uint _e156 = k_6;
+    g_17.panels = (_e156 + 1u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (!loop_init_24) {
+            uint _e171 = i_18;
+            i_18 = (_e171 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e161 = i_18;
+        uint _e163 = g_17.panels;
+        if ((_e161 <= _e163)) {
+        } else {
+            break;
+        }
+        {
+            uint _e166 = i_18;
+            uint _e168 = i_18;
+            g_17.edges[_e166] = float(_e168);
+        }
+    }
+    AirlightOuter _e173 = g_17;
+    return _e173;
+}
+
+AirlightOuter airlight_outer(AirlightScene s_19) {
+    AirlightOuter g_18 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    bool local_88 = false;
+    bool local_89 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_83 = false;
-    bool local_84 = false;
-    bool local_85 = false;
-    bool local_86 = false;
-    bool local_87 = false;
-    bool local_88 = false;
-    float scale = 0.0;
-    bool local_89 = false;
     bool local_90 = false;
     bool local_91 = false;
     bool local_92 = false;
     bool local_93 = false;
-    float cuts_1[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = float[3](0.0, 0.0, 0.0);
-    uint i_17 = 0u;
     bool local_94 = false;
     bool local_95 = false;
+    float scale = 0.0;
     bool local_96 = false;
-    uint n_1 = 0u;
-    uint i_18 = 0u;
     bool local_97 = false;
-    g_17 = AirlightSegment(s_16.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u);
-    if ((s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightSegment _e19 = g_17;
-        return _e19;
+    bool local_98 = false;
+    bool local_99 = false;
+    bool local_100 = false;
+    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
+    uint i_19 = 0u;
+    bool local_101 = false;
+    bool local_102 = false;
+    bool local_103 = false;
+    uint n_1 = 0u;
+    uint i_20 = 0u;
+    bool local_104 = false;
+    if ((s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        AirlightOuter _e4 = airlight_surface(s_19);
+        return _e4;
     }
-    vec3 ab_1 = (s_16.light_end - s_16.light_position);
-    float _e23 = airlight_safe_length(ab_1);
-    if (!(!((_e23 > 0.0)))) {
-        local_81 = (s_16.intensity == 0.0);
+    g_18 = AirlightOuter(s_19.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, AIRLIGHT_SEGMENT_PANELS, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    if ((s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightOuter _e35 = g_18;
+        return _e35;
+    }
+    vec3 ab_1 = (s_19.light_end - s_19.light_position);
+    float _e39 = airlight_safe_length(ab_1);
+    if (!(!((_e39 > 0.0)))) {
+        local_88 = (s_19.intensity == 0.0);
     } else {
-        local_81 = true;
+        local_88 = true;
     }
-    bool _e34 = local_81;
-    if (!(_e34)) {
-        local_82 = (s_16.sigma_s == 0.0);
+    bool _e50 = local_88;
+    if (!(_e50)) {
+        local_89 = (s_19.sigma_s == 0.0);
     } else {
-        local_82 = true;
+        local_89 = true;
     }
-    bool _e42 = local_82;
-    if (_e42) {
-        g_17.outcome = 1u;
-        AirlightSegment _e45 = g_17;
-        return _e45;
+    bool _e58 = local_89;
+    if (_e58) {
+        g_18.outcome = 1u;
+        AirlightOuter _e61 = g_18;
+        return _e61;
     }
-    vec3 e_4 = (ab_1 / vec3(_e23));
-    vec3 _e49 = airlight_normalize(s_16.dir);
-    vec3 w0_ = (s_16.light_position - s_16.origin);
-    float cos_a = dot(e_4, _e49);
+    vec3 e_4 = (ab_1 / vec3(_e39));
+    vec3 _e65 = airlight_normalize(s_19.dir);
+    vec3 w0_ = (s_19.light_position - s_19.origin);
+    float cos_a_2 = dot(e_4, _e65);
     float along_e = dot(e_4, w0_);
-    float along_d = dot(_e49, w0_);
-    float sin2_ = (1.0 - (cos_a * cos_a));
-    bool infinite_4 = ((s_16.flags & 1u) != 0u);
+    float along_d = dot(_e65, w0_);
+    float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
+    bool infinite_4 = ((s_19.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
-        s_star = (((cos_a * along_d) - along_e) / sin2_);
-        t_star = ((along_d - (cos_a * along_e)) / sin2_);
+        s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
+        t_star = ((along_d - (cos_a_2 * along_e)) / sin2_);
     }
-    float _e75 = t_star;
-    float _e78 = s_star;
-    float _e81 = airlight_safe_length(((w0_ - (_e49 * _e75)) + (e_4 * _e78)));
-    float sin_a = sqrt(max(sin2_, 0.0));
-    if ((_e81 == 0.0)) {
-        local_83 = (sin_a > 0.0);
-    } else {
-        local_83 = false;
-    }
-    bool _e92 = local_83;
-    if (_e92) {
-        float _e95 = s_star;
-        local_84 = (_e95 >= 0.0);
-    } else {
-        local_84 = false;
-    }
-    bool _e99 = local_84;
-    if (_e99) {
-        float _e102 = s_star;
-        local_85 = (_e102 <= _e23);
-    } else {
-        local_85 = false;
-    }
-    bool _e105 = local_85;
-    if (_e105) {
-        float _e109 = t_star;
-        local_86 = (s_16.t_min <= _e109);
-    } else {
-        local_86 = false;
-    }
-    bool _e112 = local_86;
-    if (_e112) {
-        if (!(infinite_4)) {
-            float _e118 = t_star;
-            local_88 = (_e118 <= s_16.t_max);
-        } else {
-            local_88 = true;
-        }
-        bool _e122 = local_88;
-        local_87 = _e122;
-    } else {
-        local_87 = false;
-    }
-    bool _e124 = local_87;
-    if (_e124) {
-        g_17.outcome = 2u;
-        AirlightSegment _e127 = g_17;
-        return _e127;
-    }
-    if ((sin_a > 0.0)) {
-        local_89 = (_e81 > 0.0);
-    } else {
-        local_89 = false;
-    }
-    bool _e137 = local_89;
-    if (_e137) {
-        scale = (_e81 / sin_a);
-    }
-    float _e139 = s_star;
-    if ((_e139 > -(_e23))) {
-        float _e144 = s_star;
-        local_90 = (_e144 < (_e23 + _e23));
+    float _e91 = t_star;
+    float _e94 = s_star;
+    float _e97 = airlight_safe_length(((w0_ - (_e65 * _e91)) + (e_4 * _e94)));
+    float sin_a_1 = sqrt(max(sin2_, 0.0));
+    if ((_e97 == 0.0)) {
+        local_90 = (sin_a_1 > 0.0);
     } else {
         local_90 = false;
     }
-    bool _e148 = local_90;
-    if (_e148) {
-        float _e151 = scale;
-        local_91 = (_e151 < _e23);
+    bool _e108 = local_90;
+    if (_e108) {
+        float _e111 = s_star;
+        local_91 = (_e111 >= 0.0);
     } else {
         local_91 = false;
     }
-    bool near_2 = local_91;
-    if (near_2) {
-        float _e157 = s_star;
-        float _e159 = scale;
-        float _e161 = airlight_asinh(((_e23 - _e157) / _e159));
-        bool _e162 = airlight_is_finite(_e161);
-        local_92 = _e162;
+    bool _e115 = local_91;
+    if (_e115) {
+        float _e118 = s_star;
+        local_92 = (_e118 <= _e39);
     } else {
         local_92 = false;
     }
-    bool _e164 = local_92;
-    if (_e164) {
-        float _e167 = s_star;
-        float _e168 = scale;
-        float _e170 = airlight_asinh((_e167 / _e168));
-        bool _e171 = airlight_is_finite(_e170);
-        local_93 = _e171;
+    bool _e121 = local_92;
+    if (_e121) {
+        float _e125 = t_star;
+        local_93 = (s_19.t_min <= _e125);
     } else {
         local_93 = false;
     }
-    bool _e173 = local_93;
-    if (!(_e173)) {
+    bool _e128 = local_93;
+    if (_e128) {
+        if (!(infinite_4)) {
+            float _e134 = t_star;
+            local_95 = (_e134 <= s_19.t_max);
+        } else {
+            local_95 = true;
+        }
+        bool _e138 = local_95;
+        local_94 = _e138;
+    } else {
+        local_94 = false;
+    }
+    bool _e140 = local_94;
+    if (_e140) {
+        g_18.outcome = 2u;
+        AirlightOuter _e143 = g_18;
+        return _e143;
+    }
+    if ((sin_a_1 > 0.0)) {
+        local_96 = (_e97 > 0.0);
+    } else {
+        local_96 = false;
+    }
+    bool _e153 = local_96;
+    if (_e153) {
+        scale = (_e97 / sin_a_1);
+    }
+    float _e155 = s_star;
+    if ((_e155 > -(_e39))) {
+        float _e160 = s_star;
+        local_97 = (_e160 < (_e39 + _e39));
+    } else {
+        local_97 = false;
+    }
+    bool _e164 = local_97;
+    if (_e164) {
+        float _e167 = scale;
+        local_98 = (_e167 < _e39);
+    } else {
+        local_98 = false;
+    }
+    bool near_2 = local_98;
+    if (near_2) {
+        float _e173 = s_star;
+        float _e175 = scale;
+        float _e177 = airlight_asinh(((_e39 - _e173) / _e175));
+        bool _e178 = airlight_is_finite(_e177);
+        local_99 = _e178;
+    } else {
+        local_99 = false;
+    }
+    bool _e180 = local_99;
+    if (_e180) {
+        float _e183 = s_star;
+        float _e184 = scale;
+        float _e186 = airlight_asinh((_e183 / _e184));
+        bool _e187 = airlight_is_finite(_e186);
+        local_100 = _e187;
+    } else {
+        local_100 = false;
+    }
+    bool _e189 = local_100;
+    if (!(_e189)) {
         scale = 0.0;
     }
-    g_17.e = e_4;
-    float _e178 = s_star;
-    g_17.s_star = _e178;
-    float _e180 = scale;
-    g_17.scale = _e180;
-    float _e186 = s_star;
-    at = float[3](_e186, ((s_16.t_min - along_d) / cos_a), ((s_16.t_max - along_d) / cos_a));
-    bool loop_init_23 = true;
+    g_18.e = e_4;
+    float _e194 = s_star;
+    g_18.s_star = _e194;
+    float _e196 = scale;
+    g_18.scale = _e196;
+    float _e202 = s_star;
+    at = float[3](_e202, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_23) {
-            uint _e237 = i_17;
-            i_17 = (_e237 + 1u);
+        if (!loop_init_25) {
+            uint _e253 = i_19;
+            i_19 = (_e253 + 1u);
         }
-        loop_init_23 = false;
-        uint _e197 = i_17;
-        if ((_e197 < 3u)) {
+        loop_init_25 = false;
+        uint _e213 = i_19;
+        if ((_e213 < 3u)) {
         } else {
             break;
         }
         {
-            if ((cos_a == 0.0)) {
-                uint _e204 = i_17;
-                local_94 = (_e204 > 0u);
+            if ((cos_a_2 == 0.0)) {
+                uint _e220 = i_19;
+                local_101 = (_e220 > 0u);
             } else {
-                local_94 = false;
+                local_101 = false;
             }
-            bool _e208 = local_94;
-            if (_e208) {
+            bool _e224 = local_101;
+            if (_e224) {
                 continue;
             }
-            uint _e209 = i_17;
-            if ((_e209 == 2u)) {
-                local_95 = infinite_4;
+            uint _e225 = i_19;
+            if ((_e225 == 2u)) {
+                local_102 = infinite_4;
             } else {
-                local_95 = false;
+                local_102 = false;
             }
-            bool _e215 = local_95;
-            if (_e215) {
+            bool _e231 = local_102;
+            if (_e231) {
                 continue;
             }
-            uint _e216 = i_17;
-            float _e218 = at[_e216];
-            if ((_e218 > 0.0)) {
-                uint _e223 = i_17;
-                float _e225 = at[_e223];
-                local_96 = (_e225 < _e23);
+            uint _e232 = i_19;
+            float _e234 = at[_e232];
+            if ((_e234 > 0.0)) {
+                uint _e239 = i_19;
+                float _e241 = at[_e239];
+                local_103 = (_e241 < _e39);
             } else {
-                local_96 = false;
+                local_103 = false;
             }
-            bool _e228 = local_96;
-            if (_e228) {
-                uint _e229 = i_17;
-                AirlightSegment _e231 = g_17;
-                uint _e232 = i_17;
-                float _e234 = at[_e232];
-                float _e235 = airlight_to_w(_e231, _e234);
-                cuts_1[_e229] = _e235;
+            bool _e244 = local_103;
+            if (_e244) {
+                uint _e245 = i_19;
+                AirlightOuter _e247 = g_18;
+                uint _e248 = i_19;
+                float _e250 = at[_e248];
+                float _e251 = airlight_to_w(_e247, _e250);
+                cuts_2[_e245] = _e251;
             }
         }
     }
-    float _e240 = cuts_1[1];
-    float _e242 = cuts_1[0];
-    if ((_e240 < _e242)) {
-        float c_8 = cuts_1[0];
-        float _e248 = cuts_1[1];
-        cuts_1[0] = _e248;
-        cuts_1[1] = c_8;
+    float _e256 = cuts_2[1];
+    float _e258 = cuts_2[0];
+    if ((_e256 < _e258)) {
+        float c_10 = cuts_2[0];
+        float _e264 = cuts_2[1];
+        cuts_2[0] = _e264;
+        cuts_2[1] = c_10;
     }
-    float _e251 = cuts_1[2];
-    float _e253 = cuts_1[1];
-    if ((_e251 < _e253)) {
-        float c_9 = cuts_1[1];
-        float _e259 = cuts_1[2];
-        cuts_1[1] = _e259;
-        cuts_1[2] = c_9;
+    float _e267 = cuts_2[2];
+    float _e269 = cuts_2[1];
+    if ((_e267 < _e269)) {
+        float c_11 = cuts_2[1];
+        float _e275 = cuts_2[2];
+        cuts_2[1] = _e275;
+        cuts_2[2] = c_11;
     }
-    float _e262 = cuts_1[1];
-    float _e264 = cuts_1[0];
-    if ((_e262 < _e264)) {
-        float c_10 = cuts_1[0];
-        float _e270 = cuts_1[1];
-        cuts_1[0] = _e270;
-        cuts_1[1] = c_10;
+    float _e278 = cuts_2[1];
+    float _e280 = cuts_2[0];
+    if ((_e278 < _e280)) {
+        float c_12 = cuts_2[0];
+        float _e286 = cuts_2[1];
+        cuts_2[0] = _e286;
+        cuts_2[1] = c_12;
     }
-    AirlightSegment _e272 = g_17;
-    float _e273 = airlight_to_w(_e272, _e23);
-    AirlightSegment _e276 = g_17;
-    float _e278 = airlight_to_w(_e276, 0.0);
-    g_17.edges[0] = _e278;
-    bool loop_init_24 = true;
+    AirlightOuter _e288 = g_18;
+    float _e289 = airlight_to_w(_e288, _e39);
+    AirlightOuter _e292 = g_18;
+    float _e294 = airlight_to_w(_e292, 0.0);
+    g_18.edges[0] = _e294;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_24) {
-            uint _e312 = i_18;
-            i_18 = (_e312 + 1u);
+        if (!loop_init_26) {
+            uint _e328 = i_20;
+            i_20 = (_e328 + 1u);
         }
-        loop_init_24 = false;
-        uint _e283 = i_18;
-        if ((_e283 < 3u)) {
+        loop_init_26 = false;
+        uint _e299 = i_20;
+        if ((_e299 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e286 = i_18;
-            float _e288 = cuts_1[_e286];
-            uint _e290 = n_1;
-            float _e292 = g_17.edges[_e290];
-            if ((_e288 > _e292)) {
-                uint _e296 = i_18;
-                float _e298 = cuts_1[_e296];
-                local_97 = (_e298 < _e273);
+            uint _e302 = i_20;
+            float _e304 = cuts_2[_e302];
+            uint _e306 = n_1;
+            float _e308 = g_18.edges[_e306];
+            if ((_e304 > _e308)) {
+                uint _e312 = i_20;
+                float _e314 = cuts_2[_e312];
+                local_104 = (_e314 < _e289);
             } else {
-                local_97 = false;
+                local_104 = false;
             }
-            bool _e301 = local_97;
-            if (_e301) {
-                uint _e302 = n_1;
-                n_1 = (_e302 + 1u);
-                uint _e306 = n_1;
-                uint _e308 = i_18;
-                float _e310 = cuts_1[_e308];
-                g_17.edges[_e306] = _e310;
+            bool _e317 = local_104;
+            if (_e317) {
+                uint _e318 = n_1;
+                n_1 = (_e318 + 1u);
+                uint _e322 = n_1;
+                uint _e324 = i_20;
+                float _e326 = cuts_2[_e324];
+                g_18.edges[_e322] = _e326;
             }
         }
     }
-    uint _e315 = n_1;
-    g_17.edges[(_e315 + 1u)] = _e273;
-    uint _e320 = n_1;
-    g_17.panels = (_e320 + 1u);
-    AirlightSegment _e323 = g_17;
-    return _e323;
+    uint _e331 = n_1;
+    g_18.edges[(_e331 + 1u)] = _e289;
+    uint _e336 = n_1;
+    g_18.panels = (_e336 + 1u);
+    AirlightOuter _e339 = g_18;
+    return _e339;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_17) {
+AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_19, float x_14) {
+    AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
+    float at_1 = 0.0;
+    float ds = 1.0;
+    p = s_20;
+    p.light_shape = AIRLIGHT_SHAPE_POINT;
+    p.surface_kind = AIRLIGHT_SURFACE_NONE;
+    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_19.panels - 1u));
+        float t_6 = (x_14 - float(i_21));
+        float a_23 = g_19.gamma[i_21];
+        float b_18 = g_19.gamma[(i_21 + 1u)];
+        float gamma = (a_23 + ((((b_18 - a_23) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+        float jacobian = ((((b_18 - a_23) * 6.0) * t_6) * (1.0 - t_6));
+        if (!((jacobian > 0.0))) {
+            AirlightScene _e45 = p;
+            return AirlightNode(_e45, 0.0);
+        }
+        vec2 _e48 = airlight_cos_sin_half_turn(gamma);
+        float _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
+        if (!((_e53 > 0.0))) {
+            AirlightScene _e57 = p;
+            return AirlightNode(_e57, 0.0);
+        }
+        vec2 _e67 = airlight_cos_sin_half_turn(_e53);
+        float arc = (2.0 * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_19.l) + (_e48.y * g_19.u));
+        p.t_min = 0.0;
+        p.t_max = 0.0;
+        p.flags = 1u;
+        AirlightScene _e87 = p;
+        return AirlightNode(_e87, ((((s_20.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+    }
+    if ((s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+        at_1 = x_14;
+        if ((g_19.scale > 0.0)) {
+            at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
+            ds = (g_19.scale * cosh(x_14));
+        }
+        float _e115 = at_1;
+        p.light_position = (g_19.a + (_e115 * g_19.e));
+        AirlightScene _e119 = p;
+        float _e120 = ds;
+        return AirlightNode(_e119, _e120);
+    }
+    AirlightScene _e122 = p;
+    return AirlightNode(_e122, 1.0);
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_21) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -3833,25 +4120,25 @@ AirlightResult airlight_in_scatter(AirlightScene s_17) {
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_1 = 0u;
-    float k_6 = 0.0;
+    float k_7 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_98 = false;
-    float at_1 = 0.0;
-    float ds = 0.0;
-    AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3(0.0), 0u);
+    bool local_105 = false;
+    float f = 0.0;
     AirlightResult r_4 = AirlightResult(0.0, 0u);
-    bool local_99 = false;
+    bool local_106 = false;
+    bool local_107 = false;
+    bool local_108 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_100 = false;
-    bool local_101 = false;
-    bool local_102 = false;
-    bool _e1 = airlight_valid(s_17);
+    bool local_109 = false;
+    bool local_110 = false;
+    bool local_111 = false;
+    bool _e1 = airlight_valid(s_21);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightSegment _e6 = airlight_segment(s_17);
+    AirlightOuter _e6 = airlight_outer(s_21);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -3861,181 +4148,187 @@ AirlightResult airlight_in_scatter(AirlightScene s_17) {
     vec3 _e19[4] = airlight_kronrod_rule();
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
-    bool loop_init_25 = true;
+    uint evaluations = ((2u * _e6.max_panels) - 1u);
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_25) {
-            uint _e261 = step_1;
-            step_1 = (_e261 + 1u);
+        if (!loop_init_27) {
+            uint _e260 = step_1;
+            step_1 = (_e260 + 1u);
         }
-        loop_init_25 = false;
-        uint _e53 = step_1;
-        if ((_e53 < AIRLIGHT_SEGMENT_EVALUATIONS)) {
+        loop_init_27 = false;
+        uint _e58 = step_1;
+        if ((_e58 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e56 = a_16;
-            float _e57 = b_12;
-            float c_11 = (0.5 * (_e56 + _e57));
+            float _e60 = a_16;
             float _e61 = b_12;
-            float _e62 = a_16;
-            float hw_1 = (0.5 * (_e61 - _e62));
-            k_6 = 0.0;
+            float c_13 = (0.5 * (_e60 + _e61));
+            float _e65 = b_12;
+            float _e66 = a_16;
+            float hw_1 = (0.5 * (_e65 - _e66));
+            k_7 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            bool loop_init_26 = true;
+            bool loop_init_28 = true;
             while(true) {
-                if (!loop_init_26) {
-                    uint _e167 = j_4;
-                    j_4 = (_e167 + 1u);
+                if (!loop_init_28) {
+                    uint _e166 = j_4;
+                    j_4 = (_e166 + 1u);
                 }
-                loop_init_26 = false;
-                uint _e72 = j_4;
-                if ((_e72 < 7u)) {
+                loop_init_28 = false;
+                uint _e76 = j_4;
+                if ((_e76 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e75 = j_4;
-                    vec3 node = _e19[(_e75 / 2u)];
-                    uint _e85 = j_4;
-                    if (((_e85 & 1u) == 0u)) {
-                        uint _e92 = j_4;
-                        local_98 = (_e92 < 6u);
+                    uint _e79 = j_4;
+                    vec3 node = _e19[(_e79 / 2u)];
+                    uint _e89 = j_4;
+                    if (((_e89 & 1u) == 0u)) {
+                        uint _e96 = j_4;
+                        local_105 = (_e96 < 6u);
                     } else {
-                        local_98 = false;
+                        local_105 = false;
                     }
-                    bool _e96 = local_98;
-                    float w_5 = (_e96 ? (c_11 - (hw_1 * node.x)) : (c_11 + (hw_1 * node.x)));
-                    at_1 = w_5;
-                    ds = 1.0;
-                    if ((_e6.scale > 0.0)) {
-                        at_1 = (_e6.s_star + (_e6.scale * sinh(w_5)));
-                        ds = (_e6.scale * cosh(w_5));
+                    bool _e100 = local_105;
+                    float w_5 = (_e100 ? (c_13 - (hw_1 * node.x)) : (c_13 + (hw_1 * node.x)));
+                    AirlightNode _e102 = airlight_outer_node(s_21, _e6, w_5);
+                    f = 0.0;
+                    if ((_e102.weight != 0.0)) {
+                        AirlightScene p_1 = _e102.scene;
+                        r_4 = AirlightResult(0.0, 0u);
+                        bool _e114 = airlight_vec_finite(p_1.light_position);
+                        if (_e114) {
+                            bool _e118 = airlight_vec_finite(p_1.dir);
+                            local_106 = _e118;
+                        } else {
+                            local_106 = false;
+                        }
+                        bool _e120 = local_106;
+                        if (_e120) {
+                            AirlightCanonical _e121 = airlight_canonical(p_1);
+                            AirlightCanonical _e122 = airlight_refined(p_1, _e121);
+                            AirlightResult _e123 = airlight_in_scatter_canonical(p_1, _e122);
+                            r_4 = _e123;
+                        }
+                        float _e125 = r_4.in_scatter;
+                        bool _e126 = airlight_is_finite(_e125);
+                        if (!(!(_e126))) {
+                            uint _e132 = r_4.status;
+                            local_107 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                        } else {
+                            local_107 = true;
+                        }
+                        bool _e136 = local_107;
+                        if (_e136) {
+                            return AirlightResult(3.4028235e38, 2u);
+                        }
+                        if ((s_21.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_108 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        } else {
+                            local_108 = false;
+                        }
+                        bool _e149 = local_108;
+                        if (_e149) {
+                            AirlightResult _e150 = r_4;
+                            return _e150;
+                        }
+                        float _e152 = r_4.in_scatter;
+                        f = (_e152 * _e102.weight);
                     }
-                    p = s_17;
-                    float _e115 = at_1;
-                    p.light_position = (_e6.a + (_e115 * _e6.e));
-                    p.light_shape = AIRLIGHT_SHAPE_POINT;
-                    r_4 = AirlightResult(0.0, 0u);
-                    vec3 _e126 = p.light_position;
-                    bool _e127 = airlight_vec_finite(_e126);
-                    if (_e127) {
-                        AirlightScene _e128 = p;
-                        AirlightScene _e129 = p;
-                        AirlightScene _e130 = p;
-                        AirlightCanonical _e131 = airlight_canonical(_e130);
-                        AirlightCanonical _e132 = airlight_refined(_e129, _e131);
-                        AirlightResult _e133 = airlight_in_scatter_canonical(_e128, _e132);
-                        r_4 = _e133;
-                    }
-                    float _e135 = r_4.in_scatter;
-                    bool _e136 = airlight_is_finite(_e135);
-                    if (!(!(_e136))) {
-                        uint _e142 = r_4.status;
-                        local_99 = (_e142 == AIRLIGHT_STATUS_INFINITE);
-                    } else {
-                        local_99 = true;
-                    }
-                    bool _e146 = local_99;
-                    if (_e146) {
-                        return AirlightResult(3.4028235e38, 2u);
-                    }
-                    if ((s_17.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                        AirlightResult _e153 = r_4;
-                        return _e153;
-                    }
-                    float _e155 = r_4.in_scatter;
-                    float _e156 = ds;
-                    float f_3 = (_e155 * _e156);
-                    float _e158 = k_6;
-                    k_6 = (_e158 + (node.y * f_3));
-                    float _e162 = gauss;
-                    gauss = (_e162 + (node.z * f_3));
+                    float _e155 = k_7;
+                    float _e157 = f;
+                    k_7 = (_e155 + (node.y * _e157));
+                    float _e160 = gauss;
+                    float _e162 = f;
+                    gauss = (_e160 + (node.z * _e162));
                 }
             }
-            uint _e169 = slot_1;
-            float _e170 = a_16;
-            float _e171 = b_12;
-            float _e172 = k_6;
-            float _e174 = k_6;
-            float _e176 = gauss;
-            airlight_list_set(list_1, _e169, vec4(_e170, _e171, (_e172 * hw_1), abs(((_e174 * hw_1) - (_e176 * hw_1)))));
-            uint _e181 = slot_1;
-            uint _e182 = count_2;
-            if ((_e181 == _e182)) {
-                uint _e184 = count_2;
-                count_2 = (_e184 + 1u);
+            uint _e168 = slot_1;
+            float _e169 = a_16;
+            float _e170 = b_12;
+            float _e171 = k_7;
+            float _e173 = k_7;
+            float _e175 = gauss;
+            airlight_list_set(list_1, _e168, vec4(_e169, _e170, (_e171 * hw_1), abs(((_e173 * hw_1) - (_e175 * hw_1)))));
+            uint _e180 = slot_1;
+            uint _e181 = count_2;
+            if ((_e180 == _e181)) {
+                uint _e183 = count_2;
+                count_2 = (_e183 + 1u);
             }
-            uint _e187 = count_2;
-            if ((_e187 < _e6.panels)) {
-                uint _e191 = count_2;
-                a_16 = _e6.edges[_e191];
-                uint _e194 = count_2;
-                b_12 = _e6.edges[(_e194 + 1u)];
-                uint _e198 = count_2;
-                slot_1 = _e198;
+            uint _e186 = count_2;
+            if ((_e186 < _e6.panels)) {
+                uint _e190 = count_2;
+                a_16 = _e6.edges[_e190];
+                uint _e193 = count_2;
+                b_12 = _e6.edges[(_e193 + 1u)];
+                uint _e197 = count_2;
+                slot_1 = _e197;
             } else {
-                bool _e199 = queued;
-                if (_e199) {
-                    float _e200 = queued_lo;
-                    a_16 = _e200;
-                    float _e201 = queued_hi;
-                    b_12 = _e201;
-                    uint _e202 = count_2;
-                    slot_1 = _e202;
+                bool _e198 = queued;
+                if (_e198) {
+                    float _e199 = queued_lo;
+                    a_16 = _e199;
+                    float _e200 = queued_hi;
+                    b_12 = _e200;
+                    uint _e201 = count_2;
+                    slot_1 = _e201;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
-                    bool loop_init_27 = true;
+                    bool loop_init_29 = true;
                     while(true) {
-                        if (!loop_init_27) {
-                            uint _e256 = tries;
-                            tries = (_e256 + 1u);
+                        if (!loop_init_29) {
+                            uint _e255 = tries;
+                            tries = (_e255 + 1u);
                         }
-                        loop_init_27 = false;
-                        uint _e208 = tries;
-                        if ((_e208 < AIRLIGHT_SEGMENT_PANELS)) {
+                        loop_init_29 = false;
+                        uint _e207 = tries;
+                        if ((_e207 < _e6.max_panels)) {
                         } else {
                             break;
                         }
                         {
-                            AirlightPanelList _e211 = list_1;
-                            uint _e212 = count_2;
-                            AirlightListScan _e213 = airlight_list_scan(_e211, _e212);
-                            float total_4 = _e213.total;
-                            uint worst_1 = _e213.worst;
-                            if (!(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e224 = count_2;
-                                local_100 = (_e224 == AIRLIGHT_SEGMENT_PANELS);
+                            AirlightPanelList _e210 = list_1;
+                            uint _e211 = count_2;
+                            AirlightListScan _e212 = airlight_list_scan(_e210, _e211);
+                            float total_4 = _e212.total;
+                            uint worst_1 = _e212.worst;
+                            if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e223 = count_2;
+                                local_109 = (_e223 == _e6.max_panels);
                             } else {
-                                local_100 = true;
+                                local_109 = true;
                             }
-                            bool _e228 = local_100;
-                            if (!(_e228)) {
-                                bool _e232 = airlight_is_finite(total_4);
-                                local_101 = !(_e232);
+                            bool _e227 = local_109;
+                            if (!(_e227)) {
+                                bool _e231 = airlight_is_finite(total_4);
+                                local_110 = !(_e231);
                             } else {
-                                local_101 = true;
+                                local_110 = true;
                             }
-                            bool _e235 = local_101;
-                            if (_e235) {
+                            bool _e234 = local_110;
+                            if (_e234) {
                                 break;
                             }
-                            AirlightPanelList _e236 = list_1;
-                            vec4 _e237 = airlight_list_get(_e236, worst_1);
-                            float wa_1 = _e237.x;
-                            float wb_1 = _e237.y;
+                            AirlightPanelList _e235 = list_1;
+                            vec4 _e236 = airlight_list_get(_e235, worst_1);
+                            float wa_1 = _e236.x;
+                            float wb_1 = _e236.y;
                             float mid_1 = (0.5 * (wa_1 + wb_1));
                             if ((mid_1 > wa_1)) {
-                                local_102 = (mid_1 < wb_1);
+                                local_111 = (mid_1 < wb_1);
                             } else {
-                                local_102 = false;
+                                local_111 = false;
                             }
-                            bool _e248 = local_102;
-                            if (!(_e248)) {
-                                airlight_list_set(list_1, worst_1, vec4(_e237.xyz, 0.0));
+                            bool _e247 = local_111;
+                            if (!(_e247)) {
+                                airlight_list_set(list_1, worst_1, vec4(_e236.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -4048,20 +4341,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_17) {
                             break;
                         }
                     }
-                    bool _e258 = split;
-                    if (!(_e258)) {
+                    bool _e257 = split;
+                    if (!(_e257)) {
                         break;
                     }
                 }
             }
         }
     }
-    AirlightPanelList _e263 = list_1;
-    uint _e264 = count_2;
-    AirlightListScan _e265 = airlight_list_scan(_e263, _e264);
-    float total_5 = _e265.total;
-    bool _e267 = airlight_is_finite(total_5);
-    if (!(_e267)) {
+    AirlightPanelList _e262 = list_1;
+    uint _e263 = count_2;
+    AirlightListScan _e264 = airlight_list_scan(_e262, _e263);
+    float total_5 = _e264.total;
+    bool _e266 = airlight_is_finite(total_5);
+    if (!(_e266)) {
         return AirlightResult(3.4028235e38, 2u);
     }
     return AirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);

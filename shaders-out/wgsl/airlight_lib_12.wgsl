@@ -18,6 +18,8 @@ struct AirlightScene {
     light_kind: u32,
     phase_kind: u32,
     flags: u32,
+    brdf_albedo: f32,
+    surface_kind: u32,
     light_end: vec3<f32>,
     light_shape: u32,
 }
@@ -100,7 +102,7 @@ struct AirlightListScan {
     worst: u32,
 }
 
-struct AirlightSegment {
+struct AirlightOuter {
     a: vec3<f32>,
     e: vec3<f32>,
     s_star: f32,
@@ -108,6 +110,17 @@ struct AirlightSegment {
     edges: array<f32, 5>,
     panels: u32,
     outcome: u32,
+    max_panels: u32,
+    l: vec3<f32>,
+    u: vec3<f32>,
+    cos_a: f32,
+    sin_a: f32,
+    gamma: array<f32, 4>,
+}
+
+struct AirlightNode {
+    scene: AirlightScene,
+    weight: f32,
 }
 
 const AIRLIGHT_TERMS: u32 = 12u;
@@ -135,6 +148,8 @@ const AIRLIGHT_LIGHT_TWO_LOBED: u32 = 1u;
 const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
 const AIRLIGHT_SHAPE_POINT: u32 = 0u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = 1u;
+const AIRLIGHT_SURFACE_NONE: u32 = 0u;
+const AIRLIGHT_SURFACE_LAMBERT: u32 = 1u;
 const AIRLIGHT_STATUS_OK: u32 = 0u;
 const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
@@ -147,7 +162,7 @@ const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
 const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
-const AIRLIGHT_SEGMENT_EVALUATIONS: u32 = 11u;
+const AIRLIGHT_SURFACE_PANELS: u32 = 6u;
 
 fn airlight_zero_terms() -> array<f32, 12> {
     return array<f32, 12>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
@@ -216,7 +231,19 @@ fn airlight_two_lobe_henyey_greenstein(g1_: f32, g2_: f32, w: f32) -> AirlightPh
 }
 
 fn airlight_scene(ray: AirlightRay, light_1: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
-    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, light_1.end, light_1.shape);
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0f, AIRLIGHT_SURFACE_NONE, light_1.end, light_1.shape);
+}
+
+fn airlight_lambert_surface(position_3: vec3<f32>, normal: vec3<f32>, albedo: f32, light_2: AirlightLight, medium_1: AirlightMedium, phase_1: AirlightPhase) -> AirlightScene {
+    var s: AirlightScene;
+
+    let _e7 = airlight_ray_to_infinity(position_3, normal, 0f);
+    let _e8 = airlight_scene(_e7, light_2, medium_1, phase_1);
+    s = _e8;
+    s.brdf_albedo = albedo;
+    s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
+    let _e13 = s;
+    return _e13;
 }
 
 fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
@@ -265,7 +292,7 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     var c: f32 = 0f;
-    var s: f32 = 0f;
+    var s_1: f32 = 0f;
     var k_1: u32 = 0u;
     var fc: f32;
     var j: u32;
@@ -282,8 +309,8 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             let n_2 = (8u - _e12);
             let _e14 = c;
             c = (_e14 * z_8);
-            let _e16 = s;
-            s = (_e16 * z_8);
+            let _e16 = s_1;
+            s_1 = (_e16 * z_8);
             fc = 1f;
             j = 1u;
             loop {
@@ -306,9 +333,9 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             let _e40 = c;
             let _e41 = fc;
             c = (_e40 + (sign_ / _e41));
-            let _e44 = s;
+            let _e44 = s_1;
             let _e45 = fc;
-            s = (_e44 + (sign_ / (_e45 * f32(((2u * n_2) + 1u)))));
+            s_1 = (_e44 + (sign_ / (_e45 * f32(((2u * n_2) + 1u)))));
         }
         continuing {
             let _e55 = k_1;
@@ -316,7 +343,7 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
         }
     }
     let _e57 = c;
-    let _e58 = s;
+    let _e58 = s_1;
     return vec2<f32>(_e57, (_e58 * x));
 }
 
@@ -369,8 +396,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_18 = (x_2 / (2f + x_2));
-    let s2_ = (s_18 * s_18);
+    let s_22 = (x_2 / (2f + x_2));
+    let s2_ = (s_22 * s_22);
     loop {
         let _e14 = k_2;
         if (_e14 < 9u) {
@@ -388,7 +415,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_18) * _e35);
+    return ((2f * s_22) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -458,9 +485,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_12 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_12 * x_12) + (y_3 * y_3)) < 1f);
+    return (((x_15 * x_15) + (y_3 * y_3)) < 1f);
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
@@ -885,8 +912,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_13 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_13 * x_13) * (3f - (2f * x_13)));
+            let x_16 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_16 * x_16) * (3f - (2f * x_16)));
         }
         default: {
             return 1f;
@@ -894,7 +921,7 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
     }
 }
 
-fn airlight_integrand_over(s_1: AirlightScene, g_4: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
+fn airlight_integrand_over(s_2: AirlightScene, g_4: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
@@ -902,7 +929,7 @@ fn airlight_integrand_over(s_1: AirlightScene, g_4: AirlightCanonical, sigma: f3
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
     let mu_2 = (-(sigma) * (om_3 * inv_2));
-    let c_6 = ((((sigma * g_4.d_el) * om_3) + ((2f * g_4.d_c) * y_1)) * inv_2);
+    let c_7 = ((((sigma * g_4.d_el) * om_3) + ((2f * g_4.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
@@ -911,16 +938,16 @@ fn airlight_integrand_over(s_1: AirlightScene, g_4: AirlightCanonical, sigma: f3
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_6);
+    let _e35 = airlight_light(s_2.light_kind, s_2.light_param_a, s_2.light_param_b, c_7);
     let _e40 = minus;
     let _e41 = plus;
-    let _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
-    let f = (_e35 * _e42);
-    return vec2<f32>(f, inv_2);
+    let _e42 = airlight_phase(s_2.phase_kind, s_2.phase_param_a, s_2.phase_param_b, s_2.phase_param_c, mu_2, _e40, _e41);
+    let f_1 = (_e35 * _e42);
+    return vec2<f32>(f_1, inv_2);
 }
 
-fn airlight_integrand(s_2: AirlightScene, g_5: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
-    let _e4 = airlight_integrand_over(s_2, g_5, sigma_1, y_2);
+fn airlight_integrand(s_3: AirlightScene, g_5: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_3, g_5, sigma_1, y_2);
     return _e4.x;
 }
 
@@ -1009,10 +1036,10 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
             let _e48 = airlight_atan((half_1.dv / (1f + (v_s_1 * _e43))));
             d_im = _e48;
             let _e50 = v_e;
-            let x_14 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
-            let _e57 = airlight_is_finite(x_14);
+            let x_17 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
+            let _e57 = airlight_is_finite(x_17);
             if _e57 {
-                let _e58 = airlight_log1p(x_14);
+                let _e58 = airlight_log1p(x_17);
                 d_re = (0.5f * _e58);
             } else {
                 let _e63 = v_e;
@@ -1101,8 +1128,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_15 = rule[(i_3 / 2u)].x;
-    return select(x_15, -(x_15), ((i_3 % 2u) == 0u));
+    let x_18 = rule[(i_3 / 2u)].x;
+    return select(x_18, -(x_18), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_6: array<f32, 12>) -> array<f32, 12> {
@@ -1731,15 +1758,15 @@ fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     let _e13 = offset;
-    let x_16 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_16)), (x_16 > 0f));
+    let x_19 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_19)), (x_19 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_3: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+fn airlight_v_panel(s_4: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
     var r_1: f32;
     var vc: f32;
     var samples: array<f32, 12>;
@@ -1772,7 +1799,7 @@ fn airlight_v_panel(s_3: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
             let _e39 = i_7;
             let _e40 = airlight_node(_e6, _e39);
             let v_6 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_3, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
+            let _e46 = airlight_integrand_over(s_4, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
             let fy = _e46.x;
             let over = _e46.y;
             let _e49 = i_7;
@@ -1836,7 +1863,7 @@ fn airlight_v_panel(s_3: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
     return _e158;
 }
 
-fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
     var samples_1: array<f32, 12>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1861,7 +1888,7 @@ fn airlight_y_panel(s_4: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
             let _e27 = airlight_node(_e6, _e26);
             let y_5 = (yc_1 + (r_7 * _e27));
             let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_5 * b_5)));
-            let _e39 = airlight_integrand(s_4, g_8, sigma_3, y_5);
+            let _e39 = airlight_integrand(s_5, g_8, sigma_3, y_5);
             let over_1 = (1f / (1f + (y_5 * y_5)));
             let _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1996,7 +2023,7 @@ fn airlight_legendre_to_monomial(c_4: array<f32, 12>) -> array<f32, 12> {
     return _e255;
 }
 
-fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 12>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -2029,7 +2056,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
             let y_6 = (yc_2 + (r_8 * _e23));
-            let _e26 = airlight_integrand(s_5, g_9, sigma_4, y_6);
+            let _e26 = airlight_integrand(s_6, g_9, sigma_4, y_6);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
             let _e33 = f_max_3;
@@ -2342,13 +2369,13 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     let _e936 = airlight_factor(half_6, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_17 = (abs(alpha) + abs(beta));
+    let x_20 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_17) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_20) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2358,7 +2385,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_17) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_20) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2368,7 +2395,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_17) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_20) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2378,7 +2405,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_17) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_20) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2388,7 +2415,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_17) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_20) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2398,7 +2425,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_17) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_20) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2408,7 +2435,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_17) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_20) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2418,7 +2445,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_17) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_20) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2428,7 +2455,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_17) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_20) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2438,7 +2465,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_17) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_20) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2448,7 +2475,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_17) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_20) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2458,7 +2485,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_17) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_20) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2478,7 +2505,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     return _e1182;
 }
 
-fn airlight_panel(s_6: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
     var local_11: bool;
     var local_12: bool;
 
@@ -2489,7 +2516,7 @@ fn airlight_panel(s_6: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e13 = local_11;
     if _e13 {
-        let _e14 = airlight_tail_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+        let _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
@@ -2499,14 +2526,14 @@ fn airlight_panel(s_6: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e26 = local_12;
     if _e26 {
-        let _e27 = airlight_y_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+        let _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    let _e28 = airlight_v_panel(s_6, g_10, sigma_5, half_7, a_8, b_7);
+    let _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-fn airlight_integrate_piece(s_7: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_8: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2544,7 +2571,7 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_11: AirlightCanonical, sigma_6
         {
             let _e57 = a_9;
             let _e58 = b_8;
-            let _e59 = airlight_panel(s_7, g_11, sigma_6, half_8, _e57, _e58);
+            let _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
             let _e60 = (*f_max_4);
             (*f_max_4) = max(_e60, _e59.f_max);
             let _e63 = slot;
@@ -2737,8 +2764,8 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     }
     let a_19 = (a0_ / scale_1);
     let b_16 = (b0_ / scale_1);
-    let c_7 = (c0_ / scale_1);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_19) * c_7));
+    let c_8 = (c0_ / scale_1);
+    let disc_1 = ((b_16 * b_16) - ((4f * a_19) * c_8));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -2748,7 +2775,7 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     let _e47 = sb;
     let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
-        r1_ = (c_7 / q_2);
+        r1_ = (c_8 / q_2);
     }
     if (a_19 != 0f) {
         r2_2 = (q_2 / a_19);
@@ -2758,7 +2785,7 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_9: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var k_in: f32;
     var k_out: f32;
@@ -2774,13 +2801,13 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half
     var local_19: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_8, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_9, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_9);
         return (_e11 * _e12);
     }
-    if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_8.light_param_a;
-        k_out = s_8.light_param_b;
+    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_9.light_param_a;
+        k_out = s_9.light_param_b;
         let _e27 = k_in;
         let _e28 = k_out;
         let width_1 = (_e27 - _e28);
@@ -2894,7 +2921,7 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half
                 let _e146 = total_2;
                 let _e147 = lo_1;
                 let _e148 = hi_1;
-                let _e149 = airlight_integrate_piece(s_8, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
+                let _e149 = airlight_integrate_piece(s_9, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
                 total_2 = (_e146 + _e149);
                 let _e151 = hi_1;
                 lo_1 = _e151;
@@ -2933,7 +2960,7 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_3: 
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_9: AirlightScene, g_13: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_10: AirlightScene, g_13: AirlightCanonical) -> f32 {
     var local_20: bool;
     var span: f32;
     var e2_: array<f32, 14>;
@@ -2946,38 +2973,38 @@ fn airlight_on_line(s_9: AirlightScene, g_13: AirlightCanonical) -> f32 {
     }
     let _e10 = local_20;
     if _e10 {
-        let _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
-        let _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1f);
-        let f_1 = (_e16 * _e22);
+        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_13.d_el));
+        let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
+        let f_2 = (_e16 * _e22);
         let r0_ = (g_13.x_h - g_13.t_lo);
         let r1_1 = (g_13.x_h - g_13.t_hi);
-        let _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * r0_), (f_1 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
+        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
-    let _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1f);
-    let f_2 = (_e46 * _e52);
+    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_13.d_el);
+    let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
+    let f_3 = (_e46 * _e52);
     let s0_ = (g_13.t_lo - g_13.x_h);
     let s1_ = (g_13.t_hi - g_13.x_h);
-    if (s_9.sigma_t == 0f) {
+    if (s_10.sigma_t == 0f) {
         span = (1f / s0_);
         if !(g_13.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, 0f, (f_2 * _e75));
+        let _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, 0f, (f_3 * _e75));
         return _e77;
     }
-    let two_st = (s_9.sigma_t + s_9.sigma_t);
+    let two_st = (s_10.sigma_t + s_10.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * s0_), ((f_2 * _e90) / s0_));
+    let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if !(g_13.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_2 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -2999,7 +3026,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_11: AirlightScene, g_14: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -3045,19 +3072,19 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_10, g_14, -1f, _e9);
+    let _e54 = airlight_integrand(s_11, g_14, -1f, _e9);
     let _e55 = airlight_moment_zero(half_12);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_10.sigma_t > 0f) {
-            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
+        if (s_11.sigma_t > 0f) {
+            x_8 = (s_11.sigma_t * abs((g_14.x_h - g_14.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
+    let _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -3069,7 +3096,7 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
@@ -3114,7 +3141,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e10 = local_23;
     if !(!(_e10)) {
-        local_24 = ((s_11.sigma_s * s_11.intensity) == 0f);
+        local_24 = ((s_12.sigma_s * s_12.intensity) == 0f);
     } else {
         local_24 = true;
     }
@@ -3151,16 +3178,16 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e55 = local_27;
     if _e55 {
-        let _e56 = airlight_on_line(s_11, g_15);
+        let _e56 = airlight_on_line(s_12, g_15);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_11.sigma_t * h_3);
-    if !((s_11.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = (s_11.light_param_a == 0f);
+    let big_h_5 = (s_12.sigma_t * h_3);
+    if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_29 = (s_12.light_param_a == 0f);
         } else {
             local_29 = false;
         }
@@ -3171,15 +3198,15 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e85 = local_28;
     if _e85 {
-        if !((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_32 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_32 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_32 = true;
             }
             let _e104 = local_32;
             if _e104 {
-                local_33 = (s_11.phase_param_a == 0f);
+                local_33 = (s_12.phase_param_a == 0f);
             } else {
                 local_33 = false;
             }
@@ -3213,7 +3240,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e131 = local_35;
     if _e131 {
-        let _e132 = airlight_whole_line(s_11, g_15, big_h_5);
+        let _e132 = airlight_whole_line(s_12, g_15, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -3256,9 +3283,9 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
             }
         }
         let _e199 = half_10;
-        let _e200 = airlight_half(s_11, g_15, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e200 = airlight_half(s_12, g_15, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_15.t_hi_infinite) {
@@ -3350,9 +3377,9 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
             }
         }
         let _e313 = half_11;
-        let _e314 = airlight_half(s_11, g_15, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e314 = airlight_half(s_12, g_15, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3405,11 +3432,11 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u = (v_3 / vec3(m_7));
-    return (u / vec3(length(u)));
+    let u_1 = (v_3 / vec3(m_7));
+    return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_12: AirlightScene) -> bool {
+fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_49: bool;
     var local_50: bool;
     var local_51: bool;
@@ -3439,97 +3466,102 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
     var local_74: bool;
     var local_75: bool;
     var local_76: bool;
+    var local_77: bool;
+    var local_78: bool;
+    var local_79: bool;
+    var local_80: bool;
+    var local_81: bool;
 
-    let _e2 = airlight_vec_finite(s_12.origin);
+    let _e2 = airlight_vec_finite(s_13.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_12.dir);
+        let _e6 = airlight_vec_finite(s_13.dir);
         local_49 = _e6;
     } else {
         local_49 = false;
     }
     let _e8 = local_49;
     if _e8 {
-        let _e12 = airlight_normalisable(s_12.dir);
+        let _e12 = airlight_normalisable(s_13.dir);
         local_50 = _e12;
     } else {
         local_50 = false;
     }
     let _e14 = local_50;
     if _e14 {
-        let _e18 = airlight_is_finite(s_12.t_min);
+        let _e18 = airlight_is_finite(s_13.t_min);
         local_51 = _e18;
     } else {
         local_51 = false;
     }
     let _e20 = local_51;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_12.light_position);
+        let _e24 = airlight_vec_finite(s_13.light_position);
         local_52 = _e24;
     } else {
         local_52 = false;
     }
     let _e26 = local_52;
     if _e26 {
-        let _e30 = airlight_is_finite(s_12.intensity);
+        let _e30 = airlight_is_finite(s_13.intensity);
         local_53 = _e30;
     } else {
         local_53 = false;
     }
     let _e32 = local_53;
     if _e32 {
-        local_54 = (s_12.intensity >= 0f);
+        local_54 = (s_13.intensity >= 0f);
     } else {
         local_54 = false;
     }
     let _e39 = local_54;
     if _e39 {
-        let _e43 = airlight_is_finite(s_12.sigma_s);
+        let _e43 = airlight_is_finite(s_13.sigma_s);
         local_55 = _e43;
     } else {
         local_55 = false;
     }
     let _e45 = local_55;
     if _e45 {
-        local_56 = (s_12.sigma_s >= 0f);
+        local_56 = (s_13.sigma_s >= 0f);
     } else {
         local_56 = false;
     }
     let _e52 = local_56;
     if _e52 {
-        let _e56 = airlight_is_finite(s_12.sigma_t);
+        let _e56 = airlight_is_finite(s_13.sigma_t);
         local_57 = _e56;
     } else {
         local_57 = false;
     }
     let _e58 = local_57;
     if _e58 {
-        local_58 = (s_12.sigma_t >= 0f);
+        local_58 = (s_13.sigma_t >= 0f);
     } else {
         local_58 = false;
     }
     let _e65 = local_58;
     ok = _e65;
-    if ((s_12.flags & 1u) == 0u) {
+    if ((s_13.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_12.t_max);
+            let _e76 = airlight_is_finite(s_13.t_max);
             local_59 = _e76;
         } else {
             local_59 = false;
         }
         let _e78 = local_59;
         if _e78 {
-            local_60 = (s_12.t_min <= s_12.t_max);
+            local_60 = (s_13.t_min <= s_13.t_max);
         } else {
             local_60 = false;
         }
         let _e85 = local_60;
         ok = _e85;
     }
-    if (s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_12.light_end);
+            let _e93 = airlight_vec_finite(s_13.light_end);
             local_61 = _e93;
         } else {
             local_61 = false;
@@ -3537,147 +3569,188 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         let _e95 = local_61;
         ok = _e95;
     } else {
-        if (s_12.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_vec_finite(s_12.light_axis);
+            let _e107 = airlight_is_finite(s_13.brdf_albedo);
             local_62 = _e107;
         } else {
             local_62 = false;
         }
         let _e109 = local_62;
         if _e109 {
-            let _e113 = airlight_normalisable(s_12.light_axis);
-            local_63 = _e113;
+            local_63 = (s_13.brdf_albedo >= 0f);
         } else {
             local_63 = false;
         }
-        let _e115 = local_63;
-        if _e115 {
-            local_64 = (s_12.light_param_a >= 0f);
+        let _e116 = local_63;
+        if _e116 {
+            local_64 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_64 = false;
         }
-        let _e122 = local_64;
-        if _e122 {
-            local_65 = (s_12.light_param_a <= 1024f);
+        let _e123 = local_64;
+        if _e123 {
+            local_65 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_65 = false;
         }
-        let _e129 = local_65;
-        if _e129 {
-            local_66 = (fract((s_12.light_param_a * 0.5f)) == 0f);
+        let _e130 = local_65;
+        if _e130 {
+            let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            let _e137 = airlight_is_finite(_e136);
+            local_66 = _e137;
         } else {
             local_66 = false;
         }
         let _e139 = local_66;
         ok = _e139;
     } else {
-        if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e143 = ok;
-            if _e143 {
-                let _e147 = airlight_vec_finite(s_12.light_axis);
-                local_67 = _e147;
-            } else {
-                local_67 = false;
-            }
-            let _e149 = local_67;
-            if _e149 {
-                let _e153 = airlight_normalisable(s_12.light_axis);
-                local_68 = _e153;
-            } else {
-                local_68 = false;
-            }
-            let _e155 = local_68;
-            if _e155 {
-                local_69 = (s_12.light_param_b < s_12.light_param_a);
-            } else {
-                local_69 = false;
-            }
-            let _e162 = local_69;
-            if _e162 {
-                local_70 = (s_12.light_param_b >= -1f);
-            } else {
-                local_70 = false;
-            }
-            let _e169 = local_70;
-            if _e169 {
-                local_71 = (s_12.light_param_a <= 1f);
-            } else {
-                local_71 = false;
-            }
-            let _e176 = local_71;
-            ok = _e176;
+        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
+            ok = false;
+        }
+    }
+    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        let _e147 = ok;
+        if _e147 {
+            let _e151 = airlight_vec_finite(s_13.light_axis);
+            local_67 = _e151;
         } else {
-            if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            local_67 = false;
+        }
+        let _e153 = local_67;
+        if _e153 {
+            let _e157 = airlight_normalisable(s_13.light_axis);
+            local_68 = _e157;
+        } else {
+            local_68 = false;
+        }
+        let _e159 = local_68;
+        if _e159 {
+            local_69 = (s_13.light_param_a >= 0f);
+        } else {
+            local_69 = false;
+        }
+        let _e166 = local_69;
+        if _e166 {
+            local_70 = (s_13.light_param_a <= 1024f);
+        } else {
+            local_70 = false;
+        }
+        let _e173 = local_70;
+        if _e173 {
+            local_71 = (fract((s_13.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_71 = false;
+        }
+        let _e183 = local_71;
+        ok = _e183;
+    } else {
+        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
+            let _e187 = ok;
+            if _e187 {
+                let _e191 = airlight_vec_finite(s_13.light_axis);
+                local_72 = _e191;
+            } else {
+                local_72 = false;
+            }
+            let _e193 = local_72;
+            if _e193 {
+                let _e197 = airlight_normalisable(s_13.light_axis);
+                local_73 = _e197;
+            } else {
+                local_73 = false;
+            }
+            let _e199 = local_73;
+            if _e199 {
+                local_74 = (s_13.light_param_b < s_13.light_param_a);
+            } else {
+                local_74 = false;
+            }
+            let _e206 = local_74;
+            if _e206 {
+                local_75 = (s_13.light_param_b >= -1f);
+            } else {
+                local_75 = false;
+            }
+            let _e213 = local_75;
+            if _e213 {
+                local_76 = (s_13.light_param_a <= 1f);
+            } else {
+                local_76 = false;
+            }
+            let _e220 = local_76;
+            ok = _e220;
+        } else {
+            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_12.phase_param_a) < 1f);
-    switch s_12.phase_kind {
+    let g_ok = (abs(s_13.phase_param_a) < 1f);
+    switch s_13.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e186 = ok;
-            if _e186 {
-                local_72 = g_ok;
+            let _e230 = ok;
+            if _e230 {
+                local_77 = g_ok;
             } else {
-                local_72 = false;
+                local_77 = false;
             }
-            let _e190 = local_72;
-            ok = _e190;
+            let _e234 = local_77;
+            ok = _e234;
         }
         case 5u: {
-            let _e191 = ok;
-            if _e191 {
-                local_73 = g_ok;
+            let _e235 = ok;
+            if _e235 {
+                local_78 = g_ok;
             } else {
-                local_73 = false;
+                local_78 = false;
             }
-            let _e195 = local_73;
-            if _e195 {
-                local_74 = (abs(s_12.phase_param_b) < 1f);
+            let _e239 = local_78;
+            if _e239 {
+                local_79 = (abs(s_13.phase_param_b) < 1f);
             } else {
-                local_74 = false;
+                local_79 = false;
             }
-            let _e203 = local_74;
-            if _e203 {
-                local_75 = (s_12.phase_param_c >= 0f);
+            let _e247 = local_79;
+            if _e247 {
+                local_80 = (s_13.phase_param_c >= 0f);
             } else {
-                local_75 = false;
+                local_80 = false;
             }
-            let _e210 = local_75;
-            if _e210 {
-                local_76 = (s_12.phase_param_c <= 1f);
+            let _e254 = local_80;
+            if _e254 {
+                local_81 = (s_13.phase_param_c <= 1f);
             } else {
-                local_76 = false;
+                local_81 = false;
             }
-            let _e217 = local_76;
-            ok = _e217;
+            let _e261 = local_81;
+            ok = _e261;
         }
         default: {
             ok = false;
         }
     }
-    let _e219 = ok;
-    return _e219;
+    let _e263 = ok;
+    return _e263;
 }
 
-fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_13.dir);
-    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_13.light_axis);
+    let _e2 = airlight_normalize(s_14.dir);
+    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_14.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_13.light_position - s_13.origin);
+    let to_light = (s_14.light_position - s_14.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -3685,10 +3758,10 @@ fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_13.flags & 1u) != 0u);
+    let infinite_3 = ((s_14.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, select(s_13.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, select(s_14.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -3728,46 +3801,46 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_77: bool;
-    var local_78: bool;
+    var local_82: bool;
+    var local_83: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_78 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_83 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_78 = false;
+            local_83 = false;
         }
-        let _e21 = local_78;
-        local_77 = _e21;
+        let _e21 = local_83;
+        local_82 = _e21;
     } else {
-        local_77 = true;
+        local_82 = true;
     }
-    let _e23 = local_77;
+    let _e23 = local_82;
     return _e23;
 }
 
-fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_79: bool;
+fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    var local_84: bool;
     var out_2: AirlightCanonical;
-    var local_80: bool;
+    var local_85: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_14.flags > 1u));
-    let _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
+    let key_4 = u32((s_15.flags > 1u));
+    let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
     let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_14.dir;
+    let dir_2 = s_15.dir;
     let _e33 = airlight_in_exact_range(hi_2);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_79 = !(_e38);
+        local_84 = !(_e38);
     } else {
-        local_79 = true;
+        local_84 = true;
     }
-    let _e41 = local_79;
+    let _e41 = local_84;
     if _e41 {
         return plain;
     }
@@ -3791,16 +3864,16 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_80 = (h_4 > 0f);
+        local_85 = (h_4 > 0f);
     } else {
-        local_80 = false;
+        local_85 = false;
     }
-    let _e101 = local_80;
+    let _e101 = local_85;
     if !(_e101) {
         return plain;
     }
-    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_14.light_axis);
+    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_15.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
@@ -3960,304 +4033,518 @@ fn airlight_asinh(x_11: f32) -> f32 {
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_16: AirlightSegment, s_15: f32) -> f32 {
+fn airlight_to_w(g_16: AirlightOuter, s_16: f32) -> f32 {
     if (g_16.scale > 0f) {
-        let _e9 = airlight_asinh(((s_15 - g_16.s_star) / g_16.scale));
+        let _e9 = airlight_asinh(((s_16 - g_16.s_star) / g_16.scale));
         return _e9;
     }
-    return s_15;
+    return s_16;
 }
 
-fn airlight_segment(s_16: AirlightScene) -> AirlightSegment {
-    var g_17: AirlightSegment;
-    var local_81: bool;
-    var local_82: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_83: bool;
-    var local_84: bool;
-    var local_85: bool;
-    var local_86: bool;
-    var local_87: bool;
-    var local_88: bool;
-    var scale: f32 = 0f;
-    var local_89: bool;
-    var local_90: bool;
-    var local_91: bool;
-    var local_92: bool;
-    var local_93: bool;
-    var cuts_1: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
-    var i_17: u32 = 0u;
-    var local_94: bool;
-    var local_95: bool;
-    var local_96: bool;
-    var n_1: u32 = 0u;
-    var i_18: u32 = 0u;
-    var local_97: bool;
+fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
+    let r_10 = (x_12 - 1.5707964f);
+    let z_10 = (r_10 * r_10);
+    let cos_r = (1f - ((z_10 / 2f) * (1f - ((z_10 / 12f) * (1f - ((z_10 / 30f) * (1f - ((z_10 / 56f) * (1f - ((z_10 / 90f) * (1f - ((z_10 / 132f) * (1f - (z_10 / 182f))))))))))))));
+    let sin_r = (r_10 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
+    return vec2<f32>(-(sin_r), cos_r);
+}
 
-    g_17 = AirlightSegment(s_16.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u);
-    if (s_16.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e19 = g_17;
-        return _e19;
+fn airlight_acos(x_13: f32) -> f32 {
+    let a_21 = abs(x_13);
+    let _e8 = airlight_atan(sqrt(((1f - a_21) / (1f + a_21))));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
+}
+
+fn airlight_angle(c_6: f32, s_17: f32) -> f32 {
+    if (s_17 <= c_6) {
+        let _e4 = airlight_atan((s_17 / c_6));
+        return _e4;
     }
-    let ab_1 = (s_16.light_end - s_16.light_position);
-    let _e23 = airlight_safe_length(ab_1);
-    if !(!((_e23 > 0f))) {
-        local_81 = (s_16.intensity == 0f);
+    if (s_17 <= -(c_6)) {
+        let _e10 = airlight_atan((s_17 / -(c_6)));
+        return (AIRLIGHT_PI - _e10);
+    }
+    if (c_6 >= 0f) {
+        let _e16 = airlight_atan((c_6 / s_17));
+        return (1.5707964f - _e16);
+    }
+    let _e21 = airlight_atan((-(c_6) / s_17));
+    return (1.5707964f + _e21);
+}
+
+fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
+    let a_22 = (cos_a * cos_g);
+    let b_17 = (sin_a * sin_g);
+    if (b_17 <= abs(a_22)) {
+        return select(0f, AIRLIGHT_PI, (a_22 > 0f));
+    }
+    let _e18 = airlight_acos(clamp((-(a_22) / b_17), -1f, 1f));
+    return _e18;
+}
+
+fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
+    var g_17: AirlightOuter;
+    var local_86: bool;
+    var u: vec3<f32>;
+    var cuts_1: array<f32, 2>;
+    var k_6: u32 = 0u;
+    var i_17: u32 = 0u;
+    var local_87: bool;
+    var i_18: u32 = 0u;
+
+    g_17 = AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, AIRLIGHT_SURFACE_PANELS, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+    let to_light_1 = (s_18.light_position - s_18.origin);
+    let _e31 = airlight_safe_length(to_light_1);
+    if !((s_18.intensity == 0f)) {
+        local_86 = (s_18.sigma_s == 0f);
     } else {
-        local_81 = true;
+        local_86 = true;
     }
-    let _e34 = local_81;
-    if !(_e34) {
-        local_82 = (s_16.sigma_s == 0f);
-    } else {
-        local_82 = true;
-    }
-    let _e42 = local_82;
+    let _e42 = local_86;
     if _e42 {
         g_17.outcome = 1u;
         let _e45 = g_17;
         return _e45;
     }
-    let e_4 = (ab_1 / vec3(_e23));
-    let _e49 = airlight_normalize(s_16.dir);
-    let w0_ = (s_16.light_position - s_16.origin);
-    let cos_a = dot(e_4, _e49);
+    if !((_e31 > 0f)) {
+        g_17.outcome = 2u;
+        let _e51 = g_17;
+        return _e51;
+    }
+    if (s_18.brdf_albedo == 0f) {
+        g_17.outcome = 1u;
+        let _e57 = g_17;
+        return _e57;
+    }
+    let l_3 = (to_light_1 / vec3(_e31));
+    let _e61 = airlight_normalize(s_18.dir);
+    let cos_a_1 = dot(_e61, l_3);
+    let across = (_e61 - (cos_a_1 * l_3));
+    let _e65 = airlight_safe_length(across);
+    u = (across / vec3(_e65));
+    if !((_e65 > 0f)) {
+        let pick = select(vec3<f32>(1f, 0f, 0f), vec3<f32>(0f, 1f, 0f), (abs(l_3.x) > 0.7f));
+        let _e88 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
+        u = _e88;
+    }
+    g_17.l = l_3;
+    let _e91 = u;
+    g_17.u = _e91;
+    g_17.cos_a = cos_a_1;
+    g_17.sin_a = _e65;
+    let _e95 = airlight_angle(cos_a_1, _e65);
+    let first = abs((1.5707964f - _e95));
+    cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
+    let _e103 = cuts_1[1];
+    let _e105 = cuts_1[0];
+    if (_e103 < _e105) {
+        let c_9 = cuts_1[0];
+        let _e111 = cuts_1[1];
+        cuts_1[0] = _e111;
+        cuts_1[1] = c_9;
+    }
+    loop {
+        let _e117 = i_17;
+        if (_e117 < 2u) {
+        } else {
+            break;
+        }
+        {
+            let _e120 = i_17;
+            let _e122 = cuts_1[_e120];
+            let _e124 = k_6;
+            let _e126 = g_17.gamma[_e124];
+            if (_e122 > _e126) {
+                let _e130 = i_17;
+                let _e132 = cuts_1[_e130];
+                local_87 = (_e132 < AIRLIGHT_PI);
+            } else {
+                local_87 = false;
+            }
+            let _e136 = local_87;
+            if _e136 {
+                let _e137 = k_6;
+                k_6 = (_e137 + 1u);
+                let _e141 = k_6;
+                let _e143 = i_17;
+                let _e145 = cuts_1[_e143];
+                g_17.gamma[_e141] = _e145;
+            }
+        }
+        continuing {
+            let _e147 = i_17;
+            i_17 = (_e147 + 1u);
+        }
+    }
+    let _e150 = k_6;
+    g_17.gamma[(_e150 + 1u)] = AIRLIGHT_PI;
+    let _e156 = k_6;
+    g_17.panels = (_e156 + 1u);
+    loop {
+        let _e161 = i_18;
+        let _e163 = g_17.panels;
+        if (_e161 <= _e163) {
+        } else {
+            break;
+        }
+        {
+            let _e166 = i_18;
+            let _e168 = i_18;
+            g_17.edges[_e166] = f32(_e168);
+        }
+        continuing {
+            let _e171 = i_18;
+            i_18 = (_e171 + 1u);
+        }
+    }
+    let _e173 = g_17;
+    return _e173;
+}
+
+fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
+    var g_18: AirlightOuter;
+    var local_88: bool;
+    var local_89: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
+    var local_90: bool;
+    var local_91: bool;
+    var local_92: bool;
+    var local_93: bool;
+    var local_94: bool;
+    var local_95: bool;
+    var scale: f32 = 0f;
+    var local_96: bool;
+    var local_97: bool;
+    var local_98: bool;
+    var local_99: bool;
+    var local_100: bool;
+    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
+    var i_19: u32 = 0u;
+    var local_101: bool;
+    var local_102: bool;
+    var local_103: bool;
+    var n_1: u32 = 0u;
+    var i_20: u32 = 0u;
+    var local_104: bool;
+
+    if (s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_19);
+        return _e4;
+    }
+    g_18 = AirlightOuter(s_19.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, AIRLIGHT_SEGMENT_PANELS, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+    if (s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        let _e35 = g_18;
+        return _e35;
+    }
+    let ab_1 = (s_19.light_end - s_19.light_position);
+    let _e39 = airlight_safe_length(ab_1);
+    if !(!((_e39 > 0f))) {
+        local_88 = (s_19.intensity == 0f);
+    } else {
+        local_88 = true;
+    }
+    let _e50 = local_88;
+    if !(_e50) {
+        local_89 = (s_19.sigma_s == 0f);
+    } else {
+        local_89 = true;
+    }
+    let _e58 = local_89;
+    if _e58 {
+        g_18.outcome = 1u;
+        let _e61 = g_18;
+        return _e61;
+    }
+    let e_4 = (ab_1 / vec3(_e39));
+    let _e65 = airlight_normalize(s_19.dir);
+    let w0_ = (s_19.light_position - s_19.origin);
+    let cos_a_2 = dot(e_4, _e65);
     let along_e = dot(e_4, w0_);
-    let along_d = dot(_e49, w0_);
-    let sin2_ = (1f - (cos_a * cos_a));
-    let infinite_4 = ((s_16.flags & 1u) != 0u);
+    let along_d = dot(_e65, w0_);
+    let sin2_ = (1f - (cos_a_2 * cos_a_2));
+    let infinite_4 = ((s_19.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
-        s_star = (((cos_a * along_d) - along_e) / sin2_);
-        t_star = ((along_d - (cos_a * along_e)) / sin2_);
+        s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
+        t_star = ((along_d - (cos_a_2 * along_e)) / sin2_);
     }
-    let _e75 = t_star;
-    let _e78 = s_star;
-    let _e81 = airlight_safe_length(((w0_ - (_e49 * _e75)) + (e_4 * _e78)));
-    let sin_a = sqrt(max(sin2_, 0f));
-    if (_e81 == 0f) {
-        local_83 = (sin_a > 0f);
-    } else {
-        local_83 = false;
-    }
-    let _e92 = local_83;
-    if _e92 {
-        let _e95 = s_star;
-        local_84 = (_e95 >= 0f);
-    } else {
-        local_84 = false;
-    }
-    let _e99 = local_84;
-    if _e99 {
-        let _e102 = s_star;
-        local_85 = (_e102 <= _e23);
-    } else {
-        local_85 = false;
-    }
-    let _e105 = local_85;
-    if _e105 {
-        let _e109 = t_star;
-        local_86 = (s_16.t_min <= _e109);
-    } else {
-        local_86 = false;
-    }
-    let _e112 = local_86;
-    if _e112 {
-        if !(infinite_4) {
-            let _e118 = t_star;
-            local_88 = (_e118 <= s_16.t_max);
-        } else {
-            local_88 = true;
-        }
-        let _e122 = local_88;
-        local_87 = _e122;
-    } else {
-        local_87 = false;
-    }
-    let _e124 = local_87;
-    if _e124 {
-        g_17.outcome = 2u;
-        let _e127 = g_17;
-        return _e127;
-    }
-    if (sin_a > 0f) {
-        local_89 = (_e81 > 0f);
-    } else {
-        local_89 = false;
-    }
-    let _e137 = local_89;
-    if _e137 {
-        scale = (_e81 / sin_a);
-    }
-    let _e139 = s_star;
-    if (_e139 > -(_e23)) {
-        let _e144 = s_star;
-        local_90 = (_e144 < (_e23 + _e23));
+    let _e91 = t_star;
+    let _e94 = s_star;
+    let _e97 = airlight_safe_length(((w0_ - (_e65 * _e91)) + (e_4 * _e94)));
+    let sin_a_1 = sqrt(max(sin2_, 0f));
+    if (_e97 == 0f) {
+        local_90 = (sin_a_1 > 0f);
     } else {
         local_90 = false;
     }
-    let _e148 = local_90;
-    if _e148 {
-        let _e151 = scale;
-        local_91 = (_e151 < _e23);
+    let _e108 = local_90;
+    if _e108 {
+        let _e111 = s_star;
+        local_91 = (_e111 >= 0f);
     } else {
         local_91 = false;
     }
-    let near_2 = local_91;
-    if near_2 {
-        let _e157 = s_star;
-        let _e159 = scale;
-        let _e161 = airlight_asinh(((_e23 - _e157) / _e159));
-        let _e162 = airlight_is_finite(_e161);
-        local_92 = _e162;
+    let _e115 = local_91;
+    if _e115 {
+        let _e118 = s_star;
+        local_92 = (_e118 <= _e39);
     } else {
         local_92 = false;
     }
-    let _e164 = local_92;
-    if _e164 {
-        let _e167 = s_star;
-        let _e168 = scale;
-        let _e170 = airlight_asinh((_e167 / _e168));
-        let _e171 = airlight_is_finite(_e170);
-        local_93 = _e171;
+    let _e121 = local_92;
+    if _e121 {
+        let _e125 = t_star;
+        local_93 = (s_19.t_min <= _e125);
     } else {
         local_93 = false;
     }
-    let _e173 = local_93;
-    if !(_e173) {
+    let _e128 = local_93;
+    if _e128 {
+        if !(infinite_4) {
+            let _e134 = t_star;
+            local_95 = (_e134 <= s_19.t_max);
+        } else {
+            local_95 = true;
+        }
+        let _e138 = local_95;
+        local_94 = _e138;
+    } else {
+        local_94 = false;
+    }
+    let _e140 = local_94;
+    if _e140 {
+        g_18.outcome = 2u;
+        let _e143 = g_18;
+        return _e143;
+    }
+    if (sin_a_1 > 0f) {
+        local_96 = (_e97 > 0f);
+    } else {
+        local_96 = false;
+    }
+    let _e153 = local_96;
+    if _e153 {
+        scale = (_e97 / sin_a_1);
+    }
+    let _e155 = s_star;
+    if (_e155 > -(_e39)) {
+        let _e160 = s_star;
+        local_97 = (_e160 < (_e39 + _e39));
+    } else {
+        local_97 = false;
+    }
+    let _e164 = local_97;
+    if _e164 {
+        let _e167 = scale;
+        local_98 = (_e167 < _e39);
+    } else {
+        local_98 = false;
+    }
+    let near_2 = local_98;
+    if near_2 {
+        let _e173 = s_star;
+        let _e175 = scale;
+        let _e177 = airlight_asinh(((_e39 - _e173) / _e175));
+        let _e178 = airlight_is_finite(_e177);
+        local_99 = _e178;
+    } else {
+        local_99 = false;
+    }
+    let _e180 = local_99;
+    if _e180 {
+        let _e183 = s_star;
+        let _e184 = scale;
+        let _e186 = airlight_asinh((_e183 / _e184));
+        let _e187 = airlight_is_finite(_e186);
+        local_100 = _e187;
+    } else {
+        local_100 = false;
+    }
+    let _e189 = local_100;
+    if !(_e189) {
         scale = 0f;
     }
-    g_17.e = e_4;
-    let _e178 = s_star;
-    g_17.s_star = _e178;
-    let _e180 = scale;
-    g_17.scale = _e180;
-    let _e186 = s_star;
-    at = array<f32, 3>(_e186, ((s_16.t_min - along_d) / cos_a), ((s_16.t_max - along_d) / cos_a));
+    g_18.e = e_4;
+    let _e194 = s_star;
+    g_18.s_star = _e194;
+    let _e196 = scale;
+    g_18.scale = _e196;
+    let _e202 = s_star;
+    at = array<f32, 3>(_e202, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
     loop {
-        let _e197 = i_17;
-        if (_e197 < 3u) {
+        let _e213 = i_19;
+        if (_e213 < 3u) {
         } else {
             break;
         }
         {
-            if (cos_a == 0f) {
-                let _e204 = i_17;
-                local_94 = (_e204 > 0u);
+            if (cos_a_2 == 0f) {
+                let _e220 = i_19;
+                local_101 = (_e220 > 0u);
             } else {
-                local_94 = false;
+                local_101 = false;
             }
-            let _e208 = local_94;
-            if _e208 {
+            let _e224 = local_101;
+            if _e224 {
                 continue;
             }
-            let _e209 = i_17;
-            if (_e209 == 2u) {
-                local_95 = infinite_4;
+            let _e225 = i_19;
+            if (_e225 == 2u) {
+                local_102 = infinite_4;
             } else {
-                local_95 = false;
+                local_102 = false;
             }
-            let _e215 = local_95;
-            if _e215 {
+            let _e231 = local_102;
+            if _e231 {
                 continue;
             }
-            let _e216 = i_17;
-            let _e218 = at[_e216];
-            if (_e218 > 0f) {
-                let _e223 = i_17;
-                let _e225 = at[_e223];
-                local_96 = (_e225 < _e23);
+            let _e232 = i_19;
+            let _e234 = at[_e232];
+            if (_e234 > 0f) {
+                let _e239 = i_19;
+                let _e241 = at[_e239];
+                local_103 = (_e241 < _e39);
             } else {
-                local_96 = false;
+                local_103 = false;
             }
-            let _e228 = local_96;
-            if _e228 {
-                let _e229 = i_17;
-                let _e231 = g_17;
-                let _e232 = i_17;
-                let _e234 = at[_e232];
-                let _e235 = airlight_to_w(_e231, _e234);
-                cuts_1[_e229] = _e235;
+            let _e244 = local_103;
+            if _e244 {
+                let _e245 = i_19;
+                let _e247 = g_18;
+                let _e248 = i_19;
+                let _e250 = at[_e248];
+                let _e251 = airlight_to_w(_e247, _e250);
+                cuts_2[_e245] = _e251;
             }
         }
         continuing {
-            let _e237 = i_17;
-            i_17 = (_e237 + 1u);
+            let _e253 = i_19;
+            i_19 = (_e253 + 1u);
         }
     }
-    let _e240 = cuts_1[1];
-    let _e242 = cuts_1[0];
-    if (_e240 < _e242) {
-        let c_8 = cuts_1[0];
-        let _e248 = cuts_1[1];
-        cuts_1[0] = _e248;
-        cuts_1[1] = c_8;
+    let _e256 = cuts_2[1];
+    let _e258 = cuts_2[0];
+    if (_e256 < _e258) {
+        let c_10 = cuts_2[0];
+        let _e264 = cuts_2[1];
+        cuts_2[0] = _e264;
+        cuts_2[1] = c_10;
     }
-    let _e251 = cuts_1[2];
-    let _e253 = cuts_1[1];
-    if (_e251 < _e253) {
-        let c_9 = cuts_1[1];
-        let _e259 = cuts_1[2];
-        cuts_1[1] = _e259;
-        cuts_1[2] = c_9;
+    let _e267 = cuts_2[2];
+    let _e269 = cuts_2[1];
+    if (_e267 < _e269) {
+        let c_11 = cuts_2[1];
+        let _e275 = cuts_2[2];
+        cuts_2[1] = _e275;
+        cuts_2[2] = c_11;
     }
-    let _e262 = cuts_1[1];
-    let _e264 = cuts_1[0];
-    if (_e262 < _e264) {
-        let c_10 = cuts_1[0];
-        let _e270 = cuts_1[1];
-        cuts_1[0] = _e270;
-        cuts_1[1] = c_10;
+    let _e278 = cuts_2[1];
+    let _e280 = cuts_2[0];
+    if (_e278 < _e280) {
+        let c_12 = cuts_2[0];
+        let _e286 = cuts_2[1];
+        cuts_2[0] = _e286;
+        cuts_2[1] = c_12;
     }
-    let _e272 = g_17;
-    let _e273 = airlight_to_w(_e272, _e23);
-    let _e276 = g_17;
-    let _e278 = airlight_to_w(_e276, 0f);
-    g_17.edges[0] = _e278;
+    let _e288 = g_18;
+    let _e289 = airlight_to_w(_e288, _e39);
+    let _e292 = g_18;
+    let _e294 = airlight_to_w(_e292, 0f);
+    g_18.edges[0] = _e294;
     loop {
-        let _e283 = i_18;
-        if (_e283 < 3u) {
+        let _e299 = i_20;
+        if (_e299 < 3u) {
         } else {
             break;
         }
         {
-            let _e286 = i_18;
-            let _e288 = cuts_1[_e286];
-            let _e290 = n_1;
-            let _e292 = g_17.edges[_e290];
-            if (_e288 > _e292) {
-                let _e296 = i_18;
-                let _e298 = cuts_1[_e296];
-                local_97 = (_e298 < _e273);
+            let _e302 = i_20;
+            let _e304 = cuts_2[_e302];
+            let _e306 = n_1;
+            let _e308 = g_18.edges[_e306];
+            if (_e304 > _e308) {
+                let _e312 = i_20;
+                let _e314 = cuts_2[_e312];
+                local_104 = (_e314 < _e289);
             } else {
-                local_97 = false;
+                local_104 = false;
             }
-            let _e301 = local_97;
-            if _e301 {
-                let _e302 = n_1;
-                n_1 = (_e302 + 1u);
-                let _e306 = n_1;
-                let _e308 = i_18;
-                let _e310 = cuts_1[_e308];
-                g_17.edges[_e306] = _e310;
+            let _e317 = local_104;
+            if _e317 {
+                let _e318 = n_1;
+                n_1 = (_e318 + 1u);
+                let _e322 = n_1;
+                let _e324 = i_20;
+                let _e326 = cuts_2[_e324];
+                g_18.edges[_e322] = _e326;
             }
         }
         continuing {
-            let _e312 = i_18;
-            i_18 = (_e312 + 1u);
+            let _e328 = i_20;
+            i_20 = (_e328 + 1u);
         }
     }
-    let _e315 = n_1;
-    g_17.edges[(_e315 + 1u)] = _e273;
-    let _e320 = n_1;
-    g_17.panels = (_e320 + 1u);
-    let _e323 = g_17;
-    return _e323;
+    let _e331 = n_1;
+    g_18.edges[(_e331 + 1u)] = _e289;
+    let _e336 = n_1;
+    g_18.panels = (_e336 + 1u);
+    let _e339 = g_18;
+    return _e339;
 }
 
-fn airlight_in_scatter(s_17: AirlightScene) -> AirlightResult {
+fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> AirlightNode {
+    var p: AirlightScene;
+    var at_1: f32;
+    var ds: f32 = 1f;
+
+    p = s_20;
+    p.light_shape = AIRLIGHT_SHAPE_POINT;
+    p.surface_kind = AIRLIGHT_SURFACE_NONE;
+    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let i_21 = min(u32(max(floor(x_14), 0f)), (g_19.panels - 1u));
+        let t_6 = (x_14 - f32(i_21));
+        let a_23 = g_19.gamma[i_21];
+        let b_18 = g_19.gamma[(i_21 + 1u)];
+        let gamma = (a_23 + ((((b_18 - a_23) * t_6) * t_6) * ((3f - t_6) - t_6)));
+        let jacobian = ((((b_18 - a_23) * 6f) * t_6) * (1f - t_6));
+        if !((jacobian > 0f)) {
+            let _e45 = p;
+            return AirlightNode(_e45, 0f);
+        }
+        let _e48 = airlight_cos_sin_half_turn(gamma);
+        let _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
+        if !((_e53 > 0f)) {
+            let _e57 = p;
+            return AirlightNode(_e57, 0f);
+        }
+        let _e67 = airlight_cos_sin_half_turn(_e53);
+        let arc = (2f * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_19.l) + (_e48.y * g_19.u));
+        p.t_min = 0f;
+        p.t_max = 0f;
+        p.flags = 1u;
+        let _e87 = p;
+        return AirlightNode(_e87, ((((s_20.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+    }
+    if (s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        at_1 = x_14;
+        if (g_19.scale > 0f) {
+            at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
+            ds = (g_19.scale * cosh(x_14));
+        }
+        let _e115 = at_1;
+        p.light_position = (g_19.a + (_e115 * g_19.e));
+        let _e119 = p;
+        let _e120 = ds;
+        return AirlightNode(_e119, _e120);
+    }
+    let _e122 = p;
+    return AirlightNode(_e122, 1f);
+}
+
+fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4267,26 +4554,26 @@ fn airlight_in_scatter(s_17: AirlightScene) -> AirlightResult {
     var queued_lo: f32 = 0f;
     var queued_hi: f32 = 0f;
     var step_1: u32 = 0u;
-    var k_6: f32;
+    var k_7: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_98: bool;
-    var at_1: f32;
-    var ds: f32;
-    var p: AirlightScene;
+    var local_105: bool;
+    var f: f32;
     var r_4: AirlightResult;
-    var local_99: bool;
+    var local_106: bool;
+    var local_107: bool;
+    var local_108: bool;
     var split: bool;
     var tries: u32;
-    var local_100: bool;
-    var local_101: bool;
-    var local_102: bool;
+    var local_109: bool;
+    var local_110: bool;
+    var local_111: bool;
 
-    let _e1 = airlight_valid(s_17);
+    let _e1 = airlight_valid(s_21);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_segment(s_17);
+    let _e6 = airlight_outer(s_21);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4296,167 +4583,173 @@ fn airlight_in_scatter(s_17: AirlightScene) -> AirlightResult {
     let _e19 = airlight_kronrod_rule();
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
+    let evaluations = ((2u * _e6.max_panels) - 1u);
     loop {
-        let _e53 = step_1;
-        if (_e53 < AIRLIGHT_SEGMENT_EVALUATIONS) {
+        let _e58 = step_1;
+        if (_e58 < evaluations) {
         } else {
             break;
         }
         {
-            let _e56 = a_16;
-            let _e57 = b_12;
-            let c_11 = (0.5f * (_e56 + _e57));
+            let _e60 = a_16;
             let _e61 = b_12;
-            let _e62 = a_16;
-            let hw_1 = (0.5f * (_e61 - _e62));
-            k_6 = 0f;
+            let c_13 = (0.5f * (_e60 + _e61));
+            let _e65 = b_12;
+            let _e66 = a_16;
+            let hw_1 = (0.5f * (_e65 - _e66));
+            k_7 = 0f;
             gauss = 0f;
             j_4 = 0u;
             loop {
-                let _e72 = j_4;
-                if (_e72 < 7u) {
+                let _e76 = j_4;
+                if (_e76 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e75 = j_4;
-                    let node = _e19[(_e75 / 2u)];
-                    let _e85 = j_4;
-                    if ((_e85 & 1u) == 0u) {
-                        let _e92 = j_4;
-                        local_98 = (_e92 < 6u);
+                    let _e79 = j_4;
+                    let node = _e19[(_e79 / 2u)];
+                    let _e89 = j_4;
+                    if ((_e89 & 1u) == 0u) {
+                        let _e96 = j_4;
+                        local_105 = (_e96 < 6u);
                     } else {
-                        local_98 = false;
+                        local_105 = false;
                     }
-                    let _e96 = local_98;
-                    let w_5 = select((c_11 + (hw_1 * node.x)), (c_11 - (hw_1 * node.x)), _e96);
-                    at_1 = w_5;
-                    ds = 1f;
-                    if (_e6.scale > 0f) {
-                        at_1 = (_e6.s_star + (_e6.scale * sinh(w_5)));
-                        ds = (_e6.scale * cosh(w_5));
+                    let _e100 = local_105;
+                    let w_5 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
+                    let _e102 = airlight_outer_node(s_21, _e6, w_5);
+                    f = 0f;
+                    if (_e102.weight != 0f) {
+                        let p_1 = _e102.scene;
+                        r_4 = AirlightResult(0f, 0u);
+                        let _e114 = airlight_vec_finite(p_1.light_position);
+                        if _e114 {
+                            let _e118 = airlight_vec_finite(p_1.dir);
+                            local_106 = _e118;
+                        } else {
+                            local_106 = false;
+                        }
+                        let _e120 = local_106;
+                        if _e120 {
+                            let _e121 = airlight_canonical(p_1);
+                            let _e122 = airlight_refined(p_1, _e121);
+                            let _e123 = airlight_in_scatter_canonical(p_1, _e122);
+                            r_4 = _e123;
+                        }
+                        let _e125 = r_4.in_scatter;
+                        let _e126 = airlight_is_finite(_e125);
+                        if !(!(_e126)) {
+                            let _e132 = r_4.status;
+                            local_107 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                        } else {
+                            local_107 = true;
+                        }
+                        let _e136 = local_107;
+                        if _e136 {
+                            return AirlightResult(340282350000000000000000000000000000000f, 2u);
+                        }
+                        if (s_21.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_108 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        } else {
+                            local_108 = false;
+                        }
+                        let _e149 = local_108;
+                        if _e149 {
+                            let _e150 = r_4;
+                            return _e150;
+                        }
+                        let _e152 = r_4.in_scatter;
+                        f = (_e152 * _e102.weight);
                     }
-                    p = s_17;
-                    let _e115 = at_1;
-                    p.light_position = (_e6.a + (_e115 * _e6.e));
-                    p.light_shape = AIRLIGHT_SHAPE_POINT;
-                    r_4 = AirlightResult(0f, 0u);
-                    let _e126 = p.light_position;
-                    let _e127 = airlight_vec_finite(_e126);
-                    if _e127 {
-                        let _e128 = p;
-                        let _e129 = p;
-                        let _e130 = p;
-                        let _e131 = airlight_canonical(_e130);
-                        let _e132 = airlight_refined(_e129, _e131);
-                        let _e133 = airlight_in_scatter_canonical(_e128, _e132);
-                        r_4 = _e133;
-                    }
-                    let _e135 = r_4.in_scatter;
-                    let _e136 = airlight_is_finite(_e135);
-                    if !(!(_e136)) {
-                        let _e142 = r_4.status;
-                        local_99 = (_e142 == AIRLIGHT_STATUS_INFINITE);
-                    } else {
-                        local_99 = true;
-                    }
-                    let _e146 = local_99;
-                    if _e146 {
-                        return AirlightResult(340282350000000000000000000000000000000f, 2u);
-                    }
-                    if (s_17.light_shape == AIRLIGHT_SHAPE_POINT) {
-                        let _e153 = r_4;
-                        return _e153;
-                    }
-                    let _e155 = r_4.in_scatter;
-                    let _e156 = ds;
-                    let f_3 = (_e155 * _e156);
-                    let _e158 = k_6;
-                    k_6 = (_e158 + (node.y * f_3));
-                    let _e162 = gauss;
-                    gauss = (_e162 + (node.z * f_3));
+                    let _e155 = k_7;
+                    let _e157 = f;
+                    k_7 = (_e155 + (node.y * _e157));
+                    let _e160 = gauss;
+                    let _e162 = f;
+                    gauss = (_e160 + (node.z * _e162));
                 }
                 continuing {
-                    let _e167 = j_4;
-                    j_4 = (_e167 + 1u);
+                    let _e166 = j_4;
+                    j_4 = (_e166 + 1u);
                 }
             }
-            let _e169 = slot_1;
-            let _e170 = a_16;
-            let _e171 = b_12;
-            let _e172 = k_6;
-            let _e174 = k_6;
-            let _e176 = gauss;
-            airlight_list_set((&list_1), _e169, vec4<f32>(_e170, _e171, (_e172 * hw_1), abs(((_e174 * hw_1) - (_e176 * hw_1)))));
-            let _e181 = slot_1;
-            let _e182 = count_2;
-            if (_e181 == _e182) {
-                let _e184 = count_2;
-                count_2 = (_e184 + 1u);
+            let _e168 = slot_1;
+            let _e169 = a_16;
+            let _e170 = b_12;
+            let _e171 = k_7;
+            let _e173 = k_7;
+            let _e175 = gauss;
+            airlight_list_set((&list_1), _e168, vec4<f32>(_e169, _e170, (_e171 * hw_1), abs(((_e173 * hw_1) - (_e175 * hw_1)))));
+            let _e180 = slot_1;
+            let _e181 = count_2;
+            if (_e180 == _e181) {
+                let _e183 = count_2;
+                count_2 = (_e183 + 1u);
             }
-            let _e187 = count_2;
-            if (_e187 < _e6.panels) {
-                let _e191 = count_2;
-                a_16 = _e6.edges[_e191];
-                let _e194 = count_2;
-                b_12 = _e6.edges[(_e194 + 1u)];
-                let _e198 = count_2;
-                slot_1 = _e198;
+            let _e186 = count_2;
+            if (_e186 < _e6.panels) {
+                let _e190 = count_2;
+                a_16 = _e6.edges[_e190];
+                let _e193 = count_2;
+                b_12 = _e6.edges[(_e193 + 1u)];
+                let _e197 = count_2;
+                slot_1 = _e197;
             } else {
-                let _e199 = queued;
-                if _e199 {
-                    let _e200 = queued_lo;
-                    a_16 = _e200;
-                    let _e201 = queued_hi;
-                    b_12 = _e201;
-                    let _e202 = count_2;
-                    slot_1 = _e202;
+                let _e198 = queued;
+                if _e198 {
+                    let _e199 = queued_lo;
+                    a_16 = _e199;
+                    let _e200 = queued_hi;
+                    b_12 = _e200;
+                    let _e201 = count_2;
+                    slot_1 = _e201;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     loop {
-                        let _e208 = tries;
-                        if (_e208 < AIRLIGHT_SEGMENT_PANELS) {
+                        let _e207 = tries;
+                        if (_e207 < _e6.max_panels) {
                         } else {
                             break;
                         }
                         {
-                            let _e211 = list_1;
-                            let _e212 = count_2;
-                            let _e213 = airlight_list_scan(_e211, _e212);
-                            let total_4 = _e213.total;
-                            let worst_1 = _e213.worst;
-                            if !(!((_e213.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e224 = count_2;
-                                local_100 = (_e224 == AIRLIGHT_SEGMENT_PANELS);
+                            let _e210 = list_1;
+                            let _e211 = count_2;
+                            let _e212 = airlight_list_scan(_e210, _e211);
+                            let total_4 = _e212.total;
+                            let worst_1 = _e212.worst;
+                            if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
+                                let _e223 = count_2;
+                                local_109 = (_e223 == _e6.max_panels);
                             } else {
-                                local_100 = true;
+                                local_109 = true;
                             }
-                            let _e228 = local_100;
-                            if !(_e228) {
-                                let _e232 = airlight_is_finite(total_4);
-                                local_101 = !(_e232);
+                            let _e227 = local_109;
+                            if !(_e227) {
+                                let _e231 = airlight_is_finite(total_4);
+                                local_110 = !(_e231);
                             } else {
-                                local_101 = true;
+                                local_110 = true;
                             }
-                            let _e235 = local_101;
-                            if _e235 {
+                            let _e234 = local_110;
+                            if _e234 {
                                 break;
                             }
-                            let _e236 = list_1;
-                            let _e237 = airlight_list_get(_e236, worst_1);
-                            let wa_1 = _e237.x;
-                            let wb_1 = _e237.y;
+                            let _e235 = list_1;
+                            let _e236 = airlight_list_get(_e235, worst_1);
+                            let wa_1 = _e236.x;
+                            let wb_1 = _e236.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_102 = (mid_1 < wb_1);
+                                local_111 = (mid_1 < wb_1);
                             } else {
-                                local_102 = false;
+                                local_111 = false;
                             }
-                            let _e248 = local_102;
-                            if !(_e248) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e237.xyz, 0f));
+                            let _e247 = local_111;
+                            if !(_e247) {
+                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -4469,28 +4762,28 @@ fn airlight_in_scatter(s_17: AirlightScene) -> AirlightResult {
                             break;
                         }
                         continuing {
-                            let _e256 = tries;
-                            tries = (_e256 + 1u);
+                            let _e255 = tries;
+                            tries = (_e255 + 1u);
                         }
                     }
-                    let _e258 = split;
-                    if !(_e258) {
+                    let _e257 = split;
+                    if !(_e257) {
                         break;
                     }
                 }
             }
         }
         continuing {
-            let _e261 = step_1;
-            step_1 = (_e261 + 1u);
+            let _e260 = step_1;
+            step_1 = (_e260 + 1u);
         }
     }
-    let _e263 = list_1;
-    let _e264 = count_2;
-    let _e265 = airlight_list_scan(_e263, _e264);
-    let total_5 = _e265.total;
-    let _e267 = airlight_is_finite(total_5);
-    if !(_e267) {
+    let _e262 = list_1;
+    let _e263 = count_2;
+    let _e264 = airlight_list_scan(_e262, _e263);
+    let total_5 = _e264.total;
+    let _e266 = airlight_is_finite(total_5);
+    if !(_e266) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

@@ -389,3 +389,126 @@ fn eval_runs_segment_lights_on_the_gpu() {
         assert!(rel_err(got, want) <= 1e-3, "record {i}: eval --backend gpu {got}, mpmath {want}");
     }
 }
+
+/// The Lambertian surface points of tests/reference/surface.jsonl lit by omni lights (thin and
+/// thick media, grazing normals, lights close to the surface, HG g from −0.7 to 0.95): the
+/// WGSL, SPIR-V, GLSL and HLSL compute shaders at 8 and 12 nodes agree with the f32 CPU kernel
+/// computing the same method (`SurfaceScene::air_light_panels_counted` with the shaders'
+/// control and `SHADER_SURFACE_PANELS`) by the criterion of the point light, and are within
+/// 1e-4 of the nested-quadrature reference, relative to `max(|exact|, 1e-4·scale)` (the f32
+/// target of surface radiance, docs/DESIGN.md §11). Invalid surface records (a light with an
+/// axis, a NaN albedo, an unknown surface kind) give INVALID.
+#[test]
+fn lambertian_surfaces_agree_with_the_cpu_kernel() {
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    use airlight_shaders::agreement::expect_surface;
+    use airlight_shaders::layout::pack_surface;
+    let Some(gpu) = gpu() else { return };
+    let cases: Vec<_> = reference_lines("surface.jsonl")
+        .iter()
+        .filter_map(|v| match parse_any_value::<f32>(v) {
+            Ok(AnyRecord::Surface(s)) => pack_surface(&s).map(|r| (s, r, v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap(), v["category"].as_str().unwrap().to_string())),
+            other => panic!("surface.jsonl holds surface points valid in f32, not {other:?}"),
+        })
+        .collect();
+    assert!(cases.len() >= 30, "{} Lambertian records lit by omni lights", cases.len());
+    let mut records: Vec<u8> = cases.iter().flat_map(|c| c.1).collect();
+    let good = records[..RECORD_SIZE].to_vec();
+    for patch in 0..3 {
+        let mut r = good.clone();
+        match patch {
+            0 => r[88..92].copy_from_slice(&1u32.to_le_bytes()),        // a two-lobed light
+            1 => r[100..104].copy_from_slice(&f32::NAN.to_le_bytes()), // albedo not finite
+            _ => r[104..108].copy_from_slice(&7u32.to_le_bytes()),     // no such surface kind
+        }
+        records.extend_from_slice(&r);
+    }
+    let dir = default_out_dir();
+    let tmp = std::env::temp_dir().join(format!("airlight-surface-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).unwrap();
+    let mut failures = Vec::new();
+    println!("| artifact | records | max diff to f32 CPU (of scale) | max err vs reference | worst class |");
+    println!("|---|---|---|---|---|");
+    for terms in NODE_COUNTS {
+        let expected: Vec<Expected> = cases.iter().map(|c| expect_surface(&c.0, terms)).collect();
+        let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
+        let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
+        let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
+        let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
+        let shaders = [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spv, "airlight_main")), ("glsl", Shader::SpirV(&glsl, "main")), ("hlsl", Shader::SpirV(&hlsl, "airlight_main"))];
+        for (label, shader) in shaders {
+            // glslang's HLSL buffer length is in words: pad to 4× (every_artifact_agrees_with_the_cpu_kernel)
+            let mut padded = records.clone();
+            if label == "hlsl" {
+                padded.resize(records.len() * 4, 0);
+            }
+            let out = gpu.run(shader, &padded, false).unwrap();
+            let (mut worst, mut worst_ref, mut worst_class) = (0.0f64, 0.0f64, String::new());
+            for (i, (c, e)) in cases.iter().zip(&expected).enumerate() {
+                let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
+                let j = judge(e, got, status);
+                worst = worst.max(j.diff);
+                if let Some(msg) = j.problem {
+                    failures.push(format!("{label}/{terms} {} #{i}: {msg}", c.4));
+                }
+                let err = (got as f64 - c.2).abs() / c.2.max(1e-4 * c.3);
+                if err > worst_ref {
+                    (worst_ref, worst_class) = (err, c.4.clone());
+                }
+                if !(err <= 1e-4) {
+                    failures.push(format!("{label}/{terms} {} #{i}: {err:.2e} off the reference (gpu {got}, exact {})", c.4, c.2));
+                }
+            }
+            for k in 0..3 {
+                let (got, status) = unpack_result(&out[(cases.len() + k) * RESULT_SIZE..(cases.len() + k + 1) * RESULT_SIZE]);
+                if (got, status) != (0.0, STATUS_INVALID) {
+                    failures.push(format!("{label}/{terms}: invalid surface record {k} gave ({got}, {status})"));
+                }
+            }
+            println!("| {label}/{terms} | {} | {worst:.2e} | {worst_ref:.2e} | {worst_class} |", cases.len());
+        }
+    }
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// `airlight eval --backend gpu` evaluates Lambertian surface points lit by omni lights through
+/// the shader (`surface_air_light`, within 1e-4 of the reference as above) and answers a Phong
+/// record or one lit by a light with an axis with an error line naming the CPU backend.
+#[test]
+fn eval_runs_lambertian_surfaces_on_the_gpu() {
+    use airlight_codegen::eval::{run_gpu, Backend, EvalOptions};
+    if gpu().is_none() {
+        return;
+    }
+    let lines = reference_lines("surface.jsonl");
+    let mut input = String::new();
+    for (i, v) in lines.iter().enumerate() {
+        let mut r = v.clone();
+        let o = r.as_object_mut().unwrap();
+        for key in ["surface_air_light", "scale", "category"] {
+            o.remove(key);
+        }
+        o.insert("id".into(), i.into());
+        input.push_str(&format!("{r}\n"));
+    }
+    let mut out = Vec::new();
+    run_gpu(input.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
+    let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(answers.len(), lines.len());
+    let (mut on_gpu, mut refused) = (0, 0);
+    for (i, (a, v)) in answers.iter().zip(&lines).enumerate() {
+        assert_eq!(a["id"], i, "answer {i}: {a}");
+        let omni = v["light"]["distribution"]["kind"] == "isotropic";
+        if v["surface"]["brdf"]["kind"] == "lambert" && omni {
+            let got = a["surface_air_light"].as_f64().unwrap_or_else(|| panic!("answer {i}: {a}"));
+            let (want, scale) = (v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap());
+            assert!((got - want).abs() <= 1e-4 * want.max(1e-4 * scale), "record {i}: eval --backend gpu {got}, reference {want}");
+            on_gpu += 1;
+        } else {
+            let e = a["error"].as_str().unwrap_or_else(|| panic!("answer {i}: {a}"));
+            assert!(e.contains("CPU backend"), "record {i}: {e}");
+            refused += 1;
+        }
+    }
+    assert!(on_gpu >= 30 && refused >= 7, "{on_gpu} on the GPU, {refused} refused");
+}

@@ -49,6 +49,8 @@ const AIRLIGHT_LIGHT_SPOT: u32 = @LIGHT_SPOT@u;
 // Emitter shapes (record field `light_shape`).
 const AIRLIGHT_SHAPE_POINT: u32 = @SHAPE_POINT@u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = @SHAPE_SEGMENT@u;
+const AIRLIGHT_SURFACE_NONE: u32 = @SURFACE_NONE@u;
+const AIRLIGHT_SURFACE_LAMBERT: u32 = @SURFACE_LAMBERT@u;
 
 // Result status codes (codegen/shaders/src/layout.rs).
 const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
@@ -102,6 +104,11 @@ struct AirlightScene {
     phase_kind: u32,
     /// bit 0: t_max is +∞.
     flags: u32,
+    /// A surface's albedo ρ (AIRLIGHT_SURFACE_LAMBERT).
+    brdf_albedo: f32,
+    /// AIRLIGHT_SURFACE_NONE: the in-scattered radiance along the ray; AIRLIGHT_SURFACE_LAMBERT:
+    /// the air-light reflected by a Lambertian surface at `origin` with normal `dir`.
+    surface_kind: u32,
     /// A segment light's other end (its first is `light_position`).
     light_end: vec3<f32>,
     /// AIRLIGHT_SHAPE_POINT, or AIRLIGHT_SHAPE_SEGMENT: every point of `light_position →
@@ -233,7 +240,19 @@ fn airlight_two_lobe_henyey_greenstein(g1: f32, g2: f32, w: f32) -> AirlightPhas
 fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
     return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis,
         light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c,
-        light.kind, phase.kind, ray.flags, light.end, light.shape);
+        light.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, light.end, light.shape);
+}
+
+/// A Lambertian surface point (albedo `albedo`) at `position`, lit side towards `normal` (any
+/// non-zero length), in the air-light of `light` (a point light without an axis: omni): the
+/// scene whose airlight_in_scatter is the surface radiance from air-light
+/// `∫_{n·ω>0} L_a(s, ω) (ρ/π) (n·ω) dω` (kernel/src/surface.rs). Lights with an axis and
+/// Phong lobes are the CPU kernel's only (the record is invalid here).
+fn airlight_lambert_surface(position: vec3<f32>, normal: vec3<f32>, albedo: f32, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    var s = airlight_scene(airlight_ray_to_infinity(position, normal, 0.0), light, medium, phase);
+    s.brdf_albedo = albedo;
+    s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
+    return s;
 }
 
 // ---------------------------------------------------------------- complex arithmetic
@@ -1324,6 +1343,13 @@ fn airlight_valid(s: AirlightScene) -> bool {
     } else if (s.light_shape != AIRLIGHT_SHAPE_POINT) {
         ok = false;
     }
+    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        // surface.rs SurfaceScene::new; lights with an axis: the CPU kernel's only
+        ok = ok && airlight_is_finite(s.brdf_albedo) && s.brdf_albedo >= 0.0 && s.light_kind == AIRLIGHT_LIGHT_OMNI
+            && s.light_shape == AIRLIGHT_SHAPE_POINT && airlight_is_finite(airlight_safe_length(s.light_position - s.origin));
+    } else if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        ok = false;
+    }
     if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis)
             && s.light_param_a >= 0.0 && s.light_param_a <= f32(AIRLIGHT_MAX_POWER) && fract(s.light_param_a * 0.5) == 0.0;
@@ -1444,23 +1470,31 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
     return out;
 }
 
-// ---------------------------------------------------------------- extended lights
-// (kernel/src/extended.rs, SegmentScene::in_scatter_panels_counted with SHADER_CONTROL): a
-// segment light `a → b` of intensity I per unit length sheds L = ∫_0^ℓ L_point(a + s·e) ds,
-// taken in w with s = s* + (ρ*/sin α) sinh w about the emitter's closest approach to the ray's
-// line (ds/ρ = dw/sin α: the 1/ρ peak is smooth in w), split where the light's foot passes the
-// ray's ends, by globally adaptive Gauss–Kronrod 3/7 to the panels' tolerance, at most
-// AIRLIGHT_SEGMENT_PANELS panels. A point light is the first node of the same loop, so the
-// point-light integral has one call site.
+// ---------------------------------------------------------------- outer integrals
+// Every result is one loop of point-light ray integrals, by globally adaptive Gauss–Kronrod 3/7
+// to the panels' tolerance over an outer variable (kernel/src/extended.rs `adaptive`): a point
+// light is the first node of the loop, so the ray integral has one call site.
+// * A segment light (extended.rs, SegmentScene::in_scatter_panels_counted with SHADER_CONTROL)
+//   `a → b` of intensity I per unit length sheds L = ∫_0^ℓ L_point(a + s·e) ds, taken in w with
+//   s = s* + (ρ*/sin α) sinh w about the emitter's closest approach to the ray's line
+//   (ds/ρ = dw/sin α: the 1/ρ peak is smooth in w), split where the light's foot passes the ray's
+//   ends, at most AIRLIGHT_SEGMENT_PANELS panels.
+// * A Lambertian surface point (surface.rs, SurfaceScene::air_light_panels_counted with
+//   SHADER_CONTROL) lit by a light without an axis: the rays leave it at the angle γ from the
+//   light's direction ℓ, where L_a depends on γ alone, so the integral over the hemisphere is
+//   ∫_0^π L_a(γ) (ρ/π) 2(Aψ + B sin ψ) sin γ dγ (A = cos α cos γ, B = sin α sin γ, α the normal's
+//   angle from ℓ, ψ the half-arc of the hemisphere at γ), split where the arc changes kind
+//   (γ = |π/2 − α|, π − |π/2 − α|) and taken in the smoothstep of each piece, at most
+//   AIRLIGHT_SURFACE_PANELS panels.
 
-// At most this many panels (kernel SHADER_SEGMENT_PANELS), so at most 7·(2·6 − 1) = 77 point
-// lights. Mesa's lavapipe (llvmpipe) ends every loop once all loops together have run 65 535
-// iterations (gallivm LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop; as observed, over the
-// 8 lanes it runs together): at 8 panels, tubes of 98 point lights of 12 nodes reached it and
-// came out 10–43 % low there. A tube whose every point light takes many panels still can.
+// At most this many panels (kernel SHADER_SEGMENT_PANELS, SHADER_SURFACE_PANELS), so at most
+// 7·(2·6 − 1) = 77 ray integrals. Mesa's lavapipe (llvmpipe) ends every loop once all loops
+// together have run 65 535 iterations (gallivm LP_MAX_TGSI_LOOP_ITERATIONS, shared by every
+// loop; as observed, over the 8 lanes it runs together): at 8 panels, tubes of 98 point lights
+// of 12 nodes reached it and came out 10–43 % low there. A tube whose every point light takes
+// many panels still can.
 const AIRLIGHT_SEGMENT_PANELS: u32 = @SEGMENT_PANELS@u;
-// Panel evaluations: the first ones (≤ 4) and two per split, until the list is full.
-const AIRLIGHT_SEGMENT_EVALUATIONS: u32 = 2u * AIRLIGHT_SEGMENT_PANELS - 1u;
+const AIRLIGHT_SURFACE_PANELS: u32 = @SURFACE_PANELS@u;
 
 /// Gauss–Kronrod 3/7 (extended.rs GAUSS_KRONROD_7): (x ≥ 0 descending, Kronrod weight, Gauss
 /// weight or 0); the rule takes ±x.
@@ -1511,9 +1545,12 @@ fn airlight_asinh(x: f32) -> f32 {
     return select(r, -r, x < 0.0);
 }
 
-/// A segment light's outer integral: s(w) = s* + scale·sinh w (scale > 0) or w, the emitter
-/// point a + s·e, and the panel edges in w.
-struct AirlightSegment {
+/// An outer integral: a point light (one node), a segment light — s(w) = s* + scale·sinh w
+/// (scale > 0) or w, the emitter point a + s·e, the panel edges in w — or a Lambertian surface
+/// point — the frame (ℓ, u: the normal's direction across ℓ), the normal's cos α, sin α, the
+/// pieces' edges in γ; the panels' edges in x are the integers, x ∈ [i, i + 1] ↦ γ by the
+/// smoothstep of piece i.
+struct AirlightOuter {
     a: vec3<f32>,
     e: vec3<f32>,
     s_star: f32,
@@ -1521,18 +1558,117 @@ struct AirlightSegment {
     edges: array<f32, 5>,
     /// Panels between the edges (a point light: one, [0, 0]).
     panels: u32,
-    /// 0: integrate; 1: the result is 0; 2: the emitter meets the ray segment (+∞).
+    /// 0: integrate; 1: the result is 0; 2: the emitter meets the ray segment, or the light the
+    /// surface point (+∞).
     outcome: u32,
+    /// The most panels.
+    max_panels: u32,
+    l: vec3<f32>,
+    u: vec3<f32>,
+    cos_a: f32,
+    sin_a: f32,
+    gamma: array<f32, 4>,
 }
 
-fn airlight_to_w(g: AirlightSegment, s: f32) -> f32 {
+fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
     if (g.scale > 0.0) { return airlight_asinh((s - g.s_star) / g.scale); }
     return s;
 }
 
-/// The outer integral of a scene's light (extended.rs SegmentScene::integrate).
-fn airlight_segment(s: AirlightScene) -> AirlightSegment {
-    var g = AirlightSegment(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u);
+/// (cos x, sin x) for x ∈ [0, π], from cos and sin of r = x − π/2 (|r| ≤ π/2) by Taylor
+/// polynomials of degree 14 and 15 (the next terms below 7e-10), written out: no loop
+/// iterations (see AIRLIGHT_SEGMENT_PANELS).
+fn airlight_cos_sin_half_turn(x: f32) -> vec2<f32> {
+    let r = x - 1.5707963267948966;
+    let z = r * r;
+    let cos_r = 1.0 - z / 2.0 * (1.0 - z / 12.0 * (1.0 - z / 30.0 * (1.0 - z / 56.0 * (1.0 - z / 90.0 * (1.0 - z / 132.0 * (1.0 - z / 182.0))))));
+    let sin_r = r * (1.0 - z / 6.0 * (1.0 - z / 20.0 * (1.0 - z / 42.0 * (1.0 - z / 72.0 * (1.0 - z / 110.0 * (1.0 - z / 156.0 * (1.0 - z / 210.0)))))));
+    return vec2<f32>(-sin_r, cos_r);
+}
+
+/// acos x for |x| ≤ 1: 2 atan √((1 − |x|)/(1 + |x|)), reflected for x < 0 (Vulkan's acos
+/// inherits atan's 4096 ulp).
+fn airlight_acos(x: f32) -> f32 {
+    let a = abs(x);
+    let half = airlight_atan(sqrt((1.0 - a) / (1.0 + a)));
+    return select(half + half, AIRLIGHT_PI - half - half, x < 0.0);
+}
+
+/// The angle α ∈ [0, π] with (cos α, sin α) ∝ (c, s), s ≥ 0 (atan2 by airlight_atan).
+fn airlight_angle(c: f32, s: f32) -> f32 {
+    if (s <= c) { return airlight_atan(s / c); }
+    if (s <= -c) { return AIRLIGHT_PI - airlight_atan(s / -c); }
+    if (c >= 0.0) { return 0.5 * AIRLIGHT_PI - airlight_atan(c / s); }
+    return 0.5 * AIRLIGHT_PI + airlight_atan(-c / s);
+}
+
+/// The half-arc ψ ∈ [0, π] of the hemisphere about a direction at α from ℓ, at γ: where
+/// cos α cos γ + sin α sin γ cos(φ − φ_α) > 0 (surface.rs half_arc).
+fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
+    let a = cos_a * cos_g;
+    let b = sin_a * sin_g;
+    if (b <= abs(a)) { return select(0.0, AIRLIGHT_PI, a > 0.0); }
+    return airlight_acos(clamp(-a / b, -1.0, 1.0));
+}
+
+/// A Lambertian surface point's outer integral (surface.rs SurfaceScene::integrate).
+fn airlight_surface(s: AirlightScene) -> AirlightOuter {
+    var g = AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
+        AIRLIGHT_SURFACE_PANELS, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
+    let to_light = s.light_position - s.origin;
+    let d = airlight_safe_length(to_light);
+    if (s.intensity == 0.0 || s.sigma_s == 0.0) {
+        g.outcome = 1u;
+        return g;
+    }
+    if (!(d > 0.0)) {
+        g.outcome = 2u;
+        return g;
+    }
+    if (s.brdf_albedo == 0.0) {
+        g.outcome = 1u;
+        return g;
+    }
+    let l = to_light / d;
+    let n = airlight_normalize(s.dir);
+    let cos_a = dot(n, l);
+    let across = n - cos_a * l;
+    let sin_a = airlight_safe_length(across);
+    // the normal's direction across ℓ; any where the normal is ℓ (L_a depends on γ alone)
+    var u = across / sin_a;
+    if (!(sin_a > 0.0)) {
+        let pick = select(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(0.0, 1.0, 0.0), abs(l.x) > 0.7);
+        u = airlight_normalize(pick - dot(pick, l) * l);
+    }
+    g.l = l;
+    g.u = u;
+    g.cos_a = cos_a;
+    g.sin_a = sin_a;
+    // the pieces: where the arc changes kind, |π/2 − α| and π − |π/2 − α|
+    let first = abs(0.5 * AIRLIGHT_PI - airlight_angle(cos_a, sin_a));
+    var cuts = array<f32, 2>(first, AIRLIGHT_PI - first);
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    var k = 0u;
+    for (var i = 0u; i < 2u; i++) {
+        if (cuts[i] > g.gamma[k] && cuts[i] < AIRLIGHT_PI) {
+            k += 1u;
+            g.gamma[k] = cuts[i];
+        }
+    }
+    g.gamma[k + 1u] = AIRLIGHT_PI;
+    g.panels = k + 1u;
+    for (var i = 0u; i <= g.panels; i++) { g.edges[i] = f32(i); }
+    return g;
+}
+
+/// The outer integral of a scene: a surface point's, a segment light's (extended.rs
+/// SegmentScene::integrate) or a point light's.
+fn airlight_outer(s: AirlightScene) -> AirlightOuter {
+    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        return airlight_surface(s);
+    }
+    var g = AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
+        AIRLIGHT_SEGMENT_PANELS, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
     if (s.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         return g;
     }
@@ -1600,13 +1736,59 @@ fn airlight_segment(s: AirlightScene) -> AirlightSegment {
     return g;
 }
 
-/// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library.
+/// One node of an outer integral: the point-light ray it evaluates and the weight of its
+/// value; at weight 0 the node adds nothing and its ray is not evaluated (as the kernel's).
+struct AirlightNode {
+    scene: AirlightScene,
+    weight: f32,
+}
+
+/// The node at `x` of the outer integral `g` of `s`.
+fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNode {
+    var p = s;
+    p.light_shape = AIRLIGHT_SHAPE_POINT;
+    p.surface_kind = AIRLIGHT_SURFACE_NONE;
+    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        // piece i: γ = a + (b − a)(3t² − 2t³), t = x − i (surface.rs `mapped`)
+        let i = min(u32(max(floor(x), 0.0)), g.panels - 1u);
+        let t = x - f32(i);
+        let a = g.gamma[i];
+        let b = g.gamma[i + 1u];
+        let gamma = a + (b - a) * t * t * (3.0 - t - t);
+        let jacobian = (b - a) * 6.0 * t * (1.0 - t);
+        if (!(jacobian > 0.0)) { return AirlightNode(p, 0.0); }
+        let cs = airlight_cos_sin_half_turn(gamma);
+        let psi = airlight_half_arc(g.cos_a, g.sin_a, cs.x, cs.y);
+        if (!(psi > 0.0)) { return AirlightNode(p, 0.0); }
+        // ∫ (A + B cos x)⁺ over the arc = 2(Aψ + B sin ψ)
+        let arc = 2.0 * (g.cos_a * cs.x * psi + g.sin_a * cs.y * airlight_cos_sin_half_turn(psi).y);
+        p.dir = cs.x * g.l + cs.y * g.u;
+        p.t_min = 0.0;
+        p.t_max = 0.0;
+        p.flags = 1u;
+        return AirlightNode(p, s.brdf_albedo * (1.0 / AIRLIGHT_PI) * arc * cs.y * jacobian);
+    }
+    if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        var at = x;
+        var ds = 1.0;
+        if (g.scale > 0.0) {
+            at = g.s_star + g.scale * sinh(x);
+            ds = g.scale * cosh(x);
+        }
+        p.light_position = g.a + at * g.e;
+        return AirlightNode(p, ds);
+    }
+    return AirlightNode(p, 1.0);
+}
+
+/// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library;
+/// for a surface scene (airlight_lambert_surface), the surface radiance from air-light.
 /// Invalid scenes give (0, INVALID); a light on the segment gives (FLT_MAX, INFINITE).
 fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s)) {
         return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
     }
-    let g = airlight_segment(s);
+    let g = airlight_outer(s);
     if (g.outcome == 1u) {
         return AirlightResult(0.0, AIRLIGHT_STATUS_OK);
     }
@@ -1625,7 +1807,9 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     var queued = false;
     var queued_lo = 0.0;
     var queued_hi = 0.0;
-    for (var step = 0u; step < AIRLIGHT_SEGMENT_EVALUATIONS; step++) {
+    // the first panels (≤ 4) and two per split, until the list is full
+    let evaluations = 2u * g.max_panels - 1u;
+    for (var step = 0u; step < evaluations; step++) {
         let c = 0.5 * (a + b);
         let hw = 0.5 * (b - a);
         var k = 0.0;
@@ -1633,27 +1817,23 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
         for (var j = 0u; j < 7u; j++) {
             let node = rule[j / 2u];
             let w = select(c + hw * node.x, c - hw * node.x, (j & 1u) == 0u && j < 6u);
-            var at = w;
-            var ds = 1.0;
-            if (g.scale > 0.0) {
-                at = g.s_star + g.scale * sinh(w);
-                ds = g.scale * cosh(w);
+            let at = airlight_outer_node(s, g, w);
+            var f = 0.0;
+            if (at.weight != 0.0) {
+                let p = at.scene;
+                var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
+                if (airlight_vec_finite(p.light_position) && airlight_vec_finite(p.dir)) {
+                    r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
+                }
+                // a point light, or a node on the ray (the kernel's sum is then +∞ at once)
+                if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
+                    return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+                }
+                if (s.light_shape == AIRLIGHT_SHAPE_POINT && s.surface_kind == AIRLIGHT_SURFACE_NONE) {
+                    return r;
+                }
+                f = r.in_scatter * at.weight;
             }
-            var p = s;
-            p.light_position = g.a + at * g.e;
-            p.light_shape = AIRLIGHT_SHAPE_POINT;
-            var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
-            if (airlight_vec_finite(p.light_position)) {
-                r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
-            }
-            // a point light, or a node on the ray (the kernel's sum is then +∞ at once)
-            if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
-                return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
-            }
-            if (s.light_shape == AIRLIGHT_SHAPE_POINT) {
-                return r;
-            }
-            let f = r.in_scatter * ds;
             k += node.y * f;
             gauss += node.z * f;
         }
@@ -1671,11 +1851,11 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
             queued = false;
         } else {
             var split = false;
-            for (var tries = 0u; tries < AIRLIGHT_SEGMENT_PANELS; tries++) {
+            for (var tries = 0u; tries < g.max_panels; tries++) {
                 let scan = airlight_list_scan(list, count);
                 let total = scan.total;
                 let worst = scan.worst;
-                if (!(scan.errors > tolerance * abs(total)) || count == AIRLIGHT_SEGMENT_PANELS || !airlight_is_finite(total)) {
+                if (!(scan.errors > tolerance * abs(total)) || count == g.max_panels || !airlight_is_finite(total)) {
                     break;
                 }
                 let w = airlight_list_get(list, worst);

@@ -58,7 +58,7 @@ use crate::layout::{STATUS_INFINITE, STATUS_INVALID, STATUS_OK};
 use airlight::record::SceneRecord;
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{PhaseFunction, PointLight, Scene, SegmentLight, SegmentScene};
+use airlight::{PhaseFunction, PointLight, Ray, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 
 /// Relative allowance (of scale) for the built-ins' accuracy (module docs).
 pub const ALLOWANCE: f64 = 2e-4;
@@ -245,6 +245,73 @@ pub fn expect_segment(scene: &SegmentRecord<f32>, terms: usize) -> Expected {
     let noise = if same.is_finite() { worst + e_n } else { 0.0 };
     let iso_light = SegmentLight { distribution: AnyDistribution::Omni, ..light };
     let iso = SegmentScene::new(rec.ray, iso_light, rec.medium, AnyPhase::Isotropic).map(|s| segment_in_scatter(&s, terms)).unwrap_or(0.0);
+    let p_max = [-1.0f64, 1.0].iter().map(|&mu| rec.phase.eval(mu)).fold(0.0, f64::max);
+    let scale = (iso * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
+    Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
+}
+
+/// A surface point's scene in the record types.
+pub type SurfaceRecord<T> = SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>;
+
+/// What the shader computes for a Lambertian surface point, on the CPU
+/// ([`SurfaceScene::air_light_panels_counted`] with the shaders' control and
+/// [`airlight::SHADER_SURFACE_PANELS`]).
+fn surface_air_light<T: airlight::Real>(scene: &SurfaceRecord<T>, terms: usize) -> T {
+    let control = shader_control();
+    let panels = airlight::SHADER_SURFACE_PANELS;
+    match terms {
+        8 => scene.air_light_panels_counted::<8>(control, panels).0,
+        12 => scene.air_light_panels_counted::<12>(control, panels).0,
+        _ => panic!("the shaders are emitted with 8 or 12 nodes per panel, not {terms}"),
+    }
+}
+
+/// The surface point as a ray record (origin: the point, direction: the normal, to infinity):
+/// the inputs [`perturbed`] moves.
+fn as_ray_record(scene: &SurfaceRecord<f32>) -> SceneRecord<f32> {
+    let s = scene.surface();
+    SceneRecord { ray: Ray { origin: s.position, dir: s.normal, t_min: 0.0, t_max: f32::INFINITY }, light: *scene.light(), medium: *scene.medium(), phase: *scene.phase() }
+}
+
+/// The surface scene of a ray record (as [`as_ray_record`] makes) with `scene`'s BRDF, in `T`.
+fn from_ray_record<T: airlight::Real>(rec: &SceneRecord<T>, brdf: airlight::Brdf<T>) -> Option<SurfaceRecord<T>> {
+    SurfaceScene::new(Surface { position: rec.ray.origin, normal: rec.ray.dir }, brdf, rec.light, rec.medium, rec.phase).ok()
+}
+
+/// The CPU's expectation for a Lambertian surface point lit by a light without an axis from the
+/// shader with `terms` nodes per panel, by the same criterion as [`expect`]: the noise over
+/// the record and its one-ulp perturbations of the point, the normal, the light, `σt` and the
+/// phase function, plus the error of the same method in f64 against the default `air_light`
+/// (error-controlled to 1e-10); the scale is the value with isotropic scattering times
+/// `4π·max P`, at least the value.
+pub fn expect_surface(scene: &SurfaceRecord<f32>, terms: usize) -> Expected {
+    let v = surface_air_light(scene, terms);
+    let airlight::Brdf::Lambert { albedo } = *scene.brdf() else {
+        panic!("the shaders' surfaces are Lambertian");
+    };
+    let brdf = airlight::Brdf::Lambert { albedo: albedo as f64 };
+    let rec = as_ray_record(scene).cast::<f64>();
+    let Some(wide) = from_ray_record(&rec, brdf) else {
+        return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
+    };
+    let same = surface_air_light(&wide, terms);
+    if v.is_infinite() {
+        return Expected { value: f32::MAX, status: STATUS_INFINITE, f64_value: same, noise: 0.0, scale: 0.0 };
+    }
+    let e_n = (same - wide.air_light()).abs();
+    let mut worst = (v as f64 - same).abs();
+    // t_min and t_max (0 and ∞) are not inputs of a surface point
+    for k in 3..PERTURBATIONS {
+        let q = perturbed(&as_ray_record(scene), k);
+        if let Some(x) = from_ray_record(&q, *scene.brdf()).map(|q| surface_air_light(&q, terms)) {
+            if x.is_finite() {
+                worst = worst.max((x as f64 - same).abs());
+            }
+        }
+    }
+    let noise = if same.is_finite() { worst + e_n } else { 0.0 };
+    let iso = SceneRecord { phase: AnyPhase::Isotropic, ..rec };
+    let iso = from_ray_record(&iso, brdf).map(|s| surface_air_light(&s, terms)).unwrap_or(0.0);
     let p_max = [-1.0f64, 1.0].iter().map(|&mu| rec.phase.eval(mu)).fold(0.0, f64::max);
     let scale = (iso * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
     Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }

@@ -6,7 +6,7 @@
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{Medium, PointLight, Ray, SegmentScene};
+use airlight::{Brdf, Medium, PointLight, Ray, SegmentScene, SurfaceScene};
 
 /// Bytes per input record.
 pub const RECORD_SIZE: usize = 128;
@@ -33,6 +33,12 @@ pub const SHAPE_POINT: u32 = 0;
 /// `light_shape` of a segment light `light_position → light_end`, `intensity` per unit length
 /// ([`airlight::SegmentLight`]).
 pub const SHAPE_SEGMENT: u32 = 1;
+/// `surface_kind` of a ray record: the in-scattered radiance along the ray.
+pub const SURFACE_NONE: u32 = 0;
+/// `surface_kind` of a Lambertian surface point (`origin`, normal `dir`, albedo
+/// `brdf_albedo`) lit by a light without an axis: its surface radiance from air-light
+/// ([`airlight::SurfaceScene::air_light`]).
+pub const SURFACE_LAMBERT: u32 = 1;
 /// `phase_kind` of isotropic scattering.
 pub const PHASE_ISOTROPIC: u32 = 0;
 /// `phase_kind` of Rayleigh scattering.
@@ -89,8 +95,12 @@ pub struct Record {
     pub phase_kind: u32,
     /// Bit 0: `t_max = +∞`.
     pub flags: u32,
+    /// A surface's albedo (`SURFACE_LAMBERT`).
+    pub brdf_albedo: f32,
+    /// `SURFACE_*`.
+    pub surface_kind: u32,
     /// Up to `light_end`'s 16-byte alignment.
-    pub padding: [u32; 3],
+    pub padding: u32,
     /// A segment light's other end.
     pub light_end: [f32; 3],
     /// `SHAPE_*`.
@@ -118,6 +128,21 @@ impl Record {
         let l = scene.light();
         let light = PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution };
         Self::with_shape(scene.ray(), &light, scene.medium(), scene.phase(), SHAPE_SEGMENT, l.b.to_array())
+    }
+
+    /// The record of a Lambertian surface point lit by a light without an axis (the shaders'
+    /// surfaces); `None` for a Phong lobe or a light with an axis.
+    pub fn surface(scene: &SurfaceScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> Option<Self> {
+        let Brdf::Lambert { albedo } = *scene.brdf() else { return None };
+        if !matches!(scene.light().distribution, AnyDistribution::Omni) {
+            return None;
+        }
+        let s = scene.surface();
+        let ray = Ray { origin: s.position, dir: s.normal, t_min: 0.0, t_max: f32::INFINITY };
+        let mut record = Self::with_shape(&ray, scene.light(), scene.medium(), scene.phase(), SHAPE_POINT, scene.light().position.to_array());
+        record.brdf_albedo = albedo;
+        record.surface_kind = SURFACE_LAMBERT;
+        Some(record)
     }
 
     fn with_shape(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>, light_shape: u32, light_end: [f32; 3]) -> Self {
@@ -153,7 +178,9 @@ impl Record {
             light_kind,
             phase_kind,
             flags: infinite as u32,
-            padding: [0; 3],
+            brdf_albedo: 0.0,
+            surface_kind: SURFACE_NONE,
+            padding: 0,
             light_end,
             light_shape,
         }
@@ -175,6 +202,12 @@ pub fn pack_segment(scene: &SegmentScene<f32, AnyDistribution<f32>, AnyPhase<f32
     bytemuck::cast(Record::segment(scene))
 }
 
+/// Packs a Lambertian surface point lit by a light without an axis into its record (`None`
+/// otherwise: the shaders have no other surfaces).
+pub fn pack_surface(scene: &SurfaceScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> Option<[u8; RECORD_SIZE]> {
+    Record::surface(scene).map(bytemuck::cast)
+}
+
 /// Reads one result: `(in_scatter, status)`.
 pub fn unpack_result(bytes: &[u8]) -> (f32, u32) {
     let r: GpuResult = bytemuck::pod_read_unaligned(&bytes[..RESULT_SIZE]);
@@ -193,7 +226,7 @@ mod tests {
         let (module, _) = crate::targets::validate(&crate::targets::source(4, true)).unwrap();
         let mut layouter = naga::proc::Layouter::default();
         layouter.update(module.to_ctx()).unwrap();
-        let rust: [(&str, usize); 19] = [
+        let rust: [(&str, usize); 21] = [
             ("origin", core::mem::offset_of!(Record, origin)),
             ("t_min", core::mem::offset_of!(Record, t_min)),
             ("dir", core::mem::offset_of!(Record, dir)),
@@ -211,6 +244,8 @@ mod tests {
             ("light_kind", core::mem::offset_of!(Record, light_kind)),
             ("phase_kind", core::mem::offset_of!(Record, phase_kind)),
             ("flags", core::mem::offset_of!(Record, flags)),
+            ("brdf_albedo", core::mem::offset_of!(Record, brdf_albedo)),
+            ("surface_kind", core::mem::offset_of!(Record, surface_kind)),
             ("light_end", core::mem::offset_of!(Record, light_end)),
             ("light_shape", core::mem::offset_of!(Record, light_shape)),
         ];

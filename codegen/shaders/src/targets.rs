@@ -31,7 +31,7 @@ const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
     let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
 }
 ";
 
@@ -40,7 +40,7 @@ const LIBRARY_STUB_ES: &str = "
 @fragment
 fn airlight_library_entry() -> @location(0) vec4<f32> {
     let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
     return vec4<f32>(r.in_scatter);
 }
 ";
@@ -168,6 +168,7 @@ impl Constants {
             .map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w)))
             .collect();
         let max_power = airlight::light::TwoLobed::<f32>::MAX_POWER;
+        let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS);
         let fills = vec![
             ("@TERMS@", terms.to_string()),
             ("@HALF_TERMS@", (terms / 2).to_string()),
@@ -215,12 +216,16 @@ impl Constants {
             ("@LIGHT_SPOT@", l::LIGHT_SPOT.to_string()),
             ("@SHAPE_POINT@", l::SHAPE_POINT.to_string()),
             ("@SHAPE_SEGMENT@", l::SHAPE_SEGMENT.to_string()),
+            ("@SURFACE_NONE@", l::SURFACE_NONE.to_string()),
+            ("@SURFACE_LAMBERT@", l::SURFACE_LAMBERT.to_string()),
             ("@SEGMENT_PANELS@", airlight::SHADER_SEGMENT_PANELS.to_string()),
-            ("@ZEROS_SEGMENT_LIST@", list(vec!["vec4<f32>(0.0)".to_string(); airlight::SHADER_SEGMENT_PANELS])),
-            ("@SEGMENT_LIST_FIELDS@", unrolled::list_fields(airlight::SHADER_SEGMENT_PANELS)),
-            ("@SEGMENT_LIST_GET@", unrolled::list_get(airlight::SHADER_SEGMENT_PANELS)),
-            ("@SEGMENT_LIST_SET@", unrolled::list_set(airlight::SHADER_SEGMENT_PANELS)),
-            ("@SEGMENT_LIST_SCAN@", unrolled::list_scan(airlight::SHADER_SEGMENT_PANELS)),
+            ("@SURFACE_PANELS@", airlight::SHADER_SURFACE_PANELS.to_string()),
+            // one panel list serves both outer integrals
+            ("@ZEROS_SEGMENT_LIST@", list(vec!["vec4<f32>(0.0)".to_string(); outer_list])),
+            ("@SEGMENT_LIST_FIELDS@", unrolled::list_fields(outer_list)),
+            ("@SEGMENT_LIST_GET@", unrolled::list_get(outer_list)),
+            ("@SEGMENT_LIST_SET@", unrolled::list_set(outer_list)),
+            ("@SEGMENT_LIST_SCAN@", unrolled::list_scan(outer_list)),
             (
                 "@KRONROD_RULE@",
                 list(airlight::extended::GAUSS_KRONROD_7.iter().map(|&(x, k, g)| format!("vec3<f32>({}, {}, {})", f(x), f(k), f(g))).collect()),
