@@ -74,7 +74,7 @@ the eye, the in-scattered radiance of every ray from the point over its hemisphe
 const RENDER_ABOUT: &str = "\
 Render the pictures to PNG: a lighthouse with a two-lobed beam in thick brume, a foggy road with
 headlights and a streetlamp, a stage under three coloured spotlights, a park bench in Rayleigh
-mist. Writes DIR/<scene>_<backend>.png per backend — cpu (the f64 kernel's default path), gpu
+mist, a street with a fluorescent tube and walls lit by the fog. Writes DIR/<scene>_<backend>.png per backend — cpu (the f64 kernel's default path), gpu
 (the committed WGSL compute shader through wgpu, f32, 8 nodes per panel), reference
 (brute-force adaptive quadrature of the integral, no closed forms) — and, with the reference,
 error heat maps DIR/<scene>_error.png (cpu) and DIR/<scene>_error_gpu.png (shader): per-pixel
@@ -174,8 +174,8 @@ enum RenderBackend {
 
 #[derive(clap::Args)]
 struct RenderArgs {
-    /// lighthouse, road, stage, bench or all.
-    #[arg(long, default_value = "all", value_parser = ["lighthouse", "road", "stage", "bench", "all"])]
+    /// lighthouse, road, stage, bench, street or all.
+    #[arg(long, default_value = "all", value_parser = ["lighthouse", "road", "stage", "bench", "street", "all"])]
     scene: String,
     /// Image size in pixels, WxH (1..8192 each).
     #[arg(long, default_value = "480x270", value_parser = parse_size)]

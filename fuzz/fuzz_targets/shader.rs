@@ -6,13 +6,19 @@
 //! and `airlight verify` use): statuses equal, no NaN or Inf, values within
 //! `9·noise + 2e-4·scale` — for records in its domain of agreement (input magnitudes in
 //! `[2^-40, 2^40]`); outside it, where Vulkan's denormal flushing may change the geometry,
-//! the result must be defined: same validity, finite, non-negative. Built without a sanitizer (`-s none`: the driver is not
+//! the result must be defined: same validity, finite, non-negative. Each scene also gives a
+//! segment light (from the light to the light plus the raw axis vector) and, with an omni light,
+//! a Lambertian surface point (at the ray's origin, facing its direction): run in a dispatch of
+//! their own and judged as defined only — their outer loops of up to 77 ray integrals can reach
+//! lavapipe's limit on loop iterations (codegen/shaders/shader/airlight.wgsl), which ends loops
+//! early, so their values are the agreement tests' to judge. Built without a sanitizer (`-s none`: the driver is not
 //! instrumented and wgpu under ASan is slow); `scripts/fuzz.sh` does that.
 #![no_main]
 use airlight::glam::Vec3;
-use airlight_shaders::agreement::{expect, in_domain, judge, judge_defined};
+use airlight_shaders::agreement::{expect, in_domain, judge, judge_defined, Expected};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
-use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE};
+use airlight::{Brdf, SegmentLight, SegmentScene, Surface, SurfaceScene};
+use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, Record, RESULT_SIZE, STATUS_INVALID, STATUS_OK, SURFACE_LAMBERT};
 use airlight::record::SceneRecord;
 use libfuzzer_sys::fuzz_target;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -39,6 +45,8 @@ fn pipeline() -> &'static Prepared<'static> {
 /// (printed every 10 000).
 static SCENES: AtomicUsize = AtomicUsize::new(0);
 static IN_DOMAIN: AtomicUsize = AtomicUsize::new(0);
+/// Segment lights and surface points executed so far.
+static OUTER: AtomicUsize = AtomicUsize::new(0);
 
 fuzz_target!(|batch: Batch| {
     let mut records = Vec::new();
@@ -66,9 +74,49 @@ fuzz_target!(|batch: Batch| {
             panic!("CPU and shader disagree: {problem} for {rec:?}");
         }
     }
+    // the outer integrals: (record, the CPU accepts it, what it is)
+    let mut outer: Vec<([u8; 128], bool, String)> = Vec::new();
+    for (raw, rec) in batch.0.iter().zip(&scenes) {
+        let l = rec.light;
+        let tube = SegmentLight { a: l.position, b: l.position + Vec3::new(raw.axis[0] as f32, raw.axis[1] as f32, raw.axis[2] as f32), intensity: l.intensity, distribution: l.distribution };
+        match SegmentScene::new(rec.ray, tube, rec.medium, rec.phase) {
+            Ok(s) => outer.push((pack_segment(&s), true, format!("{s:?}"))),
+            Err(_) => {
+                let mut r = Record::new(&rec.ray, &l, &rec.medium, &rec.phase);
+                r.light_end = tube.b.to_array();
+                r.light_shape = airlight_shaders::layout::SHAPE_SEGMENT;
+                outer.push((r.bytes(), false, format!("invalid segment light {tube:?} for {rec:?}")));
+            }
+        }
+        if matches!(l.distribution, airlight::light::AnyDistribution::Omni) {
+            let albedo = raw.w as f32;
+            let surface = Surface { position: rec.ray.origin, normal: rec.ray.dir };
+            match SurfaceScene::new(surface, Brdf::Lambert { albedo }, l, rec.medium, rec.phase) {
+                Ok(s) => outer.push((pack_surface(&s).expect("a Lambertian surface lit by an omni light packs"), true, format!("{s:?}"))),
+                Err(_) => {
+                    let ray = airlight::Ray { origin: surface.position, dir: surface.normal, t_min: 0.0, t_max: f32::INFINITY };
+                    let mut r = Record::new(&ray, &l, &rec.medium, &rec.phase);
+                    r.brdf_albedo = albedo;
+                    r.surface_kind = SURFACE_LAMBERT;
+                    outer.push((r.bytes(), false, format!("invalid surface {surface:?} albedo {albedo} for {rec:?}")));
+                }
+            }
+        }
+    }
+    let bytes: Vec<u8> = outer.iter().flat_map(|o| o.0).collect();
+    let out = pipeline().run(&bytes, false).expect("dispatch failed");
+    for (i, (_, valid, what)) in outer.iter().enumerate() {
+        let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
+        let e = Expected { value: 0.0, status: if *valid { STATUS_OK } else { STATUS_INVALID }, f64_value: 0.0, noise: 0.0, scale: 0.0 };
+        if let Some(problem) = judge_defined(&e, got, status).problem {
+            panic!("shader result not defined: {problem} for {what}");
+        }
+    }
+    OUTER.fetch_add(outer.len(), Ordering::Relaxed);
     let before = SCENES.fetch_add(scenes.len(), Ordering::Relaxed);
     if (before + scenes.len()) / 10_000 > before / 10_000 {
         let judged = IN_DOMAIN.load(Ordering::Relaxed);
-        eprintln!("shader target: {} scenes executed on the adapter, {judged} in the domain of agreement", before + scenes.len());
+        let outer = OUTER.load(Ordering::Relaxed);
+        eprintln!("shader target: {} scenes executed on the adapter, {judged} in the domain of agreement; {outer} segment lights and surface points", before + scenes.len());
     }
 });

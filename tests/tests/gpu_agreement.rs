@@ -512,3 +512,21 @@ fn eval_runs_lambertian_surfaces_on_the_gpu() {
     }
     assert!(on_gpu >= 30 && refused >= 7, "{on_gpu} on the GPU, {refused} refused");
 }
+
+/// `airlight render`'s street (a fluorescent tube, an omni lamp whose air-light reaches every
+/// surface) through the shader at 48×27: every pixel within 1e-3 — the shaders' accuracy
+/// target — of the brute-force reference, relative to `max(reference, error floor)` (the
+/// render's per-pixel measure, `render::relative_errors`).
+#[test]
+fn street_renders_through_the_shader() {
+    use airlight_codegen::render;
+    let Some(gpu) = gpu() else { return };
+    let scene = render::street(48, 27);
+    let shader = gpu.prepare(Shader::Wgsl(airlight_shaders::targets::compute_wgsl(airlight::SHADER_NODES)));
+    let image = render::render_gpu(&scene, &shader, false).unwrap();
+    let reference = render::render_reference(&scene, false);
+    let errors = render::relative_errors(&image, &reference, render::error_floor(&scene));
+    let stats = render::error_stats(&errors);
+    println!("street through the shader: relative error max {:.2e}, median {:.2e}", stats.max, stats.median);
+    assert!(stats.max <= 1e-3, "street: shader pixel {:.3e} off the reference", stats.max);
+}

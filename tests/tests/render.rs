@@ -1,6 +1,7 @@
-//! `airlight render`: the four scenes at 48×27 on the CPU kernel (f64, its default
-//! error-controlled path) against the brute-force reference (adaptive Gauss–Kronrod quadrature
-//! of the contract integral in `u = atan((t − x_h)/h)`, no closed forms).
+//! `airlight render`: the five scenes at 48×27 on the CPU kernel (f64, its default
+//! error-controlled paths) against the brute-force reference (adaptive Gauss–Kronrod quadrature
+//! of the contract integral in `u = atan((t − x_h)/h)`, no closed forms; a tube's integrated
+//! over it, a fog-lit surface's over its hemisphere).
 //!
 //! ## The bounds
 //! The reference stops at a summed `|K15 − G7|` estimate of 1e-9 of the integral; a 1e-11 run
@@ -15,17 +16,20 @@
 //!    any pixel): `max_c |kernel − ref| ≤ ε·B`, the same `ε` — the image-level claim.
 //!
 //! Measured (48×27): of the pixel scale, max 1.3e-9 (road), 7.5e-10 (stage), 4.0e-11 (bench),
-//! 5.9e-14 (lighthouse) — the reference's own convergence, not the kernel's error. The f32
+//! 3.0e-12 (street), 5.9e-14 (lighthouse) — the reference's own convergence, not the kernel's
+//! error. The f32
 //! shader is not tested here (no GPU test in this file; `tests/gpu_agreement.rs` covers it).
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{PhaseFunction, PointLight, Ray, Scene};
+use airlight::{Brdf, PhaseFunction, PointLight, Ray, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use airlight_codegen::render::{self, Image, SceneDesc};
 
 /// Per pixel: `Σ_lights colour · S`, `S` the integrand's scale of the pixel's segment —
 /// `L_m` with `D·P` replaced by its maximum `max P` (`D ≤ 1`), i.e. the isotropic integral
-/// (computed by the kernel's model-exact isotropic path, 1e-13 accurate) × `4π·max P`.
+/// (computed by the kernel's model-exact isotropic path, 1e-13 accurate; a tube's by its
+/// default path, 1e-10) × `4π·max P` — plus, on a fog-lit surface, its air-light in isotropic
+/// fog × `4π·max P` × the albedo.
 fn scales(scene: &SceneDesc) -> Vec<[f64; 3]> {
     let p_max = PhaseFunction::<f64>::eval(&scene.phase, 1.0).max(PhaseFunction::<f64>::eval(&scene.phase, -1.0));
     let mut out = Vec::new();
@@ -36,9 +40,20 @@ fn scales(scene: &SceneDesc) -> Vec<[f64; 3]> {
             for l in &scene.lights {
                 let ray = Ray { origin: scene.camera.position, dir: d, t_min: 0.0, t_max: hit.t };
                 let iso = PointLight { position: l.light.position, intensity: l.light.intensity, distribution: AnyDistribution::Omni };
-                let s = Scene::new(ray, iso, scene.medium, AnyPhase::Isotropic).unwrap().in_scatter() * 4.0 * std::f64::consts::PI * p_max;
+                let glow = match l.tube() {
+                    Some(tube) => SegmentScene::new(ray, SegmentLight { distribution: AnyDistribution::Omni, ..tube }, scene.medium, AnyPhase::Isotropic).unwrap().in_scatter(),
+                    None => Scene::new(ray, iso, scene.medium, AnyPhase::Isotropic).unwrap().in_scatter(),
+                };
+                // a fog-lit surface: its air-light in isotropic fog
+                let air = if hit.t.is_finite() && scene.lights_surfaces(l) {
+                    let surface = Surface { position: scene.camera.position + d * hit.t, normal: hit.normal };
+                    let s = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, iso, scene.medium, AnyPhase::Isotropic).unwrap();
+                    (-scene.medium.sigma_t * hit.t).exp() * s.air_light()
+                } else {
+                    0.0
+                };
                 for c in 0..3 {
-                    px[c] += l.color[c] * s;
+                    px[c] += l.color[c] * (glow + hit.albedo[c] * air) * 4.0 * std::f64::consts::PI * p_max;
                 }
             }
             out.push(px);
@@ -117,12 +132,18 @@ fn stage() {
 }
 
 #[test]
+fn street() {
+    check(render::street(48, 27));
+}
+
+#[test]
 fn bench() {
     check(render::bench(48, 27));
 }
 
 /// The premise that the reference is converged: on every 5th pixel of each scene, the
-/// quadrature at `REFERENCE_TOL` and at 1e-11 agree to 1e-7 relatively (of the larger value;
+/// quadrature at `REFERENCE_TOL` and at 1e-11 — of the glow and of a fog-lit surface's
+/// air-light — agree to 1e-7 relatively (of the larger value;
 /// segments where both are 0 — a spot that the ray never crosses — count as equal).
 #[test]
 fn reference_is_converged() {
@@ -132,11 +153,18 @@ fn reference_is_converged() {
         for i in (0..48 * 27).step_by(5) {
             let (d, hit) = scene.primary(i % 48, i / 48);
             for l in &scene.lights {
-                let q = |tol| render::reference_in_scatter(scene.camera.position, d, 0.0, hit.t, &l.light, &scene.medium, &scene.phase, tol);
+                let q = |tol| l.over_emitter(tol, |point| render::reference_in_scatter(scene.camera.position, d, 0.0, hit.t, point, &scene.medium, &scene.phase, tol));
                 let (a, b) = (q(render::REFERENCE_TOL), q(1e-11));
                 assert!(a.is_finite() && b.is_finite(), "{name}: pixel {i}: non-finite reference");
                 if a != b {
                     worst = worst.max((a - b).abs() / a.abs().max(b.abs()));
+                }
+                if hit.t.is_finite() && scene.lights_surfaces(l) {
+                    let x = scene.camera.position + d * hit.t;
+                    let q = |tol| render::reference_air_light(x, hit.normal, &l.light, &scene.medium, &scene.phase, tol);
+                    let (a, b) = (q(render::REFERENCE_TOL), q(1e-11));
+                    assert!(a.is_finite() && b.is_finite() && a > 0.0, "{name}: pixel {i}: reference air-light {a}, {b}");
+                    worst = worst.max((a - b).abs() / a.max(b));
                 }
             }
         }

@@ -186,6 +186,11 @@ impl Record {
         }
     }
 
+    /// Its bytes, as the compute entry point reads them.
+    pub fn bytes(&self) -> [u8; RECORD_SIZE] {
+        bytemuck::cast(*self)
+    }
+
     /// Its f32 inputs, `origin` … `phase_param_c` (the kinds and flags follow them).
     pub fn float_inputs(&self) -> &[f32] {
         &bytemuck::cast_slice(bytemuck::bytes_of(self))[..FLOAT_INPUTS_END / 4]

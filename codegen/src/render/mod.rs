@@ -1,6 +1,7 @@
-//! Pictures: the paper's kinds of scenes — a lighthouse with a two-lobed beam in
+//! Pictures: the source papers' kinds of scenes — a lighthouse with a two-lobed beam in
 //! thick brume, a foggy road with headlights and a streetlamp, a stage under three coloured
-//! spotlights, a park bench in Rayleigh mist — rendered four ways:
+//! spotlights, a park bench in Rayleigh mist, a street with a fluorescent tube and fog-lit
+//! walls — rendered four ways:
 //!
 //! * [`render_cpu`]: the CPU kernel in f64, its default error-controlled path;
 //! * [`render_gpu`]: the committed compute shader (`shaders-out/wgsl/airlight_8.wgsl`, f32, 8
@@ -12,9 +13,11 @@
 //!
 //! The image model is deliberately simple: one primary ray per pixel (through its centre),
 //! opaque geometry (a ground plane `y = 0` and axis-aligned boxes), no shadows. Per light, the
-//! pixel gets `colour × (L_m(0, t_hit) + e^{−σt t_hit} · L_s)` with `L_m` the in-scattered
-//! air-light over the visible segment and `L_s` the paper's eq. 7 surface term of a Lambertian
-//! surface (`brdf = albedo/π`); rays that hit nothing see the glow over `[0, ∞)`.
+//! pixel gets `colour × (L_m(0, t_hit) + e^{−σt t_hit} · (L_s + L_{p,a}))` with `L_m` the
+//! in-scattered air-light over the visible segment, `L_s` the paper's eq. 7 surface term of a
+//! Lambertian surface (`brdf = albedo/π`; a tube's integrated over it) and, in a scene with
+//! [`SceneDesc::fog_lit_surfaces`], `L_{p,a}` the air-light the surface receives from an omni
+//! light through the fog (docs/DESIGN.md §11); rays that hit nothing see the glow over `[0, ∞)`.
 //!
 //! One file per part: [`world`] (camera, geometry, ray casts), [`scenes`] (the four scenes),
 //! this module (the three renderers), [`reference`] (the quadrature), [`picture`] (errors,
@@ -26,15 +29,15 @@ pub mod scenes;
 pub mod world;
 
 pub use picture::{error_floor, error_stats, heat_color, heat_map, relative_errors, tone_map, write_png, ErrorStats, HEAT_LOG10_MAX, HEAT_LOG10_MIN};
-pub use reference::{reference_in_scatter, REFERENCE_TOL};
-pub use scenes::{bench, lighthouse, road, scene_by_name, stage, SCENES};
+pub use reference::{reference_air_light, reference_in_scatter, REFERENCE_TOL};
+pub use scenes::{bench, lighthouse, road, scene_by_name, stage, street, SCENES};
 pub use world::{Camera, Cuboid, Hit, Light, Rgb, SceneDesc};
 
 use airlight_shaders::gpu::Prepared;
 use airlight_shaders::layout::{self, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
 use airlight::glam::DVec3;
 use airlight::record::{cast_light, cast_phase};
-use airlight::{Medium, Ray, Scene};
+use airlight::{Brdf, Medium, Ray, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use rayon::prelude::*;
 use reference::surface_reference;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -93,15 +96,13 @@ fn accumulate(px: &mut Rgb, color: Rgb, albedo: Rgb, in_scatter: f64, surface: f
     }
 }
 
-/// The image on the CPU kernel: f64, [`Scene::in_scatter`] (the default, error-controlled
-/// path) per (pixel, light) segment. A light exactly on a segment (an infinite value) is kept as `+∞`.
+/// The image on the CPU kernel: f64, the default, error-controlled paths per (pixel, light)
+/// segment ([`Scene::in_scatter`], [`airlight::SegmentScene::in_scatter`]) and surface point
+/// ([`airlight::SurfaceScene::air_light`]). A light exactly on a segment (an infinite value) is
+/// kept as `+∞`.
 pub fn render_cpu(scene: &SceneDesc, progress: bool) -> Image {
     render_per_light(scene, "cpu", progress, |d, hit, l| {
-        let lm = match Scene::new(scene.ray(d, hit), l.light, scene.medium, scene.phase) {
-            Ok(s) => s.in_scatter(),
-            Err(_) => 0.0,
-        };
-        (lm, scene.surface_kernel(d, hit, l))
+        (scene.in_scatter_kernel(d, hit, l), scene.surface_kernel(d, hit, l) + scene.air_light_kernel(d, hit, l))
     })
 }
 
@@ -129,11 +130,13 @@ where
 }
 
 /// The image through the generated shader: every (pixel, light) segment is packed as an f32
-/// record ([`layout::pack`]) and all of them run in one call of `shader`, the compute entry
+/// record ([`layout::pack`], [`layout::pack_segment`] for a tube), and so is every surface
+/// point a light's air-light reaches ([`layout::pack_surface`]); all of them run in one call of
+/// `shader`, the compute entry
 /// point ([`airlight_shaders::targets::compute_wgsl`] at [`airlight::SHADER_NODES`]) prepared once with
 /// [`Gpu::prepare`](airlight_shaders::gpu::Gpu::prepare) — [`Prepared::run`] is what
 /// [`Gpu::run`](airlight_shaders::gpu::Gpu::run) does after compiling, which on a CPU Vulkan driver takes
-/// longer than the dispatch. The surface term, which the
+/// longer than the dispatch. The direct surface term, which the
 /// shader does not compute, comes from the f64 CPU kernel as in [`render_cpu`]. A record with
 /// status "infinite" (the light on the segment) gives `+∞`.
 ///
@@ -146,37 +149,73 @@ pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> R
     let lights: Vec<_> = scene.lights.iter().map(|l| cast_light::<f64, f32>(&l.light)).collect();
     let n = scene.lights.len();
     let mut records = Vec::with_capacity(w as usize * h as usize * n * layout::RECORD_SIZE);
+    // per pixel: its direction and hit, and per light the record of its air-light on the
+    // surface, if any
     let mut hits = Vec::with_capacity(w as usize * h as usize);
+    let mut count = 0;
     for y in 0..h {
         for x in 0..w {
             let (d, hit) = scene.primary(x, y);
             let ray = Ray { origin: scene.camera.position.as_vec3(), dir: d.as_vec3(), t_min: 0.0f32, t_max: hit.t as f32 };
-            for l in &lights {
-                records.extend_from_slice(&layout::pack(&ray, l, &medium, &phase));
+            let mut surfaces = Vec::new();
+            for (l, light) in lights.iter().zip(&scene.lights) {
+                match light.tube() {
+                    Some(tube) => {
+                        let tube = SegmentLight { a: tube.a.as_vec3(), b: tube.b.as_vec3(), intensity: tube.intensity as f32, distribution: l.distribution };
+                        let s = SegmentScene::new(ray, tube, medium, phase).map_err(|e| format!("{}: tube: {e}", scene.name))?;
+                        records.extend_from_slice(&layout::pack_segment(&s));
+                    }
+                    None => records.extend_from_slice(&layout::pack(&ray, l, &medium, &phase)),
+                }
+                count += 1;
+                let at = scene.surface_scene(d, &hit, light).map(|s| {
+                    let surface = Surface { position: s.surface().position.as_vec3(), normal: s.surface().normal.as_vec3() };
+                    SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0f32 }, *l, medium, phase)
+                });
+                match at {
+                    Some(Ok(s)) => {
+                        records.extend_from_slice(&layout::pack_surface(&s).ok_or_else(|| format!("{}: a surface the shader has not", scene.name))?);
+                        surfaces.push(Some(count));
+                        count += 1;
+                    }
+                    Some(Err(e)) => return Err(format!("{}: surface point: {e}", scene.name)),
+                    None => surfaces.push(None),
+                }
             }
-            hits.push((d, hit));
+            hits.push((d, hit, surfaces));
         }
     }
     let start = Instant::now();
     if progress {
-        eprintln!("airlight: {} gpu: {} records", scene.name, w as usize * h as usize * n);
+        eprintln!("airlight: {} gpu: {count} records", scene.name);
     }
     let out = shader.run(&records, progress)?;
     if progress && start.elapsed().as_secs_f64() > 1.0 {
         eprintln!("airlight: {} gpu: done ({:.1} s)", scene.name, start.elapsed().as_secs_f64());
     }
+    let result = |k: usize| -> Result<f64, String> {
+        let (v, status) = layout::unpack_result(&out[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);
+        match status {
+            STATUS_OK => Ok(v as f64),
+            STATUS_INFINITE => Ok(f64::INFINITY),
+            _ => Err(format!("{}: the shader rejected record {k} as invalid", scene.name)),
+        }
+    };
     let mut pixels = Vec::with_capacity(hits.len());
-    for (i, (d, hit)) in hits.iter().enumerate() {
+    let mut k = 0;
+    for (d, hit, surfaces) in &hits {
         let mut px = [0.0; 3];
-        for (j, l) in scene.lights.iter().enumerate() {
-            let k = (i * n + j) * RESULT_SIZE;
-            let (v, status) = layout::unpack_result(&out[k..k + RESULT_SIZE]);
-            let lm = match status {
-                STATUS_OK => v as f64,
-                STATUS_INFINITE => f64::INFINITY,
-                _ => return Err(format!("{}: the shader rejected record {} as invalid", scene.name, i * n + j)),
+        for (l, surface) in scene.lights.iter().zip(surfaces) {
+            let lm = result(k)?;
+            k += 1;
+            let air = match surface {
+                Some(j) => {
+                    k += 1;
+                    (-scene.medium.sigma_t * hit.t).exp() * result(*j)?
+                }
+                None => 0.0,
             };
-            accumulate(&mut px, l.color, hit.albedo, lm, scene.surface_kernel(*d, hit, l));
+            accumulate(&mut px, l.color, hit.albedo, lm, scene.surface_kernel(*d, hit, l) + air);
         }
         pixels.push(px);
     }
@@ -184,10 +223,17 @@ pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> R
 }
 
 /// The brute-force reference image: [`reference_in_scatter`] with [`REFERENCE_TOL`] per
-/// (pixel, light) segment and the surface term written out from eq. 7.
+/// (pixel, light) segment (a tube's integrated over it), the surface term written out from
+/// eq. 7 and the surface's air-light by [`reference_air_light`].
 pub fn render_reference(scene: &SceneDesc, progress: bool) -> Image {
     render_per_light(scene, "reference", progress, |d, hit, l| {
-        let lm = reference_in_scatter(scene.camera.position, d, 0.0, hit.t, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL);
-        (lm, surface_reference(scene, d, hit, l))
+        let lm = l.over_emitter(REFERENCE_TOL, |point| reference_in_scatter(scene.camera.position, d, 0.0, hit.t, point, &scene.medium, &scene.phase, REFERENCE_TOL));
+        let direct = l.over_emitter(REFERENCE_TOL, |point| surface_reference(scene, d, hit, point));
+        let air = if hit.t.is_finite() && scene.lights_surfaces(l) {
+            (-scene.medium.sigma_t * hit.t).exp() * reference_air_light(scene.camera.position + d * hit.t, hit.normal, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL)
+        } else {
+            0.0
+        };
+        (lm, direct + air)
     })
 }

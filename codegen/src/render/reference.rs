@@ -1,7 +1,8 @@
 //! The reference: brute-force adaptive Gauss–Kronrod quadrature of the contract integral
-//! (docs/DESIGN.md §1), with none of the kernel's closed forms.
+//! (docs/DESIGN.md §1), with none of the kernel's closed forms; and the surface's air-light
+//! over the hemisphere of such rays.
 
-use super::world::{Hit, Light, SceneDesc};
+use super::world::{Hit, SceneDesc};
 use airlight::extended::gauss_kronrod_15;
 use airlight::glam::DVec3;
 use airlight::light::AnyDistribution;
@@ -12,7 +13,7 @@ use airlight::{LightDistribution, Medium, PhaseFunction, PointLight};
 /// the panel with the largest error estimate `|K15 − G7|` until the sum of the estimates is
 /// at most `rel_tol` of the sum of the values (the integrand is positive, so that bounds the
 /// relative error of every part too), or `max_panels` panels.
-fn adapt(f: &impl Fn(f64) -> f64, edges: &[f64], rel_tol: f64, max_panels: usize) -> f64 {
+pub(crate) fn adapt(f: &impl Fn(f64) -> f64, edges: &[f64], rel_tol: f64, max_panels: usize) -> f64 {
     struct Panel {
         a: f64,
         b: f64,
@@ -150,20 +151,82 @@ pub fn reference_in_scatter(
 
 /// Surface term for the reference, written out from paper eq. 7 (no kernel code):
 /// `e^{−σt t_hit} · e^{−σt r_b}/r_b² · I·D(c_b) · max(0, ω_i·n)/π`.
-pub(super) fn surface_reference(scene: &SceneDesc, d: DVec3, hit: &Hit, light: &Light) -> f64 {
+pub(super) fn surface_reference(scene: &SceneDesc, d: DVec3, hit: &Hit, light: &PointLight<f64, AnyDistribution<f64>>) -> f64 {
     if !hit.t.is_finite() {
         return 0.0;
     }
     let x = scene.camera.position + d * hit.t;
-    let to_light = light.light.position - x;
+    let to_light = light.position - x;
     let r = to_light.length();
     if !(r > 0.0) {
         return 0.0;
     }
     let wi = to_light / r;
     let cos = wi.dot(hit.normal).max(0.0);
-    let ax = DVec3::from_array(light.light.distribution.axis()).normalize();
-    let dist = LightDistribution::<f64>::eval(&light.light.distribution, -wi.dot(ax));
+    let ax = DVec3::from_array(light.distribution.axis()).normalize();
+    let dist = LightDistribution::<f64>::eval(&light.distribution, -wi.dot(ax));
     let st = scene.medium.sigma_t;
-    (-st * (hit.t + r)).exp() / (r * r) * light.light.intensity * dist * cos * std::f64::consts::FRAC_1_PI
+    (-st * (hit.t + r)).exp() / (r * r) * light.intensity * dist * cos * std::f64::consts::FRAC_1_PI
+}
+
+/// The surface radiance from air-light of a Lambertian surface (albedo 1) at `x` with unit
+/// normal `n` lit by a point light without an axis, written out from its definition
+/// (docs/DESIGN.md §11) with none of the kernel's code: `∫_{n·ω>0} L_a(x, ω) (1/π)(n·ω) dω`.
+/// Without an axis `L_a` depends on the angle `γ` between `ω` and the light's direction `ℓ`
+/// alone; with `dω = sin γ dγ dφ` about `ℓ`, the azimuth's integral of `(n·ω)⁺ = (A + B cos φ)⁺`
+/// is `2(Aψ + B sin ψ)` (`A = cos α cos γ`, `B = sin α sin γ`, `α` the angle of `n` from `ℓ`,
+/// `ψ = arccos(−A/B)` clamped to `[0, π]`). The integral over `γ ∈ [0, π]` is split where the
+/// arc changes kind (`|π/2 − α|`, `π − |π/2 − α|`), each piece taken in `s` with
+/// `γ = a + (b − a)(3s² − 2s³)` (at those points the azimuth's integral goes like
+/// `|γ − γ*|^{3/2}`), by [`adapt`] to `rel_tol`; every `L_a` by [`reference_in_scatter`] over
+/// `[0, ∞)` to `rel_tol`.
+pub fn reference_air_light(x: DVec3, n: DVec3, light: &PointLight<f64, AnyDistribution<f64>>, medium: &Medium<f64>, phase: &AnyPhase<f64>, rel_tol: f64) -> f64 {
+    let to_light = light.position - x;
+    let d = to_light.length();
+    if !(d > 0.0) {
+        return f64::INFINITY;
+    }
+    let l = to_light / d;
+    let n = n.normalize();
+    let cos_a = n.dot(l).clamp(-1.0, 1.0);
+    let across = n - l * cos_a;
+    let sin_a = across.length();
+    let u = if sin_a > 1e-300 { across / sin_a } else { l.any_orthonormal_vector() };
+    let alpha = sin_a.atan2(cos_a);
+    let first = (std::f64::consts::FRAC_PI_2 - alpha).abs();
+    let mut edges = vec![0.0];
+    for c in [first.min(std::f64::consts::PI - first), first.max(std::f64::consts::PI - first)] {
+        if c > *edges.last().unwrap() && c < std::f64::consts::PI {
+            edges.push(c);
+        }
+    }
+    edges.push(std::f64::consts::PI);
+    let pieces = edges.len() - 1;
+    let g = |s: f64| -> f64 {
+        let i = (s.floor() as usize).min(pieces - 1);
+        let t = s - i as f64;
+        let (a, b) = (edges[i], edges[i + 1]);
+        let gamma = a + (b - a) * t * t * (3.0 - 2.0 * t);
+        let jacobian = (b - a) * 6.0 * t * (1.0 - t);
+        let (sin_g, cos_g) = gamma.sin_cos();
+        let (big_a, big_b) = (cos_a * cos_g, sin_a * sin_g);
+        let psi = if big_b <= big_a.abs() {
+            if big_a > 0.0 {
+                std::f64::consts::PI
+            } else {
+                0.0
+            }
+        } else {
+            (-big_a / big_b).clamp(-1.0, 1.0).acos()
+        };
+        if !(psi > 0.0) || !(jacobian > 0.0) {
+            return 0.0;
+        }
+        let arc = 2.0 * (big_a * psi + big_b * psi.sin());
+        let omega = l * cos_g + u * sin_g;
+        let la = reference_in_scatter(x, omega, 0.0, f64::INFINITY, light, medium, phase, rel_tol);
+        la * arc * std::f64::consts::FRAC_1_PI * sin_g * jacobian
+    };
+    let knots: Vec<f64> = (0..=pieces).map(|i| i as f64).collect();
+    adapt(&g, &knots, rel_tol, MAX_PANELS)
 }

@@ -1,4 +1,4 @@
-//! The four scenes, after the paper's kinds of pictures.
+//! The five scenes, after the source papers' kinds of pictures.
 
 use super::world::{Camera, Cuboid, Light, Rgb, SceneDesc};
 use airlight::glam::DVec3;
@@ -22,12 +22,13 @@ fn spot(position: [f64; 3], target: [f64; 3], intensity: f64, inner_deg: f64, ou
                 cos_outer: outer_deg.to_radians().cos(),
             }),
         },
+        tube_end: None,
         color,
     }
 }
 
 fn omni(position: [f64; 3], intensity: f64, color: Rgb) -> Light {
-    Light { light: PointLight { position: DVec3::from_array(position), intensity, distribution: AnyDistribution::Omni }, color }
+    Light { light: PointLight { position: DVec3::from_array(position), intensity, distribution: AnyDistribution::Omni }, tube_end: None, color }
 }
 
 /// A lighthouse on a headland at night: a tall tower, the lamp's two-lobed beam (`D = c^12`,
@@ -46,6 +47,7 @@ pub fn lighthouse(width: u32, height: u32) -> SceneDesc {
                 intensity: 20000.0,
                 distribution: AnyDistribution::TwoLobed(TwoLobed { axis: sph(1.0, -0.06, 0.45), power: 12 }),
             },
+            tube_end: None,
             color: [1.0, 0.93, 0.78],
         },
         // the keeper's cottage window, a dim omni light by the tower's foot
@@ -58,6 +60,7 @@ pub fn lighthouse(width: u32, height: u32) -> SceneDesc {
             Cuboid::new([-9.0, 0.0, -7.0], [7.0, 1.5, 6.0], [0.25, 0.22, 0.2]),
         ],
         exposure: 2.5,
+        fog_lit_surfaces: false,
     }
 }
 
@@ -90,6 +93,7 @@ pub fn road(width: u32, height: u32) -> SceneDesc {
             Cuboid::new([-40.0, 0.0, -200.0], [-4.0, 0.15, 10.0], [0.2, 0.2, 0.2]),
         ],
         exposure: 2.0,
+        fog_lit_surfaces: false,
     }
 }
 
@@ -114,6 +118,7 @@ pub fn stage(width: u32, height: u32) -> SceneDesc {
             Cuboid::new([-8.0, 10.0, -4.0], [8.0, 10.4, -1.0], [0.15, 0.15, 0.15]),
         ],
         exposure: 3.0,
+        fog_lit_surfaces: false,
     }
 }
 
@@ -145,11 +150,45 @@ pub fn bench(width: u32, height: u32) -> SceneDesc {
         ground: Some([0.1, 0.14, 0.08]),
         boxes,
         exposure: 1.0,
+        fog_lit_surfaces: false,
+    }
+}
+
+/// A street at night in fog (`σs = 0.04`, `σt = 0.05`, Henyey–Greenstein `g = 0.5`): a
+/// fluorescent tube (a segment light, 3 units long) on a building's wall and a streetlamp (an
+/// omni light on a post) across the street, a kiosk on the pavement. Every surface also
+/// receives the lamp's air-light ([`SceneDesc::fog_lit_surfaces`]): the kiosk's faces turned away
+/// from the lamp, black under direct light alone, glow with the fog's light.
+pub fn street(width: u32, height: u32) -> SceneDesc {
+    let brick = [0.35, 0.22, 0.18];
+    let tube = PointLight { position: DVec3::new(-4.75, 3.2, -9.0), intensity: 25.0, distribution: AnyDistribution::Omni };
+    SceneDesc {
+        name: "street",
+        camera: Camera { position: DVec3::new(1.5, 1.7, 6.0), look_at: DVec3::new(-2.0, 2.2, -14.0), vfov_deg: 55.0, width, height },
+        medium: Medium { sigma_s: 0.04, sigma_t: 0.05 },
+        phase: AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.5 }),
+        lights: vec![
+            Light { light: tube, tube_end: Some(DVec3::new(-4.75, 3.2, -6.0)), color: [0.8, 0.9, 1.0] },
+            omni([3.5, 5.05, -16.0], 150.0, [1.0, 0.7, 0.35]),
+        ],
+        ground: Some([0.1, 0.1, 0.11]),
+        boxes: vec![
+            // the building's wall along the street, its face at x = −5
+            Cuboid::new([-9.0, 0.0, -60.0], [-5.0, 9.0, 8.0], brick),
+            // the lamp's post (the lamp sits just above its top)
+            Cuboid::new([3.44, 0.0, -16.06], [3.56, 4.9, -15.94], [0.08, 0.08, 0.09]),
+            // a kiosk on the pavement between the tube and the lamp
+            Cuboid::new([-4.5, 0.0, -14.0], [-2.5, 2.2, -12.0], [0.5, 0.5, 0.45]),
+            // the kerb
+            Cuboid::new([-5.0, 0.0, -60.0], [-4.0, 0.15, 8.0], [0.2, 0.2, 0.2]),
+        ],
+        exposure: 1.0,
+        fog_lit_surfaces: true,
     }
 }
 
 /// The scene names, in order.
-pub const SCENES: [&str; 4] = ["lighthouse", "road", "stage", "bench"];
+pub const SCENES: [&str; 5] = ["lighthouse", "road", "stage", "bench", "street"];
 
 /// The scene called `name` (one of [`SCENES`]) at `width × height`.
 pub fn scene_by_name(name: &str, width: u32, height: u32) -> Option<SceneDesc> {
@@ -158,6 +197,7 @@ pub fn scene_by_name(name: &str, width: u32, height: u32) -> Option<SceneDesc> {
         "road" => Some(road(width, height)),
         "stage" => Some(stage(width, height)),
         "bench" => Some(bench(width, height)),
+        "street" => Some(street(width, height)),
         _ => None,
     }
 }

@@ -1,10 +1,11 @@
 //! The world of the pictures: a pinhole camera, opaque geometry (a ground plane `y = 0` and
 //! axis-aligned boxes), lights with colours, a medium and a phase function, and the ray casts.
 
+use super::reference::adapt;
 use airlight::glam::DVec3;
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{Medium, PointLight, Ray, Scene};
+use airlight::{Brdf, Medium, PointLight, Ray, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 
 /// Linear RGB radiance.
 pub type Rgb = [f64; 3];
@@ -85,14 +86,40 @@ impl Cuboid {
     }
 }
 
-/// A light of the scene: a kernel point light and its RGB colour (the light's radiant
-/// intensity per channel is `colour × intensity`).
+/// A light of the scene: a kernel point light — or, with `tube_end`, a segment light (a
+/// fluorescent tube) from the point light's position to `tube_end`, every point of it emitting
+/// the point light's intensity per unit length with its distribution — and its RGB colour (the
+/// radiant intensity per channel is `colour × intensity`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
     /// Position, intensity and angular distribution.
     pub light: PointLight<f64, AnyDistribution<f64>>,
+    /// A tube's other end.
+    pub tube_end: Option<DVec3>,
     /// Colour (linear RGB multiplier).
     pub color: Rgb,
+}
+
+impl Light {
+    /// The tube as the kernel's segment light, `None` for a point light.
+    pub fn tube(&self) -> Option<SegmentLight<f64, AnyDistribution<f64>>> {
+        self.tube_end.map(|b| SegmentLight { a: self.light.position, b, intensity: self.light.intensity, distribution: self.light.distribution })
+    }
+
+    /// `∫ f(point light at a + s·e) ds` over a tube (`f` of the point light itself for a point
+    /// light): adaptive Gauss–Kronrod 7/15 to `rel_tol` from 16 equal panels.
+    pub fn over_emitter(&self, rel_tol: f64, f: impl Fn(&PointLight<f64, AnyDistribution<f64>>) -> f64) -> f64 {
+        let Some(b) = self.tube_end else { return f(&self.light) };
+        let a = self.light.position;
+        let len = (b - a).length();
+        if !(len > 0.0) {
+            return 0.0;
+        }
+        let e = (b - a) / len;
+        let at = |s: f64| f(&PointLight { position: a + e * s, ..self.light });
+        let edges: Vec<f64> = (0..=16).map(|i| len * i as f64 / 16.0).collect();
+        adapt(&at, &edges, rel_tol, 4000)
+    }
 }
 
 /// A scene to render: camera, medium, phase function, lights and opaque geometry.
@@ -114,6 +141,10 @@ pub struct SceneDesc {
     pub boxes: Vec<Cuboid>,
     /// Tone-mapping exposure: display value `1 − e^{−x·exposure}` before sRGB encoding.
     pub exposure: f64,
+    /// Surfaces lit by the fog: every surface receives the air-light of every omni point light
+    /// ([`SurfaceScene::air_light`], Lambertian), which brightens the faces the light does not
+    /// reach directly.
+    pub fog_lit_surfaces: bool,
 }
 
 /// What a primary ray sees first.
@@ -167,14 +198,46 @@ impl SceneDesc {
     }
 
     /// The surface term `e^{−σt t_hit} · L_s` of one light at a hit with brdf `1/π` (multiply
-    /// by the albedo), from the kernel's [`Scene::surface_radiance`] (paper eq. 7).
+    /// by the albedo), from the kernel's [`Scene::surface_radiance`] (paper eq. 7); a tube's,
+    /// its point lights' integrated over it ([`Light::over_emitter`], to 1e-10).
     pub(crate) fn surface_kernel(&self, d: DVec3, hit: &Hit, light: &Light) -> f64 {
         if !hit.t.is_finite() {
             return 0.0;
         }
-        match Scene::new(self.ray(d, hit), light.light, self.medium, self.phase) {
+        light.over_emitter(1e-10, |point| match Scene::new(self.ray(d, hit), *point, self.medium, self.phase) {
             Ok(s) => (-self.medium.sigma_t * hit.t).exp() * s.surface_radiance(hit.normal, std::f64::consts::FRAC_1_PI),
             Err(_) => 0.0,
+        })
+    }
+
+    /// `L_m` of one light over the pixel's segment: the kernel's default path
+    /// ([`Scene::in_scatter`], [`SegmentScene::in_scatter`]).
+    pub(crate) fn in_scatter_kernel(&self, d: DVec3, hit: &Hit, light: &Light) -> f64 {
+        match light.tube() {
+            Some(tube) => SegmentScene::new(self.ray(d, hit), tube, self.medium, self.phase).map(|s| s.in_scatter()).unwrap_or(0.0),
+            None => Scene::new(self.ray(d, hit), light.light, self.medium, self.phase).map(|s| s.in_scatter()).unwrap_or(0.0),
         }
+    }
+
+    /// Whether `light`'s air-light reaches the surfaces ([`SceneDesc::fog_lit_surfaces`]: omni
+    /// point lights).
+    pub fn lights_surfaces(&self, light: &Light) -> bool {
+        self.fog_lit_surfaces && light.tube_end.is_none() && matches!(light.light.distribution, AnyDistribution::Omni)
+    }
+
+    /// The surface point and the kernel's Lambertian surface scene (albedo 1: multiply by the
+    /// albedo) of a hit, for a light that [lights the surfaces](SceneDesc::lights_surfaces).
+    pub(crate) fn surface_scene(&self, d: DVec3, hit: &Hit, light: &Light) -> Option<SurfaceScene<f64, AnyDistribution<f64>, AnyPhase<f64>>> {
+        if !hit.t.is_finite() || !self.lights_surfaces(light) {
+            return None;
+        }
+        let surface = Surface { position: self.camera.position + d * hit.t, normal: hit.normal };
+        SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, light.light, self.medium, self.phase).ok()
+    }
+
+    /// The air-light term `e^{−σt t_hit} · L_{p,a}` of one light at a hit (albedo 1), by the
+    /// kernel's [`SurfaceScene::air_light`]; 0 where the light does not light the surfaces.
+    pub(crate) fn air_light_kernel(&self, d: DVec3, hit: &Hit, light: &Light) -> f64 {
+        self.surface_scene(d, hit, light).map_or(0.0, |s| (-self.medium.sigma_t * hit.t).exp() * s.air_light())
     }
 }
