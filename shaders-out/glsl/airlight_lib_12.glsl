@@ -383,8 +383,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_22 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_22 * s_22);
+    float s_23 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_23 * s_23);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -404,7 +404,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_22) * _e35);
+    return ((2.0 * s_23) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -4083,7 +4083,11 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
     return _e18;
 }
 
-AirlightOuter airlight_surface(AirlightScene s_18) {
+AirlightOuter airlight_outer_point(AirlightScene s_18, uint max_panels) {
+    return AirlightOuter(s_18.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+}
+
+AirlightOuter airlight_surface(AirlightScene s_19) {
     AirlightOuter g_17 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_86 = false;
     vec3 u = vec3(0.0);
@@ -4092,120 +4096,121 @@ AirlightOuter airlight_surface(AirlightScene s_18) {
     uint i_17 = 0u;
     bool local_87 = false;
     uint i_18 = 0u;
-    g_17 = AirlightOuter(s_18.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, AIRLIGHT_SURFACE_PANELS, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    vec3 to_light_1 = (s_18.light_position - s_18.origin);
-    float _e31 = airlight_safe_length(to_light_1);
-    if (!((s_18.intensity == 0.0))) {
-        local_86 = (s_18.sigma_s == 0.0);
+    AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    g_17 = _e2;
+    vec3 to_light_1 = (s_19.light_position - s_19.origin);
+    float _e7 = airlight_safe_length(to_light_1);
+    if (!((s_19.intensity == 0.0))) {
+        local_86 = (s_19.sigma_s == 0.0);
     } else {
         local_86 = true;
     }
-    bool _e42 = local_86;
-    if (_e42) {
+    bool _e18 = local_86;
+    if (_e18) {
         g_17.outcome = 1u;
-        AirlightOuter _e45 = g_17;
-        return _e45;
+        AirlightOuter _e21 = g_17;
+        return _e21;
     }
-    if (!((_e31 > 0.0))) {
+    if (!((_e7 > 0.0))) {
         g_17.outcome = 2u;
-        AirlightOuter _e51 = g_17;
-        return _e51;
+        AirlightOuter _e27 = g_17;
+        return _e27;
     }
-    if ((s_18.brdf_albedo == 0.0)) {
+    if ((s_19.brdf_albedo == 0.0)) {
         g_17.outcome = 1u;
-        AirlightOuter _e57 = g_17;
-        return _e57;
+        AirlightOuter _e33 = g_17;
+        return _e33;
     }
-    vec3 l_3 = (to_light_1 / vec3(_e31));
-    vec3 _e61 = airlight_normalize(s_18.dir);
-    float cos_a_1 = dot(_e61, l_3);
-    vec3 across = (_e61 - (cos_a_1 * l_3));
-    float _e65 = airlight_safe_length(across);
-    u = (across / vec3(_e65));
-    if (!((_e65 > 0.0))) {
+    vec3 l_3 = (to_light_1 / vec3(_e7));
+    vec3 _e37 = airlight_normalize(s_19.dir);
+    float cos_a_1 = dot(_e37, l_3);
+    vec3 across = (_e37 - (cos_a_1 * l_3));
+    float _e41 = airlight_safe_length(across);
+    u = (across / vec3(_e41));
+    if (!((_e41 > 0.0))) {
         vec3 pick = ((abs(l_3.x) > 0.7) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0));
-        vec3 _e88 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
-        u = _e88;
+        vec3 _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
+        u = _e64;
     }
     g_17.l = l_3;
-    vec3 _e91 = u;
-    g_17.u = _e91;
+    vec3 _e67 = u;
+    g_17.u = _e67;
     g_17.cos_a = cos_a_1;
-    g_17.sin_a = _e65;
-    float _e95 = airlight_angle(cos_a_1, _e65);
-    float first = abs((1.5707964 - _e95));
+    g_17.sin_a = _e41;
+    float _e71 = airlight_angle(cos_a_1, _e41);
+    float first = abs((1.5707964 - _e71));
     cuts_1 = float[2](first, (AIRLIGHT_PI - first));
-    float _e103 = cuts_1[1];
-    float _e105 = cuts_1[0];
-    if ((_e103 < _e105)) {
+    float _e79 = cuts_1[1];
+    float _e81 = cuts_1[0];
+    if ((_e79 < _e81)) {
         float c_9 = cuts_1[0];
-        float _e111 = cuts_1[1];
-        cuts_1[0] = _e111;
+        float _e87 = cuts_1[1];
+        cuts_1[0] = _e87;
         cuts_1[1] = c_9;
     }
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e147 = i_17;
-            i_17 = (_e147 + 1u);
+            uint _e123 = i_17;
+            i_17 = (_e123 + 1u);
         }
         loop_init_23 = false;
-        uint _e117 = i_17;
-        if ((_e117 < 2u)) {
+        uint _e93 = i_17;
+        if ((_e93 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e120 = i_17;
-            float _e122 = cuts_1[_e120];
-            uint _e124 = k_6;
-            float _e126 = g_17.gamma[_e124];
-            if ((_e122 > _e126)) {
-                uint _e130 = i_17;
-                float _e132 = cuts_1[_e130];
-                local_87 = (_e132 < AIRLIGHT_PI);
+            uint _e96 = i_17;
+            float _e98 = cuts_1[_e96];
+            uint _e100 = k_6;
+            float _e102 = g_17.gamma[_e100];
+            if ((_e98 > _e102)) {
+                uint _e106 = i_17;
+                float _e108 = cuts_1[_e106];
+                local_87 = (_e108 < AIRLIGHT_PI);
             } else {
                 local_87 = false;
             }
-            bool _e136 = local_87;
-            if (_e136) {
-                uint _e137 = k_6;
-                k_6 = (_e137 + 1u);
-                uint _e141 = k_6;
-                uint _e143 = i_17;
-                float _e145 = cuts_1[_e143];
-                g_17.gamma[_e141] = _e145;
+            bool _e112 = local_87;
+            if (_e112) {
+                uint _e113 = k_6;
+                k_6 = (_e113 + 1u);
+                uint _e117 = k_6;
+                uint _e119 = i_17;
+                float _e121 = cuts_1[_e119];
+                g_17.gamma[_e117] = _e121;
             }
         }
     }
-    uint _e150 = k_6;
-    g_17.gamma[(_e150 + 1u)] = AIRLIGHT_PI;
-    uint _e156 = k_6;
-    g_17.panels = (_e156 + 1u);
+    uint _e126 = k_6;
+    g_17.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    uint _e132 = k_6;
+    g_17.panels = (_e132 + 1u);
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
-            uint _e171 = i_18;
-            i_18 = (_e171 + 1u);
+            uint _e147 = i_18;
+            i_18 = (_e147 + 1u);
         }
         loop_init_24 = false;
-        uint _e161 = i_18;
-        uint _e163 = g_17.panels;
-        if ((_e161 <= _e163)) {
+        uint _e137 = i_18;
+        uint _e139 = g_17.panels;
+        if ((_e137 <= _e139)) {
         } else {
             break;
         }
         {
-            uint _e166 = i_18;
-            uint _e168 = i_18;
-            g_17.edges[_e166] = float(_e168);
+            uint _e142 = i_18;
+            uint _e144 = i_18;
+            g_17.edges[_e142] = float(_e144);
         }
     }
-    AirlightOuter _e173 = g_17;
-    return _e173;
+    AirlightOuter _e149 = g_17;
+    return _e149;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_19) {
+AirlightOuter airlight_outer(AirlightScene s_20) {
     AirlightOuter g_18 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_88 = false;
     bool local_89 = false;
@@ -4232,283 +4237,284 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
     uint n_1 = 0u;
     uint i_20 = 0u;
     bool local_104 = false;
-    if ((s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        AirlightOuter _e4 = airlight_surface(s_19);
+    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        AirlightOuter _e4 = airlight_surface(s_20);
         return _e4;
     }
-    g_18 = AirlightOuter(s_19.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, AIRLIGHT_SEGMENT_PANELS, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    if ((s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e35 = g_18;
-        return _e35;
+    AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    g_18 = _e6;
+    if ((s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightOuter _e11 = g_18;
+        return _e11;
     }
-    vec3 ab_1 = (s_19.light_end - s_19.light_position);
-    float _e39 = airlight_safe_length(ab_1);
-    if (!(!((_e39 > 0.0)))) {
-        local_88 = (s_19.intensity == 0.0);
+    vec3 ab_1 = (s_20.light_end - s_20.light_position);
+    float _e15 = airlight_safe_length(ab_1);
+    if (!(!((_e15 > 0.0)))) {
+        local_88 = (s_20.intensity == 0.0);
     } else {
         local_88 = true;
     }
-    bool _e50 = local_88;
-    if (!(_e50)) {
-        local_89 = (s_19.sigma_s == 0.0);
+    bool _e26 = local_88;
+    if (!(_e26)) {
+        local_89 = (s_20.sigma_s == 0.0);
     } else {
         local_89 = true;
     }
-    bool _e58 = local_89;
-    if (_e58) {
+    bool _e34 = local_89;
+    if (_e34) {
         g_18.outcome = 1u;
-        AirlightOuter _e61 = g_18;
-        return _e61;
+        AirlightOuter _e37 = g_18;
+        return _e37;
     }
-    vec3 e_4 = (ab_1 / vec3(_e39));
-    vec3 _e65 = airlight_normalize(s_19.dir);
-    vec3 w0_ = (s_19.light_position - s_19.origin);
-    float cos_a_2 = dot(e_4, _e65);
+    vec3 e_4 = (ab_1 / vec3(_e15));
+    vec3 _e41 = airlight_normalize(s_20.dir);
+    vec3 w0_ = (s_20.light_position - s_20.origin);
+    float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
-    float along_d = dot(_e65, w0_);
+    float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_19.flags & 1u) != 0u);
+    bool infinite_4 = ((s_20.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
         t_star = ((along_d - (cos_a_2 * along_e)) / sin2_);
     }
-    float _e91 = t_star;
-    float _e94 = s_star;
-    float _e97 = airlight_safe_length(((w0_ - (_e65 * _e91)) + (e_4 * _e94)));
+    float _e67 = t_star;
+    float _e70 = s_star;
+    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
-    if ((_e97 == 0.0)) {
+    if ((_e73 == 0.0)) {
         local_90 = (sin_a_1 > 0.0);
     } else {
         local_90 = false;
     }
-    bool _e108 = local_90;
-    if (_e108) {
-        float _e111 = s_star;
-        local_91 = (_e111 >= 0.0);
+    bool _e84 = local_90;
+    if (_e84) {
+        float _e87 = s_star;
+        local_91 = (_e87 >= 0.0);
     } else {
         local_91 = false;
     }
-    bool _e115 = local_91;
-    if (_e115) {
-        float _e118 = s_star;
-        local_92 = (_e118 <= _e39);
+    bool _e91 = local_91;
+    if (_e91) {
+        float _e94 = s_star;
+        local_92 = (_e94 <= _e15);
     } else {
         local_92 = false;
     }
-    bool _e121 = local_92;
-    if (_e121) {
-        float _e125 = t_star;
-        local_93 = (s_19.t_min <= _e125);
+    bool _e97 = local_92;
+    if (_e97) {
+        float _e101 = t_star;
+        local_93 = (s_20.t_min <= _e101);
     } else {
         local_93 = false;
     }
-    bool _e128 = local_93;
-    if (_e128) {
+    bool _e104 = local_93;
+    if (_e104) {
         if (!(infinite_4)) {
-            float _e134 = t_star;
-            local_95 = (_e134 <= s_19.t_max);
+            float _e110 = t_star;
+            local_95 = (_e110 <= s_20.t_max);
         } else {
             local_95 = true;
         }
-        bool _e138 = local_95;
-        local_94 = _e138;
+        bool _e114 = local_95;
+        local_94 = _e114;
     } else {
         local_94 = false;
     }
-    bool _e140 = local_94;
-    if (_e140) {
+    bool _e116 = local_94;
+    if (_e116) {
         g_18.outcome = 2u;
-        AirlightOuter _e143 = g_18;
-        return _e143;
+        AirlightOuter _e119 = g_18;
+        return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_96 = (_e97 > 0.0);
+        local_96 = (_e73 > 0.0);
     } else {
         local_96 = false;
     }
-    bool _e153 = local_96;
-    if (_e153) {
-        scale = (_e97 / sin_a_1);
+    bool _e129 = local_96;
+    if (_e129) {
+        scale = (_e73 / sin_a_1);
     }
-    float _e155 = s_star;
-    if ((_e155 > -(_e39))) {
-        float _e160 = s_star;
-        local_97 = (_e160 < (_e39 + _e39));
+    float _e131 = s_star;
+    if ((_e131 > -(_e15))) {
+        float _e136 = s_star;
+        local_97 = (_e136 < (_e15 + _e15));
     } else {
         local_97 = false;
     }
-    bool _e164 = local_97;
-    if (_e164) {
-        float _e167 = scale;
-        local_98 = (_e167 < _e39);
+    bool _e140 = local_97;
+    if (_e140) {
+        float _e143 = scale;
+        local_98 = (_e143 < _e15);
     } else {
         local_98 = false;
     }
     bool near_2 = local_98;
     if (near_2) {
-        float _e173 = s_star;
-        float _e175 = scale;
-        float _e177 = airlight_asinh(((_e39 - _e173) / _e175));
-        bool _e178 = airlight_is_finite(_e177);
-        local_99 = _e178;
+        float _e149 = s_star;
+        float _e151 = scale;
+        float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
+        bool _e154 = airlight_is_finite(_e153);
+        local_99 = _e154;
     } else {
         local_99 = false;
     }
-    bool _e180 = local_99;
-    if (_e180) {
-        float _e183 = s_star;
-        float _e184 = scale;
-        float _e186 = airlight_asinh((_e183 / _e184));
-        bool _e187 = airlight_is_finite(_e186);
-        local_100 = _e187;
+    bool _e156 = local_99;
+    if (_e156) {
+        float _e159 = s_star;
+        float _e160 = scale;
+        float _e162 = airlight_asinh((_e159 / _e160));
+        bool _e163 = airlight_is_finite(_e162);
+        local_100 = _e163;
     } else {
         local_100 = false;
     }
-    bool _e189 = local_100;
-    if (!(_e189)) {
+    bool _e165 = local_100;
+    if (!(_e165)) {
         scale = 0.0;
     }
     g_18.e = e_4;
-    float _e194 = s_star;
-    g_18.s_star = _e194;
-    float _e196 = scale;
-    g_18.scale = _e196;
-    float _e202 = s_star;
-    at = float[3](_e202, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
+    float _e170 = s_star;
+    g_18.s_star = _e170;
+    float _e172 = scale;
+    g_18.scale = _e172;
+    float _e178 = s_star;
+    at = float[3](_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     bool loop_init_25 = true;
     while(true) {
         if (!loop_init_25) {
-            uint _e253 = i_19;
-            i_19 = (_e253 + 1u);
+            uint _e229 = i_19;
+            i_19 = (_e229 + 1u);
         }
         loop_init_25 = false;
-        uint _e213 = i_19;
-        if ((_e213 < 3u)) {
+        uint _e189 = i_19;
+        if ((_e189 < 3u)) {
         } else {
             break;
         }
         {
             if ((cos_a_2 == 0.0)) {
-                uint _e220 = i_19;
-                local_101 = (_e220 > 0u);
+                uint _e196 = i_19;
+                local_101 = (_e196 > 0u);
             } else {
                 local_101 = false;
             }
-            bool _e224 = local_101;
-            if (_e224) {
+            bool _e200 = local_101;
+            if (_e200) {
                 continue;
             }
-            uint _e225 = i_19;
-            if ((_e225 == 2u)) {
+            uint _e201 = i_19;
+            if ((_e201 == 2u)) {
                 local_102 = infinite_4;
             } else {
                 local_102 = false;
             }
-            bool _e231 = local_102;
-            if (_e231) {
+            bool _e207 = local_102;
+            if (_e207) {
                 continue;
             }
-            uint _e232 = i_19;
-            float _e234 = at[_e232];
-            if ((_e234 > 0.0)) {
-                uint _e239 = i_19;
-                float _e241 = at[_e239];
-                local_103 = (_e241 < _e39);
+            uint _e208 = i_19;
+            float _e210 = at[_e208];
+            if ((_e210 > 0.0)) {
+                uint _e215 = i_19;
+                float _e217 = at[_e215];
+                local_103 = (_e217 < _e15);
             } else {
                 local_103 = false;
             }
-            bool _e244 = local_103;
-            if (_e244) {
-                uint _e245 = i_19;
-                AirlightOuter _e247 = g_18;
-                uint _e248 = i_19;
-                float _e250 = at[_e248];
-                float _e251 = airlight_to_w(_e247, _e250);
-                cuts_2[_e245] = _e251;
+            bool _e220 = local_103;
+            if (_e220) {
+                uint _e221 = i_19;
+                AirlightOuter _e223 = g_18;
+                uint _e224 = i_19;
+                float _e226 = at[_e224];
+                float _e227 = airlight_to_w(_e223, _e226);
+                cuts_2[_e221] = _e227;
             }
         }
     }
-    float _e256 = cuts_2[1];
-    float _e258 = cuts_2[0];
-    if ((_e256 < _e258)) {
+    float _e232 = cuts_2[1];
+    float _e234 = cuts_2[0];
+    if ((_e232 < _e234)) {
         float c_10 = cuts_2[0];
-        float _e264 = cuts_2[1];
-        cuts_2[0] = _e264;
+        float _e240 = cuts_2[1];
+        cuts_2[0] = _e240;
         cuts_2[1] = c_10;
     }
-    float _e267 = cuts_2[2];
-    float _e269 = cuts_2[1];
-    if ((_e267 < _e269)) {
+    float _e243 = cuts_2[2];
+    float _e245 = cuts_2[1];
+    if ((_e243 < _e245)) {
         float c_11 = cuts_2[1];
-        float _e275 = cuts_2[2];
-        cuts_2[1] = _e275;
+        float _e251 = cuts_2[2];
+        cuts_2[1] = _e251;
         cuts_2[2] = c_11;
     }
-    float _e278 = cuts_2[1];
-    float _e280 = cuts_2[0];
-    if ((_e278 < _e280)) {
+    float _e254 = cuts_2[1];
+    float _e256 = cuts_2[0];
+    if ((_e254 < _e256)) {
         float c_12 = cuts_2[0];
-        float _e286 = cuts_2[1];
-        cuts_2[0] = _e286;
+        float _e262 = cuts_2[1];
+        cuts_2[0] = _e262;
         cuts_2[1] = c_12;
     }
-    AirlightOuter _e288 = g_18;
-    float _e289 = airlight_to_w(_e288, _e39);
-    AirlightOuter _e292 = g_18;
-    float _e294 = airlight_to_w(_e292, 0.0);
-    g_18.edges[0] = _e294;
+    AirlightOuter _e264 = g_18;
+    float _e265 = airlight_to_w(_e264, _e15);
+    AirlightOuter _e268 = g_18;
+    float _e270 = airlight_to_w(_e268, 0.0);
+    g_18.edges[0] = _e270;
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
-            uint _e328 = i_20;
-            i_20 = (_e328 + 1u);
+            uint _e304 = i_20;
+            i_20 = (_e304 + 1u);
         }
         loop_init_26 = false;
-        uint _e299 = i_20;
-        if ((_e299 < 3u)) {
+        uint _e275 = i_20;
+        if ((_e275 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e302 = i_20;
-            float _e304 = cuts_2[_e302];
-            uint _e306 = n_1;
-            float _e308 = g_18.edges[_e306];
-            if ((_e304 > _e308)) {
-                uint _e312 = i_20;
-                float _e314 = cuts_2[_e312];
-                local_104 = (_e314 < _e289);
+            uint _e278 = i_20;
+            float _e280 = cuts_2[_e278];
+            uint _e282 = n_1;
+            float _e284 = g_18.edges[_e282];
+            if ((_e280 > _e284)) {
+                uint _e288 = i_20;
+                float _e290 = cuts_2[_e288];
+                local_104 = (_e290 < _e265);
             } else {
                 local_104 = false;
             }
-            bool _e317 = local_104;
-            if (_e317) {
-                uint _e318 = n_1;
-                n_1 = (_e318 + 1u);
-                uint _e322 = n_1;
-                uint _e324 = i_20;
-                float _e326 = cuts_2[_e324];
-                g_18.edges[_e322] = _e326;
+            bool _e293 = local_104;
+            if (_e293) {
+                uint _e294 = n_1;
+                n_1 = (_e294 + 1u);
+                uint _e298 = n_1;
+                uint _e300 = i_20;
+                float _e302 = cuts_2[_e300];
+                g_18.edges[_e298] = _e302;
             }
         }
     }
-    uint _e331 = n_1;
-    g_18.edges[(_e331 + 1u)] = _e289;
-    uint _e336 = n_1;
-    g_18.panels = (_e336 + 1u);
-    AirlightOuter _e339 = g_18;
-    return _e339;
+    uint _e307 = n_1;
+    g_18.edges[(_e307 + 1u)] = _e265;
+    uint _e312 = n_1;
+    g_18.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_18;
+    return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_19, float x_14) {
+AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_19, float x_14) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
-    p = s_20;
+    p = s_21;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_19.panels - 1u));
         float t_6 = (x_14 - float(i_21));
         float a_23 = g_19.gamma[i_21];
@@ -4532,9 +4538,9 @@ AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_19, float x
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        return AirlightNode(_e87, ((((s_20.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
-    if ((s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_14;
         if ((g_19.scale > 0.0)) {
             at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
@@ -4550,7 +4556,7 @@ AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_19, float x
     return AirlightNode(_e122, 1.0);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_21) {
+AirlightResult airlight_in_scatter(AirlightScene s_22) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -4574,11 +4580,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
     bool local_109 = false;
     bool local_110 = false;
     bool local_111 = false;
-    bool _e1 = airlight_valid(s_21);
+    bool _e1 = airlight_valid(s_22);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e6 = airlight_outer(s_21);
+    AirlightOuter _e6 = airlight_outer(s_22);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -4635,7 +4641,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                     }
                     bool _e100 = local_105;
                     float w_5 = (_e100 ? (c_13 - (hw_1 * node.x)) : (c_13 + (hw_1 * node.x)));
-                    AirlightNode _e102 = airlight_outer_node(s_21, _e6, w_5);
+                    AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -4666,8 +4672,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
-                        if ((s_21.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_108 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_22.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_108 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_108 = false;
                         }

@@ -398,8 +398,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_22 = (x_2 / (2f + x_2));
-    let s2_ = (s_22 * s_22);
+    let s_23 = (x_2 / (2f + x_2));
+    let s2_ = (s_23 * s_23);
     loop {
         let _e14 = k_2;
         if (_e14 < 9u) {
@@ -417,7 +417,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_22) * _e35);
+    return ((2f * s_23) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -3644,7 +3644,11 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
+fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+}
+
+fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     var g_17: AirlightOuter;
     var local_86: bool;
     var u: vec3<f32>;
@@ -3654,116 +3658,117 @@ fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
     var local_87: bool;
     var i_18: u32 = 0u;
 
-    g_17 = AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, AIRLIGHT_SURFACE_PANELS, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
-    let to_light_1 = (s_18.light_position - s_18.origin);
-    let _e31 = airlight_safe_length(to_light_1);
-    if !((s_18.intensity == 0f)) {
-        local_86 = (s_18.sigma_s == 0f);
+    let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    g_17 = _e2;
+    let to_light_1 = (s_19.light_position - s_19.origin);
+    let _e7 = airlight_safe_length(to_light_1);
+    if !((s_19.intensity == 0f)) {
+        local_86 = (s_19.sigma_s == 0f);
     } else {
         local_86 = true;
     }
-    let _e42 = local_86;
-    if _e42 {
+    let _e18 = local_86;
+    if _e18 {
         g_17.outcome = 1u;
-        let _e45 = g_17;
-        return _e45;
+        let _e21 = g_17;
+        return _e21;
     }
-    if !((_e31 > 0f)) {
+    if !((_e7 > 0f)) {
         g_17.outcome = 2u;
-        let _e51 = g_17;
-        return _e51;
+        let _e27 = g_17;
+        return _e27;
     }
-    if (s_18.brdf_albedo == 0f) {
+    if (s_19.brdf_albedo == 0f) {
         g_17.outcome = 1u;
-        let _e57 = g_17;
-        return _e57;
+        let _e33 = g_17;
+        return _e33;
     }
-    let l_3 = (to_light_1 / vec3(_e31));
-    let _e61 = airlight_normalize(s_18.dir);
-    let cos_a_1 = dot(_e61, l_3);
-    let across = (_e61 - (cos_a_1 * l_3));
-    let _e65 = airlight_safe_length(across);
-    u = (across / vec3(_e65));
-    if !((_e65 > 0f)) {
+    let l_3 = (to_light_1 / vec3(_e7));
+    let _e37 = airlight_normalize(s_19.dir);
+    let cos_a_1 = dot(_e37, l_3);
+    let across = (_e37 - (cos_a_1 * l_3));
+    let _e41 = airlight_safe_length(across);
+    u = (across / vec3(_e41));
+    if !((_e41 > 0f)) {
         let pick = select(vec3<f32>(1f, 0f, 0f), vec3<f32>(0f, 1f, 0f), (abs(l_3.x) > 0.7f));
-        let _e88 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
-        u = _e88;
+        let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
+        u = _e64;
     }
     g_17.l = l_3;
-    let _e91 = u;
-    g_17.u = _e91;
+    let _e67 = u;
+    g_17.u = _e67;
     g_17.cos_a = cos_a_1;
-    g_17.sin_a = _e65;
-    let _e95 = airlight_angle(cos_a_1, _e65);
-    let first = abs((1.5707964f - _e95));
+    g_17.sin_a = _e41;
+    let _e71 = airlight_angle(cos_a_1, _e41);
+    let first = abs((1.5707964f - _e71));
     cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
-    let _e103 = cuts_1[1];
-    let _e105 = cuts_1[0];
-    if (_e103 < _e105) {
+    let _e79 = cuts_1[1];
+    let _e81 = cuts_1[0];
+    if (_e79 < _e81) {
         let c_9 = cuts_1[0];
-        let _e111 = cuts_1[1];
-        cuts_1[0] = _e111;
+        let _e87 = cuts_1[1];
+        cuts_1[0] = _e87;
         cuts_1[1] = c_9;
     }
     loop {
-        let _e117 = i_17;
-        if (_e117 < 2u) {
+        let _e93 = i_17;
+        if (_e93 < 2u) {
         } else {
             break;
         }
         {
-            let _e120 = i_17;
-            let _e122 = cuts_1[_e120];
-            let _e124 = k_6;
-            let _e126 = g_17.gamma[_e124];
-            if (_e122 > _e126) {
-                let _e130 = i_17;
-                let _e132 = cuts_1[_e130];
-                local_87 = (_e132 < AIRLIGHT_PI);
+            let _e96 = i_17;
+            let _e98 = cuts_1[_e96];
+            let _e100 = k_6;
+            let _e102 = g_17.gamma[_e100];
+            if (_e98 > _e102) {
+                let _e106 = i_17;
+                let _e108 = cuts_1[_e106];
+                local_87 = (_e108 < AIRLIGHT_PI);
             } else {
                 local_87 = false;
             }
-            let _e136 = local_87;
-            if _e136 {
-                let _e137 = k_6;
-                k_6 = (_e137 + 1u);
-                let _e141 = k_6;
-                let _e143 = i_17;
-                let _e145 = cuts_1[_e143];
-                g_17.gamma[_e141] = _e145;
+            let _e112 = local_87;
+            if _e112 {
+                let _e113 = k_6;
+                k_6 = (_e113 + 1u);
+                let _e117 = k_6;
+                let _e119 = i_17;
+                let _e121 = cuts_1[_e119];
+                g_17.gamma[_e117] = _e121;
             }
         }
         continuing {
-            let _e147 = i_17;
-            i_17 = (_e147 + 1u);
+            let _e123 = i_17;
+            i_17 = (_e123 + 1u);
         }
     }
-    let _e150 = k_6;
-    g_17.gamma[(_e150 + 1u)] = AIRLIGHT_PI;
-    let _e156 = k_6;
-    g_17.panels = (_e156 + 1u);
+    let _e126 = k_6;
+    g_17.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    let _e132 = k_6;
+    g_17.panels = (_e132 + 1u);
     loop {
-        let _e161 = i_18;
-        let _e163 = g_17.panels;
-        if (_e161 <= _e163) {
+        let _e137 = i_18;
+        let _e139 = g_17.panels;
+        if (_e137 <= _e139) {
         } else {
             break;
         }
         {
-            let _e166 = i_18;
-            let _e168 = i_18;
-            g_17.edges[_e166] = f32(_e168);
+            let _e142 = i_18;
+            let _e144 = i_18;
+            g_17.edges[_e142] = f32(_e144);
         }
         continuing {
-            let _e171 = i_18;
-            i_18 = (_e171 + 1u);
+            let _e147 = i_18;
+            i_18 = (_e147 + 1u);
         }
     }
-    let _e173 = g_17;
-    return _e173;
+    let _e149 = g_17;
+    return _e149;
 }
 
-fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     var g_18: AirlightOuter;
     var local_88: bool;
     var local_89: bool;
@@ -3791,280 +3796,281 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     var i_20: u32 = 0u;
     var local_104: bool;
 
-    if (s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_19);
+    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_20);
         return _e4;
     }
-    g_18 = AirlightOuter(s_19.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, AIRLIGHT_SEGMENT_PANELS, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
-    if (s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e35 = g_18;
-        return _e35;
+    let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    g_18 = _e6;
+    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        let _e11 = g_18;
+        return _e11;
     }
-    let ab_1 = (s_19.light_end - s_19.light_position);
-    let _e39 = airlight_safe_length(ab_1);
-    if !(!((_e39 > 0f))) {
-        local_88 = (s_19.intensity == 0f);
+    let ab_1 = (s_20.light_end - s_20.light_position);
+    let _e15 = airlight_safe_length(ab_1);
+    if !(!((_e15 > 0f))) {
+        local_88 = (s_20.intensity == 0f);
     } else {
         local_88 = true;
     }
-    let _e50 = local_88;
-    if !(_e50) {
-        local_89 = (s_19.sigma_s == 0f);
+    let _e26 = local_88;
+    if !(_e26) {
+        local_89 = (s_20.sigma_s == 0f);
     } else {
         local_89 = true;
     }
-    let _e58 = local_89;
-    if _e58 {
+    let _e34 = local_89;
+    if _e34 {
         g_18.outcome = 1u;
-        let _e61 = g_18;
-        return _e61;
+        let _e37 = g_18;
+        return _e37;
     }
-    let e_4 = (ab_1 / vec3(_e39));
-    let _e65 = airlight_normalize(s_19.dir);
-    let w0_ = (s_19.light_position - s_19.origin);
-    let cos_a_2 = dot(e_4, _e65);
+    let e_4 = (ab_1 / vec3(_e15));
+    let _e41 = airlight_normalize(s_20.dir);
+    let w0_ = (s_20.light_position - s_20.origin);
+    let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
-    let along_d = dot(_e65, w0_);
+    let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_19.flags & 1u) != 0u);
+    let infinite_4 = ((s_20.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
         t_star = ((along_d - (cos_a_2 * along_e)) / sin2_);
     }
-    let _e91 = t_star;
-    let _e94 = s_star;
-    let _e97 = airlight_safe_length(((w0_ - (_e65 * _e91)) + (e_4 * _e94)));
+    let _e67 = t_star;
+    let _e70 = s_star;
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
-    if (_e97 == 0f) {
+    if (_e73 == 0f) {
         local_90 = (sin_a_1 > 0f);
     } else {
         local_90 = false;
     }
-    let _e108 = local_90;
-    if _e108 {
-        let _e111 = s_star;
-        local_91 = (_e111 >= 0f);
+    let _e84 = local_90;
+    if _e84 {
+        let _e87 = s_star;
+        local_91 = (_e87 >= 0f);
     } else {
         local_91 = false;
     }
-    let _e115 = local_91;
-    if _e115 {
-        let _e118 = s_star;
-        local_92 = (_e118 <= _e39);
+    let _e91 = local_91;
+    if _e91 {
+        let _e94 = s_star;
+        local_92 = (_e94 <= _e15);
     } else {
         local_92 = false;
     }
-    let _e121 = local_92;
-    if _e121 {
-        let _e125 = t_star;
-        local_93 = (s_19.t_min <= _e125);
+    let _e97 = local_92;
+    if _e97 {
+        let _e101 = t_star;
+        local_93 = (s_20.t_min <= _e101);
     } else {
         local_93 = false;
     }
-    let _e128 = local_93;
-    if _e128 {
+    let _e104 = local_93;
+    if _e104 {
         if !(infinite_4) {
-            let _e134 = t_star;
-            local_95 = (_e134 <= s_19.t_max);
+            let _e110 = t_star;
+            local_95 = (_e110 <= s_20.t_max);
         } else {
             local_95 = true;
         }
-        let _e138 = local_95;
-        local_94 = _e138;
+        let _e114 = local_95;
+        local_94 = _e114;
     } else {
         local_94 = false;
     }
-    let _e140 = local_94;
-    if _e140 {
+    let _e116 = local_94;
+    if _e116 {
         g_18.outcome = 2u;
-        let _e143 = g_18;
-        return _e143;
+        let _e119 = g_18;
+        return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_96 = (_e97 > 0f);
+        local_96 = (_e73 > 0f);
     } else {
         local_96 = false;
     }
-    let _e153 = local_96;
-    if _e153 {
-        scale = (_e97 / sin_a_1);
+    let _e129 = local_96;
+    if _e129 {
+        scale = (_e73 / sin_a_1);
     }
-    let _e155 = s_star;
-    if (_e155 > -(_e39)) {
-        let _e160 = s_star;
-        local_97 = (_e160 < (_e39 + _e39));
+    let _e131 = s_star;
+    if (_e131 > -(_e15)) {
+        let _e136 = s_star;
+        local_97 = (_e136 < (_e15 + _e15));
     } else {
         local_97 = false;
     }
-    let _e164 = local_97;
-    if _e164 {
-        let _e167 = scale;
-        local_98 = (_e167 < _e39);
+    let _e140 = local_97;
+    if _e140 {
+        let _e143 = scale;
+        local_98 = (_e143 < _e15);
     } else {
         local_98 = false;
     }
     let near_2 = local_98;
     if near_2 {
-        let _e173 = s_star;
-        let _e175 = scale;
-        let _e177 = airlight_asinh(((_e39 - _e173) / _e175));
-        let _e178 = airlight_is_finite(_e177);
-        local_99 = _e178;
+        let _e149 = s_star;
+        let _e151 = scale;
+        let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
+        let _e154 = airlight_is_finite(_e153);
+        local_99 = _e154;
     } else {
         local_99 = false;
     }
-    let _e180 = local_99;
-    if _e180 {
-        let _e183 = s_star;
-        let _e184 = scale;
-        let _e186 = airlight_asinh((_e183 / _e184));
-        let _e187 = airlight_is_finite(_e186);
-        local_100 = _e187;
+    let _e156 = local_99;
+    if _e156 {
+        let _e159 = s_star;
+        let _e160 = scale;
+        let _e162 = airlight_asinh((_e159 / _e160));
+        let _e163 = airlight_is_finite(_e162);
+        local_100 = _e163;
     } else {
         local_100 = false;
     }
-    let _e189 = local_100;
-    if !(_e189) {
+    let _e165 = local_100;
+    if !(_e165) {
         scale = 0f;
     }
     g_18.e = e_4;
-    let _e194 = s_star;
-    g_18.s_star = _e194;
-    let _e196 = scale;
-    g_18.scale = _e196;
-    let _e202 = s_star;
-    at = array<f32, 3>(_e202, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
+    let _e170 = s_star;
+    g_18.s_star = _e170;
+    let _e172 = scale;
+    g_18.scale = _e172;
+    let _e178 = s_star;
+    at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     loop {
-        let _e213 = i_19;
-        if (_e213 < 3u) {
+        let _e189 = i_19;
+        if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0f) {
-                let _e220 = i_19;
-                local_101 = (_e220 > 0u);
+                let _e196 = i_19;
+                local_101 = (_e196 > 0u);
             } else {
                 local_101 = false;
             }
-            let _e224 = local_101;
-            if _e224 {
+            let _e200 = local_101;
+            if _e200 {
                 continue;
             }
-            let _e225 = i_19;
-            if (_e225 == 2u) {
+            let _e201 = i_19;
+            if (_e201 == 2u) {
                 local_102 = infinite_4;
             } else {
                 local_102 = false;
             }
-            let _e231 = local_102;
-            if _e231 {
+            let _e207 = local_102;
+            if _e207 {
                 continue;
             }
-            let _e232 = i_19;
-            let _e234 = at[_e232];
-            if (_e234 > 0f) {
-                let _e239 = i_19;
-                let _e241 = at[_e239];
-                local_103 = (_e241 < _e39);
+            let _e208 = i_19;
+            let _e210 = at[_e208];
+            if (_e210 > 0f) {
+                let _e215 = i_19;
+                let _e217 = at[_e215];
+                local_103 = (_e217 < _e15);
             } else {
                 local_103 = false;
             }
-            let _e244 = local_103;
-            if _e244 {
-                let _e245 = i_19;
-                let _e247 = g_18;
-                let _e248 = i_19;
-                let _e250 = at[_e248];
-                let _e251 = airlight_to_w(_e247, _e250);
-                cuts_2[_e245] = _e251;
+            let _e220 = local_103;
+            if _e220 {
+                let _e221 = i_19;
+                let _e223 = g_18;
+                let _e224 = i_19;
+                let _e226 = at[_e224];
+                let _e227 = airlight_to_w(_e223, _e226);
+                cuts_2[_e221] = _e227;
             }
         }
         continuing {
-            let _e253 = i_19;
-            i_19 = (_e253 + 1u);
+            let _e229 = i_19;
+            i_19 = (_e229 + 1u);
         }
     }
-    let _e256 = cuts_2[1];
-    let _e258 = cuts_2[0];
-    if (_e256 < _e258) {
+    let _e232 = cuts_2[1];
+    let _e234 = cuts_2[0];
+    if (_e232 < _e234) {
         let c_10 = cuts_2[0];
-        let _e264 = cuts_2[1];
-        cuts_2[0] = _e264;
+        let _e240 = cuts_2[1];
+        cuts_2[0] = _e240;
         cuts_2[1] = c_10;
     }
-    let _e267 = cuts_2[2];
-    let _e269 = cuts_2[1];
-    if (_e267 < _e269) {
+    let _e243 = cuts_2[2];
+    let _e245 = cuts_2[1];
+    if (_e243 < _e245) {
         let c_11 = cuts_2[1];
-        let _e275 = cuts_2[2];
-        cuts_2[1] = _e275;
+        let _e251 = cuts_2[2];
+        cuts_2[1] = _e251;
         cuts_2[2] = c_11;
     }
-    let _e278 = cuts_2[1];
-    let _e280 = cuts_2[0];
-    if (_e278 < _e280) {
+    let _e254 = cuts_2[1];
+    let _e256 = cuts_2[0];
+    if (_e254 < _e256) {
         let c_12 = cuts_2[0];
-        let _e286 = cuts_2[1];
-        cuts_2[0] = _e286;
+        let _e262 = cuts_2[1];
+        cuts_2[0] = _e262;
         cuts_2[1] = c_12;
     }
-    let _e288 = g_18;
-    let _e289 = airlight_to_w(_e288, _e39);
-    let _e292 = g_18;
-    let _e294 = airlight_to_w(_e292, 0f);
-    g_18.edges[0] = _e294;
+    let _e264 = g_18;
+    let _e265 = airlight_to_w(_e264, _e15);
+    let _e268 = g_18;
+    let _e270 = airlight_to_w(_e268, 0f);
+    g_18.edges[0] = _e270;
     loop {
-        let _e299 = i_20;
-        if (_e299 < 3u) {
+        let _e275 = i_20;
+        if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            let _e302 = i_20;
-            let _e304 = cuts_2[_e302];
-            let _e306 = n_1;
-            let _e308 = g_18.edges[_e306];
-            if (_e304 > _e308) {
-                let _e312 = i_20;
-                let _e314 = cuts_2[_e312];
-                local_104 = (_e314 < _e289);
+            let _e278 = i_20;
+            let _e280 = cuts_2[_e278];
+            let _e282 = n_1;
+            let _e284 = g_18.edges[_e282];
+            if (_e280 > _e284) {
+                let _e288 = i_20;
+                let _e290 = cuts_2[_e288];
+                local_104 = (_e290 < _e265);
             } else {
                 local_104 = false;
             }
-            let _e317 = local_104;
-            if _e317 {
-                let _e318 = n_1;
-                n_1 = (_e318 + 1u);
-                let _e322 = n_1;
-                let _e324 = i_20;
-                let _e326 = cuts_2[_e324];
-                g_18.edges[_e322] = _e326;
+            let _e293 = local_104;
+            if _e293 {
+                let _e294 = n_1;
+                n_1 = (_e294 + 1u);
+                let _e298 = n_1;
+                let _e300 = i_20;
+                let _e302 = cuts_2[_e300];
+                g_18.edges[_e298] = _e302;
             }
         }
         continuing {
-            let _e328 = i_20;
-            i_20 = (_e328 + 1u);
+            let _e304 = i_20;
+            i_20 = (_e304 + 1u);
         }
     }
-    let _e331 = n_1;
-    g_18.edges[(_e331 + 1u)] = _e289;
-    let _e336 = n_1;
-    g_18.panels = (_e336 + 1u);
-    let _e339 = g_18;
-    return _e339;
+    let _e307 = n_1;
+    g_18.edges[(_e307 + 1u)] = _e265;
+    let _e312 = n_1;
+    g_18.panels = (_e312 + 1u);
+    let _e315 = g_18;
+    return _e315;
 }
 
-fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_21: AirlightScene, g_19: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_20;
+    p = s_21;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let i_21 = min(u32(max(floor(x_14), 0f)), (g_19.panels - 1u));
         let t_6 = (x_14 - f32(i_21));
         let a_23 = g_19.gamma[i_21];
@@ -4088,9 +4094,9 @@ fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_20.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
         if (g_19.scale > 0f) {
             at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
@@ -4106,7 +4112,7 @@ fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4131,11 +4137,11 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
     var local_110: bool;
     var local_111: bool;
 
-    let _e1 = airlight_valid(s_21);
+    let _e1 = airlight_valid(s_22);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_21);
+    let _e6 = airlight_outer(s_22);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4180,7 +4186,7 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
                     }
                     let _e100 = local_105;
                     let w_5 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_21, _e6, w_5);
+                    let _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
@@ -4211,8 +4217,8 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_21.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_108 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_108 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_108 = false;
                         }

@@ -212,33 +212,40 @@ fn glslang(args: &[&str], input: &std::path::Path, output: &std::path::Path) -> 
     bytes.chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect()
 }
 
+/// Runs `records` through the four compute artifacts of shaders-out/ at `terms` nodes per panel —
+/// the WGSL through wgpu, the committed SPIR-V, the GLSL 450 and HLSL after glslang compiled them
+/// (in `tmp`) — and gives each artifact's label and results to `each`.
+fn each_artifact(gpu: &Gpu, terms: usize, records: &[u8], tmp: &std::path::Path, mut each: impl FnMut(&str, &[u8])) {
+    let dir = default_out_dir();
+    let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
+    each("wgsl", &gpu.run(Shader::Wgsl(&wgsl), records, false).unwrap());
+    let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
+    each("spirv", &gpu.run(Shader::SpirV(&spv, "airlight_main"), records, false).unwrap());
+    let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
+    each("glsl", &gpu.run(Shader::SpirV(&glsl, "main"), records, false).unwrap());
+    let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
+    // glslang's HLSL front end returns `ByteAddressBuffer::GetDimensions` in 4-byte words,
+    // not bytes as HLSL specifies (and as FXC/DXC do), so the shader's `arrayLength` guard
+    // sees a quarter of the records. Padding the buffer to 4× makes that quarter the real
+    // records; the results past them are dropped.
+    let mut padded = records.to_vec();
+    padded.resize(records.len() * 4, 0);
+    let out = gpu.run(Shader::SpirV(&hlsl, "airlight_main"), &padded, false).unwrap();
+    each("hlsl", &out[..records.len() / RECORD_SIZE * RESULT_SIZE]);
+}
+
 #[test]
 fn every_artifact_agrees_with_the_cpu_kernel() {
     let Some(gpu) = gpu() else { return };
     let _ = std::fs::remove_file(report_path());
     report(&format!("adapter: {}; SPIR-V pass-through: {}\n", gpu.describe(), gpu.spirv_passthrough()));
-    let dir = default_out_dir();
     let tmp = std::env::temp_dir().join(format!("airlight-agree-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
     report("| artifact | records | NaN/Inf | max diff to f32 CPU (of scale) | median | max diff to f64 CPU | max err f32_exact vs mpmath | failures |");
     report("|---|---|---|---|---|---|---|---|");
     for terms in NODE_COUNTS {
         let c = case(terms);
-        let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
-        compare(&format!("wgsl/{terms}"), &c, &gpu.run(Shader::Wgsl(&wgsl), &c.records, false).unwrap());
-        let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
-        compare(&format!("spirv/{terms}"), &c, &gpu.run(Shader::SpirV(&spv, "airlight_main"), &c.records, false).unwrap());
-        let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
-        compare(&format!("glsl/{terms}"), &c, &gpu.run(Shader::SpirV(&glsl, "main"), &c.records, false).unwrap());
-        let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
-        // glslang's HLSL front end returns `ByteAddressBuffer::GetDimensions` in 4-byte words,
-        // not bytes as HLSL specifies (and as FXC/DXC do), so the shader's `arrayLength` guard
-        // sees a quarter of the records. Padding the buffer to 4× makes that quarter the real
-        // records; the results past them are dropped.
-        let mut padded = c.records.clone();
-        padded.resize(c.records.len() * 4, 0);
-        let out = gpu.run(Shader::SpirV(&hlsl, "airlight_main"), &padded, false).unwrap();
-        compare(&format!("hlsl/{terms}"), &c, &out[..c.expected.len() * RESULT_SIZE]);
+        each_artifact(&gpu, terms, &c.records, &tmp, |label, out| compare(&format!("{label}/{terms}"), &c, out));
     }
 }
 
@@ -311,7 +318,6 @@ fn segment_lights_agree_with_the_cpu_kernel() {
         }
         records.extend_from_slice(&r);
     }
-    let dir = default_out_dir();
     let tmp = std::env::temp_dir().join(format!("airlight-segment-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
     let mut failures = Vec::new();
@@ -319,18 +325,7 @@ fn segment_lights_agree_with_the_cpu_kernel() {
     println!("|---|---|---|---|---|");
     for terms in NODE_COUNTS {
         let expected: Vec<Expected> = cases.iter().map(|c| expect_segment(&c.0, terms)).collect();
-        let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
-        let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
-        let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
-        let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
-        let shaders = [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spv, "airlight_main")), ("glsl", Shader::SpirV(&glsl, "main")), ("hlsl", Shader::SpirV(&hlsl, "airlight_main"))];
-        for (label, shader) in shaders {
-            // glslang's HLSL buffer length is in words: pad to 4× (every_artifact_agrees_with_the_cpu_kernel)
-            let mut padded = records.clone();
-            if label == "hlsl" {
-                padded.resize(records.len() * 4, 0);
-            }
-            let out = gpu.run(shader, &padded, false).unwrap();
+        each_artifact(&gpu, terms, &records, &tmp, |label, out| {
             let (mut worst, mut worst_ref, mut worst_class) = (0.0f64, 0.0f64, String::new());
             for (i, (c, e)) in cases.iter().zip(&expected).enumerate() {
                 let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
@@ -354,7 +349,7 @@ fn segment_lights_agree_with_the_cpu_kernel() {
                 }
             }
             println!("| {label}/{terms} | {} | {worst:.2e} | {worst_ref:.2e} | {worst_class} |", cases.len());
-        }
+        });
     }
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
@@ -423,7 +418,6 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
         }
         records.extend_from_slice(&r);
     }
-    let dir = default_out_dir();
     let tmp = std::env::temp_dir().join(format!("airlight-surface-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
     let mut failures = Vec::new();
@@ -431,18 +425,7 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
     println!("|---|---|---|---|---|");
     for terms in NODE_COUNTS {
         let expected: Vec<Expected> = cases.iter().map(|c| expect_surface(&c.0, terms)).collect();
-        let wgsl = std::fs::read_to_string(dir.join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap();
-        let spv: Vec<u32> = std::fs::read(dir.join(format!("spirv/airlight_{terms}.spv"))).unwrap().chunks(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
-        let glsl = glslang(&["-V", "--target-env", "vulkan1.0"], &dir.join(format!("glsl/airlight_{terms}.comp")), &tmp.join("g.spv"));
-        let hlsl = glslang(&["-V", "-D", "-e", "airlight_main", "-S", "comp"], &dir.join(format!("hlsl/airlight_{terms}.hlsl")), &tmp.join("h.spv"));
-        let shaders = [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spv, "airlight_main")), ("glsl", Shader::SpirV(&glsl, "main")), ("hlsl", Shader::SpirV(&hlsl, "airlight_main"))];
-        for (label, shader) in shaders {
-            // glslang's HLSL buffer length is in words: pad to 4× (every_artifact_agrees_with_the_cpu_kernel)
-            let mut padded = records.clone();
-            if label == "hlsl" {
-                padded.resize(records.len() * 4, 0);
-            }
-            let out = gpu.run(shader, &padded, false).unwrap();
+        each_artifact(&gpu, terms, &records, &tmp, |label, out| {
             let (mut worst, mut worst_ref, mut worst_class) = (0.0f64, 0.0f64, String::new());
             for (i, (c, e)) in cases.iter().zip(&expected).enumerate() {
                 let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
@@ -466,7 +449,7 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
                 }
             }
             println!("| {label}/{terms} | {} | {worst:.2e} | {worst_ref:.2e} | {worst_class} |", cases.len());
-        }
+        });
     }
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }

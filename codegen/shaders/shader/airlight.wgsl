@@ -1611,10 +1611,16 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return airlight_acos(clamp(-a / b, -1.0, 1.0));
 }
 
+/// The outer integral of a point light (one panel, [0, 0]), bounded at `max_panels`: where the
+/// others start.
+fn airlight_outer_point(s: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
+        max_panels, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
+}
+
 /// A Lambertian surface point's outer integral (surface.rs SurfaceScene::integrate).
 fn airlight_surface(s: AirlightScene) -> AirlightOuter {
-    var g = AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
-        AIRLIGHT_SURFACE_PANELS, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
+    var g = airlight_outer_point(s, AIRLIGHT_SURFACE_PANELS);
     let to_light = s.light_position - s.origin;
     let d = airlight_safe_length(to_light);
     if (s.intensity == 0.0 || s.sigma_s == 0.0) {
@@ -1667,8 +1673,7 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
     if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         return airlight_surface(s);
     }
-    var g = AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
-        AIRLIGHT_SEGMENT_PANELS, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
+    var g = airlight_outer_point(s, AIRLIGHT_SEGMENT_PANELS);
     if (s.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         return g;
     }

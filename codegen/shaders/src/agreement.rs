@@ -242,10 +242,18 @@ pub fn expect_segment(scene: &SegmentRecord<f32>, terms: usize) -> Expected {
             }
         }
     }
-    let noise = if same.is_finite() { worst + e_n } else { 0.0 };
     let iso_light = SegmentLight { distribution: AnyDistribution::Omni, ..light };
     let iso = SegmentScene::new(rec.ray, iso_light, rec.medium, AnyPhase::Isotropic).map(|s| segment_in_scatter(&s, terms)).unwrap_or(0.0);
-    let p_max = [-1.0f64, 1.0].iter().map(|&mu| rec.phase.eval(mu)).fold(0.0, f64::max);
+    finite_expectation(v, same, worst + e_n, iso, &rec.phase)
+}
+
+/// The expectation of a finite f32 value `v` whose f64 value by the same method is `same`, with
+/// `noise` (the f32 spread plus the method's error) and `iso`, the same integral in isotropic
+/// fog (and without the light's axis, where it has one): the scale is `iso·4π·max P`, at least
+/// the value.
+fn finite_expectation(v: f32, same: f64, noise: f64, iso: f64, phase: &AnyPhase<f64>) -> Expected {
+    let noise = if same.is_finite() { noise } else { 0.0 };
+    let p_max = [-1.0f64, 1.0].iter().map(|&mu| phase.eval(mu)).fold(0.0, f64::max);
     let scale = (iso * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
     Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
 }
@@ -309,12 +317,9 @@ pub fn expect_surface(scene: &SurfaceRecord<f32>, terms: usize) -> Expected {
             }
         }
     }
-    let noise = if same.is_finite() { worst + e_n } else { 0.0 };
     let iso = SceneRecord { phase: AnyPhase::Isotropic, ..rec };
     let iso = from_ray_record(&iso, brdf).map(|s| surface_air_light(&s, terms)).unwrap_or(0.0);
-    let p_max = [-1.0f64, 1.0].iter().map(|&mu| rec.phase.eval(mu)).fold(0.0, f64::max);
-    let scale = (iso * 4.0 * std::f64::consts::PI * p_max).max(v as f64);
-    Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
+    finite_expectation(v, same, worst + e_n, iso, &rec.phase)
 }
 
 /// Smallest and largest magnitude of an input number [`in_domain`] (module docs).
