@@ -77,6 +77,17 @@
 #define AIRLIGHT_STATUS_NULL_POINTER 3
 
 /**
+ * `AirlightBrdf::kind`: Lambertian, `albedo/π`.
+ */
+#define AIRLIGHT_BRDF_LAMBERT 0
+
+/**
+ * `AirlightBrdf::kind`: a normalised Phong lobe about the mirror direction,
+ * `k_s (n + 2)/(2π) max(0, r·ω)^n`, `r` the mirror image of `view` about the normal.
+ */
+#define AIRLIGHT_BRDF_PHONG 1
+
+/**
  * Bytes of `AirlightResult::message`, its terminating NUL included.
  */
 #define AIRLIGHT_MESSAGE_SIZE 96
@@ -446,6 +457,198 @@ typedef struct AirlightInterval_f64 {
 typedef struct AirlightInterval_f64 AirlightIntervalF64;
 
 /**
+ * A segment light (a fluorescent tube) seen along a ray: every point of `light.position → end`
+ * emits `light.intensity` per unit length with `light.distribution`, so the value is
+ * `∫ L_m(point light at s) ds` over the segment.
+ */
+typedef struct AirlightSegmentScene_f32 {
+  /**
+   * The ray segment.
+   */
+  struct AirlightRay_f32 ray;
+  /**
+   * The tube's first end (`position`), intensity per unit length and distribution.
+   */
+  struct AirlightLight_f32 light;
+  /**
+   * The tube's other end, world units.
+   */
+  float end[3];
+  /**
+   * The medium.
+   */
+  struct AirlightMedium_f32 medium;
+  /**
+   * The phase function.
+   */
+  struct AirlightPhase_f32 phase;
+} AirlightSegmentScene_f32;
+
+/**
+ * `f32` segment-light scene.
+ */
+typedef struct AirlightSegmentScene_f32 AirlightSegmentSceneF32;
+
+/**
+ * A segment light (a fluorescent tube) seen along a ray: every point of `light.position → end`
+ * emits `light.intensity` per unit length with `light.distribution`, so the value is
+ * `∫ L_m(point light at s) ds` over the segment.
+ */
+typedef struct AirlightSegmentScene_f64 {
+  /**
+   * The ray segment.
+   */
+  struct AirlightRay_f64 ray;
+  /**
+   * The tube's first end (`position`), intensity per unit length and distribution.
+   */
+  struct AirlightLight_f64 light;
+  /**
+   * The tube's other end, world units.
+   */
+  double end[3];
+  /**
+   * The medium.
+   */
+  struct AirlightMedium_f64 medium;
+  /**
+   * The phase function.
+   */
+  struct AirlightPhase_f64 phase;
+} AirlightSegmentScene_f64;
+
+/**
+ * `f64` segment-light scene.
+ */
+typedef struct AirlightSegmentScene_f64 AirlightSegmentSceneF64;
+
+/**
+ * A surface's reflectance. Fields a kind does not use are ignored.
+ */
+typedef struct AirlightBrdf_f32 {
+  /**
+   * `AIRLIGHT_BRDF_LAMBERT` or `AIRLIGHT_BRDF_PHONG`.
+   */
+  uint32_t kind;
+  /**
+   * Lambert: albedo `ρ ≥ 0`.
+   */
+  float albedo;
+  /**
+   * Phong: specular coefficient `k_s ≥ 0`.
+   */
+  float k_s;
+  /**
+   * Phong: exponent `n ≥ 0`.
+   */
+  float exponent;
+  /**
+   * Phong: from the surface towards the eye, any non-zero length.
+   */
+  float view[3];
+} AirlightBrdf_f32;
+
+/**
+ * A surface point in the air-light of a point light: the value is
+ * `∫_{n·ω>0} L_a(position, ω) f_r(ω) (n·ω) dω`, `L_a` the in-scattered radiance along the
+ * ray from the point in direction `ω` to infinity.
+ */
+typedef struct AirlightSurfaceScene_f32 {
+  /**
+   * The surface point, world units.
+   */
+  float position[3];
+  /**
+   * Its normal, any non-zero length (the lit side is the one it points to).
+   */
+  float normal[3];
+  /**
+   * Its reflectance.
+   */
+  struct AirlightBrdf_f32 brdf;
+  /**
+   * The light.
+   */
+  struct AirlightLight_f32 light;
+  /**
+   * The medium.
+   */
+  struct AirlightMedium_f32 medium;
+  /**
+   * The phase function.
+   */
+  struct AirlightPhase_f32 phase;
+} AirlightSurfaceScene_f32;
+
+/**
+ * `f32` surface point.
+ */
+typedef struct AirlightSurfaceScene_f32 AirlightSurfaceSceneF32;
+
+/**
+ * A surface's reflectance. Fields a kind does not use are ignored.
+ */
+typedef struct AirlightBrdf_f64 {
+  /**
+   * `AIRLIGHT_BRDF_LAMBERT` or `AIRLIGHT_BRDF_PHONG`.
+   */
+  uint32_t kind;
+  /**
+   * Lambert: albedo `ρ ≥ 0`.
+   */
+  double albedo;
+  /**
+   * Phong: specular coefficient `k_s ≥ 0`.
+   */
+  double k_s;
+  /**
+   * Phong: exponent `n ≥ 0`.
+   */
+  double exponent;
+  /**
+   * Phong: from the surface towards the eye, any non-zero length.
+   */
+  double view[3];
+} AirlightBrdf_f64;
+
+/**
+ * A surface point in the air-light of a point light: the value is
+ * `∫_{n·ω>0} L_a(position, ω) f_r(ω) (n·ω) dω`, `L_a` the in-scattered radiance along the
+ * ray from the point in direction `ω` to infinity.
+ */
+typedef struct AirlightSurfaceScene_f64 {
+  /**
+   * The surface point, world units.
+   */
+  double position[3];
+  /**
+   * Its normal, any non-zero length (the lit side is the one it points to).
+   */
+  double normal[3];
+  /**
+   * Its reflectance.
+   */
+  struct AirlightBrdf_f64 brdf;
+  /**
+   * The light.
+   */
+  struct AirlightLight_f64 light;
+  /**
+   * The medium.
+   */
+  struct AirlightMedium_f64 medium;
+  /**
+   * The phase function.
+   */
+  struct AirlightPhase_f64 phase;
+} AirlightSurfaceScene_f64;
+
+/**
+ * `f64` surface point.
+ */
+typedef struct AirlightSurfaceScene_f64 AirlightSurfaceSceneF64;
+
+/**
  * `f32` ray.
  */
 typedef struct AirlightRay_f32 AirlightRayF32;
@@ -495,6 +698,16 @@ typedef struct AirlightPhase_f32 AirlightPhaseF32;
  */
 typedef struct AirlightPhase_f64 AirlightPhaseF64;
 
+/**
+ * `f32` reflectance.
+ */
+typedef struct AirlightBrdf_f32 AirlightBrdfF32;
+
+/**
+ * `f64` reflectance.
+ */
+typedef struct AirlightBrdf_f64 AirlightBrdfF64;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -538,6 +751,58 @@ AirlightResultF32 airlight_in_scatter_lit_f32(const AirlightSceneF32 *scene,
 AirlightResultF64 airlight_in_scatter_lit_f64(const AirlightSceneF64 *scene,
                                               const AirlightIntervalF64 *lit,
                                               size_t count);
+
+/**
+ * In-scattered radiance of a segment light (a fluorescent tube) along `scene.ray`, in `f32`,
+ * error-controlled (the kernel's `SegmentScene::in_scatter`: within 1e-4 of the exact value).
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSegmentSceneF32`.
+ */
+AirlightResultF32 airlight_segment_in_scatter_f32(const AirlightSegmentSceneF32 *scene);
+
+/**
+ * [`airlight_segment_in_scatter_f32`] in `f64` (within 1e-9).
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSegmentSceneF64`.
+ */
+AirlightResultF64 airlight_segment_in_scatter_f64(const AirlightSegmentSceneF64 *scene);
+
+/**
+ * A surface point's radiance from air-light towards the eye, in `f32`, error-controlled (the
+ * kernel's `SurfaceScene::air_light`: within 1e-4); `+∞` (status infinite) when the light sits
+ * on the point.
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSurfaceSceneF32`.
+ */
+AirlightResultF32 airlight_surface_air_light_f32(const AirlightSurfaceSceneF32 *scene);
+
+/**
+ * [`airlight_surface_air_light_f32`] in `f64` (within 1e-9).
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSurfaceSceneF64`.
+ */
+AirlightResultF64 airlight_surface_air_light_f64(const AirlightSurfaceSceneF64 *scene);
+
+/**
+ * A surface point's radiance towards the eye from air-light plus the light reaching it
+ * unscattered (paper eq. 7's surface term), in `f32` (the kernel's `SurfaceScene::radiance`).
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSurfaceSceneF32`.
+ */
+AirlightResultF32 airlight_surface_radiance_f32(const AirlightSurfaceSceneF32 *scene);
+
+/**
+ * [`airlight_surface_radiance_f32`] in `f64`.
+ *
+ * # Safety
+ * `scene` must be null or point to a readable `AirlightSurfaceSceneF64`.
+ */
+AirlightResultF64 airlight_surface_radiance_f64(const AirlightSurfaceSceneF64 *scene);
 
 #ifdef __cplusplus
 }  // extern "C"

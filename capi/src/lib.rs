@@ -5,6 +5,10 @@
 //!   error message) out, by value.
 //! * `airlight_in_scatter_lit_f32` / `_f64`: the same over lit sub-segments of the ray (a
 //!   shadowed ray), passed as pointer + length.
+//! * `airlight_segment_in_scatter_f32` / `_f64`: a segment light (a fluorescent tube).
+//! * `airlight_surface_air_light_f32` / `_f64` and `airlight_surface_radiance_f32` / `_f64`: a
+//!   surface point's radiance from air-light (Lambertian or Phong), and that plus the light
+//!   reaching it directly (the repository's docs/DESIGN.md §10, §11).
 //!
 //! No allocation; nothing unwinds into C: the kernel does not panic (fuzzed, see fuzz/), and a
 //! panic in an `extern "C"` function aborts instead of unwinding (Rust ≥ 1.81). Null pointers
@@ -21,7 +25,7 @@ extern crate std;
 
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
-use airlight::{ErrorKind, InputError, Medium, PointLight, Ray, Real, Scene};
+use airlight::{Brdf, ErrorKind, InputError, Medium, PointLight, Ray, Real, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use core::ffi::c_char;
 use core::fmt::Write as _;
 
@@ -54,6 +58,11 @@ pub const AIRLIGHT_STATUS_INFINITE: u32 = 2;
 /// `AirlightResult::status`: a pointer argument was null (or `lit` was null with a non-zero
 /// count); `value` is 0.
 pub const AIRLIGHT_STATUS_NULL_POINTER: u32 = 3;
+/// `AirlightBrdf::kind`: Lambertian, `albedo/π`.
+pub const AIRLIGHT_BRDF_LAMBERT: u32 = 0;
+/// `AirlightBrdf::kind`: a normalised Phong lobe about the mirror direction,
+/// `k_s (n + 2)/(2π) max(0, r·ω)^n`, `r` the mirror image of `view` about the normal.
+pub const AIRLIGHT_BRDF_PHONG: u32 = 1;
 /// Bytes of `AirlightResult::message`, its terminating NUL included.
 pub const AIRLIGHT_MESSAGE_SIZE: usize = 96;
 
@@ -144,6 +153,60 @@ pub struct AirlightScene<T> {
     pub phase: AirlightPhase<T>,
 }
 
+/// A segment light (a fluorescent tube) seen along a ray: every point of `light.position → end`
+/// emits `light.intensity` per unit length with `light.distribution`, so the value is
+/// `∫ L_m(point light at s) ds` over the segment.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AirlightSegmentScene<T> {
+    /// The ray segment.
+    pub ray: AirlightRay<T>,
+    /// The tube's first end (`position`), intensity per unit length and distribution.
+    pub light: AirlightLight<T>,
+    /// The tube's other end, world units.
+    pub end: [T; 3],
+    /// The medium.
+    pub medium: AirlightMedium<T>,
+    /// The phase function.
+    pub phase: AirlightPhase<T>,
+}
+
+/// A surface's reflectance. Fields a kind does not use are ignored.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AirlightBrdf<T> {
+    /// `AIRLIGHT_BRDF_LAMBERT` or `AIRLIGHT_BRDF_PHONG`.
+    pub kind: u32,
+    /// Lambert: albedo `ρ ≥ 0`.
+    pub albedo: T,
+    /// Phong: specular coefficient `k_s ≥ 0`.
+    pub k_s: T,
+    /// Phong: exponent `n ≥ 0`.
+    pub exponent: T,
+    /// Phong: from the surface towards the eye, any non-zero length.
+    pub view: [T; 3],
+}
+
+/// A surface point in the air-light of a point light: the value is
+/// `∫_{n·ω>0} L_a(position, ω) f_r(ω) (n·ω) dω`, `L_a` the in-scattered radiance along the
+/// ray from the point in direction `ω` to infinity.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AirlightSurfaceScene<T> {
+    /// The surface point, world units.
+    pub position: [T; 3],
+    /// Its normal, any non-zero length (the lit side is the one it points to).
+    pub normal: [T; 3],
+    /// Its reflectance.
+    pub brdf: AirlightBrdf<T>,
+    /// The light.
+    pub light: AirlightLight<T>,
+    /// The medium.
+    pub medium: AirlightMedium<T>,
+    /// The phase function.
+    pub phase: AirlightPhase<T>,
+}
+
 /// A lit sub-segment `[a, b]` of the ray, in the ray's `t` (world distances).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -194,6 +257,18 @@ pub type AirlightSceneF64 = AirlightScene<f64>;
 pub type AirlightIntervalF32 = AirlightInterval<f32>;
 /// `f64` lit sub-segment.
 pub type AirlightIntervalF64 = AirlightInterval<f64>;
+/// `f32` segment-light scene.
+pub type AirlightSegmentSceneF32 = AirlightSegmentScene<f32>;
+/// `f64` segment-light scene.
+pub type AirlightSegmentSceneF64 = AirlightSegmentScene<f64>;
+/// `f32` reflectance.
+pub type AirlightBrdfF32 = AirlightBrdf<f32>;
+/// `f64` reflectance.
+pub type AirlightBrdfF64 = AirlightBrdf<f64>;
+/// `f32` surface point.
+pub type AirlightSurfaceSceneF32 = AirlightSurfaceScene<f32>;
+/// `f64` surface point.
+pub type AirlightSurfaceSceneF64 = AirlightSurfaceScene<f64>;
 /// `f32` result.
 pub type AirlightResultF32 = AirlightResult<f32>;
 /// `f64` result.
@@ -203,8 +278,20 @@ type KernelScene<T> = Scene<T, AnyDistribution<T>, AnyPhase<T>>;
 
 /// The kernel's scene, or the first invalid field.
 fn scene<T: Real>(s: &AirlightScene<T>) -> Result<KernelScene<T>, InputError> {
-    let ray = Ray { origin: T::vec3_from_array(s.ray.origin), dir: T::vec3_from_array(s.ray.dir), t_min: s.ray.t_min, t_max: s.ray.t_max };
-    let d = &s.light.distribution;
+    Scene::new(ray(&s.ray), light(&s.light)?, medium(&s.medium), phase(&s.phase)?)
+}
+
+fn ray<T: Real>(r: &AirlightRay<T>) -> Ray<T> {
+    Ray { origin: T::vec3_from_array(r.origin), dir: T::vec3_from_array(r.dir), t_min: r.t_min, t_max: r.t_max }
+}
+
+fn medium<T: Real>(m: &AirlightMedium<T>) -> Medium<T> {
+    Medium { sigma_s: m.sigma_s, sigma_t: m.sigma_t }
+}
+
+/// The kernel's point light, or an unknown distribution kind.
+fn light<T: Real>(l: &AirlightLight<T>) -> Result<PointLight<T, AnyDistribution<T>>, InputError> {
+    let d = &l.distribution;
     let axis = T::vec3_from_array(d.axis);
     let distribution = match d.kind {
         AIRLIGHT_LIGHT_OMNI => AnyDistribution::Omni,
@@ -212,9 +299,12 @@ fn scene<T: Real>(s: &AirlightScene<T>) -> Result<KernelScene<T>, InputError> {
         AIRLIGHT_LIGHT_SPOT => AnyDistribution::SpotCone(SpotCone { axis, cos_inner: d.cos_inner, cos_outer: d.cos_outer }),
         _ => return Err(InputError::new("light.distribution.kind", ErrorKind::UnknownKind)),
     };
-    let light = PointLight { position: T::vec3_from_array(s.light.position), intensity: s.light.intensity, distribution };
-    let p = &s.phase;
-    let phase = match p.kind {
+    Ok(PointLight { position: T::vec3_from_array(l.position), intensity: l.intensity, distribution })
+}
+
+/// The kernel's phase function, or an unknown kind.
+fn phase<T: Real>(p: &AirlightPhase<T>) -> Result<AnyPhase<T>, InputError> {
+    Ok(match p.kind {
         AIRLIGHT_PHASE_ISOTROPIC => AnyPhase::Isotropic,
         AIRLIGHT_PHASE_RAYLEIGH => AnyPhase::Rayleigh,
         AIRLIGHT_PHASE_HENYEY_GREENSTEIN => AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: p.g }),
@@ -222,8 +312,37 @@ fn scene<T: Real>(s: &AirlightScene<T>) -> Result<KernelScene<T>, InputError> {
         AIRLIGHT_PHASE_CORNETTE_SHANKS => AnyPhase::CornetteShanks(CornetteShanks { g: p.g }),
         AIRLIGHT_PHASE_TWO_LOBE_HENYEY_GREENSTEIN => AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: p.g1, g2: p.g2, w: p.w }),
         _ => return Err(InputError::new("phase.kind", ErrorKind::UnknownKind)),
+    })
+}
+
+/// The kernel's segment-light scene, or the first invalid field.
+fn segment_scene<T: Real>(s: &AirlightSegmentScene<T>) -> Result<SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>, InputError> {
+    let l = light(&s.light)?;
+    let tube = SegmentLight { a: l.position, b: T::vec3_from_array(s.end), intensity: l.intensity, distribution: l.distribution };
+    SegmentScene::new(ray(&s.ray), tube, medium(&s.medium), phase(&s.phase)?)
+}
+
+/// The kernel's surface scene, or the first invalid field.
+fn surface_scene<T: Real>(s: &AirlightSurfaceScene<T>) -> Result<SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>, InputError> {
+    let b = &s.brdf;
+    let brdf = match b.kind {
+        AIRLIGHT_BRDF_LAMBERT => Brdf::Lambert { albedo: b.albedo },
+        AIRLIGHT_BRDF_PHONG => Brdf::Phong { k_s: b.k_s, exponent: b.exponent, view: T::vec3_from_array(b.view) },
+        _ => return Err(InputError::new("brdf.kind", ErrorKind::UnknownKind)),
     };
-    Scene::new(ray, light, Medium { sigma_s: s.medium.sigma_s, sigma_t: s.medium.sigma_t }, phase)
+    let surface = Surface { position: T::vec3_from_array(s.position), normal: T::vec3_from_array(s.normal) };
+    SurfaceScene::new(surface, brdf, light(&s.light)?, medium(&s.medium), phase(&s.phase)?)
+}
+
+/// The answer for a value computed from a validated input, or for the input's first error.
+fn answer_of<T: Real, S>(s: Option<&S>, name: &str, value: impl FnOnce(&S) -> Result<T, InputError>) -> AirlightResult<T> {
+    let Some(s) = s else {
+        return answer(AIRLIGHT_STATUS_NULL_POINTER, T::zero(), Some(&format_args!("{name}: null pointer")));
+    };
+    match value(s) {
+        Err(e) => answer(AIRLIGHT_STATUS_INVALID, T::zero(), Some(&e)),
+        Ok(v) => answer(if v.is_infinite() { AIRLIGHT_STATUS_INFINITE } else { AIRLIGHT_STATUS_OK }, v, None),
+    }
 }
 
 /// Writes into a fixed buffer, truncating, always leaving a terminating NUL.
@@ -332,6 +451,70 @@ pub unsafe extern "C" fn airlight_in_scatter_lit_f32(scene: *const AirlightScene
 pub unsafe extern "C" fn airlight_in_scatter_lit_f64(scene: *const AirlightSceneF64, lit: *const AirlightIntervalF64, count: usize) -> AirlightResultF64 {
     // SAFETY: forwarded from the caller
     unsafe { evaluate_lit(scene, lit, count) }
+}
+
+/// In-scattered radiance of a segment light (a fluorescent tube) along `scene.ray`, in `f32`,
+/// error-controlled (the kernel's `SegmentScene::in_scatter`: within 1e-4 of the exact value).
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSegmentSceneF32`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_segment_in_scatter_f32(scene: *const AirlightSegmentSceneF32) -> AirlightResultF32 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| segment_scene(s).map(|s| s.in_scatter()))
+}
+
+/// [`airlight_segment_in_scatter_f32`] in `f64` (within 1e-9).
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSegmentSceneF64`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_segment_in_scatter_f64(scene: *const AirlightSegmentSceneF64) -> AirlightResultF64 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| segment_scene(s).map(|s| s.in_scatter()))
+}
+
+/// A surface point's radiance from air-light towards the eye, in `f32`, error-controlled (the
+/// kernel's `SurfaceScene::air_light`: within 1e-4); `+∞` (status infinite) when the light sits
+/// on the point.
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSurfaceSceneF32`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_surface_air_light_f32(scene: *const AirlightSurfaceSceneF32) -> AirlightResultF32 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.air_light()))
+}
+
+/// [`airlight_surface_air_light_f32`] in `f64` (within 1e-9).
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSurfaceSceneF64`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_surface_air_light_f64(scene: *const AirlightSurfaceSceneF64) -> AirlightResultF64 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.air_light()))
+}
+
+/// A surface point's radiance towards the eye from air-light plus the light reaching it
+/// unscattered (paper eq. 7's surface term), in `f32` (the kernel's `SurfaceScene::radiance`).
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSurfaceSceneF32`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_surface_radiance_f32(scene: *const AirlightSurfaceSceneF32) -> AirlightResultF32 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.radiance()))
+}
+
+/// [`airlight_surface_radiance_f32`] in `f64`.
+///
+/// # Safety
+/// `scene` must be null or point to a readable `AirlightSurfaceSceneF64`.
+#[no_mangle]
+pub unsafe extern "C" fn airlight_surface_radiance_f64(scene: *const AirlightSurfaceSceneF64) -> AirlightResultF64 {
+    // SAFETY: the caller guarantees `scene` is null or points to a readable scene
+    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.radiance()))
 }
 
 #[cfg(all(not(feature = "std"), not(test)))]

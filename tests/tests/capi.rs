@@ -200,3 +200,110 @@ fn readme_c_example_runs() {
     let value: f64 = printed.trim().parse().unwrap_or_else(|_| panic!("the example printed {printed:?}"));
     assert!(run.status.success() && value > 0.0, "{printed}");
 }
+
+/// The C structs of a kernel point light and phase function (the inverse of the ABI's own
+/// conversion).
+fn c_light<T: airlight::Real>(l: &airlight::PointLight<T, AnyDistribution<T>>) -> airlight_c::AirlightLight<T> {
+    let zero = T::zero();
+    let distribution = match l.distribution {
+        AnyDistribution::Omni => airlight_c::AirlightDistribution { kind: airlight_c::AIRLIGHT_LIGHT_OMNI, power: 0, axis: [zero; 3], cos_inner: zero, cos_outer: zero },
+        AnyDistribution::TwoLobed(d) => airlight_c::AirlightDistribution { kind: airlight_c::AIRLIGHT_LIGHT_TWO_LOBED, power: d.power, axis: T::vec3_to_array(d.axis), cos_inner: zero, cos_outer: zero },
+        AnyDistribution::SpotCone(d) => airlight_c::AirlightDistribution { kind: airlight_c::AIRLIGHT_LIGHT_SPOT, power: 0, axis: T::vec3_to_array(d.axis), cos_inner: d.cos_inner, cos_outer: d.cos_outer },
+    };
+    airlight_c::AirlightLight { position: T::vec3_to_array(l.position), intensity: l.intensity, distribution }
+}
+
+fn c_phase<T: airlight::Real>(p: &AnyPhase<T>) -> airlight_c::AirlightPhase<T> {
+    let z = T::zero();
+    let (kind, g, k, g1, g2, w) = match *p {
+        AnyPhase::Isotropic => (airlight_c::AIRLIGHT_PHASE_ISOTROPIC, z, z, z, z, z),
+        AnyPhase::Rayleigh => (airlight_c::AIRLIGHT_PHASE_RAYLEIGH, z, z, z, z, z),
+        AnyPhase::HenyeyGreenstein(h) => (airlight_c::AIRLIGHT_PHASE_HENYEY_GREENSTEIN, h.g, z, z, z, z),
+        AnyPhase::Schlick(s) => (airlight_c::AIRLIGHT_PHASE_SCHLICK, z, s.k, z, z, z),
+        AnyPhase::CornetteShanks(c) => (airlight_c::AIRLIGHT_PHASE_CORNETTE_SHANKS, c.g, z, z, z, z),
+        AnyPhase::TwoLobeHenyeyGreenstein(t) => (airlight_c::AIRLIGHT_PHASE_TWO_LOBE_HENYEY_GREENSTEIN, z, z, t.g1, t.g2, t.w),
+    };
+    airlight_c::AirlightPhase { kind, g, k, g1, g2, w }
+}
+
+fn c_segment<T: airlight::Real>(s: &airlight::SegmentScene<T, AnyDistribution<T>, AnyPhase<T>>) -> airlight_c::AirlightSegmentScene<T> {
+    let (r, l, m) = (s.ray(), s.light(), s.medium());
+    airlight_c::AirlightSegmentScene {
+        ray: airlight_c::AirlightRay { origin: T::vec3_to_array(r.origin), dir: T::vec3_to_array(r.dir), t_min: r.t_min, t_max: r.t_max },
+        light: c_light(&airlight::PointLight { position: l.a, intensity: l.intensity, distribution: l.distribution }),
+        end: T::vec3_to_array(l.b),
+        medium: airlight_c::AirlightMedium { sigma_s: m.sigma_s, sigma_t: m.sigma_t },
+        phase: c_phase(s.phase()),
+    }
+}
+
+fn c_surface<T: airlight::Real>(s: &airlight::SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>) -> airlight_c::AirlightSurfaceScene<T> {
+    let z = T::zero();
+    let brdf = match *s.brdf() {
+        airlight::Brdf::Lambert { albedo } => airlight_c::AirlightBrdf { kind: airlight_c::AIRLIGHT_BRDF_LAMBERT, albedo, k_s: z, exponent: z, view: [z; 3] },
+        airlight::Brdf::Phong { k_s, exponent, view } => airlight_c::AirlightBrdf { kind: airlight_c::AIRLIGHT_BRDF_PHONG, albedo: z, k_s, exponent, view: T::vec3_to_array(view) },
+    };
+    let m = s.medium();
+    airlight_c::AirlightSurfaceScene {
+        position: T::vec3_to_array(s.surface().position),
+        normal: T::vec3_to_array(s.surface().normal),
+        brdf,
+        light: c_light(s.light()),
+        medium: airlight_c::AirlightMedium { sigma_s: m.sigma_s, sigma_t: m.sigma_t },
+        phase: c_phase(s.phase()),
+    }
+}
+
+/// The segment-light and surface entry points through their C structs on the references of
+/// tests/reference/extended.jsonl and surface.jsonl: status OK and within the targets the
+/// kernel's own tests hold (tests/extended.rs, tests/surface.rs) — f64 1e-9, f32 1e-4 of the
+/// exact value (surfaces: of `max(|exact|, τ·scale)`, τ = 1e-10 / 1e-4); `radiance` adds the
+/// direct term to the air-light; null pointers, an unknown BRDF kind and a zero normal give their
+/// statuses and name the field.
+#[test]
+fn segment_and_surface_entry_points_meet_the_targets() {
+    use airlight_c::*;
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    let mut failures = Vec::new();
+    for v in airlight_tests::reference_lines("extended.jsonl") {
+        let exact = v["in_scatter"].as_f64().unwrap();
+        let (Ok(AnyRecord::Segment(s64)), Ok(AnyRecord::Segment(s32))) = (parse_any_value::<f64>(&v), parse_any_value::<f32>(&v)) else { panic!("{v}") };
+        let (r64, r32) = unsafe { (airlight_segment_in_scatter_f64(&c_segment(&s64)), airlight_segment_in_scatter_f32(&c_segment(&s32))) };
+        let (e64, e32) = ((r64.value - exact).abs() / exact, (r32.value as f64 - exact).abs() / exact);
+        if r64.status != AIRLIGHT_STATUS_OK || r32.status != AIRLIGHT_STATUS_OK || !(e64 <= 1e-9) || !(e32 <= 1e-4) {
+            failures.push(format!("segment {}: f64 {e64:.1e}, f32 {e32:.1e}, statuses {} {}", v["category"], r64.status, r32.status));
+        }
+    }
+    for v in airlight_tests::reference_lines("surface.jsonl") {
+        let (exact, scale) = (v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap());
+        let (Ok(AnyRecord::Surface(s64)), Ok(AnyRecord::Surface(s32))) = (parse_any_value::<f64>(&v), parse_any_value::<f32>(&v)) else { panic!("{v}") };
+        let (c64, c32) = (c_surface(&s64), c_surface(&s32));
+        let (r64, r32) = unsafe { (airlight_surface_air_light_f64(&c64), airlight_surface_air_light_f32(&c32)) };
+        let (e64, e32) = ((r64.value - exact).abs() / exact.max(1e-10 * scale), (r32.value as f64 - exact).abs() / exact.max(1e-4 * scale));
+        if r64.status != AIRLIGHT_STATUS_OK || r32.status != AIRLIGHT_STATUS_OK || !(e64 <= 1e-9) || !(e32 <= 1e-4) {
+            failures.push(format!("surface {}: f64 {e64:.1e}, f32 {e32:.1e}, statuses {} {}", v["category"], r64.status, r32.status));
+        }
+        let radiance = unsafe { airlight_surface_radiance_f64(&c64) };
+        if radiance.status != AIRLIGHT_STATUS_OK || radiance.value != s64.direct() + r64.value {
+            failures.push(format!("surface {}: radiance {} is not direct {} + air-light {}", v["category"], radiance.value, s64.direct(), r64.value));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    let message = |r: &AirlightResultF64| unsafe { std::ffi::CStr::from_ptr(r.message.as_ptr()) }.to_string_lossy().into_owned();
+    let null = unsafe { airlight_surface_air_light_f64(std::ptr::null()) };
+    assert_eq!((null.status, null.value, message(&null).as_str()), (AIRLIGHT_STATUS_NULL_POINTER, 0.0, "scene: null pointer"));
+    let null = unsafe { airlight_segment_in_scatter_f64(std::ptr::null()) };
+    assert_eq!(null.status, AIRLIGHT_STATUS_NULL_POINTER);
+    let v = &airlight_tests::reference_lines("surface.jsonl")[0];
+    let Ok(AnyRecord::Surface(s)) = parse_any_value::<f64>(v) else { panic!("{v}") };
+    let mut bad = c_surface(&s);
+    bad.brdf.kind = 9;
+    let r = unsafe { airlight_surface_air_light_f64(&bad) };
+    assert_eq!((r.status, r.value), (AIRLIGHT_STATUS_INVALID, 0.0));
+    assert!(message(&r).starts_with("brdf.kind"), "{}", message(&r));
+    let mut bad = c_surface(&s);
+    bad.normal = [0.0; 3];
+    let r = unsafe { airlight_surface_air_light_f64(&bad) };
+    assert_eq!(r.status, AIRLIGHT_STATUS_INVALID);
+    assert!(message(&r).starts_with("surface.normal"), "{}", message(&r));
+}
