@@ -334,10 +334,11 @@ fn surface_scene<T: Real>(s: &AirlightSurfaceScene<T>) -> Result<SurfaceScene<T,
     SurfaceScene::new(surface, brdf, light(&s.light)?, medium(&s.medium), phase(&s.phase)?)
 }
 
-/// The answer for a value computed from a validated input, or for the input's first error.
-fn answer_of<T: Real, S>(s: Option<&S>, name: &str, value: impl FnOnce(&S) -> Result<T, InputError>) -> AirlightResult<T> {
+/// The answer for a value computed from the scene `s` points to, or for a null `s`, or for the
+/// scene's first invalid field.
+fn answer_of<T: Real, S>(s: Option<&S>, value: impl FnOnce(&S) -> Result<T, InputError>) -> AirlightResult<T> {
     let Some(s) = s else {
-        return answer(AIRLIGHT_STATUS_NULL_POINTER, T::zero(), Some(&format_args!("{name}: null pointer")));
+        return answer(AIRLIGHT_STATUS_NULL_POINTER, T::zero(), Some(&"scene: null pointer"));
     };
     match value(s) {
         Err(e) => answer(AIRLIGHT_STATUS_INVALID, T::zero(), Some(&e)),
@@ -369,31 +370,24 @@ fn answer<T: Real>(status: u32, value: T, error: Option<&dyn core::fmt::Display>
 }
 
 fn evaluate<T: Real>(s: Option<&AirlightScene<T>>, lit: Option<&[AirlightInterval<T>]>) -> AirlightResult<T> {
-    let Some(s) = s else {
-        return answer(AIRLIGHT_STATUS_NULL_POINTER, T::zero(), Some(&"scene: null pointer"));
-    };
-    match scene(s) {
-        Err(e) => answer(AIRLIGHT_STATUS_INVALID, T::zero(), Some(&e)),
-        Ok(scene) => {
-            let value = match lit {
-                None => scene.in_scatter(),
-                Some(lit) => {
-                    // the kernel takes (a, b) pairs; convert in fixed-size chunks, no allocation
-                    let mut total = T::zero();
-                    for chunk in lit.chunks(16) {
-                        let mut pairs = [(T::zero(), T::zero()); 16];
-                        for (p, i) in pairs.iter_mut().zip(chunk) {
-                            *p = (i.a, i.b);
-                        }
-                        total = total + scene.in_scatter_lit(&pairs[..chunk.len()]);
+    answer_of(s, |s| {
+        let scene = scene(s)?;
+        Ok(match lit {
+            None => scene.in_scatter(),
+            Some(lit) => {
+                // the kernel takes (a, b) pairs; convert in fixed-size chunks, no allocation
+                let mut total = T::zero();
+                for chunk in lit.chunks(16) {
+                    let mut pairs = [(T::zero(), T::zero()); 16];
+                    for (p, i) in pairs.iter_mut().zip(chunk) {
+                        *p = (i.a, i.b);
                     }
-                    total
+                    total = total + scene.in_scatter_lit(&pairs[..chunk.len()]);
                 }
-            };
-            let status = if value.is_infinite() { AIRLIGHT_STATUS_INFINITE } else { AIRLIGHT_STATUS_OK };
-            answer(status, value, None)
-        }
-    }
+                total
+            }
+        })
+    })
 }
 
 /// # Safety
@@ -461,7 +455,7 @@ pub unsafe extern "C" fn airlight_in_scatter_lit_f64(scene: *const AirlightScene
 #[no_mangle]
 pub unsafe extern "C" fn airlight_segment_in_scatter_f32(scene: *const AirlightSegmentSceneF32) -> AirlightResultF32 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| segment_scene(s).map(|s| s.in_scatter()))
+    answer_of(unsafe { scene.as_ref() }, |s| segment_scene(s).map(|s| s.in_scatter()))
 }
 
 /// [`airlight_segment_in_scatter_f32`] in `f64` (within 1e-9).
@@ -471,7 +465,7 @@ pub unsafe extern "C" fn airlight_segment_in_scatter_f32(scene: *const AirlightS
 #[no_mangle]
 pub unsafe extern "C" fn airlight_segment_in_scatter_f64(scene: *const AirlightSegmentSceneF64) -> AirlightResultF64 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| segment_scene(s).map(|s| s.in_scatter()))
+    answer_of(unsafe { scene.as_ref() }, |s| segment_scene(s).map(|s| s.in_scatter()))
 }
 
 /// A surface point's radiance from air-light towards the eye, in `f32`, error-controlled (the
@@ -483,7 +477,7 @@ pub unsafe extern "C" fn airlight_segment_in_scatter_f64(scene: *const AirlightS
 #[no_mangle]
 pub unsafe extern "C" fn airlight_surface_air_light_f32(scene: *const AirlightSurfaceSceneF32) -> AirlightResultF32 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.air_light()))
+    answer_of(unsafe { scene.as_ref() }, |s| surface_scene(s).map(|s| s.air_light()))
 }
 
 /// [`airlight_surface_air_light_f32`] in `f64` (within 1e-9).
@@ -493,7 +487,7 @@ pub unsafe extern "C" fn airlight_surface_air_light_f32(scene: *const AirlightSu
 #[no_mangle]
 pub unsafe extern "C" fn airlight_surface_air_light_f64(scene: *const AirlightSurfaceSceneF64) -> AirlightResultF64 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.air_light()))
+    answer_of(unsafe { scene.as_ref() }, |s| surface_scene(s).map(|s| s.air_light()))
 }
 
 /// A surface point's radiance towards the eye from air-light plus the light reaching it
@@ -504,7 +498,7 @@ pub unsafe extern "C" fn airlight_surface_air_light_f64(scene: *const AirlightSu
 #[no_mangle]
 pub unsafe extern "C" fn airlight_surface_radiance_f32(scene: *const AirlightSurfaceSceneF32) -> AirlightResultF32 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.radiance()))
+    answer_of(unsafe { scene.as_ref() }, |s| surface_scene(s).map(|s| s.radiance()))
 }
 
 /// [`airlight_surface_radiance_f32`] in `f64`.
@@ -514,7 +508,7 @@ pub unsafe extern "C" fn airlight_surface_radiance_f32(scene: *const AirlightSur
 #[no_mangle]
 pub unsafe extern "C" fn airlight_surface_radiance_f64(scene: *const AirlightSurfaceSceneF64) -> AirlightResultF64 {
     // SAFETY: the caller guarantees `scene` is null or points to a readable scene
-    answer_of(unsafe { scene.as_ref() }, "scene", |s| surface_scene(s).map(|s| s.radiance()))
+    answer_of(unsafe { scene.as_ref() }, |s| surface_scene(s).map(|s| s.radiance()))
 }
 
 #[cfg(all(not(feature = "std"), not(test)))]

@@ -30,7 +30,7 @@ pub struct EvalOptions {
     pub backend: Backend,
     /// Kernel precision.
     pub precision: Precision,
-    /// `None`: the kernel's default, error-controlled path ([`Scene::in_scatter`]); `Some(4 | 6)`:
+    /// `None`: the kernel's default, error-controlled path ([`airlight::Scene::in_scatter`]); `Some(4 | 6)`:
     /// one expansion of that many terms per piece (the paper's fixed-cost method). The GPU
     /// backend runs the shader with 8 Gauss–Legendre nodes per panel unless 12 is asked for.
     pub terms: Option<usize>,

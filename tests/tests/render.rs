@@ -45,8 +45,8 @@ fn scales(scene: &SceneDesc) -> Vec<[f64; 3]> {
                     None => Scene::new(ray, iso, scene.medium, AnyPhase::Isotropic).unwrap().in_scatter(),
                 };
                 // a fog-lit surface: its air-light in isotropic fog
-                let air = if hit.t.is_finite() && scene.lights_surfaces(l) {
-                    let surface = Surface { position: scene.camera.position + d * hit.t, normal: hit.normal };
+                let air = if scene.air_lit(&hit, l) {
+                    let surface = Surface { position: scene.surface_point(d, &hit), normal: hit.normal };
                     let s = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, iso, scene.medium, AnyPhase::Isotropic).unwrap();
                     (-scene.medium.sigma_t * hit.t).exp() * s.air_light()
                 } else {
@@ -159,8 +159,8 @@ fn reference_is_converged() {
                 if a != b {
                     worst = worst.max((a - b).abs() / a.abs().max(b.abs()));
                 }
-                if hit.t.is_finite() && scene.lights_surfaces(l) {
-                    let x = scene.camera.position + d * hit.t;
+                if scene.air_lit(&hit, l) {
+                    let x = scene.surface_point(d, &hit);
                     let q = |tol| render::reference_air_light(x, hit.normal, &l.light, &scene.medium, &scene.phase, tol);
                     let (a, b) = (q(render::REFERENCE_TOL), q(1e-11));
                     assert!(a.is_finite() && b.is_finite() && a > 0.0, "{name}: pixel {i}: reference air-light {a}, {b}");

@@ -19,8 +19,8 @@
 //! [`SceneDesc::fog_lit_surfaces`], `L_{p,a}` the air-light the surface receives from an omni
 //! light through the fog (docs/DESIGN.md §11); rays that hit nothing see the glow over `[0, ∞)`.
 //!
-//! One file per part: [`world`] (camera, geometry, ray casts), [`scenes`] (the four scenes),
-//! this module (the three renderers), [`reference`] (the quadrature), [`picture`] (errors,
+//! One file per part: [`world`] (camera, geometry, ray casts), [`scenes`] (the five scenes),
+//! this module (the three renderers), [`mod@reference`] (the quadrature), [`picture`] (errors,
 //! heat maps, PNG).
 
 pub mod picture;
@@ -97,7 +97,7 @@ fn accumulate(px: &mut Rgb, color: Rgb, albedo: Rgb, in_scatter: f64, surface: f
 }
 
 /// The image on the CPU kernel: f64, the default, error-controlled paths per (pixel, light)
-/// segment ([`Scene::in_scatter`], [`airlight::SegmentScene::in_scatter`]) and surface point
+/// segment ([`airlight::Scene::in_scatter`], [`airlight::SegmentScene::in_scatter`]) and surface point
 /// ([`airlight::SurfaceScene::air_light`]). A light exactly on a segment (an infinite value) is
 /// kept as `+∞`.
 pub fn render_cpu(scene: &SceneDesc, progress: bool) -> Image {
@@ -149,10 +149,9 @@ pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> R
     let lights: Vec<_> = scene.lights.iter().map(|l| cast_light::<f64, f32>(&l.light)).collect();
     let n = scene.lights.len();
     let mut records = Vec::with_capacity(w as usize * h as usize * n * layout::RECORD_SIZE);
-    // per pixel: its direction and hit, and per light the record of its air-light on the
-    // surface, if any
+    // per pixel: its direction and hit, and per light whether its glow's record is followed by
+    // one of its air-light on the surface
     let mut hits = Vec::with_capacity(w as usize * h as usize);
-    let mut count = 0;
     for y in 0..h {
         for x in 0..w {
             let (d, hit) = scene.primary(x, y);
@@ -167,27 +166,20 @@ pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> R
                     }
                     None => records.extend_from_slice(&layout::pack(&ray, l, &medium, &phase)),
                 }
-                count += 1;
-                let at = scene.surface_scene(d, &hit, light).map(|s| {
-                    let surface = Surface { position: s.surface().position.as_vec3(), normal: s.surface().normal.as_vec3() };
-                    SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0f32 }, *l, medium, phase)
-                });
-                match at {
-                    Some(Ok(s)) => {
-                        records.extend_from_slice(&layout::pack_surface(&s).ok_or_else(|| format!("{}: a surface the shader has not", scene.name))?);
-                        surfaces.push(Some(count));
-                        count += 1;
-                    }
-                    Some(Err(e)) => return Err(format!("{}: surface point: {e}", scene.name)),
-                    None => surfaces.push(None),
+                let lit = scene.air_lit(&hit, light);
+                if lit {
+                    let surface = Surface { position: scene.surface_point(d, &hit).as_vec3(), normal: hit.normal.as_vec3() };
+                    let s = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0f32 }, *l, medium, phase).map_err(|e| format!("{}: surface point: {e}", scene.name))?;
+                    records.extend_from_slice(&layout::pack_surface(&s).ok_or_else(|| format!("{}: a surface the shader has not", scene.name))?);
                 }
+                surfaces.push(lit);
             }
             hits.push((d, hit, surfaces));
         }
     }
     let start = Instant::now();
     if progress {
-        eprintln!("airlight: {} gpu: {count} records", scene.name);
+        eprintln!("airlight: {} gpu: {} records", scene.name, records.len() / layout::RECORD_SIZE);
     }
     let out = shader.run(&records, progress)?;
     if progress && start.elapsed().as_secs_f64() > 1.0 {
@@ -205,15 +197,14 @@ pub fn render_gpu(scene: &SceneDesc, shader: &Prepared<'_>, progress: bool) -> R
     let mut k = 0;
     for (d, hit, surfaces) in &hits {
         let mut px = [0.0; 3];
-        for (l, surface) in scene.lights.iter().zip(surfaces) {
+        for (l, &lit) in scene.lights.iter().zip(surfaces) {
             let lm = result(k)?;
             k += 1;
-            let air = match surface {
-                Some(j) => {
-                    k += 1;
-                    (-scene.medium.sigma_t * hit.t).exp() * result(*j)?
-                }
-                None => 0.0,
+            let air = if lit {
+                k += 1;
+                (-scene.medium.sigma_t * hit.t).exp() * result(k - 1)?
+            } else {
+                0.0
             };
             accumulate(&mut px, l.color, hit.albedo, lm, scene.surface_kernel(*d, hit, l) + air);
         }
@@ -229,8 +220,8 @@ pub fn render_reference(scene: &SceneDesc, progress: bool) -> Image {
     render_per_light(scene, "reference", progress, |d, hit, l| {
         let lm = l.over_emitter(REFERENCE_TOL, |point| reference_in_scatter(scene.camera.position, d, 0.0, hit.t, point, &scene.medium, &scene.phase, REFERENCE_TOL));
         let direct = l.over_emitter(REFERENCE_TOL, |point| surface_reference(scene, d, hit, point));
-        let air = if hit.t.is_finite() && scene.lights_surfaces(l) {
-            (-scene.medium.sigma_t * hit.t).exp() * reference_air_light(scene.camera.position + d * hit.t, hit.normal, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL)
+        let air = if scene.air_lit(hit, l) {
+            (-scene.medium.sigma_t * hit.t).exp() * reference_air_light(scene.surface_point(d, hit), hit.normal, &l.light, &scene.medium, &scene.phase, REFERENCE_TOL)
         } else {
             0.0
         };

@@ -155,7 +155,7 @@ pub(super) fn surface_reference(scene: &SceneDesc, d: DVec3, hit: &Hit, light: &
     if !hit.t.is_finite() {
         return 0.0;
     }
-    let x = scene.camera.position + d * hit.t;
+    let x = scene.surface_point(d, hit);
     let to_light = light.position - x;
     let r = to_light.length();
     if !(r > 0.0) {
@@ -178,7 +178,7 @@ pub(super) fn surface_reference(scene: &SceneDesc, d: DVec3, hit: &Hit, light: &
 /// `ψ = arccos(−A/B)` clamped to `[0, π]`). The integral over `γ ∈ [0, π]` is split where the
 /// arc changes kind (`|π/2 − α|`, `π − |π/2 − α|`), each piece taken in `s` with
 /// `γ = a + (b − a)(3s² − 2s³)` (at those points the azimuth's integral goes like
-/// `|γ − γ*|^{3/2}`), by [`adapt`] to `rel_tol`; every `L_a` by [`reference_in_scatter`] over
+/// `|γ − γ*|^{3/2}`), by adaptive Gauss–Kronrod 7/15 to `rel_tol`; every `L_a` by [`reference_in_scatter`] over
 /// `[0, ∞)` to `rel_tol`.
 pub fn reference_air_light(x: DVec3, n: DVec3, light: &PointLight<f64, AnyDistribution<f64>>, medium: &Medium<f64>, phase: &AnyPhase<f64>, rel_tol: f64) -> f64 {
     let to_light = light.position - x;

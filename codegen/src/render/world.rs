@@ -219,19 +219,24 @@ impl SceneDesc {
         }
     }
 
-    /// Whether `light`'s air-light reaches the surfaces ([`SceneDesc::fog_lit_surfaces`]: omni
-    /// point lights).
-    pub fn lights_surfaces(&self, light: &Light) -> bool {
-        self.fog_lit_surfaces && light.tube_end.is_none() && matches!(light.light.distribution, AnyDistribution::Omni)
+    /// Whether `light`'s air-light reaches the surface of a hit ([`SceneDesc::fog_lit_surfaces`]:
+    /// omni point lights, on every surface the primary ray meets).
+    pub fn air_lit(&self, hit: &Hit, light: &Light) -> bool {
+        hit.t.is_finite() && self.fog_lit_surfaces && light.tube_end.is_none() && matches!(light.light.distribution, AnyDistribution::Omni)
+    }
+
+    /// The point where the primary ray along `d` meets its hit.
+    pub fn surface_point(&self, d: DVec3, hit: &Hit) -> DVec3 {
+        self.camera.position + d * hit.t
     }
 
     /// The surface point and the kernel's Lambertian surface scene (albedo 1: multiply by the
-    /// albedo) of a hit, for a light that [lights the surfaces](SceneDesc::lights_surfaces).
+    /// albedo) of a hit, where [`SceneDesc::air_lit`].
     pub(crate) fn surface_scene(&self, d: DVec3, hit: &Hit, light: &Light) -> Option<SurfaceScene<f64, AnyDistribution<f64>, AnyPhase<f64>>> {
-        if !hit.t.is_finite() || !self.lights_surfaces(light) {
+        if !self.air_lit(hit, light) {
             return None;
         }
-        let surface = Surface { position: self.camera.position + d * hit.t, normal: hit.normal };
+        let surface = Surface { position: self.surface_point(d, hit), normal: hit.normal };
         SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, light.light, self.medium, self.phase).ok()
     }
 
