@@ -25,7 +25,20 @@ pub fn in_series_region<T: Real>(z: C<T>) -> bool {
 /// `E1(z)` by the series: `−γ − ln z + Ein(z)`.
 #[inline]
 fn e1_by_series<T: Real>(z: C<T>) -> C<T> {
-    ein(z) - z.ln() - T::lit(EULER_GAMMA)
+    ein(z) - ln_in_series_region(z) - T::lit(EULER_GAMMA)
+}
+
+/// `ln z` for `z` inside the series ellipse: `ln|z| = ½ ln(x² + y²)` needs no `hypot` there
+/// (`|z| < 4`, so `x² + y²` cannot overflow); below `|z|² = 2^{−60}` (where `x² + y²` could
+/// underflow in f32) the general `ln`.
+#[inline]
+fn ln_in_series_region<T: Real>(z: C<T>) -> C<T> {
+    let norm_sqr = z.re * z.re + z.im * z.im;
+    if norm_sqr > T::lit(8.673_617_379_884_035e-19) {
+        C::new(norm_sqr.ln() * T::lit(0.5), z.im.atan2(z.re))
+    } else {
+        z.ln()
+    }
 }
 
 /// NaN, the value outside the domain `Re z ≥ 0`.
