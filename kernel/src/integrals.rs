@@ -38,7 +38,7 @@
 //!    difference of `Ein`; exact at `H = 0` (the Macklin/Packard `atan` form).
 //! 3. **far**: scaled `e^z E1(z)` at both ends, `C = S(z_s) − e^{−HΔv} S(z_e)`.
 
-use crate::real::Real;
+use crate::real::{hypot1, Real};
 use crate::special::{ein_divided_difference, en_scaled, C};
 
 /// Which exponential integral the closed forms use: the production one, or the paper's.
@@ -261,7 +261,7 @@ fn q0<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, with_re: bool) -> C<T>
     let big_h = half.big_h;
     let (v_s, v_e) = (half.v_s(), half.v_e());
     let near = ei.stabilised()
-        && (big_h == T::zero() || (v_e.is_finite() && big_h * v_e.hypot(T::one()) <= T::one()));
+        && (big_h == T::zero() || (v_e.is_finite() && big_h * hypot1(v_e) <= T::one()));
     if near {
         q0_near(half, v_s, v_e, with_re)
     } else {
