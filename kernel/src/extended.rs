@@ -206,8 +206,8 @@ where
     }
 
     /// What the shaders compute (fixed cost): the outer Gauss–Kronrod rule the default path
-    /// takes at `control.tolerance` (7 points per panel at 1e-4 and looser, 15 below), at most `max_panels` panels (the shaders:
-    /// [`SHADER_SEGMENT_PANELS`]), every point light as
+    /// takes at `control.tolerance` (7 points per panel at 1e-4 and looser, 15 below), at most
+    /// `max_panels` panels (the shaders: [`SHADER_SEGMENT_PANELS`]), every point light as
     /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the panels evaluated.
     pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
         self.integrate(control.tolerance, max_panels, |scene| scene.in_scatter_panels::<N>(control))

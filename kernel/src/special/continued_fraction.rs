@@ -55,7 +55,7 @@ fn tail<T: Real>(z: C<T>, n: usize) -> C<T> {
     let nf = T::from(n).unwrap();
     let b = z + (two * nf + T::one());
     let q = cdiv(C::new(two * (nf + T::one()), T::zero()), b);
-    let mut root = sqrt_near_one(one - q * q);
+    let mut root = csqrt(one - q * q);
     if root.re < T::zero() {
         root = -root;
     }
@@ -91,23 +91,3 @@ pub fn e1_scaled_cf_depth<T: Real>(z: C<T>, n: usize) -> C<T> {
     cdiv(one, t)
 }
 
-/// Principal square root of the tail's `w = 1 − q²`. `|q| = 2(n+1)/|z + 2n + 1| ≤ 4/3` for
-/// `Re z ≥ 0`, `n ≥ 1`, so `|w| < 3`: `|w| = √(x² + y²)` cannot overflow and needs no `hypot`
-/// (Kahan's formula as [`csqrt`] otherwise). Below `|w|² = 2^{−60}`, where `x² + y²` could
-/// underflow in f32, [`csqrt`] itself.
-#[inline]
-fn sqrt_near_one<T: Real>(w: C<T>) -> C<T> {
-    let norm_sqr = w.re * w.re + w.im * w.im;
-    if !(norm_sqr > T::lit(8.673_617_379_884_035e-19)) {
-        return csqrt(w);
-    }
-    let half = T::lit(0.5);
-    let r = norm_sqr.sqrt();
-    if w.re >= T::zero() {
-        let t = ((r + w.re) * half).sqrt();
-        C::new(t, w.im / (t + t))
-    } else {
-        let t = ((r - w.re) * half).sqrt();
-        C::new(w.im.abs() / (t + t), t.copysign(w.im))
-    }
-}

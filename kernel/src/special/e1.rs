@@ -10,7 +10,7 @@
 //! stop early: `x < 2.5` in f64, `x < 1.3` in f32), along the imaginary axis it does not, and
 //! there the fraction converges slowest (so the series reaches further: `|y| < 4`, `< 2.1`).
 
-use super::{continued_fraction::e1_scaled_cf, series::ein, C, EULER_GAMMA};
+use super::{complex::norm_sqr_in_range, continued_fraction::e1_scaled_cf, series::ein, C, EULER_GAMMA};
 use crate::real::Real;
 
 /// `true` where `E1(z)` is evaluated by its power series.
@@ -28,16 +28,13 @@ fn e1_by_series<T: Real>(z: C<T>) -> C<T> {
     ein(z) - ln_in_series_region(z) - T::lit(EULER_GAMMA)
 }
 
-/// `ln z` for `z` inside the series ellipse: `ln|z| = ½ ln(x² + y²)` needs no `hypot` there
-/// (`|z| < 4`, so `x² + y²` cannot overflow); below `|z|² = 2^{−60}` (where `x² + y²` could
-/// underflow in f32) the general `ln`.
+/// `ln z` with `ln|z| = ½ ln(x² + y²)` where that is safe ([`norm_sqr_in_range`]: everywhere in
+/// the series ellipse but within `2^{−30}` of 0), `num_complex`'s `hypot`-based `ln` elsewhere.
 #[inline]
 fn ln_in_series_region<T: Real>(z: C<T>) -> C<T> {
-    let norm_sqr = z.re * z.re + z.im * z.im;
-    if norm_sqr > T::lit(8.673_617_379_884_035e-19) {
-        C::new(norm_sqr.ln() * T::lit(0.5), z.im.atan2(z.re))
-    } else {
-        z.ln()
+    match norm_sqr_in_range(z) {
+        Some(n) => C::new(n.ln() * T::lit(0.5), z.im.atan2(z.re)),
+        None => z.ln(),
     }
 }
 
