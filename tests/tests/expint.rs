@@ -89,8 +89,7 @@ fn en_check<T: Real>(label: &str) {
         en_scaled(T::lit(x), &mut out[..8]);
         let got = out[n - 1].to_f64_exact();
         let want = v["scaled"].as_f64().unwrap();
-        // in range for the precision (f32: normal numbers)
-        if want.is_finite() && want.abs() >= T::min_positive_value().to_f64_exact() && want.abs() <= T::max_value().to_f64_exact() {
+        if normal_in::<T>(want) {
             let e = rel_err(got, want);
             worst = worst.max(e);
             count += 1;
@@ -99,6 +98,11 @@ fn en_check<T: Real>(label: &str) {
     }
     assert!(count > 0, "{label}: no reference argument is exact in this precision");
     println!("{label}: {count} points; worst e^x E_n(x) rel err {worst:.2e}");
+}
+
+/// Whether `v` is a finite normal number of `T` (the values a `T` routine can be judged on).
+fn normal_in<T: Real>(v: f64) -> bool {
+    v.is_finite() && v.abs() >= T::min_positive_value().to_f64_exact() && v.abs() <= T::max_value().to_f64_exact()
 }
 
 /// f32 `e^x E_n(x)` at every reference argument rounded to f32, against the f64 routine at the
@@ -116,7 +120,7 @@ fn en_f32_against_f64() {
         en_scaled(x, &mut lo);
         en_scaled(x as f64, &mut hi);
         for (a, b) in lo.iter().zip(hi) {
-            if b.is_finite() && b.abs() >= f32::MIN_POSITIVE as f64 && b.abs() <= f32::MAX as f64 {
+            if normal_in::<f32>(b) {
                 let e = rel_err(*a as f64, b);
                 worst = worst.max(e);
                 count += 1;
