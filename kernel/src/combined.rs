@@ -65,6 +65,39 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> HalfIntegrand<'_, T,
     }
 }
 
+impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> HalfIntegrand<'_, T, D, P> {
+    /// `c(y)` alone.
+    #[inline]
+    fn cosine(&self, y: T) -> T {
+        let y2 = y * y;
+        ((T::one() - y2) * (self.sigma * self.d_el) + (y + y) * self.d_c) / (T::one() + y2)
+    }
+
+    /// Whether the light is dark on all of the piece `[lo, hi]` of `half` — `D = 0` below the
+    /// cosine `bound` ([`LightDistribution::dark_below`]) — checked where `c` can be largest:
+    /// `c < bound` at the piece's middle, at the stationary points of `c` inside it (`c' = 0`:
+    /// `d_c y² + 2σd_el y − d_c = 0`, whose roots multiply to `−1`) and at those of its ends that
+    /// are the half's ends. Its other ends are crossings of a kink, where `c` equals the kink
+    /// up to rounding: a piece between crossings lies on one side of every kink, and its middle
+    /// tells which. (A crossing the rounding missed — `c` grazing a kink — leaves `c` above
+    /// `bound` at a stationary point or an end, so that piece is integrated.)
+    fn dark(&self, bound: T, lo: T, hi: T, half: &Half<T>) -> bool {
+        let below = |y: T| self.cosine(y) < bound;
+        if !below((lo + hi) * T::lit(0.5)) || (lo == half.y_lo && !below(lo)) || (hi == half.y_hi && !below(hi)) {
+            return false;
+        }
+        let (a, d) = (self.sigma * self.d_el, self.d_c);
+        if d == T::zero() {
+            // c = a(1 − y²)/(1 + y²) is monotone in y ≥ 0
+            return true;
+        }
+        // y₁ = (√(a² + d²) − a)/d without cancellation, y₂ = −1/y₁
+        let root = (a * a + d * d).sqrt();
+        let y1 = if a > T::zero() { d / (a + root) } else { (root - a) / d };
+        [y1, -y1.recip()].into_iter().all(|y| !(y > lo && y < hi) || below(y))
+    }
+}
+
 impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for HalfIntegrand<'_, T, D, P> {
     #[inline]
     fn eval<S: Scalar<T>>(&self, y: S) -> S {
@@ -360,7 +393,13 @@ where
             let (piece, weight) = half.part(lo, hi);
             weight * subdivided::<T, _, E, N>(&piece, &f, expansion, ei)
         }),
-        Method::Panels(control) => sum_between(half.y_lo, half.y_hi, cuts, |lo, hi| integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run)),
+        Method::Panels(control) => {
+            let dark_below = phys.light.dark_below();
+            sum_between(half.y_lo, half.y_hi, cuts, |lo, hi| match dark_below {
+                Some(bound) if f.dark(bound, lo, hi, half) => T::zero(),
+                _ => integrate_piece::<T, _, N>(half, lo, hi, &f, &control, run),
+            })
+        }
     }
 }
 

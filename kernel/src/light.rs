@@ -25,6 +25,12 @@ pub trait LightDistribution<T: Real> {
     fn kinks(&self) -> [Option<T>; 2] {
         [None, None]
     }
+    /// A cosine below which `D` vanishes (`D(c) = 0` for every `c < bound`), if there is one:
+    /// the error-controlled path spends no panel on a piece of the ray the light does not
+    /// reach (outside a spot's cone, behind a flat emitter).
+    fn dark_below(&self) -> Option<T> {
+        None
+    }
     /// Checks the parameters; the checked API calls it.
     fn validate(&self) -> Result<(), InputError> {
         Ok(())
@@ -127,6 +133,11 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         }
         [Some(self.cos_inner), Some(self.cos_outer)]
     }
+    fn dark_below(&self) -> Option<T> {
+        // as `eval`: a step's middle, else the outer cone
+        let width = self.cos_inner - self.cos_outer;
+        Some(if width <= T::epsilon() { self.cos_outer + width * T::lit(0.5) } else { self.cos_outer })
+    }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
         check_finite(self.cos_inner, "light.distribution.cos_inner")?;
@@ -166,6 +177,9 @@ impl<T: Real> LightDistribution<T> for Lambertian<T> {
     }
     fn kinks(&self) -> [Option<T>; 2] {
         [Some(T::zero()), None]
+    }
+    fn dark_below(&self) -> Option<T> {
+        Some(T::zero())
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)
@@ -209,6 +223,12 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
         match self {
             AnyDistribution::SpotCone(d) => d.kinks(),
             _ => [None, None],
+        }
+    }
+    fn dark_below(&self) -> Option<T> {
+        match self {
+            AnyDistribution::SpotCone(d) => d.dark_below(),
+            _ => None,
         }
     }
     fn validate(&self) -> Result<(), InputError> {

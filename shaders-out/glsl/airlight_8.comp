@@ -385,8 +385,8 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 
 bool airlight_in_series_region(vec2 z_5) {
     float x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    float y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_15 * x_15) + (y_3 * y_3)) < 1.0);
+    float y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_15 * x_15) + (y_4 * y_4)) < 1.0);
 }
 
 uint airlight_cf_depth(float r) {
@@ -836,15 +836,15 @@ float airlight_moment_gauss(AirlightHalf half_) {
         {
             uint _e26 = j_1;
             float xi = nodes[_e26].x;
-            float y_4 = (yc + (hw * xi));
+            float y_5 = (yc + (hw * xi));
             dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi)) / (y_4 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_5 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j_1;
             float _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_4 * y_4))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_5 * y_5))));
         }
     }
     float _e61 = m;
@@ -1556,10 +1556,10 @@ AirlightPanel airlight_y_panel(AirlightScene s_4, AirlightCanonical g_6, float s
         {
             uint _e26 = i_8;
             float _e27 = airlight_node(_e6, _e26);
-            float y_5 = (yc_1 + (r_7 * _e27));
-            float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5)));
-            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_5);
-            float over_1 = (1.0 / (1.0 + (y_5 * y_5)));
+            float y_6 = (yc_1 + (r_7 * _e27));
+            float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_6 * b_5)));
+            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
             float _e49 = f_max_2;
@@ -1681,10 +1681,10 @@ AirlightPanel airlight_tail_panel(AirlightScene s_5, AirlightCanonical g_7, floa
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_6 = (yc_2 + (r_8 * _e23));
-            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_6);
+            float y_7 = (yc_2 + (r_8 * _e23));
+            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_7);
             uint _e27 = i_9;
-            samples_2[_e27] = (_e26 / (1.0 + (y_6 * y_6)));
+            samples_2[_e27] = (_e26 / (1.0 + (y_7 * y_7)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
@@ -2252,80 +2252,171 @@ vec2 airlight_crossings(float sigma_7, float d_el, float d_c, float k_4) {
     return vec2(_e63, _e64);
 }
 
-float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, AirlightHalf half_9, bool isotropic, inout float f_max_5) {
+float airlight_cosine(AirlightCanonical g_10, float sigma_8, float y_3) {
+    float y2_1 = (y_3 * y_3);
+    return ((((1.0 - y2_1) * (sigma_8 * g_10.d_el)) + ((y_3 + y_3) * g_10.d_c)) / (1.0 + y2_1));
+}
+
+bool airlight_dark(AirlightCanonical g_11, float sigma_9, AirlightHalf half_9, float bound, float lo_1, float hi_1) {
+    bool local_17 = false;
+    bool local_18 = false;
+    float y1_ = 0.0;
+    bool local_19 = false;
+    bool local_20 = false;
+    bool local_21 = false;
+    bool local_22 = false;
+    float _e9 = airlight_cosine(g_11, sigma_9, (0.5 * (lo_1 + hi_1)));
+    if (!((_e9 < bound))) {
+        return false;
+    }
+    if ((lo_1 == half_9.y_lo)) {
+        float _e17 = airlight_cosine(g_11, sigma_9, lo_1);
+        local_17 = !((_e17 < bound));
+    } else {
+        local_17 = false;
+    }
+    bool _e21 = local_17;
+    if (_e21) {
+        return false;
+    }
+    if ((hi_1 == half_9.y_hi)) {
+        float _e27 = airlight_cosine(g_11, sigma_9, hi_1);
+        local_18 = !((_e27 < bound));
+    } else {
+        local_18 = false;
+    }
+    bool _e31 = local_18;
+    if (_e31) {
+        return false;
+    }
+    float a_20 = (sigma_9 * g_11.d_el);
+    float d_2 = g_11.d_c;
+    if ((d_2 == 0.0)) {
+        return true;
+    }
+    float root_1 = sqrt(((a_20 * a_20) + (d_2 * d_2)));
+    y1_ = ((root_1 - a_20) / d_2);
+    if ((a_20 > 0.0)) {
+        y1_ = (d_2 / (a_20 + root_1));
+    }
+    float _e50 = y1_;
+    float y2_2 = (-1.0 / _e50);
+    float _e53 = y1_;
+    if ((_e53 > lo_1)) {
+        float _e57 = y1_;
+        local_19 = (_e57 < hi_1);
+    } else {
+        local_19 = false;
+    }
+    bool _e60 = local_19;
+    if (_e60) {
+        float _e63 = y1_;
+        float _e64 = airlight_cosine(g_11, sigma_9, _e63);
+        local_20 = !((_e64 < bound));
+    } else {
+        local_20 = false;
+    }
+    bool _e68 = local_20;
+    if (_e68) {
+        return false;
+    }
+    if ((y2_2 > lo_1)) {
+        local_21 = (y2_2 < hi_1);
+    } else {
+        local_21 = false;
+    }
+    bool _e75 = local_21;
+    if (_e75) {
+        float _e78 = airlight_cosine(g_11, sigma_9, y2_2);
+        local_22 = !((_e78 < bound));
+    } else {
+        local_22 = false;
+    }
+    bool _e82 = local_22;
+    if (_e82) {
+        return false;
+    }
+    return true;
+}
+
+float airlight_half(AirlightScene s_8, AirlightCanonical g_12, float sigma_10, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
+    float dark_below = -1.0;
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_12 = 0u;
-    bool local_17 = false;
+    bool local_23 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
     float total_2 = 0.0;
-    float lo_1 = 0.0;
+    float lo_2 = 0.0;
     uint i_14 = 0u;
-    float hi_1 = 0.0;
-    bool local_18 = false;
-    bool local_19 = false;
+    float hi_2 = 0.0;
+    bool local_24 = false;
+    bool local_25 = false;
+    bool local_26 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_8, g_10, sigma_8, (half_9.y_lo + (half_9.dy * 0.5)));
-        float _e12 = airlight_moment_zero(half_9);
+        float _e11 = airlight_integrand(s_8, g_12, sigma_10, (half_10.y_lo + (half_10.dy * 0.5)));
+        float _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
     if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         k_in = s_8.light_param_a;
         k_out = s_8.light_param_b;
-        float _e27 = k_in;
-        float _e28 = k_out;
-        float width_1 = (_e27 - _e28);
+        float _e29 = k_in;
+        float _e30 = k_out;
+        float width_1 = (_e29 - _e30);
         if ((width_1 <= AIRLIGHT_FLT_EPS)) {
-            float _e32 = k_out;
-            k_in = (_e32 + (width_1 * 0.5));
-            float _e36 = k_in;
-            k_out = _e36;
+            float _e34 = k_out;
+            k_in = (_e34 + (width_1 * 0.5));
+            float _e38 = k_in;
+            k_out = _e38;
         }
-        float _e39 = k_in;
-        vec2 _e40 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e39);
-        float _e43 = k_out;
-        vec2 _e44 = airlight_crossings(sigma_8, g_10.d_el, g_10.d_c, _e43);
-        cuts = float[4](_e40.x, _e40.y, _e44.x, _e44.y);
+        float _e39 = k_out;
+        dark_below = _e39;
+        float _e42 = k_in;
+        vec2 _e43 = airlight_crossings(sigma_10, g_12.d_el, g_12.d_c, _e42);
+        float _e46 = k_out;
+        vec2 _e47 = airlight_crossings(sigma_10, g_12.d_el, g_12.d_c, _e46);
+        cuts = float[4](_e43.x, _e43.y, _e47.x, _e47.y);
         bool loop_init_19 = true;
         while(true) {
             if (!loop_init_19) {
-                uint _e74 = i_12;
-                i_12 = (_e74 + 1u);
+                uint _e77 = i_12;
+                i_12 = (_e77 + 1u);
             }
             loop_init_19 = false;
-            uint _e52 = i_12;
-            if ((_e52 < 4u)) {
+            uint _e55 = i_12;
+            if ((_e55 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e55 = i_12;
-                float _e57 = cuts[_e55];
-                if ((_e57 > half_9.y_lo)) {
-                    uint _e62 = i_12;
-                    float _e64 = cuts[_e62];
-                    local_17 = (_e64 < half_9.y_hi);
+                uint _e58 = i_12;
+                float _e60 = cuts[_e58];
+                if ((_e60 > half_10.y_lo)) {
+                    uint _e65 = i_12;
+                    float _e67 = cuts[_e65];
+                    local_23 = (_e67 < half_10.y_hi);
                 } else {
-                    local_17 = false;
+                    local_23 = false;
                 }
-                bool _e68 = local_17;
-                if (!(_e68)) {
-                    uint _e70 = i_12;
-                    cuts[_e70] = 2.0;
+                bool _e71 = local_23;
+                if (!(_e71)) {
+                    uint _e73 = i_12;
+                    cuts[_e73] = 2.0;
                 }
             }
         }
         bool loop_init_20 = true;
         while(true) {
             if (!loop_init_20) {
-                uint _e115 = i_13;
-                i_13 = (_e115 + 1u);
+                uint _e118 = i_13;
+                i_13 = (_e118 + 1u);
             }
             loop_init_20 = false;
-            uint _e78 = i_13;
-            if ((_e78 < 3u)) {
+            uint _e81 = i_13;
+            if ((_e81 < 3u)) {
             } else {
                 break;
             }
@@ -2334,92 +2425,104 @@ float airlight_half(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, Ai
                 bool loop_init_21 = true;
                 while(true) {
                     if (!loop_init_21) {
-                        uint _e112 = j_2;
-                        j_2 = (_e112 + 1u);
+                        uint _e115 = j_2;
+                        j_2 = (_e115 + 1u);
                     }
                     loop_init_21 = false;
-                    uint _e83 = j_2;
-                    uint _e85 = i_13;
-                    if ((_e83 < (3u - _e85))) {
+                    uint _e86 = j_2;
+                    uint _e88 = i_13;
+                    if ((_e86 < (3u - _e88))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e88 = j_2;
-                        float _e90 = cuts[_e88];
                         uint _e91 = j_2;
-                        float _e95 = cuts[(_e91 + 1u)];
-                        if ((_e90 > _e95)) {
-                            uint _e97 = j_2;
-                            float t_5 = cuts[_e97];
+                        float _e93 = cuts[_e91];
+                        uint _e94 = j_2;
+                        float _e98 = cuts[(_e94 + 1u)];
+                        if ((_e93 > _e98)) {
                             uint _e100 = j_2;
-                            uint _e102 = j_2;
-                            float _e106 = cuts[(_e102 + 1u)];
-                            cuts[_e100] = _e106;
-                            uint _e107 = j_2;
-                            cuts[(_e107 + 1u)] = t_5;
+                            float t_5 = cuts[_e100];
+                            uint _e103 = j_2;
+                            uint _e105 = j_2;
+                            float _e109 = cuts[(_e105 + 1u)];
+                            cuts[_e103] = _e109;
+                            uint _e110 = j_2;
+                            cuts[(_e110 + 1u)] = t_5;
                         }
                     }
                 }
             }
         }
     }
-    lo_1 = half_9.y_lo;
+    lo_2 = half_10.y_lo;
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e165 = i_14;
-            i_14 = (_e165 + 1u);
+            uint _e180 = i_14;
+            i_14 = (_e180 + 1u);
         }
         loop_init_22 = false;
-        uint _e123 = i_14;
-        if ((_e123 < 5u)) {
+        uint _e126 = i_14;
+        if ((_e126 < 5u)) {
         } else {
             break;
         }
         {
-            hi_1 = half_9.y_hi;
-            uint _e128 = i_14;
-            if ((_e128 < 4u)) {
-                uint _e133 = i_14;
-                float _e135 = cuts[_e133];
-                local_18 = (_e135 < 2.0);
+            hi_2 = half_10.y_hi;
+            uint _e131 = i_14;
+            if ((_e131 < 4u)) {
+                uint _e136 = i_14;
+                float _e138 = cuts[_e136];
+                local_24 = (_e138 < 2.0);
             } else {
-                local_18 = false;
+                local_24 = false;
             }
-            bool _e139 = local_18;
-            if (_e139) {
-                uint _e140 = i_14;
-                float _e142 = cuts[_e140];
-                hi_1 = _e142;
+            bool _e142 = local_24;
+            if (_e142) {
+                uint _e143 = i_14;
+                float _e145 = cuts[_e143];
+                hi_2 = _e145;
             }
-            float _e143 = hi_1;
-            float _e144 = lo_1;
-            if ((_e143 > _e144)) {
-                float _e146 = total_2;
-                float _e147 = lo_1;
-                float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_8, g_10, sigma_8, half_9, _e147, _e148, f_max_5);
-                total_2 = (_e146 + _e149);
-                float _e151 = hi_1;
-                lo_1 = _e151;
+            float _e146 = hi_2;
+            float _e147 = lo_2;
+            if ((_e146 > _e147)) {
+                if ((s_8.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+                    float _e154 = dark_below;
+                    float _e155 = lo_2;
+                    float _e156 = hi_2;
+                    bool _e157 = airlight_dark(g_12, sigma_10, half_10, _e154, _e155, _e156);
+                    local_25 = _e157;
+                } else {
+                    local_25 = false;
+                }
+                bool _e159 = local_25;
+                if (!(_e159)) {
+                    float _e161 = total_2;
+                    float _e162 = lo_2;
+                    float _e163 = hi_2;
+                    float _e164 = airlight_integrate_piece(s_8, g_12, sigma_10, half_10, _e162, _e163, f_max_5);
+                    total_2 = (_e161 + _e164);
+                }
+                float _e166 = hi_2;
+                lo_2 = _e166;
             }
-            uint _e152 = i_14;
-            if ((_e152 < 4u)) {
-                uint _e157 = i_14;
-                float _e159 = cuts[_e157];
-                local_19 = (_e159 >= 2.0);
+            uint _e167 = i_14;
+            if ((_e167 < 4u)) {
+                uint _e172 = i_14;
+                float _e174 = cuts[_e172];
+                local_26 = (_e174 >= 2.0);
             } else {
-                local_19 = false;
+                local_26 = false;
             }
-            bool _e163 = local_19;
-            if (_e163) {
+            bool _e178 = local_26;
+            if (_e178) {
                 break;
             }
         }
     }
-    float _e167 = total_2;
-    return _e167;
+    float _e182 = total_2;
+    return _e182;
 }
 
 float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, float j_3) {
@@ -2434,34 +2537,34 @@ float airlight_weighted(float sigma_s, float intensity, float h_1, float x_7, fl
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-float airlight_on_line(AirlightScene s_9, AirlightCanonical g_11) {
-    bool local_20 = false;
+float airlight_on_line(AirlightScene s_9, AirlightCanonical g_13) {
+    bool local_27 = false;
     float span = 0.0;
     float e2_[10] = float[10](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
-    if (!(g_11.t_hi_infinite)) {
-        local_20 = (g_11.x_h > g_11.t_hi);
+    if (!(g_13.t_hi_infinite)) {
+        local_27 = (g_13.x_h > g_13.t_hi);
     } else {
-        local_20 = false;
+        local_27 = false;
     }
-    bool _e10 = local_20;
+    bool _e10 = local_27;
     if (_e10) {
-        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_11.d_el));
+        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
         float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
         float f_2 = (_e16 * _e22);
-        float r0_ = (g_11.x_h - g_11.t_lo);
-        float r1_1 = (g_11.x_h - g_11.t_hi);
-        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_2 * (((g_11.t_hi - g_11.t_lo) / r0_) / r1_1)));
+        float r0_ = (g_13.x_h - g_13.t_lo);
+        float r1_1 = (g_13.x_h - g_13.t_hi);
+        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * r0_), (f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_11.d_el);
+    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
     float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
     float f_3 = (_e46 * _e52);
-    float s0_ = (g_11.t_lo - g_11.x_h);
-    float s1_ = (g_11.t_hi - g_11.x_h);
+    float s0_ = (g_13.t_lo - g_13.x_h);
+    float s1_ = (g_13.t_hi - g_13.x_h);
     if ((s_9.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_11.t_hi_infinite)) {
+        if (!(g_13.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
@@ -2473,7 +2576,7 @@ float airlight_on_line(AirlightScene s_9, AirlightCanonical g_11) {
     e2_ = _e82;
     float _e90 = e2_[1];
     float _e93 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * s0_), ((f_3 * _e90) / s0_));
-    if (!(g_11.t_hi_infinite)) {
+    if (!(g_13.t_hi_infinite)) {
         float _e99[10] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
@@ -2498,37 +2601,37 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_h_1) {
+float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_14, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_21 = false;
-    bool local_22 = false;
+    bool local_28 = false;
+    bool local_29 = false;
     float x_8 = 0.0;
-    float h_2 = g_12.h;
-    float a_s = ((g_12.x_h - g_12.t_lo) / h_2);
+    float h_2 = g_14.h;
+    float a_s = ((g_14.x_h - g_14.t_lo) / h_2);
     float _e8 = airlight_hypot_one(a_s);
     float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_12.t_hi - g_12.x_h) / h_2);
-    if (!(g_12.t_hi_infinite)) {
+    float u_e = ((g_14.t_hi - g_14.x_h) / h_2);
+    if (!(g_14.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_21 = _e24;
+        local_28 = _e24;
     } else {
-        local_21 = false;
+        local_28 = false;
     }
-    bool _e26 = local_21;
+    bool _e26 = local_28;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_12.t_hi - g_12.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_22 = _e40;
+            local_29 = _e40;
         } else {
-            local_22 = false;
+            local_29 = false;
         }
-        bool _e42 = local_22;
+        bool _e42 = local_29;
         if (_e42) {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -2542,16 +2645,16 @@ float airlight_whole_line(AirlightScene s_10, AirlightCanonical g_12, float big_
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_10, g_12, -1.0, _e9);
-    float _e55 = airlight_moment_zero(half_12);
+    AirlightHalf half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
+    float _e55 = airlight_moment_zero(half_13);
     float j_5 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
         if ((s_10.sigma_t > 0.0)) {
-            x_8 = (s_10.sigma_t * abs((g_12.x_h - g_12.t_lo)));
+            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
         }
     }
     float _e72 = x_8;
@@ -2567,72 +2670,72 @@ float airlight_cut_length(float big_h_2, float v_s) {
     return (e_1 * inv_h);
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_13) {
-    bool local_23 = false;
-    bool local_24 = false;
-    bool local_25 = false;
-    bool local_26 = false;
-    float gap = 0.0;
-    bool local_27 = false;
-    bool local_28 = false;
-    bool local_29 = false;
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonical g_15) {
     bool local_30 = false;
     bool local_31 = false;
     bool local_32 = false;
     bool local_33 = false;
+    float gap = 0.0;
     bool local_34 = false;
     bool local_35 = false;
     bool local_36 = false;
+    bool local_37 = false;
+    bool local_38 = false;
+    bool local_39 = false;
+    bool local_40 = false;
+    bool local_41 = false;
+    bool local_42 = false;
+    bool local_43 = false;
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
-    bool local_37 = false;
-    AirlightHalf half_10 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_38 = false;
-    bool local_39 = false;
-    bool local_40 = false;
+    bool local_44 = false;
+    AirlightHalf half_11 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_45 = false;
+    bool local_46 = false;
+    bool local_47 = false;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = 0.0;
     bool infinite_2 = true;
-    bool local_41 = false;
-    bool local_42 = false;
-    AirlightHalf half_11 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_43 = false;
-    bool local_44 = false;
-    bool local_45 = false;
-    float t0_ = g_13.t_lo;
-    float t1_ = g_13.t_hi;
-    if (!(g_13.t_hi_infinite)) {
-        local_23 = (t1_ > t0_);
+    bool local_48 = false;
+    bool local_49 = false;
+    AirlightHalf half_12 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_50 = false;
+    bool local_51 = false;
+    bool local_52 = false;
+    float t0_ = g_15.t_lo;
+    float t1_ = g_15.t_hi;
+    if (!(g_15.t_hi_infinite)) {
+        local_30 = (t1_ > t0_);
     } else {
-        local_23 = true;
+        local_30 = true;
     }
-    bool _e10 = local_23;
+    bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_24 = ((s_11.sigma_s * s_11.intensity) == 0.0);
+        local_31 = ((s_11.sigma_s * s_11.intensity) == 0.0);
     } else {
-        local_24 = true;
+        local_31 = true;
     }
-    bool _e21 = local_24;
+    bool _e21 = local_31;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
-    float h_3 = g_13.h;
-    float x_h = g_13.x_h;
+    float h_3 = g_15.h;
+    float x_h = g_15.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_13.t_hi_infinite)) {
-            local_26 = (x_h <= t1_);
+        if (!(g_15.t_hi_infinite)) {
+            local_33 = (x_h <= t1_);
         } else {
-            local_26 = true;
+            local_33 = true;
         }
-        bool _e36 = local_26;
-        local_25 = _e36;
+        bool _e36 = local_33;
+        local_32 = _e36;
     } else {
-        local_25 = false;
+        local_32 = false;
     }
-    bool inside = local_25;
+    bool inside = local_32;
     if ((x_h < t0_)) {
         gap = (t0_ - x_h);
     } else {
@@ -2642,13 +2745,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_27 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_34 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_27 = false;
+        local_34 = false;
     }
-    bool _e55 = local_27;
+    bool _e55 = local_34;
     if (_e55) {
-        float _e56 = airlight_on_line(s_11, g_13);
+        float _e56 = airlight_on_line(s_11, g_15);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
@@ -2657,72 +2760,72 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
     float big_h_5 = (s_11.sigma_t * h_3);
     if (!((s_11.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_29 = (s_11.light_param_a == 0.0);
+            local_36 = (s_11.light_param_a == 0.0);
         } else {
-            local_29 = false;
+            local_36 = false;
         }
-        bool _e83 = local_29;
-        local_28 = _e83;
+        bool _e83 = local_36;
+        local_35 = _e83;
     } else {
-        local_28 = true;
+        local_35 = true;
     }
-    bool _e85 = local_28;
+    bool _e85 = local_35;
     if (_e85) {
         if (!((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_32 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_39 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_32 = true;
+                local_39 = true;
             }
-            bool _e104 = local_32;
+            bool _e104 = local_39;
             if (_e104) {
-                local_33 = (s_11.phase_param_a == 0.0);
+                local_40 = (s_11.phase_param_a == 0.0);
             } else {
-                local_33 = false;
+                local_40 = false;
             }
-            bool _e111 = local_33;
-            local_31 = _e111;
+            bool _e111 = local_40;
+            local_38 = _e111;
         } else {
-            local_31 = true;
+            local_38 = true;
         }
-        bool _e113 = local_31;
-        local_30 = _e113;
+        bool _e113 = local_38;
+        local_37 = _e113;
     } else {
-        local_30 = false;
+        local_37 = false;
     }
-    bool isotropic_1 = local_30;
+    bool isotropic_1 = local_37;
     if (isotropic_1) {
-        local_34 = (t0_ < x_h);
+        local_41 = (t0_ < x_h);
     } else {
-        local_34 = false;
+        local_41 = false;
     }
-    bool _e120 = local_34;
+    bool _e120 = local_41;
     if (_e120) {
-        if (!(g_13.t_hi_infinite)) {
-            local_36 = (x_h < t1_);
+        if (!(g_15.t_hi_infinite)) {
+            local_43 = (x_h < t1_);
         } else {
-            local_36 = true;
+            local_43 = true;
         }
-        bool _e129 = local_36;
-        local_35 = _e129;
+        bool _e129 = local_43;
+        local_42 = _e129;
     } else {
-        local_35 = false;
+        local_42 = false;
     }
-    bool _e131 = local_35;
+    bool _e131 = local_42;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_11, g_13, big_h_5);
+        float _e132 = airlight_whole_line(s_11, g_15, big_h_5);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
     if ((t0_ < x_h)) {
         float a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if (!(g_13.t_hi_infinite)) {
-            local_37 = (t1_ < x_h);
+        if (!(g_15.t_hi_infinite)) {
+            local_44 = (t1_ < x_h);
         } else {
-            local_37 = false;
+            local_44 = false;
         }
-        bool _e154 = local_37;
+        bool _e154 = local_44;
         if (_e154) {
             t_end = t1_;
         }
@@ -2735,42 +2838,42 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float _e162 = t_end;
         float dy_1 = (((((_e162 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
         float _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_10 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        half_11 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if (cut) {
-            float _e182 = half_10.big_h;
-            local_38 = (_e182 > 0.0);
+            float _e182 = half_11.big_h;
+            local_45 = (_e182 > 0.0);
         } else {
-            local_38 = false;
+            local_45 = false;
         }
-        bool _e186 = local_38;
+        bool _e186 = local_45;
         if (_e186) {
-            float _e188 = half_10.big_h;
+            float _e188 = half_11.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if ((_e189 < dy_1)) {
-                float _e193 = half_10.big_h;
-                half_10 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                float _e193 = half_11.big_h;
+                half_11 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_10;
-        float _e200 = airlight_half(s_11, g_13, -1.0, _e199, isotropic_1, f_max_6);
+        AirlightHalf _e199 = half_11;
+        float _e200 = airlight_half(s_11, g_15, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
         float _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
-    if (!(g_13.t_hi_infinite)) {
-        local_39 = (t1_ > x_h);
+    if (!(g_15.t_hi_infinite)) {
+        local_46 = (t1_ > x_h);
     } else {
-        local_39 = true;
+        local_46 = true;
     }
-    bool _e213 = local_39;
+    bool _e213 = local_46;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_40 = !(_e216);
+        local_47 = !(_e216);
     } else {
-        local_40 = false;
+        local_47 = false;
     }
-    bool _e219 = local_40;
+    bool _e219 = local_47;
     if (_e219) {
         float t_start = max(t0_, x_h);
         float a_s_2 = ((t_start - x_h) / h_3);
@@ -2778,24 +2881,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float _e224 = airlight_bounded(a_s_2);
         dy = _e224;
         float a_e_1 = ((t1_ - x_h) / h_3);
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_41 = _e238;
+            local_48 = _e238;
         } else {
-            local_41 = false;
+            local_48 = false;
         }
-        bool _e240 = local_41;
+        bool _e240 = local_48;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if ((_e241 > 0.0)) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_42 = _e255;
+                local_49 = _e255;
             } else {
-                local_42 = false;
+                local_49 = false;
             }
-            bool _e257 = local_42;
+            bool _e257 = local_49;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -2812,42 +2915,42 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_11 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_12 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if (cut) {
-            float _e276 = half_11.big_h;
-            local_43 = (_e276 > 0.0);
+            float _e276 = half_12.big_h;
+            local_50 = (_e276 > 0.0);
         } else {
-            local_43 = false;
+            local_50 = false;
         }
-        bool _e280 = local_43;
+        bool _e280 = local_50;
         if (_e280) {
-            float _e282 = half_11.big_h;
+            float _e282 = half_12.big_h;
             float _e285 = airlight_cut_length(_e282, (1.0 / _e224));
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_44 = (_e285 < _e290);
+                local_51 = (_e285 < _e290);
             } else {
-                local_44 = true;
+                local_51 = true;
             }
-            bool _e293 = local_44;
+            bool _e293 = local_51;
             if (_e293) {
                 float cut_y_lo = (_e224 / (1.0 + (_e224 * _e285)));
                 if ((cut_y_lo > 0.0)) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_45 = _e302;
+                    local_52 = _e302;
                 } else {
-                    local_45 = false;
+                    local_52 = false;
                 }
-                bool _e304 = local_45;
+                bool _e304 = local_52;
                 if (_e304) {
-                    float _e307 = half_11.big_h;
-                    half_11 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    float _e307 = half_12.big_h;
+                    half_12 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        AirlightHalf _e313 = half_11;
-        float _e314 = airlight_half(s_11, g_13, 1.0, _e313, isotropic_1, f_max_6);
+        AirlightHalf _e313 = half_12;
+        float _e314 = airlight_half(s_11, g_15, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
         float _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
@@ -2857,23 +2960,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_11, AirlightCanonic
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_46 = false;
-    bool local_47 = false;
+    bool local_53 = false;
+    bool local_54 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_46 = _e6;
+        local_53 = _e6;
     } else {
-        local_46 = false;
+        local_53 = false;
     }
-    bool _e8 = local_46;
+    bool _e8 = local_53;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_47 = _e12;
+        local_54 = _e12;
     } else {
-        local_47 = false;
+        local_54 = false;
     }
-    bool _e14 = local_47;
+    bool _e14 = local_54;
     return _e14;
 }
 
@@ -2886,15 +2989,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_48 = false;
+    bool local_55 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_48 = _e6;
+        local_55 = _e6;
     } else {
-        local_48 = false;
+        local_55 = false;
     }
-    bool _e8 = local_48;
+    bool _e8 = local_55;
     return _e8;
 }
 
@@ -2905,17 +3008,9 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_12) {
-    bool local_49 = false;
-    bool local_50 = false;
-    bool local_51 = false;
-    bool local_52 = false;
-    bool local_53 = false;
-    bool local_54 = false;
-    bool local_55 = false;
     bool local_56 = false;
     bool local_57 = false;
     bool local_58 = false;
-    bool ok = false;
     bool local_59 = false;
     bool local_60 = false;
     bool local_61 = false;
@@ -2923,6 +3018,7 @@ bool airlight_valid(AirlightScene s_12) {
     bool local_63 = false;
     bool local_64 = false;
     bool local_65 = false;
+    bool ok = false;
     bool local_66 = false;
     bool local_67 = false;
     bool local_68 = false;
@@ -2939,101 +3035,108 @@ bool airlight_valid(AirlightScene s_12) {
     bool local_79 = false;
     bool local_80 = false;
     bool local_81 = false;
+    bool local_82 = false;
+    bool local_83 = false;
+    bool local_84 = false;
+    bool local_85 = false;
+    bool local_86 = false;
+    bool local_87 = false;
+    bool local_88 = false;
     bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_12.dir);
-        local_49 = _e6;
-    } else {
-        local_49 = false;
-    }
-    bool _e8 = local_49;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_12.dir);
-        local_50 = _e12;
-    } else {
-        local_50 = false;
-    }
-    bool _e14 = local_50;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_12.t_min);
-        local_51 = _e18;
-    } else {
-        local_51 = false;
-    }
-    bool _e20 = local_51;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_12.light_position);
-        local_52 = _e24;
-    } else {
-        local_52 = false;
-    }
-    bool _e26 = local_52;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_12.intensity);
-        local_53 = _e30;
-    } else {
-        local_53 = false;
-    }
-    bool _e32 = local_53;
-    if (_e32) {
-        local_54 = (s_12.intensity >= 0.0);
-    } else {
-        local_54 = false;
-    }
-    bool _e39 = local_54;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_12.sigma_s);
-        local_55 = _e43;
-    } else {
-        local_55 = false;
-    }
-    bool _e45 = local_55;
-    if (_e45) {
-        local_56 = (s_12.sigma_s >= 0.0);
+        local_56 = _e6;
     } else {
         local_56 = false;
     }
-    bool _e52 = local_56;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_12.sigma_t);
-        local_57 = _e56;
+    bool _e8 = local_56;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_12.dir);
+        local_57 = _e12;
     } else {
         local_57 = false;
     }
-    bool _e58 = local_57;
-    if (_e58) {
-        local_58 = (s_12.sigma_t >= 0.0);
+    bool _e14 = local_57;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_12.t_min);
+        local_58 = _e18;
     } else {
         local_58 = false;
     }
-    bool _e65 = local_58;
+    bool _e20 = local_58;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_12.light_position);
+        local_59 = _e24;
+    } else {
+        local_59 = false;
+    }
+    bool _e26 = local_59;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_12.intensity);
+        local_60 = _e30;
+    } else {
+        local_60 = false;
+    }
+    bool _e32 = local_60;
+    if (_e32) {
+        local_61 = (s_12.intensity >= 0.0);
+    } else {
+        local_61 = false;
+    }
+    bool _e39 = local_61;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_12.sigma_s);
+        local_62 = _e43;
+    } else {
+        local_62 = false;
+    }
+    bool _e45 = local_62;
+    if (_e45) {
+        local_63 = (s_12.sigma_s >= 0.0);
+    } else {
+        local_63 = false;
+    }
+    bool _e52 = local_63;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_12.sigma_t);
+        local_64 = _e56;
+    } else {
+        local_64 = false;
+    }
+    bool _e58 = local_64;
+    if (_e58) {
+        local_65 = (s_12.sigma_t >= 0.0);
+    } else {
+        local_65 = false;
+    }
+    bool _e65 = local_65;
     ok = _e65;
     if (((s_12.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_12.t_max);
-            local_59 = _e76;
+            local_66 = _e76;
         } else {
-            local_59 = false;
+            local_66 = false;
         }
-        bool _e78 = local_59;
+        bool _e78 = local_66;
         if (_e78) {
-            local_60 = (s_12.t_min <= s_12.t_max);
+            local_67 = (s_12.t_min <= s_12.t_max);
         } else {
-            local_60 = false;
+            local_67 = false;
         }
-        bool _e85 = local_60;
+        bool _e85 = local_67;
         ok = _e85;
     }
     if ((s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_12.light_end);
-            local_61 = _e93;
+            local_68 = _e93;
         } else {
-            local_61 = false;
+            local_68 = false;
         }
-        bool _e95 = local_61;
+        bool _e95 = local_68;
         ok = _e95;
     } else {
         if ((s_12.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -3044,37 +3147,37 @@ bool airlight_valid(AirlightScene s_12) {
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_12.brdf_albedo);
-            local_62 = _e107;
+            local_69 = _e107;
         } else {
-            local_62 = false;
+            local_69 = false;
         }
-        bool _e109 = local_62;
+        bool _e109 = local_69;
         if (_e109) {
-            local_63 = (s_12.brdf_albedo >= 0.0);
+            local_70 = (s_12.brdf_albedo >= 0.0);
         } else {
-            local_63 = false;
+            local_70 = false;
         }
-        bool _e116 = local_63;
+        bool _e116 = local_70;
         if (_e116) {
-            local_64 = (s_12.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_12.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_64 = false;
+            local_71 = false;
         }
-        bool _e123 = local_64;
+        bool _e123 = local_71;
         if (_e123) {
-            local_65 = (s_12.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_12.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_65 = false;
+            local_72 = false;
         }
-        bool _e130 = local_65;
+        bool _e130 = local_72;
         if (_e130) {
             float _e136 = airlight_safe_length((s_12.light_position - s_12.origin));
             bool _e137 = airlight_is_finite(_e136);
-            local_66 = _e137;
+            local_73 = _e137;
         } else {
-            local_66 = false;
+            local_73 = false;
         }
-        bool _e139 = local_66;
+        bool _e139 = local_73;
         ok = _e139;
     } else {
         if ((s_12.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -3085,72 +3188,72 @@ bool airlight_valid(AirlightScene s_12) {
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_12.light_axis);
-            local_67 = _e151;
+            local_74 = _e151;
         } else {
-            local_67 = false;
+            local_74 = false;
         }
-        bool _e153 = local_67;
+        bool _e153 = local_74;
         if (_e153) {
             bool _e157 = airlight_normalisable(s_12.light_axis);
-            local_68 = _e157;
+            local_75 = _e157;
         } else {
-            local_68 = false;
+            local_75 = false;
         }
-        bool _e159 = local_68;
+        bool _e159 = local_75;
         if (_e159) {
-            local_69 = (s_12.light_param_a >= 0.0);
+            local_76 = (s_12.light_param_a >= 0.0);
         } else {
-            local_69 = false;
+            local_76 = false;
         }
-        bool _e166 = local_69;
+        bool _e166 = local_76;
         if (_e166) {
-            local_70 = (s_12.light_param_a <= 1024.0);
+            local_77 = (s_12.light_param_a <= 1024.0);
         } else {
-            local_70 = false;
+            local_77 = false;
         }
-        bool _e173 = local_70;
+        bool _e173 = local_77;
         if (_e173) {
-            local_71 = (fract((s_12.light_param_a * 0.5)) == 0.0);
+            local_78 = (fract((s_12.light_param_a * 0.5)) == 0.0);
         } else {
-            local_71 = false;
+            local_78 = false;
         }
-        bool _e183 = local_71;
+        bool _e183 = local_78;
         ok = _e183;
     } else {
         if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_12.light_axis);
-                local_72 = _e191;
+                local_79 = _e191;
             } else {
-                local_72 = false;
+                local_79 = false;
             }
-            bool _e193 = local_72;
+            bool _e193 = local_79;
             if (_e193) {
                 bool _e197 = airlight_normalisable(s_12.light_axis);
-                local_73 = _e197;
+                local_80 = _e197;
             } else {
-                local_73 = false;
+                local_80 = false;
             }
-            bool _e199 = local_73;
+            bool _e199 = local_80;
             if (_e199) {
-                local_74 = (s_12.light_param_b < s_12.light_param_a);
+                local_81 = (s_12.light_param_b < s_12.light_param_a);
             } else {
-                local_74 = false;
+                local_81 = false;
             }
-            bool _e206 = local_74;
+            bool _e206 = local_81;
             if (_e206) {
-                local_75 = (s_12.light_param_b >= -1.0);
+                local_82 = (s_12.light_param_b >= -1.0);
             } else {
-                local_75 = false;
+                local_82 = false;
             }
-            bool _e213 = local_75;
+            bool _e213 = local_82;
             if (_e213) {
-                local_76 = (s_12.light_param_a <= 1.0);
+                local_83 = (s_12.light_param_a <= 1.0);
             } else {
-                local_76 = false;
+                local_83 = false;
             }
-            bool _e220 = local_76;
+            bool _e220 = local_83;
             ok = _e220;
         } else {
             if ((s_12.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -3169,40 +3272,40 @@ bool airlight_valid(AirlightScene s_12) {
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_77 = g_ok;
+                local_84 = g_ok;
             } else {
-                local_77 = false;
+                local_84 = false;
             }
-            bool _e234 = local_77;
+            bool _e234 = local_84;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_78 = g_ok;
+                local_85 = g_ok;
             } else {
-                local_78 = false;
+                local_85 = false;
             }
-            bool _e239 = local_78;
+            bool _e239 = local_85;
             if (_e239) {
-                local_79 = (abs(s_12.phase_param_b) < 1.0);
+                local_86 = (abs(s_12.phase_param_b) < 1.0);
             } else {
-                local_79 = false;
+                local_86 = false;
             }
-            bool _e247 = local_79;
+            bool _e247 = local_86;
             if (_e247) {
-                local_80 = (s_12.phase_param_c >= 0.0);
+                local_87 = (s_12.phase_param_c >= 0.0);
             } else {
-                local_80 = false;
+                local_87 = false;
             }
-            bool _e254 = local_80;
+            bool _e254 = local_87;
             if (_e254) {
-                local_81 = (s_12.phase_param_c <= 1.0);
+                local_88 = (s_12.phase_param_c <= 1.0);
             } else {
-                local_81 = false;
+                local_88 = false;
             }
-            bool _e261 = local_81;
+            bool _e261 = local_88;
             ok = _e261;
             break;
         }
@@ -3274,51 +3377,51 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_82 = false;
-    bool local_83 = false;
+    bool local_89 = false;
+    bool local_90 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_83 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_90 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_83 = false;
+            local_90 = false;
         }
-        bool _e21 = local_83;
-        local_82 = _e21;
+        bool _e21 = local_90;
+        local_89 = _e21;
     } else {
-        local_82 = true;
+        local_89 = true;
     }
-    bool _e23 = local_82;
+    bool _e23 = local_89;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) {
-    bool local_84 = false;
+    bool local_91 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_85 = false;
+    bool local_92 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_14.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
     vec2 _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
-    vec3 hi_2 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_2 = vec3(_e11.y, _e17.y, _e23.y);
+    vec3 hi_3 = vec3(_e11.x, _e17.x, _e23.x);
+    vec3 lo_3 = vec3(_e11.y, _e17.y, _e23.y);
     vec3 dir = s_14.dir;
-    bool _e33 = airlight_in_exact_range(hi_2);
+    bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_84 = !(_e38);
+        local_91 = !(_e38);
     } else {
-        local_84 = true;
+        local_91 = true;
     }
-    bool _e41 = local_84;
+    bool _e41 = local_91;
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_2.y, dir.z, hi_2.z, dir.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_2.z, dir.x, hi_2.x, dir.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_2.x, dir.y, hi_2.y, dir.x, key_4);
-    vec3 w_3 = vec3((_e46 + ((lo_2.y * dir.z) - (lo_2.z * dir.y))), (_e59 + ((lo_2.z * dir.x) - (lo_2.x * dir.z))), (_e72 + ((lo_2.x * dir.y) - (lo_2.y * dir.x))));
+    float _e46 = airlight_diff_of_products(hi_3.y, dir.z, hi_3.z, dir.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_3.z, dir.x, hi_3.x, dir.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_3.x, dir.y, hi_3.y, dir.x, key_4);
+    vec3 w_3 = vec3((_e46 + ((lo_3.y * dir.z) - (lo_3.z * dir.y))), (_e59 + ((lo_3.z * dir.x) - (lo_3.x * dir.z))), (_e72 + ((lo_3.x * dir.y) - (lo_3.y * dir.x))));
     bool _e82 = airlight_vec_finite(w_3);
     if (!(_e82)) {
         return plain;
@@ -3335,11 +3438,11 @@ AirlightCanonical airlight_refined(AirlightScene s_14, AirlightCanonical plain) 
     float h_4 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_85 = (h_4 > 0.0);
+        local_92 = (h_4 > 0.0);
     } else {
-        local_85 = false;
+        local_92 = false;
     }
-    bool _e101 = local_85;
+    bool _e101 = local_92;
     if (!(_e101)) {
         return plain;
     }
@@ -3491,10 +3594,10 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
 
 float airlight_asinh(float x_11) {
     float r_3 = 0.0;
-    float a_20 = abs(x_11);
-    r_3 = (AIRLIGHT_LN_2_ + log(a_20));
-    if ((a_20 <= 4096.0)) {
-        float _e17 = airlight_log1p((a_20 + ((a_20 * a_20) / (1.0 + sqrt((1.0 + (a_20 * a_20)))))));
+    float a_21 = abs(x_11);
+    r_3 = (AIRLIGHT_LN_2_ + log(a_21));
+    if ((a_21 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_21 + ((a_21 * a_21) / (1.0 + sqrt((1.0 + (a_21 * a_21)))))));
         r_3 = _e17;
     }
     float _e18 = r_3;
@@ -3502,9 +3605,9 @@ float airlight_asinh(float x_11) {
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_14, float s_15) {
-    if ((g_14.scale > 0.0)) {
-        float _e9 = airlight_asinh(((s_15 - g_14.s_star) / g_14.scale));
+float airlight_to_w(AirlightOuter g_16, float s_15) {
+    if ((g_16.scale > 0.0)) {
+        float _e9 = airlight_asinh(((s_15 - g_16.s_star) / g_16.scale));
         return _e9;
     }
     return s_15;
@@ -3519,8 +3622,8 @@ vec2 airlight_cos_sin_half_turn(float x_12) {
 }
 
 float airlight_acos(float x_13) {
-    float a_21 = abs(x_13);
-    float _e8 = airlight_atan(sqrt(((1.0 - a_21) / (1.0 + a_21))));
+    float a_22 = abs(x_13);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_22) / (1.0 + a_22))));
     return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -3542,12 +3645,12 @@ float airlight_angle(float c_6, float s_16) {
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
-    float a_22 = (cos_a * cos_g);
+    float a_23 = (cos_a * cos_g);
     float b_17 = (sin_a * sin_g);
-    if ((b_17 <= abs(a_22))) {
-        return ((a_22 > 0.0) ? AIRLIGHT_PI : 0.0);
+    if ((b_17 <= abs(a_23))) {
+        return ((a_23 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    float _e18 = airlight_acos(clamp((-(a_22) / b_17), -1.0, 1.0));
+    float _e18 = airlight_acos(clamp((-(a_23) / b_17), -1.0, 1.0));
     return _e18;
 }
 
@@ -3556,37 +3659,37 @@ AirlightOuter airlight_outer_point(AirlightScene s_17, uint max_panels) {
 }
 
 AirlightOuter airlight_surface(AirlightScene s_18) {
-    AirlightOuter g_15 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_86 = false;
+    AirlightOuter g_17 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    bool local_93 = false;
     vec3 u = vec3(0.0);
     float cuts_1[2] = float[2](0.0, 0.0);
     uint k_5 = 0u;
     uint i_17 = 0u;
-    bool local_87 = false;
+    bool local_94 = false;
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_18, AIRLIGHT_SURFACE_PANELS);
-    g_15 = _e2;
+    g_17 = _e2;
     vec3 to_light_1 = (s_18.light_position - s_18.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_18.intensity == 0.0))) {
-        local_86 = (s_18.sigma_s == 0.0);
+        local_93 = (s_18.sigma_s == 0.0);
     } else {
-        local_86 = true;
+        local_93 = true;
     }
-    bool _e18 = local_86;
+    bool _e18 = local_93;
     if (_e18) {
-        g_15.outcome = 1u;
-        AirlightOuter _e21 = g_15;
+        g_17.outcome = 1u;
+        AirlightOuter _e21 = g_17;
         return _e21;
     }
     if (!((_e7 > 0.0))) {
-        g_15.outcome = 2u;
-        AirlightOuter _e27 = g_15;
+        g_17.outcome = 2u;
+        AirlightOuter _e27 = g_17;
         return _e27;
     }
     if ((s_18.brdf_albedo == 0.0)) {
-        g_15.outcome = 1u;
-        AirlightOuter _e33 = g_15;
+        g_17.outcome = 1u;
+        AirlightOuter _e33 = g_17;
         return _e33;
     }
     vec3 l_3 = (to_light_1 / vec3(_e7));
@@ -3600,11 +3703,11 @@ AirlightOuter airlight_surface(AirlightScene s_18) {
         vec3 _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u = _e64;
     }
-    g_15.l = l_3;
+    g_17.l = l_3;
     vec3 _e67 = u;
-    g_15.u = _e67;
-    g_15.cos_a = cos_a_1;
-    g_15.sin_a = _e41;
+    g_17.u = _e67;
+    g_17.cos_a = cos_a_1;
+    g_17.sin_a = _e41;
     float _e71 = airlight_angle(cos_a_1, _e41);
     float first = abs((1.5707964 - _e71));
     cuts_1 = float[2](first, (AIRLIGHT_PI - first));
@@ -3632,29 +3735,29 @@ AirlightOuter airlight_surface(AirlightScene s_18) {
             uint _e96 = i_17;
             float _e98 = cuts_1[_e96];
             uint _e100 = k_5;
-            float _e102 = g_15.gamma[_e100];
+            float _e102 = g_17.gamma[_e100];
             if ((_e98 > _e102)) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1[_e106];
-                local_87 = (_e108 < AIRLIGHT_PI);
+                local_94 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_87 = false;
+                local_94 = false;
             }
-            bool _e112 = local_87;
+            bool _e112 = local_94;
             if (_e112) {
                 uint _e113 = k_5;
                 k_5 = (_e113 + 1u);
                 uint _e117 = k_5;
                 uint _e119 = i_17;
                 float _e121 = cuts_1[_e119];
-                g_15.gamma[_e117] = _e121;
+                g_17.gamma[_e117] = _e121;
             }
         }
     }
     uint _e126 = k_5;
-    g_15.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    g_17.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     uint _e132 = k_5;
-    g_15.panels = (_e132 + 1u);
+    g_17.panels = (_e132 + 1u);
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
@@ -3663,7 +3766,7 @@ AirlightOuter airlight_surface(AirlightScene s_18) {
         }
         loop_init_24 = false;
         uint _e137 = i_18;
-        uint _e139 = g_15.panels;
+        uint _e139 = g_17.panels;
         if ((_e137 <= _e139)) {
         } else {
             break;
@@ -3671,67 +3774,67 @@ AirlightOuter airlight_surface(AirlightScene s_18) {
         {
             uint _e142 = i_18;
             uint _e144 = i_18;
-            g_15.edges[_e142] = float(_e144);
+            g_17.edges[_e142] = float(_e144);
         }
     }
-    AirlightOuter _e149 = g_15;
+    AirlightOuter _e149 = g_17;
     return _e149;
 }
 
 AirlightOuter airlight_outer(AirlightScene s_19) {
-    AirlightOuter g_16 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_88 = false;
-    bool local_89 = false;
+    AirlightOuter g_18 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+    bool local_95 = false;
+    bool local_96 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_90 = false;
-    bool local_91 = false;
-    bool local_92 = false;
-    bool local_93 = false;
-    bool local_94 = false;
-    bool local_95 = false;
-    float scale = 0.0;
-    bool local_96 = false;
     bool local_97 = false;
     bool local_98 = false;
     bool local_99 = false;
     bool local_100 = false;
+    bool local_101 = false;
+    bool local_102 = false;
+    float scale = 0.0;
+    bool local_103 = false;
+    bool local_104 = false;
+    bool local_105 = false;
+    bool local_106 = false;
+    bool local_107 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
     uint i_19 = 0u;
-    bool local_101 = false;
-    bool local_102 = false;
-    bool local_103 = false;
+    bool local_108 = false;
+    bool local_109 = false;
+    bool local_110 = false;
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_104 = false;
+    bool local_111 = false;
     if ((s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         AirlightOuter _e4 = airlight_surface(s_19);
         return _e4;
     }
     AirlightOuter _e6 = airlight_outer_point(s_19, AIRLIGHT_SEGMENT_PANELS);
-    g_16 = _e6;
+    g_18 = _e6;
     if ((s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e11 = g_16;
+        AirlightOuter _e11 = g_18;
         return _e11;
     }
     vec3 ab_1 = (s_19.light_end - s_19.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_88 = (s_19.intensity == 0.0);
+        local_95 = (s_19.intensity == 0.0);
     } else {
-        local_88 = true;
+        local_95 = true;
     }
-    bool _e26 = local_88;
+    bool _e26 = local_95;
     if (!(_e26)) {
-        local_89 = (s_19.sigma_s == 0.0);
+        local_96 = (s_19.sigma_s == 0.0);
     } else {
-        local_89 = true;
+        local_96 = true;
     }
-    bool _e34 = local_89;
+    bool _e34 = local_96;
     if (_e34) {
-        g_16.outcome = 1u;
-        AirlightOuter _e37 = g_16;
+        g_18.outcome = 1u;
+        AirlightOuter _e37 = g_18;
         return _e37;
     }
     vec3 e_4 = (ab_1 / vec3(_e15));
@@ -3752,102 +3855,102 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_90 = (sin_a_1 > 0.0);
+        local_97 = (sin_a_1 > 0.0);
     } else {
-        local_90 = false;
+        local_97 = false;
     }
-    bool _e84 = local_90;
+    bool _e84 = local_97;
     if (_e84) {
         float _e87 = s_star;
-        local_91 = (_e87 >= 0.0);
+        local_98 = (_e87 >= 0.0);
     } else {
-        local_91 = false;
+        local_98 = false;
     }
-    bool _e91 = local_91;
+    bool _e91 = local_98;
     if (_e91) {
         float _e94 = s_star;
-        local_92 = (_e94 <= _e15);
+        local_99 = (_e94 <= _e15);
     } else {
-        local_92 = false;
+        local_99 = false;
     }
-    bool _e97 = local_92;
+    bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_93 = (s_19.t_min <= _e101);
+        local_100 = (s_19.t_min <= _e101);
     } else {
-        local_93 = false;
+        local_100 = false;
     }
-    bool _e104 = local_93;
+    bool _e104 = local_100;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_95 = (_e110 <= s_19.t_max);
+            local_102 = (_e110 <= s_19.t_max);
         } else {
-            local_95 = true;
+            local_102 = true;
         }
-        bool _e114 = local_95;
-        local_94 = _e114;
+        bool _e114 = local_102;
+        local_101 = _e114;
     } else {
-        local_94 = false;
+        local_101 = false;
     }
-    bool _e116 = local_94;
+    bool _e116 = local_101;
     if (_e116) {
-        g_16.outcome = 2u;
-        AirlightOuter _e119 = g_16;
+        g_18.outcome = 2u;
+        AirlightOuter _e119 = g_18;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_96 = (_e73 > 0.0);
+        local_103 = (_e73 > 0.0);
     } else {
-        local_96 = false;
+        local_103 = false;
     }
-    bool _e129 = local_96;
+    bool _e129 = local_103;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_97 = (_e136 < (_e15 + _e15));
+        local_104 = (_e136 < (_e15 + _e15));
     } else {
-        local_97 = false;
+        local_104 = false;
     }
-    bool _e140 = local_97;
+    bool _e140 = local_104;
     if (_e140) {
         float _e143 = scale;
-        local_98 = (_e143 < _e15);
+        local_105 = (_e143 < _e15);
     } else {
-        local_98 = false;
+        local_105 = false;
     }
-    bool near_2 = local_98;
+    bool near_2 = local_105;
     if (near_2) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_99 = _e154;
+        local_106 = _e154;
     } else {
-        local_99 = false;
+        local_106 = false;
     }
-    bool _e156 = local_99;
+    bool _e156 = local_106;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_100 = _e163;
+        local_107 = _e163;
     } else {
-        local_100 = false;
+        local_107 = false;
     }
-    bool _e165 = local_100;
+    bool _e165 = local_107;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_16.e = e_4;
+    g_18.e = e_4;
     float _e170 = s_star;
-    g_16.s_star = _e170;
+    g_18.s_star = _e170;
     float _e172 = scale;
-    g_16.scale = _e172;
+    g_18.scale = _e172;
     float _e178 = s_star;
     at = float[3](_e178, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
     bool loop_init_25 = true;
@@ -3865,21 +3968,21 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_19;
-                local_101 = (_e196 > 0u);
+                local_108 = (_e196 > 0u);
             } else {
-                local_101 = false;
+                local_108 = false;
             }
-            bool _e200 = local_101;
+            bool _e200 = local_108;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if ((_e201 == 2u)) {
-                local_102 = infinite_4;
+                local_109 = infinite_4;
             } else {
-                local_102 = false;
+                local_109 = false;
             }
-            bool _e207 = local_102;
+            bool _e207 = local_109;
             if (_e207) {
                 continue;
             }
@@ -3888,14 +3991,14 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
             if ((_e210 > 0.0)) {
                 uint _e215 = i_19;
                 float _e217 = at[_e215];
-                local_103 = (_e217 < _e15);
+                local_110 = (_e217 < _e15);
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            bool _e220 = local_103;
+            bool _e220 = local_110;
             if (_e220) {
                 uint _e221 = i_19;
-                AirlightOuter _e223 = g_16;
+                AirlightOuter _e223 = g_18;
                 uint _e224 = i_19;
                 float _e226 = at[_e224];
                 float _e227 = airlight_to_w(_e223, _e226);
@@ -3927,11 +4030,11 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
         cuts_2[0] = _e262;
         cuts_2[1] = c_12;
     }
-    AirlightOuter _e264 = g_16;
+    AirlightOuter _e264 = g_18;
     float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_16;
+    AirlightOuter _e268 = g_18;
     float _e270 = airlight_to_w(_e268, 0.0);
-    g_16.edges[0] = _e270;
+    g_18.edges[0] = _e270;
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
@@ -3948,34 +4051,34 @@ AirlightOuter airlight_outer(AirlightScene s_19) {
             uint _e278 = i_20;
             float _e280 = cuts_2[_e278];
             uint _e282 = n_1;
-            float _e284 = g_16.edges[_e282];
+            float _e284 = g_18.edges[_e282];
             if ((_e280 > _e284)) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2[_e288];
-                local_104 = (_e290 < _e265);
+                local_111 = (_e290 < _e265);
             } else {
-                local_104 = false;
+                local_111 = false;
             }
-            bool _e293 = local_104;
+            bool _e293 = local_111;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
                 uint _e300 = i_20;
                 float _e302 = cuts_2[_e300];
-                g_16.edges[_e298] = _e302;
+                g_18.edges[_e298] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_16.edges[(_e307 + 1u)] = _e265;
+    g_18.edges[(_e307 + 1u)] = _e265;
     uint _e312 = n_1;
-    g_16.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_16;
+    g_18.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_18;
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_17, float x_14) {
+AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_19, float x_14) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
@@ -3983,25 +4086,25 @@ AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_17, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_17.panels - 1u));
+        uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_19.panels - 1u));
         float t_6 = (x_14 - float(i_21));
-        float a_23 = g_17.gamma[i_21];
-        float b_18 = g_17.gamma[(i_21 + 1u)];
-        float gamma = (a_23 + ((((b_18 - a_23) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
-        float jacobian = ((((b_18 - a_23) * 6.0) * t_6) * (1.0 - t_6));
+        float a_24 = g_19.gamma[i_21];
+        float b_18 = g_19.gamma[(i_21 + 1u)];
+        float gamma = (a_24 + ((((b_18 - a_24) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+        float jacobian = ((((b_18 - a_24) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             return AirlightNode(_e45, 0.0);
         }
         vec2 _e48 = airlight_cos_sin_half_turn(gamma);
-        float _e53 = airlight_half_arc(g_17.cos_a, g_17.sin_a, _e48.x, _e48.y);
+        float _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             return AirlightNode(_e57, 0.0);
         }
         vec2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = (2.0 * (((g_17.cos_a * _e48.x) * _e53) + ((g_17.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_17.l) + (_e48.y * g_17.u));
+        float arc = (2.0 * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_19.l) + (_e48.y * g_19.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
@@ -4010,12 +4113,12 @@ AirlightNode airlight_outer_node(AirlightScene s_20, AirlightOuter g_17, float x
     }
     if ((s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_14;
-        if ((g_17.scale > 0.0)) {
-            at_1 = (g_17.s_star + (g_17.scale * sinh(x_14)));
-            ds = (g_17.scale * cosh(x_14));
+        if ((g_19.scale > 0.0)) {
+            at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
+            ds = (g_19.scale * cosh(x_14));
         }
         float _e115 = at_1;
-        p.light_position = (g_17.a + (_e115 * g_17.e));
+        p.light_position = (g_19.a + (_e115 * g_19.e));
         AirlightScene _e119 = p;
         float _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -4037,17 +4140,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
     float k_6 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_105 = false;
+    bool local_112 = false;
     float f = 0.0;
     AirlightResult r_4 = AirlightResult(0.0, 0u);
-    bool local_106 = false;
-    bool local_107 = false;
-    bool local_108 = false;
+    bool local_113 = false;
+    bool local_114 = false;
+    bool local_115 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_109 = false;
-    bool local_110 = false;
-    bool local_111 = false;
+    bool local_116 = false;
+    bool local_117 = false;
+    bool local_118 = false;
     bool _e1 = airlight_valid(s_21);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -4103,11 +4206,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                     uint _e89 = j_4;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_4;
-                        local_105 = (_e96 < 6u);
+                        local_112 = (_e96 < 6u);
                     } else {
-                        local_105 = false;
+                        local_112 = false;
                     }
-                    bool _e100 = local_105;
+                    bool _e100 = local_112;
                     float w_4 = (_e100 ? (c_13 - (hw_1 * node.x)) : (c_13 + (hw_1 * node.x)));
                     AirlightNode _e102 = airlight_outer_node(s_21, _e6, w_4);
                     f = 0.0;
@@ -4117,11 +4220,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                         bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_106 = _e118;
+                            local_113 = _e118;
                         } else {
-                            local_106 = false;
+                            local_113 = false;
                         }
-                        bool _e120 = local_106;
+                        bool _e120 = local_113;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4132,20 +4235,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_4.status;
-                            local_107 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_107 = true;
+                            local_114 = true;
                         }
-                        bool _e136 = local_107;
+                        bool _e136 = local_114;
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
                         if ((s_21.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_108 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_115 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_108 = false;
+                            local_115 = false;
                         }
-                        bool _e149 = local_108;
+                        bool _e149 = local_115;
                         if (_e149) {
                             AirlightResult _e150 = r_4;
                             return _e150;
@@ -4215,18 +4318,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_109 = (_e223 == _e6.max_panels);
+                                local_116 = (_e223 == _e6.max_panels);
                             } else {
-                                local_109 = true;
+                                local_116 = true;
                             }
-                            bool _e227 = local_109;
+                            bool _e227 = local_116;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_110 = !(_e231);
+                                local_117 = !(_e231);
                             } else {
-                                local_110 = true;
+                                local_117 = true;
                             }
-                            bool _e234 = local_110;
+                            bool _e234 = local_117;
                             if (_e234) {
                                 break;
                             }
@@ -4236,11 +4339,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_21) {
                             float wb_1 = _e236.y;
                             float mid_1 = (0.5 * (wa_1 + wb_1));
                             if ((mid_1 > wa_1)) {
-                                local_111 = (mid_1 < wb_1);
+                                local_118 = (mid_1 < wb_1);
                             } else {
-                                local_111 = false;
+                                local_118 = false;
                             }
-                            bool _e247 = local_111;
+                            bool _e247 = local_118;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e236.xyz, 0.0));
                                 continue;

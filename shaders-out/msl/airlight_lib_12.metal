@@ -626,8 +626,8 @@ bool airlight_in_series_region(
     metal::float2 z_5
 ) {
     float x_15 = z_5.x * AIRLIGHT_E1_INV_RE;
-    float y_3 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_15 * x_15) + (y_3 * y_3)) < 1.0;
+    float y_4 = z_5.y * AIRLIGHT_E1_INV_IM;
+    return ((x_15 * x_15) + (y_4 * y_4)) < 1.0;
 }
 
 uint airlight_cf_depth(
@@ -1181,15 +1181,15 @@ float airlight_moment_gauss(
         {
             uint _e26 = j_1;
             float xi = nodes.inner[metal::min(unsigned(_e26), 3u)].x;
-            float y_4 = yc + (hw * xi);
+            float y_5 = yc + (hw * xi);
             dv = hw * (1.0 + xi);
             if (half_.second) {
-                dv = (hw * (1.0 - xi)) / (y_4 * half_.y_hi);
+                dv = (hw * (1.0 - xi)) / (y_5 * half_.y_hi);
             }
             float _e42 = m;
             uint _e43 = j_1;
             float _e49 = dv;
-            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_4 * y_4)));
+            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_5 * y_5)));
         }
     }
     float _e61 = m;
@@ -2172,10 +2172,10 @@ AirlightPanel airlight_y_panel(
         {
             uint _e26 = i_8;
             float _e27 = airlight_node(_e6, _e26);
-            float y_5 = yc_1 + (r_7 * _e27);
-            float weight = metal::exp((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_5 * b_5));
-            float _e39 = airlight_integrand(s_5, g_8, sigma_3, y_5);
-            float over_1 = 1.0 / (1.0 + (y_5 * y_5));
+            float y_6 = yc_1 + (r_7 * _e27);
+            float weight = metal::exp((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_6 * b_5));
+            float _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
+            float over_1 = 1.0 / (1.0 + (y_6 * y_6));
             uint _e45 = i_8;
             samples_1.inner[metal::min(unsigned(_e45), 11u)] = (_e39 * over_1) * weight;
             float _e49 = f_max_2;
@@ -2353,10 +2353,10 @@ AirlightPanel airlight_tail_panel(
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_6 = yc_2 + (r_8 * _e23);
-            float _e26 = airlight_integrand(s_6, g_9, sigma_4, y_6);
+            float y_7 = yc_2 + (r_8 * _e23);
+            float _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
             uint _e27 = i_9;
-            samples_2.inner[metal::min(unsigned(_e27), 11u)] = _e26 / (1.0 + (y_6 * y_6));
+            samples_2.inner[metal::min(unsigned(_e27), 11u)] = _e26 / (1.0 + (y_7 * y_7));
             float _e33 = f_max_3;
             f_max_3 = metal::max(_e33, metal::abs(_e26));
             float _e36 = g_avg_1;
@@ -3118,78 +3118,180 @@ metal::float2 airlight_crossings(
     return metal::float2(_e63, _e64);
 }
 
-float airlight_half(
-    AirlightScene s_9,
+float airlight_cosine(
     AirlightCanonical g_12,
     float sigma_8,
+    float y_3
+) {
+    float y2_1 = y_3 * y_3;
+    return (((1.0 - y2_1) * (sigma_8 * g_12.d_el)) + ((y_3 + y_3) * g_12.d_c)) / (1.0 + y2_1);
+}
+
+bool airlight_dark(
+    AirlightCanonical g_13,
+    float sigma_9,
     AirlightHalf half_9,
+    float bound,
+    float lo_1,
+    float hi_1
+) {
+    bool local_17 = {};
+    bool local_18 = {};
+    float y1_ = {};
+    bool local_19 = {};
+    bool local_20 = {};
+    bool local_21 = {};
+    bool local_22 = {};
+    float _e9 = airlight_cosine(g_13, sigma_9, 0.5 * (lo_1 + hi_1));
+    if (!((_e9 < bound))) {
+        return false;
+    }
+    if (lo_1 == half_9.y_lo) {
+        float _e17 = airlight_cosine(g_13, sigma_9, lo_1);
+        local_17 = !((_e17 < bound));
+    } else {
+        local_17 = false;
+    }
+    bool _e21 = local_17;
+    if (_e21) {
+        return false;
+    }
+    if (hi_1 == half_9.y_hi) {
+        float _e27 = airlight_cosine(g_13, sigma_9, hi_1);
+        local_18 = !((_e27 < bound));
+    } else {
+        local_18 = false;
+    }
+    bool _e31 = local_18;
+    if (_e31) {
+        return false;
+    }
+    float a_20 = sigma_9 * g_13.d_el;
+    float d_2 = g_13.d_c;
+    if (d_2 == 0.0) {
+        return true;
+    }
+    float root_1 = metal::sqrt((a_20 * a_20) + (d_2 * d_2));
+    y1_ = (root_1 - a_20) / d_2;
+    if (a_20 > 0.0) {
+        y1_ = d_2 / (a_20 + root_1);
+    }
+    float _e50 = y1_;
+    float y2_2 = -1.0 / _e50;
+    float _e53 = y1_;
+    if (_e53 > lo_1) {
+        float _e57 = y1_;
+        local_19 = _e57 < hi_1;
+    } else {
+        local_19 = false;
+    }
+    bool _e60 = local_19;
+    if (_e60) {
+        float _e63 = y1_;
+        float _e64 = airlight_cosine(g_13, sigma_9, _e63);
+        local_20 = !((_e64 < bound));
+    } else {
+        local_20 = false;
+    }
+    bool _e68 = local_20;
+    if (_e68) {
+        return false;
+    }
+    if (y2_2 > lo_1) {
+        local_21 = y2_2 < hi_1;
+    } else {
+        local_21 = false;
+    }
+    bool _e75 = local_21;
+    if (_e75) {
+        float _e78 = airlight_cosine(g_13, sigma_9, y2_2);
+        local_22 = !((_e78 < bound));
+    } else {
+        local_22 = false;
+    }
+    bool _e82 = local_22;
+    if (_e82) {
+        return false;
+    }
+    return true;
+}
+
+float airlight_half(
+    AirlightScene s_9,
+    AirlightCanonical g_14,
+    float sigma_10,
+    AirlightHalf half_10,
     bool isotropic,
     thread float& f_max_5
 ) {
     airlight_type_14 cuts = airlight_type_14 {{2.0, 2.0, 2.0, 2.0}};
+    float dark_below = -1.0;
     float k_in = {};
     float k_out = {};
     uint i_12 = 0u;
-    bool local_17 = {};
+    bool local_23 = {};
     uint i_13 = 0u;
     uint j_2 = {};
     float total_2 = 0.0;
-    float lo_1 = {};
+    float lo_2 = {};
     uint i_14 = 0u;
-    float hi_1 = {};
-    bool local_18 = {};
-    bool local_19 = {};
+    float hi_2 = {};
+    bool local_24 = {};
+    bool local_25 = {};
+    bool local_26 = {};
     if (isotropic) {
-        float _e11 = airlight_integrand(s_9, g_12, sigma_8, half_9.y_lo + (half_9.dy * 0.5));
-        float _e12 = airlight_moment_zero(half_9);
+        float _e11 = airlight_integrand(s_9, g_14, sigma_10, half_10.y_lo + (half_10.dy * 0.5));
+        float _e12 = airlight_moment_zero(half_10);
         return _e11 * _e12;
     }
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
         k_in = s_9.light_param_a;
         k_out = s_9.light_param_b;
-        float _e27 = k_in;
-        float _e28 = k_out;
-        float width_1 = _e27 - _e28;
+        float _e29 = k_in;
+        float _e30 = k_out;
+        float width_1 = _e29 - _e30;
         if (width_1 <= AIRLIGHT_FLT_EPS) {
-            float _e32 = k_out;
-            k_in = _e32 + (width_1 * 0.5);
-            float _e36 = k_in;
-            k_out = _e36;
+            float _e34 = k_out;
+            k_in = _e34 + (width_1 * 0.5);
+            float _e38 = k_in;
+            k_out = _e38;
         }
-        float _e39 = k_in;
-        metal::float2 _e40 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e39);
-        float _e43 = k_out;
-        metal::float2 _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
-        cuts = airlight_type_14 {{_e40.x, _e40.y, _e44.x, _e44.y}};
+        float _e39 = k_out;
+        dark_below = _e39;
+        float _e42 = k_in;
+        metal::float2 _e43 = airlight_crossings(sigma_10, g_14.d_el, g_14.d_c, _e42);
+        float _e46 = k_out;
+        metal::float2 _e47 = airlight_crossings(sigma_10, g_14.d_el, g_14.d_c, _e46);
+        cuts = airlight_type_14 {{_e43.x, _e43.y, _e47.x, _e47.y}};
         uint2 loop_bound_19 = uint2(4294967295u);
         bool loop_init_19 = true;
         while(true) {
             if (metal::all(loop_bound_19 == uint2(0u))) { break; }
             loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
             if (!loop_init_19) {
-                uint _e74 = i_12;
-                i_12 = _e74 + 1u;
+                uint _e77 = i_12;
+                i_12 = _e77 + 1u;
             }
             loop_init_19 = false;
-            uint _e52 = i_12;
-            if (_e52 < 4u) {
+            uint _e55 = i_12;
+            if (_e55 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e55 = i_12;
-                float _e57 = cuts.inner[metal::min(unsigned(_e55), 3u)];
-                if (_e57 > half_9.y_lo) {
-                    uint _e62 = i_12;
-                    float _e64 = cuts.inner[metal::min(unsigned(_e62), 3u)];
-                    local_17 = _e64 < half_9.y_hi;
+                uint _e58 = i_12;
+                float _e60 = cuts.inner[metal::min(unsigned(_e58), 3u)];
+                if (_e60 > half_10.y_lo) {
+                    uint _e65 = i_12;
+                    float _e67 = cuts.inner[metal::min(unsigned(_e65), 3u)];
+                    local_23 = _e67 < half_10.y_hi;
                 } else {
-                    local_17 = false;
+                    local_23 = false;
                 }
-                bool _e68 = local_17;
-                if (!(_e68)) {
-                    uint _e70 = i_12;
-                    cuts.inner[metal::min(unsigned(_e70), 3u)] = 2.0;
+                bool _e71 = local_23;
+                if (!(_e71)) {
+                    uint _e73 = i_12;
+                    cuts.inner[metal::min(unsigned(_e73), 3u)] = 2.0;
                 }
             }
         }
@@ -3199,12 +3301,12 @@ float airlight_half(
             if (metal::all(loop_bound_20 == uint2(0u))) { break; }
             loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
             if (!loop_init_20) {
-                uint _e115 = i_13;
-                i_13 = _e115 + 1u;
+                uint _e118 = i_13;
+                i_13 = _e118 + 1u;
             }
             loop_init_20 = false;
-            uint _e78 = i_13;
-            if (_e78 < 3u) {
+            uint _e81 = i_13;
+            if (_e81 < 3u) {
             } else {
                 break;
             }
@@ -3216,95 +3318,107 @@ float airlight_half(
                     if (metal::all(loop_bound_21 == uint2(0u))) { break; }
                     loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
                     if (!loop_init_21) {
-                        uint _e112 = j_2;
-                        j_2 = _e112 + 1u;
+                        uint _e115 = j_2;
+                        j_2 = _e115 + 1u;
                     }
                     loop_init_21 = false;
-                    uint _e83 = j_2;
-                    uint _e85 = i_13;
-                    if (_e83 < (3u - _e85)) {
+                    uint _e86 = j_2;
+                    uint _e88 = i_13;
+                    if (_e86 < (3u - _e88)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e88 = j_2;
-                        float _e90 = cuts.inner[metal::min(unsigned(_e88), 3u)];
                         uint _e91 = j_2;
-                        float _e95 = cuts.inner[metal::min(unsigned(_e91 + 1u), 3u)];
-                        if (_e90 > _e95) {
-                            uint _e97 = j_2;
-                            float t_5 = cuts.inner[metal::min(unsigned(_e97), 3u)];
+                        float _e93 = cuts.inner[metal::min(unsigned(_e91), 3u)];
+                        uint _e94 = j_2;
+                        float _e98 = cuts.inner[metal::min(unsigned(_e94 + 1u), 3u)];
+                        if (_e93 > _e98) {
                             uint _e100 = j_2;
-                            uint _e102 = j_2;
-                            float _e106 = cuts.inner[metal::min(unsigned(_e102 + 1u), 3u)];
-                            cuts.inner[metal::min(unsigned(_e100), 3u)] = _e106;
-                            uint _e107 = j_2;
-                            cuts.inner[metal::min(unsigned(_e107 + 1u), 3u)] = t_5;
+                            float t_5 = cuts.inner[metal::min(unsigned(_e100), 3u)];
+                            uint _e103 = j_2;
+                            uint _e105 = j_2;
+                            float _e109 = cuts.inner[metal::min(unsigned(_e105 + 1u), 3u)];
+                            cuts.inner[metal::min(unsigned(_e103), 3u)] = _e109;
+                            uint _e110 = j_2;
+                            cuts.inner[metal::min(unsigned(_e110 + 1u), 3u)] = t_5;
                         }
                     }
                 }
             }
         }
     }
-    lo_1 = half_9.y_lo;
+    lo_2 = half_10.y_lo;
     uint2 loop_bound_22 = uint2(4294967295u);
     bool loop_init_22 = true;
     while(true) {
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e165 = i_14;
-            i_14 = _e165 + 1u;
+            uint _e180 = i_14;
+            i_14 = _e180 + 1u;
         }
         loop_init_22 = false;
-        uint _e123 = i_14;
-        if (_e123 < 5u) {
+        uint _e126 = i_14;
+        if (_e126 < 5u) {
         } else {
             break;
         }
         {
-            hi_1 = half_9.y_hi;
-            uint _e128 = i_14;
-            if (_e128 < 4u) {
-                uint _e133 = i_14;
-                float _e135 = cuts.inner[metal::min(unsigned(_e133), 3u)];
-                local_18 = _e135 < 2.0;
+            hi_2 = half_10.y_hi;
+            uint _e131 = i_14;
+            if (_e131 < 4u) {
+                uint _e136 = i_14;
+                float _e138 = cuts.inner[metal::min(unsigned(_e136), 3u)];
+                local_24 = _e138 < 2.0;
             } else {
-                local_18 = false;
+                local_24 = false;
             }
-            bool _e139 = local_18;
-            if (_e139) {
-                uint _e140 = i_14;
-                float _e142 = cuts.inner[metal::min(unsigned(_e140), 3u)];
-                hi_1 = _e142;
+            bool _e142 = local_24;
+            if (_e142) {
+                uint _e143 = i_14;
+                float _e145 = cuts.inner[metal::min(unsigned(_e143), 3u)];
+                hi_2 = _e145;
             }
-            float _e143 = hi_1;
-            float _e144 = lo_1;
-            if (_e143 > _e144) {
-                float _e146 = total_2;
-                float _e147 = lo_1;
-                float _e148 = hi_1;
-                float _e149 = airlight_integrate_piece(s_9, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
-                total_2 = _e146 + _e149;
-                float _e151 = hi_1;
-                lo_1 = _e151;
+            float _e146 = hi_2;
+            float _e147 = lo_2;
+            if (_e146 > _e147) {
+                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                    float _e154 = dark_below;
+                    float _e155 = lo_2;
+                    float _e156 = hi_2;
+                    bool _e157 = airlight_dark(g_14, sigma_10, half_10, _e154, _e155, _e156);
+                    local_25 = _e157;
+                } else {
+                    local_25 = false;
+                }
+                bool _e159 = local_25;
+                if (!(_e159)) {
+                    float _e161 = total_2;
+                    float _e162 = lo_2;
+                    float _e163 = hi_2;
+                    float _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    total_2 = _e161 + _e164;
+                }
+                float _e166 = hi_2;
+                lo_2 = _e166;
             }
-            uint _e152 = i_14;
-            if (_e152 < 4u) {
-                uint _e157 = i_14;
-                float _e159 = cuts.inner[metal::min(unsigned(_e157), 3u)];
-                local_19 = _e159 >= 2.0;
+            uint _e167 = i_14;
+            if (_e167 < 4u) {
+                uint _e172 = i_14;
+                float _e174 = cuts.inner[metal::min(unsigned(_e172), 3u)];
+                local_26 = _e174 >= 2.0;
             } else {
-                local_19 = false;
+                local_26 = false;
             }
-            bool _e163 = local_19;
-            if (_e163) {
+            bool _e178 = local_26;
+            if (_e178) {
                 break;
             }
         }
     }
-    float _e167 = total_2;
-    return _e167;
+    float _e182 = total_2;
+    return _e182;
 }
 
 float airlight_weighted(
@@ -3327,35 +3441,35 @@ float airlight_weighted(
 
 float airlight_on_line(
     AirlightScene s_10,
-    AirlightCanonical g_13
+    AirlightCanonical g_15
 ) {
-    bool local_20 = {};
+    bool local_27 = {};
     float span = {};
     airlight_type_7 e2_ = {};
     float tail = 0.0;
-    if (!(g_13.t_hi_infinite)) {
-        local_20 = g_13.x_h > g_13.t_hi;
+    if (!(g_15.t_hi_infinite)) {
+        local_27 = g_15.x_h > g_15.t_hi;
     } else {
-        local_20 = false;
+        local_27 = false;
     }
-    bool _e10 = local_20;
+    bool _e10 = local_27;
     if (_e10) {
-        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_13.d_el));
+        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
         float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
         float f_2 = _e16 * _e22;
-        float r0_ = g_13.x_h - g_13.t_lo;
-        float r1_1 = g_13.x_h - g_13.t_hi;
-        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, s_10.sigma_t * r0_, f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1));
+        float r0_ = g_15.x_h - g_15.t_lo;
+        float r1_1 = g_15.x_h - g_15.t_hi;
+        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, s_10.sigma_t * r0_, f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1));
         return _e41;
     }
-    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_13.d_el);
+    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
     float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
     float f_3 = _e46 * _e52;
-    float s0_ = g_13.t_lo - g_13.x_h;
-    float s1_ = g_13.t_hi - g_13.x_h;
+    float s0_ = g_15.t_lo - g_15.x_h;
+    float s1_ = g_15.t_hi - g_15.x_h;
     if (s_10.sigma_t == 0.0) {
         span = 1.0 / s0_;
-        if (!(g_13.t_hi_infinite)) {
+        if (!(g_15.t_hi_infinite)) {
             span = ((s1_ - s0_) / s1_) / s0_;
         }
         float _e75 = span;
@@ -3367,7 +3481,7 @@ float airlight_on_line(
     e2_ = _e82;
     float _e90 = e2_.inner[1];
     float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, s_10.sigma_t * s0_, (f_3 * _e90) / s0_);
-    if (!(g_13.t_hi_infinite)) {
+    if (!(g_15.t_hi_infinite)) {
         airlight_type_7 _e99 = airlight_en_scaled(two_st * s1_);
         e2_ = _e99;
         float _e110 = e2_.inner[1];
@@ -3398,39 +3512,39 @@ float airlight_optical(
 
 float airlight_whole_line(
     AirlightScene s_11,
-    AirlightCanonical g_14,
+    AirlightCanonical g_16,
     float big_h_1
 ) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_28 = {};
+    bool local_29 = {};
     float x_8 = 0.0;
-    float h_2 = g_14.h;
-    float a_s = (g_14.x_h - g_14.t_lo) / h_2;
+    float h_2 = g_16.h;
+    float a_s = (g_16.x_h - g_16.t_lo) / h_2;
     float _e8 = airlight_hypot_one(a_s);
     float _e9 = airlight_bounded(a_s);
-    float u_e = (g_14.t_hi - g_14.x_h) / h_2;
-    if (!(g_14.t_hi_infinite)) {
+    float u_e = (g_16.t_hi - g_16.x_h) / h_2;
+    if (!(g_16.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_21 = _e24;
+        local_28 = _e24;
     } else {
-        local_21 = false;
+        local_28 = false;
     }
-    bool _e26 = local_21;
+    bool _e26 = local_28;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
-        float dv_end = ((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27));
+        float dv_end = ((g_16.t_hi - g_16.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27));
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_22 = _e40;
+            local_29 = _e40;
         } else {
-            local_22 = false;
+            local_29 = false;
         }
-        bool _e42 = local_22;
+        bool _e42 = local_29;
         if (_e42) {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -3444,16 +3558,16 @@ float airlight_whole_line(
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_12 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
-    float _e54 = airlight_integrand(s_11, g_14, -1.0, _e9);
-    float _e55 = airlight_moment_zero(half_12);
+    AirlightHalf half_13 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
+    float _e54 = airlight_integrand(s_11, g_16, -1.0, _e9);
+    float _e55 = airlight_moment_zero(half_13);
     float j_5 = _e54 * _e55;
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = big_h_1 * _e8;
     } else {
         if (s_11.sigma_t > 0.0) {
-            x_8 = s_11.sigma_t * metal::abs(g_14.x_h - g_14.t_lo);
+            x_8 = s_11.sigma_t * metal::abs(g_16.x_h - g_16.t_lo);
         }
     }
     float _e72 = x_8;
@@ -3474,73 +3588,73 @@ float airlight_cut_length(
 
 AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_12,
-    AirlightCanonical g_15
+    AirlightCanonical g_17
 ) {
-    bool local_23 = {};
-    bool local_24 = {};
-    bool local_25 = {};
-    bool local_26 = {};
-    float gap = 0.0;
-    bool local_27 = {};
-    bool local_28 = {};
-    bool local_29 = {};
     bool local_30 = {};
     bool local_31 = {};
     bool local_32 = {};
     bool local_33 = {};
+    float gap = 0.0;
     bool local_34 = {};
     bool local_35 = {};
     bool local_36 = {};
+    bool local_37 = {};
+    bool local_38 = {};
+    bool local_39 = {};
+    bool local_40 = {};
+    bool local_41 = {};
+    bool local_42 = {};
+    bool local_43 = {};
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = {};
-    bool local_37 = {};
-    AirlightHalf half_10 = {};
-    bool local_38 = {};
-    bool local_39 = {};
-    bool local_40 = {};
+    bool local_44 = {};
+    AirlightHalf half_11 = {};
+    bool local_45 = {};
+    bool local_46 = {};
+    bool local_47 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
-    bool local_41 = {};
-    bool local_42 = {};
-    AirlightHalf half_11 = {};
-    bool local_43 = {};
-    bool local_44 = {};
-    bool local_45 = {};
-    float t0_ = g_15.t_lo;
-    float t1_ = g_15.t_hi;
-    if (!(g_15.t_hi_infinite)) {
-        local_23 = t1_ > t0_;
+    bool local_48 = {};
+    bool local_49 = {};
+    AirlightHalf half_12 = {};
+    bool local_50 = {};
+    bool local_51 = {};
+    bool local_52 = {};
+    float t0_ = g_17.t_lo;
+    float t1_ = g_17.t_hi;
+    if (!(g_17.t_hi_infinite)) {
+        local_30 = t1_ > t0_;
     } else {
-        local_23 = true;
+        local_30 = true;
     }
-    bool _e10 = local_23;
+    bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_24 = (s_12.sigma_s * s_12.intensity) == 0.0;
+        local_31 = (s_12.sigma_s * s_12.intensity) == 0.0;
     } else {
-        local_24 = true;
+        local_31 = true;
     }
-    bool _e21 = local_24;
+    bool _e21 = local_31;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
-    float h_3 = g_15.h;
-    float x_h = g_15.x_h;
+    float h_3 = g_17.h;
+    float x_h = g_17.x_h;
     if (t0_ <= x_h) {
-        if (!(g_15.t_hi_infinite)) {
-            local_26 = x_h <= t1_;
+        if (!(g_17.t_hi_infinite)) {
+            local_33 = x_h <= t1_;
         } else {
-            local_26 = true;
+            local_33 = true;
         }
-        bool _e36 = local_26;
-        local_25 = _e36;
+        bool _e36 = local_33;
+        local_32 = _e36;
     } else {
-        local_25 = false;
+        local_32 = false;
     }
-    bool inside = local_25;
+    bool inside = local_32;
     if (x_h < t0_) {
         gap = t0_ - x_h;
     } else {
@@ -3550,13 +3664,13 @@ AirlightResult airlight_in_scatter_canonical(
     }
     if (!(inside)) {
         float _e48 = gap;
-        local_27 = h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_34 = h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_27 = false;
+        local_34 = false;
     }
-    bool _e55 = local_27;
+    bool _e55 = local_34;
     if (_e55) {
-        float _e56 = airlight_on_line(s_12, g_15);
+        float _e56 = airlight_on_line(s_12, g_17);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (h_3 == 0.0) {
@@ -3565,72 +3679,72 @@ AirlightResult airlight_in_scatter_canonical(
     float big_h_5 = s_12.sigma_t * h_3;
     if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = s_12.light_param_a == 0.0;
+            local_36 = s_12.light_param_a == 0.0;
         } else {
-            local_29 = false;
+            local_36 = false;
         }
-        bool _e83 = local_29;
-        local_28 = _e83;
+        bool _e83 = local_36;
+        local_35 = _e83;
     } else {
-        local_28 = true;
+        local_35 = true;
     }
-    bool _e85 = local_28;
+    bool _e85 = local_35;
     if (_e85) {
         if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_32 = s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_39 = s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_32 = true;
+                local_39 = true;
             }
-            bool _e104 = local_32;
+            bool _e104 = local_39;
             if (_e104) {
-                local_33 = s_12.phase_param_a == 0.0;
+                local_40 = s_12.phase_param_a == 0.0;
             } else {
-                local_33 = false;
+                local_40 = false;
             }
-            bool _e111 = local_33;
-            local_31 = _e111;
+            bool _e111 = local_40;
+            local_38 = _e111;
         } else {
-            local_31 = true;
+            local_38 = true;
         }
-        bool _e113 = local_31;
-        local_30 = _e113;
+        bool _e113 = local_38;
+        local_37 = _e113;
     } else {
-        local_30 = false;
+        local_37 = false;
     }
-    bool isotropic_1 = local_30;
+    bool isotropic_1 = local_37;
     if (isotropic_1) {
-        local_34 = t0_ < x_h;
+        local_41 = t0_ < x_h;
     } else {
-        local_34 = false;
+        local_41 = false;
     }
-    bool _e120 = local_34;
+    bool _e120 = local_41;
     if (_e120) {
-        if (!(g_15.t_hi_infinite)) {
-            local_36 = x_h < t1_;
+        if (!(g_17.t_hi_infinite)) {
+            local_43 = x_h < t1_;
         } else {
-            local_36 = true;
+            local_43 = true;
         }
-        bool _e129 = local_36;
-        local_35 = _e129;
+        bool _e129 = local_43;
+        local_42 = _e129;
     } else {
-        local_35 = false;
+        local_42 = false;
     }
-    bool _e131 = local_35;
+    bool _e131 = local_42;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_12, g_15, big_h_5);
+        float _e132 = airlight_whole_line(s_12, g_17, big_h_5);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
     }
     bool cut = !(isotropic_1);
     if (t0_ < x_h) {
         float a_s_1 = (x_h - t0_) / h_3;
         t_end = x_h;
-        if (!(g_15.t_hi_infinite)) {
-            local_37 = t1_ < x_h;
+        if (!(g_17.t_hi_infinite)) {
+            local_44 = t1_ < x_h;
         } else {
-            local_37 = false;
+            local_44 = false;
         }
-        bool _e154 = local_37;
+        bool _e154 = local_44;
         if (_e154) {
             t_end = t1_;
         }
@@ -3643,42 +3757,42 @@ AirlightResult airlight_in_scatter_canonical(
         float _e162 = t_end;
         float dy_1 = ((((_e162 - t0_) / h_3) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161;
         float _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_10 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
+        half_11 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
         if (cut) {
-            float _e182 = half_10.big_h;
-            local_38 = _e182 > 0.0;
+            float _e182 = half_11.big_h;
+            local_45 = _e182 > 0.0;
         } else {
-            local_38 = false;
+            local_45 = false;
         }
-        bool _e186 = local_38;
+        bool _e186 = local_45;
         if (_e186) {
-            float _e188 = half_10.big_h;
+            float _e188 = half_11.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                float _e193 = half_10.big_h;
-                half_10 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
+                float _e193 = half_11.big_h;
+                half_11 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_10;
-        float _e200 = airlight_half(s_12, g_15, -1.0, _e199, isotropic_1, f_max_6);
+        AirlightHalf _e199 = half_11;
+        float _e200 = airlight_half(s_12, g_17, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
         float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, big_h_5 * _e158, _e200);
         total_3 = _e201 + _e205;
     }
-    if (!(g_15.t_hi_infinite)) {
-        local_39 = t1_ > x_h;
+    if (!(g_17.t_hi_infinite)) {
+        local_46 = t1_ > x_h;
     } else {
-        local_39 = true;
+        local_46 = true;
     }
-    bool _e213 = local_39;
+    bool _e213 = local_46;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_40 = !(_e216);
+        local_47 = !(_e216);
     } else {
-        local_40 = false;
+        local_47 = false;
     }
-    bool _e219 = local_40;
+    bool _e219 = local_47;
     if (_e219) {
         float t_start = metal::max(t0_, x_h);
         float a_s_2 = (t_start - x_h) / h_3;
@@ -3686,24 +3800,24 @@ AirlightResult airlight_in_scatter_canonical(
         float _e224 = airlight_bounded(a_s_2);
         dy = _e224;
         float a_e_1 = (t1_ - x_h) / h_3;
-        if (!(g_15.t_hi_infinite)) {
+        if (!(g_17.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_41 = _e238;
+            local_48 = _e238;
         } else {
-            local_41 = false;
+            local_48 = false;
         }
-        bool _e240 = local_41;
+        bool _e240 = local_48;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_ - t_start) / h_3) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245)));
             if (_e241 > 0.0) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_42 = _e255;
+                local_49 = _e255;
             } else {
-                local_42 = false;
+                local_49 = false;
             }
-            bool _e257 = local_42;
+            bool _e257 = local_49;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3720,42 +3834,42 @@ AirlightResult airlight_in_scatter_canonical(
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_11 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
+        half_12 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
         if (cut) {
-            float _e276 = half_11.big_h;
-            local_43 = _e276 > 0.0;
+            float _e276 = half_12.big_h;
+            local_50 = _e276 > 0.0;
         } else {
-            local_43 = false;
+            local_50 = false;
         }
-        bool _e280 = local_43;
+        bool _e280 = local_50;
         if (_e280) {
-            float _e282 = half_11.big_h;
+            float _e282 = half_12.big_h;
             float _e285 = airlight_cut_length(_e282, 1.0 / _e224);
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_44 = _e285 < _e290;
+                local_51 = _e285 < _e290;
             } else {
-                local_44 = true;
+                local_51 = true;
             }
-            bool _e293 = local_44;
+            bool _e293 = local_51;
             if (_e293) {
                 float cut_y_lo = _e224 / (1.0 + (_e224 * _e285));
                 if (cut_y_lo > 0.0) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_45 = _e302;
+                    local_52 = _e302;
                 } else {
-                    local_45 = false;
+                    local_52 = false;
                 }
-                bool _e304 = local_45;
+                bool _e304 = local_52;
                 if (_e304) {
-                    float _e307 = half_11.big_h;
-                    half_11 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
+                    float _e307 = half_12.big_h;
+                    half_12 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
                 }
             }
         }
-        AirlightHalf _e313 = half_11;
-        float _e314 = airlight_half(s_12, g_15, 1.0, _e313, isotropic_1, f_max_6);
+        AirlightHalf _e313 = half_12;
+        float _e314 = airlight_half(s_12, g_17, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
         float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223), _e314);
         total_3 = _e315 + _e323;
@@ -3767,23 +3881,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_46 = {};
-    bool local_47 = {};
+    bool local_53 = {};
+    bool local_54 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_46 = _e6;
+        local_53 = _e6;
     } else {
-        local_46 = false;
+        local_53 = false;
     }
-    bool _e8 = local_46;
+    bool _e8 = local_53;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_47 = _e12;
+        local_54 = _e12;
     } else {
-        local_47 = false;
+        local_54 = false;
     }
-    bool _e14 = local_47;
+    bool _e14 = local_54;
     return _e14;
 }
 
@@ -3800,15 +3914,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_48 = {};
+    bool local_55 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_48 = _e6;
+        local_55 = _e6;
     } else {
-        local_48 = false;
+        local_55 = false;
     }
-    bool _e8 = local_48;
+    bool _e8 = local_55;
     return _e8;
 }
 
@@ -3823,17 +3937,9 @@ metal::float3 airlight_normalize(
 bool airlight_valid(
     AirlightScene s_13
 ) {
-    bool local_49 = {};
-    bool local_50 = {};
-    bool local_51 = {};
-    bool local_52 = {};
-    bool local_53 = {};
-    bool local_54 = {};
-    bool local_55 = {};
     bool local_56 = {};
     bool local_57 = {};
     bool local_58 = {};
-    bool ok = {};
     bool local_59 = {};
     bool local_60 = {};
     bool local_61 = {};
@@ -3841,6 +3947,7 @@ bool airlight_valid(
     bool local_63 = {};
     bool local_64 = {};
     bool local_65 = {};
+    bool ok = {};
     bool local_66 = {};
     bool local_67 = {};
     bool local_68 = {};
@@ -3857,101 +3964,108 @@ bool airlight_valid(
     bool local_79 = {};
     bool local_80 = {};
     bool local_81 = {};
+    bool local_82 = {};
+    bool local_83 = {};
+    bool local_84 = {};
+    bool local_85 = {};
+    bool local_86 = {};
+    bool local_87 = {};
+    bool local_88 = {};
     bool _e2 = airlight_vec_finite(s_13.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_13.dir);
-        local_49 = _e6;
-    } else {
-        local_49 = false;
-    }
-    bool _e8 = local_49;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_13.dir);
-        local_50 = _e12;
-    } else {
-        local_50 = false;
-    }
-    bool _e14 = local_50;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_13.t_min);
-        local_51 = _e18;
-    } else {
-        local_51 = false;
-    }
-    bool _e20 = local_51;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_13.light_position);
-        local_52 = _e24;
-    } else {
-        local_52 = false;
-    }
-    bool _e26 = local_52;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_13.intensity);
-        local_53 = _e30;
-    } else {
-        local_53 = false;
-    }
-    bool _e32 = local_53;
-    if (_e32) {
-        local_54 = s_13.intensity >= 0.0;
-    } else {
-        local_54 = false;
-    }
-    bool _e39 = local_54;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_13.sigma_s);
-        local_55 = _e43;
-    } else {
-        local_55 = false;
-    }
-    bool _e45 = local_55;
-    if (_e45) {
-        local_56 = s_13.sigma_s >= 0.0;
+        local_56 = _e6;
     } else {
         local_56 = false;
     }
-    bool _e52 = local_56;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_13.sigma_t);
-        local_57 = _e56;
+    bool _e8 = local_56;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_13.dir);
+        local_57 = _e12;
     } else {
         local_57 = false;
     }
-    bool _e58 = local_57;
-    if (_e58) {
-        local_58 = s_13.sigma_t >= 0.0;
+    bool _e14 = local_57;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_13.t_min);
+        local_58 = _e18;
     } else {
         local_58 = false;
     }
-    bool _e65 = local_58;
+    bool _e20 = local_58;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_13.light_position);
+        local_59 = _e24;
+    } else {
+        local_59 = false;
+    }
+    bool _e26 = local_59;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_13.intensity);
+        local_60 = _e30;
+    } else {
+        local_60 = false;
+    }
+    bool _e32 = local_60;
+    if (_e32) {
+        local_61 = s_13.intensity >= 0.0;
+    } else {
+        local_61 = false;
+    }
+    bool _e39 = local_61;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_13.sigma_s);
+        local_62 = _e43;
+    } else {
+        local_62 = false;
+    }
+    bool _e45 = local_62;
+    if (_e45) {
+        local_63 = s_13.sigma_s >= 0.0;
+    } else {
+        local_63 = false;
+    }
+    bool _e52 = local_63;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_13.sigma_t);
+        local_64 = _e56;
+    } else {
+        local_64 = false;
+    }
+    bool _e58 = local_64;
+    if (_e58) {
+        local_65 = s_13.sigma_t >= 0.0;
+    } else {
+        local_65 = false;
+    }
+    bool _e65 = local_65;
     ok = _e65;
     if ((s_13.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_13.t_max);
-            local_59 = _e76;
+            local_66 = _e76;
         } else {
-            local_59 = false;
+            local_66 = false;
         }
-        bool _e78 = local_59;
+        bool _e78 = local_66;
         if (_e78) {
-            local_60 = s_13.t_min <= s_13.t_max;
+            local_67 = s_13.t_min <= s_13.t_max;
         } else {
-            local_60 = false;
+            local_67 = false;
         }
-        bool _e85 = local_60;
+        bool _e85 = local_67;
         ok = _e85;
     }
     if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_13.light_end);
-            local_61 = _e93;
+            local_68 = _e93;
         } else {
-            local_61 = false;
+            local_68 = false;
         }
-        bool _e95 = local_61;
+        bool _e95 = local_68;
         ok = _e95;
     } else {
         if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3962,37 +4076,37 @@ bool airlight_valid(
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_13.brdf_albedo);
-            local_62 = _e107;
+            local_69 = _e107;
         } else {
-            local_62 = false;
+            local_69 = false;
         }
-        bool _e109 = local_62;
+        bool _e109 = local_69;
         if (_e109) {
-            local_63 = s_13.brdf_albedo >= 0.0;
+            local_70 = s_13.brdf_albedo >= 0.0;
         } else {
-            local_63 = false;
+            local_70 = false;
         }
-        bool _e116 = local_63;
+        bool _e116 = local_70;
         if (_e116) {
-            local_64 = s_13.light_kind == AIRLIGHT_LIGHT_OMNI;
+            local_71 = s_13.light_kind == AIRLIGHT_LIGHT_OMNI;
         } else {
-            local_64 = false;
+            local_71 = false;
         }
-        bool _e123 = local_64;
+        bool _e123 = local_71;
         if (_e123) {
-            local_65 = s_13.light_shape == AIRLIGHT_SHAPE_POINT;
+            local_72 = s_13.light_shape == AIRLIGHT_SHAPE_POINT;
         } else {
-            local_65 = false;
+            local_72 = false;
         }
-        bool _e130 = local_65;
+        bool _e130 = local_72;
         if (_e130) {
             float _e136 = airlight_safe_length(s_13.light_position - s_13.origin);
             bool _e137 = airlight_is_finite(_e136);
-            local_66 = _e137;
+            local_73 = _e137;
         } else {
-            local_66 = false;
+            local_73 = false;
         }
-        bool _e139 = local_66;
+        bool _e139 = local_73;
         ok = _e139;
     } else {
         if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -4003,72 +4117,72 @@ bool airlight_valid(
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_13.light_axis);
-            local_67 = _e151;
+            local_74 = _e151;
         } else {
-            local_67 = false;
+            local_74 = false;
         }
-        bool _e153 = local_67;
+        bool _e153 = local_74;
         if (_e153) {
             bool _e157 = airlight_normalisable(s_13.light_axis);
-            local_68 = _e157;
+            local_75 = _e157;
         } else {
-            local_68 = false;
+            local_75 = false;
         }
-        bool _e159 = local_68;
+        bool _e159 = local_75;
         if (_e159) {
-            local_69 = s_13.light_param_a >= 0.0;
+            local_76 = s_13.light_param_a >= 0.0;
         } else {
-            local_69 = false;
+            local_76 = false;
         }
-        bool _e166 = local_69;
+        bool _e166 = local_76;
         if (_e166) {
-            local_70 = s_13.light_param_a <= 1024.0;
+            local_77 = s_13.light_param_a <= 1024.0;
         } else {
-            local_70 = false;
+            local_77 = false;
         }
-        bool _e173 = local_70;
+        bool _e173 = local_77;
         if (_e173) {
-            local_71 = metal::fract(s_13.light_param_a * 0.5) == 0.0;
+            local_78 = metal::fract(s_13.light_param_a * 0.5) == 0.0;
         } else {
-            local_71 = false;
+            local_78 = false;
         }
-        bool _e183 = local_71;
+        bool _e183 = local_78;
         ok = _e183;
     } else {
         if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_13.light_axis);
-                local_72 = _e191;
+                local_79 = _e191;
             } else {
-                local_72 = false;
+                local_79 = false;
             }
-            bool _e193 = local_72;
+            bool _e193 = local_79;
             if (_e193) {
                 bool _e197 = airlight_normalisable(s_13.light_axis);
-                local_73 = _e197;
+                local_80 = _e197;
             } else {
-                local_73 = false;
+                local_80 = false;
             }
-            bool _e199 = local_73;
+            bool _e199 = local_80;
             if (_e199) {
-                local_74 = s_13.light_param_b < s_13.light_param_a;
+                local_81 = s_13.light_param_b < s_13.light_param_a;
             } else {
-                local_74 = false;
+                local_81 = false;
             }
-            bool _e206 = local_74;
+            bool _e206 = local_81;
             if (_e206) {
-                local_75 = s_13.light_param_b >= -1.0;
+                local_82 = s_13.light_param_b >= -1.0;
             } else {
-                local_75 = false;
+                local_82 = false;
             }
-            bool _e213 = local_75;
+            bool _e213 = local_82;
             if (_e213) {
-                local_76 = s_13.light_param_a <= 1.0;
+                local_83 = s_13.light_param_a <= 1.0;
             } else {
-                local_76 = false;
+                local_83 = false;
             }
-            bool _e220 = local_76;
+            bool _e220 = local_83;
             ok = _e220;
         } else {
             if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -4087,40 +4201,40 @@ bool airlight_valid(
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_77 = g_ok;
+                local_84 = g_ok;
             } else {
-                local_77 = false;
+                local_84 = false;
             }
-            bool _e234 = local_77;
+            bool _e234 = local_84;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_78 = g_ok;
+                local_85 = g_ok;
             } else {
-                local_78 = false;
+                local_85 = false;
             }
-            bool _e239 = local_78;
+            bool _e239 = local_85;
             if (_e239) {
-                local_79 = metal::abs(s_13.phase_param_b) < 1.0;
+                local_86 = metal::abs(s_13.phase_param_b) < 1.0;
             } else {
-                local_79 = false;
+                local_86 = false;
             }
-            bool _e247 = local_79;
+            bool _e247 = local_86;
             if (_e247) {
-                local_80 = s_13.phase_param_c >= 0.0;
+                local_87 = s_13.phase_param_c >= 0.0;
             } else {
-                local_80 = false;
+                local_87 = false;
             }
-            bool _e254 = local_80;
+            bool _e254 = local_87;
             if (_e254) {
-                local_81 = s_13.phase_param_c <= 1.0;
+                local_88 = s_13.phase_param_c <= 1.0;
             } else {
-                local_81 = false;
+                local_88 = false;
             }
-            bool _e261 = local_81;
+            bool _e261 = local_88;
             ok = _e261;
             break;
         }
@@ -4215,21 +4329,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_82 = {};
-    bool local_83 = {};
+    bool local_89 = {};
+    bool local_90 = {};
     float m_8 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if (m_8 >= 0.0000000009313226) {
-            local_83 = m_8 <= AIRLIGHT_EXACT_RANGE;
+            local_90 = m_8 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_83 = false;
+            local_90 = false;
         }
-        bool _e21 = local_83;
-        local_82 = _e21;
+        bool _e21 = local_90;
+        local_89 = _e21;
     } else {
-        local_82 = true;
+        local_89 = true;
     }
-    bool _e23 = local_82;
+    bool _e23 = local_89;
     return _e23;
 }
 
@@ -4237,32 +4351,32 @@ AirlightCanonical airlight_refined(
     AirlightScene s_15,
     AirlightCanonical plain
 ) {
-    bool local_84 = {};
+    bool local_91 = {};
     AirlightCanonical out_2 = {};
-    bool local_85 = {};
+    bool local_92 = {};
     metal::float3 a_15 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_15.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_15.light_position[0], -(s_15.origin[0]), key_4);
     metal::float2 _e17 = airlight_two_sum(s_15.light_position[1], -(s_15.origin[1]), key_4);
     metal::float2 _e23 = airlight_two_sum(s_15.light_position[2], -(s_15.origin[2]), key_4);
-    metal::float3 hi_2 = metal::float3(_e11.x, _e17.x, _e23.x);
-    metal::float3 lo_2 = metal::float3(_e11.y, _e17.y, _e23.y);
+    metal::float3 hi_3 = metal::float3(_e11.x, _e17.x, _e23.x);
+    metal::float3 lo_3 = metal::float3(_e11.y, _e17.y, _e23.y);
     metal::float3 dir_2 = s_15.dir;
-    bool _e33 = airlight_in_exact_range(hi_2);
+    bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_84 = !(_e38);
+        local_91 = !(_e38);
     } else {
-        local_84 = true;
+        local_91 = true;
     }
-    bool _e41 = local_84;
+    bool _e41 = local_91;
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_2.y, s_15.dir[2], hi_2.z, s_15.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_2.z, s_15.dir[0], hi_2.x, s_15.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_2.x, s_15.dir[1], hi_2.y, s_15.dir[0], key_4);
-    metal::float3 w_4 = metal::float3(_e46 + ((lo_2.y * s_15.dir[2]) - (lo_2.z * s_15.dir[1])), _e59 + ((lo_2.z * s_15.dir[0]) - (lo_2.x * s_15.dir[2])), _e72 + ((lo_2.x * s_15.dir[1]) - (lo_2.y * s_15.dir[0])));
+    float _e46 = airlight_diff_of_products(hi_3.y, s_15.dir[2], hi_3.z, s_15.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_3.z, s_15.dir[0], hi_3.x, s_15.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_3.x, s_15.dir[1], hi_3.y, s_15.dir[0], key_4);
+    metal::float3 w_4 = metal::float3(_e46 + ((lo_3.y * s_15.dir[2]) - (lo_3.z * s_15.dir[1])), _e59 + ((lo_3.z * s_15.dir[0]) - (lo_3.x * s_15.dir[2])), _e72 + ((lo_3.x * s_15.dir[1]) - (lo_3.y * s_15.dir[0])));
     bool _e82 = airlight_vec_finite(w_4);
     if (!(_e82)) {
         return plain;
@@ -4279,11 +4393,11 @@ AirlightCanonical airlight_refined(
     float h_4 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_4);
     if (_e95) {
-        local_85 = h_4 > 0.0;
+        local_92 = h_4 > 0.0;
     } else {
-        local_85 = false;
+        local_92 = false;
     }
-    bool _e101 = local_85;
+    bool _e101 = local_92;
     if (!(_e101)) {
         return plain;
     }
@@ -4448,10 +4562,10 @@ float airlight_asinh(
     float x_11
 ) {
     float r_3 = {};
-    float a_20 = metal::abs(x_11);
-    r_3 = AIRLIGHT_LN_2_ + metal::log(a_20);
-    if (a_20 <= 4096.0) {
-        float _e17 = airlight_log1p(a_20 + ((a_20 * a_20) / (1.0 + metal::sqrt(1.0 + (a_20 * a_20)))));
+    float a_21 = metal::abs(x_11);
+    r_3 = AIRLIGHT_LN_2_ + metal::log(a_21);
+    if (a_21 <= 4096.0) {
+        float _e17 = airlight_log1p(a_21 + ((a_21 * a_21) / (1.0 + metal::sqrt(1.0 + (a_21 * a_21)))));
         r_3 = _e17;
     }
     float _e18 = r_3;
@@ -4460,11 +4574,11 @@ float airlight_asinh(
 }
 
 float airlight_to_w(
-    AirlightOuter g_16,
+    AirlightOuter g_18,
     float s_16
 ) {
-    if (g_16.scale > 0.0) {
-        float _e9 = airlight_asinh((s_16 - g_16.s_star) / g_16.scale);
+    if (g_18.scale > 0.0) {
+        float _e9 = airlight_asinh((s_16 - g_18.s_star) / g_18.scale);
         return _e9;
     }
     return s_16;
@@ -4483,8 +4597,8 @@ metal::float2 airlight_cos_sin_half_turn(
 float airlight_acos(
     float x_13
 ) {
-    float a_21 = metal::abs(x_13);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_21) / (1.0 + a_21)));
+    float a_22 = metal::abs(x_13);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_22) / (1.0 + a_22)));
     return (x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
@@ -4514,12 +4628,12 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_22 = cos_a * cos_g;
+    float a_23 = cos_a * cos_g;
     float b_17 = sin_a * sin_g;
-    if (b_17 <= metal::abs(a_22)) {
-        return (a_22 > 0.0) ? AIRLIGHT_PI : 0.0;
+    if (b_17 <= metal::abs(a_23)) {
+        return (a_23 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_22) / b_17, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_23) / b_17, -1.0, 1.0));
     return _e18;
 }
 
@@ -4533,37 +4647,37 @@ AirlightOuter airlight_outer_point(
 AirlightOuter airlight_surface(
     AirlightScene s_19
 ) {
-    AirlightOuter g_17 = {};
-    bool local_86 = {};
+    AirlightOuter g_19 = {};
+    bool local_93 = {};
     metal::float3 u = {};
     airlight_type_18 cuts_1 = {};
     uint k_6 = 0u;
     uint i_17 = 0u;
-    bool local_87 = {};
+    bool local_94 = {};
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
-    g_17 = _e2;
+    g_19 = _e2;
     metal::float3 to_light_1 = s_19.light_position - s_19.origin;
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_19.intensity == 0.0))) {
-        local_86 = s_19.sigma_s == 0.0;
+        local_93 = s_19.sigma_s == 0.0;
     } else {
-        local_86 = true;
+        local_93 = true;
     }
-    bool _e18 = local_86;
+    bool _e18 = local_93;
     if (_e18) {
-        g_17.outcome = 1u;
-        AirlightOuter _e21 = g_17;
+        g_19.outcome = 1u;
+        AirlightOuter _e21 = g_19;
         return _e21;
     }
     if (!((_e7 > 0.0))) {
-        g_17.outcome = 2u;
-        AirlightOuter _e27 = g_17;
+        g_19.outcome = 2u;
+        AirlightOuter _e27 = g_19;
         return _e27;
     }
     if (s_19.brdf_albedo == 0.0) {
-        g_17.outcome = 1u;
-        AirlightOuter _e33 = g_17;
+        g_19.outcome = 1u;
+        AirlightOuter _e33 = g_19;
         return _e33;
     }
     metal::float3 l_3 = to_light_1 / metal::float3(_e7);
@@ -4577,11 +4691,11 @@ AirlightOuter airlight_surface(
         metal::float3 _e64 = airlight_normalize(pick - (metal::dot(pick, l_3) * l_3));
         u = _e64;
     }
-    g_17.l = l_3;
+    g_19.l = l_3;
     metal::float3 _e67 = u;
-    g_17.u = _e67;
-    g_17.cos_a = cos_a_1;
-    g_17.sin_a = _e41;
+    g_19.u = _e67;
+    g_19.cos_a = cos_a_1;
+    g_19.sin_a = _e41;
     float _e71 = airlight_angle(cos_a_1, _e41);
     float first = metal::abs(1.5707964 - _e71);
     cuts_1 = airlight_type_18 {{first, AIRLIGHT_PI - first}};
@@ -4612,29 +4726,29 @@ AirlightOuter airlight_surface(
             uint _e96 = i_17;
             float _e98 = cuts_1.inner[metal::min(unsigned(_e96), 1u)];
             uint _e100 = k_6;
-            float _e102 = g_17.gamma.inner[metal::min(unsigned(_e100), 3u)];
+            float _e102 = g_19.gamma.inner[metal::min(unsigned(_e100), 3u)];
             if (_e98 > _e102) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1.inner[metal::min(unsigned(_e106), 1u)];
-                local_87 = _e108 < AIRLIGHT_PI;
+                local_94 = _e108 < AIRLIGHT_PI;
             } else {
-                local_87 = false;
+                local_94 = false;
             }
-            bool _e112 = local_87;
+            bool _e112 = local_94;
             if (_e112) {
                 uint _e113 = k_6;
                 k_6 = _e113 + 1u;
                 uint _e117 = k_6;
                 uint _e119 = i_17;
                 float _e121 = cuts_1.inner[metal::min(unsigned(_e119), 1u)];
-                g_17.gamma.inner[metal::min(unsigned(_e117), 3u)] = _e121;
+                g_19.gamma.inner[metal::min(unsigned(_e117), 3u)] = _e121;
             }
         }
     }
     uint _e126 = k_6;
-    g_17.gamma.inner[metal::min(unsigned(_e126 + 1u), 3u)] = AIRLIGHT_PI;
+    g_19.gamma.inner[metal::min(unsigned(_e126 + 1u), 3u)] = AIRLIGHT_PI;
     uint _e132 = k_6;
-    g_17.panels = _e132 + 1u;
+    g_19.panels = _e132 + 1u;
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
@@ -4646,7 +4760,7 @@ AirlightOuter airlight_surface(
         }
         loop_init_24 = false;
         uint _e137 = i_18;
-        uint _e139 = g_17.panels;
+        uint _e139 = g_19.panels;
         if (_e137 <= _e139) {
         } else {
             break;
@@ -4654,69 +4768,69 @@ AirlightOuter airlight_surface(
         {
             uint _e142 = i_18;
             uint _e144 = i_18;
-            g_17.edges.inner[metal::min(unsigned(_e142), 4u)] = static_cast<float>(_e144);
+            g_19.edges.inner[metal::min(unsigned(_e142), 4u)] = static_cast<float>(_e144);
         }
     }
-    AirlightOuter _e149 = g_17;
+    AirlightOuter _e149 = g_19;
     return _e149;
 }
 
 AirlightOuter airlight_outer(
     AirlightScene s_20
 ) {
-    AirlightOuter g_18 = {};
-    bool local_88 = {};
-    bool local_89 = {};
+    AirlightOuter g_20 = {};
+    bool local_95 = {};
+    bool local_96 = {};
     float s_star = 0.0;
     float t_star = {};
-    bool local_90 = {};
-    bool local_91 = {};
-    bool local_92 = {};
-    bool local_93 = {};
-    bool local_94 = {};
-    bool local_95 = {};
-    float scale = 0.0;
-    bool local_96 = {};
     bool local_97 = {};
     bool local_98 = {};
     bool local_99 = {};
     bool local_100 = {};
+    bool local_101 = {};
+    bool local_102 = {};
+    float scale = 0.0;
+    bool local_103 = {};
+    bool local_104 = {};
+    bool local_105 = {};
+    bool local_106 = {};
+    bool local_107 = {};
     airlight_type_19 cuts_2 = airlight_type_19 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     airlight_type_19 at = {};
     uint i_19 = 0u;
-    bool local_101 = {};
-    bool local_102 = {};
-    bool local_103 = {};
+    bool local_108 = {};
+    bool local_109 = {};
+    bool local_110 = {};
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_104 = {};
+    bool local_111 = {};
     if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         AirlightOuter _e4 = airlight_surface(s_20);
         return _e4;
     }
     AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
-    g_18 = _e6;
+    g_20 = _e6;
     if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        AirlightOuter _e11 = g_18;
+        AirlightOuter _e11 = g_20;
         return _e11;
     }
     metal::float3 ab_1 = s_20.light_end - s_20.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_88 = s_20.intensity == 0.0;
+        local_95 = s_20.intensity == 0.0;
     } else {
-        local_88 = true;
+        local_95 = true;
     }
-    bool _e26 = local_88;
+    bool _e26 = local_95;
     if (!(_e26)) {
-        local_89 = s_20.sigma_s == 0.0;
+        local_96 = s_20.sigma_s == 0.0;
     } else {
-        local_89 = true;
+        local_96 = true;
     }
-    bool _e34 = local_89;
+    bool _e34 = local_96;
     if (_e34) {
-        g_18.outcome = 1u;
-        AirlightOuter _e37 = g_18;
+        g_20.outcome = 1u;
+        AirlightOuter _e37 = g_20;
         return _e37;
     }
     metal::float3 e_4 = ab_1 / metal::float3(_e15);
@@ -4737,102 +4851,102 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_4 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_90 = sin_a_1 > 0.0;
+        local_97 = sin_a_1 > 0.0;
     } else {
-        local_90 = false;
+        local_97 = false;
     }
-    bool _e84 = local_90;
+    bool _e84 = local_97;
     if (_e84) {
         float _e87 = s_star;
-        local_91 = _e87 >= 0.0;
+        local_98 = _e87 >= 0.0;
     } else {
-        local_91 = false;
+        local_98 = false;
     }
-    bool _e91 = local_91;
+    bool _e91 = local_98;
     if (_e91) {
         float _e94 = s_star;
-        local_92 = _e94 <= _e15;
+        local_99 = _e94 <= _e15;
     } else {
-        local_92 = false;
+        local_99 = false;
     }
-    bool _e97 = local_92;
+    bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_93 = s_20.t_min <= _e101;
+        local_100 = s_20.t_min <= _e101;
     } else {
-        local_93 = false;
+        local_100 = false;
     }
-    bool _e104 = local_93;
+    bool _e104 = local_100;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_95 = _e110 <= s_20.t_max;
+            local_102 = _e110 <= s_20.t_max;
         } else {
-            local_95 = true;
+            local_102 = true;
         }
-        bool _e114 = local_95;
-        local_94 = _e114;
+        bool _e114 = local_102;
+        local_101 = _e114;
     } else {
-        local_94 = false;
+        local_101 = false;
     }
-    bool _e116 = local_94;
+    bool _e116 = local_101;
     if (_e116) {
-        g_18.outcome = 2u;
-        AirlightOuter _e119 = g_18;
+        g_20.outcome = 2u;
+        AirlightOuter _e119 = g_20;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_96 = _e73 > 0.0;
+        local_103 = _e73 > 0.0;
     } else {
-        local_96 = false;
+        local_103 = false;
     }
-    bool _e129 = local_96;
+    bool _e129 = local_103;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_97 = _e136 < (_e15 + _e15);
+        local_104 = _e136 < (_e15 + _e15);
     } else {
-        local_97 = false;
+        local_104 = false;
     }
-    bool _e140 = local_97;
+    bool _e140 = local_104;
     if (_e140) {
         float _e143 = scale;
-        local_98 = _e143 < _e15;
+        local_105 = _e143 < _e15;
     } else {
-        local_98 = false;
+        local_105 = false;
     }
-    bool near_2 = local_98;
+    bool near_2 = local_105;
     if (near_2) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_99 = _e154;
+        local_106 = _e154;
     } else {
-        local_99 = false;
+        local_106 = false;
     }
-    bool _e156 = local_99;
+    bool _e156 = local_106;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_100 = _e163;
+        local_107 = _e163;
     } else {
-        local_100 = false;
+        local_107 = false;
     }
-    bool _e165 = local_100;
+    bool _e165 = local_107;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_18.e = e_4;
+    g_20.e = e_4;
     float _e170 = s_star;
-    g_18.s_star = _e170;
+    g_20.s_star = _e170;
     float _e172 = scale;
-    g_18.scale = _e172;
+    g_20.scale = _e172;
     float _e178 = s_star;
     at = airlight_type_19 {{_e178, (s_20.t_min - along_d) / cos_a_2, (s_20.t_max - along_d) / cos_a_2}};
     uint2 loop_bound_25 = uint2(4294967295u);
@@ -4853,21 +4967,21 @@ AirlightOuter airlight_outer(
         {
             if (cos_a_2 == 0.0) {
                 uint _e196 = i_19;
-                local_101 = _e196 > 0u;
+                local_108 = _e196 > 0u;
             } else {
-                local_101 = false;
+                local_108 = false;
             }
-            bool _e200 = local_101;
+            bool _e200 = local_108;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if (_e201 == 2u) {
-                local_102 = infinite_4;
+                local_109 = infinite_4;
             } else {
-                local_102 = false;
+                local_109 = false;
             }
-            bool _e207 = local_102;
+            bool _e207 = local_109;
             if (_e207) {
                 continue;
             }
@@ -4876,14 +4990,14 @@ AirlightOuter airlight_outer(
             if (_e210 > 0.0) {
                 uint _e215 = i_19;
                 float _e217 = at.inner[metal::min(unsigned(_e215), 2u)];
-                local_103 = _e217 < _e15;
+                local_110 = _e217 < _e15;
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            bool _e220 = local_103;
+            bool _e220 = local_110;
             if (_e220) {
                 uint _e221 = i_19;
-                AirlightOuter _e223 = g_18;
+                AirlightOuter _e223 = g_20;
                 uint _e224 = i_19;
                 float _e226 = at.inner[metal::min(unsigned(_e224), 2u)];
                 float _e227 = airlight_to_w(_e223, _e226);
@@ -4915,11 +5029,11 @@ AirlightOuter airlight_outer(
         cuts_2.inner[0] = _e262;
         cuts_2.inner[1] = c_12;
     }
-    AirlightOuter _e264 = g_18;
+    AirlightOuter _e264 = g_20;
     float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_18;
+    AirlightOuter _e268 = g_20;
     float _e270 = airlight_to_w(_e268, 0.0);
-    g_18.edges.inner[0] = _e270;
+    g_20.edges.inner[0] = _e270;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_26 = true;
     while(true) {
@@ -4939,36 +5053,36 @@ AirlightOuter airlight_outer(
             uint _e278 = i_20;
             float _e280 = cuts_2.inner[metal::min(unsigned(_e278), 2u)];
             uint _e282 = n_1;
-            float _e284 = g_18.edges.inner[metal::min(unsigned(_e282), 4u)];
+            float _e284 = g_20.edges.inner[metal::min(unsigned(_e282), 4u)];
             if (_e280 > _e284) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2.inner[metal::min(unsigned(_e288), 2u)];
-                local_104 = _e290 < _e265;
+                local_111 = _e290 < _e265;
             } else {
-                local_104 = false;
+                local_111 = false;
             }
-            bool _e293 = local_104;
+            bool _e293 = local_111;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = _e294 + 1u;
                 uint _e298 = n_1;
                 uint _e300 = i_20;
                 float _e302 = cuts_2.inner[metal::min(unsigned(_e300), 2u)];
-                g_18.edges.inner[metal::min(unsigned(_e298), 4u)] = _e302;
+                g_20.edges.inner[metal::min(unsigned(_e298), 4u)] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_18.edges.inner[metal::min(unsigned(_e307 + 1u), 4u)] = _e265;
+    g_20.edges.inner[metal::min(unsigned(_e307 + 1u), 4u)] = _e265;
     uint _e312 = n_1;
-    g_18.panels = _e312 + 1u;
-    AirlightOuter _e315 = g_18;
+    g_20.panels = _e312 + 1u;
+    AirlightOuter _e315 = g_20;
     return _e315;
 }
 
 AirlightNode airlight_outer_node(
     AirlightScene s_21,
-    AirlightOuter g_19,
+    AirlightOuter g_21,
     float x_14
 ) {
     AirlightScene p = {};
@@ -4978,25 +5092,25 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        uint i_21 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_14), 0.0)), g_19.panels - 1u);
+        uint i_21 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_14), 0.0)), g_21.panels - 1u);
         float t_6 = x_14 - static_cast<float>(i_21);
-        float a_23 = g_19.gamma.inner[metal::min(unsigned(i_21), 3u)];
-        float b_18 = g_19.gamma.inner[metal::min(unsigned(i_21 + 1u), 3u)];
-        float gamma = a_23 + ((((b_18 - a_23) * t_6) * t_6) * ((3.0 - t_6) - t_6));
-        float jacobian = (((b_18 - a_23) * 6.0) * t_6) * (1.0 - t_6);
+        float a_24 = g_21.gamma.inner[metal::min(unsigned(i_21), 3u)];
+        float b_18 = g_21.gamma.inner[metal::min(unsigned(i_21 + 1u), 3u)];
+        float gamma = a_24 + ((((b_18 - a_24) * t_6) * t_6) * ((3.0 - t_6) - t_6));
+        float jacobian = (((b_18 - a_24) * 6.0) * t_6) * (1.0 - t_6);
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             return AirlightNode {_e45, 0.0};
         }
         metal::float2 _e48 = airlight_cos_sin_half_turn(gamma);
-        float _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
+        float _e53 = airlight_half_arc(g_21.cos_a, g_21.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             return AirlightNode {_e57, 0.0};
         }
         metal::float2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = 2.0 * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y));
-        p.dir = (_e48.x * g_19.l) + (_e48.y * g_19.u);
+        float arc = 2.0 * (((g_21.cos_a * _e48.x) * _e53) + ((g_21.sin_a * _e48.y) * _e67.y));
+        p.dir = (_e48.x * g_21.l) + (_e48.y * g_21.u);
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
@@ -5005,12 +5119,12 @@ AirlightNode airlight_outer_node(
     }
     if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
-        if (g_19.scale > 0.0) {
-            at_1 = g_19.s_star + (g_19.scale * metal::sinh(x_14));
-            ds = g_19.scale * metal::cosh(x_14);
+        if (g_21.scale > 0.0) {
+            at_1 = g_21.s_star + (g_21.scale * metal::sinh(x_14));
+            ds = g_21.scale * metal::cosh(x_14);
         }
         float _e115 = at_1;
-        p.light_position = g_19.a + (_e115 * g_19.e);
+        p.light_position = g_21.a + (_e115 * g_21.e);
         AirlightScene _e119 = p;
         float _e120 = ds;
         return AirlightNode {_e119, _e120};
@@ -5034,17 +5148,17 @@ AirlightResult airlight_in_scatter(
     float k_7 = {};
     float gauss = {};
     uint j_4 = {};
-    bool local_105 = {};
+    bool local_112 = {};
     float f = {};
     AirlightResult r_4 = {};
-    bool local_106 = {};
-    bool local_107 = {};
-    bool local_108 = {};
+    bool local_113 = {};
+    bool local_114 = {};
+    bool local_115 = {};
     bool split = {};
     uint tries = {};
-    bool local_109 = {};
-    bool local_110 = {};
-    bool local_111 = {};
+    bool local_116 = {};
+    bool local_117 = {};
+    bool local_118 = {};
     bool _e1 = airlight_valid(s_22);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -5106,11 +5220,11 @@ AirlightResult airlight_in_scatter(
                     uint _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         uint _e96 = j_4;
-                        local_105 = _e96 < 6u;
+                        local_112 = _e96 < 6u;
                     } else {
-                        local_105 = false;
+                        local_112 = false;
                     }
-                    bool _e100 = local_105;
+                    bool _e100 = local_112;
                     float w_5 = _e100 ? (c_13 - (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_13 + (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
                     AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0.0;
@@ -5120,11 +5234,11 @@ AirlightResult airlight_in_scatter(
                         bool _e114 = airlight_vec_finite(_e102.scene.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(_e102.scene.dir);
-                            local_106 = _e118;
+                            local_113 = _e118;
                         } else {
-                            local_106 = false;
+                            local_113 = false;
                         }
-                        bool _e120 = local_106;
+                        bool _e120 = local_113;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -5135,20 +5249,20 @@ AirlightResult airlight_in_scatter(
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_4.status;
-                            local_107 = _e132 == AIRLIGHT_STATUS_INFINITE;
+                            local_114 = _e132 == AIRLIGHT_STATUS_INFINITE;
                         } else {
-                            local_107 = true;
+                            local_114 = true;
                         }
-                        bool _e136 = local_107;
+                        bool _e136 = local_114;
                         if (_e136) {
                             return AirlightResult {340282350000000000000000000000000000000.0, 2u};
                         }
                         if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_108 = s_22.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_115 = s_22.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_108 = false;
+                            local_115 = false;
                         }
-                        bool _e149 = local_108;
+                        bool _e149 = local_115;
                         if (_e149) {
                             AirlightResult _e150 = r_4;
                             return _e150;
@@ -5221,18 +5335,18 @@ AirlightResult airlight_in_scatter(
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_109 = _e223 == _e6.max_panels;
+                                local_116 = _e223 == _e6.max_panels;
                             } else {
-                                local_109 = true;
+                                local_116 = true;
                             }
-                            bool _e227 = local_109;
+                            bool _e227 = local_116;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_110 = !(_e231);
+                                local_117 = !(_e231);
                             } else {
-                                local_110 = true;
+                                local_117 = true;
                             }
-                            bool _e234 = local_110;
+                            bool _e234 = local_117;
                             if (_e234) {
                                 break;
                             }
@@ -5242,11 +5356,11 @@ AirlightResult airlight_in_scatter(
                             float wb_1 = _e236.y;
                             float mid_1 = 0.5 * (wa_1 + wb_1);
                             if (mid_1 > wa_1) {
-                                local_111 = mid_1 < wb_1;
+                                local_118 = mid_1 < wb_1;
                             } else {
-                                local_111 = false;
+                                local_118 = false;
                             }
-                            bool _e247 = local_111;
+                            bool _e247 = local_118;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, metal::float4(_e236.xyz, 0.0));
                                 continue;

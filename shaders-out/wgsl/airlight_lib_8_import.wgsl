@@ -488,8 +488,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
     let x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_3 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_15 * x_15) + (y_3 * y_3)) < 1f);
+    let y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_15 * x_15) + (y_4 * y_4)) < 1f);
 }
 
 fn airlight_cf_depth(r: f32) -> u32 {
@@ -934,15 +934,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j_1;
             let xi = nodes[_e26].x;
-            let y_4 = (yc + (hw * xi));
+            let y_5 = (yc + (hw * xi));
             dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi)) / (y_4 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_5 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j_1;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_4 * y_4))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_5 * y_5))));
         }
         continuing {
             let _e59 = j_1;
@@ -1652,10 +1652,10 @@ fn airlight_y_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
         {
             let _e26 = i_8;
             let _e27 = airlight_node(_e6, _e26);
-            let y_5 = (yc_1 + (r_7 * _e27));
-            let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_5 * b_5)));
-            let _e39 = airlight_integrand(s_5, g_8, sigma_3, y_5);
-            let over_1 = (1f / (1f + (y_5 * y_5)));
+            let y_6 = (yc_1 + (r_7 * _e27));
+            let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_6 * b_5)));
+            let _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
+            let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
             let _e49 = f_max_2;
@@ -1777,10 +1777,10 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_6 = (yc_2 + (r_8 * _e23));
-            let _e26 = airlight_integrand(s_6, g_9, sigma_4, y_6);
+            let y_7 = (yc_2 + (r_8 * _e23));
+            let _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
             let _e27 = i_9;
-            samples_2[_e27] = (_e26 / (1f + (y_6 * y_6)));
+            samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
@@ -2347,167 +2347,271 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_half(s_9: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_cosine(g_12: AirlightCanonical, sigma_8: f32, y_3: f32) -> f32 {
+    let y2_1 = (y_3 * y_3);
+    return ((((1f - y2_1) * (sigma_8 * g_12.d_el)) + ((y_3 + y_3) * g_12.d_c)) / (1f + y2_1));
+}
+
+fn airlight_dark(g_13: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
+    var local_17: bool;
+    var local_18: bool;
+    var y1_: f32;
+    var local_19: bool;
+    var local_20: bool;
+    var local_21: bool;
+    var local_22: bool;
+
+    let _e9 = airlight_cosine(g_13, sigma_9, (0.5f * (lo_1 + hi_1)));
+    if !((_e9 < bound)) {
+        return false;
+    }
+    if (lo_1 == half_9.y_lo) {
+        let _e17 = airlight_cosine(g_13, sigma_9, lo_1);
+        local_17 = !((_e17 < bound));
+    } else {
+        local_17 = false;
+    }
+    let _e21 = local_17;
+    if _e21 {
+        return false;
+    }
+    if (hi_1 == half_9.y_hi) {
+        let _e27 = airlight_cosine(g_13, sigma_9, hi_1);
+        local_18 = !((_e27 < bound));
+    } else {
+        local_18 = false;
+    }
+    let _e31 = local_18;
+    if _e31 {
+        return false;
+    }
+    let a_20 = (sigma_9 * g_13.d_el);
+    let d_2 = g_13.d_c;
+    if (d_2 == 0f) {
+        return true;
+    }
+    let root_1 = sqrt(((a_20 * a_20) + (d_2 * d_2)));
+    y1_ = ((root_1 - a_20) / d_2);
+    if (a_20 > 0f) {
+        y1_ = (d_2 / (a_20 + root_1));
+    }
+    let _e50 = y1_;
+    let y2_2 = (-1f / _e50);
+    let _e53 = y1_;
+    if (_e53 > lo_1) {
+        let _e57 = y1_;
+        local_19 = (_e57 < hi_1);
+    } else {
+        local_19 = false;
+    }
+    let _e60 = local_19;
+    if _e60 {
+        let _e63 = y1_;
+        let _e64 = airlight_cosine(g_13, sigma_9, _e63);
+        local_20 = !((_e64 < bound));
+    } else {
+        local_20 = false;
+    }
+    let _e68 = local_20;
+    if _e68 {
+        return false;
+    }
+    if (y2_2 > lo_1) {
+        local_21 = (y2_2 < hi_1);
+    } else {
+        local_21 = false;
+    }
+    let _e75 = local_21;
+    if _e75 {
+        let _e78 = airlight_cosine(g_13, sigma_9, y2_2);
+        local_22 = !((_e78 < bound));
+    } else {
+        local_22 = false;
+    }
+    let _e82 = local_22;
+    if _e82 {
+        return false;
+    }
+    return true;
+}
+
+fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
+    var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
     var i_12: u32 = 0u;
-    var local_17: bool;
+    var local_23: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
-    var lo_1: f32;
+    var lo_2: f32;
     var i_14: u32 = 0u;
-    var hi_1: f32;
-    var local_18: bool;
-    var local_19: bool;
+    var hi_2: f32;
+    var local_24: bool;
+    var local_25: bool;
+    var local_26: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_9, g_12, sigma_8, (half_9.y_lo + (half_9.dy * 0.5f)));
-        let _e12 = airlight_moment_zero(half_9);
+        let _e11 = airlight_integrand(s_9, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
+        let _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
         k_in = s_9.light_param_a;
         k_out = s_9.light_param_b;
-        let _e27 = k_in;
-        let _e28 = k_out;
-        let width_1 = (_e27 - _e28);
+        let _e29 = k_in;
+        let _e30 = k_out;
+        let width_1 = (_e29 - _e30);
         if (width_1 <= AIRLIGHT_FLT_EPS) {
-            let _e32 = k_out;
-            k_in = (_e32 + (width_1 * 0.5f));
-            let _e36 = k_in;
-            k_out = _e36;
+            let _e34 = k_out;
+            k_in = (_e34 + (width_1 * 0.5f));
+            let _e38 = k_in;
+            k_out = _e38;
         }
-        let _e39 = k_in;
-        let _e40 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e39);
-        let _e43 = k_out;
-        let _e44 = airlight_crossings(sigma_8, g_12.d_el, g_12.d_c, _e43);
-        cuts = array<f32, 4>(_e40.x, _e40.y, _e44.x, _e44.y);
+        let _e39 = k_out;
+        dark_below = _e39;
+        let _e42 = k_in;
+        let _e43 = airlight_crossings(sigma_10, g_14.d_el, g_14.d_c, _e42);
+        let _e46 = k_out;
+        let _e47 = airlight_crossings(sigma_10, g_14.d_el, g_14.d_c, _e46);
+        cuts = array<f32, 4>(_e43.x, _e43.y, _e47.x, _e47.y);
         loop {
-            let _e52 = i_12;
-            if (_e52 < 4u) {
+            let _e55 = i_12;
+            if (_e55 < 4u) {
             } else {
                 break;
             }
             {
-                let _e55 = i_12;
-                let _e57 = cuts[_e55];
-                if (_e57 > half_9.y_lo) {
-                    let _e62 = i_12;
-                    let _e64 = cuts[_e62];
-                    local_17 = (_e64 < half_9.y_hi);
+                let _e58 = i_12;
+                let _e60 = cuts[_e58];
+                if (_e60 > half_10.y_lo) {
+                    let _e65 = i_12;
+                    let _e67 = cuts[_e65];
+                    local_23 = (_e67 < half_10.y_hi);
                 } else {
-                    local_17 = false;
+                    local_23 = false;
                 }
-                let _e68 = local_17;
-                if !(_e68) {
-                    let _e70 = i_12;
-                    cuts[_e70] = 2f;
+                let _e71 = local_23;
+                if !(_e71) {
+                    let _e73 = i_12;
+                    cuts[_e73] = 2f;
                 }
             }
             continuing {
-                let _e74 = i_12;
-                i_12 = (_e74 + 1u);
+                let _e77 = i_12;
+                i_12 = (_e77 + 1u);
             }
         }
         loop {
-            let _e78 = i_13;
-            if (_e78 < 3u) {
+            let _e81 = i_13;
+            if (_e81 < 3u) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
                 loop {
-                    let _e83 = j_2;
-                    let _e85 = i_13;
-                    if (_e83 < (3u - _e85)) {
+                    let _e86 = j_2;
+                    let _e88 = i_13;
+                    if (_e86 < (3u - _e88)) {
                     } else {
                         break;
                     }
                     {
-                        let _e88 = j_2;
-                        let _e90 = cuts[_e88];
                         let _e91 = j_2;
-                        let _e95 = cuts[(_e91 + 1u)];
-                        if (_e90 > _e95) {
-                            let _e97 = j_2;
-                            let t_5 = cuts[_e97];
+                        let _e93 = cuts[_e91];
+                        let _e94 = j_2;
+                        let _e98 = cuts[(_e94 + 1u)];
+                        if (_e93 > _e98) {
                             let _e100 = j_2;
-                            let _e102 = j_2;
-                            let _e106 = cuts[(_e102 + 1u)];
-                            cuts[_e100] = _e106;
-                            let _e107 = j_2;
-                            cuts[(_e107 + 1u)] = t_5;
+                            let t_5 = cuts[_e100];
+                            let _e103 = j_2;
+                            let _e105 = j_2;
+                            let _e109 = cuts[(_e105 + 1u)];
+                            cuts[_e103] = _e109;
+                            let _e110 = j_2;
+                            cuts[(_e110 + 1u)] = t_5;
                         }
                     }
                     continuing {
-                        let _e112 = j_2;
-                        j_2 = (_e112 + 1u);
+                        let _e115 = j_2;
+                        j_2 = (_e115 + 1u);
                     }
                 }
             }
             continuing {
-                let _e115 = i_13;
-                i_13 = (_e115 + 1u);
+                let _e118 = i_13;
+                i_13 = (_e118 + 1u);
             }
         }
     }
-    lo_1 = half_9.y_lo;
+    lo_2 = half_10.y_lo;
     loop {
-        let _e123 = i_14;
-        if (_e123 < 5u) {
+        let _e126 = i_14;
+        if (_e126 < 5u) {
         } else {
             break;
         }
         {
-            hi_1 = half_9.y_hi;
-            let _e128 = i_14;
-            if (_e128 < 4u) {
-                let _e133 = i_14;
-                let _e135 = cuts[_e133];
-                local_18 = (_e135 < 2f);
+            hi_2 = half_10.y_hi;
+            let _e131 = i_14;
+            if (_e131 < 4u) {
+                let _e136 = i_14;
+                let _e138 = cuts[_e136];
+                local_24 = (_e138 < 2f);
             } else {
-                local_18 = false;
+                local_24 = false;
             }
-            let _e139 = local_18;
-            if _e139 {
-                let _e140 = i_14;
-                let _e142 = cuts[_e140];
-                hi_1 = _e142;
+            let _e142 = local_24;
+            if _e142 {
+                let _e143 = i_14;
+                let _e145 = cuts[_e143];
+                hi_2 = _e145;
             }
-            let _e143 = hi_1;
-            let _e144 = lo_1;
-            if (_e143 > _e144) {
-                let _e146 = total_2;
-                let _e147 = lo_1;
-                let _e148 = hi_1;
-                let _e149 = airlight_integrate_piece(s_9, g_12, sigma_8, half_9, _e147, _e148, f_max_5);
-                total_2 = (_e146 + _e149);
-                let _e151 = hi_1;
-                lo_1 = _e151;
+            let _e146 = hi_2;
+            let _e147 = lo_2;
+            if (_e146 > _e147) {
+                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                    let _e154 = dark_below;
+                    let _e155 = lo_2;
+                    let _e156 = hi_2;
+                    let _e157 = airlight_dark(g_14, sigma_10, half_10, _e154, _e155, _e156);
+                    local_25 = _e157;
+                } else {
+                    local_25 = false;
+                }
+                let _e159 = local_25;
+                if !(_e159) {
+                    let _e161 = total_2;
+                    let _e162 = lo_2;
+                    let _e163 = hi_2;
+                    let _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    total_2 = (_e161 + _e164);
+                }
+                let _e166 = hi_2;
+                lo_2 = _e166;
             }
-            let _e152 = i_14;
-            if (_e152 < 4u) {
-                let _e157 = i_14;
-                let _e159 = cuts[_e157];
-                local_19 = (_e159 >= 2f);
+            let _e167 = i_14;
+            if (_e167 < 4u) {
+                let _e172 = i_14;
+                let _e174 = cuts[_e172];
+                local_26 = (_e174 >= 2f);
             } else {
-                local_19 = false;
+                local_26 = false;
             }
-            let _e163 = local_19;
-            if _e163 {
+            let _e178 = local_26;
+            if _e178 {
                 break;
             }
         }
         continuing {
-            let _e165 = i_14;
-            i_14 = (_e165 + 1u);
+            let _e180 = i_14;
+            i_14 = (_e180 + 1u);
         }
     }
-    let _e167 = total_2;
-    return _e167;
+    let _e182 = total_2;
+    return _e182;
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_3: f32) -> f32 {
@@ -2522,35 +2626,35 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_3: 
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_10: AirlightScene, g_13: AirlightCanonical) -> f32 {
-    var local_20: bool;
+fn airlight_on_line(s_10: AirlightScene, g_15: AirlightCanonical) -> f32 {
+    var local_27: bool;
     var span: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
-    if !(g_13.t_hi_infinite) {
-        local_20 = (g_13.x_h > g_13.t_hi);
+    if !(g_15.t_hi_infinite) {
+        local_27 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_20 = false;
+        local_27 = false;
     }
-    let _e10 = local_20;
+    let _e10 = local_27;
     if _e10 {
-        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_13.d_el));
+        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
         let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
         let f_2 = (_e16 * _e22);
-        let r0_ = (g_13.x_h - g_13.t_lo);
-        let r1_1 = (g_13.x_h - g_13.t_hi);
-        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
+        let r0_ = (g_15.x_h - g_15.t_lo);
+        let r1_1 = (g_15.x_h - g_15.t_hi);
+        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_13.d_el);
+    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
     let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
     let f_3 = (_e46 * _e52);
-    let s0_ = (g_13.t_lo - g_13.x_h);
-    let s1_ = (g_13.t_hi - g_13.x_h);
+    let s0_ = (g_15.t_lo - g_15.x_h);
+    let s1_ = (g_15.t_hi - g_15.x_h);
     if (s_10.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_13.t_hi_infinite) {
+        if !(g_15.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
@@ -2562,7 +2666,7 @@ fn airlight_on_line(s_10: AirlightScene, g_13: AirlightCanonical) -> f32 {
     e2_ = _e82;
     let _e90 = e2_[1];
     let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
-    if !(g_13.t_hi_infinite) {
+    if !(g_15.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
@@ -2588,38 +2692,38 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_11: AirlightScene, g_14: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_11: AirlightScene, g_16: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_21: bool;
-    var local_22: bool;
+    var local_28: bool;
+    var local_29: bool;
     var x_8: f32 = 0f;
 
-    let h_2 = g_14.h;
-    let a_s = ((g_14.x_h - g_14.t_lo) / h_2);
+    let h_2 = g_16.h;
+    let a_s = ((g_16.x_h - g_16.t_lo) / h_2);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_14.t_hi - g_14.x_h) / h_2);
-    if !(g_14.t_hi_infinite) {
+    let u_e = ((g_16.t_hi - g_16.x_h) / h_2);
+    if !(g_16.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_21 = _e24;
+        local_28 = _e24;
     } else {
-        local_21 = false;
+        local_28 = false;
     }
-    let _e26 = local_21;
+    let _e26 = local_28;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_16.t_hi - g_16.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_22 = _e40;
+            local_29 = _e40;
         } else {
-            local_22 = false;
+            local_29 = false;
         }
-        let _e42 = local_22;
+        let _e42 = local_29;
         if _e42 {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -2633,16 +2737,16 @@ fn airlight_whole_line(s_11: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_12 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_11, g_14, -1f, _e9);
-    let _e55 = airlight_moment_zero(half_12);
+    let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let _e54 = airlight_integrand(s_11, g_16, -1f, _e9);
+    let _e55 = airlight_moment_zero(half_13);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
         if (s_11.sigma_t > 0f) {
-            x_8 = (s_11.sigma_t * abs((g_14.x_h - g_14.t_lo)));
+            x_8 = (s_11.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
     let _e72 = x_8;
@@ -2658,73 +2762,73 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
-    var local_23: bool;
-    var local_24: bool;
-    var local_25: bool;
-    var local_26: bool;
-    var gap: f32 = 0f;
-    var local_27: bool;
-    var local_28: bool;
-    var local_29: bool;
+fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
     var local_33: bool;
+    var gap: f32 = 0f;
     var local_34: bool;
     var local_35: bool;
     var local_36: bool;
+    var local_37: bool;
+    var local_38: bool;
+    var local_39: bool;
+    var local_40: bool;
+    var local_41: bool;
+    var local_42: bool;
+    var local_43: bool;
     var total_3: f32 = 0f;
     var f_max_6: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_37: bool;
-    var half_10: AirlightHalf;
-    var local_38: bool;
-    var local_39: bool;
-    var local_40: bool;
+    var local_44: bool;
+    var half_11: AirlightHalf;
+    var local_45: bool;
+    var local_46: bool;
+    var local_47: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_41: bool;
-    var local_42: bool;
-    var half_11: AirlightHalf;
-    var local_43: bool;
-    var local_44: bool;
-    var local_45: bool;
+    var local_48: bool;
+    var local_49: bool;
+    var half_12: AirlightHalf;
+    var local_50: bool;
+    var local_51: bool;
+    var local_52: bool;
 
-    let t0_ = g_15.t_lo;
-    let t1_ = g_15.t_hi;
-    if !(g_15.t_hi_infinite) {
-        local_23 = (t1_ > t0_);
+    let t0_ = g_17.t_lo;
+    let t1_ = g_17.t_hi;
+    if !(g_17.t_hi_infinite) {
+        local_30 = (t1_ > t0_);
     } else {
-        local_23 = true;
+        local_30 = true;
     }
-    let _e10 = local_23;
+    let _e10 = local_30;
     if !(!(_e10)) {
-        local_24 = ((s_12.sigma_s * s_12.intensity) == 0f);
+        local_31 = ((s_12.sigma_s * s_12.intensity) == 0f);
     } else {
-        local_24 = true;
+        local_31 = true;
     }
-    let _e21 = local_24;
+    let _e21 = local_31;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_3 = g_15.h;
-    let x_h = g_15.x_h;
+    let h_3 = g_17.h;
+    let x_h = g_17.x_h;
     if (t0_ <= x_h) {
-        if !(g_15.t_hi_infinite) {
-            local_26 = (x_h <= t1_);
+        if !(g_17.t_hi_infinite) {
+            local_33 = (x_h <= t1_);
         } else {
-            local_26 = true;
+            local_33 = true;
         }
-        let _e36 = local_26;
-        local_25 = _e36;
+        let _e36 = local_33;
+        local_32 = _e36;
     } else {
-        local_25 = false;
+        local_32 = false;
     }
-    let inside = local_25;
+    let inside = local_32;
     if (x_h < t0_) {
         gap = (t0_ - x_h);
     } else {
@@ -2734,13 +2838,13 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
     }
     if !(inside) {
         let _e48 = gap;
-        local_27 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_34 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_27 = false;
+        local_34 = false;
     }
-    let _e55 = local_27;
+    let _e55 = local_34;
     if _e55 {
-        let _e56 = airlight_on_line(s_12, g_15);
+        let _e56 = airlight_on_line(s_12, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
@@ -2749,72 +2853,72 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
     let big_h_5 = (s_12.sigma_t * h_3);
     if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_29 = (s_12.light_param_a == 0f);
+            local_36 = (s_12.light_param_a == 0f);
         } else {
-            local_29 = false;
+            local_36 = false;
         }
-        let _e83 = local_29;
-        local_28 = _e83;
+        let _e83 = local_36;
+        local_35 = _e83;
     } else {
-        local_28 = true;
+        local_35 = true;
     }
-    let _e85 = local_28;
+    let _e85 = local_35;
     if _e85 {
         if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_32 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_32 = true;
+                local_39 = true;
             }
-            let _e104 = local_32;
+            let _e104 = local_39;
             if _e104 {
-                local_33 = (s_12.phase_param_a == 0f);
+                local_40 = (s_12.phase_param_a == 0f);
             } else {
-                local_33 = false;
+                local_40 = false;
             }
-            let _e111 = local_33;
-            local_31 = _e111;
+            let _e111 = local_40;
+            local_38 = _e111;
         } else {
-            local_31 = true;
+            local_38 = true;
         }
-        let _e113 = local_31;
-        local_30 = _e113;
+        let _e113 = local_38;
+        local_37 = _e113;
     } else {
-        local_30 = false;
+        local_37 = false;
     }
-    let isotropic_1 = local_30;
+    let isotropic_1 = local_37;
     if isotropic_1 {
-        local_34 = (t0_ < x_h);
+        local_41 = (t0_ < x_h);
     } else {
-        local_34 = false;
+        local_41 = false;
     }
-    let _e120 = local_34;
+    let _e120 = local_41;
     if _e120 {
-        if !(g_15.t_hi_infinite) {
-            local_36 = (x_h < t1_);
+        if !(g_17.t_hi_infinite) {
+            local_43 = (x_h < t1_);
         } else {
-            local_36 = true;
+            local_43 = true;
         }
-        let _e129 = local_36;
-        local_35 = _e129;
+        let _e129 = local_43;
+        local_42 = _e129;
     } else {
-        local_35 = false;
+        local_42 = false;
     }
-    let _e131 = local_35;
+    let _e131 = local_42;
     if _e131 {
-        let _e132 = airlight_whole_line(s_12, g_15, big_h_5);
+        let _e132 = airlight_whole_line(s_12, g_17, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
     if (t0_ < x_h) {
         let a_s_1 = ((x_h - t0_) / h_3);
         t_end = x_h;
-        if !(g_15.t_hi_infinite) {
-            local_37 = (t1_ < x_h);
+        if !(g_17.t_hi_infinite) {
+            local_44 = (t1_ < x_h);
         } else {
-            local_37 = false;
+            local_44 = false;
         }
-        let _e154 = local_37;
+        let _e154 = local_44;
         if _e154 {
             t_end = t1_;
         }
@@ -2827,42 +2931,42 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
         let _e162 = t_end;
         let dy_1 = (((((_e162 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
         let _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_10 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        half_11 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if cut {
-            let _e182 = half_10.big_h;
-            local_38 = (_e182 > 0f);
+            let _e182 = half_11.big_h;
+            local_45 = (_e182 > 0f);
         } else {
-            local_38 = false;
+            local_45 = false;
         }
-        let _e186 = local_38;
+        let _e186 = local_45;
         if _e186 {
-            let _e188 = half_10.big_h;
+            let _e188 = half_11.big_h;
             let _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                let _e193 = half_10.big_h;
-                half_10 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                let _e193 = half_11.big_h;
+                half_11 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        let _e199 = half_10;
-        let _e200 = airlight_half(s_12, g_15, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e199 = half_11;
+        let _e200 = airlight_half(s_12, g_17, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
         let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
-    if !(g_15.t_hi_infinite) {
-        local_39 = (t1_ > x_h);
+    if !(g_17.t_hi_infinite) {
+        local_46 = (t1_ > x_h);
     } else {
-        local_39 = true;
+        local_46 = true;
     }
-    let _e213 = local_39;
+    let _e213 = local_46;
     if _e213 {
         let _e216 = behind_cut;
-        local_40 = !(_e216);
+        local_47 = !(_e216);
     } else {
-        local_40 = false;
+        local_47 = false;
     }
-    let _e219 = local_40;
+    let _e219 = local_47;
     if _e219 {
         let t_start = max(t0_, x_h);
         let a_s_2 = ((t_start - x_h) / h_3);
@@ -2870,24 +2974,24 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
         let _e224 = airlight_bounded(a_s_2);
         dy = _e224;
         let a_e_1 = ((t1_ - x_h) / h_3);
-        if !(g_15.t_hi_infinite) {
+        if !(g_17.t_hi_infinite) {
             let _e238 = airlight_is_finite(a_e_1);
-            local_41 = _e238;
+            local_48 = _e238;
         } else {
-            local_41 = false;
+            local_48 = false;
         }
-        let _e240 = local_41;
+        let _e240 = local_48;
         if _e240 {
             let _e241 = airlight_bounded(a_e_1);
             let _e245 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if (_e241 > 0f) {
                 let _e255 = airlight_is_finite(dv_end_1);
-                local_42 = _e255;
+                local_49 = _e255;
             } else {
-                local_42 = false;
+                local_49 = false;
             }
-            let _e257 = local_42;
+            let _e257 = local_49;
             if _e257 {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -2904,42 +3008,42 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
         let _e268 = dy;
         let _e269 = dv_3;
         let _e270 = infinite_2;
-        half_11 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_12 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if cut {
-            let _e276 = half_11.big_h;
-            local_43 = (_e276 > 0f);
+            let _e276 = half_12.big_h;
+            local_50 = (_e276 > 0f);
         } else {
-            local_43 = false;
+            local_50 = false;
         }
-        let _e280 = local_43;
+        let _e280 = local_50;
         if _e280 {
-            let _e282 = half_11.big_h;
+            let _e282 = half_12.big_h;
             let _e285 = airlight_cut_length(_e282, (1f / _e224));
             let _e286 = infinite_2;
             if !(_e286) {
                 let _e290 = dv_3;
-                local_44 = (_e285 < _e290);
+                local_51 = (_e285 < _e290);
             } else {
-                local_44 = true;
+                local_51 = true;
             }
-            let _e293 = local_44;
+            let _e293 = local_51;
             if _e293 {
                 let cut_y_lo = (_e224 / (1f + (_e224 * _e285)));
                 if (cut_y_lo > 0f) {
                     let _e302 = airlight_is_finite(_e285);
-                    local_45 = _e302;
+                    local_52 = _e302;
                 } else {
-                    local_45 = false;
+                    local_52 = false;
                 }
-                let _e304 = local_45;
+                let _e304 = local_52;
                 if _e304 {
-                    let _e307 = half_11.big_h;
-                    half_11 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    let _e307 = half_12.big_h;
+                    half_12 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        let _e313 = half_11;
-        let _e314 = airlight_half(s_12, g_15, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e313 = half_12;
+        let _e314 = airlight_half(s_12, g_17, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
         let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
@@ -2949,24 +3053,24 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_15: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_46: bool;
-    var local_47: bool;
+    var local_53: bool;
+    var local_54: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_46 = _e6;
+        local_53 = _e6;
     } else {
-        local_46 = false;
+        local_53 = false;
     }
-    let _e8 = local_46;
+    let _e8 = local_53;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_47 = _e12;
+        local_54 = _e12;
     } else {
-        local_47 = false;
+        local_54 = false;
     }
-    let _e14 = local_47;
+    let _e14 = local_54;
     return _e14;
 }
 
@@ -2979,16 +3083,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_48: bool;
+    var local_55: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_48 = _e6;
+        local_55 = _e6;
     } else {
-        local_48 = false;
+        local_55 = false;
     }
-    let _e8 = local_48;
+    let _e8 = local_55;
     return _e8;
 }
 
@@ -2999,17 +3103,9 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_13: AirlightScene) -> bool {
-    var local_49: bool;
-    var local_50: bool;
-    var local_51: bool;
-    var local_52: bool;
-    var local_53: bool;
-    var local_54: bool;
-    var local_55: bool;
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
-    var ok: bool;
     var local_59: bool;
     var local_60: bool;
     var local_61: bool;
@@ -3017,6 +3113,7 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_63: bool;
     var local_64: bool;
     var local_65: bool;
+    var ok: bool;
     var local_66: bool;
     var local_67: bool;
     var local_68: bool;
@@ -3033,102 +3130,109 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_79: bool;
     var local_80: bool;
     var local_81: bool;
+    var local_82: bool;
+    var local_83: bool;
+    var local_84: bool;
+    var local_85: bool;
+    var local_86: bool;
+    var local_87: bool;
+    var local_88: bool;
 
     let _e2 = airlight_vec_finite(s_13.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_13.dir);
-        local_49 = _e6;
-    } else {
-        local_49 = false;
-    }
-    let _e8 = local_49;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_13.dir);
-        local_50 = _e12;
-    } else {
-        local_50 = false;
-    }
-    let _e14 = local_50;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_13.t_min);
-        local_51 = _e18;
-    } else {
-        local_51 = false;
-    }
-    let _e20 = local_51;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_13.light_position);
-        local_52 = _e24;
-    } else {
-        local_52 = false;
-    }
-    let _e26 = local_52;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_13.intensity);
-        local_53 = _e30;
-    } else {
-        local_53 = false;
-    }
-    let _e32 = local_53;
-    if _e32 {
-        local_54 = (s_13.intensity >= 0f);
-    } else {
-        local_54 = false;
-    }
-    let _e39 = local_54;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_13.sigma_s);
-        local_55 = _e43;
-    } else {
-        local_55 = false;
-    }
-    let _e45 = local_55;
-    if _e45 {
-        local_56 = (s_13.sigma_s >= 0f);
+        local_56 = _e6;
     } else {
         local_56 = false;
     }
-    let _e52 = local_56;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_13.sigma_t);
-        local_57 = _e56;
+    let _e8 = local_56;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_13.dir);
+        local_57 = _e12;
     } else {
         local_57 = false;
     }
-    let _e58 = local_57;
-    if _e58 {
-        local_58 = (s_13.sigma_t >= 0f);
+    let _e14 = local_57;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_13.t_min);
+        local_58 = _e18;
     } else {
         local_58 = false;
     }
-    let _e65 = local_58;
+    let _e20 = local_58;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_13.light_position);
+        local_59 = _e24;
+    } else {
+        local_59 = false;
+    }
+    let _e26 = local_59;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_13.intensity);
+        local_60 = _e30;
+    } else {
+        local_60 = false;
+    }
+    let _e32 = local_60;
+    if _e32 {
+        local_61 = (s_13.intensity >= 0f);
+    } else {
+        local_61 = false;
+    }
+    let _e39 = local_61;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_13.sigma_s);
+        local_62 = _e43;
+    } else {
+        local_62 = false;
+    }
+    let _e45 = local_62;
+    if _e45 {
+        local_63 = (s_13.sigma_s >= 0f);
+    } else {
+        local_63 = false;
+    }
+    let _e52 = local_63;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_13.sigma_t);
+        local_64 = _e56;
+    } else {
+        local_64 = false;
+    }
+    let _e58 = local_64;
+    if _e58 {
+        local_65 = (s_13.sigma_t >= 0f);
+    } else {
+        local_65 = false;
+    }
+    let _e65 = local_65;
     ok = _e65;
     if ((s_13.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_13.t_max);
-            local_59 = _e76;
+            local_66 = _e76;
         } else {
-            local_59 = false;
+            local_66 = false;
         }
-        let _e78 = local_59;
+        let _e78 = local_66;
         if _e78 {
-            local_60 = (s_13.t_min <= s_13.t_max);
+            local_67 = (s_13.t_min <= s_13.t_max);
         } else {
-            local_60 = false;
+            local_67 = false;
         }
-        let _e85 = local_60;
+        let _e85 = local_67;
         ok = _e85;
     }
     if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_13.light_end);
-            local_61 = _e93;
+            local_68 = _e93;
         } else {
-            local_61 = false;
+            local_68 = false;
         }
-        let _e95 = local_61;
+        let _e95 = local_68;
         ok = _e95;
     } else {
         if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3139,37 +3243,37 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e103 = ok;
         if _e103 {
             let _e107 = airlight_is_finite(s_13.brdf_albedo);
-            local_62 = _e107;
+            local_69 = _e107;
         } else {
-            local_62 = false;
+            local_69 = false;
         }
-        let _e109 = local_62;
+        let _e109 = local_69;
         if _e109 {
-            local_63 = (s_13.brdf_albedo >= 0f);
+            local_70 = (s_13.brdf_albedo >= 0f);
         } else {
-            local_63 = false;
+            local_70 = false;
         }
-        let _e116 = local_63;
+        let _e116 = local_70;
         if _e116 {
-            local_64 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_64 = false;
+            local_71 = false;
         }
-        let _e123 = local_64;
+        let _e123 = local_71;
         if _e123 {
-            local_65 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_65 = false;
+            local_72 = false;
         }
-        let _e130 = local_65;
+        let _e130 = local_72;
         if _e130 {
             let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
             let _e137 = airlight_is_finite(_e136);
-            local_66 = _e137;
+            local_73 = _e137;
         } else {
-            local_66 = false;
+            local_73 = false;
         }
-        let _e139 = local_66;
+        let _e139 = local_73;
         ok = _e139;
     } else {
         if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3180,72 +3284,72 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e147 = ok;
         if _e147 {
             let _e151 = airlight_vec_finite(s_13.light_axis);
-            local_67 = _e151;
+            local_74 = _e151;
         } else {
-            local_67 = false;
+            local_74 = false;
         }
-        let _e153 = local_67;
+        let _e153 = local_74;
         if _e153 {
             let _e157 = airlight_normalisable(s_13.light_axis);
-            local_68 = _e157;
+            local_75 = _e157;
         } else {
-            local_68 = false;
+            local_75 = false;
         }
-        let _e159 = local_68;
+        let _e159 = local_75;
         if _e159 {
-            local_69 = (s_13.light_param_a >= 0f);
+            local_76 = (s_13.light_param_a >= 0f);
         } else {
-            local_69 = false;
+            local_76 = false;
         }
-        let _e166 = local_69;
+        let _e166 = local_76;
         if _e166 {
-            local_70 = (s_13.light_param_a <= 1024f);
+            local_77 = (s_13.light_param_a <= 1024f);
         } else {
-            local_70 = false;
+            local_77 = false;
         }
-        let _e173 = local_70;
+        let _e173 = local_77;
         if _e173 {
-            local_71 = (fract((s_13.light_param_a * 0.5f)) == 0f);
+            local_78 = (fract((s_13.light_param_a * 0.5f)) == 0f);
         } else {
-            local_71 = false;
+            local_78 = false;
         }
-        let _e183 = local_71;
+        let _e183 = local_78;
         ok = _e183;
     } else {
         if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
                 let _e191 = airlight_vec_finite(s_13.light_axis);
-                local_72 = _e191;
+                local_79 = _e191;
             } else {
-                local_72 = false;
+                local_79 = false;
             }
-            let _e193 = local_72;
+            let _e193 = local_79;
             if _e193 {
                 let _e197 = airlight_normalisable(s_13.light_axis);
-                local_73 = _e197;
+                local_80 = _e197;
             } else {
-                local_73 = false;
+                local_80 = false;
             }
-            let _e199 = local_73;
+            let _e199 = local_80;
             if _e199 {
-                local_74 = (s_13.light_param_b < s_13.light_param_a);
+                local_81 = (s_13.light_param_b < s_13.light_param_a);
             } else {
-                local_74 = false;
+                local_81 = false;
             }
-            let _e206 = local_74;
+            let _e206 = local_81;
             if _e206 {
-                local_75 = (s_13.light_param_b >= -1f);
+                local_82 = (s_13.light_param_b >= -1f);
             } else {
-                local_75 = false;
+                local_82 = false;
             }
-            let _e213 = local_75;
+            let _e213 = local_82;
             if _e213 {
-                local_76 = (s_13.light_param_a <= 1f);
+                local_83 = (s_13.light_param_a <= 1f);
             } else {
-                local_76 = false;
+                local_83 = false;
             }
-            let _e220 = local_76;
+            let _e220 = local_83;
             ok = _e220;
         } else {
             if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3260,39 +3364,39 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e230 = ok;
             if _e230 {
-                local_77 = g_ok;
+                local_84 = g_ok;
             } else {
-                local_77 = false;
+                local_84 = false;
             }
-            let _e234 = local_77;
+            let _e234 = local_84;
             ok = _e234;
         }
         case 5u: {
             let _e235 = ok;
             if _e235 {
-                local_78 = g_ok;
+                local_85 = g_ok;
             } else {
-                local_78 = false;
+                local_85 = false;
             }
-            let _e239 = local_78;
+            let _e239 = local_85;
             if _e239 {
-                local_79 = (abs(s_13.phase_param_b) < 1f);
+                local_86 = (abs(s_13.phase_param_b) < 1f);
             } else {
-                local_79 = false;
+                local_86 = false;
             }
-            let _e247 = local_79;
+            let _e247 = local_86;
             if _e247 {
-                local_80 = (s_13.phase_param_c >= 0f);
+                local_87 = (s_13.phase_param_c >= 0f);
             } else {
-                local_80 = false;
+                local_87 = false;
             }
-            let _e254 = local_80;
+            let _e254 = local_87;
             if _e254 {
-                local_81 = (s_13.phase_param_c <= 1f);
+                local_88 = (s_13.phase_param_c <= 1f);
             } else {
-                local_81 = false;
+                local_88 = false;
             }
-            let _e261 = local_81;
+            let _e261 = local_88;
             ok = _e261;
         }
         default: {
@@ -3363,53 +3467,53 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_82: bool;
-    var local_83: bool;
+    var local_89: bool;
+    var local_90: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_83 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_90 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_83 = false;
+            local_90 = false;
         }
-        let _e21 = local_83;
-        local_82 = _e21;
+        let _e21 = local_90;
+        local_89 = _e21;
     } else {
-        local_82 = true;
+        local_89 = true;
     }
-    let _e23 = local_82;
+    let _e23 = local_89;
     return _e23;
 }
 
 fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_84: bool;
+    var local_91: bool;
     var out_2: AirlightCanonical;
-    var local_85: bool;
+    var local_92: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_15.flags > 1u));
     let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
     let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
     let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
-    let hi_2 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_2 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir_2 = s_15.dir;
-    let _e33 = airlight_in_exact_range(hi_2);
+    let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_84 = !(_e38);
+        local_91 = !(_e38);
     } else {
-        local_84 = true;
+        local_91 = true;
     }
-    let _e41 = local_84;
+    let _e41 = local_91;
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_2.y, dir_2.z, hi_2.z, dir_2.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_2.z, dir_2.x, hi_2.x, dir_2.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_2.x, dir_2.y, hi_2.y, dir_2.x, key_4);
-    let w_4 = vec3<f32>((_e46 + ((lo_2.y * dir_2.z) - (lo_2.z * dir_2.y))), (_e59 + ((lo_2.z * dir_2.x) - (lo_2.x * dir_2.z))), (_e72 + ((lo_2.x * dir_2.y) - (lo_2.y * dir_2.x))));
+    let _e46 = airlight_diff_of_products(hi_3.y, dir_2.z, hi_3.z, dir_2.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_3.z, dir_2.x, hi_3.x, dir_2.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_3.x, dir_2.y, hi_3.y, dir_2.x, key_4);
+    let w_4 = vec3<f32>((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
     let _e82 = airlight_vec_finite(w_4);
     if !(_e82) {
         return plain;
@@ -3426,11 +3530,11 @@ fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_4 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_4);
     if _e95 {
-        local_85 = (h_4 > 0f);
+        local_92 = (h_4 > 0f);
     } else {
-        local_85 = false;
+        local_92 = false;
     }
-    let _e101 = local_85;
+    let _e101 = local_92;
     if !(_e101) {
         return plain;
     }
@@ -3584,10 +3688,10 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
 fn airlight_asinh(x_11: f32) -> f32 {
     var r_3: f32;
 
-    let a_20 = abs(x_11);
-    r_3 = (AIRLIGHT_LN_2_ + log(a_20));
-    if (a_20 <= 4096f) {
-        let _e17 = airlight_log1p((a_20 + ((a_20 * a_20) / (1f + sqrt((1f + (a_20 * a_20)))))));
+    let a_21 = abs(x_11);
+    r_3 = (AIRLIGHT_LN_2_ + log(a_21));
+    if (a_21 <= 4096f) {
+        let _e17 = airlight_log1p((a_21 + ((a_21 * a_21) / (1f + sqrt((1f + (a_21 * a_21)))))));
         r_3 = _e17;
     }
     let _e18 = r_3;
@@ -3595,9 +3699,9 @@ fn airlight_asinh(x_11: f32) -> f32 {
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_16: AirlightOuter, s_16: f32) -> f32 {
-    if (g_16.scale > 0f) {
-        let _e9 = airlight_asinh(((s_16 - g_16.s_star) / g_16.scale));
+fn airlight_to_w(g_18: AirlightOuter, s_16: f32) -> f32 {
+    if (g_18.scale > 0f) {
+        let _e9 = airlight_asinh(((s_16 - g_18.s_star) / g_18.scale));
         return _e9;
     }
     return s_16;
@@ -3612,8 +3716,8 @@ fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_13: f32) -> f32 {
-    let a_21 = abs(x_13);
-    let _e8 = airlight_atan(sqrt(((1f - a_21) / (1f + a_21))));
+    let a_22 = abs(x_13);
+    let _e8 = airlight_atan(sqrt(((1f - a_22) / (1f + a_22))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
@@ -3635,12 +3739,12 @@ fn airlight_angle(c_6: f32, s_17: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_22 = (cos_a * cos_g);
+    let a_23 = (cos_a * cos_g);
     let b_17 = (sin_a * sin_g);
-    if (b_17 <= abs(a_22)) {
-        return select(0f, AIRLIGHT_PI, (a_22 > 0f));
+    if (b_17 <= abs(a_23)) {
+        return select(0f, AIRLIGHT_PI, (a_23 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_22) / b_17), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_23) / b_17), -1f, 1f));
     return _e18;
 }
 
@@ -3649,38 +3753,38 @@ fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
 }
 
 fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
-    var g_17: AirlightOuter;
-    var local_86: bool;
+    var g_19: AirlightOuter;
+    var local_93: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_6: u32 = 0u;
     var i_17: u32 = 0u;
-    var local_87: bool;
+    var local_94: bool;
     var i_18: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
-    g_17 = _e2;
+    g_19 = _e2;
     let to_light_1 = (s_19.light_position - s_19.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_19.intensity == 0f)) {
-        local_86 = (s_19.sigma_s == 0f);
+        local_93 = (s_19.sigma_s == 0f);
     } else {
-        local_86 = true;
+        local_93 = true;
     }
-    let _e18 = local_86;
+    let _e18 = local_93;
     if _e18 {
-        g_17.outcome = 1u;
-        let _e21 = g_17;
+        g_19.outcome = 1u;
+        let _e21 = g_19;
         return _e21;
     }
     if !((_e7 > 0f)) {
-        g_17.outcome = 2u;
-        let _e27 = g_17;
+        g_19.outcome = 2u;
+        let _e27 = g_19;
         return _e27;
     }
     if (s_19.brdf_albedo == 0f) {
-        g_17.outcome = 1u;
-        let _e33 = g_17;
+        g_19.outcome = 1u;
+        let _e33 = g_19;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
@@ -3694,11 +3798,11 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
         let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u = _e64;
     }
-    g_17.l = l_3;
+    g_19.l = l_3;
     let _e67 = u;
-    g_17.u = _e67;
-    g_17.cos_a = cos_a_1;
-    g_17.sin_a = _e41;
+    g_19.u = _e67;
+    g_19.cos_a = cos_a_1;
+    g_19.sin_a = _e41;
     let _e71 = airlight_angle(cos_a_1, _e41);
     let first = abs((1.5707964f - _e71));
     cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
@@ -3720,22 +3824,22 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
             let _e96 = i_17;
             let _e98 = cuts_1[_e96];
             let _e100 = k_6;
-            let _e102 = g_17.gamma[_e100];
+            let _e102 = g_19.gamma[_e100];
             if (_e98 > _e102) {
                 let _e106 = i_17;
                 let _e108 = cuts_1[_e106];
-                local_87 = (_e108 < AIRLIGHT_PI);
+                local_94 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_87 = false;
+                local_94 = false;
             }
-            let _e112 = local_87;
+            let _e112 = local_94;
             if _e112 {
                 let _e113 = k_6;
                 k_6 = (_e113 + 1u);
                 let _e117 = k_6;
                 let _e119 = i_17;
                 let _e121 = cuts_1[_e119];
-                g_17.gamma[_e117] = _e121;
+                g_19.gamma[_e117] = _e121;
             }
         }
         continuing {
@@ -3744,12 +3848,12 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
         }
     }
     let _e126 = k_6;
-    g_17.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    g_19.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     let _e132 = k_6;
-    g_17.panels = (_e132 + 1u);
+    g_19.panels = (_e132 + 1u);
     loop {
         let _e137 = i_18;
-        let _e139 = g_17.panels;
+        let _e139 = g_19.panels;
         if (_e137 <= _e139) {
         } else {
             break;
@@ -3757,72 +3861,72 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
         {
             let _e142 = i_18;
             let _e144 = i_18;
-            g_17.edges[_e142] = f32(_e144);
+            g_19.edges[_e142] = f32(_e144);
         }
         continuing {
             let _e147 = i_18;
             i_18 = (_e147 + 1u);
         }
     }
-    let _e149 = g_17;
+    let _e149 = g_19;
     return _e149;
 }
 
 fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
-    var g_18: AirlightOuter;
-    var local_88: bool;
-    var local_89: bool;
+    var g_20: AirlightOuter;
+    var local_95: bool;
+    var local_96: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_90: bool;
-    var local_91: bool;
-    var local_92: bool;
-    var local_93: bool;
-    var local_94: bool;
-    var local_95: bool;
-    var scale: f32 = 0f;
-    var local_96: bool;
     var local_97: bool;
     var local_98: bool;
     var local_99: bool;
     var local_100: bool;
+    var local_101: bool;
+    var local_102: bool;
+    var scale: f32 = 0f;
+    var local_103: bool;
+    var local_104: bool;
+    var local_105: bool;
+    var local_106: bool;
+    var local_107: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
     var i_19: u32 = 0u;
-    var local_101: bool;
-    var local_102: bool;
-    var local_103: bool;
+    var local_108: bool;
+    var local_109: bool;
+    var local_110: bool;
     var n_1: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_104: bool;
+    var local_111: bool;
 
     if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e4 = airlight_surface(s_20);
         return _e4;
     }
     let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
-    g_18 = _e6;
+    g_20 = _e6;
     if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e11 = g_18;
+        let _e11 = g_20;
         return _e11;
     }
     let ab_1 = (s_20.light_end - s_20.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_88 = (s_20.intensity == 0f);
+        local_95 = (s_20.intensity == 0f);
     } else {
-        local_88 = true;
+        local_95 = true;
     }
-    let _e26 = local_88;
+    let _e26 = local_95;
     if !(_e26) {
-        local_89 = (s_20.sigma_s == 0f);
+        local_96 = (s_20.sigma_s == 0f);
     } else {
-        local_89 = true;
+        local_96 = true;
     }
-    let _e34 = local_89;
+    let _e34 = local_96;
     if _e34 {
-        g_18.outcome = 1u;
-        let _e37 = g_18;
+        g_20.outcome = 1u;
+        let _e37 = g_20;
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
@@ -3843,102 +3947,102 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_90 = (sin_a_1 > 0f);
+        local_97 = (sin_a_1 > 0f);
     } else {
-        local_90 = false;
+        local_97 = false;
     }
-    let _e84 = local_90;
+    let _e84 = local_97;
     if _e84 {
         let _e87 = s_star;
-        local_91 = (_e87 >= 0f);
+        local_98 = (_e87 >= 0f);
     } else {
-        local_91 = false;
+        local_98 = false;
     }
-    let _e91 = local_91;
+    let _e91 = local_98;
     if _e91 {
         let _e94 = s_star;
-        local_92 = (_e94 <= _e15);
+        local_99 = (_e94 <= _e15);
     } else {
-        local_92 = false;
+        local_99 = false;
     }
-    let _e97 = local_92;
+    let _e97 = local_99;
     if _e97 {
         let _e101 = t_star;
-        local_93 = (s_20.t_min <= _e101);
+        local_100 = (s_20.t_min <= _e101);
     } else {
-        local_93 = false;
+        local_100 = false;
     }
-    let _e104 = local_93;
+    let _e104 = local_100;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_95 = (_e110 <= s_20.t_max);
+            local_102 = (_e110 <= s_20.t_max);
         } else {
-            local_95 = true;
+            local_102 = true;
         }
-        let _e114 = local_95;
-        local_94 = _e114;
+        let _e114 = local_102;
+        local_101 = _e114;
     } else {
-        local_94 = false;
+        local_101 = false;
     }
-    let _e116 = local_94;
+    let _e116 = local_101;
     if _e116 {
-        g_18.outcome = 2u;
-        let _e119 = g_18;
+        g_20.outcome = 2u;
+        let _e119 = g_20;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_96 = (_e73 > 0f);
+        local_103 = (_e73 > 0f);
     } else {
-        local_96 = false;
+        local_103 = false;
     }
-    let _e129 = local_96;
+    let _e129 = local_103;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_97 = (_e136 < (_e15 + _e15));
+        local_104 = (_e136 < (_e15 + _e15));
     } else {
-        local_97 = false;
+        local_104 = false;
     }
-    let _e140 = local_97;
+    let _e140 = local_104;
     if _e140 {
         let _e143 = scale;
-        local_98 = (_e143 < _e15);
+        local_105 = (_e143 < _e15);
     } else {
-        local_98 = false;
+        local_105 = false;
     }
-    let near_2 = local_98;
+    let near_2 = local_105;
     if near_2 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_99 = _e154;
+        local_106 = _e154;
     } else {
-        local_99 = false;
+        local_106 = false;
     }
-    let _e156 = local_99;
+    let _e156 = local_106;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_100 = _e163;
+        local_107 = _e163;
     } else {
-        local_100 = false;
+        local_107 = false;
     }
-    let _e165 = local_100;
+    let _e165 = local_107;
     if !(_e165) {
         scale = 0f;
     }
-    g_18.e = e_4;
+    g_20.e = e_4;
     let _e170 = s_star;
-    g_18.s_star = _e170;
+    g_20.s_star = _e170;
     let _e172 = scale;
-    g_18.scale = _e172;
+    g_20.scale = _e172;
     let _e178 = s_star;
     at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     loop {
@@ -3950,21 +4054,21 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
         {
             if (cos_a_2 == 0f) {
                 let _e196 = i_19;
-                local_101 = (_e196 > 0u);
+                local_108 = (_e196 > 0u);
             } else {
-                local_101 = false;
+                local_108 = false;
             }
-            let _e200 = local_101;
+            let _e200 = local_108;
             if _e200 {
                 continue;
             }
             let _e201 = i_19;
             if (_e201 == 2u) {
-                local_102 = infinite_4;
+                local_109 = infinite_4;
             } else {
-                local_102 = false;
+                local_109 = false;
             }
-            let _e207 = local_102;
+            let _e207 = local_109;
             if _e207 {
                 continue;
             }
@@ -3973,14 +4077,14 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
             if (_e210 > 0f) {
                 let _e215 = i_19;
                 let _e217 = at[_e215];
-                local_103 = (_e217 < _e15);
+                local_110 = (_e217 < _e15);
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            let _e220 = local_103;
+            let _e220 = local_110;
             if _e220 {
                 let _e221 = i_19;
-                let _e223 = g_18;
+                let _e223 = g_20;
                 let _e224 = i_19;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
@@ -4016,11 +4120,11 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
         cuts_2[0] = _e262;
         cuts_2[1] = c_12;
     }
-    let _e264 = g_18;
+    let _e264 = g_20;
     let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_18;
+    let _e268 = g_20;
     let _e270 = airlight_to_w(_e268, 0f);
-    g_18.edges[0] = _e270;
+    g_20.edges[0] = _e270;
     loop {
         let _e275 = i_20;
         if (_e275 < 3u) {
@@ -4031,22 +4135,22 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
             let _e278 = i_20;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
-            let _e284 = g_18.edges[_e282];
+            let _e284 = g_20.edges[_e282];
             if (_e280 > _e284) {
                 let _e288 = i_20;
                 let _e290 = cuts_2[_e288];
-                local_104 = (_e290 < _e265);
+                local_111 = (_e290 < _e265);
             } else {
-                local_104 = false;
+                local_111 = false;
             }
-            let _e293 = local_104;
+            let _e293 = local_111;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
                 let _e300 = i_20;
                 let _e302 = cuts_2[_e300];
-                g_18.edges[_e298] = _e302;
+                g_20.edges[_e298] = _e302;
             }
         }
         continuing {
@@ -4055,14 +4159,14 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
         }
     }
     let _e307 = n_1;
-    g_18.edges[(_e307 + 1u)] = _e265;
+    g_20.edges[(_e307 + 1u)] = _e265;
     let _e312 = n_1;
-    g_18.panels = (_e312 + 1u);
-    let _e315 = g_18;
+    g_20.panels = (_e312 + 1u);
+    let _e315 = g_20;
     return _e315;
 }
 
-fn airlight_outer_node(s_21: AirlightScene, g_19: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_21: AirlightScene, g_21: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -4071,25 +4175,25 @@ fn airlight_outer_node(s_21: AirlightScene, g_19: AirlightOuter, x_14: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_21 = min(u32(max(floor(x_14), 0f)), (g_19.panels - 1u));
+        let i_21 = min(u32(max(floor(x_14), 0f)), (g_21.panels - 1u));
         let t_6 = (x_14 - f32(i_21));
-        let a_23 = g_19.gamma[i_21];
-        let b_18 = g_19.gamma[(i_21 + 1u)];
-        let gamma = (a_23 + ((((b_18 - a_23) * t_6) * t_6) * ((3f - t_6) - t_6)));
-        let jacobian = ((((b_18 - a_23) * 6f) * t_6) * (1f - t_6));
+        let a_24 = g_21.gamma[i_21];
+        let b_18 = g_21.gamma[(i_21 + 1u)];
+        let gamma = (a_24 + ((((b_18 - a_24) * t_6) * t_6) * ((3f - t_6) - t_6)));
+        let jacobian = ((((b_18 - a_24) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
             let _e45 = p;
             return AirlightNode(_e45, 0f);
         }
         let _e48 = airlight_cos_sin_half_turn(gamma);
-        let _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
+        let _e53 = airlight_half_arc(g_21.cos_a, g_21.sin_a, _e48.x, _e48.y);
         if !((_e53 > 0f)) {
             let _e57 = p;
             return AirlightNode(_e57, 0f);
         }
         let _e67 = airlight_cos_sin_half_turn(_e53);
-        let arc = (2f * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_19.l) + (_e48.y * g_19.u));
+        let arc = (2f * (((g_21.cos_a * _e48.x) * _e53) + ((g_21.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_21.l) + (_e48.y * g_21.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
@@ -4098,12 +4202,12 @@ fn airlight_outer_node(s_21: AirlightScene, g_19: AirlightOuter, x_14: f32) -> A
     }
     if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
-        if (g_19.scale > 0f) {
-            at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
-            ds = (g_19.scale * cosh(x_14));
+        if (g_21.scale > 0f) {
+            at_1 = (g_21.s_star + (g_21.scale * sinh(x_14)));
+            ds = (g_21.scale * cosh(x_14));
         }
         let _e115 = at_1;
-        p.light_position = (g_19.a + (_e115 * g_19.e));
+        p.light_position = (g_21.a + (_e115 * g_21.e));
         let _e119 = p;
         let _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -4125,17 +4229,17 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var k_7: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_105: bool;
+    var local_112: bool;
     var f: f32;
     var r_4: AirlightResult;
-    var local_106: bool;
-    var local_107: bool;
-    var local_108: bool;
+    var local_113: bool;
+    var local_114: bool;
+    var local_115: bool;
     var split: bool;
     var tries: u32;
-    var local_109: bool;
-    var local_110: bool;
-    var local_111: bool;
+    var local_116: bool;
+    var local_117: bool;
+    var local_118: bool;
 
     let _e1 = airlight_valid(s_22);
     if !(_e1) {
@@ -4180,11 +4284,11 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                     let _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_4;
-                        local_105 = (_e96 < 6u);
+                        local_112 = (_e96 < 6u);
                     } else {
-                        local_105 = false;
+                        local_112 = false;
                     }
-                    let _e100 = local_105;
+                    let _e100 = local_112;
                     let w_5 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
                     let _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0f;
@@ -4194,11 +4298,11 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
-                            local_106 = _e118;
+                            local_113 = _e118;
                         } else {
-                            local_106 = false;
+                            local_113 = false;
                         }
-                        let _e120 = local_106;
+                        let _e120 = local_113;
                         if _e120 {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
@@ -4209,20 +4313,20 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
                             let _e132 = r_4.status;
-                            local_107 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_107 = true;
+                            local_114 = true;
                         }
-                        let _e136 = local_107;
+                        let _e136 = local_114;
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
                         if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_108 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_108 = false;
+                            local_115 = false;
                         }
-                        let _e149 = local_108;
+                        let _e149 = local_115;
                         if _e149 {
                             let _e150 = r_4;
                             return _e150;
@@ -4290,18 +4394,18 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                             let worst_1 = _e212.worst;
                             if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e223 = count_2;
-                                local_109 = (_e223 == _e6.max_panels);
+                                local_116 = (_e223 == _e6.max_panels);
                             } else {
-                                local_109 = true;
+                                local_116 = true;
                             }
-                            let _e227 = local_109;
+                            let _e227 = local_116;
                             if !(_e227) {
                                 let _e231 = airlight_is_finite(total_4);
-                                local_110 = !(_e231);
+                                local_117 = !(_e231);
                             } else {
-                                local_110 = true;
+                                local_117 = true;
                             }
-                            let _e234 = local_110;
+                            let _e234 = local_117;
                             if _e234 {
                                 break;
                             }
@@ -4311,11 +4415,11 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                             let wb_1 = _e236.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_111 = (mid_1 < wb_1);
+                                local_118 = (mid_1 < wb_1);
                             } else {
-                                local_111 = false;
+                                local_118 = false;
                             }
-                            let _e247 = local_111;
+                            let _e247 = local_118;
                             if !(_e247) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;

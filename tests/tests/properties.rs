@@ -230,3 +230,59 @@ fn henyey_greenstein_peak_does_not_cancel() {
         }
     }
 }
+
+/// A light that declares where it is dark (`LightDistribution::dark_below`: a spot cone outside
+/// its outer cone, a flat emitter behind its plane) makes the default path skip those pieces of
+/// the ray. Skipping must change nothing but the work: the same light wrapped in a distribution
+/// that declares nothing (a user's own type, delegating `eval`, `axis` and `kinks`) evaluates
+/// every piece, and the two values are bit-identical (a lit piece skipped would lose its light;
+/// a dark one integrates to exactly 0), with at least as many panels — and fewer on some scenes.
+/// A ray the cone never reaches is 0 with no panel.
+#[test]
+fn dark_pieces_are_skipped_exactly() {
+    use airlight::light::{Lambertian, SpotCone};
+    use airlight::{default_control, LightDistribution, Medium, PointLight, Ray, Scalar};
+    use airlight::glam::DVec3;
+
+    #[derive(Clone, Copy, Debug)]
+    struct Undeclared<D>(D);
+    impl<D: LightDistribution<f64>> LightDistribution<f64> for Undeclared<D> {
+        fn axis(&self) -> [f64; 3] {
+            self.0.axis()
+        }
+        fn eval<S: Scalar<f64>>(&self, c: S) -> S {
+            self.0.eval(c)
+        }
+        fn kinks(&self) -> [Option<f64>; 2] {
+            self.0.kinks()
+        }
+    }
+    fn both<D: LightDistribution<f64> + Copy + core::fmt::Debug>(p: &airlight_tests::scenes::Plain, dist: D) -> ((f64, usize), (f64, usize)) {
+        let ray = Ray { origin: DVec3::from_array(p.origin), dir: DVec3::from_array(p.dir), t_min: p.t_min, t_max: p.t_max };
+        let medium = Medium { sigma_s: p.sigma_s, sigma_t: p.sigma_t };
+        let (position, intensity) = (DVec3::from_array(p.light), p.intensity);
+        let declared = Scene::new(ray, PointLight { position, intensity, distribution: dist }, medium, p.phase).unwrap();
+        let undeclared = Scene::new(ray, PointLight { position, intensity, distribution: Undeclared(dist) }, medium, p.phase).unwrap();
+        (declared.in_scatter_panels_counted::<16>(default_control()), undeclared.in_scatter_panels_counted::<16>(default_control()))
+    }
+    let mut rng = Rng(23);
+    let (mut compared, mut fewer) = (0, 0);
+    for i in 0..CASES {
+        let p = random(&mut rng, Aniso::Any);
+        let axis = DVec3::from_array(rng.unit_vector());
+        let co = rng.range(-0.9, 0.99);
+        let spot = SpotCone { axis, cos_inner: co + rng.range(0.0, 1.0 - co), cos_outer: co };
+        let ((v, n), (w, m)) = if i % 3 == 0 { both(&p, Lambertian { axis }) } else { both(&p, spot) };
+        assert!(v.to_bits() == w.to_bits() || (v.is_nan() && w.is_nan()), "case {i}: {v} declared vs {w} undeclared in {p:?}");
+        assert!(n <= m, "case {i}: {n} panels declared vs {m} undeclared");
+        compared += 1;
+        fewer += usize::from(n < m);
+    }
+    println!("{compared} scenes, {fewer} with fewer panels");
+    assert!(fewer > compared / 10, "the dark pieces were skipped on only {fewer} of {compared} scenes");
+    // a spot pointing away from the ray: dark everywhere
+    let ray = Ray { origin: DVec3::ZERO, dir: DVec3::X, t_min: 0.0, t_max: 50.0 };
+    let away = PointLight { position: DVec3::new(10.0, 2.0, 0.0), intensity: 100.0, distribution: SpotCone { axis: DVec3::Y, cos_inner: 0.9, cos_outer: 0.8 } };
+    let scene = Scene::new(ray, away, Medium { sigma_s: 0.1, sigma_t: 0.2 }, AnyPhase::Isotropic).unwrap();
+    assert_eq!(scene.in_scatter_panels_counted::<16>(default_control()), (0.0, 0), "a ray outside the cone");
+}

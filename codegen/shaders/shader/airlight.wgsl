@@ -1064,13 +1064,42 @@ fn airlight_crossings(sigma: f32, d_el: f32, d_c: f32, k: f32) -> vec2<f32> {
     return vec2<f32>(r1, r2);
 }
 
+/// c(y) = (σ d_el(1−y²) + 2 d_c y)/(1+y²) (combined.rs `cosine`).
+fn airlight_cosine(g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
+    let y2 = y * y;
+    return ((1.0 - y2) * (sigma * g.d_el) + (y + y) * g.d_c) / (1.0 + y2);
+}
+
+/// Whether the light is dark (D = 0 for c < bound) on all of the piece [lo, hi] of a half
+/// (combined.rs `HalfIntegrand::dark`): c < bound at the piece's middle, at the stationary
+/// points of c inside it (d_c y² + 2σd_el y − d_c = 0) and at those of its ends that are the
+/// half's ends.
+fn airlight_dark(g: AirlightCanonical, sigma: f32, half: AirlightHalf, bound: f32, lo: f32, hi: f32) -> bool {
+    if (!(airlight_cosine(g, sigma, 0.5 * (lo + hi)) < bound)) { return false; }
+    if (lo == half.y_lo && !(airlight_cosine(g, sigma, lo) < bound)) { return false; }
+    if (hi == half.y_hi && !(airlight_cosine(g, sigma, hi) < bound)) { return false; }
+    let a = sigma * g.d_el;
+    let d = g.d_c;
+    if (d == 0.0) { return true; }
+    let root = sqrt(a * a + d * d);
+    var y1 = (root - a) / d;
+    if (a > 0.0) { y1 = d / (a + root); }
+    let y2 = -1.0 / y1;
+    if (y1 > lo && y1 < hi && !(airlight_cosine(g, sigma, y1) < bound)) { return false; }
+    if (y2 > lo && y2 < hi && !(airlight_cosine(g, sigma, y2) < bound)) { return false; }
+    return true;
+}
+
 /// ∫ e^{−H(v − v_s)} F/(1+v²) dv on one half, in pieces split where c(y) crosses a spot
-/// cone's edges (combined.rs `half_integral`); f_max: the largest |F| seen on the segment.
+/// cone's edges (combined.rs `half_integral`), the pieces outside the cone skipped;
+/// f_max: the largest |F| seen on the segment.
 fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, isotropic: bool, f_max: ptr<function, f32>) -> f32 {
     if (isotropic) {
         return airlight_integrand(s, g, sigma, half.y_lo + half.dy * 0.5) * airlight_moment_zero(half);
     }
     var cuts = array<f32, 4>(2.0, 2.0, 2.0, 2.0);
+    // a spot is dark below this cosine (light.rs `dark_below`): its outer cone, or its step
+    var dark_below = -1.0;
     if (s.light_kind == AIRLIGHT_LIGHT_SPOT) {
         // a needle-thin edge is a step: one cut at its middle (both crossings coincide; the
         // zero-width piece between them is skipped below)
@@ -1081,6 +1110,7 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
             k_in = k_out + width * 0.5;
             k_out = k_in;
         }
+        dark_below = k_out;
         let r_in = airlight_crossings(sigma, g.d_el, g.d_c, k_in);
         let r_out = airlight_crossings(sigma, g.d_el, g.d_c, k_out);
         cuts = array<f32, 4>(r_in.x, r_in.y, r_out.x, r_out.y);
@@ -1104,7 +1134,9 @@ fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airli
         var hi = half.y_hi;
         if (i < 4u && cuts[i] < 2.0) { hi = cuts[i]; }
         if (hi > lo) {
-            total += airlight_integrate_piece(s, g, sigma, half, lo, hi, f_max);
+            if (!(s.light_kind == AIRLIGHT_LIGHT_SPOT && airlight_dark(g, sigma, half, dark_below, lo, hi))) {
+                total += airlight_integrate_piece(s, g, sigma, half, lo, hi, f_max);
+            }
             lo = hi;
         }
         if (i < 4u && cuts[i] >= 2.0) { break; }
