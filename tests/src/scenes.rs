@@ -4,7 +4,7 @@ use crate::Rng;
 use airlight::glam::{DVec3, Vec3};
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
-use airlight::{Medium, PointLight, Ray, Scene};
+use airlight::{LightDistribution, Medium, PointLight, Ray, Scene};
 use airlight::record::{cast_light, cast_phase};
 
 /// A scene in plain f64 numbers, convertible to either precision.
@@ -116,9 +116,15 @@ pub fn random(rng: &mut Rng, a: Aniso) -> Plain {
 impl Plain {
     /// The f64 scene.
     pub fn f64(&self) -> Scene<f64, AnyDistribution<f64>, AnyPhase<f64>> {
+        self.f64_with(self.dist)
+    }
+
+    /// The f64 scene with `distribution` in place of [`Plain::dist`] (any type, a user's own
+    /// included).
+    pub fn f64_with<D: LightDistribution<f64>>(&self, distribution: D) -> Scene<f64, D, AnyPhase<f64>> {
         Scene::new(
             Ray { origin: DVec3::from_array(self.origin), dir: DVec3::from_array(self.dir), t_min: self.t_min, t_max: self.t_max },
-            PointLight { position: DVec3::from_array(self.light), intensity: self.intensity, distribution: self.dist },
+            PointLight { position: DVec3::from_array(self.light), intensity: self.intensity, distribution },
             Medium { sigma_s: self.sigma_s, sigma_t: self.sigma_t },
             self.phase,
         )

@@ -257,13 +257,9 @@ fn dark_pieces_are_skipped_exactly() {
             self.0.kinks()
         }
     }
-    fn both<D: LightDistribution<f64> + Copy + core::fmt::Debug>(p: &airlight_tests::scenes::Plain, dist: D) -> ((f64, usize), (f64, usize)) {
-        let ray = Ray { origin: DVec3::from_array(p.origin), dir: DVec3::from_array(p.dir), t_min: p.t_min, t_max: p.t_max };
-        let medium = Medium { sigma_s: p.sigma_s, sigma_t: p.sigma_t };
-        let (position, intensity) = (DVec3::from_array(p.light), p.intensity);
-        let declared = Scene::new(ray, PointLight { position, intensity, distribution: dist }, medium, p.phase).unwrap();
-        let undeclared = Scene::new(ray, PointLight { position, intensity, distribution: Undeclared(dist) }, medium, p.phase).unwrap();
-        (declared.in_scatter_panels_counted::<16>(default_control()), undeclared.in_scatter_panels_counted::<16>(default_control()))
+    fn both<D: LightDistribution<f64> + Copy>(p: &airlight_tests::scenes::Plain, dist: D) -> ((f64, usize), (f64, usize)) {
+        let control = default_control();
+        (p.f64_with(dist).in_scatter_panels_counted::<16>(control), p.f64_with(Undeclared(dist)).in_scatter_panels_counted::<16>(control))
     }
     let mut rng = Rng(23);
     let (mut compared, mut fewer) = (0, 0);

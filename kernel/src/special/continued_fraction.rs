@@ -90,4 +90,3 @@ pub fn e1_scaled_cf_depth<T: Real>(z: C<T>, n: usize) -> C<T> {
     }
     cdiv(one, t)
 }
-
