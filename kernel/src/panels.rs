@@ -253,9 +253,15 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N]) -> T {
     // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end, whose mass
     // between the last node and the end the nodes miss
     let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
-    let aliasing = if c_max > T::lit(1.2) * c[0].abs() { q.powi((N / 6) as i32) } else { q.powi((N / 4) as i32) };
+    let aliasing = power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 });
     let truncation = q * m[N - 1].abs().max(m[N - 2].abs()) / m[0];
     (aliasing + truncation).min(T::one())
+}
+
+/// `q^k` for the small `k` of [`error_factor`], by products (no library call).
+#[inline]
+fn power<T: Real>(q: T, k: usize) -> T {
+    (0..k).fold(T::one(), |p, _| p * q)
 }
 
 /// A v-panel (module docs).
@@ -459,8 +465,9 @@ fn legendre_to_monomial<T: Real, const N: usize>(c: &[T; N]) -> [T; N] {
 /// `k < out.len() ≤ MAX_N`. The three-term recurrence `i_{k−1} − i_{k+1} = (2k+1) i_k/λ`
 /// (DLMF 10.51.4) is stable upward while `k ≲ λ` and downward above, so:
 /// * `0 < λ < 2K` (`K = out.len()`): Miller's backward recurrence from order
-///   `k0 = max(K, λ)` plus `⌈ln(1/ε)/(2 ln(2k0/λ))⌉ + 2` steps (at most 30: above `k0` the
-///   error's share shrinks by `(λ/2k)² ≤ 1/4` per step down, much faster for small `λ`),
+///   `k0 = max(K, ⌊λ⌋ + 1)` plus `s + 2` steps, `s` the fewest with `(λ/2k0)^{2s} ≤ ε` (at most
+///   28: above `k0` the error's share shrinks by `(λ/2k)² ≤ 1/4` per step down, much faster
+///   for small `λ`),
 ///   normalised by `e^{−λ} i_0 = (1 − e^{−2λ})/(2λ)`, rescaled by 1e-20 whenever a value
 ///   passes 1e20 (for small `λ` each step grows by `(2k+1)/λ`);
 /// * `λ ≥ 2K`: upward from `e^{−λ} i_0` and `e^{−λ} i_1 = ((1 + e^{−2λ})/2 − (1 − e^{−2λ})/(2λ))/λ`
@@ -491,15 +498,19 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         }
     } else if lambda < T::from(2 * n).unwrap() {
         let inv = lambda.recip();
-        // Above k0 = max(K, λ) the error's share shrinks by (λ/(2k))² ≤ 1/4 per step down (the
+        // Above k0 = max(K, ⌊λ⌋ + 1) the error's share shrinks by (λ/(2k))² ≤ 1/4 per step down (the
         // minimal solution falls by λ/(2k+3) per step up, the other grows by (2k+1)/λ): enough
         // steps for ε, plus two.
-        let k0 = n.max(lambda.ceil().to_usize().unwrap_or(n));
-        let per_step = T::lit(-2.0) * (lambda / T::from(2 * k0).unwrap()).ln();
-        // ln(1/ε): 52 ln 2 or 23 ln 2
-        let ln_inv_eps = T::lit(if T::epsilon() < T::lit(1e-10) { 36.04365338911715 } else { 15.942385152878742 });
-        let steps = (ln_inv_eps / per_step).ceil().to_usize().unwrap_or(28).min(28) + 2;
-        let top = k0 + steps;
+        let k0 = n.max(lambda.to_usize().map_or(n, |k| k + 1));
+        // the fewest steps s with (λ/(2k0))^{2s} ≤ ε (at most 28), by products: no logarithm
+        let x = lambda / T::from(2 * k0).unwrap();
+        let per_step = x * x;
+        let (mut share, mut steps) = (per_step, 1);
+        while share > T::epsilon() && steps < 28 {
+            share = share * per_step;
+            steps += 1;
+        }
+        let top = k0 + steps + 2;
         let (mut above, mut cur) = (T::zero(), T::lit(1e-20));
         let mut odd = T::from(2 * top + 1).unwrap(); // 2k + 1
         // cur = f_k, above = f_{k+1}; f_{k−1} = f_{k+1} + (2k+1)/λ f_k

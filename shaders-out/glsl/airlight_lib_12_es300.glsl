@@ -383,8 +383,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_23 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_23 * s_23);
+    float s_24 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_24 * s_24);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -404,7 +404,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_23) * _e35);
+    return ((2.0 * s_24) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -1168,6 +1168,9 @@ float airlight_expm1_(float x_6) {
 
 float[12] airlight_exp_legendre_moments(float lambda) {
     float out_1[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float share = 0.0;
+    uint steps = 1u;
+    uint s_4 = 1u;
     float above = 0.0;
     float cur = 1e-20;
     float below = 0.0;
@@ -1193,478 +1196,503 @@ float[12] airlight_exp_legendre_moments(float lambda) {
     } else {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
-            uint k0_ = max(AIRLIGHT_TERMS, uint(ceil(lambda)));
-            float per_step = (-2.0 * log((lambda / float((2u * k0_)))));
-            uint steps = (uint(min(ceil((15.942385 / per_step)), 28.0)) + 2u);
-            uint top = (k0_ + steps);
-            odd = float(((2u * top) + 1u));
+            uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
+            float x_19 = (lambda / float((2u * k0_)));
+            float per_step = (x_19 * x_19);
+            share = per_step;
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e91 = i_5;
-                    i_5 = (_e91 + 1u);
+                    uint _e58 = s_4;
+                    s_4 = (_e58 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e64 = i_5;
-                if ((_e64 < 54u)) {
+                uint _e45 = s_4;
+                if ((_e45 < 28u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e67 = i_5;
-                    if (((_e67 + AIRLIGHT_TERMS) > top)) {
+                    float _e48 = share;
+                    if (!((_e48 > AIRLIGHT_FLT_EPS))) {
                         break;
                     }
-                    float _e70 = above;
-                    float _e71 = odd;
-                    float _e73 = cur;
-                    below = (_e70 + ((_e71 * inv_3) * _e73));
-                    float _e76 = odd;
-                    odd = (_e76 - 2.0);
-                    float _e79 = cur;
-                    above = _e79;
-                    float _e80 = below;
-                    cur = _e80;
-                    float _e81 = cur;
-                    if ((_e81 > 1e20)) {
-                        float _e84 = cur;
-                        cur = (_e84 * 1e-20);
-                        float _e87 = above;
-                        above = (_e87 * 1e-20);
+                    float _e52 = share;
+                    share = (_e52 * per_step);
+                    uint _e54 = steps;
+                    steps = (_e54 + 1u);
+                }
+            }
+            uint _e60 = steps;
+            uint top = ((k0_ + _e60) + 2u);
+            odd = float(((2u * top) + 1u));
+            bool loop_init_11 = true;
+            while(true) {
+                if (!loop_init_11) {
+                    uint _e105 = i_5;
+                    i_5 = (_e105 + 1u);
+                }
+                loop_init_11 = false;
+                uint _e78 = i_5;
+                if ((_e78 < 54u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e81 = i_5;
+                    if (((_e81 + AIRLIGHT_TERMS) > top)) {
+                        break;
+                    }
+                    float _e84 = above;
+                    float _e85 = odd;
+                    float _e87 = cur;
+                    below = (_e84 + ((_e85 * inv_3) * _e87));
+                    float _e90 = odd;
+                    odd = (_e90 - 2.0);
+                    float _e93 = cur;
+                    above = _e93;
+                    float _e94 = below;
+                    cur = _e94;
+                    float _e95 = cur;
+                    if ((_e95 > 1e20)) {
+                        float _e98 = cur;
+                        cur = (_e98 * 1e-20);
+                        float _e101 = above;
+                        above = (_e101 * 1e-20);
                     }
                 }
             }
-            float _e94 = cur;
-            out_1[11] = _e94;
-            float _e95 = above;
-            float _e96 = odd;
-            float _e98 = cur;
-            below = (_e95 + ((_e96 * inv_3) * _e98));
-            float _e101 = odd;
-            odd = (_e101 - 2.0);
-            float _e104 = cur;
-            above = _e104;
-            float _e105 = below;
-            cur = _e105;
-            float _e106 = cur;
-            if ((_e106 > 1e20)) {
-                float _e109 = cur;
-                cur = (_e109 * 1e-20);
-                float _e112 = above;
-                above = (_e112 * 1e-20);
-                float _e116 = out_1[11];
-                out_1[11] = (_e116 * 1e-20);
-            }
+            float _e108 = cur;
+            out_1[11] = _e108;
+            float _e109 = above;
+            float _e110 = odd;
+            float _e112 = cur;
+            below = (_e109 + ((_e110 * inv_3) * _e112));
+            float _e115 = odd;
+            odd = (_e115 - 2.0);
+            float _e118 = cur;
+            above = _e118;
+            float _e119 = below;
+            cur = _e119;
             float _e120 = cur;
-            out_1[10] = _e120;
-            float _e121 = above;
-            float _e122 = odd;
-            float _e124 = cur;
-            below = (_e121 + ((_e122 * inv_3) * _e124));
-            float _e127 = odd;
-            odd = (_e127 - 2.0);
-            float _e130 = cur;
-            above = _e130;
-            float _e131 = below;
-            cur = _e131;
-            float _e132 = cur;
-            if ((_e132 > 1e20)) {
-                float _e135 = cur;
-                cur = (_e135 * 1e-20);
-                float _e138 = above;
-                above = (_e138 * 1e-20);
-                float _e142 = out_1[10];
-                out_1[10] = (_e142 * 1e-20);
-                float _e146 = out_1[11];
-                out_1[11] = (_e146 * 1e-20);
+            if ((_e120 > 1e20)) {
+                float _e123 = cur;
+                cur = (_e123 * 1e-20);
+                float _e126 = above;
+                above = (_e126 * 1e-20);
+                float _e130 = out_1[11];
+                out_1[11] = (_e130 * 1e-20);
             }
-            float _e150 = cur;
-            out_1[9] = _e150;
-            float _e151 = above;
-            float _e152 = odd;
-            float _e154 = cur;
-            below = (_e151 + ((_e152 * inv_3) * _e154));
-            float _e157 = odd;
-            odd = (_e157 - 2.0);
-            float _e160 = cur;
-            above = _e160;
-            float _e161 = below;
-            cur = _e161;
-            float _e162 = cur;
-            if ((_e162 > 1e20)) {
-                float _e165 = cur;
-                cur = (_e165 * 1e-20);
-                float _e168 = above;
-                above = (_e168 * 1e-20);
-                float _e172 = out_1[9];
-                out_1[9] = (_e172 * 1e-20);
-                float _e176 = out_1[10];
-                out_1[10] = (_e176 * 1e-20);
-                float _e180 = out_1[11];
-                out_1[11] = (_e180 * 1e-20);
+            float _e134 = cur;
+            out_1[10] = _e134;
+            float _e135 = above;
+            float _e136 = odd;
+            float _e138 = cur;
+            below = (_e135 + ((_e136 * inv_3) * _e138));
+            float _e141 = odd;
+            odd = (_e141 - 2.0);
+            float _e144 = cur;
+            above = _e144;
+            float _e145 = below;
+            cur = _e145;
+            float _e146 = cur;
+            if ((_e146 > 1e20)) {
+                float _e149 = cur;
+                cur = (_e149 * 1e-20);
+                float _e152 = above;
+                above = (_e152 * 1e-20);
+                float _e156 = out_1[10];
+                out_1[10] = (_e156 * 1e-20);
+                float _e160 = out_1[11];
+                out_1[11] = (_e160 * 1e-20);
             }
-            float _e184 = cur;
-            out_1[8] = _e184;
-            float _e185 = above;
-            float _e186 = odd;
-            float _e188 = cur;
-            below = (_e185 + ((_e186 * inv_3) * _e188));
-            float _e191 = odd;
-            odd = (_e191 - 2.0);
-            float _e194 = cur;
-            above = _e194;
-            float _e195 = below;
-            cur = _e195;
-            float _e196 = cur;
-            if ((_e196 > 1e20)) {
-                float _e199 = cur;
-                cur = (_e199 * 1e-20);
-                float _e202 = above;
-                above = (_e202 * 1e-20);
-                float _e206 = out_1[8];
-                out_1[8] = (_e206 * 1e-20);
-                float _e210 = out_1[9];
-                out_1[9] = (_e210 * 1e-20);
-                float _e214 = out_1[10];
-                out_1[10] = (_e214 * 1e-20);
-                float _e218 = out_1[11];
-                out_1[11] = (_e218 * 1e-20);
+            float _e164 = cur;
+            out_1[9] = _e164;
+            float _e165 = above;
+            float _e166 = odd;
+            float _e168 = cur;
+            below = (_e165 + ((_e166 * inv_3) * _e168));
+            float _e171 = odd;
+            odd = (_e171 - 2.0);
+            float _e174 = cur;
+            above = _e174;
+            float _e175 = below;
+            cur = _e175;
+            float _e176 = cur;
+            if ((_e176 > 1e20)) {
+                float _e179 = cur;
+                cur = (_e179 * 1e-20);
+                float _e182 = above;
+                above = (_e182 * 1e-20);
+                float _e186 = out_1[9];
+                out_1[9] = (_e186 * 1e-20);
+                float _e190 = out_1[10];
+                out_1[10] = (_e190 * 1e-20);
+                float _e194 = out_1[11];
+                out_1[11] = (_e194 * 1e-20);
             }
-            float _e222 = cur;
-            out_1[7] = _e222;
-            float _e223 = above;
-            float _e224 = odd;
-            float _e226 = cur;
-            below = (_e223 + ((_e224 * inv_3) * _e226));
-            float _e229 = odd;
-            odd = (_e229 - 2.0);
-            float _e232 = cur;
-            above = _e232;
-            float _e233 = below;
-            cur = _e233;
-            float _e234 = cur;
-            if ((_e234 > 1e20)) {
-                float _e237 = cur;
-                cur = (_e237 * 1e-20);
-                float _e240 = above;
-                above = (_e240 * 1e-20);
-                float _e244 = out_1[7];
-                out_1[7] = (_e244 * 1e-20);
-                float _e248 = out_1[8];
-                out_1[8] = (_e248 * 1e-20);
-                float _e252 = out_1[9];
-                out_1[9] = (_e252 * 1e-20);
-                float _e256 = out_1[10];
-                out_1[10] = (_e256 * 1e-20);
-                float _e260 = out_1[11];
-                out_1[11] = (_e260 * 1e-20);
+            float _e198 = cur;
+            out_1[8] = _e198;
+            float _e199 = above;
+            float _e200 = odd;
+            float _e202 = cur;
+            below = (_e199 + ((_e200 * inv_3) * _e202));
+            float _e205 = odd;
+            odd = (_e205 - 2.0);
+            float _e208 = cur;
+            above = _e208;
+            float _e209 = below;
+            cur = _e209;
+            float _e210 = cur;
+            if ((_e210 > 1e20)) {
+                float _e213 = cur;
+                cur = (_e213 * 1e-20);
+                float _e216 = above;
+                above = (_e216 * 1e-20);
+                float _e220 = out_1[8];
+                out_1[8] = (_e220 * 1e-20);
+                float _e224 = out_1[9];
+                out_1[9] = (_e224 * 1e-20);
+                float _e228 = out_1[10];
+                out_1[10] = (_e228 * 1e-20);
+                float _e232 = out_1[11];
+                out_1[11] = (_e232 * 1e-20);
             }
-            float _e264 = cur;
-            out_1[6] = _e264;
-            float _e265 = above;
-            float _e266 = odd;
-            float _e268 = cur;
-            below = (_e265 + ((_e266 * inv_3) * _e268));
-            float _e271 = odd;
-            odd = (_e271 - 2.0);
-            float _e274 = cur;
-            above = _e274;
-            float _e275 = below;
-            cur = _e275;
-            float _e276 = cur;
-            if ((_e276 > 1e20)) {
-                float _e279 = cur;
-                cur = (_e279 * 1e-20);
-                float _e282 = above;
-                above = (_e282 * 1e-20);
-                float _e286 = out_1[6];
-                out_1[6] = (_e286 * 1e-20);
-                float _e290 = out_1[7];
-                out_1[7] = (_e290 * 1e-20);
-                float _e294 = out_1[8];
-                out_1[8] = (_e294 * 1e-20);
-                float _e298 = out_1[9];
-                out_1[9] = (_e298 * 1e-20);
-                float _e302 = out_1[10];
-                out_1[10] = (_e302 * 1e-20);
-                float _e306 = out_1[11];
-                out_1[11] = (_e306 * 1e-20);
+            float _e236 = cur;
+            out_1[7] = _e236;
+            float _e237 = above;
+            float _e238 = odd;
+            float _e240 = cur;
+            below = (_e237 + ((_e238 * inv_3) * _e240));
+            float _e243 = odd;
+            odd = (_e243 - 2.0);
+            float _e246 = cur;
+            above = _e246;
+            float _e247 = below;
+            cur = _e247;
+            float _e248 = cur;
+            if ((_e248 > 1e20)) {
+                float _e251 = cur;
+                cur = (_e251 * 1e-20);
+                float _e254 = above;
+                above = (_e254 * 1e-20);
+                float _e258 = out_1[7];
+                out_1[7] = (_e258 * 1e-20);
+                float _e262 = out_1[8];
+                out_1[8] = (_e262 * 1e-20);
+                float _e266 = out_1[9];
+                out_1[9] = (_e266 * 1e-20);
+                float _e270 = out_1[10];
+                out_1[10] = (_e270 * 1e-20);
+                float _e274 = out_1[11];
+                out_1[11] = (_e274 * 1e-20);
             }
-            float _e310 = cur;
-            out_1[5] = _e310;
-            float _e311 = above;
-            float _e312 = odd;
-            float _e314 = cur;
-            below = (_e311 + ((_e312 * inv_3) * _e314));
-            float _e317 = odd;
-            odd = (_e317 - 2.0);
-            float _e320 = cur;
-            above = _e320;
-            float _e321 = below;
-            cur = _e321;
-            float _e322 = cur;
-            if ((_e322 > 1e20)) {
-                float _e325 = cur;
-                cur = (_e325 * 1e-20);
-                float _e328 = above;
-                above = (_e328 * 1e-20);
-                float _e332 = out_1[5];
-                out_1[5] = (_e332 * 1e-20);
-                float _e336 = out_1[6];
-                out_1[6] = (_e336 * 1e-20);
-                float _e340 = out_1[7];
-                out_1[7] = (_e340 * 1e-20);
-                float _e344 = out_1[8];
-                out_1[8] = (_e344 * 1e-20);
-                float _e348 = out_1[9];
-                out_1[9] = (_e348 * 1e-20);
-                float _e352 = out_1[10];
-                out_1[10] = (_e352 * 1e-20);
-                float _e356 = out_1[11];
-                out_1[11] = (_e356 * 1e-20);
+            float _e278 = cur;
+            out_1[6] = _e278;
+            float _e279 = above;
+            float _e280 = odd;
+            float _e282 = cur;
+            below = (_e279 + ((_e280 * inv_3) * _e282));
+            float _e285 = odd;
+            odd = (_e285 - 2.0);
+            float _e288 = cur;
+            above = _e288;
+            float _e289 = below;
+            cur = _e289;
+            float _e290 = cur;
+            if ((_e290 > 1e20)) {
+                float _e293 = cur;
+                cur = (_e293 * 1e-20);
+                float _e296 = above;
+                above = (_e296 * 1e-20);
+                float _e300 = out_1[6];
+                out_1[6] = (_e300 * 1e-20);
+                float _e304 = out_1[7];
+                out_1[7] = (_e304 * 1e-20);
+                float _e308 = out_1[8];
+                out_1[8] = (_e308 * 1e-20);
+                float _e312 = out_1[9];
+                out_1[9] = (_e312 * 1e-20);
+                float _e316 = out_1[10];
+                out_1[10] = (_e316 * 1e-20);
+                float _e320 = out_1[11];
+                out_1[11] = (_e320 * 1e-20);
             }
-            float _e360 = cur;
-            out_1[4] = _e360;
-            float _e361 = above;
-            float _e362 = odd;
-            float _e364 = cur;
-            below = (_e361 + ((_e362 * inv_3) * _e364));
-            float _e367 = odd;
-            odd = (_e367 - 2.0);
-            float _e370 = cur;
-            above = _e370;
-            float _e371 = below;
-            cur = _e371;
-            float _e372 = cur;
-            if ((_e372 > 1e20)) {
-                float _e375 = cur;
-                cur = (_e375 * 1e-20);
-                float _e378 = above;
-                above = (_e378 * 1e-20);
-                float _e382 = out_1[4];
-                out_1[4] = (_e382 * 1e-20);
-                float _e386 = out_1[5];
-                out_1[5] = (_e386 * 1e-20);
-                float _e390 = out_1[6];
-                out_1[6] = (_e390 * 1e-20);
-                float _e394 = out_1[7];
-                out_1[7] = (_e394 * 1e-20);
-                float _e398 = out_1[8];
-                out_1[8] = (_e398 * 1e-20);
-                float _e402 = out_1[9];
-                out_1[9] = (_e402 * 1e-20);
-                float _e406 = out_1[10];
-                out_1[10] = (_e406 * 1e-20);
-                float _e410 = out_1[11];
-                out_1[11] = (_e410 * 1e-20);
+            float _e324 = cur;
+            out_1[5] = _e324;
+            float _e325 = above;
+            float _e326 = odd;
+            float _e328 = cur;
+            below = (_e325 + ((_e326 * inv_3) * _e328));
+            float _e331 = odd;
+            odd = (_e331 - 2.0);
+            float _e334 = cur;
+            above = _e334;
+            float _e335 = below;
+            cur = _e335;
+            float _e336 = cur;
+            if ((_e336 > 1e20)) {
+                float _e339 = cur;
+                cur = (_e339 * 1e-20);
+                float _e342 = above;
+                above = (_e342 * 1e-20);
+                float _e346 = out_1[5];
+                out_1[5] = (_e346 * 1e-20);
+                float _e350 = out_1[6];
+                out_1[6] = (_e350 * 1e-20);
+                float _e354 = out_1[7];
+                out_1[7] = (_e354 * 1e-20);
+                float _e358 = out_1[8];
+                out_1[8] = (_e358 * 1e-20);
+                float _e362 = out_1[9];
+                out_1[9] = (_e362 * 1e-20);
+                float _e366 = out_1[10];
+                out_1[10] = (_e366 * 1e-20);
+                float _e370 = out_1[11];
+                out_1[11] = (_e370 * 1e-20);
             }
-            float _e414 = cur;
-            out_1[3] = _e414;
-            float _e415 = above;
-            float _e416 = odd;
-            float _e418 = cur;
-            below = (_e415 + ((_e416 * inv_3) * _e418));
-            float _e421 = odd;
-            odd = (_e421 - 2.0);
-            float _e424 = cur;
-            above = _e424;
-            float _e425 = below;
-            cur = _e425;
-            float _e426 = cur;
-            if ((_e426 > 1e20)) {
-                float _e429 = cur;
-                cur = (_e429 * 1e-20);
-                float _e432 = above;
-                above = (_e432 * 1e-20);
-                float _e436 = out_1[3];
-                out_1[3] = (_e436 * 1e-20);
-                float _e440 = out_1[4];
-                out_1[4] = (_e440 * 1e-20);
-                float _e444 = out_1[5];
-                out_1[5] = (_e444 * 1e-20);
-                float _e448 = out_1[6];
-                out_1[6] = (_e448 * 1e-20);
-                float _e452 = out_1[7];
-                out_1[7] = (_e452 * 1e-20);
-                float _e456 = out_1[8];
-                out_1[8] = (_e456 * 1e-20);
-                float _e460 = out_1[9];
-                out_1[9] = (_e460 * 1e-20);
-                float _e464 = out_1[10];
-                out_1[10] = (_e464 * 1e-20);
-                float _e468 = out_1[11];
-                out_1[11] = (_e468 * 1e-20);
+            float _e374 = cur;
+            out_1[4] = _e374;
+            float _e375 = above;
+            float _e376 = odd;
+            float _e378 = cur;
+            below = (_e375 + ((_e376 * inv_3) * _e378));
+            float _e381 = odd;
+            odd = (_e381 - 2.0);
+            float _e384 = cur;
+            above = _e384;
+            float _e385 = below;
+            cur = _e385;
+            float _e386 = cur;
+            if ((_e386 > 1e20)) {
+                float _e389 = cur;
+                cur = (_e389 * 1e-20);
+                float _e392 = above;
+                above = (_e392 * 1e-20);
+                float _e396 = out_1[4];
+                out_1[4] = (_e396 * 1e-20);
+                float _e400 = out_1[5];
+                out_1[5] = (_e400 * 1e-20);
+                float _e404 = out_1[6];
+                out_1[6] = (_e404 * 1e-20);
+                float _e408 = out_1[7];
+                out_1[7] = (_e408 * 1e-20);
+                float _e412 = out_1[8];
+                out_1[8] = (_e412 * 1e-20);
+                float _e416 = out_1[9];
+                out_1[9] = (_e416 * 1e-20);
+                float _e420 = out_1[10];
+                out_1[10] = (_e420 * 1e-20);
+                float _e424 = out_1[11];
+                out_1[11] = (_e424 * 1e-20);
             }
-            float _e472 = cur;
-            out_1[2] = _e472;
-            float _e473 = above;
-            float _e474 = odd;
-            float _e476 = cur;
-            below = (_e473 + ((_e474 * inv_3) * _e476));
-            float _e479 = odd;
-            odd = (_e479 - 2.0);
-            float _e482 = cur;
-            above = _e482;
-            float _e483 = below;
-            cur = _e483;
-            float _e484 = cur;
-            if ((_e484 > 1e20)) {
-                float _e487 = cur;
-                cur = (_e487 * 1e-20);
-                float _e490 = above;
-                above = (_e490 * 1e-20);
-                float _e494 = out_1[2];
-                out_1[2] = (_e494 * 1e-20);
-                float _e498 = out_1[3];
-                out_1[3] = (_e498 * 1e-20);
-                float _e502 = out_1[4];
-                out_1[4] = (_e502 * 1e-20);
-                float _e506 = out_1[5];
-                out_1[5] = (_e506 * 1e-20);
-                float _e510 = out_1[6];
-                out_1[6] = (_e510 * 1e-20);
-                float _e514 = out_1[7];
-                out_1[7] = (_e514 * 1e-20);
-                float _e518 = out_1[8];
-                out_1[8] = (_e518 * 1e-20);
-                float _e522 = out_1[9];
-                out_1[9] = (_e522 * 1e-20);
-                float _e526 = out_1[10];
-                out_1[10] = (_e526 * 1e-20);
-                float _e530 = out_1[11];
-                out_1[11] = (_e530 * 1e-20);
+            float _e428 = cur;
+            out_1[3] = _e428;
+            float _e429 = above;
+            float _e430 = odd;
+            float _e432 = cur;
+            below = (_e429 + ((_e430 * inv_3) * _e432));
+            float _e435 = odd;
+            odd = (_e435 - 2.0);
+            float _e438 = cur;
+            above = _e438;
+            float _e439 = below;
+            cur = _e439;
+            float _e440 = cur;
+            if ((_e440 > 1e20)) {
+                float _e443 = cur;
+                cur = (_e443 * 1e-20);
+                float _e446 = above;
+                above = (_e446 * 1e-20);
+                float _e450 = out_1[3];
+                out_1[3] = (_e450 * 1e-20);
+                float _e454 = out_1[4];
+                out_1[4] = (_e454 * 1e-20);
+                float _e458 = out_1[5];
+                out_1[5] = (_e458 * 1e-20);
+                float _e462 = out_1[6];
+                out_1[6] = (_e462 * 1e-20);
+                float _e466 = out_1[7];
+                out_1[7] = (_e466 * 1e-20);
+                float _e470 = out_1[8];
+                out_1[8] = (_e470 * 1e-20);
+                float _e474 = out_1[9];
+                out_1[9] = (_e474 * 1e-20);
+                float _e478 = out_1[10];
+                out_1[10] = (_e478 * 1e-20);
+                float _e482 = out_1[11];
+                out_1[11] = (_e482 * 1e-20);
             }
-            float _e534 = cur;
-            out_1[1] = _e534;
-            float _e535 = above;
-            float _e536 = odd;
-            float _e538 = cur;
-            below = (_e535 + ((_e536 * inv_3) * _e538));
-            float _e541 = odd;
-            odd = (_e541 - 2.0);
-            float _e544 = cur;
-            above = _e544;
-            float _e545 = below;
-            cur = _e545;
-            float _e546 = cur;
-            if ((_e546 > 1e20)) {
-                float _e549 = cur;
-                cur = (_e549 * 1e-20);
-                float _e552 = above;
-                above = (_e552 * 1e-20);
-                float _e556 = out_1[1];
-                out_1[1] = (_e556 * 1e-20);
-                float _e560 = out_1[2];
-                out_1[2] = (_e560 * 1e-20);
-                float _e564 = out_1[3];
-                out_1[3] = (_e564 * 1e-20);
-                float _e568 = out_1[4];
-                out_1[4] = (_e568 * 1e-20);
-                float _e572 = out_1[5];
-                out_1[5] = (_e572 * 1e-20);
-                float _e576 = out_1[6];
-                out_1[6] = (_e576 * 1e-20);
-                float _e580 = out_1[7];
-                out_1[7] = (_e580 * 1e-20);
-                float _e584 = out_1[8];
-                out_1[8] = (_e584 * 1e-20);
-                float _e588 = out_1[9];
-                out_1[9] = (_e588 * 1e-20);
-                float _e592 = out_1[10];
-                out_1[10] = (_e592 * 1e-20);
-                float _e596 = out_1[11];
-                out_1[11] = (_e596 * 1e-20);
+            float _e486 = cur;
+            out_1[2] = _e486;
+            float _e487 = above;
+            float _e488 = odd;
+            float _e490 = cur;
+            below = (_e487 + ((_e488 * inv_3) * _e490));
+            float _e493 = odd;
+            odd = (_e493 - 2.0);
+            float _e496 = cur;
+            above = _e496;
+            float _e497 = below;
+            cur = _e497;
+            float _e498 = cur;
+            if ((_e498 > 1e20)) {
+                float _e501 = cur;
+                cur = (_e501 * 1e-20);
+                float _e504 = above;
+                above = (_e504 * 1e-20);
+                float _e508 = out_1[2];
+                out_1[2] = (_e508 * 1e-20);
+                float _e512 = out_1[3];
+                out_1[3] = (_e512 * 1e-20);
+                float _e516 = out_1[4];
+                out_1[4] = (_e516 * 1e-20);
+                float _e520 = out_1[5];
+                out_1[5] = (_e520 * 1e-20);
+                float _e524 = out_1[6];
+                out_1[6] = (_e524 * 1e-20);
+                float _e528 = out_1[7];
+                out_1[7] = (_e528 * 1e-20);
+                float _e532 = out_1[8];
+                out_1[8] = (_e532 * 1e-20);
+                float _e536 = out_1[9];
+                out_1[9] = (_e536 * 1e-20);
+                float _e540 = out_1[10];
+                out_1[10] = (_e540 * 1e-20);
+                float _e544 = out_1[11];
+                out_1[11] = (_e544 * 1e-20);
             }
-            float _e600 = cur;
-            out_1[0] = _e600;
-            float _e601 = cur;
-            float norm = (i0_ / _e601);
-            float _e604 = out_1[0];
-            out_1[0] = (_e604 * norm);
-            float _e607 = out_1[1];
-            out_1[1] = (_e607 * norm);
-            float _e610 = out_1[2];
-            out_1[2] = (_e610 * norm);
-            float _e613 = out_1[3];
-            out_1[3] = (_e613 * norm);
-            float _e616 = out_1[4];
-            out_1[4] = (_e616 * norm);
-            float _e619 = out_1[5];
-            out_1[5] = (_e619 * norm);
-            float _e622 = out_1[6];
-            out_1[6] = (_e622 * norm);
-            float _e625 = out_1[7];
-            out_1[7] = (_e625 * norm);
-            float _e628 = out_1[8];
-            out_1[8] = (_e628 * norm);
-            float _e631 = out_1[9];
-            out_1[9] = (_e631 * norm);
-            float _e634 = out_1[10];
-            out_1[10] = (_e634 * norm);
-            float _e637 = out_1[11];
-            out_1[11] = (_e637 * norm);
+            float _e548 = cur;
+            out_1[1] = _e548;
+            float _e549 = above;
+            float _e550 = odd;
+            float _e552 = cur;
+            below = (_e549 + ((_e550 * inv_3) * _e552));
+            float _e555 = odd;
+            odd = (_e555 - 2.0);
+            float _e558 = cur;
+            above = _e558;
+            float _e559 = below;
+            cur = _e559;
+            float _e560 = cur;
+            if ((_e560 > 1e20)) {
+                float _e563 = cur;
+                cur = (_e563 * 1e-20);
+                float _e566 = above;
+                above = (_e566 * 1e-20);
+                float _e570 = out_1[1];
+                out_1[1] = (_e570 * 1e-20);
+                float _e574 = out_1[2];
+                out_1[2] = (_e574 * 1e-20);
+                float _e578 = out_1[3];
+                out_1[3] = (_e578 * 1e-20);
+                float _e582 = out_1[4];
+                out_1[4] = (_e582 * 1e-20);
+                float _e586 = out_1[5];
+                out_1[5] = (_e586 * 1e-20);
+                float _e590 = out_1[6];
+                out_1[6] = (_e590 * 1e-20);
+                float _e594 = out_1[7];
+                out_1[7] = (_e594 * 1e-20);
+                float _e598 = out_1[8];
+                out_1[8] = (_e598 * 1e-20);
+                float _e602 = out_1[9];
+                out_1[9] = (_e602 * 1e-20);
+                float _e606 = out_1[10];
+                out_1[10] = (_e606 * 1e-20);
+                float _e610 = out_1[11];
+                out_1[11] = (_e610 * 1e-20);
+            }
+            float _e614 = cur;
+            out_1[0] = _e614;
+            float _e615 = cur;
+            float norm = (i0_ / _e615);
+            float _e618 = out_1[0];
+            out_1[0] = (_e618 * norm);
+            float _e621 = out_1[1];
+            out_1[1] = (_e621 * norm);
+            float _e624 = out_1[2];
+            out_1[2] = (_e624 * norm);
+            float _e627 = out_1[3];
+            out_1[3] = (_e627 * norm);
+            float _e630 = out_1[4];
+            out_1[4] = (_e630 * norm);
+            float _e633 = out_1[5];
+            out_1[5] = (_e633 * norm);
+            float _e636 = out_1[6];
+            out_1[6] = (_e636 * norm);
+            float _e639 = out_1[7];
+            out_1[7] = (_e639 * norm);
+            float _e642 = out_1[8];
+            out_1[8] = (_e642 * norm);
+            float _e645 = out_1[9];
+            out_1[9] = (_e645 * norm);
+            float _e648 = out_1[10];
+            out_1[10] = (_e648 * norm);
+            float _e651 = out_1[11];
+            out_1[11] = (_e651 * norm);
         } else {
             float e2_1 = exp(-((lambda + lambda)));
             out_1[0] = i0_;
             out_1[1] = ((((1.0 + e2_1) * 0.5) - i0_) / lambda);
-            float _e652 = out_1[0];
-            float _e656 = out_1[1];
-            out_1[2] = (_e652 - ((3.0 / lambda) * _e656));
-            float _e661 = out_1[1];
-            float _e665 = out_1[2];
-            out_1[3] = (_e661 - ((5.0 / lambda) * _e665));
-            float _e670 = out_1[2];
-            float _e674 = out_1[3];
-            out_1[4] = (_e670 - ((7.0 / lambda) * _e674));
-            float _e679 = out_1[3];
-            float _e683 = out_1[4];
-            out_1[5] = (_e679 - ((9.0 / lambda) * _e683));
-            float _e688 = out_1[4];
-            float _e692 = out_1[5];
-            out_1[6] = (_e688 - ((11.0 / lambda) * _e692));
-            float _e697 = out_1[5];
-            float _e701 = out_1[6];
-            out_1[7] = (_e697 - ((13.0 / lambda) * _e701));
-            float _e706 = out_1[6];
-            float _e710 = out_1[7];
-            out_1[8] = (_e706 - ((15.0 / lambda) * _e710));
-            float _e715 = out_1[7];
-            float _e719 = out_1[8];
-            out_1[9] = (_e715 - ((17.0 / lambda) * _e719));
-            float _e724 = out_1[8];
-            float _e728 = out_1[9];
-            out_1[10] = (_e724 - ((19.0 / lambda) * _e728));
-            float _e733 = out_1[9];
-            float _e737 = out_1[10];
-            out_1[11] = (_e733 - ((21.0 / lambda) * _e737));
+            float _e666 = out_1[0];
+            float _e670 = out_1[1];
+            out_1[2] = (_e666 - ((3.0 / lambda) * _e670));
+            float _e675 = out_1[1];
+            float _e679 = out_1[2];
+            out_1[3] = (_e675 - ((5.0 / lambda) * _e679));
+            float _e684 = out_1[2];
+            float _e688 = out_1[3];
+            out_1[4] = (_e684 - ((7.0 / lambda) * _e688));
+            float _e693 = out_1[3];
+            float _e697 = out_1[4];
+            out_1[5] = (_e693 - ((9.0 / lambda) * _e697));
+            float _e702 = out_1[4];
+            float _e706 = out_1[5];
+            out_1[6] = (_e702 - ((11.0 / lambda) * _e706));
+            float _e711 = out_1[5];
+            float _e715 = out_1[6];
+            out_1[7] = (_e711 - ((13.0 / lambda) * _e715));
+            float _e720 = out_1[6];
+            float _e724 = out_1[7];
+            out_1[8] = (_e720 - ((15.0 / lambda) * _e724));
+            float _e729 = out_1[7];
+            float _e733 = out_1[8];
+            out_1[9] = (_e729 - ((17.0 / lambda) * _e733));
+            float _e738 = out_1[8];
+            float _e742 = out_1[9];
+            out_1[10] = (_e738 - ((19.0 / lambda) * _e742));
+            float _e747 = out_1[9];
+            float _e751 = out_1[10];
+            out_1[11] = (_e747 - ((21.0 / lambda) * _e751));
         }
     }
-    float _e741 = out_1[0];
-    out_1[0] = (_e741 * 2.0);
-    float _e745 = out_1[1];
-    out_1[1] = (_e745 * -2.0);
-    float _e749 = out_1[2];
-    out_1[2] = (_e749 * 2.0);
-    float _e753 = out_1[3];
-    out_1[3] = (_e753 * -2.0);
-    float _e757 = out_1[4];
-    out_1[4] = (_e757 * 2.0);
-    float _e761 = out_1[5];
-    out_1[5] = (_e761 * -2.0);
-    float _e765 = out_1[6];
-    out_1[6] = (_e765 * 2.0);
-    float _e769 = out_1[7];
-    out_1[7] = (_e769 * -2.0);
-    float _e773 = out_1[8];
-    out_1[8] = (_e773 * 2.0);
-    float _e777 = out_1[9];
-    out_1[9] = (_e777 * -2.0);
-    float _e781 = out_1[10];
-    out_1[10] = (_e781 * 2.0);
-    float _e785 = out_1[11];
-    out_1[11] = (_e785 * -2.0);
-    float _e788[12] = out_1;
-    return _e788;
+    float _e755 = out_1[0];
+    out_1[0] = (_e755 * 2.0);
+    float _e759 = out_1[1];
+    out_1[1] = (_e759 * -2.0);
+    float _e763 = out_1[2];
+    out_1[2] = (_e763 * 2.0);
+    float _e767 = out_1[3];
+    out_1[3] = (_e767 * -2.0);
+    float _e771 = out_1[4];
+    out_1[4] = (_e771 * 2.0);
+    float _e775 = out_1[5];
+    out_1[5] = (_e775 * -2.0);
+    float _e779 = out_1[6];
+    out_1[6] = (_e779 * 2.0);
+    float _e783 = out_1[7];
+    out_1[7] = (_e783 * -2.0);
+    float _e787 = out_1[8];
+    out_1[8] = (_e787 * 2.0);
+    float _e791 = out_1[9];
+    out_1[9] = (_e791 * -2.0);
+    float _e795 = out_1[10];
+    out_1[10] = (_e795 * 2.0);
+    float _e799 = out_1[11];
+    out_1[11] = (_e799 * -2.0);
+    float _e802[12] = out_1;
+    return _e802;
 }
 
 float airlight_tail_estimate(float c_2[12]) {
@@ -1717,13 +1745,13 @@ float airlight_error_factor(float c_3[12], float m_1[12]) {
     c_max = max(_e76, abs(c_3[11]));
     float _e82 = c_max;
     uint power_1 = ((_e82 > (1.2 * abs(c_3[0]))) ? 2u : 3u);
-    bool loop_init_11 = true;
+    bool loop_init_12 = true;
     while(true) {
-        if (!loop_init_11) {
+        if (!loop_init_12) {
             uint _e98 = i_6;
             i_6 = (_e98 + 1u);
         }
-        loop_init_11 = false;
+        loop_init_12 = false;
         uint _e93 = i_6;
         if ((_e93 < power_1)) {
         } else {
@@ -1750,15 +1778,15 @@ float airlight_factor(AirlightHalf half_3, float a_4, float b_3) {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     float _e13 = offset;
-    float x_19 = (half_3.big_h * _e13);
-    return ((x_19 > 0.0) ? exp(-(x_19)) : 1.0);
+    float x_20 = (half_3.big_h * _e13);
+    return ((x_20 > 0.0) ? exp(-(x_20)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
+AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
     float r_1 = 0.0;
     float vc = 0.0;
     float samples[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1778,13 +1806,13 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float s
     }
     float _e24[12] = airlight_zero_terms();
     samples = _e24;
-    bool loop_init_12 = true;
+    bool loop_init_13 = true;
     while(true) {
-        if (!loop_init_12) {
+        if (!loop_init_13) {
             uint _e72 = i_7;
             i_7 = (_e72 + 1u);
         }
-        loop_init_12 = false;
+        loop_init_13 = false;
         uint _e34 = i_7;
         if ((_e34 < AIRLIGHT_TERMS)) {
         } else {
@@ -1796,7 +1824,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float s
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
             float v_6 = (_e37 + (_e38 * _e40));
-            vec2 _e46 = airlight_integrand_over(s_4, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
+            vec2 _e46 = airlight_integrand_over(s_5, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1856,7 +1884,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float s
     return _e158;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
+AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
     float samples_1[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1869,13 +1897,13 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_8, float s
     float yc_1 = (a_6 + r_7);
     float _e11[12] = airlight_zero_terms();
     samples_1 = _e11;
-    bool loop_init_13 = true;
+    bool loop_init_14 = true;
     while(true) {
-        if (!loop_init_13) {
+        if (!loop_init_14) {
             uint _e77 = i_8;
             i_8 = (_e77 + 1u);
         }
-        loop_init_13 = false;
+        loop_init_14 = false;
         uint _e23 = i_8;
         if ((_e23 < AIRLIGHT_TERMS)) {
         } else {
@@ -1886,7 +1914,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_8, float s
             float _e27 = airlight_node(_e6, _e26);
             float y_6 = (yc_1 + (r_7 * _e27));
             float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_6 * b_5)));
-            float _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
+            float _e39 = airlight_integrand(s_6, g_8, sigma_3, y_6);
             float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -2016,7 +2044,7 @@ float[12] airlight_legendre_to_monomial(float c_4[12]) {
     return _e255;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
@@ -2038,13 +2066,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     float yc_2 = (a_7 + r_8);
     float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
-    bool loop_init_14 = true;
+    bool loop_init_15 = true;
     while(true) {
-        if (!loop_init_14) {
+        if (!loop_init_15) {
             uint _e51 = i_9;
             i_9 = (_e51 + 1u);
         }
-        loop_init_14 = false;
+        loop_init_15 = false;
         uint _e19 = i_9;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
@@ -2054,7 +2082,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
             float y_7 = (yc_2 + (r_8 * _e23));
-            float _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
+            float _e26 = airlight_integrand(s_7, g_9, sigma_4, y_7);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_7 * y_7)));
             float _e33 = f_max_3;
@@ -2363,13 +2391,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     float _e936 = airlight_factor(half_6, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_20 = (abs(alpha) + abs(beta));
+    float x_21 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_20) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_21) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2379,7 +2407,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_20) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_21) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2389,7 +2417,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_20) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_21) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2399,7 +2427,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_20) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_21) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2409,7 +2437,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_20) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_21) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2419,7 +2447,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_20) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_21) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2429,7 +2457,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_20) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_21) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2439,7 +2467,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_20) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_21) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2449,7 +2477,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_20) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_21) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2459,7 +2487,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_20) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_21) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2469,7 +2497,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_20) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_21) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2479,7 +2507,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_20) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_21) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -2499,7 +2527,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, floa
     return _e1182;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
+AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
     bool local_11 = false;
     bool local_12 = false;
     if (half_7.second) {
@@ -2509,7 +2537,7 @@ AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_10, float si
     }
     bool _e13 = local_11;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -2519,14 +2547,14 @@ AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_10, float si
     }
     bool _e26 = local_12;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float a_9 = 0.0;
@@ -2554,13 +2582,13 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float 
     }
     a_9 = lo;
     b_8 = hi;
-    bool loop_init_15 = true;
+    bool loop_init_16 = true;
     while(true) {
-        if (!loop_init_15) {
+        if (!loop_init_16) {
             uint _e206 = step_;
             step_ = (_e206 + 1u);
         }
-        loop_init_15 = false;
+        loop_init_16 = false;
         uint _e54 = step_;
         if ((_e54 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -2569,7 +2597,7 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float 
         {
             float _e57 = a_9;
             float _e58 = b_8;
-            AirlightPanel _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
+            AirlightPanel _e59 = airlight_panel(s_9, g_11, sigma_6, half_8, _e57, _e58);
             float _e60 = f_max_4;
             f_max_4 = max(_e60, _e59.f_max);
             uint _e63 = slot;
@@ -2598,13 +2626,13 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float 
                 continue;
             }
             retire = 0u;
-            bool loop_init_16 = true;
+            bool loop_init_17 = true;
             while(true) {
-                if (!loop_init_16) {
+                if (!loop_init_17) {
                     uint _e203 = retire;
                     retire = (_e203 + 1u);
                 }
-                loop_init_16 = false;
+                loop_init_17 = false;
                 uint _e89 = retire;
                 if ((_e89 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
@@ -2616,13 +2644,13 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float 
                     mass_3 = 0.0;
                     worst = 0u;
                     i_10 = 0u;
-                    bool loop_init_17 = true;
+                    bool loop_init_18 = true;
                     while(true) {
-                        if (!loop_init_17) {
+                        if (!loop_init_18) {
                             uint _e136 = i_10;
                             i_10 = (_e136 + 1u);
                         }
-                        loop_init_17 = false;
+                        loop_init_18 = false;
                         uint _e102 = i_10;
                         if ((_e102 < AIRLIGHT_PANEL_LIST)) {
                         } else {
@@ -2709,13 +2737,13 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float 
             }
         }
     }
-    bool loop_init_18 = true;
+    bool loop_init_19 = true;
     while(true) {
-        if (!loop_init_18) {
+        if (!loop_init_19) {
             uint _e225 = i_11;
             i_11 = (_e225 + 1u);
         }
-        loop_init_18 = false;
+        loop_init_19 = false;
         uint _e212 = i_11;
         if ((_e212 < AIRLIGHT_PANEL_LIST)) {
         } else {
@@ -2871,7 +2899,7 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_9, AirlightHalf half_9, f
     return true;
 }
 
-float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_10, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = 0.0;
@@ -2888,13 +2916,13 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
     bool local_25 = false;
     bool local_26 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_9, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5)));
+        float _e11 = airlight_integrand(s_10, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_9.light_param_a;
-        k_out = s_9.light_param_b;
+    if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_10.light_param_a;
+        k_out = s_10.light_param_b;
         float _e29 = k_in;
         float _e30 = k_out;
         float width_1 = (_e29 - _e30);
@@ -2911,13 +2939,13 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
         float _e46 = k_out;
         vec2 _e47 = airlight_crossings(sigma_10, g_14.d_el, g_14.d_c, _e46);
         cuts = float[4](_e43.x, _e43.y, _e47.x, _e47.y);
-        bool loop_init_19 = true;
+        bool loop_init_20 = true;
         while(true) {
-            if (!loop_init_19) {
+            if (!loop_init_20) {
                 uint _e77 = i_12;
                 i_12 = (_e77 + 1u);
             }
-            loop_init_19 = false;
+            loop_init_20 = false;
             uint _e55 = i_12;
             if ((_e55 < 4u)) {
             } else {
@@ -2940,13 +2968,13 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
                 }
             }
         }
-        bool loop_init_20 = true;
+        bool loop_init_21 = true;
         while(true) {
-            if (!loop_init_20) {
+            if (!loop_init_21) {
                 uint _e118 = i_13;
                 i_13 = (_e118 + 1u);
             }
-            loop_init_20 = false;
+            loop_init_21 = false;
             uint _e81 = i_13;
             if ((_e81 < 3u)) {
             } else {
@@ -2954,13 +2982,13 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
             }
             {
                 j_2 = 0u;
-                bool loop_init_21 = true;
+                bool loop_init_22 = true;
                 while(true) {
-                    if (!loop_init_21) {
+                    if (!loop_init_22) {
                         uint _e115 = j_2;
                         j_2 = (_e115 + 1u);
                     }
-                    loop_init_21 = false;
+                    loop_init_22 = false;
                     uint _e86 = j_2;
                     uint _e88 = i_13;
                     if ((_e86 < (3u - _e88))) {
@@ -2988,13 +3016,13 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
         }
     }
     lo_2 = half_10.y_lo;
-    bool loop_init_22 = true;
+    bool loop_init_23 = true;
     while(true) {
-        if (!loop_init_22) {
+        if (!loop_init_23) {
             uint _e180 = i_14;
             i_14 = (_e180 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e126 = i_14;
         if ((_e126 < 5u)) {
         } else {
@@ -3019,7 +3047,7 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
             float _e146 = hi_2;
             float _e147 = lo_2;
             if ((_e146 > _e147)) {
-                if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+                if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
                     float _e154 = dark_below;
                     float _e155 = lo_2;
                     float _e156 = hi_2;
@@ -3033,7 +3061,7 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, A
                     float _e161 = total_2;
                     float _e162 = lo_2;
                     float _e163 = hi_2;
-                    float _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    float _e164 = airlight_integrate_piece(s_10, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 float _e166 = hi_2;
@@ -3069,7 +3097,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_1, float x_7
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-float airlight_on_line(AirlightScene s_10, AirlightCanonical g_15) {
+float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15) {
     bool local_27 = false;
     float span = 0.0;
     float e2_[14] = float[14](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -3081,38 +3109,38 @@ float airlight_on_line(AirlightScene s_10, AirlightCanonical g_15) {
     }
     bool _e10 = local_27;
     if (_e10) {
-        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
-        float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
+        float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
+        float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
         float f_2 = (_e16 * _e22);
         float r0_ = (g_15.x_h - g_15.t_lo);
         float r1_1 = (g_15.x_h - g_15.t_hi);
-        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
+        float _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
-    float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
+    float _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_15.d_el);
+    float _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1.0);
     float f_3 = (_e46 * _e52);
     float s0_ = (g_15.t_lo - g_15.x_h);
     float s1_ = (g_15.t_hi - g_15.x_h);
-    if ((s_10.sigma_t == 0.0)) {
+    if ((s_11.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_15.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        float _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, 0.0, (f_3 * _e75));
+        float _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, 0.0, (f_3 * _e75));
         return _e77;
     }
-    float two_st = (s_10.sigma_t + s_10.sigma_t);
+    float two_st = (s_11.sigma_t + s_11.sigma_t);
     float _e82[14] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    float _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if (!(g_15.t_hi_infinite)) {
         float _e99[14] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        float _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        float _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     bool _e114 = airlight_is_finite(_e93);
@@ -3133,7 +3161,7 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_16, float big_h_1) {
+float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
@@ -3178,19 +3206,19 @@ float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_16, float big_
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_11, g_16, -1.0, _e9);
+    float _e54 = airlight_integrand(s_12, g_16, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_13);
     float j_5 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
-        if ((s_11.sigma_t > 0.0)) {
-            x_8 = (s_11.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+        if ((s_12.sigma_t > 0.0)) {
+            x_8 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
+    float _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -3202,7 +3230,7 @@ float airlight_cut_length(float big_h_2, float v_s) {
     return (e_1 * inv_h);
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonical g_17) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonical g_17) {
     bool local_30 = false;
     bool local_31 = false;
     bool local_32 = false;
@@ -3246,7 +3274,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_31 = ((s_12.sigma_s * s_12.intensity) == 0.0);
+        local_31 = ((s_13.sigma_s * s_13.intensity) == 0.0);
     } else {
         local_31 = true;
     }
@@ -3283,16 +3311,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e55 = local_34;
     if (_e55) {
-        float _e56 = airlight_on_line(s_12, g_17);
+        float _e56 = airlight_on_line(s_13, g_17);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_5 = (s_12.sigma_t * h_3);
-    if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_36 = (s_12.light_param_a == 0.0);
+    float big_h_5 = (s_13.sigma_t * h_3);
+    if (!((s_13.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_36 = (s_13.light_param_a == 0.0);
         } else {
             local_36 = false;
         }
@@ -3303,15 +3331,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e85 = local_35;
     if (_e85) {
-        if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             bool _e104 = local_39;
             if (_e104) {
-                local_40 = (s_12.phase_param_a == 0.0);
+                local_40 = (s_13.phase_param_a == 0.0);
             } else {
                 local_40 = false;
             }
@@ -3345,7 +3373,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e131 = local_42;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_12, g_17, big_h_5);
+        float _e132 = airlight_whole_line(s_13, g_17, big_h_5);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
@@ -3388,9 +3416,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
             }
         }
         AirlightHalf _e199 = half_11;
-        float _e200 = airlight_half(s_12, g_17, -1.0, _e199, isotropic_1, f_max_6);
+        float _e200 = airlight_half(s_13, g_17, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
+        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_17.t_hi_infinite)) {
@@ -3482,9 +3510,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
             }
         }
         AirlightHalf _e313 = half_12;
-        float _e314 = airlight_half(s_12, g_17, 1.0, _e313, isotropic_1, f_max_6);
+        float _e314 = airlight_half(s_13, g_17, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -3539,7 +3567,7 @@ vec3 airlight_normalize(vec3 v_3) {
     return (u_1 / vec3(length(u_1)));
 }
 
-bool airlight_valid(AirlightScene s_13) {
+bool airlight_valid(AirlightScene s_14) {
     bool local_56 = false;
     bool local_57 = false;
     bool local_58 = false;
@@ -3574,96 +3602,96 @@ bool airlight_valid(AirlightScene s_13) {
     bool local_86 = false;
     bool local_87 = false;
     bool local_88 = false;
-    bool _e2 = airlight_vec_finite(s_13.origin);
+    bool _e2 = airlight_vec_finite(s_14.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_13.dir);
+        bool _e6 = airlight_vec_finite(s_14.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     bool _e8 = local_56;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_13.dir);
+        bool _e12 = airlight_normalisable(s_14.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     bool _e14 = local_57;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_13.t_min);
+        bool _e18 = airlight_is_finite(s_14.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     bool _e20 = local_58;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_13.light_position);
+        bool _e24 = airlight_vec_finite(s_14.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     bool _e26 = local_59;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_13.intensity);
+        bool _e30 = airlight_is_finite(s_14.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     bool _e32 = local_60;
     if (_e32) {
-        local_61 = (s_13.intensity >= 0.0);
+        local_61 = (s_14.intensity >= 0.0);
     } else {
         local_61 = false;
     }
     bool _e39 = local_61;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_13.sigma_s);
+        bool _e43 = airlight_is_finite(s_14.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     bool _e45 = local_62;
     if (_e45) {
-        local_63 = (s_13.sigma_s >= 0.0);
+        local_63 = (s_14.sigma_s >= 0.0);
     } else {
         local_63 = false;
     }
     bool _e52 = local_63;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_13.sigma_t);
+        bool _e56 = airlight_is_finite(s_14.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     bool _e58 = local_64;
     if (_e58) {
-        local_65 = (s_13.sigma_t >= 0.0);
+        local_65 = (s_14.sigma_t >= 0.0);
     } else {
         local_65 = false;
     }
     bool _e65 = local_65;
     ok = _e65;
-    if (((s_13.flags & 1u) == 0u)) {
+    if (((s_14.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_13.t_max);
+            bool _e76 = airlight_is_finite(s_14.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         bool _e78 = local_66;
         if (_e78) {
-            local_67 = (s_13.t_min <= s_13.t_max);
+            local_67 = (s_14.t_min <= s_14.t_max);
         } else {
             local_67 = false;
         }
         bool _e85 = local_67;
         ok = _e85;
     }
-    if ((s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_13.light_end);
+            bool _e93 = airlight_vec_finite(s_14.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3671,39 +3699,39 @@ bool airlight_valid(AirlightScene s_13) {
         bool _e95 = local_68;
         ok = _e95;
     } else {
-        if ((s_13.light_shape != AIRLIGHT_SHAPE_POINT)) {
+        if ((s_14.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         bool _e103 = ok;
         if (_e103) {
-            bool _e107 = airlight_is_finite(s_13.brdf_albedo);
+            bool _e107 = airlight_is_finite(s_14.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         bool _e109 = local_69;
         if (_e109) {
-            local_70 = (s_13.brdf_albedo >= 0.0);
+            local_70 = (s_14.brdf_albedo >= 0.0);
         } else {
             local_70 = false;
         }
         bool _e116 = local_70;
         if (_e116) {
-            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         bool _e123 = local_71;
         if (_e123) {
-            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         bool _e130 = local_72;
         if (_e130) {
-            float _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            float _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
             bool _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3712,89 +3740,89 @@ bool airlight_valid(AirlightScene s_13) {
         bool _e139 = local_73;
         ok = _e139;
     } else {
-        if ((s_13.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_14.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e147 = ok;
         if (_e147) {
-            bool _e151 = airlight_vec_finite(s_13.light_axis);
+            bool _e151 = airlight_vec_finite(s_14.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         bool _e153 = local_74;
         if (_e153) {
-            bool _e157 = airlight_normalisable(s_13.light_axis);
+            bool _e157 = airlight_normalisable(s_14.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         bool _e159 = local_75;
         if (_e159) {
-            local_76 = (s_13.light_param_a >= 0.0);
+            local_76 = (s_14.light_param_a >= 0.0);
         } else {
             local_76 = false;
         }
         bool _e166 = local_76;
         if (_e166) {
-            local_77 = (s_13.light_param_a <= 1024.0);
+            local_77 = (s_14.light_param_a <= 1024.0);
         } else {
             local_77 = false;
         }
         bool _e173 = local_77;
         if (_e173) {
-            local_78 = (fract((s_13.light_param_a * 0.5)) == 0.0);
+            local_78 = (fract((s_14.light_param_a * 0.5)) == 0.0);
         } else {
             local_78 = false;
         }
         bool _e183 = local_78;
         ok = _e183;
     } else {
-        if ((s_13.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_14.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
-                bool _e191 = airlight_vec_finite(s_13.light_axis);
+                bool _e191 = airlight_vec_finite(s_14.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             bool _e193 = local_79;
             if (_e193) {
-                bool _e197 = airlight_normalisable(s_13.light_axis);
+                bool _e197 = airlight_normalisable(s_14.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             bool _e199 = local_80;
             if (_e199) {
-                local_81 = (s_13.light_param_b < s_13.light_param_a);
+                local_81 = (s_14.light_param_b < s_14.light_param_a);
             } else {
                 local_81 = false;
             }
             bool _e206 = local_81;
             if (_e206) {
-                local_82 = (s_13.light_param_b >= -1.0);
+                local_82 = (s_14.light_param_b >= -1.0);
             } else {
                 local_82 = false;
             }
             bool _e213 = local_82;
             if (_e213) {
-                local_83 = (s_13.light_param_a <= 1.0);
+                local_83 = (s_14.light_param_a <= 1.0);
             } else {
                 local_83 = false;
             }
             bool _e220 = local_83;
             ok = _e220;
         } else {
-            if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_13.phase_param_a) < 1.0);
-    switch(s_13.phase_kind) {
+    bool g_ok = (abs(s_14.phase_param_a) < 1.0);
+    switch(s_14.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -3821,19 +3849,19 @@ bool airlight_valid(AirlightScene s_13) {
             }
             bool _e239 = local_85;
             if (_e239) {
-                local_86 = (abs(s_13.phase_param_b) < 1.0);
+                local_86 = (abs(s_14.phase_param_b) < 1.0);
             } else {
                 local_86 = false;
             }
             bool _e247 = local_86;
             if (_e247) {
-                local_87 = (s_13.phase_param_c >= 0.0);
+                local_87 = (s_14.phase_param_c >= 0.0);
             } else {
                 local_87 = false;
             }
             bool _e254 = local_87;
             if (_e254) {
-                local_88 = (s_13.phase_param_c <= 1.0);
+                local_88 = (s_14.phase_param_c <= 1.0);
             } else {
                 local_88 = false;
             }
@@ -3850,15 +3878,15 @@ bool airlight_valid(AirlightScene s_13) {
     return _e263;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_14) {
+AirlightCanonical airlight_canonical(AirlightScene s_15) {
     vec3 a_11 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_14.dir);
-    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_14.light_axis);
+    vec3 _e2 = airlight_normalize(s_15.dir);
+    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_15.light_axis);
         a_11 = _e12;
     }
-    vec3 to_light = (s_14.light_position - s_14.origin);
+    vec3 to_light = (s_15.light_position - s_15.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
@@ -3866,10 +3894,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_14) {
         vec3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_14.flags & 1u) != 0u);
+    bool infinite_3 = ((s_15.flags & 1u) != 0u);
     vec3 _e32 = a_11;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, (infinite_3 ? 0.0 : s_14.t_max), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, (infinite_3 ? 0.0 : s_15.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_9, uint key) {
@@ -3927,18 +3955,18 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain) {
+AirlightCanonical airlight_refined(AirlightScene s_16, AirlightCanonical plain) {
     bool local_91 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_92 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_15.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
+    uint key_4 = uint((s_16.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
     vec3 hi_3 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_3 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir_2 = s_15.dir;
+    vec3 dir_2 = s_16.dir;
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
@@ -3978,8 +4006,8 @@ AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain) 
     if (!(_e101)) {
         return plain;
     }
-    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_15.light_axis);
+    if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_16.light_axis);
         a_15 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir_2);
@@ -4137,12 +4165,12 @@ float airlight_asinh(float x_11) {
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_18, float s_16) {
+float airlight_to_w(AirlightOuter g_18, float s_17) {
     if ((g_18.scale > 0.0)) {
-        float _e9 = airlight_asinh(((s_16 - g_18.s_star) / g_18.scale));
+        float _e9 = airlight_asinh(((s_17 - g_18.s_star) / g_18.scale));
         return _e9;
     }
-    return s_16;
+    return s_17;
 }
 
 vec2 airlight_cos_sin_half_turn(float x_12) {
@@ -4159,20 +4187,20 @@ float airlight_acos(float x_13) {
     return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_17) {
-    if ((s_17 <= c_6)) {
-        float _e4 = airlight_atan((s_17 / c_6));
+float airlight_angle(float c_6, float s_18) {
+    if ((s_18 <= c_6)) {
+        float _e4 = airlight_atan((s_18 / c_6));
         return _e4;
     }
-    if ((s_17 <= -(c_6))) {
-        float _e10 = airlight_atan((s_17 / -(c_6)));
+    if ((s_18 <= -(c_6))) {
+        float _e10 = airlight_atan((s_18 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if ((c_6 >= 0.0)) {
-        float _e16 = airlight_atan((c_6 / s_17));
+        float _e16 = airlight_atan((c_6 / s_18));
         return (1.5707964 - _e16);
     }
-    float _e21 = airlight_atan((-(c_6) / s_17));
+    float _e21 = airlight_atan((-(c_6) / s_18));
     return (1.5707964 + _e21);
 }
 
@@ -4186,11 +4214,11 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
     return _e18;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_18, uint max_panels) {
-    return AirlightOuter(s_18.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+AirlightOuter airlight_outer_point(AirlightScene s_19, uint max_panels) {
+    return AirlightOuter(s_19.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
 }
 
-AirlightOuter airlight_surface(AirlightScene s_19) {
+AirlightOuter airlight_surface(AirlightScene s_20) {
     AirlightOuter g_19 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_93 = false;
     vec3 u = vec3(0.0);
@@ -4199,12 +4227,12 @@ AirlightOuter airlight_surface(AirlightScene s_19) {
     uint i_17 = 0u;
     bool local_94 = false;
     uint i_18 = 0u;
-    AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    AirlightOuter _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_19 = _e2;
-    vec3 to_light_1 = (s_19.light_position - s_19.origin);
+    vec3 to_light_1 = (s_20.light_position - s_20.origin);
     float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_19.intensity == 0.0))) {
-        local_93 = (s_19.sigma_s == 0.0);
+    if (!((s_20.intensity == 0.0))) {
+        local_93 = (s_20.sigma_s == 0.0);
     } else {
         local_93 = true;
     }
@@ -4219,13 +4247,13 @@ AirlightOuter airlight_surface(AirlightScene s_19) {
         AirlightOuter _e27 = g_19;
         return _e27;
     }
-    if ((s_19.brdf_albedo == 0.0)) {
+    if ((s_20.brdf_albedo == 0.0)) {
         g_19.outcome = 1u;
         AirlightOuter _e33 = g_19;
         return _e33;
     }
     vec3 l_3 = (to_light_1 / vec3(_e7));
-    vec3 _e37 = airlight_normalize(s_19.dir);
+    vec3 _e37 = airlight_normalize(s_20.dir);
     float cos_a_1 = dot(_e37, l_3);
     vec3 across = (_e37 - (cos_a_1 * l_3));
     float _e41 = airlight_safe_length(across);
@@ -4251,13 +4279,13 @@ AirlightOuter airlight_surface(AirlightScene s_19) {
         cuts_1[0] = _e87;
         cuts_1[1] = c_9;
     }
-    bool loop_init_23 = true;
+    bool loop_init_24 = true;
     while(true) {
-        if (!loop_init_23) {
+        if (!loop_init_24) {
             uint _e123 = i_17;
             i_17 = (_e123 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_24 = false;
         uint _e93 = i_17;
         if ((_e93 < 2u)) {
         } else {
@@ -4290,13 +4318,13 @@ AirlightOuter airlight_surface(AirlightScene s_19) {
     g_19.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     uint _e132 = k_6;
     g_19.panels = (_e132 + 1u);
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
+        if (!loop_init_25) {
             uint _e147 = i_18;
             i_18 = (_e147 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e137 = i_18;
         uint _e139 = g_19.panels;
         if ((_e137 <= _e139)) {
@@ -4313,7 +4341,7 @@ AirlightOuter airlight_surface(AirlightScene s_19) {
     return _e149;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_20) {
+AirlightOuter airlight_outer(AirlightScene s_21) {
     AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_95 = false;
     bool local_96 = false;
@@ -4340,26 +4368,26 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     uint n_1 = 0u;
     uint i_20 = 0u;
     bool local_111 = false;
-    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        AirlightOuter _e4 = airlight_surface(s_20);
+    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        AirlightOuter _e4 = airlight_surface(s_21);
         return _e4;
     }
-    AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    AirlightOuter _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
     g_20 = _e6;
-    if ((s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
         AirlightOuter _e11 = g_20;
         return _e11;
     }
-    vec3 ab_1 = (s_20.light_end - s_20.light_position);
+    vec3 ab_1 = (s_21.light_end - s_21.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = (s_20.intensity == 0.0);
+        local_95 = (s_21.intensity == 0.0);
     } else {
         local_95 = true;
     }
     bool _e26 = local_95;
     if (!(_e26)) {
-        local_96 = (s_20.sigma_s == 0.0);
+        local_96 = (s_21.sigma_s == 0.0);
     } else {
         local_96 = true;
     }
@@ -4370,13 +4398,13 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
         return _e37;
     }
     vec3 e_4 = (ab_1 / vec3(_e15));
-    vec3 _e41 = airlight_normalize(s_20.dir);
-    vec3 w0_ = (s_20.light_position - s_20.origin);
+    vec3 _e41 = airlight_normalize(s_21.dir);
+    vec3 w0_ = (s_21.light_position - s_21.origin);
     float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_20.flags & 1u) != 0u);
+    bool infinite_4 = ((s_21.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4408,7 +4436,7 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = (s_20.t_min <= _e101);
+        local_100 = (s_21.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4416,7 +4444,7 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = (_e110 <= s_20.t_max);
+            local_102 = (_e110 <= s_21.t_max);
         } else {
             local_102 = true;
         }
@@ -4484,14 +4512,14 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     float _e172 = scale;
     g_20.scale = _e172;
     float _e178 = s_star;
-    at = float[3](_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
-    bool loop_init_25 = true;
+    at = float[3](_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
+        if (!loop_init_26) {
             uint _e229 = i_19;
             i_19 = (_e229 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e189 = i_19;
         if ((_e189 < 3u)) {
         } else {
@@ -4567,13 +4595,13 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     AirlightOuter _e268 = g_20;
     float _e270 = airlight_to_w(_e268, 0.0);
     g_20.edges[0] = _e270;
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e304 = i_20;
             i_20 = (_e304 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e275 = i_20;
         if ((_e275 < 3u)) {
         } else {
@@ -4610,14 +4638,14 @@ AirlightOuter airlight_outer(AirlightScene s_20) {
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_21, float x_14) {
+AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_21, float x_14) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
-    p = s_21;
+    p = s_22;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_21.panels - 1u));
         float t_6 = (x_14 - float(i_21));
         float a_24 = g_21.gamma[i_21];
@@ -4641,9 +4669,9 @@ AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_21, float x
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
-    if ((s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_14;
         if ((g_21.scale > 0.0)) {
             at_1 = (g_21.s_star + (g_21.scale * sinh(x_14)));
@@ -4659,7 +4687,7 @@ AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_21, float x
     return AirlightNode(_e122, 1.0);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_22) {
+AirlightResult airlight_in_scatter(AirlightScene s_23) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -4683,11 +4711,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
     bool local_116 = false;
     bool local_117 = false;
     bool local_118 = false;
-    bool _e1 = airlight_valid(s_22);
+    bool _e1 = airlight_valid(s_23);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e6 = airlight_outer(s_22);
+    AirlightOuter _e6 = airlight_outer(s_23);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -4698,13 +4726,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e260 = step_1;
             step_1 = (_e260 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e58 = step_1;
         if ((_e58 < evaluations)) {
         } else {
@@ -4720,13 +4748,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
             k_7 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            bool loop_init_28 = true;
+            bool loop_init_29 = true;
             while(true) {
-                if (!loop_init_28) {
+                if (!loop_init_29) {
                     uint _e166 = j_4;
                     j_4 = (_e166 + 1u);
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e76 = j_4;
                 if ((_e76 < 7u)) {
                 } else {
@@ -4744,7 +4772,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
                     }
                     bool _e100 = local_112;
                     float w_5 = (_e100 ? (c_13 - (hw_1 * node.x)) : (c_13 + (hw_1 * node.x)));
-                    AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_5);
+                    AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_5);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -4775,8 +4803,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
-                        if ((s_22.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_23.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }
@@ -4830,13 +4858,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_22) {
                 } else {
                     split = false;
                     tries = 0u;
-                    bool loop_init_29 = true;
+                    bool loop_init_30 = true;
                     while(true) {
-                        if (!loop_init_29) {
+                        if (!loop_init_30) {
                             uint _e255 = tries;
                             tries = (_e255 + 1u);
                         }
-                        loop_init_29 = false;
+                        loop_init_30 = false;
                         uint _e207 = tries;
                         if ((_e207 < _e6.max_panels)) {
                         } else {

@@ -398,8 +398,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_23 = (x_2 / (2f + x_2));
-    let s2_ = (s_23 * s_23);
+    let s_24 = (x_2 / (2f + x_2));
+    let s2_ = (s_24 * s_24);
     loop {
         let _e14 = k_2;
         if (_e14 < 9u) {
@@ -417,7 +417,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_23) * _e35);
+    return ((2f * s_24) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1179,6 +1179,9 @@ fn airlight_expm1_(x_6: f32) -> f32 {
 
 fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
     var out_1: array<f32, 12>;
+    var share: f32;
+    var steps: u32 = 1u;
+    var s_4: u32 = 1u;
     var above: f32 = 0f;
     var cur: f32 = 0.00000000000000000001f;
     var below: f32 = 0f;
@@ -1205,476 +1208,499 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
     } else {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
-            let k0_ = max(AIRLIGHT_TERMS, u32(ceil(lambda)));
-            let per_step = (-2f * log((lambda / f32((2u * k0_)))));
-            let steps = (u32(min(ceil((15.942385f / per_step)), 28f)) + 2u);
-            let top = (k0_ + steps);
-            odd = f32(((2u * top) + 1u));
+            let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
+            let x_19 = (lambda / f32((2u * k0_)));
+            let per_step = (x_19 * x_19);
+            share = per_step;
             loop {
-                let _e64 = i_5;
-                if (_e64 < 54u) {
+                let _e45 = s_4;
+                if (_e45 < 28u) {
                 } else {
                     break;
                 }
                 {
-                    let _e67 = i_5;
-                    if ((_e67 + AIRLIGHT_TERMS) > top) {
+                    let _e48 = share;
+                    if !((_e48 > AIRLIGHT_FLT_EPS)) {
                         break;
                     }
-                    let _e70 = above;
-                    let _e71 = odd;
-                    let _e73 = cur;
-                    below = (_e70 + ((_e71 * inv_3) * _e73));
-                    let _e76 = odd;
-                    odd = (_e76 - 2f);
-                    let _e79 = cur;
-                    above = _e79;
-                    let _e80 = below;
-                    cur = _e80;
-                    let _e81 = cur;
-                    if (_e81 > 100000000000000000000f) {
-                        let _e84 = cur;
-                        cur = (_e84 * 0.00000000000000000001f);
-                        let _e87 = above;
-                        above = (_e87 * 0.00000000000000000001f);
+                    let _e52 = share;
+                    share = (_e52 * per_step);
+                    let _e54 = steps;
+                    steps = (_e54 + 1u);
+                }
+                continuing {
+                    let _e58 = s_4;
+                    s_4 = (_e58 + 1u);
+                }
+            }
+            let _e60 = steps;
+            let top = ((k0_ + _e60) + 2u);
+            odd = f32(((2u * top) + 1u));
+            loop {
+                let _e78 = i_5;
+                if (_e78 < 54u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e81 = i_5;
+                    if ((_e81 + AIRLIGHT_TERMS) > top) {
+                        break;
+                    }
+                    let _e84 = above;
+                    let _e85 = odd;
+                    let _e87 = cur;
+                    below = (_e84 + ((_e85 * inv_3) * _e87));
+                    let _e90 = odd;
+                    odd = (_e90 - 2f);
+                    let _e93 = cur;
+                    above = _e93;
+                    let _e94 = below;
+                    cur = _e94;
+                    let _e95 = cur;
+                    if (_e95 > 100000000000000000000f) {
+                        let _e98 = cur;
+                        cur = (_e98 * 0.00000000000000000001f);
+                        let _e101 = above;
+                        above = (_e101 * 0.00000000000000000001f);
                     }
                 }
                 continuing {
-                    let _e91 = i_5;
-                    i_5 = (_e91 + 1u);
+                    let _e105 = i_5;
+                    i_5 = (_e105 + 1u);
                 }
             }
-            let _e94 = cur;
-            out_1[11] = _e94;
-            let _e95 = above;
-            let _e96 = odd;
-            let _e98 = cur;
-            below = (_e95 + ((_e96 * inv_3) * _e98));
-            let _e101 = odd;
-            odd = (_e101 - 2f);
-            let _e104 = cur;
-            above = _e104;
-            let _e105 = below;
-            cur = _e105;
-            let _e106 = cur;
-            if (_e106 > 100000000000000000000f) {
-                let _e109 = cur;
-                cur = (_e109 * 0.00000000000000000001f);
-                let _e112 = above;
-                above = (_e112 * 0.00000000000000000001f);
-                let _e116 = out_1[11];
-                out_1[11] = (_e116 * 0.00000000000000000001f);
-            }
+            let _e108 = cur;
+            out_1[11] = _e108;
+            let _e109 = above;
+            let _e110 = odd;
+            let _e112 = cur;
+            below = (_e109 + ((_e110 * inv_3) * _e112));
+            let _e115 = odd;
+            odd = (_e115 - 2f);
+            let _e118 = cur;
+            above = _e118;
+            let _e119 = below;
+            cur = _e119;
             let _e120 = cur;
-            out_1[10] = _e120;
-            let _e121 = above;
-            let _e122 = odd;
-            let _e124 = cur;
-            below = (_e121 + ((_e122 * inv_3) * _e124));
-            let _e127 = odd;
-            odd = (_e127 - 2f);
-            let _e130 = cur;
-            above = _e130;
-            let _e131 = below;
-            cur = _e131;
-            let _e132 = cur;
-            if (_e132 > 100000000000000000000f) {
-                let _e135 = cur;
-                cur = (_e135 * 0.00000000000000000001f);
-                let _e138 = above;
-                above = (_e138 * 0.00000000000000000001f);
-                let _e142 = out_1[10];
-                out_1[10] = (_e142 * 0.00000000000000000001f);
-                let _e146 = out_1[11];
-                out_1[11] = (_e146 * 0.00000000000000000001f);
+            if (_e120 > 100000000000000000000f) {
+                let _e123 = cur;
+                cur = (_e123 * 0.00000000000000000001f);
+                let _e126 = above;
+                above = (_e126 * 0.00000000000000000001f);
+                let _e130 = out_1[11];
+                out_1[11] = (_e130 * 0.00000000000000000001f);
             }
-            let _e150 = cur;
-            out_1[9] = _e150;
-            let _e151 = above;
-            let _e152 = odd;
-            let _e154 = cur;
-            below = (_e151 + ((_e152 * inv_3) * _e154));
-            let _e157 = odd;
-            odd = (_e157 - 2f);
-            let _e160 = cur;
-            above = _e160;
-            let _e161 = below;
-            cur = _e161;
-            let _e162 = cur;
-            if (_e162 > 100000000000000000000f) {
-                let _e165 = cur;
-                cur = (_e165 * 0.00000000000000000001f);
-                let _e168 = above;
-                above = (_e168 * 0.00000000000000000001f);
-                let _e172 = out_1[9];
-                out_1[9] = (_e172 * 0.00000000000000000001f);
-                let _e176 = out_1[10];
-                out_1[10] = (_e176 * 0.00000000000000000001f);
-                let _e180 = out_1[11];
-                out_1[11] = (_e180 * 0.00000000000000000001f);
+            let _e134 = cur;
+            out_1[10] = _e134;
+            let _e135 = above;
+            let _e136 = odd;
+            let _e138 = cur;
+            below = (_e135 + ((_e136 * inv_3) * _e138));
+            let _e141 = odd;
+            odd = (_e141 - 2f);
+            let _e144 = cur;
+            above = _e144;
+            let _e145 = below;
+            cur = _e145;
+            let _e146 = cur;
+            if (_e146 > 100000000000000000000f) {
+                let _e149 = cur;
+                cur = (_e149 * 0.00000000000000000001f);
+                let _e152 = above;
+                above = (_e152 * 0.00000000000000000001f);
+                let _e156 = out_1[10];
+                out_1[10] = (_e156 * 0.00000000000000000001f);
+                let _e160 = out_1[11];
+                out_1[11] = (_e160 * 0.00000000000000000001f);
             }
-            let _e184 = cur;
-            out_1[8] = _e184;
-            let _e185 = above;
-            let _e186 = odd;
-            let _e188 = cur;
-            below = (_e185 + ((_e186 * inv_3) * _e188));
-            let _e191 = odd;
-            odd = (_e191 - 2f);
-            let _e194 = cur;
-            above = _e194;
-            let _e195 = below;
-            cur = _e195;
-            let _e196 = cur;
-            if (_e196 > 100000000000000000000f) {
-                let _e199 = cur;
-                cur = (_e199 * 0.00000000000000000001f);
-                let _e202 = above;
-                above = (_e202 * 0.00000000000000000001f);
-                let _e206 = out_1[8];
-                out_1[8] = (_e206 * 0.00000000000000000001f);
-                let _e210 = out_1[9];
-                out_1[9] = (_e210 * 0.00000000000000000001f);
-                let _e214 = out_1[10];
-                out_1[10] = (_e214 * 0.00000000000000000001f);
-                let _e218 = out_1[11];
-                out_1[11] = (_e218 * 0.00000000000000000001f);
+            let _e164 = cur;
+            out_1[9] = _e164;
+            let _e165 = above;
+            let _e166 = odd;
+            let _e168 = cur;
+            below = (_e165 + ((_e166 * inv_3) * _e168));
+            let _e171 = odd;
+            odd = (_e171 - 2f);
+            let _e174 = cur;
+            above = _e174;
+            let _e175 = below;
+            cur = _e175;
+            let _e176 = cur;
+            if (_e176 > 100000000000000000000f) {
+                let _e179 = cur;
+                cur = (_e179 * 0.00000000000000000001f);
+                let _e182 = above;
+                above = (_e182 * 0.00000000000000000001f);
+                let _e186 = out_1[9];
+                out_1[9] = (_e186 * 0.00000000000000000001f);
+                let _e190 = out_1[10];
+                out_1[10] = (_e190 * 0.00000000000000000001f);
+                let _e194 = out_1[11];
+                out_1[11] = (_e194 * 0.00000000000000000001f);
             }
-            let _e222 = cur;
-            out_1[7] = _e222;
-            let _e223 = above;
-            let _e224 = odd;
-            let _e226 = cur;
-            below = (_e223 + ((_e224 * inv_3) * _e226));
-            let _e229 = odd;
-            odd = (_e229 - 2f);
-            let _e232 = cur;
-            above = _e232;
-            let _e233 = below;
-            cur = _e233;
-            let _e234 = cur;
-            if (_e234 > 100000000000000000000f) {
-                let _e237 = cur;
-                cur = (_e237 * 0.00000000000000000001f);
-                let _e240 = above;
-                above = (_e240 * 0.00000000000000000001f);
-                let _e244 = out_1[7];
-                out_1[7] = (_e244 * 0.00000000000000000001f);
-                let _e248 = out_1[8];
-                out_1[8] = (_e248 * 0.00000000000000000001f);
-                let _e252 = out_1[9];
-                out_1[9] = (_e252 * 0.00000000000000000001f);
-                let _e256 = out_1[10];
-                out_1[10] = (_e256 * 0.00000000000000000001f);
-                let _e260 = out_1[11];
-                out_1[11] = (_e260 * 0.00000000000000000001f);
+            let _e198 = cur;
+            out_1[8] = _e198;
+            let _e199 = above;
+            let _e200 = odd;
+            let _e202 = cur;
+            below = (_e199 + ((_e200 * inv_3) * _e202));
+            let _e205 = odd;
+            odd = (_e205 - 2f);
+            let _e208 = cur;
+            above = _e208;
+            let _e209 = below;
+            cur = _e209;
+            let _e210 = cur;
+            if (_e210 > 100000000000000000000f) {
+                let _e213 = cur;
+                cur = (_e213 * 0.00000000000000000001f);
+                let _e216 = above;
+                above = (_e216 * 0.00000000000000000001f);
+                let _e220 = out_1[8];
+                out_1[8] = (_e220 * 0.00000000000000000001f);
+                let _e224 = out_1[9];
+                out_1[9] = (_e224 * 0.00000000000000000001f);
+                let _e228 = out_1[10];
+                out_1[10] = (_e228 * 0.00000000000000000001f);
+                let _e232 = out_1[11];
+                out_1[11] = (_e232 * 0.00000000000000000001f);
             }
-            let _e264 = cur;
-            out_1[6] = _e264;
-            let _e265 = above;
-            let _e266 = odd;
-            let _e268 = cur;
-            below = (_e265 + ((_e266 * inv_3) * _e268));
-            let _e271 = odd;
-            odd = (_e271 - 2f);
-            let _e274 = cur;
-            above = _e274;
-            let _e275 = below;
-            cur = _e275;
-            let _e276 = cur;
-            if (_e276 > 100000000000000000000f) {
-                let _e279 = cur;
-                cur = (_e279 * 0.00000000000000000001f);
-                let _e282 = above;
-                above = (_e282 * 0.00000000000000000001f);
-                let _e286 = out_1[6];
-                out_1[6] = (_e286 * 0.00000000000000000001f);
-                let _e290 = out_1[7];
-                out_1[7] = (_e290 * 0.00000000000000000001f);
-                let _e294 = out_1[8];
-                out_1[8] = (_e294 * 0.00000000000000000001f);
-                let _e298 = out_1[9];
-                out_1[9] = (_e298 * 0.00000000000000000001f);
-                let _e302 = out_1[10];
-                out_1[10] = (_e302 * 0.00000000000000000001f);
-                let _e306 = out_1[11];
-                out_1[11] = (_e306 * 0.00000000000000000001f);
+            let _e236 = cur;
+            out_1[7] = _e236;
+            let _e237 = above;
+            let _e238 = odd;
+            let _e240 = cur;
+            below = (_e237 + ((_e238 * inv_3) * _e240));
+            let _e243 = odd;
+            odd = (_e243 - 2f);
+            let _e246 = cur;
+            above = _e246;
+            let _e247 = below;
+            cur = _e247;
+            let _e248 = cur;
+            if (_e248 > 100000000000000000000f) {
+                let _e251 = cur;
+                cur = (_e251 * 0.00000000000000000001f);
+                let _e254 = above;
+                above = (_e254 * 0.00000000000000000001f);
+                let _e258 = out_1[7];
+                out_1[7] = (_e258 * 0.00000000000000000001f);
+                let _e262 = out_1[8];
+                out_1[8] = (_e262 * 0.00000000000000000001f);
+                let _e266 = out_1[9];
+                out_1[9] = (_e266 * 0.00000000000000000001f);
+                let _e270 = out_1[10];
+                out_1[10] = (_e270 * 0.00000000000000000001f);
+                let _e274 = out_1[11];
+                out_1[11] = (_e274 * 0.00000000000000000001f);
             }
-            let _e310 = cur;
-            out_1[5] = _e310;
-            let _e311 = above;
-            let _e312 = odd;
-            let _e314 = cur;
-            below = (_e311 + ((_e312 * inv_3) * _e314));
-            let _e317 = odd;
-            odd = (_e317 - 2f);
-            let _e320 = cur;
-            above = _e320;
-            let _e321 = below;
-            cur = _e321;
-            let _e322 = cur;
-            if (_e322 > 100000000000000000000f) {
-                let _e325 = cur;
-                cur = (_e325 * 0.00000000000000000001f);
-                let _e328 = above;
-                above = (_e328 * 0.00000000000000000001f);
-                let _e332 = out_1[5];
-                out_1[5] = (_e332 * 0.00000000000000000001f);
-                let _e336 = out_1[6];
-                out_1[6] = (_e336 * 0.00000000000000000001f);
-                let _e340 = out_1[7];
-                out_1[7] = (_e340 * 0.00000000000000000001f);
-                let _e344 = out_1[8];
-                out_1[8] = (_e344 * 0.00000000000000000001f);
-                let _e348 = out_1[9];
-                out_1[9] = (_e348 * 0.00000000000000000001f);
-                let _e352 = out_1[10];
-                out_1[10] = (_e352 * 0.00000000000000000001f);
-                let _e356 = out_1[11];
-                out_1[11] = (_e356 * 0.00000000000000000001f);
+            let _e278 = cur;
+            out_1[6] = _e278;
+            let _e279 = above;
+            let _e280 = odd;
+            let _e282 = cur;
+            below = (_e279 + ((_e280 * inv_3) * _e282));
+            let _e285 = odd;
+            odd = (_e285 - 2f);
+            let _e288 = cur;
+            above = _e288;
+            let _e289 = below;
+            cur = _e289;
+            let _e290 = cur;
+            if (_e290 > 100000000000000000000f) {
+                let _e293 = cur;
+                cur = (_e293 * 0.00000000000000000001f);
+                let _e296 = above;
+                above = (_e296 * 0.00000000000000000001f);
+                let _e300 = out_1[6];
+                out_1[6] = (_e300 * 0.00000000000000000001f);
+                let _e304 = out_1[7];
+                out_1[7] = (_e304 * 0.00000000000000000001f);
+                let _e308 = out_1[8];
+                out_1[8] = (_e308 * 0.00000000000000000001f);
+                let _e312 = out_1[9];
+                out_1[9] = (_e312 * 0.00000000000000000001f);
+                let _e316 = out_1[10];
+                out_1[10] = (_e316 * 0.00000000000000000001f);
+                let _e320 = out_1[11];
+                out_1[11] = (_e320 * 0.00000000000000000001f);
             }
-            let _e360 = cur;
-            out_1[4] = _e360;
-            let _e361 = above;
-            let _e362 = odd;
-            let _e364 = cur;
-            below = (_e361 + ((_e362 * inv_3) * _e364));
-            let _e367 = odd;
-            odd = (_e367 - 2f);
-            let _e370 = cur;
-            above = _e370;
-            let _e371 = below;
-            cur = _e371;
-            let _e372 = cur;
-            if (_e372 > 100000000000000000000f) {
-                let _e375 = cur;
-                cur = (_e375 * 0.00000000000000000001f);
-                let _e378 = above;
-                above = (_e378 * 0.00000000000000000001f);
-                let _e382 = out_1[4];
-                out_1[4] = (_e382 * 0.00000000000000000001f);
-                let _e386 = out_1[5];
-                out_1[5] = (_e386 * 0.00000000000000000001f);
-                let _e390 = out_1[6];
-                out_1[6] = (_e390 * 0.00000000000000000001f);
-                let _e394 = out_1[7];
-                out_1[7] = (_e394 * 0.00000000000000000001f);
-                let _e398 = out_1[8];
-                out_1[8] = (_e398 * 0.00000000000000000001f);
-                let _e402 = out_1[9];
-                out_1[9] = (_e402 * 0.00000000000000000001f);
-                let _e406 = out_1[10];
-                out_1[10] = (_e406 * 0.00000000000000000001f);
-                let _e410 = out_1[11];
-                out_1[11] = (_e410 * 0.00000000000000000001f);
+            let _e324 = cur;
+            out_1[5] = _e324;
+            let _e325 = above;
+            let _e326 = odd;
+            let _e328 = cur;
+            below = (_e325 + ((_e326 * inv_3) * _e328));
+            let _e331 = odd;
+            odd = (_e331 - 2f);
+            let _e334 = cur;
+            above = _e334;
+            let _e335 = below;
+            cur = _e335;
+            let _e336 = cur;
+            if (_e336 > 100000000000000000000f) {
+                let _e339 = cur;
+                cur = (_e339 * 0.00000000000000000001f);
+                let _e342 = above;
+                above = (_e342 * 0.00000000000000000001f);
+                let _e346 = out_1[5];
+                out_1[5] = (_e346 * 0.00000000000000000001f);
+                let _e350 = out_1[6];
+                out_1[6] = (_e350 * 0.00000000000000000001f);
+                let _e354 = out_1[7];
+                out_1[7] = (_e354 * 0.00000000000000000001f);
+                let _e358 = out_1[8];
+                out_1[8] = (_e358 * 0.00000000000000000001f);
+                let _e362 = out_1[9];
+                out_1[9] = (_e362 * 0.00000000000000000001f);
+                let _e366 = out_1[10];
+                out_1[10] = (_e366 * 0.00000000000000000001f);
+                let _e370 = out_1[11];
+                out_1[11] = (_e370 * 0.00000000000000000001f);
             }
-            let _e414 = cur;
-            out_1[3] = _e414;
-            let _e415 = above;
-            let _e416 = odd;
-            let _e418 = cur;
-            below = (_e415 + ((_e416 * inv_3) * _e418));
-            let _e421 = odd;
-            odd = (_e421 - 2f);
-            let _e424 = cur;
-            above = _e424;
-            let _e425 = below;
-            cur = _e425;
-            let _e426 = cur;
-            if (_e426 > 100000000000000000000f) {
-                let _e429 = cur;
-                cur = (_e429 * 0.00000000000000000001f);
-                let _e432 = above;
-                above = (_e432 * 0.00000000000000000001f);
-                let _e436 = out_1[3];
-                out_1[3] = (_e436 * 0.00000000000000000001f);
-                let _e440 = out_1[4];
-                out_1[4] = (_e440 * 0.00000000000000000001f);
-                let _e444 = out_1[5];
-                out_1[5] = (_e444 * 0.00000000000000000001f);
-                let _e448 = out_1[6];
-                out_1[6] = (_e448 * 0.00000000000000000001f);
-                let _e452 = out_1[7];
-                out_1[7] = (_e452 * 0.00000000000000000001f);
-                let _e456 = out_1[8];
-                out_1[8] = (_e456 * 0.00000000000000000001f);
-                let _e460 = out_1[9];
-                out_1[9] = (_e460 * 0.00000000000000000001f);
-                let _e464 = out_1[10];
-                out_1[10] = (_e464 * 0.00000000000000000001f);
-                let _e468 = out_1[11];
-                out_1[11] = (_e468 * 0.00000000000000000001f);
+            let _e374 = cur;
+            out_1[4] = _e374;
+            let _e375 = above;
+            let _e376 = odd;
+            let _e378 = cur;
+            below = (_e375 + ((_e376 * inv_3) * _e378));
+            let _e381 = odd;
+            odd = (_e381 - 2f);
+            let _e384 = cur;
+            above = _e384;
+            let _e385 = below;
+            cur = _e385;
+            let _e386 = cur;
+            if (_e386 > 100000000000000000000f) {
+                let _e389 = cur;
+                cur = (_e389 * 0.00000000000000000001f);
+                let _e392 = above;
+                above = (_e392 * 0.00000000000000000001f);
+                let _e396 = out_1[4];
+                out_1[4] = (_e396 * 0.00000000000000000001f);
+                let _e400 = out_1[5];
+                out_1[5] = (_e400 * 0.00000000000000000001f);
+                let _e404 = out_1[6];
+                out_1[6] = (_e404 * 0.00000000000000000001f);
+                let _e408 = out_1[7];
+                out_1[7] = (_e408 * 0.00000000000000000001f);
+                let _e412 = out_1[8];
+                out_1[8] = (_e412 * 0.00000000000000000001f);
+                let _e416 = out_1[9];
+                out_1[9] = (_e416 * 0.00000000000000000001f);
+                let _e420 = out_1[10];
+                out_1[10] = (_e420 * 0.00000000000000000001f);
+                let _e424 = out_1[11];
+                out_1[11] = (_e424 * 0.00000000000000000001f);
             }
-            let _e472 = cur;
-            out_1[2] = _e472;
-            let _e473 = above;
-            let _e474 = odd;
-            let _e476 = cur;
-            below = (_e473 + ((_e474 * inv_3) * _e476));
-            let _e479 = odd;
-            odd = (_e479 - 2f);
-            let _e482 = cur;
-            above = _e482;
-            let _e483 = below;
-            cur = _e483;
-            let _e484 = cur;
-            if (_e484 > 100000000000000000000f) {
-                let _e487 = cur;
-                cur = (_e487 * 0.00000000000000000001f);
-                let _e490 = above;
-                above = (_e490 * 0.00000000000000000001f);
-                let _e494 = out_1[2];
-                out_1[2] = (_e494 * 0.00000000000000000001f);
-                let _e498 = out_1[3];
-                out_1[3] = (_e498 * 0.00000000000000000001f);
-                let _e502 = out_1[4];
-                out_1[4] = (_e502 * 0.00000000000000000001f);
-                let _e506 = out_1[5];
-                out_1[5] = (_e506 * 0.00000000000000000001f);
-                let _e510 = out_1[6];
-                out_1[6] = (_e510 * 0.00000000000000000001f);
-                let _e514 = out_1[7];
-                out_1[7] = (_e514 * 0.00000000000000000001f);
-                let _e518 = out_1[8];
-                out_1[8] = (_e518 * 0.00000000000000000001f);
-                let _e522 = out_1[9];
-                out_1[9] = (_e522 * 0.00000000000000000001f);
-                let _e526 = out_1[10];
-                out_1[10] = (_e526 * 0.00000000000000000001f);
-                let _e530 = out_1[11];
-                out_1[11] = (_e530 * 0.00000000000000000001f);
+            let _e428 = cur;
+            out_1[3] = _e428;
+            let _e429 = above;
+            let _e430 = odd;
+            let _e432 = cur;
+            below = (_e429 + ((_e430 * inv_3) * _e432));
+            let _e435 = odd;
+            odd = (_e435 - 2f);
+            let _e438 = cur;
+            above = _e438;
+            let _e439 = below;
+            cur = _e439;
+            let _e440 = cur;
+            if (_e440 > 100000000000000000000f) {
+                let _e443 = cur;
+                cur = (_e443 * 0.00000000000000000001f);
+                let _e446 = above;
+                above = (_e446 * 0.00000000000000000001f);
+                let _e450 = out_1[3];
+                out_1[3] = (_e450 * 0.00000000000000000001f);
+                let _e454 = out_1[4];
+                out_1[4] = (_e454 * 0.00000000000000000001f);
+                let _e458 = out_1[5];
+                out_1[5] = (_e458 * 0.00000000000000000001f);
+                let _e462 = out_1[6];
+                out_1[6] = (_e462 * 0.00000000000000000001f);
+                let _e466 = out_1[7];
+                out_1[7] = (_e466 * 0.00000000000000000001f);
+                let _e470 = out_1[8];
+                out_1[8] = (_e470 * 0.00000000000000000001f);
+                let _e474 = out_1[9];
+                out_1[9] = (_e474 * 0.00000000000000000001f);
+                let _e478 = out_1[10];
+                out_1[10] = (_e478 * 0.00000000000000000001f);
+                let _e482 = out_1[11];
+                out_1[11] = (_e482 * 0.00000000000000000001f);
             }
-            let _e534 = cur;
-            out_1[1] = _e534;
-            let _e535 = above;
-            let _e536 = odd;
-            let _e538 = cur;
-            below = (_e535 + ((_e536 * inv_3) * _e538));
-            let _e541 = odd;
-            odd = (_e541 - 2f);
-            let _e544 = cur;
-            above = _e544;
-            let _e545 = below;
-            cur = _e545;
-            let _e546 = cur;
-            if (_e546 > 100000000000000000000f) {
-                let _e549 = cur;
-                cur = (_e549 * 0.00000000000000000001f);
-                let _e552 = above;
-                above = (_e552 * 0.00000000000000000001f);
-                let _e556 = out_1[1];
-                out_1[1] = (_e556 * 0.00000000000000000001f);
-                let _e560 = out_1[2];
-                out_1[2] = (_e560 * 0.00000000000000000001f);
-                let _e564 = out_1[3];
-                out_1[3] = (_e564 * 0.00000000000000000001f);
-                let _e568 = out_1[4];
-                out_1[4] = (_e568 * 0.00000000000000000001f);
-                let _e572 = out_1[5];
-                out_1[5] = (_e572 * 0.00000000000000000001f);
-                let _e576 = out_1[6];
-                out_1[6] = (_e576 * 0.00000000000000000001f);
-                let _e580 = out_1[7];
-                out_1[7] = (_e580 * 0.00000000000000000001f);
-                let _e584 = out_1[8];
-                out_1[8] = (_e584 * 0.00000000000000000001f);
-                let _e588 = out_1[9];
-                out_1[9] = (_e588 * 0.00000000000000000001f);
-                let _e592 = out_1[10];
-                out_1[10] = (_e592 * 0.00000000000000000001f);
-                let _e596 = out_1[11];
-                out_1[11] = (_e596 * 0.00000000000000000001f);
+            let _e486 = cur;
+            out_1[2] = _e486;
+            let _e487 = above;
+            let _e488 = odd;
+            let _e490 = cur;
+            below = (_e487 + ((_e488 * inv_3) * _e490));
+            let _e493 = odd;
+            odd = (_e493 - 2f);
+            let _e496 = cur;
+            above = _e496;
+            let _e497 = below;
+            cur = _e497;
+            let _e498 = cur;
+            if (_e498 > 100000000000000000000f) {
+                let _e501 = cur;
+                cur = (_e501 * 0.00000000000000000001f);
+                let _e504 = above;
+                above = (_e504 * 0.00000000000000000001f);
+                let _e508 = out_1[2];
+                out_1[2] = (_e508 * 0.00000000000000000001f);
+                let _e512 = out_1[3];
+                out_1[3] = (_e512 * 0.00000000000000000001f);
+                let _e516 = out_1[4];
+                out_1[4] = (_e516 * 0.00000000000000000001f);
+                let _e520 = out_1[5];
+                out_1[5] = (_e520 * 0.00000000000000000001f);
+                let _e524 = out_1[6];
+                out_1[6] = (_e524 * 0.00000000000000000001f);
+                let _e528 = out_1[7];
+                out_1[7] = (_e528 * 0.00000000000000000001f);
+                let _e532 = out_1[8];
+                out_1[8] = (_e532 * 0.00000000000000000001f);
+                let _e536 = out_1[9];
+                out_1[9] = (_e536 * 0.00000000000000000001f);
+                let _e540 = out_1[10];
+                out_1[10] = (_e540 * 0.00000000000000000001f);
+                let _e544 = out_1[11];
+                out_1[11] = (_e544 * 0.00000000000000000001f);
             }
-            let _e600 = cur;
-            out_1[0] = _e600;
-            let _e601 = cur;
-            let norm = (i0_ / _e601);
-            let _e604 = out_1[0];
-            out_1[0] = (_e604 * norm);
-            let _e607 = out_1[1];
-            out_1[1] = (_e607 * norm);
-            let _e610 = out_1[2];
-            out_1[2] = (_e610 * norm);
-            let _e613 = out_1[3];
-            out_1[3] = (_e613 * norm);
-            let _e616 = out_1[4];
-            out_1[4] = (_e616 * norm);
-            let _e619 = out_1[5];
-            out_1[5] = (_e619 * norm);
-            let _e622 = out_1[6];
-            out_1[6] = (_e622 * norm);
-            let _e625 = out_1[7];
-            out_1[7] = (_e625 * norm);
-            let _e628 = out_1[8];
-            out_1[8] = (_e628 * norm);
-            let _e631 = out_1[9];
-            out_1[9] = (_e631 * norm);
-            let _e634 = out_1[10];
-            out_1[10] = (_e634 * norm);
-            let _e637 = out_1[11];
-            out_1[11] = (_e637 * norm);
+            let _e548 = cur;
+            out_1[1] = _e548;
+            let _e549 = above;
+            let _e550 = odd;
+            let _e552 = cur;
+            below = (_e549 + ((_e550 * inv_3) * _e552));
+            let _e555 = odd;
+            odd = (_e555 - 2f);
+            let _e558 = cur;
+            above = _e558;
+            let _e559 = below;
+            cur = _e559;
+            let _e560 = cur;
+            if (_e560 > 100000000000000000000f) {
+                let _e563 = cur;
+                cur = (_e563 * 0.00000000000000000001f);
+                let _e566 = above;
+                above = (_e566 * 0.00000000000000000001f);
+                let _e570 = out_1[1];
+                out_1[1] = (_e570 * 0.00000000000000000001f);
+                let _e574 = out_1[2];
+                out_1[2] = (_e574 * 0.00000000000000000001f);
+                let _e578 = out_1[3];
+                out_1[3] = (_e578 * 0.00000000000000000001f);
+                let _e582 = out_1[4];
+                out_1[4] = (_e582 * 0.00000000000000000001f);
+                let _e586 = out_1[5];
+                out_1[5] = (_e586 * 0.00000000000000000001f);
+                let _e590 = out_1[6];
+                out_1[6] = (_e590 * 0.00000000000000000001f);
+                let _e594 = out_1[7];
+                out_1[7] = (_e594 * 0.00000000000000000001f);
+                let _e598 = out_1[8];
+                out_1[8] = (_e598 * 0.00000000000000000001f);
+                let _e602 = out_1[9];
+                out_1[9] = (_e602 * 0.00000000000000000001f);
+                let _e606 = out_1[10];
+                out_1[10] = (_e606 * 0.00000000000000000001f);
+                let _e610 = out_1[11];
+                out_1[11] = (_e610 * 0.00000000000000000001f);
+            }
+            let _e614 = cur;
+            out_1[0] = _e614;
+            let _e615 = cur;
+            let norm = (i0_ / _e615);
+            let _e618 = out_1[0];
+            out_1[0] = (_e618 * norm);
+            let _e621 = out_1[1];
+            out_1[1] = (_e621 * norm);
+            let _e624 = out_1[2];
+            out_1[2] = (_e624 * norm);
+            let _e627 = out_1[3];
+            out_1[3] = (_e627 * norm);
+            let _e630 = out_1[4];
+            out_1[4] = (_e630 * norm);
+            let _e633 = out_1[5];
+            out_1[5] = (_e633 * norm);
+            let _e636 = out_1[6];
+            out_1[6] = (_e636 * norm);
+            let _e639 = out_1[7];
+            out_1[7] = (_e639 * norm);
+            let _e642 = out_1[8];
+            out_1[8] = (_e642 * norm);
+            let _e645 = out_1[9];
+            out_1[9] = (_e645 * norm);
+            let _e648 = out_1[10];
+            out_1[10] = (_e648 * norm);
+            let _e651 = out_1[11];
+            out_1[11] = (_e651 * norm);
         } else {
             let e2_1 = exp(-((lambda + lambda)));
             out_1[0] = i0_;
             out_1[1] = ((((1f + e2_1) * 0.5f) - i0_) / lambda);
-            let _e652 = out_1[0];
-            let _e656 = out_1[1];
-            out_1[2] = (_e652 - ((3f / lambda) * _e656));
-            let _e661 = out_1[1];
-            let _e665 = out_1[2];
-            out_1[3] = (_e661 - ((5f / lambda) * _e665));
-            let _e670 = out_1[2];
-            let _e674 = out_1[3];
-            out_1[4] = (_e670 - ((7f / lambda) * _e674));
-            let _e679 = out_1[3];
-            let _e683 = out_1[4];
-            out_1[5] = (_e679 - ((9f / lambda) * _e683));
-            let _e688 = out_1[4];
-            let _e692 = out_1[5];
-            out_1[6] = (_e688 - ((11f / lambda) * _e692));
-            let _e697 = out_1[5];
-            let _e701 = out_1[6];
-            out_1[7] = (_e697 - ((13f / lambda) * _e701));
-            let _e706 = out_1[6];
-            let _e710 = out_1[7];
-            out_1[8] = (_e706 - ((15f / lambda) * _e710));
-            let _e715 = out_1[7];
-            let _e719 = out_1[8];
-            out_1[9] = (_e715 - ((17f / lambda) * _e719));
-            let _e724 = out_1[8];
-            let _e728 = out_1[9];
-            out_1[10] = (_e724 - ((19f / lambda) * _e728));
-            let _e733 = out_1[9];
-            let _e737 = out_1[10];
-            out_1[11] = (_e733 - ((21f / lambda) * _e737));
+            let _e666 = out_1[0];
+            let _e670 = out_1[1];
+            out_1[2] = (_e666 - ((3f / lambda) * _e670));
+            let _e675 = out_1[1];
+            let _e679 = out_1[2];
+            out_1[3] = (_e675 - ((5f / lambda) * _e679));
+            let _e684 = out_1[2];
+            let _e688 = out_1[3];
+            out_1[4] = (_e684 - ((7f / lambda) * _e688));
+            let _e693 = out_1[3];
+            let _e697 = out_1[4];
+            out_1[5] = (_e693 - ((9f / lambda) * _e697));
+            let _e702 = out_1[4];
+            let _e706 = out_1[5];
+            out_1[6] = (_e702 - ((11f / lambda) * _e706));
+            let _e711 = out_1[5];
+            let _e715 = out_1[6];
+            out_1[7] = (_e711 - ((13f / lambda) * _e715));
+            let _e720 = out_1[6];
+            let _e724 = out_1[7];
+            out_1[8] = (_e720 - ((15f / lambda) * _e724));
+            let _e729 = out_1[7];
+            let _e733 = out_1[8];
+            out_1[9] = (_e729 - ((17f / lambda) * _e733));
+            let _e738 = out_1[8];
+            let _e742 = out_1[9];
+            out_1[10] = (_e738 - ((19f / lambda) * _e742));
+            let _e747 = out_1[9];
+            let _e751 = out_1[10];
+            out_1[11] = (_e747 - ((21f / lambda) * _e751));
         }
     }
-    let _e741 = out_1[0];
-    out_1[0] = (_e741 * 2f);
-    let _e745 = out_1[1];
-    out_1[1] = (_e745 * -2f);
-    let _e749 = out_1[2];
-    out_1[2] = (_e749 * 2f);
-    let _e753 = out_1[3];
-    out_1[3] = (_e753 * -2f);
-    let _e757 = out_1[4];
-    out_1[4] = (_e757 * 2f);
-    let _e761 = out_1[5];
-    out_1[5] = (_e761 * -2f);
-    let _e765 = out_1[6];
-    out_1[6] = (_e765 * 2f);
-    let _e769 = out_1[7];
-    out_1[7] = (_e769 * -2f);
-    let _e773 = out_1[8];
-    out_1[8] = (_e773 * 2f);
-    let _e777 = out_1[9];
-    out_1[9] = (_e777 * -2f);
-    let _e781 = out_1[10];
-    out_1[10] = (_e781 * 2f);
-    let _e785 = out_1[11];
-    out_1[11] = (_e785 * -2f);
-    let _e788 = out_1;
-    return _e788;
+    let _e755 = out_1[0];
+    out_1[0] = (_e755 * 2f);
+    let _e759 = out_1[1];
+    out_1[1] = (_e759 * -2f);
+    let _e763 = out_1[2];
+    out_1[2] = (_e763 * 2f);
+    let _e767 = out_1[3];
+    out_1[3] = (_e767 * -2f);
+    let _e771 = out_1[4];
+    out_1[4] = (_e771 * 2f);
+    let _e775 = out_1[5];
+    out_1[5] = (_e775 * -2f);
+    let _e779 = out_1[6];
+    out_1[6] = (_e779 * 2f);
+    let _e783 = out_1[7];
+    out_1[7] = (_e783 * -2f);
+    let _e787 = out_1[8];
+    out_1[8] = (_e787 * 2f);
+    let _e791 = out_1[9];
+    out_1[9] = (_e791 * -2f);
+    let _e795 = out_1[10];
+    out_1[10] = (_e795 * 2f);
+    let _e799 = out_1[11];
+    out_1[11] = (_e799 * -2f);
+    let _e802 = out_1;
+    return _e802;
 }
 
 fn airlight_tail_estimate(c_2: array<f32, 12>) -> f32 {
@@ -1760,15 +1786,15 @@ fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
     }
     let _e13 = offset;
-    let x_19 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_19)), (x_19 > 0f));
+    let x_20 = (half_3.big_h * _e13);
+    return select(1f, exp(-(x_20)), (x_20 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_4: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+fn airlight_v_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
     var r_1: f32;
     var vc: f32;
     var samples: array<f32, 12>;
@@ -1801,7 +1827,7 @@ fn airlight_v_panel(s_4: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
             let _e39 = i_7;
             let _e40 = airlight_node(_e6, _e39);
             let v_6 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_4, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
+            let _e46 = airlight_integrand_over(s_5, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
             let fy = _e46.x;
             let over = _e46.y;
             let _e49 = i_7;
@@ -1865,7 +1891,7 @@ fn airlight_v_panel(s_4: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
     return _e158;
 }
 
-fn airlight_y_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
     var samples_1: array<f32, 12>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1890,7 +1916,7 @@ fn airlight_y_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
             let _e27 = airlight_node(_e6, _e26);
             let y_6 = (yc_1 + (r_7 * _e27));
             let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_6 * b_5)));
-            let _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
+            let _e39 = airlight_integrand(s_6, g_8, sigma_3, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -2025,7 +2051,7 @@ fn airlight_legendre_to_monomial(c_4: array<f32, 12>) -> array<f32, 12> {
     return _e255;
 }
 
-fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 12>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -2058,7 +2084,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
             let y_7 = (yc_2 + (r_8 * _e23));
-            let _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
+            let _e26 = airlight_integrand(s_7, g_9, sigma_4, y_7);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
             let _e33 = f_max_3;
@@ -2371,13 +2397,13 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     let _e936 = airlight_factor(half_6, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_20 = (abs(alpha) + abs(beta));
+    let x_21 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_20) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_21) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2387,7 +2413,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_20) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_21) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2397,7 +2423,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_20) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_21) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2407,7 +2433,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_20) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_21) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2417,7 +2443,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_20) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_21) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2427,7 +2453,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_20) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_21) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2437,7 +2463,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_20) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_21) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2447,7 +2473,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_20) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_21) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2457,7 +2483,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_20) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_21) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2467,7 +2493,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_20) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_21) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2477,7 +2503,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_20) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_21) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2487,7 +2513,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_20) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_21) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2507,7 +2533,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     return _e1182;
 }
 
-fn airlight_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
     var local_11: bool;
     var local_12: bool;
 
@@ -2518,7 +2544,7 @@ fn airlight_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e13 = local_11;
     if _e13 {
-        let _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+        let _e14 = airlight_tail_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
@@ -2528,14 +2554,14 @@ fn airlight_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e26 = local_12;
     if _e26 {
-        let _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+        let _e27 = airlight_y_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    let _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
+    let _e28 = airlight_v_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-fn airlight_integrate_piece(s_8: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_9: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2573,7 +2599,7 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_11: AirlightCanonical, sigma_6
         {
             let _e57 = a_9;
             let _e58 = b_8;
-            let _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
+            let _e59 = airlight_panel(s_9, g_11, sigma_6, half_8, _e57, _e58);
             let _e60 = (*f_max_4);
             (*f_max_4) = max(_e60, _e59.f_max);
             let _e63 = slot;
@@ -2875,7 +2901,7 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     return true;
 }
 
-fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
@@ -2893,13 +2919,13 @@ fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, hal
     var local_26: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_9, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_10, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_9.light_param_a;
-        k_out = s_9.light_param_b;
+    if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_10.light_param_a;
+        k_out = s_10.light_param_b;
         let _e29 = k_in;
         let _e30 = k_out;
         let width_1 = (_e29 - _e30);
@@ -3012,7 +3038,7 @@ fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, hal
             let _e146 = hi_2;
             let _e147 = lo_2;
             if (_e146 > _e147) {
-                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
                     let _e154 = dark_below;
                     let _e155 = lo_2;
                     let _e156 = hi_2;
@@ -3026,7 +3052,7 @@ fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, hal
                     let _e161 = total_2;
                     let _e162 = lo_2;
                     let _e163 = hi_2;
-                    let _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    let _e164 = airlight_integrate_piece(s_10, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 let _e166 = hi_2;
@@ -3066,7 +3092,7 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_3: 
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_10: AirlightScene, g_15: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
     var local_27: bool;
     var span: f32;
     var e2_: array<f32, 14>;
@@ -3079,38 +3105,38 @@ fn airlight_on_line(s_10: AirlightScene, g_15: AirlightCanonical) -> f32 {
     }
     let _e10 = local_27;
     if _e10 {
-        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
-        let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
+        let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
+        let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
         let f_2 = (_e16 * _e22);
         let r0_ = (g_15.x_h - g_15.t_lo);
         let r1_1 = (g_15.x_h - g_15.t_hi);
-        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
+        let _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
-    let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
+    let _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_15.d_el);
+    let _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1f);
     let f_3 = (_e46 * _e52);
     let s0_ = (g_15.t_lo - g_15.x_h);
     let s1_ = (g_15.t_hi - g_15.x_h);
-    if (s_10.sigma_t == 0f) {
+    if (s_11.sigma_t == 0f) {
         span = (1f / s0_);
         if !(g_15.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, 0f, (f_3 * _e75));
+        let _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, 0f, (f_3 * _e75));
         return _e77;
     }
-    let two_st = (s_10.sigma_t + s_10.sigma_t);
+    let two_st = (s_11.sigma_t + s_11.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    let _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if !(g_15.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -3132,7 +3158,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_11: AirlightScene, g_16: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -3178,19 +3204,19 @@ fn airlight_whole_line(s_11: AirlightScene, g_16: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_11, g_16, -1f, _e9);
+    let _e54 = airlight_integrand(s_12, g_16, -1f, _e9);
     let _e55 = airlight_moment_zero(half_13);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_11.sigma_t > 0f) {
-            x_8 = (s_11.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+        if (s_12.sigma_t > 0f) {
+            x_8 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
+    let _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -3202,7 +3228,7 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
@@ -3247,7 +3273,7 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e10 = local_30;
     if !(!(_e10)) {
-        local_31 = ((s_12.sigma_s * s_12.intensity) == 0f);
+        local_31 = ((s_13.sigma_s * s_13.intensity) == 0f);
     } else {
         local_31 = true;
     }
@@ -3284,16 +3310,16 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e55 = local_34;
     if _e55 {
-        let _e56 = airlight_on_line(s_12, g_17);
+        let _e56 = airlight_on_line(s_13, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_12.sigma_t * h_3);
-    if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = (s_12.light_param_a == 0f);
+    let big_h_5 = (s_13.sigma_t * h_3);
+    if !((s_13.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_36 = (s_13.light_param_a == 0f);
         } else {
             local_36 = false;
         }
@@ -3304,15 +3330,15 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e85 = local_35;
     if _e85 {
-        if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             let _e104 = local_39;
             if _e104 {
-                local_40 = (s_12.phase_param_a == 0f);
+                local_40 = (s_13.phase_param_a == 0f);
             } else {
                 local_40 = false;
             }
@@ -3346,7 +3372,7 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e131 = local_42;
     if _e131 {
-        let _e132 = airlight_whole_line(s_12, g_17, big_h_5);
+        let _e132 = airlight_whole_line(s_13, g_17, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -3389,9 +3415,9 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
             }
         }
         let _e199 = half_11;
-        let _e200 = airlight_half(s_12, g_17, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e200 = airlight_half(s_13, g_17, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_17.t_hi_infinite) {
@@ -3483,9 +3509,9 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -
             }
         }
         let _e313 = half_12;
-        let _e314 = airlight_half(s_12, g_17, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e314 = airlight_half(s_13, g_17, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3542,7 +3568,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_13: AirlightScene) -> bool {
+fn airlight_valid(s_14: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
@@ -3578,96 +3604,96 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_87: bool;
     var local_88: bool;
 
-    let _e2 = airlight_vec_finite(s_13.origin);
+    let _e2 = airlight_vec_finite(s_14.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_13.dir);
+        let _e6 = airlight_vec_finite(s_14.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     let _e8 = local_56;
     if _e8 {
-        let _e12 = airlight_normalisable(s_13.dir);
+        let _e12 = airlight_normalisable(s_14.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     let _e14 = local_57;
     if _e14 {
-        let _e18 = airlight_is_finite(s_13.t_min);
+        let _e18 = airlight_is_finite(s_14.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     let _e20 = local_58;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_13.light_position);
+        let _e24 = airlight_vec_finite(s_14.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     let _e26 = local_59;
     if _e26 {
-        let _e30 = airlight_is_finite(s_13.intensity);
+        let _e30 = airlight_is_finite(s_14.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     let _e32 = local_60;
     if _e32 {
-        local_61 = (s_13.intensity >= 0f);
+        local_61 = (s_14.intensity >= 0f);
     } else {
         local_61 = false;
     }
     let _e39 = local_61;
     if _e39 {
-        let _e43 = airlight_is_finite(s_13.sigma_s);
+        let _e43 = airlight_is_finite(s_14.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     let _e45 = local_62;
     if _e45 {
-        local_63 = (s_13.sigma_s >= 0f);
+        local_63 = (s_14.sigma_s >= 0f);
     } else {
         local_63 = false;
     }
     let _e52 = local_63;
     if _e52 {
-        let _e56 = airlight_is_finite(s_13.sigma_t);
+        let _e56 = airlight_is_finite(s_14.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     let _e58 = local_64;
     if _e58 {
-        local_65 = (s_13.sigma_t >= 0f);
+        local_65 = (s_14.sigma_t >= 0f);
     } else {
         local_65 = false;
     }
     let _e65 = local_65;
     ok = _e65;
-    if ((s_13.flags & 1u) == 0u) {
+    if ((s_14.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_13.t_max);
+            let _e76 = airlight_is_finite(s_14.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         let _e78 = local_66;
         if _e78 {
-            local_67 = (s_13.t_min <= s_13.t_max);
+            local_67 = (s_14.t_min <= s_14.t_max);
         } else {
             local_67 = false;
         }
         let _e85 = local_67;
         ok = _e85;
     }
-    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_13.light_end);
+            let _e93 = airlight_vec_finite(s_14.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3675,39 +3701,39 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e95 = local_68;
         ok = _e95;
     } else {
-        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_14.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_is_finite(s_13.brdf_albedo);
+            let _e107 = airlight_is_finite(s_14.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         let _e109 = local_69;
         if _e109 {
-            local_70 = (s_13.brdf_albedo >= 0f);
+            local_70 = (s_14.brdf_albedo >= 0f);
         } else {
             local_70 = false;
         }
         let _e116 = local_70;
         if _e116 {
-            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         let _e123 = local_71;
         if _e123 {
-            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         let _e130 = local_72;
         if _e130 {
-            let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            let _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
             let _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3716,89 +3742,89 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e139 = local_73;
         ok = _e139;
     } else {
-        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_14.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e147 = ok;
         if _e147 {
-            let _e151 = airlight_vec_finite(s_13.light_axis);
+            let _e151 = airlight_vec_finite(s_14.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         let _e153 = local_74;
         if _e153 {
-            let _e157 = airlight_normalisable(s_13.light_axis);
+            let _e157 = airlight_normalisable(s_14.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         let _e159 = local_75;
         if _e159 {
-            local_76 = (s_13.light_param_a >= 0f);
+            local_76 = (s_14.light_param_a >= 0f);
         } else {
             local_76 = false;
         }
         let _e166 = local_76;
         if _e166 {
-            local_77 = (s_13.light_param_a <= 1024f);
+            local_77 = (s_14.light_param_a <= 1024f);
         } else {
             local_77 = false;
         }
         let _e173 = local_77;
         if _e173 {
-            local_78 = (fract((s_13.light_param_a * 0.5f)) == 0f);
+            local_78 = (fract((s_14.light_param_a * 0.5f)) == 0f);
         } else {
             local_78 = false;
         }
         let _e183 = local_78;
         ok = _e183;
     } else {
-        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_14.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
-                let _e191 = airlight_vec_finite(s_13.light_axis);
+                let _e191 = airlight_vec_finite(s_14.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             let _e193 = local_79;
             if _e193 {
-                let _e197 = airlight_normalisable(s_13.light_axis);
+                let _e197 = airlight_normalisable(s_14.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             let _e199 = local_80;
             if _e199 {
-                local_81 = (s_13.light_param_b < s_13.light_param_a);
+                local_81 = (s_14.light_param_b < s_14.light_param_a);
             } else {
                 local_81 = false;
             }
             let _e206 = local_81;
             if _e206 {
-                local_82 = (s_13.light_param_b >= -1f);
+                local_82 = (s_14.light_param_b >= -1f);
             } else {
                 local_82 = false;
             }
             let _e213 = local_82;
             if _e213 {
-                local_83 = (s_13.light_param_a <= 1f);
+                local_83 = (s_14.light_param_a <= 1f);
             } else {
                 local_83 = false;
             }
             let _e220 = local_83;
             ok = _e220;
         } else {
-            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_13.phase_param_a) < 1f);
-    switch s_13.phase_kind {
+    let g_ok = (abs(s_14.phase_param_a) < 1f);
+    switch s_14.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -3820,19 +3846,19 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
             }
             let _e239 = local_85;
             if _e239 {
-                local_86 = (abs(s_13.phase_param_b) < 1f);
+                local_86 = (abs(s_14.phase_param_b) < 1f);
             } else {
                 local_86 = false;
             }
             let _e247 = local_86;
             if _e247 {
-                local_87 = (s_13.phase_param_c >= 0f);
+                local_87 = (s_14.phase_param_c >= 0f);
             } else {
                 local_87 = false;
             }
             let _e254 = local_87;
             if _e254 {
-                local_88 = (s_13.phase_param_c <= 1f);
+                local_88 = (s_14.phase_param_c <= 1f);
             } else {
                 local_88 = false;
             }
@@ -3847,16 +3873,16 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     return _e263;
 }
 
-fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_15: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_14.dir);
-    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_14.light_axis);
+    let _e2 = airlight_normalize(s_15.dir);
+    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_15.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_14.light_position - s_14.origin);
+    let to_light = (s_15.light_position - s_15.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -3864,10 +3890,10 @@ fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_14.flags & 1u) != 0u);
+    let infinite_3 = ((s_15.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, select(s_14.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, select(s_15.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -3926,19 +3952,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_16: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_91: bool;
     var out_2: AirlightCanonical;
     var local_92: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_15.flags > 1u));
-    let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
+    let key_4 = u32((s_16.flags > 1u));
+    let _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
     let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_15.dir;
+    let dir_2 = s_16.dir;
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
@@ -3978,8 +4004,8 @@ fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_15.light_axis);
+    if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_16.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
@@ -4139,12 +4165,12 @@ fn airlight_asinh(x_11: f32) -> f32 {
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_18: AirlightOuter, s_16: f32) -> f32 {
+fn airlight_to_w(g_18: AirlightOuter, s_17: f32) -> f32 {
     if (g_18.scale > 0f) {
-        let _e9 = airlight_asinh(((s_16 - g_18.s_star) / g_18.scale));
+        let _e9 = airlight_asinh(((s_17 - g_18.s_star) / g_18.scale));
         return _e9;
     }
-    return s_16;
+    return s_17;
 }
 
 fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
@@ -4161,20 +4187,20 @@ fn airlight_acos(x_13: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_17: f32) -> f32 {
-    if (s_17 <= c_6) {
-        let _e4 = airlight_atan((s_17 / c_6));
+fn airlight_angle(c_6: f32, s_18: f32) -> f32 {
+    if (s_18 <= c_6) {
+        let _e4 = airlight_atan((s_18 / c_6));
         return _e4;
     }
-    if (s_17 <= -(c_6)) {
-        let _e10 = airlight_atan((s_17 / -(c_6)));
+    if (s_18 <= -(c_6)) {
+        let _e10 = airlight_atan((s_18 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if (c_6 >= 0f) {
-        let _e16 = airlight_atan((c_6 / s_17));
+        let _e16 = airlight_atan((c_6 / s_18));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_6) / s_17));
+    let _e21 = airlight_atan((-(c_6) / s_18));
     return (1.5707964f + _e21);
 }
 
@@ -4188,11 +4214,11 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+fn airlight_outer_point(s_19: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_19.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
 }
 
-fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
+fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
     var g_19: AirlightOuter;
     var local_93: bool;
     var u: vec3<f32>;
@@ -4202,12 +4228,12 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     var local_94: bool;
     var i_18: u32 = 0u;
 
-    let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    let _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_19 = _e2;
-    let to_light_1 = (s_19.light_position - s_19.origin);
+    let to_light_1 = (s_20.light_position - s_20.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_19.intensity == 0f)) {
-        local_93 = (s_19.sigma_s == 0f);
+    if !((s_20.intensity == 0f)) {
+        local_93 = (s_20.sigma_s == 0f);
     } else {
         local_93 = true;
     }
@@ -4222,13 +4248,13 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
         let _e27 = g_19;
         return _e27;
     }
-    if (s_19.brdf_albedo == 0f) {
+    if (s_20.brdf_albedo == 0f) {
         g_19.outcome = 1u;
         let _e33 = g_19;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_19.dir);
+    let _e37 = airlight_normalize(s_20.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -4312,7 +4338,7 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     return _e149;
 }
 
-fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
     var local_95: bool;
     var local_96: bool;
@@ -4340,26 +4366,26 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     var i_20: u32 = 0u;
     var local_111: bool;
 
-    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_20);
+    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_21);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    let _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
     g_20 = _e6;
-    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         let _e11 = g_20;
         return _e11;
     }
-    let ab_1 = (s_20.light_end - s_20.light_position);
+    let ab_1 = (s_21.light_end - s_21.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_95 = (s_20.intensity == 0f);
+        local_95 = (s_21.intensity == 0f);
     } else {
         local_95 = true;
     }
     let _e26 = local_95;
     if !(_e26) {
-        local_96 = (s_20.sigma_s == 0f);
+        local_96 = (s_21.sigma_s == 0f);
     } else {
         local_96 = true;
     }
@@ -4370,13 +4396,13 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_20.dir);
-    let w0_ = (s_20.light_position - s_20.origin);
+    let _e41 = airlight_normalize(s_21.dir);
+    let w0_ = (s_21.light_position - s_21.origin);
     let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_20.flags & 1u) != 0u);
+    let infinite_4 = ((s_21.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4408,7 +4434,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e97 = local_99;
     if _e97 {
         let _e101 = t_star;
-        local_100 = (s_20.t_min <= _e101);
+        local_100 = (s_21.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4416,7 +4442,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_102 = (_e110 <= s_20.t_max);
+            local_102 = (_e110 <= s_21.t_max);
         } else {
             local_102 = true;
         }
@@ -4484,7 +4510,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e172 = scale;
     g_20.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
     loop {
         let _e189 = i_19;
         if (_e189 < 3u) {
@@ -4606,15 +4632,15 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_21: AirlightScene, g_21: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_21;
+    p = s_22;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let i_21 = min(u32(max(floor(x_14), 0f)), (g_21.panels - 1u));
         let t_6 = (x_14 - f32(i_21));
         let a_24 = g_21.gamma[i_21];
@@ -4638,9 +4664,9 @@ fn airlight_outer_node(s_21: AirlightScene, g_21: AirlightOuter, x_14: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
         if (g_21.scale > 0f) {
             at_1 = (g_21.s_star + (g_21.scale * sinh(x_14)));
@@ -4656,7 +4682,7 @@ fn airlight_outer_node(s_21: AirlightScene, g_21: AirlightOuter, x_14: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4681,11 +4707,11 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var local_117: bool;
     var local_118: bool;
 
-    let _e1 = airlight_valid(s_22);
+    let _e1 = airlight_valid(s_23);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_22);
+    let _e6 = airlight_outer(s_23);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4730,7 +4756,7 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                     }
                     let _e100 = local_112;
                     let w_5 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_22, _e6, w_5);
+                    let _e102 = airlight_outer_node(s_23, _e6, w_5);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
@@ -4761,8 +4787,8 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }

@@ -737,10 +737,18 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
         out[1] = lambda * (1.0 / 3.0);
     } else if (lambda < f32(2u * n)) {
         let inv = 1.0 / lambda;
-        let k0 = max(n, u32(ceil(lambda)));
-        let per_step = -2.0 * log(lambda / f32(2u * k0));
-        let steps = u32(min(ceil(-log(AIRLIGHT_FLT_EPS) / per_step), 28.0)) + 2u;
-        let top = k0 + steps;
+        let k0 = max(n, u32(lambda) + 1u);
+        // the fewest steps s with (λ/(2k0))^{2s} ≤ ε (at most 28), by products
+        let x = lambda / f32(2u * k0);
+        let per_step = x * x;
+        var share = per_step;
+        var steps = 1u;
+        for (var s = 1u; s < 28u; s++) {
+            if (!(share > AIRLIGHT_FLT_EPS)) { break; }
+            share *= per_step;
+            steps += 1u;
+        }
+        let top = k0 + steps + 2u;
         var above = 0.0;
         var cur = 1.0e-20;
         var below = 0.0;
