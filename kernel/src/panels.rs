@@ -498,9 +498,9 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
         }
     } else if lambda < T::from(2 * n).unwrap() {
         let inv = lambda.recip();
-        // Above k0 = max(K, ⌊λ⌋ + 1) the error's share shrinks by (λ/(2k))² ≤ 1/4 per step down (the
-        // minimal solution falls by λ/(2k+3) per step up, the other grows by (2k+1)/λ): enough
-        // steps for ε, plus two.
+        // Above k0 = max(K, ⌊λ⌋ + 1) the error's share shrinks by (λ/(2k))² ≤ 1/4 per step
+        // down (the minimal solution falls by λ/(2k+3) per step up, the other grows by
+        // (2k+1)/λ): enough steps for ε, plus two.
         let k0 = n.max(lambda.to_usize().map_or(n, |k| k + 1));
         // the fewest steps s with (λ/(2k0))^{2s} ≤ ε (at most 28), by products: no logarithm
         let x = lambda / T::from(2 * k0).unwrap();
