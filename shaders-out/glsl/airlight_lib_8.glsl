@@ -383,8 +383,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_24 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_24 * s_24);
+    float s_23 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_23 * s_23);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -404,7 +404,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_24) * _e35);
+    return ((2.0 * s_23) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -1130,7 +1130,6 @@ float[8] airlight_exp_legendre_moments(float lambda) {
     float out_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float share = 0.0;
     uint steps = 1u;
-    uint s_4 = 1u;
     float above = 0.0;
     float cur = 1e-20;
     float below = 0.0;
@@ -1163,316 +1162,314 @@ float[8] airlight_exp_legendre_moments(float lambda) {
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e58 = s_4;
-                    s_4 = (_e58 + 1u);
+                    uint _e53 = steps;
+                    steps = (_e53 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e45 = s_4;
-                if ((_e45 < 28u)) {
+                uint _e43 = steps;
+                if ((_e43 < 28u)) {
                 } else {
                     break;
                 }
                 {
-                    float _e48 = share;
-                    if (!((_e48 > AIRLIGHT_FLT_EPS))) {
+                    float _e46 = share;
+                    if (!((_e46 > AIRLIGHT_FLT_EPS))) {
                         break;
                     }
-                    float _e52 = share;
-                    share = (_e52 * per_step);
-                    uint _e54 = steps;
-                    steps = (_e54 + 1u);
+                    float _e50 = share;
+                    share = (_e50 * per_step);
                 }
             }
-            uint _e60 = steps;
-            uint top = ((k0_ + _e60) + 2u);
+            uint _e55 = steps;
+            uint top = ((k0_ + _e55) + 2u);
             odd = float(((2u * top) + 1u));
             bool loop_init_11 = true;
             while(true) {
                 if (!loop_init_11) {
-                    uint _e105 = i_5;
-                    i_5 = (_e105 + 1u);
+                    uint _e100 = i_5;
+                    i_5 = (_e100 + 1u);
                 }
                 loop_init_11 = false;
-                uint _e78 = i_5;
-                if ((_e78 < 46u)) {
+                uint _e73 = i_5;
+                if ((_e73 < 46u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e81 = i_5;
-                    if (((_e81 + AIRLIGHT_TERMS) > top)) {
+                    uint _e76 = i_5;
+                    if (((_e76 + AIRLIGHT_TERMS) > top)) {
                         break;
                     }
-                    float _e84 = above;
+                    float _e79 = above;
+                    float _e80 = odd;
+                    float _e82 = cur;
+                    below = (_e79 + ((_e80 * inv_3) * _e82));
                     float _e85 = odd;
-                    float _e87 = cur;
-                    below = (_e84 + ((_e85 * inv_3) * _e87));
-                    float _e90 = odd;
-                    odd = (_e90 - 2.0);
-                    float _e93 = cur;
-                    above = _e93;
-                    float _e94 = below;
-                    cur = _e94;
-                    float _e95 = cur;
-                    if ((_e95 > 1e20)) {
-                        float _e98 = cur;
-                        cur = (_e98 * 1e-20);
-                        float _e101 = above;
-                        above = (_e101 * 1e-20);
+                    odd = (_e85 - 2.0);
+                    float _e88 = cur;
+                    above = _e88;
+                    float _e89 = below;
+                    cur = _e89;
+                    float _e90 = cur;
+                    if ((_e90 > 1e20)) {
+                        float _e93 = cur;
+                        cur = (_e93 * 1e-20);
+                        float _e96 = above;
+                        above = (_e96 * 1e-20);
                     }
                 }
             }
-            float _e108 = cur;
-            out_1[7] = _e108;
-            float _e109 = above;
+            float _e103 = cur;
+            out_1[7] = _e103;
+            float _e104 = above;
+            float _e105 = odd;
+            float _e107 = cur;
+            below = (_e104 + ((_e105 * inv_3) * _e107));
             float _e110 = odd;
-            float _e112 = cur;
-            below = (_e109 + ((_e110 * inv_3) * _e112));
-            float _e115 = odd;
-            odd = (_e115 - 2.0);
-            float _e118 = cur;
-            above = _e118;
-            float _e119 = below;
-            cur = _e119;
-            float _e120 = cur;
-            if ((_e120 > 1e20)) {
-                float _e123 = cur;
-                cur = (_e123 * 1e-20);
-                float _e126 = above;
-                above = (_e126 * 1e-20);
-                float _e130 = out_1[7];
-                out_1[7] = (_e130 * 1e-20);
+            odd = (_e110 - 2.0);
+            float _e113 = cur;
+            above = _e113;
+            float _e114 = below;
+            cur = _e114;
+            float _e115 = cur;
+            if ((_e115 > 1e20)) {
+                float _e118 = cur;
+                cur = (_e118 * 1e-20);
+                float _e121 = above;
+                above = (_e121 * 1e-20);
+                float _e125 = out_1[7];
+                out_1[7] = (_e125 * 1e-20);
             }
-            float _e134 = cur;
-            out_1[6] = _e134;
-            float _e135 = above;
+            float _e129 = cur;
+            out_1[6] = _e129;
+            float _e130 = above;
+            float _e131 = odd;
+            float _e133 = cur;
+            below = (_e130 + ((_e131 * inv_3) * _e133));
             float _e136 = odd;
-            float _e138 = cur;
-            below = (_e135 + ((_e136 * inv_3) * _e138));
-            float _e141 = odd;
-            odd = (_e141 - 2.0);
-            float _e144 = cur;
-            above = _e144;
-            float _e145 = below;
-            cur = _e145;
-            float _e146 = cur;
-            if ((_e146 > 1e20)) {
-                float _e149 = cur;
-                cur = (_e149 * 1e-20);
-                float _e152 = above;
-                above = (_e152 * 1e-20);
-                float _e156 = out_1[6];
-                out_1[6] = (_e156 * 1e-20);
-                float _e160 = out_1[7];
-                out_1[7] = (_e160 * 1e-20);
+            odd = (_e136 - 2.0);
+            float _e139 = cur;
+            above = _e139;
+            float _e140 = below;
+            cur = _e140;
+            float _e141 = cur;
+            if ((_e141 > 1e20)) {
+                float _e144 = cur;
+                cur = (_e144 * 1e-20);
+                float _e147 = above;
+                above = (_e147 * 1e-20);
+                float _e151 = out_1[6];
+                out_1[6] = (_e151 * 1e-20);
+                float _e155 = out_1[7];
+                out_1[7] = (_e155 * 1e-20);
             }
-            float _e164 = cur;
-            out_1[5] = _e164;
-            float _e165 = above;
+            float _e159 = cur;
+            out_1[5] = _e159;
+            float _e160 = above;
+            float _e161 = odd;
+            float _e163 = cur;
+            below = (_e160 + ((_e161 * inv_3) * _e163));
             float _e166 = odd;
-            float _e168 = cur;
-            below = (_e165 + ((_e166 * inv_3) * _e168));
-            float _e171 = odd;
-            odd = (_e171 - 2.0);
-            float _e174 = cur;
-            above = _e174;
-            float _e175 = below;
-            cur = _e175;
-            float _e176 = cur;
-            if ((_e176 > 1e20)) {
-                float _e179 = cur;
-                cur = (_e179 * 1e-20);
-                float _e182 = above;
-                above = (_e182 * 1e-20);
-                float _e186 = out_1[5];
-                out_1[5] = (_e186 * 1e-20);
-                float _e190 = out_1[6];
-                out_1[6] = (_e190 * 1e-20);
-                float _e194 = out_1[7];
-                out_1[7] = (_e194 * 1e-20);
+            odd = (_e166 - 2.0);
+            float _e169 = cur;
+            above = _e169;
+            float _e170 = below;
+            cur = _e170;
+            float _e171 = cur;
+            if ((_e171 > 1e20)) {
+                float _e174 = cur;
+                cur = (_e174 * 1e-20);
+                float _e177 = above;
+                above = (_e177 * 1e-20);
+                float _e181 = out_1[5];
+                out_1[5] = (_e181 * 1e-20);
+                float _e185 = out_1[6];
+                out_1[6] = (_e185 * 1e-20);
+                float _e189 = out_1[7];
+                out_1[7] = (_e189 * 1e-20);
             }
-            float _e198 = cur;
-            out_1[4] = _e198;
-            float _e199 = above;
+            float _e193 = cur;
+            out_1[4] = _e193;
+            float _e194 = above;
+            float _e195 = odd;
+            float _e197 = cur;
+            below = (_e194 + ((_e195 * inv_3) * _e197));
             float _e200 = odd;
-            float _e202 = cur;
-            below = (_e199 + ((_e200 * inv_3) * _e202));
-            float _e205 = odd;
-            odd = (_e205 - 2.0);
-            float _e208 = cur;
-            above = _e208;
-            float _e209 = below;
-            cur = _e209;
-            float _e210 = cur;
-            if ((_e210 > 1e20)) {
-                float _e213 = cur;
-                cur = (_e213 * 1e-20);
-                float _e216 = above;
-                above = (_e216 * 1e-20);
-                float _e220 = out_1[4];
-                out_1[4] = (_e220 * 1e-20);
-                float _e224 = out_1[5];
-                out_1[5] = (_e224 * 1e-20);
-                float _e228 = out_1[6];
-                out_1[6] = (_e228 * 1e-20);
-                float _e232 = out_1[7];
-                out_1[7] = (_e232 * 1e-20);
+            odd = (_e200 - 2.0);
+            float _e203 = cur;
+            above = _e203;
+            float _e204 = below;
+            cur = _e204;
+            float _e205 = cur;
+            if ((_e205 > 1e20)) {
+                float _e208 = cur;
+                cur = (_e208 * 1e-20);
+                float _e211 = above;
+                above = (_e211 * 1e-20);
+                float _e215 = out_1[4];
+                out_1[4] = (_e215 * 1e-20);
+                float _e219 = out_1[5];
+                out_1[5] = (_e219 * 1e-20);
+                float _e223 = out_1[6];
+                out_1[6] = (_e223 * 1e-20);
+                float _e227 = out_1[7];
+                out_1[7] = (_e227 * 1e-20);
             }
-            float _e236 = cur;
-            out_1[3] = _e236;
-            float _e237 = above;
+            float _e231 = cur;
+            out_1[3] = _e231;
+            float _e232 = above;
+            float _e233 = odd;
+            float _e235 = cur;
+            below = (_e232 + ((_e233 * inv_3) * _e235));
             float _e238 = odd;
-            float _e240 = cur;
-            below = (_e237 + ((_e238 * inv_3) * _e240));
-            float _e243 = odd;
-            odd = (_e243 - 2.0);
-            float _e246 = cur;
-            above = _e246;
-            float _e247 = below;
-            cur = _e247;
-            float _e248 = cur;
-            if ((_e248 > 1e20)) {
-                float _e251 = cur;
-                cur = (_e251 * 1e-20);
-                float _e254 = above;
-                above = (_e254 * 1e-20);
-                float _e258 = out_1[3];
-                out_1[3] = (_e258 * 1e-20);
-                float _e262 = out_1[4];
-                out_1[4] = (_e262 * 1e-20);
-                float _e266 = out_1[5];
-                out_1[5] = (_e266 * 1e-20);
-                float _e270 = out_1[6];
-                out_1[6] = (_e270 * 1e-20);
-                float _e274 = out_1[7];
-                out_1[7] = (_e274 * 1e-20);
+            odd = (_e238 - 2.0);
+            float _e241 = cur;
+            above = _e241;
+            float _e242 = below;
+            cur = _e242;
+            float _e243 = cur;
+            if ((_e243 > 1e20)) {
+                float _e246 = cur;
+                cur = (_e246 * 1e-20);
+                float _e249 = above;
+                above = (_e249 * 1e-20);
+                float _e253 = out_1[3];
+                out_1[3] = (_e253 * 1e-20);
+                float _e257 = out_1[4];
+                out_1[4] = (_e257 * 1e-20);
+                float _e261 = out_1[5];
+                out_1[5] = (_e261 * 1e-20);
+                float _e265 = out_1[6];
+                out_1[6] = (_e265 * 1e-20);
+                float _e269 = out_1[7];
+                out_1[7] = (_e269 * 1e-20);
             }
-            float _e278 = cur;
-            out_1[2] = _e278;
-            float _e279 = above;
+            float _e273 = cur;
+            out_1[2] = _e273;
+            float _e274 = above;
+            float _e275 = odd;
+            float _e277 = cur;
+            below = (_e274 + ((_e275 * inv_3) * _e277));
             float _e280 = odd;
-            float _e282 = cur;
-            below = (_e279 + ((_e280 * inv_3) * _e282));
-            float _e285 = odd;
-            odd = (_e285 - 2.0);
-            float _e288 = cur;
-            above = _e288;
-            float _e289 = below;
-            cur = _e289;
-            float _e290 = cur;
-            if ((_e290 > 1e20)) {
-                float _e293 = cur;
-                cur = (_e293 * 1e-20);
-                float _e296 = above;
-                above = (_e296 * 1e-20);
-                float _e300 = out_1[2];
-                out_1[2] = (_e300 * 1e-20);
-                float _e304 = out_1[3];
-                out_1[3] = (_e304 * 1e-20);
-                float _e308 = out_1[4];
-                out_1[4] = (_e308 * 1e-20);
-                float _e312 = out_1[5];
-                out_1[5] = (_e312 * 1e-20);
-                float _e316 = out_1[6];
-                out_1[6] = (_e316 * 1e-20);
-                float _e320 = out_1[7];
-                out_1[7] = (_e320 * 1e-20);
+            odd = (_e280 - 2.0);
+            float _e283 = cur;
+            above = _e283;
+            float _e284 = below;
+            cur = _e284;
+            float _e285 = cur;
+            if ((_e285 > 1e20)) {
+                float _e288 = cur;
+                cur = (_e288 * 1e-20);
+                float _e291 = above;
+                above = (_e291 * 1e-20);
+                float _e295 = out_1[2];
+                out_1[2] = (_e295 * 1e-20);
+                float _e299 = out_1[3];
+                out_1[3] = (_e299 * 1e-20);
+                float _e303 = out_1[4];
+                out_1[4] = (_e303 * 1e-20);
+                float _e307 = out_1[5];
+                out_1[5] = (_e307 * 1e-20);
+                float _e311 = out_1[6];
+                out_1[6] = (_e311 * 1e-20);
+                float _e315 = out_1[7];
+                out_1[7] = (_e315 * 1e-20);
             }
-            float _e324 = cur;
-            out_1[1] = _e324;
-            float _e325 = above;
+            float _e319 = cur;
+            out_1[1] = _e319;
+            float _e320 = above;
+            float _e321 = odd;
+            float _e323 = cur;
+            below = (_e320 + ((_e321 * inv_3) * _e323));
             float _e326 = odd;
-            float _e328 = cur;
-            below = (_e325 + ((_e326 * inv_3) * _e328));
-            float _e331 = odd;
-            odd = (_e331 - 2.0);
-            float _e334 = cur;
-            above = _e334;
-            float _e335 = below;
-            cur = _e335;
-            float _e336 = cur;
-            if ((_e336 > 1e20)) {
-                float _e339 = cur;
-                cur = (_e339 * 1e-20);
-                float _e342 = above;
-                above = (_e342 * 1e-20);
-                float _e346 = out_1[1];
-                out_1[1] = (_e346 * 1e-20);
-                float _e350 = out_1[2];
-                out_1[2] = (_e350 * 1e-20);
-                float _e354 = out_1[3];
-                out_1[3] = (_e354 * 1e-20);
-                float _e358 = out_1[4];
-                out_1[4] = (_e358 * 1e-20);
-                float _e362 = out_1[5];
-                out_1[5] = (_e362 * 1e-20);
-                float _e366 = out_1[6];
-                out_1[6] = (_e366 * 1e-20);
-                float _e370 = out_1[7];
-                out_1[7] = (_e370 * 1e-20);
+            odd = (_e326 - 2.0);
+            float _e329 = cur;
+            above = _e329;
+            float _e330 = below;
+            cur = _e330;
+            float _e331 = cur;
+            if ((_e331 > 1e20)) {
+                float _e334 = cur;
+                cur = (_e334 * 1e-20);
+                float _e337 = above;
+                above = (_e337 * 1e-20);
+                float _e341 = out_1[1];
+                out_1[1] = (_e341 * 1e-20);
+                float _e345 = out_1[2];
+                out_1[2] = (_e345 * 1e-20);
+                float _e349 = out_1[3];
+                out_1[3] = (_e349 * 1e-20);
+                float _e353 = out_1[4];
+                out_1[4] = (_e353 * 1e-20);
+                float _e357 = out_1[5];
+                out_1[5] = (_e357 * 1e-20);
+                float _e361 = out_1[6];
+                out_1[6] = (_e361 * 1e-20);
+                float _e365 = out_1[7];
+                out_1[7] = (_e365 * 1e-20);
             }
-            float _e374 = cur;
-            out_1[0] = _e374;
-            float _e375 = cur;
-            float norm = (i0_ / _e375);
-            float _e378 = out_1[0];
-            out_1[0] = (_e378 * norm);
-            float _e381 = out_1[1];
-            out_1[1] = (_e381 * norm);
-            float _e384 = out_1[2];
-            out_1[2] = (_e384 * norm);
-            float _e387 = out_1[3];
-            out_1[3] = (_e387 * norm);
-            float _e390 = out_1[4];
-            out_1[4] = (_e390 * norm);
-            float _e393 = out_1[5];
-            out_1[5] = (_e393 * norm);
-            float _e396 = out_1[6];
-            out_1[6] = (_e396 * norm);
-            float _e399 = out_1[7];
-            out_1[7] = (_e399 * norm);
+            float _e369 = cur;
+            out_1[0] = _e369;
+            float _e370 = cur;
+            float norm = (i0_ / _e370);
+            float _e373 = out_1[0];
+            out_1[0] = (_e373 * norm);
+            float _e376 = out_1[1];
+            out_1[1] = (_e376 * norm);
+            float _e379 = out_1[2];
+            out_1[2] = (_e379 * norm);
+            float _e382 = out_1[3];
+            out_1[3] = (_e382 * norm);
+            float _e385 = out_1[4];
+            out_1[4] = (_e385 * norm);
+            float _e388 = out_1[5];
+            out_1[5] = (_e388 * norm);
+            float _e391 = out_1[6];
+            out_1[6] = (_e391 * norm);
+            float _e394 = out_1[7];
+            out_1[7] = (_e394 * norm);
         } else {
             float e2_1 = exp(-((lambda + lambda)));
             out_1[0] = i0_;
             out_1[1] = ((((1.0 + e2_1) * 0.5) - i0_) / lambda);
-            float _e414 = out_1[0];
+            float _e409 = out_1[0];
+            float _e413 = out_1[1];
+            out_1[2] = (_e409 - ((3.0 / lambda) * _e413));
             float _e418 = out_1[1];
-            out_1[2] = (_e414 - ((3.0 / lambda) * _e418));
-            float _e423 = out_1[1];
+            float _e422 = out_1[2];
+            out_1[3] = (_e418 - ((5.0 / lambda) * _e422));
             float _e427 = out_1[2];
-            out_1[3] = (_e423 - ((5.0 / lambda) * _e427));
-            float _e432 = out_1[2];
+            float _e431 = out_1[3];
+            out_1[4] = (_e427 - ((7.0 / lambda) * _e431));
             float _e436 = out_1[3];
-            out_1[4] = (_e432 - ((7.0 / lambda) * _e436));
-            float _e441 = out_1[3];
+            float _e440 = out_1[4];
+            out_1[5] = (_e436 - ((9.0 / lambda) * _e440));
             float _e445 = out_1[4];
-            out_1[5] = (_e441 - ((9.0 / lambda) * _e445));
-            float _e450 = out_1[4];
+            float _e449 = out_1[5];
+            out_1[6] = (_e445 - ((11.0 / lambda) * _e449));
             float _e454 = out_1[5];
-            out_1[6] = (_e450 - ((11.0 / lambda) * _e454));
-            float _e459 = out_1[5];
-            float _e463 = out_1[6];
-            out_1[7] = (_e459 - ((13.0 / lambda) * _e463));
+            float _e458 = out_1[6];
+            out_1[7] = (_e454 - ((13.0 / lambda) * _e458));
         }
     }
-    float _e467 = out_1[0];
-    out_1[0] = (_e467 * 2.0);
-    float _e471 = out_1[1];
-    out_1[1] = (_e471 * -2.0);
-    float _e475 = out_1[2];
-    out_1[2] = (_e475 * 2.0);
-    float _e479 = out_1[3];
-    out_1[3] = (_e479 * -2.0);
-    float _e483 = out_1[4];
-    out_1[4] = (_e483 * 2.0);
-    float _e487 = out_1[5];
-    out_1[5] = (_e487 * -2.0);
-    float _e491 = out_1[6];
-    out_1[6] = (_e491 * 2.0);
-    float _e495 = out_1[7];
-    out_1[7] = (_e495 * -2.0);
-    float _e498[8] = out_1;
-    return _e498;
+    float _e462 = out_1[0];
+    out_1[0] = (_e462 * 2.0);
+    float _e466 = out_1[1];
+    out_1[1] = (_e466 * -2.0);
+    float _e470 = out_1[2];
+    out_1[2] = (_e470 * 2.0);
+    float _e474 = out_1[3];
+    out_1[3] = (_e474 * -2.0);
+    float _e478 = out_1[4];
+    out_1[4] = (_e478 * 2.0);
+    float _e482 = out_1[5];
+    out_1[5] = (_e482 * -2.0);
+    float _e486 = out_1[6];
+    out_1[6] = (_e486 * 2.0);
+    float _e490 = out_1[7];
+    out_1[7] = (_e490 * -2.0);
+    float _e493[8] = out_1;
+    return _e493;
 }
 
 float airlight_tail_estimate(float c_2[8]) {
@@ -1558,7 +1555,7 @@ AirlightPanel airlight_panel_result(float value, float error, float noise, float
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
+AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_7, float sigma_2, AirlightHalf half_4, float a_5, float b_4) {
     float r_1 = 0.0;
     float vc = 0.0;
     float samples[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1596,7 +1593,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_7, float s
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
             float v_6 = (_e37 + (_e38 * _e40));
-            vec2 _e46 = airlight_integrand_over(s_5, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
+            vec2 _e46 = airlight_integrand_over(s_4, g_7, (half_4.second ? -(sigma_2) : sigma_2), v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -1648,7 +1645,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_7, float s
     return _e138;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
+AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_8, float sigma_3, AirlightHalf half_5, float a_6, float b_5) {
     float samples_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1678,7 +1675,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             float _e27 = airlight_node(_e6, _e26);
             float y_6 = (yc_1 + (r_7 * _e27));
             float weight = exp(((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_6 * b_5)));
-            float _e39 = airlight_integrand(s_6, g_8, sigma_3, y_6);
+            float _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
             float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1764,7 +1761,7 @@ float[8] airlight_legendre_to_monomial(float c_4[8]) {
     return _e123;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_9, float sigma_4, AirlightHalf half_6, float a_7, float b_6) {
     float samples_2[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
@@ -1802,7 +1799,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_9, floa
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
             float y_7 = (yc_2 + (r_8 * _e23));
-            float _e26 = airlight_integrand(s_7, g_9, sigma_4, y_7);
+            float _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_7 * y_7)));
             float _e33 = f_max_3;
@@ -2087,7 +2084,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_9, floa
     return _e702;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
+AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_10, float sigma_5, AirlightHalf half_7, float a_8, float b_7) {
     bool local_11 = false;
     bool local_12 = false;
     if (half_7.second) {
@@ -2097,7 +2094,7 @@ AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_10, float si
     }
     bool _e13 = local_11;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -2107,14 +2104,14 @@ AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_10, float si
     }
     bool _e26 = local_12;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_11, float sigma_6, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float a_9 = 0.0;
@@ -2157,7 +2154,7 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_11, float 
         {
             float _e57 = a_9;
             float _e58 = b_8;
-            AirlightPanel _e59 = airlight_panel(s_9, g_11, sigma_6, half_8, _e57, _e58);
+            AirlightPanel _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
             float _e60 = f_max_4;
             f_max_4 = max(_e60, _e59.f_max);
             uint _e63 = slot;
@@ -2459,7 +2456,7 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_9, AirlightHalf half_9, f
     return true;
 }
 
-float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_10, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_9, AirlightCanonical g_14, float sigma_10, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = 0.0;
@@ -2476,13 +2473,13 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_10, 
     bool local_25 = false;
     bool local_26 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_10, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5)));
+        float _e11 = airlight_integrand(s_9, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5)));
         float _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_10.light_param_a;
-        k_out = s_10.light_param_b;
+    if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_9.light_param_a;
+        k_out = s_9.light_param_b;
         float _e29 = k_in;
         float _e30 = k_out;
         float width_1 = (_e29 - _e30);
@@ -2607,7 +2604,7 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_10, 
             float _e146 = hi_2;
             float _e147 = lo_2;
             if ((_e146 > _e147)) {
-                if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+                if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
                     float _e154 = dark_below;
                     float _e155 = lo_2;
                     float _e156 = hi_2;
@@ -2621,7 +2618,7 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_10, 
                     float _e161 = total_2;
                     float _e162 = lo_2;
                     float _e163 = hi_2;
-                    float _e164 = airlight_integrate_piece(s_10, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    float _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 float _e166 = hi_2;
@@ -2657,7 +2654,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_1, float x_7
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15) {
+float airlight_on_line(AirlightScene s_10, AirlightCanonical g_15) {
     bool local_27 = false;
     float span = 0.0;
     float e2_[10] = float[10](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -2669,38 +2666,38 @@ float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15) {
     }
     bool _e10 = local_27;
     if (_e10) {
-        float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
-        float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
+        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
+        float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
         float f_2 = (_e16 * _e22);
         float r0_ = (g_15.x_h - g_15.t_lo);
         float r1_1 = (g_15.x_h - g_15.t_hi);
-        float _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
+        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    float _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_15.d_el);
-    float _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1.0);
+    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
+    float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
     float f_3 = (_e46 * _e52);
     float s0_ = (g_15.t_lo - g_15.x_h);
     float s1_ = (g_15.t_hi - g_15.x_h);
-    if ((s_11.sigma_t == 0.0)) {
+    if ((s_10.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_15.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        float _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, 0.0, (f_3 * _e75));
+        float _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, 0.0, (f_3 * _e75));
         return _e77;
     }
-    float two_st = (s_11.sigma_t + s_11.sigma_t);
+    float two_st = (s_10.sigma_t + s_10.sigma_t);
     float _e82[10] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    float _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if (!(g_15.t_hi_infinite)) {
         float _e99[10] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        float _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        float _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     bool _e114 = airlight_is_finite(_e93);
@@ -2721,7 +2718,7 @@ float airlight_optical(float big_h, float dv_1, bool infinite) {
     return (_e9 ? 0.0 : big_h);
 }
 
-float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_h_1) {
+float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_16, float big_h_1) {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
@@ -2766,19 +2763,19 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_12, g_16, -1.0, _e9);
+    float _e54 = airlight_integrand(s_11, g_16, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_13);
     float j_5 = (_e54 * _e55);
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
-        if ((s_12.sigma_t > 0.0)) {
-            x_8 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+        if ((s_11.sigma_t > 0.0)) {
+            x_8 = (s_11.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_2, _e72, j_5);
+    float _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -2790,7 +2787,7 @@ float airlight_cut_length(float big_h_2, float v_s) {
     return (e_1 * inv_h);
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonical g_17) {
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonical g_17) {
     bool local_30 = false;
     bool local_31 = false;
     bool local_32 = false;
@@ -2834,7 +2831,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
     }
     bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_31 = ((s_13.sigma_s * s_13.intensity) == 0.0);
+        local_31 = ((s_12.sigma_s * s_12.intensity) == 0.0);
     } else {
         local_31 = true;
     }
@@ -2871,16 +2868,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
     }
     bool _e55 = local_34;
     if (_e55) {
-        float _e56 = airlight_on_line(s_13, g_17);
+        float _e56 = airlight_on_line(s_12, g_17);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
     }
     if ((h_3 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_5 = (s_13.sigma_t * h_3);
-    if (!((s_13.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_36 = (s_13.light_param_a == 0.0);
+    float big_h_5 = (s_12.sigma_t * h_3);
+    if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_36 = (s_12.light_param_a == 0.0);
         } else {
             local_36 = false;
         }
@@ -2891,15 +2888,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
     }
     bool _e85 = local_35;
     if (_e85) {
-        if (!((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             bool _e104 = local_39;
             if (_e104) {
-                local_40 = (s_13.phase_param_a == 0.0);
+                local_40 = (s_12.phase_param_a == 0.0);
             } else {
                 local_40 = false;
             }
@@ -2933,7 +2930,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
     }
     bool _e131 = local_42;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_13, g_17, big_h_5);
+        float _e132 = airlight_whole_line(s_12, g_17, big_h_5);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
@@ -2976,9 +2973,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
             }
         }
         AirlightHalf _e199 = half_11;
-        float _e200 = airlight_half(s_13, g_17, -1.0, _e199, isotropic_1, f_max_6);
+        float _e200 = airlight_half(s_12, g_17, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, (big_h_5 * _e158), _e200);
+        float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_17.t_hi_infinite)) {
@@ -3070,9 +3067,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonic
             }
         }
         AirlightHalf _e313 = half_12;
-        float _e314 = airlight_half(s_13, g_17, 1.0, _e313, isotropic_1, f_max_6);
+        float _e314 = airlight_half(s_12, g_17, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -3127,7 +3124,7 @@ vec3 airlight_normalize(vec3 v_3) {
     return (u_1 / vec3(length(u_1)));
 }
 
-bool airlight_valid(AirlightScene s_14) {
+bool airlight_valid(AirlightScene s_13) {
     bool local_56 = false;
     bool local_57 = false;
     bool local_58 = false;
@@ -3162,96 +3159,96 @@ bool airlight_valid(AirlightScene s_14) {
     bool local_86 = false;
     bool local_87 = false;
     bool local_88 = false;
-    bool _e2 = airlight_vec_finite(s_14.origin);
+    bool _e2 = airlight_vec_finite(s_13.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_14.dir);
+        bool _e6 = airlight_vec_finite(s_13.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     bool _e8 = local_56;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_14.dir);
+        bool _e12 = airlight_normalisable(s_13.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     bool _e14 = local_57;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_14.t_min);
+        bool _e18 = airlight_is_finite(s_13.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     bool _e20 = local_58;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_14.light_position);
+        bool _e24 = airlight_vec_finite(s_13.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     bool _e26 = local_59;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_14.intensity);
+        bool _e30 = airlight_is_finite(s_13.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     bool _e32 = local_60;
     if (_e32) {
-        local_61 = (s_14.intensity >= 0.0);
+        local_61 = (s_13.intensity >= 0.0);
     } else {
         local_61 = false;
     }
     bool _e39 = local_61;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_14.sigma_s);
+        bool _e43 = airlight_is_finite(s_13.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     bool _e45 = local_62;
     if (_e45) {
-        local_63 = (s_14.sigma_s >= 0.0);
+        local_63 = (s_13.sigma_s >= 0.0);
     } else {
         local_63 = false;
     }
     bool _e52 = local_63;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_14.sigma_t);
+        bool _e56 = airlight_is_finite(s_13.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     bool _e58 = local_64;
     if (_e58) {
-        local_65 = (s_14.sigma_t >= 0.0);
+        local_65 = (s_13.sigma_t >= 0.0);
     } else {
         local_65 = false;
     }
     bool _e65 = local_65;
     ok = _e65;
-    if (((s_14.flags & 1u) == 0u)) {
+    if (((s_13.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_14.t_max);
+            bool _e76 = airlight_is_finite(s_13.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         bool _e78 = local_66;
         if (_e78) {
-            local_67 = (s_14.t_min <= s_14.t_max);
+            local_67 = (s_13.t_min <= s_13.t_max);
         } else {
             local_67 = false;
         }
         bool _e85 = local_67;
         ok = _e85;
     }
-    if ((s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_14.light_end);
+            bool _e93 = airlight_vec_finite(s_13.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3259,39 +3256,39 @@ bool airlight_valid(AirlightScene s_14) {
         bool _e95 = local_68;
         ok = _e95;
     } else {
-        if ((s_14.light_shape != AIRLIGHT_SHAPE_POINT)) {
+        if ((s_13.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         bool _e103 = ok;
         if (_e103) {
-            bool _e107 = airlight_is_finite(s_14.brdf_albedo);
+            bool _e107 = airlight_is_finite(s_13.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         bool _e109 = local_69;
         if (_e109) {
-            local_70 = (s_14.brdf_albedo >= 0.0);
+            local_70 = (s_13.brdf_albedo >= 0.0);
         } else {
             local_70 = false;
         }
         bool _e116 = local_70;
         if (_e116) {
-            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         bool _e123 = local_71;
         if (_e123) {
-            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         bool _e130 = local_72;
         if (_e130) {
-            float _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
+            float _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
             bool _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3300,89 +3297,89 @@ bool airlight_valid(AirlightScene s_14) {
         bool _e139 = local_73;
         ok = _e139;
     } else {
-        if ((s_14.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_13.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e147 = ok;
         if (_e147) {
-            bool _e151 = airlight_vec_finite(s_14.light_axis);
+            bool _e151 = airlight_vec_finite(s_13.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         bool _e153 = local_74;
         if (_e153) {
-            bool _e157 = airlight_normalisable(s_14.light_axis);
+            bool _e157 = airlight_normalisable(s_13.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         bool _e159 = local_75;
         if (_e159) {
-            local_76 = (s_14.light_param_a >= 0.0);
+            local_76 = (s_13.light_param_a >= 0.0);
         } else {
             local_76 = false;
         }
         bool _e166 = local_76;
         if (_e166) {
-            local_77 = (s_14.light_param_a <= 1024.0);
+            local_77 = (s_13.light_param_a <= 1024.0);
         } else {
             local_77 = false;
         }
         bool _e173 = local_77;
         if (_e173) {
-            local_78 = (fract((s_14.light_param_a * 0.5)) == 0.0);
+            local_78 = (fract((s_13.light_param_a * 0.5)) == 0.0);
         } else {
             local_78 = false;
         }
         bool _e183 = local_78;
         ok = _e183;
     } else {
-        if ((s_14.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_13.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
-                bool _e191 = airlight_vec_finite(s_14.light_axis);
+                bool _e191 = airlight_vec_finite(s_13.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             bool _e193 = local_79;
             if (_e193) {
-                bool _e197 = airlight_normalisable(s_14.light_axis);
+                bool _e197 = airlight_normalisable(s_13.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             bool _e199 = local_80;
             if (_e199) {
-                local_81 = (s_14.light_param_b < s_14.light_param_a);
+                local_81 = (s_13.light_param_b < s_13.light_param_a);
             } else {
                 local_81 = false;
             }
             bool _e206 = local_81;
             if (_e206) {
-                local_82 = (s_14.light_param_b >= -1.0);
+                local_82 = (s_13.light_param_b >= -1.0);
             } else {
                 local_82 = false;
             }
             bool _e213 = local_82;
             if (_e213) {
-                local_83 = (s_14.light_param_a <= 1.0);
+                local_83 = (s_13.light_param_a <= 1.0);
             } else {
                 local_83 = false;
             }
             bool _e220 = local_83;
             ok = _e220;
         } else {
-            if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_14.phase_param_a) < 1.0);
-    switch(s_14.phase_kind) {
+    bool g_ok = (abs(s_13.phase_param_a) < 1.0);
+    switch(s_13.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -3409,19 +3406,19 @@ bool airlight_valid(AirlightScene s_14) {
             }
             bool _e239 = local_85;
             if (_e239) {
-                local_86 = (abs(s_14.phase_param_b) < 1.0);
+                local_86 = (abs(s_13.phase_param_b) < 1.0);
             } else {
                 local_86 = false;
             }
             bool _e247 = local_86;
             if (_e247) {
-                local_87 = (s_14.phase_param_c >= 0.0);
+                local_87 = (s_13.phase_param_c >= 0.0);
             } else {
                 local_87 = false;
             }
             bool _e254 = local_87;
             if (_e254) {
-                local_88 = (s_14.phase_param_c <= 1.0);
+                local_88 = (s_13.phase_param_c <= 1.0);
             } else {
                 local_88 = false;
             }
@@ -3438,15 +3435,15 @@ bool airlight_valid(AirlightScene s_14) {
     return _e263;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_15) {
+AirlightCanonical airlight_canonical(AirlightScene s_14) {
     vec3 a_11 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_15.dir);
-    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_15.light_axis);
+    vec3 _e2 = airlight_normalize(s_14.dir);
+    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_14.light_axis);
         a_11 = _e12;
     }
-    vec3 to_light = (s_15.light_position - s_15.origin);
+    vec3 to_light = (s_14.light_position - s_14.origin);
     float x_h_1 = dot(to_light, _e2);
     vec3 perp = ((x_h_1 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
@@ -3454,10 +3451,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_15) {
         vec3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_15.flags & 1u) != 0u);
+    bool infinite_3 = ((s_14.flags & 1u) != 0u);
     vec3 _e32 = a_11;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, (infinite_3 ? 0.0 : s_15.t_max), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, (infinite_3 ? 0.0 : s_14.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_9, uint key) {
@@ -3515,18 +3512,18 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_16, AirlightCanonical plain) {
+AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain) {
     bool local_91 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_92 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_16.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
+    uint key_4 = uint((s_15.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
     vec3 hi_3 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_3 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir_2 = s_16.dir;
+    vec3 dir_2 = s_15.dir;
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
@@ -3566,8 +3563,8 @@ AirlightCanonical airlight_refined(AirlightScene s_16, AirlightCanonical plain) 
     if (!(_e101)) {
         return plain;
     }
-    if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_16.light_axis);
+    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_15.light_axis);
         a_15 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir_2);
@@ -3725,12 +3722,12 @@ float airlight_asinh(float x_11) {
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_18, float s_17) {
+float airlight_to_w(AirlightOuter g_18, float s_16) {
     if ((g_18.scale > 0.0)) {
-        float _e9 = airlight_asinh(((s_17 - g_18.s_star) / g_18.scale));
+        float _e9 = airlight_asinh(((s_16 - g_18.s_star) / g_18.scale));
         return _e9;
     }
-    return s_17;
+    return s_16;
 }
 
 vec2 airlight_cos_sin_half_turn(float x_12) {
@@ -3747,20 +3744,20 @@ float airlight_acos(float x_13) {
     return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_18) {
-    if ((s_18 <= c_6)) {
-        float _e4 = airlight_atan((s_18 / c_6));
+float airlight_angle(float c_6, float s_17) {
+    if ((s_17 <= c_6)) {
+        float _e4 = airlight_atan((s_17 / c_6));
         return _e4;
     }
-    if ((s_18 <= -(c_6))) {
-        float _e10 = airlight_atan((s_18 / -(c_6)));
+    if ((s_17 <= -(c_6))) {
+        float _e10 = airlight_atan((s_17 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if ((c_6 >= 0.0)) {
-        float _e16 = airlight_atan((c_6 / s_18));
+        float _e16 = airlight_atan((c_6 / s_17));
         return (1.5707964 - _e16);
     }
-    float _e21 = airlight_atan((-(c_6) / s_18));
+    float _e21 = airlight_atan((-(c_6) / s_17));
     return (1.5707964 + _e21);
 }
 
@@ -3774,11 +3771,11 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
     return _e18;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_19, uint max_panels) {
-    return AirlightOuter(s_19.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+AirlightOuter airlight_outer_point(AirlightScene s_18, uint max_panels) {
+    return AirlightOuter(s_18.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
 }
 
-AirlightOuter airlight_surface(AirlightScene s_20) {
+AirlightOuter airlight_surface(AirlightScene s_19) {
     AirlightOuter g_19 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_93 = false;
     vec3 u = vec3(0.0);
@@ -3787,12 +3784,12 @@ AirlightOuter airlight_surface(AirlightScene s_20) {
     uint i_17 = 0u;
     bool local_94 = false;
     uint i_18 = 0u;
-    AirlightOuter _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
+    AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
     g_19 = _e2;
-    vec3 to_light_1 = (s_20.light_position - s_20.origin);
+    vec3 to_light_1 = (s_19.light_position - s_19.origin);
     float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_20.intensity == 0.0))) {
-        local_93 = (s_20.sigma_s == 0.0);
+    if (!((s_19.intensity == 0.0))) {
+        local_93 = (s_19.sigma_s == 0.0);
     } else {
         local_93 = true;
     }
@@ -3807,13 +3804,13 @@ AirlightOuter airlight_surface(AirlightScene s_20) {
         AirlightOuter _e27 = g_19;
         return _e27;
     }
-    if ((s_20.brdf_albedo == 0.0)) {
+    if ((s_19.brdf_albedo == 0.0)) {
         g_19.outcome = 1u;
         AirlightOuter _e33 = g_19;
         return _e33;
     }
     vec3 l_3 = (to_light_1 / vec3(_e7));
-    vec3 _e37 = airlight_normalize(s_20.dir);
+    vec3 _e37 = airlight_normalize(s_19.dir);
     float cos_a_1 = dot(_e37, l_3);
     vec3 across = (_e37 - (cos_a_1 * l_3));
     float _e41 = airlight_safe_length(across);
@@ -3901,7 +3898,7 @@ AirlightOuter airlight_surface(AirlightScene s_20) {
     return _e149;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_21) {
+AirlightOuter airlight_outer(AirlightScene s_20) {
     AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_95 = false;
     bool local_96 = false;
@@ -3928,26 +3925,26 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     uint n_1 = 0u;
     uint i_20 = 0u;
     bool local_111 = false;
-    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        AirlightOuter _e4 = airlight_surface(s_21);
+    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        AirlightOuter _e4 = airlight_surface(s_20);
         return _e4;
     }
-    AirlightOuter _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
+    AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
     g_20 = _e6;
-    if ((s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
         AirlightOuter _e11 = g_20;
         return _e11;
     }
-    vec3 ab_1 = (s_21.light_end - s_21.light_position);
+    vec3 ab_1 = (s_20.light_end - s_20.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = (s_21.intensity == 0.0);
+        local_95 = (s_20.intensity == 0.0);
     } else {
         local_95 = true;
     }
     bool _e26 = local_95;
     if (!(_e26)) {
-        local_96 = (s_21.sigma_s == 0.0);
+        local_96 = (s_20.sigma_s == 0.0);
     } else {
         local_96 = true;
     }
@@ -3958,13 +3955,13 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
         return _e37;
     }
     vec3 e_4 = (ab_1 / vec3(_e15));
-    vec3 _e41 = airlight_normalize(s_21.dir);
-    vec3 w0_ = (s_21.light_position - s_21.origin);
+    vec3 _e41 = airlight_normalize(s_20.dir);
+    vec3 w0_ = (s_20.light_position - s_20.origin);
     float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_21.flags & 1u) != 0u);
+    bool infinite_4 = ((s_20.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -3996,7 +3993,7 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = (s_21.t_min <= _e101);
+        local_100 = (s_20.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4004,7 +4001,7 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = (_e110 <= s_21.t_max);
+            local_102 = (_e110 <= s_20.t_max);
         } else {
             local_102 = true;
         }
@@ -4072,7 +4069,7 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     float _e172 = scale;
     g_20.scale = _e172;
     float _e178 = s_star;
-    at = float[3](_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
+    at = float[3](_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
@@ -4198,14 +4195,14 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_21, float x_14) {
+AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_21, float x_14) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
-    p = s_22;
+    p = s_21;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_21.panels - 1u));
         float t_6 = (x_14 - float(i_21));
         float a_24 = g_21.gamma[i_21];
@@ -4229,9 +4226,9 @@ AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_21, float x
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
-    if ((s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_14;
         if ((g_21.scale > 0.0)) {
             at_1 = (g_21.s_star + (g_21.scale * sinh(x_14)));
@@ -4247,7 +4244,7 @@ AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_21, float x
     return AirlightNode(_e122, 1.0);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_23) {
+AirlightResult airlight_in_scatter(AirlightScene s_22) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -4271,11 +4268,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
     bool local_116 = false;
     bool local_117 = false;
     bool local_118 = false;
-    bool _e1 = airlight_valid(s_23);
+    bool _e1 = airlight_valid(s_22);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e6 = airlight_outer(s_23);
+    AirlightOuter _e6 = airlight_outer(s_22);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -4332,7 +4329,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
                     }
                     bool _e100 = local_112;
                     float w_5 = (_e100 ? (c_13 - (hw_1 * node.x)) : (c_13 + (hw_1 * node.x)));
-                    AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_5);
+                    AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -4363,8 +4360,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
-                        if ((s_23.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_22.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }

@@ -365,8 +365,8 @@ float airlight_log1p(
     if (x_2 > 1.0) {
         return metal::log(1.0 + x_2);
     }
-    float s_23 = x_2 / (2.0 + x_2);
-    float s2_ = s_23 * s_23;
+    float s_22 = x_2 / (2.0 + x_2);
+    float s2_ = s_22 * s_22;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -389,7 +389,7 @@ float airlight_log1p(
         }
     }
     float _e35 = sum;
-    return (2.0 * s_23) * _e35;
+    return (2.0 * s_22) * _e35;
 }
 
 bool airlight_is_finite(
@@ -1265,7 +1265,6 @@ airlight_type_2 airlight_exp_legendre_moments(
     airlight_type_2 out_1 = {};
     float share = {};
     uint steps = 1u;
-    uint s_3 = 1u;
     float above = 0.0;
     float cur = 0.00000000000000000001;
     float below = 0.0;
@@ -1301,28 +1300,26 @@ airlight_type_2 airlight_exp_legendre_moments(
                 if (metal::all(loop_bound_10 == uint2(0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e58 = s_3;
-                    s_3 = _e58 + 1u;
+                    uint _e53 = steps;
+                    steps = _e53 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e45 = s_3;
-                if (_e45 < 28u) {
+                uint _e43 = steps;
+                if (_e43 < 28u) {
                 } else {
                     break;
                 }
                 {
-                    float _e48 = share;
-                    if (!((_e48 > AIRLIGHT_FLT_EPS))) {
+                    float _e46 = share;
+                    if (!((_e46 > AIRLIGHT_FLT_EPS))) {
                         break;
                     }
-                    float _e52 = share;
-                    share = _e52 * per_step;
-                    uint _e54 = steps;
-                    steps = _e54 + 1u;
+                    float _e50 = share;
+                    share = _e50 * per_step;
                 }
             }
-            uint _e60 = steps;
-            uint top = (k0_ + _e60) + 2u;
+            uint _e55 = steps;
+            uint top = (k0_ + _e55) + 2u;
             odd = static_cast<float>((2u * top) + 1u);
             uint2 loop_bound_11 = uint2(4294967295u);
             bool loop_init_11 = true;
@@ -1330,470 +1327,470 @@ airlight_type_2 airlight_exp_legendre_moments(
                 if (metal::all(loop_bound_11 == uint2(0u))) { break; }
                 loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
                 if (!loop_init_11) {
-                    uint _e105 = i_5;
-                    i_5 = _e105 + 1u;
+                    uint _e100 = i_5;
+                    i_5 = _e100 + 1u;
                 }
                 loop_init_11 = false;
-                uint _e78 = i_5;
-                if (_e78 < 54u) {
+                uint _e73 = i_5;
+                if (_e73 < 54u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e81 = i_5;
-                    if ((_e81 + AIRLIGHT_TERMS) > top) {
+                    uint _e76 = i_5;
+                    if ((_e76 + AIRLIGHT_TERMS) > top) {
                         break;
                     }
-                    float _e84 = above;
+                    float _e79 = above;
+                    float _e80 = odd;
+                    float _e82 = cur;
+                    below = _e79 + ((_e80 * inv_3) * _e82);
                     float _e85 = odd;
-                    float _e87 = cur;
-                    below = _e84 + ((_e85 * inv_3) * _e87);
-                    float _e90 = odd;
-                    odd = _e90 - 2.0;
-                    float _e93 = cur;
-                    above = _e93;
-                    float _e94 = below;
-                    cur = _e94;
-                    float _e95 = cur;
-                    if (_e95 > 100000000000000000000.0) {
-                        float _e98 = cur;
-                        cur = _e98 * 0.00000000000000000001;
-                        float _e101 = above;
-                        above = _e101 * 0.00000000000000000001;
+                    odd = _e85 - 2.0;
+                    float _e88 = cur;
+                    above = _e88;
+                    float _e89 = below;
+                    cur = _e89;
+                    float _e90 = cur;
+                    if (_e90 > 100000000000000000000.0) {
+                        float _e93 = cur;
+                        cur = _e93 * 0.00000000000000000001;
+                        float _e96 = above;
+                        above = _e96 * 0.00000000000000000001;
                     }
                 }
             }
-            float _e108 = cur;
-            out_1.inner[11] = _e108;
-            float _e109 = above;
+            float _e103 = cur;
+            out_1.inner[11] = _e103;
+            float _e104 = above;
+            float _e105 = odd;
+            float _e107 = cur;
+            below = _e104 + ((_e105 * inv_3) * _e107);
             float _e110 = odd;
-            float _e112 = cur;
-            below = _e109 + ((_e110 * inv_3) * _e112);
-            float _e115 = odd;
-            odd = _e115 - 2.0;
-            float _e118 = cur;
-            above = _e118;
-            float _e119 = below;
-            cur = _e119;
-            float _e120 = cur;
-            if (_e120 > 100000000000000000000.0) {
-                float _e123 = cur;
-                cur = _e123 * 0.00000000000000000001;
-                float _e126 = above;
-                above = _e126 * 0.00000000000000000001;
-                float _e130 = out_1.inner[11];
-                out_1.inner[11] = _e130 * 0.00000000000000000001;
+            odd = _e110 - 2.0;
+            float _e113 = cur;
+            above = _e113;
+            float _e114 = below;
+            cur = _e114;
+            float _e115 = cur;
+            if (_e115 > 100000000000000000000.0) {
+                float _e118 = cur;
+                cur = _e118 * 0.00000000000000000001;
+                float _e121 = above;
+                above = _e121 * 0.00000000000000000001;
+                float _e125 = out_1.inner[11];
+                out_1.inner[11] = _e125 * 0.00000000000000000001;
             }
-            float _e134 = cur;
-            out_1.inner[10] = _e134;
-            float _e135 = above;
+            float _e129 = cur;
+            out_1.inner[10] = _e129;
+            float _e130 = above;
+            float _e131 = odd;
+            float _e133 = cur;
+            below = _e130 + ((_e131 * inv_3) * _e133);
             float _e136 = odd;
-            float _e138 = cur;
-            below = _e135 + ((_e136 * inv_3) * _e138);
-            float _e141 = odd;
-            odd = _e141 - 2.0;
-            float _e144 = cur;
-            above = _e144;
-            float _e145 = below;
-            cur = _e145;
-            float _e146 = cur;
-            if (_e146 > 100000000000000000000.0) {
-                float _e149 = cur;
-                cur = _e149 * 0.00000000000000000001;
-                float _e152 = above;
-                above = _e152 * 0.00000000000000000001;
-                float _e156 = out_1.inner[10];
-                out_1.inner[10] = _e156 * 0.00000000000000000001;
-                float _e160 = out_1.inner[11];
-                out_1.inner[11] = _e160 * 0.00000000000000000001;
+            odd = _e136 - 2.0;
+            float _e139 = cur;
+            above = _e139;
+            float _e140 = below;
+            cur = _e140;
+            float _e141 = cur;
+            if (_e141 > 100000000000000000000.0) {
+                float _e144 = cur;
+                cur = _e144 * 0.00000000000000000001;
+                float _e147 = above;
+                above = _e147 * 0.00000000000000000001;
+                float _e151 = out_1.inner[10];
+                out_1.inner[10] = _e151 * 0.00000000000000000001;
+                float _e155 = out_1.inner[11];
+                out_1.inner[11] = _e155 * 0.00000000000000000001;
             }
-            float _e164 = cur;
-            out_1.inner[9] = _e164;
-            float _e165 = above;
+            float _e159 = cur;
+            out_1.inner[9] = _e159;
+            float _e160 = above;
+            float _e161 = odd;
+            float _e163 = cur;
+            below = _e160 + ((_e161 * inv_3) * _e163);
             float _e166 = odd;
-            float _e168 = cur;
-            below = _e165 + ((_e166 * inv_3) * _e168);
-            float _e171 = odd;
-            odd = _e171 - 2.0;
-            float _e174 = cur;
-            above = _e174;
-            float _e175 = below;
-            cur = _e175;
-            float _e176 = cur;
-            if (_e176 > 100000000000000000000.0) {
-                float _e179 = cur;
-                cur = _e179 * 0.00000000000000000001;
-                float _e182 = above;
-                above = _e182 * 0.00000000000000000001;
-                float _e186 = out_1.inner[9];
-                out_1.inner[9] = _e186 * 0.00000000000000000001;
-                float _e190 = out_1.inner[10];
-                out_1.inner[10] = _e190 * 0.00000000000000000001;
-                float _e194 = out_1.inner[11];
-                out_1.inner[11] = _e194 * 0.00000000000000000001;
+            odd = _e166 - 2.0;
+            float _e169 = cur;
+            above = _e169;
+            float _e170 = below;
+            cur = _e170;
+            float _e171 = cur;
+            if (_e171 > 100000000000000000000.0) {
+                float _e174 = cur;
+                cur = _e174 * 0.00000000000000000001;
+                float _e177 = above;
+                above = _e177 * 0.00000000000000000001;
+                float _e181 = out_1.inner[9];
+                out_1.inner[9] = _e181 * 0.00000000000000000001;
+                float _e185 = out_1.inner[10];
+                out_1.inner[10] = _e185 * 0.00000000000000000001;
+                float _e189 = out_1.inner[11];
+                out_1.inner[11] = _e189 * 0.00000000000000000001;
             }
-            float _e198 = cur;
-            out_1.inner[8] = _e198;
-            float _e199 = above;
+            float _e193 = cur;
+            out_1.inner[8] = _e193;
+            float _e194 = above;
+            float _e195 = odd;
+            float _e197 = cur;
+            below = _e194 + ((_e195 * inv_3) * _e197);
             float _e200 = odd;
-            float _e202 = cur;
-            below = _e199 + ((_e200 * inv_3) * _e202);
-            float _e205 = odd;
-            odd = _e205 - 2.0;
-            float _e208 = cur;
-            above = _e208;
-            float _e209 = below;
-            cur = _e209;
-            float _e210 = cur;
-            if (_e210 > 100000000000000000000.0) {
-                float _e213 = cur;
-                cur = _e213 * 0.00000000000000000001;
-                float _e216 = above;
-                above = _e216 * 0.00000000000000000001;
-                float _e220 = out_1.inner[8];
-                out_1.inner[8] = _e220 * 0.00000000000000000001;
-                float _e224 = out_1.inner[9];
-                out_1.inner[9] = _e224 * 0.00000000000000000001;
-                float _e228 = out_1.inner[10];
-                out_1.inner[10] = _e228 * 0.00000000000000000001;
-                float _e232 = out_1.inner[11];
-                out_1.inner[11] = _e232 * 0.00000000000000000001;
+            odd = _e200 - 2.0;
+            float _e203 = cur;
+            above = _e203;
+            float _e204 = below;
+            cur = _e204;
+            float _e205 = cur;
+            if (_e205 > 100000000000000000000.0) {
+                float _e208 = cur;
+                cur = _e208 * 0.00000000000000000001;
+                float _e211 = above;
+                above = _e211 * 0.00000000000000000001;
+                float _e215 = out_1.inner[8];
+                out_1.inner[8] = _e215 * 0.00000000000000000001;
+                float _e219 = out_1.inner[9];
+                out_1.inner[9] = _e219 * 0.00000000000000000001;
+                float _e223 = out_1.inner[10];
+                out_1.inner[10] = _e223 * 0.00000000000000000001;
+                float _e227 = out_1.inner[11];
+                out_1.inner[11] = _e227 * 0.00000000000000000001;
             }
-            float _e236 = cur;
-            out_1.inner[7] = _e236;
-            float _e237 = above;
+            float _e231 = cur;
+            out_1.inner[7] = _e231;
+            float _e232 = above;
+            float _e233 = odd;
+            float _e235 = cur;
+            below = _e232 + ((_e233 * inv_3) * _e235);
             float _e238 = odd;
-            float _e240 = cur;
-            below = _e237 + ((_e238 * inv_3) * _e240);
-            float _e243 = odd;
-            odd = _e243 - 2.0;
-            float _e246 = cur;
-            above = _e246;
-            float _e247 = below;
-            cur = _e247;
-            float _e248 = cur;
-            if (_e248 > 100000000000000000000.0) {
-                float _e251 = cur;
-                cur = _e251 * 0.00000000000000000001;
-                float _e254 = above;
-                above = _e254 * 0.00000000000000000001;
-                float _e258 = out_1.inner[7];
-                out_1.inner[7] = _e258 * 0.00000000000000000001;
-                float _e262 = out_1.inner[8];
-                out_1.inner[8] = _e262 * 0.00000000000000000001;
-                float _e266 = out_1.inner[9];
-                out_1.inner[9] = _e266 * 0.00000000000000000001;
-                float _e270 = out_1.inner[10];
-                out_1.inner[10] = _e270 * 0.00000000000000000001;
-                float _e274 = out_1.inner[11];
-                out_1.inner[11] = _e274 * 0.00000000000000000001;
+            odd = _e238 - 2.0;
+            float _e241 = cur;
+            above = _e241;
+            float _e242 = below;
+            cur = _e242;
+            float _e243 = cur;
+            if (_e243 > 100000000000000000000.0) {
+                float _e246 = cur;
+                cur = _e246 * 0.00000000000000000001;
+                float _e249 = above;
+                above = _e249 * 0.00000000000000000001;
+                float _e253 = out_1.inner[7];
+                out_1.inner[7] = _e253 * 0.00000000000000000001;
+                float _e257 = out_1.inner[8];
+                out_1.inner[8] = _e257 * 0.00000000000000000001;
+                float _e261 = out_1.inner[9];
+                out_1.inner[9] = _e261 * 0.00000000000000000001;
+                float _e265 = out_1.inner[10];
+                out_1.inner[10] = _e265 * 0.00000000000000000001;
+                float _e269 = out_1.inner[11];
+                out_1.inner[11] = _e269 * 0.00000000000000000001;
             }
-            float _e278 = cur;
-            out_1.inner[6] = _e278;
-            float _e279 = above;
+            float _e273 = cur;
+            out_1.inner[6] = _e273;
+            float _e274 = above;
+            float _e275 = odd;
+            float _e277 = cur;
+            below = _e274 + ((_e275 * inv_3) * _e277);
             float _e280 = odd;
-            float _e282 = cur;
-            below = _e279 + ((_e280 * inv_3) * _e282);
-            float _e285 = odd;
-            odd = _e285 - 2.0;
-            float _e288 = cur;
-            above = _e288;
-            float _e289 = below;
-            cur = _e289;
-            float _e290 = cur;
-            if (_e290 > 100000000000000000000.0) {
-                float _e293 = cur;
-                cur = _e293 * 0.00000000000000000001;
-                float _e296 = above;
-                above = _e296 * 0.00000000000000000001;
-                float _e300 = out_1.inner[6];
-                out_1.inner[6] = _e300 * 0.00000000000000000001;
-                float _e304 = out_1.inner[7];
-                out_1.inner[7] = _e304 * 0.00000000000000000001;
-                float _e308 = out_1.inner[8];
-                out_1.inner[8] = _e308 * 0.00000000000000000001;
-                float _e312 = out_1.inner[9];
-                out_1.inner[9] = _e312 * 0.00000000000000000001;
-                float _e316 = out_1.inner[10];
-                out_1.inner[10] = _e316 * 0.00000000000000000001;
-                float _e320 = out_1.inner[11];
-                out_1.inner[11] = _e320 * 0.00000000000000000001;
+            odd = _e280 - 2.0;
+            float _e283 = cur;
+            above = _e283;
+            float _e284 = below;
+            cur = _e284;
+            float _e285 = cur;
+            if (_e285 > 100000000000000000000.0) {
+                float _e288 = cur;
+                cur = _e288 * 0.00000000000000000001;
+                float _e291 = above;
+                above = _e291 * 0.00000000000000000001;
+                float _e295 = out_1.inner[6];
+                out_1.inner[6] = _e295 * 0.00000000000000000001;
+                float _e299 = out_1.inner[7];
+                out_1.inner[7] = _e299 * 0.00000000000000000001;
+                float _e303 = out_1.inner[8];
+                out_1.inner[8] = _e303 * 0.00000000000000000001;
+                float _e307 = out_1.inner[9];
+                out_1.inner[9] = _e307 * 0.00000000000000000001;
+                float _e311 = out_1.inner[10];
+                out_1.inner[10] = _e311 * 0.00000000000000000001;
+                float _e315 = out_1.inner[11];
+                out_1.inner[11] = _e315 * 0.00000000000000000001;
             }
-            float _e324 = cur;
-            out_1.inner[5] = _e324;
-            float _e325 = above;
+            float _e319 = cur;
+            out_1.inner[5] = _e319;
+            float _e320 = above;
+            float _e321 = odd;
+            float _e323 = cur;
+            below = _e320 + ((_e321 * inv_3) * _e323);
             float _e326 = odd;
-            float _e328 = cur;
-            below = _e325 + ((_e326 * inv_3) * _e328);
-            float _e331 = odd;
-            odd = _e331 - 2.0;
-            float _e334 = cur;
-            above = _e334;
-            float _e335 = below;
-            cur = _e335;
-            float _e336 = cur;
-            if (_e336 > 100000000000000000000.0) {
-                float _e339 = cur;
-                cur = _e339 * 0.00000000000000000001;
-                float _e342 = above;
-                above = _e342 * 0.00000000000000000001;
-                float _e346 = out_1.inner[5];
-                out_1.inner[5] = _e346 * 0.00000000000000000001;
-                float _e350 = out_1.inner[6];
-                out_1.inner[6] = _e350 * 0.00000000000000000001;
-                float _e354 = out_1.inner[7];
-                out_1.inner[7] = _e354 * 0.00000000000000000001;
-                float _e358 = out_1.inner[8];
-                out_1.inner[8] = _e358 * 0.00000000000000000001;
-                float _e362 = out_1.inner[9];
-                out_1.inner[9] = _e362 * 0.00000000000000000001;
-                float _e366 = out_1.inner[10];
-                out_1.inner[10] = _e366 * 0.00000000000000000001;
-                float _e370 = out_1.inner[11];
-                out_1.inner[11] = _e370 * 0.00000000000000000001;
+            odd = _e326 - 2.0;
+            float _e329 = cur;
+            above = _e329;
+            float _e330 = below;
+            cur = _e330;
+            float _e331 = cur;
+            if (_e331 > 100000000000000000000.0) {
+                float _e334 = cur;
+                cur = _e334 * 0.00000000000000000001;
+                float _e337 = above;
+                above = _e337 * 0.00000000000000000001;
+                float _e341 = out_1.inner[5];
+                out_1.inner[5] = _e341 * 0.00000000000000000001;
+                float _e345 = out_1.inner[6];
+                out_1.inner[6] = _e345 * 0.00000000000000000001;
+                float _e349 = out_1.inner[7];
+                out_1.inner[7] = _e349 * 0.00000000000000000001;
+                float _e353 = out_1.inner[8];
+                out_1.inner[8] = _e353 * 0.00000000000000000001;
+                float _e357 = out_1.inner[9];
+                out_1.inner[9] = _e357 * 0.00000000000000000001;
+                float _e361 = out_1.inner[10];
+                out_1.inner[10] = _e361 * 0.00000000000000000001;
+                float _e365 = out_1.inner[11];
+                out_1.inner[11] = _e365 * 0.00000000000000000001;
             }
-            float _e374 = cur;
-            out_1.inner[4] = _e374;
-            float _e375 = above;
+            float _e369 = cur;
+            out_1.inner[4] = _e369;
+            float _e370 = above;
+            float _e371 = odd;
+            float _e373 = cur;
+            below = _e370 + ((_e371 * inv_3) * _e373);
             float _e376 = odd;
-            float _e378 = cur;
-            below = _e375 + ((_e376 * inv_3) * _e378);
-            float _e381 = odd;
-            odd = _e381 - 2.0;
-            float _e384 = cur;
-            above = _e384;
-            float _e385 = below;
-            cur = _e385;
-            float _e386 = cur;
-            if (_e386 > 100000000000000000000.0) {
-                float _e389 = cur;
-                cur = _e389 * 0.00000000000000000001;
-                float _e392 = above;
-                above = _e392 * 0.00000000000000000001;
-                float _e396 = out_1.inner[4];
-                out_1.inner[4] = _e396 * 0.00000000000000000001;
-                float _e400 = out_1.inner[5];
-                out_1.inner[5] = _e400 * 0.00000000000000000001;
-                float _e404 = out_1.inner[6];
-                out_1.inner[6] = _e404 * 0.00000000000000000001;
-                float _e408 = out_1.inner[7];
-                out_1.inner[7] = _e408 * 0.00000000000000000001;
-                float _e412 = out_1.inner[8];
-                out_1.inner[8] = _e412 * 0.00000000000000000001;
-                float _e416 = out_1.inner[9];
-                out_1.inner[9] = _e416 * 0.00000000000000000001;
-                float _e420 = out_1.inner[10];
-                out_1.inner[10] = _e420 * 0.00000000000000000001;
-                float _e424 = out_1.inner[11];
-                out_1.inner[11] = _e424 * 0.00000000000000000001;
+            odd = _e376 - 2.0;
+            float _e379 = cur;
+            above = _e379;
+            float _e380 = below;
+            cur = _e380;
+            float _e381 = cur;
+            if (_e381 > 100000000000000000000.0) {
+                float _e384 = cur;
+                cur = _e384 * 0.00000000000000000001;
+                float _e387 = above;
+                above = _e387 * 0.00000000000000000001;
+                float _e391 = out_1.inner[4];
+                out_1.inner[4] = _e391 * 0.00000000000000000001;
+                float _e395 = out_1.inner[5];
+                out_1.inner[5] = _e395 * 0.00000000000000000001;
+                float _e399 = out_1.inner[6];
+                out_1.inner[6] = _e399 * 0.00000000000000000001;
+                float _e403 = out_1.inner[7];
+                out_1.inner[7] = _e403 * 0.00000000000000000001;
+                float _e407 = out_1.inner[8];
+                out_1.inner[8] = _e407 * 0.00000000000000000001;
+                float _e411 = out_1.inner[9];
+                out_1.inner[9] = _e411 * 0.00000000000000000001;
+                float _e415 = out_1.inner[10];
+                out_1.inner[10] = _e415 * 0.00000000000000000001;
+                float _e419 = out_1.inner[11];
+                out_1.inner[11] = _e419 * 0.00000000000000000001;
             }
-            float _e428 = cur;
-            out_1.inner[3] = _e428;
-            float _e429 = above;
+            float _e423 = cur;
+            out_1.inner[3] = _e423;
+            float _e424 = above;
+            float _e425 = odd;
+            float _e427 = cur;
+            below = _e424 + ((_e425 * inv_3) * _e427);
             float _e430 = odd;
-            float _e432 = cur;
-            below = _e429 + ((_e430 * inv_3) * _e432);
-            float _e435 = odd;
-            odd = _e435 - 2.0;
-            float _e438 = cur;
-            above = _e438;
-            float _e439 = below;
-            cur = _e439;
-            float _e440 = cur;
-            if (_e440 > 100000000000000000000.0) {
-                float _e443 = cur;
-                cur = _e443 * 0.00000000000000000001;
-                float _e446 = above;
-                above = _e446 * 0.00000000000000000001;
-                float _e450 = out_1.inner[3];
-                out_1.inner[3] = _e450 * 0.00000000000000000001;
-                float _e454 = out_1.inner[4];
-                out_1.inner[4] = _e454 * 0.00000000000000000001;
-                float _e458 = out_1.inner[5];
-                out_1.inner[5] = _e458 * 0.00000000000000000001;
-                float _e462 = out_1.inner[6];
-                out_1.inner[6] = _e462 * 0.00000000000000000001;
-                float _e466 = out_1.inner[7];
-                out_1.inner[7] = _e466 * 0.00000000000000000001;
-                float _e470 = out_1.inner[8];
-                out_1.inner[8] = _e470 * 0.00000000000000000001;
-                float _e474 = out_1.inner[9];
-                out_1.inner[9] = _e474 * 0.00000000000000000001;
-                float _e478 = out_1.inner[10];
-                out_1.inner[10] = _e478 * 0.00000000000000000001;
-                float _e482 = out_1.inner[11];
-                out_1.inner[11] = _e482 * 0.00000000000000000001;
+            odd = _e430 - 2.0;
+            float _e433 = cur;
+            above = _e433;
+            float _e434 = below;
+            cur = _e434;
+            float _e435 = cur;
+            if (_e435 > 100000000000000000000.0) {
+                float _e438 = cur;
+                cur = _e438 * 0.00000000000000000001;
+                float _e441 = above;
+                above = _e441 * 0.00000000000000000001;
+                float _e445 = out_1.inner[3];
+                out_1.inner[3] = _e445 * 0.00000000000000000001;
+                float _e449 = out_1.inner[4];
+                out_1.inner[4] = _e449 * 0.00000000000000000001;
+                float _e453 = out_1.inner[5];
+                out_1.inner[5] = _e453 * 0.00000000000000000001;
+                float _e457 = out_1.inner[6];
+                out_1.inner[6] = _e457 * 0.00000000000000000001;
+                float _e461 = out_1.inner[7];
+                out_1.inner[7] = _e461 * 0.00000000000000000001;
+                float _e465 = out_1.inner[8];
+                out_1.inner[8] = _e465 * 0.00000000000000000001;
+                float _e469 = out_1.inner[9];
+                out_1.inner[9] = _e469 * 0.00000000000000000001;
+                float _e473 = out_1.inner[10];
+                out_1.inner[10] = _e473 * 0.00000000000000000001;
+                float _e477 = out_1.inner[11];
+                out_1.inner[11] = _e477 * 0.00000000000000000001;
             }
-            float _e486 = cur;
-            out_1.inner[2] = _e486;
-            float _e487 = above;
+            float _e481 = cur;
+            out_1.inner[2] = _e481;
+            float _e482 = above;
+            float _e483 = odd;
+            float _e485 = cur;
+            below = _e482 + ((_e483 * inv_3) * _e485);
             float _e488 = odd;
-            float _e490 = cur;
-            below = _e487 + ((_e488 * inv_3) * _e490);
-            float _e493 = odd;
-            odd = _e493 - 2.0;
-            float _e496 = cur;
-            above = _e496;
-            float _e497 = below;
-            cur = _e497;
-            float _e498 = cur;
-            if (_e498 > 100000000000000000000.0) {
-                float _e501 = cur;
-                cur = _e501 * 0.00000000000000000001;
-                float _e504 = above;
-                above = _e504 * 0.00000000000000000001;
-                float _e508 = out_1.inner[2];
-                out_1.inner[2] = _e508 * 0.00000000000000000001;
-                float _e512 = out_1.inner[3];
-                out_1.inner[3] = _e512 * 0.00000000000000000001;
-                float _e516 = out_1.inner[4];
-                out_1.inner[4] = _e516 * 0.00000000000000000001;
-                float _e520 = out_1.inner[5];
-                out_1.inner[5] = _e520 * 0.00000000000000000001;
-                float _e524 = out_1.inner[6];
-                out_1.inner[6] = _e524 * 0.00000000000000000001;
-                float _e528 = out_1.inner[7];
-                out_1.inner[7] = _e528 * 0.00000000000000000001;
-                float _e532 = out_1.inner[8];
-                out_1.inner[8] = _e532 * 0.00000000000000000001;
-                float _e536 = out_1.inner[9];
-                out_1.inner[9] = _e536 * 0.00000000000000000001;
-                float _e540 = out_1.inner[10];
-                out_1.inner[10] = _e540 * 0.00000000000000000001;
-                float _e544 = out_1.inner[11];
-                out_1.inner[11] = _e544 * 0.00000000000000000001;
+            odd = _e488 - 2.0;
+            float _e491 = cur;
+            above = _e491;
+            float _e492 = below;
+            cur = _e492;
+            float _e493 = cur;
+            if (_e493 > 100000000000000000000.0) {
+                float _e496 = cur;
+                cur = _e496 * 0.00000000000000000001;
+                float _e499 = above;
+                above = _e499 * 0.00000000000000000001;
+                float _e503 = out_1.inner[2];
+                out_1.inner[2] = _e503 * 0.00000000000000000001;
+                float _e507 = out_1.inner[3];
+                out_1.inner[3] = _e507 * 0.00000000000000000001;
+                float _e511 = out_1.inner[4];
+                out_1.inner[4] = _e511 * 0.00000000000000000001;
+                float _e515 = out_1.inner[5];
+                out_1.inner[5] = _e515 * 0.00000000000000000001;
+                float _e519 = out_1.inner[6];
+                out_1.inner[6] = _e519 * 0.00000000000000000001;
+                float _e523 = out_1.inner[7];
+                out_1.inner[7] = _e523 * 0.00000000000000000001;
+                float _e527 = out_1.inner[8];
+                out_1.inner[8] = _e527 * 0.00000000000000000001;
+                float _e531 = out_1.inner[9];
+                out_1.inner[9] = _e531 * 0.00000000000000000001;
+                float _e535 = out_1.inner[10];
+                out_1.inner[10] = _e535 * 0.00000000000000000001;
+                float _e539 = out_1.inner[11];
+                out_1.inner[11] = _e539 * 0.00000000000000000001;
             }
-            float _e548 = cur;
-            out_1.inner[1] = _e548;
-            float _e549 = above;
+            float _e543 = cur;
+            out_1.inner[1] = _e543;
+            float _e544 = above;
+            float _e545 = odd;
+            float _e547 = cur;
+            below = _e544 + ((_e545 * inv_3) * _e547);
             float _e550 = odd;
-            float _e552 = cur;
-            below = _e549 + ((_e550 * inv_3) * _e552);
-            float _e555 = odd;
-            odd = _e555 - 2.0;
-            float _e558 = cur;
-            above = _e558;
-            float _e559 = below;
-            cur = _e559;
-            float _e560 = cur;
-            if (_e560 > 100000000000000000000.0) {
-                float _e563 = cur;
-                cur = _e563 * 0.00000000000000000001;
-                float _e566 = above;
-                above = _e566 * 0.00000000000000000001;
-                float _e570 = out_1.inner[1];
-                out_1.inner[1] = _e570 * 0.00000000000000000001;
-                float _e574 = out_1.inner[2];
-                out_1.inner[2] = _e574 * 0.00000000000000000001;
-                float _e578 = out_1.inner[3];
-                out_1.inner[3] = _e578 * 0.00000000000000000001;
-                float _e582 = out_1.inner[4];
-                out_1.inner[4] = _e582 * 0.00000000000000000001;
-                float _e586 = out_1.inner[5];
-                out_1.inner[5] = _e586 * 0.00000000000000000001;
-                float _e590 = out_1.inner[6];
-                out_1.inner[6] = _e590 * 0.00000000000000000001;
-                float _e594 = out_1.inner[7];
-                out_1.inner[7] = _e594 * 0.00000000000000000001;
-                float _e598 = out_1.inner[8];
-                out_1.inner[8] = _e598 * 0.00000000000000000001;
-                float _e602 = out_1.inner[9];
-                out_1.inner[9] = _e602 * 0.00000000000000000001;
-                float _e606 = out_1.inner[10];
-                out_1.inner[10] = _e606 * 0.00000000000000000001;
-                float _e610 = out_1.inner[11];
-                out_1.inner[11] = _e610 * 0.00000000000000000001;
+            odd = _e550 - 2.0;
+            float _e553 = cur;
+            above = _e553;
+            float _e554 = below;
+            cur = _e554;
+            float _e555 = cur;
+            if (_e555 > 100000000000000000000.0) {
+                float _e558 = cur;
+                cur = _e558 * 0.00000000000000000001;
+                float _e561 = above;
+                above = _e561 * 0.00000000000000000001;
+                float _e565 = out_1.inner[1];
+                out_1.inner[1] = _e565 * 0.00000000000000000001;
+                float _e569 = out_1.inner[2];
+                out_1.inner[2] = _e569 * 0.00000000000000000001;
+                float _e573 = out_1.inner[3];
+                out_1.inner[3] = _e573 * 0.00000000000000000001;
+                float _e577 = out_1.inner[4];
+                out_1.inner[4] = _e577 * 0.00000000000000000001;
+                float _e581 = out_1.inner[5];
+                out_1.inner[5] = _e581 * 0.00000000000000000001;
+                float _e585 = out_1.inner[6];
+                out_1.inner[6] = _e585 * 0.00000000000000000001;
+                float _e589 = out_1.inner[7];
+                out_1.inner[7] = _e589 * 0.00000000000000000001;
+                float _e593 = out_1.inner[8];
+                out_1.inner[8] = _e593 * 0.00000000000000000001;
+                float _e597 = out_1.inner[9];
+                out_1.inner[9] = _e597 * 0.00000000000000000001;
+                float _e601 = out_1.inner[10];
+                out_1.inner[10] = _e601 * 0.00000000000000000001;
+                float _e605 = out_1.inner[11];
+                out_1.inner[11] = _e605 * 0.00000000000000000001;
             }
-            float _e614 = cur;
-            out_1.inner[0] = _e614;
-            float _e615 = cur;
-            float norm = i0_ / _e615;
-            float _e618 = out_1.inner[0];
-            out_1.inner[0] = _e618 * norm;
-            float _e621 = out_1.inner[1];
-            out_1.inner[1] = _e621 * norm;
-            float _e624 = out_1.inner[2];
-            out_1.inner[2] = _e624 * norm;
-            float _e627 = out_1.inner[3];
-            out_1.inner[3] = _e627 * norm;
-            float _e630 = out_1.inner[4];
-            out_1.inner[4] = _e630 * norm;
-            float _e633 = out_1.inner[5];
-            out_1.inner[5] = _e633 * norm;
-            float _e636 = out_1.inner[6];
-            out_1.inner[6] = _e636 * norm;
-            float _e639 = out_1.inner[7];
-            out_1.inner[7] = _e639 * norm;
-            float _e642 = out_1.inner[8];
-            out_1.inner[8] = _e642 * norm;
-            float _e645 = out_1.inner[9];
-            out_1.inner[9] = _e645 * norm;
-            float _e648 = out_1.inner[10];
-            out_1.inner[10] = _e648 * norm;
-            float _e651 = out_1.inner[11];
-            out_1.inner[11] = _e651 * norm;
+            float _e609 = cur;
+            out_1.inner[0] = _e609;
+            float _e610 = cur;
+            float norm = i0_ / _e610;
+            float _e613 = out_1.inner[0];
+            out_1.inner[0] = _e613 * norm;
+            float _e616 = out_1.inner[1];
+            out_1.inner[1] = _e616 * norm;
+            float _e619 = out_1.inner[2];
+            out_1.inner[2] = _e619 * norm;
+            float _e622 = out_1.inner[3];
+            out_1.inner[3] = _e622 * norm;
+            float _e625 = out_1.inner[4];
+            out_1.inner[4] = _e625 * norm;
+            float _e628 = out_1.inner[5];
+            out_1.inner[5] = _e628 * norm;
+            float _e631 = out_1.inner[6];
+            out_1.inner[6] = _e631 * norm;
+            float _e634 = out_1.inner[7];
+            out_1.inner[7] = _e634 * norm;
+            float _e637 = out_1.inner[8];
+            out_1.inner[8] = _e637 * norm;
+            float _e640 = out_1.inner[9];
+            out_1.inner[9] = _e640 * norm;
+            float _e643 = out_1.inner[10];
+            out_1.inner[10] = _e643 * norm;
+            float _e646 = out_1.inner[11];
+            out_1.inner[11] = _e646 * norm;
         } else {
             float e2_1 = metal::exp(-((lambda + lambda)));
             out_1.inner[0] = i0_;
             out_1.inner[1] = (((1.0 + e2_1) * 0.5) - i0_) / lambda;
-            float _e666 = out_1.inner[0];
+            float _e661 = out_1.inner[0];
+            float _e665 = out_1.inner[1];
+            out_1.inner[2] = _e661 - ((3.0 / lambda) * _e665);
             float _e670 = out_1.inner[1];
-            out_1.inner[2] = _e666 - ((3.0 / lambda) * _e670);
-            float _e675 = out_1.inner[1];
+            float _e674 = out_1.inner[2];
+            out_1.inner[3] = _e670 - ((5.0 / lambda) * _e674);
             float _e679 = out_1.inner[2];
-            out_1.inner[3] = _e675 - ((5.0 / lambda) * _e679);
-            float _e684 = out_1.inner[2];
+            float _e683 = out_1.inner[3];
+            out_1.inner[4] = _e679 - ((7.0 / lambda) * _e683);
             float _e688 = out_1.inner[3];
-            out_1.inner[4] = _e684 - ((7.0 / lambda) * _e688);
-            float _e693 = out_1.inner[3];
+            float _e692 = out_1.inner[4];
+            out_1.inner[5] = _e688 - ((9.0 / lambda) * _e692);
             float _e697 = out_1.inner[4];
-            out_1.inner[5] = _e693 - ((9.0 / lambda) * _e697);
-            float _e702 = out_1.inner[4];
+            float _e701 = out_1.inner[5];
+            out_1.inner[6] = _e697 - ((11.0 / lambda) * _e701);
             float _e706 = out_1.inner[5];
-            out_1.inner[6] = _e702 - ((11.0 / lambda) * _e706);
-            float _e711 = out_1.inner[5];
+            float _e710 = out_1.inner[6];
+            out_1.inner[7] = _e706 - ((13.0 / lambda) * _e710);
             float _e715 = out_1.inner[6];
-            out_1.inner[7] = _e711 - ((13.0 / lambda) * _e715);
-            float _e720 = out_1.inner[6];
+            float _e719 = out_1.inner[7];
+            out_1.inner[8] = _e715 - ((15.0 / lambda) * _e719);
             float _e724 = out_1.inner[7];
-            out_1.inner[8] = _e720 - ((15.0 / lambda) * _e724);
-            float _e729 = out_1.inner[7];
+            float _e728 = out_1.inner[8];
+            out_1.inner[9] = _e724 - ((17.0 / lambda) * _e728);
             float _e733 = out_1.inner[8];
-            out_1.inner[9] = _e729 - ((17.0 / lambda) * _e733);
-            float _e738 = out_1.inner[8];
+            float _e737 = out_1.inner[9];
+            out_1.inner[10] = _e733 - ((19.0 / lambda) * _e737);
             float _e742 = out_1.inner[9];
-            out_1.inner[10] = _e738 - ((19.0 / lambda) * _e742);
-            float _e747 = out_1.inner[9];
-            float _e751 = out_1.inner[10];
-            out_1.inner[11] = _e747 - ((21.0 / lambda) * _e751);
+            float _e746 = out_1.inner[10];
+            out_1.inner[11] = _e742 - ((21.0 / lambda) * _e746);
         }
     }
-    float _e755 = out_1.inner[0];
-    out_1.inner[0] = _e755 * 2.0;
-    float _e759 = out_1.inner[1];
-    out_1.inner[1] = _e759 * -2.0;
-    float _e763 = out_1.inner[2];
-    out_1.inner[2] = _e763 * 2.0;
-    float _e767 = out_1.inner[3];
-    out_1.inner[3] = _e767 * -2.0;
-    float _e771 = out_1.inner[4];
-    out_1.inner[4] = _e771 * 2.0;
-    float _e775 = out_1.inner[5];
-    out_1.inner[5] = _e775 * -2.0;
-    float _e779 = out_1.inner[6];
-    out_1.inner[6] = _e779 * 2.0;
-    float _e783 = out_1.inner[7];
-    out_1.inner[7] = _e783 * -2.0;
-    float _e787 = out_1.inner[8];
-    out_1.inner[8] = _e787 * 2.0;
-    float _e791 = out_1.inner[9];
-    out_1.inner[9] = _e791 * -2.0;
-    float _e795 = out_1.inner[10];
-    out_1.inner[10] = _e795 * 2.0;
-    float _e799 = out_1.inner[11];
-    out_1.inner[11] = _e799 * -2.0;
-    airlight_type_2 _e802 = out_1;
-    return _e802;
+    float _e750 = out_1.inner[0];
+    out_1.inner[0] = _e750 * 2.0;
+    float _e754 = out_1.inner[1];
+    out_1.inner[1] = _e754 * -2.0;
+    float _e758 = out_1.inner[2];
+    out_1.inner[2] = _e758 * 2.0;
+    float _e762 = out_1.inner[3];
+    out_1.inner[3] = _e762 * -2.0;
+    float _e766 = out_1.inner[4];
+    out_1.inner[4] = _e766 * 2.0;
+    float _e770 = out_1.inner[5];
+    out_1.inner[5] = _e770 * -2.0;
+    float _e774 = out_1.inner[6];
+    out_1.inner[6] = _e774 * 2.0;
+    float _e778 = out_1.inner[7];
+    out_1.inner[7] = _e778 * -2.0;
+    float _e782 = out_1.inner[8];
+    out_1.inner[8] = _e782 * 2.0;
+    float _e786 = out_1.inner[9];
+    out_1.inner[9] = _e786 * -2.0;
+    float _e790 = out_1.inner[10];
+    out_1.inner[10] = _e790 * 2.0;
+    float _e794 = out_1.inner[11];
+    out_1.inner[11] = _e794 * -2.0;
+    airlight_type_2 _e797 = out_1;
+    return _e797;
 }
 
 float airlight_tail_estimate(
@@ -1909,7 +1906,7 @@ AirlightPanel airlight_panel_result(
 }
 
 AirlightPanel airlight_v_panel(
-    AirlightScene s_4,
+    AirlightScene s_3,
     AirlightCanonical g_5,
     float sigma_2,
     AirlightHalf half_4,
@@ -1956,7 +1953,7 @@ AirlightPanel airlight_v_panel(
             uint _e39 = i_7;
             float _e40 = airlight_node(_e6, _e39);
             float v_6 = _e37 + (_e38 * _e40);
-            metal::float2 _e46 = airlight_integrand_over(s_4, g_5, half_4.second ? -(sigma_2) : sigma_2, v_6);
+            metal::float2 _e46 = airlight_integrand_over(s_3, g_5, half_4.second ? -(sigma_2) : sigma_2, v_6);
             float fy = _e46.x;
             float over = _e46.y;
             uint _e49 = i_7;
@@ -2017,7 +2014,7 @@ AirlightPanel airlight_v_panel(
 }
 
 AirlightPanel airlight_y_panel(
-    AirlightScene s_5,
+    AirlightScene s_4,
     AirlightCanonical g_6,
     float sigma_3,
     AirlightHalf half_5,
@@ -2056,7 +2053,7 @@ AirlightPanel airlight_y_panel(
             float _e27 = airlight_node(_e6, _e26);
             float y_6 = yc_1 + (r_7 * _e27);
             float weight = metal::exp((-(half_5.big_h) * (r_7 * (1.0 - _e27))) / (y_6 * b_5));
-            float _e39 = airlight_integrand(s_5, g_6, sigma_3, y_6);
+            float _e39 = airlight_integrand(s_4, g_6, sigma_3, y_6);
             float over_1 = 1.0 / (1.0 + (y_6 * y_6));
             uint _e45 = i_8;
             samples_1.inner[metal::min(unsigned(_e45), 11u)] = (_e39 * over_1) * weight;
@@ -2189,7 +2186,7 @@ airlight_type_2 airlight_legendre_to_monomial(
 }
 
 AirlightPanel airlight_tail_panel(
-    AirlightScene s_6,
+    AirlightScene s_5,
     AirlightCanonical g_7,
     float sigma_4,
     AirlightHalf half_6,
@@ -2236,7 +2233,7 @@ AirlightPanel airlight_tail_panel(
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
             float y_7 = yc_2 + (r_8 * _e23);
-            float _e26 = airlight_integrand(s_6, g_7, sigma_4, y_7);
+            float _e26 = airlight_integrand(s_5, g_7, sigma_4, y_7);
             uint _e27 = i_9;
             samples_2.inner[metal::min(unsigned(_e27), 11u)] = _e26 / (1.0 + (y_7 * y_7));
             float _e33 = f_max_3;
@@ -2682,7 +2679,7 @@ AirlightPanel airlight_tail_panel(
 }
 
 AirlightPanel airlight_panel(
-    AirlightScene s_7,
+    AirlightScene s_6,
     AirlightCanonical g_8,
     float sigma_5,
     AirlightHalf half_7,
@@ -2698,7 +2695,7 @@ AirlightPanel airlight_panel(
     }
     bool _e13 = local_11;
     if (_e13) {
-        AirlightPanel _e14 = airlight_tail_panel(s_7, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if (half_7.second) {
@@ -2708,15 +2705,15 @@ AirlightPanel airlight_panel(
     }
     bool _e26 = local_12;
     if (_e26) {
-        AirlightPanel _e27 = airlight_y_panel(s_7, g_8, sigma_5, half_7, a_8, b_7);
+        AirlightPanel _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    AirlightPanel _e28 = airlight_v_panel(s_7, g_8, sigma_5, half_7, a_8, b_7);
+    AirlightPanel _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
 float airlight_integrate_piece(
-    AirlightScene s_8,
+    AirlightScene s_7,
     AirlightCanonical g_9,
     float sigma_6,
     AirlightHalf half_8,
@@ -2769,7 +2766,7 @@ float airlight_integrate_piece(
         {
             float _e57 = a_9;
             float _e58 = b_8;
-            AirlightPanel _e59 = airlight_panel(s_8, g_9, sigma_6, half_8, _e57, _e58);
+            AirlightPanel _e59 = airlight_panel(s_7, g_9, sigma_6, half_8, _e57, _e58);
             float _e60 = f_max_4;
             f_max_4 = metal::max(_e60, _e59.f_max);
             uint _e63 = slot;
@@ -3099,7 +3096,7 @@ bool airlight_dark(
 }
 
 float airlight_half(
-    AirlightScene s_9,
+    AirlightScene s_8,
     AirlightCanonical g_12,
     float sigma_10,
     AirlightHalf half_10,
@@ -3122,13 +3119,13 @@ float airlight_half(
     bool local_25 = {};
     bool local_26 = {};
     if (isotropic) {
-        float _e11 = airlight_integrand(s_9, g_12, sigma_10, half_10.y_lo + (half_10.dy * 0.5));
+        float _e11 = airlight_integrand(s_8, g_12, sigma_10, half_10.y_lo + (half_10.dy * 0.5));
         float _e12 = airlight_moment_zero(half_10);
         return _e11 * _e12;
     }
-    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_9.light_param_a;
-        k_out = s_9.light_param_b;
+    if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_8.light_param_a;
+        k_out = s_8.light_param_b;
         float _e29 = k_in;
         float _e30 = k_out;
         float width_1 = _e29 - _e30;
@@ -3265,7 +3262,7 @@ float airlight_half(
             float _e146 = hi_2;
             float _e147 = lo_2;
             if (_e146 > _e147) {
-                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
                     float _e154 = dark_below;
                     float _e155 = lo_2;
                     float _e156 = hi_2;
@@ -3279,7 +3276,7 @@ float airlight_half(
                     float _e161 = total_2;
                     float _e162 = lo_2;
                     float _e163 = hi_2;
-                    float _e164 = airlight_integrate_piece(s_9, g_12, sigma_10, half_10, _e162, _e163, f_max_5);
+                    float _e164 = airlight_integrate_piece(s_8, g_12, sigma_10, half_10, _e162, _e163, f_max_5);
                     total_2 = _e161 + _e164;
                 }
                 float _e166 = hi_2;
@@ -3322,7 +3319,7 @@ float airlight_weighted(
 }
 
 float airlight_on_line(
-    AirlightScene s_10,
+    AirlightScene s_9,
     AirlightCanonical g_13
 ) {
     bool local_27 = {};
@@ -3336,38 +3333,38 @@ float airlight_on_line(
     }
     bool _e10 = local_27;
     if (_e10) {
-        float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_13.d_el));
-        float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
+        float _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
+        float _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1.0);
         float f_2 = _e16 * _e22;
         float r0_ = g_13.x_h - g_13.t_lo;
         float r1_1 = g_13.x_h - g_13.t_hi;
-        float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, s_10.sigma_t * r0_, f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1));
+        float _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, s_9.sigma_t * r0_, f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1));
         return _e41;
     }
-    float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_13.d_el);
-    float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
+    float _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
+    float _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1.0);
     float f_3 = _e46 * _e52;
     float s0_ = g_13.t_lo - g_13.x_h;
     float s1_ = g_13.t_hi - g_13.x_h;
-    if (s_10.sigma_t == 0.0) {
+    if (s_9.sigma_t == 0.0) {
         span = 1.0 / s0_;
         if (!(g_13.t_hi_infinite)) {
             span = ((s1_ - s0_) / s1_) / s0_;
         }
         float _e75 = span;
-        float _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, 0.0, f_3 * _e75);
+        float _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, 0.0, f_3 * _e75);
         return _e77;
     }
-    float two_st = s_10.sigma_t + s_10.sigma_t;
+    float two_st = s_9.sigma_t + s_9.sigma_t;
     airlight_type_7 _e82 = airlight_en_scaled(two_st * s0_);
     e2_ = _e82;
     float _e90 = e2_.inner[1];
-    float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, s_10.sigma_t * s0_, (f_3 * _e90) / s0_);
+    float _e93 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, s_9.sigma_t * s0_, (f_3 * _e90) / s0_);
     if (!(g_13.t_hi_infinite)) {
         airlight_type_7 _e99 = airlight_en_scaled(two_st * s1_);
         e2_ = _e99;
         float _e110 = e2_.inner[1];
-        float _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_), (f_3 * _e110) / s1_);
+        float _e113 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2.0, (s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_), (f_3 * _e110) / s1_);
         tail = _e113;
     }
     bool _e114 = airlight_is_finite(_e93);
@@ -3393,7 +3390,7 @@ float airlight_optical(
 }
 
 float airlight_whole_line(
-    AirlightScene s_11,
+    AirlightScene s_10,
     AirlightCanonical g_14,
     float big_h_1
 ) {
@@ -3441,19 +3438,19 @@ float airlight_whole_line(
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_13 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
-    float _e54 = airlight_integrand(s_11, g_14, -1.0, _e9);
+    float _e54 = airlight_integrand(s_10, g_14, -1.0, _e9);
     float _e55 = airlight_moment_zero(half_13);
     float j_5 = _e54 * _e55;
     bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = big_h_1 * _e8;
     } else {
-        if (s_11.sigma_t > 0.0) {
-            x_8 = s_11.sigma_t * metal::abs(g_14.x_h - g_14.t_lo);
+        if (s_10.sigma_t > 0.0) {
+            x_8 = s_10.sigma_t * metal::abs(g_14.x_h - g_14.t_lo);
         }
     }
     float _e72 = x_8;
-    float _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
+    float _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -3469,7 +3466,7 @@ float airlight_cut_length(
 }
 
 AirlightResult airlight_in_scatter_canonical(
-    AirlightScene s_12,
+    AirlightScene s_11,
     AirlightCanonical g_15
 ) {
     bool local_30 = {};
@@ -3515,7 +3512,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_31 = (s_12.sigma_s * s_12.intensity) == 0.0;
+        local_31 = (s_11.sigma_s * s_11.intensity) == 0.0;
     } else {
         local_31 = true;
     }
@@ -3552,16 +3549,16 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e55 = local_34;
     if (_e55) {
-        float _e56 = airlight_on_line(s_12, g_15);
+        float _e56 = airlight_on_line(s_11, g_15);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (h_3 == 0.0) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    float big_h_5 = s_12.sigma_t * h_3;
-    if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = s_12.light_param_a == 0.0;
+    float big_h_5 = s_11.sigma_t * h_3;
+    if (!((s_11.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_36 = s_11.light_param_a == 0.0;
         } else {
             local_36 = false;
         }
@@ -3572,15 +3569,15 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e85 = local_35;
     if (_e85) {
-        if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+        if (!((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_39 = s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
                 local_39 = true;
             }
             bool _e104 = local_39;
             if (_e104) {
-                local_40 = s_12.phase_param_a == 0.0;
+                local_40 = s_11.phase_param_a == 0.0;
             } else {
                 local_40 = false;
             }
@@ -3614,7 +3611,7 @@ AirlightResult airlight_in_scatter_canonical(
     }
     bool _e131 = local_42;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_12, g_15, big_h_5);
+        float _e132 = airlight_whole_line(s_11, g_15, big_h_5);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
     }
     bool cut = !(isotropic_1);
@@ -3657,9 +3654,9 @@ AirlightResult airlight_in_scatter_canonical(
             }
         }
         AirlightHalf _e199 = half_11;
-        float _e200 = airlight_half(s_12, g_15, -1.0, _e199, isotropic_1, f_max_6);
+        float _e200 = airlight_half(s_11, g_15, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, big_h_5 * _e158, _e200);
+        float _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, big_h_5 * _e158, _e200);
         total_3 = _e201 + _e205;
     }
     if (!(g_15.t_hi_infinite)) {
@@ -3751,9 +3748,9 @@ AirlightResult airlight_in_scatter_canonical(
             }
         }
         AirlightHalf _e313 = half_12;
-        float _e314 = airlight_half(s_12, g_15, 1.0, _e313, isotropic_1, f_max_6);
+        float _e314 = airlight_half(s_11, g_15, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223), _e314);
+        float _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223), _e314);
         total_3 = _e315 + _e323;
     }
     float _e325 = total_3;
@@ -3817,7 +3814,7 @@ metal::float3 airlight_normalize(
 }
 
 bool airlight_valid(
-    AirlightScene s_13
+    AirlightScene s_12
 ) {
     bool local_56 = {};
     bool local_57 = {};
@@ -3853,96 +3850,96 @@ bool airlight_valid(
     bool local_86 = {};
     bool local_87 = {};
     bool local_88 = {};
-    bool _e2 = airlight_vec_finite(s_13.origin);
+    bool _e2 = airlight_vec_finite(s_12.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_13.dir);
+        bool _e6 = airlight_vec_finite(s_12.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     bool _e8 = local_56;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_13.dir);
+        bool _e12 = airlight_normalisable(s_12.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     bool _e14 = local_57;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_13.t_min);
+        bool _e18 = airlight_is_finite(s_12.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     bool _e20 = local_58;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_13.light_position);
+        bool _e24 = airlight_vec_finite(s_12.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     bool _e26 = local_59;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_13.intensity);
+        bool _e30 = airlight_is_finite(s_12.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     bool _e32 = local_60;
     if (_e32) {
-        local_61 = s_13.intensity >= 0.0;
+        local_61 = s_12.intensity >= 0.0;
     } else {
         local_61 = false;
     }
     bool _e39 = local_61;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_13.sigma_s);
+        bool _e43 = airlight_is_finite(s_12.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     bool _e45 = local_62;
     if (_e45) {
-        local_63 = s_13.sigma_s >= 0.0;
+        local_63 = s_12.sigma_s >= 0.0;
     } else {
         local_63 = false;
     }
     bool _e52 = local_63;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_13.sigma_t);
+        bool _e56 = airlight_is_finite(s_12.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     bool _e58 = local_64;
     if (_e58) {
-        local_65 = s_13.sigma_t >= 0.0;
+        local_65 = s_12.sigma_t >= 0.0;
     } else {
         local_65 = false;
     }
     bool _e65 = local_65;
     ok = _e65;
-    if ((s_13.flags & 1u) == 0u) {
+    if ((s_12.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_13.t_max);
+            bool _e76 = airlight_is_finite(s_12.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         bool _e78 = local_66;
         if (_e78) {
-            local_67 = s_13.t_min <= s_13.t_max;
+            local_67 = s_12.t_min <= s_12.t_max;
         } else {
             local_67 = false;
         }
         bool _e85 = local_67;
         ok = _e85;
     }
-    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_13.light_end);
+            bool _e93 = airlight_vec_finite(s_12.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3950,39 +3947,39 @@ bool airlight_valid(
         bool _e95 = local_68;
         ok = _e95;
     } else {
-        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_12.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_12.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         bool _e103 = ok;
         if (_e103) {
-            bool _e107 = airlight_is_finite(s_13.brdf_albedo);
+            bool _e107 = airlight_is_finite(s_12.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         bool _e109 = local_69;
         if (_e109) {
-            local_70 = s_13.brdf_albedo >= 0.0;
+            local_70 = s_12.brdf_albedo >= 0.0;
         } else {
             local_70 = false;
         }
         bool _e116 = local_70;
         if (_e116) {
-            local_71 = s_13.light_kind == AIRLIGHT_LIGHT_OMNI;
+            local_71 = s_12.light_kind == AIRLIGHT_LIGHT_OMNI;
         } else {
             local_71 = false;
         }
         bool _e123 = local_71;
         if (_e123) {
-            local_72 = s_13.light_shape == AIRLIGHT_SHAPE_POINT;
+            local_72 = s_12.light_shape == AIRLIGHT_SHAPE_POINT;
         } else {
             local_72 = false;
         }
         bool _e130 = local_72;
         if (_e130) {
-            float _e136 = airlight_safe_length(s_13.light_position - s_13.origin);
+            float _e136 = airlight_safe_length(s_12.light_position - s_12.origin);
             bool _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3991,89 +3988,89 @@ bool airlight_valid(
         bool _e139 = local_73;
         ok = _e139;
     } else {
-        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_12.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         bool _e147 = ok;
         if (_e147) {
-            bool _e151 = airlight_vec_finite(s_13.light_axis);
+            bool _e151 = airlight_vec_finite(s_12.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         bool _e153 = local_74;
         if (_e153) {
-            bool _e157 = airlight_normalisable(s_13.light_axis);
+            bool _e157 = airlight_normalisable(s_12.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         bool _e159 = local_75;
         if (_e159) {
-            local_76 = s_13.light_param_a >= 0.0;
+            local_76 = s_12.light_param_a >= 0.0;
         } else {
             local_76 = false;
         }
         bool _e166 = local_76;
         if (_e166) {
-            local_77 = s_13.light_param_a <= 1024.0;
+            local_77 = s_12.light_param_a <= 1024.0;
         } else {
             local_77 = false;
         }
         bool _e173 = local_77;
         if (_e173) {
-            local_78 = metal::fract(s_13.light_param_a * 0.5) == 0.0;
+            local_78 = metal::fract(s_12.light_param_a * 0.5) == 0.0;
         } else {
             local_78 = false;
         }
         bool _e183 = local_78;
         ok = _e183;
     } else {
-        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e187 = ok;
             if (_e187) {
-                bool _e191 = airlight_vec_finite(s_13.light_axis);
+                bool _e191 = airlight_vec_finite(s_12.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             bool _e193 = local_79;
             if (_e193) {
-                bool _e197 = airlight_normalisable(s_13.light_axis);
+                bool _e197 = airlight_normalisable(s_12.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             bool _e199 = local_80;
             if (_e199) {
-                local_81 = s_13.light_param_b < s_13.light_param_a;
+                local_81 = s_12.light_param_b < s_12.light_param_a;
             } else {
                 local_81 = false;
             }
             bool _e206 = local_81;
             if (_e206) {
-                local_82 = s_13.light_param_b >= -1.0;
+                local_82 = s_12.light_param_b >= -1.0;
             } else {
                 local_82 = false;
             }
             bool _e213 = local_82;
             if (_e213) {
-                local_83 = s_13.light_param_a <= 1.0;
+                local_83 = s_12.light_param_a <= 1.0;
             } else {
                 local_83 = false;
             }
             bool _e220 = local_83;
             ok = _e220;
         } else {
-            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    bool g_ok = metal::abs(s_13.phase_param_a) < 1.0;
-    switch(s_13.phase_kind) {
+    bool g_ok = metal::abs(s_12.phase_param_a) < 1.0;
+    switch(s_12.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4100,19 +4097,19 @@ bool airlight_valid(
             }
             bool _e239 = local_85;
             if (_e239) {
-                local_86 = metal::abs(s_13.phase_param_b) < 1.0;
+                local_86 = metal::abs(s_12.phase_param_b) < 1.0;
             } else {
                 local_86 = false;
             }
             bool _e247 = local_86;
             if (_e247) {
-                local_87 = s_13.phase_param_c >= 0.0;
+                local_87 = s_12.phase_param_c >= 0.0;
             } else {
                 local_87 = false;
             }
             bool _e254 = local_87;
             if (_e254) {
-                local_88 = s_13.phase_param_c <= 1.0;
+                local_88 = s_12.phase_param_c <= 1.0;
             } else {
                 local_88 = false;
             }
@@ -4130,16 +4127,16 @@ bool airlight_valid(
 }
 
 AirlightCanonical airlight_canonical(
-    AirlightScene s_14
+    AirlightScene s_13
 ) {
     metal::float3 a_11 = metal::float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    metal::float3 _e2 = airlight_normalize(s_14.dir);
-    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e12 = airlight_normalize(s_14.light_axis);
+    metal::float3 _e2 = airlight_normalize(s_13.dir);
+    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        metal::float3 _e12 = airlight_normalize(s_13.light_axis);
         a_11 = _e12;
     }
-    metal::float3 to_light = s_14.light_position - s_14.origin;
+    metal::float3 to_light = s_13.light_position - s_13.origin;
     float x_h_1 = metal::dot(to_light, _e2);
     metal::float3 perp = (x_h_1 * _e2) - to_light;
     float _e19 = airlight_safe_length(perp);
@@ -4147,10 +4144,10 @@ AirlightCanonical airlight_canonical(
         metal::float3 _e24 = a_11;
         d_c_1 = metal::dot(perp, _e24) / _e19;
     }
-    bool infinite_3 = (s_14.flags & 1u) != 0u;
+    bool infinite_3 = (s_13.flags & 1u) != 0u;
     metal::float3 _e32 = a_11;
     float _e34 = d_c_1;
-    return AirlightCanonical {_e19, x_h_1, metal::dot(_e2, _e32), _e34, s_14.t_min, infinite_3 ? 0.0 : s_14.t_max, infinite_3};
+    return AirlightCanonical {_e19, x_h_1, metal::dot(_e2, _e32), _e34, s_13.t_min, infinite_3 ? 0.0 : s_13.t_max, infinite_3};
 }
 
 float airlight_opaque(
@@ -4230,20 +4227,20 @@ bool airlight_in_exact_range(
 }
 
 AirlightCanonical airlight_refined(
-    AirlightScene s_15,
+    AirlightScene s_14,
     AirlightCanonical plain
 ) {
     bool local_91 = {};
     AirlightCanonical out_2 = {};
     bool local_92 = {};
     metal::float3 a_15 = metal::float3(0.0, 0.0, 1.0);
-    uint key_4 = static_cast<uint>(s_15.flags > 1u);
-    metal::float2 _e11 = airlight_two_sum(s_15.light_position[0], -(s_15.origin[0]), key_4);
-    metal::float2 _e17 = airlight_two_sum(s_15.light_position[1], -(s_15.origin[1]), key_4);
-    metal::float2 _e23 = airlight_two_sum(s_15.light_position[2], -(s_15.origin[2]), key_4);
+    uint key_4 = static_cast<uint>(s_14.flags > 1u);
+    metal::float2 _e11 = airlight_two_sum(s_14.light_position[0], -(s_14.origin[0]), key_4);
+    metal::float2 _e17 = airlight_two_sum(s_14.light_position[1], -(s_14.origin[1]), key_4);
+    metal::float2 _e23 = airlight_two_sum(s_14.light_position[2], -(s_14.origin[2]), key_4);
     metal::float3 hi_3 = metal::float3(_e11.x, _e17.x, _e23.x);
     metal::float3 lo_3 = metal::float3(_e11.y, _e17.y, _e23.y);
-    metal::float3 dir = s_15.dir;
+    metal::float3 dir = s_14.dir;
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
@@ -4255,10 +4252,10 @@ AirlightCanonical airlight_refined(
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_3.y, s_15.dir[2], hi_3.z, s_15.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_3.z, s_15.dir[0], hi_3.x, s_15.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_3.x, s_15.dir[1], hi_3.y, s_15.dir[0], key_4);
-    metal::float3 w_3 = metal::float3(_e46 + ((lo_3.y * s_15.dir[2]) - (lo_3.z * s_15.dir[1])), _e59 + ((lo_3.z * s_15.dir[0]) - (lo_3.x * s_15.dir[2])), _e72 + ((lo_3.x * s_15.dir[1]) - (lo_3.y * s_15.dir[0])));
+    float _e46 = airlight_diff_of_products(hi_3.y, s_14.dir[2], hi_3.z, s_14.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_3.z, s_14.dir[0], hi_3.x, s_14.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_3.x, s_14.dir[1], hi_3.y, s_14.dir[0], key_4);
+    metal::float3 w_3 = metal::float3(_e46 + ((lo_3.y * s_14.dir[2]) - (lo_3.z * s_14.dir[1])), _e59 + ((lo_3.z * s_14.dir[0]) - (lo_3.x * s_14.dir[2])), _e72 + ((lo_3.x * s_14.dir[1]) - (lo_3.y * s_14.dir[0])));
     bool _e82 = airlight_vec_finite(w_3);
     if (!(_e82)) {
         return plain;
@@ -4283,8 +4280,8 @@ AirlightCanonical airlight_refined(
     if (!(_e101)) {
         return plain;
     }
-    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e112 = airlight_normalize(s_15.light_axis);
+    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        metal::float3 _e112 = airlight_normalize(s_14.light_axis);
         a_15 = _e112;
     }
     metal::float3 _e113 = airlight_normalize(dir);
@@ -4457,13 +4454,13 @@ float airlight_asinh(
 
 float airlight_to_w(
     AirlightOuter g_16,
-    float s_16
+    float s_15
 ) {
     if (g_16.scale > 0.0) {
-        float _e9 = airlight_asinh((s_16 - g_16.s_star) / g_16.scale);
+        float _e9 = airlight_asinh((s_15 - g_16.s_star) / g_16.scale);
         return _e9;
     }
-    return s_16;
+    return s_15;
 }
 
 metal::float2 airlight_cos_sin_half_turn(
@@ -4486,21 +4483,21 @@ float airlight_acos(
 
 float airlight_angle(
     float c_6,
-    float s_17
+    float s_16
 ) {
-    if (s_17 <= c_6) {
-        float _e4 = airlight_atan(s_17 / c_6);
+    if (s_16 <= c_6) {
+        float _e4 = airlight_atan(s_16 / c_6);
         return _e4;
     }
-    if (s_17 <= -(c_6)) {
-        float _e10 = airlight_atan(s_17 / -(c_6));
+    if (s_16 <= -(c_6)) {
+        float _e10 = airlight_atan(s_16 / -(c_6));
         return AIRLIGHT_PI - _e10;
     }
     if (c_6 >= 0.0) {
-        float _e16 = airlight_atan(c_6 / s_17);
+        float _e16 = airlight_atan(c_6 / s_16);
         return 1.5707964 - _e16;
     }
-    float _e21 = airlight_atan(-(c_6) / s_17);
+    float _e21 = airlight_atan(-(c_6) / s_16);
     return 1.5707964 + _e21;
 }
 
@@ -4520,14 +4517,14 @@ float airlight_half_arc(
 }
 
 AirlightOuter airlight_outer_point(
-    AirlightScene s_18,
+    AirlightScene s_17,
     uint max_panels
 ) {
-    return AirlightOuter {s_18.light_position, metal::float3(0.0), 0.0, 0.0, airlight_type_17 {{0.0, 0.0, 0.0, 0.0, 0.0}}, 1u, 0u, max_panels, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, airlight_type_14 {{0.0, 0.0, 0.0, 0.0}}};
+    return AirlightOuter {s_17.light_position, metal::float3(0.0), 0.0, 0.0, airlight_type_17 {{0.0, 0.0, 0.0, 0.0, 0.0}}, 1u, 0u, max_panels, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, airlight_type_14 {{0.0, 0.0, 0.0, 0.0}}};
 }
 
 AirlightOuter airlight_surface(
-    AirlightScene s_19
+    AirlightScene s_18
 ) {
     AirlightOuter g_17 = {};
     bool local_93 = {};
@@ -4537,12 +4534,12 @@ AirlightOuter airlight_surface(
     uint i_17 = 0u;
     bool local_94 = {};
     uint i_18 = 0u;
-    AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    AirlightOuter _e2 = airlight_outer_point(s_18, AIRLIGHT_SURFACE_PANELS);
     g_17 = _e2;
-    metal::float3 to_light_1 = s_19.light_position - s_19.origin;
+    metal::float3 to_light_1 = s_18.light_position - s_18.origin;
     float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_19.intensity == 0.0))) {
-        local_93 = s_19.sigma_s == 0.0;
+    if (!((s_18.intensity == 0.0))) {
+        local_93 = s_18.sigma_s == 0.0;
     } else {
         local_93 = true;
     }
@@ -4557,13 +4554,13 @@ AirlightOuter airlight_surface(
         AirlightOuter _e27 = g_17;
         return _e27;
     }
-    if (s_19.brdf_albedo == 0.0) {
+    if (s_18.brdf_albedo == 0.0) {
         g_17.outcome = 1u;
         AirlightOuter _e33 = g_17;
         return _e33;
     }
     metal::float3 l_3 = to_light_1 / metal::float3(_e7);
-    metal::float3 _e37 = airlight_normalize(s_19.dir);
+    metal::float3 _e37 = airlight_normalize(s_18.dir);
     float cos_a_1 = metal::dot(_e37, l_3);
     metal::float3 across = _e37 - (cos_a_1 * l_3);
     float _e41 = airlight_safe_length(across);
@@ -4658,7 +4655,7 @@ AirlightOuter airlight_surface(
 }
 
 AirlightOuter airlight_outer(
-    AirlightScene s_20
+    AirlightScene s_19
 ) {
     AirlightOuter g_18 = {};
     bool local_95 = {};
@@ -4686,26 +4683,26 @@ AirlightOuter airlight_outer(
     uint n_1 = 0u;
     uint i_20 = 0u;
     bool local_111 = {};
-    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        AirlightOuter _e4 = airlight_surface(s_20);
+    if (s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        AirlightOuter _e4 = airlight_surface(s_19);
         return _e4;
     }
-    AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    AirlightOuter _e6 = airlight_outer_point(s_19, AIRLIGHT_SEGMENT_PANELS);
     g_18 = _e6;
-    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         AirlightOuter _e11 = g_18;
         return _e11;
     }
-    metal::float3 ab_1 = s_20.light_end - s_20.light_position;
+    metal::float3 ab_1 = s_19.light_end - s_19.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = s_20.intensity == 0.0;
+        local_95 = s_19.intensity == 0.0;
     } else {
         local_95 = true;
     }
     bool _e26 = local_95;
     if (!(_e26)) {
-        local_96 = s_20.sigma_s == 0.0;
+        local_96 = s_19.sigma_s == 0.0;
     } else {
         local_96 = true;
     }
@@ -4716,13 +4713,13 @@ AirlightOuter airlight_outer(
         return _e37;
     }
     metal::float3 e_4 = ab_1 / metal::float3(_e15);
-    metal::float3 _e41 = airlight_normalize(s_20.dir);
-    metal::float3 w0_ = s_20.light_position - s_20.origin;
+    metal::float3 _e41 = airlight_normalize(s_19.dir);
+    metal::float3 w0_ = s_19.light_position - s_19.origin;
     float cos_a_2 = metal::dot(e_4, _e41);
     float along_e = metal::dot(e_4, w0_);
     float along_d = metal::dot(_e41, w0_);
     float sin2_ = 1.0 - (cos_a_2 * cos_a_2);
-    bool infinite_4 = (s_20.flags & 1u) != 0u;
+    bool infinite_4 = (s_19.flags & 1u) != 0u;
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = ((cos_a_2 * along_d) - along_e) / sin2_;
@@ -4754,7 +4751,7 @@ AirlightOuter airlight_outer(
     bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = s_20.t_min <= _e101;
+        local_100 = s_19.t_min <= _e101;
     } else {
         local_100 = false;
     }
@@ -4762,7 +4759,7 @@ AirlightOuter airlight_outer(
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = _e110 <= s_20.t_max;
+            local_102 = _e110 <= s_19.t_max;
         } else {
             local_102 = true;
         }
@@ -4830,7 +4827,7 @@ AirlightOuter airlight_outer(
     float _e172 = scale;
     g_18.scale = _e172;
     float _e178 = s_star;
-    at = airlight_type_19 {{_e178, (s_20.t_min - along_d) / cos_a_2, (s_20.t_max - along_d) / cos_a_2}};
+    at = airlight_type_19 {{_e178, (s_19.t_min - along_d) / cos_a_2, (s_19.t_max - along_d) / cos_a_2}};
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_26 = true;
     while(true) {
@@ -4963,17 +4960,17 @@ AirlightOuter airlight_outer(
 }
 
 AirlightNode airlight_outer_node(
-    AirlightScene s_21,
+    AirlightScene s_20,
     AirlightOuter g_19,
     float x_14
 ) {
     AirlightScene p = {};
     float at_1 = {};
     float ds = 1.0;
-    p = s_21;
+    p = s_20;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         uint i_21 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_14), 0.0)), g_19.panels - 1u);
         float t_6 = x_14 - static_cast<float>(i_21);
         float a_24 = g_19.gamma.inner[metal::min(unsigned(i_21), 3u)];
@@ -4997,9 +4994,9 @@ AirlightNode airlight_outer_node(
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        return AirlightNode {_e87, (((s_21.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian};
+        return AirlightNode {_e87, (((s_20.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian};
     }
-    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
         if (g_19.scale > 0.0) {
             at_1 = g_19.s_star + (g_19.scale * metal::sinh(x_14));
@@ -5016,7 +5013,7 @@ AirlightNode airlight_outer_node(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_22
+    AirlightScene s_21
 ) {
     AirlightPanelList list_1 = AirlightPanelList {metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)};
     uint count_2 = 0u;
@@ -5041,11 +5038,11 @@ AirlightResult airlight_in_scatter(
     bool local_116 = {};
     bool local_117 = {};
     bool local_118 = {};
-    bool _e1 = airlight_valid(s_22);
+    bool _e1 = airlight_valid(s_21);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e6 = airlight_outer(s_22);
+    AirlightOuter _e6 = airlight_outer(s_21);
     if (_e6.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -5108,7 +5105,7 @@ AirlightResult airlight_in_scatter(
                     }
                     bool _e100 = local_112;
                     float w_4 = _e100 ? (c_13 - (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_13 + (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
-                    AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_4);
+                    AirlightNode _e102 = airlight_outer_node(s_21, _e6, w_4);
                     f = 0.0;
                     if (_e102.weight != 0.0) {
                         AirlightScene p_1 = _e102.scene;
@@ -5139,8 +5136,8 @@ AirlightResult airlight_in_scatter(
                         if (_e136) {
                             return AirlightResult {340282350000000000000000000000000000000.0, 2u};
                         }
-                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = s_22.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_21.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_115 = s_21.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
                             local_115 = false;
                         }

@@ -396,8 +396,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_24 = (x_2 / (2f + x_2));
-    let s2_ = (s_24 * s_24);
+    let s_23 = (x_2 / (2f + x_2));
+    let s2_ = (s_23 * s_23);
     loop {
         let _e14 = k_2;
         if (_e14 < 9u) {
@@ -415,7 +415,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_24) * _e35);
+    return ((2f * s_23) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1139,7 +1139,6 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
     var out_1: array<f32, 8>;
     var share: f32;
     var steps: u32 = 1u;
-    var s_4: u32 = 1u;
     var above: f32 = 0f;
     var cur: f32 = 0.00000000000000000001f;
     var below: f32 = 0f;
@@ -1171,314 +1170,312 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
             let per_step = (x_19 * x_19);
             share = per_step;
             loop {
-                let _e45 = s_4;
-                if (_e45 < 28u) {
+                let _e43 = steps;
+                if (_e43 < 28u) {
                 } else {
                     break;
                 }
                 {
-                    let _e48 = share;
-                    if !((_e48 > AIRLIGHT_FLT_EPS)) {
+                    let _e46 = share;
+                    if !((_e46 > AIRLIGHT_FLT_EPS)) {
                         break;
                     }
-                    let _e52 = share;
-                    share = (_e52 * per_step);
-                    let _e54 = steps;
-                    steps = (_e54 + 1u);
+                    let _e50 = share;
+                    share = (_e50 * per_step);
                 }
                 continuing {
-                    let _e58 = s_4;
-                    s_4 = (_e58 + 1u);
+                    let _e53 = steps;
+                    steps = (_e53 + 1u);
                 }
             }
-            let _e60 = steps;
-            let top = ((k0_ + _e60) + 2u);
+            let _e55 = steps;
+            let top = ((k0_ + _e55) + 2u);
             odd = f32(((2u * top) + 1u));
             loop {
-                let _e78 = i_5;
-                if (_e78 < 46u) {
+                let _e73 = i_5;
+                if (_e73 < 46u) {
                 } else {
                     break;
                 }
                 {
-                    let _e81 = i_5;
-                    if ((_e81 + AIRLIGHT_TERMS) > top) {
+                    let _e76 = i_5;
+                    if ((_e76 + AIRLIGHT_TERMS) > top) {
                         break;
                     }
-                    let _e84 = above;
+                    let _e79 = above;
+                    let _e80 = odd;
+                    let _e82 = cur;
+                    below = (_e79 + ((_e80 * inv_3) * _e82));
                     let _e85 = odd;
-                    let _e87 = cur;
-                    below = (_e84 + ((_e85 * inv_3) * _e87));
-                    let _e90 = odd;
-                    odd = (_e90 - 2f);
-                    let _e93 = cur;
-                    above = _e93;
-                    let _e94 = below;
-                    cur = _e94;
-                    let _e95 = cur;
-                    if (_e95 > 100000000000000000000f) {
-                        let _e98 = cur;
-                        cur = (_e98 * 0.00000000000000000001f);
-                        let _e101 = above;
-                        above = (_e101 * 0.00000000000000000001f);
+                    odd = (_e85 - 2f);
+                    let _e88 = cur;
+                    above = _e88;
+                    let _e89 = below;
+                    cur = _e89;
+                    let _e90 = cur;
+                    if (_e90 > 100000000000000000000f) {
+                        let _e93 = cur;
+                        cur = (_e93 * 0.00000000000000000001f);
+                        let _e96 = above;
+                        above = (_e96 * 0.00000000000000000001f);
                     }
                 }
                 continuing {
-                    let _e105 = i_5;
-                    i_5 = (_e105 + 1u);
+                    let _e100 = i_5;
+                    i_5 = (_e100 + 1u);
                 }
             }
-            let _e108 = cur;
-            out_1[7] = _e108;
-            let _e109 = above;
+            let _e103 = cur;
+            out_1[7] = _e103;
+            let _e104 = above;
+            let _e105 = odd;
+            let _e107 = cur;
+            below = (_e104 + ((_e105 * inv_3) * _e107));
             let _e110 = odd;
-            let _e112 = cur;
-            below = (_e109 + ((_e110 * inv_3) * _e112));
-            let _e115 = odd;
-            odd = (_e115 - 2f);
-            let _e118 = cur;
-            above = _e118;
-            let _e119 = below;
-            cur = _e119;
-            let _e120 = cur;
-            if (_e120 > 100000000000000000000f) {
-                let _e123 = cur;
-                cur = (_e123 * 0.00000000000000000001f);
-                let _e126 = above;
-                above = (_e126 * 0.00000000000000000001f);
-                let _e130 = out_1[7];
-                out_1[7] = (_e130 * 0.00000000000000000001f);
+            odd = (_e110 - 2f);
+            let _e113 = cur;
+            above = _e113;
+            let _e114 = below;
+            cur = _e114;
+            let _e115 = cur;
+            if (_e115 > 100000000000000000000f) {
+                let _e118 = cur;
+                cur = (_e118 * 0.00000000000000000001f);
+                let _e121 = above;
+                above = (_e121 * 0.00000000000000000001f);
+                let _e125 = out_1[7];
+                out_1[7] = (_e125 * 0.00000000000000000001f);
             }
-            let _e134 = cur;
-            out_1[6] = _e134;
-            let _e135 = above;
+            let _e129 = cur;
+            out_1[6] = _e129;
+            let _e130 = above;
+            let _e131 = odd;
+            let _e133 = cur;
+            below = (_e130 + ((_e131 * inv_3) * _e133));
             let _e136 = odd;
-            let _e138 = cur;
-            below = (_e135 + ((_e136 * inv_3) * _e138));
-            let _e141 = odd;
-            odd = (_e141 - 2f);
-            let _e144 = cur;
-            above = _e144;
-            let _e145 = below;
-            cur = _e145;
-            let _e146 = cur;
-            if (_e146 > 100000000000000000000f) {
-                let _e149 = cur;
-                cur = (_e149 * 0.00000000000000000001f);
-                let _e152 = above;
-                above = (_e152 * 0.00000000000000000001f);
-                let _e156 = out_1[6];
-                out_1[6] = (_e156 * 0.00000000000000000001f);
-                let _e160 = out_1[7];
-                out_1[7] = (_e160 * 0.00000000000000000001f);
+            odd = (_e136 - 2f);
+            let _e139 = cur;
+            above = _e139;
+            let _e140 = below;
+            cur = _e140;
+            let _e141 = cur;
+            if (_e141 > 100000000000000000000f) {
+                let _e144 = cur;
+                cur = (_e144 * 0.00000000000000000001f);
+                let _e147 = above;
+                above = (_e147 * 0.00000000000000000001f);
+                let _e151 = out_1[6];
+                out_1[6] = (_e151 * 0.00000000000000000001f);
+                let _e155 = out_1[7];
+                out_1[7] = (_e155 * 0.00000000000000000001f);
             }
-            let _e164 = cur;
-            out_1[5] = _e164;
-            let _e165 = above;
+            let _e159 = cur;
+            out_1[5] = _e159;
+            let _e160 = above;
+            let _e161 = odd;
+            let _e163 = cur;
+            below = (_e160 + ((_e161 * inv_3) * _e163));
             let _e166 = odd;
-            let _e168 = cur;
-            below = (_e165 + ((_e166 * inv_3) * _e168));
-            let _e171 = odd;
-            odd = (_e171 - 2f);
-            let _e174 = cur;
-            above = _e174;
-            let _e175 = below;
-            cur = _e175;
-            let _e176 = cur;
-            if (_e176 > 100000000000000000000f) {
-                let _e179 = cur;
-                cur = (_e179 * 0.00000000000000000001f);
-                let _e182 = above;
-                above = (_e182 * 0.00000000000000000001f);
-                let _e186 = out_1[5];
-                out_1[5] = (_e186 * 0.00000000000000000001f);
-                let _e190 = out_1[6];
-                out_1[6] = (_e190 * 0.00000000000000000001f);
-                let _e194 = out_1[7];
-                out_1[7] = (_e194 * 0.00000000000000000001f);
+            odd = (_e166 - 2f);
+            let _e169 = cur;
+            above = _e169;
+            let _e170 = below;
+            cur = _e170;
+            let _e171 = cur;
+            if (_e171 > 100000000000000000000f) {
+                let _e174 = cur;
+                cur = (_e174 * 0.00000000000000000001f);
+                let _e177 = above;
+                above = (_e177 * 0.00000000000000000001f);
+                let _e181 = out_1[5];
+                out_1[5] = (_e181 * 0.00000000000000000001f);
+                let _e185 = out_1[6];
+                out_1[6] = (_e185 * 0.00000000000000000001f);
+                let _e189 = out_1[7];
+                out_1[7] = (_e189 * 0.00000000000000000001f);
             }
-            let _e198 = cur;
-            out_1[4] = _e198;
-            let _e199 = above;
+            let _e193 = cur;
+            out_1[4] = _e193;
+            let _e194 = above;
+            let _e195 = odd;
+            let _e197 = cur;
+            below = (_e194 + ((_e195 * inv_3) * _e197));
             let _e200 = odd;
-            let _e202 = cur;
-            below = (_e199 + ((_e200 * inv_3) * _e202));
-            let _e205 = odd;
-            odd = (_e205 - 2f);
-            let _e208 = cur;
-            above = _e208;
-            let _e209 = below;
-            cur = _e209;
-            let _e210 = cur;
-            if (_e210 > 100000000000000000000f) {
-                let _e213 = cur;
-                cur = (_e213 * 0.00000000000000000001f);
-                let _e216 = above;
-                above = (_e216 * 0.00000000000000000001f);
-                let _e220 = out_1[4];
-                out_1[4] = (_e220 * 0.00000000000000000001f);
-                let _e224 = out_1[5];
-                out_1[5] = (_e224 * 0.00000000000000000001f);
-                let _e228 = out_1[6];
-                out_1[6] = (_e228 * 0.00000000000000000001f);
-                let _e232 = out_1[7];
-                out_1[7] = (_e232 * 0.00000000000000000001f);
+            odd = (_e200 - 2f);
+            let _e203 = cur;
+            above = _e203;
+            let _e204 = below;
+            cur = _e204;
+            let _e205 = cur;
+            if (_e205 > 100000000000000000000f) {
+                let _e208 = cur;
+                cur = (_e208 * 0.00000000000000000001f);
+                let _e211 = above;
+                above = (_e211 * 0.00000000000000000001f);
+                let _e215 = out_1[4];
+                out_1[4] = (_e215 * 0.00000000000000000001f);
+                let _e219 = out_1[5];
+                out_1[5] = (_e219 * 0.00000000000000000001f);
+                let _e223 = out_1[6];
+                out_1[6] = (_e223 * 0.00000000000000000001f);
+                let _e227 = out_1[7];
+                out_1[7] = (_e227 * 0.00000000000000000001f);
             }
-            let _e236 = cur;
-            out_1[3] = _e236;
-            let _e237 = above;
+            let _e231 = cur;
+            out_1[3] = _e231;
+            let _e232 = above;
+            let _e233 = odd;
+            let _e235 = cur;
+            below = (_e232 + ((_e233 * inv_3) * _e235));
             let _e238 = odd;
-            let _e240 = cur;
-            below = (_e237 + ((_e238 * inv_3) * _e240));
-            let _e243 = odd;
-            odd = (_e243 - 2f);
-            let _e246 = cur;
-            above = _e246;
-            let _e247 = below;
-            cur = _e247;
-            let _e248 = cur;
-            if (_e248 > 100000000000000000000f) {
-                let _e251 = cur;
-                cur = (_e251 * 0.00000000000000000001f);
-                let _e254 = above;
-                above = (_e254 * 0.00000000000000000001f);
-                let _e258 = out_1[3];
-                out_1[3] = (_e258 * 0.00000000000000000001f);
-                let _e262 = out_1[4];
-                out_1[4] = (_e262 * 0.00000000000000000001f);
-                let _e266 = out_1[5];
-                out_1[5] = (_e266 * 0.00000000000000000001f);
-                let _e270 = out_1[6];
-                out_1[6] = (_e270 * 0.00000000000000000001f);
-                let _e274 = out_1[7];
-                out_1[7] = (_e274 * 0.00000000000000000001f);
+            odd = (_e238 - 2f);
+            let _e241 = cur;
+            above = _e241;
+            let _e242 = below;
+            cur = _e242;
+            let _e243 = cur;
+            if (_e243 > 100000000000000000000f) {
+                let _e246 = cur;
+                cur = (_e246 * 0.00000000000000000001f);
+                let _e249 = above;
+                above = (_e249 * 0.00000000000000000001f);
+                let _e253 = out_1[3];
+                out_1[3] = (_e253 * 0.00000000000000000001f);
+                let _e257 = out_1[4];
+                out_1[4] = (_e257 * 0.00000000000000000001f);
+                let _e261 = out_1[5];
+                out_1[5] = (_e261 * 0.00000000000000000001f);
+                let _e265 = out_1[6];
+                out_1[6] = (_e265 * 0.00000000000000000001f);
+                let _e269 = out_1[7];
+                out_1[7] = (_e269 * 0.00000000000000000001f);
             }
-            let _e278 = cur;
-            out_1[2] = _e278;
-            let _e279 = above;
+            let _e273 = cur;
+            out_1[2] = _e273;
+            let _e274 = above;
+            let _e275 = odd;
+            let _e277 = cur;
+            below = (_e274 + ((_e275 * inv_3) * _e277));
             let _e280 = odd;
-            let _e282 = cur;
-            below = (_e279 + ((_e280 * inv_3) * _e282));
-            let _e285 = odd;
-            odd = (_e285 - 2f);
-            let _e288 = cur;
-            above = _e288;
-            let _e289 = below;
-            cur = _e289;
-            let _e290 = cur;
-            if (_e290 > 100000000000000000000f) {
-                let _e293 = cur;
-                cur = (_e293 * 0.00000000000000000001f);
-                let _e296 = above;
-                above = (_e296 * 0.00000000000000000001f);
-                let _e300 = out_1[2];
-                out_1[2] = (_e300 * 0.00000000000000000001f);
-                let _e304 = out_1[3];
-                out_1[3] = (_e304 * 0.00000000000000000001f);
-                let _e308 = out_1[4];
-                out_1[4] = (_e308 * 0.00000000000000000001f);
-                let _e312 = out_1[5];
-                out_1[5] = (_e312 * 0.00000000000000000001f);
-                let _e316 = out_1[6];
-                out_1[6] = (_e316 * 0.00000000000000000001f);
-                let _e320 = out_1[7];
-                out_1[7] = (_e320 * 0.00000000000000000001f);
+            odd = (_e280 - 2f);
+            let _e283 = cur;
+            above = _e283;
+            let _e284 = below;
+            cur = _e284;
+            let _e285 = cur;
+            if (_e285 > 100000000000000000000f) {
+                let _e288 = cur;
+                cur = (_e288 * 0.00000000000000000001f);
+                let _e291 = above;
+                above = (_e291 * 0.00000000000000000001f);
+                let _e295 = out_1[2];
+                out_1[2] = (_e295 * 0.00000000000000000001f);
+                let _e299 = out_1[3];
+                out_1[3] = (_e299 * 0.00000000000000000001f);
+                let _e303 = out_1[4];
+                out_1[4] = (_e303 * 0.00000000000000000001f);
+                let _e307 = out_1[5];
+                out_1[5] = (_e307 * 0.00000000000000000001f);
+                let _e311 = out_1[6];
+                out_1[6] = (_e311 * 0.00000000000000000001f);
+                let _e315 = out_1[7];
+                out_1[7] = (_e315 * 0.00000000000000000001f);
             }
-            let _e324 = cur;
-            out_1[1] = _e324;
-            let _e325 = above;
+            let _e319 = cur;
+            out_1[1] = _e319;
+            let _e320 = above;
+            let _e321 = odd;
+            let _e323 = cur;
+            below = (_e320 + ((_e321 * inv_3) * _e323));
             let _e326 = odd;
-            let _e328 = cur;
-            below = (_e325 + ((_e326 * inv_3) * _e328));
-            let _e331 = odd;
-            odd = (_e331 - 2f);
-            let _e334 = cur;
-            above = _e334;
-            let _e335 = below;
-            cur = _e335;
-            let _e336 = cur;
-            if (_e336 > 100000000000000000000f) {
-                let _e339 = cur;
-                cur = (_e339 * 0.00000000000000000001f);
-                let _e342 = above;
-                above = (_e342 * 0.00000000000000000001f);
-                let _e346 = out_1[1];
-                out_1[1] = (_e346 * 0.00000000000000000001f);
-                let _e350 = out_1[2];
-                out_1[2] = (_e350 * 0.00000000000000000001f);
-                let _e354 = out_1[3];
-                out_1[3] = (_e354 * 0.00000000000000000001f);
-                let _e358 = out_1[4];
-                out_1[4] = (_e358 * 0.00000000000000000001f);
-                let _e362 = out_1[5];
-                out_1[5] = (_e362 * 0.00000000000000000001f);
-                let _e366 = out_1[6];
-                out_1[6] = (_e366 * 0.00000000000000000001f);
-                let _e370 = out_1[7];
-                out_1[7] = (_e370 * 0.00000000000000000001f);
+            odd = (_e326 - 2f);
+            let _e329 = cur;
+            above = _e329;
+            let _e330 = below;
+            cur = _e330;
+            let _e331 = cur;
+            if (_e331 > 100000000000000000000f) {
+                let _e334 = cur;
+                cur = (_e334 * 0.00000000000000000001f);
+                let _e337 = above;
+                above = (_e337 * 0.00000000000000000001f);
+                let _e341 = out_1[1];
+                out_1[1] = (_e341 * 0.00000000000000000001f);
+                let _e345 = out_1[2];
+                out_1[2] = (_e345 * 0.00000000000000000001f);
+                let _e349 = out_1[3];
+                out_1[3] = (_e349 * 0.00000000000000000001f);
+                let _e353 = out_1[4];
+                out_1[4] = (_e353 * 0.00000000000000000001f);
+                let _e357 = out_1[5];
+                out_1[5] = (_e357 * 0.00000000000000000001f);
+                let _e361 = out_1[6];
+                out_1[6] = (_e361 * 0.00000000000000000001f);
+                let _e365 = out_1[7];
+                out_1[7] = (_e365 * 0.00000000000000000001f);
             }
-            let _e374 = cur;
-            out_1[0] = _e374;
-            let _e375 = cur;
-            let norm = (i0_ / _e375);
-            let _e378 = out_1[0];
-            out_1[0] = (_e378 * norm);
-            let _e381 = out_1[1];
-            out_1[1] = (_e381 * norm);
-            let _e384 = out_1[2];
-            out_1[2] = (_e384 * norm);
-            let _e387 = out_1[3];
-            out_1[3] = (_e387 * norm);
-            let _e390 = out_1[4];
-            out_1[4] = (_e390 * norm);
-            let _e393 = out_1[5];
-            out_1[5] = (_e393 * norm);
-            let _e396 = out_1[6];
-            out_1[6] = (_e396 * norm);
-            let _e399 = out_1[7];
-            out_1[7] = (_e399 * norm);
+            let _e369 = cur;
+            out_1[0] = _e369;
+            let _e370 = cur;
+            let norm = (i0_ / _e370);
+            let _e373 = out_1[0];
+            out_1[0] = (_e373 * norm);
+            let _e376 = out_1[1];
+            out_1[1] = (_e376 * norm);
+            let _e379 = out_1[2];
+            out_1[2] = (_e379 * norm);
+            let _e382 = out_1[3];
+            out_1[3] = (_e382 * norm);
+            let _e385 = out_1[4];
+            out_1[4] = (_e385 * norm);
+            let _e388 = out_1[5];
+            out_1[5] = (_e388 * norm);
+            let _e391 = out_1[6];
+            out_1[6] = (_e391 * norm);
+            let _e394 = out_1[7];
+            out_1[7] = (_e394 * norm);
         } else {
             let e2_1 = exp(-((lambda + lambda)));
             out_1[0] = i0_;
             out_1[1] = ((((1f + e2_1) * 0.5f) - i0_) / lambda);
-            let _e414 = out_1[0];
+            let _e409 = out_1[0];
+            let _e413 = out_1[1];
+            out_1[2] = (_e409 - ((3f / lambda) * _e413));
             let _e418 = out_1[1];
-            out_1[2] = (_e414 - ((3f / lambda) * _e418));
-            let _e423 = out_1[1];
+            let _e422 = out_1[2];
+            out_1[3] = (_e418 - ((5f / lambda) * _e422));
             let _e427 = out_1[2];
-            out_1[3] = (_e423 - ((5f / lambda) * _e427));
-            let _e432 = out_1[2];
+            let _e431 = out_1[3];
+            out_1[4] = (_e427 - ((7f / lambda) * _e431));
             let _e436 = out_1[3];
-            out_1[4] = (_e432 - ((7f / lambda) * _e436));
-            let _e441 = out_1[3];
+            let _e440 = out_1[4];
+            out_1[5] = (_e436 - ((9f / lambda) * _e440));
             let _e445 = out_1[4];
-            out_1[5] = (_e441 - ((9f / lambda) * _e445));
-            let _e450 = out_1[4];
+            let _e449 = out_1[5];
+            out_1[6] = (_e445 - ((11f / lambda) * _e449));
             let _e454 = out_1[5];
-            out_1[6] = (_e450 - ((11f / lambda) * _e454));
-            let _e459 = out_1[5];
-            let _e463 = out_1[6];
-            out_1[7] = (_e459 - ((13f / lambda) * _e463));
+            let _e458 = out_1[6];
+            out_1[7] = (_e454 - ((13f / lambda) * _e458));
         }
     }
-    let _e467 = out_1[0];
-    out_1[0] = (_e467 * 2f);
-    let _e471 = out_1[1];
-    out_1[1] = (_e471 * -2f);
-    let _e475 = out_1[2];
-    out_1[2] = (_e475 * 2f);
-    let _e479 = out_1[3];
-    out_1[3] = (_e479 * -2f);
-    let _e483 = out_1[4];
-    out_1[4] = (_e483 * 2f);
-    let _e487 = out_1[5];
-    out_1[5] = (_e487 * -2f);
-    let _e491 = out_1[6];
-    out_1[6] = (_e491 * 2f);
-    let _e495 = out_1[7];
-    out_1[7] = (_e495 * -2f);
-    let _e498 = out_1;
-    return _e498;
+    let _e462 = out_1[0];
+    out_1[0] = (_e462 * 2f);
+    let _e466 = out_1[1];
+    out_1[1] = (_e466 * -2f);
+    let _e470 = out_1[2];
+    out_1[2] = (_e470 * 2f);
+    let _e474 = out_1[3];
+    out_1[3] = (_e474 * -2f);
+    let _e478 = out_1[4];
+    out_1[4] = (_e478 * 2f);
+    let _e482 = out_1[5];
+    out_1[5] = (_e482 * -2f);
+    let _e486 = out_1[6];
+    out_1[6] = (_e486 * 2f);
+    let _e490 = out_1[7];
+    out_1[7] = (_e490 * -2f);
+    let _e493 = out_1;
+    return _e493;
 }
 
 fn airlight_tail_estimate(c_2: array<f32, 8>) -> f32 {
@@ -1564,7 +1561,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
+fn airlight_v_panel(s_4: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
     var r_1: f32;
     var vc: f32;
     var samples: array<f32, 8>;
@@ -1597,7 +1594,7 @@ fn airlight_v_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
             let _e39 = i_7;
             let _e40 = airlight_node(_e6, _e39);
             let v_6 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_5, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
+            let _e46 = airlight_integrand_over(s_4, g_7, select(sigma_2, -(sigma_2), half_4.second), v_6);
             let fy = _e46.x;
             let over = _e46.y;
             let _e49 = i_7;
@@ -1653,7 +1650,7 @@ fn airlight_v_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_2: f32, ha
     return _e138;
 }
 
-fn airlight_y_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
     var samples_1: array<f32, 8>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1678,7 +1675,7 @@ fn airlight_y_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_3: f32, ha
             let _e27 = airlight_node(_e6, _e26);
             let y_6 = (yc_1 + (r_7 * _e27));
             let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_6 * b_5)));
-            let _e39 = airlight_integrand(s_6, g_8, sigma_3, y_6);
+            let _e39 = airlight_integrand(s_5, g_8, sigma_3, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e45 = i_8;
             samples_1[_e45] = ((_e39 * over_1) * weight);
@@ -1769,7 +1766,7 @@ fn airlight_legendre_to_monomial(c_4: array<f32, 8>) -> array<f32, 8> {
     return _e123;
 }
 
-fn airlight_tail_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 8>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -1802,7 +1799,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
             let y_7 = (yc_2 + (r_8 * _e23));
-            let _e26 = airlight_integrand(s_7, g_9, sigma_4, y_7);
+            let _e26 = airlight_integrand(s_6, g_9, sigma_4, y_7);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
             let _e33 = f_max_3;
@@ -2091,7 +2088,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_4: f32,
     return _e702;
 }
 
-fn airlight_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
     var local_11: bool;
     var local_12: bool;
 
@@ -2102,7 +2099,7 @@ fn airlight_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e13 = local_11;
     if _e13 {
-        let _e14 = airlight_tail_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+        let _e14 = airlight_tail_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e14;
     }
     if half_7.second {
@@ -2112,14 +2109,14 @@ fn airlight_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_5: f32, hal
     }
     let _e26 = local_12;
     if _e26 {
-        let _e27 = airlight_y_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+        let _e27 = airlight_y_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
         return _e27;
     }
-    let _e28 = airlight_v_panel(s_8, g_10, sigma_5, half_7, a_8, b_7);
+    let _e28 = airlight_v_panel(s_7, g_10, sigma_5, half_7, a_8, b_7);
     return _e28;
 }
 
-fn airlight_integrate_piece(s_9: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_8: AirlightScene, g_11: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2157,7 +2154,7 @@ fn airlight_integrate_piece(s_9: AirlightScene, g_11: AirlightCanonical, sigma_6
         {
             let _e57 = a_9;
             let _e58 = b_8;
-            let _e59 = airlight_panel(s_9, g_11, sigma_6, half_8, _e57, _e58);
+            let _e59 = airlight_panel(s_8, g_11, sigma_6, half_8, _e57, _e58);
             let _e60 = (*f_max_4);
             (*f_max_4) = max(_e60, _e59.f_max);
             let _e63 = slot;
@@ -2459,7 +2456,7 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     return true;
 }
 
-fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_9: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
@@ -2477,13 +2474,13 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, ha
     var local_26: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_10, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_9, g_14, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_10.light_param_a;
-        k_out = s_10.light_param_b;
+    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_9.light_param_a;
+        k_out = s_9.light_param_b;
         let _e29 = k_in;
         let _e30 = k_out;
         let width_1 = (_e29 - _e30);
@@ -2596,7 +2593,7 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, ha
             let _e146 = hi_2;
             let _e147 = lo_2;
             if (_e146 > _e147) {
-                if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
                     let _e154 = dark_below;
                     let _e155 = lo_2;
                     let _e156 = hi_2;
@@ -2610,7 +2607,7 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_10: f32, ha
                     let _e161 = total_2;
                     let _e162 = lo_2;
                     let _e163 = hi_2;
-                    let _e164 = airlight_integrate_piece(s_10, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
+                    let _e164 = airlight_integrate_piece(s_9, g_14, sigma_10, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 let _e166 = hi_2;
@@ -2650,7 +2647,7 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_1: f32, x_7: f32, j_3: 
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_1)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_10: AirlightScene, g_15: AirlightCanonical) -> f32 {
     var local_27: bool;
     var span: f32;
     var e2_: array<f32, 10>;
@@ -2663,38 +2660,38 @@ fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
     }
     let _e10 = local_27;
     if _e10 {
-        let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
-        let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
+        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_15.d_el));
+        let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
         let f_2 = (_e16 * _e22);
         let r0_ = (g_15.x_h - g_15.t_lo);
         let r1_1 = (g_15.x_h - g_15.t_hi);
-        let _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
+        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_15.d_el);
-    let _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1f);
+    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_15.d_el);
+    let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
     let f_3 = (_e46 * _e52);
     let s0_ = (g_15.t_lo - g_15.x_h);
     let s1_ = (g_15.t_hi - g_15.x_h);
-    if (s_11.sigma_t == 0f) {
+    if (s_10.sigma_t == 0f) {
         span = (1f / s0_);
         if !(g_15.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, 0f, (f_3 * _e75));
+        let _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, 0f, (f_3 * _e75));
         return _e77;
     }
-    let two_st = (s_11.sigma_t + s_11.sigma_t);
+    let two_st = (s_10.sigma_t + s_10.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if !(g_15.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -2716,7 +2713,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_11: AirlightScene, g_16: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -2762,19 +2759,19 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_12, g_16, -1f, _e9);
+    let _e54 = airlight_integrand(s_11, g_16, -1f, _e9);
     let _e55 = airlight_moment_zero(half_13);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_12.sigma_t > 0f) {
-            x_8 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+        if (s_11.sigma_t > 0f) {
+            x_8 = (s_11.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_2, _e72, j_5);
+    let _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_2, _e72, j_5);
     return _e73;
 }
 
@@ -2786,7 +2783,7 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_12: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
@@ -2831,7 +2828,7 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e10 = local_30;
     if !(!(_e10)) {
-        local_31 = ((s_13.sigma_s * s_13.intensity) == 0f);
+        local_31 = ((s_12.sigma_s * s_12.intensity) == 0f);
     } else {
         local_31 = true;
     }
@@ -2868,16 +2865,16 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e55 = local_34;
     if _e55 {
-        let _e56 = airlight_on_line(s_13, g_17);
+        let _e56 = airlight_on_line(s_12, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_3 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_13.sigma_t * h_3);
-    if !((s_13.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = (s_13.light_param_a == 0f);
+    let big_h_5 = (s_12.sigma_t * h_3);
+    if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_36 = (s_12.light_param_a == 0f);
         } else {
             local_36 = false;
         }
@@ -2888,15 +2885,15 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e85 = local_35;
     if _e85 {
-        if !((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             let _e104 = local_39;
             if _e104 {
-                local_40 = (s_13.phase_param_a == 0f);
+                local_40 = (s_12.phase_param_a == 0f);
             } else {
                 local_40 = false;
             }
@@ -2930,7 +2927,7 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
     }
     let _e131 = local_42;
     if _e131 {
-        let _e132 = airlight_whole_line(s_13, g_17, big_h_5);
+        let _e132 = airlight_whole_line(s_12, g_17, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -2973,9 +2970,9 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
             }
         }
         let _e199 = half_11;
-        let _e200 = airlight_half(s_13, g_17, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e200 = airlight_half(s_12, g_17, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_17.t_hi_infinite) {
@@ -3067,9 +3064,9 @@ fn airlight_in_scatter_canonical(s_13: AirlightScene, g_17: AirlightCanonical) -
             }
         }
         let _e313 = half_12;
-        let _e314 = airlight_half(s_13, g_17, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e314 = airlight_half(s_12, g_17, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3126,7 +3123,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_14: AirlightScene) -> bool {
+fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
@@ -3162,96 +3159,96 @@ fn airlight_valid(s_14: AirlightScene) -> bool {
     var local_87: bool;
     var local_88: bool;
 
-    let _e2 = airlight_vec_finite(s_14.origin);
+    let _e2 = airlight_vec_finite(s_13.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_14.dir);
+        let _e6 = airlight_vec_finite(s_13.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     let _e8 = local_56;
     if _e8 {
-        let _e12 = airlight_normalisable(s_14.dir);
+        let _e12 = airlight_normalisable(s_13.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     let _e14 = local_57;
     if _e14 {
-        let _e18 = airlight_is_finite(s_14.t_min);
+        let _e18 = airlight_is_finite(s_13.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     let _e20 = local_58;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_14.light_position);
+        let _e24 = airlight_vec_finite(s_13.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     let _e26 = local_59;
     if _e26 {
-        let _e30 = airlight_is_finite(s_14.intensity);
+        let _e30 = airlight_is_finite(s_13.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     let _e32 = local_60;
     if _e32 {
-        local_61 = (s_14.intensity >= 0f);
+        local_61 = (s_13.intensity >= 0f);
     } else {
         local_61 = false;
     }
     let _e39 = local_61;
     if _e39 {
-        let _e43 = airlight_is_finite(s_14.sigma_s);
+        let _e43 = airlight_is_finite(s_13.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     let _e45 = local_62;
     if _e45 {
-        local_63 = (s_14.sigma_s >= 0f);
+        local_63 = (s_13.sigma_s >= 0f);
     } else {
         local_63 = false;
     }
     let _e52 = local_63;
     if _e52 {
-        let _e56 = airlight_is_finite(s_14.sigma_t);
+        let _e56 = airlight_is_finite(s_13.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     let _e58 = local_64;
     if _e58 {
-        local_65 = (s_14.sigma_t >= 0f);
+        local_65 = (s_13.sigma_t >= 0f);
     } else {
         local_65 = false;
     }
     let _e65 = local_65;
     ok = _e65;
-    if ((s_14.flags & 1u) == 0u) {
+    if ((s_13.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_14.t_max);
+            let _e76 = airlight_is_finite(s_13.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         let _e78 = local_66;
         if _e78 {
-            local_67 = (s_14.t_min <= s_14.t_max);
+            local_67 = (s_13.t_min <= s_13.t_max);
         } else {
             local_67 = false;
         }
         let _e85 = local_67;
         ok = _e85;
     }
-    if (s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_14.light_end);
+            let _e93 = airlight_vec_finite(s_13.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3259,39 +3256,39 @@ fn airlight_valid(s_14: AirlightScene) -> bool {
         let _e95 = local_68;
         ok = _e95;
     } else {
-        if (s_14.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_is_finite(s_14.brdf_albedo);
+            let _e107 = airlight_is_finite(s_13.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         let _e109 = local_69;
         if _e109 {
-            local_70 = (s_14.brdf_albedo >= 0f);
+            local_70 = (s_13.brdf_albedo >= 0f);
         } else {
             local_70 = false;
         }
         let _e116 = local_70;
         if _e116 {
-            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         let _e123 = local_71;
         if _e123 {
-            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         let _e130 = local_72;
         if _e130 {
-            let _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
+            let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
             let _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3300,89 +3297,89 @@ fn airlight_valid(s_14: AirlightScene) -> bool {
         let _e139 = local_73;
         ok = _e139;
     } else {
-        if (s_14.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e147 = ok;
         if _e147 {
-            let _e151 = airlight_vec_finite(s_14.light_axis);
+            let _e151 = airlight_vec_finite(s_13.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         let _e153 = local_74;
         if _e153 {
-            let _e157 = airlight_normalisable(s_14.light_axis);
+            let _e157 = airlight_normalisable(s_13.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         let _e159 = local_75;
         if _e159 {
-            local_76 = (s_14.light_param_a >= 0f);
+            local_76 = (s_13.light_param_a >= 0f);
         } else {
             local_76 = false;
         }
         let _e166 = local_76;
         if _e166 {
-            local_77 = (s_14.light_param_a <= 1024f);
+            local_77 = (s_13.light_param_a <= 1024f);
         } else {
             local_77 = false;
         }
         let _e173 = local_77;
         if _e173 {
-            local_78 = (fract((s_14.light_param_a * 0.5f)) == 0f);
+            local_78 = (fract((s_13.light_param_a * 0.5f)) == 0f);
         } else {
             local_78 = false;
         }
         let _e183 = local_78;
         ok = _e183;
     } else {
-        if (s_14.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
-                let _e191 = airlight_vec_finite(s_14.light_axis);
+                let _e191 = airlight_vec_finite(s_13.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             let _e193 = local_79;
             if _e193 {
-                let _e197 = airlight_normalisable(s_14.light_axis);
+                let _e197 = airlight_normalisable(s_13.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             let _e199 = local_80;
             if _e199 {
-                local_81 = (s_14.light_param_b < s_14.light_param_a);
+                local_81 = (s_13.light_param_b < s_13.light_param_a);
             } else {
                 local_81 = false;
             }
             let _e206 = local_81;
             if _e206 {
-                local_82 = (s_14.light_param_b >= -1f);
+                local_82 = (s_13.light_param_b >= -1f);
             } else {
                 local_82 = false;
             }
             let _e213 = local_82;
             if _e213 {
-                local_83 = (s_14.light_param_a <= 1f);
+                local_83 = (s_13.light_param_a <= 1f);
             } else {
                 local_83 = false;
             }
             let _e220 = local_83;
             ok = _e220;
         } else {
-            if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_14.phase_param_a) < 1f);
-    switch s_14.phase_kind {
+    let g_ok = (abs(s_13.phase_param_a) < 1f);
+    switch s_13.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -3404,19 +3401,19 @@ fn airlight_valid(s_14: AirlightScene) -> bool {
             }
             let _e239 = local_85;
             if _e239 {
-                local_86 = (abs(s_14.phase_param_b) < 1f);
+                local_86 = (abs(s_13.phase_param_b) < 1f);
             } else {
                 local_86 = false;
             }
             let _e247 = local_86;
             if _e247 {
-                local_87 = (s_14.phase_param_c >= 0f);
+                local_87 = (s_13.phase_param_c >= 0f);
             } else {
                 local_87 = false;
             }
             let _e254 = local_87;
             if _e254 {
-                local_88 = (s_14.phase_param_c <= 1f);
+                local_88 = (s_13.phase_param_c <= 1f);
             } else {
                 local_88 = false;
             }
@@ -3431,16 +3428,16 @@ fn airlight_valid(s_14: AirlightScene) -> bool {
     return _e263;
 }
 
-fn airlight_canonical(s_15: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_15.dir);
-    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_15.light_axis);
+    let _e2 = airlight_normalize(s_14.dir);
+    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_14.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_15.light_position - s_15.origin);
+    let to_light = (s_14.light_position - s_14.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -3448,10 +3445,10 @@ fn airlight_canonical(s_15: AirlightScene) -> AirlightCanonical {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_15.flags & 1u) != 0u);
+    let infinite_3 = ((s_14.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, select(s_15.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, select(s_14.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -3510,19 +3507,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_16: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_91: bool;
     var out_2: AirlightCanonical;
     var local_92: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_16.flags > 1u));
-    let _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
+    let key_4 = u32((s_15.flags > 1u));
+    let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
     let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_16.dir;
+    let dir_2 = s_15.dir;
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
@@ -3562,8 +3559,8 @@ fn airlight_refined(s_16: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_16.light_axis);
+    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_15.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
@@ -3723,12 +3720,12 @@ fn airlight_asinh(x_11: f32) -> f32 {
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_18: AirlightOuter, s_17: f32) -> f32 {
+fn airlight_to_w(g_18: AirlightOuter, s_16: f32) -> f32 {
     if (g_18.scale > 0f) {
-        let _e9 = airlight_asinh(((s_17 - g_18.s_star) / g_18.scale));
+        let _e9 = airlight_asinh(((s_16 - g_18.s_star) / g_18.scale));
         return _e9;
     }
-    return s_17;
+    return s_16;
 }
 
 fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
@@ -3745,20 +3742,20 @@ fn airlight_acos(x_13: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_18: f32) -> f32 {
-    if (s_18 <= c_6) {
-        let _e4 = airlight_atan((s_18 / c_6));
+fn airlight_angle(c_6: f32, s_17: f32) -> f32 {
+    if (s_17 <= c_6) {
+        let _e4 = airlight_atan((s_17 / c_6));
         return _e4;
     }
-    if (s_18 <= -(c_6)) {
-        let _e10 = airlight_atan((s_18 / -(c_6)));
+    if (s_17 <= -(c_6)) {
+        let _e10 = airlight_atan((s_17 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if (c_6 >= 0f) {
-        let _e16 = airlight_atan((c_6 / s_18));
+        let _e16 = airlight_atan((c_6 / s_17));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_6) / s_18));
+    let _e21 = airlight_atan((-(c_6) / s_17));
     return (1.5707964f + _e21);
 }
 
@@ -3772,11 +3769,11 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_19: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_19.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
 }
 
-fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
+fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     var g_19: AirlightOuter;
     var local_93: bool;
     var u: vec3<f32>;
@@ -3786,12 +3783,12 @@ fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
     var local_94: bool;
     var i_18: u32 = 0u;
 
-    let _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
+    let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
     g_19 = _e2;
-    let to_light_1 = (s_20.light_position - s_20.origin);
+    let to_light_1 = (s_19.light_position - s_19.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_20.intensity == 0f)) {
-        local_93 = (s_20.sigma_s == 0f);
+    if !((s_19.intensity == 0f)) {
+        local_93 = (s_19.sigma_s == 0f);
     } else {
         local_93 = true;
     }
@@ -3806,13 +3803,13 @@ fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
         let _e27 = g_19;
         return _e27;
     }
-    if (s_20.brdf_albedo == 0f) {
+    if (s_19.brdf_albedo == 0f) {
         g_19.outcome = 1u;
         let _e33 = g_19;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_20.dir);
+    let _e37 = airlight_normalize(s_19.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -3896,7 +3893,7 @@ fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
     return _e149;
 }
 
-fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
     var local_95: bool;
     var local_96: bool;
@@ -3924,26 +3921,26 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     var i_20: u32 = 0u;
     var local_111: bool;
 
-    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_21);
+    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_20);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
+    let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
     g_20 = _e6;
-    if (s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         let _e11 = g_20;
         return _e11;
     }
-    let ab_1 = (s_21.light_end - s_21.light_position);
+    let ab_1 = (s_20.light_end - s_20.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_95 = (s_21.intensity == 0f);
+        local_95 = (s_20.intensity == 0f);
     } else {
         local_95 = true;
     }
     let _e26 = local_95;
     if !(_e26) {
-        local_96 = (s_21.sigma_s == 0f);
+        local_96 = (s_20.sigma_s == 0f);
     } else {
         local_96 = true;
     }
@@ -3954,13 +3951,13 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_21.dir);
-    let w0_ = (s_21.light_position - s_21.origin);
+    let _e41 = airlight_normalize(s_20.dir);
+    let w0_ = (s_20.light_position - s_20.origin);
     let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_21.flags & 1u) != 0u);
+    let infinite_4 = ((s_20.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -3992,7 +3989,7 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     let _e97 = local_99;
     if _e97 {
         let _e101 = t_star;
-        local_100 = (s_21.t_min <= _e101);
+        local_100 = (s_20.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4000,7 +3997,7 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_102 = (_e110 <= s_21.t_max);
+            local_102 = (_e110 <= s_20.t_max);
         } else {
             local_102 = true;
         }
@@ -4068,7 +4065,7 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     let _e172 = scale;
     g_20.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     loop {
         let _e189 = i_19;
         if (_e189 < 3u) {
@@ -4190,15 +4187,15 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_21: AirlightScene, g_21: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_22;
+    p = s_21;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let i_21 = min(u32(max(floor(x_14), 0f)), (g_21.panels - 1u));
         let t_6 = (x_14 - f32(i_21));
         let a_24 = g_21.gamma[i_21];
@@ -4222,9 +4219,9 @@ fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_14: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
         if (g_21.scale > 0f) {
             at_1 = (g_21.s_star + (g_21.scale * sinh(x_14)));
@@ -4240,7 +4237,7 @@ fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_14: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4265,11 +4262,11 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
     var local_117: bool;
     var local_118: bool;
 
-    let _e1 = airlight_valid(s_23);
+    let _e1 = airlight_valid(s_22);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_23);
+    let _e6 = airlight_outer(s_22);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4314,7 +4311,7 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
                     }
                     let _e100 = local_112;
                     let w_5 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_23, _e6, w_5);
+                    let _e102 = airlight_outer_node(s_22, _e6, w_5);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
@@ -4345,8 +4342,8 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }

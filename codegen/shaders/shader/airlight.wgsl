@@ -743,10 +743,9 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, AIRLIGHT_TERMS> {
         let per_step = x * x;
         var share = per_step;
         var steps = 1u;
-        for (var s = 1u; s < 28u; s++) {
+        for (; steps < 28u; steps++) {
             if (!(share > AIRLIGHT_FLT_EPS)) { break; }
             share *= per_step;
-            steps += 1u;
         }
         let top = k0 + steps + 2u;
         var above = 0.0;
