@@ -28,9 +28,10 @@ algebraically (5.9e-6, 2.1e-6, 1.4e-7 between 6, 8, 12 and 16 nodes on a thick o
 1.3e-8 and 6.3e-11 between 6, 8 and 12). One near and one inside sphere need 32 and 48 nodes
 (about an hour each on one core) and are not in area.jsonl yet.
 
-Usage: python3 tests/reference/gen_area.py [--shapes sphere] [--missing]     (numpy and mpmath;
-`--missing`: only the records area.jsonl lacks; several hours for everything on two cores, most
-of it the spheres near the ray, in thick media and around the ray's start)
+Usage: python3 tests/reference/gen_area.py [--shapes sphere] [--missing] [--jobs 2]     (numpy
+and mpmath; `--missing`: only the records area.jsonl lacks; several hours for everything on two
+cores, most of it the spheres near the ray, in thick media and around the ray's start; each record
+is written as it completes, so an interrupted run resumes with `--missing`)
 """
 import math
 import random
@@ -453,7 +454,7 @@ def scenes():
 
 def run(args):
     i, r = args
-    return reference(r, random.Random(7 + i))
+    return i, reference(r, random.Random(7 + i))
 
 
 def main():
@@ -468,6 +469,7 @@ def main():
         shapes = set(sys.argv[sys.argv.index("--shapes") + 1].split(","))
     kept = {}
     missing = "--missing" in sys.argv
+    jobs = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 2
     if missing and shapes is None:
         shapes = {r["light"]["shape"] for r in records}
     if shapes is not None:
@@ -478,24 +480,27 @@ def main():
             kept[key] = r["in_scatter"]
     todo = [(i, r) for i, r in enumerate(records)
             if (shapes is None or r["light"]["shape"] in shapes) and not (missing and json.dumps(r, sort_keys=True) in kept)]
-    with Pool(2) as pool:
-        results = dict(zip([i for i, _ in todo], pool.map(run, todo)))
-    lines = []
-    for i, r in enumerate(records):
-        if i not in results:
-            value = kept.get(json.dumps(r, sort_keys=True))
-            if value is not None:
-                r["in_scatter"] = value
-                lines.append(r)
-            continue
-        value, coarse, fine, check = results[i]
-        status = "kept" if value is not None else "DROPPED"
-        print(f"{r['category']:>8} {r['light']['shape']:>9} {status} {fine:.17e} (coarse {abs(coarse - fine) / abs(fine):.1e}, L_point vs mpmath {check:.1e})", flush=True)
-        if value is not None:
-            r["in_scatter"] = value
-            lines.append(r)
-    print(f"{write_jsonl('area.jsonl', lines)} records")
+    results = {}
 
+    def write():
+        """area.jsonl in scene order: the records computed so far, the rest as it had them."""
+        lines = []
+        for i, r in enumerate(records):
+            value = results[i][0] if i in results else kept.get(json.dumps(r, sort_keys=True))
+            if value is not None:
+                lines.append(dict(r, in_scatter=value))
+        return write_jsonl("area.jsonl", lines)
+
+    # each record is written as it completes, so an interrupted `--missing` run resumes
+    with Pool(jobs) as pool:
+        for i, result in pool.imap_unordered(run, todo):
+            results[i] = result
+            r = records[i]
+            value, coarse, fine, check = result
+            status = "kept" if value is not None else "DROPPED"
+            print(f"{r['category']:>8} {r['light']['shape']:>9} {status} {fine:.17e} (coarse {abs(coarse - fine) / abs(fine):.1e}, L_point vs mpmath {check:.1e})", flush=True)
+            write()
+    print(f"{write()} records")
 
 if __name__ == "__main__":
     main()
