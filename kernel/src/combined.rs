@@ -113,6 +113,32 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     fn eval_over_reciprocal(&self, v: T) -> (T, T) {
         HalfIntegrand { sigma: -self.sigma, ..*self }.with_over(v)
     }
+    /// `c(y)` and `μ(y)` have poles at `y = ±i`; a phase singularity at `μ*` is where
+    /// `−σ(1 − y²)/(1 + y²) = μ*`, i.e. `y² = (1 − κ)/(1 + κ)` with `κ = −μ*/σ`, `|κ| > 1`:
+    /// `y = ±i√((κ − 1)/(κ + 1))`, from the gap `|μ*| − 1` without cancellation.
+    fn singular_heights(&self) -> Option<[T; 3]> {
+        if !self.light.is_entire() {
+            return None;
+        }
+        let [a, b] = self.phase.singular_cosines()?;
+        let height = |mu: T| {
+            let gap = mu.abs() - T::one();
+            if !(gap > T::zero()) {
+                return T::zero();
+            }
+            if !gap.is_finite() {
+                return T::one();
+            }
+            let two = T::lit(2.0);
+            // κ > 0 when μ* and −σ agree in sign
+            if (mu > T::zero()) == (self.sigma < T::zero()) {
+                (gap / (two + gap)).sqrt()
+            } else {
+                ((two + gap) / gap).sqrt()
+            }
+        };
+        Some([T::one(), height(a), height(b)])
+    }
 }
 
 /// How `F` is integrated on each half.
@@ -515,5 +541,30 @@ fn on_line<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>>(
         };
         // head ≥ tail in exact arithmetic; ∞ − ∞ (both overflowing) means the value overflows
         if head.is_infinite() { head } else { head - tail }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::Omni;
+    use crate::phase::HenyeyGreenstein;
+
+    /// The heights `t` the integrand declares are where `μ(y) = −σ(1 − y²)/(1 + y²)` reaches the
+    /// phase function's singular cosine: at `y = it`, `μ = −σ(1 + t²)/(1 − t²)`; on both halves
+    /// (`σ = ∓1`) and for lobes either way, including a near-peak `g = 0.999`.
+    #[test]
+    fn singular_heights_meet_the_phase_poles() {
+        for g in [-0.999f64, -0.6, 0.2, 0.9, 0.999] {
+            let phase = HenyeyGreenstein { g };
+            let mu_star = phase.singular_cosines().unwrap()[0];
+            for sigma in [-1.0f64, 1.0] {
+                let f = HalfIntegrand { sigma, exact_sides: true, d_el: 0.3, d_c: 0.5, light: &Omni, phase: &phase };
+                let [one, t, _] = f.singular_heights().unwrap();
+                assert_eq!(one, 1.0);
+                let mu = -sigma * (1.0 + t * t) / (1.0 - t * t);
+                assert!((mu - mu_star).abs() <= 1e-9 * mu_star.abs(), "g = {g}, σ = {sigma}: t = {t}, μ(it) = {mu}, μ* = {mu_star}");
+            }
+        }
     }
 }

@@ -31,6 +31,13 @@ pub trait LightDistribution<T: Real> {
     fn dark_below(&self) -> Option<T> {
         None
     }
+    /// `true` if `D` is a polynomial in `c` on each piece between its [`kinks`](Self::kinks)
+    /// (an entire function would do): along a ray `D(c(y))` is then singular only where `c` is,
+    /// at `y = ±i`, and the error-controlled path knows how fast its panels' coefficients must
+    /// fall. The default `false` keeps the estimate that assumes nothing.
+    fn is_entire(&self) -> bool {
+        false
+    }
     /// Checks the parameters; the checked API calls it.
     fn validate(&self) -> Result<(), InputError> {
         Ok(())
@@ -49,6 +56,9 @@ impl<T: Real> LightDistribution<T> for Omni {
         S::cst(T::one())
     }
     fn is_isotropic(&self) -> bool {
+        true
+    }
+    fn is_entire(&self) -> bool {
         true
     }
 }
@@ -77,6 +87,9 @@ impl<T: Real> LightDistribution<T> for TwoLobed<T> {
     }
     fn is_isotropic(&self) -> bool {
         self.power == 0
+    }
+    fn is_entire(&self) -> bool {
+        true
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
@@ -138,6 +151,10 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         let width = self.cos_inner - self.cos_outer;
         Some(if width <= T::epsilon() { self.cos_outer + width * T::lit(0.5) } else { self.cos_outer })
     }
+    fn is_entire(&self) -> bool {
+        // 0, the smoothstep's cubic or 1 between the kinks
+        true
+    }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
         check_finite(self.cos_inner, "light.distribution.cos_inner")?;
@@ -180,6 +197,9 @@ impl<T: Real> LightDistribution<T> for Lambertian<T> {
     }
     fn dark_below(&self) -> Option<T> {
         Some(T::zero())
+    }
+    fn is_entire(&self) -> bool {
+        true
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)
@@ -230,6 +250,9 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
             AnyDistribution::SpotCone(d) => d.dark_below(),
             _ => None,
         }
+    }
+    fn is_entire(&self) -> bool {
+        true
     }
     fn validate(&self) -> Result<(), InputError> {
         match self {

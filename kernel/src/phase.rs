@@ -25,6 +25,14 @@ pub trait PhaseFunction<T: Real> {
     fn is_isotropic(&self) -> bool {
         false
     }
+    /// The cosines outside `[−1, 1]` where `P`, continued to complex `μ`, is singular (`±∞`
+    /// for none; two at most), or `None` when they are not known (the default). A lobe that
+    /// peaks at `μ = ±1` has one just beyond: Henyey–Greenstein at `(1 + g²)/(2g)`. With them
+    /// the error-controlled path knows how fast its panels' coefficients must fall and trusts
+    /// their tail (docs/DESIGN.md, the panels' estimate); without, it assumes nothing.
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        None
+    }
     /// Checks the parameters; the checked API calls it.
     fn validate(&self) -> Result<(), InputError> {
         Ok(())
@@ -60,6 +68,22 @@ fn hg_kernel<T: Real, S: Scalar<T>>(g: T, one_minus_mu: S, one_plus_mu: S) -> S 
     (base * base.sqrt()).recip()
 }
 
+/// `(1 + g²)/(2g) = ±(1 + (1 − |g|)²/(2|g|))`, where the Henyey–Greenstein kernel
+/// `(1 + g² − 2gμ)^{−3/2}` is singular (`+∞` at `g = 0`), its offset from `±1` without cancellation.
+fn hg_singular_cosine<T: Real>(g: T) -> T {
+    let a = g.abs();
+    if a == T::zero() {
+        return T::infinity();
+    }
+    let gap = (T::one() - a) * (T::one() - a) / (a + a);
+    (T::one() + gap).copysign(g)
+}
+
+/// No singularity at finite `μ`.
+fn entire<T: Real>() -> Option<[T; 2]> {
+    Some([T::infinity(), T::infinity()])
+}
+
 /// `1 − g²` as `(1 − g)(1 + g)`: exact factors, no cancellation for `|g| → 1`.
 fn one_minus_sq<T: Real>(g: T) -> T {
     (T::one() - g) * (T::one() + g)
@@ -76,6 +100,9 @@ impl<T: Real> PhaseFunction<T> for Isotropic {
     fn is_isotropic(&self) -> bool {
         true
     }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        entire()
+    }
 }
 
 /// Rayleigh scattering, `P = 3/(16π) (1 + μ²)`.
@@ -85,6 +112,9 @@ pub struct Rayleigh;
 impl<T: Real> PhaseFunction<T> for Rayleigh {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
         (mu * mu).shift(T::one()).scale(T::lit(3.0 / 16.0) * T::FRAC_1_PI())
+    }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        entire()
     }
 }
 
@@ -106,6 +136,9 @@ impl<T: Real> PhaseFunction<T> for HenyeyGreenstein<T> {
     }
     fn is_isotropic(&self) -> bool {
         self.g == T::zero()
+    }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        Some([hg_singular_cosine(self.g), T::infinity()])
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g, "phase.g")
@@ -135,6 +168,12 @@ impl<T: Real> PhaseFunction<T> for Schlick<T> {
     fn is_isotropic(&self) -> bool {
         self.k == T::zero()
     }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        // 1 − kμ = 0 at μ = 1/k = ±(1 + (1 − |k|)/|k|)
+        let a = self.k.abs();
+        let mu = if a == T::zero() { T::infinity() } else { (T::one() + (T::one() - a) / a).copysign(self.k) };
+        Some([mu, T::infinity()])
+    }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.k, "phase.k")
     }
@@ -157,6 +196,9 @@ impl<T: Real> PhaseFunction<T> for CornetteShanks<T> {
         let g = self.g;
         let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * one_minus_sq(g) / (T::lit(2.0) + g * g);
         (hg_kernel(g, one_minus_mu, one_plus_mu) * (mu * mu).shift(T::one())).scale(k)
+    }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        Some([hg_singular_cosine(self.g), T::infinity()])
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g, "phase.g")
@@ -187,6 +229,9 @@ impl<T: Real> PhaseFunction<T> for TwoLobeHenyeyGreenstein<T> {
     }
     fn is_isotropic(&self) -> bool {
         self.g1 == T::zero() && self.g2 == T::zero()
+    }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        Some([hg_singular_cosine(self.g1), hg_singular_cosine(self.g2)])
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g1, "phase.g1")?;
@@ -237,6 +282,16 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
             AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
         }
     }
+    fn singular_cosines(&self) -> Option<[T; 2]> {
+        match self {
+            AnyPhase::Isotropic => Isotropic.singular_cosines(),
+            AnyPhase::Rayleigh => Rayleigh.singular_cosines(),
+            AnyPhase::HenyeyGreenstein(p) => p.singular_cosines(),
+            AnyPhase::Schlick(p) => p.singular_cosines(),
+            AnyPhase::CornetteShanks(p) => p.singular_cosines(),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.singular_cosines(),
+        }
+    }
     fn is_isotropic(&self) -> bool {
         match self {
             AnyPhase::Isotropic => true,
@@ -261,6 +316,28 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The declared singular cosines are where the closed forms' denominators vanish:
+    /// `1 + g² − 2gμ` (Henyey–Greenstein, Cornette–Shanks, both lobes of the two-lobed one) and
+    /// `1 − kμ` (Schlick), to a few ulps of their terms; none for the polynomial ones.
+    #[test]
+    fn singular_cosines_are_the_poles() {
+        for g in [-0.99f64, -0.5, 0.3, 0.9, 0.999] {
+            let [mu, none] = HenyeyGreenstein { g }.singular_cosines().unwrap();
+            assert!((1.0 + g * g - 2.0 * g * mu).abs() <= 4.0 * f64::EPSILON * (1.0 + g * g), "HG g = {g}: μ* = {mu}");
+            assert!(mu.abs() > 1.0 && none.is_infinite());
+            assert_eq!(CornetteShanks { g }.singular_cosines().unwrap()[0], mu);
+            let [a, b] = TwoLobeHenyeyGreenstein { g1: g, g2: -0.5 * g, w: 0.7 }.singular_cosines().unwrap();
+            assert!((1.0 + 0.25 * g * g + g * b).abs() <= 4.0 * f64::EPSILON * (1.0 + g * g) && a == mu);
+            let k = g;
+            let [mu, _] = Schlick { k }.singular_cosines().unwrap();
+            assert!((1.0 - k * mu).abs() <= 4.0 * f64::EPSILON, "Schlick k = {k}: μ* = {mu}");
+        }
+        assert!(HenyeyGreenstein { g: 0.0f64 }.singular_cosines().unwrap()[0].is_infinite());
+        for p in [PhaseFunction::<f64>::singular_cosines(&Isotropic), PhaseFunction::<f64>::singular_cosines(&Rayleigh)] {
+            assert!(p.unwrap().iter().all(|m| m.is_infinite()));
+        }
+    }
 
     /// Every phase function integrates to 1 over the sphere, `2π ∫_{−1}^{1} P(μ) dμ = 1`
     /// (composite Simpson, 20 000 intervals; the peaked ones at moderate asymmetry so that
