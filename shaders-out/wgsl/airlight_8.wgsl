@@ -99,6 +99,7 @@ const AIRLIGHT_PANEL_FLOOR: f32 = 0.0001f;
 const AIRLIGHT_MAX_PANELS: u32 = 16u;
 const AIRLIGHT_PANEL_LIST: u32 = 8u;
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = 4f;
+const AIRLIGHT_ALIASING_MARGIN: u32 = 3u;
 const AIRLIGHT_EXACT_RANGE: f32 = 1073741800f;
 const AIRLIGHT_PI: f32 = 3.1415927f;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772157f;
@@ -152,13 +153,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_5 = (b_1.y / b_1.x);
-        let inv = (1f / (b_1.x + (b_1.y * r_5)));
-        return vec2<f32>(((a_1.x + (a_1.y * r_5)) * inv), ((a_1.y - (a_1.x * r_5)) * inv));
+        let r_6 = (b_1.y / b_1.x);
+        let inv = (1f / (b_1.x + (b_1.y * r_6)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
     }
-    let r_6 = (b_1.x / b_1.y);
-    let inv_1 = (1f / ((b_1.x * r_6) + b_1.y));
-    return vec2<f32>((((a_1.x * r_6) + a_1.y) * inv_1), (((a_1.y * r_6) - a_1.x) * inv_1));
+    let r_7 = (b_1.x / b_1.y);
+    let inv_1 = (1f / ((b_1.x * r_7) + b_1.y));
+    return vec2<f32>((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -183,11 +184,11 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_3 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_3, (z_1.y / (t_3 + t_3)));
+        let t_4 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_4, (z_1.y / (t_4 + t_4)));
     }
-    let t_4 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_4 + t_4)), select(-(t_4), t_4, (z_1.y >= 0f)));
+    let t_5 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_5 + t_5)), select(-(t_5), t_5, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -296,8 +297,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_22 = (x_2 / (2f + x_2));
-    let s2_ = (s_22 * s_22);
+    let s_23 = (x_2 / (2f + x_2));
+    let s2_ = (s_23 * s_23);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -315,7 +316,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_22) * _e35);
+    return ((2f * s_23) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -785,33 +786,81 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
     }
 }
 
-fn airlight_integrand_over(s_1: AirlightScene, g_2: AirlightCanonical, sigma: f32, y_1: f32) -> vec2<f32> {
+fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
+    if !((gap > 0f)) {
+        return 0f;
+    }
+    if ((side > 0f) == (sigma < 0f)) {
+        return sqrt((gap / (2f + gap)));
+    }
+    return sqrt(((2f + gap) / gap));
+}
+
+fn airlight_hg_gap(g_2: f32) -> f32 {
+    let a_19 = abs(g_2);
+    if !((a_19 > 0f)) {
+        return AIRLIGHT_FLT_MAX;
+    }
+    return (((1f - a_19) * (1f - a_19)) / (a_19 + a_19));
+}
+
+fn airlight_singular_heights(s_1: AirlightScene, sigma_1: f32) -> vec3<f32> {
+    var h_1: vec3<f32> = vec3(1f);
+
+    let p0_3 = s_1.phase_param_a;
+    switch s_1.phase_kind {
+        case 2u, 4u: {
+            let _e8 = airlight_hg_gap(p0_3);
+            let _e9 = airlight_singular_height(p0_3, _e8, sigma_1);
+            h_1.y = _e9;
+        }
+        case 3u: {
+            let a_20 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_20) / a_20), (a_20 > 0f)), sigma_1);
+            h_1.y = _e19;
+        }
+        case 5u: {
+            let _e21 = airlight_hg_gap(p0_3);
+            let _e22 = airlight_singular_height(p0_3, _e21, sigma_1);
+            h_1.y = _e22;
+            let _e26 = airlight_hg_gap(s_1.phase_param_b);
+            let _e27 = airlight_singular_height(s_1.phase_param_b, _e26, sigma_1);
+            h_1.z = _e27;
+        }
+        default: {
+        }
+    }
+    let _e28 = h_1;
+    return _e28;
+}
+
+fn airlight_integrand_over(s_2: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
     let y2_ = (y_1 * y_1);
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
-    let mu_2 = (-(sigma) * (om_3 * inv_2));
-    let c_7 = ((((sigma * g_2.d_el) * om_3) + ((2f * g_2.d_c) * y_1)) * inv_2);
+    let mu_2 = (-(sigma_2) * (om_3 * inv_2));
+    let c_8 = ((((sigma_2 * g_3.d_el) * om_3) + ((2f * g_3.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
     plus = far;
-    if (sigma < 0f) {
+    if (sigma_2 < 0f) {
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_1.light_kind, s_1.light_param_a, s_1.light_param_b, c_7);
+    let _e35 = airlight_light(s_2.light_kind, s_2.light_param_a, s_2.light_param_b, c_8);
     let _e40 = minus;
     let _e41 = plus;
-    let _e42 = airlight_phase(s_1.phase_kind, s_1.phase_param_a, s_1.phase_param_b, s_1.phase_param_c, mu_2, _e40, _e41);
+    let _e42 = airlight_phase(s_2.phase_kind, s_2.phase_param_a, s_2.phase_param_b, s_2.phase_param_c, mu_2, _e40, _e41);
     let f_1 = (_e35 * _e42);
     return vec2<f32>(f_1, inv_2);
 }
 
-fn airlight_integrand(s_2: AirlightScene, g_3: AirlightCanonical, sigma_1: f32, y_2: f32) -> f32 {
-    let _e4 = airlight_integrand_over(s_2, g_3, sigma_1, y_2);
+fn airlight_integrand(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_3, g_4, sigma_3, y_2);
     return _e4.x;
 }
 
@@ -996,15 +1045,15 @@ fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
     return select(x_18, -(x_18), ((i_3 % 2u) == 0u));
 }
 
-fn airlight_legendre(g_4: array<f32, 8>) -> array<f32, 8> {
-    let even0_ = (g_4[1] + g_4[0]);
-    let odd0_ = (g_4[1] - g_4[0]);
-    let even1_ = (g_4[3] + g_4[2]);
-    let odd1_ = (g_4[3] - g_4[2]);
-    let even2_ = (g_4[5] + g_4[4]);
-    let odd2_ = (g_4[5] - g_4[4]);
-    let even3_ = (g_4[7] + g_4[6]);
-    let odd3_ = (g_4[7] - g_4[6]);
+fn airlight_legendre(g_5: array<f32, 8>) -> array<f32, 8> {
+    let even0_ = (g_5[1] + g_5[0]);
+    let odd0_ = (g_5[1] - g_5[0]);
+    let even1_ = (g_5[3] + g_5[2]);
+    let odd1_ = (g_5[3] - g_5[2]);
+    let even2_ = (g_5[5] + g_5[4]);
+    let odd2_ = (g_5[5] - g_5[4]);
+    let even3_ = (g_5[7] + g_5[6]);
+    let odd3_ = (g_5[7] - g_5[6]);
     return array<f32, 8>(((((0.18134189f * even0_) + (0.15685332f * even1_)) + (0.11119052f * even2_)) + (0.050614268f * even3_)), ((((0.09979316f * odd0_) + (0.24729452f * odd1_)) + (0.26574528f * odd2_)) + (0.14581311f * odd3_)), ((((-0.40759093f * even0_) + (-0.067230105f * even1_)) + (0.2512996f * even2_)) + (0.22352144f * even3_)), ((((-0.3296885f * odd0_) + (-0.46712074f * odd1_)) + (0.053756356f * odd2_)) + (0.27401882f * odd3_)), ((((0.4141761f * even0_) + (-0.4615853f * even1_)) + (-0.24289618f * even2_)) + (0.2903054f * even3_)), ((((0.5816089f * odd0_) + (0.05356581f * odd1_)) + (-0.49329537f * odd2_)) + (0.26882935f * odd3_)), ((((-0.26738968f * even0_) + (0.61660486f * even1_)) + (-0.55910736f * even2_)) + (0.2098922f * even3_)), ((((-0.78490657f * odd0_) + (0.63177454f * odd1_)) + (-0.37789693f * odd2_)) + (0.117692456f * odd3_)));
 }
 
@@ -1382,11 +1431,9 @@ fn airlight_tail_estimate(c_2: array<f32, 8>) -> f32 {
     return (abs(c_2[7]) + abs(c_2[6]));
 }
 
-fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>) -> f32 {
+fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) -> f32 {
     var local_9: bool;
-    var c_max: f32 = 0f;
-    var aliasing: f32 = 1f;
-    var i_6: u32 = 0u;
+    var aliasing: f32 = 0f;
 
     if !((m_1[0] > 0f)) {
         return 1f;
@@ -1398,47 +1445,50 @@ fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>) -> f32 {
     } else {
         local_9 = true;
     }
-    let _e26 = local_9;
-    if _e26 {
+    let _e27 = local_9;
+    if _e27 {
         return 1f;
     }
-    let q_1 = sqrt((last / before));
-    let _e32 = c_max;
-    c_max = max(_e32, abs(c_3[0]));
-    let _e36 = c_max;
-    c_max = max(_e36, abs(c_3[1]));
-    let _e40 = c_max;
-    c_max = max(_e40, abs(c_3[2]));
-    let _e44 = c_max;
-    c_max = max(_e44, abs(c_3[3]));
-    let _e48 = c_max;
-    c_max = max(_e48, abs(c_3[4]));
-    let _e52 = c_max;
-    c_max = max(_e52, abs(c_3[5]));
-    let _e56 = c_max;
-    c_max = max(_e56, abs(c_3[6]));
-    let _e60 = c_max;
-    c_max = max(_e60, abs(c_3[7]));
-    let _e66 = c_max;
-    let power = select(2u, 1u, (_e66 > (1.2f * abs(c_3[0]))));
-    loop {
-        let _e77 = i_6;
-        if (_e77 < power) {
-        } else {
-            break;
-        }
-        {
-            let _e79 = aliasing;
-            aliasing = (_e79 * q_1);
-        }
-        continuing {
-            let _e82 = i_6;
-            i_6 = (_e82 + 1u);
-        }
+    let q_1 = max(sqrt((last / before)), select(0f, floor_, (floor_ > 0f)));
+    if !((q_1 < 1f)) {
+        return 1f;
     }
-    let truncation = ((q_1 * max(abs(m_1[7]), abs(m_1[6]))) / m_1[0]);
-    let _e92 = aliasing;
-    return min((_e92 + truncation), 1f);
+    let _e42 = aliasing;
+    let _e46 = aliasing;
+    aliasing = select((_e42 + abs(m_1[0])), ((_e46 * q_1) + abs(m_1[0])), true);
+    let _e53 = aliasing;
+    let _e57 = aliasing;
+    aliasing = select((_e53 + abs(m_1[1])), ((_e57 * q_1) + abs(m_1[1])), true);
+    let _e64 = aliasing;
+    let _e68 = aliasing;
+    aliasing = select((_e64 + abs(m_1[2])), ((_e68 * q_1) + abs(m_1[2])), true);
+    let _e75 = aliasing;
+    let _e79 = aliasing;
+    aliasing = select((_e75 + abs(m_1[3])), ((_e79 * q_1) + abs(m_1[3])), true);
+    let _e86 = aliasing;
+    let _e90 = aliasing;
+    aliasing = select((_e86 + abs(m_1[4])), ((_e90 * q_1) + abs(m_1[4])), true);
+    let _e97 = aliasing;
+    let _e101 = aliasing;
+    aliasing = select((_e97 + abs(m_1[5])), ((_e101 * q_1) + abs(m_1[5])), true);
+    let _e108 = aliasing;
+    let _e112 = aliasing;
+    aliasing = select((_e108 + abs(m_1[6])), ((_e112 * q_1) + abs(m_1[6])), true);
+    let _e119 = aliasing;
+    let _e123 = aliasing;
+    aliasing = select((_e119 + abs(m_1[7])), ((_e123 * q_1) + abs(m_1[7])), false);
+    let truncation = (q_1 * max(abs(m_1[7]), abs(m_1[6])));
+    let _e136 = aliasing;
+    return min(((_e136 + truncation) / m_1[0]), 1f);
+}
+
+fn airlight_decay_rate(c_4: f32, r_1: f32, t_3: f32) -> f32 {
+    let inv_4 = (1f / r_1);
+    let re = (c_4 * inv_4);
+    let im = (t_3 * inv_4);
+    let im2_ = (im * im);
+    let a_21 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (1f / (a_21 + sqrt(max(((a_21 * a_21) - 1f), 0f))));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -1461,216 +1511,231 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, half_4: AirlightHalf, a_5: f32, b_4: f32) -> AirlightPanel {
-    var r_1: f32;
+fn airlight_v_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, half_4: AirlightHalf, a_5: f32, b_4: f32, heights: vec3<f32>) -> AirlightPanel {
+    var r_2: f32;
     var vc: f32;
     var samples: array<f32, 8>;
     var f_max_1: f32 = 0f;
     var over_max: f32 = 0f;
     var g_avg: f32 = 0f;
-    var i_7: u32 = 0u;
+    var i_6: u32 = 0u;
     var sum_4: f32 = 0f;
 
-    let _e6 = airlight_gauss_rule();
-    r_1 = ((b_4 - a_5) * 0.5f);
-    let _e11 = r_1;
-    vc = (a_5 + _e11);
+    let _e7 = airlight_gauss_rule();
+    r_2 = ((b_4 - a_5) * 0.5f);
+    let _e12 = r_2;
+    vc = (a_5 + _e12);
     if half_4.second {
-        r_1 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
-        let _e22 = r_1;
-        vc = ((1f / b_4) + _e22);
+        r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
+        let _e23 = r_2;
+        vc = ((1f / b_4) + _e23);
     }
-    let _e24 = airlight_zero_terms();
-    samples = _e24;
+    let _e25 = airlight_zero_terms();
+    samples = _e25;
     loop {
-        let _e34 = i_7;
-        if (_e34 < AIRLIGHT_TERMS) {
+        let _e35 = i_6;
+        if (_e35 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e37 = vc;
-            let _e38 = r_1;
-            let _e39 = i_7;
-            let _e40 = airlight_node(_e6, _e39);
-            let v_6 = (_e37 + (_e38 * _e40));
-            let _e46 = airlight_integrand_over(s_3, g_5, select(sigma_2, -(sigma_2), half_4.second), v_6);
-            let fy = _e46.x;
-            let over = _e46.y;
-            let _e49 = i_7;
-            samples[_e49] = (fy * over);
-            let _e52 = f_max_1;
-            f_max_1 = max(_e52, abs(fy));
-            let _e55 = over_max;
-            over_max = max(_e55, over);
-            let _e57 = g_avg;
-            let _e58 = i_7;
-            let _e65 = i_7;
-            let _e67 = samples[_e65];
-            g_avg = (_e57 + ((_e6[(_e58 / 2u)].y * 0.5f) * abs(_e67)));
+            let _e38 = vc;
+            let _e39 = r_2;
+            let _e40 = i_6;
+            let _e41 = airlight_node(_e7, _e40);
+            let v_6 = (_e38 + (_e39 * _e41));
+            let _e47 = airlight_integrand_over(s_4, g_6, select(sigma_4, -(sigma_4), half_4.second), v_6);
+            let fy = _e47.x;
+            let over = _e47.y;
+            let _e50 = i_6;
+            samples[_e50] = (fy * over);
+            let _e53 = f_max_1;
+            f_max_1 = max(_e53, abs(fy));
+            let _e56 = over_max;
+            over_max = max(_e56, over);
+            let _e58 = g_avg;
+            let _e59 = i_6;
+            let _e66 = i_6;
+            let _e68 = samples[_e66];
+            g_avg = (_e58 + ((_e7[(_e59 / 2u)].y * 0.5f) * abs(_e68)));
         }
         continuing {
-            let _e72 = i_7;
-            i_7 = (_e72 + 1u);
+            let _e73 = i_6;
+            i_6 = (_e73 + 1u);
         }
     }
-    let _e74 = samples;
-    let _e75 = airlight_legendre(_e74);
-    let _e77 = r_1;
-    let _e79 = airlight_exp_legendre_moments((half_4.big_h * _e77));
-    let _e82 = sum_4;
-    sum_4 = (_e82 + (_e75[0] * _e79[0]));
-    let _e87 = sum_4;
-    sum_4 = (_e87 + (_e75[1] * _e79[1]));
-    let _e92 = sum_4;
-    sum_4 = (_e92 + (_e75[2] * _e79[2]));
-    let _e97 = sum_4;
-    sum_4 = (_e97 + (_e75[3] * _e79[3]));
-    let _e102 = sum_4;
-    sum_4 = (_e102 + (_e75[4] * _e79[4]));
-    let _e107 = sum_4;
-    sum_4 = (_e107 + (_e75[5] * _e79[5]));
-    let _e112 = sum_4;
-    sum_4 = (_e112 + (_e75[6] * _e79[6]));
-    let _e117 = sum_4;
-    sum_4 = (_e117 + (_e75[7] * _e79[7]));
-    let _e122 = airlight_factor(half_4, a_5, b_4);
-    let _e123 = r_1;
-    let w = (_e122 * _e123);
-    let mass_4 = (w * _e79[0]);
-    let _e127 = airlight_tail_estimate(_e75);
-    let _e129 = airlight_error_factor(_e75, _e79);
-    let error_1 = ((mass_4 * _e127) * _e129);
-    let _e131 = sum_4;
-    let _e133 = g_avg;
-    let _e134 = airlight_transform_noise(mass_4, _e133);
-    let _e135 = over_max;
-    let _e137 = f_max_1;
-    let _e138 = airlight_panel_result((w * _e131), error_1, _e134, (mass_4 * _e135), _e137);
-    return _e138;
+    let _e75 = samples;
+    let _e76 = airlight_legendre(_e75);
+    let _e78 = r_2;
+    let _e80 = airlight_exp_legendre_moments((half_4.big_h * _e78));
+    let _e83 = sum_4;
+    sum_4 = (_e83 + (_e76[0] * _e80[0]));
+    let _e88 = sum_4;
+    sum_4 = (_e88 + (_e76[1] * _e80[1]));
+    let _e93 = sum_4;
+    sum_4 = (_e93 + (_e76[2] * _e80[2]));
+    let _e98 = sum_4;
+    sum_4 = (_e98 + (_e76[3] * _e80[3]));
+    let _e103 = sum_4;
+    sum_4 = (_e103 + (_e76[4] * _e80[4]));
+    let _e108 = sum_4;
+    sum_4 = (_e108 + (_e76[5] * _e80[5]));
+    let _e113 = sum_4;
+    sum_4 = (_e113 + (_e76[6] * _e80[6]));
+    let _e118 = sum_4;
+    sum_4 = (_e118 + (_e76[7] * _e80[7]));
+    let _e123 = airlight_factor(half_4, a_5, b_4);
+    let _e124 = r_2;
+    let w = (_e123 * _e124);
+    let mass_4 = (w * _e80[0]);
+    let _e128 = vc;
+    let _e129 = r_2;
+    let _e131 = airlight_decay_rate(_e128, _e129, heights.x);
+    let _e132 = vc;
+    let _e133 = r_2;
+    let _e135 = airlight_decay_rate(_e132, _e133, heights.y);
+    let _e136 = vc;
+    let _e137 = r_2;
+    let _e139 = airlight_decay_rate(_e136, _e137, heights.z);
+    let floor_1 = max(_e131, max(_e135, _e139));
+    let _e142 = airlight_tail_estimate(_e76);
+    let _e144 = airlight_error_factor(_e76, _e80, floor_1);
+    let error_1 = ((mass_4 * _e142) * _e144);
+    let _e146 = sum_4;
+    let _e148 = g_avg;
+    let _e149 = airlight_transform_noise(mass_4, _e148);
+    let _e150 = over_max;
+    let _e152 = f_max_1;
+    let _e153 = airlight_panel_result((w * _e146), error_1, _e149, (mass_4 * _e150), _e152);
+    return _e153;
 }
 
-fn airlight_y_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, half_5: AirlightHalf, a_6: f32, b_5: f32) -> AirlightPanel {
+fn airlight_y_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, half_5: AirlightHalf, a_6: f32, b_5: f32, heights_1: vec3<f32>) -> AirlightPanel {
     var samples_1: array<f32, 8>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
     var mass_1: f32 = 0f;
     var p_avg: f32 = 0f;
-    var i_8: u32 = 0u;
+    var i_7: u32 = 0u;
     var m_2: array<f32, 8>;
 
-    let _e6 = airlight_gauss_rule();
-    let r_7 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_7);
-    let _e11 = airlight_zero_terms();
-    samples_1 = _e11;
+    let _e7 = airlight_gauss_rule();
+    let r_8 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_8);
+    let _e12 = airlight_zero_terms();
+    samples_1 = _e12;
     loop {
-        let _e23 = i_8;
-        if (_e23 < AIRLIGHT_TERMS) {
+        let _e24 = i_7;
+        if (_e24 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e26 = i_8;
-            let _e27 = airlight_node(_e6, _e26);
-            let y_6 = (yc_1 + (r_7 * _e27));
-            let weight = exp(((-(half_5.big_h) * (r_7 * (1f - _e27))) / (y_6 * b_5)));
-            let _e39 = airlight_integrand(s_4, g_6, sigma_3, y_6);
+            let _e27 = i_7;
+            let _e28 = airlight_node(_e7, _e27);
+            let y_6 = (yc_1 + (r_8 * _e28));
+            let weight = exp(((-(half_5.big_h) * (r_8 * (1f - _e28))) / (y_6 * b_5)));
+            let _e40 = airlight_integrand(s_5, g_7, sigma_5, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
-            let _e45 = i_8;
-            samples_1[_e45] = ((_e39 * over_1) * weight);
-            let _e49 = f_max_2;
-            f_max_2 = max(_e49, abs(_e39));
-            let _e52 = over_max_1;
-            over_max_1 = max(_e52, over_1);
-            let _e54 = mass_1;
-            let _e55 = i_8;
-            mass_1 = (_e54 + (_e6[(_e55 / 2u)].y * weight));
-            let _e62 = p_avg;
-            let _e63 = i_8;
-            let _e70 = i_8;
-            let _e72 = samples_1[_e70];
-            p_avg = (_e62 + ((_e6[(_e63 / 2u)].y * 0.5f) * abs(_e72)));
+            let _e46 = i_7;
+            samples_1[_e46] = ((_e40 * over_1) * weight);
+            let _e50 = f_max_2;
+            f_max_2 = max(_e50, abs(_e40));
+            let _e53 = over_max_1;
+            over_max_1 = max(_e53, over_1);
+            let _e55 = mass_1;
+            let _e56 = i_7;
+            mass_1 = (_e55 + (_e7[(_e56 / 2u)].y * weight));
+            let _e63 = p_avg;
+            let _e64 = i_7;
+            let _e71 = i_7;
+            let _e73 = samples_1[_e71];
+            p_avg = (_e63 + ((_e7[(_e64 / 2u)].y * 0.5f) * abs(_e73)));
         }
         continuing {
-            let _e77 = i_8;
-            i_8 = (_e77 + 1u);
+            let _e78 = i_7;
+            i_7 = (_e78 + 1u);
         }
     }
-    let _e79 = samples_1;
-    let _e80 = airlight_legendre(_e79);
-    let _e81 = airlight_factor(half_5, a_6, b_5);
-    let w_1 = (_e81 * r_7);
-    let _e83 = airlight_zero_terms();
-    m_2 = _e83;
+    let _e80 = samples_1;
+    let _e81 = airlight_legendre(_e80);
+    let _e82 = airlight_factor(half_5, a_6, b_5);
+    let w_1 = (_e82 * r_8);
+    let _e84 = airlight_zero_terms();
+    m_2 = _e84;
     m_2[0] = 2f;
-    let _e89 = airlight_tail_estimate(_e80);
-    let _e91 = m_2;
-    let _e92 = airlight_error_factor(_e80, _e91);
-    let error_2 = (((w_1 * 2f) * _e89) * _e92);
-    let _e100 = p_avg;
-    let _e101 = airlight_transform_noise((w_1 * 2f), _e100);
-    let _e102 = mass_1;
-    let _e104 = over_max_1;
-    let _e106 = f_max_2;
-    let _e107 = airlight_panel_result(((w_1 * 2f) * _e80[0]), error_2, _e101, ((w_1 * _e102) * _e104), _e106);
-    return _e107;
+    let _e89 = airlight_decay_rate(yc_1, r_8, 0f);
+    let _e91 = airlight_decay_rate(yc_1, r_8, heights_1.x);
+    let _e93 = airlight_decay_rate(yc_1, r_8, heights_1.y);
+    let _e95 = airlight_decay_rate(yc_1, r_8, heights_1.z);
+    let floor_2 = max(_e89, max(_e91, max(_e93, _e95)));
+    let _e101 = airlight_tail_estimate(_e81);
+    let _e103 = m_2;
+    let _e104 = airlight_error_factor(_e81, _e103, floor_2);
+    let error_2 = (((w_1 * 2f) * _e101) * _e104);
+    let _e112 = p_avg;
+    let _e113 = airlight_transform_noise((w_1 * 2f), _e112);
+    let _e114 = mass_1;
+    let _e116 = over_max_1;
+    let _e118 = f_max_2;
+    let _e119 = airlight_panel_result(((w_1 * 2f) * _e81[0]), error_2, _e113, ((w_1 * _e114) * _e116), _e118);
+    return _e119;
 }
 
-fn airlight_legendre_to_monomial(c_4: array<f32, 8>) -> array<f32, 8> {
+fn airlight_legendre_to_monomial(c_5: array<f32, 8>) -> array<f32, 8> {
     var hat: array<f32, 8>;
 
     let _e1 = airlight_zero_terms();
     hat = _e1;
     let _e4 = hat[0];
-    hat[0] = (_e4 + (c_4[0] * 1f));
+    hat[0] = (_e4 + (c_5[0] * 1f));
     let _e10 = hat[1];
-    hat[1] = (_e10 + (c_4[1] * 1f));
+    hat[1] = (_e10 + (c_5[1] * 1f));
     let _e16 = hat[0];
-    hat[0] = (_e16 + (c_4[2] * -0.5f));
+    hat[0] = (_e16 + (c_5[2] * -0.5f));
     let _e22 = hat[2];
-    hat[2] = (_e22 + (c_4[2] * 1.5f));
+    hat[2] = (_e22 + (c_5[2] * 1.5f));
     let _e28 = hat[1];
-    hat[1] = (_e28 + (c_4[3] * -1.5f));
+    hat[1] = (_e28 + (c_5[3] * -1.5f));
     let _e34 = hat[3];
-    hat[3] = (_e34 + (c_4[3] * 2.5f));
+    hat[3] = (_e34 + (c_5[3] * 2.5f));
     let _e40 = hat[0];
-    hat[0] = (_e40 + (c_4[4] * 0.375f));
+    hat[0] = (_e40 + (c_5[4] * 0.375f));
     let _e46 = hat[2];
-    hat[2] = (_e46 + (c_4[4] * -3.75f));
+    hat[2] = (_e46 + (c_5[4] * -3.75f));
     let _e52 = hat[4];
-    hat[4] = (_e52 + (c_4[4] * 4.375f));
+    hat[4] = (_e52 + (c_5[4] * 4.375f));
     let _e58 = hat[1];
-    hat[1] = (_e58 + (c_4[5] * 1.875f));
+    hat[1] = (_e58 + (c_5[5] * 1.875f));
     let _e64 = hat[3];
-    hat[3] = (_e64 + (c_4[5] * -8.75f));
+    hat[3] = (_e64 + (c_5[5] * -8.75f));
     let _e70 = hat[5];
-    hat[5] = (_e70 + (c_4[5] * 7.875f));
+    hat[5] = (_e70 + (c_5[5] * 7.875f));
     let _e76 = hat[0];
-    hat[0] = (_e76 + (c_4[6] * -0.3125f));
+    hat[0] = (_e76 + (c_5[6] * -0.3125f));
     let _e82 = hat[2];
-    hat[2] = (_e82 + (c_4[6] * 6.5625f));
+    hat[2] = (_e82 + (c_5[6] * 6.5625f));
     let _e88 = hat[4];
-    hat[4] = (_e88 + (c_4[6] * -19.6875f));
+    hat[4] = (_e88 + (c_5[6] * -19.6875f));
     let _e94 = hat[6];
-    hat[6] = (_e94 + (c_4[6] * 14.4375f));
+    hat[6] = (_e94 + (c_5[6] * 14.4375f));
     let _e100 = hat[1];
-    hat[1] = (_e100 + (c_4[7] * -2.1875f));
+    hat[1] = (_e100 + (c_5[7] * -2.1875f));
     let _e106 = hat[3];
-    hat[3] = (_e106 + (c_4[7] * 19.6875f));
+    hat[3] = (_e106 + (c_5[7] * 19.6875f));
     let _e112 = hat[5];
-    hat[5] = (_e112 + (c_4[7] * -43.3125f));
+    hat[5] = (_e112 + (c_5[7] * -43.3125f));
     let _e118 = hat[7];
-    hat[7] = (_e118 + (c_4[7] * 26.8125f));
+    hat[7] = (_e118 + (c_5[7] * 26.8125f));
     let _e123 = hat;
     return _e123;
 }
 
-fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 8>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
-    var i_9: u32 = 0u;
+    var i_8: u32 = 0u;
     var q: array<f32, 8>;
     var s_a: array<f32, 10> = array<f32, 10>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var local_10: bool;
@@ -1685,40 +1750,40 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     var next: f32 = 0f;
 
     let _e6 = airlight_gauss_rule();
-    let r_8 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_8);
+    let r_9 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_9);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
-        let _e19 = i_9;
+        let _e19 = i_8;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = i_9;
+            let _e22 = i_8;
             let _e23 = airlight_node(_e6, _e22);
-            let y_7 = (yc_2 + (r_8 * _e23));
-            let _e26 = airlight_integrand(s_5, g_7, sigma_4, y_7);
-            let _e27 = i_9;
+            let y_7 = (yc_2 + (r_9 * _e23));
+            let _e26 = airlight_integrand(s_6, g_8, sigma_6, y_7);
+            let _e27 = i_8;
             samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
-            let _e37 = i_9;
-            let _e44 = i_9;
+            let _e37 = i_8;
+            let _e44 = i_8;
             let _e46 = samples_2[_e44];
             g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5f) * abs(_e46)));
         }
         continuing {
-            let _e51 = i_9;
-            i_9 = (_e51 + 1u);
+            let _e51 = i_8;
+            i_8 = (_e51 + 1u);
         }
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_8);
-    let beta = (-(yc_2) / r_8);
+    let alpha = (b_6 / r_9);
+    let beta = (-(yc_2) / r_9);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -1988,7 +2053,7 @@ fn airlight_tail_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_4: f32,
     return _e702;
 }
 
-fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_8: f32, b_7: f32) -> AirlightPanel {
+fn airlight_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_7: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>) -> AirlightPanel {
     var local_11: bool;
     var local_12: bool;
 
@@ -1997,26 +2062,26 @@ fn airlight_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_5: f32, half
     } else {
         local_11 = false;
     }
-    let _e13 = local_11;
-    if _e13 {
-        let _e14 = airlight_tail_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
-        return _e14;
+    let _e15 = local_11;
+    if _e15 {
+        let _e16 = airlight_tail_panel(s_7, g_9, sigma_7, half_7, a_8, b_7);
+        return _e16;
     }
     if half_7.second {
         local_12 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
         local_12 = false;
     }
-    let _e26 = local_12;
-    if _e26 {
-        let _e27 = airlight_y_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
-        return _e27;
+    let _e28 = local_12;
+    if _e28 {
+        let _e29 = airlight_y_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_y);
+        return _e29;
     }
-    let _e28 = airlight_v_panel(s_6, g_8, sigma_5, half_7, a_8, b_7);
-    return _e28;
+    let _e30 = airlight_v_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_v);
+    return _e30;
 }
 
-fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2033,59 +2098,61 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6:
     var errors: f32;
     var mass_3: f32;
     var worst: u32;
-    var i_10: u32;
+    var i_9: u32;
     var local_13: bool;
     var local_14: bool;
     var local_15: bool;
     var total_1: f32 = 0f;
-    var i_11: u32 = 0u;
+    var i_10: u32 = 0u;
 
     if !((hi > lo)) {
         return 0f;
     }
+    let _e10 = airlight_singular_heights(s_8, sigma_8);
+    let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_8.second);
     a_9 = lo;
     b_8 = hi;
     loop {
-        let _e54 = step_;
-        if (_e54 < AIRLIGHT_MAX_PANELS) {
+        let _e60 = step_;
+        if (_e60 < AIRLIGHT_MAX_PANELS) {
         } else {
             break;
         }
         {
-            let _e57 = a_9;
-            let _e58 = b_8;
-            let _e59 = airlight_panel(s_7, g_9, sigma_6, half_8, _e57, _e58);
-            let _e60 = (*f_max_4);
-            (*f_max_4) = max(_e60, _e59.f_max);
-            let _e63 = slot;
-            let _e65 = a_9;
-            let _e66 = b_8;
-            list[_e63] = vec4<f32>(_e65, _e66, _e59.value, _e59.error);
-            let _e70 = slot;
-            mass_over_1[_e70] = _e59.mass_over;
-            let _e73 = budget;
-            budget = (_e73 - 1u);
+            let _e63 = a_9;
+            let _e64 = b_8;
+            let _e65 = airlight_panel(s_8, g_10, sigma_8, half_8, _e63, _e64, _e10, heights_v_1);
+            let _e66 = (*f_max_4);
+            (*f_max_4) = max(_e66, _e65.f_max);
+            let _e69 = slot;
+            let _e71 = a_9;
+            let _e72 = b_8;
+            list[_e69] = vec4<f32>(_e71, _e72, _e65.value, _e65.error);
             let _e76 = slot;
-            let _e77 = count;
-            if (_e76 == _e77) {
-                let _e79 = count;
-                count = (_e79 + 1u);
-            }
-            let _e82 = pending;
-            if _e82 {
-                let _e83 = next_a;
-                a_9 = _e83;
-                let _e84 = next_b;
-                b_8 = _e84;
+            mass_over_1[_e76] = _e65.mass_over;
+            let _e79 = budget;
+            budget = (_e79 - 1u);
+            let _e82 = slot;
+            let _e83 = count;
+            if (_e82 == _e83) {
                 let _e85 = count;
-                slot = _e85;
+                count = (_e85 + 1u);
+            }
+            let _e88 = pending;
+            if _e88 {
+                let _e89 = next_a;
+                a_9 = _e89;
+                let _e90 = next_b;
+                b_8 = _e90;
+                let _e91 = count;
+                slot = _e91;
                 pending = false;
                 continue;
             }
             retire = 0u;
             loop {
-                let _e89 = retire;
-                if (_e89 <= AIRLIGHT_PANEL_LIST) {
+                let _e95 = retire;
+                if (_e95 <= AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
@@ -2094,130 +2161,130 @@ fn airlight_integrate_piece(s_7: AirlightScene, g_9: AirlightCanonical, sigma_6:
                     errors = 0f;
                     mass_3 = 0f;
                     worst = 0u;
-                    i_10 = 0u;
+                    i_9 = 0u;
                     loop {
-                        let _e102 = i_10;
-                        if (_e102 < AIRLIGHT_PANEL_LIST) {
+                        let _e108 = i_9;
+                        if (_e108 < AIRLIGHT_PANEL_LIST) {
                         } else {
                             break;
                         }
                         {
-                            let _e105 = i_10;
-                            let _e106 = count;
-                            if (_e105 >= _e106) {
+                            let _e111 = i_9;
+                            let _e112 = count;
+                            if (_e111 >= _e112) {
                                 break;
                             }
-                            let _e108 = total;
-                            let _e109 = i_10;
-                            let _e112 = list[_e109].z;
-                            total = (_e108 + _e112);
-                            let _e114 = errors;
-                            let _e115 = i_10;
-                            let _e118 = list[_e115].w;
-                            errors = (_e114 + _e118);
-                            let _e120 = mass_3;
-                            let _e121 = i_10;
-                            let _e123 = mass_over_1[_e121];
-                            mass_3 = (_e120 + _e123);
-                            let _e125 = i_10;
-                            let _e128 = list[_e125].w;
-                            let _e129 = worst;
-                            let _e132 = list[_e129].w;
-                            if (_e128 > _e132) {
-                                let _e134 = i_10;
-                                worst = _e134;
+                            let _e114 = total;
+                            let _e115 = i_9;
+                            let _e118 = list[_e115].z;
+                            total = (_e114 + _e118);
+                            let _e120 = errors;
+                            let _e121 = i_9;
+                            let _e124 = list[_e121].w;
+                            errors = (_e120 + _e124);
+                            let _e126 = mass_3;
+                            let _e127 = i_9;
+                            let _e129 = mass_over_1[_e127];
+                            mass_3 = (_e126 + _e129);
+                            let _e131 = i_9;
+                            let _e134 = list[_e131].w;
+                            let _e135 = worst;
+                            let _e138 = list[_e135].w;
+                            if (_e134 > _e138) {
+                                let _e140 = i_9;
+                                worst = _e140;
                             }
                         }
                         continuing {
-                            let _e136 = i_10;
-                            i_10 = (_e136 + 1u);
+                            let _e142 = i_9;
+                            i_9 = (_e142 + 1u);
                         }
                     }
-                    let _e139 = total;
-                    let _e142 = (*f_max_4);
-                    let _e144 = mass_3;
-                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e139), ((AIRLIGHT_PANEL_FLOOR * _e142) * _e144)));
-                    let _e148 = errors;
-                    if !((_e148 <= goal)) {
-                        let _e153 = worst;
-                        let _e156 = list[_e153].w;
-                        local_13 = !((_e156 > 0f));
+                    let _e145 = total;
+                    let _e148 = (*f_max_4);
+                    let _e150 = mass_3;
+                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e145), ((AIRLIGHT_PANEL_FLOOR * _e148) * _e150)));
+                    let _e154 = errors;
+                    if !((_e154 <= goal)) {
+                        let _e159 = worst;
+                        let _e162 = list[_e159].w;
+                        local_13 = !((_e162 > 0f));
                     } else {
                         local_13 = true;
                     }
-                    let _e161 = local_13;
-                    if !(_e161) {
-                        let _e165 = budget;
-                        local_14 = (_e165 < 2u);
+                    let _e167 = local_13;
+                    if !(_e167) {
+                        let _e171 = budget;
+                        local_14 = (_e171 < 2u);
                     } else {
                         local_14 = true;
                     }
-                    let _e169 = local_14;
-                    if !(_e169) {
-                        let _e173 = count;
-                        local_15 = (_e173 == AIRLIGHT_PANEL_LIST);
+                    let _e175 = local_14;
+                    if !(_e175) {
+                        let _e179 = count;
+                        local_15 = (_e179 == AIRLIGHT_PANEL_LIST);
                     } else {
                         local_15 = true;
                     }
-                    let _e177 = local_15;
-                    if _e177 {
-                        let _e178 = total;
-                        return _e178;
+                    let _e183 = local_15;
+                    if _e183 {
+                        let _e184 = total;
+                        return _e184;
                     }
-                    let _e179 = worst;
-                    let wa = list[_e179].x;
-                    let _e183 = worst;
-                    let wb = list[_e183].y;
+                    let _e185 = worst;
+                    let wa = list[_e185].x;
+                    let _e189 = worst;
+                    let wb = list[_e189].y;
                     if !(((wb - wa) > (AIRLIGHT_FLT_EPS * wb))) {
-                        let _e192 = worst;
-                        list[_e192].w = 0f;
+                        let _e198 = worst;
+                        list[_e198].w = 0f;
                         continue;
                     }
                     let mid = (wa + ((wb - wa) * 0.5f));
                     a_9 = wa;
                     b_8 = mid;
-                    let _e200 = worst;
-                    slot = _e200;
+                    let _e206 = worst;
+                    slot = _e206;
                     pending = true;
                     next_a = mid;
                     next_b = wb;
                     break;
                 }
                 continuing {
-                    let _e203 = retire;
-                    retire = (_e203 + 1u);
+                    let _e209 = retire;
+                    retire = (_e209 + 1u);
                 }
             }
         }
         continuing {
-            let _e206 = step_;
-            step_ = (_e206 + 1u);
+            let _e212 = step_;
+            step_ = (_e212 + 1u);
         }
     }
     loop {
-        let _e212 = i_11;
-        if (_e212 < AIRLIGHT_PANEL_LIST) {
+        let _e218 = i_10;
+        if (_e218 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e215 = i_11;
-            let _e216 = count;
-            if (_e215 >= _e216) {
+            let _e221 = i_10;
+            let _e222 = count;
+            if (_e221 >= _e222) {
                 break;
             }
-            let _e218 = total_1;
-            let _e219 = i_11;
-            let _e222 = list[_e219].z;
-            total_1 = (_e218 + _e222);
+            let _e224 = total_1;
+            let _e225 = i_10;
+            let _e228 = list[_e225].z;
+            total_1 = (_e224 + _e228);
         }
         continuing {
-            let _e225 = i_11;
-            i_11 = (_e225 + 1u);
+            let _e231 = i_10;
+            i_10 = (_e231 + 1u);
         }
     }
-    let _e227 = total_1;
-    return _e227;
+    let _e233 = total_1;
+    return _e233;
 }
 
 fn airlight_bounded(a_10: f32) -> f32 {
@@ -2225,15 +2292,15 @@ fn airlight_bounded(a_10: f32) -> f32 {
     return (1f / (a_10 + _e1));
 }
 
-fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> {
+fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> {
     var local_16: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_4 + (sigma_7 * d_el));
+    let a0_ = (k_4 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_4 - (sigma_7 * d_el));
+    let c0_ = (k_4 - (sigma_9 * d_el));
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
@@ -2245,10 +2312,10 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_19 = (a0_ / scale_1);
+    let a_22 = (a0_ / scale_1);
     let b_16 = (b0_ / scale_1);
-    let c_8 = (c0_ / scale_1);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_19) * c_8));
+    let c_9 = (c0_ / scale_1);
+    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_9));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -2258,22 +2325,22 @@ fn airlight_crossings(sigma_7: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     let _e47 = sb;
     let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
-        r1_ = (c_8 / q_2);
+        r1_ = (c_9 / q_2);
     }
-    if (a_19 != 0f) {
-        r2_2 = (q_2 / a_19);
+    if (a_22 != 0f) {
+        r2_2 = (q_2 / a_22);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_cosine(g_10: AirlightCanonical, sigma_8: f32, y_3: f32) -> f32 {
+fn airlight_cosine(g_11: AirlightCanonical, sigma_10: f32, y_3: f32) -> f32 {
     let y2_1 = (y_3 * y_3);
-    return ((((1f - y2_1) * (sigma_8 * g_10.d_el)) + ((y_3 + y_3) * g_10.d_c)) / (1f + y2_1));
+    return ((((1f - y2_1) * (sigma_10 * g_11.d_el)) + ((y_3 + y_3) * g_11.d_c)) / (1f + y2_1));
 }
 
-fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
+fn airlight_dark(g_12: AirlightCanonical, sigma_11: f32, half_9: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
     var local_17: bool;
     var local_18: bool;
     var y1_: f32;
@@ -2282,12 +2349,12 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     var local_21: bool;
     var local_22: bool;
 
-    let _e9 = airlight_cosine(g_11, sigma_9, (0.5f * (lo_1 + hi_1)));
+    let _e9 = airlight_cosine(g_12, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
         return false;
     }
     if (lo_1 == half_9.y_lo) {
-        let _e17 = airlight_cosine(g_11, sigma_9, lo_1);
+        let _e17 = airlight_cosine(g_12, sigma_11, lo_1);
         local_17 = !((_e17 < bound));
     } else {
         local_17 = false;
@@ -2297,7 +2364,7 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
         return false;
     }
     if (hi_1 == half_9.y_hi) {
-        let _e27 = airlight_cosine(g_11, sigma_9, hi_1);
+        let _e27 = airlight_cosine(g_12, sigma_11, hi_1);
         local_18 = !((_e27 < bound));
     } else {
         local_18 = false;
@@ -2306,15 +2373,15 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     if _e31 {
         return false;
     }
-    let a_20 = (sigma_9 * g_11.d_el);
-    let d_2 = g_11.d_c;
+    let a_23 = (sigma_11 * g_12.d_el);
+    let d_2 = g_12.d_c;
     if (d_2 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_20 * a_20) + (d_2 * d_2)));
-    y1_ = ((root_1 - a_20) / d_2);
-    if (a_20 > 0f) {
-        y1_ = (d_2 / (a_20 + root_1));
+    let root_1 = sqrt(((a_23 * a_23) + (d_2 * d_2)));
+    y1_ = ((root_1 - a_23) / d_2);
+    if (a_23 > 0f) {
+        y1_ = (d_2 / (a_23 + root_1));
     }
     let _e50 = y1_;
     let y2_2 = (-1f / _e50);
@@ -2328,7 +2395,7 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     let _e60 = local_19;
     if _e60 {
         let _e63 = y1_;
-        let _e64 = airlight_cosine(g_11, sigma_9, _e63);
+        let _e64 = airlight_cosine(g_12, sigma_11, _e63);
         local_20 = !((_e64 < bound));
     } else {
         local_20 = false;
@@ -2344,7 +2411,7 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     }
     let _e75 = local_21;
     if _e75 {
-        let _e78 = airlight_cosine(g_11, sigma_9, y2_2);
+        let _e78 = airlight_cosine(g_12, sigma_11, y2_2);
         local_22 = !((_e78 < bound));
     } else {
         local_22 = false;
@@ -2356,31 +2423,31 @@ fn airlight_dark(g_11: AirlightCanonical, sigma_9: f32, half_9: AirlightHalf, bo
     return true;
 }
 
-fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
-    var i_12: u32 = 0u;
+    var i_11: u32 = 0u;
     var local_23: bool;
-    var i_13: u32 = 0u;
+    var i_12: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
-    var i_14: u32 = 0u;
+    var i_13: u32 = 0u;
     var hi_2: f32;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_8, g_12, sigma_10, (half_10.y_lo + (half_10.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_9, g_13, sigma_12, (half_10.y_lo + (half_10.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_8.light_param_a;
-        k_out = s_8.light_param_b;
+    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_9.light_param_a;
+        k_out = s_9.light_param_b;
         let _e29 = k_in;
         let _e30 = k_out;
         let width_1 = (_e29 - _e30);
@@ -2393,21 +2460,21 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
         let _e39 = k_out;
         dark_below = _e39;
         let _e42 = k_in;
-        let _e43 = airlight_crossings(sigma_10, g_12.d_el, g_12.d_c, _e42);
+        let _e43 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e42);
         let _e46 = k_out;
-        let _e47 = airlight_crossings(sigma_10, g_12.d_el, g_12.d_c, _e46);
+        let _e47 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e46);
         cuts = array<f32, 4>(_e43.x, _e43.y, _e47.x, _e47.y);
         loop {
-            let _e55 = i_12;
+            let _e55 = i_11;
             if (_e55 < 4u) {
             } else {
                 break;
             }
             {
-                let _e58 = i_12;
+                let _e58 = i_11;
                 let _e60 = cuts[_e58];
                 if (_e60 > half_10.y_lo) {
-                    let _e65 = i_12;
+                    let _e65 = i_11;
                     let _e67 = cuts[_e65];
                     local_23 = (_e67 < half_10.y_hi);
                 } else {
@@ -2415,17 +2482,17 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
                 }
                 let _e71 = local_23;
                 if !(_e71) {
-                    let _e73 = i_12;
+                    let _e73 = i_11;
                     cuts[_e73] = 2f;
                 }
             }
             continuing {
-                let _e77 = i_12;
-                i_12 = (_e77 + 1u);
+                let _e77 = i_11;
+                i_11 = (_e77 + 1u);
             }
         }
         loop {
-            let _e81 = i_13;
+            let _e81 = i_12;
             if (_e81 < 3u) {
             } else {
                 break;
@@ -2434,7 +2501,7 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
                 j_2 = 0u;
                 loop {
                     let _e86 = j_2;
-                    let _e88 = i_13;
+                    let _e88 = i_12;
                     if (_e86 < (3u - _e88)) {
                     } else {
                         break;
@@ -2446,13 +2513,13 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
                         let _e98 = cuts[(_e94 + 1u)];
                         if (_e93 > _e98) {
                             let _e100 = j_2;
-                            let t_5 = cuts[_e100];
+                            let t_6 = cuts[_e100];
                             let _e103 = j_2;
                             let _e105 = j_2;
                             let _e109 = cuts[(_e105 + 1u)];
                             cuts[_e103] = _e109;
                             let _e110 = j_2;
-                            cuts[(_e110 + 1u)] = t_5;
+                            cuts[(_e110 + 1u)] = t_6;
                         }
                     }
                     continuing {
@@ -2462,23 +2529,23 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
                 }
             }
             continuing {
-                let _e118 = i_13;
-                i_13 = (_e118 + 1u);
+                let _e118 = i_12;
+                i_12 = (_e118 + 1u);
             }
         }
     }
     lo_2 = half_10.y_lo;
     loop {
-        let _e126 = i_14;
+        let _e126 = i_13;
         if (_e126 < 5u) {
         } else {
             break;
         }
         {
             hi_2 = half_10.y_hi;
-            let _e131 = i_14;
+            let _e131 = i_13;
             if (_e131 < 4u) {
-                let _e136 = i_14;
+                let _e136 = i_13;
                 let _e138 = cuts[_e136];
                 local_24 = (_e138 < 2f);
             } else {
@@ -2486,18 +2553,18 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
             }
             let _e142 = local_24;
             if _e142 {
-                let _e143 = i_14;
+                let _e143 = i_13;
                 let _e145 = cuts[_e143];
                 hi_2 = _e145;
             }
             let _e146 = hi_2;
             let _e147 = lo_2;
             if (_e146 > _e147) {
-                if (s_8.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
                     let _e154 = dark_below;
                     let _e155 = lo_2;
                     let _e156 = hi_2;
-                    let _e157 = airlight_dark(g_12, sigma_10, half_10, _e154, _e155, _e156);
+                    let _e157 = airlight_dark(g_13, sigma_12, half_10, _e154, _e155, _e156);
                     local_25 = _e157;
                 } else {
                     local_25 = false;
@@ -2507,15 +2574,15 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
                     let _e161 = total_2;
                     let _e162 = lo_2;
                     let _e163 = hi_2;
-                    let _e164 = airlight_integrate_piece(s_8, g_12, sigma_10, half_10, _e162, _e163, f_max_5);
+                    let _e164 = airlight_integrate_piece(s_9, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 let _e166 = hi_2;
                 lo_2 = _e166;
             }
-            let _e167 = i_14;
+            let _e167 = i_13;
             if (_e167 < 4u) {
-                let _e172 = i_14;
+                let _e172 = i_13;
                 let _e174 = cuts[_e172];
                 local_26 = (_e174 >= 2f);
             } else {
@@ -2527,16 +2594,16 @@ fn airlight_half(s_8: AirlightScene, g_12: AirlightCanonical, sigma_10: f32, hal
             }
         }
         continuing {
-            let _e180 = i_14;
-            i_14 = (_e180 + 1u);
+            let _e180 = i_13;
+            i_13 = (_e180 + 1u);
         }
     }
     let _e182 = total_2;
     return _e182;
 }
 
-fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_3: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s) * intensity) / h_1) * exp(-(x_7))) * j_3);
+fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_7: f32, j_3: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s) * intensity) / h_2) * exp(-(x_7))) * j_3);
     let _e13 = airlight_is_finite(plain_1);
     if _e13 {
         return plain_1;
@@ -2544,54 +2611,54 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_1: f32, x_7: f32, j_3: f32)
     if !((abs(j_3) > 0f)) {
         return 0f;
     }
-    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_1)) - x_7) + log(abs(j_3)))));
+    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_2)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_9: AirlightScene, g_13: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_10: AirlightScene, g_14: AirlightCanonical) -> f32 {
     var local_27: bool;
     var span: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
-    if !(g_13.t_hi_infinite) {
-        local_27 = (g_13.x_h > g_13.t_hi);
+    if !(g_14.t_hi_infinite) {
+        local_27 = (g_14.x_h > g_14.t_hi);
     } else {
         local_27 = false;
     }
     let _e10 = local_27;
     if _e10 {
-        let _e16 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, -(g_13.d_el));
-        let _e22 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, 1f);
+        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_14.d_el));
+        let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
         let f_2 = (_e16 * _e22);
-        let r0_ = (g_13.x_h - g_13.t_lo);
-        let r1_1 = (g_13.x_h - g_13.t_hi);
-        let _e41 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * r0_), (f_2 * (((g_13.t_hi - g_13.t_lo) / r0_) / r1_1)));
+        let r0_ = (g_14.x_h - g_14.t_lo);
+        let r1_1 = (g_14.x_h - g_14.t_hi);
+        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_14.t_hi - g_14.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, g_13.d_el);
-    let _e52 = airlight_phase_mu(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -1f);
+    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_14.d_el);
+    let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
     let f_3 = (_e46 * _e52);
-    let s0_ = (g_13.t_lo - g_13.x_h);
-    let s1_ = (g_13.t_hi - g_13.x_h);
-    if (s_9.sigma_t == 0f) {
+    let s0_ = (g_14.t_lo - g_14.x_h);
+    let s1_ = (g_14.t_hi - g_14.x_h);
+    if (s_10.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_13.t_hi_infinite) {
+        if !(g_14.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, 0f, (f_3 * _e75));
+        let _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, 0f, (f_3 * _e75));
         return _e77;
     }
-    let two_st = (s_9.sigma_t + s_9.sigma_t);
+    let two_st = (s_10.sigma_t + s_10.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, (s_9.sigma_t * s0_), ((f_3 * _e90) / s0_));
-    if !(g_13.t_hi_infinite) {
+    let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    if !(g_14.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_9.sigma_s, s_9.intensity, 2f, ((s_9.sigma_t * (s1_ - s0_)) + (s_9.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -2613,7 +2680,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_11: AirlightScene, g_15: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -2621,12 +2688,12 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     var local_29: bool;
     var x_8: f32 = 0f;
 
-    let h_2 = g_14.h;
-    let a_s = ((g_14.x_h - g_14.t_lo) / h_2);
+    let h_3 = g_15.h;
+    let a_s = ((g_15.x_h - g_15.t_lo) / h_3);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_14.t_hi - g_14.x_h) / h_2);
-    if !(g_14.t_hi_infinite) {
+    let u_e = ((g_15.t_hi - g_15.x_h) / h_3);
+    if !(g_15.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
         local_28 = _e24;
     } else {
@@ -2636,7 +2703,7 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_14.t_hi - g_14.t_lo) / h_2) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_15.t_hi - g_15.t_lo) / h_3) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
@@ -2659,36 +2726,36 @@ fn airlight_whole_line(s_10: AirlightScene, g_14: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_10, g_14, -1f, _e9);
+    let _e54 = airlight_integrand(s_11, g_15, -1f, _e9);
     let _e55 = airlight_moment_zero(half_13);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_10.sigma_t > 0f) {
-            x_8 = (s_10.sigma_t * abs((g_14.x_h - g_14.t_lo)));
+        if (s_11.sigma_t > 0f) {
+            x_8 = (s_11.sigma_t * abs((g_15.x_h - g_15.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_2, _e72, j_5);
+    let _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e72, j_5);
     return _e73;
 }
 
 fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_2 = (v_s + inv_h);
-    let r_9 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_9) / (0.000100000005f * 0.0001f))));
+    let r_10 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -> AirlightResult {
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
     var local_33: bool;
-    var gap: f32 = 0f;
+    var gap_1: f32 = 0f;
     var local_34: bool;
     var local_35: bool;
     var local_36: bool;
@@ -2719,16 +2786,16 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     var local_51: bool;
     var local_52: bool;
 
-    let t0_ = g_15.t_lo;
-    let t1_ = g_15.t_hi;
-    if !(g_15.t_hi_infinite) {
+    let t0_ = g_16.t_lo;
+    let t1_ = g_16.t_hi;
+    if !(g_16.t_hi_infinite) {
         local_30 = (t1_ > t0_);
     } else {
         local_30 = true;
     }
     let _e10 = local_30;
     if !(!(_e10)) {
-        local_31 = ((s_11.sigma_s * s_11.intensity) == 0f);
+        local_31 = ((s_12.sigma_s * s_12.intensity) == 0f);
     } else {
         local_31 = true;
     }
@@ -2736,10 +2803,10 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_3 = g_15.h;
-    let x_h = g_15.x_h;
+    let h_4 = g_16.h;
+    let x_h = g_16.x_h;
     if (t0_ <= x_h) {
-        if !(g_15.t_hi_infinite) {
+        if !(g_16.t_hi_infinite) {
             local_33 = (x_h <= t1_);
         } else {
             local_33 = true;
@@ -2751,30 +2818,30 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let inside = local_32;
     if (x_h < t0_) {
-        gap = (t0_ - x_h);
+        gap_1 = (t0_ - x_h);
     } else {
         if !(inside) {
-            gap = (x_h - t1_);
+            gap_1 = (x_h - t1_);
         }
     }
     if !(inside) {
-        let _e48 = gap;
-        local_34 = (h_3 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        let _e48 = gap_1;
+        local_34 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_34 = false;
     }
     let _e55 = local_34;
     if _e55 {
-        let _e56 = airlight_on_line(s_11, g_15);
+        let _e56 = airlight_on_line(s_12, g_16);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
-    if (h_3 == 0f) {
+    if (h_4 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_11.sigma_t * h_3);
-    if !((s_11.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = (s_11.light_param_a == 0f);
+    let big_h_5 = (s_12.sigma_t * h_4);
+    if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_36 = (s_12.light_param_a == 0f);
         } else {
             local_36 = false;
         }
@@ -2785,15 +2852,15 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e85 = local_35;
     if _e85 {
-        if !((s_11.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_11.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_39 = (s_11.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             let _e104 = local_39;
             if _e104 {
-                local_40 = (s_11.phase_param_a == 0f);
+                local_40 = (s_12.phase_param_a == 0f);
             } else {
                 local_40 = false;
             }
@@ -2815,7 +2882,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e120 = local_41;
     if _e120 {
-        if !(g_15.t_hi_infinite) {
+        if !(g_16.t_hi_infinite) {
             local_43 = (x_h < t1_);
         } else {
             local_43 = true;
@@ -2827,14 +2894,14 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     }
     let _e131 = local_42;
     if _e131 {
-        let _e132 = airlight_whole_line(s_11, g_15, big_h_5);
+        let _e132 = airlight_whole_line(s_12, g_16, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
     if (t0_ < x_h) {
-        let a_s_1 = ((x_h - t0_) / h_3);
+        let a_s_1 = ((x_h - t0_) / h_4);
         t_end = x_h;
-        if !(g_15.t_hi_infinite) {
+        if !(g_16.t_hi_infinite) {
             local_44 = (t1_ < x_h);
         } else {
             local_44 = false;
@@ -2844,13 +2911,13 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
             t_end = t1_;
         }
         let _e155 = t_end;
-        let a_e = ((x_h - _e155) / h_3);
+        let a_e = ((x_h - _e155) / h_4);
         let _e158 = airlight_hypot_one(a_s_1);
         let _e159 = airlight_hypot_one(a_e);
         let _e160 = airlight_bounded(a_s_1);
         let _e161 = airlight_bounded(a_e);
         let _e162 = t_end;
-        let dy_1 = (((((_e162 - t0_) / h_3) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
+        let dy_1 = (((((_e162 - t0_) / h_4) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
         let _e175 = airlight_optical(big_h_5, dy_1, false);
         half_11 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if cut {
@@ -2870,12 +2937,12 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
             }
         }
         let _e199 = half_11;
-        let _e200 = airlight_half(s_11, g_15, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e200 = airlight_half(s_12, g_16, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
-    if !(g_15.t_hi_infinite) {
+    if !(g_16.t_hi_infinite) {
         local_46 = (t1_ > x_h);
     } else {
         local_46 = true;
@@ -2890,12 +2957,12 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
     let _e219 = local_47;
     if _e219 {
         let t_start = max(t0_, x_h);
-        let a_s_2 = ((t_start - x_h) / h_3);
+        let a_s_2 = ((t_start - x_h) / h_4);
         let _e223 = airlight_hypot_one(a_s_2);
         let _e224 = airlight_bounded(a_s_2);
         dy = _e224;
-        let a_e_1 = ((t1_ - x_h) / h_3);
-        if !(g_15.t_hi_infinite) {
+        let a_e_1 = ((t1_ - x_h) / h_4);
+        if !(g_16.t_hi_infinite) {
             let _e238 = airlight_is_finite(a_e_1);
             local_48 = _e238;
         } else {
@@ -2905,7 +2972,7 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
         if _e240 {
             let _e241 = airlight_bounded(a_e_1);
             let _e245 = airlight_hypot_one(a_e_1);
-            let dv_end_1 = (((t1_ - t_start) / h_3) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
+            let dv_end_1 = (((t1_ - t_start) / h_4) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if (_e241 > 0f) {
                 let _e255 = airlight_is_finite(dv_end_1);
                 local_49 = _e255;
@@ -2964,9 +3031,9 @@ fn airlight_in_scatter_canonical(s_11: AirlightScene, g_15: AirlightCanonical) -
             }
         }
         let _e313 = half_12;
-        let _e314 = airlight_half(s_11, g_15, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e314 = airlight_half(s_12, g_16, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, ((s_11.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3023,7 +3090,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_12: AirlightScene) -> bool {
+fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
@@ -3059,96 +3126,96 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
     var local_87: bool;
     var local_88: bool;
 
-    let _e2 = airlight_vec_finite(s_12.origin);
+    let _e2 = airlight_vec_finite(s_13.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_12.dir);
+        let _e6 = airlight_vec_finite(s_13.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     let _e8 = local_56;
     if _e8 {
-        let _e12 = airlight_normalisable(s_12.dir);
+        let _e12 = airlight_normalisable(s_13.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     let _e14 = local_57;
     if _e14 {
-        let _e18 = airlight_is_finite(s_12.t_min);
+        let _e18 = airlight_is_finite(s_13.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     let _e20 = local_58;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_12.light_position);
+        let _e24 = airlight_vec_finite(s_13.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     let _e26 = local_59;
     if _e26 {
-        let _e30 = airlight_is_finite(s_12.intensity);
+        let _e30 = airlight_is_finite(s_13.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     let _e32 = local_60;
     if _e32 {
-        local_61 = (s_12.intensity >= 0f);
+        local_61 = (s_13.intensity >= 0f);
     } else {
         local_61 = false;
     }
     let _e39 = local_61;
     if _e39 {
-        let _e43 = airlight_is_finite(s_12.sigma_s);
+        let _e43 = airlight_is_finite(s_13.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     let _e45 = local_62;
     if _e45 {
-        local_63 = (s_12.sigma_s >= 0f);
+        local_63 = (s_13.sigma_s >= 0f);
     } else {
         local_63 = false;
     }
     let _e52 = local_63;
     if _e52 {
-        let _e56 = airlight_is_finite(s_12.sigma_t);
+        let _e56 = airlight_is_finite(s_13.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     let _e58 = local_64;
     if _e58 {
-        local_65 = (s_12.sigma_t >= 0f);
+        local_65 = (s_13.sigma_t >= 0f);
     } else {
         local_65 = false;
     }
     let _e65 = local_65;
     ok = _e65;
-    if ((s_12.flags & 1u) == 0u) {
+    if ((s_13.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_12.t_max);
+            let _e76 = airlight_is_finite(s_13.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         let _e78 = local_66;
         if _e78 {
-            local_67 = (s_12.t_min <= s_12.t_max);
+            local_67 = (s_13.t_min <= s_13.t_max);
         } else {
             local_67 = false;
         }
         let _e85 = local_67;
         ok = _e85;
     }
-    if (s_12.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_12.light_end);
+            let _e93 = airlight_vec_finite(s_13.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3156,39 +3223,39 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         let _e95 = local_68;
         ok = _e95;
     } else {
-        if (s_12.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_12.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_is_finite(s_12.brdf_albedo);
+            let _e107 = airlight_is_finite(s_13.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         let _e109 = local_69;
         if _e109 {
-            local_70 = (s_12.brdf_albedo >= 0f);
+            local_70 = (s_13.brdf_albedo >= 0f);
         } else {
             local_70 = false;
         }
         let _e116 = local_70;
         if _e116 {
-            local_71 = (s_12.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         let _e123 = local_71;
         if _e123 {
-            local_72 = (s_12.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         let _e130 = local_72;
         if _e130 {
-            let _e136 = airlight_safe_length((s_12.light_position - s_12.origin));
+            let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
             let _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3197,89 +3264,89 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
         let _e139 = local_73;
         ok = _e139;
     } else {
-        if (s_12.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e147 = ok;
         if _e147 {
-            let _e151 = airlight_vec_finite(s_12.light_axis);
+            let _e151 = airlight_vec_finite(s_13.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         let _e153 = local_74;
         if _e153 {
-            let _e157 = airlight_normalisable(s_12.light_axis);
+            let _e157 = airlight_normalisable(s_13.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         let _e159 = local_75;
         if _e159 {
-            local_76 = (s_12.light_param_a >= 0f);
+            local_76 = (s_13.light_param_a >= 0f);
         } else {
             local_76 = false;
         }
         let _e166 = local_76;
         if _e166 {
-            local_77 = (s_12.light_param_a <= 1024f);
+            local_77 = (s_13.light_param_a <= 1024f);
         } else {
             local_77 = false;
         }
         let _e173 = local_77;
         if _e173 {
-            local_78 = (fract((s_12.light_param_a * 0.5f)) == 0f);
+            local_78 = (fract((s_13.light_param_a * 0.5f)) == 0f);
         } else {
             local_78 = false;
         }
         let _e183 = local_78;
         ok = _e183;
     } else {
-        if (s_12.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
-                let _e191 = airlight_vec_finite(s_12.light_axis);
+                let _e191 = airlight_vec_finite(s_13.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             let _e193 = local_79;
             if _e193 {
-                let _e197 = airlight_normalisable(s_12.light_axis);
+                let _e197 = airlight_normalisable(s_13.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             let _e199 = local_80;
             if _e199 {
-                local_81 = (s_12.light_param_b < s_12.light_param_a);
+                local_81 = (s_13.light_param_b < s_13.light_param_a);
             } else {
                 local_81 = false;
             }
             let _e206 = local_81;
             if _e206 {
-                local_82 = (s_12.light_param_b >= -1f);
+                local_82 = (s_13.light_param_b >= -1f);
             } else {
                 local_82 = false;
             }
             let _e213 = local_82;
             if _e213 {
-                local_83 = (s_12.light_param_a <= 1f);
+                local_83 = (s_13.light_param_a <= 1f);
             } else {
                 local_83 = false;
             }
             let _e220 = local_83;
             ok = _e220;
         } else {
-            if (s_12.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_12.phase_param_a) < 1f);
-    switch s_12.phase_kind {
+    let g_ok = (abs(s_13.phase_param_a) < 1f);
+    switch s_13.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -3301,19 +3368,19 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
             }
             let _e239 = local_85;
             if _e239 {
-                local_86 = (abs(s_12.phase_param_b) < 1f);
+                local_86 = (abs(s_13.phase_param_b) < 1f);
             } else {
                 local_86 = false;
             }
             let _e247 = local_86;
             if _e247 {
-                local_87 = (s_12.phase_param_c >= 0f);
+                local_87 = (s_13.phase_param_c >= 0f);
             } else {
                 local_87 = false;
             }
             let _e254 = local_87;
             if _e254 {
-                local_88 = (s_12.phase_param_c <= 1f);
+                local_88 = (s_13.phase_param_c <= 1f);
             } else {
                 local_88 = false;
             }
@@ -3328,16 +3395,16 @@ fn airlight_valid(s_12: AirlightScene) -> bool {
     return _e263;
 }
 
-fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_13.dir);
-    if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_13.light_axis);
+    let _e2 = airlight_normalize(s_14.dir);
+    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_14.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_13.light_position - s_13.origin);
+    let to_light = (s_14.light_position - s_14.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -3345,10 +3412,10 @@ fn airlight_canonical(s_13: AirlightScene) -> AirlightCanonical {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_13.flags & 1u) != 0u);
+    let infinite_3 = ((s_14.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_13.t_min, select(s_13.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, select(s_14.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -3379,9 +3446,9 @@ fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
-fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
+fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
     let _e5 = airlight_two_product(a_14, b_11, key_3);
-    let _e6 = airlight_two_product(c_5, d_1, key_3);
+    let _e6 = airlight_two_product(c_6, d_1, key_3);
     let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -3407,19 +3474,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_91: bool;
     var out_2: AirlightCanonical;
     var local_92: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_14.flags > 1u));
-    let _e11 = airlight_two_sum(s_14.light_position.x, -(s_14.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_14.light_position.y, -(s_14.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_14.light_position.z, -(s_14.origin.z), key_4);
+    let key_4 = u32((s_15.flags > 1u));
+    let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
     let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_14.dir;
+    let dir = s_15.dir;
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
@@ -3448,10 +3515,10 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         return _e92;
     }
     let _e93 = airlight_safe_length(dir);
-    let h_4 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_4);
+    let h_5 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_5);
     if _e95 {
-        local_92 = (h_4 > 0f);
+        local_92 = (h_5 > 0f);
     } else {
         local_92 = false;
     }
@@ -3459,14 +3526,14 @@ fn airlight_refined(s_14: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_14.light_axis);
+    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_15.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir);
     let _e114 = airlight_normalize(w_3);
     let n_3 = -(cross(_e113, _e114));
-    out_2.h = h_4;
+    out_2.h = h_5;
     let _e119 = a_15;
     out_2.d_c = dot(n_3, _e119);
     let _e121 = out_2;
@@ -3477,8 +3544,8 @@ fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
     return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
 }
 
-fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
-    switch i_15 {
+fn airlight_list_get(l: AirlightPanelList, i_14: u32) -> vec4<f32> {
+    switch i_14 {
         case 0u: {
             return l.panel_a;
         }
@@ -3500,8 +3567,8 @@ fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
     }
 }
 
-fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
-    switch i_16 {
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_15: u32, v_5: vec4<f32>) {
+    switch i_15 {
         case 0u: {
             (*l_1).panel_a = v_5;
             return;
@@ -3533,183 +3600,183 @@ fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4
 }
 
 fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan {
-    var r_2: AirlightListScan = AirlightListScan(0f, 0f, 0u);
+    var r_3: AirlightListScan = AirlightListScan(0f, 0f, 0u);
     var worst_error: f32 = -1f;
 
     if (count_1 > 0u) {
-        let _e12 = r_2.total;
-        r_2.total = (_e12 + l_2.panel_a.z);
-        let _e17 = r_2.errors;
-        r_2.errors = (_e17 + l_2.panel_a.w);
+        let _e12 = r_3.total;
+        r_3.total = (_e12 + l_2.panel_a.z);
+        let _e17 = r_3.errors;
+        r_3.errors = (_e17 + l_2.panel_a.w);
         let _e23 = worst_error;
         if (l_2.panel_a.w > _e23) {
-            r_2.worst = 0u;
+            r_3.worst = 0u;
             worst_error = l_2.panel_a.w;
         }
     }
     if (count_1 > 1u) {
-        let _e32 = r_2.total;
-        r_2.total = (_e32 + l_2.panel_b.z);
-        let _e37 = r_2.errors;
-        r_2.errors = (_e37 + l_2.panel_b.w);
+        let _e32 = r_3.total;
+        r_3.total = (_e32 + l_2.panel_b.z);
+        let _e37 = r_3.errors;
+        r_3.errors = (_e37 + l_2.panel_b.w);
         let _e43 = worst_error;
         if (l_2.panel_b.w > _e43) {
-            r_2.worst = 1u;
+            r_3.worst = 1u;
             worst_error = l_2.panel_b.w;
         }
     }
     if (count_1 > 2u) {
-        let _e52 = r_2.total;
-        r_2.total = (_e52 + l_2.panel_c.z);
-        let _e57 = r_2.errors;
-        r_2.errors = (_e57 + l_2.panel_c.w);
+        let _e52 = r_3.total;
+        r_3.total = (_e52 + l_2.panel_c.z);
+        let _e57 = r_3.errors;
+        r_3.errors = (_e57 + l_2.panel_c.w);
         let _e63 = worst_error;
         if (l_2.panel_c.w > _e63) {
-            r_2.worst = 2u;
+            r_3.worst = 2u;
             worst_error = l_2.panel_c.w;
         }
     }
     if (count_1 > 3u) {
-        let _e72 = r_2.total;
-        r_2.total = (_e72 + l_2.panel_d.z);
-        let _e77 = r_2.errors;
-        r_2.errors = (_e77 + l_2.panel_d.w);
+        let _e72 = r_3.total;
+        r_3.total = (_e72 + l_2.panel_d.z);
+        let _e77 = r_3.errors;
+        r_3.errors = (_e77 + l_2.panel_d.w);
         let _e83 = worst_error;
         if (l_2.panel_d.w > _e83) {
-            r_2.worst = 3u;
+            r_3.worst = 3u;
             worst_error = l_2.panel_d.w;
         }
     }
     if (count_1 > 4u) {
-        let _e92 = r_2.total;
-        r_2.total = (_e92 + l_2.panel_e.z);
-        let _e97 = r_2.errors;
-        r_2.errors = (_e97 + l_2.panel_e.w);
+        let _e92 = r_3.total;
+        r_3.total = (_e92 + l_2.panel_e.z);
+        let _e97 = r_3.errors;
+        r_3.errors = (_e97 + l_2.panel_e.w);
         let _e103 = worst_error;
         if (l_2.panel_e.w > _e103) {
-            r_2.worst = 4u;
+            r_3.worst = 4u;
             worst_error = l_2.panel_e.w;
         }
     }
     if (count_1 > 5u) {
-        let _e112 = r_2.total;
-        r_2.total = (_e112 + l_2.panel_f.z);
-        let _e117 = r_2.errors;
-        r_2.errors = (_e117 + l_2.panel_f.w);
+        let _e112 = r_3.total;
+        r_3.total = (_e112 + l_2.panel_f.z);
+        let _e117 = r_3.errors;
+        r_3.errors = (_e117 + l_2.panel_f.w);
         let _e123 = worst_error;
         if (l_2.panel_f.w > _e123) {
-            r_2.worst = 5u;
+            r_3.worst = 5u;
             worst_error = l_2.panel_f.w;
         }
     }
-    let _e129 = r_2;
+    let _e129 = r_3;
     return _e129;
 }
 
 fn airlight_asinh(x_11: f32) -> f32 {
-    var r_3: f32;
+    var r_4: f32;
 
-    let a_21 = abs(x_11);
-    r_3 = (AIRLIGHT_LN_2_ + log(a_21));
-    if (a_21 <= 4096f) {
-        let _e17 = airlight_log1p((a_21 + ((a_21 * a_21) / (1f + sqrt((1f + (a_21 * a_21)))))));
-        r_3 = _e17;
+    let a_24 = abs(x_11);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
+    if (a_24 <= 4096f) {
+        let _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1f + sqrt((1f + (a_24 * a_24)))))));
+        r_4 = _e17;
     }
-    let _e18 = r_3;
-    let _e19 = r_3;
+    let _e18 = r_4;
+    let _e19 = r_4;
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_16: AirlightOuter, s_15: f32) -> f32 {
-    if (g_16.scale > 0f) {
-        let _e9 = airlight_asinh(((s_15 - g_16.s_star) / g_16.scale));
+fn airlight_to_w(g_17: AirlightOuter, s_16: f32) -> f32 {
+    if (g_17.scale > 0f) {
+        let _e9 = airlight_asinh(((s_16 - g_17.s_star) / g_17.scale));
         return _e9;
     }
-    return s_15;
+    return s_16;
 }
 
 fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
-    let r_10 = (x_12 - 1.5707964f);
-    let z_10 = (r_10 * r_10);
+    let r_11 = (x_12 - 1.5707964f);
+    let z_10 = (r_11 * r_11);
     let cos_r = (1f - ((z_10 / 2f) * (1f - ((z_10 / 12f) * (1f - ((z_10 / 30f) * (1f - ((z_10 / 56f) * (1f - ((z_10 / 90f) * (1f - ((z_10 / 132f) * (1f - (z_10 / 182f))))))))))))));
-    let sin_r = (r_10 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
+    let sin_r = (r_11 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
 fn airlight_acos(x_13: f32) -> f32 {
-    let a_22 = abs(x_13);
-    let _e8 = airlight_atan(sqrt(((1f - a_22) / (1f + a_22))));
+    let a_25 = abs(x_13);
+    let _e8 = airlight_atan(sqrt(((1f - a_25) / (1f + a_25))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_16: f32) -> f32 {
-    if (s_16 <= c_6) {
-        let _e4 = airlight_atan((s_16 / c_6));
+fn airlight_angle(c_7: f32, s_17: f32) -> f32 {
+    if (s_17 <= c_7) {
+        let _e4 = airlight_atan((s_17 / c_7));
         return _e4;
     }
-    if (s_16 <= -(c_6)) {
-        let _e10 = airlight_atan((s_16 / -(c_6)));
+    if (s_17 <= -(c_7)) {
+        let _e10 = airlight_atan((s_17 / -(c_7)));
         return (AIRLIGHT_PI - _e10);
     }
-    if (c_6 >= 0f) {
-        let _e16 = airlight_atan((c_6 / s_16));
+    if (c_7 >= 0f) {
+        let _e16 = airlight_atan((c_7 / s_17));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_6) / s_16));
+    let _e21 = airlight_atan((-(c_7) / s_17));
     return (1.5707964f + _e21);
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_23 = (cos_a * cos_g);
+    let a_26 = (cos_a * cos_g);
     let b_17 = (sin_a * sin_g);
-    if (b_17 <= abs(a_23)) {
-        return select(0f, AIRLIGHT_PI, (a_23 > 0f));
+    if (b_17 <= abs(a_26)) {
+        return select(0f, AIRLIGHT_PI, (a_26 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_23) / b_17), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_26) / b_17), -1f, 1f));
     return _e18;
 }
 
-fn airlight_outer_point(s_17: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_17.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
 }
 
-fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
-    var g_17: AirlightOuter;
+fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
+    var g_18: AirlightOuter;
     var local_93: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_5: u32 = 0u;
-    var i_17: u32 = 0u;
+    var i_16: u32 = 0u;
     var local_94: bool;
-    var i_18: u32 = 0u;
+    var i_17: u32 = 0u;
 
-    let _e2 = airlight_outer_point(s_18, AIRLIGHT_SURFACE_PANELS);
-    g_17 = _e2;
-    let to_light_1 = (s_18.light_position - s_18.origin);
+    let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    g_18 = _e2;
+    let to_light_1 = (s_19.light_position - s_19.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_18.intensity == 0f)) {
-        local_93 = (s_18.sigma_s == 0f);
+    if !((s_19.intensity == 0f)) {
+        local_93 = (s_19.sigma_s == 0f);
     } else {
         local_93 = true;
     }
     let _e18 = local_93;
     if _e18 {
-        g_17.outcome = 1u;
-        let _e21 = g_17;
+        g_18.outcome = 1u;
+        let _e21 = g_18;
         return _e21;
     }
     if !((_e7 > 0f)) {
-        g_17.outcome = 2u;
-        let _e27 = g_17;
+        g_18.outcome = 2u;
+        let _e27 = g_18;
         return _e27;
     }
-    if (s_18.brdf_albedo == 0f) {
-        g_17.outcome = 1u;
-        let _e33 = g_17;
+    if (s_19.brdf_albedo == 0f) {
+        g_18.outcome = 1u;
+        let _e33 = g_18;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_18.dir);
+    let _e37 = airlight_normalize(s_19.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -3719,35 +3786,35 @@ fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
         let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u = _e64;
     }
-    g_17.l = l_3;
+    g_18.l = l_3;
     let _e67 = u;
-    g_17.u = _e67;
-    g_17.cos_a = cos_a_1;
-    g_17.sin_a = _e41;
+    g_18.u = _e67;
+    g_18.cos_a = cos_a_1;
+    g_18.sin_a = _e41;
     let _e71 = airlight_angle(cos_a_1, _e41);
     let first = abs((1.5707964f - _e71));
     cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
     let _e79 = cuts_1[1];
     let _e81 = cuts_1[0];
     if (_e79 < _e81) {
-        let c_9 = cuts_1[0];
+        let c_10 = cuts_1[0];
         let _e87 = cuts_1[1];
         cuts_1[0] = _e87;
-        cuts_1[1] = c_9;
+        cuts_1[1] = c_10;
     }
     loop {
-        let _e93 = i_17;
+        let _e93 = i_16;
         if (_e93 < 2u) {
         } else {
             break;
         }
         {
-            let _e96 = i_17;
+            let _e96 = i_16;
             let _e98 = cuts_1[_e96];
             let _e100 = k_5;
-            let _e102 = g_17.gamma[_e100];
+            let _e102 = g_18.gamma[_e100];
             if (_e98 > _e102) {
-                let _e106 = i_17;
+                let _e106 = i_16;
                 let _e108 = cuts_1[_e106];
                 local_94 = (_e108 < AIRLIGHT_PI);
             } else {
@@ -3758,43 +3825,43 @@ fn airlight_surface(s_18: AirlightScene) -> AirlightOuter {
                 let _e113 = k_5;
                 k_5 = (_e113 + 1u);
                 let _e117 = k_5;
-                let _e119 = i_17;
+                let _e119 = i_16;
                 let _e121 = cuts_1[_e119];
-                g_17.gamma[_e117] = _e121;
+                g_18.gamma[_e117] = _e121;
             }
         }
         continuing {
-            let _e123 = i_17;
-            i_17 = (_e123 + 1u);
+            let _e123 = i_16;
+            i_16 = (_e123 + 1u);
         }
     }
     let _e126 = k_5;
-    g_17.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    g_18.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     let _e132 = k_5;
-    g_17.panels = (_e132 + 1u);
+    g_18.panels = (_e132 + 1u);
     loop {
-        let _e137 = i_18;
-        let _e139 = g_17.panels;
+        let _e137 = i_17;
+        let _e139 = g_18.panels;
         if (_e137 <= _e139) {
         } else {
             break;
         }
         {
-            let _e142 = i_18;
-            let _e144 = i_18;
-            g_17.edges[_e142] = f32(_e144);
+            let _e142 = i_17;
+            let _e144 = i_17;
+            g_18.edges[_e142] = f32(_e144);
         }
         continuing {
-            let _e147 = i_18;
-            i_18 = (_e147 + 1u);
+            let _e147 = i_17;
+            i_17 = (_e147 + 1u);
         }
     }
-    let _e149 = g_17;
+    let _e149 = g_18;
     return _e149;
 }
 
-fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
-    var g_18: AirlightOuter;
+fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
+    var g_19: AirlightOuter;
     var local_95: bool;
     var local_96: bool;
     var s_star: f32 = 0f;
@@ -3813,51 +3880,51 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     var local_107: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var i_19: u32 = 0u;
+    var i_18: u32 = 0u;
     var local_108: bool;
     var local_109: bool;
     var local_110: bool;
     var n_1: u32 = 0u;
-    var i_20: u32 = 0u;
+    var i_19: u32 = 0u;
     var local_111: bool;
 
-    if (s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_19);
+    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_20);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_19, AIRLIGHT_SEGMENT_PANELS);
-    g_18 = _e6;
-    if (s_19.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e11 = g_18;
+    let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    g_19 = _e6;
+    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        let _e11 = g_19;
         return _e11;
     }
-    let ab_1 = (s_19.light_end - s_19.light_position);
+    let ab_1 = (s_20.light_end - s_20.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_95 = (s_19.intensity == 0f);
+        local_95 = (s_20.intensity == 0f);
     } else {
         local_95 = true;
     }
     let _e26 = local_95;
     if !(_e26) {
-        local_96 = (s_19.sigma_s == 0f);
+        local_96 = (s_20.sigma_s == 0f);
     } else {
         local_96 = true;
     }
     let _e34 = local_96;
     if _e34 {
-        g_18.outcome = 1u;
-        let _e37 = g_18;
+        g_19.outcome = 1u;
+        let _e37 = g_19;
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_19.dir);
-    let w0_ = (s_19.light_position - s_19.origin);
+    let _e41 = airlight_normalize(s_20.dir);
+    let w0_ = (s_20.light_position - s_20.origin);
     let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_19.flags & 1u) != 0u);
+    let infinite_4 = ((s_20.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -3889,7 +3956,7 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     let _e97 = local_99;
     if _e97 {
         let _e101 = t_star;
-        local_100 = (s_19.t_min <= _e101);
+        local_100 = (s_20.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -3897,7 +3964,7 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_102 = (_e110 <= s_19.t_max);
+            local_102 = (_e110 <= s_20.t_max);
         } else {
             local_102 = true;
         }
@@ -3908,8 +3975,8 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     }
     let _e116 = local_101;
     if _e116 {
-        g_18.outcome = 2u;
-        let _e119 = g_18;
+        g_19.outcome = 2u;
+        let _e119 = g_19;
         return _e119;
     }
     if (sin_a_1 > 0f) {
@@ -3959,22 +4026,22 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
     if !(_e165) {
         scale = 0f;
     }
-    g_18.e = e_4;
+    g_19.e = e_4;
     let _e170 = s_star;
-    g_18.s_star = _e170;
+    g_19.s_star = _e170;
     let _e172 = scale;
-    g_18.scale = _e172;
+    g_19.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_19.t_min - along_d) / cos_a_2), ((s_19.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
     loop {
-        let _e189 = i_19;
+        let _e189 = i_18;
         if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0f) {
-                let _e196 = i_19;
+                let _e196 = i_18;
                 local_108 = (_e196 > 0u);
             } else {
                 local_108 = false;
@@ -3983,7 +4050,7 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
             if _e200 {
                 continue;
             }
-            let _e201 = i_19;
+            let _e201 = i_18;
             if (_e201 == 2u) {
                 local_109 = infinite_4;
             } else {
@@ -3993,10 +4060,10 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
             if _e207 {
                 continue;
             }
-            let _e208 = i_19;
+            let _e208 = i_18;
             let _e210 = at[_e208];
             if (_e210 > 0f) {
-                let _e215 = i_19;
+                let _e215 = i_18;
                 let _e217 = at[_e215];
                 local_110 = (_e217 < _e15);
             } else {
@@ -4004,61 +4071,61 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
             }
             let _e220 = local_110;
             if _e220 {
-                let _e221 = i_19;
-                let _e223 = g_18;
-                let _e224 = i_19;
+                let _e221 = i_18;
+                let _e223 = g_19;
+                let _e224 = i_18;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[_e221] = _e227;
             }
         }
         continuing {
-            let _e229 = i_19;
-            i_19 = (_e229 + 1u);
+            let _e229 = i_18;
+            i_18 = (_e229 + 1u);
         }
     }
     let _e232 = cuts_2[1];
     let _e234 = cuts_2[0];
     if (_e232 < _e234) {
-        let c_10 = cuts_2[0];
+        let c_11 = cuts_2[0];
         let _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_10;
+        cuts_2[1] = c_11;
     }
     let _e243 = cuts_2[2];
     let _e245 = cuts_2[1];
     if (_e243 < _e245) {
-        let c_11 = cuts_2[1];
+        let c_12 = cuts_2[1];
         let _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_11;
+        cuts_2[2] = c_12;
     }
     let _e254 = cuts_2[1];
     let _e256 = cuts_2[0];
     if (_e254 < _e256) {
-        let c_12 = cuts_2[0];
+        let c_13 = cuts_2[0];
         let _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_12;
+        cuts_2[1] = c_13;
     }
-    let _e264 = g_18;
+    let _e264 = g_19;
     let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_18;
+    let _e268 = g_19;
     let _e270 = airlight_to_w(_e268, 0f);
-    g_18.edges[0] = _e270;
+    g_19.edges[0] = _e270;
     loop {
-        let _e275 = i_20;
+        let _e275 = i_19;
         if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            let _e278 = i_20;
+            let _e278 = i_19;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
-            let _e284 = g_18.edges[_e282];
+            let _e284 = g_19.edges[_e282];
             if (_e280 > _e284) {
-                let _e288 = i_20;
+                let _e288 = i_19;
                 let _e290 = cuts_2[_e288];
                 local_111 = (_e290 < _e265);
             } else {
@@ -4069,66 +4136,66 @@ fn airlight_outer(s_19: AirlightScene) -> AirlightOuter {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
-                let _e300 = i_20;
+                let _e300 = i_19;
                 let _e302 = cuts_2[_e300];
-                g_18.edges[_e298] = _e302;
+                g_19.edges[_e298] = _e302;
             }
         }
         continuing {
-            let _e304 = i_20;
-            i_20 = (_e304 + 1u);
+            let _e304 = i_19;
+            i_19 = (_e304 + 1u);
         }
     }
     let _e307 = n_1;
-    g_18.edges[(_e307 + 1u)] = _e265;
+    g_19.edges[(_e307 + 1u)] = _e265;
     let _e312 = n_1;
-    g_18.panels = (_e312 + 1u);
-    let _e315 = g_18;
+    g_19.panels = (_e312 + 1u);
+    let _e315 = g_19;
     return _e315;
 }
 
-fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_21: AirlightScene, g_20: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_20;
+    p = s_21;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_21 = min(u32(max(floor(x_14), 0f)), (g_19.panels - 1u));
-        let t_6 = (x_14 - f32(i_21));
-        let a_24 = g_19.gamma[i_21];
-        let b_18 = g_19.gamma[(i_21 + 1u)];
-        let gamma = (a_24 + ((((b_18 - a_24) * t_6) * t_6) * ((3f - t_6) - t_6)));
-        let jacobian = ((((b_18 - a_24) * 6f) * t_6) * (1f - t_6));
+    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let i_20 = min(u32(max(floor(x_14), 0f)), (g_20.panels - 1u));
+        let t_7 = (x_14 - f32(i_20));
+        let a_27 = g_20.gamma[i_20];
+        let b_18 = g_20.gamma[(i_20 + 1u)];
+        let gamma = (a_27 + ((((b_18 - a_27) * t_7) * t_7) * ((3f - t_7) - t_7)));
+        let jacobian = ((((b_18 - a_27) * 6f) * t_7) * (1f - t_7));
         if !((jacobian > 0f)) {
             let _e45 = p;
             return AirlightNode(_e45, 0f);
         }
         let _e48 = airlight_cos_sin_half_turn(gamma);
-        let _e53 = airlight_half_arc(g_19.cos_a, g_19.sin_a, _e48.x, _e48.y);
+        let _e53 = airlight_half_arc(g_20.cos_a, g_20.sin_a, _e48.x, _e48.y);
         if !((_e53 > 0f)) {
             let _e57 = p;
             return AirlightNode(_e57, 0f);
         }
         let _e67 = airlight_cos_sin_half_turn(_e53);
-        let arc = (2f * (((g_19.cos_a * _e48.x) * _e53) + ((g_19.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_19.l) + (_e48.y * g_19.u));
+        let arc = (2f * (((g_20.cos_a * _e48.x) * _e53) + ((g_20.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_20.l) + (_e48.y * g_20.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_20.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_20.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
-        if (g_19.scale > 0f) {
-            at_1 = (g_19.s_star + (g_19.scale * sinh(x_14)));
-            ds = (g_19.scale * cosh(x_14));
+        if (g_20.scale > 0f) {
+            at_1 = (g_20.s_star + (g_20.scale * sinh(x_14)));
+            ds = (g_20.scale * cosh(x_14));
         }
         let _e115 = at_1;
-        p.light_position = (g_19.a + (_e115 * g_19.e));
+        p.light_position = (g_20.a + (_e115 * g_20.e));
         let _e119 = p;
         let _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -4137,7 +4204,7 @@ fn airlight_outer_node(s_20: AirlightScene, g_19: AirlightOuter, x_14: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4152,7 +4219,7 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
     var j_4: u32;
     var local_112: bool;
     var f: f32;
-    var r_4: AirlightResult;
+    var r_5: AirlightResult;
     var local_113: bool;
     var local_114: bool;
     var local_115: bool;
@@ -4162,11 +4229,11 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
     var local_117: bool;
     var local_118: bool;
 
-    let _e1 = airlight_valid(s_21);
+    let _e1 = airlight_valid(s_22);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_21);
+    let _e6 = airlight_outer(s_22);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4186,7 +4253,7 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
         {
             let _e60 = a_16;
             let _e61 = b_12;
-            let c_13 = (0.5f * (_e60 + _e61));
+            let c_14 = (0.5f * (_e60 + _e61));
             let _e65 = b_12;
             let _e66 = a_16;
             let hw_1 = (0.5f * (_e65 - _e66));
@@ -4210,12 +4277,12 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
                         local_112 = false;
                     }
                     let _e100 = local_112;
-                    let w_4 = select((c_13 + (hw_1 * node.x)), (c_13 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_21, _e6, w_4);
+                    let w_4 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
+                    let _e102 = airlight_outer_node(s_22, _e6, w_4);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
-                        r_4 = AirlightResult(0f, 0u);
+                        r_5 = AirlightResult(0f, 0u);
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
@@ -4228,12 +4295,12 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
                             let _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_4 = _e123;
+                            r_5 = _e123;
                         }
-                        let _e125 = r_4.in_scatter;
+                        let _e125 = r_5.in_scatter;
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
-                            let _e132 = r_4.status;
+                            let _e132 = r_5.status;
                             local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
                             local_114 = true;
@@ -4242,17 +4309,17 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_21.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = (s_21.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }
                         let _e149 = local_115;
                         if _e149 {
-                            let _e150 = r_4;
+                            let _e150 = r_5;
                             return _e150;
                         }
-                        let _e152 = r_4.in_scatter;
+                        let _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
                     let _e155 = k_6;
@@ -4384,12 +4451,12 @@ fn airlight_in_scatter(s_21: AirlightScene) -> AirlightResult {
 
 @compute @workgroup_size(64, 1, 1) 
 fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
-    let i_22 = id.x;
-    if (i_22 >= arrayLength((&airlight_records))) {
+    let i_21 = id.x;
+    if (i_21 >= arrayLength((&airlight_records))) {
         return;
     }
-    let _e9 = airlight_records[i_22];
+    let _e9 = airlight_records[i_21];
     let _e10 = airlight_in_scatter(_e9);
-    airlight_results[i_22] = _e10;
+    airlight_results[i_21] = _e10;
     return;
 }

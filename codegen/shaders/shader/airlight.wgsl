@@ -19,6 +19,8 @@ const AIRLIGHT_MAX_PANELS: u32 = @MAX_PANELS@u;
 const AIRLIGHT_PANEL_LIST: u32 = @PANEL_LIST@u;
 // The largest exponent growth across a y-panel (panels.rs Y_PANEL_EXPONENT).
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = @Y_PANEL_EXPONENT@;
+// The margin of the panels' aliasing model (panels.rs ALIASING_MARGIN).
+const AIRLIGHT_ALIASING_MARGIN: u32 = @ALIASING_MARGIN@u;
 // The range of exact products (real.rs, f32).
 const AIRLIGHT_EXACT_RANGE: f32 = @EXACT_RANGE@;
 const AIRLIGHT_PI: f32 = 3.14159265358979;
@@ -598,6 +600,46 @@ struct AirlightHalf {
     dv_infinite: bool,
 }
 
+/// The height t of y = ±it where μ(y) = −σ(1 − y²)/(1 + y²) reaches the phase's singular cosine
+/// `side`·(1 + gap) (combined.rs `singular_heights`; gap AIRLIGHT_FLT_MAX: none, height 1).
+fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
+    if (!(gap > 0.0)) { return 0.0; }
+    if ((side > 0.0) == (sigma < 0.0)) { return sqrt(gap / (2.0 + gap)); }
+    return sqrt((2.0 + gap) / gap);
+}
+
+/// Henyey–Greenstein's singular cosine ±(1 + (1 − |g|)²/(2|g|)) as its gap (phase.rs
+/// `hg_singular_cosine`).
+fn airlight_hg_gap(g: f32) -> f32 {
+    let a = abs(g);
+    if (!(a > 0.0)) { return AIRLIGHT_FLT_MAX; }
+    return (1.0 - a) * (1.0 - a) / (a + a);
+}
+
+/// Heights t of the integrand's singularities at y = ±it on the half with this σ (combined.rs
+/// `singular_heights`, phase.rs `singular_cosines`): the poles of c and μ at ±i, and the phase
+/// function's (every light kind is a polynomial in c between its kinks).
+fn airlight_singular_heights(s: AirlightScene, sigma: f32) -> vec3<f32> {
+    let p0 = s.phase_param_a;
+    var h = vec3<f32>(1.0);
+    switch s.phase_kind {
+        case AIRLIGHT_PHASE_HENYEY_GREENSTEIN, AIRLIGHT_PHASE_CORNETTE_SHANKS: {
+            h.y = airlight_singular_height(p0, airlight_hg_gap(p0), sigma);
+        }
+        case AIRLIGHT_PHASE_SCHLICK: {
+            // 1 − kμ = 0 at μ = 1/k = ±(1 + (1 − |k|)/|k|)
+            let a = abs(p0);
+            h.y = airlight_singular_height(p0, select(AIRLIGHT_FLT_MAX, (1.0 - a) / a, a > 0.0), sigma);
+        }
+        case AIRLIGHT_PHASE_TWO_LOBE_HG: {
+            h.y = airlight_singular_height(p0, airlight_hg_gap(p0), sigma);
+            h.z = airlight_singular_height(s.phase_param_b, airlight_hg_gap(s.phase_param_b), sigma);
+        }
+        default: {}
+    }
+    return h;
+}
+
 /// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
 /// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
 fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
@@ -782,22 +824,30 @@ fn airlight_tail_estimate(c: array<f32, AIRLIGHT_TERMS>) -> f32 {
     return abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
 }
 
-/// The error per unit of the tail and of M_0: aliasing q^{N/4} plus truncation (panels.rs
-/// `error_factor`).
-fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_TERMS>) -> f32 {
+/// The error per unit of the tail and of M_0 (panels.rs `error_factor`, the singularities
+/// known): q at least the nearest singularity's rate `floor`, aliasing Σ_j q^{N+1−j−margin}|M_j|
+/// by Horner, plus truncation.
+fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_TERMS>, floor: f32) -> f32 {
     if (!(m[0] > 0.0)) { return 1.0; }
     let last = abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
     let before = abs(c[AIRLIGHT_TERMS - 3u]) + abs(c[AIRLIGHT_TERMS - 4u]);
     if (!(before > 0.0) || !(last < before)) { return 1.0; }
-    let q = sqrt(last / before);
-    // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end (panels.rs)
-    var c_max = 0.0;
-    @EACH_TERM@ c_max = max(c_max, abs(c[{k}]));
-    let power = select(AIRLIGHT_TERMS / 4u, AIRLIGHT_TERMS / 6u, c_max > 1.2 * abs(c[0]));
-    var aliasing = 1.0;
-    for (var i = 0u; i < power; i++) { aliasing *= q; }
-    let truncation = q * max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u])) / m[0];
-    return min(aliasing + truncation, 1.0);
+    let q = max(sqrt(last / before), select(0.0, floor, floor > 0.0));
+    if (!(q < 1.0)) { return 1.0; }
+    var aliasing = 0.0;
+    @EACH_TERM@ aliasing = select(aliasing + abs(m[{k}]), aliasing * q + abs(m[{k}]), {k}u + AIRLIGHT_ALIASING_MARGIN < AIRLIGHT_TERMS + 2u);
+    let truncation = q * max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u]));
+    return min((aliasing + truncation) / m[0], 1.0);
+}
+
+/// 1/ρ of the Bernstein ellipse of [c − r, c + r] through it (panels.rs `decay_rate`).
+fn airlight_decay_rate(c: f32, r: f32, t: f32) -> f32 {
+    let inv = 1.0 / r;
+    let re = c * inv;
+    let im = t * inv;
+    let im2 = im * im;
+    let a = (sqrt((re - 1.0) * (re - 1.0) + im2) + sqrt((re + 1.0) * (re + 1.0) + im2)) * 0.5;
+    return 1.0 / (a + sqrt(max(a * a - 1.0, 0.0)));
 }
 
 /// The transform's rounding: 4Nε·mass·mean.
@@ -826,7 +876,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
 }
 
 /// A v-panel (panels.rs `v_panel`).
-fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>) -> AirlightPanel {
     let rule = airlight_gauss_rule();
     var r = (b - a) * 0.5;
     var vc = a + r;
@@ -856,12 +906,13 @@ fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     @EACH_TERM@ sum += c[{k}] * m[{k}];
     let w = airlight_factor(half, a, b) * r;
     let mass = w * m[0];
-    let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m);
+    let floor = max(airlight_decay_rate(vc, r, heights.x), max(airlight_decay_rate(vc, r, heights.y), airlight_decay_rate(vc, r, heights.z)));
+    let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass * over_max, f_max);
 }
 
 /// A y-panel (panels.rs `y_panel`): the whole integrand by the rule in y.
-fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>) -> AirlightPanel {
     let rule = airlight_gauss_rule();
     let r = (b - a) * 0.5;
     let yc = a + r;
@@ -886,7 +937,9 @@ fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     let w = airlight_factor(half, a, b) * r;
     var m = airlight_zero_terms();
     m[0] = 2.0;
-    let error = w * 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m);
+    // the exponential's essential singularity at y = 0 as well
+    let floor = max(airlight_decay_rate(yc, r, 0.0), max(airlight_decay_rate(yc, r, heights.x), max(airlight_decay_rate(yc, r, heights.y), airlight_decay_rate(yc, r, heights.z))));
+    let error = w * 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * 2.0 * c[0], error, airlight_transform_noise(w * 2.0, p_avg), w * mass * over_max, f_max);
 }
 
@@ -950,15 +1003,16 @@ fn airlight_tail_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half:
     return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass, f_max);
 }
 
-/// The panel kind for [a, b] (panels.rs `panel`).
-fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32) -> AirlightPanel {
+/// The panel kind for [a, b] (panels.rs `panel`); the singularities' heights in y and in the
+/// v-panels' variable (`airlight_singular_heights`).
+fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights_y: vec3<f32>, heights_v: vec3<f32>) -> AirlightPanel {
     if (half.second && a <= b * 0.25) {
         return airlight_tail_panel(s, g, sigma, half, a, b);
     }
     if (half.second && half.big_h * ((b - a) / (a * b)) <= AIRLIGHT_Y_PANEL_EXPONENT) {
-        return airlight_y_panel(s, g, sigma, half, a, b);
+        return airlight_y_panel(s, g, sigma, half, a, b, heights_y);
     }
-    return airlight_v_panel(s, g, sigma, half, a, b);
+    return airlight_v_panel(s, g, sigma, half, a, b, heights_v);
 }
 
 /// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split
@@ -966,6 +1020,9 @@ fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airl
 /// largest |F| seen on the segment.
 fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, lo: f32, hi: f32, f_max: ptr<function, f32>) -> f32 {
     if (!(hi > lo)) { return 0.0; }
+    // G's singularities once per piece, in y and in the v-panels' variable (1/t after the foot)
+    let heights_y = airlight_singular_heights(s, sigma);
+    let heights_v = select(heights_y, 1.0 / heights_y, half.second);
     // (a, b, value, error) and mass_over per listed panel
     var list = array<vec4<f32>, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST4@);
     var mass_over = array<f32, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST@);
@@ -981,7 +1038,7 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     var count = 0u;
     var budget = AIRLIGHT_MAX_PANELS;
     for (var step = 0u; step < AIRLIGHT_MAX_PANELS; step++) {
-        let p = airlight_panel(s, g, sigma, half, a, b);
+        let p = airlight_panel(s, g, sigma, half, a, b, heights_y, heights_v);
         *f_max = max(*f_max, p.f_max);
         list[slot] = vec4<f32>(a, b, p.value, p.error);
         mass_over[slot] = p.mass_over;

@@ -180,6 +180,7 @@ impl Constants {
             ("@ZEROS_LIST@", list(vec!["0.0".to_string(); panel_list])),
             ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
             ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
+            ("@ALIASING_MARGIN@", airlight::panels::ALIASING_MARGIN.to_string()),
             ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
             ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
             ("@LEGENDRE_BODY@", unrolled::legendre_body(terms, transform)),
