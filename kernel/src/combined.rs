@@ -113,14 +113,14 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     fn eval_over_reciprocal(&self, v: T) -> (T, T) {
         HalfIntegrand { sigma: -self.sigma, ..*self }.with_over(v)
     }
-    /// `c(y)` and `μ(y)` have poles at `y = ±i`; a phase singularity at `μ*` is where
+    /// `c(y)` and `μ(y)` have simple poles at `y = ±i`, where `D(c)·P(μ)/(1 + y²)` has one of
+    /// order `deg D + max(growth, 0) + 1`; a phase singularity at `μ*` is where
     /// `−σ(1 − y²)/(1 + y²) = μ*`, i.e. `y² = (1 − κ)/(1 + κ)` with `κ = −μ*/σ`, `|κ| > 1`:
     /// `y = ±i√((κ − 1)/(κ + 1))`, from the gap `|μ*| − 1` without cancellation.
-    fn singular_heights(&self) -> Option<[T; 3]> {
-        if !self.light.is_entire() {
-            return None;
-        }
-        let [a, b] = self.phase.singular_cosines()?;
+    fn singularities(&self) -> Option<[(T, T); 3]> {
+        let degree = self.light.polynomial_degree()?;
+        let p = self.phase.singularities()?;
+        let [a, b] = p.cosines;
         let height = |mu: T| {
             let gap = mu.abs() - T::one();
             if !(gap > T::zero()) {
@@ -137,7 +137,8 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
                 ((two + gap) / gap).sqrt()
             }
         };
-        Some([T::one(), height(a), height(b)])
+        let at_i = T::from(degree).unwrap_or(T::infinity()) + p.growth.max(T::zero()) + T::one();
+        Some([(T::one(), at_i), (height(a), p.order), (height(b), p.order)])
     }
 }
 
@@ -550,18 +551,19 @@ mod tests {
     use crate::light::Omni;
     use crate::phase::HenyeyGreenstein;
 
-    /// The heights `t` the integrand declares are where `μ(y) = −σ(1 − y²)/(1 + y²)` reaches the
+    /// The heights `t` the integrand declares (with their orders) are where `μ(y) = −σ(1 − y²)/(1 + y²)` reaches the
     /// phase function's singular cosine: at `y = it`, `μ = −σ(1 + t²)/(1 − t²)`; on both halves
     /// (`σ = ∓1`) and for lobes either way, including a near-peak `g = 0.999`.
     #[test]
     fn singular_heights_meet_the_phase_poles() {
         for g in [-0.999f64, -0.6, 0.2, 0.9, 0.999] {
             let phase = HenyeyGreenstein { g };
-            let mu_star = phase.singular_cosines().unwrap()[0];
+            let mu_star = phase.singularities().unwrap().cosines[0];
             for sigma in [-1.0f64, 1.0] {
                 let f = HalfIntegrand { sigma, exact_sides: true, d_el: 0.3, d_c: 0.5, light: &Omni, phase: &phase };
-                let [one, t, _] = f.singular_heights().unwrap();
-                assert_eq!(one, 1.0);
+                let [(one, at_i), (t, order), _] = f.singularities().unwrap();
+                // Omni, HG: the pole of 1/(1 + y²) alone at ±i; HG's branch point of order 3/2
+                assert_eq!((one, at_i, order), (1.0, 1.0, 1.5));
                 let mu = -sigma * (1.0 + t * t) / (1.0 - t * t);
                 assert!((mu - mu_star).abs() <= 1e-9 * mu_star.abs(), "g = {g}, σ = {sigma}: t = {t}, μ(it) = {mu}, μ* = {mu_star}");
             }

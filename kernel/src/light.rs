@@ -31,12 +31,13 @@ pub trait LightDistribution<T: Real> {
     fn dark_below(&self) -> Option<T> {
         None
     }
-    /// `true` if `D` is a polynomial in `c` on each piece between its [`kinks`](Self::kinks)
-    /// (an entire function would do): along a ray `D(c(y))` is then singular only where `c` is,
-    /// at `y = ±i`, and the error-controlled path knows how fast its panels' coefficients must
-    /// fall. The default `false` keeps the estimate that assumes nothing.
-    fn is_entire(&self) -> bool {
-        false
+    /// `Some(p)` if `D` is a polynomial in `c` of degree at most `p` on each piece between its
+    /// [`kinks`](Self::kinks): along a ray `D(c(y))` is then singular only where `c` is, at
+    /// `y = ±i`, with a pole of order `p`, and the error-controlled path knows how fast its
+    /// panels' coefficients must fall. The default `None` keeps the estimate that assumes
+    /// nothing.
+    fn polynomial_degree(&self) -> Option<u32> {
+        None
     }
     /// Checks the parameters; the checked API calls it.
     fn validate(&self) -> Result<(), InputError> {
@@ -58,8 +59,8 @@ impl<T: Real> LightDistribution<T> for Omni {
     fn is_isotropic(&self) -> bool {
         true
     }
-    fn is_entire(&self) -> bool {
-        true
+    fn polynomial_degree(&self) -> Option<u32> {
+        Some(0)
     }
 }
 
@@ -88,8 +89,8 @@ impl<T: Real> LightDistribution<T> for TwoLobed<T> {
     fn is_isotropic(&self) -> bool {
         self.power == 0
     }
-    fn is_entire(&self) -> bool {
-        true
+    fn polynomial_degree(&self) -> Option<u32> {
+        Some(self.power)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
@@ -151,9 +152,9 @@ impl<T: Real> LightDistribution<T> for SpotCone<T> {
         let width = self.cos_inner - self.cos_outer;
         Some(if width <= T::epsilon() { self.cos_outer + width * T::lit(0.5) } else { self.cos_outer })
     }
-    fn is_entire(&self) -> bool {
+    fn polynomial_degree(&self) -> Option<u32> {
         // 0, the smoothstep's cubic or 1 between the kinks
-        true
+        Some(3)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)?;
@@ -198,8 +199,8 @@ impl<T: Real> LightDistribution<T> for Lambertian<T> {
     fn dark_below(&self) -> Option<T> {
         Some(T::zero())
     }
-    fn is_entire(&self) -> bool {
-        true
+    fn polynomial_degree(&self) -> Option<u32> {
+        Some(1)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_vector(T::vec3_to_array(self.axis), "light.distribution.axis", true)
@@ -251,8 +252,12 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
             _ => None,
         }
     }
-    fn is_entire(&self) -> bool {
-        true
+    fn polynomial_degree(&self) -> Option<u32> {
+        match self {
+            AnyDistribution::Omni => LightDistribution::<T>::polynomial_degree(&Omni),
+            AnyDistribution::TwoLobed(d) => d.polynomial_degree(),
+            AnyDistribution::SpotCone(d) => d.polynomial_degree(),
+        }
     }
     fn validate(&self) -> Result<(), InputError> {
         match self {

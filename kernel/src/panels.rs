@@ -25,7 +25,9 @@
 //!   `y`, where `1/(1+v²)` would put its poles close to a wide v-panel.
 //!
 //! The estimate of a panel's error is its weight mass times `|c_{N−1}| + |c_{N−2}|`, scaled by
-//! the coefficients' decay (`error_factor`) and, on a tail panel, plus the monomial
+//! the coefficients' decay (`error_factor`: no faster than the Bernstein ellipse through the
+//! integrand's nearest singularity allows, where the phase function and distribution declare
+//! them) and, on a tail panel, plus the monomial
 //! conversion's rounding (0 once it is below the transform's own rounding, where splitting
 //! cannot help). A piece is done when the sum of its panels' estimates is below
 //! `tolerance × max(|their sum|, floor × scale)` (`scale`: the piece's integral with `F`
@@ -91,7 +93,7 @@ where
     // the accuracy target's form: tolerance × max(|sum|, floor × scale)
     let target = |total: T, mass: T, f_max: T| control.tolerance * total.abs().max(control.floor * f_max * mass);
     // G's singularities once per piece, in the panels' variables
-    let singular = f.singular_heights().map(|y| Singular { y, v: if half.second { y.map(|t| t.recip()) } else { y } });
+    let singular = f.singularities().map(|s| Singular::new::<N>(s, half.second));
     let first = listed::<T, F, N>(half, lo, hi, f, rule, singular.as_ref(), run);
     let mut budget = control.max_panels.saturating_sub(1);
     // most pieces are done in one panel: no list for them
@@ -167,11 +169,31 @@ fn panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, 
     }
 }
 
-/// Heights `t` of `G`'s singularities at `±it` ([`Expandable::singular_heights`]) in `y` and in
-/// the v-panels' variable (`1/t` after the foot).
+/// `G`'s singularities at `±it` ([`Expandable::singularities`]): heights in `y` and in the
+/// v-panels' variable (`1/t` after the foot), and each one's bound on the coefficients' step
+/// ratio beyond the last computed one, per unit of `1/ρ`.
 struct Singular<T> {
     y: [T; 3],
     v: [T; 3],
+    /// `(N/(N − 1))^{max(α − 1, 0)}`: near a singularity of order `α` the coefficients go as
+    /// `k^{α−1} ρ^{−k}`, whose step ratio `((k+1)/k)^{α−1}/ρ` is largest at the first step
+    /// beyond `c_{N−1}` (a high-order pole — the `c^p` beam's `p`-fold one at `y = ±i` — keeps
+    /// the coefficients from their asymptotic rate well past `N`).
+    step: [T; 3],
+}
+
+impl<T: Real> Singular<T> {
+    fn new<const N: usize>(s: [(T, T); 3], second: bool) -> Self {
+        let y = s.map(|(t, _)| t);
+        let ratio = T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap();
+        Singular { y, v: if second { y.map(|t| t.recip()) } else { y }, step: s.map(|(_, order)| ratio.powf((order - T::one()).max(T::zero()))) }
+    }
+
+    /// The least rate the coefficients on `[c − r, c + r]` (in the heights `ts`' variable) can
+    /// fall at beyond `c_{N−1}`.
+    fn floor(&self, ts: &[T; 3], c: T, r: T) -> T {
+        ts.iter().zip(&self.step).fold(T::zero(), |q, (&t, &step)| q.max(step * decay_rate(c, r, t)))
+    }
 }
 
 /// What one panel's samples say, in the half's scaling.
@@ -252,13 +274,15 @@ fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
 /// `c_k ≈ C q^k`, `q` from the last four coefficients, the first is about `q·|M_{N−1}|/M_0` of
 /// the tail.
 ///
-/// * Where `G`'s singularities are known (`floor`: `1/ρ` of the Bernstein ellipse through the
-///   nearest, [`decay_rate`]) the coefficients fall no faster than `floor` — a lobe just
-///   beyond the panel's end whose peak the nodes miss cannot hide behind steeply falling
-///   first coefficients — so `q` is raised to it, and the aliasing is its model
+/// * Where `G`'s singularities are known (`floor`: the largest step ratio they allow beyond
+///   `c_{N−1}`, `1/ρ` of the Bernstein ellipse through each ([`decay_rate`]) times its order's
+///   factor, [`Singular`]) the coefficients fall no faster than `floor` — a lobe just beyond
+///   the panel's end whose peak the nodes miss cannot hide behind steeply falling first
+///   coefficients — so `q` is raised to it, and the aliasing is its model
 ///   `Σ_j q^{N+1−j−m} |M_j|/M_0` with a margin `q^{−m}`, `m` = [`ALIASING_MARGIN`].
-/// * Otherwise (a user's phase function or distribution that does not say) nothing is
-///   assumed about the rate: the aliasing is taken as `q^{N/4}` (in f32, `q^{N/2}` let panels
+/// * Otherwise — a user's phase function or distribution that does not say, or a floor of 1 or
+///   more (a pole of high order near the panel: the `c^64` beam's 64-fold one at `y = ±i`) —
+///   nothing is assumed about the rate: the aliasing is taken as `q^{N/4}` (in f32, `q^{N/2}` let panels
 ///   with 3e-3 errors through on the near-light class), and `q^{N/6}` where some `|c_k|`
 ///   exceeds `1.2|c_0|` — a peak at or just beyond the panel's end (`q^{N/4}` let 3.1× the
 ///   tolerance through there: 12 nodes, HG `g = 0.9`, tolerance 1e-3).
@@ -275,12 +299,10 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
         return T::one();
     }
     let q = (last / before).sqrt();
-    if let Some(floor) = floor {
-        // the rate the nearest singularity allows, if the samples show a faster one
-        let q = q.max(floor);
-        if !(q < T::one()) {
-            return T::one();
-        }
+    // the rate the nearest singularity allows, where the samples show a faster one; at or
+    // above 1 (a high-order pole near the panel) it says nothing, and the cautious form below
+    // holds
+    if let Some(q) = floor.map(|f| q.max(f)).filter(|&q| q < T::one()) {
         // c_j takes the alias of c_{2N−j} ≈ |c_{N−1}| q^{N+1−j}: Σ_j q^{N+1−j−margin} |M_j|
         // by Horner over j < top (exponents top − 1 − j), exponents below 0 taken as 0
         let top = N + 2 - ALIASING_MARGIN;
@@ -301,10 +323,13 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
 
 /// The margin `m` of the aliasing model in [`error_factor`]: the estimate is `q^{−m}` above
 /// the geometric model. Measured over tests/reference/classes.jsonl with `m = 3` (largest error
-/// over every record of every class, `tests/classes.rs`): f64 with 16 nodes 2.2e-8 at tolerance
-/// 1e-6, 1.9e-10 at 1e-8, 9.9e-14 at the default 1e-11; f32 at 1e-3 4.8e-5 with 8 nodes, 1.0e-4
-/// with 12. `m = 2` and `m = 4` moved the panel counts by at most 3 % and the largest errors by
-/// less than 2×; without the singularities' rate the same model let 1.8e-4 through at 1e-6.
+/// over every record of every class): with 4 … 16 nodes per panel at tolerances 1e-1 … 1e-4
+/// (f32) and 1e-2 … 1e-10 (f64) at most 0.37 of the tolerance (f32 12 nodes at 1e-2,
+/// near_light); f64 16 nodes 2.2e-8 at 1e-6, 1.9e-10 at 1e-8, 9.9e-14 at the default 1e-11.
+/// `m = 2` and `m = 4` moved the panel counts by at most 3 % and the largest errors by less
+/// than 2×. Without the singularities' rate the same model let 1.8e-4 through at 1e-6, and
+/// without their orders 2.4e-2 at 1e-2 (f32, 8 nodes, a `c^64` beam): `tests/classes.rs`
+/// `error_estimate_holds_at_loose_tolerances`.
 pub const ALIASING_MARGIN: usize = 3;
 
 /// `1/ρ` for the Bernstein ellipse of `[c − r, c + r]` through `it` (foci at the ends,
@@ -356,7 +381,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
     let noise = transform_noise::<T, N>(mass, g_avg);
-    let floor = singular.map(|s| s.v.iter().fold(T::zero(), |q, &t| q.max(decay_rate(vc, r, t))));
+    let floor = singular.map(|s| s.floor(&s.v, vc, r));
     let error = mass * tail_estimate(&c) * error_factor(&c, &m, floor);
     Panel { value: w * sum, error, noise, mass_over: mass * over_max, f_max }
 }
@@ -398,7 +423,7 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     m[0] = T::lit(2.0);
     let noise = transform_noise::<T, N>(w * T::lit(2.0), p_avg);
     // the exponential's essential singularity at y = 0 as well
-    let floor = singular.map(|s| s.y.iter().fold(decay_rate(yc, r, T::zero()), |q, &t| q.max(decay_rate(yc, r, t))));
+    let floor = singular.map(|s| s.floor(&s.y, yc, r).max(decay_rate(yc, r, T::zero())));
     let error = w * T::lit(2.0) * tail_estimate(&c) * error_factor(&c, &m, floor);
     Panel { value: w * T::lit(2.0) * c[0], error, noise, mass_over: mass * over_max, f_max }
 }

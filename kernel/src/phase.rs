@@ -25,12 +25,12 @@ pub trait PhaseFunction<T: Real> {
     fn is_isotropic(&self) -> bool {
         false
     }
-    /// The cosines outside `[−1, 1]` where `P`, continued to complex `μ`, is singular (`±∞`
-    /// for none; two at most), or `None` when they are not known (the default). A lobe that
-    /// peaks at `μ = ±1` has one just beyond: Henyey–Greenstein at `(1 + g²)/(2g)`. With them
-    /// the error-controlled path knows how fast its panels' coefficients must fall and trusts
-    /// their tail (docs/DESIGN.md, the panels' estimate); without, it assumes nothing.
-    fn singular_cosines(&self) -> Option<[T; 2]> {
+    /// Where `P`, continued to complex `μ`, is singular ([`Singularities`]), or `None` when
+    /// that is not known (the default). A lobe that peaks at `μ = ±1` has a singularity just
+    /// beyond: Henyey–Greenstein at `(1 + g²)/(2g)`. With them the error-controlled path knows
+    /// how fast its panels' coefficients must fall and trusts their tail (docs/DESIGN.md §4.1);
+    /// without, it assumes nothing.
+    fn singularities(&self) -> Option<Singularities<T>> {
         None
     }
     /// Checks the parameters; the checked API calls it.
@@ -68,6 +68,19 @@ fn hg_kernel<T: Real, S: Scalar<T>>(g: T, one_minus_mu: S, one_plus_mu: S) -> S 
     (base * base.sqrt()).recip()
 }
 
+/// The singularities of a phase function continued to complex `μ`
+/// ([`PhaseFunction::singularities`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Singularities<T> {
+    /// Up to two real cosines outside `[−1, 1]` where `P` is singular (`±∞` for none).
+    pub cosines: [T; 2],
+    /// Their order `α`: `P ~ (μ − μ*)^{−α}` there (Henyey–Greenstein `3/2`, Schlick `2`).
+    pub order: T,
+    /// `P ~ μ^d` as `μ → ∞` (Rayleigh `2`; `0` or less: bounded). Along a ray `μ(y)` has poles
+    /// at `y = ±i`, where this makes a pole of order `d`.
+    pub growth: T,
+}
+
 /// `(1 + g²)/(2g) = ±(1 + (1 − |g|)²/(2|g|))`, where the Henyey–Greenstein kernel
 /// `(1 + g² − 2gμ)^{−3/2}` is singular (`+∞` at `g = 0`), its offset from `±1` without cancellation.
 fn hg_singular_cosine<T: Real>(g: T) -> T {
@@ -79,9 +92,16 @@ fn hg_singular_cosine<T: Real>(g: T) -> T {
     (T::one() + gap).copysign(g)
 }
 
-/// No singularity at finite `μ`.
-fn entire<T: Real>() -> Option<[T; 2]> {
-    Some([T::infinity(), T::infinity()])
+/// No singularity at finite `μ`; `P ~ μ^growth` at infinity.
+fn polynomial<T: Real>(growth: f64) -> Option<Singularities<T>> {
+    Some(Singularities { cosines: [T::infinity(), T::infinity()], order: T::zero(), growth: T::lit(growth) })
+}
+
+/// Henyey–Greenstein's kernel `(1 + g² − 2gμ)^{−3/2}` at `g` and `g2`: order `3/2` at its
+/// cosines, `μ^{−3/2}` at infinity (times `μ^extra`, Cornette–Shanks' `1 + μ²`).
+fn hg_singularities<T: Real>(g: T, g2: Option<T>, extra: f64) -> Option<Singularities<T>> {
+    let second = g2.map_or(T::infinity(), hg_singular_cosine);
+    Some(Singularities { cosines: [hg_singular_cosine(g), second], order: T::lit(1.5), growth: T::lit(extra - 1.5) })
 }
 
 /// `1 − g²` as `(1 − g)(1 + g)`: exact factors, no cancellation for `|g| → 1`.
@@ -100,8 +120,8 @@ impl<T: Real> PhaseFunction<T> for Isotropic {
     fn is_isotropic(&self) -> bool {
         true
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        entire()
+    fn singularities(&self) -> Option<Singularities<T>> {
+        polynomial(0.0)
     }
 }
 
@@ -113,8 +133,8 @@ impl<T: Real> PhaseFunction<T> for Rayleigh {
     fn eval<S: Scalar<T>>(&self, mu: S) -> S {
         (mu * mu).shift(T::one()).scale(T::lit(3.0 / 16.0) * T::FRAC_1_PI())
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        entire()
+    fn singularities(&self) -> Option<Singularities<T>> {
+        polynomial(2.0)
     }
 }
 
@@ -137,8 +157,8 @@ impl<T: Real> PhaseFunction<T> for HenyeyGreenstein<T> {
     fn is_isotropic(&self) -> bool {
         self.g == T::zero()
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        Some([hg_singular_cosine(self.g), T::infinity()])
+    fn singularities(&self) -> Option<Singularities<T>> {
+        hg_singularities(self.g, None, 0.0)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g, "phase.g")
@@ -168,11 +188,11 @@ impl<T: Real> PhaseFunction<T> for Schlick<T> {
     fn is_isotropic(&self) -> bool {
         self.k == T::zero()
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        // 1 − kμ = 0 at μ = 1/k = ±(1 + (1 − |k|)/|k|)
+    fn singularities(&self) -> Option<Singularities<T>> {
+        // (1 − kμ)^{−2}: a double pole at μ = 1/k = ±(1 + (1 − |k|)/|k|)
         let a = self.k.abs();
         let mu = if a == T::zero() { T::infinity() } else { (T::one() + (T::one() - a) / a).copysign(self.k) };
-        Some([mu, T::infinity()])
+        Some(Singularities { cosines: [mu, T::infinity()], order: T::lit(2.0), growth: T::lit(-2.0) })
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.k, "phase.k")
@@ -197,8 +217,8 @@ impl<T: Real> PhaseFunction<T> for CornetteShanks<T> {
         let k = T::lit(3.0 / 8.0) * T::FRAC_1_PI() * one_minus_sq(g) / (T::lit(2.0) + g * g);
         (hg_kernel(g, one_minus_mu, one_plus_mu) * (mu * mu).shift(T::one())).scale(k)
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        Some([hg_singular_cosine(self.g), T::infinity()])
+    fn singularities(&self) -> Option<Singularities<T>> {
+        hg_singularities(self.g, None, 2.0)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g, "phase.g")
@@ -230,8 +250,8 @@ impl<T: Real> PhaseFunction<T> for TwoLobeHenyeyGreenstein<T> {
     fn is_isotropic(&self) -> bool {
         self.g1 == T::zero() && self.g2 == T::zero()
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
-        Some([hg_singular_cosine(self.g1), hg_singular_cosine(self.g2)])
+    fn singularities(&self) -> Option<Singularities<T>> {
+        hg_singularities(self.g1, Some(self.g2), 0.0)
     }
     fn validate(&self) -> Result<(), InputError> {
         check_asymmetry(self.g1, "phase.g1")?;
@@ -282,14 +302,14 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
             AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
         }
     }
-    fn singular_cosines(&self) -> Option<[T; 2]> {
+    fn singularities(&self) -> Option<Singularities<T>> {
         match self {
-            AnyPhase::Isotropic => Isotropic.singular_cosines(),
-            AnyPhase::Rayleigh => Rayleigh.singular_cosines(),
-            AnyPhase::HenyeyGreenstein(p) => p.singular_cosines(),
-            AnyPhase::Schlick(p) => p.singular_cosines(),
-            AnyPhase::CornetteShanks(p) => p.singular_cosines(),
-            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.singular_cosines(),
+            AnyPhase::Isotropic => Isotropic.singularities(),
+            AnyPhase::Rayleigh => Rayleigh.singularities(),
+            AnyPhase::HenyeyGreenstein(p) => p.singularities(),
+            AnyPhase::Schlick(p) => p.singularities(),
+            AnyPhase::CornetteShanks(p) => p.singularities(),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.singularities(),
         }
     }
     fn is_isotropic(&self) -> bool {
@@ -319,23 +339,39 @@ mod tests {
 
     /// The declared singular cosines are where the closed forms' denominators vanish:
     /// `1 + g² − 2gμ` (Henyey–Greenstein, Cornette–Shanks, both lobes of the two-lobed one) and
-    /// `1 − kμ` (Schlick), to a few ulps of their terms; none for the polynomial ones.
+    /// `1 − kμ` (Schlick), to a few ulps of their terms; none for the polynomial ones. Orders
+    /// and growth as the closed forms read: `P(2μ)/P(μ) → 2^growth` for large `μ`.
     #[test]
-    fn singular_cosines_are_the_poles() {
+    fn singularities_are_the_poles() {
+        let cos = |p: Option<Singularities<f64>>| p.unwrap().cosines;
         for g in [-0.99f64, -0.5, 0.3, 0.9, 0.999] {
-            let [mu, none] = HenyeyGreenstein { g }.singular_cosines().unwrap();
+            let [mu, none] = cos(HenyeyGreenstein { g }.singularities());
             assert!((1.0 + g * g - 2.0 * g * mu).abs() <= 4.0 * f64::EPSILON * (1.0 + g * g), "HG g = {g}: μ* = {mu}");
             assert!(mu.abs() > 1.0 && none.is_infinite());
-            assert_eq!(CornetteShanks { g }.singular_cosines().unwrap()[0], mu);
-            let [a, b] = TwoLobeHenyeyGreenstein { g1: g, g2: -0.5 * g, w: 0.7 }.singular_cosines().unwrap();
+            assert_eq!(cos(CornetteShanks { g }.singularities())[0], mu);
+            let [a, b] = cos(TwoLobeHenyeyGreenstein { g1: g, g2: -0.5 * g, w: 0.7 }.singularities());
             assert!((1.0 + 0.25 * g * g + g * b).abs() <= 4.0 * f64::EPSILON * (1.0 + g * g) && a == mu);
             let k = g;
-            let [mu, _] = Schlick { k }.singular_cosines().unwrap();
+            let [mu, _] = cos(Schlick { k }.singularities());
             assert!((1.0 - k * mu).abs() <= 4.0 * f64::EPSILON, "Schlick k = {k}: μ* = {mu}");
         }
-        assert!(HenyeyGreenstein { g: 0.0f64 }.singular_cosines().unwrap()[0].is_infinite());
-        for p in [PhaseFunction::<f64>::singular_cosines(&Isotropic), PhaseFunction::<f64>::singular_cosines(&Rayleigh)] {
-            assert!(p.unwrap().iter().all(|m| m.is_infinite()));
+        assert!(cos(HenyeyGreenstein { g: 0.0f64 }.singularities())[0].is_infinite());
+        for p in [PhaseFunction::<f64>::singularities(&Isotropic), PhaseFunction::<f64>::singularities(&Rayleigh)] {
+            assert!(p.unwrap().cosines.iter().all(|m| m.is_infinite()));
+        }
+        // growth: the ratio at μ = −1e6 and −2e6 (outside [−1, 1], the closed forms continued;
+        // forward lobes, whose kernels stay real there)
+        let any: [AnyPhase<f64>; 5] = [
+            AnyPhase::Rayleigh,
+            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.6 }),
+            AnyPhase::Schlick(Schlick { k: 0.6 }),
+            AnyPhase::CornetteShanks(CornetteShanks { g: 0.6 }),
+            AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.6, g2: 0.3, w: 0.5 }),
+        ];
+        for p in any {
+            let d = p.singularities().unwrap().growth;
+            let ratio = (p.eval(-2e6).abs() / p.eval(-1e6).abs()).log2();
+            assert!((ratio - d).abs() < 1e-3, "{p:?}: growth {d}, measured {ratio}");
         }
     }
 

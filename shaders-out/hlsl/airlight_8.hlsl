@@ -181,13 +181,13 @@ float2 airlight_cmul(float2 a, float2 b)
 float2 airlight_cdiv(float2 a_1, float2 b_1)
 {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_6 = (b_1.y / b_1.x);
-        float inv = (1.0 / (b_1.x + (b_1.y * r_6)));
-        return float2(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
+        float r_7 = (b_1.y / b_1.x);
+        float inv = (1.0 / (b_1.x + (b_1.y * r_7)));
+        return float2(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
     }
-    float r_7 = (b_1.x / b_1.y);
-    float inv_1 = (1.0 / ((b_1.x * r_7) + b_1.y));
-    return float2((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
+    float r_8 = (b_1.x / b_1.y);
+    float inv_1 = (1.0 / ((b_1.x * r_8) + b_1.y));
+    return float2((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(float2 z)
@@ -342,8 +342,8 @@ float airlight_log1p(float x_2)
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_23 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_23 * s_23);
+    float s_24 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_24 * s_24);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -366,7 +366,7 @@ float airlight_log1p(float x_2)
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_23) * _e35);
+    return ((2.0 * s_24) * _e35);
 }
 
 bool airlight_is_finite(float x_3)
@@ -943,7 +943,61 @@ float3 airlight_singular_heights(AirlightScene s_1, float sigma_1)
     return _e28;
 }
 
-float2 airlight_integrand_over(AirlightScene s_2, AirlightCanonical g_3, float sigma_2, float y_1)
+float3 airlight_singular_steps(AirlightScene s_2)
+{
+    float degree = 0.0;
+    float order = 0.0;
+    float growth = 0.0;
+
+    if ((s_2.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        degree = s_2.light_param_a;
+    }
+    if ((s_2.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        degree = 3.0;
+    }
+    switch(s_2.phase_kind) {
+        case 0u: {
+            order = 0.0;
+            growth = 0.0;
+            break;
+        }
+        case 1u: {
+            order = 0.0;
+            growth = 2.0;
+            break;
+        }
+        case 2u: {
+            order = 1.5;
+            growth = 0.0;
+            break;
+        }
+        case 3u: {
+            order = 2.0;
+            growth = 0.0;
+            break;
+        }
+        case 4u: {
+            order = 1.5;
+            growth = 0.5;
+            break;
+        }
+        case 5u: {
+            order = 1.5;
+            growth = 0.0;
+            break;
+        }
+        default: {
+            break;
+        }
+    }
+    float _e29 = order;
+    float phase = pow(1.1428572, max((_e29 - 1.0), 0.0));
+    float _e35 = degree;
+    float _e36 = growth;
+    return float3(pow(1.1428572, (_e35 + _e36)), phase, phase);
+}
+
+float2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_3, float sigma_2, float y_1)
 {
     float minus = (float)0;
     float plus = (float)0;
@@ -952,7 +1006,7 @@ float2 airlight_integrand_over(AirlightScene s_2, AirlightCanonical g_3, float s
     float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
     float mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    float c_8 = ((((sigma_2 * g_3.d_el) * om_3) + ((2.0 * g_3.d_c) * y_1)) * inv_2);
+    float c_9 = ((((sigma_2 * g_3.d_el) * om_3) + ((2.0 * g_3.d_c) * y_1)) * inv_2);
     float far = ((y2_ * inv_2) * 2.0);
     float near = (inv_2 * 2.0);
     minus = near;
@@ -961,17 +1015,17 @@ float2 airlight_integrand_over(AirlightScene s_2, AirlightCanonical g_3, float s
         minus = far;
         plus = near;
     }
-    const float _e35 = airlight_light(s_2.light_kind, s_2.light_param_a, s_2.light_param_b, c_8);
+    const float _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_9);
     float _e40 = minus;
     float _e41 = plus;
-    const float _e42 = airlight_phase(s_2.phase_kind, s_2.phase_param_a, s_2.phase_param_b, s_2.phase_param_c, mu_2, _e40, _e41);
+    const float _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
     float f_1 = (_e35 * _e42);
     return float2(f_1, inv_2);
 }
 
-float airlight_integrand(AirlightScene s_3, AirlightCanonical g_4, float sigma_3, float y_2)
+float airlight_integrand(AirlightScene s_4, AirlightCanonical g_4, float sigma_3, float y_2)
 {
-    const float2 _e4 = airlight_integrand_over(s_3, g_4, sigma_3, y_2);
+    const float2 _e4 = airlight_integrand_over(s_4, g_4, sigma_3, y_2);
     return _e4.x;
 }
 
@@ -1593,6 +1647,9 @@ float airlight_error_factor(float c_3[8], float m_1[8], float floor_)
 {
     bool local_9 = (bool)0;
     float aliasing = 0.0;
+    float c_max = 0.0;
+    float aliasing_1 = 1.0;
+    uint i_6 = 0u;
 
     if (!((m_1[0] > 0.0))) {
         return 1.0;
@@ -1608,37 +1665,77 @@ float airlight_error_factor(float c_3[8], float m_1[8], float floor_)
     if (_e27) {
         return 1.0;
     }
-    float q_1 = max(sqrt((last / before)), ((floor_ > 0.0) ? floor_ : 0.0));
-    if (!((q_1 < 1.0))) {
-        return 1.0;
+    float measured = sqrt((last / before));
+    float q_1 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float truncation = max(abs(m_1[7]), abs(m_1[6]));
+    if ((q_1 < 1.0)) {
+        float _e45 = aliasing;
+        float _e49 = aliasing;
+        aliasing = (true ? ((_e49 * q_1) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        float _e56 = aliasing;
+        float _e60 = aliasing;
+        aliasing = (true ? ((_e60 * q_1) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        float _e67 = aliasing;
+        float _e71 = aliasing;
+        aliasing = (true ? ((_e71 * q_1) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        float _e78 = aliasing;
+        float _e82 = aliasing;
+        aliasing = (true ? ((_e82 * q_1) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        float _e89 = aliasing;
+        float _e93 = aliasing;
+        aliasing = (true ? ((_e93 * q_1) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        float _e100 = aliasing;
+        float _e104 = aliasing;
+        aliasing = (true ? ((_e104 * q_1) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        float _e111 = aliasing;
+        float _e115 = aliasing;
+        aliasing = (true ? ((_e115 * q_1) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        float _e122 = aliasing;
+        float _e126 = aliasing;
+        aliasing = (false ? ((_e126 * q_1) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        float _e133 = aliasing;
+        return min(((_e133 + (q_1 * truncation)) / m_1[0]), 1.0);
     }
-    float _e42 = aliasing;
-    float _e46 = aliasing;
-    aliasing = (true ? ((_e46 * q_1) + abs(m_1[0])) : (_e42 + abs(m_1[0])));
-    float _e53 = aliasing;
-    float _e57 = aliasing;
-    aliasing = (true ? ((_e57 * q_1) + abs(m_1[1])) : (_e53 + abs(m_1[1])));
-    float _e64 = aliasing;
-    float _e68 = aliasing;
-    aliasing = (true ? ((_e68 * q_1) + abs(m_1[2])) : (_e64 + abs(m_1[2])));
-    float _e75 = aliasing;
-    float _e79 = aliasing;
-    aliasing = (true ? ((_e79 * q_1) + abs(m_1[3])) : (_e75 + abs(m_1[3])));
-    float _e86 = aliasing;
-    float _e90 = aliasing;
-    aliasing = (true ? ((_e90 * q_1) + abs(m_1[4])) : (_e86 + abs(m_1[4])));
-    float _e97 = aliasing;
-    float _e101 = aliasing;
-    aliasing = (true ? ((_e101 * q_1) + abs(m_1[5])) : (_e97 + abs(m_1[5])));
-    float _e108 = aliasing;
-    float _e112 = aliasing;
-    aliasing = (true ? ((_e112 * q_1) + abs(m_1[6])) : (_e108 + abs(m_1[6])));
-    float _e119 = aliasing;
-    float _e123 = aliasing;
-    aliasing = (false ? ((_e123 * q_1) + abs(m_1[7])) : (_e119 + abs(m_1[7])));
-    float truncation = (q_1 * max(abs(m_1[7]), abs(m_1[6])));
-    float _e136 = aliasing;
-    return min(((_e136 + truncation) / m_1[0]), 1.0);
+    float _e142 = c_max;
+    c_max = max(_e142, abs(c_3[0]));
+    float _e146 = c_max;
+    c_max = max(_e146, abs(c_3[1]));
+    float _e150 = c_max;
+    c_max = max(_e150, abs(c_3[2]));
+    float _e154 = c_max;
+    c_max = max(_e154, abs(c_3[3]));
+    float _e158 = c_max;
+    c_max = max(_e158, abs(c_3[4]));
+    float _e162 = c_max;
+    c_max = max(_e162, abs(c_3[5]));
+    float _e166 = c_max;
+    c_max = max(_e166, abs(c_3[6]));
+    float _e170 = c_max;
+    c_max = max(_e170, abs(c_3[7]));
+    float _e176 = c_max;
+    uint power = ((_e176 > (1.2 * abs(c_3[0]))) ? 1u : 2u);
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
+    while(true) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e192 = i_6;
+            i_6 = (_e192 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e187 = i_6;
+        if ((_e187 < power)) {
+        } else {
+            break;
+        }
+        {
+            float _e189 = aliasing_1;
+            aliasing_1 = (_e189 * measured);
+        }
+    }
+    float _e194 = aliasing_1;
+    return min((_e194 + ((measured * truncation) / m_1[0])), 1.0);
 }
 
 float airlight_decay_rate(float c_4, float r_1, float t_3)
@@ -1684,248 +1781,247 @@ AirlightPanel airlight_panel_result(float value, float error, float noise_, floa
     return airlightpanel;
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_6, float sigma_4, AirlightHalf half_4, float a_5, float b_4, float3 heights)
+float airlight_singular_floor(float3 heights, float3 steps_1, float c_5, float r_2)
 {
-    float r_2 = (float)0;
+    const float _e6 = airlight_decay_rate(c_5, r_2, heights.x);
+    const float _e10 = airlight_decay_rate(c_5, r_2, heights.y);
+    const float _e14 = airlight_decay_rate(c_5, r_2, heights.z);
+    return max((steps_1.x * _e6), max((steps_1.y * _e10), (steps_1.z * _e14)));
+}
+
+AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float sigma_4, AirlightHalf half_4, float a_5, float b_4, float3 heights_1, float3 steps_2)
+{
+    float r_3 = (float)0;
     float vc = (float)0;
     float samples[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_1 = 0.0;
     float over_max = 0.0;
     float g_avg = 0.0;
-    uint i_6 = 0u;
+    uint i_7 = 0u;
     float sum_4 = 0.0;
 
-    const float2 _e7[4] = airlight_gauss_rule();
-    r_2 = ((b_4 - a_5) * 0.5);
-    float _e12 = r_2;
-    vc = (a_5 + _e12);
+    const float2 _e8[4] = airlight_gauss_rule();
+    r_3 = ((b_4 - a_5) * 0.5);
+    float _e13 = r_3;
+    vc = (a_5 + _e13);
     if (half_4.second) {
-        r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
-        float _e23 = r_2;
-        vc = ((1.0 / b_4) + _e23);
+        r_3 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
+        float _e24 = r_3;
+        vc = ((1.0 / b_4) + _e24);
     }
-    const float _e25[8] = airlight_zero_terms();
-    samples = _e25;
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
-    while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e73 = i_6;
-            i_6 = (_e73 + 1u);
-        }
-        loop_init_12 = false;
-        uint _e35 = i_6;
-        if ((_e35 < AIRLIGHT_TERMS)) {
-        } else {
-            break;
-        }
-        {
-            float _e38 = vc;
-            float _e39 = r_2;
-            uint _e40 = i_6;
-            const float _e41 = airlight_node(_e7, _e40);
-            float v_6 = (_e38 + (_e39 * _e41));
-            const float2 _e47 = airlight_integrand_over(s_4, g_6, (half_4.second ? -(sigma_4) : sigma_4), v_6);
-            float fy = _e47.x;
-            float over = _e47.y;
-            uint _e50 = i_6;
-            samples[min(uint(_e50), 7u)] = (fy * over);
-            float _e53 = f_max_1;
-            f_max_1 = max(_e53, abs(fy));
-            float _e56 = over_max;
-            over_max = max(_e56, over);
-            float _e58 = g_avg;
-            uint _e59 = i_6;
-            uint _e66 = i_6;
-            float _e68 = samples[min(uint(_e66), 7u)];
-            g_avg = (_e58 + ((_e7[min(uint(airlight_naga_div(_e59, 2u)), 3u)].y * 0.5) * abs(_e68)));
-        }
-    }
-    float _e75[8] = samples;
-    const float _e76[8] = airlight_legendre(_e75);
-    float _e78 = r_2;
-    const float _e80[8] = airlight_exp_legendre_moments((half_4.big_h * _e78));
-    float _e83 = sum_4;
-    sum_4 = (_e83 + (_e76[0] * _e80[0]));
-    float _e88 = sum_4;
-    sum_4 = (_e88 + (_e76[1] * _e80[1]));
-    float _e93 = sum_4;
-    sum_4 = (_e93 + (_e76[2] * _e80[2]));
-    float _e98 = sum_4;
-    sum_4 = (_e98 + (_e76[3] * _e80[3]));
-    float _e103 = sum_4;
-    sum_4 = (_e103 + (_e76[4] * _e80[4]));
-    float _e108 = sum_4;
-    sum_4 = (_e108 + (_e76[5] * _e80[5]));
-    float _e113 = sum_4;
-    sum_4 = (_e113 + (_e76[6] * _e80[6]));
-    float _e118 = sum_4;
-    sum_4 = (_e118 + (_e76[7] * _e80[7]));
-    const float _e123 = airlight_factor(half_4, a_5, b_4);
-    float _e124 = r_2;
-    float w = (_e123 * _e124);
-    float mass_4 = (w * _e80[0]);
-    float _e128 = vc;
-    float _e129 = r_2;
-    const float _e131 = airlight_decay_rate(_e128, _e129, heights.x);
-    float _e132 = vc;
-    float _e133 = r_2;
-    const float _e135 = airlight_decay_rate(_e132, _e133, heights.y);
-    float _e136 = vc;
-    float _e137 = r_2;
-    const float _e139 = airlight_decay_rate(_e136, _e137, heights.z);
-    float floor_1 = max(_e131, max(_e135, _e139));
-    const float _e142 = airlight_tail_estimate(_e76);
-    const float _e144 = airlight_error_factor(_e76, _e80, floor_1);
-    float error_1 = ((mass_4 * _e142) * _e144);
-    float _e146 = sum_4;
-    float _e148 = g_avg;
-    const float _e149 = airlight_transform_noise(mass_4, _e148);
-    float _e150 = over_max;
-    float _e152 = f_max_1;
-    const AirlightPanel _e153 = airlight_panel_result((w * _e146), error_1, _e149, (mass_4 * _e150), _e152);
-    const AirlightPanel airlightpanel_1 = _e153;
-    return airlightpanel_1;
-}
-
-AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_7, float sigma_5, AirlightHalf half_5, float a_6, float b_5, float3 heights_1)
-{
-    float samples_1[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    float f_max_2 = 0.0;
-    float over_max_1 = 0.0;
-    float mass_1 = 0.0;
-    float p_avg = 0.0;
-    uint i_7 = 0u;
-    float m_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-
-    const float2 _e7[4] = airlight_gauss_rule();
-    float r_8 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_8);
-    const float _e12[8] = airlight_zero_terms();
-    samples_1 = _e12;
+    const float _e26[8] = airlight_zero_terms();
+    samples = _e26;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_13 = true;
     while(true) {
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_13) {
-            uint _e78 = i_7;
-            i_7 = (_e78 + 1u);
+            uint _e74 = i_7;
+            i_7 = (_e74 + 1u);
         }
         loop_init_13 = false;
-        uint _e24 = i_7;
-        if ((_e24 < AIRLIGHT_TERMS)) {
+        uint _e36 = i_7;
+        if ((_e36 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e27 = i_7;
-            const float _e28 = airlight_node(_e7, _e27);
-            float y_6 = (yc_1 + (r_8 * _e28));
-            float weight = exp(((-(half_5.big_h) * (r_8 * (1.0 - _e28))) / (y_6 * b_5)));
-            const float _e40 = airlight_integrand(s_5, g_7, sigma_5, y_6);
-            float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
-            uint _e46 = i_7;
-            samples_1[min(uint(_e46), 7u)] = ((_e40 * over_1) * weight);
-            float _e50 = f_max_2;
-            f_max_2 = max(_e50, abs(_e40));
-            float _e53 = over_max_1;
-            over_max_1 = max(_e53, over_1);
-            float _e55 = mass_1;
-            uint _e56 = i_7;
-            mass_1 = (_e55 + (_e7[min(uint(airlight_naga_div(_e56, 2u)), 3u)].y * weight));
-            float _e63 = p_avg;
-            uint _e64 = i_7;
-            uint _e71 = i_7;
-            float _e73 = samples_1[min(uint(_e71), 7u)];
-            p_avg = (_e63 + ((_e7[min(uint(airlight_naga_div(_e64, 2u)), 3u)].y * 0.5) * abs(_e73)));
+            float _e39 = vc;
+            float _e40 = r_3;
+            uint _e41 = i_7;
+            const float _e42 = airlight_node(_e8, _e41);
+            float v_6 = (_e39 + (_e40 * _e42));
+            const float2 _e48 = airlight_integrand_over(s_5, g_6, (half_4.second ? -(sigma_4) : sigma_4), v_6);
+            float fy = _e48.x;
+            float over = _e48.y;
+            uint _e51 = i_7;
+            samples[min(uint(_e51), 7u)] = (fy * over);
+            float _e54 = f_max_1;
+            f_max_1 = max(_e54, abs(fy));
+            float _e57 = over_max;
+            over_max = max(_e57, over);
+            float _e59 = g_avg;
+            uint _e60 = i_7;
+            uint _e67 = i_7;
+            float _e69 = samples[min(uint(_e67), 7u)];
+            g_avg = (_e59 + ((_e8[min(uint(airlight_naga_div(_e60, 2u)), 3u)].y * 0.5) * abs(_e69)));
         }
     }
-    float _e80[8] = samples_1;
-    const float _e81[8] = airlight_legendre(_e80);
-    const float _e82 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e82 * r_8);
-    const float _e84[8] = airlight_zero_terms();
-    m_2 = _e84;
+    float _e76[8] = samples;
+    const float _e77[8] = airlight_legendre(_e76);
+    float _e79 = r_3;
+    const float _e81[8] = airlight_exp_legendre_moments((half_4.big_h * _e79));
+    float _e84 = sum_4;
+    sum_4 = (_e84 + (_e77[0] * _e81[0]));
+    float _e89 = sum_4;
+    sum_4 = (_e89 + (_e77[1] * _e81[1]));
+    float _e94 = sum_4;
+    sum_4 = (_e94 + (_e77[2] * _e81[2]));
+    float _e99 = sum_4;
+    sum_4 = (_e99 + (_e77[3] * _e81[3]));
+    float _e104 = sum_4;
+    sum_4 = (_e104 + (_e77[4] * _e81[4]));
+    float _e109 = sum_4;
+    sum_4 = (_e109 + (_e77[5] * _e81[5]));
+    float _e114 = sum_4;
+    sum_4 = (_e114 + (_e77[6] * _e81[6]));
+    float _e119 = sum_4;
+    sum_4 = (_e119 + (_e77[7] * _e81[7]));
+    const float _e124 = airlight_factor(half_4, a_5, b_4);
+    float _e125 = r_3;
+    float w = (_e124 * _e125);
+    float mass_4 = (w * _e81[0]);
+    float _e129 = vc;
+    float _e130 = r_3;
+    const float _e131 = airlight_singular_floor(heights_1, steps_2, _e129, _e130);
+    const float _e132 = airlight_tail_estimate(_e77);
+    const float _e134 = airlight_error_factor(_e77, _e81, _e131);
+    float error_1 = ((mass_4 * _e132) * _e134);
+    float _e136 = sum_4;
+    float _e138 = g_avg;
+    const float _e139 = airlight_transform_noise(mass_4, _e138);
+    float _e140 = over_max;
+    float _e142 = f_max_1;
+    const AirlightPanel _e143 = airlight_panel_result((w * _e136), error_1, _e139, (mass_4 * _e140), _e142);
+    const AirlightPanel airlightpanel_1 = _e143;
+    return airlightpanel_1;
+}
+
+AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_7, float sigma_5, AirlightHalf half_5, float a_6, float b_5, float3 heights_2, float3 steps_3)
+{
+    float samples_1[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float f_max_2 = 0.0;
+    float over_max_1 = 0.0;
+    float mass_1 = 0.0;
+    float p_avg = 0.0;
+    uint i_8 = 0u;
+    float m_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+    const float2 _e8[4] = airlight_gauss_rule();
+    float r_9 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_9);
+    const float _e13[8] = airlight_zero_terms();
+    samples_1 = _e13;
+    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e79 = i_8;
+            i_8 = (_e79 + 1u);
+        }
+        loop_init_14 = false;
+        uint _e25 = i_8;
+        if ((_e25 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e28 = i_8;
+            const float _e29 = airlight_node(_e8, _e28);
+            float y_6 = (yc_1 + (r_9 * _e29));
+            float weight = exp(((-(half_5.big_h) * (r_9 * (1.0 - _e29))) / (y_6 * b_5)));
+            const float _e41 = airlight_integrand(s_6, g_7, sigma_5, y_6);
+            float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
+            uint _e47 = i_8;
+            samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight);
+            float _e51 = f_max_2;
+            f_max_2 = max(_e51, abs(_e41));
+            float _e54 = over_max_1;
+            over_max_1 = max(_e54, over_1);
+            float _e56 = mass_1;
+            uint _e57 = i_8;
+            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 3u)].y * weight));
+            float _e64 = p_avg;
+            uint _e65 = i_8;
+            uint _e72 = i_8;
+            float _e74 = samples_1[min(uint(_e72), 7u)];
+            p_avg = (_e64 + ((_e8[min(uint(airlight_naga_div(_e65, 2u)), 3u)].y * 0.5) * abs(_e74)));
+        }
+    }
+    float _e81[8] = samples_1;
+    const float _e82[8] = airlight_legendre(_e81);
+    const float _e83 = airlight_factor(half_5, a_6, b_5);
+    float w_1 = (_e83 * r_9);
+    const float _e85[8] = airlight_zero_terms();
+    m_2 = _e85;
     m_2[0] = 2.0;
-    const float _e89 = airlight_decay_rate(yc_1, r_8, 0.0);
-    const float _e91 = airlight_decay_rate(yc_1, r_8, heights_1.x);
-    const float _e93 = airlight_decay_rate(yc_1, r_8, heights_1.y);
-    const float _e95 = airlight_decay_rate(yc_1, r_8, heights_1.z);
-    float floor_2 = max(_e89, max(_e91, max(_e93, _e95)));
-    const float _e101 = airlight_tail_estimate(_e81);
-    float _e103[8] = m_2;
-    const float _e104 = airlight_error_factor(_e81, _e103, floor_2);
-    float error_2 = (((w_1 * 2.0) * _e101) * _e104);
-    float _e112 = p_avg;
-    const float _e113 = airlight_transform_noise((w_1 * 2.0), _e112);
-    float _e114 = mass_1;
-    float _e116 = over_max_1;
-    float _e118 = f_max_2;
-    const AirlightPanel _e119 = airlight_panel_result(((w_1 * 2.0) * _e81[0]), error_2, _e113, ((w_1 * _e114) * _e116), _e118);
-    const AirlightPanel airlightpanel_2 = _e119;
+    const float _e90 = airlight_decay_rate(yc_1, r_9, 0.0);
+    const float _e91 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9);
+    float floor_1 = max(_e90, _e91);
+    const float _e95 = airlight_tail_estimate(_e82);
+    float _e97[8] = m_2;
+    const float _e98 = airlight_error_factor(_e82, _e97, floor_1);
+    float error_2 = (((w_1 * 2.0) * _e95) * _e98);
+    float _e106 = p_avg;
+    const float _e107 = airlight_transform_noise((w_1 * 2.0), _e106);
+    float _e108 = mass_1;
+    float _e110 = over_max_1;
+    float _e112 = f_max_2;
+    const AirlightPanel _e113 = airlight_panel_result(((w_1 * 2.0) * _e82[0]), error_2, _e107, ((w_1 * _e108) * _e110), _e112);
+    const AirlightPanel airlightpanel_2 = _e113;
     return airlightpanel_2;
 }
 
 typedef float airlight_ret_airlight_legendre_to_monomial[8];
-airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_5[8])
+airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_6[8])
 {
     float hat[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     const float _e1[8] = airlight_zero_terms();
     hat = _e1;
     float _e4 = hat[0];
-    hat[0] = (_e4 + (c_5[0] * 1.0));
+    hat[0] = (_e4 + (c_6[0] * 1.0));
     float _e10 = hat[1];
-    hat[1] = (_e10 + (c_5[1] * 1.0));
+    hat[1] = (_e10 + (c_6[1] * 1.0));
     float _e16 = hat[0];
-    hat[0] = (_e16 + (c_5[2] * -0.5));
+    hat[0] = (_e16 + (c_6[2] * -0.5));
     float _e22 = hat[2];
-    hat[2] = (_e22 + (c_5[2] * 1.5));
+    hat[2] = (_e22 + (c_6[2] * 1.5));
     float _e28 = hat[1];
-    hat[1] = (_e28 + (c_5[3] * -1.5));
+    hat[1] = (_e28 + (c_6[3] * -1.5));
     float _e34 = hat[3];
-    hat[3] = (_e34 + (c_5[3] * 2.5));
+    hat[3] = (_e34 + (c_6[3] * 2.5));
     float _e40 = hat[0];
-    hat[0] = (_e40 + (c_5[4] * 0.375));
+    hat[0] = (_e40 + (c_6[4] * 0.375));
     float _e46 = hat[2];
-    hat[2] = (_e46 + (c_5[4] * -3.75));
+    hat[2] = (_e46 + (c_6[4] * -3.75));
     float _e52 = hat[4];
-    hat[4] = (_e52 + (c_5[4] * 4.375));
+    hat[4] = (_e52 + (c_6[4] * 4.375));
     float _e58 = hat[1];
-    hat[1] = (_e58 + (c_5[5] * 1.875));
+    hat[1] = (_e58 + (c_6[5] * 1.875));
     float _e64 = hat[3];
-    hat[3] = (_e64 + (c_5[5] * -8.75));
+    hat[3] = (_e64 + (c_6[5] * -8.75));
     float _e70 = hat[5];
-    hat[5] = (_e70 + (c_5[5] * 7.875));
+    hat[5] = (_e70 + (c_6[5] * 7.875));
     float _e76 = hat[0];
-    hat[0] = (_e76 + (c_5[6] * -0.3125));
+    hat[0] = (_e76 + (c_6[6] * -0.3125));
     float _e82 = hat[2];
-    hat[2] = (_e82 + (c_5[6] * 6.5625));
+    hat[2] = (_e82 + (c_6[6] * 6.5625));
     float _e88 = hat[4];
-    hat[4] = (_e88 + (c_5[6] * -19.6875));
+    hat[4] = (_e88 + (c_6[6] * -19.6875));
     float _e94 = hat[6];
-    hat[6] = (_e94 + (c_5[6] * 14.4375));
+    hat[6] = (_e94 + (c_6[6] * 14.4375));
     float _e100 = hat[1];
-    hat[1] = (_e100 + (c_5[7] * -2.1875));
+    hat[1] = (_e100 + (c_6[7] * -2.1875));
     float _e106 = hat[3];
-    hat[3] = (_e106 + (c_5[7] * 19.6875));
+    hat[3] = (_e106 + (c_6[7] * 19.6875));
     float _e112 = hat[5];
-    hat[5] = (_e112 + (c_5[7] * -43.3125));
+    hat[5] = (_e112 + (c_6[7] * -43.3125));
     float _e118 = hat[7];
-    hat[7] = (_e118 + (c_5[7] * 26.8125));
+    hat[7] = (_e118 + (c_6[7] * 26.8125));
     float _e123[8] = hat;
     return _e123;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_6, AirlightHalf half_6, float a_7, float b_6)
+AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_8, float sigma_6, AirlightHalf half_6, float a_7, float b_6)
 {
     float samples_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float q[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float s_a[10] = airlight_Constructarray10_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     bool local_10 = (bool)0;
@@ -1940,45 +2036,45 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     float next = 0.0;
 
     const float2 _e6[4] = airlight_gauss_rule();
-    float r_9 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_9);
+    float r_10 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_10);
     const float _e11[8] = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e51 = i_8;
-            i_8 = (_e51 + 1u);
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e51 = i_9;
+            i_9 = (_e51 + 1u);
         }
-        loop_init_14 = false;
-        uint _e19 = i_8;
+        loop_init_15 = false;
+        uint _e19 = i_9;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e22 = i_8;
+            uint _e22 = i_9;
             const float _e23 = airlight_node(_e6, _e22);
-            float y_7 = (yc_2 + (r_9 * _e23));
-            const float _e26 = airlight_integrand(s_6, g_8, sigma_6, y_7);
-            uint _e27 = i_8;
+            float y_7 = (yc_2 + (r_10 * _e23));
+            const float _e26 = airlight_integrand(s_7, g_8, sigma_6, y_7);
+            uint _e27 = i_9;
             samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_7 * y_7)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
-            uint _e37 = i_8;
-            uint _e44 = i_8;
+            uint _e37 = i_9;
+            uint _e44 = i_9;
             float _e46 = samples_2[min(uint(_e44), 7u)];
             g_avg_1 = (_e36 + ((_e6[min(uint(airlight_naga_div(_e37, 2u)), 3u)].y * 0.5) * abs(_e46)));
         }
     }
     float _e53[8] = samples_2;
     const float _e54[8] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_9);
-    float beta = (-(yc_2) / r_9);
+    float alpha = (b_6 / r_10);
+    float beta = (-(yc_2) / r_10);
     const float _e58[8] = airlight_legendre_to_monomial(_e54);
     const float _e59[8] = airlight_zero_terms();
     q = _e59;
@@ -2249,7 +2345,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     return airlightpanel_3;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, AirlightHalf half_7, float a_8, float b_7, float3 heights_y, float3 heights_v)
+AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_9, float sigma_7, AirlightHalf half_7, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
 {
     bool local_11 = (bool)0;
     bool local_12 = (bool)0;
@@ -2259,10 +2355,10 @@ AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_9, float sig
     } else {
         local_11 = false;
     }
-    bool _e15 = local_11;
-    if (_e15) {
-        const AirlightPanel _e16 = airlight_tail_panel(s_7, g_9, sigma_7, half_7, a_8, b_7);
-        const AirlightPanel airlightpanel_4 = _e16;
+    bool _e16 = local_11;
+    if (_e16) {
+        const AirlightPanel _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_7, a_8, b_7);
+        const AirlightPanel airlightpanel_4 = _e17;
         return airlightpanel_4;
     }
     if (half_7.second) {
@@ -2270,14 +2366,14 @@ AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_9, float sig
     } else {
         local_12 = false;
     }
-    bool _e28 = local_12;
-    if (_e28) {
-        const AirlightPanel _e29 = airlight_y_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_y);
-        const AirlightPanel airlightpanel_5 = _e29;
+    bool _e29 = local_12;
+    if (_e29) {
+        const AirlightPanel _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_y, steps_4);
+        const AirlightPanel airlightpanel_5 = _e30;
         return airlightpanel_5;
     }
-    const AirlightPanel _e30 = airlight_v_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_v);
-    const AirlightPanel airlightpanel_6 = _e30;
+    const AirlightPanel _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_v, steps_4);
+    const AirlightPanel airlightpanel_6 = _e31;
     return airlightpanel_6;
 }
 
@@ -2287,7 +2383,7 @@ airlight_ret_Constructarray8_float4_ airlight_Constructarray8_float4_(float4 arg
     return ret;
 }
 
-float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float sigma_8, AirlightHalf half_8, float lo, float hi, inout float f_max_4)
+float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_10, float sigma_8, AirlightHalf half_8, float lo, float hi, inout float f_max_4)
 {
     float4 list[8] = airlight_Constructarray8_float4_((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     float mass_over_1[8] = airlight_Constructarray8_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -2305,79 +2401,80 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
     float errors = (float)0;
     float mass_3 = (float)0;
     uint worst = (uint)0;
-    uint i_9 = (uint)0;
+    uint i_10 = (uint)0;
     bool local_13 = (bool)0;
     bool local_14 = (bool)0;
     bool local_15 = (bool)0;
     float total_1 = 0.0;
-    uint i_10 = 0u;
+    uint i_11 = 0u;
 
     if (!((hi > lo))) {
         return 0.0;
     }
-    const float3 _e10 = airlight_singular_heights(s_8, sigma_8);
+    const float3 _e10 = airlight_singular_heights(s_9, sigma_8);
     float3 heights_v_1 = (half_8.second ? ((1.0).xxx / _e10) : _e10);
+    const float3 _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
-    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-    bool loop_init_15 = true;
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_15) {
-            uint _e212 = step_;
-            step_ = (_e212 + 1u);
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e213 = step_;
+            step_ = (_e213 + 1u);
         }
-        loop_init_15 = false;
-        uint _e60 = step_;
-        if ((_e60 < AIRLIGHT_MAX_PANELS)) {
+        loop_init_16 = false;
+        uint _e61 = step_;
+        if ((_e61 < AIRLIGHT_MAX_PANELS)) {
         } else {
             break;
         }
         {
-            float _e63 = a_9;
-            float _e64 = b_8;
-            const AirlightPanel _e65 = airlight_panel(s_8, g_10, sigma_8, half_8, _e63, _e64, _e10, heights_v_1);
-            float _e66 = f_max_4;
-            f_max_4 = max(_e66, _e65.f_max);
-            uint _e69 = slot;
-            float _e71 = a_9;
-            float _e72 = b_8;
-            list[min(uint(_e69), 7u)] = float4(_e71, _e72, _e65.value, _e65.error);
-            uint _e76 = slot;
-            mass_over_1[min(uint(_e76), 7u)] = _e65.mass_over;
-            uint _e79 = budget;
-            budget = (_e79 - 1u);
-            uint _e82 = slot;
-            uint _e83 = count;
-            if ((_e82 == _e83)) {
-                uint _e85 = count;
-                count = (_e85 + 1u);
+            float _e64 = a_9;
+            float _e65 = b_8;
+            const AirlightPanel _e66 = airlight_panel(s_9, g_10, sigma_8, half_8, _e64, _e65, _e10, heights_v_1, _e16);
+            float _e67 = f_max_4;
+            f_max_4 = max(_e67, _e66.f_max);
+            uint _e70 = slot;
+            float _e72 = a_9;
+            float _e73 = b_8;
+            list[min(uint(_e70), 7u)] = float4(_e72, _e73, _e66.value, _e66.error);
+            uint _e77 = slot;
+            mass_over_1[min(uint(_e77), 7u)] = _e66.mass_over;
+            uint _e80 = budget;
+            budget = (_e80 - 1u);
+            uint _e83 = slot;
+            uint _e84 = count;
+            if ((_e83 == _e84)) {
+                uint _e86 = count;
+                count = (_e86 + 1u);
             }
-            bool _e88 = pending;
-            if (_e88) {
-                float _e89 = next_a;
-                a_9 = _e89;
-                float _e90 = next_b;
-                b_8 = _e90;
-                uint _e91 = count;
-                slot = _e91;
+            bool _e89 = pending;
+            if (_e89) {
+                float _e90 = next_a;
+                a_9 = _e90;
+                float _e91 = next_b;
+                b_8 = _e91;
+                uint _e92 = count;
+                slot = _e92;
                 pending = false;
                 continue;
             }
             retire = 0u;
-            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-            bool loop_init_16 = true;
+            uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+            bool loop_init_17 = true;
             while(true) {
-                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_16) {
-                    uint _e209 = retire;
-                    retire = (_e209 + 1u);
+                if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_17) {
+                    uint _e210 = retire;
+                    retire = (_e210 + 1u);
                 }
-                loop_init_16 = false;
-                uint _e95 = retire;
-                if ((_e95 <= AIRLIGHT_PANEL_LIST)) {
+                loop_init_17 = false;
+                uint _e96 = retire;
+                if ((_e96 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
                     break;
                 }
@@ -2386,95 +2483,95 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
                     errors = 0.0;
                     mass_3 = 0.0;
                     worst = 0u;
-                    i_9 = 0u;
-                    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_17 = true;
+                    i_10 = 0u;
+                    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_18 = true;
                     while(true) {
-                        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-                        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-                        if (!loop_init_17) {
-                            uint _e142 = i_9;
-                            i_9 = (_e142 + 1u);
+                        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+                        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+                        if (!loop_init_18) {
+                            uint _e143 = i_10;
+                            i_10 = (_e143 + 1u);
                         }
-                        loop_init_17 = false;
-                        uint _e108 = i_9;
-                        if ((_e108 < AIRLIGHT_PANEL_LIST)) {
+                        loop_init_18 = false;
+                        uint _e109 = i_10;
+                        if ((_e109 < AIRLIGHT_PANEL_LIST)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e111 = i_9;
-                            uint _e112 = count;
-                            if ((_e111 >= _e112)) {
+                            uint _e112 = i_10;
+                            uint _e113 = count;
+                            if ((_e112 >= _e113)) {
                                 break;
                             }
-                            float _e114 = total;
-                            uint _e115 = i_9;
-                            float _e118 = list[min(uint(_e115), 7u)].z;
-                            total = (_e114 + _e118);
-                            float _e120 = errors;
-                            uint _e121 = i_9;
-                            float _e124 = list[min(uint(_e121), 7u)].w;
-                            errors = (_e120 + _e124);
-                            float _e126 = mass_3;
-                            uint _e127 = i_9;
-                            float _e129 = mass_over_1[min(uint(_e127), 7u)];
-                            mass_3 = (_e126 + _e129);
-                            uint _e131 = i_9;
-                            float _e134 = list[min(uint(_e131), 7u)].w;
-                            uint _e135 = worst;
-                            float _e138 = list[min(uint(_e135), 7u)].w;
-                            if ((_e134 > _e138)) {
-                                uint _e140 = i_9;
-                                worst = _e140;
+                            float _e115 = total;
+                            uint _e116 = i_10;
+                            float _e119 = list[min(uint(_e116), 7u)].z;
+                            total = (_e115 + _e119);
+                            float _e121 = errors;
+                            uint _e122 = i_10;
+                            float _e125 = list[min(uint(_e122), 7u)].w;
+                            errors = (_e121 + _e125);
+                            float _e127 = mass_3;
+                            uint _e128 = i_10;
+                            float _e130 = mass_over_1[min(uint(_e128), 7u)];
+                            mass_3 = (_e127 + _e130);
+                            uint _e132 = i_10;
+                            float _e135 = list[min(uint(_e132), 7u)].w;
+                            uint _e136 = worst;
+                            float _e139 = list[min(uint(_e136), 7u)].w;
+                            if ((_e135 > _e139)) {
+                                uint _e141 = i_10;
+                                worst = _e141;
                             }
                         }
                     }
-                    float _e145 = total;
-                    float _e148 = f_max_4;
-                    float _e150 = mass_3;
-                    float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e145), ((AIRLIGHT_PANEL_FLOOR * _e148) * _e150)));
-                    float _e154 = errors;
-                    if (!((_e154 <= goal))) {
-                        uint _e159 = worst;
-                        float _e162 = list[min(uint(_e159), 7u)].w;
-                        local_13 = !((_e162 > 0.0));
+                    float _e146 = total;
+                    float _e149 = f_max_4;
+                    float _e151 = mass_3;
+                    float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e146), ((AIRLIGHT_PANEL_FLOOR * _e149) * _e151)));
+                    float _e155 = errors;
+                    if (!((_e155 <= goal))) {
+                        uint _e160 = worst;
+                        float _e163 = list[min(uint(_e160), 7u)].w;
+                        local_13 = !((_e163 > 0.0));
                     } else {
                         local_13 = true;
                     }
-                    bool _e167 = local_13;
-                    if (!(_e167)) {
-                        uint _e171 = budget;
-                        local_14 = (_e171 < 2u);
+                    bool _e168 = local_13;
+                    if (!(_e168)) {
+                        uint _e172 = budget;
+                        local_14 = (_e172 < 2u);
                     } else {
                         local_14 = true;
                     }
-                    bool _e175 = local_14;
-                    if (!(_e175)) {
-                        uint _e179 = count;
-                        local_15 = (_e179 == AIRLIGHT_PANEL_LIST);
+                    bool _e176 = local_14;
+                    if (!(_e176)) {
+                        uint _e180 = count;
+                        local_15 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
                         local_15 = true;
                     }
-                    bool _e183 = local_15;
-                    if (_e183) {
-                        float _e184 = total;
-                        return _e184;
+                    bool _e184 = local_15;
+                    if (_e184) {
+                        float _e185 = total;
+                        return _e185;
                     }
-                    uint _e185 = worst;
-                    float wa = list[min(uint(_e185), 7u)].x;
-                    uint _e189 = worst;
-                    float wb = list[min(uint(_e189), 7u)].y;
+                    uint _e186 = worst;
+                    float wa = list[min(uint(_e186), 7u)].x;
+                    uint _e190 = worst;
+                    float wb = list[min(uint(_e190), 7u)].y;
                     if (!(((wb - wa) > (AIRLIGHT_FLT_EPS * wb)))) {
-                        uint _e198 = worst;
-                        list[min(uint(_e198), 7u)].w = 0.0;
+                        uint _e199 = worst;
+                        list[min(uint(_e199), 7u)].w = 0.0;
                         continue;
                     }
                     float mid = (wa + ((wb - wa) * 0.5));
                     a_9 = wa;
                     b_8 = mid;
-                    uint _e206 = worst;
-                    slot = _e206;
+                    uint _e207 = worst;
+                    slot = _e207;
                     pending = true;
                     next_a = mid;
                     next_b = wb;
@@ -2483,35 +2580,35 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
             }
         }
     }
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    bool loop_init_19 = true;
     while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_18) {
-            uint _e231 = i_10;
-            i_10 = (_e231 + 1u);
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_19) {
+            uint _e232 = i_11;
+            i_11 = (_e232 + 1u);
         }
-        loop_init_18 = false;
-        uint _e218 = i_10;
-        if ((_e218 < AIRLIGHT_PANEL_LIST)) {
+        loop_init_19 = false;
+        uint _e219 = i_11;
+        if ((_e219 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e221 = i_10;
-            uint _e222 = count;
-            if ((_e221 >= _e222)) {
+            uint _e222 = i_11;
+            uint _e223 = count;
+            if ((_e222 >= _e223)) {
                 break;
             }
-            float _e224 = total_1;
-            uint _e225 = i_10;
-            float _e228 = list[min(uint(_e225), 7u)].z;
-            total_1 = (_e224 + _e228);
+            float _e225 = total_1;
+            uint _e226 = i_11;
+            float _e229 = list[min(uint(_e226), 7u)].z;
+            total_1 = (_e225 + _e229);
         }
     }
-    float _e233 = total_1;
-    return _e233;
+    float _e234 = total_1;
+    return _e234;
 }
 
 float airlight_bounded(float a_10)
@@ -2543,8 +2640,8 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     }
     float a_22 = (a0_ / scale_1);
     float b_16 = (b0_ / scale_1);
-    float c_9 = (c0_ / scale_1);
-    float disc_1 = ((b_16 * b_16) - ((4.0 * a_22) * c_9));
+    float c_10 = (c0_ / scale_1);
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_22) * c_10));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
@@ -2554,7 +2651,7 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     float _e47 = sb;
     float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_2 != 0.0)) {
-        r1_ = (c_9 / q_2);
+        r1_ = (c_10 / q_2);
     }
     if ((a_22 != 0.0)) {
         r2_2 = (q_2 / a_22);
@@ -2660,32 +2757,32 @@ airlight_ret_Constructarray4_float_ airlight_Constructarray4_float_(float arg0, 
     return ret;
 }
 
-float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, AirlightHalf half_10, bool isotropic, inout float f_max_5)
+float airlight_half(AirlightScene s_10, AirlightCanonical g_13, float sigma_12, AirlightHalf half_10, bool isotropic, inout float f_max_5)
 {
     float cuts[4] = airlight_Constructarray4_float_(2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = (float)0;
     float k_out = (float)0;
-    uint i_11 = 0u;
-    bool local_23 = (bool)0;
     uint i_12 = 0u;
+    bool local_23 = (bool)0;
+    uint i_13 = 0u;
     uint j_2 = (uint)0;
     float total_2 = 0.0;
     float lo_2 = (float)0;
-    uint i_13 = 0u;
+    uint i_14 = 0u;
     float hi_2 = (float)0;
     bool local_24 = (bool)0;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
 
     if (isotropic) {
-        const float _e11 = airlight_integrand(s_9, g_13, sigma_12, (half_10.y_lo + (half_10.dy * 0.5)));
+        const float _e11 = airlight_integrand(s_10, g_13, sigma_12, (half_10.y_lo + (half_10.dy * 0.5)));
         const float _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_9.light_param_a;
-        k_out = s_9.light_param_b;
+    if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_10.light_param_a;
+        k_out = s_10.light_param_b;
         float _e29 = k_in;
         float _e30 = k_out;
         float width_1 = (_e29 - _e30);
@@ -2702,26 +2799,26 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, A
         float _e46 = k_out;
         const float2 _e47 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e46);
         cuts = airlight_Constructarray4_float_(_e43.x, _e43.y, _e47.x, _e47.y);
-        uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-        bool loop_init_19 = true;
+        uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+        bool loop_init_20 = true;
         while(true) {
-            if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-            if (!loop_init_19) {
-                uint _e77 = i_11;
-                i_11 = (_e77 + 1u);
+            if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+            loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+            if (!loop_init_20) {
+                uint _e77 = i_12;
+                i_12 = (_e77 + 1u);
             }
-            loop_init_19 = false;
-            uint _e55 = i_11;
+            loop_init_20 = false;
+            uint _e55 = i_12;
             if ((_e55 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e58 = i_11;
+                uint _e58 = i_12;
                 float _e60 = cuts[min(uint(_e58), 3u)];
                 if ((_e60 > half_10.y_lo)) {
-                    uint _e65 = i_11;
+                    uint _e65 = i_12;
                     float _e67 = cuts[min(uint(_e65), 3u)];
                     local_23 = (_e67 < half_10.y_hi);
                 } else {
@@ -2729,40 +2826,40 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, A
                 }
                 bool _e71 = local_23;
                 if (!(_e71)) {
-                    uint _e73 = i_11;
+                    uint _e73 = i_12;
                     cuts[min(uint(_e73), 3u)] = 2.0;
                 }
             }
         }
-        uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
-        bool loop_init_20 = true;
+        uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+        bool loop_init_21 = true;
         while(true) {
-            if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-            loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-            if (!loop_init_20) {
-                uint _e118 = i_12;
-                i_12 = (_e118 + 1u);
+            if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+            loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+            if (!loop_init_21) {
+                uint _e118 = i_13;
+                i_13 = (_e118 + 1u);
             }
-            loop_init_20 = false;
-            uint _e81 = i_12;
+            loop_init_21 = false;
+            uint _e81 = i_13;
             if ((_e81 < 3u)) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
-                uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-                bool loop_init_21 = true;
+                uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+                bool loop_init_22 = true;
                 while(true) {
-                    if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-                    loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-                    if (!loop_init_21) {
+                    if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+                    loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                    if (!loop_init_22) {
                         uint _e115 = j_2;
                         j_2 = (_e115 + 1u);
                     }
-                    loop_init_21 = false;
+                    loop_init_22 = false;
                     uint _e86 = j_2;
-                    uint _e88 = i_12;
+                    uint _e88 = i_13;
                     if ((_e86 < (3u - _e88))) {
                     } else {
                         break;
@@ -2788,26 +2885,26 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, A
         }
     }
     lo_2 = half_10.y_lo;
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e180 = i_13;
-            i_13 = (_e180 + 1u);
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e180 = i_14;
+            i_14 = (_e180 + 1u);
         }
-        loop_init_22 = false;
-        uint _e126 = i_13;
+        loop_init_23 = false;
+        uint _e126 = i_14;
         if ((_e126 < 5u)) {
         } else {
             break;
         }
         {
             hi_2 = half_10.y_hi;
-            uint _e131 = i_13;
+            uint _e131 = i_14;
             if ((_e131 < 4u)) {
-                uint _e136 = i_13;
+                uint _e136 = i_14;
                 float _e138 = cuts[min(uint(_e136), 3u)];
                 local_24 = (_e138 < 2.0);
             } else {
@@ -2815,14 +2912,14 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, A
             }
             bool _e142 = local_24;
             if (_e142) {
-                uint _e143 = i_13;
+                uint _e143 = i_14;
                 float _e145 = cuts[min(uint(_e143), 3u)];
                 hi_2 = _e145;
             }
             float _e146 = hi_2;
             float _e147 = lo_2;
             if ((_e146 > _e147)) {
-                if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+                if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
                     float _e154 = dark_below;
                     float _e155 = lo_2;
                     float _e156 = hi_2;
@@ -2836,15 +2933,15 @@ float airlight_half(AirlightScene s_9, AirlightCanonical g_13, float sigma_12, A
                     float _e161 = total_2;
                     float _e162 = lo_2;
                     float _e163 = hi_2;
-                    const float _e164 = airlight_integrate_piece(s_9, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
+                    const float _e164 = airlight_integrate_piece(s_10, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 float _e166 = hi_2;
                 lo_2 = _e166;
             }
-            uint _e167 = i_13;
+            uint _e167 = i_14;
             if ((_e167 < 4u)) {
-                uint _e172 = i_13;
+                uint _e172 = i_14;
                 float _e174 = cuts[min(uint(_e172), 3u)];
                 local_26 = (_e174 >= 2.0);
             } else {
@@ -2873,7 +2970,7 @@ float airlight_weighted(float sigma_s, float intensity, float h_2, float x_7, fl
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_2)) - x_7) + log(abs(j_3)))));
 }
 
-float airlight_on_line(AirlightScene s_10, AirlightCanonical g_14)
+float airlight_on_line(AirlightScene s_11, AirlightCanonical g_14)
 {
     bool local_27 = (bool)0;
     float span = (float)0;
@@ -2887,38 +2984,38 @@ float airlight_on_line(AirlightScene s_10, AirlightCanonical g_14)
     }
     bool _e10 = local_27;
     if (_e10) {
-        const float _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_14.d_el));
-        const float _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1.0);
+        const float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_14.d_el));
+        const float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
         float f_2 = (_e16 * _e22);
         float r0_ = (g_14.x_h - g_14.t_lo);
         float r1_1 = (g_14.x_h - g_14.t_hi);
-        const float _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * r0_), (f_2 * (((g_14.t_hi - g_14.t_lo) / r0_) / r1_1)));
+        const float _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * r0_), (f_2 * (((g_14.t_hi - g_14.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    const float _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_14.d_el);
-    const float _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1.0);
+    const float _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_14.d_el);
+    const float _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1.0);
     float f_3 = (_e46 * _e52);
     float s0_ = (g_14.t_lo - g_14.x_h);
     float s1_ = (g_14.t_hi - g_14.x_h);
-    if ((s_10.sigma_t == 0.0)) {
+    if ((s_11.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_14.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        const float _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, 0.0, (f_3 * _e75));
+        const float _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, 0.0, (f_3 * _e75));
         return _e77;
     }
-    float two_st = (s_10.sigma_t + s_10.sigma_t);
+    float two_st = (s_11.sigma_t + s_11.sigma_t);
     const float _e82[10] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    const float _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    const float _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if (!(g_14.t_hi_infinite)) {
         const float _e99[10] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        const float _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2.0, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        const float _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     const bool _e114 = airlight_is_finite(_e93);
@@ -2953,7 +3050,7 @@ AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_15, float big_h_1)
+float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_15, float big_h_1)
 {
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
@@ -3000,19 +3097,19 @@ float airlight_whole_line(AirlightScene s_11, AirlightCanonical g_15, float big_
     float _e50 = dv_2;
     bool _e51 = infinite_1;
     AirlightHalf half_13 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    const float _e54 = airlight_integrand(s_11, g_15, -1.0, _e9);
+    const float _e54 = airlight_integrand(s_12, g_15, -1.0, _e9);
     const float _e55 = airlight_moment_zero(half_13);
     float j_5 = (_e54 * _e55);
     const bool _e59 = airlight_is_finite(_e8);
     if (_e59) {
         x_8 = (big_h_1 * _e8);
     } else {
-        if ((s_11.sigma_t > 0.0)) {
-            x_8 = (s_11.sigma_t * abs((g_15.x_h - g_15.t_lo)));
+        if ((s_12.sigma_t > 0.0)) {
+            x_8 = (s_12.sigma_t * abs((g_15.x_h - g_15.t_lo)));
         }
     }
     float _e72 = x_8;
-    const float _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e72, j_5);
+    const float _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, _e72, j_5);
     return _e73;
 }
 
@@ -3020,8 +3117,8 @@ float airlight_cut_length(float big_h_2, float v_s)
 {
     float inv_h = (1.0 / big_h_2);
     float w_2 = (v_s + inv_h);
-    float r_10 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
+    float r_11 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 
@@ -3032,7 +3129,7 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
     return ret;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonical g_16)
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_13, AirlightCanonical g_16)
 {
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
@@ -3078,7 +3175,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e10 = local_30;
     if (!(!(_e10))) {
-        local_31 = ((s_12.sigma_s * s_12.intensity) == 0.0);
+        local_31 = ((s_13.sigma_s * s_13.intensity) == 0.0);
     } else {
         local_31 = true;
     }
@@ -3116,7 +3213,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e55 = local_34;
     if (_e55) {
-        const float _e56 = airlight_on_line(s_12, g_16);
+        const float _e56 = airlight_on_line(s_13, g_16);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
@@ -3124,10 +3221,10 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
         const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_2;
     }
-    float big_h_5 = (s_12.sigma_t * h_4);
-    if (!((s_12.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_36 = (s_12.light_param_a == 0.0);
+    float big_h_5 = (s_13.sigma_t * h_4);
+    if (!((s_13.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_36 = (s_13.light_param_a == 0.0);
         } else {
             local_36 = false;
         }
@@ -3138,15 +3235,15 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e85 = local_35;
     if (_e85) {
-        if (!((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             bool _e104 = local_39;
             if (_e104) {
-                local_40 = (s_12.phase_param_a == 0.0);
+                local_40 = (s_13.phase_param_a == 0.0);
             } else {
                 local_40 = false;
             }
@@ -3180,7 +3277,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
     }
     bool _e131 = local_42;
     if (_e131) {
-        const float _e132 = airlight_whole_line(s_12, g_16, big_h_5);
+        const float _e132 = airlight_whole_line(s_13, g_16, big_h_5);
         const AirlightResult airlightresult_3 = ConstructAirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_3;
     }
@@ -3224,9 +3321,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
             }
         }
         AirlightHalf _e199 = half_11;
-        const float _e200 = airlight_half(s_12, g_16, -1.0, _e199, isotropic_1, f_max_6);
+        const float _e200 = airlight_half(s_13, g_16, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        const float _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, (big_h_5 * _e158), _e200);
+        const float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_16.t_hi_infinite)) {
@@ -3318,9 +3415,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_12, AirlightCanonic
             }
         }
         AirlightHalf _e313 = half_12;
-        const float _e314 = airlight_half(s_12, g_16, 1.0, _e313, isotropic_1, f_max_6);
+        const float _e314 = airlight_half(s_13, g_16, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        const float _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        const float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -3382,7 +3479,7 @@ float3 airlight_normalize(float3 v_3)
     return (u_1 / (length(u_1)).xxx);
 }
 
-bool airlight_valid(AirlightScene s_13)
+bool airlight_valid(AirlightScene s_14)
 {
     bool local_56 = (bool)0;
     bool local_57 = (bool)0;
@@ -3419,96 +3516,96 @@ bool airlight_valid(AirlightScene s_13)
     bool local_87 = (bool)0;
     bool local_88 = (bool)0;
 
-    const bool _e2 = airlight_vec_finite(s_13.origin);
+    const bool _e2 = airlight_vec_finite(s_14.origin);
     if (_e2) {
-        const bool _e6 = airlight_vec_finite(s_13.dir);
+        const bool _e6 = airlight_vec_finite(s_14.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     bool _e8 = local_56;
     if (_e8) {
-        const bool _e12 = airlight_normalisable(s_13.dir);
+        const bool _e12 = airlight_normalisable(s_14.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     bool _e14 = local_57;
     if (_e14) {
-        const bool _e18 = airlight_is_finite(s_13.t_min);
+        const bool _e18 = airlight_is_finite(s_14.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     bool _e20 = local_58;
     if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_13.light_position);
+        const bool _e24 = airlight_vec_finite(s_14.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     bool _e26 = local_59;
     if (_e26) {
-        const bool _e30 = airlight_is_finite(s_13.intensity);
+        const bool _e30 = airlight_is_finite(s_14.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     bool _e32 = local_60;
     if (_e32) {
-        local_61 = (s_13.intensity >= 0.0);
+        local_61 = (s_14.intensity >= 0.0);
     } else {
         local_61 = false;
     }
     bool _e39 = local_61;
     if (_e39) {
-        const bool _e43 = airlight_is_finite(s_13.sigma_s);
+        const bool _e43 = airlight_is_finite(s_14.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     bool _e45 = local_62;
     if (_e45) {
-        local_63 = (s_13.sigma_s >= 0.0);
+        local_63 = (s_14.sigma_s >= 0.0);
     } else {
         local_63 = false;
     }
     bool _e52 = local_63;
     if (_e52) {
-        const bool _e56 = airlight_is_finite(s_13.sigma_t);
+        const bool _e56 = airlight_is_finite(s_14.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     bool _e58 = local_64;
     if (_e58) {
-        local_65 = (s_13.sigma_t >= 0.0);
+        local_65 = (s_14.sigma_t >= 0.0);
     } else {
         local_65 = false;
     }
     bool _e65 = local_65;
     ok = _e65;
-    if (((s_13.flags & 1u) == 0u)) {
+    if (((s_14.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            const bool _e76 = airlight_is_finite(s_13.t_max);
+            const bool _e76 = airlight_is_finite(s_14.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         bool _e78 = local_66;
         if (_e78) {
-            local_67 = (s_13.t_min <= s_13.t_max);
+            local_67 = (s_14.t_min <= s_14.t_max);
         } else {
             local_67 = false;
         }
         bool _e85 = local_67;
         ok = _e85;
     }
-    if ((s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_13.light_end);
+            const bool _e93 = airlight_vec_finite(s_14.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3516,39 +3613,39 @@ bool airlight_valid(AirlightScene s_13)
         bool _e95 = local_68;
         ok = _e95;
     } else {
-        if ((s_13.light_shape != AIRLIGHT_SHAPE_POINT)) {
+        if ((s_14.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         bool _e103 = ok;
         if (_e103) {
-            const bool _e107 = airlight_is_finite(s_13.brdf_albedo);
+            const bool _e107 = airlight_is_finite(s_14.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         bool _e109 = local_69;
         if (_e109) {
-            local_70 = (s_13.brdf_albedo >= 0.0);
+            local_70 = (s_14.brdf_albedo >= 0.0);
         } else {
             local_70 = false;
         }
         bool _e116 = local_70;
         if (_e116) {
-            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         bool _e123 = local_71;
         if (_e123) {
-            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         bool _e130 = local_72;
         if (_e130) {
-            const float _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            const float _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
             const bool _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3557,89 +3654,89 @@ bool airlight_valid(AirlightScene s_13)
         bool _e139 = local_73;
         ok = _e139;
     } else {
-        if ((s_13.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_14.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e147 = ok;
         if (_e147) {
-            const bool _e151 = airlight_vec_finite(s_13.light_axis);
+            const bool _e151 = airlight_vec_finite(s_14.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         bool _e153 = local_74;
         if (_e153) {
-            const bool _e157 = airlight_normalisable(s_13.light_axis);
+            const bool _e157 = airlight_normalisable(s_14.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         bool _e159 = local_75;
         if (_e159) {
-            local_76 = (s_13.light_param_a >= 0.0);
+            local_76 = (s_14.light_param_a >= 0.0);
         } else {
             local_76 = false;
         }
         bool _e166 = local_76;
         if (_e166) {
-            local_77 = (s_13.light_param_a <= 1024.0);
+            local_77 = (s_14.light_param_a <= 1024.0);
         } else {
             local_77 = false;
         }
         bool _e173 = local_77;
         if (_e173) {
-            local_78 = (frac((s_13.light_param_a * 0.5)) == 0.0);
+            local_78 = (frac((s_14.light_param_a * 0.5)) == 0.0);
         } else {
             local_78 = false;
         }
         bool _e183 = local_78;
         ok = _e183;
     } else {
-        if ((s_13.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_14.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
-                const bool _e191 = airlight_vec_finite(s_13.light_axis);
+                const bool _e191 = airlight_vec_finite(s_14.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             bool _e193 = local_79;
             if (_e193) {
-                const bool _e197 = airlight_normalisable(s_13.light_axis);
+                const bool _e197 = airlight_normalisable(s_14.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             bool _e199 = local_80;
             if (_e199) {
-                local_81 = (s_13.light_param_b < s_13.light_param_a);
+                local_81 = (s_14.light_param_b < s_14.light_param_a);
             } else {
                 local_81 = false;
             }
             bool _e206 = local_81;
             if (_e206) {
-                local_82 = (s_13.light_param_b >= -1.0);
+                local_82 = (s_14.light_param_b >= -1.0);
             } else {
                 local_82 = false;
             }
             bool _e213 = local_82;
             if (_e213) {
-                local_83 = (s_13.light_param_a <= 1.0);
+                local_83 = (s_14.light_param_a <= 1.0);
             } else {
                 local_83 = false;
             }
             bool _e220 = local_83;
             ok = _e220;
         } else {
-            if ((s_13.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_13.phase_param_a) < 1.0);
-    switch(s_13.phase_kind) {
+    bool g_ok = (abs(s_14.phase_param_a) < 1.0);
+    switch(s_14.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -3666,19 +3763,19 @@ bool airlight_valid(AirlightScene s_13)
             }
             bool _e239 = local_85;
             if (_e239) {
-                local_86 = (abs(s_13.phase_param_b) < 1.0);
+                local_86 = (abs(s_14.phase_param_b) < 1.0);
             } else {
                 local_86 = false;
             }
             bool _e247 = local_86;
             if (_e247) {
-                local_87 = (s_13.phase_param_c >= 0.0);
+                local_87 = (s_14.phase_param_c >= 0.0);
             } else {
                 local_87 = false;
             }
             bool _e254 = local_87;
             if (_e254) {
-                local_88 = (s_13.phase_param_c <= 1.0);
+                local_88 = (s_14.phase_param_c <= 1.0);
             } else {
                 local_88 = false;
             }
@@ -3707,17 +3804,17 @@ AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2,
     return ret;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_14)
+AirlightCanonical airlight_canonical(AirlightScene s_15)
 {
     float3 a_11 = float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
 
-    const float3 _e2 = airlight_normalize(s_14.dir);
-    if ((s_14.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e12 = airlight_normalize(s_14.light_axis);
+    const float3 _e2 = airlight_normalize(s_15.dir);
+    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e12 = airlight_normalize(s_15.light_axis);
         a_11 = _e12;
     }
-    float3 to_light = (s_14.light_position - s_14.origin);
+    float3 to_light = (s_15.light_position - s_15.origin);
     float x_h_1 = dot(to_light, _e2);
     float3 perp = ((x_h_1 * _e2) - to_light);
     const float _e19 = airlight_safe_length(perp);
@@ -3725,10 +3822,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_14)
         float3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_14.flags & 1u) != 0u);
+    bool infinite_3 = ((s_15.flags & 1u) != 0u);
     float3 _e32 = a_11;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, (infinite_3 ? 0.0 : s_14.t_max), infinite_3);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, (infinite_3 ? 0.0 : s_15.t_max), infinite_3);
     return airlightcanonical;
 }
 
@@ -3764,10 +3861,10 @@ float2 airlight_two_product(float a_13, float b_10, uint key_2)
     return float2(_e4, (_e17 ? e_3 : 0.0));
 }
 
-float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, uint key_3)
+float airlight_diff_of_products(float a_14, float b_11, float c_7, float d_1, uint key_3)
 {
     const float2 _e5 = airlight_two_product(a_14, b_11, key_3);
-    const float2 _e6 = airlight_two_product(c_6, d_1, key_3);
+    const float2 _e6 = airlight_two_product(c_7, d_1, key_3);
     const float _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     const float _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -3794,20 +3891,20 @@ bool airlight_in_exact_range(float3 v_4)
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain)
+AirlightCanonical airlight_refined(AirlightScene s_16, AirlightCanonical plain)
 {
     bool local_91 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
     bool local_92 = (bool)0;
     float3 a_15 = float3(0.0, 0.0, 1.0);
 
-    uint key_4 = uint((s_15.flags > 1u));
-    const float2 _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
-    const float2 _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
-    const float2 _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
+    uint key_4 = uint((s_16.flags > 1u));
+    const float2 _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
+    const float2 _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
+    const float2 _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
     float3 hi_3 = float3(_e11.x, _e17.x, _e23.x);
     float3 lo_3 = float3(_e11.y, _e17.y, _e23.y);
-    float3 dir = s_15.dir;
+    float3 dir = s_16.dir;
     const bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
@@ -3851,8 +3948,8 @@ AirlightCanonical airlight_refined(AirlightScene s_15, AirlightCanonical plain)
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
-    if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e112 = airlight_normalize(s_15.light_axis);
+    if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e112 = airlight_normalize(s_16.light_axis);
         a_15 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir);
@@ -3878,9 +3975,9 @@ airlight_ret_airlight_kronrod_rule airlight_kronrod_rule()
     return airlight_Constructarray4_float3_(float3(0.96049124, 0.10465623, 0.0), float3(0.7745967, 0.26848808, 0.5555556), float3(0.43424374, 0.4013974, 0.0), float3(0.0, 0.45091653, 0.8888889));
 }
 
-float4 airlight_list_get(AirlightPanelList l, uint i_14)
+float4 airlight_list_get(AirlightPanelList l, uint i_15)
 {
-    switch(i_14) {
+    switch(i_15) {
         case 0u: {
             return l.panel_a;
         }
@@ -3902,9 +3999,9 @@ float4 airlight_list_get(AirlightPanelList l, uint i_14)
     }
 }
 
-void airlight_list_set(inout AirlightPanelList l_1, uint i_15, float4 v_5)
+void airlight_list_set(inout AirlightPanelList l_1, uint i_16, float4 v_5)
 {
-    switch(i_15) {
+    switch(i_16) {
         case 0u: {
             l_1.panel_a = v_5;
             return;
@@ -3945,110 +4042,110 @@ AirlightListScan ConstructAirlightListScan(float arg0, float arg1, uint arg2) {
 
 AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
 {
-    AirlightListScan r_3 = ConstructAirlightListScan(0.0, 0.0, 0u);
+    AirlightListScan r_4 = ConstructAirlightListScan(0.0, 0.0, 0u);
     float worst_error = -1.0;
 
     if ((count_1 > 0u)) {
-        float _e12 = r_3.total;
-        r_3.total = (_e12 + l_2.panel_a.z);
-        float _e17 = r_3.errors;
-        r_3.errors = (_e17 + l_2.panel_a.w);
+        float _e12 = r_4.total;
+        r_4.total = (_e12 + l_2.panel_a.z);
+        float _e17 = r_4.errors;
+        r_4.errors = (_e17 + l_2.panel_a.w);
         float _e23 = worst_error;
         if ((l_2.panel_a.w > _e23)) {
-            r_3.worst = 0u;
+            r_4.worst = 0u;
             worst_error = l_2.panel_a.w;
         }
     }
     if ((count_1 > 1u)) {
-        float _e32 = r_3.total;
-        r_3.total = (_e32 + l_2.panel_b.z);
-        float _e37 = r_3.errors;
-        r_3.errors = (_e37 + l_2.panel_b.w);
+        float _e32 = r_4.total;
+        r_4.total = (_e32 + l_2.panel_b.z);
+        float _e37 = r_4.errors;
+        r_4.errors = (_e37 + l_2.panel_b.w);
         float _e43 = worst_error;
         if ((l_2.panel_b.w > _e43)) {
-            r_3.worst = 1u;
+            r_4.worst = 1u;
             worst_error = l_2.panel_b.w;
         }
     }
     if ((count_1 > 2u)) {
-        float _e52 = r_3.total;
-        r_3.total = (_e52 + l_2.panel_c.z);
-        float _e57 = r_3.errors;
-        r_3.errors = (_e57 + l_2.panel_c.w);
+        float _e52 = r_4.total;
+        r_4.total = (_e52 + l_2.panel_c.z);
+        float _e57 = r_4.errors;
+        r_4.errors = (_e57 + l_2.panel_c.w);
         float _e63 = worst_error;
         if ((l_2.panel_c.w > _e63)) {
-            r_3.worst = 2u;
+            r_4.worst = 2u;
             worst_error = l_2.panel_c.w;
         }
     }
     if ((count_1 > 3u)) {
-        float _e72 = r_3.total;
-        r_3.total = (_e72 + l_2.panel_d.z);
-        float _e77 = r_3.errors;
-        r_3.errors = (_e77 + l_2.panel_d.w);
+        float _e72 = r_4.total;
+        r_4.total = (_e72 + l_2.panel_d.z);
+        float _e77 = r_4.errors;
+        r_4.errors = (_e77 + l_2.panel_d.w);
         float _e83 = worst_error;
         if ((l_2.panel_d.w > _e83)) {
-            r_3.worst = 3u;
+            r_4.worst = 3u;
             worst_error = l_2.panel_d.w;
         }
     }
     if ((count_1 > 4u)) {
-        float _e92 = r_3.total;
-        r_3.total = (_e92 + l_2.panel_e.z);
-        float _e97 = r_3.errors;
-        r_3.errors = (_e97 + l_2.panel_e.w);
+        float _e92 = r_4.total;
+        r_4.total = (_e92 + l_2.panel_e.z);
+        float _e97 = r_4.errors;
+        r_4.errors = (_e97 + l_2.panel_e.w);
         float _e103 = worst_error;
         if ((l_2.panel_e.w > _e103)) {
-            r_3.worst = 4u;
+            r_4.worst = 4u;
             worst_error = l_2.panel_e.w;
         }
     }
     if ((count_1 > 5u)) {
-        float _e112 = r_3.total;
-        r_3.total = (_e112 + l_2.panel_f.z);
-        float _e117 = r_3.errors;
-        r_3.errors = (_e117 + l_2.panel_f.w);
+        float _e112 = r_4.total;
+        r_4.total = (_e112 + l_2.panel_f.z);
+        float _e117 = r_4.errors;
+        r_4.errors = (_e117 + l_2.panel_f.w);
         float _e123 = worst_error;
         if ((l_2.panel_f.w > _e123)) {
-            r_3.worst = 5u;
+            r_4.worst = 5u;
             worst_error = l_2.panel_f.w;
         }
     }
-    AirlightListScan _e129 = r_3;
+    AirlightListScan _e129 = r_4;
     const AirlightListScan airlightlistscan = _e129;
     return airlightlistscan;
 }
 
 float airlight_asinh(float x_11)
 {
-    float r_4 = (float)0;
+    float r_5 = (float)0;
 
     float a_24 = abs(x_11);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
+    r_5 = (AIRLIGHT_LN_2_ + log(a_24));
     if ((a_24 <= 4096.0)) {
         const float _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1.0 + sqrt((1.0 + (a_24 * a_24)))))));
-        r_4 = _e17;
+        r_5 = _e17;
     }
-    float _e18 = r_4;
-    float _e19 = r_4;
+    float _e18 = r_5;
+    float _e19 = r_5;
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_17, float s_16)
+float airlight_to_w(AirlightOuter g_17, float s_17)
 {
     if ((g_17.scale > 0.0)) {
-        const float _e9 = airlight_asinh(((s_16 - g_17.s_star) / g_17.scale));
+        const float _e9 = airlight_asinh(((s_17 - g_17.s_star) / g_17.scale));
         return _e9;
     }
-    return s_16;
+    return s_17;
 }
 
 float2 airlight_cos_sin_half_turn(float x_12)
 {
-    float r_11 = (x_12 - 1.5707964);
-    float z_10 = (r_11 * r_11);
+    float r_12 = (x_12 - 1.5707964);
+    float z_10 = (r_12 * r_12);
     float cos_r = (1.0 - ((z_10 / 2.0) * (1.0 - ((z_10 / 12.0) * (1.0 - ((z_10 / 30.0) * (1.0 - ((z_10 / 56.0) * (1.0 - ((z_10 / 90.0) * (1.0 - ((z_10 / 132.0) * (1.0 - (z_10 / 182.0))))))))))))));
-    float sin_r = (r_11 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
@@ -4059,21 +4156,21 @@ float airlight_acos(float x_13)
     return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_7, float s_17)
+float airlight_angle(float c_8, float s_18)
 {
-    if ((s_17 <= c_7)) {
-        const float _e4 = airlight_atan((s_17 / c_7));
+    if ((s_18 <= c_8)) {
+        const float _e4 = airlight_atan((s_18 / c_8));
         return _e4;
     }
-    if ((s_17 <= -(c_7))) {
-        const float _e10 = airlight_atan((s_17 / -(c_7)));
+    if ((s_18 <= -(c_8))) {
+        const float _e10 = airlight_atan((s_18 / -(c_8)));
         return (AIRLIGHT_PI - _e10);
     }
-    if ((c_7 >= 0.0)) {
-        const float _e16 = airlight_atan((c_7 / s_17));
+    if ((c_8 >= 0.0)) {
+        const float _e16 = airlight_atan((c_8 / s_18));
         return (1.5707964 - _e16);
     }
-    const float _e21 = airlight_atan((-(c_7) / s_17));
+    const float _e21 = airlight_atan((-(c_8) / s_18));
     return (1.5707964 + _e21);
 }
 
@@ -4112,9 +4209,9 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_18, uint max_panels)
+AirlightOuter airlight_outer_point(AirlightScene s_19, uint max_panels)
 {
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_18.light_position, (0.0).xxx, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, airlight_Constructarray4_float_(0.0, 0.0, 0.0, 0.0));
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_19.light_position, (0.0).xxx, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, airlight_Constructarray4_float_(0.0, 0.0, 0.0, 0.0));
     return airlightouter;
 }
 
@@ -4124,23 +4221,23 @@ airlight_ret_Constructarray2_float_ airlight_Constructarray2_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_surface(AirlightScene s_19)
+AirlightOuter airlight_surface(AirlightScene s_20)
 {
     AirlightOuter g_18 = (AirlightOuter)0;
     bool local_93 = (bool)0;
     float3 u = (float3)0;
     float cuts_1[2] = {0.0, 0.0};
     uint k_5 = 0u;
-    uint i_16 = 0u;
-    bool local_94 = (bool)0;
     uint i_17 = 0u;
+    bool local_94 = (bool)0;
+    uint i_18 = 0u;
 
-    const AirlightOuter _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    const AirlightOuter _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_18 = _e2;
-    float3 to_light_1 = (s_19.light_position - s_19.origin);
+    float3 to_light_1 = (s_20.light_position - s_20.origin);
     const float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_19.intensity == 0.0))) {
-        local_93 = (s_19.sigma_s == 0.0);
+    if (!((s_20.intensity == 0.0))) {
+        local_93 = (s_20.sigma_s == 0.0);
     } else {
         local_93 = true;
     }
@@ -4157,14 +4254,14 @@ AirlightOuter airlight_surface(AirlightScene s_19)
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
-    if ((s_19.brdf_albedo == 0.0)) {
+    if ((s_20.brdf_albedo == 0.0)) {
         g_18.outcome = 1u;
         AirlightOuter _e33 = g_18;
         const AirlightOuter airlightouter_3 = _e33;
         return airlightouter_3;
     }
     float3 l_3 = (to_light_1 / (_e7).xxx);
-    const float3 _e37 = airlight_normalize(s_19.dir);
+    const float3 _e37 = airlight_normalize(s_20.dir);
     float cos_a_1 = dot(_e37, l_3);
     float3 across = (_e37 - (cos_a_1 * l_3));
     const float _e41 = airlight_safe_length(across);
@@ -4185,33 +4282,33 @@ AirlightOuter airlight_surface(AirlightScene s_19)
     float _e79 = cuts_1[1];
     float _e81 = cuts_1[0];
     if ((_e79 < _e81)) {
-        float c_10 = cuts_1[0];
+        float c_11 = cuts_1[0];
         float _e87 = cuts_1[1];
         cuts_1[0] = _e87;
-        cuts_1[1] = c_10;
+        cuts_1[1] = c_11;
     }
-    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e123 = i_16;
-            i_16 = (_e123 + 1u);
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e123 = i_17;
+            i_17 = (_e123 + 1u);
         }
-        loop_init_23 = false;
-        uint _e93 = i_16;
+        loop_init_24 = false;
+        uint _e93 = i_17;
         if ((_e93 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e96 = i_16;
+            uint _e96 = i_17;
             float _e98 = cuts_1[min(uint(_e96), 1u)];
             uint _e100 = k_5;
             float _e102 = g_18.gamma[min(uint(_e100), 3u)];
             if ((_e98 > _e102)) {
-                uint _e106 = i_16;
+                uint _e106 = i_17;
                 float _e108 = cuts_1[min(uint(_e106), 1u)];
                 local_94 = (_e108 < AIRLIGHT_PI);
             } else {
@@ -4222,7 +4319,7 @@ AirlightOuter airlight_surface(AirlightScene s_19)
                 uint _e113 = k_5;
                 k_5 = (_e113 + 1u);
                 uint _e117 = k_5;
-                uint _e119 = i_16;
+                uint _e119 = i_17;
                 float _e121 = cuts_1[min(uint(_e119), 1u)];
                 g_18.gamma[min(uint(_e117), 3u)] = _e121;
             }
@@ -4232,25 +4329,25 @@ AirlightOuter airlight_surface(AirlightScene s_19)
     g_18.gamma[min(uint((_e126 + 1u)), 3u)] = AIRLIGHT_PI;
     uint _e132 = k_5;
     g_18.panels = (_e132 + 1u);
-    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e147 = i_17;
-            i_17 = (_e147 + 1u);
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e147 = i_18;
+            i_18 = (_e147 + 1u);
         }
-        loop_init_24 = false;
-        uint _e137 = i_17;
+        loop_init_25 = false;
+        uint _e137 = i_18;
         uint _e139 = g_18.panels;
         if ((_e137 <= _e139)) {
         } else {
             break;
         }
         {
-            uint _e142 = i_17;
-            uint _e144 = i_17;
+            uint _e142 = i_18;
+            uint _e144 = i_18;
             g_18.edges[min(uint(_e142), 4u)] = float(_e144);
         }
     }
@@ -4265,7 +4362,7 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_20)
+AirlightOuter airlight_outer(AirlightScene s_21)
 {
     AirlightOuter g_19 = (AirlightOuter)0;
     bool local_95 = (bool)0;
@@ -4286,36 +4383,36 @@ AirlightOuter airlight_outer(AirlightScene s_20)
     bool local_107 = (bool)0;
     float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = {0.0, 0.0, 0.0};
-    uint i_18 = 0u;
+    uint i_19 = 0u;
     bool local_108 = (bool)0;
     bool local_109 = (bool)0;
     bool local_110 = (bool)0;
     uint n_1 = 0u;
-    uint i_19 = 0u;
+    uint i_20 = 0u;
     bool local_111 = (bool)0;
 
-    if ((s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        const AirlightOuter _e4 = airlight_surface(s_20);
+    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        const AirlightOuter _e4 = airlight_surface(s_21);
         const AirlightOuter airlightouter_5 = _e4;
         return airlightouter_5;
     }
-    const AirlightOuter _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    const AirlightOuter _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
     g_19 = _e6;
-    if ((s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
         AirlightOuter _e11 = g_19;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
-    float3 ab_1 = (s_20.light_end - s_20.light_position);
+    float3 ab_1 = (s_21.light_end - s_21.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = (s_20.intensity == 0.0);
+        local_95 = (s_21.intensity == 0.0);
     } else {
         local_95 = true;
     }
     bool _e26 = local_95;
     if (!(_e26)) {
-        local_96 = (s_20.sigma_s == 0.0);
+        local_96 = (s_21.sigma_s == 0.0);
     } else {
         local_96 = true;
     }
@@ -4327,13 +4424,13 @@ AirlightOuter airlight_outer(AirlightScene s_20)
         return airlightouter_7;
     }
     float3 e_4 = (ab_1 / (_e15).xxx);
-    const float3 _e41 = airlight_normalize(s_20.dir);
-    float3 w0_ = (s_20.light_position - s_20.origin);
+    const float3 _e41 = airlight_normalize(s_21.dir);
+    float3 w0_ = (s_21.light_position - s_21.origin);
     float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_20.flags & 1u) != 0u);
+    bool infinite_4 = ((s_21.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4365,7 +4462,7 @@ AirlightOuter airlight_outer(AirlightScene s_20)
     bool _e97 = local_99;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = (s_20.t_min <= _e101);
+        local_100 = (s_21.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4373,7 +4470,7 @@ AirlightOuter airlight_outer(AirlightScene s_20)
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = (_e110 <= s_20.t_max);
+            local_102 = (_e110 <= s_21.t_max);
         } else {
             local_102 = true;
         }
@@ -4442,25 +4539,25 @@ AirlightOuter airlight_outer(AirlightScene s_20)
     float _e172 = scale;
     g_19.scale = _e172;
     float _e178 = s_star;
-    at = airlight_Constructarray3_float_(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    at = airlight_Constructarray3_float_(_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_25) {
-            uint _e229 = i_18;
-            i_18 = (_e229 + 1u);
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e229 = i_19;
+            i_19 = (_e229 + 1u);
         }
-        loop_init_25 = false;
-        uint _e189 = i_18;
+        loop_init_26 = false;
+        uint _e189 = i_19;
         if ((_e189 < 3u)) {
         } else {
             break;
         }
         {
             if ((cos_a_2 == 0.0)) {
-                uint _e196 = i_18;
+                uint _e196 = i_19;
                 local_108 = (_e196 > 0u);
             } else {
                 local_108 = false;
@@ -4469,7 +4566,7 @@ AirlightOuter airlight_outer(AirlightScene s_20)
             if (_e200) {
                 continue;
             }
-            uint _e201 = i_18;
+            uint _e201 = i_19;
             if ((_e201 == 2u)) {
                 local_109 = infinite_4;
             } else {
@@ -4479,10 +4576,10 @@ AirlightOuter airlight_outer(AirlightScene s_20)
             if (_e207) {
                 continue;
             }
-            uint _e208 = i_18;
+            uint _e208 = i_19;
             float _e210 = at[min(uint(_e208), 2u)];
             if ((_e210 > 0.0)) {
-                uint _e215 = i_18;
+                uint _e215 = i_19;
                 float _e217 = at[min(uint(_e215), 2u)];
                 local_110 = (_e217 < _e15);
             } else {
@@ -4490,9 +4587,9 @@ AirlightOuter airlight_outer(AirlightScene s_20)
             }
             bool _e220 = local_110;
             if (_e220) {
-                uint _e221 = i_18;
+                uint _e221 = i_19;
                 AirlightOuter _e223 = g_19;
-                uint _e224 = i_18;
+                uint _e224 = i_19;
                 float _e226 = at[min(uint(_e224), 2u)];
                 const float _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[min(uint(_e221), 2u)] = _e227;
@@ -4502,54 +4599,54 @@ AirlightOuter airlight_outer(AirlightScene s_20)
     float _e232 = cuts_2[1];
     float _e234 = cuts_2[0];
     if ((_e232 < _e234)) {
-        float c_11 = cuts_2[0];
+        float c_12 = cuts_2[0];
         float _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_11;
+        cuts_2[1] = c_12;
     }
     float _e243 = cuts_2[2];
     float _e245 = cuts_2[1];
     if ((_e243 < _e245)) {
-        float c_12 = cuts_2[1];
+        float c_13 = cuts_2[1];
         float _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_12;
+        cuts_2[2] = c_13;
     }
     float _e254 = cuts_2[1];
     float _e256 = cuts_2[0];
     if ((_e254 < _e256)) {
-        float c_13 = cuts_2[0];
+        float c_14 = cuts_2[0];
         float _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_13;
+        cuts_2[1] = c_14;
     }
     AirlightOuter _e264 = g_19;
     const float _e265 = airlight_to_w(_e264, _e15);
     AirlightOuter _e268 = g_19;
     const float _e270 = airlight_to_w(_e268, 0.0);
     g_19.edges[0] = _e270;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e304 = i_19;
-            i_19 = (_e304 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e304 = i_20;
+            i_20 = (_e304 + 1u);
         }
-        loop_init_26 = false;
-        uint _e275 = i_19;
+        loop_init_27 = false;
+        uint _e275 = i_20;
         if ((_e275 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e278 = i_19;
+            uint _e278 = i_20;
             float _e280 = cuts_2[min(uint(_e278), 2u)];
             uint _e282 = n_1;
             float _e284 = g_19.edges[min(uint(_e282), 4u)];
             if ((_e280 > _e284)) {
-                uint _e288 = i_19;
+                uint _e288 = i_20;
                 float _e290 = cuts_2[min(uint(_e288), 2u)];
                 local_111 = (_e290 < _e265);
             } else {
@@ -4560,7 +4657,7 @@ AirlightOuter airlight_outer(AirlightScene s_20)
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
-                uint _e300 = i_19;
+                uint _e300 = i_20;
                 float _e302 = cuts_2[min(uint(_e300), 2u)];
                 g_19.edges[min(uint(_e298), 4u)] = _e302;
             }
@@ -4582,20 +4679,20 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1) {
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_20, float x_14)
+AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_20, float x_14)
 {
     AirlightScene p = (AirlightScene)0;
     float at_1 = (float)0;
     float ds = 1.0;
 
-    p = s_21;
+    p = s_22;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_20 = min(airlight_naga_f2u32(max(floor(x_14), 0.0)), (g_20.panels - 1u));
-        float t_7 = (x_14 - float(i_20));
-        float a_27 = g_20.gamma[min(uint(i_20), 3u)];
-        float b_18 = g_20.gamma[min(uint((i_20 + 1u)), 3u)];
+    if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        uint i_21 = min(airlight_naga_f2u32(max(floor(x_14), 0.0)), (g_20.panels - 1u));
+        float t_7 = (x_14 - float(i_21));
+        float a_27 = g_20.gamma[min(uint(i_21), 3u)];
+        float b_18 = g_20.gamma[min(uint((i_21 + 1u)), 3u)];
         float gamma = (a_27 + ((((b_18 - a_27) * t_7) * t_7) * ((3.0 - t_7) - t_7)));
         float jacobian = ((((b_18 - a_27) * 6.0) * t_7) * (1.0 - t_7));
         if (!((jacobian > 0.0))) {
@@ -4617,10 +4714,10 @@ AirlightNode airlight_outer_node(AirlightScene s_21, AirlightOuter g_20, float x
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
         return airlightnode_2;
     }
-    if ((s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_14;
         if ((g_20.scale > 0.0)) {
             at_1 = (g_20.s_star + (g_20.scale * sinh(x_14)));
@@ -4649,7 +4746,7 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
     return ret;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_22)
+AirlightResult airlight_in_scatter(AirlightScene s_23)
 {
     AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     uint count_2 = 0u;
@@ -4665,7 +4762,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
     uint j_4 = (uint)0;
     bool local_112 = (bool)0;
     float f = (float)0;
-    AirlightResult r_5 = (AirlightResult)0;
+    AirlightResult r_6 = (AirlightResult)0;
     bool local_113 = (bool)0;
     bool local_114 = (bool)0;
     bool local_115 = (bool)0;
@@ -4675,12 +4772,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
     bool local_117 = (bool)0;
     bool local_118 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_22);
+    const bool _e1 = airlight_valid(s_23);
     if (!(_e1)) {
         const AirlightResult airlightresult_5 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_5;
     }
-    const AirlightOuter _e6 = airlight_outer(s_22);
+    const AirlightOuter _e6 = airlight_outer(s_23);
     if ((_e6.outcome == 1u)) {
         const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_6;
@@ -4693,16 +4790,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e260 = step_1;
             step_1 = (_e260 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e58 = step_1;
         if ((_e58 < evaluations)) {
         } else {
@@ -4711,23 +4808,23 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
         {
             float _e60 = a_16;
             float _e61 = b_12;
-            float c_14 = (0.5 * (_e60 + _e61));
+            float c_15 = (0.5 * (_e60 + _e61));
             float _e65 = b_12;
             float _e66 = a_16;
             float hw_1 = (0.5 * (_e65 - _e66));
             k_6 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
+            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            bool loop_init_29 = true;
             while(true) {
-                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
+                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_29) {
                     uint _e166 = j_4;
                     j_4 = (_e166 + 1u);
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e76 = j_4;
                 if ((_e76 < 7u)) {
                 } else {
@@ -4744,12 +4841,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
                         local_112 = false;
                     }
                     bool _e100 = local_112;
-                    float w_4 = (_e100 ? (c_14 - (hw_1 * node.x)) : (c_14 + (hw_1 * node.x)));
-                    const AirlightNode _e102 = airlight_outer_node(s_22, _e6, w_4);
+                    float w_4 = (_e100 ? (c_15 - (hw_1 * node.x)) : (c_15 + (hw_1 * node.x)));
+                    const AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_4);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
-                        r_5 = ConstructAirlightResult(0.0, 0u);
+                        r_6 = ConstructAirlightResult(0.0, 0u);
                         const bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             const bool _e118 = airlight_vec_finite(p_1.dir);
@@ -4762,12 +4859,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
                             const AirlightCanonical _e121 = airlight_canonical(p_1);
                             const AirlightCanonical _e122 = airlight_refined(p_1, _e121);
                             const AirlightResult _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_5 = _e123;
+                            r_6 = _e123;
                         }
-                        float _e125 = r_5.in_scatter;
+                        float _e125 = r_6.in_scatter;
                         const bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
-                            uint _e132 = r_5.status;
+                            uint _e132 = r_6.status;
                             local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
                             local_114 = true;
@@ -4777,18 +4874,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
                             const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
                             return airlightresult_8;
                         }
-                        if ((s_22.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_23.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }
                         bool _e149 = local_115;
                         if (_e149) {
-                            AirlightResult _e150 = r_5;
+                            AirlightResult _e150 = r_6;
                             const AirlightResult airlightresult_9 = _e150;
                             return airlightresult_9;
                         }
-                        float _e152 = r_5.in_scatter;
+                        float _e152 = r_6.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
                     float _e155 = k_6;
@@ -4833,16 +4930,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_22)
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_29 = true;
+                    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_30 = true;
                     while(true) {
-                        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-                        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                        if (!loop_init_29) {
+                        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+                        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+                        if (!loop_init_30) {
                             uint _e255 = tries;
                             tries = (_e255 + 1u);
                         }
-                        loop_init_29 = false;
+                        loop_init_30 = false;
                         uint _e207 = tries;
                         if ((_e207 < _e6.max_panels)) {
                         } else {
@@ -4953,16 +5050,16 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
 [numthreads(64, 1, 1)]
 void airlight_main(uint3 id : SV_DispatchThreadID)
 {
-    uint i_21 = id.x;
-    if ((i_21 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 128))) {
+    uint i_22 = id.x;
+    if ((i_22 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 128))) {
         return;
     }
-    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_21*128+0)), asfloat(airlight_records.Load(i_21*128+12)), asfloat(airlight_records.Load3(i_21*128+16)), asfloat(airlight_records.Load(i_21*128+28)), asfloat(airlight_records.Load3(i_21*128+32)), asfloat(airlight_records.Load(i_21*128+44)), asfloat(airlight_records.Load3(i_21*128+48)), asfloat(airlight_records.Load(i_21*128+60)), asfloat(airlight_records.Load(i_21*128+64)), asfloat(airlight_records.Load(i_21*128+68)), asfloat(airlight_records.Load(i_21*128+72)), asfloat(airlight_records.Load(i_21*128+76)), asfloat(airlight_records.Load(i_21*128+80)), asfloat(airlight_records.Load(i_21*128+84)), asuint(airlight_records.Load(i_21*128+88)), asuint(airlight_records.Load(i_21*128+92)), asuint(airlight_records.Load(i_21*128+96)), asfloat(airlight_records.Load(i_21*128+100)), asuint(airlight_records.Load(i_21*128+104)), asfloat(airlight_records.Load3(i_21*128+112)), asuint(airlight_records.Load(i_21*128+124)));
+    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_22*128+0)), asfloat(airlight_records.Load(i_22*128+12)), asfloat(airlight_records.Load3(i_22*128+16)), asfloat(airlight_records.Load(i_22*128+28)), asfloat(airlight_records.Load3(i_22*128+32)), asfloat(airlight_records.Load(i_22*128+44)), asfloat(airlight_records.Load3(i_22*128+48)), asfloat(airlight_records.Load(i_22*128+60)), asfloat(airlight_records.Load(i_22*128+64)), asfloat(airlight_records.Load(i_22*128+68)), asfloat(airlight_records.Load(i_22*128+72)), asfloat(airlight_records.Load(i_22*128+76)), asfloat(airlight_records.Load(i_22*128+80)), asfloat(airlight_records.Load(i_22*128+84)), asuint(airlight_records.Load(i_22*128+88)), asuint(airlight_records.Load(i_22*128+92)), asuint(airlight_records.Load(i_22*128+96)), asfloat(airlight_records.Load(i_22*128+100)), asuint(airlight_records.Load(i_22*128+104)), asfloat(airlight_records.Load3(i_22*128+112)), asuint(airlight_records.Load(i_22*128+124)));
     const AirlightResult _e10 = airlight_in_scatter(_e9);
     {
         AirlightResult _value2 = _e10;
-        airlight_results.Store(i_21*8+0, asuint(_value2.in_scatter));
-        airlight_results.Store(i_21*8+4, asuint(_value2.status));
+        airlight_results.Store(i_22*8+0, asuint(_value2.in_scatter));
+        airlight_results.Store(i_22*8+4, asuint(_value2.status));
     }
     return;
 }

@@ -153,13 +153,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_6 = (b_1.y / b_1.x);
-        let inv = (1f / (b_1.x + (b_1.y * r_6)));
-        return vec2<f32>(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
+        let r_7 = (b_1.y / b_1.x);
+        let inv = (1f / (b_1.x + (b_1.y * r_7)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
     }
-    let r_7 = (b_1.x / b_1.y);
-    let inv_1 = (1f / ((b_1.x * r_7) + b_1.y));
-    return vec2<f32>((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
+    let r_8 = (b_1.x / b_1.y);
+    let inv_1 = (1f / ((b_1.x * r_8) + b_1.y));
+    return vec2<f32>((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -297,8 +297,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_23 = (x_2 / (2f + x_2));
-    let s2_ = (s_23 * s_23);
+    let s_24 = (x_2 / (2f + x_2));
+    let s2_ = (s_24 * s_24);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -316,7 +316,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_23) * _e35);
+    return ((2f * s_24) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -870,7 +870,53 @@ fn airlight_singular_heights(s_1: AirlightScene, sigma_1: f32) -> vec3<f32> {
     return _e28;
 }
 
-fn airlight_integrand_over(s_2: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, y_1: f32) -> vec2<f32> {
+fn airlight_singular_steps(s_2: AirlightScene) -> vec3<f32> {
+    var degree: f32 = 0f;
+    var order: f32 = 0f;
+    var growth: f32 = 0f;
+
+    if (s_2.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        degree = s_2.light_param_a;
+    }
+    if (s_2.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        degree = 3f;
+    }
+    switch s_2.phase_kind {
+        case 0u: {
+            order = 0f;
+            growth = 0f;
+        }
+        case 1u: {
+            order = 0f;
+            growth = 2f;
+        }
+        case 2u: {
+            order = 1.5f;
+            growth = 0f;
+        }
+        case 3u: {
+            order = 2f;
+            growth = 0f;
+        }
+        case 4u: {
+            order = 1.5f;
+            growth = 0.5f;
+        }
+        case 5u: {
+            order = 1.5f;
+            growth = 0f;
+        }
+        default: {
+        }
+    }
+    let _e29 = order;
+    let phase = pow(1.0909091f, max((_e29 - 1f), 0f));
+    let _e35 = degree;
+    let _e36 = growth;
+    return vec3<f32>(pow(1.0909091f, (_e35 + _e36)), phase, phase);
+}
+
+fn airlight_integrand_over(s_3: AirlightScene, g_3: AirlightCanonical, sigma_2: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
@@ -878,7 +924,7 @@ fn airlight_integrand_over(s_2: AirlightScene, g_3: AirlightCanonical, sigma_2: 
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
     let mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    let c_8 = ((((sigma_2 * g_3.d_el) * om_3) + ((2f * g_3.d_c) * y_1)) * inv_2);
+    let c_9 = ((((sigma_2 * g_3.d_el) * om_3) + ((2f * g_3.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
@@ -887,16 +933,16 @@ fn airlight_integrand_over(s_2: AirlightScene, g_3: AirlightCanonical, sigma_2: 
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_2.light_kind, s_2.light_param_a, s_2.light_param_b, c_8);
+    let _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_9);
     let _e40 = minus;
     let _e41 = plus;
-    let _e42 = airlight_phase(s_2.phase_kind, s_2.phase_param_a, s_2.phase_param_b, s_2.phase_param_c, mu_2, _e40, _e41);
+    let _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
     let f_1 = (_e35 * _e42);
     return vec2<f32>(f_1, inv_2);
 }
 
-fn airlight_integrand(s_3: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, y_2: f32) -> f32 {
-    let _e4 = airlight_integrand_over(s_3, g_4, sigma_3, y_2);
+fn airlight_integrand(s_4: AirlightScene, g_4: AirlightCanonical, sigma_3: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_4, g_4, sigma_3, y_2);
     return _e4.x;
 }
 
@@ -1654,6 +1700,9 @@ fn airlight_tail_estimate(c_2: array<f32, 12>) -> f32 {
 fn airlight_error_factor(c_3: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) -> f32 {
     var local_9: bool;
     var aliasing: f32 = 0f;
+    var c_max: f32 = 0f;
+    var aliasing_1: f32 = 1f;
+    var i_6: u32 = 0u;
 
     if !((m_1[0] > 0f)) {
         return 1f;
@@ -1669,49 +1718,92 @@ fn airlight_error_factor(c_3: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     if _e27 {
         return 1f;
     }
-    let q_1 = max(sqrt((last / before)), select(0f, floor_, (floor_ > 0f)));
-    if !((q_1 < 1f)) {
-        return 1f;
+    let measured = sqrt((last / before));
+    let q_1 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let truncation = max(abs(m_1[11]), abs(m_1[10]));
+    if (q_1 < 1f) {
+        let _e45 = aliasing;
+        let _e49 = aliasing;
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_1) + abs(m_1[0])), true);
+        let _e56 = aliasing;
+        let _e60 = aliasing;
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_1) + abs(m_1[1])), true);
+        let _e67 = aliasing;
+        let _e71 = aliasing;
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_1) + abs(m_1[2])), true);
+        let _e78 = aliasing;
+        let _e82 = aliasing;
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_1) + abs(m_1[3])), true);
+        let _e89 = aliasing;
+        let _e93 = aliasing;
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_1) + abs(m_1[4])), true);
+        let _e100 = aliasing;
+        let _e104 = aliasing;
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_1) + abs(m_1[5])), true);
+        let _e111 = aliasing;
+        let _e115 = aliasing;
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_1) + abs(m_1[6])), true);
+        let _e122 = aliasing;
+        let _e126 = aliasing;
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_1) + abs(m_1[7])), true);
+        let _e133 = aliasing;
+        let _e137 = aliasing;
+        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_1) + abs(m_1[8])), true);
+        let _e144 = aliasing;
+        let _e148 = aliasing;
+        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_1) + abs(m_1[9])), true);
+        let _e155 = aliasing;
+        let _e159 = aliasing;
+        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_1) + abs(m_1[10])), true);
+        let _e166 = aliasing;
+        let _e170 = aliasing;
+        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_1) + abs(m_1[11])), false);
+        let _e177 = aliasing;
+        return min(((_e177 + (q_1 * truncation)) / m_1[0]), 1f);
     }
-    let _e42 = aliasing;
-    let _e46 = aliasing;
-    aliasing = select((_e42 + abs(m_1[0])), ((_e46 * q_1) + abs(m_1[0])), true);
-    let _e53 = aliasing;
-    let _e57 = aliasing;
-    aliasing = select((_e53 + abs(m_1[1])), ((_e57 * q_1) + abs(m_1[1])), true);
-    let _e64 = aliasing;
-    let _e68 = aliasing;
-    aliasing = select((_e64 + abs(m_1[2])), ((_e68 * q_1) + abs(m_1[2])), true);
-    let _e75 = aliasing;
-    let _e79 = aliasing;
-    aliasing = select((_e75 + abs(m_1[3])), ((_e79 * q_1) + abs(m_1[3])), true);
-    let _e86 = aliasing;
-    let _e90 = aliasing;
-    aliasing = select((_e86 + abs(m_1[4])), ((_e90 * q_1) + abs(m_1[4])), true);
-    let _e97 = aliasing;
-    let _e101 = aliasing;
-    aliasing = select((_e97 + abs(m_1[5])), ((_e101 * q_1) + abs(m_1[5])), true);
-    let _e108 = aliasing;
-    let _e112 = aliasing;
-    aliasing = select((_e108 + abs(m_1[6])), ((_e112 * q_1) + abs(m_1[6])), true);
-    let _e119 = aliasing;
-    let _e123 = aliasing;
-    aliasing = select((_e119 + abs(m_1[7])), ((_e123 * q_1) + abs(m_1[7])), true);
-    let _e130 = aliasing;
-    let _e134 = aliasing;
-    aliasing = select((_e130 + abs(m_1[8])), ((_e134 * q_1) + abs(m_1[8])), true);
-    let _e141 = aliasing;
-    let _e145 = aliasing;
-    aliasing = select((_e141 + abs(m_1[9])), ((_e145 * q_1) + abs(m_1[9])), true);
-    let _e152 = aliasing;
-    let _e156 = aliasing;
-    aliasing = select((_e152 + abs(m_1[10])), ((_e156 * q_1) + abs(m_1[10])), true);
-    let _e163 = aliasing;
-    let _e167 = aliasing;
-    aliasing = select((_e163 + abs(m_1[11])), ((_e167 * q_1) + abs(m_1[11])), false);
-    let truncation = (q_1 * max(abs(m_1[11]), abs(m_1[10])));
-    let _e180 = aliasing;
-    return min(((_e180 + truncation) / m_1[0]), 1f);
+    let _e186 = c_max;
+    c_max = max(_e186, abs(c_3[0]));
+    let _e190 = c_max;
+    c_max = max(_e190, abs(c_3[1]));
+    let _e194 = c_max;
+    c_max = max(_e194, abs(c_3[2]));
+    let _e198 = c_max;
+    c_max = max(_e198, abs(c_3[3]));
+    let _e202 = c_max;
+    c_max = max(_e202, abs(c_3[4]));
+    let _e206 = c_max;
+    c_max = max(_e206, abs(c_3[5]));
+    let _e210 = c_max;
+    c_max = max(_e210, abs(c_3[6]));
+    let _e214 = c_max;
+    c_max = max(_e214, abs(c_3[7]));
+    let _e218 = c_max;
+    c_max = max(_e218, abs(c_3[8]));
+    let _e222 = c_max;
+    c_max = max(_e222, abs(c_3[9]));
+    let _e226 = c_max;
+    c_max = max(_e226, abs(c_3[10]));
+    let _e230 = c_max;
+    c_max = max(_e230, abs(c_3[11]));
+    let _e236 = c_max;
+    let power = select(3u, 2u, (_e236 > (1.2f * abs(c_3[0]))));
+    loop {
+        let _e247 = i_6;
+        if (_e247 < power) {
+        } else {
+            break;
+        }
+        {
+            let _e249 = aliasing_1;
+            aliasing_1 = (_e249 * measured);
+        }
+        continuing {
+            let _e252 = i_6;
+            i_6 = (_e252 + 1u);
+        }
+    }
+    let _e254 = aliasing_1;
+    return min((_e254 + ((measured * truncation) / m_1[0])), 1f);
 }
 
 fn airlight_decay_rate(c_4: f32, r_1: f32, t_3: f32) -> f32 {
@@ -1743,283 +1835,281 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_v_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, half_4: AirlightHalf, a_5: f32, b_4: f32, heights: vec3<f32>) -> AirlightPanel {
-    var r_2: f32;
+fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_5: f32, r_2: f32) -> f32 {
+    let _e6 = airlight_decay_rate(c_5, r_2, heights.x);
+    let _e10 = airlight_decay_rate(c_5, r_2, heights.y);
+    let _e14 = airlight_decay_rate(c_5, r_2, heights.z);
+    return max((steps_1.x * _e6), max((steps_1.y * _e10), (steps_1.z * _e14)));
+}
+
+fn airlight_v_panel(s_5: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, half_4: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
+    var r_3: f32;
     var vc: f32;
     var samples: array<f32, 12>;
     var f_max_1: f32 = 0f;
     var over_max: f32 = 0f;
     var g_avg: f32 = 0f;
-    var i_6: u32 = 0u;
+    var i_7: u32 = 0u;
     var sum_4: f32 = 0f;
 
-    let _e7 = airlight_gauss_rule();
-    r_2 = ((b_4 - a_5) * 0.5f);
-    let _e12 = r_2;
-    vc = (a_5 + _e12);
+    let _e8 = airlight_gauss_rule();
+    r_3 = ((b_4 - a_5) * 0.5f);
+    let _e13 = r_3;
+    vc = (a_5 + _e13);
     if half_4.second {
-        r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
-        let _e23 = r_2;
-        vc = ((1f / b_4) + _e23);
+        r_3 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
+        let _e24 = r_3;
+        vc = ((1f / b_4) + _e24);
     }
-    let _e25 = airlight_zero_terms();
-    samples = _e25;
+    let _e26 = airlight_zero_terms();
+    samples = _e26;
     loop {
-        let _e35 = i_6;
-        if (_e35 < AIRLIGHT_TERMS) {
+        let _e36 = i_7;
+        if (_e36 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e38 = vc;
-            let _e39 = r_2;
-            let _e40 = i_6;
-            let _e41 = airlight_node(_e7, _e40);
-            let v_6 = (_e38 + (_e39 * _e41));
-            let _e47 = airlight_integrand_over(s_4, g_6, select(sigma_4, -(sigma_4), half_4.second), v_6);
-            let fy = _e47.x;
-            let over = _e47.y;
-            let _e50 = i_6;
-            samples[_e50] = (fy * over);
-            let _e53 = f_max_1;
-            f_max_1 = max(_e53, abs(fy));
-            let _e56 = over_max;
-            over_max = max(_e56, over);
-            let _e58 = g_avg;
-            let _e59 = i_6;
-            let _e66 = i_6;
-            let _e68 = samples[_e66];
-            g_avg = (_e58 + ((_e7[(_e59 / 2u)].y * 0.5f) * abs(_e68)));
+            let _e39 = vc;
+            let _e40 = r_3;
+            let _e41 = i_7;
+            let _e42 = airlight_node(_e8, _e41);
+            let v_6 = (_e39 + (_e40 * _e42));
+            let _e48 = airlight_integrand_over(s_5, g_6, select(sigma_4, -(sigma_4), half_4.second), v_6);
+            let fy = _e48.x;
+            let over = _e48.y;
+            let _e51 = i_7;
+            samples[_e51] = (fy * over);
+            let _e54 = f_max_1;
+            f_max_1 = max(_e54, abs(fy));
+            let _e57 = over_max;
+            over_max = max(_e57, over);
+            let _e59 = g_avg;
+            let _e60 = i_7;
+            let _e67 = i_7;
+            let _e69 = samples[_e67];
+            g_avg = (_e59 + ((_e8[(_e60 / 2u)].y * 0.5f) * abs(_e69)));
         }
         continuing {
-            let _e73 = i_6;
-            i_6 = (_e73 + 1u);
+            let _e74 = i_7;
+            i_7 = (_e74 + 1u);
         }
     }
-    let _e75 = samples;
-    let _e76 = airlight_legendre(_e75);
-    let _e78 = r_2;
-    let _e80 = airlight_exp_legendre_moments((half_4.big_h * _e78));
-    let _e83 = sum_4;
-    sum_4 = (_e83 + (_e76[0] * _e80[0]));
-    let _e88 = sum_4;
-    sum_4 = (_e88 + (_e76[1] * _e80[1]));
-    let _e93 = sum_4;
-    sum_4 = (_e93 + (_e76[2] * _e80[2]));
-    let _e98 = sum_4;
-    sum_4 = (_e98 + (_e76[3] * _e80[3]));
-    let _e103 = sum_4;
-    sum_4 = (_e103 + (_e76[4] * _e80[4]));
-    let _e108 = sum_4;
-    sum_4 = (_e108 + (_e76[5] * _e80[5]));
-    let _e113 = sum_4;
-    sum_4 = (_e113 + (_e76[6] * _e80[6]));
-    let _e118 = sum_4;
-    sum_4 = (_e118 + (_e76[7] * _e80[7]));
-    let _e123 = sum_4;
-    sum_4 = (_e123 + (_e76[8] * _e80[8]));
-    let _e128 = sum_4;
-    sum_4 = (_e128 + (_e76[9] * _e80[9]));
-    let _e133 = sum_4;
-    sum_4 = (_e133 + (_e76[10] * _e80[10]));
-    let _e138 = sum_4;
-    sum_4 = (_e138 + (_e76[11] * _e80[11]));
-    let _e143 = airlight_factor(half_4, a_5, b_4);
-    let _e144 = r_2;
-    let w = (_e143 * _e144);
-    let mass_4 = (w * _e80[0]);
-    let _e148 = vc;
-    let _e149 = r_2;
-    let _e151 = airlight_decay_rate(_e148, _e149, heights.x);
-    let _e152 = vc;
-    let _e153 = r_2;
-    let _e155 = airlight_decay_rate(_e152, _e153, heights.y);
-    let _e156 = vc;
-    let _e157 = r_2;
-    let _e159 = airlight_decay_rate(_e156, _e157, heights.z);
-    let floor_1 = max(_e151, max(_e155, _e159));
-    let _e162 = airlight_tail_estimate(_e76);
-    let _e164 = airlight_error_factor(_e76, _e80, floor_1);
-    let error_1 = ((mass_4 * _e162) * _e164);
-    let _e166 = sum_4;
-    let _e168 = g_avg;
-    let _e169 = airlight_transform_noise(mass_4, _e168);
-    let _e170 = over_max;
-    let _e172 = f_max_1;
-    let _e173 = airlight_panel_result((w * _e166), error_1, _e169, (mass_4 * _e170), _e172);
-    return _e173;
+    let _e76 = samples;
+    let _e77 = airlight_legendre(_e76);
+    let _e79 = r_3;
+    let _e81 = airlight_exp_legendre_moments((half_4.big_h * _e79));
+    let _e84 = sum_4;
+    sum_4 = (_e84 + (_e77[0] * _e81[0]));
+    let _e89 = sum_4;
+    sum_4 = (_e89 + (_e77[1] * _e81[1]));
+    let _e94 = sum_4;
+    sum_4 = (_e94 + (_e77[2] * _e81[2]));
+    let _e99 = sum_4;
+    sum_4 = (_e99 + (_e77[3] * _e81[3]));
+    let _e104 = sum_4;
+    sum_4 = (_e104 + (_e77[4] * _e81[4]));
+    let _e109 = sum_4;
+    sum_4 = (_e109 + (_e77[5] * _e81[5]));
+    let _e114 = sum_4;
+    sum_4 = (_e114 + (_e77[6] * _e81[6]));
+    let _e119 = sum_4;
+    sum_4 = (_e119 + (_e77[7] * _e81[7]));
+    let _e124 = sum_4;
+    sum_4 = (_e124 + (_e77[8] * _e81[8]));
+    let _e129 = sum_4;
+    sum_4 = (_e129 + (_e77[9] * _e81[9]));
+    let _e134 = sum_4;
+    sum_4 = (_e134 + (_e77[10] * _e81[10]));
+    let _e139 = sum_4;
+    sum_4 = (_e139 + (_e77[11] * _e81[11]));
+    let _e144 = airlight_factor(half_4, a_5, b_4);
+    let _e145 = r_3;
+    let w = (_e144 * _e145);
+    let mass_4 = (w * _e81[0]);
+    let _e149 = vc;
+    let _e150 = r_3;
+    let _e151 = airlight_singular_floor(heights_1, steps_2, _e149, _e150);
+    let _e152 = airlight_tail_estimate(_e77);
+    let _e154 = airlight_error_factor(_e77, _e81, _e151);
+    let error_1 = ((mass_4 * _e152) * _e154);
+    let _e156 = sum_4;
+    let _e158 = g_avg;
+    let _e159 = airlight_transform_noise(mass_4, _e158);
+    let _e160 = over_max;
+    let _e162 = f_max_1;
+    let _e163 = airlight_panel_result((w * _e156), error_1, _e159, (mass_4 * _e160), _e162);
+    return _e163;
 }
 
-fn airlight_y_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, half_5: AirlightHalf, a_6: f32, b_5: f32, heights_1: vec3<f32>) -> AirlightPanel {
+fn airlight_y_panel(s_6: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, half_5: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
     var samples_1: array<f32, 12>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
     var mass_1: f32 = 0f;
     var p_avg: f32 = 0f;
-    var i_7: u32 = 0u;
+    var i_8: u32 = 0u;
     var m_2: array<f32, 12>;
 
-    let _e7 = airlight_gauss_rule();
-    let r_8 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_8);
-    let _e12 = airlight_zero_terms();
-    samples_1 = _e12;
+    let _e8 = airlight_gauss_rule();
+    let r_9 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_9);
+    let _e13 = airlight_zero_terms();
+    samples_1 = _e13;
     loop {
-        let _e24 = i_7;
-        if (_e24 < AIRLIGHT_TERMS) {
+        let _e25 = i_8;
+        if (_e25 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e27 = i_7;
-            let _e28 = airlight_node(_e7, _e27);
-            let y_6 = (yc_1 + (r_8 * _e28));
-            let weight = exp(((-(half_5.big_h) * (r_8 * (1f - _e28))) / (y_6 * b_5)));
-            let _e40 = airlight_integrand(s_5, g_7, sigma_5, y_6);
+            let _e28 = i_8;
+            let _e29 = airlight_node(_e8, _e28);
+            let y_6 = (yc_1 + (r_9 * _e29));
+            let weight = exp(((-(half_5.big_h) * (r_9 * (1f - _e29))) / (y_6 * b_5)));
+            let _e41 = airlight_integrand(s_6, g_7, sigma_5, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
-            let _e46 = i_7;
-            samples_1[_e46] = ((_e40 * over_1) * weight);
-            let _e50 = f_max_2;
-            f_max_2 = max(_e50, abs(_e40));
-            let _e53 = over_max_1;
-            over_max_1 = max(_e53, over_1);
-            let _e55 = mass_1;
-            let _e56 = i_7;
-            mass_1 = (_e55 + (_e7[(_e56 / 2u)].y * weight));
-            let _e63 = p_avg;
-            let _e64 = i_7;
-            let _e71 = i_7;
-            let _e73 = samples_1[_e71];
-            p_avg = (_e63 + ((_e7[(_e64 / 2u)].y * 0.5f) * abs(_e73)));
+            let _e47 = i_8;
+            samples_1[_e47] = ((_e41 * over_1) * weight);
+            let _e51 = f_max_2;
+            f_max_2 = max(_e51, abs(_e41));
+            let _e54 = over_max_1;
+            over_max_1 = max(_e54, over_1);
+            let _e56 = mass_1;
+            let _e57 = i_8;
+            mass_1 = (_e56 + (_e8[(_e57 / 2u)].y * weight));
+            let _e64 = p_avg;
+            let _e65 = i_8;
+            let _e72 = i_8;
+            let _e74 = samples_1[_e72];
+            p_avg = (_e64 + ((_e8[(_e65 / 2u)].y * 0.5f) * abs(_e74)));
         }
         continuing {
-            let _e78 = i_7;
-            i_7 = (_e78 + 1u);
+            let _e79 = i_8;
+            i_8 = (_e79 + 1u);
         }
     }
-    let _e80 = samples_1;
-    let _e81 = airlight_legendre(_e80);
-    let _e82 = airlight_factor(half_5, a_6, b_5);
-    let w_1 = (_e82 * r_8);
-    let _e84 = airlight_zero_terms();
-    m_2 = _e84;
+    let _e81 = samples_1;
+    let _e82 = airlight_legendre(_e81);
+    let _e83 = airlight_factor(half_5, a_6, b_5);
+    let w_1 = (_e83 * r_9);
+    let _e85 = airlight_zero_terms();
+    m_2 = _e85;
     m_2[0] = 2f;
-    let _e89 = airlight_decay_rate(yc_1, r_8, 0f);
-    let _e91 = airlight_decay_rate(yc_1, r_8, heights_1.x);
-    let _e93 = airlight_decay_rate(yc_1, r_8, heights_1.y);
-    let _e95 = airlight_decay_rate(yc_1, r_8, heights_1.z);
-    let floor_2 = max(_e89, max(_e91, max(_e93, _e95)));
-    let _e101 = airlight_tail_estimate(_e81);
-    let _e103 = m_2;
-    let _e104 = airlight_error_factor(_e81, _e103, floor_2);
-    let error_2 = (((w_1 * 2f) * _e101) * _e104);
-    let _e112 = p_avg;
-    let _e113 = airlight_transform_noise((w_1 * 2f), _e112);
-    let _e114 = mass_1;
-    let _e116 = over_max_1;
-    let _e118 = f_max_2;
-    let _e119 = airlight_panel_result(((w_1 * 2f) * _e81[0]), error_2, _e113, ((w_1 * _e114) * _e116), _e118);
-    return _e119;
+    let _e90 = airlight_decay_rate(yc_1, r_9, 0f);
+    let _e91 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9);
+    let floor_1 = max(_e90, _e91);
+    let _e95 = airlight_tail_estimate(_e82);
+    let _e97 = m_2;
+    let _e98 = airlight_error_factor(_e82, _e97, floor_1);
+    let error_2 = (((w_1 * 2f) * _e95) * _e98);
+    let _e106 = p_avg;
+    let _e107 = airlight_transform_noise((w_1 * 2f), _e106);
+    let _e108 = mass_1;
+    let _e110 = over_max_1;
+    let _e112 = f_max_2;
+    let _e113 = airlight_panel_result(((w_1 * 2f) * _e82[0]), error_2, _e107, ((w_1 * _e108) * _e110), _e112);
+    return _e113;
 }
 
-fn airlight_legendre_to_monomial(c_5: array<f32, 12>) -> array<f32, 12> {
+fn airlight_legendre_to_monomial(c_6: array<f32, 12>) -> array<f32, 12> {
     var hat: array<f32, 12>;
 
     let _e1 = airlight_zero_terms();
     hat = _e1;
     let _e4 = hat[0];
-    hat[0] = (_e4 + (c_5[0] * 1f));
+    hat[0] = (_e4 + (c_6[0] * 1f));
     let _e10 = hat[1];
-    hat[1] = (_e10 + (c_5[1] * 1f));
+    hat[1] = (_e10 + (c_6[1] * 1f));
     let _e16 = hat[0];
-    hat[0] = (_e16 + (c_5[2] * -0.5f));
+    hat[0] = (_e16 + (c_6[2] * -0.5f));
     let _e22 = hat[2];
-    hat[2] = (_e22 + (c_5[2] * 1.5f));
+    hat[2] = (_e22 + (c_6[2] * 1.5f));
     let _e28 = hat[1];
-    hat[1] = (_e28 + (c_5[3] * -1.5f));
+    hat[1] = (_e28 + (c_6[3] * -1.5f));
     let _e34 = hat[3];
-    hat[3] = (_e34 + (c_5[3] * 2.5f));
+    hat[3] = (_e34 + (c_6[3] * 2.5f));
     let _e40 = hat[0];
-    hat[0] = (_e40 + (c_5[4] * 0.375f));
+    hat[0] = (_e40 + (c_6[4] * 0.375f));
     let _e46 = hat[2];
-    hat[2] = (_e46 + (c_5[4] * -3.75f));
+    hat[2] = (_e46 + (c_6[4] * -3.75f));
     let _e52 = hat[4];
-    hat[4] = (_e52 + (c_5[4] * 4.375f));
+    hat[4] = (_e52 + (c_6[4] * 4.375f));
     let _e58 = hat[1];
-    hat[1] = (_e58 + (c_5[5] * 1.875f));
+    hat[1] = (_e58 + (c_6[5] * 1.875f));
     let _e64 = hat[3];
-    hat[3] = (_e64 + (c_5[5] * -8.75f));
+    hat[3] = (_e64 + (c_6[5] * -8.75f));
     let _e70 = hat[5];
-    hat[5] = (_e70 + (c_5[5] * 7.875f));
+    hat[5] = (_e70 + (c_6[5] * 7.875f));
     let _e76 = hat[0];
-    hat[0] = (_e76 + (c_5[6] * -0.3125f));
+    hat[0] = (_e76 + (c_6[6] * -0.3125f));
     let _e82 = hat[2];
-    hat[2] = (_e82 + (c_5[6] * 6.5625f));
+    hat[2] = (_e82 + (c_6[6] * 6.5625f));
     let _e88 = hat[4];
-    hat[4] = (_e88 + (c_5[6] * -19.6875f));
+    hat[4] = (_e88 + (c_6[6] * -19.6875f));
     let _e94 = hat[6];
-    hat[6] = (_e94 + (c_5[6] * 14.4375f));
+    hat[6] = (_e94 + (c_6[6] * 14.4375f));
     let _e100 = hat[1];
-    hat[1] = (_e100 + (c_5[7] * -2.1875f));
+    hat[1] = (_e100 + (c_6[7] * -2.1875f));
     let _e106 = hat[3];
-    hat[3] = (_e106 + (c_5[7] * 19.6875f));
+    hat[3] = (_e106 + (c_6[7] * 19.6875f));
     let _e112 = hat[5];
-    hat[5] = (_e112 + (c_5[7] * -43.3125f));
+    hat[5] = (_e112 + (c_6[7] * -43.3125f));
     let _e118 = hat[7];
-    hat[7] = (_e118 + (c_5[7] * 26.8125f));
+    hat[7] = (_e118 + (c_6[7] * 26.8125f));
     let _e124 = hat[0];
-    hat[0] = (_e124 + (c_5[8] * 0.2734375f));
+    hat[0] = (_e124 + (c_6[8] * 0.2734375f));
     let _e130 = hat[2];
-    hat[2] = (_e130 + (c_5[8] * -9.84375f));
+    hat[2] = (_e130 + (c_6[8] * -9.84375f));
     let _e136 = hat[4];
-    hat[4] = (_e136 + (c_5[8] * 54.140625f));
+    hat[4] = (_e136 + (c_6[8] * 54.140625f));
     let _e142 = hat[6];
-    hat[6] = (_e142 + (c_5[8] * -93.84375f));
+    hat[6] = (_e142 + (c_6[8] * -93.84375f));
     let _e148 = hat[8];
-    hat[8] = (_e148 + (c_5[8] * 50.273438f));
+    hat[8] = (_e148 + (c_6[8] * 50.273438f));
     let _e154 = hat[1];
-    hat[1] = (_e154 + (c_5[9] * 2.4609375f));
+    hat[1] = (_e154 + (c_6[9] * 2.4609375f));
     let _e160 = hat[3];
-    hat[3] = (_e160 + (c_5[9] * -36.09375f));
+    hat[3] = (_e160 + (c_6[9] * -36.09375f));
     let _e166 = hat[5];
-    hat[5] = (_e166 + (c_5[9] * 140.76563f));
+    hat[5] = (_e166 + (c_6[9] * 140.76563f));
     let _e172 = hat[7];
-    hat[7] = (_e172 + (c_5[9] * -201.09375f));
+    hat[7] = (_e172 + (c_6[9] * -201.09375f));
     let _e178 = hat[9];
-    hat[9] = (_e178 + (c_5[9] * 94.96094f));
+    hat[9] = (_e178 + (c_6[9] * 94.96094f));
     let _e184 = hat[0];
-    hat[0] = (_e184 + (c_5[10] * -0.24609375f));
+    hat[0] = (_e184 + (c_6[10] * -0.24609375f));
     let _e190 = hat[2];
-    hat[2] = (_e190 + (c_5[10] * 13.535156f));
+    hat[2] = (_e190 + (c_6[10] * 13.535156f));
     let _e196 = hat[4];
-    hat[4] = (_e196 + (c_5[10] * -117.30469f));
+    hat[4] = (_e196 + (c_6[10] * -117.30469f));
     let _e202 = hat[6];
-    hat[6] = (_e202 + (c_5[10] * 351.91406f));
+    hat[6] = (_e202 + (c_6[10] * 351.91406f));
     let _e208 = hat[8];
-    hat[8] = (_e208 + (c_5[10] * -427.32422f));
+    hat[8] = (_e208 + (c_6[10] * -427.32422f));
     let _e214 = hat[10];
-    hat[10] = (_e214 + (c_5[10] * 180.42578f));
+    hat[10] = (_e214 + (c_6[10] * 180.42578f));
     let _e220 = hat[1];
-    hat[1] = (_e220 + (c_5[11] * -2.7070313f));
+    hat[1] = (_e220 + (c_6[11] * -2.7070313f));
     let _e226 = hat[3];
-    hat[3] = (_e226 + (c_5[11] * 58.652344f));
+    hat[3] = (_e226 + (c_6[11] * 58.652344f));
     let _e232 = hat[5];
-    hat[5] = (_e232 + (c_5[11] * -351.91406f));
+    hat[5] = (_e232 + (c_6[11] * -351.91406f));
     let _e238 = hat[7];
-    hat[7] = (_e238 + (c_5[11] * 854.64844f));
+    hat[7] = (_e238 + (c_6[11] * 854.64844f));
     let _e244 = hat[9];
-    hat[9] = (_e244 + (c_5[11] * -902.1289f));
+    hat[9] = (_e244 + (c_6[11] * -902.1289f));
     let _e250 = hat[11];
-    hat[11] = (_e250 + (c_5[11] * 344.44922f));
+    hat[11] = (_e250 + (c_6[11] * 344.44922f));
     let _e255 = hat;
     return _e255;
 }
 
-fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_7: AirlightScene, g_8: AirlightCanonical, sigma_6: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 12>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
-    var i_8: u32 = 0u;
+    var i_9: u32 = 0u;
     var q: array<f32, 12>;
     var s_a: array<f32, 14> = array<f32, 14>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var local_10: bool;
@@ -2034,40 +2124,40 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     var next: f32 = 0f;
 
     let _e6 = airlight_gauss_rule();
-    let r_9 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_9);
+    let r_10 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_10);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
-        let _e19 = i_8;
+        let _e19 = i_9;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = i_8;
+            let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_7 = (yc_2 + (r_9 * _e23));
-            let _e26 = airlight_integrand(s_6, g_8, sigma_6, y_7);
-            let _e27 = i_8;
+            let y_7 = (yc_2 + (r_10 * _e23));
+            let _e26 = airlight_integrand(s_7, g_8, sigma_6, y_7);
+            let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
-            let _e37 = i_8;
-            let _e44 = i_8;
+            let _e37 = i_9;
+            let _e44 = i_9;
             let _e46 = samples_2[_e44];
             g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5f) * abs(_e46)));
         }
         continuing {
-            let _e51 = i_8;
-            i_8 = (_e51 + 1u);
+            let _e51 = i_9;
+            i_9 = (_e51 + 1u);
         }
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_9);
-    let beta = (-(yc_2) / r_9);
+    let alpha = (b_6 / r_10);
+    let beta = (-(yc_2) / r_10);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -2497,7 +2587,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     return _e1182;
 }
 
-fn airlight_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_7: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>) -> AirlightPanel {
+fn airlight_panel(s_8: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_7: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
     var local_11: bool;
     var local_12: bool;
 
@@ -2506,26 +2596,26 @@ fn airlight_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half
     } else {
         local_11 = false;
     }
-    let _e15 = local_11;
-    if _e15 {
-        let _e16 = airlight_tail_panel(s_7, g_9, sigma_7, half_7, a_8, b_7);
-        return _e16;
+    let _e16 = local_11;
+    if _e16 {
+        let _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_7, a_8, b_7);
+        return _e17;
     }
     if half_7.second {
         local_12 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
         local_12 = false;
     }
-    let _e28 = local_12;
-    if _e28 {
-        let _e29 = airlight_y_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_y);
-        return _e29;
+    let _e29 = local_12;
+    if _e29 {
+        let _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_y, steps_4);
+        return _e30;
     }
-    let _e30 = airlight_v_panel(s_7, g_9, sigma_7, half_7, a_8, b_7, heights_v);
-    return _e30;
+    let _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_v, steps_4);
+    return _e31;
 }
 
-fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_9: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2542,61 +2632,62 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
     var errors: f32;
     var mass_3: f32;
     var worst: u32;
-    var i_9: u32;
+    var i_10: u32;
     var local_13: bool;
     var local_14: bool;
     var local_15: bool;
     var total_1: f32 = 0f;
-    var i_10: u32 = 0u;
+    var i_11: u32 = 0u;
 
     if !((hi > lo)) {
         return 0f;
     }
-    let _e10 = airlight_singular_heights(s_8, sigma_8);
+    let _e10 = airlight_singular_heights(s_9, sigma_8);
     let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_8.second);
+    let _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
     loop {
-        let _e60 = step_;
-        if (_e60 < AIRLIGHT_MAX_PANELS) {
+        let _e61 = step_;
+        if (_e61 < AIRLIGHT_MAX_PANELS) {
         } else {
             break;
         }
         {
-            let _e63 = a_9;
-            let _e64 = b_8;
-            let _e65 = airlight_panel(s_8, g_10, sigma_8, half_8, _e63, _e64, _e10, heights_v_1);
-            let _e66 = (*f_max_4);
-            (*f_max_4) = max(_e66, _e65.f_max);
-            let _e69 = slot;
-            let _e71 = a_9;
-            let _e72 = b_8;
-            list[_e69] = vec4<f32>(_e71, _e72, _e65.value, _e65.error);
-            let _e76 = slot;
-            mass_over_1[_e76] = _e65.mass_over;
-            let _e79 = budget;
-            budget = (_e79 - 1u);
-            let _e82 = slot;
-            let _e83 = count;
-            if (_e82 == _e83) {
-                let _e85 = count;
-                count = (_e85 + 1u);
+            let _e64 = a_9;
+            let _e65 = b_8;
+            let _e66 = airlight_panel(s_9, g_10, sigma_8, half_8, _e64, _e65, _e10, heights_v_1, _e16);
+            let _e67 = (*f_max_4);
+            (*f_max_4) = max(_e67, _e66.f_max);
+            let _e70 = slot;
+            let _e72 = a_9;
+            let _e73 = b_8;
+            list[_e70] = vec4<f32>(_e72, _e73, _e66.value, _e66.error);
+            let _e77 = slot;
+            mass_over_1[_e77] = _e66.mass_over;
+            let _e80 = budget;
+            budget = (_e80 - 1u);
+            let _e83 = slot;
+            let _e84 = count;
+            if (_e83 == _e84) {
+                let _e86 = count;
+                count = (_e86 + 1u);
             }
-            let _e88 = pending;
-            if _e88 {
-                let _e89 = next_a;
-                a_9 = _e89;
-                let _e90 = next_b;
-                b_8 = _e90;
-                let _e91 = count;
-                slot = _e91;
+            let _e89 = pending;
+            if _e89 {
+                let _e90 = next_a;
+                a_9 = _e90;
+                let _e91 = next_b;
+                b_8 = _e91;
+                let _e92 = count;
+                slot = _e92;
                 pending = false;
                 continue;
             }
             retire = 0u;
             loop {
-                let _e95 = retire;
-                if (_e95 <= AIRLIGHT_PANEL_LIST) {
+                let _e96 = retire;
+                if (_e96 <= AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
@@ -2605,130 +2696,130 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
                     errors = 0f;
                     mass_3 = 0f;
                     worst = 0u;
-                    i_9 = 0u;
+                    i_10 = 0u;
                     loop {
-                        let _e108 = i_9;
-                        if (_e108 < AIRLIGHT_PANEL_LIST) {
+                        let _e109 = i_10;
+                        if (_e109 < AIRLIGHT_PANEL_LIST) {
                         } else {
                             break;
                         }
                         {
-                            let _e111 = i_9;
-                            let _e112 = count;
-                            if (_e111 >= _e112) {
+                            let _e112 = i_10;
+                            let _e113 = count;
+                            if (_e112 >= _e113) {
                                 break;
                             }
-                            let _e114 = total;
-                            let _e115 = i_9;
-                            let _e118 = list[_e115].z;
-                            total = (_e114 + _e118);
-                            let _e120 = errors;
-                            let _e121 = i_9;
-                            let _e124 = list[_e121].w;
-                            errors = (_e120 + _e124);
-                            let _e126 = mass_3;
-                            let _e127 = i_9;
-                            let _e129 = mass_over_1[_e127];
-                            mass_3 = (_e126 + _e129);
-                            let _e131 = i_9;
-                            let _e134 = list[_e131].w;
-                            let _e135 = worst;
-                            let _e138 = list[_e135].w;
-                            if (_e134 > _e138) {
-                                let _e140 = i_9;
-                                worst = _e140;
+                            let _e115 = total;
+                            let _e116 = i_10;
+                            let _e119 = list[_e116].z;
+                            total = (_e115 + _e119);
+                            let _e121 = errors;
+                            let _e122 = i_10;
+                            let _e125 = list[_e122].w;
+                            errors = (_e121 + _e125);
+                            let _e127 = mass_3;
+                            let _e128 = i_10;
+                            let _e130 = mass_over_1[_e128];
+                            mass_3 = (_e127 + _e130);
+                            let _e132 = i_10;
+                            let _e135 = list[_e132].w;
+                            let _e136 = worst;
+                            let _e139 = list[_e136].w;
+                            if (_e135 > _e139) {
+                                let _e141 = i_10;
+                                worst = _e141;
                             }
                         }
                         continuing {
-                            let _e142 = i_9;
-                            i_9 = (_e142 + 1u);
+                            let _e143 = i_10;
+                            i_10 = (_e143 + 1u);
                         }
                     }
-                    let _e145 = total;
-                    let _e148 = (*f_max_4);
-                    let _e150 = mass_3;
-                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e145), ((AIRLIGHT_PANEL_FLOOR * _e148) * _e150)));
-                    let _e154 = errors;
-                    if !((_e154 <= goal)) {
-                        let _e159 = worst;
-                        let _e162 = list[_e159].w;
-                        local_13 = !((_e162 > 0f));
+                    let _e146 = total;
+                    let _e149 = (*f_max_4);
+                    let _e151 = mass_3;
+                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e146), ((AIRLIGHT_PANEL_FLOOR * _e149) * _e151)));
+                    let _e155 = errors;
+                    if !((_e155 <= goal)) {
+                        let _e160 = worst;
+                        let _e163 = list[_e160].w;
+                        local_13 = !((_e163 > 0f));
                     } else {
                         local_13 = true;
                     }
-                    let _e167 = local_13;
-                    if !(_e167) {
-                        let _e171 = budget;
-                        local_14 = (_e171 < 2u);
+                    let _e168 = local_13;
+                    if !(_e168) {
+                        let _e172 = budget;
+                        local_14 = (_e172 < 2u);
                     } else {
                         local_14 = true;
                     }
-                    let _e175 = local_14;
-                    if !(_e175) {
-                        let _e179 = count;
-                        local_15 = (_e179 == AIRLIGHT_PANEL_LIST);
+                    let _e176 = local_14;
+                    if !(_e176) {
+                        let _e180 = count;
+                        local_15 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
                         local_15 = true;
                     }
-                    let _e183 = local_15;
-                    if _e183 {
-                        let _e184 = total;
-                        return _e184;
+                    let _e184 = local_15;
+                    if _e184 {
+                        let _e185 = total;
+                        return _e185;
                     }
-                    let _e185 = worst;
-                    let wa = list[_e185].x;
-                    let _e189 = worst;
-                    let wb = list[_e189].y;
+                    let _e186 = worst;
+                    let wa = list[_e186].x;
+                    let _e190 = worst;
+                    let wb = list[_e190].y;
                     if !(((wb - wa) > (AIRLIGHT_FLT_EPS * wb))) {
-                        let _e198 = worst;
-                        list[_e198].w = 0f;
+                        let _e199 = worst;
+                        list[_e199].w = 0f;
                         continue;
                     }
                     let mid = (wa + ((wb - wa) * 0.5f));
                     a_9 = wa;
                     b_8 = mid;
-                    let _e206 = worst;
-                    slot = _e206;
+                    let _e207 = worst;
+                    slot = _e207;
                     pending = true;
                     next_a = mid;
                     next_b = wb;
                     break;
                 }
                 continuing {
-                    let _e209 = retire;
-                    retire = (_e209 + 1u);
+                    let _e210 = retire;
+                    retire = (_e210 + 1u);
                 }
             }
         }
         continuing {
-            let _e212 = step_;
-            step_ = (_e212 + 1u);
+            let _e213 = step_;
+            step_ = (_e213 + 1u);
         }
     }
     loop {
-        let _e218 = i_10;
-        if (_e218 < AIRLIGHT_PANEL_LIST) {
+        let _e219 = i_11;
+        if (_e219 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e221 = i_10;
-            let _e222 = count;
-            if (_e221 >= _e222) {
+            let _e222 = i_11;
+            let _e223 = count;
+            if (_e222 >= _e223) {
                 break;
             }
-            let _e224 = total_1;
-            let _e225 = i_10;
-            let _e228 = list[_e225].z;
-            total_1 = (_e224 + _e228);
+            let _e225 = total_1;
+            let _e226 = i_11;
+            let _e229 = list[_e226].z;
+            total_1 = (_e225 + _e229);
         }
         continuing {
-            let _e231 = i_10;
-            i_10 = (_e231 + 1u);
+            let _e232 = i_11;
+            i_11 = (_e232 + 1u);
         }
     }
-    let _e233 = total_1;
-    return _e233;
+    let _e234 = total_1;
+    return _e234;
 }
 
 fn airlight_bounded(a_10: f32) -> f32 {
@@ -2758,8 +2849,8 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     }
     let a_22 = (a0_ / scale_1);
     let b_16 = (b0_ / scale_1);
-    let c_9 = (c0_ / scale_1);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_9));
+    let c_10 = (c0_ / scale_1);
+    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -2769,7 +2860,7 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     let _e47 = sb;
     let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
-        r1_ = (c_9 / q_2);
+        r1_ = (c_10 / q_2);
     }
     if (a_22 != 0f) {
         r2_2 = (q_2 / a_22);
@@ -2867,31 +2958,31 @@ fn airlight_dark(g_12: AirlightCanonical, sigma_11: f32, half_9: AirlightHalf, b
     return true;
 }
 
-fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_10: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
-    var i_11: u32 = 0u;
-    var local_23: bool;
     var i_12: u32 = 0u;
+    var local_23: bool;
+    var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
-    var i_13: u32 = 0u;
+    var i_14: u32 = 0u;
     var hi_2: f32;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_9, g_13, sigma_12, (half_10.y_lo + (half_10.dy * 0.5f)));
+        let _e11 = airlight_integrand(s_10, g_13, sigma_12, (half_10.y_lo + (half_10.dy * 0.5f)));
         let _e12 = airlight_moment_zero(half_10);
         return (_e11 * _e12);
     }
-    if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
-        k_in = s_9.light_param_a;
-        k_out = s_9.light_param_b;
+    if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        k_in = s_10.light_param_a;
+        k_out = s_10.light_param_b;
         let _e29 = k_in;
         let _e30 = k_out;
         let width_1 = (_e29 - _e30);
@@ -2909,16 +3000,16 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
         let _e47 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e46);
         cuts = array<f32, 4>(_e43.x, _e43.y, _e47.x, _e47.y);
         loop {
-            let _e55 = i_11;
+            let _e55 = i_12;
             if (_e55 < 4u) {
             } else {
                 break;
             }
             {
-                let _e58 = i_11;
+                let _e58 = i_12;
                 let _e60 = cuts[_e58];
                 if (_e60 > half_10.y_lo) {
-                    let _e65 = i_11;
+                    let _e65 = i_12;
                     let _e67 = cuts[_e65];
                     local_23 = (_e67 < half_10.y_hi);
                 } else {
@@ -2926,17 +3017,17 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
                 }
                 let _e71 = local_23;
                 if !(_e71) {
-                    let _e73 = i_11;
+                    let _e73 = i_12;
                     cuts[_e73] = 2f;
                 }
             }
             continuing {
-                let _e77 = i_11;
-                i_11 = (_e77 + 1u);
+                let _e77 = i_12;
+                i_12 = (_e77 + 1u);
             }
         }
         loop {
-            let _e81 = i_12;
+            let _e81 = i_13;
             if (_e81 < 3u) {
             } else {
                 break;
@@ -2945,7 +3036,7 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
                 j_2 = 0u;
                 loop {
                     let _e86 = j_2;
-                    let _e88 = i_12;
+                    let _e88 = i_13;
                     if (_e86 < (3u - _e88)) {
                     } else {
                         break;
@@ -2973,23 +3064,23 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
                 }
             }
             continuing {
-                let _e118 = i_12;
-                i_12 = (_e118 + 1u);
+                let _e118 = i_13;
+                i_13 = (_e118 + 1u);
             }
         }
     }
     lo_2 = half_10.y_lo;
     loop {
-        let _e126 = i_13;
+        let _e126 = i_14;
         if (_e126 < 5u) {
         } else {
             break;
         }
         {
             hi_2 = half_10.y_hi;
-            let _e131 = i_13;
+            let _e131 = i_14;
             if (_e131 < 4u) {
-                let _e136 = i_13;
+                let _e136 = i_14;
                 let _e138 = cuts[_e136];
                 local_24 = (_e138 < 2f);
             } else {
@@ -2997,14 +3088,14 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
             }
             let _e142 = local_24;
             if _e142 {
-                let _e143 = i_13;
+                let _e143 = i_14;
                 let _e145 = cuts[_e143];
                 hi_2 = _e145;
             }
             let _e146 = hi_2;
             let _e147 = lo_2;
             if (_e146 > _e147) {
-                if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
+                if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
                     let _e154 = dark_below;
                     let _e155 = lo_2;
                     let _e156 = hi_2;
@@ -3018,15 +3109,15 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
                     let _e161 = total_2;
                     let _e162 = lo_2;
                     let _e163 = hi_2;
-                    let _e164 = airlight_integrate_piece(s_9, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
+                    let _e164 = airlight_integrate_piece(s_10, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
                     total_2 = (_e161 + _e164);
                 }
                 let _e166 = hi_2;
                 lo_2 = _e166;
             }
-            let _e167 = i_13;
+            let _e167 = i_14;
             if (_e167 < 4u) {
-                let _e172 = i_13;
+                let _e172 = i_14;
                 let _e174 = cuts[_e172];
                 local_26 = (_e174 >= 2f);
             } else {
@@ -3038,8 +3129,8 @@ fn airlight_half(s_9: AirlightScene, g_13: AirlightCanonical, sigma_12: f32, hal
             }
         }
         continuing {
-            let _e180 = i_13;
-            i_13 = (_e180 + 1u);
+            let _e180 = i_14;
+            i_14 = (_e180 + 1u);
         }
     }
     let _e182 = total_2;
@@ -3058,7 +3149,7 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_7: f32, j_3: f32)
     return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_2)) - x_7) + log(abs(j_3)))));
 }
 
-fn airlight_on_line(s_10: AirlightScene, g_14: AirlightCanonical) -> f32 {
+fn airlight_on_line(s_11: AirlightScene, g_14: AirlightCanonical) -> f32 {
     var local_27: bool;
     var span: f32;
     var e2_: array<f32, 14>;
@@ -3071,38 +3162,38 @@ fn airlight_on_line(s_10: AirlightScene, g_14: AirlightCanonical) -> f32 {
     }
     let _e10 = local_27;
     if _e10 {
-        let _e16 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, -(g_14.d_el));
-        let _e22 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, 1f);
+        let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_14.d_el));
+        let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
         let f_2 = (_e16 * _e22);
         let r0_ = (g_14.x_h - g_14.t_lo);
         let r1_1 = (g_14.x_h - g_14.t_hi);
-        let _e41 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * r0_), (f_2 * (((g_14.t_hi - g_14.t_lo) / r0_) / r1_1)));
+        let _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * r0_), (f_2 * (((g_14.t_hi - g_14.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, g_14.d_el);
-    let _e52 = airlight_phase_mu(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -1f);
+    let _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_14.d_el);
+    let _e52 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -1f);
     let f_3 = (_e46 * _e52);
     let s0_ = (g_14.t_lo - g_14.x_h);
     let s1_ = (g_14.t_hi - g_14.x_h);
-    if (s_10.sigma_t == 0f) {
+    if (s_11.sigma_t == 0f) {
         span = (1f / s0_);
         if !(g_14.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, 0f, (f_3 * _e75));
+        let _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, 0f, (f_3 * _e75));
         return _e77;
     }
-    let two_st = (s_10.sigma_t + s_10.sigma_t);
+    let two_st = (s_11.sigma_t + s_11.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, (s_10.sigma_t * s0_), ((f_3 * _e90) / s0_));
+    let _e93 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * s0_), ((f_3 * _e90) / s0_));
     if !(g_14.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_10.sigma_s, s_10.intensity, 2f, ((s_10.sigma_t * (s1_ - s0_)) + (s_10.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, ((s_11.sigma_t * (s1_ - s0_)) + (s_11.sigma_t * s1_)), ((f_3 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -3124,7 +3215,7 @@ fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
     return select(big_h, 0f, _e9);
 }
 
-fn airlight_whole_line(s_11: AirlightScene, g_15: AirlightCanonical, big_h_1: f32) -> f32 {
+fn airlight_whole_line(s_12: AirlightScene, g_15: AirlightCanonical, big_h_1: f32) -> f32 {
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
@@ -3170,31 +3261,31 @@ fn airlight_whole_line(s_11: AirlightScene, g_15: AirlightCanonical, big_h_1: f3
     let _e50 = dv_2;
     let _e51 = infinite_1;
     let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_11, g_15, -1f, _e9);
+    let _e54 = airlight_integrand(s_12, g_15, -1f, _e9);
     let _e55 = airlight_moment_zero(half_13);
     let j_5 = (_e54 * _e55);
     let _e59 = airlight_is_finite(_e8);
     if _e59 {
         x_8 = (big_h_1 * _e8);
     } else {
-        if (s_11.sigma_t > 0f) {
-            x_8 = (s_11.sigma_t * abs((g_15.x_h - g_15.t_lo)));
+        if (s_12.sigma_t > 0f) {
+            x_8 = (s_12.sigma_t * abs((g_15.x_h - g_15.t_lo)));
         }
     }
     let _e72 = x_8;
-    let _e73 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e72, j_5);
+    let _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, _e72, j_5);
     return _e73;
 }
 
 fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_2 = (v_s + inv_h);
-    let r_10 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
+    let r_11 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_11) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
-fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -> AirlightResult {
+fn airlight_in_scatter_canonical(s_13: AirlightScene, g_16: AirlightCanonical) -> AirlightResult {
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
@@ -3239,7 +3330,7 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
     }
     let _e10 = local_30;
     if !(!(_e10)) {
-        local_31 = ((s_12.sigma_s * s_12.intensity) == 0f);
+        local_31 = ((s_13.sigma_s * s_13.intensity) == 0f);
     } else {
         local_31 = true;
     }
@@ -3276,16 +3367,16 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
     }
     let _e55 = local_34;
     if _e55 {
-        let _e56 = airlight_on_line(s_12, g_16);
+        let _e56 = airlight_on_line(s_13, g_16);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
     if (h_4 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_12.sigma_t * h_4);
-    if !((s_12.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_12.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = (s_12.light_param_a == 0f);
+    let big_h_5 = (s_13.sigma_t * h_4);
+    if !((s_13.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_36 = (s_13.light_param_a == 0f);
         } else {
             local_36 = false;
         }
@@ -3296,15 +3387,15 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
     }
     let _e85 = local_35;
     if _e85 {
-        if !((s_12.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_12.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_39 = (s_12.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if !((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_39 = (s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_39 = true;
             }
             let _e104 = local_39;
             if _e104 {
-                local_40 = (s_12.phase_param_a == 0f);
+                local_40 = (s_13.phase_param_a == 0f);
             } else {
                 local_40 = false;
             }
@@ -3338,7 +3429,7 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
     }
     let _e131 = local_42;
     if _e131 {
-        let _e132 = airlight_whole_line(s_12, g_16, big_h_5);
+        let _e132 = airlight_whole_line(s_13, g_16, big_h_5);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -3381,9 +3472,9 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
             }
         }
         let _e199 = half_11;
-        let _e200 = airlight_half(s_12, g_16, -1f, _e199, isotropic_1, (&f_max_6));
+        let _e200 = airlight_half(s_13, g_16, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (big_h_5 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_16.t_hi_infinite) {
@@ -3475,9 +3566,9 @@ fn airlight_in_scatter_canonical(s_12: AirlightScene, g_16: AirlightCanonical) -
             }
         }
         let _e313 = half_12;
-        let _e314 = airlight_half(s_12, g_16, 1f, _e313, isotropic_1, (&f_max_6));
+        let _e314 = airlight_half(s_13, g_16, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, ((s_12.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, ((s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3534,7 +3625,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_1 / vec3(length(u_1)));
 }
 
-fn airlight_valid(s_13: AirlightScene) -> bool {
+fn airlight_valid(s_14: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
@@ -3570,96 +3661,96 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     var local_87: bool;
     var local_88: bool;
 
-    let _e2 = airlight_vec_finite(s_13.origin);
+    let _e2 = airlight_vec_finite(s_14.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_13.dir);
+        let _e6 = airlight_vec_finite(s_14.dir);
         local_56 = _e6;
     } else {
         local_56 = false;
     }
     let _e8 = local_56;
     if _e8 {
-        let _e12 = airlight_normalisable(s_13.dir);
+        let _e12 = airlight_normalisable(s_14.dir);
         local_57 = _e12;
     } else {
         local_57 = false;
     }
     let _e14 = local_57;
     if _e14 {
-        let _e18 = airlight_is_finite(s_13.t_min);
+        let _e18 = airlight_is_finite(s_14.t_min);
         local_58 = _e18;
     } else {
         local_58 = false;
     }
     let _e20 = local_58;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_13.light_position);
+        let _e24 = airlight_vec_finite(s_14.light_position);
         local_59 = _e24;
     } else {
         local_59 = false;
     }
     let _e26 = local_59;
     if _e26 {
-        let _e30 = airlight_is_finite(s_13.intensity);
+        let _e30 = airlight_is_finite(s_14.intensity);
         local_60 = _e30;
     } else {
         local_60 = false;
     }
     let _e32 = local_60;
     if _e32 {
-        local_61 = (s_13.intensity >= 0f);
+        local_61 = (s_14.intensity >= 0f);
     } else {
         local_61 = false;
     }
     let _e39 = local_61;
     if _e39 {
-        let _e43 = airlight_is_finite(s_13.sigma_s);
+        let _e43 = airlight_is_finite(s_14.sigma_s);
         local_62 = _e43;
     } else {
         local_62 = false;
     }
     let _e45 = local_62;
     if _e45 {
-        local_63 = (s_13.sigma_s >= 0f);
+        local_63 = (s_14.sigma_s >= 0f);
     } else {
         local_63 = false;
     }
     let _e52 = local_63;
     if _e52 {
-        let _e56 = airlight_is_finite(s_13.sigma_t);
+        let _e56 = airlight_is_finite(s_14.sigma_t);
         local_64 = _e56;
     } else {
         local_64 = false;
     }
     let _e58 = local_64;
     if _e58 {
-        local_65 = (s_13.sigma_t >= 0f);
+        local_65 = (s_14.sigma_t >= 0f);
     } else {
         local_65 = false;
     }
     let _e65 = local_65;
     ok = _e65;
-    if ((s_13.flags & 1u) == 0u) {
+    if ((s_14.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_13.t_max);
+            let _e76 = airlight_is_finite(s_14.t_max);
             local_66 = _e76;
         } else {
             local_66 = false;
         }
         let _e78 = local_66;
         if _e78 {
-            local_67 = (s_13.t_min <= s_13.t_max);
+            local_67 = (s_14.t_min <= s_14.t_max);
         } else {
             local_67 = false;
         }
         let _e85 = local_67;
         ok = _e85;
     }
-    if (s_13.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_13.light_end);
+            let _e93 = airlight_vec_finite(s_14.light_end);
             local_68 = _e93;
         } else {
             local_68 = false;
@@ -3667,39 +3758,39 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e95 = local_68;
         ok = _e95;
     } else {
-        if (s_13.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_14.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_13.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_14.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_is_finite(s_13.brdf_albedo);
+            let _e107 = airlight_is_finite(s_14.brdf_albedo);
             local_69 = _e107;
         } else {
             local_69 = false;
         }
         let _e109 = local_69;
         if _e109 {
-            local_70 = (s_13.brdf_albedo >= 0f);
+            local_70 = (s_14.brdf_albedo >= 0f);
         } else {
             local_70 = false;
         }
         let _e116 = local_70;
         if _e116 {
-            local_71 = (s_13.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_71 = (s_14.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_71 = false;
         }
         let _e123 = local_71;
         if _e123 {
-            local_72 = (s_13.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_72 = (s_14.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_72 = false;
         }
         let _e130 = local_72;
         if _e130 {
-            let _e136 = airlight_safe_length((s_13.light_position - s_13.origin));
+            let _e136 = airlight_safe_length((s_14.light_position - s_14.origin));
             let _e137 = airlight_is_finite(_e136);
             local_73 = _e137;
         } else {
@@ -3708,89 +3799,89 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
         let _e139 = local_73;
         ok = _e139;
     } else {
-        if (s_13.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_14.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e147 = ok;
         if _e147 {
-            let _e151 = airlight_vec_finite(s_13.light_axis);
+            let _e151 = airlight_vec_finite(s_14.light_axis);
             local_74 = _e151;
         } else {
             local_74 = false;
         }
         let _e153 = local_74;
         if _e153 {
-            let _e157 = airlight_normalisable(s_13.light_axis);
+            let _e157 = airlight_normalisable(s_14.light_axis);
             local_75 = _e157;
         } else {
             local_75 = false;
         }
         let _e159 = local_75;
         if _e159 {
-            local_76 = (s_13.light_param_a >= 0f);
+            local_76 = (s_14.light_param_a >= 0f);
         } else {
             local_76 = false;
         }
         let _e166 = local_76;
         if _e166 {
-            local_77 = (s_13.light_param_a <= 1024f);
+            local_77 = (s_14.light_param_a <= 1024f);
         } else {
             local_77 = false;
         }
         let _e173 = local_77;
         if _e173 {
-            local_78 = (fract((s_13.light_param_a * 0.5f)) == 0f);
+            local_78 = (fract((s_14.light_param_a * 0.5f)) == 0f);
         } else {
             local_78 = false;
         }
         let _e183 = local_78;
         ok = _e183;
     } else {
-        if (s_13.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_14.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
-                let _e191 = airlight_vec_finite(s_13.light_axis);
+                let _e191 = airlight_vec_finite(s_14.light_axis);
                 local_79 = _e191;
             } else {
                 local_79 = false;
             }
             let _e193 = local_79;
             if _e193 {
-                let _e197 = airlight_normalisable(s_13.light_axis);
+                let _e197 = airlight_normalisable(s_14.light_axis);
                 local_80 = _e197;
             } else {
                 local_80 = false;
             }
             let _e199 = local_80;
             if _e199 {
-                local_81 = (s_13.light_param_b < s_13.light_param_a);
+                local_81 = (s_14.light_param_b < s_14.light_param_a);
             } else {
                 local_81 = false;
             }
             let _e206 = local_81;
             if _e206 {
-                local_82 = (s_13.light_param_b >= -1f);
+                local_82 = (s_14.light_param_b >= -1f);
             } else {
                 local_82 = false;
             }
             let _e213 = local_82;
             if _e213 {
-                local_83 = (s_13.light_param_a <= 1f);
+                local_83 = (s_14.light_param_a <= 1f);
             } else {
                 local_83 = false;
             }
             let _e220 = local_83;
             ok = _e220;
         } else {
-            if (s_13.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_13.phase_param_a) < 1f);
-    switch s_13.phase_kind {
+    let g_ok = (abs(s_14.phase_param_a) < 1f);
+    switch s_14.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -3812,19 +3903,19 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
             }
             let _e239 = local_85;
             if _e239 {
-                local_86 = (abs(s_13.phase_param_b) < 1f);
+                local_86 = (abs(s_14.phase_param_b) < 1f);
             } else {
                 local_86 = false;
             }
             let _e247 = local_86;
             if _e247 {
-                local_87 = (s_13.phase_param_c >= 0f);
+                local_87 = (s_14.phase_param_c >= 0f);
             } else {
                 local_87 = false;
             }
             let _e254 = local_87;
             if _e254 {
-                local_88 = (s_13.phase_param_c <= 1f);
+                local_88 = (s_14.phase_param_c <= 1f);
             } else {
                 local_88 = false;
             }
@@ -3839,16 +3930,16 @@ fn airlight_valid(s_13: AirlightScene) -> bool {
     return _e263;
 }
 
-fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_15: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_14.dir);
-    if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_14.light_axis);
+    let _e2 = airlight_normalize(s_15.dir);
+    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_15.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_14.light_position - s_14.origin);
+    let to_light = (s_15.light_position - s_15.origin);
     let x_h_1 = dot(to_light, _e2);
     let perp = ((x_h_1 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -3856,10 +3947,10 @@ fn airlight_canonical(s_14: AirlightScene) -> AirlightCanonical {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_14.flags & 1u) != 0u);
+    let infinite_3 = ((s_15.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_14.t_min, select(s_14.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, select(s_15.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_9: f32, key: u32) -> f32 {
@@ -3890,9 +3981,9 @@ fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
-fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
+fn airlight_diff_of_products(a_14: f32, b_11: f32, c_7: f32, d_1: f32, key_3: u32) -> f32 {
     let _e5 = airlight_two_product(a_14, b_11, key_3);
-    let _e6 = airlight_two_product(c_6, d_1, key_3);
+    let _e6 = airlight_two_product(c_7, d_1, key_3);
     let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -3918,19 +4009,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_16: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_91: bool;
     var out_2: AirlightCanonical;
     var local_92: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_15.flags > 1u));
-    let _e11 = airlight_two_sum(s_15.light_position.x, -(s_15.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_15.light_position.y, -(s_15.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_15.light_position.z, -(s_15.origin.z), key_4);
+    let key_4 = u32((s_16.flags > 1u));
+    let _e11 = airlight_two_sum(s_16.light_position.x, -(s_16.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_16.light_position.y, -(s_16.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_16.light_position.z, -(s_16.origin.z), key_4);
     let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_15.dir;
+    let dir = s_16.dir;
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
@@ -3970,8 +4061,8 @@ fn airlight_refined(s_15: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_15.light_axis);
+    if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_16.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir);
@@ -3988,8 +4079,8 @@ fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
     return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
 }
 
-fn airlight_list_get(l: AirlightPanelList, i_14: u32) -> vec4<f32> {
-    switch i_14 {
+fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
+    switch i_15 {
         case 0u: {
             return l.panel_a;
         }
@@ -4011,8 +4102,8 @@ fn airlight_list_get(l: AirlightPanelList, i_14: u32) -> vec4<f32> {
     }
 }
 
-fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_15: u32, v_5: vec4<f32>) {
-    switch i_15 {
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
+    switch i_16 {
         case 0u: {
             (*l_1).panel_a = v_5;
             return;
@@ -4044,106 +4135,106 @@ fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_15: u32, v_5: vec4
 }
 
 fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan {
-    var r_3: AirlightListScan = AirlightListScan(0f, 0f, 0u);
+    var r_4: AirlightListScan = AirlightListScan(0f, 0f, 0u);
     var worst_error: f32 = -1f;
 
     if (count_1 > 0u) {
-        let _e12 = r_3.total;
-        r_3.total = (_e12 + l_2.panel_a.z);
-        let _e17 = r_3.errors;
-        r_3.errors = (_e17 + l_2.panel_a.w);
+        let _e12 = r_4.total;
+        r_4.total = (_e12 + l_2.panel_a.z);
+        let _e17 = r_4.errors;
+        r_4.errors = (_e17 + l_2.panel_a.w);
         let _e23 = worst_error;
         if (l_2.panel_a.w > _e23) {
-            r_3.worst = 0u;
+            r_4.worst = 0u;
             worst_error = l_2.panel_a.w;
         }
     }
     if (count_1 > 1u) {
-        let _e32 = r_3.total;
-        r_3.total = (_e32 + l_2.panel_b.z);
-        let _e37 = r_3.errors;
-        r_3.errors = (_e37 + l_2.panel_b.w);
+        let _e32 = r_4.total;
+        r_4.total = (_e32 + l_2.panel_b.z);
+        let _e37 = r_4.errors;
+        r_4.errors = (_e37 + l_2.panel_b.w);
         let _e43 = worst_error;
         if (l_2.panel_b.w > _e43) {
-            r_3.worst = 1u;
+            r_4.worst = 1u;
             worst_error = l_2.panel_b.w;
         }
     }
     if (count_1 > 2u) {
-        let _e52 = r_3.total;
-        r_3.total = (_e52 + l_2.panel_c.z);
-        let _e57 = r_3.errors;
-        r_3.errors = (_e57 + l_2.panel_c.w);
+        let _e52 = r_4.total;
+        r_4.total = (_e52 + l_2.panel_c.z);
+        let _e57 = r_4.errors;
+        r_4.errors = (_e57 + l_2.panel_c.w);
         let _e63 = worst_error;
         if (l_2.panel_c.w > _e63) {
-            r_3.worst = 2u;
+            r_4.worst = 2u;
             worst_error = l_2.panel_c.w;
         }
     }
     if (count_1 > 3u) {
-        let _e72 = r_3.total;
-        r_3.total = (_e72 + l_2.panel_d.z);
-        let _e77 = r_3.errors;
-        r_3.errors = (_e77 + l_2.panel_d.w);
+        let _e72 = r_4.total;
+        r_4.total = (_e72 + l_2.panel_d.z);
+        let _e77 = r_4.errors;
+        r_4.errors = (_e77 + l_2.panel_d.w);
         let _e83 = worst_error;
         if (l_2.panel_d.w > _e83) {
-            r_3.worst = 3u;
+            r_4.worst = 3u;
             worst_error = l_2.panel_d.w;
         }
     }
     if (count_1 > 4u) {
-        let _e92 = r_3.total;
-        r_3.total = (_e92 + l_2.panel_e.z);
-        let _e97 = r_3.errors;
-        r_3.errors = (_e97 + l_2.panel_e.w);
+        let _e92 = r_4.total;
+        r_4.total = (_e92 + l_2.panel_e.z);
+        let _e97 = r_4.errors;
+        r_4.errors = (_e97 + l_2.panel_e.w);
         let _e103 = worst_error;
         if (l_2.panel_e.w > _e103) {
-            r_3.worst = 4u;
+            r_4.worst = 4u;
             worst_error = l_2.panel_e.w;
         }
     }
     if (count_1 > 5u) {
-        let _e112 = r_3.total;
-        r_3.total = (_e112 + l_2.panel_f.z);
-        let _e117 = r_3.errors;
-        r_3.errors = (_e117 + l_2.panel_f.w);
+        let _e112 = r_4.total;
+        r_4.total = (_e112 + l_2.panel_f.z);
+        let _e117 = r_4.errors;
+        r_4.errors = (_e117 + l_2.panel_f.w);
         let _e123 = worst_error;
         if (l_2.panel_f.w > _e123) {
-            r_3.worst = 5u;
+            r_4.worst = 5u;
             worst_error = l_2.panel_f.w;
         }
     }
-    let _e129 = r_3;
+    let _e129 = r_4;
     return _e129;
 }
 
 fn airlight_asinh(x_11: f32) -> f32 {
-    var r_4: f32;
+    var r_5: f32;
 
     let a_24 = abs(x_11);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
+    r_5 = (AIRLIGHT_LN_2_ + log(a_24));
     if (a_24 <= 4096f) {
         let _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1f + sqrt((1f + (a_24 * a_24)))))));
-        r_4 = _e17;
+        r_5 = _e17;
     }
-    let _e18 = r_4;
-    let _e19 = r_4;
+    let _e18 = r_5;
+    let _e19 = r_5;
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
-fn airlight_to_w(g_17: AirlightOuter, s_16: f32) -> f32 {
+fn airlight_to_w(g_17: AirlightOuter, s_17: f32) -> f32 {
     if (g_17.scale > 0f) {
-        let _e9 = airlight_asinh(((s_16 - g_17.s_star) / g_17.scale));
+        let _e9 = airlight_asinh(((s_17 - g_17.s_star) / g_17.scale));
         return _e9;
     }
-    return s_16;
+    return s_17;
 }
 
 fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
-    let r_11 = (x_12 - 1.5707964f);
-    let z_10 = (r_11 * r_11);
+    let r_12 = (x_12 - 1.5707964f);
+    let z_10 = (r_12 * r_12);
     let cos_r = (1f - ((z_10 / 2f) * (1f - ((z_10 / 12f) * (1f - ((z_10 / 30f) * (1f - ((z_10 / 56f) * (1f - ((z_10 / 90f) * (1f - ((z_10 / 132f) * (1f - (z_10 / 182f))))))))))))));
-    let sin_r = (r_11 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
@@ -4153,20 +4244,20 @@ fn airlight_acos(x_13: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
-fn airlight_angle(c_7: f32, s_17: f32) -> f32 {
-    if (s_17 <= c_7) {
-        let _e4 = airlight_atan((s_17 / c_7));
+fn airlight_angle(c_8: f32, s_18: f32) -> f32 {
+    if (s_18 <= c_8) {
+        let _e4 = airlight_atan((s_18 / c_8));
         return _e4;
     }
-    if (s_17 <= -(c_7)) {
-        let _e10 = airlight_atan((s_17 / -(c_7)));
+    if (s_18 <= -(c_8)) {
+        let _e10 = airlight_atan((s_18 / -(c_8)));
         return (AIRLIGHT_PI - _e10);
     }
-    if (c_7 >= 0f) {
-        let _e16 = airlight_atan((c_7 / s_17));
+    if (c_8 >= 0f) {
+        let _e16 = airlight_atan((c_8 / s_18));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_7) / s_17));
+    let _e21 = airlight_atan((-(c_8) / s_18));
     return (1.5707964f + _e21);
 }
 
@@ -4180,26 +4271,26 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_18: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_18.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+fn airlight_outer_point(s_19: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_19.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
 }
 
-fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
+fn airlight_surface(s_20: AirlightScene) -> AirlightOuter {
     var g_18: AirlightOuter;
     var local_93: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_5: u32 = 0u;
-    var i_16: u32 = 0u;
-    var local_94: bool;
     var i_17: u32 = 0u;
+    var local_94: bool;
+    var i_18: u32 = 0u;
 
-    let _e2 = airlight_outer_point(s_19, AIRLIGHT_SURFACE_PANELS);
+    let _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_18 = _e2;
-    let to_light_1 = (s_19.light_position - s_19.origin);
+    let to_light_1 = (s_20.light_position - s_20.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_19.intensity == 0f)) {
-        local_93 = (s_19.sigma_s == 0f);
+    if !((s_20.intensity == 0f)) {
+        local_93 = (s_20.sigma_s == 0f);
     } else {
         local_93 = true;
     }
@@ -4214,13 +4305,13 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
         let _e27 = g_18;
         return _e27;
     }
-    if (s_19.brdf_albedo == 0f) {
+    if (s_20.brdf_albedo == 0f) {
         g_18.outcome = 1u;
         let _e33 = g_18;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_19.dir);
+    let _e37 = airlight_normalize(s_20.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -4241,24 +4332,24 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     let _e79 = cuts_1[1];
     let _e81 = cuts_1[0];
     if (_e79 < _e81) {
-        let c_10 = cuts_1[0];
+        let c_11 = cuts_1[0];
         let _e87 = cuts_1[1];
         cuts_1[0] = _e87;
-        cuts_1[1] = c_10;
+        cuts_1[1] = c_11;
     }
     loop {
-        let _e93 = i_16;
+        let _e93 = i_17;
         if (_e93 < 2u) {
         } else {
             break;
         }
         {
-            let _e96 = i_16;
+            let _e96 = i_17;
             let _e98 = cuts_1[_e96];
             let _e100 = k_5;
             let _e102 = g_18.gamma[_e100];
             if (_e98 > _e102) {
-                let _e106 = i_16;
+                let _e106 = i_17;
                 let _e108 = cuts_1[_e106];
                 local_94 = (_e108 < AIRLIGHT_PI);
             } else {
@@ -4269,14 +4360,14 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
                 let _e113 = k_5;
                 k_5 = (_e113 + 1u);
                 let _e117 = k_5;
-                let _e119 = i_16;
+                let _e119 = i_17;
                 let _e121 = cuts_1[_e119];
                 g_18.gamma[_e117] = _e121;
             }
         }
         continuing {
-            let _e123 = i_16;
-            i_16 = (_e123 + 1u);
+            let _e123 = i_17;
+            i_17 = (_e123 + 1u);
         }
     }
     let _e126 = k_5;
@@ -4284,27 +4375,27 @@ fn airlight_surface(s_19: AirlightScene) -> AirlightOuter {
     let _e132 = k_5;
     g_18.panels = (_e132 + 1u);
     loop {
-        let _e137 = i_17;
+        let _e137 = i_18;
         let _e139 = g_18.panels;
         if (_e137 <= _e139) {
         } else {
             break;
         }
         {
-            let _e142 = i_17;
-            let _e144 = i_17;
+            let _e142 = i_18;
+            let _e144 = i_18;
             g_18.edges[_e142] = f32(_e144);
         }
         continuing {
-            let _e147 = i_17;
-            i_17 = (_e147 + 1u);
+            let _e147 = i_18;
+            i_18 = (_e147 + 1u);
         }
     }
     let _e149 = g_18;
     return _e149;
 }
 
-fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     var g_19: AirlightOuter;
     var local_95: bool;
     var local_96: bool;
@@ -4324,34 +4415,34 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     var local_107: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var i_18: u32 = 0u;
+    var i_19: u32 = 0u;
     var local_108: bool;
     var local_109: bool;
     var local_110: bool;
     var n_1: u32 = 0u;
-    var i_19: u32 = 0u;
+    var i_20: u32 = 0u;
     var local_111: bool;
 
-    if (s_20.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_20);
+    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_21);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_20, AIRLIGHT_SEGMENT_PANELS);
+    let _e6 = airlight_outer_point(s_21, AIRLIGHT_SEGMENT_PANELS);
     g_19 = _e6;
-    if (s_20.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_21.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         let _e11 = g_19;
         return _e11;
     }
-    let ab_1 = (s_20.light_end - s_20.light_position);
+    let ab_1 = (s_21.light_end - s_21.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_95 = (s_20.intensity == 0f);
+        local_95 = (s_21.intensity == 0f);
     } else {
         local_95 = true;
     }
     let _e26 = local_95;
     if !(_e26) {
-        local_96 = (s_20.sigma_s == 0f);
+        local_96 = (s_21.sigma_s == 0f);
     } else {
         local_96 = true;
     }
@@ -4362,13 +4453,13 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_20.dir);
-    let w0_ = (s_20.light_position - s_20.origin);
+    let _e41 = airlight_normalize(s_21.dir);
+    let w0_ = (s_21.light_position - s_21.origin);
     let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_20.flags & 1u) != 0u);
+    let infinite_4 = ((s_21.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4400,7 +4491,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e97 = local_99;
     if _e97 {
         let _e101 = t_star;
-        local_100 = (s_20.t_min <= _e101);
+        local_100 = (s_21.t_min <= _e101);
     } else {
         local_100 = false;
     }
@@ -4408,7 +4499,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_102 = (_e110 <= s_20.t_max);
+            local_102 = (_e110 <= s_21.t_max);
         } else {
             local_102 = true;
         }
@@ -4476,16 +4567,16 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e172 = scale;
     g_19.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_20.t_min - along_d) / cos_a_2), ((s_20.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_21.t_min - along_d) / cos_a_2), ((s_21.t_max - along_d) / cos_a_2));
     loop {
-        let _e189 = i_18;
+        let _e189 = i_19;
         if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0f) {
-                let _e196 = i_18;
+                let _e196 = i_19;
                 local_108 = (_e196 > 0u);
             } else {
                 local_108 = false;
@@ -4494,7 +4585,7 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
             if _e200 {
                 continue;
             }
-            let _e201 = i_18;
+            let _e201 = i_19;
             if (_e201 == 2u) {
                 local_109 = infinite_4;
             } else {
@@ -4504,10 +4595,10 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
             if _e207 {
                 continue;
             }
-            let _e208 = i_18;
+            let _e208 = i_19;
             let _e210 = at[_e208];
             if (_e210 > 0f) {
-                let _e215 = i_18;
+                let _e215 = i_19;
                 let _e217 = at[_e215];
                 local_110 = (_e217 < _e15);
             } else {
@@ -4515,42 +4606,42 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
             }
             let _e220 = local_110;
             if _e220 {
-                let _e221 = i_18;
+                let _e221 = i_19;
                 let _e223 = g_19;
-                let _e224 = i_18;
+                let _e224 = i_19;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[_e221] = _e227;
             }
         }
         continuing {
-            let _e229 = i_18;
-            i_18 = (_e229 + 1u);
+            let _e229 = i_19;
+            i_19 = (_e229 + 1u);
         }
     }
     let _e232 = cuts_2[1];
     let _e234 = cuts_2[0];
     if (_e232 < _e234) {
-        let c_11 = cuts_2[0];
+        let c_12 = cuts_2[0];
         let _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_11;
+        cuts_2[1] = c_12;
     }
     let _e243 = cuts_2[2];
     let _e245 = cuts_2[1];
     if (_e243 < _e245) {
-        let c_12 = cuts_2[1];
+        let c_13 = cuts_2[1];
         let _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_12;
+        cuts_2[2] = c_13;
     }
     let _e254 = cuts_2[1];
     let _e256 = cuts_2[0];
     if (_e254 < _e256) {
-        let c_13 = cuts_2[0];
+        let c_14 = cuts_2[0];
         let _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_13;
+        cuts_2[1] = c_14;
     }
     let _e264 = g_19;
     let _e265 = airlight_to_w(_e264, _e15);
@@ -4558,18 +4649,18 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     let _e270 = airlight_to_w(_e268, 0f);
     g_19.edges[0] = _e270;
     loop {
-        let _e275 = i_19;
+        let _e275 = i_20;
         if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            let _e278 = i_19;
+            let _e278 = i_20;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
             let _e284 = g_19.edges[_e282];
             if (_e280 > _e284) {
-                let _e288 = i_19;
+                let _e288 = i_20;
                 let _e290 = cuts_2[_e288];
                 local_111 = (_e290 < _e265);
             } else {
@@ -4580,14 +4671,14 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
-                let _e300 = i_19;
+                let _e300 = i_20;
                 let _e302 = cuts_2[_e300];
                 g_19.edges[_e298] = _e302;
             }
         }
         continuing {
-            let _e304 = i_19;
-            i_19 = (_e304 + 1u);
+            let _e304 = i_20;
+            i_20 = (_e304 + 1u);
         }
     }
     let _e307 = n_1;
@@ -4598,19 +4689,19 @@ fn airlight_outer(s_20: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_21: AirlightScene, g_20: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_22: AirlightScene, g_20: AirlightOuter, x_14: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_21;
+    p = s_22;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_20 = min(u32(max(floor(x_14), 0f)), (g_20.panels - 1u));
-        let t_7 = (x_14 - f32(i_20));
-        let a_27 = g_20.gamma[i_20];
-        let b_18 = g_20.gamma[(i_20 + 1u)];
+    if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let i_21 = min(u32(max(floor(x_14), 0f)), (g_20.panels - 1u));
+        let t_7 = (x_14 - f32(i_21));
+        let a_27 = g_20.gamma[i_21];
+        let b_18 = g_20.gamma[(i_21 + 1u)];
         let gamma = (a_27 + ((((b_18 - a_27) * t_7) * t_7) * ((3f - t_7) - t_7)));
         let jacobian = ((((b_18 - a_27) * 6f) * t_7) * (1f - t_7));
         if !((jacobian > 0f)) {
@@ -4630,9 +4721,9 @@ fn airlight_outer_node(s_21: AirlightScene, g_20: AirlightOuter, x_14: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_21.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_21.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_14;
         if (g_20.scale > 0f) {
             at_1 = (g_20.s_star + (g_20.scale * sinh(x_14)));
@@ -4648,7 +4739,7 @@ fn airlight_outer_node(s_21: AirlightScene, g_20: AirlightOuter, x_14: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4663,7 +4754,7 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var j_4: u32;
     var local_112: bool;
     var f: f32;
-    var r_5: AirlightResult;
+    var r_6: AirlightResult;
     var local_113: bool;
     var local_114: bool;
     var local_115: bool;
@@ -4673,11 +4764,11 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
     var local_117: bool;
     var local_118: bool;
 
-    let _e1 = airlight_valid(s_22);
+    let _e1 = airlight_valid(s_23);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_22);
+    let _e6 = airlight_outer(s_23);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4697,7 +4788,7 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
         {
             let _e60 = a_16;
             let _e61 = b_12;
-            let c_14 = (0.5f * (_e60 + _e61));
+            let c_15 = (0.5f * (_e60 + _e61));
             let _e65 = b_12;
             let _e66 = a_16;
             let hw_1 = (0.5f * (_e65 - _e66));
@@ -4721,12 +4812,12 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                         local_112 = false;
                     }
                     let _e100 = local_112;
-                    let w_4 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_22, _e6, w_4);
+                    let w_4 = select((c_15 + (hw_1 * node.x)), (c_15 - (hw_1 * node.x)), _e100);
+                    let _e102 = airlight_outer_node(s_23, _e6, w_4);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
-                        r_5 = AirlightResult(0f, 0u);
+                        r_6 = AirlightResult(0f, 0u);
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
@@ -4739,12 +4830,12 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
                             let _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_5 = _e123;
+                            r_6 = _e123;
                         }
-                        let _e125 = r_5.in_scatter;
+                        let _e125 = r_6.in_scatter;
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
-                            let _e132 = r_5.status;
+                            let _e132 = r_6.status;
                             local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
                             local_114 = true;
@@ -4753,17 +4844,17 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_22.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = (s_22.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_115 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_115 = false;
                         }
                         let _e149 = local_115;
                         if _e149 {
-                            let _e150 = r_5;
+                            let _e150 = r_6;
                             return _e150;
                         }
-                        let _e152 = r_5.in_scatter;
+                        let _e152 = r_6.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
                     let _e155 = k_6;
@@ -4895,12 +4986,12 @@ fn airlight_in_scatter(s_22: AirlightScene) -> AirlightResult {
 
 @compute @workgroup_size(64, 1, 1) 
 fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
-    let i_21 = id.x;
-    if (i_21 >= arrayLength((&airlight_records))) {
+    let i_22 = id.x;
+    if (i_22 >= arrayLength((&airlight_records))) {
         return;
     }
-    let _e9 = airlight_records[i_21];
+    let _e9 = airlight_records[i_22];
     let _e10 = airlight_in_scatter(_e9);
-    airlight_results[i_21] = _e10;
+    airlight_results[i_22] = _e10;
     return;
 }

@@ -235,7 +235,7 @@ fn henyey_greenstein_peak_does_not_cancel() {
 /// its outer cone, a flat emitter behind its plane) makes the default path skip those pieces of
 /// the ray. Skipping must change nothing but the work: the same light wrapped in a distribution
 /// that does not declare it (a user's own type, delegating `eval`, `axis`, `kinks` and
-/// `is_entire`) evaluates
+/// `polynomial_degree`) evaluates
 /// every piece, and the two values are bit-identical (a lit piece skipped would lose its light;
 /// a dark one integrates to exactly 0), with at least as many panels — and fewer on some scenes.
 /// A ray the cone never reaches is 0 with no panel.
@@ -258,8 +258,8 @@ fn dark_pieces_are_skipped_exactly() {
             self.0.kinks()
         }
         // the same error estimate on both sides: only `dark_below` is left undeclared
-        fn is_entire(&self) -> bool {
-            self.0.is_entire()
+        fn polynomial_degree(&self) -> Option<u32> {
+            self.0.polynomial_degree()
         }
     }
     fn both<D: LightDistribution<f64> + Copy>(p: &airlight_tests::scenes::Plain, dist: D) -> ((f64, usize), (f64, usize)) {

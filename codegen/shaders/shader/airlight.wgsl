@@ -601,7 +601,7 @@ struct AirlightHalf {
 }
 
 /// The height t of y = ±it where μ(y) = −σ(1 − y²)/(1 + y²) reaches the phase's singular cosine
-/// `side`·(1 + gap) (combined.rs `singular_heights`; gap AIRLIGHT_FLT_MAX: none, height 1).
+/// `side`·(1 + gap) (combined.rs `singularities`; gap AIRLIGHT_FLT_MAX: none, height 1).
 fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
     if (!(gap > 0.0)) { return 0.0; }
     if ((side > 0.0) == (sigma < 0.0)) { return sqrt(gap / (2.0 + gap)); }
@@ -617,7 +617,7 @@ fn airlight_hg_gap(g: f32) -> f32 {
 }
 
 /// Heights t of the integrand's singularities at y = ±it on the half with this σ (combined.rs
-/// `singular_heights`, phase.rs `singular_cosines`): the poles of c and μ at ±i, and the phase
+/// `singularities`, phase.rs `singularities`): the poles of c and μ at ±i, and the phase
 /// function's (every light kind is a polynomial in c between its kinks).
 fn airlight_singular_heights(s: AirlightScene, sigma: f32) -> vec3<f32> {
     let p0 = s.phase_param_a;
@@ -642,6 +642,24 @@ fn airlight_singular_heights(s: AirlightScene, sigma: f32) -> vec3<f32> {
 
 /// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
 /// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
+/// Each singularity's bound on the coefficients' step ratio beyond c_{N−1}, per unit of 1/ρ:
+/// (N/(N − 1))^{max(α − 1, 0)} for its order α (panels.rs `Singular`) — at y = ±i
+/// α − 1 = deg D + max(growth of P, 0), at the phase's own its order (combined.rs
+/// `singularities`; the orders and growths, and the spot's degree, from the kernel).
+fn airlight_singular_steps(s: AirlightScene) -> vec3<f32> {
+    var degree = 0.0;
+    if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) { degree = s.light_param_a; }
+    if (s.light_kind == AIRLIGHT_LIGHT_SPOT) { degree = @SPOT_DEGREE@; }
+    var order = 0.0;
+    var growth = 0.0;
+    switch s.phase_kind {
+@SINGULAR_PHASES@
+    }
+    let ratio = f32(AIRLIGHT_TERMS) / f32(AIRLIGHT_TERMS - 1u);
+    let phase = pow(ratio, max(order - 1.0, 0.0));
+    return vec3<f32>(pow(ratio, degree + growth), phase, phase);
+}
+
 fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
     return airlight_integrand_over(s, g, sigma, y).x;
 }
@@ -824,20 +842,28 @@ fn airlight_tail_estimate(c: array<f32, AIRLIGHT_TERMS>) -> f32 {
     return abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
 }
 
-/// The error per unit of the tail and of M_0 (panels.rs `error_factor`, the singularities
-/// known): q at least the nearest singularity's rate `floor`, aliasing Σ_j q^{N+1−j−margin}|M_j|
-/// by Horner, plus truncation.
+/// The error per unit of the tail and of M_0 (panels.rs `error_factor`): with q at least the
+/// singularities' rate `floor`, aliasing Σ_j q^{N+1−j−margin}|M_j| by Horner plus truncation;
+/// where that rate reaches 1, the cautious q^{N/4} (q^{N/6} near a peak at the panel's end).
 fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_TERMS>, floor: f32) -> f32 {
     if (!(m[0] > 0.0)) { return 1.0; }
     let last = abs(c[AIRLIGHT_TERMS - 1u]) + abs(c[AIRLIGHT_TERMS - 2u]);
     let before = abs(c[AIRLIGHT_TERMS - 3u]) + abs(c[AIRLIGHT_TERMS - 4u]);
     if (!(before > 0.0) || !(last < before)) { return 1.0; }
-    let q = max(sqrt(last / before), select(0.0, floor, floor > 0.0));
-    if (!(q < 1.0)) { return 1.0; }
-    var aliasing = 0.0;
-    @EACH_TERM@ aliasing = select(aliasing + abs(m[{k}]), aliasing * q + abs(m[{k}]), {k}u + AIRLIGHT_ALIASING_MARGIN < AIRLIGHT_TERMS + 2u);
-    let truncation = q * max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u]));
-    return min((aliasing + truncation) / m[0], 1.0);
+    let measured = sqrt(last / before);
+    let q = max(measured, select(0.0, floor, floor > 0.0));
+    let truncation = max(abs(m[AIRLIGHT_TERMS - 1u]), abs(m[AIRLIGHT_TERMS - 2u]));
+    if (q < 1.0) {
+        var aliasing = 0.0;
+        @EACH_TERM@ aliasing = select(aliasing + abs(m[{k}]), aliasing * q + abs(m[{k}]), {k}u + AIRLIGHT_ALIASING_MARGIN < AIRLIGHT_TERMS + 2u);
+        return min((aliasing + q * truncation) / m[0], 1.0);
+    }
+    var c_max = 0.0;
+    @EACH_TERM@ c_max = max(c_max, abs(c[{k}]));
+    let power = select(AIRLIGHT_TERMS / 4u, AIRLIGHT_TERMS / 6u, c_max > 1.2 * abs(c[0]));
+    var aliasing = 1.0;
+    for (var i = 0u; i < power; i++) { aliasing *= measured; }
+    return min(aliasing + measured * truncation / m[0], 1.0);
 }
 
 /// 1/ρ of the Bernstein ellipse of [c − r, c + r] through it (panels.rs `decay_rate`).
@@ -876,7 +902,7 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
 }
 
 /// A v-panel (panels.rs `v_panel`).
-fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>) -> AirlightPanel {
+fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>, steps: vec3<f32>) -> AirlightPanel {
     let rule = airlight_gauss_rule();
     var r = (b - a) * 0.5;
     var vc = a + r;
@@ -906,13 +932,13 @@ fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     @EACH_TERM@ sum += c[{k}] * m[{k}];
     let w = airlight_factor(half, a, b) * r;
     let mass = w * m[0];
-    let floor = max(airlight_decay_rate(vc, r, heights.x), max(airlight_decay_rate(vc, r, heights.y), airlight_decay_rate(vc, r, heights.z)));
+    let floor = airlight_singular_floor(heights, steps, vc, r);
     let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass * over_max, f_max);
 }
 
 /// A y-panel (panels.rs `y_panel`): the whole integrand by the rule in y.
-fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>) -> AirlightPanel {
+fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights: vec3<f32>, steps: vec3<f32>) -> AirlightPanel {
     let rule = airlight_gauss_rule();
     let r = (b - a) * 0.5;
     let yc = a + r;
@@ -938,7 +964,7 @@ fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     var m = airlight_zero_terms();
     m[0] = 2.0;
     // the exponential's essential singularity at y = 0 as well
-    let floor = max(airlight_decay_rate(yc, r, 0.0), max(airlight_decay_rate(yc, r, heights.x), max(airlight_decay_rate(yc, r, heights.y), airlight_decay_rate(yc, r, heights.z))));
+    let floor = max(airlight_decay_rate(yc, r, 0.0), airlight_singular_floor(heights, steps, yc, r));
     let error = w * 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * 2.0 * c[0], error, airlight_transform_noise(w * 2.0, p_avg), w * mass * over_max, f_max);
 }
@@ -1004,15 +1030,21 @@ fn airlight_tail_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half:
 }
 
 /// The panel kind for [a, b] (panels.rs `panel`); the singularities' heights in y and in the
-/// v-panels' variable (`airlight_singular_heights`).
-fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights_y: vec3<f32>, heights_v: vec3<f32>) -> AirlightPanel {
+/// v-panels' variable and their step factors (`airlight_singular_heights`, `_steps`).
+fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, a: f32, b: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps: vec3<f32>) -> AirlightPanel {
     if (half.second && a <= b * 0.25) {
         return airlight_tail_panel(s, g, sigma, half, a, b);
     }
     if (half.second && half.big_h * ((b - a) / (a * b)) <= AIRLIGHT_Y_PANEL_EXPONENT) {
-        return airlight_y_panel(s, g, sigma, half, a, b, heights_y);
+        return airlight_y_panel(s, g, sigma, half, a, b, heights_y, steps);
     }
-    return airlight_v_panel(s, g, sigma, half, a, b, heights_v);
+    return airlight_v_panel(s, g, sigma, half, a, b, heights_v, steps);
+}
+
+/// The least rate the coefficients on [c − r, c + r] can fall at beyond c_{N−1} (panels.rs
+/// `Singular::floor`).
+fn airlight_singular_floor(heights: vec3<f32>, steps: vec3<f32>, c: f32, r: f32) -> f32 {
+    return max(steps.x * airlight_decay_rate(c, r, heights.x), max(steps.y * airlight_decay_rate(c, r, heights.y), steps.z * airlight_decay_rate(c, r, heights.z)));
 }
 
 /// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split
@@ -1023,6 +1055,7 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     // G's singularities once per piece, in y and in the v-panels' variable (1/t after the foot)
     let heights_y = airlight_singular_heights(s, sigma);
     let heights_v = select(heights_y, 1.0 / heights_y, half.second);
+    let steps = airlight_singular_steps(s);
     // (a, b, value, error) and mass_over per listed panel
     var list = array<vec4<f32>, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST4@);
     var mass_over = array<f32, AIRLIGHT_PANEL_LIST>(@ZEROS_LIST@);
@@ -1038,7 +1071,7 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     var count = 0u;
     var budget = AIRLIGHT_MAX_PANELS;
     for (var step = 0u; step < AIRLIGHT_MAX_PANELS; step++) {
-        let p = airlight_panel(s, g, sigma, half, a, b, heights_y, heights_v);
+        let p = airlight_panel(s, g, sigma, half, a, b, heights_y, heights_v, steps);
         *f_max = max(*f_max, p.f_max);
         list[slot] = vec4<f32>(a, b, p.value, p.error);
         mass_over[slot] = p.mass_over;

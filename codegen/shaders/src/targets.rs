@@ -168,6 +168,32 @@ impl Constants {
             .map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w)))
             .collect();
         let max_power = airlight::light::TwoLobed::<f32>::MAX_POWER;
+        // each phase kind's singularities (phase.rs `singularities`) as a WGSL switch body: the
+        // order at its cosines and its growth at infinity (0 if bounded)
+        let singular_phases = {
+            use airlight::phase::*;
+            use airlight::PhaseFunction;
+            let kinds: [(u32, AnyPhase<f32>); 6] = [
+                (l::PHASE_ISOTROPIC, AnyPhase::Isotropic),
+                (l::PHASE_RAYLEIGH, AnyPhase::Rayleigh),
+                (l::PHASE_HENYEY_GREENSTEIN, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.5 })),
+                (l::PHASE_SCHLICK, AnyPhase::Schlick(Schlick { k: 0.5 })),
+                (l::PHASE_CORNETTE_SHANKS, AnyPhase::CornetteShanks(CornetteShanks { g: 0.5 })),
+                (l::PHASE_TWO_LOBE_HG, AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.5, g2: 0.5, w: 0.5 })),
+            ];
+            let mut body = String::new();
+            for (kind, phase) in kinds {
+                let p = phase.singularities().expect("every built-in phase function declares its singularities");
+                body.push_str(&format!("        case {kind}u: {{ order = {}; growth = {}; }}\n", f(p.order as f64), f(p.growth.max(0.0) as f64)));
+            }
+            body.push_str("        default: {}");
+            body
+        };
+        let spot_degree = {
+            use airlight::LightDistribution;
+            let spot = airlight::light::SpotCone::<f32> { axis: airlight::glam::Vec3::X, cos_inner: 0.9, cos_outer: 0.8 };
+            spot.polynomial_degree().expect("a spot cone is a polynomial between its kinks")
+        };
         let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS);
         let fills = vec![
             ("@TERMS@", terms.to_string()),
@@ -181,6 +207,8 @@ impl Constants {
             ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
             ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
             ("@ALIASING_MARGIN@", airlight::panels::ALIASING_MARGIN.to_string()),
+            ("@SINGULAR_PHASES@", singular_phases),
+            ("@SPOT_DEGREE@", f(spot_degree as f64)),
             ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
             ("@GAUSS_RULE@", list(rule.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
             ("@LEGENDRE_BODY@", unrolled::legendre_body(terms, transform)),

@@ -45,11 +45,12 @@ pub trait Expandable<T: Real> {
         let (f, inv) = self.eval_over(y);
         (f, y * y * inv)
     }
-    /// Heights `t > 0` such that `F`, continued to complex `y`, may be singular at `y = ±it`
-    /// (three at most; those of the built-in integrands all lie on the imaginary axis), or
-    /// `None` when they are not known (the default). The panels' error estimate takes the
-    /// least decay rate of the Legendre coefficients from the nearest one.
-    fn singular_heights(&self) -> Option<[T; 3]> {
+    /// `(t, α)`: heights `t > 0` such that `F/(1 + y²)`, continued to complex `y`, may be
+    /// singular at `y = ±it` with order `α` (`~ (y ∓ it)^{−α}`; three at most; those of the
+    /// built-in integrands all lie on the imaginary axis), or `None` when they are not known (the
+    /// default). The panels' error estimate takes the least decay rate of the Legendre
+    /// coefficients from them.
+    fn singularities(&self) -> Option<[(T, T); 3]> {
         None
     }
 }
