@@ -171,7 +171,8 @@ fn panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, 
 
 /// `G`'s singularities at `±it` ([`Expandable::singularities`]): heights in `y` and in the
 /// v-panels' variable (`1/t` after the foot), and each one's bound on the coefficients' step
-/// ratio beyond the last computed one, per unit of `1/ρ`.
+/// ratio beyond the last computed one, per unit of `1/ρ`; `count` distinct ones (a phase
+/// function without singularities of its own repeats the poles at `±i`).
 struct Singular<T> {
     y: [T; 3],
     v: [T; 3],
@@ -180,20 +181,48 @@ struct Singular<T> {
     /// beyond `c_{N−1}` (a high-order pole — the `c^p` beam's `p`-fold one at `y = ±i` — keeps
     /// the coefficients from their asymptotic rate well past `N`).
     step: [T; 3],
+    count: usize,
 }
 
 impl<T: Real> Singular<T> {
     fn new<const N: usize>(s: [(T, T); 3], second: bool) -> Self {
-        let y = s.map(|(t, _)| t);
-        let ratio = T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap();
-        Singular { y, v: if second { y.map(|t| t.recip()) } else { y }, step: s.map(|(_, order)| ratio.powf((order - T::one()).max(T::zero()))) }
+        let (mut y, mut step, mut count) = ([T::zero(); 3], [T::zero(); 3], 0);
+        // √(N/(N − 1)) to the power ⌈2(α − 1)⌉ by squaring: exact for the built-in orders (whole
+        // and half), larger otherwise; no library power per piece
+        let root = (T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap()).sqrt();
+        for (t, order) in s {
+            let twice = ((order - T::one()) * T::lit(2.0)).ceil();
+            let factor = if twice > T::zero() { twice.to_u32().map_or(T::infinity(), |k| power_by_squaring(root, k)) } else { T::one() };
+            match (0..count).find(|&i| y[i] == t) {
+                Some(i) => step[i] = step[i].max(factor),
+                None => {
+                    y[count] = t;
+                    step[count] = factor;
+                    count += 1;
+                }
+            }
+        }
+        Singular { y, v: if second { y.map(|t| t.recip()) } else { y }, step, count }
     }
 
     /// The least rate the coefficients on `[c − r, c + r]` (in the heights `ts`' variable) can
     /// fall at beyond `c_{N−1}`.
     fn floor(&self, ts: &[T; 3], c: T, r: T) -> T {
-        ts.iter().zip(&self.step).fold(T::zero(), |q, (&t, &step)| q.max(step * decay_rate(c, r, t)))
+        ts.iter().zip(&self.step).take(self.count).fold(T::zero(), |q, (&t, &step)| q.max(step * decay_rate(c, r, t)))
     }
+}
+
+/// `x^k` by repeated squaring.
+fn power_by_squaring<T: Real>(mut x: T, mut k: u32) -> T {
+    let mut out = T::one();
+    while k > 0 {
+        if k & 1 == 1 {
+            out = out * x;
+        }
+        x = x * x;
+        k >>= 1;
+    }
+    out
 }
 
 /// What one panel's samples say, in the half's scaling.
