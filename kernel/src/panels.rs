@@ -350,7 +350,7 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
     (aliasing + truncation).min(T::one())
 }
 
-/// The margin `m` of the aliasing model in [`error_factor`]: the estimate is `q^{−m}` above
+/// The margin `m` of the panels' aliasing model (`error_factor`): the estimate is `q^{−m}` above
 /// the geometric model. Measured over tests/reference/classes.jsonl with `m = 3` (largest error
 /// over every record of every class): with 4 … 16 nodes per panel at tolerances 1e-1 … 1e-4
 /// (f32) and 1e-2 … 1e-10 (f64) at most 0.37 of the tolerance (f32 12 nodes at 1e-2,
