@@ -640,8 +640,6 @@ fn airlight_singular_heights(s: AirlightScene, sigma: f32) -> vec3<f32> {
     return h;
 }
 
-/// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
-/// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
 /// Each singularity's bound on the coefficients' step ratio beyond c_{N−1}, per unit of 1/ρ:
 /// (N/(N − 1))^{max(α − 1, 0)} for its order α (panels.rs `Singular`) — at y = ±i
 /// α − 1 = deg D + max(growth of P, 0), at the phase's own its order (combined.rs
@@ -660,6 +658,8 @@ fn airlight_singular_steps(s: AirlightScene) -> vec3<f32> {
     return vec3<f32>(pow(ratio, degree + growth), phase, phase);
 }
 
+/// F(y) = D(c(y))·P(μ(y)) on a half: μ = −σ(1−y²)/(1+y²), c = (σ d_el(1−y²) + 2 d_c y)/(1+y²);
+/// 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²) in the order σ decides (combined.rs).
 fn airlight_integrand(s: AirlightScene, g: AirlightCanonical, sigma: f32, y: f32) -> f32 {
     return airlight_integrand_over(s, g, sigma, y).x;
 }

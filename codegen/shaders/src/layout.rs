@@ -151,14 +151,7 @@ impl Record {
             AnyDistribution::TwoLobed(d) => (LIGHT_TWO_LOBED, d.axis.to_array(), d.power as f32, 0.0),
             AnyDistribution::SpotCone(d) => (LIGHT_SPOT, d.axis.to_array(), d.cos_inner, d.cos_outer),
         };
-        let (phase_kind, phase_param_a, phase_param_b, phase_param_c) = match *phase {
-            AnyPhase::Isotropic => (PHASE_ISOTROPIC, 0.0, 0.0, 0.0),
-            AnyPhase::Rayleigh => (PHASE_RAYLEIGH, 0.0, 0.0, 0.0),
-            AnyPhase::HenyeyGreenstein(p) => (PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0),
-            AnyPhase::Schlick(p) => (PHASE_SCHLICK, p.k, 0.0, 0.0),
-            AnyPhase::CornetteShanks(p) => (PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0),
-            AnyPhase::TwoLobeHenyeyGreenstein(p) => (PHASE_TWO_LOBE_HG, p.g1, p.g2, p.w),
-        };
+        let (phase_kind, phase_param_a, phase_param_b, phase_param_c) = phase_fields(phase);
         let infinite = ray.t_max == f32::INFINITY;
         Record {
             origin: ray.origin.to_array(),
@@ -194,6 +187,18 @@ impl Record {
     /// Its f32 inputs, `origin` … `phase_param_c` (the kinds and flags follow them).
     pub fn float_inputs(&self) -> &[f32] {
         &bytemuck::cast_slice(bytemuck::bytes_of(self))[..FLOAT_INPUTS_END / 4]
+    }
+}
+
+/// A phase function's record fields: its kind (`PHASE_*`) and up to three parameters.
+pub fn phase_fields(phase: &AnyPhase<f32>) -> (u32, f32, f32, f32) {
+    match *phase {
+        AnyPhase::Isotropic => (PHASE_ISOTROPIC, 0.0, 0.0, 0.0),
+        AnyPhase::Rayleigh => (PHASE_RAYLEIGH, 0.0, 0.0, 0.0),
+        AnyPhase::HenyeyGreenstein(p) => (PHASE_HENYEY_GREENSTEIN, p.g, 0.0, 0.0),
+        AnyPhase::Schlick(p) => (PHASE_SCHLICK, p.k, 0.0, 0.0),
+        AnyPhase::CornetteShanks(p) => (PHASE_CORNETTE_SHANKS, p.g, 0.0, 0.0),
+        AnyPhase::TwoLobeHenyeyGreenstein(p) => (PHASE_TWO_LOBE_HG, p.g1, p.g2, p.w),
     }
 }
 

@@ -173,16 +173,18 @@ impl Constants {
         let singular_phases = {
             use airlight::phase::*;
             use airlight::PhaseFunction;
-            let kinds: [(u32, AnyPhase<f32>); 6] = [
-                (l::PHASE_ISOTROPIC, AnyPhase::Isotropic),
-                (l::PHASE_RAYLEIGH, AnyPhase::Rayleigh),
-                (l::PHASE_HENYEY_GREENSTEIN, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.5 })),
-                (l::PHASE_SCHLICK, AnyPhase::Schlick(Schlick { k: 0.5 })),
-                (l::PHASE_CORNETTE_SHANKS, AnyPhase::CornetteShanks(CornetteShanks { g: 0.5 })),
-                (l::PHASE_TWO_LOBE_HG, AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.5, g2: 0.5, w: 0.5 })),
+            // one of each kind; its code from the record layout
+            let phases: [AnyPhase<f32>; 6] = [
+                AnyPhase::Isotropic,
+                AnyPhase::Rayleigh,
+                AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.5 }),
+                AnyPhase::Schlick(Schlick { k: 0.5 }),
+                AnyPhase::CornetteShanks(CornetteShanks { g: 0.5 }),
+                AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.5, g2: 0.5, w: 0.5 }),
             ];
             let mut body = String::new();
-            for (kind, phase) in kinds {
+            for phase in phases {
+                let kind = l::phase_fields(&phase).0;
                 let p = phase.singularities().expect("every built-in phase function declares its singularities");
                 body.push_str(&format!("        case {kind}u: {{ order = {}; growth = {}; }}\n", f(p.order as f64), f(p.growth.max(0.0) as f64)));
             }
