@@ -328,6 +328,8 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
         return T::one();
     }
     let q = (last / before).sqrt();
+    // the truncation's moment: the neglected terms meet M_k no larger than these
+    let tail_moment = m[N - 1].abs().max(m[N - 2].abs());
     // the rate the nearest singularity allows, where the samples show a faster one; at or
     // above 1 (a high-order pole near the panel) it says nothing, and the cautious form below
     // holds
@@ -339,14 +341,13 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
         for (j, mj) in m.iter().enumerate() {
             aliasing = if j < top { aliasing * q + mj.abs() } else { aliasing + mj.abs() };
         }
-        let truncation = q * m[N - 1].abs().max(m[N - 2].abs());
-        return ((aliasing + truncation) / m[0]).min(T::one());
+        return ((aliasing + q * tail_moment) / m[0]).min(T::one());
     }
     // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end, whose mass
     // between the last node and the end the nodes miss
     let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
     let aliasing = power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 });
-    let truncation = q * m[N - 1].abs().max(m[N - 2].abs()) / m[0];
+    let truncation = q * tail_moment / m[0];
     (aliasing + truncation).min(T::one())
 }
 
