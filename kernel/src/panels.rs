@@ -39,7 +39,7 @@
 
 use crate::expansion::{gauss_table, Expandable};
 use crate::integrals::Half;
-use crate::real::Real;
+use crate::real::{reciprocal, Real};
 use crate::special::en_scaled;
 
 /// Error control of the panel integration.
@@ -176,11 +176,12 @@ fn panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, 
 struct Singular<T> {
     y: [T; 3],
     v: [T; 3],
-    /// `(N/(N − 1))^{max(α − 1, 0)}`: near a singularity of order `α` the coefficients go as
-    /// `k^{α−1} ρ^{−k}`, whose step ratio `((k+1)/k)^{α−1}/ρ` is largest at the first step
-    /// beyond `c_{N−1}` (a high-order pole — the `c^p` beam's `p`-fold one at `y = ±i` — keeps
-    /// the coefficients from their asymptotic rate well past `N`).
-    step: [T; 3],
+    /// `1/step`, `step = (N/(N − 1))^{max(α − 1, 0)}`: near a singularity of order `α` the
+    /// coefficients go as `k^{α−1} ρ^{−k}`, whose step ratio `((k+1)/k)^{α−1}/ρ` is largest at
+    /// the first step beyond `c_{N−1}` (a high-order pole — the `c^p` beam's `p`-fold one at
+    /// `y = ±i` — keeps the coefficients from their asymptotic rate well past `N`). Stored
+    /// inverted: the floor is `1/min(ρ/step)`, one division per panel.
+    inv_step: [T; 3],
     count: usize,
 }
 
@@ -202,13 +203,20 @@ impl<T: Real> Singular<T> {
                 }
             }
         }
-        Singular { y, v: if second { y.map(|t| t.recip()) } else { y }, step, count }
+        Singular { y, v: if second { y.map(|t| t.recip()) } else { y }, inv_step: step.map(|s| s.recip()), count }
     }
 
     /// The least rate the coefficients on `[c − r, c + r]` (in the heights `ts`' variable) can
-    /// fall at beyond `c_{N−1}`.
-    fn floor(&self, ts: &[T; 3], c: T, r: T) -> T {
-        ts.iter().zip(&self.step).take(self.count).fold(T::zero(), |q, (&t, &step)| q.max(step * decay_rate(c, r, t)))
+    /// fall at beyond `c_{N−1}`: the largest `step/ρ`, and with `origin` at least `1/ρ` of a
+    /// singularity at 0 (the exponential's, on a y-panel).
+    fn floor(&self, ts: &[T; 3], c: T, r: T, origin: bool) -> T {
+        let inv = r.recip();
+        let re = c * inv;
+        let mut rho = if origin { bernstein_rho(re, T::zero()) } else { T::infinity() };
+        for (&t, &inv_step) in ts.iter().zip(&self.inv_step).take(self.count) {
+            rho = rho.min(bernstein_rho(re, t * inv) * inv_step);
+        }
+        rho.recip()
     }
 }
 
@@ -304,7 +312,7 @@ fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
 /// the tail.
 ///
 /// * Where `G`'s singularities are known (`floor`: the largest step ratio they allow beyond
-///   `c_{N−1}`, `1/ρ` of the Bernstein ellipse through each ([`decay_rate`]) times its order's
+///   `c_{N−1}`, `1/ρ` of the Bernstein ellipse through each ([`bernstein_rho`]) times its order's
 ///   factor, [`Singular`]) the coefficients fall no faster than `floor` — a lobe just beyond
 ///   the panel's end whose peak the nodes miss cannot hide behind steeply falling first
 ///   coefficients — so `q` is raised to it, and the aliasing is its model
@@ -362,16 +370,15 @@ fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T
 /// `error_estimate_holds_at_loose_tolerances`.
 pub const ALIASING_MARGIN: usize = 3;
 
-/// `1/ρ` for the Bernstein ellipse of `[c − r, c + r]` through `it` (foci at the ends,
-/// `ρ = A + √(A² − 1)`, `A` half the sum of the distances to them over `r`): the Legendre
-/// coefficients of a function singular there fall like `ρ^{−k}` and no faster. (Squares that
-/// overflow give `ρ = ∞`, rate 0: a singularity that far constrains nothing.)
-fn decay_rate<T: Real>(c: T, r: T, t: T) -> T {
-    let inv = r.recip();
-    let (re, im) = (c * inv, t * inv);
+/// `ρ` of the Bernstein ellipse of `[−1, 1]` through `re + i·im` (a panel `[c − r, c + r]`
+/// scaled to it: foci at the ends, `ρ = A + √(A² − 1)`, `A` half the sum of the distances to
+/// them): the Legendre coefficients of a function singular there fall like `ρ^{−k}` and no
+/// faster. (Squares that overflow give `ρ = ∞`, rate 0: a singularity that far constrains
+/// nothing.)
+fn bernstein_rho<T: Real>(re: T, im: T) -> T {
     let im2 = im * im;
     let a = (((re - T::one()) * (re - T::one()) + im2).sqrt() + ((re + T::one()) * (re + T::one()) + im2).sqrt()) * T::lit(0.5);
-    (a + (a * a - T::one()).max(T::zero()).sqrt()).recip()
+    a + (a * a - T::one()).max(T::zero()).sqrt()
 }
 
 /// `q^k` for the small `k` of [`error_factor`], by products (no library call).
@@ -411,7 +418,7 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let w = factor(half, a, b) * r;
     let mass = w * m[0];
     let noise = transform_noise::<T, N>(mass, g_avg);
-    let floor = singular.map(|s| s.floor(&s.v, vc, r));
+    let floor = singular.map(|s| s.floor(&s.v, vc, r, false));
     let error = mass * tail_estimate(&c) * error_factor(&c, &m, floor);
     Panel { value: w * sum, error, noise, mass_over: mass * over_max, f_max }
 }
@@ -453,7 +460,7 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     m[0] = T::lit(2.0);
     let noise = transform_noise::<T, N>(w * T::lit(2.0), p_avg);
     // the exponential's essential singularity at y = 0 as well
-    let floor = singular.map(|s| s.floor(&s.y, yc, r).max(decay_rate(yc, r, T::zero())));
+    let floor = singular.map(|s| s.floor(&s.y, yc, r, true));
     let error = w * T::lit(2.0) * tail_estimate(&c) * error_factor(&c, &m, floor);
     Panel { value: w * T::lit(2.0) * c[0], error, noise, mass_over: mass * over_max, f_max }
 }
@@ -523,7 +530,7 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
     for (k, ck) in c.iter().enumerate() {
         spread = spread + l_cur * ck.abs();
         let kf = T::from(k).unwrap();
-        let next = ((kf + kf + T::one()) * x * l_cur + kf * l_prev) / (kf + T::one());
+        let next = ((kf + kf + T::one()) * x * l_cur + kf * l_prev) * reciprocal::<T>(k + 1);
         l_prev = l_cur;
         l_cur = next;
     }

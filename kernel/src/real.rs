@@ -154,6 +154,28 @@ impl Real for f32 {
     conversions!(f32);
 }
 
+/// `1/n` for the orders the kernel uses (`n < 32`: `N + 2` with `N ≤ 16` nodes or terms, or the
+/// fixed method's `N ≤ 16` terms) from a table, a division beyond. The table's entry rounded
+/// to `T` is half an ulp from `1/n`: a step of `E_n`'s upward recurrence
+/// (special/en.rs) does not amplify it on its stable side, and the tail panel's rounding bound
+/// (panels.rs) is a bound, not a value.
+#[inline]
+pub(crate) fn reciprocal<T: Real>(n: usize) -> T {
+    const INVERSES: [f64; 32] = {
+        let mut t = [0.0; 32];
+        let mut n = 1;
+        while n < 32 {
+            t[n] = 1.0 / n as f64;
+            n += 1;
+        }
+        t
+    };
+    match INVERSES.get(n) {
+        Some(&inv) if n > 0 => T::lit(inv),
+        _ => T::from(n).unwrap().recip(),
+    }
+}
+
 /// `√(1 + x²)` without overflow for huge `|x|` (where it is `|x|` to the last bit:
 /// `x² > 2^p` makes the `1` vanish). Cheaper than a general `hypot`.
 #[inline]

@@ -149,13 +149,13 @@ vec2 airlight_cmul(vec2 a, vec2 b) {
 
 vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_7 = (b_1.y / b_1.x);
-        float inv = (1.0 / (b_1.x + (b_1.y * r_7)));
-        return vec2(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
+        float r_6 = (b_1.y / b_1.x);
+        float inv = (1.0 / (b_1.x + (b_1.y * r_6)));
+        return vec2(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
     }
-    float r_8 = (b_1.x / b_1.y);
-    float inv_1 = (1.0 / ((b_1.x * r_8) + b_1.y));
-    return vec2((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
+    float r_7 = (b_1.x / b_1.y);
+    float inv_1 = (1.0 / ((b_1.x * r_7) + b_1.y));
+    return vec2((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(vec2 z) {
@@ -179,11 +179,11 @@ vec2 airlight_csqrt(vec2 z_1) {
     }
     float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
-        return vec2(t_4, (z_1.y / (t_4 + t_4)));
+        float t_3 = sqrt(((_e14 + z_1.x) * 0.5));
+        return vec2(t_3, (z_1.y / (t_3 + t_3)));
     }
-    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
-    return vec2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
+    float t_4 = sqrt(((_e14 - z_1.x) * 0.5));
+    return vec2((abs(z_1.y) / (t_4 + t_4)), ((z_1.y >= 0.0) ? t_4 : -(t_4)));
 }
 
 vec2 airlight_cos_sin(float x) {
@@ -933,7 +933,7 @@ vec2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_3, float sig
     float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
     float mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    float c_9 = ((((sigma_2 * g_3.d_el) * om_3) + ((2.0 * g_3.d_c) * y_1)) * inv_2);
+    float c_8 = ((((sigma_2 * g_3.d_el) * om_3) + ((2.0 * g_3.d_c) * y_1)) * inv_2);
     float far = ((y2_ * inv_2) * 2.0);
     float near = (inv_2 * 2.0);
     minus = near;
@@ -942,7 +942,7 @@ vec2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_3, float sig
         minus = far;
         plus = near;
     }
-    float _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_9);
+    float _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_8);
     float _e40 = minus;
     float _e41 = plus;
     float _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
@@ -1819,13 +1819,10 @@ float airlight_error_factor(float c_3[12], float m_1[12], float floor_) {
     return min((_e254 + ((measured * truncation) / m_1[0])), 1.0);
 }
 
-float airlight_decay_rate(float c_4, float r_1, float t_3) {
-    float inv_4 = (1.0 / r_1);
-    float re = (c_4 * inv_4);
-    float im = (t_3 * inv_4);
+float airlight_bernstein_rho(float re, float im) {
     float im2_ = (im * im);
     float a_21 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (1.0 / (a_21 + sqrt(max(((a_21 * a_21) - 1.0), 0.0))));
+    return (a_21 + sqrt(max(((a_21 * a_21) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs) {
@@ -1847,15 +1844,27 @@ AirlightPanel airlight_panel_result(float value, float error, float noise, float
     return AirlightPanel(value, ((error <= noise) ? 0.0 : error), mass_over, f_max);
 }
 
-float airlight_singular_floor(vec3 heights, vec3 steps_1, float c_5, float r_2) {
-    float _e6 = airlight_decay_rate(c_5, r_2, heights.x);
-    float _e10 = airlight_decay_rate(c_5, r_2, heights.y);
-    float _e14 = airlight_decay_rate(c_5, r_2, heights.z);
-    return max((steps_1.x * _e6), max((steps_1.y * _e10), (steps_1.z * _e14)));
+float airlight_singular_floor(vec3 heights, vec3 steps_1, float c_4, float r_1, bool origin) {
+    float rho = 0.0;
+    float inv_4 = (1.0 / r_1);
+    float re_1 = (c_4 * inv_4);
+    float _e10 = airlight_bernstein_rho(re_1, 0.0);
+    rho = (origin ? _e10 : AIRLIGHT_FLT_MAX);
+    float _e13 = rho;
+    float _e16 = airlight_bernstein_rho(re_1, (heights.x * inv_4));
+    rho = min(_e13, (_e16 / steps_1.x));
+    float _e20 = rho;
+    float _e23 = airlight_bernstein_rho(re_1, (heights.y * inv_4));
+    rho = min(_e20, (_e23 / steps_1.y));
+    float _e27 = rho;
+    float _e30 = airlight_bernstein_rho(re_1, (heights.z * inv_4));
+    rho = min(_e27, (_e30 / steps_1.z));
+    float _e34 = rho;
+    return (1.0 / _e34);
 }
 
 AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float sigma_4, AirlightHalf half_4, float a_5, float b_4, vec3 heights_1, vec3 steps_2) {
-    float r_3 = 0.0;
+    float r_2 = 0.0;
     float vc = 0.0;
     float samples[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_1 = 0.0;
@@ -1864,12 +1873,12 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float s
     uint i_7 = 0u;
     float sum_4 = 0.0;
     vec2 _e8[6] = airlight_gauss_rule();
-    r_3 = ((b_4 - a_5) * 0.5);
-    float _e13 = r_3;
+    r_2 = ((b_4 - a_5) * 0.5);
+    float _e13 = r_2;
     vc = (a_5 + _e13);
     if (half_4.second) {
-        r_3 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
-        float _e24 = r_3;
+        r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
+        float _e24 = r_2;
         vc = ((1.0 / b_4) + _e24);
     }
     float _e26[12] = airlight_zero_terms();
@@ -1888,7 +1897,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float s
         }
         {
             float _e39 = vc;
-            float _e40 = r_3;
+            float _e40 = r_2;
             uint _e41 = i_7;
             float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
@@ -1910,7 +1919,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float s
     }
     float _e76[12] = samples;
     float _e77[12] = airlight_legendre(_e76);
-    float _e79 = r_3;
+    float _e79 = r_2;
     float _e81[12] = airlight_exp_legendre_moments((half_4.big_h * _e79));
     float _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
@@ -1937,22 +1946,22 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_6, float s
     float _e139 = sum_4;
     sum_4 = (_e139 + (_e77[11] * _e81[11]));
     float _e144 = airlight_factor(half_4, a_5, b_4);
-    float _e145 = r_3;
+    float _e145 = r_2;
     float w = (_e144 * _e145);
     float mass_4 = (w * _e81[0]);
     float _e149 = vc;
-    float _e150 = r_3;
-    float _e151 = airlight_singular_floor(heights_1, steps_2, _e149, _e150);
-    float _e152 = airlight_tail_estimate(_e77);
-    float _e154 = airlight_error_factor(_e77, _e81, _e151);
-    float error_1 = ((mass_4 * _e152) * _e154);
-    float _e156 = sum_4;
-    float _e158 = g_avg;
-    float _e159 = airlight_transform_noise(mass_4, _e158);
-    float _e160 = over_max;
-    float _e162 = f_max_1;
-    AirlightPanel _e163 = airlight_panel_result((w * _e156), error_1, _e159, (mass_4 * _e160), _e162);
-    return _e163;
+    float _e150 = r_2;
+    float _e152 = airlight_singular_floor(heights_1, steps_2, _e149, _e150, false);
+    float _e153 = airlight_tail_estimate(_e77);
+    float _e155 = airlight_error_factor(_e77, _e81, _e152);
+    float error_1 = ((mass_4 * _e153) * _e155);
+    float _e157 = sum_4;
+    float _e159 = g_avg;
+    float _e160 = airlight_transform_noise(mass_4, _e159);
+    float _e161 = over_max;
+    float _e163 = f_max_1;
+    AirlightPanel _e164 = airlight_panel_result((w * _e157), error_1, _e160, (mass_4 * _e161), _e163);
+    return _e164;
 }
 
 AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_7, float sigma_5, AirlightHalf half_5, float a_6, float b_5, vec3 heights_2, vec3 steps_3) {
@@ -1964,8 +1973,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_7, float s
     uint i_8 = 0u;
     float m_2[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 _e8[6] = airlight_gauss_rule();
-    float r_9 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_9);
+    float r_8 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_8);
     float _e13[12] = airlight_zero_terms();
     samples_1 = _e13;
     bool loop_init_14 = true;
@@ -1983,8 +1992,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_7, float s
         {
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
-            float y_6 = (yc_1 + (r_9 * _e29));
-            float weight = exp(((-(half_5.big_h) * (r_9 * (1.0 - _e29))) / (y_6 * b_5)));
+            float y_6 = (yc_1 + (r_8 * _e29));
+            float weight = exp(((-(half_5.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
             float _e41 = airlight_integrand(s_6, g_7, sigma_5, y_6);
             float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e47 = i_8;
@@ -2006,114 +2015,112 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_7, float s
     float _e81[12] = samples_1;
     float _e82[12] = airlight_legendre(_e81);
     float _e83 = airlight_factor(half_5, a_6, b_5);
-    float w_1 = (_e83 * r_9);
+    float w_1 = (_e83 * r_8);
     float _e85[12] = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2.0;
-    float _e90 = airlight_decay_rate(yc_1, r_9, 0.0);
-    float _e91 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9);
-    float floor_1 = max(_e90, _e91);
-    float _e95 = airlight_tail_estimate(_e82);
-    float _e97[12] = m_2;
-    float _e98 = airlight_error_factor(_e82, _e97, floor_1);
-    float error_2 = (((w_1 * 2.0) * _e95) * _e98);
-    float _e106 = p_avg;
-    float _e107 = airlight_transform_noise((w_1 * 2.0), _e106);
-    float _e108 = mass_1;
-    float _e110 = over_max_1;
-    float _e112 = f_max_2;
-    AirlightPanel _e113 = airlight_panel_result(((w_1 * 2.0) * _e82[0]), error_2, _e107, ((w_1 * _e108) * _e110), _e112);
-    return _e113;
+    float _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_8, true);
+    float _e93 = airlight_tail_estimate(_e82);
+    float _e95[12] = m_2;
+    float _e96 = airlight_error_factor(_e82, _e95, _e90);
+    float error_2 = (((w_1 * 2.0) * _e93) * _e96);
+    float _e104 = p_avg;
+    float _e105 = airlight_transform_noise((w_1 * 2.0), _e104);
+    float _e106 = mass_1;
+    float _e108 = over_max_1;
+    float _e110 = f_max_2;
+    AirlightPanel _e111 = airlight_panel_result(((w_1 * 2.0) * _e82[0]), error_2, _e105, ((w_1 * _e106) * _e108), _e110);
+    return _e111;
 }
 
-float[12] airlight_legendre_to_monomial(float c_6[12]) {
+float[12] airlight_legendre_to_monomial(float c_5[12]) {
     float hat[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e1[12] = airlight_zero_terms();
     hat = _e1;
     float _e4 = hat[0];
-    hat[0] = (_e4 + (c_6[0] * 1.0));
+    hat[0] = (_e4 + (c_5[0] * 1.0));
     float _e10 = hat[1];
-    hat[1] = (_e10 + (c_6[1] * 1.0));
+    hat[1] = (_e10 + (c_5[1] * 1.0));
     float _e16 = hat[0];
-    hat[0] = (_e16 + (c_6[2] * -0.5));
+    hat[0] = (_e16 + (c_5[2] * -0.5));
     float _e22 = hat[2];
-    hat[2] = (_e22 + (c_6[2] * 1.5));
+    hat[2] = (_e22 + (c_5[2] * 1.5));
     float _e28 = hat[1];
-    hat[1] = (_e28 + (c_6[3] * -1.5));
+    hat[1] = (_e28 + (c_5[3] * -1.5));
     float _e34 = hat[3];
-    hat[3] = (_e34 + (c_6[3] * 2.5));
+    hat[3] = (_e34 + (c_5[3] * 2.5));
     float _e40 = hat[0];
-    hat[0] = (_e40 + (c_6[4] * 0.375));
+    hat[0] = (_e40 + (c_5[4] * 0.375));
     float _e46 = hat[2];
-    hat[2] = (_e46 + (c_6[4] * -3.75));
+    hat[2] = (_e46 + (c_5[4] * -3.75));
     float _e52 = hat[4];
-    hat[4] = (_e52 + (c_6[4] * 4.375));
+    hat[4] = (_e52 + (c_5[4] * 4.375));
     float _e58 = hat[1];
-    hat[1] = (_e58 + (c_6[5] * 1.875));
+    hat[1] = (_e58 + (c_5[5] * 1.875));
     float _e64 = hat[3];
-    hat[3] = (_e64 + (c_6[5] * -8.75));
+    hat[3] = (_e64 + (c_5[5] * -8.75));
     float _e70 = hat[5];
-    hat[5] = (_e70 + (c_6[5] * 7.875));
+    hat[5] = (_e70 + (c_5[5] * 7.875));
     float _e76 = hat[0];
-    hat[0] = (_e76 + (c_6[6] * -0.3125));
+    hat[0] = (_e76 + (c_5[6] * -0.3125));
     float _e82 = hat[2];
-    hat[2] = (_e82 + (c_6[6] * 6.5625));
+    hat[2] = (_e82 + (c_5[6] * 6.5625));
     float _e88 = hat[4];
-    hat[4] = (_e88 + (c_6[6] * -19.6875));
+    hat[4] = (_e88 + (c_5[6] * -19.6875));
     float _e94 = hat[6];
-    hat[6] = (_e94 + (c_6[6] * 14.4375));
+    hat[6] = (_e94 + (c_5[6] * 14.4375));
     float _e100 = hat[1];
-    hat[1] = (_e100 + (c_6[7] * -2.1875));
+    hat[1] = (_e100 + (c_5[7] * -2.1875));
     float _e106 = hat[3];
-    hat[3] = (_e106 + (c_6[7] * 19.6875));
+    hat[3] = (_e106 + (c_5[7] * 19.6875));
     float _e112 = hat[5];
-    hat[5] = (_e112 + (c_6[7] * -43.3125));
+    hat[5] = (_e112 + (c_5[7] * -43.3125));
     float _e118 = hat[7];
-    hat[7] = (_e118 + (c_6[7] * 26.8125));
+    hat[7] = (_e118 + (c_5[7] * 26.8125));
     float _e124 = hat[0];
-    hat[0] = (_e124 + (c_6[8] * 0.2734375));
+    hat[0] = (_e124 + (c_5[8] * 0.2734375));
     float _e130 = hat[2];
-    hat[2] = (_e130 + (c_6[8] * -9.84375));
+    hat[2] = (_e130 + (c_5[8] * -9.84375));
     float _e136 = hat[4];
-    hat[4] = (_e136 + (c_6[8] * 54.140625));
+    hat[4] = (_e136 + (c_5[8] * 54.140625));
     float _e142 = hat[6];
-    hat[6] = (_e142 + (c_6[8] * -93.84375));
+    hat[6] = (_e142 + (c_5[8] * -93.84375));
     float _e148 = hat[8];
-    hat[8] = (_e148 + (c_6[8] * 50.273438));
+    hat[8] = (_e148 + (c_5[8] * 50.273438));
     float _e154 = hat[1];
-    hat[1] = (_e154 + (c_6[9] * 2.4609375));
+    hat[1] = (_e154 + (c_5[9] * 2.4609375));
     float _e160 = hat[3];
-    hat[3] = (_e160 + (c_6[9] * -36.09375));
+    hat[3] = (_e160 + (c_5[9] * -36.09375));
     float _e166 = hat[5];
-    hat[5] = (_e166 + (c_6[9] * 140.76563));
+    hat[5] = (_e166 + (c_5[9] * 140.76563));
     float _e172 = hat[7];
-    hat[7] = (_e172 + (c_6[9] * -201.09375));
+    hat[7] = (_e172 + (c_5[9] * -201.09375));
     float _e178 = hat[9];
-    hat[9] = (_e178 + (c_6[9] * 94.96094));
+    hat[9] = (_e178 + (c_5[9] * 94.96094));
     float _e184 = hat[0];
-    hat[0] = (_e184 + (c_6[10] * -0.24609375));
+    hat[0] = (_e184 + (c_5[10] * -0.24609375));
     float _e190 = hat[2];
-    hat[2] = (_e190 + (c_6[10] * 13.535156));
+    hat[2] = (_e190 + (c_5[10] * 13.535156));
     float _e196 = hat[4];
-    hat[4] = (_e196 + (c_6[10] * -117.30469));
+    hat[4] = (_e196 + (c_5[10] * -117.30469));
     float _e202 = hat[6];
-    hat[6] = (_e202 + (c_6[10] * 351.91406));
+    hat[6] = (_e202 + (c_5[10] * 351.91406));
     float _e208 = hat[8];
-    hat[8] = (_e208 + (c_6[10] * -427.32422));
+    hat[8] = (_e208 + (c_5[10] * -427.32422));
     float _e214 = hat[10];
-    hat[10] = (_e214 + (c_6[10] * 180.42578));
+    hat[10] = (_e214 + (c_5[10] * 180.42578));
     float _e220 = hat[1];
-    hat[1] = (_e220 + (c_6[11] * -2.7070313));
+    hat[1] = (_e220 + (c_5[11] * -2.7070313));
     float _e226 = hat[3];
-    hat[3] = (_e226 + (c_6[11] * 58.652344));
+    hat[3] = (_e226 + (c_5[11] * 58.652344));
     float _e232 = hat[5];
-    hat[5] = (_e232 + (c_6[11] * -351.91406));
+    hat[5] = (_e232 + (c_5[11] * -351.91406));
     float _e238 = hat[7];
-    hat[7] = (_e238 + (c_6[11] * 854.64844));
+    hat[7] = (_e238 + (c_5[11] * 854.64844));
     float _e244 = hat[9];
-    hat[9] = (_e244 + (c_6[11] * -902.1289));
+    hat[9] = (_e244 + (c_5[11] * -902.1289));
     float _e250 = hat[11];
-    hat[11] = (_e250 + (c_6[11] * 344.44922));
+    hat[11] = (_e250 + (c_5[11] * 344.44922));
     float _e255[12] = hat;
     return _e255;
 }
@@ -2136,8 +2143,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_8, floa
     float spread = 0.0;
     float next = 0.0;
     vec2 _e6[6] = airlight_gauss_rule();
-    float r_10 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_10);
+    float r_9 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_9);
     float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
     bool loop_init_15 = true;
@@ -2155,7 +2162,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_8, floa
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_7 = (yc_2 + (r_10 * _e23));
+            float y_7 = (yc_2 + (r_9 * _e23));
             float _e26 = airlight_integrand(s_7, g_8, sigma_6, y_7);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_7 * y_7)));
@@ -2170,8 +2177,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_8, floa
     }
     float _e53[12] = samples_2;
     float _e54[12] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_10);
-    float beta = (-(yc_2) / r_10);
+    float alpha = (b_6 / r_9);
+    float beta = (-(yc_2) / r_9);
     float _e58[12] = airlight_legendre_to_monomial(_e54);
     float _e59[12] = airlight_zero_terms();
     q = _e59;
@@ -2868,8 +2875,8 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     }
     float a_22 = (a0_ / scale_1);
     float b_16 = (b0_ / scale_1);
-    float c_10 = (c0_ / scale_1);
-    float disc_1 = ((b_16 * b_16) - ((4.0 * a_22) * c_10));
+    float c_9 = (c0_ / scale_1);
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_22) * c_9));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
@@ -2879,7 +2886,7 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     float _e47 = sb;
     float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_2 != 0.0)) {
-        r1_ = (c_10 / q_2);
+        r1_ = (c_9 / q_2);
     }
     if ((a_22 != 0.0)) {
         r2_2 = (q_2 / a_22);
@@ -3079,13 +3086,13 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_13, float sigma_12, 
                         float _e98 = cuts[(_e94 + 1u)];
                         if ((_e93 > _e98)) {
                             uint _e100 = j_2;
-                            float t_6 = cuts[_e100];
+                            float t_5 = cuts[_e100];
                             uint _e103 = j_2;
                             uint _e105 = j_2;
                             float _e109 = cuts[(_e105 + 1u)];
                             cuts[_e103] = _e109;
                             uint _e110 = j_2;
-                            cuts[(_e110 + 1u)] = t_6;
+                            cuts[(_e110 + 1u)] = t_5;
                         }
                     }
                 }
@@ -3302,8 +3309,8 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_15, float big_
 float airlight_cut_length(float big_h_2, float v_s) {
     float inv_h = (1.0 / big_h_2);
     float w_2 = (v_s + inv_h);
-    float r_11 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
+    float r_10 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 
@@ -4005,9 +4012,9 @@ vec2 airlight_two_product(float a_13, float b_10, uint key_2) {
     return vec2(_e4, (_e17 ? e_3 : 0.0));
 }
 
-float airlight_diff_of_products(float a_14, float b_11, float c_7, float d_1, uint key_3) {
+float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, uint key_3) {
     vec2 _e5 = airlight_two_product(a_14, b_11, key_3);
-    vec2 _e6 = airlight_two_product(c_7, d_1, key_3);
+    vec2 _e6 = airlight_two_product(c_6, d_1, key_3);
     float _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     float _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -4157,88 +4164,88 @@ void airlight_list_set(inout AirlightPanelList l_1, uint i_16, vec4 v_5) {
 }
 
 AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
-    AirlightListScan r_4 = AirlightListScan(0.0, 0.0, 0u);
+    AirlightListScan r_3 = AirlightListScan(0.0, 0.0, 0u);
     float worst_error = -1.0;
     if ((count_1 > 0u)) {
-        float _e12 = r_4.total;
-        r_4.total = (_e12 + l_2.panel_a.z);
-        float _e17 = r_4.errors;
-        r_4.errors = (_e17 + l_2.panel_a.w);
+        float _e12 = r_3.total;
+        r_3.total = (_e12 + l_2.panel_a.z);
+        float _e17 = r_3.errors;
+        r_3.errors = (_e17 + l_2.panel_a.w);
         float _e23 = worst_error;
         if ((l_2.panel_a.w > _e23)) {
-            r_4.worst = 0u;
+            r_3.worst = 0u;
             worst_error = l_2.panel_a.w;
         }
     }
     if ((count_1 > 1u)) {
-        float _e32 = r_4.total;
-        r_4.total = (_e32 + l_2.panel_b.z);
-        float _e37 = r_4.errors;
-        r_4.errors = (_e37 + l_2.panel_b.w);
+        float _e32 = r_3.total;
+        r_3.total = (_e32 + l_2.panel_b.z);
+        float _e37 = r_3.errors;
+        r_3.errors = (_e37 + l_2.panel_b.w);
         float _e43 = worst_error;
         if ((l_2.panel_b.w > _e43)) {
-            r_4.worst = 1u;
+            r_3.worst = 1u;
             worst_error = l_2.panel_b.w;
         }
     }
     if ((count_1 > 2u)) {
-        float _e52 = r_4.total;
-        r_4.total = (_e52 + l_2.panel_c.z);
-        float _e57 = r_4.errors;
-        r_4.errors = (_e57 + l_2.panel_c.w);
+        float _e52 = r_3.total;
+        r_3.total = (_e52 + l_2.panel_c.z);
+        float _e57 = r_3.errors;
+        r_3.errors = (_e57 + l_2.panel_c.w);
         float _e63 = worst_error;
         if ((l_2.panel_c.w > _e63)) {
-            r_4.worst = 2u;
+            r_3.worst = 2u;
             worst_error = l_2.panel_c.w;
         }
     }
     if ((count_1 > 3u)) {
-        float _e72 = r_4.total;
-        r_4.total = (_e72 + l_2.panel_d.z);
-        float _e77 = r_4.errors;
-        r_4.errors = (_e77 + l_2.panel_d.w);
+        float _e72 = r_3.total;
+        r_3.total = (_e72 + l_2.panel_d.z);
+        float _e77 = r_3.errors;
+        r_3.errors = (_e77 + l_2.panel_d.w);
         float _e83 = worst_error;
         if ((l_2.panel_d.w > _e83)) {
-            r_4.worst = 3u;
+            r_3.worst = 3u;
             worst_error = l_2.panel_d.w;
         }
     }
     if ((count_1 > 4u)) {
-        float _e92 = r_4.total;
-        r_4.total = (_e92 + l_2.panel_e.z);
-        float _e97 = r_4.errors;
-        r_4.errors = (_e97 + l_2.panel_e.w);
+        float _e92 = r_3.total;
+        r_3.total = (_e92 + l_2.panel_e.z);
+        float _e97 = r_3.errors;
+        r_3.errors = (_e97 + l_2.panel_e.w);
         float _e103 = worst_error;
         if ((l_2.panel_e.w > _e103)) {
-            r_4.worst = 4u;
+            r_3.worst = 4u;
             worst_error = l_2.panel_e.w;
         }
     }
     if ((count_1 > 5u)) {
-        float _e112 = r_4.total;
-        r_4.total = (_e112 + l_2.panel_f.z);
-        float _e117 = r_4.errors;
-        r_4.errors = (_e117 + l_2.panel_f.w);
+        float _e112 = r_3.total;
+        r_3.total = (_e112 + l_2.panel_f.z);
+        float _e117 = r_3.errors;
+        r_3.errors = (_e117 + l_2.panel_f.w);
         float _e123 = worst_error;
         if ((l_2.panel_f.w > _e123)) {
-            r_4.worst = 5u;
+            r_3.worst = 5u;
             worst_error = l_2.panel_f.w;
         }
     }
-    AirlightListScan _e129 = r_4;
+    AirlightListScan _e129 = r_3;
     return _e129;
 }
 
 float airlight_asinh(float x_11) {
-    float r_5 = 0.0;
+    float r_4 = 0.0;
     float a_24 = abs(x_11);
-    r_5 = (AIRLIGHT_LN_2_ + log(a_24));
+    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
     if ((a_24 <= 4096.0)) {
         float _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1.0 + sqrt((1.0 + (a_24 * a_24)))))));
-        r_5 = _e17;
+        r_4 = _e17;
     }
-    float _e18 = r_5;
-    float _e19 = r_5;
+    float _e18 = r_4;
+    float _e19 = r_4;
     return ((x_11 < 0.0) ? -(_e19) : _e18);
 }
 
@@ -4251,10 +4258,10 @@ float airlight_to_w(AirlightOuter g_17, float s_17) {
 }
 
 vec2 airlight_cos_sin_half_turn(float x_12) {
-    float r_12 = (x_12 - 1.5707964);
-    float z_10 = (r_12 * r_12);
+    float r_11 = (x_12 - 1.5707964);
+    float z_10 = (r_11 * r_11);
     float cos_r = (1.0 - ((z_10 / 2.0) * (1.0 - ((z_10 / 12.0) * (1.0 - ((z_10 / 30.0) * (1.0 - ((z_10 / 56.0) * (1.0 - ((z_10 / 90.0) * (1.0 - ((z_10 / 132.0) * (1.0 - (z_10 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
+    float sin_r = (r_11 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
@@ -4264,20 +4271,20 @@ float airlight_acos(float x_13) {
     return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_8, float s_18) {
-    if ((s_18 <= c_8)) {
-        float _e4 = airlight_atan((s_18 / c_8));
+float airlight_angle(float c_7, float s_18) {
+    if ((s_18 <= c_7)) {
+        float _e4 = airlight_atan((s_18 / c_7));
         return _e4;
     }
-    if ((s_18 <= -(c_8))) {
-        float _e10 = airlight_atan((s_18 / -(c_8)));
+    if ((s_18 <= -(c_7))) {
+        float _e10 = airlight_atan((s_18 / -(c_7)));
         return (AIRLIGHT_PI - _e10);
     }
-    if ((c_8 >= 0.0)) {
-        float _e16 = airlight_atan((c_8 / s_18));
+    if ((c_7 >= 0.0)) {
+        float _e16 = airlight_atan((c_7 / s_18));
         return (1.5707964 - _e16);
     }
-    float _e21 = airlight_atan((-(c_8) / s_18));
+    float _e21 = airlight_atan((-(c_7) / s_18));
     return (1.5707964 + _e21);
 }
 
@@ -4351,10 +4358,10 @@ AirlightOuter airlight_surface(AirlightScene s_20) {
     float _e79 = cuts_1[1];
     float _e81 = cuts_1[0];
     if ((_e79 < _e81)) {
-        float c_11 = cuts_1[0];
+        float c_10 = cuts_1[0];
         float _e87 = cuts_1[1];
         cuts_1[0] = _e87;
-        cuts_1[1] = c_11;
+        cuts_1[1] = c_10;
     }
     bool loop_init_24 = true;
     while(true) {
@@ -4646,26 +4653,26 @@ AirlightOuter airlight_outer(AirlightScene s_21) {
     float _e232 = cuts_2[1];
     float _e234 = cuts_2[0];
     if ((_e232 < _e234)) {
-        float c_12 = cuts_2[0];
+        float c_11 = cuts_2[0];
         float _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_12;
+        cuts_2[1] = c_11;
     }
     float _e243 = cuts_2[2];
     float _e245 = cuts_2[1];
     if ((_e243 < _e245)) {
-        float c_13 = cuts_2[1];
+        float c_12 = cuts_2[1];
         float _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_13;
+        cuts_2[2] = c_12;
     }
     float _e254 = cuts_2[1];
     float _e256 = cuts_2[0];
     if ((_e254 < _e256)) {
-        float c_14 = cuts_2[0];
+        float c_13 = cuts_2[0];
         float _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_14;
+        cuts_2[1] = c_13;
     }
     AirlightOuter _e264 = g_19;
     float _e265 = airlight_to_w(_e264, _e15);
@@ -4724,11 +4731,11 @@ AirlightNode airlight_outer_node(AirlightScene s_22, AirlightOuter g_20, float x
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_20.panels - 1u));
-        float t_7 = (x_14 - float(i_21));
+        float t_6 = (x_14 - float(i_21));
         float a_27 = g_20.gamma[i_21];
         float b_18 = g_20.gamma[(i_21 + 1u)];
-        float gamma = (a_27 + ((((b_18 - a_27) * t_7) * t_7) * ((3.0 - t_7) - t_7)));
-        float jacobian = ((((b_18 - a_27) * 6.0) * t_7) * (1.0 - t_7));
+        float gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+        float jacobian = ((((b_18 - a_27) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             return AirlightNode(_e45, 0.0);
@@ -4779,7 +4786,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
     uint j_4 = 0u;
     bool local_112 = false;
     float f = 0.0;
-    AirlightResult r_6 = AirlightResult(0.0, 0u);
+    AirlightResult r_5 = AirlightResult(0.0, 0u);
     bool local_113 = false;
     bool local_114 = false;
     bool local_115 = false;
@@ -4818,7 +4825,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
         {
             float _e60 = a_16;
             float _e61 = b_12;
-            float c_15 = (0.5 * (_e60 + _e61));
+            float c_14 = (0.5 * (_e60 + _e61));
             float _e65 = b_12;
             float _e66 = a_16;
             float hw_1 = (0.5 * (_e65 - _e66));
@@ -4848,12 +4855,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
                         local_112 = false;
                     }
                     bool _e100 = local_112;
-                    float w_4 = (_e100 ? (c_15 - (hw_1 * node.x)) : (c_15 + (hw_1 * node.x)));
+                    float w_4 = (_e100 ? (c_14 - (hw_1 * node.x)) : (c_14 + (hw_1 * node.x)));
                     AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_4);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
-                        r_6 = AirlightResult(0.0, 0u);
+                        r_5 = AirlightResult(0.0, 0u);
                         bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(p_1.dir);
@@ -4866,12 +4873,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
                             AirlightResult _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_6 = _e123;
+                            r_5 = _e123;
                         }
-                        float _e125 = r_6.in_scatter;
+                        float _e125 = r_5.in_scatter;
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
-                            uint _e132 = r_6.status;
+                            uint _e132 = r_5.status;
                             local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
                             local_114 = true;
@@ -4887,10 +4894,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_23) {
                         }
                         bool _e149 = local_115;
                         if (_e149) {
-                            AirlightResult _e150 = r_6;
+                            AirlightResult _e150 = r_5;
                             return _e150;
                         }
-                        float _e152 = r_6.in_scatter;
+                        float _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
                     float _e155 = k_6;

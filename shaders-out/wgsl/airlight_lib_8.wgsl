@@ -253,13 +253,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_7 = (b_1.y / b_1.x);
-        let inv = (1f / (b_1.x + (b_1.y * r_7)));
-        return vec2<f32>(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
+        let r_6 = (b_1.y / b_1.x);
+        let inv = (1f / (b_1.x + (b_1.y * r_6)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
     }
-    let r_8 = (b_1.x / b_1.y);
-    let inv_1 = (1f / ((b_1.x * r_8) + b_1.y));
-    return vec2<f32>((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
+    let r_7 = (b_1.x / b_1.y);
+    let inv_1 = (1f / ((b_1.x * r_7) + b_1.y));
+    return vec2<f32>((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -284,11 +284,11 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_4 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_4, (z_1.y / (t_4 + t_4)));
+        let t_3 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_3, (z_1.y / (t_3 + t_3)));
     }
-    let t_5 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_5 + t_5)), select(-(t_5), t_5, (z_1.y >= 0f)));
+    let t_4 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_4 + t_4)), select(-(t_4), t_4, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -988,7 +988,7 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
     let mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    let c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
+    let c_8 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
@@ -997,7 +997,7 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
+    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
     let _e40 = minus;
     let _e41 = plus;
     let _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
@@ -1666,13 +1666,10 @@ fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
     return min((_e194 + ((measured * truncation) / m_1[0])), 1f);
 }
 
-fn airlight_decay_rate(c_4: f32, r_1: f32, t_3: f32) -> f32 {
-    let inv_4 = (1f / r_1);
-    let re = (c_4 * inv_4);
-    let im = (t_3 * inv_4);
+fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
     let a_21 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (1f / (a_21 + sqrt(max(((a_21 * a_21) - 1f), 0f))));
+    return (a_21 + sqrt(max(((a_21 * a_21) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -1695,15 +1692,28 @@ fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_m
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_5: f32, r_2: f32) -> f32 {
-    let _e6 = airlight_decay_rate(c_5, r_2, heights.x);
-    let _e10 = airlight_decay_rate(c_5, r_2, heights.y);
-    let _e14 = airlight_decay_rate(c_5, r_2, heights.z);
-    return max((steps_1.x * _e6), max((steps_1.y * _e10), (steps_1.z * _e14)));
+fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_4: f32, r_1: f32, origin_2: bool) -> f32 {
+    var rho: f32;
+
+    let inv_4 = (1f / r_1);
+    let re_1 = (c_4 * inv_4);
+    let _e10 = airlight_bernstein_rho(re_1, 0f);
+    rho = select(AIRLIGHT_FLT_MAX, _e10, origin_2);
+    let _e13 = rho;
+    let _e16 = airlight_bernstein_rho(re_1, (heights.x * inv_4));
+    rho = min(_e13, (_e16 / steps_1.x));
+    let _e20 = rho;
+    let _e23 = airlight_bernstein_rho(re_1, (heights.y * inv_4));
+    rho = min(_e20, (_e23 / steps_1.y));
+    let _e27 = rho;
+    let _e30 = airlight_bernstein_rho(re_1, (heights.z * inv_4));
+    rho = min(_e27, (_e30 / steps_1.z));
+    let _e34 = rho;
+    return (1f / _e34);
 }
 
 fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_4: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
-    var r_3: f32;
+    var r_2: f32;
     var vc: f32;
     var samples: array<f32, 8>;
     var f_max_1: f32 = 0f;
@@ -1713,12 +1723,12 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     var sum_4: f32 = 0f;
 
     let _e8 = airlight_gauss_rule();
-    r_3 = ((b_4 - a_5) * 0.5f);
-    let _e13 = r_3;
+    r_2 = ((b_4 - a_5) * 0.5f);
+    let _e13 = r_2;
     vc = (a_5 + _e13);
     if half_4.second {
-        r_3 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
-        let _e24 = r_3;
+        r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
+        let _e24 = r_2;
         vc = ((1f / b_4) + _e24);
     }
     let _e26 = airlight_zero_terms();
@@ -1731,7 +1741,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
         }
         {
             let _e39 = vc;
-            let _e40 = r_3;
+            let _e40 = r_2;
             let _e41 = i_7;
             let _e42 = airlight_node(_e8, _e41);
             let v_6 = (_e39 + (_e40 * _e42));
@@ -1757,7 +1767,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     }
     let _e76 = samples;
     let _e77 = airlight_legendre(_e76);
-    let _e79 = r_3;
+    let _e79 = r_2;
     let _e81 = airlight_exp_legendre_moments((half_4.big_h * _e79));
     let _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
@@ -1776,22 +1786,22 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e119 = sum_4;
     sum_4 = (_e119 + (_e77[7] * _e81[7]));
     let _e124 = airlight_factor(half_4, a_5, b_4);
-    let _e125 = r_3;
+    let _e125 = r_2;
     let w_1 = (_e124 * _e125);
     let mass_4 = (w_1 * _e81[0]);
     let _e129 = vc;
-    let _e130 = r_3;
-    let _e131 = airlight_singular_floor(heights_1, steps_2, _e129, _e130);
-    let _e132 = airlight_tail_estimate(_e77);
-    let _e134 = airlight_error_factor(_e77, _e81, _e131);
-    let error_1 = ((mass_4 * _e132) * _e134);
-    let _e136 = sum_4;
-    let _e138 = g_avg;
-    let _e139 = airlight_transform_noise(mass_4, _e138);
-    let _e140 = over_max;
-    let _e142 = f_max_1;
-    let _e143 = airlight_panel_result((w_1 * _e136), error_1, _e139, (mass_4 * _e140), _e142);
-    return _e143;
+    let _e130 = r_2;
+    let _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
+    let _e133 = airlight_tail_estimate(_e77);
+    let _e135 = airlight_error_factor(_e77, _e81, _e132);
+    let error_1 = ((mass_4 * _e133) * _e135);
+    let _e137 = sum_4;
+    let _e139 = g_avg;
+    let _e140 = airlight_transform_noise(mass_4, _e139);
+    let _e141 = over_max;
+    let _e143 = f_max_1;
+    let _e144 = airlight_panel_result((w_1 * _e137), error_1, _e140, (mass_4 * _e141), _e143);
+    return _e144;
 }
 
 fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_5: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
@@ -1804,8 +1814,8 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     var m_2: array<f32, 8>;
 
     let _e8 = airlight_gauss_rule();
-    let r_9 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_9);
+    let r_8 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_8);
     let _e13 = airlight_zero_terms();
     samples_1 = _e13;
     loop {
@@ -1817,8 +1827,8 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
-            let y_6 = (yc_1 + (r_9 * _e29));
-            let weight = exp(((-(half_5.big_h) * (r_9 * (1f - _e29))) / (y_6 * b_5)));
+            let y_6 = (yc_1 + (r_8 * _e29));
+            let weight = exp(((-(half_5.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
             let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e47 = i_8;
@@ -1844,71 +1854,69 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
     let _e83 = airlight_factor(half_5, a_6, b_5);
-    let w_2 = (_e83 * r_9);
+    let w_2 = (_e83 * r_8);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2f;
-    let _e90 = airlight_decay_rate(yc_1, r_9, 0f);
-    let _e91 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9);
-    let floor_1 = max(_e90, _e91);
-    let _e95 = airlight_tail_estimate(_e82);
-    let _e97 = m_2;
-    let _e98 = airlight_error_factor(_e82, _e97, floor_1);
-    let error_2 = (((w_2 * 2f) * _e95) * _e98);
-    let _e106 = p_avg;
-    let _e107 = airlight_transform_noise((w_2 * 2f), _e106);
-    let _e108 = mass_1;
-    let _e110 = over_max_1;
-    let _e112 = f_max_2;
-    let _e113 = airlight_panel_result(((w_2 * 2f) * _e82[0]), error_2, _e107, ((w_2 * _e108) * _e110), _e112);
-    return _e113;
+    let _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_8, true);
+    let _e93 = airlight_tail_estimate(_e82);
+    let _e95 = m_2;
+    let _e96 = airlight_error_factor(_e82, _e95, _e90);
+    let error_2 = (((w_2 * 2f) * _e93) * _e96);
+    let _e104 = p_avg;
+    let _e105 = airlight_transform_noise((w_2 * 2f), _e104);
+    let _e106 = mass_1;
+    let _e108 = over_max_1;
+    let _e110 = f_max_2;
+    let _e111 = airlight_panel_result(((w_2 * 2f) * _e82[0]), error_2, _e105, ((w_2 * _e106) * _e108), _e110);
+    return _e111;
 }
 
-fn airlight_legendre_to_monomial(c_6: array<f32, 8>) -> array<f32, 8> {
+fn airlight_legendre_to_monomial(c_5: array<f32, 8>) -> array<f32, 8> {
     var hat: array<f32, 8>;
 
     let _e1 = airlight_zero_terms();
     hat = _e1;
     let _e4 = hat[0];
-    hat[0] = (_e4 + (c_6[0] * 1f));
+    hat[0] = (_e4 + (c_5[0] * 1f));
     let _e10 = hat[1];
-    hat[1] = (_e10 + (c_6[1] * 1f));
+    hat[1] = (_e10 + (c_5[1] * 1f));
     let _e16 = hat[0];
-    hat[0] = (_e16 + (c_6[2] * -0.5f));
+    hat[0] = (_e16 + (c_5[2] * -0.5f));
     let _e22 = hat[2];
-    hat[2] = (_e22 + (c_6[2] * 1.5f));
+    hat[2] = (_e22 + (c_5[2] * 1.5f));
     let _e28 = hat[1];
-    hat[1] = (_e28 + (c_6[3] * -1.5f));
+    hat[1] = (_e28 + (c_5[3] * -1.5f));
     let _e34 = hat[3];
-    hat[3] = (_e34 + (c_6[3] * 2.5f));
+    hat[3] = (_e34 + (c_5[3] * 2.5f));
     let _e40 = hat[0];
-    hat[0] = (_e40 + (c_6[4] * 0.375f));
+    hat[0] = (_e40 + (c_5[4] * 0.375f));
     let _e46 = hat[2];
-    hat[2] = (_e46 + (c_6[4] * -3.75f));
+    hat[2] = (_e46 + (c_5[4] * -3.75f));
     let _e52 = hat[4];
-    hat[4] = (_e52 + (c_6[4] * 4.375f));
+    hat[4] = (_e52 + (c_5[4] * 4.375f));
     let _e58 = hat[1];
-    hat[1] = (_e58 + (c_6[5] * 1.875f));
+    hat[1] = (_e58 + (c_5[5] * 1.875f));
     let _e64 = hat[3];
-    hat[3] = (_e64 + (c_6[5] * -8.75f));
+    hat[3] = (_e64 + (c_5[5] * -8.75f));
     let _e70 = hat[5];
-    hat[5] = (_e70 + (c_6[5] * 7.875f));
+    hat[5] = (_e70 + (c_5[5] * 7.875f));
     let _e76 = hat[0];
-    hat[0] = (_e76 + (c_6[6] * -0.3125f));
+    hat[0] = (_e76 + (c_5[6] * -0.3125f));
     let _e82 = hat[2];
-    hat[2] = (_e82 + (c_6[6] * 6.5625f));
+    hat[2] = (_e82 + (c_5[6] * 6.5625f));
     let _e88 = hat[4];
-    hat[4] = (_e88 + (c_6[6] * -19.6875f));
+    hat[4] = (_e88 + (c_5[6] * -19.6875f));
     let _e94 = hat[6];
-    hat[6] = (_e94 + (c_6[6] * 14.4375f));
+    hat[6] = (_e94 + (c_5[6] * 14.4375f));
     let _e100 = hat[1];
-    hat[1] = (_e100 + (c_6[7] * -2.1875f));
+    hat[1] = (_e100 + (c_5[7] * -2.1875f));
     let _e106 = hat[3];
-    hat[3] = (_e106 + (c_6[7] * 19.6875f));
+    hat[3] = (_e106 + (c_5[7] * 19.6875f));
     let _e112 = hat[5];
-    hat[5] = (_e112 + (c_6[7] * -43.3125f));
+    hat[5] = (_e112 + (c_5[7] * -43.3125f));
     let _e118 = hat[7];
-    hat[7] = (_e118 + (c_6[7] * 26.8125f));
+    hat[7] = (_e118 + (c_5[7] * 26.8125f));
     let _e123 = hat;
     return _e123;
 }
@@ -1932,8 +1940,8 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     var next: f32 = 0f;
 
     let _e6 = airlight_gauss_rule();
-    let r_10 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_10);
+    let r_9 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_9);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
@@ -1945,7 +1953,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_7 = (yc_2 + (r_10 * _e23));
+            let y_7 = (yc_2 + (r_9 * _e23));
             let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_7);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
@@ -1964,8 +1972,8 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_10);
-    let beta = (-(yc_2) / r_10);
+    let alpha = (b_6 / r_9);
+    let beta = (-(yc_2) / r_9);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -2497,8 +2505,8 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     }
     let a_22 = (a0_ / scale_1);
     let b_16 = (b0_ / scale_1);
-    let c_10 = (c0_ / scale_1);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_10));
+    let c_9 = (c0_ / scale_1);
+    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_9));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -2508,7 +2516,7 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     let _e47 = sb;
     let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_2 != 0f) {
-        r1_ = (c_10 / q_2);
+        r1_ = (c_9 / q_2);
     }
     if (a_22 != 0f) {
         r2_2 = (q_2 / a_22);
@@ -2696,13 +2704,13 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
                         let _e98 = cuts[(_e94 + 1u)];
                         if (_e93 > _e98) {
                             let _e100 = j_2;
-                            let t_6 = cuts[_e100];
+                            let t_5 = cuts[_e100];
                             let _e103 = j_2;
                             let _e105 = j_2;
                             let _e109 = cuts[(_e105 + 1u)];
                             cuts[_e103] = _e109;
                             let _e110 = j_2;
-                            cuts[(_e110 + 1u)] = t_6;
+                            cuts[(_e110 + 1u)] = t_5;
                         }
                     }
                     continuing {
@@ -2928,8 +2936,8 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
 fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_2);
     let w_3 = (v_s + inv_h);
-    let r_11 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_11) / (0.000100000005f * 0.0001f))));
+    let r_10 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
@@ -3629,9 +3637,9 @@ fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
-fn airlight_diff_of_products(a_14: f32, b_11: f32, c_7: f32, d_1: f32, key_3: u32) -> f32 {
+fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
     let _e5 = airlight_two_product(a_14, b_11, key_3);
-    let _e6 = airlight_two_product(c_7, d_1, key_3);
+    let _e6 = airlight_two_product(c_6, d_1, key_3);
     let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -3783,90 +3791,90 @@ fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4
 }
 
 fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan {
-    var r_4: AirlightListScan = AirlightListScan(0f, 0f, 0u);
+    var r_3: AirlightListScan = AirlightListScan(0f, 0f, 0u);
     var worst_error: f32 = -1f;
 
     if (count_1 > 0u) {
-        let _e12 = r_4.total;
-        r_4.total = (_e12 + l_2.panel_a.z);
-        let _e17 = r_4.errors;
-        r_4.errors = (_e17 + l_2.panel_a.w);
+        let _e12 = r_3.total;
+        r_3.total = (_e12 + l_2.panel_a.z);
+        let _e17 = r_3.errors;
+        r_3.errors = (_e17 + l_2.panel_a.w);
         let _e23 = worst_error;
         if (l_2.panel_a.w > _e23) {
-            r_4.worst = 0u;
+            r_3.worst = 0u;
             worst_error = l_2.panel_a.w;
         }
     }
     if (count_1 > 1u) {
-        let _e32 = r_4.total;
-        r_4.total = (_e32 + l_2.panel_b.z);
-        let _e37 = r_4.errors;
-        r_4.errors = (_e37 + l_2.panel_b.w);
+        let _e32 = r_3.total;
+        r_3.total = (_e32 + l_2.panel_b.z);
+        let _e37 = r_3.errors;
+        r_3.errors = (_e37 + l_2.panel_b.w);
         let _e43 = worst_error;
         if (l_2.panel_b.w > _e43) {
-            r_4.worst = 1u;
+            r_3.worst = 1u;
             worst_error = l_2.panel_b.w;
         }
     }
     if (count_1 > 2u) {
-        let _e52 = r_4.total;
-        r_4.total = (_e52 + l_2.panel_c.z);
-        let _e57 = r_4.errors;
-        r_4.errors = (_e57 + l_2.panel_c.w);
+        let _e52 = r_3.total;
+        r_3.total = (_e52 + l_2.panel_c.z);
+        let _e57 = r_3.errors;
+        r_3.errors = (_e57 + l_2.panel_c.w);
         let _e63 = worst_error;
         if (l_2.panel_c.w > _e63) {
-            r_4.worst = 2u;
+            r_3.worst = 2u;
             worst_error = l_2.panel_c.w;
         }
     }
     if (count_1 > 3u) {
-        let _e72 = r_4.total;
-        r_4.total = (_e72 + l_2.panel_d.z);
-        let _e77 = r_4.errors;
-        r_4.errors = (_e77 + l_2.panel_d.w);
+        let _e72 = r_3.total;
+        r_3.total = (_e72 + l_2.panel_d.z);
+        let _e77 = r_3.errors;
+        r_3.errors = (_e77 + l_2.panel_d.w);
         let _e83 = worst_error;
         if (l_2.panel_d.w > _e83) {
-            r_4.worst = 3u;
+            r_3.worst = 3u;
             worst_error = l_2.panel_d.w;
         }
     }
     if (count_1 > 4u) {
-        let _e92 = r_4.total;
-        r_4.total = (_e92 + l_2.panel_e.z);
-        let _e97 = r_4.errors;
-        r_4.errors = (_e97 + l_2.panel_e.w);
+        let _e92 = r_3.total;
+        r_3.total = (_e92 + l_2.panel_e.z);
+        let _e97 = r_3.errors;
+        r_3.errors = (_e97 + l_2.panel_e.w);
         let _e103 = worst_error;
         if (l_2.panel_e.w > _e103) {
-            r_4.worst = 4u;
+            r_3.worst = 4u;
             worst_error = l_2.panel_e.w;
         }
     }
     if (count_1 > 5u) {
-        let _e112 = r_4.total;
-        r_4.total = (_e112 + l_2.panel_f.z);
-        let _e117 = r_4.errors;
-        r_4.errors = (_e117 + l_2.panel_f.w);
+        let _e112 = r_3.total;
+        r_3.total = (_e112 + l_2.panel_f.z);
+        let _e117 = r_3.errors;
+        r_3.errors = (_e117 + l_2.panel_f.w);
         let _e123 = worst_error;
         if (l_2.panel_f.w > _e123) {
-            r_4.worst = 5u;
+            r_3.worst = 5u;
             worst_error = l_2.panel_f.w;
         }
     }
-    let _e129 = r_4;
+    let _e129 = r_3;
     return _e129;
 }
 
 fn airlight_asinh(x_11: f32) -> f32 {
-    var r_5: f32;
+    var r_4: f32;
 
     let a_24 = abs(x_11);
-    r_5 = (AIRLIGHT_LN_2_ + log(a_24));
+    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
     if (a_24 <= 4096f) {
         let _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1f + sqrt((1f + (a_24 * a_24)))))));
-        r_5 = _e17;
+        r_4 = _e17;
     }
-    let _e18 = r_5;
-    let _e19 = r_5;
+    let _e18 = r_4;
+    let _e19 = r_4;
     return select(_e18, -(_e19), (x_11 < 0f));
 }
 
@@ -3879,10 +3887,10 @@ fn airlight_to_w(g_19: AirlightOuter, s_18: f32) -> f32 {
 }
 
 fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
-    let r_12 = (x_12 - 1.5707964f);
-    let z_10 = (r_12 * r_12);
+    let r_11 = (x_12 - 1.5707964f);
+    let z_10 = (r_11 * r_11);
     let cos_r = (1f - ((z_10 / 2f) * (1f - ((z_10 / 12f) * (1f - ((z_10 / 30f) * (1f - ((z_10 / 56f) * (1f - ((z_10 / 90f) * (1f - ((z_10 / 132f) * (1f - (z_10 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
+    let sin_r = (r_11 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
@@ -3892,20 +3900,20 @@ fn airlight_acos(x_13: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
 }
 
-fn airlight_angle(c_8: f32, s_19: f32) -> f32 {
-    if (s_19 <= c_8) {
-        let _e4 = airlight_atan((s_19 / c_8));
+fn airlight_angle(c_7: f32, s_19: f32) -> f32 {
+    if (s_19 <= c_7) {
+        let _e4 = airlight_atan((s_19 / c_7));
         return _e4;
     }
-    if (s_19 <= -(c_8)) {
-        let _e10 = airlight_atan((s_19 / -(c_8)));
+    if (s_19 <= -(c_7)) {
+        let _e10 = airlight_atan((s_19 / -(c_7)));
         return (AIRLIGHT_PI - _e10);
     }
-    if (c_8 >= 0f) {
-        let _e16 = airlight_atan((c_8 / s_19));
+    if (c_7 >= 0f) {
+        let _e16 = airlight_atan((c_7 / s_19));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_8) / s_19));
+    let _e21 = airlight_atan((-(c_7) / s_19));
     return (1.5707964f + _e21);
 }
 
@@ -3980,10 +3988,10 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     let _e79 = cuts_1[1];
     let _e81 = cuts_1[0];
     if (_e79 < _e81) {
-        let c_11 = cuts_1[0];
+        let c_10 = cuts_1[0];
         let _e87 = cuts_1[1];
         cuts_1[0] = _e87;
-        cuts_1[1] = c_11;
+        cuts_1[1] = c_10;
     }
     loop {
         let _e93 = i_17;
@@ -4270,26 +4278,26 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let _e232 = cuts_2[1];
     let _e234 = cuts_2[0];
     if (_e232 < _e234) {
-        let c_12 = cuts_2[0];
+        let c_11 = cuts_2[0];
         let _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_12;
+        cuts_2[1] = c_11;
     }
     let _e243 = cuts_2[2];
     let _e245 = cuts_2[1];
     if (_e243 < _e245) {
-        let c_13 = cuts_2[1];
+        let c_12 = cuts_2[1];
         let _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_13;
+        cuts_2[2] = c_12;
     }
     let _e254 = cuts_2[1];
     let _e256 = cuts_2[0];
     if (_e254 < _e256) {
-        let c_14 = cuts_2[0];
+        let c_13 = cuts_2[0];
         let _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_14;
+        cuts_2[1] = c_13;
     }
     let _e264 = g_21;
     let _e265 = airlight_to_w(_e264, _e15);
@@ -4347,11 +4355,11 @@ fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_14: f32) -> A
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let i_21 = min(u32(max(floor(x_14), 0f)), (g_22.panels - 1u));
-        let t_7 = (x_14 - f32(i_21));
+        let t_6 = (x_14 - f32(i_21));
         let a_27 = g_22.gamma[i_21];
         let b_18 = g_22.gamma[(i_21 + 1u)];
-        let gamma = (a_27 + ((((b_18 - a_27) * t_7) * t_7) * ((3f - t_7) - t_7)));
-        let jacobian = ((((b_18 - a_27) * 6f) * t_7) * (1f - t_7));
+        let gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3f - t_6) - t_6)));
+        let jacobian = ((((b_18 - a_27) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
             let _e45 = p;
             return AirlightNode(_e45, 0f);
@@ -4402,7 +4410,7 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     var j_4: u32;
     var local_112: bool;
     var f: f32;
-    var r_6: AirlightResult;
+    var r_5: AirlightResult;
     var local_113: bool;
     var local_114: bool;
     var local_115: bool;
@@ -4436,7 +4444,7 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
         {
             let _e60 = a_16;
             let _e61 = b_12;
-            let c_15 = (0.5f * (_e60 + _e61));
+            let c_14 = (0.5f * (_e60 + _e61));
             let _e65 = b_12;
             let _e66 = a_16;
             let hw_1 = (0.5f * (_e65 - _e66));
@@ -4460,12 +4468,12 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         local_112 = false;
                     }
                     let _e100 = local_112;
-                    let w_5 = select((c_15 + (hw_1 * node.x)), (c_15 - (hw_1 * node.x)), _e100);
+                    let w_5 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
                     let _e102 = airlight_outer_node(s_24, _e6, w_5);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
-                        r_6 = AirlightResult(0f, 0u);
+                        r_5 = AirlightResult(0f, 0u);
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
@@ -4478,12 +4486,12 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
                             let _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_6 = _e123;
+                            r_5 = _e123;
                         }
-                        let _e125 = r_6.in_scatter;
+                        let _e125 = r_5.in_scatter;
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
-                            let _e132 = r_6.status;
+                            let _e132 = r_5.status;
                             local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
                             local_114 = true;
@@ -4499,10 +4507,10 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         }
                         let _e149 = local_115;
                         if _e149 {
-                            let _e150 = r_6;
+                            let _e150 = r_5;
                             return _e150;
                         }
-                        let _e152 = r_6.in_scatter;
+                        let _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
                     let _e155 = k_7;

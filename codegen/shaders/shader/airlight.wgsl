@@ -866,14 +866,11 @@ fn airlight_error_factor(c: array<f32, AIRLIGHT_TERMS>, m: array<f32, AIRLIGHT_T
     return min(aliasing + measured * truncation / m[0], 1.0);
 }
 
-/// 1/ρ of the Bernstein ellipse of [c − r, c + r] through it (panels.rs `decay_rate`).
-fn airlight_decay_rate(c: f32, r: f32, t: f32) -> f32 {
-    let inv = 1.0 / r;
-    let re = c * inv;
-    let im = t * inv;
+/// ρ of the Bernstein ellipse of [−1, 1] through re + i·im (panels.rs `bernstein_rho`).
+fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2 = im * im;
     let a = (sqrt((re - 1.0) * (re - 1.0) + im2) + sqrt((re + 1.0) * (re + 1.0) + im2)) * 0.5;
-    return 1.0 / (a + sqrt(max(a * a - 1.0, 0.0)));
+    return a + sqrt(max(a * a - 1.0, 0.0));
 }
 
 /// The transform's rounding: 4Nε·mass·mean.
@@ -932,7 +929,7 @@ fn airlight_v_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     @EACH_TERM@ sum += c[{k}] * m[{k}];
     let w = airlight_factor(half, a, b) * r;
     let mass = w * m[0];
-    let floor = airlight_singular_floor(heights, steps, vc, r);
+    let floor = airlight_singular_floor(heights, steps, vc, r, false);
     let error = mass * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * sum, error, airlight_transform_noise(mass, g_avg), mass * over_max, f_max);
 }
@@ -964,7 +961,7 @@ fn airlight_y_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Ai
     var m = airlight_zero_terms();
     m[0] = 2.0;
     // the exponential's essential singularity at y = 0 as well
-    let floor = max(airlight_decay_rate(yc, r, 0.0), airlight_singular_floor(heights, steps, yc, r));
+    let floor = airlight_singular_floor(heights, steps, yc, r, true);
     let error = w * 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m, floor);
     return airlight_panel_result(w * 2.0 * c[0], error, airlight_transform_noise(w * 2.0, p_avg), w * mass * over_max, f_max);
 }
@@ -1041,10 +1038,16 @@ fn airlight_panel(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: Airl
     return airlight_v_panel(s, g, sigma, half, a, b, heights_v, steps);
 }
 
-/// The least rate the coefficients on [c − r, c + r] can fall at beyond c_{N−1} (panels.rs
-/// `Singular::floor`).
-fn airlight_singular_floor(heights: vec3<f32>, steps: vec3<f32>, c: f32, r: f32) -> f32 {
-    return max(steps.x * airlight_decay_rate(c, r, heights.x), max(steps.y * airlight_decay_rate(c, r, heights.y), steps.z * airlight_decay_rate(c, r, heights.z)));
+/// The least rate the coefficients on [c − r, c + r] can fall at beyond c_{N−1}, 1/min(ρ/step),
+/// with `origin` also the exponential's singularity at y = 0 (panels.rs `Singular::floor`).
+fn airlight_singular_floor(heights: vec3<f32>, steps: vec3<f32>, c: f32, r: f32, origin: bool) -> f32 {
+    let inv = 1.0 / r;
+    let re = c * inv;
+    var rho = select(AIRLIGHT_FLT_MAX, airlight_bernstein_rho(re, 0.0), origin);
+    rho = min(rho, airlight_bernstein_rho(re, heights.x * inv) / steps.x);
+    rho = min(rho, airlight_bernstein_rho(re, heights.y * inv) / steps.y);
+    rho = min(rho, airlight_bernstein_rho(re, heights.z * inv) / steps.z);
+    return 1.0 / rho;
 }
 
 /// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split

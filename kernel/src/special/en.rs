@@ -11,7 +11,7 @@ use super::e1::in_series_region;
 use super::series::ein_real;
 use super::EULER_GAMMA;
 use super::{banded, C};
-use crate::real::Real;
+use crate::real::{reciprocal, Real};
 
 /// Fills `out[k] = e^x E_{k+1}(x)` for `k = 0..out.len()`, `x ≥ 0`.
 /// At `x = 0`: `E_1 = +∞`, `E_n = 1/(n − 1)`.
@@ -37,33 +37,12 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
         n
     };
     for n in pivot..k_max {
-        out[n] = (T::one() - x * out[n - 1]) * inverse::<T>(n);
+        out[n] = (T::one() - x * out[n - 1]) * reciprocal::<T>(n);
     }
     let inv_x = x.recip();
     for n in (1..pivot).rev() {
         // s_n = (1 − n s_{n+1}) / x
         out[n - 1] = (T::one() - T::from(n).unwrap() * out[n]) * inv_x;
-    }
-}
-
-/// `1/n` for the orders the kernel uses (`n < 32`: `N + 2` with `N ≤ 16` nodes or terms, or the
-/// fixed method's `N ≤ 16` terms) from a table, a division beyond. The table's entry rounded
-/// to `T` adds half an ulp to a step of the upward recurrence, which does not amplify it on
-/// its stable side.
-#[inline]
-fn inverse<T: Real>(n: usize) -> T {
-    const INVERSES: [f64; 32] = {
-        let mut t = [0.0; 32];
-        let mut n = 1;
-        while n < 32 {
-            t[n] = 1.0 / n as f64;
-            n += 1;
-        }
-        t
-    };
-    match INVERSES.get(n) {
-        Some(&inv) if n > 0 => T::lit(inv),
-        _ => T::from(n).unwrap().recip(),
     }
 }
 
