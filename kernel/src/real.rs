@@ -33,6 +33,11 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// Continued-fraction depth by band of `|z|`: the first entry whose bound exceeds `|z|`
     /// gives the depth; the last entry applies to all larger `|z|`.
     const E1_CF_DEPTH: &'static [(f64, usize)];
+    /// Depth of the real `e^x E_n(x)` fraction ([`en_scaled`](crate::special::en_scaled)) by
+    /// band of `x` (the bounds of [`Real::E1_CF_DEPTH`]), for every pivot order `n ≤ min(⌈x⌉,
+    /// 32)`: on the real axis it converges faster than the complex `E1` fraction near the
+    /// imaginary axis, but for large `n` more slowly than for `n = 1`.
+    const EN_CF_DEPTH: &'static [(f64, usize)];
     /// Gauss–Legendre nodes on `[-1, 1]` (positive half) and weights for short sub-intervals.
     const GAUSS_NODES: &'static [(f64, f64)];
     /// The default error-controlled path ([`crate::panels`]): Gauss–Legendre nodes per panel,
@@ -116,6 +121,18 @@ impl Real for f64 {
         (300.0, 4),
         (f64::INFINITY, 2),
     ];
+    const EN_CF_DEPTH: &'static [(f64, usize)] = &[
+        (5.0, 37),
+        (6.0, 21),
+        (8.0, 19),
+        (11.0, 15),
+        (15.0, 13),
+        (25.0, 11),
+        (50.0, 8),
+        (100.0, 6),
+        (300.0, 4),
+        (f64::INFINITY, 3),
+    ];
     // 8-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
@@ -146,6 +163,8 @@ impl Real for f32 {
     const E1_DD_BANDS: &'static [(f64, usize)] = &[(0.125, 5), (0.5, 7), (f64::INFINITY, 10)];
     const E1_CF_DEPTH: &'static [(f64, usize)] =
         &[(2.5, 14), (3.0, 11), (4.0, 9), (5.0, 7), (7.0, 6), (10.0, 4), (15.0, 3), (30.0, 2), (f64::INFINITY, 1)];
+    const EN_CF_DEPTH: &'static [(f64, usize)] =
+        &[(2.5, 14), (3.0, 7), (4.0, 6), (5.0, 5), (7.0, 4), (10.0, 3), (15.0, 2), (30.0, 2), (f64::INFINITY, 1)];
     // 4-point Gauss–Legendre (Abramowitz & Stegun table 25.4).
     const GAUSS_NODES: &'static [(f64, f64)] = &[
         (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),

@@ -390,34 +390,6 @@ bool airlight_in_series_region(vec2 z_5) {
     return (((x_15 * x_15) + (y_4 * y_4)) < 1.0);
 }
 
-uint airlight_cf_depth(float r) {
-    if ((r < 2.5)) {
-        return 14u;
-    }
-    if ((r < 3.0)) {
-        return 11u;
-    }
-    if ((r < 4.0)) {
-        return 9u;
-    }
-    if ((r < 5.0)) {
-        return 7u;
-    }
-    if ((r < 7.0)) {
-        return 6u;
-    }
-    if ((r < 10.0)) {
-        return 4u;
-    }
-    if ((r < 15.0)) {
-        return 3u;
-    }
-    if ((r < 30.0)) {
-        return 2u;
-    }
-    return 1u;
-}
-
 uint airlight_cf_depth_squared(float r2_) {
     if ((r2_ < 6.25)) {
         return 14u;
@@ -441,6 +413,34 @@ uint airlight_cf_depth_squared(float r2_) {
         return 3u;
     }
     if ((r2_ < 900.0)) {
+        return 2u;
+    }
+    return 1u;
+}
+
+uint airlight_en_cf_depth(float r) {
+    if ((r < 2.5)) {
+        return 14u;
+    }
+    if ((r < 3.0)) {
+        return 7u;
+    }
+    if ((r < 4.0)) {
+        return 6u;
+    }
+    if ((r < 5.0)) {
+        return 5u;
+    }
+    if ((r < 7.0)) {
+        return 4u;
+    }
+    if ((r < 10.0)) {
+        return 3u;
+    }
+    if ((r < 15.0)) {
+        return 2u;
+    }
+    if ((r < 30.0)) {
         return 2u;
     }
     return 1u;
@@ -532,7 +532,7 @@ vec2 airlight_e1_scaled(vec2 z_7) {
 float airlight_en_scaled_cf(float x_4, uint n) {
     float t_2 = 0.0;
     uint i_1 = 0u;
-    uint _e2 = airlight_cf_depth(x_4);
+    uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_5 = float(_e2);
     float b_14 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));

@@ -493,34 +493,6 @@ fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
     return (((x_15 * x_15) + (y_4 * y_4)) < 1f);
 }
 
-fn airlight_cf_depth(r: f32) -> u32 {
-    if (r < 2.5f) {
-        return 14u;
-    }
-    if (r < 3f) {
-        return 11u;
-    }
-    if (r < 4f) {
-        return 9u;
-    }
-    if (r < 5f) {
-        return 7u;
-    }
-    if (r < 7f) {
-        return 6u;
-    }
-    if (r < 10f) {
-        return 4u;
-    }
-    if (r < 15f) {
-        return 3u;
-    }
-    if (r < 30f) {
-        return 2u;
-    }
-    return 1u;
-}
-
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
     if (r2_ < 6.25f) {
         return 14u;
@@ -544,6 +516,34 @@ fn airlight_cf_depth_squared(r2_: f32) -> u32 {
         return 3u;
     }
     if (r2_ < 900f) {
+        return 2u;
+    }
+    return 1u;
+}
+
+fn airlight_en_cf_depth(r: f32) -> u32 {
+    if (r < 2.5f) {
+        return 14u;
+    }
+    if (r < 3f) {
+        return 7u;
+    }
+    if (r < 4f) {
+        return 6u;
+    }
+    if (r < 5f) {
+        return 5u;
+    }
+    if (r < 7f) {
+        return 4u;
+    }
+    if (r < 10f) {
+        return 3u;
+    }
+    if (r < 15f) {
+        return 2u;
+    }
+    if (r < 30f) {
         return 2u;
     }
     return 1u;
@@ -635,7 +635,7 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     var t_2: f32;
     var i_1: u32 = 0u;
 
-    let _e2 = airlight_cf_depth(x_4);
+    let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_5 = f32(_e2);
     let b_14 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));

@@ -28,7 +28,17 @@ not the float rounding the kernel's tests cover):
     its minimum modulus on the disc is on the circle, 128 points);
   * per band: the smallest depth whose relative error is at most 8u over the band's inner
     edge (|z| = previous bound, or the ellipse for the first band; 48 angles in [0, pi/2],
-    points inside the ellipse skipped), where the fraction converges slowest.
+    points inside the ellipse skipped), where the fraction converges slowest;
+  * EN_CF_DEPTH, the real e^x E_n(x) of special/en.rs: beyond the series region's real edge
+    (the ellipse's semi-axis a) the routine starts from the fraction
+      1/(x + n - 1 n/(x + n + 2 - 2(n+1)/(x + n + 4 - ...)))   (A&S 5.1.22)
+    at its pivot order n = min(ceil x, the orders asked for), the tail replaced by its fixed
+    point as above. On the real axis it converges much faster than near the imaginary one, but
+    more slowly for large n than for n = 1. Per band of x (the same bounds as E1_CF_DEPTH):
+    the smallest depth whose relative error is at most 8u at 9 points of the band (its inner
+    edge, where the error is largest, and 8 more; the last, unbounded band at 1, 1.5, 2 and 4
+    times its edge) for
+    every pivot 1 <= n <= min(ceil x, EN_MAX_ORDER).
 The band bounds and ellipse are the kernel's choices (e1.rs module docs: where the series'
 cancellation along the real axis, ~e^{2x} ulps, and the fraction's depth along the imaginary
 axis balance); this script takes them as given and checks what they imply.
@@ -66,7 +76,7 @@ def committed():
             t = re.search(name + r": &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
             return [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", t.group(1))]
 
-        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"), table("E1_DD_BANDS"))
+        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"), table("E1_DD_BANDS"), table("EN_CF_DEPTH"))
     return out
 
 
@@ -95,6 +105,37 @@ def cf_error(z, d):
     approx = 1 / t
     exact = mp.exp(z) * mp.e1(z)
     return abs(approx - exact) / abs(exact)
+
+
+# The most orders en_scaled is asked for (integrals.rs t_moments: 32).
+EN_MAX_ORDER = 32
+
+
+def en_cf_error(x, n, d):
+    """|e^x E_n(x) by the fraction at depth d - e^x E_n(x)| / e^x E_n(x), as special/en.rs
+    evaluates it (the tail t_{d+1} the fixed point of t = b - a/t)."""
+    b = x + n + 2 * (d + 1)
+    a = (d + 2) * (n + d + 1)
+    disc = 1 - 4 * a / (b * b)
+    t = b * (1 + mp.sqrt(disc)) / 2 if disc > 0 else b
+    for k in range(d, 0, -1):
+        t = x + n + 2 * k - (k + 1) * (n + k) / t
+    approx = 1 / (x + n - n / t)
+    exact = mp.exp(x) * mp.expint(n, x)
+    return abs(approx - exact) / exact
+
+
+def en_depth(lo, hi, unit):
+    """The smallest depth for x in [lo, hi) at every pivot the routine can take there, and the
+    largest error at it."""
+    xs = [mp.mpf(lo) * f for f in (1, 1.5, 2, 4)] if math.isinf(hi) else [mp.mpf(lo) + (mp.mpf(hi) - lo) * i / 9 for i in range(9)]
+    cases = [(x, n) for x in xs for n in range(1, min(int(mp.ceil(x)), EN_MAX_ORDER) + 1)]
+    d = 0
+    while True:
+        worst = max(en_cf_error(x, n, d) for x, n in cases)
+        if worst <= TOLERANCE * unit:
+            return d, worst
+        d += 1
 
 
 def dd_terms(radius, unit):
@@ -128,7 +169,7 @@ def inside(z, ell):
 def main():
     mismatches = 0
     for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
-        ell, terms_now, series_now, bands_now, dd_now = committed()[prec]
+        ell, terms_now, series_now, bands_now, dd_now, en_now = committed()[prec]
         a, b = ell
         boundary = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in (math.pi / 2 * i / 63 for i in range(64))]
         n, worst = fewest(series_error, boundary, unit)
@@ -169,6 +210,16 @@ def main():
             lo = "ellipse" if inner is None else f"{inner:g}"
             print(f"{prec}: fraction for {lo} <= |z| < {bound:g}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
             inner = bound
+        if [b for b, _ in en_now] != [b for b, _ in bands_now]:
+            mismatches += 1
+            print(f"{prec}: EN_CF_DEPTH's bands differ from E1_CF_DEPTH's   <--")
+        lo = a
+        for bound, depth_now in en_now:
+            d, worst = en_depth(lo, bound, unit)
+            flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
+            mismatches += d != depth_now
+            print(f"{prec}: real fraction e^x E_n(x) for {lo:g} <= x < {bound:g}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
+            lo = bound
     print(f"{mismatches} differences from kernel/src/real.rs")
     return 1 if mismatches else 0
 

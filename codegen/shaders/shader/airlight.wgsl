@@ -412,13 +412,14 @@ fn airlight_in_series_region(z: vec2<f32>) -> bool {
     return x * x + y * y < 1.0;
 }
 
-/// The continued fraction's depth at |z| = r (real.rs `E1_CF_DEPTH`), and at |z|² = r2.
-fn airlight_cf_depth(r: f32) -> u32 {
-@E1_CF_DEPTH@
-}
-
+/// The complex fraction's depth at |z|² = r2 (real.rs `E1_CF_DEPTH`).
 fn airlight_cf_depth_squared(r2: f32) -> u32 {
 @E1_CF_DEPTH_SQUARED@
+}
+
+/// The real e^x E_n(x) fraction's depth at x = r (real.rs `EN_CF_DEPTH`).
+fn airlight_en_cf_depth(r: f32) -> u32 {
+@EN_CF_DEPTH@
 }
 
 /// e^z E1(z) by the continued fraction (A&S 5.1.22) with the tail estimate; depth by |z|.
@@ -464,7 +465,7 @@ fn airlight_e1_scaled(z: vec2<f32>) -> vec2<f32> {
 
 /// e^x E_n(x) by its continued fraction, x outside the series region.
 fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
-    let depth = airlight_cf_depth(x);
+    let depth = airlight_en_cf_depth(x);
     let nf = f32(n);
     let m = f32(depth);
     let b = x + nf + 2.0 * (m + 1.0);

@@ -149,8 +149,8 @@ impl Constants {
         let control = airlight::SHADER_CONTROL;
         let panel_list = 1 + (control.max_panels - 1) / 2;
         let (re, im) = <f32 as Real>::E1_SERIES_ELLIPSE;
-        let depth = <f32 as Real>::E1_CF_DEPTH;
-        let chain = |square: bool| {
+        let (depth, en_depth) = (<f32 as Real>::E1_CF_DEPTH, <f32 as Real>::EN_CF_DEPTH);
+        let chain = |depth: &[(f64, usize)], square: bool| {
             let mut body = String::new();
             for &(bound, d) in depth {
                 if bound.is_finite() {
@@ -229,9 +229,9 @@ impl Constants {
             ("@E1_CF_PLAIN_FROM@", airlight::special::PLAIN_FROM.to_string()),
             ("@E1_INV_RE@", f(1.0 / re)),
             ("@E1_INV_IM@", f(1.0 / im)),
-            ("@E1_CF_MAX_DEPTH@", depth.iter().map(|d| d.1).max().unwrap_or(0).to_string()),
-            ("@E1_CF_DEPTH@", chain(false)),
-            ("@E1_CF_DEPTH_SQUARED@", chain(true)),
+            ("@E1_CF_MAX_DEPTH@", depth.iter().chain(en_depth).map(|d| d.1).max().unwrap_or(0).to_string()),
+            ("@E1_CF_DEPTH_SQUARED@", chain(depth, true)),
+            ("@EN_CF_DEPTH@", chain(en_depth, false)),
             ("@SHORT_NODES@", short.len().to_string()),
             ("@SHORT_RULE@", list(short)),
             ("@MAX_POWER@", max_power.to_string()),

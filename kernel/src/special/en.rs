@@ -48,11 +48,13 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
 
 /// `e^x E_n(x)` by the continued fraction
 /// `1/(x + n − 1·n/(x + n + 2 − 2(n+1)/(x + n + 4 − …)))`, outside the `E1` series region,
-/// with the same tail estimate and depth table as the complex `E1` fraction (order 1
-/// converges slowest, so the table is conservative for `n > 1`).
+/// with the complex `E1` fraction's tail estimate and its own depth table,
+/// [`Real::EN_CF_DEPTH`] (truncation ≤ 8 unit roundoffs for every pivot `n ≤ min(⌈x⌉, 32)`,
+/// tests/reference/gen_e1_tuning.py: shallower than the complex table between 2.5 and 25
+/// (f32: 15), deeper beyond 25 (f64), where large `n` converges more slowly than `n = 1`).
 fn en_scaled_cf<T: Real>(x: T, n: usize) -> T {
     let xf = x.to_f64_exact();
-    let depth = banded(xf * xf, T::E1_CF_DEPTH);
+    let depth = banded(xf * xf, T::EN_CF_DEPTH);
     let nf = T::from(n).unwrap();
     let two = T::lit(2.0);
     let m = T::from(depth).unwrap();
