@@ -111,7 +111,7 @@ mod tests {
     /// every power a distribution uses (`c^p`, `p ≤ 1024`) and negative ones, in both precisions.
     #[test]
     fn powi_matches_the_library_bitwise() {
-        let xs = [0.0, -0.0, 1e-3, 0.1, 0.3, 0.5, 0.7071, 0.9, 0.99, 0.999_999, 1.0, -0.37, -0.93, 1.5, -2.25, 7.0];
+        let xs = [0.0, -0.0, 1e-3, 0.1, 0.3, 0.5, 0.7072, 0.9, 0.99, 0.999_999, 1.0, -0.37, -0.93, 1.5, -2.25, 7.0];
         for &x in &xs {
             for n in (-40..=64).chain((66..=1024).step_by(34)) {
                 let n = black_box(n);
