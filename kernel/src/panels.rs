@@ -40,6 +40,7 @@
 use crate::expansion::{gauss_table, Expandable};
 use crate::integrals::Half;
 use crate::real::{reciprocal, Real};
+use crate::scalar::Scalar;
 use crate::special::en_scaled;
 
 /// Error control of the panel integration.
@@ -193,7 +194,7 @@ impl<T: Real> Singular<T> {
         let root = (T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap()).sqrt();
         for (t, order) in s {
             let twice = ((order - T::one()) * T::lit(2.0)).ceil();
-            let factor = if twice > T::zero() { twice.to_u32().map_or(T::infinity(), |k| power_by_squaring(root, k)) } else { T::one() };
+            let factor = if twice > T::zero() { twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(root, k)) } else { T::one() };
             match (0..count).find(|&i| y[i] == t) {
                 Some(i) => step[i] = step[i].max(factor),
                 None => {
@@ -218,19 +219,6 @@ impl<T: Real> Singular<T> {
         }
         rho.recip()
     }
-}
-
-/// `x^k` by repeated squaring.
-fn power_by_squaring<T: Real>(mut x: T, mut k: u32) -> T {
-    let mut out = T::one();
-    while k > 0 {
-        if k & 1 == 1 {
-            out = out * x;
-        }
-        x = x * x;
-        k >>= 1;
-    }
-    out
 }
 
 /// What one panel's samples say, in the half's scaling.
