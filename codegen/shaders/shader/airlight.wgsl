@@ -463,7 +463,9 @@ fn airlight_e1_scaled(z: vec2<f32>) -> vec2<f32> {
     return airlight_e1_scaled_cf(z);
 }
 
-/// e^x E_n(x) by its continued fraction, x outside the series region.
+/// e^x E_n(x) by its continued fraction, x outside the series region, bottom-up (the kernel
+/// takes its deep fractions top-down in f64, one division instead of a chain of them: a CPU's
+/// latency, not a GPU's; the same fraction and tail).
 fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
     let depth = airlight_en_cf_depth(x);
     let nf = f32(n);
@@ -484,7 +486,8 @@ fn airlight_en_scaled_cf(x: f32, n: u32) -> f32 {
 }
 
 /// out[n − 1] = e^x E_n(x), n = 1 … AIRLIGHT_EN_ORDERS, x ≥ 0 (special/en.rs `en_scaled`):
-/// recurrences away from the pivot order n* ≈ x (Miller's rule), written out (unrolled.rs).
+/// recurrences away from the pivot order n* ≈ x (Miller's rule), written out (unrolled.rs),
+/// one order a step (the kernel's two interleaved chains only shorten a CPU's latency).
 fn airlight_en_scaled(x: f32) -> array<f32, AIRLIGHT_EN_ORDERS> {
     var out = array<f32, AIRLIGHT_EN_ORDERS>(@ZEROS_EN@);
     if (x == 0.0) {
