@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Derives the complex E1 tuning of kernel/src/real.rs (E1_SERIES_TERMS, E1_SERIES_BANDS,
-E1_CF_DEPTH) from the region bounds, and shows each choice's measured truncation error, so the tables can be
+E1_CF_DEPTH, E1_CF_DEPTH_NEAR_REAL) from the region bounds, and shows each choice's measured truncation error, so the tables can be
 reproduced and re-derived when a bound moves.
 
 What the kernel evaluates (kernel/src/special/): for Re z >= 0,
@@ -29,6 +29,10 @@ not the float rounding the kernel's tests cover):
   * per band: the smallest depth whose relative error is at most 8u over the band's inner
     edge (|z| = previous bound, or the ellipse for the first band; 48 angles in [0, pi/2],
     points inside the ellipse skipped), where the fraction converges slowest;
+  * E1_CF_DEPTH_NEAR_REAL, the same within 45 degrees of the real axis (|Im z| <= Re z, 48
+    angles in [0, pi/4]): the fraction converges faster away from the imaginary axis, slowest
+    at the sector's edge (a precision whose table is `Self::E1_CF_DEPTH` by choice, f32, gets
+    the truncation the main depths leave in the sector printed instead);
   * EN_CF_DEPTH, the real e^x E_n(x) of special/en.rs: beyond the series region's real edge
     (the ellipse's semi-axis a) the routine starts from the fraction
       1/(x + n - 1 n/(x + n + 2 - 2(n+1)/(x + n + 4 - ...)))   (A&S 5.1.22)
@@ -73,10 +77,13 @@ def committed():
         terms = re.search(r"E1_SERIES_TERMS: usize = (\d+)", block)
 
         def table(name):
-            t = re.search(name + r": &'static \[\(f64, usize\)\] =\s*&\[(.*?)\];", block, re.S)
+            # the first definition after the impl's start is this precision's
+            t = re.search(name + r": &'static \[\(f64, usize\)\] =\s*(?:&\[(.*?)\]|Self::E1_CF_DEPTH);", block, re.S)
+            if t.group(1) is None:
+                return None  # the main table, by choice (real.rs says why)
             return [(math.inf if b.strip() == "f64::INFINITY" else float(b), int(d)) for b, d in re.findall(r"\(([^,]+), (\d+)\)", t.group(1))]
 
-        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"), table("E1_DD_BANDS"), table("EN_CF_DEPTH"))
+        out[prec] = ((float(ell.group(1)), float(ell.group(2))), int(terms.group(1)), table("E1_SERIES_BANDS"), table("E1_CF_DEPTH"), table("E1_DD_BANDS"), table("EN_CF_DEPTH"), table("E1_CF_DEPTH_NEAR_REAL"))
     return out
 
 
@@ -169,7 +176,7 @@ def inside(z, ell):
 def main():
     mismatches = 0
     for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
-        ell, terms_now, series_now, bands_now, dd_now, en_now = committed()[prec]
+        ell, terms_now, series_now, bands_now, dd_now, en_now, near_now = committed()[prec]
         a, b = ell
         boundary = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in (math.pi / 2 * i / 63 for i in range(64))]
         n, worst = fewest(series_error, boundary, unit)
@@ -195,21 +202,39 @@ def main():
             mismatches += n != n_now
             edge = "<= 1 (the routine's domain)" if math.isinf(bound) else f"< {radius:g}"
             print(f"{prec}: divided differences for max(|a|, |b|) {edge}: {n} terms, dropped <= {float(ratio) / unit:.2f} u of the value")
-        inner = None
-        for bound, depth_now in bands_now:
-            angles = [math.pi / 2 * i / 47 for i in range(48)]
-            if inner is None:
-                # the ellipse's edge: |z| there is the smallest the fraction sees at that angle
-                edge = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in angles]
-            else:
-                edge = [mp.mpc(inner * math.cos(th), inner * math.sin(th)) for th in angles]
-                edge = [z for z in edge if not inside(z, ell)]
-            d, worst = fewest(cf_error, edge, unit)
-            flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
-            mismatches += d != depth_now
-            lo = "ellipse" if inner is None else f"{inner:g}"
-            print(f"{prec}: fraction for {lo} <= |z| < {bound:g}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
-            inner = bound
+        derive_near = near_now is not None
+        if near_now is None:
+            near_now = bands_now
+            print(f"{prec}: E1_CF_DEPTH_NEAR_REAL is E1_CF_DEPTH (not derived); what it leaves within 45 deg:")
+        if [b for b, _ in near_now] != [b for b, _ in bands_now]:
+            mismatches += 1
+            print(f"{prec}: E1_CF_DEPTH_NEAR_REAL's bands differ from E1_CF_DEPTH's   <--")
+        for table, widest, where in ((bands_now, math.pi / 2, ""), (near_now, math.pi / 4, " within 45 deg of the real axis")):
+            inner = None
+            for bound, depth_now in table:
+                angles = [widest * i / 47 for i in range(48)]
+                if inner is None:
+                    # the ellipse's edge: |z| there is the smallest the fraction sees at that angle
+                    edge = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in angles]
+                else:
+                    edge = [mp.mpc(inner * math.cos(th), inner * math.sin(th)) for th in angles]
+                    edge = [z for z in edge if not inside(z, ell)]
+                if not derive_near and table is near_now:
+                    worst = max(cf_error(z, depth_now) for z in edge)
+                    lo = "ellipse" if inner is None else f"{inner:g}"
+                    print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {depth_now} leaves {float(worst) / unit:.2f} u")
+                    inner = bound
+                    continue
+                if edge:
+                    d, worst = fewest(cf_error, edge, unit)
+                else:
+                    # the band lies inside the ellipse in this sector: the series serves it
+                    d, worst = 0, 0.0
+                flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
+                mismatches += d != depth_now
+                lo = "ellipse" if inner is None else f"{inner:g}"
+                print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
+                inner = bound
         if [b for b, _ in en_now] != [b for b, _ in bands_now]:
             mismatches += 1
             print(f"{prec}: EN_CF_DEPTH's bands differ from E1_CF_DEPTH's   <--")

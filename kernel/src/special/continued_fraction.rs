@@ -2,7 +2,7 @@
 //!
 //! `e^z E1(z) = 1/(z + 1 − 1²/(z + 3 − 2²/(z + 5 − 3²/(z + 7 − …))))`,
 //!
-//! convergent for `|arg z| < π`, evaluated bottom-up at a fixed depth (f32's deep fractions
+//! convergent for `|arg z| < π`, evaluated bottom-up at a fixed depth (f32's fractions
 //! top-down in f64: products only, one division). The tail below the last
 //! level is not dropped but replaced by the fixed point of its own recurrence,
 //! `t = b − (n+1)²/t`, which roughly halves the depth needed for a given accuracy
@@ -11,15 +11,18 @@
 use super::{banded, cdiv, csqrt, C};
 use crate::real::Real;
 
-/// `e^z E1(z)` by the continued fraction at the depth [`Real::E1_CF_DEPTH`] gives for `|z|`.
+/// `e^z E1(z)` by the continued fraction at the depth [`Real::E1_CF_DEPTH`] gives for `|z|`
+/// ([`Real::E1_CF_DEPTH_NEAR_REAL`] within 45° of the real axis).
 #[inline]
 pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
     // |z|² against the squared band bounds (no square root needed).
     let (x, y) = (z.re.abs().to_f64_exact(), z.im.abs().to_f64_exact());
     let r2 = if x.max(y) < 1e150 { x * x + y * y } else { f64::INFINITY };
-    let depth = banded(r2, T::E1_CF_DEPTH);
-    if T::epsilon() > T::lit(1e-10) && depth >= PLAIN_FROM {
-        // f32's deep fractions: top-down in f64 (one division in all; the convergents' extra
+    let near_real = z.re >= T::zero() && y <= x;
+    // each table searched as a constant (the compiler unrolls a constant's search)
+    let depth = if near_real { banded(r2, T::E1_CF_DEPTH_NEAR_REAL) } else { banded(r2, T::E1_CF_DEPTH) };
+    if T::epsilon() > T::lit(1e-10) && r2.is_finite() {
+        // f32's fractions: top-down in f64 (one division in all; the convergents' extra
         // rounding is f64's, far below f32's ulp)
         let w = e1_scaled_cf_convergents(C::new(z.re.to_f64_exact(), z.im.to_f64_exact()), depth);
         return C::new(T::lit(w.re), T::lit(w.im));
@@ -30,8 +33,9 @@ pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
 /// The same fraction as [`e1_scaled_cf_depth`] (levels `1..=n`, then its tail), top-down by
 /// the fundamental recurrences `A_k = b_k A_{k−1} + a_k A_{k−2}` (the same for `B`), `b_k = z +
 /// 2k − 1`, `a_k = −(k−1)²`, `b_{n+1}` the tail: products only, one division at the end, so no
-/// chain of division latencies. Used in f64 for f32's fractions (`n ≤ 14` and `|z| < 2.7` by
-/// the f32 depth table, so `|B| ≤ (|z| + 2n + 2)^{n+1} < 1e24`: nothing overflows).
+/// chain of division latencies. Used in f64 for all of f32's fractions: `|B| ≤ (|z| + 2n +
+/// 2)^{n+1}` stays below `1e24` where the f32 tables go deepest (`n = 14`, `|z| < 2.5`) and below
+/// `(3.5e38)² ≈ 1.2e77` for the largest f32 `|z|` (one level beyond 30): nothing overflows.
 fn e1_scaled_cf_convergents(z: C<f64>, n: usize) -> C<f64> {
     let (mut a_prev, mut a_cur) = (C::new(1.0, 0.0), C::new(0.0, 0.0));
     let (mut b_prev, mut b_cur) = (C::new(0.0, 0.0), C::new(1.0, 0.0));
