@@ -173,6 +173,38 @@ def inside(z, ell):
     return (mp.re(z) / a) ** 2 + (mp.im(z) / b) ** 2 < 1
 
 
+def fraction_depths(prec, unit, ell, table, widest, where, derive):
+    """Checks a fraction depth table on its bands' inner edges at angles in [0, widest] (the
+    ellipse's edge for the first band) and returns how many depths differ from the derived
+    ones; with `derive` false only prints what the table's depths leave there."""
+    a, b = ell
+    mismatches = 0
+    inner = None
+    for bound, depth_now in table:
+        angles = [widest * i / 47 for i in range(48)]
+        if inner is None:
+            # the ellipse's edge: |z| there is the smallest the fraction sees at that angle
+            edge = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in angles]
+        else:
+            edge = [mp.mpc(inner * math.cos(th), inner * math.sin(th)) for th in angles]
+            edge = [z for z in edge if not inside(z, ell)]
+        lo = "ellipse" if inner is None else f"{inner:g}"
+        inner = bound
+        if not derive:
+            worst = max(cf_error(z, depth_now) for z in edge)
+            print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {depth_now} leaves {float(worst) / unit:.2f} u")
+            continue
+        if edge:
+            d, worst = fewest(cf_error, edge, unit)
+        else:
+            # the band lies inside the ellipse in this sector: the series serves it
+            d, worst = 0, 0.0
+        flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
+        mismatches += d != depth_now
+        print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
+    return mismatches
+
+
 def main():
     mismatches = 0
     for prec, unit in (("f64", 2.0 ** -53), ("f32", 2.0 ** -24)):
@@ -203,38 +235,14 @@ def main():
             edge = "<= 1 (the routine's domain)" if math.isinf(bound) else f"< {radius:g}"
             print(f"{prec}: divided differences for max(|a|, |b|) {edge}: {n} terms, dropped <= {float(ratio) / unit:.2f} u of the value")
         derive_near = near_now is not None
-        if near_now is None:
+        if not derive_near:
             near_now = bands_now
             print(f"{prec}: E1_CF_DEPTH_NEAR_REAL is E1_CF_DEPTH (not derived); what it leaves within 45 deg:")
         if [b for b, _ in near_now] != [b for b, _ in bands_now]:
             mismatches += 1
             print(f"{prec}: E1_CF_DEPTH_NEAR_REAL's bands differ from E1_CF_DEPTH's   <--")
-        for table, widest, where in ((bands_now, math.pi / 2, ""), (near_now, math.pi / 4, " within 45 deg of the real axis")):
-            inner = None
-            for bound, depth_now in table:
-                angles = [widest * i / 47 for i in range(48)]
-                if inner is None:
-                    # the ellipse's edge: |z| there is the smallest the fraction sees at that angle
-                    edge = [mp.mpc(a * math.cos(th), b * math.sin(th)) for th in angles]
-                else:
-                    edge = [mp.mpc(inner * math.cos(th), inner * math.sin(th)) for th in angles]
-                    edge = [z for z in edge if not inside(z, ell)]
-                if not derive_near and table is near_now:
-                    worst = max(cf_error(z, depth_now) for z in edge)
-                    lo = "ellipse" if inner is None else f"{inner:g}"
-                    print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {depth_now} leaves {float(worst) / unit:.2f} u")
-                    inner = bound
-                    continue
-                if edge:
-                    d, worst = fewest(cf_error, edge, unit)
-                else:
-                    # the band lies inside the ellipse in this sector: the series serves it
-                    d, worst = 0, 0.0
-                flag = "" if d == depth_now else f"   <-- real.rs has {depth_now}"
-                mismatches += d != depth_now
-                lo = "ellipse" if inner is None else f"{inner:g}"
-                print(f"{prec}: fraction for {lo} <= |z| < {bound:g}{where}: depth {d}, truncation <= {float(worst) / unit:.2f} u{flag}")
-                inner = bound
+        mismatches += fraction_depths(prec, unit, ell, bands_now, math.pi / 2, "", True)
+        mismatches += fraction_depths(prec, unit, ell, near_now, math.pi / 4, " within 45 deg of the real axis", derive_near)
         if [b for b, _ in en_now] != [b for b, _ in bands_now]:
             mismatches += 1
             print(f"{prec}: EN_CF_DEPTH's bands differ from E1_CF_DEPTH's   <--")
