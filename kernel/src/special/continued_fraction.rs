@@ -77,7 +77,8 @@ pub const PLAIN_FROM: usize = 6;
 /// (the levels form a chain, so its latency is the fraction's cost). Shallow fractions serve
 /// any `|z|` up to the float range, with Smith's division. (The top-down convergents need one
 /// division in all but lose 7× more in f32 near the imaginary axis; [`e1_scaled_cf`] takes them
-/// in f64 for f32's deep fractions, where that loss is f64's.)
+/// in f64 for all of f32's fractions, where that loss is f64's: in the kernel this serves f64,
+/// and it is what the f32 shaders mirror.)
 #[inline]
 pub fn e1_scaled_cf_depth<T: Real>(z: C<T>, n: usize) -> C<T> {
     let one = C::new(T::one(), T::zero());

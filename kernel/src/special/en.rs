@@ -71,9 +71,10 @@ pub fn en_scaled<T: Real>(x: T, out: &mut [T]) {
 /// tail in place of `b_{m+1}`. Deep fractions (`m ≥ TOP_DOWN_FROM`: `x < 100` in f64, `< 4` in
 /// f32) go top-down by the fundamental recurrences, `P_k = b_k P_{k−1} − a_k P_{k−2}` (the same
 /// for `Q`), the value `Q_{m+1}/P_{m+1}`: two independent chains of products and one division
-/// instead of a division per level, in f64 for f32 too. `P_k ≤ Π b_k < 1.5e16` (f64: `b_k ≤ 132`, 7 levels; f32:
-/// `x < 2.5` for 14 levels, `b_k < 36`, `36^15 < 2.3e23`), far from overflow. Shallow fractions,
-/// which serve any `x`, divide bottom-up.
+/// instead of a division per level, in f64 for f32 too. `0 < P_k ≤ b_k P_{k−1}`, so
+/// `P_{m+1} ≤ Π b_k` (the tail `≤ b_{m+1}`): at most 1.4e63 (f64, 37 levels at `x < 5`) and
+/// 1.3e20 (f32, 14 levels at `x < 2.5`), far from overflow. Shallow fractions, which serve any
+/// `x`, divide bottom-up.
 fn en_scaled_cf<T: Real>(x: T, n: usize) -> T {
     let xf = x.to_f64_exact();
     let depth = banded(xf * xf, T::EN_CF_DEPTH);
