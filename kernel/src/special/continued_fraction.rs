@@ -21,32 +21,65 @@ pub fn e1_scaled_cf<T: Real>(z: C<T>) -> C<T> {
     let near_real = z.re >= T::zero() && y <= x;
     // each table searched as a constant (the compiler unrolls a constant's search)
     let depth = if near_real { banded(r2, T::E1_CF_DEPTH_NEAR_REAL) } else { banded(r2, T::E1_CF_DEPTH) };
+    let wide = C::new(z.re.to_f64_exact(), z.im.to_f64_exact());
     if T::epsilon() > T::lit(1e-10) && r2.is_finite() {
         // f32's fractions: top-down in f64 (one division in all; the convergents' extra
         // rounding is f64's, far below f32's ulp)
-        let w = e1_scaled_cf_convergents(C::new(z.re.to_f64_exact(), z.im.to_f64_exact()), depth);
+        let w = e1_scaled_cf_convergents(wide, depth);
         return C::new(T::lit(w.re), T::lit(w.im));
     }
-    e1_scaled_cf_depth(z, depth)
+    // f64's: bottom-up, from a tail without divisions where the fraction is deep (|z| < 50),
+    // so the chain of divisions does not start with three more
+    let t = if depth >= PLAIN_FROM {
+        let t = tail_in_range(wide, depth);
+        C::new(T::lit(t.re), T::lit(t.im))
+    } else {
+        tail(z, depth)
+    };
+    bottom_up(z, depth, t)
 }
 
-/// The same fraction as [`e1_scaled_cf_depth`] (levels `1..=n`, then its tail), top-down by
-/// the fundamental recurrences `A_k = b_k A_{k−1} + a_k A_{k−2}` (the same for `B`), `b_k = z +
+/// The same fraction as [`bottom_up`] (levels `1..=n`, then its tail), top-down by
+/// the fundamental recurrences `X_k = b_k X_{k−1} + a_k X_{k−2}` (`X` = `A`, `B`), `b_k = z +
 /// 2k − 1`, `a_k = −(k−1)²`, `b_{n+1}` the tail: products only, one division at the end, so no
-/// chain of division latencies. Used in f64 for all of f32's fractions: `|B| ≤ (|z| + 2n +
-/// 2)^{n+1}` stays below `1e24` where the f32 tables go deepest (`n = 14`, `|z| < 2.5`) and below
-/// `(3.5e38)² ≈ 1.2e77` for the largest f32 `|z|` (one level beyond 30): nothing overflows.
+/// chain of division latencies (the tail's square roots do not wait on the levels). Used in
+/// f64 for all of f32's fractions, `|z| < 5e38`: `|B| ≤ (|z| + 2n + 2)^{n+1}` stays below
+/// `1e24` where the f32 tables go deepest (`n = 14`, `|z| < 2.5`) and below `(5e38)² = 2.5e77`
+/// for the largest `|z|` (one level beyond 30), so `|B|² < 1e155` and the end divides once by
+/// it.
 fn e1_scaled_cf_convergents(z: C<f64>, n: usize) -> C<f64> {
-    let (mut a_prev, mut a_cur) = (C::new(1.0, 0.0), C::new(0.0, 0.0));
-    let (mut b_prev, mut b_cur) = (C::new(0.0, 0.0), C::new(1.0, 0.0));
-    for k in 1..=n + 1 {
-        let b_k = if k <= n { z + (2 * k - 1) as f64 } else { tail(z, n) };
-        let a_k = if k == 1 { 1.0 } else { -(((k - 1) * (k - 1)) as f64) };
-        let a_next = b_k * a_cur + a_prev * a_k;
-        let b_next = b_k * b_cur + b_prev * a_k;
-        (a_prev, a_cur, b_prev, b_cur) = (a_cur, a_next, b_cur, b_next);
+    let last = tail_in_range(z, n);
+    // (X_{k−1}, X_k) at k = 1: A_0 = 0, A_1 = 1, B_0 = 1, B_1 = b_1
+    let (mut a_prev, mut a_cur) = (C::new(0.0, 0.0), C::new(1.0, 0.0));
+    let (mut b_prev, mut b_cur) = (C::new(1.0, 0.0), z + 1.0);
+    // b_k − z = 2k − 1 and k − 1 = √(−a_k), as floats counted up (no conversion per level)
+    let (mut odd, mut root) = (1.0, 0.0);
+    for _ in 2..=n {
+        odd += 2.0;
+        root += 1.0;
+        let (b_k, square) = (z + odd, root * root);
+        (a_prev, a_cur) = (a_cur, b_k * a_cur - a_prev * square);
+        (b_prev, b_cur) = (b_cur, b_k * b_cur - b_prev * square);
     }
-    cdiv(a_cur, b_cur)
+    // level n + 1: b = the tail, a = −n²
+    let square = (root + 1.0) * (root + 1.0);
+    let (a_end, b_end) = (last * a_cur - a_prev * square, last * b_cur - b_prev * square);
+    a_end * b_end.conj() * (1.0 / b_end.norm_sqr())
+}
+
+/// [`tail`] for `|z| < 5e38` (every f32 `z`; f64's deep fractions), in f64 and without
+/// `tail`'s divisions: `t = (b + √(b² − 4(n+1)²))/2`, the root aligned with `b` (so `|t| ≥
+/// |b|/2`), `b² − 4(n+1)² = (z − 1)(z + 4n + 3)` (no cancellation where `b ≈ 2(n+1)`); its
+/// magnitude stays below `2.5e77`, its square below `1e155`.
+#[inline]
+fn tail_in_range(z: C<f64>, n: usize) -> C<f64> {
+    let nf = n as f64;
+    let b = z + (2.0 * nf + 1.0);
+    let mut root = csqrt((z - 1.0) * (z + (4.0 * nf + 3.0)));
+    if root.re * b.re + root.im * b.im < 0.0 {
+        root = -root;
+    }
+    (b + root) * 0.5
 }
 
 /// The fixed point of the tail below level `n`: `t = (b/2)(1 + √(1 − 4(n+1)²/b²))`, `b = z +
@@ -66,11 +99,11 @@ fn tail<T: Real>(z: C<T>, n: usize) -> C<T> {
     b * (one + root) / two
 }
 
-/// Depths from this on divide plainly (`e1_scaled_cf_depth`, private).
+/// Depths from this on divide plainly (`bottom_up`, private).
 pub const PLAIN_FROM: usize = 6;
 
-/// The continued fraction at an explicit depth `n` (levels `1..=n` plus the tail estimate):
-/// `1/t_1`, `t_k = z + 2k − 1 − k²/t_{k+1}`, `t_{n+1}` the tail, bottom-up.
+/// The continued fraction at an explicit depth `n` (levels `1..=n` below the tail `t = t_{n+1}`,
+/// [`tail`] or [`tail_in_range`]): `1/t_1`, `t_k = z + 2k − 1 − k²/t_{k+1}`, bottom-up.
 ///
 /// Deep fractions (`n ≥ 6`: `|z| < 7` in f32, `< 50` in f64 by the depth table) have
 /// `|t_k| ≤ |z| + 2n + 1 ≤ 91`, so `k²/t = k² t̄/|t|²` cannot overflow: one division per level
@@ -80,10 +113,9 @@ pub const PLAIN_FROM: usize = 6;
 /// in f64 for all of f32's fractions, where that loss is f64's: in the kernel this serves f64,
 /// and it is what the f32 shaders mirror.)
 #[inline]
-pub fn e1_scaled_cf_depth<T: Real>(z: C<T>, n: usize) -> C<T> {
+fn bottom_up<T: Real>(z: C<T>, n: usize, mut t: C<T>) -> C<T> {
     let one = C::new(T::one(), T::zero());
     let two = T::lit(2.0);
-    let mut t = tail(z, n);
     for k in (1..=n).rev() {
         let kf = T::from(k).unwrap();
         let ratio = if n >= PLAIN_FROM {
