@@ -1,6 +1,6 @@
 //! Exponential integrals (docs/DESIGN.md §3, paper §4.1–4.2).
 //!
-//! * [`e1`], [`e1_scaled`], [`ei`]: complex `E1(z)`, `e^z E1(z)` and `Ei(z)` for `Re z ≥ 0`
+//! * [`e1`](fn@e1), [`e1_scaled`], [`ei`]: complex `E1(z)`, `e^z E1(z)` and `Ei(z)` for `Re z ≥ 0`
 //!   (for `Ei`: `Re z ≤ 0`), the production path: power series inside an ellipse around the
 //!   origin, continued fraction outside, each with a fixed term count chosen by band of `|z|`
 //!   ([`Real::E1_SERIES_BANDS`](crate::Real::E1_SERIES_BANDS),
@@ -66,5 +66,23 @@ mod tests {
         assert!(close(en[1] * (-1.0f64).exp(), (-1.0f64).exp() - 0.219_383_934_395_520, 1e-14));
         // outside the domain: NaN, not a wrong number
         assert!(e1(C::new(-2.53f64, 0.043)).re.is_nan());
+    }
+
+    /// f32's fractions (top-down in f64, the tail and `|B|²` formed without rescaling) up to
+    /// the end of f32's range, on both axes and between them: `e^z E1(z)` against A&S 5.1.51's
+    /// `(1/z)(1 − 1/z + 2/z² − 6/z³)`, whose truncation `24/|z|⁴` is below 3e-39 of the value
+    /// for `|z| ≥ 1e10`. Allowed: two f32 epsilons of the value (the output's rounding and the
+    /// fraction's) plus two subnormal spacings, for values below f32's normal range (`1/z` at
+    /// `|z| > 8.5e37`).
+    #[test]
+    fn f32_fractions_to_the_end_of_the_range() {
+        for (re, im) in [(3.4e38f32, 0.0f32), (3.0e38, 3.0e38), (0.0, 3.4e38), (0.0, -3.4e38), (2.5e38, -1e38), (1e-30, 3e38), (1e20, 1e-20), (1e15, 0.0), (1e10, -1e10)] {
+            let w = e1_scaled(C::new(re, im));
+            let inv = C::new(1.0, 0.0) / C::new(re as f64, im as f64);
+            let want = inv * (C::new(1.0, 0.0) - inv + inv * inv * 2.0 - inv * inv * inv * 6.0);
+            let err = (C::new(w.re as f64, w.im as f64) - want).norm();
+            let bound = 2.0 * f32::EPSILON as f64 * want.norm() + 2.0 * 1.401_298_464_324_817e-45;
+            assert!(err <= bound, "z = {re:e} + {im:e}i: {w:?} against {want:?} (error {err:.2e}, bound {bound:.2e})");
+        }
     }
 }
