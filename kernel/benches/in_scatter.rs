@@ -189,6 +189,12 @@ fn paper_eps<T: Real>() -> T {
     }
 }
 
+/// The seeds' `atan` form for a scene's ray, light and medium.
+#[inline]
+fn atan_form<T: Real>(s: &S<T>) -> T {
+    airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s)
+}
+
 #[inline]
 fn eval<T: Real>(m: Method, s: &S<T>) -> T {
     match m {
@@ -200,7 +206,7 @@ fn eval<T: Real>(m: Method, s: &S<T>) -> T {
         Method::Paper(n, scale) => paper(s, n, paper_eps::<T>() * T::lit(scale)),
         Method::Default => s.in_scatter(),
         Method::SunTable(n) => sun_table(s, sun_tables().iter().find(|t| t.n == n).expect("a baked size")),
-        Method::Atan => airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s),
+        Method::Atan => atan_form(s),
         Method::March(rule, steps) => s.ray_march(rule, steps),
     }
 }
@@ -242,7 +248,7 @@ fn paired<T: Real>(sc: &[S<T>], table: Option<&SunTable>) -> [f64; 3] {
     let mut best = [f64::INFINITY; 3];
     for _ in 0..PAIRED_ROUNDS {
         best[0] = best[0].min(burst(sc, |s| s.in_scatter()));
-        best[1] = best[1].min(burst(sc, |s| airlight::atan_form(s.ray(), s.light().position, s.light().intensity, s.medium().sigma_s)));
+        best[1] = best[1].min(burst(sc, atan_form));
         if let Some(t) = table {
             best[2] = best[2].min(burst(sc, |s| sun_table(s, t)));
         }
