@@ -343,13 +343,11 @@ fn n1_log_part<T: Real>(v_s: T, v_e: T) -> T {
 fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, with_re: bool) -> C<T> {
     let big_h = half.big_h;
     let s_s = ei.e1_scaled(C::new(big_h * v_s, -big_h));
-    // The far end contributes e^{−HΔv}·S(z_e); where H·v_e overflows that is 0.
+    // The far end contributes e^{−HΔv}·S(z_e); where H·v_e overflows that is 0, and it is
+    // left out where it is below half a rounding of Im Q_0 (FAR_END_NEGLIGIBLE).
     let v_e = if (big_h * v_e).is_finite() { v_e } else { T::infinity() };
-    let (s_e, decay) = if v_e.is_finite() {
-        (ei.e1_scaled(C::new(big_h * v_e, -big_h)), (-big_h * half.dv).exp())
-    } else {
-        (C::new(T::zero(), T::zero()), T::zero())
-    };
+    let decay = if v_e.is_finite() { (-big_h * half.dv).exp() } else { T::zero() };
+    let s_e = if decay > far_end_negligible(with_re, ei) { ei.e1_scaled(C::new(big_h * v_e, -big_h)) } else { C::new(T::zero(), T::zero()) };
     let c = s_s - s_e * decay;
     if !half.second {
         return c;
@@ -373,6 +371,25 @@ fn q0_far<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, v_s: T, v_e: T, wi
         (e_s[0] - s_s.re) - tail
     };
     C::new(n1, c.im)
+}
+
+/// `δ/ε`: route 3 leaves out the far end of `Im Q_0` where its weight `e^{−HΔv}` is at most
+/// `δ = ε/4`. With `G(v) = e^{−H(v−v_s)}/(1+v²)` decreasing, `Im C = ∫_{v_s}^{v_e} G ≥
+/// (1 − e^{−HΔv})/(H(1+v_e²))`, and the far end's part `e^{−HΔv} Im S(z_e) = ∫_{v_e}^∞ G` is at
+/// most `e^{−HΔv}/(H(1+v_e²))`: so what is left out is at most `δ/(1 − δ)` of `Im Q_0`, under
+/// half a rounding. Only where the real part is not needed (`Re Q_0` has no such bound), and
+/// not in the paper's algorithm, which evaluates both ends. The shader takes the same `δ`.
+pub const FAR_END_NEGLIGIBLE: f64 = 0.25;
+
+/// The weight `e^{−HΔv}` at or below which route 3 leaves out the far end
+/// ([`FAR_END_NEGLIGIBLE`]; 0 where it never does).
+#[inline]
+fn far_end_negligible<T: Real, E: ExpIntegral<T>>(with_re: bool, ei: &E) -> T {
+    if with_re || !ei.stabilised() {
+        T::zero()
+    } else {
+        T::epsilon() * T::lit(FAR_END_NEGLIGIBLE)
+    }
 }
 
 /// `N_1 = ∫ e^{−H(v−v_s)} dv/(v(1+v²))` far from the foot (`y ≤ 1/4`), where `T_1 − Re C`

@@ -1167,9 +1167,12 @@ float airlight_q_zero(AirlightHalf half_1)
     }
     bool _e114 = local_4;
     if (_e114) {
-        float _e115 = v_e;
-        const float2 _e119 = airlight_e1_scaled(float2((big_h_3 * _e115), -(big_h_3)));
-        return (_e106.y - (_e119.y * exp((-(big_h_3) * half_1.dv))));
+        float decay_1 = exp((-(big_h_3) * half_1.dv));
+        if ((decay_1 > 2.9802322e-8)) {
+            float _e121 = v_e;
+            const float2 _e125 = airlight_e1_scaled(float2((big_h_3 * _e121), -(big_h_3)));
+            return (_e106.y - (_e125.y * decay_1));
+        }
     }
     return _e106.y;
 }

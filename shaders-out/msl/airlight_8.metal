@@ -1212,9 +1212,12 @@ float airlight_q_zero(
     }
     bool _e114 = local_4;
     if (_e114) {
-        float _e115 = v_e;
-        metal::float2 _e119 = airlight_e1_scaled(metal::float2(big_h_3 * _e115, -(big_h_3)));
-        return _e106.y - (_e119.y * metal::exp(-(big_h_3) * half_1.dv));
+        float decay_1 = metal::exp(-(big_h_3) * half_1.dv);
+        if (decay_1 > 0.000000029802322) {
+            float _e121 = v_e;
+            metal::float2 _e125 = airlight_e1_scaled(metal::float2(big_h_3 * _e121, -(big_h_3)));
+            return _e106.y - (_e125.y * decay_1);
+        }
     }
     return _e106.y;
 }

@@ -1170,9 +1170,12 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
     }
     let _e114 = local_4;
     if _e114 {
-        let _e115 = v_e;
-        let _e119 = airlight_e1_scaled(vec2<f32>((big_h_3 * _e115), -(big_h_3)));
-        return (_e106.y - (_e119.y * exp((-(big_h_3) * half_1.dv))));
+        let decay_1 = exp((-(big_h_3) * half_1.dv));
+        if (decay_1 > 0.000000029802322f) {
+            let _e121 = v_e;
+            let _e125 = airlight_e1_scaled(vec2<f32>((big_h_3 * _e121), -(big_h_3)));
+            return (_e106.y - (_e125.y * decay_1));
+        }
     }
     return _e106.y;
 }

@@ -7,10 +7,17 @@ Writes moments.jsonl next to this file:
       binary32), the exponential's Legendre moments of the panel integration;
   {"kind": "monomial", "big_h": H, "y_lo": a, "y_hi": b, "k": k, "value": m_k}
       m_k = ∫_a^b e^{−H(y − a)} (y − c)^k / (1 + y²) dy, c = (a + b)/2, k = 0..15: the
-      monomial moments of the fixed-term path's first half (before the light's foot).
+      monomial moments of the fixed-term path's first half (before the light's foot);
+  {"kind": "far_end", "precision": "f32"|"f64", "second": s, "big_h": H, "y_lo": a, "y_hi": b,
+   "value": m_0, "scale": |S(z_s)| + e^{−HΔv}|S(z_e)|}
+      m_0 = ∫_{v_s}^{v_e} e^{−H(v − v_s)} dv/(1 + v²) (y = v on the first half, y = 1/v on the
+      second; inputs exact in the precision), S(z) = e^z E1(z), z = H(v − i): halves whose far
+      end's weight e^{−HΔv} lies from ε/8 to 64ε of the precision, either side of where the
+      isotropic moment leaves that end out (airlight::integrals::FAR_END_NEGLIGIBLE).
 
 Usage: python3 tests/reference/gen_moments.py      (mpmath==1.3.0; a few seconds)
 """
+import math
 import os
 import sys
 
@@ -43,6 +50,20 @@ def main():
         for k in range(16):
             v = mp.quad(lambda y: mp.exp(-H * (y - A)) * (y - c) ** k / (1 + y * y), [A, B])
             out.append({"kind": "monomial", "big_h": h, "y_lo": a, "y_hi": b, "k": k, "value": float(v)})
+    for prec, eps, rnd in (("f32", 2.0 ** -23, f32), ("f64", 2.0 ** -52, float)):
+        for second, big_h, v_s in ((False, 80.0, 0.25), (True, 5.0, 2.0)):
+            for ratio in (0.125, 0.25, 0.5, 1.0, 4.0, 64.0):
+                H = rnd(big_h)
+                v_e = v_s + math.log(1.0 / (ratio * eps)) / H
+                # the half's ends in y, exact in the precision; v from them
+                lo, hi = (rnd(1.0 / v_e), rnd(1.0 / v_s)) if second else (rnd(v_s), rnd(v_e))
+                vs, ve = (1 / mp.mpf(hi), 1 / mp.mpf(lo)) if second else (mp.mpf(lo), mp.mpf(hi))
+                Hm = mp.mpf(H)
+                m0 = mp.quad(lambda v: mp.exp(-Hm * (v - vs)) / (1 + v * v), [vs, ve])
+                S = lambda v: mp.exp(Hm * mp.mpc(v, -1)) * mp.e1(Hm * mp.mpc(v, -1))
+                scale = abs(S(vs)) + mp.exp(-Hm * (ve - vs)) * abs(S(ve))
+                out.append({"kind": "far_end", "precision": prec, "second": second, "big_h": H, "y_lo": lo, "y_hi": hi,
+                            "value": float(m0), "scale": float(scale)})
     print(f"moments: {write_jsonl('moments.jsonl', out)} lines")
 
 

@@ -739,10 +739,14 @@ fn airlight_q_zero(half: AirlightHalf) -> f32 {
         return airlight_cmul(rot, vec2<f32>(d_re, d_im) - ein_dd * (big_h * half.dv)).y * exp(big_h * v_s);
     }
     let s_s = airlight_e1_scaled(vec2<f32>(big_h * v_s, -big_h));
-    // the far end contributes e^{−HΔv}·S(z_e): 0 where H·v_e overflows
+    // the far end contributes e^{−HΔv}·S(z_e): 0 where H·v_e overflows, left out where its
+    // weight is at most ε/4 (integrals.rs `FAR_END_NEGLIGIBLE`)
     if (!v_e_infinite && airlight_is_finite(big_h * v_e)) {
-        let s_e = airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h));
-        return s_s.y - s_e.y * exp(-big_h * half.dv);
+        let decay = exp(-big_h * half.dv);
+        if (decay > @FAR_END_NEGLIGIBLE@) {
+            let s_e = airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h));
+            return s_s.y - s_e.y * decay;
+        }
     }
     return s_s.y;
 }
