@@ -336,7 +336,7 @@ where
     } else {
         T::zero()
     };
-    weighted(phys.sigma_s, phys.intensity, h, x, f.eval(v_s) * m[0])
+    weighted(phys.sigma_s, phys.intensity, h, x, f.eval(T::zero()) * m[0])
 }
 
 /// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the
@@ -393,7 +393,8 @@ where
     let f = HalfIntegrand { sigma, exact_sides, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
     if isotropic {
         let m: [T; N] = moments(half, ei, count);
-        return f.eval(half.y_mid()) * m[0];
+        // F is constant: its value at y = 0 takes no division
+        return f.eval(T::zero()) * m[0];
     }
     // Up to two kinks, each crossed at most twice: at most 5 pieces.
     let mut cuts = [T::zero(); 6];
