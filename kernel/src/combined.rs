@@ -8,7 +8,7 @@
 
 use crate::expansion::{Expandable, Expansion};
 use crate::geometry::Canonical;
-use crate::integrals::{moments, ExpIntegral, Half, SharedEnds};
+use crate::integrals::{moment_zero, moments, ExpIntegral, Half, SharedEnds};
 use crate::light::LightDistribution;
 use crate::panels::{integrate_piece, Control, Running};
 use crate::phase::PhaseFunction;
@@ -325,7 +325,6 @@ where
     let dv = (g.t1 - g.t0) / h * ((v_s + v_e) / (r_s + r_e));
     let (v_e, dv) = if v_e.is_finite() && dv.is_finite() { (v_e, dv) } else { (T::infinity(), T::infinity()) };
     let half = Half { second: false, big_h: optical(big_h, dv), y_lo: v_s, y_hi: v_e, dy: dv, dv };
-    let m: [T; 1] = moments(&half, ei, 1);
     let f = HalfIntegrand { sigma: -T::one(), exact_sides: true, d_el: g.d_el, d_c: g.d_c, light: phys.light, phase: phys.phase };
     // H·r_s = σt·|p − x(t0)|; where r_s overflows (a subnormal h) the distance is |x_h − t0|,
     // and without extinction the exponent is 0, not 0·∞
@@ -336,7 +335,8 @@ where
     } else {
         T::zero()
     };
-    weighted(phys.sigma_s, phys.intensity, h, x, f.eval(T::zero()) * m[0])
+    let (m, x) = moment_zero(&half, ei, x);
+    weighted(phys.sigma_s, phys.intensity, h, x, f.eval(T::zero()) * m)
 }
 
 /// `H` on one half: 0 where the weight `e^{−H(v − v_s)}` is 1 to working precision over the

@@ -39,7 +39,7 @@
 //! 3. **far**: scaled `e^z E1(z)` at both ends, `C = S(z_s) − e^{−HΔv} S(z_e)`.
 
 use crate::real::{hypot1, Real};
-use crate::special::{ein_divided_difference, en_scaled, C};
+use crate::special::{ein_divided_difference, en_scaled, in_series_region, C};
 
 /// Which exponential integral the closed forms use: the production one, or the paper's.
 pub trait ExpIntegral<T: Real> {
@@ -49,6 +49,13 @@ pub trait ExpIntegral<T: Real> {
     /// are used. The paper's algorithm has neither.
     fn stabilised(&self) -> bool {
         true
+    }
+    /// `E1(z)` itself where the implementation sums it as a series, without forming the factor
+    /// `e^z` of [`e1_scaled`](Self::e1_scaled) (a caller may fold that factor into a weight of its
+    /// own: [`moment_zero`]); `None` elsewhere, and by default.
+    fn e1_series(&self, z: C<T>) -> Option<C<T>> {
+        let _ = z;
+        None
     }
 }
 
@@ -60,6 +67,10 @@ impl<T: Real> ExpIntegral<T> for Production {
     #[inline]
     fn e1_scaled(&self, z: C<T>) -> C<T> {
         crate::special::e1_scaled(z)
+    }
+    #[inline]
+    fn e1_series(&self, z: C<T>) -> Option<C<T>> {
+        (z.re >= T::zero() && in_series_region(z)).then(|| crate::special::e1(z))
     }
 }
 
@@ -113,6 +124,10 @@ impl<T: Real, E: ExpIntegral<T>> ExpIntegral<T> for SharedEnds<'_, T, E> {
     }
     fn stabilised(&self) -> bool {
         self.inner.stabilised()
+    }
+    #[inline]
+    fn e1_series(&self, z: C<T>) -> Option<C<T>> {
+        self.inner.e1_series(z)
     }
 }
 
@@ -260,13 +275,45 @@ fn moments_gauss<T: Real>(half: &Half<T>, m: &mut [T]) {
 fn q0<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, with_re: bool) -> C<T> {
     let big_h = half.big_h;
     let (v_s, v_e) = (half.v_s(), half.v_e());
-    let near = ei.stabilised()
-        && (big_h == T::zero() || (v_e.is_finite() && big_h * hypot1(v_e) <= T::one()));
-    if near {
+    if ei.stabilised() && is_near(big_h, v_e) {
         q0_near(half, v_s, v_e, with_re)
     } else {
         q0_far(half, ei, v_s, v_e, with_re)
     }
+}
+
+/// Route 2 applies (`H·|v − i| ≤ 1` at both ends, or `H = 0`), for the half's largest `v_e`.
+#[inline]
+fn is_near<T: Real>(big_h: T, v_e: T) -> bool {
+    big_h == T::zero() || (v_e.is_finite() && big_h * hypot1(v_e) <= T::one())
+}
+
+/// `m_0` of a half whose `F` is constant, with the exponent `x` of the weight `e^{−x}` the
+/// caller puts on it: returns `(m, x')` with `e^{−x'} m = e^{−x} m_0`. On route 3 of a first
+/// half whose near end lies in `E1`'s series region ([`ExpIntegral::e1_series`]) that is
+/// `m = e^{−Hv_s} m_0` and `x' = x − Hv_s`: `e^{−Hv_s} S(z_s) = e^{−iH} E1(z_s)`, so the factor
+/// `e^{Hv_s}` of the scaled `E1` is never formed (one exponential fewer), and the far end enters
+/// as `e^{−Hv_e} Im S(z_e)`, left out where `e^{−HΔv} ≤ ε/4` ([`FAR_END_NEGLIGIBLE`]). With
+/// `v_s ≤ 1` on a first half and `|z_s| < 4` in the series region, `e^{−Hv_s} > e^{−4}`: `m`
+/// keeps `m_0`'s scale. Elsewhere `(m_0, x)`.
+pub fn moment_zero<T: Real, E: ExpIntegral<T>>(half: &Half<T>, ei: &E, x: T) -> (T, T) {
+    let big_h = half.big_h;
+    let (v_s, v_e) = (half.v_s(), half.v_e());
+    let far_route = ei.stabilised() && !half.second && half.dy > T::zero() && !is_short(half) && !is_near(big_h, v_e);
+    let e1_s = if far_route { ei.e1_series(C::new(big_h * v_s, -big_h)) } else { None };
+    let Some(e1_s) = e1_s else {
+        let m: [T; 1] = moments(half, ei, 1);
+        return (m[0], x);
+    };
+    let near = (e1_s * C::new(big_h.cos(), -big_h.sin())).im;
+    // e^{−HΔv} > δ ⇔ HΔv < ln(1/δ)
+    let far_needed = big_h * half.dv < -(T::epsilon() * T::lit(FAR_END_NEGLIGIBLE)).ln();
+    let far = if far_needed && (big_h * v_e).is_finite() {
+        (-big_h * v_e).exp() * ei.e1_scaled(C::new(big_h * v_e, -big_h)).im
+    } else {
+        T::zero()
+    };
+    (near - far, x - big_h * v_s)
 }
 
 /// Route 2: `H·|v − i| ≤ 1` at both ends, or `H = 0`.

@@ -284,7 +284,7 @@ vec2 airlight_cos_sin(float x) {
     uint k_1 = 0u;
     float fc = 0.0;
     uint j = 0u;
-    float z_8 = (x * x);
+    float z_9 = (x * x);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
@@ -301,9 +301,9 @@ vec2 airlight_cos_sin(float x) {
             uint _e12 = k_1;
             uint n_2 = (8u - _e12);
             float _e14 = c;
-            c = (_e14 * z_8);
+            c = (_e14 * z_9);
             float _e16 = s_1;
-            s_1 = (_e16 * z_8);
+            s_1 = (_e16 * z_9);
             fc = 1.0;
             j = 1u;
             bool loop_init_1 = true;
@@ -359,11 +359,11 @@ float airlight_atan(float x_1) {
     }
     float _e17 = t;
     float _e18 = t;
-    float z_9 = (_e17 * _e18);
+    float z_10 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_9) - 0.13877685) * z_9) + 0.19977711) * z_9) - 0.3333295) * z_9) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_10) - 0.13877685) * z_10) + 0.19977711) * z_10) - 0.3333295) * z_10) * _e32) + _e34));
 }
 
 vec2 airlight_cln(vec2 z_3) {
@@ -477,9 +477,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_16 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_15 * x_15) + (y_4 * y_4)) < 1.0);
+    return (((x_16 * x_16) + (y_4 * y_4)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -607,18 +607,22 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     return _e109;
 }
 
-vec2 airlight_e1_scaled(vec2 z_7) {
-    bool _e1 = airlight_in_series_region(z_7);
+vec2 airlight_e1_series(vec2 z_7) {
+    vec2 _e1 = airlight_ein(z_7);
+    vec2 _e2 = airlight_cln(z_7);
+    return ((_e1 - _e2) - vec2(0.5772157, 0.0));
+}
+
+vec2 airlight_e1_scaled(vec2 z_8) {
+    bool _e1 = airlight_in_series_region(z_8);
     if (_e1) {
-        vec2 _e2 = airlight_ein(z_7);
-        vec2 _e3 = airlight_cln(z_7);
-        vec2 e1_ = ((_e2 - _e3) - vec2(0.5772157, 0.0));
-        vec2 _e9 = airlight_cexp(z_7);
-        vec2 _e10 = airlight_cmul(e1_, _e9);
-        return _e10;
+        vec2 _e2 = airlight_e1_series(z_8);
+        vec2 _e3 = airlight_cexp(z_8);
+        vec2 _e4 = airlight_cmul(_e2, _e3);
+        return _e4;
     }
-    vec2 _e11 = airlight_e1_scaled_cf(z_7);
-    return _e11;
+    vec2 _e5 = airlight_e1_scaled_cf(z_8);
+    return _e5;
 }
 
 float airlight_en_scaled_cf(float x_4, uint n) {
@@ -905,8 +909,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1) {
             if ((width <= AIRLIGHT_FLT_EPS)) {
                 return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
             }
-            float x_16 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_16 * x_16) * (3.0 - (2.0 * x_16)));
+            float x_17 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
+            return ((x_17 * x_17) * (3.0 - (2.0 * x_17)));
         }
         default: {
             return 1.0;
@@ -1132,10 +1136,10 @@ float airlight_q_zero(AirlightHalf half_1) {
             float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
             d_im = _e48;
             float _e50 = v_e;
-            float x_17 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e57 = airlight_is_finite(x_17);
+            float x_18 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e57 = airlight_is_finite(x_18);
             if (_e57) {
-                float _e58 = airlight_log1p(x_17);
+                float _e58 = airlight_log1p(x_18);
                 d_re = (0.5 * _e58);
             } else {
                 float _e63 = v_e;
@@ -1221,13 +1225,108 @@ float airlight_moment_zero(AirlightHalf half_2) {
     return _e41;
 }
 
+vec2 airlight_moment_zero_weighted(AirlightHalf half_3, float x_6) {
+    bool local_9 = false;
+    bool local_10 = false;
+    bool local_11 = false;
+    bool local_12 = false;
+    bool local_13 = false;
+    bool local_14 = false;
+    bool local_15 = false;
+    bool local_16 = false;
+    float far_end = 0.0;
+    bool local_17 = false;
+    bool local_18 = false;
+    float big_h_4 = half_3.big_h;
+    float v_s_2 = half_3.y_lo;
+    vec2 z_s_1 = vec2((big_h_4 * v_s_2), -(big_h_4));
+    if (!(half_3.dv_infinite)) {
+        local_9 = ((big_h_4 * half_3.dv) <= 1.0);
+    } else {
+        local_9 = false;
+    }
+    bool _e16 = local_9;
+    if (_e16) {
+        local_10 = (half_3.dy <= 0.25);
+    } else {
+        local_10 = false;
+    }
+    bool short_ = local_10;
+    if (!((big_h_4 == 0.0))) {
+        if (!(half_3.dv_infinite)) {
+            float _e34 = airlight_hypot_one(half_3.y_hi);
+            local_12 = ((big_h_4 * _e34) <= 1.0);
+        } else {
+            local_12 = false;
+        }
+        bool _e39 = local_12;
+        local_11 = _e39;
+    } else {
+        local_11 = true;
+    }
+    bool near_2 = local_11;
+    if (!(half_3.second)) {
+        local_13 = !((half_3.dy > 0.0));
+    } else {
+        local_13 = true;
+    }
+    bool _e51 = local_13;
+    if (!(_e51)) {
+        local_14 = short_;
+    } else {
+        local_14 = true;
+    }
+    bool _e56 = local_14;
+    if (!(_e56)) {
+        local_15 = near_2;
+    } else {
+        local_15 = true;
+    }
+    bool _e61 = local_15;
+    if (!(_e61)) {
+        bool _e65 = airlight_in_series_region(z_s_1);
+        local_16 = !(_e65);
+    } else {
+        local_16 = true;
+    }
+    bool _e68 = local_16;
+    if (_e68) {
+        float _e69 = airlight_moment_zero(half_3);
+        return vec2(_e69, x_6);
+    }
+    vec2 _e71 = airlight_cos_sin(big_h_4);
+    vec2 _e72 = airlight_e1_series(z_s_1);
+    vec2 _e77 = airlight_cmul(_e72, vec2(_e71.x, -(_e71.y)));
+    float near_end = _e77.y;
+    float v_e_2 = half_3.y_hi;
+    if (!(half_3.dv_infinite)) {
+        bool _e87 = airlight_is_finite((big_h_4 * v_e_2));
+        local_17 = _e87;
+    } else {
+        local_17 = false;
+    }
+    bool _e89 = local_17;
+    if (_e89) {
+        local_18 = ((big_h_4 * half_3.dv) < 17.32868);
+    } else {
+        local_18 = false;
+    }
+    bool _e97 = local_18;
+    if (_e97) {
+        vec2 _e104 = airlight_e1_scaled(vec2((big_h_4 * v_e_2), -(big_h_4)));
+        far_end = (exp((-(big_h_4) * v_e_2)) * _e104.y);
+    }
+    float _e107 = far_end;
+    return vec2((near_end - _e107), (x_6 - (big_h_4 * v_s_2)));
+}
+
 vec2[6] airlight_gauss_rule() {
     return vec2[6](vec2(0.12523341, 0.24914704), vec2(0.3678315, 0.23349254), vec2(0.58731794, 0.20316742), vec2(0.76990265, 0.16007833), vec2(0.9041172, 0.10693932), vec2(0.98156065, 0.047175337));
 }
 
 float airlight_node(vec2 rule[6], uint i_3) {
-    float x_18 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_18) : x_18);
+    float x_19 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_19) : x_19);
 }
 
 float[12] airlight_legendre(float g_7[12]) {
@@ -1246,11 +1345,11 @@ float[12] airlight_legendre(float g_7[12]) {
     return float[12](((((((0.12457352 * even0_) + (0.11674627 * even1_)) + (0.10158371 * even2_)) + (0.080039166 * even3_)) + (0.05346966 * even4_)) + (0.023587668 * even5_)), ((((((0.0468023 * odd0_) + (0.12882887 * odd1_)) + (0.17898582 * odd2_)) + (0.1848671 * odd3_)) + (0.14502853 * odd4_)) + (0.06945818 * odd5_)), ((((((-0.29678077 * even0_) + (-0.17339739 * even1_)) + (0.0088446755 * even2_)) + (0.15572627 * even3_)) + (0.19413285 * even4_)) + (0.111474365 * even5_)), ((((((-0.15952627 * odd0_) + (-0.34922284 * odd1_)) + (-0.26630157 * odd2_)) + (-0.0078182 * odd3_)) + (0.18394405 * odd4_)) + (0.1472646 * odd5_)), ((((((0.3557035 * even0_) + (-0.05493764 * even1_)) + (-0.3638486 * even2_)) + (-0.22377379 * even3_)) + (0.11211139 * even4_)) + (0.17474514 * even5_)), ((((((0.29854843 * odd0_) + (0.39456585 * odd1_)) + (-0.1353495 * odd2_)) + (-0.3691963 * odd3_)) + (-0.008247895 * odd4_)) + (0.19221786 * odd5_)), ((((((-0.34715378 * even0_) + (0.3805851 * even1_)) + (0.26573068 * even2_)) + (-0.34650728 * even3_)) + (-0.15110587 * even4_)) + (0.19845118 * even5_)), ((((((-0.44211397 * odd0_) + (-0.16119975 * odd1_)) + (0.492633 * odd2_)) + (-0.14013663 * odd3_)) + (-0.2831112 * odd4_)) + (0.19274092 * odd5_)), ((((((0.27956823 * even0_) + (-0.56147766 * even1_)) + (0.3107737 * even2_)) + (0.16721474 * even3_)) + (-0.37102723 * even4_)) + (0.1749482 * even5_)), ((((((0.5717003 * odd0_) + (-0.25450704 * odd1_)) + (-0.16934197 * odd2_)) + (0.42956594 * odd3_)) + (-0.38941443 * odd4_)) + (0.1455128 * odd5_)), ((((((-0.16046254 * even0_) + (0.42763805 * even1_)) + (-0.55436814 * even2_)) + (0.50861686 * even3_)) + (-0.32686526 * even4_)) + (0.105441 * even5_)), ((((((-0.67116123 * odd0_) + (0.6089769 * odd1_)) + (-0.49442267 * odd2_)) + (0.34604162 * odd3_)) + (-0.1893727 * odd4_)) + (0.056268554 * odd5_)));
 }
 
-float airlight_expm1_(float x_6) {
+float airlight_expm1_(float x_7) {
     float sum_3 = 1.0;
     uint i_4 = 0u;
-    if ((abs(x_6) >= 0.5)) {
-        return (exp(x_6) - 1.0);
+    if ((abs(x_7) >= 0.5)) {
+        return (exp(x_7) - 1.0);
     }
     bool loop_init_9 = true;
     while(true) {
@@ -1267,11 +1366,11 @@ float airlight_expm1_(float x_6) {
         {
             float _e14 = sum_3;
             uint _e17 = i_4;
-            sum_3 = (1.0 + ((x_6 * _e14) / float((12u - _e17))));
+            sum_3 = (1.0 + ((x_7 * _e14) / float((12u - _e17))));
         }
     }
     float _e26 = sum_3;
-    return (x_6 * _e26);
+    return (x_7 * _e26);
 }
 
 float[12] airlight_exp_legendre_moments(float lambda) {
@@ -1304,8 +1403,8 @@ float[12] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_19 = (lambda / float((2u * k0_)));
-            float per_step = (x_19 * x_19);
+            float x_20 = (lambda / float((2u * k0_)));
+            float per_step = (x_20 * x_20);
             share = per_step;
             bool loop_init_10 = true;
             while(true) {
@@ -1805,7 +1904,7 @@ float airlight_tail_estimate(float c_2[12]) {
 }
 
 float airlight_error_factor(float c_3[12], float m_1[12], float floor_) {
-    bool local_9 = false;
+    bool local_19 = false;
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
@@ -1816,11 +1915,11 @@ float airlight_error_factor(float c_3[12], float m_1[12], float floor_) {
     float last = (abs(c_3[11]) + abs(c_3[10]));
     float before = (abs(c_3[9]) + abs(c_3[8]));
     if (!(!((before > 0.0)))) {
-        local_9 = !((last < before));
+        local_19 = !((last < before));
     } else {
-        local_9 = true;
+        local_19 = true;
     }
-    bool _e27 = local_9;
+    bool _e27 = local_19;
     if (_e27) {
         return 1.0;
     }
@@ -1924,15 +2023,15 @@ float airlight_transform_noise(float mass, float mean_abs) {
     return ((5.722046e-6 * mass) * mean_abs);
 }
 
-float airlight_factor(AirlightHalf half_3, float a_4, float b_3) {
+float airlight_factor(AirlightHalf half_4, float a_4, float b_3) {
     float offset = 0.0;
-    offset = (a_4 - half_3.y_lo);
-    if (half_3.second) {
-        offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
+    offset = (a_4 - half_4.y_lo);
+    if (half_4.second) {
+        offset = ((half_4.y_hi - b_3) / (b_3 * half_4.y_hi));
     }
     float _e13 = offset;
-    float x_20 = (half_3.big_h * _e13);
-    return ((x_20 > 0.0) ? exp(-(x_20)) : 1.0);
+    float x_21 = (half_4.big_h * _e13);
+    return ((x_21 > 0.0) ? exp(-(x_21)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -1958,7 +2057,7 @@ float airlight_singular_floor(vec3 heights, vec3 steps_1, float c_4, float r_1, 
     return (1.0 / _e34);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_4, float a_5, float b_4, vec3 heights_1, vec3 steps_2) {
+AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_5, float a_5, float b_4, vec3 heights_1, vec3 steps_2) {
     float r_2 = 0.0;
     float vc = 0.0;
     float samples[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1971,7 +2070,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     r_2 = ((b_4 - a_5) * 0.5);
     float _e13 = r_2;
     vc = (a_5 + _e13);
-    if (half_4.second) {
+    if (half_5.second) {
         r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
         float _e24 = r_2;
         vc = ((1.0 / b_4) + _e24);
@@ -1996,7 +2095,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             uint _e41 = i_7;
             float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
-            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_4.second ? -(sigma_4) : sigma_4), v_6);
+            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_5.second ? -(sigma_4) : sigma_4), v_6);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_7;
@@ -2015,7 +2114,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     float _e76[12] = samples;
     float _e77[12] = airlight_legendre(_e76);
     float _e79 = r_2;
-    float _e81[12] = airlight_exp_legendre_moments((half_4.big_h * _e79));
+    float _e81[12] = airlight_exp_legendre_moments((half_5.big_h * _e79));
     float _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
     float _e89 = sum_4;
@@ -2040,7 +2139,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     sum_4 = (_e134 + (_e77[10] * _e81[10]));
     float _e139 = sum_4;
     sum_4 = (_e139 + (_e77[11] * _e81[11]));
-    float _e144 = airlight_factor(half_4, a_5, b_4);
+    float _e144 = airlight_factor(half_5, a_5, b_4);
     float _e145 = r_2;
     float w_1 = (_e144 * _e145);
     float mass_4 = (w_1 * _e81[0]);
@@ -2059,7 +2158,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     return _e164;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_5, float a_6, float b_5, vec3 heights_2, vec3 steps_3) {
+AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_6, float a_6, float b_5, vec3 heights_2, vec3 steps_3) {
     float samples_1[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -2088,7 +2187,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
             float y_6 = (yc_1 + (r_8 * _e29));
-            float weight = exp(((-(half_5.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
+            float weight = exp(((-(half_6.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
             float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
             float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e47 = i_8;
@@ -2109,7 +2208,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
     }
     float _e81[12] = samples_1;
     float _e82[12] = airlight_legendre(_e81);
-    float _e83 = airlight_factor(half_5, a_6, b_5);
+    float _e83 = airlight_factor(half_6, a_6, b_5);
     float w_2 = (_e83 * r_8);
     float _e85[12] = airlight_zero_terms();
     m_2 = _e85;
@@ -2220,14 +2319,14 @@ float[12] airlight_legendre_to_monomial(float c_5[12]) {
     return _e255;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_6, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_7, float a_7, float b_6) {
     float samples_2[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
     uint i_9 = 0u;
     float q[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float s_a[14] = float[14](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_10 = false;
+    bool local_20 = false;
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = 0.0;
@@ -2421,17 +2520,17 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e606 = q[10];
     float _e610 = q[10];
     q = float[12](((_e535 * beta) + _e58[0]), ((_e540 * alpha) + (_e543 * beta)), ((_e547 * alpha) + (_e550 * beta)), ((_e554 * alpha) + (_e557 * beta)), ((_e561 * alpha) + (_e564 * beta)), ((_e568 * alpha) + (_e571 * beta)), ((_e575 * alpha) + (_e578 * beta)), ((_e582 * alpha) + (_e585 * beta)), ((_e589 * alpha) + (_e592 * beta)), ((_e596 * alpha) + (_e599 * beta)), ((_e603 * alpha) + (_e606 * beta)), (_e610 * alpha));
-    float big_h_4 = half_6.big_h;
-    float _e615[14] = airlight_en_scaled((big_h_4 / b_6));
+    float big_h_5 = half_7.big_h;
+    float _e615[14] = airlight_en_scaled((big_h_5 / b_6));
     if ((a_7 > 0.0)) {
-        bool _e637 = airlight_is_finite((big_h_4 / a_7));
-        local_10 = _e637;
+        bool _e637 = airlight_is_finite((big_h_5 / a_7));
+        local_20 = _e637;
     } else {
-        local_10 = false;
+        local_20 = false;
     }
-    bool far_1 = local_10;
+    bool far_1 = local_20;
     if (far_1) {
-        decay = exp((-(big_h_4) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     float _e648 = decay;
     if (!((_e648 > 2.9802322e-8))) {
@@ -2439,7 +2538,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     }
     float _e653 = decay;
     if ((_e653 > 0.0)) {
-        float _e657[14] = airlight_en_scaled((big_h_4 / a_7));
+        float _e657[14] = airlight_en_scaled((big_h_5 / a_7));
         s_a = _e657;
     }
     if ((b_6 > 0.0)) {
@@ -2564,16 +2663,16 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e933 = ratio_1;
     float _e934 = ab;
     ratio_1 = (_e933 * _e934);
-    float _e936 = airlight_factor(half_6, a_7, b_6);
+    float _e936 = airlight_factor(half_7, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_21 = (abs(alpha) + abs(beta));
+    float x_22 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_21) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_22) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2583,7 +2682,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_21) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_22) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2593,7 +2692,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_21) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_22) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2603,7 +2702,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_21) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_22) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2613,7 +2712,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_21) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_22) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2623,7 +2722,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_21) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_22) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2633,7 +2732,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_21) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_22) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2643,7 +2742,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_21) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_22) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2653,7 +2752,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_21) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_22) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2663,7 +2762,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_21) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_22) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2673,7 +2772,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_21) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_22) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2683,7 +2782,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_21) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_22) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -2703,34 +2802,34 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     return _e1182;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_7, float a_8, float b_7, vec3 heights_y, vec3 heights_v, vec3 steps_4) {
-    bool local_11 = false;
-    bool local_12 = false;
-    if (half_7.second) {
-        local_11 = (a_8 <= (b_7 * 0.25));
+AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_8, float a_8, float b_7, vec3 heights_y, vec3 heights_v, vec3 steps_4) {
+    bool local_21 = false;
+    bool local_22 = false;
+    if (half_8.second) {
+        local_21 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_11 = false;
+        local_21 = false;
     }
-    bool _e16 = local_11;
+    bool _e16 = local_21;
     if (_e16) {
-        AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_7, a_8, b_7);
+        AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_8, a_8, b_7);
         return _e17;
     }
-    if (half_7.second) {
-        local_12 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    if (half_8.second) {
+        local_22 = ((half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_12 = false;
+        local_22 = false;
     }
-    bool _e29 = local_12;
+    bool _e29 = local_22;
     if (_e29) {
-        AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_7, a_8, b_7, heights_y, steps_4);
+        AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_7, a_8, b_7, heights_v, steps_4);
+    AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
-float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_8, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_9, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float a_9 = 0.0;
@@ -2748,16 +2847,16 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     float mass_3 = 0.0;
     uint worst = 0u;
     uint i_10 = 0u;
-    bool local_13 = false;
-    bool local_14 = false;
-    bool local_15 = false;
+    bool local_23 = false;
+    bool local_24 = false;
+    bool local_25 = false;
     float total_1 = 0.0;
     uint i_11 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
     vec3 _e10 = airlight_singular_heights(s_10, sigma_8);
-    vec3 heights_v_1 = (half_8.second ? (vec3(1.0) / _e10) : _e10);
+    vec3 heights_v_1 = (half_9.second ? (vec3(1.0) / _e10) : _e10);
     vec3 _e16 = airlight_singular_steps(s_10);
     a_9 = lo;
     b_8 = hi;
@@ -2776,7 +2875,7 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_8, _e64, _e65, _e10, heights_v_1, _e16);
+            AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -2871,25 +2970,25 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list[_e160].w;
-                        local_13 = !((_e163 > 0.0));
+                        local_23 = !((_e163 > 0.0));
                     } else {
-                        local_13 = true;
+                        local_23 = true;
                     }
-                    bool _e168 = local_13;
+                    bool _e168 = local_23;
                     if (!(_e168)) {
                         uint _e172 = budget;
-                        local_14 = (_e172 < 2u);
+                        local_24 = (_e172 < 2u);
                     } else {
-                        local_14 = true;
+                        local_24 = true;
                     }
-                    bool _e176 = local_14;
+                    bool _e176 = local_24;
                     if (!(_e176)) {
                         uint _e180 = count;
-                        local_15 = (_e180 == AIRLIGHT_PANEL_LIST);
+                        local_25 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
-                        local_15 = true;
+                        local_25 = true;
                     }
-                    bool _e184 = local_15;
+                    bool _e184 = local_25;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -2950,7 +3049,7 @@ float airlight_bounded(float a_10) {
 }
 
 vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5) {
-    bool local_16 = false;
+    bool local_26 = false;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
@@ -2960,11 +3059,11 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5) {
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         bool _e21 = airlight_is_finite(scale_1);
-        local_16 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_16 = true;
+        local_26 = true;
     }
-    bool _e24 = local_16;
+    bool _e24 = local_26;
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
@@ -2996,35 +3095,35 @@ float airlight_cosine(AirlightCanonical g_13, float sigma_10, float y_3) {
     return ((((1.0 - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1.0 + y2_1));
 }
 
-bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_9, float bound, float lo_1, float hi_1) {
-    bool local_17 = false;
-    bool local_18 = false;
+bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_10, float bound, float lo_1, float hi_1) {
+    bool local_27 = false;
+    bool local_28 = false;
     float y1_ = 0.0;
-    bool local_19 = false;
-    bool local_20 = false;
-    bool local_21 = false;
-    bool local_22 = false;
+    bool local_29 = false;
+    bool local_30 = false;
+    bool local_31 = false;
+    bool local_32 = false;
     float _e9 = airlight_cosine(g_14, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
         return false;
     }
-    if ((lo_1 == half_9.y_lo)) {
+    if ((lo_1 == half_10.y_lo)) {
         float _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_17 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_17 = false;
+        local_27 = false;
     }
-    bool _e21 = local_17;
+    bool _e21 = local_27;
     if (_e21) {
         return false;
     }
-    if ((hi_1 == half_9.y_hi)) {
+    if ((hi_1 == half_10.y_hi)) {
         float _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_18 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_18 = false;
+        local_28 = false;
     }
-    bool _e31 = local_18;
+    bool _e31 = local_28;
     if (_e31) {
         return false;
     }
@@ -3043,119 +3142,119 @@ bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_9, 
     float _e53 = y1_;
     if ((_e53 > lo_1)) {
         float _e57 = y1_;
-        local_19 = (_e57 < hi_1);
+        local_29 = (_e57 < hi_1);
     } else {
-        local_19 = false;
+        local_29 = false;
     }
-    bool _e60 = local_19;
+    bool _e60 = local_29;
     if (_e60) {
         float _e63 = y1_;
         float _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_20 = !((_e64 < bound));
+        local_30 = !((_e64 < bound));
     } else {
-        local_20 = false;
+        local_30 = false;
     }
-    bool _e68 = local_20;
+    bool _e68 = local_30;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_21 = (y2_2 < hi_1);
+        local_31 = (y2_2 < hi_1);
     } else {
-        local_21 = false;
+        local_31 = false;
     }
-    bool _e75 = local_21;
+    bool _e75 = local_31;
     if (_e75) {
         float _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_22 = !((_e78 < bound));
+        local_32 = !((_e78 < bound));
     } else {
-        local_22 = false;
+        local_32 = false;
     }
-    bool _e82 = local_22;
+    bool _e82 = local_32;
     if (_e82) {
         return false;
     }
     return true;
 }
 
-float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, AirlightHalf half_10, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, AirlightHalf half_11, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_12 = 0u;
-    bool local_23 = false;
+    bool local_33 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
     float total_2 = 0.0;
     float lo_2 = 0.0;
     uint i_14 = 0u;
     float hi_2 = 0.0;
-    bool local_24 = false;
-    bool local_25 = false;
-    bool local_26 = false;
+    bool local_34 = false;
+    bool local_35 = false;
+    bool local_36 = false;
     if (isotropic) {
-        float _e11 = airlight_integrand(s_11, g_15, sigma_12, (half_10.y_lo + (half_10.dy * 0.5)));
-        float _e12 = airlight_moment_zero(half_10);
-        return (_e11 * _e12);
+        float _e7 = airlight_integrand(s_11, g_15, sigma_12, 0.0);
+        float _e8 = airlight_moment_zero(half_11);
+        return (_e7 * _e8);
     }
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         k_in = s_11.light_param_a;
         k_out = s_11.light_param_b;
-        float _e29 = k_in;
-        float _e30 = k_out;
-        float width_1 = (_e29 - _e30);
+        float _e25 = k_in;
+        float _e26 = k_out;
+        float width_1 = (_e25 - _e26);
         if ((width_1 <= AIRLIGHT_FLT_EPS)) {
-            float _e34 = k_out;
-            k_in = (_e34 + (width_1 * 0.5));
-            float _e38 = k_in;
-            k_out = _e38;
+            float _e30 = k_out;
+            k_in = (_e30 + (width_1 * 0.5));
+            float _e34 = k_in;
+            k_out = _e34;
         }
-        float _e39 = k_out;
-        dark_below = _e39;
-        float _e42 = k_in;
+        float _e35 = k_out;
+        dark_below = _e35;
+        float _e38 = k_in;
+        vec2 _e39 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e38);
+        float _e42 = k_out;
         vec2 _e43 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e42);
-        float _e46 = k_out;
-        vec2 _e47 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e46);
-        cuts = float[4](_e43.x, _e43.y, _e47.x, _e47.y);
+        cuts = float[4](_e39.x, _e39.y, _e43.x, _e43.y);
         bool loop_init_20 = true;
         while(true) {
             if (!loop_init_20) {
-                uint _e77 = i_12;
-                i_12 = (_e77 + 1u);
+                uint _e73 = i_12;
+                i_12 = (_e73 + 1u);
             }
             loop_init_20 = false;
-            uint _e55 = i_12;
-            if ((_e55 < 4u)) {
+            uint _e51 = i_12;
+            if ((_e51 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e58 = i_12;
-                float _e60 = cuts[_e58];
-                if ((_e60 > half_10.y_lo)) {
-                    uint _e65 = i_12;
-                    float _e67 = cuts[_e65];
-                    local_23 = (_e67 < half_10.y_hi);
+                uint _e54 = i_12;
+                float _e56 = cuts[_e54];
+                if ((_e56 > half_11.y_lo)) {
+                    uint _e61 = i_12;
+                    float _e63 = cuts[_e61];
+                    local_33 = (_e63 < half_11.y_hi);
                 } else {
-                    local_23 = false;
+                    local_33 = false;
                 }
-                bool _e71 = local_23;
-                if (!(_e71)) {
-                    uint _e73 = i_12;
-                    cuts[_e73] = 2.0;
+                bool _e67 = local_33;
+                if (!(_e67)) {
+                    uint _e69 = i_12;
+                    cuts[_e69] = 2.0;
                 }
             }
         }
         bool loop_init_21 = true;
         while(true) {
             if (!loop_init_21) {
-                uint _e118 = i_13;
-                i_13 = (_e118 + 1u);
+                uint _e114 = i_13;
+                i_13 = (_e114 + 1u);
             }
             loop_init_21 = false;
-            uint _e81 = i_13;
-            if ((_e81 < 3u)) {
+            uint _e77 = i_13;
+            if ((_e77 < 3u)) {
             } else {
                 break;
             }
@@ -3164,108 +3263,108 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
                 bool loop_init_22 = true;
                 while(true) {
                     if (!loop_init_22) {
-                        uint _e115 = j_2;
-                        j_2 = (_e115 + 1u);
+                        uint _e111 = j_2;
+                        j_2 = (_e111 + 1u);
                     }
                     loop_init_22 = false;
-                    uint _e86 = j_2;
-                    uint _e88 = i_13;
-                    if ((_e86 < (3u - _e88))) {
+                    uint _e82 = j_2;
+                    uint _e84 = i_13;
+                    if ((_e82 < (3u - _e84))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e91 = j_2;
-                        float _e93 = cuts[_e91];
-                        uint _e94 = j_2;
-                        float _e98 = cuts[(_e94 + 1u)];
-                        if ((_e93 > _e98)) {
-                            uint _e100 = j_2;
-                            float t_5 = cuts[_e100];
-                            uint _e103 = j_2;
-                            uint _e105 = j_2;
-                            float _e109 = cuts[(_e105 + 1u)];
-                            cuts[_e103] = _e109;
-                            uint _e110 = j_2;
-                            cuts[(_e110 + 1u)] = t_5;
+                        uint _e87 = j_2;
+                        float _e89 = cuts[_e87];
+                        uint _e90 = j_2;
+                        float _e94 = cuts[(_e90 + 1u)];
+                        if ((_e89 > _e94)) {
+                            uint _e96 = j_2;
+                            float t_5 = cuts[_e96];
+                            uint _e99 = j_2;
+                            uint _e101 = j_2;
+                            float _e105 = cuts[(_e101 + 1u)];
+                            cuts[_e99] = _e105;
+                            uint _e106 = j_2;
+                            cuts[(_e106 + 1u)] = t_5;
                         }
                     }
                 }
             }
         }
     }
-    lo_2 = half_10.y_lo;
+    lo_2 = half_11.y_lo;
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e180 = i_14;
-            i_14 = (_e180 + 1u);
+            uint _e176 = i_14;
+            i_14 = (_e176 + 1u);
         }
         loop_init_23 = false;
-        uint _e126 = i_14;
-        if ((_e126 < 5u)) {
+        uint _e122 = i_14;
+        if ((_e122 < 5u)) {
         } else {
             break;
         }
         {
-            hi_2 = half_10.y_hi;
-            uint _e131 = i_14;
-            if ((_e131 < 4u)) {
-                uint _e136 = i_14;
-                float _e138 = cuts[_e136];
-                local_24 = (_e138 < 2.0);
+            hi_2 = half_11.y_hi;
+            uint _e127 = i_14;
+            if ((_e127 < 4u)) {
+                uint _e132 = i_14;
+                float _e134 = cuts[_e132];
+                local_34 = (_e134 < 2.0);
             } else {
-                local_24 = false;
+                local_34 = false;
             }
-            bool _e142 = local_24;
-            if (_e142) {
-                uint _e143 = i_14;
-                float _e145 = cuts[_e143];
-                hi_2 = _e145;
+            bool _e138 = local_34;
+            if (_e138) {
+                uint _e139 = i_14;
+                float _e141 = cuts[_e139];
+                hi_2 = _e141;
             }
-            float _e146 = hi_2;
-            float _e147 = lo_2;
-            if ((_e146 > _e147)) {
+            float _e142 = hi_2;
+            float _e143 = lo_2;
+            if ((_e142 > _e143)) {
                 if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-                    float _e154 = dark_below;
-                    float _e155 = lo_2;
-                    float _e156 = hi_2;
-                    bool _e157 = airlight_dark(g_15, sigma_12, half_10, _e154, _e155, _e156);
-                    local_25 = _e157;
+                    float _e150 = dark_below;
+                    float _e151 = lo_2;
+                    float _e152 = hi_2;
+                    bool _e153 = airlight_dark(g_15, sigma_12, half_11, _e150, _e151, _e152);
+                    local_35 = _e153;
                 } else {
-                    local_25 = false;
+                    local_35 = false;
                 }
-                bool _e159 = local_25;
-                if (!(_e159)) {
-                    float _e161 = total_2;
-                    float _e162 = lo_2;
-                    float _e163 = hi_2;
-                    float _e164 = airlight_integrate_piece(s_11, g_15, sigma_12, half_10, _e162, _e163, f_max_5);
-                    total_2 = (_e161 + _e164);
+                bool _e155 = local_35;
+                if (!(_e155)) {
+                    float _e157 = total_2;
+                    float _e158 = lo_2;
+                    float _e159 = hi_2;
+                    float _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_11, _e158, _e159, f_max_5);
+                    total_2 = (_e157 + _e160);
                 }
-                float _e166 = hi_2;
-                lo_2 = _e166;
+                float _e162 = hi_2;
+                lo_2 = _e162;
             }
-            uint _e167 = i_14;
-            if ((_e167 < 4u)) {
-                uint _e172 = i_14;
-                float _e174 = cuts[_e172];
-                local_26 = (_e174 >= 2.0);
+            uint _e163 = i_14;
+            if ((_e163 < 4u)) {
+                uint _e168 = i_14;
+                float _e170 = cuts[_e168];
+                local_36 = (_e170 >= 2.0);
             } else {
-                local_26 = false;
+                local_36 = false;
             }
-            bool _e178 = local_26;
-            if (_e178) {
+            bool _e174 = local_36;
+            if (_e174) {
                 break;
             }
         }
     }
-    float _e182 = total_2;
-    return _e182;
+    float _e178 = total_2;
+    return _e178;
 }
 
-float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_7, float j_3) {
-    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_7))) * j_3);
+float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_8, float j_3) {
+    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_8))) * j_3);
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -3273,20 +3372,20 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_7
     if (!((abs(j_3) > 0.0))) {
         return 0.0;
     }
-    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_7) + log(abs(j_3)))));
+    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_8) + log(abs(j_3)))));
 }
 
 float airlight_on_line(AirlightScene s_12, AirlightCanonical g_16) {
-    bool local_27 = false;
+    bool local_37 = false;
     float span = 0.0;
     float e2_[14] = float[14](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
     if (!(g_16.t_hi_infinite)) {
-        local_27 = (g_16.x_h > g_16.t_hi);
+        local_37 = (g_16.x_h > g_16.t_hi);
     } else {
-        local_27 = false;
+        local_37 = false;
     }
-    bool _e10 = local_27;
+    bool _e10 = local_37;
     if (_e10) {
         float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
         float _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1.0);
@@ -3344,9 +3443,9 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_28 = false;
-    bool local_29 = false;
-    float x_8 = 0.0;
+    bool local_38 = false;
+    bool local_39 = false;
+    float x_9 = 0.0;
     float h_3 = g_17.h;
     float a_s = ((g_17.x_h - g_17.t_lo) / h_3);
     float _e8 = airlight_hypot_one(a_s);
@@ -3354,11 +3453,11 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     float u_e = ((g_17.t_hi - g_17.x_h) / h_3);
     if (!(g_17.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_28 = _e24;
+        local_38 = _e24;
     } else {
-        local_28 = false;
+        local_38 = false;
     }
-    bool _e26 = local_28;
+    bool _e26 = local_38;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3366,11 +3465,11 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_29 = _e40;
+            local_39 = _e40;
         } else {
-            local_29 = false;
+            local_39 = false;
         }
-        bool _e42 = local_29;
+        bool _e42 = local_39;
         if (_e42) {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -3384,21 +3483,20 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    float _e54 = airlight_integrand(s_13, g_17, -1.0, _e9);
-    float _e55 = airlight_moment_zero(half_13);
-    float j_5 = (_e54 * _e55);
-    bool _e59 = airlight_is_finite(_e8);
-    if (_e59) {
-        x_8 = (big_h_1 * _e8);
+    AirlightHalf half_14 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    bool _e55 = airlight_is_finite(_e8);
+    if (_e55) {
+        x_9 = (big_h_1 * _e8);
     } else {
         if ((s_13.sigma_t > 0.0)) {
-            x_8 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
+            x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
         }
     }
-    float _e72 = x_8;
-    float _e73 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e72, j_5);
-    return _e73;
+    float _e66 = x_9;
+    vec2 _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    float _e73 = airlight_integrand(s_13, g_17, -1.0, 0.0);
+    float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
+    return _e76;
 }
 
 float airlight_cut_length(float big_h_2, float v_s) {
@@ -3410,54 +3508,54 @@ float airlight_cut_length(float big_h_2, float v_s) {
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonical g_18) {
-    bool local_30 = false;
-    bool local_31 = false;
-    bool local_32 = false;
-    bool local_33 = false;
-    float gap_1 = 0.0;
-    bool local_34 = false;
-    bool local_35 = false;
-    bool local_36 = false;
-    bool local_37 = false;
-    bool local_38 = false;
-    bool local_39 = false;
     bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
+    float gap_1 = 0.0;
+    bool local_44 = false;
+    bool local_45 = false;
+    bool local_46 = false;
+    bool local_47 = false;
+    bool local_48 = false;
+    bool local_49 = false;
+    bool local_50 = false;
+    bool local_51 = false;
+    bool local_52 = false;
+    bool local_53 = false;
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
-    bool local_44 = false;
-    AirlightHalf half_11 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_45 = false;
-    bool local_46 = false;
-    bool local_47 = false;
+    bool local_54 = false;
+    AirlightHalf half_12 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_55 = false;
+    bool local_56 = false;
+    bool local_57 = false;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = 0.0;
     bool infinite_2 = true;
-    bool local_48 = false;
-    bool local_49 = false;
-    AirlightHalf half_12 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_50 = false;
-    bool local_51 = false;
-    bool local_52 = false;
+    bool local_58 = false;
+    bool local_59 = false;
+    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_60 = false;
+    bool local_61 = false;
+    bool local_62 = false;
     float t0_ = g_18.t_lo;
     float t1_ = g_18.t_hi;
     if (!(g_18.t_hi_infinite)) {
-        local_30 = (t1_ > t0_);
+        local_40 = (t1_ > t0_);
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    bool _e10 = local_30;
+    bool _e10 = local_40;
     if (!(!(_e10))) {
-        local_31 = ((s_14.sigma_s * s_14.intensity) == 0.0);
+        local_41 = ((s_14.sigma_s * s_14.intensity) == 0.0);
     } else {
-        local_31 = true;
+        local_41 = true;
     }
-    bool _e21 = local_31;
+    bool _e21 = local_41;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
@@ -3465,16 +3563,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     float x_h = g_18.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_18.t_hi_infinite)) {
-            local_33 = (x_h <= t1_);
+            local_43 = (x_h <= t1_);
         } else {
-            local_33 = true;
+            local_43 = true;
         }
-        bool _e36 = local_33;
-        local_32 = _e36;
+        bool _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_32 = false;
+        local_42 = false;
     }
-    bool inside = local_32;
+    bool inside = local_42;
     if ((x_h < t0_)) {
         gap_1 = (t0_ - x_h);
     } else {
@@ -3484,11 +3582,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     }
     if (!(inside)) {
         float _e48 = gap_1;
-        local_34 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_44 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_34 = false;
+        local_44 = false;
     }
-    bool _e55 = local_34;
+    bool _e55 = local_44;
     if (_e55) {
         float _e56 = airlight_on_line(s_14, g_18);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3496,63 +3594,63 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     if ((h_4 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_5 = (s_14.sigma_t * h_4);
+    float big_h_6 = (s_14.sigma_t * h_4);
     if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_36 = (s_14.light_param_a == 0.0);
+            local_46 = (s_14.light_param_a == 0.0);
         } else {
-            local_36 = false;
+            local_46 = false;
         }
-        bool _e83 = local_36;
-        local_35 = _e83;
+        bool _e83 = local_46;
+        local_45 = _e83;
     } else {
-        local_35 = true;
+        local_45 = true;
     }
-    bool _e85 = local_35;
+    bool _e85 = local_45;
     if (_e85) {
         if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_39 = true;
+                local_49 = true;
             }
-            bool _e104 = local_39;
+            bool _e104 = local_49;
             if (_e104) {
-                local_40 = (s_14.phase_param_a == 0.0);
+                local_50 = (s_14.phase_param_a == 0.0);
             } else {
-                local_40 = false;
+                local_50 = false;
             }
-            bool _e111 = local_40;
-            local_38 = _e111;
+            bool _e111 = local_50;
+            local_48 = _e111;
         } else {
-            local_38 = true;
+            local_48 = true;
         }
-        bool _e113 = local_38;
-        local_37 = _e113;
+        bool _e113 = local_48;
+        local_47 = _e113;
     } else {
-        local_37 = false;
+        local_47 = false;
     }
-    bool isotropic_1 = local_37;
+    bool isotropic_1 = local_47;
     if (isotropic_1) {
-        local_41 = (t0_ < x_h);
+        local_51 = (t0_ < x_h);
     } else {
-        local_41 = false;
+        local_51 = false;
     }
-    bool _e120 = local_41;
+    bool _e120 = local_51;
     if (_e120) {
         if (!(g_18.t_hi_infinite)) {
-            local_43 = (x_h < t1_);
+            local_53 = (x_h < t1_);
         } else {
-            local_43 = true;
+            local_53 = true;
         }
-        bool _e129 = local_43;
-        local_42 = _e129;
+        bool _e129 = local_53;
+        local_52 = _e129;
     } else {
-        local_42 = false;
+        local_52 = false;
     }
-    bool _e131 = local_42;
+    bool _e131 = local_52;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_14, g_18, big_h_5);
+        float _e132 = airlight_whole_line(s_14, g_18, big_h_6);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
@@ -3560,11 +3658,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float a_s_1 = ((x_h - t0_) / h_4);
         t_end = x_h;
         if (!(g_18.t_hi_infinite)) {
-            local_44 = (t1_ < x_h);
+            local_54 = (t1_ < x_h);
         } else {
-            local_44 = false;
+            local_54 = false;
         }
-        bool _e154 = local_44;
+        bool _e154 = local_54;
         if (_e154) {
             t_end = t1_;
         }
@@ -3576,43 +3674,43 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float _e161 = airlight_bounded(a_e);
         float _e162 = t_end;
         float dy_1 = (((((_e162 - t0_) / h_4) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        float _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_11 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        float _e175 = airlight_optical(big_h_6, dy_1, false);
+        half_12 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if (cut) {
-            float _e182 = half_11.big_h;
-            local_45 = (_e182 > 0.0);
+            float _e182 = half_12.big_h;
+            local_55 = (_e182 > 0.0);
         } else {
-            local_45 = false;
+            local_55 = false;
         }
-        bool _e186 = local_45;
+        bool _e186 = local_55;
         if (_e186) {
-            float _e188 = half_11.big_h;
+            float _e188 = half_12.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if ((_e189 < dy_1)) {
-                float _e193 = half_11.big_h;
-                half_11 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                float _e193 = half_12.big_h;
+                half_12 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_11;
+        AirlightHalf _e199 = half_12;
         float _e200 = airlight_half(s_14, g_18, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_5 * _e158), _e200);
+        float _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_6 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_18.t_hi_infinite)) {
-        local_46 = (t1_ > x_h);
+        local_56 = (t1_ > x_h);
     } else {
-        local_46 = true;
+        local_56 = true;
     }
-    bool _e213 = local_46;
+    bool _e213 = local_56;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_47 = !(_e216);
+        local_57 = !(_e216);
     } else {
-        local_47 = false;
+        local_57 = false;
     }
-    bool _e219 = local_47;
+    bool _e219 = local_57;
     if (_e219) {
         float t_start = max(t0_, x_h);
         float a_s_2 = ((t_start - x_h) / h_4);
@@ -3622,22 +3720,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float a_e_1 = ((t1_ - x_h) / h_4);
         if (!(g_18.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_48 = _e238;
+            local_58 = _e238;
         } else {
-            local_48 = false;
+            local_58 = false;
         }
-        bool _e240 = local_48;
+        bool _e240 = local_58;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_ - t_start) / h_4) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if ((_e241 > 0.0)) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_49 = _e255;
+                local_59 = _e255;
             } else {
-                local_49 = false;
+                local_59 = false;
             }
-            bool _e257 = local_49;
+            bool _e257 = local_59;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3649,49 +3747,49 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         }
         float _e264 = dv_3;
         bool _e265 = infinite_2;
-        float _e266 = airlight_optical(big_h_5, _e264, _e265);
+        float _e266 = airlight_optical(big_h_6, _e264, _e265);
         float _e267 = y_lo;
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_12 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_13 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if (cut) {
-            float _e276 = half_12.big_h;
-            local_50 = (_e276 > 0.0);
+            float _e276 = half_13.big_h;
+            local_60 = (_e276 > 0.0);
         } else {
-            local_50 = false;
+            local_60 = false;
         }
-        bool _e280 = local_50;
+        bool _e280 = local_60;
         if (_e280) {
-            float _e282 = half_12.big_h;
+            float _e282 = half_13.big_h;
             float _e285 = airlight_cut_length(_e282, (1.0 / _e224));
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_51 = (_e285 < _e290);
+                local_61 = (_e285 < _e290);
             } else {
-                local_51 = true;
+                local_61 = true;
             }
-            bool _e293 = local_51;
+            bool _e293 = local_61;
             if (_e293) {
                 float cut_y_lo = (_e224 / (1.0 + (_e224 * _e285)));
                 if ((cut_y_lo > 0.0)) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_52 = _e302;
+                    local_62 = _e302;
                 } else {
-                    local_52 = false;
+                    local_62 = false;
                 }
-                bool _e304 = local_52;
+                bool _e304 = local_62;
                 if (_e304) {
-                    float _e307 = half_12.big_h;
-                    half_12 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    float _e307 = half_13.big_h;
+                    half_13 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        AirlightHalf _e313 = half_12;
+        AirlightHalf _e313 = half_13;
         float _e314 = airlight_half(s_14, g_18, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        float _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_6 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -3699,23 +3797,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_53 = false;
-    bool local_54 = false;
+    bool local_63 = false;
+    bool local_64 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_53 = _e6;
+        local_63 = _e6;
     } else {
-        local_53 = false;
+        local_63 = false;
     }
-    bool _e8 = local_53;
+    bool _e8 = local_63;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_54 = _e12;
+        local_64 = _e12;
     } else {
-        local_54 = false;
+        local_64 = false;
     }
-    bool _e14 = local_54;
+    bool _e14 = local_64;
     return _e14;
 }
 
@@ -3728,15 +3826,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_55 = false;
+    bool local_65 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_55 = _e6;
+        local_65 = _e6;
     } else {
-        local_55 = false;
+        local_65 = false;
     }
-    bool _e8 = local_55;
+    bool _e8 = local_65;
     return _e8;
 }
 
@@ -3747,17 +3845,6 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_15) {
-    bool local_56 = false;
-    bool local_57 = false;
-    bool local_58 = false;
-    bool local_59 = false;
-    bool local_60 = false;
-    bool local_61 = false;
-    bool local_62 = false;
-    bool local_63 = false;
-    bool local_64 = false;
-    bool local_65 = false;
-    bool ok = false;
     bool local_66 = false;
     bool local_67 = false;
     bool local_68 = false;
@@ -3768,6 +3855,7 @@ bool airlight_valid(AirlightScene s_15) {
     bool local_73 = false;
     bool local_74 = false;
     bool local_75 = false;
+    bool ok = false;
     bool local_76 = false;
     bool local_77 = false;
     bool local_78 = false;
@@ -3781,101 +3869,111 @@ bool airlight_valid(AirlightScene s_15) {
     bool local_86 = false;
     bool local_87 = false;
     bool local_88 = false;
+    bool local_89 = false;
+    bool local_90 = false;
+    bool local_91 = false;
+    bool local_92 = false;
+    bool local_93 = false;
+    bool local_94 = false;
+    bool local_95 = false;
+    bool local_96 = false;
+    bool local_97 = false;
+    bool local_98 = false;
     bool _e2 = airlight_vec_finite(s_15.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_15.dir);
-        local_56 = _e6;
+        local_66 = _e6;
     } else {
-        local_56 = false;
+        local_66 = false;
     }
-    bool _e8 = local_56;
+    bool _e8 = local_66;
     if (_e8) {
         bool _e12 = airlight_normalisable(s_15.dir);
-        local_57 = _e12;
+        local_67 = _e12;
     } else {
-        local_57 = false;
+        local_67 = false;
     }
-    bool _e14 = local_57;
+    bool _e14 = local_67;
     if (_e14) {
         bool _e18 = airlight_is_finite(s_15.t_min);
-        local_58 = _e18;
+        local_68 = _e18;
     } else {
-        local_58 = false;
+        local_68 = false;
     }
-    bool _e20 = local_58;
+    bool _e20 = local_68;
     if (_e20) {
         bool _e24 = airlight_vec_finite(s_15.light_position);
-        local_59 = _e24;
+        local_69 = _e24;
     } else {
-        local_59 = false;
+        local_69 = false;
     }
-    bool _e26 = local_59;
+    bool _e26 = local_69;
     if (_e26) {
         bool _e30 = airlight_is_finite(s_15.intensity);
-        local_60 = _e30;
+        local_70 = _e30;
     } else {
-        local_60 = false;
+        local_70 = false;
     }
-    bool _e32 = local_60;
+    bool _e32 = local_70;
     if (_e32) {
-        local_61 = (s_15.intensity >= 0.0);
+        local_71 = (s_15.intensity >= 0.0);
     } else {
-        local_61 = false;
+        local_71 = false;
     }
-    bool _e39 = local_61;
+    bool _e39 = local_71;
     if (_e39) {
         bool _e43 = airlight_is_finite(s_15.sigma_s);
-        local_62 = _e43;
+        local_72 = _e43;
     } else {
-        local_62 = false;
+        local_72 = false;
     }
-    bool _e45 = local_62;
+    bool _e45 = local_72;
     if (_e45) {
-        local_63 = (s_15.sigma_s >= 0.0);
+        local_73 = (s_15.sigma_s >= 0.0);
     } else {
-        local_63 = false;
+        local_73 = false;
     }
-    bool _e52 = local_63;
+    bool _e52 = local_73;
     if (_e52) {
         bool _e56 = airlight_is_finite(s_15.sigma_t);
-        local_64 = _e56;
+        local_74 = _e56;
     } else {
-        local_64 = false;
+        local_74 = false;
     }
-    bool _e58 = local_64;
+    bool _e58 = local_74;
     if (_e58) {
-        local_65 = (s_15.sigma_t >= 0.0);
+        local_75 = (s_15.sigma_t >= 0.0);
     } else {
-        local_65 = false;
+        local_75 = false;
     }
-    bool _e65 = local_65;
+    bool _e65 = local_75;
     ok = _e65;
     if (((s_15.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_15.t_max);
-            local_66 = _e76;
+            local_76 = _e76;
         } else {
-            local_66 = false;
+            local_76 = false;
         }
-        bool _e78 = local_66;
+        bool _e78 = local_76;
         if (_e78) {
-            local_67 = (s_15.t_min <= s_15.t_max);
+            local_77 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_67 = false;
+            local_77 = false;
         }
-        bool _e85 = local_67;
+        bool _e85 = local_77;
         ok = _e85;
     }
     if ((s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_15.light_end);
-            local_68 = _e93;
+            local_78 = _e93;
         } else {
-            local_68 = false;
+            local_78 = false;
         }
-        bool _e95 = local_68;
+        bool _e95 = local_78;
         ok = _e95;
     } else {
         if ((s_15.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -3886,37 +3984,37 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_69 = _e107;
+            local_79 = _e107;
         } else {
-            local_69 = false;
+            local_79 = false;
         }
-        bool _e109 = local_69;
+        bool _e109 = local_79;
         if (_e109) {
-            local_70 = (s_15.brdf_albedo >= 0.0);
+            local_80 = (s_15.brdf_albedo >= 0.0);
         } else {
-            local_70 = false;
+            local_80 = false;
         }
-        bool _e116 = local_70;
+        bool _e116 = local_80;
         if (_e116) {
-            local_71 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_81 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_71 = false;
+            local_81 = false;
         }
-        bool _e123 = local_71;
+        bool _e123 = local_81;
         if (_e123) {
-            local_72 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_82 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_72 = false;
+            local_82 = false;
         }
-        bool _e130 = local_72;
+        bool _e130 = local_82;
         if (_e130) {
             float _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
             bool _e137 = airlight_is_finite(_e136);
-            local_73 = _e137;
+            local_83 = _e137;
         } else {
-            local_73 = false;
+            local_83 = false;
         }
-        bool _e139 = local_73;
+        bool _e139 = local_83;
         ok = _e139;
     } else {
         if ((s_15.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -3927,72 +4025,72 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_15.light_axis);
-            local_74 = _e151;
+            local_84 = _e151;
         } else {
-            local_74 = false;
+            local_84 = false;
         }
-        bool _e153 = local_74;
+        bool _e153 = local_84;
         if (_e153) {
             bool _e157 = airlight_normalisable(s_15.light_axis);
-            local_75 = _e157;
+            local_85 = _e157;
         } else {
-            local_75 = false;
+            local_85 = false;
         }
-        bool _e159 = local_75;
+        bool _e159 = local_85;
         if (_e159) {
-            local_76 = (s_15.light_param_a >= 0.0);
+            local_86 = (s_15.light_param_a >= 0.0);
         } else {
-            local_76 = false;
+            local_86 = false;
         }
-        bool _e166 = local_76;
+        bool _e166 = local_86;
         if (_e166) {
-            local_77 = (s_15.light_param_a <= 1024.0);
+            local_87 = (s_15.light_param_a <= 1024.0);
         } else {
-            local_77 = false;
+            local_87 = false;
         }
-        bool _e173 = local_77;
+        bool _e173 = local_87;
         if (_e173) {
-            local_78 = (fract((s_15.light_param_a * 0.5)) == 0.0);
+            local_88 = (fract((s_15.light_param_a * 0.5)) == 0.0);
         } else {
-            local_78 = false;
+            local_88 = false;
         }
-        bool _e183 = local_78;
+        bool _e183 = local_88;
         ok = _e183;
     } else {
         if ((s_15.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_15.light_axis);
-                local_79 = _e191;
+                local_89 = _e191;
             } else {
-                local_79 = false;
+                local_89 = false;
             }
-            bool _e193 = local_79;
+            bool _e193 = local_89;
             if (_e193) {
                 bool _e197 = airlight_normalisable(s_15.light_axis);
-                local_80 = _e197;
+                local_90 = _e197;
             } else {
-                local_80 = false;
+                local_90 = false;
             }
-            bool _e199 = local_80;
+            bool _e199 = local_90;
             if (_e199) {
-                local_81 = (s_15.light_param_b < s_15.light_param_a);
+                local_91 = (s_15.light_param_b < s_15.light_param_a);
             } else {
-                local_81 = false;
+                local_91 = false;
             }
-            bool _e206 = local_81;
+            bool _e206 = local_91;
             if (_e206) {
-                local_82 = (s_15.light_param_b >= -1.0);
+                local_92 = (s_15.light_param_b >= -1.0);
             } else {
-                local_82 = false;
+                local_92 = false;
             }
-            bool _e213 = local_82;
+            bool _e213 = local_92;
             if (_e213) {
-                local_83 = (s_15.light_param_a <= 1.0);
+                local_93 = (s_15.light_param_a <= 1.0);
             } else {
-                local_83 = false;
+                local_93 = false;
             }
-            bool _e220 = local_83;
+            bool _e220 = local_93;
             ok = _e220;
         } else {
             if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -4011,40 +4109,40 @@ bool airlight_valid(AirlightScene s_15) {
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_84 = g_ok;
+                local_94 = g_ok;
             } else {
-                local_84 = false;
+                local_94 = false;
             }
-            bool _e234 = local_84;
+            bool _e234 = local_94;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_85 = g_ok;
+                local_95 = g_ok;
             } else {
-                local_85 = false;
+                local_95 = false;
             }
-            bool _e239 = local_85;
+            bool _e239 = local_95;
             if (_e239) {
-                local_86 = (abs(s_15.phase_param_b) < 1.0);
+                local_96 = (abs(s_15.phase_param_b) < 1.0);
             } else {
-                local_86 = false;
+                local_96 = false;
             }
-            bool _e247 = local_86;
+            bool _e247 = local_96;
             if (_e247) {
-                local_87 = (s_15.phase_param_c >= 0.0);
+                local_97 = (s_15.phase_param_c >= 0.0);
             } else {
-                local_87 = false;
+                local_97 = false;
             }
-            bool _e254 = local_87;
+            bool _e254 = local_97;
             if (_e254) {
-                local_88 = (s_15.phase_param_c <= 1.0);
+                local_98 = (s_15.phase_param_c <= 1.0);
             } else {
-                local_88 = false;
+                local_98 = false;
             }
-            bool _e261 = local_88;
+            bool _e261 = local_98;
             ok = _e261;
             break;
         }
@@ -4079,8 +4177,8 @@ AirlightCanonical airlight_canonical(AirlightScene s_16) {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, (infinite_3 ? 0.0 : s_16.t_max), infinite_3);
 }
 
-float airlight_opaque(float x_9, uint key) {
-    return uintBitsToFloat((floatBitsToUint(x_9) ^ key));
+float airlight_opaque(float x_10, uint key) {
+    return uintBitsToFloat((floatBitsToUint(x_10) ^ key));
 }
 
 vec2 airlight_two_sum(float a_12, float b_9, uint key_1) {
@@ -4092,8 +4190,8 @@ vec2 airlight_two_sum(float a_12, float b_9, uint key_1) {
     return vec2(_e4, (_e12 ? e_2 : 0.0));
 }
 
-float airlight_split_high(float x_10) {
-    return uintBitsToFloat(((floatBitsToUint(x_10) + 2048u) & 4294963200u));
+float airlight_split_high(float x_11) {
+    return uintBitsToFloat(((floatBitsToUint(x_11) + 2048u) & 4294963200u));
 }
 
 vec2 airlight_two_product(float a_13, float b_10, uint key_2) {
@@ -4116,28 +4214,28 @@ float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_89 = false;
-    bool local_90 = false;
+    bool local_99 = false;
+    bool local_100 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_90 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_100 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_90 = false;
+            local_100 = false;
         }
-        bool _e21 = local_90;
-        local_89 = _e21;
+        bool _e21 = local_100;
+        local_99 = _e21;
     } else {
-        local_89 = true;
+        local_99 = true;
     }
-    bool _e23 = local_89;
+    bool _e23 = local_99;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) {
-    bool local_91 = false;
+    bool local_101 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_92 = false;
+    bool local_102 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_17.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_17.light_position.x, -(s_17.origin.x), key_4);
@@ -4149,11 +4247,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_91 = !(_e38);
+        local_101 = !(_e38);
     } else {
-        local_91 = true;
+        local_101 = true;
     }
-    bool _e41 = local_91;
+    bool _e41 = local_101;
     if (_e41) {
         return plain;
     }
@@ -4177,11 +4275,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
     float h_5 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_5);
     if (_e95) {
-        local_92 = (h_5 > 0.0);
+        local_102 = (h_5 > 0.0);
     } else {
-        local_92 = false;
+        local_102 = false;
     }
-    bool _e101 = local_92;
+    bool _e101 = local_102;
     if (!(_e101)) {
         return plain;
     }
@@ -4331,9 +4429,9 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e129;
 }
 
-float airlight_asinh(float x_11) {
+float airlight_asinh(float x_12) {
     float r_4 = 0.0;
-    float a_24 = abs(x_11);
+    float a_24 = abs(x_12);
     r_4 = (AIRLIGHT_LN_2_ + log(a_24));
     if ((a_24 <= 4096.0)) {
         float _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1.0 + sqrt((1.0 + (a_24 * a_24)))))));
@@ -4341,7 +4439,7 @@ float airlight_asinh(float x_11) {
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return ((x_11 < 0.0) ? -(_e19) : _e18);
+    return ((x_12 < 0.0) ? -(_e19) : _e18);
 }
 
 float airlight_to_w(AirlightOuter g_19, float s_18) {
@@ -4352,18 +4450,18 @@ float airlight_to_w(AirlightOuter g_19, float s_18) {
     return s_18;
 }
 
-vec2 airlight_cos_sin_half_turn(float x_12) {
-    float r_11 = (x_12 - 1.5707964);
-    float z_10 = (r_11 * r_11);
-    float cos_r = (1.0 - ((z_10 / 2.0) * (1.0 - ((z_10 / 12.0) * (1.0 - ((z_10 / 30.0) * (1.0 - ((z_10 / 56.0) * (1.0 - ((z_10 / 90.0) * (1.0 - ((z_10 / 132.0) * (1.0 - (z_10 / 182.0))))))))))))));
-    float sin_r = (r_11 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0)))))))))))))));
+vec2 airlight_cos_sin_half_turn(float x_13) {
+    float r_11 = (x_13 - 1.5707964);
+    float z_11 = (r_11 * r_11);
+    float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
+    float sin_r = (r_11 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_13) {
-    float a_25 = abs(x_13);
+float airlight_acos(float x_14) {
+    float a_25 = abs(x_14);
     float _e8 = airlight_atan(sqrt(((1.0 - a_25) / (1.0 + a_25))));
-    return ((x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_14 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_7, float s_19) {
@@ -4399,23 +4497,23 @@ AirlightOuter airlight_outer_point(AirlightScene s_20, uint max_panels) {
 
 AirlightOuter airlight_surface(AirlightScene s_21) {
     AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_93 = false;
+    bool local_103 = false;
     vec3 u = vec3(0.0);
     float cuts_1[2] = float[2](0.0, 0.0);
     uint k_6 = 0u;
     uint i_17 = 0u;
-    bool local_94 = false;
+    bool local_104 = false;
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     vec3 to_light_1 = (s_21.light_position - s_21.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_21.intensity == 0.0))) {
-        local_93 = (s_21.sigma_s == 0.0);
+        local_103 = (s_21.sigma_s == 0.0);
     } else {
-        local_93 = true;
+        local_103 = true;
     }
-    bool _e18 = local_93;
+    bool _e18 = local_103;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -4478,11 +4576,11 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
             if ((_e98 > _e102)) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1[_e106];
-                local_94 = (_e108 < AIRLIGHT_PI);
+                local_104 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_94 = false;
+                local_104 = false;
             }
-            bool _e112 = local_94;
+            bool _e112 = local_104;
             if (_e112) {
                 uint _e113 = k_6;
                 k_6 = (_e113 + 1u);
@@ -4522,31 +4620,31 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
 
 AirlightOuter airlight_outer(AirlightScene s_22) {
     AirlightOuter g_21 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_95 = false;
-    bool local_96 = false;
-    float s_star = 0.0;
-    float t_star = 0.0;
-    bool local_97 = false;
-    bool local_98 = false;
-    bool local_99 = false;
-    bool local_100 = false;
-    bool local_101 = false;
-    bool local_102 = false;
-    float scale = 0.0;
-    bool local_103 = false;
-    bool local_104 = false;
     bool local_105 = false;
     bool local_106 = false;
+    float s_star = 0.0;
+    float t_star = 0.0;
     bool local_107 = false;
-    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = float[3](0.0, 0.0, 0.0);
-    uint i_19 = 0u;
     bool local_108 = false;
     bool local_109 = false;
     bool local_110 = false;
+    bool local_111 = false;
+    bool local_112 = false;
+    float scale = 0.0;
+    bool local_113 = false;
+    bool local_114 = false;
+    bool local_115 = false;
+    bool local_116 = false;
+    bool local_117 = false;
+    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
+    uint i_19 = 0u;
+    bool local_118 = false;
+    bool local_119 = false;
+    bool local_120 = false;
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_111 = false;
+    bool local_121 = false;
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         AirlightOuter _e4 = airlight_surface(s_22);
         return _e4;
@@ -4560,17 +4658,17 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     vec3 ab_1 = (s_22.light_end - s_22.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = (s_22.intensity == 0.0);
+        local_105 = (s_22.intensity == 0.0);
     } else {
-        local_95 = true;
+        local_105 = true;
     }
-    bool _e26 = local_95;
+    bool _e26 = local_105;
     if (!(_e26)) {
-        local_96 = (s_22.sigma_s == 0.0);
+        local_106 = (s_22.sigma_s == 0.0);
     } else {
-        local_96 = true;
+        local_106 = true;
     }
-    bool _e34 = local_96;
+    bool _e34 = local_106;
     if (_e34) {
         g_21.outcome = 1u;
         AirlightOuter _e37 = g_21;
@@ -4594,94 +4692,94 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_97 = (sin_a_1 > 0.0);
+        local_107 = (sin_a_1 > 0.0);
     } else {
-        local_97 = false;
+        local_107 = false;
     }
-    bool _e84 = local_97;
+    bool _e84 = local_107;
     if (_e84) {
         float _e87 = s_star;
-        local_98 = (_e87 >= 0.0);
+        local_108 = (_e87 >= 0.0);
     } else {
-        local_98 = false;
+        local_108 = false;
     }
-    bool _e91 = local_98;
+    bool _e91 = local_108;
     if (_e91) {
         float _e94 = s_star;
-        local_99 = (_e94 <= _e15);
+        local_109 = (_e94 <= _e15);
     } else {
-        local_99 = false;
+        local_109 = false;
     }
-    bool _e97 = local_99;
+    bool _e97 = local_109;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = (s_22.t_min <= _e101);
+        local_110 = (s_22.t_min <= _e101);
     } else {
-        local_100 = false;
+        local_110 = false;
     }
-    bool _e104 = local_100;
+    bool _e104 = local_110;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = (_e110 <= s_22.t_max);
+            local_112 = (_e110 <= s_22.t_max);
         } else {
-            local_102 = true;
+            local_112 = true;
         }
-        bool _e114 = local_102;
-        local_101 = _e114;
+        bool _e114 = local_112;
+        local_111 = _e114;
     } else {
-        local_101 = false;
+        local_111 = false;
     }
-    bool _e116 = local_101;
+    bool _e116 = local_111;
     if (_e116) {
         g_21.outcome = 2u;
         AirlightOuter _e119 = g_21;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_103 = (_e73 > 0.0);
+        local_113 = (_e73 > 0.0);
     } else {
-        local_103 = false;
+        local_113 = false;
     }
-    bool _e129 = local_103;
+    bool _e129 = local_113;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_104 = (_e136 < (_e15 + _e15));
+        local_114 = (_e136 < (_e15 + _e15));
     } else {
-        local_104 = false;
+        local_114 = false;
     }
-    bool _e140 = local_104;
+    bool _e140 = local_114;
     if (_e140) {
         float _e143 = scale;
-        local_105 = (_e143 < _e15);
+        local_115 = (_e143 < _e15);
     } else {
-        local_105 = false;
+        local_115 = false;
     }
-    bool near_2 = local_105;
-    if (near_2) {
+    bool near_3 = local_115;
+    if (near_3) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_106 = _e154;
+        local_116 = _e154;
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    bool _e156 = local_106;
+    bool _e156 = local_116;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_107 = _e163;
+        local_117 = _e163;
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    bool _e165 = local_107;
+    bool _e165 = local_117;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -4707,21 +4805,21 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_19;
-                local_108 = (_e196 > 0u);
+                local_118 = (_e196 > 0u);
             } else {
-                local_108 = false;
+                local_118 = false;
             }
-            bool _e200 = local_108;
+            bool _e200 = local_118;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if ((_e201 == 2u)) {
-                local_109 = infinite_4;
+                local_119 = infinite_4;
             } else {
-                local_109 = false;
+                local_119 = false;
             }
-            bool _e207 = local_109;
+            bool _e207 = local_119;
             if (_e207) {
                 continue;
             }
@@ -4730,11 +4828,11 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             if ((_e210 > 0.0)) {
                 uint _e215 = i_19;
                 float _e217 = at[_e215];
-                local_110 = (_e217 < _e15);
+                local_120 = (_e217 < _e15);
             } else {
-                local_110 = false;
+                local_120 = false;
             }
-            bool _e220 = local_110;
+            bool _e220 = local_120;
             if (_e220) {
                 uint _e221 = i_19;
                 AirlightOuter _e223 = g_21;
@@ -4794,11 +4892,11 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             if ((_e280 > _e284)) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2[_e288];
-                local_111 = (_e290 < _e265);
+                local_121 = (_e290 < _e265);
             } else {
-                local_111 = false;
+                local_121 = false;
             }
-            bool _e293 = local_111;
+            bool _e293 = local_121;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -4817,7 +4915,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x_14) {
+AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x_15) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
@@ -4825,8 +4923,8 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_21 = min(uint(max(floor(x_14), 0.0)), (g_22.panels - 1u));
-        float t_6 = (x_14 - float(i_21));
+        uint i_21 = min(uint(max(floor(x_15), 0.0)), (g_22.panels - 1u));
+        float t_6 = (x_15 - float(i_21));
         float a_27 = g_22.gamma[i_21];
         float b_18 = g_22.gamma[(i_21 + 1u)];
         float gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
@@ -4851,10 +4949,10 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x
         return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
     if ((s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_14;
+        at_1 = x_15;
         if ((g_22.scale > 0.0)) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_14)));
-            ds = (g_22.scale * cosh(x_14));
+            at_1 = (g_22.s_star + (g_22.scale * sinh(x_15)));
+            ds = (g_22.scale * cosh(x_15));
         }
         float _e115 = at_1;
         p.light_position = (g_22.a + (_e115 * g_22.e));
@@ -4879,17 +4977,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
     float k_7 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_112 = false;
+    bool local_122 = false;
     float f = 0.0;
     AirlightResult r_5 = AirlightResult(0.0, 0u);
-    bool local_113 = false;
-    bool local_114 = false;
-    bool local_115 = false;
+    bool local_123 = false;
+    bool local_124 = false;
+    bool local_125 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_116 = false;
-    bool local_117 = false;
-    bool local_118 = false;
+    bool local_126 = false;
+    bool local_127 = false;
+    bool local_128 = false;
     bool _e1 = airlight_valid(s_24);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -4945,11 +5043,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                     uint _e89 = j_4;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_4;
-                        local_112 = (_e96 < 6u);
+                        local_122 = (_e96 < 6u);
                     } else {
-                        local_112 = false;
+                        local_122 = false;
                     }
-                    bool _e100 = local_112;
+                    bool _e100 = local_122;
                     float w_5 = (_e100 ? (c_14 - (hw_1 * node.x)) : (c_14 + (hw_1 * node.x)));
                     AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_5);
                     f = 0.0;
@@ -4959,11 +5057,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_113 = _e118;
+                            local_123 = _e118;
                         } else {
-                            local_113 = false;
+                            local_123 = false;
                         }
-                        bool _e120 = local_113;
+                        bool _e120 = local_123;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4974,20 +5072,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_124 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_114 = true;
+                            local_124 = true;
                         }
-                        bool _e136 = local_114;
+                        bool _e136 = local_124;
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
                         if ((s_24.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_115 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_125 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_115 = false;
+                            local_125 = false;
                         }
-                        bool _e149 = local_115;
+                        bool _e149 = local_125;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -5057,18 +5155,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_116 = (_e223 == _e6.max_panels);
+                                local_126 = (_e223 == _e6.max_panels);
                             } else {
-                                local_116 = true;
+                                local_126 = true;
                             }
-                            bool _e227 = local_116;
+                            bool _e227 = local_126;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_117 = !(_e231);
+                                local_127 = !(_e231);
                             } else {
-                                local_117 = true;
+                                local_127 = true;
                             }
-                            bool _e234 = local_117;
+                            bool _e234 = local_127;
                             if (_e234) {
                                 break;
                             }
@@ -5078,11 +5176,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             float wb_1 = _e236.y;
                             float mid_1 = (0.5 * (wa_1 + wb_1));
                             if ((mid_1 > wa_1)) {
-                                local_118 = (mid_1 < wb_1);
+                                local_128 = (mid_1 < wb_1);
                             } else {
-                                local_118 = false;
+                                local_128 = false;
                             }
-                            bool _e247 = local_118;
+                            bool _e247 = local_128;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e236.xyz, 0.0));
                                 continue;

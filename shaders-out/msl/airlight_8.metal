@@ -246,7 +246,7 @@ metal::float2 airlight_cos_sin(
     uint k = 0u;
     float fc = {};
     uint j = {};
-    float z_8 = x * x;
+    float z_9 = x * x;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
@@ -266,9 +266,9 @@ metal::float2 airlight_cos_sin(
             uint _e12 = k;
             uint n_2 = 8u - _e12;
             float _e14 = c;
-            c = _e14 * z_8;
+            c = _e14 * z_9;
             float _e16 = s;
-            s = _e16 * z_8;
+            s = _e16 * z_9;
             fc = 1.0;
             j = 1u;
             uint2 loop_bound_1 = uint2(4294967295u);
@@ -331,11 +331,11 @@ float airlight_atan(
     }
     float _e17 = t;
     float _e18 = t;
-    float z_9 = _e17 * _e18;
+    float z_10 = _e17 * _e18;
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return _e20 + (((((((((0.080537446 * z_9) - 0.13877685) * z_9) + 0.19977711) * z_9) - 0.3333295) * z_9) * _e32) + _e34);
+    return _e20 + (((((((((0.080537446 * z_10) - 0.13877685) * z_10) + 0.19977711) * z_10) - 0.3333295) * z_10) * _e32) + _e34);
 }
 
 metal::float2 airlight_cln(
@@ -471,9 +471,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_15 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_16 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_4 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_15 * x_15) + (y_4 * y_4)) < 1.0;
+    return ((x_16 * x_16) + (y_4 * y_4)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -610,20 +610,26 @@ metal::float2 airlight_e1_scaled_cf(
     return _e109;
 }
 
-metal::float2 airlight_e1_scaled(
+metal::float2 airlight_e1_series(
     metal::float2 z_7
 ) {
-    bool _e1 = airlight_in_series_region(z_7);
+    metal::float2 _e1 = airlight_ein(z_7);
+    metal::float2 _e2 = airlight_cln(z_7);
+    return (_e1 - _e2) - metal::float2(0.5772157, 0.0);
+}
+
+metal::float2 airlight_e1_scaled(
+    metal::float2 z_8
+) {
+    bool _e1 = airlight_in_series_region(z_8);
     if (_e1) {
-        metal::float2 _e2 = airlight_ein(z_7);
-        metal::float2 _e3 = airlight_cln(z_7);
-        metal::float2 e1_ = (_e2 - _e3) - metal::float2(0.5772157, 0.0);
-        metal::float2 _e9 = airlight_cexp(z_7);
-        metal::float2 _e10 = airlight_cmul(e1_, _e9);
-        return _e10;
+        metal::float2 _e2 = airlight_e1_series(z_8);
+        metal::float2 _e3 = airlight_cexp(z_8);
+        metal::float2 _e4 = airlight_cmul(_e2, _e3);
+        return _e4;
     }
-    metal::float2 _e11 = airlight_e1_scaled_cf(z_7);
-    return _e11;
+    metal::float2 _e5 = airlight_e1_scaled_cf(z_8);
+    return _e5;
 }
 
 float airlight_en_scaled_cf(
@@ -916,8 +922,8 @@ float airlight_light(
             if (width <= AIRLIGHT_FLT_EPS) {
                 return (c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0;
             }
-            float x_16 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
-            return (x_16 * x_16) * (3.0 - (2.0 * x_16));
+            float x_17 = metal::clamp((c_1 - p1_2) / width, 0.0, 1.0);
+            return (x_17 * x_17) * (3.0 - (2.0 * x_17));
         }
         default: {
             return 1.0;
@@ -1173,10 +1179,10 @@ float airlight_q_zero(
             float _e48 = airlight_atan(half_1.dv / (1.0 + (v_s_1 * _e43)));
             d_im = _e48;
             float _e50 = v_e;
-            float x_17 = (half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e57 = airlight_is_finite(x_17);
+            float x_18 = (half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e57 = airlight_is_finite(x_18);
             if (_e57) {
-                float _e58 = airlight_log1p(x_17);
+                float _e58 = airlight_log1p(x_18);
                 d_re = 0.5 * _e58;
             } else {
                 float _e63 = v_e;
@@ -1264,6 +1270,104 @@ float airlight_moment_zero(
     return _e41;
 }
 
+metal::float2 airlight_moment_zero_weighted(
+    AirlightHalf half_3,
+    float x_6
+) {
+    bool local_9 = {};
+    bool local_10 = {};
+    bool local_11 = {};
+    bool local_12 = {};
+    bool local_13 = {};
+    bool local_14 = {};
+    bool local_15 = {};
+    bool local_16 = {};
+    float far_end = 0.0;
+    bool local_17 = {};
+    bool local_18 = {};
+    float big_h_4 = half_3.big_h;
+    float v_s_2 = half_3.y_lo;
+    metal::float2 z_s_1 = metal::float2(big_h_4 * v_s_2, -(big_h_4));
+    if (!(half_3.dv_infinite)) {
+        local_9 = (big_h_4 * half_3.dv) <= 1.0;
+    } else {
+        local_9 = false;
+    }
+    bool _e16 = local_9;
+    if (_e16) {
+        local_10 = half_3.dy <= 0.25;
+    } else {
+        local_10 = false;
+    }
+    bool short_ = local_10;
+    if (!((big_h_4 == 0.0))) {
+        if (!(half_3.dv_infinite)) {
+            float _e34 = airlight_hypot_one(half_3.y_hi);
+            local_12 = (big_h_4 * _e34) <= 1.0;
+        } else {
+            local_12 = false;
+        }
+        bool _e39 = local_12;
+        local_11 = _e39;
+    } else {
+        local_11 = true;
+    }
+    bool near_2 = local_11;
+    if (!(half_3.second)) {
+        local_13 = !((half_3.dy > 0.0));
+    } else {
+        local_13 = true;
+    }
+    bool _e51 = local_13;
+    if (!(_e51)) {
+        local_14 = short_;
+    } else {
+        local_14 = true;
+    }
+    bool _e56 = local_14;
+    if (!(_e56)) {
+        local_15 = near_2;
+    } else {
+        local_15 = true;
+    }
+    bool _e61 = local_15;
+    if (!(_e61)) {
+        bool _e65 = airlight_in_series_region(z_s_1);
+        local_16 = !(_e65);
+    } else {
+        local_16 = true;
+    }
+    bool _e68 = local_16;
+    if (_e68) {
+        float _e69 = airlight_moment_zero(half_3);
+        return metal::float2(_e69, x_6);
+    }
+    metal::float2 _e71 = airlight_cos_sin(big_h_4);
+    metal::float2 _e72 = airlight_e1_series(z_s_1);
+    metal::float2 _e77 = airlight_cmul(_e72, metal::float2(_e71.x, -(_e71.y)));
+    float near_end = _e77.y;
+    float v_e_2 = half_3.y_hi;
+    if (!(half_3.dv_infinite)) {
+        bool _e87 = airlight_is_finite(big_h_4 * v_e_2);
+        local_17 = _e87;
+    } else {
+        local_17 = false;
+    }
+    bool _e89 = local_17;
+    if (_e89) {
+        local_18 = (big_h_4 * half_3.dv) < 17.32868;
+    } else {
+        local_18 = false;
+    }
+    bool _e97 = local_18;
+    if (_e97) {
+        metal::float2 _e104 = airlight_e1_scaled(metal::float2(big_h_4 * v_e_2, -(big_h_4)));
+        far_end = metal::exp(-(big_h_4) * v_e_2) * _e104.y;
+    }
+    float _e107 = far_end;
+    return metal::float2(near_end - _e107, x_6 - (big_h_4 * v_s_2));
+}
+
 airlight_type_8 airlight_gauss_rule(
 ) {
     return airlight_type_8 {{metal::float2(0.18343464, 0.36268377), metal::float2(0.5255324, 0.31370664), metal::float2(0.7966665, 0.22238104), metal::float2(0.96028984, 0.101228535)}};
@@ -1281,8 +1385,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_18 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_18) : x_18;
+    float x_19 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_19) : x_19;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1300,12 +1404,12 @@ airlight_type_2 airlight_legendre(
 }
 
 float airlight_expm1_(
-    float x_6
+    float x_7
 ) {
     float sum_3 = 1.0;
     uint i_4 = 0u;
-    if (metal::abs(x_6) >= 0.5) {
-        return metal::exp(x_6) - 1.0;
+    if (metal::abs(x_7) >= 0.5) {
+        return metal::exp(x_7) - 1.0;
     }
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_9 = true;
@@ -1325,11 +1429,11 @@ float airlight_expm1_(
         {
             float _e14 = sum_3;
             uint _e17 = i_4;
-            sum_3 = 1.0 + ((x_6 * _e14) / static_cast<float>(12u - _e17));
+            sum_3 = 1.0 + ((x_7 * _e14) / static_cast<float>(12u - _e17));
         }
     }
     float _e26 = sum_3;
-    return x_6 * _e26;
+    return x_7 * _e26;
 }
 
 airlight_type_2 airlight_exp_legendre_moments(
@@ -1364,8 +1468,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_19 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_19 * x_19;
+            float x_20 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_20 * x_20;
             share = per_step;
             uint2 loop_bound_10 = uint2(4294967295u);
             bool loop_init_10 = true;
@@ -1697,7 +1801,7 @@ float airlight_error_factor(
     airlight_type_2 m_1,
     float floor
 ) {
-    bool local_9 = {};
+    bool local_19 = {};
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
@@ -1708,11 +1812,11 @@ float airlight_error_factor(
     float last = metal::abs(c_3.inner[7]) + metal::abs(c_3.inner[6]);
     float before = metal::abs(c_3.inner[5]) + metal::abs(c_3.inner[4]);
     if (!(!((before > 0.0)))) {
-        local_9 = !((last < before));
+        local_19 = !((last < before));
     } else {
-        local_9 = true;
+        local_19 = true;
     }
-    bool _e27 = local_9;
+    bool _e27 = local_19;
     if (_e27) {
         return 1.0;
     }
@@ -1806,18 +1910,18 @@ float airlight_transform_noise(
 }
 
 float airlight_factor(
-    AirlightHalf half_3,
+    AirlightHalf half_4,
     float a_4,
     float b_3
 ) {
     float offset = {};
-    offset = a_4 - half_3.y_lo;
-    if (half_3.second) {
-        offset = (half_3.y_hi - b_3) / (b_3 * half_3.y_hi);
+    offset = a_4 - half_4.y_lo;
+    if (half_4.second) {
+        offset = (half_4.y_hi - b_3) / (b_3 * half_4.y_hi);
     }
     float _e13 = offset;
-    float x_20 = half_3.big_h * _e13;
-    return (x_20 > 0.0) ? metal::exp(-(x_20)) : 1.0;
+    float x_21 = half_4.big_h * _e13;
+    return (x_21 > 0.0) ? metal::exp(-(x_21)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -1859,7 +1963,7 @@ AirlightPanel airlight_v_panel(
     AirlightScene s_5,
     AirlightCanonical g_6,
     float sigma_4,
-    AirlightHalf half_4,
+    AirlightHalf half_5,
     float a_5,
     float b_4,
     metal::float3 heights_1,
@@ -1877,7 +1981,7 @@ AirlightPanel airlight_v_panel(
     r_2 = (b_4 - a_5) * 0.5;
     float _e13 = r_2;
     vc = a_5 + _e13;
-    if (half_4.second) {
+    if (half_5.second) {
         r_2 = ((b_4 - a_5) / (a_5 * b_4)) * 0.5;
         float _e24 = r_2;
         vc = (1.0 / b_4) + _e24;
@@ -1905,7 +2009,7 @@ AirlightPanel airlight_v_panel(
             uint _e41 = i_7;
             float _e42 = airlight_node(_e8, _e41);
             float v_6 = _e39 + (_e40 * _e42);
-            metal::float2 _e48 = airlight_integrand_over(s_5, g_6, half_4.second ? -(sigma_4) : sigma_4, v_6);
+            metal::float2 _e48 = airlight_integrand_over(s_5, g_6, half_5.second ? -(sigma_4) : sigma_4, v_6);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_7;
@@ -1924,7 +2028,7 @@ AirlightPanel airlight_v_panel(
     airlight_type_2 _e76 = samples;
     airlight_type_2 _e77 = airlight_legendre(_e76);
     float _e79 = r_2;
-    airlight_type_2 _e81 = airlight_exp_legendre_moments(half_4.big_h * _e79);
+    airlight_type_2 _e81 = airlight_exp_legendre_moments(half_5.big_h * _e79);
     float _e84 = sum_4;
     sum_4 = _e84 + (_e77.inner[0] * _e81.inner[0]);
     float _e89 = sum_4;
@@ -1941,7 +2045,7 @@ AirlightPanel airlight_v_panel(
     sum_4 = _e114 + (_e77.inner[6] * _e81.inner[6]);
     float _e119 = sum_4;
     sum_4 = _e119 + (_e77.inner[7] * _e81.inner[7]);
-    float _e124 = airlight_factor(half_4, a_5, b_4);
+    float _e124 = airlight_factor(half_5, a_5, b_4);
     float _e125 = r_2;
     float w = _e124 * _e125;
     float mass_4 = w * _e81.inner[0];
@@ -1964,7 +2068,7 @@ AirlightPanel airlight_y_panel(
     AirlightScene s_6,
     AirlightCanonical g_7,
     float sigma_5,
-    AirlightHalf half_5,
+    AirlightHalf half_6,
     float a_6,
     float b_5,
     metal::float3 heights_2,
@@ -2001,7 +2105,7 @@ AirlightPanel airlight_y_panel(
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
             float y_6 = yc_1 + (r_8 * _e29);
-            float weight = metal::exp((-(half_5.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5));
+            float weight = metal::exp((-(half_6.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5));
             float _e41 = airlight_integrand(s_6, g_7, sigma_5, y_6);
             float over_1 = 1.0 / (1.0 + (y_6 * y_6));
             uint _e47 = i_8;
@@ -2022,7 +2126,7 @@ AirlightPanel airlight_y_panel(
     }
     airlight_type_2 _e81 = samples_1;
     airlight_type_2 _e82 = airlight_legendre(_e81);
-    float _e83 = airlight_factor(half_5, a_6, b_5);
+    float _e83 = airlight_factor(half_6, a_6, b_5);
     float w_1 = _e83 * r_8;
     airlight_type_2 _e85 = airlight_zero_terms();
     m_2 = _e85;
@@ -2095,7 +2199,7 @@ AirlightPanel airlight_tail_panel(
     AirlightScene s_7,
     AirlightCanonical g_8,
     float sigma_6,
-    AirlightHalf half_6,
+    AirlightHalf half_7,
     float a_7,
     float b_6
 ) {
@@ -2105,7 +2209,7 @@ AirlightPanel airlight_tail_panel(
     uint i_9 = 0u;
     airlight_type_2 q = {};
     airlight_type_7 s_a = airlight_type_7 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
-    bool local_10 = {};
+    bool local_20 = {};
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = {};
@@ -2222,17 +2326,17 @@ AirlightPanel airlight_tail_panel(
     float _e294 = q.inner[6];
     float _e298 = q.inner[6];
     q = airlight_type_2 {{(_e251 * beta) + _e58.inner[0], (_e256 * alpha) + (_e259 * beta), (_e263 * alpha) + (_e266 * beta), (_e270 * alpha) + (_e273 * beta), (_e277 * alpha) + (_e280 * beta), (_e284 * alpha) + (_e287 * beta), (_e291 * alpha) + (_e294 * beta), _e298 * alpha}};
-    float big_h_4 = half_6.big_h;
-    airlight_type_7 _e303 = airlight_en_scaled(big_h_4 / b_6);
+    float big_h_5 = half_7.big_h;
+    airlight_type_7 _e303 = airlight_en_scaled(big_h_5 / b_6);
     if (a_7 > 0.0) {
-        bool _e321 = airlight_is_finite(big_h_4 / a_7);
-        local_10 = _e321;
+        bool _e321 = airlight_is_finite(big_h_5 / a_7);
+        local_20 = _e321;
     } else {
-        local_10 = false;
+        local_20 = false;
     }
-    bool far_1 = local_10;
+    bool far_1 = local_20;
     if (far_1) {
-        decay = metal::exp(-(big_h_4) * ((b_6 - a_7) / (a_7 * b_6)));
+        decay = metal::exp(-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6)));
     }
     float _e332 = decay;
     if (!((_e332 > 0.000000029802322))) {
@@ -2240,7 +2344,7 @@ AirlightPanel airlight_tail_panel(
     }
     float _e337 = decay;
     if (_e337 > 0.0) {
-        airlight_type_7 _e341 = airlight_en_scaled(big_h_4 / a_7);
+        airlight_type_7 _e341 = airlight_en_scaled(big_h_5 / a_7);
         s_a = _e341;
     }
     if (b_6 > 0.0) {
@@ -2325,16 +2429,16 @@ AirlightPanel airlight_tail_panel(
     float _e525 = ratio_1;
     float _e526 = ab;
     ratio_1 = _e525 * _e526;
-    float _e528 = airlight_factor(half_6, a_7, b_6);
+    float _e528 = airlight_factor(half_7, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_21 = metal::abs(alpha) + metal::abs(beta);
+    float x_22 = metal::abs(alpha) + metal::abs(beta);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_21) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_22) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2344,7 +2448,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_21) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_22) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2354,7 +2458,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_21) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_22) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2364,7 +2468,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_21) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_22) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2374,7 +2478,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_21) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_22) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2384,7 +2488,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_21) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_22) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2394,7 +2498,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_21) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_22) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2404,7 +2508,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_21) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_22) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2428,36 +2532,36 @@ AirlightPanel airlight_panel(
     AirlightScene s_8,
     AirlightCanonical g_9,
     float sigma_7,
-    AirlightHalf half_7,
+    AirlightHalf half_8,
     float a_8,
     float b_7,
     metal::float3 heights_y,
     metal::float3 heights_v,
     metal::float3 steps_4
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
-    if (half_7.second) {
-        local_11 = a_8 <= (b_7 * 0.25);
+    bool local_21 = {};
+    bool local_22 = {};
+    if (half_8.second) {
+        local_21 = a_8 <= (b_7 * 0.25);
     } else {
-        local_11 = false;
+        local_21 = false;
     }
-    bool _e16 = local_11;
+    bool _e16 = local_21;
     if (_e16) {
-        AirlightPanel _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_7, a_8, b_7);
+        AirlightPanel _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_8, a_8, b_7);
         return _e17;
     }
-    if (half_7.second) {
-        local_12 = (half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT;
+    if (half_8.second) {
+        local_22 = (half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT;
     } else {
-        local_12 = false;
+        local_22 = false;
     }
-    bool _e29 = local_12;
+    bool _e29 = local_22;
     if (_e29) {
-        AirlightPanel _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_y, steps_4);
+        AirlightPanel _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    AirlightPanel _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_7, a_8, b_7, heights_v, steps_4);
+    AirlightPanel _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
@@ -2465,7 +2569,7 @@ float airlight_integrate_piece(
     AirlightScene s_9,
     AirlightCanonical g_10,
     float sigma_8,
-    AirlightHalf half_8,
+    AirlightHalf half_9,
     float lo,
     float hi,
     thread float& f_max_4
@@ -2487,16 +2591,16 @@ float airlight_integrate_piece(
     float mass_3 = {};
     uint worst = {};
     uint i_10 = {};
-    bool local_13 = {};
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_23 = {};
+    bool local_24 = {};
+    bool local_25 = {};
     float total_1 = 0.0;
     uint i_11 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
     metal::float3 _e10 = airlight_singular_heights(s_9, sigma_8);
-    metal::float3 heights_v_1 = half_8.second ? (metal::float3(1.0) / _e10) : _e10;
+    metal::float3 heights_v_1 = half_9.second ? (metal::float3(1.0) / _e10) : _e10;
     metal::float3 _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
@@ -2518,7 +2622,7 @@ float airlight_integrate_piece(
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            AirlightPanel _e66 = airlight_panel(s_9, g_10, sigma_8, half_8, _e64, _e65, _e10, heights_v_1, _e16);
+            AirlightPanel _e66 = airlight_panel(s_9, g_10, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = metal::max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -2619,25 +2723,25 @@ float airlight_integrate_piece(
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list.inner[metal::min(unsigned(_e160), 7u)].w;
-                        local_13 = !((_e163 > 0.0));
+                        local_23 = !((_e163 > 0.0));
                     } else {
-                        local_13 = true;
+                        local_23 = true;
                     }
-                    bool _e168 = local_13;
+                    bool _e168 = local_23;
                     if (!(_e168)) {
                         uint _e172 = budget;
-                        local_14 = _e172 < 2u;
+                        local_24 = _e172 < 2u;
                     } else {
-                        local_14 = true;
+                        local_24 = true;
                     }
-                    bool _e176 = local_14;
+                    bool _e176 = local_24;
                     if (!(_e176)) {
                         uint _e180 = count;
-                        local_15 = _e180 == AIRLIGHT_PANEL_LIST;
+                        local_25 = _e180 == AIRLIGHT_PANEL_LIST;
                     } else {
-                        local_15 = true;
+                        local_25 = true;
                     }
-                    bool _e184 = local_15;
+                    bool _e184 = local_25;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -2708,7 +2812,7 @@ metal::float2 airlight_crossings(
     float d_c,
     float k_4
 ) {
-    bool local_16 = {};
+    bool local_26 = {};
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
@@ -2718,11 +2822,11 @@ metal::float2 airlight_crossings(
     float scale_1 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         bool _e21 = airlight_is_finite(scale_1);
-        local_16 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_16 = true;
+        local_26 = true;
     }
-    bool _e24 = local_16;
+    bool _e24 = local_26;
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
@@ -2761,39 +2865,39 @@ float airlight_cosine(
 bool airlight_dark(
     AirlightCanonical g_12,
     float sigma_11,
-    AirlightHalf half_9,
+    AirlightHalf half_10,
     float bound,
     float lo_1,
     float hi_1
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
+    bool local_27 = {};
+    bool local_28 = {};
     float y1_ = {};
-    bool local_19 = {};
-    bool local_20 = {};
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_29 = {};
+    bool local_30 = {};
+    bool local_31 = {};
+    bool local_32 = {};
     float _e9 = airlight_cosine(g_12, sigma_11, 0.5 * (lo_1 + hi_1));
     if (!((_e9 < bound))) {
         return false;
     }
-    if (lo_1 == half_9.y_lo) {
+    if (lo_1 == half_10.y_lo) {
         float _e17 = airlight_cosine(g_12, sigma_11, lo_1);
-        local_17 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_17 = false;
+        local_27 = false;
     }
-    bool _e21 = local_17;
+    bool _e21 = local_27;
     if (_e21) {
         return false;
     }
-    if (hi_1 == half_9.y_hi) {
+    if (hi_1 == half_10.y_hi) {
         float _e27 = airlight_cosine(g_12, sigma_11, hi_1);
-        local_18 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_18 = false;
+        local_28 = false;
     }
-    bool _e31 = local_18;
+    bool _e31 = local_28;
     if (_e31) {
         return false;
     }
@@ -2812,35 +2916,35 @@ bool airlight_dark(
     float _e53 = y1_;
     if (_e53 > lo_1) {
         float _e57 = y1_;
-        local_19 = _e57 < hi_1;
+        local_29 = _e57 < hi_1;
     } else {
-        local_19 = false;
+        local_29 = false;
     }
-    bool _e60 = local_19;
+    bool _e60 = local_29;
     if (_e60) {
         float _e63 = y1_;
         float _e64 = airlight_cosine(g_12, sigma_11, _e63);
-        local_20 = !((_e64 < bound));
+        local_30 = !((_e64 < bound));
     } else {
-        local_20 = false;
+        local_30 = false;
     }
-    bool _e68 = local_20;
+    bool _e68 = local_30;
     if (_e68) {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_21 = y2_2 < hi_1;
+        local_31 = y2_2 < hi_1;
     } else {
-        local_21 = false;
+        local_31 = false;
     }
-    bool _e75 = local_21;
+    bool _e75 = local_31;
     if (_e75) {
         float _e78 = airlight_cosine(g_12, sigma_11, y2_2);
-        local_22 = !((_e78 < bound));
+        local_32 = !((_e78 < bound));
     } else {
-        local_22 = false;
+        local_32 = false;
     }
-    bool _e82 = local_22;
+    bool _e82 = local_32;
     if (_e82) {
         return false;
     }
@@ -2851,7 +2955,7 @@ float airlight_half(
     AirlightScene s_10,
     AirlightCanonical g_13,
     float sigma_12,
-    AirlightHalf half_10,
+    AirlightHalf half_11,
     bool isotropic,
     thread float& f_max_5
 ) {
@@ -2860,69 +2964,69 @@ float airlight_half(
     float k_in = {};
     float k_out = {};
     uint i_12 = 0u;
-    bool local_23 = {};
+    bool local_33 = {};
     uint i_13 = 0u;
     uint j_2 = {};
     float total_2 = 0.0;
     float lo_2 = {};
     uint i_14 = 0u;
     float hi_2 = {};
-    bool local_24 = {};
-    bool local_25 = {};
-    bool local_26 = {};
+    bool local_34 = {};
+    bool local_35 = {};
+    bool local_36 = {};
     if (isotropic) {
-        float _e11 = airlight_integrand(s_10, g_13, sigma_12, half_10.y_lo + (half_10.dy * 0.5));
-        float _e12 = airlight_moment_zero(half_10);
-        return _e11 * _e12;
+        float _e7 = airlight_integrand(s_10, g_13, sigma_12, 0.0);
+        float _e8 = airlight_moment_zero(half_11);
+        return _e7 * _e8;
     }
     if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
         k_in = s_10.light_param_a;
         k_out = s_10.light_param_b;
-        float _e29 = k_in;
-        float _e30 = k_out;
-        float width_1 = _e29 - _e30;
+        float _e25 = k_in;
+        float _e26 = k_out;
+        float width_1 = _e25 - _e26;
         if (width_1 <= AIRLIGHT_FLT_EPS) {
-            float _e34 = k_out;
-            k_in = _e34 + (width_1 * 0.5);
-            float _e38 = k_in;
-            k_out = _e38;
+            float _e30 = k_out;
+            k_in = _e30 + (width_1 * 0.5);
+            float _e34 = k_in;
+            k_out = _e34;
         }
-        float _e39 = k_out;
-        dark_below = _e39;
-        float _e42 = k_in;
+        float _e35 = k_out;
+        dark_below = _e35;
+        float _e38 = k_in;
+        metal::float2 _e39 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e38);
+        float _e42 = k_out;
         metal::float2 _e43 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e42);
-        float _e46 = k_out;
-        metal::float2 _e47 = airlight_crossings(sigma_12, g_13.d_el, g_13.d_c, _e46);
-        cuts = airlight_type_12 {{_e43.x, _e43.y, _e47.x, _e47.y}};
+        cuts = airlight_type_12 {{_e39.x, _e39.y, _e43.x, _e43.y}};
         uint2 loop_bound_20 = uint2(4294967295u);
         bool loop_init_20 = true;
         while(true) {
             if (metal::all(loop_bound_20 == uint2(0u))) { break; }
             loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
             if (!loop_init_20) {
-                uint _e77 = i_12;
-                i_12 = _e77 + 1u;
+                uint _e73 = i_12;
+                i_12 = _e73 + 1u;
             }
             loop_init_20 = false;
-            uint _e55 = i_12;
-            if (_e55 < 4u) {
+            uint _e51 = i_12;
+            if (_e51 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e58 = i_12;
-                float _e60 = cuts.inner[metal::min(unsigned(_e58), 3u)];
-                if (_e60 > half_10.y_lo) {
-                    uint _e65 = i_12;
-                    float _e67 = cuts.inner[metal::min(unsigned(_e65), 3u)];
-                    local_23 = _e67 < half_10.y_hi;
+                uint _e54 = i_12;
+                float _e56 = cuts.inner[metal::min(unsigned(_e54), 3u)];
+                if (_e56 > half_11.y_lo) {
+                    uint _e61 = i_12;
+                    float _e63 = cuts.inner[metal::min(unsigned(_e61), 3u)];
+                    local_33 = _e63 < half_11.y_hi;
                 } else {
-                    local_23 = false;
+                    local_33 = false;
                 }
-                bool _e71 = local_23;
-                if (!(_e71)) {
-                    uint _e73 = i_12;
-                    cuts.inner[metal::min(unsigned(_e73), 3u)] = 2.0;
+                bool _e67 = local_33;
+                if (!(_e67)) {
+                    uint _e69 = i_12;
+                    cuts.inner[metal::min(unsigned(_e69), 3u)] = 2.0;
                 }
             }
         }
@@ -2932,12 +3036,12 @@ float airlight_half(
             if (metal::all(loop_bound_21 == uint2(0u))) { break; }
             loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
             if (!loop_init_21) {
-                uint _e118 = i_13;
-                i_13 = _e118 + 1u;
+                uint _e114 = i_13;
+                i_13 = _e114 + 1u;
             }
             loop_init_21 = false;
-            uint _e81 = i_13;
-            if (_e81 < 3u) {
+            uint _e77 = i_13;
+            if (_e77 < 3u) {
             } else {
                 break;
             }
@@ -2949,117 +3053,117 @@ float airlight_half(
                     if (metal::all(loop_bound_22 == uint2(0u))) { break; }
                     loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
                     if (!loop_init_22) {
-                        uint _e115 = j_2;
-                        j_2 = _e115 + 1u;
+                        uint _e111 = j_2;
+                        j_2 = _e111 + 1u;
                     }
                     loop_init_22 = false;
-                    uint _e86 = j_2;
-                    uint _e88 = i_13;
-                    if (_e86 < (3u - _e88)) {
+                    uint _e82 = j_2;
+                    uint _e84 = i_13;
+                    if (_e82 < (3u - _e84)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e91 = j_2;
-                        float _e93 = cuts.inner[metal::min(unsigned(_e91), 3u)];
-                        uint _e94 = j_2;
-                        float _e98 = cuts.inner[metal::min(unsigned(_e94 + 1u), 3u)];
-                        if (_e93 > _e98) {
-                            uint _e100 = j_2;
-                            float t_5 = cuts.inner[metal::min(unsigned(_e100), 3u)];
-                            uint _e103 = j_2;
-                            uint _e105 = j_2;
-                            float _e109 = cuts.inner[metal::min(unsigned(_e105 + 1u), 3u)];
-                            cuts.inner[metal::min(unsigned(_e103), 3u)] = _e109;
-                            uint _e110 = j_2;
-                            cuts.inner[metal::min(unsigned(_e110 + 1u), 3u)] = t_5;
+                        uint _e87 = j_2;
+                        float _e89 = cuts.inner[metal::min(unsigned(_e87), 3u)];
+                        uint _e90 = j_2;
+                        float _e94 = cuts.inner[metal::min(unsigned(_e90 + 1u), 3u)];
+                        if (_e89 > _e94) {
+                            uint _e96 = j_2;
+                            float t_5 = cuts.inner[metal::min(unsigned(_e96), 3u)];
+                            uint _e99 = j_2;
+                            uint _e101 = j_2;
+                            float _e105 = cuts.inner[metal::min(unsigned(_e101 + 1u), 3u)];
+                            cuts.inner[metal::min(unsigned(_e99), 3u)] = _e105;
+                            uint _e106 = j_2;
+                            cuts.inner[metal::min(unsigned(_e106 + 1u), 3u)] = t_5;
                         }
                     }
                 }
             }
         }
     }
-    lo_2 = half_10.y_lo;
+    lo_2 = half_11.y_lo;
     uint2 loop_bound_23 = uint2(4294967295u);
     bool loop_init_23 = true;
     while(true) {
         if (metal::all(loop_bound_23 == uint2(0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e180 = i_14;
-            i_14 = _e180 + 1u;
+            uint _e176 = i_14;
+            i_14 = _e176 + 1u;
         }
         loop_init_23 = false;
-        uint _e126 = i_14;
-        if (_e126 < 5u) {
+        uint _e122 = i_14;
+        if (_e122 < 5u) {
         } else {
             break;
         }
         {
-            hi_2 = half_10.y_hi;
-            uint _e131 = i_14;
-            if (_e131 < 4u) {
-                uint _e136 = i_14;
-                float _e138 = cuts.inner[metal::min(unsigned(_e136), 3u)];
-                local_24 = _e138 < 2.0;
+            hi_2 = half_11.y_hi;
+            uint _e127 = i_14;
+            if (_e127 < 4u) {
+                uint _e132 = i_14;
+                float _e134 = cuts.inner[metal::min(unsigned(_e132), 3u)];
+                local_34 = _e134 < 2.0;
             } else {
-                local_24 = false;
+                local_34 = false;
             }
-            bool _e142 = local_24;
-            if (_e142) {
-                uint _e143 = i_14;
-                float _e145 = cuts.inner[metal::min(unsigned(_e143), 3u)];
-                hi_2 = _e145;
+            bool _e138 = local_34;
+            if (_e138) {
+                uint _e139 = i_14;
+                float _e141 = cuts.inner[metal::min(unsigned(_e139), 3u)];
+                hi_2 = _e141;
             }
-            float _e146 = hi_2;
-            float _e147 = lo_2;
-            if (_e146 > _e147) {
+            float _e142 = hi_2;
+            float _e143 = lo_2;
+            if (_e142 > _e143) {
                 if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
-                    float _e154 = dark_below;
-                    float _e155 = lo_2;
-                    float _e156 = hi_2;
-                    bool _e157 = airlight_dark(g_13, sigma_12, half_10, _e154, _e155, _e156);
-                    local_25 = _e157;
+                    float _e150 = dark_below;
+                    float _e151 = lo_2;
+                    float _e152 = hi_2;
+                    bool _e153 = airlight_dark(g_13, sigma_12, half_11, _e150, _e151, _e152);
+                    local_35 = _e153;
                 } else {
-                    local_25 = false;
+                    local_35 = false;
                 }
-                bool _e159 = local_25;
-                if (!(_e159)) {
-                    float _e161 = total_2;
-                    float _e162 = lo_2;
-                    float _e163 = hi_2;
-                    float _e164 = airlight_integrate_piece(s_10, g_13, sigma_12, half_10, _e162, _e163, f_max_5);
-                    total_2 = _e161 + _e164;
+                bool _e155 = local_35;
+                if (!(_e155)) {
+                    float _e157 = total_2;
+                    float _e158 = lo_2;
+                    float _e159 = hi_2;
+                    float _e160 = airlight_integrate_piece(s_10, g_13, sigma_12, half_11, _e158, _e159, f_max_5);
+                    total_2 = _e157 + _e160;
                 }
-                float _e166 = hi_2;
-                lo_2 = _e166;
+                float _e162 = hi_2;
+                lo_2 = _e162;
             }
-            uint _e167 = i_14;
-            if (_e167 < 4u) {
-                uint _e172 = i_14;
-                float _e174 = cuts.inner[metal::min(unsigned(_e172), 3u)];
-                local_26 = _e174 >= 2.0;
+            uint _e163 = i_14;
+            if (_e163 < 4u) {
+                uint _e168 = i_14;
+                float _e170 = cuts.inner[metal::min(unsigned(_e168), 3u)];
+                local_36 = _e170 >= 2.0;
             } else {
-                local_26 = false;
+                local_36 = false;
             }
-            bool _e178 = local_26;
-            if (_e178) {
+            bool _e174 = local_36;
+            if (_e174) {
                 break;
             }
         }
     }
-    float _e182 = total_2;
-    return _e182;
+    float _e178 = total_2;
+    return _e178;
 }
 
 float airlight_weighted(
     float sigma_s,
     float intensity,
     float h_2,
-    float x_7,
+    float x_8,
     float j_3
 ) {
-    float plain_1 = ((((2.0 * sigma_s) * intensity) / h_2) * metal::exp(-(x_7))) * j_3;
+    float plain_1 = ((((2.0 * sigma_s) * intensity) / h_2) * metal::exp(-(x_8))) * j_3;
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -3067,23 +3171,23 @@ float airlight_weighted(
     if (!((metal::abs(j_3) > 0.0))) {
         return 0.0;
     }
-    return metal::sign(j_3) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s)) + metal::log(intensity)) - metal::log(h_2)) - x_7) + metal::log(metal::abs(j_3)));
+    return metal::sign(j_3) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s)) + metal::log(intensity)) - metal::log(h_2)) - x_8) + metal::log(metal::abs(j_3)));
 }
 
 float airlight_on_line(
     AirlightScene s_11,
     AirlightCanonical g_14
 ) {
-    bool local_27 = {};
+    bool local_37 = {};
     float span = {};
     airlight_type_7 e2_ = {};
     float tail = 0.0;
     if (!(g_14.t_hi_infinite)) {
-        local_27 = g_14.x_h > g_14.t_hi;
+        local_37 = g_14.x_h > g_14.t_hi;
     } else {
-        local_27 = false;
+        local_37 = false;
     }
-    bool _e10 = local_27;
+    bool _e10 = local_37;
     if (_e10) {
         float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_14.d_el));
         float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
@@ -3149,9 +3253,9 @@ float airlight_whole_line(
     float v_e_1 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_28 = {};
-    bool local_29 = {};
-    float x_8 = 0.0;
+    bool local_38 = {};
+    bool local_39 = {};
+    float x_9 = 0.0;
     float h_3 = g_15.h;
     float a_s = (g_15.x_h - g_15.t_lo) / h_3;
     float _e8 = airlight_hypot_one(a_s);
@@ -3159,11 +3263,11 @@ float airlight_whole_line(
     float u_e = (g_15.t_hi - g_15.x_h) / h_3;
     if (!(g_15.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_28 = _e24;
+        local_38 = _e24;
     } else {
-        local_28 = false;
+        local_38 = false;
     }
-    bool _e26 = local_28;
+    bool _e26 = local_38;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
@@ -3171,11 +3275,11 @@ float airlight_whole_line(
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_29 = _e40;
+            local_39 = _e40;
         } else {
-            local_29 = false;
+            local_39 = false;
         }
-        bool _e42 = local_29;
+        bool _e42 = local_39;
         if (_e42) {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -3189,21 +3293,20 @@ float airlight_whole_line(
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_13 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
-    float _e54 = airlight_integrand(s_12, g_15, -1.0, _e9);
-    float _e55 = airlight_moment_zero(half_13);
-    float j_5 = _e54 * _e55;
-    bool _e59 = airlight_is_finite(_e8);
-    if (_e59) {
-        x_8 = big_h_1 * _e8;
+    AirlightHalf half_14 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
+    bool _e55 = airlight_is_finite(_e8);
+    if (_e55) {
+        x_9 = big_h_1 * _e8;
     } else {
         if (s_12.sigma_t > 0.0) {
-            x_8 = s_12.sigma_t * metal::abs(g_15.x_h - g_15.t_lo);
+            x_9 = s_12.sigma_t * metal::abs(g_15.x_h - g_15.t_lo);
         }
     }
-    float _e72 = x_8;
-    float _e73 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, _e72, j_5);
-    return _e73;
+    float _e66 = x_9;
+    metal::float2 _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    float _e73 = airlight_integrand(s_12, g_15, -1.0, 0.0);
+    float _e76 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, _e67.y, _e73 * _e67.x);
+    return _e76;
 }
 
 float airlight_cut_length(
@@ -3221,54 +3324,54 @@ AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_13,
     AirlightCanonical g_16
 ) {
-    bool local_30 = {};
-    bool local_31 = {};
-    bool local_32 = {};
-    bool local_33 = {};
-    float gap_1 = 0.0;
-    bool local_34 = {};
-    bool local_35 = {};
-    bool local_36 = {};
-    bool local_37 = {};
-    bool local_38 = {};
-    bool local_39 = {};
     bool local_40 = {};
     bool local_41 = {};
     bool local_42 = {};
     bool local_43 = {};
+    float gap_1 = 0.0;
+    bool local_44 = {};
+    bool local_45 = {};
+    bool local_46 = {};
+    bool local_47 = {};
+    bool local_48 = {};
+    bool local_49 = {};
+    bool local_50 = {};
+    bool local_51 = {};
+    bool local_52 = {};
+    bool local_53 = {};
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = {};
-    bool local_44 = {};
-    AirlightHalf half_11 = {};
-    bool local_45 = {};
-    bool local_46 = {};
-    bool local_47 = {};
+    bool local_54 = {};
+    AirlightHalf half_12 = {};
+    bool local_55 = {};
+    bool local_56 = {};
+    bool local_57 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
-    bool local_48 = {};
-    bool local_49 = {};
-    AirlightHalf half_12 = {};
-    bool local_50 = {};
-    bool local_51 = {};
-    bool local_52 = {};
+    bool local_58 = {};
+    bool local_59 = {};
+    AirlightHalf half_13 = {};
+    bool local_60 = {};
+    bool local_61 = {};
+    bool local_62 = {};
     float t0_ = g_16.t_lo;
     float t1_ = g_16.t_hi;
     if (!(g_16.t_hi_infinite)) {
-        local_30 = t1_ > t0_;
+        local_40 = t1_ > t0_;
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    bool _e10 = local_30;
+    bool _e10 = local_40;
     if (!(!(_e10))) {
-        local_31 = (s_13.sigma_s * s_13.intensity) == 0.0;
+        local_41 = (s_13.sigma_s * s_13.intensity) == 0.0;
     } else {
-        local_31 = true;
+        local_41 = true;
     }
-    bool _e21 = local_31;
+    bool _e21 = local_41;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
@@ -3276,16 +3379,16 @@ AirlightResult airlight_in_scatter_canonical(
     float x_h = g_16.x_h;
     if (t0_ <= x_h) {
         if (!(g_16.t_hi_infinite)) {
-            local_33 = x_h <= t1_;
+            local_43 = x_h <= t1_;
         } else {
-            local_33 = true;
+            local_43 = true;
         }
-        bool _e36 = local_33;
-        local_32 = _e36;
+        bool _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_32 = false;
+        local_42 = false;
     }
-    bool inside = local_32;
+    bool inside = local_42;
     if (x_h < t0_) {
         gap_1 = t0_ - x_h;
     } else {
@@ -3295,11 +3398,11 @@ AirlightResult airlight_in_scatter_canonical(
     }
     if (!(inside)) {
         float _e48 = gap_1;
-        local_34 = h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_44 = h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_34 = false;
+        local_44 = false;
     }
-    bool _e55 = local_34;
+    bool _e55 = local_44;
     if (_e55) {
         float _e56 = airlight_on_line(s_13, g_16);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
@@ -3307,63 +3410,63 @@ AirlightResult airlight_in_scatter_canonical(
     if (h_4 == 0.0) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    float big_h_5 = s_13.sigma_t * h_4;
+    float big_h_6 = s_13.sigma_t * h_4;
     if (!((s_13.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = s_13.light_param_a == 0.0;
+            local_46 = s_13.light_param_a == 0.0;
         } else {
-            local_36 = false;
+            local_46 = false;
         }
-        bool _e83 = local_36;
-        local_35 = _e83;
+        bool _e83 = local_46;
+        local_45 = _e83;
     } else {
-        local_35 = true;
+        local_45 = true;
     }
-    bool _e85 = local_35;
+    bool _e85 = local_45;
     if (_e85) {
         if (!((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_39 = s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_49 = s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_39 = true;
+                local_49 = true;
             }
-            bool _e104 = local_39;
+            bool _e104 = local_49;
             if (_e104) {
-                local_40 = s_13.phase_param_a == 0.0;
+                local_50 = s_13.phase_param_a == 0.0;
             } else {
-                local_40 = false;
+                local_50 = false;
             }
-            bool _e111 = local_40;
-            local_38 = _e111;
+            bool _e111 = local_50;
+            local_48 = _e111;
         } else {
-            local_38 = true;
+            local_48 = true;
         }
-        bool _e113 = local_38;
-        local_37 = _e113;
+        bool _e113 = local_48;
+        local_47 = _e113;
     } else {
-        local_37 = false;
+        local_47 = false;
     }
-    bool isotropic_1 = local_37;
+    bool isotropic_1 = local_47;
     if (isotropic_1) {
-        local_41 = t0_ < x_h;
+        local_51 = t0_ < x_h;
     } else {
-        local_41 = false;
+        local_51 = false;
     }
-    bool _e120 = local_41;
+    bool _e120 = local_51;
     if (_e120) {
         if (!(g_16.t_hi_infinite)) {
-            local_43 = x_h < t1_;
+            local_53 = x_h < t1_;
         } else {
-            local_43 = true;
+            local_53 = true;
         }
-        bool _e129 = local_43;
-        local_42 = _e129;
+        bool _e129 = local_53;
+        local_52 = _e129;
     } else {
-        local_42 = false;
+        local_52 = false;
     }
-    bool _e131 = local_42;
+    bool _e131 = local_52;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_13, g_16, big_h_5);
+        float _e132 = airlight_whole_line(s_13, g_16, big_h_6);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
     }
     bool cut = !(isotropic_1);
@@ -3371,11 +3474,11 @@ AirlightResult airlight_in_scatter_canonical(
         float a_s_1 = (x_h - t0_) / h_4;
         t_end = x_h;
         if (!(g_16.t_hi_infinite)) {
-            local_44 = t1_ < x_h;
+            local_54 = t1_ < x_h;
         } else {
-            local_44 = false;
+            local_54 = false;
         }
-        bool _e154 = local_44;
+        bool _e154 = local_54;
         if (_e154) {
             t_end = t1_;
         }
@@ -3387,43 +3490,43 @@ AirlightResult airlight_in_scatter_canonical(
         float _e161 = airlight_bounded(a_e);
         float _e162 = t_end;
         float dy_1 = ((((_e162 - t0_) / h_4) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161;
-        float _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_11 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
+        float _e175 = airlight_optical(big_h_6, dy_1, false);
+        half_12 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
         if (cut) {
-            float _e182 = half_11.big_h;
-            local_45 = _e182 > 0.0;
+            float _e182 = half_12.big_h;
+            local_55 = _e182 > 0.0;
         } else {
-            local_45 = false;
+            local_55 = false;
         }
-        bool _e186 = local_45;
+        bool _e186 = local_55;
         if (_e186) {
-            float _e188 = half_11.big_h;
+            float _e188 = half_12.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                float _e193 = half_11.big_h;
-                half_11 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
+                float _e193 = half_12.big_h;
+                half_12 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_11;
+        AirlightHalf _e199 = half_12;
         float _e200 = airlight_half(s_13, g_16, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, big_h_5 * _e158, _e200);
+        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, big_h_6 * _e158, _e200);
         total_3 = _e201 + _e205;
     }
     if (!(g_16.t_hi_infinite)) {
-        local_46 = t1_ > x_h;
+        local_56 = t1_ > x_h;
     } else {
-        local_46 = true;
+        local_56 = true;
     }
-    bool _e213 = local_46;
+    bool _e213 = local_56;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_47 = !(_e216);
+        local_57 = !(_e216);
     } else {
-        local_47 = false;
+        local_57 = false;
     }
-    bool _e219 = local_47;
+    bool _e219 = local_57;
     if (_e219) {
         float t_start = metal::max(t0_, x_h);
         float a_s_2 = (t_start - x_h) / h_4;
@@ -3433,22 +3536,22 @@ AirlightResult airlight_in_scatter_canonical(
         float a_e_1 = (t1_ - x_h) / h_4;
         if (!(g_16.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_48 = _e238;
+            local_58 = _e238;
         } else {
-            local_48 = false;
+            local_58 = false;
         }
-        bool _e240 = local_48;
+        bool _e240 = local_58;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_ - t_start) / h_4) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245)));
             if (_e241 > 0.0) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_49 = _e255;
+                local_59 = _e255;
             } else {
-                local_49 = false;
+                local_59 = false;
             }
-            bool _e257 = local_49;
+            bool _e257 = local_59;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3460,49 +3563,49 @@ AirlightResult airlight_in_scatter_canonical(
         }
         float _e264 = dv_3;
         bool _e265 = infinite_2;
-        float _e266 = airlight_optical(big_h_5, _e264, _e265);
+        float _e266 = airlight_optical(big_h_6, _e264, _e265);
         float _e267 = y_lo;
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_12 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
+        half_13 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
         if (cut) {
-            float _e276 = half_12.big_h;
-            local_50 = _e276 > 0.0;
+            float _e276 = half_13.big_h;
+            local_60 = _e276 > 0.0;
         } else {
-            local_50 = false;
+            local_60 = false;
         }
-        bool _e280 = local_50;
+        bool _e280 = local_60;
         if (_e280) {
-            float _e282 = half_12.big_h;
+            float _e282 = half_13.big_h;
             float _e285 = airlight_cut_length(_e282, 1.0 / _e224);
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_51 = _e285 < _e290;
+                local_61 = _e285 < _e290;
             } else {
-                local_51 = true;
+                local_61 = true;
             }
-            bool _e293 = local_51;
+            bool _e293 = local_61;
             if (_e293) {
                 float cut_y_lo = _e224 / (1.0 + (_e224 * _e285));
                 if (cut_y_lo > 0.0) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_52 = _e302;
+                    local_62 = _e302;
                 } else {
-                    local_52 = false;
+                    local_62 = false;
                 }
-                bool _e304 = local_52;
+                bool _e304 = local_62;
                 if (_e304) {
-                    float _e307 = half_12.big_h;
-                    half_12 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
+                    float _e307 = half_13.big_h;
+                    half_13 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
                 }
             }
         }
-        AirlightHalf _e313 = half_12;
+        AirlightHalf _e313 = half_13;
         float _e314 = airlight_half(s_13, g_16, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (s_13.sigma_t * (t_start - t0_)) + (big_h_5 * _e223), _e314);
+        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (s_13.sigma_t * (t_start - t0_)) + (big_h_6 * _e223), _e314);
         total_3 = _e315 + _e323;
     }
     float _e325 = total_3;
@@ -3512,23 +3615,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_53 = {};
-    bool local_54 = {};
+    bool local_63 = {};
+    bool local_64 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_53 = _e6;
+        local_63 = _e6;
     } else {
-        local_53 = false;
+        local_63 = false;
     }
-    bool _e8 = local_53;
+    bool _e8 = local_63;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_54 = _e12;
+        local_64 = _e12;
     } else {
-        local_54 = false;
+        local_64 = false;
     }
-    bool _e14 = local_54;
+    bool _e14 = local_64;
     return _e14;
 }
 
@@ -3545,15 +3648,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_55 = {};
+    bool local_65 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_55 = _e6;
+        local_65 = _e6;
     } else {
-        local_55 = false;
+        local_65 = false;
     }
-    bool _e8 = local_55;
+    bool _e8 = local_65;
     return _e8;
 }
 
@@ -3568,17 +3671,6 @@ metal::float3 airlight_normalize(
 bool airlight_valid(
     AirlightScene s_14
 ) {
-    bool local_56 = {};
-    bool local_57 = {};
-    bool local_58 = {};
-    bool local_59 = {};
-    bool local_60 = {};
-    bool local_61 = {};
-    bool local_62 = {};
-    bool local_63 = {};
-    bool local_64 = {};
-    bool local_65 = {};
-    bool ok = {};
     bool local_66 = {};
     bool local_67 = {};
     bool local_68 = {};
@@ -3589,6 +3681,7 @@ bool airlight_valid(
     bool local_73 = {};
     bool local_74 = {};
     bool local_75 = {};
+    bool ok = {};
     bool local_76 = {};
     bool local_77 = {};
     bool local_78 = {};
@@ -3602,101 +3695,111 @@ bool airlight_valid(
     bool local_86 = {};
     bool local_87 = {};
     bool local_88 = {};
+    bool local_89 = {};
+    bool local_90 = {};
+    bool local_91 = {};
+    bool local_92 = {};
+    bool local_93 = {};
+    bool local_94 = {};
+    bool local_95 = {};
+    bool local_96 = {};
+    bool local_97 = {};
+    bool local_98 = {};
     bool _e2 = airlight_vec_finite(s_14.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_14.dir);
-        local_56 = _e6;
+        local_66 = _e6;
     } else {
-        local_56 = false;
+        local_66 = false;
     }
-    bool _e8 = local_56;
+    bool _e8 = local_66;
     if (_e8) {
         bool _e12 = airlight_normalisable(s_14.dir);
-        local_57 = _e12;
+        local_67 = _e12;
     } else {
-        local_57 = false;
+        local_67 = false;
     }
-    bool _e14 = local_57;
+    bool _e14 = local_67;
     if (_e14) {
         bool _e18 = airlight_is_finite(s_14.t_min);
-        local_58 = _e18;
+        local_68 = _e18;
     } else {
-        local_58 = false;
+        local_68 = false;
     }
-    bool _e20 = local_58;
+    bool _e20 = local_68;
     if (_e20) {
         bool _e24 = airlight_vec_finite(s_14.light_position);
-        local_59 = _e24;
+        local_69 = _e24;
     } else {
-        local_59 = false;
+        local_69 = false;
     }
-    bool _e26 = local_59;
+    bool _e26 = local_69;
     if (_e26) {
         bool _e30 = airlight_is_finite(s_14.intensity);
-        local_60 = _e30;
+        local_70 = _e30;
     } else {
-        local_60 = false;
+        local_70 = false;
     }
-    bool _e32 = local_60;
+    bool _e32 = local_70;
     if (_e32) {
-        local_61 = s_14.intensity >= 0.0;
+        local_71 = s_14.intensity >= 0.0;
     } else {
-        local_61 = false;
+        local_71 = false;
     }
-    bool _e39 = local_61;
+    bool _e39 = local_71;
     if (_e39) {
         bool _e43 = airlight_is_finite(s_14.sigma_s);
-        local_62 = _e43;
+        local_72 = _e43;
     } else {
-        local_62 = false;
+        local_72 = false;
     }
-    bool _e45 = local_62;
+    bool _e45 = local_72;
     if (_e45) {
-        local_63 = s_14.sigma_s >= 0.0;
+        local_73 = s_14.sigma_s >= 0.0;
     } else {
-        local_63 = false;
+        local_73 = false;
     }
-    bool _e52 = local_63;
+    bool _e52 = local_73;
     if (_e52) {
         bool _e56 = airlight_is_finite(s_14.sigma_t);
-        local_64 = _e56;
+        local_74 = _e56;
     } else {
-        local_64 = false;
+        local_74 = false;
     }
-    bool _e58 = local_64;
+    bool _e58 = local_74;
     if (_e58) {
-        local_65 = s_14.sigma_t >= 0.0;
+        local_75 = s_14.sigma_t >= 0.0;
     } else {
-        local_65 = false;
+        local_75 = false;
     }
-    bool _e65 = local_65;
+    bool _e65 = local_75;
     ok = _e65;
     if ((s_14.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_14.t_max);
-            local_66 = _e76;
+            local_76 = _e76;
         } else {
-            local_66 = false;
+            local_76 = false;
         }
-        bool _e78 = local_66;
+        bool _e78 = local_76;
         if (_e78) {
-            local_67 = s_14.t_min <= s_14.t_max;
+            local_77 = s_14.t_min <= s_14.t_max;
         } else {
-            local_67 = false;
+            local_77 = false;
         }
-        bool _e85 = local_67;
+        bool _e85 = local_77;
         ok = _e85;
     }
     if (s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_14.light_end);
-            local_68 = _e93;
+            local_78 = _e93;
         } else {
-            local_68 = false;
+            local_78 = false;
         }
-        bool _e95 = local_68;
+        bool _e95 = local_78;
         ok = _e95;
     } else {
         if (s_14.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3707,37 +3810,37 @@ bool airlight_valid(
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_14.brdf_albedo);
-            local_69 = _e107;
+            local_79 = _e107;
         } else {
-            local_69 = false;
+            local_79 = false;
         }
-        bool _e109 = local_69;
+        bool _e109 = local_79;
         if (_e109) {
-            local_70 = s_14.brdf_albedo >= 0.0;
+            local_80 = s_14.brdf_albedo >= 0.0;
         } else {
-            local_70 = false;
+            local_80 = false;
         }
-        bool _e116 = local_70;
+        bool _e116 = local_80;
         if (_e116) {
-            local_71 = s_14.light_kind == AIRLIGHT_LIGHT_OMNI;
+            local_81 = s_14.light_kind == AIRLIGHT_LIGHT_OMNI;
         } else {
-            local_71 = false;
+            local_81 = false;
         }
-        bool _e123 = local_71;
+        bool _e123 = local_81;
         if (_e123) {
-            local_72 = s_14.light_shape == AIRLIGHT_SHAPE_POINT;
+            local_82 = s_14.light_shape == AIRLIGHT_SHAPE_POINT;
         } else {
-            local_72 = false;
+            local_82 = false;
         }
-        bool _e130 = local_72;
+        bool _e130 = local_82;
         if (_e130) {
             float _e136 = airlight_safe_length(s_14.light_position - s_14.origin);
             bool _e137 = airlight_is_finite(_e136);
-            local_73 = _e137;
+            local_83 = _e137;
         } else {
-            local_73 = false;
+            local_83 = false;
         }
-        bool _e139 = local_73;
+        bool _e139 = local_83;
         ok = _e139;
     } else {
         if (s_14.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3748,72 +3851,72 @@ bool airlight_valid(
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_14.light_axis);
-            local_74 = _e151;
+            local_84 = _e151;
         } else {
-            local_74 = false;
+            local_84 = false;
         }
-        bool _e153 = local_74;
+        bool _e153 = local_84;
         if (_e153) {
             bool _e157 = airlight_normalisable(s_14.light_axis);
-            local_75 = _e157;
+            local_85 = _e157;
         } else {
-            local_75 = false;
+            local_85 = false;
         }
-        bool _e159 = local_75;
+        bool _e159 = local_85;
         if (_e159) {
-            local_76 = s_14.light_param_a >= 0.0;
+            local_86 = s_14.light_param_a >= 0.0;
         } else {
-            local_76 = false;
+            local_86 = false;
         }
-        bool _e166 = local_76;
+        bool _e166 = local_86;
         if (_e166) {
-            local_77 = s_14.light_param_a <= 1024.0;
+            local_87 = s_14.light_param_a <= 1024.0;
         } else {
-            local_77 = false;
+            local_87 = false;
         }
-        bool _e173 = local_77;
+        bool _e173 = local_87;
         if (_e173) {
-            local_78 = metal::fract(s_14.light_param_a * 0.5) == 0.0;
+            local_88 = metal::fract(s_14.light_param_a * 0.5) == 0.0;
         } else {
-            local_78 = false;
+            local_88 = false;
         }
-        bool _e183 = local_78;
+        bool _e183 = local_88;
         ok = _e183;
     } else {
         if (s_14.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_14.light_axis);
-                local_79 = _e191;
+                local_89 = _e191;
             } else {
-                local_79 = false;
+                local_89 = false;
             }
-            bool _e193 = local_79;
+            bool _e193 = local_89;
             if (_e193) {
                 bool _e197 = airlight_normalisable(s_14.light_axis);
-                local_80 = _e197;
+                local_90 = _e197;
             } else {
-                local_80 = false;
+                local_90 = false;
             }
-            bool _e199 = local_80;
+            bool _e199 = local_90;
             if (_e199) {
-                local_81 = s_14.light_param_b < s_14.light_param_a;
+                local_91 = s_14.light_param_b < s_14.light_param_a;
             } else {
-                local_81 = false;
+                local_91 = false;
             }
-            bool _e206 = local_81;
+            bool _e206 = local_91;
             if (_e206) {
-                local_82 = s_14.light_param_b >= -1.0;
+                local_92 = s_14.light_param_b >= -1.0;
             } else {
-                local_82 = false;
+                local_92 = false;
             }
-            bool _e213 = local_82;
+            bool _e213 = local_92;
             if (_e213) {
-                local_83 = s_14.light_param_a <= 1.0;
+                local_93 = s_14.light_param_a <= 1.0;
             } else {
-                local_83 = false;
+                local_93 = false;
             }
-            bool _e220 = local_83;
+            bool _e220 = local_93;
             ok = _e220;
         } else {
             if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3832,40 +3935,40 @@ bool airlight_valid(
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_84 = g_ok;
+                local_94 = g_ok;
             } else {
-                local_84 = false;
+                local_94 = false;
             }
-            bool _e234 = local_84;
+            bool _e234 = local_94;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_85 = g_ok;
+                local_95 = g_ok;
             } else {
-                local_85 = false;
+                local_95 = false;
             }
-            bool _e239 = local_85;
+            bool _e239 = local_95;
             if (_e239) {
-                local_86 = metal::abs(s_14.phase_param_b) < 1.0;
+                local_96 = metal::abs(s_14.phase_param_b) < 1.0;
             } else {
-                local_86 = false;
+                local_96 = false;
             }
-            bool _e247 = local_86;
+            bool _e247 = local_96;
             if (_e247) {
-                local_87 = s_14.phase_param_c >= 0.0;
+                local_97 = s_14.phase_param_c >= 0.0;
             } else {
-                local_87 = false;
+                local_97 = false;
             }
-            bool _e254 = local_87;
+            bool _e254 = local_97;
             if (_e254) {
-                local_88 = s_14.phase_param_c <= 1.0;
+                local_98 = s_14.phase_param_c <= 1.0;
             } else {
-                local_88 = false;
+                local_98 = false;
             }
-            bool _e261 = local_88;
+            bool _e261 = local_98;
             ok = _e261;
             break;
         }
@@ -3903,10 +4006,10 @@ AirlightCanonical airlight_canonical(
 }
 
 float airlight_opaque(
-    float x_9,
+    float x_10,
     uint key
 ) {
-    return as_type<float>(as_type<uint>(x_9) ^ key);
+    return as_type<float>(as_type<uint>(x_10) ^ key);
 }
 
 metal::float2 airlight_two_sum(
@@ -3923,9 +4026,9 @@ metal::float2 airlight_two_sum(
 }
 
 float airlight_split_high(
-    float x_10
+    float x_11
 ) {
-    return as_type<float>((as_type<uint>(x_10) + 2048u) & 4294963200u);
+    return as_type<float>((as_type<uint>(x_11) + 2048u) & 4294963200u);
 }
 
 metal::float2 airlight_two_product(
@@ -3960,21 +4063,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_89 = {};
-    bool local_90 = {};
+    bool local_99 = {};
+    bool local_100 = {};
     float m_8 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if (m_8 >= 0.0000000009313226) {
-            local_90 = m_8 <= AIRLIGHT_EXACT_RANGE;
+            local_100 = m_8 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_90 = false;
+            local_100 = false;
         }
-        bool _e21 = local_90;
-        local_89 = _e21;
+        bool _e21 = local_100;
+        local_99 = _e21;
     } else {
-        local_89 = true;
+        local_99 = true;
     }
-    bool _e23 = local_89;
+    bool _e23 = local_99;
     return _e23;
 }
 
@@ -3982,9 +4085,9 @@ AirlightCanonical airlight_refined(
     AirlightScene s_16,
     AirlightCanonical plain
 ) {
-    bool local_91 = {};
+    bool local_101 = {};
     AirlightCanonical out_2 = {};
-    bool local_92 = {};
+    bool local_102 = {};
     metal::float3 a_15 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_16.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_16.light_position[0], -(s_16.origin[0]), key_4);
@@ -3996,11 +4099,11 @@ AirlightCanonical airlight_refined(
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_91 = !(_e38);
+        local_101 = !(_e38);
     } else {
-        local_91 = true;
+        local_101 = true;
     }
-    bool _e41 = local_91;
+    bool _e41 = local_101;
     if (_e41) {
         return plain;
     }
@@ -4024,11 +4127,11 @@ AirlightCanonical airlight_refined(
     float h_5 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_5);
     if (_e95) {
-        local_92 = h_5 > 0.0;
+        local_102 = h_5 > 0.0;
     } else {
-        local_92 = false;
+        local_102 = false;
     }
-    bool _e101 = local_92;
+    bool _e101 = local_102;
     if (!(_e101)) {
         return plain;
     }
@@ -4190,10 +4293,10 @@ AirlightListScan airlight_list_scan(
 }
 
 float airlight_asinh(
-    float x_11
+    float x_12
 ) {
     float r_4 = {};
-    float a_24 = metal::abs(x_11);
+    float a_24 = metal::abs(x_12);
     r_4 = AIRLIGHT_LN_2_ + metal::log(a_24);
     if (a_24 <= 4096.0) {
         float _e17 = airlight_log1p(a_24 + ((a_24 * a_24) / (1.0 + metal::sqrt(1.0 + (a_24 * a_24)))));
@@ -4201,7 +4304,7 @@ float airlight_asinh(
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return (x_11 < 0.0) ? -(_e19) : _e18;
+    return (x_12 < 0.0) ? -(_e19) : _e18;
 }
 
 float airlight_to_w(
@@ -4216,21 +4319,21 @@ float airlight_to_w(
 }
 
 metal::float2 airlight_cos_sin_half_turn(
-    float x_12
+    float x_13
 ) {
-    float r_11 = x_12 - 1.5707964;
-    float z_10 = r_11 * r_11;
-    float cos_r = 1.0 - ((z_10 / 2.0) * (1.0 - ((z_10 / 12.0) * (1.0 - ((z_10 / 30.0) * (1.0 - ((z_10 / 56.0) * (1.0 - ((z_10 / 90.0) * (1.0 - ((z_10 / 132.0) * (1.0 - (z_10 / 182.0)))))))))))));
-    float sin_r = r_11 * (1.0 - ((z_10 / 6.0) * (1.0 - ((z_10 / 20.0) * (1.0 - ((z_10 / 42.0) * (1.0 - ((z_10 / 72.0) * (1.0 - ((z_10 / 110.0) * (1.0 - ((z_10 / 156.0) * (1.0 - (z_10 / 210.0))))))))))))));
+    float r_11 = x_13 - 1.5707964;
+    float z_11 = r_11 * r_11;
+    float cos_r = 1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0)))))))))))));
+    float sin_r = r_11 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0))))))))))))));
     return metal::float2(-(sin_r), cos_r);
 }
 
 float airlight_acos(
-    float x_13
+    float x_14
 ) {
-    float a_25 = metal::abs(x_13);
+    float a_25 = metal::abs(x_14);
     float _e8 = airlight_atan(metal::sqrt((1.0 - a_25) / (1.0 + a_25)));
-    return (x_13 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
+    return (x_14 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
@@ -4279,23 +4382,23 @@ AirlightOuter airlight_surface(
     AirlightScene s_20
 ) {
     AirlightOuter g_18 = {};
-    bool local_93 = {};
+    bool local_103 = {};
     metal::float3 u = {};
     airlight_type_16 cuts_1 = {};
     uint k_5 = 0u;
     uint i_17 = 0u;
-    bool local_94 = {};
+    bool local_104 = {};
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_18 = _e2;
     metal::float3 to_light_1 = s_20.light_position - s_20.origin;
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_20.intensity == 0.0))) {
-        local_93 = s_20.sigma_s == 0.0;
+        local_103 = s_20.sigma_s == 0.0;
     } else {
-        local_93 = true;
+        local_103 = true;
     }
-    bool _e18 = local_93;
+    bool _e18 = local_103;
     if (_e18) {
         g_18.outcome = 1u;
         AirlightOuter _e21 = g_18;
@@ -4361,11 +4464,11 @@ AirlightOuter airlight_surface(
             if (_e98 > _e102) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1.inner[metal::min(unsigned(_e106), 1u)];
-                local_94 = _e108 < AIRLIGHT_PI;
+                local_104 = _e108 < AIRLIGHT_PI;
             } else {
-                local_94 = false;
+                local_104 = false;
             }
-            bool _e112 = local_94;
+            bool _e112 = local_104;
             if (_e112) {
                 uint _e113 = k_5;
                 k_5 = _e113 + 1u;
@@ -4410,31 +4513,31 @@ AirlightOuter airlight_outer(
     AirlightScene s_21
 ) {
     AirlightOuter g_19 = {};
-    bool local_95 = {};
-    bool local_96 = {};
-    float s_star = 0.0;
-    float t_star = {};
-    bool local_97 = {};
-    bool local_98 = {};
-    bool local_99 = {};
-    bool local_100 = {};
-    bool local_101 = {};
-    bool local_102 = {};
-    float scale = 0.0;
-    bool local_103 = {};
-    bool local_104 = {};
     bool local_105 = {};
     bool local_106 = {};
+    float s_star = 0.0;
+    float t_star = {};
     bool local_107 = {};
-    airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_17 at = {};
-    uint i_19 = 0u;
     bool local_108 = {};
     bool local_109 = {};
     bool local_110 = {};
+    bool local_111 = {};
+    bool local_112 = {};
+    float scale = 0.0;
+    bool local_113 = {};
+    bool local_114 = {};
+    bool local_115 = {};
+    bool local_116 = {};
+    bool local_117 = {};
+    airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_17 at = {};
+    uint i_19 = 0u;
+    bool local_118 = {};
+    bool local_119 = {};
+    bool local_120 = {};
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_111 = {};
+    bool local_121 = {};
     if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         AirlightOuter _e4 = airlight_surface(s_21);
         return _e4;
@@ -4448,17 +4551,17 @@ AirlightOuter airlight_outer(
     metal::float3 ab_1 = s_21.light_end - s_21.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_95 = s_21.intensity == 0.0;
+        local_105 = s_21.intensity == 0.0;
     } else {
-        local_95 = true;
+        local_105 = true;
     }
-    bool _e26 = local_95;
+    bool _e26 = local_105;
     if (!(_e26)) {
-        local_96 = s_21.sigma_s == 0.0;
+        local_106 = s_21.sigma_s == 0.0;
     } else {
-        local_96 = true;
+        local_106 = true;
     }
-    bool _e34 = local_96;
+    bool _e34 = local_106;
     if (_e34) {
         g_19.outcome = 1u;
         AirlightOuter _e37 = g_19;
@@ -4482,94 +4585,94 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_4 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_97 = sin_a_1 > 0.0;
+        local_107 = sin_a_1 > 0.0;
     } else {
-        local_97 = false;
+        local_107 = false;
     }
-    bool _e84 = local_97;
+    bool _e84 = local_107;
     if (_e84) {
         float _e87 = s_star;
-        local_98 = _e87 >= 0.0;
+        local_108 = _e87 >= 0.0;
     } else {
-        local_98 = false;
+        local_108 = false;
     }
-    bool _e91 = local_98;
+    bool _e91 = local_108;
     if (_e91) {
         float _e94 = s_star;
-        local_99 = _e94 <= _e15;
+        local_109 = _e94 <= _e15;
     } else {
-        local_99 = false;
+        local_109 = false;
     }
-    bool _e97 = local_99;
+    bool _e97 = local_109;
     if (_e97) {
         float _e101 = t_star;
-        local_100 = s_21.t_min <= _e101;
+        local_110 = s_21.t_min <= _e101;
     } else {
-        local_100 = false;
+        local_110 = false;
     }
-    bool _e104 = local_100;
+    bool _e104 = local_110;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_102 = _e110 <= s_21.t_max;
+            local_112 = _e110 <= s_21.t_max;
         } else {
-            local_102 = true;
+            local_112 = true;
         }
-        bool _e114 = local_102;
-        local_101 = _e114;
+        bool _e114 = local_112;
+        local_111 = _e114;
     } else {
-        local_101 = false;
+        local_111 = false;
     }
-    bool _e116 = local_101;
+    bool _e116 = local_111;
     if (_e116) {
         g_19.outcome = 2u;
         AirlightOuter _e119 = g_19;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_103 = _e73 > 0.0;
+        local_113 = _e73 > 0.0;
     } else {
-        local_103 = false;
+        local_113 = false;
     }
-    bool _e129 = local_103;
+    bool _e129 = local_113;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_104 = _e136 < (_e15 + _e15);
+        local_114 = _e136 < (_e15 + _e15);
     } else {
-        local_104 = false;
+        local_114 = false;
     }
-    bool _e140 = local_104;
+    bool _e140 = local_114;
     if (_e140) {
         float _e143 = scale;
-        local_105 = _e143 < _e15;
+        local_115 = _e143 < _e15;
     } else {
-        local_105 = false;
+        local_115 = false;
     }
-    bool near_2 = local_105;
-    if (near_2) {
+    bool near_3 = local_115;
+    if (near_3) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_106 = _e154;
+        local_116 = _e154;
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    bool _e156 = local_106;
+    bool _e156 = local_116;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_107 = _e163;
+        local_117 = _e163;
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    bool _e165 = local_107;
+    bool _e165 = local_117;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -4598,21 +4701,21 @@ AirlightOuter airlight_outer(
         {
             if (cos_a_2 == 0.0) {
                 uint _e196 = i_19;
-                local_108 = _e196 > 0u;
+                local_118 = _e196 > 0u;
             } else {
-                local_108 = false;
+                local_118 = false;
             }
-            bool _e200 = local_108;
+            bool _e200 = local_118;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if (_e201 == 2u) {
-                local_109 = infinite_4;
+                local_119 = infinite_4;
             } else {
-                local_109 = false;
+                local_119 = false;
             }
-            bool _e207 = local_109;
+            bool _e207 = local_119;
             if (_e207) {
                 continue;
             }
@@ -4621,11 +4724,11 @@ AirlightOuter airlight_outer(
             if (_e210 > 0.0) {
                 uint _e215 = i_19;
                 float _e217 = at.inner[metal::min(unsigned(_e215), 2u)];
-                local_110 = _e217 < _e15;
+                local_120 = _e217 < _e15;
             } else {
-                local_110 = false;
+                local_120 = false;
             }
-            bool _e220 = local_110;
+            bool _e220 = local_120;
             if (_e220) {
                 uint _e221 = i_19;
                 AirlightOuter _e223 = g_19;
@@ -4688,11 +4791,11 @@ AirlightOuter airlight_outer(
             if (_e280 > _e284) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2.inner[metal::min(unsigned(_e288), 2u)];
-                local_111 = _e290 < _e265;
+                local_121 = _e290 < _e265;
             } else {
-                local_111 = false;
+                local_121 = false;
             }
-            bool _e293 = local_111;
+            bool _e293 = local_121;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = _e294 + 1u;
@@ -4714,7 +4817,7 @@ AirlightOuter airlight_outer(
 AirlightNode airlight_outer_node(
     AirlightScene s_22,
     AirlightOuter g_20,
-    float x_14
+    float x_15
 ) {
     AirlightScene p = {};
     float at_1 = {};
@@ -4723,8 +4826,8 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        uint i_21 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_14), 0.0)), g_20.panels - 1u);
-        float t_6 = x_14 - static_cast<float>(i_21);
+        uint i_21 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_15), 0.0)), g_20.panels - 1u);
+        float t_6 = x_15 - static_cast<float>(i_21);
         float a_27 = g_20.gamma.inner[metal::min(unsigned(i_21), 3u)];
         float b_18 = g_20.gamma.inner[metal::min(unsigned(i_21 + 1u), 3u)];
         float gamma = a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3.0 - t_6) - t_6));
@@ -4749,10 +4852,10 @@ AirlightNode airlight_outer_node(
         return AirlightNode {_e87, (((s_22.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian};
     }
     if (s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_14;
+        at_1 = x_15;
         if (g_20.scale > 0.0) {
-            at_1 = g_20.s_star + (g_20.scale * metal::sinh(x_14));
-            ds = g_20.scale * metal::cosh(x_14);
+            at_1 = g_20.s_star + (g_20.scale * metal::sinh(x_15));
+            ds = g_20.scale * metal::cosh(x_15);
         }
         float _e115 = at_1;
         p.light_position = g_20.a + (_e115 * g_20.e);
@@ -4779,17 +4882,17 @@ AirlightResult airlight_in_scatter(
     float k_6 = {};
     float gauss = {};
     uint j_4 = {};
-    bool local_112 = {};
+    bool local_122 = {};
     float f = {};
     AirlightResult r_5 = {};
-    bool local_113 = {};
-    bool local_114 = {};
-    bool local_115 = {};
+    bool local_123 = {};
+    bool local_124 = {};
+    bool local_125 = {};
     bool split = {};
     uint tries = {};
-    bool local_116 = {};
-    bool local_117 = {};
-    bool local_118 = {};
+    bool local_126 = {};
+    bool local_127 = {};
+    bool local_128 = {};
     bool _e1 = airlight_valid(s_23);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -4851,11 +4954,11 @@ AirlightResult airlight_in_scatter(
                     uint _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         uint _e96 = j_4;
-                        local_112 = _e96 < 6u;
+                        local_122 = _e96 < 6u;
                     } else {
-                        local_112 = false;
+                        local_122 = false;
                     }
-                    bool _e100 = local_112;
+                    bool _e100 = local_122;
                     float w_4 = _e100 ? (c_14 - (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_14 + (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
                     AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_4);
                     f = 0.0;
@@ -4865,11 +4968,11 @@ AirlightResult airlight_in_scatter(
                         bool _e114 = airlight_vec_finite(_e102.scene.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(_e102.scene.dir);
-                            local_113 = _e118;
+                            local_123 = _e118;
                         } else {
-                            local_113 = false;
+                            local_123 = false;
                         }
-                        bool _e120 = local_113;
+                        bool _e120 = local_123;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4880,20 +4983,20 @@ AirlightResult airlight_in_scatter(
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_114 = _e132 == AIRLIGHT_STATUS_INFINITE;
+                            local_124 = _e132 == AIRLIGHT_STATUS_INFINITE;
                         } else {
-                            local_114 = true;
+                            local_124 = true;
                         }
-                        bool _e136 = local_114;
+                        bool _e136 = local_124;
                         if (_e136) {
                             return AirlightResult {340282350000000000000000000000000000000.0, 2u};
                         }
                         if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = s_23.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_125 = s_23.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_115 = false;
+                            local_125 = false;
                         }
-                        bool _e149 = local_115;
+                        bool _e149 = local_125;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -4966,18 +5069,18 @@ AirlightResult airlight_in_scatter(
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_116 = _e223 == _e6.max_panels;
+                                local_126 = _e223 == _e6.max_panels;
                             } else {
-                                local_116 = true;
+                                local_126 = true;
                             }
-                            bool _e227 = local_116;
+                            bool _e227 = local_126;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_117 = !(_e231);
+                                local_127 = !(_e231);
                             } else {
-                                local_117 = true;
+                                local_127 = true;
                             }
-                            bool _e234 = local_117;
+                            bool _e234 = local_127;
                             if (_e234) {
                                 break;
                             }
@@ -4987,11 +5090,11 @@ AirlightResult airlight_in_scatter(
                             float wb_1 = _e236.y;
                             float mid_1 = 0.5 * (wa_1 + wb_1);
                             if (mid_1 > wa_1) {
-                                local_118 = mid_1 < wb_1;
+                                local_128 = mid_1 < wb_1;
                             } else {
-                                local_118 = false;
+                                local_128 = false;
                             }
-                            bool _e247 = local_118;
+                            bool _e247 = local_128;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, metal::float4(_e236.xyz, 0.0));
                                 continue;

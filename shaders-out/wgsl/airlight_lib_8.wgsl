@@ -298,7 +298,7 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
     var fc: f32;
     var j: u32;
 
-    let z_8 = (x * x);
+    let z_9 = (x * x);
     loop {
         let _e8 = k_1;
         if (_e8 < 9u) {
@@ -309,9 +309,9 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
             let _e12 = k_1;
             let n_2 = (8u - _e12);
             let _e14 = c;
-            c = (_e14 * z_8);
+            c = (_e14 * z_9);
             let _e16 = s_1;
-            s_1 = (_e16 * z_8);
+            s_1 = (_e16 * z_9);
             fc = 1f;
             j = 1u;
             loop {
@@ -370,11 +370,11 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_9 = (_e17 * _e18);
+    let z_10 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_9) - 0.13877685f) * z_9) + 0.19977711f) * z_9) - 0.3333295f) * z_9) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_10) - 0.13877685f) * z_10) + 0.19977711f) * z_10) - 0.3333295f) * z_10) * _e32) + _e34));
 }
 
 fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
@@ -486,9 +486,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_15 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_16 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_15 * x_15) + (y_4 * y_4)) < 1f);
+    return (((x_16 * x_16) + (y_4 * y_4)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -615,18 +615,22 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     return _e109;
 }
 
-fn airlight_e1_scaled(z_7: vec2<f32>) -> vec2<f32> {
-    let _e1 = airlight_in_series_region(z_7);
+fn airlight_e1_series(z_7: vec2<f32>) -> vec2<f32> {
+    let _e1 = airlight_ein(z_7);
+    let _e2 = airlight_cln(z_7);
+    return ((_e1 - _e2) - vec2<f32>(0.5772157f, 0f));
+}
+
+fn airlight_e1_scaled(z_8: vec2<f32>) -> vec2<f32> {
+    let _e1 = airlight_in_series_region(z_8);
     if _e1 {
-        let _e2 = airlight_ein(z_7);
-        let _e3 = airlight_cln(z_7);
-        let e1_ = ((_e2 - _e3) - vec2<f32>(0.5772157f, 0f));
-        let _e9 = airlight_cexp(z_7);
-        let _e10 = airlight_cmul(e1_, _e9);
-        return _e10;
+        let _e2 = airlight_e1_series(z_8);
+        let _e3 = airlight_cexp(z_8);
+        let _e4 = airlight_cmul(_e2, _e3);
+        return _e4;
     }
-    let _e11 = airlight_e1_scaled_cf(z_7);
-    return _e11;
+    let _e5 = airlight_e1_scaled_cf(z_8);
+    return _e5;
 }
 
 fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
@@ -877,8 +881,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             if (width <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
             }
-            let x_16 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_16 * x_16) * (3f - (2f * x_16)));
+            let x_17 = clamp(((c_1 - p1_2) / width), 0f, 1f);
+            return ((x_17 * x_17) * (3f - (2f * x_17)));
         }
         default: {
             return 1f;
@@ -1095,10 +1099,10 @@ fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
             let _e48 = airlight_atan((half_1.dv / (1f + (v_s_1 * _e43))));
             d_im = _e48;
             let _e50 = v_e;
-            let x_17 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
-            let _e57 = airlight_is_finite(x_17);
+            let x_18 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
+            let _e57 = airlight_is_finite(x_18);
             if _e57 {
-                let _e58 = airlight_log1p(x_17);
+                let _e58 = airlight_log1p(x_18);
                 d_re = (0.5f * _e58);
             } else {
                 let _e63 = v_e;
@@ -1185,13 +1189,109 @@ fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
     return _e41;
 }
 
+fn airlight_moment_zero_weighted(half_3: AirlightHalf, x_6: f32) -> vec2<f32> {
+    var local_9: bool;
+    var local_10: bool;
+    var local_11: bool;
+    var local_12: bool;
+    var local_13: bool;
+    var local_14: bool;
+    var local_15: bool;
+    var local_16: bool;
+    var far_end: f32 = 0f;
+    var local_17: bool;
+    var local_18: bool;
+
+    let big_h_4 = half_3.big_h;
+    let v_s_2 = half_3.y_lo;
+    let z_s_1 = vec2<f32>((big_h_4 * v_s_2), -(big_h_4));
+    if !(half_3.dv_infinite) {
+        local_9 = ((big_h_4 * half_3.dv) <= 1f);
+    } else {
+        local_9 = false;
+    }
+    let _e16 = local_9;
+    if _e16 {
+        local_10 = (half_3.dy <= 0.25f);
+    } else {
+        local_10 = false;
+    }
+    let short = local_10;
+    if !((big_h_4 == 0f)) {
+        if !(half_3.dv_infinite) {
+            let _e34 = airlight_hypot_one(half_3.y_hi);
+            local_12 = ((big_h_4 * _e34) <= 1f);
+        } else {
+            local_12 = false;
+        }
+        let _e39 = local_12;
+        local_11 = _e39;
+    } else {
+        local_11 = true;
+    }
+    let near_2 = local_11;
+    if !(half_3.second) {
+        local_13 = !((half_3.dy > 0f));
+    } else {
+        local_13 = true;
+    }
+    let _e51 = local_13;
+    if !(_e51) {
+        local_14 = short;
+    } else {
+        local_14 = true;
+    }
+    let _e56 = local_14;
+    if !(_e56) {
+        local_15 = near_2;
+    } else {
+        local_15 = true;
+    }
+    let _e61 = local_15;
+    if !(_e61) {
+        let _e65 = airlight_in_series_region(z_s_1);
+        local_16 = !(_e65);
+    } else {
+        local_16 = true;
+    }
+    let _e68 = local_16;
+    if _e68 {
+        let _e69 = airlight_moment_zero(half_3);
+        return vec2<f32>(_e69, x_6);
+    }
+    let _e71 = airlight_cos_sin(big_h_4);
+    let _e72 = airlight_e1_series(z_s_1);
+    let _e77 = airlight_cmul(_e72, vec2<f32>(_e71.x, -(_e71.y)));
+    let near_end = _e77.y;
+    let v_e_2 = half_3.y_hi;
+    if !(half_3.dv_infinite) {
+        let _e87 = airlight_is_finite((big_h_4 * v_e_2));
+        local_17 = _e87;
+    } else {
+        local_17 = false;
+    }
+    let _e89 = local_17;
+    if _e89 {
+        local_18 = ((big_h_4 * half_3.dv) < 17.32868f);
+    } else {
+        local_18 = false;
+    }
+    let _e97 = local_18;
+    if _e97 {
+        let _e104 = airlight_e1_scaled(vec2<f32>((big_h_4 * v_e_2), -(big_h_4)));
+        far_end = (exp((-(big_h_4) * v_e_2)) * _e104.y);
+    }
+    let _e107 = far_end;
+    return vec2<f32>((near_end - _e107), (x_6 - (big_h_4 * v_s_2)));
+}
+
 fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
     return array<vec2<f32>, 4>(vec2<f32>(0.18343464f, 0.36268377f), vec2<f32>(0.5255324f, 0.31370664f), vec2<f32>(0.7966665f, 0.22238104f), vec2<f32>(0.96028984f, 0.101228535f));
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_18 = rule[(i_3 / 2u)].x;
-    return select(x_18, -(x_18), ((i_3 % 2u) == 0u));
+    let x_19 = rule[(i_3 / 2u)].x;
+    return select(x_19, -(x_19), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
@@ -1206,12 +1306,12 @@ fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
     return array<f32, 8>(((((0.18134189f * even0_) + (0.15685332f * even1_)) + (0.11119052f * even2_)) + (0.050614268f * even3_)), ((((0.09979316f * odd0_) + (0.24729452f * odd1_)) + (0.26574528f * odd2_)) + (0.14581311f * odd3_)), ((((-0.40759093f * even0_) + (-0.067230105f * even1_)) + (0.2512996f * even2_)) + (0.22352144f * even3_)), ((((-0.3296885f * odd0_) + (-0.46712074f * odd1_)) + (0.053756356f * odd2_)) + (0.27401882f * odd3_)), ((((0.4141761f * even0_) + (-0.4615853f * even1_)) + (-0.24289618f * even2_)) + (0.2903054f * even3_)), ((((0.5816089f * odd0_) + (0.05356581f * odd1_)) + (-0.49329537f * odd2_)) + (0.26882935f * odd3_)), ((((-0.26738968f * even0_) + (0.61660486f * even1_)) + (-0.55910736f * even2_)) + (0.2098922f * even3_)), ((((-0.78490657f * odd0_) + (0.63177454f * odd1_)) + (-0.37789693f * odd2_)) + (0.117692456f * odd3_)));
 }
 
-fn airlight_expm1_(x_6: f32) -> f32 {
+fn airlight_expm1_(x_7: f32) -> f32 {
     var sum_3: f32 = 1f;
     var i_4: u32 = 0u;
 
-    if (abs(x_6) >= 0.5f) {
-        return (exp(x_6) - 1f);
+    if (abs(x_7) >= 0.5f) {
+        return (exp(x_7) - 1f);
     }
     loop {
         let _e11 = i_4;
@@ -1222,7 +1322,7 @@ fn airlight_expm1_(x_6: f32) -> f32 {
         {
             let _e14 = sum_3;
             let _e17 = i_4;
-            sum_3 = (1f + ((x_6 * _e14) / f32((12u - _e17))));
+            sum_3 = (1f + ((x_7 * _e14) / f32((12u - _e17))));
         }
         continuing {
             let _e24 = i_4;
@@ -1230,7 +1330,7 @@ fn airlight_expm1_(x_6: f32) -> f32 {
         }
     }
     let _e26 = sum_3;
-    return (x_6 * _e26);
+    return (x_7 * _e26);
 }
 
 fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
@@ -1264,8 +1364,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_19 = (lambda / f32((2u * k0_)));
-            let per_step = (x_19 * x_19);
+            let x_20 = (lambda / f32((2u * k0_)));
+            let per_step = (x_20 * x_20);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1581,7 +1681,7 @@ fn airlight_tail_estimate(c_2: array<f32, 8>) -> f32 {
 }
 
 fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) -> f32 {
-    var local_9: bool;
+    var local_19: bool;
     var aliasing: f32 = 0f;
     var c_max: f32 = 0f;
     var aliasing_1: f32 = 1f;
@@ -1593,11 +1693,11 @@ fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
     let last = (abs(c_3[7]) + abs(c_3[6]));
     let before = (abs(c_3[5]) + abs(c_3[4]));
     if !(!((before > 0f))) {
-        local_9 = !((last < before));
+        local_19 = !((last < before));
     } else {
-        local_9 = true;
+        local_19 = true;
     }
-    let _e27 = local_9;
+    let _e27 = local_19;
     if _e27 {
         return 1f;
     }
@@ -1679,16 +1779,16 @@ fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
     return ((0.0000038146973f * mass) * mean_abs);
 }
 
-fn airlight_factor(half_3: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
+fn airlight_factor(half_4: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
     var offset: f32;
 
-    offset = (a_4 - half_3.y_lo);
-    if half_3.second {
-        offset = ((half_3.y_hi - b_3) / (b_3 * half_3.y_hi));
+    offset = (a_4 - half_4.y_lo);
+    if half_4.second {
+        offset = ((half_4.y_hi - b_3) / (b_3 * half_4.y_hi));
     }
     let _e13 = offset;
-    let x_20 = (half_3.big_h * _e13);
-    return select(1f, exp(-(x_20)), (x_20 > 0f));
+    let x_21 = (half_4.big_h * _e13);
+    return select(1f, exp(-(x_21)), (x_21 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1715,7 +1815,7 @@ fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_4: f32, r_1
     return (1f / _e34);
 }
 
-fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_4: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
+fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_5: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
     var r_2: f32;
     var vc: f32;
     var samples: array<f32, 8>;
@@ -1729,7 +1829,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     r_2 = ((b_4 - a_5) * 0.5f);
     let _e13 = r_2;
     vc = (a_5 + _e13);
-    if half_4.second {
+    if half_5.second {
         r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
         let _e24 = r_2;
         vc = ((1f / b_4) + _e24);
@@ -1748,7 +1848,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e41 = i_7;
             let _e42 = airlight_node(_e8, _e41);
             let v_6 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_4.second), v_6);
+            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_5.second), v_6);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_7;
@@ -1771,7 +1871,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e76 = samples;
     let _e77 = airlight_legendre(_e76);
     let _e79 = r_2;
-    let _e81 = airlight_exp_legendre_moments((half_4.big_h * _e79));
+    let _e81 = airlight_exp_legendre_moments((half_5.big_h * _e79));
     let _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
     let _e89 = sum_4;
@@ -1788,7 +1888,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     sum_4 = (_e114 + (_e77[6] * _e81[6]));
     let _e119 = sum_4;
     sum_4 = (_e119 + (_e77[7] * _e81[7]));
-    let _e124 = airlight_factor(half_4, a_5, b_4);
+    let _e124 = airlight_factor(half_5, a_5, b_4);
     let _e125 = r_2;
     let w_1 = (_e124 * _e125);
     let mass_4 = (w_1 * _e81[0]);
@@ -1807,7 +1907,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     return _e144;
 }
 
-fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_5: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
+fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
     var samples_1: array<f32, 8>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1831,7 +1931,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
             let y_6 = (yc_1 + (r_8 * _e29));
-            let weight = exp(((-(half_5.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
+            let weight = exp(((-(half_6.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
             let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e47 = i_8;
@@ -1856,7 +1956,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     }
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
-    let _e83 = airlight_factor(half_5, a_6, b_5);
+    let _e83 = airlight_factor(half_6, a_6, b_5);
     let w_2 = (_e83 * r_8);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
@@ -1924,14 +2024,14 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 8>) -> array<f32, 8> {
     return _e123;
 }
 
-fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_6: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_7: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 8>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
     var i_9: u32 = 0u;
     var q: array<f32, 8>;
     var s_a: array<f32, 10> = array<f32, 10>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    var local_10: bool;
+    var local_20: bool;
     var decay: f32 = 0f;
     var ab: f32 = 0f;
     var mass_2: f32;
@@ -2044,17 +2144,17 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e294 = q[6];
     let _e298 = q[6];
     q = array<f32, 8>(((_e251 * beta) + _e58[0]), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), ((_e270 * alpha) + (_e273 * beta)), ((_e277 * alpha) + (_e280 * beta)), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), (_e298 * alpha));
-    let big_h_4 = half_6.big_h;
-    let _e303 = airlight_en_scaled((big_h_4 / b_6));
+    let big_h_5 = half_7.big_h;
+    let _e303 = airlight_en_scaled((big_h_5 / b_6));
     if (a_7 > 0f) {
-        let _e321 = airlight_is_finite((big_h_4 / a_7));
-        local_10 = _e321;
+        let _e321 = airlight_is_finite((big_h_5 / a_7));
+        local_20 = _e321;
     } else {
-        local_10 = false;
+        local_20 = false;
     }
-    let far_1 = local_10;
+    let far_1 = local_20;
     if far_1 {
-        decay = exp((-(big_h_4) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     let _e332 = decay;
     if !((_e332 > 0.000000029802322f)) {
@@ -2062,7 +2162,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     }
     let _e337 = decay;
     if (_e337 > 0f) {
-        let _e341 = airlight_en_scaled((big_h_4 / a_7));
+        let _e341 = airlight_en_scaled((big_h_5 / a_7));
         s_a = _e341;
     }
     if (b_6 > 0f) {
@@ -2147,16 +2247,16 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e525 = ratio_1;
     let _e526 = ab;
     ratio_1 = (_e525 * _e526);
-    let _e528 = airlight_factor(half_6, a_7, b_6);
+    let _e528 = airlight_factor(half_7, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_21 = (abs(alpha) + abs(beta));
+    let x_22 = (abs(alpha) + abs(beta));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_21) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_22) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2166,7 +2266,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_21) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_22) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2176,7 +2276,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_21) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_22) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2186,7 +2286,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_21) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_22) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2196,7 +2296,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_21) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_22) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2206,7 +2306,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_21) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_22) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2216,7 +2316,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_21) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_22) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2226,7 +2326,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_21) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_22) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -2246,35 +2346,35 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     return _e702;
 }
 
-fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_7: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
-    var local_11: bool;
-    var local_12: bool;
+fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_8: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
+    var local_21: bool;
+    var local_22: bool;
 
-    if half_7.second {
-        local_11 = (a_8 <= (b_7 * 0.25f));
+    if half_8.second {
+        local_21 = (a_8 <= (b_7 * 0.25f));
     } else {
-        local_11 = false;
+        local_21 = false;
     }
-    let _e16 = local_11;
+    let _e16 = local_21;
     if _e16 {
-        let _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_7, a_8, b_7);
+        let _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_8, a_8, b_7);
         return _e17;
     }
-    if half_7.second {
-        local_12 = ((half_7.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    if half_8.second {
+        local_22 = ((half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_12 = false;
+        local_22 = false;
     }
-    let _e29 = local_12;
+    let _e29 = local_22;
     if _e29 {
-        let _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_7, a_8, b_7, heights_y, steps_4);
+        let _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    let _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_7, a_8, b_7, heights_v, steps_4);
+    let _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
-fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_8: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2292,9 +2392,9 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
     var mass_3: f32;
     var worst: u32;
     var i_10: u32;
-    var local_13: bool;
-    var local_14: bool;
-    var local_15: bool;
+    var local_23: bool;
+    var local_24: bool;
+    var local_25: bool;
     var total_1: f32 = 0f;
     var i_11: u32 = 0u;
 
@@ -2302,7 +2402,7 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
         return 0f;
     }
     let _e10 = airlight_singular_heights(s_10, sigma_8);
-    let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_8.second);
+    let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_9.second);
     let _e16 = airlight_singular_steps(s_10);
     a_9 = lo;
     b_8 = hi;
@@ -2315,7 +2415,7 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
         {
             let _e64 = a_9;
             let _e65 = b_8;
-            let _e66 = airlight_panel(s_10, g_12, sigma_8, half_8, _e64, _e65, _e10, heights_v_1, _e16);
+            let _e66 = airlight_panel(s_10, g_12, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
             let _e67 = (*f_max_4);
             (*f_max_4) = max(_e67, _e66.f_max);
             let _e70 = slot;
@@ -2402,25 +2502,25 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                     if !((_e155 <= goal)) {
                         let _e160 = worst;
                         let _e163 = list[_e160].w;
-                        local_13 = !((_e163 > 0f));
+                        local_23 = !((_e163 > 0f));
                     } else {
-                        local_13 = true;
+                        local_23 = true;
                     }
-                    let _e168 = local_13;
+                    let _e168 = local_23;
                     if !(_e168) {
                         let _e172 = budget;
-                        local_14 = (_e172 < 2u);
+                        local_24 = (_e172 < 2u);
                     } else {
-                        local_14 = true;
+                        local_24 = true;
                     }
-                    let _e176 = local_14;
+                    let _e176 = local_24;
                     if !(_e176) {
                         let _e180 = count;
-                        local_15 = (_e180 == AIRLIGHT_PANEL_LIST);
+                        local_25 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
-                        local_15 = true;
+                        local_25 = true;
                     }
-                    let _e184 = local_15;
+                    let _e184 = local_25;
                     if _e184 {
                         let _e185 = total;
                         return _e185;
@@ -2487,7 +2587,7 @@ fn airlight_bounded(a_10: f32) -> f32 {
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> {
-    var local_16: bool;
+    var local_26: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
@@ -2498,11 +2598,11 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_16 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_16 = true;
+        local_26 = true;
     }
-    let _e24 = local_16;
+    let _e24 = local_26;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
@@ -2534,36 +2634,36 @@ fn airlight_cosine(g_13: AirlightCanonical, sigma_10: f32, y_3: f32) -> f32 {
     return ((((1f - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1f + y2_1));
 }
 
-fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_9: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
-    var local_17: bool;
-    var local_18: bool;
+fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_10: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
+    var local_27: bool;
+    var local_28: bool;
     var y1_: f32;
-    var local_19: bool;
-    var local_20: bool;
-    var local_21: bool;
-    var local_22: bool;
+    var local_29: bool;
+    var local_30: bool;
+    var local_31: bool;
+    var local_32: bool;
 
     let _e9 = airlight_cosine(g_14, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
         return false;
     }
-    if (lo_1 == half_9.y_lo) {
+    if (lo_1 == half_10.y_lo) {
         let _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_17 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_17 = false;
+        local_27 = false;
     }
-    let _e21 = local_17;
+    let _e21 = local_27;
     if _e21 {
         return false;
     }
-    if (hi_1 == half_9.y_hi) {
+    if (hi_1 == half_10.y_hi) {
         let _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_18 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_18 = false;
+        local_28 = false;
     }
-    let _e31 = local_18;
+    let _e31 = local_28;
     if _e31 {
         return false;
     }
@@ -2582,222 +2682,222 @@ fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_9: AirlightHalf, b
     let _e53 = y1_;
     if (_e53 > lo_1) {
         let _e57 = y1_;
-        local_19 = (_e57 < hi_1);
+        local_29 = (_e57 < hi_1);
     } else {
-        local_19 = false;
+        local_29 = false;
     }
-    let _e60 = local_19;
+    let _e60 = local_29;
     if _e60 {
         let _e63 = y1_;
         let _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_20 = !((_e64 < bound));
+        local_30 = !((_e64 < bound));
     } else {
-        local_20 = false;
+        local_30 = false;
     }
-    let _e68 = local_20;
+    let _e68 = local_30;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_21 = (y2_2 < hi_1);
+        local_31 = (y2_2 < hi_1);
     } else {
-        local_21 = false;
+        local_31 = false;
     }
-    let _e75 = local_21;
+    let _e75 = local_31;
     if _e75 {
         let _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_22 = !((_e78 < bound));
+        local_32 = !((_e78 < bound));
     } else {
-        local_22 = false;
+        local_32 = false;
     }
-    let _e82 = local_22;
+    let _e82 = local_32;
     if _e82 {
         return false;
     }
     return true;
 }
 
-fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, half_10: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, half_11: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
     var i_12: u32 = 0u;
-    var local_23: bool;
+    var local_33: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
     var i_14: u32 = 0u;
     var hi_2: f32;
-    var local_24: bool;
-    var local_25: bool;
-    var local_26: bool;
+    var local_34: bool;
+    var local_35: bool;
+    var local_36: bool;
 
     if isotropic {
-        let _e11 = airlight_integrand(s_11, g_15, sigma_12, (half_10.y_lo + (half_10.dy * 0.5f)));
-        let _e12 = airlight_moment_zero(half_10);
-        return (_e11 * _e12);
+        let _e7 = airlight_integrand(s_11, g_15, sigma_12, 0f);
+        let _e8 = airlight_moment_zero(half_11);
+        return (_e7 * _e8);
     }
     if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
         k_in = s_11.light_param_a;
         k_out = s_11.light_param_b;
-        let _e29 = k_in;
-        let _e30 = k_out;
-        let width_1 = (_e29 - _e30);
+        let _e25 = k_in;
+        let _e26 = k_out;
+        let width_1 = (_e25 - _e26);
         if (width_1 <= AIRLIGHT_FLT_EPS) {
-            let _e34 = k_out;
-            k_in = (_e34 + (width_1 * 0.5f));
-            let _e38 = k_in;
-            k_out = _e38;
+            let _e30 = k_out;
+            k_in = (_e30 + (width_1 * 0.5f));
+            let _e34 = k_in;
+            k_out = _e34;
         }
-        let _e39 = k_out;
-        dark_below = _e39;
-        let _e42 = k_in;
+        let _e35 = k_out;
+        dark_below = _e35;
+        let _e38 = k_in;
+        let _e39 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e38);
+        let _e42 = k_out;
         let _e43 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e42);
-        let _e46 = k_out;
-        let _e47 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e46);
-        cuts = array<f32, 4>(_e43.x, _e43.y, _e47.x, _e47.y);
+        cuts = array<f32, 4>(_e39.x, _e39.y, _e43.x, _e43.y);
         loop {
-            let _e55 = i_12;
-            if (_e55 < 4u) {
+            let _e51 = i_12;
+            if (_e51 < 4u) {
             } else {
                 break;
             }
             {
-                let _e58 = i_12;
-                let _e60 = cuts[_e58];
-                if (_e60 > half_10.y_lo) {
-                    let _e65 = i_12;
-                    let _e67 = cuts[_e65];
-                    local_23 = (_e67 < half_10.y_hi);
+                let _e54 = i_12;
+                let _e56 = cuts[_e54];
+                if (_e56 > half_11.y_lo) {
+                    let _e61 = i_12;
+                    let _e63 = cuts[_e61];
+                    local_33 = (_e63 < half_11.y_hi);
                 } else {
-                    local_23 = false;
+                    local_33 = false;
                 }
-                let _e71 = local_23;
-                if !(_e71) {
-                    let _e73 = i_12;
-                    cuts[_e73] = 2f;
+                let _e67 = local_33;
+                if !(_e67) {
+                    let _e69 = i_12;
+                    cuts[_e69] = 2f;
                 }
             }
             continuing {
-                let _e77 = i_12;
-                i_12 = (_e77 + 1u);
+                let _e73 = i_12;
+                i_12 = (_e73 + 1u);
             }
         }
         loop {
-            let _e81 = i_13;
-            if (_e81 < 3u) {
+            let _e77 = i_13;
+            if (_e77 < 3u) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
                 loop {
-                    let _e86 = j_2;
-                    let _e88 = i_13;
-                    if (_e86 < (3u - _e88)) {
+                    let _e82 = j_2;
+                    let _e84 = i_13;
+                    if (_e82 < (3u - _e84)) {
                     } else {
                         break;
                     }
                     {
-                        let _e91 = j_2;
-                        let _e93 = cuts[_e91];
-                        let _e94 = j_2;
-                        let _e98 = cuts[(_e94 + 1u)];
-                        if (_e93 > _e98) {
-                            let _e100 = j_2;
-                            let t_5 = cuts[_e100];
-                            let _e103 = j_2;
-                            let _e105 = j_2;
-                            let _e109 = cuts[(_e105 + 1u)];
-                            cuts[_e103] = _e109;
-                            let _e110 = j_2;
-                            cuts[(_e110 + 1u)] = t_5;
+                        let _e87 = j_2;
+                        let _e89 = cuts[_e87];
+                        let _e90 = j_2;
+                        let _e94 = cuts[(_e90 + 1u)];
+                        if (_e89 > _e94) {
+                            let _e96 = j_2;
+                            let t_5 = cuts[_e96];
+                            let _e99 = j_2;
+                            let _e101 = j_2;
+                            let _e105 = cuts[(_e101 + 1u)];
+                            cuts[_e99] = _e105;
+                            let _e106 = j_2;
+                            cuts[(_e106 + 1u)] = t_5;
                         }
                     }
                     continuing {
-                        let _e115 = j_2;
-                        j_2 = (_e115 + 1u);
+                        let _e111 = j_2;
+                        j_2 = (_e111 + 1u);
                     }
                 }
             }
             continuing {
-                let _e118 = i_13;
-                i_13 = (_e118 + 1u);
+                let _e114 = i_13;
+                i_13 = (_e114 + 1u);
             }
         }
     }
-    lo_2 = half_10.y_lo;
+    lo_2 = half_11.y_lo;
     loop {
-        let _e126 = i_14;
-        if (_e126 < 5u) {
+        let _e122 = i_14;
+        if (_e122 < 5u) {
         } else {
             break;
         }
         {
-            hi_2 = half_10.y_hi;
-            let _e131 = i_14;
-            if (_e131 < 4u) {
-                let _e136 = i_14;
-                let _e138 = cuts[_e136];
-                local_24 = (_e138 < 2f);
+            hi_2 = half_11.y_hi;
+            let _e127 = i_14;
+            if (_e127 < 4u) {
+                let _e132 = i_14;
+                let _e134 = cuts[_e132];
+                local_34 = (_e134 < 2f);
             } else {
-                local_24 = false;
+                local_34 = false;
             }
-            let _e142 = local_24;
-            if _e142 {
-                let _e143 = i_14;
-                let _e145 = cuts[_e143];
-                hi_2 = _e145;
+            let _e138 = local_34;
+            if _e138 {
+                let _e139 = i_14;
+                let _e141 = cuts[_e139];
+                hi_2 = _e141;
             }
-            let _e146 = hi_2;
-            let _e147 = lo_2;
-            if (_e146 > _e147) {
+            let _e142 = hi_2;
+            let _e143 = lo_2;
+            if (_e142 > _e143) {
                 if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
-                    let _e154 = dark_below;
-                    let _e155 = lo_2;
-                    let _e156 = hi_2;
-                    let _e157 = airlight_dark(g_15, sigma_12, half_10, _e154, _e155, _e156);
-                    local_25 = _e157;
+                    let _e150 = dark_below;
+                    let _e151 = lo_2;
+                    let _e152 = hi_2;
+                    let _e153 = airlight_dark(g_15, sigma_12, half_11, _e150, _e151, _e152);
+                    local_35 = _e153;
                 } else {
-                    local_25 = false;
+                    local_35 = false;
                 }
-                let _e159 = local_25;
-                if !(_e159) {
-                    let _e161 = total_2;
-                    let _e162 = lo_2;
-                    let _e163 = hi_2;
-                    let _e164 = airlight_integrate_piece(s_11, g_15, sigma_12, half_10, _e162, _e163, f_max_5);
-                    total_2 = (_e161 + _e164);
+                let _e155 = local_35;
+                if !(_e155) {
+                    let _e157 = total_2;
+                    let _e158 = lo_2;
+                    let _e159 = hi_2;
+                    let _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_11, _e158, _e159, f_max_5);
+                    total_2 = (_e157 + _e160);
                 }
-                let _e166 = hi_2;
-                lo_2 = _e166;
+                let _e162 = hi_2;
+                lo_2 = _e162;
             }
-            let _e167 = i_14;
-            if (_e167 < 4u) {
-                let _e172 = i_14;
-                let _e174 = cuts[_e172];
-                local_26 = (_e174 >= 2f);
+            let _e163 = i_14;
+            if (_e163 < 4u) {
+                let _e168 = i_14;
+                let _e170 = cuts[_e168];
+                local_36 = (_e170 >= 2f);
             } else {
-                local_26 = false;
+                local_36 = false;
             }
-            let _e178 = local_26;
-            if _e178 {
+            let _e174 = local_36;
+            if _e174 {
                 break;
             }
         }
         continuing {
-            let _e180 = i_14;
-            i_14 = (_e180 + 1u);
+            let _e176 = i_14;
+            i_14 = (_e176 + 1u);
         }
     }
-    let _e182 = total_2;
-    return _e182;
+    let _e178 = total_2;
+    return _e178;
 }
 
-fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_7: f32, j_3: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_7))) * j_3);
+fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_8: f32, j_3: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_8))) * j_3);
     let _e13 = airlight_is_finite(plain_1);
     if _e13 {
         return plain_1;
@@ -2805,21 +2905,21 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_7: f32, j_3: 
     if !((abs(j_3) > 0f)) {
         return 0f;
     }
-    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_7) + log(abs(j_3)))));
+    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_8) + log(abs(j_3)))));
 }
 
 fn airlight_on_line(s_12: AirlightScene, g_16: AirlightCanonical) -> f32 {
-    var local_27: bool;
+    var local_37: bool;
     var span: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
     if !(g_16.t_hi_infinite) {
-        local_27 = (g_16.x_h > g_16.t_hi);
+        local_37 = (g_16.x_h > g_16.t_hi);
     } else {
-        local_27 = false;
+        local_37 = false;
     }
-    let _e10 = local_27;
+    let _e10 = local_37;
     if _e10 {
         let _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
         let _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1f);
@@ -2878,9 +2978,9 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
     var v_e_1: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_28: bool;
-    var local_29: bool;
-    var x_8: f32 = 0f;
+    var local_38: bool;
+    var local_39: bool;
+    var x_9: f32 = 0f;
 
     let h_3 = g_17.h;
     let a_s = ((g_17.x_h - g_17.t_lo) / h_3);
@@ -2889,11 +2989,11 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
     let u_e = ((g_17.t_hi - g_17.x_h) / h_3);
     if !(g_17.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_28 = _e24;
+        local_38 = _e24;
     } else {
-        local_28 = false;
+        local_38 = false;
     }
-    let _e26 = local_28;
+    let _e26 = local_38;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -2901,11 +3001,11 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_29 = _e40;
+            local_39 = _e40;
         } else {
-            local_29 = false;
+            local_39 = false;
         }
-        let _e42 = local_29;
+        let _e42 = local_39;
         if _e42 {
             v_e_1 = v_end;
             dv_2 = dv_end;
@@ -2919,21 +3019,20 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_13 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
-    let _e54 = airlight_integrand(s_13, g_17, -1f, _e9);
-    let _e55 = airlight_moment_zero(half_13);
-    let j_5 = (_e54 * _e55);
-    let _e59 = airlight_is_finite(_e8);
-    if _e59 {
-        x_8 = (big_h_1 * _e8);
+    let half_14 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let _e55 = airlight_is_finite(_e8);
+    if _e55 {
+        x_9 = (big_h_1 * _e8);
     } else {
         if (s_13.sigma_t > 0f) {
-            x_8 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
+            x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
         }
     }
-    let _e72 = x_8;
-    let _e73 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e72, j_5);
-    return _e73;
+    let _e66 = x_9;
+    let _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    let _e73 = airlight_integrand(s_13, g_17, -1f, 0f);
+    let _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
+    return _e76;
 }
 
 fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
@@ -2945,55 +3044,55 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
 }
 
 fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
-    var local_30: bool;
-    var local_31: bool;
-    var local_32: bool;
-    var local_33: bool;
-    var gap_1: f32 = 0f;
-    var local_34: bool;
-    var local_35: bool;
-    var local_36: bool;
-    var local_37: bool;
-    var local_38: bool;
-    var local_39: bool;
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
     var local_43: bool;
+    var gap_1: f32 = 0f;
+    var local_44: bool;
+    var local_45: bool;
+    var local_46: bool;
+    var local_47: bool;
+    var local_48: bool;
+    var local_49: bool;
+    var local_50: bool;
+    var local_51: bool;
+    var local_52: bool;
+    var local_53: bool;
     var total_3: f32 = 0f;
     var f_max_6: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_44: bool;
-    var half_11: AirlightHalf;
-    var local_45: bool;
-    var local_46: bool;
-    var local_47: bool;
+    var local_54: bool;
+    var half_12: AirlightHalf;
+    var local_55: bool;
+    var local_56: bool;
+    var local_57: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_48: bool;
-    var local_49: bool;
-    var half_12: AirlightHalf;
-    var local_50: bool;
-    var local_51: bool;
-    var local_52: bool;
+    var local_58: bool;
+    var local_59: bool;
+    var half_13: AirlightHalf;
+    var local_60: bool;
+    var local_61: bool;
+    var local_62: bool;
 
     let t0_ = g_18.t_lo;
     let t1_ = g_18.t_hi;
     if !(g_18.t_hi_infinite) {
-        local_30 = (t1_ > t0_);
+        local_40 = (t1_ > t0_);
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    let _e10 = local_30;
+    let _e10 = local_40;
     if !(!(_e10)) {
-        local_31 = ((s_14.sigma_s * s_14.intensity) == 0f);
+        local_41 = ((s_14.sigma_s * s_14.intensity) == 0f);
     } else {
-        local_31 = true;
+        local_41 = true;
     }
-    let _e21 = local_31;
+    let _e21 = local_41;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3001,16 +3100,16 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     let x_h = g_18.x_h;
     if (t0_ <= x_h) {
         if !(g_18.t_hi_infinite) {
-            local_33 = (x_h <= t1_);
+            local_43 = (x_h <= t1_);
         } else {
-            local_33 = true;
+            local_43 = true;
         }
-        let _e36 = local_33;
-        local_32 = _e36;
+        let _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_32 = false;
+        local_42 = false;
     }
-    let inside = local_32;
+    let inside = local_42;
     if (x_h < t0_) {
         gap_1 = (t0_ - x_h);
     } else {
@@ -3020,11 +3119,11 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     }
     if !(inside) {
         let _e48 = gap_1;
-        local_34 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_44 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_34 = false;
+        local_44 = false;
     }
-    let _e55 = local_34;
+    let _e55 = local_44;
     if _e55 {
         let _e56 = airlight_on_line(s_14, g_18);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3032,63 +3131,63 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     if (h_4 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_5 = (s_14.sigma_t * h_4);
+    let big_h_6 = (s_14.sigma_t * h_4);
     if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_36 = (s_14.light_param_a == 0f);
+            local_46 = (s_14.light_param_a == 0f);
         } else {
-            local_36 = false;
+            local_46 = false;
         }
-        let _e83 = local_36;
-        local_35 = _e83;
+        let _e83 = local_46;
+        local_45 = _e83;
     } else {
-        local_35 = true;
+        local_45 = true;
     }
-    let _e85 = local_35;
+    let _e85 = local_45;
     if _e85 {
         if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_39 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_39 = true;
+                local_49 = true;
             }
-            let _e104 = local_39;
+            let _e104 = local_49;
             if _e104 {
-                local_40 = (s_14.phase_param_a == 0f);
+                local_50 = (s_14.phase_param_a == 0f);
             } else {
-                local_40 = false;
+                local_50 = false;
             }
-            let _e111 = local_40;
-            local_38 = _e111;
+            let _e111 = local_50;
+            local_48 = _e111;
         } else {
-            local_38 = true;
+            local_48 = true;
         }
-        let _e113 = local_38;
-        local_37 = _e113;
+        let _e113 = local_48;
+        local_47 = _e113;
     } else {
-        local_37 = false;
+        local_47 = false;
     }
-    let isotropic_1 = local_37;
+    let isotropic_1 = local_47;
     if isotropic_1 {
-        local_41 = (t0_ < x_h);
+        local_51 = (t0_ < x_h);
     } else {
-        local_41 = false;
+        local_51 = false;
     }
-    let _e120 = local_41;
+    let _e120 = local_51;
     if _e120 {
         if !(g_18.t_hi_infinite) {
-            local_43 = (x_h < t1_);
+            local_53 = (x_h < t1_);
         } else {
-            local_43 = true;
+            local_53 = true;
         }
-        let _e129 = local_43;
-        local_42 = _e129;
+        let _e129 = local_53;
+        local_52 = _e129;
     } else {
-        local_42 = false;
+        local_52 = false;
     }
-    let _e131 = local_42;
+    let _e131 = local_52;
     if _e131 {
-        let _e132 = airlight_whole_line(s_14, g_18, big_h_5);
+        let _e132 = airlight_whole_line(s_14, g_18, big_h_6);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -3096,11 +3195,11 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let a_s_1 = ((x_h - t0_) / h_4);
         t_end = x_h;
         if !(g_18.t_hi_infinite) {
-            local_44 = (t1_ < x_h);
+            local_54 = (t1_ < x_h);
         } else {
-            local_44 = false;
+            local_54 = false;
         }
-        let _e154 = local_44;
+        let _e154 = local_54;
         if _e154 {
             t_end = t1_;
         }
@@ -3112,43 +3211,43 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let _e161 = airlight_bounded(a_e);
         let _e162 = t_end;
         let dy_1 = (((((_e162 - t0_) / h_4) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        let _e175 = airlight_optical(big_h_5, dy_1, false);
-        half_11 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        let _e175 = airlight_optical(big_h_6, dy_1, false);
+        half_12 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if cut {
-            let _e182 = half_11.big_h;
-            local_45 = (_e182 > 0f);
+            let _e182 = half_12.big_h;
+            local_55 = (_e182 > 0f);
         } else {
-            local_45 = false;
+            local_55 = false;
         }
-        let _e186 = local_45;
+        let _e186 = local_55;
         if _e186 {
-            let _e188 = half_11.big_h;
+            let _e188 = half_12.big_h;
             let _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                let _e193 = half_11.big_h;
-                half_11 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                let _e193 = half_12.big_h;
+                half_12 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        let _e199 = half_11;
+        let _e199 = half_12;
         let _e200 = airlight_half(s_14, g_18, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_5 * _e158), _e200);
+        let _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_6 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_18.t_hi_infinite) {
-        local_46 = (t1_ > x_h);
+        local_56 = (t1_ > x_h);
     } else {
-        local_46 = true;
+        local_56 = true;
     }
-    let _e213 = local_46;
+    let _e213 = local_56;
     if _e213 {
         let _e216 = behind_cut;
-        local_47 = !(_e216);
+        local_57 = !(_e216);
     } else {
-        local_47 = false;
+        local_57 = false;
     }
-    let _e219 = local_47;
+    let _e219 = local_57;
     if _e219 {
         let t_start = max(t0_, x_h);
         let a_s_2 = ((t_start - x_h) / h_4);
@@ -3158,22 +3257,22 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_ - x_h) / h_4);
         if !(g_18.t_hi_infinite) {
             let _e238 = airlight_is_finite(a_e_1);
-            local_48 = _e238;
+            local_58 = _e238;
         } else {
-            local_48 = false;
+            local_58 = false;
         }
-        let _e240 = local_48;
+        let _e240 = local_58;
         if _e240 {
             let _e241 = airlight_bounded(a_e_1);
             let _e245 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_ - t_start) / h_4) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if (_e241 > 0f) {
                 let _e255 = airlight_is_finite(dv_end_1);
-                local_49 = _e255;
+                local_59 = _e255;
             } else {
-                local_49 = false;
+                local_59 = false;
             }
-            let _e257 = local_49;
+            let _e257 = local_59;
             if _e257 {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3185,49 +3284,49 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         }
         let _e264 = dv_3;
         let _e265 = infinite_2;
-        let _e266 = airlight_optical(big_h_5, _e264, _e265);
+        let _e266 = airlight_optical(big_h_6, _e264, _e265);
         let _e267 = y_lo;
         let _e268 = dy;
         let _e269 = dv_3;
         let _e270 = infinite_2;
-        half_12 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_13 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if cut {
-            let _e276 = half_12.big_h;
-            local_50 = (_e276 > 0f);
+            let _e276 = half_13.big_h;
+            local_60 = (_e276 > 0f);
         } else {
-            local_50 = false;
+            local_60 = false;
         }
-        let _e280 = local_50;
+        let _e280 = local_60;
         if _e280 {
-            let _e282 = half_12.big_h;
+            let _e282 = half_13.big_h;
             let _e285 = airlight_cut_length(_e282, (1f / _e224));
             let _e286 = infinite_2;
             if !(_e286) {
                 let _e290 = dv_3;
-                local_51 = (_e285 < _e290);
+                local_61 = (_e285 < _e290);
             } else {
-                local_51 = true;
+                local_61 = true;
             }
-            let _e293 = local_51;
+            let _e293 = local_61;
             if _e293 {
                 let cut_y_lo = (_e224 / (1f + (_e224 * _e285)));
                 if (cut_y_lo > 0f) {
                     let _e302 = airlight_is_finite(_e285);
-                    local_52 = _e302;
+                    local_62 = _e302;
                 } else {
-                    local_52 = false;
+                    local_62 = false;
                 }
-                let _e304 = local_52;
+                let _e304 = local_62;
                 if _e304 {
-                    let _e307 = half_12.big_h;
-                    half_12 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    let _e307 = half_13.big_h;
+                    half_13 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        let _e313 = half_12;
+        let _e313 = half_13;
         let _e314 = airlight_half(s_14, g_18, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_5 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_6 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3235,24 +3334,24 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_53: bool;
-    var local_54: bool;
+    var local_63: bool;
+    var local_64: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_53 = _e6;
+        local_63 = _e6;
     } else {
-        local_53 = false;
+        local_63 = false;
     }
-    let _e8 = local_53;
+    let _e8 = local_63;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_54 = _e12;
+        local_64 = _e12;
     } else {
-        local_54 = false;
+        local_64 = false;
     }
-    let _e14 = local_54;
+    let _e14 = local_64;
     return _e14;
 }
 
@@ -3265,16 +3364,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_55: bool;
+    var local_65: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_55 = _e6;
+        local_65 = _e6;
     } else {
-        local_55 = false;
+        local_65 = false;
     }
-    let _e8 = local_55;
+    let _e8 = local_65;
     return _e8;
 }
 
@@ -3285,17 +3384,6 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_15: AirlightScene) -> bool {
-    var local_56: bool;
-    var local_57: bool;
-    var local_58: bool;
-    var local_59: bool;
-    var local_60: bool;
-    var local_61: bool;
-    var local_62: bool;
-    var local_63: bool;
-    var local_64: bool;
-    var local_65: bool;
-    var ok: bool;
     var local_66: bool;
     var local_67: bool;
     var local_68: bool;
@@ -3306,6 +3394,7 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_73: bool;
     var local_74: bool;
     var local_75: bool;
+    var ok: bool;
     var local_76: bool;
     var local_77: bool;
     var local_78: bool;
@@ -3319,102 +3408,112 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_86: bool;
     var local_87: bool;
     var local_88: bool;
+    var local_89: bool;
+    var local_90: bool;
+    var local_91: bool;
+    var local_92: bool;
+    var local_93: bool;
+    var local_94: bool;
+    var local_95: bool;
+    var local_96: bool;
+    var local_97: bool;
+    var local_98: bool;
 
     let _e2 = airlight_vec_finite(s_15.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_15.dir);
-        local_56 = _e6;
+        local_66 = _e6;
     } else {
-        local_56 = false;
+        local_66 = false;
     }
-    let _e8 = local_56;
+    let _e8 = local_66;
     if _e8 {
         let _e12 = airlight_normalisable(s_15.dir);
-        local_57 = _e12;
+        local_67 = _e12;
     } else {
-        local_57 = false;
+        local_67 = false;
     }
-    let _e14 = local_57;
+    let _e14 = local_67;
     if _e14 {
         let _e18 = airlight_is_finite(s_15.t_min);
-        local_58 = _e18;
+        local_68 = _e18;
     } else {
-        local_58 = false;
+        local_68 = false;
     }
-    let _e20 = local_58;
+    let _e20 = local_68;
     if _e20 {
         let _e24 = airlight_vec_finite(s_15.light_position);
-        local_59 = _e24;
+        local_69 = _e24;
     } else {
-        local_59 = false;
+        local_69 = false;
     }
-    let _e26 = local_59;
+    let _e26 = local_69;
     if _e26 {
         let _e30 = airlight_is_finite(s_15.intensity);
-        local_60 = _e30;
+        local_70 = _e30;
     } else {
-        local_60 = false;
+        local_70 = false;
     }
-    let _e32 = local_60;
+    let _e32 = local_70;
     if _e32 {
-        local_61 = (s_15.intensity >= 0f);
+        local_71 = (s_15.intensity >= 0f);
     } else {
-        local_61 = false;
+        local_71 = false;
     }
-    let _e39 = local_61;
+    let _e39 = local_71;
     if _e39 {
         let _e43 = airlight_is_finite(s_15.sigma_s);
-        local_62 = _e43;
+        local_72 = _e43;
     } else {
-        local_62 = false;
+        local_72 = false;
     }
-    let _e45 = local_62;
+    let _e45 = local_72;
     if _e45 {
-        local_63 = (s_15.sigma_s >= 0f);
+        local_73 = (s_15.sigma_s >= 0f);
     } else {
-        local_63 = false;
+        local_73 = false;
     }
-    let _e52 = local_63;
+    let _e52 = local_73;
     if _e52 {
         let _e56 = airlight_is_finite(s_15.sigma_t);
-        local_64 = _e56;
+        local_74 = _e56;
     } else {
-        local_64 = false;
+        local_74 = false;
     }
-    let _e58 = local_64;
+    let _e58 = local_74;
     if _e58 {
-        local_65 = (s_15.sigma_t >= 0f);
+        local_75 = (s_15.sigma_t >= 0f);
     } else {
-        local_65 = false;
+        local_75 = false;
     }
-    let _e65 = local_65;
+    let _e65 = local_75;
     ok = _e65;
     if ((s_15.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_15.t_max);
-            local_66 = _e76;
+            local_76 = _e76;
         } else {
-            local_66 = false;
+            local_76 = false;
         }
-        let _e78 = local_66;
+        let _e78 = local_76;
         if _e78 {
-            local_67 = (s_15.t_min <= s_15.t_max);
+            local_77 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_67 = false;
+            local_77 = false;
         }
-        let _e85 = local_67;
+        let _e85 = local_77;
         ok = _e85;
     }
     if (s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_15.light_end);
-            local_68 = _e93;
+            local_78 = _e93;
         } else {
-            local_68 = false;
+            local_78 = false;
         }
-        let _e95 = local_68;
+        let _e95 = local_78;
         ok = _e95;
     } else {
         if (s_15.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3425,37 +3524,37 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e103 = ok;
         if _e103 {
             let _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_69 = _e107;
+            local_79 = _e107;
         } else {
-            local_69 = false;
+            local_79 = false;
         }
-        let _e109 = local_69;
+        let _e109 = local_79;
         if _e109 {
-            local_70 = (s_15.brdf_albedo >= 0f);
+            local_80 = (s_15.brdf_albedo >= 0f);
         } else {
-            local_70 = false;
+            local_80 = false;
         }
-        let _e116 = local_70;
+        let _e116 = local_80;
         if _e116 {
-            local_71 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_81 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_71 = false;
+            local_81 = false;
         }
-        let _e123 = local_71;
+        let _e123 = local_81;
         if _e123 {
-            local_72 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_82 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_72 = false;
+            local_82 = false;
         }
-        let _e130 = local_72;
+        let _e130 = local_82;
         if _e130 {
             let _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
             let _e137 = airlight_is_finite(_e136);
-            local_73 = _e137;
+            local_83 = _e137;
         } else {
-            local_73 = false;
+            local_83 = false;
         }
-        let _e139 = local_73;
+        let _e139 = local_83;
         ok = _e139;
     } else {
         if (s_15.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3466,72 +3565,72 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e147 = ok;
         if _e147 {
             let _e151 = airlight_vec_finite(s_15.light_axis);
-            local_74 = _e151;
+            local_84 = _e151;
         } else {
-            local_74 = false;
+            local_84 = false;
         }
-        let _e153 = local_74;
+        let _e153 = local_84;
         if _e153 {
             let _e157 = airlight_normalisable(s_15.light_axis);
-            local_75 = _e157;
+            local_85 = _e157;
         } else {
-            local_75 = false;
+            local_85 = false;
         }
-        let _e159 = local_75;
+        let _e159 = local_85;
         if _e159 {
-            local_76 = (s_15.light_param_a >= 0f);
+            local_86 = (s_15.light_param_a >= 0f);
         } else {
-            local_76 = false;
+            local_86 = false;
         }
-        let _e166 = local_76;
+        let _e166 = local_86;
         if _e166 {
-            local_77 = (s_15.light_param_a <= 1024f);
+            local_87 = (s_15.light_param_a <= 1024f);
         } else {
-            local_77 = false;
+            local_87 = false;
         }
-        let _e173 = local_77;
+        let _e173 = local_87;
         if _e173 {
-            local_78 = (fract((s_15.light_param_a * 0.5f)) == 0f);
+            local_88 = (fract((s_15.light_param_a * 0.5f)) == 0f);
         } else {
-            local_78 = false;
+            local_88 = false;
         }
-        let _e183 = local_78;
+        let _e183 = local_88;
         ok = _e183;
     } else {
         if (s_15.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
                 let _e191 = airlight_vec_finite(s_15.light_axis);
-                local_79 = _e191;
+                local_89 = _e191;
             } else {
-                local_79 = false;
+                local_89 = false;
             }
-            let _e193 = local_79;
+            let _e193 = local_89;
             if _e193 {
                 let _e197 = airlight_normalisable(s_15.light_axis);
-                local_80 = _e197;
+                local_90 = _e197;
             } else {
-                local_80 = false;
+                local_90 = false;
             }
-            let _e199 = local_80;
+            let _e199 = local_90;
             if _e199 {
-                local_81 = (s_15.light_param_b < s_15.light_param_a);
+                local_91 = (s_15.light_param_b < s_15.light_param_a);
             } else {
-                local_81 = false;
+                local_91 = false;
             }
-            let _e206 = local_81;
+            let _e206 = local_91;
             if _e206 {
-                local_82 = (s_15.light_param_b >= -1f);
+                local_92 = (s_15.light_param_b >= -1f);
             } else {
-                local_82 = false;
+                local_92 = false;
             }
-            let _e213 = local_82;
+            let _e213 = local_92;
             if _e213 {
-                local_83 = (s_15.light_param_a <= 1f);
+                local_93 = (s_15.light_param_a <= 1f);
             } else {
-                local_83 = false;
+                local_93 = false;
             }
-            let _e220 = local_83;
+            let _e220 = local_93;
             ok = _e220;
         } else {
             if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3546,39 +3645,39 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e230 = ok;
             if _e230 {
-                local_84 = g_ok;
+                local_94 = g_ok;
             } else {
-                local_84 = false;
+                local_94 = false;
             }
-            let _e234 = local_84;
+            let _e234 = local_94;
             ok = _e234;
         }
         case 5u: {
             let _e235 = ok;
             if _e235 {
-                local_85 = g_ok;
+                local_95 = g_ok;
             } else {
-                local_85 = false;
+                local_95 = false;
             }
-            let _e239 = local_85;
+            let _e239 = local_95;
             if _e239 {
-                local_86 = (abs(s_15.phase_param_b) < 1f);
+                local_96 = (abs(s_15.phase_param_b) < 1f);
             } else {
-                local_86 = false;
+                local_96 = false;
             }
-            let _e247 = local_86;
+            let _e247 = local_96;
             if _e247 {
-                local_87 = (s_15.phase_param_c >= 0f);
+                local_97 = (s_15.phase_param_c >= 0f);
             } else {
-                local_87 = false;
+                local_97 = false;
             }
-            let _e254 = local_87;
+            let _e254 = local_97;
             if _e254 {
-                local_88 = (s_15.phase_param_c <= 1f);
+                local_98 = (s_15.phase_param_c <= 1f);
             } else {
-                local_88 = false;
+                local_98 = false;
             }
-            let _e261 = local_88;
+            let _e261 = local_98;
             ok = _e261;
         }
         default: {
@@ -3612,8 +3711,8 @@ fn airlight_canonical(s_16: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, select(s_16.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_9: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_9) ^ key));
+fn airlight_opaque(x_10: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_10) ^ key));
 }
 
 fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
@@ -3625,8 +3724,8 @@ fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
-fn airlight_split_high(x_10: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_10) + 2048u) & 4294963200u));
+fn airlight_split_high(x_11: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_11) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
@@ -3649,29 +3748,29 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_89: bool;
-    var local_90: bool;
+    var local_99: bool;
+    var local_100: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_90 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_100 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_90 = false;
+            local_100 = false;
         }
-        let _e21 = local_90;
-        local_89 = _e21;
+        let _e21 = local_100;
+        local_99 = _e21;
     } else {
-        local_89 = true;
+        local_99 = true;
     }
-    let _e23 = local_89;
+    let _e23 = local_99;
     return _e23;
 }
 
 fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_91: bool;
+    var local_101: bool;
     var out_2: AirlightCanonical;
-    var local_92: bool;
+    var local_102: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_17.flags > 1u));
@@ -3684,11 +3783,11 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_91 = !(_e38);
+        local_101 = !(_e38);
     } else {
-        local_91 = true;
+        local_101 = true;
     }
-    let _e41 = local_91;
+    let _e41 = local_101;
     if _e41 {
         return plain;
     }
@@ -3712,11 +3811,11 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_5 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_5);
     if _e95 {
-        local_92 = (h_5 > 0f);
+        local_102 = (h_5 > 0f);
     } else {
-        local_92 = false;
+        local_102 = false;
     }
-    let _e101 = local_92;
+    let _e101 = local_102;
     if !(_e101) {
         return plain;
     }
@@ -3867,10 +3966,10 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e129;
 }
 
-fn airlight_asinh(x_11: f32) -> f32 {
+fn airlight_asinh(x_12: f32) -> f32 {
     var r_4: f32;
 
-    let a_24 = abs(x_11);
+    let a_24 = abs(x_12);
     r_4 = (AIRLIGHT_LN_2_ + log(a_24));
     if (a_24 <= 4096f) {
         let _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1f + sqrt((1f + (a_24 * a_24)))))));
@@ -3878,7 +3977,7 @@ fn airlight_asinh(x_11: f32) -> f32 {
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_11 < 0f));
+    return select(_e18, -(_e19), (x_12 < 0f));
 }
 
 fn airlight_to_w(g_19: AirlightOuter, s_18: f32) -> f32 {
@@ -3889,18 +3988,18 @@ fn airlight_to_w(g_19: AirlightOuter, s_18: f32) -> f32 {
     return s_18;
 }
 
-fn airlight_cos_sin_half_turn(x_12: f32) -> vec2<f32> {
-    let r_11 = (x_12 - 1.5707964f);
-    let z_10 = (r_11 * r_11);
-    let cos_r = (1f - ((z_10 / 2f) * (1f - ((z_10 / 12f) * (1f - ((z_10 / 30f) * (1f - ((z_10 / 56f) * (1f - ((z_10 / 90f) * (1f - ((z_10 / 132f) * (1f - (z_10 / 182f))))))))))))));
-    let sin_r = (r_11 * (1f - ((z_10 / 6f) * (1f - ((z_10 / 20f) * (1f - ((z_10 / 42f) * (1f - ((z_10 / 72f) * (1f - ((z_10 / 110f) * (1f - ((z_10 / 156f) * (1f - (z_10 / 210f)))))))))))))));
+fn airlight_cos_sin_half_turn(x_13: f32) -> vec2<f32> {
+    let r_11 = (x_13 - 1.5707964f);
+    let z_11 = (r_11 * r_11);
+    let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
+    let sin_r = (r_11 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_13: f32) -> f32 {
-    let a_25 = abs(x_13);
+fn airlight_acos(x_14: f32) -> f32 {
+    let a_25 = abs(x_14);
     let _e8 = airlight_atan(sqrt(((1f - a_25) / (1f + a_25))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_13 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_14 < 0f));
 }
 
 fn airlight_angle(c_7: f32, s_19: f32) -> f32 {
@@ -3936,12 +4035,12 @@ fn airlight_outer_point(s_20: AirlightScene, max_panels: u32) -> AirlightOuter {
 
 fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_93: bool;
+    var local_103: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_6: u32 = 0u;
     var i_17: u32 = 0u;
-    var local_94: bool;
+    var local_104: bool;
     var i_18: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
@@ -3949,11 +4048,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     let to_light_1 = (s_21.light_position - s_21.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_21.intensity == 0f)) {
-        local_93 = (s_21.sigma_s == 0f);
+        local_103 = (s_21.sigma_s == 0f);
     } else {
-        local_93 = true;
+        local_103 = true;
     }
-    let _e18 = local_93;
+    let _e18 = local_103;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4010,11 +4109,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
             if (_e98 > _e102) {
                 let _e106 = i_17;
                 let _e108 = cuts_1[_e106];
-                local_94 = (_e108 < AIRLIGHT_PI);
+                local_104 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_94 = false;
+                local_104 = false;
             }
-            let _e112 = local_94;
+            let _e112 = local_104;
             if _e112 {
                 let _e113 = k_6;
                 k_6 = (_e113 + 1u);
@@ -4056,31 +4155,31 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
 
 fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     var g_21: AirlightOuter;
-    var local_95: bool;
-    var local_96: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_97: bool;
-    var local_98: bool;
-    var local_99: bool;
-    var local_100: bool;
-    var local_101: bool;
-    var local_102: bool;
-    var scale: f32 = 0f;
-    var local_103: bool;
-    var local_104: bool;
     var local_105: bool;
     var local_106: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_107: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
-    var i_19: u32 = 0u;
     var local_108: bool;
     var local_109: bool;
     var local_110: bool;
+    var local_111: bool;
+    var local_112: bool;
+    var scale: f32 = 0f;
+    var local_113: bool;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: bool;
+    var local_117: bool;
+    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
+    var i_19: u32 = 0u;
+    var local_118: bool;
+    var local_119: bool;
+    var local_120: bool;
     var n_1: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_111: bool;
+    var local_121: bool;
 
     if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e4 = airlight_surface(s_22);
@@ -4095,17 +4194,17 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_22.light_end - s_22.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_95 = (s_22.intensity == 0f);
+        local_105 = (s_22.intensity == 0f);
     } else {
-        local_95 = true;
+        local_105 = true;
     }
-    let _e26 = local_95;
+    let _e26 = local_105;
     if !(_e26) {
-        local_96 = (s_22.sigma_s == 0f);
+        local_106 = (s_22.sigma_s == 0f);
     } else {
-        local_96 = true;
+        local_106 = true;
     }
-    let _e34 = local_96;
+    let _e34 = local_106;
     if _e34 {
         g_21.outcome = 1u;
         let _e37 = g_21;
@@ -4129,94 +4228,94 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_97 = (sin_a_1 > 0f);
+        local_107 = (sin_a_1 > 0f);
     } else {
-        local_97 = false;
+        local_107 = false;
     }
-    let _e84 = local_97;
+    let _e84 = local_107;
     if _e84 {
         let _e87 = s_star;
-        local_98 = (_e87 >= 0f);
+        local_108 = (_e87 >= 0f);
     } else {
-        local_98 = false;
+        local_108 = false;
     }
-    let _e91 = local_98;
+    let _e91 = local_108;
     if _e91 {
         let _e94 = s_star;
-        local_99 = (_e94 <= _e15);
+        local_109 = (_e94 <= _e15);
     } else {
-        local_99 = false;
+        local_109 = false;
     }
-    let _e97 = local_99;
+    let _e97 = local_109;
     if _e97 {
         let _e101 = t_star;
-        local_100 = (s_22.t_min <= _e101);
+        local_110 = (s_22.t_min <= _e101);
     } else {
-        local_100 = false;
+        local_110 = false;
     }
-    let _e104 = local_100;
+    let _e104 = local_110;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_102 = (_e110 <= s_22.t_max);
+            local_112 = (_e110 <= s_22.t_max);
         } else {
-            local_102 = true;
+            local_112 = true;
         }
-        let _e114 = local_102;
-        local_101 = _e114;
+        let _e114 = local_112;
+        local_111 = _e114;
     } else {
-        local_101 = false;
+        local_111 = false;
     }
-    let _e116 = local_101;
+    let _e116 = local_111;
     if _e116 {
         g_21.outcome = 2u;
         let _e119 = g_21;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_103 = (_e73 > 0f);
+        local_113 = (_e73 > 0f);
     } else {
-        local_103 = false;
+        local_113 = false;
     }
-    let _e129 = local_103;
+    let _e129 = local_113;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_104 = (_e136 < (_e15 + _e15));
+        local_114 = (_e136 < (_e15 + _e15));
     } else {
-        local_104 = false;
+        local_114 = false;
     }
-    let _e140 = local_104;
+    let _e140 = local_114;
     if _e140 {
         let _e143 = scale;
-        local_105 = (_e143 < _e15);
+        local_115 = (_e143 < _e15);
     } else {
-        local_105 = false;
+        local_115 = false;
     }
-    let near_2 = local_105;
-    if near_2 {
+    let near_3 = local_115;
+    if near_3 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_106 = _e154;
+        local_116 = _e154;
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    let _e156 = local_106;
+    let _e156 = local_116;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_107 = _e163;
+        local_117 = _e163;
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    let _e165 = local_107;
+    let _e165 = local_117;
     if !(_e165) {
         scale = 0f;
     }
@@ -4236,21 +4335,21 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
         {
             if (cos_a_2 == 0f) {
                 let _e196 = i_19;
-                local_108 = (_e196 > 0u);
+                local_118 = (_e196 > 0u);
             } else {
-                local_108 = false;
+                local_118 = false;
             }
-            let _e200 = local_108;
+            let _e200 = local_118;
             if _e200 {
                 continue;
             }
             let _e201 = i_19;
             if (_e201 == 2u) {
-                local_109 = infinite_4;
+                local_119 = infinite_4;
             } else {
-                local_109 = false;
+                local_119 = false;
             }
-            let _e207 = local_109;
+            let _e207 = local_119;
             if _e207 {
                 continue;
             }
@@ -4259,11 +4358,11 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             if (_e210 > 0f) {
                 let _e215 = i_19;
                 let _e217 = at[_e215];
-                local_110 = (_e217 < _e15);
+                local_120 = (_e217 < _e15);
             } else {
-                local_110 = false;
+                local_120 = false;
             }
-            let _e220 = local_110;
+            let _e220 = local_120;
             if _e220 {
                 let _e221 = i_19;
                 let _e223 = g_21;
@@ -4321,11 +4420,11 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             if (_e280 > _e284) {
                 let _e288 = i_20;
                 let _e290 = cuts_2[_e288];
-                local_111 = (_e290 < _e265);
+                local_121 = (_e290 < _e265);
             } else {
-                local_111 = false;
+                local_121 = false;
             }
-            let _e293 = local_111;
+            let _e293 = local_121;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -4348,7 +4447,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_14: f32) -> AirlightNode {
+fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_15: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -4357,8 +4456,8 @@ fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_14: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_21 = min(u32(max(floor(x_14), 0f)), (g_22.panels - 1u));
-        let t_6 = (x_14 - f32(i_21));
+        let i_21 = min(u32(max(floor(x_15), 0f)), (g_22.panels - 1u));
+        let t_6 = (x_15 - f32(i_21));
         let a_27 = g_22.gamma[i_21];
         let b_18 = g_22.gamma[(i_21 + 1u)];
         let gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3f - t_6) - t_6)));
@@ -4383,10 +4482,10 @@ fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_14: f32) -> A
         return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
     if (s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_14;
+        at_1 = x_15;
         if (g_22.scale > 0f) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_14)));
-            ds = (g_22.scale * cosh(x_14));
+            at_1 = (g_22.s_star + (g_22.scale * sinh(x_15)));
+            ds = (g_22.scale * cosh(x_15));
         }
         let _e115 = at_1;
         p.light_position = (g_22.a + (_e115 * g_22.e));
@@ -4411,17 +4510,17 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     var k_7: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_112: bool;
+    var local_122: bool;
     var f: f32;
     var r_5: AirlightResult;
-    var local_113: bool;
-    var local_114: bool;
-    var local_115: bool;
+    var local_123: bool;
+    var local_124: bool;
+    var local_125: bool;
     var split: bool;
     var tries: u32;
-    var local_116: bool;
-    var local_117: bool;
-    var local_118: bool;
+    var local_126: bool;
+    var local_127: bool;
+    var local_128: bool;
 
     let _e1 = airlight_valid(s_24);
     if !(_e1) {
@@ -4466,11 +4565,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                     let _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_4;
-                        local_112 = (_e96 < 6u);
+                        local_122 = (_e96 < 6u);
                     } else {
-                        local_112 = false;
+                        local_122 = false;
                     }
-                    let _e100 = local_112;
+                    let _e100 = local_122;
                     let w_5 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
                     let _e102 = airlight_outer_node(s_24, _e6, w_5);
                     f = 0f;
@@ -4480,11 +4579,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
-                            local_113 = _e118;
+                            local_123 = _e118;
                         } else {
-                            local_113 = false;
+                            local_123 = false;
                         }
-                        let _e120 = local_113;
+                        let _e120 = local_123;
                         if _e120 {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
@@ -4495,20 +4594,20 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
                             let _e132 = r_5.status;
-                            local_114 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_124 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_114 = true;
+                            local_124 = true;
                         }
-                        let _e136 = local_114;
+                        let _e136 = local_124;
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
                         if (s_24.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_115 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_125 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_115 = false;
+                            local_125 = false;
                         }
-                        let _e149 = local_115;
+                        let _e149 = local_125;
                         if _e149 {
                             let _e150 = r_5;
                             return _e150;
@@ -4576,18 +4675,18 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let worst_1 = _e212.worst;
                             if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e223 = count_2;
-                                local_116 = (_e223 == _e6.max_panels);
+                                local_126 = (_e223 == _e6.max_panels);
                             } else {
-                                local_116 = true;
+                                local_126 = true;
                             }
-                            let _e227 = local_116;
+                            let _e227 = local_126;
                             if !(_e227) {
                                 let _e231 = airlight_is_finite(total_4);
-                                local_117 = !(_e231);
+                                local_127 = !(_e231);
                             } else {
-                                local_117 = true;
+                                local_127 = true;
                             }
-                            let _e234 = local_117;
+                            let _e234 = local_127;
                             if _e234 {
                                 break;
                             }
@@ -4597,11 +4696,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let wb_1 = _e236.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_118 = (mid_1 < wb_1);
+                                local_128 = (mid_1 < wb_1);
                             } else {
-                                local_118 = false;
+                                local_128 = false;
                             }
-                            let _e247 = local_118;
+                            let _e247 = local_128;
                             if !(_e247) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;

@@ -13,9 +13,11 @@ Writes moments.jsonl next to this file:
       m_0 = ∫_{v_s}^{v_e} e^{−H(v − v_s)} dv/(1 + v²) (y = v on the first half, y = 1/v on the
       second; inputs exact in the precision), S(z) = e^z E1(z), z = H(v − i): halves whose far
       end's weight e^{−HΔv} lies from ε/8 to 64ε of the precision, either side of where the
-      isotropic moment leaves that end out (airlight::integrals::FAR_END_NEGLIGIBLE).
+      isotropic moment leaves that end out (airlight::integrals::FAR_END_NEGLIGIBLE); at H = 1
+      a first half reaching past the foot (v_e > 1, as the isotropic whole line does) with its
+      near end in E1's series region.
 
-Usage: python3 tests/reference/gen_moments.py      (mpmath==1.3.0; a few seconds)
+Usage: python3 tests/reference/gen_moments.py      (mpmath==1.3.0; about 20 seconds)
 """
 import math
 import os
@@ -51,7 +53,7 @@ def main():
             v = mp.quad(lambda y: mp.exp(-H * (y - A)) * (y - c) ** k / (1 + y * y), [A, B])
             out.append({"kind": "monomial", "big_h": h, "y_lo": a, "y_hi": b, "k": k, "value": float(v)})
     for prec, eps, rnd in (("f32", 2.0 ** -23, f32), ("f64", 2.0 ** -52, float)):
-        for second, big_h, v_s in ((False, 80.0, 0.25), (True, 5.0, 2.0)):
+        for second, big_h, v_s in ((False, 80.0, 0.25), (False, 1.0, 0.5), (True, 5.0, 2.0)):
             for ratio in (0.125, 0.25, 0.5, 1.0, 4.0, 64.0):
                 H = rnd(big_h)
                 v_e = v_s + math.log(1.0 / (ratio * eps)) / H

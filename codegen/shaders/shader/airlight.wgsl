@@ -454,11 +454,15 @@ fn airlight_e1_scaled_cf(z: vec2<f32>) -> vec2<f32> {
     return airlight_cdiv(vec2<f32>(1.0, 0.0), t);
 }
 
+/// E1(z) = Ein(z) − ln z − γ, inside the series region (special/e1.rs `e1_by_series`).
+fn airlight_e1_series(z: vec2<f32>) -> vec2<f32> {
+    return airlight_ein(z) - airlight_cln(z) - vec2<f32>(AIRLIGHT_EULER_GAMMA, 0.0);
+}
+
 /// e^z E1(z) for Re z ≥ 0.
 fn airlight_e1_scaled(z: vec2<f32>) -> vec2<f32> {
     if (airlight_in_series_region(z)) {
-        let e1 = airlight_ein(z) - airlight_cln(z) - vec2<f32>(AIRLIGHT_EULER_GAMMA, 0.0);
-        return airlight_cmul(e1, airlight_cexp(z));
+        return airlight_cmul(airlight_e1_series(z), airlight_cexp(z));
     }
     return airlight_e1_scaled_cf(z);
 }
@@ -758,6 +762,29 @@ fn airlight_moment_zero(half: AirlightHalf) -> f32 {
     let short_len = half.dy <= 0.25 && (!half.second || half.dy <= half.y_lo * 0.5);
     if (short_exp && short_len) { return airlight_moment_gauss(half); }
     return airlight_q_zero(half);
+}
+
+/// (m, x') with e^{−x'} m = e^{−x} m_0 (integrals.rs `moment_zero`): on route 3 of a first half
+/// whose near end is in E1's series region, m = e^{−Hv_s} m_0 and x' = x − Hv_s, since
+/// e^{−Hv_s} S(z_s) = e^{−iH} E1(z_s); the far end as e^{−Hv_e} Im S(z_e), left out where
+/// HΔv ≥ ln(1/δ), δ = ε/4 (`FAR_END_NEGLIGIBLE`). Elsewhere (m_0, x).
+fn airlight_moment_zero_weighted(half: AirlightHalf, x: f32) -> vec2<f32> {
+    let big_h = half.big_h;
+    let v_s = half.y_lo;
+    let z_s = vec2<f32>(big_h * v_s, -big_h);
+    let short = !half.dv_infinite && big_h * half.dv <= 1.0 && half.dy <= 0.25;
+    let near = big_h == 0.0 || (!half.dv_infinite && big_h * airlight_hypot_one(half.y_hi) <= 1.0);
+    if (half.second || !(half.dy > 0.0) || short || near || !airlight_in_series_region(z_s)) {
+        return vec2<f32>(airlight_moment_zero(half), x);
+    }
+    let cs = airlight_cos_sin(big_h);
+    let near_end = airlight_cmul(airlight_e1_series(z_s), vec2<f32>(cs.x, -cs.y)).y;
+    var far_end = 0.0;
+    let v_e = half.y_hi;
+    if (!half.dv_infinite && airlight_is_finite(big_h * v_e) && big_h * half.dv < @FAR_END_EXPONENT@) {
+        far_end = exp(-big_h * v_e) * airlight_e1_scaled(vec2<f32>(big_h * v_e, -big_h)).y;
+    }
+    return vec2<f32>(near_end - far_end, x - big_h * v_s);
 }
 
 // ---------------------------------------------------------------- panels
@@ -1203,7 +1230,7 @@ fn airlight_dark(g: AirlightCanonical, sigma: f32, half: AirlightHalf, bound: f3
 /// f_max: the largest |F| seen on the segment.
 fn airlight_half(s: AirlightScene, g: AirlightCanonical, sigma: f32, half: AirlightHalf, isotropic: bool, f_max: ptr<function, f32>) -> f32 {
     if (isotropic) {
-        return airlight_integrand(s, g, sigma, half.y_lo + half.dy * 0.5) * airlight_moment_zero(half);
+        return airlight_integrand(s, g, sigma, 0.0) * airlight_moment_zero(half);
     }
     var cuts = array<f32, 4>(2.0, 2.0, 2.0, 2.0);
     // a spot is dark below this cosine (light.rs `dark_below`): its outer cone, or its step
@@ -1329,7 +1356,6 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
         }
     }
     let half = AirlightHalf(false, airlight_optical(big_h, dv, infinite), v_s, v_e, dv, dv, infinite);
-    let j = airlight_integrand(s, g, -1.0, v_s) * airlight_moment_zero(half);
     // H·r_s = σt·|p − x(t0)|; where r_s overflows (a tiny h) the distance is |x_h − t0|, and
     // without extinction the exponent is 0, not 0·∞ (combined.rs `whole_line`)
     var x = 0.0;
@@ -1338,7 +1364,9 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
     } else if (s.sigma_t > 0.0) {
         x = s.sigma_t * abs(g.x_h - g.t_lo);
     }
-    return airlight_weighted(s.sigma_s, s.intensity, h, x, j);
+    // F is constant: its value at y = 0
+    let m = airlight_moment_zero_weighted(half, x);
+    return airlight_weighted(s.sigma_s, s.intensity, h, m.y, airlight_integrand(s, g, -1.0, 0.0) * m.x);
 }
 
 /// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(δ·τ)) over H > 0,

@@ -233,6 +233,7 @@ impl Constants {
             ("@E1_CF_DEPTH_SQUARED@", chain(depth, true)),
             ("@EN_CF_DEPTH@", chain(en_depth, false)),
             ("@FAR_END_NEGLIGIBLE@", f(airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64)),
+            ("@FAR_END_EXPONENT@", f(-(airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64).ln())),
             ("@SHORT_NODES@", short.len().to_string()),
             ("@SHORT_RULE@", list(short)),
             ("@MAX_POWER@", max_power.to_string()),
