@@ -36,7 +36,10 @@
 //! 2. **near** (`H·|v_e − i| ≤ 1`, including `H = 0`): the `ln z` of both `E1` values is
 //!    combined analytically (`ln((v_e − i)/(v_s − i))`, no `ln H`), the rest is a divided
 //!    difference of `Ein`; exact at `H = 0` (the Macklin/Packard `atan` form).
-//! 3. **far**: scaled `e^z E1(z)` at both ends, `C = S(z_s) − e^{−HΔv} S(z_e)`.
+//! 3. **far**: scaled `e^z E1(z)` at both ends, `C = S(z_s) − e^{−HΔv} S(z_e)`; for `Im Q_0`
+//!    alone the far end only where its weight `e^{−HΔv}` exceeds `ε/4` ([`FAR_END_NEGLIGIBLE`]),
+//!    and an isotropic first half with its near end in `E1`'s series region folds that end's
+//!    `e^{Hv_s}` into the caller's weight ([`moment_zero`]).
 
 use crate::real::{hypot1, Real};
 use crate::special::{ein_divided_difference, en_scaled, in_series_region, C};
