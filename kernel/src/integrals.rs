@@ -42,7 +42,7 @@
 //!    `e^{Hv_s}` into the caller's weight ([`moment_zero`]).
 
 use crate::real::{hypot1, Real};
-use crate::special::{ein_divided_difference, en_scaled, in_series_region, C};
+use crate::special::{e1_by_series, ein_divided_difference, en_scaled, in_series_region, C};
 
 /// Which exponential integral the closed forms use: the production one, or the paper's.
 pub trait ExpIntegral<T: Real> {
@@ -73,7 +73,7 @@ impl<T: Real> ExpIntegral<T> for Production {
     }
     #[inline]
     fn e1_series(&self, z: C<T>) -> Option<C<T>> {
-        (z.re >= T::zero() && in_series_region(z)).then(|| crate::special::e1(z))
+        (z.re >= T::zero() && in_series_region(z)).then(|| e1_by_series(z))
     }
 }
 

@@ -22,9 +22,10 @@ pub fn in_series_region<T: Real>(z: C<T>) -> bool {
     x * x + y * y < T::one()
 }
 
-/// `E1(z)` by the series: `−γ − ln z + Ein(z)`.
+/// `E1(z)` by the series: `−γ − ln z + Ein(z)`, for `z` in the series region
+/// ([`in_series_region`]).
 #[inline]
-fn e1_by_series<T: Real>(z: C<T>) -> C<T> {
+pub(crate) fn e1_by_series<T: Real>(z: C<T>) -> C<T> {
     ein(z) - ln_in_series_region(z) - T::lit(EULER_GAMMA)
 }
 

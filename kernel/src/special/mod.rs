@@ -19,6 +19,7 @@ mod series;
 
 pub use complex::{cdiv, csqrt, C};
 pub use continued_fraction::{e1_scaled_cf, PLAIN_FROM};
+pub(crate) use e1::e1_by_series;
 pub use e1::{e1, e1_scaled, ei, in_series_region};
 pub use en::en_scaled;
 pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
