@@ -1052,6 +1052,38 @@ float airlight_moment_gauss(AirlightHalf half_) {
     return _e61;
 }
 
+bool airlight_is_short(AirlightHalf half_1) {
+    bool local_1 = false;
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    if (!(half_1.dv_infinite)) {
+        local_1 = ((half_1.big_h * half_1.dv) <= 1.0);
+    } else {
+        local_1 = false;
+    }
+    bool short_exp = local_1;
+    if ((half_1.dy <= 0.25)) {
+        if (!(!(half_1.second))) {
+            local_3 = (half_1.dy <= (half_1.y_lo * 0.5));
+        } else {
+            local_3 = true;
+        }
+        bool _e28 = local_3;
+        local_2 = _e28;
+    } else {
+        local_2 = false;
+    }
+    bool short_len = local_2;
+    if (short_exp) {
+        local_4 = short_len;
+    } else {
+        local_4 = false;
+    }
+    bool _e34 = local_4;
+    return _e34;
+}
+
 float airlight_hypot_one(float a_3) {
     if ((abs(a_3) < 1000000000000000.0)) {
         return sqrt((1.0 + (a_3 * a_3)));
@@ -1059,229 +1091,180 @@ float airlight_hypot_one(float a_3) {
     return abs(a_3);
 }
 
-float airlight_q_zero(AirlightHalf half_1) {
-    float v_e = 0.0;
-    bool local_1 = false;
-    bool local_2 = false;
-    bool local_3 = false;
-    float d_im = 0.0;
-    float d_re = 0.0;
-    bool local_4 = false;
-    float big_h_3 = half_1.big_h;
-    float v_s_1 = (half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo);
-    bool v_e_infinite = half_1.dv_infinite;
-    v_e = half_1.y_hi;
-    if (half_1.second) {
-        local_1 = !(v_e_infinite);
-    } else {
-        local_1 = false;
-    }
-    bool _e16 = local_1;
-    if (_e16) {
-        v_e = (1.0 / half_1.y_lo);
-    }
-    if (!((big_h_3 == 0.0))) {
-        if (!(v_e_infinite)) {
-            float _e28 = v_e;
-            float _e29 = airlight_hypot_one(_e28);
-            local_3 = ((big_h_3 * _e29) <= 1.0);
-        } else {
-            local_3 = false;
-        }
-        bool _e34 = local_3;
-        local_2 = _e34;
-    } else {
-        local_2 = true;
-    }
-    bool near_1 = local_2;
-    if (near_1) {
-        if (!(v_e_infinite)) {
-            float _e43 = v_e;
-            float _e48 = airlight_atan((half_1.dv / (1.0 + (v_s_1 * _e43))));
-            d_im = _e48;
-            float _e50 = v_e;
-            float x_18 = ((half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e57 = airlight_is_finite(x_18);
-            if (_e57) {
-                float _e58 = airlight_log1p(x_18);
-                d_re = (0.5 * _e58);
-            } else {
-                float _e63 = v_e;
-                float _e68 = airlight_log1p((v_s_1 * v_s_1));
-                d_re = (0.5 * ((log(half_1.dv) + log((v_s_1 + _e63))) - _e68));
-            }
-        } else {
-            float _e74 = airlight_atan((1.0 / v_s_1));
-            d_im = _e74;
-        }
-        if ((big_h_3 == 0.0)) {
-            float _e77 = d_im;
-            return _e77;
-        }
-        vec2 z_s = vec2((big_h_3 * v_s_1), -(big_h_3));
-        float _e81 = v_e;
-        vec2 z_e = vec2((big_h_3 * _e81), -(big_h_3));
-        vec2 _e85 = airlight_ein_divided_difference(z_s, z_e);
-        vec2 _e86 = airlight_cos_sin(big_h_3);
-        vec2 rot = vec2(_e86.x, -(_e86.y));
-        float _e91 = d_re;
-        float _e92 = d_im;
-        vec2 _e98 = airlight_cmul(rot, (vec2(_e91, _e92) - (_e85 * (big_h_3 * half_1.dv))));
-        return (_e98.y * exp((big_h_3 * v_s_1)));
-    }
-    vec2 _e106 = airlight_e1_scaled(vec2((big_h_3 * v_s_1), -(big_h_3)));
-    if (!(v_e_infinite)) {
-        float _e110 = v_e;
-        bool _e112 = airlight_is_finite((big_h_3 * _e110));
-        local_4 = _e112;
-    } else {
-        local_4 = false;
-    }
-    bool _e114 = local_4;
-    if (_e114) {
-        float decay_1 = exp((-(big_h_3) * half_1.dv));
-        if ((decay_1 > 2.9802322e-8)) {
-            float _e121 = v_e;
-            vec2 _e125 = airlight_e1_scaled(vec2((big_h_3 * _e121), -(big_h_3)));
-            return (_e106.y - (_e125.y * decay_1));
-        }
-    }
-    return _e106.y;
-}
-
-float airlight_moment_zero(AirlightHalf half_2) {
+bool airlight_is_near(float big_h, float v_e, bool v_e_infinite) {
     bool local_5 = false;
     bool local_6 = false;
-    bool local_7 = false;
-    bool local_8 = false;
-    if (!((half_2.dy > 0.0))) {
-        return 0.0;
-    }
-    if (!(half_2.dv_infinite)) {
-        local_5 = ((half_2.big_h * half_2.dv) <= 1.0);
-    } else {
-        local_5 = false;
-    }
-    bool short_exp = local_5;
-    if ((half_2.dy <= 0.25)) {
-        if (!(!(half_2.second))) {
-            local_7 = (half_2.dy <= (half_2.y_lo * 0.5));
+    if (!((big_h == 0.0))) {
+        if (!(v_e_infinite)) {
+            float _e11 = airlight_hypot_one(v_e);
+            local_6 = ((big_h * _e11) <= 1.0);
         } else {
-            local_7 = true;
+            local_6 = false;
         }
-        bool _e33 = local_7;
-        local_6 = _e33;
+        bool _e16 = local_6;
+        local_5 = _e16;
     } else {
-        local_6 = false;
+        local_5 = true;
     }
-    bool short_len = local_6;
-    if (short_exp) {
-        local_8 = short_len;
+    bool _e18 = local_5;
+    return _e18;
+}
+
+float airlight_q_zero(AirlightHalf half_2) {
+    float v_e_1 = 0.0;
+    bool local_7 = false;
+    float d_im = 0.0;
+    float d_re = 0.0;
+    bool local_8 = false;
+    float big_h_4 = half_2.big_h;
+    float v_s_1 = (half_2.second ? (1.0 / half_2.y_hi) : half_2.y_lo);
+    bool v_e_infinite_1 = half_2.dv_infinite;
+    v_e_1 = half_2.y_hi;
+    if (half_2.second) {
+        local_7 = !(v_e_infinite_1);
+    } else {
+        local_7 = false;
+    }
+    bool _e16 = local_7;
+    if (_e16) {
+        v_e_1 = (1.0 / half_2.y_lo);
+    }
+    float _e20 = v_e_1;
+    bool _e21 = airlight_is_near(big_h_4, _e20, v_e_infinite_1);
+    if (_e21) {
+        if (!(v_e_infinite_1)) {
+            float _e28 = v_e_1;
+            float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
+            d_im = _e33;
+            float _e35 = v_e_1;
+            float x_18 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_18);
+            if (_e42) {
+                float _e43 = airlight_log1p(x_18);
+                d_re = (0.5 * _e43);
+            } else {
+                float _e48 = v_e_1;
+                float _e53 = airlight_log1p((v_s_1 * v_s_1));
+                d_re = (0.5 * ((log(half_2.dv) + log((v_s_1 + _e48))) - _e53));
+            }
+        } else {
+            float _e59 = airlight_atan((1.0 / v_s_1));
+            d_im = _e59;
+        }
+        if ((big_h_4 == 0.0)) {
+            float _e62 = d_im;
+            return _e62;
+        }
+        vec2 z_s = vec2((big_h_4 * v_s_1), -(big_h_4));
+        float _e66 = v_e_1;
+        vec2 z_e = vec2((big_h_4 * _e66), -(big_h_4));
+        vec2 _e70 = airlight_ein_divided_difference(z_s, z_e);
+        vec2 _e71 = airlight_cos_sin(big_h_4);
+        vec2 rot = vec2(_e71.x, -(_e71.y));
+        float _e76 = d_re;
+        float _e77 = d_im;
+        vec2 _e83 = airlight_cmul(rot, (vec2(_e76, _e77) - (_e70 * (big_h_4 * half_2.dv))));
+        return (_e83.y * exp((big_h_4 * v_s_1)));
+    }
+    vec2 _e91 = airlight_e1_scaled(vec2((big_h_4 * v_s_1), -(big_h_4)));
+    if (!(v_e_infinite_1)) {
+        float _e95 = v_e_1;
+        bool _e97 = airlight_is_finite((big_h_4 * _e95));
+        local_8 = _e97;
     } else {
         local_8 = false;
     }
-    bool _e39 = local_8;
-    if (_e39) {
-        float _e40 = airlight_moment_gauss(half_2);
-        return _e40;
+    bool _e99 = local_8;
+    if (_e99) {
+        float decay_1 = exp((-(big_h_4) * half_2.dv));
+        if ((decay_1 > 2.9802322e-8)) {
+            float _e106 = v_e_1;
+            vec2 _e110 = airlight_e1_scaled(vec2((big_h_4 * _e106), -(big_h_4)));
+            return (_e91.y - (_e110.y * decay_1));
+        }
     }
-    float _e41 = airlight_q_zero(half_2);
-    return _e41;
+    return _e91.y;
 }
 
-vec2 airlight_moment_zero_weighted(AirlightHalf half_3, float x_6) {
+float airlight_moment_zero(AirlightHalf half_3) {
+    if (!((half_3.dy > 0.0))) {
+        return 0.0;
+    }
+    bool _e6 = airlight_is_short(half_3);
+    if (_e6) {
+        float _e7 = airlight_moment_gauss(half_3);
+        return _e7;
+    }
+    float _e8 = airlight_q_zero(half_3);
+    return _e8;
+}
+
+vec2 airlight_moment_zero_weighted(AirlightHalf half_4, float x_6) {
     bool local_9 = false;
     bool local_10 = false;
     bool local_11 = false;
     bool local_12 = false;
+    float far_end = 0.0;
     bool local_13 = false;
     bool local_14 = false;
-    bool local_15 = false;
-    bool local_16 = false;
-    float far_end = 0.0;
-    bool local_17 = false;
-    bool local_18 = false;
-    float big_h_4 = half_3.big_h;
-    float v_s_2 = half_3.y_lo;
-    vec2 z_s_1 = vec2((big_h_4 * v_s_2), -(big_h_4));
-    if (!(half_3.dv_infinite)) {
-        local_9 = ((big_h_4 * half_3.dv) <= 1.0);
+    float big_h_5 = half_4.big_h;
+    float v_s_2 = half_4.y_lo;
+    vec2 z_s_1 = vec2((big_h_5 * v_s_2), -(big_h_5));
+    if (!(half_4.second)) {
+        local_9 = (half_4.dy > 0.0);
     } else {
         local_9 = false;
     }
-    bool _e16 = local_9;
-    if (_e16) {
-        local_10 = (half_3.dy <= 0.25);
+    bool _e15 = local_9;
+    if (_e15) {
+        bool _e18 = airlight_is_short(half_4);
+        local_10 = !(_e18);
     } else {
         local_10 = false;
     }
-    bool short_ = local_10;
-    if (!((big_h_4 == 0.0))) {
-        if (!(half_3.dv_infinite)) {
-            float _e34 = airlight_hypot_one(half_3.y_hi);
-            local_12 = ((big_h_4 * _e34) <= 1.0);
-        } else {
-            local_12 = false;
-        }
-        bool _e39 = local_12;
-        local_11 = _e39;
+    bool _e21 = local_10;
+    if (_e21) {
+        bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_11 = !(_e26);
     } else {
-        local_11 = true;
+        local_11 = false;
     }
-    bool near_2 = local_11;
-    if (!(half_3.second)) {
-        local_13 = !((half_3.dy > 0.0));
+    bool far_route = local_11;
+    if (!(!(far_route))) {
+        bool _e34 = airlight_in_series_region(z_s_1);
+        local_12 = !(_e34);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e51 = local_13;
-    if (!(_e51)) {
-        local_14 = short_;
+    bool _e37 = local_12;
+    if (_e37) {
+        float _e38 = airlight_moment_zero(half_4);
+        return vec2(_e38, x_6);
+    }
+    vec2 _e40 = airlight_cos_sin(big_h_5);
+    vec2 _e41 = airlight_e1_series(z_s_1);
+    vec2 _e46 = airlight_cmul(_e41, vec2(_e40.x, -(_e40.y)));
+    float near_end = _e46.y;
+    float v_e_3 = half_4.y_hi;
+    if (!(half_4.dv_infinite)) {
+        bool _e56 = airlight_is_finite((big_h_5 * v_e_3));
+        local_13 = _e56;
     } else {
-        local_14 = true;
+        local_13 = false;
     }
-    bool _e56 = local_14;
-    if (!(_e56)) {
-        local_15 = near_2;
+    bool _e58 = local_13;
+    if (_e58) {
+        local_14 = ((big_h_5 * half_4.dv) < 17.32868);
     } else {
-        local_15 = true;
+        local_14 = false;
     }
-    bool _e61 = local_15;
-    if (!(_e61)) {
-        bool _e65 = airlight_in_series_region(z_s_1);
-        local_16 = !(_e65);
-    } else {
-        local_16 = true;
+    bool _e66 = local_14;
+    if (_e66) {
+        vec2 _e73 = airlight_e1_scaled(vec2((big_h_5 * v_e_3), -(big_h_5)));
+        far_end = (exp((-(big_h_5) * v_e_3)) * _e73.y);
     }
-    bool _e68 = local_16;
-    if (_e68) {
-        float _e69 = airlight_moment_zero(half_3);
-        return vec2(_e69, x_6);
-    }
-    vec2 _e71 = airlight_cos_sin(big_h_4);
-    vec2 _e72 = airlight_e1_series(z_s_1);
-    vec2 _e77 = airlight_cmul(_e72, vec2(_e71.x, -(_e71.y)));
-    float near_end = _e77.y;
-    float v_e_2 = half_3.y_hi;
-    if (!(half_3.dv_infinite)) {
-        bool _e87 = airlight_is_finite((big_h_4 * v_e_2));
-        local_17 = _e87;
-    } else {
-        local_17 = false;
-    }
-    bool _e89 = local_17;
-    if (_e89) {
-        local_18 = ((big_h_4 * half_3.dv) < 17.32868);
-    } else {
-        local_18 = false;
-    }
-    bool _e97 = local_18;
-    if (_e97) {
-        vec2 _e104 = airlight_e1_scaled(vec2((big_h_4 * v_e_2), -(big_h_4)));
-        far_end = (exp((-(big_h_4) * v_e_2)) * _e104.y);
-    }
-    float _e107 = far_end;
-    return vec2((near_end - _e107), (x_6 - (big_h_4 * v_s_2)));
+    float _e76 = far_end;
+    return vec2((near_end - _e76), (x_6 - (big_h_5 * v_s_2)));
 }
 
 vec2[4] airlight_gauss_rule() {
@@ -1684,7 +1667,7 @@ float airlight_tail_estimate(float c_2[8]) {
 }
 
 float airlight_error_factor(float c_3[8], float m_1[8], float floor_) {
-    bool local_19 = false;
+    bool local_15 = false;
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
@@ -1695,11 +1678,11 @@ float airlight_error_factor(float c_3[8], float m_1[8], float floor_) {
     float last = (abs(c_3[7]) + abs(c_3[6]));
     float before = (abs(c_3[5]) + abs(c_3[4]));
     if (!(!((before > 0.0)))) {
-        local_19 = !((last < before));
+        local_15 = !((last < before));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    bool _e27 = local_19;
+    bool _e27 = local_15;
     if (_e27) {
         return 1.0;
     }
@@ -1783,14 +1766,14 @@ float airlight_transform_noise(float mass, float mean_abs) {
     return ((3.8146973e-6 * mass) * mean_abs);
 }
 
-float airlight_factor(AirlightHalf half_4, float a_4, float b_3) {
+float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
     float offset = 0.0;
-    offset = (a_4 - half_4.y_lo);
-    if (half_4.second) {
-        offset = ((half_4.y_hi - b_3) / (b_3 * half_4.y_hi));
+    offset = (a_4 - half_5.y_lo);
+    if (half_5.second) {
+        offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_21 = (half_4.big_h * _e13);
+    float x_21 = (half_5.big_h * _e13);
     return ((x_21 > 0.0) ? exp(-(x_21)) : 1.0);
 }
 
@@ -1817,7 +1800,7 @@ float airlight_singular_floor(vec3 heights, vec3 steps_1, float c_4, float r_1, 
     return (1.0 / _e34);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_5, float a_5, float b_4, vec3 heights_1, vec3 steps_2) {
+AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_6, float a_5, float b_4, vec3 heights_1, vec3 steps_2) {
     float r_2 = 0.0;
     float vc = 0.0;
     float samples[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -1830,7 +1813,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     r_2 = ((b_4 - a_5) * 0.5);
     float _e13 = r_2;
     vc = (a_5 + _e13);
-    if (half_5.second) {
+    if (half_6.second) {
         r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5);
         float _e24 = r_2;
         vc = ((1.0 / b_4) + _e24);
@@ -1855,7 +1838,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             uint _e41 = i_7;
             float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
-            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_5.second ? -(sigma_4) : sigma_4), v_6);
+            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_7;
@@ -1874,7 +1857,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     float _e76[8] = samples;
     float _e77[8] = airlight_legendre(_e76);
     float _e79 = r_2;
-    float _e81[8] = airlight_exp_legendre_moments((half_5.big_h * _e79));
+    float _e81[8] = airlight_exp_legendre_moments((half_6.big_h * _e79));
     float _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
     float _e89 = sum_4;
@@ -1891,7 +1874,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     sum_4 = (_e114 + (_e77[6] * _e81[6]));
     float _e119 = sum_4;
     sum_4 = (_e119 + (_e77[7] * _e81[7]));
-    float _e124 = airlight_factor(half_5, a_5, b_4);
+    float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
     float w_1 = (_e124 * _e125);
     float mass_4 = (w_1 * _e81[0]);
@@ -1910,7 +1893,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     return _e144;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_6, float a_6, float b_5, vec3 heights_2, vec3 steps_3) {
+AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_7, float a_6, float b_5, vec3 heights_2, vec3 steps_3) {
     float samples_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
@@ -1939,7 +1922,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
             float y_6 = (yc_1 + (r_8 * _e29));
-            float weight = exp(((-(half_6.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
+            float weight = exp(((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
             float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
             float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
             uint _e47 = i_8;
@@ -1960,7 +1943,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
     }
     float _e81[8] = samples_1;
     float _e82[8] = airlight_legendre(_e81);
-    float _e83 = airlight_factor(half_6, a_6, b_5);
+    float _e83 = airlight_factor(half_7, a_6, b_5);
     float w_2 = (_e83 * r_8);
     float _e85[8] = airlight_zero_terms();
     m_2 = _e85;
@@ -2027,14 +2010,14 @@ float[8] airlight_legendre_to_monomial(float c_5[8]) {
     return _e123;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_7, float a_7, float b_6) {
+AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_8, float a_7, float b_6) {
     float samples_2[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
     uint i_9 = 0u;
     float q[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float s_a[10] = float[10](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_20 = false;
+    bool local_16 = false;
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = 0.0;
@@ -2148,17 +2131,17 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e294 = q[6];
     float _e298 = q[6];
     q = float[8](((_e251 * beta) + _e58[0]), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), ((_e270 * alpha) + (_e273 * beta)), ((_e277 * alpha) + (_e280 * beta)), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), (_e298 * alpha));
-    float big_h_5 = half_7.big_h;
-    float _e303[10] = airlight_en_scaled((big_h_5 / b_6));
+    float big_h_6 = half_8.big_h;
+    float _e303[10] = airlight_en_scaled((big_h_6 / b_6));
     if ((a_7 > 0.0)) {
-        bool _e321 = airlight_is_finite((big_h_5 / a_7));
-        local_20 = _e321;
+        bool _e321 = airlight_is_finite((big_h_6 / a_7));
+        local_16 = _e321;
     } else {
-        local_20 = false;
+        local_16 = false;
     }
-    bool far_1 = local_20;
+    bool far_1 = local_16;
     if (far_1) {
-        decay = exp((-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     float _e332 = decay;
     if (!((_e332 > 2.9802322e-8))) {
@@ -2166,7 +2149,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     }
     float _e337 = decay;
     if ((_e337 > 0.0)) {
-        float _e341[10] = airlight_en_scaled((big_h_5 / a_7));
+        float _e341[10] = airlight_en_scaled((big_h_6 / a_7));
         s_a = _e341;
     }
     if ((b_6 > 0.0)) {
@@ -2251,7 +2234,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e525 = ratio_1;
     float _e526 = ab;
     ratio_1 = (_e525 * _e526);
-    float _e528 = airlight_factor(half_7, a_7, b_6);
+    float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
     float x_22 = (abs(alpha) + abs(beta));
@@ -2350,34 +2333,34 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     return _e702;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_8, float a_8, float b_7, vec3 heights_y, vec3 heights_v, vec3 steps_4) {
-    bool local_21 = false;
-    bool local_22 = false;
-    if (half_8.second) {
-        local_21 = (a_8 <= (b_7 * 0.25));
+AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_9, float a_8, float b_7, vec3 heights_y, vec3 heights_v, vec3 steps_4) {
+    bool local_17 = false;
+    bool local_18 = false;
+    if (half_9.second) {
+        local_17 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_21 = false;
+        local_17 = false;
     }
-    bool _e16 = local_21;
+    bool _e16 = local_17;
     if (_e16) {
-        AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_8, a_8, b_7);
+        AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_9, a_8, b_7);
         return _e17;
     }
-    if (half_8.second) {
-        local_22 = ((half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    if (half_9.second) {
+        local_18 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    bool _e29 = local_22;
+    bool _e29 = local_18;
     if (_e29) {
-        AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
+        AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
+    AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
-float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_9, float lo, float hi, inout float f_max_4) {
+float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4) {
     vec4 list[8] = vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float mass_over_1[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float a_9 = 0.0;
@@ -2395,16 +2378,16 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     float mass_3 = 0.0;
     uint worst = 0u;
     uint i_10 = 0u;
-    bool local_23 = false;
-    bool local_24 = false;
-    bool local_25 = false;
+    bool local_19 = false;
+    bool local_20 = false;
+    bool local_21 = false;
     float total_1 = 0.0;
     uint i_11 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
     vec3 _e10 = airlight_singular_heights(s_10, sigma_8);
-    vec3 heights_v_1 = (half_9.second ? (vec3(1.0) / _e10) : _e10);
+    vec3 heights_v_1 = (half_10.second ? (vec3(1.0) / _e10) : _e10);
     vec3 _e16 = airlight_singular_steps(s_10);
     a_9 = lo;
     b_8 = hi;
@@ -2423,7 +2406,7 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
+            AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -2518,25 +2501,25 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list[_e160].w;
-                        local_23 = !((_e163 > 0.0));
+                        local_19 = !((_e163 > 0.0));
                     } else {
-                        local_23 = true;
+                        local_19 = true;
                     }
-                    bool _e168 = local_23;
+                    bool _e168 = local_19;
                     if (!(_e168)) {
                         uint _e172 = budget;
-                        local_24 = (_e172 < 2u);
+                        local_20 = (_e172 < 2u);
                     } else {
-                        local_24 = true;
+                        local_20 = true;
                     }
-                    bool _e176 = local_24;
+                    bool _e176 = local_20;
                     if (!(_e176)) {
                         uint _e180 = count;
-                        local_25 = (_e180 == AIRLIGHT_PANEL_LIST);
+                        local_21 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
-                        local_25 = true;
+                        local_21 = true;
                     }
-                    bool _e184 = local_25;
+                    bool _e184 = local_21;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -2597,7 +2580,7 @@ float airlight_bounded(float a_10) {
 }
 
 vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5) {
-    bool local_26 = false;
+    bool local_22 = false;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
@@ -2607,11 +2590,11 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5) {
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         bool _e21 = airlight_is_finite(scale_1);
-        local_26 = !(_e21);
+        local_22 = !(_e21);
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    bool _e24 = local_26;
+    bool _e24 = local_22;
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
@@ -2643,35 +2626,35 @@ float airlight_cosine(AirlightCanonical g_13, float sigma_10, float y_3) {
     return ((((1.0 - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1.0 + y2_1));
 }
 
-bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_10, float bound, float lo_1, float hi_1) {
+bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1) {
+    bool local_23 = false;
+    bool local_24 = false;
+    float y1_ = 0.0;
+    bool local_25 = false;
+    bool local_26 = false;
     bool local_27 = false;
     bool local_28 = false;
-    float y1_ = 0.0;
-    bool local_29 = false;
-    bool local_30 = false;
-    bool local_31 = false;
-    bool local_32 = false;
     float _e9 = airlight_cosine(g_14, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
         return false;
     }
-    if ((lo_1 == half_10.y_lo)) {
+    if ((lo_1 == half_11.y_lo)) {
         float _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_27 = !((_e17 < bound));
+        local_23 = !((_e17 < bound));
     } else {
-        local_27 = false;
+        local_23 = false;
     }
-    bool _e21 = local_27;
+    bool _e21 = local_23;
     if (_e21) {
         return false;
     }
-    if ((hi_1 == half_10.y_hi)) {
+    if ((hi_1 == half_11.y_hi)) {
         float _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_28 = !((_e27 < bound));
+        local_24 = !((_e27 < bound));
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    bool _e31 = local_28;
+    bool _e31 = local_24;
     if (_e31) {
         return false;
     }
@@ -2690,60 +2673,60 @@ bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_10,
     float _e53 = y1_;
     if ((_e53 > lo_1)) {
         float _e57 = y1_;
-        local_29 = (_e57 < hi_1);
+        local_25 = (_e57 < hi_1);
     } else {
-        local_29 = false;
+        local_25 = false;
     }
-    bool _e60 = local_29;
+    bool _e60 = local_25;
     if (_e60) {
         float _e63 = y1_;
         float _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_30 = !((_e64 < bound));
+        local_26 = !((_e64 < bound));
     } else {
-        local_30 = false;
+        local_26 = false;
     }
-    bool _e68 = local_30;
+    bool _e68 = local_26;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_31 = (y2_2 < hi_1);
+        local_27 = (y2_2 < hi_1);
     } else {
-        local_31 = false;
+        local_27 = false;
     }
-    bool _e75 = local_31;
+    bool _e75 = local_27;
     if (_e75) {
         float _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_32 = !((_e78 < bound));
+        local_28 = !((_e78 < bound));
     } else {
-        local_32 = false;
+        local_28 = false;
     }
-    bool _e82 = local_32;
+    bool _e82 = local_28;
     if (_e82) {
         return false;
     }
     return true;
 }
 
-float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, AirlightHalf half_11, bool isotropic, inout float f_max_5) {
+float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, AirlightHalf half_12, bool isotropic, inout float f_max_5) {
     float cuts[4] = float[4](2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_12 = 0u;
-    bool local_33 = false;
+    bool local_29 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
     float total_2 = 0.0;
     float lo_2 = 0.0;
     uint i_14 = 0u;
     float hi_2 = 0.0;
-    bool local_34 = false;
-    bool local_35 = false;
-    bool local_36 = false;
+    bool local_30 = false;
+    bool local_31 = false;
+    bool local_32 = false;
     if (isotropic) {
         float _e7 = airlight_integrand(s_11, g_15, sigma_12, 0.0);
-        float _e8 = airlight_moment_zero(half_11);
+        float _e8 = airlight_moment_zero(half_12);
         return (_e7 * _e8);
     }
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
@@ -2780,14 +2763,14 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
             {
                 uint _e54 = i_12;
                 float _e56 = cuts[_e54];
-                if ((_e56 > half_11.y_lo)) {
+                if ((_e56 > half_12.y_lo)) {
                     uint _e61 = i_12;
                     float _e63 = cuts[_e61];
-                    local_33 = (_e63 < half_11.y_hi);
+                    local_29 = (_e63 < half_12.y_hi);
                 } else {
-                    local_33 = false;
+                    local_29 = false;
                 }
-                bool _e67 = local_33;
+                bool _e67 = local_29;
                 if (!(_e67)) {
                     uint _e69 = i_12;
                     cuts[_e69] = 2.0;
@@ -2841,7 +2824,7 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
             }
         }
     }
-    lo_2 = half_11.y_lo;
+    lo_2 = half_12.y_lo;
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
@@ -2855,16 +2838,16 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
             break;
         }
         {
-            hi_2 = half_11.y_hi;
+            hi_2 = half_12.y_hi;
             uint _e127 = i_14;
             if ((_e127 < 4u)) {
                 uint _e132 = i_14;
                 float _e134 = cuts[_e132];
-                local_34 = (_e134 < 2.0);
+                local_30 = (_e134 < 2.0);
             } else {
-                local_34 = false;
+                local_30 = false;
             }
-            bool _e138 = local_34;
+            bool _e138 = local_30;
             if (_e138) {
                 uint _e139 = i_14;
                 float _e141 = cuts[_e139];
@@ -2877,17 +2860,17 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
                     float _e150 = dark_below;
                     float _e151 = lo_2;
                     float _e152 = hi_2;
-                    bool _e153 = airlight_dark(g_15, sigma_12, half_11, _e150, _e151, _e152);
-                    local_35 = _e153;
+                    bool _e153 = airlight_dark(g_15, sigma_12, half_12, _e150, _e151, _e152);
+                    local_31 = _e153;
                 } else {
-                    local_35 = false;
+                    local_31 = false;
                 }
-                bool _e155 = local_35;
+                bool _e155 = local_31;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
                     float _e159 = hi_2;
-                    float _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_11, _e158, _e159, f_max_5);
+                    float _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_12, _e158, _e159, f_max_5);
                     total_2 = (_e157 + _e160);
                 }
                 float _e162 = hi_2;
@@ -2897,11 +2880,11 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
             if ((_e163 < 4u)) {
                 uint _e168 = i_14;
                 float _e170 = cuts[_e168];
-                local_36 = (_e170 >= 2.0);
+                local_32 = (_e170 >= 2.0);
             } else {
-                local_36 = false;
+                local_32 = false;
             }
-            bool _e174 = local_36;
+            bool _e174 = local_32;
             if (_e174) {
                 break;
             }
@@ -2924,16 +2907,16 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_8
 }
 
 float airlight_on_line(AirlightScene s_12, AirlightCanonical g_16) {
-    bool local_37 = false;
+    bool local_33 = false;
     float span = 0.0;
     float e2_[10] = float[10](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
     if (!(g_16.t_hi_infinite)) {
-        local_37 = (g_16.x_h > g_16.t_hi);
+        local_33 = (g_16.x_h > g_16.t_hi);
     } else {
-        local_37 = false;
+        local_33 = false;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_33;
     if (_e10) {
         float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
         float _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1.0);
@@ -2977,22 +2960,22 @@ float airlight_on_line(AirlightScene s_12, AirlightCanonical g_16) {
     return (_e93 - _e116);
 }
 
-float airlight_optical(float big_h, float dv_1, bool infinite) {
+float airlight_optical(float big_h_1, float dv_1, bool infinite) {
     bool negligible = false;
-    negligible = ((big_h * dv_1) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h_1 * dv_1) < AIRLIGHT_FLT_EPS);
     if (infinite) {
-        negligible = (big_h < 1.4210855e-14);
+        negligible = (big_h_1 < 1.4210855e-14);
     }
     bool _e9 = negligible;
-    return (_e9 ? 0.0 : big_h);
+    return (_e9 ? 0.0 : big_h_1);
 }
 
-float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_h_1) {
-    float v_e_1 = AIRLIGHT_FLT_MAX;
+float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_h_2) {
+    float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_38 = false;
-    bool local_39 = false;
+    bool local_34 = false;
+    bool local_35 = false;
     float x_9 = 0.0;
     float h_3 = g_17.h;
     float a_s = ((g_17.x_h - g_17.t_lo) / h_3);
@@ -3001,11 +2984,11 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     float u_e = ((g_17.t_hi - g_17.x_h) / h_3);
     if (!(g_17.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_38 = _e24;
+        local_34 = _e24;
     } else {
-        local_38 = false;
+        local_34 = false;
     }
-    bool _e26 = local_38;
+    bool _e26 = local_34;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3013,42 +2996,42 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_39 = _e40;
+            local_35 = _e40;
         } else {
-            local_39 = false;
+            local_35 = false;
         }
-        bool _e42 = local_39;
+        bool _e42 = local_35;
         if (_e42) {
-            v_e_1 = v_end;
+            v_e_2 = v_end;
             dv_2 = dv_end;
             infinite_1 = false;
         }
     }
     float _e45 = dv_2;
     bool _e46 = infinite_1;
-    float _e47 = airlight_optical(big_h_1, _e45, _e46);
-    float _e48 = v_e_1;
+    float _e47 = airlight_optical(big_h_2, _e45, _e46);
+    float _e48 = v_e_2;
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_14 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    AirlightHalf half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_9 = (big_h_1 * _e8);
+        x_9 = (big_h_2 * _e8);
     } else {
         if ((s_13.sigma_t > 0.0)) {
             x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
         }
     }
     float _e66 = x_9;
-    vec2 _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    vec2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_13, g_17, -1.0, 0.0);
     float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
-float airlight_cut_length(float big_h_2, float v_s) {
-    float inv_h = (1.0 / big_h_2);
+float airlight_cut_length(float big_h_3, float v_s) {
+    float inv_h = (1.0 / big_h_3);
     float w_3 = (v_s + inv_h);
     float r_10 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
     float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
@@ -3056,54 +3039,54 @@ float airlight_cut_length(float big_h_2, float v_s) {
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonical g_18) {
+    bool local_36 = false;
+    bool local_37 = false;
+    bool local_38 = false;
+    bool local_39 = false;
+    float gap_1 = 0.0;
     bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
-    float gap_1 = 0.0;
     bool local_44 = false;
     bool local_45 = false;
     bool local_46 = false;
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
-    bool local_50 = false;
-    bool local_51 = false;
-    bool local_52 = false;
-    bool local_53 = false;
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
-    bool local_54 = false;
-    AirlightHalf half_12 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_55 = false;
-    bool local_56 = false;
-    bool local_57 = false;
+    bool local_50 = false;
+    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_51 = false;
+    bool local_52 = false;
+    bool local_53 = false;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = 0.0;
     bool infinite_2 = true;
+    bool local_54 = false;
+    bool local_55 = false;
+    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_56 = false;
+    bool local_57 = false;
     bool local_58 = false;
-    bool local_59 = false;
-    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_60 = false;
-    bool local_61 = false;
-    bool local_62 = false;
     float t0_ = g_18.t_lo;
     float t1_ = g_18.t_hi;
     if (!(g_18.t_hi_infinite)) {
-        local_40 = (t1_ > t0_);
+        local_36 = (t1_ > t0_);
     } else {
-        local_40 = true;
+        local_36 = true;
     }
-    bool _e10 = local_40;
+    bool _e10 = local_36;
     if (!(!(_e10))) {
-        local_41 = ((s_14.sigma_s * s_14.intensity) == 0.0);
+        local_37 = ((s_14.sigma_s * s_14.intensity) == 0.0);
     } else {
-        local_41 = true;
+        local_37 = true;
     }
-    bool _e21 = local_41;
+    bool _e21 = local_37;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
@@ -3111,16 +3094,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     float x_h = g_18.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_18.t_hi_infinite)) {
-            local_43 = (x_h <= t1_);
+            local_39 = (x_h <= t1_);
         } else {
-            local_43 = true;
+            local_39 = true;
         }
-        bool _e36 = local_43;
-        local_42 = _e36;
+        bool _e36 = local_39;
+        local_38 = _e36;
     } else {
-        local_42 = false;
+        local_38 = false;
     }
-    bool inside = local_42;
+    bool inside = local_38;
     if ((x_h < t0_)) {
         gap_1 = (t0_ - x_h);
     } else {
@@ -3130,11 +3113,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     }
     if (!(inside)) {
         float _e48 = gap_1;
-        local_44 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_40 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_44 = false;
+        local_40 = false;
     }
-    bool _e55 = local_44;
+    bool _e55 = local_40;
     if (_e55) {
         float _e56 = airlight_on_line(s_14, g_18);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3142,63 +3125,63 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     if ((h_4 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_6 = (s_14.sigma_t * h_4);
+    float big_h_7 = (s_14.sigma_t * h_4);
     if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_46 = (s_14.light_param_a == 0.0);
+            local_42 = (s_14.light_param_a == 0.0);
         } else {
-            local_46 = false;
+            local_42 = false;
         }
-        bool _e83 = local_46;
-        local_45 = _e83;
+        bool _e83 = local_42;
+        local_41 = _e83;
     } else {
-        local_45 = true;
+        local_41 = true;
     }
-    bool _e85 = local_45;
+    bool _e85 = local_41;
     if (_e85) {
         if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_45 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_49 = true;
+                local_45 = true;
             }
-            bool _e104 = local_49;
+            bool _e104 = local_45;
             if (_e104) {
-                local_50 = (s_14.phase_param_a == 0.0);
+                local_46 = (s_14.phase_param_a == 0.0);
             } else {
-                local_50 = false;
+                local_46 = false;
             }
-            bool _e111 = local_50;
-            local_48 = _e111;
+            bool _e111 = local_46;
+            local_44 = _e111;
         } else {
-            local_48 = true;
+            local_44 = true;
         }
-        bool _e113 = local_48;
-        local_47 = _e113;
+        bool _e113 = local_44;
+        local_43 = _e113;
+    } else {
+        local_43 = false;
+    }
+    bool isotropic_1 = local_43;
+    if (isotropic_1) {
+        local_47 = (t0_ < x_h);
     } else {
         local_47 = false;
     }
-    bool isotropic_1 = local_47;
-    if (isotropic_1) {
-        local_51 = (t0_ < x_h);
-    } else {
-        local_51 = false;
-    }
-    bool _e120 = local_51;
+    bool _e120 = local_47;
     if (_e120) {
         if (!(g_18.t_hi_infinite)) {
-            local_53 = (x_h < t1_);
+            local_49 = (x_h < t1_);
         } else {
-            local_53 = true;
+            local_49 = true;
         }
-        bool _e129 = local_53;
-        local_52 = _e129;
+        bool _e129 = local_49;
+        local_48 = _e129;
     } else {
-        local_52 = false;
+        local_48 = false;
     }
-    bool _e131 = local_52;
+    bool _e131 = local_48;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_14, g_18, big_h_6);
+        float _e132 = airlight_whole_line(s_14, g_18, big_h_7);
         return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
     }
     bool cut = !(isotropic_1);
@@ -3206,11 +3189,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float a_s_1 = ((x_h - t0_) / h_4);
         t_end = x_h;
         if (!(g_18.t_hi_infinite)) {
-            local_54 = (t1_ < x_h);
+            local_50 = (t1_ < x_h);
         } else {
-            local_54 = false;
+            local_50 = false;
         }
-        bool _e154 = local_54;
+        bool _e154 = local_50;
         if (_e154) {
             t_end = t1_;
         }
@@ -3222,43 +3205,43 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float _e161 = airlight_bounded(a_e);
         float _e162 = t_end;
         float dy_1 = (((((_e162 - t0_) / h_4) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        float _e175 = airlight_optical(big_h_6, dy_1, false);
-        half_12 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        float _e175 = airlight_optical(big_h_7, dy_1, false);
+        half_13 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if (cut) {
-            float _e182 = half_12.big_h;
-            local_55 = (_e182 > 0.0);
+            float _e182 = half_13.big_h;
+            local_51 = (_e182 > 0.0);
         } else {
-            local_55 = false;
+            local_51 = false;
         }
-        bool _e186 = local_55;
+        bool _e186 = local_51;
         if (_e186) {
-            float _e188 = half_12.big_h;
+            float _e188 = half_13.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if ((_e189 < dy_1)) {
-                float _e193 = half_12.big_h;
-                half_12 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                float _e193 = half_13.big_h;
+                half_13 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_12;
+        AirlightHalf _e199 = half_13;
         float _e200 = airlight_half(s_14, g_18, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_6 * _e158), _e200);
+        float _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_7 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if (!(g_18.t_hi_infinite)) {
-        local_56 = (t1_ > x_h);
+        local_52 = (t1_ > x_h);
     } else {
-        local_56 = true;
+        local_52 = true;
     }
-    bool _e213 = local_56;
+    bool _e213 = local_52;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_57 = !(_e216);
+        local_53 = !(_e216);
     } else {
-        local_57 = false;
+        local_53 = false;
     }
-    bool _e219 = local_57;
+    bool _e219 = local_53;
     if (_e219) {
         float t_start = max(t0_, x_h);
         float a_s_2 = ((t_start - x_h) / h_4);
@@ -3268,22 +3251,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         float a_e_1 = ((t1_ - x_h) / h_4);
         if (!(g_18.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_58 = _e238;
+            local_54 = _e238;
         } else {
-            local_58 = false;
+            local_54 = false;
         }
-        bool _e240 = local_58;
+        bool _e240 = local_54;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_ - t_start) / h_4) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if ((_e241 > 0.0)) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_59 = _e255;
+                local_55 = _e255;
             } else {
-                local_59 = false;
+                local_55 = false;
             }
-            bool _e257 = local_59;
+            bool _e257 = local_55;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3295,49 +3278,49 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
         }
         float _e264 = dv_3;
         bool _e265 = infinite_2;
-        float _e266 = airlight_optical(big_h_6, _e264, _e265);
+        float _e266 = airlight_optical(big_h_7, _e264, _e265);
         float _e267 = y_lo;
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_13 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_14 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if (cut) {
-            float _e276 = half_13.big_h;
-            local_60 = (_e276 > 0.0);
+            float _e276 = half_14.big_h;
+            local_56 = (_e276 > 0.0);
         } else {
-            local_60 = false;
+            local_56 = false;
         }
-        bool _e280 = local_60;
+        bool _e280 = local_56;
         if (_e280) {
-            float _e282 = half_13.big_h;
+            float _e282 = half_14.big_h;
             float _e285 = airlight_cut_length(_e282, (1.0 / _e224));
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_61 = (_e285 < _e290);
+                local_57 = (_e285 < _e290);
             } else {
-                local_61 = true;
+                local_57 = true;
             }
-            bool _e293 = local_61;
+            bool _e293 = local_57;
             if (_e293) {
                 float cut_y_lo = (_e224 / (1.0 + (_e224 * _e285)));
                 if ((cut_y_lo > 0.0)) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_62 = _e302;
+                    local_58 = _e302;
                 } else {
-                    local_62 = false;
+                    local_58 = false;
                 }
-                bool _e304 = local_62;
+                bool _e304 = local_58;
                 if (_e304) {
-                    float _e307 = half_13.big_h;
-                    half_13 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    float _e307 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        AirlightHalf _e313 = half_13;
+        AirlightHalf _e313 = half_14;
         float _e314 = airlight_half(s_14, g_18, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_6 * _e223)), _e314);
+        float _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_7 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     float _e325 = total_3;
@@ -3345,23 +3328,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_63 = false;
-    bool local_64 = false;
+    bool local_59 = false;
+    bool local_60 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_63 = _e6;
+        local_59 = _e6;
     } else {
-        local_63 = false;
+        local_59 = false;
     }
-    bool _e8 = local_63;
+    bool _e8 = local_59;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_64 = _e12;
+        local_60 = _e12;
     } else {
-        local_64 = false;
+        local_60 = false;
     }
-    bool _e14 = local_64;
+    bool _e14 = local_60;
     return _e14;
 }
 
@@ -3374,15 +3357,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_65 = false;
+    bool local_61 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_65 = _e6;
+        local_61 = _e6;
     } else {
-        local_65 = false;
+        local_61 = false;
     }
-    bool _e8 = local_65;
+    bool _e8 = local_61;
     return _e8;
 }
 
@@ -3393,17 +3376,21 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_15) {
+    bool local_62 = false;
+    bool local_63 = false;
+    bool local_64 = false;
+    bool local_65 = false;
     bool local_66 = false;
     bool local_67 = false;
     bool local_68 = false;
     bool local_69 = false;
     bool local_70 = false;
     bool local_71 = false;
+    bool ok = false;
     bool local_72 = false;
     bool local_73 = false;
     bool local_74 = false;
     bool local_75 = false;
-    bool ok = false;
     bool local_76 = false;
     bool local_77 = false;
     bool local_78 = false;
@@ -3423,105 +3410,101 @@ bool airlight_valid(AirlightScene s_15) {
     bool local_92 = false;
     bool local_93 = false;
     bool local_94 = false;
-    bool local_95 = false;
-    bool local_96 = false;
-    bool local_97 = false;
-    bool local_98 = false;
     bool _e2 = airlight_vec_finite(s_15.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_15.dir);
-        local_66 = _e6;
+        local_62 = _e6;
+    } else {
+        local_62 = false;
+    }
+    bool _e8 = local_62;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_15.dir);
+        local_63 = _e12;
+    } else {
+        local_63 = false;
+    }
+    bool _e14 = local_63;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_15.t_min);
+        local_64 = _e18;
+    } else {
+        local_64 = false;
+    }
+    bool _e20 = local_64;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_15.light_position);
+        local_65 = _e24;
+    } else {
+        local_65 = false;
+    }
+    bool _e26 = local_65;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_15.intensity);
+        local_66 = _e30;
     } else {
         local_66 = false;
     }
-    bool _e8 = local_66;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_15.dir);
-        local_67 = _e12;
+    bool _e32 = local_66;
+    if (_e32) {
+        local_67 = (s_15.intensity >= 0.0);
     } else {
         local_67 = false;
     }
-    bool _e14 = local_67;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_15.t_min);
-        local_68 = _e18;
+    bool _e39 = local_67;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_15.sigma_s);
+        local_68 = _e43;
     } else {
         local_68 = false;
     }
-    bool _e20 = local_68;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_15.light_position);
-        local_69 = _e24;
+    bool _e45 = local_68;
+    if (_e45) {
+        local_69 = (s_15.sigma_s >= 0.0);
     } else {
         local_69 = false;
     }
-    bool _e26 = local_69;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_15.intensity);
-        local_70 = _e30;
+    bool _e52 = local_69;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_15.sigma_t);
+        local_70 = _e56;
     } else {
         local_70 = false;
     }
-    bool _e32 = local_70;
-    if (_e32) {
-        local_71 = (s_15.intensity >= 0.0);
+    bool _e58 = local_70;
+    if (_e58) {
+        local_71 = (s_15.sigma_t >= 0.0);
     } else {
         local_71 = false;
     }
-    bool _e39 = local_71;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_15.sigma_s);
-        local_72 = _e43;
-    } else {
-        local_72 = false;
-    }
-    bool _e45 = local_72;
-    if (_e45) {
-        local_73 = (s_15.sigma_s >= 0.0);
-    } else {
-        local_73 = false;
-    }
-    bool _e52 = local_73;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_15.sigma_t);
-        local_74 = _e56;
-    } else {
-        local_74 = false;
-    }
-    bool _e58 = local_74;
-    if (_e58) {
-        local_75 = (s_15.sigma_t >= 0.0);
-    } else {
-        local_75 = false;
-    }
-    bool _e65 = local_75;
+    bool _e65 = local_71;
     ok = _e65;
     if (((s_15.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_15.t_max);
-            local_76 = _e76;
+            local_72 = _e76;
         } else {
-            local_76 = false;
+            local_72 = false;
         }
-        bool _e78 = local_76;
+        bool _e78 = local_72;
         if (_e78) {
-            local_77 = (s_15.t_min <= s_15.t_max);
+            local_73 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_77 = false;
+            local_73 = false;
         }
-        bool _e85 = local_77;
+        bool _e85 = local_73;
         ok = _e85;
     }
     if ((s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_15.light_end);
-            local_78 = _e93;
+            local_74 = _e93;
         } else {
-            local_78 = false;
+            local_74 = false;
         }
-        bool _e95 = local_78;
+        bool _e95 = local_74;
         ok = _e95;
     } else {
         if ((s_15.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -3532,37 +3515,37 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_79 = _e107;
+            local_75 = _e107;
         } else {
-            local_79 = false;
+            local_75 = false;
         }
-        bool _e109 = local_79;
+        bool _e109 = local_75;
         if (_e109) {
-            local_80 = (s_15.brdf_albedo >= 0.0);
+            local_76 = (s_15.brdf_albedo >= 0.0);
         } else {
-            local_80 = false;
+            local_76 = false;
         }
-        bool _e116 = local_80;
+        bool _e116 = local_76;
         if (_e116) {
-            local_81 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_77 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_81 = false;
+            local_77 = false;
         }
-        bool _e123 = local_81;
+        bool _e123 = local_77;
         if (_e123) {
-            local_82 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_78 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_82 = false;
+            local_78 = false;
         }
-        bool _e130 = local_82;
+        bool _e130 = local_78;
         if (_e130) {
             float _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
             bool _e137 = airlight_is_finite(_e136);
-            local_83 = _e137;
+            local_79 = _e137;
         } else {
-            local_83 = false;
+            local_79 = false;
         }
-        bool _e139 = local_83;
+        bool _e139 = local_79;
         ok = _e139;
     } else {
         if ((s_15.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -3573,72 +3556,72 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_15.light_axis);
-            local_84 = _e151;
+            local_80 = _e151;
+        } else {
+            local_80 = false;
+        }
+        bool _e153 = local_80;
+        if (_e153) {
+            bool _e157 = airlight_normalisable(s_15.light_axis);
+            local_81 = _e157;
+        } else {
+            local_81 = false;
+        }
+        bool _e159 = local_81;
+        if (_e159) {
+            local_82 = (s_15.light_param_a >= 0.0);
+        } else {
+            local_82 = false;
+        }
+        bool _e166 = local_82;
+        if (_e166) {
+            local_83 = (s_15.light_param_a <= 1024.0);
+        } else {
+            local_83 = false;
+        }
+        bool _e173 = local_83;
+        if (_e173) {
+            local_84 = (fract((s_15.light_param_a * 0.5)) == 0.0);
         } else {
             local_84 = false;
         }
-        bool _e153 = local_84;
-        if (_e153) {
-            bool _e157 = airlight_normalisable(s_15.light_axis);
-            local_85 = _e157;
-        } else {
-            local_85 = false;
-        }
-        bool _e159 = local_85;
-        if (_e159) {
-            local_86 = (s_15.light_param_a >= 0.0);
-        } else {
-            local_86 = false;
-        }
-        bool _e166 = local_86;
-        if (_e166) {
-            local_87 = (s_15.light_param_a <= 1024.0);
-        } else {
-            local_87 = false;
-        }
-        bool _e173 = local_87;
-        if (_e173) {
-            local_88 = (fract((s_15.light_param_a * 0.5)) == 0.0);
-        } else {
-            local_88 = false;
-        }
-        bool _e183 = local_88;
+        bool _e183 = local_84;
         ok = _e183;
     } else {
         if ((s_15.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_15.light_axis);
-                local_89 = _e191;
+                local_85 = _e191;
+            } else {
+                local_85 = false;
+            }
+            bool _e193 = local_85;
+            if (_e193) {
+                bool _e197 = airlight_normalisable(s_15.light_axis);
+                local_86 = _e197;
+            } else {
+                local_86 = false;
+            }
+            bool _e199 = local_86;
+            if (_e199) {
+                local_87 = (s_15.light_param_b < s_15.light_param_a);
+            } else {
+                local_87 = false;
+            }
+            bool _e206 = local_87;
+            if (_e206) {
+                local_88 = (s_15.light_param_b >= -1.0);
+            } else {
+                local_88 = false;
+            }
+            bool _e213 = local_88;
+            if (_e213) {
+                local_89 = (s_15.light_param_a <= 1.0);
             } else {
                 local_89 = false;
             }
-            bool _e193 = local_89;
-            if (_e193) {
-                bool _e197 = airlight_normalisable(s_15.light_axis);
-                local_90 = _e197;
-            } else {
-                local_90 = false;
-            }
-            bool _e199 = local_90;
-            if (_e199) {
-                local_91 = (s_15.light_param_b < s_15.light_param_a);
-            } else {
-                local_91 = false;
-            }
-            bool _e206 = local_91;
-            if (_e206) {
-                local_92 = (s_15.light_param_b >= -1.0);
-            } else {
-                local_92 = false;
-            }
-            bool _e213 = local_92;
-            if (_e213) {
-                local_93 = (s_15.light_param_a <= 1.0);
-            } else {
-                local_93 = false;
-            }
-            bool _e220 = local_93;
+            bool _e220 = local_89;
             ok = _e220;
         } else {
             if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -3657,40 +3640,40 @@ bool airlight_valid(AirlightScene s_15) {
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_94 = g_ok;
+                local_90 = g_ok;
             } else {
-                local_94 = false;
+                local_90 = false;
             }
-            bool _e234 = local_94;
+            bool _e234 = local_90;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_95 = g_ok;
+                local_91 = g_ok;
             } else {
-                local_95 = false;
+                local_91 = false;
             }
-            bool _e239 = local_95;
+            bool _e239 = local_91;
             if (_e239) {
-                local_96 = (abs(s_15.phase_param_b) < 1.0);
+                local_92 = (abs(s_15.phase_param_b) < 1.0);
             } else {
-                local_96 = false;
+                local_92 = false;
             }
-            bool _e247 = local_96;
+            bool _e247 = local_92;
             if (_e247) {
-                local_97 = (s_15.phase_param_c >= 0.0);
+                local_93 = (s_15.phase_param_c >= 0.0);
             } else {
-                local_97 = false;
+                local_93 = false;
             }
-            bool _e254 = local_97;
+            bool _e254 = local_93;
             if (_e254) {
-                local_98 = (s_15.phase_param_c <= 1.0);
+                local_94 = (s_15.phase_param_c <= 1.0);
             } else {
-                local_98 = false;
+                local_94 = false;
             }
-            bool _e261 = local_98;
+            bool _e261 = local_94;
             ok = _e261;
             break;
         }
@@ -3762,28 +3745,28 @@ float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_99 = false;
-    bool local_100 = false;
+    bool local_95 = false;
+    bool local_96 = false;
     float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if ((m_8 >= 9.313226e-10)) {
-            local_100 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_96 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_100 = false;
+            local_96 = false;
         }
-        bool _e21 = local_100;
-        local_99 = _e21;
+        bool _e21 = local_96;
+        local_95 = _e21;
     } else {
-        local_99 = true;
+        local_95 = true;
     }
-    bool _e23 = local_99;
+    bool _e23 = local_95;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) {
-    bool local_101 = false;
+    bool local_97 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_102 = false;
+    bool local_98 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_17.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_17.light_position.x, -(s_17.origin.x), key_4);
@@ -3795,11 +3778,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_101 = !(_e38);
+        local_97 = !(_e38);
     } else {
-        local_101 = true;
+        local_97 = true;
     }
-    bool _e41 = local_101;
+    bool _e41 = local_97;
     if (_e41) {
         return plain;
     }
@@ -3823,11 +3806,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
     float h_5 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_5);
     if (_e95) {
-        local_102 = (h_5 > 0.0);
+        local_98 = (h_5 > 0.0);
     } else {
-        local_102 = false;
+        local_98 = false;
     }
-    bool _e101 = local_102;
+    bool _e101 = local_98;
     if (!(_e101)) {
         return plain;
     }
@@ -4045,23 +4028,23 @@ AirlightOuter airlight_outer_point(AirlightScene s_20, uint max_panels) {
 
 AirlightOuter airlight_surface(AirlightScene s_21) {
     AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_103 = false;
+    bool local_99 = false;
     vec3 u = vec3(0.0);
     float cuts_1[2] = float[2](0.0, 0.0);
     uint k_6 = 0u;
     uint i_17 = 0u;
-    bool local_104 = false;
+    bool local_100 = false;
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     vec3 to_light_1 = (s_21.light_position - s_21.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_21.intensity == 0.0))) {
-        local_103 = (s_21.sigma_s == 0.0);
+        local_99 = (s_21.sigma_s == 0.0);
     } else {
-        local_103 = true;
+        local_99 = true;
     }
-    bool _e18 = local_103;
+    bool _e18 = local_99;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -4124,11 +4107,11 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
             if ((_e98 > _e102)) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1[_e106];
-                local_104 = (_e108 < AIRLIGHT_PI);
+                local_100 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_104 = false;
+                local_100 = false;
             }
-            bool _e112 = local_104;
+            bool _e112 = local_100;
             if (_e112) {
                 uint _e113 = k_6;
                 k_6 = (_e113 + 1u);
@@ -4168,31 +4151,31 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
 
 AirlightOuter airlight_outer(AirlightScene s_22) {
     AirlightOuter g_21 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
-    bool local_105 = false;
-    bool local_106 = false;
+    bool local_101 = false;
+    bool local_102 = false;
     float s_star = 0.0;
     float t_star = 0.0;
+    bool local_103 = false;
+    bool local_104 = false;
+    bool local_105 = false;
+    bool local_106 = false;
     bool local_107 = false;
     bool local_108 = false;
+    float scale = 0.0;
     bool local_109 = false;
     bool local_110 = false;
     bool local_111 = false;
     bool local_112 = false;
-    float scale = 0.0;
     bool local_113 = false;
-    bool local_114 = false;
-    bool local_115 = false;
-    bool local_116 = false;
-    bool local_117 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
     uint i_19 = 0u;
-    bool local_118 = false;
-    bool local_119 = false;
-    bool local_120 = false;
+    bool local_114 = false;
+    bool local_115 = false;
+    bool local_116 = false;
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_121 = false;
+    bool local_117 = false;
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         AirlightOuter _e4 = airlight_surface(s_22);
         return _e4;
@@ -4206,17 +4189,17 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     vec3 ab_1 = (s_22.light_end - s_22.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_105 = (s_22.intensity == 0.0);
+        local_101 = (s_22.intensity == 0.0);
     } else {
-        local_105 = true;
+        local_101 = true;
     }
-    bool _e26 = local_105;
+    bool _e26 = local_101;
     if (!(_e26)) {
-        local_106 = (s_22.sigma_s == 0.0);
+        local_102 = (s_22.sigma_s == 0.0);
     } else {
-        local_106 = true;
+        local_102 = true;
     }
-    bool _e34 = local_106;
+    bool _e34 = local_102;
     if (_e34) {
         g_21.outcome = 1u;
         AirlightOuter _e37 = g_21;
@@ -4240,94 +4223,94 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_107 = (sin_a_1 > 0.0);
+        local_103 = (sin_a_1 > 0.0);
     } else {
-        local_107 = false;
+        local_103 = false;
     }
-    bool _e84 = local_107;
+    bool _e84 = local_103;
     if (_e84) {
         float _e87 = s_star;
-        local_108 = (_e87 >= 0.0);
+        local_104 = (_e87 >= 0.0);
     } else {
-        local_108 = false;
+        local_104 = false;
     }
-    bool _e91 = local_108;
+    bool _e91 = local_104;
     if (_e91) {
         float _e94 = s_star;
-        local_109 = (_e94 <= _e15);
+        local_105 = (_e94 <= _e15);
     } else {
-        local_109 = false;
+        local_105 = false;
     }
-    bool _e97 = local_109;
+    bool _e97 = local_105;
     if (_e97) {
         float _e101 = t_star;
-        local_110 = (s_22.t_min <= _e101);
+        local_106 = (s_22.t_min <= _e101);
     } else {
-        local_110 = false;
+        local_106 = false;
     }
-    bool _e104 = local_110;
+    bool _e104 = local_106;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_112 = (_e110 <= s_22.t_max);
+            local_108 = (_e110 <= s_22.t_max);
         } else {
-            local_112 = true;
+            local_108 = true;
         }
-        bool _e114 = local_112;
-        local_111 = _e114;
+        bool _e114 = local_108;
+        local_107 = _e114;
     } else {
-        local_111 = false;
+        local_107 = false;
     }
-    bool _e116 = local_111;
+    bool _e116 = local_107;
     if (_e116) {
         g_21.outcome = 2u;
         AirlightOuter _e119 = g_21;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_113 = (_e73 > 0.0);
+        local_109 = (_e73 > 0.0);
     } else {
-        local_113 = false;
+        local_109 = false;
     }
-    bool _e129 = local_113;
+    bool _e129 = local_109;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_114 = (_e136 < (_e15 + _e15));
+        local_110 = (_e136 < (_e15 + _e15));
     } else {
-        local_114 = false;
+        local_110 = false;
     }
-    bool _e140 = local_114;
+    bool _e140 = local_110;
     if (_e140) {
         float _e143 = scale;
-        local_115 = (_e143 < _e15);
+        local_111 = (_e143 < _e15);
     } else {
-        local_115 = false;
+        local_111 = false;
     }
-    bool near_3 = local_115;
-    if (near_3) {
+    bool near_1 = local_111;
+    if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_116 = _e154;
+        local_112 = _e154;
     } else {
-        local_116 = false;
+        local_112 = false;
     }
-    bool _e156 = local_116;
+    bool _e156 = local_112;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_117 = _e163;
+        local_113 = _e163;
     } else {
-        local_117 = false;
+        local_113 = false;
     }
-    bool _e165 = local_117;
+    bool _e165 = local_113;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -4353,21 +4336,21 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_19;
-                local_118 = (_e196 > 0u);
+                local_114 = (_e196 > 0u);
             } else {
-                local_118 = false;
+                local_114 = false;
             }
-            bool _e200 = local_118;
+            bool _e200 = local_114;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if ((_e201 == 2u)) {
-                local_119 = infinite_4;
+                local_115 = infinite_4;
             } else {
-                local_119 = false;
+                local_115 = false;
             }
-            bool _e207 = local_119;
+            bool _e207 = local_115;
             if (_e207) {
                 continue;
             }
@@ -4376,11 +4359,11 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             if ((_e210 > 0.0)) {
                 uint _e215 = i_19;
                 float _e217 = at[_e215];
-                local_120 = (_e217 < _e15);
+                local_116 = (_e217 < _e15);
             } else {
-                local_120 = false;
+                local_116 = false;
             }
-            bool _e220 = local_120;
+            bool _e220 = local_116;
             if (_e220) {
                 uint _e221 = i_19;
                 AirlightOuter _e223 = g_21;
@@ -4440,11 +4423,11 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             if ((_e280 > _e284)) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2[_e288];
-                local_121 = (_e290 < _e265);
+                local_117 = (_e290 < _e265);
             } else {
-                local_121 = false;
+                local_117 = false;
             }
-            bool _e293 = local_121;
+            bool _e293 = local_117;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -4525,17 +4508,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
     float k_7 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_122 = false;
+    bool local_118 = false;
     float f = 0.0;
     AirlightResult r_5 = AirlightResult(0.0, 0u);
-    bool local_123 = false;
-    bool local_124 = false;
-    bool local_125 = false;
+    bool local_119 = false;
+    bool local_120 = false;
+    bool local_121 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_126 = false;
-    bool local_127 = false;
-    bool local_128 = false;
+    bool local_122 = false;
+    bool local_123 = false;
+    bool local_124 = false;
     bool _e1 = airlight_valid(s_24);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -4591,11 +4574,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                     uint _e89 = j_4;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_4;
-                        local_122 = (_e96 < 6u);
+                        local_118 = (_e96 < 6u);
                     } else {
-                        local_122 = false;
+                        local_118 = false;
                     }
-                    bool _e100 = local_122;
+                    bool _e100 = local_118;
                     float w_5 = (_e100 ? (c_14 - (hw_1 * node.x)) : (c_14 + (hw_1 * node.x)));
                     AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_5);
                     f = 0.0;
@@ -4605,11 +4588,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_123 = _e118;
+                            local_119 = _e118;
                         } else {
-                            local_123 = false;
+                            local_119 = false;
                         }
-                        bool _e120 = local_123;
+                        bool _e120 = local_119;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4620,20 +4603,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_124 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_120 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_124 = true;
+                            local_120 = true;
                         }
-                        bool _e136 = local_124;
+                        bool _e136 = local_120;
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
                         if ((s_24.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_125 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_121 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_125 = false;
+                            local_121 = false;
                         }
-                        bool _e149 = local_125;
+                        bool _e149 = local_121;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -4703,18 +4686,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_126 = (_e223 == _e6.max_panels);
+                                local_122 = (_e223 == _e6.max_panels);
                             } else {
-                                local_126 = true;
+                                local_122 = true;
                             }
-                            bool _e227 = local_126;
+                            bool _e227 = local_122;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_127 = !(_e231);
+                                local_123 = !(_e231);
                             } else {
-                                local_127 = true;
+                                local_123 = true;
                             }
-                            bool _e234 = local_127;
+                            bool _e234 = local_123;
                             if (_e234) {
                                 break;
                             }
@@ -4724,11 +4707,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             float wb_1 = _e236.y;
                             float mid_1 = (0.5 * (wa_1 + wb_1));
                             if ((mid_1 > wa_1)) {
-                                local_128 = (mid_1 < wb_1);
+                                local_124 = (mid_1 < wb_1);
                             } else {
-                                local_128 = false;
+                                local_124 = false;
                             }
-                            bool _e247 = local_128;
+                            bool _e247 = local_124;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e236.xyz, 0.0));
                                 continue;

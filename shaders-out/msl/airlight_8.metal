@@ -1127,6 +1127,40 @@ float airlight_moment_gauss(
     return _e61;
 }
 
+bool airlight_is_short(
+    AirlightHalf half_1
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    if (!(half_1.dv_infinite)) {
+        local_1 = (half_1.big_h * half_1.dv) <= 1.0;
+    } else {
+        local_1 = false;
+    }
+    bool short_exp = local_1;
+    if (half_1.dy <= 0.25) {
+        if (!(!(half_1.second))) {
+            local_3 = half_1.dy <= (half_1.y_lo * 0.5);
+        } else {
+            local_3 = true;
+        }
+        bool _e28 = local_3;
+        local_2 = _e28;
+    } else {
+        local_2 = false;
+    }
+    bool short_len = local_2;
+    if (short_exp) {
+        local_4 = short_len;
+    } else {
+        local_4 = false;
+    }
+    bool _e34 = local_4;
+    return _e34;
+}
+
 float airlight_hypot_one(
     float a_3
 ) {
@@ -1136,236 +1170,191 @@ float airlight_hypot_one(
     return metal::abs(a_3);
 }
 
-float airlight_q_zero(
-    AirlightHalf half_1
-) {
-    float v_e = {};
-    bool local_1 = {};
-    bool local_2 = {};
-    bool local_3 = {};
-    float d_im = 0.0;
-    float d_re = 0.0;
-    bool local_4 = {};
-    float big_h_3 = half_1.big_h;
-    float v_s_1 = half_1.second ? (1.0 / half_1.y_hi) : half_1.y_lo;
-    bool v_e_infinite = half_1.dv_infinite;
-    v_e = half_1.y_hi;
-    if (half_1.second) {
-        local_1 = !(v_e_infinite);
-    } else {
-        local_1 = false;
-    }
-    bool _e16 = local_1;
-    if (_e16) {
-        v_e = 1.0 / half_1.y_lo;
-    }
-    if (!((big_h_3 == 0.0))) {
-        if (!(v_e_infinite)) {
-            float _e28 = v_e;
-            float _e29 = airlight_hypot_one(_e28);
-            local_3 = (big_h_3 * _e29) <= 1.0;
-        } else {
-            local_3 = false;
-        }
-        bool _e34 = local_3;
-        local_2 = _e34;
-    } else {
-        local_2 = true;
-    }
-    bool near_1 = local_2;
-    if (near_1) {
-        if (!(v_e_infinite)) {
-            float _e43 = v_e;
-            float _e48 = airlight_atan(half_1.dv / (1.0 + (v_s_1 * _e43)));
-            d_im = _e48;
-            float _e50 = v_e;
-            float x_18 = (half_1.dv * (v_s_1 + _e50)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e57 = airlight_is_finite(x_18);
-            if (_e57) {
-                float _e58 = airlight_log1p(x_18);
-                d_re = 0.5 * _e58;
-            } else {
-                float _e63 = v_e;
-                float _e68 = airlight_log1p(v_s_1 * v_s_1);
-                d_re = 0.5 * ((metal::log(half_1.dv) + metal::log(v_s_1 + _e63)) - _e68);
-            }
-        } else {
-            float _e74 = airlight_atan(1.0 / v_s_1);
-            d_im = _e74;
-        }
-        if (big_h_3 == 0.0) {
-            float _e77 = d_im;
-            return _e77;
-        }
-        metal::float2 z_s = metal::float2(big_h_3 * v_s_1, -(big_h_3));
-        float _e81 = v_e;
-        metal::float2 z_e = metal::float2(big_h_3 * _e81, -(big_h_3));
-        metal::float2 _e85 = airlight_ein_divided_difference(z_s, z_e);
-        metal::float2 _e86 = airlight_cos_sin(big_h_3);
-        metal::float2 rot = metal::float2(_e86.x, -(_e86.y));
-        float _e91 = d_re;
-        float _e92 = d_im;
-        metal::float2 _e98 = airlight_cmul(rot, metal::float2(_e91, _e92) - (_e85 * (big_h_3 * half_1.dv)));
-        return _e98.y * metal::exp(big_h_3 * v_s_1);
-    }
-    metal::float2 _e106 = airlight_e1_scaled(metal::float2(big_h_3 * v_s_1, -(big_h_3)));
-    if (!(v_e_infinite)) {
-        float _e110 = v_e;
-        bool _e112 = airlight_is_finite(big_h_3 * _e110);
-        local_4 = _e112;
-    } else {
-        local_4 = false;
-    }
-    bool _e114 = local_4;
-    if (_e114) {
-        float decay_1 = metal::exp(-(big_h_3) * half_1.dv);
-        if (decay_1 > 0.000000029802322) {
-            float _e121 = v_e;
-            metal::float2 _e125 = airlight_e1_scaled(metal::float2(big_h_3 * _e121, -(big_h_3)));
-            return _e106.y - (_e125.y * decay_1);
-        }
-    }
-    return _e106.y;
-}
-
-float airlight_moment_zero(
-    AirlightHalf half_2
+bool airlight_is_near(
+    float big_h,
+    float v_e,
+    bool v_e_infinite
 ) {
     bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
-    bool local_8 = {};
-    if (!((half_2.dy > 0.0))) {
-        return 0.0;
-    }
-    if (!(half_2.dv_infinite)) {
-        local_5 = (half_2.big_h * half_2.dv) <= 1.0;
-    } else {
-        local_5 = false;
-    }
-    bool short_exp = local_5;
-    if (half_2.dy <= 0.25) {
-        if (!(!(half_2.second))) {
-            local_7 = half_2.dy <= (half_2.y_lo * 0.5);
+    if (!((big_h == 0.0))) {
+        if (!(v_e_infinite)) {
+            float _e11 = airlight_hypot_one(v_e);
+            local_6 = (big_h * _e11) <= 1.0;
         } else {
-            local_7 = true;
+            local_6 = false;
         }
-        bool _e33 = local_7;
-        local_6 = _e33;
+        bool _e16 = local_6;
+        local_5 = _e16;
     } else {
-        local_6 = false;
+        local_5 = true;
     }
-    bool short_len = local_6;
-    if (short_exp) {
-        local_8 = short_len;
+    bool _e18 = local_5;
+    return _e18;
+}
+
+float airlight_q_zero(
+    AirlightHalf half_2
+) {
+    float v_e_1 = {};
+    bool local_7 = {};
+    float d_im = 0.0;
+    float d_re = 0.0;
+    bool local_8 = {};
+    float big_h_4 = half_2.big_h;
+    float v_s_1 = half_2.second ? (1.0 / half_2.y_hi) : half_2.y_lo;
+    bool v_e_infinite_1 = half_2.dv_infinite;
+    v_e_1 = half_2.y_hi;
+    if (half_2.second) {
+        local_7 = !(v_e_infinite_1);
+    } else {
+        local_7 = false;
+    }
+    bool _e16 = local_7;
+    if (_e16) {
+        v_e_1 = 1.0 / half_2.y_lo;
+    }
+    float _e20 = v_e_1;
+    bool _e21 = airlight_is_near(big_h_4, _e20, v_e_infinite_1);
+    if (_e21) {
+        if (!(v_e_infinite_1)) {
+            float _e28 = v_e_1;
+            float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
+            d_im = _e33;
+            float _e35 = v_e_1;
+            float x_18 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_18);
+            if (_e42) {
+                float _e43 = airlight_log1p(x_18);
+                d_re = 0.5 * _e43;
+            } else {
+                float _e48 = v_e_1;
+                float _e53 = airlight_log1p(v_s_1 * v_s_1);
+                d_re = 0.5 * ((metal::log(half_2.dv) + metal::log(v_s_1 + _e48)) - _e53);
+            }
+        } else {
+            float _e59 = airlight_atan(1.0 / v_s_1);
+            d_im = _e59;
+        }
+        if (big_h_4 == 0.0) {
+            float _e62 = d_im;
+            return _e62;
+        }
+        metal::float2 z_s = metal::float2(big_h_4 * v_s_1, -(big_h_4));
+        float _e66 = v_e_1;
+        metal::float2 z_e = metal::float2(big_h_4 * _e66, -(big_h_4));
+        metal::float2 _e70 = airlight_ein_divided_difference(z_s, z_e);
+        metal::float2 _e71 = airlight_cos_sin(big_h_4);
+        metal::float2 rot = metal::float2(_e71.x, -(_e71.y));
+        float _e76 = d_re;
+        float _e77 = d_im;
+        metal::float2 _e83 = airlight_cmul(rot, metal::float2(_e76, _e77) - (_e70 * (big_h_4 * half_2.dv)));
+        return _e83.y * metal::exp(big_h_4 * v_s_1);
+    }
+    metal::float2 _e91 = airlight_e1_scaled(metal::float2(big_h_4 * v_s_1, -(big_h_4)));
+    if (!(v_e_infinite_1)) {
+        float _e95 = v_e_1;
+        bool _e97 = airlight_is_finite(big_h_4 * _e95);
+        local_8 = _e97;
     } else {
         local_8 = false;
     }
-    bool _e39 = local_8;
-    if (_e39) {
-        float _e40 = airlight_moment_gauss(half_2);
-        return _e40;
+    bool _e99 = local_8;
+    if (_e99) {
+        float decay_1 = metal::exp(-(big_h_4) * half_2.dv);
+        if (decay_1 > 0.000000029802322) {
+            float _e106 = v_e_1;
+            metal::float2 _e110 = airlight_e1_scaled(metal::float2(big_h_4 * _e106, -(big_h_4)));
+            return _e91.y - (_e110.y * decay_1);
+        }
     }
-    float _e41 = airlight_q_zero(half_2);
-    return _e41;
+    return _e91.y;
+}
+
+float airlight_moment_zero(
+    AirlightHalf half_3
+) {
+    if (!((half_3.dy > 0.0))) {
+        return 0.0;
+    }
+    bool _e6 = airlight_is_short(half_3);
+    if (_e6) {
+        float _e7 = airlight_moment_gauss(half_3);
+        return _e7;
+    }
+    float _e8 = airlight_q_zero(half_3);
+    return _e8;
 }
 
 metal::float2 airlight_moment_zero_weighted(
-    AirlightHalf half_3,
+    AirlightHalf half_4,
     float x_6
 ) {
     bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
     bool local_12 = {};
+    float far_end = 0.0;
     bool local_13 = {};
     bool local_14 = {};
-    bool local_15 = {};
-    bool local_16 = {};
-    float far_end = 0.0;
-    bool local_17 = {};
-    bool local_18 = {};
-    float big_h_4 = half_3.big_h;
-    float v_s_2 = half_3.y_lo;
-    metal::float2 z_s_1 = metal::float2(big_h_4 * v_s_2, -(big_h_4));
-    if (!(half_3.dv_infinite)) {
-        local_9 = (big_h_4 * half_3.dv) <= 1.0;
+    float big_h_5 = half_4.big_h;
+    float v_s_2 = half_4.y_lo;
+    metal::float2 z_s_1 = metal::float2(big_h_5 * v_s_2, -(big_h_5));
+    if (!(half_4.second)) {
+        local_9 = half_4.dy > 0.0;
     } else {
         local_9 = false;
     }
-    bool _e16 = local_9;
-    if (_e16) {
-        local_10 = half_3.dy <= 0.25;
+    bool _e15 = local_9;
+    if (_e15) {
+        bool _e18 = airlight_is_short(half_4);
+        local_10 = !(_e18);
     } else {
         local_10 = false;
     }
-    bool short_ = local_10;
-    if (!((big_h_4 == 0.0))) {
-        if (!(half_3.dv_infinite)) {
-            float _e34 = airlight_hypot_one(half_3.y_hi);
-            local_12 = (big_h_4 * _e34) <= 1.0;
-        } else {
-            local_12 = false;
-        }
-        bool _e39 = local_12;
-        local_11 = _e39;
+    bool _e21 = local_10;
+    if (_e21) {
+        bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_11 = !(_e26);
     } else {
-        local_11 = true;
+        local_11 = false;
     }
-    bool near_2 = local_11;
-    if (!(half_3.second)) {
-        local_13 = !((half_3.dy > 0.0));
+    bool far_route = local_11;
+    if (!(!(far_route))) {
+        bool _e34 = airlight_in_series_region(z_s_1);
+        local_12 = !(_e34);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e51 = local_13;
-    if (!(_e51)) {
-        local_14 = short_;
+    bool _e37 = local_12;
+    if (_e37) {
+        float _e38 = airlight_moment_zero(half_4);
+        return metal::float2(_e38, x_6);
+    }
+    metal::float2 _e40 = airlight_cos_sin(big_h_5);
+    metal::float2 _e41 = airlight_e1_series(z_s_1);
+    metal::float2 _e46 = airlight_cmul(_e41, metal::float2(_e40.x, -(_e40.y)));
+    float near_end = _e46.y;
+    float v_e_3 = half_4.y_hi;
+    if (!(half_4.dv_infinite)) {
+        bool _e56 = airlight_is_finite(big_h_5 * v_e_3);
+        local_13 = _e56;
     } else {
-        local_14 = true;
+        local_13 = false;
     }
-    bool _e56 = local_14;
-    if (!(_e56)) {
-        local_15 = near_2;
+    bool _e58 = local_13;
+    if (_e58) {
+        local_14 = (big_h_5 * half_4.dv) < 17.32868;
     } else {
-        local_15 = true;
+        local_14 = false;
     }
-    bool _e61 = local_15;
-    if (!(_e61)) {
-        bool _e65 = airlight_in_series_region(z_s_1);
-        local_16 = !(_e65);
-    } else {
-        local_16 = true;
+    bool _e66 = local_14;
+    if (_e66) {
+        metal::float2 _e73 = airlight_e1_scaled(metal::float2(big_h_5 * v_e_3, -(big_h_5)));
+        far_end = metal::exp(-(big_h_5) * v_e_3) * _e73.y;
     }
-    bool _e68 = local_16;
-    if (_e68) {
-        float _e69 = airlight_moment_zero(half_3);
-        return metal::float2(_e69, x_6);
-    }
-    metal::float2 _e71 = airlight_cos_sin(big_h_4);
-    metal::float2 _e72 = airlight_e1_series(z_s_1);
-    metal::float2 _e77 = airlight_cmul(_e72, metal::float2(_e71.x, -(_e71.y)));
-    float near_end = _e77.y;
-    float v_e_2 = half_3.y_hi;
-    if (!(half_3.dv_infinite)) {
-        bool _e87 = airlight_is_finite(big_h_4 * v_e_2);
-        local_17 = _e87;
-    } else {
-        local_17 = false;
-    }
-    bool _e89 = local_17;
-    if (_e89) {
-        local_18 = (big_h_4 * half_3.dv) < 17.32868;
-    } else {
-        local_18 = false;
-    }
-    bool _e97 = local_18;
-    if (_e97) {
-        metal::float2 _e104 = airlight_e1_scaled(metal::float2(big_h_4 * v_e_2, -(big_h_4)));
-        far_end = metal::exp(-(big_h_4) * v_e_2) * _e104.y;
-    }
-    float _e107 = far_end;
-    return metal::float2(near_end - _e107, x_6 - (big_h_4 * v_s_2));
+    float _e76 = far_end;
+    return metal::float2(near_end - _e76, x_6 - (big_h_5 * v_s_2));
 }
 
 airlight_type_8 airlight_gauss_rule(
@@ -1801,7 +1790,7 @@ float airlight_error_factor(
     airlight_type_2 m_1,
     float floor
 ) {
-    bool local_19 = {};
+    bool local_15 = {};
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
@@ -1812,11 +1801,11 @@ float airlight_error_factor(
     float last = metal::abs(c_3.inner[7]) + metal::abs(c_3.inner[6]);
     float before = metal::abs(c_3.inner[5]) + metal::abs(c_3.inner[4]);
     if (!(!((before > 0.0)))) {
-        local_19 = !((last < before));
+        local_15 = !((last < before));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    bool _e27 = local_19;
+    bool _e27 = local_15;
     if (_e27) {
         return 1.0;
     }
@@ -1910,17 +1899,17 @@ float airlight_transform_noise(
 }
 
 float airlight_factor(
-    AirlightHalf half_4,
+    AirlightHalf half_5,
     float a_4,
     float b_3
 ) {
     float offset = {};
-    offset = a_4 - half_4.y_lo;
-    if (half_4.second) {
-        offset = (half_4.y_hi - b_3) / (b_3 * half_4.y_hi);
+    offset = a_4 - half_5.y_lo;
+    if (half_5.second) {
+        offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_21 = half_4.big_h * _e13;
+    float x_21 = half_5.big_h * _e13;
     return (x_21 > 0.0) ? metal::exp(-(x_21)) : 1.0;
 }
 
@@ -1963,7 +1952,7 @@ AirlightPanel airlight_v_panel(
     AirlightScene s_5,
     AirlightCanonical g_6,
     float sigma_4,
-    AirlightHalf half_5,
+    AirlightHalf half_6,
     float a_5,
     float b_4,
     metal::float3 heights_1,
@@ -1981,7 +1970,7 @@ AirlightPanel airlight_v_panel(
     r_2 = (b_4 - a_5) * 0.5;
     float _e13 = r_2;
     vc = a_5 + _e13;
-    if (half_5.second) {
+    if (half_6.second) {
         r_2 = ((b_4 - a_5) / (a_5 * b_4)) * 0.5;
         float _e24 = r_2;
         vc = (1.0 / b_4) + _e24;
@@ -2009,7 +1998,7 @@ AirlightPanel airlight_v_panel(
             uint _e41 = i_7;
             float _e42 = airlight_node(_e8, _e41);
             float v_6 = _e39 + (_e40 * _e42);
-            metal::float2 _e48 = airlight_integrand_over(s_5, g_6, half_5.second ? -(sigma_4) : sigma_4, v_6);
+            metal::float2 _e48 = airlight_integrand_over(s_5, g_6, half_6.second ? -(sigma_4) : sigma_4, v_6);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_7;
@@ -2028,7 +2017,7 @@ AirlightPanel airlight_v_panel(
     airlight_type_2 _e76 = samples;
     airlight_type_2 _e77 = airlight_legendre(_e76);
     float _e79 = r_2;
-    airlight_type_2 _e81 = airlight_exp_legendre_moments(half_5.big_h * _e79);
+    airlight_type_2 _e81 = airlight_exp_legendre_moments(half_6.big_h * _e79);
     float _e84 = sum_4;
     sum_4 = _e84 + (_e77.inner[0] * _e81.inner[0]);
     float _e89 = sum_4;
@@ -2045,7 +2034,7 @@ AirlightPanel airlight_v_panel(
     sum_4 = _e114 + (_e77.inner[6] * _e81.inner[6]);
     float _e119 = sum_4;
     sum_4 = _e119 + (_e77.inner[7] * _e81.inner[7]);
-    float _e124 = airlight_factor(half_5, a_5, b_4);
+    float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
     float w = _e124 * _e125;
     float mass_4 = w * _e81.inner[0];
@@ -2068,7 +2057,7 @@ AirlightPanel airlight_y_panel(
     AirlightScene s_6,
     AirlightCanonical g_7,
     float sigma_5,
-    AirlightHalf half_6,
+    AirlightHalf half_7,
     float a_6,
     float b_5,
     metal::float3 heights_2,
@@ -2105,7 +2094,7 @@ AirlightPanel airlight_y_panel(
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
             float y_6 = yc_1 + (r_8 * _e29);
-            float weight = metal::exp((-(half_6.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5));
+            float weight = metal::exp((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5));
             float _e41 = airlight_integrand(s_6, g_7, sigma_5, y_6);
             float over_1 = 1.0 / (1.0 + (y_6 * y_6));
             uint _e47 = i_8;
@@ -2126,7 +2115,7 @@ AirlightPanel airlight_y_panel(
     }
     airlight_type_2 _e81 = samples_1;
     airlight_type_2 _e82 = airlight_legendre(_e81);
-    float _e83 = airlight_factor(half_6, a_6, b_5);
+    float _e83 = airlight_factor(half_7, a_6, b_5);
     float w_1 = _e83 * r_8;
     airlight_type_2 _e85 = airlight_zero_terms();
     m_2 = _e85;
@@ -2199,7 +2188,7 @@ AirlightPanel airlight_tail_panel(
     AirlightScene s_7,
     AirlightCanonical g_8,
     float sigma_6,
-    AirlightHalf half_7,
+    AirlightHalf half_8,
     float a_7,
     float b_6
 ) {
@@ -2209,7 +2198,7 @@ AirlightPanel airlight_tail_panel(
     uint i_9 = 0u;
     airlight_type_2 q = {};
     airlight_type_7 s_a = airlight_type_7 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
-    bool local_20 = {};
+    bool local_16 = {};
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = {};
@@ -2326,17 +2315,17 @@ AirlightPanel airlight_tail_panel(
     float _e294 = q.inner[6];
     float _e298 = q.inner[6];
     q = airlight_type_2 {{(_e251 * beta) + _e58.inner[0], (_e256 * alpha) + (_e259 * beta), (_e263 * alpha) + (_e266 * beta), (_e270 * alpha) + (_e273 * beta), (_e277 * alpha) + (_e280 * beta), (_e284 * alpha) + (_e287 * beta), (_e291 * alpha) + (_e294 * beta), _e298 * alpha}};
-    float big_h_5 = half_7.big_h;
-    airlight_type_7 _e303 = airlight_en_scaled(big_h_5 / b_6);
+    float big_h_6 = half_8.big_h;
+    airlight_type_7 _e303 = airlight_en_scaled(big_h_6 / b_6);
     if (a_7 > 0.0) {
-        bool _e321 = airlight_is_finite(big_h_5 / a_7);
-        local_20 = _e321;
+        bool _e321 = airlight_is_finite(big_h_6 / a_7);
+        local_16 = _e321;
     } else {
-        local_20 = false;
+        local_16 = false;
     }
-    bool far_1 = local_20;
+    bool far_1 = local_16;
     if (far_1) {
-        decay = metal::exp(-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6)));
+        decay = metal::exp(-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6)));
     }
     float _e332 = decay;
     if (!((_e332 > 0.000000029802322))) {
@@ -2344,7 +2333,7 @@ AirlightPanel airlight_tail_panel(
     }
     float _e337 = decay;
     if (_e337 > 0.0) {
-        airlight_type_7 _e341 = airlight_en_scaled(big_h_5 / a_7);
+        airlight_type_7 _e341 = airlight_en_scaled(big_h_6 / a_7);
         s_a = _e341;
     }
     if (b_6 > 0.0) {
@@ -2429,7 +2418,7 @@ AirlightPanel airlight_tail_panel(
     float _e525 = ratio_1;
     float _e526 = ab;
     ratio_1 = _e525 * _e526;
-    float _e528 = airlight_factor(half_7, a_7, b_6);
+    float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
     float x_22 = metal::abs(alpha) + metal::abs(beta);
@@ -2532,36 +2521,36 @@ AirlightPanel airlight_panel(
     AirlightScene s_8,
     AirlightCanonical g_9,
     float sigma_7,
-    AirlightHalf half_8,
+    AirlightHalf half_9,
     float a_8,
     float b_7,
     metal::float3 heights_y,
     metal::float3 heights_v,
     metal::float3 steps_4
 ) {
-    bool local_21 = {};
-    bool local_22 = {};
-    if (half_8.second) {
-        local_21 = a_8 <= (b_7 * 0.25);
+    bool local_17 = {};
+    bool local_18 = {};
+    if (half_9.second) {
+        local_17 = a_8 <= (b_7 * 0.25);
     } else {
-        local_21 = false;
+        local_17 = false;
     }
-    bool _e16 = local_21;
+    bool _e16 = local_17;
     if (_e16) {
-        AirlightPanel _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_8, a_8, b_7);
+        AirlightPanel _e17 = airlight_tail_panel(s_8, g_9, sigma_7, half_9, a_8, b_7);
         return _e17;
     }
-    if (half_8.second) {
-        local_22 = (half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT;
+    if (half_9.second) {
+        local_18 = (half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT;
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    bool _e29 = local_22;
+    bool _e29 = local_18;
     if (_e29) {
-        AirlightPanel _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
+        AirlightPanel _e30 = airlight_y_panel(s_8, g_9, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    AirlightPanel _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
+    AirlightPanel _e31 = airlight_v_panel(s_8, g_9, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
@@ -2569,7 +2558,7 @@ float airlight_integrate_piece(
     AirlightScene s_9,
     AirlightCanonical g_10,
     float sigma_8,
-    AirlightHalf half_9,
+    AirlightHalf half_10,
     float lo,
     float hi,
     thread float& f_max_4
@@ -2591,16 +2580,16 @@ float airlight_integrate_piece(
     float mass_3 = {};
     uint worst = {};
     uint i_10 = {};
-    bool local_23 = {};
-    bool local_24 = {};
-    bool local_25 = {};
+    bool local_19 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     float total_1 = 0.0;
     uint i_11 = 0u;
     if (!((hi > lo))) {
         return 0.0;
     }
     metal::float3 _e10 = airlight_singular_heights(s_9, sigma_8);
-    metal::float3 heights_v_1 = half_9.second ? (metal::float3(1.0) / _e10) : _e10;
+    metal::float3 heights_v_1 = half_10.second ? (metal::float3(1.0) / _e10) : _e10;
     metal::float3 _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
@@ -2622,7 +2611,7 @@ float airlight_integrate_piece(
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            AirlightPanel _e66 = airlight_panel(s_9, g_10, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
+            AirlightPanel _e66 = airlight_panel(s_9, g_10, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = metal::max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -2723,25 +2712,25 @@ float airlight_integrate_piece(
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list.inner[metal::min(unsigned(_e160), 7u)].w;
-                        local_23 = !((_e163 > 0.0));
+                        local_19 = !((_e163 > 0.0));
                     } else {
-                        local_23 = true;
+                        local_19 = true;
                     }
-                    bool _e168 = local_23;
+                    bool _e168 = local_19;
                     if (!(_e168)) {
                         uint _e172 = budget;
-                        local_24 = _e172 < 2u;
+                        local_20 = _e172 < 2u;
                     } else {
-                        local_24 = true;
+                        local_20 = true;
                     }
-                    bool _e176 = local_24;
+                    bool _e176 = local_20;
                     if (!(_e176)) {
                         uint _e180 = count;
-                        local_25 = _e180 == AIRLIGHT_PANEL_LIST;
+                        local_21 = _e180 == AIRLIGHT_PANEL_LIST;
                     } else {
-                        local_25 = true;
+                        local_21 = true;
                     }
-                    bool _e184 = local_25;
+                    bool _e184 = local_21;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -2812,7 +2801,7 @@ metal::float2 airlight_crossings(
     float d_c,
     float k_4
 ) {
-    bool local_26 = {};
+    bool local_22 = {};
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
@@ -2822,11 +2811,11 @@ metal::float2 airlight_crossings(
     float scale_1 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         bool _e21 = airlight_is_finite(scale_1);
-        local_26 = !(_e21);
+        local_22 = !(_e21);
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    bool _e24 = local_26;
+    bool _e24 = local_22;
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
@@ -2865,39 +2854,39 @@ float airlight_cosine(
 bool airlight_dark(
     AirlightCanonical g_12,
     float sigma_11,
-    AirlightHalf half_10,
+    AirlightHalf half_11,
     float bound,
     float lo_1,
     float hi_1
 ) {
+    bool local_23 = {};
+    bool local_24 = {};
+    float y1_ = {};
+    bool local_25 = {};
+    bool local_26 = {};
     bool local_27 = {};
     bool local_28 = {};
-    float y1_ = {};
-    bool local_29 = {};
-    bool local_30 = {};
-    bool local_31 = {};
-    bool local_32 = {};
     float _e9 = airlight_cosine(g_12, sigma_11, 0.5 * (lo_1 + hi_1));
     if (!((_e9 < bound))) {
         return false;
     }
-    if (lo_1 == half_10.y_lo) {
+    if (lo_1 == half_11.y_lo) {
         float _e17 = airlight_cosine(g_12, sigma_11, lo_1);
-        local_27 = !((_e17 < bound));
+        local_23 = !((_e17 < bound));
     } else {
-        local_27 = false;
+        local_23 = false;
     }
-    bool _e21 = local_27;
+    bool _e21 = local_23;
     if (_e21) {
         return false;
     }
-    if (hi_1 == half_10.y_hi) {
+    if (hi_1 == half_11.y_hi) {
         float _e27 = airlight_cosine(g_12, sigma_11, hi_1);
-        local_28 = !((_e27 < bound));
+        local_24 = !((_e27 < bound));
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    bool _e31 = local_28;
+    bool _e31 = local_24;
     if (_e31) {
         return false;
     }
@@ -2916,35 +2905,35 @@ bool airlight_dark(
     float _e53 = y1_;
     if (_e53 > lo_1) {
         float _e57 = y1_;
-        local_29 = _e57 < hi_1;
+        local_25 = _e57 < hi_1;
     } else {
-        local_29 = false;
+        local_25 = false;
     }
-    bool _e60 = local_29;
+    bool _e60 = local_25;
     if (_e60) {
         float _e63 = y1_;
         float _e64 = airlight_cosine(g_12, sigma_11, _e63);
-        local_30 = !((_e64 < bound));
+        local_26 = !((_e64 < bound));
     } else {
-        local_30 = false;
+        local_26 = false;
     }
-    bool _e68 = local_30;
+    bool _e68 = local_26;
     if (_e68) {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_31 = y2_2 < hi_1;
+        local_27 = y2_2 < hi_1;
     } else {
-        local_31 = false;
+        local_27 = false;
     }
-    bool _e75 = local_31;
+    bool _e75 = local_27;
     if (_e75) {
         float _e78 = airlight_cosine(g_12, sigma_11, y2_2);
-        local_32 = !((_e78 < bound));
+        local_28 = !((_e78 < bound));
     } else {
-        local_32 = false;
+        local_28 = false;
     }
-    bool _e82 = local_32;
+    bool _e82 = local_28;
     if (_e82) {
         return false;
     }
@@ -2955,7 +2944,7 @@ float airlight_half(
     AirlightScene s_10,
     AirlightCanonical g_13,
     float sigma_12,
-    AirlightHalf half_11,
+    AirlightHalf half_12,
     bool isotropic,
     thread float& f_max_5
 ) {
@@ -2964,19 +2953,19 @@ float airlight_half(
     float k_in = {};
     float k_out = {};
     uint i_12 = 0u;
-    bool local_33 = {};
+    bool local_29 = {};
     uint i_13 = 0u;
     uint j_2 = {};
     float total_2 = 0.0;
     float lo_2 = {};
     uint i_14 = 0u;
     float hi_2 = {};
-    bool local_34 = {};
-    bool local_35 = {};
-    bool local_36 = {};
+    bool local_30 = {};
+    bool local_31 = {};
+    bool local_32 = {};
     if (isotropic) {
         float _e7 = airlight_integrand(s_10, g_13, sigma_12, 0.0);
-        float _e8 = airlight_moment_zero(half_11);
+        float _e8 = airlight_moment_zero(half_12);
         return _e7 * _e8;
     }
     if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -3016,14 +3005,14 @@ float airlight_half(
             {
                 uint _e54 = i_12;
                 float _e56 = cuts.inner[metal::min(unsigned(_e54), 3u)];
-                if (_e56 > half_11.y_lo) {
+                if (_e56 > half_12.y_lo) {
                     uint _e61 = i_12;
                     float _e63 = cuts.inner[metal::min(unsigned(_e61), 3u)];
-                    local_33 = _e63 < half_11.y_hi;
+                    local_29 = _e63 < half_12.y_hi;
                 } else {
-                    local_33 = false;
+                    local_29 = false;
                 }
-                bool _e67 = local_33;
+                bool _e67 = local_29;
                 if (!(_e67)) {
                     uint _e69 = i_12;
                     cuts.inner[metal::min(unsigned(_e69), 3u)] = 2.0;
@@ -3083,7 +3072,7 @@ float airlight_half(
             }
         }
     }
-    lo_2 = half_11.y_lo;
+    lo_2 = half_12.y_lo;
     uint2 loop_bound_23 = uint2(4294967295u);
     bool loop_init_23 = true;
     while(true) {
@@ -3100,16 +3089,16 @@ float airlight_half(
             break;
         }
         {
-            hi_2 = half_11.y_hi;
+            hi_2 = half_12.y_hi;
             uint _e127 = i_14;
             if (_e127 < 4u) {
                 uint _e132 = i_14;
                 float _e134 = cuts.inner[metal::min(unsigned(_e132), 3u)];
-                local_34 = _e134 < 2.0;
+                local_30 = _e134 < 2.0;
             } else {
-                local_34 = false;
+                local_30 = false;
             }
-            bool _e138 = local_34;
+            bool _e138 = local_30;
             if (_e138) {
                 uint _e139 = i_14;
                 float _e141 = cuts.inner[metal::min(unsigned(_e139), 3u)];
@@ -3122,17 +3111,17 @@ float airlight_half(
                     float _e150 = dark_below;
                     float _e151 = lo_2;
                     float _e152 = hi_2;
-                    bool _e153 = airlight_dark(g_13, sigma_12, half_11, _e150, _e151, _e152);
-                    local_35 = _e153;
+                    bool _e153 = airlight_dark(g_13, sigma_12, half_12, _e150, _e151, _e152);
+                    local_31 = _e153;
                 } else {
-                    local_35 = false;
+                    local_31 = false;
                 }
-                bool _e155 = local_35;
+                bool _e155 = local_31;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
                     float _e159 = hi_2;
-                    float _e160 = airlight_integrate_piece(s_10, g_13, sigma_12, half_11, _e158, _e159, f_max_5);
+                    float _e160 = airlight_integrate_piece(s_10, g_13, sigma_12, half_12, _e158, _e159, f_max_5);
                     total_2 = _e157 + _e160;
                 }
                 float _e162 = hi_2;
@@ -3142,11 +3131,11 @@ float airlight_half(
             if (_e163 < 4u) {
                 uint _e168 = i_14;
                 float _e170 = cuts.inner[metal::min(unsigned(_e168), 3u)];
-                local_36 = _e170 >= 2.0;
+                local_32 = _e170 >= 2.0;
             } else {
-                local_36 = false;
+                local_32 = false;
             }
-            bool _e174 = local_36;
+            bool _e174 = local_32;
             if (_e174) {
                 break;
             }
@@ -3178,16 +3167,16 @@ float airlight_on_line(
     AirlightScene s_11,
     AirlightCanonical g_14
 ) {
-    bool local_37 = {};
+    bool local_33 = {};
     float span = {};
     airlight_type_7 e2_ = {};
     float tail = 0.0;
     if (!(g_14.t_hi_infinite)) {
-        local_37 = g_14.x_h > g_14.t_hi;
+        local_33 = g_14.x_h > g_14.t_hi;
     } else {
-        local_37 = false;
+        local_33 = false;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_33;
     if (_e10) {
         float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_14.d_el));
         float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
@@ -3232,29 +3221,29 @@ float airlight_on_line(
 }
 
 float airlight_optical(
-    float big_h,
+    float big_h_1,
     float dv_1,
     bool infinite
 ) {
     bool negligible = {};
-    negligible = (big_h * dv_1) < AIRLIGHT_FLT_EPS;
+    negligible = (big_h_1 * dv_1) < AIRLIGHT_FLT_EPS;
     if (infinite) {
-        negligible = big_h < 0.000000000000014210855;
+        negligible = big_h_1 < 0.000000000000014210855;
     }
     bool _e9 = negligible;
-    return _e9 ? 0.0 : big_h;
+    return _e9 ? 0.0 : big_h_1;
 }
 
 float airlight_whole_line(
     AirlightScene s_12,
     AirlightCanonical g_15,
-    float big_h_1
+    float big_h_2
 ) {
-    float v_e_1 = AIRLIGHT_FLT_MAX;
+    float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_38 = {};
-    bool local_39 = {};
+    bool local_34 = {};
+    bool local_35 = {};
     float x_9 = 0.0;
     float h_3 = g_15.h;
     float a_s = (g_15.x_h - g_15.t_lo) / h_3;
@@ -3263,11 +3252,11 @@ float airlight_whole_line(
     float u_e = (g_15.t_hi - g_15.x_h) / h_3;
     if (!(g_15.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_38 = _e24;
+        local_34 = _e24;
     } else {
-        local_38 = false;
+        local_34 = false;
     }
-    bool _e26 = local_38;
+    bool _e26 = local_34;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
@@ -3275,45 +3264,45 @@ float airlight_whole_line(
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_39 = _e40;
+            local_35 = _e40;
         } else {
-            local_39 = false;
+            local_35 = false;
         }
-        bool _e42 = local_39;
+        bool _e42 = local_35;
         if (_e42) {
-            v_e_1 = v_end;
+            v_e_2 = v_end;
             dv_2 = dv_end;
             infinite_1 = false;
         }
     }
     float _e45 = dv_2;
     bool _e46 = infinite_1;
-    float _e47 = airlight_optical(big_h_1, _e45, _e46);
-    float _e48 = v_e_1;
+    float _e47 = airlight_optical(big_h_2, _e45, _e46);
+    float _e48 = v_e_2;
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_14 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
+    AirlightHalf half_15 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_9 = big_h_1 * _e8;
+        x_9 = big_h_2 * _e8;
     } else {
         if (s_12.sigma_t > 0.0) {
             x_9 = s_12.sigma_t * metal::abs(g_15.x_h - g_15.t_lo);
         }
     }
     float _e66 = x_9;
-    metal::float2 _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    metal::float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_12, g_15, -1.0, 0.0);
     float _e76 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_3, _e67.y, _e73 * _e67.x);
     return _e76;
 }
 
 float airlight_cut_length(
-    float big_h_2,
+    float big_h_3,
     float v_s
 ) {
-    float inv_h = 1.0 / big_h_2;
+    float inv_h = 1.0 / big_h_3;
     float w_2 = v_s + inv_h;
     float r_10 = (1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s));
     float e_1 = 1.0 + metal::log((8.0 * r_10) / (0.000100000005 * 0.0001));
@@ -3324,54 +3313,54 @@ AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_13,
     AirlightCanonical g_16
 ) {
+    bool local_36 = {};
+    bool local_37 = {};
+    bool local_38 = {};
+    bool local_39 = {};
+    float gap_1 = 0.0;
     bool local_40 = {};
     bool local_41 = {};
     bool local_42 = {};
     bool local_43 = {};
-    float gap_1 = 0.0;
     bool local_44 = {};
     bool local_45 = {};
     bool local_46 = {};
     bool local_47 = {};
     bool local_48 = {};
     bool local_49 = {};
-    bool local_50 = {};
-    bool local_51 = {};
-    bool local_52 = {};
-    bool local_53 = {};
     float total_3 = 0.0;
     float f_max_6 = 0.0;
     bool behind_cut = false;
     float t_end = {};
-    bool local_54 = {};
-    AirlightHalf half_12 = {};
-    bool local_55 = {};
-    bool local_56 = {};
-    bool local_57 = {};
+    bool local_50 = {};
+    AirlightHalf half_13 = {};
+    bool local_51 = {};
+    bool local_52 = {};
+    bool local_53 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
+    bool local_54 = {};
+    bool local_55 = {};
+    AirlightHalf half_14 = {};
+    bool local_56 = {};
+    bool local_57 = {};
     bool local_58 = {};
-    bool local_59 = {};
-    AirlightHalf half_13 = {};
-    bool local_60 = {};
-    bool local_61 = {};
-    bool local_62 = {};
     float t0_ = g_16.t_lo;
     float t1_ = g_16.t_hi;
     if (!(g_16.t_hi_infinite)) {
-        local_40 = t1_ > t0_;
+        local_36 = t1_ > t0_;
     } else {
-        local_40 = true;
+        local_36 = true;
     }
-    bool _e10 = local_40;
+    bool _e10 = local_36;
     if (!(!(_e10))) {
-        local_41 = (s_13.sigma_s * s_13.intensity) == 0.0;
+        local_37 = (s_13.sigma_s * s_13.intensity) == 0.0;
     } else {
-        local_41 = true;
+        local_37 = true;
     }
-    bool _e21 = local_41;
+    bool _e21 = local_37;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
@@ -3379,16 +3368,16 @@ AirlightResult airlight_in_scatter_canonical(
     float x_h = g_16.x_h;
     if (t0_ <= x_h) {
         if (!(g_16.t_hi_infinite)) {
-            local_43 = x_h <= t1_;
+            local_39 = x_h <= t1_;
         } else {
-            local_43 = true;
+            local_39 = true;
         }
-        bool _e36 = local_43;
-        local_42 = _e36;
+        bool _e36 = local_39;
+        local_38 = _e36;
     } else {
-        local_42 = false;
+        local_38 = false;
     }
-    bool inside = local_42;
+    bool inside = local_38;
     if (x_h < t0_) {
         gap_1 = t0_ - x_h;
     } else {
@@ -3398,11 +3387,11 @@ AirlightResult airlight_in_scatter_canonical(
     }
     if (!(inside)) {
         float _e48 = gap_1;
-        local_44 = h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_40 = h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_44 = false;
+        local_40 = false;
     }
-    bool _e55 = local_44;
+    bool _e55 = local_40;
     if (_e55) {
         float _e56 = airlight_on_line(s_13, g_16);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
@@ -3410,63 +3399,63 @@ AirlightResult airlight_in_scatter_canonical(
     if (h_4 == 0.0) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    float big_h_6 = s_13.sigma_t * h_4;
+    float big_h_7 = s_13.sigma_t * h_4;
     if (!((s_13.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_13.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_46 = s_13.light_param_a == 0.0;
+            local_42 = s_13.light_param_a == 0.0;
         } else {
-            local_46 = false;
+            local_42 = false;
         }
-        bool _e83 = local_46;
-        local_45 = _e83;
+        bool _e83 = local_42;
+        local_41 = _e83;
     } else {
-        local_45 = true;
+        local_41 = true;
     }
-    bool _e85 = local_45;
+    bool _e85 = local_41;
     if (_e85) {
         if (!((s_13.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_13.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_49 = s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_45 = s_13.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_49 = true;
+                local_45 = true;
             }
-            bool _e104 = local_49;
+            bool _e104 = local_45;
             if (_e104) {
-                local_50 = s_13.phase_param_a == 0.0;
+                local_46 = s_13.phase_param_a == 0.0;
             } else {
-                local_50 = false;
+                local_46 = false;
             }
-            bool _e111 = local_50;
-            local_48 = _e111;
+            bool _e111 = local_46;
+            local_44 = _e111;
         } else {
-            local_48 = true;
+            local_44 = true;
         }
-        bool _e113 = local_48;
-        local_47 = _e113;
+        bool _e113 = local_44;
+        local_43 = _e113;
+    } else {
+        local_43 = false;
+    }
+    bool isotropic_1 = local_43;
+    if (isotropic_1) {
+        local_47 = t0_ < x_h;
     } else {
         local_47 = false;
     }
-    bool isotropic_1 = local_47;
-    if (isotropic_1) {
-        local_51 = t0_ < x_h;
-    } else {
-        local_51 = false;
-    }
-    bool _e120 = local_51;
+    bool _e120 = local_47;
     if (_e120) {
         if (!(g_16.t_hi_infinite)) {
-            local_53 = x_h < t1_;
+            local_49 = x_h < t1_;
         } else {
-            local_53 = true;
+            local_49 = true;
         }
-        bool _e129 = local_53;
-        local_52 = _e129;
+        bool _e129 = local_49;
+        local_48 = _e129;
     } else {
-        local_52 = false;
+        local_48 = false;
     }
-    bool _e131 = local_52;
+    bool _e131 = local_48;
     if (_e131) {
-        float _e132 = airlight_whole_line(s_13, g_16, big_h_6);
+        float _e132 = airlight_whole_line(s_13, g_16, big_h_7);
         return AirlightResult {metal::max(_e132, 0.0), AIRLIGHT_STATUS_OK};
     }
     bool cut = !(isotropic_1);
@@ -3474,11 +3463,11 @@ AirlightResult airlight_in_scatter_canonical(
         float a_s_1 = (x_h - t0_) / h_4;
         t_end = x_h;
         if (!(g_16.t_hi_infinite)) {
-            local_54 = t1_ < x_h;
+            local_50 = t1_ < x_h;
         } else {
-            local_54 = false;
+            local_50 = false;
         }
-        bool _e154 = local_54;
+        bool _e154 = local_50;
         if (_e154) {
             t_end = t1_;
         }
@@ -3490,43 +3479,43 @@ AirlightResult airlight_in_scatter_canonical(
         float _e161 = airlight_bounded(a_e);
         float _e162 = t_end;
         float dy_1 = ((((_e162 - t0_) / h_4) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161;
-        float _e175 = airlight_optical(big_h_6, dy_1, false);
-        half_12 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
+        float _e175 = airlight_optical(big_h_7, dy_1, false);
+        half_13 = AirlightHalf {false, {}, _e175, _e160, _e161, dy_1, dy_1, false};
         if (cut) {
-            float _e182 = half_12.big_h;
-            local_55 = _e182 > 0.0;
+            float _e182 = half_13.big_h;
+            local_51 = _e182 > 0.0;
         } else {
-            local_55 = false;
+            local_51 = false;
         }
-        bool _e186 = local_55;
+        bool _e186 = local_51;
         if (_e186) {
-            float _e188 = half_12.big_h;
+            float _e188 = half_13.big_h;
             float _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                float _e193 = half_12.big_h;
-                half_12 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
+                float _e193 = half_13.big_h;
+                half_13 = AirlightHalf {false, {}, _e193, _e160, _e160 + _e189, _e189, _e189, false};
                 behind_cut = true;
             }
         }
-        AirlightHalf _e199 = half_12;
+        AirlightHalf _e199 = half_13;
         float _e200 = airlight_half(s_13, g_16, -1.0, _e199, isotropic_1, f_max_6);
         float _e201 = total_3;
-        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, big_h_6 * _e158, _e200);
+        float _e205 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, big_h_7 * _e158, _e200);
         total_3 = _e201 + _e205;
     }
     if (!(g_16.t_hi_infinite)) {
-        local_56 = t1_ > x_h;
+        local_52 = t1_ > x_h;
     } else {
-        local_56 = true;
+        local_52 = true;
     }
-    bool _e213 = local_56;
+    bool _e213 = local_52;
     if (_e213) {
         bool _e216 = behind_cut;
-        local_57 = !(_e216);
+        local_53 = !(_e216);
     } else {
-        local_57 = false;
+        local_53 = false;
     }
-    bool _e219 = local_57;
+    bool _e219 = local_53;
     if (_e219) {
         float t_start = metal::max(t0_, x_h);
         float a_s_2 = (t_start - x_h) / h_4;
@@ -3536,22 +3525,22 @@ AirlightResult airlight_in_scatter_canonical(
         float a_e_1 = (t1_ - x_h) / h_4;
         if (!(g_16.t_hi_infinite)) {
             bool _e238 = airlight_is_finite(a_e_1);
-            local_58 = _e238;
+            local_54 = _e238;
         } else {
-            local_58 = false;
+            local_54 = false;
         }
-        bool _e240 = local_58;
+        bool _e240 = local_54;
         if (_e240) {
             float _e241 = airlight_bounded(a_e_1);
             float _e245 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_ - t_start) / h_4) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245)));
             if (_e241 > 0.0) {
                 bool _e255 = airlight_is_finite(dv_end_1);
-                local_59 = _e255;
+                local_55 = _e255;
             } else {
-                local_59 = false;
+                local_55 = false;
             }
-            bool _e257 = local_59;
+            bool _e257 = local_55;
             if (_e257) {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3563,49 +3552,49 @@ AirlightResult airlight_in_scatter_canonical(
         }
         float _e264 = dv_3;
         bool _e265 = infinite_2;
-        float _e266 = airlight_optical(big_h_6, _e264, _e265);
+        float _e266 = airlight_optical(big_h_7, _e264, _e265);
         float _e267 = y_lo;
         float _e268 = dy;
         float _e269 = dv_3;
         bool _e270 = infinite_2;
-        half_13 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
+        half_14 = AirlightHalf {true, {}, _e266, _e267, _e224, _e268, _e269, _e270};
         if (cut) {
-            float _e276 = half_13.big_h;
-            local_60 = _e276 > 0.0;
+            float _e276 = half_14.big_h;
+            local_56 = _e276 > 0.0;
         } else {
-            local_60 = false;
+            local_56 = false;
         }
-        bool _e280 = local_60;
+        bool _e280 = local_56;
         if (_e280) {
-            float _e282 = half_13.big_h;
+            float _e282 = half_14.big_h;
             float _e285 = airlight_cut_length(_e282, 1.0 / _e224);
             bool _e286 = infinite_2;
             if (!(_e286)) {
                 float _e290 = dv_3;
-                local_61 = _e285 < _e290;
+                local_57 = _e285 < _e290;
             } else {
-                local_61 = true;
+                local_57 = true;
             }
-            bool _e293 = local_61;
+            bool _e293 = local_57;
             if (_e293) {
                 float cut_y_lo = _e224 / (1.0 + (_e224 * _e285));
                 if (cut_y_lo > 0.0) {
                     bool _e302 = airlight_is_finite(_e285);
-                    local_62 = _e302;
+                    local_58 = _e302;
                 } else {
-                    local_62 = false;
+                    local_58 = false;
                 }
-                bool _e304 = local_62;
+                bool _e304 = local_58;
                 if (_e304) {
-                    float _e307 = half_13.big_h;
-                    half_13 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
+                    float _e307 = half_14.big_h;
+                    half_14 = AirlightHalf {true, {}, _e307, cut_y_lo, _e224, (_e285 * cut_y_lo) * _e224, _e285, false};
                 }
             }
         }
-        AirlightHalf _e313 = half_13;
+        AirlightHalf _e313 = half_14;
         float _e314 = airlight_half(s_13, g_16, 1.0, _e313, isotropic_1, f_max_6);
         float _e315 = total_3;
-        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (s_13.sigma_t * (t_start - t0_)) + (big_h_6 * _e223), _e314);
+        float _e323 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, (s_13.sigma_t * (t_start - t0_)) + (big_h_7 * _e223), _e314);
         total_3 = _e315 + _e323;
     }
     float _e325 = total_3;
@@ -3615,23 +3604,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_63 = {};
-    bool local_64 = {};
+    bool local_59 = {};
+    bool local_60 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_63 = _e6;
+        local_59 = _e6;
     } else {
-        local_63 = false;
+        local_59 = false;
     }
-    bool _e8 = local_63;
+    bool _e8 = local_59;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_64 = _e12;
+        local_60 = _e12;
     } else {
-        local_64 = false;
+        local_60 = false;
     }
-    bool _e14 = local_64;
+    bool _e14 = local_60;
     return _e14;
 }
 
@@ -3648,15 +3637,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_65 = {};
+    bool local_61 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_65 = _e6;
+        local_61 = _e6;
     } else {
-        local_65 = false;
+        local_61 = false;
     }
-    bool _e8 = local_65;
+    bool _e8 = local_61;
     return _e8;
 }
 
@@ -3671,17 +3660,21 @@ metal::float3 airlight_normalize(
 bool airlight_valid(
     AirlightScene s_14
 ) {
+    bool local_62 = {};
+    bool local_63 = {};
+    bool local_64 = {};
+    bool local_65 = {};
     bool local_66 = {};
     bool local_67 = {};
     bool local_68 = {};
     bool local_69 = {};
     bool local_70 = {};
     bool local_71 = {};
+    bool ok = {};
     bool local_72 = {};
     bool local_73 = {};
     bool local_74 = {};
     bool local_75 = {};
-    bool ok = {};
     bool local_76 = {};
     bool local_77 = {};
     bool local_78 = {};
@@ -3701,105 +3694,101 @@ bool airlight_valid(
     bool local_92 = {};
     bool local_93 = {};
     bool local_94 = {};
-    bool local_95 = {};
-    bool local_96 = {};
-    bool local_97 = {};
-    bool local_98 = {};
     bool _e2 = airlight_vec_finite(s_14.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_14.dir);
-        local_66 = _e6;
+        local_62 = _e6;
+    } else {
+        local_62 = false;
+    }
+    bool _e8 = local_62;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_14.dir);
+        local_63 = _e12;
+    } else {
+        local_63 = false;
+    }
+    bool _e14 = local_63;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_14.t_min);
+        local_64 = _e18;
+    } else {
+        local_64 = false;
+    }
+    bool _e20 = local_64;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_14.light_position);
+        local_65 = _e24;
+    } else {
+        local_65 = false;
+    }
+    bool _e26 = local_65;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_14.intensity);
+        local_66 = _e30;
     } else {
         local_66 = false;
     }
-    bool _e8 = local_66;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_14.dir);
-        local_67 = _e12;
+    bool _e32 = local_66;
+    if (_e32) {
+        local_67 = s_14.intensity >= 0.0;
     } else {
         local_67 = false;
     }
-    bool _e14 = local_67;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_14.t_min);
-        local_68 = _e18;
+    bool _e39 = local_67;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_14.sigma_s);
+        local_68 = _e43;
     } else {
         local_68 = false;
     }
-    bool _e20 = local_68;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_14.light_position);
-        local_69 = _e24;
+    bool _e45 = local_68;
+    if (_e45) {
+        local_69 = s_14.sigma_s >= 0.0;
     } else {
         local_69 = false;
     }
-    bool _e26 = local_69;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_14.intensity);
-        local_70 = _e30;
+    bool _e52 = local_69;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_14.sigma_t);
+        local_70 = _e56;
     } else {
         local_70 = false;
     }
-    bool _e32 = local_70;
-    if (_e32) {
-        local_71 = s_14.intensity >= 0.0;
+    bool _e58 = local_70;
+    if (_e58) {
+        local_71 = s_14.sigma_t >= 0.0;
     } else {
         local_71 = false;
     }
-    bool _e39 = local_71;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_14.sigma_s);
-        local_72 = _e43;
-    } else {
-        local_72 = false;
-    }
-    bool _e45 = local_72;
-    if (_e45) {
-        local_73 = s_14.sigma_s >= 0.0;
-    } else {
-        local_73 = false;
-    }
-    bool _e52 = local_73;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_14.sigma_t);
-        local_74 = _e56;
-    } else {
-        local_74 = false;
-    }
-    bool _e58 = local_74;
-    if (_e58) {
-        local_75 = s_14.sigma_t >= 0.0;
-    } else {
-        local_75 = false;
-    }
-    bool _e65 = local_75;
+    bool _e65 = local_71;
     ok = _e65;
     if ((s_14.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_14.t_max);
-            local_76 = _e76;
+            local_72 = _e76;
         } else {
-            local_76 = false;
+            local_72 = false;
         }
-        bool _e78 = local_76;
+        bool _e78 = local_72;
         if (_e78) {
-            local_77 = s_14.t_min <= s_14.t_max;
+            local_73 = s_14.t_min <= s_14.t_max;
         } else {
-            local_77 = false;
+            local_73 = false;
         }
-        bool _e85 = local_77;
+        bool _e85 = local_73;
         ok = _e85;
     }
     if (s_14.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_14.light_end);
-            local_78 = _e93;
+            local_74 = _e93;
         } else {
-            local_78 = false;
+            local_74 = false;
         }
-        bool _e95 = local_78;
+        bool _e95 = local_74;
         ok = _e95;
     } else {
         if (s_14.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3810,37 +3799,37 @@ bool airlight_valid(
         bool _e103 = ok;
         if (_e103) {
             bool _e107 = airlight_is_finite(s_14.brdf_albedo);
-            local_79 = _e107;
+            local_75 = _e107;
         } else {
-            local_79 = false;
+            local_75 = false;
         }
-        bool _e109 = local_79;
+        bool _e109 = local_75;
         if (_e109) {
-            local_80 = s_14.brdf_albedo >= 0.0;
+            local_76 = s_14.brdf_albedo >= 0.0;
         } else {
-            local_80 = false;
+            local_76 = false;
         }
-        bool _e116 = local_80;
+        bool _e116 = local_76;
         if (_e116) {
-            local_81 = s_14.light_kind == AIRLIGHT_LIGHT_OMNI;
+            local_77 = s_14.light_kind == AIRLIGHT_LIGHT_OMNI;
         } else {
-            local_81 = false;
+            local_77 = false;
         }
-        bool _e123 = local_81;
+        bool _e123 = local_77;
         if (_e123) {
-            local_82 = s_14.light_shape == AIRLIGHT_SHAPE_POINT;
+            local_78 = s_14.light_shape == AIRLIGHT_SHAPE_POINT;
         } else {
-            local_82 = false;
+            local_78 = false;
         }
-        bool _e130 = local_82;
+        bool _e130 = local_78;
         if (_e130) {
             float _e136 = airlight_safe_length(s_14.light_position - s_14.origin);
             bool _e137 = airlight_is_finite(_e136);
-            local_83 = _e137;
+            local_79 = _e137;
         } else {
-            local_83 = false;
+            local_79 = false;
         }
-        bool _e139 = local_83;
+        bool _e139 = local_79;
         ok = _e139;
     } else {
         if (s_14.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3851,72 +3840,72 @@ bool airlight_valid(
         bool _e147 = ok;
         if (_e147) {
             bool _e151 = airlight_vec_finite(s_14.light_axis);
-            local_84 = _e151;
+            local_80 = _e151;
+        } else {
+            local_80 = false;
+        }
+        bool _e153 = local_80;
+        if (_e153) {
+            bool _e157 = airlight_normalisable(s_14.light_axis);
+            local_81 = _e157;
+        } else {
+            local_81 = false;
+        }
+        bool _e159 = local_81;
+        if (_e159) {
+            local_82 = s_14.light_param_a >= 0.0;
+        } else {
+            local_82 = false;
+        }
+        bool _e166 = local_82;
+        if (_e166) {
+            local_83 = s_14.light_param_a <= 1024.0;
+        } else {
+            local_83 = false;
+        }
+        bool _e173 = local_83;
+        if (_e173) {
+            local_84 = metal::fract(s_14.light_param_a * 0.5) == 0.0;
         } else {
             local_84 = false;
         }
-        bool _e153 = local_84;
-        if (_e153) {
-            bool _e157 = airlight_normalisable(s_14.light_axis);
-            local_85 = _e157;
-        } else {
-            local_85 = false;
-        }
-        bool _e159 = local_85;
-        if (_e159) {
-            local_86 = s_14.light_param_a >= 0.0;
-        } else {
-            local_86 = false;
-        }
-        bool _e166 = local_86;
-        if (_e166) {
-            local_87 = s_14.light_param_a <= 1024.0;
-        } else {
-            local_87 = false;
-        }
-        bool _e173 = local_87;
-        if (_e173) {
-            local_88 = metal::fract(s_14.light_param_a * 0.5) == 0.0;
-        } else {
-            local_88 = false;
-        }
-        bool _e183 = local_88;
+        bool _e183 = local_84;
         ok = _e183;
     } else {
         if (s_14.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e187 = ok;
             if (_e187) {
                 bool _e191 = airlight_vec_finite(s_14.light_axis);
-                local_89 = _e191;
+                local_85 = _e191;
+            } else {
+                local_85 = false;
+            }
+            bool _e193 = local_85;
+            if (_e193) {
+                bool _e197 = airlight_normalisable(s_14.light_axis);
+                local_86 = _e197;
+            } else {
+                local_86 = false;
+            }
+            bool _e199 = local_86;
+            if (_e199) {
+                local_87 = s_14.light_param_b < s_14.light_param_a;
+            } else {
+                local_87 = false;
+            }
+            bool _e206 = local_87;
+            if (_e206) {
+                local_88 = s_14.light_param_b >= -1.0;
+            } else {
+                local_88 = false;
+            }
+            bool _e213 = local_88;
+            if (_e213) {
+                local_89 = s_14.light_param_a <= 1.0;
             } else {
                 local_89 = false;
             }
-            bool _e193 = local_89;
-            if (_e193) {
-                bool _e197 = airlight_normalisable(s_14.light_axis);
-                local_90 = _e197;
-            } else {
-                local_90 = false;
-            }
-            bool _e199 = local_90;
-            if (_e199) {
-                local_91 = s_14.light_param_b < s_14.light_param_a;
-            } else {
-                local_91 = false;
-            }
-            bool _e206 = local_91;
-            if (_e206) {
-                local_92 = s_14.light_param_b >= -1.0;
-            } else {
-                local_92 = false;
-            }
-            bool _e213 = local_92;
-            if (_e213) {
-                local_93 = s_14.light_param_a <= 1.0;
-            } else {
-                local_93 = false;
-            }
-            bool _e220 = local_93;
+            bool _e220 = local_89;
             ok = _e220;
         } else {
             if (s_14.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3935,40 +3924,40 @@ bool airlight_valid(
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_94 = g_ok;
+                local_90 = g_ok;
             } else {
-                local_94 = false;
+                local_90 = false;
             }
-            bool _e234 = local_94;
+            bool _e234 = local_90;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_95 = g_ok;
+                local_91 = g_ok;
             } else {
-                local_95 = false;
+                local_91 = false;
             }
-            bool _e239 = local_95;
+            bool _e239 = local_91;
             if (_e239) {
-                local_96 = metal::abs(s_14.phase_param_b) < 1.0;
+                local_92 = metal::abs(s_14.phase_param_b) < 1.0;
             } else {
-                local_96 = false;
+                local_92 = false;
             }
-            bool _e247 = local_96;
+            bool _e247 = local_92;
             if (_e247) {
-                local_97 = s_14.phase_param_c >= 0.0;
+                local_93 = s_14.phase_param_c >= 0.0;
             } else {
-                local_97 = false;
+                local_93 = false;
             }
-            bool _e254 = local_97;
+            bool _e254 = local_93;
             if (_e254) {
-                local_98 = s_14.phase_param_c <= 1.0;
+                local_94 = s_14.phase_param_c <= 1.0;
             } else {
-                local_98 = false;
+                local_94 = false;
             }
-            bool _e261 = local_98;
+            bool _e261 = local_94;
             ok = _e261;
             break;
         }
@@ -4063,21 +4052,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_99 = {};
-    bool local_100 = {};
+    bool local_95 = {};
+    bool local_96 = {};
     float m_8 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_8 == 0.0))) {
         if (m_8 >= 0.0000000009313226) {
-            local_100 = m_8 <= AIRLIGHT_EXACT_RANGE;
+            local_96 = m_8 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_100 = false;
+            local_96 = false;
         }
-        bool _e21 = local_100;
-        local_99 = _e21;
+        bool _e21 = local_96;
+        local_95 = _e21;
     } else {
-        local_99 = true;
+        local_95 = true;
     }
-    bool _e23 = local_99;
+    bool _e23 = local_95;
     return _e23;
 }
 
@@ -4085,9 +4074,9 @@ AirlightCanonical airlight_refined(
     AirlightScene s_16,
     AirlightCanonical plain
 ) {
-    bool local_101 = {};
+    bool local_97 = {};
     AirlightCanonical out_2 = {};
-    bool local_102 = {};
+    bool local_98 = {};
     metal::float3 a_15 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_16.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_16.light_position[0], -(s_16.origin[0]), key_4);
@@ -4099,11 +4088,11 @@ AirlightCanonical airlight_refined(
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_101 = !(_e38);
+        local_97 = !(_e38);
     } else {
-        local_101 = true;
+        local_97 = true;
     }
-    bool _e41 = local_101;
+    bool _e41 = local_97;
     if (_e41) {
         return plain;
     }
@@ -4127,11 +4116,11 @@ AirlightCanonical airlight_refined(
     float h_5 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_5);
     if (_e95) {
-        local_102 = h_5 > 0.0;
+        local_98 = h_5 > 0.0;
     } else {
-        local_102 = false;
+        local_98 = false;
     }
-    bool _e101 = local_102;
+    bool _e101 = local_98;
     if (!(_e101)) {
         return plain;
     }
@@ -4382,23 +4371,23 @@ AirlightOuter airlight_surface(
     AirlightScene s_20
 ) {
     AirlightOuter g_18 = {};
-    bool local_103 = {};
+    bool local_99 = {};
     metal::float3 u = {};
     airlight_type_16 cuts_1 = {};
     uint k_5 = 0u;
     uint i_17 = 0u;
-    bool local_104 = {};
+    bool local_100 = {};
     uint i_18 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_20, AIRLIGHT_SURFACE_PANELS);
     g_18 = _e2;
     metal::float3 to_light_1 = s_20.light_position - s_20.origin;
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_20.intensity == 0.0))) {
-        local_103 = s_20.sigma_s == 0.0;
+        local_99 = s_20.sigma_s == 0.0;
     } else {
-        local_103 = true;
+        local_99 = true;
     }
-    bool _e18 = local_103;
+    bool _e18 = local_99;
     if (_e18) {
         g_18.outcome = 1u;
         AirlightOuter _e21 = g_18;
@@ -4464,11 +4453,11 @@ AirlightOuter airlight_surface(
             if (_e98 > _e102) {
                 uint _e106 = i_17;
                 float _e108 = cuts_1.inner[metal::min(unsigned(_e106), 1u)];
-                local_104 = _e108 < AIRLIGHT_PI;
+                local_100 = _e108 < AIRLIGHT_PI;
             } else {
-                local_104 = false;
+                local_100 = false;
             }
-            bool _e112 = local_104;
+            bool _e112 = local_100;
             if (_e112) {
                 uint _e113 = k_5;
                 k_5 = _e113 + 1u;
@@ -4513,31 +4502,31 @@ AirlightOuter airlight_outer(
     AirlightScene s_21
 ) {
     AirlightOuter g_19 = {};
-    bool local_105 = {};
-    bool local_106 = {};
+    bool local_101 = {};
+    bool local_102 = {};
     float s_star = 0.0;
     float t_star = {};
+    bool local_103 = {};
+    bool local_104 = {};
+    bool local_105 = {};
+    bool local_106 = {};
     bool local_107 = {};
     bool local_108 = {};
+    float scale = 0.0;
     bool local_109 = {};
     bool local_110 = {};
     bool local_111 = {};
     bool local_112 = {};
-    float scale = 0.0;
     bool local_113 = {};
-    bool local_114 = {};
-    bool local_115 = {};
-    bool local_116 = {};
-    bool local_117 = {};
     airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     airlight_type_17 at = {};
     uint i_19 = 0u;
-    bool local_118 = {};
-    bool local_119 = {};
-    bool local_120 = {};
+    bool local_114 = {};
+    bool local_115 = {};
+    bool local_116 = {};
     uint n_1 = 0u;
     uint i_20 = 0u;
-    bool local_121 = {};
+    bool local_117 = {};
     if (s_21.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         AirlightOuter _e4 = airlight_surface(s_21);
         return _e4;
@@ -4551,17 +4540,17 @@ AirlightOuter airlight_outer(
     metal::float3 ab_1 = s_21.light_end - s_21.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_105 = s_21.intensity == 0.0;
+        local_101 = s_21.intensity == 0.0;
     } else {
-        local_105 = true;
+        local_101 = true;
     }
-    bool _e26 = local_105;
+    bool _e26 = local_101;
     if (!(_e26)) {
-        local_106 = s_21.sigma_s == 0.0;
+        local_102 = s_21.sigma_s == 0.0;
     } else {
-        local_106 = true;
+        local_102 = true;
     }
-    bool _e34 = local_106;
+    bool _e34 = local_102;
     if (_e34) {
         g_19.outcome = 1u;
         AirlightOuter _e37 = g_19;
@@ -4585,94 +4574,94 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_4 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_107 = sin_a_1 > 0.0;
+        local_103 = sin_a_1 > 0.0;
     } else {
-        local_107 = false;
+        local_103 = false;
     }
-    bool _e84 = local_107;
+    bool _e84 = local_103;
     if (_e84) {
         float _e87 = s_star;
-        local_108 = _e87 >= 0.0;
+        local_104 = _e87 >= 0.0;
     } else {
-        local_108 = false;
+        local_104 = false;
     }
-    bool _e91 = local_108;
+    bool _e91 = local_104;
     if (_e91) {
         float _e94 = s_star;
-        local_109 = _e94 <= _e15;
+        local_105 = _e94 <= _e15;
     } else {
-        local_109 = false;
+        local_105 = false;
     }
-    bool _e97 = local_109;
+    bool _e97 = local_105;
     if (_e97) {
         float _e101 = t_star;
-        local_110 = s_21.t_min <= _e101;
+        local_106 = s_21.t_min <= _e101;
     } else {
-        local_110 = false;
+        local_106 = false;
     }
-    bool _e104 = local_110;
+    bool _e104 = local_106;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_112 = _e110 <= s_21.t_max;
+            local_108 = _e110 <= s_21.t_max;
         } else {
-            local_112 = true;
+            local_108 = true;
         }
-        bool _e114 = local_112;
-        local_111 = _e114;
+        bool _e114 = local_108;
+        local_107 = _e114;
     } else {
-        local_111 = false;
+        local_107 = false;
     }
-    bool _e116 = local_111;
+    bool _e116 = local_107;
     if (_e116) {
         g_19.outcome = 2u;
         AirlightOuter _e119 = g_19;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_113 = _e73 > 0.0;
+        local_109 = _e73 > 0.0;
     } else {
-        local_113 = false;
+        local_109 = false;
     }
-    bool _e129 = local_113;
+    bool _e129 = local_109;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_114 = _e136 < (_e15 + _e15);
+        local_110 = _e136 < (_e15 + _e15);
     } else {
-        local_114 = false;
+        local_110 = false;
     }
-    bool _e140 = local_114;
+    bool _e140 = local_110;
     if (_e140) {
         float _e143 = scale;
-        local_115 = _e143 < _e15;
+        local_111 = _e143 < _e15;
     } else {
-        local_115 = false;
+        local_111 = false;
     }
-    bool near_3 = local_115;
-    if (near_3) {
+    bool near_1 = local_111;
+    if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_116 = _e154;
+        local_112 = _e154;
     } else {
-        local_116 = false;
+        local_112 = false;
     }
-    bool _e156 = local_116;
+    bool _e156 = local_112;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_117 = _e163;
+        local_113 = _e163;
     } else {
-        local_117 = false;
+        local_113 = false;
     }
-    bool _e165 = local_117;
+    bool _e165 = local_113;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -4701,21 +4690,21 @@ AirlightOuter airlight_outer(
         {
             if (cos_a_2 == 0.0) {
                 uint _e196 = i_19;
-                local_118 = _e196 > 0u;
+                local_114 = _e196 > 0u;
             } else {
-                local_118 = false;
+                local_114 = false;
             }
-            bool _e200 = local_118;
+            bool _e200 = local_114;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_19;
             if (_e201 == 2u) {
-                local_119 = infinite_4;
+                local_115 = infinite_4;
             } else {
-                local_119 = false;
+                local_115 = false;
             }
-            bool _e207 = local_119;
+            bool _e207 = local_115;
             if (_e207) {
                 continue;
             }
@@ -4724,11 +4713,11 @@ AirlightOuter airlight_outer(
             if (_e210 > 0.0) {
                 uint _e215 = i_19;
                 float _e217 = at.inner[metal::min(unsigned(_e215), 2u)];
-                local_120 = _e217 < _e15;
+                local_116 = _e217 < _e15;
             } else {
-                local_120 = false;
+                local_116 = false;
             }
-            bool _e220 = local_120;
+            bool _e220 = local_116;
             if (_e220) {
                 uint _e221 = i_19;
                 AirlightOuter _e223 = g_19;
@@ -4791,11 +4780,11 @@ AirlightOuter airlight_outer(
             if (_e280 > _e284) {
                 uint _e288 = i_20;
                 float _e290 = cuts_2.inner[metal::min(unsigned(_e288), 2u)];
-                local_121 = _e290 < _e265;
+                local_117 = _e290 < _e265;
             } else {
-                local_121 = false;
+                local_117 = false;
             }
-            bool _e293 = local_121;
+            bool _e293 = local_117;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = _e294 + 1u;
@@ -4882,17 +4871,17 @@ AirlightResult airlight_in_scatter(
     float k_6 = {};
     float gauss = {};
     uint j_4 = {};
-    bool local_122 = {};
+    bool local_118 = {};
     float f = {};
     AirlightResult r_5 = {};
-    bool local_123 = {};
-    bool local_124 = {};
-    bool local_125 = {};
+    bool local_119 = {};
+    bool local_120 = {};
+    bool local_121 = {};
     bool split = {};
     uint tries = {};
-    bool local_126 = {};
-    bool local_127 = {};
-    bool local_128 = {};
+    bool local_122 = {};
+    bool local_123 = {};
+    bool local_124 = {};
     bool _e1 = airlight_valid(s_23);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -4954,11 +4943,11 @@ AirlightResult airlight_in_scatter(
                     uint _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         uint _e96 = j_4;
-                        local_122 = _e96 < 6u;
+                        local_118 = _e96 < 6u;
                     } else {
-                        local_122 = false;
+                        local_118 = false;
                     }
-                    bool _e100 = local_122;
+                    bool _e100 = local_118;
                     float w_4 = _e100 ? (c_14 - (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_14 + (hw_1 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
                     AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_4);
                     f = 0.0;
@@ -4968,11 +4957,11 @@ AirlightResult airlight_in_scatter(
                         bool _e114 = airlight_vec_finite(_e102.scene.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(_e102.scene.dir);
-                            local_123 = _e118;
+                            local_119 = _e118;
                         } else {
-                            local_123 = false;
+                            local_119 = false;
                         }
-                        bool _e120 = local_123;
+                        bool _e120 = local_119;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4983,20 +4972,20 @@ AirlightResult airlight_in_scatter(
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_124 = _e132 == AIRLIGHT_STATUS_INFINITE;
+                            local_120 = _e132 == AIRLIGHT_STATUS_INFINITE;
                         } else {
-                            local_124 = true;
+                            local_120 = true;
                         }
-                        bool _e136 = local_124;
+                        bool _e136 = local_120;
                         if (_e136) {
                             return AirlightResult {340282350000000000000000000000000000000.0, 2u};
                         }
                         if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_125 = s_23.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_121 = s_23.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_125 = false;
+                            local_121 = false;
                         }
-                        bool _e149 = local_125;
+                        bool _e149 = local_121;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -5069,18 +5058,18 @@ AirlightResult airlight_in_scatter(
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_126 = _e223 == _e6.max_panels;
+                                local_122 = _e223 == _e6.max_panels;
                             } else {
-                                local_126 = true;
+                                local_122 = true;
                             }
-                            bool _e227 = local_126;
+                            bool _e227 = local_122;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_127 = !(_e231);
+                                local_123 = !(_e231);
                             } else {
-                                local_127 = true;
+                                local_123 = true;
                             }
-                            bool _e234 = local_127;
+                            bool _e234 = local_123;
                             if (_e234) {
                                 break;
                             }
@@ -5090,11 +5079,11 @@ AirlightResult airlight_in_scatter(
                             float wb_1 = _e236.y;
                             float mid_1 = 0.5 * (wa_1 + wb_1);
                             if (mid_1 > wa_1) {
-                                local_128 = mid_1 < wb_1;
+                                local_124 = mid_1 < wb_1;
                             } else {
-                                local_128 = false;
+                                local_124 = false;
                             }
-                            bool _e247 = local_128;
+                            bool _e247 = local_124;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, metal::float4(_e236.xyz, 0.0));
                                 continue;

@@ -1050,6 +1050,39 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
     return _e61;
 }
 
+fn airlight_is_short(half_1: AirlightHalf) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+
+    if !(half_1.dv_infinite) {
+        local_1 = ((half_1.big_h * half_1.dv) <= 1f);
+    } else {
+        local_1 = false;
+    }
+    let short_exp = local_1;
+    if (half_1.dy <= 0.25f) {
+        if !(!(half_1.second)) {
+            local_3 = (half_1.dy <= (half_1.y_lo * 0.5f));
+        } else {
+            local_3 = true;
+        }
+        let _e28 = local_3;
+        local_2 = _e28;
+    } else {
+        local_2 = false;
+    }
+    let short_len = local_2;
+    if short_exp {
+        local_4 = short_len;
+    } else {
+        local_4 = false;
+    }
+    let _e34 = local_4;
+    return _e34;
+}
+
 fn airlight_hypot_one(a_3: f32) -> f32 {
     if (abs(a_3) < 1000000000000000f) {
         return sqrt((1f + (a_3 * a_3)));
@@ -1057,232 +1090,183 @@ fn airlight_hypot_one(a_3: f32) -> f32 {
     return abs(a_3);
 }
 
-fn airlight_q_zero(half_1: AirlightHalf) -> f32 {
-    var v_e: f32;
-    var local_1: bool;
-    var local_2: bool;
-    var local_3: bool;
-    var d_im: f32 = 0f;
-    var d_re: f32 = 0f;
-    var local_4: bool;
-
-    let big_h_3 = half_1.big_h;
-    let v_s_1 = select(half_1.y_lo, (1f / half_1.y_hi), half_1.second);
-    let v_e_infinite = half_1.dv_infinite;
-    v_e = half_1.y_hi;
-    if half_1.second {
-        local_1 = !(v_e_infinite);
-    } else {
-        local_1 = false;
-    }
-    let _e16 = local_1;
-    if _e16 {
-        v_e = (1f / half_1.y_lo);
-    }
-    if !((big_h_3 == 0f)) {
-        if !(v_e_infinite) {
-            let _e28 = v_e;
-            let _e29 = airlight_hypot_one(_e28);
-            local_3 = ((big_h_3 * _e29) <= 1f);
-        } else {
-            local_3 = false;
-        }
-        let _e34 = local_3;
-        local_2 = _e34;
-    } else {
-        local_2 = true;
-    }
-    let near_1 = local_2;
-    if near_1 {
-        if !(v_e_infinite) {
-            let _e43 = v_e;
-            let _e48 = airlight_atan((half_1.dv / (1f + (v_s_1 * _e43))));
-            d_im = _e48;
-            let _e50 = v_e;
-            let x_18 = ((half_1.dv * (v_s_1 + _e50)) / (1f + (v_s_1 * v_s_1)));
-            let _e57 = airlight_is_finite(x_18);
-            if _e57 {
-                let _e58 = airlight_log1p(x_18);
-                d_re = (0.5f * _e58);
-            } else {
-                let _e63 = v_e;
-                let _e68 = airlight_log1p((v_s_1 * v_s_1));
-                d_re = (0.5f * ((log(half_1.dv) + log((v_s_1 + _e63))) - _e68));
-            }
-        } else {
-            let _e74 = airlight_atan((1f / v_s_1));
-            d_im = _e74;
-        }
-        if (big_h_3 == 0f) {
-            let _e77 = d_im;
-            return _e77;
-        }
-        let z_s = vec2<f32>((big_h_3 * v_s_1), -(big_h_3));
-        let _e81 = v_e;
-        let z_e = vec2<f32>((big_h_3 * _e81), -(big_h_3));
-        let _e85 = airlight_ein_divided_difference(z_s, z_e);
-        let _e86 = airlight_cos_sin(big_h_3);
-        let rot = vec2<f32>(_e86.x, -(_e86.y));
-        let _e91 = d_re;
-        let _e92 = d_im;
-        let _e98 = airlight_cmul(rot, (vec2<f32>(_e91, _e92) - (_e85 * (big_h_3 * half_1.dv))));
-        return (_e98.y * exp((big_h_3 * v_s_1)));
-    }
-    let _e106 = airlight_e1_scaled(vec2<f32>((big_h_3 * v_s_1), -(big_h_3)));
-    if !(v_e_infinite) {
-        let _e110 = v_e;
-        let _e112 = airlight_is_finite((big_h_3 * _e110));
-        local_4 = _e112;
-    } else {
-        local_4 = false;
-    }
-    let _e114 = local_4;
-    if _e114 {
-        let decay_1 = exp((-(big_h_3) * half_1.dv));
-        if (decay_1 > 0.000000029802322f) {
-            let _e121 = v_e;
-            let _e125 = airlight_e1_scaled(vec2<f32>((big_h_3 * _e121), -(big_h_3)));
-            return (_e106.y - (_e125.y * decay_1));
-        }
-    }
-    return _e106.y;
-}
-
-fn airlight_moment_zero(half_2: AirlightHalf) -> f32 {
+fn airlight_is_near(big_h: f32, v_e: f32, v_e_infinite: bool) -> bool {
     var local_5: bool;
     var local_6: bool;
+
+    if !((big_h == 0f)) {
+        if !(v_e_infinite) {
+            let _e11 = airlight_hypot_one(v_e);
+            local_6 = ((big_h * _e11) <= 1f);
+        } else {
+            local_6 = false;
+        }
+        let _e16 = local_6;
+        local_5 = _e16;
+    } else {
+        local_5 = true;
+    }
+    let _e18 = local_5;
+    return _e18;
+}
+
+fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
+    var v_e_1: f32;
     var local_7: bool;
+    var d_im: f32 = 0f;
+    var d_re: f32 = 0f;
     var local_8: bool;
 
-    if !((half_2.dy > 0f)) {
-        return 0f;
-    }
-    if !(half_2.dv_infinite) {
-        local_5 = ((half_2.big_h * half_2.dv) <= 1f);
+    let big_h_4 = half_2.big_h;
+    let v_s_1 = select(half_2.y_lo, (1f / half_2.y_hi), half_2.second);
+    let v_e_infinite_1 = half_2.dv_infinite;
+    v_e_1 = half_2.y_hi;
+    if half_2.second {
+        local_7 = !(v_e_infinite_1);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    let short_exp = local_5;
-    if (half_2.dy <= 0.25f) {
-        if !(!(half_2.second)) {
-            local_7 = (half_2.dy <= (half_2.y_lo * 0.5f));
+    let _e16 = local_7;
+    if _e16 {
+        v_e_1 = (1f / half_2.y_lo);
+    }
+    let _e20 = v_e_1;
+    let _e21 = airlight_is_near(big_h_4, _e20, v_e_infinite_1);
+    if _e21 {
+        if !(v_e_infinite_1) {
+            let _e28 = v_e_1;
+            let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
+            d_im = _e33;
+            let _e35 = v_e_1;
+            let x_18 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_18);
+            if _e42 {
+                let _e43 = airlight_log1p(x_18);
+                d_re = (0.5f * _e43);
+            } else {
+                let _e48 = v_e_1;
+                let _e53 = airlight_log1p((v_s_1 * v_s_1));
+                d_re = (0.5f * ((log(half_2.dv) + log((v_s_1 + _e48))) - _e53));
+            }
         } else {
-            local_7 = true;
+            let _e59 = airlight_atan((1f / v_s_1));
+            d_im = _e59;
         }
-        let _e33 = local_7;
-        local_6 = _e33;
-    } else {
-        local_6 = false;
+        if (big_h_4 == 0f) {
+            let _e62 = d_im;
+            return _e62;
+        }
+        let z_s = vec2<f32>((big_h_4 * v_s_1), -(big_h_4));
+        let _e66 = v_e_1;
+        let z_e = vec2<f32>((big_h_4 * _e66), -(big_h_4));
+        let _e70 = airlight_ein_divided_difference(z_s, z_e);
+        let _e71 = airlight_cos_sin(big_h_4);
+        let rot = vec2<f32>(_e71.x, -(_e71.y));
+        let _e76 = d_re;
+        let _e77 = d_im;
+        let _e83 = airlight_cmul(rot, (vec2<f32>(_e76, _e77) - (_e70 * (big_h_4 * half_2.dv))));
+        return (_e83.y * exp((big_h_4 * v_s_1)));
     }
-    let short_len = local_6;
-    if short_exp {
-        local_8 = short_len;
+    let _e91 = airlight_e1_scaled(vec2<f32>((big_h_4 * v_s_1), -(big_h_4)));
+    if !(v_e_infinite_1) {
+        let _e95 = v_e_1;
+        let _e97 = airlight_is_finite((big_h_4 * _e95));
+        local_8 = _e97;
     } else {
         local_8 = false;
     }
-    let _e39 = local_8;
-    if _e39 {
-        let _e40 = airlight_moment_gauss(half_2);
-        return _e40;
+    let _e99 = local_8;
+    if _e99 {
+        let decay_1 = exp((-(big_h_4) * half_2.dv));
+        if (decay_1 > 0.000000029802322f) {
+            let _e106 = v_e_1;
+            let _e110 = airlight_e1_scaled(vec2<f32>((big_h_4 * _e106), -(big_h_4)));
+            return (_e91.y - (_e110.y * decay_1));
+        }
     }
-    let _e41 = airlight_q_zero(half_2);
-    return _e41;
+    return _e91.y;
 }
 
-fn airlight_moment_zero_weighted(half_3: AirlightHalf, x_6: f32) -> vec2<f32> {
+fn airlight_moment_zero(half_3: AirlightHalf) -> f32 {
+    if !((half_3.dy > 0f)) {
+        return 0f;
+    }
+    let _e6 = airlight_is_short(half_3);
+    if _e6 {
+        let _e7 = airlight_moment_gauss(half_3);
+        return _e7;
+    }
+    let _e8 = airlight_q_zero(half_3);
+    return _e8;
+}
+
+fn airlight_moment_zero_weighted(half_4: AirlightHalf, x_6: f32) -> vec2<f32> {
     var local_9: bool;
     var local_10: bool;
     var local_11: bool;
     var local_12: bool;
+    var far_end: f32 = 0f;
     var local_13: bool;
     var local_14: bool;
-    var local_15: bool;
-    var local_16: bool;
-    var far_end: f32 = 0f;
-    var local_17: bool;
-    var local_18: bool;
 
-    let big_h_4 = half_3.big_h;
-    let v_s_2 = half_3.y_lo;
-    let z_s_1 = vec2<f32>((big_h_4 * v_s_2), -(big_h_4));
-    if !(half_3.dv_infinite) {
-        local_9 = ((big_h_4 * half_3.dv) <= 1f);
+    let big_h_5 = half_4.big_h;
+    let v_s_2 = half_4.y_lo;
+    let z_s_1 = vec2<f32>((big_h_5 * v_s_2), -(big_h_5));
+    if !(half_4.second) {
+        local_9 = (half_4.dy > 0f);
     } else {
         local_9 = false;
     }
-    let _e16 = local_9;
-    if _e16 {
-        local_10 = (half_3.dy <= 0.25f);
+    let _e15 = local_9;
+    if _e15 {
+        let _e18 = airlight_is_short(half_4);
+        local_10 = !(_e18);
     } else {
         local_10 = false;
     }
-    let short = local_10;
-    if !((big_h_4 == 0f)) {
-        if !(half_3.dv_infinite) {
-            let _e34 = airlight_hypot_one(half_3.y_hi);
-            local_12 = ((big_h_4 * _e34) <= 1f);
-        } else {
-            local_12 = false;
-        }
-        let _e39 = local_12;
-        local_11 = _e39;
+    let _e21 = local_10;
+    if _e21 {
+        let _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_11 = !(_e26);
     } else {
-        local_11 = true;
+        local_11 = false;
     }
-    let near_2 = local_11;
-    if !(half_3.second) {
-        local_13 = !((half_3.dy > 0f));
+    let far_route = local_11;
+    if !(!(far_route)) {
+        let _e34 = airlight_in_series_region(z_s_1);
+        local_12 = !(_e34);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e51 = local_13;
-    if !(_e51) {
-        local_14 = short;
+    let _e37 = local_12;
+    if _e37 {
+        let _e38 = airlight_moment_zero(half_4);
+        return vec2<f32>(_e38, x_6);
+    }
+    let _e40 = airlight_cos_sin(big_h_5);
+    let _e41 = airlight_e1_series(z_s_1);
+    let _e46 = airlight_cmul(_e41, vec2<f32>(_e40.x, -(_e40.y)));
+    let near_end = _e46.y;
+    let v_e_3 = half_4.y_hi;
+    if !(half_4.dv_infinite) {
+        let _e56 = airlight_is_finite((big_h_5 * v_e_3));
+        local_13 = _e56;
     } else {
-        local_14 = true;
+        local_13 = false;
     }
-    let _e56 = local_14;
-    if !(_e56) {
-        local_15 = near_2;
+    let _e58 = local_13;
+    if _e58 {
+        local_14 = ((big_h_5 * half_4.dv) < 17.32868f);
     } else {
-        local_15 = true;
+        local_14 = false;
     }
-    let _e61 = local_15;
-    if !(_e61) {
-        let _e65 = airlight_in_series_region(z_s_1);
-        local_16 = !(_e65);
-    } else {
-        local_16 = true;
+    let _e66 = local_14;
+    if _e66 {
+        let _e73 = airlight_e1_scaled(vec2<f32>((big_h_5 * v_e_3), -(big_h_5)));
+        far_end = (exp((-(big_h_5) * v_e_3)) * _e73.y);
     }
-    let _e68 = local_16;
-    if _e68 {
-        let _e69 = airlight_moment_zero(half_3);
-        return vec2<f32>(_e69, x_6);
-    }
-    let _e71 = airlight_cos_sin(big_h_4);
-    let _e72 = airlight_e1_series(z_s_1);
-    let _e77 = airlight_cmul(_e72, vec2<f32>(_e71.x, -(_e71.y)));
-    let near_end = _e77.y;
-    let v_e_2 = half_3.y_hi;
-    if !(half_3.dv_infinite) {
-        let _e87 = airlight_is_finite((big_h_4 * v_e_2));
-        local_17 = _e87;
-    } else {
-        local_17 = false;
-    }
-    let _e89 = local_17;
-    if _e89 {
-        local_18 = ((big_h_4 * half_3.dv) < 17.32868f);
-    } else {
-        local_18 = false;
-    }
-    let _e97 = local_18;
-    if _e97 {
-        let _e104 = airlight_e1_scaled(vec2<f32>((big_h_4 * v_e_2), -(big_h_4)));
-        far_end = (exp((-(big_h_4) * v_e_2)) * _e104.y);
-    }
-    let _e107 = far_end;
-    return vec2<f32>((near_end - _e107), (x_6 - (big_h_4 * v_s_2)));
+    let _e76 = far_end;
+    return vec2<f32>((near_end - _e76), (x_6 - (big_h_5 * v_s_2)));
 }
 
 fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
@@ -1681,7 +1665,7 @@ fn airlight_tail_estimate(c_2: array<f32, 8>) -> f32 {
 }
 
 fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) -> f32 {
-    var local_19: bool;
+    var local_15: bool;
     var aliasing: f32 = 0f;
     var c_max: f32 = 0f;
     var aliasing_1: f32 = 1f;
@@ -1693,11 +1677,11 @@ fn airlight_error_factor(c_3: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
     let last = (abs(c_3[7]) + abs(c_3[6]));
     let before = (abs(c_3[5]) + abs(c_3[4]));
     if !(!((before > 0f))) {
-        local_19 = !((last < before));
+        local_15 = !((last < before));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    let _e27 = local_19;
+    let _e27 = local_15;
     if _e27 {
         return 1f;
     }
@@ -1779,15 +1763,15 @@ fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
     return ((0.0000038146973f * mass) * mean_abs);
 }
 
-fn airlight_factor(half_4: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
+fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
     var offset: f32;
 
-    offset = (a_4 - half_4.y_lo);
-    if half_4.second {
-        offset = ((half_4.y_hi - b_3) / (b_3 * half_4.y_hi));
+    offset = (a_4 - half_5.y_lo);
+    if half_5.second {
+        offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_21 = (half_4.big_h * _e13);
+    let x_21 = (half_5.big_h * _e13);
     return select(1f, exp(-(x_21)), (x_21 > 0f));
 }
 
@@ -1815,7 +1799,7 @@ fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_4: f32, r_1
     return (1f / _e34);
 }
 
-fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_5: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
+fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
     var r_2: f32;
     var vc: f32;
     var samples: array<f32, 8>;
@@ -1829,7 +1813,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     r_2 = ((b_4 - a_5) * 0.5f);
     let _e13 = r_2;
     vc = (a_5 + _e13);
-    if half_5.second {
+    if half_6.second {
         r_2 = (((b_4 - a_5) / (a_5 * b_4)) * 0.5f);
         let _e24 = r_2;
         vc = ((1f / b_4) + _e24);
@@ -1848,7 +1832,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e41 = i_7;
             let _e42 = airlight_node(_e8, _e41);
             let v_6 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_5.second), v_6);
+            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_6);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_7;
@@ -1871,7 +1855,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e76 = samples;
     let _e77 = airlight_legendre(_e76);
     let _e79 = r_2;
-    let _e81 = airlight_exp_legendre_moments((half_5.big_h * _e79));
+    let _e81 = airlight_exp_legendre_moments((half_6.big_h * _e79));
     let _e84 = sum_4;
     sum_4 = (_e84 + (_e77[0] * _e81[0]));
     let _e89 = sum_4;
@@ -1888,7 +1872,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     sum_4 = (_e114 + (_e77[6] * _e81[6]));
     let _e119 = sum_4;
     sum_4 = (_e119 + (_e77[7] * _e81[7]));
-    let _e124 = airlight_factor(half_5, a_5, b_4);
+    let _e124 = airlight_factor(half_6, a_5, b_4);
     let _e125 = r_2;
     let w_1 = (_e124 * _e125);
     let mass_4 = (w_1 * _e81[0]);
@@ -1907,7 +1891,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     return _e144;
 }
 
-fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_6: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
+fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
     var samples_1: array<f32, 8>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -1931,7 +1915,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
             let y_6 = (yc_1 + (r_8 * _e29));
-            let weight = exp(((-(half_6.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
+            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
             let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
             let over_1 = (1f / (1f + (y_6 * y_6)));
             let _e47 = i_8;
@@ -1956,7 +1940,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     }
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
-    let _e83 = airlight_factor(half_6, a_6, b_5);
+    let _e83 = airlight_factor(half_7, a_6, b_5);
     let w_2 = (_e83 * r_8);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
@@ -2024,14 +2008,14 @@ fn airlight_legendre_to_monomial(c_5: array<f32, 8>) -> array<f32, 8> {
     return _e123;
 }
 
-fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_7: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 8>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
     var i_9: u32 = 0u;
     var q: array<f32, 8>;
     var s_a: array<f32, 10> = array<f32, 10>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    var local_20: bool;
+    var local_16: bool;
     var decay: f32 = 0f;
     var ab: f32 = 0f;
     var mass_2: f32;
@@ -2144,17 +2128,17 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e294 = q[6];
     let _e298 = q[6];
     q = array<f32, 8>(((_e251 * beta) + _e58[0]), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), ((_e270 * alpha) + (_e273 * beta)), ((_e277 * alpha) + (_e280 * beta)), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), (_e298 * alpha));
-    let big_h_5 = half_7.big_h;
-    let _e303 = airlight_en_scaled((big_h_5 / b_6));
+    let big_h_6 = half_8.big_h;
+    let _e303 = airlight_en_scaled((big_h_6 / b_6));
     if (a_7 > 0f) {
-        let _e321 = airlight_is_finite((big_h_5 / a_7));
-        local_20 = _e321;
+        let _e321 = airlight_is_finite((big_h_6 / a_7));
+        local_16 = _e321;
     } else {
-        local_20 = false;
+        local_16 = false;
     }
-    let far_1 = local_20;
+    let far_1 = local_16;
     if far_1 {
-        decay = exp((-(big_h_5) * ((b_6 - a_7) / (a_7 * b_6))));
+        decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     let _e332 = decay;
     if !((_e332 > 0.000000029802322f)) {
@@ -2162,7 +2146,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     }
     let _e337 = decay;
     if (_e337 > 0f) {
-        let _e341 = airlight_en_scaled((big_h_5 / a_7));
+        let _e341 = airlight_en_scaled((big_h_6 / a_7));
         s_a = _e341;
     }
     if (b_6 > 0f) {
@@ -2247,7 +2231,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e525 = ratio_1;
     let _e526 = ab;
     ratio_1 = (_e525 * _e526);
-    let _e528 = airlight_factor(half_7, a_7, b_6);
+    let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
     let x_22 = (abs(alpha) + abs(beta));
@@ -2346,35 +2330,35 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     return _e702;
 }
 
-fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_8: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
-    var local_21: bool;
-    var local_22: bool;
+fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
+    var local_17: bool;
+    var local_18: bool;
 
-    if half_8.second {
-        local_21 = (a_8 <= (b_7 * 0.25f));
+    if half_9.second {
+        local_17 = (a_8 <= (b_7 * 0.25f));
     } else {
-        local_21 = false;
+        local_17 = false;
     }
-    let _e16 = local_21;
+    let _e16 = local_17;
     if _e16 {
-        let _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_8, a_8, b_7);
+        let _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_9, a_8, b_7);
         return _e17;
     }
-    if half_8.second {
-        local_22 = ((half_8.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+    if half_9.second {
+        local_18 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    let _e29 = local_22;
+    let _e29 = local_18;
     if _e29 {
-        let _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_y, steps_4);
+        let _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    let _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_8, a_8, b_7, heights_v, steps_4);
+    let _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
-fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_9: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_10: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2392,9 +2376,9 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
     var mass_3: f32;
     var worst: u32;
     var i_10: u32;
-    var local_23: bool;
-    var local_24: bool;
-    var local_25: bool;
+    var local_19: bool;
+    var local_20: bool;
+    var local_21: bool;
     var total_1: f32 = 0f;
     var i_11: u32 = 0u;
 
@@ -2402,7 +2386,7 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
         return 0f;
     }
     let _e10 = airlight_singular_heights(s_10, sigma_8);
-    let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_9.second);
+    let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_10.second);
     let _e16 = airlight_singular_steps(s_10);
     a_9 = lo;
     b_8 = hi;
@@ -2415,7 +2399,7 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
         {
             let _e64 = a_9;
             let _e65 = b_8;
-            let _e66 = airlight_panel(s_10, g_12, sigma_8, half_9, _e64, _e65, _e10, heights_v_1, _e16);
+            let _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             let _e67 = (*f_max_4);
             (*f_max_4) = max(_e67, _e66.f_max);
             let _e70 = slot;
@@ -2502,25 +2486,25 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                     if !((_e155 <= goal)) {
                         let _e160 = worst;
                         let _e163 = list[_e160].w;
-                        local_23 = !((_e163 > 0f));
+                        local_19 = !((_e163 > 0f));
                     } else {
-                        local_23 = true;
+                        local_19 = true;
                     }
-                    let _e168 = local_23;
+                    let _e168 = local_19;
                     if !(_e168) {
                         let _e172 = budget;
-                        local_24 = (_e172 < 2u);
+                        local_20 = (_e172 < 2u);
                     } else {
-                        local_24 = true;
+                        local_20 = true;
                     }
-                    let _e176 = local_24;
+                    let _e176 = local_20;
                     if !(_e176) {
                         let _e180 = count;
-                        local_25 = (_e180 == AIRLIGHT_PANEL_LIST);
+                        local_21 = (_e180 == AIRLIGHT_PANEL_LIST);
                     } else {
-                        local_25 = true;
+                        local_21 = true;
                     }
-                    let _e184 = local_25;
+                    let _e184 = local_21;
                     if _e184 {
                         let _e185 = total;
                         return _e185;
@@ -2587,7 +2571,7 @@ fn airlight_bounded(a_10: f32) -> f32 {
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> {
-    var local_26: bool;
+    var local_22: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
@@ -2598,11 +2582,11 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_26 = !(_e21);
+        local_22 = !(_e21);
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    let _e24 = local_26;
+    let _e24 = local_22;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
@@ -2634,36 +2618,36 @@ fn airlight_cosine(g_13: AirlightCanonical, sigma_10: f32, y_3: f32) -> f32 {
     return ((((1f - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1f + y2_1));
 }
 
-fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_10: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
+fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
+    var local_23: bool;
+    var local_24: bool;
+    var y1_: f32;
+    var local_25: bool;
+    var local_26: bool;
     var local_27: bool;
     var local_28: bool;
-    var y1_: f32;
-    var local_29: bool;
-    var local_30: bool;
-    var local_31: bool;
-    var local_32: bool;
 
     let _e9 = airlight_cosine(g_14, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
         return false;
     }
-    if (lo_1 == half_10.y_lo) {
+    if (lo_1 == half_11.y_lo) {
         let _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_27 = !((_e17 < bound));
+        local_23 = !((_e17 < bound));
     } else {
-        local_27 = false;
+        local_23 = false;
     }
-    let _e21 = local_27;
+    let _e21 = local_23;
     if _e21 {
         return false;
     }
-    if (hi_1 == half_10.y_hi) {
+    if (hi_1 == half_11.y_hi) {
         let _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_28 = !((_e27 < bound));
+        local_24 = !((_e27 < bound));
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    let _e31 = local_28;
+    let _e31 = local_24;
     if _e31 {
         return false;
     }
@@ -2682,61 +2666,61 @@ fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_10: AirlightHalf, 
     let _e53 = y1_;
     if (_e53 > lo_1) {
         let _e57 = y1_;
-        local_29 = (_e57 < hi_1);
+        local_25 = (_e57 < hi_1);
     } else {
-        local_29 = false;
+        local_25 = false;
     }
-    let _e60 = local_29;
+    let _e60 = local_25;
     if _e60 {
         let _e63 = y1_;
         let _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_30 = !((_e64 < bound));
+        local_26 = !((_e64 < bound));
     } else {
-        local_30 = false;
+        local_26 = false;
     }
-    let _e68 = local_30;
+    let _e68 = local_26;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_31 = (y2_2 < hi_1);
+        local_27 = (y2_2 < hi_1);
     } else {
-        local_31 = false;
+        local_27 = false;
     }
-    let _e75 = local_31;
+    let _e75 = local_27;
     if _e75 {
         let _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_32 = !((_e78 < bound));
+        local_28 = !((_e78 < bound));
     } else {
-        local_32 = false;
+        local_28 = false;
     }
-    let _e82 = local_32;
+    let _e82 = local_28;
     if _e82 {
         return false;
     }
     return true;
 }
 
-fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, half_11: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, half_12: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
     var i_12: u32 = 0u;
-    var local_33: bool;
+    var local_29: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
     var i_14: u32 = 0u;
     var hi_2: f32;
-    var local_34: bool;
-    var local_35: bool;
-    var local_36: bool;
+    var local_30: bool;
+    var local_31: bool;
+    var local_32: bool;
 
     if isotropic {
         let _e7 = airlight_integrand(s_11, g_15, sigma_12, 0f);
-        let _e8 = airlight_moment_zero(half_11);
+        let _e8 = airlight_moment_zero(half_12);
         return (_e7 * _e8);
     }
     if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -2767,14 +2751,14 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
             {
                 let _e54 = i_12;
                 let _e56 = cuts[_e54];
-                if (_e56 > half_11.y_lo) {
+                if (_e56 > half_12.y_lo) {
                     let _e61 = i_12;
                     let _e63 = cuts[_e61];
-                    local_33 = (_e63 < half_11.y_hi);
+                    local_29 = (_e63 < half_12.y_hi);
                 } else {
-                    local_33 = false;
+                    local_29 = false;
                 }
-                let _e67 = local_33;
+                let _e67 = local_29;
                 if !(_e67) {
                     let _e69 = i_12;
                     cuts[_e69] = 2f;
@@ -2828,7 +2812,7 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
             }
         }
     }
-    lo_2 = half_11.y_lo;
+    lo_2 = half_12.y_lo;
     loop {
         let _e122 = i_14;
         if (_e122 < 5u) {
@@ -2836,16 +2820,16 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
             break;
         }
         {
-            hi_2 = half_11.y_hi;
+            hi_2 = half_12.y_hi;
             let _e127 = i_14;
             if (_e127 < 4u) {
                 let _e132 = i_14;
                 let _e134 = cuts[_e132];
-                local_34 = (_e134 < 2f);
+                local_30 = (_e134 < 2f);
             } else {
-                local_34 = false;
+                local_30 = false;
             }
-            let _e138 = local_34;
+            let _e138 = local_30;
             if _e138 {
                 let _e139 = i_14;
                 let _e141 = cuts[_e139];
@@ -2858,17 +2842,17 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
                     let _e150 = dark_below;
                     let _e151 = lo_2;
                     let _e152 = hi_2;
-                    let _e153 = airlight_dark(g_15, sigma_12, half_11, _e150, _e151, _e152);
-                    local_35 = _e153;
+                    let _e153 = airlight_dark(g_15, sigma_12, half_12, _e150, _e151, _e152);
+                    local_31 = _e153;
                 } else {
-                    local_35 = false;
+                    local_31 = false;
                 }
-                let _e155 = local_35;
+                let _e155 = local_31;
                 if !(_e155) {
                     let _e157 = total_2;
                     let _e158 = lo_2;
                     let _e159 = hi_2;
-                    let _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_11, _e158, _e159, f_max_5);
+                    let _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_12, _e158, _e159, f_max_5);
                     total_2 = (_e157 + _e160);
                 }
                 let _e162 = hi_2;
@@ -2878,11 +2862,11 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
             if (_e163 < 4u) {
                 let _e168 = i_14;
                 let _e170 = cuts[_e168];
-                local_36 = (_e170 >= 2f);
+                local_32 = (_e170 >= 2f);
             } else {
-                local_36 = false;
+                local_32 = false;
             }
-            let _e174 = local_36;
+            let _e174 = local_32;
             if _e174 {
                 break;
             }
@@ -2909,17 +2893,17 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_8: f32, j_3: 
 }
 
 fn airlight_on_line(s_12: AirlightScene, g_16: AirlightCanonical) -> f32 {
-    var local_37: bool;
+    var local_33: bool;
     var span: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
     if !(g_16.t_hi_infinite) {
-        local_37 = (g_16.x_h > g_16.t_hi);
+        local_33 = (g_16.x_h > g_16.t_hi);
     } else {
-        local_37 = false;
+        local_33 = false;
     }
-    let _e10 = local_37;
+    let _e10 = local_33;
     if _e10 {
         let _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
         let _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1f);
@@ -2963,23 +2947,23 @@ fn airlight_on_line(s_12: AirlightScene, g_16: AirlightCanonical) -> f32 {
     return (_e93 - _e116);
 }
 
-fn airlight_optical(big_h: f32, dv_1: f32, infinite: bool) -> f32 {
+fn airlight_optical(big_h_1: f32, dv_1: f32, infinite: bool) -> f32 {
     var negligible: bool;
 
-    negligible = ((big_h * dv_1) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h_1 * dv_1) < AIRLIGHT_FLT_EPS);
     if infinite {
-        negligible = (big_h < 0.000000000000014210855f);
+        negligible = (big_h_1 < 0.000000000000014210855f);
     }
     let _e9 = negligible;
-    return select(big_h, 0f, _e9);
+    return select(big_h_1, 0f, _e9);
 }
 
-fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f32) -> f32 {
-    var v_e_1: f32 = AIRLIGHT_FLT_MAX;
+fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_2: f32) -> f32 {
+    var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_38: bool;
-    var local_39: bool;
+    var local_34: bool;
+    var local_35: bool;
     var x_9: f32 = 0f;
 
     let h_3 = g_17.h;
@@ -2989,11 +2973,11 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
     let u_e = ((g_17.t_hi - g_17.x_h) / h_3);
     if !(g_17.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_38 = _e24;
+        local_34 = _e24;
     } else {
-        local_38 = false;
+        local_34 = false;
     }
-    let _e26 = local_38;
+    let _e26 = local_34;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -3001,42 +2985,42 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_1: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_39 = _e40;
+            local_35 = _e40;
         } else {
-            local_39 = false;
+            local_35 = false;
         }
-        let _e42 = local_39;
+        let _e42 = local_35;
         if _e42 {
-            v_e_1 = v_end;
+            v_e_2 = v_end;
             dv_2 = dv_end;
             infinite_1 = false;
         }
     }
     let _e45 = dv_2;
     let _e46 = infinite_1;
-    let _e47 = airlight_optical(big_h_1, _e45, _e46);
-    let _e48 = v_e_1;
+    let _e47 = airlight_optical(big_h_2, _e45, _e46);
+    let _e48 = v_e_2;
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_14 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_9 = (big_h_1 * _e8);
+        x_9 = (big_h_2 * _e8);
     } else {
         if (s_13.sigma_t > 0f) {
             x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
         }
     }
     let _e66 = x_9;
-    let _e67 = airlight_moment_zero_weighted(half_14, _e66);
+    let _e67 = airlight_moment_zero_weighted(half_15, _e66);
     let _e73 = airlight_integrand(s_13, g_17, -1f, 0f);
     let _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
-fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
-    let inv_h = (1f / big_h_2);
+fn airlight_cut_length(big_h_3: f32, v_s: f32) -> f32 {
+    let inv_h = (1f / big_h_3);
     let w_3 = (v_s + inv_h);
     let r_10 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
     let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
@@ -3044,55 +3028,55 @@ fn airlight_cut_length(big_h_2: f32, v_s: f32) -> f32 {
 }
 
 fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
+    var local_36: bool;
+    var local_37: bool;
+    var local_38: bool;
+    var local_39: bool;
+    var gap_1: f32 = 0f;
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
     var local_43: bool;
-    var gap_1: f32 = 0f;
     var local_44: bool;
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
-    var local_50: bool;
-    var local_51: bool;
-    var local_52: bool;
-    var local_53: bool;
     var total_3: f32 = 0f;
     var f_max_6: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_54: bool;
-    var half_12: AirlightHalf;
-    var local_55: bool;
-    var local_56: bool;
-    var local_57: bool;
+    var local_50: bool;
+    var half_13: AirlightHalf;
+    var local_51: bool;
+    var local_52: bool;
+    var local_53: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
+    var local_54: bool;
+    var local_55: bool;
+    var half_14: AirlightHalf;
+    var local_56: bool;
+    var local_57: bool;
     var local_58: bool;
-    var local_59: bool;
-    var half_13: AirlightHalf;
-    var local_60: bool;
-    var local_61: bool;
-    var local_62: bool;
 
     let t0_ = g_18.t_lo;
     let t1_ = g_18.t_hi;
     if !(g_18.t_hi_infinite) {
-        local_40 = (t1_ > t0_);
+        local_36 = (t1_ > t0_);
     } else {
-        local_40 = true;
+        local_36 = true;
     }
-    let _e10 = local_40;
+    let _e10 = local_36;
     if !(!(_e10)) {
-        local_41 = ((s_14.sigma_s * s_14.intensity) == 0f);
+        local_37 = ((s_14.sigma_s * s_14.intensity) == 0f);
     } else {
-        local_41 = true;
+        local_37 = true;
     }
-    let _e21 = local_41;
+    let _e21 = local_37;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3100,16 +3084,16 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     let x_h = g_18.x_h;
     if (t0_ <= x_h) {
         if !(g_18.t_hi_infinite) {
-            local_43 = (x_h <= t1_);
+            local_39 = (x_h <= t1_);
         } else {
-            local_43 = true;
+            local_39 = true;
         }
-        let _e36 = local_43;
-        local_42 = _e36;
+        let _e36 = local_39;
+        local_38 = _e36;
     } else {
-        local_42 = false;
+        local_38 = false;
     }
-    let inside = local_42;
+    let inside = local_38;
     if (x_h < t0_) {
         gap_1 = (t0_ - x_h);
     } else {
@@ -3119,11 +3103,11 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     }
     if !(inside) {
         let _e48 = gap_1;
-        local_44 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_40 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_44 = false;
+        local_40 = false;
     }
-    let _e55 = local_44;
+    let _e55 = local_40;
     if _e55 {
         let _e56 = airlight_on_line(s_14, g_18);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3131,63 +3115,63 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     if (h_4 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_6 = (s_14.sigma_t * h_4);
+    let big_h_7 = (s_14.sigma_t * h_4);
     if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_46 = (s_14.light_param_a == 0f);
+            local_42 = (s_14.light_param_a == 0f);
         } else {
-            local_46 = false;
+            local_42 = false;
         }
-        let _e83 = local_46;
-        local_45 = _e83;
+        let _e83 = local_42;
+        local_41 = _e83;
     } else {
-        local_45 = true;
+        local_41 = true;
     }
-    let _e85 = local_45;
+    let _e85 = local_41;
     if _e85 {
         if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_45 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_49 = true;
+                local_45 = true;
             }
-            let _e104 = local_49;
+            let _e104 = local_45;
             if _e104 {
-                local_50 = (s_14.phase_param_a == 0f);
+                local_46 = (s_14.phase_param_a == 0f);
             } else {
-                local_50 = false;
+                local_46 = false;
             }
-            let _e111 = local_50;
-            local_48 = _e111;
+            let _e111 = local_46;
+            local_44 = _e111;
         } else {
-            local_48 = true;
+            local_44 = true;
         }
-        let _e113 = local_48;
-        local_47 = _e113;
+        let _e113 = local_44;
+        local_43 = _e113;
+    } else {
+        local_43 = false;
+    }
+    let isotropic_1 = local_43;
+    if isotropic_1 {
+        local_47 = (t0_ < x_h);
     } else {
         local_47 = false;
     }
-    let isotropic_1 = local_47;
-    if isotropic_1 {
-        local_51 = (t0_ < x_h);
-    } else {
-        local_51 = false;
-    }
-    let _e120 = local_51;
+    let _e120 = local_47;
     if _e120 {
         if !(g_18.t_hi_infinite) {
-            local_53 = (x_h < t1_);
+            local_49 = (x_h < t1_);
         } else {
-            local_53 = true;
+            local_49 = true;
         }
-        let _e129 = local_53;
-        local_52 = _e129;
+        let _e129 = local_49;
+        local_48 = _e129;
     } else {
-        local_52 = false;
+        local_48 = false;
     }
-    let _e131 = local_52;
+    let _e131 = local_48;
     if _e131 {
-        let _e132 = airlight_whole_line(s_14, g_18, big_h_6);
+        let _e132 = airlight_whole_line(s_14, g_18, big_h_7);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
     }
     let cut = !(isotropic_1);
@@ -3195,11 +3179,11 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let a_s_1 = ((x_h - t0_) / h_4);
         t_end = x_h;
         if !(g_18.t_hi_infinite) {
-            local_54 = (t1_ < x_h);
+            local_50 = (t1_ < x_h);
         } else {
-            local_54 = false;
+            local_50 = false;
         }
-        let _e154 = local_54;
+        let _e154 = local_50;
         if _e154 {
             t_end = t1_;
         }
@@ -3211,43 +3195,43 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let _e161 = airlight_bounded(a_e);
         let _e162 = t_end;
         let dy_1 = (((((_e162 - t0_) / h_4) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        let _e175 = airlight_optical(big_h_6, dy_1, false);
-        half_12 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        let _e175 = airlight_optical(big_h_7, dy_1, false);
+        half_13 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
         if cut {
-            let _e182 = half_12.big_h;
-            local_55 = (_e182 > 0f);
+            let _e182 = half_13.big_h;
+            local_51 = (_e182 > 0f);
         } else {
-            local_55 = false;
+            local_51 = false;
         }
-        let _e186 = local_55;
+        let _e186 = local_51;
         if _e186 {
-            let _e188 = half_12.big_h;
+            let _e188 = half_13.big_h;
             let _e189 = airlight_cut_length(_e188, _e160);
             if (_e189 < dy_1) {
-                let _e193 = half_12.big_h;
-                half_12 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
+                let _e193 = half_13.big_h;
+                half_13 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
                 behind_cut = true;
             }
         }
-        let _e199 = half_12;
+        let _e199 = half_13;
         let _e200 = airlight_half(s_14, g_18, -1f, _e199, isotropic_1, (&f_max_6));
         let _e201 = total_3;
-        let _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_6 * _e158), _e200);
+        let _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_7 * _e158), _e200);
         total_3 = (_e201 + _e205);
     }
     if !(g_18.t_hi_infinite) {
-        local_56 = (t1_ > x_h);
+        local_52 = (t1_ > x_h);
     } else {
-        local_56 = true;
+        local_52 = true;
     }
-    let _e213 = local_56;
+    let _e213 = local_52;
     if _e213 {
         let _e216 = behind_cut;
-        local_57 = !(_e216);
+        local_53 = !(_e216);
     } else {
-        local_57 = false;
+        local_53 = false;
     }
-    let _e219 = local_57;
+    let _e219 = local_53;
     if _e219 {
         let t_start = max(t0_, x_h);
         let a_s_2 = ((t_start - x_h) / h_4);
@@ -3257,22 +3241,22 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_ - x_h) / h_4);
         if !(g_18.t_hi_infinite) {
             let _e238 = airlight_is_finite(a_e_1);
-            local_58 = _e238;
+            local_54 = _e238;
         } else {
-            local_58 = false;
+            local_54 = false;
         }
-        let _e240 = local_58;
+        let _e240 = local_54;
         if _e240 {
             let _e241 = airlight_bounded(a_e_1);
             let _e245 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_ - t_start) / h_4) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
             if (_e241 > 0f) {
                 let _e255 = airlight_is_finite(dv_end_1);
-                local_59 = _e255;
+                local_55 = _e255;
             } else {
-                local_59 = false;
+                local_55 = false;
             }
-            let _e257 = local_59;
+            let _e257 = local_55;
             if _e257 {
                 y_lo = _e241;
                 dv_3 = dv_end_1;
@@ -3284,49 +3268,49 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
         }
         let _e264 = dv_3;
         let _e265 = infinite_2;
-        let _e266 = airlight_optical(big_h_6, _e264, _e265);
+        let _e266 = airlight_optical(big_h_7, _e264, _e265);
         let _e267 = y_lo;
         let _e268 = dy;
         let _e269 = dv_3;
         let _e270 = infinite_2;
-        half_13 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        half_14 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
         if cut {
-            let _e276 = half_13.big_h;
-            local_60 = (_e276 > 0f);
+            let _e276 = half_14.big_h;
+            local_56 = (_e276 > 0f);
         } else {
-            local_60 = false;
+            local_56 = false;
         }
-        let _e280 = local_60;
+        let _e280 = local_56;
         if _e280 {
-            let _e282 = half_13.big_h;
+            let _e282 = half_14.big_h;
             let _e285 = airlight_cut_length(_e282, (1f / _e224));
             let _e286 = infinite_2;
             if !(_e286) {
                 let _e290 = dv_3;
-                local_61 = (_e285 < _e290);
+                local_57 = (_e285 < _e290);
             } else {
-                local_61 = true;
+                local_57 = true;
             }
-            let _e293 = local_61;
+            let _e293 = local_57;
             if _e293 {
                 let cut_y_lo = (_e224 / (1f + (_e224 * _e285)));
                 if (cut_y_lo > 0f) {
                     let _e302 = airlight_is_finite(_e285);
-                    local_62 = _e302;
+                    local_58 = _e302;
                 } else {
-                    local_62 = false;
+                    local_58 = false;
                 }
-                let _e304 = local_62;
+                let _e304 = local_58;
                 if _e304 {
-                    let _e307 = half_13.big_h;
-                    half_13 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                    let _e307 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
                 }
             }
         }
-        let _e313 = half_13;
+        let _e313 = half_14;
         let _e314 = airlight_half(s_14, g_18, 1f, _e313, isotropic_1, (&f_max_6));
         let _e315 = total_3;
-        let _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_6 * _e223)), _e314);
+        let _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_7 * _e223)), _e314);
         total_3 = (_e315 + _e323);
     }
     let _e325 = total_3;
@@ -3334,24 +3318,24 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_63: bool;
-    var local_64: bool;
+    var local_59: bool;
+    var local_60: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_63 = _e6;
+        local_59 = _e6;
     } else {
-        local_63 = false;
+        local_59 = false;
     }
-    let _e8 = local_63;
+    let _e8 = local_59;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_64 = _e12;
+        local_60 = _e12;
     } else {
-        local_64 = false;
+        local_60 = false;
     }
-    let _e14 = local_64;
+    let _e14 = local_60;
     return _e14;
 }
 
@@ -3364,16 +3348,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_65: bool;
+    var local_61: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_65 = _e6;
+        local_61 = _e6;
     } else {
-        local_65 = false;
+        local_61 = false;
     }
-    let _e8 = local_65;
+    let _e8 = local_61;
     return _e8;
 }
 
@@ -3384,17 +3368,21 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_15: AirlightScene) -> bool {
+    var local_62: bool;
+    var local_63: bool;
+    var local_64: bool;
+    var local_65: bool;
     var local_66: bool;
     var local_67: bool;
     var local_68: bool;
     var local_69: bool;
     var local_70: bool;
     var local_71: bool;
+    var ok: bool;
     var local_72: bool;
     var local_73: bool;
     var local_74: bool;
     var local_75: bool;
-    var ok: bool;
     var local_76: bool;
     var local_77: bool;
     var local_78: bool;
@@ -3414,106 +3402,102 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_92: bool;
     var local_93: bool;
     var local_94: bool;
-    var local_95: bool;
-    var local_96: bool;
-    var local_97: bool;
-    var local_98: bool;
 
     let _e2 = airlight_vec_finite(s_15.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_15.dir);
-        local_66 = _e6;
+        local_62 = _e6;
+    } else {
+        local_62 = false;
+    }
+    let _e8 = local_62;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_15.dir);
+        local_63 = _e12;
+    } else {
+        local_63 = false;
+    }
+    let _e14 = local_63;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_15.t_min);
+        local_64 = _e18;
+    } else {
+        local_64 = false;
+    }
+    let _e20 = local_64;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_15.light_position);
+        local_65 = _e24;
+    } else {
+        local_65 = false;
+    }
+    let _e26 = local_65;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_15.intensity);
+        local_66 = _e30;
     } else {
         local_66 = false;
     }
-    let _e8 = local_66;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_15.dir);
-        local_67 = _e12;
+    let _e32 = local_66;
+    if _e32 {
+        local_67 = (s_15.intensity >= 0f);
     } else {
         local_67 = false;
     }
-    let _e14 = local_67;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_15.t_min);
-        local_68 = _e18;
+    let _e39 = local_67;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_15.sigma_s);
+        local_68 = _e43;
     } else {
         local_68 = false;
     }
-    let _e20 = local_68;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_15.light_position);
-        local_69 = _e24;
+    let _e45 = local_68;
+    if _e45 {
+        local_69 = (s_15.sigma_s >= 0f);
     } else {
         local_69 = false;
     }
-    let _e26 = local_69;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_15.intensity);
-        local_70 = _e30;
+    let _e52 = local_69;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_15.sigma_t);
+        local_70 = _e56;
     } else {
         local_70 = false;
     }
-    let _e32 = local_70;
-    if _e32 {
-        local_71 = (s_15.intensity >= 0f);
+    let _e58 = local_70;
+    if _e58 {
+        local_71 = (s_15.sigma_t >= 0f);
     } else {
         local_71 = false;
     }
-    let _e39 = local_71;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_15.sigma_s);
-        local_72 = _e43;
-    } else {
-        local_72 = false;
-    }
-    let _e45 = local_72;
-    if _e45 {
-        local_73 = (s_15.sigma_s >= 0f);
-    } else {
-        local_73 = false;
-    }
-    let _e52 = local_73;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_15.sigma_t);
-        local_74 = _e56;
-    } else {
-        local_74 = false;
-    }
-    let _e58 = local_74;
-    if _e58 {
-        local_75 = (s_15.sigma_t >= 0f);
-    } else {
-        local_75 = false;
-    }
-    let _e65 = local_75;
+    let _e65 = local_71;
     ok = _e65;
     if ((s_15.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_15.t_max);
-            local_76 = _e76;
+            local_72 = _e76;
         } else {
-            local_76 = false;
+            local_72 = false;
         }
-        let _e78 = local_76;
+        let _e78 = local_72;
         if _e78 {
-            local_77 = (s_15.t_min <= s_15.t_max);
+            local_73 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_77 = false;
+            local_73 = false;
         }
-        let _e85 = local_77;
+        let _e85 = local_73;
         ok = _e85;
     }
     if (s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_15.light_end);
-            local_78 = _e93;
+            local_74 = _e93;
         } else {
-            local_78 = false;
+            local_74 = false;
         }
-        let _e95 = local_78;
+        let _e95 = local_74;
         ok = _e95;
     } else {
         if (s_15.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3524,37 +3508,37 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e103 = ok;
         if _e103 {
             let _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_79 = _e107;
+            local_75 = _e107;
         } else {
-            local_79 = false;
+            local_75 = false;
         }
-        let _e109 = local_79;
+        let _e109 = local_75;
         if _e109 {
-            local_80 = (s_15.brdf_albedo >= 0f);
+            local_76 = (s_15.brdf_albedo >= 0f);
         } else {
-            local_80 = false;
+            local_76 = false;
         }
-        let _e116 = local_80;
+        let _e116 = local_76;
         if _e116 {
-            local_81 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_77 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_81 = false;
+            local_77 = false;
         }
-        let _e123 = local_81;
+        let _e123 = local_77;
         if _e123 {
-            local_82 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_78 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_82 = false;
+            local_78 = false;
         }
-        let _e130 = local_82;
+        let _e130 = local_78;
         if _e130 {
             let _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
             let _e137 = airlight_is_finite(_e136);
-            local_83 = _e137;
+            local_79 = _e137;
         } else {
-            local_83 = false;
+            local_79 = false;
         }
-        let _e139 = local_83;
+        let _e139 = local_79;
         ok = _e139;
     } else {
         if (s_15.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3565,72 +3549,72 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e147 = ok;
         if _e147 {
             let _e151 = airlight_vec_finite(s_15.light_axis);
-            local_84 = _e151;
+            local_80 = _e151;
+        } else {
+            local_80 = false;
+        }
+        let _e153 = local_80;
+        if _e153 {
+            let _e157 = airlight_normalisable(s_15.light_axis);
+            local_81 = _e157;
+        } else {
+            local_81 = false;
+        }
+        let _e159 = local_81;
+        if _e159 {
+            local_82 = (s_15.light_param_a >= 0f);
+        } else {
+            local_82 = false;
+        }
+        let _e166 = local_82;
+        if _e166 {
+            local_83 = (s_15.light_param_a <= 1024f);
+        } else {
+            local_83 = false;
+        }
+        let _e173 = local_83;
+        if _e173 {
+            local_84 = (fract((s_15.light_param_a * 0.5f)) == 0f);
         } else {
             local_84 = false;
         }
-        let _e153 = local_84;
-        if _e153 {
-            let _e157 = airlight_normalisable(s_15.light_axis);
-            local_85 = _e157;
-        } else {
-            local_85 = false;
-        }
-        let _e159 = local_85;
-        if _e159 {
-            local_86 = (s_15.light_param_a >= 0f);
-        } else {
-            local_86 = false;
-        }
-        let _e166 = local_86;
-        if _e166 {
-            local_87 = (s_15.light_param_a <= 1024f);
-        } else {
-            local_87 = false;
-        }
-        let _e173 = local_87;
-        if _e173 {
-            local_88 = (fract((s_15.light_param_a * 0.5f)) == 0f);
-        } else {
-            local_88 = false;
-        }
-        let _e183 = local_88;
+        let _e183 = local_84;
         ok = _e183;
     } else {
         if (s_15.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
                 let _e191 = airlight_vec_finite(s_15.light_axis);
-                local_89 = _e191;
+                local_85 = _e191;
+            } else {
+                local_85 = false;
+            }
+            let _e193 = local_85;
+            if _e193 {
+                let _e197 = airlight_normalisable(s_15.light_axis);
+                local_86 = _e197;
+            } else {
+                local_86 = false;
+            }
+            let _e199 = local_86;
+            if _e199 {
+                local_87 = (s_15.light_param_b < s_15.light_param_a);
+            } else {
+                local_87 = false;
+            }
+            let _e206 = local_87;
+            if _e206 {
+                local_88 = (s_15.light_param_b >= -1f);
+            } else {
+                local_88 = false;
+            }
+            let _e213 = local_88;
+            if _e213 {
+                local_89 = (s_15.light_param_a <= 1f);
             } else {
                 local_89 = false;
             }
-            let _e193 = local_89;
-            if _e193 {
-                let _e197 = airlight_normalisable(s_15.light_axis);
-                local_90 = _e197;
-            } else {
-                local_90 = false;
-            }
-            let _e199 = local_90;
-            if _e199 {
-                local_91 = (s_15.light_param_b < s_15.light_param_a);
-            } else {
-                local_91 = false;
-            }
-            let _e206 = local_91;
-            if _e206 {
-                local_92 = (s_15.light_param_b >= -1f);
-            } else {
-                local_92 = false;
-            }
-            let _e213 = local_92;
-            if _e213 {
-                local_93 = (s_15.light_param_a <= 1f);
-            } else {
-                local_93 = false;
-            }
-            let _e220 = local_93;
+            let _e220 = local_89;
             ok = _e220;
         } else {
             if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3645,39 +3629,39 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e230 = ok;
             if _e230 {
-                local_94 = g_ok;
+                local_90 = g_ok;
             } else {
-                local_94 = false;
+                local_90 = false;
             }
-            let _e234 = local_94;
+            let _e234 = local_90;
             ok = _e234;
         }
         case 5u: {
             let _e235 = ok;
             if _e235 {
-                local_95 = g_ok;
+                local_91 = g_ok;
             } else {
-                local_95 = false;
+                local_91 = false;
             }
-            let _e239 = local_95;
+            let _e239 = local_91;
             if _e239 {
-                local_96 = (abs(s_15.phase_param_b) < 1f);
+                local_92 = (abs(s_15.phase_param_b) < 1f);
             } else {
-                local_96 = false;
+                local_92 = false;
             }
-            let _e247 = local_96;
+            let _e247 = local_92;
             if _e247 {
-                local_97 = (s_15.phase_param_c >= 0f);
+                local_93 = (s_15.phase_param_c >= 0f);
             } else {
-                local_97 = false;
+                local_93 = false;
             }
-            let _e254 = local_97;
+            let _e254 = local_93;
             if _e254 {
-                local_98 = (s_15.phase_param_c <= 1f);
+                local_94 = (s_15.phase_param_c <= 1f);
             } else {
-                local_98 = false;
+                local_94 = false;
             }
-            let _e261 = local_98;
+            let _e261 = local_94;
             ok = _e261;
         }
         default: {
@@ -3748,29 +3732,29 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_99: bool;
-    var local_100: bool;
+    var local_95: bool;
+    var local_96: bool;
 
     let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_8 == 0f)) {
         if (m_8 >= 0.0000000009313226f) {
-            local_100 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+            local_96 = (m_8 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_100 = false;
+            local_96 = false;
         }
-        let _e21 = local_100;
-        local_99 = _e21;
+        let _e21 = local_96;
+        local_95 = _e21;
     } else {
-        local_99 = true;
+        local_95 = true;
     }
-    let _e23 = local_99;
+    let _e23 = local_95;
     return _e23;
 }
 
 fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_101: bool;
+    var local_97: bool;
     var out_2: AirlightCanonical;
-    var local_102: bool;
+    var local_98: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_17.flags > 1u));
@@ -3783,11 +3767,11 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_101 = !(_e38);
+        local_97 = !(_e38);
     } else {
-        local_101 = true;
+        local_97 = true;
     }
-    let _e41 = local_101;
+    let _e41 = local_97;
     if _e41 {
         return plain;
     }
@@ -3811,11 +3795,11 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_5 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_5);
     if _e95 {
-        local_102 = (h_5 > 0f);
+        local_98 = (h_5 > 0f);
     } else {
-        local_102 = false;
+        local_98 = false;
     }
-    let _e101 = local_102;
+    let _e101 = local_98;
     if !(_e101) {
         return plain;
     }
@@ -4035,12 +4019,12 @@ fn airlight_outer_point(s_20: AirlightScene, max_panels: u32) -> AirlightOuter {
 
 fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_103: bool;
+    var local_99: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_6: u32 = 0u;
     var i_17: u32 = 0u;
-    var local_104: bool;
+    var local_100: bool;
     var i_18: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
@@ -4048,11 +4032,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     let to_light_1 = (s_21.light_position - s_21.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_21.intensity == 0f)) {
-        local_103 = (s_21.sigma_s == 0f);
+        local_99 = (s_21.sigma_s == 0f);
     } else {
-        local_103 = true;
+        local_99 = true;
     }
-    let _e18 = local_103;
+    let _e18 = local_99;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4109,11 +4093,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
             if (_e98 > _e102) {
                 let _e106 = i_17;
                 let _e108 = cuts_1[_e106];
-                local_104 = (_e108 < AIRLIGHT_PI);
+                local_100 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_104 = false;
+                local_100 = false;
             }
-            let _e112 = local_104;
+            let _e112 = local_100;
             if _e112 {
                 let _e113 = k_6;
                 k_6 = (_e113 + 1u);
@@ -4155,31 +4139,31 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
 
 fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     var g_21: AirlightOuter;
-    var local_105: bool;
-    var local_106: bool;
+    var local_101: bool;
+    var local_102: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
+    var local_103: bool;
+    var local_104: bool;
+    var local_105: bool;
+    var local_106: bool;
     var local_107: bool;
     var local_108: bool;
+    var scale: f32 = 0f;
     var local_109: bool;
     var local_110: bool;
     var local_111: bool;
     var local_112: bool;
-    var scale: f32 = 0f;
     var local_113: bool;
-    var local_114: bool;
-    var local_115: bool;
-    var local_116: bool;
-    var local_117: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
     var i_19: u32 = 0u;
-    var local_118: bool;
-    var local_119: bool;
-    var local_120: bool;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: bool;
     var n_1: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_121: bool;
+    var local_117: bool;
 
     if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e4 = airlight_surface(s_22);
@@ -4194,17 +4178,17 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_22.light_end - s_22.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_105 = (s_22.intensity == 0f);
+        local_101 = (s_22.intensity == 0f);
     } else {
-        local_105 = true;
+        local_101 = true;
     }
-    let _e26 = local_105;
+    let _e26 = local_101;
     if !(_e26) {
-        local_106 = (s_22.sigma_s == 0f);
+        local_102 = (s_22.sigma_s == 0f);
     } else {
-        local_106 = true;
+        local_102 = true;
     }
-    let _e34 = local_106;
+    let _e34 = local_102;
     if _e34 {
         g_21.outcome = 1u;
         let _e37 = g_21;
@@ -4228,94 +4212,94 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_107 = (sin_a_1 > 0f);
+        local_103 = (sin_a_1 > 0f);
     } else {
-        local_107 = false;
+        local_103 = false;
     }
-    let _e84 = local_107;
+    let _e84 = local_103;
     if _e84 {
         let _e87 = s_star;
-        local_108 = (_e87 >= 0f);
+        local_104 = (_e87 >= 0f);
     } else {
-        local_108 = false;
+        local_104 = false;
     }
-    let _e91 = local_108;
+    let _e91 = local_104;
     if _e91 {
         let _e94 = s_star;
-        local_109 = (_e94 <= _e15);
+        local_105 = (_e94 <= _e15);
     } else {
-        local_109 = false;
+        local_105 = false;
     }
-    let _e97 = local_109;
+    let _e97 = local_105;
     if _e97 {
         let _e101 = t_star;
-        local_110 = (s_22.t_min <= _e101);
+        local_106 = (s_22.t_min <= _e101);
     } else {
-        local_110 = false;
+        local_106 = false;
     }
-    let _e104 = local_110;
+    let _e104 = local_106;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_112 = (_e110 <= s_22.t_max);
+            local_108 = (_e110 <= s_22.t_max);
         } else {
-            local_112 = true;
+            local_108 = true;
         }
-        let _e114 = local_112;
-        local_111 = _e114;
+        let _e114 = local_108;
+        local_107 = _e114;
     } else {
-        local_111 = false;
+        local_107 = false;
     }
-    let _e116 = local_111;
+    let _e116 = local_107;
     if _e116 {
         g_21.outcome = 2u;
         let _e119 = g_21;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_113 = (_e73 > 0f);
+        local_109 = (_e73 > 0f);
     } else {
-        local_113 = false;
+        local_109 = false;
     }
-    let _e129 = local_113;
+    let _e129 = local_109;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_114 = (_e136 < (_e15 + _e15));
+        local_110 = (_e136 < (_e15 + _e15));
     } else {
-        local_114 = false;
+        local_110 = false;
     }
-    let _e140 = local_114;
+    let _e140 = local_110;
     if _e140 {
         let _e143 = scale;
-        local_115 = (_e143 < _e15);
+        local_111 = (_e143 < _e15);
     } else {
-        local_115 = false;
+        local_111 = false;
     }
-    let near_3 = local_115;
-    if near_3 {
+    let near_1 = local_111;
+    if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_116 = _e154;
+        local_112 = _e154;
     } else {
-        local_116 = false;
+        local_112 = false;
     }
-    let _e156 = local_116;
+    let _e156 = local_112;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_117 = _e163;
+        local_113 = _e163;
     } else {
-        local_117 = false;
+        local_113 = false;
     }
-    let _e165 = local_117;
+    let _e165 = local_113;
     if !(_e165) {
         scale = 0f;
     }
@@ -4335,21 +4319,21 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
         {
             if (cos_a_2 == 0f) {
                 let _e196 = i_19;
-                local_118 = (_e196 > 0u);
+                local_114 = (_e196 > 0u);
             } else {
-                local_118 = false;
+                local_114 = false;
             }
-            let _e200 = local_118;
+            let _e200 = local_114;
             if _e200 {
                 continue;
             }
             let _e201 = i_19;
             if (_e201 == 2u) {
-                local_119 = infinite_4;
+                local_115 = infinite_4;
             } else {
-                local_119 = false;
+                local_115 = false;
             }
-            let _e207 = local_119;
+            let _e207 = local_115;
             if _e207 {
                 continue;
             }
@@ -4358,11 +4342,11 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             if (_e210 > 0f) {
                 let _e215 = i_19;
                 let _e217 = at[_e215];
-                local_120 = (_e217 < _e15);
+                local_116 = (_e217 < _e15);
             } else {
-                local_120 = false;
+                local_116 = false;
             }
-            let _e220 = local_120;
+            let _e220 = local_116;
             if _e220 {
                 let _e221 = i_19;
                 let _e223 = g_21;
@@ -4420,11 +4404,11 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             if (_e280 > _e284) {
                 let _e288 = i_20;
                 let _e290 = cuts_2[_e288];
-                local_121 = (_e290 < _e265);
+                local_117 = (_e290 < _e265);
             } else {
-                local_121 = false;
+                local_117 = false;
             }
-            let _e293 = local_121;
+            let _e293 = local_117;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -4510,17 +4494,17 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     var k_7: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_122: bool;
+    var local_118: bool;
     var f: f32;
     var r_5: AirlightResult;
-    var local_123: bool;
-    var local_124: bool;
-    var local_125: bool;
+    var local_119: bool;
+    var local_120: bool;
+    var local_121: bool;
     var split: bool;
     var tries: u32;
-    var local_126: bool;
-    var local_127: bool;
-    var local_128: bool;
+    var local_122: bool;
+    var local_123: bool;
+    var local_124: bool;
 
     let _e1 = airlight_valid(s_24);
     if !(_e1) {
@@ -4565,11 +4549,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                     let _e89 = j_4;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_4;
-                        local_122 = (_e96 < 6u);
+                        local_118 = (_e96 < 6u);
                     } else {
-                        local_122 = false;
+                        local_118 = false;
                     }
-                    let _e100 = local_122;
+                    let _e100 = local_118;
                     let w_5 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
                     let _e102 = airlight_outer_node(s_24, _e6, w_5);
                     f = 0f;
@@ -4579,11 +4563,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
-                            local_123 = _e118;
+                            local_119 = _e118;
                         } else {
-                            local_123 = false;
+                            local_119 = false;
                         }
-                        let _e120 = local_123;
+                        let _e120 = local_119;
                         if _e120 {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
@@ -4594,20 +4578,20 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
                             let _e132 = r_5.status;
-                            local_124 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_120 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_124 = true;
+                            local_120 = true;
                         }
-                        let _e136 = local_124;
+                        let _e136 = local_120;
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
                         if (s_24.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_125 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_121 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_125 = false;
+                            local_121 = false;
                         }
-                        let _e149 = local_125;
+                        let _e149 = local_121;
                         if _e149 {
                             let _e150 = r_5;
                             return _e150;
@@ -4675,18 +4659,18 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let worst_1 = _e212.worst;
                             if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e223 = count_2;
-                                local_126 = (_e223 == _e6.max_panels);
+                                local_122 = (_e223 == _e6.max_panels);
                             } else {
-                                local_126 = true;
+                                local_122 = true;
                             }
-                            let _e227 = local_126;
+                            let _e227 = local_122;
                             if !(_e227) {
                                 let _e231 = airlight_is_finite(total_4);
-                                local_127 = !(_e231);
+                                local_123 = !(_e231);
                             } else {
-                                local_127 = true;
+                                local_123 = true;
                             }
-                            let _e234 = local_127;
+                            let _e234 = local_123;
                             if _e234 {
                                 break;
                             }
@@ -4696,11 +4680,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let wb_1 = _e236.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_128 = (mid_1 < wb_1);
+                                local_124 = (mid_1 < wb_1);
                             } else {
-                                local_128 = false;
+                                local_124 = false;
                             }
-                            let _e247 = local_128;
+                            let _e247 = local_124;
                             if !(_e247) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;

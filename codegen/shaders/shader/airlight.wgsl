@@ -711,6 +711,18 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
     return m;
 }
 
+/// Route 1 applies (integrals.rs `is_short`).
+fn airlight_is_short(half: AirlightHalf) -> bool {
+    let short_exp = !half.dv_infinite && half.big_h * half.dv <= 1.0;
+    let short_len = half.dy <= 0.25 && (!half.second || half.dy <= half.y_lo * 0.5);
+    return short_exp && short_len;
+}
+
+/// Route 2 applies, for the half's largest v_e (integrals.rs `is_near`).
+fn airlight_is_near(big_h: f32, v_e: f32, v_e_infinite: bool) -> bool {
+    return big_h == 0.0 || (!v_e_infinite && big_h * airlight_hypot_one(v_e) <= 1.0);
+}
+
 /// Im Q_0 = m_0 (integrals.rs `q0`, without its real part): routes near and far.
 fn airlight_q_zero(half: AirlightHalf) -> f32 {
     let big_h = half.big_h;
@@ -718,8 +730,7 @@ fn airlight_q_zero(half: AirlightHalf) -> f32 {
     let v_e_infinite = half.dv_infinite;
     var v_e = half.y_hi;
     if (half.second && !v_e_infinite) { v_e = 1.0 / half.y_lo; }
-    let near = big_h == 0.0 || (!v_e_infinite && big_h * airlight_hypot_one(v_e) <= 1.0);
-    if (near) {
+    if (airlight_is_near(big_h, v_e, v_e_infinite)) {
         var d_im = 0.0;
         var d_re = 0.0;
         if (!v_e_infinite) {
@@ -758,9 +769,7 @@ fn airlight_q_zero(half: AirlightHalf) -> f32 {
 /// The moment m_0 of a half (integrals.rs `moments` with count 1).
 fn airlight_moment_zero(half: AirlightHalf) -> f32 {
     if (!(half.dy > 0.0)) { return 0.0; }
-    let short_exp = !half.dv_infinite && half.big_h * half.dv <= 1.0;
-    let short_len = half.dy <= 0.25 && (!half.second || half.dy <= half.y_lo * 0.5);
-    if (short_exp && short_len) { return airlight_moment_gauss(half); }
+    if (airlight_is_short(half)) { return airlight_moment_gauss(half); }
     return airlight_q_zero(half);
 }
 
@@ -772,9 +781,8 @@ fn airlight_moment_zero_weighted(half: AirlightHalf, x: f32) -> vec2<f32> {
     let big_h = half.big_h;
     let v_s = half.y_lo;
     let z_s = vec2<f32>(big_h * v_s, -big_h);
-    let short = !half.dv_infinite && big_h * half.dv <= 1.0 && half.dy <= 0.25;
-    let near = big_h == 0.0 || (!half.dv_infinite && big_h * airlight_hypot_one(half.y_hi) <= 1.0);
-    if (half.second || !(half.dy > 0.0) || short || near || !airlight_in_series_region(z_s)) {
+    let far_route = !half.second && half.dy > 0.0 && !airlight_is_short(half) && !airlight_is_near(big_h, half.y_hi, half.dv_infinite);
+    if (!far_route || !airlight_in_series_region(z_s)) {
         return vec2<f32>(airlight_moment_zero(half), x);
     }
     let cs = airlight_cos_sin(big_h);

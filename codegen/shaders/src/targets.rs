@@ -197,6 +197,8 @@ impl Constants {
             spot.polynomial_degree().expect("a spot cone is a polynomial between its kinks")
         };
         let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS);
+        // the weight at or below which the isotropic moment leaves its far end out (f32's ε/4)
+        let far_end = airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64;
         let fills = vec![
             ("@TERMS@", terms.to_string()),
             ("@HALF_TERMS@", (terms / 2).to_string()),
@@ -232,8 +234,8 @@ impl Constants {
             ("@E1_CF_MAX_DEPTH@", depth.iter().chain(en_depth).map(|d| d.1).max().unwrap_or(0).to_string()),
             ("@E1_CF_DEPTH_SQUARED@", chain(depth, true)),
             ("@EN_CF_DEPTH@", chain(en_depth, false)),
-            ("@FAR_END_NEGLIGIBLE@", f(airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64)),
-            ("@FAR_END_EXPONENT@", f(-(airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64).ln())),
+            ("@FAR_END_NEGLIGIBLE@", f(far_end)),
+            ("@FAR_END_EXPONENT@", f(-far_end.ln())),
             ("@SHORT_NODES@", short.len().to_string()),
             ("@SHORT_RULE@", list(short)),
             ("@MAX_POWER@", max_power.to_string()),
