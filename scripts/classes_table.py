@@ -24,10 +24,13 @@ ratio = lambda x, y: "–" if x is None or y is None else f"{x / y:.2f}×"
 
 
 def rung(p):
-    """The peer's rung: nodes per part, with its composition when it has several panels; an
-    unreached rung is the ladder's last, and the true peer at that error costs more."""
+    """The peer's rung: nodes per part, with its composition when it has several panels, and
+    "plain" for one panel over the whole segment (not split at the foot); an unreached rung is
+    the ladder's last, and the true peer at that error costs more."""
     total = p["nodes"] * p["panels"]
     name = f"{total}" if p["panels"] == 1 else f"{total} ({p['panels']}×{p['nodes']})"
+    if not p.get("split", True):
+        name += " plain"
     return name if p["reached"] else f"{name}, not reached"
 
 

@@ -4,19 +4,21 @@
 //!
 //! Accuracy first, outside the timed loops, against the references: the error of a method on a
 //! class is the **largest** over its scenes of `|x − exact| / max(|exact|, τ·scale)` (`τ` =
-//! 1e-10 in f64, 1e-4 in f32). The peer (split at the foot, cut where the extinction exponent
-//! has grown by 40 in f64, 20 in f32) climbs a ladder of rules: one panel of 4 … 64 nodes, then
-//! composite rules of 16- or 64-node panels up to 4096 nodes per part (`PEER_LADDER`); a
-//! comparison "at error e" takes the cheapest rung whose largest error is at most `e` (where
-//! none is, the last rung, flagged: the peer's true cost there is higher). Then, per class and
+//! 1e-10 in f64, 1e-4 in f32). The peer (cut where the extinction exponent has grown by 40 in
+//! f64, 20 in f32) climbs a ladder of rules: one panel of 4 … 64 nodes over the whole segment
+//! ("plain"), the same split at the foot, then composite rules of 16- or 64-node panels up to
+//! 4096 nodes per part, split (`PEER_LADDER`); a comparison "at error e" takes, of the rungs
+//! whose largest error is at most `e`, the one with the fewest integrand evaluations over the
+//! class (where none is, the last rung, flagged: the peer's true cost there is higher). Then,
+//! per class and
 //! precision, timed over all the class's scenes per iteration:
 //! * `airlight`: `Scene::in_scatter()` (the default), and `peer_default`: the peer at the
 //!   default's largest error;
 //! * at each error level of the targets (`LEVELS`: 1e-8 and 1e-10 in f64, 1e-3 and 1e-4 in
 //!   f32), `airlight_<level>`: the kernel with the loosest tolerance (1e-1 … 1e-12) whose largest
 //!   error is at most the level (where none is, the default, flagged), and `peer_<level>`. Both
-//!   sides are chosen knowing the class's errors: the peer's cheapest rung is 4 nodes a part,
-//!   the kernel's cheapest setting tolerance 1e-1 (one panel a piece where the first estimate
+//!   sides are chosen knowing the class's errors: the peer's cheapest rung is one plain 4-node
+//!   panel, the kernel's cheapest setting tolerance 1e-1 (one panel a piece where the first estimate
 //!   passes).
 //! Also `node_count_<precision>`: every scene of every class at the default tolerance with 6 … 16
 //! Gauss–Legendre nodes per panel (the choice of `Real::PANEL_NODES`), and `special`: complex
@@ -45,31 +47,45 @@ struct Class<T: Real> {
     scale: Vec<f64>,
 }
 
-/// The peer's rungs as (nodes per panel, panels per part), in order of cost.
-const PEER_LADDER: [(usize, usize); 23] = [
-    (4, 1),
-    (6, 1),
-    (8, 1),
-    (10, 1),
-    (12, 1),
-    (16, 1),
-    (20, 1),
-    (24, 1),
-    (32, 1),
-    (48, 1),
-    (64, 1),
-    (16, 8),
-    (64, 2),
-    (16, 16),
-    (64, 4),
-    (16, 32),
-    (64, 8),
-    (16, 64),
-    (64, 16),
-    (16, 128),
-    (64, 32),
-    (16, 256),
-    (64, 64),
+/// The peer's rungs as (nodes per panel, panels per part, split at the foot): one panel of 4 …
+/// 64 nodes over the whole segment ("plain"), the same split at the foot, then composite rules
+/// of the split form. A comparison takes the rung with the fewest integrand evaluations over
+/// the class among those reaching the error ([`peer_at`]).
+const PEER_LADDER: [(usize, usize, bool); 34] = [
+    (4, 1, false),
+    (6, 1, false),
+    (8, 1, false),
+    (10, 1, false),
+    (12, 1, false),
+    (16, 1, false),
+    (20, 1, false),
+    (24, 1, false),
+    (32, 1, false),
+    (48, 1, false),
+    (64, 1, false),
+    (4, 1, true),
+    (6, 1, true),
+    (8, 1, true),
+    (10, 1, true),
+    (12, 1, true),
+    (16, 1, true),
+    (20, 1, true),
+    (24, 1, true),
+    (32, 1, true),
+    (48, 1, true),
+    (64, 1, true),
+    (16, 8, true),
+    (64, 2, true),
+    (16, 16, true),
+    (64, 4, true),
+    (16, 32, true),
+    (64, 8, true),
+    (16, 64, true),
+    (64, 16, true),
+    (16, 128, true),
+    (64, 32, true),
+    (16, 256, true),
+    (64, 64, true),
 ];
 const TOLERANCES: [f64; 12] = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
 
@@ -112,27 +128,27 @@ fn largest_error<T: Real>(c: &Class<T>, f: impl Fn(&S<T>) -> T) -> f64 {
     c.scenes.iter().enumerate().map(|(i, s)| (f(s).to_f64_exact() - c.exact[i]).abs() / c.exact[i].abs().max(t * c.scale[i])).fold(0.0, f64::max)
 }
 
-fn peer<T: Real>((nodes, panels): (usize, usize)) -> GaussAngle<T> {
+fn peer<T: Real>((nodes, panels, split): (usize, usize, bool)) -> GaussAngle<T> {
     let cut = if T::epsilon() > T::lit(1e-10) { 20.0 } else { 40.0 };
-    GaussAngle { nodes, panels, split: true, cut: Some(T::lit(cut)) }
+    GaussAngle { nodes, panels, split, cut: Some(T::lit(cut)) }
 }
 
 fn ours<T: Real>(s: &S<T>, control: Control<T>) -> T {
     s.in_scatter_controlled(control).0
 }
 
-/// The cheapest peer rung at most `e` off over the class (or the last rung), its error, and
-/// whether it reached `e`.
-fn peer_at(errors: &[f64], e: f64) -> (usize, f64, bool) {
-    match errors.iter().position(|&x| x <= e) {
+/// The peer rung at most `e` off over the class with the fewest integrand evaluations (or, where
+/// none is, the last rung), its error, and whether it reached `e`.
+fn peer_at(errors: &[f64], evaluations: &[usize], e: f64) -> (usize, f64, bool) {
+    match (0..errors.len()).filter(|&i| errors[i] <= e).min_by_key(|&i| evaluations[i]) {
         Some(i) => (i, errors[i], true),
         None => (errors.len() - 1, errors[errors.len() - 1], false),
     }
 }
 
 fn json_rung(i: usize, e: f64, reached: bool) -> String {
-    let (n, p) = PEER_LADDER[i];
-    format!("{{\"nodes\":{n},\"panels\":{p},\"error\":{e:e},\"reached\":{reached}}}")
+    let (n, p, split) = PEER_LADDER[i];
+    format!("{{\"nodes\":{n},\"panels\":{p},\"split\":{split},\"error\":{e:e},\"reached\":{reached}}}")
 }
 
 fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
@@ -141,7 +157,8 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
         let mut panels: Vec<usize> = class.scenes.iter().map(|s| s.in_scatter_controlled(default_control()).1).collect();
         panels.sort();
         let peer_errs: Vec<f64> = PEER_LADDER.iter().map(|&r| largest_error(&class, |s| s.gauss_angle(peer(r)).0)).collect();
-        let (peer_default, e, reached) = peer_at(&peer_errs, ours_err);
+        let peer_evals: Vec<usize> = PEER_LADDER.iter().map(|&r| class.scenes.iter().map(|s| s.gauss_angle(peer(r)).1).sum()).collect();
+        let (peer_default, e, reached) = peer_at(&peer_errs, &peer_evals, ours_err);
         let mut line = format!(
             "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"scenes\":{},\"airlight\":{ours_err:e},\"panels_median\":{},\"panels_max\":{},\"peer_default\":{},\"levels\":[",
             class.scenes.len(),
@@ -155,7 +172,7 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
             let tol = TOLERANCES.iter().copied().find(|&t| largest_error(&class, |s| ours(s, at(t))) <= level);
             let control = tol.map_or(default_control(), at);
             let err = largest_error(&class, |s| ours(s, control));
-            let (rung, e, reached) = peer_at(&peer_errs, level);
+            let (rung, e, reached) = peer_at(&peer_errs, &peer_evals, level);
             write!(
                 line,
                 "{}{{\"level\":{level:e},\"tolerance\":{},\"airlight\":{err:e},\"peer\":{}}}",
