@@ -5,17 +5,20 @@
 //
 // With t − x_h = h·tan θ, dt/r² = dθ/h:
 //   L_m = (σs I / h) ∫ e^{−σt (x_h − t0 + h (tan θ + sec θ))} D(d_el sin θ + d_c cos θ) P(−sin θ) dθ
-// over [atan u0, atan u1] (π/2 for an infinite ray), split at the foot θ = 0 and cut where the
-// exponent has grown by CUT from its start (tan(θ/2 + π/4) − tan(θ0/2 + π/4) = CUT/(σt h)),
-// NODES Gauss–Legendre nodes per part, with the shader language's own atan, sin, cos and exp,
-// as a user would write it. The canonical reduction is the library's plain one.
+// over [atan u0, atan u1] (π/2 for an infinite ray), split at the foot θ = 0 (SPLIT; without it
+// one part, "plain") and cut where the exponent has grown by CUT from its start
+// (tan(θ/2 + π/4) − tan(θ0/2 + π/4) = CUT/(σt h)), NODES Gauss–Legendre nodes per part, with the
+// shader language's own atan, sin, cos and exp, as a user would write it. The canonical
+// reduction is the library's plain one.
 //
 // The benchmark puts this between the include library (shaders-out/wgsl/airlight_lib_4.wgsl,
 // for the record structs, `airlight_canonical`, `airlight_light` and `airlight_phase_mu`) and
-// the shared entry point (baseline_entry.wgsl), and replaces the two lines below: NODES, and RULE with the kernel's own rule of that many nodes
-// (`airlight::expansion::gauss_table`, (x, w) for x > 0).
+// the shared entry point (baseline_entry.wgsl), and replaces the three lines below: NODES, RULE
+// with the kernel's own rule of that many nodes (`airlight::expansion::gauss_table`, (x, w) for
+// x > 0), and SPLIT.
 
 const NODES: u32 = 8u;
+const SPLIT: bool = true;
 const RULE = array<vec2<f32>, 4>(vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0));
 const CUT: f32 = 20.0;
 const HALF_PI: f32 = 1.5707963267948966;
@@ -50,7 +53,7 @@ fn baseline_in_scatter(s: AirlightScene) -> AirlightResult {
         th1 = min(th1, 2.0 * atan(y0 + CUT / big_h) - HALF_PI);
     }
     var sum = 0.0;
-    if (th0 < 0.0 && th1 > 0.0) {
+    if (SPLIT && th0 < 0.0 && th1 > 0.0) {
         sum = ga_part(s, g, th0, 0.0) + ga_part(s, g, 0.0, th1);
     } else if (th1 > th0) {
         sum = ga_part(s, g, th0, th1);

@@ -4,8 +4,8 @@
 //! machines without a GPU):
 //!
 //! * **Gauss–Legendre in the light angle** (`benches/gauss_angle.wgsl`, docs/DESIGN.md §9): the
-//!   peer to beat, split at the foot, cut where the extinction exponent grew by 20, with the
-//!   kernel's own rules of 4 to 64 nodes per part;
+//!   peer to beat, cut where the extinction exponent grew by 20, with the kernel's own rules of
+//!   4 to 64 nodes per part, split at the foot, and *plain* (one part over the whole segment);
 //! * a **ray marcher** (`benches/raymarch.wgsl`, midpoint rule, uniform steps, 8 to 4096).
 //!
 //! ```sh
@@ -54,6 +54,7 @@ const RULE_LINE: &str = "const RULE = array<vec2<f32>, 4>(vec2<f32>(0.0, 0.0), v
 /// Ray-marcher step counts tried.
 const STEP_GRID: [u32; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 /// Gauss–Legendre nodes per part tried (every tabulated rule).
+const SPLIT_LINE: &str = "const SPLIT: bool = true;";
 const NODE_GRID: [u32; 11] = [4, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
 /// The upload/dispatch/read-back cost alone: same bindings, writes (0, OK).
 const COPY_ONLY: &str = r#"
@@ -74,33 +75,37 @@ fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
 #[derive(Clone, Copy, PartialEq)]
 enum Baseline {
     GaussAngle,
+    GaussAnglePlain,
     RayMarch,
 }
 
 impl Baseline {
-    const ALL: [Baseline; 2] = [Baseline::GaussAngle, Baseline::RayMarch];
+    const ALL: [Baseline; 3] = [Baseline::GaussAngle, Baseline::GaussAnglePlain, Baseline::RayMarch];
 
     fn name(self) -> &'static str {
         match self {
             Baseline::GaussAngle => "Gauss–Legendre in θ",
+            Baseline::GaussAnglePlain => "Gauss–Legendre in θ, plain",
             Baseline::RayMarch => "ray-marcher",
         }
     }
     fn id(self) -> &'static str {
         match self {
             Baseline::GaussAngle => "gauss_angle",
+            Baseline::GaussAnglePlain => "gauss_angle_plain",
             Baseline::RayMarch => "raymarch",
         }
     }
     fn unit(self) -> &'static str {
         match self {
             Baseline::GaussAngle => "nodes per part",
+            Baseline::GaussAnglePlain => "nodes",
             Baseline::RayMarch => "steps",
         }
     }
     fn grid(self) -> &'static [u32] {
         match self {
-            Baseline::GaussAngle => &NODE_GRID,
+            Baseline::GaussAngle | Baseline::GaussAnglePlain => &NODE_GRID,
             Baseline::RayMarch => &STEP_GRID,
         }
     }
@@ -112,12 +117,13 @@ impl Baseline {
                 assert!(RAYMARCH.contains(STEPS_LINE), "raymarch.wgsl lost its `{STEPS_LINE}` line");
                 format!("{LIBRARY}\n{}\n{BASELINE_ENTRY}", RAYMARCH.replace(STEPS_LINE, &format!("const STEPS: u32 = {n}u;")))
             }
-            Baseline::GaussAngle => {
-                assert!(GAUSS_ANGLE.contains(NODES_LINE) && GAUSS_ANGLE.contains(RULE_LINE), "gauss_angle.wgsl lost its NODES or RULE line");
+            Baseline::GaussAngle | Baseline::GaussAnglePlain => {
+                assert!(GAUSS_ANGLE.contains(NODES_LINE) && GAUSS_ANGLE.contains(RULE_LINE) && GAUSS_ANGLE.contains(SPLIT_LINE), "gauss_angle.wgsl lost its NODES, RULE or SPLIT line");
+                let split = format!("const SPLIT: bool = {};", self == Baseline::GaussAngle);
                 let rule = airlight::expansion::gauss_table::rule(n as usize).expect("a tabulated rule");
                 let pairs: Vec<String> = rule.iter().map(|&(x, w)| format!("vec2<f32>({:?}, {:?})", x as f32, w as f32)).collect();
                 let rule_line = format!("const RULE = array<vec2<f32>, {}>({});", rule.len(), pairs.join(", "));
-                format!("{LIBRARY}\n{}\n{BASELINE_ENTRY}", GAUSS_ANGLE.replace(NODES_LINE, &format!("const NODES: u32 = {n}u;")).replace(RULE_LINE, &rule_line))
+                format!("{LIBRARY}\n{}\n{BASELINE_ENTRY}", GAUSS_ANGLE.replace(NODES_LINE, &format!("const NODES: u32 = {n}u;")).replace(RULE_LINE, &rule_line).replace(SPLIT_LINE, &split))
             }
         }
     }
@@ -311,7 +317,7 @@ fn main() {
                 baseline_err.push((baseline, n, e));
             }
         }
-        timed.sort_by_key(|t| (t.0 == Baseline::RayMarch, t.1));
+        timed.sort_by_key(|t| (Baseline::ALL.iter().position(|b| *b == t.0), t.1));
 
         // ---- speed, timed
         let prepared: Vec<(Baseline, u32, Prepared<'_>)> = timed.iter().map(|(b, n, _)| (*b, *n, gpu.prepare(Shader::Wgsl(&b.source(*n))))).collect();
