@@ -53,8 +53,9 @@ const NODES_LINE: &str = "const NODES: u32 = 8u;";
 const RULE_LINE: &str = "const RULE = array<vec2<f32>, 4>(vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0), vec2<f32>(0.0, 0.0));";
 /// Ray-marcher step counts tried.
 const STEP_GRID: [u32; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
-/// Gauss–Legendre nodes per part tried (every tabulated rule).
+/// The line of gauss_angle.wgsl that says whether the rule splits at the foot (false: plain).
 const SPLIT_LINE: &str = "const SPLIT: bool = true;";
+/// Gauss–Legendre nodes per part tried (every tabulated rule).
 const NODE_GRID: [u32; 11] = [4, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
 /// The upload/dispatch/read-back cost alone: same bindings, writes (0, OK).
 const COPY_ONLY: &str = r#"

@@ -10,8 +10,7 @@
 //! 4096 nodes per part, split (`PEER_LADDER`); a comparison "at error e" takes, of the rungs
 //! whose largest error is at most `e`, the one with the fewest integrand evaluations over the
 //! class (where none is, the last rung, flagged: the peer's true cost there is higher). Then,
-//! per class and
-//! precision, timed over all the class's scenes per iteration:
+//! per class and precision, timed over all the class's scenes per iteration:
 //! * `airlight`: `Scene::in_scatter()` (the default), and `peer_default`: the peer at the
 //!   default's largest error;
 //! * at each error level of the targets (`LEVELS`: 1e-8 and 1e-10 in f64, 1e-3 and 1e-4 in
