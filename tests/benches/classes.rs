@@ -123,8 +123,13 @@ fn tau<T: Real>() -> f64 {
 }
 
 fn largest_error<T: Real>(c: &Class<T>, f: impl Fn(&S<T>) -> T) -> f64 {
+    largest_error_of(c, c.scenes.iter().map(f))
+}
+
+/// [`largest_error`] of values already computed, one per scene in order.
+fn largest_error_of<T: Real>(c: &Class<T>, values: impl Iterator<Item = T>) -> f64 {
     let t = tau::<T>();
-    c.scenes.iter().enumerate().map(|(i, s)| (f(s).to_f64_exact() - c.exact[i]).abs() / c.exact[i].abs().max(t * c.scale[i])).fold(0.0, f64::max)
+    values.enumerate().map(|(i, x)| (x.to_f64_exact() - c.exact[i]).abs() / c.exact[i].abs().max(t * c.scale[i])).fold(0.0, f64::max)
 }
 
 fn peer<T: Real>((nodes, panels, split): (usize, usize, bool)) -> GaussAngle<T> {
@@ -155,8 +160,14 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
         let ours_err = largest_error(&class, |s| s.in_scatter());
         let mut panels: Vec<usize> = class.scenes.iter().map(|s| s.in_scatter_controlled(default_control()).1).collect();
         panels.sort();
-        let peer_errs: Vec<f64> = PEER_LADDER.iter().map(|&r| largest_error(&class, |s| s.gauss_angle(peer(r)).0)).collect();
-        let peer_evals: Vec<usize> = PEER_LADDER.iter().map(|&r| class.scenes.iter().map(|s| s.gauss_angle(peer(r)).1).sum()).collect();
+        // each rung once over the class: its largest error and its integrand evaluations
+        let (peer_errs, peer_evals): (Vec<f64>, Vec<usize>) = PEER_LADDER
+            .iter()
+            .map(|&r| {
+                let runs: Vec<(T, usize)> = class.scenes.iter().map(|s| s.gauss_angle(peer(r))).collect();
+                (largest_error_of(&class, runs.iter().map(|x| x.0)), runs.iter().map(|x| x.1).sum::<usize>())
+            })
+            .unzip();
         let (peer_default, e, reached) = peer_at(&peer_errs, &peer_evals, ours_err);
         let mut line = format!(
             "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"scenes\":{},\"airlight\":{ours_err:e},\"panels_median\":{},\"panels_max\":{},\"peer_default\":{},\"levels\":[",
