@@ -6,6 +6,7 @@
 //! (`r_s`: light distance at the part's start; moments in [`crate::integrals`]), plus the exact
 //! limits for a light on the ray line (`h → 0`).
 
+use crate::angle::Route;
 use crate::expansion::{Expandable, Expansion};
 use crate::geometry::Canonical;
 use crate::integrals::{moment_zero, moments, ExpIntegral, Half, SharedEnds};
@@ -218,8 +219,17 @@ where
     if isotropic && ei.stabilised() && t0 < x_h && x_h < t1 {
         return (whole_line(g, phys, big_h, ei), 0);
     }
+    // a route by cost first: the whole segment in the light angle, where that meets the target
+    let mut tried = 0;
+    if let (Method::Panels(control), false) = (method, isotropic) {
+        match crate::angle::whole_segment::<T, D, P, N>(g, phys, &control) {
+            Route::Taken(value) => return (value, 1),
+            Route::Failed => tried = 1,
+            Route::Declined => {}
+        }
+    }
     let mut total = T::zero();
-    let mut run = Running { f_max: T::zero(), panels: 0 };
+    let mut run = Running { f_max: T::zero(), panels: tried };
     // panels only: the exponent's boundary layer is cut where the rest is below what the
     // target resolves
     let cut = match method {
@@ -290,7 +300,7 @@ where
 /// medium or a long ray is still integrated to the target, and the panels are spent on the
 /// part that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
 #[inline]
-fn cut_length<T: Real>(big_h: T, v_s: T, control: &Control<T>) -> T {
+pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, control: &Control<T>) -> T {
     let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
     let floor = control.floor.max(T::epsilon());
     if !(big_h > T::zero()) || !(delta * floor > T::zero()) {

@@ -48,6 +48,7 @@
 #![no_std]
 #![warn(missing_docs)]
 
+pub mod angle;
 pub mod area;
 pub mod combined;
 pub mod error;

@@ -255,7 +255,7 @@ fn factor<T: Real>(half: &Half<T>, a: T, b: T) -> T {
 
 /// Legendre coefficients of the samples `g(ξ_j)` at the rule's nodes (order: `−x_1, x_1, …`),
 /// by the tabulated discrete transform (`P_k(−x) = (−1)^k P_k(x)`).
-fn legendre<T: Real, const N: usize>(g: &[T; N]) -> [T; N] {
+pub(crate) fn legendre<T: Real, const N: usize>(g: &[T; N]) -> [T; N] {
     let mut c = [T::zero(); N];
     let Some(table) = gauss_table::transform(N) else {
         return c;
@@ -284,7 +284,7 @@ fn node<T: Real>(rule: &[(f64, f64)], i: usize) -> T {
     }
 }
 
-fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
+pub(crate) fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
     if N >= 2 {
         c[N - 1].abs() + c[N - 2].abs()
     } else {
@@ -314,7 +314,7 @@ fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
 ///
 /// Where the coefficients do not decay (`q ≥ 1`) the factor is 1: the plain interpolation
 /// error.
-fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T>) -> T {
+pub(crate) fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T>) -> T {
     if N < 4 || !(m[0] > T::zero()) {
         return T::one();
     }
@@ -363,7 +363,7 @@ pub const ALIASING_MARGIN: usize = 3;
 /// them): the Legendre coefficients of a function singular there fall like `ρ^{−k}` and no
 /// faster. (Squares that overflow give `ρ = ∞`, rate 0: a singularity that far constrains
 /// nothing.)
-fn bernstein_rho<T: Real>(re: T, im: T) -> T {
+pub(crate) fn bernstein_rho<T: Real>(re: T, im: T) -> T {
     let im2 = im * im;
     let a = (((re - T::one()) * (re - T::one()) + im2).sqrt() + ((re + T::one()) * (re + T::one()) + im2).sqrt()) * T::lit(0.5);
     a + (a * a - T::one()).max(T::zero()).sqrt()
@@ -371,7 +371,7 @@ fn bernstein_rho<T: Real>(re: T, im: T) -> T {
 
 /// `q^k` for the small `k` of [`error_factor`], by products (no library call).
 #[inline]
-fn power<T: Real>(q: T, k: usize) -> T {
+pub(crate) fn power<T: Real>(q: T, k: usize) -> T {
     (0..k).fold(T::one(), |p, _| p * q)
 }
 

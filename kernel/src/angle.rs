@@ -1,0 +1,211 @@
+//! A route by cost: the whole segment as one Gauss–Legendre panel in the angle seen from the
+//! light, taken where its error estimate meets the panels' target (docs/DESIGN.md §4.2);
+//! otherwise [`crate::combined`] goes on to the closed-form panels.
+//!
+//! With `t − x_h = h tan θ`, `dt/r² = dθ/h` and the extinction exponent is
+//! `σt(t − t0 + r) = σt r0 + H (Y(θ) − Y(θ0))`, `H = σt h`, with
+//! `Y = tan(θ/2 + π/4) = (1 + sin θ)/cos θ = cos θ/(1 − sin θ)` — the panels' `v`
+//! ([`crate::panels`]) — so
+//!
+//! `L_m = (σs I/h) e^{−σt r0} ∫_{θ0}^{θ1} e^{−H(Y − Y0)} F dθ`,
+//! `F = D(d_el sin θ + d_c cos θ) · P(−sin θ)`.
+//!
+//! No `1/r²` peak is left: where the medium is thin and the light is not next to the segment
+//! this integrand is smooth over the whole segment, and `N` samples of it (`N` the panels'
+//! nodes) cost less than the closed forms' `E1` values and moments. The nodes are placed by
+//! their distances from the poles `θ = ∓π/2` and the panel's width from the segment's length
+//! (`atan2(u1 − u0, 1 + u0 u1)`), so that `cos θ`, `1 ± sin θ` and the width keep full relative
+//! accuracy: formed from `θ` itself they lose `ε/cos θ` and `επ/Δθ`, which a peaked phase
+//! function amplifies (1.9e-4 in f32 on HG `g = 0.9`, the peer's floor).
+//!
+//! The samples' Legendre coefficients `c_k` estimate the error by the panels' model
+//! (`crate::panels::error_factor`, as on a y-panel, whose weight is 1 too):
+//! `2·hw·(|c_{N−1}| + |c_{N−2}|)·q^{N+1−m}` (`m` = [`crate::panels::ALIASING_MARGIN`]), `q` the decay of the last four coefficients raised to the floor of the
+//! nearest singularity — the phase function's (`P(−sin θ)` is singular where
+//! `sin θ = −μ*`, at `θ = ∓π/2 ± i·acosh|μ*|`) or the exponential's (`Y` has a pole at
+//! `θ = π/2`, essential in `e^{−HY}`, which is analytic inside the Bernstein ellipse through
+//! it) — and where that floor reaches 1, the panels' cautious `q^{N/4}`. The route is taken
+//! when the estimate is below `tolerance × max(|value|, floor × scale)`, the panels' own
+//! acceptance test, so the accuracy targets hold as on the panels (tests/tests/classes.rs).
+//!
+//! It is tried only where it is likely to pass, judged before any sample from predicted
+//! sizes of `|c_N/c_0|` (they decide cost, never accuracy):
+//! * the exponential and the light's lobe as one rate `λ`: `λ^N/(3·5⋯(2N+1))`, the leading
+//!   term of `i_N(λ)` (DLMF 10.53.1; `e^{−λξ}`'s `N`-th Legendre coefficient is `(2N+1) i_N(λ)`
+//!   in size, the estimate's aliased part far less), measured to decline mostly samples that
+//!   would not pass (tests/classes.rs `light_angle_route_meets_its_tolerance` prints how
+//!   often each outcome happens per class); `λ` is the
+//!   exponent's mean rate `ΔE/2` or `hw` times its rate where the weight has fallen to `e^{−1}`,
+//!   whichever is less (`E` is convex in `θ`), plus `√p·hw` for a distribution of degree `p`
+//!   (`c^p ≈ e^{−pφ²/2}`) — large next to the light and in thick media, where the extinction
+//!   has a boundary layer and the closed forms stay the method;
+//! * the phase's singularities: `ρ^{−N}`, `ρ` of the panel's Bernstein ellipse through the
+//!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
+//!
+//! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
+//! the route, and so does a phase function that does not declare its singularities: `F` would
+//! not be analytic in `θ`, or not known to be.
+
+use crate::combined::{cut_length, Physics};
+use crate::expansion::gauss_table;
+use crate::geometry::Canonical;
+use crate::light::LightDistribution;
+use crate::panels::{bernstein_rho, error_factor, legendre, power, tail_estimate, Control, MAX_N};
+use crate::phase::PhaseFunction;
+use crate::real::{hypot1, Real};
+use crate::scalar::Scalar;
+
+/// What the route did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Route<T> {
+    /// Not tried: `F` is not analytic in `θ`, or a predicted coefficient is above the
+    /// tolerance.
+    Declined,
+    /// Tried (one panel of samples spent), the estimate above the target.
+    Failed,
+    /// Taken: `L_m`.
+    Taken(T),
+}
+
+/// The whole segment `[t0, t1]` (`h > 0`) by one `N`-node Gauss–Legendre panel in `θ`, cut where
+/// the panels cut a half (`crate::combined::cut_length`), if its estimate meets `control`.
+pub fn whole_segment<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    let (Some(rule), true) = (gauss_table::rule(N), (4..=MAX_N).contains(&N)) else {
+        return Route::Declined;
+    };
+    let light = phys.light;
+    let degree = match light.polynomial_degree() {
+        Some(p) if light.kinks().iter().all(Option::is_none) && light.dark_below().is_none() => p,
+        _ => return Route::Declined,
+    };
+    let Some(singular) = phys.phase.singularities() else {
+        return Route::Declined;
+    };
+    let h = g.h;
+    if !(h > T::zero()) {
+        return Route::Declined;
+    }
+    let (u0, u1) = (g.u(g.t0), g.u(g.t1));
+    let big_h = phys.sigma_t * h;
+    // Y at the start without cancellation: 1/(−u + √(1+u²)) before the foot
+    let y0 = if u0 < T::zero() { (hypot1(u0) - u0).recip() } else { u0 + hypot1(u0) };
+    let y_cut = y0 + cut_length(big_h, y0, control);
+    let y1 = if u1 < T::zero() { (hypot1(u1) - u1).recip() } else { u1 + hypot1(u1) };
+    // The ends as their distances from the poles θ = ∓π/2 (ψ0 = θ0 + π/2, ψ1 = π/2 − θ1), to
+    // full relative accuracy: F's lobes and the exponential's layer sit at the poles, where
+    // cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase function
+    // amplifies that, as for the panels' `1 ∓ μ`).
+    let psi0 = T::one().atan2(-u0);
+    // the half-width from the segment's length, not from the difference of the ends' angles
+    // (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0, 1 + u0 u1),
+    // 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
+    let (psi1, width) = if y_cut < y1 {
+        (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * (y_cut - y0).atan2(T::one() + y0 * y_cut))
+    } else if u1.is_finite() {
+        (T::one().atan2(u1), ((g.t1 - g.t0) / h).atan2(T::one() + u0 * u1))
+    } else {
+        (T::zero(), T::one().atan2(u0))
+    };
+    let hw = width * T::lit(0.5);
+    if !(hw > T::zero()) {
+        return Route::Declined;
+    }
+    let mid = psi0 + hw - T::FRAC_PI_2();
+    let tolerance = control.tolerance;
+
+    // The predicted coefficients, before any sample. The exponential's: e^{−E} with E rising
+    // at the rate λ/hw is e^{−λ(1+ξ)} on the panel, whose N-th Legendre coefficient is
+    // (2N+1)·i_N(λ) of its mean, i_N(λ) ≈ λ^N/(3·5⋯(2N+1)) (module docs). E is convex in θ (dE/dθ = H/(1 − sin θ) = H(1 + Y²)/2), so
+    // λ is taken as the lesser of two: the mean rate, ΔE/2 with ΔE = H(Y_end − Y0), and hw
+    // times the rate where the weight has fallen to e^{−1} (beyond it the weight is small
+    // however fast it falls).
+    let y_end = y1.min(y_cut);
+    let y_e = (y0 + big_h.recip()).min(y_end);
+    let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
+    // D, a polynomial of degree p in c = cos(θ − θ_axis)·…: a lobe of angular width about
+    // 1/√p (c^p ≈ e^{−pφ²/2}), as the exponential with λ = √p·hw; the two rates add.
+    let lambda = lambda + T::from(degree).unwrap().sqrt() * hw;
+    let predicted = Scalar::powi(lambda, N as i32) * T::lit(inv_odd_factorial(N));
+    if !(predicted <= tolerance) {
+        return Route::Declined;
+    }
+    // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse through it:
+    // the phase's, with its order's step as the panels take it, and the exponential's own, Y's
+    // pole at θ = π/2 (essential in e^{−HY}, which is analytic inside the ellipse through it).
+    // (N/(N − 1))^{max(α − 1, 0)} as √(N/(N − 1)) to the power ⌈2(α − 1)⌉ (the panels' `Singular`)
+    let twice = ((singular.order - T::one()) * T::lit(2.0)).ceil().max(T::zero());
+    let step = twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(T::lit((N as f64 / (N - 1) as f64).sqrt()), k));
+    let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
+    let mut rate = T::zero();
+    for mu in singular.cosines {
+        let gap = mu.abs() - T::one();
+        if !(gap > T::zero()) || !gap.is_finite() {
+            continue;
+        }
+        // acosh(1 + gap) = ln(1 + gap + √(gap(2 + gap)))
+        let im = (gap + (gap * (T::lit(2.0) + gap)).sqrt()).ln_1p();
+        let re = if mu > T::zero() { -T::FRAC_PI_2() } else { T::FRAC_PI_2() };
+        rate = rate.max(step / bernstein_rho((re - mid) / hw, im / hw));
+    }
+    if !(power(rate, N) <= tolerance) {
+        return Route::Declined;
+    }
+    let rate = rate.max(exponential);
+
+    // the samples, in the order `legendre` expects (−x_1, x_1, −x_2, …)
+    let mut samples = [T::zero(); N];
+    let (mut value, mut mass, mut magnitude, mut f_max) = (T::zero(), T::zero(), T::zero(), T::zero());
+    for (i, sample) in samples.iter_mut().enumerate() {
+        let (x, w) = rule[i / 2];
+        let x = if i % 2 == 0 { -x } else { x };
+        // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), as a distance from the nearer pole; then cos θ,
+        // Y, 1 + sin θ and 1 − sin θ without cancellation
+        let lower = psi0 + hw * T::lit(1.0 + x);
+        let (s, c, y, one_plus, one_minus) = if lower <= T::FRAC_PI_2() {
+            let (c, minus_s) = lower.sin_cos();
+            let one_minus = T::one() + minus_s;
+            (-minus_s, c, c / one_minus, c * c / one_minus, one_minus)
+        } else {
+            let (c, s) = (psi1 + hw * T::lit(1.0 - x)).sin_cos();
+            let one_plus = T::one() + s;
+            (s, c, one_plus / c, one_plus, c * c / one_plus)
+        };
+        let weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
+        // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
+        let f = light.eval(g.d_el * s + g.d_c * c) * phys.phase.eval_sides(-s, one_plus, one_minus);
+        let gw = weight * f;
+        *sample = gw;
+        let w = T::lit(w);
+        value = value + w * gw;
+        mass = mass + w * weight;
+        magnitude = magnitude + w * gw.abs();
+        f_max = f_max.max(f.abs());
+    }
+    let c = legendre::<T, N>(&samples);
+    // the panels' model with the weight 1 (moments M_0 = 2, M_k = 0): q^{N+1−m} where the
+    // rate is known and below 1, the cautious q^{N/4} where it is not
+    let mut moments = [T::zero(); N];
+    moments[0] = T::lit(2.0);
+    let factor = error_factor::<T, N>(&c, &moments, Some(rate));
+    let last = tail_estimate::<T, N>(&c);
+    // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding 4Nε per sample
+    let error = T::lit(2.0) * last * factor;
+    let noise = T::from(4 * N).unwrap() * T::epsilon() * magnitude;
+    let target = tolerance * value.abs().max(control.floor * f_max * mass);
+    if !(error <= target || error <= noise) {
+        return Route::Failed;
+    }
+    let r0 = h * hypot1(u0);
+    Route::Taken(phys.sigma_s * phys.intensity / h * (-phys.sigma_t * r0).exp() * (value * hw))
+}
+
+/// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's
+/// predicted coefficient (module docs; the shaders take it from here).
+pub fn inv_odd_factorial(n: usize) -> f64 {
+    (1..=n).fold(1.0, |p, k| p / (2 * k + 1) as f64)
+}
