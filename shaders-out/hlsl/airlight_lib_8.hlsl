@@ -150,6 +150,7 @@ static const uint AIRLIGHT_MAX_PANELS = 16u;
 static const uint AIRLIGHT_PANEL_LIST = 8u;
 static const float AIRLIGHT_Y_PANEL_EXPONENT = 4.0;
 static const uint AIRLIGHT_ALIASING_MARGIN = 3u;
+static const float AIRLIGHT_INV_ODD_FACTORIAL = 2.9019636e-8;
 static const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 static const float AIRLIGHT_PI = 3.1415927;
 static const float AIRLIGHT_EULER_GAMMA = 0.5772157;
@@ -396,11 +397,11 @@ float2 airlight_cdiv(float2 a_1, float2 b_1)
 
 float airlight_cabs(float2 z)
 {
-    float m_3 = max(abs(z.x), abs(z.y));
-    if ((m_3 == 0.0)) {
+    float m_4 = max(abs(z.x), abs(z.y));
+    if ((m_4 == 0.0)) {
         return 0.0;
     }
-    return (m_3 * length((z / (m_3).xx)));
+    return (m_4 * length((z / (m_4).xx)));
 }
 
 float2 airlight_csqrt(float2 z_1)
@@ -427,77 +428,17 @@ float2 airlight_csqrt(float2 z_1)
 
 float2 airlight_cos_sin(float x)
 {
-    float c = 0.0;
-    float s_1 = 0.0;
-    uint k_1 = 0u;
-    float fc = (float)0;
-    uint j = (uint)0;
-
     float z_9 = (x * x);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e55 = k_1;
-            k_1 = (_e55 + 1u);
-        }
-        loop_init = false;
-        uint _e8 = k_1;
-        if ((_e8 < 9u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e12 = k_1;
-            uint n_2 = (8u - _e12);
-            float _e14 = c;
-            c = (_e14 * z_9);
-            float _e16 = s_1;
-            s_1 = (_e16 * z_9);
-            fc = 1.0;
-            j = 1u;
-            uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-            bool loop_init_1 = true;
-            while(true) {
-                if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-                if (!loop_init_1) {
-                    uint _e31 = j;
-                    j = (_e31 + 1u);
-                }
-                loop_init_1 = false;
-                uint _e22 = j;
-                if ((_e22 <= (2u * n_2))) {
-                } else {
-                    break;
-                }
-                {
-                    float _e26 = fc;
-                    uint _e27 = j;
-                    fc = (_e26 * float(_e27));
-                }
-            }
-            float sign_ = (((n_2 & 1u) == 1u) ? -1.0 : 1.0);
-            float _e40 = c;
-            float _e41 = fc;
-            c = (_e40 + (sign_ / _e41));
-            float _e44 = s_1;
-            float _e45 = fc;
-            s_1 = (_e44 + (sign_ / (_e45 * float(((2u * n_2) + 1u)))));
-        }
-    }
-    float _e57 = c;
-    float _e58 = s_1;
-    return float2(_e57, (_e58 * x));
+    float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
+    float s_25 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return float2(c_7, (s_25 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
 {
-    float m_4 = exp(z_2.x);
+    float m_5 = exp(z_2.x);
     const float2 _e4 = airlight_cos_sin(z_2.y);
-    return float2((m_4 * _e4.x), (m_4 * _e4.y));
+    return float2((m_5 * _e4.x), (m_5 * _e4.y));
 }
 
 float airlight_atan(float x_1)
@@ -541,36 +482,36 @@ float2 airlight_cln(float2 z_3)
 float airlight_log1p(float x_2)
 {
     float sum = 0.0;
-    uint k_2 = 0u;
+    uint k_1 = 0u;
 
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_25 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_25 * s_25);
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    float s_26 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_26 * s_26);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
     while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e31 = k_2;
-            k_2 = (_e31 + 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e31 = k_1;
+            k_1 = (_e31 + 1u);
         }
-        loop_init_2 = false;
-        uint _e14 = k_2;
+        loop_init = false;
+        uint _e14 = k_1;
         if ((_e14 < 9u)) {
         } else {
             break;
         }
         {
             float _e17 = sum;
-            uint _e21 = k_2;
+            uint _e21 = k_1;
             sum = ((_e17 * s2_) + (1.0 / float(((2u * (8u - _e21)) + 1u))));
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_25) * _e35);
+    return ((2.0 * s_26) * _e35);
 }
 
 bool airlight_is_finite(float x_3)
@@ -581,20 +522,20 @@ bool airlight_is_finite(float x_3)
 float2 airlight_ein(float2 z_4)
 {
     float2 sum_1 = float2(0.0, 0.0);
-    uint k_3 = 0u;
+    uint k_2 = 0u;
 
     const float _e1[13] = airlight_ein_coefficients();
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e21 = k_3;
-            k_3 = (_e21 + 1u);
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e21 = k_2;
+            k_2 = (_e21 + 1u);
         }
-        loop_init_3 = false;
-        uint _e8 = k_3;
+        loop_init_1 = false;
+        uint _e8 = k_2;
         if ((_e8 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
@@ -602,7 +543,7 @@ float2 airlight_ein(float2 z_4)
         {
             float2 _e11 = sum_1;
             const float2 _e12 = airlight_cmul(_e11, z_4);
-            uint _e14 = k_3;
+            uint _e14 = k_2;
             sum_1 = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
         }
     }
@@ -616,20 +557,20 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
     float2 h = float2(1.0, 0.0);
     float2 a_pow = float2(1.0, 0.0);
     float2 sum_2 = float2(0.0, 0.0);
-    uint k_4 = 0u;
+    uint k_3 = 0u;
 
     const float _e2[13] = airlight_ein_coefficients();
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e33 = k_4;
-            k_4 = (_e33 + 1u);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e33 = k_3;
+            k_3 = (_e33 + 1u);
         }
-        loop_init_4 = false;
-        uint _e17 = k_4;
+        loop_init_2 = false;
+        uint _e17 = k_3;
         if ((_e17 < AIRLIGHT_EIN_DD_TERMS)) {
         } else {
             break;
@@ -637,7 +578,7 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
         {
             float2 _e20 = sum_2;
             float2 _e21 = h;
-            uint _e22 = k_4;
+            uint _e22 = k_3;
             sum_2 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
             float2 _e26 = a_pow;
             const float2 _e27 = airlight_cmul(_e26, a_2);
@@ -654,9 +595,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_16 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    float y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_16 * x_16) + (y_4 * y_4)) < 1.0);
+    float x_17 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_17 * x_17) + (y_6 * y_6)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -746,16 +687,16 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float2 _e46 = root;
     const float2 _e48 = airlight_cmul(b_13, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e103 = i;
             i = (_e103 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_3 = false;
         uint _e54 = i;
         if ((_e54 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -818,24 +759,24 @@ float airlight_en_scaled_cf(float x_4, uint n)
 
     const uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
-    float m_5 = float(_e2);
-    float b_14 = ((x_4 + nf_1) + (2.0 * (m_5 + 1.0)));
-    float a_17 = ((m_5 + 2.0) * ((nf_1 + m_5) + 1.0));
+    float m_6 = float(_e2);
+    float b_14 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
+    float a_17 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
     float disc = (1.0 - ((4.0 * a_17) / (b_14 * b_14)));
     t_2 = b_14;
     if ((disc > 0.0)) {
         t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e54 = i_1;
             i_1 = (_e54 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_4 = false;
         uint _e34 = i_1;
         if ((_e34 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -1035,7 +976,7 @@ float airlight_phase_mu(uint kind_1, float p0_1, float p1_1, float p2_1, float m
     return _e9;
 }
 
-float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
+float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
 {
     float base = (float)0;
     uint e = (uint)0;
@@ -1044,18 +985,18 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
 
     switch(kind_2) {
         case 1u: {
-            base = c_1;
+            base = c;
             e = airlight_naga_f2u32(p0_2);
-            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-            bool loop_init_7 = true;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                if (!loop_init_7) {
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
                     uint _e32 = i_2;
                     i_2 = (_e32 + 1u);
                 }
-                loop_init_7 = false;
+                loop_init_5 = false;
                 uint _e11 = i_2;
                 if ((_e11 < AIRLIGHT_MAX_POWER_BITS)) {
                 } else {
@@ -1083,12 +1024,12 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c_1)
             return _e34;
         }
         case 2u: {
-            float width = (p0_2 - p1_2);
-            if ((width <= AIRLIGHT_FLT_EPS)) {
-                return ((c_1 >= (p1_2 + (width * 0.5))) ? 1.0 : 0.0);
+            float width_1 = (p0_2 - p1_2);
+            if ((width_1 <= AIRLIGHT_FLT_EPS)) {
+                return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_17 = clamp(((c_1 - p1_2) / width), 0.0, 1.0);
-            return ((x_17 * x_17) * (3.0 - (2.0 * x_17)));
+            float x_18 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_18 * x_18) * (3.0 - (2.0 * x_18)));
         }
         default: {
             return 1.0;
@@ -1116,12 +1057,12 @@ float airlight_hg_gap(float g_4)
     return (((1.0 - a_19) * (1.0 - a_19)) / (a_19 + a_19));
 }
 
-float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
+float3 airlight_singular_heights(AirlightScene s_1, float sigma_1)
 {
     float3 h_1 = (1.0).xxx;
 
-    float p0_3 = s_2.phase_param_a;
-    switch(s_2.phase_kind) {
+    float p0_3 = s_1.phase_param_a;
+    switch(s_1.phase_kind) {
         case 2u:
         case 4u: {
             const float _e8 = airlight_hg_gap(p0_3);
@@ -1139,8 +1080,8 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
             const float _e21 = airlight_hg_gap(p0_3);
             const float _e22 = airlight_singular_height(p0_3, _e21, sigma_1);
             h_1.y = _e22;
-            const float _e26 = airlight_hg_gap(s_2.phase_param_b);
-            const float _e27 = airlight_singular_height(s_2.phase_param_b, _e26, sigma_1);
+            const float _e26 = airlight_hg_gap(s_1.phase_param_b);
+            const float _e27 = airlight_singular_height(s_1.phase_param_b, _e26, sigma_1);
             h_1.z = _e27;
             break;
         }
@@ -1152,19 +1093,19 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
     return _e28;
 }
 
-float3 airlight_singular_steps(AirlightScene s_3)
+float3 airlight_singular_steps(AirlightScene s_2)
 {
     float degree = 0.0;
     float order = 0.0;
     float growth = 0.0;
 
-    if ((s_3.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        degree = s_3.light_param_a;
+    if ((s_2.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        degree = s_2.light_param_a;
     }
-    if ((s_3.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+    if ((s_2.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         degree = 3.0;
     }
-    switch(s_3.phase_kind) {
+    switch(s_2.phase_kind) {
         case 0u: {
             order = 0.0;
             growth = 0.0;
@@ -1206,7 +1147,7 @@ float3 airlight_singular_steps(AirlightScene s_3)
     return float3(pow(1.1428572, (_e35 + _e36)), phase_2, phase_2);
 }
 
-float2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float sigma_2, float y_1)
+float2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, float y_1)
 {
     float minus = (float)0;
     float plus = (float)0;
@@ -1224,17 +1165,17 @@ float2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float s
         minus = far;
         plus = near;
     }
-    const float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
+    const float _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_8);
     float _e40 = minus;
     float _e41 = plus;
-    const float _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
+    const float _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
     float f_1 = (_e35 * _e42);
     return float2(f_1, inv_2);
 }
 
-float airlight_integrand(AirlightScene s_5, AirlightCanonical g_6, float sigma_3, float y_2)
+float airlight_integrand(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, float y_2)
 {
-    const float2 _e4 = airlight_integrand_over(s_5, g_6, sigma_3, y_2);
+    const float2 _e4 = airlight_integrand_over(s_4, g_6, sigma_3, y_2);
     return _e4.x;
 }
 
@@ -1247,39 +1188,39 @@ airlight_ret_Constructarray4_float2_ airlight_Constructarray4_float2_(float2 arg
 float airlight_moment_gauss(AirlightHalf half_)
 {
     float m = 0.0;
-    uint j_1 = 0u;
+    uint j = 0u;
     float dv = (float)0;
 
-    float hw = (half_.dy * 0.5);
-    float yc = (half_.y_lo + hw);
+    float hw_1 = (half_.dy * 0.5);
+    float yc = (half_.y_lo + hw_1);
     float2 nodes[4] = airlight_Constructarray4_float2_(float2(-0.33998105, 0.65214515), float2(0.33998105, 0.65214515), float2(-0.8611363, 0.34785485), float2(0.8611363, 0.34785485));
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_8) {
-            uint _e59 = j_1;
-            j_1 = (_e59 + 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e59 = j;
+            j = (_e59 + 1u);
         }
-        loop_init_8 = false;
-        uint _e23 = j_1;
+        loop_init_6 = false;
+        uint _e23 = j;
         if ((_e23 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e26 = j_1;
+            uint _e26 = j;
             float xi = nodes[min(uint(_e26), 3u)].x;
-            float y_5 = (yc + (hw * xi));
-            dv = (hw * (1.0 + xi));
+            float y_7 = (yc + (hw_1 * xi));
+            dv = (hw_1 * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi)) / (y_5 * half_.y_hi));
+                dv = ((hw_1 * (1.0 - xi)) / (y_7 * half_.y_hi));
             }
             float _e42 = m;
-            uint _e43 = j_1;
+            uint _e43 = j;
             float _e49 = dv;
-            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_5 * y_5))));
+            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw_1) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_7 * y_7))));
         }
     }
     float _e61 = m;
@@ -1378,10 +1319,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_18 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_18);
+            float x_19 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_19);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_18);
+                const float _e43 = airlight_log1p(x_19);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1527,8 +1468,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[4], uint i_3)
 {
-    float x_19 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_19) : x_19);
+    float x_20 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_20) : x_20);
 }
 
 typedef float airlight_ret_airlight_legendre[8];
@@ -1553,16 +1494,16 @@ float airlight_expm1_(float x_7)
     if ((abs(x_7) >= 0.5)) {
         return (exp(x_7) - 1.0);
     }
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-    bool loop_init_9 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_9) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e24 = i_4;
             i_4 = (_e24 + 1u);
         }
-        loop_init_9 = false;
+        loop_init_7 = false;
         uint _e11 = i_4;
         if ((_e11 < 11u)) {
         } else {
@@ -1611,19 +1552,19 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_20 = (lambda / float((2u * k0_)));
-            float per_step = (x_20 * x_20);
+            float x_21 = (lambda / float((2u * k0_)));
+            float per_step = (x_21 * x_21);
             share = per_step;
-            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-            bool loop_init_10 = true;
+            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_10) {
+                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_8) {
                     uint _e53 = steps;
                     steps = (_e53 + 1u);
                 }
-                loop_init_10 = false;
+                loop_init_8 = false;
                 uint _e43 = steps;
                 if ((_e43 < 28u)) {
                 } else {
@@ -1641,16 +1582,16 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
             uint _e55 = steps;
             uint top = ((k0_ + _e55) + 2u);
             odd = float(((2u * top) + 1u));
-            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-            bool loop_init_11 = true;
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-                if (!loop_init_11) {
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_9) {
                     uint _e100 = i_5;
                     i_5 = (_e100 + 1u);
                 }
-                loop_init_11 = false;
+                loop_init_9 = false;
                 uint _e73 = i_5;
                 if ((_e73 < 46u)) {
                 } else {
@@ -1933,12 +1874,12 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
     return _e493;
 }
 
-float airlight_tail_estimate(float c_2[8])
+float airlight_tail_estimate(float c_1[8])
 {
-    return (abs(c_2[7]) + abs(c_2[6]));
+    return (abs(c_1[7]) + abs(c_1[6]));
 }
 
-float airlight_error_factor(float c_3[8], float m_1[8], float floor_)
+float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
 {
     bool local_15 = (bool)0;
     float aliasing = 0.0;
@@ -1949,8 +1890,8 @@ float airlight_error_factor(float c_3[8], float m_1[8], float floor_)
     if (!((m_1[0] > 0.0))) {
         return 1.0;
     }
-    float last = (abs(c_3[7]) + abs(c_3[6]));
-    float before = (abs(c_3[5]) + abs(c_3[4]));
+    float last = (abs(c_2[7]) + abs(c_2[6]));
+    float before = (abs(c_2[5]) + abs(c_2[4]));
     if (!(!((before > 0.0)))) {
         local_15 = !((last < before));
     } else {
@@ -1992,33 +1933,33 @@ float airlight_error_factor(float c_3[8], float m_1[8], float floor_)
         return min(((_e133 + (q_1 * truncation)) / m_1[0]), 1.0);
     }
     float _e142 = c_max;
-    c_max = max(_e142, abs(c_3[0]));
+    c_max = max(_e142, abs(c_2[0]));
     float _e146 = c_max;
-    c_max = max(_e146, abs(c_3[1]));
+    c_max = max(_e146, abs(c_2[1]));
     float _e150 = c_max;
-    c_max = max(_e150, abs(c_3[2]));
+    c_max = max(_e150, abs(c_2[2]));
     float _e154 = c_max;
-    c_max = max(_e154, abs(c_3[3]));
+    c_max = max(_e154, abs(c_2[3]));
     float _e158 = c_max;
-    c_max = max(_e158, abs(c_3[4]));
+    c_max = max(_e158, abs(c_2[4]));
     float _e162 = c_max;
-    c_max = max(_e162, abs(c_3[5]));
+    c_max = max(_e162, abs(c_2[5]));
     float _e166 = c_max;
-    c_max = max(_e166, abs(c_3[6]));
+    c_max = max(_e166, abs(c_2[6]));
     float _e170 = c_max;
-    c_max = max(_e170, abs(c_3[7]));
+    c_max = max(_e170, abs(c_2[7]));
     float _e176 = c_max;
-    uint power_1 = ((_e176 > (1.2 * abs(c_3[0]))) ? 1u : 2u);
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
+    uint power_1 = ((_e176 > (1.2 * abs(c_2[0]))) ? 1u : 2u);
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_10) {
             uint _e192 = i_6;
             i_6 = (_e192 + 1u);
         }
-        loop_init_12 = false;
+        loop_init_10 = false;
         uint _e187 = i_6;
         if ((_e187 < power_1)) {
         } else {
@@ -2054,8 +1995,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_21 = (half_5.big_h * _e13);
-    return ((x_21 > 0.0) ? exp(-(x_21)) : 1.0);
+    float x_22 = (half_5.big_h * _e13);
+    return ((x_22 > 0.0) ? exp(-(x_22)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -2073,12 +2014,12 @@ AirlightPanel airlight_panel_result(float value, float error, float noise_, floa
     return airlightpanel;
 }
 
-float airlight_singular_floor(float3 heights, float3 steps_1, float c_4, float r_1, bool origin_2)
+float airlight_singular_floor(float3 heights, float3 steps_1, float c_3, float r_1, bool origin_2)
 {
     float rho = (float)0;
 
     float inv_4 = (1.0 / r_1);
-    float re_1 = (c_4 * inv_4);
+    float re_1 = (c_3 * inv_4);
     const float _e10 = airlight_bernstein_rho(re_1, 0.0);
     rho = (origin_2 ? _e10 : AIRLIGHT_FLT_MAX);
     float _e13 = rho;
@@ -2094,7 +2035,7 @@ float airlight_singular_floor(float3 heights, float3 steps_1, float c_4, float r
     return (1.0 / _e34);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_6, float a_5, float b_4, float3 heights_1, float3 steps_2)
+AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float sigma_4, AirlightHalf half_6, float a_5, float b_4, float3 heights_1, float3 steps_2)
 {
     float r_2 = (float)0;
     float vc = (float)0;
@@ -2116,16 +2057,16 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     }
     const float _e26[8] = airlight_zero_terms();
     samples = _e26;
-    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-    bool loop_init_13 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_13) {
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
             uint _e74 = i_7;
             i_7 = (_e74 + 1u);
         }
-        loop_init_13 = false;
+        loop_init_11 = false;
         uint _e36 = i_7;
         if ((_e36 < AIRLIGHT_TERMS)) {
         } else {
@@ -2137,7 +2078,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             uint _e41 = i_7;
             const float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
-            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
+            const float2 _e48 = airlight_integrand_over(s_5, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_7;
@@ -2176,24 +2117,24 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     const float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
     float w_1 = (_e124 * _e125);
-    float mass_4 = (w_1 * _e81[0]);
+    float mass_5 = (w_1 * _e81[0]);
     float _e129 = vc;
     float _e130 = r_2;
     const float _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
     const float _e133 = airlight_tail_estimate(_e77);
     const float _e135 = airlight_error_factor(_e77, _e81, _e132);
-    float error_1 = ((mass_4 * _e133) * _e135);
+    float error_1 = ((mass_5 * _e133) * _e135);
     float _e137 = sum_4;
     float _e139 = g_avg;
-    const float _e140 = airlight_transform_noise(mass_4, _e139);
+    const float _e140 = airlight_transform_noise(mass_5, _e139);
     float _e141 = over_max;
     float _e143 = f_max_1;
-    const AirlightPanel _e144 = airlight_panel_result((w_1 * _e137), error_1, _e140, (mass_4 * _e141), _e143);
+    const AirlightPanel _e144 = airlight_panel_result((w_1 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
     const AirlightPanel airlightpanel_1 = _e144;
     return airlightpanel_1;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_7, float a_6, float b_5, float3 heights_2, float3 steps_3)
+AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float sigma_5, AirlightHalf half_7, float a_6, float b_5, float3 heights_2, float3 steps_3)
 {
     float samples_1[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_2 = 0.0;
@@ -2208,16 +2149,16 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
     float yc_1 = (a_6 + r_8);
     const float _e13[8] = airlight_zero_terms();
     samples_1 = _e13;
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
             uint _e79 = i_8;
             i_8 = (_e79 + 1u);
         }
-        loop_init_14 = false;
+        loop_init_12 = false;
         uint _e25 = i_8;
         if ((_e25 < AIRLIGHT_TERMS)) {
         } else {
@@ -2226,10 +2167,10 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
         {
             uint _e28 = i_8;
             const float _e29 = airlight_node(_e8, _e28);
-            float y_6 = (yc_1 + (r_8 * _e29));
-            float weight = exp(((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_6 * b_5)));
-            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
-            float over_1 = (1.0 / (1.0 + (y_6 * y_6)));
+            float y_8 = (yc_1 + (r_8 * _e29));
+            float weight = exp(((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_8 * b_5)));
+            const float _e41 = airlight_integrand(s_6, g_9, sigma_5, y_8);
+            float over_1 = (1.0 / (1.0 + (y_8 * y_8)));
             uint _e47 = i_8;
             samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight);
             float _e51 = f_max_2;
@@ -2269,57 +2210,57 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
 }
 
 typedef float airlight_ret_airlight_legendre_to_monomial[8];
-airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_5[8])
+airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c_4[8])
 {
     float hat[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     const float _e1[8] = airlight_zero_terms();
     hat = _e1;
     float _e4 = hat[0];
-    hat[0] = (_e4 + (c_5[0] * 1.0));
+    hat[0] = (_e4 + (c_4[0] * 1.0));
     float _e10 = hat[1];
-    hat[1] = (_e10 + (c_5[1] * 1.0));
+    hat[1] = (_e10 + (c_4[1] * 1.0));
     float _e16 = hat[0];
-    hat[0] = (_e16 + (c_5[2] * -0.5));
+    hat[0] = (_e16 + (c_4[2] * -0.5));
     float _e22 = hat[2];
-    hat[2] = (_e22 + (c_5[2] * 1.5));
+    hat[2] = (_e22 + (c_4[2] * 1.5));
     float _e28 = hat[1];
-    hat[1] = (_e28 + (c_5[3] * -1.5));
+    hat[1] = (_e28 + (c_4[3] * -1.5));
     float _e34 = hat[3];
-    hat[3] = (_e34 + (c_5[3] * 2.5));
+    hat[3] = (_e34 + (c_4[3] * 2.5));
     float _e40 = hat[0];
-    hat[0] = (_e40 + (c_5[4] * 0.375));
+    hat[0] = (_e40 + (c_4[4] * 0.375));
     float _e46 = hat[2];
-    hat[2] = (_e46 + (c_5[4] * -3.75));
+    hat[2] = (_e46 + (c_4[4] * -3.75));
     float _e52 = hat[4];
-    hat[4] = (_e52 + (c_5[4] * 4.375));
+    hat[4] = (_e52 + (c_4[4] * 4.375));
     float _e58 = hat[1];
-    hat[1] = (_e58 + (c_5[5] * 1.875));
+    hat[1] = (_e58 + (c_4[5] * 1.875));
     float _e64 = hat[3];
-    hat[3] = (_e64 + (c_5[5] * -8.75));
+    hat[3] = (_e64 + (c_4[5] * -8.75));
     float _e70 = hat[5];
-    hat[5] = (_e70 + (c_5[5] * 7.875));
+    hat[5] = (_e70 + (c_4[5] * 7.875));
     float _e76 = hat[0];
-    hat[0] = (_e76 + (c_5[6] * -0.3125));
+    hat[0] = (_e76 + (c_4[6] * -0.3125));
     float _e82 = hat[2];
-    hat[2] = (_e82 + (c_5[6] * 6.5625));
+    hat[2] = (_e82 + (c_4[6] * 6.5625));
     float _e88 = hat[4];
-    hat[4] = (_e88 + (c_5[6] * -19.6875));
+    hat[4] = (_e88 + (c_4[6] * -19.6875));
     float _e94 = hat[6];
-    hat[6] = (_e94 + (c_5[6] * 14.4375));
+    hat[6] = (_e94 + (c_4[6] * 14.4375));
     float _e100 = hat[1];
-    hat[1] = (_e100 + (c_5[7] * -2.1875));
+    hat[1] = (_e100 + (c_4[7] * -2.1875));
     float _e106 = hat[3];
-    hat[3] = (_e106 + (c_5[7] * 19.6875));
+    hat[3] = (_e106 + (c_4[7] * 19.6875));
     float _e112 = hat[5];
-    hat[5] = (_e112 + (c_5[7] * -43.3125));
+    hat[5] = (_e112 + (c_4[7] * -43.3125));
     float _e118 = hat[7];
-    hat[7] = (_e118 + (c_5[7] * 26.8125));
+    hat[7] = (_e118 + (c_4[7] * 26.8125));
     float _e123[8] = hat;
     return _e123;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_8, float a_7, float b_6)
+AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, float sigma_6, AirlightHalf half_8, float a_7, float b_6)
 {
     float samples_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_3 = 0.0;
@@ -2343,16 +2284,16 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float yc_2 = (a_7 + r_9);
     const float _e11[8] = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-    bool loop_init_15 = true;
+    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+    bool loop_init_13 = true;
     while(true) {
-        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_15) {
+        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_13) {
             uint _e51 = i_9;
             i_9 = (_e51 + 1u);
         }
-        loop_init_15 = false;
+        loop_init_13 = false;
         uint _e19 = i_9;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
@@ -2361,10 +2302,10 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
         {
             uint _e22 = i_9;
             const float _e23 = airlight_node(_e6, _e22);
-            float y_7 = (yc_2 + (r_9 * _e23));
-            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_7);
+            float y_9 = (yc_2 + (r_9 * _e23));
+            const float _e26 = airlight_integrand(s_7, g_10, sigma_6, y_9);
             uint _e27 = i_9;
-            samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_7 * y_7)));
+            samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_9 * y_9)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
@@ -2551,13 +2492,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     const float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_22 = (abs(alpha) + abs(beta));
+    float x_23 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_22) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_23) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2567,7 +2508,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_22) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_23) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2577,7 +2518,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_22) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_23) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2587,7 +2528,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_22) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_23) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2597,7 +2538,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_22) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_23) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2607,7 +2548,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_22) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_23) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2617,7 +2558,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_22) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_23) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2627,7 +2568,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_22) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_23) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2648,7 +2589,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     return airlightpanel_3;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_9, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
+AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_11, float sigma_7, AirlightHalf half_9, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
 {
     bool local_17 = (bool)0;
     bool local_18 = (bool)0;
@@ -2660,7 +2601,7 @@ AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float si
     }
     bool _e16 = local_17;
     if (_e16) {
-        const AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_9, a_8, b_7);
+        const AirlightPanel _e17 = airlight_tail_panel(s_8, g_11, sigma_7, half_9, a_8, b_7);
         const AirlightPanel airlightpanel_4 = _e17;
         return airlightpanel_4;
     }
@@ -2671,11 +2612,11 @@ AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float si
     }
     bool _e29 = local_18;
     if (_e29) {
-        const AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
+        const AirlightPanel _e30 = airlight_y_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         const AirlightPanel airlightpanel_5 = _e30;
         return airlightpanel_5;
     }
-    const AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
+    const AirlightPanel _e31 = airlight_v_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     const AirlightPanel airlightpanel_6 = _e31;
     return airlightpanel_6;
 }
@@ -2686,7 +2627,7 @@ airlight_ret_Constructarray8_float4_ airlight_Constructarray8_float4_(float4 arg
     return ret;
 }
 
-float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4)
+float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4)
 {
     float4 list[8] = airlight_Constructarray8_float4_((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     float mass_over_1[8] = airlight_Constructarray8_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -2714,21 +2655,21 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     if (!((hi > lo))) {
         return 0.0;
     }
-    const float3 _e10 = airlight_singular_heights(s_10, sigma_8);
+    const float3 _e10 = airlight_singular_heights(s_9, sigma_8);
     float3 heights_v_1 = (half_10.second ? ((1.0).xxx / _e10) : _e10);
-    const float3 _e16 = airlight_singular_steps(s_10);
+    const float3 _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
-    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-    bool loop_init_16 = true;
+    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+    bool loop_init_14 = true;
     while(true) {
-        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_14) {
             uint _e213 = step_;
             step_ = (_e213 + 1u);
         }
-        loop_init_16 = false;
+        loop_init_14 = false;
         uint _e61 = step_;
         if ((_e61 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -2737,7 +2678,7 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            const AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
+            const AirlightPanel _e66 = airlight_panel(s_9, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -2766,16 +2707,16 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                 continue;
             }
             retire = 0u;
-            uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-            bool loop_init_17 = true;
+            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+            bool loop_init_15 = true;
             while(true) {
-                if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-                if (!loop_init_17) {
+                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_15) {
                     uint _e210 = retire;
                     retire = (_e210 + 1u);
                 }
-                loop_init_17 = false;
+                loop_init_15 = false;
                 uint _e96 = retire;
                 if ((_e96 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
@@ -2787,16 +2728,16 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                     mass_3 = 0.0;
                     worst = 0u;
                     i_10 = 0u;
-                    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_18 = true;
+                    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_16 = true;
                     while(true) {
-                        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-                        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-                        if (!loop_init_18) {
+                        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                        if (!loop_init_16) {
                             uint _e143 = i_10;
                             i_10 = (_e143 + 1u);
                         }
-                        loop_init_18 = false;
+                        loop_init_16 = false;
                         uint _e109 = i_10;
                         if ((_e109 < AIRLIGHT_PANEL_LIST)) {
                         } else {
@@ -2870,29 +2811,29 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                         list[min(uint(_e199), 7u)].w = 0.0;
                         continue;
                     }
-                    float mid = (wa + ((wb - wa) * 0.5));
+                    float mid_1 = (wa + ((wb - wa) * 0.5));
                     a_9 = wa;
-                    b_8 = mid;
+                    b_8 = mid_1;
                     uint _e207 = worst;
                     slot = _e207;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
             }
         }
     }
-    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-    bool loop_init_19 = true;
+    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-        if (!loop_init_19) {
+        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e232 = i_11;
             i_11 = (_e232 + 1u);
         }
-        loop_init_19 = false;
+        loop_init_17 = false;
         uint _e219 = i_11;
         if ((_e219 < AIRLIGHT_PANEL_LIST)) {
         } else {
@@ -2914,37 +2855,356 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     return _e234;
 }
 
+float airlight_atan2_upper(float y_3, float x_8)
+{
+    if ((x_8 > 0.0)) {
+        if ((y_3 <= x_8)) {
+            const float _e6 = airlight_atan((y_3 / x_8));
+            return _e6;
+        }
+        const float _e9 = airlight_atan((x_8 / y_3));
+        return (1.5707964 - _e9);
+    }
+    if ((y_3 <= -(x_8))) {
+        const float _e16 = airlight_atan((y_3 / -(x_8)));
+        return (AIRLIGHT_PI - _e16);
+    }
+    const float _e21 = airlight_atan((-(x_8) / y_3));
+    return (1.5707964 + _e21);
+}
+
+float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1)
+{
+    bool local_22 = (bool)0;
+
+    if (!(!((gap_1 > 0.0)))) {
+        local_22 = (gap_1 >= AIRLIGHT_FLT_MAX);
+    } else {
+        local_22 = true;
+    }
+    bool _e14 = local_22;
+    if (_e14) {
+        return 0.0;
+    }
+    const float _e21 = airlight_log1p((gap_1 + sqrt((gap_1 * (2.0 + gap_1)))));
+    float re_2 = ((side_1 > 0.0) ? -1.5707964 : 1.5707964);
+    const float _e30 = airlight_bernstein_rho(((re_2 - mid) / hw), (_e21 / hw));
+    return (step_1 / _e30);
+}
+
+float airlight_cut_length(float big_h_1, float v_s)
+{
+    float inv_h = (1.0 / big_h_1);
+    float w_3 = (v_s + inv_h);
+    float r_10 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
+    return (e_1 * inv_h);
+}
+
+float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_9, float j_1)
+{
+    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_9))) * j_1);
+    const bool _e13 = airlight_is_finite(plain_1);
+    if (_e13) {
+        return plain_1;
+    }
+    if (!((abs(j_1) > 0.0))) {
+        return 0.0;
+    }
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_9) + log(abs(j_1)))));
+}
+
+float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
+{
+    bool local_23 = (bool)0;
+    float y0_ = (float)0;
+    float y1_ = AIRLIGHT_FLT_MAX;
+    float y_cut = AIRLIGHT_FLT_MAX;
+    float psi1_ = 0.0;
+    float width = (float)0;
+    float degree_1 = 0.0;
+    float lambda_1 = (float)0;
+    float rate = 0.0;
+    float samples_3[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    float value_1 = 0.0;
+    float mass_4 = 0.0;
+    float magnitude = 0.0;
+    float f_max_5 = 0.0;
+    uint i_12 = 0u;
+    float sn = (float)0;
+    float cs = (float)0;
+    float y_4 = (float)0;
+    float one_plus = (float)0;
+    float one_minus = (float)0;
+    float m_3[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    bool local_24 = (bool)0;
+
+    if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        return float2(0.0, 0.0);
+    }
+    float h_3 = g_13.h;
+    float u0_ = ((g_13.t_lo - g_13.x_h) / h_3);
+    float u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
+    if (!(g_13.t_hi_infinite)) {
+        const bool _e21 = airlight_is_finite(u1_);
+        local_23 = _e21;
+    } else {
+        local_23 = false;
+    }
+    bool u1_finite = local_23;
+    float big_h_7 = (s_10.sigma_t * h_3);
+    const float _e26 = airlight_hypot_one(u0_);
+    y0_ = (u0_ + _e26);
+    if ((u0_ < 0.0)) {
+        const float _e31 = airlight_hypot_one(u0_);
+        y0_ = (1.0 / (_e31 - u0_));
+    }
+    if (u1_finite) {
+        const float _e37 = airlight_hypot_one(u1_);
+        y1_ = (u1_ + _e37);
+        if ((u1_ < 0.0)) {
+            const float _e41 = airlight_hypot_one(u1_);
+            y1_ = (1.0 / (_e41 - u1_));
+        }
+    }
+    if ((big_h_7 > 0.0)) {
+        float _e49 = y0_;
+        float _e50 = y0_;
+        const float _e51 = airlight_cut_length(big_h_7, _e50);
+        y_cut = (_e49 + _e51);
+    }
+    const float _e55 = airlight_atan2_upper(1.0, -(u0_));
+    const float _e59 = airlight_atan2_upper(1.0, u0_);
+    width = _e59;
+    float _e61 = y_cut;
+    float _e62 = y1_;
+    if ((_e61 < _e62)) {
+        float _e64 = y_cut;
+        const float _e67 = airlight_atan((1.0 / _e64));
+        psi1_ = (2.0 * _e67);
+        float _e70 = y_cut;
+        float _e71 = y0_;
+        float _e73 = y0_;
+        float _e74 = y_cut;
+        const float _e78 = airlight_atan2_upper((_e70 - _e71), (1.0 + (_e73 * _e74)));
+        width = (2.0 * _e78);
+    } else {
+        if (u1_finite) {
+            const float _e82 = airlight_atan2_upper(1.0, u1_);
+            psi1_ = _e82;
+            const float _e90 = airlight_atan2_upper(((g_13.t_hi - g_13.t_lo) / h_3), (1.0 + (u0_ * u1_)));
+            width = _e90;
+        }
+    }
+    float _e91 = width;
+    float hw_2 = (_e91 * 0.5);
+    if (!((hw_2 > 0.0))) {
+        return float2(0.0, 0.0);
+    }
+    float mid_2 = ((_e55 + hw_2) - 1.5707964);
+    float _e103 = y1_;
+    float _e104 = y_cut;
+    float y_end = min(_e103, _e104);
+    float _e106 = y0_;
+    float y_e = min((_e106 + (1.0 / big_h_7)), y_end);
+    if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        degree_1 = s_10.light_param_a;
+    }
+    float _e117 = degree_1;
+    lambda_1 = (sqrt(_e117) * hw_2);
+    if ((big_h_7 > 0.0)) {
+        float _e123 = lambda_1;
+        float _e124 = y0_;
+        lambda_1 = (_e123 + (min((big_h_7 * (y_end - _e124)), ((hw_2 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
+    }
+    float _e136 = lambda_1;
+    float predicted = (pow(_e136, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL);
+    if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
+        return float2(0.0, 0.0);
+    }
+    const float3 _e147 = airlight_singular_steps(s_10);
+    float step_3 = _e147.y;
+    float p0_4 = s_10.phase_param_a;
+    switch(s_10.phase_kind) {
+        case 2u:
+        case 4u: {
+            const float _e153 = airlight_hg_gap(p0_4);
+            const float _e154 = airlight_angle_floor(p0_4, _e153, mid_2, hw_2, step_3);
+            rate = _e154;
+            break;
+        }
+        case 3u: {
+            float a_22 = abs(p0_4);
+            const float _e163 = airlight_angle_floor(p0_4, ((a_22 > 0.0) ? ((1.0 - a_22) / a_22) : AIRLIGHT_FLT_MAX), mid_2, hw_2, step_3);
+            rate = _e163;
+            break;
+        }
+        case 5u: {
+            float p1_3 = s_10.phase_param_b;
+            const float _e165 = airlight_hg_gap(p0_4);
+            const float _e166 = airlight_angle_floor(p0_4, _e165, mid_2, hw_2, step_3);
+            const float _e167 = airlight_hg_gap(p1_3);
+            const float _e168 = airlight_angle_floor(p1_3, _e167, mid_2, hw_2, step_3);
+            rate = max(_e166, _e168);
+            break;
+        }
+        default: {
+            break;
+        }
+    }
+    float _e170 = rate;
+    if (!((pow(_e170, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+        return float2(0.0, 0.0);
+    }
+    if ((big_h_7 > 0.0)) {
+        float _e181 = rate;
+        const float _e186 = airlight_bernstein_rho(((1.5707964 - mid_2) / hw_2), 0.0);
+        rate = max(_e181, (1.0 / _e186));
+    }
+    const float2 _e190[4] = airlight_gauss_rule();
+    const float _e191[8] = airlight_zero_terms();
+    samples_3 = _e191;
+    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+    bool loop_init_18 = true;
+    while(true) {
+        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e314 = i_12;
+            i_12 = (_e314 + 1u);
+        }
+        loop_init_18 = false;
+        uint _e203 = i_12;
+        if ((_e203 < AIRLIGHT_TERMS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e206 = i_12;
+            const float _e207 = airlight_node(_e190, _e206);
+            float lower = (_e55 + (hw_2 * (1.0 + _e207)));
+            sn = 0.0;
+            cs = 0.0;
+            y_4 = 0.0;
+            one_plus = 0.0;
+            one_minus = 0.0;
+            if ((lower <= 1.5707964)) {
+                const float2 _e224 = airlight_cos_sin(lower);
+                cs = _e224.y;
+                sn = -(_e224.x);
+                one_minus = (1.0 + _e224.x);
+                float _e231 = cs;
+                float _e232 = one_minus;
+                y_4 = (_e231 / _e232);
+                float _e234 = cs;
+                float _e235 = cs;
+                float _e237 = one_minus;
+                one_plus = ((_e234 * _e235) / _e237);
+            } else {
+                float _e239 = psi1_;
+                const float2 _e244 = airlight_cos_sin((_e239 + (hw_2 * (1.0 - _e207))));
+                cs = _e244.y;
+                sn = _e244.x;
+                float _e247 = sn;
+                one_plus = (1.0 + _e247);
+                float _e250 = one_plus;
+                float _e251 = cs;
+                y_4 = (_e250 / _e251);
+                float _e253 = cs;
+                float _e254 = cs;
+                float _e256 = one_plus;
+                one_minus = ((_e253 * _e254) / _e256);
+            }
+            float _e258 = y_4;
+            float _e259 = y0_;
+            float _e266 = cs;
+            float weight_1 = ((_e266 > 0.0) ? exp(-(max((big_h_7 * (_e258 - _e259)), 0.0))) : 0.0);
+            float _e275 = sn;
+            float _e278 = cs;
+            const float _e281 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * _e275) + (g_13.d_c * _e278)));
+            float _e286 = sn;
+            float _e288 = one_plus;
+            float _e289 = one_minus;
+            const float _e290 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(_e286), _e288, _e289);
+            float f_2 = (_e281 * _e290);
+            float gw = (weight_1 * f_2);
+            uint _e293 = i_12;
+            samples_3[min(uint(_e293), 7u)] = gw;
+            uint _e295 = i_12;
+            float w_4 = _e190[min(uint(airlight_naga_div(_e295, 2u)), 3u)].y;
+            float _e300 = value_1;
+            value_1 = (_e300 + (w_4 * gw));
+            float _e303 = mass_4;
+            mass_4 = (_e303 + (w_4 * weight_1));
+            float _e306 = magnitude;
+            magnitude = (_e306 + (w_4 * abs(gw)));
+            float _e310 = f_max_5;
+            f_max_5 = max(_e310, abs(f_2));
+        }
+    }
+    float _e316[8] = samples_3;
+    const float _e317[8] = airlight_legendre(_e316);
+    const float _e318[8] = airlight_zero_terms();
+    m_3 = _e318;
+    m_3[0] = 2.0;
+    const float _e322 = airlight_tail_estimate(_e317);
+    float _e325[8] = m_3;
+    float _e326 = rate;
+    const float _e327 = airlight_error_factor(_e317, _e325, _e326);
+    float error_4 = ((2.0 * _e322) * _e327);
+    float _e330 = magnitude;
+    float noise_1 = (3.8146973e-6 * _e330);
+    float _e333 = value_1;
+    float _e336 = f_max_5;
+    float _e338 = mass_4;
+    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e333), ((AIRLIGHT_PANEL_FLOOR * _e336) * _e338)));
+    if (!((error_4 <= accepted))) {
+        local_24 = (error_4 <= noise_1);
+    } else {
+        local_24 = true;
+    }
+    bool _e348 = local_24;
+    if (!(_e348)) {
+        return float2(0.0, 0.0);
+    }
+    const float _e353 = airlight_hypot_one(u0_);
+    float r0_ = (h_3 * _e353);
+    float _e359 = value_1;
+    const float _e363 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (s_10.sigma_t * r0_), ((_e359 * hw_2) * 0.5));
+    return float2(1.0, _e363);
+}
+
 float airlight_bounded(float a_10)
 {
     const float _e1 = airlight_hypot_one(a_10);
     return (1.0 / (a_10 + _e1));
 }
 
-float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5)
+float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
 {
-    bool local_22 = (bool)0;
+    bool local_25 = (bool)0;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
 
-    float a0_ = (k_5 + (sigma_9 * d_el));
+    float a0_ = (k_4 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_5 - (sigma_9 * d_el));
+    float c0_ = (k_4 - (sigma_9 * d_el));
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         const bool _e21 = airlight_is_finite(scale_1);
-        local_22 = !(_e21);
+        local_25 = !(_e21);
     } else {
-        local_22 = true;
+        local_25 = true;
     }
-    bool _e24 = local_22;
+    bool _e24 = local_25;
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_22 = (a0_ / scale_1);
+    float a_23 = (a0_ / scale_1);
     float b_16 = (b0_ / scale_1);
     float c_9 = (c0_ / scale_1);
-    float disc_1 = ((b_16 * b_16) - ((4.0 * a_22) * c_9));
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_23) * c_9));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
@@ -2956,98 +3216,98 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_5)
     if ((q_2 != 0.0)) {
         r1_ = (c_9 / q_2);
     }
-    if ((a_22 != 0.0)) {
-        r2_2 = (q_2 / a_22);
+    if ((a_23 != 0.0)) {
+        r2_2 = (q_2 / a_23);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
     return float2(_e63, _e64);
 }
 
-float airlight_cosine(AirlightCanonical g_13, float sigma_10, float y_3)
+float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_5)
 {
-    float y2_1 = (y_3 * y_3);
-    return ((((1.0 - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1.0 + y2_1));
+    float y2_1 = (y_5 * y_5);
+    return ((((1.0 - y2_1) * (sigma_10 * g_14.d_el)) + ((y_5 + y_5) * g_14.d_c)) / (1.0 + y2_1));
 }
 
-bool airlight_dark(AirlightCanonical g_14, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
+bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
 {
-    bool local_23 = (bool)0;
-    bool local_24 = (bool)0;
-    float y1_ = (float)0;
-    bool local_25 = (bool)0;
     bool local_26 = (bool)0;
     bool local_27 = (bool)0;
+    float y1_1 = (float)0;
     bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
+    bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
 
-    const float _e9 = airlight_cosine(g_14, sigma_11, (0.5 * (lo_1 + hi_1)));
+    const float _e9 = airlight_cosine(g_15, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
         return false;
     }
     if ((lo_1 == half_11.y_lo)) {
-        const float _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_23 = !((_e17 < bound));
+        const float _e17 = airlight_cosine(g_15, sigma_11, lo_1);
+        local_26 = !((_e17 < bound));
     } else {
-        local_23 = false;
+        local_26 = false;
     }
-    bool _e21 = local_23;
+    bool _e21 = local_26;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
-        const float _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_24 = !((_e27 < bound));
+        const float _e27 = airlight_cosine(g_15, sigma_11, hi_1);
+        local_27 = !((_e27 < bound));
     } else {
-        local_24 = false;
+        local_27 = false;
     }
-    bool _e31 = local_24;
+    bool _e31 = local_27;
     if (_e31) {
         return false;
     }
-    float a_23 = (sigma_11 * g_14.d_el);
-    float d_2 = g_14.d_c;
+    float a_24 = (sigma_11 * g_15.d_el);
+    float d_2 = g_15.d_c;
     if ((d_2 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_23 * a_23) + (d_2 * d_2)));
-    y1_ = ((root_1 - a_23) / d_2);
-    if ((a_23 > 0.0)) {
-        y1_ = (d_2 / (a_23 + root_1));
+    float root_1 = sqrt(((a_24 * a_24) + (d_2 * d_2)));
+    y1_1 = ((root_1 - a_24) / d_2);
+    if ((a_24 > 0.0)) {
+        y1_1 = (d_2 / (a_24 + root_1));
     }
-    float _e50 = y1_;
+    float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
-    float _e53 = y1_;
+    float _e53 = y1_1;
     if ((_e53 > lo_1)) {
-        float _e57 = y1_;
-        local_25 = (_e57 < hi_1);
+        float _e57 = y1_1;
+        local_28 = (_e57 < hi_1);
     } else {
-        local_25 = false;
+        local_28 = false;
     }
-    bool _e60 = local_25;
+    bool _e60 = local_28;
     if (_e60) {
-        float _e63 = y1_;
-        const float _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_26 = !((_e64 < bound));
+        float _e63 = y1_1;
+        const float _e64 = airlight_cosine(g_15, sigma_11, _e63);
+        local_29 = !((_e64 < bound));
     } else {
-        local_26 = false;
+        local_29 = false;
     }
-    bool _e68 = local_26;
+    bool _e68 = local_29;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_27 = (y2_2 < hi_1);
+        local_30 = (y2_2 < hi_1);
     } else {
-        local_27 = false;
+        local_30 = false;
     }
-    bool _e75 = local_27;
+    bool _e75 = local_30;
     if (_e75) {
-        const float _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_28 = !((_e78 < bound));
+        const float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
+        local_31 = !((_e78 < bound));
     } else {
-        local_28 = false;
+        local_31 = false;
     }
-    bool _e82 = local_28;
+    bool _e82 = local_31;
     if (_e82) {
         return false;
     }
@@ -3060,26 +3320,26 @@ airlight_ret_Constructarray4_float_ airlight_Constructarray4_float_(float arg0, 
     return ret;
 }
 
-float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, AirlightHalf half_12, bool isotropic, inout float f_max_5)
+float airlight_half(AirlightScene s_11, AirlightCanonical g_16, float sigma_12, AirlightHalf half_12, bool isotropic, inout float f_max_6)
 {
     float cuts[4] = airlight_Constructarray4_float_(2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = (float)0;
     float k_out = (float)0;
-    uint i_12 = 0u;
-    bool local_29 = (bool)0;
     uint i_13 = 0u;
+    bool local_32 = (bool)0;
+    uint i_14 = 0u;
     uint j_2 = (uint)0;
     float total_2 = 0.0;
     float lo_2 = (float)0;
-    uint i_14 = 0u;
+    uint i_15 = 0u;
     float hi_2 = (float)0;
-    bool local_30 = (bool)0;
-    bool local_31 = (bool)0;
-    bool local_32 = (bool)0;
+    bool local_33 = (bool)0;
+    bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
 
     if (isotropic) {
-        const float _e7 = airlight_integrand(s_11, g_15, sigma_12, 0.0);
+        const float _e7 = airlight_integrand(s_11, g_16, sigma_12, 0.0);
         const float _e8 = airlight_moment_zero(half_12);
         return (_e7 * _e8);
     }
@@ -3088,81 +3348,81 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
         k_out = s_11.light_param_b;
         float _e25 = k_in;
         float _e26 = k_out;
-        float width_1 = (_e25 - _e26);
-        if ((width_1 <= AIRLIGHT_FLT_EPS)) {
+        float width_2 = (_e25 - _e26);
+        if ((width_2 <= AIRLIGHT_FLT_EPS)) {
             float _e30 = k_out;
-            k_in = (_e30 + (width_1 * 0.5));
+            k_in = (_e30 + (width_2 * 0.5));
             float _e34 = k_in;
             k_out = _e34;
         }
         float _e35 = k_out;
         dark_below = _e35;
         float _e38 = k_in;
-        const float2 _e39 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e38);
+        const float2 _e39 = airlight_crossings(sigma_12, g_16.d_el, g_16.d_c, _e38);
         float _e42 = k_out;
-        const float2 _e43 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e42);
+        const float2 _e43 = airlight_crossings(sigma_12, g_16.d_el, g_16.d_c, _e42);
         cuts = airlight_Constructarray4_float_(_e39.x, _e39.y, _e43.x, _e43.y);
+        uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+        bool loop_init_19 = true;
+        while(true) {
+            if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+            if (!loop_init_19) {
+                uint _e73 = i_13;
+                i_13 = (_e73 + 1u);
+            }
+            loop_init_19 = false;
+            uint _e51 = i_13;
+            if ((_e51 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e54 = i_13;
+                float _e56 = cuts[min(uint(_e54), 3u)];
+                if ((_e56 > half_12.y_lo)) {
+                    uint _e61 = i_13;
+                    float _e63 = cuts[min(uint(_e61), 3u)];
+                    local_32 = (_e63 < half_12.y_hi);
+                } else {
+                    local_32 = false;
+                }
+                bool _e67 = local_32;
+                if (!(_e67)) {
+                    uint _e69 = i_13;
+                    cuts[min(uint(_e69), 3u)] = 2.0;
+                }
+            }
+        }
         uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
         bool loop_init_20 = true;
         while(true) {
             if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
             loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
             if (!loop_init_20) {
-                uint _e73 = i_12;
-                i_12 = (_e73 + 1u);
+                uint _e114 = i_14;
+                i_14 = (_e114 + 1u);
             }
             loop_init_20 = false;
-            uint _e51 = i_12;
-            if ((_e51 < 4u)) {
-            } else {
-                break;
-            }
-            {
-                uint _e54 = i_12;
-                float _e56 = cuts[min(uint(_e54), 3u)];
-                if ((_e56 > half_12.y_lo)) {
-                    uint _e61 = i_12;
-                    float _e63 = cuts[min(uint(_e61), 3u)];
-                    local_29 = (_e63 < half_12.y_hi);
-                } else {
-                    local_29 = false;
-                }
-                bool _e67 = local_29;
-                if (!(_e67)) {
-                    uint _e69 = i_12;
-                    cuts[min(uint(_e69), 3u)] = 2.0;
-                }
-            }
-        }
-        uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-        bool loop_init_21 = true;
-        while(true) {
-            if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-            loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-            if (!loop_init_21) {
-                uint _e114 = i_13;
-                i_13 = (_e114 + 1u);
-            }
-            loop_init_21 = false;
-            uint _e77 = i_13;
+            uint _e77 = i_14;
             if ((_e77 < 3u)) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
-                uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-                bool loop_init_22 = true;
+                uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+                bool loop_init_21 = true;
                 while(true) {
-                    if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-                    loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                    if (!loop_init_22) {
+                    if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+                    loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+                    if (!loop_init_21) {
                         uint _e111 = j_2;
                         j_2 = (_e111 + 1u);
                     }
-                    loop_init_22 = false;
+                    loop_init_21 = false;
                     uint _e82 = j_2;
-                    uint _e84 = i_13;
+                    uint _e84 = i_14;
                     if ((_e82 < (3u - _e84))) {
                     } else {
                         break;
@@ -3188,34 +3448,34 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
         }
     }
     lo_2 = half_12.y_lo;
-    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e176 = i_14;
-            i_14 = (_e176 + 1u);
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e176 = i_15;
+            i_15 = (_e176 + 1u);
         }
-        loop_init_23 = false;
-        uint _e122 = i_14;
+        loop_init_22 = false;
+        uint _e122 = i_15;
         if ((_e122 < 5u)) {
         } else {
             break;
         }
         {
             hi_2 = half_12.y_hi;
-            uint _e127 = i_14;
+            uint _e127 = i_15;
             if ((_e127 < 4u)) {
-                uint _e132 = i_14;
+                uint _e132 = i_15;
                 float _e134 = cuts[min(uint(_e132), 3u)];
-                local_30 = (_e134 < 2.0);
+                local_33 = (_e134 < 2.0);
             } else {
-                local_30 = false;
+                local_33 = false;
             }
-            bool _e138 = local_30;
+            bool _e138 = local_33;
             if (_e138) {
-                uint _e139 = i_14;
+                uint _e139 = i_15;
                 float _e141 = cuts[min(uint(_e139), 3u)];
                 hi_2 = _e141;
             }
@@ -3226,31 +3486,31 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
                     float _e150 = dark_below;
                     float _e151 = lo_2;
                     float _e152 = hi_2;
-                    const bool _e153 = airlight_dark(g_15, sigma_12, half_12, _e150, _e151, _e152);
-                    local_31 = _e153;
+                    const bool _e153 = airlight_dark(g_16, sigma_12, half_12, _e150, _e151, _e152);
+                    local_34 = _e153;
                 } else {
-                    local_31 = false;
+                    local_34 = false;
                 }
-                bool _e155 = local_31;
+                bool _e155 = local_34;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
                     float _e159 = hi_2;
-                    const float _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_12, _e158, _e159, f_max_5);
+                    const float _e160 = airlight_integrate_piece(s_11, g_16, sigma_12, half_12, _e158, _e159, f_max_6);
                     total_2 = (_e157 + _e160);
                 }
                 float _e162 = hi_2;
                 lo_2 = _e162;
             }
-            uint _e163 = i_14;
+            uint _e163 = i_15;
             if ((_e163 < 4u)) {
-                uint _e168 = i_14;
+                uint _e168 = i_15;
                 float _e170 = cuts[min(uint(_e168), 3u)];
-                local_32 = (_e170 >= 2.0);
+                local_35 = (_e170 >= 2.0);
             } else {
-                local_32 = false;
+                local_35 = false;
             }
-            bool _e174 = local_32;
+            bool _e174 = local_35;
             if (_e174) {
                 break;
             }
@@ -3260,65 +3520,52 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_15, float sigma_12, 
     return _e178;
 }
 
-float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_8, float j_3)
+float airlight_on_line(AirlightScene s_12, AirlightCanonical g_17)
 {
-    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_8))) * j_3);
-    const bool _e13 = airlight_is_finite(plain_1);
-    if (_e13) {
-        return plain_1;
-    }
-    if (!((abs(j_3) > 0.0))) {
-        return 0.0;
-    }
-    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_8) + log(abs(j_3)))));
-}
-
-float airlight_on_line(AirlightScene s_12, AirlightCanonical g_16)
-{
-    bool local_33 = (bool)0;
+    bool local_36 = (bool)0;
     float span = (float)0;
     float e2_[10] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail = 0.0;
 
-    if (!(g_16.t_hi_infinite)) {
-        local_33 = (g_16.x_h > g_16.t_hi);
+    if (!(g_17.t_hi_infinite)) {
+        local_36 = (g_17.x_h > g_17.t_hi);
     } else {
-        local_33 = false;
+        local_36 = false;
     }
-    bool _e10 = local_33;
+    bool _e10 = local_36;
     if (_e10) {
-        const float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
+        const float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_17.d_el));
         const float _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1.0);
-        float f_2 = (_e16 * _e22);
-        float r0_ = (g_16.x_h - g_16.t_lo);
-        float r1_1 = (g_16.x_h - g_16.t_hi);
-        const float _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * r0_), (f_2 * (((g_16.t_hi - g_16.t_lo) / r0_) / r1_1)));
+        float f_3 = (_e16 * _e22);
+        float r0_1 = (g_17.x_h - g_17.t_lo);
+        float r1_1 = (g_17.x_h - g_17.t_hi);
+        const float _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * r0_1), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_1) / r1_1)));
         return _e41;
     }
-    const float _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_16.d_el);
+    const float _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_17.d_el);
     const float _e52 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, -1.0);
-    float f_3 = (_e46 * _e52);
-    float s0_ = (g_16.t_lo - g_16.x_h);
-    float s1_ = (g_16.t_hi - g_16.x_h);
+    float f_4 = (_e46 * _e52);
+    float s0_ = (g_17.t_lo - g_17.x_h);
+    float s1_ = (g_17.t_hi - g_17.x_h);
     if ((s_12.sigma_t == 0.0)) {
         span = (1.0 / s0_);
-        if (!(g_16.t_hi_infinite)) {
+        if (!(g_17.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        const float _e77 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, 0.0, (f_3 * _e75));
+        const float _e77 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, 0.0, (f_4 * _e75));
         return _e77;
     }
     float two_st = (s_12.sigma_t + s_12.sigma_t);
     const float _e82[10] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    const float _e93 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * s0_), ((f_3 * _e90) / s0_));
-    if (!(g_16.t_hi_infinite)) {
+    const float _e93 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * s0_), ((f_4 * _e90) / s0_));
+    if (!(g_17.t_hi_infinite)) {
         const float _e99[10] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        const float _e113 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, ((s_12.sigma_t * (s1_ - s0_)) + (s_12.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        const float _e113 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, ((s_12.sigma_t * (s1_ - s0_)) + (s_12.sigma_t * s1_)), ((f_4 * _e110) / s1_));
         tail = _e113;
     }
     const bool _e114 = airlight_is_finite(_e93);
@@ -3329,16 +3576,16 @@ float airlight_on_line(AirlightScene s_12, AirlightCanonical g_16)
     return (_e93 - _e116);
 }
 
-float airlight_optical(float big_h_1, float dv_1, bool infinite)
+float airlight_optical(float big_h_2, float dv_1, bool infinite)
 {
     bool negligible = (bool)0;
 
-    negligible = ((big_h_1 * dv_1) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h_2 * dv_1) < AIRLIGHT_FLT_EPS);
     if (infinite) {
-        negligible = (big_h_1 < 1.4210855e-14);
+        negligible = (big_h_2 < 1.4210855e-14);
     }
     bool _e9 = negligible;
-    return (_e9 ? 0.0 : big_h_1);
+    return (_e9 ? 0.0 : big_h_2);
 }
 
 AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -3353,39 +3600,39 @@ AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_h_2)
+float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_h_3)
 {
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_34 = (bool)0;
-    bool local_35 = (bool)0;
-    float x_9 = 0.0;
+    bool local_37 = (bool)0;
+    bool local_38 = (bool)0;
+    float x_10 = 0.0;
 
-    float h_3 = g_17.h;
-    float a_s = ((g_17.x_h - g_17.t_lo) / h_3);
+    float h_4 = g_18.h;
+    float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     const float _e8 = airlight_hypot_one(a_s);
     const float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_17.t_hi - g_17.x_h) / h_3);
-    if (!(g_17.t_hi_infinite)) {
+    float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
+    if (!(g_18.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
-        local_34 = _e24;
+        local_37 = _e24;
     } else {
-        local_34 = false;
+        local_37 = false;
     }
-    bool _e26 = local_34;
+    bool _e26 = local_37;
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_17.t_hi - g_17.t_lo) / h_3) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_18.t_hi - g_18.t_lo) / h_4) * ((_e9 + v_end) / (_e8 + _e27)));
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
-            local_35 = _e40;
+            local_38 = _e40;
         } else {
-            local_35 = false;
+            local_38 = false;
         }
-        bool _e42 = local_35;
+        bool _e42 = local_38;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3394,7 +3641,7 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     }
     float _e45 = dv_2;
     bool _e46 = infinite_1;
-    const float _e47 = airlight_optical(big_h_2, _e45, _e46);
+    const float _e47 = airlight_optical(big_h_3, _e45, _e46);
     float _e48 = v_e_2;
     float _e49 = dv_2;
     float _e50 = dv_2;
@@ -3402,26 +3649,17 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_17, float big_
     AirlightHalf half_15 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     const bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_9 = (big_h_2 * _e8);
+        x_10 = (big_h_3 * _e8);
     } else {
         if ((s_13.sigma_t > 0.0)) {
-            x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
+            x_10 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    float _e66 = x_9;
+    float _e66 = x_10;
     const float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
-    const float _e73 = airlight_integrand(s_13, g_17, -1.0, 0.0);
-    const float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
+    const float _e73 = airlight_integrand(s_13, g_18, -1.0, 0.0);
+    const float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
-}
-
-float airlight_cut_length(float big_h_3, float v_s)
-{
-    float inv_h = (1.0 / big_h_3);
-    float w_3 = (v_s + inv_h);
-    float r_10 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
-    return (e_1 * inv_h);
 }
 
 AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
@@ -3431,16 +3669,13 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
     return ret;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonical g_18)
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonical g_19)
 {
-    bool local_36 = (bool)0;
-    bool local_37 = (bool)0;
-    bool local_38 = (bool)0;
     bool local_39 = (bool)0;
-    float gap_1 = 0.0;
     bool local_40 = (bool)0;
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
+    float gap_2 = 0.0;
     bool local_43 = (bool)0;
     bool local_44 = (bool)0;
     bool local_45 = (bool)0;
@@ -3448,344 +3683,351 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     bool local_47 = (bool)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
-    float total_3 = 0.0;
-    float f_max_6 = 0.0;
-    bool behind_cut = false;
-    float t_end = (float)0;
     bool local_50 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
+    float total_3 = 0.0;
+    float f_max_7 = 0.0;
+    bool behind_cut = false;
+    float t_end = (float)0;
     bool local_53 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
+    bool local_54 = (bool)0;
+    bool local_55 = (bool)0;
+    bool local_56 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_54 = (bool)0;
-    bool local_55 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
-    bool local_56 = (bool)0;
     bool local_57 = (bool)0;
     bool local_58 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
+    bool local_59 = (bool)0;
+    bool local_60 = (bool)0;
+    bool local_61 = (bool)0;
 
-    float t0_ = g_18.t_lo;
-    float t1_ = g_18.t_hi;
-    if (!(g_18.t_hi_infinite)) {
-        local_36 = (t1_ > t0_);
+    float t0_ = g_19.t_lo;
+    float t1_ = g_19.t_hi;
+    if (!(g_19.t_hi_infinite)) {
+        local_39 = (t1_ > t0_);
     } else {
-        local_36 = true;
+        local_39 = true;
     }
-    bool _e10 = local_36;
+    bool _e10 = local_39;
     if (!(!(_e10))) {
-        local_37 = ((s_14.sigma_s * s_14.intensity) == 0.0);
+        local_40 = ((s_14.sigma_s * s_14.intensity) == 0.0);
     } else {
-        local_37 = true;
+        local_40 = true;
     }
-    bool _e21 = local_37;
+    bool _e21 = local_40;
     if (_e21) {
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
     }
-    float h_4 = g_18.h;
-    float x_h = g_18.x_h;
+    float h_5 = g_19.h;
+    float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
-        if (!(g_18.t_hi_infinite)) {
-            local_39 = (x_h <= t1_);
+        if (!(g_19.t_hi_infinite)) {
+            local_42 = (x_h <= t1_);
         } else {
-            local_39 = true;
+            local_42 = true;
         }
-        bool _e36 = local_39;
-        local_38 = _e36;
+        bool _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_38 = false;
+        local_41 = false;
     }
-    bool inside = local_38;
+    bool inside = local_41;
     if ((x_h < t0_)) {
-        gap_1 = (t0_ - x_h);
+        gap_2 = (t0_ - x_h);
     } else {
         if (!(inside)) {
-            gap_1 = (x_h - t1_);
+            gap_2 = (x_h - t1_);
         }
     }
     if (!(inside)) {
-        float _e48 = gap_1;
-        local_40 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
-    } else {
-        local_40 = false;
-    }
-    bool _e55 = local_40;
-    if (_e55) {
-        const float _e56 = airlight_on_line(s_14, g_18);
-        const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
-        return airlightresult_1;
-    }
-    if ((h_4 == 0.0)) {
-        const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_2;
-    }
-    float big_h_7 = (s_14.sigma_t * h_4);
-    if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_42 = (s_14.light_param_a == 0.0);
-        } else {
-            local_42 = false;
-        }
-        bool _e83 = local_42;
-        local_41 = _e83;
-    } else {
-        local_41 = true;
-    }
-    bool _e85 = local_41;
-    if (_e85) {
-        if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_45 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_45 = true;
-            }
-            bool _e104 = local_45;
-            if (_e104) {
-                local_46 = (s_14.phase_param_a == 0.0);
-            } else {
-                local_46 = false;
-            }
-            bool _e111 = local_46;
-            local_44 = _e111;
-        } else {
-            local_44 = true;
-        }
-        bool _e113 = local_44;
-        local_43 = _e113;
+        float _e48 = gap_2;
+        local_43 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_43 = false;
     }
-    bool isotropic_1 = local_43;
-    if (isotropic_1) {
-        local_47 = (t0_ < x_h);
-    } else {
-        local_47 = false;
+    bool _e55 = local_43;
+    if (_e55) {
+        const float _e56 = airlight_on_line(s_14, g_19);
+        const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
+        return airlightresult_1;
     }
-    bool _e120 = local_47;
-    if (_e120) {
-        if (!(g_18.t_hi_infinite)) {
-            local_49 = (x_h < t1_);
+    if ((h_5 == 0.0)) {
+        const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_2;
+    }
+    float big_h_8 = (s_14.sigma_t * h_5);
+    if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_45 = (s_14.light_param_a == 0.0);
         } else {
-            local_49 = true;
+            local_45 = false;
         }
-        bool _e129 = local_49;
-        local_48 = _e129;
+        bool _e83 = local_45;
+        local_44 = _e83;
     } else {
-        local_48 = false;
+        local_44 = true;
     }
-    bool _e131 = local_48;
+    bool _e85 = local_44;
+    if (_e85) {
+        if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+            } else {
+                local_48 = true;
+            }
+            bool _e104 = local_48;
+            if (_e104) {
+                local_49 = (s_14.phase_param_a == 0.0);
+            } else {
+                local_49 = false;
+            }
+            bool _e111 = local_49;
+            local_47 = _e111;
+        } else {
+            local_47 = true;
+        }
+        bool _e113 = local_47;
+        local_46 = _e113;
+    } else {
+        local_46 = false;
+    }
+    bool isotropic_1 = local_46;
+    if (isotropic_1) {
+        local_50 = (t0_ < x_h);
+    } else {
+        local_50 = false;
+    }
+    bool _e120 = local_50;
+    if (_e120) {
+        if (!(g_19.t_hi_infinite)) {
+            local_52 = (x_h < t1_);
+        } else {
+            local_52 = true;
+        }
+        bool _e129 = local_52;
+        local_51 = _e129;
+    } else {
+        local_51 = false;
+    }
+    bool _e131 = local_51;
     if (_e131) {
-        const float _e132 = airlight_whole_line(s_14, g_18, big_h_7);
+        const float _e132 = airlight_whole_line(s_14, g_19, big_h_8);
         const AirlightResult airlightresult_3 = ConstructAirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_3;
     }
+    if (!(isotropic_1)) {
+        const float2 _e138 = airlight_angle_route(s_14, g_19);
+        if ((_e138.x > 0.5)) {
+            const AirlightResult airlightresult_4 = ConstructAirlightResult(max(_e138.y, 0.0), AIRLIGHT_STATUS_OK);
+            return airlightresult_4;
+        }
+    }
     bool cut = !(isotropic_1);
     if ((t0_ < x_h)) {
-        float a_s_1 = ((x_h - t0_) / h_4);
+        float a_s_1 = ((x_h - t0_) / h_5);
         t_end = x_h;
-        if (!(g_18.t_hi_infinite)) {
-            local_50 = (t1_ < x_h);
+        if (!(g_19.t_hi_infinite)) {
+            local_53 = (t1_ < x_h);
         } else {
-            local_50 = false;
+            local_53 = false;
         }
-        bool _e154 = local_50;
-        if (_e154) {
+        bool _e164 = local_53;
+        if (_e164) {
             t_end = t1_;
         }
-        float _e155 = t_end;
-        float a_e = ((x_h - _e155) / h_4);
-        const float _e158 = airlight_hypot_one(a_s_1);
-        const float _e159 = airlight_hypot_one(a_e);
-        const float _e160 = airlight_bounded(a_s_1);
-        const float _e161 = airlight_bounded(a_e);
-        float _e162 = t_end;
-        float dy_1 = (((((_e162 - t0_) / h_4) * (1.0 + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        const float _e175 = airlight_optical(big_h_7, dy_1, false);
-        half_13 = ConstructAirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        float _e165 = t_end;
+        float a_e = ((x_h - _e165) / h_5);
+        const float _e168 = airlight_hypot_one(a_s_1);
+        const float _e169 = airlight_hypot_one(a_e);
+        const float _e170 = airlight_bounded(a_s_1);
+        const float _e171 = airlight_bounded(a_e);
+        float _e172 = t_end;
+        float dy_1 = (((((_e172 - t0_) / h_5) * (1.0 + ((a_s_1 + a_e) / (_e168 + _e169)))) * _e170) * _e171);
+        const float _e185 = airlight_optical(big_h_8, dy_1, false);
+        half_13 = ConstructAirlightHalf(false, _e185, _e170, _e171, dy_1, dy_1, false);
         if (cut) {
-            float _e182 = half_13.big_h;
-            local_51 = (_e182 > 0.0);
-        } else {
-            local_51 = false;
-        }
-        bool _e186 = local_51;
-        if (_e186) {
-            float _e188 = half_13.big_h;
-            const float _e189 = airlight_cut_length(_e188, _e160);
-            if ((_e189 < dy_1)) {
-                float _e193 = half_13.big_h;
-                half_13 = ConstructAirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
-                behind_cut = true;
-            }
-        }
-        AirlightHalf _e199 = half_13;
-        const float _e200 = airlight_half(s_14, g_18, -1.0, _e199, isotropic_1, f_max_6);
-        float _e201 = total_3;
-        const float _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_7 * _e158), _e200);
-        total_3 = (_e201 + _e205);
-    }
-    if (!(g_18.t_hi_infinite)) {
-        local_52 = (t1_ > x_h);
-    } else {
-        local_52 = true;
-    }
-    bool _e213 = local_52;
-    if (_e213) {
-        bool _e216 = behind_cut;
-        local_53 = !(_e216);
-    } else {
-        local_53 = false;
-    }
-    bool _e219 = local_53;
-    if (_e219) {
-        float t_start = max(t0_, x_h);
-        float a_s_2 = ((t_start - x_h) / h_4);
-        const float _e223 = airlight_hypot_one(a_s_2);
-        const float _e224 = airlight_bounded(a_s_2);
-        dy = _e224;
-        float a_e_1 = ((t1_ - x_h) / h_4);
-        if (!(g_18.t_hi_infinite)) {
-            const bool _e238 = airlight_is_finite(a_e_1);
-            local_54 = _e238;
+            float _e192 = half_13.big_h;
+            local_54 = (_e192 > 0.0);
         } else {
             local_54 = false;
         }
-        bool _e240 = local_54;
-        if (_e240) {
-            const float _e241 = airlight_bounded(a_e_1);
-            const float _e245 = airlight_hypot_one(a_e_1);
-            float dv_end_1 = (((t1_ - t_start) / h_4) * (1.0 + ((a_s_2 + a_e_1) / (_e223 + _e245))));
-            if ((_e241 > 0.0)) {
-                const bool _e255 = airlight_is_finite(dv_end_1);
-                local_55 = _e255;
-            } else {
-                local_55 = false;
+        bool _e196 = local_54;
+        if (_e196) {
+            float _e198 = half_13.big_h;
+            const float _e199 = airlight_cut_length(_e198, _e170);
+            if ((_e199 < dy_1)) {
+                float _e203 = half_13.big_h;
+                half_13 = ConstructAirlightHalf(false, _e203, _e170, (_e170 + _e199), _e199, _e199, false);
+                behind_cut = true;
             }
-            bool _e257 = local_55;
-            if (_e257) {
-                y_lo = _e241;
+        }
+        AirlightHalf _e209 = half_13;
+        const float _e210 = airlight_half(s_14, g_19, -1.0, _e209, isotropic_1, f_max_7);
+        float _e211 = total_3;
+        const float _e215 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, (big_h_8 * _e168), _e210);
+        total_3 = (_e211 + _e215);
+    }
+    if (!(g_19.t_hi_infinite)) {
+        local_55 = (t1_ > x_h);
+    } else {
+        local_55 = true;
+    }
+    bool _e223 = local_55;
+    if (_e223) {
+        bool _e226 = behind_cut;
+        local_56 = !(_e226);
+    } else {
+        local_56 = false;
+    }
+    bool _e229 = local_56;
+    if (_e229) {
+        float t_start = max(t0_, x_h);
+        float a_s_2 = ((t_start - x_h) / h_5);
+        const float _e233 = airlight_hypot_one(a_s_2);
+        const float _e234 = airlight_bounded(a_s_2);
+        dy = _e234;
+        float a_e_1 = ((t1_ - x_h) / h_5);
+        if (!(g_19.t_hi_infinite)) {
+            const bool _e248 = airlight_is_finite(a_e_1);
+            local_57 = _e248;
+        } else {
+            local_57 = false;
+        }
+        bool _e250 = local_57;
+        if (_e250) {
+            const float _e251 = airlight_bounded(a_e_1);
+            const float _e255 = airlight_hypot_one(a_e_1);
+            float dv_end_1 = (((t1_ - t_start) / h_5) * (1.0 + ((a_s_2 + a_e_1) / (_e233 + _e255))));
+            if ((_e251 > 0.0)) {
+                const bool _e265 = airlight_is_finite(dv_end_1);
+                local_58 = _e265;
+            } else {
+                local_58 = false;
+            }
+            bool _e267 = local_58;
+            if (_e267) {
+                y_lo = _e251;
                 dv_3 = dv_end_1;
-                float _e258 = dv_3;
-                float _e259 = y_lo;
-                dy = ((_e258 * _e259) * _e224);
+                float _e268 = dv_3;
+                float _e269 = y_lo;
+                dy = ((_e268 * _e269) * _e234);
                 infinite_2 = false;
             }
         }
-        float _e264 = dv_3;
-        bool _e265 = infinite_2;
-        const float _e266 = airlight_optical(big_h_7, _e264, _e265);
-        float _e267 = y_lo;
-        float _e268 = dy;
-        float _e269 = dv_3;
-        bool _e270 = infinite_2;
-        half_14 = ConstructAirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        float _e274 = dv_3;
+        bool _e275 = infinite_2;
+        const float _e276 = airlight_optical(big_h_8, _e274, _e275);
+        float _e277 = y_lo;
+        float _e278 = dy;
+        float _e279 = dv_3;
+        bool _e280 = infinite_2;
+        half_14 = ConstructAirlightHalf(true, _e276, _e277, _e234, _e278, _e279, _e280);
         if (cut) {
-            float _e276 = half_14.big_h;
-            local_56 = (_e276 > 0.0);
+            float _e286 = half_14.big_h;
+            local_59 = (_e286 > 0.0);
         } else {
-            local_56 = false;
+            local_59 = false;
         }
-        bool _e280 = local_56;
-        if (_e280) {
-            float _e282 = half_14.big_h;
-            const float _e285 = airlight_cut_length(_e282, (1.0 / _e224));
-            bool _e286 = infinite_2;
-            if (!(_e286)) {
-                float _e290 = dv_3;
-                local_57 = (_e285 < _e290);
+        bool _e290 = local_59;
+        if (_e290) {
+            float _e292 = half_14.big_h;
+            const float _e295 = airlight_cut_length(_e292, (1.0 / _e234));
+            bool _e296 = infinite_2;
+            if (!(_e296)) {
+                float _e300 = dv_3;
+                local_60 = (_e295 < _e300);
             } else {
-                local_57 = true;
+                local_60 = true;
             }
-            bool _e293 = local_57;
-            if (_e293) {
-                float cut_y_lo = (_e224 / (1.0 + (_e224 * _e285)));
+            bool _e303 = local_60;
+            if (_e303) {
+                float cut_y_lo = (_e234 / (1.0 + (_e234 * _e295)));
                 if ((cut_y_lo > 0.0)) {
-                    const bool _e302 = airlight_is_finite(_e285);
-                    local_58 = _e302;
+                    const bool _e312 = airlight_is_finite(_e295);
+                    local_61 = _e312;
                 } else {
-                    local_58 = false;
+                    local_61 = false;
                 }
-                bool _e304 = local_58;
-                if (_e304) {
-                    float _e307 = half_14.big_h;
-                    half_14 = ConstructAirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                bool _e314 = local_61;
+                if (_e314) {
+                    float _e317 = half_14.big_h;
+                    half_14 = ConstructAirlightHalf(true, _e317, cut_y_lo, _e234, ((_e295 * cut_y_lo) * _e234), _e295, false);
                 }
             }
         }
-        AirlightHalf _e313 = half_14;
-        const float _e314 = airlight_half(s_14, g_18, 1.0, _e313, isotropic_1, f_max_6);
-        float _e315 = total_3;
-        const float _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_7 * _e223)), _e314);
-        total_3 = (_e315 + _e323);
+        AirlightHalf _e323 = half_14;
+        const float _e324 = airlight_half(s_14, g_19, 1.0, _e323, isotropic_1, f_max_7);
+        float _e325 = total_3;
+        const float _e333 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, ((s_14.sigma_t * (t_start - t0_)) + (big_h_8 * _e233)), _e324);
+        total_3 = (_e325 + _e333);
     }
-    float _e325 = total_3;
-    const AirlightResult airlightresult_4 = ConstructAirlightResult(max(_e325, 0.0), AIRLIGHT_STATUS_OK);
-    return airlightresult_4;
+    float _e335 = total_3;
+    const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e335, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_5;
 }
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_59 = (bool)0;
-    bool local_60 = (bool)0;
+    bool local_62 = (bool)0;
+    bool local_63 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_59 = _e6;
+        local_62 = _e6;
     } else {
-        local_59 = false;
+        local_62 = false;
     }
-    bool _e8 = local_59;
+    bool _e8 = local_62;
     if (_e8) {
         const bool _e12 = airlight_is_finite(v.z);
-        local_60 = _e12;
+        local_63 = _e12;
     } else {
-        local_60 = false;
+        local_63 = false;
     }
-    bool _e14 = local_60;
+    bool _e14 = local_63;
     return _e14;
 }
 
 float airlight_safe_length(float3 v_1)
 {
-    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_6 == 0.0)) {
+    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_7 == 0.0)) {
         return 0.0;
     }
-    return (m_6 * length((v_1 / (m_6).xxx)));
+    return (m_7 * length((v_1 / (m_7).xxx)));
 }
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_61 = (bool)0;
+    bool local_64 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_61 = _e6;
+        local_64 = _e6;
     } else {
-        local_61 = false;
+        local_64 = false;
     }
-    bool _e8 = local_61;
+    bool _e8 = local_64;
     return _e8;
 }
 
 float3 airlight_normalize(float3 v_3)
 {
-    float m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_1 = (v_3 / (m_7).xxx);
+    float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    float3 u_1 = (v_3 / (m_8).xxx);
     return (u_1 / (length(u_1)).xxx);
 }
 
 bool airlight_valid(AirlightScene s_15)
 {
-    bool local_62 = (bool)0;
-    bool local_63 = (bool)0;
-    bool local_64 = (bool)0;
     bool local_65 = (bool)0;
     bool local_66 = (bool)0;
     bool local_67 = (bool)0;
@@ -3793,10 +4035,10 @@ bool airlight_valid(AirlightScene s_15)
     bool local_69 = (bool)0;
     bool local_70 = (bool)0;
     bool local_71 = (bool)0;
-    bool ok = (bool)0;
     bool local_72 = (bool)0;
     bool local_73 = (bool)0;
     bool local_74 = (bool)0;
+    bool ok = (bool)0;
     bool local_75 = (bool)0;
     bool local_76 = (bool)0;
     bool local_77 = (bool)0;
@@ -3817,102 +4059,105 @@ bool airlight_valid(AirlightScene s_15)
     bool local_92 = (bool)0;
     bool local_93 = (bool)0;
     bool local_94 = (bool)0;
+    bool local_95 = (bool)0;
+    bool local_96 = (bool)0;
+    bool local_97 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_15.origin);
     if (_e2) {
         const bool _e6 = airlight_vec_finite(s_15.dir);
-        local_62 = _e6;
-    } else {
-        local_62 = false;
-    }
-    bool _e8 = local_62;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_15.dir);
-        local_63 = _e12;
-    } else {
-        local_63 = false;
-    }
-    bool _e14 = local_63;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_15.t_min);
-        local_64 = _e18;
-    } else {
-        local_64 = false;
-    }
-    bool _e20 = local_64;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_15.light_position);
-        local_65 = _e24;
+        local_65 = _e6;
     } else {
         local_65 = false;
     }
-    bool _e26 = local_65;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_15.intensity);
-        local_66 = _e30;
+    bool _e8 = local_65;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_15.dir);
+        local_66 = _e12;
     } else {
         local_66 = false;
     }
-    bool _e32 = local_66;
-    if (_e32) {
-        local_67 = (s_15.intensity >= 0.0);
+    bool _e14 = local_66;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_15.t_min);
+        local_67 = _e18;
     } else {
         local_67 = false;
     }
-    bool _e39 = local_67;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_15.sigma_s);
-        local_68 = _e43;
+    bool _e20 = local_67;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_15.light_position);
+        local_68 = _e24;
     } else {
         local_68 = false;
     }
-    bool _e45 = local_68;
-    if (_e45) {
-        local_69 = (s_15.sigma_s >= 0.0);
+    bool _e26 = local_68;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_15.intensity);
+        local_69 = _e30;
     } else {
         local_69 = false;
     }
-    bool _e52 = local_69;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_15.sigma_t);
-        local_70 = _e56;
+    bool _e32 = local_69;
+    if (_e32) {
+        local_70 = (s_15.intensity >= 0.0);
     } else {
         local_70 = false;
     }
-    bool _e58 = local_70;
-    if (_e58) {
-        local_71 = (s_15.sigma_t >= 0.0);
+    bool _e39 = local_70;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_15.sigma_s);
+        local_71 = _e43;
     } else {
         local_71 = false;
     }
-    bool _e65 = local_71;
+    bool _e45 = local_71;
+    if (_e45) {
+        local_72 = (s_15.sigma_s >= 0.0);
+    } else {
+        local_72 = false;
+    }
+    bool _e52 = local_72;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_15.sigma_t);
+        local_73 = _e56;
+    } else {
+        local_73 = false;
+    }
+    bool _e58 = local_73;
+    if (_e58) {
+        local_74 = (s_15.sigma_t >= 0.0);
+    } else {
+        local_74 = false;
+    }
+    bool _e65 = local_74;
     ok = _e65;
     if (((s_15.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             const bool _e76 = airlight_is_finite(s_15.t_max);
-            local_72 = _e76;
+            local_75 = _e76;
         } else {
-            local_72 = false;
+            local_75 = false;
         }
-        bool _e78 = local_72;
+        bool _e78 = local_75;
         if (_e78) {
-            local_73 = (s_15.t_min <= s_15.t_max);
+            local_76 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_73 = false;
+            local_76 = false;
         }
-        bool _e85 = local_73;
+        bool _e85 = local_76;
         ok = _e85;
     }
     if ((s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             const bool _e93 = airlight_vec_finite(s_15.light_end);
-            local_74 = _e93;
+            local_77 = _e93;
         } else {
-            local_74 = false;
+            local_77 = false;
         }
-        bool _e95 = local_74;
+        bool _e95 = local_77;
         ok = _e95;
     } else {
         if ((s_15.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -3923,37 +4168,37 @@ bool airlight_valid(AirlightScene s_15)
         bool _e103 = ok;
         if (_e103) {
             const bool _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_75 = _e107;
-        } else {
-            local_75 = false;
-        }
-        bool _e109 = local_75;
-        if (_e109) {
-            local_76 = (s_15.brdf_albedo >= 0.0);
-        } else {
-            local_76 = false;
-        }
-        bool _e116 = local_76;
-        if (_e116) {
-            local_77 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_77 = false;
-        }
-        bool _e123 = local_77;
-        if (_e123) {
-            local_78 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_78 = _e107;
         } else {
             local_78 = false;
         }
-        bool _e130 = local_78;
-        if (_e130) {
-            const float _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
-            const bool _e137 = airlight_is_finite(_e136);
-            local_79 = _e137;
+        bool _e109 = local_78;
+        if (_e109) {
+            local_79 = (s_15.brdf_albedo >= 0.0);
         } else {
             local_79 = false;
         }
-        bool _e139 = local_79;
+        bool _e116 = local_79;
+        if (_e116) {
+            local_80 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_80 = false;
+        }
+        bool _e123 = local_80;
+        if (_e123) {
+            local_81 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_81 = false;
+        }
+        bool _e130 = local_81;
+        if (_e130) {
+            const float _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
+            const bool _e137 = airlight_is_finite(_e136);
+            local_82 = _e137;
+        } else {
+            local_82 = false;
+        }
+        bool _e139 = local_82;
         ok = _e139;
     } else {
         if ((s_15.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -3964,72 +4209,72 @@ bool airlight_valid(AirlightScene s_15)
         bool _e147 = ok;
         if (_e147) {
             const bool _e151 = airlight_vec_finite(s_15.light_axis);
-            local_80 = _e151;
-        } else {
-            local_80 = false;
-        }
-        bool _e153 = local_80;
-        if (_e153) {
-            const bool _e157 = airlight_normalisable(s_15.light_axis);
-            local_81 = _e157;
-        } else {
-            local_81 = false;
-        }
-        bool _e159 = local_81;
-        if (_e159) {
-            local_82 = (s_15.light_param_a >= 0.0);
-        } else {
-            local_82 = false;
-        }
-        bool _e166 = local_82;
-        if (_e166) {
-            local_83 = (s_15.light_param_a <= 1024.0);
+            local_83 = _e151;
         } else {
             local_83 = false;
         }
-        bool _e173 = local_83;
-        if (_e173) {
-            local_84 = (frac((s_15.light_param_a * 0.5)) == 0.0);
+        bool _e153 = local_83;
+        if (_e153) {
+            const bool _e157 = airlight_normalisable(s_15.light_axis);
+            local_84 = _e157;
         } else {
             local_84 = false;
         }
-        bool _e183 = local_84;
+        bool _e159 = local_84;
+        if (_e159) {
+            local_85 = (s_15.light_param_a >= 0.0);
+        } else {
+            local_85 = false;
+        }
+        bool _e166 = local_85;
+        if (_e166) {
+            local_86 = (s_15.light_param_a <= 1024.0);
+        } else {
+            local_86 = false;
+        }
+        bool _e173 = local_86;
+        if (_e173) {
+            local_87 = (frac((s_15.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_87 = false;
+        }
+        bool _e183 = local_87;
         ok = _e183;
     } else {
         if ((s_15.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
                 const bool _e191 = airlight_vec_finite(s_15.light_axis);
-                local_85 = _e191;
-            } else {
-                local_85 = false;
-            }
-            bool _e193 = local_85;
-            if (_e193) {
-                const bool _e197 = airlight_normalisable(s_15.light_axis);
-                local_86 = _e197;
-            } else {
-                local_86 = false;
-            }
-            bool _e199 = local_86;
-            if (_e199) {
-                local_87 = (s_15.light_param_b < s_15.light_param_a);
-            } else {
-                local_87 = false;
-            }
-            bool _e206 = local_87;
-            if (_e206) {
-                local_88 = (s_15.light_param_b >= -1.0);
+                local_88 = _e191;
             } else {
                 local_88 = false;
             }
-            bool _e213 = local_88;
-            if (_e213) {
-                local_89 = (s_15.light_param_a <= 1.0);
+            bool _e193 = local_88;
+            if (_e193) {
+                const bool _e197 = airlight_normalisable(s_15.light_axis);
+                local_89 = _e197;
             } else {
                 local_89 = false;
             }
-            bool _e220 = local_89;
+            bool _e199 = local_89;
+            if (_e199) {
+                local_90 = (s_15.light_param_b < s_15.light_param_a);
+            } else {
+                local_90 = false;
+            }
+            bool _e206 = local_90;
+            if (_e206) {
+                local_91 = (s_15.light_param_b >= -1.0);
+            } else {
+                local_91 = false;
+            }
+            bool _e213 = local_91;
+            if (_e213) {
+                local_92 = (s_15.light_param_a <= 1.0);
+            } else {
+                local_92 = false;
+            }
+            bool _e220 = local_92;
             ok = _e220;
         } else {
             if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -4048,40 +4293,40 @@ bool airlight_valid(AirlightScene s_15)
         case 4u: {
             bool _e230 = ok;
             if (_e230) {
-                local_90 = g_ok;
+                local_93 = g_ok;
             } else {
-                local_90 = false;
+                local_93 = false;
             }
-            bool _e234 = local_90;
+            bool _e234 = local_93;
             ok = _e234;
             break;
         }
         case 5u: {
             bool _e235 = ok;
             if (_e235) {
-                local_91 = g_ok;
-            } else {
-                local_91 = false;
-            }
-            bool _e239 = local_91;
-            if (_e239) {
-                local_92 = (abs(s_15.phase_param_b) < 1.0);
-            } else {
-                local_92 = false;
-            }
-            bool _e247 = local_92;
-            if (_e247) {
-                local_93 = (s_15.phase_param_c >= 0.0);
-            } else {
-                local_93 = false;
-            }
-            bool _e254 = local_93;
-            if (_e254) {
-                local_94 = (s_15.phase_param_c <= 1.0);
+                local_94 = g_ok;
             } else {
                 local_94 = false;
             }
-            bool _e261 = local_94;
+            bool _e239 = local_94;
+            if (_e239) {
+                local_95 = (abs(s_15.phase_param_b) < 1.0);
+            } else {
+                local_95 = false;
+            }
+            bool _e247 = local_95;
+            if (_e247) {
+                local_96 = (s_15.phase_param_c >= 0.0);
+            } else {
+                local_96 = false;
+            }
+            bool _e254 = local_96;
+            if (_e254) {
+                local_97 = (s_15.phase_param_c <= 1.0);
+            } else {
+                local_97 = false;
+            }
+            bool _e261 = local_97;
             ok = _e261;
             break;
         }
@@ -4131,9 +4376,9 @@ AirlightCanonical airlight_canonical(AirlightScene s_16)
     return airlightcanonical;
 }
 
-float airlight_opaque(float x_10, uint key)
+float airlight_opaque(float x_11, uint key)
 {
-    return asfloat((asuint(x_10) ^ key));
+    return asfloat((asuint(x_11) ^ key));
 }
 
 float2 airlight_two_sum(float a_12, float b_9, uint key_1)
@@ -4146,9 +4391,9 @@ float2 airlight_two_sum(float a_12, float b_9, uint key_1)
     return float2(_e4, (_e12 ? e_2 : 0.0));
 }
 
-float airlight_split_high(float x_11)
+float airlight_split_high(float x_12)
 {
-    return asfloat(((asuint(x_11) + 2048u) & 4294963200u));
+    return asfloat(((asuint(x_12) + 2048u) & 4294963200u));
 }
 
 float2 airlight_two_product(float a_13, float b_10, uint key_2)
@@ -4163,10 +4408,10 @@ float2 airlight_two_product(float a_13, float b_10, uint key_2)
     return float2(_e4, (_e17 ? e_3 : 0.0));
 }
 
-float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, uint key_3)
+float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, uint key_3)
 {
     const float2 _e5 = airlight_two_product(a_14, b_11, key_3);
-    const float2 _e6 = airlight_two_product(c_6, d_1, key_3);
+    const float2 _e6 = airlight_two_product(c_5, d_1, key_3);
     const float _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     const float _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
@@ -4174,30 +4419,30 @@ float airlight_diff_of_products(float a_14, float b_11, float c_6, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_95 = (bool)0;
-    bool local_96 = (bool)0;
+    bool local_98 = (bool)0;
+    bool local_99 = (bool)0;
 
-    float m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
-    if (!((m_8 == 0.0))) {
-        if ((m_8 >= 9.313226e-10)) {
-            local_96 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+    float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if (!((m_9 == 0.0))) {
+        if ((m_9 >= 9.313226e-10)) {
+            local_99 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_96 = false;
+            local_99 = false;
         }
-        bool _e21 = local_96;
-        local_95 = _e21;
+        bool _e21 = local_99;
+        local_98 = _e21;
     } else {
-        local_95 = true;
+        local_98 = true;
     }
-    bool _e23 = local_95;
+    bool _e23 = local_98;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain)
 {
-    bool local_97 = (bool)0;
+    bool local_100 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_98 = (bool)0;
+    bool local_101 = (bool)0;
     float3 a_15 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_17.flags > 1u));
@@ -4210,11 +4455,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain)
     const bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir_2);
-        local_97 = !(_e38);
+        local_100 = !(_e38);
     } else {
-        local_97 = true;
+        local_100 = true;
     }
-    bool _e41 = local_97;
+    bool _e41 = local_100;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -4222,14 +4467,14 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain)
     const float _e46 = airlight_diff_of_products(hi_3.y, dir_2.z, hi_3.z, dir_2.y, key_4);
     const float _e59 = airlight_diff_of_products(hi_3.z, dir_2.x, hi_3.x, dir_2.z, key_4);
     const float _e72 = airlight_diff_of_products(hi_3.x, dir_2.y, hi_3.y, dir_2.x, key_4);
-    float3 w_4 = float3((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
-    const bool _e82 = airlight_vec_finite(w_4);
+    float3 w_5 = float3((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
+    const bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_4);
+    const float _e85 = airlight_safe_length(w_5);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -4238,14 +4483,14 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain)
         return airlightcanonical_3;
     }
     const float _e93 = airlight_safe_length(dir_2);
-    float h_5 = (_e85 / _e93);
-    const bool _e95 = airlight_is_finite(h_5);
+    float h_6 = (_e85 / _e93);
+    const bool _e95 = airlight_is_finite(h_6);
     if (_e95) {
-        local_98 = (h_5 > 0.0);
+        local_101 = (h_6 > 0.0);
     } else {
-        local_98 = false;
+        local_101 = false;
     }
-    bool _e101 = local_98;
+    bool _e101 = local_101;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -4255,11 +4500,11 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain)
         a_15 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir_2);
-    const float3 _e114 = airlight_normalize(w_4);
-    float3 n_3 = -(cross(_e113, _e114));
-    out_2.h = h_5;
+    const float3 _e114 = airlight_normalize(w_5);
+    float3 n_2 = -(cross(_e113, _e114));
+    out_2.h = h_6;
     float3 _e119 = a_15;
-    out_2.d_c = dot(n_3, _e119);
+    out_2.d_c = dot(n_2, _e119);
     AirlightCanonical _e121 = out_2;
     const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
@@ -4277,9 +4522,9 @@ airlight_ret_airlight_kronrod_rule airlight_kronrod_rule()
     return airlight_Constructarray4_float3_(float3(0.96049124, 0.10465623, 0.0), float3(0.7745967, 0.26848808, 0.5555556), float3(0.43424374, 0.4013974, 0.0), float3(0.0, 0.45091653, 0.8888889));
 }
 
-float4 airlight_list_get(AirlightPanelList l, uint i_15)
+float4 airlight_list_get(AirlightPanelList l, uint i_16)
 {
-    switch(i_15) {
+    switch(i_16) {
         case 0u: {
             return l.panel_a;
         }
@@ -4301,9 +4546,9 @@ float4 airlight_list_get(AirlightPanelList l, uint i_15)
     }
 }
 
-void airlight_list_set(inout AirlightPanelList l_1, uint i_16, float4 v_5)
+void airlight_list_set(inout AirlightPanelList l_1, uint i_17, float4 v_5)
 {
-    switch(i_16) {
+    switch(i_17) {
         case 0u: {
             l_1.panel_a = v_5;
             return;
@@ -4418,72 +4663,72 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
     return airlightlistscan;
 }
 
-float airlight_asinh(float x_12)
+float airlight_asinh(float x_13)
 {
     float r_4 = (float)0;
 
-    float a_24 = abs(x_12);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
-    if ((a_24 <= 4096.0)) {
-        const float _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1.0 + sqrt((1.0 + (a_24 * a_24)))))));
+    float a_25 = abs(x_13);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_25));
+    if ((a_25 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1.0 + sqrt((1.0 + (a_25 * a_25)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return ((x_12 < 0.0) ? -(_e19) : _e18);
+    return ((x_13 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_19, float s_18)
+float airlight_to_w(AirlightOuter g_20, float s_18)
 {
-    if ((g_19.scale > 0.0)) {
-        const float _e9 = airlight_asinh(((s_18 - g_19.s_star) / g_19.scale));
+    if ((g_20.scale > 0.0)) {
+        const float _e9 = airlight_asinh(((s_18 - g_20.s_star) / g_20.scale));
         return _e9;
     }
     return s_18;
 }
 
-float2 airlight_cos_sin_half_turn(float x_13)
+float2 airlight_cos_sin_half_turn(float x_14)
 {
-    float r_11 = (x_13 - 1.5707964);
+    float r_11 = (x_14 - 1.5707964);
     float z_11 = (r_11 * r_11);
     float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
     float sin_r = (r_11 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_14)
+float airlight_acos(float x_15)
 {
-    float a_25 = abs(x_14);
-    const float _e8 = airlight_atan(sqrt(((1.0 - a_25) / (1.0 + a_25))));
-    return ((x_14 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    float a_26 = abs(x_15);
+    const float _e8 = airlight_atan(sqrt(((1.0 - a_26) / (1.0 + a_26))));
+    return ((x_15 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_7, float s_19)
+float airlight_angle(float c_6, float s_19)
 {
-    if ((s_19 <= c_7)) {
-        const float _e4 = airlight_atan((s_19 / c_7));
+    if ((s_19 <= c_6)) {
+        const float _e4 = airlight_atan((s_19 / c_6));
         return _e4;
     }
-    if ((s_19 <= -(c_7))) {
-        const float _e10 = airlight_atan((s_19 / -(c_7)));
+    if ((s_19 <= -(c_6))) {
+        const float _e10 = airlight_atan((s_19 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
-    if ((c_7 >= 0.0)) {
-        const float _e16 = airlight_atan((c_7 / s_19));
+    if ((c_6 >= 0.0)) {
+        const float _e16 = airlight_atan((c_6 / s_19));
         return (1.5707964 - _e16);
     }
-    const float _e21 = airlight_atan((-(c_7) / s_19));
+    const float _e21 = airlight_atan((-(c_6) / s_19));
     return (1.5707964 + _e21);
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
 {
-    float a_26 = (cos_a * cos_g);
+    float a_27 = (cos_a * cos_g);
     float b_17 = (sin_a * sin_g);
-    if ((b_17 <= abs(a_26))) {
-        return ((a_26 > 0.0) ? AIRLIGHT_PI : 0.0);
+    if ((b_17 <= abs(a_27))) {
+        return ((a_27 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    const float _e18 = airlight_acos(clamp((-(a_26) / b_17), -1.0, 1.0));
+    const float _e18 = airlight_acos(clamp((-(a_27) / b_17), -1.0, 1.0));
     return _e18;
 }
 
@@ -4525,40 +4770,40 @@ airlight_ret_Constructarray2_float_ airlight_Constructarray2_float_(float arg0, 
 
 AirlightOuter airlight_surface(AirlightScene s_21)
 {
-    AirlightOuter g_20 = (AirlightOuter)0;
-    bool local_99 = (bool)0;
+    AirlightOuter g_21 = (AirlightOuter)0;
+    bool local_102 = (bool)0;
     float3 u = (float3)0;
     float cuts_1[2] = {0.0, 0.0};
-    uint k_6 = 0u;
-    uint i_17 = 0u;
-    bool local_100 = (bool)0;
+    uint k_5 = 0u;
     uint i_18 = 0u;
+    bool local_103 = (bool)0;
+    uint i_19 = 0u;
 
     const AirlightOuter _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
-    g_20 = _e2;
+    g_21 = _e2;
     float3 to_light_1 = (s_21.light_position - s_21.origin);
     const float _e7 = airlight_safe_length(to_light_1);
     if (!((s_21.intensity == 0.0))) {
-        local_99 = (s_21.sigma_s == 0.0);
+        local_102 = (s_21.sigma_s == 0.0);
     } else {
-        local_99 = true;
+        local_102 = true;
     }
-    bool _e18 = local_99;
+    bool _e18 = local_102;
     if (_e18) {
-        g_20.outcome = 1u;
-        AirlightOuter _e21 = g_20;
+        g_21.outcome = 1u;
+        AirlightOuter _e21 = g_21;
         const AirlightOuter airlightouter_1 = _e21;
         return airlightouter_1;
     }
     if (!((_e7 > 0.0))) {
-        g_20.outcome = 2u;
-        AirlightOuter _e27 = g_20;
+        g_21.outcome = 2u;
+        AirlightOuter _e27 = g_21;
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
     if ((s_21.brdf_albedo == 0.0)) {
-        g_20.outcome = 1u;
-        AirlightOuter _e33 = g_20;
+        g_21.outcome = 1u;
+        AirlightOuter _e33 = g_21;
         const AirlightOuter airlightouter_3 = _e33;
         return airlightouter_3;
     }
@@ -4573,11 +4818,11 @@ AirlightOuter airlight_surface(AirlightScene s_21)
         const float3 _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u = _e64;
     }
-    g_20.l = l_3;
+    g_21.l = l_3;
     float3 _e67 = u;
-    g_20.u = _e67;
-    g_20.cos_a = cos_a_1;
-    g_20.sin_a = _e41;
+    g_21.u = _e67;
+    g_21.cos_a = cos_a_1;
+    g_21.sin_a = _e41;
     const float _e71 = airlight_angle(cos_a_1, _e41);
     float first = abs((1.5707964 - _e71));
     cuts_1 = airlight_Constructarray2_float_(first, (AIRLIGHT_PI - first));
@@ -4589,71 +4834,71 @@ AirlightOuter airlight_surface(AirlightScene s_21)
         cuts_1[0] = _e87;
         cuts_1[1] = c_10;
     }
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
+    while(true) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e123 = i_18;
+            i_18 = (_e123 + 1u);
+        }
+        loop_init_23 = false;
+        uint _e93 = i_18;
+        if ((_e93 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e96 = i_18;
+            float _e98 = cuts_1[min(uint(_e96), 1u)];
+            uint _e100 = k_5;
+            float _e102 = g_21.gamma[min(uint(_e100), 3u)];
+            if ((_e98 > _e102)) {
+                uint _e106 = i_18;
+                float _e108 = cuts_1[min(uint(_e106), 1u)];
+                local_103 = (_e108 < AIRLIGHT_PI);
+            } else {
+                local_103 = false;
+            }
+            bool _e112 = local_103;
+            if (_e112) {
+                uint _e113 = k_5;
+                k_5 = (_e113 + 1u);
+                uint _e117 = k_5;
+                uint _e119 = i_18;
+                float _e121 = cuts_1[min(uint(_e119), 1u)];
+                g_21.gamma[min(uint(_e117), 3u)] = _e121;
+            }
+        }
+    }
+    uint _e126 = k_5;
+    g_21.gamma[min(uint((_e126 + 1u)), 3u)] = AIRLIGHT_PI;
+    uint _e132 = k_5;
+    g_21.panels = (_e132 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     bool loop_init_24 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e123 = i_17;
-            i_17 = (_e123 + 1u);
+            uint _e147 = i_19;
+            i_19 = (_e147 + 1u);
         }
         loop_init_24 = false;
-        uint _e93 = i_17;
-        if ((_e93 < 2u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e96 = i_17;
-            float _e98 = cuts_1[min(uint(_e96), 1u)];
-            uint _e100 = k_6;
-            float _e102 = g_20.gamma[min(uint(_e100), 3u)];
-            if ((_e98 > _e102)) {
-                uint _e106 = i_17;
-                float _e108 = cuts_1[min(uint(_e106), 1u)];
-                local_100 = (_e108 < AIRLIGHT_PI);
-            } else {
-                local_100 = false;
-            }
-            bool _e112 = local_100;
-            if (_e112) {
-                uint _e113 = k_6;
-                k_6 = (_e113 + 1u);
-                uint _e117 = k_6;
-                uint _e119 = i_17;
-                float _e121 = cuts_1[min(uint(_e119), 1u)];
-                g_20.gamma[min(uint(_e117), 3u)] = _e121;
-            }
-        }
-    }
-    uint _e126 = k_6;
-    g_20.gamma[min(uint((_e126 + 1u)), 3u)] = AIRLIGHT_PI;
-    uint _e132 = k_6;
-    g_20.panels = (_e132 + 1u);
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
-    while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_25) {
-            uint _e147 = i_18;
-            i_18 = (_e147 + 1u);
-        }
-        loop_init_25 = false;
-        uint _e137 = i_18;
-        uint _e139 = g_20.panels;
+        uint _e137 = i_19;
+        uint _e139 = g_21.panels;
         if ((_e137 <= _e139)) {
         } else {
             break;
         }
         {
-            uint _e142 = i_18;
-            uint _e144 = i_18;
-            g_20.edges[min(uint(_e142), 4u)] = float(_e144);
+            uint _e142 = i_19;
+            uint _e144 = i_19;
+            g_21.edges[min(uint(_e142), 4u)] = float(_e144);
         }
     }
-    AirlightOuter _e149 = g_20;
+    AirlightOuter _e149 = g_21;
     const AirlightOuter airlightouter_4 = _e149;
     return airlightouter_4;
 }
@@ -4666,32 +4911,32 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
 
 AirlightOuter airlight_outer(AirlightScene s_22)
 {
-    AirlightOuter g_21 = (AirlightOuter)0;
-    bool local_101 = (bool)0;
-    bool local_102 = (bool)0;
-    float s_star = 0.0;
-    float t_star = (float)0;
-    bool local_103 = (bool)0;
+    AirlightOuter g_22 = (AirlightOuter)0;
     bool local_104 = (bool)0;
     bool local_105 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
     bool local_106 = (bool)0;
     bool local_107 = (bool)0;
     bool local_108 = (bool)0;
-    float scale = 0.0;
     bool local_109 = (bool)0;
     bool local_110 = (bool)0;
     bool local_111 = (bool)0;
+    float scale = 0.0;
     bool local_112 = (bool)0;
     bool local_113 = (bool)0;
-    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = {0.0, 0.0, 0.0};
-    uint i_19 = 0u;
     bool local_114 = (bool)0;
     bool local_115 = (bool)0;
     bool local_116 = (bool)0;
-    uint n_1 = 0u;
+    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
     uint i_20 = 0u;
     bool local_117 = (bool)0;
+    bool local_118 = (bool)0;
+    bool local_119 = (bool)0;
+    uint n_1 = 0u;
+    uint i_21 = 0u;
+    bool local_120 = (bool)0;
 
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         const AirlightOuter _e4 = airlight_surface(s_22);
@@ -4699,29 +4944,29 @@ AirlightOuter airlight_outer(AirlightScene s_22)
         return airlightouter_5;
     }
     const AirlightOuter _e6 = airlight_outer_point(s_22, AIRLIGHT_SEGMENT_PANELS);
-    g_21 = _e6;
+    g_22 = _e6;
     if ((s_22.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e11 = g_21;
+        AirlightOuter _e11 = g_22;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
     float3 ab_1 = (s_22.light_end - s_22.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_101 = (s_22.intensity == 0.0);
+        local_104 = (s_22.intensity == 0.0);
     } else {
-        local_101 = true;
+        local_104 = true;
     }
-    bool _e26 = local_101;
+    bool _e26 = local_104;
     if (!(_e26)) {
-        local_102 = (s_22.sigma_s == 0.0);
+        local_105 = (s_22.sigma_s == 0.0);
     } else {
-        local_102 = true;
+        local_105 = true;
     }
-    bool _e34 = local_102;
+    bool _e34 = local_105;
     if (_e34) {
-        g_21.outcome = 1u;
-        AirlightOuter _e37 = g_21;
+        g_22.outcome = 1u;
+        AirlightOuter _e37 = g_22;
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
@@ -4743,155 +4988,155 @@ AirlightOuter airlight_outer(AirlightScene s_22)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_103 = (sin_a_1 > 0.0);
-    } else {
-        local_103 = false;
-    }
-    bool _e84 = local_103;
-    if (_e84) {
-        float _e87 = s_star;
-        local_104 = (_e87 >= 0.0);
-    } else {
-        local_104 = false;
-    }
-    bool _e91 = local_104;
-    if (_e91) {
-        float _e94 = s_star;
-        local_105 = (_e94 <= _e15);
-    } else {
-        local_105 = false;
-    }
-    bool _e97 = local_105;
-    if (_e97) {
-        float _e101 = t_star;
-        local_106 = (s_22.t_min <= _e101);
+        local_106 = (sin_a_1 > 0.0);
     } else {
         local_106 = false;
     }
-    bool _e104 = local_106;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_108 = (_e110 <= s_22.t_max);
-        } else {
-            local_108 = true;
-        }
-        bool _e114 = local_108;
-        local_107 = _e114;
+    bool _e84 = local_106;
+    if (_e84) {
+        float _e87 = s_star;
+        local_107 = (_e87 >= 0.0);
     } else {
         local_107 = false;
     }
-    bool _e116 = local_107;
+    bool _e91 = local_107;
+    if (_e91) {
+        float _e94 = s_star;
+        local_108 = (_e94 <= _e15);
+    } else {
+        local_108 = false;
+    }
+    bool _e97 = local_108;
+    if (_e97) {
+        float _e101 = t_star;
+        local_109 = (s_22.t_min <= _e101);
+    } else {
+        local_109 = false;
+    }
+    bool _e104 = local_109;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_111 = (_e110 <= s_22.t_max);
+        } else {
+            local_111 = true;
+        }
+        bool _e114 = local_111;
+        local_110 = _e114;
+    } else {
+        local_110 = false;
+    }
+    bool _e116 = local_110;
     if (_e116) {
-        g_21.outcome = 2u;
-        AirlightOuter _e119 = g_21;
+        g_22.outcome = 2u;
+        AirlightOuter _e119 = g_22;
         const AirlightOuter airlightouter_8 = _e119;
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_109 = (_e73 > 0.0);
+        local_112 = (_e73 > 0.0);
     } else {
-        local_109 = false;
+        local_112 = false;
     }
-    bool _e129 = local_109;
+    bool _e129 = local_112;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_110 = (_e136 < (_e15 + _e15));
+        local_113 = (_e136 < (_e15 + _e15));
     } else {
-        local_110 = false;
+        local_113 = false;
     }
-    bool _e140 = local_110;
+    bool _e140 = local_113;
     if (_e140) {
         float _e143 = scale;
-        local_111 = (_e143 < _e15);
+        local_114 = (_e143 < _e15);
     } else {
-        local_111 = false;
+        local_114 = false;
     }
-    bool near_1 = local_111;
+    bool near_1 = local_114;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_112 = _e154;
+        local_115 = _e154;
     } else {
-        local_112 = false;
+        local_115 = false;
     }
-    bool _e156 = local_112;
+    bool _e156 = local_115;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_113 = _e163;
+        local_116 = _e163;
     } else {
-        local_113 = false;
+        local_116 = false;
     }
-    bool _e165 = local_113;
+    bool _e165 = local_116;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_21.e = e_4;
+    g_22.e = e_4;
     float _e170 = s_star;
-    g_21.s_star = _e170;
+    g_22.s_star = _e170;
     float _e172 = scale;
-    g_21.scale = _e172;
+    g_22.scale = _e172;
     float _e178 = s_star;
     at = airlight_Constructarray3_float_(_e178, ((s_22.t_min - along_d) / cos_a_2), ((s_22.t_max - along_d) / cos_a_2));
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e229 = i_19;
-            i_19 = (_e229 + 1u);
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e229 = i_20;
+            i_20 = (_e229 + 1u);
         }
-        loop_init_26 = false;
-        uint _e189 = i_19;
+        loop_init_25 = false;
+        uint _e189 = i_20;
         if ((_e189 < 3u)) {
         } else {
             break;
         }
         {
             if ((cos_a_2 == 0.0)) {
-                uint _e196 = i_19;
-                local_114 = (_e196 > 0u);
+                uint _e196 = i_20;
+                local_117 = (_e196 > 0u);
             } else {
-                local_114 = false;
+                local_117 = false;
             }
-            bool _e200 = local_114;
+            bool _e200 = local_117;
             if (_e200) {
                 continue;
             }
-            uint _e201 = i_19;
+            uint _e201 = i_20;
             if ((_e201 == 2u)) {
-                local_115 = infinite_4;
+                local_118 = infinite_4;
             } else {
-                local_115 = false;
+                local_118 = false;
             }
-            bool _e207 = local_115;
+            bool _e207 = local_118;
             if (_e207) {
                 continue;
             }
-            uint _e208 = i_19;
+            uint _e208 = i_20;
             float _e210 = at[min(uint(_e208), 2u)];
             if ((_e210 > 0.0)) {
-                uint _e215 = i_19;
+                uint _e215 = i_20;
                 float _e217 = at[min(uint(_e215), 2u)];
-                local_116 = (_e217 < _e15);
+                local_119 = (_e217 < _e15);
             } else {
-                local_116 = false;
+                local_119 = false;
             }
-            bool _e220 = local_116;
+            bool _e220 = local_119;
             if (_e220) {
-                uint _e221 = i_19;
-                AirlightOuter _e223 = g_21;
-                uint _e224 = i_19;
+                uint _e221 = i_20;
+                AirlightOuter _e223 = g_22;
+                uint _e224 = i_20;
                 float _e226 = at[min(uint(_e224), 2u)];
                 const float _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[min(uint(_e221), 2u)] = _e227;
@@ -4922,54 +5167,54 @@ AirlightOuter airlight_outer(AirlightScene s_22)
         cuts_2[0] = _e262;
         cuts_2[1] = c_13;
     }
-    AirlightOuter _e264 = g_21;
+    AirlightOuter _e264 = g_22;
     const float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_21;
+    AirlightOuter _e268 = g_22;
     const float _e270 = airlight_to_w(_e268, 0.0);
-    g_21.edges[0] = _e270;
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    g_22.edges[0] = _e270;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e304 = i_20;
-            i_20 = (_e304 + 1u);
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e304 = i_21;
+            i_21 = (_e304 + 1u);
         }
-        loop_init_27 = false;
-        uint _e275 = i_20;
+        loop_init_26 = false;
+        uint _e275 = i_21;
         if ((_e275 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e278 = i_20;
+            uint _e278 = i_21;
             float _e280 = cuts_2[min(uint(_e278), 2u)];
             uint _e282 = n_1;
-            float _e284 = g_21.edges[min(uint(_e282), 4u)];
+            float _e284 = g_22.edges[min(uint(_e282), 4u)];
             if ((_e280 > _e284)) {
-                uint _e288 = i_20;
+                uint _e288 = i_21;
                 float _e290 = cuts_2[min(uint(_e288), 2u)];
-                local_117 = (_e290 < _e265);
+                local_120 = (_e290 < _e265);
             } else {
-                local_117 = false;
+                local_120 = false;
             }
-            bool _e293 = local_117;
+            bool _e293 = local_120;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
-                uint _e300 = i_20;
+                uint _e300 = i_21;
                 float _e302 = cuts_2[min(uint(_e300), 2u)];
-                g_21.edges[min(uint(_e298), 4u)] = _e302;
+                g_22.edges[min(uint(_e298), 4u)] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_21.edges[min(uint((_e307 + 1u)), 4u)] = _e265;
+    g_22.edges[min(uint((_e307 + 1u)), 4u)] = _e265;
     uint _e312 = n_1;
-    g_21.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_21;
+    g_22.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_22;
     const AirlightOuter airlightouter_9 = _e315;
     return airlightouter_9;
 }
@@ -4981,7 +5226,7 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1) {
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x_15)
+AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x_16)
 {
     AirlightScene p = (AirlightScene)0;
     float at_1 = (float)0;
@@ -4991,27 +5236,27 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_21 = min(airlight_naga_f2u32(max(floor(x_15), 0.0)), (g_22.panels - 1u));
-        float t_6 = (x_15 - float(i_21));
-        float a_27 = g_22.gamma[min(uint(i_21), 3u)];
-        float b_18 = g_22.gamma[min(uint((i_21 + 1u)), 3u)];
-        float gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
-        float jacobian = ((((b_18 - a_27) * 6.0) * t_6) * (1.0 - t_6));
+        uint i_22 = min(airlight_naga_f2u32(max(floor(x_16), 0.0)), (g_23.panels - 1u));
+        float t_6 = (x_16 - float(i_22));
+        float a_28 = g_23.gamma[min(uint(i_22), 3u)];
+        float b_18 = g_23.gamma[min(uint((i_22 + 1u)), 3u)];
+        float gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+        float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             const AirlightNode airlightnode = ConstructAirlightNode(_e45, 0.0);
             return airlightnode;
         }
         const float2 _e48 = airlight_cos_sin_half_turn(gamma);
-        const float _e53 = airlight_half_arc(g_22.cos_a, g_22.sin_a, _e48.x, _e48.y);
+        const float _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             const AirlightNode airlightnode_1 = ConstructAirlightNode(_e57, 0.0);
             return airlightnode_1;
         }
         const float2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = (2.0 * (((g_22.cos_a * _e48.x) * _e53) + ((g_22.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_22.l) + (_e48.y * g_22.u));
+        float arc = (2.0 * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
@@ -5020,13 +5265,13 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_22, float x
         return airlightnode_2;
     }
     if ((s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_15;
-        if ((g_22.scale > 0.0)) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_15)));
-            ds = (g_22.scale * cosh(x_15));
+        at_1 = x_16;
+        if ((g_23.scale > 0.0)) {
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_16)));
+            ds = (g_23.scale * cosh(x_16));
         }
         float _e115 = at_1;
-        p.light_position = (g_22.a + (_e115 * g_22.e));
+        p.light_position = (g_23.a + (_e115 * g_23.e));
         AirlightScene _e119 = p;
         float _e120 = ds;
         const AirlightNode airlightnode_3 = ConstructAirlightNode(_e119, _e120);
@@ -5058,51 +5303,51 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
     bool queued = false;
     float queued_lo = 0.0;
     float queued_hi = 0.0;
-    uint step_1 = 0u;
-    float k_7 = (float)0;
+    uint step_2 = 0u;
+    float k_6 = (float)0;
     float gauss = (float)0;
-    uint j_4 = (uint)0;
-    bool local_118 = (bool)0;
+    uint j_3 = (uint)0;
+    bool local_121 = (bool)0;
     float f = (float)0;
     AirlightResult r_5 = (AirlightResult)0;
-    bool local_119 = (bool)0;
-    bool local_120 = (bool)0;
-    bool local_121 = (bool)0;
-    bool split = (bool)0;
-    uint tries = (uint)0;
     bool local_122 = (bool)0;
     bool local_123 = (bool)0;
     bool local_124 = (bool)0;
+    bool split = (bool)0;
+    uint tries = (uint)0;
+    bool local_125 = (bool)0;
+    bool local_126 = (bool)0;
+    bool local_127 = (bool)0;
 
     const bool _e1 = airlight_valid(s_24);
     if (!(_e1)) {
-        const AirlightResult airlightresult_5 = ConstructAirlightResult(0.0, 1u);
-        return airlightresult_5;
+        const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_6;
     }
     const AirlightOuter _e6 = airlight_outer(s_24);
     if ((_e6.outcome == 1u)) {
-        const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 0u);
-        return airlightresult_6;
+        const AirlightResult airlightresult_7 = ConstructAirlightResult(0.0, 0u);
+        return airlightresult_7;
     }
     if ((_e6.outcome == 2u)) {
-        const AirlightResult airlightresult_7 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_7;
+        const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_8;
     }
     const float3 _e19[4] = airlight_kronrod_rule();
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_28) {
-            uint _e260 = step_1;
-            step_1 = (_e260 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e260 = step_2;
+            step_2 = (_e260 + 1u);
         }
-        loop_init_28 = false;
-        uint _e58 = step_1;
+        loop_init_27 = false;
+        uint _e58 = step_2;
         if ((_e58 < evaluations)) {
         } else {
             break;
@@ -5113,38 +5358,38 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
             float c_14 = (0.5 * (_e60 + _e61));
             float _e65 = b_12;
             float _e66 = a_16;
-            float hw_1 = (0.5 * (_e65 - _e66));
-            k_7 = 0.0;
+            float hw_3 = (0.5 * (_e65 - _e66));
+            k_6 = 0.0;
             gauss = 0.0;
-            j_4 = 0u;
-            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-            bool loop_init_29 = true;
+            j_3 = 0u;
+            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_29) {
-                    uint _e166 = j_4;
-                    j_4 = (_e166 + 1u);
+                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+                if (!loop_init_28) {
+                    uint _e166 = j_3;
+                    j_3 = (_e166 + 1u);
                 }
-                loop_init_29 = false;
-                uint _e76 = j_4;
+                loop_init_28 = false;
+                uint _e76 = j_3;
                 if ((_e76 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e79 = j_4;
+                    uint _e79 = j_3;
                     float3 node = _e19[min(uint(airlight_naga_div(_e79, 2u)), 3u)];
-                    uint _e89 = j_4;
+                    uint _e89 = j_3;
                     if (((_e89 & 1u) == 0u)) {
-                        uint _e96 = j_4;
-                        local_118 = (_e96 < 6u);
+                        uint _e96 = j_3;
+                        local_121 = (_e96 < 6u);
                     } else {
-                        local_118 = false;
+                        local_121 = false;
                     }
-                    bool _e100 = local_118;
-                    float w_5 = (_e100 ? (c_14 - (hw_1 * node.x)) : (c_14 + (hw_1 * node.x)));
-                    const AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_5);
+                    bool _e100 = local_121;
+                    float w_6 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
+                    const AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_6);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -5152,11 +5397,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                         const bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             const bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_119 = _e118;
+                            local_122 = _e118;
                         } else {
-                            local_119 = false;
+                            local_122 = false;
                         }
-                        bool _e120 = local_119;
+                        bool _e120 = local_122;
                         if (_e120) {
                             const AirlightCanonical _e121 = airlight_canonical(p_1);
                             const AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -5167,32 +5412,32 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                         const bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_120 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_120 = true;
+                            local_123 = true;
                         }
-                        bool _e136 = local_120;
+                        bool _e136 = local_123;
                         if (_e136) {
-                            const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
-                            return airlightresult_8;
+                            const AirlightResult airlightresult_9 = ConstructAirlightResult(3.4028235e38, 2u);
+                            return airlightresult_9;
                         }
                         if ((s_24.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_121 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_124 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_121 = false;
+                            local_124 = false;
                         }
-                        bool _e149 = local_121;
+                        bool _e149 = local_124;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
-                            const AirlightResult airlightresult_9 = _e150;
-                            return airlightresult_9;
+                            const AirlightResult airlightresult_10 = _e150;
+                            return airlightresult_10;
                         }
                         float _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
-                    float _e155 = k_7;
+                    float _e155 = k_6;
                     float _e157 = f;
-                    k_7 = (_e155 + (node.y * _e157));
+                    k_6 = (_e155 + (node.y * _e157));
                     float _e160 = gauss;
                     float _e162 = f;
                     gauss = (_e160 + (node.z * _e162));
@@ -5201,10 +5446,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
             uint _e168 = slot_1;
             float _e169 = a_16;
             float _e170 = b_12;
-            float _e171 = k_7;
-            float _e173 = k_7;
+            float _e171 = k_6;
+            float _e173 = k_6;
             float _e175 = gauss;
-            airlight_list_set(list_1, _e168, float4(_e169, _e170, (_e171 * hw_1), abs(((_e173 * hw_1) - (_e175 * hw_1)))));
+            airlight_list_set(list_1, _e168, float4(_e169, _e170, (_e171 * hw_3), abs(((_e173 * hw_3) - (_e175 * hw_3)))));
             uint _e180 = slot_1;
             uint _e181 = count_2;
             if ((_e180 == _e181)) {
@@ -5232,16 +5477,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_30 = true;
+                    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_29 = true;
                     while(true) {
-                        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-                        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-                        if (!loop_init_30) {
+                        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                        if (!loop_init_29) {
                             uint _e255 = tries;
                             tries = (_e255 + 1u);
                         }
-                        loop_init_30 = false;
+                        loop_init_29 = false;
                         uint _e207 = tries;
                         if ((_e207 < _e6.max_panels)) {
                         } else {
@@ -5255,18 +5500,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_122 = (_e223 == _e6.max_panels);
+                                local_125 = (_e223 == _e6.max_panels);
                             } else {
-                                local_122 = true;
+                                local_125 = true;
                             }
-                            bool _e227 = local_122;
+                            bool _e227 = local_125;
                             if (!(_e227)) {
                                 const bool _e231 = airlight_is_finite(total_4);
-                                local_123 = !(_e231);
+                                local_126 = !(_e231);
                             } else {
-                                local_123 = true;
+                                local_126 = true;
                             }
-                            bool _e234 = local_123;
+                            bool _e234 = local_126;
                             if (_e234) {
                                 break;
                             }
@@ -5274,22 +5519,22 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                             const float4 _e236 = airlight_list_get(_e235, worst_1);
                             float wa_1 = _e236.x;
                             float wb_1 = _e236.y;
-                            float mid_1 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_1 > wa_1)) {
-                                local_124 = (mid_1 < wb_1);
+                            float mid_3 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_3 > wa_1)) {
+                                local_127 = (mid_3 < wb_1);
                             } else {
-                                local_124 = false;
+                                local_127 = false;
                             }
-                            bool _e247 = local_124;
+                            bool _e247 = local_127;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, float4(_e236.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
-                            b_12 = mid_1;
+                            b_12 = mid_3;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_1;
+                            queued_lo = mid_3;
                             queued_hi = wb_1;
                             split = true;
                             break;
@@ -5309,10 +5554,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
     float total_5 = _e264.total;
     const bool _e266 = airlight_is_finite(total_5);
     if (!(_e266)) {
-        const AirlightResult airlightresult_10 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_10;
+        const AirlightResult airlightresult_11 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_11;
     }
-    const AirlightResult airlightresult_11 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
-    return airlightresult_11;
+    const AirlightResult airlightresult_12 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_12;
 }
 #endif // AIRLIGHT_LIB_8

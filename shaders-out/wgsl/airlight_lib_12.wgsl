@@ -131,6 +131,7 @@ const AIRLIGHT_MAX_PANELS: u32 = 16u;
 const AIRLIGHT_PANEL_LIST: u32 = 8u;
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = 4f;
 const AIRLIGHT_ALIASING_MARGIN: u32 = 3u;
+const AIRLIGHT_INV_ODD_FACTORIAL: f32 = 0.00000000000012648855f;
 const AIRLIGHT_EXACT_RANGE: f32 = 1073741800f;
 const AIRLIGHT_PI: f32 = 3.1415927f;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772157f;
@@ -263,11 +264,11 @@ fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
-    let m_3 = max(abs(z.x), abs(z.y));
-    if (m_3 == 0f) {
+    let m_4 = max(abs(z.x), abs(z.y));
+    if (m_4 == 0f) {
         return 0f;
     }
-    return (m_3 * length((z / vec2(m_3))));
+    return (m_4 * length((z / vec2(m_4))));
 }
 
 fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
@@ -292,66 +293,16 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
-    var c: f32 = 0f;
-    var s_1: f32 = 0f;
-    var k_1: u32 = 0u;
-    var fc: f32;
-    var j: u32;
-
     let z_9 = (x * x);
-    loop {
-        let _e8 = k_1;
-        if (_e8 < 9u) {
-        } else {
-            break;
-        }
-        {
-            let _e12 = k_1;
-            let n_2 = (8u - _e12);
-            let _e14 = c;
-            c = (_e14 * z_9);
-            let _e16 = s_1;
-            s_1 = (_e16 * z_9);
-            fc = 1f;
-            j = 1u;
-            loop {
-                let _e22 = j;
-                if (_e22 <= (2u * n_2)) {
-                } else {
-                    break;
-                }
-                {
-                    let _e26 = fc;
-                    let _e27 = j;
-                    fc = (_e26 * f32(_e27));
-                }
-                continuing {
-                    let _e31 = j;
-                    j = (_e31 + 1u);
-                }
-            }
-            let sign_ = select(1f, -1f, ((n_2 & 1u) == 1u));
-            let _e40 = c;
-            let _e41 = fc;
-            c = (_e40 + (sign_ / _e41));
-            let _e44 = s_1;
-            let _e45 = fc;
-            s_1 = (_e44 + (sign_ / (_e45 * f32(((2u * n_2) + 1u)))));
-        }
-        continuing {
-            let _e55 = k_1;
-            k_1 = (_e55 + 1u);
-        }
-    }
-    let _e57 = c;
-    let _e58 = s_1;
-    return vec2<f32>(_e57, (_e58 * x));
+    let c_7 = (1f + (z_9 * (-0.5f + (z_9 * (0.041666668f + (z_9 * (-0.0013888889f + (z_9 * (0.000024801588f + (z_9 * (-0.0000002755732f + (z_9 * (0.0000000020876756f + (z_9 * (-0.000000000011470745f + (z_9 * 0.000000000000047794773f))))))))))))))));
+    let s_25 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_7, (s_25 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
-    let m_4 = exp(z_2.x);
+    let m_5 = exp(z_2.x);
     let _e4 = airlight_cos_sin(z_2.y);
-    return vec2<f32>((m_4 * _e4.x), (m_4 * _e4.y));
+    return vec2<f32>((m_5 * _e4.x), (m_5 * _e4.y));
 }
 
 fn airlight_atan(x_1: f32) -> f32 {
@@ -392,31 +343,31 @@ fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
 
 fn airlight_log1p(x_2: f32) -> f32 {
     var sum: f32 = 0f;
-    var k_2: u32 = 0u;
+    var k_1: u32 = 0u;
 
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_25 = (x_2 / (2f + x_2));
-    let s2_ = (s_25 * s_25);
+    let s_26 = (x_2 / (2f + x_2));
+    let s2_ = (s_26 * s_26);
     loop {
-        let _e14 = k_2;
+        let _e14 = k_1;
         if (_e14 < 9u) {
         } else {
             break;
         }
         {
             let _e17 = sum;
-            let _e21 = k_2;
+            let _e21 = k_1;
             sum = ((_e17 * s2_) + (1f / f32(((2u * (8u - _e21)) + 1u))));
         }
         continuing {
-            let _e31 = k_2;
-            k_2 = (_e31 + 1u);
+            let _e31 = k_1;
+            k_1 = (_e31 + 1u);
         }
     }
     let _e35 = sum;
-    return ((2f * s_25) * _e35);
+    return ((2f * s_26) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -425,11 +376,11 @@ fn airlight_is_finite(x_3: f32) -> bool {
 
 fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
     var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_3: u32 = 0u;
+    var k_2: u32 = 0u;
 
     let _e1 = airlight_ein_coefficients();
     loop {
-        let _e8 = k_3;
+        let _e8 = k_2;
         if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
@@ -437,12 +388,12 @@ fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
         {
             let _e11 = sum_1;
             let _e12 = airlight_cmul(_e11, z_4);
-            let _e14 = k_3;
+            let _e14 = k_2;
             sum_1 = (_e12 + vec2<f32>(_e1[(12u - _e14)], 0f));
         }
         continuing {
-            let _e21 = k_3;
-            k_3 = (_e21 + 1u);
+            let _e21 = k_2;
+            k_2 = (_e21 + 1u);
         }
     }
     let _e23 = sum_1;
@@ -454,11 +405,11 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
     var h: vec2<f32> = vec2<f32>(1f, 0f);
     var a_pow: vec2<f32> = vec2<f32>(1f, 0f);
     var sum_2: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_4: u32 = 0u;
+    var k_3: u32 = 0u;
 
     let _e2 = airlight_ein_coefficients();
     loop {
-        let _e17 = k_4;
+        let _e17 = k_3;
         if (_e17 < AIRLIGHT_EIN_DD_TERMS) {
         } else {
             break;
@@ -466,7 +417,7 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
         {
             let _e20 = sum_2;
             let _e21 = h;
-            let _e22 = k_4;
+            let _e22 = k_3;
             sum_2 = (_e20 + (_e21 * _e2[_e22]));
             let _e26 = a_pow;
             let _e27 = airlight_cmul(_e26, a_2);
@@ -477,8 +428,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
             h = (_e29 + _e30);
         }
         continuing {
-            let _e33 = k_4;
-            k_4 = (_e33 + 1u);
+            let _e33 = k_3;
+            k_3 = (_e33 + 1u);
         }
     }
     let _e35 = sum_2;
@@ -486,9 +437,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_16 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_4 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_16 * x_16) + (y_4 * y_4)) < 1f);
+    let x_17 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_17 * x_17) + (y_6 * y_6)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -639,9 +590,9 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
 
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
-    let m_5 = f32(_e2);
-    let b_14 = ((x_4 + nf_1) + (2f * (m_5 + 1f)));
-    let a_17 = ((m_5 + 2f) * ((nf_1 + m_5) + 1f));
+    let m_6 = f32(_e2);
+    let b_14 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
+    let a_17 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
     let disc = (1f - ((4f * a_17) / (b_14 * b_14)));
     t_2 = b_14;
     if (disc > 0f) {
@@ -871,7 +822,7 @@ fn airlight_phase_mu(kind_1: u32, p0_1: f32, p1_1: f32, p2_1: f32, mu_1: f32) ->
     return _e9;
 }
 
-fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
+fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
     var base: f32;
     var e: u32;
     var acc: f32 = 1f;
@@ -879,7 +830,7 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
 
     switch kind_2 {
         case 1u: {
-            base = c_1;
+            base = c;
             e = u32(p0_2);
             loop {
                 let _e11 = i_2;
@@ -913,12 +864,12 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c_1: f32) -> f32 {
             return _e34;
         }
         case 2u: {
-            let width = (p0_2 - p1_2);
-            if (width <= AIRLIGHT_FLT_EPS) {
-                return select(0f, 1f, (c_1 >= (p1_2 + (width * 0.5f))));
+            let width_1 = (p0_2 - p1_2);
+            if (width_1 <= AIRLIGHT_FLT_EPS) {
+                return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_17 = clamp(((c_1 - p1_2) / width), 0f, 1f);
-            return ((x_17 * x_17) * (3f - (2f * x_17)));
+            let x_18 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_18 * x_18) * (3f - (2f * x_18)));
         }
         default: {
             return 1f;
@@ -944,11 +895,11 @@ fn airlight_hg_gap(g_4: f32) -> f32 {
     return (((1f - a_19) * (1f - a_19)) / (a_19 + a_19));
 }
 
-fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
+fn airlight_singular_heights(s_1: AirlightScene, sigma_1: f32) -> vec3<f32> {
     var h_1: vec3<f32> = vec3(1f);
 
-    let p0_3 = s_2.phase_param_a;
-    switch s_2.phase_kind {
+    let p0_3 = s_1.phase_param_a;
+    switch s_1.phase_kind {
         case 2u, 4u: {
             let _e8 = airlight_hg_gap(p0_3);
             let _e9 = airlight_singular_height(p0_3, _e8, sigma_1);
@@ -963,8 +914,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             let _e21 = airlight_hg_gap(p0_3);
             let _e22 = airlight_singular_height(p0_3, _e21, sigma_1);
             h_1.y = _e22;
-            let _e26 = airlight_hg_gap(s_2.phase_param_b);
-            let _e27 = airlight_singular_height(s_2.phase_param_b, _e26, sigma_1);
+            let _e26 = airlight_hg_gap(s_1.phase_param_b);
+            let _e27 = airlight_singular_height(s_1.phase_param_b, _e26, sigma_1);
             h_1.z = _e27;
         }
         default: {
@@ -974,18 +925,18 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
     return _e28;
 }
 
-fn airlight_singular_steps(s_3: AirlightScene) -> vec3<f32> {
+fn airlight_singular_steps(s_2: AirlightScene) -> vec3<f32> {
     var degree: f32 = 0f;
     var order: f32 = 0f;
     var growth: f32 = 0f;
 
-    if (s_3.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        degree = s_3.light_param_a;
+    if (s_2.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        degree = s_2.light_param_a;
     }
-    if (s_3.light_kind == AIRLIGHT_LIGHT_SPOT) {
+    if (s_2.light_kind == AIRLIGHT_LIGHT_SPOT) {
         degree = 3f;
     }
-    switch s_3.phase_kind {
+    switch s_2.phase_kind {
         case 0u: {
             order = 0f;
             growth = 0f;
@@ -1020,7 +971,7 @@ fn airlight_singular_steps(s_3: AirlightScene) -> vec3<f32> {
     return vec3<f32>(pow(1.0909091f, (_e35 + _e36)), phase_2, phase_2);
 }
 
-fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, y_1: f32) -> vec2<f32> {
+fn airlight_integrand_over(s_3: AirlightScene, g_5: AirlightCanonical, sigma_2: f32, y_1: f32) -> vec2<f32> {
     var minus: f32;
     var plus: f32;
 
@@ -1037,49 +988,49 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
+    let _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_8);
     let _e40 = minus;
     let _e41 = plus;
-    let _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
+    let _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
     let f_1 = (_e35 * _e42);
     return vec2<f32>(f_1, inv_2);
 }
 
-fn airlight_integrand(s_5: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, y_2: f32) -> f32 {
-    let _e4 = airlight_integrand_over(s_5, g_6, sigma_3, y_2);
+fn airlight_integrand(s_4: AirlightScene, g_6: AirlightCanonical, sigma_3: f32, y_2: f32) -> f32 {
+    let _e4 = airlight_integrand_over(s_4, g_6, sigma_3, y_2);
     return _e4.x;
 }
 
 fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
     var m: f32 = 0f;
-    var j_1: u32 = 0u;
+    var j: u32 = 0u;
     var dv: f32;
 
-    let hw = (half.dy * 0.5f);
-    let yc = (half.y_lo + hw);
+    let hw_1 = (half.dy * 0.5f);
+    let yc = (half.y_lo + hw_1);
     let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(0.8611363f, 0.34785485f));
     loop {
-        let _e23 = j_1;
+        let _e23 = j;
         if (_e23 < 4u) {
         } else {
             break;
         }
         {
-            let _e26 = j_1;
+            let _e26 = j;
             let xi = nodes[_e26].x;
-            let y_5 = (yc + (hw * xi));
-            dv = (hw * (1f + xi));
+            let y_7 = (yc + (hw_1 * xi));
+            dv = (hw_1 * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi)) / (y_5 * half.y_hi));
+                dv = ((hw_1 * (1f - xi)) / (y_7 * half.y_hi));
             }
             let _e42 = m;
-            let _e43 = j_1;
+            let _e43 = j;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_5 * y_5))));
+            m = (_e42 + (((nodes[_e43].y * hw_1) * exp((-(half.big_h) * _e49))) / (1f + (y_7 * y_7))));
         }
         continuing {
-            let _e59 = j_1;
-            j_1 = (_e59 + 1u);
+            let _e59 = j;
+            j = (_e59 + 1u);
         }
     }
     let _e61 = m;
@@ -1174,10 +1125,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_18 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_18);
+            let x_19 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_19);
             if _e42 {
-                let _e43 = airlight_log1p(x_18);
+                let _e43 = airlight_log1p(x_19);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1310,8 +1261,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_19 = rule[(i_3 / 2u)].x;
-    return select(x_19, -(x_19), ((i_3 % 2u) == 0u));
+    let x_20 = rule[(i_3 / 2u)].x;
+    return select(x_20, -(x_20), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 12>) -> array<f32, 12> {
@@ -1388,8 +1339,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_20 = (lambda / f32((2u * k0_)));
-            let per_step = (x_20 * x_20);
+            let x_21 = (lambda / f32((2u * k0_)));
+            let per_step = (x_21 * x_21);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1880,11 +1831,11 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
     return _e797;
 }
 
-fn airlight_tail_estimate(c_2: array<f32, 12>) -> f32 {
-    return (abs(c_2[11]) + abs(c_2[10]));
+fn airlight_tail_estimate(c_1: array<f32, 12>) -> f32 {
+    return (abs(c_1[11]) + abs(c_1[10]));
 }
 
-fn airlight_error_factor(c_3: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) -> f32 {
+fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) -> f32 {
     var local_15: bool;
     var aliasing: f32 = 0f;
     var c_max: f32 = 0f;
@@ -1894,8 +1845,8 @@ fn airlight_error_factor(c_3: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     if !((m_1[0] > 0f)) {
         return 1f;
     }
-    let last = (abs(c_3[11]) + abs(c_3[10]));
-    let before = (abs(c_3[9]) + abs(c_3[8]));
+    let last = (abs(c_2[11]) + abs(c_2[10]));
+    let before = (abs(c_2[9]) + abs(c_2[8]));
     if !(!((before > 0f))) {
         local_15 = !((last < before));
     } else {
@@ -1949,31 +1900,31 @@ fn airlight_error_factor(c_3: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
         return min(((_e177 + (q_1 * truncation)) / m_1[0]), 1f);
     }
     let _e186 = c_max;
-    c_max = max(_e186, abs(c_3[0]));
+    c_max = max(_e186, abs(c_2[0]));
     let _e190 = c_max;
-    c_max = max(_e190, abs(c_3[1]));
+    c_max = max(_e190, abs(c_2[1]));
     let _e194 = c_max;
-    c_max = max(_e194, abs(c_3[2]));
+    c_max = max(_e194, abs(c_2[2]));
     let _e198 = c_max;
-    c_max = max(_e198, abs(c_3[3]));
+    c_max = max(_e198, abs(c_2[3]));
     let _e202 = c_max;
-    c_max = max(_e202, abs(c_3[4]));
+    c_max = max(_e202, abs(c_2[4]));
     let _e206 = c_max;
-    c_max = max(_e206, abs(c_3[5]));
+    c_max = max(_e206, abs(c_2[5]));
     let _e210 = c_max;
-    c_max = max(_e210, abs(c_3[6]));
+    c_max = max(_e210, abs(c_2[6]));
     let _e214 = c_max;
-    c_max = max(_e214, abs(c_3[7]));
+    c_max = max(_e214, abs(c_2[7]));
     let _e218 = c_max;
-    c_max = max(_e218, abs(c_3[8]));
+    c_max = max(_e218, abs(c_2[8]));
     let _e222 = c_max;
-    c_max = max(_e222, abs(c_3[9]));
+    c_max = max(_e222, abs(c_2[9]));
     let _e226 = c_max;
-    c_max = max(_e226, abs(c_3[10]));
+    c_max = max(_e226, abs(c_2[10]));
     let _e230 = c_max;
-    c_max = max(_e230, abs(c_3[11]));
+    c_max = max(_e230, abs(c_2[11]));
     let _e236 = c_max;
-    let power_1 = select(3u, 2u, (_e236 > (1.2f * abs(c_3[0]))));
+    let power_1 = select(3u, 2u, (_e236 > (1.2f * abs(c_2[0]))));
     loop {
         let _e247 = i_6;
         if (_e247 < power_1) {
@@ -2011,19 +1962,19 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_21 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_21)), (x_21 > 0f));
+    let x_22 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_22)), (x_22 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
     return AirlightPanel(value, select(error, 0f, (error <= noise)), mass_over, f_max);
 }
 
-fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_4: f32, r_1: f32, origin_2: bool) -> f32 {
+fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_3: f32, r_1: f32, origin_2: bool) -> f32 {
     var rho: f32;
 
     let inv_4 = (1f / r_1);
-    let re_1 = (c_4 * inv_4);
+    let re_1 = (c_3 * inv_4);
     let _e10 = airlight_bernstein_rho(re_1, 0f);
     rho = select(AIRLIGHT_FLT_MAX, _e10, origin_2);
     let _e13 = rho;
@@ -2039,7 +1990,7 @@ fn airlight_singular_floor(heights: vec3<f32>, steps_1: vec3<f32>, c_4: f32, r_1
     return (1f / _e34);
 }
 
-fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
+fn airlight_v_panel(s_5: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, half_6: AirlightHalf, a_5: f32, b_4: f32, heights_1: vec3<f32>, steps_2: vec3<f32>) -> AirlightPanel {
     var r_2: f32;
     var vc: f32;
     var samples: array<f32, 12>;
@@ -2072,7 +2023,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e41 = i_7;
             let _e42 = airlight_node(_e8, _e41);
             let v_6 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_6);
+            let _e48 = airlight_integrand_over(s_5, g_8, select(sigma_4, -(sigma_4), half_6.second), v_6);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_7;
@@ -2123,23 +2074,23 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e144 = airlight_factor(half_6, a_5, b_4);
     let _e145 = r_2;
     let w_1 = (_e144 * _e145);
-    let mass_4 = (w_1 * _e81[0]);
+    let mass_5 = (w_1 * _e81[0]);
     let _e149 = vc;
     let _e150 = r_2;
     let _e152 = airlight_singular_floor(heights_1, steps_2, _e149, _e150, false);
     let _e153 = airlight_tail_estimate(_e77);
     let _e155 = airlight_error_factor(_e77, _e81, _e152);
-    let error_1 = ((mass_4 * _e153) * _e155);
+    let error_1 = ((mass_5 * _e153) * _e155);
     let _e157 = sum_4;
     let _e159 = g_avg;
-    let _e160 = airlight_transform_noise(mass_4, _e159);
+    let _e160 = airlight_transform_noise(mass_5, _e159);
     let _e161 = over_max;
     let _e163 = f_max_1;
-    let _e164 = airlight_panel_result((w_1 * _e157), error_1, _e160, (mass_4 * _e161), _e163);
+    let _e164 = airlight_panel_result((w_1 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
     return _e164;
 }
 
-fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
+fn airlight_y_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, half_7: AirlightHalf, a_6: f32, b_5: f32, heights_2: vec3<f32>, steps_3: vec3<f32>) -> AirlightPanel {
     var samples_1: array<f32, 12>;
     var f_max_2: f32 = 0f;
     var over_max_1: f32 = 0f;
@@ -2162,10 +2113,10 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
-            let y_6 = (yc_1 + (r_8 * _e29));
-            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_6 * b_5)));
-            let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_6);
-            let over_1 = (1f / (1f + (y_6 * y_6)));
+            let y_8 = (yc_1 + (r_8 * _e29));
+            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_8 * b_5)));
+            let _e41 = airlight_integrand(s_6, g_9, sigma_5, y_8);
+            let over_1 = (1f / (1f + (y_8 * y_8)));
             let _e47 = i_8;
             samples_1[_e47] = ((_e41 * over_1) * weight);
             let _e51 = f_max_2;
@@ -2207,100 +2158,100 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     return _e111;
 }
 
-fn airlight_legendre_to_monomial(c_5: array<f32, 12>) -> array<f32, 12> {
+fn airlight_legendre_to_monomial(c_4: array<f32, 12>) -> array<f32, 12> {
     var hat: array<f32, 12>;
 
     let _e1 = airlight_zero_terms();
     hat = _e1;
     let _e4 = hat[0];
-    hat[0] = (_e4 + (c_5[0] * 1f));
+    hat[0] = (_e4 + (c_4[0] * 1f));
     let _e10 = hat[1];
-    hat[1] = (_e10 + (c_5[1] * 1f));
+    hat[1] = (_e10 + (c_4[1] * 1f));
     let _e16 = hat[0];
-    hat[0] = (_e16 + (c_5[2] * -0.5f));
+    hat[0] = (_e16 + (c_4[2] * -0.5f));
     let _e22 = hat[2];
-    hat[2] = (_e22 + (c_5[2] * 1.5f));
+    hat[2] = (_e22 + (c_4[2] * 1.5f));
     let _e28 = hat[1];
-    hat[1] = (_e28 + (c_5[3] * -1.5f));
+    hat[1] = (_e28 + (c_4[3] * -1.5f));
     let _e34 = hat[3];
-    hat[3] = (_e34 + (c_5[3] * 2.5f));
+    hat[3] = (_e34 + (c_4[3] * 2.5f));
     let _e40 = hat[0];
-    hat[0] = (_e40 + (c_5[4] * 0.375f));
+    hat[0] = (_e40 + (c_4[4] * 0.375f));
     let _e46 = hat[2];
-    hat[2] = (_e46 + (c_5[4] * -3.75f));
+    hat[2] = (_e46 + (c_4[4] * -3.75f));
     let _e52 = hat[4];
-    hat[4] = (_e52 + (c_5[4] * 4.375f));
+    hat[4] = (_e52 + (c_4[4] * 4.375f));
     let _e58 = hat[1];
-    hat[1] = (_e58 + (c_5[5] * 1.875f));
+    hat[1] = (_e58 + (c_4[5] * 1.875f));
     let _e64 = hat[3];
-    hat[3] = (_e64 + (c_5[5] * -8.75f));
+    hat[3] = (_e64 + (c_4[5] * -8.75f));
     let _e70 = hat[5];
-    hat[5] = (_e70 + (c_5[5] * 7.875f));
+    hat[5] = (_e70 + (c_4[5] * 7.875f));
     let _e76 = hat[0];
-    hat[0] = (_e76 + (c_5[6] * -0.3125f));
+    hat[0] = (_e76 + (c_4[6] * -0.3125f));
     let _e82 = hat[2];
-    hat[2] = (_e82 + (c_5[6] * 6.5625f));
+    hat[2] = (_e82 + (c_4[6] * 6.5625f));
     let _e88 = hat[4];
-    hat[4] = (_e88 + (c_5[6] * -19.6875f));
+    hat[4] = (_e88 + (c_4[6] * -19.6875f));
     let _e94 = hat[6];
-    hat[6] = (_e94 + (c_5[6] * 14.4375f));
+    hat[6] = (_e94 + (c_4[6] * 14.4375f));
     let _e100 = hat[1];
-    hat[1] = (_e100 + (c_5[7] * -2.1875f));
+    hat[1] = (_e100 + (c_4[7] * -2.1875f));
     let _e106 = hat[3];
-    hat[3] = (_e106 + (c_5[7] * 19.6875f));
+    hat[3] = (_e106 + (c_4[7] * 19.6875f));
     let _e112 = hat[5];
-    hat[5] = (_e112 + (c_5[7] * -43.3125f));
+    hat[5] = (_e112 + (c_4[7] * -43.3125f));
     let _e118 = hat[7];
-    hat[7] = (_e118 + (c_5[7] * 26.8125f));
+    hat[7] = (_e118 + (c_4[7] * 26.8125f));
     let _e124 = hat[0];
-    hat[0] = (_e124 + (c_5[8] * 0.2734375f));
+    hat[0] = (_e124 + (c_4[8] * 0.2734375f));
     let _e130 = hat[2];
-    hat[2] = (_e130 + (c_5[8] * -9.84375f));
+    hat[2] = (_e130 + (c_4[8] * -9.84375f));
     let _e136 = hat[4];
-    hat[4] = (_e136 + (c_5[8] * 54.140625f));
+    hat[4] = (_e136 + (c_4[8] * 54.140625f));
     let _e142 = hat[6];
-    hat[6] = (_e142 + (c_5[8] * -93.84375f));
+    hat[6] = (_e142 + (c_4[8] * -93.84375f));
     let _e148 = hat[8];
-    hat[8] = (_e148 + (c_5[8] * 50.273438f));
+    hat[8] = (_e148 + (c_4[8] * 50.273438f));
     let _e154 = hat[1];
-    hat[1] = (_e154 + (c_5[9] * 2.4609375f));
+    hat[1] = (_e154 + (c_4[9] * 2.4609375f));
     let _e160 = hat[3];
-    hat[3] = (_e160 + (c_5[9] * -36.09375f));
+    hat[3] = (_e160 + (c_4[9] * -36.09375f));
     let _e166 = hat[5];
-    hat[5] = (_e166 + (c_5[9] * 140.76563f));
+    hat[5] = (_e166 + (c_4[9] * 140.76563f));
     let _e172 = hat[7];
-    hat[7] = (_e172 + (c_5[9] * -201.09375f));
+    hat[7] = (_e172 + (c_4[9] * -201.09375f));
     let _e178 = hat[9];
-    hat[9] = (_e178 + (c_5[9] * 94.96094f));
+    hat[9] = (_e178 + (c_4[9] * 94.96094f));
     let _e184 = hat[0];
-    hat[0] = (_e184 + (c_5[10] * -0.24609375f));
+    hat[0] = (_e184 + (c_4[10] * -0.24609375f));
     let _e190 = hat[2];
-    hat[2] = (_e190 + (c_5[10] * 13.535156f));
+    hat[2] = (_e190 + (c_4[10] * 13.535156f));
     let _e196 = hat[4];
-    hat[4] = (_e196 + (c_5[10] * -117.30469f));
+    hat[4] = (_e196 + (c_4[10] * -117.30469f));
     let _e202 = hat[6];
-    hat[6] = (_e202 + (c_5[10] * 351.91406f));
+    hat[6] = (_e202 + (c_4[10] * 351.91406f));
     let _e208 = hat[8];
-    hat[8] = (_e208 + (c_5[10] * -427.32422f));
+    hat[8] = (_e208 + (c_4[10] * -427.32422f));
     let _e214 = hat[10];
-    hat[10] = (_e214 + (c_5[10] * 180.42578f));
+    hat[10] = (_e214 + (c_4[10] * 180.42578f));
     let _e220 = hat[1];
-    hat[1] = (_e220 + (c_5[11] * -2.7070313f));
+    hat[1] = (_e220 + (c_4[11] * -2.7070313f));
     let _e226 = hat[3];
-    hat[3] = (_e226 + (c_5[11] * 58.652344f));
+    hat[3] = (_e226 + (c_4[11] * 58.652344f));
     let _e232 = hat[5];
-    hat[5] = (_e232 + (c_5[11] * -351.91406f));
+    hat[5] = (_e232 + (c_4[11] * -351.91406f));
     let _e238 = hat[7];
-    hat[7] = (_e238 + (c_5[11] * 854.64844f));
+    hat[7] = (_e238 + (c_4[11] * 854.64844f));
     let _e244 = hat[9];
-    hat[9] = (_e244 + (c_5[11] * -902.1289f));
+    hat[9] = (_e244 + (c_4[11] * -902.1289f));
     let _e250 = hat[11];
-    hat[11] = (_e250 + (c_5[11] * 344.44922f));
+    hat[11] = (_e250 + (c_4[11] * 344.44922f));
     let _e255 = hat;
     return _e255;
 }
 
-fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
+fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32, half_8: AirlightHalf, a_7: f32, b_6: f32) -> AirlightPanel {
     var samples_2: array<f32, 12>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
@@ -2332,10 +2283,10 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_7 = (yc_2 + (r_9 * _e23));
-            let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_7);
+            let y_9 = (yc_2 + (r_9 * _e23));
+            let _e26 = airlight_integrand(s_7, g_10, sigma_6, y_9);
             let _e27 = i_9;
-            samples_2[_e27] = (_e26 / (1f + (y_7 * y_7)));
+            samples_2[_e27] = (_e26 / (1f + (y_9 * y_9)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
@@ -2646,13 +2597,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_22 = (abs(alpha) + abs(beta));
+    let x_23 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_22) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_23) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2662,7 +2613,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_22) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_23) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2672,7 +2623,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_22) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_23) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2682,7 +2633,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_22) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_23) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2692,7 +2643,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_22) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_23) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2702,7 +2653,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_22) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_23) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2712,7 +2663,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_22) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_23) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2722,7 +2673,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_22) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_23) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2732,7 +2683,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_22) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_23) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2742,7 +2693,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_22) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_23) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2752,7 +2703,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_22) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_23) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2762,7 +2713,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_22) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_23) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2782,7 +2733,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     return _e1182;
 }
 
-fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
+fn airlight_panel(s_8: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
     var local_17: bool;
     var local_18: bool;
 
@@ -2793,7 +2744,7 @@ fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, hal
     }
     let _e16 = local_17;
     if _e16 {
-        let _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_9, a_8, b_7);
+        let _e17 = airlight_tail_panel(s_8, g_11, sigma_7, half_9, a_8, b_7);
         return _e17;
     }
     if half_9.second {
@@ -2803,14 +2754,14 @@ fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, hal
     }
     let _e29 = local_18;
     if _e29 {
-        let _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
+        let _e30 = airlight_y_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         return _e30;
     }
-    let _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
+    let _e31 = airlight_v_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     return _e31;
 }
 
-fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_10: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
+fn airlight_integrate_piece(s_9: AirlightScene, g_12: AirlightCanonical, sigma_8: f32, half_10: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
     var list: array<vec4<f32>, 8> = array<vec4<f32>, 8>(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var mass_over_1: array<f32, 8> = array<f32, 8>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     var a_9: f32;
@@ -2837,9 +2788,9 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
     if !((hi > lo)) {
         return 0f;
     }
-    let _e10 = airlight_singular_heights(s_10, sigma_8);
+    let _e10 = airlight_singular_heights(s_9, sigma_8);
     let heights_v_1 = select(_e10, (vec3(1f) / _e10), half_10.second);
-    let _e16 = airlight_singular_steps(s_10);
+    let _e16 = airlight_singular_steps(s_9);
     a_9 = lo;
     b_8 = hi;
     loop {
@@ -2851,7 +2802,7 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
         {
             let _e64 = a_9;
             let _e65 = b_8;
-            let _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
+            let _e66 = airlight_panel(s_9, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             let _e67 = (*f_max_4);
             (*f_max_4) = max(_e67, _e66.f_max);
             let _e70 = slot;
@@ -2970,13 +2921,13 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                         list[_e199].w = 0f;
                         continue;
                     }
-                    let mid = (wa + ((wb - wa) * 0.5f));
+                    let mid_1 = (wa + ((wb - wa) * 0.5f));
                     a_9 = wa;
-                    b_8 = mid;
+                    b_8 = mid_1;
                     let _e207 = worst;
                     slot = _e207;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -3017,35 +2968,339 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
     return _e234;
 }
 
+fn airlight_atan2_upper(y_3: f32, x_8: f32) -> f32 {
+    if (x_8 > 0f) {
+        if (y_3 <= x_8) {
+            let _e6 = airlight_atan((y_3 / x_8));
+            return _e6;
+        }
+        let _e9 = airlight_atan((x_8 / y_3));
+        return (1.5707964f - _e9);
+    }
+    if (y_3 <= -(x_8)) {
+        let _e16 = airlight_atan((y_3 / -(x_8)));
+        return (AIRLIGHT_PI - _e16);
+    }
+    let _e21 = airlight_atan((-(x_8) / y_3));
+    return (1.5707964f + _e21);
+}
+
+fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32) -> f32 {
+    var local_22: bool;
+
+    if !(!((gap_1 > 0f))) {
+        local_22 = (gap_1 >= AIRLIGHT_FLT_MAX);
+    } else {
+        local_22 = true;
+    }
+    let _e14 = local_22;
+    if _e14 {
+        return 0f;
+    }
+    let _e21 = airlight_log1p((gap_1 + sqrt((gap_1 * (2f + gap_1)))));
+    let re_2 = select(1.5707964f, -1.5707964f, (side_1 > 0f));
+    let _e30 = airlight_bernstein_rho(((re_2 - mid) / hw), (_e21 / hw));
+    return (step_1 / _e30);
+}
+
+fn airlight_cut_length(big_h_1: f32, v_s: f32) -> f32 {
+    let inv_h = (1f / big_h_1);
+    let w_3 = (v_s + inv_h);
+    let r_10 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
+    return (e_1 * inv_h);
+}
+
+fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_9: f32, j_1: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_9))) * j_1);
+    let _e13 = airlight_is_finite(plain_1);
+    if _e13 {
+        return plain_1;
+    }
+    if !((abs(j_1) > 0f)) {
+        return 0f;
+    }
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_9) + log(abs(j_1)))));
+}
+
+fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f32> {
+    var local_23: bool;
+    var y0_: f32;
+    var y1_: f32 = AIRLIGHT_FLT_MAX;
+    var y_cut: f32 = AIRLIGHT_FLT_MAX;
+    var psi1_: f32 = 0f;
+    var width: f32;
+    var degree_1: f32 = 0f;
+    var lambda_1: f32;
+    var rate: f32 = 0f;
+    var samples_3: array<f32, 12>;
+    var value_1: f32 = 0f;
+    var mass_4: f32 = 0f;
+    var magnitude: f32 = 0f;
+    var f_max_5: f32 = 0f;
+    var i_12: u32 = 0u;
+    var sn: f32;
+    var cs: f32;
+    var y_4: f32;
+    var one_plus: f32;
+    var one_minus: f32;
+    var m_3: array<f32, 12>;
+    var local_24: bool;
+
+    if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        return vec2<f32>(0f, 0f);
+    }
+    let h_3 = g_13.h;
+    let u0_ = ((g_13.t_lo - g_13.x_h) / h_3);
+    let u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
+    if !(g_13.t_hi_infinite) {
+        let _e21 = airlight_is_finite(u1_);
+        local_23 = _e21;
+    } else {
+        local_23 = false;
+    }
+    let u1_finite = local_23;
+    let big_h_7 = (s_10.sigma_t * h_3);
+    let _e26 = airlight_hypot_one(u0_);
+    y0_ = (u0_ + _e26);
+    if (u0_ < 0f) {
+        let _e31 = airlight_hypot_one(u0_);
+        y0_ = (1f / (_e31 - u0_));
+    }
+    if u1_finite {
+        let _e37 = airlight_hypot_one(u1_);
+        y1_ = (u1_ + _e37);
+        if (u1_ < 0f) {
+            let _e41 = airlight_hypot_one(u1_);
+            y1_ = (1f / (_e41 - u1_));
+        }
+    }
+    if (big_h_7 > 0f) {
+        let _e49 = y0_;
+        let _e50 = y0_;
+        let _e51 = airlight_cut_length(big_h_7, _e50);
+        y_cut = (_e49 + _e51);
+    }
+    let _e55 = airlight_atan2_upper(1f, -(u0_));
+    let _e59 = airlight_atan2_upper(1f, u0_);
+    width = _e59;
+    let _e61 = y_cut;
+    let _e62 = y1_;
+    if (_e61 < _e62) {
+        let _e64 = y_cut;
+        let _e67 = airlight_atan((1f / _e64));
+        psi1_ = (2f * _e67);
+        let _e70 = y_cut;
+        let _e71 = y0_;
+        let _e73 = y0_;
+        let _e74 = y_cut;
+        let _e78 = airlight_atan2_upper((_e70 - _e71), (1f + (_e73 * _e74)));
+        width = (2f * _e78);
+    } else {
+        if u1_finite {
+            let _e82 = airlight_atan2_upper(1f, u1_);
+            psi1_ = _e82;
+            let _e90 = airlight_atan2_upper(((g_13.t_hi - g_13.t_lo) / h_3), (1f + (u0_ * u1_)));
+            width = _e90;
+        }
+    }
+    let _e91 = width;
+    let hw_2 = (_e91 * 0.5f);
+    if !((hw_2 > 0f)) {
+        return vec2<f32>(0f, 0f);
+    }
+    let mid_2 = ((_e55 + hw_2) - 1.5707964f);
+    let _e103 = y1_;
+    let _e104 = y_cut;
+    let y_end = min(_e103, _e104);
+    let _e106 = y0_;
+    let y_e = min((_e106 + (1f / big_h_7)), y_end);
+    if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+        degree_1 = s_10.light_param_a;
+    }
+    let _e117 = degree_1;
+    lambda_1 = (sqrt(_e117) * hw_2);
+    if (big_h_7 > 0f) {
+        let _e123 = lambda_1;
+        let _e124 = y0_;
+        lambda_1 = (_e123 + (min((big_h_7 * (y_end - _e124)), ((hw_2 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
+    }
+    let _e136 = lambda_1;
+    let predicted = (pow(_e136, 12f) * AIRLIGHT_INV_ODD_FACTORIAL);
+    if !((predicted <= AIRLIGHT_PANEL_TOLERANCE)) {
+        return vec2<f32>(0f, 0f);
+    }
+    let _e147 = airlight_singular_steps(s_10);
+    let step_3 = _e147.y;
+    let p0_4 = s_10.phase_param_a;
+    switch s_10.phase_kind {
+        case 2u, 4u: {
+            let _e153 = airlight_hg_gap(p0_4);
+            let _e154 = airlight_angle_floor(p0_4, _e153, mid_2, hw_2, step_3);
+            rate = _e154;
+        }
+        case 3u: {
+            let a_22 = abs(p0_4);
+            let _e163 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_22) / a_22), (a_22 > 0f)), mid_2, hw_2, step_3);
+            rate = _e163;
+        }
+        case 5u: {
+            let p1_3 = s_10.phase_param_b;
+            let _e165 = airlight_hg_gap(p0_4);
+            let _e166 = airlight_angle_floor(p0_4, _e165, mid_2, hw_2, step_3);
+            let _e167 = airlight_hg_gap(p1_3);
+            let _e168 = airlight_angle_floor(p1_3, _e167, mid_2, hw_2, step_3);
+            rate = max(_e166, _e168);
+        }
+        default: {
+        }
+    }
+    let _e170 = rate;
+    if !((pow(_e170, 12f) <= AIRLIGHT_PANEL_TOLERANCE)) {
+        return vec2<f32>(0f, 0f);
+    }
+    if (big_h_7 > 0f) {
+        let _e181 = rate;
+        let _e186 = airlight_bernstein_rho(((1.5707964f - mid_2) / hw_2), 0f);
+        rate = max(_e181, (1f / _e186));
+    }
+    let _e190 = airlight_gauss_rule();
+    let _e191 = airlight_zero_terms();
+    samples_3 = _e191;
+    loop {
+        let _e203 = i_12;
+        if (_e203 < AIRLIGHT_TERMS) {
+        } else {
+            break;
+        }
+        {
+            let _e206 = i_12;
+            let _e207 = airlight_node(_e190, _e206);
+            let lower = (_e55 + (hw_2 * (1f + _e207)));
+            sn = 0f;
+            cs = 0f;
+            y_4 = 0f;
+            one_plus = 0f;
+            one_minus = 0f;
+            if (lower <= 1.5707964f) {
+                let _e224 = airlight_cos_sin(lower);
+                cs = _e224.y;
+                sn = -(_e224.x);
+                one_minus = (1f + _e224.x);
+                let _e231 = cs;
+                let _e232 = one_minus;
+                y_4 = (_e231 / _e232);
+                let _e234 = cs;
+                let _e235 = cs;
+                let _e237 = one_minus;
+                one_plus = ((_e234 * _e235) / _e237);
+            } else {
+                let _e239 = psi1_;
+                let _e244 = airlight_cos_sin((_e239 + (hw_2 * (1f - _e207))));
+                cs = _e244.y;
+                sn = _e244.x;
+                let _e247 = sn;
+                one_plus = (1f + _e247);
+                let _e250 = one_plus;
+                let _e251 = cs;
+                y_4 = (_e250 / _e251);
+                let _e253 = cs;
+                let _e254 = cs;
+                let _e256 = one_plus;
+                one_minus = ((_e253 * _e254) / _e256);
+            }
+            let _e258 = y_4;
+            let _e259 = y0_;
+            let _e266 = cs;
+            let weight_1 = select(0f, exp(-(max((big_h_7 * (_e258 - _e259)), 0f))), (_e266 > 0f));
+            let _e275 = sn;
+            let _e278 = cs;
+            let _e281 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * _e275) + (g_13.d_c * _e278)));
+            let _e286 = sn;
+            let _e288 = one_plus;
+            let _e289 = one_minus;
+            let _e290 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(_e286), _e288, _e289);
+            let f_2 = (_e281 * _e290);
+            let gw = (weight_1 * f_2);
+            let _e293 = i_12;
+            samples_3[_e293] = gw;
+            let _e295 = i_12;
+            let w_4 = _e190[(_e295 / 2u)].y;
+            let _e300 = value_1;
+            value_1 = (_e300 + (w_4 * gw));
+            let _e303 = mass_4;
+            mass_4 = (_e303 + (w_4 * weight_1));
+            let _e306 = magnitude;
+            magnitude = (_e306 + (w_4 * abs(gw)));
+            let _e310 = f_max_5;
+            f_max_5 = max(_e310, abs(f_2));
+        }
+        continuing {
+            let _e314 = i_12;
+            i_12 = (_e314 + 1u);
+        }
+    }
+    let _e316 = samples_3;
+    let _e317 = airlight_legendre(_e316);
+    let _e318 = airlight_zero_terms();
+    m_3 = _e318;
+    m_3[0] = 2f;
+    let _e322 = airlight_tail_estimate(_e317);
+    let _e325 = m_3;
+    let _e326 = rate;
+    let _e327 = airlight_error_factor(_e317, _e325, _e326);
+    let error_4 = ((2f * _e322) * _e327);
+    let _e330 = magnitude;
+    let noise_1 = (0.000005722046f * _e330);
+    let _e333 = value_1;
+    let _e336 = f_max_5;
+    let _e338 = mass_4;
+    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e333), ((AIRLIGHT_PANEL_FLOOR * _e336) * _e338)));
+    if !((error_4 <= accepted)) {
+        local_24 = (error_4 <= noise_1);
+    } else {
+        local_24 = true;
+    }
+    let _e348 = local_24;
+    if !(_e348) {
+        return vec2<f32>(0f, 0f);
+    }
+    let _e353 = airlight_hypot_one(u0_);
+    let r0_ = (h_3 * _e353);
+    let _e359 = value_1;
+    let _e363 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (s_10.sigma_t * r0_), ((_e359 * hw_2) * 0.5f));
+    return vec2<f32>(1f, _e363);
+}
+
 fn airlight_bounded(a_10: f32) -> f32 {
     let _e1 = airlight_hypot_one(a_10);
     return (1f / (a_10 + _e1));
 }
 
-fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> {
-    var local_22: bool;
+fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> {
+    var local_25: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_5 + (sigma_9 * d_el));
+    let a0_ = (k_4 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_5 - (sigma_9 * d_el));
+    let c0_ = (k_4 - (sigma_9 * d_el));
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_22 = !(_e21);
+        local_25 = !(_e21);
     } else {
-        local_22 = true;
+        local_25 = true;
     }
-    let _e24 = local_22;
+    let _e24 = local_25;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_22 = (a0_ / scale_1);
+    let a_23 = (a0_ / scale_1);
     let b_16 = (b0_ / scale_1);
     let c_9 = (c0_ / scale_1);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_22) * c_9));
+    let disc_1 = ((b_16 * b_16) - ((4f * a_23) * c_9));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -3057,121 +3312,121 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_5: f32) -> vec2<f32> 
     if (q_2 != 0f) {
         r1_ = (c_9 / q_2);
     }
-    if (a_22 != 0f) {
-        r2_2 = (q_2 / a_22);
+    if (a_23 != 0f) {
+        r2_2 = (q_2 / a_23);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_cosine(g_13: AirlightCanonical, sigma_10: f32, y_3: f32) -> f32 {
-    let y2_1 = (y_3 * y_3);
-    return ((((1f - y2_1) * (sigma_10 * g_13.d_el)) + ((y_3 + y_3) * g_13.d_c)) / (1f + y2_1));
+fn airlight_cosine(g_14: AirlightCanonical, sigma_10: f32, y_5: f32) -> f32 {
+    let y2_1 = (y_5 * y_5);
+    return ((((1f - y2_1) * (sigma_10 * g_14.d_el)) + ((y_5 + y_5) * g_14.d_c)) / (1f + y2_1));
 }
 
-fn airlight_dark(g_14: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
-    var local_23: bool;
-    var local_24: bool;
-    var y1_: f32;
-    var local_25: bool;
+fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
     var local_26: bool;
     var local_27: bool;
+    var y1_1: f32;
     var local_28: bool;
+    var local_29: bool;
+    var local_30: bool;
+    var local_31: bool;
 
-    let _e9 = airlight_cosine(g_14, sigma_11, (0.5f * (lo_1 + hi_1)));
+    let _e9 = airlight_cosine(g_15, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
         return false;
     }
     if (lo_1 == half_11.y_lo) {
-        let _e17 = airlight_cosine(g_14, sigma_11, lo_1);
-        local_23 = !((_e17 < bound));
+        let _e17 = airlight_cosine(g_15, sigma_11, lo_1);
+        local_26 = !((_e17 < bound));
     } else {
-        local_23 = false;
+        local_26 = false;
     }
-    let _e21 = local_23;
+    let _e21 = local_26;
     if _e21 {
         return false;
     }
     if (hi_1 == half_11.y_hi) {
-        let _e27 = airlight_cosine(g_14, sigma_11, hi_1);
-        local_24 = !((_e27 < bound));
+        let _e27 = airlight_cosine(g_15, sigma_11, hi_1);
+        local_27 = !((_e27 < bound));
     } else {
-        local_24 = false;
+        local_27 = false;
     }
-    let _e31 = local_24;
+    let _e31 = local_27;
     if _e31 {
         return false;
     }
-    let a_23 = (sigma_11 * g_14.d_el);
-    let d_2 = g_14.d_c;
+    let a_24 = (sigma_11 * g_15.d_el);
+    let d_2 = g_15.d_c;
     if (d_2 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_23 * a_23) + (d_2 * d_2)));
-    y1_ = ((root_1 - a_23) / d_2);
-    if (a_23 > 0f) {
-        y1_ = (d_2 / (a_23 + root_1));
+    let root_1 = sqrt(((a_24 * a_24) + (d_2 * d_2)));
+    y1_1 = ((root_1 - a_24) / d_2);
+    if (a_24 > 0f) {
+        y1_1 = (d_2 / (a_24 + root_1));
     }
-    let _e50 = y1_;
+    let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
-    let _e53 = y1_;
+    let _e53 = y1_1;
     if (_e53 > lo_1) {
-        let _e57 = y1_;
-        local_25 = (_e57 < hi_1);
+        let _e57 = y1_1;
+        local_28 = (_e57 < hi_1);
     } else {
-        local_25 = false;
+        local_28 = false;
     }
-    let _e60 = local_25;
+    let _e60 = local_28;
     if _e60 {
-        let _e63 = y1_;
-        let _e64 = airlight_cosine(g_14, sigma_11, _e63);
-        local_26 = !((_e64 < bound));
+        let _e63 = y1_1;
+        let _e64 = airlight_cosine(g_15, sigma_11, _e63);
+        local_29 = !((_e64 < bound));
     } else {
-        local_26 = false;
+        local_29 = false;
     }
-    let _e68 = local_26;
+    let _e68 = local_29;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_27 = (y2_2 < hi_1);
+        local_30 = (y2_2 < hi_1);
     } else {
-        local_27 = false;
+        local_30 = false;
     }
-    let _e75 = local_27;
+    let _e75 = local_30;
     if _e75 {
-        let _e78 = airlight_cosine(g_14, sigma_11, y2_2);
-        local_28 = !((_e78 < bound));
+        let _e78 = airlight_cosine(g_15, sigma_11, y2_2);
+        local_31 = !((_e78 < bound));
     } else {
-        local_28 = false;
+        local_31 = false;
     }
-    let _e82 = local_28;
+    let _e82 = local_31;
     if _e82 {
         return false;
     }
     return true;
 }
 
-fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, half_12: AirlightHalf, isotropic: bool, f_max_5: ptr<function, f32>) -> f32 {
+fn airlight_half(s_11: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, half_12: AirlightHalf, isotropic: bool, f_max_6: ptr<function, f32>) -> f32 {
     var cuts: array<f32, 4> = array<f32, 4>(2f, 2f, 2f, 2f);
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
-    var i_12: u32 = 0u;
-    var local_29: bool;
     var i_13: u32 = 0u;
+    var local_32: bool;
+    var i_14: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
-    var i_14: u32 = 0u;
+    var i_15: u32 = 0u;
     var hi_2: f32;
-    var local_30: bool;
-    var local_31: bool;
-    var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
+    var local_35: bool;
 
     if isotropic {
-        let _e7 = airlight_integrand(s_11, g_15, sigma_12, 0f);
+        let _e7 = airlight_integrand(s_11, g_16, sigma_12, 0f);
         let _e8 = airlight_moment_zero(half_12);
         return (_e7 * _e8);
     }
@@ -3180,49 +3435,49 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
         k_out = s_11.light_param_b;
         let _e25 = k_in;
         let _e26 = k_out;
-        let width_1 = (_e25 - _e26);
-        if (width_1 <= AIRLIGHT_FLT_EPS) {
+        let width_2 = (_e25 - _e26);
+        if (width_2 <= AIRLIGHT_FLT_EPS) {
             let _e30 = k_out;
-            k_in = (_e30 + (width_1 * 0.5f));
+            k_in = (_e30 + (width_2 * 0.5f));
             let _e34 = k_in;
             k_out = _e34;
         }
         let _e35 = k_out;
         dark_below = _e35;
         let _e38 = k_in;
-        let _e39 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e38);
+        let _e39 = airlight_crossings(sigma_12, g_16.d_el, g_16.d_c, _e38);
         let _e42 = k_out;
-        let _e43 = airlight_crossings(sigma_12, g_15.d_el, g_15.d_c, _e42);
+        let _e43 = airlight_crossings(sigma_12, g_16.d_el, g_16.d_c, _e42);
         cuts = array<f32, 4>(_e39.x, _e39.y, _e43.x, _e43.y);
         loop {
-            let _e51 = i_12;
+            let _e51 = i_13;
             if (_e51 < 4u) {
             } else {
                 break;
             }
             {
-                let _e54 = i_12;
+                let _e54 = i_13;
                 let _e56 = cuts[_e54];
                 if (_e56 > half_12.y_lo) {
-                    let _e61 = i_12;
+                    let _e61 = i_13;
                     let _e63 = cuts[_e61];
-                    local_29 = (_e63 < half_12.y_hi);
+                    local_32 = (_e63 < half_12.y_hi);
                 } else {
-                    local_29 = false;
+                    local_32 = false;
                 }
-                let _e67 = local_29;
+                let _e67 = local_32;
                 if !(_e67) {
-                    let _e69 = i_12;
+                    let _e69 = i_13;
                     cuts[_e69] = 2f;
                 }
             }
             continuing {
-                let _e73 = i_12;
-                i_12 = (_e73 + 1u);
+                let _e73 = i_13;
+                i_13 = (_e73 + 1u);
             }
         }
         loop {
-            let _e77 = i_13;
+            let _e77 = i_14;
             if (_e77 < 3u) {
             } else {
                 break;
@@ -3231,7 +3486,7 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
                 j_2 = 0u;
                 loop {
                     let _e82 = j_2;
-                    let _e84 = i_13;
+                    let _e84 = i_14;
                     if (_e82 < (3u - _e84)) {
                     } else {
                         break;
@@ -3259,31 +3514,31 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
                 }
             }
             continuing {
-                let _e114 = i_13;
-                i_13 = (_e114 + 1u);
+                let _e114 = i_14;
+                i_14 = (_e114 + 1u);
             }
         }
     }
     lo_2 = half_12.y_lo;
     loop {
-        let _e122 = i_14;
+        let _e122 = i_15;
         if (_e122 < 5u) {
         } else {
             break;
         }
         {
             hi_2 = half_12.y_hi;
-            let _e127 = i_14;
+            let _e127 = i_15;
             if (_e127 < 4u) {
-                let _e132 = i_14;
+                let _e132 = i_15;
                 let _e134 = cuts[_e132];
-                local_30 = (_e134 < 2f);
+                local_33 = (_e134 < 2f);
             } else {
-                local_30 = false;
+                local_33 = false;
             }
-            let _e138 = local_30;
+            let _e138 = local_33;
             if _e138 {
-                let _e139 = i_14;
+                let _e139 = i_15;
                 let _e141 = cuts[_e139];
                 hi_2 = _e141;
             }
@@ -3294,101 +3549,89 @@ fn airlight_half(s_11: AirlightScene, g_15: AirlightCanonical, sigma_12: f32, ha
                     let _e150 = dark_below;
                     let _e151 = lo_2;
                     let _e152 = hi_2;
-                    let _e153 = airlight_dark(g_15, sigma_12, half_12, _e150, _e151, _e152);
-                    local_31 = _e153;
+                    let _e153 = airlight_dark(g_16, sigma_12, half_12, _e150, _e151, _e152);
+                    local_34 = _e153;
                 } else {
-                    local_31 = false;
+                    local_34 = false;
                 }
-                let _e155 = local_31;
+                let _e155 = local_34;
                 if !(_e155) {
                     let _e157 = total_2;
                     let _e158 = lo_2;
                     let _e159 = hi_2;
-                    let _e160 = airlight_integrate_piece(s_11, g_15, sigma_12, half_12, _e158, _e159, f_max_5);
+                    let _e160 = airlight_integrate_piece(s_11, g_16, sigma_12, half_12, _e158, _e159, f_max_6);
                     total_2 = (_e157 + _e160);
                 }
                 let _e162 = hi_2;
                 lo_2 = _e162;
             }
-            let _e163 = i_14;
+            let _e163 = i_15;
             if (_e163 < 4u) {
-                let _e168 = i_14;
+                let _e168 = i_15;
                 let _e170 = cuts[_e168];
-                local_32 = (_e170 >= 2f);
+                local_35 = (_e170 >= 2f);
             } else {
-                local_32 = false;
+                local_35 = false;
             }
-            let _e174 = local_32;
+            let _e174 = local_35;
             if _e174 {
                 break;
             }
         }
         continuing {
-            let _e176 = i_14;
-            i_14 = (_e176 + 1u);
+            let _e176 = i_15;
+            i_15 = (_e176 + 1u);
         }
     }
     let _e178 = total_2;
     return _e178;
 }
 
-fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_8: f32, j_3: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_8))) * j_3);
-    let _e13 = airlight_is_finite(plain_1);
-    if _e13 {
-        return plain_1;
-    }
-    if !((abs(j_3) > 0f)) {
-        return 0f;
-    }
-    return (sign(j_3) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_8) + log(abs(j_3)))));
-}
-
-fn airlight_on_line(s_12: AirlightScene, g_16: AirlightCanonical) -> f32 {
-    var local_33: bool;
+fn airlight_on_line(s_12: AirlightScene, g_17: AirlightCanonical) -> f32 {
+    var local_36: bool;
     var span: f32;
     var e2_: array<f32, 14>;
     var tail: f32 = 0f;
 
-    if !(g_16.t_hi_infinite) {
-        local_33 = (g_16.x_h > g_16.t_hi);
+    if !(g_17.t_hi_infinite) {
+        local_36 = (g_17.x_h > g_17.t_hi);
     } else {
-        local_33 = false;
+        local_36 = false;
     }
-    let _e10 = local_33;
+    let _e10 = local_36;
     if _e10 {
-        let _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_16.d_el));
+        let _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_17.d_el));
         let _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1f);
-        let f_2 = (_e16 * _e22);
-        let r0_ = (g_16.x_h - g_16.t_lo);
-        let r1_1 = (g_16.x_h - g_16.t_hi);
-        let _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * r0_), (f_2 * (((g_16.t_hi - g_16.t_lo) / r0_) / r1_1)));
+        let f_3 = (_e16 * _e22);
+        let r0_1 = (g_17.x_h - g_17.t_lo);
+        let r1_1 = (g_17.x_h - g_17.t_hi);
+        let _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * r0_1), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_1) / r1_1)));
         return _e41;
     }
-    let _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_16.d_el);
+    let _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_17.d_el);
     let _e52 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, -1f);
-    let f_3 = (_e46 * _e52);
-    let s0_ = (g_16.t_lo - g_16.x_h);
-    let s1_ = (g_16.t_hi - g_16.x_h);
+    let f_4 = (_e46 * _e52);
+    let s0_ = (g_17.t_lo - g_17.x_h);
+    let s1_ = (g_17.t_hi - g_17.x_h);
     if (s_12.sigma_t == 0f) {
         span = (1f / s0_);
-        if !(g_16.t_hi_infinite) {
+        if !(g_17.t_hi_infinite) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         let _e75 = span;
-        let _e77 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, 0f, (f_3 * _e75));
+        let _e77 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, 0f, (f_4 * _e75));
         return _e77;
     }
     let two_st = (s_12.sigma_t + s_12.sigma_t);
     let _e82 = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * s0_), ((f_3 * _e90) / s0_));
-    if !(g_16.t_hi_infinite) {
+    let _e93 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * s0_), ((f_4 * _e90) / s0_));
+    if !(g_17.t_hi_infinite) {
         let _e99 = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, ((s_12.sigma_t * (s1_ - s0_)) + (s_12.sigma_t * s1_)), ((f_3 * _e110) / s1_));
+        let _e113 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, ((s_12.sigma_t * (s1_ - s0_)) + (s_12.sigma_t * s1_)), ((f_4 * _e110) / s1_));
         tail = _e113;
     }
     let _e114 = airlight_is_finite(_e93);
@@ -3399,49 +3642,49 @@ fn airlight_on_line(s_12: AirlightScene, g_16: AirlightCanonical) -> f32 {
     return (_e93 - _e116);
 }
 
-fn airlight_optical(big_h_1: f32, dv_1: f32, infinite: bool) -> f32 {
+fn airlight_optical(big_h_2: f32, dv_1: f32, infinite: bool) -> f32 {
     var negligible: bool;
 
-    negligible = ((big_h_1 * dv_1) < AIRLIGHT_FLT_EPS);
+    negligible = ((big_h_2 * dv_1) < AIRLIGHT_FLT_EPS);
     if infinite {
-        negligible = (big_h_1 < 0.000000000000014210855f);
+        negligible = (big_h_2 < 0.000000000000014210855f);
     }
     let _e9 = negligible;
-    return select(big_h_1, 0f, _e9);
+    return select(big_h_2, 0f, _e9);
 }
 
-fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_2: f32) -> f32 {
+fn airlight_whole_line(s_13: AirlightScene, g_18: AirlightCanonical, big_h_3: f32) -> f32 {
     var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_34: bool;
-    var local_35: bool;
-    var x_9: f32 = 0f;
+    var local_37: bool;
+    var local_38: bool;
+    var x_10: f32 = 0f;
 
-    let h_3 = g_17.h;
-    let a_s = ((g_17.x_h - g_17.t_lo) / h_3);
+    let h_4 = g_18.h;
+    let a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_17.t_hi - g_17.x_h) / h_3);
-    if !(g_17.t_hi_infinite) {
+    let u_e = ((g_18.t_hi - g_18.x_h) / h_4);
+    if !(g_18.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_34 = _e24;
+        local_37 = _e24;
     } else {
-        local_34 = false;
+        local_37 = false;
     }
-    let _e26 = local_34;
+    let _e26 = local_37;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_17.t_hi - g_17.t_lo) / h_3) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_18.t_hi - g_18.t_lo) / h_4) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_35 = _e40;
+            local_38 = _e40;
         } else {
-            local_35 = false;
+            local_38 = false;
         }
-        let _e42 = local_35;
+        let _e42 = local_38;
         if _e42 {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3450,7 +3693,7 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_2: f3
     }
     let _e45 = dv_2;
     let _e46 = infinite_1;
-    let _e47 = airlight_optical(big_h_2, _e45, _e46);
+    let _e47 = airlight_optical(big_h_3, _e45, _e46);
     let _e48 = v_e_2;
     let _e49 = dv_2;
     let _e50 = dv_2;
@@ -3458,36 +3701,25 @@ fn airlight_whole_line(s_13: AirlightScene, g_17: AirlightCanonical, big_h_2: f3
     let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_9 = (big_h_2 * _e8);
+        x_10 = (big_h_3 * _e8);
     } else {
         if (s_13.sigma_t > 0f) {
-            x_9 = (s_13.sigma_t * abs((g_17.x_h - g_17.t_lo)));
+            x_10 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    let _e66 = x_9;
+    let _e66 = x_10;
     let _e67 = airlight_moment_zero_weighted(half_15, _e66);
-    let _e73 = airlight_integrand(s_13, g_17, -1f, 0f);
-    let _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_3, _e67.y, (_e73 * _e67.x));
+    let _e73 = airlight_integrand(s_13, g_18, -1f, 0f);
+    let _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
-fn airlight_cut_length(big_h_3: f32, v_s: f32) -> f32 {
-    let inv_h = (1f / big_h_3);
-    let w_3 = (v_s + inv_h);
-    let r_10 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
-    return (e_1 * inv_h);
-}
-
-fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
-    var local_36: bool;
-    var local_37: bool;
-    var local_38: bool;
+fn airlight_in_scatter_canonical(s_14: AirlightScene, g_19: AirlightCanonical) -> AirlightResult {
     var local_39: bool;
-    var gap_1: f32 = 0f;
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
+    var gap_2: f32 = 0f;
     var local_43: bool;
     var local_44: bool;
     var local_45: bool;
@@ -3495,334 +3727,340 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_18: AirlightCanonical) -
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
-    var total_3: f32 = 0f;
-    var f_max_6: f32 = 0f;
-    var behind_cut: bool = false;
-    var t_end: f32;
     var local_50: bool;
-    var half_13: AirlightHalf;
     var local_51: bool;
     var local_52: bool;
+    var total_3: f32 = 0f;
+    var f_max_7: f32 = 0f;
+    var behind_cut: bool = false;
+    var t_end: f32;
     var local_53: bool;
+    var half_13: AirlightHalf;
+    var local_54: bool;
+    var local_55: bool;
+    var local_56: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_54: bool;
-    var local_55: bool;
-    var half_14: AirlightHalf;
-    var local_56: bool;
     var local_57: bool;
     var local_58: bool;
+    var half_14: AirlightHalf;
+    var local_59: bool;
+    var local_60: bool;
+    var local_61: bool;
 
-    let t0_ = g_18.t_lo;
-    let t1_ = g_18.t_hi;
-    if !(g_18.t_hi_infinite) {
-        local_36 = (t1_ > t0_);
+    let t0_ = g_19.t_lo;
+    let t1_ = g_19.t_hi;
+    if !(g_19.t_hi_infinite) {
+        local_39 = (t1_ > t0_);
     } else {
-        local_36 = true;
+        local_39 = true;
     }
-    let _e10 = local_36;
+    let _e10 = local_39;
     if !(!(_e10)) {
-        local_37 = ((s_14.sigma_s * s_14.intensity) == 0f);
+        local_40 = ((s_14.sigma_s * s_14.intensity) == 0f);
     } else {
-        local_37 = true;
+        local_40 = true;
     }
-    let _e21 = local_37;
+    let _e21 = local_40;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_4 = g_18.h;
-    let x_h = g_18.x_h;
+    let h_5 = g_19.h;
+    let x_h = g_19.x_h;
     if (t0_ <= x_h) {
-        if !(g_18.t_hi_infinite) {
-            local_39 = (x_h <= t1_);
+        if !(g_19.t_hi_infinite) {
+            local_42 = (x_h <= t1_);
         } else {
-            local_39 = true;
+            local_42 = true;
         }
-        let _e36 = local_39;
-        local_38 = _e36;
+        let _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_38 = false;
+        local_41 = false;
     }
-    let inside = local_38;
+    let inside = local_41;
     if (x_h < t0_) {
-        gap_1 = (t0_ - x_h);
+        gap_2 = (t0_ - x_h);
     } else {
         if !(inside) {
-            gap_1 = (x_h - t1_);
+            gap_2 = (x_h - t1_);
         }
     }
     if !(inside) {
-        let _e48 = gap_1;
-        local_40 = (h_4 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
-    } else {
-        local_40 = false;
-    }
-    let _e55 = local_40;
-    if _e55 {
-        let _e56 = airlight_on_line(s_14, g_18);
-        return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
-    }
-    if (h_4 == 0f) {
-        return AirlightResult(340282350000000000000000000000000000000f, 2u);
-    }
-    let big_h_7 = (s_14.sigma_t * h_4);
-    if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_42 = (s_14.light_param_a == 0f);
-        } else {
-            local_42 = false;
-        }
-        let _e83 = local_42;
-        local_41 = _e83;
-    } else {
-        local_41 = true;
-    }
-    let _e85 = local_41;
-    if _e85 {
-        if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_45 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_45 = true;
-            }
-            let _e104 = local_45;
-            if _e104 {
-                local_46 = (s_14.phase_param_a == 0f);
-            } else {
-                local_46 = false;
-            }
-            let _e111 = local_46;
-            local_44 = _e111;
-        } else {
-            local_44 = true;
-        }
-        let _e113 = local_44;
-        local_43 = _e113;
+        let _e48 = gap_2;
+        local_43 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_43 = false;
     }
-    let isotropic_1 = local_43;
-    if isotropic_1 {
-        local_47 = (t0_ < x_h);
-    } else {
-        local_47 = false;
+    let _e55 = local_43;
+    if _e55 {
+        let _e56 = airlight_on_line(s_14, g_19);
+        return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
-    let _e120 = local_47;
-    if _e120 {
-        if !(g_18.t_hi_infinite) {
-            local_49 = (x_h < t1_);
+    if (h_5 == 0f) {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    let big_h_8 = (s_14.sigma_t * h_5);
+    if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_45 = (s_14.light_param_a == 0f);
         } else {
-            local_49 = true;
+            local_45 = false;
         }
-        let _e129 = local_49;
-        local_48 = _e129;
+        let _e83 = local_45;
+        local_44 = _e83;
     } else {
-        local_48 = false;
+        local_44 = true;
     }
-    let _e131 = local_48;
+    let _e85 = local_44;
+    if _e85 {
+        if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+            } else {
+                local_48 = true;
+            }
+            let _e104 = local_48;
+            if _e104 {
+                local_49 = (s_14.phase_param_a == 0f);
+            } else {
+                local_49 = false;
+            }
+            let _e111 = local_49;
+            local_47 = _e111;
+        } else {
+            local_47 = true;
+        }
+        let _e113 = local_47;
+        local_46 = _e113;
+    } else {
+        local_46 = false;
+    }
+    let isotropic_1 = local_46;
+    if isotropic_1 {
+        local_50 = (t0_ < x_h);
+    } else {
+        local_50 = false;
+    }
+    let _e120 = local_50;
+    if _e120 {
+        if !(g_19.t_hi_infinite) {
+            local_52 = (x_h < t1_);
+        } else {
+            local_52 = true;
+        }
+        let _e129 = local_52;
+        local_51 = _e129;
+    } else {
+        local_51 = false;
+    }
+    let _e131 = local_51;
     if _e131 {
-        let _e132 = airlight_whole_line(s_14, g_18, big_h_7);
+        let _e132 = airlight_whole_line(s_14, g_19, big_h_8);
         return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
+    }
+    if !(isotropic_1) {
+        let _e138 = airlight_angle_route(s_14, g_19);
+        if (_e138.x > 0.5f) {
+            return AirlightResult(max(_e138.y, 0f), AIRLIGHT_STATUS_OK);
+        }
     }
     let cut = !(isotropic_1);
     if (t0_ < x_h) {
-        let a_s_1 = ((x_h - t0_) / h_4);
+        let a_s_1 = ((x_h - t0_) / h_5);
         t_end = x_h;
-        if !(g_18.t_hi_infinite) {
-            local_50 = (t1_ < x_h);
+        if !(g_19.t_hi_infinite) {
+            local_53 = (t1_ < x_h);
         } else {
-            local_50 = false;
+            local_53 = false;
         }
-        let _e154 = local_50;
-        if _e154 {
+        let _e164 = local_53;
+        if _e164 {
             t_end = t1_;
         }
-        let _e155 = t_end;
-        let a_e = ((x_h - _e155) / h_4);
-        let _e158 = airlight_hypot_one(a_s_1);
-        let _e159 = airlight_hypot_one(a_e);
-        let _e160 = airlight_bounded(a_s_1);
-        let _e161 = airlight_bounded(a_e);
-        let _e162 = t_end;
-        let dy_1 = (((((_e162 - t0_) / h_4) * (1f + ((a_s_1 + a_e) / (_e158 + _e159)))) * _e160) * _e161);
-        let _e175 = airlight_optical(big_h_7, dy_1, false);
-        half_13 = AirlightHalf(false, _e175, _e160, _e161, dy_1, dy_1, false);
+        let _e165 = t_end;
+        let a_e = ((x_h - _e165) / h_5);
+        let _e168 = airlight_hypot_one(a_s_1);
+        let _e169 = airlight_hypot_one(a_e);
+        let _e170 = airlight_bounded(a_s_1);
+        let _e171 = airlight_bounded(a_e);
+        let _e172 = t_end;
+        let dy_1 = (((((_e172 - t0_) / h_5) * (1f + ((a_s_1 + a_e) / (_e168 + _e169)))) * _e170) * _e171);
+        let _e185 = airlight_optical(big_h_8, dy_1, false);
+        half_13 = AirlightHalf(false, _e185, _e170, _e171, dy_1, dy_1, false);
         if cut {
-            let _e182 = half_13.big_h;
-            local_51 = (_e182 > 0f);
-        } else {
-            local_51 = false;
-        }
-        let _e186 = local_51;
-        if _e186 {
-            let _e188 = half_13.big_h;
-            let _e189 = airlight_cut_length(_e188, _e160);
-            if (_e189 < dy_1) {
-                let _e193 = half_13.big_h;
-                half_13 = AirlightHalf(false, _e193, _e160, (_e160 + _e189), _e189, _e189, false);
-                behind_cut = true;
-            }
-        }
-        let _e199 = half_13;
-        let _e200 = airlight_half(s_14, g_18, -1f, _e199, isotropic_1, (&f_max_6));
-        let _e201 = total_3;
-        let _e205 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, (big_h_7 * _e158), _e200);
-        total_3 = (_e201 + _e205);
-    }
-    if !(g_18.t_hi_infinite) {
-        local_52 = (t1_ > x_h);
-    } else {
-        local_52 = true;
-    }
-    let _e213 = local_52;
-    if _e213 {
-        let _e216 = behind_cut;
-        local_53 = !(_e216);
-    } else {
-        local_53 = false;
-    }
-    let _e219 = local_53;
-    if _e219 {
-        let t_start = max(t0_, x_h);
-        let a_s_2 = ((t_start - x_h) / h_4);
-        let _e223 = airlight_hypot_one(a_s_2);
-        let _e224 = airlight_bounded(a_s_2);
-        dy = _e224;
-        let a_e_1 = ((t1_ - x_h) / h_4);
-        if !(g_18.t_hi_infinite) {
-            let _e238 = airlight_is_finite(a_e_1);
-            local_54 = _e238;
+            let _e192 = half_13.big_h;
+            local_54 = (_e192 > 0f);
         } else {
             local_54 = false;
         }
-        let _e240 = local_54;
-        if _e240 {
-            let _e241 = airlight_bounded(a_e_1);
-            let _e245 = airlight_hypot_one(a_e_1);
-            let dv_end_1 = (((t1_ - t_start) / h_4) * (1f + ((a_s_2 + a_e_1) / (_e223 + _e245))));
-            if (_e241 > 0f) {
-                let _e255 = airlight_is_finite(dv_end_1);
-                local_55 = _e255;
-            } else {
-                local_55 = false;
+        let _e196 = local_54;
+        if _e196 {
+            let _e198 = half_13.big_h;
+            let _e199 = airlight_cut_length(_e198, _e170);
+            if (_e199 < dy_1) {
+                let _e203 = half_13.big_h;
+                half_13 = AirlightHalf(false, _e203, _e170, (_e170 + _e199), _e199, _e199, false);
+                behind_cut = true;
             }
-            let _e257 = local_55;
-            if _e257 {
-                y_lo = _e241;
+        }
+        let _e209 = half_13;
+        let _e210 = airlight_half(s_14, g_19, -1f, _e209, isotropic_1, (&f_max_7));
+        let _e211 = total_3;
+        let _e215 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, (big_h_8 * _e168), _e210);
+        total_3 = (_e211 + _e215);
+    }
+    if !(g_19.t_hi_infinite) {
+        local_55 = (t1_ > x_h);
+    } else {
+        local_55 = true;
+    }
+    let _e223 = local_55;
+    if _e223 {
+        let _e226 = behind_cut;
+        local_56 = !(_e226);
+    } else {
+        local_56 = false;
+    }
+    let _e229 = local_56;
+    if _e229 {
+        let t_start = max(t0_, x_h);
+        let a_s_2 = ((t_start - x_h) / h_5);
+        let _e233 = airlight_hypot_one(a_s_2);
+        let _e234 = airlight_bounded(a_s_2);
+        dy = _e234;
+        let a_e_1 = ((t1_ - x_h) / h_5);
+        if !(g_19.t_hi_infinite) {
+            let _e248 = airlight_is_finite(a_e_1);
+            local_57 = _e248;
+        } else {
+            local_57 = false;
+        }
+        let _e250 = local_57;
+        if _e250 {
+            let _e251 = airlight_bounded(a_e_1);
+            let _e255 = airlight_hypot_one(a_e_1);
+            let dv_end_1 = (((t1_ - t_start) / h_5) * (1f + ((a_s_2 + a_e_1) / (_e233 + _e255))));
+            if (_e251 > 0f) {
+                let _e265 = airlight_is_finite(dv_end_1);
+                local_58 = _e265;
+            } else {
+                local_58 = false;
+            }
+            let _e267 = local_58;
+            if _e267 {
+                y_lo = _e251;
                 dv_3 = dv_end_1;
-                let _e258 = dv_3;
-                let _e259 = y_lo;
-                dy = ((_e258 * _e259) * _e224);
+                let _e268 = dv_3;
+                let _e269 = y_lo;
+                dy = ((_e268 * _e269) * _e234);
                 infinite_2 = false;
             }
         }
-        let _e264 = dv_3;
-        let _e265 = infinite_2;
-        let _e266 = airlight_optical(big_h_7, _e264, _e265);
-        let _e267 = y_lo;
-        let _e268 = dy;
-        let _e269 = dv_3;
-        let _e270 = infinite_2;
-        half_14 = AirlightHalf(true, _e266, _e267, _e224, _e268, _e269, _e270);
+        let _e274 = dv_3;
+        let _e275 = infinite_2;
+        let _e276 = airlight_optical(big_h_8, _e274, _e275);
+        let _e277 = y_lo;
+        let _e278 = dy;
+        let _e279 = dv_3;
+        let _e280 = infinite_2;
+        half_14 = AirlightHalf(true, _e276, _e277, _e234, _e278, _e279, _e280);
         if cut {
-            let _e276 = half_14.big_h;
-            local_56 = (_e276 > 0f);
+            let _e286 = half_14.big_h;
+            local_59 = (_e286 > 0f);
         } else {
-            local_56 = false;
+            local_59 = false;
         }
-        let _e280 = local_56;
-        if _e280 {
-            let _e282 = half_14.big_h;
-            let _e285 = airlight_cut_length(_e282, (1f / _e224));
-            let _e286 = infinite_2;
-            if !(_e286) {
-                let _e290 = dv_3;
-                local_57 = (_e285 < _e290);
+        let _e290 = local_59;
+        if _e290 {
+            let _e292 = half_14.big_h;
+            let _e295 = airlight_cut_length(_e292, (1f / _e234));
+            let _e296 = infinite_2;
+            if !(_e296) {
+                let _e300 = dv_3;
+                local_60 = (_e295 < _e300);
             } else {
-                local_57 = true;
+                local_60 = true;
             }
-            let _e293 = local_57;
-            if _e293 {
-                let cut_y_lo = (_e224 / (1f + (_e224 * _e285)));
+            let _e303 = local_60;
+            if _e303 {
+                let cut_y_lo = (_e234 / (1f + (_e234 * _e295)));
                 if (cut_y_lo > 0f) {
-                    let _e302 = airlight_is_finite(_e285);
-                    local_58 = _e302;
+                    let _e312 = airlight_is_finite(_e295);
+                    local_61 = _e312;
                 } else {
-                    local_58 = false;
+                    local_61 = false;
                 }
-                let _e304 = local_58;
-                if _e304 {
-                    let _e307 = half_14.big_h;
-                    half_14 = AirlightHalf(true, _e307, cut_y_lo, _e224, ((_e285 * cut_y_lo) * _e224), _e285, false);
+                let _e314 = local_61;
+                if _e314 {
+                    let _e317 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e317, cut_y_lo, _e234, ((_e295 * cut_y_lo) * _e234), _e295, false);
                 }
             }
         }
-        let _e313 = half_14;
-        let _e314 = airlight_half(s_14, g_18, 1f, _e313, isotropic_1, (&f_max_6));
-        let _e315 = total_3;
-        let _e323 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, ((s_14.sigma_t * (t_start - t0_)) + (big_h_7 * _e223)), _e314);
-        total_3 = (_e315 + _e323);
+        let _e323 = half_14;
+        let _e324 = airlight_half(s_14, g_19, 1f, _e323, isotropic_1, (&f_max_7));
+        let _e325 = total_3;
+        let _e333 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, ((s_14.sigma_t * (t_start - t0_)) + (big_h_8 * _e233)), _e324);
+        total_3 = (_e325 + _e333);
     }
-    let _e325 = total_3;
-    return AirlightResult(max(_e325, 0f), AIRLIGHT_STATUS_OK);
+    let _e335 = total_3;
+    return AirlightResult(max(_e335, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_59: bool;
-    var local_60: bool;
+    var local_62: bool;
+    var local_63: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_59 = _e6;
+        local_62 = _e6;
     } else {
-        local_59 = false;
+        local_62 = false;
     }
-    let _e8 = local_59;
+    let _e8 = local_62;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_60 = _e12;
+        local_63 = _e12;
     } else {
-        local_60 = false;
+        local_63 = false;
     }
-    let _e14 = local_60;
+    let _e14 = local_63;
     return _e14;
 }
 
 fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
-    let m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if (m_6 == 0f) {
+    let m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if (m_7 == 0f) {
         return 0f;
     }
-    return (m_6 * length((v_1 / vec3(m_6))));
+    return (m_7 * length((v_1 / vec3(m_7))));
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_61: bool;
+    var local_64: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_61 = _e6;
+        local_64 = _e6;
     } else {
-        local_61 = false;
+        local_64 = false;
     }
-    let _e8 = local_61;
+    let _e8 = local_64;
     return _e8;
 }
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
-    let m_7 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_1 = (v_3 / vec3(m_7));
+    let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    let u_1 = (v_3 / vec3(m_8));
     return (u_1 / vec3(length(u_1)));
 }
 
 fn airlight_valid(s_15: AirlightScene) -> bool {
-    var local_62: bool;
-    var local_63: bool;
-    var local_64: bool;
     var local_65: bool;
     var local_66: bool;
     var local_67: bool;
@@ -3830,10 +4068,10 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_69: bool;
     var local_70: bool;
     var local_71: bool;
-    var ok: bool;
     var local_72: bool;
     var local_73: bool;
     var local_74: bool;
+    var ok: bool;
     var local_75: bool;
     var local_76: bool;
     var local_77: bool;
@@ -3854,102 +4092,105 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_92: bool;
     var local_93: bool;
     var local_94: bool;
+    var local_95: bool;
+    var local_96: bool;
+    var local_97: bool;
 
     let _e2 = airlight_vec_finite(s_15.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_15.dir);
-        local_62 = _e6;
-    } else {
-        local_62 = false;
-    }
-    let _e8 = local_62;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_15.dir);
-        local_63 = _e12;
-    } else {
-        local_63 = false;
-    }
-    let _e14 = local_63;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_15.t_min);
-        local_64 = _e18;
-    } else {
-        local_64 = false;
-    }
-    let _e20 = local_64;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_15.light_position);
-        local_65 = _e24;
+        local_65 = _e6;
     } else {
         local_65 = false;
     }
-    let _e26 = local_65;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_15.intensity);
-        local_66 = _e30;
+    let _e8 = local_65;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_15.dir);
+        local_66 = _e12;
     } else {
         local_66 = false;
     }
-    let _e32 = local_66;
-    if _e32 {
-        local_67 = (s_15.intensity >= 0f);
+    let _e14 = local_66;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_15.t_min);
+        local_67 = _e18;
     } else {
         local_67 = false;
     }
-    let _e39 = local_67;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_15.sigma_s);
-        local_68 = _e43;
+    let _e20 = local_67;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_15.light_position);
+        local_68 = _e24;
     } else {
         local_68 = false;
     }
-    let _e45 = local_68;
-    if _e45 {
-        local_69 = (s_15.sigma_s >= 0f);
+    let _e26 = local_68;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_15.intensity);
+        local_69 = _e30;
     } else {
         local_69 = false;
     }
-    let _e52 = local_69;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_15.sigma_t);
-        local_70 = _e56;
+    let _e32 = local_69;
+    if _e32 {
+        local_70 = (s_15.intensity >= 0f);
     } else {
         local_70 = false;
     }
-    let _e58 = local_70;
-    if _e58 {
-        local_71 = (s_15.sigma_t >= 0f);
+    let _e39 = local_70;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_15.sigma_s);
+        local_71 = _e43;
     } else {
         local_71 = false;
     }
-    let _e65 = local_71;
+    let _e45 = local_71;
+    if _e45 {
+        local_72 = (s_15.sigma_s >= 0f);
+    } else {
+        local_72 = false;
+    }
+    let _e52 = local_72;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_15.sigma_t);
+        local_73 = _e56;
+    } else {
+        local_73 = false;
+    }
+    let _e58 = local_73;
+    if _e58 {
+        local_74 = (s_15.sigma_t >= 0f);
+    } else {
+        local_74 = false;
+    }
+    let _e65 = local_74;
     ok = _e65;
     if ((s_15.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_15.t_max);
-            local_72 = _e76;
+            local_75 = _e76;
         } else {
-            local_72 = false;
+            local_75 = false;
         }
-        let _e78 = local_72;
+        let _e78 = local_75;
         if _e78 {
-            local_73 = (s_15.t_min <= s_15.t_max);
+            local_76 = (s_15.t_min <= s_15.t_max);
         } else {
-            local_73 = false;
+            local_76 = false;
         }
-        let _e85 = local_73;
+        let _e85 = local_76;
         ok = _e85;
     }
     if (s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_15.light_end);
-            local_74 = _e93;
+            local_77 = _e93;
         } else {
-            local_74 = false;
+            local_77 = false;
         }
-        let _e95 = local_74;
+        let _e95 = local_77;
         ok = _e95;
     } else {
         if (s_15.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3960,37 +4201,37 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e103 = ok;
         if _e103 {
             let _e107 = airlight_is_finite(s_15.brdf_albedo);
-            local_75 = _e107;
-        } else {
-            local_75 = false;
-        }
-        let _e109 = local_75;
-        if _e109 {
-            local_76 = (s_15.brdf_albedo >= 0f);
-        } else {
-            local_76 = false;
-        }
-        let _e116 = local_76;
-        if _e116 {
-            local_77 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_77 = false;
-        }
-        let _e123 = local_77;
-        if _e123 {
-            local_78 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_78 = _e107;
         } else {
             local_78 = false;
         }
-        let _e130 = local_78;
-        if _e130 {
-            let _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
-            let _e137 = airlight_is_finite(_e136);
-            local_79 = _e137;
+        let _e109 = local_78;
+        if _e109 {
+            local_79 = (s_15.brdf_albedo >= 0f);
         } else {
             local_79 = false;
         }
-        let _e139 = local_79;
+        let _e116 = local_79;
+        if _e116 {
+            local_80 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_80 = false;
+        }
+        let _e123 = local_80;
+        if _e123 {
+            local_81 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_81 = false;
+        }
+        let _e130 = local_81;
+        if _e130 {
+            let _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
+            let _e137 = airlight_is_finite(_e136);
+            local_82 = _e137;
+        } else {
+            local_82 = false;
+        }
+        let _e139 = local_82;
         ok = _e139;
     } else {
         if (s_15.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -4001,72 +4242,72 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e147 = ok;
         if _e147 {
             let _e151 = airlight_vec_finite(s_15.light_axis);
-            local_80 = _e151;
-        } else {
-            local_80 = false;
-        }
-        let _e153 = local_80;
-        if _e153 {
-            let _e157 = airlight_normalisable(s_15.light_axis);
-            local_81 = _e157;
-        } else {
-            local_81 = false;
-        }
-        let _e159 = local_81;
-        if _e159 {
-            local_82 = (s_15.light_param_a >= 0f);
-        } else {
-            local_82 = false;
-        }
-        let _e166 = local_82;
-        if _e166 {
-            local_83 = (s_15.light_param_a <= 1024f);
+            local_83 = _e151;
         } else {
             local_83 = false;
         }
-        let _e173 = local_83;
-        if _e173 {
-            local_84 = (fract((s_15.light_param_a * 0.5f)) == 0f);
+        let _e153 = local_83;
+        if _e153 {
+            let _e157 = airlight_normalisable(s_15.light_axis);
+            local_84 = _e157;
         } else {
             local_84 = false;
         }
-        let _e183 = local_84;
+        let _e159 = local_84;
+        if _e159 {
+            local_85 = (s_15.light_param_a >= 0f);
+        } else {
+            local_85 = false;
+        }
+        let _e166 = local_85;
+        if _e166 {
+            local_86 = (s_15.light_param_a <= 1024f);
+        } else {
+            local_86 = false;
+        }
+        let _e173 = local_86;
+        if _e173 {
+            local_87 = (fract((s_15.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_87 = false;
+        }
+        let _e183 = local_87;
         ok = _e183;
     } else {
         if (s_15.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
                 let _e191 = airlight_vec_finite(s_15.light_axis);
-                local_85 = _e191;
-            } else {
-                local_85 = false;
-            }
-            let _e193 = local_85;
-            if _e193 {
-                let _e197 = airlight_normalisable(s_15.light_axis);
-                local_86 = _e197;
-            } else {
-                local_86 = false;
-            }
-            let _e199 = local_86;
-            if _e199 {
-                local_87 = (s_15.light_param_b < s_15.light_param_a);
-            } else {
-                local_87 = false;
-            }
-            let _e206 = local_87;
-            if _e206 {
-                local_88 = (s_15.light_param_b >= -1f);
+                local_88 = _e191;
             } else {
                 local_88 = false;
             }
-            let _e213 = local_88;
-            if _e213 {
-                local_89 = (s_15.light_param_a <= 1f);
+            let _e193 = local_88;
+            if _e193 {
+                let _e197 = airlight_normalisable(s_15.light_axis);
+                local_89 = _e197;
             } else {
                 local_89 = false;
             }
-            let _e220 = local_89;
+            let _e199 = local_89;
+            if _e199 {
+                local_90 = (s_15.light_param_b < s_15.light_param_a);
+            } else {
+                local_90 = false;
+            }
+            let _e206 = local_90;
+            if _e206 {
+                local_91 = (s_15.light_param_b >= -1f);
+            } else {
+                local_91 = false;
+            }
+            let _e213 = local_91;
+            if _e213 {
+                local_92 = (s_15.light_param_a <= 1f);
+            } else {
+                local_92 = false;
+            }
+            let _e220 = local_92;
             ok = _e220;
         } else {
             if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -4081,39 +4322,39 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e230 = ok;
             if _e230 {
-                local_90 = g_ok;
+                local_93 = g_ok;
             } else {
-                local_90 = false;
+                local_93 = false;
             }
-            let _e234 = local_90;
+            let _e234 = local_93;
             ok = _e234;
         }
         case 5u: {
             let _e235 = ok;
             if _e235 {
-                local_91 = g_ok;
-            } else {
-                local_91 = false;
-            }
-            let _e239 = local_91;
-            if _e239 {
-                local_92 = (abs(s_15.phase_param_b) < 1f);
-            } else {
-                local_92 = false;
-            }
-            let _e247 = local_92;
-            if _e247 {
-                local_93 = (s_15.phase_param_c >= 0f);
-            } else {
-                local_93 = false;
-            }
-            let _e254 = local_93;
-            if _e254 {
-                local_94 = (s_15.phase_param_c <= 1f);
+                local_94 = g_ok;
             } else {
                 local_94 = false;
             }
-            let _e261 = local_94;
+            let _e239 = local_94;
+            if _e239 {
+                local_95 = (abs(s_15.phase_param_b) < 1f);
+            } else {
+                local_95 = false;
+            }
+            let _e247 = local_95;
+            if _e247 {
+                local_96 = (s_15.phase_param_c >= 0f);
+            } else {
+                local_96 = false;
+            }
+            let _e254 = local_96;
+            if _e254 {
+                local_97 = (s_15.phase_param_c <= 1f);
+            } else {
+                local_97 = false;
+            }
+            let _e261 = local_97;
             ok = _e261;
         }
         default: {
@@ -4147,8 +4388,8 @@ fn airlight_canonical(s_16: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, select(s_16.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_10: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_10) ^ key));
+fn airlight_opaque(x_11: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_11) ^ key));
 }
 
 fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
@@ -4160,8 +4401,8 @@ fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
-fn airlight_split_high(x_11: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_11) + 2048u) & 4294963200u));
+fn airlight_split_high(x_12: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_12) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
@@ -4175,38 +4416,38 @@ fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_3, _e17));
 }
 
-fn airlight_diff_of_products(a_14: f32, b_11: f32, c_6: f32, d_1: f32, key_3: u32) -> f32 {
+fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
     let _e5 = airlight_two_product(a_14, b_11, key_3);
-    let _e6 = airlight_two_product(c_6, d_1, key_3);
+    let _e6 = airlight_two_product(c_5, d_1, key_3);
     let _e10 = airlight_opaque((_e5.x - _e6.x), key_3);
     let _e14 = airlight_opaque((_e5.y - _e6.y), key_3);
     return (_e10 + _e14);
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_95: bool;
-    var local_96: bool;
+    var local_98: bool;
+    var local_99: bool;
 
-    let m_8 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
-    if !((m_8 == 0f)) {
-        if (m_8 >= 0.0000000009313226f) {
-            local_96 = (m_8 <= AIRLIGHT_EXACT_RANGE);
+    let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if !((m_9 == 0f)) {
+        if (m_9 >= 0.0000000009313226f) {
+            local_99 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_96 = false;
+            local_99 = false;
         }
-        let _e21 = local_96;
-        local_95 = _e21;
+        let _e21 = local_99;
+        local_98 = _e21;
     } else {
-        local_95 = true;
+        local_98 = true;
     }
-    let _e23 = local_95;
+    let _e23 = local_98;
     return _e23;
 }
 
 fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_97: bool;
+    var local_100: bool;
     var out_2: AirlightCanonical;
-    var local_98: bool;
+    var local_101: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_17.flags > 1u));
@@ -4219,24 +4460,24 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_97 = !(_e38);
+        local_100 = !(_e38);
     } else {
-        local_97 = true;
+        local_100 = true;
     }
-    let _e41 = local_97;
+    let _e41 = local_100;
     if _e41 {
         return plain;
     }
     let _e46 = airlight_diff_of_products(hi_3.y, dir_2.z, hi_3.z, dir_2.y, key_4);
     let _e59 = airlight_diff_of_products(hi_3.z, dir_2.x, hi_3.x, dir_2.z, key_4);
     let _e72 = airlight_diff_of_products(hi_3.x, dir_2.y, hi_3.y, dir_2.x, key_4);
-    let w_4 = vec3<f32>((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
-    let _e82 = airlight_vec_finite(w_4);
+    let w_5 = vec3<f32>((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
+    let _e82 = airlight_vec_finite(w_5);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_4);
+    let _e85 = airlight_safe_length(w_5);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
@@ -4244,14 +4485,14 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         return _e92;
     }
     let _e93 = airlight_safe_length(dir_2);
-    let h_5 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_5);
+    let h_6 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_6);
     if _e95 {
-        local_98 = (h_5 > 0f);
+        local_101 = (h_6 > 0f);
     } else {
-        local_98 = false;
+        local_101 = false;
     }
-    let _e101 = local_98;
+    let _e101 = local_101;
     if !(_e101) {
         return plain;
     }
@@ -4260,11 +4501,11 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
-    let _e114 = airlight_normalize(w_4);
-    let n_3 = -(cross(_e113, _e114));
-    out_2.h = h_5;
+    let _e114 = airlight_normalize(w_5);
+    let n_2 = -(cross(_e113, _e114));
+    out_2.h = h_6;
     let _e119 = a_15;
-    out_2.d_c = dot(n_3, _e119);
+    out_2.d_c = dot(n_2, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -4273,8 +4514,8 @@ fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
     return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
 }
 
-fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
-    switch i_15 {
+fn airlight_list_get(l: AirlightPanelList, i_16: u32) -> vec4<f32> {
+    switch i_16 {
         case 0u: {
             return l.panel_a;
         }
@@ -4296,8 +4537,8 @@ fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
     }
 }
 
-fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
-    switch i_16 {
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_17: u32, v_5: vec4<f32>) {
+    switch i_17 {
         case 0u: {
             (*l_1).panel_a = v_5;
             return;
@@ -4402,66 +4643,66 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e129;
 }
 
-fn airlight_asinh(x_12: f32) -> f32 {
+fn airlight_asinh(x_13: f32) -> f32 {
     var r_4: f32;
 
-    let a_24 = abs(x_12);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_24));
-    if (a_24 <= 4096f) {
-        let _e17 = airlight_log1p((a_24 + ((a_24 * a_24) / (1f + sqrt((1f + (a_24 * a_24)))))));
+    let a_25 = abs(x_13);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_25));
+    if (a_25 <= 4096f) {
+        let _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1f + sqrt((1f + (a_25 * a_25)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_12 < 0f));
+    return select(_e18, -(_e19), (x_13 < 0f));
 }
 
-fn airlight_to_w(g_19: AirlightOuter, s_18: f32) -> f32 {
-    if (g_19.scale > 0f) {
-        let _e9 = airlight_asinh(((s_18 - g_19.s_star) / g_19.scale));
+fn airlight_to_w(g_20: AirlightOuter, s_18: f32) -> f32 {
+    if (g_20.scale > 0f) {
+        let _e9 = airlight_asinh(((s_18 - g_20.s_star) / g_20.scale));
         return _e9;
     }
     return s_18;
 }
 
-fn airlight_cos_sin_half_turn(x_13: f32) -> vec2<f32> {
-    let r_11 = (x_13 - 1.5707964f);
+fn airlight_cos_sin_half_turn(x_14: f32) -> vec2<f32> {
+    let r_11 = (x_14 - 1.5707964f);
     let z_11 = (r_11 * r_11);
     let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
     let sin_r = (r_11 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_14: f32) -> f32 {
-    let a_25 = abs(x_14);
-    let _e8 = airlight_atan(sqrt(((1f - a_25) / (1f + a_25))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_14 < 0f));
+fn airlight_acos(x_15: f32) -> f32 {
+    let a_26 = abs(x_15);
+    let _e8 = airlight_atan(sqrt(((1f - a_26) / (1f + a_26))));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_15 < 0f));
 }
 
-fn airlight_angle(c_7: f32, s_19: f32) -> f32 {
-    if (s_19 <= c_7) {
-        let _e4 = airlight_atan((s_19 / c_7));
+fn airlight_angle(c_6: f32, s_19: f32) -> f32 {
+    if (s_19 <= c_6) {
+        let _e4 = airlight_atan((s_19 / c_6));
         return _e4;
     }
-    if (s_19 <= -(c_7)) {
-        let _e10 = airlight_atan((s_19 / -(c_7)));
+    if (s_19 <= -(c_6)) {
+        let _e10 = airlight_atan((s_19 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
-    if (c_7 >= 0f) {
-        let _e16 = airlight_atan((c_7 / s_19));
+    if (c_6 >= 0f) {
+        let _e16 = airlight_atan((c_6 / s_19));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_7) / s_19));
+    let _e21 = airlight_atan((-(c_6) / s_19));
     return (1.5707964f + _e21);
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_26 = (cos_a * cos_g);
+    let a_27 = (cos_a * cos_g);
     let b_17 = (sin_a * sin_g);
-    if (b_17 <= abs(a_26)) {
-        return select(0f, AIRLIGHT_PI, (a_26 > 0f));
+    if (b_17 <= abs(a_27)) {
+        return select(0f, AIRLIGHT_PI, (a_27 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_26) / b_17), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_27) / b_17), -1f, 1f));
     return _e18;
 }
 
@@ -4470,38 +4711,38 @@ fn airlight_outer_point(s_20: AirlightScene, max_panels: u32) -> AirlightOuter {
 }
 
 fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
-    var g_20: AirlightOuter;
-    var local_99: bool;
+    var g_21: AirlightOuter;
+    var local_102: bool;
     var u: vec3<f32>;
     var cuts_1: array<f32, 2>;
-    var k_6: u32 = 0u;
-    var i_17: u32 = 0u;
-    var local_100: bool;
+    var k_5: u32 = 0u;
     var i_18: u32 = 0u;
+    var local_103: bool;
+    var i_19: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
-    g_20 = _e2;
+    g_21 = _e2;
     let to_light_1 = (s_21.light_position - s_21.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_21.intensity == 0f)) {
-        local_99 = (s_21.sigma_s == 0f);
+        local_102 = (s_21.sigma_s == 0f);
     } else {
-        local_99 = true;
+        local_102 = true;
     }
-    let _e18 = local_99;
+    let _e18 = local_102;
     if _e18 {
-        g_20.outcome = 1u;
-        let _e21 = g_20;
+        g_21.outcome = 1u;
+        let _e21 = g_21;
         return _e21;
     }
     if !((_e7 > 0f)) {
-        g_20.outcome = 2u;
-        let _e27 = g_20;
+        g_21.outcome = 2u;
+        let _e27 = g_21;
         return _e27;
     }
     if (s_21.brdf_albedo == 0f) {
-        g_20.outcome = 1u;
-        let _e33 = g_20;
+        g_21.outcome = 1u;
+        let _e33 = g_21;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
@@ -4515,11 +4756,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
         let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u = _e64;
     }
-    g_20.l = l_3;
+    g_21.l = l_3;
     let _e67 = u;
-    g_20.u = _e67;
-    g_20.cos_a = cos_a_1;
-    g_20.sin_a = _e41;
+    g_21.u = _e67;
+    g_21.cos_a = cos_a_1;
+    g_21.sin_a = _e41;
     let _e71 = airlight_angle(cos_a_1, _e41);
     let first = abs((1.5707964f - _e71));
     cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
@@ -4532,118 +4773,118 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
         cuts_1[1] = c_10;
     }
     loop {
-        let _e93 = i_17;
+        let _e93 = i_18;
         if (_e93 < 2u) {
         } else {
             break;
         }
         {
-            let _e96 = i_17;
+            let _e96 = i_18;
             let _e98 = cuts_1[_e96];
-            let _e100 = k_6;
-            let _e102 = g_20.gamma[_e100];
+            let _e100 = k_5;
+            let _e102 = g_21.gamma[_e100];
             if (_e98 > _e102) {
-                let _e106 = i_17;
+                let _e106 = i_18;
                 let _e108 = cuts_1[_e106];
-                local_100 = (_e108 < AIRLIGHT_PI);
+                local_103 = (_e108 < AIRLIGHT_PI);
             } else {
-                local_100 = false;
+                local_103 = false;
             }
-            let _e112 = local_100;
+            let _e112 = local_103;
             if _e112 {
-                let _e113 = k_6;
-                k_6 = (_e113 + 1u);
-                let _e117 = k_6;
-                let _e119 = i_17;
+                let _e113 = k_5;
+                k_5 = (_e113 + 1u);
+                let _e117 = k_5;
+                let _e119 = i_18;
                 let _e121 = cuts_1[_e119];
-                g_20.gamma[_e117] = _e121;
+                g_21.gamma[_e117] = _e121;
             }
         }
         continuing {
-            let _e123 = i_17;
-            i_17 = (_e123 + 1u);
+            let _e123 = i_18;
+            i_18 = (_e123 + 1u);
         }
     }
-    let _e126 = k_6;
-    g_20.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
-    let _e132 = k_6;
-    g_20.panels = (_e132 + 1u);
+    let _e126 = k_5;
+    g_21.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    let _e132 = k_5;
+    g_21.panels = (_e132 + 1u);
     loop {
-        let _e137 = i_18;
-        let _e139 = g_20.panels;
+        let _e137 = i_19;
+        let _e139 = g_21.panels;
         if (_e137 <= _e139) {
         } else {
             break;
         }
         {
-            let _e142 = i_18;
-            let _e144 = i_18;
-            g_20.edges[_e142] = f32(_e144);
+            let _e142 = i_19;
+            let _e144 = i_19;
+            g_21.edges[_e142] = f32(_e144);
         }
         continuing {
-            let _e147 = i_18;
-            i_18 = (_e147 + 1u);
+            let _e147 = i_19;
+            i_19 = (_e147 + 1u);
         }
     }
-    let _e149 = g_20;
+    let _e149 = g_21;
     return _e149;
 }
 
 fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
-    var g_21: AirlightOuter;
-    var local_101: bool;
-    var local_102: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_103: bool;
+    var g_22: AirlightOuter;
     var local_104: bool;
     var local_105: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_106: bool;
     var local_107: bool;
     var local_108: bool;
-    var scale: f32 = 0f;
     var local_109: bool;
     var local_110: bool;
     var local_111: bool;
+    var scale: f32 = 0f;
     var local_112: bool;
     var local_113: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
-    var i_19: u32 = 0u;
     var local_114: bool;
     var local_115: bool;
     var local_116: bool;
-    var n_1: u32 = 0u;
+    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var i_20: u32 = 0u;
     var local_117: bool;
+    var local_118: bool;
+    var local_119: bool;
+    var n_1: u32 = 0u;
+    var i_21: u32 = 0u;
+    var local_120: bool;
 
     if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e4 = airlight_surface(s_22);
         return _e4;
     }
     let _e6 = airlight_outer_point(s_22, AIRLIGHT_SEGMENT_PANELS);
-    g_21 = _e6;
+    g_22 = _e6;
     if (s_22.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e11 = g_21;
+        let _e11 = g_22;
         return _e11;
     }
     let ab_1 = (s_22.light_end - s_22.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_101 = (s_22.intensity == 0f);
+        local_104 = (s_22.intensity == 0f);
     } else {
-        local_101 = true;
+        local_104 = true;
     }
-    let _e26 = local_101;
+    let _e26 = local_104;
     if !(_e26) {
-        local_102 = (s_22.sigma_s == 0f);
+        local_105 = (s_22.sigma_s == 0f);
     } else {
-        local_102 = true;
+        local_105 = true;
     }
-    let _e34 = local_102;
+    let _e34 = local_105;
     if _e34 {
-        g_21.outcome = 1u;
-        let _e37 = g_21;
+        g_22.outcome = 1u;
+        let _e37 = g_22;
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
@@ -4664,153 +4905,153 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_103 = (sin_a_1 > 0f);
-    } else {
-        local_103 = false;
-    }
-    let _e84 = local_103;
-    if _e84 {
-        let _e87 = s_star;
-        local_104 = (_e87 >= 0f);
-    } else {
-        local_104 = false;
-    }
-    let _e91 = local_104;
-    if _e91 {
-        let _e94 = s_star;
-        local_105 = (_e94 <= _e15);
-    } else {
-        local_105 = false;
-    }
-    let _e97 = local_105;
-    if _e97 {
-        let _e101 = t_star;
-        local_106 = (s_22.t_min <= _e101);
+        local_106 = (sin_a_1 > 0f);
     } else {
         local_106 = false;
     }
-    let _e104 = local_106;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_108 = (_e110 <= s_22.t_max);
-        } else {
-            local_108 = true;
-        }
-        let _e114 = local_108;
-        local_107 = _e114;
+    let _e84 = local_106;
+    if _e84 {
+        let _e87 = s_star;
+        local_107 = (_e87 >= 0f);
     } else {
         local_107 = false;
     }
-    let _e116 = local_107;
-    if _e116 {
-        g_21.outcome = 2u;
-        let _e119 = g_21;
-        return _e119;
+    let _e91 = local_107;
+    if _e91 {
+        let _e94 = s_star;
+        local_108 = (_e94 <= _e15);
+    } else {
+        local_108 = false;
     }
-    if (sin_a_1 > 0f) {
-        local_109 = (_e73 > 0f);
+    let _e97 = local_108;
+    if _e97 {
+        let _e101 = t_star;
+        local_109 = (s_22.t_min <= _e101);
     } else {
         local_109 = false;
     }
-    let _e129 = local_109;
+    let _e104 = local_109;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_111 = (_e110 <= s_22.t_max);
+        } else {
+            local_111 = true;
+        }
+        let _e114 = local_111;
+        local_110 = _e114;
+    } else {
+        local_110 = false;
+    }
+    let _e116 = local_110;
+    if _e116 {
+        g_22.outcome = 2u;
+        let _e119 = g_22;
+        return _e119;
+    }
+    if (sin_a_1 > 0f) {
+        local_112 = (_e73 > 0f);
+    } else {
+        local_112 = false;
+    }
+    let _e129 = local_112;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_110 = (_e136 < (_e15 + _e15));
+        local_113 = (_e136 < (_e15 + _e15));
     } else {
-        local_110 = false;
+        local_113 = false;
     }
-    let _e140 = local_110;
+    let _e140 = local_113;
     if _e140 {
         let _e143 = scale;
-        local_111 = (_e143 < _e15);
+        local_114 = (_e143 < _e15);
     } else {
-        local_111 = false;
+        local_114 = false;
     }
-    let near_1 = local_111;
+    let near_1 = local_114;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_112 = _e154;
+        local_115 = _e154;
     } else {
-        local_112 = false;
+        local_115 = false;
     }
-    let _e156 = local_112;
+    let _e156 = local_115;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_113 = _e163;
+        local_116 = _e163;
     } else {
-        local_113 = false;
+        local_116 = false;
     }
-    let _e165 = local_113;
+    let _e165 = local_116;
     if !(_e165) {
         scale = 0f;
     }
-    g_21.e = e_4;
+    g_22.e = e_4;
     let _e170 = s_star;
-    g_21.s_star = _e170;
+    g_22.s_star = _e170;
     let _e172 = scale;
-    g_21.scale = _e172;
+    g_22.scale = _e172;
     let _e178 = s_star;
     at = array<f32, 3>(_e178, ((s_22.t_min - along_d) / cos_a_2), ((s_22.t_max - along_d) / cos_a_2));
     loop {
-        let _e189 = i_19;
+        let _e189 = i_20;
         if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0f) {
-                let _e196 = i_19;
-                local_114 = (_e196 > 0u);
+                let _e196 = i_20;
+                local_117 = (_e196 > 0u);
             } else {
-                local_114 = false;
+                local_117 = false;
             }
-            let _e200 = local_114;
+            let _e200 = local_117;
             if _e200 {
                 continue;
             }
-            let _e201 = i_19;
+            let _e201 = i_20;
             if (_e201 == 2u) {
-                local_115 = infinite_4;
+                local_118 = infinite_4;
             } else {
-                local_115 = false;
+                local_118 = false;
             }
-            let _e207 = local_115;
+            let _e207 = local_118;
             if _e207 {
                 continue;
             }
-            let _e208 = i_19;
+            let _e208 = i_20;
             let _e210 = at[_e208];
             if (_e210 > 0f) {
-                let _e215 = i_19;
+                let _e215 = i_20;
                 let _e217 = at[_e215];
-                local_116 = (_e217 < _e15);
+                local_119 = (_e217 < _e15);
             } else {
-                local_116 = false;
+                local_119 = false;
             }
-            let _e220 = local_116;
+            let _e220 = local_119;
             if _e220 {
-                let _e221 = i_19;
-                let _e223 = g_21;
-                let _e224 = i_19;
+                let _e221 = i_20;
+                let _e223 = g_22;
+                let _e224 = i_20;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[_e221] = _e227;
             }
         }
         continuing {
-            let _e229 = i_19;
-            i_19 = (_e229 + 1u);
+            let _e229 = i_20;
+            i_20 = (_e229 + 1u);
         }
     }
     let _e232 = cuts_2[1];
@@ -4837,53 +5078,53 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
         cuts_2[0] = _e262;
         cuts_2[1] = c_13;
     }
-    let _e264 = g_21;
+    let _e264 = g_22;
     let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_21;
+    let _e268 = g_22;
     let _e270 = airlight_to_w(_e268, 0f);
-    g_21.edges[0] = _e270;
+    g_22.edges[0] = _e270;
     loop {
-        let _e275 = i_20;
+        let _e275 = i_21;
         if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            let _e278 = i_20;
+            let _e278 = i_21;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
-            let _e284 = g_21.edges[_e282];
+            let _e284 = g_22.edges[_e282];
             if (_e280 > _e284) {
-                let _e288 = i_20;
+                let _e288 = i_21;
                 let _e290 = cuts_2[_e288];
-                local_117 = (_e290 < _e265);
+                local_120 = (_e290 < _e265);
             } else {
-                local_117 = false;
+                local_120 = false;
             }
-            let _e293 = local_117;
+            let _e293 = local_120;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
-                let _e300 = i_20;
+                let _e300 = i_21;
                 let _e302 = cuts_2[_e300];
-                g_21.edges[_e298] = _e302;
+                g_22.edges[_e298] = _e302;
             }
         }
         continuing {
-            let _e304 = i_20;
-            i_20 = (_e304 + 1u);
+            let _e304 = i_21;
+            i_21 = (_e304 + 1u);
         }
     }
     let _e307 = n_1;
-    g_21.edges[(_e307 + 1u)] = _e265;
+    g_22.edges[(_e307 + 1u)] = _e265;
     let _e312 = n_1;
-    g_21.panels = (_e312 + 1u);
-    let _e315 = g_21;
+    g_22.panels = (_e312 + 1u);
+    let _e315 = g_22;
     return _e315;
 }
 
-fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_15: f32) -> AirlightNode {
+fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_16: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -4892,25 +5133,25 @@ fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_15: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_21 = min(u32(max(floor(x_15), 0f)), (g_22.panels - 1u));
-        let t_6 = (x_15 - f32(i_21));
-        let a_27 = g_22.gamma[i_21];
-        let b_18 = g_22.gamma[(i_21 + 1u)];
-        let gamma = (a_27 + ((((b_18 - a_27) * t_6) * t_6) * ((3f - t_6) - t_6)));
-        let jacobian = ((((b_18 - a_27) * 6f) * t_6) * (1f - t_6));
+        let i_22 = min(u32(max(floor(x_16), 0f)), (g_23.panels - 1u));
+        let t_6 = (x_16 - f32(i_22));
+        let a_28 = g_23.gamma[i_22];
+        let b_18 = g_23.gamma[(i_22 + 1u)];
+        let gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
+        let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
             let _e45 = p;
             return AirlightNode(_e45, 0f);
         }
         let _e48 = airlight_cos_sin_half_turn(gamma);
-        let _e53 = airlight_half_arc(g_22.cos_a, g_22.sin_a, _e48.x, _e48.y);
+        let _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
         if !((_e53 > 0f)) {
             let _e57 = p;
             return AirlightNode(_e57, 0f);
         }
         let _e67 = airlight_cos_sin_half_turn(_e53);
-        let arc = (2f * (((g_22.cos_a * _e48.x) * _e53) + ((g_22.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_22.l) + (_e48.y * g_22.u));
+        let arc = (2f * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
@@ -4918,13 +5159,13 @@ fn airlight_outer_node(s_23: AirlightScene, g_22: AirlightOuter, x_15: f32) -> A
         return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
     if (s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_15;
-        if (g_22.scale > 0f) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_15)));
-            ds = (g_22.scale * cosh(x_15));
+        at_1 = x_16;
+        if (g_23.scale > 0f) {
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_16)));
+            ds = (g_23.scale * cosh(x_16));
         }
         let _e115 = at_1;
-        p.light_position = (g_22.a + (_e115 * g_22.e));
+        p.light_position = (g_23.a + (_e115 * g_23.e));
         let _e119 = p;
         let _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -4942,21 +5183,21 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     var queued: bool = false;
     var queued_lo: f32 = 0f;
     var queued_hi: f32 = 0f;
-    var step_1: u32 = 0u;
-    var k_7: f32;
+    var step_2: u32 = 0u;
+    var k_6: f32;
     var gauss: f32;
-    var j_4: u32;
-    var local_118: bool;
+    var j_3: u32;
+    var local_121: bool;
     var f: f32;
     var r_5: AirlightResult;
-    var local_119: bool;
-    var local_120: bool;
-    var local_121: bool;
-    var split: bool;
-    var tries: u32;
     var local_122: bool;
     var local_123: bool;
     var local_124: bool;
+    var split: bool;
+    var tries: u32;
+    var local_125: bool;
+    var local_126: bool;
+    var local_127: bool;
 
     let _e1 = airlight_valid(s_24);
     if !(_e1) {
@@ -4974,7 +5215,7 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     b_12 = _e6.edges[1];
     let evaluations = ((2u * _e6.max_panels) - 1u);
     loop {
-        let _e58 = step_1;
+        let _e58 = step_2;
         if (_e58 < evaluations) {
         } else {
             break;
@@ -4985,29 +5226,29 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
             let c_14 = (0.5f * (_e60 + _e61));
             let _e65 = b_12;
             let _e66 = a_16;
-            let hw_1 = (0.5f * (_e65 - _e66));
-            k_7 = 0f;
+            let hw_3 = (0.5f * (_e65 - _e66));
+            k_6 = 0f;
             gauss = 0f;
-            j_4 = 0u;
+            j_3 = 0u;
             loop {
-                let _e76 = j_4;
+                let _e76 = j_3;
                 if (_e76 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e79 = j_4;
+                    let _e79 = j_3;
                     let node = _e19[(_e79 / 2u)];
-                    let _e89 = j_4;
+                    let _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
-                        let _e96 = j_4;
-                        local_118 = (_e96 < 6u);
+                        let _e96 = j_3;
+                        local_121 = (_e96 < 6u);
                     } else {
-                        local_118 = false;
+                        local_121 = false;
                     }
-                    let _e100 = local_118;
-                    let w_5 = select((c_14 + (hw_1 * node.x)), (c_14 - (hw_1 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_24, _e6, w_5);
+                    let _e100 = local_121;
+                    let w_6 = select((c_14 + (hw_3 * node.x)), (c_14 - (hw_3 * node.x)), _e100);
+                    let _e102 = airlight_outer_node(s_24, _e6, w_6);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
@@ -5015,11 +5256,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
-                            local_119 = _e118;
+                            local_122 = _e118;
                         } else {
-                            local_119 = false;
+                            local_122 = false;
                         }
-                        let _e120 = local_119;
+                        let _e120 = local_122;
                         if _e120 {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
@@ -5030,20 +5271,20 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
                             let _e132 = r_5.status;
-                            local_120 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_120 = true;
+                            local_123 = true;
                         }
-                        let _e136 = local_120;
+                        let _e136 = local_123;
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
                         if (s_24.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_121 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_124 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_121 = false;
+                            local_124 = false;
                         }
-                        let _e149 = local_121;
+                        let _e149 = local_124;
                         if _e149 {
                             let _e150 = r_5;
                             return _e150;
@@ -5051,25 +5292,25 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
                     }
-                    let _e155 = k_7;
+                    let _e155 = k_6;
                     let _e157 = f;
-                    k_7 = (_e155 + (node.y * _e157));
+                    k_6 = (_e155 + (node.y * _e157));
                     let _e160 = gauss;
                     let _e162 = f;
                     gauss = (_e160 + (node.z * _e162));
                 }
                 continuing {
-                    let _e166 = j_4;
-                    j_4 = (_e166 + 1u);
+                    let _e166 = j_3;
+                    j_3 = (_e166 + 1u);
                 }
             }
             let _e168 = slot_1;
             let _e169 = a_16;
             let _e170 = b_12;
-            let _e171 = k_7;
-            let _e173 = k_7;
+            let _e171 = k_6;
+            let _e173 = k_6;
             let _e175 = gauss;
-            airlight_list_set((&list_1), _e168, vec4<f32>(_e169, _e170, (_e171 * hw_1), abs(((_e173 * hw_1) - (_e175 * hw_1)))));
+            airlight_list_set((&list_1), _e168, vec4<f32>(_e169, _e170, (_e171 * hw_3), abs(((_e173 * hw_3) - (_e175 * hw_3)))));
             let _e180 = slot_1;
             let _e181 = count_2;
             if (_e180 == _e181) {
@@ -5111,18 +5352,18 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let worst_1 = _e212.worst;
                             if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e223 = count_2;
-                                local_122 = (_e223 == _e6.max_panels);
+                                local_125 = (_e223 == _e6.max_panels);
                             } else {
-                                local_122 = true;
+                                local_125 = true;
                             }
-                            let _e227 = local_122;
+                            let _e227 = local_125;
                             if !(_e227) {
                                 let _e231 = airlight_is_finite(total_4);
-                                local_123 = !(_e231);
+                                local_126 = !(_e231);
                             } else {
-                                local_123 = true;
+                                local_126 = true;
                             }
-                            let _e234 = local_123;
+                            let _e234 = local_126;
                             if _e234 {
                                 break;
                             }
@@ -5130,22 +5371,22 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let _e236 = airlight_list_get(_e235, worst_1);
                             let wa_1 = _e236.x;
                             let wb_1 = _e236.y;
-                            let mid_1 = (0.5f * (wa_1 + wb_1));
-                            if (mid_1 > wa_1) {
-                                local_124 = (mid_1 < wb_1);
+                            let mid_3 = (0.5f * (wa_1 + wb_1));
+                            if (mid_3 > wa_1) {
+                                local_127 = (mid_3 < wb_1);
                             } else {
-                                local_124 = false;
+                                local_127 = false;
                             }
-                            let _e247 = local_124;
+                            let _e247 = local_127;
                             if !(_e247) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;
                             }
                             a_16 = wa_1;
-                            b_12 = mid_1;
+                            b_12 = mid_3;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_1;
+                            queued_lo = mid_3;
                             queued_hi = wb_1;
                             split = true;
                             break;
@@ -5163,8 +5404,8 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
             }
         }
         continuing {
-            let _e260 = step_1;
-            step_1 = (_e260 + 1u);
+            let _e260 = step_2;
+            step_2 = (_e260 + 1u);
         }
     }
     let _e262 = list_1;

@@ -21,6 +21,8 @@ const AIRLIGHT_PANEL_LIST: u32 = @PANEL_LIST@u;
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = @Y_PANEL_EXPONENT@;
 // The margin of the panels' aliasing model (panels.rs ALIASING_MARGIN).
 const AIRLIGHT_ALIASING_MARGIN: u32 = @ALIASING_MARGIN@u;
+// 1/(3·5⋯(2N+1)) for the light-angle route's predicted coefficient (angle.rs).
+const AIRLIGHT_INV_ODD_FACTORIAL: f32 = @INV_ODD_FACTORIAL@;
 // The range of exact products (real.rs, f32).
 const AIRLIGHT_EXACT_RANGE: f32 = @EXACT_RANGE@;
 const AIRLIGHT_PI: f32 = 3.14159265358979;
@@ -351,22 +353,13 @@ fn airlight_log1p(x: f32) -> f32 {
     return 2.0 * s * sum;
 }
 
-/// (cos x, sin x) for |x| ≤ 2.2 by Taylor polynomials (degree 16/17, error < 2^-24 there).
+/// (cos x, sin x) for |x| ≤ 2.2 by Taylor polynomials (degree 16/17, error < 2^-24 there),
+/// Horner's scheme in straight-line code: no loop (lavapipe's loops share one iteration budget,
+/// §10 of docs/DESIGN.md).
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z = x * x;
-    var c = 0.0;
-    var s = 0.0;
-    for (var k = 0u; k < 9u; k++) {
-        let n = 8u - k;
-        // c_n = (−1)^n/(2n)!, s_n = (−1)^n/(2n+1)!; Horner from the top
-        c = c * z;
-        s = s * z;
-        var fc = 1.0;
-        for (var j = 1u; j <= 2u * n; j++) { fc *= f32(j); }
-        let sign = select(1.0, -1.0, (n & 1u) == 1u);
-        c += sign / fc;
-        s += sign / (fc * f32(2u * n + 1u));
-    }
+    let c = 1.0 + z * (-0.5 + z * (0.041666666666666664 + z * (-0.001388888888888889 + z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 + z * (2.08767569878681e-09 + z * (-1.1470745597729725e-11 + z * (4.779477332387385e-14))))))));
+    let s = 1.0 + z * (-0.16666666666666666 + z * (0.008333333333333333 + z * (-0.0001984126984126984 + z * (2.7557319223985893e-06 + z * (-2.505210838544172e-08 + z * (1.6059043836821613e-10 + z * (-7.647163731819816e-13 + z * (2.8114572543455206e-15))))))));
     return vec2<f32>(c, s * x);
 }
 
@@ -1171,6 +1164,143 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     return total;
 }
 
+// ---------------------------------------------------------------- the light-angle route
+// (kernel/src/angle.rs)
+
+/// atan2(y, x) for y ≥ 0 from airlight_atan (x ≥ 0): in [0, π].
+fn airlight_atan2_upper(y: f32, x: f32) -> f32 {
+    if (x > 0.0) {
+        if (y <= x) { return airlight_atan(y / x); }
+        return 0.5 * AIRLIGHT_PI - airlight_atan(x / y);
+    }
+    if (y <= -x) { return AIRLIGHT_PI - airlight_atan(y / -x); }
+    return 0.5 * AIRLIGHT_PI + airlight_atan(-x / y);
+}
+
+/// The floor of the coefficients' rate from a phase singularity at the cosine
+/// side·(1 + gap): θ = ∓π/2 ± i·acosh(1 + gap), through the Bernstein ellipse of the panel
+/// [mid − hw, mid + hw] (angle.rs `whole_segment`).
+fn airlight_angle_floor(side: f32, gap: f32, mid: f32, hw: f32, step: f32) -> f32 {
+    if (!(gap > 0.0) || gap >= AIRLIGHT_FLT_MAX) { return 0.0; }
+    let im = airlight_log1p(gap + sqrt(gap * (2.0 + gap)));
+    let re = select(0.5 * AIRLIGHT_PI, -0.5 * AIRLIGHT_PI, side > 0.0);
+    return step / airlight_bernstein_rho((re - mid) / hw, im / hw);
+}
+
+/// The whole segment as one Gauss–Legendre panel in the angle seen from the light, where its
+/// estimate meets the panels' target (angle.rs `whole_segment`): (1, L_m) when taken, (0, 0)
+/// when declined or failed. Nodes as distances from the poles θ = ∓π/2, the width from the
+/// segment's length.
+fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
+    if (s.light_kind == AIRLIGHT_LIGHT_SPOT) { return vec2<f32>(0.0, 0.0); }
+    let h = g.h;
+    let u0 = (g.t_lo - g.x_h) / h;
+    let u1 = (g.t_hi - g.x_h) / h;
+    let u1_finite = !g.t_hi_infinite && airlight_is_finite(u1);
+    let big_h = s.sigma_t * h;
+    var y0 = u0 + airlight_hypot_one(u0);
+    if (u0 < 0.0) { y0 = 1.0 / (airlight_hypot_one(u0) - u0); }
+    var y1 = AIRLIGHT_FLT_MAX;
+    if (u1_finite) {
+        y1 = u1 + airlight_hypot_one(u1);
+        if (u1 < 0.0) { y1 = 1.0 / (airlight_hypot_one(u1) - u1); }
+    }
+    var y_cut = AIRLIGHT_FLT_MAX;
+    if (big_h > 0.0) { y_cut = y0 + airlight_cut_length(big_h, y0); }
+    let psi0 = airlight_atan2_upper(1.0, -u0);
+    var psi1 = 0.0;
+    var width = airlight_atan2_upper(1.0, u0);
+    if (y_cut < y1) {
+        psi1 = 2.0 * airlight_atan(1.0 / y_cut);
+        width = 2.0 * airlight_atan2_upper(y_cut - y0, 1.0 + y0 * y_cut);
+    } else if (u1_finite) {
+        psi1 = airlight_atan2_upper(1.0, u1);
+        width = airlight_atan2_upper((g.t_hi - g.t_lo) / h, 1.0 + u0 * u1);
+    }
+    let hw = width * 0.5;
+    if (!(hw > 0.0)) { return vec2<f32>(0.0, 0.0); }
+    let mid = psi0 + hw - 0.5 * AIRLIGHT_PI;
+    // predicted coefficients: the exponential's and the lobe's rate λ, then the phase's ρ
+    let y_end = min(y1, y_cut);
+    let y_e = min(y0 + 1.0 / big_h, y_end);
+    var degree = 0.0;
+    if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) { degree = s.light_param_a; }
+    var lambda = sqrt(degree) * hw;
+    if (big_h > 0.0) { lambda += min(big_h * (y_end - y0), hw * big_h * (1.0 + y_e * y_e)) * 0.5; }
+    // λ^N/(3·5⋯(2N+1)), without a loop (lavapipe's loops share one iteration budget)
+    let predicted = pow(lambda, f32(AIRLIGHT_TERMS)) * AIRLIGHT_INV_ODD_FACTORIAL;
+    if (!(predicted <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
+    let step = airlight_singular_steps(s).y;
+    let p0 = s.phase_param_a;
+    var rate = 0.0;
+    switch s.phase_kind {
+        case AIRLIGHT_PHASE_HENYEY_GREENSTEIN, AIRLIGHT_PHASE_CORNETTE_SHANKS: {
+            rate = airlight_angle_floor(p0, airlight_hg_gap(p0), mid, hw, step);
+        }
+        case AIRLIGHT_PHASE_SCHLICK: {
+            let a = abs(p0);
+            rate = airlight_angle_floor(p0, select(AIRLIGHT_FLT_MAX, (1.0 - a) / a, a > 0.0), mid, hw, step);
+        }
+        case AIRLIGHT_PHASE_TWO_LOBE_HG: {
+            let p1 = s.phase_param_b;
+            rate = max(airlight_angle_floor(p0, airlight_hg_gap(p0), mid, hw, step), airlight_angle_floor(p1, airlight_hg_gap(p1), mid, hw, step));
+        }
+        default: {}
+    }
+    if (!(pow(rate, f32(AIRLIGHT_TERMS)) <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
+    if (big_h > 0.0) { rate = max(rate, 1.0 / airlight_bernstein_rho((0.5 * AIRLIGHT_PI - mid) / hw, 0.0)); }
+    // the samples
+    let rule = airlight_gauss_rule();
+    var samples = airlight_zero_terms();
+    var value = 0.0;
+    var mass = 0.0;
+    var magnitude = 0.0;
+    var f_max = 0.0;
+    for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
+        let x = airlight_node(rule, i);
+        let lower = psi0 + hw * (1.0 + x);
+        var sn = 0.0;
+        var cs = 0.0;
+        var y = 0.0;
+        var one_plus = 0.0;
+        var one_minus = 0.0;
+        if (lower <= 0.5 * AIRLIGHT_PI) {
+            let t = airlight_cos_sin(lower);
+            cs = t.y;
+            sn = -t.x;
+            one_minus = 1.0 + t.x;
+            y = cs / one_minus;
+            one_plus = cs * cs / one_minus;
+        } else {
+            let t = airlight_cos_sin(psi1 + hw * (1.0 - x));
+            cs = t.y;
+            sn = t.x;
+            one_plus = 1.0 + sn;
+            y = one_plus / cs;
+            one_minus = cs * cs / one_plus;
+        }
+        let weight = select(0.0, exp(-max(big_h * (y - y0), 0.0)), cs > 0.0);
+        let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, g.d_el * sn + g.d_c * cs)
+            * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, -sn, one_plus, one_minus);
+        let gw = weight * f;
+        samples[i] = gw;
+        let w = rule[i / 2u].y;
+        value += w * gw;
+        mass += w * weight;
+        magnitude += w * abs(gw);
+        f_max = max(f_max, abs(f));
+    }
+    let c = airlight_legendre(samples);
+    var m = airlight_zero_terms();
+    m[0] = 2.0;
+    let error = 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m, rate);
+    let noise = f32(4u * AIRLIGHT_TERMS) * AIRLIGHT_FLT_EPS * magnitude;
+    let accepted = AIRLIGHT_PANEL_TOLERANCE * max(abs(value), AIRLIGHT_PANEL_FLOOR * f_max * mass);
+    if (!(error <= accepted || error <= noise)) { return vec2<f32>(0.0, 0.0); }
+    let r0 = h * airlight_hypot_one(u0);
+    return vec2<f32>(1.0, airlight_weighted(s.sigma_s, s.intensity, h, s.sigma_t * r0, value * hw * 0.5));
+}
+
 // ---------------------------------------------------------------- combined formulation
 // (kernel/src/combined.rs)
 
@@ -1413,6 +1543,11 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
             || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
     if (isotropic && t0 < x_h && (g.t_hi_infinite || x_h < t1)) {
         return AirlightResult(max(airlight_whole_line(s, g, big_h), 0.0), AIRLIGHT_STATUS_OK);
+    }
+    // a route by cost first: the whole segment in the light angle (angle.rs)
+    if (!isotropic) {
+        let route = airlight_angle_route(s, g);
+        if (route.x > 0.5) { return AirlightResult(max(route.y, 0.0), AIRLIGHT_STATUS_OK); }
     }
     var total = 0.0;
     var f_max = 0.0;

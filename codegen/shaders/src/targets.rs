@@ -211,6 +211,7 @@ impl Constants {
             ("@ZEROS_LIST4@", list(vec!["vec4<f32>(0.0)".to_string(); panel_list])),
             ("@Y_PANEL_EXPONENT@", f(airlight::panels::Y_PANEL_EXPONENT)),
             ("@ALIASING_MARGIN@", airlight::panels::ALIASING_MARGIN.to_string()),
+            ("@INV_ODD_FACTORIAL@", f(airlight::angle::inv_odd_factorial(terms))),
             ("@SINGULAR_PHASES@", singular_phases),
             ("@SPOT_DEGREE@", f(spot_degree as f64)),
             ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
