@@ -46,7 +46,7 @@
 //! the route, and so does a phase function that does not declare its singularities: `F` would
 //! not be analytic in `θ`, or not known to be.
 
-use crate::combined::{cut_length, Physics};
+use crate::combined::{cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
@@ -120,10 +120,10 @@ where
 
     // The predicted coefficients, before any sample. The exponential's: e^{−E} with E rising
     // at the rate λ/hw is e^{−λ(1+ξ)} on the panel, whose N-th Legendre coefficient is
-    // (2N+1)·i_N(λ) of its mean, i_N(λ) ≈ λ^N/(3·5⋯(2N+1)) (module docs). E is convex in θ (dE/dθ = H/(1 − sin θ) = H(1 + Y²)/2), so
-    // λ is taken as the lesser of two: the mean rate, ΔE/2 with ΔE = H(Y_end − Y0), and hw
-    // times the rate where the weight has fallen to e^{−1} (beyond it the weight is small
-    // however fast it falls).
+    // (2N+1)·i_N(λ) of its mean, i_N(λ) ≈ λ^N/(3·5⋯(2N+1)) (module docs). E is convex in θ
+    // (dE/dθ = H/(1 − sin θ) = H(1 + Y²)/2), so λ is the lesser of two: the mean rate, ΔE/2
+    // with ΔE = H(Y_end − Y0), and hw times the rate where the weight has fallen to e^{−1}
+    // (beyond it the weight is small however fast it falls).
     let y_end = y1.min(y_cut);
     let y_e = (y0 + big_h.recip()).min(y_end);
     let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
@@ -200,8 +200,9 @@ where
     if !(error <= target || error <= noise) {
         return Route::Failed;
     }
+    // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows
     let r0 = h * hypot1(u0);
-    Route::Taken(phys.sigma_s * phys.intensity / h * (-phys.sigma_t * r0).exp() * (value * hw))
+    Route::Taken(weighted(phys.sigma_s, phys.intensity, h, phys.sigma_t * r0, value * hw * T::lit(0.5)))
 }
 
 /// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's

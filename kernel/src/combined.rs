@@ -369,7 +369,7 @@ fn optical<T: Real>(big_h: T, dv: T) -> T {
 /// underflows — it is formed through logarithms, so that a representable value never becomes
 /// `∞·0` (NaN); a true value beyond the range stays `+∞`.
 #[inline]
-fn weighted<T: Real>(sigma_s: T, intensity: T, h: T, x: T, j: T) -> T {
+pub(crate) fn weighted<T: Real>(sigma_s: T, intensity: T, h: T, x: T, j: T) -> T {
     let plain = T::lit(2.0) * sigma_s * intensity / h * (-x).exp() * j;
     if plain.is_finite() {
         plain
