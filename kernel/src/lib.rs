@@ -34,7 +34,9 @@
 //! 1. [`geometry`]: world space → canonical integral (`h`, `x_h`, `d_el`, `d_c`; paper eq. 4–6).
 //! 2. [`combined`]: split at the light's foot (combined formulation, eq. 20), and at a cone's
 //!    kinks.
-//! 3. The default, error-controlled path: [`panels`] — panels refined until `F/(1+v²)` is
+//! 3. The default, error-controlled path: first [`angle`] — the whole segment as one
+//!    Gauss–Legendre panel in the light angle, taken where its estimate meets the target
+//!    (docs/DESIGN.md §4.2) — else [`panels`] — panels refined until `F/(1+v²)` is
 //!    resolved, the exponential integrated exactly by its Legendre moments (docs/DESIGN.md §4.1).
 //!    The paper's fixed-cost path instead: [`expansion`] (phase × light as one
 //!    polynomial per piece, Chebyshev or Taylor by jets) and [`integrals`] (closed forms of
