@@ -200,13 +200,38 @@ where
     if !(error <= target || error <= noise) {
         return Route::Failed;
     }
-    // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows
-    let r0 = h * hypot1(u0);
-    Route::Taken(weighted(phys.sigma_s, phys.intensity, h, phys.sigma_t * r0, value * hw * T::lit(0.5)))
+    // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows, and without
+    // extinction the exponent 0, not 0·∞ where r0 overflows
+    let x = if phys.sigma_t > T::zero() { phys.sigma_t * (h * hypot1(u0)) } else { T::zero() };
+    Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
 }
 
 /// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's
 /// predicted coefficient (module docs; the shaders take it from here).
 pub fn inv_odd_factorial(n: usize) -> f64 {
     (1..=n).fold(1.0, |p, k| p / (2 * k + 1) as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::glam::DVec3;
+    use crate::phase::HenyeyGreenstein;
+    use crate::{light::Omni, Medium, PointLight, Ray, Scene};
+
+    /// Found by the `kernel` fuzz target: no extinction, the light's distance `r0` beyond the
+    /// float range (`σt·r0` was `0·∞`, NaN).
+    #[test]
+    fn no_extinction_and_an_overflowing_distance_stay_finite() {
+        let ray = Ray {
+            origin: DVec3::new(1.7976931348623157e308, 5.562684646268003e-309, 7.291122019556398e-304),
+            dir: DVec3::new(5.389374880406e-312, 0.0, 1.30375421396906e-310),
+            t_min: -4.383618698016806e-193,
+            t_max: f64::INFINITY,
+        };
+        let light = PointLight { position: DVec3::new(19.21487565134086, 99.6844362745098, 19.215686274509807), intensity: 596.0784313725491, distribution: Omni };
+        let medium = Medium { sigma_s: 2.775706331448191e-10, sigma_t: 0.0 };
+        let scene = Scene::new(ray, light, medium, HenyeyGreenstein { g: 2.2343899670179833e-264 }).unwrap();
+        let value = scene.in_scatter();
+        assert!(value >= 0.0, "{value}");
+    }
 }

@@ -425,9 +425,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_17 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_17 * x_17) + (y_6 * y_6)) < 1.0);
+    return (((x_18 * x_18) + (y_6 * y_6)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -821,8 +821,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_18 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_18 * x_18) * (3.0 - (2.0 * x_18)));
+            float x_19 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_19 * x_19) * (3.0 - (2.0 * x_19)));
         }
         default: {
             return 1.0;
@@ -1085,10 +1085,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_19 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_19);
+            float x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_20);
             if (_e42) {
-                float _e43 = airlight_log1p(x_19);
+                float _e43 = airlight_log1p(x_20);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1220,8 +1220,8 @@ vec2[4] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[4], uint i_3) {
-    float x_20 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_20) : x_20);
+    float x_21 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_21) : x_21);
 }
 
 float[8] airlight_legendre(float g_7[8]) {
@@ -1294,8 +1294,8 @@ float[8] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_21 = (lambda / float((2u * k0_)));
-            float per_step = (x_21 * x_21);
+            float x_22 = (lambda / float((2u * k0_)));
+            float per_step = (x_22 * x_22);
             share = per_step;
             bool loop_init_8 = true;
             while(true) {
@@ -1721,8 +1721,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_22 = (half_5.big_h * _e13);
-    return ((x_22 > 0.0) ? exp(-(x_22)) : 1.0);
+    float x_23 = (half_5.big_h * _e13);
+    return ((x_23 > 0.0) ? exp(-(x_23)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2185,13 +2185,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_23 = (abs(alpha) + abs(beta));
+    float x_24 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_23) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_24) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2201,7 +2201,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_23) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_24) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2211,7 +2211,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_23) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_24) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2221,7 +2221,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_23) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_24) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2231,7 +2231,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_23) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_24) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2241,7 +2241,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_23) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_24) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2251,7 +2251,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_23) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_24) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2261,7 +2261,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_23) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_24) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2599,6 +2599,7 @@ vec2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13) {
     float one_minus = 0.0;
     float m_3[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     bool local_24 = false;
+    float x_10 = 0.0;
     if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return vec2(0.0, 0.0);
     }
@@ -2824,11 +2825,14 @@ vec2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13) {
     if (!(_e348)) {
         return vec2(0.0, 0.0);
     }
-    float _e353 = airlight_hypot_one(u0_);
-    float r0_ = (h_3 * _e353);
-    float _e359 = value_1;
-    float _e363 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (s_10.sigma_t * r0_), ((_e359 * hw_2) * 0.5));
-    return vec2(1.0, _e363);
+    if ((s_10.sigma_t > 0.0)) {
+        float _e359 = airlight_hypot_one(u0_);
+        x_10 = (s_10.sigma_t * (h_3 * _e359));
+    }
+    float _e364 = x_10;
+    float _e365 = value_1;
+    float _e369 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e364, ((_e365 * hw_2) * 0.5));
+    return vec2(1.0, _e369);
 }
 
 float airlight_bounded(float a_10) {
@@ -3166,9 +3170,9 @@ float airlight_on_line(AirlightScene s_12, AirlightCanonical g_17) {
         float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_17.d_el));
         float _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1.0);
         float f_3 = (_e16 * _e22);
-        float r0_1 = (g_17.x_h - g_17.t_lo);
+        float r0_ = (g_17.x_h - g_17.t_lo);
         float r1_1 = (g_17.x_h - g_17.t_hi);
-        float _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * r0_1), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_1) / r1_1)));
+        float _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * r0_), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_) / r1_1)));
         return _e41;
     }
     float _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_17.d_el);
@@ -3221,7 +3225,7 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
     bool infinite_1 = true;
     bool local_37 = false;
     bool local_38 = false;
-    float x_10 = 0.0;
+    float x_11 = 0.0;
     float h_4 = g_18.h;
     float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     float _e8 = airlight_hypot_one(a_s);
@@ -3262,13 +3266,13 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
     AirlightHalf half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_10 = (big_h_3 * _e8);
+        x_11 = (big_h_3 * _e8);
     } else {
         if ((s_13.sigma_t > 0.0)) {
-            x_10 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+            x_11 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    float _e66 = x_10;
+    float _e66 = x_11;
     vec2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_13, g_18, -1.0, 0.0);
     float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -3951,8 +3955,8 @@ AirlightCanonical airlight_canonical(AirlightScene s_16) {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, (infinite_3 ? 0.0 : s_16.t_max), infinite_3);
 }
 
-float airlight_opaque(float x_11, uint key) {
-    return uintBitsToFloat((floatBitsToUint(x_11) ^ key));
+float airlight_opaque(float x_12, uint key) {
+    return uintBitsToFloat((floatBitsToUint(x_12) ^ key));
 }
 
 vec2 airlight_two_sum(float a_12, float b_9, uint key_1) {
@@ -3964,8 +3968,8 @@ vec2 airlight_two_sum(float a_12, float b_9, uint key_1) {
     return vec2(_e4, (_e12 ? e_2 : 0.0));
 }
 
-float airlight_split_high(float x_12) {
-    return uintBitsToFloat(((floatBitsToUint(x_12) + 2048u) & 4294963200u));
+float airlight_split_high(float x_13) {
+    return uintBitsToFloat(((floatBitsToUint(x_13) + 2048u) & 4294963200u));
 }
 
 vec2 airlight_two_product(float a_13, float b_10, uint key_2) {
@@ -4203,9 +4207,9 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e129;
 }
 
-float airlight_asinh(float x_13) {
+float airlight_asinh(float x_14) {
     float r_4 = 0.0;
-    float a_25 = abs(x_13);
+    float a_25 = abs(x_14);
     r_4 = (AIRLIGHT_LN_2_ + log(a_25));
     if ((a_25 <= 4096.0)) {
         float _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1.0 + sqrt((1.0 + (a_25 * a_25)))))));
@@ -4213,7 +4217,7 @@ float airlight_asinh(float x_13) {
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return ((x_13 < 0.0) ? -(_e19) : _e18);
+    return ((x_14 < 0.0) ? -(_e19) : _e18);
 }
 
 float airlight_to_w(AirlightOuter g_20, float s_18) {
@@ -4224,18 +4228,18 @@ float airlight_to_w(AirlightOuter g_20, float s_18) {
     return s_18;
 }
 
-vec2 airlight_cos_sin_half_turn(float x_14) {
-    float r_11 = (x_14 - 1.5707964);
+vec2 airlight_cos_sin_half_turn(float x_15) {
+    float r_11 = (x_15 - 1.5707964);
     float z_11 = (r_11 * r_11);
     float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
     float sin_r = (r_11 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_15) {
-    float a_26 = abs(x_15);
+float airlight_acos(float x_16) {
+    float a_26 = abs(x_16);
     float _e8 = airlight_atan(sqrt(((1.0 - a_26) / (1.0 + a_26))));
-    return ((x_15 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_19) {
@@ -4689,7 +4693,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x_16) {
+AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x_17) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
@@ -4697,8 +4701,8 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_22 = min(uint(max(floor(x_16), 0.0)), (g_23.panels - 1u));
-        float t_6 = (x_16 - float(i_22));
+        uint i_22 = min(uint(max(floor(x_17), 0.0)), (g_23.panels - 1u));
+        float t_6 = (x_17 - float(i_22));
         float a_28 = g_23.gamma[i_22];
         float b_18 = g_23.gamma[(i_22 + 1u)];
         float gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
@@ -4723,10 +4727,10 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
         return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
     if ((s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_16;
+        at_1 = x_17;
         if ((g_23.scale > 0.0)) {
-            at_1 = (g_23.s_star + (g_23.scale * sinh(x_16)));
-            ds = (g_23.scale * cosh(x_16));
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_17)));
+            ds = (g_23.scale * cosh(x_17));
         }
         float _e115 = at_1;
         p.light_position = (g_23.a + (_e115 * g_23.e));

@@ -337,9 +337,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_17 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_17 * x_17) + (y_6 * y_6)) < 1f);
+    return (((x_18 * x_18) + (y_6 * y_6)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -768,8 +768,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_18 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_18 * x_18) * (3f - (2f * x_18)));
+            let x_19 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_19 * x_19) * (3f - (2f * x_19)));
         }
         default: {
             return 1f;
@@ -1025,10 +1025,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_19 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_19);
+            let x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_20);
             if _e42 {
-                let _e43 = airlight_log1p(x_19);
+                let _e43 = airlight_log1p(x_20);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1161,8 +1161,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_20 = rule[(i_3 / 2u)].x;
-    return select(x_20, -(x_20), ((i_3 % 2u) == 0u));
+    let x_21 = rule[(i_3 / 2u)].x;
+    return select(x_21, -(x_21), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_5: array<f32, 12>) -> array<f32, 12> {
@@ -1239,8 +1239,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_21 = (lambda / f32((2u * k0_)));
-            let per_step = (x_21 * x_21);
+            let x_22 = (lambda / f32((2u * k0_)));
+            let per_step = (x_22 * x_22);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1862,8 +1862,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_22 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_22)), (x_22 > 0f));
+    let x_23 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_23)), (x_23 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2497,13 +2497,13 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_23 = (abs(alpha) + abs(beta));
+    let x_24 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_23) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_24) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2513,7 +2513,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_23) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_24) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2523,7 +2523,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_23) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_24) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2533,7 +2533,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_23) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_24) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2543,7 +2543,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_23) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_24) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2553,7 +2553,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_23) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_24) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2563,7 +2563,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_23) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_24) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2573,7 +2573,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_23) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_24) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2583,7 +2583,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_23) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_24) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2593,7 +2593,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_23) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_24) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2603,7 +2603,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_23) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_24) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2613,7 +2613,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_23) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_24) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2946,6 +2946,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var one_minus: f32;
     var m_3: array<f32, 12>;
     var local_24: bool;
+    var x_10: f32 = 0f;
 
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return vec2<f32>(0f, 0f);
@@ -3165,11 +3166,14 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     if !(_e348) {
         return vec2<f32>(0f, 0f);
     }
-    let _e353 = airlight_hypot_one(u0_);
-    let r0_ = (h_3 * _e353);
-    let _e359 = value_1;
-    let _e363 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, (s_9.sigma_t * r0_), ((_e359 * hw_2) * 0.5f));
-    return vec2<f32>(1f, _e363);
+    if (s_9.sigma_t > 0f) {
+        let _e359 = airlight_hypot_one(u0_);
+        x_10 = (s_9.sigma_t * (h_3 * _e359));
+    }
+    let _e364 = x_10;
+    let _e365 = value_1;
+    let _e369 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e364, ((_e365 * hw_2) * 0.5f));
+    return vec2<f32>(1f, _e369);
 }
 
 fn airlight_bounded(a_10: f32) -> f32 {
@@ -3503,9 +3507,9 @@ fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
         let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
         let f_3 = (_e16 * _e22);
-        let r0_1 = (g_15.x_h - g_15.t_lo);
+        let r0_ = (g_15.x_h - g_15.t_lo);
         let r1_1 = (g_15.x_h - g_15.t_hi);
-        let _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * r0_1), (f_3 * (((g_15.t_hi - g_15.t_lo) / r0_1) / r1_1)));
+        let _e41 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, (s_11.sigma_t * r0_), (f_3 * (((g_15.t_hi - g_15.t_lo) / r0_) / r1_1)));
         return _e41;
     }
     let _e46 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, g_15.d_el);
@@ -3559,7 +3563,7 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     var infinite_1: bool = true;
     var local_37: bool;
     var local_38: bool;
-    var x_10: f32 = 0f;
+    var x_11: f32 = 0f;
 
     let h_4 = g_16.h;
     let a_s = ((g_16.x_h - g_16.t_lo) / h_4);
@@ -3601,13 +3605,13 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_10 = (big_h_3 * _e8);
+        x_11 = (big_h_3 * _e8);
     } else {
         if (s_12.sigma_t > 0f) {
-            x_10 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+            x_11 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
-    let _e66 = x_10;
+    let _e66 = x_11;
     let _e67 = airlight_moment_zero_weighted(half_15, _e66);
     let _e73 = airlight_integrand(s_12, g_16, -1f, 0f);
     let _e76 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -4288,8 +4292,8 @@ fn airlight_canonical(s_15: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_15.t_min, select(s_15.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_11: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_11) ^ key));
+fn airlight_opaque(x_12: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_12) ^ key));
 }
 
 fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
@@ -4301,8 +4305,8 @@ fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
-fn airlight_split_high(x_12: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_12) + 2048u) & 4294963200u));
+fn airlight_split_high(x_13: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_13) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
@@ -4543,10 +4547,10 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e129;
 }
 
-fn airlight_asinh(x_13: f32) -> f32 {
+fn airlight_asinh(x_14: f32) -> f32 {
     var r_4: f32;
 
-    let a_25 = abs(x_13);
+    let a_25 = abs(x_14);
     r_4 = (AIRLIGHT_LN_2_ + log(a_25));
     if (a_25 <= 4096f) {
         let _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1f + sqrt((1f + (a_25 * a_25)))))));
@@ -4554,7 +4558,7 @@ fn airlight_asinh(x_13: f32) -> f32 {
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_13 < 0f));
+    return select(_e18, -(_e19), (x_14 < 0f));
 }
 
 fn airlight_to_w(g_18: AirlightOuter, s_17: f32) -> f32 {
@@ -4565,18 +4569,18 @@ fn airlight_to_w(g_18: AirlightOuter, s_17: f32) -> f32 {
     return s_17;
 }
 
-fn airlight_cos_sin_half_turn(x_14: f32) -> vec2<f32> {
-    let r_11 = (x_14 - 1.5707964f);
+fn airlight_cos_sin_half_turn(x_15: f32) -> vec2<f32> {
+    let r_11 = (x_15 - 1.5707964f);
     let z_11 = (r_11 * r_11);
     let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
     let sin_r = (r_11 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_15: f32) -> f32 {
-    let a_26 = abs(x_15);
+fn airlight_acos(x_16: f32) -> f32 {
+    let a_26 = abs(x_16);
     let _e8 = airlight_atan(sqrt(((1f - a_26) / (1f + a_26))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_15 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_16 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_18: f32) -> f32 {
@@ -5024,7 +5028,7 @@ fn airlight_outer(s_21: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_16: f32) -> AirlightNode {
+fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_17: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5033,8 +5037,8 @@ fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_16: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_22 = min(u32(max(floor(x_16), 0f)), (g_21.panels - 1u));
-        let t_6 = (x_16 - f32(i_22));
+        let i_22 = min(u32(max(floor(x_17), 0f)), (g_21.panels - 1u));
+        let t_6 = (x_17 - f32(i_22));
         let a_28 = g_21.gamma[i_22];
         let b_18 = g_21.gamma[(i_22 + 1u)];
         let gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
@@ -5059,10 +5063,10 @@ fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_16: f32) -> A
         return AirlightNode(_e87, ((((s_22.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
     if (s_22.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_16;
+        at_1 = x_17;
         if (g_21.scale > 0f) {
-            at_1 = (g_21.s_star + (g_21.scale * sinh(x_16)));
-            ds = (g_21.scale * cosh(x_16));
+            at_1 = (g_21.s_star + (g_21.scale * sinh(x_17)));
+            ds = (g_21.scale * cosh(x_17));
         }
         let _e115 = at_1;
         p.light_position = (g_21.a + (_e115 * g_21.e));

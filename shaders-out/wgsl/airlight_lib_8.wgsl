@@ -437,9 +437,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_17 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_17 * x_17) + (y_6 * y_6)) < 1f);
+    return (((x_18 * x_18) + (y_6 * y_6)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -832,8 +832,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_18 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_18 * x_18) * (3f - (2f * x_18)));
+            let x_19 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_19 * x_19) * (3f - (2f * x_19)));
         }
         default: {
             return 1f;
@@ -1089,10 +1089,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_19 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_19);
+            let x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_20);
             if _e42 {
-                let _e43 = airlight_log1p(x_19);
+                let _e43 = airlight_log1p(x_20);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1225,8 +1225,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_20 = rule[(i_3 / 2u)].x;
-    return select(x_20, -(x_20), ((i_3 % 2u) == 0u));
+    let x_21 = rule[(i_3 / 2u)].x;
+    return select(x_21, -(x_21), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
@@ -1299,8 +1299,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_21 = (lambda / f32((2u * k0_)));
-            let per_step = (x_21 * x_21);
+            let x_22 = (lambda / f32((2u * k0_)));
+            let per_step = (x_22 * x_22);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1722,8 +1722,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_22 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_22)), (x_22 > 0f));
+    let x_23 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_23)), (x_23 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2185,13 +2185,13 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_23 = (abs(alpha) + abs(beta));
+    let x_24 = (abs(alpha) + abs(beta));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_23) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_24) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2201,7 +2201,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_23) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_24) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2211,7 +2211,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_23) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_24) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2221,7 +2221,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_23) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_24) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2231,7 +2231,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_23) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_24) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2241,7 +2241,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_23) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_24) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2251,7 +2251,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_23) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_24) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2261,7 +2261,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_23) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_24) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -2594,6 +2594,7 @@ fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     var one_minus: f32;
     var m_3: array<f32, 8>;
     var local_24: bool;
+    var x_10: f32 = 0f;
 
     if (s_10.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return vec2<f32>(0f, 0f);
@@ -2813,11 +2814,14 @@ fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     if !(_e348) {
         return vec2<f32>(0f, 0f);
     }
-    let _e353 = airlight_hypot_one(u0_);
-    let r0_ = (h_3 * _e353);
-    let _e359 = value_1;
-    let _e363 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, (s_10.sigma_t * r0_), ((_e359 * hw_2) * 0.5f));
-    return vec2<f32>(1f, _e363);
+    if (s_10.sigma_t > 0f) {
+        let _e359 = airlight_hypot_one(u0_);
+        x_10 = (s_10.sigma_t * (h_3 * _e359));
+    }
+    let _e364 = x_10;
+    let _e365 = value_1;
+    let _e369 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e364, ((_e365 * hw_2) * 0.5f));
+    return vec2<f32>(1f, _e369);
 }
 
 fn airlight_bounded(a_10: f32) -> f32 {
@@ -3151,9 +3155,9 @@ fn airlight_on_line(s_12: AirlightScene, g_17: AirlightCanonical) -> f32 {
         let _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_17.d_el));
         let _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1f);
         let f_3 = (_e16 * _e22);
-        let r0_1 = (g_17.x_h - g_17.t_lo);
+        let r0_ = (g_17.x_h - g_17.t_lo);
         let r1_1 = (g_17.x_h - g_17.t_hi);
-        let _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * r0_1), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_1) / r1_1)));
+        let _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2f, (s_12.sigma_t * r0_), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_) / r1_1)));
         return _e41;
     }
     let _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_17.d_el);
@@ -3207,7 +3211,7 @@ fn airlight_whole_line(s_13: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     var infinite_1: bool = true;
     var local_37: bool;
     var local_38: bool;
-    var x_10: f32 = 0f;
+    var x_11: f32 = 0f;
 
     let h_4 = g_18.h;
     let a_s = ((g_18.x_h - g_18.t_lo) / h_4);
@@ -3249,13 +3253,13 @@ fn airlight_whole_line(s_13: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_10 = (big_h_3 * _e8);
+        x_11 = (big_h_3 * _e8);
     } else {
         if (s_13.sigma_t > 0f) {
-            x_10 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+            x_11 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    let _e66 = x_10;
+    let _e66 = x_11;
     let _e67 = airlight_moment_zero_weighted(half_15, _e66);
     let _e73 = airlight_integrand(s_13, g_18, -1f, 0f);
     let _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -3936,8 +3940,8 @@ fn airlight_canonical(s_16: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, select(s_16.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_11: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_11) ^ key));
+fn airlight_opaque(x_12: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_12) ^ key));
 }
 
 fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
@@ -3949,8 +3953,8 @@ fn airlight_two_sum(a_12: f32, b_9: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
-fn airlight_split_high(x_12: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_12) + 2048u) & 4294963200u));
+fn airlight_split_high(x_13: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_13) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_13: f32, b_10: f32, key_2: u32) -> vec2<f32> {
@@ -4191,10 +4195,10 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e129;
 }
 
-fn airlight_asinh(x_13: f32) -> f32 {
+fn airlight_asinh(x_14: f32) -> f32 {
     var r_4: f32;
 
-    let a_25 = abs(x_13);
+    let a_25 = abs(x_14);
     r_4 = (AIRLIGHT_LN_2_ + log(a_25));
     if (a_25 <= 4096f) {
         let _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1f + sqrt((1f + (a_25 * a_25)))))));
@@ -4202,7 +4206,7 @@ fn airlight_asinh(x_13: f32) -> f32 {
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_13 < 0f));
+    return select(_e18, -(_e19), (x_14 < 0f));
 }
 
 fn airlight_to_w(g_20: AirlightOuter, s_18: f32) -> f32 {
@@ -4213,18 +4217,18 @@ fn airlight_to_w(g_20: AirlightOuter, s_18: f32) -> f32 {
     return s_18;
 }
 
-fn airlight_cos_sin_half_turn(x_14: f32) -> vec2<f32> {
-    let r_11 = (x_14 - 1.5707964f);
+fn airlight_cos_sin_half_turn(x_15: f32) -> vec2<f32> {
+    let r_11 = (x_15 - 1.5707964f);
     let z_11 = (r_11 * r_11);
     let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
     let sin_r = (r_11 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_15: f32) -> f32 {
-    let a_26 = abs(x_15);
+fn airlight_acos(x_16: f32) -> f32 {
+    let a_26 = abs(x_16);
     let _e8 = airlight_atan(sqrt(((1f - a_26) / (1f + a_26))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_15 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_16 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_19: f32) -> f32 {
@@ -4672,7 +4676,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
-fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_16: f32) -> AirlightNode {
+fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_17: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -4681,8 +4685,8 @@ fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_16: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_22 = min(u32(max(floor(x_16), 0f)), (g_23.panels - 1u));
-        let t_6 = (x_16 - f32(i_22));
+        let i_22 = min(u32(max(floor(x_17), 0f)), (g_23.panels - 1u));
+        let t_6 = (x_17 - f32(i_22));
         let a_28 = g_23.gamma[i_22];
         let b_18 = g_23.gamma[(i_22 + 1u)];
         let gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
@@ -4707,10 +4711,10 @@ fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_16: f32) -> A
         return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
     if (s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_16;
+        at_1 = x_17;
         if (g_23.scale > 0f) {
-            at_1 = (g_23.s_star + (g_23.scale * sinh(x_16)));
-            ds = (g_23.scale * cosh(x_16));
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_17)));
+            ds = (g_23.scale * cosh(x_17));
         }
         let _e115 = at_1;
         p.light_position = (g_23.a + (_e115 * g_23.e));

@@ -1297,8 +1297,10 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
     let noise = f32(4u * AIRLIGHT_TERMS) * AIRLIGHT_FLT_EPS * magnitude;
     let accepted = AIRLIGHT_PANEL_TOLERANCE * max(abs(value), AIRLIGHT_PANEL_FLOOR * f_max * mass);
     if (!(error <= accepted || error <= noise)) { return vec2<f32>(0.0, 0.0); }
-    let r0 = h * airlight_hypot_one(u0);
-    return vec2<f32>(1.0, airlight_weighted(s.sigma_s, s.intensity, h, s.sigma_t * r0, value * hw * 0.5));
+    // without extinction the exponent is 0, not 0·∞ where r0 overflows
+    var x = 0.0;
+    if (s.sigma_t > 0.0) { x = s.sigma_t * (h * airlight_hypot_one(u0)); }
+    return vec2<f32>(1.0, airlight_weighted(s.sigma_s, s.intensity, h, x, value * hw * 0.5));
 }
 
 // ---------------------------------------------------------------- combined formulation
