@@ -46,11 +46,11 @@
 //! the route, and so does a phase function that does not declare its singularities: `F` would
 //! not be analytic in `θ`, or not known to be.
 
-use crate::combined::{cut_length, weighted, Physics};
+use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
-use crate::panels::{bernstein_rho, error_factor, legendre, power, tail_estimate, Control, MAX_N};
+use crate::panels::{bernstein_rho, error_factor, legendre, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
 use crate::phase::PhaseFunction;
 use crate::real::{hypot1, Real};
 use crate::scalar::Scalar;
@@ -92,10 +92,11 @@ where
     }
     let (u0, u1) = (g.u(g.t0), g.u(g.t1));
     let big_h = phys.sigma_t * h;
-    // Y at the start without cancellation: 1/(−u + √(1+u²)) before the foot
-    let y0 = if u0 < T::zero() { (hypot1(u0) - u0).recip() } else { u0 + hypot1(u0) };
+    // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
+    let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
+    let y0 = y_at(u0);
     let y_cut = y0 + cut_length(big_h, y0, control);
-    let y1 = if u1 < T::zero() { (hypot1(u1) - u1).recip() } else { u1 + hypot1(u1) };
+    let y1 = y_at(u1);
     // The ends as their distances from the poles θ = ∓π/2 (ψ0 = θ0 + π/2, ψ1 = π/2 − θ1), to
     // full relative accuracy: F's lobes and the exponential's layer sit at the poles, where
     // cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase function
@@ -137,9 +138,7 @@ where
     // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse through it:
     // the phase's, with its order's step as the panels take it, and the exponential's own, Y's
     // pole at θ = π/2 (essential in e^{−HY}, which is analytic inside the ellipse through it).
-    // (N/(N − 1))^{max(α − 1, 0)} as √(N/(N − 1)) to the power ⌈2(α − 1)⌉ (the panels' `Singular`)
-    let twice = ((singular.order - T::one()) * T::lit(2.0)).ceil().max(T::zero());
-    let step = twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(T::lit((N as f64 / (N - 1) as f64).sqrt()), k));
+    let step = order_step::<T, N>(singular.order);
     let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
     let mut rate = T::zero();
     for mu in singular.cosines {
@@ -193,9 +192,10 @@ where
     moments[0] = T::lit(2.0);
     let factor = error_factor::<T, N>(&c, &moments, Some(rate));
     let last = tail_estimate::<T, N>(&c);
-    // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding 4Nε per sample
+    // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding as on a
+    // y-panel (mass 2 times the samples' weighted mean magnitude)
     let error = T::lit(2.0) * last * factor;
-    let noise = T::from(4 * N).unwrap() * T::epsilon() * magnitude;
+    let noise = transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5));
     let target = tolerance * value.abs().max(control.floor * f_max * mass);
     if !(error <= target || error <= noise) {
         return Route::Failed;

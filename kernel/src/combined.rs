@@ -154,7 +154,7 @@ pub enum Method<T> {
 
 /// `1/(a + √(1+a²))` for `a ≥ 0`: the bounded variable `y` at `|u| = a` (`+∞ ↦ 0`).
 #[inline]
-fn bounded<T: Real>(a: T) -> T {
+pub(crate) fn bounded<T: Real>(a: T) -> T {
     if a.is_finite() {
         (a + hypot1(a)).recip()
     } else {

@@ -189,12 +189,8 @@ struct Singular<T> {
 impl<T: Real> Singular<T> {
     fn new<const N: usize>(s: [(T, T); 3], second: bool) -> Self {
         let (mut y, mut step, mut count) = ([T::zero(); 3], [T::zero(); 3], 0);
-        // √(N/(N − 1)) to the power ⌈2(α − 1)⌉ by squaring: exact for the built-in orders (whole
-        // and half), larger otherwise; no library power per piece
-        let root = (T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap()).sqrt();
         for (t, order) in s {
-            let twice = ((order - T::one()) * T::lit(2.0)).ceil();
-            let factor = if twice > T::zero() { twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(root, k)) } else { T::one() };
+            let factor = order_step::<T, N>(order);
             match (0..count).find(|&i| y[i] == t) {
                 Some(i) => step[i] = step[i].max(factor),
                 None => {
@@ -235,10 +231,23 @@ struct Panel<T> {
     f_max: T,
 }
 
+/// `(N/(N − 1))^{max(α − 1, 0)}`, the step-ratio bound of a singularity of order `α` beyond
+/// `c_{N−1}` ([`Singular`]): `√(N/(N − 1))` to the power `⌈2(α − 1)⌉` by squaring — exact for the
+/// built-in orders (whole and half), larger otherwise; no library power per piece.
+pub(crate) fn order_step<T: Real, const N: usize>(order: T) -> T {
+    let root = (T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap()).sqrt();
+    let twice = ((order - T::one()) * T::lit(2.0)).ceil();
+    if twice > T::zero() {
+        twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(root, k))
+    } else {
+        T::one()
+    }
+}
+
 /// The discrete transform's rounding, the floor below which no refinement helps: about `Nε`
 /// of the weighted mean of the samples' magnitudes per coefficient, times the weight mass
 /// (`4Nε·mass·mean`).
-fn transform_noise<T: Real, const N: usize>(mass: T, mean_abs: T) -> T {
+pub(crate) fn transform_noise<T: Real, const N: usize>(mass: T, mean_abs: T) -> T {
     T::from(4 * N).unwrap() * T::epsilon() * mass * mean_abs
 }
 

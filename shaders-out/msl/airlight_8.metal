@@ -2750,6 +2750,24 @@ float airlight_atan2_upper(
     return 1.5707964 + _e21;
 }
 
+float airlight_bounded(
+    float a_10
+) {
+    float _e1 = airlight_hypot_one(a_10);
+    return 1.0 / (a_10 + _e1);
+}
+
+float airlight_angle_y(
+    float u
+) {
+    if (u < 0.0) {
+        float _e4 = airlight_bounded(-(u));
+        return _e4;
+    }
+    float _e5 = airlight_hypot_one(u);
+    return u + _e5;
+}
+
 float airlight_angle_floor(
     float side_1,
     float gap_1,
@@ -2807,7 +2825,6 @@ metal::float2 airlight_angle_route(
     AirlightCanonical g_11
 ) {
     bool local_23 = {};
-    float y0_ = {};
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
     float psi1_ = 0.0;
@@ -2843,235 +2860,212 @@ metal::float2 airlight_angle_route(
     }
     bool u1_finite = local_23;
     float big_h_7 = s_9.sigma_t * h_3;
-    float _e26 = airlight_hypot_one(u0_);
-    y0_ = u0_ + _e26;
-    if (u0_ < 0.0) {
-        float _e31 = airlight_hypot_one(u0_);
-        y0_ = 1.0 / (_e31 - u0_);
-    }
+    float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
-        float _e37 = airlight_hypot_one(u1_);
-        y1_ = u1_ + _e37;
-        if (u1_ < 0.0) {
-            float _e41 = airlight_hypot_one(u1_);
-            y1_ = 1.0 / (_e41 - u1_);
-        }
+        float _e29 = airlight_angle_y(u1_);
+        y1_ = _e29;
     }
     if (big_h_7 > 0.0) {
-        float _e49 = y0_;
-        float _e50 = y0_;
-        float _e51 = airlight_cut_length(big_h_7, _e50);
-        y_cut = _e49 + _e51;
+        float _e34 = airlight_cut_length(big_h_7, _e26);
+        y_cut = _e26 + _e34;
     }
-    float _e55 = airlight_atan2_upper(1.0, -(u0_));
-    float _e59 = airlight_atan2_upper(1.0, u0_);
-    width = _e59;
-    float _e61 = y_cut;
-    float _e62 = y1_;
-    if (_e61 < _e62) {
-        float _e64 = y_cut;
-        float _e67 = airlight_atan(1.0 / _e64);
-        psi1_ = 2.0 * _e67;
-        float _e70 = y_cut;
-        float _e71 = y0_;
-        float _e73 = y0_;
-        float _e74 = y_cut;
-        float _e78 = airlight_atan2_upper(_e70 - _e71, 1.0 + (_e73 * _e74));
-        width = 2.0 * _e78;
+    float _e38 = airlight_atan2_upper(1.0, -(u0_));
+    float _e42 = airlight_atan2_upper(1.0, u0_);
+    width = _e42;
+    float _e44 = y_cut;
+    float _e45 = y1_;
+    if (_e44 < _e45) {
+        float _e47 = y_cut;
+        float _e50 = airlight_atan(1.0 / _e47);
+        psi1_ = 2.0 * _e50;
+        float _e53 = y_cut;
+        float _e55 = y_cut;
+        float _e59 = airlight_atan2_upper(_e53 - _e26, 1.0 + (_e26 * _e55));
+        width = 2.0 * _e59;
     } else {
         if (u1_finite) {
-            float _e82 = airlight_atan2_upper(1.0, u1_);
-            psi1_ = _e82;
-            float _e90 = airlight_atan2_upper((g_11.t_hi - g_11.t_lo) / h_3, 1.0 + (u0_ * u1_));
-            width = _e90;
+            float _e63 = airlight_atan2_upper(1.0, u1_);
+            psi1_ = _e63;
+            float _e71 = airlight_atan2_upper((g_11.t_hi - g_11.t_lo) / h_3, 1.0 + (u0_ * u1_));
+            width = _e71;
         }
     }
-    float _e91 = width;
-    float hw_2 = _e91 * 0.5;
+    float _e72 = width;
+    float hw_2 = _e72 * 0.5;
     if (!((hw_2 > 0.0))) {
         return metal::float2(0.0, 0.0);
     }
-    float mid_2 = (_e55 + hw_2) - 1.5707964;
-    float _e103 = y1_;
-    float _e104 = y_cut;
-    float y_end = metal::min(_e103, _e104);
-    float _e106 = y0_;
-    float y_e = metal::min(_e106 + (1.0 / big_h_7), y_end);
+    float mid_2 = (_e38 + hw_2) - 1.5707964;
+    float _e84 = y1_;
+    float _e85 = y_cut;
+    float y_end = metal::min(_e84, _e85);
+    float y_e = metal::min(_e26 + (1.0 / big_h_7), y_end);
     if (s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         degree_1 = s_9.light_param_a;
     }
-    float _e117 = degree_1;
-    lambda_1 = metal::sqrt(_e117) * hw_2;
+    float _e97 = degree_1;
+    lambda_1 = metal::sqrt(_e97) * hw_2;
     if (big_h_7 > 0.0) {
-        float _e123 = lambda_1;
-        float _e124 = y0_;
-        lambda_1 = _e123 + (metal::min(big_h_7 * (y_end - _e124), (hw_2 * big_h_7) * (1.0 + (y_e * y_e))) * 0.5);
+        float _e103 = lambda_1;
+        lambda_1 = _e103 + (metal::min(big_h_7 * (y_end - _e26), (hw_2 * big_h_7) * (1.0 + (y_e * y_e))) * 0.5);
     }
-    float _e136 = lambda_1;
-    float predicted = metal::pow(_e136, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL;
+    float _e115 = lambda_1;
+    float predicted = metal::pow(_e115, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL;
     if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
         return metal::float2(0.0, 0.0);
     }
-    metal::float3 _e147 = airlight_singular_steps(s_9);
-    float step_3 = _e147.y;
+    metal::float3 _e126 = airlight_singular_steps(s_9);
+    float step_3 = _e126.y;
     float p0_4 = s_9.phase_param_a;
     switch(s_9.phase_kind) {
         case 2u:
         case 4u: {
-            float _e153 = airlight_hg_gap(p0_4);
-            float _e154 = airlight_angle_floor(p0_4, _e153, mid_2, hw_2, step_3);
-            rate = _e154;
+            float _e132 = airlight_hg_gap(p0_4);
+            float _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
+            rate = _e133;
             break;
         }
         case 3u: {
             float a_22 = metal::abs(p0_4);
-            float _e163 = airlight_angle_floor(p0_4, (a_22 > 0.0) ? ((1.0 - a_22) / a_22) : AIRLIGHT_FLT_MAX, mid_2, hw_2, step_3);
-            rate = _e163;
+            float _e142 = airlight_angle_floor(p0_4, (a_22 > 0.0) ? ((1.0 - a_22) / a_22) : AIRLIGHT_FLT_MAX, mid_2, hw_2, step_3);
+            rate = _e142;
             break;
         }
         case 5u: {
             float p1_3 = s_9.phase_param_b;
-            float _e165 = airlight_hg_gap(p0_4);
-            float _e166 = airlight_angle_floor(p0_4, _e165, mid_2, hw_2, step_3);
-            float _e167 = airlight_hg_gap(p1_3);
-            float _e168 = airlight_angle_floor(p1_3, _e167, mid_2, hw_2, step_3);
-            rate = metal::max(_e166, _e168);
+            float _e144 = airlight_hg_gap(p0_4);
+            float _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
+            float _e146 = airlight_hg_gap(p1_3);
+            float _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
+            rate = metal::max(_e145, _e147);
             break;
         }
         default: {
             break;
         }
     }
-    float _e170 = rate;
-    if (!((metal::pow(_e170, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e149 = rate;
+    if (!((metal::pow(_e149, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
         return metal::float2(0.0, 0.0);
     }
     if (big_h_7 > 0.0) {
-        float _e181 = rate;
-        float _e186 = airlight_bernstein_rho((1.5707964 - mid_2) / hw_2, 0.0);
-        rate = metal::max(_e181, 1.0 / _e186);
+        float _e160 = rate;
+        float _e165 = airlight_bernstein_rho((1.5707964 - mid_2) / hw_2, 0.0);
+        rate = metal::max(_e160, 1.0 / _e165);
     }
-    airlight_type_8 _e190 = airlight_gauss_rule();
-    airlight_type_2 _e191 = airlight_zero_terms();
-    samples_3 = _e191;
+    airlight_type_8 _e169 = airlight_gauss_rule();
+    airlight_type_2 _e170 = airlight_zero_terms();
+    samples_3 = _e170;
     uint2 loop_bound_18 = uint2(4294967295u);
     bool loop_init_18 = true;
     while(true) {
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e314 = i_12;
-            i_12 = _e314 + 1u;
+            uint _e292 = i_12;
+            i_12 = _e292 + 1u;
         }
         loop_init_18 = false;
-        uint _e203 = i_12;
-        if (_e203 < AIRLIGHT_TERMS) {
+        uint _e182 = i_12;
+        if (_e182 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e206 = i_12;
-            float _e207 = airlight_node(_e190, _e206);
-            float lower = _e55 + (hw_2 * (1.0 + _e207));
+            uint _e185 = i_12;
+            float _e186 = airlight_node(_e169, _e185);
+            float lower = _e38 + (hw_2 * (1.0 + _e186));
             sn = 0.0;
             cs = 0.0;
             y_4 = 0.0;
             one_plus = 0.0;
             one_minus = 0.0;
             if (lower <= 1.5707964) {
-                metal::float2 _e224 = airlight_cos_sin(lower);
-                cs = _e224.y;
-                sn = -(_e224.x);
-                one_minus = 1.0 + _e224.x;
-                float _e231 = cs;
-                float _e232 = one_minus;
-                y_4 = _e231 / _e232;
-                float _e234 = cs;
-                float _e235 = cs;
-                float _e237 = one_minus;
-                one_plus = (_e234 * _e235) / _e237;
+                metal::float2 _e203 = airlight_cos_sin(lower);
+                cs = _e203.y;
+                sn = -(_e203.x);
+                one_minus = 1.0 + _e203.x;
+                float _e210 = cs;
+                float _e211 = one_minus;
+                y_4 = _e210 / _e211;
+                float _e213 = cs;
+                float _e214 = cs;
+                float _e216 = one_minus;
+                one_plus = (_e213 * _e214) / _e216;
             } else {
-                float _e239 = psi1_;
-                metal::float2 _e244 = airlight_cos_sin(_e239 + (hw_2 * (1.0 - _e207)));
-                cs = _e244.y;
-                sn = _e244.x;
-                float _e247 = sn;
-                one_plus = 1.0 + _e247;
-                float _e250 = one_plus;
-                float _e251 = cs;
-                y_4 = _e250 / _e251;
-                float _e253 = cs;
-                float _e254 = cs;
-                float _e256 = one_plus;
-                one_minus = (_e253 * _e254) / _e256;
+                float _e218 = psi1_;
+                metal::float2 _e223 = airlight_cos_sin(_e218 + (hw_2 * (1.0 - _e186)));
+                cs = _e223.y;
+                sn = _e223.x;
+                float _e226 = sn;
+                one_plus = 1.0 + _e226;
+                float _e229 = one_plus;
+                float _e230 = cs;
+                y_4 = _e229 / _e230;
+                float _e232 = cs;
+                float _e233 = cs;
+                float _e235 = one_plus;
+                one_minus = (_e232 * _e233) / _e235;
             }
-            float _e258 = y_4;
-            float _e259 = y0_;
-            float _e266 = cs;
-            float weight_1 = (_e266 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (_e258 - _e259), 0.0))) : 0.0;
-            float _e275 = sn;
-            float _e278 = cs;
-            float _e281 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * _e275) + (g_11.d_c * _e278));
-            float _e286 = sn;
-            float _e288 = one_plus;
-            float _e289 = one_minus;
-            float _e290 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(_e286), _e288, _e289);
-            float f_2 = _e281 * _e290;
+            float _e237 = y_4;
+            float _e244 = cs;
+            float weight_1 = (_e244 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (_e237 - _e26), 0.0))) : 0.0;
+            float _e253 = sn;
+            float _e256 = cs;
+            float _e259 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * _e253) + (g_11.d_c * _e256));
+            float _e264 = sn;
+            float _e266 = one_plus;
+            float _e267 = one_minus;
+            float _e268 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(_e264), _e266, _e267);
+            float f_2 = _e259 * _e268;
             float gw = weight_1 * f_2;
-            uint _e293 = i_12;
-            samples_3.inner[metal::min(unsigned(_e293), 7u)] = gw;
-            uint _e295 = i_12;
-            float w_3 = _e190.inner[metal::min(unsigned(airlight_naga_div(_e295, 2u)), 3u)].y;
-            float _e300 = value_1;
-            value_1 = _e300 + (w_3 * gw);
-            float _e303 = mass_4;
-            mass_4 = _e303 + (w_3 * weight_1);
-            float _e306 = magnitude;
-            magnitude = _e306 + (w_3 * metal::abs(gw));
-            float _e310 = f_max_5;
-            f_max_5 = metal::max(_e310, metal::abs(f_2));
+            uint _e271 = i_12;
+            samples_3.inner[metal::min(unsigned(_e271), 7u)] = gw;
+            uint _e273 = i_12;
+            float w_3 = _e169.inner[metal::min(unsigned(airlight_naga_div(_e273, 2u)), 3u)].y;
+            float _e278 = value_1;
+            value_1 = _e278 + (w_3 * gw);
+            float _e281 = mass_4;
+            mass_4 = _e281 + (w_3 * weight_1);
+            float _e284 = magnitude;
+            magnitude = _e284 + (w_3 * metal::abs(gw));
+            float _e288 = f_max_5;
+            f_max_5 = metal::max(_e288, metal::abs(f_2));
         }
     }
-    airlight_type_2 _e316 = samples_3;
-    airlight_type_2 _e317 = airlight_legendre(_e316);
-    airlight_type_2 _e318 = airlight_zero_terms();
-    m_3 = _e318;
+    airlight_type_2 _e294 = samples_3;
+    airlight_type_2 _e295 = airlight_legendre(_e294);
+    airlight_type_2 _e296 = airlight_zero_terms();
+    m_3 = _e296;
     m_3.inner[0] = 2.0;
-    float _e322 = airlight_tail_estimate(_e317);
-    airlight_type_2 _e325 = m_3;
-    float _e326 = rate;
-    float _e327 = airlight_error_factor(_e317, _e325, _e326);
-    float error_4 = (2.0 * _e322) * _e327;
-    float _e330 = magnitude;
-    float noise_1 = 0.0000038146973 * _e330;
-    float _e333 = value_1;
-    float _e336 = f_max_5;
-    float _e338 = mass_4;
-    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e333), (AIRLIGHT_PANEL_FLOOR * _e336) * _e338);
+    float _e300 = airlight_tail_estimate(_e295);
+    airlight_type_2 _e303 = m_3;
+    float _e304 = rate;
+    float _e305 = airlight_error_factor(_e295, _e303, _e304);
+    float error_4 = (2.0 * _e300) * _e305;
+    float _e308 = magnitude;
+    float _e311 = airlight_transform_noise(2.0, 0.5 * _e308);
+    float _e313 = value_1;
+    float _e316 = f_max_5;
+    float _e318 = mass_4;
+    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e313), (AIRLIGHT_PANEL_FLOOR * _e316) * _e318);
     if (!((error_4 <= accepted))) {
-        local_24 = error_4 <= noise_1;
+        local_24 = error_4 <= _e311;
     } else {
         local_24 = true;
     }
-    bool _e348 = local_24;
-    if (!(_e348)) {
+    bool _e328 = local_24;
+    if (!(_e328)) {
         return metal::float2(0.0, 0.0);
     }
     if (s_9.sigma_t > 0.0) {
-        float _e359 = airlight_hypot_one(u0_);
-        x_10 = s_9.sigma_t * (h_3 * _e359);
+        float _e339 = airlight_hypot_one(u0_);
+        x_10 = s_9.sigma_t * (h_3 * _e339);
     }
-    float _e364 = x_10;
-    float _e365 = value_1;
-    float _e369 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e364, (_e365 * hw_2) * 0.5);
-    return metal::float2(1.0, _e369);
-}
-
-float airlight_bounded(
-    float a_10
-) {
-    float _e1 = airlight_hypot_one(a_10);
-    return 1.0 / (a_10 + _e1);
+    float _e344 = x_10;
+    float _e345 = value_1;
+    float _e349 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e344, (_e345 * hw_2) * 0.5);
+    return metal::float2(1.0, _e349);
 }
 
 metal::float2 airlight_crossings(
@@ -3909,8 +3903,8 @@ metal::float3 airlight_normalize(
     metal::float3 v_3
 ) {
     float m_8 = metal::max(metal::abs(v_3.x), metal::max(metal::abs(v_3.y), metal::abs(v_3.z)));
-    metal::float3 u_1 = v_3 / metal::float3(m_8);
-    return u_1 / metal::float3(metal::length(u_1));
+    metal::float3 u_2 = v_3 / metal::float3(m_8);
+    return u_2 / metal::float3(metal::length(u_2));
 }
 
 bool airlight_valid(
@@ -4628,7 +4622,7 @@ AirlightOuter airlight_surface(
 ) {
     AirlightOuter g_19 = {};
     bool local_102 = {};
-    metal::float3 u = {};
+    metal::float3 u_1 = {};
     airlight_type_16 cuts_1 = {};
     uint k_4 = 0u;
     uint i_18 = 0u;
@@ -4664,14 +4658,14 @@ AirlightOuter airlight_surface(
     float cos_a_1 = metal::dot(_e37, l_3);
     metal::float3 across = _e37 - (cos_a_1 * l_3);
     float _e41 = airlight_safe_length(across);
-    u = across / metal::float3(_e41);
+    u_1 = across / metal::float3(_e41);
     if (!((_e41 > 0.0))) {
         metal::float3 pick = (metal::abs(l_3.x) > 0.7) ? metal::float3(0.0, 1.0, 0.0) : metal::float3(1.0, 0.0, 0.0);
         metal::float3 _e64 = airlight_normalize(pick - (metal::dot(pick, l_3) * l_3));
-        u = _e64;
+        u_1 = _e64;
     }
     g_19.l = l_3;
-    metal::float3 _e67 = u;
+    metal::float3 _e67 = u_1;
     g_19.u = _e67;
     g_19.cos_a = cos_a_1;
     g_19.sin_a = _e41;

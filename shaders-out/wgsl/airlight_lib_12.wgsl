@@ -2985,6 +2985,20 @@ fn airlight_atan2_upper(y_3: f32, x_8: f32) -> f32 {
     return (1.5707964f + _e21);
 }
 
+fn airlight_bounded(a_10: f32) -> f32 {
+    let _e1 = airlight_hypot_one(a_10);
+    return (1f / (a_10 + _e1));
+}
+
+fn airlight_angle_y(u: f32) -> f32 {
+    if (u < 0f) {
+        let _e4 = airlight_bounded(-(u));
+        return _e4;
+    }
+    let _e5 = airlight_hypot_one(u);
+    return (u + _e5);
+}
+
 fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32) -> f32 {
     var local_22: bool;
 
@@ -3025,7 +3039,6 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_9: f32, j_1: 
 
 fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f32> {
     var local_23: bool;
-    var y0_: f32;
     var y1_: f32 = AIRLIGHT_FLT_MAX;
     var y_cut: f32 = AIRLIGHT_FLT_MAX;
     var psi1_: f32 = 0f;
@@ -3062,223 +3075,202 @@ fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     }
     let u1_finite = local_23;
     let big_h_7 = (s_10.sigma_t * h_3);
-    let _e26 = airlight_hypot_one(u0_);
-    y0_ = (u0_ + _e26);
-    if (u0_ < 0f) {
-        let _e31 = airlight_hypot_one(u0_);
-        y0_ = (1f / (_e31 - u0_));
-    }
+    let _e26 = airlight_angle_y(u0_);
     if u1_finite {
-        let _e37 = airlight_hypot_one(u1_);
-        y1_ = (u1_ + _e37);
-        if (u1_ < 0f) {
-            let _e41 = airlight_hypot_one(u1_);
-            y1_ = (1f / (_e41 - u1_));
-        }
+        let _e29 = airlight_angle_y(u1_);
+        y1_ = _e29;
     }
     if (big_h_7 > 0f) {
-        let _e49 = y0_;
-        let _e50 = y0_;
-        let _e51 = airlight_cut_length(big_h_7, _e50);
-        y_cut = (_e49 + _e51);
+        let _e34 = airlight_cut_length(big_h_7, _e26);
+        y_cut = (_e26 + _e34);
     }
-    let _e55 = airlight_atan2_upper(1f, -(u0_));
-    let _e59 = airlight_atan2_upper(1f, u0_);
-    width = _e59;
-    let _e61 = y_cut;
-    let _e62 = y1_;
-    if (_e61 < _e62) {
-        let _e64 = y_cut;
-        let _e67 = airlight_atan((1f / _e64));
-        psi1_ = (2f * _e67);
-        let _e70 = y_cut;
-        let _e71 = y0_;
-        let _e73 = y0_;
-        let _e74 = y_cut;
-        let _e78 = airlight_atan2_upper((_e70 - _e71), (1f + (_e73 * _e74)));
-        width = (2f * _e78);
+    let _e38 = airlight_atan2_upper(1f, -(u0_));
+    let _e42 = airlight_atan2_upper(1f, u0_);
+    width = _e42;
+    let _e44 = y_cut;
+    let _e45 = y1_;
+    if (_e44 < _e45) {
+        let _e47 = y_cut;
+        let _e50 = airlight_atan((1f / _e47));
+        psi1_ = (2f * _e50);
+        let _e53 = y_cut;
+        let _e55 = y_cut;
+        let _e59 = airlight_atan2_upper((_e53 - _e26), (1f + (_e26 * _e55)));
+        width = (2f * _e59);
     } else {
         if u1_finite {
-            let _e82 = airlight_atan2_upper(1f, u1_);
-            psi1_ = _e82;
-            let _e90 = airlight_atan2_upper(((g_13.t_hi - g_13.t_lo) / h_3), (1f + (u0_ * u1_)));
-            width = _e90;
+            let _e63 = airlight_atan2_upper(1f, u1_);
+            psi1_ = _e63;
+            let _e71 = airlight_atan2_upper(((g_13.t_hi - g_13.t_lo) / h_3), (1f + (u0_ * u1_)));
+            width = _e71;
         }
     }
-    let _e91 = width;
-    let hw_2 = (_e91 * 0.5f);
+    let _e72 = width;
+    let hw_2 = (_e72 * 0.5f);
     if !((hw_2 > 0f)) {
         return vec2<f32>(0f, 0f);
     }
-    let mid_2 = ((_e55 + hw_2) - 1.5707964f);
-    let _e103 = y1_;
-    let _e104 = y_cut;
-    let y_end = min(_e103, _e104);
-    let _e106 = y0_;
-    let y_e = min((_e106 + (1f / big_h_7)), y_end);
+    let mid_2 = ((_e38 + hw_2) - 1.5707964f);
+    let _e84 = y1_;
+    let _e85 = y_cut;
+    let y_end = min(_e84, _e85);
+    let y_e = min((_e26 + (1f / big_h_7)), y_end);
     if (s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         degree_1 = s_10.light_param_a;
     }
-    let _e117 = degree_1;
-    lambda_1 = (sqrt(_e117) * hw_2);
+    let _e97 = degree_1;
+    lambda_1 = (sqrt(_e97) * hw_2);
     if (big_h_7 > 0f) {
-        let _e123 = lambda_1;
-        let _e124 = y0_;
-        lambda_1 = (_e123 + (min((big_h_7 * (y_end - _e124)), ((hw_2 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
+        let _e103 = lambda_1;
+        lambda_1 = (_e103 + (min((big_h_7 * (y_end - _e26)), ((hw_2 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
     }
-    let _e136 = lambda_1;
-    let predicted = (pow(_e136, 12f) * AIRLIGHT_INV_ODD_FACTORIAL);
+    let _e115 = lambda_1;
+    let predicted = (pow(_e115, 12f) * AIRLIGHT_INV_ODD_FACTORIAL);
     if !((predicted <= AIRLIGHT_PANEL_TOLERANCE)) {
         return vec2<f32>(0f, 0f);
     }
-    let _e147 = airlight_singular_steps(s_10);
-    let step_3 = _e147.y;
+    let _e126 = airlight_singular_steps(s_10);
+    let step_3 = _e126.y;
     let p0_4 = s_10.phase_param_a;
     switch s_10.phase_kind {
         case 2u, 4u: {
-            let _e153 = airlight_hg_gap(p0_4);
-            let _e154 = airlight_angle_floor(p0_4, _e153, mid_2, hw_2, step_3);
-            rate = _e154;
+            let _e132 = airlight_hg_gap(p0_4);
+            let _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
+            rate = _e133;
         }
         case 3u: {
             let a_22 = abs(p0_4);
-            let _e163 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_22) / a_22), (a_22 > 0f)), mid_2, hw_2, step_3);
-            rate = _e163;
+            let _e142 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_22) / a_22), (a_22 > 0f)), mid_2, hw_2, step_3);
+            rate = _e142;
         }
         case 5u: {
             let p1_3 = s_10.phase_param_b;
-            let _e165 = airlight_hg_gap(p0_4);
-            let _e166 = airlight_angle_floor(p0_4, _e165, mid_2, hw_2, step_3);
-            let _e167 = airlight_hg_gap(p1_3);
-            let _e168 = airlight_angle_floor(p1_3, _e167, mid_2, hw_2, step_3);
-            rate = max(_e166, _e168);
+            let _e144 = airlight_hg_gap(p0_4);
+            let _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
+            let _e146 = airlight_hg_gap(p1_3);
+            let _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
+            rate = max(_e145, _e147);
         }
         default: {
         }
     }
-    let _e170 = rate;
-    if !((pow(_e170, 12f) <= AIRLIGHT_PANEL_TOLERANCE)) {
+    let _e149 = rate;
+    if !((pow(_e149, 12f) <= AIRLIGHT_PANEL_TOLERANCE)) {
         return vec2<f32>(0f, 0f);
     }
     if (big_h_7 > 0f) {
-        let _e181 = rate;
-        let _e186 = airlight_bernstein_rho(((1.5707964f - mid_2) / hw_2), 0f);
-        rate = max(_e181, (1f / _e186));
+        let _e160 = rate;
+        let _e165 = airlight_bernstein_rho(((1.5707964f - mid_2) / hw_2), 0f);
+        rate = max(_e160, (1f / _e165));
     }
-    let _e190 = airlight_gauss_rule();
-    let _e191 = airlight_zero_terms();
-    samples_3 = _e191;
+    let _e169 = airlight_gauss_rule();
+    let _e170 = airlight_zero_terms();
+    samples_3 = _e170;
     loop {
-        let _e203 = i_12;
-        if (_e203 < AIRLIGHT_TERMS) {
+        let _e182 = i_12;
+        if (_e182 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e206 = i_12;
-            let _e207 = airlight_node(_e190, _e206);
-            let lower = (_e55 + (hw_2 * (1f + _e207)));
+            let _e185 = i_12;
+            let _e186 = airlight_node(_e169, _e185);
+            let lower = (_e38 + (hw_2 * (1f + _e186)));
             sn = 0f;
             cs = 0f;
             y_4 = 0f;
             one_plus = 0f;
             one_minus = 0f;
             if (lower <= 1.5707964f) {
-                let _e224 = airlight_cos_sin(lower);
-                cs = _e224.y;
-                sn = -(_e224.x);
-                one_minus = (1f + _e224.x);
-                let _e231 = cs;
-                let _e232 = one_minus;
-                y_4 = (_e231 / _e232);
-                let _e234 = cs;
-                let _e235 = cs;
-                let _e237 = one_minus;
-                one_plus = ((_e234 * _e235) / _e237);
+                let _e203 = airlight_cos_sin(lower);
+                cs = _e203.y;
+                sn = -(_e203.x);
+                one_minus = (1f + _e203.x);
+                let _e210 = cs;
+                let _e211 = one_minus;
+                y_4 = (_e210 / _e211);
+                let _e213 = cs;
+                let _e214 = cs;
+                let _e216 = one_minus;
+                one_plus = ((_e213 * _e214) / _e216);
             } else {
-                let _e239 = psi1_;
-                let _e244 = airlight_cos_sin((_e239 + (hw_2 * (1f - _e207))));
-                cs = _e244.y;
-                sn = _e244.x;
-                let _e247 = sn;
-                one_plus = (1f + _e247);
-                let _e250 = one_plus;
-                let _e251 = cs;
-                y_4 = (_e250 / _e251);
-                let _e253 = cs;
-                let _e254 = cs;
-                let _e256 = one_plus;
-                one_minus = ((_e253 * _e254) / _e256);
+                let _e218 = psi1_;
+                let _e223 = airlight_cos_sin((_e218 + (hw_2 * (1f - _e186))));
+                cs = _e223.y;
+                sn = _e223.x;
+                let _e226 = sn;
+                one_plus = (1f + _e226);
+                let _e229 = one_plus;
+                let _e230 = cs;
+                y_4 = (_e229 / _e230);
+                let _e232 = cs;
+                let _e233 = cs;
+                let _e235 = one_plus;
+                one_minus = ((_e232 * _e233) / _e235);
             }
-            let _e258 = y_4;
-            let _e259 = y0_;
-            let _e266 = cs;
-            let weight_1 = select(0f, exp(-(max((big_h_7 * (_e258 - _e259)), 0f))), (_e266 > 0f));
-            let _e275 = sn;
-            let _e278 = cs;
-            let _e281 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * _e275) + (g_13.d_c * _e278)));
-            let _e286 = sn;
-            let _e288 = one_plus;
-            let _e289 = one_minus;
-            let _e290 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(_e286), _e288, _e289);
-            let f_2 = (_e281 * _e290);
+            let _e237 = y_4;
+            let _e244 = cs;
+            let weight_1 = select(0f, exp(-(max((big_h_7 * (_e237 - _e26)), 0f))), (_e244 > 0f));
+            let _e253 = sn;
+            let _e256 = cs;
+            let _e259 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * _e253) + (g_13.d_c * _e256)));
+            let _e264 = sn;
+            let _e266 = one_plus;
+            let _e267 = one_minus;
+            let _e268 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(_e264), _e266, _e267);
+            let f_2 = (_e259 * _e268);
             let gw = (weight_1 * f_2);
-            let _e293 = i_12;
-            samples_3[_e293] = gw;
-            let _e295 = i_12;
-            let w_4 = _e190[(_e295 / 2u)].y;
-            let _e300 = value_1;
-            value_1 = (_e300 + (w_4 * gw));
-            let _e303 = mass_4;
-            mass_4 = (_e303 + (w_4 * weight_1));
-            let _e306 = magnitude;
-            magnitude = (_e306 + (w_4 * abs(gw)));
-            let _e310 = f_max_5;
-            f_max_5 = max(_e310, abs(f_2));
+            let _e271 = i_12;
+            samples_3[_e271] = gw;
+            let _e273 = i_12;
+            let w_4 = _e169[(_e273 / 2u)].y;
+            let _e278 = value_1;
+            value_1 = (_e278 + (w_4 * gw));
+            let _e281 = mass_4;
+            mass_4 = (_e281 + (w_4 * weight_1));
+            let _e284 = magnitude;
+            magnitude = (_e284 + (w_4 * abs(gw)));
+            let _e288 = f_max_5;
+            f_max_5 = max(_e288, abs(f_2));
         }
         continuing {
-            let _e314 = i_12;
-            i_12 = (_e314 + 1u);
+            let _e292 = i_12;
+            i_12 = (_e292 + 1u);
         }
     }
-    let _e316 = samples_3;
-    let _e317 = airlight_legendre(_e316);
-    let _e318 = airlight_zero_terms();
-    m_3 = _e318;
+    let _e294 = samples_3;
+    let _e295 = airlight_legendre(_e294);
+    let _e296 = airlight_zero_terms();
+    m_3 = _e296;
     m_3[0] = 2f;
-    let _e322 = airlight_tail_estimate(_e317);
-    let _e325 = m_3;
-    let _e326 = rate;
-    let _e327 = airlight_error_factor(_e317, _e325, _e326);
-    let error_4 = ((2f * _e322) * _e327);
-    let _e330 = magnitude;
-    let noise_1 = (0.000005722046f * _e330);
-    let _e333 = value_1;
-    let _e336 = f_max_5;
-    let _e338 = mass_4;
-    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e333), ((AIRLIGHT_PANEL_FLOOR * _e336) * _e338)));
+    let _e300 = airlight_tail_estimate(_e295);
+    let _e303 = m_3;
+    let _e304 = rate;
+    let _e305 = airlight_error_factor(_e295, _e303, _e304);
+    let error_4 = ((2f * _e300) * _e305);
+    let _e308 = magnitude;
+    let _e311 = airlight_transform_noise(2f, (0.5f * _e308));
+    let _e313 = value_1;
+    let _e316 = f_max_5;
+    let _e318 = mass_4;
+    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e313), ((AIRLIGHT_PANEL_FLOOR * _e316) * _e318)));
     if !((error_4 <= accepted)) {
-        local_24 = (error_4 <= noise_1);
+        local_24 = (error_4 <= _e311);
     } else {
         local_24 = true;
     }
-    let _e348 = local_24;
-    if !(_e348) {
+    let _e328 = local_24;
+    if !(_e328) {
         return vec2<f32>(0f, 0f);
     }
     if (s_10.sigma_t > 0f) {
-        let _e359 = airlight_hypot_one(u0_);
-        x_10 = (s_10.sigma_t * (h_3 * _e359));
+        let _e339 = airlight_hypot_one(u0_);
+        x_10 = (s_10.sigma_t * (h_3 * _e339));
     }
-    let _e364 = x_10;
-    let _e365 = value_1;
-    let _e369 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e364, ((_e365 * hw_2) * 0.5f));
-    return vec2<f32>(1f, _e369);
-}
-
-fn airlight_bounded(a_10: f32) -> f32 {
-    let _e1 = airlight_hypot_one(a_10);
-    return (1f / (a_10 + _e1));
+    let _e344 = x_10;
+    let _e345 = value_1;
+    let _e349 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e344, ((_e345 * hw_2) * 0.5f));
+    return vec2<f32>(1f, _e349);
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> {
@@ -4060,8 +4052,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_1 = (v_3 / vec3(m_8));
-    return (u_1 / vec3(length(u_1)));
+    let u_2 = (v_3 / vec3(m_8));
+    return (u_2 / vec3(length(u_2)));
 }
 
 fn airlight_valid(s_15: AirlightScene) -> bool {
@@ -4717,7 +4709,7 @@ fn airlight_outer_point(s_20: AirlightScene, max_panels: u32) -> AirlightOuter {
 fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     var g_21: AirlightOuter;
     var local_102: bool;
-    var u: vec3<f32>;
+    var u_1: vec3<f32>;
     var cuts_1: array<f32, 2>;
     var k_5: u32 = 0u;
     var i_18: u32 = 0u;
@@ -4754,14 +4746,14 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
-    u = (across / vec3(_e41));
+    u_1 = (across / vec3(_e41));
     if !((_e41 > 0f)) {
         let pick = select(vec3<f32>(1f, 0f, 0f), vec3<f32>(0f, 1f, 0f), (abs(l_3.x) > 0.7f));
         let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
-        u = _e64;
+        u_1 = _e64;
     }
     g_21.l = l_3;
-    let _e67 = u;
+    let _e67 = u_1;
     g_21.u = _e67;
     g_21.cos_a = cos_a_1;
     g_21.sin_a = _e41;

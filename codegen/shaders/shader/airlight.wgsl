@@ -1177,6 +1177,12 @@ fn airlight_atan2_upper(y: f32, x: f32) -> f32 {
     return 0.5 * AIRLIGHT_PI + airlight_atan(-x / y);
 }
 
+/// Y = u + √(1 + u²) without cancellation: the halves' bounded y before the foot.
+fn airlight_angle_y(u: f32) -> f32 {
+    if (u < 0.0) { return airlight_bounded(-u); }
+    return u + airlight_hypot_one(u);
+}
+
 /// The floor of the coefficients' rate from a phase singularity at the cosine
 /// side·(1 + gap): θ = ∓π/2 ± i·acosh(1 + gap), through the Bernstein ellipse of the panel
 /// [mid − hw, mid + hw] (angle.rs `whole_segment`).
@@ -1198,13 +1204,9 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
     let u1 = (g.t_hi - g.x_h) / h;
     let u1_finite = !g.t_hi_infinite && airlight_is_finite(u1);
     let big_h = s.sigma_t * h;
-    var y0 = u0 + airlight_hypot_one(u0);
-    if (u0 < 0.0) { y0 = 1.0 / (airlight_hypot_one(u0) - u0); }
+    let y0 = airlight_angle_y(u0);
     var y1 = AIRLIGHT_FLT_MAX;
-    if (u1_finite) {
-        y1 = u1 + airlight_hypot_one(u1);
-        if (u1 < 0.0) { y1 = 1.0 / (airlight_hypot_one(u1) - u1); }
-    }
+    if (u1_finite) { y1 = airlight_angle_y(u1); }
     var y_cut = AIRLIGHT_FLT_MAX;
     if (big_h > 0.0) { y_cut = y0 + airlight_cut_length(big_h, y0); }
     let psi0 = airlight_atan2_upper(1.0, -u0);
@@ -1294,7 +1296,7 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
     var m = airlight_zero_terms();
     m[0] = 2.0;
     let error = 2.0 * airlight_tail_estimate(c) * airlight_error_factor(c, m, rate);
-    let noise = f32(4u * AIRLIGHT_TERMS) * AIRLIGHT_FLT_EPS * magnitude;
+    let noise = airlight_transform_noise(2.0, 0.5 * magnitude);
     let accepted = AIRLIGHT_PANEL_TOLERANCE * max(abs(value), AIRLIGHT_PANEL_FLOOR * f_max * mass);
     if (!(error <= accepted || error <= noise)) { return vec2<f32>(0.0, 0.0); }
     // without extinction the exponent is 0, not 0·∞ where r0 overflows
