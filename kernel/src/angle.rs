@@ -208,6 +208,7 @@ where
 
 /// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's
 /// predicted coefficient (module docs; the shaders take it from here).
+#[inline]
 pub fn inv_odd_factorial(n: usize) -> f64 {
     (1..=n).fold(1.0, |p, k| p / (2 * k + 1) as f64)
 }
