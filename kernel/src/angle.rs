@@ -156,30 +156,46 @@ where
     }
     let rate = rate.max(exponential);
 
-    // the samples, in the order `legendre` expects (−x_1, x_1, −x_2, …)
+    // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
+    // nodes' cos θ and sin θ, then their weights, then F — so that each pass's calls and
+    // divisions are independent of one another and overlap instead of waiting in turn.
+    // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), formed as a distance from the nearer pole, so cos θ
+    // keeps full relative accuracy; sin θ's sign then says which pole is nearer, and
+    // 1 ∓ sin θ, Y follow without cancellation.
+    let mut angles = [(T::zero(), T::zero()); N];
+    for (i, angle) in angles.iter_mut().enumerate() {
+        let (x, _) = rule[i / 2];
+        let x = if i % 2 == 0 { -x } else { x };
+        let lower = psi0 + hw * T::lit(1.0 + x);
+        *angle = if lower <= T::FRAC_PI_2() {
+            let (c, minus_s) = lower.sin_cos();
+            (c, -minus_s)
+        } else {
+            (psi1 + hw * T::lit(1.0 - x)).sin_cos()
+        };
+    }
+    // far = 1 + |sin θ| (the side away from the nearer pole) and near = cos²θ/far (the side
+    // that vanishes there) are 1 ± sin θ without cancellation; Y = (1 + sin θ)/cos θ =
+    // cos θ/(1 − sin θ)
+    let mut sides = [(T::zero(), T::zero(), T::zero()); N];
+    for (&(c, s), side) in angles.iter().zip(sides.iter_mut()) {
+        let far = T::one() + s.abs();
+        let near = c * c / far;
+        *side = if s > T::zero() { (far / c, far, near) } else { (c / far, near, far) };
+    }
+    let mut weights = [T::zero(); N];
+    for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
+        *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
+    }
     let mut samples = [T::zero(); N];
     let (mut value, mut mass, mut magnitude, mut f_max) = (T::zero(), T::zero(), T::zero(), T::zero());
     for (i, sample) in samples.iter_mut().enumerate() {
-        let (x, w) = rule[i / 2];
-        let x = if i % 2 == 0 { -x } else { x };
-        // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), as a distance from the nearer pole; then cos θ,
-        // Y, 1 + sin θ and 1 − sin θ without cancellation
-        let lower = psi0 + hw * T::lit(1.0 + x);
-        let (s, c, y, one_plus, one_minus) = if lower <= T::FRAC_PI_2() {
-            let (c, minus_s) = lower.sin_cos();
-            let one_minus = T::one() + minus_s;
-            (-minus_s, c, c / one_minus, c * c / one_minus, one_minus)
-        } else {
-            let (c, s) = (psi1 + hw * T::lit(1.0 - x)).sin_cos();
-            let one_plus = T::one() + s;
-            (s, c, one_plus / c, one_plus, c * c / one_plus)
-        };
-        let weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
+        let ((c, s), (_, one_plus, one_minus), weight) = (angles[i], sides[i], weights[i]);
         // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
         let f = light.eval(g.d_el * s + g.d_c * c) * phys.phase.eval_sides(-s, one_plus, one_minus);
         let gw = weight * f;
         *sample = gw;
-        let w = T::lit(w);
+        let w = T::lit(rule[i / 2].1);
         value = value + w * gw;
         mass = mass + w * weight;
         magnitude = magnitude + w * gw.abs();
