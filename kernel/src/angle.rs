@@ -50,7 +50,7 @@ use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
-use crate::panels::{bernstein_rho, error_factor, legendre, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
+use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
 use crate::phase::PhaseFunction;
 use crate::real::{hypot1, Real};
 use crate::scalar::Scalar;
@@ -165,8 +165,7 @@ where
     // 1 ∓ sin θ, Y follow without cancellation.
     let mut angles = [(T::zero(), T::zero()); N];
     for (i, angle) in angles.iter_mut().enumerate() {
-        let (x, _) = rule[i / 2];
-        let x = if i % 2 == 0 { -x } else { x };
+        let x = node_f64(rule, i);
         let lower = psi0 + hw * T::lit(1.0 + x);
         *angle = if lower <= T::FRAC_PI_2() {
             let (c, minus_s) = lower.sin_cos();

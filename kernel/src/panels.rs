@@ -285,7 +285,12 @@ pub(crate) fn legendre<T: Real, const N: usize>(g: &[T; N]) -> [T; N] {
 
 /// The nodes `ξ_j` of the rule in the order [`legendre`] expects.
 fn node<T: Real>(rule: &[(f64, f64)], i: usize) -> T {
-    let x = T::lit(rule[i / 2].0);
+    T::lit(node_f64(rule, i))
+}
+
+/// [`node`] in the table's own precision (`−x_1, x_1, −x_2, …`), for sums formed there first.
+pub(crate) fn node_f64(rule: &[(f64, f64)], i: usize) -> f64 {
+    let x = rule[i / 2].0;
     if i % 2 == 0 {
         -x
     } else {
