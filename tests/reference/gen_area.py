@@ -461,16 +461,19 @@ def run(args):
 def main():
     """`--shapes sphere,disc`: recompute only those shapes' records, keeping the others as
     area.jsonl has them (the scenes are deterministic, so a full run gives the same file)."""
+    import argparse
     import json
     import os
-    import sys
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--shapes", help="comma-separated shapes to recompute (disc,rectangle,sphere)")
+    parser.add_argument("--missing", action="store_true", help="only the records area.jsonl lacks")
+    parser.add_argument("--jobs", type=int, default=2, help="worker processes (default 2)")
+    args = parser.parse_args()
     records = scenes()
-    shapes = None
-    if "--shapes" in sys.argv:
-        shapes = set(sys.argv[sys.argv.index("--shapes") + 1].split(","))
+    shapes = set(args.shapes.split(",")) if args.shapes else None
     kept = {}
-    missing = "--missing" in sys.argv
-    jobs = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 2
+    missing = args.missing
+    jobs = args.jobs
     if missing and shapes is None:
         shapes = {r["light"]["shape"] for r in records}
     if shapes is not None:
