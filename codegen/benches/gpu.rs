@@ -24,6 +24,10 @@
 //!    copy-only shader (upload + dispatch + read-back of the same buffers, no work: the fixed
 //!    cost inside every other figure). Each timed call is [`Prepared::run`] (pipeline built
 //!    once, outside the timing; buffers created, filled and read back per call, as `Gpu::run`).
+//!    The 8-node shader is also emitted at the looser tolerances [`LOOSER_TOLERANCES`] (`airlight
+//!    emit --tolerance`) and timed beside the committed ones, as the CPU bench takes the loosest
+//!    tolerance that meets an accuracy level; and, on the aniso rays, with its ray integral cut
+//!    short ([`parts`]) to show where the time goes on the adapter.
 //! 3. A summary table (variant, method, grid point, errors, rays/s, ratio), the pipeline build
 //!    times and the SPIR-V instruction counts of the generated shaders, on stdout and in
 //!    `target/criterion/gpu_summary.md`, from criterion's median estimates.
@@ -32,7 +36,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_shaders::targets::{compute_wgsl, NODE_COUNTS};
+use airlight_shaders::targets::{compute_wgsl, render, Constants, EmitOptions, Target, NODE_COUNTS};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
@@ -43,6 +47,10 @@ use std::time::{Duration, Instant};
 
 /// Rays per timed call.
 const RAYS: usize = 65_536;
+/// The looser panel tolerances the 8-node shader is also emitted with (`airlight emit
+/// --tolerance`) and timed at, beside the committed shaders' 1e-3: as the CPU bench picks the
+/// loosest tolerance that meets an accuracy level.
+const LOOSER_TOLERANCES: [f32; 2] = [1e-2, 1e-1];
 const RAYMARCH: &str = include_str!("raymarch.wgsl");
 const GAUSS_ANGLE: &str = include_str!("gauss_angle.wgsl");
 const BASELINE_ENTRY: &str = include_str!("baseline_entry.wgsl");
@@ -57,6 +65,30 @@ const STEP_GRID: [u32; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 const SPLIT_LINE: &str = "const SPLIT: bool = true;";
 /// Gauss–Legendre nodes per part tried (every tabulated rule).
 const NODE_GRID: [u32; 11] = [4, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+/// The first lines of the ray integral's body in the generated shader (airlight.wgsl
+/// `airlight_in_scatter_canonical`), before which [`parts`] cuts it short.
+const RAY_INTEGRAL_BODY: &str = "    let t0 = g.t_lo;\n    let t1 = g.t_hi;\n";
+
+/// Where the anisotropic time goes on this adapter: the 8-node shader at the loosest emitted
+/// tolerance with its ray integral cut short — (id, what is left). Not usable shaders (the
+/// route-only one returns 0 where the route declines or fails), only timings: Mesa's lavapipe
+/// runs an `if` by masking its lanes, not by branching around it, so every ray pays for every
+/// path the shader has; these say what the same rays cost with fewer paths.
+fn parts() -> Vec<(String, &'static str, String)> {
+    let tolerance = LOOSER_TOLERANCES[LOOSER_TOLERANCES.len() - 1];
+    let full = Constants::from_kernel_with(8, tolerance).source(true);
+    assert!(full.contains(RAY_INTEGRAL_BODY), "airlight.wgsl's ray integral lost its first lines");
+    let cut = |body: &str| full.replacen(RAY_INTEGRAL_BODY, &format!("    {body}\n{RAY_INTEGRAL_BODY}"), 1);
+    vec![
+        (format!("part_machinery_tol{tolerance:e}"), "validation, record, reduction and outer loop only (the ray integral returns at once)", cut("return AirlightResult(g.h + g.x_h, AIRLIGHT_STATUS_OK);")),
+        (
+            format!("part_route_tol{tolerance:e}"),
+            "the light-angle route only (no closed forms, no panels)",
+            cut("{ let route = airlight_angle_route(s, g); return AirlightResult(route.x * route.y, select(AIRLIGHT_STATUS_INVALID, AIRLIGHT_STATUS_OK, route.x > 0.5)); }"),
+        ),
+    ]
+}
+
 /// The upload/dispatch/read-back cost alone: same bindings, writes (0, OK).
 const COPY_ONLY: &str = r#"
 struct AirlightScene { origin: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32, light_position: vec3<f32>, intensity: f32,
@@ -246,9 +278,23 @@ fn main() {
         let _ = writeln!(build_md, "| {id} | {:.0} |", t.elapsed().as_secs_f64() * 1e3);
         p
     };
-    // the generated shaders take seconds to compile on lavapipe: once for both variants
-    let generated = NODE_COUNTS.map(|terms| (terms as u32, prepare(&format!("generated_{terms}"), compute_wgsl(terms))));
+    // the generated shaders take seconds to compile on lavapipe: once for both variants. The
+    // committed ones, then the 8-node one emitted at the looser tolerances: (id, name, nodes,
+    // tolerance, pipeline)
+    let mut sources: Vec<(String, String, usize, f32, String)> = NODE_COUNTS
+        .iter()
+        .map(|&n| (format!("generated_{n}"), format!("{n} nodes"), n, airlight::SHADER_CONTROL.tolerance, compute_wgsl(n).to_string()))
+        .collect();
+    for tolerance in LOOSER_TOLERANCES {
+        let opts = EmitOptions { terms: vec![8], targets: vec![Target::Wgsl], tolerance };
+        let mut files = render(&opts).expect("the shader emits at a tolerance in range");
+        let src = String::from_utf8(files.remove("wgsl/airlight_8.wgsl").expect("the 8-node compute shader")).expect("WGSL is UTF-8");
+        sources.push((format!("generated_8_tol{tolerance:e}"), format!("8 nodes, tolerance {tolerance:e}"), 8, tolerance, src));
+    }
+    let generated: Vec<(String, String, usize, f32, Prepared<'_>)> = sources.into_iter().map(|(id, name, n, tol, src)| { let p = prepare(&id, &src); (id, name, n, tol, p) }).collect();
     let copy_only = prepare("copy_only", COPY_ONLY);
+    let parts: Vec<(String, &str, Prepared<'_>)> = parts().into_iter().map(|(id, what, src)| { let p = prepare(&id, &src); (id, what, p) }).collect();
+    let mut parts_md = String::new();
     let mut accuracy_md = String::new();
     let mut speed_md = String::new();
     let mut ratio_md = String::new();
@@ -261,25 +307,30 @@ fn main() {
         eprintln!("{variant}: f64 default-path reference for {RAYS} rays in {:.2?}", t.elapsed());
 
         // ---- accuracy, untimed
-        let gen_err: Vec<(u32, [f64; 3])> =
-            generated.iter().map(|(terms, p)| (*terms, errors(&p.run(&records, false).expect("generated shader runs"), &reference))).collect();
-        let control = airlight::SHADER_CONTROL;
-        let cpu_err = NODE_COUNTS.map(|n| (n, quantiles(cpu32.iter().map(|s| s.in_scatter_panels_with_nodes(n, control).unwrap() as f64), &reference)));
+        let gen_err: Vec<(&str, [f64; 3])> =
+            generated.iter().map(|(_, name, _, _, p)| (name.as_str(), errors(&p.run(&records, false).expect("generated shader runs"), &reference))).collect();
+        let cpu_err: Vec<(&str, [f64; 3])> = generated
+            .iter()
+            .map(|(_, name, n, tolerance, _)| {
+                let control = airlight::panels::Control { tolerance: *tolerance, ..airlight::SHADER_CONTROL };
+                (name.as_str(), quantiles(cpu32.iter().map(|s| s.in_scatter_panels_with_nodes(*n, control).unwrap() as f64), &reference))
+            })
+            .collect();
         let _ = writeln!(accuracy_md, "\n**{label}**, {RAYS} rays; relative error against the f64 CPU kernel's default path:\n");
         let _ = writeln!(accuracy_md, "| method | grid point | median | p99 | max | timed as |");
         let _ = writeln!(accuracy_md, "|---|---|---|---|---|---|");
-        for &(terms, e) in &gen_err {
-            let _ = writeln!(accuracy_md, "| generated shader, {terms} nodes per panel | — | {} | {} | {} | |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]));
+        for &(name, e) in &gen_err {
+            let _ = writeln!(accuracy_md, "| generated shader, {name} | — | {} | {} | {} | |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]));
         }
-        for &(terms, e) in &cpu_err {
-            let _ = writeln!(accuracy_md, "| (CPU kernel f32, the same method, {terms} nodes) | — | {} | {} | {} | not timed |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]));
+        for &(name, e) in &cpu_err {
+            let _ = writeln!(accuracy_md, "| (CPU kernel f32, the same method, {name}) | — | {} | {} | {} | not timed |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]));
         }
 
         let group = format!("gpu_{variant}");
         // (baseline, grid point) → why it is timed
         let mut timed: Vec<(Baseline, u32, Vec<String>)> = Vec::new();
-        // (baseline, terms, stat index, matched grid point)
-        let mut matches: Vec<(Baseline, u32, usize, Option<u32>)> = Vec::new();
+        // (baseline, generated shader's index, stat index, matched grid point)
+        let mut matches: Vec<(Baseline, usize, usize, Option<u32>)> = Vec::new();
         let mut baseline_err: Vec<(Baseline, u32, [f64; 3])> = Vec::new();
         for baseline in Baseline::ALL {
             let grid = baseline.grid();
@@ -297,14 +348,14 @@ fn main() {
                 None => timed.push((baseline, n, vec![why])),
             };
             let pick = |stat: usize, target: f64| errs.iter().find(|e| e.1[stat] <= target).map(|e| e.0);
-            for &(terms, e) in &gen_err {
+            for (i, &(name, e)) in gen_err.iter().enumerate() {
                 for (k, stat) in STATS.iter().enumerate() {
                     let m = pick(k, e[k]);
                     note(m.unwrap_or(*grid.last().unwrap()), match m {
-                        Some(_) => format!("{stat} = generated {terms}"),
-                        None => "largest tried: the generated shader is not reached".into(),
+                        Some(_) => format!("{stat} = generated, {name}"),
+                        None => "largest tried: a generated shader is not reached".into(),
                     });
-                    matches.push((baseline, terms, k, m));
+                    matches.push((baseline, i, k, m));
                 }
             }
             for target in [1e-3, 1e-5] {
@@ -328,22 +379,27 @@ fn main() {
             .warm_up_time(Duration::from_millis(500))
             .measurement_time(Duration::from_secs(3))
             .throughput(Throughput::Elements(RAYS as u64));
-        for (terms, p) in &generated {
-            g.bench_function(format!("generated_{terms}"), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
+        for (id, _, _, _, p) in &generated {
+            g.bench_function(id.as_str(), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
         }
         for (baseline, n, p) in &prepared {
             g.bench_function(format!("{}_{n}", baseline.id()), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
         }
         g.bench_function("copy_only", |b| b.iter(|| copy_only.run(&records, false).expect("GPU run")));
+        if aniso {
+            for (id, _, p) in &parts {
+                g.bench_function(id.as_str(), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
+            }
+        }
         g.finish();
 
         // ---- summary rows, from criterion's median estimates
         let rays_per_s = |id: &str| criterion_median_ns(&group, id).map(|ns| RAYS as f64 / (ns * 1e-9));
         let mr = |x: Option<f64>| x.map(|r| format!("{:.3}", r * 1e-6)).unwrap_or_else(|| "—".into());
         let ms = |x: Option<f64>| x.map(|r| format!("{:.1}", RAYS as f64 / r * 1e3)).unwrap_or_else(|| "—".into());
-        for &(terms, e) in &gen_err {
-            let r = rays_per_s(&format!("generated_{terms}"));
-            let _ = writeln!(speed_md, "| {variant} | generated shader, {terms} nodes | — | {} | {} | {} | {} | {} |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]), ms(r), mr(r));
+        for (&(name, e), (id, ..)) in gen_err.iter().zip(&generated) {
+            let r = rays_per_s(id);
+            let _ = writeln!(speed_md, "| {variant} | generated shader, {name} | — | {} | {} | {} | {} | {} |", fmt_e(e[0]), fmt_e(e[1]), fmt_e(e[2]), ms(r), mr(r));
         }
         for (baseline, n, why) in &timed {
             let e = baseline_err.iter().find(|x| x.0 == *baseline && x.1 == *n).unwrap().2;
@@ -352,9 +408,23 @@ fn main() {
         }
         let r = rays_per_s("copy_only");
         let _ = writeln!(speed_md, "| {variant} | copy only (upload + read-back, no work) | — | — | — | — | {} | {} |", ms(r), mr(r));
-        for (baseline, terms, k, matched) in matches {
+        if aniso {
+            let full = generated.last().expect("a looser-tolerance shader");
+            let r = rays_per_s(&full.0);
+            let _ = writeln!(parts_md, "| the whole shader ({}) | {} | {} | — |", full.1, ms(r), mr(r));
+            for (id, what, p) in &parts {
+                // statuses: the route-only shader marks the rays it does not take
+                let out = p.run(&records, false).expect("GPU run");
+                let taken = out.chunks(RESULT_SIZE).filter(|c| unpack_result(c).1 == STATUS_OK).count();
+                let r = rays_per_s(id);
+                let share = if id.starts_with("part_route") { format!("{:.1} %", 100.0 * taken as f64 / RAYS as f64) } else { "—".into() };
+                let _ = writeln!(parts_md, "| {what} | {} | {} | {share} |", ms(r), mr(r));
+            }
+        }
+        for (baseline, i, k, matched) in matches {
             let largest = *baseline.grid().last().unwrap();
-            let ratio = match (rays_per_s(&format!("generated_{terms}")), rays_per_s(&format!("{}_{}", baseline.id(), matched.unwrap_or(largest)))) {
+            let (id, name, ..) = &generated[i];
+            let ratio = match (rays_per_s(id), rays_per_s(&format!("{}_{}", baseline.id(), matched.unwrap_or(largest)))) {
                 (Some(a), Some(b)) => format!("{:.2}×", a / b),
                 _ => "—".into(),
             };
@@ -362,7 +432,7 @@ fn main() {
                 Some(n) => n.to_string(),
                 None => format!("not reached by {largest} (timed {largest}: ratio is a lower bound)"),
             };
-            let _ = writeln!(ratio_md, "| {variant} | {terms} | {} | {} | {point} | {ratio} |", STATS[k], baseline.name());
+            let _ = writeln!(ratio_md, "| {variant} | {name} | {} | {} | {point} | {ratio} |", STATS[k], baseline.name());
         }
     }
     c.final_summary();
@@ -378,9 +448,12 @@ fn main() {
     md.push_str(&speed_md);
     let _ = writeln!(md, "\n### Ratio at equal accuracy: generated rays/s ÷ baseline rays/s (> 1: the generated shader is faster)\n");
     let _ = writeln!(md, "The baseline's grid point is the smallest whose error statistic is ≤ the generated shader's.\n");
-    let _ = writeln!(md, "| variant | nodes | matched on | baseline | grid point | ratio |");
+    let _ = writeln!(md, "| variant | generated shader | matched on | baseline | grid point | ratio |");
     let _ = writeln!(md, "|---|---|---|---|---|---|");
     md.push_str(&ratio_md);
+    let _ = writeln!(md, "\n### Where the time goes (aniso, the 8-node shader at tolerance {:e}, parts cut out; not usable shaders)\n", LOOSER_TOLERANCES[LOOSER_TOLERANCES.len() - 1]);
+    let _ = writeln!(md, "| shader | ms / call | Mrays/s | rays the route takes |\n|---|---|---|---|");
+    md.push_str(&parts_md);
     let _ = writeln!(md, "\nPipeline build (shader compilation by the driver), once per shader, outside the timing:\n\n| shader | ms |\n|---|---|");
     md.push_str(&build_md);
     let counts: Vec<String> = NODE_COUNTS.iter().map(|&t| spirv_instructions(t as u32).map(|n| format!("{t} nodes: {n}")).unwrap_or_else(|| format!("{t} nodes: spirv-dis not found"))).collect();

@@ -151,6 +151,10 @@ struct EmitArgs {
     /// Target languages, a comma list (wgsl, glsl, spirv, hlsl, msl) [default: all].
     #[arg(long, value_delimiter = ',')]
     targets: Vec<String>,
+    /// The panels' relative tolerance, 1e-5 to 1e-1 [default: 1e-3, as shaders-out/]; looser
+    /// is faster and less accurate (BENCHMARKS.md, GPU).
+    #[arg(long)]
+    tolerance: Option<f32>,
 }
 
 #[derive(clap::Args)]
@@ -256,6 +260,9 @@ fn cmd_eval(a: EvalArgs) -> ExitCode {
 
 fn cmd_emit(a: EmitArgs, check_only: bool) -> ExitCode {
     let mut opts = EmitOptions { terms: a.terms.iter().map(|t| t.count()).collect(), ..EmitOptions::default() };
+    if let Some(tolerance) = a.tolerance {
+        opts.tolerance = tolerance;
+    }
     if !a.targets.is_empty() {
         match a.targets.iter().map(|t| Target::parse(t)).collect::<Result<Vec<_>, _>>() {
             Ok(t) => opts.targets = t,
