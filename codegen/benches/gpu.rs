@@ -26,8 +26,11 @@
 //!    once, outside the timing; buffers created, filled and read back per call, as `Gpu::run`).
 //!    The 8-node shader is also emitted at the looser tolerances [`LOOSER_TOLERANCES`] (`airlight
 //!    emit --tolerance`) and timed beside the committed ones, as the CPU bench takes the loosest
-//!    tolerance that meets an accuracy level; and, on the aniso rays, with its ray integral cut
-//!    short ([`parts`]) to show where the time goes on the adapter.
+//!    tolerance that meets an accuracy level; at each tolerance also through the include
+//!    library's point-light entry `airlight_in_scatter_point` (`point_compute_entry`: the ray
+//!    integral without the emitter and surface loop, for shaders whose lights are all points);
+//!    and, on the aniso rays, with its ray integral cut short ([`parts`]) to show where the time
+//!    goes on the adapter.
 //! 3. A summary table (variant, method, grid point, errors, rays/s, ratio), the pipeline build
 //!    times and the SPIR-V instruction counts of the generated shaders, on stdout and in
 //!    `target/criterion/gpu_summary.md`, from criterion's median estimates.
@@ -36,7 +39,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_shaders::targets::{compute_wgsl, render, Constants, EmitOptions, Target, NODE_COUNTS};
+use airlight_shaders::targets::{compute_wgsl, point_compute_entry, render, Constants, EmitOptions, Target, NODE_COUNTS};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
@@ -285,11 +288,16 @@ fn main() {
         .iter()
         .map(|&n| (format!("generated_{n}"), format!("{n} nodes"), n, airlight::SHADER_CONTROL.tolerance, compute_wgsl(n).to_string()))
         .collect();
+    // the point-light entry: the include library with `point_compute_entry`
+    let point_entry = point_compute_entry();
+    sources.push(("generated_8_point".into(), "8 nodes, point entry".into(), 8, airlight::SHADER_CONTROL.tolerance, format!("{LIBRARY}\n{point_entry}")));
     for tolerance in LOOSER_TOLERANCES {
         let opts = EmitOptions { terms: vec![8], targets: vec![Target::Wgsl], tolerance };
         let mut files = render(&opts).expect("the shader emits at a tolerance in range");
-        let src = String::from_utf8(files.remove("wgsl/airlight_8.wgsl").expect("the 8-node compute shader")).expect("WGSL is UTF-8");
+        let mut take = |name: &str| String::from_utf8(files.remove(name).expect("an emitted 8-node WGSL file")).expect("WGSL is UTF-8");
+        let (src, library) = (take("wgsl/airlight_8.wgsl"), take("wgsl/airlight_lib_8.wgsl"));
         sources.push((format!("generated_8_tol{tolerance:e}"), format!("8 nodes, tolerance {tolerance:e}"), 8, tolerance, src));
+        sources.push((format!("generated_8_point_tol{tolerance:e}"), format!("8 nodes, point entry, tolerance {tolerance:e}"), 8, tolerance, format!("{library}\n{point_entry}")));
     }
     let generated: Vec<(String, String, usize, f32, Prepared<'_>)> = sources.into_iter().map(|(id, name, n, tol, src)| { let p = prepare(&id, &src); (id, name, n, tol, p) }).collect();
     let copy_only = prepare("copy_only", COPY_ONLY);
@@ -409,7 +417,8 @@ fn main() {
         let r = rays_per_s("copy_only");
         let _ = writeln!(speed_md, "| {variant} | copy only (upload + read-back, no work) | — | — | — | — | {} | {} |", ms(r), mr(r));
         if aniso {
-            let full = generated.last().expect("a looser-tolerance shader");
+            let loosest = format!("generated_8_tol{:e}", LOOSER_TOLERANCES[LOOSER_TOLERANCES.len() - 1]);
+            let full = generated.iter().find(|g| g.0 == loosest).expect("the loosest-tolerance shader");
             let r = rays_per_s(&full.0);
             let _ = writeln!(parts_md, "| the whole shader ({}) | {} | {} | — |", full.1, ms(r), mr(r));
             for (id, what, p) in &parts {

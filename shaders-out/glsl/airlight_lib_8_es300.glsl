@@ -282,8 +282,8 @@ vec2 airlight_csqrt(vec2 z_1) {
 vec2 airlight_cos_sin(float x) {
     float z_9 = (x * x);
     float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_25 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return vec2(c_7, (s_25 * x));
+    float s_26 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return vec2(c_7, (s_26 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -332,8 +332,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_26 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_26 * s_26);
+    float s_27 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_27 * s_27);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
@@ -353,7 +353,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_26) * _e35);
+    return ((2.0 * s_27) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -4734,7 +4734,43 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
     return AirlightNode(_e122, 1.0);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_24) {
+AirlightResult airlight_in_scatter_point(AirlightScene s_24) {
+    bool local_121 = false;
+    bool local_122 = false;
+    bool local_123 = false;
+    bool _e1 = airlight_valid(s_24);
+    if (!(!(_e1))) {
+        local_121 = (s_24.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_121 = true;
+    }
+    bool _e10 = local_121;
+    if (!(_e10)) {
+        local_122 = (s_24.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_122 = true;
+    }
+    bool _e18 = local_122;
+    if (_e18) {
+        return AirlightResult(0.0, 1u);
+    }
+    AirlightCanonical _e22 = airlight_canonical(s_24);
+    AirlightCanonical _e23 = airlight_refined(s_24, _e22);
+    AirlightResult _e24 = airlight_in_scatter_canonical(s_24, _e23);
+    bool _e26 = airlight_is_finite(_e24.in_scatter);
+    if (!(!(_e26))) {
+        local_123 = (_e24.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_123 = true;
+    }
+    bool _e35 = local_123;
+    if (_e35) {
+        return AirlightResult(3.4028235e38, 2u);
+    }
+    return _e24;
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_25) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -4747,22 +4783,22 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
     float k_6 = 0.0;
     float gauss = 0.0;
     uint j_3 = 0u;
-    bool local_121 = false;
+    bool local_124 = false;
     float f = 0.0;
     AirlightResult r_5 = AirlightResult(0.0, 0u);
-    bool local_122 = false;
-    bool local_123 = false;
-    bool local_124 = false;
-    bool split = false;
-    uint tries = 0u;
     bool local_125 = false;
     bool local_126 = false;
     bool local_127 = false;
-    bool _e1 = airlight_valid(s_24);
+    bool split = false;
+    uint tries = 0u;
+    bool local_128 = false;
+    bool local_129 = false;
+    bool local_130 = false;
+    bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e6 = airlight_outer(s_24);
+    AirlightOuter _e6 = airlight_outer(s_25);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -4813,13 +4849,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                     uint _e89 = j_3;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_3;
-                        local_121 = (_e96 < 6u);
+                        local_124 = (_e96 < 6u);
                     } else {
-                        local_121 = false;
+                        local_124 = false;
                     }
-                    bool _e100 = local_121;
+                    bool _e100 = local_124;
                     float w_6 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
-                    AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_6);
+                    AirlightNode _e102 = airlight_outer_node(s_25, _e6, w_6);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -4827,11 +4863,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_122 = _e118;
+                            local_125 = _e118;
                         } else {
-                            local_122 = false;
+                            local_125 = false;
                         }
-                        bool _e120 = local_122;
+                        bool _e120 = local_125;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -4842,20 +4878,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_126 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_123 = true;
+                            local_126 = true;
                         }
-                        bool _e136 = local_123;
+                        bool _e136 = local_126;
                         if (_e136) {
                             return AirlightResult(3.4028235e38, 2u);
                         }
-                        if ((s_24.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_124 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_127 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_124 = false;
+                            local_127 = false;
                         }
-                        bool _e149 = local_124;
+                        bool _e149 = local_127;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -4925,18 +4961,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_125 = (_e223 == _e6.max_panels);
+                                local_128 = (_e223 == _e6.max_panels);
                             } else {
-                                local_125 = true;
+                                local_128 = true;
                             }
-                            bool _e227 = local_125;
+                            bool _e227 = local_128;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                                local_129 = !(_e231);
                             } else {
-                                local_126 = true;
+                                local_129 = true;
                             }
-                            bool _e234 = local_126;
+                            bool _e234 = local_129;
                             if (_e234) {
                                 break;
                             }
@@ -4946,11 +4982,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24) {
                             float wb_1 = _e236.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_127 = (mid_3 < wb_1);
+                                local_130 = (mid_3 < wb_1);
                             } else {
-                                local_127 = false;
+                                local_130 = false;
                             }
-                            bool _e247 = local_127;
+                            bool _e247 = local_130;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e236.xyz, 0.0));
                                 continue;

@@ -430,8 +430,8 @@ float2 airlight_cos_sin(float x)
 {
     float z_9 = (x * x);
     float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_25 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return float2(c_7, (s_25 * x));
+    float s_26 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return float2(c_7, (s_26 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -487,8 +487,8 @@ float airlight_log1p(float x_2)
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_26 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_26 * s_26);
+    float s_27 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_27 * s_27);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
@@ -511,7 +511,7 @@ float airlight_log1p(float x_2)
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_26) * _e35);
+    return ((2.0 * s_27) * _e35);
 }
 
 bool airlight_is_finite(float x_3)
@@ -5743,6 +5743,47 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
     return airlightnode_4;
 }
 
+AirlightResult airlight_in_scatter_point(AirlightScene s_24)
+{
+    bool local_121 = (bool)0;
+    bool local_122 = (bool)0;
+    bool local_123 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_24);
+    if (!(!(_e1))) {
+        local_121 = (s_24.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_121 = true;
+    }
+    bool _e10 = local_121;
+    if (!(_e10)) {
+        local_122 = (s_24.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_122 = true;
+    }
+    bool _e18 = local_122;
+    if (_e18) {
+        const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_6;
+    }
+    const AirlightCanonical _e22 = airlight_canonical(s_24);
+    const AirlightCanonical _e23 = airlight_refined(s_24, _e22);
+    const AirlightResult _e24 = airlight_in_scatter_canonical(s_24, _e23);
+    const bool _e26 = airlight_is_finite(_e24.in_scatter);
+    if (!(!(_e26))) {
+        local_123 = (_e24.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_123 = true;
+    }
+    bool _e35 = local_123;
+    if (_e35) {
+        const AirlightResult airlightresult_7 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_7;
+    }
+    const AirlightResult airlightresult_8 = _e24;
+    return airlightresult_8;
+}
+
 AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5) {
     AirlightPanelList ret = (AirlightPanelList)0;
     ret.panel_a = arg0;
@@ -5754,7 +5795,7 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
     return ret;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_24)
+AirlightResult airlight_in_scatter(AirlightScene s_25)
 {
     AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     uint count_2 = 0u;
@@ -5768,31 +5809,31 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
     float k_6 = (float)0;
     float gauss = (float)0;
     uint j_3 = (uint)0;
-    bool local_121 = (bool)0;
+    bool local_124 = (bool)0;
     float f = (float)0;
     AirlightResult r_5 = (AirlightResult)0;
-    bool local_122 = (bool)0;
-    bool local_123 = (bool)0;
-    bool local_124 = (bool)0;
-    bool split = (bool)0;
-    uint tries = (uint)0;
     bool local_125 = (bool)0;
     bool local_126 = (bool)0;
     bool local_127 = (bool)0;
+    bool split = (bool)0;
+    uint tries = (uint)0;
+    bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
+    bool local_130 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_24);
+    const bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
-        const AirlightResult airlightresult_6 = ConstructAirlightResult(0.0, 1u);
-        return airlightresult_6;
+        const AirlightResult airlightresult_9 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_9;
     }
-    const AirlightOuter _e6 = airlight_outer(s_24);
+    const AirlightOuter _e6 = airlight_outer(s_25);
     if ((_e6.outcome == 1u)) {
-        const AirlightResult airlightresult_7 = ConstructAirlightResult(0.0, 0u);
-        return airlightresult_7;
+        const AirlightResult airlightresult_10 = ConstructAirlightResult(0.0, 0u);
+        return airlightresult_10;
     }
     if ((_e6.outcome == 2u)) {
-        const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_8;
+        const AirlightResult airlightresult_11 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_11;
     }
     const float3 _e19[4] = airlight_kronrod_rule();
     a_16 = _e6.edges[0];
@@ -5844,13 +5885,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                     uint _e89 = j_3;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_3;
-                        local_121 = (_e96 < 6u);
+                        local_124 = (_e96 < 6u);
                     } else {
-                        local_121 = false;
+                        local_124 = false;
                     }
-                    bool _e100 = local_121;
+                    bool _e100 = local_124;
                     float w_6 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
-                    const AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_6);
+                    const AirlightNode _e102 = airlight_outer_node(s_25, _e6, w_6);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightScene p_1 = _e102.scene;
@@ -5858,11 +5899,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                         const bool _e114 = airlight_vec_finite(p_1.light_position);
                         if (_e114) {
                             const bool _e118 = airlight_vec_finite(p_1.dir);
-                            local_122 = _e118;
+                            local_125 = _e118;
                         } else {
-                            local_122 = false;
+                            local_125 = false;
                         }
-                        bool _e120 = local_122;
+                        bool _e120 = local_125;
                         if (_e120) {
                             const AirlightCanonical _e121 = airlight_canonical(p_1);
                             const AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -5873,25 +5914,25 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                         const bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_126 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_123 = true;
+                            local_126 = true;
                         }
-                        bool _e136 = local_123;
+                        bool _e136 = local_126;
                         if (_e136) {
-                            const AirlightResult airlightresult_9 = ConstructAirlightResult(3.4028235e38, 2u);
-                            return airlightresult_9;
+                            const AirlightResult airlightresult_12 = ConstructAirlightResult(3.4028235e38, 2u);
+                            return airlightresult_12;
                         }
-                        if ((s_24.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_124 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_127 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_124 = false;
+                            local_127 = false;
                         }
-                        bool _e149 = local_124;
+                        bool _e149 = local_127;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
-                            const AirlightResult airlightresult_10 = _e150;
-                            return airlightresult_10;
+                            const AirlightResult airlightresult_13 = _e150;
+                            return airlightresult_13;
                         }
                         float _e152 = r_5.in_scatter;
                         f = (_e152 * _e102.weight);
@@ -5961,18 +6002,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_125 = (_e223 == _e6.max_panels);
+                                local_128 = (_e223 == _e6.max_panels);
                             } else {
-                                local_125 = true;
+                                local_128 = true;
                             }
-                            bool _e227 = local_125;
+                            bool _e227 = local_128;
                             if (!(_e227)) {
                                 const bool _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                                local_129 = !(_e231);
                             } else {
-                                local_126 = true;
+                                local_129 = true;
                             }
-                            bool _e234 = local_126;
+                            bool _e234 = local_129;
                             if (_e234) {
                                 break;
                             }
@@ -5982,11 +6023,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
                             float wb_1 = _e236.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_127 = (mid_3 < wb_1);
+                                local_130 = (mid_3 < wb_1);
                             } else {
-                                local_127 = false;
+                                local_130 = false;
                             }
-                            bool _e247 = local_127;
+                            bool _e247 = local_130;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, float4(_e236.xyz, 0.0));
                                 continue;
@@ -6015,10 +6056,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_24)
     float total_5 = _e264.total;
     const bool _e266 = airlight_is_finite(total_5);
     if (!(_e266)) {
-        const AirlightResult airlightresult_11 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_11;
+        const AirlightResult airlightresult_14 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_14;
     }
-    const AirlightResult airlightresult_12 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
-    return airlightresult_12;
+    const AirlightResult airlightresult_15 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_15;
 }
 #endif // AIRLIGHT_LIB_12

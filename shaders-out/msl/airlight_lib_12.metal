@@ -399,8 +399,8 @@ metal::float2 airlight_cos_sin(
 ) {
     float z_9 = x * x;
     float c_7 = 1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (0.000024801588 + (z_9 * (-0.0000002755732 + (z_9 * (0.0000000020876756 + (z_9 * (-0.000000000011470745 + (z_9 * 0.000000000000047794773)))))))))))))));
-    float s_25 = 1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (0.0000027557319 + (z_9 * (-0.000000025052108 + (z_9 * (0.00000000016059044 + (z_9 * (-0.00000000000076471636 + (z_9 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_7, s_25 * x);
+    float s_26 = 1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (0.0000027557319 + (z_9 * (-0.000000025052108 + (z_9 * (0.00000000016059044 + (z_9 * (-0.00000000000076471636 + (z_9 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_7, s_26 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -457,8 +457,8 @@ float airlight_log1p(
     if (x_2 > 1.0) {
         return metal::log(1.0 + x_2);
     }
-    float s_26 = x_2 / (2.0 + x_2);
-    float s2_ = s_26 * s_26;
+    float s_27 = x_2 / (2.0 + x_2);
+    float s2_ = s_27 * s_27;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
@@ -481,7 +481,7 @@ float airlight_log1p(
         }
     }
     float _e35 = sum;
-    return (2.0 * s_26) * _e35;
+    return (2.0 * s_27) * _e35;
 }
 
 bool airlight_is_finite(
@@ -5713,8 +5713,46 @@ AirlightNode airlight_outer_node(
     return AirlightNode {_e122, 1.0};
 }
 
-AirlightResult airlight_in_scatter(
+AirlightResult airlight_in_scatter_point(
     AirlightScene s_24
+) {
+    bool local_121 = {};
+    bool local_122 = {};
+    bool local_123 = {};
+    bool _e1 = airlight_valid(s_24);
+    if (!(!(_e1))) {
+        local_121 = s_24.light_shape != AIRLIGHT_SHAPE_POINT;
+    } else {
+        local_121 = true;
+    }
+    bool _e10 = local_121;
+    if (!(_e10)) {
+        local_122 = s_24.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_122 = true;
+    }
+    bool _e18 = local_122;
+    if (_e18) {
+        return AirlightResult {0.0, 1u};
+    }
+    AirlightCanonical _e22 = airlight_canonical(s_24);
+    AirlightCanonical _e23 = airlight_refined(s_24, _e22);
+    AirlightResult _e24 = airlight_in_scatter_canonical(s_24, _e23);
+    bool _e26 = airlight_is_finite(_e24.in_scatter);
+    if (!(!(_e26))) {
+        local_123 = _e24.status == AIRLIGHT_STATUS_INFINITE;
+    } else {
+        local_123 = true;
+    }
+    bool _e35 = local_123;
+    if (_e35) {
+        return AirlightResult {340282350000000000000000000000000000000.0, 2u};
+    }
+    return _e24;
+}
+
+AirlightResult airlight_in_scatter(
+    AirlightScene s_25
 ) {
     AirlightPanelList list_1 = AirlightPanelList {metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)};
     uint count_2 = 0u;
@@ -5728,22 +5766,22 @@ AirlightResult airlight_in_scatter(
     float k_6 = {};
     float gauss = {};
     uint j_3 = {};
-    bool local_121 = {};
+    bool local_124 = {};
     float f = {};
     AirlightResult r_5 = {};
-    bool local_122 = {};
-    bool local_123 = {};
-    bool local_124 = {};
-    bool split = {};
-    uint tries = {};
     bool local_125 = {};
     bool local_126 = {};
     bool local_127 = {};
-    bool _e1 = airlight_valid(s_24);
+    bool split = {};
+    uint tries = {};
+    bool local_128 = {};
+    bool local_129 = {};
+    bool local_130 = {};
+    bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e6 = airlight_outer(s_24);
+    AirlightOuter _e6 = airlight_outer(s_25);
     if (_e6.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -5800,13 +5838,13 @@ AirlightResult airlight_in_scatter(
                     uint _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
                         uint _e96 = j_3;
-                        local_121 = _e96 < 6u;
+                        local_124 = _e96 < 6u;
                     } else {
-                        local_121 = false;
+                        local_124 = false;
                     }
-                    bool _e100 = local_121;
+                    bool _e100 = local_124;
                     float w_6 = _e100 ? (c_14 - (hw_3 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_14 + (hw_3 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
-                    AirlightNode _e102 = airlight_outer_node(s_24, _e6, w_6);
+                    AirlightNode _e102 = airlight_outer_node(s_25, _e6, w_6);
                     f = 0.0;
                     if (_e102.weight != 0.0) {
                         AirlightScene p_1 = _e102.scene;
@@ -5814,11 +5852,11 @@ AirlightResult airlight_in_scatter(
                         bool _e114 = airlight_vec_finite(_e102.scene.light_position);
                         if (_e114) {
                             bool _e118 = airlight_vec_finite(_e102.scene.dir);
-                            local_122 = _e118;
+                            local_125 = _e118;
                         } else {
-                            local_122 = false;
+                            local_125 = false;
                         }
-                        bool _e120 = local_122;
+                        bool _e120 = local_125;
                         if (_e120) {
                             AirlightCanonical _e121 = airlight_canonical(p_1);
                             AirlightCanonical _e122 = airlight_refined(p_1, _e121);
@@ -5829,20 +5867,20 @@ AirlightResult airlight_in_scatter(
                         bool _e126 = airlight_is_finite(_e125);
                         if (!(!(_e126))) {
                             uint _e132 = r_5.status;
-                            local_123 = _e132 == AIRLIGHT_STATUS_INFINITE;
+                            local_126 = _e132 == AIRLIGHT_STATUS_INFINITE;
                         } else {
-                            local_123 = true;
+                            local_126 = true;
                         }
-                        bool _e136 = local_123;
+                        bool _e136 = local_126;
                         if (_e136) {
                             return AirlightResult {340282350000000000000000000000000000000.0, 2u};
                         }
-                        if (s_24.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_124 = s_24.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_127 = s_25.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_124 = false;
+                            local_127 = false;
                         }
-                        bool _e149 = local_124;
+                        bool _e149 = local_127;
                         if (_e149) {
                             AirlightResult _e150 = r_5;
                             return _e150;
@@ -5915,18 +5953,18 @@ AirlightResult airlight_in_scatter(
                             uint worst_1 = _e212.worst;
                             if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
                                 uint _e223 = count_2;
-                                local_125 = _e223 == _e6.max_panels;
+                                local_128 = _e223 == _e6.max_panels;
                             } else {
-                                local_125 = true;
+                                local_128 = true;
                             }
-                            bool _e227 = local_125;
+                            bool _e227 = local_128;
                             if (!(_e227)) {
                                 bool _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                                local_129 = !(_e231);
                             } else {
-                                local_126 = true;
+                                local_129 = true;
                             }
-                            bool _e234 = local_126;
+                            bool _e234 = local_129;
                             if (_e234) {
                                 break;
                             }
@@ -5936,11 +5974,11 @@ AirlightResult airlight_in_scatter(
                             float wb_1 = _e236.y;
                             float mid_3 = 0.5 * (wa_1 + wb_1);
                             if (mid_3 > wa_1) {
-                                local_127 = mid_3 < wb_1;
+                                local_130 = mid_3 < wb_1;
                             } else {
-                                local_127 = false;
+                                local_130 = false;
                             }
-                            bool _e247 = local_127;
+                            bool _e247 = local_130;
                             if (!(_e247)) {
                                 airlight_list_set(list_1, worst_1, metal::float4(_e236.xyz, 0.0));
                                 continue;

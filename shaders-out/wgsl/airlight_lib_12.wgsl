@@ -295,8 +295,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_9 = (x * x);
     let c_7 = (1f + (z_9 * (-0.5f + (z_9 * (0.041666668f + (z_9 * (-0.0013888889f + (z_9 * (0.000024801588f + (z_9 * (-0.0000002755732f + (z_9 * (0.0000000020876756f + (z_9 * (-0.000000000011470745f + (z_9 * 0.000000000000047794773f))))))))))))))));
-    let s_25 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_7, (s_25 * x));
+    let s_26 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_7, (s_26 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -348,8 +348,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_26 = (x_2 / (2f + x_2));
-    let s2_ = (s_26 * s_26);
+    let s_27 = (x_2 / (2f + x_2));
+    let s2_ = (s_27 * s_27);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -367,7 +367,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_26) * _e35);
+    return ((2f * s_27) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -5170,7 +5170,44 @@ fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_17: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_point(s_24: AirlightScene) -> AirlightResult {
+    var local_121: bool;
+    var local_122: bool;
+    var local_123: bool;
+
+    let _e1 = airlight_valid(s_24);
+    if !(!(_e1)) {
+        local_121 = (s_24.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_121 = true;
+    }
+    let _e10 = local_121;
+    if !(_e10) {
+        local_122 = (s_24.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_122 = true;
+    }
+    let _e18 = local_122;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_24);
+    let _e23 = airlight_refined(s_24, _e22);
+    let _e24 = airlight_in_scatter_canonical(s_24, _e23);
+    let _e26 = airlight_is_finite(_e24.in_scatter);
+    if !(!(_e26)) {
+        local_123 = (_e24.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_123 = true;
+    }
+    let _e35 = local_123;
+    if _e35 {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    return _e24;
+}
+
+fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -5183,23 +5220,23 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
     var k_6: f32;
     var gauss: f32;
     var j_3: u32;
-    var local_121: bool;
+    var local_124: bool;
     var f: f32;
     var r_5: AirlightResult;
-    var local_122: bool;
-    var local_123: bool;
-    var local_124: bool;
-    var split: bool;
-    var tries: u32;
     var local_125: bool;
     var local_126: bool;
     var local_127: bool;
+    var split: bool;
+    var tries: u32;
+    var local_128: bool;
+    var local_129: bool;
+    var local_130: bool;
 
-    let _e1 = airlight_valid(s_24);
+    let _e1 = airlight_valid(s_25);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_24);
+    let _e6 = airlight_outer(s_25);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -5238,13 +5275,13 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                     let _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_3;
-                        local_121 = (_e96 < 6u);
+                        local_124 = (_e96 < 6u);
                     } else {
-                        local_121 = false;
+                        local_124 = false;
                     }
-                    let _e100 = local_121;
+                    let _e100 = local_124;
                     let w_6 = select((c_14 + (hw_3 * node.x)), (c_14 - (hw_3 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_24, _e6, w_6);
+                    let _e102 = airlight_outer_node(s_25, _e6, w_6);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let p_1 = _e102.scene;
@@ -5252,11 +5289,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e114 = airlight_vec_finite(p_1.light_position);
                         if _e114 {
                             let _e118 = airlight_vec_finite(p_1.dir);
-                            local_122 = _e118;
+                            local_125 = _e118;
                         } else {
-                            local_122 = false;
+                            local_125 = false;
                         }
-                        let _e120 = local_122;
+                        let _e120 = local_125;
                         if _e120 {
                             let _e121 = airlight_canonical(p_1);
                             let _e122 = airlight_refined(p_1, _e121);
@@ -5267,20 +5304,20 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                         let _e126 = airlight_is_finite(_e125);
                         if !(!(_e126)) {
                             let _e132 = r_5.status;
-                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
+                            local_126 = (_e132 == AIRLIGHT_STATUS_INFINITE);
                         } else {
-                            local_123 = true;
+                            local_126 = true;
                         }
-                        let _e136 = local_123;
+                        let _e136 = local_126;
                         if _e136 {
                             return AirlightResult(340282350000000000000000000000000000000f, 2u);
                         }
-                        if (s_24.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_124 = (s_24.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_127 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_124 = false;
+                            local_127 = false;
                         }
-                        let _e149 = local_124;
+                        let _e149 = local_127;
                         if _e149 {
                             let _e150 = r_5;
                             return _e150;
@@ -5348,18 +5385,18 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let worst_1 = _e212.worst;
                             if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e223 = count_2;
-                                local_125 = (_e223 == _e6.max_panels);
+                                local_128 = (_e223 == _e6.max_panels);
                             } else {
-                                local_125 = true;
+                                local_128 = true;
                             }
-                            let _e227 = local_125;
+                            let _e227 = local_128;
                             if !(_e227) {
                                 let _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                                local_129 = !(_e231);
                             } else {
-                                local_126 = true;
+                                local_129 = true;
                             }
-                            let _e234 = local_126;
+                            let _e234 = local_129;
                             if _e234 {
                                 break;
                             }
@@ -5369,11 +5406,11 @@ fn airlight_in_scatter(s_24: AirlightScene) -> AirlightResult {
                             let wb_1 = _e236.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
-                                local_127 = (mid_3 < wb_1);
+                                local_130 = (mid_3 < wb_1);
                             } else {
-                                local_127 = false;
+                                local_130 = false;
                             }
-                            let _e247 = local_127;
+                            let _e247 = local_130;
                             if !(_e247) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
                                 continue;

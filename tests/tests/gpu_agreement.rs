@@ -24,7 +24,7 @@ use airlight_shaders::gpu::{Gpu, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
 use airlight::record::SceneRecord;
 use airlight_codegen::scene_json::parse_value;
-use airlight_shaders::targets::{default_out_dir, NODE_COUNTS};
+use airlight_shaders::targets::{default_out_dir, point_compute_entry, NODE_COUNTS};
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
@@ -512,4 +512,44 @@ fn street_renders_through_the_shader() {
     let stats = render::error_stats(&errors);
     println!("street through the shader: relative error max {:.2e}, median {:.2e}", stats.max, stats.median);
     assert!(stats.max <= 1e-3, "street: shader pixel {:.3e} off the reference", stats.max);
+}
+
+/// The include library's `airlight_in_scatter_point` (WGSL, 8 and 12 nodes) meets the point
+/// light's criterion on the records of `every_artifact_agrees_with_the_cpu_kernel` (random
+/// scenes, extremes, invalid records, the mpmath references), and answers a valid segment light
+/// or surface point with INVALID: it is the ray integral alone, not `airlight_in_scatter`.
+#[test]
+fn the_point_entry_agrees_with_the_cpu_kernel() {
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    use airlight_shaders::layout::{pack_segment, pack_surface};
+    let Some(gpu) = gpu() else { return };
+    let segment = reference_lines("extended.jsonl")
+        .iter()
+        .find_map(|v| match parse_any_value::<f32>(v) {
+            Ok(AnyRecord::Segment(s)) => Some(pack_segment(&s)),
+            _ => None,
+        })
+        .expect("a segment light in extended.jsonl");
+    let surface = reference_lines("surface.jsonl")
+        .iter()
+        .find_map(|v| match parse_any_value::<f32>(v) {
+            Ok(AnyRecord::Surface(s)) => pack_surface(&s),
+            _ => None,
+        })
+        .expect("a Lambertian surface point in surface.jsonl");
+    for terms in NODE_COUNTS {
+        let library = std::fs::read_to_string(default_out_dir().join(format!("wgsl/airlight_lib_{terms}.wgsl"))).unwrap();
+        let shader = gpu.prepare(Shader::Wgsl(&format!("{library}\n{}", point_compute_entry())));
+        let c = case(terms);
+        compare(&format!("wgsl airlight_in_scatter_point/{terms}"), &c, &shader.run(&c.records, false).unwrap());
+        let mut others = segment.to_vec();
+        others.extend_from_slice(&surface);
+        let general = gpu.run(Shader::Wgsl(&std::fs::read_to_string(default_out_dir().join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap()), &others, false).unwrap();
+        let point = shader.run(&others, false).unwrap();
+        for (k, what) in ["segment light", "surface point"].iter().enumerate() {
+            let (v, status) = unpack_result(&general[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);
+            assert!(status == airlight_shaders::layout::STATUS_OK && v > 0.0, "{terms} nodes: airlight_in_scatter on the {what}: ({v}, {status})");
+            assert_eq!(unpack_result(&point[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]), (0.0, STATUS_INVALID), "{terms} nodes: airlight_in_scatter_point on the {what}");
+        }
+    }
 }

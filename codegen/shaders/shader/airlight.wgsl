@@ -2101,6 +2101,23 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
     return AirlightNode(p, 1.0);
 }
 
+/// In-scattered radiance L_m of a point light without a surface (scene.rs `Scene::in_scatter`):
+/// the ray integral alone, without the emitter and hemisphere loop `airlight_in_scatter` wraps
+/// round every scene. The same value and status as `airlight_in_scatter` on such a scene; any
+/// other scene (a segment light, a surface point) gives (0, INVALID). For shaders whose lights
+/// are all points: a driver that masks branches instead of taking them (Mesa's lavapipe) runs
+/// the loop's code for every ray (docs/DESIGN.md §4.1).
+fn airlight_in_scatter_point(s: AirlightScene) -> AirlightResult {
+    if (!airlight_valid(s) || s.light_shape != AIRLIGHT_SHAPE_POINT || s.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
+    }
+    let r = airlight_in_scatter_canonical(s, airlight_refined(s, airlight_canonical(s)));
+    if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
+        return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+    }
+    return r;
+}
+
 /// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library;
 /// for a surface scene (airlight_lambert_surface), the surface radiance from air-light.
 /// Invalid scenes give (0, INVALID); a light on the segment gives (FLT_MAX, INFINITE).

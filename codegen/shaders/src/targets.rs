@@ -26,12 +26,15 @@ const COMPUTE: &str = include_str!("../shader/compute.wgsl");
 const LIBRARY_ENTRY: &str = "airlight_library_entry";
 const COMPUTE_ENTRY: &str = "airlight_main";
 
-/// A dummy entry point that keeps every library function reachable for the back ends.
+/// A dummy entry point that keeps every library function reachable for the back ends (both public
+/// entries: `airlight_in_scatter` and the point light's `airlight_in_scatter_point`).
 const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
-    let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
+    let s = AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
+    let r = airlight_in_scatter(s);
+    let q = airlight_in_scatter_point(s);
 }
 ";
 
@@ -39,9 +42,11 @@ fn airlight_library_entry() {
 const LIBRARY_STUB_ES: &str = "
 @fragment
 fn airlight_library_entry() -> @location(0) vec4<f32> {
-    let r = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u));
-    return vec4<f32>(r.in_scatter);
+    let s = AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
+    let r = airlight_in_scatter(s);
+    let q = airlight_in_scatter_point(s);
+    return vec4<f32>(r.in_scatter, q.in_scatter, 0.0, 0.0);
 }
 ";
 
@@ -328,6 +333,16 @@ pub fn compute_wgsl(terms: usize) -> &'static str {
         8 => include_str!("../../../shaders-out/wgsl/airlight_8.wgsl"),
         _ => include_str!("../../../shaders-out/wgsl/airlight_12.wgsl"),
     }
+}
+
+/// The compute entry point `airlight_main` (`codegen/shaders/shader/compute.wgsl`, same bindings
+/// and workgroup size) calling the point-light entry `airlight_in_scatter_point` instead of
+/// `airlight_in_scatter`, to append to a WGSL include library
+/// (`shaders-out/wgsl/airlight_lib_{8,12}.wgsl`): a compute shader for records that are all
+/// point lights without a surface. Not emitted; the agreement tests and the GPU bench build it.
+pub fn point_compute_entry() -> String {
+    assert_eq!(COMPUTE.matches("airlight_in_scatter(").count(), 1, "compute.wgsl calls airlight_in_scatter once");
+    COMPUTE.replace("airlight_in_scatter(", "airlight_in_scatter_point(").replace("@WORKGROUP_SIZE@", &crate::layout::WORKGROUP_SIZE.to_string())
 }
 
 /// Parses and validates WGSL.
