@@ -414,8 +414,8 @@ bool airlight_in_series_region(
     metal::float2 z_5
 ) {
     float x_18 = z_5.x * AIRLIGHT_E1_INV_RE;
-    float y_6 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_18 * x_18) + (y_6 * y_6)) < 1.0;
+    float y_5 = z_5.y * AIRLIGHT_E1_INV_IM;
+    return ((x_18 * x_18) + (y_5 * y_5)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -1054,15 +1054,15 @@ float airlight_moment_gauss(
         {
             uint _e26 = j;
             float xi = nodes.inner[metal::min(unsigned(_e26), 3u)].x;
-            float y_7 = yc + (hw_1 * xi);
+            float y_6 = yc + (hw_1 * xi);
             dv = hw_1 * (1.0 + xi);
             if (half_.second) {
-                dv = (hw_1 * (1.0 - xi)) / (y_7 * half_.y_hi);
+                dv = (hw_1 * (1.0 - xi)) / (y_6 * half_.y_hi);
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw_1) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_7 * y_7)));
+            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw_1) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_6 * y_6)));
         }
     }
     float _e61 = m;
@@ -2035,10 +2035,10 @@ AirlightPanel airlight_y_panel(
         {
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
-            float y_8 = yc_1 + (r_8 * _e29);
-            float weight = metal::exp((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_8 * b_5));
-            float _e41 = airlight_integrand(s_5, g_7, sigma_5, y_8);
-            float over_1 = 1.0 / (1.0 + (y_8 * y_8));
+            float y_7 = yc_1 + (r_8 * _e29);
+            float weight = metal::exp((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_7 * b_5));
+            float _e41 = airlight_integrand(s_5, g_7, sigma_5, y_7);
+            float over_1 = 1.0 / (1.0 + (y_7 * y_7));
             uint _e47 = i_8;
             samples_1.inner[metal::min(unsigned(_e47), 7u)] = (_e41 * over_1) * weight;
             float _e51 = f_max_2;
@@ -2173,10 +2173,10 @@ AirlightPanel airlight_tail_panel(
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_9 = yc_2 + (r_9 * _e23);
-            float _e26 = airlight_integrand(s_6, g_8, sigma_6, y_9);
+            float y_8 = yc_2 + (r_9 * _e23);
+            float _e26 = airlight_integrand(s_6, g_8, sigma_6, y_8);
             uint _e27 = i_9;
-            samples_2.inner[metal::min(unsigned(_e27), 7u)] = _e26 / (1.0 + (y_9 * y_9));
+            samples_2.inner[metal::min(unsigned(_e27), 7u)] = _e26 / (1.0 + (y_8 * y_8));
             float _e33 = f_max_3;
             f_max_3 = metal::max(_e33, metal::abs(_e26));
             float _e36 = g_avg_1;
@@ -2734,20 +2734,11 @@ float airlight_atan2_upper(
     float y_3,
     float x_8
 ) {
-    if (x_8 > 0.0) {
-        if (y_3 <= x_8) {
-            float _e6 = airlight_atan(y_3 / x_8);
-            return _e6;
-        }
-        float _e9 = airlight_atan(x_8 / y_3);
-        return 1.5707964 - _e9;
-    }
-    if (y_3 <= -(x_8)) {
-        float _e16 = airlight_atan(y_3 / -(x_8));
-        return AIRLIGHT_PI - _e16;
-    }
-    float _e21 = airlight_atan(-(x_8) / y_3);
-    return 1.5707964 + _e21;
+    float ax_1 = metal::abs(x_8);
+    bool near_axis = y_3 <= ax_1;
+    bool positive = x_8 > 0.0;
+    float _e9 = airlight_atan(near_axis ? (y_3 / ax_1) : (ax_1 / y_3));
+    return near_axis ? (positive ? _e9 : (AIRLIGHT_PI - _e9)) : (positive ? (1.5707964 - _e9) : (1.5707964 + _e9));
 }
 
 float airlight_bounded(
@@ -2838,11 +2829,6 @@ metal::float2 airlight_angle_route(
     float magnitude = 0.0;
     float f_max_5 = 0.0;
     uint i_12 = 0u;
-    float sn = {};
-    float cs = {};
-    float y_4 = {};
-    float one_plus = {};
-    float one_minus = {};
     airlight_type_2 m_3 = {};
     bool local_24 = {};
     float x_10 = 0.0;
@@ -2962,8 +2948,8 @@ metal::float2 airlight_angle_route(
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e292 = i_12;
-            i_12 = _e292 + 1u;
+            uint _e263 = i_12;
+            i_12 = _e263 + 1u;
         }
         loop_init_18 = false;
         uint _e182 = i_12;
@@ -2975,97 +2961,68 @@ metal::float2 airlight_angle_route(
             uint _e185 = i_12;
             float _e186 = airlight_node(_e169, _e185);
             float lower = _e38 + (hw_2 * (1.0 + _e186));
-            sn = 0.0;
-            cs = 0.0;
-            y_4 = 0.0;
-            one_plus = 0.0;
-            one_minus = 0.0;
-            if (lower <= 1.5707964) {
-                metal::float2 _e203 = airlight_cos_sin(lower);
-                cs = _e203.y;
-                sn = -(_e203.x);
-                one_minus = 1.0 + _e203.x;
-                float _e210 = cs;
-                float _e211 = one_minus;
-                y_4 = _e210 / _e211;
-                float _e213 = cs;
-                float _e214 = cs;
-                float _e216 = one_minus;
-                one_plus = (_e213 * _e214) / _e216;
-            } else {
-                float _e218 = psi1_;
-                metal::float2 _e223 = airlight_cos_sin(_e218 + (hw_2 * (1.0 - _e186)));
-                cs = _e223.y;
-                sn = _e223.x;
-                float _e226 = sn;
-                one_plus = 1.0 + _e226;
-                float _e229 = one_plus;
-                float _e230 = cs;
-                y_4 = _e229 / _e230;
-                float _e232 = cs;
-                float _e233 = cs;
-                float _e235 = one_plus;
-                one_minus = (_e232 * _e233) / _e235;
-            }
-            float _e237 = y_4;
-            float _e244 = cs;
-            float weight_1 = (_e244 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (_e237 - _e26), 0.0))) : 0.0;
-            float _e253 = sn;
-            float _e256 = cs;
-            float _e259 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * _e253) + (g_11.d_c * _e256));
-            float _e264 = sn;
-            float _e266 = one_plus;
-            float _e267 = one_minus;
-            float _e268 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(_e264), _e266, _e267);
-            float f_2 = _e259 * _e268;
+            bool below_1 = lower <= 1.5707964;
+            float _e193 = psi1_;
+            metal::float2 _e199 = airlight_cos_sin(below_1 ? lower : (_e193 + (hw_2 * (1.0 - _e186))));
+            float cs = _e199.y;
+            float sn = below_1 ? -(_e199.x) : _e199.x;
+            float near_pole = 1.0 + _e199.x;
+            float far_pole = (cs * cs) / near_pole;
+            float one_minus = below_1 ? near_pole : far_pole;
+            float one_plus = below_1 ? far_pole : near_pole;
+            float y_9 = below_1 ? (cs / near_pole) : (near_pole / cs);
+            float weight_1 = (cs > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_9 - _e26), 0.0))) : 0.0;
+            float _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * sn) + (g_11.d_c * cs));
+            float _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = _e233 * _e239;
             float gw = weight_1 * f_2;
-            uint _e271 = i_12;
-            samples_3.inner[metal::min(unsigned(_e271), 7u)] = gw;
-            uint _e273 = i_12;
-            float w_3 = _e169.inner[metal::min(unsigned(airlight_naga_div(_e273, 2u)), 3u)].y;
-            float _e278 = value_1;
-            value_1 = _e278 + (w_3 * gw);
-            float _e281 = mass_4;
-            mass_4 = _e281 + (w_3 * weight_1);
-            float _e284 = magnitude;
-            magnitude = _e284 + (w_3 * metal::abs(gw));
-            float _e288 = f_max_5;
-            f_max_5 = metal::max(_e288, metal::abs(f_2));
+            uint _e242 = i_12;
+            samples_3.inner[metal::min(unsigned(_e242), 7u)] = gw;
+            uint _e244 = i_12;
+            float w_3 = _e169.inner[metal::min(unsigned(airlight_naga_div(_e244, 2u)), 3u)].y;
+            float _e249 = value_1;
+            value_1 = _e249 + (w_3 * gw);
+            float _e252 = mass_4;
+            mass_4 = _e252 + (w_3 * weight_1);
+            float _e255 = magnitude;
+            magnitude = _e255 + (w_3 * metal::abs(gw));
+            float _e259 = f_max_5;
+            f_max_5 = metal::max(_e259, metal::abs(f_2));
         }
     }
-    airlight_type_2 _e294 = samples_3;
-    airlight_type_2 _e295 = airlight_legendre(_e294);
-    airlight_type_2 _e296 = airlight_zero_terms();
-    m_3 = _e296;
+    airlight_type_2 _e265 = samples_3;
+    airlight_type_2 _e266 = airlight_legendre(_e265);
+    airlight_type_2 _e267 = airlight_zero_terms();
+    m_3 = _e267;
     m_3.inner[0] = 2.0;
-    float _e300 = airlight_tail_estimate(_e295);
-    airlight_type_2 _e303 = m_3;
-    float _e304 = rate;
-    float _e305 = airlight_error_factor(_e295, _e303, _e304);
-    float error_4 = (2.0 * _e300) * _e305;
-    float _e308 = magnitude;
-    float _e311 = airlight_transform_noise(2.0, 0.5 * _e308);
-    float _e313 = value_1;
-    float _e316 = f_max_5;
-    float _e318 = mass_4;
-    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e313), (AIRLIGHT_PANEL_FLOOR * _e316) * _e318);
+    float _e271 = airlight_tail_estimate(_e266);
+    airlight_type_2 _e274 = m_3;
+    float _e275 = rate;
+    float _e276 = airlight_error_factor(_e266, _e274, _e275);
+    float error_4 = (2.0 * _e271) * _e276;
+    float _e279 = magnitude;
+    float _e282 = airlight_transform_noise(2.0, 0.5 * _e279);
+    float _e284 = value_1;
+    float _e287 = f_max_5;
+    float _e289 = mass_4;
+    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e284), (AIRLIGHT_PANEL_FLOOR * _e287) * _e289);
     if (!((error_4 <= accepted))) {
-        local_24 = error_4 <= _e311;
+        local_24 = error_4 <= _e282;
     } else {
         local_24 = true;
     }
-    bool _e328 = local_24;
-    if (!(_e328)) {
+    bool _e299 = local_24;
+    if (!(_e299)) {
         return metal::float2(0.0, 0.0);
     }
     if (s_9.sigma_t > 0.0) {
-        float _e339 = airlight_hypot_one(u0_);
-        x_10 = s_9.sigma_t * (h_3 * _e339);
+        float _e310 = airlight_hypot_one(u0_);
+        x_10 = s_9.sigma_t * (h_3 * _e310);
     }
-    float _e344 = x_10;
-    float _e345 = value_1;
-    float _e349 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e344, (_e345 * hw_2) * 0.5);
-    return metal::float2(1.0, _e349);
+    float _e315 = x_10;
+    float _e316 = value_1;
+    float _e320 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e315, (_e316 * hw_2) * 0.5);
+    return metal::float2(1.0, _e320);
 }
 
 metal::float2 airlight_crossings(
@@ -3118,10 +3075,10 @@ metal::float2 airlight_crossings(
 float airlight_cosine(
     AirlightCanonical g_12,
     float sigma_10,
-    float y_5
+    float y_4
 ) {
-    float y2_1 = y_5 * y_5;
-    return (((1.0 - y2_1) * (sigma_10 * g_12.d_el)) + ((y_5 + y_5) * g_12.d_c)) / (1.0 + y2_1);
+    float y2_1 = y_4 * y_4;
+    return (((1.0 - y2_1) * (sigma_10 * g_12.d_el)) + ((y_4 + y_4) * g_12.d_c)) / (1.0 + y2_1);
 }
 
 bool airlight_dark(

@@ -438,8 +438,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
     let x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_18 * x_18) + (y_6 * y_6)) < 1f);
+    let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_18 * x_18) + (y_5 * y_5)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -982,15 +982,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j;
             let xi = nodes[_e26].x;
-            let y_7 = (yc + (hw_1 * xi));
+            let y_6 = (yc + (hw_1 * xi));
             dv = (hw_1 * (1f + xi));
             if half.second {
-                dv = ((hw_1 * (1f - xi)) / (y_7 * half.y_hi));
+                dv = ((hw_1 * (1f - xi)) / (y_6 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw_1) * exp((-(half.big_h) * _e49))) / (1f + (y_7 * y_7))));
+            m = (_e42 + (((nodes[_e43].y * hw_1) * exp((-(half.big_h) * _e49))) / (1f + (y_6 * y_6))));
         }
         continuing {
             let _e59 = j;
@@ -1865,10 +1865,10 @@ fn airlight_y_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
-            let y_8 = (yc_1 + (r_8 * _e29));
-            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_8 * b_5)));
-            let _e41 = airlight_integrand(s_6, g_9, sigma_5, y_8);
-            let over_1 = (1f / (1f + (y_8 * y_8)));
+            let y_7 = (yc_1 + (r_8 * _e29));
+            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_7 * b_5)));
+            let _e41 = airlight_integrand(s_6, g_9, sigma_5, y_7);
+            let over_1 = (1f / (1f + (y_7 * y_7)));
             let _e47 = i_8;
             samples_1[_e47] = ((_e41 * over_1) * weight);
             let _e51 = f_max_2;
@@ -1991,10 +1991,10 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_9 = (yc_2 + (r_9 * _e23));
-            let _e26 = airlight_integrand(s_7, g_10, sigma_6, y_9);
+            let y_8 = (yc_2 + (r_9 * _e23));
+            let _e26 = airlight_integrand(s_7, g_10, sigma_6, y_8);
             let _e27 = i_9;
-            samples_2[_e27] = (_e26 / (1f + (y_9 * y_9)));
+            samples_2[_e27] = (_e26 / (1f + (y_8 * y_8)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
@@ -2517,20 +2517,11 @@ fn airlight_integrate_piece(s_9: AirlightScene, g_12: AirlightCanonical, sigma_8
 }
 
 fn airlight_atan2_upper(y_3: f32, x_8: f32) -> f32 {
-    if (x_8 > 0f) {
-        if (y_3 <= x_8) {
-            let _e6 = airlight_atan((y_3 / x_8));
-            return _e6;
-        }
-        let _e9 = airlight_atan((x_8 / y_3));
-        return (1.5707964f - _e9);
-    }
-    if (y_3 <= -(x_8)) {
-        let _e16 = airlight_atan((y_3 / -(x_8)));
-        return (AIRLIGHT_PI - _e16);
-    }
-    let _e21 = airlight_atan((-(x_8) / y_3));
-    return (1.5707964f + _e21);
+    let ax_1 = abs(x_8);
+    let near_axis = (y_3 <= ax_1);
+    let positive = (x_8 > 0f);
+    let _e9 = airlight_atan(select((ax_1 / y_3), (y_3 / ax_1), near_axis));
+    return select(select((1.5707964f + _e9), (1.5707964f - _e9), positive), select((AIRLIGHT_PI - _e9), _e9, positive), near_axis);
 }
 
 fn airlight_bounded(a_10: f32) -> f32 {
@@ -2600,11 +2591,6 @@ fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     var magnitude: f32 = 0f;
     var f_max_5: f32 = 0f;
     var i_12: u32 = 0u;
-    var sn: f32;
-    var cs: f32;
-    var y_4: f32;
-    var one_plus: f32;
-    var one_minus: f32;
     var m_3: array<f32, 8>;
     var local_24: bool;
     var x_10: f32 = 0f;
@@ -2724,101 +2710,72 @@ fn airlight_angle_route(s_10: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let _e185 = i_12;
             let _e186 = airlight_node(_e169, _e185);
             let lower = (_e38 + (hw_2 * (1f + _e186)));
-            sn = 0f;
-            cs = 0f;
-            y_4 = 0f;
-            one_plus = 0f;
-            one_minus = 0f;
-            if (lower <= 1.5707964f) {
-                let _e203 = airlight_cos_sin(lower);
-                cs = _e203.y;
-                sn = -(_e203.x);
-                one_minus = (1f + _e203.x);
-                let _e210 = cs;
-                let _e211 = one_minus;
-                y_4 = (_e210 / _e211);
-                let _e213 = cs;
-                let _e214 = cs;
-                let _e216 = one_minus;
-                one_plus = ((_e213 * _e214) / _e216);
-            } else {
-                let _e218 = psi1_;
-                let _e223 = airlight_cos_sin((_e218 + (hw_2 * (1f - _e186))));
-                cs = _e223.y;
-                sn = _e223.x;
-                let _e226 = sn;
-                one_plus = (1f + _e226);
-                let _e229 = one_plus;
-                let _e230 = cs;
-                y_4 = (_e229 / _e230);
-                let _e232 = cs;
-                let _e233 = cs;
-                let _e235 = one_plus;
-                one_minus = ((_e232 * _e233) / _e235);
-            }
-            let _e237 = y_4;
-            let _e244 = cs;
-            let weight_1 = select(0f, exp(-(max((big_h_7 * (_e237 - _e26)), 0f))), (_e244 > 0f));
-            let _e253 = sn;
-            let _e256 = cs;
-            let _e259 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * _e253) + (g_13.d_c * _e256)));
-            let _e264 = sn;
-            let _e266 = one_plus;
-            let _e267 = one_minus;
-            let _e268 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(_e264), _e266, _e267);
-            let f_2 = (_e259 * _e268);
+            let below_1 = (lower <= 1.5707964f);
+            let _e193 = psi1_;
+            let _e199 = airlight_cos_sin(select((_e193 + (hw_2 * (1f - _e186))), lower, below_1));
+            let cs = _e199.y;
+            let sn = select(_e199.x, -(_e199.x), below_1);
+            let near_pole = (1f + _e199.x);
+            let far_pole = ((cs * cs) / near_pole);
+            let one_minus = select(far_pole, near_pole, below_1);
+            let one_plus = select(near_pole, far_pole, below_1);
+            let y_9 = select((near_pole / cs), (cs / near_pole), below_1);
+            let weight_1 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs > 0f));
+            let _e233 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs)));
+            let _e239 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(sn), one_plus, one_minus);
+            let f_2 = (_e233 * _e239);
             let gw = (weight_1 * f_2);
-            let _e271 = i_12;
-            samples_3[_e271] = gw;
-            let _e273 = i_12;
-            let w_4 = _e169[(_e273 / 2u)].y;
-            let _e278 = value_1;
-            value_1 = (_e278 + (w_4 * gw));
-            let _e281 = mass_4;
-            mass_4 = (_e281 + (w_4 * weight_1));
-            let _e284 = magnitude;
-            magnitude = (_e284 + (w_4 * abs(gw)));
-            let _e288 = f_max_5;
-            f_max_5 = max(_e288, abs(f_2));
+            let _e242 = i_12;
+            samples_3[_e242] = gw;
+            let _e244 = i_12;
+            let w_4 = _e169[(_e244 / 2u)].y;
+            let _e249 = value_1;
+            value_1 = (_e249 + (w_4 * gw));
+            let _e252 = mass_4;
+            mass_4 = (_e252 + (w_4 * weight_1));
+            let _e255 = magnitude;
+            magnitude = (_e255 + (w_4 * abs(gw)));
+            let _e259 = f_max_5;
+            f_max_5 = max(_e259, abs(f_2));
         }
         continuing {
-            let _e292 = i_12;
-            i_12 = (_e292 + 1u);
+            let _e263 = i_12;
+            i_12 = (_e263 + 1u);
         }
     }
-    let _e294 = samples_3;
-    let _e295 = airlight_legendre(_e294);
-    let _e296 = airlight_zero_terms();
-    m_3 = _e296;
+    let _e265 = samples_3;
+    let _e266 = airlight_legendre(_e265);
+    let _e267 = airlight_zero_terms();
+    m_3 = _e267;
     m_3[0] = 2f;
-    let _e300 = airlight_tail_estimate(_e295);
-    let _e303 = m_3;
-    let _e304 = rate;
-    let _e305 = airlight_error_factor(_e295, _e303, _e304);
-    let error_4 = ((2f * _e300) * _e305);
-    let _e308 = magnitude;
-    let _e311 = airlight_transform_noise(2f, (0.5f * _e308));
-    let _e313 = value_1;
-    let _e316 = f_max_5;
-    let _e318 = mass_4;
-    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e313), ((AIRLIGHT_PANEL_FLOOR * _e316) * _e318)));
+    let _e271 = airlight_tail_estimate(_e266);
+    let _e274 = m_3;
+    let _e275 = rate;
+    let _e276 = airlight_error_factor(_e266, _e274, _e275);
+    let error_4 = ((2f * _e271) * _e276);
+    let _e279 = magnitude;
+    let _e282 = airlight_transform_noise(2f, (0.5f * _e279));
+    let _e284 = value_1;
+    let _e287 = f_max_5;
+    let _e289 = mass_4;
+    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if !((error_4 <= accepted)) {
-        local_24 = (error_4 <= _e311);
+        local_24 = (error_4 <= _e282);
     } else {
         local_24 = true;
     }
-    let _e328 = local_24;
-    if !(_e328) {
+    let _e299 = local_24;
+    if !(_e299) {
         return vec2<f32>(0f, 0f);
     }
     if (s_10.sigma_t > 0f) {
-        let _e339 = airlight_hypot_one(u0_);
-        x_10 = (s_10.sigma_t * (h_3 * _e339));
+        let _e310 = airlight_hypot_one(u0_);
+        x_10 = (s_10.sigma_t * (h_3 * _e310));
     }
-    let _e344 = x_10;
-    let _e345 = value_1;
-    let _e349 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e344, ((_e345 * hw_2) * 0.5f));
-    return vec2<f32>(1f, _e349);
+    let _e315 = x_10;
+    let _e316 = value_1;
+    let _e320 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5f));
+    return vec2<f32>(1f, _e320);
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> {
@@ -2864,9 +2821,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_cosine(g_14: AirlightCanonical, sigma_10: f32, y_5: f32) -> f32 {
-    let y2_1 = (y_5 * y_5);
-    return ((((1f - y2_1) * (sigma_10 * g_14.d_el)) + ((y_5 + y_5) * g_14.d_c)) / (1f + y2_1));
+fn airlight_cosine(g_14: AirlightCanonical, sigma_10: f32, y_4: f32) -> f32 {
+    let y2_1 = (y_4 * y_4);
+    return ((((1f - y2_1) * (sigma_10 * g_14.d_el)) + ((y_4 + y_4) * g_14.d_c)) / (1f + y2_1));
 }
 
 fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {

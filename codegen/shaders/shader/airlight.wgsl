@@ -1169,12 +1169,13 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
 
 /// atan2(y, x) for y ≥ 0 from airlight_atan (x ≥ 0): in [0, π].
 fn airlight_atan2_upper(y: f32, x: f32) -> f32 {
-    if (x > 0.0) {
-        if (y <= x) { return airlight_atan(y / x); }
-        return 0.5 * AIRLIGHT_PI - airlight_atan(x / y);
-    }
-    if (y <= -x) { return AIRLIGHT_PI - airlight_atan(y / -x); }
-    return 0.5 * AIRLIGHT_PI + airlight_atan(-x / y);
+    // one atan of a ratio ≤ 1 and the octant by selects, not four branches: a driver that
+    // masks branches (lavapipe, §4.1 of docs/DESIGN.md) would run all four atans
+    let ax = abs(x);
+    let near_axis = y <= ax;
+    let positive = x > 0.0;
+    let r = airlight_atan(select(ax / y, y / ax, near_axis));
+    return select(select(0.5 * AIRLIGHT_PI + r, 0.5 * AIRLIGHT_PI - r, positive), select(AIRLIGHT_PI - r, r, positive), near_axis);
 }
 
 /// Y = u + √(1 + u²) without cancellation: the halves' bounded y before the foot.
@@ -1260,27 +1261,19 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
     var f_max = 0.0;
     for (var i = 0u; i < AIRLIGHT_TERMS; i++) {
         let x = airlight_node(rule, i);
+        // the node's distance from the nearer pole, one cos_sin for both sides (selects, not a
+        // branch: a masking driver would run both): sin θ = ∓cos, cos θ = sin of that distance
         let lower = psi0 + hw * (1.0 + x);
-        var sn = 0.0;
-        var cs = 0.0;
-        var y = 0.0;
-        var one_plus = 0.0;
-        var one_minus = 0.0;
-        if (lower <= 0.5 * AIRLIGHT_PI) {
-            let t = airlight_cos_sin(lower);
-            cs = t.y;
-            sn = -t.x;
-            one_minus = 1.0 + t.x;
-            y = cs / one_minus;
-            one_plus = cs * cs / one_minus;
-        } else {
-            let t = airlight_cos_sin(psi1 + hw * (1.0 - x));
-            cs = t.y;
-            sn = t.x;
-            one_plus = 1.0 + sn;
-            y = one_plus / cs;
-            one_minus = cs * cs / one_plus;
-        }
+        let below = lower <= 0.5 * AIRLIGHT_PI;
+        let t = airlight_cos_sin(select(psi1 + hw * (1.0 - x), lower, below));
+        let cs = t.y;
+        let sn = select(t.x, -t.x, below);
+        // 1 − sin θ below the foot, 1 + sin θ beyond it; the other as cos²θ over it
+        let near_pole = 1.0 + t.x;
+        let far_pole = cs * cs / near_pole;
+        let one_minus = select(far_pole, near_pole, below);
+        let one_plus = select(near_pole, far_pole, below);
+        let y = select(near_pole / cs, cs / near_pole, below);
         let weight = select(0.0, exp(-max(big_h * (y - y0), 0.0)), cs > 0.0);
         let f = airlight_light(s.light_kind, s.light_param_a, s.light_param_b, g.d_el * sn + g.d_c * cs)
             * airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, -sn, one_plus, one_minus);
