@@ -39,7 +39,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_shaders::targets::{compute_wgsl, point_compute_entry, render, Constants, EmitOptions, Target, NODE_COUNTS};
+use airlight_shaders::targets::{compute_wgsl, point_compute_entry, point_compute_wgsl, render, Constants, EmitOptions, Target, NODE_COUNTS};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
@@ -290,7 +290,7 @@ fn main() {
         .collect();
     // the point-light entry: the include library with `point_compute_entry`
     let point_entry = point_compute_entry();
-    sources.push(("generated_8_point".into(), "8 nodes, point entry".into(), 8, airlight::SHADER_CONTROL.tolerance, format!("{LIBRARY}\n{point_entry}")));
+    sources.push(("generated_8_point".into(), "8 nodes, point entry".into(), 8, airlight::SHADER_CONTROL.tolerance, point_compute_wgsl(8)));
     for tolerance in LOOSER_TOLERANCES {
         let opts = EmitOptions { terms: vec![8], targets: vec![Target::Wgsl], tolerance };
         let mut files = render(&opts).expect("the shader emits at a tolerance in range");

@@ -171,16 +171,19 @@ impl<R: BufRead> Lines<R> {
 
 /// Runs `eval` on the GPU: every record is parsed and checked as on the CPU (bad lines get
 /// the same error lines), the valid ones are packed and run through the compute shader in
-/// one batch after the input ends.
+/// one batch after the input ends — through the library's point-light entry
+/// (`airlight_shaders::targets::point_compute_wgsl`) when every one is a point light.
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
-    use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
     // per input line: its "id" and its error line, or the output key of a packed record
     let mut lines: Vec<(Option<serde_json::Value>, Result<Option<&str>, String>)> = Vec::new();
     let mut records = Vec::new();
+    let mut points = 0usize;
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
         match text.map(parse_line_with_id::<f32>) {
             Ok((id, Ok(AnyRecord::Point(r)))) => {
+                points += 1;
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
                 lines.push((id, Ok(None)));
             }
@@ -209,7 +212,16 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
         Vec::new()
     } else {
         let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
-        gpu.run(airlight_shaders::gpu::Shader::Wgsl(airlight_shaders::targets::compute_wgsl(opts.terms.unwrap_or(airlight::SHADER_NODES))), &records, true).map_err(EvalError::Gpu)?
+        let terms = opts.terms.unwrap_or(airlight::SHADER_NODES);
+        // point lights alone: the library's point entry, without the segment and surface loop
+        let point_shader;
+        let shader = if points * RECORD_SIZE == records.len() {
+            point_shader = airlight_shaders::targets::point_compute_wgsl(terms);
+            point_shader.as_str()
+        } else {
+            airlight_shaders::targets::compute_wgsl(terms)
+        };
+        gpu.run(airlight_shaders::gpu::Shader::Wgsl(shader), &records, true).map_err(EvalError::Gpu)?
     };
     let mut k = 0;
     for (id, l) in lines {

@@ -86,7 +86,8 @@ yellow to 1e-1 (red), with a colour bar along the bottom. Prints one summary lin
 enum BackendArg {
     /// The CPU kernel.
     Cpu,
-    /// The emitted compute shader through wgpu on this machine's GPU (f32).
+    /// The emitted compute shader through wgpu on this machine's GPU (f32); its point-light
+    /// entry when every record is a point light.
     Gpu,
 }
 

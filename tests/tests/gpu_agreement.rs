@@ -24,7 +24,7 @@ use airlight_shaders::gpu::{Gpu, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
 use airlight::record::SceneRecord;
 use airlight_codegen::scene_json::parse_value;
-use airlight_shaders::targets::{default_out_dir, point_compute_entry, NODE_COUNTS};
+use airlight_shaders::targets::{default_out_dir, point_compute_wgsl, NODE_COUNTS};
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
@@ -538,8 +538,7 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
         })
         .expect("a Lambertian surface point in surface.jsonl");
     for terms in NODE_COUNTS {
-        let library = std::fs::read_to_string(default_out_dir().join(format!("wgsl/airlight_lib_{terms}.wgsl"))).unwrap();
-        let shader = gpu.prepare(Shader::Wgsl(&format!("{library}\n{}", point_compute_entry())));
+        let shader = gpu.prepare(Shader::Wgsl(&point_compute_wgsl(terms)));
         let c = case(terms);
         compare(&format!("wgsl airlight_in_scatter_point/{terms}"), &c, &shader.run(&c.records, false).unwrap());
         let mut others = segment.to_vec();
@@ -551,5 +550,48 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
             assert!(status == airlight_shaders::layout::STATUS_OK && v > 0.0, "{terms} nodes: airlight_in_scatter on the {what}: ({v}, {status})");
             assert_eq!(unpack_result(&point[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]), (0.0, STATUS_INVALID), "{terms} nodes: airlight_in_scatter_point on the {what}");
         }
+    }
+}
+
+/// `airlight eval --backend gpu` on point lights (the hard classes of
+/// tests/reference/classes.jsonl, ids echoed): every answer within the shaders' 1e-3 of the
+/// mpmath value (`|x − exact| / max(|exact|, 1e-4·scale)`, as `shaders_meet_the_class_targets`),
+/// both through the point entry it runs when every record is a point light and through the
+/// general compute shader it runs when a segment light is among them.
+#[test]
+fn eval_runs_point_lights_on_the_gpu() {
+    use airlight_codegen::eval::{run_gpu, Backend, EvalOptions};
+    if gpu().is_none() {
+        return;
+    }
+    let cases: Vec<(serde_json::Value, ClassCase)> = reference_lines("classes.jsonl").into_iter().zip(class_cases()).filter(|(_, c)| c.f32_ok).collect();
+    let mut input = String::new();
+    for (i, (v, _)) in cases.iter().enumerate() {
+        let mut r = v.clone();
+        let o = r.as_object_mut().unwrap();
+        for key in ["in_scatter", "scale", "category"] {
+            o.remove(key);
+        }
+        o.insert("id".into(), i.into());
+        input.push_str(&format!("{r}\n"));
+    }
+    let mut segment = reference_lines("extended.jsonl").remove(0);
+    let o = segment.as_object_mut().unwrap();
+    o.remove("in_scatter");
+    o.remove("category");
+    for (label, text) in [("point lights only", input.clone()), ("with a segment light", format!("{input}{segment}\n"))] {
+        let mut out = Vec::new();
+        run_gpu(text.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
+        let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+        assert_eq!(answers.len(), text.lines().count(), "{label}");
+        let mut worst = 0.0f64;
+        for (i, (a, (_, c))) in answers.iter().zip(&cases).enumerate() {
+            assert_eq!(a["id"], i, "{label}, answer {i}: {a}");
+            let got = a["in_scatter"].as_f64().unwrap_or_else(|| panic!("{label}, answer {i}: {a}"));
+            let err = c.err(got, 1e-4);
+            assert!(err <= 1e-3, "{label}, {} record {i}: eval --backend gpu {got}, mpmath {} (err {err:.2e})", c.category, c.exact);
+            worst = worst.max(err);
+        }
+        println!("eval --backend gpu, {label}: {} class records, largest error {worst:.2e}", cases.len());
     }
 }

@@ -335,11 +335,27 @@ pub fn compute_wgsl(terms: usize) -> &'static str {
     }
 }
 
+/// The committed WGSL include library (`shaders-out/wgsl/airlight_lib_{8,12}.wgsl`) for `terms`
+/// (8, else 12).
+pub fn library_wgsl(terms: usize) -> &'static str {
+    match terms {
+        8 => include_str!("../../../shaders-out/wgsl/airlight_lib_8.wgsl"),
+        _ => include_str!("../../../shaders-out/wgsl/airlight_lib_12.wgsl"),
+    }
+}
+
+/// A compute shader for records that are all point lights without a surface: the committed
+/// include library ([`library_wgsl`]) with [`point_compute_entry`]. What `airlight eval --backend
+/// gpu` runs when every record is a point light.
+pub fn point_compute_wgsl(terms: usize) -> String {
+    format!("{}\n{}", library_wgsl(terms), point_compute_entry())
+}
+
 /// The compute entry point `airlight_main` (`codegen/shaders/shader/compute.wgsl`, same bindings
 /// and workgroup size) calling the point-light entry `airlight_in_scatter_point` instead of
 /// `airlight_in_scatter`, to append to a WGSL include library
 /// (`shaders-out/wgsl/airlight_lib_{8,12}.wgsl`): a compute shader for records that are all
-/// point lights without a surface. Not emitted; the agreement tests and the GPU bench build it.
+/// point lights without a surface ([`point_compute_wgsl`]). Not emitted as a file.
 pub fn point_compute_entry() -> String {
     assert_eq!(COMPUTE.matches("airlight_in_scatter(").count(), 1, "compute.wgsl calls airlight_in_scatter once");
     COMPUTE.replace("airlight_in_scatter(", "airlight_in_scatter_point(").replace("@WORKGROUP_SIZE@", &crate::layout::WORKGROUP_SIZE.to_string())
