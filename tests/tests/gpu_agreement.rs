@@ -354,6 +354,22 @@ fn segment_lights_agree_with_the_cpu_kernel() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
+/// `airlight eval` input lines of reference records: each without the fields named in `drop`
+/// (its answer and bookkeeping), with its index as `"id"`.
+fn eval_input<'a>(records: impl IntoIterator<Item = &'a serde_json::Value>, drop: &[&str]) -> String {
+    let mut input = String::new();
+    for (i, v) in records.into_iter().enumerate() {
+        let mut r = v.clone();
+        let o = r.as_object_mut().unwrap();
+        for key in drop {
+            o.remove(*key);
+        }
+        o.insert("id".into(), i.into());
+        input.push_str(&format!("{r}\n"));
+    }
+    input
+}
+
 /// `airlight eval --backend gpu` evaluates segment-light records through the shader: every
 /// answer line of tests/reference/extended.jsonl's scenes (ids echoed) within 1e-3 of the
 /// mpmath value, as the shaders' target asks.
@@ -364,15 +380,7 @@ fn eval_runs_segment_lights_on_the_gpu() {
         return;
     }
     let lines = reference_lines("extended.jsonl");
-    let mut input = String::new();
-    for (i, v) in lines.iter().enumerate() {
-        let mut r = v.clone();
-        let o = r.as_object_mut().unwrap();
-        o.remove("in_scatter");
-        o.remove("category");
-        o.insert("id".into(), i.into());
-        input.push_str(&format!("{r}\n"));
-    }
+    let input = eval_input(&lines, &["in_scatter", "category"]);
     let mut out = Vec::new();
     run_gpu(input.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
     let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
@@ -464,16 +472,7 @@ fn eval_runs_lambertian_surfaces_on_the_gpu() {
         return;
     }
     let lines = reference_lines("surface.jsonl");
-    let mut input = String::new();
-    for (i, v) in lines.iter().enumerate() {
-        let mut r = v.clone();
-        let o = r.as_object_mut().unwrap();
-        for key in ["surface_air_light", "scale", "category"] {
-            o.remove(key);
-        }
-        o.insert("id".into(), i.into());
-        input.push_str(&format!("{r}\n"));
-    }
+    let input = eval_input(&lines, &["surface_air_light", "scale", "category"]);
     let mut out = Vec::new();
     run_gpu(input.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
     let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
@@ -565,21 +564,9 @@ fn eval_runs_point_lights_on_the_gpu() {
         return;
     }
     let cases: Vec<(serde_json::Value, ClassCase)> = reference_lines("classes.jsonl").into_iter().zip(class_cases()).filter(|(_, c)| c.f32_ok).collect();
-    let mut input = String::new();
-    for (i, (v, _)) in cases.iter().enumerate() {
-        let mut r = v.clone();
-        let o = r.as_object_mut().unwrap();
-        for key in ["in_scatter", "scale", "category"] {
-            o.remove(key);
-        }
-        o.insert("id".into(), i.into());
-        input.push_str(&format!("{r}\n"));
-    }
-    let mut segment = reference_lines("extended.jsonl").remove(0);
-    let o = segment.as_object_mut().unwrap();
-    o.remove("in_scatter");
-    o.remove("category");
-    for (label, text) in [("point lights only", input.clone()), ("with a segment light", format!("{input}{segment}\n"))] {
+    let input = eval_input(cases.iter().map(|(v, _)| v), &["in_scatter", "scale", "category"]);
+    let segment = eval_input(&reference_lines("extended.jsonl")[..1], &["in_scatter", "category"]);
+    for (label, text) in [("point lights only", input.clone()), ("with a segment light", format!("{input}{segment}"))] {
         let mut out = Vec::new();
         run_gpu(text.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
         let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
