@@ -5521,6 +5521,42 @@ AirlightNode airlight_outer_node(
     return AirlightNode {_e122, 1.0};
 }
 
+AirlightResult airlight_point_integral(
+    AirlightScene p_1
+) {
+    AirlightResult r_5 = AirlightResult {0.0, 0u};
+    bool local_121 = {};
+    bool local_122 = {};
+    bool _e6 = airlight_vec_finite(p_1.light_position);
+    if (_e6) {
+        bool _e10 = airlight_vec_finite(p_1.dir);
+        local_121 = _e10;
+    } else {
+        local_121 = false;
+    }
+    bool _e12 = local_121;
+    if (_e12) {
+        AirlightCanonical _e13 = airlight_canonical(p_1);
+        AirlightCanonical _e14 = airlight_refined(p_1, _e13);
+        AirlightResult _e15 = airlight_in_scatter_canonical(p_1, _e14);
+        r_5 = _e15;
+    }
+    float _e17 = r_5.in_scatter;
+    bool _e18 = airlight_is_finite(_e17);
+    if (!(!(_e18))) {
+        uint _e24 = r_5.status;
+        local_122 = _e24 == AIRLIGHT_STATUS_INFINITE;
+    } else {
+        local_122 = true;
+    }
+    bool _e28 = local_122;
+    if (_e28) {
+        return AirlightResult {340282350000000000000000000000000000000.0, 2u};
+    }
+    AirlightResult _e32 = r_5;
+    return _e32;
+}
+
 AirlightResult airlight_in_scatter(
     AirlightScene s_23
 ) {
@@ -5536,11 +5572,8 @@ AirlightResult airlight_in_scatter(
     float k_5 = {};
     float gauss = {};
     uint j_3 = {};
-    bool local_121 = {};
-    float f = {};
-    AirlightResult r_5 = {};
-    bool local_122 = {};
     bool local_123 = {};
+    float f = {};
     bool local_124 = {};
     bool split = {};
     uint tries = {};
@@ -5568,8 +5601,8 @@ AirlightResult airlight_in_scatter(
         if (metal::all(loop_bound_27 == uint2(0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
         if (!loop_init_27) {
-            uint _e260 = step_2;
-            step_2 = _e260 + 1u;
+            uint _e231 = step_2;
+            step_2 = _e231 + 1u;
         }
         loop_init_27 = false;
         uint _e58 = step_2;
@@ -5593,8 +5626,8 @@ AirlightResult airlight_in_scatter(
                 if (metal::all(loop_bound_28 == uint2(0u))) { break; }
                 loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
                 if (!loop_init_28) {
-                    uint _e166 = j_3;
-                    j_3 = _e166 + 1u;
+                    uint _e137 = j_3;
+                    j_3 = _e137 + 1u;
                 }
                 loop_init_28 = false;
                 uint _e76 = j_3;
@@ -5608,94 +5641,68 @@ AirlightResult airlight_in_scatter(
                     uint _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
                         uint _e96 = j_3;
-                        local_121 = _e96 < 6u;
+                        local_123 = _e96 < 6u;
                     } else {
-                        local_121 = false;
+                        local_123 = false;
                     }
-                    bool _e100 = local_121;
+                    bool _e100 = local_123;
                     float w_5 = _e100 ? (c_14 - (hw_3 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x)) : (c_14 + (hw_3 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].x));
                     AirlightNode _e102 = airlight_outer_node(s_23, _e6, w_5);
                     f = 0.0;
                     if (_e102.weight != 0.0) {
-                        AirlightScene p_1 = _e102.scene;
-                        r_5 = AirlightResult {0.0, 0u};
-                        bool _e114 = airlight_vec_finite(_e102.scene.light_position);
-                        if (_e114) {
-                            bool _e118 = airlight_vec_finite(_e102.scene.dir);
-                            local_122 = _e118;
-                        } else {
-                            local_122 = false;
-                        }
-                        bool _e120 = local_122;
-                        if (_e120) {
-                            AirlightCanonical _e121 = airlight_canonical(p_1);
-                            AirlightCanonical _e122 = airlight_refined(p_1, _e121);
-                            AirlightResult _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_5 = _e123;
-                        }
-                        float _e125 = r_5.in_scatter;
-                        bool _e126 = airlight_is_finite(_e125);
-                        if (!(!(_e126))) {
-                            uint _e132 = r_5.status;
-                            local_123 = _e132 == AIRLIGHT_STATUS_INFINITE;
-                        } else {
-                            local_123 = true;
-                        }
-                        bool _e136 = local_123;
-                        if (_e136) {
-                            return AirlightResult {340282350000000000000000000000000000000.0, 2u};
+                        AirlightResult _e109 = airlight_point_integral(_e102.scene);
+                        if (_e109.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e109;
                         }
                         if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_124 = s_23.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
                             local_124 = false;
                         }
-                        bool _e149 = local_124;
-                        if (_e149) {
-                            AirlightResult _e150 = r_5;
-                            return _e150;
+                        bool _e122 = local_124;
+                        if (_e122) {
+                            return _e109;
                         }
-                        float _e152 = r_5.in_scatter;
-                        f = _e152 * _e102.weight;
+                        f = _e109.in_scatter * _e102.weight;
                     }
-                    float _e155 = k_5;
-                    float _e157 = f;
-                    k_5 = _e155 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].y * _e157);
-                    float _e160 = gauss;
-                    float _e162 = f;
-                    gauss = _e160 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].z * _e162);
+                    float _e126 = k_5;
+                    float _e128 = f;
+                    k_5 = _e126 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].y * _e128);
+                    float _e131 = gauss;
+                    float _e133 = f;
+                    gauss = _e131 + (_e19.inner[metal::min(unsigned(airlight_naga_div(_e79, 2u)), 3u)].z * _e133);
                 }
             }
-            uint _e168 = slot_1;
-            float _e169 = a_16;
-            float _e170 = b_12;
-            float _e171 = k_5;
-            float _e173 = k_5;
-            float _e175 = gauss;
-            airlight_list_set(list_1, _e168, metal::float4(_e169, _e170, _e171 * hw_3, metal::abs((_e173 * hw_3) - (_e175 * hw_3))));
-            uint _e180 = slot_1;
-            uint _e181 = count_2;
-            if (_e180 == _e181) {
-                uint _e183 = count_2;
-                count_2 = _e183 + 1u;
+            uint _e139 = slot_1;
+            float _e140 = a_16;
+            float _e141 = b_12;
+            float _e142 = k_5;
+            float _e144 = k_5;
+            float _e146 = gauss;
+            airlight_list_set(list_1, _e139, metal::float4(_e140, _e141, _e142 * hw_3, metal::abs((_e144 * hw_3) - (_e146 * hw_3))));
+            uint _e151 = slot_1;
+            uint _e152 = count_2;
+            if (_e151 == _e152) {
+                uint _e154 = count_2;
+                count_2 = _e154 + 1u;
             }
-            uint _e186 = count_2;
-            if (_e186 < _e6.panels) {
-                uint _e190 = count_2;
-                a_16 = _e6.edges.inner[metal::min(unsigned(_e190), 4u)];
-                uint _e193 = count_2;
-                b_12 = _e6.edges.inner[metal::min(unsigned(_e193 + 1u), 4u)];
-                uint _e197 = count_2;
-                slot_1 = _e197;
+            uint _e157 = count_2;
+            if (_e157 < _e6.panels) {
+                uint _e161 = count_2;
+                a_16 = _e6.edges.inner[metal::min(unsigned(_e161), 4u)];
+                uint _e164 = count_2;
+                b_12 = _e6.edges.inner[metal::min(unsigned(_e164 + 1u), 4u)];
+                uint _e168 = count_2;
+                slot_1 = _e168;
             } else {
-                bool _e198 = queued;
-                if (_e198) {
-                    float _e199 = queued_lo;
-                    a_16 = _e199;
-                    float _e200 = queued_hi;
-                    b_12 = _e200;
-                    uint _e201 = count_2;
-                    slot_1 = _e201;
+                bool _e169 = queued;
+                if (_e169) {
+                    float _e170 = queued_lo;
+                    a_16 = _e170;
+                    float _e171 = queued_hi;
+                    b_12 = _e171;
+                    uint _e172 = count_2;
+                    slot_1 = _e172;
                     queued = false;
                 } else {
                     split = false;
@@ -5706,51 +5713,51 @@ AirlightResult airlight_in_scatter(
                         if (metal::all(loop_bound_29 == uint2(0u))) { break; }
                         loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
                         if (!loop_init_29) {
-                            uint _e255 = tries;
-                            tries = _e255 + 1u;
+                            uint _e226 = tries;
+                            tries = _e226 + 1u;
                         }
                         loop_init_29 = false;
-                        uint _e207 = tries;
-                        if (_e207 < _e6.max_panels) {
+                        uint _e178 = tries;
+                        if (_e178 < _e6.max_panels) {
                         } else {
                             break;
                         }
                         {
-                            AirlightPanelList _e210 = list_1;
-                            uint _e211 = count_2;
-                            AirlightListScan _e212 = airlight_list_scan(_e210, _e211);
-                            float total_4 = _e212.total;
-                            uint worst_1 = _e212.worst;
-                            if (!(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
-                                uint _e223 = count_2;
-                                local_125 = _e223 == _e6.max_panels;
+                            AirlightPanelList _e181 = list_1;
+                            uint _e182 = count_2;
+                            AirlightListScan _e183 = airlight_list_scan(_e181, _e182);
+                            float total_4 = _e183.total;
+                            uint worst_1 = _e183.worst;
+                            if (!(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
+                                uint _e194 = count_2;
+                                local_125 = _e194 == _e6.max_panels;
                             } else {
                                 local_125 = true;
                             }
-                            bool _e227 = local_125;
-                            if (!(_e227)) {
-                                bool _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                            bool _e198 = local_125;
+                            if (!(_e198)) {
+                                bool _e202 = airlight_is_finite(total_4);
+                                local_126 = !(_e202);
                             } else {
                                 local_126 = true;
                             }
-                            bool _e234 = local_126;
-                            if (_e234) {
+                            bool _e205 = local_126;
+                            if (_e205) {
                                 break;
                             }
-                            AirlightPanelList _e235 = list_1;
-                            metal::float4 _e236 = airlight_list_get(_e235, worst_1);
-                            float wa_1 = _e236.x;
-                            float wb_1 = _e236.y;
+                            AirlightPanelList _e206 = list_1;
+                            metal::float4 _e207 = airlight_list_get(_e206, worst_1);
+                            float wa_1 = _e207.x;
+                            float wb_1 = _e207.y;
                             float mid_3 = 0.5 * (wa_1 + wb_1);
                             if (mid_3 > wa_1) {
                                 local_127 = mid_3 < wb_1;
                             } else {
                                 local_127 = false;
                             }
-                            bool _e247 = local_127;
-                            if (!(_e247)) {
-                                airlight_list_set(list_1, worst_1, metal::float4(_e236.xyz, 0.0));
+                            bool _e218 = local_127;
+                            if (!(_e218)) {
+                                airlight_list_set(list_1, worst_1, metal::float4(_e207.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -5763,20 +5770,20 @@ AirlightResult airlight_in_scatter(
                             break;
                         }
                     }
-                    bool _e257 = split;
-                    if (!(_e257)) {
+                    bool _e228 = split;
+                    if (!(_e228)) {
                         break;
                     }
                 }
             }
         }
     }
-    AirlightPanelList _e262 = list_1;
-    uint _e263 = count_2;
-    AirlightListScan _e264 = airlight_list_scan(_e262, _e263);
-    float total_5 = _e264.total;
-    bool _e266 = airlight_is_finite(total_5);
-    if (!(_e266)) {
+    AirlightPanelList _e233 = list_1;
+    uint _e234 = count_2;
+    AirlightListScan _e235 = airlight_list_scan(_e233, _e234);
+    float total_5 = _e235.total;
+    bool _e237 = airlight_is_finite(total_5);
+    if (!(_e237)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
     return AirlightResult {metal::max(total_5, 0.0), AIRLIGHT_STATUS_OK};

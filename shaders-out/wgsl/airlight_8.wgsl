@@ -4575,6 +4575,41 @@ fn airlight_outer_node(s_22: AirlightScene, g_21: AirlightOuter, x_17: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
+fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
+    var r_5: AirlightResult = AirlightResult(0f, 0u);
+    var local_121: bool;
+    var local_122: bool;
+
+    let _e6 = airlight_vec_finite(p_1.light_position);
+    if _e6 {
+        let _e10 = airlight_vec_finite(p_1.dir);
+        local_121 = _e10;
+    } else {
+        local_121 = false;
+    }
+    let _e12 = local_121;
+    if _e12 {
+        let _e13 = airlight_canonical(p_1);
+        let _e14 = airlight_refined(p_1, _e13);
+        let _e15 = airlight_in_scatter_canonical(p_1, _e14);
+        r_5 = _e15;
+    }
+    let _e17 = r_5.in_scatter;
+    let _e18 = airlight_is_finite(_e17);
+    if !(!(_e18)) {
+        let _e24 = r_5.status;
+        local_122 = (_e24 == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_122 = true;
+    }
+    let _e28 = local_122;
+    if _e28 {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    let _e32 = r_5;
+    return _e32;
+}
+
 fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
@@ -4588,11 +4623,8 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
     var k_5: f32;
     var gauss: f32;
     var j_3: u32;
-    var local_121: bool;
-    var f: f32;
-    var r_5: AirlightResult;
-    var local_122: bool;
     var local_123: bool;
+    var f: f32;
     var local_124: bool;
     var split: bool;
     var tries: u32;
@@ -4643,144 +4675,118 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
                     let _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_3;
-                        local_121 = (_e96 < 6u);
+                        local_123 = (_e96 < 6u);
                     } else {
-                        local_121 = false;
+                        local_123 = false;
                     }
-                    let _e100 = local_121;
+                    let _e100 = local_123;
                     let w_5 = select((c_14 + (hw_3 * node.x)), (c_14 - (hw_3 * node.x)), _e100);
                     let _e102 = airlight_outer_node(s_23, _e6, w_5);
                     f = 0f;
                     if (_e102.weight != 0f) {
-                        let p_1 = _e102.scene;
-                        r_5 = AirlightResult(0f, 0u);
-                        let _e114 = airlight_vec_finite(p_1.light_position);
-                        if _e114 {
-                            let _e118 = airlight_vec_finite(p_1.dir);
-                            local_122 = _e118;
-                        } else {
-                            local_122 = false;
-                        }
-                        let _e120 = local_122;
-                        if _e120 {
-                            let _e121 = airlight_canonical(p_1);
-                            let _e122 = airlight_refined(p_1, _e121);
-                            let _e123 = airlight_in_scatter_canonical(p_1, _e122);
-                            r_5 = _e123;
-                        }
-                        let _e125 = r_5.in_scatter;
-                        let _e126 = airlight_is_finite(_e125);
-                        if !(!(_e126)) {
-                            let _e132 = r_5.status;
-                            local_123 = (_e132 == AIRLIGHT_STATUS_INFINITE);
-                        } else {
-                            local_123 = true;
-                        }
-                        let _e136 = local_123;
-                        if _e136 {
-                            return AirlightResult(340282350000000000000000000000000000000f, 2u);
+                        let _e109 = airlight_point_integral(_e102.scene);
+                        if (_e109.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e109;
                         }
                         if (s_23.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_124 = (s_23.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_124 = false;
                         }
-                        let _e149 = local_124;
-                        if _e149 {
-                            let _e150 = r_5;
-                            return _e150;
+                        let _e122 = local_124;
+                        if _e122 {
+                            return _e109;
                         }
-                        let _e152 = r_5.in_scatter;
-                        f = (_e152 * _e102.weight);
+                        f = (_e109.in_scatter * _e102.weight);
                     }
-                    let _e155 = k_5;
-                    let _e157 = f;
-                    k_5 = (_e155 + (node.y * _e157));
-                    let _e160 = gauss;
-                    let _e162 = f;
-                    gauss = (_e160 + (node.z * _e162));
+                    let _e126 = k_5;
+                    let _e128 = f;
+                    k_5 = (_e126 + (node.y * _e128));
+                    let _e131 = gauss;
+                    let _e133 = f;
+                    gauss = (_e131 + (node.z * _e133));
                 }
                 continuing {
-                    let _e166 = j_3;
-                    j_3 = (_e166 + 1u);
+                    let _e137 = j_3;
+                    j_3 = (_e137 + 1u);
                 }
             }
-            let _e168 = slot_1;
-            let _e169 = a_16;
-            let _e170 = b_12;
-            let _e171 = k_5;
-            let _e173 = k_5;
-            let _e175 = gauss;
-            airlight_list_set((&list_1), _e168, vec4<f32>(_e169, _e170, (_e171 * hw_3), abs(((_e173 * hw_3) - (_e175 * hw_3)))));
-            let _e180 = slot_1;
-            let _e181 = count_2;
-            if (_e180 == _e181) {
-                let _e183 = count_2;
-                count_2 = (_e183 + 1u);
+            let _e139 = slot_1;
+            let _e140 = a_16;
+            let _e141 = b_12;
+            let _e142 = k_5;
+            let _e144 = k_5;
+            let _e146 = gauss;
+            airlight_list_set((&list_1), _e139, vec4<f32>(_e140, _e141, (_e142 * hw_3), abs(((_e144 * hw_3) - (_e146 * hw_3)))));
+            let _e151 = slot_1;
+            let _e152 = count_2;
+            if (_e151 == _e152) {
+                let _e154 = count_2;
+                count_2 = (_e154 + 1u);
             }
-            let _e186 = count_2;
-            if (_e186 < _e6.panels) {
-                let _e190 = count_2;
-                a_16 = _e6.edges[_e190];
-                let _e193 = count_2;
-                b_12 = _e6.edges[(_e193 + 1u)];
-                let _e197 = count_2;
-                slot_1 = _e197;
+            let _e157 = count_2;
+            if (_e157 < _e6.panels) {
+                let _e161 = count_2;
+                a_16 = _e6.edges[_e161];
+                let _e164 = count_2;
+                b_12 = _e6.edges[(_e164 + 1u)];
+                let _e168 = count_2;
+                slot_1 = _e168;
             } else {
-                let _e198 = queued;
-                if _e198 {
-                    let _e199 = queued_lo;
-                    a_16 = _e199;
-                    let _e200 = queued_hi;
-                    b_12 = _e200;
-                    let _e201 = count_2;
-                    slot_1 = _e201;
+                let _e169 = queued;
+                if _e169 {
+                    let _e170 = queued_lo;
+                    a_16 = _e170;
+                    let _e171 = queued_hi;
+                    b_12 = _e171;
+                    let _e172 = count_2;
+                    slot_1 = _e172;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     loop {
-                        let _e207 = tries;
-                        if (_e207 < _e6.max_panels) {
+                        let _e178 = tries;
+                        if (_e178 < _e6.max_panels) {
                         } else {
                             break;
                         }
                         {
-                            let _e210 = list_1;
-                            let _e211 = count_2;
-                            let _e212 = airlight_list_scan(_e210, _e211);
-                            let total_4 = _e212.total;
-                            let worst_1 = _e212.worst;
-                            if !(!((_e212.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e223 = count_2;
-                                local_125 = (_e223 == _e6.max_panels);
+                            let _e181 = list_1;
+                            let _e182 = count_2;
+                            let _e183 = airlight_list_scan(_e181, _e182);
+                            let total_4 = _e183.total;
+                            let worst_1 = _e183.worst;
+                            if !(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
+                                let _e194 = count_2;
+                                local_125 = (_e194 == _e6.max_panels);
                             } else {
                                 local_125 = true;
                             }
-                            let _e227 = local_125;
-                            if !(_e227) {
-                                let _e231 = airlight_is_finite(total_4);
-                                local_126 = !(_e231);
+                            let _e198 = local_125;
+                            if !(_e198) {
+                                let _e202 = airlight_is_finite(total_4);
+                                local_126 = !(_e202);
                             } else {
                                 local_126 = true;
                             }
-                            let _e234 = local_126;
-                            if _e234 {
+                            let _e205 = local_126;
+                            if _e205 {
                                 break;
                             }
-                            let _e235 = list_1;
-                            let _e236 = airlight_list_get(_e235, worst_1);
-                            let wa_1 = _e236.x;
-                            let wb_1 = _e236.y;
+                            let _e206 = list_1;
+                            let _e207 = airlight_list_get(_e206, worst_1);
+                            let wa_1 = _e207.x;
+                            let wb_1 = _e207.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
                                 local_127 = (mid_3 < wb_1);
                             } else {
                                 local_127 = false;
                             }
-                            let _e247 = local_127;
-                            if !(_e247) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e236.xyz, 0f));
+                            let _e218 = local_127;
+                            if !(_e218) {
+                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e207.xyz, 0f));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -4793,28 +4799,28 @@ fn airlight_in_scatter(s_23: AirlightScene) -> AirlightResult {
                             break;
                         }
                         continuing {
-                            let _e255 = tries;
-                            tries = (_e255 + 1u);
+                            let _e226 = tries;
+                            tries = (_e226 + 1u);
                         }
                     }
-                    let _e257 = split;
-                    if !(_e257) {
+                    let _e228 = split;
+                    if !(_e228) {
                         break;
                     }
                 }
             }
         }
         continuing {
-            let _e260 = step_2;
-            step_2 = (_e260 + 1u);
+            let _e231 = step_2;
+            step_2 = (_e231 + 1u);
         }
     }
-    let _e262 = list_1;
-    let _e263 = count_2;
-    let _e264 = airlight_list_scan(_e262, _e263);
-    let total_5 = _e264.total;
-    let _e266 = airlight_is_finite(total_5);
-    if !(_e266) {
+    let _e233 = list_1;
+    let _e234 = count_2;
+    let _e235 = airlight_list_scan(_e233, _e234);
+    let total_5 = _e235.total;
+    let _e237 = airlight_is_finite(total_5);
+    if !(_e237) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

@@ -24,7 +24,7 @@ use airlight_shaders::gpu::{Gpu, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID};
 use airlight::record::SceneRecord;
 use airlight_codegen::scene_json::parse_value;
-use airlight_shaders::targets::{default_out_dir, point_compute_wgsl, NODE_COUNTS};
+use airlight_shaders::targets::{compute_wgsl, default_out_dir, point_compute_wgsl, NODE_COUNTS};
 use airlight_tests::scenes::{random, Aniso, Plain};
 use airlight_tests::{class_cases, reference_lines, rel_err, repo_root, ClassCase, Rng};
 use std::process::Command;
@@ -542,7 +542,7 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
         compare(&format!("wgsl airlight_in_scatter_point/{terms}"), &c, &shader.run(&c.records, false).unwrap());
         let mut others = segment.to_vec();
         others.extend_from_slice(&surface);
-        let general = gpu.run(Shader::Wgsl(&std::fs::read_to_string(default_out_dir().join(format!("wgsl/airlight_{terms}.wgsl"))).unwrap()), &others, false).unwrap();
+        let general = gpu.run(Shader::Wgsl(compute_wgsl(terms)), &others, false).unwrap();
         let point = shader.run(&others, false).unwrap();
         for (k, what) in ["segment light", "surface point"].iter().enumerate() {
             let (v, status) = unpack_result(&general[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);

@@ -1781,7 +1781,8 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
 // ---------------------------------------------------------------- outer integrals
 // Every result is one loop of point-light ray integrals, by globally adaptive Gauss–Kronrod 3/7
 // to the panels' tolerance over an outer variable (kernel/src/extended.rs `adaptive`): a point
-// light is the first node of the loop, so the ray integral has one call site.
+// light is the first node of the loop, so the ray integral has one call site in
+// `airlight_in_scatter` (`airlight_in_scatter_point` calls it alone).
 // * A segment light (extended.rs, SegmentScene::in_scatter_panels_counted with SHADER_CONTROL)
 //   `a → b` of intensity I per unit length sheds L = ∫_0^ℓ L_point(a + s·e) ds, taken in w with
 //   s = s* + (ρ*/sin α) sinh w about the emitter's closest approach to the ray's line
@@ -2104,7 +2105,18 @@ fn airlight_in_scatter_point(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s) || s.light_shape != AIRLIGHT_SHAPE_POINT || s.surface_kind != AIRLIGHT_SURFACE_NONE) {
         return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
     }
-    let r = airlight_in_scatter_canonical(s, airlight_refined(s, airlight_canonical(s)));
+    return airlight_point_integral(s);
+}
+
+/// The ray integral of the point light of `p` (a node of an outer integral, or a validated point
+/// scene): 0 where the node's light or direction is not finite, (FLT_MAX, INFINITE) where the
+/// integral is not finite or the light is on the segment. The one place both public entries
+/// reach the canonical problem from.
+fn airlight_point_integral(p: AirlightScene) -> AirlightResult {
+    var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
+    if (airlight_vec_finite(p.light_position) && airlight_vec_finite(p.dir)) {
+        r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
+    }
     if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
@@ -2150,14 +2162,10 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
             let at = airlight_outer_node(s, g, w);
             var f = 0.0;
             if (at.weight != 0.0) {
-                let p = at.scene;
-                var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
-                if (airlight_vec_finite(p.light_position) && airlight_vec_finite(p.dir)) {
-                    r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
-                }
+                let r = airlight_point_integral(at.scene);
                 // a point light, or a node on the ray (the kernel's sum is then +∞ at once)
-                if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
-                    return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+                if (r.status == AIRLIGHT_STATUS_INFINITE) {
+                    return r;
                 }
                 if (s.light_shape == AIRLIGHT_SHAPE_POINT && s.surface_kind == AIRLIGHT_SURFACE_NONE) {
                     return r;
