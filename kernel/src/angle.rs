@@ -52,7 +52,7 @@ use crate::geometry::Canonical;
 use crate::light::LightDistribution;
 use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
 use crate::phase::PhaseFunction;
-use crate::real::{hypot1, Real};
+use crate::real::{atan2_upper, hypot1, Real};
 use crate::scalar::Scalar;
 
 /// What the route did.
@@ -101,16 +101,16 @@ where
     // full relative accuracy: F's lobes and the exponential's layer sit at the poles, where
     // cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase function
     // amplifies that, as for the panels' `1 ∓ μ`).
-    let psi0 = T::one().atan2(-u0);
+    let psi0 = atan2_upper(T::one(), -u0);
     // the half-width from the segment's length, not from the difference of the ends' angles
     // (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0, 1 + u0 u1),
     // 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
     let (psi1, width) = if y_cut < y1 {
-        (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * (y_cut - y0).atan2(T::one() + y0 * y_cut))
+        (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut))
     } else if u1.is_finite() {
-        (T::one().atan2(u1), ((g.t1 - g.t0) / h).atan2(T::one() + u0 * u1))
+        (atan2_upper(T::one(), u1), atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1))
     } else {
-        (T::zero(), T::one().atan2(u0))
+        (T::zero(), atan2_upper(T::one(), u0))
     };
     let hw = width * T::lit(0.5);
     if !(hw > T::zero()) {

@@ -228,3 +228,17 @@ pub(crate) fn hypot1<T: Real>(x: T) -> T {
     }
 }
 
+
+/// `atan2(y, x)` for `y > 0` (the upper half-plane, `(0, π)`) by one `atan`, of `y/x` where
+/// `x > 0`, else `π/2 + atan(−x/y)`: one rounding more than the library's `atan2` (the
+/// quotient's, at most half an ulp relative, which `atan` does not amplify: `|x atan′(x)| ≤
+/// atan x`), at the cost of one `atan` instead of `atan2`'s general reduction. The shaders'
+/// `airlight_atan2_upper` is the same function.
+#[inline]
+pub(crate) fn atan2_upper<T: Real>(y: T, x: T) -> T {
+    if x > T::zero() {
+        (y / x).atan()
+    } else {
+        T::FRAC_PI_2() + (-x / y).atan()
+    }
+}
