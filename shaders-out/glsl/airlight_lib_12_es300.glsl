@@ -144,6 +144,7 @@ const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
 const uint AIRLIGHT_STATUS_OK = 0u;
 const uint AIRLIGHT_STATUS_INVALID = 1u;
 const uint AIRLIGHT_STATUS_INFINITE = 2u;
+const uint AIRLIGHT_STATUS_DEFERRED = 3u;
 const uint AIRLIGHT_MAX_POWER = 1024u;
 const uint AIRLIGHT_MAX_POWER_BITS = 11u;
 const uint AIRLIGHT_E1_SERIES_TERMS = 13u;
@@ -242,13 +243,13 @@ vec2 airlight_cmul(vec2 a, vec2 b) {
 
 vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
     if ((abs(b_1.x) >= abs(b_1.y))) {
-        float r_6 = (b_1.y / b_1.x);
-        float inv = (1.0 / (b_1.x + (b_1.y * r_6)));
-        return vec2(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
+        float r_7 = (b_1.y / b_1.x);
+        float inv = (1.0 / (b_1.x + (b_1.y * r_7)));
+        return vec2(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
     }
-    float r_7 = (b_1.x / b_1.y);
-    float inv_1 = (1.0 / ((b_1.x * r_7) + b_1.y));
-    return vec2((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
+    float r_8 = (b_1.x / b_1.y);
+    float inv_1 = (1.0 / ((b_1.x * r_8) + b_1.y));
+    return vec2((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
 }
 
 float airlight_cabs(vec2 z) {
@@ -282,8 +283,8 @@ vec2 airlight_csqrt(vec2 z_1) {
 vec2 airlight_cos_sin(float x) {
     float z_9 = (x * x);
     float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_26 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return vec2(c_7, (s_26 * x));
+    float s_29 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return vec2(c_7, (s_29 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -332,8 +333,8 @@ float airlight_log1p(float x_2) {
     if ((x_2 > 1.0)) {
         return log((1.0 + x_2));
     }
-    float s_27 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_27 * s_27);
+    float s_30 = (x_2 / (2.0 + x_2));
+    float s2_ = (s_30 * s_30);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
@@ -353,7 +354,7 @@ float airlight_log1p(float x_2) {
         }
     }
     float _e35 = sum;
-    return ((2.0 * s_27) * _e35);
+    return ((2.0 * s_30) * _e35);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -2098,8 +2099,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
     uint i_8 = 0u;
     float m_2[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 _e8[6] = airlight_gauss_rule();
-    float r_8 = ((b_5 - a_6) * 0.5);
-    float yc_1 = (a_6 + r_8);
+    float r_9 = ((b_5 - a_6) * 0.5);
+    float yc_1 = (a_6 + r_9);
     float _e13[12] = airlight_zero_terms();
     samples_1 = _e13;
     bool loop_init_12 = true;
@@ -2117,8 +2118,8 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
         {
             uint _e28 = i_8;
             float _e29 = airlight_node(_e8, _e28);
-            float y_7 = (yc_1 + (r_8 * _e29));
-            float weight = exp(((-(half_7.big_h) * (r_8 * (1.0 - _e29))) / (y_7 * b_5)));
+            float y_7 = (yc_1 + (r_9 * _e29));
+            float weight = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
             float _e41 = airlight_integrand(s_6, g_9, sigma_5, y_7);
             float over_1 = (1.0 / (1.0 + (y_7 * y_7)));
             uint _e47 = i_8;
@@ -2140,11 +2141,11 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
     float _e81[12] = samples_1;
     float _e82[12] = airlight_legendre(_e81);
     float _e83 = airlight_factor(half_7, a_6, b_5);
-    float w_2 = (_e83 * r_8);
+    float w_2 = (_e83 * r_9);
     float _e85[12] = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2.0;
-    float _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_8, true);
+    float _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9, true);
     float _e93 = airlight_tail_estimate(_e82);
     float _e95[12] = m_2;
     float _e96 = airlight_error_factor(_e82, _e95, _e90);
@@ -2268,8 +2269,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     float spread = 0.0;
     float next = 0.0;
     vec2 _e6[6] = airlight_gauss_rule();
-    float r_9 = ((b_6 - a_7) * 0.5);
-    float yc_2 = (a_7 + r_9);
+    float r_10 = ((b_6 - a_7) * 0.5);
+    float yc_2 = (a_7 + r_10);
     float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
     bool loop_init_13 = true;
@@ -2287,7 +2288,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
         {
             uint _e22 = i_9;
             float _e23 = airlight_node(_e6, _e22);
-            float y_8 = (yc_2 + (r_9 * _e23));
+            float y_8 = (yc_2 + (r_10 * _e23));
             float _e26 = airlight_integrand(s_7, g_10, sigma_6, y_8);
             uint _e27 = i_9;
             samples_2[_e27] = (_e26 / (1.0 + (y_8 * y_8)));
@@ -2302,8 +2303,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     }
     float _e53[12] = samples_2;
     float _e54[12] = airlight_legendre(_e53);
-    float alpha = (b_6 / r_9);
-    float beta = (-(yc_2) / r_9);
+    float alpha = (b_6 / r_10);
+    float beta = (-(yc_2) / r_10);
     float _e58[12] = airlight_legendre_to_monomial(_e54);
     float _e59[12] = airlight_zero_terms();
     q = _e59;
@@ -3016,8 +3017,8 @@ float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float
 float airlight_cut_length(float big_h_1, float v_s) {
     float inv_h = (1.0 / big_h_1);
     float w_3 = (v_s + inv_h);
-    float r_10 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_10) / (0.000100000005 * 0.0001))));
+    float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
+    float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
 
@@ -3680,41 +3681,13 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
     return _e76;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonical g_19) {
+AirlightResult airlight_limits(AirlightScene s_14, AirlightCanonical g_19) {
     bool local_39 = false;
     bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
     float gap_2 = 0.0;
     bool local_43 = false;
-    bool local_44 = false;
-    bool local_45 = false;
-    bool local_46 = false;
-    bool local_47 = false;
-    bool local_48 = false;
-    bool local_49 = false;
-    bool local_50 = false;
-    bool local_51 = false;
-    bool local_52 = false;
-    float total_3 = 0.0;
-    float f_max_7 = 0.0;
-    bool behind_cut = false;
-    float t_end = 0.0;
-    bool local_53 = false;
-    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_54 = false;
-    bool local_55 = false;
-    bool local_56 = false;
-    float y_lo = 0.0;
-    float dv_3 = 0.0;
-    float dy = 0.0;
-    bool infinite_2 = true;
-    bool local_57 = false;
-    bool local_58 = false;
-    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    bool local_59 = false;
-    bool local_60 = false;
-    bool local_61 = false;
     float t0_ = g_19.t_lo;
     float t1_ = g_19.t_hi;
     if (!(g_19.t_hi_infinite)) {
@@ -3767,212 +3740,257 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_14, AirlightCanonic
     if ((h_5 == 0.0)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    float big_h_8 = (s_14.sigma_t * h_5);
-    if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_45 = (s_14.light_param_a == 0.0);
+    return AirlightResult(0.0, 3u);
+}
+
+bool airlight_isotropic_scene(AirlightScene s_15) {
+    bool local_44 = false;
+    bool local_45 = false;
+    bool local_46 = false;
+    bool local_47 = false;
+    bool local_48 = false;
+    bool local_49 = false;
+    if (!((s_15.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_45 = (s_15.light_param_a == 0.0);
         } else {
             local_45 = false;
         }
-        bool _e83 = local_45;
-        local_44 = _e83;
+        bool _e16 = local_45;
+        local_44 = _e16;
     } else {
         local_44 = true;
     }
-    bool _e85 = local_44;
-    if (_e85) {
-        if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+    bool _e18 = local_44;
+    if (_e18) {
+        if (!((s_15.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_15.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_48 = (s_15.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_48 = true;
             }
-            bool _e104 = local_48;
-            if (_e104) {
-                local_49 = (s_14.phase_param_a == 0.0);
+            bool _e37 = local_48;
+            if (_e37) {
+                local_49 = (s_15.phase_param_a == 0.0);
             } else {
                 local_49 = false;
             }
-            bool _e111 = local_49;
-            local_47 = _e111;
+            bool _e44 = local_49;
+            local_47 = _e44;
         } else {
             local_47 = true;
         }
-        bool _e113 = local_47;
-        local_46 = _e113;
+        bool _e46 = local_47;
+        local_46 = _e46;
     } else {
         local_46 = false;
     }
-    bool isotropic_1 = local_46;
-    if (isotropic_1) {
-        local_50 = (t0_ < x_h);
+    bool _e48 = local_46;
+    return _e48;
+}
+
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonical g_20) {
+    bool local_50 = false;
+    bool local_51 = false;
+    bool local_52 = false;
+    float total_3 = 0.0;
+    float f_max_7 = 0.0;
+    bool behind_cut = false;
+    float t_end = 0.0;
+    bool local_53 = false;
+    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_54 = false;
+    bool local_55 = false;
+    bool local_56 = false;
+    float y_lo = 0.0;
+    float dv_3 = 0.0;
+    float dy = 0.0;
+    bool infinite_2 = true;
+    bool local_57 = false;
+    bool local_58 = false;
+    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_59 = false;
+    bool local_60 = false;
+    bool local_61 = false;
+    AirlightResult _e2 = airlight_limits(s_16, g_20);
+    if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
+        return _e2;
+    }
+    float t0_1 = g_20.t_lo;
+    float t1_1 = g_20.t_hi;
+    float h_6 = g_20.h;
+    float x_h_1 = g_20.x_h;
+    float big_h_8 = (s_16.sigma_t * h_6);
+    bool _e12 = airlight_isotropic_scene(s_16);
+    if (_e12) {
+        local_50 = (t0_1 < x_h_1);
     } else {
         local_50 = false;
     }
-    bool _e120 = local_50;
-    if (_e120) {
-        if (!(g_19.t_hi_infinite)) {
-            local_52 = (x_h < t1_);
+    bool _e17 = local_50;
+    if (_e17) {
+        if (!(g_20.t_hi_infinite)) {
+            local_52 = (x_h_1 < t1_1);
         } else {
             local_52 = true;
         }
-        bool _e129 = local_52;
-        local_51 = _e129;
+        bool _e26 = local_52;
+        local_51 = _e26;
     } else {
         local_51 = false;
     }
-    bool _e131 = local_51;
-    if (_e131) {
-        float _e132 = airlight_whole_line(s_14, g_19, big_h_8);
-        return AirlightResult(max(_e132, 0.0), AIRLIGHT_STATUS_OK);
+    bool _e28 = local_51;
+    if (_e28) {
+        float _e29 = airlight_whole_line(s_16, g_20, big_h_8);
+        return AirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
     }
-    if (!(isotropic_1)) {
-        vec2 _e138 = airlight_angle_route(s_14, g_19);
-        if ((_e138.x > 0.5)) {
-            return AirlightResult(max(_e138.y, 0.0), AIRLIGHT_STATUS_OK);
+    if (!(_e12)) {
+        vec2 _e35 = airlight_angle_route(s_16, g_20);
+        if ((_e35.x > 0.5)) {
+            return AirlightResult(max(_e35.y, 0.0), AIRLIGHT_STATUS_OK);
         }
     }
-    bool cut = !(isotropic_1);
-    if ((t0_ < x_h)) {
-        float a_s_1 = ((x_h - t0_) / h_5);
-        t_end = x_h;
-        if (!(g_19.t_hi_infinite)) {
-            local_53 = (t1_ < x_h);
+    bool cut = !(_e12);
+    if ((t0_1 < x_h_1)) {
+        float a_s_1 = ((x_h_1 - t0_1) / h_6);
+        t_end = x_h_1;
+        if (!(g_20.t_hi_infinite)) {
+            local_53 = (t1_1 < x_h_1);
         } else {
             local_53 = false;
         }
-        bool _e164 = local_53;
-        if (_e164) {
-            t_end = t1_;
+        bool _e61 = local_53;
+        if (_e61) {
+            t_end = t1_1;
         }
-        float _e165 = t_end;
-        float a_e = ((x_h - _e165) / h_5);
-        float _e168 = airlight_hypot_one(a_s_1);
-        float _e169 = airlight_hypot_one(a_e);
-        float _e170 = airlight_bounded(a_s_1);
-        float _e171 = airlight_bounded(a_e);
-        float _e172 = t_end;
-        float dy_1 = (((((_e172 - t0_) / h_5) * (1.0 + ((a_s_1 + a_e) / (_e168 + _e169)))) * _e170) * _e171);
-        float _e185 = airlight_optical(big_h_8, dy_1, false);
-        half_13 = AirlightHalf(false, _e185, _e170, _e171, dy_1, dy_1, false);
+        float _e62 = t_end;
+        float a_e = ((x_h_1 - _e62) / h_6);
+        float _e65 = airlight_hypot_one(a_s_1);
+        float _e66 = airlight_hypot_one(a_e);
+        float _e67 = airlight_bounded(a_s_1);
+        float _e68 = airlight_bounded(a_e);
+        float _e69 = t_end;
+        float dy_1 = (((((_e69 - t0_1) / h_6) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
+        float _e82 = airlight_optical(big_h_8, dy_1, false);
+        half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut) {
-            float _e192 = half_13.big_h;
-            local_54 = (_e192 > 0.0);
+            float _e89 = half_13.big_h;
+            local_54 = (_e89 > 0.0);
         } else {
             local_54 = false;
         }
-        bool _e196 = local_54;
-        if (_e196) {
-            float _e198 = half_13.big_h;
-            float _e199 = airlight_cut_length(_e198, _e170);
-            if ((_e199 < dy_1)) {
-                float _e203 = half_13.big_h;
-                half_13 = AirlightHalf(false, _e203, _e170, (_e170 + _e199), _e199, _e199, false);
+        bool _e93 = local_54;
+        if (_e93) {
+            float _e95 = half_13.big_h;
+            float _e96 = airlight_cut_length(_e95, _e67);
+            if ((_e96 < dy_1)) {
+                float _e100 = half_13.big_h;
+                half_13 = AirlightHalf(false, _e100, _e67, (_e67 + _e96), _e96, _e96, false);
                 behind_cut = true;
             }
         }
-        AirlightHalf _e209 = half_13;
-        float _e210 = airlight_half(s_14, g_19, -1.0, _e209, isotropic_1, f_max_7);
-        float _e211 = total_3;
-        float _e215 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, (big_h_8 * _e168), _e210);
-        total_3 = (_e211 + _e215);
+        AirlightHalf _e106 = half_13;
+        float _e107 = airlight_half(s_16, g_20, -1.0, _e106, _e12, f_max_7);
+        float _e108 = total_3;
+        float _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (big_h_8 * _e65), _e107);
+        total_3 = (_e108 + _e112);
     }
-    if (!(g_19.t_hi_infinite)) {
-        local_55 = (t1_ > x_h);
+    if (!(g_20.t_hi_infinite)) {
+        local_55 = (t1_1 > x_h_1);
     } else {
         local_55 = true;
     }
-    bool _e223 = local_55;
-    if (_e223) {
-        bool _e226 = behind_cut;
-        local_56 = !(_e226);
+    bool _e120 = local_55;
+    if (_e120) {
+        bool _e123 = behind_cut;
+        local_56 = !(_e123);
     } else {
         local_56 = false;
     }
-    bool _e229 = local_56;
-    if (_e229) {
-        float t_start = max(t0_, x_h);
-        float a_s_2 = ((t_start - x_h) / h_5);
-        float _e233 = airlight_hypot_one(a_s_2);
-        float _e234 = airlight_bounded(a_s_2);
-        dy = _e234;
-        float a_e_1 = ((t1_ - x_h) / h_5);
-        if (!(g_19.t_hi_infinite)) {
-            bool _e248 = airlight_is_finite(a_e_1);
-            local_57 = _e248;
+    bool _e126 = local_56;
+    if (_e126) {
+        float t_start = max(t0_1, x_h_1);
+        float a_s_2 = ((t_start - x_h_1) / h_6);
+        float _e130 = airlight_hypot_one(a_s_2);
+        float _e131 = airlight_bounded(a_s_2);
+        dy = _e131;
+        float a_e_1 = ((t1_1 - x_h_1) / h_6);
+        if (!(g_20.t_hi_infinite)) {
+            bool _e145 = airlight_is_finite(a_e_1);
+            local_57 = _e145;
         } else {
             local_57 = false;
         }
-        bool _e250 = local_57;
-        if (_e250) {
-            float _e251 = airlight_bounded(a_e_1);
-            float _e255 = airlight_hypot_one(a_e_1);
-            float dv_end_1 = (((t1_ - t_start) / h_5) * (1.0 + ((a_s_2 + a_e_1) / (_e233 + _e255))));
-            if ((_e251 > 0.0)) {
-                bool _e265 = airlight_is_finite(dv_end_1);
-                local_58 = _e265;
+        bool _e147 = local_57;
+        if (_e147) {
+            float _e148 = airlight_bounded(a_e_1);
+            float _e152 = airlight_hypot_one(a_e_1);
+            float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
+            if ((_e148 > 0.0)) {
+                bool _e162 = airlight_is_finite(dv_end_1);
+                local_58 = _e162;
             } else {
                 local_58 = false;
             }
-            bool _e267 = local_58;
-            if (_e267) {
-                y_lo = _e251;
+            bool _e164 = local_58;
+            if (_e164) {
+                y_lo = _e148;
                 dv_3 = dv_end_1;
-                float _e268 = dv_3;
-                float _e269 = y_lo;
-                dy = ((_e268 * _e269) * _e234);
+                float _e165 = dv_3;
+                float _e166 = y_lo;
+                dy = ((_e165 * _e166) * _e131);
                 infinite_2 = false;
             }
         }
-        float _e274 = dv_3;
-        bool _e275 = infinite_2;
-        float _e276 = airlight_optical(big_h_8, _e274, _e275);
-        float _e277 = y_lo;
-        float _e278 = dy;
-        float _e279 = dv_3;
-        bool _e280 = infinite_2;
-        half_14 = AirlightHalf(true, _e276, _e277, _e234, _e278, _e279, _e280);
+        float _e171 = dv_3;
+        bool _e172 = infinite_2;
+        float _e173 = airlight_optical(big_h_8, _e171, _e172);
+        float _e174 = y_lo;
+        float _e175 = dy;
+        float _e176 = dv_3;
+        bool _e177 = infinite_2;
+        half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut) {
-            float _e286 = half_14.big_h;
-            local_59 = (_e286 > 0.0);
+            float _e183 = half_14.big_h;
+            local_59 = (_e183 > 0.0);
         } else {
             local_59 = false;
         }
-        bool _e290 = local_59;
-        if (_e290) {
-            float _e292 = half_14.big_h;
-            float _e295 = airlight_cut_length(_e292, (1.0 / _e234));
-            bool _e296 = infinite_2;
-            if (!(_e296)) {
-                float _e300 = dv_3;
-                local_60 = (_e295 < _e300);
+        bool _e187 = local_59;
+        if (_e187) {
+            float _e189 = half_14.big_h;
+            float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
+            bool _e193 = infinite_2;
+            if (!(_e193)) {
+                float _e197 = dv_3;
+                local_60 = (_e192 < _e197);
             } else {
                 local_60 = true;
             }
-            bool _e303 = local_60;
-            if (_e303) {
-                float cut_y_lo = (_e234 / (1.0 + (_e234 * _e295)));
+            bool _e200 = local_60;
+            if (_e200) {
+                float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
                 if ((cut_y_lo > 0.0)) {
-                    bool _e312 = airlight_is_finite(_e295);
-                    local_61 = _e312;
+                    bool _e209 = airlight_is_finite(_e192);
+                    local_61 = _e209;
                 } else {
                     local_61 = false;
                 }
-                bool _e314 = local_61;
-                if (_e314) {
-                    float _e317 = half_14.big_h;
-                    half_14 = AirlightHalf(true, _e317, cut_y_lo, _e234, ((_e295 * cut_y_lo) * _e234), _e295, false);
+                bool _e211 = local_61;
+                if (_e211) {
+                    float _e214 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
                 }
             }
         }
-        AirlightHalf _e323 = half_14;
-        float _e324 = airlight_half(s_14, g_19, 1.0, _e323, isotropic_1, f_max_7);
-        float _e325 = total_3;
-        float _e333 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, ((s_14.sigma_t * (t_start - t0_)) + (big_h_8 * _e233)), _e324);
-        total_3 = (_e325 + _e333);
+        AirlightHalf _e220 = half_14;
+        float _e221 = airlight_half(s_16, g_20, 1.0, _e220, _e12, f_max_7);
+        float _e222 = total_3;
+        float _e230 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, ((s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
+        total_3 = (_e222 + _e230);
     }
-    float _e335 = total_3;
-    return AirlightResult(max(_e335, 0.0), AIRLIGHT_STATUS_OK);
+    float _e232 = total_3;
+    return AirlightResult(max(_e232, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 bool airlight_vec_finite(vec3 v) {
@@ -4023,7 +4041,7 @@ vec3 airlight_normalize(vec3 v_3) {
     return (u_2 / vec3(length(u_2)));
 }
 
-bool airlight_valid(AirlightScene s_15) {
+bool airlight_valid(AirlightScene s_17) {
     bool local_65 = false;
     bool local_66 = false;
     bool local_67 = false;
@@ -4058,96 +4076,96 @@ bool airlight_valid(AirlightScene s_15) {
     bool local_95 = false;
     bool local_96 = false;
     bool local_97 = false;
-    bool _e2 = airlight_vec_finite(s_15.origin);
+    bool _e2 = airlight_vec_finite(s_17.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_15.dir);
+        bool _e6 = airlight_vec_finite(s_17.dir);
         local_65 = _e6;
     } else {
         local_65 = false;
     }
     bool _e8 = local_65;
     if (_e8) {
-        bool _e12 = airlight_normalisable(s_15.dir);
+        bool _e12 = airlight_normalisable(s_17.dir);
         local_66 = _e12;
     } else {
         local_66 = false;
     }
     bool _e14 = local_66;
     if (_e14) {
-        bool _e18 = airlight_is_finite(s_15.t_min);
+        bool _e18 = airlight_is_finite(s_17.t_min);
         local_67 = _e18;
     } else {
         local_67 = false;
     }
     bool _e20 = local_67;
     if (_e20) {
-        bool _e24 = airlight_vec_finite(s_15.light_position);
+        bool _e24 = airlight_vec_finite(s_17.light_position);
         local_68 = _e24;
     } else {
         local_68 = false;
     }
     bool _e26 = local_68;
     if (_e26) {
-        bool _e30 = airlight_is_finite(s_15.intensity);
+        bool _e30 = airlight_is_finite(s_17.intensity);
         local_69 = _e30;
     } else {
         local_69 = false;
     }
     bool _e32 = local_69;
     if (_e32) {
-        local_70 = (s_15.intensity >= 0.0);
+        local_70 = (s_17.intensity >= 0.0);
     } else {
         local_70 = false;
     }
     bool _e39 = local_70;
     if (_e39) {
-        bool _e43 = airlight_is_finite(s_15.sigma_s);
+        bool _e43 = airlight_is_finite(s_17.sigma_s);
         local_71 = _e43;
     } else {
         local_71 = false;
     }
     bool _e45 = local_71;
     if (_e45) {
-        local_72 = (s_15.sigma_s >= 0.0);
+        local_72 = (s_17.sigma_s >= 0.0);
     } else {
         local_72 = false;
     }
     bool _e52 = local_72;
     if (_e52) {
-        bool _e56 = airlight_is_finite(s_15.sigma_t);
+        bool _e56 = airlight_is_finite(s_17.sigma_t);
         local_73 = _e56;
     } else {
         local_73 = false;
     }
     bool _e58 = local_73;
     if (_e58) {
-        local_74 = (s_15.sigma_t >= 0.0);
+        local_74 = (s_17.sigma_t >= 0.0);
     } else {
         local_74 = false;
     }
     bool _e65 = local_74;
     ok = _e65;
-    if (((s_15.flags & 1u) == 0u)) {
+    if (((s_17.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_15.t_max);
+            bool _e76 = airlight_is_finite(s_17.t_max);
             local_75 = _e76;
         } else {
             local_75 = false;
         }
         bool _e78 = local_75;
         if (_e78) {
-            local_76 = (s_15.t_min <= s_15.t_max);
+            local_76 = (s_17.t_min <= s_17.t_max);
         } else {
             local_76 = false;
         }
         bool _e85 = local_76;
         ok = _e85;
     }
-    if ((s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
-            bool _e93 = airlight_vec_finite(s_15.light_end);
+            bool _e93 = airlight_vec_finite(s_17.light_end);
             local_77 = _e93;
         } else {
             local_77 = false;
@@ -4155,39 +4173,39 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e95 = local_77;
         ok = _e95;
     } else {
-        if ((s_15.light_shape != AIRLIGHT_SHAPE_POINT)) {
+        if ((s_17.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_15.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
         bool _e103 = ok;
         if (_e103) {
-            bool _e107 = airlight_is_finite(s_15.brdf_albedo);
+            bool _e107 = airlight_is_finite(s_17.brdf_albedo);
             local_78 = _e107;
         } else {
             local_78 = false;
         }
         bool _e109 = local_78;
         if (_e109) {
-            local_79 = (s_15.brdf_albedo >= 0.0);
+            local_79 = (s_17.brdf_albedo >= 0.0);
         } else {
             local_79 = false;
         }
         bool _e116 = local_79;
         if (_e116) {
-            local_80 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_80 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_80 = false;
         }
         bool _e123 = local_80;
         if (_e123) {
-            local_81 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_81 = (s_17.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_81 = false;
         }
         bool _e130 = local_81;
         if (_e130) {
-            float _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
+            float _e136 = airlight_safe_length((s_17.light_position - s_17.origin));
             bool _e137 = airlight_is_finite(_e136);
             local_82 = _e137;
         } else {
@@ -4196,89 +4214,89 @@ bool airlight_valid(AirlightScene s_15) {
         bool _e139 = local_82;
         ok = _e139;
     } else {
-        if ((s_15.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_17.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e147 = ok;
         if (_e147) {
-            bool _e151 = airlight_vec_finite(s_15.light_axis);
+            bool _e151 = airlight_vec_finite(s_17.light_axis);
             local_83 = _e151;
         } else {
             local_83 = false;
         }
         bool _e153 = local_83;
         if (_e153) {
-            bool _e157 = airlight_normalisable(s_15.light_axis);
+            bool _e157 = airlight_normalisable(s_17.light_axis);
             local_84 = _e157;
         } else {
             local_84 = false;
         }
         bool _e159 = local_84;
         if (_e159) {
-            local_85 = (s_15.light_param_a >= 0.0);
+            local_85 = (s_17.light_param_a >= 0.0);
         } else {
             local_85 = false;
         }
         bool _e166 = local_85;
         if (_e166) {
-            local_86 = (s_15.light_param_a <= 1024.0);
+            local_86 = (s_17.light_param_a <= 1024.0);
         } else {
             local_86 = false;
         }
         bool _e173 = local_86;
         if (_e173) {
-            local_87 = (fract((s_15.light_param_a * 0.5)) == 0.0);
+            local_87 = (fract((s_17.light_param_a * 0.5)) == 0.0);
         } else {
             local_87 = false;
         }
         bool _e183 = local_87;
         ok = _e183;
     } else {
-        if ((s_15.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_17.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e187 = ok;
             if (_e187) {
-                bool _e191 = airlight_vec_finite(s_15.light_axis);
+                bool _e191 = airlight_vec_finite(s_17.light_axis);
                 local_88 = _e191;
             } else {
                 local_88 = false;
             }
             bool _e193 = local_88;
             if (_e193) {
-                bool _e197 = airlight_normalisable(s_15.light_axis);
+                bool _e197 = airlight_normalisable(s_17.light_axis);
                 local_89 = _e197;
             } else {
                 local_89 = false;
             }
             bool _e199 = local_89;
             if (_e199) {
-                local_90 = (s_15.light_param_b < s_15.light_param_a);
+                local_90 = (s_17.light_param_b < s_17.light_param_a);
             } else {
                 local_90 = false;
             }
             bool _e206 = local_90;
             if (_e206) {
-                local_91 = (s_15.light_param_b >= -1.0);
+                local_91 = (s_17.light_param_b >= -1.0);
             } else {
                 local_91 = false;
             }
             bool _e213 = local_91;
             if (_e213) {
-                local_92 = (s_15.light_param_a <= 1.0);
+                local_92 = (s_17.light_param_a <= 1.0);
             } else {
                 local_92 = false;
             }
             bool _e220 = local_92;
             ok = _e220;
         } else {
-            if ((s_15.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_17.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_15.phase_param_a) < 1.0);
-    switch(s_15.phase_kind) {
+    bool g_ok = (abs(s_17.phase_param_a) < 1.0);
+    switch(s_17.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4305,19 +4323,19 @@ bool airlight_valid(AirlightScene s_15) {
             }
             bool _e239 = local_94;
             if (_e239) {
-                local_95 = (abs(s_15.phase_param_b) < 1.0);
+                local_95 = (abs(s_17.phase_param_b) < 1.0);
             } else {
                 local_95 = false;
             }
             bool _e247 = local_95;
             if (_e247) {
-                local_96 = (s_15.phase_param_c >= 0.0);
+                local_96 = (s_17.phase_param_c >= 0.0);
             } else {
                 local_96 = false;
             }
             bool _e254 = local_96;
             if (_e254) {
-                local_97 = (s_15.phase_param_c <= 1.0);
+                local_97 = (s_17.phase_param_c <= 1.0);
             } else {
                 local_97 = false;
             }
@@ -4334,26 +4352,26 @@ bool airlight_valid(AirlightScene s_15) {
     return _e263;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_16) {
+AirlightCanonical airlight_canonical(AirlightScene s_18) {
     vec3 a_11 = vec3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    vec3 _e2 = airlight_normalize(s_16.dir);
-    if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e12 = airlight_normalize(s_16.light_axis);
+    vec3 _e2 = airlight_normalize(s_18.dir);
+    if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e12 = airlight_normalize(s_18.light_axis);
         a_11 = _e12;
     }
-    vec3 to_light = (s_16.light_position - s_16.origin);
-    float x_h_1 = dot(to_light, _e2);
-    vec3 perp = ((x_h_1 * _e2) - to_light);
+    vec3 to_light = (s_18.light_position - s_18.origin);
+    float x_h_2 = dot(to_light, _e2);
+    vec3 perp = ((x_h_2 * _e2) - to_light);
     float _e19 = airlight_safe_length(perp);
     if ((_e19 > 0.0)) {
         vec3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_16.flags & 1u) != 0u);
+    bool infinite_3 = ((s_18.flags & 1u) != 0u);
     vec3 _e32 = a_11;
     float _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, (infinite_3 ? 0.0 : s_16.t_max), infinite_3);
+    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_18.t_min, (infinite_3 ? 0.0 : s_18.t_max), infinite_3);
 }
 
 float airlight_opaque(float x_12, uint key) {
@@ -4411,18 +4429,18 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) {
+AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain) {
     bool local_100 = false;
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_101 = false;
     vec3 a_15 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_17.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_17.light_position.x, -(s_17.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_17.light_position.y, -(s_17.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_17.light_position.z, -(s_17.origin.z), key_4);
+    uint key_4 = uint((s_19.flags > 1u));
+    vec2 _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
+    vec2 _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
+    vec2 _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
     vec3 hi_3 = vec3(_e11.x, _e17.x, _e23.x);
     vec3 lo_3 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir_2 = s_17.dir;
+    vec3 dir_2 = s_19.dir;
     bool _e33 = airlight_in_exact_range(hi_3);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
@@ -4451,10 +4469,10 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
         return _e92;
     }
     float _e93 = airlight_safe_length(dir_2);
-    float h_6 = (_e85 / _e93);
-    bool _e95 = airlight_is_finite(h_6);
+    float h_7 = (_e85 / _e93);
+    bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_101 = (h_6 > 0.0);
+        local_101 = (h_7 > 0.0);
     } else {
         local_101 = false;
     }
@@ -4462,14 +4480,14 @@ AirlightCanonical airlight_refined(AirlightScene s_17, AirlightCanonical plain) 
     if (!(_e101)) {
         return plain;
     }
-    if ((s_17.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_17.light_axis);
+    if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        vec3 _e112 = airlight_normalize(s_19.light_axis);
         a_15 = _e112;
     }
     vec3 _e113 = airlight_normalize(dir_2);
     vec3 _e114 = airlight_normalize(w_5);
     vec3 n_2 = -(cross(_e113, _e114));
-    out_2.h = h_6;
+    out_2.h = h_7;
     vec3 _e119 = a_15;
     out_2.d_c = dot(n_2, _e119);
     AirlightCanonical _e121 = out_2;
@@ -4621,19 +4639,19 @@ float airlight_asinh(float x_14) {
     return ((x_14 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_20, float s_18) {
-    if ((g_20.scale > 0.0)) {
-        float _e9 = airlight_asinh(((s_18 - g_20.s_star) / g_20.scale));
+float airlight_to_w(AirlightOuter g_21, float s_20) {
+    if ((g_21.scale > 0.0)) {
+        float _e9 = airlight_asinh(((s_20 - g_21.s_star) / g_21.scale));
         return _e9;
     }
-    return s_18;
+    return s_20;
 }
 
 vec2 airlight_cos_sin_half_turn(float x_15) {
-    float r_11 = (x_15 - 1.5707964);
-    float z_11 = (r_11 * r_11);
+    float r_12 = (x_15 - 1.5707964);
+    float z_11 = (r_12 * r_12);
     float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
-    float sin_r = (r_11 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
@@ -4643,20 +4661,20 @@ float airlight_acos(float x_16) {
     return ((x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_19) {
-    if ((s_19 <= c_6)) {
-        float _e4 = airlight_atan((s_19 / c_6));
+float airlight_angle(float c_6, float s_21) {
+    if ((s_21 <= c_6)) {
+        float _e4 = airlight_atan((s_21 / c_6));
         return _e4;
     }
-    if ((s_19 <= -(c_6))) {
-        float _e10 = airlight_atan((s_19 / -(c_6)));
+    if ((s_21 <= -(c_6))) {
+        float _e10 = airlight_atan((s_21 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if ((c_6 >= 0.0)) {
-        float _e16 = airlight_atan((c_6 / s_19));
+        float _e16 = airlight_atan((c_6 / s_21));
         return (1.5707964 - _e16);
     }
-    float _e21 = airlight_atan((-(c_6) / s_19));
+    float _e21 = airlight_atan((-(c_6) / s_21));
     return (1.5707964 + _e21);
 }
 
@@ -4670,12 +4688,12 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
     return _e18;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_20, uint max_panels) {
-    return AirlightOuter(s_20.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+AirlightOuter airlight_outer_point(AirlightScene s_22, uint max_panels) {
+    return AirlightOuter(s_22.light_position, vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
 }
 
-AirlightOuter airlight_surface(AirlightScene s_21) {
-    AirlightOuter g_21 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+AirlightOuter airlight_surface(AirlightScene s_23) {
+    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_102 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_1[2] = float[2](0.0, 0.0);
@@ -4683,33 +4701,33 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
     uint i_18 = 0u;
     bool local_103 = false;
     uint i_19 = 0u;
-    AirlightOuter _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
-    g_21 = _e2;
-    vec3 to_light_1 = (s_21.light_position - s_21.origin);
+    AirlightOuter _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
+    g_22 = _e2;
+    vec3 to_light_1 = (s_23.light_position - s_23.origin);
     float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_21.intensity == 0.0))) {
-        local_102 = (s_21.sigma_s == 0.0);
+    if (!((s_23.intensity == 0.0))) {
+        local_102 = (s_23.sigma_s == 0.0);
     } else {
         local_102 = true;
     }
     bool _e18 = local_102;
     if (_e18) {
-        g_21.outcome = 1u;
-        AirlightOuter _e21 = g_21;
+        g_22.outcome = 1u;
+        AirlightOuter _e21 = g_22;
         return _e21;
     }
     if (!((_e7 > 0.0))) {
-        g_21.outcome = 2u;
-        AirlightOuter _e27 = g_21;
+        g_22.outcome = 2u;
+        AirlightOuter _e27 = g_22;
         return _e27;
     }
-    if ((s_21.brdf_albedo == 0.0)) {
-        g_21.outcome = 1u;
-        AirlightOuter _e33 = g_21;
+    if ((s_23.brdf_albedo == 0.0)) {
+        g_22.outcome = 1u;
+        AirlightOuter _e33 = g_22;
         return _e33;
     }
     vec3 l_3 = (to_light_1 / vec3(_e7));
-    vec3 _e37 = airlight_normalize(s_21.dir);
+    vec3 _e37 = airlight_normalize(s_23.dir);
     float cos_a_1 = dot(_e37, l_3);
     vec3 across = (_e37 - (cos_a_1 * l_3));
     float _e41 = airlight_safe_length(across);
@@ -4719,11 +4737,11 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
         vec3 _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u_1 = _e64;
     }
-    g_21.l = l_3;
+    g_22.l = l_3;
     vec3 _e67 = u_1;
-    g_21.u = _e67;
-    g_21.cos_a = cos_a_1;
-    g_21.sin_a = _e41;
+    g_22.u = _e67;
+    g_22.cos_a = cos_a_1;
+    g_22.sin_a = _e41;
     float _e71 = airlight_angle(cos_a_1, _e41);
     float first = abs((1.5707964 - _e71));
     cuts_1 = float[2](first, (AIRLIGHT_PI - first));
@@ -4751,7 +4769,7 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
             uint _e96 = i_18;
             float _e98 = cuts_1[_e96];
             uint _e100 = k_5;
-            float _e102 = g_21.gamma[_e100];
+            float _e102 = g_22.gamma[_e100];
             if ((_e98 > _e102)) {
                 uint _e106 = i_18;
                 float _e108 = cuts_1[_e106];
@@ -4766,14 +4784,14 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
                 uint _e117 = k_5;
                 uint _e119 = i_18;
                 float _e121 = cuts_1[_e119];
-                g_21.gamma[_e117] = _e121;
+                g_22.gamma[_e117] = _e121;
             }
         }
     }
     uint _e126 = k_5;
-    g_21.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    g_22.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     uint _e132 = k_5;
-    g_21.panels = (_e132 + 1u);
+    g_22.panels = (_e132 + 1u);
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
@@ -4782,7 +4800,7 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
         }
         loop_init_24 = false;
         uint _e137 = i_19;
-        uint _e139 = g_21.panels;
+        uint _e139 = g_22.panels;
         if ((_e137 <= _e139)) {
         } else {
             break;
@@ -4790,15 +4808,15 @@ AirlightOuter airlight_surface(AirlightScene s_21) {
         {
             uint _e142 = i_19;
             uint _e144 = i_19;
-            g_21.edges[_e142] = float(_e144);
+            g_22.edges[_e142] = float(_e144);
         }
     }
-    AirlightOuter _e149 = g_21;
+    AirlightOuter _e149 = g_22;
     return _e149;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_22) {
-    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
+AirlightOuter airlight_outer(AirlightScene s_24) {
+    AirlightOuter g_23 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[4](0.0, 0.0, 0.0, 0.0));
     bool local_104 = false;
     bool local_105 = false;
     float s_star = 0.0;
@@ -4824,43 +4842,43 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     uint n_1 = 0u;
     uint i_21 = 0u;
     bool local_120 = false;
-    if ((s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        AirlightOuter _e4 = airlight_surface(s_22);
+    if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        AirlightOuter _e4 = airlight_surface(s_24);
         return _e4;
     }
-    AirlightOuter _e6 = airlight_outer_point(s_22, AIRLIGHT_SEGMENT_PANELS);
-    g_22 = _e6;
-    if ((s_22.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e11 = g_22;
+    AirlightOuter _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
+    g_23 = _e6;
+    if ((s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightOuter _e11 = g_23;
         return _e11;
     }
-    vec3 ab_1 = (s_22.light_end - s_22.light_position);
+    vec3 ab_1 = (s_24.light_end - s_24.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_104 = (s_22.intensity == 0.0);
+        local_104 = (s_24.intensity == 0.0);
     } else {
         local_104 = true;
     }
     bool _e26 = local_104;
     if (!(_e26)) {
-        local_105 = (s_22.sigma_s == 0.0);
+        local_105 = (s_24.sigma_s == 0.0);
     } else {
         local_105 = true;
     }
     bool _e34 = local_105;
     if (_e34) {
-        g_22.outcome = 1u;
-        AirlightOuter _e37 = g_22;
+        g_23.outcome = 1u;
+        AirlightOuter _e37 = g_23;
         return _e37;
     }
     vec3 e_4 = (ab_1 / vec3(_e15));
-    vec3 _e41 = airlight_normalize(s_22.dir);
-    vec3 w0_ = (s_22.light_position - s_22.origin);
+    vec3 _e41 = airlight_normalize(s_24.dir);
+    vec3 w0_ = (s_24.light_position - s_24.origin);
     float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_22.flags & 1u) != 0u);
+    bool infinite_4 = ((s_24.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4892,7 +4910,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     bool _e97 = local_108;
     if (_e97) {
         float _e101 = t_star;
-        local_109 = (s_22.t_min <= _e101);
+        local_109 = (s_24.t_min <= _e101);
     } else {
         local_109 = false;
     }
@@ -4900,7 +4918,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_111 = (_e110 <= s_22.t_max);
+            local_111 = (_e110 <= s_24.t_max);
         } else {
             local_111 = true;
         }
@@ -4911,8 +4929,8 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     }
     bool _e116 = local_110;
     if (_e116) {
-        g_22.outcome = 2u;
-        AirlightOuter _e119 = g_22;
+        g_23.outcome = 2u;
+        AirlightOuter _e119 = g_23;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
@@ -4962,13 +4980,13 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_22.e = e_4;
+    g_23.e = e_4;
     float _e170 = s_star;
-    g_22.s_star = _e170;
+    g_23.s_star = _e170;
     float _e172 = scale;
-    g_22.scale = _e172;
+    g_23.scale = _e172;
     float _e178 = s_star;
-    at = float[3](_e178, ((s_22.t_min - along_d) / cos_a_2), ((s_22.t_max - along_d) / cos_a_2));
+    at = float[3](_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
     bool loop_init_25 = true;
     while(true) {
         if (!loop_init_25) {
@@ -5014,7 +5032,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             bool _e220 = local_119;
             if (_e220) {
                 uint _e221 = i_20;
-                AirlightOuter _e223 = g_22;
+                AirlightOuter _e223 = g_23;
                 uint _e224 = i_20;
                 float _e226 = at[_e224];
                 float _e227 = airlight_to_w(_e223, _e226);
@@ -5046,11 +5064,11 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
         cuts_2[0] = _e262;
         cuts_2[1] = c_13;
     }
-    AirlightOuter _e264 = g_22;
+    AirlightOuter _e264 = g_23;
     float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_22;
+    AirlightOuter _e268 = g_23;
     float _e270 = airlight_to_w(_e268, 0.0);
-    g_22.edges[0] = _e270;
+    g_23.edges[0] = _e270;
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
@@ -5067,7 +5085,7 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
             uint _e278 = i_21;
             float _e280 = cuts_2[_e278];
             uint _e282 = n_1;
-            float _e284 = g_22.edges[_e282];
+            float _e284 = g_23.edges[_e282];
             if ((_e280 > _e284)) {
                 uint _e288 = i_21;
                 float _e290 = cuts_2[_e288];
@@ -5082,30 +5100,30 @@ AirlightOuter airlight_outer(AirlightScene s_22) {
                 uint _e298 = n_1;
                 uint _e300 = i_21;
                 float _e302 = cuts_2[_e300];
-                g_22.edges[_e298] = _e302;
+                g_23.edges[_e298] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_22.edges[(_e307 + 1u)] = _e265;
+    g_23.edges[(_e307 + 1u)] = _e265;
     uint _e312 = n_1;
-    g_22.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_22;
+    g_23.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_23;
     return _e315;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x_17) {
+AirlightNode airlight_outer_node(AirlightScene s_25, AirlightOuter g_24, float x_17) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3(0.0), 0u);
     float at_1 = 0.0;
     float ds = 1.0;
-    p = s_23;
+    p = s_25;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_22 = min(uint(max(floor(x_17), 0.0)), (g_23.panels - 1u));
+    if ((s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        uint i_22 = min(uint(max(floor(x_17), 0.0)), (g_24.panels - 1u));
         float t_6 = (x_17 - float(i_22));
-        float a_28 = g_23.gamma[i_22];
-        float b_18 = g_23.gamma[(i_22 + 1u)];
+        float a_28 = g_24.gamma[i_22];
+        float b_18 = g_24.gamma[(i_22 + 1u)];
         float gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
@@ -5113,28 +5131,28 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
             return AirlightNode(_e45, 0.0);
         }
         vec2 _e48 = airlight_cos_sin_half_turn(gamma);
-        float _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
+        float _e53 = airlight_half_arc(g_24.cos_a, g_24.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             return AirlightNode(_e57, 0.0);
         }
         vec2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = (2.0 * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
+        float arc = (2.0 * (((g_24.cos_a * _e48.x) * _e53) + ((g_24.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_24.l) + (_e48.y * g_24.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
         AirlightScene _e87 = p;
-        return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_25.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
     }
-    if ((s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_17;
-        if ((g_23.scale > 0.0)) {
-            at_1 = (g_23.s_star + (g_23.scale * sinh(x_17)));
-            ds = (g_23.scale * cosh(x_17));
+        if ((g_24.scale > 0.0)) {
+            at_1 = (g_24.s_star + (g_24.scale * sinh(x_17)));
+            ds = (g_24.scale * cosh(x_17));
         }
         float _e115 = at_1;
-        p.light_position = (g_23.a + (_e115 * g_23.e));
+        p.light_position = (g_24.a + (_e115 * g_24.e));
         AirlightScene _e119 = p;
         float _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -5143,52 +5161,55 @@ AirlightNode airlight_outer_node(AirlightScene s_23, AirlightOuter g_23, float x
     return AirlightNode(_e122, 1.0);
 }
 
-AirlightResult airlight_point_integral(AirlightScene p_1) {
-    AirlightResult r_5 = AirlightResult(0.0, 0u);
+AirlightResult airlight_overflowed(AirlightResult r_5) {
     bool local_121 = false;
+    bool _e2 = airlight_is_finite(r_5.in_scatter);
+    if (!(!(_e2))) {
+        local_121 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_121 = true;
+    }
+    bool _e11 = local_121;
+    if (_e11) {
+        return AirlightResult(3.4028235e38, 2u);
+    }
+    return r_5;
+}
+
+AirlightResult airlight_point_integral(AirlightScene p_1) {
+    AirlightResult r_6 = AirlightResult(0.0, 0u);
     bool local_122 = false;
     bool _e6 = airlight_vec_finite(p_1.light_position);
     if (_e6) {
         bool _e10 = airlight_vec_finite(p_1.dir);
-        local_121 = _e10;
+        local_122 = _e10;
     } else {
-        local_121 = false;
+        local_122 = false;
     }
-    bool _e12 = local_121;
+    bool _e12 = local_122;
     if (_e12) {
         AirlightCanonical _e13 = airlight_canonical(p_1);
         AirlightCanonical _e14 = airlight_refined(p_1, _e13);
         AirlightResult _e15 = airlight_in_scatter_canonical(p_1, _e14);
-        r_5 = _e15;
+        r_6 = _e15;
     }
-    float _e17 = r_5.in_scatter;
-    bool _e18 = airlight_is_finite(_e17);
-    if (!(!(_e18))) {
-        uint _e24 = r_5.status;
-        local_122 = (_e24 == AIRLIGHT_STATUS_INFINITE);
-    } else {
-        local_122 = true;
-    }
-    bool _e28 = local_122;
-    if (_e28) {
-        return AirlightResult(3.4028235e38, 2u);
-    }
-    AirlightResult _e32 = r_5;
-    return _e32;
+    AirlightResult _e16 = r_6;
+    AirlightResult _e17 = airlight_overflowed(_e16);
+    return _e17;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_24) {
+AirlightResult airlight_in_scatter_point(AirlightScene s_26) {
     bool local_123 = false;
     bool local_124 = false;
-    bool _e1 = airlight_valid(s_24);
+    bool _e1 = airlight_valid(s_26);
     if (!(!(_e1))) {
-        local_123 = (s_24.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_123 = (s_26.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_123 = true;
     }
     bool _e10 = local_123;
     if (!(_e10)) {
-        local_124 = (s_24.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_124 = (s_26.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_124 = true;
     }
@@ -5196,11 +5217,48 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_24) {
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_point_integral(s_24);
+    AirlightResult _e22 = airlight_point_integral(s_26);
     return _e22;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_25) {
+AirlightResult airlight_in_scatter_route(AirlightScene s_27) {
+    bool local_125 = false;
+    bool local_126 = false;
+    bool _e1 = airlight_valid(s_27);
+    if (!(!(_e1))) {
+        local_125 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_125 = true;
+    }
+    bool _e10 = local_125;
+    if (!(_e10)) {
+        local_126 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_126 = true;
+    }
+    bool _e18 = local_126;
+    if (_e18) {
+        return AirlightResult(0.0, 1u);
+    }
+    AirlightCanonical _e22 = airlight_canonical(s_27);
+    AirlightCanonical _e23 = airlight_refined(s_27, _e22);
+    AirlightResult _e24 = airlight_limits(s_27, _e23);
+    if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
+        AirlightResult _e28 = airlight_overflowed(_e24);
+        return _e28;
+    }
+    bool _e29 = airlight_isotropic_scene(s_27);
+    if (!(_e29)) {
+        vec2 _e31 = airlight_angle_route(s_27, _e23);
+        if ((_e31.x > 0.5)) {
+            AirlightResult _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
+            return _e40;
+        }
+    }
+    return AirlightResult(0.0, 3u);
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_28) {
     AirlightPanelList list_1 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_2 = 0u;
     float a_16 = 0.0;
@@ -5213,19 +5271,19 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
     float k_6 = 0.0;
     float gauss = 0.0;
     uint j_3 = 0u;
-    bool local_125 = false;
+    bool local_127 = false;
     float f = 0.0;
-    bool local_126 = false;
+    bool local_128 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_127 = false;
-    bool local_128 = false;
     bool local_129 = false;
-    bool _e1 = airlight_valid(s_25);
+    bool local_130 = false;
+    bool local_131 = false;
+    bool _e1 = airlight_valid(s_28);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e6 = airlight_outer(s_25);
+    AirlightOuter _e6 = airlight_outer(s_28);
     if ((_e6.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -5276,25 +5334,25 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                     uint _e89 = j_3;
                     if (((_e89 & 1u) == 0u)) {
                         uint _e96 = j_3;
-                        local_125 = (_e96 < 6u);
+                        local_127 = (_e96 < 6u);
                     } else {
-                        local_125 = false;
+                        local_127 = false;
                     }
-                    bool _e100 = local_125;
+                    bool _e100 = local_127;
                     float w_6 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
-                    AirlightNode _e102 = airlight_outer_node(s_25, _e6, w_6);
+                    AirlightNode _e102 = airlight_outer_node(s_28, _e6, w_6);
                     f = 0.0;
                     if ((_e102.weight != 0.0)) {
                         AirlightResult _e109 = airlight_point_integral(_e102.scene);
                         if ((_e109.status == AIRLIGHT_STATUS_INFINITE)) {
                             return _e109;
                         }
-                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_126 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_28.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_128 = (s_28.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_126 = false;
+                            local_128 = false;
                         }
-                        bool _e122 = local_126;
+                        bool _e122 = local_128;
                         if (_e122) {
                             return _e109;
                         }
@@ -5362,18 +5420,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                             uint worst_1 = _e183.worst;
                             if (!(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e194 = count_2;
-                                local_127 = (_e194 == _e6.max_panels);
+                                local_129 = (_e194 == _e6.max_panels);
                             } else {
-                                local_127 = true;
+                                local_129 = true;
                             }
-                            bool _e198 = local_127;
+                            bool _e198 = local_129;
                             if (!(_e198)) {
                                 bool _e202 = airlight_is_finite(total_4);
-                                local_128 = !(_e202);
+                                local_130 = !(_e202);
                             } else {
-                                local_128 = true;
+                                local_130 = true;
                             }
-                            bool _e205 = local_128;
+                            bool _e205 = local_130;
                             if (_e205) {
                                 break;
                             }
@@ -5383,11 +5441,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                             float wb_1 = _e207.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_129 = (mid_3 < wb_1);
+                                local_131 = (mid_3 < wb_1);
                             } else {
-                                local_129 = false;
+                                local_131 = false;
                             }
-                            bool _e218 = local_129;
+                            bool _e218 = local_131;
                             if (!(_e218)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e207.xyz, 0.0));
                                 continue;

@@ -157,6 +157,7 @@ const AIRLIGHT_SURFACE_LAMBERT: u32 = 1u;
 const AIRLIGHT_STATUS_OK: u32 = 0u;
 const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
+const AIRLIGHT_STATUS_DEFERRED: u32 = 3u;
 const AIRLIGHT_MAX_POWER: u32 = 1024u;
 const AIRLIGHT_MAX_POWER_BITS: u32 = 11u;
 const AIRLIGHT_E1_SERIES_TERMS: u32 = 13u;
@@ -256,13 +257,13 @@ fn airlight_cmul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
     if (abs(b_1.x) >= abs(b_1.y)) {
-        let r_6 = (b_1.y / b_1.x);
-        let inv = (1f / (b_1.x + (b_1.y * r_6)));
-        return vec2<f32>(((a_1.x + (a_1.y * r_6)) * inv), ((a_1.y - (a_1.x * r_6)) * inv));
+        let r_7 = (b_1.y / b_1.x);
+        let inv = (1f / (b_1.x + (b_1.y * r_7)));
+        return vec2<f32>(((a_1.x + (a_1.y * r_7)) * inv), ((a_1.y - (a_1.x * r_7)) * inv));
     }
-    let r_7 = (b_1.x / b_1.y);
-    let inv_1 = (1f / ((b_1.x * r_7) + b_1.y));
-    return vec2<f32>((((a_1.x * r_7) + a_1.y) * inv_1), (((a_1.y * r_7) - a_1.x) * inv_1));
+    let r_8 = (b_1.x / b_1.y);
+    let inv_1 = (1f / ((b_1.x * r_8) + b_1.y));
+    return vec2<f32>((((a_1.x * r_8) + a_1.y) * inv_1), (((a_1.y * r_8) - a_1.x) * inv_1));
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
@@ -297,8 +298,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_9 = (x * x);
     let c_7 = (1f + (z_9 * (-0.5f + (z_9 * (0.041666668f + (z_9 * (-0.0013888889f + (z_9 * (0.000024801588f + (z_9 * (-0.0000002755732f + (z_9 * (0.0000000020876756f + (z_9 * (-0.000000000011470745f + (z_9 * 0.000000000000047794773f))))))))))))))));
-    let s_26 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_7, (s_26 * x));
+    let s_29 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_7, (s_29 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -350,8 +351,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if (x_2 > 1f) {
         return log((1f + x_2));
     }
-    let s_27 = (x_2 / (2f + x_2));
-    let s2_ = (s_27 * s_27);
+    let s_30 = (x_2 / (2f + x_2));
+    let s2_ = (s_30 * s_30);
     loop {
         let _e14 = k_1;
         if (_e14 < 9u) {
@@ -369,7 +370,7 @@ fn airlight_log1p(x_2: f32) -> f32 {
         }
     }
     let _e35 = sum;
-    return ((2f * s_27) * _e35);
+    return ((2f * s_30) * _e35);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1854,8 +1855,8 @@ fn airlight_y_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     var m_2: array<f32, 8>;
 
     let _e8 = airlight_gauss_rule();
-    let r_8 = ((b_5 - a_6) * 0.5f);
-    let yc_1 = (a_6 + r_8);
+    let r_9 = ((b_5 - a_6) * 0.5f);
+    let yc_1 = (a_6 + r_9);
     let _e13 = airlight_zero_terms();
     samples_1 = _e13;
     loop {
@@ -1867,8 +1868,8 @@ fn airlight_y_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_8;
             let _e29 = airlight_node(_e8, _e28);
-            let y_7 = (yc_1 + (r_8 * _e29));
-            let weight = exp(((-(half_7.big_h) * (r_8 * (1f - _e29))) / (y_7 * b_5)));
+            let y_7 = (yc_1 + (r_9 * _e29));
+            let weight = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
             let _e41 = airlight_integrand(s_6, g_9, sigma_5, y_7);
             let over_1 = (1f / (1f + (y_7 * y_7)));
             let _e47 = i_8;
@@ -1894,11 +1895,11 @@ fn airlight_y_panel(s_6: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
     let _e83 = airlight_factor(half_7, a_6, b_5);
-    let w_2 = (_e83 * r_8);
+    let w_2 = (_e83 * r_9);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2f;
-    let _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_8, true);
+    let _e90 = airlight_singular_floor(heights_2, steps_3, yc_1, r_9, true);
     let _e93 = airlight_tail_estimate(_e82);
     let _e95 = m_2;
     let _e96 = airlight_error_factor(_e82, _e95, _e90);
@@ -1980,8 +1981,8 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     var next: f32 = 0f;
 
     let _e6 = airlight_gauss_rule();
-    let r_9 = ((b_6 - a_7) * 0.5f);
-    let yc_2 = (a_7 + r_9);
+    let r_10 = ((b_6 - a_7) * 0.5f);
+    let yc_2 = (a_7 + r_10);
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
@@ -1993,7 +1994,7 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_9;
             let _e23 = airlight_node(_e6, _e22);
-            let y_8 = (yc_2 + (r_9 * _e23));
+            let y_8 = (yc_2 + (r_10 * _e23));
             let _e26 = airlight_integrand(s_7, g_10, sigma_6, y_8);
             let _e27 = i_9;
             samples_2[_e27] = (_e26 / (1f + (y_8 * y_8)));
@@ -2012,8 +2013,8 @@ fn airlight_tail_panel(s_7: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     }
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
-    let alpha = (b_6 / r_9);
-    let beta = (-(yc_2) / r_9);
+    let alpha = (b_6 / r_10);
+    let beta = (-(yc_2) / r_10);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
@@ -2561,8 +2562,8 @@ fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32)
 fn airlight_cut_length(big_h_1: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_3 = (v_s + inv_h);
-    let r_10 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_10) / (0.000100000005f * 0.0001f))));
+    let r_11 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
+    let e_1 = (1f + log(((8f * r_11) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
 
@@ -3217,41 +3218,13 @@ fn airlight_whole_line(s_13: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     return _e76;
 }
 
-fn airlight_in_scatter_canonical(s_14: AirlightScene, g_19: AirlightCanonical) -> AirlightResult {
+fn airlight_limits(s_14: AirlightScene, g_19: AirlightCanonical) -> AirlightResult {
     var local_39: bool;
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
     var gap_2: f32 = 0f;
     var local_43: bool;
-    var local_44: bool;
-    var local_45: bool;
-    var local_46: bool;
-    var local_47: bool;
-    var local_48: bool;
-    var local_49: bool;
-    var local_50: bool;
-    var local_51: bool;
-    var local_52: bool;
-    var total_3: f32 = 0f;
-    var f_max_7: f32 = 0f;
-    var behind_cut: bool = false;
-    var t_end: f32;
-    var local_53: bool;
-    var half_13: AirlightHalf;
-    var local_54: bool;
-    var local_55: bool;
-    var local_56: bool;
-    var y_lo: f32 = 0f;
-    var dv_3: f32 = 0f;
-    var dy: f32;
-    var infinite_2: bool = true;
-    var local_57: bool;
-    var local_58: bool;
-    var half_14: AirlightHalf;
-    var local_59: bool;
-    var local_60: bool;
-    var local_61: bool;
 
     let t0_ = g_19.t_lo;
     let t1_ = g_19.t_hi;
@@ -3305,212 +3278,259 @@ fn airlight_in_scatter_canonical(s_14: AirlightScene, g_19: AirlightCanonical) -
     if (h_5 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let big_h_8 = (s_14.sigma_t * h_5);
-    if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_45 = (s_14.light_param_a == 0f);
+    return AirlightResult(0f, 3u);
+}
+
+fn airlight_isotropic_scene(s_15: AirlightScene) -> bool {
+    var local_44: bool;
+    var local_45: bool;
+    var local_46: bool;
+    var local_47: bool;
+    var local_48: bool;
+    var local_49: bool;
+
+    if !((s_15.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_45 = (s_15.light_param_a == 0f);
         } else {
             local_45 = false;
         }
-        let _e83 = local_45;
-        local_44 = _e83;
+        let _e16 = local_45;
+        local_44 = _e16;
     } else {
         local_44 = true;
     }
-    let _e85 = local_44;
-    if _e85 {
-        if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+    let _e18 = local_44;
+    if _e18 {
+        if !((s_15.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+            if !((s_15.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+                local_48 = (s_15.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
                 local_48 = true;
             }
-            let _e104 = local_48;
-            if _e104 {
-                local_49 = (s_14.phase_param_a == 0f);
+            let _e37 = local_48;
+            if _e37 {
+                local_49 = (s_15.phase_param_a == 0f);
             } else {
                 local_49 = false;
             }
-            let _e111 = local_49;
-            local_47 = _e111;
+            let _e44 = local_49;
+            local_47 = _e44;
         } else {
             local_47 = true;
         }
-        let _e113 = local_47;
-        local_46 = _e113;
+        let _e46 = local_47;
+        local_46 = _e46;
     } else {
         local_46 = false;
     }
-    let isotropic_1 = local_46;
-    if isotropic_1 {
-        local_50 = (t0_ < x_h);
+    let _e48 = local_46;
+    return _e48;
+}
+
+fn airlight_in_scatter_canonical(s_16: AirlightScene, g_20: AirlightCanonical) -> AirlightResult {
+    var local_50: bool;
+    var local_51: bool;
+    var local_52: bool;
+    var total_3: f32 = 0f;
+    var f_max_7: f32 = 0f;
+    var behind_cut: bool = false;
+    var t_end: f32;
+    var local_53: bool;
+    var half_13: AirlightHalf;
+    var local_54: bool;
+    var local_55: bool;
+    var local_56: bool;
+    var y_lo: f32 = 0f;
+    var dv_3: f32 = 0f;
+    var dy: f32;
+    var infinite_2: bool = true;
+    var local_57: bool;
+    var local_58: bool;
+    var half_14: AirlightHalf;
+    var local_59: bool;
+    var local_60: bool;
+    var local_61: bool;
+
+    let _e2 = airlight_limits(s_16, g_20);
+    if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
+        return _e2;
+    }
+    let t0_1 = g_20.t_lo;
+    let t1_1 = g_20.t_hi;
+    let h_6 = g_20.h;
+    let x_h_1 = g_20.x_h;
+    let big_h_8 = (s_16.sigma_t * h_6);
+    let _e12 = airlight_isotropic_scene(s_16);
+    if _e12 {
+        local_50 = (t0_1 < x_h_1);
     } else {
         local_50 = false;
     }
-    let _e120 = local_50;
-    if _e120 {
-        if !(g_19.t_hi_infinite) {
-            local_52 = (x_h < t1_);
+    let _e17 = local_50;
+    if _e17 {
+        if !(g_20.t_hi_infinite) {
+            local_52 = (x_h_1 < t1_1);
         } else {
             local_52 = true;
         }
-        let _e129 = local_52;
-        local_51 = _e129;
+        let _e26 = local_52;
+        local_51 = _e26;
     } else {
         local_51 = false;
     }
-    let _e131 = local_51;
-    if _e131 {
-        let _e132 = airlight_whole_line(s_14, g_19, big_h_8);
-        return AirlightResult(max(_e132, 0f), AIRLIGHT_STATUS_OK);
+    let _e28 = local_51;
+    if _e28 {
+        let _e29 = airlight_whole_line(s_16, g_20, big_h_8);
+        return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
     }
-    if !(isotropic_1) {
-        let _e138 = airlight_angle_route(s_14, g_19);
-        if (_e138.x > 0.5f) {
-            return AirlightResult(max(_e138.y, 0f), AIRLIGHT_STATUS_OK);
+    if !(_e12) {
+        let _e35 = airlight_angle_route(s_16, g_20);
+        if (_e35.x > 0.5f) {
+            return AirlightResult(max(_e35.y, 0f), AIRLIGHT_STATUS_OK);
         }
     }
-    let cut = !(isotropic_1);
-    if (t0_ < x_h) {
-        let a_s_1 = ((x_h - t0_) / h_5);
-        t_end = x_h;
-        if !(g_19.t_hi_infinite) {
-            local_53 = (t1_ < x_h);
+    let cut = !(_e12);
+    if (t0_1 < x_h_1) {
+        let a_s_1 = ((x_h_1 - t0_1) / h_6);
+        t_end = x_h_1;
+        if !(g_20.t_hi_infinite) {
+            local_53 = (t1_1 < x_h_1);
         } else {
             local_53 = false;
         }
-        let _e164 = local_53;
-        if _e164 {
-            t_end = t1_;
+        let _e61 = local_53;
+        if _e61 {
+            t_end = t1_1;
         }
-        let _e165 = t_end;
-        let a_e = ((x_h - _e165) / h_5);
-        let _e168 = airlight_hypot_one(a_s_1);
-        let _e169 = airlight_hypot_one(a_e);
-        let _e170 = airlight_bounded(a_s_1);
-        let _e171 = airlight_bounded(a_e);
-        let _e172 = t_end;
-        let dy_1 = (((((_e172 - t0_) / h_5) * (1f + ((a_s_1 + a_e) / (_e168 + _e169)))) * _e170) * _e171);
-        let _e185 = airlight_optical(big_h_8, dy_1, false);
-        half_13 = AirlightHalf(false, _e185, _e170, _e171, dy_1, dy_1, false);
+        let _e62 = t_end;
+        let a_e = ((x_h_1 - _e62) / h_6);
+        let _e65 = airlight_hypot_one(a_s_1);
+        let _e66 = airlight_hypot_one(a_e);
+        let _e67 = airlight_bounded(a_s_1);
+        let _e68 = airlight_bounded(a_e);
+        let _e69 = t_end;
+        let dy_1 = (((((_e69 - t0_1) / h_6) * (1f + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
+        let _e82 = airlight_optical(big_h_8, dy_1, false);
+        half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut {
-            let _e192 = half_13.big_h;
-            local_54 = (_e192 > 0f);
+            let _e89 = half_13.big_h;
+            local_54 = (_e89 > 0f);
         } else {
             local_54 = false;
         }
-        let _e196 = local_54;
-        if _e196 {
-            let _e198 = half_13.big_h;
-            let _e199 = airlight_cut_length(_e198, _e170);
-            if (_e199 < dy_1) {
-                let _e203 = half_13.big_h;
-                half_13 = AirlightHalf(false, _e203, _e170, (_e170 + _e199), _e199, _e199, false);
+        let _e93 = local_54;
+        if _e93 {
+            let _e95 = half_13.big_h;
+            let _e96 = airlight_cut_length(_e95, _e67);
+            if (_e96 < dy_1) {
+                let _e100 = half_13.big_h;
+                half_13 = AirlightHalf(false, _e100, _e67, (_e67 + _e96), _e96, _e96, false);
                 behind_cut = true;
             }
         }
-        let _e209 = half_13;
-        let _e210 = airlight_half(s_14, g_19, -1f, _e209, isotropic_1, (&f_max_7));
-        let _e211 = total_3;
-        let _e215 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, (big_h_8 * _e168), _e210);
-        total_3 = (_e211 + _e215);
+        let _e106 = half_13;
+        let _e107 = airlight_half(s_16, g_20, -1f, _e106, _e12, (&f_max_7));
+        let _e108 = total_3;
+        let _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (big_h_8 * _e65), _e107);
+        total_3 = (_e108 + _e112);
     }
-    if !(g_19.t_hi_infinite) {
-        local_55 = (t1_ > x_h);
+    if !(g_20.t_hi_infinite) {
+        local_55 = (t1_1 > x_h_1);
     } else {
         local_55 = true;
     }
-    let _e223 = local_55;
-    if _e223 {
-        let _e226 = behind_cut;
-        local_56 = !(_e226);
+    let _e120 = local_55;
+    if _e120 {
+        let _e123 = behind_cut;
+        local_56 = !(_e123);
     } else {
         local_56 = false;
     }
-    let _e229 = local_56;
-    if _e229 {
-        let t_start = max(t0_, x_h);
-        let a_s_2 = ((t_start - x_h) / h_5);
-        let _e233 = airlight_hypot_one(a_s_2);
-        let _e234 = airlight_bounded(a_s_2);
-        dy = _e234;
-        let a_e_1 = ((t1_ - x_h) / h_5);
-        if !(g_19.t_hi_infinite) {
-            let _e248 = airlight_is_finite(a_e_1);
-            local_57 = _e248;
+    let _e126 = local_56;
+    if _e126 {
+        let t_start = max(t0_1, x_h_1);
+        let a_s_2 = ((t_start - x_h_1) / h_6);
+        let _e130 = airlight_hypot_one(a_s_2);
+        let _e131 = airlight_bounded(a_s_2);
+        dy = _e131;
+        let a_e_1 = ((t1_1 - x_h_1) / h_6);
+        if !(g_20.t_hi_infinite) {
+            let _e145 = airlight_is_finite(a_e_1);
+            local_57 = _e145;
         } else {
             local_57 = false;
         }
-        let _e250 = local_57;
-        if _e250 {
-            let _e251 = airlight_bounded(a_e_1);
-            let _e255 = airlight_hypot_one(a_e_1);
-            let dv_end_1 = (((t1_ - t_start) / h_5) * (1f + ((a_s_2 + a_e_1) / (_e233 + _e255))));
-            if (_e251 > 0f) {
-                let _e265 = airlight_is_finite(dv_end_1);
-                local_58 = _e265;
+        let _e147 = local_57;
+        if _e147 {
+            let _e148 = airlight_bounded(a_e_1);
+            let _e152 = airlight_hypot_one(a_e_1);
+            let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
+            if (_e148 > 0f) {
+                let _e162 = airlight_is_finite(dv_end_1);
+                local_58 = _e162;
             } else {
                 local_58 = false;
             }
-            let _e267 = local_58;
-            if _e267 {
-                y_lo = _e251;
+            let _e164 = local_58;
+            if _e164 {
+                y_lo = _e148;
                 dv_3 = dv_end_1;
-                let _e268 = dv_3;
-                let _e269 = y_lo;
-                dy = ((_e268 * _e269) * _e234);
+                let _e165 = dv_3;
+                let _e166 = y_lo;
+                dy = ((_e165 * _e166) * _e131);
                 infinite_2 = false;
             }
         }
-        let _e274 = dv_3;
-        let _e275 = infinite_2;
-        let _e276 = airlight_optical(big_h_8, _e274, _e275);
-        let _e277 = y_lo;
-        let _e278 = dy;
-        let _e279 = dv_3;
-        let _e280 = infinite_2;
-        half_14 = AirlightHalf(true, _e276, _e277, _e234, _e278, _e279, _e280);
+        let _e171 = dv_3;
+        let _e172 = infinite_2;
+        let _e173 = airlight_optical(big_h_8, _e171, _e172);
+        let _e174 = y_lo;
+        let _e175 = dy;
+        let _e176 = dv_3;
+        let _e177 = infinite_2;
+        half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut {
-            let _e286 = half_14.big_h;
-            local_59 = (_e286 > 0f);
+            let _e183 = half_14.big_h;
+            local_59 = (_e183 > 0f);
         } else {
             local_59 = false;
         }
-        let _e290 = local_59;
-        if _e290 {
-            let _e292 = half_14.big_h;
-            let _e295 = airlight_cut_length(_e292, (1f / _e234));
-            let _e296 = infinite_2;
-            if !(_e296) {
-                let _e300 = dv_3;
-                local_60 = (_e295 < _e300);
+        let _e187 = local_59;
+        if _e187 {
+            let _e189 = half_14.big_h;
+            let _e192 = airlight_cut_length(_e189, (1f / _e131));
+            let _e193 = infinite_2;
+            if !(_e193) {
+                let _e197 = dv_3;
+                local_60 = (_e192 < _e197);
             } else {
                 local_60 = true;
             }
-            let _e303 = local_60;
-            if _e303 {
-                let cut_y_lo = (_e234 / (1f + (_e234 * _e295)));
+            let _e200 = local_60;
+            if _e200 {
+                let cut_y_lo = (_e131 / (1f + (_e131 * _e192)));
                 if (cut_y_lo > 0f) {
-                    let _e312 = airlight_is_finite(_e295);
-                    local_61 = _e312;
+                    let _e209 = airlight_is_finite(_e192);
+                    local_61 = _e209;
                 } else {
                     local_61 = false;
                 }
-                let _e314 = local_61;
-                if _e314 {
-                    let _e317 = half_14.big_h;
-                    half_14 = AirlightHalf(true, _e317, cut_y_lo, _e234, ((_e295 * cut_y_lo) * _e234), _e295, false);
+                let _e211 = local_61;
+                if _e211 {
+                    let _e214 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
                 }
             }
         }
-        let _e323 = half_14;
-        let _e324 = airlight_half(s_14, g_19, 1f, _e323, isotropic_1, (&f_max_7));
-        let _e325 = total_3;
-        let _e333 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, ((s_14.sigma_t * (t_start - t0_)) + (big_h_8 * _e233)), _e324);
-        total_3 = (_e325 + _e333);
+        let _e220 = half_14;
+        let _e221 = airlight_half(s_16, g_20, 1f, _e220, _e12, (&f_max_7));
+        let _e222 = total_3;
+        let _e230 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, ((s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
+        total_3 = (_e222 + _e230);
     }
-    let _e335 = total_3;
-    return AirlightResult(max(_e335, 0f), AIRLIGHT_STATUS_OK);
+    let _e232 = total_3;
+    return AirlightResult(max(_e232, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
@@ -3563,7 +3583,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_2 / vec3(length(u_2)));
 }
 
-fn airlight_valid(s_15: AirlightScene) -> bool {
+fn airlight_valid(s_17: AirlightScene) -> bool {
     var local_65: bool;
     var local_66: bool;
     var local_67: bool;
@@ -3599,96 +3619,96 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     var local_96: bool;
     var local_97: bool;
 
-    let _e2 = airlight_vec_finite(s_15.origin);
+    let _e2 = airlight_vec_finite(s_17.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_15.dir);
+        let _e6 = airlight_vec_finite(s_17.dir);
         local_65 = _e6;
     } else {
         local_65 = false;
     }
     let _e8 = local_65;
     if _e8 {
-        let _e12 = airlight_normalisable(s_15.dir);
+        let _e12 = airlight_normalisable(s_17.dir);
         local_66 = _e12;
     } else {
         local_66 = false;
     }
     let _e14 = local_66;
     if _e14 {
-        let _e18 = airlight_is_finite(s_15.t_min);
+        let _e18 = airlight_is_finite(s_17.t_min);
         local_67 = _e18;
     } else {
         local_67 = false;
     }
     let _e20 = local_67;
     if _e20 {
-        let _e24 = airlight_vec_finite(s_15.light_position);
+        let _e24 = airlight_vec_finite(s_17.light_position);
         local_68 = _e24;
     } else {
         local_68 = false;
     }
     let _e26 = local_68;
     if _e26 {
-        let _e30 = airlight_is_finite(s_15.intensity);
+        let _e30 = airlight_is_finite(s_17.intensity);
         local_69 = _e30;
     } else {
         local_69 = false;
     }
     let _e32 = local_69;
     if _e32 {
-        local_70 = (s_15.intensity >= 0f);
+        local_70 = (s_17.intensity >= 0f);
     } else {
         local_70 = false;
     }
     let _e39 = local_70;
     if _e39 {
-        let _e43 = airlight_is_finite(s_15.sigma_s);
+        let _e43 = airlight_is_finite(s_17.sigma_s);
         local_71 = _e43;
     } else {
         local_71 = false;
     }
     let _e45 = local_71;
     if _e45 {
-        local_72 = (s_15.sigma_s >= 0f);
+        local_72 = (s_17.sigma_s >= 0f);
     } else {
         local_72 = false;
     }
     let _e52 = local_72;
     if _e52 {
-        let _e56 = airlight_is_finite(s_15.sigma_t);
+        let _e56 = airlight_is_finite(s_17.sigma_t);
         local_73 = _e56;
     } else {
         local_73 = false;
     }
     let _e58 = local_73;
     if _e58 {
-        local_74 = (s_15.sigma_t >= 0f);
+        local_74 = (s_17.sigma_t >= 0f);
     } else {
         local_74 = false;
     }
     let _e65 = local_74;
     ok = _e65;
-    if ((s_15.flags & 1u) == 0u) {
+    if ((s_17.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_15.t_max);
+            let _e76 = airlight_is_finite(s_17.t_max);
             local_75 = _e76;
         } else {
             local_75 = false;
         }
         let _e78 = local_75;
         if _e78 {
-            local_76 = (s_15.t_min <= s_15.t_max);
+            local_76 = (s_17.t_min <= s_17.t_max);
         } else {
             local_76 = false;
         }
         let _e85 = local_76;
         ok = _e85;
     }
-    if (s_15.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
-            let _e93 = airlight_vec_finite(s_15.light_end);
+            let _e93 = airlight_vec_finite(s_17.light_end);
             local_77 = _e93;
         } else {
             local_77 = false;
@@ -3696,39 +3716,39 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e95 = local_77;
         ok = _e95;
     } else {
-        if (s_15.light_shape != AIRLIGHT_SHAPE_POINT) {
+        if (s_17.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_15.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
         let _e103 = ok;
         if _e103 {
-            let _e107 = airlight_is_finite(s_15.brdf_albedo);
+            let _e107 = airlight_is_finite(s_17.brdf_albedo);
             local_78 = _e107;
         } else {
             local_78 = false;
         }
         let _e109 = local_78;
         if _e109 {
-            local_79 = (s_15.brdf_albedo >= 0f);
+            local_79 = (s_17.brdf_albedo >= 0f);
         } else {
             local_79 = false;
         }
         let _e116 = local_79;
         if _e116 {
-            local_80 = (s_15.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_80 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_80 = false;
         }
         let _e123 = local_80;
         if _e123 {
-            local_81 = (s_15.light_shape == AIRLIGHT_SHAPE_POINT);
+            local_81 = (s_17.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_81 = false;
         }
         let _e130 = local_81;
         if _e130 {
-            let _e136 = airlight_safe_length((s_15.light_position - s_15.origin));
+            let _e136 = airlight_safe_length((s_17.light_position - s_17.origin));
             let _e137 = airlight_is_finite(_e136);
             local_82 = _e137;
         } else {
@@ -3737,89 +3757,89 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
         let _e139 = local_82;
         ok = _e139;
     } else {
-        if (s_15.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_17.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e147 = ok;
         if _e147 {
-            let _e151 = airlight_vec_finite(s_15.light_axis);
+            let _e151 = airlight_vec_finite(s_17.light_axis);
             local_83 = _e151;
         } else {
             local_83 = false;
         }
         let _e153 = local_83;
         if _e153 {
-            let _e157 = airlight_normalisable(s_15.light_axis);
+            let _e157 = airlight_normalisable(s_17.light_axis);
             local_84 = _e157;
         } else {
             local_84 = false;
         }
         let _e159 = local_84;
         if _e159 {
-            local_85 = (s_15.light_param_a >= 0f);
+            local_85 = (s_17.light_param_a >= 0f);
         } else {
             local_85 = false;
         }
         let _e166 = local_85;
         if _e166 {
-            local_86 = (s_15.light_param_a <= 1024f);
+            local_86 = (s_17.light_param_a <= 1024f);
         } else {
             local_86 = false;
         }
         let _e173 = local_86;
         if _e173 {
-            local_87 = (fract((s_15.light_param_a * 0.5f)) == 0f);
+            local_87 = (fract((s_17.light_param_a * 0.5f)) == 0f);
         } else {
             local_87 = false;
         }
         let _e183 = local_87;
         ok = _e183;
     } else {
-        if (s_15.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_17.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e187 = ok;
             if _e187 {
-                let _e191 = airlight_vec_finite(s_15.light_axis);
+                let _e191 = airlight_vec_finite(s_17.light_axis);
                 local_88 = _e191;
             } else {
                 local_88 = false;
             }
             let _e193 = local_88;
             if _e193 {
-                let _e197 = airlight_normalisable(s_15.light_axis);
+                let _e197 = airlight_normalisable(s_17.light_axis);
                 local_89 = _e197;
             } else {
                 local_89 = false;
             }
             let _e199 = local_89;
             if _e199 {
-                local_90 = (s_15.light_param_b < s_15.light_param_a);
+                local_90 = (s_17.light_param_b < s_17.light_param_a);
             } else {
                 local_90 = false;
             }
             let _e206 = local_90;
             if _e206 {
-                local_91 = (s_15.light_param_b >= -1f);
+                local_91 = (s_17.light_param_b >= -1f);
             } else {
                 local_91 = false;
             }
             let _e213 = local_91;
             if _e213 {
-                local_92 = (s_15.light_param_a <= 1f);
+                local_92 = (s_17.light_param_a <= 1f);
             } else {
                 local_92 = false;
             }
             let _e220 = local_92;
             ok = _e220;
         } else {
-            if (s_15.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_15.phase_param_a) < 1f);
-    switch s_15.phase_kind {
+    let g_ok = (abs(s_17.phase_param_a) < 1f);
+    switch s_17.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
@@ -3841,19 +3861,19 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
             }
             let _e239 = local_94;
             if _e239 {
-                local_95 = (abs(s_15.phase_param_b) < 1f);
+                local_95 = (abs(s_17.phase_param_b) < 1f);
             } else {
                 local_95 = false;
             }
             let _e247 = local_95;
             if _e247 {
-                local_96 = (s_15.phase_param_c >= 0f);
+                local_96 = (s_17.phase_param_c >= 0f);
             } else {
                 local_96 = false;
             }
             let _e254 = local_96;
             if _e254 {
-                local_97 = (s_15.phase_param_c <= 1f);
+                local_97 = (s_17.phase_param_c <= 1f);
             } else {
                 local_97 = false;
             }
@@ -3868,27 +3888,27 @@ fn airlight_valid(s_15: AirlightScene) -> bool {
     return _e263;
 }
 
-fn airlight_canonical(s_16: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_18: AirlightScene) -> AirlightCanonical {
     var a_11: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_16.dir);
-    if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_16.light_axis);
+    let _e2 = airlight_normalize(s_18.dir);
+    if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_18.light_axis);
         a_11 = _e12;
     }
-    let to_light = (s_16.light_position - s_16.origin);
-    let x_h_1 = dot(to_light, _e2);
-    let perp = ((x_h_1 * _e2) - to_light);
+    let to_light = (s_18.light_position - s_18.origin);
+    let x_h_2 = dot(to_light, _e2);
+    let perp = ((x_h_2 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
     if (_e19 > 0f) {
         let _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_16.flags & 1u) != 0u);
+    let infinite_3 = ((s_18.flags & 1u) != 0u);
     let _e32 = a_11;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_1, dot(_e2, _e32), _e34, s_16.t_min, select(s_16.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_18.t_min, select(s_18.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_12: f32, key: u32) -> f32 {
@@ -3947,19 +3967,19 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_refined(s_19: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var local_100: bool;
     var out_2: AirlightCanonical;
     var local_101: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_17.flags > 1u));
-    let _e11 = airlight_two_sum(s_17.light_position.x, -(s_17.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_17.light_position.y, -(s_17.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_17.light_position.z, -(s_17.origin.z), key_4);
+    let key_4 = u32((s_19.flags > 1u));
+    let _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
     let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_17.dir;
+    let dir_2 = s_19.dir;
     let _e33 = airlight_in_exact_range(hi_3);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
@@ -3988,10 +4008,10 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         return _e92;
     }
     let _e93 = airlight_safe_length(dir_2);
-    let h_6 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_6);
+    let h_7 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_101 = (h_6 > 0f);
+        local_101 = (h_7 > 0f);
     } else {
         local_101 = false;
     }
@@ -3999,14 +4019,14 @@ fn airlight_refined(s_17: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if !(_e101) {
         return plain;
     }
-    if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_17.light_axis);
+    if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_19.light_axis);
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_5);
     let n_2 = -(cross(_e113, _e114));
-    out_2.h = h_6;
+    out_2.h = h_7;
     let _e119 = a_15;
     out_2.d_c = dot(n_2, _e119);
     let _e121 = out_2;
@@ -4160,19 +4180,19 @@ fn airlight_asinh(x_14: f32) -> f32 {
     return select(_e18, -(_e19), (x_14 < 0f));
 }
 
-fn airlight_to_w(g_20: AirlightOuter, s_18: f32) -> f32 {
-    if (g_20.scale > 0f) {
-        let _e9 = airlight_asinh(((s_18 - g_20.s_star) / g_20.scale));
+fn airlight_to_w(g_21: AirlightOuter, s_20: f32) -> f32 {
+    if (g_21.scale > 0f) {
+        let _e9 = airlight_asinh(((s_20 - g_21.s_star) / g_21.scale));
         return _e9;
     }
-    return s_18;
+    return s_20;
 }
 
 fn airlight_cos_sin_half_turn(x_15: f32) -> vec2<f32> {
-    let r_11 = (x_15 - 1.5707964f);
-    let z_11 = (r_11 * r_11);
+    let r_12 = (x_15 - 1.5707964f);
+    let z_11 = (r_12 * r_12);
     let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
-    let sin_r = (r_11 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
@@ -4182,20 +4202,20 @@ fn airlight_acos(x_16: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_16 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_19: f32) -> f32 {
-    if (s_19 <= c_6) {
-        let _e4 = airlight_atan((s_19 / c_6));
+fn airlight_angle(c_6: f32, s_21: f32) -> f32 {
+    if (s_21 <= c_6) {
+        let _e4 = airlight_atan((s_21 / c_6));
         return _e4;
     }
-    if (s_19 <= -(c_6)) {
-        let _e10 = airlight_atan((s_19 / -(c_6)));
+    if (s_21 <= -(c_6)) {
+        let _e10 = airlight_atan((s_21 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if (c_6 >= 0f) {
-        let _e16 = airlight_atan((c_6 / s_19));
+        let _e16 = airlight_atan((c_6 / s_21));
         return (1.5707964f - _e16);
     }
-    let _e21 = airlight_atan((-(c_6) / s_19));
+    let _e21 = airlight_atan((-(c_6) / s_21));
     return (1.5707964f + _e21);
 }
 
@@ -4209,12 +4229,12 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_20: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_20.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+fn airlight_outer_point(s_22: AirlightScene, max_panels: u32) -> AirlightOuter {
+    return AirlightOuter(s_22.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
 }
 
-fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
-    var g_21: AirlightOuter;
+fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
+    var g_22: AirlightOuter;
     var local_102: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 2>;
@@ -4223,33 +4243,33 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
     var local_103: bool;
     var i_19: u32 = 0u;
 
-    let _e2 = airlight_outer_point(s_21, AIRLIGHT_SURFACE_PANELS);
-    g_21 = _e2;
-    let to_light_1 = (s_21.light_position - s_21.origin);
+    let _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
+    g_22 = _e2;
+    let to_light_1 = (s_23.light_position - s_23.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_21.intensity == 0f)) {
-        local_102 = (s_21.sigma_s == 0f);
+    if !((s_23.intensity == 0f)) {
+        local_102 = (s_23.sigma_s == 0f);
     } else {
         local_102 = true;
     }
     let _e18 = local_102;
     if _e18 {
-        g_21.outcome = 1u;
-        let _e21 = g_21;
+        g_22.outcome = 1u;
+        let _e21 = g_22;
         return _e21;
     }
     if !((_e7 > 0f)) {
-        g_21.outcome = 2u;
-        let _e27 = g_21;
+        g_22.outcome = 2u;
+        let _e27 = g_22;
         return _e27;
     }
-    if (s_21.brdf_albedo == 0f) {
-        g_21.outcome = 1u;
-        let _e33 = g_21;
+    if (s_23.brdf_albedo == 0f) {
+        g_22.outcome = 1u;
+        let _e33 = g_22;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_21.dir);
+    let _e37 = airlight_normalize(s_23.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -4259,11 +4279,11 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
         let _e64 = airlight_normalize((pick - (dot(pick, l_3) * l_3)));
         u_1 = _e64;
     }
-    g_21.l = l_3;
+    g_22.l = l_3;
     let _e67 = u_1;
-    g_21.u = _e67;
-    g_21.cos_a = cos_a_1;
-    g_21.sin_a = _e41;
+    g_22.u = _e67;
+    g_22.cos_a = cos_a_1;
+    g_22.sin_a = _e41;
     let _e71 = airlight_angle(cos_a_1, _e41);
     let first = abs((1.5707964f - _e71));
     cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
@@ -4285,7 +4305,7 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
             let _e96 = i_18;
             let _e98 = cuts_1[_e96];
             let _e100 = k_5;
-            let _e102 = g_21.gamma[_e100];
+            let _e102 = g_22.gamma[_e100];
             if (_e98 > _e102) {
                 let _e106 = i_18;
                 let _e108 = cuts_1[_e106];
@@ -4300,7 +4320,7 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
                 let _e117 = k_5;
                 let _e119 = i_18;
                 let _e121 = cuts_1[_e119];
-                g_21.gamma[_e117] = _e121;
+                g_22.gamma[_e117] = _e121;
             }
         }
         continuing {
@@ -4309,12 +4329,12 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
         }
     }
     let _e126 = k_5;
-    g_21.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
+    g_22.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
     let _e132 = k_5;
-    g_21.panels = (_e132 + 1u);
+    g_22.panels = (_e132 + 1u);
     loop {
         let _e137 = i_19;
-        let _e139 = g_21.panels;
+        let _e139 = g_22.panels;
         if (_e137 <= _e139) {
         } else {
             break;
@@ -4322,19 +4342,19 @@ fn airlight_surface(s_21: AirlightScene) -> AirlightOuter {
         {
             let _e142 = i_19;
             let _e144 = i_19;
-            g_21.edges[_e142] = f32(_e144);
+            g_22.edges[_e142] = f32(_e144);
         }
         continuing {
             let _e147 = i_19;
             i_19 = (_e147 + 1u);
         }
     }
-    let _e149 = g_21;
+    let _e149 = g_22;
     return _e149;
 }
 
-fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
-    var g_22: AirlightOuter;
+fn airlight_outer(s_24: AirlightScene) -> AirlightOuter {
+    var g_23: AirlightOuter;
     var local_104: bool;
     var local_105: bool;
     var s_star: f32 = 0f;
@@ -4361,43 +4381,43 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     var i_21: u32 = 0u;
     var local_120: bool;
 
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e4 = airlight_surface(s_22);
+    if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let _e4 = airlight_surface(s_24);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_22, AIRLIGHT_SEGMENT_PANELS);
-    g_22 = _e6;
-    if (s_22.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e11 = g_22;
+    let _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
+    g_23 = _e6;
+    if (s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+        let _e11 = g_23;
         return _e11;
     }
-    let ab_1 = (s_22.light_end - s_22.light_position);
+    let ab_1 = (s_24.light_end - s_24.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_104 = (s_22.intensity == 0f);
+        local_104 = (s_24.intensity == 0f);
     } else {
         local_104 = true;
     }
     let _e26 = local_104;
     if !(_e26) {
-        local_105 = (s_22.sigma_s == 0f);
+        local_105 = (s_24.sigma_s == 0f);
     } else {
         local_105 = true;
     }
     let _e34 = local_105;
     if _e34 {
-        g_22.outcome = 1u;
-        let _e37 = g_22;
+        g_23.outcome = 1u;
+        let _e37 = g_23;
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_22.dir);
-    let w0_ = (s_22.light_position - s_22.origin);
+    let _e41 = airlight_normalize(s_24.dir);
+    let w0_ = (s_24.light_position - s_24.origin);
     let cos_a_2 = dot(e_4, _e41);
     let along_e = dot(e_4, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_22.flags & 1u) != 0u);
+    let infinite_4 = ((s_24.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -4429,7 +4449,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     let _e97 = local_108;
     if _e97 {
         let _e101 = t_star;
-        local_109 = (s_22.t_min <= _e101);
+        local_109 = (s_24.t_min <= _e101);
     } else {
         local_109 = false;
     }
@@ -4437,7 +4457,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_111 = (_e110 <= s_22.t_max);
+            local_111 = (_e110 <= s_24.t_max);
         } else {
             local_111 = true;
         }
@@ -4448,8 +4468,8 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     }
     let _e116 = local_110;
     if _e116 {
-        g_22.outcome = 2u;
-        let _e119 = g_22;
+        g_23.outcome = 2u;
+        let _e119 = g_23;
         return _e119;
     }
     if (sin_a_1 > 0f) {
@@ -4499,13 +4519,13 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
     if !(_e165) {
         scale = 0f;
     }
-    g_22.e = e_4;
+    g_23.e = e_4;
     let _e170 = s_star;
-    g_22.s_star = _e170;
+    g_23.s_star = _e170;
     let _e172 = scale;
-    g_22.scale = _e172;
+    g_23.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_22.t_min - along_d) / cos_a_2), ((s_22.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
     loop {
         let _e189 = i_20;
         if (_e189 < 3u) {
@@ -4545,7 +4565,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             let _e220 = local_119;
             if _e220 {
                 let _e221 = i_20;
-                let _e223 = g_22;
+                let _e223 = g_23;
                 let _e224 = i_20;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
@@ -4581,11 +4601,11 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
         cuts_2[0] = _e262;
         cuts_2[1] = c_13;
     }
-    let _e264 = g_22;
+    let _e264 = g_23;
     let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_22;
+    let _e268 = g_23;
     let _e270 = airlight_to_w(_e268, 0f);
-    g_22.edges[0] = _e270;
+    g_23.edges[0] = _e270;
     loop {
         let _e275 = i_21;
         if (_e275 < 3u) {
@@ -4596,7 +4616,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
             let _e278 = i_21;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
-            let _e284 = g_22.edges[_e282];
+            let _e284 = g_23.edges[_e282];
             if (_e280 > _e284) {
                 let _e288 = i_21;
                 let _e290 = cuts_2[_e288];
@@ -4611,7 +4631,7 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
                 let _e298 = n_1;
                 let _e300 = i_21;
                 let _e302 = cuts_2[_e300];
-                g_22.edges[_e298] = _e302;
+                g_23.edges[_e298] = _e302;
             }
         }
         continuing {
@@ -4620,26 +4640,26 @@ fn airlight_outer(s_22: AirlightScene) -> AirlightOuter {
         }
     }
     let _e307 = n_1;
-    g_22.edges[(_e307 + 1u)] = _e265;
+    g_23.edges[(_e307 + 1u)] = _e265;
     let _e312 = n_1;
-    g_22.panels = (_e312 + 1u);
-    let _e315 = g_22;
+    g_23.panels = (_e312 + 1u);
+    let _e315 = g_23;
     return _e315;
 }
 
-fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_17: f32) -> AirlightNode {
+fn airlight_outer_node(s_25: AirlightScene, g_24: AirlightOuter, x_17: f32) -> AirlightNode {
     var p: AirlightScene;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_23;
+    p = s_25;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_22 = min(u32(max(floor(x_17), 0f)), (g_23.panels - 1u));
+    if (s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        let i_22 = min(u32(max(floor(x_17), 0f)), (g_24.panels - 1u));
         let t_6 = (x_17 - f32(i_22));
-        let a_28 = g_23.gamma[i_22];
-        let b_18 = g_23.gamma[(i_22 + 1u)];
+        let a_28 = g_24.gamma[i_22];
+        let b_18 = g_24.gamma[(i_22 + 1u)];
         let gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
         let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
@@ -4647,28 +4667,28 @@ fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_17: f32) -> A
             return AirlightNode(_e45, 0f);
         }
         let _e48 = airlight_cos_sin_half_turn(gamma);
-        let _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
+        let _e53 = airlight_half_arc(g_24.cos_a, g_24.sin_a, _e48.x, _e48.y);
         if !((_e53 > 0f)) {
             let _e57 = p;
             return AirlightNode(_e57, 0f);
         }
         let _e67 = airlight_cos_sin_half_turn(_e53);
-        let arc = (2f * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
+        let arc = (2f * (((g_24.cos_a * _e48.x) * _e53) + ((g_24.sin_a * _e48.y) * _e67.y)));
+        p.dir = ((_e48.x * g_24.l) + (_e48.y * g_24.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
         let _e87 = p;
-        return AirlightNode(_e87, ((((s_23.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        return AirlightNode(_e87, ((((s_25.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
     }
-    if (s_23.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_17;
-        if (g_23.scale > 0f) {
-            at_1 = (g_23.s_star + (g_23.scale * sinh(x_17)));
-            ds = (g_23.scale * cosh(x_17));
+        if (g_24.scale > 0f) {
+            at_1 = (g_24.s_star + (g_24.scale * sinh(x_17)));
+            ds = (g_24.scale * cosh(x_17));
         }
         let _e115 = at_1;
-        p.light_position = (g_23.a + (_e115 * g_23.e));
+        p.light_position = (g_24.a + (_e115 * g_24.e));
         let _e119 = p;
         let _e120 = ds;
         return AirlightNode(_e119, _e120);
@@ -4677,54 +4697,58 @@ fn airlight_outer_node(s_23: AirlightScene, g_23: AirlightOuter, x_17: f32) -> A
     return AirlightNode(_e122, 1f);
 }
 
-fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
-    var r_5: AirlightResult = AirlightResult(0f, 0u);
+fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
     var local_121: bool;
+
+    let _e2 = airlight_is_finite(r_5.in_scatter);
+    if !(!(_e2)) {
+        local_121 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_121 = true;
+    }
+    let _e11 = local_121;
+    if _e11 {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    return r_5;
+}
+
+fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
+    var r_6: AirlightResult = AirlightResult(0f, 0u);
     var local_122: bool;
 
     let _e6 = airlight_vec_finite(p_1.light_position);
     if _e6 {
         let _e10 = airlight_vec_finite(p_1.dir);
-        local_121 = _e10;
+        local_122 = _e10;
     } else {
-        local_121 = false;
+        local_122 = false;
     }
-    let _e12 = local_121;
+    let _e12 = local_122;
     if _e12 {
         let _e13 = airlight_canonical(p_1);
         let _e14 = airlight_refined(p_1, _e13);
         let _e15 = airlight_in_scatter_canonical(p_1, _e14);
-        r_5 = _e15;
+        r_6 = _e15;
     }
-    let _e17 = r_5.in_scatter;
-    let _e18 = airlight_is_finite(_e17);
-    if !(!(_e18)) {
-        let _e24 = r_5.status;
-        local_122 = (_e24 == AIRLIGHT_STATUS_INFINITE);
-    } else {
-        local_122 = true;
-    }
-    let _e28 = local_122;
-    if _e28 {
-        return AirlightResult(340282350000000000000000000000000000000f, 2u);
-    }
-    let _e32 = r_5;
-    return _e32;
+    let _e16 = r_6;
+    let _e17 = airlight_overflowed(_e16);
+    return _e17;
 }
 
-fn airlight_in_scatter_point(s_24: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_point(s_26: AirlightScene) -> AirlightResult {
     var local_123: bool;
     var local_124: bool;
 
-    let _e1 = airlight_valid(s_24);
+    let _e1 = airlight_valid(s_26);
     if !(!(_e1)) {
-        local_123 = (s_24.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_123 = (s_26.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_123 = true;
     }
     let _e10 = local_123;
     if !(_e10) {
-        local_124 = (s_24.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_124 = (s_26.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_124 = true;
     }
@@ -4732,11 +4756,49 @@ fn airlight_in_scatter_point(s_24: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_24);
+    let _e22 = airlight_point_integral(s_26);
     return _e22;
 }
 
-fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_route(s_27: AirlightScene) -> AirlightResult {
+    var local_125: bool;
+    var local_126: bool;
+
+    let _e1 = airlight_valid(s_27);
+    if !(!(_e1)) {
+        local_125 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_125 = true;
+    }
+    let _e10 = local_125;
+    if !(_e10) {
+        local_126 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_126 = true;
+    }
+    let _e18 = local_126;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_27);
+    let _e23 = airlight_refined(s_27, _e22);
+    let _e24 = airlight_limits(s_27, _e23);
+    if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
+        let _e28 = airlight_overflowed(_e24);
+        return _e28;
+    }
+    let _e29 = airlight_isotropic_scene(s_27);
+    if !(_e29) {
+        let _e31 = airlight_angle_route(s_27, _e23);
+        if (_e31.x > 0.5f) {
+            let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
+            return _e40;
+        }
+    }
+    return AirlightResult(0f, 3u);
+}
+
+fn airlight_in_scatter(s_28: AirlightScene) -> AirlightResult {
     var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
@@ -4749,20 +4811,20 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var k_6: f32;
     var gauss: f32;
     var j_3: u32;
-    var local_125: bool;
+    var local_127: bool;
     var f: f32;
-    var local_126: bool;
+    var local_128: bool;
     var split: bool;
     var tries: u32;
-    var local_127: bool;
-    var local_128: bool;
     var local_129: bool;
+    var local_130: bool;
+    var local_131: bool;
 
-    let _e1 = airlight_valid(s_25);
+    let _e1 = airlight_valid(s_28);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_25);
+    let _e6 = airlight_outer(s_28);
     if (_e6.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -4801,25 +4863,25 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                     let _e89 = j_3;
                     if ((_e89 & 1u) == 0u) {
                         let _e96 = j_3;
-                        local_125 = (_e96 < 6u);
+                        local_127 = (_e96 < 6u);
                     } else {
-                        local_125 = false;
+                        local_127 = false;
                     }
-                    let _e100 = local_125;
+                    let _e100 = local_127;
                     let w_6 = select((c_14 + (hw_3 * node.x)), (c_14 - (hw_3 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_25, _e6, w_6);
+                    let _e102 = airlight_outer_node(s_28, _e6, w_6);
                     f = 0f;
                     if (_e102.weight != 0f) {
                         let _e109 = airlight_point_integral(_e102.scene);
                         if (_e109.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e109;
                         }
-                        if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_126 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_28.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_128 = (s_28.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_126 = false;
+                            local_128 = false;
                         }
-                        let _e122 = local_126;
+                        let _e122 = local_128;
                         if _e122 {
                             return _e109;
                         }
@@ -4885,18 +4947,18 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let worst_1 = _e183.worst;
                             if !(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e194 = count_2;
-                                local_127 = (_e194 == _e6.max_panels);
+                                local_129 = (_e194 == _e6.max_panels);
                             } else {
-                                local_127 = true;
+                                local_129 = true;
                             }
-                            let _e198 = local_127;
+                            let _e198 = local_129;
                             if !(_e198) {
                                 let _e202 = airlight_is_finite(total_4);
-                                local_128 = !(_e202);
+                                local_130 = !(_e202);
                             } else {
-                                local_128 = true;
+                                local_130 = true;
                             }
-                            let _e205 = local_128;
+                            let _e205 = local_130;
                             if _e205 {
                                 break;
                             }
@@ -4906,11 +4968,11 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let wb_1 = _e207.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
-                                local_129 = (mid_3 < wb_1);
+                                local_131 = (mid_3 < wb_1);
                             } else {
-                                local_129 = false;
+                                local_131 = false;
                             }
-                            let _e218 = local_129;
+                            let _e218 = local_131;
                             if !(_e218) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e207.xyz, 0f));
                                 continue;

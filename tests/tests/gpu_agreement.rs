@@ -552,6 +552,46 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
     }
 }
 
+/// The two passes (`airlight_in_scatter_route`, then `airlight_in_scatter_point` on the records
+/// it defers; `gpu::run_deferred`) meet the point light's criterion on the records of
+/// `every_artifact_agrees_with_the_cpu_kernel` and give the point entry's own results (the same
+/// code path for each record: the route where it is taken, the whole ray integral for the rest;
+/// within 4 ulp, as the two modules may be compiled apart). Both passes run: some records are
+/// deferred, some are not. A segment light or surface point is INVALID to the route entry.
+#[test]
+fn two_passes_give_the_point_entrys_results() {
+    use airlight_shaders::gpu::run_deferred;
+    use airlight_shaders::layout::STATUS_DEFERRED;
+    use airlight_shaders::targets::route_compute_wgsl;
+    let Some(gpu) = gpu() else { return };
+    for terms in NODE_COUNTS {
+        let (route, point) = (gpu.prepare(Shader::Wgsl(&route_compute_wgsl(terms))), gpu.prepare(Shader::Wgsl(&point_compute_wgsl(terms))));
+        let c = case(terms);
+        let first = route.run(&c.records, false).unwrap();
+        let deferred = first.chunks_exact(RESULT_SIZE).filter(|r| unpack_result(r).1 == STATUS_DEFERRED).count();
+        let n = c.records.len() / RECORD_SIZE;
+        println!("{terms} nodes: the route entry defers {deferred} of {n} records");
+        assert!(deferred > 0 && deferred < n, "{terms} nodes: {deferred} of {n} deferred");
+        let two = run_deferred(&route, &point, &c.records, false).unwrap();
+        compare(&format!("wgsl route + point entries/{terms}"), &c, &two);
+        let one = point.run(&c.records, false).unwrap();
+        for (i, (a, b)) in two.chunks_exact(RESULT_SIZE).zip(one.chunks_exact(RESULT_SIZE)).enumerate() {
+            let ((va, sa), (vb, sb)) = (unpack_result(a), unpack_result(b));
+            assert_eq!(sa, sb, "{terms} nodes, record {i}: status two passes {sa}, point entry {sb}");
+            assert!((va - vb).abs() <= 4.0 * f32::EPSILON * va.abs().max(vb.abs()) || va == vb, "{terms} nodes, record {i}: two passes {va}, point entry {vb}");
+        }
+    }
+    let segment = reference_lines("extended.jsonl")
+        .iter()
+        .find_map(|v| match airlight_codegen::scene_json::parse_any_value::<f32>(v) {
+            Ok(airlight_codegen::scene_json::AnyRecord::Segment(s)) => Some(airlight_shaders::layout::pack_segment(&s)),
+            _ => None,
+        })
+        .expect("a segment light in extended.jsonl");
+    let route = gpu.prepare(Shader::Wgsl(&route_compute_wgsl(NODE_COUNTS[0])));
+    assert_eq!(unpack_result(&route.run(&segment, false).unwrap()), (0.0, STATUS_INVALID), "the route entry on a segment light");
+}
+
 /// `airlight eval --backend gpu` on point lights (the hard classes of
 /// tests/reference/classes.jsonl, ids echoed): every answer within the shaders' 1e-3 of the
 /// mpmath value (`|x − exact| / max(|exact|, 1e-4·scale)`, as `shaders_meet_the_class_targets`),

@@ -60,6 +60,7 @@ const AIRLIGHT_SURFACE_LAMBERT: u32 = @SURFACE_LAMBERT@u;
 const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
 const AIRLIGHT_STATUS_INVALID: u32 = @STATUS_INVALID@u;
 const AIRLIGHT_STATUS_INFINITE: u32 = @STATUS_INFINITE@u;
+const AIRLIGHT_STATUS_DEFERRED: u32 = @STATUS_DEFERRED@u;
 
 // The two-lobed light's largest power and its bit length (light.rs TwoLobed::MAX_POWER).
 const AIRLIGHT_MAX_POWER: u32 = @MAX_POWER@u;
@@ -1517,7 +1518,10 @@ fn airlight_cut_length(big_h: f32, v_s: f32) -> f32 {
 
 /// The combined formulation on the canonical problem (combined.rs::in_scatter_canonical).
 /// Returns +∞ as FLT_MAX with status INFINITE.
-fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
+/// The canonical problem's limits, which need no integral (combined.rs `in_scatter_counted`'s
+/// first cases): an empty segment or no scattering (0), the light on the ray's line beyond the
+/// segment (the on-line limit), on the segment itself (+∞); (0, DEFERRED) where none holds.
+fn airlight_limits(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
     let t0 = g.t_lo;
     let t1 = g.t_hi;
     if (!(g.t_hi_infinite || t1 > t0) || s.sigma_s * s.intensity == 0.0) {
@@ -1534,10 +1538,28 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
     if (h == 0.0) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
-    let big_h = s.sigma_t * h;
-    let isotropic = (s.light_kind == AIRLIGHT_LIGHT_OMNI || (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED && s.light_param_a == 0.0))
+    return AirlightResult(0.0, AIRLIGHT_STATUS_DEFERRED);
+}
+
+/// Whether F = D·P is constant: an omni light (or c^0) in an isotropic phase function (HG or
+/// Schlick at 0 too), where the kernel takes the closed forms of the isotropic path.
+fn airlight_isotropic_scene(s: AirlightScene) -> bool {
+    return (s.light_kind == AIRLIGHT_LIGHT_OMNI || (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED && s.light_param_a == 0.0))
         && (s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
             || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
+}
+
+fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
+    let limit = airlight_limits(s, g);
+    if (limit.status != AIRLIGHT_STATUS_DEFERRED) {
+        return limit;
+    }
+    let t0 = g.t_lo;
+    let t1 = g.t_hi;
+    let h = g.h;
+    let x_h = g.x_h;
+    let big_h = s.sigma_t * h;
+    let isotropic = airlight_isotropic_scene(s);
     if (isotropic && t0 < x_h && (g.t_hi_infinite || x_h < t1)) {
         return AirlightResult(max(airlight_whole_line(s, g, big_h), 0.0), AIRLIGHT_STATUS_OK);
     }
@@ -2108,6 +2130,41 @@ fn airlight_in_scatter_point(s: AirlightScene) -> AirlightResult {
     return airlight_point_integral(s);
 }
 
+/// The first of two passes over point lights without a surface (docs/DESIGN.md §4.1): the
+/// light-angle route alone (angle.rs), where it meets the tolerance, and the limits that need no
+/// integral — the same value and status `airlight_in_scatter_point` gives — else (0, DEFERRED):
+/// an isotropic scene (whose closed form is the full entry's), a route declined or failed. Run
+/// the deferred records through `airlight_in_scatter_point` in a second pass: a driver that
+/// masks branches (lavapipe) charges every ray of a dispatch for the closed forms that a few
+/// need, and a GPU that branches per group of lanes charges every group with one such ray.
+/// Other scenes give (0, INVALID).
+fn airlight_in_scatter_route(s: AirlightScene) -> AirlightResult {
+    if (!airlight_valid(s) || s.light_shape != AIRLIGHT_SHAPE_POINT || s.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
+    }
+    let g = airlight_refined(s, airlight_canonical(s));
+    let limit = airlight_limits(s, g);
+    if (limit.status != AIRLIGHT_STATUS_DEFERRED) {
+        return airlight_overflowed(limit);
+    }
+    if (!airlight_isotropic_scene(s)) {
+        let route = airlight_angle_route(s, g);
+        if (route.x > 0.5) {
+            return airlight_overflowed(AirlightResult(max(route.y, 0.0), AIRLIGHT_STATUS_OK));
+        }
+    }
+    return AirlightResult(0.0, AIRLIGHT_STATUS_DEFERRED);
+}
+
+/// (FLT_MAX, INFINITE) where a ray integral's value is not finite or the light is on the
+/// segment; else the result itself.
+fn airlight_overflowed(r: AirlightResult) -> AirlightResult {
+    if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
+        return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+    }
+    return r;
+}
+
 /// The ray integral of the point light of `p` (a node of an outer integral, or a validated point
 /// scene): 0 where the node's light or direction is not finite, (FLT_MAX, INFINITE) where the
 /// integral is not finite or the light is on the segment. The one place both public entries
@@ -2117,10 +2174,7 @@ fn airlight_point_integral(p: AirlightScene) -> AirlightResult {
     if (airlight_vec_finite(p.light_position) && airlight_vec_finite(p.dir)) {
         r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
     }
-    if (!airlight_is_finite(r.in_scatter) || r.status == AIRLIGHT_STATUS_INFINITE) {
-        return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
-    }
-    return r;
+    return airlight_overflowed(r);
 }
 
 /// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library;

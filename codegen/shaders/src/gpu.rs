@@ -223,3 +223,29 @@ impl Prepared<'_> {
         Ok(out)
     }
 }
+
+/// Two passes over point-light records (docs/DESIGN.md §4.1): `first` (the route entry,
+/// [`crate::targets::route_compute_wgsl`]) over every record, then `rest` (the point entry,
+/// [`crate::targets::point_compute_wgsl`]) over those `first` left with
+/// [`STATUS_DEFERRED`](crate::layout::STATUS_DEFERRED), gathered into one buffer; their results
+/// take the deferred ones' places. The same results as `rest` over every record, where a
+/// driver that masks branches (or a GPU whose lanes share a branch) no longer charges every
+/// ray for the closed forms a few need.
+pub fn run_deferred(first: &Prepared<'_>, rest: &Prepared<'_>, records: &[u8], progress: bool) -> Result<Vec<u8>, String> {
+    let mut out = first.run(records, progress)?;
+    let deferred: Vec<usize> = out
+        .chunks_exact(RESULT_SIZE)
+        .enumerate()
+        .filter(|(_, r)| crate::layout::unpack_result(r).1 == crate::layout::STATUS_DEFERRED)
+        .map(|(i, _)| i)
+        .collect();
+    if deferred.is_empty() {
+        return Ok(out);
+    }
+    let gathered: Vec<u8> = deferred.iter().flat_map(|&i| &records[i * RECORD_SIZE..(i + 1) * RECORD_SIZE]).copied().collect();
+    let second = rest.run(&gathered, progress)?;
+    for (&i, r) in deferred.iter().zip(second.chunks_exact(RESULT_SIZE)) {
+        out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE].copy_from_slice(r);
+    }
+    Ok(out)
+}

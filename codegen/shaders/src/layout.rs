@@ -21,6 +21,10 @@ pub const STATUS_OK: u32 = 0;
 pub const STATUS_INVALID: u32 = 1;
 /// Status: the light lies on the segment (or the value overflowed); value `f32::MAX`.
 pub const STATUS_INFINITE: u32 = 2;
+/// Status of the route entry alone (`airlight_in_scatter_route`): the light-angle route does not
+/// meet the tolerance on this record; value 0, and the record is to be run through the point
+/// entry ([`crate::gpu::run_deferred`]). No other entry gives it.
+pub const STATUS_DEFERRED: u32 = 3;
 
 /// `light_kind` of an omni light ([`AnyDistribution::Omni`]).
 pub const LIGHT_OMNI: u32 = 0;

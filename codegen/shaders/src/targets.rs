@@ -292,6 +292,7 @@ impl Constants {
             ("@STATUS_OK@", l::STATUS_OK.to_string()),
             ("@STATUS_INVALID@", l::STATUS_INVALID.to_string()),
             ("@STATUS_INFINITE@", l::STATUS_INFINITE.to_string()),
+            ("@STATUS_DEFERRED@", l::STATUS_DEFERRED.to_string()),
             ("@WORKGROUP_SIZE@", l::WORKGROUP_SIZE.to_string()),
         ];
         Constants { fills, terms }
@@ -357,8 +358,29 @@ pub fn point_compute_wgsl(terms: usize) -> String {
 /// (`shaders-out/wgsl/airlight_lib_{8,12}.wgsl`): a compute shader for records that are all
 /// point lights without a surface ([`point_compute_wgsl`]). Not emitted as a file.
 pub fn point_compute_entry() -> String {
+    compute_entry_calling("airlight_in_scatter_point")
+}
+
+/// A compute shader running the route entry `airlight_in_scatter_route` over point lights
+/// without a surface: the committed include library ([`library_wgsl`]) with
+/// [`route_compute_entry`]. Its records of status
+/// [`STATUS_DEFERRED`](crate::layout::STATUS_DEFERRED) go through [`point_compute_wgsl`] next
+/// ([`crate::gpu::run_deferred`]).
+pub fn route_compute_wgsl(terms: usize) -> String {
+    format!("{}\n{}", library_wgsl(terms), route_compute_entry())
+}
+
+/// The compute entry point as [`point_compute_entry`], calling the route entry
+/// `airlight_in_scatter_route` (the first of two passes, docs/DESIGN.md §4.1). Not emitted as a
+/// file.
+pub fn route_compute_entry() -> String {
+    compute_entry_calling("airlight_in_scatter_route")
+}
+
+/// `compute.wgsl` with its one call of `airlight_in_scatter` replaced by `entry`.
+fn compute_entry_calling(entry: &str) -> String {
     assert_eq!(COMPUTE.matches("airlight_in_scatter(").count(), 1, "compute.wgsl calls airlight_in_scatter once");
-    COMPUTE.replace("airlight_in_scatter(", "airlight_in_scatter_point(").replace("@WORKGROUP_SIZE@", &crate::layout::WORKGROUP_SIZE.to_string())
+    COMPUTE.replace("airlight_in_scatter(", &format!("{entry}(")).replace("@WORKGROUP_SIZE@", &crate::layout::WORKGROUP_SIZE.to_string())
 }
 
 /// Parses and validates WGSL.
