@@ -28,7 +28,9 @@
 //!    emit --tolerance`) and timed beside the committed ones, as the CPU bench takes the loosest
 //!    tolerance that meets an accuracy level; at each tolerance also through the include
 //!    library's point-light entry `airlight_in_scatter_point` (`point_compute_entry`: the ray
-//!    integral without the emitter and surface loop, for shaders whose lights are all points);
+//!    integral without the emitter and surface loop, for shaders whose lights are all points),
+//!    and in two passes (`gpu::run_deferred`: the route entry `airlight_in_scatter_route` over
+//!    every ray, the point entry over the rays it defers, both timed with the gathering between);
 //!    and, on the aniso rays, with its ray integral cut short ([`parts`]) to show where the time
 //!    goes on the adapter.
 //! 3. A summary table (variant, method, grid point, errors, rays/s, ratio), the pipeline build
@@ -39,7 +41,7 @@ use airlight::glam::Vec3;
 use airlight::light::{AnyDistribution, TwoLobed};
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{Medium, PointLight, Ray, Scene};
-use airlight_shaders::targets::{compute_wgsl, point_compute_entry, point_compute_wgsl, render, Constants, EmitOptions, Target, NODE_COUNTS};
+use airlight_shaders::targets::{compute_wgsl, point_compute_entry, point_compute_wgsl, render, route_compute_entry, route_compute_wgsl, Constants, EmitOptions, Target, NODE_COUNTS};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight_shaders::layout::{pack, unpack_result, RESULT_SIZE, STATUS_OK};
 use airlight::record::SceneRecord;
@@ -106,6 +108,22 @@ fn airlight_main(@builtin(global_invocation_id) id: vec3<u32>) {
     airlight_results[id.x] = AirlightResult(airlight_records[id.x].intensity * 0.0, 0u);
 }
 "#;
+
+/// A generated variant's pipelines: one, or two passes (`gpu::run_deferred`).
+struct Pipelines<'g> {
+    first: Prepared<'g>,
+    rest: Option<Prepared<'g>>,
+}
+
+impl Pipelines<'_> {
+    fn run(&self, records: &[u8]) -> Vec<u8> {
+        match &self.rest {
+            Some(rest) => airlight_shaders::gpu::run_deferred(&self.first, rest, records, false),
+            None => self.first.run(records, false),
+        }
+        .expect("GPU run")
+    }
+}
 
 /// A baseline shader family, parameterised by its grid point.
 #[derive(Clone, Copy, PartialEq)]
@@ -283,23 +301,41 @@ fn main() {
     };
     // the generated shaders take seconds to compile on lavapipe: once for both variants. The
     // committed ones, then the 8-node one emitted at the looser tolerances: (id, name, nodes,
-    // tolerance, pipeline)
-    let mut sources: Vec<(String, String, usize, f32, String)> = NODE_COUNTS
+    // tolerance, pipeline, and for two passes the second's)
+    let mut sources: Vec<(String, String, usize, f32, String, Option<String>)> = NODE_COUNTS
         .iter()
-        .map(|&n| (format!("generated_{n}"), format!("{n} nodes"), n, airlight::SHADER_CONTROL.tolerance, compute_wgsl(n).to_string()))
+        .map(|&n| (format!("generated_{n}"), format!("{n} nodes"), n, airlight::SHADER_CONTROL.tolerance, compute_wgsl(n).to_string(), None))
         .collect();
-    // the point-light entry: the include library with `point_compute_entry`
-    let point_entry = point_compute_entry();
-    sources.push(("generated_8_point".into(), "8 nodes, point entry".into(), 8, airlight::SHADER_CONTROL.tolerance, point_compute_wgsl(8)));
+    // the point-light entry: the include library with `point_compute_entry`; the two passes:
+    // with `route_compute_entry`, then with `point_compute_entry`
+    let (point_entry, route_entry) = (point_compute_entry(), route_compute_entry());
+    let default_tolerance = airlight::SHADER_CONTROL.tolerance;
+    sources.push(("generated_8_point".into(), "8 nodes, point entry".into(), 8, default_tolerance, point_compute_wgsl(8), None));
+    sources.push(("generated_8_two_pass".into(), "8 nodes, two passes".into(), 8, default_tolerance, route_compute_wgsl(8), Some(point_compute_wgsl(8))));
     for tolerance in LOOSER_TOLERANCES {
         let opts = EmitOptions { terms: vec![8], targets: vec![Target::Wgsl], tolerance };
         let mut files = render(&opts).expect("the shader emits at a tolerance in range");
         let mut take = |name: &str| String::from_utf8(files.remove(name).expect("an emitted 8-node WGSL file")).expect("WGSL is UTF-8");
         let (src, library) = (take("wgsl/airlight_8.wgsl"), take("wgsl/airlight_lib_8.wgsl"));
-        sources.push((format!("generated_8_tol{tolerance:e}"), format!("8 nodes, tolerance {tolerance:e}"), 8, tolerance, src));
-        sources.push((format!("generated_8_point_tol{tolerance:e}"), format!("8 nodes, point entry, tolerance {tolerance:e}"), 8, tolerance, format!("{library}\n{point_entry}")));
+        sources.push((format!("generated_8_tol{tolerance:e}"), format!("8 nodes, tolerance {tolerance:e}"), 8, tolerance, src, None));
+        sources.push((format!("generated_8_point_tol{tolerance:e}"), format!("8 nodes, point entry, tolerance {tolerance:e}"), 8, tolerance, format!("{library}\n{point_entry}"), None));
+        sources.push((
+            format!("generated_8_two_pass_tol{tolerance:e}"),
+            format!("8 nodes, two passes, tolerance {tolerance:e}"),
+            8,
+            tolerance,
+            format!("{library}\n{route_entry}"),
+            Some(format!("{library}\n{point_entry}")),
+        ));
     }
-    let generated: Vec<(String, String, usize, f32, Prepared<'_>)> = sources.into_iter().map(|(id, name, n, tol, src)| { let p = prepare(&id, &src); (id, name, n, tol, p) }).collect();
+    let generated: Vec<(String, String, usize, f32, Pipelines<'_>)> = sources
+        .into_iter()
+        .map(|(id, name, n, tol, src, rest)| {
+            let first = prepare(&id, &src);
+            let rest = rest.map(|r| prepare(&format!("{id} (second pass)"), &r));
+            (id, name, n, tol, Pipelines { first, rest })
+        })
+        .collect();
     let copy_only = prepare("copy_only", COPY_ONLY);
     let parts: Vec<(String, &str, Prepared<'_>)> = parts().into_iter().map(|(id, what, src)| { let p = prepare(&id, &src); (id, what, p) }).collect();
     let mut parts_md = String::new();
@@ -316,7 +352,7 @@ fn main() {
 
         // ---- accuracy, untimed
         let gen_err: Vec<(&str, [f64; 3])> =
-            generated.iter().map(|(_, name, _, _, p)| (name.as_str(), errors(&p.run(&records, false).expect("generated shader runs"), &reference))).collect();
+            generated.iter().map(|(_, name, _, _, p)| (name.as_str(), errors(&p.run(&records), &reference))).collect();
         let cpu_err: Vec<(&str, [f64; 3])> = generated
             .iter()
             .map(|(_, name, n, tolerance, _)| {
@@ -388,7 +424,7 @@ fn main() {
             .measurement_time(Duration::from_secs(3))
             .throughput(Throughput::Elements(RAYS as u64));
         for (id, _, _, _, p) in &generated {
-            g.bench_function(id.as_str(), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
+            g.bench_function(id.as_str(), |b| b.iter(|| p.run(&records)));
         }
         for (baseline, n, p) in &prepared {
             g.bench_function(format!("{}_{n}", baseline.id()), |b| b.iter(|| p.run(&records, false).expect("GPU run")));
