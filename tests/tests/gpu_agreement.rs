@@ -513,6 +513,18 @@ fn street_renders_through_the_shader() {
     assert!(stats.max <= 1e-3, "street: shader pixel {:.3e} off the reference", stats.max);
 }
 
+/// The packed record of the first segment light in tests/reference/extended.jsonl.
+fn segment_record() -> Vec<u8> {
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    reference_lines("extended.jsonl")
+        .iter()
+        .find_map(|v| match parse_any_value::<f32>(v) {
+            Ok(AnyRecord::Segment(s)) => Some(airlight_shaders::layout::pack_segment(&s).to_vec()),
+            _ => None,
+        })
+        .expect("a segment light in extended.jsonl")
+}
+
 /// The include library's `airlight_in_scatter_point` (WGSL, 8 and 12 nodes) meets the point
 /// light's criterion on the records of `every_artifact_agrees_with_the_cpu_kernel` (random
 /// scenes, extremes, invalid records, the mpmath references), and answers a valid segment light
@@ -520,15 +532,9 @@ fn street_renders_through_the_shader() {
 #[test]
 fn the_point_entry_agrees_with_the_cpu_kernel() {
     use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-    use airlight_shaders::layout::{pack_segment, pack_surface};
+    use airlight_shaders::layout::pack_surface;
     let Some(gpu) = gpu() else { return };
-    let segment = reference_lines("extended.jsonl")
-        .iter()
-        .find_map(|v| match parse_any_value::<f32>(v) {
-            Ok(AnyRecord::Segment(s)) => Some(pack_segment(&s)),
-            _ => None,
-        })
-        .expect("a segment light in extended.jsonl");
+    let segment = segment_record();
     let surface = reference_lines("surface.jsonl")
         .iter()
         .find_map(|v| match parse_any_value::<f32>(v) {
@@ -581,13 +587,7 @@ fn two_passes_give_the_point_entrys_results() {
             assert!((va - vb).abs() <= 4.0 * f32::EPSILON * va.abs().max(vb.abs()) || va == vb, "{terms} nodes, record {i}: two passes {va}, point entry {vb}");
         }
     }
-    let segment = reference_lines("extended.jsonl")
-        .iter()
-        .find_map(|v| match airlight_codegen::scene_json::parse_any_value::<f32>(v) {
-            Ok(airlight_codegen::scene_json::AnyRecord::Segment(s)) => Some(airlight_shaders::layout::pack_segment(&s)),
-            _ => None,
-        })
-        .expect("a segment light in extended.jsonl");
+    let segment = segment_record();
     let route = gpu.prepare(Shader::Wgsl(&route_compute_wgsl(NODE_COUNTS[0])));
     assert_eq!(unpack_result(&route.run(&segment, false).unwrap()), (0.0, STATUS_INVALID), "the route entry on a segment light");
 }
