@@ -228,7 +228,6 @@ pub(crate) fn hypot1<T: Real>(x: T) -> T {
     }
 }
 
-
 /// `atan2(y, x)` for `y > 0` (the upper half-plane, `(0, π)`) by one `atan`, of `y/x` where
 /// `x > 0`, else `π/2 + atan(−x/y)`: one rounding more than the library's `atan2` (the
 /// quotient's, at most half an ulp relative, which `atan` does not amplify: `|x atan′(x)| ≤

@@ -534,7 +534,6 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
     use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
     use airlight_shaders::layout::pack_surface;
     let Some(gpu) = gpu() else { return };
-    let segment = segment_record();
     let surface = reference_lines("surface.jsonl")
         .iter()
         .find_map(|v| match parse_any_value::<f32>(v) {
@@ -542,12 +541,12 @@ fn the_point_entry_agrees_with_the_cpu_kernel() {
             _ => None,
         })
         .expect("a Lambertian surface point in surface.jsonl");
+    let mut others = segment_record();
+    others.extend_from_slice(&surface);
     for terms in NODE_COUNTS {
         let shader = gpu.prepare(Shader::Wgsl(&point_compute_wgsl(terms)));
         let c = case(terms);
         compare(&format!("wgsl airlight_in_scatter_point/{terms}"), &c, &shader.run(&c.records, false).unwrap());
-        let mut others = segment.to_vec();
-        others.extend_from_slice(&surface);
         let general = gpu.run(Shader::Wgsl(compute_wgsl(terms)), &others, false).unwrap();
         let point = shader.run(&others, false).unwrap();
         for (k, what) in ["segment light", "surface point"].iter().enumerate() {

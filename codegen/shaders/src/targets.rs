@@ -26,8 +26,9 @@ const COMPUTE: &str = include_str!("../shader/compute.wgsl");
 const LIBRARY_ENTRY: &str = "airlight_library_entry";
 const COMPUTE_ENTRY: &str = "airlight_main";
 
-/// A dummy entry point that keeps every library function reachable for the back ends (both public
-/// entries: `airlight_in_scatter` and the point light's `airlight_in_scatter_point`).
+/// A dummy entry point that keeps every library function reachable for the back ends (the three
+/// public entries: `airlight_in_scatter`, the point light's `airlight_in_scatter_point` and the
+/// first pass's `airlight_in_scatter_route`).
 const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
@@ -35,6 +36,7 @@ fn airlight_library_entry() {
         vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
+    let p = airlight_in_scatter_route(s);
 }
 ";
 
@@ -46,7 +48,8 @@ fn airlight_library_entry() -> @location(0) vec4<f32> {
         vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
-    return vec4<f32>(r.in_scatter, q.in_scatter, 0.0, 0.0);
+    let p = airlight_in_scatter_route(s);
+    return vec4<f32>(r.in_scatter, q.in_scatter, p.in_scatter, 0.0);
 }
 ";
 
