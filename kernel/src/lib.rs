@@ -80,5 +80,5 @@ pub use phase::PhaseFunction;
 pub use precision::{f32, f64};
 pub use real::Real;
 pub use scalar::Scalar;
-pub use surface::{Brdf, Surface, SurfaceScene, SHADER_SURFACE_PANELS};
+pub use surface::{Brdf, Surface, SurfaceScene, SHADER_PHONG_PANELS, SHADER_SURFACE_PANELS};
 pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_NODES};
