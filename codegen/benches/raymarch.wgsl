@@ -1,5 +1,5 @@
 // Ray-marching baseline for the GPU benchmark (codegen/benches/gpu.rs): the same record buffer
-// (binding 0, the 128-byte `AirlightScene` of codegen/shaders/src/layout.rs) and the same 8-byte results
+// (binding 0, the 144-byte `AirlightScene` of codegen/shaders/src/layout.rs) and the same 8-byte results
 // (binding 1: value + status) as the generated `airlight_main`, workgroup size 64.
 //
 // It integrates the contract integral (README, DESIGN §1)

@@ -201,7 +201,7 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 }
                 None => lines.push((
                     id,
-                    Err(format_error(n, "surface: Phong lobes and lights with an axis are evaluated on the CPU backend (the shader library has Lambertian surfaces lit by omni lights)")),
+                    Err(format_error(n, "surface: lights with an axis are evaluated on the CPU backend (the shader library has Lambertian and Phong surfaces lit by omni lights)")),
                 )),
             },
             Ok((id, Err(e))) => lines.push((id, Err(format_error(n, &e.to_string())))),

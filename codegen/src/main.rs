@@ -66,7 +66,7 @@ Area lights of uniform radiance L (CPU backend): \"light\": {\"shape\": \"disc\"
 \"normal\": [x,y,z], \"radius\": R, \"radiance\": L} or {\"shape\": \"rectangle\", \"corner\": [x,y,z],
 \"edge_u\": [x,y,z], \"edge_v\": [x,y,z], \"radiance\": L} (emitting on the side of edge_u x edge_v)
 or {\"shape\": \"sphere\", \"center\": [x,y,z], \"radius\": R, \"radiance\": L}.
-A surface point (CPU default path; --backend gpu: Lambert lit by an omni light), in place of the ray: \"surface\": {\"position\": [x,y,z],
+A surface point (CPU default path; --backend gpu: lit by an omni light), in place of the ray: \"surface\": {\"position\": [x,y,z],
 \"normal\": [x,y,z], \"brdf\": {\"kind\": \"lambert\", \"albedo\": a} | {\"kind\": \"phong\", \"k_s\": k,
 \"exponent\": n, \"view\": [x,y,z]}} -> {\"surface_air_light\": L}: the air-light reflected towards
 the eye, the in-scattered radiance of every ray from the point over its hemisphere times the BRDF.";

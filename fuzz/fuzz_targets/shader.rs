@@ -18,7 +18,7 @@ use airlight::glam::Vec3;
 use airlight_shaders::agreement::{expect, in_domain, judge, judge_defined, Expected};
 use airlight_shaders::gpu::{Gpu, Prepared, Shader};
 use airlight::{Brdf, SegmentLight, SegmentScene, Surface, SurfaceScene};
-use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, Record, RESULT_SIZE, STATUS_INVALID, STATUS_OK, SURFACE_LAMBERT};
+use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, Record, RECORD_SIZE, RESULT_SIZE, STATUS_INVALID, STATUS_OK, SURFACE_LAMBERT, SURFACE_PHONG};
 use airlight::record::SceneRecord;
 use libfuzzer_sys::fuzz_target;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -75,7 +75,7 @@ fuzz_target!(|batch: Batch| {
         }
     }
     // the outer integrals: (record, the CPU accepts it, what it is)
-    let mut outer: Vec<([u8; 128], bool, String)> = Vec::new();
+    let mut outer: Vec<([u8; RECORD_SIZE], bool, String)> = Vec::new();
     for (raw, rec) in batch.0.iter().zip(&scenes) {
         let l = rec.light;
         let tube = SegmentLight { a: l.position, b: l.position + Vec3::new(raw.axis[0] as f32, raw.axis[1] as f32, raw.axis[2] as f32), intensity: l.intensity, distribution: l.distribution };
@@ -89,16 +89,24 @@ fuzz_target!(|batch: Batch| {
             }
         }
         if matches!(l.distribution, airlight::light::AnyDistribution::Omni) {
-            let albedo = raw.w as f32;
             let surface = Surface { position: rec.ray.origin, normal: rec.ray.dir };
-            match SurfaceScene::new(surface, Brdf::Lambert { albedo }, l, rec.medium, rec.phase) {
-                Ok(s) => outer.push((pack_surface(&s).expect("a Lambertian surface lit by an omni light packs"), true, format!("{s:?}"))),
-                Err(_) => {
-                    let ray = airlight::Ray { origin: surface.position, dir: surface.normal, t_min: 0.0, t_max: f32::INFINITY };
-                    let mut r = Record::new(&ray, &l, &rec.medium, &rec.phase);
-                    r.brdf_albedo = albedo;
-                    r.surface_kind = SURFACE_LAMBERT;
-                    outer.push((r.bytes(), false, format!("invalid surface {surface:?} albedo {albedo} for {rec:?}")));
+            let view = Vec3::new(raw.axis[0] as f32, raw.axis[1] as f32, raw.axis[2] as f32);
+            let (albedo, exponent) = (raw.w as f32, raw.w as f32 * 100.0);
+            for brdf in [Brdf::Lambert { albedo }, Brdf::Phong { k_s: albedo, exponent, view }] {
+                match SurfaceScene::new(surface, brdf, l, rec.medium, rec.phase) {
+                    Ok(s) => outer.push((pack_surface(&s).expect("a surface lit by an omni light packs"), true, format!("{s:?}"))),
+                    Err(_) => {
+                        let ray = airlight::Ray { origin: surface.position, dir: surface.normal, t_min: 0.0, t_max: f32::INFINITY };
+                        let mut r = Record::new(&ray, &l, &rec.medium, &rec.phase);
+                        r.brdf_scale = albedo;
+                        r.surface_kind = SURFACE_LAMBERT;
+                        if let Brdf::Phong { exponent, view, .. } = brdf {
+                            r.brdf_exponent = exponent;
+                            r.brdf_view = view.to_array();
+                            r.surface_kind = SURFACE_PHONG;
+                        }
+                        outer.push((r.bytes(), false, format!("invalid surface {surface:?} {brdf:?} for {rec:?}")));
+                    }
                 }
             }
         }

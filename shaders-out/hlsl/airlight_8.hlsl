@@ -18,11 +18,13 @@ struct AirlightScene {
     uint light_kind;
     uint phase_kind;
     uint flags;
-    float brdf_albedo;
+    float brdf_scale;
     uint surface_kind;
-    int _pad19_0;
+    float brdf_exponent;
     float3 light_end;
     uint light_shape;
+    float3 brdf_view;
+    int _end_pad_0;
 };
 
 struct AirlightResult {
@@ -64,6 +66,16 @@ struct AirlightPanelList {
     float4 panel_d;
     float4 panel_e;
     float4 panel_f;
+    float4 panel_g;
+    float4 panel_h;
+    float4 panel_i;
+    float4 panel_j;
+    float4 panel_k;
+    float4 panel_l;
+    float4 panel_m;
+    float4 panel_n;
+    float4 panel_o;
+    float4 panel_p;
 };
 
 struct AirlightListScan {
@@ -78,7 +90,7 @@ struct AirlightOuter {
     float3 e;
     float s_star;
     float scale;
-    float edges[5];
+    float edges[13];
     uint panels;
     uint outcome;
     uint max_panels;
@@ -90,10 +102,25 @@ struct AirlightOuter {
     float3 u;
     float cos_a;
     float sin_a;
-    float gamma[4];
+    float gamma[13];
+    float cos_r;
+    float sin_r;
+    float alpha_r;
+    int _pad16_0;
+    int _pad16_1;
+    int _pad16_2;
+    float3 delta;
     int _end_pad_0;
-    int _end_pad_1;
-    int _end_pad_2;
+};
+
+struct AirlightLobe {
+    float a;
+    float b;
+    float k;
+    float log_peak;
+    float cos_delta;
+    float sin_delta;
+    float exponent;
 };
 
 struct AirlightNode {
@@ -133,6 +160,7 @@ static const uint AIRLIGHT_SHAPE_POINT = 0u;
 static const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
 static const uint AIRLIGHT_SURFACE_NONE = 0u;
 static const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
+static const uint AIRLIGHT_SURFACE_PHONG = 2u;
 static const uint AIRLIGHT_STATUS_OK = 0u;
 static const uint AIRLIGHT_STATUS_INVALID = 1u;
 static const uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -147,6 +175,9 @@ static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 static const uint AIRLIGHT_SURFACE_PANELS = 6u;
+static const uint AIRLIGHT_PHONG_PANELS = 16u;
+static const uint AIRLIGHT_OUTER_EDGES = 13u;
+static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 
 ByteAddressBuffer airlight_records : register(t0);
 RWByteAddressBuffer airlight_results : register(u1);
@@ -278,37 +309,21 @@ float2 airlight_cln(float2 z_3)
 
 float airlight_log1p(float x_2)
 {
-    float sum = 0.0;
-    uint k = 0u;
+    bool local_1 = (bool)0;
 
-    if ((x_2 > 1.0)) {
+    if (!((x_2 > 1.0))) {
+        local_1 = (x_2 < -0.5);
+    } else {
+        local_1 = true;
+    }
+    bool _e9 = local_1;
+    if (_e9) {
         return log((1.0 + x_2));
     }
     float s_27 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_27 * s_27);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e31 = k;
-            k = (_e31 + 1u);
-        }
-        loop_init = false;
-        uint _e14 = k;
-        if ((_e14 < 9u)) {
-        } else {
-            break;
-        }
-        {
-            float _e17 = sum;
-            uint _e21 = k;
-            sum = ((_e17 * s2_) + (1.0 / float(((2u * (8u - _e21)) + 1u))));
-        }
-    }
-    float _e35 = sum;
-    return ((2.0 * s_27) * _e35);
+    float z_11 = (s_27 * s_27);
+    float sum_6 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
+    return ((2.0 * s_27) * sum_6);
 }
 
 bool airlight_is_finite(float x_3)
@@ -318,33 +333,33 @@ bool airlight_is_finite(float x_3)
 
 float2 airlight_ein(float2 z_4)
 {
-    float2 sum_1 = float2(0.0, 0.0);
-    uint k_1 = 0u;
+    float2 sum = float2(0.0, 0.0);
+    uint k = 0u;
 
     const float _e1[13] = airlight_ein_coefficients();
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e21 = k_1;
-            k_1 = (_e21 + 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e21 = k;
+            k = (_e21 + 1u);
         }
-        loop_init_1 = false;
-        uint _e8 = k_1;
+        loop_init = false;
+        uint _e8 = k;
         if ((_e8 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
         {
-            float2 _e11 = sum_1;
+            float2 _e11 = sum;
             const float2 _e12 = airlight_cmul(_e11, z_4);
-            uint _e14 = k_1;
-            sum_1 = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
+            uint _e14 = k;
+            sum = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
         }
     }
-    float2 _e23 = sum_1;
+    float2 _e23 = sum;
     const float2 _e24 = airlight_cmul(_e23, z_4);
     return _e24;
 }
@@ -353,30 +368,30 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 {
     float2 h = float2(1.0, 0.0);
     float2 a_pow = float2(1.0, 0.0);
-    float2 sum_2 = float2(0.0, 0.0);
-    uint k_2 = 0u;
+    float2 sum_1 = float2(0.0, 0.0);
+    uint k_1 = 0u;
 
     const float _e2[13] = airlight_ein_coefficients();
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e33 = k_2;
-            k_2 = (_e33 + 1u);
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e33 = k_1;
+            k_1 = (_e33 + 1u);
         }
-        loop_init_2 = false;
-        uint _e17 = k_2;
+        loop_init_1 = false;
+        uint _e17 = k_1;
         if ((_e17 < AIRLIGHT_EIN_DD_TERMS)) {
         } else {
             break;
         }
         {
-            float2 _e20 = sum_2;
+            float2 _e20 = sum_1;
             float2 _e21 = h;
-            uint _e22 = k_2;
-            sum_2 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
+            uint _e22 = k_1;
+            sum_1 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
             float2 _e26 = a_pow;
             const float2 _e27 = airlight_cmul(_e26, a_2);
             a_pow = _e27;
@@ -386,15 +401,15 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
             h = (_e29 + _e30);
         }
     }
-    float2 _e35 = sum_2;
+    float2 _e35 = sum_1;
     return _e35;
 }
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_20 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_18 * x_18) + (y_5 * y_5)) < 1.0);
+    return (((x_20 * x_20) + (y_5 * y_5)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -484,16 +499,16 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float2 _e46 = root;
     const float2 _e48 = airlight_cmul(b_13, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e103 = i;
             i = (_e103 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_2 = false;
         uint _e54 = i;
         if ((_e54 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -564,16 +579,16 @@ float airlight_en_scaled_cf(float x_4, uint n)
     if ((disc > 0.0)) {
         t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e54 = i_1;
             i_1 = (_e54 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e34 = i_1;
         if ((_e34 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -784,16 +799,16 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
         case 1u: {
             base = c;
             e = airlight_naga_f2u32(p0_2);
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-            bool loop_init_5 = true;
+            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_5) {
+                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_4) {
                     uint _e32 = i_2;
                     i_2 = (_e32 + 1u);
                 }
-                loop_init_5 = false;
+                loop_init_4 = false;
                 uint _e11 = i_2;
                 if ((_e11 < AIRLIGHT_MAX_POWER_BITS)) {
                 } else {
@@ -825,8 +840,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_19 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_19 * x_19) * (3.0 - (2.0 * x_19)));
+            float x_21 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_21 * x_21) * (3.0 - (2.0 * x_21)));
         }
         default: {
             return 1.0;
@@ -991,16 +1006,16 @@ float airlight_moment_gauss(AirlightHalf half_)
     float hw_1 = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw_1);
     float2 nodes[4] = airlight_Constructarray4_float2_(float2(-0.33998105, 0.65214515), float2(0.33998105, 0.65214515), float2(-0.8611363, 0.34785485), float2(0.8611363, 0.34785485));
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e59 = j;
             j = (_e59 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e23 = j;
         if ((_e23 < 4u)) {
         } else {
@@ -1026,35 +1041,35 @@ float airlight_moment_gauss(AirlightHalf half_)
 
 bool airlight_is_short(AirlightHalf half_1)
 {
-    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
 
     if (!(half_1.dv_infinite)) {
-        local_1 = ((half_1.big_h * half_1.dv) <= 1.0);
-    } else {
-        local_1 = false;
-    }
-    bool short_exp = local_1;
-    if ((half_1.dy <= 0.25)) {
-        if (!(!(half_1.second))) {
-            local_3 = (half_1.dy <= (half_1.y_lo * 0.5));
-        } else {
-            local_3 = true;
-        }
-        bool _e28 = local_3;
-        local_2 = _e28;
+        local_2 = ((half_1.big_h * half_1.dv) <= 1.0);
     } else {
         local_2 = false;
     }
-    bool short_len = local_2;
-    if (short_exp) {
-        local_4 = short_len;
+    bool short_exp = local_2;
+    if ((half_1.dy <= 0.25)) {
+        if (!(!(half_1.second))) {
+            local_4 = (half_1.dy <= (half_1.y_lo * 0.5));
+        } else {
+            local_4 = true;
+        }
+        bool _e28 = local_4;
+        local_3 = _e28;
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e34 = local_4;
+    bool short_len = local_3;
+    if (short_exp) {
+        local_5 = short_len;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
     return _e34;
 }
 
@@ -1068,43 +1083,43 @@ float airlight_hypot_one(float a_3)
 
 bool airlight_is_near(float big_h, float v_e, bool v_e_infinite)
 {
-    bool local_5 = (bool)0;
     bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((big_h == 0.0))) {
         if (!(v_e_infinite)) {
             const float _e11 = airlight_hypot_one(v_e);
-            local_6 = ((big_h * _e11) <= 1.0);
+            local_7 = ((big_h * _e11) <= 1.0);
         } else {
-            local_6 = false;
+            local_7 = false;
         }
-        bool _e16 = local_6;
-        local_5 = _e16;
+        bool _e16 = local_7;
+        local_6 = _e16;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e18 = local_5;
+    bool _e18 = local_6;
     return _e18;
 }
 
 float airlight_q_zero(AirlightHalf half_2)
 {
     float v_e_1 = (float)0;
-    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
     float d_im = 0.0;
     float d_re = 0.0;
-    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float big_h_4 = half_2.big_h;
     float v_s_1 = (half_2.second ? (1.0 / half_2.y_hi) : half_2.y_lo);
     bool v_e_infinite_1 = half_2.dv_infinite;
     v_e_1 = half_2.y_hi;
     if (half_2.second) {
-        local_7 = !(v_e_infinite_1);
+        local_8 = !(v_e_infinite_1);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool _e16 = local_7;
+    bool _e16 = local_8;
     if (_e16) {
         v_e_1 = (1.0 / half_2.y_lo);
     }
@@ -1116,10 +1131,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_20);
+            float x_22 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_22);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_20);
+                const float _e43 = airlight_log1p(x_22);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1149,11 +1164,11 @@ float airlight_q_zero(AirlightHalf half_2)
     if (!(v_e_infinite_1)) {
         float _e95 = v_e_1;
         const bool _e97 = airlight_is_finite((big_h_4 * _e95));
-        local_8 = _e97;
+        local_9 = _e97;
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    bool _e99 = local_8;
+    bool _e99 = local_9;
     if (_e99) {
         float decay_1 = exp((-(big_h_4) * half_2.dv));
         if ((decay_1 > 2.9802322e-8)) {
@@ -1181,44 +1196,44 @@ float airlight_moment_zero(AirlightHalf half_3)
 
 float2 airlight_moment_zero_weighted(AirlightHalf half_4, float x_6)
 {
-    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
     bool local_12 = (bool)0;
-    float far_end = 0.0;
     bool local_13 = (bool)0;
+    float far_end = 0.0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     float big_h_5 = half_4.big_h;
     float v_s_2 = half_4.y_lo;
     float2 z_s_1 = float2((big_h_5 * v_s_2), -(big_h_5));
     if (!(half_4.second)) {
-        local_9 = (half_4.dy > 0.0);
-    } else {
-        local_9 = false;
-    }
-    bool _e15 = local_9;
-    if (_e15) {
-        const bool _e18 = airlight_is_short(half_4);
-        local_10 = !(_e18);
+        local_10 = (half_4.dy > 0.0);
     } else {
         local_10 = false;
     }
-    bool _e21 = local_10;
-    if (_e21) {
-        const bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
-        local_11 = !(_e26);
+    bool _e15 = local_10;
+    if (_e15) {
+        const bool _e18 = airlight_is_short(half_4);
+        local_11 = !(_e18);
     } else {
         local_11 = false;
     }
-    bool far_route = local_11;
+    bool _e21 = local_11;
+    if (_e21) {
+        const bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_12 = !(_e26);
+    } else {
+        local_12 = false;
+    }
+    bool far_route = local_12;
     if (!(!(far_route))) {
         const bool _e34 = airlight_in_series_region(z_s_1);
-        local_12 = !(_e34);
+        local_13 = !(_e34);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e37 = local_12;
+    bool _e37 = local_13;
     if (_e37) {
         const float _e38 = airlight_moment_zero(half_4);
         return float2(_e38, x_6);
@@ -1230,17 +1245,17 @@ float2 airlight_moment_zero_weighted(AirlightHalf half_4, float x_6)
     float v_e_3 = half_4.y_hi;
     if (!(half_4.dv_infinite)) {
         const bool _e56 = airlight_is_finite((big_h_5 * v_e_3));
-        local_13 = _e56;
-    } else {
-        local_13 = false;
-    }
-    bool _e58 = local_13;
-    if (_e58) {
-        local_14 = ((big_h_5 * half_4.dv) < 17.32868);
+        local_14 = _e56;
     } else {
         local_14 = false;
     }
-    bool _e66 = local_14;
+    bool _e58 = local_14;
+    if (_e58) {
+        local_15 = ((big_h_5 * half_4.dv) < 17.32868);
+    } else {
+        local_15 = false;
+    }
+    bool _e66 = local_15;
     if (_e66) {
         const float2 _e73 = airlight_e1_scaled(float2((big_h_5 * v_e_3), -(big_h_5)));
         far_end = (exp((-(big_h_5) * v_e_3)) * _e73.y);
@@ -1265,8 +1280,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[4], uint i_3)
 {
-    float x_21 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_21) : x_21);
+    float x_23 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_23) : x_23);
 }
 
 typedef float airlight_ret_airlight_legendre[8];
@@ -1285,35 +1300,34 @@ airlight_ret_airlight_legendre airlight_legendre(float g_5[8])
 
 float airlight_expm1_(float x_7)
 {
-    float sum_3 = 1.0;
-    uint i_4 = 0u;
+    float sum_2 = (float)0;
 
     if ((abs(x_7) >= 0.5)) {
         return (exp(x_7) - 1.0);
     }
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_7 = true;
-    while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e24 = i_4;
-            i_4 = (_e24 + 1u);
-        }
-        loop_init_7 = false;
-        uint _e11 = i_4;
-        if ((_e11 < 11u)) {
-        } else {
-            break;
-        }
-        {
-            float _e14 = sum_3;
-            uint _e17 = i_4;
-            sum_3 = (1.0 + ((x_7 * _e14) / float((12u - _e17))));
-        }
-    }
-    float _e26 = sum_3;
-    return (x_7 * _e26);
+    sum_2 = (1.0 + (x_7 / 12.0));
+    float _e12 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e12) / 11.0));
+    float _e18 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e18) / 10.0));
+    float _e24 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e24) / 9.0));
+    float _e30 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e30) / 8.0));
+    float _e36 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e36) / 7.0));
+    float _e42 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e42) / 6.0));
+    float _e48 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e48) / 5.0));
+    float _e54 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e54) / 4.0));
+    float _e60 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e60) / 3.0));
+    float _e66 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e66) / 2.0));
+    float _e72 = sum_2;
+    return (x_7 * _e72);
 }
 
 typedef float airlight_ret_airlight_exp_legendre_moments[8];
@@ -1326,7 +1340,7 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
     float cur = 1e-20;
     float below = 0.0;
     float odd = (float)0;
-    uint i_5 = 0u;
+    uint i_4 = 0u;
 
     const float _e1[8] = airlight_zero_terms();
     out_1 = _e1;
@@ -1349,19 +1363,19 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_22 = (lambda / float((2u * k0_)));
-            float per_step = (x_22 * x_22);
+            float x_24 = (lambda / float((2u * k0_)));
+            float per_step = (x_24 * x_24);
             share = per_step;
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-            bool loop_init_8 = true;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_8) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_6) {
                     uint _e53 = steps;
                     steps = (_e53 + 1u);
                 }
-                loop_init_8 = false;
+                loop_init_6 = false;
                 uint _e43 = steps;
                 if ((_e43 < 28u)) {
                 } else {
@@ -1379,23 +1393,23 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
             uint _e55 = steps;
             uint top = ((k0_ + _e55) + 2u);
             odd = float(((2u * top) + 1u));
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e100 = i_5;
-                    i_5 = (_e100 + 1u);
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e100 = i_4;
+                    i_4 = (_e100 + 1u);
                 }
-                loop_init_9 = false;
-                uint _e73 = i_5;
+                loop_init_7 = false;
+                uint _e73 = i_4;
                 if ((_e73 < 46u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e76 = i_5;
+                    uint _e76 = i_4;
                     if (((_e76 + AIRLIGHT_TERMS) > top)) {
                         break;
                     }
@@ -1678,11 +1692,11 @@ float airlight_tail_estimate(float c_1[8])
 
 float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
 {
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
-    uint i_6 = 0u;
+    uint i_5 = 0u;
 
     if (!((m_1[0] > 0.0))) {
         return 1.0;
@@ -1690,44 +1704,44 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
     float last = (abs(c_2[7]) + abs(c_2[6]));
     float before = (abs(c_2[5]) + abs(c_2[4]));
     if (!(!((before > 0.0)))) {
-        local_15 = !((last < before));
+        local_16 = !((last < before));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e27 = local_15;
+    bool _e27 = local_16;
     if (_e27) {
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_1 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_4 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if ((q_1 < 1.0)) {
+    if ((q_4 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_1) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_4) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_1) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_4) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_1) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_4) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_1) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_4) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_1) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_4) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_1) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_4) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_1) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_4) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (false ? ((_e126 * q_1) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (false ? ((_e126 * q_4) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
-        return min(((_e133 + (q_1 * truncation)) / m_1[0]), 1.0);
+        return min(((_e133 + (q_4 * truncation)) / m_1[0]), 1.0);
     }
     float _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -1747,17 +1761,17 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
     c_max = max(_e170, abs(c_2[7]));
     float _e176 = c_max;
     uint power = ((_e176 > (1.2 * abs(c_2[0]))) ? 1u : 2u);
-    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_10) {
-            uint _e192 = i_6;
-            i_6 = (_e192 + 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e192 = i_5;
+            i_5 = (_e192 + 1u);
         }
-        loop_init_10 = false;
-        uint _e187 = i_6;
+        loop_init_8 = false;
+        uint _e187 = i_5;
         if ((_e187 < power)) {
         } else {
             break;
@@ -1792,8 +1806,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_23 = (half_5.big_h * _e13);
-    return ((x_23 > 0.0) ? exp(-(x_23)) : 1.0);
+    float x_25 = (half_5.big_h * _e13);
+    return ((x_25 > 0.0) ? exp(-(x_25)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -1840,8 +1854,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     float f_max_1 = 0.0;
     float over_max = 0.0;
     float g_avg = 0.0;
-    uint i_7 = 0u;
-    float sum_4 = 0.0;
+    uint i_6 = 0u;
+    float sum_3 = 0.0;
 
     const float2 _e8[4] = airlight_gauss_rule();
     r_2 = ((b_4 - a_5) * 0.5);
@@ -1854,17 +1868,17 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     }
     const float _e26[8] = airlight_zero_terms();
     samples = _e26;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_11 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e74 = i_7;
-            i_7 = (_e74 + 1u);
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e74 = i_6;
+            i_6 = (_e74 + 1u);
         }
-        loop_init_11 = false;
-        uint _e36 = i_7;
+        loop_init_9 = false;
+        uint _e36 = i_6;
         if ((_e36 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -1872,21 +1886,21 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_6, float s
         {
             float _e39 = vc;
             float _e40 = r_2;
-            uint _e41 = i_7;
+            uint _e41 = i_6;
             const float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
             const float2 _e48 = airlight_integrand_over(s_4, g_6, (half_6.second ? -(sigma_4) : sigma_4), v_6);
             float fy = _e48.x;
             float over = _e48.y;
-            uint _e51 = i_7;
+            uint _e51 = i_6;
             samples[min(uint(_e51), 7u)] = (fy * over);
             float _e54 = f_max_1;
             f_max_1 = max(_e54, abs(fy));
             float _e57 = over_max;
             over_max = max(_e57, over);
             float _e59 = g_avg;
-            uint _e60 = i_7;
-            uint _e67 = i_7;
+            uint _e60 = i_6;
+            uint _e67 = i_6;
             float _e69 = samples[min(uint(_e67), 7u)];
             g_avg = (_e59 + ((_e8[min(uint(airlight_naga_div(_e60, 2u)), 3u)].y * 0.5) * abs(_e69)));
         }
@@ -1895,38 +1909,38 @@ AirlightPanel airlight_v_panel(AirlightScene s_4, AirlightCanonical g_6, float s
     const float _e77[8] = airlight_legendre(_e76);
     float _e79 = r_2;
     const float _e81[8] = airlight_exp_legendre_moments((half_6.big_h * _e79));
-    float _e84 = sum_4;
-    sum_4 = (_e84 + (_e77[0] * _e81[0]));
-    float _e89 = sum_4;
-    sum_4 = (_e89 + (_e77[1] * _e81[1]));
-    float _e94 = sum_4;
-    sum_4 = (_e94 + (_e77[2] * _e81[2]));
-    float _e99 = sum_4;
-    sum_4 = (_e99 + (_e77[3] * _e81[3]));
-    float _e104 = sum_4;
-    sum_4 = (_e104 + (_e77[4] * _e81[4]));
-    float _e109 = sum_4;
-    sum_4 = (_e109 + (_e77[5] * _e81[5]));
-    float _e114 = sum_4;
-    sum_4 = (_e114 + (_e77[6] * _e81[6]));
-    float _e119 = sum_4;
-    sum_4 = (_e119 + (_e77[7] * _e81[7]));
+    float _e84 = sum_3;
+    sum_3 = (_e84 + (_e77[0] * _e81[0]));
+    float _e89 = sum_3;
+    sum_3 = (_e89 + (_e77[1] * _e81[1]));
+    float _e94 = sum_3;
+    sum_3 = (_e94 + (_e77[2] * _e81[2]));
+    float _e99 = sum_3;
+    sum_3 = (_e99 + (_e77[3] * _e81[3]));
+    float _e104 = sum_3;
+    sum_3 = (_e104 + (_e77[4] * _e81[4]));
+    float _e109 = sum_3;
+    sum_3 = (_e109 + (_e77[5] * _e81[5]));
+    float _e114 = sum_3;
+    sum_3 = (_e114 + (_e77[6] * _e81[6]));
+    float _e119 = sum_3;
+    sum_3 = (_e119 + (_e77[7] * _e81[7]));
     const float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
-    float w = (_e124 * _e125);
-    float mass_5 = (w * _e81[0]);
+    float w_1 = (_e124 * _e125);
+    float mass_5 = (w_1 * _e81[0]);
     float _e129 = vc;
     float _e130 = r_2;
     const float _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
     const float _e133 = airlight_tail_estimate(_e77);
     const float _e135 = airlight_error_factor(_e77, _e81, _e132);
     float error_1 = ((mass_5 * _e133) * _e135);
-    float _e137 = sum_4;
+    float _e137 = sum_3;
     float _e139 = g_avg;
     const float _e140 = airlight_transform_noise(mass_5, _e139);
     float _e141 = over_max;
     float _e143 = f_max_1;
-    const AirlightPanel _e144 = airlight_panel_result((w * _e137), error_1, _e140, (mass_5 * _e141), _e143);
+    const AirlightPanel _e144 = airlight_panel_result((w_1 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
     const AirlightPanel airlightpanel_1 = _e144;
     return airlightpanel_1;
 }
@@ -1938,7 +1952,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_7, float s
     float over_max_1 = 0.0;
     float mass_1 = 0.0;
     float p_avg = 0.0;
-    uint i_8 = 0u;
+    uint i_7 = 0u;
     float m_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     const float2 _e8[4] = airlight_gauss_rule();
@@ -1946,40 +1960,40 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_7, float s
     float yc_1 = (a_6 + r_9);
     const float _e13[8] = airlight_zero_terms();
     samples_1 = _e13;
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e79 = i_8;
-            i_8 = (_e79 + 1u);
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e79 = i_7;
+            i_7 = (_e79 + 1u);
         }
-        loop_init_12 = false;
-        uint _e25 = i_8;
+        loop_init_10 = false;
+        uint _e25 = i_7;
         if ((_e25 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e28 = i_8;
+            uint _e28 = i_7;
             const float _e29 = airlight_node(_e8, _e28);
             float y_7 = (yc_1 + (r_9 * _e29));
-            float weight = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
+            float weight_1 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
             const float _e41 = airlight_integrand(s_5, g_7, sigma_5, y_7);
             float over_1 = (1.0 / (1.0 + (y_7 * y_7)));
-            uint _e47 = i_8;
-            samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight);
+            uint _e47 = i_7;
+            samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight_1);
             float _e51 = f_max_2;
             f_max_2 = max(_e51, abs(_e41));
             float _e54 = over_max_1;
             over_max_1 = max(_e54, over_1);
             float _e56 = mass_1;
-            uint _e57 = i_8;
-            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 3u)].y * weight));
+            uint _e57 = i_7;
+            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 3u)].y * weight_1));
             float _e64 = p_avg;
-            uint _e65 = i_8;
-            uint _e72 = i_8;
+            uint _e65 = i_7;
+            uint _e72 = i_7;
             float _e74 = samples_1[min(uint(_e72), 7u)];
             p_avg = (_e64 + ((_e8[min(uint(airlight_naga_div(_e65, 2u)), 3u)].y * 0.5) * abs(_e74)));
         }
@@ -1987,7 +2001,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_7, float s
     float _e81[8] = samples_1;
     const float _e82[8] = airlight_legendre(_e81);
     const float _e83 = airlight_factor(half_7, a_6, b_5);
-    float w_1 = (_e83 * r_9);
+    float w_2 = (_e83 * r_9);
     const float _e85[8] = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2.0;
@@ -1995,13 +2009,13 @@ AirlightPanel airlight_y_panel(AirlightScene s_5, AirlightCanonical g_7, float s
     const float _e93 = airlight_tail_estimate(_e82);
     float _e95[8] = m_2;
     const float _e96 = airlight_error_factor(_e82, _e95, _e90);
-    float error_2 = (((w_1 * 2.0) * _e93) * _e96);
+    float error_2 = (((w_2 * 2.0) * _e93) * _e96);
     float _e104 = p_avg;
-    const float _e105 = airlight_transform_noise((w_1 * 2.0), _e104);
+    const float _e105 = airlight_transform_noise((w_2 * 2.0), _e104);
     float _e106 = mass_1;
     float _e108 = over_max_1;
     float _e110 = f_max_2;
-    const AirlightPanel _e111 = airlight_panel_result(((w_1 * 2.0) * _e82[0]), error_2, _e105, ((w_1 * _e106) * _e108), _e110);
+    const AirlightPanel _e111 = airlight_panel_result(((w_2 * 2.0) * _e82[0]), error_2, _e105, ((w_2 * _e106) * _e108), _e110);
     const AirlightPanel airlightpanel_2 = _e111;
     return airlightpanel_2;
 }
@@ -2062,14 +2076,14 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     float samples_2[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
-    uint i_9 = 0u;
+    uint i_8 = 0u;
     float q[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float s_a[10] = airlight_Constructarray10_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = (float)0;
-    float sum_5 = (float)0;
+    float sum_4 = (float)0;
     float ratio_1 = (float)0;
     float l_prev = 0.0;
     float l_cur = 1.0;
@@ -2081,33 +2095,33 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     float yc_2 = (a_7 + r_10);
     const float _e11[8] = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-    bool loop_init_13 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_13) {
-            uint _e51 = i_9;
-            i_9 = (_e51 + 1u);
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e51 = i_8;
+            i_8 = (_e51 + 1u);
         }
-        loop_init_13 = false;
-        uint _e19 = i_9;
+        loop_init_11 = false;
+        uint _e19 = i_8;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e22 = i_9;
+            uint _e22 = i_8;
             const float _e23 = airlight_node(_e6, _e22);
             float y_8 = (yc_2 + (r_10 * _e23));
             const float _e26 = airlight_integrand(s_6, g_8, sigma_6, y_8);
-            uint _e27 = i_9;
+            uint _e27 = i_8;
             samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_8 * y_8)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
-            uint _e37 = i_9;
-            uint _e44 = i_9;
+            uint _e37 = i_8;
+            uint _e44 = i_8;
             float _e46 = samples_2[min(uint(_e44), 7u)];
             g_avg_1 = (_e36 + ((_e6[min(uint(airlight_naga_div(_e37, 2u)), 3u)].y * 0.5) * abs(_e46)));
         }
@@ -2187,11 +2201,11 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     const float _e303[10] = airlight_en_scaled((big_h_6 / b_6));
     if ((a_7 > 0.0)) {
         const bool _e321 = airlight_is_finite((big_h_6 / a_7));
-        local_16 = _e321;
+        local_17 = _e321;
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    bool far_1 = local_16;
+    bool far_1 = local_17;
     if (far_1) {
         decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
@@ -2213,89 +2227,89 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     float mass_u = ((b_6 * _e303[1]) - ((_e354 > 0.0) ? ((_e349 * a_7) * _e352) : 0.0));
     mass_2 = mass_u;
     float _e362 = q[0];
-    sum_5 = (_e362 * mass_u);
+    sum_4 = (_e362 * mass_u);
     float _e365 = ab;
     ratio_1 = _e365;
-    float _e367 = sum_5;
+    float _e367 = sum_4;
     float _e369 = q[1];
     float _e372 = decay;
     float _e374 = ratio_1;
     float _e377 = s_a[2];
     float _e379 = decay;
-    sum_5 = (_e367 + (_e369 * ((b_6 * _e303[2]) - ((_e379 > 0.0) ? (((_e372 * a_7) * _e374) * _e377) : 0.0))));
+    sum_4 = (_e367 + (_e369 * ((b_6 * _e303[2]) - ((_e379 > 0.0) ? (((_e372 * a_7) * _e374) * _e377) : 0.0))));
     float _e387 = ratio_1;
     float _e388 = ab;
     ratio_1 = (_e387 * _e388);
-    float _e390 = sum_5;
+    float _e390 = sum_4;
     float _e392 = q[2];
     float _e395 = decay;
     float _e397 = ratio_1;
     float _e400 = s_a[3];
     float _e402 = decay;
-    sum_5 = (_e390 + (_e392 * ((b_6 * _e303[3]) - ((_e402 > 0.0) ? (((_e395 * a_7) * _e397) * _e400) : 0.0))));
+    sum_4 = (_e390 + (_e392 * ((b_6 * _e303[3]) - ((_e402 > 0.0) ? (((_e395 * a_7) * _e397) * _e400) : 0.0))));
     float _e410 = ratio_1;
     float _e411 = ab;
     ratio_1 = (_e410 * _e411);
-    float _e413 = sum_5;
+    float _e413 = sum_4;
     float _e415 = q[3];
     float _e418 = decay;
     float _e420 = ratio_1;
     float _e423 = s_a[4];
     float _e425 = decay;
-    sum_5 = (_e413 + (_e415 * ((b_6 * _e303[4]) - ((_e425 > 0.0) ? (((_e418 * a_7) * _e420) * _e423) : 0.0))));
+    sum_4 = (_e413 + (_e415 * ((b_6 * _e303[4]) - ((_e425 > 0.0) ? (((_e418 * a_7) * _e420) * _e423) : 0.0))));
     float _e433 = ratio_1;
     float _e434 = ab;
     ratio_1 = (_e433 * _e434);
-    float _e436 = sum_5;
+    float _e436 = sum_4;
     float _e438 = q[4];
     float _e441 = decay;
     float _e443 = ratio_1;
     float _e446 = s_a[5];
     float _e448 = decay;
-    sum_5 = (_e436 + (_e438 * ((b_6 * _e303[5]) - ((_e448 > 0.0) ? (((_e441 * a_7) * _e443) * _e446) : 0.0))));
+    sum_4 = (_e436 + (_e438 * ((b_6 * _e303[5]) - ((_e448 > 0.0) ? (((_e441 * a_7) * _e443) * _e446) : 0.0))));
     float _e456 = ratio_1;
     float _e457 = ab;
     ratio_1 = (_e456 * _e457);
-    float _e459 = sum_5;
+    float _e459 = sum_4;
     float _e461 = q[5];
     float _e464 = decay;
     float _e466 = ratio_1;
     float _e469 = s_a[6];
     float _e471 = decay;
-    sum_5 = (_e459 + (_e461 * ((b_6 * _e303[6]) - ((_e471 > 0.0) ? (((_e464 * a_7) * _e466) * _e469) : 0.0))));
+    sum_4 = (_e459 + (_e461 * ((b_6 * _e303[6]) - ((_e471 > 0.0) ? (((_e464 * a_7) * _e466) * _e469) : 0.0))));
     float _e479 = ratio_1;
     float _e480 = ab;
     ratio_1 = (_e479 * _e480);
-    float _e482 = sum_5;
+    float _e482 = sum_4;
     float _e484 = q[6];
     float _e487 = decay;
     float _e489 = ratio_1;
     float _e492 = s_a[7];
     float _e494 = decay;
-    sum_5 = (_e482 + (_e484 * ((b_6 * _e303[7]) - ((_e494 > 0.0) ? (((_e487 * a_7) * _e489) * _e492) : 0.0))));
+    sum_4 = (_e482 + (_e484 * ((b_6 * _e303[7]) - ((_e494 > 0.0) ? (((_e487 * a_7) * _e489) * _e492) : 0.0))));
     float _e502 = ratio_1;
     float _e503 = ab;
     ratio_1 = (_e502 * _e503);
-    float _e505 = sum_5;
+    float _e505 = sum_4;
     float _e507 = q[7];
     float _e510 = decay;
     float _e512 = ratio_1;
     float _e515 = s_a[8];
     float _e517 = decay;
-    sum_5 = (_e505 + (_e507 * ((b_6 * _e303[8]) - ((_e517 > 0.0) ? (((_e510 * a_7) * _e512) * _e515) : 0.0))));
+    sum_4 = (_e505 + (_e507 * ((b_6 * _e303[8]) - ((_e517 > 0.0) ? (((_e510 * a_7) * _e512) * _e515) : 0.0))));
     float _e525 = ratio_1;
     float _e526 = ab;
     ratio_1 = (_e525 * _e526);
     const float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_24 = (abs(alpha) + abs(beta));
+    float x_26 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_24) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_26) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2305,7 +2319,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_24) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_26) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2315,7 +2329,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_24) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_26) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2325,7 +2339,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_24) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_26) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2335,7 +2349,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_24) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_26) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2345,7 +2359,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_24) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_26) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2355,7 +2369,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_24) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_26) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2365,7 +2379,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_24) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_26) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2375,7 +2389,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
     float _e690 = mass_2;
     float _e692 = spread;
     float error_3 = ((_e686 * _e687) + ((AIRLIGHT_FLT_EPS * _e690) * _e692));
-    float _e695 = sum_5;
+    float _e695 = sum_4;
     float _e697 = mass_2;
     float _e698 = g_avg_1;
     const float _e699 = airlight_transform_noise(_e697, _e698);
@@ -2388,26 +2402,26 @@ AirlightPanel airlight_tail_panel(AirlightScene s_6, AirlightCanonical g_8, floa
 
 AirlightPanel airlight_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_7, AirlightHalf half_9, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
 {
-    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     if (half_9.second) {
-        local_17 = (a_8 <= (b_7 * 0.25));
+        local_18 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_17 = false;
+        local_18 = false;
     }
-    bool _e16 = local_17;
+    bool _e16 = local_18;
     if (_e16) {
         const AirlightPanel _e17 = airlight_tail_panel(s_7, g_9, sigma_7, half_9, a_8, b_7);
         const AirlightPanel airlightpanel_4 = _e17;
         return airlightpanel_4;
     }
     if (half_9.second) {
-        local_18 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_19 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e29 = local_18;
+    bool _e29 = local_19;
     if (_e29) {
         const AirlightPanel _e30 = airlight_y_panel(s_7, g_9, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         const AirlightPanel airlightpanel_5 = _e30;
@@ -2442,12 +2456,12 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
     float errors = (float)0;
     float mass_3 = (float)0;
     uint worst = (uint)0;
-    uint i_10 = (uint)0;
-    bool local_19 = (bool)0;
+    uint i_9 = (uint)0;
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
     float total_1 = 0.0;
-    uint i_11 = 0u;
+    uint i_10 = 0u;
 
     if (!((hi > lo))) {
         return 0.0;
@@ -2457,16 +2471,16 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
     const float3 _e16 = airlight_singular_steps(s_8);
     a_9 = lo;
     b_8 = hi;
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
             uint _e213 = step_;
             step_ = (_e213 + 1u);
         }
-        loop_init_14 = false;
+        loop_init_12 = false;
         uint _e61 = step_;
         if ((_e61 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -2504,16 +2518,16 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
                 continue;
             }
             retire = 0u;
-            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-            bool loop_init_15 = true;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_15) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_13) {
                     uint _e210 = retire;
                     retire = (_e210 + 1u);
                 }
-                loop_init_15 = false;
+                loop_init_13 = false;
                 uint _e96 = retire;
                 if ((_e96 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
@@ -2524,46 +2538,46 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
                     errors = 0.0;
                     mass_3 = 0.0;
                     worst = 0u;
-                    i_10 = 0u;
-                    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_16 = true;
+                    i_9 = 0u;
+                    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_14 = true;
                     while(true) {
-                        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-                        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                        if (!loop_init_16) {
-                            uint _e143 = i_10;
-                            i_10 = (_e143 + 1u);
+                        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                        if (!loop_init_14) {
+                            uint _e143 = i_9;
+                            i_9 = (_e143 + 1u);
                         }
-                        loop_init_16 = false;
-                        uint _e109 = i_10;
+                        loop_init_14 = false;
+                        uint _e109 = i_9;
                         if ((_e109 < AIRLIGHT_PANEL_LIST)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e112 = i_10;
+                            uint _e112 = i_9;
                             uint _e113 = count;
                             if ((_e112 >= _e113)) {
                                 break;
                             }
                             float _e115 = total;
-                            uint _e116 = i_10;
+                            uint _e116 = i_9;
                             float _e119 = list[min(uint(_e116), 7u)].z;
                             total = (_e115 + _e119);
                             float _e121 = errors;
-                            uint _e122 = i_10;
+                            uint _e122 = i_9;
                             float _e125 = list[min(uint(_e122), 7u)].w;
                             errors = (_e121 + _e125);
                             float _e127 = mass_3;
-                            uint _e128 = i_10;
+                            uint _e128 = i_9;
                             float _e130 = mass_over_1[min(uint(_e128), 7u)];
                             mass_3 = (_e127 + _e130);
-                            uint _e132 = i_10;
+                            uint _e132 = i_9;
                             float _e135 = list[min(uint(_e132), 7u)].w;
                             uint _e136 = worst;
                             float _e139 = list[min(uint(_e136), 7u)].w;
                             if ((_e135 > _e139)) {
-                                uint _e141 = i_10;
+                                uint _e141 = i_9;
                                 worst = _e141;
                             }
                         }
@@ -2576,25 +2590,25 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list[min(uint(_e160), 7u)].w;
-                        local_19 = !((_e163 > 0.0));
-                    } else {
-                        local_19 = true;
-                    }
-                    bool _e168 = local_19;
-                    if (!(_e168)) {
-                        uint _e172 = budget;
-                        local_20 = (_e172 < 2u);
+                        local_20 = !((_e163 > 0.0));
                     } else {
                         local_20 = true;
                     }
-                    bool _e176 = local_20;
-                    if (!(_e176)) {
-                        uint _e180 = count;
-                        local_21 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    bool _e168 = local_20;
+                    if (!(_e168)) {
+                        uint _e172 = budget;
+                        local_21 = (_e172 < 2u);
                     } else {
                         local_21 = true;
                     }
-                    bool _e184 = local_21;
+                    bool _e176 = local_21;
+                    if (!(_e176)) {
+                        uint _e180 = count;
+                        local_22 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_22 = true;
+                    }
+                    bool _e184 = local_22;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -2621,29 +2635,29 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
             }
         }
     }
-    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e232 = i_11;
-            i_11 = (_e232 + 1u);
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e232 = i_10;
+            i_10 = (_e232 + 1u);
         }
-        loop_init_17 = false;
-        uint _e219 = i_11;
+        loop_init_15 = false;
+        uint _e219 = i_10;
         if ((_e219 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e222 = i_11;
+            uint _e222 = i_10;
             uint _e223 = count;
             if ((_e222 >= _e223)) {
                 break;
             }
             float _e225 = total_1;
-            uint _e226 = i_11;
+            uint _e226 = i_10;
             float _e229 = list[min(uint(_e226), 7u)].z;
             total_1 = (_e225 + _e229);
         }
@@ -2679,14 +2693,14 @@ float airlight_angle_y(float u)
 
 float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1)
 {
-    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     if (!(!((gap_1 > 0.0)))) {
-        local_22 = (gap_1 >= AIRLIGHT_FLT_MAX);
+        local_23 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e14 = local_22;
+    bool _e14 = local_23;
     if (_e14) {
         return 0.0;
     }
@@ -2699,8 +2713,8 @@ float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float
 float airlight_cut_length(float big_h_1, float v_s)
 {
     float inv_h = (1.0 / big_h_1);
-    float w_2 = (v_s + inv_h);
-    float r_11 = ((1.0 + (w_2 * w_2)) / (1.0 + (v_s * v_s)));
+    float w_3 = (v_s + inv_h);
+    float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
     float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
@@ -2720,7 +2734,7 @@ float airlight_weighted(float sigma_s, float intensity, float h_2, float x_9, fl
 
 float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
 {
-    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
     float psi1_ = 0.0;
@@ -2733,9 +2747,9 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     float mass_4 = 0.0;
     float magnitude = 0.0;
     float f_max_5 = 0.0;
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     float m_3[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
     float x_10 = 0.0;
 
     if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
@@ -2746,11 +2760,11 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     float u1_ = ((g_11.t_hi - g_11.x_h) / h_3);
     if (!(g_11.t_hi_infinite)) {
         const bool _e21 = airlight_is_finite(u1_);
-        local_23 = _e21;
+        local_24 = _e21;
     } else {
-        local_23 = false;
+        local_24 = false;
     }
-    bool u1_finite = local_23;
+    bool u1_finite = local_24;
     float big_h_7 = (s_9.sigma_t * h_3);
     const float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
@@ -2848,50 +2862,50 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     const float2 _e169[4] = airlight_gauss_rule();
     const float _e170[8] = airlight_zero_terms();
     samples_3 = _e170;
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_18) {
-            uint _e263 = i_12;
-            i_12 = (_e263 + 1u);
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e263 = i_11;
+            i_11 = (_e263 + 1u);
         }
-        loop_init_18 = false;
-        uint _e182 = i_12;
+        loop_init_16 = false;
+        uint _e182 = i_11;
         if ((_e182 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e185 = i_12;
+            uint _e185 = i_11;
             const float _e186 = airlight_node(_e169, _e185);
             float lower = (_e38 + (hw_2 * (1.0 + _e186)));
             bool below_1 = (lower <= 1.5707964);
             float _e193 = psi1_;
             const float2 _e199 = airlight_cos_sin((below_1 ? lower : (_e193 + (hw_2 * (1.0 - _e186)))));
-            float cs = _e199.y;
+            float cs_1 = _e199.y;
             float sn = (below_1 ? -(_e199.x) : _e199.x);
             float near_pole = (1.0 + _e199.x);
-            float far_pole = ((cs * cs) / near_pole);
+            float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_9 = (below_1 ? (cs / near_pole) : (near_pole / cs));
-            float weight_1 = ((cs > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
-            const float _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs)));
+            float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
+            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            const float _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
             const float _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e233 * _e239);
-            float gw = (weight_1 * f_2);
-            uint _e242 = i_12;
+            float gw = (weight_2 * f_2);
+            uint _e242 = i_11;
             samples_3[min(uint(_e242), 7u)] = gw;
-            uint _e244 = i_12;
-            float w_3 = _e169[min(uint(airlight_naga_div(_e244, 2u)), 3u)].y;
+            uint _e244 = i_11;
+            float w_4 = _e169[min(uint(airlight_naga_div(_e244, 2u)), 3u)].y;
             float _e249 = value_1;
-            value_1 = (_e249 + (w_3 * gw));
+            value_1 = (_e249 + (w_4 * gw));
             float _e252 = mass_4;
-            mass_4 = (_e252 + (w_3 * weight_1));
+            mass_4 = (_e252 + (w_4 * weight_2));
             float _e255 = magnitude;
-            magnitude = (_e255 + (w_3 * abs(gw)));
+            magnitude = (_e255 + (w_4 * abs(gw)));
             float _e259 = f_max_5;
             f_max_5 = max(_e259, abs(f_2));
         }
@@ -2913,11 +2927,11 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     float _e289 = mass_4;
     float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if (!((error_4 <= accepted))) {
-        local_24 = (error_4 <= _e282);
+        local_25 = (error_4 <= _e282);
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    bool _e299 = local_24;
+    bool _e299 = local_25;
     if (!(_e299)) {
         return float2(0.0, 0.0);
     }
@@ -2931,24 +2945,24 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     return float2(1.0, _e320);
 }
 
-float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3)
+float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_2)
 {
-    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
 
-    float a0_ = (k_3 + (sigma_9 * d_el));
+    float a0_ = (k_2 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_3 - (sigma_9 * d_el));
+    float c0_ = (k_2 - (sigma_9 * d_el));
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         const bool _e21 = airlight_is_finite(scale_1);
-        local_25 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_25 = true;
+        local_26 = true;
     }
-    bool _e24 = local_25;
+    bool _e24 = local_26;
     if (_e24) {
         return float2(-1.0, -1.0);
     }
@@ -2963,12 +2977,12 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3)
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
-    if ((q_2 != 0.0)) {
-        r1_ = (c_9 / q_2);
+    float q_5 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
+    if ((q_5 != 0.0)) {
+        r1_ = (c_9 / q_5);
     }
     if ((a_23 != 0.0)) {
-        r2_2 = (q_2 / a_23);
+        r2_2 = (q_5 / a_23);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -2983,13 +2997,13 @@ float airlight_cosine(AirlightCanonical g_12, float sigma_10, float y_4)
 
 bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
 {
-    bool local_26 = (bool)0;
     bool local_27 = (bool)0;
-    float y1_1 = (float)0;
     bool local_28 = (bool)0;
+    float y1_1 = (float)0;
     bool local_29 = (bool)0;
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
     const float _e9 = airlight_cosine(g_13, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
@@ -2997,21 +3011,21 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11,
     }
     if ((lo_1 == half_11.y_lo)) {
         const float _e17 = airlight_cosine(g_13, sigma_11, lo_1);
-        local_26 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_26 = false;
+        local_27 = false;
     }
-    bool _e21 = local_26;
+    bool _e21 = local_27;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
         const float _e27 = airlight_cosine(g_13, sigma_11, hi_1);
-        local_27 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e31 = local_27;
+    bool _e31 = local_28;
     if (_e31) {
         return false;
     }
@@ -3030,35 +3044,35 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11,
     float _e53 = y1_1;
     if ((_e53 > lo_1)) {
         float _e57 = y1_1;
-        local_28 = (_e57 < hi_1);
-    } else {
-        local_28 = false;
-    }
-    bool _e60 = local_28;
-    if (_e60) {
-        float _e63 = y1_1;
-        const float _e64 = airlight_cosine(g_13, sigma_11, _e63);
-        local_29 = !((_e64 < bound));
+        local_29 = (_e57 < hi_1);
     } else {
         local_29 = false;
     }
-    bool _e68 = local_29;
+    bool _e60 = local_29;
+    if (_e60) {
+        float _e63 = y1_1;
+        const float _e64 = airlight_cosine(g_13, sigma_11, _e63);
+        local_30 = !((_e64 < bound));
+    } else {
+        local_30 = false;
+    }
+    bool _e68 = local_30;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_30 = (y2_2 < hi_1);
-    } else {
-        local_30 = false;
-    }
-    bool _e75 = local_30;
-    if (_e75) {
-        const float _e78 = airlight_cosine(g_13, sigma_11, y2_2);
-        local_31 = !((_e78 < bound));
+        local_31 = (y2_2 < hi_1);
     } else {
         local_31 = false;
     }
-    bool _e82 = local_31;
+    bool _e75 = local_31;
+    if (_e75) {
+        const float _e78 = airlight_cosine(g_13, sigma_11, y2_2);
+        local_32 = !((_e78 < bound));
+    } else {
+        local_32 = false;
+    }
+    bool _e82 = local_32;
     if (_e82) {
         return false;
     }
@@ -3077,17 +3091,17 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
     float dark_below = -1.0;
     float k_in = (float)0;
     float k_out = (float)0;
+    uint i_12 = 0u;
+    bool local_33 = (bool)0;
     uint i_13 = 0u;
-    bool local_32 = (bool)0;
-    uint i_14 = 0u;
     uint j_2 = (uint)0;
     float total_2 = 0.0;
     float lo_2 = (float)0;
-    uint i_15 = 0u;
+    uint i_14 = 0u;
     float hi_2 = (float)0;
-    bool local_33 = (bool)0;
     bool local_34 = (bool)0;
     bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
 
     if (isotropic) {
         const float _e7 = airlight_integrand(s_10, g_14, sigma_12, 0.0);
@@ -3113,67 +3127,67 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
         float _e42 = k_out;
         const float2 _e43 = airlight_crossings(sigma_12, g_14.d_el, g_14.d_c, _e42);
         cuts = airlight_Constructarray4_float_(_e39.x, _e39.y, _e43.x, _e43.y);
-        uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-        bool loop_init_19 = true;
+        uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+        bool loop_init_17 = true;
         while(true) {
-            if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-            if (!loop_init_19) {
-                uint _e73 = i_13;
-                i_13 = (_e73 + 1u);
+            if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+            if (!loop_init_17) {
+                uint _e73 = i_12;
+                i_12 = (_e73 + 1u);
             }
-            loop_init_19 = false;
-            uint _e51 = i_13;
+            loop_init_17 = false;
+            uint _e51 = i_12;
             if ((_e51 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e54 = i_13;
+                uint _e54 = i_12;
                 float _e56 = cuts[min(uint(_e54), 3u)];
                 if ((_e56 > half_12.y_lo)) {
-                    uint _e61 = i_13;
+                    uint _e61 = i_12;
                     float _e63 = cuts[min(uint(_e61), 3u)];
-                    local_32 = (_e63 < half_12.y_hi);
+                    local_33 = (_e63 < half_12.y_hi);
                 } else {
-                    local_32 = false;
+                    local_33 = false;
                 }
-                bool _e67 = local_32;
+                bool _e67 = local_33;
                 if (!(_e67)) {
-                    uint _e69 = i_13;
+                    uint _e69 = i_12;
                     cuts[min(uint(_e69), 3u)] = 2.0;
                 }
             }
         }
-        uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
-        bool loop_init_20 = true;
+        uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+        bool loop_init_18 = true;
         while(true) {
-            if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-            loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-            if (!loop_init_20) {
-                uint _e114 = i_14;
-                i_14 = (_e114 + 1u);
+            if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+            loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+            if (!loop_init_18) {
+                uint _e114 = i_13;
+                i_13 = (_e114 + 1u);
             }
-            loop_init_20 = false;
-            uint _e77 = i_14;
+            loop_init_18 = false;
+            uint _e77 = i_13;
             if ((_e77 < 3u)) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
-                uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-                bool loop_init_21 = true;
+                uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+                bool loop_init_19 = true;
                 while(true) {
-                    if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-                    loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-                    if (!loop_init_21) {
+                    if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+                    loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+                    if (!loop_init_19) {
                         uint _e111 = j_2;
                         j_2 = (_e111 + 1u);
                     }
-                    loop_init_21 = false;
+                    loop_init_19 = false;
                     uint _e82 = j_2;
-                    uint _e84 = i_14;
+                    uint _e84 = i_13;
                     if ((_e82 < (3u - _e84))) {
                     } else {
                         break;
@@ -3199,34 +3213,34 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
         }
     }
     lo_2 = half_12.y_lo;
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e176 = i_15;
-            i_15 = (_e176 + 1u);
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e176 = i_14;
+            i_14 = (_e176 + 1u);
         }
-        loop_init_22 = false;
-        uint _e122 = i_15;
+        loop_init_20 = false;
+        uint _e122 = i_14;
         if ((_e122 < 5u)) {
         } else {
             break;
         }
         {
             hi_2 = half_12.y_hi;
-            uint _e127 = i_15;
+            uint _e127 = i_14;
             if ((_e127 < 4u)) {
-                uint _e132 = i_15;
+                uint _e132 = i_14;
                 float _e134 = cuts[min(uint(_e132), 3u)];
-                local_33 = (_e134 < 2.0);
+                local_34 = (_e134 < 2.0);
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            bool _e138 = local_33;
+            bool _e138 = local_34;
             if (_e138) {
-                uint _e139 = i_15;
+                uint _e139 = i_14;
                 float _e141 = cuts[min(uint(_e139), 3u)];
                 hi_2 = _e141;
             }
@@ -3238,11 +3252,11 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
                     float _e151 = lo_2;
                     float _e152 = hi_2;
                     const bool _e153 = airlight_dark(g_14, sigma_12, half_12, _e150, _e151, _e152);
-                    local_34 = _e153;
+                    local_35 = _e153;
                 } else {
-                    local_34 = false;
+                    local_35 = false;
                 }
-                bool _e155 = local_34;
+                bool _e155 = local_35;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
@@ -3253,15 +3267,15 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
                 float _e162 = hi_2;
                 lo_2 = _e162;
             }
-            uint _e163 = i_15;
+            uint _e163 = i_14;
             if ((_e163 < 4u)) {
-                uint _e168 = i_15;
+                uint _e168 = i_14;
                 float _e170 = cuts[min(uint(_e168), 3u)];
-                local_35 = (_e170 >= 2.0);
+                local_36 = (_e170 >= 2.0);
             } else {
-                local_35 = false;
+                local_36 = false;
             }
-            bool _e174 = local_35;
+            bool _e174 = local_36;
             if (_e174) {
                 break;
             }
@@ -3273,17 +3287,17 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
 
 float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15)
 {
-    bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
     float span = (float)0;
     float e2_[10] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail = 0.0;
 
     if (!(g_15.t_hi_infinite)) {
-        local_36 = (g_15.x_h > g_15.t_hi);
+        local_37 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_36 = false;
+        local_37 = false;
     }
-    bool _e10 = local_36;
+    bool _e10 = local_37;
     if (_e10) {
         const float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         const float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
@@ -3356,8 +3370,8 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_37 = (bool)0;
     bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
     float x_11 = 0.0;
 
     float h_4 = g_16.h;
@@ -3367,11 +3381,11 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
     float u_e = ((g_16.t_hi - g_16.x_h) / h_4);
     if (!(g_16.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
-        local_37 = _e24;
+        local_38 = _e24;
     } else {
-        local_37 = false;
+        local_38 = false;
     }
-    bool _e26 = local_37;
+    bool _e26 = local_38;
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3379,11 +3393,11 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
-            local_38 = _e40;
+            local_39 = _e40;
         } else {
-            local_38 = false;
+            local_39 = false;
         }
-        bool _e42 = local_38;
+        bool _e42 = local_39;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3422,27 +3436,27 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
 
 AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
 {
-    bool local_39 = (bool)0;
     bool local_40 = (bool)0;
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
-    float gap_2 = 0.0;
     bool local_43 = (bool)0;
+    float gap_2 = 0.0;
+    bool local_44 = (bool)0;
 
     float t0_ = g_17.t_lo;
     float t1_ = g_17.t_hi;
     if (!(g_17.t_hi_infinite)) {
-        local_39 = (t1_ > t0_);
-    } else {
-        local_39 = true;
-    }
-    bool _e10 = local_39;
-    if (!(!(_e10))) {
-        local_40 = ((s_13.sigma_s * s_13.intensity) == 0.0);
+        local_40 = (t1_ > t0_);
     } else {
         local_40 = true;
     }
-    bool _e21 = local_40;
+    bool _e10 = local_40;
+    if (!(!(_e10))) {
+        local_41 = ((s_13.sigma_s * s_13.intensity) == 0.0);
+    } else {
+        local_41 = true;
+    }
+    bool _e21 = local_41;
     if (_e21) {
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
@@ -3451,16 +3465,16 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
     float x_h = g_17.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_17.t_hi_infinite)) {
-            local_42 = (x_h <= t1_);
+            local_43 = (x_h <= t1_);
         } else {
-            local_42 = true;
+            local_43 = true;
         }
-        bool _e36 = local_42;
-        local_41 = _e36;
+        bool _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_41 = false;
+        local_42 = false;
     }
-    bool inside = local_41;
+    bool inside = local_42;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3470,11 +3484,11 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_43 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_44 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    bool _e55 = local_43;
+    bool _e55 = local_44;
     if (_e55) {
         const float _e56 = airlight_on_line(s_13, g_17);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3490,76 +3504,76 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
 
 bool airlight_isotropic_scene(AirlightScene s_14)
 {
-    bool local_44 = (bool)0;
     bool local_45 = (bool)0;
     bool local_46 = (bool)0;
     bool local_47 = (bool)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
+    bool local_50 = (bool)0;
 
     if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_45 = (s_14.light_param_a == 0.0);
+            local_46 = (s_14.light_param_a == 0.0);
         } else {
-            local_45 = false;
+            local_46 = false;
         }
-        bool _e16 = local_45;
-        local_44 = _e16;
+        bool _e16 = local_46;
+        local_45 = _e16;
     } else {
-        local_44 = true;
+        local_45 = true;
     }
-    bool _e18 = local_44;
+    bool _e18 = local_45;
     if (_e18) {
         if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_48 = true;
+                local_49 = true;
             }
-            bool _e37 = local_48;
+            bool _e37 = local_49;
             if (_e37) {
-                local_49 = (s_14.phase_param_a == 0.0);
+                local_50 = (s_14.phase_param_a == 0.0);
             } else {
-                local_49 = false;
+                local_50 = false;
             }
-            bool _e44 = local_49;
-            local_47 = _e44;
+            bool _e44 = local_50;
+            local_48 = _e44;
         } else {
-            local_47 = true;
+            local_48 = true;
         }
-        bool _e46 = local_47;
-        local_46 = _e46;
+        bool _e46 = local_48;
+        local_47 = _e46;
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    bool _e48 = local_46;
+    bool _e48 = local_47;
     return _e48;
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonical g_18)
 {
-    bool local_50 = (bool)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
+    bool local_53 = (bool)0;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = (float)0;
-    bool local_53 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_54 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_55 = (bool)0;
     bool local_56 = (bool)0;
+    bool local_57 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_57 = (bool)0;
     bool local_58 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_59 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_60 = (bool)0;
     bool local_61 = (bool)0;
+    bool local_62 = (bool)0;
 
     const AirlightResult _e2 = airlight_limits(s_15, g_18);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
@@ -3573,23 +3587,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
     float big_h_8 = (s_15.sigma_t * h_6);
     const bool _e12 = airlight_isotropic_scene(s_15);
     if (_e12) {
-        local_50 = (t0_1 < x_h_1);
-    } else {
-        local_50 = false;
-    }
-    bool _e17 = local_50;
-    if (_e17) {
-        if (!(g_18.t_hi_infinite)) {
-            local_52 = (x_h_1 < t1_1);
-        } else {
-            local_52 = true;
-        }
-        bool _e26 = local_52;
-        local_51 = _e26;
+        local_51 = (t0_1 < x_h_1);
     } else {
         local_51 = false;
     }
-    bool _e28 = local_51;
+    bool _e17 = local_51;
+    if (_e17) {
+        if (!(g_18.t_hi_infinite)) {
+            local_53 = (x_h_1 < t1_1);
+        } else {
+            local_53 = true;
+        }
+        bool _e26 = local_53;
+        local_52 = _e26;
+    } else {
+        local_52 = false;
+    }
+    bool _e28 = local_52;
     if (_e28) {
         const float _e29 = airlight_whole_line(s_15, g_18, big_h_8);
         const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
@@ -3602,16 +3616,16 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
             return airlightresult_6;
         }
     }
-    bool cut = !(_e12);
+    bool cut_1 = !(_e12);
     if ((t0_1 < x_h_1)) {
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_18.t_hi_infinite)) {
-            local_53 = (t1_1 < x_h_1);
+            local_54 = (t1_1 < x_h_1);
         } else {
-            local_53 = false;
+            local_54 = false;
         }
-        bool _e61 = local_53;
+        bool _e61 = local_54;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3625,13 +3639,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float dy_1 = (((((_e69 - t0_1) / h_6) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         const float _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
-        if (cut) {
+        if (cut_1) {
             float _e89 = half_13.big_h;
-            local_54 = (_e89 > 0.0);
+            local_55 = (_e89 > 0.0);
         } else {
-            local_54 = false;
+            local_55 = false;
         }
-        bool _e93 = local_54;
+        bool _e93 = local_55;
         if (_e93) {
             float _e95 = half_13.big_h;
             const float _e96 = airlight_cut_length(_e95, _e67);
@@ -3648,18 +3662,18 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         total_3 = (_e108 + _e112);
     }
     if (!(g_18.t_hi_infinite)) {
-        local_55 = (t1_1 > x_h_1);
+        local_56 = (t1_1 > x_h_1);
     } else {
-        local_55 = true;
+        local_56 = true;
     }
-    bool _e120 = local_55;
+    bool _e120 = local_56;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_56 = !(_e123);
+        local_57 = !(_e123);
     } else {
-        local_56 = false;
+        local_57 = false;
     }
-    bool _e126 = local_56;
+    bool _e126 = local_57;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3669,22 +3683,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_18.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
-            local_57 = _e145;
+            local_58 = _e145;
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        bool _e147 = local_57;
+        bool _e147 = local_58;
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
-                local_58 = _e162;
+                local_59 = _e162;
             } else {
-                local_58 = false;
+                local_59 = false;
             }
-            bool _e164 = local_58;
+            bool _e164 = local_59;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3702,33 +3716,33 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float _e176 = dv_3;
         bool _e177 = infinite_2;
         half_14 = ConstructAirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
-        if (cut) {
+        if (cut_1) {
             float _e183 = half_14.big_h;
-            local_59 = (_e183 > 0.0);
+            local_60 = (_e183 > 0.0);
         } else {
-            local_59 = false;
+            local_60 = false;
         }
-        bool _e187 = local_59;
+        bool _e187 = local_60;
         if (_e187) {
             float _e189 = half_14.big_h;
             const float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
             bool _e193 = infinite_2;
             if (!(_e193)) {
                 float _e197 = dv_3;
-                local_60 = (_e192 < _e197);
+                local_61 = (_e192 < _e197);
             } else {
-                local_60 = true;
+                local_61 = true;
             }
-            bool _e200 = local_60;
+            bool _e200 = local_61;
             if (_e200) {
                 float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
                 if ((cut_y_lo > 0.0)) {
                     const bool _e209 = airlight_is_finite(_e192);
-                    local_61 = _e209;
+                    local_62 = _e209;
                 } else {
-                    local_61 = false;
+                    local_62 = false;
                 }
-                bool _e211 = local_61;
+                bool _e211 = local_62;
                 if (_e211) {
                     float _e214 = half_14.big_h;
                     half_14 = ConstructAirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
@@ -3748,24 +3762,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_62 = (bool)0;
     bool local_63 = (bool)0;
+    bool local_64 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_62 = _e6;
-    } else {
-        local_62 = false;
-    }
-    bool _e8 = local_62;
-    if (_e8) {
-        const bool _e12 = airlight_is_finite(v.z);
-        local_63 = _e12;
+        local_63 = _e6;
     } else {
         local_63 = false;
     }
-    bool _e14 = local_63;
+    bool _e8 = local_63;
+    if (_e8) {
+        const bool _e12 = airlight_is_finite(v.z);
+        local_64 = _e12;
+    } else {
+        local_64 = false;
+    }
+    bool _e14 = local_64;
     return _e14;
 }
 
@@ -3780,29 +3794,28 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_64 = _e6;
+        local_65 = _e6;
     } else {
-        local_64 = false;
+        local_65 = false;
     }
-    bool _e8 = local_64;
+    bool _e8 = local_65;
     return _e8;
 }
 
 float3 airlight_normalize(float3 v_3)
 {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_2 = (v_3 / (m_8).xxx);
-    return (u_2 / (length(u_2)).xxx);
+    float3 u_3 = (v_3 / (m_8).xxx);
+    return (u_3 / (length(u_3)).xxx);
 }
 
 bool airlight_valid(AirlightScene s_16)
 {
-    bool local_65 = (bool)0;
     bool local_66 = (bool)0;
     bool local_67 = (bool)0;
     bool local_68 = (bool)0;
@@ -3812,8 +3825,8 @@ bool airlight_valid(AirlightScene s_16)
     bool local_72 = (bool)0;
     bool local_73 = (bool)0;
     bool local_74 = (bool)0;
-    bool ok = (bool)0;
     bool local_75 = (bool)0;
+    bool ok = (bool)0;
     bool local_76 = (bool)0;
     bool local_77 = (bool)0;
     bool local_78 = (bool)0;
@@ -3836,220 +3849,263 @@ bool airlight_valid(AirlightScene s_16)
     bool local_95 = (bool)0;
     bool local_96 = (bool)0;
     bool local_97 = (bool)0;
+    bool local_98 = (bool)0;
+    bool local_99 = (bool)0;
+    bool local_100 = (bool)0;
+    bool local_101 = (bool)0;
+    bool local_102 = (bool)0;
+    bool local_103 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_16.origin);
     if (_e2) {
         const bool _e6 = airlight_vec_finite(s_16.dir);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    bool _e8 = local_65;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_16.dir);
-        local_66 = _e12;
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    bool _e14 = local_66;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_16.t_min);
-        local_67 = _e18;
+    bool _e8 = local_66;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_16.dir);
+        local_67 = _e12;
     } else {
         local_67 = false;
     }
-    bool _e20 = local_67;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_16.light_position);
-        local_68 = _e24;
+    bool _e14 = local_67;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_16.t_min);
+        local_68 = _e18;
     } else {
         local_68 = false;
     }
-    bool _e26 = local_68;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_16.intensity);
-        local_69 = _e30;
+    bool _e20 = local_68;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_16.light_position);
+        local_69 = _e24;
     } else {
         local_69 = false;
     }
-    bool _e32 = local_69;
-    if (_e32) {
-        local_70 = (s_16.intensity >= 0.0);
+    bool _e26 = local_69;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_16.intensity);
+        local_70 = _e30;
     } else {
         local_70 = false;
     }
-    bool _e39 = local_70;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_16.sigma_s);
-        local_71 = _e43;
+    bool _e32 = local_70;
+    if (_e32) {
+        local_71 = (s_16.intensity >= 0.0);
     } else {
         local_71 = false;
     }
-    bool _e45 = local_71;
-    if (_e45) {
-        local_72 = (s_16.sigma_s >= 0.0);
+    bool _e39 = local_71;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_16.sigma_s);
+        local_72 = _e43;
     } else {
         local_72 = false;
     }
-    bool _e52 = local_72;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_16.sigma_t);
-        local_73 = _e56;
+    bool _e45 = local_72;
+    if (_e45) {
+        local_73 = (s_16.sigma_s >= 0.0);
     } else {
         local_73 = false;
     }
-    bool _e58 = local_73;
-    if (_e58) {
-        local_74 = (s_16.sigma_t >= 0.0);
+    bool _e52 = local_73;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_16.sigma_t);
+        local_74 = _e56;
     } else {
         local_74 = false;
     }
-    bool _e65 = local_74;
+    bool _e58 = local_74;
+    if (_e58) {
+        local_75 = (s_16.sigma_t >= 0.0);
+    } else {
+        local_75 = false;
+    }
+    bool _e65 = local_75;
     ok = _e65;
     if (((s_16.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             const bool _e76 = airlight_is_finite(s_16.t_max);
-            local_75 = _e76;
-        } else {
-            local_75 = false;
-        }
-        bool _e78 = local_75;
-        if (_e78) {
-            local_76 = (s_16.t_min <= s_16.t_max);
+            local_76 = _e76;
         } else {
             local_76 = false;
         }
-        bool _e85 = local_76;
+        bool _e78 = local_76;
+        if (_e78) {
+            local_77 = (s_16.t_min <= s_16.t_max);
+        } else {
+            local_77 = false;
+        }
+        bool _e85 = local_77;
         ok = _e85;
     }
     if ((s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             const bool _e93 = airlight_vec_finite(s_16.light_end);
-            local_77 = _e93;
+            local_78 = _e93;
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        bool _e95 = local_77;
+        bool _e95 = local_78;
         ok = _e95;
     } else {
         if ((s_16.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        bool _e103 = ok;
-        if (_e103) {
-            const bool _e107 = airlight_is_finite(s_16.brdf_albedo);
-            local_78 = _e107;
-        } else {
-            local_78 = false;
-        }
-        bool _e109 = local_78;
-        if (_e109) {
-            local_79 = (s_16.brdf_albedo >= 0.0);
-        } else {
-            local_79 = false;
-        }
-        bool _e116 = local_79;
-        if (_e116) {
-            local_80 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+    if (!((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
+        local_79 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    } else {
+        local_79 = true;
+    }
+    bool _e110 = local_79;
+    if (_e110) {
+        bool _e111 = ok;
+        if (_e111) {
+            const bool _e115 = airlight_is_finite(s_16.brdf_scale);
+            local_80 = _e115;
         } else {
             local_80 = false;
         }
-        bool _e123 = local_80;
-        if (_e123) {
-            local_81 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e117 = local_80;
+        if (_e117) {
+            local_81 = (s_16.brdf_scale >= 0.0);
         } else {
             local_81 = false;
         }
-        bool _e130 = local_81;
-        if (_e130) {
-            const float _e136 = airlight_safe_length((s_16.light_position - s_16.origin));
-            const bool _e137 = airlight_is_finite(_e136);
-            local_82 = _e137;
+        bool _e124 = local_81;
+        if (_e124) {
+            local_82 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_82 = false;
         }
-        bool _e139 = local_82;
-        ok = _e139;
+        bool _e131 = local_82;
+        if (_e131) {
+            local_83 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_83 = false;
+        }
+        bool _e138 = local_83;
+        if (_e138) {
+            const float _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
+            const bool _e145 = airlight_is_finite(_e144);
+            local_84 = _e145;
+        } else {
+            local_84 = false;
+        }
+        bool _e147 = local_84;
+        ok = _e147;
+        if ((s_16.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+            bool _e151 = ok;
+            if (_e151) {
+                const bool _e155 = airlight_is_finite(s_16.brdf_exponent);
+                local_85 = _e155;
+            } else {
+                local_85 = false;
+            }
+            bool _e157 = local_85;
+            if (_e157) {
+                local_86 = (s_16.brdf_exponent >= 0.0);
+            } else {
+                local_86 = false;
+            }
+            bool _e164 = local_86;
+            if (_e164) {
+                const bool _e168 = airlight_vec_finite(s_16.brdf_view);
+                local_87 = _e168;
+            } else {
+                local_87 = false;
+            }
+            bool _e170 = local_87;
+            if (_e170) {
+                const bool _e174 = airlight_normalisable(s_16.brdf_view);
+                local_88 = _e174;
+            } else {
+                local_88 = false;
+            }
+            bool _e176 = local_88;
+            ok = _e176;
+        }
     } else {
         if ((s_16.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
     if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e147 = ok;
-        if (_e147) {
-            const bool _e151 = airlight_vec_finite(s_16.light_axis);
-            local_83 = _e151;
+        bool _e184 = ok;
+        if (_e184) {
+            const bool _e188 = airlight_vec_finite(s_16.light_axis);
+            local_89 = _e188;
         } else {
-            local_83 = false;
+            local_89 = false;
         }
-        bool _e153 = local_83;
-        if (_e153) {
-            const bool _e157 = airlight_normalisable(s_16.light_axis);
-            local_84 = _e157;
+        bool _e190 = local_89;
+        if (_e190) {
+            const bool _e194 = airlight_normalisable(s_16.light_axis);
+            local_90 = _e194;
         } else {
-            local_84 = false;
+            local_90 = false;
         }
-        bool _e159 = local_84;
-        if (_e159) {
-            local_85 = (s_16.light_param_a >= 0.0);
+        bool _e196 = local_90;
+        if (_e196) {
+            local_91 = (s_16.light_param_a >= 0.0);
         } else {
-            local_85 = false;
+            local_91 = false;
         }
-        bool _e166 = local_85;
-        if (_e166) {
-            local_86 = (s_16.light_param_a <= 1024.0);
+        bool _e203 = local_91;
+        if (_e203) {
+            local_92 = (s_16.light_param_a <= 1024.0);
         } else {
-            local_86 = false;
+            local_92 = false;
         }
-        bool _e173 = local_86;
-        if (_e173) {
-            local_87 = (frac((s_16.light_param_a * 0.5)) == 0.0);
+        bool _e210 = local_92;
+        if (_e210) {
+            local_93 = (frac((s_16.light_param_a * 0.5)) == 0.0);
         } else {
-            local_87 = false;
+            local_93 = false;
         }
-        bool _e183 = local_87;
-        ok = _e183;
+        bool _e220 = local_93;
+        ok = _e220;
     } else {
         if ((s_16.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e187 = ok;
-            if (_e187) {
-                const bool _e191 = airlight_vec_finite(s_16.light_axis);
-                local_88 = _e191;
+            bool _e224 = ok;
+            if (_e224) {
+                const bool _e228 = airlight_vec_finite(s_16.light_axis);
+                local_94 = _e228;
             } else {
-                local_88 = false;
+                local_94 = false;
             }
-            bool _e193 = local_88;
-            if (_e193) {
-                const bool _e197 = airlight_normalisable(s_16.light_axis);
-                local_89 = _e197;
+            bool _e230 = local_94;
+            if (_e230) {
+                const bool _e234 = airlight_normalisable(s_16.light_axis);
+                local_95 = _e234;
             } else {
-                local_89 = false;
+                local_95 = false;
             }
-            bool _e199 = local_89;
-            if (_e199) {
-                local_90 = (s_16.light_param_b < s_16.light_param_a);
+            bool _e236 = local_95;
+            if (_e236) {
+                local_96 = (s_16.light_param_b < s_16.light_param_a);
             } else {
-                local_90 = false;
+                local_96 = false;
             }
-            bool _e206 = local_90;
-            if (_e206) {
-                local_91 = (s_16.light_param_b >= -1.0);
+            bool _e243 = local_96;
+            if (_e243) {
+                local_97 = (s_16.light_param_b >= -1.0);
             } else {
-                local_91 = false;
+                local_97 = false;
             }
-            bool _e213 = local_91;
-            if (_e213) {
-                local_92 = (s_16.light_param_a <= 1.0);
+            bool _e250 = local_97;
+            if (_e250) {
+                local_98 = (s_16.light_param_a <= 1.0);
             } else {
-                local_92 = false;
+                local_98 = false;
             }
-            bool _e220 = local_92;
-            ok = _e220;
+            bool _e257 = local_98;
+            ok = _e257;
         } else {
             if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -4065,43 +4121,43 @@ bool airlight_valid(AirlightScene s_16)
         case 2u:
         case 3u:
         case 4u: {
-            bool _e230 = ok;
-            if (_e230) {
-                local_93 = g_ok;
+            bool _e267 = ok;
+            if (_e267) {
+                local_99 = g_ok;
             } else {
-                local_93 = false;
+                local_99 = false;
             }
-            bool _e234 = local_93;
-            ok = _e234;
+            bool _e271 = local_99;
+            ok = _e271;
             break;
         }
         case 5u: {
-            bool _e235 = ok;
-            if (_e235) {
-                local_94 = g_ok;
+            bool _e272 = ok;
+            if (_e272) {
+                local_100 = g_ok;
             } else {
-                local_94 = false;
+                local_100 = false;
             }
-            bool _e239 = local_94;
-            if (_e239) {
-                local_95 = (abs(s_16.phase_param_b) < 1.0);
+            bool _e276 = local_100;
+            if (_e276) {
+                local_101 = (abs(s_16.phase_param_b) < 1.0);
             } else {
-                local_95 = false;
+                local_101 = false;
             }
-            bool _e247 = local_95;
-            if (_e247) {
-                local_96 = (s_16.phase_param_c >= 0.0);
+            bool _e284 = local_101;
+            if (_e284) {
+                local_102 = (s_16.phase_param_c >= 0.0);
             } else {
-                local_96 = false;
+                local_102 = false;
             }
-            bool _e254 = local_96;
-            if (_e254) {
-                local_97 = (s_16.phase_param_c <= 1.0);
+            bool _e291 = local_102;
+            if (_e291) {
+                local_103 = (s_16.phase_param_c <= 1.0);
             } else {
-                local_97 = false;
+                local_103 = false;
             }
-            bool _e261 = local_97;
-            ok = _e261;
+            bool _e298 = local_103;
+            ok = _e298;
             break;
         }
         default: {
@@ -4109,8 +4165,8 @@ bool airlight_valid(AirlightScene s_16)
             break;
         }
     }
-    bool _e263 = ok;
-    return _e263;
+    bool _e300 = ok;
+    return _e300;
 }
 
 AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -4193,62 +4249,62 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_98 = (bool)0;
-    bool local_99 = (bool)0;
+    bool local_104 = (bool)0;
+    bool local_105 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_99 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_105 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_99 = false;
+            local_105 = false;
         }
-        bool _e21 = local_99;
-        local_98 = _e21;
+        bool _e21 = local_105;
+        local_104 = _e21;
     } else {
-        local_98 = true;
+        local_104 = true;
     }
-    bool _e23 = local_98;
+    bool _e23 = local_104;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
 {
-    bool local_100 = (bool)0;
+    bool local_106 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_101 = (bool)0;
+    bool local_107 = (bool)0;
     float3 a_15 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_18.flags > 1u));
     const float2 _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     const float2 _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     const float2 _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    float3 hi_3 = float3(_e11.x, _e17.x, _e23.x);
-    float3 lo_3 = float3(_e11.y, _e17.y, _e23.y);
+    float3 hi_4 = float3(_e11.x, _e17.x, _e23.x);
+    float3 lo_5 = float3(_e11.y, _e17.y, _e23.y);
     float3 dir = s_18.dir;
-    const bool _e33 = airlight_in_exact_range(hi_3);
+    const bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
-        local_100 = !(_e38);
+        local_106 = !(_e38);
     } else {
-        local_100 = true;
+        local_106 = true;
     }
-    bool _e41 = local_100;
+    bool _e41 = local_106;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
     }
-    const float _e46 = airlight_diff_of_products(hi_3.y, dir.z, hi_3.z, dir.y, key_4);
-    const float _e59 = airlight_diff_of_products(hi_3.z, dir.x, hi_3.x, dir.z, key_4);
-    const float _e72 = airlight_diff_of_products(hi_3.x, dir.y, hi_3.y, dir.x, key_4);
-    float3 w_4 = float3((_e46 + ((lo_3.y * dir.z) - (lo_3.z * dir.y))), (_e59 + ((lo_3.z * dir.x) - (lo_3.x * dir.z))), (_e72 + ((lo_3.x * dir.y) - (lo_3.y * dir.x))));
-    const bool _e82 = airlight_vec_finite(w_4);
+    const float _e46 = airlight_diff_of_products(hi_4.y, dir.z, hi_4.z, dir.y, key_4);
+    const float _e59 = airlight_diff_of_products(hi_4.z, dir.x, hi_4.x, dir.z, key_4);
+    const float _e72 = airlight_diff_of_products(hi_4.x, dir.y, hi_4.y, dir.x, key_4);
+    float3 w_5 = float3((_e46 + ((lo_5.y * dir.z) - (lo_5.z * dir.y))), (_e59 + ((lo_5.z * dir.x) - (lo_5.x * dir.z))), (_e72 + ((lo_5.x * dir.y) - (lo_5.y * dir.x))));
+    const bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_4);
+    const float _e85 = airlight_safe_length(w_5);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -4260,11 +4316,11 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_101 = (h_7 > 0.0);
+        local_107 = (h_7 > 0.0);
     } else {
-        local_101 = false;
+        local_107 = false;
     }
-    bool _e101 = local_101;
+    bool _e101 = local_107;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -4274,7 +4330,7 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
         a_15 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir);
-    const float3 _e114 = airlight_normalize(w_4);
+    const float3 _e114 = airlight_normalize(w_5);
     float3 n_2 = -(cross(_e113, _e114));
     out_2.h = h_7;
     float3 _e119 = a_15;
@@ -4296,9 +4352,9 @@ airlight_ret_airlight_kronrod_rule airlight_kronrod_rule()
     return airlight_Constructarray4_float3_(float3(0.96049124, 0.10465623, 0.0), float3(0.7745967, 0.26848808, 0.5555556), float3(0.43424374, 0.4013974, 0.0), float3(0.0, 0.45091653, 0.8888889));
 }
 
-float4 airlight_list_get(AirlightPanelList l, uint i_16)
+float4 airlight_list_get(AirlightPanelList l, uint i_15)
 {
-    switch(i_16) {
+    switch(i_15) {
         case 0u: {
             return l.panel_a;
         }
@@ -4314,15 +4370,45 @@ float4 airlight_list_get(AirlightPanelList l, uint i_16)
         case 4u: {
             return l.panel_e;
         }
-        default: {
+        case 5u: {
             return l.panel_f;
+        }
+        case 6u: {
+            return l.panel_g;
+        }
+        case 7u: {
+            return l.panel_h;
+        }
+        case 8u: {
+            return l.panel_i;
+        }
+        case 9u: {
+            return l.panel_j;
+        }
+        case 10u: {
+            return l.panel_k;
+        }
+        case 11u: {
+            return l.panel_l;
+        }
+        case 12u: {
+            return l.panel_m;
+        }
+        case 13u: {
+            return l.panel_n;
+        }
+        case 14u: {
+            return l.panel_o;
+        }
+        default: {
+            return l.panel_p;
         }
     }
 }
 
-void airlight_list_set(inout AirlightPanelList l_1, uint i_17, float4 v_5)
+void airlight_list_set(inout AirlightPanelList l_1, uint i_16, float4 v_5)
 {
-    switch(i_17) {
+    switch(i_16) {
         case 0u: {
             l_1.panel_a = v_5;
             return;
@@ -4345,6 +4431,46 @@ void airlight_list_set(inout AirlightPanelList l_1, uint i_17, float4 v_5)
         }
         case 5u: {
             l_1.panel_f = v_5;
+            return;
+        }
+        case 6u: {
+            l_1.panel_g = v_5;
+            return;
+        }
+        case 7u: {
+            l_1.panel_h = v_5;
+            return;
+        }
+        case 8u: {
+            l_1.panel_i = v_5;
+            return;
+        }
+        case 9u: {
+            l_1.panel_j = v_5;
+            return;
+        }
+        case 10u: {
+            l_1.panel_k = v_5;
+            return;
+        }
+        case 11u: {
+            l_1.panel_l = v_5;
+            return;
+        }
+        case 12u: {
+            l_1.panel_m = v_5;
+            return;
+        }
+        case 13u: {
+            l_1.panel_n = v_5;
+            return;
+        }
+        case 14u: {
+            l_1.panel_o = v_5;
+            return;
+        }
+        case 15u: {
+            l_1.panel_p = v_5;
             return;
         }
         default: {
@@ -4432,8 +4558,118 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
             worst_error = l_2.panel_f.w;
         }
     }
-    AirlightListScan _e129 = r_3;
-    const AirlightListScan airlightlistscan = _e129;
+    if ((count_1 > 6u)) {
+        float _e132 = r_3.total;
+        r_3.total = (_e132 + l_2.panel_g.z);
+        float _e137 = r_3.errors;
+        r_3.errors = (_e137 + l_2.panel_g.w);
+        float _e143 = worst_error;
+        if ((l_2.panel_g.w > _e143)) {
+            r_3.worst = 6u;
+            worst_error = l_2.panel_g.w;
+        }
+    }
+    if ((count_1 > 7u)) {
+        float _e152 = r_3.total;
+        r_3.total = (_e152 + l_2.panel_h.z);
+        float _e157 = r_3.errors;
+        r_3.errors = (_e157 + l_2.panel_h.w);
+        float _e163 = worst_error;
+        if ((l_2.panel_h.w > _e163)) {
+            r_3.worst = 7u;
+            worst_error = l_2.panel_h.w;
+        }
+    }
+    if ((count_1 > 8u)) {
+        float _e172 = r_3.total;
+        r_3.total = (_e172 + l_2.panel_i.z);
+        float _e177 = r_3.errors;
+        r_3.errors = (_e177 + l_2.panel_i.w);
+        float _e183 = worst_error;
+        if ((l_2.panel_i.w > _e183)) {
+            r_3.worst = 8u;
+            worst_error = l_2.panel_i.w;
+        }
+    }
+    if ((count_1 > 9u)) {
+        float _e192 = r_3.total;
+        r_3.total = (_e192 + l_2.panel_j.z);
+        float _e197 = r_3.errors;
+        r_3.errors = (_e197 + l_2.panel_j.w);
+        float _e203 = worst_error;
+        if ((l_2.panel_j.w > _e203)) {
+            r_3.worst = 9u;
+            worst_error = l_2.panel_j.w;
+        }
+    }
+    if ((count_1 > 10u)) {
+        float _e212 = r_3.total;
+        r_3.total = (_e212 + l_2.panel_k.z);
+        float _e217 = r_3.errors;
+        r_3.errors = (_e217 + l_2.panel_k.w);
+        float _e223 = worst_error;
+        if ((l_2.panel_k.w > _e223)) {
+            r_3.worst = 10u;
+            worst_error = l_2.panel_k.w;
+        }
+    }
+    if ((count_1 > 11u)) {
+        float _e232 = r_3.total;
+        r_3.total = (_e232 + l_2.panel_l.z);
+        float _e237 = r_3.errors;
+        r_3.errors = (_e237 + l_2.panel_l.w);
+        float _e243 = worst_error;
+        if ((l_2.panel_l.w > _e243)) {
+            r_3.worst = 11u;
+            worst_error = l_2.panel_l.w;
+        }
+    }
+    if ((count_1 > 12u)) {
+        float _e252 = r_3.total;
+        r_3.total = (_e252 + l_2.panel_m.z);
+        float _e257 = r_3.errors;
+        r_3.errors = (_e257 + l_2.panel_m.w);
+        float _e263 = worst_error;
+        if ((l_2.panel_m.w > _e263)) {
+            r_3.worst = 12u;
+            worst_error = l_2.panel_m.w;
+        }
+    }
+    if ((count_1 > 13u)) {
+        float _e272 = r_3.total;
+        r_3.total = (_e272 + l_2.panel_n.z);
+        float _e277 = r_3.errors;
+        r_3.errors = (_e277 + l_2.panel_n.w);
+        float _e283 = worst_error;
+        if ((l_2.panel_n.w > _e283)) {
+            r_3.worst = 13u;
+            worst_error = l_2.panel_n.w;
+        }
+    }
+    if ((count_1 > 14u)) {
+        float _e292 = r_3.total;
+        r_3.total = (_e292 + l_2.panel_o.z);
+        float _e297 = r_3.errors;
+        r_3.errors = (_e297 + l_2.panel_o.w);
+        float _e303 = worst_error;
+        if ((l_2.panel_o.w > _e303)) {
+            r_3.worst = 14u;
+            worst_error = l_2.panel_o.w;
+        }
+    }
+    if ((count_1 > 15u)) {
+        float _e312 = r_3.total;
+        r_3.total = (_e312 + l_2.panel_p.z);
+        float _e317 = r_3.errors;
+        r_3.errors = (_e317 + l_2.panel_p.w);
+        float _e323 = worst_error;
+        if ((l_2.panel_p.w > _e323)) {
+            r_3.worst = 15u;
+            worst_error = l_2.panel_p.w;
+        }
+    }
+    AirlightListScan _e329 = r_3;
+    const AirlightListScan airlightlistscan = _e329;
     return airlightlistscan;
 }
 
@@ -4464,9 +4700,9 @@ float airlight_to_w(AirlightOuter g_19, float s_19)
 float2 airlight_cos_sin_half_turn(float x_15)
 {
     float r_12 = (x_15 - 1.5707964);
-    float z_11 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
+    float z_12 = (r_12 * r_12);
+    float cos_r = (1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
@@ -4506,13 +4742,7 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
     return _e18;
 }
 
-typedef float airlight_ret_Constructarray5_float_[5];
-airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
-    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
-    return ret;
-}
-
-AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[5], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[4]) {
+AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[13], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[13], float arg13, float arg14, float arg15, float3 arg16) {
     AirlightOuter ret = (AirlightOuter)0;
     ret.a = arg0;
     ret.e = arg1;
@@ -4527,30 +4757,38 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     ret.cos_a = arg10;
     ret.sin_a = arg11;
     ret.gamma = arg12;
+    ret.cos_r = arg13;
+    ret.sin_r = arg14;
+    ret.alpha_r = arg15;
+    ret.delta = arg16;
     return ret;
 }
 
 AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels)
 {
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, airlight_Constructarray4_float_(0.0, 0.0, 0.0, 0.0));
+    float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0));
     return airlightouter;
 }
 
-typedef float airlight_ret_Constructarray2_float_[2];
-airlight_ret_Constructarray2_float_ airlight_Constructarray2_float_(float arg0, float arg1) {
-    float ret[2] = { arg0, arg1 };
+typedef float airlight_ret_Constructarray11_float_[11];
+airlight_ret_Constructarray11_float_ airlight_Constructarray11_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10) {
+    float ret[11] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10 };
     return ret;
 }
 
 AirlightOuter airlight_surface(AirlightScene s_22)
 {
     AirlightOuter g_20 = (AirlightOuter)0;
-    bool local_102 = (bool)0;
+    bool local_108 = (bool)0;
     float3 u_1 = (float3)0;
-    float cuts_1[2] = {0.0, 0.0};
-    uint k_4 = 0u;
+    float cuts_1[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
+    uint i_17 = 1u;
+    uint j_3 = (uint)0;
+    bool local_109 = (bool)0;
+    uint k_3 = 0u;
     uint i_18 = 0u;
-    bool local_103 = (bool)0;
+    bool local_110 = (bool)0;
     uint i_19 = 0u;
 
     const AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
@@ -4558,11 +4796,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     float3 to_light_1 = (s_22.light_position - s_22.origin);
     const float _e7 = airlight_safe_length(to_light_1);
     if (!((s_22.intensity == 0.0))) {
-        local_102 = (s_22.sigma_s == 0.0);
+        local_108 = (s_22.sigma_s == 0.0);
     } else {
-        local_102 = true;
+        local_108 = true;
     }
-    bool _e18 = local_102;
+    bool _e18 = local_108;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -4575,7 +4813,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
-    if ((s_22.brdf_albedo == 0.0)) {
+    if ((s_22.brdf_scale == 0.0)) {
         g_20.outcome = 1u;
         AirlightOuter _e33 = g_20;
         const AirlightOuter airlightouter_3 = _e33;
@@ -4597,84 +4835,350 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     g_20.u = _e67;
     g_20.cos_a = cos_a_1;
     g_20.sin_a = _e41;
-    const float _e71 = airlight_angle(cos_a_1, _e41);
-    float first = abs((1.5707964 - _e71));
-    cuts_1 = airlight_Constructarray2_float_(first, (AIRLIGHT_PI - first));
-    float _e79 = cuts_1[1];
-    float _e81 = cuts_1[0];
-    if ((_e79 < _e81)) {
-        float c_10 = cuts_1[0];
-        float _e87 = cuts_1[1];
-        cuts_1[0] = _e87;
-        cuts_1[1] = c_10;
+    const float _e84 = airlight_angle(cos_a_1, _e41);
+    float first = abs((1.5707964 - _e84));
+    cuts_1[0] = first;
+    cuts_1[1] = (AIRLIGHT_PI - first);
+    if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+        g_20.max_panels = AIRLIGHT_PHONG_PANELS;
+        const float3 _e97 = airlight_normalize(s_22.brdf_view);
+        const float3 _e103 = airlight_normalize((((2.0 * dot(_e37, _e97)) * _e37) - _e97));
+        float3 _e104 = u_1;
+        float x_27 = dot(_e103, _e104);
+        float3 _e106 = u_1;
+        float y_10 = dot(_e103, cross(l_3, _e106));
+        g_20.cos_r = dot(_e103, l_3);
+        g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
+        float _e118 = g_20.cos_r;
+        float _e120 = g_20.sin_r;
+        const float _e121 = airlight_angle(_e118, _e120);
+        g_20.alpha_r = _e121;
+        float _e123 = g_20.sin_r;
+        if ((_e123 > 0.0)) {
+            const float _e126 = airlight_angle(x_27, y_10);
+            const float _e128 = airlight_angle(x_27, -(y_10));
+            float phi_r = ((y_10 < 0.0) ? -(_e128) : _e126);
+            float _e136 = g_20.sin_r;
+            float _e140 = g_20.sin_r;
+            g_20.delta = float3(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+        }
+        float _e145 = g_20.alpha_r;
+        float first_r = abs((1.5707964 - _e145));
+        cuts_1[2] = first_r;
+        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        float _e154 = g_20.alpha_r;
+        cuts_1[4] = _e154;
+        if ((s_22.brdf_exponent > 1.0)) {
+            float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
+            float _e164 = g_20.alpha_r;
+            cuts_1[5] = (_e164 - (1.5 * width_3));
+            float _e170 = g_20.alpha_r;
+            cuts_1[6] = (_e170 + (1.5 * width_3));
+            float _e176 = g_20.alpha_r;
+            cuts_1[7] = (_e176 - (4.0 * width_3));
+            float _e182 = g_20.alpha_r;
+            cuts_1[8] = (_e182 + (4.0 * width_3));
+        }
+        float3 meet = cross(_e37, _e103);
+        const float _e187 = airlight_safe_length(meet);
+        if ((_e187 > AIRLIGHT_FLT_EPS)) {
+            const float _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1.0, 1.0));
+            cuts_1[9] = _e195;
+            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        }
+    }
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e236 = i_17;
+            i_17 = (_e236 + 1u);
+        }
+        loop_init_21 = false;
+        uint _e202 = i_17;
+        if ((_e202 < 11u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e205 = i_17;
+            float c_10 = cuts_1[min(uint(_e205), 10u)];
+            uint _e208 = i_17;
+            j_3 = _e208;
+            uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+            while(true) {
+                if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                uint _e210 = j_3;
+                if ((_e210 > 0u)) {
+                    uint _e215 = j_3;
+                    float _e219 = cuts_1[min(uint((_e215 - 1u)), 10u)];
+                    local_109 = (_e219 > c_10);
+                } else {
+                    local_109 = false;
+                }
+                bool _e222 = local_109;
+                if (_e222) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e223 = j_3;
+                    uint _e225 = j_3;
+                    float _e229 = cuts_1[min(uint((_e225 - 1u)), 10u)];
+                    cuts_1[min(uint(_e223), 10u)] = _e229;
+                    uint _e230 = j_3;
+                    j_3 = (_e230 - 1u);
+                }
+            }
+            uint _e233 = j_3;
+            cuts_1[min(uint(_e233), 10u)] = c_10;
+        }
     }
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    bool loop_init_22 = true;
     while(true) {
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e123 = i_18;
-            i_18 = (_e123 + 1u);
+        if (!loop_init_22) {
+            uint _e272 = i_18;
+            i_18 = (_e272 + 1u);
         }
-        loop_init_23 = false;
-        uint _e93 = i_18;
-        if ((_e93 < 2u)) {
+        loop_init_22 = false;
+        uint _e242 = i_18;
+        if ((_e242 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e96 = i_18;
-            float _e98 = cuts_1[min(uint(_e96), 1u)];
-            uint _e100 = k_4;
-            float _e102 = g_20.gamma[min(uint(_e100), 3u)];
-            if ((_e98 > _e102)) {
-                uint _e106 = i_18;
-                float _e108 = cuts_1[min(uint(_e106), 1u)];
-                local_103 = (_e108 < AIRLIGHT_PI);
+            uint _e245 = i_18;
+            float _e247 = cuts_1[min(uint(_e245), 10u)];
+            uint _e249 = k_3;
+            float _e251 = g_20.gamma[min(uint(_e249), 12u)];
+            if ((_e247 > _e251)) {
+                uint _e255 = i_18;
+                float _e257 = cuts_1[min(uint(_e255), 10u)];
+                local_110 = (_e257 < AIRLIGHT_PI);
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            bool _e112 = local_103;
-            if (_e112) {
-                uint _e113 = k_4;
-                k_4 = (_e113 + 1u);
-                uint _e117 = k_4;
-                uint _e119 = i_18;
-                float _e121 = cuts_1[min(uint(_e119), 1u)];
-                g_20.gamma[min(uint(_e117), 3u)] = _e121;
+            bool _e261 = local_110;
+            if (_e261) {
+                uint _e262 = k_3;
+                k_3 = (_e262 + 1u);
+                uint _e266 = k_3;
+                uint _e268 = i_18;
+                float _e270 = cuts_1[min(uint(_e268), 10u)];
+                g_20.gamma[min(uint(_e266), 12u)] = _e270;
             }
         }
     }
-    uint _e126 = k_4;
-    g_20.gamma[min(uint((_e126 + 1u)), 3u)] = AIRLIGHT_PI;
-    uint _e132 = k_4;
-    g_20.panels = (_e132 + 1u);
+    uint _e275 = k_3;
+    g_20.gamma[min(uint((_e275 + 1u)), 12u)] = AIRLIGHT_PI;
+    uint _e281 = k_3;
+    g_20.panels = (_e281 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    bool loop_init_23 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e147 = i_19;
-            i_19 = (_e147 + 1u);
+        if (!loop_init_23) {
+            uint _e296 = i_19;
+            i_19 = (_e296 + 1u);
         }
-        loop_init_24 = false;
-        uint _e137 = i_19;
-        uint _e139 = g_20.panels;
-        if ((_e137 <= _e139)) {
+        loop_init_23 = false;
+        uint _e286 = i_19;
+        uint _e288 = g_20.panels;
+        if ((_e286 <= _e288)) {
         } else {
             break;
         }
         {
-            uint _e142 = i_19;
-            uint _e144 = i_19;
-            g_20.edges[min(uint(_e142), 4u)] = float(_e144);
+            uint _e291 = i_19;
+            uint _e293 = i_19;
+            g_20.edges[min(uint(_e291), 12u)] = float(_e293);
         }
     }
-    AirlightOuter _e149 = g_20;
-    const AirlightOuter airlightouter_4 = _e149;
+    AirlightOuter _e298 = g_20;
+    const AirlightOuter airlightouter_4 = _e298;
     return airlightouter_4;
+}
+
+float airlight_lobe_at(AirlightLobe q_1, float x_17)
+{
+    bool local_111 = (bool)0;
+
+    const float2 _e4 = airlight_cos_sin((0.5 * x_17));
+    float s2_ = (_e4.y * _e4.y);
+    float cos_x = (1.0 - (2.0 * s2_));
+    float sin_x = ((2.0 * _e4.y) * _e4.x);
+    float clip_ = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    float fall = (q_1.k * s2_);
+    if ((fall < 1.0)) {
+        local_111 = (clip_ > 0.0);
+    } else {
+        local_111 = false;
+    }
+    bool _e35 = local_111;
+    if (_e35) {
+        const float _e39 = airlight_log1p(-(fall));
+        return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    }
+    return 0.0;
+}
+
+float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w, float u_2, bool smoothstep_)
+{
+    if (smoothstep_) {
+        const float _e18 = airlight_lobe_at(q_2, (lo_3 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        return ((((w * 6.0) * u_2) * (1.0 - u_2)) * _e18);
+    }
+    const float _e22 = airlight_lobe_at(q_2, (lo_3 + (w * u_2)));
+    return (w * _e22);
+}
+
+float airlight_arc_end(float x_18, float cut)
+{
+    float end = (float)0;
+    bool local_112 = (bool)0;
+
+    end = x_18;
+    float _e3 = end;
+    if ((_e3 > AIRLIGHT_PI)) {
+        float _e6 = end;
+        end = (_e6 - 6.2831855);
+    }
+    float _e9 = end;
+    if ((_e9 < -3.1415927)) {
+        float _e12 = end;
+        end = (_e12 + 6.2831855);
+    }
+    float _e15 = end;
+    float _e16 = end;
+    if ((_e16 > -(cut))) {
+        float _e21 = end;
+        local_112 = (_e21 < cut);
+    } else {
+        local_112 = false;
+    }
+    bool _e24 = local_112;
+    return (_e24 ? _e15 : 0.0);
+}
+
+float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
+{
+    bool local_113 = (bool)0;
+    float sum_5 = 0.0;
+
+    float w_6 = (hi_3 - lo_4);
+    if (!(!((w_6 > 0.0)))) {
+        const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_6)));
+        local_113 = !((_e14 > 0.0));
+    } else {
+        local_113 = true;
+    }
+    bool _e19 = local_113;
+    if (_e19) {
+        return 0.0;
+    }
+    float _e23 = sum_5;
+    const float _e25 = airlight_lobe_node(q_3, lo_4, w_6, 0.42556283, smoothstep_1);
+    const float _e27 = airlight_lobe_node(q_3, lo_4, w_6, 0.57443714, smoothstep_1);
+    sum_5 = (_e23 + (0.14776212 * (_e25 + _e27)));
+    float _e32 = sum_5;
+    const float _e34 = airlight_lobe_node(q_3, lo_4, w_6, 0.2833023, smoothstep_1);
+    const float _e36 = airlight_lobe_node(q_3, lo_4, w_6, 0.7166977, smoothstep_1);
+    sum_5 = (_e32 + (0.13463336 * (_e34 + _e36)));
+    float _e41 = sum_5;
+    const float _e43 = airlight_lobe_node(q_3, lo_4, w_6, 0.16029522, smoothstep_1);
+    const float _e45 = airlight_lobe_node(q_3, lo_4, w_6, 0.8397048, smoothstep_1);
+    sum_5 = (_e41 + (0.10954318 * (_e43 + _e45)));
+    float _e50 = sum_5;
+    const float _e52 = airlight_lobe_node(q_3, lo_4, w_6, 0.067468315, smoothstep_1);
+    const float _e54 = airlight_lobe_node(q_3, lo_4, w_6, 0.93253165, smoothstep_1);
+    sum_5 = (_e50 + (0.07472567 * (_e52 + _e54)));
+    float _e59 = sum_5;
+    const float _e61 = airlight_lobe_node(q_3, lo_4, w_6, 0.013046736, smoothstep_1);
+    const float _e63 = airlight_lobe_node(q_3, lo_4, w_6, 0.98695326, smoothstep_1);
+    sum_5 = (_e59 + (0.03333567 * (_e61 + _e63)));
+    float _e68 = sum_5;
+    return _e68;
+}
+
+AirlightLobe ConstructAirlightLobe(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6) {
+    AirlightLobe ret = (AirlightLobe)0;
+    ret.a = arg0;
+    ret.b = arg1;
+    ret.k = arg2;
+    ret.log_peak = arg3;
+    ret.cos_delta = arg4;
+    ret.sin_delta = arg5;
+    ret.exponent = arg6;
+    return ret;
+}
+
+float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n, float exponent)
+{
+    float reach = 1.0;
+    float3 inner = (0.0).xxx;
+
+    float c_11 = (g_21.cos_r * cs.x);
+    float d_3 = (g_21.sin_r * cs.y);
+    float peak = (c_11 + d_3);
+    if (!((peak > 0.0))) {
+        return 0.0;
+    }
+    const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_21.alpha_r)));
+    float sin_gap = _e20.y;
+    const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
+    AirlightLobe q_6 = ConstructAirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2.0 * d_3) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
+    if ((exponent > 0.0)) {
+        const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent));
+        reach = -(_e46);
+    }
+    float _e48 = reach;
+    float _e51 = reach;
+    float s2_1 = ((_e51 < q_6.k) ? (_e48 / q_6.k) : 1.0);
+    const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
+    float cut_2 = (2.0 * _e60);
+    if ((psi_n < AIRLIGHT_PI)) {
+        const float _e72 = airlight_arc_end((g_21.delta.x - psi_n), cut_2);
+        inner.y = _e72;
+        const float _e77 = airlight_arc_end((g_21.delta.x + psi_n), cut_2);
+        inner.z = _e77;
+    }
+    float _e79 = inner.y;
+    float _e81 = inner.x;
+    if ((_e79 < _e81)) {
+        float3 _e83 = inner;
+        inner = _e83.yxz;
+    }
+    float _e86 = inner.z;
+    float _e88 = inner.y;
+    if ((_e86 < _e88)) {
+        float3 _e90 = inner;
+        inner = _e90.xzy;
+    }
+    float _e93 = inner.y;
+    float _e95 = inner.x;
+    if ((_e93 < _e95)) {
+        float3 _e97 = inner;
+        inner = _e97.yxz;
+    }
+    bool smoothstep_2 = (exponent < 1.0);
+    float _e103 = inner.x;
+    const float _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
+    float _e106 = inner.x;
+    float _e108 = inner.y;
+    const float _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
+    float _e112 = inner.y;
+    float _e114 = inner.z;
+    const float _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
+    float _e118 = inner.z;
+    const float _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
+    return (((_e104 + _e109) + _e115) + _e119);
 }
 
 typedef float airlight_ret_Constructarray3_float_[3];
@@ -4685,62 +5189,62 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
 
 AirlightOuter airlight_outer(AirlightScene s_23)
 {
-    AirlightOuter g_21 = (AirlightOuter)0;
-    bool local_104 = (bool)0;
-    bool local_105 = (bool)0;
-    float s_star = 0.0;
-    float t_star = (float)0;
-    bool local_106 = (bool)0;
-    bool local_107 = (bool)0;
-    bool local_108 = (bool)0;
-    bool local_109 = (bool)0;
-    bool local_110 = (bool)0;
-    bool local_111 = (bool)0;
-    float scale = 0.0;
-    bool local_112 = (bool)0;
-    bool local_113 = (bool)0;
+    AirlightOuter g_22 = (AirlightOuter)0;
     bool local_114 = (bool)0;
     bool local_115 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
     bool local_116 = (bool)0;
-    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = {0.0, 0.0, 0.0};
-    uint i_20 = 0u;
     bool local_117 = (bool)0;
     bool local_118 = (bool)0;
     bool local_119 = (bool)0;
+    bool local_120 = (bool)0;
+    bool local_121 = (bool)0;
+    float scale = 0.0;
+    bool local_122 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
+    bool local_125 = (bool)0;
+    bool local_126 = (bool)0;
+    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
+    uint i_20 = 0u;
+    bool local_127 = (bool)0;
+    bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
     uint n_1 = 0u;
     uint i_21 = 0u;
-    bool local_120 = (bool)0;
+    bool local_130 = (bool)0;
 
-    if ((s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+    if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         const AirlightOuter _e4 = airlight_surface(s_23);
         const AirlightOuter airlightouter_5 = _e4;
         return airlightouter_5;
     }
     const AirlightOuter _e6 = airlight_outer_point(s_23, AIRLIGHT_SEGMENT_PANELS);
-    g_21 = _e6;
+    g_22 = _e6;
     if ((s_23.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e11 = g_21;
+        AirlightOuter _e11 = g_22;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
     float3 ab_1 = (s_23.light_end - s_23.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_104 = (s_23.intensity == 0.0);
+        local_114 = (s_23.intensity == 0.0);
     } else {
-        local_104 = true;
+        local_114 = true;
     }
-    bool _e26 = local_104;
+    bool _e26 = local_114;
     if (!(_e26)) {
-        local_105 = (s_23.sigma_s == 0.0);
+        local_115 = (s_23.sigma_s == 0.0);
     } else {
-        local_105 = true;
+        local_115 = true;
     }
-    bool _e34 = local_105;
+    bool _e34 = local_115;
     if (_e34) {
-        g_21.outcome = 1u;
-        AirlightOuter _e37 = g_21;
+        g_22.outcome = 1u;
+        AirlightOuter _e37 = g_22;
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
@@ -4762,115 +5266,115 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_106 = (sin_a_1 > 0.0);
+        local_116 = (sin_a_1 > 0.0);
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    bool _e84 = local_106;
+    bool _e84 = local_116;
     if (_e84) {
         float _e87 = s_star;
-        local_107 = (_e87 >= 0.0);
+        local_117 = (_e87 >= 0.0);
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    bool _e91 = local_107;
+    bool _e91 = local_117;
     if (_e91) {
         float _e94 = s_star;
-        local_108 = (_e94 <= _e15);
+        local_118 = (_e94 <= _e15);
     } else {
-        local_108 = false;
+        local_118 = false;
     }
-    bool _e97 = local_108;
+    bool _e97 = local_118;
     if (_e97) {
         float _e101 = t_star;
-        local_109 = (s_23.t_min <= _e101);
+        local_119 = (s_23.t_min <= _e101);
     } else {
-        local_109 = false;
+        local_119 = false;
     }
-    bool _e104 = local_109;
+    bool _e104 = local_119;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_111 = (_e110 <= s_23.t_max);
+            local_121 = (_e110 <= s_23.t_max);
         } else {
-            local_111 = true;
+            local_121 = true;
         }
-        bool _e114 = local_111;
-        local_110 = _e114;
+        bool _e114 = local_121;
+        local_120 = _e114;
     } else {
-        local_110 = false;
+        local_120 = false;
     }
-    bool _e116 = local_110;
+    bool _e116 = local_120;
     if (_e116) {
-        g_21.outcome = 2u;
-        AirlightOuter _e119 = g_21;
+        g_22.outcome = 2u;
+        AirlightOuter _e119 = g_22;
         const AirlightOuter airlightouter_8 = _e119;
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_112 = (_e73 > 0.0);
+        local_122 = (_e73 > 0.0);
     } else {
-        local_112 = false;
+        local_122 = false;
     }
-    bool _e129 = local_112;
+    bool _e129 = local_122;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_113 = (_e136 < (_e15 + _e15));
+        local_123 = (_e136 < (_e15 + _e15));
     } else {
-        local_113 = false;
+        local_123 = false;
     }
-    bool _e140 = local_113;
+    bool _e140 = local_123;
     if (_e140) {
         float _e143 = scale;
-        local_114 = (_e143 < _e15);
+        local_124 = (_e143 < _e15);
     } else {
-        local_114 = false;
+        local_124 = false;
     }
-    bool near_1 = local_114;
+    bool near_1 = local_124;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_115 = _e154;
+        local_125 = _e154;
     } else {
-        local_115 = false;
+        local_125 = false;
     }
-    bool _e156 = local_115;
+    bool _e156 = local_125;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_116 = _e163;
+        local_126 = _e163;
     } else {
-        local_116 = false;
+        local_126 = false;
     }
-    bool _e165 = local_116;
+    bool _e165 = local_126;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_21.e = e_4;
+    g_22.e = e_4;
     float _e170 = s_star;
-    g_21.s_star = _e170;
+    g_22.s_star = _e170;
     float _e172 = scale;
-    g_21.scale = _e172;
+    g_22.scale = _e172;
     float _e178 = s_star;
     at = airlight_Constructarray3_float_(_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
     uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    bool loop_init_24 = true;
     while(true) {
         if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
         loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (!loop_init_24) {
             uint _e229 = i_20;
             i_20 = (_e229 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_24 = false;
         uint _e189 = i_20;
         if ((_e189 < 3u)) {
         } else {
@@ -4879,21 +5383,21 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_20;
-                local_117 = (_e196 > 0u);
+                local_127 = (_e196 > 0u);
             } else {
-                local_117 = false;
+                local_127 = false;
             }
-            bool _e200 = local_117;
+            bool _e200 = local_127;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_20;
             if ((_e201 == 2u)) {
-                local_118 = infinite_4;
+                local_128 = infinite_4;
             } else {
-                local_118 = false;
+                local_128 = false;
             }
-            bool _e207 = local_118;
+            bool _e207 = local_128;
             if (_e207) {
                 continue;
             }
@@ -4902,14 +5406,14 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e210 > 0.0)) {
                 uint _e215 = i_20;
                 float _e217 = at[min(uint(_e215), 2u)];
-                local_119 = (_e217 < _e15);
+                local_129 = (_e217 < _e15);
             } else {
-                local_119 = false;
+                local_129 = false;
             }
-            bool _e220 = local_119;
+            bool _e220 = local_129;
             if (_e220) {
                 uint _e221 = i_20;
-                AirlightOuter _e223 = g_21;
+                AirlightOuter _e223 = g_22;
                 uint _e224 = i_20;
                 float _e226 = at[min(uint(_e224), 2u)];
                 const float _e227 = airlight_to_w(_e223, _e226);
@@ -4920,42 +5424,42 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     float _e232 = cuts_2[1];
     float _e234 = cuts_2[0];
     if ((_e232 < _e234)) {
-        float c_11 = cuts_2[0];
+        float c_12 = cuts_2[0];
         float _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_11;
+        cuts_2[1] = c_12;
     }
     float _e243 = cuts_2[2];
     float _e245 = cuts_2[1];
     if ((_e243 < _e245)) {
-        float c_12 = cuts_2[1];
+        float c_13 = cuts_2[1];
         float _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_12;
+        cuts_2[2] = c_13;
     }
     float _e254 = cuts_2[1];
     float _e256 = cuts_2[0];
     if ((_e254 < _e256)) {
-        float c_13 = cuts_2[0];
+        float c_14 = cuts_2[0];
         float _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_13;
+        cuts_2[1] = c_14;
     }
-    AirlightOuter _e264 = g_21;
+    AirlightOuter _e264 = g_22;
     const float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_21;
+    AirlightOuter _e268 = g_22;
     const float _e270 = airlight_to_w(_e268, 0.0);
-    g_21.edges[0] = _e270;
+    g_22.edges[0] = _e270;
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    bool loop_init_25 = true;
     while(true) {
         if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (!loop_init_25) {
             uint _e304 = i_21;
             i_21 = (_e304 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_25 = false;
         uint _e275 = i_21;
         if ((_e275 < 3u)) {
         } else {
@@ -4965,30 +5469,30 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             uint _e278 = i_21;
             float _e280 = cuts_2[min(uint(_e278), 2u)];
             uint _e282 = n_1;
-            float _e284 = g_21.edges[min(uint(_e282), 4u)];
+            float _e284 = g_22.edges[min(uint(_e282), 12u)];
             if ((_e280 > _e284)) {
                 uint _e288 = i_21;
                 float _e290 = cuts_2[min(uint(_e288), 2u)];
-                local_120 = (_e290 < _e265);
+                local_130 = (_e290 < _e265);
             } else {
-                local_120 = false;
+                local_130 = false;
             }
-            bool _e293 = local_120;
+            bool _e293 = local_130;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
                 uint _e300 = i_21;
                 float _e302 = cuts_2[min(uint(_e300), 2u)];
-                g_21.edges[min(uint(_e298), 4u)] = _e302;
+                g_22.edges[min(uint(_e298), 12u)] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_21.edges[min(uint((_e307 + 1u)), 4u)] = _e265;
+    g_22.edges[min(uint((_e307 + 1u)), 12u)] = _e265;
     uint _e312 = n_1;
-    g_21.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_21;
+    g_22.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_22;
     const AirlightOuter airlightouter_9 = _e315;
     return airlightouter_9;
 }
@@ -5000,73 +5504,82 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1) {
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_22, float x_17)
+AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x_19)
 {
     AirlightScene p = (AirlightScene)0;
+    float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
 
     p = s_24;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_22 = min(airlight_naga_f2u32(max(floor(x_17), 0.0)), (g_22.panels - 1u));
-        float t_6 = (x_17 - float(i_22));
-        float a_28 = g_22.gamma[min(uint(i_22), 3u)];
-        float b_18 = g_22.gamma[min(uint((i_22 + 1u)), 3u)];
-        float gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+    if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        uint i_22 = min(airlight_naga_f2u32(max(floor(x_19), 0.0)), (g_23.panels - 1u));
+        float t_6 = (x_19 - float(i_22));
+        float a_28 = g_23.gamma[min(uint(i_22), 12u)];
+        float b_18 = g_23.gamma[min(uint((i_22 + 1u)), 12u)];
+        float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             const AirlightNode airlightnode = ConstructAirlightNode(_e45, 0.0);
             return airlightnode;
         }
-        const float2 _e48 = airlight_cos_sin_half_turn(gamma);
-        const float _e53 = airlight_half_arc(g_22.cos_a, g_22.sin_a, _e48.x, _e48.y);
+        const float2 _e48 = airlight_cos_sin_half_turn(gamma_1);
+        const float _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             const AirlightNode airlightnode_1 = ConstructAirlightNode(_e57, 0.0);
             return airlightnode_1;
         }
-        const float2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = (2.0 * (((g_22.cos_a * _e48.x) * _e53) + ((g_22.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_22.l) + (_e48.y * g_22.u));
+        if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+            const float2 _e72 = airlight_cos_sin_half_turn(_e53);
+            float arc = (2.0 * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e72.y)));
+            weight = ((s_24.brdf_scale * 0.31830987) * arc);
+        } else {
+            float n_3 = s_24.brdf_exponent;
+            const float _e89 = airlight_lobe_arcs(g_23, _e48, gamma_1, _e53, n_3);
+            weight = (((s_24.brdf_scale * (n_3 + 2.0)) * 0.15915494) * _e89);
+        }
+        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        AirlightScene _e87 = p;
-        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e87, ((((s_24.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        AirlightScene _e105 = p;
+        float _e106 = weight;
+        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e105, ((_e106 * _e48.y) * jacobian));
         return airlightnode_2;
     }
     if ((s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_17;
-        if ((g_22.scale > 0.0)) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_17)));
-            ds = (g_22.scale * cosh(x_17));
+        at_1 = x_19;
+        if ((g_23.scale > 0.0)) {
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
+            ds = (g_23.scale * cosh(x_19));
         }
-        float _e115 = at_1;
-        p.light_position = (g_22.a + (_e115 * g_22.e));
-        AirlightScene _e119 = p;
-        float _e120 = ds;
-        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e119, _e120);
+        float _e130 = at_1;
+        p.light_position = (g_23.a + (_e130 * g_23.e));
+        AirlightScene _e134 = p;
+        float _e135 = ds;
+        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e134, _e135);
         return airlightnode_3;
     }
-    AirlightScene _e122 = p;
-    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e122, 1.0);
+    AirlightScene _e137 = p;
+    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e137, 1.0);
     return airlightnode_4;
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_121 = (bool)0;
+    bool local_131 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_121 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_131 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_121 = true;
+        local_131 = true;
     }
-    bool _e11 = local_121;
+    bool _e11 = local_131;
     if (_e11) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_8;
@@ -5078,16 +5591,16 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_point_integral(AirlightScene p_1)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_122 = (bool)0;
+    bool local_132 = (bool)0;
 
     const bool _e6 = airlight_vec_finite(p_1.light_position);
     if (_e6) {
         const bool _e10 = airlight_vec_finite(p_1.dir);
-        local_122 = _e10;
+        local_132 = _e10;
     } else {
-        local_122 = false;
+        local_132 = false;
     }
-    bool _e12 = local_122;
+    bool _e12 = local_132;
     if (_e12) {
         const AirlightCanonical _e13 = airlight_canonical(p_1);
         const AirlightCanonical _e14 = airlight_refined(p_1, _e13);
@@ -5100,7 +5613,7 @@ AirlightResult airlight_point_integral(AirlightScene p_1)
     return airlightresult_10;
 }
 
-AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5) {
+AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15) {
     AirlightPanelList ret = (AirlightPanelList)0;
     ret.panel_a = arg0;
     ret.panel_b = arg1;
@@ -5108,12 +5621,22 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
     ret.panel_d = arg3;
     ret.panel_e = arg4;
     ret.panel_f = arg5;
+    ret.panel_g = arg6;
+    ret.panel_h = arg7;
+    ret.panel_i = arg8;
+    ret.panel_j = arg9;
+    ret.panel_k = arg10;
+    ret.panel_l = arg11;
+    ret.panel_m = arg12;
+    ret.panel_n = arg13;
+    ret.panel_o = arg14;
+    ret.panel_p = arg15;
     return ret;
 }
 
 AirlightResult airlight_in_scatter(AirlightScene s_25)
 {
-    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     uint count_2 = 0u;
     float a_16 = (float)0;
     float b_12 = (float)0;
@@ -5122,17 +5645,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_5 = (float)0;
+    float k_4 = (float)0;
     float gauss = (float)0;
-    uint j_3 = (uint)0;
-    bool local_123 = (bool)0;
+    uint j_4 = (uint)0;
+    bool local_133 = (bool)0;
     float f = (float)0;
-    bool local_124 = (bool)0;
+    bool local_134 = (bool)0;
     bool split = (bool)0;
     uint tries = (uint)0;
-    bool local_125 = (bool)0;
-    bool local_126 = (bool)0;
-    bool local_127 = (bool)0;
+    bool local_135 = (bool)0;
+    bool local_136 = (bool)0;
+    bool local_137 = (bool)0;
 
     const bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
@@ -5153,170 +5676,170 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
         if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e231 = step_2;
-            step_2 = (_e231 + 1u);
+        if (!loop_init_26) {
+            uint _e251 = step_2;
+            step_2 = (_e251 + 1u);
         }
-        loop_init_27 = false;
-        uint _e58 = step_2;
-        if ((_e58 < evaluations)) {
+        loop_init_26 = false;
+        uint _e78 = step_2;
+        if ((_e78 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e60 = a_16;
-            float _e61 = b_12;
-            float c_14 = (0.5 * (_e60 + _e61));
-            float _e65 = b_12;
-            float _e66 = a_16;
-            float hw_3 = (0.5 * (_e65 - _e66));
-            k_5 = 0.0;
+            float _e80 = a_16;
+            float _e81 = b_12;
+            float c_15 = (0.5 * (_e80 + _e81));
+            float _e85 = b_12;
+            float _e86 = a_16;
+            float hw_3 = (0.5 * (_e85 - _e86));
+            k_4 = 0.0;
             gauss = 0.0;
-            j_3 = 0u;
+            j_4 = 0u;
             uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
+            bool loop_init_27 = true;
             while(true) {
                 if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
                 loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
-                    uint _e137 = j_3;
-                    j_3 = (_e137 + 1u);
+                if (!loop_init_27) {
+                    uint _e157 = j_4;
+                    j_4 = (_e157 + 1u);
                 }
-                loop_init_28 = false;
-                uint _e76 = j_3;
-                if ((_e76 < 7u)) {
+                loop_init_27 = false;
+                uint _e96 = j_4;
+                if ((_e96 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e79 = j_3;
-                    float3 node = _e19[min(uint(airlight_naga_div(_e79, 2u)), 3u)];
-                    uint _e89 = j_3;
-                    if (((_e89 & 1u) == 0u)) {
-                        uint _e96 = j_3;
-                        local_123 = (_e96 < 6u);
+                    uint _e99 = j_4;
+                    float3 node = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
+                    uint _e109 = j_4;
+                    if (((_e109 & 1u) == 0u)) {
+                        uint _e116 = j_4;
+                        local_133 = (_e116 < 6u);
                     } else {
-                        local_123 = false;
+                        local_133 = false;
                     }
-                    bool _e100 = local_123;
-                    float w_5 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
-                    const AirlightNode _e102 = airlight_outer_node(s_25, _e6, w_5);
+                    bool _e120 = local_133;
+                    float w_7 = (_e120 ? (c_15 - (hw_3 * node.x)) : (c_15 + (hw_3 * node.x)));
+                    const AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0.0;
-                    if ((_e102.weight != 0.0)) {
-                        const AirlightResult _e109 = airlight_point_integral(_e102.scene);
-                        if ((_e109.status == AIRLIGHT_STATUS_INFINITE)) {
-                            const AirlightResult airlightresult_14 = _e109;
+                    if ((_e122.weight != 0.0)) {
+                        const AirlightResult _e129 = airlight_point_integral(_e122.scene);
+                        if ((_e129.status == AIRLIGHT_STATUS_INFINITE)) {
+                            const AirlightResult airlightresult_14 = _e129;
                             return airlightresult_14;
                         }
                         if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_124 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_134 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_124 = false;
+                            local_134 = false;
                         }
-                        bool _e122 = local_124;
-                        if (_e122) {
-                            const AirlightResult airlightresult_15 = _e109;
+                        bool _e142 = local_134;
+                        if (_e142) {
+                            const AirlightResult airlightresult_15 = _e129;
                             return airlightresult_15;
                         }
-                        f = (_e109.in_scatter * _e102.weight);
+                        f = (_e129.in_scatter * _e122.weight);
                     }
-                    float _e126 = k_5;
-                    float _e128 = f;
-                    k_5 = (_e126 + (node.y * _e128));
-                    float _e131 = gauss;
-                    float _e133 = f;
-                    gauss = (_e131 + (node.z * _e133));
+                    float _e146 = k_4;
+                    float _e148 = f;
+                    k_4 = (_e146 + (node.y * _e148));
+                    float _e151 = gauss;
+                    float _e153 = f;
+                    gauss = (_e151 + (node.z * _e153));
                 }
             }
-            uint _e139 = slot_1;
-            float _e140 = a_16;
-            float _e141 = b_12;
-            float _e142 = k_5;
-            float _e144 = k_5;
-            float _e146 = gauss;
-            airlight_list_set(list_1, _e139, float4(_e140, _e141, (_e142 * hw_3), abs(((_e144 * hw_3) - (_e146 * hw_3)))));
-            uint _e151 = slot_1;
-            uint _e152 = count_2;
-            if ((_e151 == _e152)) {
-                uint _e154 = count_2;
-                count_2 = (_e154 + 1u);
+            uint _e159 = slot_1;
+            float _e160 = a_16;
+            float _e161 = b_12;
+            float _e162 = k_4;
+            float _e164 = k_4;
+            float _e166 = gauss;
+            airlight_list_set(list_1, _e159, float4(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
+            uint _e171 = slot_1;
+            uint _e172 = count_2;
+            if ((_e171 == _e172)) {
+                uint _e174 = count_2;
+                count_2 = (_e174 + 1u);
             }
-            uint _e157 = count_2;
-            if ((_e157 < _e6.panels)) {
-                uint _e161 = count_2;
-                a_16 = _e6.edges[min(uint(_e161), 4u)];
-                uint _e164 = count_2;
-                b_12 = _e6.edges[min(uint((_e164 + 1u)), 4u)];
-                uint _e168 = count_2;
-                slot_1 = _e168;
+            uint _e177 = count_2;
+            if ((_e177 < _e6.panels)) {
+                uint _e181 = count_2;
+                a_16 = _e6.edges[min(uint(_e181), 12u)];
+                uint _e184 = count_2;
+                b_12 = _e6.edges[min(uint((_e184 + 1u)), 12u)];
+                uint _e188 = count_2;
+                slot_1 = _e188;
             } else {
-                bool _e169 = queued;
-                if (_e169) {
-                    float _e170 = queued_lo;
-                    a_16 = _e170;
-                    float _e171 = queued_hi;
-                    b_12 = _e171;
-                    uint _e172 = count_2;
-                    slot_1 = _e172;
+                bool _e189 = queued;
+                if (_e189) {
+                    float _e190 = queued_lo;
+                    a_16 = _e190;
+                    float _e191 = queued_hi;
+                    b_12 = _e191;
+                    uint _e192 = count_2;
+                    slot_1 = _e192;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_29 = true;
+                    bool loop_init_28 = true;
                     while(true) {
                         if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
                         loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                        if (!loop_init_29) {
-                            uint _e226 = tries;
-                            tries = (_e226 + 1u);
+                        if (!loop_init_28) {
+                            uint _e246 = tries;
+                            tries = (_e246 + 1u);
                         }
-                        loop_init_29 = false;
-                        uint _e178 = tries;
-                        if ((_e178 < _e6.max_panels)) {
+                        loop_init_28 = false;
+                        uint _e198 = tries;
+                        if ((_e198 < _e6.max_panels)) {
                         } else {
                             break;
                         }
                         {
-                            AirlightPanelList _e181 = list_1;
-                            uint _e182 = count_2;
-                            const AirlightListScan _e183 = airlight_list_scan(_e181, _e182);
-                            float total_4 = _e183.total;
-                            uint worst_1 = _e183.worst;
-                            if (!(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e194 = count_2;
-                                local_125 = (_e194 == _e6.max_panels);
+                            AirlightPanelList _e201 = list_1;
+                            uint _e202 = count_2;
+                            const AirlightListScan _e203 = airlight_list_scan(_e201, _e202);
+                            float total_4 = _e203.total;
+                            uint worst_1 = _e203.worst;
+                            if (!(!((_e203.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e214 = count_2;
+                                local_135 = (_e214 == _e6.max_panels);
                             } else {
-                                local_125 = true;
+                                local_135 = true;
                             }
-                            bool _e198 = local_125;
-                            if (!(_e198)) {
-                                const bool _e202 = airlight_is_finite(total_4);
-                                local_126 = !(_e202);
+                            bool _e218 = local_135;
+                            if (!(_e218)) {
+                                const bool _e222 = airlight_is_finite(total_4);
+                                local_136 = !(_e222);
                             } else {
-                                local_126 = true;
+                                local_136 = true;
                             }
-                            bool _e205 = local_126;
-                            if (_e205) {
+                            bool _e225 = local_136;
+                            if (_e225) {
                                 break;
                             }
-                            AirlightPanelList _e206 = list_1;
-                            const float4 _e207 = airlight_list_get(_e206, worst_1);
-                            float wa_1 = _e207.x;
-                            float wb_1 = _e207.y;
+                            AirlightPanelList _e226 = list_1;
+                            const float4 _e227 = airlight_list_get(_e226, worst_1);
+                            float wa_1 = _e227.x;
+                            float wb_1 = _e227.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_127 = (mid_3 < wb_1);
+                                local_137 = (mid_3 < wb_1);
                             } else {
-                                local_127 = false;
+                                local_137 = false;
                             }
-                            bool _e218 = local_127;
-                            if (!(_e218)) {
-                                airlight_list_set(list_1, worst_1, float4(_e207.xyz, 0.0));
+                            bool _e238 = local_137;
+                            if (!(_e238)) {
+                                airlight_list_set(list_1, worst_1, float4(_e227.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -5329,20 +5852,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             break;
                         }
                     }
-                    bool _e228 = split;
-                    if (!(_e228)) {
+                    bool _e248 = split;
+                    if (!(_e248)) {
                         break;
                     }
                 }
             }
         }
     }
-    AirlightPanelList _e233 = list_1;
-    uint _e234 = count_2;
-    const AirlightListScan _e235 = airlight_list_scan(_e233, _e234);
-    float total_5 = _e235.total;
-    const bool _e237 = airlight_is_finite(total_5);
-    if (!(_e237)) {
+    AirlightPanelList _e253 = list_1;
+    uint _e254 = count_2;
+    const AirlightListScan _e255 = airlight_list_scan(_e253, _e254);
+    float total_5 = _e255.total;
+    const bool _e257 = airlight_is_finite(total_5);
+    if (!(_e257)) {
         const AirlightResult airlightresult_16 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_16;
     }
@@ -5357,7 +5880,7 @@ uint airlight_NagaBufferLength(ByteAddressBuffer buffer)
     return ret;
 }
 
-AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16, float arg17, uint arg18, float3 arg19, uint arg20) {
+AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16, float arg17, uint arg18, float arg19, float3 arg20, uint arg21, float3 arg22) {
     AirlightScene ret = (AirlightScene)0;
     ret.origin = arg0;
     ret.t_min = arg1;
@@ -5376,10 +5899,12 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
     ret.light_kind = arg14;
     ret.phase_kind = arg15;
     ret.flags = arg16;
-    ret.brdf_albedo = arg17;
+    ret.brdf_scale = arg17;
     ret.surface_kind = arg18;
-    ret.light_end = arg19;
-    ret.light_shape = arg20;
+    ret.brdf_exponent = arg19;
+    ret.light_end = arg20;
+    ret.light_shape = arg21;
+    ret.brdf_view = arg22;
     return ret;
 }
 
@@ -5387,10 +5912,10 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
 void airlight_main(uint3 id : SV_DispatchThreadID)
 {
     uint i_23 = id.x;
-    if ((i_23 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 128))) {
+    if ((i_23 >= ((airlight_NagaBufferLength(airlight_records) - 0) / 144))) {
         return;
     }
-    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_23*128+0)), asfloat(airlight_records.Load(i_23*128+12)), asfloat(airlight_records.Load3(i_23*128+16)), asfloat(airlight_records.Load(i_23*128+28)), asfloat(airlight_records.Load3(i_23*128+32)), asfloat(airlight_records.Load(i_23*128+44)), asfloat(airlight_records.Load3(i_23*128+48)), asfloat(airlight_records.Load(i_23*128+60)), asfloat(airlight_records.Load(i_23*128+64)), asfloat(airlight_records.Load(i_23*128+68)), asfloat(airlight_records.Load(i_23*128+72)), asfloat(airlight_records.Load(i_23*128+76)), asfloat(airlight_records.Load(i_23*128+80)), asfloat(airlight_records.Load(i_23*128+84)), asuint(airlight_records.Load(i_23*128+88)), asuint(airlight_records.Load(i_23*128+92)), asuint(airlight_records.Load(i_23*128+96)), asfloat(airlight_records.Load(i_23*128+100)), asuint(airlight_records.Load(i_23*128+104)), asfloat(airlight_records.Load3(i_23*128+112)), asuint(airlight_records.Load(i_23*128+124)));
+    AirlightScene _e9 = ConstructAirlightScene(asfloat(airlight_records.Load3(i_23*144+0)), asfloat(airlight_records.Load(i_23*144+12)), asfloat(airlight_records.Load3(i_23*144+16)), asfloat(airlight_records.Load(i_23*144+28)), asfloat(airlight_records.Load3(i_23*144+32)), asfloat(airlight_records.Load(i_23*144+44)), asfloat(airlight_records.Load3(i_23*144+48)), asfloat(airlight_records.Load(i_23*144+60)), asfloat(airlight_records.Load(i_23*144+64)), asfloat(airlight_records.Load(i_23*144+68)), asfloat(airlight_records.Load(i_23*144+72)), asfloat(airlight_records.Load(i_23*144+76)), asfloat(airlight_records.Load(i_23*144+80)), asfloat(airlight_records.Load(i_23*144+84)), asuint(airlight_records.Load(i_23*144+88)), asuint(airlight_records.Load(i_23*144+92)), asuint(airlight_records.Load(i_23*144+96)), asfloat(airlight_records.Load(i_23*144+100)), asuint(airlight_records.Load(i_23*144+104)), asfloat(airlight_records.Load(i_23*144+108)), asfloat(airlight_records.Load3(i_23*144+112)), asuint(airlight_records.Load(i_23*144+124)), asfloat(airlight_records.Load3(i_23*144+128)));
     const AirlightResult _e10 = airlight_in_scatter(_e9);
     {
         AirlightResult _value2 = _e10;

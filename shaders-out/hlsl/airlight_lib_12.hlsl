@@ -20,11 +20,13 @@ struct AirlightScene {
     uint light_kind;
     uint phase_kind;
     uint flags;
-    float brdf_albedo;
+    float brdf_scale;
     uint surface_kind;
-    int _pad19_0;
+    float brdf_exponent;
     float3 light_end;
     uint light_shape;
+    float3 brdf_view;
+    int _end_pad_0;
 };
 
 struct AirlightResult {
@@ -102,6 +104,16 @@ struct AirlightPanelList {
     float4 panel_d;
     float4 panel_e;
     float4 panel_f;
+    float4 panel_g;
+    float4 panel_h;
+    float4 panel_i;
+    float4 panel_j;
+    float4 panel_k;
+    float4 panel_l;
+    float4 panel_m;
+    float4 panel_n;
+    float4 panel_o;
+    float4 panel_p;
 };
 
 struct AirlightListScan {
@@ -116,7 +128,7 @@ struct AirlightOuter {
     float3 e;
     float s_star;
     float scale;
-    float edges[5];
+    float edges[13];
     uint panels;
     uint outcome;
     uint max_panels;
@@ -128,10 +140,25 @@ struct AirlightOuter {
     float3 u;
     float cos_a;
     float sin_a;
-    float gamma[4];
+    float gamma[13];
+    float cos_r;
+    float sin_r;
+    float alpha_r;
+    int _pad16_0;
+    int _pad16_1;
+    int _pad16_2;
+    float3 delta;
     int _end_pad_0;
-    int _end_pad_1;
-    int _end_pad_2;
+};
+
+struct AirlightLobe {
+    float a;
+    float b;
+    float k;
+    float log_peak;
+    float cos_delta;
+    float sin_delta;
+    float exponent;
 };
 
 struct AirlightNode {
@@ -171,6 +198,7 @@ static const uint AIRLIGHT_SHAPE_POINT = 0u;
 static const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
 static const uint AIRLIGHT_SURFACE_NONE = 0u;
 static const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
+static const uint AIRLIGHT_SURFACE_PHONG = 2u;
 static const uint AIRLIGHT_STATUS_OK = 0u;
 static const uint AIRLIGHT_STATUS_INVALID = 1u;
 static const uint AIRLIGHT_STATUS_INFINITE = 2u;
@@ -185,6 +213,9 @@ static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
 static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 static const uint AIRLIGHT_SURFACE_PANELS = 6u;
+static const uint AIRLIGHT_PHONG_PANELS = 16u;
+static const uint AIRLIGHT_OUTER_EDGES = 13u;
+static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 
 typedef float airlight_ret_Constructarray12_float_[12];
 airlight_ret_Constructarray12_float_ airlight_Constructarray12_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11) {
@@ -333,7 +364,7 @@ AirlightPhase airlight_two_lobe_henyey_greenstein(float g1_, float g2_, float w)
     return airlightphase_5;
 }
 
-AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16, float arg17, uint arg18, float3 arg19, uint arg20) {
+AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, uint arg14, uint arg15, uint arg16, float arg17, uint arg18, float arg19, float3 arg20, uint arg21, float3 arg22) {
     AirlightScene ret = (AirlightScene)0;
     ret.origin = arg0;
     ret.t_min = arg1;
@@ -352,16 +383,18 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
     ret.light_kind = arg14;
     ret.phase_kind = arg15;
     ret.flags = arg16;
-    ret.brdf_albedo = arg17;
+    ret.brdf_scale = arg17;
     ret.surface_kind = arg18;
-    ret.light_end = arg19;
-    ret.light_shape = arg20;
+    ret.brdf_exponent = arg19;
+    ret.light_end = arg20;
+    ret.light_shape = arg21;
+    ret.brdf_view = arg22;
     return ret;
 }
 
 AirlightScene airlight_scene(AirlightRay ray, AirlightLight light_1, AirlightMedium medium, AirlightPhase phase)
 {
-    const AirlightScene airlightscene = ConstructAirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, light_1.end, light_1.shape);
+    const AirlightScene airlightscene = ConstructAirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, 0.0, light_1.end, light_1.shape, (0.0).xxx);
     return airlightscene;
 }
 
@@ -372,11 +405,27 @@ AirlightScene airlight_lambert_surface(float3 position_3, float3 normal, float a
     const AirlightRay _e7 = airlight_ray_to_infinity(position_3, normal, 0.0);
     const AirlightScene _e8 = airlight_scene(_e7, light_2, medium_1, phase_1);
     s = _e8;
-    s.brdf_albedo = albedo;
+    s.brdf_scale = albedo;
     s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
     AirlightScene _e13 = s;
     const AirlightScene airlightscene_1 = _e13;
     return airlightscene_1;
+}
+
+AirlightScene airlight_phong_surface(float3 position_4, float3 normal_1, float k_s, float exponent, float3 view, AirlightLight light_3, AirlightMedium medium_2, AirlightPhase phase_2)
+{
+    AirlightScene s_1 = (AirlightScene)0;
+
+    const AirlightRay _e9 = airlight_ray_to_infinity(position_4, normal_1, 0.0);
+    const AirlightScene _e10 = airlight_scene(_e9, light_3, medium_2, phase_2);
+    s_1 = _e10;
+    s_1.brdf_scale = k_s;
+    s_1.brdf_exponent = exponent;
+    s_1.brdf_view = view;
+    s_1.surface_kind = AIRLIGHT_SURFACE_PHONG;
+    AirlightScene _e17 = s_1;
+    const AirlightScene airlightscene_2 = _e17;
+    return airlightscene_2;
 }
 
 float2 airlight_cmul(float2 a, float2 b)
@@ -431,8 +480,8 @@ float2 airlight_cos_sin(float x)
 {
     float z_9 = (x * x);
     float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_29 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return float2(c_7, (s_29 * x));
+    float s_30 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return float2(c_7, (s_30 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -482,37 +531,21 @@ float2 airlight_cln(float2 z_3)
 
 float airlight_log1p(float x_2)
 {
-    float sum = 0.0;
-    uint k_1 = 0u;
+    bool local_1 = (bool)0;
 
-    if ((x_2 > 1.0)) {
+    if (!((x_2 > 1.0))) {
+        local_1 = (x_2 < -0.5);
+    } else {
+        local_1 = true;
+    }
+    bool _e9 = local_1;
+    if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_30 = (x_2 / (2.0 + x_2));
-    float s2_ = (s_30 * s_30);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e31 = k_1;
-            k_1 = (_e31 + 1u);
-        }
-        loop_init = false;
-        uint _e14 = k_1;
-        if ((_e14 < 9u)) {
-        } else {
-            break;
-        }
-        {
-            float _e17 = sum;
-            uint _e21 = k_1;
-            sum = ((_e17 * s2_) + (1.0 / float(((2u * (8u - _e21)) + 1u))));
-        }
-    }
-    float _e35 = sum;
-    return ((2.0 * s_30) * _e35);
+    float s_31 = (x_2 / (2.0 + x_2));
+    float z_11 = (s_31 * s_31);
+    float sum_6 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
+    return ((2.0 * s_31) * sum_6);
 }
 
 bool airlight_is_finite(float x_3)
@@ -522,33 +555,33 @@ bool airlight_is_finite(float x_3)
 
 float2 airlight_ein(float2 z_4)
 {
-    float2 sum_1 = float2(0.0, 0.0);
-    uint k_2 = 0u;
+    float2 sum = float2(0.0, 0.0);
+    uint k_1 = 0u;
 
     const float _e1[13] = airlight_ein_coefficients();
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e21 = k_2;
-            k_2 = (_e21 + 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e21 = k_1;
+            k_1 = (_e21 + 1u);
         }
-        loop_init_1 = false;
-        uint _e8 = k_2;
+        loop_init = false;
+        uint _e8 = k_1;
         if ((_e8 < AIRLIGHT_E1_SERIES_TERMS)) {
         } else {
             break;
         }
         {
-            float2 _e11 = sum_1;
+            float2 _e11 = sum;
             const float2 _e12 = airlight_cmul(_e11, z_4);
-            uint _e14 = k_2;
-            sum_1 = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
+            uint _e14 = k_1;
+            sum = (_e12 + float2(_e1[min(uint((12u - _e14)), 12u)], 0.0));
         }
     }
-    float2 _e23 = sum_1;
+    float2 _e23 = sum;
     const float2 _e24 = airlight_cmul(_e23, z_4);
     return _e24;
 }
@@ -557,30 +590,30 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 {
     float2 h = float2(1.0, 0.0);
     float2 a_pow = float2(1.0, 0.0);
-    float2 sum_2 = float2(0.0, 0.0);
-    uint k_3 = 0u;
+    float2 sum_1 = float2(0.0, 0.0);
+    uint k_2 = 0u;
 
     const float _e2[13] = airlight_ein_coefficients();
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e33 = k_3;
-            k_3 = (_e33 + 1u);
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e33 = k_2;
+            k_2 = (_e33 + 1u);
         }
-        loop_init_2 = false;
-        uint _e17 = k_3;
+        loop_init_1 = false;
+        uint _e17 = k_2;
         if ((_e17 < AIRLIGHT_EIN_DD_TERMS)) {
         } else {
             break;
         }
         {
-            float2 _e20 = sum_2;
+            float2 _e20 = sum_1;
             float2 _e21 = h;
-            uint _e22 = k_3;
-            sum_2 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
+            uint _e22 = k_2;
+            sum_1 = (_e20 + (_e21 * _e2[min(uint(_e22), 12u)]));
             float2 _e26 = a_pow;
             const float2 _e27 = airlight_cmul(_e26, a_2);
             a_pow = _e27;
@@ -590,15 +623,15 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
             h = (_e29 + _e30);
         }
     }
-    float2 _e35 = sum_2;
+    float2 _e35 = sum_1;
     return _e35;
 }
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_20 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_18 * x_18) + (y_5 * y_5)) < 1.0);
+    return (((x_20 * x_20) + (y_5 * y_5)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -688,16 +721,16 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float2 _e46 = root;
     const float2 _e48 = airlight_cmul(b_13, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e103 = i;
             i = (_e103 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_2 = false;
         uint _e54 = i;
         if ((_e54 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -768,16 +801,16 @@ float airlight_en_scaled_cf(float x_4, uint n)
     if ((disc > 0.0)) {
         t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e54 = i_1;
             i_1 = (_e54 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e34 = i_1;
         if ((_e34 < AIRLIGHT_E1_CF_MAX_DEPTH)) {
         } else {
@@ -1024,16 +1057,16 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
         case 1u: {
             base = c;
             e = airlight_naga_f2u32(p0_2);
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-            bool loop_init_5 = true;
+            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_5) {
+                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_4) {
                     uint _e32 = i_2;
                     i_2 = (_e32 + 1u);
                 }
-                loop_init_5 = false;
+                loop_init_4 = false;
                 uint _e11 = i_2;
                 if ((_e11 < AIRLIGHT_MAX_POWER_BITS)) {
                 } else {
@@ -1065,8 +1098,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_19 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_19 * x_19) * (3.0 - (2.0 * x_19)));
+            float x_21 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_21 * x_21) * (3.0 - (2.0 * x_21)));
         }
         default: {
             return 1.0;
@@ -1094,12 +1127,12 @@ float airlight_hg_gap(float g_4)
     return (((1.0 - a_19) * (1.0 - a_19)) / (a_19 + a_19));
 }
 
-float3 airlight_singular_heights(AirlightScene s_1, float sigma_1)
+float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
 {
     float3 h_1 = (1.0).xxx;
 
-    float p0_3 = s_1.phase_param_a;
-    switch(s_1.phase_kind) {
+    float p0_3 = s_2.phase_param_a;
+    switch(s_2.phase_kind) {
         case 2u:
         case 4u: {
             const float _e8 = airlight_hg_gap(p0_3);
@@ -1117,8 +1150,8 @@ float3 airlight_singular_heights(AirlightScene s_1, float sigma_1)
             const float _e21 = airlight_hg_gap(p0_3);
             const float _e22 = airlight_singular_height(p0_3, _e21, sigma_1);
             h_1.y = _e22;
-            const float _e26 = airlight_hg_gap(s_1.phase_param_b);
-            const float _e27 = airlight_singular_height(s_1.phase_param_b, _e26, sigma_1);
+            const float _e26 = airlight_hg_gap(s_2.phase_param_b);
+            const float _e27 = airlight_singular_height(s_2.phase_param_b, _e26, sigma_1);
             h_1.z = _e27;
             break;
         }
@@ -1130,19 +1163,19 @@ float3 airlight_singular_heights(AirlightScene s_1, float sigma_1)
     return _e28;
 }
 
-float3 airlight_singular_steps(AirlightScene s_2)
+float3 airlight_singular_steps(AirlightScene s_3)
 {
     float degree = 0.0;
     float order = 0.0;
     float growth = 0.0;
 
-    if ((s_2.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        degree = s_2.light_param_a;
+    if ((s_3.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        degree = s_3.light_param_a;
     }
-    if ((s_2.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+    if ((s_3.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         degree = 3.0;
     }
-    switch(s_2.phase_kind) {
+    switch(s_3.phase_kind) {
         case 0u: {
             order = 0.0;
             growth = 0.0;
@@ -1178,13 +1211,13 @@ float3 airlight_singular_steps(AirlightScene s_2)
         }
     }
     float _e29 = order;
-    float phase_2 = pow(1.0909091, max((_e29 - 1.0), 0.0));
+    float phase_3 = pow(1.0909091, max((_e29 - 1.0), 0.0));
     float _e35 = degree;
     float _e36 = growth;
-    return float3(pow(1.0909091, (_e35 + _e36)), phase_2, phase_2);
+    return float3(pow(1.0909091, (_e35 + _e36)), phase_3, phase_3);
 }
 
-float2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_5, float sigma_2, float y_1)
+float2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float sigma_2, float y_1)
 {
     float minus = (float)0;
     float plus = (float)0;
@@ -1202,17 +1235,17 @@ float2 airlight_integrand_over(AirlightScene s_3, AirlightCanonical g_5, float s
         minus = far;
         plus = near;
     }
-    const float _e35 = airlight_light(s_3.light_kind, s_3.light_param_a, s_3.light_param_b, c_8);
+    const float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
     float _e40 = minus;
     float _e41 = plus;
-    const float _e42 = airlight_phase(s_3.phase_kind, s_3.phase_param_a, s_3.phase_param_b, s_3.phase_param_c, mu_2, _e40, _e41);
+    const float _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
     float f_1 = (_e35 * _e42);
     return float2(f_1, inv_2);
 }
 
-float airlight_integrand(AirlightScene s_4, AirlightCanonical g_6, float sigma_3, float y_2)
+float airlight_integrand(AirlightScene s_5, AirlightCanonical g_6, float sigma_3, float y_2)
 {
-    const float2 _e4 = airlight_integrand_over(s_4, g_6, sigma_3, y_2);
+    const float2 _e4 = airlight_integrand_over(s_5, g_6, sigma_3, y_2);
     return _e4.x;
 }
 
@@ -1231,16 +1264,16 @@ float airlight_moment_gauss(AirlightHalf half_)
     float hw_1 = (half_.dy * 0.5);
     float yc = (half_.y_lo + hw_1);
     float2 nodes[4] = airlight_Constructarray4_float2_(float2(-0.33998105, 0.65214515), float2(0.33998105, 0.65214515), float2(-0.8611363, 0.34785485), float2(0.8611363, 0.34785485));
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e59 = j;
             j = (_e59 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e23 = j;
         if ((_e23 < 4u)) {
         } else {
@@ -1266,35 +1299,35 @@ float airlight_moment_gauss(AirlightHalf half_)
 
 bool airlight_is_short(AirlightHalf half_1)
 {
-    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
 
     if (!(half_1.dv_infinite)) {
-        local_1 = ((half_1.big_h * half_1.dv) <= 1.0);
-    } else {
-        local_1 = false;
-    }
-    bool short_exp = local_1;
-    if ((half_1.dy <= 0.25)) {
-        if (!(!(half_1.second))) {
-            local_3 = (half_1.dy <= (half_1.y_lo * 0.5));
-        } else {
-            local_3 = true;
-        }
-        bool _e28 = local_3;
-        local_2 = _e28;
+        local_2 = ((half_1.big_h * half_1.dv) <= 1.0);
     } else {
         local_2 = false;
     }
-    bool short_len = local_2;
-    if (short_exp) {
-        local_4 = short_len;
+    bool short_exp = local_2;
+    if ((half_1.dy <= 0.25)) {
+        if (!(!(half_1.second))) {
+            local_4 = (half_1.dy <= (half_1.y_lo * 0.5));
+        } else {
+            local_4 = true;
+        }
+        bool _e28 = local_4;
+        local_3 = _e28;
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e34 = local_4;
+    bool short_len = local_3;
+    if (short_exp) {
+        local_5 = short_len;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
     return _e34;
 }
 
@@ -1308,43 +1341,43 @@ float airlight_hypot_one(float a_3)
 
 bool airlight_is_near(float big_h, float v_e, bool v_e_infinite)
 {
-    bool local_5 = (bool)0;
     bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((big_h == 0.0))) {
         if (!(v_e_infinite)) {
             const float _e11 = airlight_hypot_one(v_e);
-            local_6 = ((big_h * _e11) <= 1.0);
+            local_7 = ((big_h * _e11) <= 1.0);
         } else {
-            local_6 = false;
+            local_7 = false;
         }
-        bool _e16 = local_6;
-        local_5 = _e16;
+        bool _e16 = local_7;
+        local_6 = _e16;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e18 = local_5;
+    bool _e18 = local_6;
     return _e18;
 }
 
 float airlight_q_zero(AirlightHalf half_2)
 {
     float v_e_1 = (float)0;
-    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
     float d_im = 0.0;
     float d_re = 0.0;
-    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float big_h_4 = half_2.big_h;
     float v_s_1 = (half_2.second ? (1.0 / half_2.y_hi) : half_2.y_lo);
     bool v_e_infinite_1 = half_2.dv_infinite;
     v_e_1 = half_2.y_hi;
     if (half_2.second) {
-        local_7 = !(v_e_infinite_1);
+        local_8 = !(v_e_infinite_1);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool _e16 = local_7;
+    bool _e16 = local_8;
     if (_e16) {
         v_e_1 = (1.0 / half_2.y_lo);
     }
@@ -1356,10 +1389,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_20);
+            float x_22 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_22);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_20);
+                const float _e43 = airlight_log1p(x_22);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1389,11 +1422,11 @@ float airlight_q_zero(AirlightHalf half_2)
     if (!(v_e_infinite_1)) {
         float _e95 = v_e_1;
         const bool _e97 = airlight_is_finite((big_h_4 * _e95));
-        local_8 = _e97;
+        local_9 = _e97;
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    bool _e99 = local_8;
+    bool _e99 = local_9;
     if (_e99) {
         float decay_1 = exp((-(big_h_4) * half_2.dv));
         if ((decay_1 > 2.9802322e-8)) {
@@ -1421,44 +1454,44 @@ float airlight_moment_zero(AirlightHalf half_3)
 
 float2 airlight_moment_zero_weighted(AirlightHalf half_4, float x_6)
 {
-    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
     bool local_12 = (bool)0;
-    float far_end = 0.0;
     bool local_13 = (bool)0;
+    float far_end = 0.0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     float big_h_5 = half_4.big_h;
     float v_s_2 = half_4.y_lo;
     float2 z_s_1 = float2((big_h_5 * v_s_2), -(big_h_5));
     if (!(half_4.second)) {
-        local_9 = (half_4.dy > 0.0);
-    } else {
-        local_9 = false;
-    }
-    bool _e15 = local_9;
-    if (_e15) {
-        const bool _e18 = airlight_is_short(half_4);
-        local_10 = !(_e18);
+        local_10 = (half_4.dy > 0.0);
     } else {
         local_10 = false;
     }
-    bool _e21 = local_10;
-    if (_e21) {
-        const bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
-        local_11 = !(_e26);
+    bool _e15 = local_10;
+    if (_e15) {
+        const bool _e18 = airlight_is_short(half_4);
+        local_11 = !(_e18);
     } else {
         local_11 = false;
     }
-    bool far_route = local_11;
+    bool _e21 = local_11;
+    if (_e21) {
+        const bool _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_12 = !(_e26);
+    } else {
+        local_12 = false;
+    }
+    bool far_route = local_12;
     if (!(!(far_route))) {
         const bool _e34 = airlight_in_series_region(z_s_1);
-        local_12 = !(_e34);
+        local_13 = !(_e34);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e37 = local_12;
+    bool _e37 = local_13;
     if (_e37) {
         const float _e38 = airlight_moment_zero(half_4);
         return float2(_e38, x_6);
@@ -1470,17 +1503,17 @@ float2 airlight_moment_zero_weighted(AirlightHalf half_4, float x_6)
     float v_e_3 = half_4.y_hi;
     if (!(half_4.dv_infinite)) {
         const bool _e56 = airlight_is_finite((big_h_5 * v_e_3));
-        local_13 = _e56;
-    } else {
-        local_13 = false;
-    }
-    bool _e58 = local_13;
-    if (_e58) {
-        local_14 = ((big_h_5 * half_4.dv) < 17.32868);
+        local_14 = _e56;
     } else {
         local_14 = false;
     }
-    bool _e66 = local_14;
+    bool _e58 = local_14;
+    if (_e58) {
+        local_15 = ((big_h_5 * half_4.dv) < 17.32868);
+    } else {
+        local_15 = false;
+    }
+    bool _e66 = local_15;
     if (_e66) {
         const float2 _e73 = airlight_e1_scaled(float2((big_h_5 * v_e_3), -(big_h_5)));
         far_end = (exp((-(big_h_5) * v_e_3)) * _e73.y);
@@ -1511,8 +1544,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[6], uint i_3)
 {
-    float x_21 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_21) : x_21);
+    float x_23 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_23) : x_23);
 }
 
 typedef float airlight_ret_airlight_legendre[12];
@@ -1535,35 +1568,34 @@ airlight_ret_airlight_legendre airlight_legendre(float g_7[12])
 
 float airlight_expm1_(float x_7)
 {
-    float sum_3 = 1.0;
-    uint i_4 = 0u;
+    float sum_2 = (float)0;
 
     if ((abs(x_7) >= 0.5)) {
         return (exp(x_7) - 1.0);
     }
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_7 = true;
-    while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e24 = i_4;
-            i_4 = (_e24 + 1u);
-        }
-        loop_init_7 = false;
-        uint _e11 = i_4;
-        if ((_e11 < 11u)) {
-        } else {
-            break;
-        }
-        {
-            float _e14 = sum_3;
-            uint _e17 = i_4;
-            sum_3 = (1.0 + ((x_7 * _e14) / float((12u - _e17))));
-        }
-    }
-    float _e26 = sum_3;
-    return (x_7 * _e26);
+    sum_2 = (1.0 + (x_7 / 12.0));
+    float _e12 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e12) / 11.0));
+    float _e18 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e18) / 10.0));
+    float _e24 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e24) / 9.0));
+    float _e30 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e30) / 8.0));
+    float _e36 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e36) / 7.0));
+    float _e42 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e42) / 6.0));
+    float _e48 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e48) / 5.0));
+    float _e54 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e54) / 4.0));
+    float _e60 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e60) / 3.0));
+    float _e66 = sum_2;
+    sum_2 = (1.0 + ((x_7 * _e66) / 2.0));
+    float _e72 = sum_2;
+    return (x_7 * _e72);
 }
 
 typedef float airlight_ret_airlight_exp_legendre_moments[12];
@@ -1576,7 +1608,7 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
     float cur = 1e-20;
     float below = 0.0;
     float odd = (float)0;
-    uint i_5 = 0u;
+    uint i_4 = 0u;
 
     const float _e1[12] = airlight_zero_terms();
     out_1 = _e1;
@@ -1599,19 +1631,19 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_22 = (lambda / float((2u * k0_)));
-            float per_step = (x_22 * x_22);
+            float x_24 = (lambda / float((2u * k0_)));
+            float per_step = (x_24 * x_24);
             share = per_step;
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-            bool loop_init_8 = true;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_8) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_6) {
                     uint _e53 = steps;
                     steps = (_e53 + 1u);
                 }
-                loop_init_8 = false;
+                loop_init_6 = false;
                 uint _e43 = steps;
                 if ((_e43 < 28u)) {
                 } else {
@@ -1629,23 +1661,23 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
             uint _e55 = steps;
             uint top = ((k0_ + _e55) + 2u);
             odd = float(((2u * top) + 1u));
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e100 = i_5;
-                    i_5 = (_e100 + 1u);
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e100 = i_4;
+                    i_4 = (_e100 + 1u);
                 }
-                loop_init_9 = false;
-                uint _e73 = i_5;
+                loop_init_7 = false;
+                uint _e73 = i_4;
                 if ((_e73 < 54u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e76 = i_5;
+                    uint _e76 = i_4;
                     if (((_e76 + AIRLIGHT_TERMS) > top)) {
                         break;
                     }
@@ -2108,11 +2140,11 @@ float airlight_tail_estimate(float c_1[12])
 
 float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
 {
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
     float aliasing = 0.0;
     float c_max = 0.0;
     float aliasing_1 = 1.0;
-    uint i_6 = 0u;
+    uint i_5 = 0u;
 
     if (!((m_1[0] > 0.0))) {
         return 1.0;
@@ -2120,56 +2152,56 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
     float last = (abs(c_2[11]) + abs(c_2[10]));
     float before = (abs(c_2[9]) + abs(c_2[8]));
     if (!(!((before > 0.0)))) {
-        local_15 = !((last < before));
+        local_16 = !((last < before));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e27 = local_15;
+    bool _e27 = local_16;
     if (_e27) {
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_1 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_4 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if ((q_1 < 1.0)) {
+    if ((q_4 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_1) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_4) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_1) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_4) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_1) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_4) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_1) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_4) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_1) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_4) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_1) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_4) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_1) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_4) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (true ? ((_e126 * q_1) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (true ? ((_e126 * q_4) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
         float _e137 = aliasing;
-        aliasing = (true ? ((_e137 * q_1) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
+        aliasing = (true ? ((_e137 * q_4) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
         float _e144 = aliasing;
         float _e148 = aliasing;
-        aliasing = (true ? ((_e148 * q_1) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
+        aliasing = (true ? ((_e148 * q_4) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
         float _e155 = aliasing;
         float _e159 = aliasing;
-        aliasing = (true ? ((_e159 * q_1) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
+        aliasing = (true ? ((_e159 * q_4) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
         float _e166 = aliasing;
         float _e170 = aliasing;
-        aliasing = (false ? ((_e170 * q_1) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
+        aliasing = (false ? ((_e170 * q_4) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
         float _e177 = aliasing;
-        return min(((_e177 + (q_1 * truncation)) / m_1[0]), 1.0);
+        return min(((_e177 + (q_4 * truncation)) / m_1[0]), 1.0);
     }
     float _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -2197,17 +2229,17 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
     c_max = max(_e230, abs(c_2[11]));
     float _e236 = c_max;
     uint power_1 = ((_e236 > (1.2 * abs(c_2[0]))) ? 2u : 3u);
-    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_10) {
-            uint _e252 = i_6;
-            i_6 = (_e252 + 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e252 = i_5;
+            i_5 = (_e252 + 1u);
         }
-        loop_init_10 = false;
-        uint _e247 = i_6;
+        loop_init_8 = false;
+        uint _e247 = i_5;
         if ((_e247 < power_1)) {
         } else {
             break;
@@ -2242,8 +2274,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_23 = (half_5.big_h * _e13);
-    return ((x_23 > 0.0) ? exp(-(x_23)) : 1.0);
+    float x_25 = (half_5.big_h * _e13);
+    return ((x_25 > 0.0) ? exp(-(x_25)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -2282,7 +2314,7 @@ float airlight_singular_floor(float3 heights, float3 steps_1, float c_3, float r
     return (1.0 / _e34);
 }
 
-AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float sigma_4, AirlightHalf half_6, float a_5, float b_4, float3 heights_1, float3 steps_2)
+AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float sigma_4, AirlightHalf half_6, float a_5, float b_4, float3 heights_1, float3 steps_2)
 {
     float r_2 = (float)0;
     float vc = (float)0;
@@ -2290,8 +2322,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float s
     float f_max_1 = 0.0;
     float over_max = 0.0;
     float g_avg = 0.0;
-    uint i_7 = 0u;
-    float sum_4 = 0.0;
+    uint i_6 = 0u;
+    float sum_3 = 0.0;
 
     const float2 _e8[6] = airlight_gauss_rule();
     r_2 = ((b_4 - a_5) * 0.5);
@@ -2304,17 +2336,17 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float s
     }
     const float _e26[12] = airlight_zero_terms();
     samples = _e26;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_11 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e74 = i_7;
-            i_7 = (_e74 + 1u);
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e74 = i_6;
+            i_6 = (_e74 + 1u);
         }
-        loop_init_11 = false;
-        uint _e36 = i_7;
+        loop_init_9 = false;
+        uint _e36 = i_6;
         if ((_e36 < AIRLIGHT_TERMS)) {
         } else {
             break;
@@ -2322,21 +2354,21 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float s
         {
             float _e39 = vc;
             float _e40 = r_2;
-            uint _e41 = i_7;
+            uint _e41 = i_6;
             const float _e42 = airlight_node(_e8, _e41);
             float v_6 = (_e39 + (_e40 * _e42));
-            const float2 _e48 = airlight_integrand_over(s_5, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
+            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
             float fy = _e48.x;
             float over = _e48.y;
-            uint _e51 = i_7;
+            uint _e51 = i_6;
             samples[min(uint(_e51), 11u)] = (fy * over);
             float _e54 = f_max_1;
             f_max_1 = max(_e54, abs(fy));
             float _e57 = over_max;
             over_max = max(_e57, over);
             float _e59 = g_avg;
-            uint _e60 = i_7;
-            uint _e67 = i_7;
+            uint _e60 = i_6;
+            uint _e67 = i_6;
             float _e69 = samples[min(uint(_e67), 11u)];
             g_avg = (_e59 + ((_e8[min(uint(airlight_naga_div(_e60, 2u)), 5u)].y * 0.5) * abs(_e69)));
         }
@@ -2345,58 +2377,58 @@ AirlightPanel airlight_v_panel(AirlightScene s_5, AirlightCanonical g_8, float s
     const float _e77[12] = airlight_legendre(_e76);
     float _e79 = r_2;
     const float _e81[12] = airlight_exp_legendre_moments((half_6.big_h * _e79));
-    float _e84 = sum_4;
-    sum_4 = (_e84 + (_e77[0] * _e81[0]));
-    float _e89 = sum_4;
-    sum_4 = (_e89 + (_e77[1] * _e81[1]));
-    float _e94 = sum_4;
-    sum_4 = (_e94 + (_e77[2] * _e81[2]));
-    float _e99 = sum_4;
-    sum_4 = (_e99 + (_e77[3] * _e81[3]));
-    float _e104 = sum_4;
-    sum_4 = (_e104 + (_e77[4] * _e81[4]));
-    float _e109 = sum_4;
-    sum_4 = (_e109 + (_e77[5] * _e81[5]));
-    float _e114 = sum_4;
-    sum_4 = (_e114 + (_e77[6] * _e81[6]));
-    float _e119 = sum_4;
-    sum_4 = (_e119 + (_e77[7] * _e81[7]));
-    float _e124 = sum_4;
-    sum_4 = (_e124 + (_e77[8] * _e81[8]));
-    float _e129 = sum_4;
-    sum_4 = (_e129 + (_e77[9] * _e81[9]));
-    float _e134 = sum_4;
-    sum_4 = (_e134 + (_e77[10] * _e81[10]));
-    float _e139 = sum_4;
-    sum_4 = (_e139 + (_e77[11] * _e81[11]));
+    float _e84 = sum_3;
+    sum_3 = (_e84 + (_e77[0] * _e81[0]));
+    float _e89 = sum_3;
+    sum_3 = (_e89 + (_e77[1] * _e81[1]));
+    float _e94 = sum_3;
+    sum_3 = (_e94 + (_e77[2] * _e81[2]));
+    float _e99 = sum_3;
+    sum_3 = (_e99 + (_e77[3] * _e81[3]));
+    float _e104 = sum_3;
+    sum_3 = (_e104 + (_e77[4] * _e81[4]));
+    float _e109 = sum_3;
+    sum_3 = (_e109 + (_e77[5] * _e81[5]));
+    float _e114 = sum_3;
+    sum_3 = (_e114 + (_e77[6] * _e81[6]));
+    float _e119 = sum_3;
+    sum_3 = (_e119 + (_e77[7] * _e81[7]));
+    float _e124 = sum_3;
+    sum_3 = (_e124 + (_e77[8] * _e81[8]));
+    float _e129 = sum_3;
+    sum_3 = (_e129 + (_e77[9] * _e81[9]));
+    float _e134 = sum_3;
+    sum_3 = (_e134 + (_e77[10] * _e81[10]));
+    float _e139 = sum_3;
+    sum_3 = (_e139 + (_e77[11] * _e81[11]));
     const float _e144 = airlight_factor(half_6, a_5, b_4);
     float _e145 = r_2;
-    float w_1 = (_e144 * _e145);
-    float mass_5 = (w_1 * _e81[0]);
+    float w_2 = (_e144 * _e145);
+    float mass_5 = (w_2 * _e81[0]);
     float _e149 = vc;
     float _e150 = r_2;
     const float _e152 = airlight_singular_floor(heights_1, steps_2, _e149, _e150, false);
     const float _e153 = airlight_tail_estimate(_e77);
     const float _e155 = airlight_error_factor(_e77, _e81, _e152);
     float error_1 = ((mass_5 * _e153) * _e155);
-    float _e157 = sum_4;
+    float _e157 = sum_3;
     float _e159 = g_avg;
     const float _e160 = airlight_transform_noise(mass_5, _e159);
     float _e161 = over_max;
     float _e163 = f_max_1;
-    const AirlightPanel _e164 = airlight_panel_result((w_1 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
+    const AirlightPanel _e164 = airlight_panel_result((w_2 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
     const AirlightPanel airlightpanel_1 = _e164;
     return airlightpanel_1;
 }
 
-AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float sigma_5, AirlightHalf half_7, float a_6, float b_5, float3 heights_2, float3 steps_3)
+AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float sigma_5, AirlightHalf half_7, float a_6, float b_5, float3 heights_2, float3 steps_3)
 {
     float samples_1[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_2 = 0.0;
     float over_max_1 = 0.0;
     float mass_1 = 0.0;
     float p_avg = 0.0;
-    uint i_8 = 0u;
+    uint i_7 = 0u;
     float m_2[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     const float2 _e8[6] = airlight_gauss_rule();
@@ -2404,40 +2436,40 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
     float yc_1 = (a_6 + r_9);
     const float _e13[12] = airlight_zero_terms();
     samples_1 = _e13;
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e79 = i_8;
-            i_8 = (_e79 + 1u);
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e79 = i_7;
+            i_7 = (_e79 + 1u);
         }
-        loop_init_12 = false;
-        uint _e25 = i_8;
+        loop_init_10 = false;
+        uint _e25 = i_7;
         if ((_e25 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e28 = i_8;
+            uint _e28 = i_7;
             const float _e29 = airlight_node(_e8, _e28);
             float y_7 = (yc_1 + (r_9 * _e29));
-            float weight = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
-            const float _e41 = airlight_integrand(s_6, g_9, sigma_5, y_7);
+            float weight_1 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
+            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_7);
             float over_1 = (1.0 / (1.0 + (y_7 * y_7)));
-            uint _e47 = i_8;
-            samples_1[min(uint(_e47), 11u)] = ((_e41 * over_1) * weight);
+            uint _e47 = i_7;
+            samples_1[min(uint(_e47), 11u)] = ((_e41 * over_1) * weight_1);
             float _e51 = f_max_2;
             f_max_2 = max(_e51, abs(_e41));
             float _e54 = over_max_1;
             over_max_1 = max(_e54, over_1);
             float _e56 = mass_1;
-            uint _e57 = i_8;
-            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 5u)].y * weight));
+            uint _e57 = i_7;
+            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 5u)].y * weight_1));
             float _e64 = p_avg;
-            uint _e65 = i_8;
-            uint _e72 = i_8;
+            uint _e65 = i_7;
+            uint _e72 = i_7;
             float _e74 = samples_1[min(uint(_e72), 11u)];
             p_avg = (_e64 + ((_e8[min(uint(airlight_naga_div(_e65, 2u)), 5u)].y * 0.5) * abs(_e74)));
         }
@@ -2445,7 +2477,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
     float _e81[12] = samples_1;
     const float _e82[12] = airlight_legendre(_e81);
     const float _e83 = airlight_factor(half_7, a_6, b_5);
-    float w_2 = (_e83 * r_9);
+    float w_3 = (_e83 * r_9);
     const float _e85[12] = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2.0;
@@ -2453,13 +2485,13 @@ AirlightPanel airlight_y_panel(AirlightScene s_6, AirlightCanonical g_9, float s
     const float _e93 = airlight_tail_estimate(_e82);
     float _e95[12] = m_2;
     const float _e96 = airlight_error_factor(_e82, _e95, _e90);
-    float error_2 = (((w_2 * 2.0) * _e93) * _e96);
+    float error_2 = (((w_3 * 2.0) * _e93) * _e96);
     float _e104 = p_avg;
-    const float _e105 = airlight_transform_noise((w_2 * 2.0), _e104);
+    const float _e105 = airlight_transform_noise((w_3 * 2.0), _e104);
     float _e106 = mass_1;
     float _e108 = over_max_1;
     float _e110 = f_max_2;
-    const AirlightPanel _e111 = airlight_panel_result(((w_2 * 2.0) * _e82[0]), error_2, _e105, ((w_2 * _e106) * _e108), _e110);
+    const AirlightPanel _e111 = airlight_panel_result(((w_3 * 2.0) * _e82[0]), error_2, _e105, ((w_3 * _e106) * _e108), _e110);
     const AirlightPanel airlightpanel_2 = _e111;
     return airlightpanel_2;
 }
@@ -2559,19 +2591,19 @@ airlight_ret_airlight_legendre_to_monomial airlight_legendre_to_monomial(float c
     return _e255;
 }
 
-AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, float sigma_6, AirlightHalf half_8, float a_7, float b_6)
+AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, float sigma_6, AirlightHalf half_8, float a_7, float b_6)
 {
     float samples_2[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float f_max_3 = 0.0;
     float g_avg_1 = 0.0;
-    uint i_9 = 0u;
+    uint i_8 = 0u;
     float q[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float s_a[14] = airlight_Constructarray14_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
     float decay = 0.0;
     float ab = 0.0;
     float mass_2 = (float)0;
-    float sum_5 = (float)0;
+    float sum_4 = (float)0;
     float ratio_1 = (float)0;
     float l_prev = 0.0;
     float l_cur = 1.0;
@@ -2583,33 +2615,33 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     float yc_2 = (a_7 + r_10);
     const float _e11[12] = airlight_zero_terms();
     samples_2 = _e11;
-    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-    bool loop_init_13 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_13) {
-            uint _e51 = i_9;
-            i_9 = (_e51 + 1u);
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e51 = i_8;
+            i_8 = (_e51 + 1u);
         }
-        loop_init_13 = false;
-        uint _e19 = i_9;
+        loop_init_11 = false;
+        uint _e19 = i_8;
         if ((_e19 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e22 = i_9;
+            uint _e22 = i_8;
             const float _e23 = airlight_node(_e6, _e22);
             float y_8 = (yc_2 + (r_10 * _e23));
-            const float _e26 = airlight_integrand(s_7, g_10, sigma_6, y_8);
-            uint _e27 = i_9;
+            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_8);
+            uint _e27 = i_8;
             samples_2[min(uint(_e27), 11u)] = (_e26 / (1.0 + (y_8 * y_8)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
-            uint _e37 = i_9;
-            uint _e44 = i_9;
+            uint _e37 = i_8;
+            uint _e44 = i_8;
             float _e46 = samples_2[min(uint(_e44), 11u)];
             g_avg_1 = (_e36 + ((_e6[min(uint(airlight_naga_div(_e37, 2u)), 5u)].y * 0.5) * abs(_e46)));
         }
@@ -2769,11 +2801,11 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     const float _e615[14] = airlight_en_scaled((big_h_6 / b_6));
     if ((a_7 > 0.0)) {
         const bool _e637 = airlight_is_finite((big_h_6 / a_7));
-        local_16 = _e637;
+        local_17 = _e637;
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    bool far_1 = local_16;
+    bool far_1 = local_17;
     if (far_1) {
         decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
@@ -2795,129 +2827,129 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     float mass_u = ((b_6 * _e615[1]) - ((_e670 > 0.0) ? ((_e665 * a_7) * _e668) : 0.0));
     mass_2 = mass_u;
     float _e678 = q[0];
-    sum_5 = (_e678 * mass_u);
+    sum_4 = (_e678 * mass_u);
     float _e681 = ab;
     ratio_1 = _e681;
-    float _e683 = sum_5;
+    float _e683 = sum_4;
     float _e685 = q[1];
     float _e688 = decay;
     float _e690 = ratio_1;
     float _e693 = s_a[2];
     float _e695 = decay;
-    sum_5 = (_e683 + (_e685 * ((b_6 * _e615[2]) - ((_e695 > 0.0) ? (((_e688 * a_7) * _e690) * _e693) : 0.0))));
+    sum_4 = (_e683 + (_e685 * ((b_6 * _e615[2]) - ((_e695 > 0.0) ? (((_e688 * a_7) * _e690) * _e693) : 0.0))));
     float _e703 = ratio_1;
     float _e704 = ab;
     ratio_1 = (_e703 * _e704);
-    float _e706 = sum_5;
+    float _e706 = sum_4;
     float _e708 = q[2];
     float _e711 = decay;
     float _e713 = ratio_1;
     float _e716 = s_a[3];
     float _e718 = decay;
-    sum_5 = (_e706 + (_e708 * ((b_6 * _e615[3]) - ((_e718 > 0.0) ? (((_e711 * a_7) * _e713) * _e716) : 0.0))));
+    sum_4 = (_e706 + (_e708 * ((b_6 * _e615[3]) - ((_e718 > 0.0) ? (((_e711 * a_7) * _e713) * _e716) : 0.0))));
     float _e726 = ratio_1;
     float _e727 = ab;
     ratio_1 = (_e726 * _e727);
-    float _e729 = sum_5;
+    float _e729 = sum_4;
     float _e731 = q[3];
     float _e734 = decay;
     float _e736 = ratio_1;
     float _e739 = s_a[4];
     float _e741 = decay;
-    sum_5 = (_e729 + (_e731 * ((b_6 * _e615[4]) - ((_e741 > 0.0) ? (((_e734 * a_7) * _e736) * _e739) : 0.0))));
+    sum_4 = (_e729 + (_e731 * ((b_6 * _e615[4]) - ((_e741 > 0.0) ? (((_e734 * a_7) * _e736) * _e739) : 0.0))));
     float _e749 = ratio_1;
     float _e750 = ab;
     ratio_1 = (_e749 * _e750);
-    float _e752 = sum_5;
+    float _e752 = sum_4;
     float _e754 = q[4];
     float _e757 = decay;
     float _e759 = ratio_1;
     float _e762 = s_a[5];
     float _e764 = decay;
-    sum_5 = (_e752 + (_e754 * ((b_6 * _e615[5]) - ((_e764 > 0.0) ? (((_e757 * a_7) * _e759) * _e762) : 0.0))));
+    sum_4 = (_e752 + (_e754 * ((b_6 * _e615[5]) - ((_e764 > 0.0) ? (((_e757 * a_7) * _e759) * _e762) : 0.0))));
     float _e772 = ratio_1;
     float _e773 = ab;
     ratio_1 = (_e772 * _e773);
-    float _e775 = sum_5;
+    float _e775 = sum_4;
     float _e777 = q[5];
     float _e780 = decay;
     float _e782 = ratio_1;
     float _e785 = s_a[6];
     float _e787 = decay;
-    sum_5 = (_e775 + (_e777 * ((b_6 * _e615[6]) - ((_e787 > 0.0) ? (((_e780 * a_7) * _e782) * _e785) : 0.0))));
+    sum_4 = (_e775 + (_e777 * ((b_6 * _e615[6]) - ((_e787 > 0.0) ? (((_e780 * a_7) * _e782) * _e785) : 0.0))));
     float _e795 = ratio_1;
     float _e796 = ab;
     ratio_1 = (_e795 * _e796);
-    float _e798 = sum_5;
+    float _e798 = sum_4;
     float _e800 = q[6];
     float _e803 = decay;
     float _e805 = ratio_1;
     float _e808 = s_a[7];
     float _e810 = decay;
-    sum_5 = (_e798 + (_e800 * ((b_6 * _e615[7]) - ((_e810 > 0.0) ? (((_e803 * a_7) * _e805) * _e808) : 0.0))));
+    sum_4 = (_e798 + (_e800 * ((b_6 * _e615[7]) - ((_e810 > 0.0) ? (((_e803 * a_7) * _e805) * _e808) : 0.0))));
     float _e818 = ratio_1;
     float _e819 = ab;
     ratio_1 = (_e818 * _e819);
-    float _e821 = sum_5;
+    float _e821 = sum_4;
     float _e823 = q[7];
     float _e826 = decay;
     float _e828 = ratio_1;
     float _e831 = s_a[8];
     float _e833 = decay;
-    sum_5 = (_e821 + (_e823 * ((b_6 * _e615[8]) - ((_e833 > 0.0) ? (((_e826 * a_7) * _e828) * _e831) : 0.0))));
+    sum_4 = (_e821 + (_e823 * ((b_6 * _e615[8]) - ((_e833 > 0.0) ? (((_e826 * a_7) * _e828) * _e831) : 0.0))));
     float _e841 = ratio_1;
     float _e842 = ab;
     ratio_1 = (_e841 * _e842);
-    float _e844 = sum_5;
+    float _e844 = sum_4;
     float _e846 = q[8];
     float _e849 = decay;
     float _e851 = ratio_1;
     float _e854 = s_a[9];
     float _e856 = decay;
-    sum_5 = (_e844 + (_e846 * ((b_6 * _e615[9]) - ((_e856 > 0.0) ? (((_e849 * a_7) * _e851) * _e854) : 0.0))));
+    sum_4 = (_e844 + (_e846 * ((b_6 * _e615[9]) - ((_e856 > 0.0) ? (((_e849 * a_7) * _e851) * _e854) : 0.0))));
     float _e864 = ratio_1;
     float _e865 = ab;
     ratio_1 = (_e864 * _e865);
-    float _e867 = sum_5;
+    float _e867 = sum_4;
     float _e869 = q[9];
     float _e872 = decay;
     float _e874 = ratio_1;
     float _e877 = s_a[10];
     float _e879 = decay;
-    sum_5 = (_e867 + (_e869 * ((b_6 * _e615[10]) - ((_e879 > 0.0) ? (((_e872 * a_7) * _e874) * _e877) : 0.0))));
+    sum_4 = (_e867 + (_e869 * ((b_6 * _e615[10]) - ((_e879 > 0.0) ? (((_e872 * a_7) * _e874) * _e877) : 0.0))));
     float _e887 = ratio_1;
     float _e888 = ab;
     ratio_1 = (_e887 * _e888);
-    float _e890 = sum_5;
+    float _e890 = sum_4;
     float _e892 = q[10];
     float _e895 = decay;
     float _e897 = ratio_1;
     float _e900 = s_a[11];
     float _e902 = decay;
-    sum_5 = (_e890 + (_e892 * ((b_6 * _e615[11]) - ((_e902 > 0.0) ? (((_e895 * a_7) * _e897) * _e900) : 0.0))));
+    sum_4 = (_e890 + (_e892 * ((b_6 * _e615[11]) - ((_e902 > 0.0) ? (((_e895 * a_7) * _e897) * _e900) : 0.0))));
     float _e910 = ratio_1;
     float _e911 = ab;
     ratio_1 = (_e910 * _e911);
-    float _e913 = sum_5;
+    float _e913 = sum_4;
     float _e915 = q[11];
     float _e918 = decay;
     float _e920 = ratio_1;
     float _e923 = s_a[12];
     float _e925 = decay;
-    sum_5 = (_e913 + (_e915 * ((b_6 * _e615[12]) - ((_e925 > 0.0) ? (((_e918 * a_7) * _e920) * _e923) : 0.0))));
+    sum_4 = (_e913 + (_e915 * ((b_6 * _e615[12]) - ((_e925 > 0.0) ? (((_e918 * a_7) * _e920) * _e923) : 0.0))));
     float _e933 = ratio_1;
     float _e934 = ab;
     ratio_1 = (_e933 * _e934);
     const float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_24 = (abs(alpha) + abs(beta));
+    float x_26 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_24) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_26) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2927,7 +2959,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_24) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_26) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2937,7 +2969,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_24) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_26) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2947,7 +2979,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_24) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_26) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2957,7 +2989,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_24) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_26) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2967,7 +2999,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_24) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_26) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2977,7 +3009,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_24) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_26) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2987,7 +3019,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_24) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_26) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2997,7 +3029,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_24) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_26) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -3007,7 +3039,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_24) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_26) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -3017,7 +3049,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_24) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_26) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -3027,7 +3059,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_24) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_26) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -3037,7 +3069,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     float _e1170 = mass_2;
     float _e1172 = spread;
     float error_3 = ((_e1166 * _e1167) + ((AIRLIGHT_FLT_EPS * _e1170) * _e1172));
-    float _e1175 = sum_5;
+    float _e1175 = sum_4;
     float _e1177 = mass_2;
     float _e1178 = g_avg_1;
     const float _e1179 = airlight_transform_noise(_e1177, _e1178);
@@ -3048,34 +3080,34 @@ AirlightPanel airlight_tail_panel(AirlightScene s_7, AirlightCanonical g_10, flo
     return airlightpanel_3;
 }
 
-AirlightPanel airlight_panel(AirlightScene s_8, AirlightCanonical g_11, float sigma_7, AirlightHalf half_9, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
+AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float sigma_7, AirlightHalf half_9, float a_8, float b_7, float3 heights_y, float3 heights_v, float3 steps_4)
 {
-    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     if (half_9.second) {
-        local_17 = (a_8 <= (b_7 * 0.25));
+        local_18 = (a_8 <= (b_7 * 0.25));
     } else {
-        local_17 = false;
+        local_18 = false;
     }
-    bool _e16 = local_17;
+    bool _e16 = local_18;
     if (_e16) {
-        const AirlightPanel _e17 = airlight_tail_panel(s_8, g_11, sigma_7, half_9, a_8, b_7);
+        const AirlightPanel _e17 = airlight_tail_panel(s_9, g_11, sigma_7, half_9, a_8, b_7);
         const AirlightPanel airlightpanel_4 = _e17;
         return airlightpanel_4;
     }
     if (half_9.second) {
-        local_18 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_19 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e29 = local_18;
+    bool _e29 = local_19;
     if (_e29) {
-        const AirlightPanel _e30 = airlight_y_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
+        const AirlightPanel _e30 = airlight_y_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         const AirlightPanel airlightpanel_5 = _e30;
         return airlightpanel_5;
     }
-    const AirlightPanel _e31 = airlight_v_panel(s_8, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
+    const AirlightPanel _e31 = airlight_v_panel(s_9, g_11, sigma_7, half_9, a_8, b_7, heights_v, steps_4);
     const AirlightPanel airlightpanel_6 = _e31;
     return airlightpanel_6;
 }
@@ -3092,7 +3124,7 @@ airlight_ret_Constructarray8_float_ airlight_Constructarray8_float_(float arg0, 
     return ret;
 }
 
-float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4)
+float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4)
 {
     float4 list[8] = airlight_Constructarray8_float4_((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     float mass_over_1[8] = airlight_Constructarray8_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
@@ -3110,31 +3142,31 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
     float errors = (float)0;
     float mass_3 = (float)0;
     uint worst = (uint)0;
-    uint i_10 = (uint)0;
-    bool local_19 = (bool)0;
+    uint i_9 = (uint)0;
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
     float total_1 = 0.0;
-    uint i_11 = 0u;
+    uint i_10 = 0u;
 
     if (!((hi > lo))) {
         return 0.0;
     }
-    const float3 _e10 = airlight_singular_heights(s_9, sigma_8);
+    const float3 _e10 = airlight_singular_heights(s_10, sigma_8);
     float3 heights_v_1 = (half_10.second ? ((1.0).xxx / _e10) : _e10);
-    const float3 _e16 = airlight_singular_steps(s_9);
+    const float3 _e16 = airlight_singular_steps(s_10);
     a_9 = lo;
     b_8 = hi;
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_14) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_12) {
             uint _e213 = step_;
             step_ = (_e213 + 1u);
         }
-        loop_init_14 = false;
+        loop_init_12 = false;
         uint _e61 = step_;
         if ((_e61 < AIRLIGHT_MAX_PANELS)) {
         } else {
@@ -3143,7 +3175,7 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
         {
             float _e64 = a_9;
             float _e65 = b_8;
-            const AirlightPanel _e66 = airlight_panel(s_9, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
+            const AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
             float _e67 = f_max_4;
             f_max_4 = max(_e67, _e66.f_max);
             uint _e70 = slot;
@@ -3172,16 +3204,16 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
                 continue;
             }
             retire = 0u;
-            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-            bool loop_init_15 = true;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_15) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_13) {
                     uint _e210 = retire;
                     retire = (_e210 + 1u);
                 }
-                loop_init_15 = false;
+                loop_init_13 = false;
                 uint _e96 = retire;
                 if ((_e96 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
@@ -3192,46 +3224,46 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
                     errors = 0.0;
                     mass_3 = 0.0;
                     worst = 0u;
-                    i_10 = 0u;
-                    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_16 = true;
+                    i_9 = 0u;
+                    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_14 = true;
                     while(true) {
-                        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-                        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                        if (!loop_init_16) {
-                            uint _e143 = i_10;
-                            i_10 = (_e143 + 1u);
+                        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                        if (!loop_init_14) {
+                            uint _e143 = i_9;
+                            i_9 = (_e143 + 1u);
                         }
-                        loop_init_16 = false;
-                        uint _e109 = i_10;
+                        loop_init_14 = false;
+                        uint _e109 = i_9;
                         if ((_e109 < AIRLIGHT_PANEL_LIST)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e112 = i_10;
+                            uint _e112 = i_9;
                             uint _e113 = count;
                             if ((_e112 >= _e113)) {
                                 break;
                             }
                             float _e115 = total;
-                            uint _e116 = i_10;
+                            uint _e116 = i_9;
                             float _e119 = list[min(uint(_e116), 7u)].z;
                             total = (_e115 + _e119);
                             float _e121 = errors;
-                            uint _e122 = i_10;
+                            uint _e122 = i_9;
                             float _e125 = list[min(uint(_e122), 7u)].w;
                             errors = (_e121 + _e125);
                             float _e127 = mass_3;
-                            uint _e128 = i_10;
+                            uint _e128 = i_9;
                             float _e130 = mass_over_1[min(uint(_e128), 7u)];
                             mass_3 = (_e127 + _e130);
-                            uint _e132 = i_10;
+                            uint _e132 = i_9;
                             float _e135 = list[min(uint(_e132), 7u)].w;
                             uint _e136 = worst;
                             float _e139 = list[min(uint(_e136), 7u)].w;
                             if ((_e135 > _e139)) {
-                                uint _e141 = i_10;
+                                uint _e141 = i_9;
                                 worst = _e141;
                             }
                         }
@@ -3244,25 +3276,25 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
                     if (!((_e155 <= goal))) {
                         uint _e160 = worst;
                         float _e163 = list[min(uint(_e160), 7u)].w;
-                        local_19 = !((_e163 > 0.0));
-                    } else {
-                        local_19 = true;
-                    }
-                    bool _e168 = local_19;
-                    if (!(_e168)) {
-                        uint _e172 = budget;
-                        local_20 = (_e172 < 2u);
+                        local_20 = !((_e163 > 0.0));
                     } else {
                         local_20 = true;
                     }
-                    bool _e176 = local_20;
-                    if (!(_e176)) {
-                        uint _e180 = count;
-                        local_21 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    bool _e168 = local_20;
+                    if (!(_e168)) {
+                        uint _e172 = budget;
+                        local_21 = (_e172 < 2u);
                     } else {
                         local_21 = true;
                     }
-                    bool _e184 = local_21;
+                    bool _e176 = local_21;
+                    if (!(_e176)) {
+                        uint _e180 = count;
+                        local_22 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_22 = true;
+                    }
+                    bool _e184 = local_22;
                     if (_e184) {
                         float _e185 = total;
                         return _e185;
@@ -3289,29 +3321,29 @@ float airlight_integrate_piece(AirlightScene s_9, AirlightCanonical g_12, float 
             }
         }
     }
-    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e232 = i_11;
-            i_11 = (_e232 + 1u);
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e232 = i_10;
+            i_10 = (_e232 + 1u);
         }
-        loop_init_17 = false;
-        uint _e219 = i_11;
+        loop_init_15 = false;
+        uint _e219 = i_10;
         if ((_e219 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e222 = i_11;
+            uint _e222 = i_10;
             uint _e223 = count;
             if ((_e222 >= _e223)) {
                 break;
             }
             float _e225 = total_1;
-            uint _e226 = i_11;
+            uint _e226 = i_10;
             float _e229 = list[min(uint(_e226), 7u)].z;
             total_1 = (_e225 + _e229);
         }
@@ -3347,14 +3379,14 @@ float airlight_angle_y(float u)
 
 float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1)
 {
-    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     if (!(!((gap_1 > 0.0)))) {
-        local_22 = (gap_1 >= AIRLIGHT_FLT_MAX);
+        local_23 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e14 = local_22;
+    bool _e14 = local_23;
     if (_e14) {
         return 0.0;
     }
@@ -3367,8 +3399,8 @@ float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float
 float airlight_cut_length(float big_h_1, float v_s)
 {
     float inv_h = (1.0 / big_h_1);
-    float w_3 = (v_s + inv_h);
-    float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
+    float w_4 = (v_s + inv_h);
+    float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
     float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
     return (e_1 * inv_h);
 }
@@ -3386,9 +3418,9 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_9
     return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_9) + log(abs(j_1)))));
 }
 
-float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
+float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
 {
-    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
     float psi1_ = 0.0;
@@ -3401,12 +3433,12 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     float mass_4 = 0.0;
     float magnitude = 0.0;
     float f_max_5 = 0.0;
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     float m_3[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
     float x_10 = 0.0;
 
-    if ((s_10.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+    if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return float2(0.0, 0.0);
     }
     float h_3 = g_13.h;
@@ -3414,12 +3446,12 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     float u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
     if (!(g_13.t_hi_infinite)) {
         const bool _e21 = airlight_is_finite(u1_);
-        local_23 = _e21;
+        local_24 = _e21;
     } else {
-        local_23 = false;
+        local_24 = false;
     }
-    bool u1_finite = local_23;
-    float big_h_7 = (s_10.sigma_t * h_3);
+    bool u1_finite = local_24;
+    float big_h_7 = (s_11.sigma_t * h_3);
     const float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
         const float _e29 = airlight_angle_y(u1_);
@@ -3460,8 +3492,8 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     float _e85 = y_cut;
     float y_end = min(_e84, _e85);
     float y_e = min((_e26 + (1.0 / big_h_7)), y_end);
-    if ((s_10.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        degree_1 = s_10.light_param_a;
+    if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        degree_1 = s_11.light_param_a;
     }
     float _e97 = degree_1;
     lambda_1 = (sqrt(_e97) * hw_2);
@@ -3474,10 +3506,10 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
         return float2(0.0, 0.0);
     }
-    const float3 _e126 = airlight_singular_steps(s_10);
+    const float3 _e126 = airlight_singular_steps(s_11);
     float step_3 = _e126.y;
-    float p0_4 = s_10.phase_param_a;
-    switch(s_10.phase_kind) {
+    float p0_4 = s_11.phase_param_a;
+    switch(s_11.phase_kind) {
         case 2u:
         case 4u: {
             const float _e132 = airlight_hg_gap(p0_4);
@@ -3492,7 +3524,7 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
             break;
         }
         case 5u: {
-            float p1_3 = s_10.phase_param_b;
+            float p1_3 = s_11.phase_param_b;
             const float _e144 = airlight_hg_gap(p0_4);
             const float _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
             const float _e146 = airlight_hg_gap(p1_3);
@@ -3516,50 +3548,50 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     const float2 _e169[6] = airlight_gauss_rule();
     const float _e170[12] = airlight_zero_terms();
     samples_3 = _e170;
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_18) {
-            uint _e263 = i_12;
-            i_12 = (_e263 + 1u);
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e263 = i_11;
+            i_11 = (_e263 + 1u);
         }
-        loop_init_18 = false;
-        uint _e182 = i_12;
+        loop_init_16 = false;
+        uint _e182 = i_11;
         if ((_e182 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e185 = i_12;
+            uint _e185 = i_11;
             const float _e186 = airlight_node(_e169, _e185);
             float lower = (_e38 + (hw_2 * (1.0 + _e186)));
             bool below_1 = (lower <= 1.5707964);
             float _e193 = psi1_;
             const float2 _e199 = airlight_cos_sin((below_1 ? lower : (_e193 + (hw_2 * (1.0 - _e186)))));
-            float cs = _e199.y;
+            float cs_1 = _e199.y;
             float sn = (below_1 ? -(_e199.x) : _e199.x);
             float near_pole = (1.0 + _e199.x);
-            float far_pole = ((cs * cs) / near_pole);
+            float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_9 = (below_1 ? (cs / near_pole) : (near_pole / cs));
-            float weight_1 = ((cs > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
-            const float _e233 = airlight_light(s_10.light_kind, s_10.light_param_a, s_10.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs)));
-            const float _e239 = airlight_phase(s_10.phase_kind, s_10.phase_param_a, s_10.phase_param_b, s_10.phase_param_c, -(sn), one_plus, one_minus);
+            float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
+            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            const float _e233 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
+            const float _e239 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e233 * _e239);
-            float gw = (weight_1 * f_2);
-            uint _e242 = i_12;
+            float gw = (weight_2 * f_2);
+            uint _e242 = i_11;
             samples_3[min(uint(_e242), 11u)] = gw;
-            uint _e244 = i_12;
-            float w_4 = _e169[min(uint(airlight_naga_div(_e244, 2u)), 5u)].y;
+            uint _e244 = i_11;
+            float w_5 = _e169[min(uint(airlight_naga_div(_e244, 2u)), 5u)].y;
             float _e249 = value_1;
-            value_1 = (_e249 + (w_4 * gw));
+            value_1 = (_e249 + (w_5 * gw));
             float _e252 = mass_4;
-            mass_4 = (_e252 + (w_4 * weight_1));
+            mass_4 = (_e252 + (w_5 * weight_2));
             float _e255 = magnitude;
-            magnitude = (_e255 + (w_4 * abs(gw)));
+            magnitude = (_e255 + (w_5 * abs(gw)));
             float _e259 = f_max_5;
             f_max_5 = max(_e259, abs(f_2));
         }
@@ -3581,42 +3613,42 @@ float2 airlight_angle_route(AirlightScene s_10, AirlightCanonical g_13)
     float _e289 = mass_4;
     float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if (!((error_4 <= accepted))) {
-        local_24 = (error_4 <= _e282);
+        local_25 = (error_4 <= _e282);
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    bool _e299 = local_24;
+    bool _e299 = local_25;
     if (!(_e299)) {
         return float2(0.0, 0.0);
     }
-    if ((s_10.sigma_t > 0.0)) {
+    if ((s_11.sigma_t > 0.0)) {
         const float _e310 = airlight_hypot_one(u0_);
-        x_10 = (s_10.sigma_t * (h_3 * _e310));
+        x_10 = (s_11.sigma_t * (h_3 * _e310));
     }
     float _e315 = x_10;
     float _e316 = value_1;
-    const float _e320 = airlight_weighted(s_10.sigma_s, s_10.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5));
+    const float _e320 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5));
     return float2(1.0, _e320);
 }
 
-float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
+float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3)
 {
-    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
 
-    float a0_ = (k_4 + (sigma_9 * d_el));
+    float a0_ = (k_3 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_4 - (sigma_9 * d_el));
+    float c0_ = (k_3 - (sigma_9 * d_el));
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         const bool _e21 = airlight_is_finite(scale_1);
-        local_25 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_25 = true;
+        local_26 = true;
     }
-    bool _e24 = local_25;
+    bool _e24 = local_26;
     if (_e24) {
         return float2(-1.0, -1.0);
     }
@@ -3631,12 +3663,12 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_2 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
-    if ((q_2 != 0.0)) {
-        r1_ = (c_9 / q_2);
+    float q_5 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
+    if ((q_5 != 0.0)) {
+        r1_ = (c_9 / q_5);
     }
     if ((a_23 != 0.0)) {
-        r2_2 = (q_2 / a_23);
+        r2_2 = (q_5 / a_23);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3651,13 +3683,13 @@ float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_4)
 
 bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
 {
-    bool local_26 = (bool)0;
     bool local_27 = (bool)0;
-    float y1_1 = (float)0;
     bool local_28 = (bool)0;
+    float y1_1 = (float)0;
     bool local_29 = (bool)0;
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
     const float _e9 = airlight_cosine(g_15, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
@@ -3665,21 +3697,21 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     }
     if ((lo_1 == half_11.y_lo)) {
         const float _e17 = airlight_cosine(g_15, sigma_11, lo_1);
-        local_26 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_26 = false;
+        local_27 = false;
     }
-    bool _e21 = local_26;
+    bool _e21 = local_27;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
         const float _e27 = airlight_cosine(g_15, sigma_11, hi_1);
-        local_27 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e31 = local_27;
+    bool _e31 = local_28;
     if (_e31) {
         return false;
     }
@@ -3698,35 +3730,35 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     float _e53 = y1_1;
     if ((_e53 > lo_1)) {
         float _e57 = y1_1;
-        local_28 = (_e57 < hi_1);
-    } else {
-        local_28 = false;
-    }
-    bool _e60 = local_28;
-    if (_e60) {
-        float _e63 = y1_1;
-        const float _e64 = airlight_cosine(g_15, sigma_11, _e63);
-        local_29 = !((_e64 < bound));
+        local_29 = (_e57 < hi_1);
     } else {
         local_29 = false;
     }
-    bool _e68 = local_29;
+    bool _e60 = local_29;
+    if (_e60) {
+        float _e63 = y1_1;
+        const float _e64 = airlight_cosine(g_15, sigma_11, _e63);
+        local_30 = !((_e64 < bound));
+    } else {
+        local_30 = false;
+    }
+    bool _e68 = local_30;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_30 = (y2_2 < hi_1);
-    } else {
-        local_30 = false;
-    }
-    bool _e75 = local_30;
-    if (_e75) {
-        const float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
-        local_31 = !((_e78 < bound));
+        local_31 = (y2_2 < hi_1);
     } else {
         local_31 = false;
     }
-    bool _e82 = local_31;
+    bool _e75 = local_31;
+    if (_e75) {
+        const float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
+        local_32 = !((_e78 < bound));
+    } else {
+        local_32 = false;
+    }
+    bool _e82 = local_32;
     if (_e82) {
         return false;
     }
@@ -3739,32 +3771,32 @@ airlight_ret_Constructarray4_float_ airlight_Constructarray4_float_(float arg0, 
     return ret;
 }
 
-float airlight_half(AirlightScene s_11, AirlightCanonical g_16, float sigma_12, AirlightHalf half_12, bool isotropic, inout float f_max_6)
+float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, AirlightHalf half_12, bool isotropic, inout float f_max_6)
 {
     float cuts[4] = airlight_Constructarray4_float_(2.0, 2.0, 2.0, 2.0);
     float dark_below = -1.0;
     float k_in = (float)0;
     float k_out = (float)0;
+    uint i_12 = 0u;
+    bool local_33 = (bool)0;
     uint i_13 = 0u;
-    bool local_32 = (bool)0;
-    uint i_14 = 0u;
     uint j_2 = (uint)0;
     float total_2 = 0.0;
     float lo_2 = (float)0;
-    uint i_15 = 0u;
+    uint i_14 = 0u;
     float hi_2 = (float)0;
-    bool local_33 = (bool)0;
     bool local_34 = (bool)0;
     bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
 
     if (isotropic) {
-        const float _e7 = airlight_integrand(s_11, g_16, sigma_12, 0.0);
+        const float _e7 = airlight_integrand(s_12, g_16, sigma_12, 0.0);
         const float _e8 = airlight_moment_zero(half_12);
         return (_e7 * _e8);
     }
-    if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-        k_in = s_11.light_param_a;
-        k_out = s_11.light_param_b;
+    if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        k_in = s_12.light_param_a;
+        k_out = s_12.light_param_b;
         float _e25 = k_in;
         float _e26 = k_out;
         float width_2 = (_e25 - _e26);
@@ -3781,67 +3813,67 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_16, float sigma_12, 
         float _e42 = k_out;
         const float2 _e43 = airlight_crossings(sigma_12, g_16.d_el, g_16.d_c, _e42);
         cuts = airlight_Constructarray4_float_(_e39.x, _e39.y, _e43.x, _e43.y);
-        uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-        bool loop_init_19 = true;
+        uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+        bool loop_init_17 = true;
         while(true) {
-            if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-            loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-            if (!loop_init_19) {
-                uint _e73 = i_13;
-                i_13 = (_e73 + 1u);
+            if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+            if (!loop_init_17) {
+                uint _e73 = i_12;
+                i_12 = (_e73 + 1u);
             }
-            loop_init_19 = false;
-            uint _e51 = i_13;
+            loop_init_17 = false;
+            uint _e51 = i_12;
             if ((_e51 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e54 = i_13;
+                uint _e54 = i_12;
                 float _e56 = cuts[min(uint(_e54), 3u)];
                 if ((_e56 > half_12.y_lo)) {
-                    uint _e61 = i_13;
+                    uint _e61 = i_12;
                     float _e63 = cuts[min(uint(_e61), 3u)];
-                    local_32 = (_e63 < half_12.y_hi);
+                    local_33 = (_e63 < half_12.y_hi);
                 } else {
-                    local_32 = false;
+                    local_33 = false;
                 }
-                bool _e67 = local_32;
+                bool _e67 = local_33;
                 if (!(_e67)) {
-                    uint _e69 = i_13;
+                    uint _e69 = i_12;
                     cuts[min(uint(_e69), 3u)] = 2.0;
                 }
             }
         }
-        uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
-        bool loop_init_20 = true;
+        uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+        bool loop_init_18 = true;
         while(true) {
-            if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-            loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-            if (!loop_init_20) {
-                uint _e114 = i_14;
-                i_14 = (_e114 + 1u);
+            if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+            loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+            if (!loop_init_18) {
+                uint _e114 = i_13;
+                i_13 = (_e114 + 1u);
             }
-            loop_init_20 = false;
-            uint _e77 = i_14;
+            loop_init_18 = false;
+            uint _e77 = i_13;
             if ((_e77 < 3u)) {
             } else {
                 break;
             }
             {
                 j_2 = 0u;
-                uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-                bool loop_init_21 = true;
+                uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+                bool loop_init_19 = true;
                 while(true) {
-                    if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-                    loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-                    if (!loop_init_21) {
+                    if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+                    loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+                    if (!loop_init_19) {
                         uint _e111 = j_2;
                         j_2 = (_e111 + 1u);
                     }
-                    loop_init_21 = false;
+                    loop_init_19 = false;
                     uint _e82 = j_2;
-                    uint _e84 = i_14;
+                    uint _e84 = i_13;
                     if ((_e82 < (3u - _e84))) {
                     } else {
                         break;
@@ -3867,69 +3899,69 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_16, float sigma_12, 
         }
     }
     lo_2 = half_12.y_lo;
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e176 = i_15;
-            i_15 = (_e176 + 1u);
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e176 = i_14;
+            i_14 = (_e176 + 1u);
         }
-        loop_init_22 = false;
-        uint _e122 = i_15;
+        loop_init_20 = false;
+        uint _e122 = i_14;
         if ((_e122 < 5u)) {
         } else {
             break;
         }
         {
             hi_2 = half_12.y_hi;
-            uint _e127 = i_15;
+            uint _e127 = i_14;
             if ((_e127 < 4u)) {
-                uint _e132 = i_15;
+                uint _e132 = i_14;
                 float _e134 = cuts[min(uint(_e132), 3u)];
-                local_33 = (_e134 < 2.0);
+                local_34 = (_e134 < 2.0);
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            bool _e138 = local_33;
+            bool _e138 = local_34;
             if (_e138) {
-                uint _e139 = i_15;
+                uint _e139 = i_14;
                 float _e141 = cuts[min(uint(_e139), 3u)];
                 hi_2 = _e141;
             }
             float _e142 = hi_2;
             float _e143 = lo_2;
             if ((_e142 > _e143)) {
-                if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+                if ((s_12.light_kind == AIRLIGHT_LIGHT_SPOT)) {
                     float _e150 = dark_below;
                     float _e151 = lo_2;
                     float _e152 = hi_2;
                     const bool _e153 = airlight_dark(g_16, sigma_12, half_12, _e150, _e151, _e152);
-                    local_34 = _e153;
+                    local_35 = _e153;
                 } else {
-                    local_34 = false;
+                    local_35 = false;
                 }
-                bool _e155 = local_34;
+                bool _e155 = local_35;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
                     float _e159 = hi_2;
-                    const float _e160 = airlight_integrate_piece(s_11, g_16, sigma_12, half_12, _e158, _e159, f_max_6);
+                    const float _e160 = airlight_integrate_piece(s_12, g_16, sigma_12, half_12, _e158, _e159, f_max_6);
                     total_2 = (_e157 + _e160);
                 }
                 float _e162 = hi_2;
                 lo_2 = _e162;
             }
-            uint _e163 = i_15;
+            uint _e163 = i_14;
             if ((_e163 < 4u)) {
-                uint _e168 = i_15;
+                uint _e168 = i_14;
                 float _e170 = cuts[min(uint(_e168), 3u)];
-                local_35 = (_e170 >= 2.0);
+                local_36 = (_e170 >= 2.0);
             } else {
-                local_35 = false;
+                local_36 = false;
             }
-            bool _e174 = local_35;
+            bool _e174 = local_36;
             if (_e174) {
                 break;
             }
@@ -3939,52 +3971,52 @@ float airlight_half(AirlightScene s_11, AirlightCanonical g_16, float sigma_12, 
     return _e178;
 }
 
-float airlight_on_line(AirlightScene s_12, AirlightCanonical g_17)
+float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17)
 {
-    bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
     float span = (float)0;
     float e2_[14] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail = 0.0;
 
     if (!(g_17.t_hi_infinite)) {
-        local_36 = (g_17.x_h > g_17.t_hi);
+        local_37 = (g_17.x_h > g_17.t_hi);
     } else {
-        local_36 = false;
+        local_37 = false;
     }
-    bool _e10 = local_36;
+    bool _e10 = local_37;
     if (_e10) {
-        const float _e16 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, -(g_17.d_el));
-        const float _e22 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, 1.0);
+        const float _e16 = airlight_light(s_13.light_kind, s_13.light_param_a, s_13.light_param_b, -(g_17.d_el));
+        const float _e22 = airlight_phase_mu(s_13.phase_kind, s_13.phase_param_a, s_13.phase_param_b, s_13.phase_param_c, 1.0);
         float f_3 = (_e16 * _e22);
         float r0_ = (g_17.x_h - g_17.t_lo);
         float r1_1 = (g_17.x_h - g_17.t_hi);
-        const float _e41 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * r0_), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_) / r1_1)));
+        const float _e41 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, (s_13.sigma_t * r0_), (f_3 * (((g_17.t_hi - g_17.t_lo) / r0_) / r1_1)));
         return _e41;
     }
-    const float _e46 = airlight_light(s_12.light_kind, s_12.light_param_a, s_12.light_param_b, g_17.d_el);
-    const float _e52 = airlight_phase_mu(s_12.phase_kind, s_12.phase_param_a, s_12.phase_param_b, s_12.phase_param_c, -1.0);
+    const float _e46 = airlight_light(s_13.light_kind, s_13.light_param_a, s_13.light_param_b, g_17.d_el);
+    const float _e52 = airlight_phase_mu(s_13.phase_kind, s_13.phase_param_a, s_13.phase_param_b, s_13.phase_param_c, -1.0);
     float f_4 = (_e46 * _e52);
     float s0_ = (g_17.t_lo - g_17.x_h);
     float s1_ = (g_17.t_hi - g_17.x_h);
-    if ((s_12.sigma_t == 0.0)) {
+    if ((s_13.sigma_t == 0.0)) {
         span = (1.0 / s0_);
         if (!(g_17.t_hi_infinite)) {
             span = (((s1_ - s0_) / s1_) / s0_);
         }
         float _e75 = span;
-        const float _e77 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, 0.0, (f_4 * _e75));
+        const float _e77 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, 0.0, (f_4 * _e75));
         return _e77;
     }
-    float two_st = (s_12.sigma_t + s_12.sigma_t);
+    float two_st = (s_13.sigma_t + s_13.sigma_t);
     const float _e82[14] = airlight_en_scaled((two_st * s0_));
     e2_ = _e82;
     float _e90 = e2_[1];
-    const float _e93 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, (s_12.sigma_t * s0_), ((f_4 * _e90) / s0_));
+    const float _e93 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, (s_13.sigma_t * s0_), ((f_4 * _e90) / s0_));
     if (!(g_17.t_hi_infinite)) {
         const float _e99[14] = airlight_en_scaled((two_st * s1_));
         e2_ = _e99;
         float _e110 = e2_[1];
-        const float _e113 = airlight_weighted(s_12.sigma_s, s_12.intensity, 2.0, ((s_12.sigma_t * (s1_ - s0_)) + (s_12.sigma_t * s1_)), ((f_4 * _e110) / s1_));
+        const float _e113 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, ((s_13.sigma_t * (s1_ - s0_)) + (s_13.sigma_t * s1_)), ((f_4 * _e110) / s1_));
         tail = _e113;
     }
     const bool _e114 = airlight_is_finite(_e93);
@@ -4019,13 +4051,13 @@ AirlightHalf ConstructAirlightHalf(bool arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_h_3)
+float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_h_3)
 {
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_37 = (bool)0;
     bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
     float x_11 = 0.0;
 
     float h_4 = g_18.h;
@@ -4035,11 +4067,11 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
     float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if (!(g_18.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
-        local_37 = _e24;
+        local_38 = _e24;
     } else {
-        local_37 = false;
+        local_38 = false;
     }
-    bool _e26 = local_37;
+    bool _e26 = local_38;
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -4047,11 +4079,11 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
-            local_38 = _e40;
+            local_39 = _e40;
         } else {
-            local_38 = false;
+            local_39 = false;
         }
-        bool _e42 = local_38;
+        bool _e42 = local_39;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -4070,14 +4102,14 @@ float airlight_whole_line(AirlightScene s_13, AirlightCanonical g_18, float big_
     if (_e55) {
         x_11 = (big_h_3 * _e8);
     } else {
-        if ((s_13.sigma_t > 0.0)) {
-            x_11 = (s_13.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+        if ((s_14.sigma_t > 0.0)) {
+            x_11 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
     float _e66 = x_11;
     const float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
-    const float _e73 = airlight_integrand(s_13, g_18, -1.0, 0.0);
-    const float _e76 = airlight_weighted(s_13.sigma_s, s_13.intensity, h_4, _e67.y, (_e73 * _e67.x));
+    const float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
+    const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
@@ -4088,29 +4120,29 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
     return ret;
 }
 
-AirlightResult airlight_limits(AirlightScene s_14, AirlightCanonical g_19)
+AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
 {
-    bool local_39 = (bool)0;
     bool local_40 = (bool)0;
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
-    float gap_2 = 0.0;
     bool local_43 = (bool)0;
+    float gap_2 = 0.0;
+    bool local_44 = (bool)0;
 
     float t0_ = g_19.t_lo;
     float t1_ = g_19.t_hi;
     if (!(g_19.t_hi_infinite)) {
-        local_39 = (t1_ > t0_);
-    } else {
-        local_39 = true;
-    }
-    bool _e10 = local_39;
-    if (!(!(_e10))) {
-        local_40 = ((s_14.sigma_s * s_14.intensity) == 0.0);
+        local_40 = (t1_ > t0_);
     } else {
         local_40 = true;
     }
-    bool _e21 = local_40;
+    bool _e10 = local_40;
+    if (!(!(_e10))) {
+        local_41 = ((s_15.sigma_s * s_15.intensity) == 0.0);
+    } else {
+        local_41 = true;
+    }
+    bool _e21 = local_41;
     if (_e21) {
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
@@ -4119,16 +4151,16 @@ AirlightResult airlight_limits(AirlightScene s_14, AirlightCanonical g_19)
     float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_19.t_hi_infinite)) {
-            local_42 = (x_h <= t1_);
+            local_43 = (x_h <= t1_);
         } else {
-            local_42 = true;
+            local_43 = true;
         }
-        bool _e36 = local_42;
-        local_41 = _e36;
+        bool _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_41 = false;
+        local_42 = false;
     }
-    bool inside = local_41;
+    bool inside = local_42;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -4138,13 +4170,13 @@ AirlightResult airlight_limits(AirlightScene s_14, AirlightCanonical g_19)
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_43 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_44 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    bool _e55 = local_43;
+    bool _e55 = local_44;
     if (_e55) {
-        const float _e56 = airlight_on_line(s_14, g_19);
+        const float _e56 = airlight_on_line(s_15, g_19);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
@@ -4156,80 +4188,80 @@ AirlightResult airlight_limits(AirlightScene s_14, AirlightCanonical g_19)
     return airlightresult_3;
 }
 
-bool airlight_isotropic_scene(AirlightScene s_15)
+bool airlight_isotropic_scene(AirlightScene s_16)
 {
-    bool local_44 = (bool)0;
     bool local_45 = (bool)0;
     bool local_46 = (bool)0;
     bool local_47 = (bool)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
+    bool local_50 = (bool)0;
 
-    if (!((s_15.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_45 = (s_15.light_param_a == 0.0);
+    if (!((s_16.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_46 = (s_16.light_param_a == 0.0);
         } else {
-            local_45 = false;
+            local_46 = false;
         }
-        bool _e16 = local_45;
-        local_44 = _e16;
+        bool _e16 = local_46;
+        local_45 = _e16;
     } else {
-        local_44 = true;
+        local_45 = true;
     }
-    bool _e18 = local_44;
+    bool _e18 = local_45;
     if (_e18) {
-        if (!((s_15.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_15.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_48 = (s_15.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+            if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+                local_49 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_48 = true;
+                local_49 = true;
             }
-            bool _e37 = local_48;
+            bool _e37 = local_49;
             if (_e37) {
-                local_49 = (s_15.phase_param_a == 0.0);
+                local_50 = (s_16.phase_param_a == 0.0);
             } else {
-                local_49 = false;
+                local_50 = false;
             }
-            bool _e44 = local_49;
-            local_47 = _e44;
+            bool _e44 = local_50;
+            local_48 = _e44;
         } else {
-            local_47 = true;
+            local_48 = true;
         }
-        bool _e46 = local_47;
-        local_46 = _e46;
+        bool _e46 = local_48;
+        local_47 = _e46;
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    bool _e48 = local_46;
+    bool _e48 = local_47;
     return _e48;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonical g_20)
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonical g_20)
 {
-    bool local_50 = (bool)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
+    bool local_53 = (bool)0;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = (float)0;
-    bool local_53 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_54 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_55 = (bool)0;
     bool local_56 = (bool)0;
+    bool local_57 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_57 = (bool)0;
     bool local_58 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_59 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_60 = (bool)0;
     bool local_61 = (bool)0;
+    bool local_62 = (bool)0;
 
-    const AirlightResult _e2 = airlight_limits(s_16, g_20);
+    const AirlightResult _e2 = airlight_limits(s_17, g_20);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult airlightresult_4 = _e2;
         return airlightresult_4;
@@ -4238,48 +4270,48 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
     float t1_1 = g_20.t_hi;
     float h_6 = g_20.h;
     float x_h_1 = g_20.x_h;
-    float big_h_8 = (s_16.sigma_t * h_6);
-    const bool _e12 = airlight_isotropic_scene(s_16);
+    float big_h_8 = (s_17.sigma_t * h_6);
+    const bool _e12 = airlight_isotropic_scene(s_17);
     if (_e12) {
-        local_50 = (t0_1 < x_h_1);
-    } else {
-        local_50 = false;
-    }
-    bool _e17 = local_50;
-    if (_e17) {
-        if (!(g_20.t_hi_infinite)) {
-            local_52 = (x_h_1 < t1_1);
-        } else {
-            local_52 = true;
-        }
-        bool _e26 = local_52;
-        local_51 = _e26;
+        local_51 = (t0_1 < x_h_1);
     } else {
         local_51 = false;
     }
-    bool _e28 = local_51;
+    bool _e17 = local_51;
+    if (_e17) {
+        if (!(g_20.t_hi_infinite)) {
+            local_53 = (x_h_1 < t1_1);
+        } else {
+            local_53 = true;
+        }
+        bool _e26 = local_53;
+        local_52 = _e26;
+    } else {
+        local_52 = false;
+    }
+    bool _e28 = local_52;
     if (_e28) {
-        const float _e29 = airlight_whole_line(s_16, g_20, big_h_8);
+        const float _e29 = airlight_whole_line(s_17, g_20, big_h_8);
         const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_5;
     }
     if (!(_e12)) {
-        const float2 _e35 = airlight_angle_route(s_16, g_20);
+        const float2 _e35 = airlight_angle_route(s_17, g_20);
         if ((_e35.x > 0.5)) {
             const AirlightResult airlightresult_6 = ConstructAirlightResult(max(_e35.y, 0.0), AIRLIGHT_STATUS_OK);
             return airlightresult_6;
         }
     }
-    bool cut = !(_e12);
+    bool cut_1 = !(_e12);
     if ((t0_1 < x_h_1)) {
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
-            local_53 = (t1_1 < x_h_1);
+            local_54 = (t1_1 < x_h_1);
         } else {
-            local_53 = false;
+            local_54 = false;
         }
-        bool _e61 = local_53;
+        bool _e61 = local_54;
         if (_e61) {
             t_end = t1_1;
         }
@@ -4293,13 +4325,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
         float dy_1 = (((((_e69 - t0_1) / h_6) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         const float _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
-        if (cut) {
+        if (cut_1) {
             float _e89 = half_13.big_h;
-            local_54 = (_e89 > 0.0);
+            local_55 = (_e89 > 0.0);
         } else {
-            local_54 = false;
+            local_55 = false;
         }
-        bool _e93 = local_54;
+        bool _e93 = local_55;
         if (_e93) {
             float _e95 = half_13.big_h;
             const float _e96 = airlight_cut_length(_e95, _e67);
@@ -4310,24 +4342,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
             }
         }
         AirlightHalf _e106 = half_13;
-        const float _e107 = airlight_half(s_16, g_20, -1.0, _e106, _e12, f_max_7);
+        const float _e107 = airlight_half(s_17, g_20, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        const float _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (big_h_8 * _e65), _e107);
+        const float _e112 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
-        local_55 = (t1_1 > x_h_1);
+        local_56 = (t1_1 > x_h_1);
     } else {
-        local_55 = true;
+        local_56 = true;
     }
-    bool _e120 = local_55;
+    bool _e120 = local_56;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_56 = !(_e123);
+        local_57 = !(_e123);
     } else {
-        local_56 = false;
+        local_57 = false;
     }
-    bool _e126 = local_56;
+    bool _e126 = local_57;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -4337,22 +4369,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_20.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
-            local_57 = _e145;
+            local_58 = _e145;
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        bool _e147 = local_57;
+        bool _e147 = local_58;
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
-                local_58 = _e162;
+                local_59 = _e162;
             } else {
-                local_58 = false;
+                local_59 = false;
             }
-            bool _e164 = local_58;
+            bool _e164 = local_59;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4370,33 +4402,33 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
         float _e176 = dv_3;
         bool _e177 = infinite_2;
         half_14 = ConstructAirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
-        if (cut) {
+        if (cut_1) {
             float _e183 = half_14.big_h;
-            local_59 = (_e183 > 0.0);
+            local_60 = (_e183 > 0.0);
         } else {
-            local_59 = false;
+            local_60 = false;
         }
-        bool _e187 = local_59;
+        bool _e187 = local_60;
         if (_e187) {
             float _e189 = half_14.big_h;
             const float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
             bool _e193 = infinite_2;
             if (!(_e193)) {
                 float _e197 = dv_3;
-                local_60 = (_e192 < _e197);
+                local_61 = (_e192 < _e197);
             } else {
-                local_60 = true;
+                local_61 = true;
             }
-            bool _e200 = local_60;
+            bool _e200 = local_61;
             if (_e200) {
                 float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
                 if ((cut_y_lo > 0.0)) {
                     const bool _e209 = airlight_is_finite(_e192);
-                    local_61 = _e209;
+                    local_62 = _e209;
                 } else {
-                    local_61 = false;
+                    local_62 = false;
                 }
-                bool _e211 = local_61;
+                bool _e211 = local_62;
                 if (_e211) {
                     float _e214 = half_14.big_h;
                     half_14 = ConstructAirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
@@ -4404,9 +4436,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
             }
         }
         AirlightHalf _e220 = half_14;
-        const float _e221 = airlight_half(s_16, g_20, 1.0, _e220, _e12, f_max_7);
+        const float _e221 = airlight_half(s_17, g_20, 1.0, _e220, _e12, f_max_7);
         float _e222 = total_3;
-        const float _e230 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, ((s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
+        const float _e230 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, ((s_17.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
         total_3 = (_e222 + _e230);
     }
     float _e232 = total_3;
@@ -4416,24 +4448,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonic
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_62 = (bool)0;
     bool local_63 = (bool)0;
+    bool local_64 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_62 = _e6;
-    } else {
-        local_62 = false;
-    }
-    bool _e8 = local_62;
-    if (_e8) {
-        const bool _e12 = airlight_is_finite(v.z);
-        local_63 = _e12;
+        local_63 = _e6;
     } else {
         local_63 = false;
     }
-    bool _e14 = local_63;
+    bool _e8 = local_63;
+    if (_e8) {
+        const bool _e12 = airlight_is_finite(v.z);
+        local_64 = _e12;
+    } else {
+        local_64 = false;
+    }
+    bool _e14 = local_64;
     return _e14;
 }
 
@@ -4448,29 +4480,28 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_64 = _e6;
+        local_65 = _e6;
     } else {
-        local_64 = false;
+        local_65 = false;
     }
-    bool _e8 = local_64;
+    bool _e8 = local_65;
     return _e8;
 }
 
 float3 airlight_normalize(float3 v_3)
 {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_2 = (v_3 / (m_8).xxx);
-    return (u_2 / (length(u_2)).xxx);
+    float3 u_3 = (v_3 / (m_8).xxx);
+    return (u_3 / (length(u_3)).xxx);
 }
 
-bool airlight_valid(AirlightScene s_17)
+bool airlight_valid(AirlightScene s_18)
 {
-    bool local_65 = (bool)0;
     bool local_66 = (bool)0;
     bool local_67 = (bool)0;
     bool local_68 = (bool)0;
@@ -4480,8 +4511,8 @@ bool airlight_valid(AirlightScene s_17)
     bool local_72 = (bool)0;
     bool local_73 = (bool)0;
     bool local_74 = (bool)0;
-    bool ok = (bool)0;
     bool local_75 = (bool)0;
+    bool ok = (bool)0;
     bool local_76 = (bool)0;
     bool local_77 = (bool)0;
     bool local_78 = (bool)0;
@@ -4504,228 +4535,271 @@ bool airlight_valid(AirlightScene s_17)
     bool local_95 = (bool)0;
     bool local_96 = (bool)0;
     bool local_97 = (bool)0;
+    bool local_98 = (bool)0;
+    bool local_99 = (bool)0;
+    bool local_100 = (bool)0;
+    bool local_101 = (bool)0;
+    bool local_102 = (bool)0;
+    bool local_103 = (bool)0;
 
-    const bool _e2 = airlight_vec_finite(s_17.origin);
+    const bool _e2 = airlight_vec_finite(s_18.origin);
     if (_e2) {
-        const bool _e6 = airlight_vec_finite(s_17.dir);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    bool _e8 = local_65;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_17.dir);
-        local_66 = _e12;
+        const bool _e6 = airlight_vec_finite(s_18.dir);
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    bool _e14 = local_66;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_17.t_min);
-        local_67 = _e18;
+    bool _e8 = local_66;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_18.dir);
+        local_67 = _e12;
     } else {
         local_67 = false;
     }
-    bool _e20 = local_67;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_17.light_position);
-        local_68 = _e24;
+    bool _e14 = local_67;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_18.t_min);
+        local_68 = _e18;
     } else {
         local_68 = false;
     }
-    bool _e26 = local_68;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_17.intensity);
-        local_69 = _e30;
+    bool _e20 = local_68;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_18.light_position);
+        local_69 = _e24;
     } else {
         local_69 = false;
     }
-    bool _e32 = local_69;
-    if (_e32) {
-        local_70 = (s_17.intensity >= 0.0);
+    bool _e26 = local_69;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_18.intensity);
+        local_70 = _e30;
     } else {
         local_70 = false;
     }
-    bool _e39 = local_70;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_17.sigma_s);
-        local_71 = _e43;
+    bool _e32 = local_70;
+    if (_e32) {
+        local_71 = (s_18.intensity >= 0.0);
     } else {
         local_71 = false;
     }
-    bool _e45 = local_71;
-    if (_e45) {
-        local_72 = (s_17.sigma_s >= 0.0);
+    bool _e39 = local_71;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_18.sigma_s);
+        local_72 = _e43;
     } else {
         local_72 = false;
     }
-    bool _e52 = local_72;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_17.sigma_t);
-        local_73 = _e56;
+    bool _e45 = local_72;
+    if (_e45) {
+        local_73 = (s_18.sigma_s >= 0.0);
     } else {
         local_73 = false;
     }
-    bool _e58 = local_73;
-    if (_e58) {
-        local_74 = (s_17.sigma_t >= 0.0);
+    bool _e52 = local_73;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_18.sigma_t);
+        local_74 = _e56;
     } else {
         local_74 = false;
     }
-    bool _e65 = local_74;
+    bool _e58 = local_74;
+    if (_e58) {
+        local_75 = (s_18.sigma_t >= 0.0);
+    } else {
+        local_75 = false;
+    }
+    bool _e65 = local_75;
     ok = _e65;
-    if (((s_17.flags & 1u) == 0u)) {
+    if (((s_18.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            const bool _e76 = airlight_is_finite(s_17.t_max);
-            local_75 = _e76;
-        } else {
-            local_75 = false;
-        }
-        bool _e78 = local_75;
-        if (_e78) {
-            local_76 = (s_17.t_min <= s_17.t_max);
+            const bool _e76 = airlight_is_finite(s_18.t_max);
+            local_76 = _e76;
         } else {
             local_76 = false;
         }
-        bool _e85 = local_76;
-        ok = _e85;
-    }
-    if ((s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        bool _e89 = ok;
-        if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_17.light_end);
-            local_77 = _e93;
+        bool _e78 = local_76;
+        if (_e78) {
+            local_77 = (s_18.t_min <= s_18.t_max);
         } else {
             local_77 = false;
         }
-        bool _e95 = local_77;
-        ok = _e95;
-    } else {
-        if ((s_17.light_shape != AIRLIGHT_SHAPE_POINT)) {
-            ok = false;
-        }
+        bool _e85 = local_77;
+        ok = _e85;
     }
-    if ((s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        bool _e103 = ok;
-        if (_e103) {
-            const bool _e107 = airlight_is_finite(s_17.brdf_albedo);
-            local_78 = _e107;
+    if ((s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+        bool _e89 = ok;
+        if (_e89) {
+            const bool _e93 = airlight_vec_finite(s_18.light_end);
+            local_78 = _e93;
         } else {
             local_78 = false;
         }
-        bool _e109 = local_78;
-        if (_e109) {
-            local_79 = (s_17.brdf_albedo >= 0.0);
-        } else {
-            local_79 = false;
-        }
-        bool _e116 = local_79;
-        if (_e116) {
-            local_80 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_80 = false;
-        }
-        bool _e123 = local_80;
-        if (_e123) {
-            local_81 = (s_17.light_shape == AIRLIGHT_SHAPE_POINT);
-        } else {
-            local_81 = false;
-        }
-        bool _e130 = local_81;
-        if (_e130) {
-            const float _e136 = airlight_safe_length((s_17.light_position - s_17.origin));
-            const bool _e137 = airlight_is_finite(_e136);
-            local_82 = _e137;
-        } else {
-            local_82 = false;
-        }
-        bool _e139 = local_82;
-        ok = _e139;
+        bool _e95 = local_78;
+        ok = _e95;
     } else {
-        if ((s_17.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
             ok = false;
         }
     }
-    if ((s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e147 = ok;
-        if (_e147) {
-            const bool _e151 = airlight_vec_finite(s_17.light_axis);
-            local_83 = _e151;
+    if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
+        local_79 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    } else {
+        local_79 = true;
+    }
+    bool _e110 = local_79;
+    if (_e110) {
+        bool _e111 = ok;
+        if (_e111) {
+            const bool _e115 = airlight_is_finite(s_18.brdf_scale);
+            local_80 = _e115;
+        } else {
+            local_80 = false;
+        }
+        bool _e117 = local_80;
+        if (_e117) {
+            local_81 = (s_18.brdf_scale >= 0.0);
+        } else {
+            local_81 = false;
+        }
+        bool _e124 = local_81;
+        if (_e124) {
+            local_82 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_82 = false;
+        }
+        bool _e131 = local_82;
+        if (_e131) {
+            local_83 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_83 = false;
         }
-        bool _e153 = local_83;
-        if (_e153) {
-            const bool _e157 = airlight_normalisable(s_17.light_axis);
-            local_84 = _e157;
+        bool _e138 = local_83;
+        if (_e138) {
+            const float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
+            const bool _e145 = airlight_is_finite(_e144);
+            local_84 = _e145;
         } else {
             local_84 = false;
         }
-        bool _e159 = local_84;
-        if (_e159) {
-            local_85 = (s_17.light_param_a >= 0.0);
-        } else {
-            local_85 = false;
-        }
-        bool _e166 = local_85;
-        if (_e166) {
-            local_86 = (s_17.light_param_a <= 1024.0);
-        } else {
-            local_86 = false;
-        }
-        bool _e173 = local_86;
-        if (_e173) {
-            local_87 = (frac((s_17.light_param_a * 0.5)) == 0.0);
-        } else {
-            local_87 = false;
-        }
-        bool _e183 = local_87;
-        ok = _e183;
-    } else {
-        if ((s_17.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e187 = ok;
-            if (_e187) {
-                const bool _e191 = airlight_vec_finite(s_17.light_axis);
-                local_88 = _e191;
+        bool _e147 = local_84;
+        ok = _e147;
+        if ((s_18.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+            bool _e151 = ok;
+            if (_e151) {
+                const bool _e155 = airlight_is_finite(s_18.brdf_exponent);
+                local_85 = _e155;
+            } else {
+                local_85 = false;
+            }
+            bool _e157 = local_85;
+            if (_e157) {
+                local_86 = (s_18.brdf_exponent >= 0.0);
+            } else {
+                local_86 = false;
+            }
+            bool _e164 = local_86;
+            if (_e164) {
+                const bool _e168 = airlight_vec_finite(s_18.brdf_view);
+                local_87 = _e168;
+            } else {
+                local_87 = false;
+            }
+            bool _e170 = local_87;
+            if (_e170) {
+                const bool _e174 = airlight_normalisable(s_18.brdf_view);
+                local_88 = _e174;
             } else {
                 local_88 = false;
             }
-            bool _e193 = local_88;
-            if (_e193) {
-                const bool _e197 = airlight_normalisable(s_17.light_axis);
-                local_89 = _e197;
-            } else {
-                local_89 = false;
-            }
-            bool _e199 = local_89;
-            if (_e199) {
-                local_90 = (s_17.light_param_b < s_17.light_param_a);
-            } else {
-                local_90 = false;
-            }
-            bool _e206 = local_90;
-            if (_e206) {
-                local_91 = (s_17.light_param_b >= -1.0);
-            } else {
-                local_91 = false;
-            }
-            bool _e213 = local_91;
-            if (_e213) {
-                local_92 = (s_17.light_param_a <= 1.0);
-            } else {
-                local_92 = false;
-            }
-            bool _e220 = local_92;
-            ok = _e220;
+            bool _e176 = local_88;
+            ok = _e176;
+        }
+    } else {
+        if ((s_18.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+            ok = false;
+        }
+    }
+    if ((s_18.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+        bool _e184 = ok;
+        if (_e184) {
+            const bool _e188 = airlight_vec_finite(s_18.light_axis);
+            local_89 = _e188;
         } else {
-            if ((s_17.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            local_89 = false;
+        }
+        bool _e190 = local_89;
+        if (_e190) {
+            const bool _e194 = airlight_normalisable(s_18.light_axis);
+            local_90 = _e194;
+        } else {
+            local_90 = false;
+        }
+        bool _e196 = local_90;
+        if (_e196) {
+            local_91 = (s_18.light_param_a >= 0.0);
+        } else {
+            local_91 = false;
+        }
+        bool _e203 = local_91;
+        if (_e203) {
+            local_92 = (s_18.light_param_a <= 1024.0);
+        } else {
+            local_92 = false;
+        }
+        bool _e210 = local_92;
+        if (_e210) {
+            local_93 = (frac((s_18.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_93 = false;
+        }
+        bool _e220 = local_93;
+        ok = _e220;
+    } else {
+        if ((s_18.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+            bool _e224 = ok;
+            if (_e224) {
+                const bool _e228 = airlight_vec_finite(s_18.light_axis);
+                local_94 = _e228;
+            } else {
+                local_94 = false;
+            }
+            bool _e230 = local_94;
+            if (_e230) {
+                const bool _e234 = airlight_normalisable(s_18.light_axis);
+                local_95 = _e234;
+            } else {
+                local_95 = false;
+            }
+            bool _e236 = local_95;
+            if (_e236) {
+                local_96 = (s_18.light_param_b < s_18.light_param_a);
+            } else {
+                local_96 = false;
+            }
+            bool _e243 = local_96;
+            if (_e243) {
+                local_97 = (s_18.light_param_b >= -1.0);
+            } else {
+                local_97 = false;
+            }
+            bool _e250 = local_97;
+            if (_e250) {
+                local_98 = (s_18.light_param_a <= 1.0);
+            } else {
+                local_98 = false;
+            }
+            bool _e257 = local_98;
+            ok = _e257;
+        } else {
+            if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_17.phase_param_a) < 1.0);
-    switch(s_17.phase_kind) {
+    bool g_ok = (abs(s_18.phase_param_a) < 1.0);
+    switch(s_18.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4733,43 +4807,43 @@ bool airlight_valid(AirlightScene s_17)
         case 2u:
         case 3u:
         case 4u: {
-            bool _e230 = ok;
-            if (_e230) {
-                local_93 = g_ok;
+            bool _e267 = ok;
+            if (_e267) {
+                local_99 = g_ok;
             } else {
-                local_93 = false;
+                local_99 = false;
             }
-            bool _e234 = local_93;
-            ok = _e234;
+            bool _e271 = local_99;
+            ok = _e271;
             break;
         }
         case 5u: {
-            bool _e235 = ok;
-            if (_e235) {
-                local_94 = g_ok;
+            bool _e272 = ok;
+            if (_e272) {
+                local_100 = g_ok;
             } else {
-                local_94 = false;
+                local_100 = false;
             }
-            bool _e239 = local_94;
-            if (_e239) {
-                local_95 = (abs(s_17.phase_param_b) < 1.0);
+            bool _e276 = local_100;
+            if (_e276) {
+                local_101 = (abs(s_18.phase_param_b) < 1.0);
             } else {
-                local_95 = false;
+                local_101 = false;
             }
-            bool _e247 = local_95;
-            if (_e247) {
-                local_96 = (s_17.phase_param_c >= 0.0);
+            bool _e284 = local_101;
+            if (_e284) {
+                local_102 = (s_18.phase_param_c >= 0.0);
             } else {
-                local_96 = false;
+                local_102 = false;
             }
-            bool _e254 = local_96;
-            if (_e254) {
-                local_97 = (s_17.phase_param_c <= 1.0);
+            bool _e291 = local_102;
+            if (_e291) {
+                local_103 = (s_18.phase_param_c <= 1.0);
             } else {
-                local_97 = false;
+                local_103 = false;
             }
-            bool _e261 = local_97;
-            ok = _e261;
+            bool _e298 = local_103;
+            ok = _e298;
             break;
         }
         default: {
@@ -4777,8 +4851,8 @@ bool airlight_valid(AirlightScene s_17)
             break;
         }
     }
-    bool _e263 = ok;
-    return _e263;
+    bool _e300 = ok;
+    return _e300;
 }
 
 AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -4793,17 +4867,17 @@ AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2,
     return ret;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_18)
+AirlightCanonical airlight_canonical(AirlightScene s_19)
 {
     float3 a_11 = float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
 
-    const float3 _e2 = airlight_normalize(s_18.dir);
-    if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e12 = airlight_normalize(s_18.light_axis);
+    const float3 _e2 = airlight_normalize(s_19.dir);
+    if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e12 = airlight_normalize(s_19.light_axis);
         a_11 = _e12;
     }
-    float3 to_light = (s_18.light_position - s_18.origin);
+    float3 to_light = (s_19.light_position - s_19.origin);
     float x_h_2 = dot(to_light, _e2);
     float3 perp = ((x_h_2 * _e2) - to_light);
     const float _e19 = airlight_safe_length(perp);
@@ -4811,10 +4885,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_18)
         float3 _e24 = a_11;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_18.flags & 1u) != 0u);
+    bool infinite_3 = ((s_19.flags & 1u) != 0u);
     float3 _e32 = a_11;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_18.t_min, (infinite_3 ? 0.0 : s_18.t_max), infinite_3);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, (infinite_3 ? 0.0 : s_19.t_max), infinite_3);
     return airlightcanonical;
 }
 
@@ -4861,62 +4935,62 @@ float airlight_diff_of_products(float a_14, float b_11, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_98 = (bool)0;
-    bool local_99 = (bool)0;
+    bool local_104 = (bool)0;
+    bool local_105 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_99 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_105 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_99 = false;
+            local_105 = false;
         }
-        bool _e21 = local_99;
-        local_98 = _e21;
+        bool _e21 = local_105;
+        local_104 = _e21;
     } else {
-        local_98 = true;
+        local_104 = true;
     }
-    bool _e23 = local_98;
+    bool _e23 = local_104;
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain)
+AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
 {
-    bool local_100 = (bool)0;
+    bool local_106 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_101 = (bool)0;
+    bool local_107 = (bool)0;
     float3 a_15 = float3(0.0, 0.0, 1.0);
 
-    uint key_4 = uint((s_19.flags > 1u));
-    const float2 _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
-    const float2 _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
-    const float2 _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
-    float3 hi_3 = float3(_e11.x, _e17.x, _e23.x);
-    float3 lo_3 = float3(_e11.y, _e17.y, _e23.y);
-    float3 dir_2 = s_19.dir;
-    const bool _e33 = airlight_in_exact_range(hi_3);
+    uint key_4 = uint((s_20.flags > 1u));
+    const float2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
+    const float2 _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
+    const float2 _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
+    float3 hi_4 = float3(_e11.x, _e17.x, _e23.x);
+    float3 lo_5 = float3(_e11.y, _e17.y, _e23.y);
+    float3 dir_2 = s_20.dir;
+    const bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir_2);
-        local_100 = !(_e38);
+        local_106 = !(_e38);
     } else {
-        local_100 = true;
+        local_106 = true;
     }
-    bool _e41 = local_100;
+    bool _e41 = local_106;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
     }
-    const float _e46 = airlight_diff_of_products(hi_3.y, dir_2.z, hi_3.z, dir_2.y, key_4);
-    const float _e59 = airlight_diff_of_products(hi_3.z, dir_2.x, hi_3.x, dir_2.z, key_4);
-    const float _e72 = airlight_diff_of_products(hi_3.x, dir_2.y, hi_3.y, dir_2.x, key_4);
-    float3 w_5 = float3((_e46 + ((lo_3.y * dir_2.z) - (lo_3.z * dir_2.y))), (_e59 + ((lo_3.z * dir_2.x) - (lo_3.x * dir_2.z))), (_e72 + ((lo_3.x * dir_2.y) - (lo_3.y * dir_2.x))));
-    const bool _e82 = airlight_vec_finite(w_5);
+    const float _e46 = airlight_diff_of_products(hi_4.y, dir_2.z, hi_4.z, dir_2.y, key_4);
+    const float _e59 = airlight_diff_of_products(hi_4.z, dir_2.x, hi_4.x, dir_2.z, key_4);
+    const float _e72 = airlight_diff_of_products(hi_4.x, dir_2.y, hi_4.y, dir_2.x, key_4);
+    float3 w_6 = float3((_e46 + ((lo_5.y * dir_2.z) - (lo_5.z * dir_2.y))), (_e59 + ((lo_5.z * dir_2.x) - (lo_5.x * dir_2.z))), (_e72 + ((lo_5.x * dir_2.y) - (lo_5.y * dir_2.x))));
+    const bool _e82 = airlight_vec_finite(w_6);
     if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_5);
+    const float _e85 = airlight_safe_length(w_6);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -4928,21 +5002,21 @@ AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_101 = (h_7 > 0.0);
+        local_107 = (h_7 > 0.0);
     } else {
-        local_101 = false;
+        local_107 = false;
     }
-    bool _e101 = local_101;
+    bool _e101 = local_107;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
-    if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e112 = airlight_normalize(s_19.light_axis);
+    if ((s_20.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e112 = airlight_normalize(s_20.light_axis);
         a_15 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir_2);
-    const float3 _e114 = airlight_normalize(w_5);
+    const float3 _e114 = airlight_normalize(w_6);
     float3 n_2 = -(cross(_e113, _e114));
     out_2.h = h_7;
     float3 _e119 = a_15;
@@ -4964,9 +5038,9 @@ airlight_ret_airlight_kronrod_rule airlight_kronrod_rule()
     return airlight_Constructarray4_float3_(float3(0.96049124, 0.10465623, 0.0), float3(0.7745967, 0.26848808, 0.5555556), float3(0.43424374, 0.4013974, 0.0), float3(0.0, 0.45091653, 0.8888889));
 }
 
-float4 airlight_list_get(AirlightPanelList l, uint i_16)
+float4 airlight_list_get(AirlightPanelList l, uint i_15)
 {
-    switch(i_16) {
+    switch(i_15) {
         case 0u: {
             return l.panel_a;
         }
@@ -4982,15 +5056,45 @@ float4 airlight_list_get(AirlightPanelList l, uint i_16)
         case 4u: {
             return l.panel_e;
         }
-        default: {
+        case 5u: {
             return l.panel_f;
+        }
+        case 6u: {
+            return l.panel_g;
+        }
+        case 7u: {
+            return l.panel_h;
+        }
+        case 8u: {
+            return l.panel_i;
+        }
+        case 9u: {
+            return l.panel_j;
+        }
+        case 10u: {
+            return l.panel_k;
+        }
+        case 11u: {
+            return l.panel_l;
+        }
+        case 12u: {
+            return l.panel_m;
+        }
+        case 13u: {
+            return l.panel_n;
+        }
+        case 14u: {
+            return l.panel_o;
+        }
+        default: {
+            return l.panel_p;
         }
     }
 }
 
-void airlight_list_set(inout AirlightPanelList l_1, uint i_17, float4 v_5)
+void airlight_list_set(inout AirlightPanelList l_1, uint i_16, float4 v_5)
 {
-    switch(i_17) {
+    switch(i_16) {
         case 0u: {
             l_1.panel_a = v_5;
             return;
@@ -5013,6 +5117,46 @@ void airlight_list_set(inout AirlightPanelList l_1, uint i_17, float4 v_5)
         }
         case 5u: {
             l_1.panel_f = v_5;
+            return;
+        }
+        case 6u: {
+            l_1.panel_g = v_5;
+            return;
+        }
+        case 7u: {
+            l_1.panel_h = v_5;
+            return;
+        }
+        case 8u: {
+            l_1.panel_i = v_5;
+            return;
+        }
+        case 9u: {
+            l_1.panel_j = v_5;
+            return;
+        }
+        case 10u: {
+            l_1.panel_k = v_5;
+            return;
+        }
+        case 11u: {
+            l_1.panel_l = v_5;
+            return;
+        }
+        case 12u: {
+            l_1.panel_m = v_5;
+            return;
+        }
+        case 13u: {
+            l_1.panel_n = v_5;
+            return;
+        }
+        case 14u: {
+            l_1.panel_o = v_5;
+            return;
+        }
+        case 15u: {
+            l_1.panel_p = v_5;
             return;
         }
         default: {
@@ -5100,8 +5244,118 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
             worst_error = l_2.panel_f.w;
         }
     }
-    AirlightListScan _e129 = r_3;
-    const AirlightListScan airlightlistscan = _e129;
+    if ((count_1 > 6u)) {
+        float _e132 = r_3.total;
+        r_3.total = (_e132 + l_2.panel_g.z);
+        float _e137 = r_3.errors;
+        r_3.errors = (_e137 + l_2.panel_g.w);
+        float _e143 = worst_error;
+        if ((l_2.panel_g.w > _e143)) {
+            r_3.worst = 6u;
+            worst_error = l_2.panel_g.w;
+        }
+    }
+    if ((count_1 > 7u)) {
+        float _e152 = r_3.total;
+        r_3.total = (_e152 + l_2.panel_h.z);
+        float _e157 = r_3.errors;
+        r_3.errors = (_e157 + l_2.panel_h.w);
+        float _e163 = worst_error;
+        if ((l_2.panel_h.w > _e163)) {
+            r_3.worst = 7u;
+            worst_error = l_2.panel_h.w;
+        }
+    }
+    if ((count_1 > 8u)) {
+        float _e172 = r_3.total;
+        r_3.total = (_e172 + l_2.panel_i.z);
+        float _e177 = r_3.errors;
+        r_3.errors = (_e177 + l_2.panel_i.w);
+        float _e183 = worst_error;
+        if ((l_2.panel_i.w > _e183)) {
+            r_3.worst = 8u;
+            worst_error = l_2.panel_i.w;
+        }
+    }
+    if ((count_1 > 9u)) {
+        float _e192 = r_3.total;
+        r_3.total = (_e192 + l_2.panel_j.z);
+        float _e197 = r_3.errors;
+        r_3.errors = (_e197 + l_2.panel_j.w);
+        float _e203 = worst_error;
+        if ((l_2.panel_j.w > _e203)) {
+            r_3.worst = 9u;
+            worst_error = l_2.panel_j.w;
+        }
+    }
+    if ((count_1 > 10u)) {
+        float _e212 = r_3.total;
+        r_3.total = (_e212 + l_2.panel_k.z);
+        float _e217 = r_3.errors;
+        r_3.errors = (_e217 + l_2.panel_k.w);
+        float _e223 = worst_error;
+        if ((l_2.panel_k.w > _e223)) {
+            r_3.worst = 10u;
+            worst_error = l_2.panel_k.w;
+        }
+    }
+    if ((count_1 > 11u)) {
+        float _e232 = r_3.total;
+        r_3.total = (_e232 + l_2.panel_l.z);
+        float _e237 = r_3.errors;
+        r_3.errors = (_e237 + l_2.panel_l.w);
+        float _e243 = worst_error;
+        if ((l_2.panel_l.w > _e243)) {
+            r_3.worst = 11u;
+            worst_error = l_2.panel_l.w;
+        }
+    }
+    if ((count_1 > 12u)) {
+        float _e252 = r_3.total;
+        r_3.total = (_e252 + l_2.panel_m.z);
+        float _e257 = r_3.errors;
+        r_3.errors = (_e257 + l_2.panel_m.w);
+        float _e263 = worst_error;
+        if ((l_2.panel_m.w > _e263)) {
+            r_3.worst = 12u;
+            worst_error = l_2.panel_m.w;
+        }
+    }
+    if ((count_1 > 13u)) {
+        float _e272 = r_3.total;
+        r_3.total = (_e272 + l_2.panel_n.z);
+        float _e277 = r_3.errors;
+        r_3.errors = (_e277 + l_2.panel_n.w);
+        float _e283 = worst_error;
+        if ((l_2.panel_n.w > _e283)) {
+            r_3.worst = 13u;
+            worst_error = l_2.panel_n.w;
+        }
+    }
+    if ((count_1 > 14u)) {
+        float _e292 = r_3.total;
+        r_3.total = (_e292 + l_2.panel_o.z);
+        float _e297 = r_3.errors;
+        r_3.errors = (_e297 + l_2.panel_o.w);
+        float _e303 = worst_error;
+        if ((l_2.panel_o.w > _e303)) {
+            r_3.worst = 14u;
+            worst_error = l_2.panel_o.w;
+        }
+    }
+    if ((count_1 > 15u)) {
+        float _e312 = r_3.total;
+        r_3.total = (_e312 + l_2.panel_p.z);
+        float _e317 = r_3.errors;
+        r_3.errors = (_e317 + l_2.panel_p.w);
+        float _e323 = worst_error;
+        if ((l_2.panel_p.w > _e323)) {
+            r_3.worst = 15u;
+            worst_error = l_2.panel_p.w;
+        }
+    }
+    AirlightListScan _e329 = r_3;
+    const AirlightListScan airlightlistscan = _e329;
     return airlightlistscan;
 }
 
@@ -5120,21 +5374,21 @@ float airlight_asinh(float x_14)
     return ((x_14 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_21, float s_20)
+float airlight_to_w(AirlightOuter g_21, float s_21)
 {
     if ((g_21.scale > 0.0)) {
-        const float _e9 = airlight_asinh(((s_20 - g_21.s_star) / g_21.scale));
+        const float _e9 = airlight_asinh(((s_21 - g_21.s_star) / g_21.scale));
         return _e9;
     }
-    return s_20;
+    return s_21;
 }
 
 float2 airlight_cos_sin_half_turn(float x_15)
 {
     float r_12 = (x_15 - 1.5707964);
-    float z_11 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_11 / 2.0) * (1.0 - ((z_11 / 12.0) * (1.0 - ((z_11 / 30.0) * (1.0 - ((z_11 / 56.0) * (1.0 - ((z_11 / 90.0) * (1.0 - ((z_11 / 132.0) * (1.0 - (z_11 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_11 / 6.0) * (1.0 - ((z_11 / 20.0) * (1.0 - ((z_11 / 42.0) * (1.0 - ((z_11 / 72.0) * (1.0 - ((z_11 / 110.0) * (1.0 - ((z_11 / 156.0) * (1.0 - (z_11 / 210.0)))))))))))))));
+    float z_12 = (r_12 * r_12);
+    float cos_r = (1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
@@ -5145,21 +5399,21 @@ float airlight_acos(float x_16)
     return ((x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_21)
+float airlight_angle(float c_6, float s_22)
 {
-    if ((s_21 <= c_6)) {
-        const float _e4 = airlight_atan((s_21 / c_6));
+    if ((s_22 <= c_6)) {
+        const float _e4 = airlight_atan((s_22 / c_6));
         return _e4;
     }
-    if ((s_21 <= -(c_6))) {
-        const float _e10 = airlight_atan((s_21 / -(c_6)));
+    if ((s_22 <= -(c_6))) {
+        const float _e10 = airlight_atan((s_22 / -(c_6)));
         return (AIRLIGHT_PI - _e10);
     }
     if ((c_6 >= 0.0)) {
-        const float _e16 = airlight_atan((c_6 / s_21));
+        const float _e16 = airlight_atan((c_6 / s_22));
         return (1.5707964 - _e16);
     }
-    const float _e21 = airlight_atan((-(c_6) / s_21));
+    const float _e21 = airlight_atan((-(c_6) / s_22));
     return (1.5707964 + _e21);
 }
 
@@ -5174,13 +5428,7 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
     return _e18;
 }
 
-typedef float airlight_ret_Constructarray5_float_[5];
-airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
-    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
-    return ret;
-}
-
-AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[5], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[4]) {
+AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[13], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[13], float arg13, float arg14, float arg15, float3 arg16) {
     AirlightOuter ret = (AirlightOuter)0;
     ret.a = arg0;
     ret.e = arg1;
@@ -5195,42 +5443,50 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     ret.cos_a = arg10;
     ret.sin_a = arg11;
     ret.gamma = arg12;
+    ret.cos_r = arg13;
+    ret.sin_r = arg14;
+    ret.alpha_r = arg15;
+    ret.delta = arg16;
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_22, uint max_panels)
+AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels)
 {
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_22.light_position, (0.0).xxx, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, airlight_Constructarray4_float_(0.0, 0.0, 0.0, 0.0));
+    float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_23.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0));
     return airlightouter;
 }
 
-typedef float airlight_ret_Constructarray2_float_[2];
-airlight_ret_Constructarray2_float_ airlight_Constructarray2_float_(float arg0, float arg1) {
-    float ret[2] = { arg0, arg1 };
+typedef float airlight_ret_Constructarray11_float_[11];
+airlight_ret_Constructarray11_float_ airlight_Constructarray11_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10) {
+    float ret[11] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10 };
     return ret;
 }
 
-AirlightOuter airlight_surface(AirlightScene s_23)
+AirlightOuter airlight_surface(AirlightScene s_24)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_102 = (bool)0;
+    bool local_108 = (bool)0;
     float3 u_1 = (float3)0;
-    float cuts_1[2] = {0.0, 0.0};
-    uint k_5 = 0u;
+    float cuts_1[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
+    uint i_17 = 1u;
+    uint j_3 = (uint)0;
+    bool local_109 = (bool)0;
+    uint k_4 = 0u;
     uint i_18 = 0u;
-    bool local_103 = (bool)0;
+    bool local_110 = (bool)0;
     uint i_19 = 0u;
 
-    const AirlightOuter _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
+    const AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
-    float3 to_light_1 = (s_23.light_position - s_23.origin);
+    float3 to_light_1 = (s_24.light_position - s_24.origin);
     const float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_23.intensity == 0.0))) {
-        local_102 = (s_23.sigma_s == 0.0);
+    if (!((s_24.intensity == 0.0))) {
+        local_108 = (s_24.sigma_s == 0.0);
     } else {
-        local_102 = true;
+        local_108 = true;
     }
-    bool _e18 = local_102;
+    bool _e18 = local_108;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5243,14 +5499,14 @@ AirlightOuter airlight_surface(AirlightScene s_23)
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
-    if ((s_23.brdf_albedo == 0.0)) {
+    if ((s_24.brdf_scale == 0.0)) {
         g_22.outcome = 1u;
         AirlightOuter _e33 = g_22;
         const AirlightOuter airlightouter_3 = _e33;
         return airlightouter_3;
     }
     float3 l_3 = (to_light_1 / (_e7).xxx);
-    const float3 _e37 = airlight_normalize(s_23.dir);
+    const float3 _e37 = airlight_normalize(s_24.dir);
     float cos_a_1 = dot(_e37, l_3);
     float3 across = (_e37 - (cos_a_1 * l_3));
     const float _e41 = airlight_safe_length(across);
@@ -5265,84 +5521,350 @@ AirlightOuter airlight_surface(AirlightScene s_23)
     g_22.u = _e67;
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
-    const float _e71 = airlight_angle(cos_a_1, _e41);
-    float first = abs((1.5707964 - _e71));
-    cuts_1 = airlight_Constructarray2_float_(first, (AIRLIGHT_PI - first));
-    float _e79 = cuts_1[1];
-    float _e81 = cuts_1[0];
-    if ((_e79 < _e81)) {
-        float c_10 = cuts_1[0];
-        float _e87 = cuts_1[1];
-        cuts_1[0] = _e87;
-        cuts_1[1] = c_10;
+    const float _e84 = airlight_angle(cos_a_1, _e41);
+    float first = abs((1.5707964 - _e84));
+    cuts_1[0] = first;
+    cuts_1[1] = (AIRLIGHT_PI - first);
+    if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+        g_22.max_panels = AIRLIGHT_PHONG_PANELS;
+        const float3 _e97 = airlight_normalize(s_24.brdf_view);
+        const float3 _e103 = airlight_normalize((((2.0 * dot(_e37, _e97)) * _e37) - _e97));
+        float3 _e104 = u_1;
+        float x_27 = dot(_e103, _e104);
+        float3 _e106 = u_1;
+        float y_10 = dot(_e103, cross(l_3, _e106));
+        g_22.cos_r = dot(_e103, l_3);
+        g_22.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
+        float _e118 = g_22.cos_r;
+        float _e120 = g_22.sin_r;
+        const float _e121 = airlight_angle(_e118, _e120);
+        g_22.alpha_r = _e121;
+        float _e123 = g_22.sin_r;
+        if ((_e123 > 0.0)) {
+            const float _e126 = airlight_angle(x_27, y_10);
+            const float _e128 = airlight_angle(x_27, -(y_10));
+            float phi_r = ((y_10 < 0.0) ? -(_e128) : _e126);
+            float _e136 = g_22.sin_r;
+            float _e140 = g_22.sin_r;
+            g_22.delta = float3(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+        }
+        float _e145 = g_22.alpha_r;
+        float first_r = abs((1.5707964 - _e145));
+        cuts_1[2] = first_r;
+        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        float _e154 = g_22.alpha_r;
+        cuts_1[4] = _e154;
+        if ((s_24.brdf_exponent > 1.0)) {
+            float width_3 = (1.0 / sqrt(s_24.brdf_exponent));
+            float _e164 = g_22.alpha_r;
+            cuts_1[5] = (_e164 - (1.5 * width_3));
+            float _e170 = g_22.alpha_r;
+            cuts_1[6] = (_e170 + (1.5 * width_3));
+            float _e176 = g_22.alpha_r;
+            cuts_1[7] = (_e176 - (4.0 * width_3));
+            float _e182 = g_22.alpha_r;
+            cuts_1[8] = (_e182 + (4.0 * width_3));
+        }
+        float3 meet = cross(_e37, _e103);
+        const float _e187 = airlight_safe_length(meet);
+        if ((_e187 > AIRLIGHT_FLT_EPS)) {
+            const float _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1.0, 1.0));
+            cuts_1[9] = _e195;
+            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        }
+    }
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e236 = i_17;
+            i_17 = (_e236 + 1u);
+        }
+        loop_init_21 = false;
+        uint _e202 = i_17;
+        if ((_e202 < 11u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e205 = i_17;
+            float c_10 = cuts_1[min(uint(_e205), 10u)];
+            uint _e208 = i_17;
+            j_3 = _e208;
+            uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+            while(true) {
+                if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                uint _e210 = j_3;
+                if ((_e210 > 0u)) {
+                    uint _e215 = j_3;
+                    float _e219 = cuts_1[min(uint((_e215 - 1u)), 10u)];
+                    local_109 = (_e219 > c_10);
+                } else {
+                    local_109 = false;
+                }
+                bool _e222 = local_109;
+                if (_e222) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e223 = j_3;
+                    uint _e225 = j_3;
+                    float _e229 = cuts_1[min(uint((_e225 - 1u)), 10u)];
+                    cuts_1[min(uint(_e223), 10u)] = _e229;
+                    uint _e230 = j_3;
+                    j_3 = (_e230 - 1u);
+                }
+            }
+            uint _e233 = j_3;
+            cuts_1[min(uint(_e233), 10u)] = c_10;
+        }
     }
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    bool loop_init_22 = true;
     while(true) {
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e123 = i_18;
-            i_18 = (_e123 + 1u);
+        if (!loop_init_22) {
+            uint _e272 = i_18;
+            i_18 = (_e272 + 1u);
         }
-        loop_init_23 = false;
-        uint _e93 = i_18;
-        if ((_e93 < 2u)) {
+        loop_init_22 = false;
+        uint _e242 = i_18;
+        if ((_e242 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e96 = i_18;
-            float _e98 = cuts_1[min(uint(_e96), 1u)];
-            uint _e100 = k_5;
-            float _e102 = g_22.gamma[min(uint(_e100), 3u)];
-            if ((_e98 > _e102)) {
-                uint _e106 = i_18;
-                float _e108 = cuts_1[min(uint(_e106), 1u)];
-                local_103 = (_e108 < AIRLIGHT_PI);
+            uint _e245 = i_18;
+            float _e247 = cuts_1[min(uint(_e245), 10u)];
+            uint _e249 = k_4;
+            float _e251 = g_22.gamma[min(uint(_e249), 12u)];
+            if ((_e247 > _e251)) {
+                uint _e255 = i_18;
+                float _e257 = cuts_1[min(uint(_e255), 10u)];
+                local_110 = (_e257 < AIRLIGHT_PI);
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            bool _e112 = local_103;
-            if (_e112) {
-                uint _e113 = k_5;
-                k_5 = (_e113 + 1u);
-                uint _e117 = k_5;
-                uint _e119 = i_18;
-                float _e121 = cuts_1[min(uint(_e119), 1u)];
-                g_22.gamma[min(uint(_e117), 3u)] = _e121;
+            bool _e261 = local_110;
+            if (_e261) {
+                uint _e262 = k_4;
+                k_4 = (_e262 + 1u);
+                uint _e266 = k_4;
+                uint _e268 = i_18;
+                float _e270 = cuts_1[min(uint(_e268), 10u)];
+                g_22.gamma[min(uint(_e266), 12u)] = _e270;
             }
         }
     }
-    uint _e126 = k_5;
-    g_22.gamma[min(uint((_e126 + 1u)), 3u)] = AIRLIGHT_PI;
-    uint _e132 = k_5;
-    g_22.panels = (_e132 + 1u);
+    uint _e275 = k_4;
+    g_22.gamma[min(uint((_e275 + 1u)), 12u)] = AIRLIGHT_PI;
+    uint _e281 = k_4;
+    g_22.panels = (_e281 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    bool loop_init_23 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e147 = i_19;
-            i_19 = (_e147 + 1u);
+        if (!loop_init_23) {
+            uint _e296 = i_19;
+            i_19 = (_e296 + 1u);
         }
-        loop_init_24 = false;
-        uint _e137 = i_19;
-        uint _e139 = g_22.panels;
-        if ((_e137 <= _e139)) {
+        loop_init_23 = false;
+        uint _e286 = i_19;
+        uint _e288 = g_22.panels;
+        if ((_e286 <= _e288)) {
         } else {
             break;
         }
         {
-            uint _e142 = i_19;
-            uint _e144 = i_19;
-            g_22.edges[min(uint(_e142), 4u)] = float(_e144);
+            uint _e291 = i_19;
+            uint _e293 = i_19;
+            g_22.edges[min(uint(_e291), 12u)] = float(_e293);
         }
     }
-    AirlightOuter _e149 = g_22;
-    const AirlightOuter airlightouter_4 = _e149;
+    AirlightOuter _e298 = g_22;
+    const AirlightOuter airlightouter_4 = _e298;
     return airlightouter_4;
+}
+
+float airlight_lobe_at(AirlightLobe q_1, float x_17)
+{
+    bool local_111 = (bool)0;
+
+    const float2 _e4 = airlight_cos_sin((0.5 * x_17));
+    float s2_ = (_e4.y * _e4.y);
+    float cos_x = (1.0 - (2.0 * s2_));
+    float sin_x = ((2.0 * _e4.y) * _e4.x);
+    float clip_ = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    float fall = (q_1.k * s2_);
+    if ((fall < 1.0)) {
+        local_111 = (clip_ > 0.0);
+    } else {
+        local_111 = false;
+    }
+    bool _e35 = local_111;
+    if (_e35) {
+        const float _e39 = airlight_log1p(-(fall));
+        return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    }
+    return 0.0;
+}
+
+float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, bool smoothstep_)
+{
+    if (smoothstep_) {
+        const float _e18 = airlight_lobe_at(q_2, (lo_3 + (((w_1 * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        return ((((w_1 * 6.0) * u_2) * (1.0 - u_2)) * _e18);
+    }
+    const float _e22 = airlight_lobe_at(q_2, (lo_3 + (w_1 * u_2)));
+    return (w_1 * _e22);
+}
+
+float airlight_arc_end(float x_18, float cut)
+{
+    float end_1 = (float)0;
+    bool local_112 = (bool)0;
+
+    end_1 = x_18;
+    float _e3 = end_1;
+    if ((_e3 > AIRLIGHT_PI)) {
+        float _e6 = end_1;
+        end_1 = (_e6 - 6.2831855);
+    }
+    float _e9 = end_1;
+    if ((_e9 < -3.1415927)) {
+        float _e12 = end_1;
+        end_1 = (_e12 + 6.2831855);
+    }
+    float _e15 = end_1;
+    float _e16 = end_1;
+    if ((_e16 > -(cut))) {
+        float _e21 = end_1;
+        local_112 = (_e21 < cut);
+    } else {
+        local_112 = false;
+    }
+    bool _e24 = local_112;
+    return (_e24 ? _e15 : 0.0);
+}
+
+float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
+{
+    bool local_113 = (bool)0;
+    float sum_5 = 0.0;
+
+    float w_7 = (hi_3 - lo_4);
+    if (!(!((w_7 > 0.0)))) {
+        const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
+        local_113 = !((_e14 > 0.0));
+    } else {
+        local_113 = true;
+    }
+    bool _e19 = local_113;
+    if (_e19) {
+        return 0.0;
+    }
+    float _e23 = sum_5;
+    const float _e25 = airlight_lobe_node(q_3, lo_4, w_7, 0.42556283, smoothstep_1);
+    const float _e27 = airlight_lobe_node(q_3, lo_4, w_7, 0.57443714, smoothstep_1);
+    sum_5 = (_e23 + (0.14776212 * (_e25 + _e27)));
+    float _e32 = sum_5;
+    const float _e34 = airlight_lobe_node(q_3, lo_4, w_7, 0.2833023, smoothstep_1);
+    const float _e36 = airlight_lobe_node(q_3, lo_4, w_7, 0.7166977, smoothstep_1);
+    sum_5 = (_e32 + (0.13463336 * (_e34 + _e36)));
+    float _e41 = sum_5;
+    const float _e43 = airlight_lobe_node(q_3, lo_4, w_7, 0.16029522, smoothstep_1);
+    const float _e45 = airlight_lobe_node(q_3, lo_4, w_7, 0.8397048, smoothstep_1);
+    sum_5 = (_e41 + (0.10954318 * (_e43 + _e45)));
+    float _e50 = sum_5;
+    const float _e52 = airlight_lobe_node(q_3, lo_4, w_7, 0.067468315, smoothstep_1);
+    const float _e54 = airlight_lobe_node(q_3, lo_4, w_7, 0.93253165, smoothstep_1);
+    sum_5 = (_e50 + (0.07472567 * (_e52 + _e54)));
+    float _e59 = sum_5;
+    const float _e61 = airlight_lobe_node(q_3, lo_4, w_7, 0.013046736, smoothstep_1);
+    const float _e63 = airlight_lobe_node(q_3, lo_4, w_7, 0.98695326, smoothstep_1);
+    sum_5 = (_e59 + (0.03333567 * (_e61 + _e63)));
+    float _e68 = sum_5;
+    return _e68;
+}
+
+AirlightLobe ConstructAirlightLobe(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6) {
+    AirlightLobe ret = (AirlightLobe)0;
+    ret.a = arg0;
+    ret.b = arg1;
+    ret.k = arg2;
+    ret.log_peak = arg3;
+    ret.cos_delta = arg4;
+    ret.sin_delta = arg5;
+    ret.exponent = arg6;
+    return ret;
+}
+
+float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n, float exponent_1)
+{
+    float reach = 1.0;
+    float3 inner = (0.0).xxx;
+
+    float c_11 = (g_23.cos_r * cs.x);
+    float d_3 = (g_23.sin_r * cs.y);
+    float peak = (c_11 + d_3);
+    if (!((peak > 0.0))) {
+        return 0.0;
+    }
+    const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
+    float sin_gap = _e20.y;
+    const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
+    AirlightLobe q_6 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_3) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    if ((exponent_1 > 0.0)) {
+        const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
+        reach = -(_e46);
+    }
+    float _e48 = reach;
+    float _e51 = reach;
+    float s2_1 = ((_e51 < q_6.k) ? (_e48 / q_6.k) : 1.0);
+    const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
+    float cut_2 = (2.0 * _e60);
+    if ((psi_n < AIRLIGHT_PI)) {
+        const float _e72 = airlight_arc_end((g_23.delta.x - psi_n), cut_2);
+        inner.y = _e72;
+        const float _e77 = airlight_arc_end((g_23.delta.x + psi_n), cut_2);
+        inner.z = _e77;
+    }
+    float _e79 = inner.y;
+    float _e81 = inner.x;
+    if ((_e79 < _e81)) {
+        float3 _e83 = inner;
+        inner = _e83.yxz;
+    }
+    float _e86 = inner.z;
+    float _e88 = inner.y;
+    if ((_e86 < _e88)) {
+        float3 _e90 = inner;
+        inner = _e90.xzy;
+    }
+    float _e93 = inner.y;
+    float _e95 = inner.x;
+    if ((_e93 < _e95)) {
+        float3 _e97 = inner;
+        inner = _e97.yxz;
+    }
+    bool smoothstep_2 = (exponent_1 < 1.0);
+    float _e103 = inner.x;
+    const float _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
+    float _e106 = inner.x;
+    float _e108 = inner.y;
+    const float _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
+    float _e112 = inner.y;
+    float _e114 = inner.z;
+    const float _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
+    float _e118 = inner.z;
+    const float _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
+    return (((_e104 + _e109) + _e115) + _e119);
 }
 
 typedef float airlight_ret_Constructarray3_float_[3];
@@ -5351,75 +5873,75 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_24)
+AirlightOuter airlight_outer(AirlightScene s_25)
 {
-    AirlightOuter g_23 = (AirlightOuter)0;
-    bool local_104 = (bool)0;
-    bool local_105 = (bool)0;
-    float s_star = 0.0;
-    float t_star = (float)0;
-    bool local_106 = (bool)0;
-    bool local_107 = (bool)0;
-    bool local_108 = (bool)0;
-    bool local_109 = (bool)0;
-    bool local_110 = (bool)0;
-    bool local_111 = (bool)0;
-    float scale = 0.0;
-    bool local_112 = (bool)0;
-    bool local_113 = (bool)0;
+    AirlightOuter g_24 = (AirlightOuter)0;
     bool local_114 = (bool)0;
     bool local_115 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
     bool local_116 = (bool)0;
-    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = {0.0, 0.0, 0.0};
-    uint i_20 = 0u;
     bool local_117 = (bool)0;
     bool local_118 = (bool)0;
     bool local_119 = (bool)0;
+    bool local_120 = (bool)0;
+    bool local_121 = (bool)0;
+    float scale = 0.0;
+    bool local_122 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
+    bool local_125 = (bool)0;
+    bool local_126 = (bool)0;
+    float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
+    uint i_20 = 0u;
+    bool local_127 = (bool)0;
+    bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
     uint n_1 = 0u;
     uint i_21 = 0u;
-    bool local_120 = (bool)0;
+    bool local_130 = (bool)0;
 
-    if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        const AirlightOuter _e4 = airlight_surface(s_24);
+    if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        const AirlightOuter _e4 = airlight_surface(s_25);
         const AirlightOuter airlightouter_5 = _e4;
         return airlightouter_5;
     }
-    const AirlightOuter _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
-    g_23 = _e6;
-    if ((s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
-        AirlightOuter _e11 = g_23;
+    const AirlightOuter _e6 = airlight_outer_point(s_25, AIRLIGHT_SEGMENT_PANELS);
+    g_24 = _e6;
+    if ((s_25.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+        AirlightOuter _e11 = g_24;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
-    float3 ab_1 = (s_24.light_end - s_24.light_position);
+    float3 ab_1 = (s_25.light_end - s_25.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_104 = (s_24.intensity == 0.0);
+        local_114 = (s_25.intensity == 0.0);
     } else {
-        local_104 = true;
+        local_114 = true;
     }
-    bool _e26 = local_104;
+    bool _e26 = local_114;
     if (!(_e26)) {
-        local_105 = (s_24.sigma_s == 0.0);
+        local_115 = (s_25.sigma_s == 0.0);
     } else {
-        local_105 = true;
+        local_115 = true;
     }
-    bool _e34 = local_105;
+    bool _e34 = local_115;
     if (_e34) {
-        g_23.outcome = 1u;
-        AirlightOuter _e37 = g_23;
+        g_24.outcome = 1u;
+        AirlightOuter _e37 = g_24;
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
     float3 e_4 = (ab_1 / (_e15).xxx);
-    const float3 _e41 = airlight_normalize(s_24.dir);
-    float3 w0_ = (s_24.light_position - s_24.origin);
+    const float3 _e41 = airlight_normalize(s_25.dir);
+    float3 w0_ = (s_25.light_position - s_25.origin);
     float cos_a_2 = dot(e_4, _e41);
     float along_e = dot(e_4, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_24.flags & 1u) != 0u);
+    bool infinite_4 = ((s_25.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -5430,115 +5952,115 @@ AirlightOuter airlight_outer(AirlightScene s_24)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_106 = (sin_a_1 > 0.0);
+        local_116 = (sin_a_1 > 0.0);
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    bool _e84 = local_106;
+    bool _e84 = local_116;
     if (_e84) {
         float _e87 = s_star;
-        local_107 = (_e87 >= 0.0);
+        local_117 = (_e87 >= 0.0);
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    bool _e91 = local_107;
+    bool _e91 = local_117;
     if (_e91) {
         float _e94 = s_star;
-        local_108 = (_e94 <= _e15);
+        local_118 = (_e94 <= _e15);
     } else {
-        local_108 = false;
+        local_118 = false;
     }
-    bool _e97 = local_108;
+    bool _e97 = local_118;
     if (_e97) {
         float _e101 = t_star;
-        local_109 = (s_24.t_min <= _e101);
+        local_119 = (s_25.t_min <= _e101);
     } else {
-        local_109 = false;
+        local_119 = false;
     }
-    bool _e104 = local_109;
+    bool _e104 = local_119;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_111 = (_e110 <= s_24.t_max);
+            local_121 = (_e110 <= s_25.t_max);
         } else {
-            local_111 = true;
+            local_121 = true;
         }
-        bool _e114 = local_111;
-        local_110 = _e114;
+        bool _e114 = local_121;
+        local_120 = _e114;
     } else {
-        local_110 = false;
+        local_120 = false;
     }
-    bool _e116 = local_110;
+    bool _e116 = local_120;
     if (_e116) {
-        g_23.outcome = 2u;
-        AirlightOuter _e119 = g_23;
+        g_24.outcome = 2u;
+        AirlightOuter _e119 = g_24;
         const AirlightOuter airlightouter_8 = _e119;
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_112 = (_e73 > 0.0);
+        local_122 = (_e73 > 0.0);
     } else {
-        local_112 = false;
+        local_122 = false;
     }
-    bool _e129 = local_112;
+    bool _e129 = local_122;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_113 = (_e136 < (_e15 + _e15));
+        local_123 = (_e136 < (_e15 + _e15));
     } else {
-        local_113 = false;
+        local_123 = false;
     }
-    bool _e140 = local_113;
+    bool _e140 = local_123;
     if (_e140) {
         float _e143 = scale;
-        local_114 = (_e143 < _e15);
+        local_124 = (_e143 < _e15);
     } else {
-        local_114 = false;
+        local_124 = false;
     }
-    bool near_1 = local_114;
+    bool near_1 = local_124;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_115 = _e154;
+        local_125 = _e154;
     } else {
-        local_115 = false;
+        local_125 = false;
     }
-    bool _e156 = local_115;
+    bool _e156 = local_125;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_116 = _e163;
+        local_126 = _e163;
     } else {
-        local_116 = false;
+        local_126 = false;
     }
-    bool _e165 = local_116;
+    bool _e165 = local_126;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_23.e = e_4;
+    g_24.e = e_4;
     float _e170 = s_star;
-    g_23.s_star = _e170;
+    g_24.s_star = _e170;
     float _e172 = scale;
-    g_23.scale = _e172;
+    g_24.scale = _e172;
     float _e178 = s_star;
-    at = airlight_Constructarray3_float_(_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
+    at = airlight_Constructarray3_float_(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
     uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    bool loop_init_24 = true;
     while(true) {
         if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
         loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (!loop_init_24) {
             uint _e229 = i_20;
             i_20 = (_e229 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_24 = false;
         uint _e189 = i_20;
         if ((_e189 < 3u)) {
         } else {
@@ -5547,21 +6069,21 @@ AirlightOuter airlight_outer(AirlightScene s_24)
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_20;
-                local_117 = (_e196 > 0u);
+                local_127 = (_e196 > 0u);
             } else {
-                local_117 = false;
+                local_127 = false;
             }
-            bool _e200 = local_117;
+            bool _e200 = local_127;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_20;
             if ((_e201 == 2u)) {
-                local_118 = infinite_4;
+                local_128 = infinite_4;
             } else {
-                local_118 = false;
+                local_128 = false;
             }
-            bool _e207 = local_118;
+            bool _e207 = local_128;
             if (_e207) {
                 continue;
             }
@@ -5570,14 +6092,14 @@ AirlightOuter airlight_outer(AirlightScene s_24)
             if ((_e210 > 0.0)) {
                 uint _e215 = i_20;
                 float _e217 = at[min(uint(_e215), 2u)];
-                local_119 = (_e217 < _e15);
+                local_129 = (_e217 < _e15);
             } else {
-                local_119 = false;
+                local_129 = false;
             }
-            bool _e220 = local_119;
+            bool _e220 = local_129;
             if (_e220) {
                 uint _e221 = i_20;
-                AirlightOuter _e223 = g_23;
+                AirlightOuter _e223 = g_24;
                 uint _e224 = i_20;
                 float _e226 = at[min(uint(_e224), 2u)];
                 const float _e227 = airlight_to_w(_e223, _e226);
@@ -5588,42 +6110,42 @@ AirlightOuter airlight_outer(AirlightScene s_24)
     float _e232 = cuts_2[1];
     float _e234 = cuts_2[0];
     if ((_e232 < _e234)) {
-        float c_11 = cuts_2[0];
+        float c_12 = cuts_2[0];
         float _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_11;
+        cuts_2[1] = c_12;
     }
     float _e243 = cuts_2[2];
     float _e245 = cuts_2[1];
     if ((_e243 < _e245)) {
-        float c_12 = cuts_2[1];
+        float c_13 = cuts_2[1];
         float _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_12;
+        cuts_2[2] = c_13;
     }
     float _e254 = cuts_2[1];
     float _e256 = cuts_2[0];
     if ((_e254 < _e256)) {
-        float c_13 = cuts_2[0];
+        float c_14 = cuts_2[0];
         float _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_13;
+        cuts_2[1] = c_14;
     }
-    AirlightOuter _e264 = g_23;
+    AirlightOuter _e264 = g_24;
     const float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_23;
+    AirlightOuter _e268 = g_24;
     const float _e270 = airlight_to_w(_e268, 0.0);
-    g_23.edges[0] = _e270;
+    g_24.edges[0] = _e270;
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    bool loop_init_25 = true;
     while(true) {
         if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (!loop_init_25) {
             uint _e304 = i_21;
             i_21 = (_e304 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_25 = false;
         uint _e275 = i_21;
         if ((_e275 < 3u)) {
         } else {
@@ -5633,30 +6155,30 @@ AirlightOuter airlight_outer(AirlightScene s_24)
             uint _e278 = i_21;
             float _e280 = cuts_2[min(uint(_e278), 2u)];
             uint _e282 = n_1;
-            float _e284 = g_23.edges[min(uint(_e282), 4u)];
+            float _e284 = g_24.edges[min(uint(_e282), 12u)];
             if ((_e280 > _e284)) {
                 uint _e288 = i_21;
                 float _e290 = cuts_2[min(uint(_e288), 2u)];
-                local_120 = (_e290 < _e265);
+                local_130 = (_e290 < _e265);
             } else {
-                local_120 = false;
+                local_130 = false;
             }
-            bool _e293 = local_120;
+            bool _e293 = local_130;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
                 uint _e300 = i_21;
                 float _e302 = cuts_2[min(uint(_e300), 2u)];
-                g_23.edges[min(uint(_e298), 4u)] = _e302;
+                g_24.edges[min(uint(_e298), 12u)] = _e302;
             }
         }
     }
     uint _e307 = n_1;
-    g_23.edges[min(uint((_e307 + 1u)), 4u)] = _e265;
+    g_24.edges[min(uint((_e307 + 1u)), 12u)] = _e265;
     uint _e312 = n_1;
-    g_23.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_23;
+    g_24.panels = (_e312 + 1u);
+    AirlightOuter _e315 = g_24;
     const AirlightOuter airlightouter_9 = _e315;
     return airlightouter_9;
 }
@@ -5668,73 +6190,82 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1) {
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_25, AirlightOuter g_24, float x_17)
+AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x_19)
 {
     AirlightScene p = (AirlightScene)0;
+    float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
 
-    p = s_25;
+    p = s_26;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        uint i_22 = min(airlight_naga_f2u32(max(floor(x_17), 0.0)), (g_24.panels - 1u));
-        float t_6 = (x_17 - float(i_22));
-        float a_28 = g_24.gamma[min(uint(i_22), 3u)];
-        float b_18 = g_24.gamma[min(uint((i_22 + 1u)), 3u)];
-        float gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
+    if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        uint i_22 = min(airlight_naga_f2u32(max(floor(x_19), 0.0)), (g_25.panels - 1u));
+        float t_6 = (x_19 - float(i_22));
+        float a_28 = g_25.gamma[min(uint(i_22), 12u)];
+        float b_18 = g_25.gamma[min(uint((i_22 + 1u)), 12u)];
+        float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
             AirlightScene _e45 = p;
             const AirlightNode airlightnode = ConstructAirlightNode(_e45, 0.0);
             return airlightnode;
         }
-        const float2 _e48 = airlight_cos_sin_half_turn(gamma);
-        const float _e53 = airlight_half_arc(g_24.cos_a, g_24.sin_a, _e48.x, _e48.y);
+        const float2 _e48 = airlight_cos_sin_half_turn(gamma_1);
+        const float _e53 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e48.x, _e48.y);
         if (!((_e53 > 0.0))) {
             AirlightScene _e57 = p;
             const AirlightNode airlightnode_1 = ConstructAirlightNode(_e57, 0.0);
             return airlightnode_1;
         }
-        const float2 _e67 = airlight_cos_sin_half_turn(_e53);
-        float arc = (2.0 * (((g_24.cos_a * _e48.x) * _e53) + ((g_24.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_24.l) + (_e48.y * g_24.u));
+        if ((s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+            const float2 _e72 = airlight_cos_sin_half_turn(_e53);
+            float arc = (2.0 * (((g_25.cos_a * _e48.x) * _e53) + ((g_25.sin_a * _e48.y) * _e72.y)));
+            weight = ((s_26.brdf_scale * 0.31830987) * arc);
+        } else {
+            float n_3 = s_26.brdf_exponent;
+            const float _e89 = airlight_lobe_arcs(g_25, _e48, gamma_1, _e53, n_3);
+            weight = (((s_26.brdf_scale * (n_3 + 2.0)) * 0.15915494) * _e89);
+        }
+        p.dir = ((_e48.x * g_25.l) + (_e48.y * g_25.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        AirlightScene _e87 = p;
-        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e87, ((((s_25.brdf_albedo * 0.31830987) * arc) * _e48.y) * jacobian));
+        AirlightScene _e105 = p;
+        float _e106 = weight;
+        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e105, ((_e106 * _e48.y) * jacobian));
         return airlightnode_2;
     }
-    if ((s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_17;
-        if ((g_24.scale > 0.0)) {
-            at_1 = (g_24.s_star + (g_24.scale * sinh(x_17)));
-            ds = (g_24.scale * cosh(x_17));
+    if ((s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+        at_1 = x_19;
+        if ((g_25.scale > 0.0)) {
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_19)));
+            ds = (g_25.scale * cosh(x_19));
         }
-        float _e115 = at_1;
-        p.light_position = (g_24.a + (_e115 * g_24.e));
-        AirlightScene _e119 = p;
-        float _e120 = ds;
-        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e119, _e120);
+        float _e130 = at_1;
+        p.light_position = (g_25.a + (_e130 * g_25.e));
+        AirlightScene _e134 = p;
+        float _e135 = ds;
+        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e134, _e135);
         return airlightnode_3;
     }
-    AirlightScene _e122 = p;
-    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e122, 1.0);
+    AirlightScene _e137 = p;
+    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e137, 1.0);
     return airlightnode_4;
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_121 = (bool)0;
+    bool local_131 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_121 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_131 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_121 = true;
+        local_131 = true;
     }
-    bool _e11 = local_121;
+    bool _e11 = local_131;
     if (_e11) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_8;
@@ -5746,16 +6277,16 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_point_integral(AirlightScene p_1)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_122 = (bool)0;
+    bool local_132 = (bool)0;
 
     const bool _e6 = airlight_vec_finite(p_1.light_position);
     if (_e6) {
         const bool _e10 = airlight_vec_finite(p_1.dir);
-        local_122 = _e10;
+        local_132 = _e10;
     } else {
-        local_122 = false;
+        local_132 = false;
     }
-    bool _e12 = local_122;
+    bool _e12 = local_132;
     if (_e12) {
         const AirlightCanonical _e13 = airlight_canonical(p_1);
         const AirlightCanonical _e14 = airlight_refined(p_1, _e13);
@@ -5768,66 +6299,66 @@ AirlightResult airlight_point_integral(AirlightScene p_1)
     return airlightresult_10;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_26)
+AirlightResult airlight_in_scatter_point(AirlightScene s_27)
 {
-    bool local_123 = (bool)0;
-    bool local_124 = (bool)0;
+    bool local_133 = (bool)0;
+    bool local_134 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_26);
+    const bool _e1 = airlight_valid(s_27);
     if (!(!(_e1))) {
-        local_123 = (s_26.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_133 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_123 = true;
+        local_133 = true;
     }
-    bool _e10 = local_123;
+    bool _e10 = local_133;
     if (!(_e10)) {
-        local_124 = (s_26.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_134 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_124 = true;
+        local_134 = true;
     }
-    bool _e18 = local_124;
+    bool _e18 = local_134;
     if (_e18) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
     }
-    const AirlightResult _e22 = airlight_point_integral(s_26);
+    const AirlightResult _e22 = airlight_point_integral(s_27);
     const AirlightResult airlightresult_12 = _e22;
     return airlightresult_12;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_27)
+AirlightResult airlight_in_scatter_route(AirlightScene s_28)
 {
-    bool local_125 = (bool)0;
-    bool local_126 = (bool)0;
+    bool local_135 = (bool)0;
+    bool local_136 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_27);
+    const bool _e1 = airlight_valid(s_28);
     if (!(!(_e1))) {
-        local_125 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_135 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_125 = true;
+        local_135 = true;
     }
-    bool _e10 = local_125;
+    bool _e10 = local_135;
     if (!(_e10)) {
-        local_126 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_136 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_126 = true;
+        local_136 = true;
     }
-    bool _e18 = local_126;
+    bool _e18 = local_136;
     if (_e18) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_13;
     }
-    const AirlightCanonical _e22 = airlight_canonical(s_27);
-    const AirlightCanonical _e23 = airlight_refined(s_27, _e22);
-    const AirlightResult _e24 = airlight_limits(s_27, _e23);
+    const AirlightCanonical _e22 = airlight_canonical(s_28);
+    const AirlightCanonical _e23 = airlight_refined(s_28, _e22);
+    const AirlightResult _e24 = airlight_limits(s_28, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult _e28 = airlight_overflowed(_e24);
         const AirlightResult airlightresult_14 = _e28;
         return airlightresult_14;
     }
-    const bool _e29 = airlight_isotropic_scene(s_27);
+    const bool _e29 = airlight_isotropic_scene(s_28);
     if (!(_e29)) {
-        const float2 _e31 = airlight_angle_route(s_27, _e23);
+        const float2 _e31 = airlight_angle_route(s_28, _e23);
         if ((_e31.x > 0.5)) {
             const AirlightResult _e40 = airlight_overflowed(ConstructAirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             const AirlightResult airlightresult_15 = _e40;
@@ -5838,7 +6369,7 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_27)
     return airlightresult_16;
 }
 
-AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5) {
+AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15) {
     AirlightPanelList ret = (AirlightPanelList)0;
     ret.panel_a = arg0;
     ret.panel_b = arg1;
@@ -5846,12 +6377,22 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
     ret.panel_d = arg3;
     ret.panel_e = arg4;
     ret.panel_f = arg5;
+    ret.panel_g = arg6;
+    ret.panel_h = arg7;
+    ret.panel_i = arg8;
+    ret.panel_j = arg9;
+    ret.panel_k = arg10;
+    ret.panel_l = arg11;
+    ret.panel_m = arg12;
+    ret.panel_n = arg13;
+    ret.panel_o = arg14;
+    ret.panel_p = arg15;
     return ret;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_28)
+AirlightResult airlight_in_scatter(AirlightScene s_29)
 {
-    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
     uint count_2 = 0u;
     float a_16 = (float)0;
     float b_12 = (float)0;
@@ -5860,24 +6401,24 @@ AirlightResult airlight_in_scatter(AirlightScene s_28)
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_6 = (float)0;
+    float k_5 = (float)0;
     float gauss = (float)0;
-    uint j_3 = (uint)0;
-    bool local_127 = (bool)0;
+    uint j_4 = (uint)0;
+    bool local_137 = (bool)0;
     float f = (float)0;
-    bool local_128 = (bool)0;
+    bool local_138 = (bool)0;
     bool split = (bool)0;
     uint tries = (uint)0;
-    bool local_129 = (bool)0;
-    bool local_130 = (bool)0;
-    bool local_131 = (bool)0;
+    bool local_139 = (bool)0;
+    bool local_140 = (bool)0;
+    bool local_141 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_28);
+    const bool _e1 = airlight_valid(s_29);
     if (!(_e1)) {
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
     }
-    const AirlightOuter _e6 = airlight_outer(s_28);
+    const AirlightOuter _e6 = airlight_outer(s_29);
     if ((_e6.outcome == 1u)) {
         const AirlightResult airlightresult_18 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_18;
@@ -5891,170 +6432,170 @@ AirlightResult airlight_in_scatter(AirlightScene s_28)
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
         if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e231 = step_2;
-            step_2 = (_e231 + 1u);
+        if (!loop_init_26) {
+            uint _e251 = step_2;
+            step_2 = (_e251 + 1u);
         }
-        loop_init_27 = false;
-        uint _e58 = step_2;
-        if ((_e58 < evaluations)) {
+        loop_init_26 = false;
+        uint _e78 = step_2;
+        if ((_e78 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e60 = a_16;
-            float _e61 = b_12;
-            float c_14 = (0.5 * (_e60 + _e61));
-            float _e65 = b_12;
-            float _e66 = a_16;
-            float hw_3 = (0.5 * (_e65 - _e66));
-            k_6 = 0.0;
+            float _e80 = a_16;
+            float _e81 = b_12;
+            float c_15 = (0.5 * (_e80 + _e81));
+            float _e85 = b_12;
+            float _e86 = a_16;
+            float hw_3 = (0.5 * (_e85 - _e86));
+            k_5 = 0.0;
             gauss = 0.0;
-            j_3 = 0u;
+            j_4 = 0u;
             uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
+            bool loop_init_27 = true;
             while(true) {
                 if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
                 loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_28) {
-                    uint _e137 = j_3;
-                    j_3 = (_e137 + 1u);
+                if (!loop_init_27) {
+                    uint _e157 = j_4;
+                    j_4 = (_e157 + 1u);
                 }
-                loop_init_28 = false;
-                uint _e76 = j_3;
-                if ((_e76 < 7u)) {
+                loop_init_27 = false;
+                uint _e96 = j_4;
+                if ((_e96 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e79 = j_3;
-                    float3 node = _e19[min(uint(airlight_naga_div(_e79, 2u)), 3u)];
-                    uint _e89 = j_3;
-                    if (((_e89 & 1u) == 0u)) {
-                        uint _e96 = j_3;
-                        local_127 = (_e96 < 6u);
+                    uint _e99 = j_4;
+                    float3 node = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
+                    uint _e109 = j_4;
+                    if (((_e109 & 1u) == 0u)) {
+                        uint _e116 = j_4;
+                        local_137 = (_e116 < 6u);
                     } else {
-                        local_127 = false;
+                        local_137 = false;
                     }
-                    bool _e100 = local_127;
-                    float w_6 = (_e100 ? (c_14 - (hw_3 * node.x)) : (c_14 + (hw_3 * node.x)));
-                    const AirlightNode _e102 = airlight_outer_node(s_28, _e6, w_6);
+                    bool _e120 = local_137;
+                    float w_8 = (_e120 ? (c_15 - (hw_3 * node.x)) : (c_15 + (hw_3 * node.x)));
+                    const AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_8);
                     f = 0.0;
-                    if ((_e102.weight != 0.0)) {
-                        const AirlightResult _e109 = airlight_point_integral(_e102.scene);
-                        if ((_e109.status == AIRLIGHT_STATUS_INFINITE)) {
-                            const AirlightResult airlightresult_20 = _e109;
+                    if ((_e122.weight != 0.0)) {
+                        const AirlightResult _e129 = airlight_point_integral(_e122.scene);
+                        if ((_e129.status == AIRLIGHT_STATUS_INFINITE)) {
+                            const AirlightResult airlightresult_20 = _e129;
                             return airlightresult_20;
                         }
-                        if ((s_28.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_128 = (s_28.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_29.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_138 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_128 = false;
+                            local_138 = false;
                         }
-                        bool _e122 = local_128;
-                        if (_e122) {
-                            const AirlightResult airlightresult_21 = _e109;
+                        bool _e142 = local_138;
+                        if (_e142) {
+                            const AirlightResult airlightresult_21 = _e129;
                             return airlightresult_21;
                         }
-                        f = (_e109.in_scatter * _e102.weight);
+                        f = (_e129.in_scatter * _e122.weight);
                     }
-                    float _e126 = k_6;
-                    float _e128 = f;
-                    k_6 = (_e126 + (node.y * _e128));
-                    float _e131 = gauss;
-                    float _e133 = f;
-                    gauss = (_e131 + (node.z * _e133));
+                    float _e146 = k_5;
+                    float _e148 = f;
+                    k_5 = (_e146 + (node.y * _e148));
+                    float _e151 = gauss;
+                    float _e153 = f;
+                    gauss = (_e151 + (node.z * _e153));
                 }
             }
-            uint _e139 = slot_1;
-            float _e140 = a_16;
-            float _e141 = b_12;
-            float _e142 = k_6;
-            float _e144 = k_6;
-            float _e146 = gauss;
-            airlight_list_set(list_1, _e139, float4(_e140, _e141, (_e142 * hw_3), abs(((_e144 * hw_3) - (_e146 * hw_3)))));
-            uint _e151 = slot_1;
-            uint _e152 = count_2;
-            if ((_e151 == _e152)) {
-                uint _e154 = count_2;
-                count_2 = (_e154 + 1u);
+            uint _e159 = slot_1;
+            float _e160 = a_16;
+            float _e161 = b_12;
+            float _e162 = k_5;
+            float _e164 = k_5;
+            float _e166 = gauss;
+            airlight_list_set(list_1, _e159, float4(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
+            uint _e171 = slot_1;
+            uint _e172 = count_2;
+            if ((_e171 == _e172)) {
+                uint _e174 = count_2;
+                count_2 = (_e174 + 1u);
             }
-            uint _e157 = count_2;
-            if ((_e157 < _e6.panels)) {
-                uint _e161 = count_2;
-                a_16 = _e6.edges[min(uint(_e161), 4u)];
-                uint _e164 = count_2;
-                b_12 = _e6.edges[min(uint((_e164 + 1u)), 4u)];
-                uint _e168 = count_2;
-                slot_1 = _e168;
+            uint _e177 = count_2;
+            if ((_e177 < _e6.panels)) {
+                uint _e181 = count_2;
+                a_16 = _e6.edges[min(uint(_e181), 12u)];
+                uint _e184 = count_2;
+                b_12 = _e6.edges[min(uint((_e184 + 1u)), 12u)];
+                uint _e188 = count_2;
+                slot_1 = _e188;
             } else {
-                bool _e169 = queued;
-                if (_e169) {
-                    float _e170 = queued_lo;
-                    a_16 = _e170;
-                    float _e171 = queued_hi;
-                    b_12 = _e171;
-                    uint _e172 = count_2;
-                    slot_1 = _e172;
+                bool _e189 = queued;
+                if (_e189) {
+                    float _e190 = queued_lo;
+                    a_16 = _e190;
+                    float _e191 = queued_hi;
+                    b_12 = _e191;
+                    uint _e192 = count_2;
+                    slot_1 = _e192;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_29 = true;
+                    bool loop_init_28 = true;
                     while(true) {
                         if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
                         loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                        if (!loop_init_29) {
-                            uint _e226 = tries;
-                            tries = (_e226 + 1u);
+                        if (!loop_init_28) {
+                            uint _e246 = tries;
+                            tries = (_e246 + 1u);
                         }
-                        loop_init_29 = false;
-                        uint _e178 = tries;
-                        if ((_e178 < _e6.max_panels)) {
+                        loop_init_28 = false;
+                        uint _e198 = tries;
+                        if ((_e198 < _e6.max_panels)) {
                         } else {
                             break;
                         }
                         {
-                            AirlightPanelList _e181 = list_1;
-                            uint _e182 = count_2;
-                            const AirlightListScan _e183 = airlight_list_scan(_e181, _e182);
-                            float total_4 = _e183.total;
-                            uint worst_1 = _e183.worst;
-                            if (!(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e194 = count_2;
-                                local_129 = (_e194 == _e6.max_panels);
+                            AirlightPanelList _e201 = list_1;
+                            uint _e202 = count_2;
+                            const AirlightListScan _e203 = airlight_list_scan(_e201, _e202);
+                            float total_4 = _e203.total;
+                            uint worst_1 = _e203.worst;
+                            if (!(!((_e203.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e214 = count_2;
+                                local_139 = (_e214 == _e6.max_panels);
                             } else {
-                                local_129 = true;
+                                local_139 = true;
                             }
-                            bool _e198 = local_129;
-                            if (!(_e198)) {
-                                const bool _e202 = airlight_is_finite(total_4);
-                                local_130 = !(_e202);
+                            bool _e218 = local_139;
+                            if (!(_e218)) {
+                                const bool _e222 = airlight_is_finite(total_4);
+                                local_140 = !(_e222);
                             } else {
-                                local_130 = true;
+                                local_140 = true;
                             }
-                            bool _e205 = local_130;
-                            if (_e205) {
+                            bool _e225 = local_140;
+                            if (_e225) {
                                 break;
                             }
-                            AirlightPanelList _e206 = list_1;
-                            const float4 _e207 = airlight_list_get(_e206, worst_1);
-                            float wa_1 = _e207.x;
-                            float wb_1 = _e207.y;
+                            AirlightPanelList _e226 = list_1;
+                            const float4 _e227 = airlight_list_get(_e226, worst_1);
+                            float wa_1 = _e227.x;
+                            float wb_1 = _e227.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_131 = (mid_3 < wb_1);
+                                local_141 = (mid_3 < wb_1);
                             } else {
-                                local_131 = false;
+                                local_141 = false;
                             }
-                            bool _e218 = local_131;
-                            if (!(_e218)) {
-                                airlight_list_set(list_1, worst_1, float4(_e207.xyz, 0.0));
+                            bool _e238 = local_141;
+                            if (!(_e238)) {
+                                airlight_list_set(list_1, worst_1, float4(_e227.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -6067,20 +6608,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_28)
                             break;
                         }
                     }
-                    bool _e228 = split;
-                    if (!(_e228)) {
+                    bool _e248 = split;
+                    if (!(_e248)) {
                         break;
                     }
                 }
             }
         }
     }
-    AirlightPanelList _e233 = list_1;
-    uint _e234 = count_2;
-    const AirlightListScan _e235 = airlight_list_scan(_e233, _e234);
-    float total_5 = _e235.total;
-    const bool _e237 = airlight_is_finite(total_5);
-    if (!(_e237)) {
+    AirlightPanelList _e253 = list_1;
+    uint _e254 = count_2;
+    const AirlightListScan _e255 = airlight_list_scan(_e253, _e254);
+    float total_5 = _e255.total;
+    const bool _e257 = airlight_is_finite(total_5);
+    if (!(_e257)) {
         const AirlightResult airlightresult_22 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_22;
     }

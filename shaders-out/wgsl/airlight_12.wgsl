@@ -18,10 +18,12 @@ struct AirlightScene {
     light_kind: u32,
     phase_kind: u32,
     flags: u32,
-    brdf_albedo: f32,
+    brdf_scale: f32,
     surface_kind: u32,
+    brdf_exponent: f32,
     light_end: vec3<f32>,
     light_shape: u32,
+    brdf_view: vec3<f32>,
 }
 
 struct AirlightResult {
@@ -63,6 +65,16 @@ struct AirlightPanelList {
     panel_d: vec4<f32>,
     panel_e: vec4<f32>,
     panel_f: vec4<f32>,
+    panel_g: vec4<f32>,
+    panel_h: vec4<f32>,
+    panel_i: vec4<f32>,
+    panel_j: vec4<f32>,
+    panel_k: vec4<f32>,
+    panel_l: vec4<f32>,
+    panel_m: vec4<f32>,
+    panel_n: vec4<f32>,
+    panel_o: vec4<f32>,
+    panel_p: vec4<f32>,
 }
 
 struct AirlightListScan {
@@ -76,7 +88,7 @@ struct AirlightOuter {
     e: vec3<f32>,
     s_star: f32,
     scale: f32,
-    edges: array<f32, 5>,
+    edges: array<f32, 13>,
     panels: u32,
     outcome: u32,
     max_panels: u32,
@@ -84,7 +96,21 @@ struct AirlightOuter {
     u: vec3<f32>,
     cos_a: f32,
     sin_a: f32,
-    gamma: array<f32, 4>,
+    gamma: array<f32, 13>,
+    cos_r: f32,
+    sin_r: f32,
+    alpha_r: f32,
+    delta: vec3<f32>,
+}
+
+struct AirlightLobe {
+    a: f32,
+    b: f32,
+    k: f32,
+    log_peak: f32,
+    cos_delta: f32,
+    sin_delta: f32,
+    exponent: f32,
 }
 
 struct AirlightNode {
@@ -121,6 +147,7 @@ const AIRLIGHT_SHAPE_POINT: u32 = 0u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = 1u;
 const AIRLIGHT_SURFACE_NONE: u32 = 0u;
 const AIRLIGHT_SURFACE_LAMBERT: u32 = 1u;
+const AIRLIGHT_SURFACE_PHONG: u32 = 2u;
 const AIRLIGHT_STATUS_OK: u32 = 0u;
 const AIRLIGHT_STATUS_INVALID: u32 = 1u;
 const AIRLIGHT_STATUS_INFINITE: u32 = 2u;
@@ -135,6 +162,9 @@ const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
 const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
 const AIRLIGHT_SURFACE_PANELS: u32 = 6u;
+const AIRLIGHT_PHONG_PANELS: u32 = 16u;
+const AIRLIGHT_OUTER_EDGES: u32 = 13u;
+const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 
 @group(0) @binding(0) 
 var<storage> airlight_records: array<AirlightScene>;
@@ -243,32 +273,21 @@ fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_log1p(x_2: f32) -> f32 {
-    var sum: f32 = 0f;
-    var k: u32 = 0u;
+    var local_1: bool;
 
-    if (x_2 > 1f) {
+    if !((x_2 > 1f)) {
+        local_1 = (x_2 < -0.5f);
+    } else {
+        local_1 = true;
+    }
+    let _e9 = local_1;
+    if _e9 {
         return log((1f + x_2));
     }
     let s_27 = (x_2 / (2f + x_2));
-    let s2_ = (s_27 * s_27);
-    loop {
-        let _e14 = k;
-        if (_e14 < 9u) {
-        } else {
-            break;
-        }
-        {
-            let _e17 = sum;
-            let _e21 = k;
-            sum = ((_e17 * s2_) + (1f / f32(((2u * (8u - _e21)) + 1u))));
-        }
-        continuing {
-            let _e31 = k;
-            k = (_e31 + 1u);
-        }
-    }
-    let _e35 = sum;
-    return ((2f * s_27) * _e35);
+    let z_11 = (s_27 * s_27);
+    let sum_6 = ((((((((((((((((z_11 / 17f) + 0.06666667f) * z_11) + 0.07692308f) * z_11) + 0.09090909f) * z_11) + 0.11111111f) * z_11) + 0.14285715f) * z_11) + 0.2f) * z_11) + 0.33333334f) * z_11) + 1f);
+    return ((2f * s_27) * sum_6);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -276,28 +295,28 @@ fn airlight_is_finite(x_3: f32) -> bool {
 }
 
 fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
-    var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_1: u32 = 0u;
+    var sum: vec2<f32> = vec2<f32>(0f, 0f);
+    var k: u32 = 0u;
 
     let _e1 = airlight_ein_coefficients();
     loop {
-        let _e8 = k_1;
+        let _e8 = k;
         if (_e8 < AIRLIGHT_E1_SERIES_TERMS) {
         } else {
             break;
         }
         {
-            let _e11 = sum_1;
+            let _e11 = sum;
             let _e12 = airlight_cmul(_e11, z_4);
-            let _e14 = k_1;
-            sum_1 = (_e12 + vec2<f32>(_e1[(12u - _e14)], 0f));
+            let _e14 = k;
+            sum = (_e12 + vec2<f32>(_e1[(12u - _e14)], 0f));
         }
         continuing {
-            let _e21 = k_1;
-            k_1 = (_e21 + 1u);
+            let _e21 = k;
+            k = (_e21 + 1u);
         }
     }
-    let _e23 = sum_1;
+    let _e23 = sum;
     let _e24 = airlight_cmul(_e23, z_4);
     return _e24;
 }
@@ -305,21 +324,21 @@ fn airlight_ein(z_4: vec2<f32>) -> vec2<f32> {
 fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> {
     var h: vec2<f32> = vec2<f32>(1f, 0f);
     var a_pow: vec2<f32> = vec2<f32>(1f, 0f);
-    var sum_2: vec2<f32> = vec2<f32>(0f, 0f);
-    var k_2: u32 = 0u;
+    var sum_1: vec2<f32> = vec2<f32>(0f, 0f);
+    var k_1: u32 = 0u;
 
     let _e2 = airlight_ein_coefficients();
     loop {
-        let _e17 = k_2;
+        let _e17 = k_1;
         if (_e17 < AIRLIGHT_EIN_DD_TERMS) {
         } else {
             break;
         }
         {
-            let _e20 = sum_2;
+            let _e20 = sum_1;
             let _e21 = h;
-            let _e22 = k_2;
-            sum_2 = (_e20 + (_e21 * _e2[_e22]));
+            let _e22 = k_1;
+            sum_1 = (_e20 + (_e21 * _e2[_e22]));
             let _e26 = a_pow;
             let _e27 = airlight_cmul(_e26, a_2);
             a_pow = _e27;
@@ -329,18 +348,18 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
             h = (_e29 + _e30);
         }
         continuing {
-            let _e33 = k_2;
-            k_2 = (_e33 + 1u);
+            let _e33 = k_1;
+            k_1 = (_e33 + 1u);
         }
     }
-    let _e35 = sum_2;
+    let _e35 = sum_1;
     return _e35;
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_18 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_20 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_18 * x_18) + (y_5 * y_5)) < 1f);
+    return (((x_20 * x_20) + (y_5 * y_5)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -769,8 +788,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_19 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_19 * x_19) * (3f - (2f * x_19)));
+            let x_21 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_21 * x_21) * (3f - (2f * x_21)));
         }
         default: {
             return 1f;
@@ -939,35 +958,35 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
 }
 
 fn airlight_is_short(half_1: AirlightHalf) -> bool {
-    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
     var local_4: bool;
+    var local_5: bool;
 
     if !(half_1.dv_infinite) {
-        local_1 = ((half_1.big_h * half_1.dv) <= 1f);
-    } else {
-        local_1 = false;
-    }
-    let short_exp = local_1;
-    if (half_1.dy <= 0.25f) {
-        if !(!(half_1.second)) {
-            local_3 = (half_1.dy <= (half_1.y_lo * 0.5f));
-        } else {
-            local_3 = true;
-        }
-        let _e28 = local_3;
-        local_2 = _e28;
+        local_2 = ((half_1.big_h * half_1.dv) <= 1f);
     } else {
         local_2 = false;
     }
-    let short_len = local_2;
-    if short_exp {
-        local_4 = short_len;
+    let short_exp = local_2;
+    if (half_1.dy <= 0.25f) {
+        if !(!(half_1.second)) {
+            local_4 = (half_1.dy <= (half_1.y_lo * 0.5f));
+        } else {
+            local_4 = true;
+        }
+        let _e28 = local_4;
+        local_3 = _e28;
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    let _e34 = local_4;
+    let short_len = local_3;
+    if short_exp {
+        local_5 = short_len;
+    } else {
+        local_5 = false;
+    }
+    let _e34 = local_5;
     return _e34;
 }
 
@@ -979,42 +998,42 @@ fn airlight_hypot_one(a_3: f32) -> f32 {
 }
 
 fn airlight_is_near(big_h: f32, v_e: f32, v_e_infinite: bool) -> bool {
-    var local_5: bool;
     var local_6: bool;
+    var local_7: bool;
 
     if !((big_h == 0f)) {
         if !(v_e_infinite) {
             let _e11 = airlight_hypot_one(v_e);
-            local_6 = ((big_h * _e11) <= 1f);
+            local_7 = ((big_h * _e11) <= 1f);
         } else {
-            local_6 = false;
+            local_7 = false;
         }
-        let _e16 = local_6;
-        local_5 = _e16;
+        let _e16 = local_7;
+        local_6 = _e16;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    let _e18 = local_5;
+    let _e18 = local_6;
     return _e18;
 }
 
 fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
     var v_e_1: f32;
-    var local_7: bool;
+    var local_8: bool;
     var d_im: f32 = 0f;
     var d_re: f32 = 0f;
-    var local_8: bool;
+    var local_9: bool;
 
     let big_h_4 = half_2.big_h;
     let v_s_1 = select(half_2.y_lo, (1f / half_2.y_hi), half_2.second);
     let v_e_infinite_1 = half_2.dv_infinite;
     v_e_1 = half_2.y_hi;
     if half_2.second {
-        local_7 = !(v_e_infinite_1);
+        local_8 = !(v_e_infinite_1);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    let _e16 = local_7;
+    let _e16 = local_8;
     if _e16 {
         v_e_1 = (1f / half_2.y_lo);
     }
@@ -1026,10 +1045,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_20 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_20);
+            let x_22 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_22);
             if _e42 {
-                let _e43 = airlight_log1p(x_20);
+                let _e43 = airlight_log1p(x_22);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1059,11 +1078,11 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
     if !(v_e_infinite_1) {
         let _e95 = v_e_1;
         let _e97 = airlight_is_finite((big_h_4 * _e95));
-        local_8 = _e97;
+        local_9 = _e97;
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    let _e99 = local_8;
+    let _e99 = local_9;
     if _e99 {
         let decay_1 = exp((-(big_h_4) * half_2.dv));
         if (decay_1 > 0.000000029802322f) {
@@ -1089,44 +1108,44 @@ fn airlight_moment_zero(half_3: AirlightHalf) -> f32 {
 }
 
 fn airlight_moment_zero_weighted(half_4: AirlightHalf, x_6: f32) -> vec2<f32> {
-    var local_9: bool;
     var local_10: bool;
     var local_11: bool;
     var local_12: bool;
-    var far_end: f32 = 0f;
     var local_13: bool;
+    var far_end: f32 = 0f;
     var local_14: bool;
+    var local_15: bool;
 
     let big_h_5 = half_4.big_h;
     let v_s_2 = half_4.y_lo;
     let z_s_1 = vec2<f32>((big_h_5 * v_s_2), -(big_h_5));
     if !(half_4.second) {
-        local_9 = (half_4.dy > 0f);
-    } else {
-        local_9 = false;
-    }
-    let _e15 = local_9;
-    if _e15 {
-        let _e18 = airlight_is_short(half_4);
-        local_10 = !(_e18);
+        local_10 = (half_4.dy > 0f);
     } else {
         local_10 = false;
     }
-    let _e21 = local_10;
-    if _e21 {
-        let _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
-        local_11 = !(_e26);
+    let _e15 = local_10;
+    if _e15 {
+        let _e18 = airlight_is_short(half_4);
+        local_11 = !(_e18);
     } else {
         local_11 = false;
     }
-    let far_route = local_11;
+    let _e21 = local_11;
+    if _e21 {
+        let _e26 = airlight_is_near(big_h_5, half_4.y_hi, half_4.dv_infinite);
+        local_12 = !(_e26);
+    } else {
+        local_12 = false;
+    }
+    let far_route = local_12;
     if !(!(far_route)) {
         let _e34 = airlight_in_series_region(z_s_1);
-        local_12 = !(_e34);
+        local_13 = !(_e34);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e37 = local_12;
+    let _e37 = local_13;
     if _e37 {
         let _e38 = airlight_moment_zero(half_4);
         return vec2<f32>(_e38, x_6);
@@ -1138,17 +1157,17 @@ fn airlight_moment_zero_weighted(half_4: AirlightHalf, x_6: f32) -> vec2<f32> {
     let v_e_3 = half_4.y_hi;
     if !(half_4.dv_infinite) {
         let _e56 = airlight_is_finite((big_h_5 * v_e_3));
-        local_13 = _e56;
-    } else {
-        local_13 = false;
-    }
-    let _e58 = local_13;
-    if _e58 {
-        local_14 = ((big_h_5 * half_4.dv) < 17.32868f);
+        local_14 = _e56;
     } else {
         local_14 = false;
     }
-    let _e66 = local_14;
+    let _e58 = local_14;
+    if _e58 {
+        local_15 = ((big_h_5 * half_4.dv) < 17.32868f);
+    } else {
+        local_15 = false;
+    }
+    let _e66 = local_15;
     if _e66 {
         let _e73 = airlight_e1_scaled(vec2<f32>((big_h_5 * v_e_3), -(big_h_5)));
         far_end = (exp((-(big_h_5) * v_e_3)) * _e73.y);
@@ -1162,8 +1181,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_21 = rule[(i_3 / 2u)].x;
-    return select(x_21, -(x_21), ((i_3 % 2u) == 0u));
+    let x_23 = rule[(i_3 / 2u)].x;
+    return select(x_23, -(x_23), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_5: array<f32, 12>) -> array<f32, 12> {
@@ -1183,30 +1202,34 @@ fn airlight_legendre(g_5: array<f32, 12>) -> array<f32, 12> {
 }
 
 fn airlight_expm1_(x_7: f32) -> f32 {
-    var sum_3: f32 = 1f;
-    var i_4: u32 = 0u;
+    var sum_2: f32;
 
     if (abs(x_7) >= 0.5f) {
         return (exp(x_7) - 1f);
     }
-    loop {
-        let _e11 = i_4;
-        if (_e11 < 11u) {
-        } else {
-            break;
-        }
-        {
-            let _e14 = sum_3;
-            let _e17 = i_4;
-            sum_3 = (1f + ((x_7 * _e14) / f32((12u - _e17))));
-        }
-        continuing {
-            let _e24 = i_4;
-            i_4 = (_e24 + 1u);
-        }
-    }
-    let _e26 = sum_3;
-    return (x_7 * _e26);
+    sum_2 = (1f + (x_7 / 12f));
+    let _e12 = sum_2;
+    sum_2 = (1f + ((x_7 * _e12) / 11f));
+    let _e18 = sum_2;
+    sum_2 = (1f + ((x_7 * _e18) / 10f));
+    let _e24 = sum_2;
+    sum_2 = (1f + ((x_7 * _e24) / 9f));
+    let _e30 = sum_2;
+    sum_2 = (1f + ((x_7 * _e30) / 8f));
+    let _e36 = sum_2;
+    sum_2 = (1f + ((x_7 * _e36) / 7f));
+    let _e42 = sum_2;
+    sum_2 = (1f + ((x_7 * _e42) / 6f));
+    let _e48 = sum_2;
+    sum_2 = (1f + ((x_7 * _e48) / 5f));
+    let _e54 = sum_2;
+    sum_2 = (1f + ((x_7 * _e54) / 4f));
+    let _e60 = sum_2;
+    sum_2 = (1f + ((x_7 * _e60) / 3f));
+    let _e66 = sum_2;
+    sum_2 = (1f + ((x_7 * _e66) / 2f));
+    let _e72 = sum_2;
+    return (x_7 * _e72);
 }
 
 fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
@@ -1217,7 +1240,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
     var cur: f32 = 0.00000000000000000001f;
     var below: f32 = 0f;
     var odd: f32;
-    var i_5: u32 = 0u;
+    var i_4: u32 = 0u;
 
     let _e1 = airlight_zero_terms();
     out_1 = _e1;
@@ -1240,8 +1263,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_22 = (lambda / f32((2u * k0_)));
-            let per_step = (x_22 * x_22);
+            let x_24 = (lambda / f32((2u * k0_)));
+            let per_step = (x_24 * x_24);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1266,13 +1289,13 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
             let top = ((k0_ + _e55) + 2u);
             odd = f32(((2u * top) + 1u));
             loop {
-                let _e73 = i_5;
+                let _e73 = i_4;
                 if (_e73 < 54u) {
                 } else {
                     break;
                 }
                 {
-                    let _e76 = i_5;
+                    let _e76 = i_4;
                     if ((_e76 + AIRLIGHT_TERMS) > top) {
                         break;
                     }
@@ -1295,8 +1318,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
                     }
                 }
                 continuing {
-                    let _e100 = i_5;
-                    i_5 = (_e100 + 1u);
+                    let _e100 = i_4;
+                    i_4 = (_e100 + 1u);
                 }
             }
             let _e103 = cur;
@@ -1737,11 +1760,11 @@ fn airlight_tail_estimate(c_1: array<f32, 12>) -> f32 {
 }
 
 fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) -> f32 {
-    var local_15: bool;
+    var local_16: bool;
     var aliasing: f32 = 0f;
     var c_max: f32 = 0f;
     var aliasing_1: f32 = 1f;
-    var i_6: u32 = 0u;
+    var i_5: u32 = 0u;
 
     if !((m_1[0] > 0f)) {
         return 1f;
@@ -1749,56 +1772,56 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     let last = (abs(c_2[11]) + abs(c_2[10]));
     let before = (abs(c_2[9]) + abs(c_2[8]));
     if !(!((before > 0f))) {
-        local_15 = !((last < before));
+        local_16 = !((last < before));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    let _e27 = local_15;
+    let _e27 = local_16;
     if _e27 {
         return 1f;
     }
     let measured = sqrt((last / before));
-    let q_1 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_4 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if (q_1 < 1f) {
+    if (q_4 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_1) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_4) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_1) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_4) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_1) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_4) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_1) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_4) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_1) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_4) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_1) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_4) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_1) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_4) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_1) + abs(m_1[7])), true);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_4) + abs(m_1[7])), true);
         let _e133 = aliasing;
         let _e137 = aliasing;
-        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_1) + abs(m_1[8])), true);
+        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_4) + abs(m_1[8])), true);
         let _e144 = aliasing;
         let _e148 = aliasing;
-        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_1) + abs(m_1[9])), true);
+        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_4) + abs(m_1[9])), true);
         let _e155 = aliasing;
         let _e159 = aliasing;
-        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_1) + abs(m_1[10])), true);
+        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_4) + abs(m_1[10])), true);
         let _e166 = aliasing;
         let _e170 = aliasing;
-        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_1) + abs(m_1[11])), false);
+        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_4) + abs(m_1[11])), false);
         let _e177 = aliasing;
-        return min(((_e177 + (q_1 * truncation)) / m_1[0]), 1f);
+        return min(((_e177 + (q_4 * truncation)) / m_1[0]), 1f);
     }
     let _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -1827,7 +1850,7 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     let _e236 = c_max;
     let power = select(3u, 2u, (_e236 > (1.2f * abs(c_2[0]))));
     loop {
-        let _e247 = i_6;
+        let _e247 = i_5;
         if (_e247 < power) {
         } else {
             break;
@@ -1837,8 +1860,8 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
             aliasing_1 = (_e249 * measured);
         }
         continuing {
-            let _e252 = i_6;
-            i_6 = (_e252 + 1u);
+            let _e252 = i_5;
+            i_5 = (_e252 + 1u);
         }
     }
     let _e254 = aliasing_1;
@@ -1863,8 +1886,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_23 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_23)), (x_23 > 0f));
+    let x_25 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_25)), (x_25 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1898,8 +1921,8 @@ fn airlight_v_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, ha
     var f_max_1: f32 = 0f;
     var over_max: f32 = 0f;
     var g_avg: f32 = 0f;
-    var i_7: u32 = 0u;
-    var sum_4: f32 = 0f;
+    var i_6: u32 = 0u;
+    var sum_3: f32 = 0f;
 
     let _e8 = airlight_gauss_rule();
     r_2 = ((b_4 - a_5) * 0.5f);
@@ -1913,7 +1936,7 @@ fn airlight_v_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, ha
     let _e26 = airlight_zero_terms();
     samples = _e26;
     loop {
-        let _e36 = i_7;
+        let _e36 = i_6;
         if (_e36 < AIRLIGHT_TERMS) {
         } else {
             break;
@@ -1921,73 +1944,73 @@ fn airlight_v_panel(s_4: AirlightScene, g_6: AirlightCanonical, sigma_4: f32, ha
         {
             let _e39 = vc;
             let _e40 = r_2;
-            let _e41 = i_7;
+            let _e41 = i_6;
             let _e42 = airlight_node(_e8, _e41);
             let v_6 = (_e39 + (_e40 * _e42));
             let _e48 = airlight_integrand_over(s_4, g_6, select(sigma_4, -(sigma_4), half_6.second), v_6);
             let fy = _e48.x;
             let over = _e48.y;
-            let _e51 = i_7;
+            let _e51 = i_6;
             samples[_e51] = (fy * over);
             let _e54 = f_max_1;
             f_max_1 = max(_e54, abs(fy));
             let _e57 = over_max;
             over_max = max(_e57, over);
             let _e59 = g_avg;
-            let _e60 = i_7;
-            let _e67 = i_7;
+            let _e60 = i_6;
+            let _e67 = i_6;
             let _e69 = samples[_e67];
             g_avg = (_e59 + ((_e8[(_e60 / 2u)].y * 0.5f) * abs(_e69)));
         }
         continuing {
-            let _e74 = i_7;
-            i_7 = (_e74 + 1u);
+            let _e74 = i_6;
+            i_6 = (_e74 + 1u);
         }
     }
     let _e76 = samples;
     let _e77 = airlight_legendre(_e76);
     let _e79 = r_2;
     let _e81 = airlight_exp_legendre_moments((half_6.big_h * _e79));
-    let _e84 = sum_4;
-    sum_4 = (_e84 + (_e77[0] * _e81[0]));
-    let _e89 = sum_4;
-    sum_4 = (_e89 + (_e77[1] * _e81[1]));
-    let _e94 = sum_4;
-    sum_4 = (_e94 + (_e77[2] * _e81[2]));
-    let _e99 = sum_4;
-    sum_4 = (_e99 + (_e77[3] * _e81[3]));
-    let _e104 = sum_4;
-    sum_4 = (_e104 + (_e77[4] * _e81[4]));
-    let _e109 = sum_4;
-    sum_4 = (_e109 + (_e77[5] * _e81[5]));
-    let _e114 = sum_4;
-    sum_4 = (_e114 + (_e77[6] * _e81[6]));
-    let _e119 = sum_4;
-    sum_4 = (_e119 + (_e77[7] * _e81[7]));
-    let _e124 = sum_4;
-    sum_4 = (_e124 + (_e77[8] * _e81[8]));
-    let _e129 = sum_4;
-    sum_4 = (_e129 + (_e77[9] * _e81[9]));
-    let _e134 = sum_4;
-    sum_4 = (_e134 + (_e77[10] * _e81[10]));
-    let _e139 = sum_4;
-    sum_4 = (_e139 + (_e77[11] * _e81[11]));
+    let _e84 = sum_3;
+    sum_3 = (_e84 + (_e77[0] * _e81[0]));
+    let _e89 = sum_3;
+    sum_3 = (_e89 + (_e77[1] * _e81[1]));
+    let _e94 = sum_3;
+    sum_3 = (_e94 + (_e77[2] * _e81[2]));
+    let _e99 = sum_3;
+    sum_3 = (_e99 + (_e77[3] * _e81[3]));
+    let _e104 = sum_3;
+    sum_3 = (_e104 + (_e77[4] * _e81[4]));
+    let _e109 = sum_3;
+    sum_3 = (_e109 + (_e77[5] * _e81[5]));
+    let _e114 = sum_3;
+    sum_3 = (_e114 + (_e77[6] * _e81[6]));
+    let _e119 = sum_3;
+    sum_3 = (_e119 + (_e77[7] * _e81[7]));
+    let _e124 = sum_3;
+    sum_3 = (_e124 + (_e77[8] * _e81[8]));
+    let _e129 = sum_3;
+    sum_3 = (_e129 + (_e77[9] * _e81[9]));
+    let _e134 = sum_3;
+    sum_3 = (_e134 + (_e77[10] * _e81[10]));
+    let _e139 = sum_3;
+    sum_3 = (_e139 + (_e77[11] * _e81[11]));
     let _e144 = airlight_factor(half_6, a_5, b_4);
     let _e145 = r_2;
-    let w = (_e144 * _e145);
-    let mass_5 = (w * _e81[0]);
+    let w_1 = (_e144 * _e145);
+    let mass_5 = (w_1 * _e81[0]);
     let _e149 = vc;
     let _e150 = r_2;
     let _e152 = airlight_singular_floor(heights_1, steps_2, _e149, _e150, false);
     let _e153 = airlight_tail_estimate(_e77);
     let _e155 = airlight_error_factor(_e77, _e81, _e152);
     let error_1 = ((mass_5 * _e153) * _e155);
-    let _e157 = sum_4;
+    let _e157 = sum_3;
     let _e159 = g_avg;
     let _e160 = airlight_transform_noise(mass_5, _e159);
     let _e161 = over_max;
     let _e163 = f_max_1;
-    let _e164 = airlight_panel_result((w * _e157), error_1, _e160, (mass_5 * _e161), _e163);
+    let _e164 = airlight_panel_result((w_1 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
     return _e164;
 }
 
@@ -1997,7 +2020,7 @@ fn airlight_y_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, ha
     var over_max_1: f32 = 0f;
     var mass_1: f32 = 0f;
     var p_avg: f32 = 0f;
-    var i_8: u32 = 0u;
+    var i_7: u32 = 0u;
     var m_2: array<f32, 12>;
 
     let _e8 = airlight_gauss_rule();
@@ -2006,42 +2029,42 @@ fn airlight_y_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, ha
     let _e13 = airlight_zero_terms();
     samples_1 = _e13;
     loop {
-        let _e25 = i_8;
+        let _e25 = i_7;
         if (_e25 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e28 = i_8;
+            let _e28 = i_7;
             let _e29 = airlight_node(_e8, _e28);
             let y_7 = (yc_1 + (r_9 * _e29));
-            let weight = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
+            let weight_1 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
             let _e41 = airlight_integrand(s_5, g_7, sigma_5, y_7);
             let over_1 = (1f / (1f + (y_7 * y_7)));
-            let _e47 = i_8;
-            samples_1[_e47] = ((_e41 * over_1) * weight);
+            let _e47 = i_7;
+            samples_1[_e47] = ((_e41 * over_1) * weight_1);
             let _e51 = f_max_2;
             f_max_2 = max(_e51, abs(_e41));
             let _e54 = over_max_1;
             over_max_1 = max(_e54, over_1);
             let _e56 = mass_1;
-            let _e57 = i_8;
-            mass_1 = (_e56 + (_e8[(_e57 / 2u)].y * weight));
+            let _e57 = i_7;
+            mass_1 = (_e56 + (_e8[(_e57 / 2u)].y * weight_1));
             let _e64 = p_avg;
-            let _e65 = i_8;
-            let _e72 = i_8;
+            let _e65 = i_7;
+            let _e72 = i_7;
             let _e74 = samples_1[_e72];
             p_avg = (_e64 + ((_e8[(_e65 / 2u)].y * 0.5f) * abs(_e74)));
         }
         continuing {
-            let _e79 = i_8;
-            i_8 = (_e79 + 1u);
+            let _e79 = i_7;
+            i_7 = (_e79 + 1u);
         }
     }
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
     let _e83 = airlight_factor(half_7, a_6, b_5);
-    let w_1 = (_e83 * r_9);
+    let w_2 = (_e83 * r_9);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2f;
@@ -2049,13 +2072,13 @@ fn airlight_y_panel(s_5: AirlightScene, g_7: AirlightCanonical, sigma_5: f32, ha
     let _e93 = airlight_tail_estimate(_e82);
     let _e95 = m_2;
     let _e96 = airlight_error_factor(_e82, _e95, _e90);
-    let error_2 = (((w_1 * 2f) * _e93) * _e96);
+    let error_2 = (((w_2 * 2f) * _e93) * _e96);
     let _e104 = p_avg;
-    let _e105 = airlight_transform_noise((w_1 * 2f), _e104);
+    let _e105 = airlight_transform_noise((w_2 * 2f), _e104);
     let _e106 = mass_1;
     let _e108 = over_max_1;
     let _e110 = f_max_2;
-    let _e111 = airlight_panel_result(((w_1 * 2f) * _e82[0]), error_2, _e105, ((w_1 * _e106) * _e108), _e110);
+    let _e111 = airlight_panel_result(((w_2 * 2f) * _e82[0]), error_2, _e105, ((w_2 * _e106) * _e108), _e110);
     return _e111;
 }
 
@@ -2156,14 +2179,14 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     var samples_2: array<f32, 12>;
     var f_max_3: f32 = 0f;
     var g_avg_1: f32 = 0f;
-    var i_9: u32 = 0u;
+    var i_8: u32 = 0u;
     var q: array<f32, 12>;
     var s_a: array<f32, 14> = array<f32, 14>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    var local_16: bool;
+    var local_17: bool;
     var decay: f32 = 0f;
     var ab: f32 = 0f;
     var mass_2: f32;
-    var sum_5: f32;
+    var sum_4: f32;
     var ratio_1: f32;
     var l_prev: f32 = 0f;
     var l_cur: f32 = 1f;
@@ -2176,29 +2199,29 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let _e11 = airlight_zero_terms();
     samples_2 = _e11;
     loop {
-        let _e19 = i_9;
+        let _e19 = i_8;
         if (_e19 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e22 = i_9;
+            let _e22 = i_8;
             let _e23 = airlight_node(_e6, _e22);
             let y_8 = (yc_2 + (r_10 * _e23));
             let _e26 = airlight_integrand(s_6, g_8, sigma_6, y_8);
-            let _e27 = i_9;
+            let _e27 = i_8;
             samples_2[_e27] = (_e26 / (1f + (y_8 * y_8)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
-            let _e37 = i_9;
-            let _e44 = i_9;
+            let _e37 = i_8;
+            let _e44 = i_8;
             let _e46 = samples_2[_e44];
             g_avg_1 = (_e36 + ((_e6[(_e37 / 2u)].y * 0.5f) * abs(_e46)));
         }
         continuing {
-            let _e51 = i_9;
-            i_9 = (_e51 + 1u);
+            let _e51 = i_8;
+            i_8 = (_e51 + 1u);
         }
     }
     let _e53 = samples_2;
@@ -2356,11 +2379,11 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let _e615 = airlight_en_scaled((big_h_6 / b_6));
     if (a_7 > 0f) {
         let _e637 = airlight_is_finite((big_h_6 / a_7));
-        local_16 = _e637;
+        local_17 = _e637;
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    let far_1 = local_16;
+    let far_1 = local_17;
     if far_1 {
         decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
@@ -2382,129 +2405,129 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let mass_u = ((b_6 * _e615[1]) - select(0f, ((_e665 * a_7) * _e668), (_e670 > 0f)));
     mass_2 = mass_u;
     let _e678 = q[0];
-    sum_5 = (_e678 * mass_u);
+    sum_4 = (_e678 * mass_u);
     let _e681 = ab;
     ratio_1 = _e681;
-    let _e683 = sum_5;
+    let _e683 = sum_4;
     let _e685 = q[1];
     let _e688 = decay;
     let _e690 = ratio_1;
     let _e693 = s_a[2];
     let _e695 = decay;
-    sum_5 = (_e683 + (_e685 * ((b_6 * _e615[2]) - select(0f, (((_e688 * a_7) * _e690) * _e693), (_e695 > 0f)))));
+    sum_4 = (_e683 + (_e685 * ((b_6 * _e615[2]) - select(0f, (((_e688 * a_7) * _e690) * _e693), (_e695 > 0f)))));
     let _e703 = ratio_1;
     let _e704 = ab;
     ratio_1 = (_e703 * _e704);
-    let _e706 = sum_5;
+    let _e706 = sum_4;
     let _e708 = q[2];
     let _e711 = decay;
     let _e713 = ratio_1;
     let _e716 = s_a[3];
     let _e718 = decay;
-    sum_5 = (_e706 + (_e708 * ((b_6 * _e615[3]) - select(0f, (((_e711 * a_7) * _e713) * _e716), (_e718 > 0f)))));
+    sum_4 = (_e706 + (_e708 * ((b_6 * _e615[3]) - select(0f, (((_e711 * a_7) * _e713) * _e716), (_e718 > 0f)))));
     let _e726 = ratio_1;
     let _e727 = ab;
     ratio_1 = (_e726 * _e727);
-    let _e729 = sum_5;
+    let _e729 = sum_4;
     let _e731 = q[3];
     let _e734 = decay;
     let _e736 = ratio_1;
     let _e739 = s_a[4];
     let _e741 = decay;
-    sum_5 = (_e729 + (_e731 * ((b_6 * _e615[4]) - select(0f, (((_e734 * a_7) * _e736) * _e739), (_e741 > 0f)))));
+    sum_4 = (_e729 + (_e731 * ((b_6 * _e615[4]) - select(0f, (((_e734 * a_7) * _e736) * _e739), (_e741 > 0f)))));
     let _e749 = ratio_1;
     let _e750 = ab;
     ratio_1 = (_e749 * _e750);
-    let _e752 = sum_5;
+    let _e752 = sum_4;
     let _e754 = q[4];
     let _e757 = decay;
     let _e759 = ratio_1;
     let _e762 = s_a[5];
     let _e764 = decay;
-    sum_5 = (_e752 + (_e754 * ((b_6 * _e615[5]) - select(0f, (((_e757 * a_7) * _e759) * _e762), (_e764 > 0f)))));
+    sum_4 = (_e752 + (_e754 * ((b_6 * _e615[5]) - select(0f, (((_e757 * a_7) * _e759) * _e762), (_e764 > 0f)))));
     let _e772 = ratio_1;
     let _e773 = ab;
     ratio_1 = (_e772 * _e773);
-    let _e775 = sum_5;
+    let _e775 = sum_4;
     let _e777 = q[5];
     let _e780 = decay;
     let _e782 = ratio_1;
     let _e785 = s_a[6];
     let _e787 = decay;
-    sum_5 = (_e775 + (_e777 * ((b_6 * _e615[6]) - select(0f, (((_e780 * a_7) * _e782) * _e785), (_e787 > 0f)))));
+    sum_4 = (_e775 + (_e777 * ((b_6 * _e615[6]) - select(0f, (((_e780 * a_7) * _e782) * _e785), (_e787 > 0f)))));
     let _e795 = ratio_1;
     let _e796 = ab;
     ratio_1 = (_e795 * _e796);
-    let _e798 = sum_5;
+    let _e798 = sum_4;
     let _e800 = q[6];
     let _e803 = decay;
     let _e805 = ratio_1;
     let _e808 = s_a[7];
     let _e810 = decay;
-    sum_5 = (_e798 + (_e800 * ((b_6 * _e615[7]) - select(0f, (((_e803 * a_7) * _e805) * _e808), (_e810 > 0f)))));
+    sum_4 = (_e798 + (_e800 * ((b_6 * _e615[7]) - select(0f, (((_e803 * a_7) * _e805) * _e808), (_e810 > 0f)))));
     let _e818 = ratio_1;
     let _e819 = ab;
     ratio_1 = (_e818 * _e819);
-    let _e821 = sum_5;
+    let _e821 = sum_4;
     let _e823 = q[7];
     let _e826 = decay;
     let _e828 = ratio_1;
     let _e831 = s_a[8];
     let _e833 = decay;
-    sum_5 = (_e821 + (_e823 * ((b_6 * _e615[8]) - select(0f, (((_e826 * a_7) * _e828) * _e831), (_e833 > 0f)))));
+    sum_4 = (_e821 + (_e823 * ((b_6 * _e615[8]) - select(0f, (((_e826 * a_7) * _e828) * _e831), (_e833 > 0f)))));
     let _e841 = ratio_1;
     let _e842 = ab;
     ratio_1 = (_e841 * _e842);
-    let _e844 = sum_5;
+    let _e844 = sum_4;
     let _e846 = q[8];
     let _e849 = decay;
     let _e851 = ratio_1;
     let _e854 = s_a[9];
     let _e856 = decay;
-    sum_5 = (_e844 + (_e846 * ((b_6 * _e615[9]) - select(0f, (((_e849 * a_7) * _e851) * _e854), (_e856 > 0f)))));
+    sum_4 = (_e844 + (_e846 * ((b_6 * _e615[9]) - select(0f, (((_e849 * a_7) * _e851) * _e854), (_e856 > 0f)))));
     let _e864 = ratio_1;
     let _e865 = ab;
     ratio_1 = (_e864 * _e865);
-    let _e867 = sum_5;
+    let _e867 = sum_4;
     let _e869 = q[9];
     let _e872 = decay;
     let _e874 = ratio_1;
     let _e877 = s_a[10];
     let _e879 = decay;
-    sum_5 = (_e867 + (_e869 * ((b_6 * _e615[10]) - select(0f, (((_e872 * a_7) * _e874) * _e877), (_e879 > 0f)))));
+    sum_4 = (_e867 + (_e869 * ((b_6 * _e615[10]) - select(0f, (((_e872 * a_7) * _e874) * _e877), (_e879 > 0f)))));
     let _e887 = ratio_1;
     let _e888 = ab;
     ratio_1 = (_e887 * _e888);
-    let _e890 = sum_5;
+    let _e890 = sum_4;
     let _e892 = q[10];
     let _e895 = decay;
     let _e897 = ratio_1;
     let _e900 = s_a[11];
     let _e902 = decay;
-    sum_5 = (_e890 + (_e892 * ((b_6 * _e615[11]) - select(0f, (((_e895 * a_7) * _e897) * _e900), (_e902 > 0f)))));
+    sum_4 = (_e890 + (_e892 * ((b_6 * _e615[11]) - select(0f, (((_e895 * a_7) * _e897) * _e900), (_e902 > 0f)))));
     let _e910 = ratio_1;
     let _e911 = ab;
     ratio_1 = (_e910 * _e911);
-    let _e913 = sum_5;
+    let _e913 = sum_4;
     let _e915 = q[11];
     let _e918 = decay;
     let _e920 = ratio_1;
     let _e923 = s_a[12];
     let _e925 = decay;
-    sum_5 = (_e913 + (_e915 * ((b_6 * _e615[12]) - select(0f, (((_e918 * a_7) * _e920) * _e923), (_e925 > 0f)))));
+    sum_4 = (_e913 + (_e915 * ((b_6 * _e615[12]) - select(0f, (((_e918 * a_7) * _e920) * _e923), (_e925 > 0f)))));
     let _e933 = ratio_1;
     let _e934 = ab;
     ratio_1 = (_e933 * _e934);
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_24 = (abs(alpha) + abs(beta));
+    let x_26 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_24) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_26) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2514,7 +2537,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_24) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_26) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2524,7 +2547,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_24) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_26) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2534,7 +2557,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_24) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_26) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2544,7 +2567,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_24) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_26) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2554,7 +2577,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_24) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_26) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2564,7 +2587,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_24) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_26) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2574,7 +2597,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_24) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_26) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2584,7 +2607,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_24) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_26) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2594,7 +2617,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_24) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_26) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2604,7 +2627,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_24) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_26) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2614,7 +2637,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_24) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_26) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2624,7 +2647,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let _e1170 = mass_2;
     let _e1172 = spread;
     let error_3 = ((_e1166 * _e1167) + ((AIRLIGHT_FLT_EPS * _e1170) * _e1172));
-    let _e1175 = sum_5;
+    let _e1175 = sum_4;
     let _e1177 = mass_2;
     let _e1178 = g_avg_1;
     let _e1179 = airlight_transform_noise(_e1177, _e1178);
@@ -2635,25 +2658,25 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
 }
 
 fn airlight_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half_9: AirlightHalf, a_8: f32, b_7: f32, heights_y: vec3<f32>, heights_v: vec3<f32>, steps_4: vec3<f32>) -> AirlightPanel {
-    var local_17: bool;
     var local_18: bool;
+    var local_19: bool;
 
     if half_9.second {
-        local_17 = (a_8 <= (b_7 * 0.25f));
+        local_18 = (a_8 <= (b_7 * 0.25f));
     } else {
-        local_17 = false;
+        local_18 = false;
     }
-    let _e16 = local_17;
+    let _e16 = local_18;
     if _e16 {
         let _e17 = airlight_tail_panel(s_7, g_9, sigma_7, half_9, a_8, b_7);
         return _e17;
     }
     if half_9.second {
-        local_18 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
+        local_19 = ((half_9.big_h * ((b_7 - a_8) / (a_8 * b_7))) <= AIRLIGHT_Y_PANEL_EXPONENT);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    let _e29 = local_18;
+    let _e29 = local_19;
     if _e29 {
         let _e30 = airlight_y_panel(s_7, g_9, sigma_7, half_9, a_8, b_7, heights_y, steps_4);
         return _e30;
@@ -2679,12 +2702,12 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
     var errors: f32;
     var mass_3: f32;
     var worst: u32;
-    var i_10: u32;
-    var local_19: bool;
+    var i_9: u32;
     var local_20: bool;
     var local_21: bool;
+    var local_22: bool;
     var total_1: f32 = 0f;
-    var i_11: u32 = 0u;
+    var i_10: u32 = 0u;
 
     if !((hi > lo)) {
         return 0f;
@@ -2743,43 +2766,43 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
                     errors = 0f;
                     mass_3 = 0f;
                     worst = 0u;
-                    i_10 = 0u;
+                    i_9 = 0u;
                     loop {
-                        let _e109 = i_10;
+                        let _e109 = i_9;
                         if (_e109 < AIRLIGHT_PANEL_LIST) {
                         } else {
                             break;
                         }
                         {
-                            let _e112 = i_10;
+                            let _e112 = i_9;
                             let _e113 = count;
                             if (_e112 >= _e113) {
                                 break;
                             }
                             let _e115 = total;
-                            let _e116 = i_10;
+                            let _e116 = i_9;
                             let _e119 = list[_e116].z;
                             total = (_e115 + _e119);
                             let _e121 = errors;
-                            let _e122 = i_10;
+                            let _e122 = i_9;
                             let _e125 = list[_e122].w;
                             errors = (_e121 + _e125);
                             let _e127 = mass_3;
-                            let _e128 = i_10;
+                            let _e128 = i_9;
                             let _e130 = mass_over_1[_e128];
                             mass_3 = (_e127 + _e130);
-                            let _e132 = i_10;
+                            let _e132 = i_9;
                             let _e135 = list[_e132].w;
                             let _e136 = worst;
                             let _e139 = list[_e136].w;
                             if (_e135 > _e139) {
-                                let _e141 = i_10;
+                                let _e141 = i_9;
                                 worst = _e141;
                             }
                         }
                         continuing {
-                            let _e143 = i_10;
-                            i_10 = (_e143 + 1u);
+                            let _e143 = i_9;
+                            i_9 = (_e143 + 1u);
                         }
                     }
                     let _e146 = total;
@@ -2790,25 +2813,25 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
                     if !((_e155 <= goal)) {
                         let _e160 = worst;
                         let _e163 = list[_e160].w;
-                        local_19 = !((_e163 > 0f));
-                    } else {
-                        local_19 = true;
-                    }
-                    let _e168 = local_19;
-                    if !(_e168) {
-                        let _e172 = budget;
-                        local_20 = (_e172 < 2u);
+                        local_20 = !((_e163 > 0f));
                     } else {
                         local_20 = true;
                     }
-                    let _e176 = local_20;
-                    if !(_e176) {
-                        let _e180 = count;
-                        local_21 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    let _e168 = local_20;
+                    if !(_e168) {
+                        let _e172 = budget;
+                        local_21 = (_e172 < 2u);
                     } else {
                         local_21 = true;
                     }
-                    let _e184 = local_21;
+                    let _e176 = local_21;
+                    if !(_e176) {
+                        let _e180 = count;
+                        local_22 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_22 = true;
+                    }
+                    let _e184 = local_22;
                     if _e184 {
                         let _e185 = total;
                         return _e185;
@@ -2844,25 +2867,25 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
         }
     }
     loop {
-        let _e219 = i_11;
+        let _e219 = i_10;
         if (_e219 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e222 = i_11;
+            let _e222 = i_10;
             let _e223 = count;
             if (_e222 >= _e223) {
                 break;
             }
             let _e225 = total_1;
-            let _e226 = i_11;
+            let _e226 = i_10;
             let _e229 = list[_e226].z;
             total_1 = (_e225 + _e229);
         }
         continuing {
-            let _e232 = i_11;
-            i_11 = (_e232 + 1u);
+            let _e232 = i_10;
+            i_10 = (_e232 + 1u);
         }
     }
     let _e234 = total_1;
@@ -2892,14 +2915,14 @@ fn airlight_angle_y(u: f32) -> f32 {
 }
 
 fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32) -> f32 {
-    var local_22: bool;
+    var local_23: bool;
 
     if !(!((gap_1 > 0f))) {
-        local_22 = (gap_1 >= AIRLIGHT_FLT_MAX);
+        local_23 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    let _e14 = local_22;
+    let _e14 = local_23;
     if _e14 {
         return 0f;
     }
@@ -2911,8 +2934,8 @@ fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32)
 
 fn airlight_cut_length(big_h_1: f32, v_s: f32) -> f32 {
     let inv_h = (1f / big_h_1);
-    let w_2 = (v_s + inv_h);
-    let r_11 = ((1f + (w_2 * w_2)) / (1f + (v_s * v_s)));
+    let w_3 = (v_s + inv_h);
+    let r_11 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
     let e_1 = (1f + log(((8f * r_11) / (0.000100000005f * 0.0001f))));
     return (e_1 * inv_h);
 }
@@ -2930,7 +2953,7 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_9: f32, j_1: f32)
 }
 
 fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32> {
-    var local_23: bool;
+    var local_24: bool;
     var y1_: f32 = AIRLIGHT_FLT_MAX;
     var y_cut: f32 = AIRLIGHT_FLT_MAX;
     var psi1_: f32 = 0f;
@@ -2943,9 +2966,9 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var mass_4: f32 = 0f;
     var magnitude: f32 = 0f;
     var f_max_5: f32 = 0f;
-    var i_12: u32 = 0u;
+    var i_11: u32 = 0u;
     var m_3: array<f32, 12>;
-    var local_24: bool;
+    var local_25: bool;
     var x_10: f32 = 0f;
 
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -2956,11 +2979,11 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     let u1_ = ((g_11.t_hi - g_11.x_h) / h_3);
     if !(g_11.t_hi_infinite) {
         let _e21 = airlight_is_finite(u1_);
-        local_23 = _e21;
+        local_24 = _e21;
     } else {
-        local_23 = false;
+        local_24 = false;
     }
-    let u1_finite = local_23;
+    let u1_finite = local_24;
     let big_h_7 = (s_9.sigma_t * h_3);
     let _e26 = airlight_angle_y(u0_);
     if u1_finite {
@@ -3054,46 +3077,46 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     let _e170 = airlight_zero_terms();
     samples_3 = _e170;
     loop {
-        let _e182 = i_12;
+        let _e182 = i_11;
         if (_e182 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e185 = i_12;
+            let _e185 = i_11;
             let _e186 = airlight_node(_e169, _e185);
             let lower = (_e38 + (hw_2 * (1f + _e186)));
             let below_1 = (lower <= 1.5707964f);
             let _e193 = psi1_;
             let _e199 = airlight_cos_sin(select((_e193 + (hw_2 * (1f - _e186))), lower, below_1));
-            let cs = _e199.y;
+            let cs_1 = _e199.y;
             let sn = select(_e199.x, -(_e199.x), below_1);
             let near_pole = (1f + _e199.x);
-            let far_pole = ((cs * cs) / near_pole);
+            let far_pole = ((cs_1 * cs_1) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_9 = select((near_pole / cs), (cs / near_pole), below_1);
-            let weight_1 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs > 0f));
-            let _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs)));
+            let y_9 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
+            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
+            let _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
             let _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e233 * _e239);
-            let gw = (weight_1 * f_2);
-            let _e242 = i_12;
+            let gw = (weight_2 * f_2);
+            let _e242 = i_11;
             samples_3[_e242] = gw;
-            let _e244 = i_12;
-            let w_3 = _e169[(_e244 / 2u)].y;
+            let _e244 = i_11;
+            let w_4 = _e169[(_e244 / 2u)].y;
             let _e249 = value_1;
-            value_1 = (_e249 + (w_3 * gw));
+            value_1 = (_e249 + (w_4 * gw));
             let _e252 = mass_4;
-            mass_4 = (_e252 + (w_3 * weight_1));
+            mass_4 = (_e252 + (w_4 * weight_2));
             let _e255 = magnitude;
-            magnitude = (_e255 + (w_3 * abs(gw)));
+            magnitude = (_e255 + (w_4 * abs(gw)));
             let _e259 = f_max_5;
             f_max_5 = max(_e259, abs(f_2));
         }
         continuing {
-            let _e263 = i_12;
-            i_12 = (_e263 + 1u);
+            let _e263 = i_11;
+            i_11 = (_e263 + 1u);
         }
     }
     let _e265 = samples_3;
@@ -3113,11 +3136,11 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     let _e289 = mass_4;
     let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if !((error_4 <= accepted)) {
-        local_24 = (error_4 <= _e282);
+        local_25 = (error_4 <= _e282);
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    let _e299 = local_24;
+    let _e299 = local_25;
     if !(_e299) {
         return vec2<f32>(0f, 0f);
     }
@@ -3131,23 +3154,23 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     return vec2<f32>(1f, _e320);
 }
 
-fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_3: f32) -> vec2<f32> {
-    var local_25: bool;
+fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_2: f32) -> vec2<f32> {
+    var local_26: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_3 + (sigma_9 * d_el));
+    let a0_ = (k_2 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_3 - (sigma_9 * d_el));
+    let c0_ = (k_2 - (sigma_9 * d_el));
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_25 = !(_e21);
+        local_26 = !(_e21);
     } else {
-        local_25 = true;
+        local_26 = true;
     }
-    let _e24 = local_25;
+    let _e24 = local_26;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
@@ -3162,12 +3185,12 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_3: f32) -> vec2<f32> 
         sb = -1f;
     }
     let _e47 = sb;
-    let q_2 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
-    if (q_2 != 0f) {
-        r1_ = (c_9 / q_2);
+    let q_5 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
+    if (q_5 != 0f) {
+        r1_ = (c_9 / q_5);
     }
     if (a_23 != 0f) {
-        r2_2 = (q_2 / a_23);
+        r2_2 = (q_5 / a_23);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3180,13 +3203,13 @@ fn airlight_cosine(g_12: AirlightCanonical, sigma_10: f32, y_4: f32) -> f32 {
 }
 
 fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
-    var local_26: bool;
     var local_27: bool;
-    var y1_1: f32;
     var local_28: bool;
+    var y1_1: f32;
     var local_29: bool;
     var local_30: bool;
     var local_31: bool;
+    var local_32: bool;
 
     let _e9 = airlight_cosine(g_13, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
@@ -3194,21 +3217,21 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     }
     if (lo_1 == half_11.y_lo) {
         let _e17 = airlight_cosine(g_13, sigma_11, lo_1);
-        local_26 = !((_e17 < bound));
+        local_27 = !((_e17 < bound));
     } else {
-        local_26 = false;
+        local_27 = false;
     }
-    let _e21 = local_26;
+    let _e21 = local_27;
     if _e21 {
         return false;
     }
     if (hi_1 == half_11.y_hi) {
         let _e27 = airlight_cosine(g_13, sigma_11, hi_1);
-        local_27 = !((_e27 < bound));
+        local_28 = !((_e27 < bound));
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    let _e31 = local_27;
+    let _e31 = local_28;
     if _e31 {
         return false;
     }
@@ -3227,35 +3250,35 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     let _e53 = y1_1;
     if (_e53 > lo_1) {
         let _e57 = y1_1;
-        local_28 = (_e57 < hi_1);
-    } else {
-        local_28 = false;
-    }
-    let _e60 = local_28;
-    if _e60 {
-        let _e63 = y1_1;
-        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
-        local_29 = !((_e64 < bound));
+        local_29 = (_e57 < hi_1);
     } else {
         local_29 = false;
     }
-    let _e68 = local_29;
+    let _e60 = local_29;
+    if _e60 {
+        let _e63 = y1_1;
+        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
+        local_30 = !((_e64 < bound));
+    } else {
+        local_30 = false;
+    }
+    let _e68 = local_30;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_30 = (y2_2 < hi_1);
-    } else {
-        local_30 = false;
-    }
-    let _e75 = local_30;
-    if _e75 {
-        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
-        local_31 = !((_e78 < bound));
+        local_31 = (y2_2 < hi_1);
     } else {
         local_31 = false;
     }
-    let _e82 = local_31;
+    let _e75 = local_31;
+    if _e75 {
+        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
+        local_32 = !((_e78 < bound));
+    } else {
+        local_32 = false;
+    }
+    let _e82 = local_32;
     if _e82 {
         return false;
     }
@@ -3267,17 +3290,17 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
     var dark_below: f32 = -1f;
     var k_in: f32;
     var k_out: f32;
+    var i_12: u32 = 0u;
+    var local_33: bool;
     var i_13: u32 = 0u;
-    var local_32: bool;
-    var i_14: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
-    var i_15: u32 = 0u;
+    var i_14: u32 = 0u;
     var hi_2: f32;
-    var local_33: bool;
     var local_34: bool;
     var local_35: bool;
+    var local_36: bool;
 
     if isotropic {
         let _e7 = airlight_integrand(s_10, g_14, sigma_12, 0f);
@@ -3304,34 +3327,34 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
         let _e43 = airlight_crossings(sigma_12, g_14.d_el, g_14.d_c, _e42);
         cuts = array<f32, 4>(_e39.x, _e39.y, _e43.x, _e43.y);
         loop {
-            let _e51 = i_13;
+            let _e51 = i_12;
             if (_e51 < 4u) {
             } else {
                 break;
             }
             {
-                let _e54 = i_13;
+                let _e54 = i_12;
                 let _e56 = cuts[_e54];
                 if (_e56 > half_12.y_lo) {
-                    let _e61 = i_13;
+                    let _e61 = i_12;
                     let _e63 = cuts[_e61];
-                    local_32 = (_e63 < half_12.y_hi);
+                    local_33 = (_e63 < half_12.y_hi);
                 } else {
-                    local_32 = false;
+                    local_33 = false;
                 }
-                let _e67 = local_32;
+                let _e67 = local_33;
                 if !(_e67) {
-                    let _e69 = i_13;
+                    let _e69 = i_12;
                     cuts[_e69] = 2f;
                 }
             }
             continuing {
-                let _e73 = i_13;
-                i_13 = (_e73 + 1u);
+                let _e73 = i_12;
+                i_12 = (_e73 + 1u);
             }
         }
         loop {
-            let _e77 = i_14;
+            let _e77 = i_13;
             if (_e77 < 3u) {
             } else {
                 break;
@@ -3340,7 +3363,7 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                 j_2 = 0u;
                 loop {
                     let _e82 = j_2;
-                    let _e84 = i_14;
+                    let _e84 = i_13;
                     if (_e82 < (3u - _e84)) {
                     } else {
                         break;
@@ -3368,31 +3391,31 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                 }
             }
             continuing {
-                let _e114 = i_14;
-                i_14 = (_e114 + 1u);
+                let _e114 = i_13;
+                i_13 = (_e114 + 1u);
             }
         }
     }
     lo_2 = half_12.y_lo;
     loop {
-        let _e122 = i_15;
+        let _e122 = i_14;
         if (_e122 < 5u) {
         } else {
             break;
         }
         {
             hi_2 = half_12.y_hi;
-            let _e127 = i_15;
+            let _e127 = i_14;
             if (_e127 < 4u) {
-                let _e132 = i_15;
+                let _e132 = i_14;
                 let _e134 = cuts[_e132];
-                local_33 = (_e134 < 2f);
+                local_34 = (_e134 < 2f);
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            let _e138 = local_33;
+            let _e138 = local_34;
             if _e138 {
-                let _e139 = i_15;
+                let _e139 = i_14;
                 let _e141 = cuts[_e139];
                 hi_2 = _e141;
             }
@@ -3404,11 +3427,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                     let _e151 = lo_2;
                     let _e152 = hi_2;
                     let _e153 = airlight_dark(g_14, sigma_12, half_12, _e150, _e151, _e152);
-                    local_34 = _e153;
+                    local_35 = _e153;
                 } else {
-                    local_34 = false;
+                    local_35 = false;
                 }
-                let _e155 = local_34;
+                let _e155 = local_35;
                 if !(_e155) {
                     let _e157 = total_2;
                     let _e158 = lo_2;
@@ -3419,22 +3442,22 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                 let _e162 = hi_2;
                 lo_2 = _e162;
             }
-            let _e163 = i_15;
+            let _e163 = i_14;
             if (_e163 < 4u) {
-                let _e168 = i_15;
+                let _e168 = i_14;
                 let _e170 = cuts[_e168];
-                local_35 = (_e170 >= 2f);
+                local_36 = (_e170 >= 2f);
             } else {
-                local_35 = false;
+                local_36 = false;
             }
-            let _e174 = local_35;
+            let _e174 = local_36;
             if _e174 {
                 break;
             }
         }
         continuing {
-            let _e176 = i_15;
-            i_15 = (_e176 + 1u);
+            let _e176 = i_14;
+            i_14 = (_e176 + 1u);
         }
     }
     let _e178 = total_2;
@@ -3442,17 +3465,17 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
 }
 
 fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
-    var local_36: bool;
+    var local_37: bool;
     var span: f32;
     var e2_: array<f32, 14>;
     var tail: f32 = 0f;
 
     if !(g_15.t_hi_infinite) {
-        local_36 = (g_15.x_h > g_15.t_hi);
+        local_37 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_36 = false;
+        local_37 = false;
     }
-    let _e10 = local_36;
+    let _e10 = local_37;
     if _e10 {
         let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
@@ -3511,8 +3534,8 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_37: bool;
     var local_38: bool;
+    var local_39: bool;
     var x_11: f32 = 0f;
 
     let h_4 = g_16.h;
@@ -3522,11 +3545,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     let u_e = ((g_16.t_hi - g_16.x_h) / h_4);
     if !(g_16.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_37 = _e24;
+        local_38 = _e24;
     } else {
-        local_37 = false;
+        local_38 = false;
     }
-    let _e26 = local_37;
+    let _e26 = local_38;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -3534,11 +3557,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_38 = _e40;
+            local_39 = _e40;
         } else {
-            local_38 = false;
+            local_39 = false;
         }
-        let _e42 = local_38;
+        let _e42 = local_39;
         if _e42 {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3569,27 +3592,27 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
 }
 
 fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
-    var local_39: bool;
     var local_40: bool;
     var local_41: bool;
     var local_42: bool;
-    var gap_2: f32 = 0f;
     var local_43: bool;
+    var gap_2: f32 = 0f;
+    var local_44: bool;
 
     let t0_ = g_17.t_lo;
     let t1_ = g_17.t_hi;
     if !(g_17.t_hi_infinite) {
-        local_39 = (t1_ > t0_);
-    } else {
-        local_39 = true;
-    }
-    let _e10 = local_39;
-    if !(!(_e10)) {
-        local_40 = ((s_13.sigma_s * s_13.intensity) == 0f);
+        local_40 = (t1_ > t0_);
     } else {
         local_40 = true;
     }
-    let _e21 = local_40;
+    let _e10 = local_40;
+    if !(!(_e10)) {
+        local_41 = ((s_13.sigma_s * s_13.intensity) == 0f);
+    } else {
+        local_41 = true;
+    }
+    let _e21 = local_41;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3597,16 +3620,16 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     let x_h = g_17.x_h;
     if (t0_ <= x_h) {
         if !(g_17.t_hi_infinite) {
-            local_42 = (x_h <= t1_);
+            local_43 = (x_h <= t1_);
         } else {
-            local_42 = true;
+            local_43 = true;
         }
-        let _e36 = local_42;
-        local_41 = _e36;
+        let _e36 = local_43;
+        local_42 = _e36;
     } else {
-        local_41 = false;
+        local_42 = false;
     }
-    let inside = local_41;
+    let inside = local_42;
     if (x_h < t0_) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3616,11 +3639,11 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     }
     if !(inside) {
         let _e48 = gap_2;
-        local_43 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_44 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    let _e55 = local_43;
+    let _e55 = local_44;
     if _e55 {
         let _e56 = airlight_on_line(s_13, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3632,75 +3655,75 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
 }
 
 fn airlight_isotropic_scene(s_14: AirlightScene) -> bool {
-    var local_44: bool;
     var local_45: bool;
     var local_46: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
+    var local_50: bool;
 
     if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_45 = (s_14.light_param_a == 0f);
+            local_46 = (s_14.light_param_a == 0f);
         } else {
-            local_45 = false;
+            local_46 = false;
         }
-        let _e16 = local_45;
-        local_44 = _e16;
+        let _e16 = local_46;
+        local_45 = _e16;
     } else {
-        local_44 = true;
+        local_45 = true;
     }
-    let _e18 = local_44;
+    let _e18 = local_45;
     if _e18 {
         if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_48 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_49 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_48 = true;
+                local_49 = true;
             }
-            let _e37 = local_48;
+            let _e37 = local_49;
             if _e37 {
-                local_49 = (s_14.phase_param_a == 0f);
+                local_50 = (s_14.phase_param_a == 0f);
             } else {
-                local_49 = false;
+                local_50 = false;
             }
-            let _e44 = local_49;
-            local_47 = _e44;
+            let _e44 = local_50;
+            local_48 = _e44;
         } else {
-            local_47 = true;
+            local_48 = true;
         }
-        let _e46 = local_47;
-        local_46 = _e46;
+        let _e46 = local_48;
+        local_47 = _e46;
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    let _e48 = local_46;
+    let _e48 = local_47;
     return _e48;
 }
 
 fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
-    var local_50: bool;
     var local_51: bool;
     var local_52: bool;
+    var local_53: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_53: bool;
-    var half_13: AirlightHalf;
     var local_54: bool;
+    var half_13: AirlightHalf;
     var local_55: bool;
     var local_56: bool;
+    var local_57: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_57: bool;
     var local_58: bool;
-    var half_14: AirlightHalf;
     var local_59: bool;
+    var half_14: AirlightHalf;
     var local_60: bool;
     var local_61: bool;
+    var local_62: bool;
 
     let _e2 = airlight_limits(s_15, g_18);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
@@ -3713,23 +3736,23 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
     let big_h_8 = (s_15.sigma_t * h_6);
     let _e12 = airlight_isotropic_scene(s_15);
     if _e12 {
-        local_50 = (t0_1 < x_h_1);
-    } else {
-        local_50 = false;
-    }
-    let _e17 = local_50;
-    if _e17 {
-        if !(g_18.t_hi_infinite) {
-            local_52 = (x_h_1 < t1_1);
-        } else {
-            local_52 = true;
-        }
-        let _e26 = local_52;
-        local_51 = _e26;
+        local_51 = (t0_1 < x_h_1);
     } else {
         local_51 = false;
     }
-    let _e28 = local_51;
+    let _e17 = local_51;
+    if _e17 {
+        if !(g_18.t_hi_infinite) {
+            local_53 = (x_h_1 < t1_1);
+        } else {
+            local_53 = true;
+        }
+        let _e26 = local_53;
+        local_52 = _e26;
+    } else {
+        local_52 = false;
+    }
+    let _e28 = local_52;
     if _e28 {
         let _e29 = airlight_whole_line(s_15, g_18, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
@@ -3740,16 +3763,16 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
             return AirlightResult(max(_e35.y, 0f), AIRLIGHT_STATUS_OK);
         }
     }
-    let cut = !(_e12);
+    let cut_1 = !(_e12);
     if (t0_1 < x_h_1) {
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_18.t_hi_infinite) {
-            local_53 = (t1_1 < x_h_1);
+            local_54 = (t1_1 < x_h_1);
         } else {
-            local_53 = false;
+            local_54 = false;
         }
-        let _e61 = local_53;
+        let _e61 = local_54;
         if _e61 {
             t_end = t1_1;
         }
@@ -3763,13 +3786,13 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let dy_1 = (((((_e69 - t0_1) / h_6) * (1f + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         let _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
-        if cut {
+        if cut_1 {
             let _e89 = half_13.big_h;
-            local_54 = (_e89 > 0f);
+            local_55 = (_e89 > 0f);
         } else {
-            local_54 = false;
+            local_55 = false;
         }
-        let _e93 = local_54;
+        let _e93 = local_55;
         if _e93 {
             let _e95 = half_13.big_h;
             let _e96 = airlight_cut_length(_e95, _e67);
@@ -3786,18 +3809,18 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         total_3 = (_e108 + _e112);
     }
     if !(g_18.t_hi_infinite) {
-        local_55 = (t1_1 > x_h_1);
+        local_56 = (t1_1 > x_h_1);
     } else {
-        local_55 = true;
+        local_56 = true;
     }
-    let _e120 = local_55;
+    let _e120 = local_56;
     if _e120 {
         let _e123 = behind_cut;
-        local_56 = !(_e123);
+        local_57 = !(_e123);
     } else {
-        local_56 = false;
+        local_57 = false;
     }
-    let _e126 = local_56;
+    let _e126 = local_57;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3807,22 +3830,22 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_18.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_57 = _e145;
+            local_58 = _e145;
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        let _e147 = local_57;
+        let _e147 = local_58;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_58 = _e162;
+                local_59 = _e162;
             } else {
-                local_58 = false;
+                local_59 = false;
             }
-            let _e164 = local_58;
+            let _e164 = local_59;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3840,33 +3863,33 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let _e176 = dv_3;
         let _e177 = infinite_2;
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
-        if cut {
+        if cut_1 {
             let _e183 = half_14.big_h;
-            local_59 = (_e183 > 0f);
+            local_60 = (_e183 > 0f);
         } else {
-            local_59 = false;
+            local_60 = false;
         }
-        let _e187 = local_59;
+        let _e187 = local_60;
         if _e187 {
             let _e189 = half_14.big_h;
             let _e192 = airlight_cut_length(_e189, (1f / _e131));
             let _e193 = infinite_2;
             if !(_e193) {
                 let _e197 = dv_3;
-                local_60 = (_e192 < _e197);
+                local_61 = (_e192 < _e197);
             } else {
-                local_60 = true;
+                local_61 = true;
             }
-            let _e200 = local_60;
+            let _e200 = local_61;
             if _e200 {
                 let cut_y_lo = (_e131 / (1f + (_e131 * _e192)));
                 if (cut_y_lo > 0f) {
                     let _e209 = airlight_is_finite(_e192);
-                    local_61 = _e209;
+                    local_62 = _e209;
                 } else {
-                    local_61 = false;
+                    local_62 = false;
                 }
-                let _e211 = local_61;
+                let _e211 = local_62;
                 if _e211 {
                     let _e214 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
@@ -3884,24 +3907,24 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_62: bool;
     var local_63: bool;
+    var local_64: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_62 = _e6;
-    } else {
-        local_62 = false;
-    }
-    let _e8 = local_62;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_63 = _e12;
+        local_63 = _e6;
     } else {
         local_63 = false;
     }
-    let _e14 = local_63;
+    let _e8 = local_63;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_64 = _e12;
+    } else {
+        local_64 = false;
+    }
+    let _e14 = local_64;
     return _e14;
 }
 
@@ -3914,27 +3937,26 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_64: bool;
+    var local_65: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_64 = _e6;
+        local_65 = _e6;
     } else {
-        local_64 = false;
+        local_65 = false;
     }
-    let _e8 = local_64;
+    let _e8 = local_65;
     return _e8;
 }
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_2 = (v_3 / vec3(m_8));
-    return (u_2 / vec3(length(u_2)));
+    let u_3 = (v_3 / vec3(m_8));
+    return (u_3 / vec3(length(u_3)));
 }
 
 fn airlight_valid(s_16: AirlightScene) -> bool {
-    var local_65: bool;
     var local_66: bool;
     var local_67: bool;
     var local_68: bool;
@@ -3944,8 +3966,8 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_72: bool;
     var local_73: bool;
     var local_74: bool;
-    var ok: bool;
     var local_75: bool;
+    var ok: bool;
     var local_76: bool;
     var local_77: bool;
     var local_78: bool;
@@ -3968,220 +3990,263 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_95: bool;
     var local_96: bool;
     var local_97: bool;
+    var local_98: bool;
+    var local_99: bool;
+    var local_100: bool;
+    var local_101: bool;
+    var local_102: bool;
+    var local_103: bool;
 
     let _e2 = airlight_vec_finite(s_16.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_16.dir);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    let _e8 = local_65;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_16.dir);
-        local_66 = _e12;
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    let _e14 = local_66;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_16.t_min);
-        local_67 = _e18;
+    let _e8 = local_66;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_16.dir);
+        local_67 = _e12;
     } else {
         local_67 = false;
     }
-    let _e20 = local_67;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_16.light_position);
-        local_68 = _e24;
+    let _e14 = local_67;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_16.t_min);
+        local_68 = _e18;
     } else {
         local_68 = false;
     }
-    let _e26 = local_68;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_16.intensity);
-        local_69 = _e30;
+    let _e20 = local_68;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_16.light_position);
+        local_69 = _e24;
     } else {
         local_69 = false;
     }
-    let _e32 = local_69;
-    if _e32 {
-        local_70 = (s_16.intensity >= 0f);
+    let _e26 = local_69;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_16.intensity);
+        local_70 = _e30;
     } else {
         local_70 = false;
     }
-    let _e39 = local_70;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_16.sigma_s);
-        local_71 = _e43;
+    let _e32 = local_70;
+    if _e32 {
+        local_71 = (s_16.intensity >= 0f);
     } else {
         local_71 = false;
     }
-    let _e45 = local_71;
-    if _e45 {
-        local_72 = (s_16.sigma_s >= 0f);
+    let _e39 = local_71;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_16.sigma_s);
+        local_72 = _e43;
     } else {
         local_72 = false;
     }
-    let _e52 = local_72;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_16.sigma_t);
-        local_73 = _e56;
+    let _e45 = local_72;
+    if _e45 {
+        local_73 = (s_16.sigma_s >= 0f);
     } else {
         local_73 = false;
     }
-    let _e58 = local_73;
-    if _e58 {
-        local_74 = (s_16.sigma_t >= 0f);
+    let _e52 = local_73;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_16.sigma_t);
+        local_74 = _e56;
     } else {
         local_74 = false;
     }
-    let _e65 = local_74;
+    let _e58 = local_74;
+    if _e58 {
+        local_75 = (s_16.sigma_t >= 0f);
+    } else {
+        local_75 = false;
+    }
+    let _e65 = local_75;
     ok = _e65;
     if ((s_16.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_16.t_max);
-            local_75 = _e76;
-        } else {
-            local_75 = false;
-        }
-        let _e78 = local_75;
-        if _e78 {
-            local_76 = (s_16.t_min <= s_16.t_max);
+            local_76 = _e76;
         } else {
             local_76 = false;
         }
-        let _e85 = local_76;
+        let _e78 = local_76;
+        if _e78 {
+            local_77 = (s_16.t_min <= s_16.t_max);
+        } else {
+            local_77 = false;
+        }
+        let _e85 = local_77;
         ok = _e85;
     }
     if (s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_16.light_end);
-            local_77 = _e93;
+            local_78 = _e93;
         } else {
-            local_77 = false;
+            local_78 = false;
         }
-        let _e95 = local_77;
+        let _e95 = local_78;
         ok = _e95;
     } else {
         if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
             ok = false;
         }
     }
-    if (s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let _e103 = ok;
-        if _e103 {
-            let _e107 = airlight_is_finite(s_16.brdf_albedo);
-            local_78 = _e107;
-        } else {
-            local_78 = false;
-        }
-        let _e109 = local_78;
-        if _e109 {
-            local_79 = (s_16.brdf_albedo >= 0f);
-        } else {
-            local_79 = false;
-        }
-        let _e116 = local_79;
-        if _e116 {
-            local_80 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+    if !((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        local_79 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    } else {
+        local_79 = true;
+    }
+    let _e110 = local_79;
+    if _e110 {
+        let _e111 = ok;
+        if _e111 {
+            let _e115 = airlight_is_finite(s_16.brdf_scale);
+            local_80 = _e115;
         } else {
             local_80 = false;
         }
-        let _e123 = local_80;
-        if _e123 {
-            local_81 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e117 = local_80;
+        if _e117 {
+            local_81 = (s_16.brdf_scale >= 0f);
         } else {
             local_81 = false;
         }
-        let _e130 = local_81;
-        if _e130 {
-            let _e136 = airlight_safe_length((s_16.light_position - s_16.origin));
-            let _e137 = airlight_is_finite(_e136);
-            local_82 = _e137;
+        let _e124 = local_81;
+        if _e124 {
+            local_82 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_82 = false;
         }
-        let _e139 = local_82;
-        ok = _e139;
+        let _e131 = local_82;
+        if _e131 {
+            local_83 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_83 = false;
+        }
+        let _e138 = local_83;
+        if _e138 {
+            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
+            let _e145 = airlight_is_finite(_e144);
+            local_84 = _e145;
+        } else {
+            local_84 = false;
+        }
+        let _e147 = local_84;
+        ok = _e147;
+        if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+            let _e151 = ok;
+            if _e151 {
+                let _e155 = airlight_is_finite(s_16.brdf_exponent);
+                local_85 = _e155;
+            } else {
+                local_85 = false;
+            }
+            let _e157 = local_85;
+            if _e157 {
+                local_86 = (s_16.brdf_exponent >= 0f);
+            } else {
+                local_86 = false;
+            }
+            let _e164 = local_86;
+            if _e164 {
+                let _e168 = airlight_vec_finite(s_16.brdf_view);
+                local_87 = _e168;
+            } else {
+                local_87 = false;
+            }
+            let _e170 = local_87;
+            if _e170 {
+                let _e174 = airlight_normalisable(s_16.brdf_view);
+                local_88 = _e174;
+            } else {
+                local_88 = false;
+            }
+            let _e176 = local_88;
+            ok = _e176;
+        }
     } else {
         if (s_16.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
     if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e147 = ok;
-        if _e147 {
-            let _e151 = airlight_vec_finite(s_16.light_axis);
-            local_83 = _e151;
+        let _e184 = ok;
+        if _e184 {
+            let _e188 = airlight_vec_finite(s_16.light_axis);
+            local_89 = _e188;
         } else {
-            local_83 = false;
+            local_89 = false;
         }
-        let _e153 = local_83;
-        if _e153 {
-            let _e157 = airlight_normalisable(s_16.light_axis);
-            local_84 = _e157;
+        let _e190 = local_89;
+        if _e190 {
+            let _e194 = airlight_normalisable(s_16.light_axis);
+            local_90 = _e194;
         } else {
-            local_84 = false;
+            local_90 = false;
         }
-        let _e159 = local_84;
-        if _e159 {
-            local_85 = (s_16.light_param_a >= 0f);
+        let _e196 = local_90;
+        if _e196 {
+            local_91 = (s_16.light_param_a >= 0f);
         } else {
-            local_85 = false;
+            local_91 = false;
         }
-        let _e166 = local_85;
-        if _e166 {
-            local_86 = (s_16.light_param_a <= 1024f);
+        let _e203 = local_91;
+        if _e203 {
+            local_92 = (s_16.light_param_a <= 1024f);
         } else {
-            local_86 = false;
+            local_92 = false;
         }
-        let _e173 = local_86;
-        if _e173 {
-            local_87 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        let _e210 = local_92;
+        if _e210 {
+            local_93 = (fract((s_16.light_param_a * 0.5f)) == 0f);
         } else {
-            local_87 = false;
+            local_93 = false;
         }
-        let _e183 = local_87;
-        ok = _e183;
+        let _e220 = local_93;
+        ok = _e220;
     } else {
         if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e187 = ok;
-            if _e187 {
-                let _e191 = airlight_vec_finite(s_16.light_axis);
-                local_88 = _e191;
+            let _e224 = ok;
+            if _e224 {
+                let _e228 = airlight_vec_finite(s_16.light_axis);
+                local_94 = _e228;
             } else {
-                local_88 = false;
+                local_94 = false;
             }
-            let _e193 = local_88;
-            if _e193 {
-                let _e197 = airlight_normalisable(s_16.light_axis);
-                local_89 = _e197;
+            let _e230 = local_94;
+            if _e230 {
+                let _e234 = airlight_normalisable(s_16.light_axis);
+                local_95 = _e234;
             } else {
-                local_89 = false;
+                local_95 = false;
             }
-            let _e199 = local_89;
-            if _e199 {
-                local_90 = (s_16.light_param_b < s_16.light_param_a);
+            let _e236 = local_95;
+            if _e236 {
+                local_96 = (s_16.light_param_b < s_16.light_param_a);
             } else {
-                local_90 = false;
+                local_96 = false;
             }
-            let _e206 = local_90;
-            if _e206 {
-                local_91 = (s_16.light_param_b >= -1f);
+            let _e243 = local_96;
+            if _e243 {
+                local_97 = (s_16.light_param_b >= -1f);
             } else {
-                local_91 = false;
+                local_97 = false;
             }
-            let _e213 = local_91;
-            if _e213 {
-                local_92 = (s_16.light_param_a <= 1f);
+            let _e250 = local_97;
+            if _e250 {
+                local_98 = (s_16.light_param_a <= 1f);
             } else {
-                local_92 = false;
+                local_98 = false;
             }
-            let _e220 = local_92;
-            ok = _e220;
+            let _e257 = local_98;
+            ok = _e257;
         } else {
             if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -4193,49 +4258,49 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e230 = ok;
-            if _e230 {
-                local_93 = g_ok;
+            let _e267 = ok;
+            if _e267 {
+                local_99 = g_ok;
             } else {
-                local_93 = false;
+                local_99 = false;
             }
-            let _e234 = local_93;
-            ok = _e234;
+            let _e271 = local_99;
+            ok = _e271;
         }
         case 5u: {
-            let _e235 = ok;
-            if _e235 {
-                local_94 = g_ok;
+            let _e272 = ok;
+            if _e272 {
+                local_100 = g_ok;
             } else {
-                local_94 = false;
+                local_100 = false;
             }
-            let _e239 = local_94;
-            if _e239 {
-                local_95 = (abs(s_16.phase_param_b) < 1f);
+            let _e276 = local_100;
+            if _e276 {
+                local_101 = (abs(s_16.phase_param_b) < 1f);
             } else {
-                local_95 = false;
+                local_101 = false;
             }
-            let _e247 = local_95;
-            if _e247 {
-                local_96 = (s_16.phase_param_c >= 0f);
+            let _e284 = local_101;
+            if _e284 {
+                local_102 = (s_16.phase_param_c >= 0f);
             } else {
-                local_96 = false;
+                local_102 = false;
             }
-            let _e254 = local_96;
-            if _e254 {
-                local_97 = (s_16.phase_param_c <= 1f);
+            let _e291 = local_102;
+            if _e291 {
+                local_103 = (s_16.phase_param_c <= 1f);
             } else {
-                local_97 = false;
+                local_103 = false;
             }
-            let _e261 = local_97;
-            ok = _e261;
+            let _e298 = local_103;
+            ok = _e298;
         }
         default: {
             ok = false;
         }
     }
-    let _e263 = ok;
-    return _e263;
+    let _e300 = ok;
+    return _e300;
 }
 
 fn airlight_canonical(s_17: AirlightScene) -> AirlightCanonical {
@@ -4298,59 +4363,59 @@ fn airlight_diff_of_products(a_14: f32, b_11: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_98: bool;
-    var local_99: bool;
+    var local_104: bool;
+    var local_105: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_99 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_105 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_99 = false;
+            local_105 = false;
         }
-        let _e21 = local_99;
-        local_98 = _e21;
+        let _e21 = local_105;
+        local_104 = _e21;
     } else {
-        local_98 = true;
+        local_104 = true;
     }
-    let _e23 = local_98;
+    let _e23 = local_104;
     return _e23;
 }
 
 fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_100: bool;
+    var local_106: bool;
     var out_2: AirlightCanonical;
-    var local_101: bool;
+    var local_107: bool;
     var a_15: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_18.flags > 1u));
     let _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     let _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     let _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    let hi_3 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_3 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_4 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_5 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir = s_18.dir;
-    let _e33 = airlight_in_exact_range(hi_3);
+    let _e33 = airlight_in_exact_range(hi_4);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_100 = !(_e38);
+        local_106 = !(_e38);
     } else {
-        local_100 = true;
+        local_106 = true;
     }
-    let _e41 = local_100;
+    let _e41 = local_106;
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_3.y, dir.z, hi_3.z, dir.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_3.z, dir.x, hi_3.x, dir.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_3.x, dir.y, hi_3.y, dir.x, key_4);
-    let w_4 = vec3<f32>((_e46 + ((lo_3.y * dir.z) - (lo_3.z * dir.y))), (_e59 + ((lo_3.z * dir.x) - (lo_3.x * dir.z))), (_e72 + ((lo_3.x * dir.y) - (lo_3.y * dir.x))));
-    let _e82 = airlight_vec_finite(w_4);
+    let _e46 = airlight_diff_of_products(hi_4.y, dir.z, hi_4.z, dir.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_4.z, dir.x, hi_4.x, dir.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_4.x, dir.y, hi_4.y, dir.x, key_4);
+    let w_5 = vec3<f32>((_e46 + ((lo_5.y * dir.z) - (lo_5.z * dir.y))), (_e59 + ((lo_5.z * dir.x) - (lo_5.x * dir.z))), (_e72 + ((lo_5.x * dir.y) - (lo_5.y * dir.x))));
+    let _e82 = airlight_vec_finite(w_5);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_4);
+    let _e85 = airlight_safe_length(w_5);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
@@ -4361,11 +4426,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_101 = (h_7 > 0f);
+        local_107 = (h_7 > 0f);
     } else {
-        local_101 = false;
+        local_107 = false;
     }
-    let _e101 = local_101;
+    let _e101 = local_107;
     if !(_e101) {
         return plain;
     }
@@ -4374,7 +4439,7 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         a_15 = _e112;
     }
     let _e113 = airlight_normalize(dir);
-    let _e114 = airlight_normalize(w_4);
+    let _e114 = airlight_normalize(w_5);
     let n_2 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_15;
@@ -4387,8 +4452,8 @@ fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
     return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
 }
 
-fn airlight_list_get(l: AirlightPanelList, i_16: u32) -> vec4<f32> {
-    switch i_16 {
+fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
+    switch i_15 {
         case 0u: {
             return l.panel_a;
         }
@@ -4404,14 +4469,44 @@ fn airlight_list_get(l: AirlightPanelList, i_16: u32) -> vec4<f32> {
         case 4u: {
             return l.panel_e;
         }
-        default: {
+        case 5u: {
             return l.panel_f;
+        }
+        case 6u: {
+            return l.panel_g;
+        }
+        case 7u: {
+            return l.panel_h;
+        }
+        case 8u: {
+            return l.panel_i;
+        }
+        case 9u: {
+            return l.panel_j;
+        }
+        case 10u: {
+            return l.panel_k;
+        }
+        case 11u: {
+            return l.panel_l;
+        }
+        case 12u: {
+            return l.panel_m;
+        }
+        case 13u: {
+            return l.panel_n;
+        }
+        case 14u: {
+            return l.panel_o;
+        }
+        default: {
+            return l.panel_p;
         }
     }
 }
 
-fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_17: u32, v_5: vec4<f32>) {
-    switch i_17 {
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
+    switch i_16 {
         case 0u: {
             (*l_1).panel_a = v_5;
             return;
@@ -4434,6 +4529,46 @@ fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_17: u32, v_5: vec4
         }
         case 5u: {
             (*l_1).panel_f = v_5;
+            return;
+        }
+        case 6u: {
+            (*l_1).panel_g = v_5;
+            return;
+        }
+        case 7u: {
+            (*l_1).panel_h = v_5;
+            return;
+        }
+        case 8u: {
+            (*l_1).panel_i = v_5;
+            return;
+        }
+        case 9u: {
+            (*l_1).panel_j = v_5;
+            return;
+        }
+        case 10u: {
+            (*l_1).panel_k = v_5;
+            return;
+        }
+        case 11u: {
+            (*l_1).panel_l = v_5;
+            return;
+        }
+        case 12u: {
+            (*l_1).panel_m = v_5;
+            return;
+        }
+        case 13u: {
+            (*l_1).panel_n = v_5;
+            return;
+        }
+        case 14u: {
+            (*l_1).panel_o = v_5;
+            return;
+        }
+        case 15u: {
+            (*l_1).panel_p = v_5;
             return;
         }
         default: {
@@ -4512,8 +4647,118 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
             worst_error = l_2.panel_f.w;
         }
     }
-    let _e129 = r_3;
-    return _e129;
+    if (count_1 > 6u) {
+        let _e132 = r_3.total;
+        r_3.total = (_e132 + l_2.panel_g.z);
+        let _e137 = r_3.errors;
+        r_3.errors = (_e137 + l_2.panel_g.w);
+        let _e143 = worst_error;
+        if (l_2.panel_g.w > _e143) {
+            r_3.worst = 6u;
+            worst_error = l_2.panel_g.w;
+        }
+    }
+    if (count_1 > 7u) {
+        let _e152 = r_3.total;
+        r_3.total = (_e152 + l_2.panel_h.z);
+        let _e157 = r_3.errors;
+        r_3.errors = (_e157 + l_2.panel_h.w);
+        let _e163 = worst_error;
+        if (l_2.panel_h.w > _e163) {
+            r_3.worst = 7u;
+            worst_error = l_2.panel_h.w;
+        }
+    }
+    if (count_1 > 8u) {
+        let _e172 = r_3.total;
+        r_3.total = (_e172 + l_2.panel_i.z);
+        let _e177 = r_3.errors;
+        r_3.errors = (_e177 + l_2.panel_i.w);
+        let _e183 = worst_error;
+        if (l_2.panel_i.w > _e183) {
+            r_3.worst = 8u;
+            worst_error = l_2.panel_i.w;
+        }
+    }
+    if (count_1 > 9u) {
+        let _e192 = r_3.total;
+        r_3.total = (_e192 + l_2.panel_j.z);
+        let _e197 = r_3.errors;
+        r_3.errors = (_e197 + l_2.panel_j.w);
+        let _e203 = worst_error;
+        if (l_2.panel_j.w > _e203) {
+            r_3.worst = 9u;
+            worst_error = l_2.panel_j.w;
+        }
+    }
+    if (count_1 > 10u) {
+        let _e212 = r_3.total;
+        r_3.total = (_e212 + l_2.panel_k.z);
+        let _e217 = r_3.errors;
+        r_3.errors = (_e217 + l_2.panel_k.w);
+        let _e223 = worst_error;
+        if (l_2.panel_k.w > _e223) {
+            r_3.worst = 10u;
+            worst_error = l_2.panel_k.w;
+        }
+    }
+    if (count_1 > 11u) {
+        let _e232 = r_3.total;
+        r_3.total = (_e232 + l_2.panel_l.z);
+        let _e237 = r_3.errors;
+        r_3.errors = (_e237 + l_2.panel_l.w);
+        let _e243 = worst_error;
+        if (l_2.panel_l.w > _e243) {
+            r_3.worst = 11u;
+            worst_error = l_2.panel_l.w;
+        }
+    }
+    if (count_1 > 12u) {
+        let _e252 = r_3.total;
+        r_3.total = (_e252 + l_2.panel_m.z);
+        let _e257 = r_3.errors;
+        r_3.errors = (_e257 + l_2.panel_m.w);
+        let _e263 = worst_error;
+        if (l_2.panel_m.w > _e263) {
+            r_3.worst = 12u;
+            worst_error = l_2.panel_m.w;
+        }
+    }
+    if (count_1 > 13u) {
+        let _e272 = r_3.total;
+        r_3.total = (_e272 + l_2.panel_n.z);
+        let _e277 = r_3.errors;
+        r_3.errors = (_e277 + l_2.panel_n.w);
+        let _e283 = worst_error;
+        if (l_2.panel_n.w > _e283) {
+            r_3.worst = 13u;
+            worst_error = l_2.panel_n.w;
+        }
+    }
+    if (count_1 > 14u) {
+        let _e292 = r_3.total;
+        r_3.total = (_e292 + l_2.panel_o.z);
+        let _e297 = r_3.errors;
+        r_3.errors = (_e297 + l_2.panel_o.w);
+        let _e303 = worst_error;
+        if (l_2.panel_o.w > _e303) {
+            r_3.worst = 14u;
+            worst_error = l_2.panel_o.w;
+        }
+    }
+    if (count_1 > 15u) {
+        let _e312 = r_3.total;
+        r_3.total = (_e312 + l_2.panel_p.z);
+        let _e317 = r_3.errors;
+        r_3.errors = (_e317 + l_2.panel_p.w);
+        let _e323 = worst_error;
+        if (l_2.panel_p.w > _e323) {
+            r_3.worst = 15u;
+            worst_error = l_2.panel_p.w;
+        }
+    }
+    let _e329 = r_3;
+    return _e329;
 }
 
 fn airlight_asinh(x_14: f32) -> f32 {
@@ -4540,9 +4785,9 @@ fn airlight_to_w(g_19: AirlightOuter, s_19: f32) -> f32 {
 
 fn airlight_cos_sin_half_turn(x_15: f32) -> vec2<f32> {
     let r_12 = (x_15 - 1.5707964f);
-    let z_11 = (r_12 * r_12);
-    let cos_r = (1f - ((z_11 / 2f) * (1f - ((z_11 / 12f) * (1f - ((z_11 / 30f) * (1f - ((z_11 / 56f) * (1f - ((z_11 / 90f) * (1f - ((z_11 / 132f) * (1f - (z_11 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_11 / 6f) * (1f - ((z_11 / 20f) * (1f - ((z_11 / 42f) * (1f - ((z_11 / 72f) * (1f - ((z_11 / 110f) * (1f - ((z_11 / 156f) * (1f - (z_11 / 210f)))))))))))))));
+    let z_12 = (r_12 * r_12);
+    let cos_r = (1f - ((z_12 / 2f) * (1f - ((z_12 / 12f) * (1f - ((z_12 / 30f) * (1f - ((z_12 / 56f) * (1f - ((z_12 / 90f) * (1f - ((z_12 / 132f) * (1f - (z_12 / 182f))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_12 / 6f) * (1f - ((z_12 / 20f) * (1f - ((z_12 / 42f) * (1f - ((z_12 / 72f) * (1f - ((z_12 / 110f) * (1f - ((z_12 / 156f) * (1f - (z_12 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
@@ -4580,17 +4825,21 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
 }
 
 fn airlight_outer_point(s_21: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, array<f32, 4>(0f, 0f, 0f, 0f));
+    let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
+    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f));
 }
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_102: bool;
+    var local_108: bool;
     var u_1: vec3<f32>;
-    var cuts_1: array<f32, 2>;
-    var k_4: u32 = 0u;
+    var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var i_17: u32 = 1u;
+    var j_3: u32;
+    var local_109: bool;
+    var k_3: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_103: bool;
+    var local_110: bool;
     var i_19: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
@@ -4598,11 +4847,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     let to_light_1 = (s_22.light_position - s_22.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_22.intensity == 0f)) {
-        local_102 = (s_22.sigma_s == 0f);
+        local_108 = (s_22.sigma_s == 0f);
     } else {
-        local_102 = true;
+        local_108 = true;
     }
-    let _e18 = local_102;
+    let _e18 = local_108;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4613,7 +4862,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         let _e27 = g_20;
         return _e27;
     }
-    if (s_22.brdf_albedo == 0f) {
+    if (s_22.brdf_scale == 0f) {
         g_20.outcome = 1u;
         let _e33 = g_20;
         return _e33;
@@ -4634,130 +4883,371 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     g_20.u = _e67;
     g_20.cos_a = cos_a_1;
     g_20.sin_a = _e41;
-    let _e71 = airlight_angle(cos_a_1, _e41);
-    let first = abs((1.5707964f - _e71));
-    cuts_1 = array<f32, 2>(first, (AIRLIGHT_PI - first));
-    let _e79 = cuts_1[1];
-    let _e81 = cuts_1[0];
-    if (_e79 < _e81) {
-        let c_10 = cuts_1[0];
-        let _e87 = cuts_1[1];
-        cuts_1[0] = _e87;
-        cuts_1[1] = c_10;
+    let _e84 = airlight_angle(cos_a_1, _e41);
+    let first = abs((1.5707964f - _e84));
+    cuts_1[0] = first;
+    cuts_1[1] = (AIRLIGHT_PI - first);
+    if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        g_20.max_panels = AIRLIGHT_PHONG_PANELS;
+        let _e97 = airlight_normalize(s_22.brdf_view);
+        let _e103 = airlight_normalize((((2f * dot(_e37, _e97)) * _e37) - _e97));
+        let _e104 = u_1;
+        let x_27 = dot(_e103, _e104);
+        let _e106 = u_1;
+        let y_10 = dot(_e103, cross(l_3, _e106));
+        g_20.cos_r = dot(_e103, l_3);
+        g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
+        let _e118 = g_20.cos_r;
+        let _e120 = g_20.sin_r;
+        let _e121 = airlight_angle(_e118, _e120);
+        g_20.alpha_r = _e121;
+        let _e123 = g_20.sin_r;
+        if (_e123 > 0f) {
+            let _e126 = airlight_angle(x_27, y_10);
+            let _e128 = airlight_angle(x_27, -(y_10));
+            let phi_r = select(_e126, -(_e128), (y_10 < 0f));
+            let _e136 = g_20.sin_r;
+            let _e140 = g_20.sin_r;
+            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+        }
+        let _e145 = g_20.alpha_r;
+        let first_r = abs((1.5707964f - _e145));
+        cuts_1[2] = first_r;
+        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        let _e154 = g_20.alpha_r;
+        cuts_1[4] = _e154;
+        if (s_22.brdf_exponent > 1f) {
+            let width_3 = (1f / sqrt(s_22.brdf_exponent));
+            let _e164 = g_20.alpha_r;
+            cuts_1[5] = (_e164 - (1.5f * width_3));
+            let _e170 = g_20.alpha_r;
+            cuts_1[6] = (_e170 + (1.5f * width_3));
+            let _e176 = g_20.alpha_r;
+            cuts_1[7] = (_e176 - (4f * width_3));
+            let _e182 = g_20.alpha_r;
+            cuts_1[8] = (_e182 + (4f * width_3));
+        }
+        let meet = cross(_e37, _e103);
+        let _e187 = airlight_safe_length(meet);
+        if (_e187 > AIRLIGHT_FLT_EPS) {
+            let _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1f, 1f));
+            cuts_1[9] = _e195;
+            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        }
     }
     loop {
-        let _e93 = i_18;
-        if (_e93 < 2u) {
+        let _e202 = i_17;
+        if (_e202 < 11u) {
         } else {
             break;
         }
         {
-            let _e96 = i_18;
-            let _e98 = cuts_1[_e96];
-            let _e100 = k_4;
-            let _e102 = g_20.gamma[_e100];
-            if (_e98 > _e102) {
-                let _e106 = i_18;
-                let _e108 = cuts_1[_e106];
-                local_103 = (_e108 < AIRLIGHT_PI);
+            let _e205 = i_17;
+            let c_10 = cuts_1[_e205];
+            let _e208 = i_17;
+            j_3 = _e208;
+            loop {
+                let _e210 = j_3;
+                if (_e210 > 0u) {
+                    let _e215 = j_3;
+                    let _e219 = cuts_1[(_e215 - 1u)];
+                    local_109 = (_e219 > c_10);
+                } else {
+                    local_109 = false;
+                }
+                let _e222 = local_109;
+                if _e222 {
+                } else {
+                    break;
+                }
+                {
+                    let _e223 = j_3;
+                    let _e225 = j_3;
+                    let _e229 = cuts_1[(_e225 - 1u)];
+                    cuts_1[_e223] = _e229;
+                    let _e230 = j_3;
+                    j_3 = (_e230 - 1u);
+                }
+            }
+            let _e233 = j_3;
+            cuts_1[_e233] = c_10;
+        }
+        continuing {
+            let _e236 = i_17;
+            i_17 = (_e236 + 1u);
+        }
+    }
+    loop {
+        let _e242 = i_18;
+        if (_e242 < 11u) {
+        } else {
+            break;
+        }
+        {
+            let _e245 = i_18;
+            let _e247 = cuts_1[_e245];
+            let _e249 = k_3;
+            let _e251 = g_20.gamma[_e249];
+            if (_e247 > _e251) {
+                let _e255 = i_18;
+                let _e257 = cuts_1[_e255];
+                local_110 = (_e257 < AIRLIGHT_PI);
             } else {
-                local_103 = false;
+                local_110 = false;
             }
-            let _e112 = local_103;
-            if _e112 {
-                let _e113 = k_4;
-                k_4 = (_e113 + 1u);
-                let _e117 = k_4;
-                let _e119 = i_18;
-                let _e121 = cuts_1[_e119];
-                g_20.gamma[_e117] = _e121;
+            let _e261 = local_110;
+            if _e261 {
+                let _e262 = k_3;
+                k_3 = (_e262 + 1u);
+                let _e266 = k_3;
+                let _e268 = i_18;
+                let _e270 = cuts_1[_e268];
+                g_20.gamma[_e266] = _e270;
             }
         }
         continuing {
-            let _e123 = i_18;
-            i_18 = (_e123 + 1u);
+            let _e272 = i_18;
+            i_18 = (_e272 + 1u);
         }
     }
-    let _e126 = k_4;
-    g_20.gamma[(_e126 + 1u)] = AIRLIGHT_PI;
-    let _e132 = k_4;
-    g_20.panels = (_e132 + 1u);
+    let _e275 = k_3;
+    g_20.gamma[(_e275 + 1u)] = AIRLIGHT_PI;
+    let _e281 = k_3;
+    g_20.panels = (_e281 + 1u);
     loop {
-        let _e137 = i_19;
-        let _e139 = g_20.panels;
-        if (_e137 <= _e139) {
+        let _e286 = i_19;
+        let _e288 = g_20.panels;
+        if (_e286 <= _e288) {
         } else {
             break;
         }
         {
-            let _e142 = i_19;
-            let _e144 = i_19;
-            g_20.edges[_e142] = f32(_e144);
+            let _e291 = i_19;
+            let _e293 = i_19;
+            g_20.edges[_e291] = f32(_e293);
         }
         continuing {
-            let _e147 = i_19;
-            i_19 = (_e147 + 1u);
+            let _e296 = i_19;
+            i_19 = (_e296 + 1u);
         }
     }
-    let _e149 = g_20;
-    return _e149;
+    let _e298 = g_20;
+    return _e298;
+}
+
+fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
+    var local_111: bool;
+
+    let _e4 = airlight_cos_sin((0.5f * x_17));
+    let s2_ = (_e4.y * _e4.y);
+    let cos_x = (1f - (2f * s2_));
+    let sin_x = ((2f * _e4.y) * _e4.x);
+    let clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    let fall = (q_1.k * s2_);
+    if (fall < 1f) {
+        local_111 = (clip > 0f);
+    } else {
+        local_111 = false;
+    }
+    let _e35 = local_111;
+    if _e35 {
+        let _e39 = airlight_log1p(-(fall));
+        return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    }
+    return 0f;
+}
+
+fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep_: bool) -> f32 {
+    if smoothstep_ {
+        let _e18 = airlight_lobe_at(q_2, (lo_3 + (((w * u_2) * u_2) * ((3f - u_2) - u_2))));
+        return ((((w * 6f) * u_2) * (1f - u_2)) * _e18);
+    }
+    let _e22 = airlight_lobe_at(q_2, (lo_3 + (w * u_2)));
+    return (w * _e22);
+}
+
+fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
+    var end: f32;
+    var local_112: bool;
+
+    end = x_18;
+    let _e3 = end;
+    if (_e3 > AIRLIGHT_PI) {
+        let _e6 = end;
+        end = (_e6 - 6.2831855f);
+    }
+    let _e9 = end;
+    if (_e9 < -3.1415927f) {
+        let _e12 = end;
+        end = (_e12 + 6.2831855f);
+    }
+    let _e15 = end;
+    let _e16 = end;
+    if (_e16 > -(cut)) {
+        let _e21 = end;
+        local_112 = (_e21 < cut);
+    } else {
+        local_112 = false;
+    }
+    let _e24 = local_112;
+    return select(0f, _e15, _e24);
+}
+
+fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
+    var local_113: bool;
+    var sum_5: f32 = 0f;
+
+    let w_6 = (hi_3 - lo_4);
+    if !(!((w_6 > 0f))) {
+        let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_6)));
+        local_113 = !((_e14 > 0f));
+    } else {
+        local_113 = true;
+    }
+    let _e19 = local_113;
+    if _e19 {
+        return 0f;
+    }
+    let _e23 = sum_5;
+    let _e25 = airlight_lobe_node(q_3, lo_4, w_6, 0.42556283f, smoothstep_1);
+    let _e27 = airlight_lobe_node(q_3, lo_4, w_6, 0.57443714f, smoothstep_1);
+    sum_5 = (_e23 + (0.14776212f * (_e25 + _e27)));
+    let _e32 = sum_5;
+    let _e34 = airlight_lobe_node(q_3, lo_4, w_6, 0.2833023f, smoothstep_1);
+    let _e36 = airlight_lobe_node(q_3, lo_4, w_6, 0.7166977f, smoothstep_1);
+    sum_5 = (_e32 + (0.13463336f * (_e34 + _e36)));
+    let _e41 = sum_5;
+    let _e43 = airlight_lobe_node(q_3, lo_4, w_6, 0.16029522f, smoothstep_1);
+    let _e45 = airlight_lobe_node(q_3, lo_4, w_6, 0.8397048f, smoothstep_1);
+    sum_5 = (_e41 + (0.10954318f * (_e43 + _e45)));
+    let _e50 = sum_5;
+    let _e52 = airlight_lobe_node(q_3, lo_4, w_6, 0.067468315f, smoothstep_1);
+    let _e54 = airlight_lobe_node(q_3, lo_4, w_6, 0.93253165f, smoothstep_1);
+    sum_5 = (_e50 + (0.07472567f * (_e52 + _e54)));
+    let _e59 = sum_5;
+    let _e61 = airlight_lobe_node(q_3, lo_4, w_6, 0.013046736f, smoothstep_1);
+    let _e63 = airlight_lobe_node(q_3, lo_4, w_6, 0.98695326f, smoothstep_1);
+    sum_5 = (_e59 + (0.03333567f * (_e61 + _e63)));
+    let _e68 = sum_5;
+    return _e68;
+}
+
+fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent: f32) -> f32 {
+    var reach: f32 = 1f;
+    var inner: vec3<f32> = vec3(0f);
+
+    let c_11 = (g_21.cos_r * cs.x);
+    let d_3 = (g_21.sin_r * cs.y);
+    let peak = (c_11 + d_3);
+    if !((peak > 0f)) {
+        return 0f;
+    }
+    let _e20 = airlight_cos_sin((0.5f * (gamma - g_21.alpha_r)));
+    let sin_gap = _e20.y;
+    let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
+    let q_6 = AirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2f * d_3) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
+    if (exponent > 0f) {
+        let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent));
+        reach = -(_e46);
+    }
+    let _e48 = reach;
+    let _e51 = reach;
+    let s2_1 = select(1f, (_e48 / q_6.k), (_e51 < q_6.k));
+    let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
+    let cut_2 = (2f * _e60);
+    if (psi_n < AIRLIGHT_PI) {
+        let _e72 = airlight_arc_end((g_21.delta.x - psi_n), cut_2);
+        inner.y = _e72;
+        let _e77 = airlight_arc_end((g_21.delta.x + psi_n), cut_2);
+        inner.z = _e77;
+    }
+    let _e79 = inner.y;
+    let _e81 = inner.x;
+    if (_e79 < _e81) {
+        let _e83 = inner;
+        inner = _e83.yxz;
+    }
+    let _e86 = inner.z;
+    let _e88 = inner.y;
+    if (_e86 < _e88) {
+        let _e90 = inner;
+        inner = _e90.xzy;
+    }
+    let _e93 = inner.y;
+    let _e95 = inner.x;
+    if (_e93 < _e95) {
+        let _e97 = inner;
+        inner = _e97.yxz;
+    }
+    let smoothstep_2 = (exponent < 1f);
+    let _e103 = inner.x;
+    let _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
+    let _e106 = inner.x;
+    let _e108 = inner.y;
+    let _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
+    let _e112 = inner.y;
+    let _e114 = inner.z;
+    let _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
+    let _e118 = inner.z;
+    let _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
+    return (((_e104 + _e109) + _e115) + _e119);
 }
 
 fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
-    var g_21: AirlightOuter;
-    var local_104: bool;
-    var local_105: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_106: bool;
-    var local_107: bool;
-    var local_108: bool;
-    var local_109: bool;
-    var local_110: bool;
-    var local_111: bool;
-    var scale: f32 = 0f;
-    var local_112: bool;
-    var local_113: bool;
+    var g_22: AirlightOuter;
     var local_114: bool;
     var local_115: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_116: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
-    var i_20: u32 = 0u;
     var local_117: bool;
     var local_118: bool;
     var local_119: bool;
+    var local_120: bool;
+    var local_121: bool;
+    var scale: f32 = 0f;
+    var local_122: bool;
+    var local_123: bool;
+    var local_124: bool;
+    var local_125: bool;
+    var local_126: bool;
+    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
+    var i_20: u32 = 0u;
+    var local_127: bool;
+    var local_128: bool;
+    var local_129: bool;
     var n_1: u32 = 0u;
     var i_21: u32 = 0u;
-    var local_120: bool;
+    var local_130: bool;
 
-    if (s_23.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_23);
         return _e4;
     }
     let _e6 = airlight_outer_point(s_23, AIRLIGHT_SEGMENT_PANELS);
-    g_21 = _e6;
+    g_22 = _e6;
     if (s_23.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
-        let _e11 = g_21;
+        let _e11 = g_22;
         return _e11;
     }
     let ab_1 = (s_23.light_end - s_23.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_104 = (s_23.intensity == 0f);
+        local_114 = (s_23.intensity == 0f);
     } else {
-        local_104 = true;
+        local_114 = true;
     }
-    let _e26 = local_104;
+    let _e26 = local_114;
     if !(_e26) {
-        local_105 = (s_23.sigma_s == 0f);
+        local_115 = (s_23.sigma_s == 0f);
     } else {
-        local_105 = true;
+        local_115 = true;
     }
-    let _e34 = local_105;
+    let _e34 = local_115;
     if _e34 {
-        g_21.outcome = 1u;
-        let _e37 = g_21;
+        g_22.outcome = 1u;
+        let _e37 = g_22;
         return _e37;
     }
     let e_4 = (ab_1 / vec3(_e15));
@@ -4778,102 +5268,102 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_106 = (sin_a_1 > 0f);
+        local_116 = (sin_a_1 > 0f);
     } else {
-        local_106 = false;
+        local_116 = false;
     }
-    let _e84 = local_106;
+    let _e84 = local_116;
     if _e84 {
         let _e87 = s_star;
-        local_107 = (_e87 >= 0f);
+        local_117 = (_e87 >= 0f);
     } else {
-        local_107 = false;
+        local_117 = false;
     }
-    let _e91 = local_107;
+    let _e91 = local_117;
     if _e91 {
         let _e94 = s_star;
-        local_108 = (_e94 <= _e15);
+        local_118 = (_e94 <= _e15);
     } else {
-        local_108 = false;
+        local_118 = false;
     }
-    let _e97 = local_108;
+    let _e97 = local_118;
     if _e97 {
         let _e101 = t_star;
-        local_109 = (s_23.t_min <= _e101);
+        local_119 = (s_23.t_min <= _e101);
     } else {
-        local_109 = false;
+        local_119 = false;
     }
-    let _e104 = local_109;
+    let _e104 = local_119;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_111 = (_e110 <= s_23.t_max);
+            local_121 = (_e110 <= s_23.t_max);
         } else {
-            local_111 = true;
+            local_121 = true;
         }
-        let _e114 = local_111;
-        local_110 = _e114;
+        let _e114 = local_121;
+        local_120 = _e114;
     } else {
-        local_110 = false;
+        local_120 = false;
     }
-    let _e116 = local_110;
+    let _e116 = local_120;
     if _e116 {
-        g_21.outcome = 2u;
-        let _e119 = g_21;
+        g_22.outcome = 2u;
+        let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_112 = (_e73 > 0f);
+        local_122 = (_e73 > 0f);
     } else {
-        local_112 = false;
+        local_122 = false;
     }
-    let _e129 = local_112;
+    let _e129 = local_122;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_113 = (_e136 < (_e15 + _e15));
+        local_123 = (_e136 < (_e15 + _e15));
     } else {
-        local_113 = false;
+        local_123 = false;
     }
-    let _e140 = local_113;
+    let _e140 = local_123;
     if _e140 {
         let _e143 = scale;
-        local_114 = (_e143 < _e15);
+        local_124 = (_e143 < _e15);
     } else {
-        local_114 = false;
+        local_124 = false;
     }
-    let near_1 = local_114;
+    let near_1 = local_124;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_115 = _e154;
+        local_125 = _e154;
     } else {
-        local_115 = false;
+        local_125 = false;
     }
-    let _e156 = local_115;
+    let _e156 = local_125;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_116 = _e163;
+        local_126 = _e163;
     } else {
-        local_116 = false;
+        local_126 = false;
     }
-    let _e165 = local_116;
+    let _e165 = local_126;
     if !(_e165) {
         scale = 0f;
     }
-    g_21.e = e_4;
+    g_22.e = e_4;
     let _e170 = s_star;
-    g_21.s_star = _e170;
+    g_22.s_star = _e170;
     let _e172 = scale;
-    g_21.scale = _e172;
+    g_22.scale = _e172;
     let _e178 = s_star;
     at = array<f32, 3>(_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
     loop {
@@ -4885,21 +5375,21 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         {
             if (cos_a_2 == 0f) {
                 let _e196 = i_20;
-                local_117 = (_e196 > 0u);
+                local_127 = (_e196 > 0u);
             } else {
-                local_117 = false;
+                local_127 = false;
             }
-            let _e200 = local_117;
+            let _e200 = local_127;
             if _e200 {
                 continue;
             }
             let _e201 = i_20;
             if (_e201 == 2u) {
-                local_118 = infinite_4;
+                local_128 = infinite_4;
             } else {
-                local_118 = false;
+                local_128 = false;
             }
-            let _e207 = local_118;
+            let _e207 = local_128;
             if _e207 {
                 continue;
             }
@@ -4908,14 +5398,14 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e210 > 0f) {
                 let _e215 = i_20;
                 let _e217 = at[_e215];
-                local_119 = (_e217 < _e15);
+                local_129 = (_e217 < _e15);
             } else {
-                local_119 = false;
+                local_129 = false;
             }
-            let _e220 = local_119;
+            let _e220 = local_129;
             if _e220 {
                 let _e221 = i_20;
-                let _e223 = g_21;
+                let _e223 = g_22;
                 let _e224 = i_20;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
@@ -4930,32 +5420,32 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e232 = cuts_2[1];
     let _e234 = cuts_2[0];
     if (_e232 < _e234) {
-        let c_11 = cuts_2[0];
+        let c_12 = cuts_2[0];
         let _e240 = cuts_2[1];
         cuts_2[0] = _e240;
-        cuts_2[1] = c_11;
+        cuts_2[1] = c_12;
     }
     let _e243 = cuts_2[2];
     let _e245 = cuts_2[1];
     if (_e243 < _e245) {
-        let c_12 = cuts_2[1];
+        let c_13 = cuts_2[1];
         let _e251 = cuts_2[2];
         cuts_2[1] = _e251;
-        cuts_2[2] = c_12;
+        cuts_2[2] = c_13;
     }
     let _e254 = cuts_2[1];
     let _e256 = cuts_2[0];
     if (_e254 < _e256) {
-        let c_13 = cuts_2[0];
+        let c_14 = cuts_2[0];
         let _e262 = cuts_2[1];
         cuts_2[0] = _e262;
-        cuts_2[1] = c_13;
+        cuts_2[1] = c_14;
     }
-    let _e264 = g_21;
+    let _e264 = g_22;
     let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_21;
+    let _e268 = g_22;
     let _e270 = airlight_to_w(_e268, 0f);
-    g_21.edges[0] = _e270;
+    g_22.edges[0] = _e270;
     loop {
         let _e275 = i_21;
         if (_e275 < 3u) {
@@ -4966,22 +5456,22 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             let _e278 = i_21;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
-            let _e284 = g_21.edges[_e282];
+            let _e284 = g_22.edges[_e282];
             if (_e280 > _e284) {
                 let _e288 = i_21;
                 let _e290 = cuts_2[_e288];
-                local_120 = (_e290 < _e265);
+                local_130 = (_e290 < _e265);
             } else {
-                local_120 = false;
+                local_130 = false;
             }
-            let _e293 = local_120;
+            let _e293 = local_130;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
                 let _e300 = i_21;
                 let _e302 = cuts_2[_e300];
-                g_21.edges[_e298] = _e302;
+                g_22.edges[_e298] = _e302;
             }
         }
         continuing {
@@ -4990,73 +5480,82 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         }
     }
     let _e307 = n_1;
-    g_21.edges[(_e307 + 1u)] = _e265;
+    g_22.edges[(_e307 + 1u)] = _e265;
     let _e312 = n_1;
-    g_21.panels = (_e312 + 1u);
-    let _e315 = g_21;
+    g_22.panels = (_e312 + 1u);
+    let _e315 = g_22;
     return _e315;
 }
 
-fn airlight_outer_node(s_24: AirlightScene, g_22: AirlightOuter, x_17: f32) -> AirlightNode {
+fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> AirlightNode {
     var p: AirlightScene;
+    var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
 
     p = s_24;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-        let i_22 = min(u32(max(floor(x_17), 0f)), (g_22.panels - 1u));
-        let t_6 = (x_17 - f32(i_22));
-        let a_28 = g_22.gamma[i_22];
-        let b_18 = g_22.gamma[(i_22 + 1u)];
-        let gamma = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
+    if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        let i_22 = min(u32(max(floor(x_19), 0f)), (g_23.panels - 1u));
+        let t_6 = (x_19 - f32(i_22));
+        let a_28 = g_23.gamma[i_22];
+        let b_18 = g_23.gamma[(i_22 + 1u)];
+        let gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
         let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
             let _e45 = p;
             return AirlightNode(_e45, 0f);
         }
-        let _e48 = airlight_cos_sin_half_turn(gamma);
-        let _e53 = airlight_half_arc(g_22.cos_a, g_22.sin_a, _e48.x, _e48.y);
+        let _e48 = airlight_cos_sin_half_turn(gamma_1);
+        let _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
         if !((_e53 > 0f)) {
             let _e57 = p;
             return AirlightNode(_e57, 0f);
         }
-        let _e67 = airlight_cos_sin_half_turn(_e53);
-        let arc = (2f * (((g_22.cos_a * _e48.x) * _e53) + ((g_22.sin_a * _e48.y) * _e67.y)));
-        p.dir = ((_e48.x * g_22.l) + (_e48.y * g_22.u));
+        if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+            let _e72 = airlight_cos_sin_half_turn(_e53);
+            let arc = (2f * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e72.y)));
+            weight = ((s_24.brdf_scale * 0.31830987f) * arc);
+        } else {
+            let n_3 = s_24.brdf_exponent;
+            let _e89 = airlight_lobe_arcs(g_23, _e48, gamma_1, _e53, n_3);
+            weight = (((s_24.brdf_scale * (n_3 + 2f)) * 0.15915494f) * _e89);
+        }
+        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
-        let _e87 = p;
-        return AirlightNode(_e87, ((((s_24.brdf_albedo * 0.31830987f) * arc) * _e48.y) * jacobian));
+        let _e105 = p;
+        let _e106 = weight;
+        return AirlightNode(_e105, ((_e106 * _e48.y) * jacobian));
     }
     if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_17;
-        if (g_22.scale > 0f) {
-            at_1 = (g_22.s_star + (g_22.scale * sinh(x_17)));
-            ds = (g_22.scale * cosh(x_17));
+        at_1 = x_19;
+        if (g_23.scale > 0f) {
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
+            ds = (g_23.scale * cosh(x_19));
         }
-        let _e115 = at_1;
-        p.light_position = (g_22.a + (_e115 * g_22.e));
-        let _e119 = p;
-        let _e120 = ds;
-        return AirlightNode(_e119, _e120);
+        let _e130 = at_1;
+        p.light_position = (g_23.a + (_e130 * g_23.e));
+        let _e134 = p;
+        let _e135 = ds;
+        return AirlightNode(_e134, _e135);
     }
-    let _e122 = p;
-    return AirlightNode(_e122, 1f);
+    let _e137 = p;
+    return AirlightNode(_e137, 1f);
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_121: bool;
+    var local_131: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_121 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_131 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_121 = true;
+        local_131 = true;
     }
-    let _e11 = local_121;
+    let _e11 = local_131;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5065,16 +5564,16 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_122: bool;
+    var local_132: bool;
 
     let _e6 = airlight_vec_finite(p_1.light_position);
     if _e6 {
         let _e10 = airlight_vec_finite(p_1.dir);
-        local_122 = _e10;
+        local_132 = _e10;
     } else {
-        local_122 = false;
+        local_132 = false;
     }
-    let _e12 = local_122;
+    let _e12 = local_132;
     if _e12 {
         let _e13 = airlight_canonical(p_1);
         let _e14 = airlight_refined(p_1, _e13);
@@ -5087,7 +5586,7 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
-    var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_2: u32 = 0u;
     var a_16: f32;
     var b_12: f32;
@@ -5096,17 +5595,17 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var queued_lo: f32 = 0f;
     var queued_hi: f32 = 0f;
     var step_2: u32 = 0u;
-    var k_5: f32;
+    var k_4: f32;
     var gauss: f32;
-    var j_3: u32;
-    var local_123: bool;
+    var j_4: u32;
+    var local_133: bool;
     var f: f32;
-    var local_124: bool;
+    var local_134: bool;
     var split: bool;
     var tries: u32;
-    var local_125: bool;
-    var local_126: bool;
-    var local_127: bool;
+    var local_135: bool;
+    var local_136: bool;
+    var local_137: bool;
 
     let _e1 = airlight_valid(s_25);
     if !(_e1) {
@@ -5124,145 +5623,145 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     b_12 = _e6.edges[1];
     let evaluations = ((2u * _e6.max_panels) - 1u);
     loop {
-        let _e58 = step_2;
-        if (_e58 < evaluations) {
+        let _e78 = step_2;
+        if (_e78 < evaluations) {
         } else {
             break;
         }
         {
-            let _e60 = a_16;
-            let _e61 = b_12;
-            let c_14 = (0.5f * (_e60 + _e61));
-            let _e65 = b_12;
-            let _e66 = a_16;
-            let hw_3 = (0.5f * (_e65 - _e66));
-            k_5 = 0f;
+            let _e80 = a_16;
+            let _e81 = b_12;
+            let c_15 = (0.5f * (_e80 + _e81));
+            let _e85 = b_12;
+            let _e86 = a_16;
+            let hw_3 = (0.5f * (_e85 - _e86));
+            k_4 = 0f;
             gauss = 0f;
-            j_3 = 0u;
+            j_4 = 0u;
             loop {
-                let _e76 = j_3;
-                if (_e76 < 7u) {
+                let _e96 = j_4;
+                if (_e96 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e79 = j_3;
-                    let node = _e19[(_e79 / 2u)];
-                    let _e89 = j_3;
-                    if ((_e89 & 1u) == 0u) {
-                        let _e96 = j_3;
-                        local_123 = (_e96 < 6u);
+                    let _e99 = j_4;
+                    let node = _e19[(_e99 / 2u)];
+                    let _e109 = j_4;
+                    if ((_e109 & 1u) == 0u) {
+                        let _e116 = j_4;
+                        local_133 = (_e116 < 6u);
                     } else {
-                        local_123 = false;
+                        local_133 = false;
                     }
-                    let _e100 = local_123;
-                    let w_5 = select((c_14 + (hw_3 * node.x)), (c_14 - (hw_3 * node.x)), _e100);
-                    let _e102 = airlight_outer_node(s_25, _e6, w_5);
+                    let _e120 = local_133;
+                    let w_7 = select((c_15 + (hw_3 * node.x)), (c_15 - (hw_3 * node.x)), _e120);
+                    let _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0f;
-                    if (_e102.weight != 0f) {
-                        let _e109 = airlight_point_integral(_e102.scene);
-                        if (_e109.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e109;
+                    if (_e122.weight != 0f) {
+                        let _e129 = airlight_point_integral(_e122.scene);
+                        if (_e129.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e129;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_124 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_134 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_124 = false;
+                            local_134 = false;
                         }
-                        let _e122 = local_124;
-                        if _e122 {
-                            return _e109;
+                        let _e142 = local_134;
+                        if _e142 {
+                            return _e129;
                         }
-                        f = (_e109.in_scatter * _e102.weight);
+                        f = (_e129.in_scatter * _e122.weight);
                     }
-                    let _e126 = k_5;
-                    let _e128 = f;
-                    k_5 = (_e126 + (node.y * _e128));
-                    let _e131 = gauss;
-                    let _e133 = f;
-                    gauss = (_e131 + (node.z * _e133));
+                    let _e146 = k_4;
+                    let _e148 = f;
+                    k_4 = (_e146 + (node.y * _e148));
+                    let _e151 = gauss;
+                    let _e153 = f;
+                    gauss = (_e151 + (node.z * _e153));
                 }
                 continuing {
-                    let _e137 = j_3;
-                    j_3 = (_e137 + 1u);
+                    let _e157 = j_4;
+                    j_4 = (_e157 + 1u);
                 }
             }
-            let _e139 = slot_1;
-            let _e140 = a_16;
-            let _e141 = b_12;
-            let _e142 = k_5;
-            let _e144 = k_5;
-            let _e146 = gauss;
-            airlight_list_set((&list_1), _e139, vec4<f32>(_e140, _e141, (_e142 * hw_3), abs(((_e144 * hw_3) - (_e146 * hw_3)))));
-            let _e151 = slot_1;
-            let _e152 = count_2;
-            if (_e151 == _e152) {
-                let _e154 = count_2;
-                count_2 = (_e154 + 1u);
+            let _e159 = slot_1;
+            let _e160 = a_16;
+            let _e161 = b_12;
+            let _e162 = k_4;
+            let _e164 = k_4;
+            let _e166 = gauss;
+            airlight_list_set((&list_1), _e159, vec4<f32>(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
+            let _e171 = slot_1;
+            let _e172 = count_2;
+            if (_e171 == _e172) {
+                let _e174 = count_2;
+                count_2 = (_e174 + 1u);
             }
-            let _e157 = count_2;
-            if (_e157 < _e6.panels) {
-                let _e161 = count_2;
-                a_16 = _e6.edges[_e161];
-                let _e164 = count_2;
-                b_12 = _e6.edges[(_e164 + 1u)];
-                let _e168 = count_2;
-                slot_1 = _e168;
+            let _e177 = count_2;
+            if (_e177 < _e6.panels) {
+                let _e181 = count_2;
+                a_16 = _e6.edges[_e181];
+                let _e184 = count_2;
+                b_12 = _e6.edges[(_e184 + 1u)];
+                let _e188 = count_2;
+                slot_1 = _e188;
             } else {
-                let _e169 = queued;
-                if _e169 {
-                    let _e170 = queued_lo;
-                    a_16 = _e170;
-                    let _e171 = queued_hi;
-                    b_12 = _e171;
-                    let _e172 = count_2;
-                    slot_1 = _e172;
+                let _e189 = queued;
+                if _e189 {
+                    let _e190 = queued_lo;
+                    a_16 = _e190;
+                    let _e191 = queued_hi;
+                    b_12 = _e191;
+                    let _e192 = count_2;
+                    slot_1 = _e192;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     loop {
-                        let _e178 = tries;
-                        if (_e178 < _e6.max_panels) {
+                        let _e198 = tries;
+                        if (_e198 < _e6.max_panels) {
                         } else {
                             break;
                         }
                         {
-                            let _e181 = list_1;
-                            let _e182 = count_2;
-                            let _e183 = airlight_list_scan(_e181, _e182);
-                            let total_4 = _e183.total;
-                            let worst_1 = _e183.worst;
-                            if !(!((_e183.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e194 = count_2;
-                                local_125 = (_e194 == _e6.max_panels);
+                            let _e201 = list_1;
+                            let _e202 = count_2;
+                            let _e203 = airlight_list_scan(_e201, _e202);
+                            let total_4 = _e203.total;
+                            let worst_1 = _e203.worst;
+                            if !(!((_e203.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
+                                let _e214 = count_2;
+                                local_135 = (_e214 == _e6.max_panels);
                             } else {
-                                local_125 = true;
+                                local_135 = true;
                             }
-                            let _e198 = local_125;
-                            if !(_e198) {
-                                let _e202 = airlight_is_finite(total_4);
-                                local_126 = !(_e202);
+                            let _e218 = local_135;
+                            if !(_e218) {
+                                let _e222 = airlight_is_finite(total_4);
+                                local_136 = !(_e222);
                             } else {
-                                local_126 = true;
+                                local_136 = true;
                             }
-                            let _e205 = local_126;
-                            if _e205 {
+                            let _e225 = local_136;
+                            if _e225 {
                                 break;
                             }
-                            let _e206 = list_1;
-                            let _e207 = airlight_list_get(_e206, worst_1);
-                            let wa_1 = _e207.x;
-                            let wb_1 = _e207.y;
+                            let _e226 = list_1;
+                            let _e227 = airlight_list_get(_e226, worst_1);
+                            let wa_1 = _e227.x;
+                            let wb_1 = _e227.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
-                                local_127 = (mid_3 < wb_1);
+                                local_137 = (mid_3 < wb_1);
                             } else {
-                                local_127 = false;
+                                local_137 = false;
                             }
-                            let _e218 = local_127;
-                            if !(_e218) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e207.xyz, 0f));
+                            let _e238 = local_137;
+                            if !(_e238) {
+                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e227.xyz, 0f));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -5275,28 +5774,28 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             break;
                         }
                         continuing {
-                            let _e226 = tries;
-                            tries = (_e226 + 1u);
+                            let _e246 = tries;
+                            tries = (_e246 + 1u);
                         }
                     }
-                    let _e228 = split;
-                    if !(_e228) {
+                    let _e248 = split;
+                    if !(_e248) {
                         break;
                     }
                 }
             }
         }
         continuing {
-            let _e231 = step_2;
-            step_2 = (_e231 + 1u);
+            let _e251 = step_2;
+            step_2 = (_e251 + 1u);
         }
     }
-    let _e233 = list_1;
-    let _e234 = count_2;
-    let _e235 = airlight_list_scan(_e233, _e234);
-    let total_5 = _e235.total;
-    let _e237 = airlight_is_finite(total_5);
-    if !(_e237) {
+    let _e253 = list_1;
+    let _e254 = count_2;
+    let _e255 = airlight_list_scan(_e253, _e254);
+    let total_5 = _e255.total;
+    let _e257 = airlight_is_finite(total_5);
+    if !(_e257) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

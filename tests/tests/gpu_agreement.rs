@@ -393,16 +393,17 @@ fn eval_runs_segment_lights_on_the_gpu() {
     }
 }
 
-/// The Lambertian surface points of tests/reference/surface.jsonl lit by omni lights (thin and
-/// thick media, grazing normals, lights close to the surface, HG g from −0.7 to 0.95): the
-/// WGSL, SPIR-V, GLSL and HLSL compute shaders at 8 and 12 nodes agree with the f32 CPU kernel
-/// computing the same method (`SurfaceScene::air_light_panels_counted` with the shaders'
-/// control and `SHADER_SURFACE_PANELS`) by the criterion of the point light, and are within
-/// 1e-4 of the nested-quadrature reference, relative to `max(|exact|, 1e-4·scale)` (the f32
-/// target of surface radiance, docs/DESIGN.md §11). Invalid surface records (a light with an
-/// axis, a NaN albedo, an unknown surface kind) give INVALID.
+/// The surface points of tests/reference/surface.jsonl lit by omni lights — Lambertian (thin and
+/// thick media, grazing normals, lights close to the surface, HG g from −0.7 to 0.95) and Phong
+/// (exponents 1 to 200): the WGSL, SPIR-V, GLSL and HLSL compute shaders at 8 and 12 nodes agree
+/// with the f32 CPU kernel computing the same method (`SurfaceScene::air_light_panels_counted`
+/// with the shaders' control, `SHADER_SURFACE_PANELS` or `SHADER_PHONG_PANELS`) by the criterion
+/// of the point light, and are within 1e-4 of the nested-quadrature reference, relative to
+/// `max(|exact|, 1e-4·scale)` (the f32 target of surface radiance, docs/DESIGN.md §11). Invalid
+/// surface records (a light with an axis, a NaN albedo, an unknown surface kind, a negative Phong
+/// exponent, a zero view) give INVALID.
 #[test]
-fn lambertian_surfaces_agree_with_the_cpu_kernel() {
+fn surfaces_agree_with_the_cpu_kernel() {
     use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
     use airlight_shaders::agreement::expect_surface;
     use airlight_shaders::layout::pack_surface;
@@ -414,15 +415,22 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
             other => panic!("surface.jsonl holds surface points valid in f32, not {other:?}"),
         })
         .collect();
-    assert!(cases.len() >= 30, "{} Lambertian records lit by omni lights", cases.len());
+    let phong = cases.iter().filter(|c| matches!(c.0.brdf(), airlight::Brdf::Phong { .. })).count();
+    assert!(cases.len() - phong >= 30 && phong >= 6, "{} Lambertian and {phong} Phong records lit by omni lights", cases.len() - phong);
+    let mut cases = cases;
+    cases.extend(random_phong_surfaces());
     let mut records: Vec<u8> = cases.iter().flat_map(|c| c.1).collect();
     let good = records[..RECORD_SIZE].to_vec();
-    for patch in 0..3 {
-        let mut r = good.clone();
+    let good_phong = cases.iter().find(|c| matches!(c.0.brdf(), airlight::Brdf::Phong { .. })).unwrap().1.to_vec();
+    const PATCHES: usize = 5;
+    for patch in 0..PATCHES {
+        let mut r = if patch < 3 { good.clone() } else { good_phong.clone() };
         match patch {
             0 => r[88..92].copy_from_slice(&1u32.to_le_bytes()),        // a two-lobed light
             1 => r[100..104].copy_from_slice(&f32::NAN.to_le_bytes()), // albedo not finite
-            _ => r[104..108].copy_from_slice(&7u32.to_le_bytes()),     // no such surface kind
+            2 => r[104..108].copy_from_slice(&7u32.to_le_bytes()),     // no such surface kind
+            3 => r[108..112].copy_from_slice(&(-1.0f32).to_le_bytes()), // a negative exponent
+            _ => r[128..140].fill(0),                                   // a zero view
         }
         records.extend_from_slice(&r);
     }
@@ -450,7 +458,7 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
                     failures.push(format!("{label}/{terms} {} #{i}: {err:.2e} off the reference (gpu {got}, exact {})", c.4, c.2));
                 }
             }
-            for k in 0..3 {
+            for k in 0..PATCHES {
                 let (got, status) = unpack_result(&out[(cases.len() + k) * RESULT_SIZE..(cases.len() + k + 1) * RESULT_SIZE]);
                 if (got, status) != (0.0, STATUS_INVALID) {
                     failures.push(format!("{label}/{terms}: invalid surface record {k} gave ({got}, {status})"));
@@ -462,11 +470,50 @@ fn lambertian_surfaces_agree_with_the_cpu_kernel() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
-/// `airlight eval --backend gpu` evaluates Lambertian surface points lit by omni lights through
-/// the shader (`surface_air_light`, within 1e-4 of the reference as above) and answers a Phong
-/// record or one lit by a light with an axis with an error line naming the CPU backend.
+/// Phong surface points lit by omni lights, random over exponents 0.5–200, thin to thick media,
+/// isotropic to HG g = 0.95, any normal, view and light position: as the cases of
+/// `surfaces_agree_with_the_cpu_kernel`, their exact value the f64 default `air_light`
+/// (error-controlled to 1e-10; tests/surface.rs holds it to the nested-quadrature references) and
+/// their scale that of the same point with a Lambertian BRDF at the lobe's peak (as
+/// tests/reference/gen_surface.py defines it).
+fn random_phong_surfaces() -> Vec<(airlight_shaders::agreement::SurfaceRecord<f32>, [u8; RECORD_SIZE], f64, f64, String)> {
+    use airlight::glam::Vec3;
+    use airlight::light::AnyDistribution;
+    use airlight::phase::{AnyPhase, HenyeyGreenstein};
+    use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
+    let mut rng = Rng(2026);
+    let mut out = Vec::new();
+    for i in 0..28 {
+        let mut v = |r: f64| Vec3::from_array(rng.unit_vector().map(|x| x as f32)) * r as f32;
+        let (position, normal, view) = (v(3.0), v(1.0), v(1.0));
+        let light_position = v(0.5 + 6.0 * (i % 5) as f64 / 4.0);
+        let exponent = [0.5f32, 1.0, 3.0, 10.0, 50.0, 100.0, 200.0][i % 7];
+        let sigma_t = [0.01f32, 0.1, 0.5, 2.0][(i / 7) % 4];
+        let g = [0.0f32, 0.5, 0.8, 0.95][i % 4];
+        let medium = Medium { sigma_s: 0.7 * sigma_t, sigma_t };
+        let phase = |g: f32| if g == 0.0 { AnyPhase::Isotropic } else { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g }) };
+        let light = PointLight { position: light_position + position, intensity: 10.0, distribution: AnyDistribution::Omni };
+        let scene = SurfaceScene::new(Surface { position, normal }, Brdf::Phong { k_s: 0.5, exponent, view }, light, medium, phase(g)).unwrap();
+        let wide = |brdf: Brdf<f64>, g: f32| {
+            let light = PointLight { position: light.position.as_dvec3(), intensity: 10.0, distribution: AnyDistribution::Omni };
+            let surface = Surface { position: position.as_dvec3(), normal: normal.as_dvec3() };
+            let medium = Medium { sigma_s: medium.sigma_s as f64, sigma_t: sigma_t as f64 };
+            let phase = if g == 0.0 { AnyPhase::Isotropic } else { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }) };
+            SurfaceScene::new(surface, brdf, light, medium, phase).unwrap().air_light()
+        };
+        let exact = wide(Brdf::Phong { k_s: 0.5, exponent: exponent as f64, view: view.as_dvec3() }, g);
+        let scale = wide(Brdf::Lambert { albedo: 0.5 * (exponent as f64 + 2.0) / 2.0 }, g);
+        let record = airlight_shaders::layout::pack_surface(&scene).unwrap();
+        out.push((scene, record, exact, scale, format!("random phong n={exponent}")));
+    }
+    out
+}
+
+/// `airlight eval --backend gpu` evaluates surface points lit by omni lights (Lambertian and
+/// Phong) through the shader (`surface_air_light`, within 1e-4 of the reference as above) and
+/// answers a record lit by a light with an axis with an error line naming the CPU backend.
 #[test]
-fn eval_runs_lambertian_surfaces_on_the_gpu() {
+fn eval_runs_surfaces_on_the_gpu() {
     use airlight_codegen::eval::{run_gpu, Backend, EvalOptions};
     if gpu().is_none() {
         return;
@@ -480,8 +527,7 @@ fn eval_runs_lambertian_surfaces_on_the_gpu() {
     let (mut on_gpu, mut refused) = (0, 0);
     for (i, (a, v)) in answers.iter().zip(&lines).enumerate() {
         assert_eq!(a["id"], i, "answer {i}: {a}");
-        let omni = v["light"]["distribution"]["kind"] == "isotropic";
-        if v["surface"]["brdf"]["kind"] == "lambert" && omni {
+        if v["light"]["distribution"]["kind"] == "isotropic" {
             let got = a["surface_air_light"].as_f64().unwrap_or_else(|| panic!("answer {i}: {a}"));
             let (want, scale) = (v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap());
             assert!((got - want).abs() <= 1e-4 * want.max(1e-4 * scale), "record {i}: eval --backend gpu {got}, reference {want}");
@@ -492,7 +538,7 @@ fn eval_runs_lambertian_surfaces_on_the_gpu() {
             refused += 1;
         }
     }
-    assert!(on_gpu >= 30 && refused >= 7, "{on_gpu} on the GPU, {refused} refused");
+    assert!(on_gpu >= 36 && refused >= 1, "{on_gpu} on the GPU, {refused} refused");
 }
 
 /// `airlight render`'s street (a fluorescent tube, an omni lamp whose air-light reaches every

@@ -97,9 +97,9 @@ fn glsl_and_hlsl_compute_shaders_compile() {
 }
 
 /// The scene the HLSL test shaders build, with the library's constructor.
-const SCENE_HLSL: &str = "ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, float3(5.0, 1.0, 0.0), 0u)";
+const SCENE_HLSL: &str = "ConstructAirlightScene(float3(0.0, 0.0, 0.0), 0.0, float3(1.0, 0.0, 0.0), 25.0, float3(5.0, 1.0, 0.0), 100.0, float3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, 0.0, float3(5.0, 1.0, 0.0), 0u, float3(0.0, 0.0, 0.0))";
 
-const SCENE_GLSL: &str = "AirlightScene(vec3(0.0), 0.0, vec3(1.0, 0.0, 0.0), 25.0, vec3(5.0, 1.0, 0.0), 100.0, vec3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, vec3(5.0, 1.0, 0.0), 0u)";
+const SCENE_GLSL: &str = "AirlightScene(vec3(0.0), 0.0, vec3(1.0, 0.0, 0.0), 25.0, vec3(5.0, 1.0, 0.0), 100.0, vec3(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, 0.0, vec3(5.0, 1.0, 0.0), 0u, vec3(0.0, 0.0, 0.0))";
 
 fn paste(path: &Path, before: &str, after: &str) -> String {
     format!("{before}\n{}\n{after}\n", std::fs::read_to_string(path).unwrap())
@@ -213,7 +213,7 @@ fn wgsl_revalidates_in_naga() {
         validate(&c).unwrap_or_else(|e| panic!("wgsl/airlight_{n}.wgsl: {e}"));
         let l = std::fs::read_to_string(dir.join(format!("wgsl/airlight_lib_{n}.wgsl"))).unwrap();
         let user = format!(
-            "{l}\n@group(0) @binding(0) var<storage, read_write> v: array<f32>;\n@compute @workgroup_size(1)\nfn test_main() {{\n    v[0] = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 25.0, vec3<f32>(5.0, 1.0, 0.0), 100.0, vec3<f32>(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, vec3<f32>(5.0, 1.0, 0.0), 0u)).in_scatter;\n}}\n"
+            "{l}\n@group(0) @binding(0) var<storage, read_write> v: array<f32>;\n@compute @workgroup_size(1)\nfn test_main() {{\n    v[0] = airlight_in_scatter(AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 25.0, vec3<f32>(5.0, 1.0, 0.0), 100.0, vec3<f32>(0.0, -1.0, 0.0), 4.0, 0.0, 0.08, 0.1, 0.5, 0.0, 0.0, 1u, 2u, 0u, 0.0, 0u, 0.0, vec3<f32>(5.0, 1.0, 0.0), 0u, vec3<f32>(0.0, 0.0, 0.0))).in_scatter;\n}}\n"
         );
         validate(&user).unwrap_or_else(|e| panic!("wgsl/airlight_lib_{n}.wgsl in a user module: {e}"));
     }

@@ -55,6 +55,7 @@ const AIRLIGHT_SHAPE_POINT: u32 = @SHAPE_POINT@u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = @SHAPE_SEGMENT@u;
 const AIRLIGHT_SURFACE_NONE: u32 = @SURFACE_NONE@u;
 const AIRLIGHT_SURFACE_LAMBERT: u32 = @SURFACE_LAMBERT@u;
+const AIRLIGHT_SURFACE_PHONG: u32 = @SURFACE_PHONG@u;
 
 // Result status codes (codegen/shaders/src/layout.rs).
 const AIRLIGHT_STATUS_OK: u32 = @STATUS_OK@u;
@@ -109,16 +110,20 @@ struct AirlightScene {
     phase_kind: u32,
     /// bit 0: t_max is +∞.
     flags: u32,
-    /// A surface's albedo ρ (AIRLIGHT_SURFACE_LAMBERT).
-    brdf_albedo: f32,
-    /// AIRLIGHT_SURFACE_NONE: the in-scattered radiance along the ray; AIRLIGHT_SURFACE_LAMBERT:
-    /// the air-light reflected by a Lambertian surface at `origin` with normal `dir`.
+    /// A surface's albedo ρ (AIRLIGHT_SURFACE_LAMBERT) or k_s (AIRLIGHT_SURFACE_PHONG).
+    brdf_scale: f32,
+    /// AIRLIGHT_SURFACE_NONE: the in-scattered radiance along the ray; AIRLIGHT_SURFACE_LAMBERT,
+    /// AIRLIGHT_SURFACE_PHONG: the air-light reflected by a surface at `origin` with normal `dir`.
     surface_kind: u32,
+    /// A Phong lobe's exponent n.
+    brdf_exponent: f32,
     /// A segment light's other end (its first is `light_position`).
     light_end: vec3<f32>,
     /// AIRLIGHT_SHAPE_POINT, or AIRLIGHT_SHAPE_SEGMENT: every point of `light_position →
     /// light_end` emits `intensity` per unit length with the light's distribution.
     light_shape: u32,
+    /// A Phong lobe's direction from the surface towards the eye (any non-zero length).
+    brdf_view: vec3<f32>,
 }
 
 /// `in_scatter` (L_m) and a status: OK, INVALID (value 0) or INFINITE (value FLT_MAX).
@@ -245,18 +250,32 @@ fn airlight_two_lobe_henyey_greenstein(g1: f32, g2: f32, w: f32) -> AirlightPhas
 fn airlight_scene(ray: AirlightRay, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
     return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light.position, light.intensity, light.axis,
         light.param_a, light.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c,
-        light.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, light.end, light.shape);
+        light.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, 0.0, light.end, light.shape, vec3<f32>(0.0));
 }
 
 /// A Lambertian surface point (albedo `albedo`) at `position`, lit side towards `normal` (any
 /// non-zero length), in the air-light of `light` (a point light without an axis: omni): the
 /// scene whose airlight_in_scatter is the surface radiance from air-light
-/// `∫_{n·ω>0} L_a(s, ω) (ρ/π) (n·ω) dω` (kernel/src/surface.rs). Lights with an axis and
-/// Phong lobes are the CPU kernel's only (the record is invalid here).
+/// `∫_{n·ω>0} L_a(s, ω) (ρ/π) (n·ω) dω` (kernel/src/surface.rs). Lights with an axis are the
+/// CPU kernel's only (the record is invalid here).
 fn airlight_lambert_surface(position: vec3<f32>, normal: vec3<f32>, albedo: f32, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
     var s = airlight_scene(airlight_ray_to_infinity(position, normal, 0.0), light, medium, phase);
-    s.brdf_albedo = albedo;
+    s.brdf_scale = albedo;
     s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
+    return s;
+}
+
+/// A Phong surface point at `position`, lit side towards `normal`, seen from `view` (from the
+/// point towards the eye; both any non-zero length), in the air-light of `light` (omni, as
+/// airlight_lambert_surface): the scene whose airlight_in_scatter is
+/// `∫_{n·ω>0} L_a(s, ω) k_s (n+2)/(2π) max(0, r·ω)ⁿ (n·ω) dω`, `r` the mirror image of `view`
+/// about the normal, `k_s ≥ 0`, `n ≥ 0` (kernel/src/surface.rs).
+fn airlight_phong_surface(position: vec3<f32>, normal: vec3<f32>, k_s: f32, exponent: f32, view: vec3<f32>, light: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    var s = airlight_scene(airlight_ray_to_infinity(position, normal, 0.0), light, medium, phase);
+    s.brdf_scale = k_s;
+    s.brdf_exponent = exponent;
+    s.brdf_view = view;
+    s.surface_kind = AIRLIGHT_SURFACE_PHONG;
     return s;
 }
 
@@ -339,18 +358,17 @@ fn airlight_atan(x: f32) -> f32 {
     return y + ((((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z - 3.33329491539e-1) * z * t + t);
 }
 
-/// log(1 + x) for x ≥ 0: 2 atanh(x/(2+x)) by its series where x ≤ 1 (ratio s² ≤ 1/9, 9
-/// terms), the built-in log above (where it is 3 ulp).
+/// log(1 + x) for x > −1: 2 atanh(x/(2+x)) by its series where −1/2 ≤ x ≤ 1 (ratio s² ≤ 1/9,
+/// 9 terms, Horner's scheme written out: no loop iterations, §10 of docs/DESIGN.md), the
+/// built-in log elsewhere (where 1 + x is 1/2 or more from 1 and log is 3 ulp).
 fn airlight_log1p(x: f32) -> f32 {
-    if (x > 1.0) {
+    if (x > 1.0 || x < -0.5) {
         return log(1.0 + x);
     }
     let s = x / (2.0 + x);
-    let s2 = s * s;
-    var sum = 0.0;
-    for (var k = 0u; k < 9u; k++) {
-        sum = sum * s2 + 1.0 / f32(2u * (8u - k) + 1u);
-    }
+    let z = s * s;
+    let sum = (((((((z / 17.0 + 1.0 / 15.0) * z + 1.0 / 13.0) * z + 1.0 / 11.0) * z + 1.0 / 9.0) * z + 1.0 / 7.0) * z + 1.0 / 5.0) * z
+        + 1.0 / 3.0) * z + 1.0;
     return 2.0 * s * sum;
 }
 
@@ -808,13 +826,21 @@ fn airlight_legendre(g: array<f32, AIRLIGHT_TERMS>) -> array<f32, AIRLIGHT_TERMS
 @LEGENDRE_BODY@
 }
 
-/// e^x − 1 without cancellation near 0 (Taylor below |x| = 1/2, 12 terms: < 2^-35).
+/// e^x − 1 without cancellation near 0 (Taylor below |x| = 1/2, 12 terms: < 2^-35; Horner's
+/// scheme written out: no loop iterations).
 fn airlight_expm1(x: f32) -> f32 {
     if (abs(x) >= 0.5) { return exp(x) - 1.0; }
-    var sum = 1.0;
-    for (var i = 0u; i < 11u; i++) {
-        sum = 1.0 + x * sum / f32(12u - i);
-    }
+    var sum = 1.0 + x / 12.0;
+    sum = 1.0 + x * sum / 11.0;
+    sum = 1.0 + x * sum / 10.0;
+    sum = 1.0 + x * sum / 9.0;
+    sum = 1.0 + x * sum / 8.0;
+    sum = 1.0 + x * sum / 7.0;
+    sum = 1.0 + x * sum / 6.0;
+    sum = 1.0 + x * sum / 5.0;
+    sum = 1.0 + x * sum / 4.0;
+    sum = 1.0 + x * sum / 3.0;
+    sum = 1.0 + x * sum / 2.0;
     return x * sum;
 }
 
@@ -1673,10 +1699,14 @@ fn airlight_valid(s: AirlightScene) -> bool {
     } else if (s.light_shape != AIRLIGHT_SHAPE_POINT) {
         ok = false;
     }
-    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT || s.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         // surface.rs SurfaceScene::new; lights with an axis: the CPU kernel's only
-        ok = ok && airlight_is_finite(s.brdf_albedo) && s.brdf_albedo >= 0.0 && s.light_kind == AIRLIGHT_LIGHT_OMNI
+        ok = ok && airlight_is_finite(s.brdf_scale) && s.brdf_scale >= 0.0 && s.light_kind == AIRLIGHT_LIGHT_OMNI
             && s.light_shape == AIRLIGHT_SHAPE_POINT && airlight_is_finite(airlight_safe_length(s.light_position - s.origin));
+        if (s.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+            ok = ok && airlight_is_finite(s.brdf_exponent) && s.brdf_exponent >= 0.0 && airlight_vec_finite(s.brdf_view)
+                && airlight_normalisable(s.brdf_view);
+        }
     } else if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
         ok = false;
     }
@@ -1826,6 +1856,11 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
 // many panels still can.
 const AIRLIGHT_SEGMENT_PANELS: u32 = @SEGMENT_PANELS@u;
 const AIRLIGHT_SURFACE_PANELS: u32 = @SURFACE_PANELS@u;
+const AIRLIGHT_PHONG_PANELS: u32 = @PHONG_PANELS@u;
+// An outer integral's first panels' edges: a segment's ≤ 5, a surface's ≤ 13 (11 cuts).
+const AIRLIGHT_OUTER_EDGES: u32 = 13u;
+// ln of where a Phong lobe is ended, relative to its peak (surface.rs LOBE_FLOOR).
+const AIRLIGHT_LN_LOBE_FLOOR: f32 = @LN_LOBE_FLOOR@;
 
 /// Gauss–Kronrod 3/7 (extended.rs GAUSS_KRONROD_7): (x ≥ 0 descending, Kronrod weight, Gauss
 /// weight or 0); the rule takes ±x.
@@ -1886,7 +1921,7 @@ struct AirlightOuter {
     e: vec3<f32>,
     s_star: f32,
     scale: f32,
-    edges: array<f32, 5>,
+    edges: array<f32, AIRLIGHT_OUTER_EDGES>,
     /// Panels between the edges (a point light: one, [0, 0]).
     panels: u32,
     /// 0: integrate; 1: the result is 0; 2: the emitter meets the ray segment, or the light the
@@ -1898,7 +1933,13 @@ struct AirlightOuter {
     u: vec3<f32>,
     cos_a: f32,
     sin_a: f32,
-    gamma: array<f32, 4>,
+    gamma: array<f32, AIRLIGHT_OUTER_EDGES>,
+    /// A Phong lobe: the mirror direction's cos α_r, sin α_r and α_r, and Δ = φ_n − φ_r, its
+    /// cosine and sine (the normal at φ_n = 0).
+    cos_r: f32,
+    sin_r: f32,
+    alpha_r: f32,
+    delta: vec3<f32>,
 }
 
 fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
@@ -1945,11 +1986,13 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
 /// The outer integral of a point light (one panel, [0, 0]), bounded at `max_panels`: where the
 /// others start.
 fn airlight_outer_point(s: AirlightScene, max_panels: u32) -> AirlightOuter {
-    return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 1u, 0u,
-        max_panels, vec3<f32>(0.0), vec3<f32>(0.0), 0.0, 0.0, array<f32, 4>(0.0, 0.0, 0.0, 0.0));
+    // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
+    let zeros = array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3<f32>(0.0),
+        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0));
 }
 
-/// A Lambertian surface point's outer integral (surface.rs SurfaceScene::integrate).
+/// A surface point's outer integral (surface.rs SurfaceScene::integrate).
 fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     var g = airlight_outer_point(s, AIRLIGHT_SURFACE_PANELS);
     let to_light = s.light_position - s.origin;
@@ -1962,7 +2005,7 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
         g.outcome = 2u;
         return g;
     }
-    if (s.brdf_albedo == 0.0) {
+    if (s.brdf_scale == 0.0) {
         g.outcome = 1u;
         return g;
     }
@@ -1981,12 +2024,59 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     g.u = u;
     g.cos_a = cos_a;
     g.sin_a = sin_a;
-    // the pieces: where the arc changes kind, |π/2 − α| and π − |π/2 − α|
+    // the pieces: where the normal's arc changes kind, |π/2 − α| and π − |π/2 − α|; for a Phong
+    // lobe also where its arc does, its peak α_r, its extent α_r ± 1.5/√n, ± 4/√n, and where the
+    // arcs' ends meet (the great circles n·ω = 0 and r·ω = 0 cross at ±n × r)
+    var cuts = array<f32, 11>(AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX,
+        AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX);
     let first = abs(0.5 * AIRLIGHT_PI - airlight_angle(cos_a, sin_a));
-    var cuts = array<f32, 2>(first, AIRLIGHT_PI - first);
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    cuts[0] = first;
+    cuts[1] = AIRLIGHT_PI - first;
+    if (s.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        g.max_panels = AIRLIGHT_PHONG_PANELS;
+        let v = airlight_normalize(s.brdf_view);
+        let r = airlight_normalize(2.0 * dot(n, v) * n - v);
+        let x = dot(r, u);
+        let y = dot(r, cross(l, u));
+        g.cos_r = dot(r, l);
+        g.sin_r = sqrt(x * x + y * y);
+        g.alpha_r = airlight_angle(g.cos_r, g.sin_r);
+        if (g.sin_r > 0.0) {
+            // Δ = φ_n − φ_r = −atan2(y, x)
+            let phi_r = select(airlight_angle(x, y), -airlight_angle(x, -y), y < 0.0);
+            g.delta = vec3<f32>(-phi_r, x / g.sin_r, -y / g.sin_r);
+        }
+        let first_r = abs(0.5 * AIRLIGHT_PI - g.alpha_r);
+        cuts[2] = first_r;
+        cuts[3] = AIRLIGHT_PI - first_r;
+        cuts[4] = g.alpha_r;
+        if (s.brdf_exponent > 1.0) {
+            let width = 1.0 / sqrt(s.brdf_exponent);
+            cuts[5] = g.alpha_r - 1.5 * width;
+            cuts[6] = g.alpha_r + 1.5 * width;
+            cuts[7] = g.alpha_r - 4.0 * width;
+            cuts[8] = g.alpha_r + 4.0 * width;
+        }
+        let meet = cross(n, r);
+        let norm = airlight_safe_length(meet);
+        if (norm > AIRLIGHT_FLT_EPS) {
+            let at = airlight_acos(clamp(dot(meet, l) / norm, -1.0, 1.0));
+            cuts[9] = at;
+            cuts[10] = AIRLIGHT_PI - at;
+        }
+    }
+    // sorted (insertion), then those strictly inside and increasing kept (extended.rs edges_between)
+    for (var i = 1u; i < 11u; i++) {
+        let c = cuts[i];
+        var j = i;
+        while (j > 0u && cuts[j - 1u] > c) {
+            cuts[j] = cuts[j - 1u];
+            j -= 1u;
+        }
+        cuts[j] = c;
+    }
     var k = 0u;
-    for (var i = 0u; i < 2u; i++) {
+    for (var i = 0u; i < 11u; i++) {
         if (cuts[i] > g.gamma[k] && cuts[i] < AIRLIGHT_PI) {
             k += 1u;
             g.gamma[k] = cuts[i];
@@ -1998,10 +2088,96 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     return g;
 }
 
+/// A Phong lobe at one angle γ (surface.rs lobe_arcs): the normal's A, B, the lobe's
+/// k = 2D/(C + D) and ln(C + D), Δ's cosine and sine, the exponent.
+struct AirlightLobe {
+    a: f32,
+    b: f32,
+    k: f32,
+    log_peak: f32,
+    cos_delta: f32,
+    sin_delta: f32,
+    exponent: f32,
+}
+
+/// (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ at x ∈ [−π, π], with s = sin(x/2): the lobe is
+/// (C + D)(1 − k s²) (surface.rs lobe_arcs).
+fn airlight_lobe_at(q: AirlightLobe, x: f32) -> f32 {
+    let half = airlight_cos_sin(0.5 * x);
+    let s2 = half.y * half.y;
+    let cos_x = 1.0 - 2.0 * s2;
+    let sin_x = 2.0 * half.y * half.x;
+    let clip = q.a + q.b * (cos_x * q.cos_delta + sin_x * q.sin_delta);
+    let fall = q.k * s2;
+    if (fall < 1.0 && clip > 0.0) {
+        return clip * exp(q.exponent * (q.log_peak + airlight_log1p(-fall)));
+    }
+    return 0.0;
+}
+
+/// The rule's node at u ∈ (0, 1) of the piece [lo, lo + w], times its Jacobian: in x itself,
+/// or in the smoothstep of the piece.
+fn airlight_lobe_node(q: AirlightLobe, lo: f32, w: f32, u: f32, smoothstep: bool) -> f32 {
+    if (smoothstep) {
+        return w * 6.0 * u * (1.0 - u) * airlight_lobe_at(q, lo + w * u * u * (3.0 - u - u));
+    }
+    return w * airlight_lobe_at(q, lo + w * u);
+}
+
+/// ∫ (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ dx over the circle at the angle γ (cos γ, sin γ = cs)
+/// of a Phong surface's outer integral, ψ_n the normal's half-arc there (surface.rs lobe_arcs:
+/// the lobe ended at AIRLIGHT_LOBE_FLOOR of its peak, cut at the peak and the normal's arc ends,
+/// AIRLIGHT_LOBE_RULE's 10 points on every piece, written out: no loop iterations).
+fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent: f32) -> f32 {
+    let c = g.cos_r * cs.x;
+    let d = g.sin_r * cs.y;
+    let peak = c + d;
+    if (!(peak > 0.0)) { return 0.0; }
+    let sin_gap = airlight_cos_sin(0.5 * (gamma - g.alpha_r)).y;
+    let q = AirlightLobe(g.cos_a * cs.x, g.sin_a * cs.y, 2.0 * d / peak, airlight_log1p(-2.0 * sin_gap * sin_gap),
+        g.delta.y, g.delta.z, exponent);
+    // where the lobe ends: s² = (1 − floor^{1/n})/k (n = 0: 1/k, its arc), at most 1
+    var reach = 1.0;
+    if (exponent > 0.0) { reach = -airlight_expm1(AIRLIGHT_LN_LOBE_FLOOR / exponent); }
+    let s2 = select(1.0, reach / q.k, reach < q.k);
+    let cut = 2.0 * airlight_angle(sqrt(1.0 - s2), sqrt(s2));
+    // the pieces' edges: −cut, the peak 0 and the normal's arc ends within (−cut, cut), cut;
+    // straight-line code throughout (no loop iterations: AIRLIGHT_SEGMENT_PANELS)
+    var inner = vec3<f32>(0.0);
+    if (psi_n < AIRLIGHT_PI) {
+        inner.y = airlight_arc_end(g.delta.x - psi_n, cut);
+        inner.z = airlight_arc_end(g.delta.x + psi_n, cut);
+    }
+    if (inner.y < inner.x) { inner = inner.yxz; }
+    if (inner.z < inner.y) { inner = inner.xzy; }
+    if (inner.y < inner.x) { inner = inner.yxz; }
+    let smoothstep = exponent < 1.0;
+    return airlight_lobe_piece(q, -cut, inner.x, smoothstep) + airlight_lobe_piece(q, inner.x, inner.y, smoothstep)
+        + airlight_lobe_piece(q, inner.y, inner.z, smoothstep) + airlight_lobe_piece(q, inner.z, cut, smoothstep);
+}
+
+/// An end of the normal's arc brought into (−π, π], or 0 (the peak, an edge already) where it
+/// lies outside (−cut, cut).
+fn airlight_arc_end(x: f32, cut: f32) -> f32 {
+    var end = x;
+    if (end > AIRLIGHT_PI) { end -= 2.0 * AIRLIGHT_PI; }
+    if (end < -AIRLIGHT_PI) { end += 2.0 * AIRLIGHT_PI; }
+    return select(0.0, end, end > -cut && end < cut);
+}
+
+/// AIRLIGHT_LOBE_RULE on the piece [lo, hi] of a lobe's arcs; 0 where it is empty or the
+/// integrand vanishes at its middle (its sign is constant between the edges).
+fn airlight_lobe_piece(q: AirlightLobe, lo: f32, hi: f32, smoothstep: bool) -> f32 {
+    let w = hi - lo;
+    if (!(w > 0.0) || !(airlight_lobe_at(q, lo + 0.5 * w) > 0.0)) { return 0.0; }
+    var sum = 0.0;
+@LOBE_RULE_SUM@    return sum;
+}
+
 /// The outer integral of a scene: a surface point's, a segment light's (extended.rs
 /// SegmentScene::integrate) or a point light's.
 fn airlight_outer(s: AirlightScene) -> AirlightOuter {
-    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
         return airlight_surface(s);
     }
     var g = airlight_outer_point(s, AIRLIGHT_SEGMENT_PANELS);
@@ -2084,7 +2260,7 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
     var p = s;
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+    if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
         // piece i: γ = a + (b − a)(3t² − 2t³), t = x − i (surface.rs `mapped`)
         let i = min(u32(max(floor(x), 0.0)), g.panels - 1u);
         let t = x - f32(i);
@@ -2096,13 +2272,20 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
         let cs = airlight_cos_sin_half_turn(gamma);
         let psi = airlight_half_arc(g.cos_a, g.sin_a, cs.x, cs.y);
         if (!(psi > 0.0)) { return AirlightNode(p, 0.0); }
-        // ∫ (A + B cos x)⁺ over the arc = 2(Aψ + B sin ψ)
-        let arc = 2.0 * (g.cos_a * cs.x * psi + g.sin_a * cs.y * airlight_cos_sin_half_turn(psi).y);
+        var weight = 0.0;
+        if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+            // (ρ/π) ∫ (A + B cos x)⁺ over the arc = (ρ/π) 2(Aψ + B sin ψ)
+            let arc = 2.0 * (g.cos_a * cs.x * psi + g.sin_a * cs.y * airlight_cos_sin_half_turn(psi).y);
+            weight = s.brdf_scale * (1.0 / AIRLIGHT_PI) * arc;
+        } else {
+            let n = s.brdf_exponent;
+            weight = s.brdf_scale * (n + 2.0) * (0.5 / AIRLIGHT_PI) * airlight_lobe_arcs(g, cs, gamma, psi, n);
+        }
         p.dir = cs.x * g.l + cs.y * g.u;
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        return AirlightNode(p, s.brdf_albedo * (1.0 / AIRLIGHT_PI) * arc * cs.y * jacobian);
+        return AirlightNode(p, weight * cs.y * jacobian);
     }
     if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         var at = x;

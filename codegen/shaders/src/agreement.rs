@@ -261,12 +261,15 @@ fn finite_expectation(v: f32, same: f64, noise: f64, iso: f64, phase: &AnyPhase<
 /// A surface point's scene in the record types.
 pub type SurfaceRecord<T> = SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>;
 
-/// What the shader computes for a Lambertian surface point, on the CPU
+/// What the shader computes for a surface point, on the CPU
 /// ([`SurfaceScene::air_light_panels_counted`] with the shaders' control and
-/// [`airlight::SHADER_SURFACE_PANELS`]).
+/// [`airlight::SHADER_SURFACE_PANELS`] panels, [`airlight::SHADER_PHONG_PANELS`] for a Phong lobe).
 fn surface_air_light<T: airlight::Real>(scene: &SurfaceRecord<T>, terms: usize) -> T {
     let control = shader_control();
-    let panels = airlight::SHADER_SURFACE_PANELS;
+    let panels = match scene.brdf() {
+        airlight::Brdf::Lambert { .. } => airlight::SHADER_SURFACE_PANELS,
+        airlight::Brdf::Phong { .. } => airlight::SHADER_PHONG_PANELS,
+    };
     match terms {
         8 => scene.air_light_panels_counted::<8>(control, panels).0,
         12 => scene.air_light_panels_counted::<12>(control, panels).0,
@@ -286,18 +289,18 @@ fn from_ray_record<T: airlight::Real>(rec: &SceneRecord<T>, brdf: airlight::Brdf
     SurfaceScene::new(Surface { position: rec.ray.origin, normal: rec.ray.dir }, brdf, rec.light, rec.medium, rec.phase).ok()
 }
 
-/// The CPU's expectation for a Lambertian surface point lit by a light without an axis from the
-/// shader with `terms` nodes per panel, by the same criterion as [`expect`]: the noise over
-/// the record and its one-ulp perturbations of the point, the normal, the light, `σt` and the
-/// phase function, plus the error of the same method in f64 against the default `air_light`
+/// The CPU's expectation for a Lambertian or Phong surface point lit by a light without an axis
+/// from the shader with `terms` nodes per panel, by the same criterion as [`expect`]: the noise
+/// over the record and its one-ulp perturbations of the point, the normal, the light, `σt` and
+/// the phase function, plus the error of the same method in f64 against the default `air_light`
 /// (error-controlled to 1e-10); the scale is the value with isotropic scattering times
 /// `4π·max P`, at least the value.
 pub fn expect_surface(scene: &SurfaceRecord<f32>, terms: usize) -> Expected {
     let v = surface_air_light(scene, terms);
-    let airlight::Brdf::Lambert { albedo } = *scene.brdf() else {
-        panic!("the shaders' surfaces are Lambertian");
+    let brdf = match *scene.brdf() {
+        airlight::Brdf::Lambert { albedo } => airlight::Brdf::Lambert { albedo: albedo as f64 },
+        airlight::Brdf::Phong { k_s, exponent, view } => airlight::Brdf::Phong { k_s: k_s as f64, exponent: exponent as f64, view: view.as_dvec3() },
     };
-    let brdf = airlight::Brdf::Lambert { albedo: albedo as f64 };
     let rec = as_ray_record(scene).cast::<f64>();
     let Some(wide) = from_ray_record(&rec, brdf) else {
         return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };

@@ -80,7 +80,7 @@ impl Gpu {
         }
     }
 
-    /// Runs `shader` over `records` (a whole number of 128-byte records) and returns the
+    /// Runs `shader` over `records` (a whole number of records, `RECORD_SIZE` bytes each) and returns the
     /// 8-byte results, in batches that fit the adapter's limits. Progress on stderr when
     /// `progress` is set and there is more than one batch. Builds the pipeline on every call;
     /// [`Gpu::prepare`] once and [`Prepared::run`] many times to dispatch without that cost.
@@ -144,7 +144,7 @@ pub struct Prepared<'g> {
 }
 
 impl Prepared<'_> {
-    /// Runs the pipeline over `records` (a whole number of 128-byte records) and returns the
+    /// Runs the pipeline over `records` (a whole number of records, `RECORD_SIZE` bytes each) and returns the
     /// 8-byte results, exactly as [`Gpu::run`] does (which calls this): buffers are created,
     /// filled and read back per call, in batches that fit the adapter's limits.
     pub fn run(&self, records: &[u8], progress: bool) -> Result<Vec<u8>, String> {

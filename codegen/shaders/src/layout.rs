@@ -1,4 +1,4 @@
-//! The records of the compute entry point: [`Record`] in (the WGSL `AirlightScene`, 128 bytes,
+//! The records of the compute entry point: [`Record`] in (the WGSL `AirlightScene`, 144 bytes,
 //! std430 / WGSL storage layout; the offset table is in shaders-out/README.md), [`GpuResult`]
 //! out (8 bytes), both plain `#[repr(C)]` types the host writes and reads with bytemuck; a test
 //! checks their offsets and strides against naga's layout of the WGSL structs. Also the kind and
@@ -9,7 +9,7 @@ use airlight::phase::AnyPhase;
 use airlight::{Brdf, Medium, PointLight, Ray, SegmentScene, SurfaceScene};
 
 /// Bytes per input record.
-pub const RECORD_SIZE: usize = 128;
+pub const RECORD_SIZE: usize = 144;
 /// Bytes `0..FLOAT_INPUTS_END` of a record are its f32 inputs (origin … phase_param_c) but for
 /// a segment light's `light_end`; the u32 kinds and flags follow.
 pub const FLOAT_INPUTS_END: usize = 88;
@@ -40,9 +40,12 @@ pub const SHAPE_SEGMENT: u32 = 1;
 /// `surface_kind` of a ray record: the in-scattered radiance along the ray.
 pub const SURFACE_NONE: u32 = 0;
 /// `surface_kind` of a Lambertian surface point (`origin`, normal `dir`, albedo
-/// `brdf_albedo`) lit by a light without an axis: its surface radiance from air-light
+/// `brdf_scale`) lit by a light without an axis: its surface radiance from air-light
 /// ([`airlight::SurfaceScene::air_light`]).
 pub const SURFACE_LAMBERT: u32 = 1;
+/// `surface_kind` of a Phong surface point (`origin`, normal `dir`; `k_s` = `brdf_scale`,
+/// exponent `brdf_exponent`, towards the eye `brdf_view`) lit by a light without an axis.
+pub const SURFACE_PHONG: u32 = 2;
 /// `phase_kind` of isotropic scattering.
 pub const PHASE_ISOTROPIC: u32 = 0;
 /// `phase_kind` of Rayleigh scattering.
@@ -99,16 +102,20 @@ pub struct Record {
     pub phase_kind: u32,
     /// Bit 0: `t_max = +∞`.
     pub flags: u32,
-    /// A surface's albedo (`SURFACE_LAMBERT`).
-    pub brdf_albedo: f32,
+    /// A surface's albedo ρ (`SURFACE_LAMBERT`) or `k_s` (`SURFACE_PHONG`).
+    pub brdf_scale: f32,
     /// `SURFACE_*`.
     pub surface_kind: u32,
-    /// Up to `light_end`'s 16-byte alignment.
-    pub padding: u32,
+    /// A Phong lobe's exponent `n`.
+    pub brdf_exponent: f32,
     /// A segment light's other end.
     pub light_end: [f32; 3],
     /// `SHAPE_*`.
     pub light_shape: u32,
+    /// A Phong lobe's direction from the surface towards the eye (any non-zero length).
+    pub brdf_view: [f32; 3],
+    /// Up to the record's 16-byte alignment.
+    pub padding: u32,
 }
 
 /// One output of the compute entry point: the WGSL `AirlightResult` struct.
@@ -134,18 +141,27 @@ impl Record {
         Self::with_shape(scene.ray(), &light, scene.medium(), scene.phase(), SHAPE_SEGMENT, l.b.to_array())
     }
 
-    /// The record of a Lambertian surface point lit by a light without an axis (the shaders'
-    /// surfaces); `None` for a Phong lobe or a light with an axis.
+    /// The record of a Lambertian or Phong surface point lit by a light without an axis (the
+    /// shaders' surfaces); `None` for a light with an axis.
     pub fn surface(scene: &SurfaceScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> Option<Self> {
-        let Brdf::Lambert { albedo } = *scene.brdf() else { return None };
         if !matches!(scene.light().distribution, AnyDistribution::Omni) {
             return None;
         }
         let s = scene.surface();
         let ray = Ray { origin: s.position, dir: s.normal, t_min: 0.0, t_max: f32::INFINITY };
         let mut record = Self::with_shape(&ray, scene.light(), scene.medium(), scene.phase(), SHAPE_POINT, scene.light().position.to_array());
-        record.brdf_albedo = albedo;
-        record.surface_kind = SURFACE_LAMBERT;
+        match *scene.brdf() {
+            Brdf::Lambert { albedo } => {
+                record.brdf_scale = albedo;
+                record.surface_kind = SURFACE_LAMBERT;
+            }
+            Brdf::Phong { k_s, exponent, view } => {
+                record.brdf_scale = k_s;
+                record.brdf_exponent = exponent;
+                record.brdf_view = view.to_array();
+                record.surface_kind = SURFACE_PHONG;
+            }
+        }
         Some(record)
     }
 
@@ -175,11 +191,13 @@ impl Record {
             light_kind,
             phase_kind,
             flags: infinite as u32,
-            brdf_albedo: 0.0,
+            brdf_scale: 0.0,
             surface_kind: SURFACE_NONE,
-            padding: 0,
+            brdf_exponent: 0.0,
             light_end,
             light_shape,
+            brdf_view: [0.0; 3],
+            padding: 0,
         }
     }
 
@@ -206,7 +224,7 @@ pub fn phase_fields(phase: &AnyPhase<f32>) -> (u32, f32, f32, f32) {
     }
 }
 
-/// Packs one scene into its 128-byte record (little-endian, as every GPU wgpu runs on).
+/// Packs one scene into its 144-byte record (little-endian, as every GPU wgpu runs on).
 pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, medium: &Medium<f32>, phase: &AnyPhase<f32>) -> [u8; RECORD_SIZE] {
     bytemuck::cast(Record::new(ray, light, medium, phase))
 }
@@ -240,7 +258,7 @@ mod tests {
         let (module, _) = crate::targets::validate(&crate::targets::source(4, true)).unwrap();
         let mut layouter = naga::proc::Layouter::default();
         layouter.update(module.to_ctx()).unwrap();
-        let rust: [(&str, usize); 21] = [
+        let rust: [(&str, usize); 23] = [
             ("origin", core::mem::offset_of!(Record, origin)),
             ("t_min", core::mem::offset_of!(Record, t_min)),
             ("dir", core::mem::offset_of!(Record, dir)),
@@ -258,10 +276,12 @@ mod tests {
             ("light_kind", core::mem::offset_of!(Record, light_kind)),
             ("phase_kind", core::mem::offset_of!(Record, phase_kind)),
             ("flags", core::mem::offset_of!(Record, flags)),
-            ("brdf_albedo", core::mem::offset_of!(Record, brdf_albedo)),
+            ("brdf_scale", core::mem::offset_of!(Record, brdf_scale)),
             ("surface_kind", core::mem::offset_of!(Record, surface_kind)),
+            ("brdf_exponent", core::mem::offset_of!(Record, brdf_exponent)),
             ("light_end", core::mem::offset_of!(Record, light_end)),
             ("light_shape", core::mem::offset_of!(Record, light_shape)),
+            ("brdf_view", core::mem::offset_of!(Record, brdf_view)),
         ];
         let result: [(&str, usize); 2] = [("in_scatter", core::mem::offset_of!(GpuResult, in_scatter)), ("status", core::mem::offset_of!(GpuResult, status))];
         for (name, fields, size) in [("AirlightScene", &rust[..], core::mem::size_of::<Record>()), ("AirlightResult", &result[..], core::mem::size_of::<GpuResult>())] {

@@ -33,7 +33,7 @@ const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
     let s = AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0u, vec3<f32>(0.0));
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
     let p = airlight_in_scatter_route(s);
@@ -45,7 +45,7 @@ const LIBRARY_STUB_ES: &str = "
 @fragment
 fn airlight_library_entry() -> @location(0) vec4<f32> {
     let s = AirlightScene(vec3<f32>(0.0), 0.0, vec3<f32>(1.0, 0.0, 0.0), 1.0,
-        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, vec3<f32>(0.0, 1.0, 0.0), 0u);
+        vec3<f32>(0.0, 1.0, 0.0), 1.0, vec3<f32>(0.0, 0.0, 1.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0u, vec3<f32>(0.0));
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
     let p = airlight_in_scatter_route(s);
@@ -222,7 +222,15 @@ impl Constants {
             let spot = airlight::light::SpotCone::<f32> { axis: airlight::glam::Vec3::X, cos_inner: 0.9, cos_outer: 0.8 };
             spot.polynomial_degree().expect("a spot cone is a polynomial between its kinks")
         };
-        let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS);
+        let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS).max(airlight::SHADER_PHONG_PANELS);
+        // a Phong lobe's arcs: the rule's pairs of nodes u = (1 ± x)/2 on each piece, written out
+        let lobe_rule_sum: String = airlight::surface::LOBE_RULE
+            .iter()
+            .map(|&(x, w)| {
+                let (lo, hi) = (0.5 - 0.5 * x, 0.5 + 0.5 * x);
+                format!("        sum += {} * (airlight_lobe_node(q, lo, w, {}, smoothstep) + airlight_lobe_node(q, lo, w, {}, smoothstep));\n", f(0.5 * w), f(lo), f(hi))
+            })
+            .collect();
         // the weight at or below which the isotropic moment leaves its far end out (f32's ε/4)
         let far_end = airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64;
         let fills = vec![
@@ -282,7 +290,11 @@ impl Constants {
             ("@SURFACE_LAMBERT@", l::SURFACE_LAMBERT.to_string()),
             ("@SEGMENT_PANELS@", airlight::SHADER_SEGMENT_PANELS.to_string()),
             ("@SURFACE_PANELS@", airlight::SHADER_SURFACE_PANELS.to_string()),
-            // one panel list serves both outer integrals
+            ("@PHONG_PANELS@", airlight::SHADER_PHONG_PANELS.to_string()),
+            ("@SURFACE_PHONG@", l::SURFACE_PHONG.to_string()),
+            ("@LN_LOBE_FLOOR@", f(airlight::surface::LOBE_FLOOR.ln())),
+            ("@LOBE_RULE_SUM@", lobe_rule_sum),
+            // one panel list serves every outer integral
             ("@ZEROS_SEGMENT_LIST@", list(vec!["vec4<f32>(0.0)".to_string(); outer_list])),
             ("@SEGMENT_LIST_FIELDS@", unrolled::list_fields(outer_list)),
             ("@SEGMENT_LIST_GET@", unrolled::list_get(outer_list)),
