@@ -382,8 +382,8 @@ float airlight_log1p(float x_2) {
     }
     float s_31 = (x_2 / (2.0 + x_2));
     float z_11 = (s_31 * s_31);
-    float sum_6 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
-    return ((2.0 * s_31) * sum_6);
+    float sum_7 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
+    return ((2.0 * s_31) * sum_7);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -5254,6 +5254,8 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
 float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, float exponent_1) {
     float reach = 1.0;
     vec3 inner = vec3(0.0);
+    float sum_6 = 0.0;
+    uint i_20 = 0u;
     float c_11 = (g_23.cos_r * cs.x);
     float d_3 = (g_23.sin_r * cs.y);
     float peak = (c_11 + d_3);
@@ -5297,18 +5299,33 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
         vec3 _e97 = inner;
         inner = _e97.yxz;
     }
+    float _e101 = inner.x;
+    float _e103 = inner.y;
+    float _e105 = inner.z;
+    float edges[5] = float[5](-(cut_2), _e101, _e103, _e105, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    float _e103 = inner.x;
-    float _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
-    float _e106 = inner.x;
-    float _e108 = inner.y;
-    float _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
-    float _e112 = inner.y;
-    float _e114 = inner.z;
-    float _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
-    float _e118 = inner.z;
-    float _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
-    return (((_e104 + _e109) + _e115) + _e119);
+    bool loop_init_24 = true;
+    while(true) {
+        if (!loop_init_24) {
+            uint _e126 = i_20;
+            i_20 = (_e126 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e113 = i_20;
+        if ((_e113 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            float _e116 = sum_6;
+            uint _e117 = i_20;
+            uint _e119 = i_20;
+            float _e123 = airlight_lobe_piece(q_6, edges[_e117], edges[(_e119 + 1u)], smoothstep_2);
+            sum_6 = (_e116 + _e123);
+        }
+    }
+    float _e128 = sum_6;
+    return _e128;
 }
 
 AirlightOuter airlight_outer(AirlightScene s_25) {
@@ -5331,12 +5348,12 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     bool local_126 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
-    uint i_20 = 0u;
+    uint i_21 = 0u;
     bool local_127 = false;
     bool local_128 = false;
     bool local_129 = false;
     uint n_1 = 0u;
-    uint i_21 = 0u;
+    uint i_22 = 0u;
     bool local_130 = false;
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_25);
@@ -5483,21 +5500,21 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     g_24.scale = _e172;
     float _e178 = s_star;
     at = float[3](_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
-            uint _e229 = i_20;
-            i_20 = (_e229 + 1u);
+        if (!loop_init_25) {
+            uint _e229 = i_21;
+            i_21 = (_e229 + 1u);
         }
-        loop_init_24 = false;
-        uint _e189 = i_20;
+        loop_init_25 = false;
+        uint _e189 = i_21;
         if ((_e189 < 3u)) {
         } else {
             break;
         }
         {
             if ((cos_a_2 == 0.0)) {
-                uint _e196 = i_20;
+                uint _e196 = i_21;
                 local_127 = (_e196 > 0u);
             } else {
                 local_127 = false;
@@ -5506,7 +5523,7 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if (_e200) {
                 continue;
             }
-            uint _e201 = i_20;
+            uint _e201 = i_21;
             if ((_e201 == 2u)) {
                 local_128 = infinite_4;
             } else {
@@ -5516,10 +5533,10 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if (_e207) {
                 continue;
             }
-            uint _e208 = i_20;
+            uint _e208 = i_21;
             float _e210 = at[_e208];
             if ((_e210 > 0.0)) {
-                uint _e215 = i_20;
+                uint _e215 = i_21;
                 float _e217 = at[_e215];
                 local_129 = (_e217 < _e15);
             } else {
@@ -5527,9 +5544,9 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             }
             bool _e220 = local_129;
             if (_e220) {
-                uint _e221 = i_20;
+                uint _e221 = i_21;
                 AirlightOuter _e223 = g_24;
-                uint _e224 = i_20;
+                uint _e224 = i_21;
                 float _e226 = at[_e224];
                 float _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[_e221] = _e227;
@@ -5565,25 +5582,25 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter _e268 = g_24;
     float _e270 = airlight_to_w(_e268, 0.0);
     g_24.edges[0] = _e270;
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
-            uint _e304 = i_21;
-            i_21 = (_e304 + 1u);
+        if (!loop_init_26) {
+            uint _e304 = i_22;
+            i_22 = (_e304 + 1u);
         }
-        loop_init_25 = false;
-        uint _e275 = i_21;
+        loop_init_26 = false;
+        uint _e275 = i_22;
         if ((_e275 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e278 = i_21;
+            uint _e278 = i_22;
             float _e280 = cuts_2[_e278];
             uint _e282 = n_1;
             float _e284 = g_24.edges[_e282];
             if ((_e280 > _e284)) {
-                uint _e288 = i_21;
+                uint _e288 = i_22;
                 float _e290 = cuts_2[_e288];
                 local_130 = (_e290 < _e265);
             } else {
@@ -5594,7 +5611,7 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
-                uint _e300 = i_21;
+                uint _e300 = i_22;
                 float _e302 = cuts_2[_e300];
                 g_24.edges[_e298] = _e302;
             }
@@ -5617,10 +5634,10 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_22 = min(uint(max(floor(x_19), 0.0)), (g_25.panels - 1u));
-        float t_6 = (x_19 - float(i_22));
-        float a_28 = g_25.gamma[i_22];
-        float b_18 = g_25.gamma[(i_22 + 1u)];
+        uint i_23 = min(uint(max(floor(x_19), 0.0)), (g_25.panels - 1u));
+        float t_6 = (x_19 - float(i_23));
+        float a_28 = g_25.gamma[i_23];
+        float b_18 = g_25.gamma[(i_23 + 1u)];
         float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
@@ -5799,13 +5816,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e251 = step_2;
             step_2 = (_e251 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e78 = step_2;
         if ((_e78 < evaluations)) {
         } else {
@@ -5821,13 +5838,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
             k_5 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            bool loop_init_27 = true;
+            bool loop_init_28 = true;
             while(true) {
-                if (!loop_init_27) {
+                if (!loop_init_28) {
                     uint _e157 = j_4;
                     j_4 = (_e157 + 1u);
                 }
-                loop_init_27 = false;
+                loop_init_28 = false;
                 uint _e96 = j_4;
                 if ((_e96 < 7u)) {
                 } else {
@@ -5905,13 +5922,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                 } else {
                     split = false;
                     tries = 0u;
-                    bool loop_init_28 = true;
+                    bool loop_init_29 = true;
                     while(true) {
-                        if (!loop_init_28) {
+                        if (!loop_init_29) {
                             uint _e246 = tries;
                             tries = (_e246 + 1u);
                         }
-                        loop_init_28 = false;
+                        loop_init_29 = false;
                         uint _e198 = tries;
                         if ((_e198 < _e6.max_panels)) {
                         } else {

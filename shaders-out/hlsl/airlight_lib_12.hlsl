@@ -544,8 +544,8 @@ float airlight_log1p(float x_2)
     }
     float s_31 = (x_2 / (2.0 + x_2));
     float z_11 = (s_31 * s_31);
-    float sum_6 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
-    return ((2.0 * s_31) * sum_6);
+    float sum_7 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
+    return ((2.0 * s_31) * sum_7);
 }
 
 bool airlight_is_finite(float x_3)
@@ -5805,10 +5805,18 @@ AirlightLobe ConstructAirlightLobe(float arg0, float arg1, float arg2, float arg
     return ret;
 }
 
+typedef float airlight_ret_Constructarray5_float_[5];
+airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
+    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
 float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n, float exponent_1)
 {
     float reach = 1.0;
     float3 inner = (0.0).xxx;
+    float sum_6 = 0.0;
+    uint i_20 = 0u;
 
     float c_11 = (g_23.cos_r * cs.x);
     float d_3 = (g_23.sin_r * cs.y);
@@ -5853,18 +5861,36 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
         float3 _e97 = inner;
         inner = _e97.yxz;
     }
+    float _e101 = inner.x;
+    float _e103 = inner.y;
+    float _e105 = inner.z;
+    float edges[5] = airlight_Constructarray5_float_(-(cut_2), _e101, _e103, _e105, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    float _e103 = inner.x;
-    const float _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
-    float _e106 = inner.x;
-    float _e108 = inner.y;
-    const float _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
-    float _e112 = inner.y;
-    float _e114 = inner.z;
-    const float _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
-    float _e118 = inner.z;
-    const float _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
-    return (((_e104 + _e109) + _e115) + _e119);
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e126 = i_20;
+            i_20 = (_e126 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e113 = i_20;
+        if ((_e113 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            float _e116 = sum_6;
+            uint _e117 = i_20;
+            uint _e119 = i_20;
+            const float _e123 = airlight_lobe_piece(q_6, edges[min(uint(_e117), 4u)], edges[min(uint((_e119 + 1u)), 4u)], smoothstep_2);
+            sum_6 = (_e116 + _e123);
+        }
+    }
+    float _e128 = sum_6;
+    return _e128;
 }
 
 typedef float airlight_ret_Constructarray3_float_[3];
@@ -5894,12 +5920,12 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     bool local_126 = (bool)0;
     float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = {0.0, 0.0, 0.0};
-    uint i_20 = 0u;
+    uint i_21 = 0u;
     bool local_127 = (bool)0;
     bool local_128 = (bool)0;
     bool local_129 = (bool)0;
     uint n_1 = 0u;
-    uint i_21 = 0u;
+    uint i_22 = 0u;
     bool local_130 = (bool)0;
 
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -6051,24 +6077,24 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     g_24.scale = _e172;
     float _e178 = s_star;
     at = airlight_Constructarray3_float_(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e229 = i_20;
-            i_20 = (_e229 + 1u);
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e229 = i_21;
+            i_21 = (_e229 + 1u);
         }
-        loop_init_24 = false;
-        uint _e189 = i_20;
+        loop_init_25 = false;
+        uint _e189 = i_21;
         if ((_e189 < 3u)) {
         } else {
             break;
         }
         {
             if ((cos_a_2 == 0.0)) {
-                uint _e196 = i_20;
+                uint _e196 = i_21;
                 local_127 = (_e196 > 0u);
             } else {
                 local_127 = false;
@@ -6077,7 +6103,7 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             if (_e200) {
                 continue;
             }
-            uint _e201 = i_20;
+            uint _e201 = i_21;
             if ((_e201 == 2u)) {
                 local_128 = infinite_4;
             } else {
@@ -6087,10 +6113,10 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             if (_e207) {
                 continue;
             }
-            uint _e208 = i_20;
+            uint _e208 = i_21;
             float _e210 = at[min(uint(_e208), 2u)];
             if ((_e210 > 0.0)) {
-                uint _e215 = i_20;
+                uint _e215 = i_21;
                 float _e217 = at[min(uint(_e215), 2u)];
                 local_129 = (_e217 < _e15);
             } else {
@@ -6098,9 +6124,9 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             }
             bool _e220 = local_129;
             if (_e220) {
-                uint _e221 = i_20;
+                uint _e221 = i_21;
                 AirlightOuter _e223 = g_24;
-                uint _e224 = i_20;
+                uint _e224 = i_21;
                 float _e226 = at[min(uint(_e224), 2u)];
                 const float _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[min(uint(_e221), 2u)] = _e227;
@@ -6136,28 +6162,28 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     AirlightOuter _e268 = g_24;
     const float _e270 = airlight_to_w(_e268, 0.0);
     g_24.edges[0] = _e270;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_25) {
-            uint _e304 = i_21;
-            i_21 = (_e304 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e304 = i_22;
+            i_22 = (_e304 + 1u);
         }
-        loop_init_25 = false;
-        uint _e275 = i_21;
+        loop_init_26 = false;
+        uint _e275 = i_22;
         if ((_e275 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e278 = i_21;
+            uint _e278 = i_22;
             float _e280 = cuts_2[min(uint(_e278), 2u)];
             uint _e282 = n_1;
             float _e284 = g_24.edges[min(uint(_e282), 12u)];
             if ((_e280 > _e284)) {
-                uint _e288 = i_21;
+                uint _e288 = i_22;
                 float _e290 = cuts_2[min(uint(_e288), 2u)];
                 local_130 = (_e290 < _e265);
             } else {
@@ -6168,7 +6194,7 @@ AirlightOuter airlight_outer(AirlightScene s_25)
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 uint _e298 = n_1;
-                uint _e300 = i_21;
+                uint _e300 = i_22;
                 float _e302 = cuts_2[min(uint(_e300), 2u)];
                 g_24.edges[min(uint(_e298), 12u)] = _e302;
             }
@@ -6201,10 +6227,10 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_22 = min(airlight_naga_f2u32(max(floor(x_19), 0.0)), (g_25.panels - 1u));
-        float t_6 = (x_19 - float(i_22));
-        float a_28 = g_25.gamma[min(uint(i_22), 12u)];
-        float b_18 = g_25.gamma[min(uint((i_22 + 1u)), 12u)];
+        uint i_23 = min(airlight_naga_f2u32(max(floor(x_19), 0.0)), (g_25.panels - 1u));
+        float t_6 = (x_19 - float(i_23));
+        float a_28 = g_25.gamma[min(uint(i_23), 12u)];
+        float b_18 = g_25.gamma[min(uint((i_23 + 1u)), 12u)];
         float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
@@ -6431,16 +6457,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_29)
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e251 = step_2;
             step_2 = (_e251 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e78 = step_2;
         if ((_e78 < evaluations)) {
         } else {
@@ -6456,16 +6482,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_29)
             k_5 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_27 = true;
+            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_27) {
+                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_28) {
                     uint _e157 = j_4;
                     j_4 = (_e157 + 1u);
                 }
-                loop_init_27 = false;
+                loop_init_28 = false;
                 uint _e96 = j_4;
                 if ((_e96 < 7u)) {
                 } else {
@@ -6545,16 +6571,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_29)
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_28 = true;
+                    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_29 = true;
                     while(true) {
-                        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-                        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                        if (!loop_init_28) {
+                        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+                        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+                        if (!loop_init_29) {
                             uint _e246 = tries;
                             tries = (_e246 + 1u);
                         }
-                        loop_init_28 = false;
+                        loop_init_29 = false;
                         uint _e198 = tries;
                         if ((_e198 < _e6.max_panels)) {
                         } else {

@@ -151,6 +151,9 @@ struct AirlightLobe {
     float exponent;
 };
 struct airlight_type_18 {
+    float inner[5];
+};
+struct airlight_type_19 {
     float inner[3];
 };
 struct AirlightNode {
@@ -158,8 +161,8 @@ struct AirlightNode {
     float weight;
     char _pad2[12];
 };
-typedef AirlightScene airlight_type_19[1];
-typedef AirlightResult airlight_type_20[1];
+typedef AirlightScene airlight_type_20[1];
+typedef AirlightResult airlight_type_21[1];
 constant uint AIRLIGHT_TERMS = 12u;
 constant uint AIRLIGHT_HALF_TERMS = 6u;
 constant float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -341,8 +344,8 @@ float airlight_log1p(
     }
     float s_27 = x_2 / (2.0 + x_2);
     float z_11 = s_27 * s_27;
-    float sum_6 = (((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0;
-    return (2.0 * s_27) * sum_6;
+    float sum_7 = (((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0;
+    return (2.0 * s_27) * sum_7;
 }
 
 bool airlight_is_finite(
@@ -5631,6 +5634,8 @@ float airlight_lobe_arcs(
 ) {
     float reach = 1.0;
     metal::float3 inner = metal::float3(0.0);
+    float sum_6 = 0.0;
+    uint i_20 = 0u;
     float c_11 = g_21.cos_r * cs.x;
     float d_3 = g_21.sin_r * cs.y;
     float peak = c_11 + d_3;
@@ -5674,18 +5679,36 @@ float airlight_lobe_arcs(
         metal::float3 _e97 = inner;
         inner = _e97.yxz;
     }
+    float _e101 = inner.x;
+    float _e103 = inner.y;
+    float _e105 = inner.z;
+    airlight_type_18 edges = airlight_type_18 {{-(cut_2), _e101, _e103, _e105, cut_2}};
     bool smoothstep_2 = exponent < 1.0;
-    float _e103 = inner.x;
-    float _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
-    float _e106 = inner.x;
-    float _e108 = inner.y;
-    float _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
-    float _e112 = inner.y;
-    float _e114 = inner.z;
-    float _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
-    float _e118 = inner.z;
-    float _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
-    return ((_e104 + _e109) + _e115) + _e119;
+    uint2 loop_bound_25 = uint2(4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e126 = i_20;
+            i_20 = _e126 + 1u;
+        }
+        loop_init_24 = false;
+        uint _e113 = i_20;
+        if (_e113 < 4u) {
+        } else {
+            break;
+        }
+        {
+            float _e116 = sum_6;
+            uint _e117 = i_20;
+            uint _e119 = i_20;
+            float _e123 = airlight_lobe_piece(q_6, edges.inner[metal::min(unsigned(_e117), 4u)], edges.inner[metal::min(unsigned(_e119 + 1u), 4u)], smoothstep_2);
+            sum_6 = _e116 + _e123;
+        }
+    }
+    float _e128 = sum_6;
+    return _e128;
 }
 
 AirlightOuter airlight_outer(
@@ -5708,14 +5731,14 @@ AirlightOuter airlight_outer(
     bool local_124 = {};
     bool local_125 = {};
     bool local_126 = {};
-    airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_18 at = {};
-    uint i_20 = 0u;
+    airlight_type_19 cuts_2 = airlight_type_19 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_19 at = {};
+    uint i_21 = 0u;
     bool local_127 = {};
     bool local_128 = {};
     bool local_129 = {};
     uint n_1 = 0u;
-    uint i_21 = 0u;
+    uint i_22 = 0u;
     bool local_130 = {};
     if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
         AirlightOuter _e4 = airlight_surface(s_23);
@@ -5861,25 +5884,25 @@ AirlightOuter airlight_outer(
     float _e172 = scale;
     g_22.scale = _e172;
     float _e178 = s_star;
-    at = airlight_type_18 {{_e178, (s_23.t_min - along_d) / cos_a_2, (s_23.t_max - along_d) / cos_a_2}};
-    uint2 loop_bound_25 = uint2(4294967295u);
-    bool loop_init_24 = true;
+    at = airlight_type_19 {{_e178, (s_23.t_min - along_d) / cos_a_2, (s_23.t_max - along_d) / cos_a_2}};
+    uint2 loop_bound_26 = uint2(4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e229 = i_20;
-            i_20 = _e229 + 1u;
+        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e229 = i_21;
+            i_21 = _e229 + 1u;
         }
-        loop_init_24 = false;
-        uint _e189 = i_20;
+        loop_init_25 = false;
+        uint _e189 = i_21;
         if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0.0) {
-                uint _e196 = i_20;
+                uint _e196 = i_21;
                 local_127 = _e196 > 0u;
             } else {
                 local_127 = false;
@@ -5888,7 +5911,7 @@ AirlightOuter airlight_outer(
             if (_e200) {
                 continue;
             }
-            uint _e201 = i_20;
+            uint _e201 = i_21;
             if (_e201 == 2u) {
                 local_128 = infinite_4;
             } else {
@@ -5898,10 +5921,10 @@ AirlightOuter airlight_outer(
             if (_e207) {
                 continue;
             }
-            uint _e208 = i_20;
+            uint _e208 = i_21;
             float _e210 = at.inner[metal::min(unsigned(_e208), 2u)];
             if (_e210 > 0.0) {
-                uint _e215 = i_20;
+                uint _e215 = i_21;
                 float _e217 = at.inner[metal::min(unsigned(_e215), 2u)];
                 local_129 = _e217 < _e15;
             } else {
@@ -5909,9 +5932,9 @@ AirlightOuter airlight_outer(
             }
             bool _e220 = local_129;
             if (_e220) {
-                uint _e221 = i_20;
+                uint _e221 = i_21;
                 AirlightOuter _e223 = g_22;
-                uint _e224 = i_20;
+                uint _e224 = i_21;
                 float _e226 = at.inner[metal::min(unsigned(_e224), 2u)];
                 float _e227 = airlight_to_w(_e223, _e226);
                 cuts_2.inner[metal::min(unsigned(_e221), 2u)] = _e227;
@@ -5947,28 +5970,28 @@ AirlightOuter airlight_outer(
     AirlightOuter _e268 = g_22;
     float _e270 = airlight_to_w(_e268, 0.0);
     g_22.edges.inner[0] = _e270;
-    uint2 loop_bound_26 = uint2(4294967295u);
-    bool loop_init_25 = true;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_25) {
-            uint _e304 = i_21;
-            i_21 = _e304 + 1u;
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e304 = i_22;
+            i_22 = _e304 + 1u;
         }
-        loop_init_25 = false;
-        uint _e275 = i_21;
+        loop_init_26 = false;
+        uint _e275 = i_22;
         if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            uint _e278 = i_21;
+            uint _e278 = i_22;
             float _e280 = cuts_2.inner[metal::min(unsigned(_e278), 2u)];
             uint _e282 = n_1;
             float _e284 = g_22.edges.inner[metal::min(unsigned(_e282), 12u)];
             if (_e280 > _e284) {
-                uint _e288 = i_21;
+                uint _e288 = i_22;
                 float _e290 = cuts_2.inner[metal::min(unsigned(_e288), 2u)];
                 local_130 = _e290 < _e265;
             } else {
@@ -5979,7 +6002,7 @@ AirlightOuter airlight_outer(
                 uint _e294 = n_1;
                 n_1 = _e294 + 1u;
                 uint _e298 = n_1;
-                uint _e300 = i_21;
+                uint _e300 = i_22;
                 float _e302 = cuts_2.inner[metal::min(unsigned(_e300), 2u)];
                 g_22.edges.inner[metal::min(unsigned(_e298), 12u)] = _e302;
             }
@@ -6006,10 +6029,10 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_22 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_19), 0.0)), g_23.panels - 1u);
-        float t_6 = x_19 - static_cast<float>(i_22);
-        float a_28 = g_23.gamma.inner[metal::min(unsigned(i_22), 12u)];
-        float b_18 = g_23.gamma.inner[metal::min(unsigned(i_22 + 1u), 12u)];
+        uint i_23 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_19), 0.0)), g_23.panels - 1u);
+        float t_6 = x_19 - static_cast<float>(i_23);
+        float a_28 = g_23.gamma.inner[metal::min(unsigned(i_23), 12u)];
+        float b_18 = g_23.gamma.inner[metal::min(unsigned(i_23 + 1u), 12u)];
         float gamma_1 = a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6));
         float jacobian = (((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6);
         if (!((jacobian > 0.0))) {
@@ -6134,16 +6157,16 @@ AirlightResult airlight_in_scatter(
     a_16 = _e6.edges.inner[0];
     b_12 = _e6.edges.inner[1];
     uint evaluations = (2u * _e6.max_panels) - 1u;
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e251 = step_2;
             step_2 = _e251 + 1u;
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e78 = step_2;
         if (_e78 < evaluations) {
         } else {
@@ -6159,16 +6182,16 @@ AirlightResult airlight_in_scatter(
             k_4 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u);
-            bool loop_init_27 = true;
+            uint2 loop_bound_29 = uint2(4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_27) {
+                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_28) {
                     uint _e157 = j_4;
                     j_4 = _e157 + 1u;
                 }
-                loop_init_27 = false;
+                loop_init_28 = false;
                 uint _e96 = j_4;
                 if (_e96 < 7u) {
                 } else {
@@ -6246,16 +6269,16 @@ AirlightResult airlight_in_scatter(
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_29 = uint2(4294967295u);
-                    bool loop_init_28 = true;
+                    uint2 loop_bound_30 = uint2(4294967295u);
+                    bool loop_init_29 = true;
                     while(true) {
-                        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-                        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                        if (!loop_init_28) {
+                        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+                        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+                        if (!loop_init_29) {
                             uint _e246 = tries;
                             tries = _e246 + 1u;
                         }
-                        loop_init_28 = false;
+                        loop_init_29 = false;
                         uint _e198 = tries;
                         if (_e198 < _e6.max_panels) {
                         } else {
@@ -6332,16 +6355,16 @@ struct airlight_mainInput {
 };
 kernel void airlight_main(
   metal::uint3 id [[thread_position_in_grid]]
-, device airlight_type_19 const& airlight_records [[user(fake0)]]
-, device airlight_type_20& airlight_results [[user(fake0)]]
+, device airlight_type_20 const& airlight_records [[user(fake0)]]
+, device airlight_type_21& airlight_results [[user(fake0)]]
 , constant airlight__mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint i_23 = id.x;
-    if (i_23 >= (1 + (_buffer_sizes.size0 - 0 - 144) / 144)) {
+    uint i_24 = id.x;
+    if (i_24 >= (1 + (_buffer_sizes.size0 - 0 - 144) / 144)) {
         return;
     }
-    AirlightScene _e9 = airlight_records[metal::min(unsigned(i_23), (_buffer_sizes.size0 - 0 - 144) / 144)];
+    AirlightScene _e9 = airlight_records[metal::min(unsigned(i_24), (_buffer_sizes.size0 - 0 - 144) / 144)];
     AirlightResult _e10 = airlight_in_scatter(_e9);
-    airlight_results[metal::min(unsigned(i_23), (_buffer_sizes.size1 - 0 - 8) / 8)] = _e10;
+    airlight_results[metal::min(unsigned(i_24), (_buffer_sizes.size1 - 0 - 8) / 8)] = _e10;
     return;
 }

@@ -402,8 +402,8 @@ fn airlight_log1p(x_2: f32) -> f32 {
     }
     let s_31 = (x_2 / (2f + x_2));
     let z_11 = (s_31 * s_31);
-    let sum_6 = ((((((((((((((((z_11 / 17f) + 0.06666667f) * z_11) + 0.07692308f) * z_11) + 0.09090909f) * z_11) + 0.11111111f) * z_11) + 0.14285715f) * z_11) + 0.2f) * z_11) + 0.33333334f) * z_11) + 1f);
-    return ((2f * s_31) * sum_6);
+    let sum_7 = ((((((((((((((((z_11 / 17f) + 0.06666667f) * z_11) + 0.07692308f) * z_11) + 0.09090909f) * z_11) + 0.11111111f) * z_11) + 0.14285715f) * z_11) + 0.2f) * z_11) + 0.33333334f) * z_11) + 1f);
+    return ((2f * s_31) * sum_7);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -4799,6 +4799,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
 fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent_1: f32) -> f32 {
     var reach: f32 = 1f;
     var inner: vec3<f32> = vec3(0f);
+    var sum_6: f32 = 0f;
+    var i_20: u32 = 0u;
 
     let c_11 = (g_23.cos_r * cs.x);
     let d_3 = (g_23.sin_r * cs.y);
@@ -4843,18 +4845,31 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
         let _e97 = inner;
         inner = _e97.yxz;
     }
+    let _e101 = inner.x;
+    let _e103 = inner.y;
+    let _e105 = inner.z;
+    let edges = array<f32, 5>(-(cut_2), _e101, _e103, _e105, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
-    let _e103 = inner.x;
-    let _e104 = airlight_lobe_piece(q_6, -(cut_2), _e103, smoothstep_2);
-    let _e106 = inner.x;
-    let _e108 = inner.y;
-    let _e109 = airlight_lobe_piece(q_6, _e106, _e108, smoothstep_2);
-    let _e112 = inner.y;
-    let _e114 = inner.z;
-    let _e115 = airlight_lobe_piece(q_6, _e112, _e114, smoothstep_2);
-    let _e118 = inner.z;
-    let _e119 = airlight_lobe_piece(q_6, _e118, cut_2, smoothstep_2);
-    return (((_e104 + _e109) + _e115) + _e119);
+    loop {
+        let _e113 = i_20;
+        if (_e113 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e116 = sum_6;
+            let _e117 = i_20;
+            let _e119 = i_20;
+            let _e123 = airlight_lobe_piece(q_6, edges[_e117], edges[(_e119 + 1u)], smoothstep_2);
+            sum_6 = (_e116 + _e123);
+        }
+        continuing {
+            let _e126 = i_20;
+            i_20 = (_e126 + 1u);
+        }
+    }
+    let _e128 = sum_6;
+    return _e128;
 }
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
@@ -4877,12 +4892,12 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var local_126: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var i_20: u32 = 0u;
+    var i_21: u32 = 0u;
     var local_127: bool;
     var local_128: bool;
     var local_129: bool;
     var n_1: u32 = 0u;
-    var i_21: u32 = 0u;
+    var i_22: u32 = 0u;
     var local_130: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -5031,14 +5046,14 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e178 = s_star;
     at = array<f32, 3>(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
     loop {
-        let _e189 = i_20;
+        let _e189 = i_21;
         if (_e189 < 3u) {
         } else {
             break;
         }
         {
             if (cos_a_2 == 0f) {
-                let _e196 = i_20;
+                let _e196 = i_21;
                 local_127 = (_e196 > 0u);
             } else {
                 local_127 = false;
@@ -5047,7 +5062,7 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             if _e200 {
                 continue;
             }
-            let _e201 = i_20;
+            let _e201 = i_21;
             if (_e201 == 2u) {
                 local_128 = infinite_4;
             } else {
@@ -5057,10 +5072,10 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             if _e207 {
                 continue;
             }
-            let _e208 = i_20;
+            let _e208 = i_21;
             let _e210 = at[_e208];
             if (_e210 > 0f) {
-                let _e215 = i_20;
+                let _e215 = i_21;
                 let _e217 = at[_e215];
                 local_129 = (_e217 < _e15);
             } else {
@@ -5068,17 +5083,17 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             }
             let _e220 = local_129;
             if _e220 {
-                let _e221 = i_20;
+                let _e221 = i_21;
                 let _e223 = g_24;
-                let _e224 = i_20;
+                let _e224 = i_21;
                 let _e226 = at[_e224];
                 let _e227 = airlight_to_w(_e223, _e226);
                 cuts_2[_e221] = _e227;
             }
         }
         continuing {
-            let _e229 = i_20;
-            i_20 = (_e229 + 1u);
+            let _e229 = i_21;
+            i_21 = (_e229 + 1u);
         }
     }
     let _e232 = cuts_2[1];
@@ -5111,18 +5126,18 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e270 = airlight_to_w(_e268, 0f);
     g_24.edges[0] = _e270;
     loop {
-        let _e275 = i_21;
+        let _e275 = i_22;
         if (_e275 < 3u) {
         } else {
             break;
         }
         {
-            let _e278 = i_21;
+            let _e278 = i_22;
             let _e280 = cuts_2[_e278];
             let _e282 = n_1;
             let _e284 = g_24.edges[_e282];
             if (_e280 > _e284) {
-                let _e288 = i_21;
+                let _e288 = i_22;
                 let _e290 = cuts_2[_e288];
                 local_130 = (_e290 < _e265);
             } else {
@@ -5133,14 +5148,14 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
                 let _e298 = n_1;
-                let _e300 = i_21;
+                let _e300 = i_22;
                 let _e302 = cuts_2[_e300];
                 g_24.edges[_e298] = _e302;
             }
         }
         continuing {
-            let _e304 = i_21;
-            i_21 = (_e304 + 1u);
+            let _e304 = i_22;
+            i_22 = (_e304 + 1u);
         }
     }
     let _e307 = n_1;
@@ -5161,10 +5176,10 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_22 = min(u32(max(floor(x_19), 0f)), (g_25.panels - 1u));
-        let t_6 = (x_19 - f32(i_22));
-        let a_28 = g_25.gamma[i_22];
-        let b_18 = g_25.gamma[(i_22 + 1u)];
+        let i_23 = min(u32(max(floor(x_19), 0f)), (g_25.panels - 1u));
+        let t_6 = (x_19 - f32(i_23));
+        let a_28 = g_25.gamma[i_23];
+        let b_18 = g_25.gamma[(i_23 + 1u)];
         let gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
         let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {

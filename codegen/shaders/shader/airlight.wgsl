@@ -2126,8 +2126,8 @@ fn airlight_lobe_node(q: AirlightLobe, lo: f32, w: f32, u: f32, smoothstep: bool
 
 /// ∫ (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ dx over the circle at the angle γ (cos γ, sin γ = cs)
 /// of a Phong surface's outer integral, ψ_n the normal's half-arc there (surface.rs lobe_arcs:
-/// the lobe ended at AIRLIGHT_LOBE_FLOOR of its peak, cut at the peak and the normal's arc ends,
-/// AIRLIGHT_LOBE_RULE's 10 points on every piece, written out: no loop iterations).
+/// the lobe ended at AIRLIGHT_LN_LOBE_FLOOR of its peak, cut at the peak and the normal's arc
+/// ends, the kernel's LOBE_RULE's 10 points on every piece).
 fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent: f32) -> f32 {
     let c = g.cos_r * cs.x;
     let d = g.sin_r * cs.y;
@@ -2141,8 +2141,7 @@ fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, e
     if (exponent > 0.0) { reach = -airlight_expm1(AIRLIGHT_LN_LOBE_FLOOR / exponent); }
     let s2 = select(1.0, reach / q.k, reach < q.k);
     let cut = 2.0 * airlight_angle(sqrt(1.0 - s2), sqrt(s2));
-    // the pieces' edges: −cut, the peak 0 and the normal's arc ends within (−cut, cut), cut;
-    // straight-line code throughout (no loop iterations: AIRLIGHT_SEGMENT_PANELS)
+    // the pieces' edges: −cut, the peak 0 and the normal's arc ends within (−cut, cut), cut
     var inner = vec3<f32>(0.0);
     if (psi_n < AIRLIGHT_PI) {
         inner.y = airlight_arc_end(g.delta.x - psi_n, cut);
@@ -2151,9 +2150,16 @@ fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, e
     if (inner.y < inner.x) { inner = inner.yxz; }
     if (inner.z < inner.y) { inner = inner.xzy; }
     if (inner.y < inner.x) { inner = inner.yxz; }
+    // a loop over the pieces, not four calls: a driver that runs a branch's straight-line code
+    // for every lane (lavapipe) runs this for every ray of a dispatch, but leaves a loop whose
+    // lanes are all off at once
+    let edges = array<f32, 5>(-cut, inner.x, inner.y, inner.z, cut);
     let smoothstep = exponent < 1.0;
-    return airlight_lobe_piece(q, -cut, inner.x, smoothstep) + airlight_lobe_piece(q, inner.x, inner.y, smoothstep)
-        + airlight_lobe_piece(q, inner.y, inner.z, smoothstep) + airlight_lobe_piece(q, inner.z, cut, smoothstep);
+    var sum = 0.0;
+    for (var i = 0u; i < 4u; i++) {
+        sum += airlight_lobe_piece(q, edges[i], edges[i + 1u], smoothstep);
+    }
+    return sum;
 }
 
 /// An end of the normal's arc brought into (−π, π], or 0 (the peak, an edge already) where it
@@ -2165,7 +2171,7 @@ fn airlight_arc_end(x: f32, cut: f32) -> f32 {
     return select(0.0, end, end > -cut && end < cut);
 }
 
-/// AIRLIGHT_LOBE_RULE on the piece [lo, hi] of a lobe's arcs; 0 where it is empty or the
+/// The kernel's LOBE_RULE (surface.rs) on the piece [lo, hi] of a lobe's arcs; 0 where it is empty or the
 /// integrand vanishes at its middle (its sign is constant between the edges).
 fn airlight_lobe_piece(q: AirlightLobe, lo: f32, hi: f32, smoothstep: bool) -> f32 {
     let w = hi - lo;
