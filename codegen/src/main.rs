@@ -65,7 +65,8 @@ A segment light (CPU default path, or --backend gpu): \"light\": {\"shape\": \"s
 Area lights of uniform radiance L (CPU backend): \"light\": {\"shape\": \"disc\", \"center\": [x,y,z],
 \"normal\": [x,y,z], \"radius\": R, \"radiance\": L} or {\"shape\": \"rectangle\", \"corner\": [x,y,z],
 \"edge_u\": [x,y,z], \"edge_v\": [x,y,z], \"radiance\": L} (emitting on the side of edge_u x edge_v)
-or {\"shape\": \"sphere\", \"center\": [x,y,z], \"radius\": R, \"radiance\": L}.
+or {\"shape\": \"sphere\", \"center\": [x,y,z], \"radius\": R, \"radiance\": L}; each may add
+\"emission\": {\"kind\": \"cosine_lobe\", \"power\": p} (every element max(0, n.w)^p, p in 1..=1024).
 A surface point (CPU default path; --backend gpu: lit by an omni light), in place of the ray: \"surface\": {\"position\": [x,y,z],
 \"normal\": [x,y,z], \"brdf\": {\"kind\": \"lambert\", \"albedo\": a} | {\"kind\": \"phong\", \"k_s\": k,
 \"exponent\": n, \"view\": [x,y,z]}} -> {\"surface_air_light\": L}: the air-light reflected towards

@@ -24,7 +24,7 @@
 use airlight::light::{AnyDistribution, SpotCone, TwoLobed};
 use airlight::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
 use airlight::record::SceneRecord;
-use airlight::{AreaLight, AreaScene, Brdf, Emitter, Medium, PointLight, Ray, Real, SegmentLight, SegmentScene, Surface, SurfaceScene};
+use airlight::{AreaLight, AreaScene, Brdf, Emission, Emitter, Medium, PointLight, Ray, Real, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use serde::de::IgnoredAny;
 use serde::{de, Deserialize, Deserializer};
 use serde_json::Value;
@@ -206,8 +206,11 @@ pub struct DiscJson {
     pub normal: [f64; 3],
     /// Radius.
     pub radius: f64,
-    /// Radiance of every point.
+    /// Radiance of every point along its normal.
     pub radiance: f64,
+    /// How every point emits about its normal; absent or `null`: Lambertian.
+    #[serde(default)]
+    pub emission: Option<EmissionJson>,
 }
 
 /// The fields of a rectangle (parallelogram) light.
@@ -220,8 +223,11 @@ pub struct RectangleJson {
     pub edge_u: [f64; 3],
     /// The second edge from it; the emitting side is that of `edge_u × edge_v`.
     pub edge_v: [f64; 3],
-    /// Radiance of every point.
+    /// Radiance of every point along its normal.
     pub radiance: f64,
+    /// How every point emits about its normal; absent or `null`: Lambertian.
+    #[serde(default)]
+    pub emission: Option<EmissionJson>,
 }
 
 /// The fields of a sphere light.
@@ -232,8 +238,42 @@ pub struct SphereJson {
     pub center: [f64; 3],
     /// Radius.
     pub radius: f64,
-    /// Radiance of every point, outward.
+    /// Radiance of every point along its outward normal.
     pub radiance: f64,
+    /// How every point emits about its normal; absent or `null`: Lambertian.
+    #[serde(default)]
+    pub emission: Option<EmissionJson>,
+}
+
+/// `light.emission` of an area light, by `kind` ([`airlight::Emission`]).
+#[derive(Debug)]
+pub enum EmissionJson {
+    /// `"lambertian"`: `D = c`, uniform radiance.
+    Lambertian,
+    /// `"cosine_lobe"`: `D = c^power`, `power` an integer from 1 to 1024.
+    CosineLobe(CosineLobeJson),
+}
+
+/// The field of a `"cosine_lobe"` emission.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CosineLobeJson {
+    /// Power (an integer, read as a number).
+    pub power: f64,
+}
+
+impl<'de> Deserialize<'de> for EmissionJson {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (kind, object) = kind_and_fields(d)?;
+        Ok(match kind.as_str() {
+            "lambertian" => {
+                let NoFields {} = fields(object)?;
+                Self::Lambertian
+            }
+            "cosine_lobe" => Self::CosineLobe(fields(object)?),
+            _ => return Err(de::Error::unknown_variant(&kind, &["lambertian", "cosine_lobe"])),
+        })
+    }
 }
 
 /// The fields of a point light.
@@ -488,8 +528,18 @@ fn distribution<T: Real>(json: &Option<DistributionJson>) -> Result<AnyDistribut
 }
 
 /// An area light's scene.
-fn area<T: Real>(ray: Ray<T>, emitter: Emitter<T>, radiance: T, medium: Medium<T>, phase: AnyPhase<T>) -> Result<AnyRecord<T>, FieldError> {
-    Ok(AnyRecord::Area(AreaScene::new(ray, AreaLight { emitter, radiance }, medium, phase).map_err(field_error)?))
+fn area<T: Real>(ray: Ray<T>, emitter: Emitter<T>, radiance: f64, emission: &Option<EmissionJson>, medium: Medium<T>, phase: AnyPhase<T>) -> Result<AnyRecord<T>, FieldError> {
+    let emission = match emission {
+        None | Some(EmissionJson::Lambertian) => Emission::Lambertian,
+        Some(EmissionJson::CosineLobe(CosineLobeJson { power: p })) => {
+            if !(p.fract() == 0.0 && (1.0..=Emission::MAX_POWER as f64).contains(p)) {
+                return Err(field_error(airlight::InputError::new("light.emission.power", airlight::ErrorKind::LobePower)));
+            }
+            Emission::CosineLobe { power: *p as u32 }
+        }
+    };
+    let light = AreaLight { emitter, radiance: number("light.radiance", radiance)?, emission };
+    Ok(AnyRecord::Area(AreaScene::new(ray, light, medium, phase).map_err(field_error)?))
 }
 
 /// A point light's fields.
@@ -526,15 +576,15 @@ impl SceneJson {
             }
             LightJson::Disc(l) => {
                 let emitter = Emitter::Disc { center: vec3::<T>("light.center", l.center)?, normal: vec3::<T>("light.normal", l.normal)?, radius: number("light.radius", l.radius)? };
-                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+                area(ray, emitter, l.radiance, &l.emission, medium, phase)
             }
             LightJson::Rectangle(l) => {
                 let emitter = Emitter::Rectangle { corner: vec3::<T>("light.corner", l.corner)?, edge_u: vec3::<T>("light.edge_u", l.edge_u)?, edge_v: vec3::<T>("light.edge_v", l.edge_v)? };
-                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+                area(ray, emitter, l.radiance, &l.emission, medium, phase)
             }
             LightJson::Sphere(l) => {
                 let emitter = Emitter::Sphere { center: vec3::<T>("light.center", l.center)?, radius: number("light.radius", l.radius)? };
-                area(ray, emitter, number("light.radiance", l.radiance)?, medium, phase)
+                area(ray, emitter, l.radiance, &l.emission, medium, phase)
             }
         }
     }

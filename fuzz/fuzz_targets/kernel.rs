@@ -10,7 +10,7 @@
 //! may overflow before the result would, which is documented rather than hidden.
 #![no_main]
 use airlight::glam::{DVec3, Vec3};
-use airlight::{in_scatter_unchecked, AreaLight, AreaScene, Brdf, Emitter, Expansion, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
+use airlight::{in_scatter_unchecked, AreaLight, AreaScene, Brdf, Emission, Emitter, Expansion, Scene, SegmentLight, SegmentScene, Surface, SurfaceScene};
 use libfuzzer_sys::fuzz_target;
 
 #[macro_use]
@@ -92,19 +92,21 @@ fuzz_target!(|raw: Raw| {
     // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
     // zeros most inputs decode to), at tolerance 1e-3 (hundreds of point lights or rays
     // each): a disc of
-    // radius |w| at the light facing along its axis, a sphere of that radius there, and the ray's origin as a Lambertian
+    // radius |w| at the light facing along its axis, a sphere of that radius there (a cosine lobe), and the ray's origin as a Lambertian
     // surface facing along the ray: never NaN, never negative (+∞ only for the light on the
     // surface point, or a true value beyond the range)
     if !(raw.power == 18 && raw.phase == 5) {
         return;
     }
     let disc = Emitter::Disc { center: l.position, normal: DVec3::from_array(raw.axis), radius: raw.w.abs() };
-    if let Ok(s) = AreaScene::new(r, AreaLight { emitter: disc, radiance: l.intensity }, m, p) {
+    if let Ok(s) = AreaScene::new(r, AreaLight::new(disc, l.intensity), m, p) {
         let x = s.in_scatter_counted(1e-3).0;
         assert!(!x.is_nan() && x >= 0.0, "f64/disc: {x} for {raw:?}");
     }
     let sphere = Emitter::Sphere { center: l.position, radius: raw.w.abs() };
-    if let Ok(s) = AreaScene::new(r, AreaLight { emitter: sphere, radiance: l.intensity }, m, p) {
+    // a cosine lobe of the spot's inner cosine scaled (invalid outside 1..=1024)
+    let lobe = Emission::CosineLobe { power: (raw.ci.abs() * 1024.0) as u32 };
+    if let Ok(s) = AreaScene::new(r, AreaLight { emission: lobe, ..AreaLight::new(sphere, l.intensity) }, m, p) {
         let x = s.in_scatter_counted(1e-3).0;
         assert!(!x.is_nan() && x >= 0.0, "f64/sphere: {x} for {raw:?}");
     }

@@ -5,7 +5,8 @@
 //! An emitter of radiance `L_e` is a surface of Lambertian elements: `dA` at `q` with normal
 //! `n(q)` is a point light of intensity `L_e dA` and distribution `max(0, n·ω)`
 //! ([`Lambertian`]), so `L = ∫_A L_point(q) dA(q)`, `L_point` the point light of intensity `L_e`
-//! ([`Scene::in_scatter`]). Near the ray's line `L_point ∝ 1/ρ` (`ρ` the distance from `q` to
+//! ([`Scene::in_scatter`]). An [`Emission`] other than Lambert's cosine law raises that
+//! distribution to a power (`max(0, n·ω)ᵖ`, a focused panel), still on the emitting side only. Near the ray's line `L_point ∝ 1/ρ` (`ρ` the distance from `q` to
 //! it): integrable over an area, so a ray through the emitter sees a finite glow, but a peak.
 //! So the emitter is taken in polar coordinates about its point nearest the ray segment, the
 //! focus `f` (`dA = r dr dψ` cancels a `1/ρ` at `f`), with `r = ρ₀ sinh w` where the focus is
@@ -23,7 +24,8 @@
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
-use crate::light::{Lambertian, Omni};
+use crate::light::{Lambertian, LightDistribution, Omni};
+use crate::scalar::Scalar;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 use crate::scene::{validate, Medium, PointLight, Ray, Scene};
@@ -60,13 +62,91 @@ pub enum Emitter<T: Real> {
     },
 }
 
-/// An area light: an emitter of uniform radiance `L_e` (Lambertian).
+/// How every element of an emitter shares its light among the directions of its emitting side:
+/// `dA` emits the intensity `L_e·dA·D(c)` at the cosine `c` to its normal, nothing behind it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Emission {
+    /// `D = c`, Lambert's cosine law: uniform radiance `L_e` in every direction.
+    #[default]
+    Lambertian,
+    /// `D = cᵖ`, `1 ≤ p ≤ 1024`: a focused panel (louvres, a diffuser film), radiance
+    /// `L_e·c^{p−1}`; `p = 1` is [`Emission::Lambertian`].
+    CosineLobe {
+        /// The power `p`.
+        power: u32,
+    },
+}
+
+impl Emission {
+    /// The largest cosine-lobe power.
+    pub const MAX_POWER: u32 = 1024;
+
+    /// Checks the parameters: `light.emission.power`.
+    pub fn validate(&self) -> Result<(), InputError> {
+        match *self {
+            Emission::CosineLobe { power } if !(1..=Self::MAX_POWER).contains(&power) => Err(InputError::new("light.emission.power", ErrorKind::LobePower)),
+            _ => Ok(()),
+        }
+    }
+
+    /// The power `p` of `D = cᵖ`.
+    fn power(&self) -> u32 {
+        match *self {
+            Emission::Lambertian => 1,
+            Emission::CosineLobe { power } => power,
+        }
+    }
+}
+
+/// One element of an emitter as a point light's distribution: [`Lambertian`] about its normal,
+/// raised to its [`Emission`]'s power (one kink, `c = 0`, where a ray crosses the plane).
+#[derive(Clone, Copy, Debug)]
+struct Element<T: Real> {
+    lambertian: Lambertian<T>,
+    power: u32,
+}
+
+impl<T: Real> LightDistribution<T> for Element<T> {
+    fn axis(&self) -> [T; 3] {
+        self.lambertian.axis()
+    }
+    fn eval<S: Scalar<T>>(&self, c: S) -> S {
+        let d = self.lambertian.eval(c);
+        if self.power == 1 {
+            d
+        } else {
+            d.powi(self.power as i32)
+        }
+    }
+    fn kinks(&self) -> [Option<T>; 2] {
+        self.lambertian.kinks()
+    }
+    fn dark_below(&self) -> Option<T> {
+        self.lambertian.dark_below()
+    }
+    fn polynomial_degree(&self) -> Option<u32> {
+        Some(self.power)
+    }
+}
+
+/// An area light: an emitter of radiance `L_e` along its normals (uniform in every direction,
+/// Lambertian, unless its [`Emission`] says otherwise).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AreaLight<T: Real> {
     /// The shape.
     pub emitter: Emitter<T>,
-    /// Radiance `L_e ≥ 0` of every point, in every direction of its emitting side.
+    /// Radiance `L_e ≥ 0` of every point along its normal (with the default Lambertian
+    /// emission, in every direction of its emitting side).
     pub radiance: T,
+    /// How each element shares its light among directions (default: Lambertian).
+    pub emission: Emission,
+}
+
+impl<T: Real> AreaLight<T> {
+    /// A Lambertian emitter: radiance `L_e` in every direction of its emitting side.
+    pub fn new(emitter: Emitter<T>, radiance: T) -> Self {
+        AreaLight { emitter, radiance, emission: Emission::Lambertian }
+    }
 }
 
 /// The most Gauss–Kronrod panels of each of the two integrals over the emitter.
@@ -95,8 +175,9 @@ where
     /// # Errors
     /// [`InputError`] naming the first invalid field: `light.center`, `light.normal` (also zero),
     /// `light.radius` (negative or non-finite; a disc's or a sphere's), `light.corner`, `light.edge_u`, `light.edge_v`
-    /// (also zero or parallel to `edge_u`), `light.radiance`, then the ray, medium and phase
-    /// function as [`Scene::new`] names them.
+    /// (also zero or parallel to `edge_u`), `light.radiance`, `light.emission.power`
+    /// ([`Emission::validate`]), then the ray, medium and phase function as [`Scene::new`] names
+    /// them.
     pub fn new(ray: Ray<T>, light: AreaLight<T>, medium: Medium<T>, phase: P) -> Result<Self, InputError> {
         let anchor = match light.emitter {
             Emitter::Disc { center, normal, radius } => {
@@ -122,6 +203,7 @@ where
             }
         };
         check_non_negative(light.radiance, "light.radiance")?;
+        light.emission.validate()?;
         let point = PointLight { position: anchor, intensity: light.radiance, distribution: Omni };
         validate(&ray, &point, &medium, &phase)?;
         Ok(AreaScene { ray, light, medium, phase })
@@ -170,7 +252,7 @@ where
         let mut evaluated = 0;
         let mut point = |q: [T; 3], n: [T; 3]| -> T {
             evaluated += 1;
-            let light = PointLight { position: T::vec3_from_array(q), intensity: self.light.radiance, distribution: Lambertian { axis: T::vec3_from_array(n) } };
+            let light = PointLight { position: T::vec3_from_array(q), intensity: self.light.radiance, distribution: Element { lambertian: Lambertian { axis: T::vec3_from_array(n) }, power: self.light.emission.power() } };
             match Scene::new(self.ray, light, self.medium, self.phase.clone()) {
                 Ok(scene) => scene.in_scatter_controlled(inner).0,
                 Err(_) => T::zero(),

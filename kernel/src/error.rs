@@ -17,6 +17,8 @@ pub enum ErrorKind {
     OutOfRange,
     /// A two-lobed power that is not an even non-negative integer.
     OddPower,
+    /// An area light's cosine-lobe power outside `1 ..= 1024`.
+    LobePower,
     /// A spot cone whose outer cosine is not below its inner cosine.
     InvertedCone,
     /// A cosine outside `[−1, 1]`.
@@ -54,6 +56,7 @@ impl fmt::Display for InputError {
             ErrorKind::EmptyRange => "t_min must not exceed t_max",
             ErrorKind::OutOfRange => "must lie strictly between -1 and 1",
             ErrorKind::OddPower => "must be an even non-negative integer",
+            ErrorKind::LobePower => "must be an integer from 1 to 1024",
             ErrorKind::InvertedCone => "cos_outer must be below cos_inner",
             ErrorKind::NotACosine => "must lie in [-1, 1]",
             ErrorKind::NotAFraction => "must lie in [0, 1]",

@@ -71,7 +71,7 @@ pub mod special;
 pub mod surface;
 
 pub use glam;
-pub use area::{AreaLight, AreaScene, Emitter};
+pub use area::{AreaLight, AreaScene, Emission, Emitter};
 pub use error::{ErrorKind, InputError};
 pub use expansion::Expansion;
 pub use extended::{SegmentLight, SegmentScene, SHADER_SEGMENT_PANELS};

@@ -29,6 +29,9 @@ algebraically (5.9e-6, 2.1e-6, 1.4e-7 between 6, 8, 12 and 16 nodes on a thick o
 (about an hour each on one core): the inside one is in area.jsonl (2026-12-02, agreeing to
 6.2e-11), the near one is not yet.
 
+Cosine lobes ("emission": {"kind": "cosine_lobe", "power": p}, category emission): the element's
+D(c) = max(0, c)^p in place of max(0, c).
+
 Usage: python3 tests/reference/gen_area.py [--shapes sphere] [--missing] [--jobs 2]     (numpy
 and mpmath; `--missing`: only the records area.jsonl lacks; several hours for everything on two
 cores, most of it the spheres near the ray, in thick media and around the ray's start; each record
@@ -48,8 +51,17 @@ from gen_surface import composite, f32, f32v, phase_np, random_unit, unit
 OCTAVES = 8
 
 
-def point_lights(o, d, t0, t1, ss, st, P, A, inten, phase, q):
-    """L_point along o + t d, t ∈ [t0, t1], for lights at the rows of P with Lambertian axes A."""
+def emission_np(emission):
+    """An element's D(c) about its normal (light.emission; absent: Lambertian, D = max(0, c))."""
+    kind = (emission or {"kind": "lambertian"})["kind"]
+    p = emission["power"] if kind == "cosine_lobe" else 1
+    return lambda c: np.maximum(c, 0.0) ** p
+
+
+def point_lights(o, d, t0, t1, ss, st, P, A, inten, phase, q, emission=None):
+    """L_point along o + t d, t ∈ [t0, t1], for lights at the rows of P whose elements emit
+    about the axes A by `emission` (Lambertian if None)."""
+    D = emission_np(emission)
     op = P - o
     xh = op @ d
     perp = xh[:, None] * d - op
@@ -82,7 +94,7 @@ def point_lights(o, d, t0, t1, ss, st, P, A, inten, phase, q):
     hh = h[:, None, None]
     t = xh[:, None, None] + hh * np.tan(th)
     r = hh / c
-    f = np.maximum(s * d_el[:, None, None] + c * d_c[:, None, None], 0.0) * phase(-s)
+    f = D(s * d_el[:, None, None] + c * d_c[:, None, None]) * phase(-s)
     with np.errstate(over="ignore", invalid="ignore"):
         e = np.exp(-st * ((t - t0) + r)) if st > 0 else np.ones_like(t)
     return ss * inten / h * np.sum(wt * f * e, axis=(1, 2))
@@ -123,7 +135,8 @@ class Scene:
     def lights(self, P, A, q):
         out = np.empty(len(P))
         for i in range(0, len(P), 4096):
-            out[i:i + 4096] = point_lights(self.o, self.d, self.t0, self.t1, self.ss, self.st, P[i:i + 4096], A[i:i + 4096], self.L, self.phase, q)
+            out[i:i + 4096] = point_lights(self.o, self.d, self.t0, self.t1, self.ss, self.st, P[i:i + 4096], A[i:i + 4096], self.L, self.phase, q,
+                                           self.light.get("emission"))
         return out
 
     def flat(self, f, n, a1, a2, psi_edges, reach, size, q):
@@ -333,11 +346,14 @@ def spot_check(sc, rec, rng):
     p = c + 0.1 * np.array(random_unit(rng))
     # an axis facing the ray segment (a random one may light none of it: 0/0)
     a = unit(unit(sc.nearest(p) - p) + 0.5 * np.array(random_unit(rng)))
-    mine = point_lights(sc.o, sc.d, sc.t0, sc.t1, sc.ss, sc.st, p[None, :], a[None, :], sc.L, sc.phase, 24)[0]
+    emission = lt.get("emission")
+    mine = point_lights(sc.o, sc.d, sc.t0, sc.t1, sc.ss, sc.st, p[None, :], a[None, :], sc.L, sc.phase, 24, emission)[0]
     mp.mp.dps = 20
-    D = lambda cc: max(cc, 0)
+    power = emission["power"] if (emission or {}).get("kind") == "cosine_lobe" else 1
+    D = lambda cc: max(cc, 0) ** power
+    kinks = {"kind": "spot", "cos_inner": 1e-300, "cos_outer": 0.0}
     theirs = point_light([mp.mpf(x) for x in sc.o], [mp.mpf(x) for x in sc.d], mp.mpf(sc.t0), mp.inf if math.isinf(sc.t1) else mp.mpf(sc.t1),
-                         mp.mpf(sc.ss), mp.mpf(sc.st), [mp.mpf(x) for x in p], mp.mpf(sc.L), {"kind": "spot", "cos_inner": 1e-300, "cos_outer": 0.0},
+                         mp.mpf(sc.ss), mp.mpf(sc.st), [mp.mpf(x) for x in p], mp.mpf(sc.L), kinks,
                          [mp.mpf(x) for x in a], D, phase_fn(rec.get("phase") or {"kind": "isotropic"}))
     return abs(mine - float(theirs)) / abs(float(theirs))
 
@@ -450,6 +466,21 @@ def scenes():
         out.append(sphere("inside", 0.0, 10 ** rng.uniform(-2, -0.5), rng.uniform(0.3, 1.0), ray_len=rng.uniform(3, 20) if i else None, start_inside=True, phase=hg(0.8) if i else None))
         out.append(sphere("thick", rng.uniform(2, 5), rng.uniform(1, 4), rng.uniform(0.3, 1.0)))
         out.append(sphere("behind", rng.uniform(1.5, 4), 10 ** rng.uniform(-2, -0.5), rng.uniform(0.3, 1.0), t_foot=-rng.uniform(2, 10)))
+    # cosine lobes other than Lambert's (after the others, so that their scenes stay as they
+    # were): each shape, far and pierced
+    lobe = lambda p: {"kind": "cosine_lobe", "power": p}
+    R = rng.uniform(0.3, 1.0)
+    for light_of, emission in [
+        (lambda: placed("emission", "disc", rng.uniform(3, 8), 10 ** rng.uniform(-2, -0.5), phase=hg(0.6)), lobe(8)),
+        (lambda: placed("emission", "rectangle", rng.uniform(0.0, 0.2), 10 ** rng.uniform(-2, -0.5)), lobe(2)),
+        (lambda: sphere("emission", rng.uniform(3, 8), 10 ** rng.uniform(-2, -0.5), rng.uniform(0.3, 1.2), phase=hg(0.5)), lobe(4)),
+        (lambda: placed("emission", "disc", rng.uniform(0.0, 0.2), 10 ** rng.uniform(-2, -0.5)), lobe(16)),
+        (lambda: placed("emission", "rectangle", rng.uniform(2, 5), 10 ** rng.uniform(-2, -0.5), phase=hg(0.8)), lobe(32)),
+        (lambda: sphere("emission", R * rng.uniform(0.0, 0.8), 10 ** rng.uniform(-2, -0.5), R), lobe(2)),
+    ]:
+        r = light_of()
+        r["light"]["emission"] = emission
+        out.append(r)
     return out
 
 

@@ -1,6 +1,7 @@
 //! Disc and rectangle lights (docs/DESIGN.md §12) against nested quadrature
-//! (tests/reference/area.jsonl, tests/reference/gen_area.py), against their exact limits (an
-//! emitter shrinking to a point is the Lambertian point light; areas add), and their edges.
+//! (tests/reference/area.jsonl, tests/reference/gen_area.py; the Lambertian emission and cosine
+//! lobes), against their exact limits (an emitter shrinking to a point is the Lambertian, or
+//! two-lobed, point light; areas add), and their edges.
 
 use airlight::glam::DVec3;
 use airlight::light::Lambertian;
@@ -62,11 +63,33 @@ fn phase() -> AnyPhase<f64> {
 fn small_disc_is_the_lambertian_point_light() {
     let (center, normal, radiance) = (DVec3::new(6.0, 2.5, -1.0), DVec3::new(-0.3, -1.0, 0.2), 3.0);
     for r in [1e-2f64, 1e-3] {
-        let disc = AreaScene::new(ray(), AreaLight { emitter: Emitter::Disc { center, normal, radius: r }, radiance }, medium(), phase()).unwrap().in_scatter();
+        let disc = AreaScene::new(ray(), AreaLight::new(Emitter::Disc { center, normal, radius: r }, radiance), medium(), phase()).unwrap().in_scatter();
         let light = PointLight { position: center, intensity: radiance * std::f64::consts::PI * r * r, distribution: Lambertian { axis: normal } };
         let point = Scene::new(ray(), light, medium(), phase()).unwrap().in_scatter();
         // the distance to the ray is ~2.6: the relative difference is ~(r/2.6)²
         assert!((disc - point).abs() <= 0.2 * r * r * point, "radius {r}: disc {disc} vs point light {point}");
+    }
+}
+
+/// With a cosine lobe `cᵖ` (p even) a small disc is, to `O(r²/d²)`, the two-lobed point light
+/// `cᵖ` of intensity `L_e π r²` at its centre, on a ray segment wholly in front of it (where
+/// `max(0, c)ᵖ = cᵖ`: the plane is crossed at t ≈ 10.1, the segment ends at 8); power 1 is the
+/// Lambertian emitter, to the last bit.
+#[test]
+fn small_disc_with_a_cosine_lobe_is_the_two_lobed_point_light() {
+    use airlight::light::TwoLobed;
+    use airlight::Emission;
+    let (center, normal, radiance) = (DVec3::new(6.0, 2.5, -1.0), DVec3::new(-0.3, -1.0, 0.2), 3.0);
+    let front = Ray { t_max: 8.0, ..ray() };
+    for r in [1e-2f64, 1e-3] {
+        let emitter = Emitter::Disc { center, normal, radius: r };
+        let disc = AreaScene::new(front, AreaLight { emission: Emission::CosineLobe { power: 8 }, ..AreaLight::new(emitter, radiance) }, medium(), phase()).unwrap().in_scatter();
+        let light = PointLight { position: center, intensity: radiance * std::f64::consts::PI * r * r, distribution: TwoLobed { axis: normal, power: 8 } };
+        let point = Scene::new(front, light, medium(), phase()).unwrap().in_scatter();
+        assert!((disc - point).abs() <= 0.2 * r * r * point, "radius {r}: disc {disc} vs point light {point}");
+        let lambertian = AreaScene::new(ray(), AreaLight::new(emitter, radiance), medium(), phase()).unwrap().in_scatter();
+        let power_one = AreaScene::new(ray(), AreaLight { emission: Emission::CosineLobe { power: 1 }, ..AreaLight::new(emitter, radiance) }, medium(), phase()).unwrap().in_scatter();
+        assert_eq!(power_one, lambertian, "radius {r}");
     }
 }
 
@@ -80,7 +103,7 @@ fn small_disc_is_the_lambertian_point_light() {
 fn small_sphere_is_the_isotropic_point_light() {
     let (center, radiance) = (DVec3::new(6.0, 2.5, -1.0), 3.0);
     for r in [1e-2f64, 1e-3] {
-        let sphere = AreaScene::new(ray(), AreaLight { emitter: Emitter::Sphere { center, radius: r }, radiance }, medium(), phase()).unwrap().in_scatter();
+        let sphere = AreaScene::new(ray(), AreaLight::new(Emitter::Sphere { center, radius: r }, radiance), medium(), phase()).unwrap().in_scatter();
         let light = PointLight { position: center, intensity: radiance * std::f64::consts::PI * r * r, distribution: airlight::light::Omni };
         let point = Scene::new(ray(), light, medium(), phase()).unwrap().in_scatter();
         let first_order = point * (1.0 + 2.0 / 3.0 * medium().sigma_t * r);
@@ -97,7 +120,7 @@ fn small_sphere_is_the_isotropic_point_light() {
 #[test]
 fn sphere_interior_is_dark() {
     let (center, radius) = (DVec3::new(5.0, 0.6, 0.2), 1.5);
-    let light = AreaLight { emitter: Emitter::Sphere { center, radius }, radiance: 2.0 };
+    let light = AreaLight::new(Emitter::Sphere { center, radius }, 2.0);
     let dir = DVec3::new(1.0, 0.1, -0.05).normalize();
     let origin = center - dir * 0.4 + DVec3::new(0.0, 0.3, 0.1);
     // the exit: |origin + t dir − center| = radius
@@ -119,7 +142,7 @@ fn sphere_interior_is_dark() {
 fn rectangle_halves_add_up() {
     let (corner, eu, ev) = (DVec3::new(8.0, -1.0, -1.0), DVec3::new(0.3, 2.0, 0.1), DVec3::new(0.2, -0.1, 2.0));
     let scene = |corner, edge_u| {
-        AreaScene::new(ray(), AreaLight { emitter: Emitter::Rectangle { corner, edge_u, edge_v: ev }, radiance: 2.0 }, medium(), phase()).unwrap().in_scatter()
+        AreaScene::new(ray(), AreaLight::new(Emitter::Rectangle { corner, edge_u, edge_v: ev }, 2.0), medium(), phase()).unwrap().in_scatter()
     };
     let whole = scene(corner, eu);
     let halves = scene(corner, eu * 0.5) + scene(corner + eu * 0.5, eu * 0.5);
@@ -133,12 +156,12 @@ fn edges() {
     // the ray stays at y ≤ 4.5 (from y = −0.1 with slope 0.15 over 30 units); the disc at y = 6
     // faces +y
     let away = Emitter::Disc { center: DVec3::new(5.0, 6.0, 0.0), normal: DVec3::Y, radius: 1.0 };
-    assert_eq!(AreaScene::new(ray(), AreaLight { emitter: away, radiance: 1.0 }, medium(), phase()).unwrap().in_scatter(), 0.0);
+    assert_eq!(AreaScene::new(ray(), AreaLight::new(away, 1.0), medium(), phase()).unwrap().in_scatter(), 0.0);
     let facing = Emitter::Disc { center: DVec3::new(5.0, 6.0, 0.0), normal: DVec3::NEG_Y, radius: 1.0 };
-    assert!(AreaScene::new(ray(), AreaLight { emitter: facing, radiance: 1.0 }, medium(), phase()).unwrap().in_scatter() > 0.0);
-    assert_eq!(AreaScene::new(ray(), AreaLight { emitter: facing, radiance: 0.0 }, medium(), phase()).unwrap().in_scatter(), 0.0);
+    assert!(AreaScene::new(ray(), AreaLight::new(facing, 1.0), medium(), phase()).unwrap().in_scatter() > 0.0);
+    assert_eq!(AreaScene::new(ray(), AreaLight::new(facing, 0.0), medium(), phase()).unwrap().in_scatter(), 0.0);
     let clear = Medium { sigma_s: 0.0, sigma_t: 0.1 };
-    assert_eq!(AreaScene::new(ray(), AreaLight { emitter: facing, radiance: 1.0 }, clear, phase()).unwrap().in_scatter(), 0.0);
+    assert_eq!(AreaScene::new(ray(), AreaLight::new(facing, 1.0), clear, phase()).unwrap().in_scatter(), 0.0);
 }
 
 /// An area light's record errors name the field.
@@ -155,6 +178,11 @@ fn area_record_errors() {
         (r#"{"shape": "sphere", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1}"#, "light.normal"),
         (r#"{"shape": "sphere", "center": [1,1,0], "radius": 1, "radiance": -1}"#, "light.radiance"),
         (r#"{"shape": "cylinder", "center": [1,1,0], "radius": 1, "radiance": 1}"#, "light.shape"),
+        (r#"{"shape": "sphere", "center": [1,1,0], "radius": 1, "radiance": 1, "emission": {"kind": "cosine_lobe", "power": 0}}"#, "light.emission.power"),
+        (r#"{"shape": "disc", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1, "emission": {"kind": "cosine_lobe", "power": 2.5}}"#, "light.emission.power"),
+        (r#"{"shape": "disc", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1, "emission": {"kind": "cosine_lobe", "power": 1025}}"#, "light.emission.power"),
+        (r#"{"shape": "disc", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1, "emission": {"kind": "cone"}}"#, "light.emission"),
+        (r#"{"shape": "disc", "center": [1,1,0], "normal": [0,1,0], "radius": 1, "radiance": 1, "emission": {"kind": "lambertian", "power": 2}}"#, "light.emission.power"),
     ] {
         let (_, r) = parse_line_with_id::<f64>(&base.replace("LIGHT", light));
         let e = r.err().unwrap_or_else(|| panic!("{light} accepted"));
