@@ -183,6 +183,7 @@ const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 const uint AIRLIGHT_SURFACE_PANELS = 6u;
 const uint AIRLIGHT_PHONG_PANELS = 16u;
 const uint AIRLIGHT_OUTER_EDGES = 13u;
+const uint AIRLIGHT_LOBE_PAIRS = 5u;
 const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 
 
@@ -4915,20 +4916,8 @@ float airlight_acos(float x_16) {
 }
 
 float airlight_angle(float c_6, float s_22) {
-    if ((s_22 <= c_6)) {
-        float _e4 = airlight_atan((s_22 / c_6));
-        return _e4;
-    }
-    if ((s_22 <= -(c_6))) {
-        float _e10 = airlight_atan((s_22 / -(c_6)));
-        return (AIRLIGHT_PI - _e10);
-    }
-    if ((c_6 >= 0.0)) {
-        float _e16 = airlight_atan((c_6 / s_22));
-        return (1.5707964 - _e16);
-    }
-    float _e21 = airlight_atan((-(c_6) / s_22));
-    return (1.5707964 + _e21);
+    float _e2 = airlight_atan2_upper(s_22, c_6);
+    return _e2;
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
@@ -5019,142 +5008,141 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
         g_22.alpha_r = _e121;
         float _e123 = g_22.sin_r;
         if ((_e123 > 0.0)) {
-            float _e126 = airlight_angle(x_27, y_10);
-            float _e128 = airlight_angle(x_27, -(y_10));
-            float phi_r = ((y_10 < 0.0) ? -(_e128) : _e126);
-            float _e136 = g_22.sin_r;
-            float _e140 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+            float _e132 = airlight_angle(x_27, abs(y_10));
+            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e132);
+            float _e137 = g_22.sin_r;
+            float _e141 = g_22.sin_r;
+            g_22.delta = vec3(-(phi_r), (x_27 / _e137), (-(y_10) / _e141));
         }
-        float _e145 = g_22.alpha_r;
-        float first_r = abs((1.5707964 - _e145));
+        float _e146 = g_22.alpha_r;
+        float first_r = abs((1.5707964 - _e146));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        float _e154 = g_22.alpha_r;
-        cuts_1[4] = _e154;
+        float _e155 = g_22.alpha_r;
+        cuts_1[4] = _e155;
         if ((s_24.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_24.brdf_exponent));
-            float _e164 = g_22.alpha_r;
-            cuts_1[5] = (_e164 - (1.5 * width_3));
-            float _e170 = g_22.alpha_r;
-            cuts_1[6] = (_e170 + (1.5 * width_3));
-            float _e176 = g_22.alpha_r;
-            cuts_1[7] = (_e176 - (4.0 * width_3));
-            float _e182 = g_22.alpha_r;
-            cuts_1[8] = (_e182 + (4.0 * width_3));
+            float _e165 = g_22.alpha_r;
+            cuts_1[5] = (_e165 - (1.5 * width_3));
+            float _e171 = g_22.alpha_r;
+            cuts_1[6] = (_e171 + (1.5 * width_3));
+            float _e177 = g_22.alpha_r;
+            cuts_1[7] = (_e177 - (4.0 * width_3));
+            float _e183 = g_22.alpha_r;
+            cuts_1[8] = (_e183 + (4.0 * width_3));
         }
         vec3 meet = cross(_e37, _e103);
-        float _e187 = airlight_safe_length(meet);
-        if ((_e187 > AIRLIGHT_FLT_EPS)) {
-            float _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1.0, 1.0));
-            cuts_1[9] = _e195;
-            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        float _e188 = airlight_safe_length(meet);
+        if ((_e188 > AIRLIGHT_FLT_EPS)) {
+            float _e196 = airlight_acos(clamp((dot(meet, l_3) / _e188), -1.0, 1.0));
+            cuts_1[9] = _e196;
+            cuts_1[10] = (AIRLIGHT_PI - _e196);
         }
     }
     bool loop_init_21 = true;
     while(true) {
         if (!loop_init_21) {
-            uint _e236 = i_17;
-            i_17 = (_e236 + 1u);
+            uint _e237 = i_17;
+            i_17 = (_e237 + 1u);
         }
         loop_init_21 = false;
-        uint _e202 = i_17;
-        if ((_e202 < 11u)) {
+        uint _e203 = i_17;
+        if ((_e203 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e205 = i_17;
-            float c_10 = cuts_1[_e205];
-            uint _e208 = i_17;
-            j_3 = _e208;
+            uint _e206 = i_17;
+            float c_10 = cuts_1[_e206];
+            uint _e209 = i_17;
+            j_3 = _e209;
             while(true) {
-                uint _e210 = j_3;
-                if ((_e210 > 0u)) {
-                    uint _e215 = j_3;
-                    float _e219 = cuts_1[(_e215 - 1u)];
-                    local_109 = (_e219 > c_10);
+                uint _e211 = j_3;
+                if ((_e211 > 0u)) {
+                    uint _e216 = j_3;
+                    float _e220 = cuts_1[(_e216 - 1u)];
+                    local_109 = (_e220 > c_10);
                 } else {
                     local_109 = false;
                 }
-                bool _e222 = local_109;
-                if (_e222) {
+                bool _e223 = local_109;
+                if (_e223) {
                 } else {
                     break;
                 }
                 {
-                    uint _e223 = j_3;
-                    uint _e225 = j_3;
-                    float _e229 = cuts_1[(_e225 - 1u)];
-                    cuts_1[_e223] = _e229;
-                    uint _e230 = j_3;
-                    j_3 = (_e230 - 1u);
+                    uint _e224 = j_3;
+                    uint _e226 = j_3;
+                    float _e230 = cuts_1[(_e226 - 1u)];
+                    cuts_1[_e224] = _e230;
+                    uint _e231 = j_3;
+                    j_3 = (_e231 - 1u);
                 }
             }
-            uint _e233 = j_3;
-            cuts_1[_e233] = c_10;
+            uint _e234 = j_3;
+            cuts_1[_e234] = c_10;
         }
     }
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e272 = i_18;
-            i_18 = (_e272 + 1u);
+            uint _e273 = i_18;
+            i_18 = (_e273 + 1u);
         }
         loop_init_22 = false;
-        uint _e242 = i_18;
-        if ((_e242 < 11u)) {
+        uint _e243 = i_18;
+        if ((_e243 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e245 = i_18;
-            float _e247 = cuts_1[_e245];
-            uint _e249 = k_4;
-            float _e251 = g_22.gamma[_e249];
-            if ((_e247 > _e251)) {
-                uint _e255 = i_18;
-                float _e257 = cuts_1[_e255];
-                local_110 = (_e257 < AIRLIGHT_PI);
+            uint _e246 = i_18;
+            float _e248 = cuts_1[_e246];
+            uint _e250 = k_4;
+            float _e252 = g_22.gamma[_e250];
+            if ((_e248 > _e252)) {
+                uint _e256 = i_18;
+                float _e258 = cuts_1[_e256];
+                local_110 = (_e258 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            bool _e261 = local_110;
-            if (_e261) {
-                uint _e262 = k_4;
-                k_4 = (_e262 + 1u);
-                uint _e266 = k_4;
-                uint _e268 = i_18;
-                float _e270 = cuts_1[_e268];
-                g_22.gamma[_e266] = _e270;
+            bool _e262 = local_110;
+            if (_e262) {
+                uint _e263 = k_4;
+                k_4 = (_e263 + 1u);
+                uint _e267 = k_4;
+                uint _e269 = i_18;
+                float _e271 = cuts_1[_e269];
+                g_22.gamma[_e267] = _e271;
             }
         }
     }
-    uint _e275 = k_4;
-    g_22.gamma[(_e275 + 1u)] = AIRLIGHT_PI;
-    uint _e281 = k_4;
-    g_22.panels = (_e281 + 1u);
+    uint _e276 = k_4;
+    g_22.gamma[(_e276 + 1u)] = AIRLIGHT_PI;
+    uint _e282 = k_4;
+    g_22.panels = (_e282 + 1u);
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e296 = i_19;
-            i_19 = (_e296 + 1u);
+            uint _e297 = i_19;
+            i_19 = (_e297 + 1u);
         }
         loop_init_23 = false;
-        uint _e286 = i_19;
-        uint _e288 = g_22.panels;
-        if ((_e286 <= _e288)) {
+        uint _e287 = i_19;
+        uint _e289 = g_22.panels;
+        if ((_e287 <= _e289)) {
         } else {
             break;
         }
         {
-            uint _e291 = i_19;
-            uint _e293 = i_19;
-            g_22.edges[_e291] = float(_e293);
+            uint _e292 = i_19;
+            uint _e294 = i_19;
+            g_22.edges[_e292] = float(_e294);
         }
     }
-    AirlightOuter _e298 = g_22;
-    return _e298;
+    AirlightOuter _e299 = g_22;
+    return _e299;
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_17) {
@@ -5213,9 +5201,14 @@ float airlight_arc_end(float x_18, float cut) {
     return (_e24 ? _e15 : 0.0);
 }
 
+vec2[5] airlight_lobe_rule() {
+    return vec2[5](vec2(0.42556283, 0.14776212), vec2(0.2833023, 0.13463336), vec2(0.16029522, 0.10954318), vec2(0.067468315, 0.07472567), vec2(0.013046736, 0.03333567));
+}
+
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
     bool local_113 = false;
     float sum_5 = 0.0;
+    uint k_5 = 0u;
     float w_7 = (hi_3 - lo_4);
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
@@ -5227,28 +5220,30 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
     if (_e19) {
         return 0.0;
     }
-    float _e23 = sum_5;
-    float _e25 = airlight_lobe_node(q_3, lo_4, w_7, 0.42556283, smoothstep_1);
-    float _e27 = airlight_lobe_node(q_3, lo_4, w_7, 0.57443714, smoothstep_1);
-    sum_5 = (_e23 + (0.14776212 * (_e25 + _e27)));
-    float _e32 = sum_5;
-    float _e34 = airlight_lobe_node(q_3, lo_4, w_7, 0.2833023, smoothstep_1);
-    float _e36 = airlight_lobe_node(q_3, lo_4, w_7, 0.7166977, smoothstep_1);
-    sum_5 = (_e32 + (0.13463336 * (_e34 + _e36)));
-    float _e41 = sum_5;
-    float _e43 = airlight_lobe_node(q_3, lo_4, w_7, 0.16029522, smoothstep_1);
-    float _e45 = airlight_lobe_node(q_3, lo_4, w_7, 0.8397048, smoothstep_1);
-    sum_5 = (_e41 + (0.10954318 * (_e43 + _e45)));
-    float _e50 = sum_5;
-    float _e52 = airlight_lobe_node(q_3, lo_4, w_7, 0.067468315, smoothstep_1);
-    float _e54 = airlight_lobe_node(q_3, lo_4, w_7, 0.93253165, smoothstep_1);
-    sum_5 = (_e50 + (0.07472567 * (_e52 + _e54)));
-    float _e59 = sum_5;
-    float _e61 = airlight_lobe_node(q_3, lo_4, w_7, 0.013046736, smoothstep_1);
-    float _e63 = airlight_lobe_node(q_3, lo_4, w_7, 0.98695326, smoothstep_1);
-    sum_5 = (_e59 + (0.03333567 * (_e61 + _e63)));
-    float _e68 = sum_5;
-    return _e68;
+    vec2 _e21[5] = airlight_lobe_rule();
+    bool loop_init_24 = true;
+    while(true) {
+        if (!loop_init_24) {
+            uint _e43 = k_5;
+            k_5 = (_e43 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e26 = k_5;
+        if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e29 = k_5;
+            vec2 node = _e21[_e29];
+            float _e31 = sum_5;
+            float _e34 = airlight_lobe_node(q_3, lo_4, w_7, node.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_4, w_7, (1.0 - node.x), smoothstep_1);
+            sum_5 = (_e31 + (node.y * (_e34 + _e38)));
+        }
+    }
+    float _e45 = sum_5;
+    return _e45;
 }
 
 float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, float exponent_1) {
@@ -5304,13 +5299,13 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float _e105 = inner.z;
     float edges[5] = float[5](-(cut_2), _e101, _e103, _e105, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
+        if (!loop_init_25) {
             uint _e126 = i_20;
             i_20 = (_e126 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e113 = i_20;
         if ((_e113 < 4u)) {
         } else {
@@ -5500,13 +5495,13 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     g_24.scale = _e172;
     float _e178 = s_star;
     at = float[3](_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
+        if (!loop_init_26) {
             uint _e229 = i_21;
             i_21 = (_e229 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e189 = i_21;
         if ((_e189 < 3u)) {
         } else {
@@ -5582,13 +5577,13 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter _e268 = g_24;
     float _e270 = airlight_to_w(_e268, 0.0);
     g_24.edges[0] = _e270;
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e304 = i_22;
             i_22 = (_e304 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e275 = i_22;
         if ((_e275 < 3u)) {
         } else {
@@ -5790,7 +5785,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_5 = 0.0;
+    float k_6 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
     bool local_137 = false;
@@ -5816,13 +5811,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e251 = step_2;
             step_2 = (_e251 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e78 = step_2;
         if ((_e78 < evaluations)) {
         } else {
@@ -5835,16 +5830,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
             float _e85 = b_12;
             float _e86 = a_16;
             float hw_3 = (0.5 * (_e85 - _e86));
-            k_5 = 0.0;
+            k_6 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            bool loop_init_28 = true;
+            bool loop_init_29 = true;
             while(true) {
-                if (!loop_init_28) {
+                if (!loop_init_29) {
                     uint _e157 = j_4;
                     j_4 = (_e157 + 1u);
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e96 = j_4;
                 if ((_e96 < 7u)) {
                 } else {
@@ -5852,7 +5847,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                 }
                 {
                     uint _e99 = j_4;
-                    vec3 node = _e19[(_e99 / 2u)];
+                    vec3 node_1 = _e19[(_e99 / 2u)];
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
@@ -5861,7 +5856,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                         local_137 = false;
                     }
                     bool _e120 = local_137;
-                    float w_8 = (_e120 ? (c_15 - (hw_3 * node.x)) : (c_15 + (hw_3 * node.x)));
+                    float w_8 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
                     AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_8);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
@@ -5880,19 +5875,19 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                         }
                         f = (_e129.in_scatter * _e122.weight);
                     }
-                    float _e146 = k_5;
+                    float _e146 = k_6;
                     float _e148 = f;
-                    k_5 = (_e146 + (node.y * _e148));
+                    k_6 = (_e146 + (node_1.y * _e148));
                     float _e151 = gauss;
                     float _e153 = f;
-                    gauss = (_e151 + (node.z * _e153));
+                    gauss = (_e151 + (node_1.z * _e153));
                 }
             }
             uint _e159 = slot_1;
             float _e160 = a_16;
             float _e161 = b_12;
-            float _e162 = k_5;
-            float _e164 = k_5;
+            float _e162 = k_6;
+            float _e164 = k_6;
             float _e166 = gauss;
             airlight_list_set(list_1, _e159, vec4(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
             uint _e171 = slot_1;
@@ -5922,13 +5917,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                 } else {
                     split = false;
                     tries = 0u;
-                    bool loop_init_29 = true;
+                    bool loop_init_30 = true;
                     while(true) {
-                        if (!loop_init_29) {
+                        if (!loop_init_30) {
                             uint _e246 = tries;
                             tries = (_e246 + 1u);
                         }
-                        loop_init_29 = false;
+                        loop_init_30 = false;
                         uint _e198 = tries;
                         if ((_e198 < _e6.max_panels)) {
                         } else {

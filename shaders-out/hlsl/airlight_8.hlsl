@@ -177,6 +177,7 @@ static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 static const uint AIRLIGHT_SURFACE_PANELS = 6u;
 static const uint AIRLIGHT_PHONG_PANELS = 16u;
 static const uint AIRLIGHT_OUTER_EDGES = 13u;
+static const uint AIRLIGHT_LOBE_PAIRS = 5u;
 static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 
 ByteAddressBuffer airlight_records : register(t0);
@@ -4715,20 +4716,8 @@ float airlight_acos(float x_16)
 
 float airlight_angle(float c_6, float s_20)
 {
-    if ((s_20 <= c_6)) {
-        const float _e4 = airlight_atan((s_20 / c_6));
-        return _e4;
-    }
-    if ((s_20 <= -(c_6))) {
-        const float _e10 = airlight_atan((s_20 / -(c_6)));
-        return (AIRLIGHT_PI - _e10);
-    }
-    if ((c_6 >= 0.0)) {
-        const float _e16 = airlight_atan((c_6 / s_20));
-        return (1.5707964 - _e16);
-    }
-    const float _e21 = airlight_atan((-(c_6) / s_20));
-    return (1.5707964 + _e21);
+    const float _e2 = airlight_atan2_upper(s_20, c_6);
+    return _e2;
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
@@ -4855,36 +4844,35 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         g_20.alpha_r = _e121;
         float _e123 = g_20.sin_r;
         if ((_e123 > 0.0)) {
-            const float _e126 = airlight_angle(x_27, y_10);
-            const float _e128 = airlight_angle(x_27, -(y_10));
-            float phi_r = ((y_10 < 0.0) ? -(_e128) : _e126);
-            float _e136 = g_20.sin_r;
-            float _e140 = g_20.sin_r;
-            g_20.delta = float3(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+            const float _e132 = airlight_angle(x_27, abs(y_10));
+            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e132);
+            float _e137 = g_20.sin_r;
+            float _e141 = g_20.sin_r;
+            g_20.delta = float3(-(phi_r), (x_27 / _e137), (-(y_10) / _e141));
         }
-        float _e145 = g_20.alpha_r;
-        float first_r = abs((1.5707964 - _e145));
+        float _e146 = g_20.alpha_r;
+        float first_r = abs((1.5707964 - _e146));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        float _e154 = g_20.alpha_r;
-        cuts_1[4] = _e154;
+        float _e155 = g_20.alpha_r;
+        cuts_1[4] = _e155;
         if ((s_22.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
-            float _e164 = g_20.alpha_r;
-            cuts_1[5] = (_e164 - (1.5 * width_3));
-            float _e170 = g_20.alpha_r;
-            cuts_1[6] = (_e170 + (1.5 * width_3));
-            float _e176 = g_20.alpha_r;
-            cuts_1[7] = (_e176 - (4.0 * width_3));
-            float _e182 = g_20.alpha_r;
-            cuts_1[8] = (_e182 + (4.0 * width_3));
+            float _e165 = g_20.alpha_r;
+            cuts_1[5] = (_e165 - (1.5 * width_3));
+            float _e171 = g_20.alpha_r;
+            cuts_1[6] = (_e171 + (1.5 * width_3));
+            float _e177 = g_20.alpha_r;
+            cuts_1[7] = (_e177 - (4.0 * width_3));
+            float _e183 = g_20.alpha_r;
+            cuts_1[8] = (_e183 + (4.0 * width_3));
         }
         float3 meet = cross(_e37, _e103);
-        const float _e187 = airlight_safe_length(meet);
-        if ((_e187 > AIRLIGHT_FLT_EPS)) {
-            const float _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1.0, 1.0));
-            cuts_1[9] = _e195;
-            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        const float _e188 = airlight_safe_length(meet);
+        if ((_e188 > AIRLIGHT_FLT_EPS)) {
+            const float _e196 = airlight_acos(clamp((dot(meet, l_3) / _e188), -1.0, 1.0));
+            cuts_1[9] = _e196;
+            cuts_1[10] = (AIRLIGHT_PI - _e196);
         }
     }
     uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
@@ -4893,48 +4881,48 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_21) {
-            uint _e236 = i_17;
-            i_17 = (_e236 + 1u);
+            uint _e237 = i_17;
+            i_17 = (_e237 + 1u);
         }
         loop_init_21 = false;
-        uint _e202 = i_17;
-        if ((_e202 < 11u)) {
+        uint _e203 = i_17;
+        if ((_e203 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e205 = i_17;
-            float c_10 = cuts_1[min(uint(_e205), 10u)];
-            uint _e208 = i_17;
-            j_3 = _e208;
+            uint _e206 = i_17;
+            float c_10 = cuts_1[min(uint(_e206), 10u)];
+            uint _e209 = i_17;
+            j_3 = _e209;
             uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
             while(true) {
                 if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
                 loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                uint _e210 = j_3;
-                if ((_e210 > 0u)) {
-                    uint _e215 = j_3;
-                    float _e219 = cuts_1[min(uint((_e215 - 1u)), 10u)];
-                    local_109 = (_e219 > c_10);
+                uint _e211 = j_3;
+                if ((_e211 > 0u)) {
+                    uint _e216 = j_3;
+                    float _e220 = cuts_1[min(uint((_e216 - 1u)), 10u)];
+                    local_109 = (_e220 > c_10);
                 } else {
                     local_109 = false;
                 }
-                bool _e222 = local_109;
-                if (_e222) {
+                bool _e223 = local_109;
+                if (_e223) {
                 } else {
                     break;
                 }
                 {
-                    uint _e223 = j_3;
-                    uint _e225 = j_3;
-                    float _e229 = cuts_1[min(uint((_e225 - 1u)), 10u)];
-                    cuts_1[min(uint(_e223), 10u)] = _e229;
-                    uint _e230 = j_3;
-                    j_3 = (_e230 - 1u);
+                    uint _e224 = j_3;
+                    uint _e226 = j_3;
+                    float _e230 = cuts_1[min(uint((_e226 - 1u)), 10u)];
+                    cuts_1[min(uint(_e224), 10u)] = _e230;
+                    uint _e231 = j_3;
+                    j_3 = (_e231 - 1u);
                 }
             }
-            uint _e233 = j_3;
-            cuts_1[min(uint(_e233), 10u)] = c_10;
+            uint _e234 = j_3;
+            cuts_1[min(uint(_e234), 10u)] = c_10;
         }
     }
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
@@ -4943,66 +4931,66 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e272 = i_18;
-            i_18 = (_e272 + 1u);
+            uint _e273 = i_18;
+            i_18 = (_e273 + 1u);
         }
         loop_init_22 = false;
-        uint _e242 = i_18;
-        if ((_e242 < 11u)) {
+        uint _e243 = i_18;
+        if ((_e243 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e245 = i_18;
-            float _e247 = cuts_1[min(uint(_e245), 10u)];
-            uint _e249 = k_3;
-            float _e251 = g_20.gamma[min(uint(_e249), 12u)];
-            if ((_e247 > _e251)) {
-                uint _e255 = i_18;
-                float _e257 = cuts_1[min(uint(_e255), 10u)];
-                local_110 = (_e257 < AIRLIGHT_PI);
+            uint _e246 = i_18;
+            float _e248 = cuts_1[min(uint(_e246), 10u)];
+            uint _e250 = k_3;
+            float _e252 = g_20.gamma[min(uint(_e250), 12u)];
+            if ((_e248 > _e252)) {
+                uint _e256 = i_18;
+                float _e258 = cuts_1[min(uint(_e256), 10u)];
+                local_110 = (_e258 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            bool _e261 = local_110;
-            if (_e261) {
-                uint _e262 = k_3;
-                k_3 = (_e262 + 1u);
-                uint _e266 = k_3;
-                uint _e268 = i_18;
-                float _e270 = cuts_1[min(uint(_e268), 10u)];
-                g_20.gamma[min(uint(_e266), 12u)] = _e270;
+            bool _e262 = local_110;
+            if (_e262) {
+                uint _e263 = k_3;
+                k_3 = (_e263 + 1u);
+                uint _e267 = k_3;
+                uint _e269 = i_18;
+                float _e271 = cuts_1[min(uint(_e269), 10u)];
+                g_20.gamma[min(uint(_e267), 12u)] = _e271;
             }
         }
     }
-    uint _e275 = k_3;
-    g_20.gamma[min(uint((_e275 + 1u)), 12u)] = AIRLIGHT_PI;
-    uint _e281 = k_3;
-    g_20.panels = (_e281 + 1u);
+    uint _e276 = k_3;
+    g_20.gamma[min(uint((_e276 + 1u)), 12u)] = AIRLIGHT_PI;
+    uint _e282 = k_3;
+    g_20.panels = (_e282 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     bool loop_init_23 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e296 = i_19;
-            i_19 = (_e296 + 1u);
+            uint _e297 = i_19;
+            i_19 = (_e297 + 1u);
         }
         loop_init_23 = false;
-        uint _e286 = i_19;
-        uint _e288 = g_20.panels;
-        if ((_e286 <= _e288)) {
+        uint _e287 = i_19;
+        uint _e289 = g_20.panels;
+        if ((_e287 <= _e289)) {
         } else {
             break;
         }
         {
-            uint _e291 = i_19;
-            uint _e293 = i_19;
-            g_20.edges[min(uint(_e291), 12u)] = float(_e293);
+            uint _e292 = i_19;
+            uint _e294 = i_19;
+            g_20.edges[min(uint(_e292), 12u)] = float(_e294);
         }
     }
-    AirlightOuter _e298 = g_20;
-    const AirlightOuter airlightouter_4 = _e298;
+    AirlightOuter _e299 = g_20;
+    const AirlightOuter airlightouter_4 = _e299;
     return airlightouter_4;
 }
 
@@ -5067,10 +5055,23 @@ float airlight_arc_end(float x_18, float cut)
     return (_e24 ? _e15 : 0.0);
 }
 
+typedef float2 airlight_ret_Constructarray5_float2_[5];
+airlight_ret_Constructarray5_float2_ airlight_Constructarray5_float2_(float2 arg0, float2 arg1, float2 arg2, float2 arg3, float2 arg4) {
+    float2 ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
+typedef float2 airlight_ret_airlight_lobe_rule[5];
+airlight_ret_airlight_lobe_rule airlight_lobe_rule()
+{
+    return airlight_Constructarray5_float2_(float2(0.42556283, 0.14776212), float2(0.2833023, 0.13463336), float2(0.16029522, 0.10954318), float2(0.067468315, 0.07472567), float2(0.013046736, 0.03333567));
+}
+
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
 {
     bool local_113 = (bool)0;
     float sum_5 = 0.0;
+    uint k_4 = 0u;
 
     float w_6 = (hi_3 - lo_4);
     if (!(!((w_6 > 0.0)))) {
@@ -5083,28 +5084,33 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
     if (_e19) {
         return 0.0;
     }
-    float _e23 = sum_5;
-    const float _e25 = airlight_lobe_node(q_3, lo_4, w_6, 0.42556283, smoothstep_1);
-    const float _e27 = airlight_lobe_node(q_3, lo_4, w_6, 0.57443714, smoothstep_1);
-    sum_5 = (_e23 + (0.14776212 * (_e25 + _e27)));
-    float _e32 = sum_5;
-    const float _e34 = airlight_lobe_node(q_3, lo_4, w_6, 0.2833023, smoothstep_1);
-    const float _e36 = airlight_lobe_node(q_3, lo_4, w_6, 0.7166977, smoothstep_1);
-    sum_5 = (_e32 + (0.13463336 * (_e34 + _e36)));
-    float _e41 = sum_5;
-    const float _e43 = airlight_lobe_node(q_3, lo_4, w_6, 0.16029522, smoothstep_1);
-    const float _e45 = airlight_lobe_node(q_3, lo_4, w_6, 0.8397048, smoothstep_1);
-    sum_5 = (_e41 + (0.10954318 * (_e43 + _e45)));
-    float _e50 = sum_5;
-    const float _e52 = airlight_lobe_node(q_3, lo_4, w_6, 0.067468315, smoothstep_1);
-    const float _e54 = airlight_lobe_node(q_3, lo_4, w_6, 0.93253165, smoothstep_1);
-    sum_5 = (_e50 + (0.07472567 * (_e52 + _e54)));
-    float _e59 = sum_5;
-    const float _e61 = airlight_lobe_node(q_3, lo_4, w_6, 0.013046736, smoothstep_1);
-    const float _e63 = airlight_lobe_node(q_3, lo_4, w_6, 0.98695326, smoothstep_1);
-    sum_5 = (_e59 + (0.03333567 * (_e61 + _e63)));
-    float _e68 = sum_5;
-    return _e68;
+    const float2 _e21[5] = airlight_lobe_rule();
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e43 = k_4;
+            k_4 = (_e43 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e26 = k_4;
+        if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
+        } else {
+            break;
+        }
+        {
+            uint _e29 = k_4;
+            float2 node = _e21[min(uint(_e29), 4u)];
+            float _e31 = sum_5;
+            const float _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
+            const float _e38 = airlight_lobe_node(q_3, lo_4, w_6, (1.0 - node.x), smoothstep_1);
+            sum_5 = (_e31 + (node.y * (_e34 + _e38)));
+        }
+    }
+    float _e45 = sum_5;
+    return _e45;
 }
 
 AirlightLobe ConstructAirlightLobe(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6) {
@@ -5180,16 +5186,16 @@ float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n
     float _e105 = inner.z;
     float edges[5] = airlight_Constructarray5_float_(-(cut_2), _e101, _e103, _e105, cut_2);
     bool smoothstep_2 = (exponent < 1.0);
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e126 = i_20;
             i_20 = (_e126 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e113 = i_20;
         if ((_e113 < 4u)) {
         } else {
@@ -5391,16 +5397,16 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     g_22.scale = _e172;
     float _e178 = s_star;
     at = airlight_Constructarray3_float_(_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_26) {
             uint _e229 = i_21;
             i_21 = (_e229 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e189 = i_21;
         if ((_e189 < 3u)) {
         } else {
@@ -5476,16 +5482,16 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     AirlightOuter _e268 = g_22;
     const float _e270 = airlight_to_w(_e268, 0.0);
     g_22.edges[0] = _e270;
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e304 = i_22;
             i_22 = (_e304 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e275 = i_22;
         if ((_e275 < 3u)) {
         } else {
@@ -5671,7 +5677,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_4 = (float)0;
+    float k_5 = (float)0;
     float gauss = (float)0;
     uint j_4 = (uint)0;
     bool local_133 = (bool)0;
@@ -5701,16 +5707,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     a_16 = _e6.edges[0];
     b_12 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e251 = step_2;
             step_2 = (_e251 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e78 = step_2;
         if ((_e78 < evaluations)) {
         } else {
@@ -5723,19 +5729,19 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
             float _e85 = b_12;
             float _e86 = a_16;
             float hw_3 = (0.5 * (_e85 - _e86));
-            k_4 = 0.0;
+            k_5 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
+            uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+            bool loop_init_29 = true;
             while(true) {
-                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_28) {
+                if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+                loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+                if (!loop_init_29) {
                     uint _e157 = j_4;
                     j_4 = (_e157 + 1u);
                 }
-                loop_init_28 = false;
+                loop_init_29 = false;
                 uint _e96 = j_4;
                 if ((_e96 < 7u)) {
                 } else {
@@ -5743,7 +5749,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                 }
                 {
                     uint _e99 = j_4;
-                    float3 node = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
+                    float3 node_1 = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
@@ -5752,7 +5758,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                         local_133 = false;
                     }
                     bool _e120 = local_133;
-                    float w_7 = (_e120 ? (c_15 - (hw_3 * node.x)) : (c_15 + (hw_3 * node.x)));
+                    float w_7 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
                     const AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
@@ -5773,19 +5779,19 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                         }
                         f = (_e129.in_scatter * _e122.weight);
                     }
-                    float _e146 = k_4;
+                    float _e146 = k_5;
                     float _e148 = f;
-                    k_4 = (_e146 + (node.y * _e148));
+                    k_5 = (_e146 + (node_1.y * _e148));
                     float _e151 = gauss;
                     float _e153 = f;
-                    gauss = (_e151 + (node.z * _e153));
+                    gauss = (_e151 + (node_1.z * _e153));
                 }
             }
             uint _e159 = slot_1;
             float _e160 = a_16;
             float _e161 = b_12;
-            float _e162 = k_4;
-            float _e164 = k_4;
+            float _e162 = k_5;
+            float _e164 = k_5;
             float _e166 = gauss;
             airlight_list_set(list_1, _e159, float4(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
             uint _e171 = slot_1;
@@ -5815,16 +5821,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_29 = true;
+                    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_30 = true;
                     while(true) {
-                        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-                        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-                        if (!loop_init_29) {
+                        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+                        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+                        if (!loop_init_30) {
                             uint _e246 = tries;
                             tries = (_e246 + 1u);
                         }
-                        loop_init_29 = false;
+                        loop_init_30 = false;
                         uint _e198 = tries;
                         if ((_e198 < _e6.max_panels)) {
                         } else {

@@ -164,6 +164,7 @@ const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
 const AIRLIGHT_SURFACE_PANELS: u32 = 6u;
 const AIRLIGHT_PHONG_PANELS: u32 = 16u;
 const AIRLIGHT_OUTER_EDGES: u32 = 13u;
+const AIRLIGHT_LOBE_PAIRS: u32 = 5u;
 const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 
 @group(0) @binding(0) 
@@ -4346,20 +4347,8 @@ fn airlight_acos(x_16: f32) -> f32 {
 }
 
 fn airlight_angle(c_6: f32, s_20: f32) -> f32 {
-    if (s_20 <= c_6) {
-        let _e4 = airlight_atan((s_20 / c_6));
-        return _e4;
-    }
-    if (s_20 <= -(c_6)) {
-        let _e10 = airlight_atan((s_20 / -(c_6)));
-        return (AIRLIGHT_PI - _e10);
-    }
-    if (c_6 >= 0f) {
-        let _e16 = airlight_atan((c_6 / s_20));
-        return (1.5707964f - _e16);
-    }
-    let _e21 = airlight_atan((-(c_6) / s_20));
-    return (1.5707964f + _e21);
+    let _e2 = airlight_atan2_upper(s_20, c_6);
+    return _e2;
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
@@ -4451,136 +4440,135 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         g_20.alpha_r = _e121;
         let _e123 = g_20.sin_r;
         if (_e123 > 0f) {
-            let _e126 = airlight_angle(x_27, y_10);
-            let _e128 = airlight_angle(x_27, -(y_10));
-            let phi_r = select(_e126, -(_e128), (y_10 < 0f));
-            let _e136 = g_20.sin_r;
-            let _e140 = g_20.sin_r;
-            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e136), (-(y_10) / _e140));
+            let _e132 = airlight_angle(x_27, abs(y_10));
+            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e132);
+            let _e137 = g_20.sin_r;
+            let _e141 = g_20.sin_r;
+            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e137), (-(y_10) / _e141));
         }
-        let _e145 = g_20.alpha_r;
-        let first_r = abs((1.5707964f - _e145));
+        let _e146 = g_20.alpha_r;
+        let first_r = abs((1.5707964f - _e146));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        let _e154 = g_20.alpha_r;
-        cuts_1[4] = _e154;
+        let _e155 = g_20.alpha_r;
+        cuts_1[4] = _e155;
         if (s_22.brdf_exponent > 1f) {
             let width_3 = (1f / sqrt(s_22.brdf_exponent));
-            let _e164 = g_20.alpha_r;
-            cuts_1[5] = (_e164 - (1.5f * width_3));
-            let _e170 = g_20.alpha_r;
-            cuts_1[6] = (_e170 + (1.5f * width_3));
-            let _e176 = g_20.alpha_r;
-            cuts_1[7] = (_e176 - (4f * width_3));
-            let _e182 = g_20.alpha_r;
-            cuts_1[8] = (_e182 + (4f * width_3));
+            let _e165 = g_20.alpha_r;
+            cuts_1[5] = (_e165 - (1.5f * width_3));
+            let _e171 = g_20.alpha_r;
+            cuts_1[6] = (_e171 + (1.5f * width_3));
+            let _e177 = g_20.alpha_r;
+            cuts_1[7] = (_e177 - (4f * width_3));
+            let _e183 = g_20.alpha_r;
+            cuts_1[8] = (_e183 + (4f * width_3));
         }
         let meet = cross(_e37, _e103);
-        let _e187 = airlight_safe_length(meet);
-        if (_e187 > AIRLIGHT_FLT_EPS) {
-            let _e195 = airlight_acos(clamp((dot(meet, l_3) / _e187), -1f, 1f));
-            cuts_1[9] = _e195;
-            cuts_1[10] = (AIRLIGHT_PI - _e195);
+        let _e188 = airlight_safe_length(meet);
+        if (_e188 > AIRLIGHT_FLT_EPS) {
+            let _e196 = airlight_acos(clamp((dot(meet, l_3) / _e188), -1f, 1f));
+            cuts_1[9] = _e196;
+            cuts_1[10] = (AIRLIGHT_PI - _e196);
         }
     }
     loop {
-        let _e202 = i_17;
-        if (_e202 < 11u) {
+        let _e203 = i_17;
+        if (_e203 < 11u) {
         } else {
             break;
         }
         {
-            let _e205 = i_17;
-            let c_10 = cuts_1[_e205];
-            let _e208 = i_17;
-            j_3 = _e208;
+            let _e206 = i_17;
+            let c_10 = cuts_1[_e206];
+            let _e209 = i_17;
+            j_3 = _e209;
             loop {
-                let _e210 = j_3;
-                if (_e210 > 0u) {
-                    let _e215 = j_3;
-                    let _e219 = cuts_1[(_e215 - 1u)];
-                    local_109 = (_e219 > c_10);
+                let _e211 = j_3;
+                if (_e211 > 0u) {
+                    let _e216 = j_3;
+                    let _e220 = cuts_1[(_e216 - 1u)];
+                    local_109 = (_e220 > c_10);
                 } else {
                     local_109 = false;
                 }
-                let _e222 = local_109;
-                if _e222 {
+                let _e223 = local_109;
+                if _e223 {
                 } else {
                     break;
                 }
                 {
-                    let _e223 = j_3;
-                    let _e225 = j_3;
-                    let _e229 = cuts_1[(_e225 - 1u)];
-                    cuts_1[_e223] = _e229;
-                    let _e230 = j_3;
-                    j_3 = (_e230 - 1u);
+                    let _e224 = j_3;
+                    let _e226 = j_3;
+                    let _e230 = cuts_1[(_e226 - 1u)];
+                    cuts_1[_e224] = _e230;
+                    let _e231 = j_3;
+                    j_3 = (_e231 - 1u);
                 }
             }
-            let _e233 = j_3;
-            cuts_1[_e233] = c_10;
+            let _e234 = j_3;
+            cuts_1[_e234] = c_10;
         }
         continuing {
-            let _e236 = i_17;
-            i_17 = (_e236 + 1u);
+            let _e237 = i_17;
+            i_17 = (_e237 + 1u);
         }
     }
     loop {
-        let _e242 = i_18;
-        if (_e242 < 11u) {
+        let _e243 = i_18;
+        if (_e243 < 11u) {
         } else {
             break;
         }
         {
-            let _e245 = i_18;
-            let _e247 = cuts_1[_e245];
-            let _e249 = k_3;
-            let _e251 = g_20.gamma[_e249];
-            if (_e247 > _e251) {
-                let _e255 = i_18;
-                let _e257 = cuts_1[_e255];
-                local_110 = (_e257 < AIRLIGHT_PI);
+            let _e246 = i_18;
+            let _e248 = cuts_1[_e246];
+            let _e250 = k_3;
+            let _e252 = g_20.gamma[_e250];
+            if (_e248 > _e252) {
+                let _e256 = i_18;
+                let _e258 = cuts_1[_e256];
+                local_110 = (_e258 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            let _e261 = local_110;
-            if _e261 {
-                let _e262 = k_3;
-                k_3 = (_e262 + 1u);
-                let _e266 = k_3;
-                let _e268 = i_18;
-                let _e270 = cuts_1[_e268];
-                g_20.gamma[_e266] = _e270;
+            let _e262 = local_110;
+            if _e262 {
+                let _e263 = k_3;
+                k_3 = (_e263 + 1u);
+                let _e267 = k_3;
+                let _e269 = i_18;
+                let _e271 = cuts_1[_e269];
+                g_20.gamma[_e267] = _e271;
             }
         }
         continuing {
-            let _e272 = i_18;
-            i_18 = (_e272 + 1u);
+            let _e273 = i_18;
+            i_18 = (_e273 + 1u);
         }
     }
-    let _e275 = k_3;
-    g_20.gamma[(_e275 + 1u)] = AIRLIGHT_PI;
-    let _e281 = k_3;
-    g_20.panels = (_e281 + 1u);
+    let _e276 = k_3;
+    g_20.gamma[(_e276 + 1u)] = AIRLIGHT_PI;
+    let _e282 = k_3;
+    g_20.panels = (_e282 + 1u);
     loop {
-        let _e286 = i_19;
-        let _e288 = g_20.panels;
-        if (_e286 <= _e288) {
+        let _e287 = i_19;
+        let _e289 = g_20.panels;
+        if (_e287 <= _e289) {
         } else {
             break;
         }
         {
-            let _e291 = i_19;
-            let _e293 = i_19;
-            g_20.edges[_e291] = f32(_e293);
+            let _e292 = i_19;
+            let _e294 = i_19;
+            g_20.edges[_e292] = f32(_e294);
         }
         continuing {
-            let _e296 = i_19;
-            i_19 = (_e296 + 1u);
+            let _e297 = i_19;
+            i_19 = (_e297 + 1u);
         }
     }
-    let _e298 = g_20;
-    return _e298;
+    let _e299 = g_20;
+    return _e299;
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
@@ -4641,9 +4629,14 @@ fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
     return select(0f, _e15, _e24);
 }
 
+fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
+    return array<vec2<f32>, 5>(vec2<f32>(0.42556283f, 0.14776212f), vec2<f32>(0.2833023f, 0.13463336f), vec2<f32>(0.16029522f, 0.10954318f), vec2<f32>(0.067468315f, 0.07472567f), vec2<f32>(0.013046736f, 0.03333567f));
+}
+
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
     var local_113: bool;
     var sum_5: f32 = 0f;
+    var k_4: u32 = 0u;
 
     let w_6 = (hi_3 - lo_4);
     if !(!((w_6 > 0f))) {
@@ -4656,28 +4649,28 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
     if _e19 {
         return 0f;
     }
-    let _e23 = sum_5;
-    let _e25 = airlight_lobe_node(q_3, lo_4, w_6, 0.42556283f, smoothstep_1);
-    let _e27 = airlight_lobe_node(q_3, lo_4, w_6, 0.57443714f, smoothstep_1);
-    sum_5 = (_e23 + (0.14776212f * (_e25 + _e27)));
-    let _e32 = sum_5;
-    let _e34 = airlight_lobe_node(q_3, lo_4, w_6, 0.2833023f, smoothstep_1);
-    let _e36 = airlight_lobe_node(q_3, lo_4, w_6, 0.7166977f, smoothstep_1);
-    sum_5 = (_e32 + (0.13463336f * (_e34 + _e36)));
-    let _e41 = sum_5;
-    let _e43 = airlight_lobe_node(q_3, lo_4, w_6, 0.16029522f, smoothstep_1);
-    let _e45 = airlight_lobe_node(q_3, lo_4, w_6, 0.8397048f, smoothstep_1);
-    sum_5 = (_e41 + (0.10954318f * (_e43 + _e45)));
-    let _e50 = sum_5;
-    let _e52 = airlight_lobe_node(q_3, lo_4, w_6, 0.067468315f, smoothstep_1);
-    let _e54 = airlight_lobe_node(q_3, lo_4, w_6, 0.93253165f, smoothstep_1);
-    sum_5 = (_e50 + (0.07472567f * (_e52 + _e54)));
-    let _e59 = sum_5;
-    let _e61 = airlight_lobe_node(q_3, lo_4, w_6, 0.013046736f, smoothstep_1);
-    let _e63 = airlight_lobe_node(q_3, lo_4, w_6, 0.98695326f, smoothstep_1);
-    sum_5 = (_e59 + (0.03333567f * (_e61 + _e63)));
-    let _e68 = sum_5;
-    return _e68;
+    let _e21 = airlight_lobe_rule();
+    loop {
+        let _e26 = k_4;
+        if (_e26 < AIRLIGHT_LOBE_PAIRS) {
+        } else {
+            break;
+        }
+        {
+            let _e29 = k_4;
+            let node = _e21[_e29];
+            let _e31 = sum_5;
+            let _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_4, w_6, (1f - node.x), smoothstep_1);
+            sum_5 = (_e31 + (node.y * (_e34 + _e38)));
+        }
+        continuing {
+            let _e43 = k_4;
+            k_4 = (_e43 + 1u);
+        }
+    }
+    let _e45 = sum_5;
+    return _e45;
 }
 
 fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent: f32) -> f32 {
@@ -5158,7 +5151,7 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var queued_lo: f32 = 0f;
     var queued_hi: f32 = 0f;
     var step_2: u32 = 0u;
-    var k_4: f32;
+    var k_5: f32;
     var gauss: f32;
     var j_4: u32;
     var local_133: bool;
@@ -5198,7 +5191,7 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
             let _e85 = b_12;
             let _e86 = a_16;
             let hw_3 = (0.5f * (_e85 - _e86));
-            k_4 = 0f;
+            k_5 = 0f;
             gauss = 0f;
             j_4 = 0u;
             loop {
@@ -5209,7 +5202,7 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                 }
                 {
                     let _e99 = j_4;
-                    let node = _e19[(_e99 / 2u)];
+                    let node_1 = _e19[(_e99 / 2u)];
                     let _e109 = j_4;
                     if ((_e109 & 1u) == 0u) {
                         let _e116 = j_4;
@@ -5218,7 +5211,7 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                         local_133 = false;
                     }
                     let _e120 = local_133;
-                    let w_7 = select((c_15 + (hw_3 * node.x)), (c_15 - (hw_3 * node.x)), _e120);
+                    let w_7 = select((c_15 + (hw_3 * node_1.x)), (c_15 - (hw_3 * node_1.x)), _e120);
                     let _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0f;
                     if (_e122.weight != 0f) {
@@ -5237,12 +5230,12 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                         }
                         f = (_e129.in_scatter * _e122.weight);
                     }
-                    let _e146 = k_4;
+                    let _e146 = k_5;
                     let _e148 = f;
-                    k_4 = (_e146 + (node.y * _e148));
+                    k_5 = (_e146 + (node_1.y * _e148));
                     let _e151 = gauss;
                     let _e153 = f;
-                    gauss = (_e151 + (node.z * _e153));
+                    gauss = (_e151 + (node_1.z * _e153));
                 }
                 continuing {
                     let _e157 = j_4;
@@ -5252,8 +5245,8 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
             let _e159 = slot_1;
             let _e160 = a_16;
             let _e161 = b_12;
-            let _e162 = k_4;
-            let _e164 = k_4;
+            let _e162 = k_5;
+            let _e164 = k_5;
             let _e166 = gauss;
             airlight_list_set((&list_1), _e159, vec4<f32>(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
             let _e171 = slot_1;

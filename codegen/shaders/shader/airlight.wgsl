@@ -1859,6 +1859,8 @@ const AIRLIGHT_SURFACE_PANELS: u32 = @SURFACE_PANELS@u;
 const AIRLIGHT_PHONG_PANELS: u32 = @PHONG_PANELS@u;
 // An outer integral's first panels' edges: a segment's ≤ 5, a surface's ≤ 13 (11 cuts).
 const AIRLIGHT_OUTER_EDGES: u32 = 13u;
+// The pairs of nodes of a Phong lobe's rule (surface.rs LOBE_RULE).
+const AIRLIGHT_LOBE_PAIRS: u32 = @LOBE_PAIRS@u;
 // ln of where a Phong lobe is ended, relative to its peak (surface.rs LOBE_FLOOR).
 const AIRLIGHT_LN_LOBE_FLOOR: f32 = @LN_LOBE_FLOOR@;
 
@@ -1966,12 +1968,11 @@ fn airlight_acos(x: f32) -> f32 {
     return select(half + half, AIRLIGHT_PI - half - half, x < 0.0);
 }
 
-/// The angle α ∈ [0, π] with (cos α, sin α) ∝ (c, s), s ≥ 0 (atan2 by airlight_atan).
+/// The angle α ∈ [0, π] with (cos α, sin α) ∝ (c, s), s ≥ 0: one atan (airlight_atan2_upper),
+/// not four branches — every ray of the compute shader runs the surface's setup on a driver that
+/// masks branches (lavapipe), so a branch per octant cost them all four.
 fn airlight_angle(c: f32, s: f32) -> f32 {
-    if (s <= c) { return airlight_atan(s / c); }
-    if (s <= -c) { return AIRLIGHT_PI - airlight_atan(s / -c); }
-    if (c >= 0.0) { return 0.5 * AIRLIGHT_PI - airlight_atan(c / s); }
-    return 0.5 * AIRLIGHT_PI + airlight_atan(-c / s);
+    return airlight_atan2_upper(s, c);
 }
 
 /// The half-arc ψ ∈ [0, π] of the hemisphere about a direction at α from ℓ, at γ: where
@@ -2043,7 +2044,7 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
         g.alpha_r = airlight_angle(g.cos_r, g.sin_r);
         if (g.sin_r > 0.0) {
             // Δ = φ_n − φ_r = −atan2(y, x)
-            let phi_r = select(airlight_angle(x, y), -airlight_angle(x, -y), y < 0.0);
+            let phi_r = select(1.0, -1.0, y < 0.0) * airlight_angle(x, abs(y));
             g.delta = vec3<f32>(-phi_r, x / g.sin_r, -y / g.sin_r);
         }
         let first_r = abs(0.5 * AIRLIGHT_PI - g.alpha_r);
@@ -2171,13 +2172,26 @@ fn airlight_arc_end(x: f32, cut: f32) -> f32 {
     return select(0.0, end, end > -cut && end < cut);
 }
 
-/// The kernel's LOBE_RULE (surface.rs) on the piece [lo, hi] of a lobe's arcs; 0 where it is empty or the
-/// integrand vanishes at its middle (its sign is constant between the edges).
+/// The kernel's LOBE_RULE (surface.rs GL10): (u, weight/2) for the pairs of nodes u and 1 − u
+/// on [0, 1].
+fn airlight_lobe_rule() -> array<vec2<f32>, AIRLIGHT_LOBE_PAIRS> {
+    return array<vec2<f32>, AIRLIGHT_LOBE_PAIRS>(@LOBE_RULE@);
+}
+
+/// The kernel's LOBE_RULE on the piece [lo, hi] of a lobe's arcs; 0 where it is empty or the
+/// integrand vanishes at its middle (its sign is constant between the edges). The pairs of nodes
+/// in a loop, as the pieces: lavapipe runs a loop whose lanes are all off once, where it would
+/// run written-out code whole, and every ray of the compute shader reaches this code.
 fn airlight_lobe_piece(q: AirlightLobe, lo: f32, hi: f32, smoothstep: bool) -> f32 {
     let w = hi - lo;
     if (!(w > 0.0) || !(airlight_lobe_at(q, lo + 0.5 * w) > 0.0)) { return 0.0; }
+    let rule = airlight_lobe_rule();
     var sum = 0.0;
-@LOBE_RULE_SUM@    return sum;
+    for (var k = 0u; k < AIRLIGHT_LOBE_PAIRS; k++) {
+        let node = rule[k];
+        sum += node.y * (airlight_lobe_node(q, lo, w, node.x, smoothstep) + airlight_lobe_node(q, lo, w, 1.0 - node.x, smoothstep));
+    }
+    return sum;
 }
 
 /// The outer integral of a scene: a surface point's, a segment light's (extended.rs

@@ -223,14 +223,8 @@ impl Constants {
             spot.polynomial_degree().expect("a spot cone is a polynomial between its kinks")
         };
         let outer_list = airlight::SHADER_SEGMENT_PANELS.max(airlight::SHADER_SURFACE_PANELS).max(airlight::SHADER_PHONG_PANELS);
-        // a Phong lobe's arcs: the rule's pairs of nodes u = (1 ± x)/2 on each piece, written out
-        let lobe_rule_sum: String = airlight::surface::LOBE_RULE
-            .iter()
-            .map(|&(x, w)| {
-                let (lo, hi) = (0.5 - 0.5 * x, 0.5 + 0.5 * x);
-                format!("        sum += {} * (airlight_lobe_node(q, lo, w, {}, smoothstep) + airlight_lobe_node(q, lo, w, {}, smoothstep));\n", f(0.5 * w), f(lo), f(hi))
-            })
-            .collect();
+        // a Phong lobe's arcs: the rule's pairs of nodes u = (1 ∓ x)/2 on each piece, weight w/2
+        let lobe_rule = list(airlight::surface::LOBE_RULE.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(0.5 - 0.5 * x), f(0.5 * w))).collect());
         // the weight at or below which the isotropic moment leaves its far end out (f32's ε/4)
         let far_end = airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64;
         let fills = vec![
@@ -293,7 +287,8 @@ impl Constants {
             ("@PHONG_PANELS@", airlight::SHADER_PHONG_PANELS.to_string()),
             ("@SURFACE_PHONG@", l::SURFACE_PHONG.to_string()),
             ("@LN_LOBE_FLOOR@", f(airlight::surface::LOBE_FLOOR.ln())),
-            ("@LOBE_RULE_SUM@", lobe_rule_sum),
+            ("@LOBE_RULE@", lobe_rule),
+            ("@LOBE_PAIRS@", airlight::surface::LOBE_RULE.len().to_string()),
             // one panel list serves every outer integral
             ("@ZEROS_SEGMENT_LIST@", list(vec!["vec4<f32>(0.0)".to_string(); outer_list])),
             ("@SEGMENT_LIST_FIELDS@", unrolled::list_fields(outer_list)),
