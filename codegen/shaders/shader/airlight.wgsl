@@ -2152,8 +2152,8 @@ fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, e
     if (inner.z < inner.y) { inner = inner.xzy; }
     if (inner.y < inner.x) { inner = inner.yxz; }
     // a loop over the pieces, not four calls: a driver that runs a branch's straight-line code
-    // for every lane (lavapipe) runs this for every ray of a dispatch, but leaves a loop whose
-    // lanes are all off at once
+    // for every lane (lavapipe) runs this for every ray of a dispatch, but a loop none of whose
+    // lanes needs it only once
     let edges = array<f32, 5>(-cut, inner.x, inner.y, inner.z, cut);
     let smoothstep = exponent < 1.0;
     var sum = 0.0;
