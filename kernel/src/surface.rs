@@ -71,9 +71,10 @@ pub const MAX_SURFACE_PANELS: usize = 48;
 pub const SHADER_SURFACE_PANELS: usize = 6;
 
 /// The most Gauss–Kronrod panels of the outer integral of a Phong surface point in the shaders
-/// (at most `7·(2·16 − 1) = 217` rays; up to 12 panels come from the cuts alone): within
-/// 1.4e-5 of the references of the 6 Phong records of tests/reference/surface.jsonl in f32
-/// (12 panels: 5.0e-5; more, no better).
+/// (at most `7·(2·16 − 1) = 217` rays; up to 12 panels come from the cuts alone): the f32 mirror
+/// at 8 nodes is within 5.5e-6 of the 6 Phong records of tests/reference/surface.jsonl and within
+/// 1.2e-5 of the f64 default on 200 random Phong points (12 panels: 4.9e-5 and 3.0e-3); the
+/// shaders' own figures are tests/gpu_agreement.rs `surfaces_agree_with_the_cpu_kernel`.
 pub const SHADER_PHONG_PANELS: usize = 16;
 
 /// The Gauss–Legendre rule of [`lobe_arcs`], the shaders' inner integral of a Phong lobe
@@ -316,10 +317,11 @@ where
 
     /// What the shaders compute (fixed cost): the outer rule of `outer_rule` to
     /// `control.tolerance`, at most `max_panels` panels of the outer integral (the shaders:
-    /// [`SHADER_SURFACE_PANELS`]), every ray integral as
-    /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the ray integrals evaluated. The
-    /// shaders have this for a Lambertian surface lit by a light without an axis, where the
-    /// hemisphere's inner integral is in closed form and the outer one is the only loop.
+    /// [`SHADER_SURFACE_PANELS`], [`SHADER_PHONG_PANELS`] for a Phong lobe), every ray integral as
+    /// [`Scene::in_scatter_panels`]`::<N>(control)`, a Phong lobe lit by a light without an axis
+    /// by [`lobe_arcs`]; and the ray integrals evaluated. The shaders have this for Lambertian and
+    /// Phong surfaces lit by a light without an axis, where the hemisphere's inner integral needs
+    /// no rays (Lambert's in closed form) and the outer one is the only loop of rays.
     pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
         self.integrate(control.tolerance, max_panels, true, |scene| scene.in_scatter_panels::<N>(control))
     }
