@@ -531,8 +531,10 @@ fn distribution<T: Real>(json: &Option<DistributionJson>) -> Result<AnyDistribut
 fn area<T: Real>(ray: Ray<T>, emitter: Emitter<T>, radiance: f64, emission: &Option<EmissionJson>, medium: Medium<T>, phase: AnyPhase<T>) -> Result<AnyRecord<T>, FieldError> {
     let emission = match emission {
         None | Some(EmissionJson::Lambertian) => Emission::Lambertian,
+        // a whole number, else the kernel's error; out of range the saturating cast gives 0 or
+        // u32::MAX, which `Emission::validate` (in `AreaScene::new`) rejects with the same error
         Some(EmissionJson::CosineLobe(CosineLobeJson { power: p })) => {
-            if !(p.fract() == 0.0 && (1.0..=Emission::MAX_POWER as f64).contains(p)) {
+            if p.fract() != 0.0 {
                 return Err(field_error(airlight::InputError::new("light.emission.power", airlight::ErrorKind::LobePower)));
             }
             Emission::CosineLobe { power: *p as u32 }

@@ -480,6 +480,7 @@ fn random_phong_surfaces() -> Vec<(airlight_shaders::agreement::SurfaceRecord<f3
     use airlight::glam::Vec3;
     use airlight::light::AnyDistribution;
     use airlight::phase::{AnyPhase, HenyeyGreenstein};
+    use airlight::record::{cast_light, cast_phase};
     use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
     let mut rng = Rng(2026);
     let mut out = Vec::new();
@@ -491,18 +492,17 @@ fn random_phong_surfaces() -> Vec<(airlight_shaders::agreement::SurfaceRecord<f3
         let sigma_t = [0.01f32, 0.1, 0.5, 2.0][(i / 7) % 4];
         let g = [0.0f32, 0.5, 0.8, 0.95][i % 4];
         let medium = Medium { sigma_s: 0.7 * sigma_t, sigma_t };
-        let phase = |g: f32| if g == 0.0 { AnyPhase::Isotropic } else { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g }) };
+        let phase = if g == 0.0 { AnyPhase::Isotropic } else { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g }) };
         let light = PointLight { position: light_position + position, intensity: 10.0, distribution: AnyDistribution::Omni };
-        let scene = SurfaceScene::new(Surface { position, normal }, Brdf::Phong { k_s: 0.5, exponent, view }, light, medium, phase(g)).unwrap();
-        let wide = |brdf: Brdf<f64>, g: f32| {
-            let light = PointLight { position: light.position.as_dvec3(), intensity: 10.0, distribution: AnyDistribution::Omni };
+        let scene = SurfaceScene::new(Surface { position, normal }, Brdf::Phong { k_s: 0.5, exponent, view }, light, medium, phase).unwrap();
+        // the same point in f64 (every number exact), with `brdf`
+        let wide = |brdf: Brdf<f64>| {
             let surface = Surface { position: position.as_dvec3(), normal: normal.as_dvec3() };
             let medium = Medium { sigma_s: medium.sigma_s as f64, sigma_t: sigma_t as f64 };
-            let phase = if g == 0.0 { AnyPhase::Isotropic } else { AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }) };
-            SurfaceScene::new(surface, brdf, light, medium, phase).unwrap().air_light()
+            SurfaceScene::new(surface, brdf, cast_light::<f32, f64>(&light), medium, cast_phase::<f32, f64>(&phase)).unwrap().air_light()
         };
-        let exact = wide(Brdf::Phong { k_s: 0.5, exponent: exponent as f64, view: view.as_dvec3() }, g);
-        let scale = wide(Brdf::Lambert { albedo: 0.5 * (exponent as f64 + 2.0) / 2.0 }, g);
+        let exact = wide(Brdf::Phong { k_s: 0.5, exponent: exponent as f64, view: view.as_dvec3() });
+        let scale = wide(Brdf::Lambert { albedo: 0.5 * (exponent as f64 + 2.0) / 2.0 });
         let record = airlight_shaders::layout::pack_surface(&scene).unwrap();
         out.push((scene, record, exact, scale, format!("random phong n={exponent}")));
     }
