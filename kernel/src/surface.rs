@@ -365,6 +365,11 @@ where
             let (s, c) = phi.sin_cos();
             core::array::from_fn(|i| cos_g * fr.l[i] + sin_g * (c * fr.e1[i] + s * fr.e2[i]))
         };
+        // the mirror direction's angle from ℓ and Δ = φ_n − φ_r with its cosine and sine, the
+        // same at every outer node
+        let alpha_r = fr.r.1.atan2(fr.r.0);
+        let delta = fr.n.2 - fr.r.2;
+        let (sin_delta, cos_delta) = delta.sin_cos();
         let mut outer = |g: T| -> T {
             let (sin_g, cos_g) = g.sin_cos();
             let psi_n = half_arc(fr.n, cos_g, sin_g);
@@ -419,10 +424,7 @@ where
                 }
                 (true, Brdf::Phong { k_s, exponent, .. }) if fixed_lobe => {
                     let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
-                    let gap = g - fr.r.1.atan2(fr.r.0);
-                    let delta = phi_n - fr.r.2;
-                    let (sin_delta, cos_delta) = delta.sin_cos();
-                    let arcs = lobe_arcs(normal, mirror, gap, (delta, cos_delta, sin_delta), psi_n, exponent);
+                    let arcs = lobe_arcs(normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
                     along(direction(cos_g, sin_g, phi_n)) * k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
                 }
                 (true, _) => {
@@ -455,7 +457,7 @@ where
         turning(fr.n).into_iter().for_each(&mut push);
         if phong {
             turning(fr.r).into_iter().for_each(&mut push);
-            let peak = fr.r.1.atan2(fr.r.0);
+            let peak = alpha_r;
             push(peak);
             if let Brdf::Phong { exponent, .. } = self.brdf {
                 // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
