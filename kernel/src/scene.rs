@@ -180,12 +180,7 @@ where
     /// The panels with the precision's [`Real::PANEL_NODES`] over `g` (the scene's canonical
     /// form, or a lit part of it).
     fn default_panels(&self, g: &Canonical<T>, control: Control<T>) -> (T, usize) {
-        let method = Method::Panels(control);
-        if T::PANEL_NODES == 16 {
-            in_scatter_counted::<T, D, P, Production, 16>(g, &self.physics(), method, &Production)
-        } else {
-            in_scatter_counted::<T, D, P, Production, 8>(g, &self.physics(), method, &Production)
-        }
+        default_panels(g, &self.physics(), control)
     }
 
     /// `L_m` by error-controlled panels with `N` Gauss–Legendre nodes each (`N` ∈ {4, 6, 8, 10,
@@ -371,6 +366,24 @@ where
 /// The error control of [`Scene::in_scatter`] for the precision `T`.
 pub fn default_control<T: Real>() -> Control<T> {
     Control { tolerance: T::lit(T::PANEL_TOLERANCE), floor: T::lit(T::PANEL_FLOOR), max_panels: T::MAX_PANELS }
+}
+
+/// `L_m` of the canonical problem `g` by error-controlled panels with the precision's
+/// [`Real::PANEL_NODES`] and `control`, and the panels evaluated: [`Scene::in_scatter_controlled`]
+/// for a problem whose reduction is known without a scene (a surface point's rays,
+/// crate::surface).
+pub(crate) fn default_panels<T, D, P>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: Control<T>) -> (T, usize)
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    let method = Method::Panels(control);
+    if T::PANEL_NODES == 16 {
+        in_scatter_counted::<T, D, P, Production, 16>(g, phys, method, &Production)
+    } else {
+        in_scatter_counted::<T, D, P, Production, 8>(g, phys, method, &Production)
+    }
 }
 
 /// In-scattered radiance with the defaults (error-controlled panels), checked.

@@ -29,7 +29,12 @@ use crate::light::LightDistribution;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 use crate::panels::Control;
-use crate::scene::{validate, Medium, PointLight, Ray, Scene};
+use crate::combined::{in_scatter_counted, Method, Physics};
+use crate::geometry::Canonical;
+use crate::integrals::Production;
+use crate::scene::{default_panels, validate, Medium, PointLight, Ray};
+#[cfg(doc)]
+use crate::scene::Scene;
 
 /// The surface's reflectance.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -312,7 +317,7 @@ where
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
-        self.integrate(tolerance, MAX_SURFACE_PANELS, false, |scene| scene.in_scatter_controlled(control).0)
+        self.integrate(tolerance, MAX_SURFACE_PANELS, false, |g, phys| default_panels(g, phys, control).0)
     }
 
     /// What the shaders compute (fixed cost): the outer rule of `outer_rule` to
@@ -323,13 +328,14 @@ where
     /// Phong surfaces lit by a light without an axis, where the hemisphere's inner integral needs
     /// no rays (Lambert's in closed form) and the outer one is the only loop of rays.
     pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
-        self.integrate(control.tolerance, max_panels, true, |scene| scene.in_scatter_panels::<N>(control))
+        const { assert!(matches!(N, 4 | 6 | 8 | 10 | 12 | 16), "panels take 4, 6, 8, 10, 12 or 16 Gauss–Legendre nodes") };
+        self.integrate(control.tolerance, max_panels, true, |g, phys| in_scatter_counted::<T, D, P, Production, N>(g, phys, Method::Panels(control), &Production).0)
     }
 
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
     /// at most `max_panels` panels each, every ray integral by `ray_integral`, a Phong lobe lit by
     /// a light without an axis by [`lobe_arcs`] if `fixed_lobe`; and the rays evaluated.
-    fn integrate(&self, tolerance: T, max_panels: usize, fixed_lobe: bool, ray_integral: impl Fn(&Scene<T, D, P>) -> T) -> (T, usize) {
+    fn integrate(&self, tolerance: T, max_panels: usize, fixed_lobe: bool, ray_integral: impl Fn(&Canonical<T>, &Physics<'_, T, D, P>) -> T) -> (T, usize) {
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
@@ -352,14 +358,30 @@ where
         let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
         let mut rays = 0;
-        // L_a along ω; 0 where the ray integral cannot be formed (not reached on valid input)
-        let mut along = |w: [T; 3]| {
+        let phys = Physics {
+            sigma_s: self.medium.sigma_s,
+            sigma_t: self.medium.sigma_t,
+            intensity: self.light.intensity,
+            light: &self.light.distribution,
+            phase: &self.phase,
+        };
+        // the light's axis in the frame (ℓ, e₁, e₂)
+        let axis = normalize(self.light.distribution.axis());
+        let (axis_l, axis_e1, axis_e2) = (dot(axis, fr.l), dot(axis, fr.e1), dot(axis, fr.e2));
+        // L_a along ω = cos γ ℓ + sin γ u, u = cos φ e₁ + sin φ e₂: its canonical form
+        // (docs/DESIGN.md §2) is known exactly, the light at x_h = d cos γ, h = d sin γ from the
+        // ray and the axis's cosines d·a = cos γ (ℓ·a) + sin γ (u·a) and (cos γ u − sin γ ℓ)·a
+        // (the unit vector from the light to its foot is sin γ ℓ − cos γ u): no reduction of
+        // world vectors, which would lose ε·d/h of h towards the light
+        let mut along = |cos_g: T, sin_g: T, phi: T| {
             rays += 1;
-            let ray = Ray { origin: self.surface.position, dir: T::vec3_from_array(w), t_min: T::zero(), t_max: T::infinity() };
-            match Scene::new(ray, self.light.clone(), self.medium, self.phase.clone()) {
-                Ok(scene) => ray_integral(&scene),
-                Err(_) => T::zero(),
-            }
+            let (s, c) = phi.sin_cos();
+            let sin_g = sin_g.max(T::zero());
+            let axis_u = c * axis_e1 + s * axis_e2;
+            let h = fr.d * sin_g;
+            let d_c = if h > T::zero() { cos_g * axis_u - sin_g * axis_l } else { T::zero() };
+            let g = Canonical { h, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c, t0: T::zero(), t1: T::infinity() };
+            ray_integral(&g, &phys)
         };
         let direction = |cos_g: T, sin_g: T, phi: T| {
             let (s, c) = phi.sin_cos();
@@ -420,21 +442,21 @@ where
                     // ∫ (A + B cos x)⁺ over the arc, closed form
                     let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
                     let arc = T::lit(2.0) * (a * psi_n + b * psi_n.sin());
-                    along(direction(cos_g, sin_g, phi_n)) * albedo * T::FRAC_1_PI() * arc
+                    along(cos_g, sin_g, phi_n) * albedo * T::FRAC_1_PI() * arc
                 }
                 (true, Brdf::Phong { k_s, exponent, .. }) if fixed_lobe => {
                     let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
                     let arcs = lobe_arcs(normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
-                    along(direction(cos_g, sin_g, phi_n)) * k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
+                    along(cos_g, sin_g, phi_n) * k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
                 }
                 (true, _) => {
-                    let la = along(direction(cos_g, sin_g, phi_n));
+                    let la = along(cos_g, sin_g, phi_n);
                     la * inner_sum(&mut |phi| geometric(phi))
                 }
                 (false, _) => inner_sum(&mut |phi| {
                     let f = geometric(phi);
                     if f > T::zero() {
-                        f * along(direction(cos_g, sin_g, phi))
+                        f * along(cos_g, sin_g, phi)
                     } else {
                         T::zero()
                     }

@@ -110,7 +110,7 @@ struct AirlightOuter {
     int _pad16_1;
     int _pad16_2;
     float3 delta;
-    int _end_pad_0;
+    float d;
 };
 
 struct AirlightLobe {
@@ -126,6 +126,8 @@ struct AirlightLobe {
 struct AirlightNode {
     AirlightScene scene;
     float weight;
+    AirlightCanonical canonical;
+    bool exact;
     int _end_pad_0;
     int _end_pad_1;
     int _end_pad_2;
@@ -4796,10 +4798,10 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     }
     const float3 _e113 = airlight_normalize(dir);
     const float3 _e114 = airlight_normalize(w_5);
-    float3 n_2 = -(cross(_e113, _e114));
+    float3 n_3 = -(cross(_e113, _e114));
     out_2.h = h_7;
     float3 _e119 = a_15;
-    out_2.d_c = dot(n_2, _e119);
+    out_2.d_c = dot(n_3, _e119);
     AirlightCanonical _e121 = out_2;
     const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
@@ -5195,7 +5197,7 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
     return _e18;
 }
 
-AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[13], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[13], float arg13, float arg14, float arg15, float3 arg16) {
+AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float arg3, float arg4[13], uint arg5, uint arg6, uint arg7, float3 arg8, float3 arg9, float arg10, float arg11, float arg12[13], float arg13, float arg14, float arg15, float3 arg16, float arg17) {
     AirlightOuter ret = (AirlightOuter)0;
     ret.a = arg0;
     ret.e = arg1;
@@ -5214,13 +5216,14 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     ret.sin_r = arg14;
     ret.alpha_r = arg15;
     ret.delta = arg16;
+    ret.d = arg17;
     return ret;
 }
 
 AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels)
 {
     float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0));
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0);
     return airlightouter;
 }
 
@@ -5286,57 +5289,58 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     g_20.l = l_3;
     float3 _e67 = u_1;
     g_20.u = _e67;
+    g_20.d = _e7;
     g_20.cos_a = cos_a_1;
     g_20.sin_a = _e41;
-    const float _e84 = airlight_angle(cos_a_1, _e41);
-    float first = abs((1.5707964 - _e84));
+    const float _e85 = airlight_angle(cos_a_1, _e41);
+    float first = abs((1.5707964 - _e85));
     cuts_1[0] = first;
     cuts_1[1] = (AIRLIGHT_PI - first);
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        const float3 _e97 = airlight_normalize(s_22.brdf_view);
-        const float3 _e103 = airlight_normalize((((2.0 * dot(_e37, _e97)) * _e37) - _e97));
-        float3 _e104 = u_1;
-        float x_27 = dot(_e103, _e104);
-        float3 _e106 = u_1;
-        float y_10 = dot(_e103, cross(l_3, _e106));
-        g_20.cos_r = dot(_e103, l_3);
+        const float3 _e98 = airlight_normalize(s_22.brdf_view);
+        const float3 _e104 = airlight_normalize((((2.0 * dot(_e37, _e98)) * _e37) - _e98));
+        float3 _e105 = u_1;
+        float x_27 = dot(_e104, _e105);
+        float3 _e107 = u_1;
+        float y_10 = dot(_e104, cross(l_3, _e107));
+        g_20.cos_r = dot(_e104, l_3);
         g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
-        float _e118 = g_20.cos_r;
-        float _e120 = g_20.sin_r;
-        const float _e121 = airlight_angle(_e118, _e120);
-        g_20.alpha_r = _e121;
-        float _e123 = g_20.sin_r;
-        if ((_e123 > 0.0)) {
-            const float _e132 = airlight_angle(x_27, abs(y_10));
-            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e132);
-            float _e137 = g_20.sin_r;
-            float _e141 = g_20.sin_r;
-            g_20.delta = float3(-(phi_r), (x_27 / _e137), (-(y_10) / _e141));
+        float _e119 = g_20.cos_r;
+        float _e121 = g_20.sin_r;
+        const float _e122 = airlight_angle(_e119, _e121);
+        g_20.alpha_r = _e122;
+        float _e124 = g_20.sin_r;
+        if ((_e124 > 0.0)) {
+            const float _e133 = airlight_angle(x_27, abs(y_10));
+            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e133);
+            float _e138 = g_20.sin_r;
+            float _e142 = g_20.sin_r;
+            g_20.delta = float3(-(phi_r), (x_27 / _e138), (-(y_10) / _e142));
         }
-        float _e146 = g_20.alpha_r;
-        float first_r = abs((1.5707964 - _e146));
+        float _e147 = g_20.alpha_r;
+        float first_r = abs((1.5707964 - _e147));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        float _e155 = g_20.alpha_r;
-        cuts_1[4] = _e155;
+        float _e156 = g_20.alpha_r;
+        cuts_1[4] = _e156;
         if ((s_22.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
-            float _e165 = g_20.alpha_r;
-            cuts_1[5] = (_e165 - (1.5 * width_3));
-            float _e171 = g_20.alpha_r;
-            cuts_1[6] = (_e171 + (1.5 * width_3));
-            float _e177 = g_20.alpha_r;
-            cuts_1[7] = (_e177 - (4.0 * width_3));
-            float _e183 = g_20.alpha_r;
-            cuts_1[8] = (_e183 + (4.0 * width_3));
+            float _e166 = g_20.alpha_r;
+            cuts_1[5] = (_e166 - (1.5 * width_3));
+            float _e172 = g_20.alpha_r;
+            cuts_1[6] = (_e172 + (1.5 * width_3));
+            float _e178 = g_20.alpha_r;
+            cuts_1[7] = (_e178 - (4.0 * width_3));
+            float _e184 = g_20.alpha_r;
+            cuts_1[8] = (_e184 + (4.0 * width_3));
         }
-        float3 meet = cross(_e37, _e103);
-        const float _e188 = airlight_safe_length(meet);
-        if ((_e188 > AIRLIGHT_FLT_EPS)) {
-            const float _e196 = airlight_acos(clamp((dot(meet, l_3) / _e188), -1.0, 1.0));
-            cuts_1[9] = _e196;
-            cuts_1[10] = (AIRLIGHT_PI - _e196);
+        float3 meet = cross(_e37, _e104);
+        const float _e189 = airlight_safe_length(meet);
+        if ((_e189 > AIRLIGHT_FLT_EPS)) {
+            const float _e197 = airlight_acos(clamp((dot(meet, l_3) / _e189), -1.0, 1.0));
+            cuts_1[9] = _e197;
+            cuts_1[10] = (AIRLIGHT_PI - _e197);
         }
     }
     uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
@@ -5345,48 +5349,48 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_21) {
-            uint _e237 = i_17;
-            i_17 = (_e237 + 1u);
+            uint _e238 = i_17;
+            i_17 = (_e238 + 1u);
         }
         loop_init_21 = false;
-        uint _e203 = i_17;
-        if ((_e203 < 11u)) {
+        uint _e204 = i_17;
+        if ((_e204 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e206 = i_17;
-            float c_10 = cuts_1[min(uint(_e206), 10u)];
-            uint _e209 = i_17;
-            j_3 = _e209;
+            uint _e207 = i_17;
+            float c_10 = cuts_1[min(uint(_e207), 10u)];
+            uint _e210 = i_17;
+            j_3 = _e210;
             uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
             while(true) {
                 if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
                 loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                uint _e211 = j_3;
-                if ((_e211 > 0u)) {
-                    uint _e216 = j_3;
-                    float _e220 = cuts_1[min(uint((_e216 - 1u)), 10u)];
-                    local_109 = (_e220 > c_10);
+                uint _e212 = j_3;
+                if ((_e212 > 0u)) {
+                    uint _e217 = j_3;
+                    float _e221 = cuts_1[min(uint((_e217 - 1u)), 10u)];
+                    local_109 = (_e221 > c_10);
                 } else {
                     local_109 = false;
                 }
-                bool _e223 = local_109;
-                if (_e223) {
+                bool _e224 = local_109;
+                if (_e224) {
                 } else {
                     break;
                 }
                 {
-                    uint _e224 = j_3;
-                    uint _e226 = j_3;
-                    float _e230 = cuts_1[min(uint((_e226 - 1u)), 10u)];
-                    cuts_1[min(uint(_e224), 10u)] = _e230;
-                    uint _e231 = j_3;
-                    j_3 = (_e231 - 1u);
+                    uint _e225 = j_3;
+                    uint _e227 = j_3;
+                    float _e231 = cuts_1[min(uint((_e227 - 1u)), 10u)];
+                    cuts_1[min(uint(_e225), 10u)] = _e231;
+                    uint _e232 = j_3;
+                    j_3 = (_e232 - 1u);
                 }
             }
-            uint _e234 = j_3;
-            cuts_1[min(uint(_e234), 10u)] = c_10;
+            uint _e235 = j_3;
+            cuts_1[min(uint(_e235), 10u)] = c_10;
         }
     }
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
@@ -5395,66 +5399,66 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e273 = i_18;
-            i_18 = (_e273 + 1u);
+            uint _e274 = i_18;
+            i_18 = (_e274 + 1u);
         }
         loop_init_22 = false;
-        uint _e243 = i_18;
-        if ((_e243 < 11u)) {
+        uint _e244 = i_18;
+        if ((_e244 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e246 = i_18;
-            float _e248 = cuts_1[min(uint(_e246), 10u)];
-            uint _e250 = k_3;
-            float _e252 = g_20.gamma[min(uint(_e250), 12u)];
-            if ((_e248 > _e252)) {
-                uint _e256 = i_18;
-                float _e258 = cuts_1[min(uint(_e256), 10u)];
-                local_110 = (_e258 < AIRLIGHT_PI);
+            uint _e247 = i_18;
+            float _e249 = cuts_1[min(uint(_e247), 10u)];
+            uint _e251 = k_3;
+            float _e253 = g_20.gamma[min(uint(_e251), 12u)];
+            if ((_e249 > _e253)) {
+                uint _e257 = i_18;
+                float _e259 = cuts_1[min(uint(_e257), 10u)];
+                local_110 = (_e259 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            bool _e262 = local_110;
-            if (_e262) {
-                uint _e263 = k_3;
-                k_3 = (_e263 + 1u);
-                uint _e267 = k_3;
-                uint _e269 = i_18;
-                float _e271 = cuts_1[min(uint(_e269), 10u)];
-                g_20.gamma[min(uint(_e267), 12u)] = _e271;
+            bool _e263 = local_110;
+            if (_e263) {
+                uint _e264 = k_3;
+                k_3 = (_e264 + 1u);
+                uint _e268 = k_3;
+                uint _e270 = i_18;
+                float _e272 = cuts_1[min(uint(_e270), 10u)];
+                g_20.gamma[min(uint(_e268), 12u)] = _e272;
             }
         }
     }
-    uint _e276 = k_3;
-    g_20.gamma[min(uint((_e276 + 1u)), 12u)] = AIRLIGHT_PI;
-    uint _e282 = k_3;
-    g_20.panels = (_e282 + 1u);
+    uint _e277 = k_3;
+    g_20.gamma[min(uint((_e277 + 1u)), 12u)] = AIRLIGHT_PI;
+    uint _e283 = k_3;
+    g_20.panels = (_e283 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     bool loop_init_23 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e297 = i_19;
-            i_19 = (_e297 + 1u);
+            uint _e298 = i_19;
+            i_19 = (_e298 + 1u);
         }
         loop_init_23 = false;
-        uint _e287 = i_19;
-        uint _e289 = g_20.panels;
-        if ((_e287 <= _e289)) {
+        uint _e288 = i_19;
+        uint _e290 = g_20.panels;
+        if ((_e288 <= _e290)) {
         } else {
             break;
         }
         {
-            uint _e292 = i_19;
-            uint _e294 = i_19;
-            g_20.edges[min(uint(_e292), 12u)] = float(_e294);
+            uint _e293 = i_19;
+            uint _e295 = i_19;
+            g_20.edges[min(uint(_e293), 12u)] = float(_e295);
         }
     }
-    AirlightOuter _e299 = g_20;
-    const AirlightOuter airlightouter_4 = _e299;
+    AirlightOuter _e300 = g_20;
+    const AirlightOuter airlightouter_4 = _e300;
     return airlightouter_4;
 }
 
@@ -5993,10 +5997,12 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     return airlightouter_9;
 }
 
-AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1) {
+AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1, AirlightCanonical arg2, bool arg3) {
     AirlightNode ret = (AirlightNode)0;
     ret.scene = arg0;
     ret.weight = arg1;
+    ret.canonical = arg2;
+    ret.exact = arg3;
     return ret;
 }
 
@@ -6008,6 +6014,7 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
     float ds = 1.0;
 
     p = s_24;
+    AirlightCanonical none = ConstructAirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -6018,33 +6025,40 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
         float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
-            AirlightScene _e45 = p;
-            const AirlightNode airlightnode = ConstructAirlightNode(_e45, 0.0);
+            AirlightScene _e53 = p;
+            const AirlightNode airlightnode = ConstructAirlightNode(_e53, 0.0, none, false);
             return airlightnode;
         }
-        const float2 _e48 = airlight_cos_sin_half_turn(gamma_1);
-        const float _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
-        if (!((_e53 > 0.0))) {
-            AirlightScene _e57 = p;
-            const AirlightNode airlightnode_1 = ConstructAirlightNode(_e57, 0.0);
+        const float2 _e57 = airlight_cos_sin_half_turn(gamma_1);
+        const float _e62 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e57.x, _e57.y);
+        if (!((_e62 > 0.0))) {
+            AirlightScene _e66 = p;
+            const AirlightNode airlightnode_1 = ConstructAirlightNode(_e66, 0.0, none, false);
             return airlightnode_1;
         }
         if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-            const float2 _e72 = airlight_cos_sin_half_turn(_e53);
-            float arc = (2.0 * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e72.y)));
+            const float2 _e82 = airlight_cos_sin_half_turn(_e62);
+            float arc = (2.0 * (((g_23.cos_a * _e57.x) * _e62) + ((g_23.sin_a * _e57.y) * _e82.y)));
             weight = ((s_24.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_3 = s_24.brdf_exponent;
-            const float _e89 = airlight_lobe_arcs(g_23, _e48, gamma_1, _e53, n_3);
-            weight = (((s_24.brdf_scale * (n_3 + 2.0)) * 0.15915494) * _e89);
+            float n_4 = s_24.brdf_exponent;
+            const float _e99 = airlight_lobe_arcs(g_23, _e57, gamma_1, _e62, n_4);
+            weight = (((s_24.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e99);
         }
-        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
+        p.dir = ((_e57.x * g_23.l) + (_e57.y * g_23.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        AirlightScene _e105 = p;
-        float _e106 = weight;
-        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e105, ((_e106 * _e48.y) * jacobian));
+        const float3 _e116 = airlight_normalize(s_24.light_axis);
+        float axis_l = dot(_e116, g_23.l);
+        float axis_u = dot(_e116, g_23.u);
+        float sin_g_1 = max(_e57.y, 0.0);
+        float h_8 = (g_23.d * sin_g_1);
+        float d_c_2 = ((h_8 > 0.0) ? ((_e57.x * axis_u) - (sin_g_1 * axis_l)) : 0.0);
+        AirlightCanonical exact = ConstructAirlightCanonical(h_8, (g_23.d * _e57.x), ((_e57.x * axis_l) + (sin_g_1 * axis_u)), d_c_2, 0.0, 0.0, true);
+        AirlightScene _e145 = p;
+        float _e146 = weight;
+        const AirlightNode airlightnode_2 = ConstructAirlightNode(_e145, ((_e146 * _e57.y) * jacobian), exact, true);
         return airlightnode_2;
     }
     if ((s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
@@ -6053,15 +6067,15 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
             ds = (g_23.scale * cosh(x_19));
         }
-        float _e130 = at_1;
-        p.light_position = (g_23.a + (_e130 * g_23.e));
-        AirlightScene _e134 = p;
-        float _e135 = ds;
-        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e134, _e135);
+        float _e171 = at_1;
+        p.light_position = (g_23.a + (_e171 * g_23.e));
+        AirlightScene _e175 = p;
+        float _e176 = ds;
+        const AirlightNode airlightnode_3 = ConstructAirlightNode(_e175, _e176, none, false);
         return airlightnode_3;
     }
-    AirlightScene _e137 = p;
-    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e137, 1.0);
+    AirlightScene _e179 = p;
+    const AirlightNode airlightnode_4 = ConstructAirlightNode(_e179, 1.0, none, false);
     return airlightnode_4;
 }
 
@@ -6084,28 +6098,35 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
     return airlightresult_9;
 }
 
-AirlightResult airlight_point_integral(AirlightScene p_1)
+AirlightResult airlight_node_integral(AirlightNode n_2)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
     bool local_132 = (bool)0;
+    AirlightCanonical g_24 = (AirlightCanonical)0;
 
-    const bool _e6 = airlight_vec_finite(p_1.light_position);
-    if (_e6) {
-        const bool _e10 = airlight_vec_finite(p_1.dir);
-        local_132 = _e10;
+    AirlightScene p_1 = n_2.scene;
+    const bool _e7 = airlight_vec_finite(p_1.light_position);
+    if (_e7) {
+        const bool _e11 = airlight_vec_finite(p_1.dir);
+        local_132 = _e11;
     } else {
         local_132 = false;
     }
-    bool _e12 = local_132;
-    if (_e12) {
-        const AirlightCanonical _e13 = airlight_canonical(p_1);
-        const AirlightCanonical _e14 = airlight_refined(p_1, _e13);
-        const AirlightResult _e15 = airlight_in_scatter_canonical(p_1, _e14);
-        r_6 = _e15;
+    bool _e13 = local_132;
+    if (_e13) {
+        g_24 = n_2.canonical;
+        if (!(n_2.exact)) {
+            const AirlightCanonical _e18 = airlight_canonical(p_1);
+            const AirlightCanonical _e19 = airlight_refined(p_1, _e18);
+            g_24 = _e19;
+        }
+        AirlightCanonical _e20 = g_24;
+        const AirlightResult _e21 = airlight_in_scatter_canonical(p_1, _e20);
+        r_6 = _e21;
     }
-    AirlightResult _e16 = r_6;
-    const AirlightResult _e17 = airlight_overflowed(_e16);
-    const AirlightResult airlightresult_10 = _e17;
+    AirlightResult _e22 = r_6;
+    const AirlightResult _e23 = airlight_overflowed(_e22);
+    const AirlightResult airlightresult_10 = _e23;
     return airlightresult_10;
 }
 
@@ -6177,8 +6198,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
         if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
         loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
         if (!loop_init_28) {
-            uint _e251 = step_2;
-            step_2 = (_e251 + 1u);
+            uint _e250 = step_2;
+            step_2 = (_e250 + 1u);
         }
         loop_init_28 = false;
         uint _e78 = step_2;
@@ -6202,8 +6223,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                 if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
                 loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
                 if (!loop_init_29) {
-                    uint _e157 = j_4;
-                    j_4 = (_e157 + 1u);
+                    uint _e156 = j_4;
+                    j_4 = (_e156 + 1u);
                 }
                 loop_init_29 = false;
                 uint _e96 = j_4;
@@ -6226,9 +6247,9 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                     const AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
-                        const AirlightResult _e129 = airlight_point_integral(_e122.scene);
-                        if ((_e129.status == AIRLIGHT_STATUS_INFINITE)) {
-                            const AirlightResult airlightresult_14 = _e129;
+                        const AirlightResult _e128 = airlight_node_integral(_e122);
+                        if ((_e128.status == AIRLIGHT_STATUS_INFINITE)) {
+                            const AirlightResult airlightresult_14 = _e128;
                             return airlightresult_14;
                         }
                         if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
@@ -6236,51 +6257,51 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                         } else {
                             local_134 = false;
                         }
-                        bool _e142 = local_134;
-                        if (_e142) {
-                            const AirlightResult airlightresult_15 = _e129;
+                        bool _e141 = local_134;
+                        if (_e141) {
+                            const AirlightResult airlightresult_15 = _e128;
                             return airlightresult_15;
                         }
-                        f = (_e129.in_scatter * _e122.weight);
+                        f = (_e128.in_scatter * _e122.weight);
                     }
-                    float _e146 = k_5;
-                    float _e148 = f;
-                    k_5 = (_e146 + (node_1.y * _e148));
-                    float _e151 = gauss;
-                    float _e153 = f;
-                    gauss = (_e151 + (node_1.z * _e153));
+                    float _e145 = k_5;
+                    float _e147 = f;
+                    k_5 = (_e145 + (node_1.y * _e147));
+                    float _e150 = gauss;
+                    float _e152 = f;
+                    gauss = (_e150 + (node_1.z * _e152));
                 }
             }
-            uint _e159 = slot_1;
-            float _e160 = a_16;
-            float _e161 = b_12;
-            float _e162 = k_5;
-            float _e164 = k_5;
-            float _e166 = gauss;
-            airlight_list_set(list_1, _e159, float4(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
-            uint _e171 = slot_1;
-            uint _e172 = count_2;
-            if ((_e171 == _e172)) {
-                uint _e174 = count_2;
-                count_2 = (_e174 + 1u);
+            uint _e158 = slot_1;
+            float _e159 = a_16;
+            float _e160 = b_12;
+            float _e161 = k_5;
+            float _e163 = k_5;
+            float _e165 = gauss;
+            airlight_list_set(list_1, _e158, float4(_e159, _e160, (_e161 * hw_3), abs(((_e163 * hw_3) - (_e165 * hw_3)))));
+            uint _e170 = slot_1;
+            uint _e171 = count_2;
+            if ((_e170 == _e171)) {
+                uint _e173 = count_2;
+                count_2 = (_e173 + 1u);
             }
-            uint _e177 = count_2;
-            if ((_e177 < _e6.panels)) {
-                uint _e181 = count_2;
-                a_16 = _e6.edges[min(uint(_e181), 12u)];
-                uint _e184 = count_2;
-                b_12 = _e6.edges[min(uint((_e184 + 1u)), 12u)];
-                uint _e188 = count_2;
-                slot_1 = _e188;
+            uint _e176 = count_2;
+            if ((_e176 < _e6.panels)) {
+                uint _e180 = count_2;
+                a_16 = _e6.edges[min(uint(_e180), 12u)];
+                uint _e183 = count_2;
+                b_12 = _e6.edges[min(uint((_e183 + 1u)), 12u)];
+                uint _e187 = count_2;
+                slot_1 = _e187;
             } else {
-                bool _e189 = queued;
-                if (_e189) {
-                    float _e190 = queued_lo;
-                    a_16 = _e190;
-                    float _e191 = queued_hi;
-                    b_12 = _e191;
-                    uint _e192 = count_2;
-                    slot_1 = _e192;
+                bool _e188 = queued;
+                if (_e188) {
+                    float _e189 = queued_lo;
+                    a_16 = _e189;
+                    float _e190 = queued_hi;
+                    b_12 = _e190;
+                    uint _e191 = count_2;
+                    slot_1 = _e191;
                     queued = false;
                 } else {
                     split = false;
@@ -6291,51 +6312,51 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                         if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
                         loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
                         if (!loop_init_30) {
-                            uint _e246 = tries;
-                            tries = (_e246 + 1u);
+                            uint _e245 = tries;
+                            tries = (_e245 + 1u);
                         }
                         loop_init_30 = false;
-                        uint _e198 = tries;
-                        if ((_e198 < _e6.max_panels)) {
+                        uint _e197 = tries;
+                        if ((_e197 < _e6.max_panels)) {
                         } else {
                             break;
                         }
                         {
-                            AirlightPanelList _e201 = list_1;
-                            uint _e202 = count_2;
-                            const AirlightListScan _e203 = airlight_list_scan(_e201, _e202);
-                            float total_4 = _e203.total;
-                            uint worst_1 = _e203.worst;
-                            if (!(!((_e203.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e214 = count_2;
-                                local_135 = (_e214 == _e6.max_panels);
+                            AirlightPanelList _e200 = list_1;
+                            uint _e201 = count_2;
+                            const AirlightListScan _e202 = airlight_list_scan(_e200, _e201);
+                            float total_4 = _e202.total;
+                            uint worst_1 = _e202.worst;
+                            if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
+                                uint _e213 = count_2;
+                                local_135 = (_e213 == _e6.max_panels);
                             } else {
                                 local_135 = true;
                             }
-                            bool _e218 = local_135;
-                            if (!(_e218)) {
-                                const bool _e222 = airlight_is_finite(total_4);
-                                local_136 = !(_e222);
+                            bool _e217 = local_135;
+                            if (!(_e217)) {
+                                const bool _e221 = airlight_is_finite(total_4);
+                                local_136 = !(_e221);
                             } else {
                                 local_136 = true;
                             }
-                            bool _e225 = local_136;
-                            if (_e225) {
+                            bool _e224 = local_136;
+                            if (_e224) {
                                 break;
                             }
-                            AirlightPanelList _e226 = list_1;
-                            const float4 _e227 = airlight_list_get(_e226, worst_1);
-                            float wa_1 = _e227.x;
-                            float wb_1 = _e227.y;
+                            AirlightPanelList _e225 = list_1;
+                            const float4 _e226 = airlight_list_get(_e225, worst_1);
+                            float wa_1 = _e226.x;
+                            float wb_1 = _e226.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
                                 local_137 = (mid_3 < wb_1);
                             } else {
                                 local_137 = false;
                             }
-                            bool _e238 = local_137;
-                            if (!(_e238)) {
-                                airlight_list_set(list_1, worst_1, float4(_e227.xyz, 0.0));
+                            bool _e237 = local_137;
+                            if (!(_e237)) {
+                                airlight_list_set(list_1, worst_1, float4(_e226.xyz, 0.0));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -6348,20 +6369,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             break;
                         }
                     }
-                    bool _e248 = split;
-                    if (!(_e248)) {
+                    bool _e247 = split;
+                    if (!(_e247)) {
                         break;
                     }
                 }
             }
         }
     }
-    AirlightPanelList _e253 = list_1;
-    uint _e254 = count_2;
-    const AirlightListScan _e255 = airlight_list_scan(_e253, _e254);
-    float total_5 = _e255.total;
-    const bool _e257 = airlight_is_finite(total_5);
-    if (!(_e257)) {
+    AirlightPanelList _e252 = list_1;
+    uint _e253 = count_2;
+    const AirlightListScan _e254 = airlight_list_scan(_e252, _e253);
+    float total_5 = _e254.total;
+    const bool _e256 = airlight_is_finite(total_5);
+    if (!(_e256)) {
         const AirlightResult airlightresult_16 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_16;
     }

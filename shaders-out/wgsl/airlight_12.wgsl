@@ -101,6 +101,7 @@ struct AirlightOuter {
     sin_r: f32,
     alpha_r: f32,
     delta: vec3<f32>,
+    d: f32,
 }
 
 struct AirlightLobe {
@@ -116,6 +117,8 @@ struct AirlightLobe {
 struct AirlightNode {
     scene: AirlightScene,
     weight: f32,
+    canonical: AirlightCanonical,
+    exact: bool,
 }
 
 const AIRLIGHT_TERMS: u32 = 12u;
@@ -4441,10 +4444,10 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     let _e113 = airlight_normalize(dir);
     let _e114 = airlight_normalize(w_5);
-    let n_2 = -(cross(_e113, _e114));
+    let n_3 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_15;
-    out_2.d_c = dot(n_2, _e119);
+    out_2.d_c = dot(n_3, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -4815,7 +4818,7 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
 
 fn airlight_outer_point(s_21: AirlightScene, max_panels: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f));
+    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f);
 }
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
@@ -4870,157 +4873,158 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     g_20.l = l_3;
     let _e67 = u_1;
     g_20.u = _e67;
+    g_20.d = _e7;
     g_20.cos_a = cos_a_1;
     g_20.sin_a = _e41;
-    let _e84 = airlight_angle(cos_a_1, _e41);
-    let first = abs((1.5707964f - _e84));
+    let _e85 = airlight_angle(cos_a_1, _e41);
+    let first = abs((1.5707964f - _e85));
     cuts_1[0] = first;
     cuts_1[1] = (AIRLIGHT_PI - first);
     if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        let _e97 = airlight_normalize(s_22.brdf_view);
-        let _e103 = airlight_normalize((((2f * dot(_e37, _e97)) * _e37) - _e97));
-        let _e104 = u_1;
-        let x_27 = dot(_e103, _e104);
-        let _e106 = u_1;
-        let y_10 = dot(_e103, cross(l_3, _e106));
-        g_20.cos_r = dot(_e103, l_3);
+        let _e98 = airlight_normalize(s_22.brdf_view);
+        let _e104 = airlight_normalize((((2f * dot(_e37, _e98)) * _e37) - _e98));
+        let _e105 = u_1;
+        let x_27 = dot(_e104, _e105);
+        let _e107 = u_1;
+        let y_10 = dot(_e104, cross(l_3, _e107));
+        g_20.cos_r = dot(_e104, l_3);
         g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
-        let _e118 = g_20.cos_r;
-        let _e120 = g_20.sin_r;
-        let _e121 = airlight_angle(_e118, _e120);
-        g_20.alpha_r = _e121;
-        let _e123 = g_20.sin_r;
-        if (_e123 > 0f) {
-            let _e132 = airlight_angle(x_27, abs(y_10));
-            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e132);
-            let _e137 = g_20.sin_r;
-            let _e141 = g_20.sin_r;
-            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e137), (-(y_10) / _e141));
+        let _e119 = g_20.cos_r;
+        let _e121 = g_20.sin_r;
+        let _e122 = airlight_angle(_e119, _e121);
+        g_20.alpha_r = _e122;
+        let _e124 = g_20.sin_r;
+        if (_e124 > 0f) {
+            let _e133 = airlight_angle(x_27, abs(y_10));
+            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e133);
+            let _e138 = g_20.sin_r;
+            let _e142 = g_20.sin_r;
+            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e138), (-(y_10) / _e142));
         }
-        let _e146 = g_20.alpha_r;
-        let first_r = abs((1.5707964f - _e146));
+        let _e147 = g_20.alpha_r;
+        let first_r = abs((1.5707964f - _e147));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        let _e155 = g_20.alpha_r;
-        cuts_1[4] = _e155;
+        let _e156 = g_20.alpha_r;
+        cuts_1[4] = _e156;
         if (s_22.brdf_exponent > 1f) {
             let width_3 = (1f / sqrt(s_22.brdf_exponent));
-            let _e165 = g_20.alpha_r;
-            cuts_1[5] = (_e165 - (1.5f * width_3));
-            let _e171 = g_20.alpha_r;
-            cuts_1[6] = (_e171 + (1.5f * width_3));
-            let _e177 = g_20.alpha_r;
-            cuts_1[7] = (_e177 - (4f * width_3));
-            let _e183 = g_20.alpha_r;
-            cuts_1[8] = (_e183 + (4f * width_3));
+            let _e166 = g_20.alpha_r;
+            cuts_1[5] = (_e166 - (1.5f * width_3));
+            let _e172 = g_20.alpha_r;
+            cuts_1[6] = (_e172 + (1.5f * width_3));
+            let _e178 = g_20.alpha_r;
+            cuts_1[7] = (_e178 - (4f * width_3));
+            let _e184 = g_20.alpha_r;
+            cuts_1[8] = (_e184 + (4f * width_3));
         }
-        let meet = cross(_e37, _e103);
-        let _e188 = airlight_safe_length(meet);
-        if (_e188 > AIRLIGHT_FLT_EPS) {
-            let _e196 = airlight_acos(clamp((dot(meet, l_3) / _e188), -1f, 1f));
-            cuts_1[9] = _e196;
-            cuts_1[10] = (AIRLIGHT_PI - _e196);
+        let meet = cross(_e37, _e104);
+        let _e189 = airlight_safe_length(meet);
+        if (_e189 > AIRLIGHT_FLT_EPS) {
+            let _e197 = airlight_acos(clamp((dot(meet, l_3) / _e189), -1f, 1f));
+            cuts_1[9] = _e197;
+            cuts_1[10] = (AIRLIGHT_PI - _e197);
         }
     }
     loop {
-        let _e203 = i_17;
-        if (_e203 < 11u) {
+        let _e204 = i_17;
+        if (_e204 < 11u) {
         } else {
             break;
         }
         {
-            let _e206 = i_17;
-            let c_10 = cuts_1[_e206];
-            let _e209 = i_17;
-            j_3 = _e209;
+            let _e207 = i_17;
+            let c_10 = cuts_1[_e207];
+            let _e210 = i_17;
+            j_3 = _e210;
             loop {
-                let _e211 = j_3;
-                if (_e211 > 0u) {
-                    let _e216 = j_3;
-                    let _e220 = cuts_1[(_e216 - 1u)];
-                    local_109 = (_e220 > c_10);
+                let _e212 = j_3;
+                if (_e212 > 0u) {
+                    let _e217 = j_3;
+                    let _e221 = cuts_1[(_e217 - 1u)];
+                    local_109 = (_e221 > c_10);
                 } else {
                     local_109 = false;
                 }
-                let _e223 = local_109;
-                if _e223 {
+                let _e224 = local_109;
+                if _e224 {
                 } else {
                     break;
                 }
                 {
-                    let _e224 = j_3;
-                    let _e226 = j_3;
-                    let _e230 = cuts_1[(_e226 - 1u)];
-                    cuts_1[_e224] = _e230;
-                    let _e231 = j_3;
-                    j_3 = (_e231 - 1u);
+                    let _e225 = j_3;
+                    let _e227 = j_3;
+                    let _e231 = cuts_1[(_e227 - 1u)];
+                    cuts_1[_e225] = _e231;
+                    let _e232 = j_3;
+                    j_3 = (_e232 - 1u);
                 }
             }
-            let _e234 = j_3;
-            cuts_1[_e234] = c_10;
+            let _e235 = j_3;
+            cuts_1[_e235] = c_10;
         }
         continuing {
-            let _e237 = i_17;
-            i_17 = (_e237 + 1u);
+            let _e238 = i_17;
+            i_17 = (_e238 + 1u);
         }
     }
     loop {
-        let _e243 = i_18;
-        if (_e243 < 11u) {
+        let _e244 = i_18;
+        if (_e244 < 11u) {
         } else {
             break;
         }
         {
-            let _e246 = i_18;
-            let _e248 = cuts_1[_e246];
-            let _e250 = k_3;
-            let _e252 = g_20.gamma[_e250];
-            if (_e248 > _e252) {
-                let _e256 = i_18;
-                let _e258 = cuts_1[_e256];
-                local_110 = (_e258 < AIRLIGHT_PI);
+            let _e247 = i_18;
+            let _e249 = cuts_1[_e247];
+            let _e251 = k_3;
+            let _e253 = g_20.gamma[_e251];
+            if (_e249 > _e253) {
+                let _e257 = i_18;
+                let _e259 = cuts_1[_e257];
+                local_110 = (_e259 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            let _e262 = local_110;
-            if _e262 {
-                let _e263 = k_3;
-                k_3 = (_e263 + 1u);
-                let _e267 = k_3;
-                let _e269 = i_18;
-                let _e271 = cuts_1[_e269];
-                g_20.gamma[_e267] = _e271;
+            let _e263 = local_110;
+            if _e263 {
+                let _e264 = k_3;
+                k_3 = (_e264 + 1u);
+                let _e268 = k_3;
+                let _e270 = i_18;
+                let _e272 = cuts_1[_e270];
+                g_20.gamma[_e268] = _e272;
             }
         }
         continuing {
-            let _e273 = i_18;
-            i_18 = (_e273 + 1u);
+            let _e274 = i_18;
+            i_18 = (_e274 + 1u);
         }
     }
-    let _e276 = k_3;
-    g_20.gamma[(_e276 + 1u)] = AIRLIGHT_PI;
-    let _e282 = k_3;
-    g_20.panels = (_e282 + 1u);
+    let _e277 = k_3;
+    g_20.gamma[(_e277 + 1u)] = AIRLIGHT_PI;
+    let _e283 = k_3;
+    g_20.panels = (_e283 + 1u);
     loop {
-        let _e287 = i_19;
-        let _e289 = g_20.panels;
-        if (_e287 <= _e289) {
+        let _e288 = i_19;
+        let _e290 = g_20.panels;
+        if (_e288 <= _e290) {
         } else {
             break;
         }
         {
-            let _e292 = i_19;
-            let _e294 = i_19;
-            g_20.edges[_e292] = f32(_e294);
+            let _e293 = i_19;
+            let _e295 = i_19;
+            g_20.edges[_e293] = f32(_e295);
         }
         continuing {
-            let _e297 = i_19;
-            i_19 = (_e297 + 1u);
+            let _e298 = i_19;
+            i_19 = (_e298 + 1u);
         }
     }
-    let _e299 = g_20;
-    return _e299;
+    let _e300 = g_20;
+    return _e300;
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
@@ -5502,6 +5506,7 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
     var ds: f32 = 1f;
 
     p = s_24;
+    let none = AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -5512,31 +5517,38 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
         let gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
         let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
-            let _e45 = p;
-            return AirlightNode(_e45, 0f);
+            let _e53 = p;
+            return AirlightNode(_e53, 0f, none, false);
         }
-        let _e48 = airlight_cos_sin_half_turn(gamma_1);
-        let _e53 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e48.x, _e48.y);
-        if !((_e53 > 0f)) {
-            let _e57 = p;
-            return AirlightNode(_e57, 0f);
+        let _e57 = airlight_cos_sin_half_turn(gamma_1);
+        let _e62 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e57.x, _e57.y);
+        if !((_e62 > 0f)) {
+            let _e66 = p;
+            return AirlightNode(_e66, 0f, none, false);
         }
         if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-            let _e72 = airlight_cos_sin_half_turn(_e53);
-            let arc = (2f * (((g_23.cos_a * _e48.x) * _e53) + ((g_23.sin_a * _e48.y) * _e72.y)));
+            let _e82 = airlight_cos_sin_half_turn(_e62);
+            let arc = (2f * (((g_23.cos_a * _e57.x) * _e62) + ((g_23.sin_a * _e57.y) * _e82.y)));
             weight = ((s_24.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_3 = s_24.brdf_exponent;
-            let _e89 = airlight_lobe_arcs(g_23, _e48, gamma_1, _e53, n_3);
-            weight = (((s_24.brdf_scale * (n_3 + 2f)) * 0.15915494f) * _e89);
+            let n_4 = s_24.brdf_exponent;
+            let _e99 = airlight_lobe_arcs(g_23, _e57, gamma_1, _e62, n_4);
+            weight = (((s_24.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e99);
         }
-        p.dir = ((_e48.x * g_23.l) + (_e48.y * g_23.u));
+        p.dir = ((_e57.x * g_23.l) + (_e57.y * g_23.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
-        let _e105 = p;
-        let _e106 = weight;
-        return AirlightNode(_e105, ((_e106 * _e48.y) * jacobian));
+        let _e116 = airlight_normalize(s_24.light_axis);
+        let axis_l = dot(_e116, g_23.l);
+        let axis_u = dot(_e116, g_23.u);
+        let sin_g_1 = max(_e57.y, 0f);
+        let h_8 = (g_23.d * sin_g_1);
+        let d_c_2 = select(0f, ((_e57.x * axis_u) - (sin_g_1 * axis_l)), (h_8 > 0f));
+        let exact = AirlightCanonical(h_8, (g_23.d * _e57.x), ((_e57.x * axis_l) + (sin_g_1 * axis_u)), d_c_2, 0f, 0f, true);
+        let _e145 = p;
+        let _e146 = weight;
+        return AirlightNode(_e145, ((_e146 * _e57.y) * jacobian), exact, true);
     }
     if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_19;
@@ -5544,14 +5556,14 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
             at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
             ds = (g_23.scale * cosh(x_19));
         }
-        let _e130 = at_1;
-        p.light_position = (g_23.a + (_e130 * g_23.e));
-        let _e134 = p;
-        let _e135 = ds;
-        return AirlightNode(_e134, _e135);
+        let _e171 = at_1;
+        p.light_position = (g_23.a + (_e171 * g_23.e));
+        let _e175 = p;
+        let _e176 = ds;
+        return AirlightNode(_e175, _e176, none, false);
     }
-    let _e137 = p;
-    return AirlightNode(_e137, 1f);
+    let _e179 = p;
+    return AirlightNode(_e179, 1f, none, false);
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
@@ -5570,27 +5582,34 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
     return r_5;
 }
 
-fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
+fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
     var local_132: bool;
+    var g_24: AirlightCanonical;
 
-    let _e6 = airlight_vec_finite(p_1.light_position);
-    if _e6 {
-        let _e10 = airlight_vec_finite(p_1.dir);
-        local_132 = _e10;
+    let p_1 = n_2.scene;
+    let _e7 = airlight_vec_finite(p_1.light_position);
+    if _e7 {
+        let _e11 = airlight_vec_finite(p_1.dir);
+        local_132 = _e11;
     } else {
         local_132 = false;
     }
-    let _e12 = local_132;
-    if _e12 {
-        let _e13 = airlight_canonical(p_1);
-        let _e14 = airlight_refined(p_1, _e13);
-        let _e15 = airlight_in_scatter_canonical(p_1, _e14);
-        r_6 = _e15;
+    let _e13 = local_132;
+    if _e13 {
+        g_24 = n_2.canonical;
+        if !(n_2.exact) {
+            let _e18 = airlight_canonical(p_1);
+            let _e19 = airlight_refined(p_1, _e18);
+            g_24 = _e19;
+        }
+        let _e20 = g_24;
+        let _e21 = airlight_in_scatter_canonical(p_1, _e20);
+        r_6 = _e21;
     }
-    let _e16 = r_6;
-    let _e17 = airlight_overflowed(_e16);
-    return _e17;
+    let _e22 = r_6;
+    let _e23 = airlight_overflowed(_e22);
+    return _e23;
 }
 
 fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
@@ -5667,109 +5686,109 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                     let _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0f;
                     if (_e122.weight != 0f) {
-                        let _e129 = airlight_point_integral(_e122.scene);
-                        if (_e129.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e129;
+                        let _e128 = airlight_node_integral(_e122);
+                        if (_e128.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e128;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_134 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_134 = false;
                         }
-                        let _e142 = local_134;
-                        if _e142 {
-                            return _e129;
+                        let _e141 = local_134;
+                        if _e141 {
+                            return _e128;
                         }
-                        f = (_e129.in_scatter * _e122.weight);
+                        f = (_e128.in_scatter * _e122.weight);
                     }
-                    let _e146 = k_5;
-                    let _e148 = f;
-                    k_5 = (_e146 + (node_1.y * _e148));
-                    let _e151 = gauss;
-                    let _e153 = f;
-                    gauss = (_e151 + (node_1.z * _e153));
+                    let _e145 = k_5;
+                    let _e147 = f;
+                    k_5 = (_e145 + (node_1.y * _e147));
+                    let _e150 = gauss;
+                    let _e152 = f;
+                    gauss = (_e150 + (node_1.z * _e152));
                 }
                 continuing {
-                    let _e157 = j_4;
-                    j_4 = (_e157 + 1u);
+                    let _e156 = j_4;
+                    j_4 = (_e156 + 1u);
                 }
             }
-            let _e159 = slot_1;
-            let _e160 = a_16;
-            let _e161 = b_12;
-            let _e162 = k_5;
-            let _e164 = k_5;
-            let _e166 = gauss;
-            airlight_list_set((&list_1), _e159, vec4<f32>(_e160, _e161, (_e162 * hw_3), abs(((_e164 * hw_3) - (_e166 * hw_3)))));
-            let _e171 = slot_1;
-            let _e172 = count_2;
-            if (_e171 == _e172) {
-                let _e174 = count_2;
-                count_2 = (_e174 + 1u);
+            let _e158 = slot_1;
+            let _e159 = a_16;
+            let _e160 = b_12;
+            let _e161 = k_5;
+            let _e163 = k_5;
+            let _e165 = gauss;
+            airlight_list_set((&list_1), _e158, vec4<f32>(_e159, _e160, (_e161 * hw_3), abs(((_e163 * hw_3) - (_e165 * hw_3)))));
+            let _e170 = slot_1;
+            let _e171 = count_2;
+            if (_e170 == _e171) {
+                let _e173 = count_2;
+                count_2 = (_e173 + 1u);
             }
-            let _e177 = count_2;
-            if (_e177 < _e6.panels) {
-                let _e181 = count_2;
-                a_16 = _e6.edges[_e181];
-                let _e184 = count_2;
-                b_12 = _e6.edges[(_e184 + 1u)];
-                let _e188 = count_2;
-                slot_1 = _e188;
+            let _e176 = count_2;
+            if (_e176 < _e6.panels) {
+                let _e180 = count_2;
+                a_16 = _e6.edges[_e180];
+                let _e183 = count_2;
+                b_12 = _e6.edges[(_e183 + 1u)];
+                let _e187 = count_2;
+                slot_1 = _e187;
             } else {
-                let _e189 = queued;
-                if _e189 {
-                    let _e190 = queued_lo;
-                    a_16 = _e190;
-                    let _e191 = queued_hi;
-                    b_12 = _e191;
-                    let _e192 = count_2;
-                    slot_1 = _e192;
+                let _e188 = queued;
+                if _e188 {
+                    let _e189 = queued_lo;
+                    a_16 = _e189;
+                    let _e190 = queued_hi;
+                    b_12 = _e190;
+                    let _e191 = count_2;
+                    slot_1 = _e191;
                     queued = false;
                 } else {
                     split = false;
                     tries = 0u;
                     loop {
-                        let _e198 = tries;
-                        if (_e198 < _e6.max_panels) {
+                        let _e197 = tries;
+                        if (_e197 < _e6.max_panels) {
                         } else {
                             break;
                         }
                         {
-                            let _e201 = list_1;
-                            let _e202 = count_2;
-                            let _e203 = airlight_list_scan(_e201, _e202);
-                            let total_4 = _e203.total;
-                            let worst_1 = _e203.worst;
-                            if !(!((_e203.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e214 = count_2;
-                                local_135 = (_e214 == _e6.max_panels);
+                            let _e200 = list_1;
+                            let _e201 = count_2;
+                            let _e202 = airlight_list_scan(_e200, _e201);
+                            let total_4 = _e202.total;
+                            let worst_1 = _e202.worst;
+                            if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
+                                let _e213 = count_2;
+                                local_135 = (_e213 == _e6.max_panels);
                             } else {
                                 local_135 = true;
                             }
-                            let _e218 = local_135;
-                            if !(_e218) {
-                                let _e222 = airlight_is_finite(total_4);
-                                local_136 = !(_e222);
+                            let _e217 = local_135;
+                            if !(_e217) {
+                                let _e221 = airlight_is_finite(total_4);
+                                local_136 = !(_e221);
                             } else {
                                 local_136 = true;
                             }
-                            let _e225 = local_136;
-                            if _e225 {
+                            let _e224 = local_136;
+                            if _e224 {
                                 break;
                             }
-                            let _e226 = list_1;
-                            let _e227 = airlight_list_get(_e226, worst_1);
-                            let wa_1 = _e227.x;
-                            let wb_1 = _e227.y;
+                            let _e225 = list_1;
+                            let _e226 = airlight_list_get(_e225, worst_1);
+                            let wa_1 = _e226.x;
+                            let wb_1 = _e226.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
                                 local_137 = (mid_3 < wb_1);
                             } else {
                                 local_137 = false;
                             }
-                            let _e238 = local_137;
-                            if !(_e238) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e227.xyz, 0f));
+                            let _e237 = local_137;
+                            if !(_e237) {
+                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;
                             }
                             a_16 = wa_1;
@@ -5782,28 +5801,28 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             break;
                         }
                         continuing {
-                            let _e246 = tries;
-                            tries = (_e246 + 1u);
+                            let _e245 = tries;
+                            tries = (_e245 + 1u);
                         }
                     }
-                    let _e248 = split;
-                    if !(_e248) {
+                    let _e247 = split;
+                    if !(_e247) {
                         break;
                     }
                 }
             }
         }
         continuing {
-            let _e251 = step_2;
-            step_2 = (_e251 + 1u);
+            let _e250 = step_2;
+            step_2 = (_e250 + 1u);
         }
     }
-    let _e253 = list_1;
-    let _e254 = count_2;
-    let _e255 = airlight_list_scan(_e253, _e254);
-    let total_5 = _e255.total;
-    let _e257 = airlight_is_finite(total_5);
-    if !(_e257) {
+    let _e252 = list_1;
+    let _e253 = count_2;
+    let _e254 = airlight_list_scan(_e252, _e253);
+    let total_5 = _e254.total;
+    let _e256 = airlight_is_finite(total_5);
+    if !(_e256) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

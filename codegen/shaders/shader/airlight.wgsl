@@ -1942,6 +1942,8 @@ struct AirlightOuter {
     sin_r: f32,
     alpha_r: f32,
     delta: vec3<f32>,
+    /// A surface point's distance to the light.
+    d: f32,
 }
 
 fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
@@ -1990,7 +1992,7 @@ fn airlight_outer_point(s: AirlightScene, max_panels: u32) -> AirlightOuter {
     // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
     let zeros = array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3<f32>(0.0),
-        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0));
+        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0);
 }
 
 /// A surface point's outer integral (surface.rs SurfaceScene::integrate).
@@ -2023,6 +2025,7 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     }
     g.l = l;
     g.u = u;
+    g.d = d;
     g.cos_a = cos_a;
     g.sin_a = sin_a;
     // the pieces: where the normal's arc changes kind, |π/2 − α| and π − |π/2 − α|; for a Phong
@@ -2269,15 +2272,19 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
 }
 
 /// One node of an outer integral: the point-light ray it evaluates and the weight of its
-/// value; at weight 0 the node adds nothing and its ray is not evaluated (as the kernel's).
+/// value; at weight 0 the node adds nothing and its ray is not evaluated (as the kernel's). A
+/// surface point's ray comes with its canonical form (`exact`), known without a reduction.
 struct AirlightNode {
     scene: AirlightScene,
     weight: f32,
+    canonical: AirlightCanonical,
+    exact: bool,
 }
 
 /// The node at `x` of the outer integral `g` of `s`.
 fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNode {
     var p = s;
+    let none = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -2288,10 +2295,10 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
         let b = g.gamma[i + 1u];
         let gamma = a + (b - a) * t * t * (3.0 - t - t);
         let jacobian = (b - a) * 6.0 * t * (1.0 - t);
-        if (!(jacobian > 0.0)) { return AirlightNode(p, 0.0); }
+        if (!(jacobian > 0.0)) { return AirlightNode(p, 0.0, none, false); }
         let cs = airlight_cos_sin_half_turn(gamma);
         let psi = airlight_half_arc(g.cos_a, g.sin_a, cs.x, cs.y);
-        if (!(psi > 0.0)) { return AirlightNode(p, 0.0); }
+        if (!(psi > 0.0)) { return AirlightNode(p, 0.0, none, false); }
         var weight = 0.0;
         if (s.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
             // (ρ/π) ∫ (A + B cos x)⁺ over the arc = (ρ/π) 2(Aψ + B sin ψ)
@@ -2305,7 +2312,16 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        return AirlightNode(p, weight * cs.y * jacobian);
+        // its canonical form (surface.rs `integrate`): the light at x_h = d cos γ, h = d sin γ
+        // from the ray, the axis's cosines cos γ (ℓ·a) + sin γ (u·a) and cos γ (u·a) − sin γ (ℓ·a)
+        let axis = airlight_normalize(s.light_axis);
+        let axis_l = dot(axis, g.l);
+        let axis_u = dot(axis, g.u);
+        let sin_g = max(cs.y, 0.0);
+        let h = g.d * sin_g;
+        let d_c = select(0.0, cs.x * axis_u - sin_g * axis_l, h > 0.0);
+        let exact = AirlightCanonical(h, g.d * cs.x, cs.x * axis_l + sin_g * axis_u, d_c, 0.0, 0.0, true);
+        return AirlightNode(p, weight * cs.y * jacobian, exact, true);
     }
     if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         var at = x;
@@ -2315,9 +2331,9 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
             ds = g.scale * cosh(x);
         }
         p.light_position = g.a + at * g.e;
-        return AirlightNode(p, ds);
+        return AirlightNode(p, ds, none, false);
     }
-    return AirlightNode(p, 1.0);
+    return AirlightNode(p, 1.0, none, false);
 }
 
 /// In-scattered radiance L_m of a point light without a surface (scene.rs `Scene::in_scatter`):
@@ -2368,14 +2384,24 @@ fn airlight_overflowed(r: AirlightResult) -> AirlightResult {
     return r;
 }
 
-/// The ray integral of the point light of `p` (a node of an outer integral, or a validated point
-/// scene): 0 where the node's light or direction is not finite, (FLT_MAX, INFINITE) where the
-/// integral is not finite or the light is on the segment. The one place both public entries
-/// reach the canonical problem from.
+/// The ray integral of the point light of a validated point scene `p`: airlight_node_integral
+/// of its one node.
 fn airlight_point_integral(p: AirlightScene) -> AirlightResult {
+    return airlight_node_integral(AirlightNode(p, 1.0, AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false), false));
+}
+
+/// The ray integral of a node's point light (a node of an outer integral, or a point scene's),
+/// from the canonical form the node brings (`exact`: a surface point's ray) or else by the
+/// reduction: 0 where the node's light or direction is not finite, (FLT_MAX, INFINITE) where
+/// the integral is not finite or the light is on the segment. The one place every public entry
+/// reaches the canonical problem from.
+fn airlight_node_integral(n: AirlightNode) -> AirlightResult {
+    let p = n.scene;
     var r = AirlightResult(0.0, AIRLIGHT_STATUS_OK);
     if (airlight_vec_finite(p.light_position) && airlight_vec_finite(p.dir)) {
-        r = airlight_in_scatter_canonical(p, airlight_refined(p, airlight_canonical(p)));
+        var g = n.canonical;
+        if (!n.exact) { g = airlight_refined(p, airlight_canonical(p)); }
+        r = airlight_in_scatter_canonical(p, g);
     }
     return airlight_overflowed(r);
 }
@@ -2419,7 +2445,7 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
             let at = airlight_outer_node(s, g, w);
             var f = 0.0;
             if (at.weight != 0.0) {
-                let r = airlight_point_integral(at.scene);
+                let r = airlight_node_integral(at);
                 // a point light, or a node on the ray (the kernel's sum is then +∞ at once)
                 if (r.status == AIRLIGHT_STATUS_INFINITE) {
                     return r;
