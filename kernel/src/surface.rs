@@ -400,35 +400,38 @@ where
             }
             let phi_n = fr.n.2;
             let cosine = |phi: T| (fr.n.0 * cos_g + fr.n.1 * sin_g * (phi - phi_n).cos()).max(T::zero());
-            // the arc's ends, and a Phong lobe's ends and peak: the inner panels' edges
-            let mut edges = [T::zero(); 8];
-            let mut count = 0;
-            let mut push = |x: T| {
-                edges[count] = x;
-                count += 1;
+            let psi_r = if phong { half_arc(fr.r, cos_g, sin_g) } else { T::PI() };
+            if !(psi_r > T::zero()) {
+                return T::zero();
+            }
+            // the arc's ends, and a Phong lobe's ends and peak: the edges of the inner panels, which
+            // only a numerical inner integral needs
+            let circle = || {
+                let mut edges = [T::zero(); 8];
+                let mut count = 0;
+                let mut push = |x: T| {
+                    edges[count] = x;
+                    count += 1;
+                };
+                if psi_n < T::PI() {
+                    push(phi_n - psi_n);
+                    push(phi_n + psi_n);
+                }
+                if phong {
+                    if psi_r < T::PI() {
+                        push(fr.r.2 - psi_r);
+                        push(fr.r.2 + psi_r);
+                    }
+                    push(fr.r.2);
+                }
+                sorted_circle(&mut edges[..count], phi_n)
             };
-            if psi_n < T::PI() {
-                push(phi_n - psi_n);
-                push(phi_n + psi_n);
-            }
-            if phong {
-                let psi_r = half_arc(fr.r, cos_g, sin_g);
-                if !(psi_r > T::zero()) {
-                    return T::zero();
-                }
-                if psi_r < T::PI() {
-                    push(fr.r.2 - psi_r);
-                    push(fr.r.2 + psi_r);
-                }
-                push(fr.r.2);
-            }
-            let circle = sorted_circle(&mut edges[..count], phi_n);
             // f_r (n·ω)⁺ at φ: its sign is constant between the edges, so a panel where it
             // vanishes at the middle is skipped
             let geometric = |phi: T| cosine(phi) * self.brdf_at(&fr, direction(cos_g, sin_g, phi));
             let inner_sum = |f: &mut dyn FnMut(T) -> T| -> T {
                 let mut sum = T::zero();
-                for pair in circle.windows(2) {
+                for pair in circle().windows(2) {
                     let (a, b) = (pair[0], pair[1]);
                     if !(b > a) || !(geometric((a + b) * T::lit(0.5)) > T::zero()) {
                         continue;
