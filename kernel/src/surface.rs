@@ -93,6 +93,12 @@ pub const LOBE_RULE: &[(f64, f64)] = &crate::expansion::gauss_table::GL10;
 /// what lies beyond adds less than `2π·1e-9` of the peak, far below the shaders' target of 1e-4.
 pub const LOBE_FLOOR: f64 = 1e-9;
 
+/// The loosest outer tolerances at which [`SurfaceScene::air_light_counted`] takes a Phong lobe
+/// lit by a light without an axis by [`lobe_arcs`] instead of adaptive quadrature: from `2e-4`
+/// the inner integrals' tolerance (a tenth of the outer) is at least the `2e-5` of the lobe's
+/// peak integral that `lobe_arcs` is held to (its test below; 1.0e-5 measured).
+pub const FIXED_LOBE_TOLERANCE: f64 = 2e-4;
+
 /// A validated surface point lit by air-light of a point light.
 #[derive(Clone, Copy, Debug)]
 pub struct SurfaceScene<T: Real, D, P> {
@@ -313,11 +319,14 @@ where
     }
 
     /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate (no finer than
-    /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated.
+    /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated. From
+    /// [`FIXED_LOBE_TOLERANCE`] up, a Phong lobe lit by a light without an axis is taken by
+    /// [`lobe_arcs`], as in the shaders.
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
-        self.integrate(tolerance, MAX_SURFACE_PANELS, false, |g, phys| default_panels(g, phys, control).0)
+        let fixed_lobe = tolerance >= T::lit(FIXED_LOBE_TOLERANCE);
+        self.integrate(tolerance, MAX_SURFACE_PANELS, fixed_lobe, |g, phys| default_panels(g, phys, control).0)
     }
 
     /// What the shaders compute (fixed cost): the outer rule of `outer_rule` to
