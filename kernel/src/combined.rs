@@ -14,6 +14,7 @@ use crate::light::LightDistribution;
 use crate::panels::{integrate_piece, Control, Running};
 use crate::phase::PhaseFunction;
 use crate::real::{hypot1, Real};
+use crate::scene::{Medium, PointLight};
 use crate::scalar::Scalar;
 use crate::special::en_scaled;
 
@@ -30,6 +31,13 @@ pub struct Physics<'a, T, D, P> {
     pub light: &'a D,
     /// Phase function `P`.
     pub phase: &'a P,
+}
+
+impl<'a, T: Real, D, P> Physics<'a, T, D, P> {
+    /// The physics of a point light `light` in `medium` with the phase function `phase`.
+    pub fn new(light: &'a PointLight<T, D>, medium: &Medium<T>, phase: &'a P) -> Self {
+        Physics { sigma_s: medium.sigma_s, sigma_t: medium.sigma_t, intensity: light.intensity, light: &light.distribution, phase }
+    }
 }
 
 /// `F(y) = D(c(y))·P(μ(y))` on one half (module docs of [`crate::integrals`]):

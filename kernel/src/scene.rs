@@ -150,13 +150,7 @@ where
     }
 
     fn physics(&self) -> Physics<'_, T, D, P> {
-        Physics {
-            sigma_s: self.medium.sigma_s,
-            sigma_t: self.medium.sigma_t,
-            intensity: self.light.intensity,
-            light: &self.light.distribution,
-            phase: &self.phase,
-        }
+        Physics::new(&self.light, &self.medium, &self.phase)
     }
 
     /// In-scattered radiance `L_m` (docs/DESIGN.md §1), error-controlled: panels with
@@ -200,8 +194,7 @@ where
 
     /// [`Scene::in_scatter_panels`] and the number of panels it evaluated.
     pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>) -> (T, usize) {
-        const { assert!(matches!(N, 4 | 6 | 8 | 10 | 12 | 16), "panels take 4, 6, 8, 10, 12 or 16 Gauss–Legendre nodes") };
-        in_scatter_counted::<T, D, P, Production, N>(&self.canonical, &self.physics(), Method::Panels(control), &Production)
+        panels_with_nodes::<T, D, P, N>(&self.canonical, &self.physics(), control)
     }
 
     /// `L_m` with one `N`-term expansion per piece (the paper's fixed-cost method).
@@ -384,6 +377,19 @@ where
     } else {
         in_scatter_counted::<T, D, P, Production, 8>(g, phys, method, &Production)
     }
+}
+
+/// `L_m` of the canonical problem `g` by error-controlled panels with `N` Gauss–Legendre nodes
+/// each (`N` ∈ {4, 6, 8, 10, 12, 16}, the tabulated rules; any other count is a compile error),
+/// and the panels evaluated: [`Scene::in_scatter_panels_counted`] without a scene.
+pub(crate) fn panels_with_nodes<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: Control<T>) -> (T, usize)
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    const { assert!(matches!(N, 4 | 6 | 8 | 10 | 12 | 16), "panels take 4, 6, 8, 10, 12 or 16 Gauss–Legendre nodes") };
+    in_scatter_counted::<T, D, P, Production, N>(g, phys, Method::Panels(control), &Production)
 }
 
 /// In-scattered radiance with the defaults (error-controlled panels), checked.

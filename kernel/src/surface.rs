@@ -29,10 +29,9 @@ use crate::light::LightDistribution;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 use crate::panels::Control;
-use crate::combined::{in_scatter_counted, Method, Physics};
+use crate::combined::Physics;
 use crate::geometry::Canonical;
-use crate::integrals::Production;
-use crate::scene::{default_panels, validate, Medium, PointLight, Ray};
+use crate::scene::{default_panels, panels_with_nodes, validate, Medium, PointLight, Ray};
 #[cfg(doc)]
 use crate::scene::Scene;
 
@@ -337,8 +336,7 @@ where
     /// Phong surfaces lit by a light without an axis, where the hemisphere's inner integral needs
     /// no rays (Lambert's in closed form) and the outer one is the only loop of rays.
     pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
-        const { assert!(matches!(N, 4 | 6 | 8 | 10 | 12 | 16), "panels take 4, 6, 8, 10, 12 or 16 Gauss–Legendre nodes") };
-        self.integrate(control.tolerance, max_panels, true, |g, phys| in_scatter_counted::<T, D, P, Production, N>(g, phys, Method::Panels(control), &Production).0)
+        self.integrate(control.tolerance, max_panels, true, |g, phys| panels_with_nodes::<T, D, P, N>(g, phys, control).0)
     }
 
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
@@ -367,13 +365,7 @@ where
         let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
         let mut rays = 0;
-        let phys = Physics {
-            sigma_s: self.medium.sigma_s,
-            sigma_t: self.medium.sigma_t,
-            intensity: self.light.intensity,
-            light: &self.light.distribution,
-            phase: &self.phase,
-        };
+        let phys = Physics::new(&self.light, &self.medium, &self.phase);
         // the light's axis in the frame (ℓ, e₁, e₂)
         let axis = normalize(self.light.distribution.axis());
         let (axis_l, axis_e1, axis_e2) = (dot(axis, fr.l), dot(axis, fr.e1), dot(axis, fr.e2));
@@ -491,15 +483,14 @@ where
         turning(fr.n).into_iter().for_each(&mut push);
         if phong {
             turning(fr.r).into_iter().for_each(&mut push);
-            let peak = alpha_r;
-            push(peak);
+            push(alpha_r);
             if let Brdf::Phong { exponent, .. } = self.brdf {
                 // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
                 if exponent > T::one() {
                     for k in [1.5, 4.0] {
                         let width = T::lit(k) / exponent.sqrt();
-                        push(peak - width);
-                        push(peak + width);
+                        push(alpha_r - width);
+                        push(alpha_r + width);
                     }
                 }
             }

@@ -199,7 +199,7 @@ fn light_angle_route_meets_its_tolerance() {
         let mut worst = (0.0f64, "");
         for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
             let s = c.rec.cast::<T>().scene().unwrap();
-            let phys = Physics { sigma_s: s.medium().sigma_s, sigma_t: s.medium().sigma_t, intensity: s.light().intensity, light: &s.light().distribution, phase: s.phase() };
+            let phys = Physics::new(s.light(), s.medium(), s.phase());
             let slot = counts.entry(c.category.as_str()).or_default();
             match whole_segment::<T, _, _, N>(s.canonical(), &phys, &control) {
                 Route::Taken(v) => {
