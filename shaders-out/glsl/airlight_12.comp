@@ -100,6 +100,8 @@ struct AirlightOuter {
     float alpha_r;
     vec3 delta;
     float d;
+    float axis_l;
+    float axis_u;
 };
 struct AirlightLobe {
     float a;
@@ -4830,11 +4832,11 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
 
 AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels) {
     float zeros[13] = float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    return AirlightOuter(s_21.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0);
+    return AirlightOuter(s_21.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0);
 }
 
 AirlightOuter airlight_surface(AirlightScene s_22) {
-    AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0);
+    AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
     bool local_108 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
@@ -4885,163 +4887,167 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
     vec3 _e67 = u_1;
     g_20.u = _e67;
     g_20.d = _e7;
+    vec3 _e70 = airlight_normalize(s_22.light_axis);
+    g_20.axis_l = dot(_e70, l_3);
+    vec3 _e74 = u_1;
+    g_20.axis_u = dot(_e70, _e74);
     g_20.cos_a = cos_a_1;
     g_20.sin_a = _e41;
-    float _e85 = airlight_angle(cos_a_1, _e41);
-    float first = abs((1.5707964 - _e85));
+    float _e92 = airlight_angle(cos_a_1, _e41);
+    float first = abs((1.5707964 - _e92));
     cuts_1[0] = first;
     cuts_1[1] = (AIRLIGHT_PI - first);
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        vec3 _e98 = airlight_normalize(s_22.brdf_view);
-        vec3 _e104 = airlight_normalize((((2.0 * dot(_e37, _e98)) * _e37) - _e98));
-        vec3 _e105 = u_1;
-        float x_27 = dot(_e104, _e105);
-        vec3 _e107 = u_1;
-        float y_10 = dot(_e104, cross(l_3, _e107));
-        g_20.cos_r = dot(_e104, l_3);
+        vec3 _e105 = airlight_normalize(s_22.brdf_view);
+        vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
+        vec3 _e112 = u_1;
+        float x_27 = dot(_e111, _e112);
+        vec3 _e114 = u_1;
+        float y_10 = dot(_e111, cross(l_3, _e114));
+        g_20.cos_r = dot(_e111, l_3);
         g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
-        float _e119 = g_20.cos_r;
-        float _e121 = g_20.sin_r;
-        float _e122 = airlight_angle(_e119, _e121);
-        g_20.alpha_r = _e122;
-        float _e124 = g_20.sin_r;
-        if ((_e124 > 0.0)) {
-            float _e133 = airlight_angle(x_27, abs(y_10));
-            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e133);
-            float _e138 = g_20.sin_r;
-            float _e142 = g_20.sin_r;
-            g_20.delta = vec3(-(phi_r), (x_27 / _e138), (-(y_10) / _e142));
+        float _e126 = g_20.cos_r;
+        float _e128 = g_20.sin_r;
+        float _e129 = airlight_angle(_e126, _e128);
+        g_20.alpha_r = _e129;
+        float _e131 = g_20.sin_r;
+        if ((_e131 > 0.0)) {
+            float _e140 = airlight_angle(x_27, abs(y_10));
+            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
+            float _e145 = g_20.sin_r;
+            float _e149 = g_20.sin_r;
+            g_20.delta = vec3(-(phi_r), (x_27 / _e145), (-(y_10) / _e149));
         }
-        float _e147 = g_20.alpha_r;
-        float first_r = abs((1.5707964 - _e147));
+        float _e154 = g_20.alpha_r;
+        float first_r = abs((1.5707964 - _e154));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        float _e156 = g_20.alpha_r;
-        cuts_1[4] = _e156;
+        float _e163 = g_20.alpha_r;
+        cuts_1[4] = _e163;
         if ((s_22.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
-            float _e166 = g_20.alpha_r;
-            cuts_1[5] = (_e166 - (1.5 * width_3));
-            float _e172 = g_20.alpha_r;
-            cuts_1[6] = (_e172 + (1.5 * width_3));
-            float _e178 = g_20.alpha_r;
-            cuts_1[7] = (_e178 - (4.0 * width_3));
-            float _e184 = g_20.alpha_r;
-            cuts_1[8] = (_e184 + (4.0 * width_3));
+            float _e173 = g_20.alpha_r;
+            cuts_1[5] = (_e173 - (1.5 * width_3));
+            float _e179 = g_20.alpha_r;
+            cuts_1[6] = (_e179 + (1.5 * width_3));
+            float _e185 = g_20.alpha_r;
+            cuts_1[7] = (_e185 - (4.0 * width_3));
+            float _e191 = g_20.alpha_r;
+            cuts_1[8] = (_e191 + (4.0 * width_3));
         }
-        vec3 meet = cross(_e37, _e104);
-        float _e189 = airlight_safe_length(meet);
-        if ((_e189 > AIRLIGHT_FLT_EPS)) {
-            float _e197 = airlight_acos(clamp((dot(meet, l_3) / _e189), -1.0, 1.0));
-            cuts_1[9] = _e197;
-            cuts_1[10] = (AIRLIGHT_PI - _e197);
+        vec3 meet = cross(_e37, _e111);
+        float _e196 = airlight_safe_length(meet);
+        if ((_e196 > AIRLIGHT_FLT_EPS)) {
+            float _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1.0, 1.0));
+            cuts_1[9] = _e204;
+            cuts_1[10] = (AIRLIGHT_PI - _e204);
         }
     }
     bool loop_init_21 = true;
     while(true) {
         if (!loop_init_21) {
-            uint _e238 = i_17;
-            i_17 = (_e238 + 1u);
+            uint _e245 = i_17;
+            i_17 = (_e245 + 1u);
         }
         loop_init_21 = false;
-        uint _e204 = i_17;
-        if ((_e204 < 11u)) {
+        uint _e211 = i_17;
+        if ((_e211 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e207 = i_17;
-            float c_10 = cuts_1[_e207];
-            uint _e210 = i_17;
-            j_3 = _e210;
+            uint _e214 = i_17;
+            float c_10 = cuts_1[_e214];
+            uint _e217 = i_17;
+            j_3 = _e217;
             while(true) {
-                uint _e212 = j_3;
-                if ((_e212 > 0u)) {
-                    uint _e217 = j_3;
-                    float _e221 = cuts_1[(_e217 - 1u)];
-                    local_109 = (_e221 > c_10);
+                uint _e219 = j_3;
+                if ((_e219 > 0u)) {
+                    uint _e224 = j_3;
+                    float _e228 = cuts_1[(_e224 - 1u)];
+                    local_109 = (_e228 > c_10);
                 } else {
                     local_109 = false;
                 }
-                bool _e224 = local_109;
-                if (_e224) {
+                bool _e231 = local_109;
+                if (_e231) {
                 } else {
                     break;
                 }
                 {
-                    uint _e225 = j_3;
-                    uint _e227 = j_3;
-                    float _e231 = cuts_1[(_e227 - 1u)];
-                    cuts_1[_e225] = _e231;
                     uint _e232 = j_3;
-                    j_3 = (_e232 - 1u);
+                    uint _e234 = j_3;
+                    float _e238 = cuts_1[(_e234 - 1u)];
+                    cuts_1[_e232] = _e238;
+                    uint _e239 = j_3;
+                    j_3 = (_e239 - 1u);
                 }
             }
-            uint _e235 = j_3;
-            cuts_1[_e235] = c_10;
+            uint _e242 = j_3;
+            cuts_1[_e242] = c_10;
         }
     }
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e274 = i_18;
-            i_18 = (_e274 + 1u);
+            uint _e281 = i_18;
+            i_18 = (_e281 + 1u);
         }
         loop_init_22 = false;
-        uint _e244 = i_18;
-        if ((_e244 < 11u)) {
+        uint _e251 = i_18;
+        if ((_e251 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e247 = i_18;
-            float _e249 = cuts_1[_e247];
-            uint _e251 = k_3;
-            float _e253 = g_20.gamma[_e251];
-            if ((_e249 > _e253)) {
-                uint _e257 = i_18;
-                float _e259 = cuts_1[_e257];
-                local_110 = (_e259 < AIRLIGHT_PI);
+            uint _e254 = i_18;
+            float _e256 = cuts_1[_e254];
+            uint _e258 = k_3;
+            float _e260 = g_20.gamma[_e258];
+            if ((_e256 > _e260)) {
+                uint _e264 = i_18;
+                float _e266 = cuts_1[_e264];
+                local_110 = (_e266 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            bool _e263 = local_110;
-            if (_e263) {
-                uint _e264 = k_3;
-                k_3 = (_e264 + 1u);
-                uint _e268 = k_3;
-                uint _e270 = i_18;
-                float _e272 = cuts_1[_e270];
-                g_20.gamma[_e268] = _e272;
+            bool _e270 = local_110;
+            if (_e270) {
+                uint _e271 = k_3;
+                k_3 = (_e271 + 1u);
+                uint _e275 = k_3;
+                uint _e277 = i_18;
+                float _e279 = cuts_1[_e277];
+                g_20.gamma[_e275] = _e279;
             }
         }
     }
-    uint _e277 = k_3;
-    g_20.gamma[(_e277 + 1u)] = AIRLIGHT_PI;
-    uint _e283 = k_3;
-    g_20.panels = (_e283 + 1u);
+    uint _e284 = k_3;
+    g_20.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
+    uint _e290 = k_3;
+    g_20.panels = (_e290 + 1u);
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e298 = i_19;
-            i_19 = (_e298 + 1u);
+            uint _e305 = i_19;
+            i_19 = (_e305 + 1u);
         }
         loop_init_23 = false;
-        uint _e288 = i_19;
-        uint _e290 = g_20.panels;
-        if ((_e288 <= _e290)) {
+        uint _e295 = i_19;
+        uint _e297 = g_20.panels;
+        if ((_e295 <= _e297)) {
         } else {
             break;
         }
         {
-            uint _e293 = i_19;
-            uint _e295 = i_19;
-            g_20.edges[_e293] = float(_e295);
+            uint _e300 = i_19;
+            uint _e302 = i_19;
+            g_20.edges[_e300] = float(_e302);
         }
     }
-    AirlightOuter _e300 = g_20;
-    return _e300;
+    AirlightOuter _e307 = g_20;
+    return _e307;
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_17) {
@@ -5223,7 +5229,7 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
 }
 
 AirlightOuter airlight_outer(AirlightScene s_23) {
-    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0);
+    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
     bool local_114 = false;
     bool local_115 = false;
     float s_star = 0.0;
@@ -5519,13 +5525,17 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     return _e315;
 }
 
+AirlightCanonical airlight_no_canonical() {
+    return AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+}
+
 AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x_19) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
     float weight = 0.0;
     float at_1 = 0.0;
     float ds = 1.0;
     p = s_24;
-    AirlightCanonical none = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    AirlightCanonical _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -5536,38 +5546,35 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
         float gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3.0 - t_6) - t_6)));
         float jacobian = ((((b_18 - a_28) * 6.0) * t_6) * (1.0 - t_6));
         if (!((jacobian > 0.0))) {
-            AirlightScene _e53 = p;
-            return AirlightNode(_e53, 0.0, none, false);
+            AirlightScene _e46 = p;
+            return AirlightNode(_e46, 0.0, _e4, false);
         }
-        vec2 _e57 = airlight_cos_sin_half_turn(gamma_1);
-        float _e62 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e57.x, _e57.y);
-        if (!((_e62 > 0.0))) {
-            AirlightScene _e66 = p;
-            return AirlightNode(_e66, 0.0, none, false);
+        vec2 _e50 = airlight_cos_sin_half_turn(gamma_1);
+        float _e55 = airlight_half_arc(g_23.cos_a, g_23.sin_a, _e50.x, _e50.y);
+        if (!((_e55 > 0.0))) {
+            AirlightScene _e59 = p;
+            return AirlightNode(_e59, 0.0, _e4, false);
         }
         if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-            vec2 _e82 = airlight_cos_sin_half_turn(_e62);
-            float arc = (2.0 * (((g_23.cos_a * _e57.x) * _e62) + ((g_23.sin_a * _e57.y) * _e82.y)));
+            vec2 _e75 = airlight_cos_sin_half_turn(_e55);
+            float arc = (2.0 * (((g_23.cos_a * _e50.x) * _e55) + ((g_23.sin_a * _e50.y) * _e75.y)));
             weight = ((s_24.brdf_scale * 0.31830987) * arc);
         } else {
             float n_4 = s_24.brdf_exponent;
-            float _e99 = airlight_lobe_arcs(g_23, _e57, gamma_1, _e62, n_4);
-            weight = (((s_24.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e99);
+            float _e92 = airlight_lobe_arcs(g_23, _e50, gamma_1, _e55, n_4);
+            weight = (((s_24.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e92);
         }
-        p.dir = ((_e57.x * g_23.l) + (_e57.y * g_23.u));
+        p.dir = ((_e50.x * g_23.l) + (_e50.y * g_23.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        vec3 _e116 = airlight_normalize(s_24.light_axis);
-        float axis_l = dot(_e116, g_23.l);
-        float axis_u = dot(_e116, g_23.u);
-        float sin_g_1 = max(_e57.y, 0.0);
+        float sin_g_1 = max(_e50.y, 0.0);
         float h_8 = (g_23.d * sin_g_1);
-        float d_c_2 = ((h_8 > 0.0) ? ((_e57.x * axis_u) - (sin_g_1 * axis_l)) : 0.0);
-        AirlightCanonical exact = AirlightCanonical(h_8, (g_23.d * _e57.x), ((_e57.x * axis_l) + (sin_g_1 * axis_u)), d_c_2, 0.0, 0.0, true);
-        AirlightScene _e145 = p;
-        float _e146 = weight;
-        return AirlightNode(_e145, ((_e146 * _e57.y) * jacobian), exact, true);
+        float d_c_2 = ((h_8 > 0.0) ? ((_e50.x * g_23.axis_u) - (sin_g_1 * g_23.axis_l)) : 0.0);
+        AirlightCanonical exact = AirlightCanonical(h_8, (g_23.d * _e50.x), ((_e50.x * g_23.axis_l) + (sin_g_1 * g_23.axis_u)), d_c_2, 0.0, 0.0, true);
+        AirlightScene _e136 = p;
+        float _e137 = weight;
+        return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
     }
     if ((s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_19;
@@ -5575,14 +5582,14 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
             ds = (g_23.scale * cosh(x_19));
         }
-        float _e171 = at_1;
-        p.light_position = (g_23.a + (_e171 * g_23.e));
-        AirlightScene _e175 = p;
-        float _e176 = ds;
-        return AirlightNode(_e175, _e176, none, false);
+        float _e162 = at_1;
+        p.light_position = (g_23.a + (_e162 * g_23.e));
+        AirlightScene _e166 = p;
+        float _e167 = ds;
+        return AirlightNode(_e166, _e167, _e4, false);
     }
-    AirlightScene _e179 = p;
-    return AirlightNode(_e179, 1.0, none, false);
+    AirlightScene _e170 = p;
+    return AirlightNode(_e170, 1.0, _e4, false);
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {

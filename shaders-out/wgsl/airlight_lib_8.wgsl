@@ -133,6 +133,8 @@ struct AirlightOuter {
     alpha_r: f32,
     delta: vec3<f32>,
     d: f32,
+    axis_l: f32,
+    axis_u: f32,
 }
 
 struct AirlightLobe {
@@ -4480,7 +4482,7 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
 
 fn airlight_outer_point(s_23: AirlightScene, max_panels: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f);
+    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f);
 }
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
@@ -4536,157 +4538,161 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     let _e67 = u_1;
     g_22.u = _e67;
     g_22.d = _e7;
+    let _e70 = airlight_normalize(s_24.light_axis);
+    g_22.axis_l = dot(_e70, l_3);
+    let _e74 = u_1;
+    g_22.axis_u = dot(_e70, _e74);
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
-    let _e85 = airlight_angle(cos_a_1, _e41);
-    let first = abs((1.5707964f - _e85));
+    let _e92 = airlight_angle(cos_a_1, _e41);
+    let first = abs((1.5707964f - _e92));
     cuts_1[0] = first;
     cuts_1[1] = (AIRLIGHT_PI - first);
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
-        let _e98 = airlight_normalize(s_24.brdf_view);
-        let _e104 = airlight_normalize((((2f * dot(_e37, _e98)) * _e37) - _e98));
-        let _e105 = u_1;
-        let x_27 = dot(_e104, _e105);
-        let _e107 = u_1;
-        let y_10 = dot(_e104, cross(l_3, _e107));
-        g_22.cos_r = dot(_e104, l_3);
+        let _e105 = airlight_normalize(s_24.brdf_view);
+        let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
+        let _e112 = u_1;
+        let x_27 = dot(_e111, _e112);
+        let _e114 = u_1;
+        let y_10 = dot(_e111, cross(l_3, _e114));
+        g_22.cos_r = dot(_e111, l_3);
         g_22.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
-        let _e119 = g_22.cos_r;
-        let _e121 = g_22.sin_r;
-        let _e122 = airlight_angle(_e119, _e121);
-        g_22.alpha_r = _e122;
-        let _e124 = g_22.sin_r;
-        if (_e124 > 0f) {
-            let _e133 = airlight_angle(x_27, abs(y_10));
-            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e133);
-            let _e138 = g_22.sin_r;
-            let _e142 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_27 / _e138), (-(y_10) / _e142));
+        let _e126 = g_22.cos_r;
+        let _e128 = g_22.sin_r;
+        let _e129 = airlight_angle(_e126, _e128);
+        g_22.alpha_r = _e129;
+        let _e131 = g_22.sin_r;
+        if (_e131 > 0f) {
+            let _e140 = airlight_angle(x_27, abs(y_10));
+            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
+            let _e145 = g_22.sin_r;
+            let _e149 = g_22.sin_r;
+            g_22.delta = vec3<f32>(-(phi_r), (x_27 / _e145), (-(y_10) / _e149));
         }
-        let _e147 = g_22.alpha_r;
-        let first_r = abs((1.5707964f - _e147));
+        let _e154 = g_22.alpha_r;
+        let first_r = abs((1.5707964f - _e154));
         cuts_1[2] = first_r;
         cuts_1[3] = (AIRLIGHT_PI - first_r);
-        let _e156 = g_22.alpha_r;
-        cuts_1[4] = _e156;
+        let _e163 = g_22.alpha_r;
+        cuts_1[4] = _e163;
         if (s_24.brdf_exponent > 1f) {
             let width_3 = (1f / sqrt(s_24.brdf_exponent));
-            let _e166 = g_22.alpha_r;
-            cuts_1[5] = (_e166 - (1.5f * width_3));
-            let _e172 = g_22.alpha_r;
-            cuts_1[6] = (_e172 + (1.5f * width_3));
-            let _e178 = g_22.alpha_r;
-            cuts_1[7] = (_e178 - (4f * width_3));
-            let _e184 = g_22.alpha_r;
-            cuts_1[8] = (_e184 + (4f * width_3));
+            let _e173 = g_22.alpha_r;
+            cuts_1[5] = (_e173 - (1.5f * width_3));
+            let _e179 = g_22.alpha_r;
+            cuts_1[6] = (_e179 + (1.5f * width_3));
+            let _e185 = g_22.alpha_r;
+            cuts_1[7] = (_e185 - (4f * width_3));
+            let _e191 = g_22.alpha_r;
+            cuts_1[8] = (_e191 + (4f * width_3));
         }
-        let meet = cross(_e37, _e104);
-        let _e189 = airlight_safe_length(meet);
-        if (_e189 > AIRLIGHT_FLT_EPS) {
-            let _e197 = airlight_acos(clamp((dot(meet, l_3) / _e189), -1f, 1f));
-            cuts_1[9] = _e197;
-            cuts_1[10] = (AIRLIGHT_PI - _e197);
+        let meet = cross(_e37, _e111);
+        let _e196 = airlight_safe_length(meet);
+        if (_e196 > AIRLIGHT_FLT_EPS) {
+            let _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1f, 1f));
+            cuts_1[9] = _e204;
+            cuts_1[10] = (AIRLIGHT_PI - _e204);
         }
     }
     loop {
-        let _e204 = i_17;
-        if (_e204 < 11u) {
+        let _e211 = i_17;
+        if (_e211 < 11u) {
         } else {
             break;
         }
         {
-            let _e207 = i_17;
-            let c_10 = cuts_1[_e207];
-            let _e210 = i_17;
-            j_3 = _e210;
+            let _e214 = i_17;
+            let c_10 = cuts_1[_e214];
+            let _e217 = i_17;
+            j_3 = _e217;
             loop {
-                let _e212 = j_3;
-                if (_e212 > 0u) {
-                    let _e217 = j_3;
-                    let _e221 = cuts_1[(_e217 - 1u)];
-                    local_109 = (_e221 > c_10);
+                let _e219 = j_3;
+                if (_e219 > 0u) {
+                    let _e224 = j_3;
+                    let _e228 = cuts_1[(_e224 - 1u)];
+                    local_109 = (_e228 > c_10);
                 } else {
                     local_109 = false;
                 }
-                let _e224 = local_109;
-                if _e224 {
+                let _e231 = local_109;
+                if _e231 {
                 } else {
                     break;
                 }
                 {
-                    let _e225 = j_3;
-                    let _e227 = j_3;
-                    let _e231 = cuts_1[(_e227 - 1u)];
-                    cuts_1[_e225] = _e231;
                     let _e232 = j_3;
-                    j_3 = (_e232 - 1u);
+                    let _e234 = j_3;
+                    let _e238 = cuts_1[(_e234 - 1u)];
+                    cuts_1[_e232] = _e238;
+                    let _e239 = j_3;
+                    j_3 = (_e239 - 1u);
                 }
             }
-            let _e235 = j_3;
-            cuts_1[_e235] = c_10;
+            let _e242 = j_3;
+            cuts_1[_e242] = c_10;
         }
         continuing {
-            let _e238 = i_17;
-            i_17 = (_e238 + 1u);
+            let _e245 = i_17;
+            i_17 = (_e245 + 1u);
         }
     }
     loop {
-        let _e244 = i_18;
-        if (_e244 < 11u) {
+        let _e251 = i_18;
+        if (_e251 < 11u) {
         } else {
             break;
         }
         {
-            let _e247 = i_18;
-            let _e249 = cuts_1[_e247];
-            let _e251 = k_4;
-            let _e253 = g_22.gamma[_e251];
-            if (_e249 > _e253) {
-                let _e257 = i_18;
-                let _e259 = cuts_1[_e257];
-                local_110 = (_e259 < AIRLIGHT_PI);
+            let _e254 = i_18;
+            let _e256 = cuts_1[_e254];
+            let _e258 = k_4;
+            let _e260 = g_22.gamma[_e258];
+            if (_e256 > _e260) {
+                let _e264 = i_18;
+                let _e266 = cuts_1[_e264];
+                local_110 = (_e266 < AIRLIGHT_PI);
             } else {
                 local_110 = false;
             }
-            let _e263 = local_110;
-            if _e263 {
-                let _e264 = k_4;
-                k_4 = (_e264 + 1u);
-                let _e268 = k_4;
-                let _e270 = i_18;
-                let _e272 = cuts_1[_e270];
-                g_22.gamma[_e268] = _e272;
+            let _e270 = local_110;
+            if _e270 {
+                let _e271 = k_4;
+                k_4 = (_e271 + 1u);
+                let _e275 = k_4;
+                let _e277 = i_18;
+                let _e279 = cuts_1[_e277];
+                g_22.gamma[_e275] = _e279;
             }
         }
         continuing {
-            let _e274 = i_18;
-            i_18 = (_e274 + 1u);
+            let _e281 = i_18;
+            i_18 = (_e281 + 1u);
         }
     }
-    let _e277 = k_4;
-    g_22.gamma[(_e277 + 1u)] = AIRLIGHT_PI;
-    let _e283 = k_4;
-    g_22.panels = (_e283 + 1u);
+    let _e284 = k_4;
+    g_22.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
+    let _e290 = k_4;
+    g_22.panels = (_e290 + 1u);
     loop {
-        let _e288 = i_19;
-        let _e290 = g_22.panels;
-        if (_e288 <= _e290) {
+        let _e295 = i_19;
+        let _e297 = g_22.panels;
+        if (_e295 <= _e297) {
         } else {
             break;
         }
         {
-            let _e293 = i_19;
-            let _e295 = i_19;
-            g_22.edges[_e293] = f32(_e295);
+            let _e300 = i_19;
+            let _e302 = i_19;
+            g_22.edges[_e300] = f32(_e302);
         }
         continuing {
-            let _e298 = i_19;
-            i_19 = (_e298 + 1u);
+            let _e305 = i_19;
+            i_19 = (_e305 + 1u);
         }
     }
-    let _e300 = g_22;
-    return _e300;
+    let _e307 = g_22;
+    return _e307;
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
@@ -5161,6 +5167,10 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     return _e315;
 }
 
+fn airlight_no_canonical() -> AirlightCanonical {
+    return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
+}
+
 fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> AirlightNode {
     var p: AirlightScene;
     var weight: f32 = 0f;
@@ -5168,7 +5178,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> A
     var ds: f32 = 1f;
 
     p = s_26;
-    let none = AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
+    let _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -5179,38 +5189,35 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> A
         let gamma_1 = (a_28 + ((((b_18 - a_28) * t_6) * t_6) * ((3f - t_6) - t_6)));
         let jacobian = ((((b_18 - a_28) * 6f) * t_6) * (1f - t_6));
         if !((jacobian > 0f)) {
-            let _e53 = p;
-            return AirlightNode(_e53, 0f, none, false);
+            let _e46 = p;
+            return AirlightNode(_e46, 0f, _e4, false);
         }
-        let _e57 = airlight_cos_sin_half_turn(gamma_1);
-        let _e62 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e57.x, _e57.y);
-        if !((_e62 > 0f)) {
-            let _e66 = p;
-            return AirlightNode(_e66, 0f, none, false);
+        let _e50 = airlight_cos_sin_half_turn(gamma_1);
+        let _e55 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e50.x, _e50.y);
+        if !((_e55 > 0f)) {
+            let _e59 = p;
+            return AirlightNode(_e59, 0f, _e4, false);
         }
         if (s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-            let _e82 = airlight_cos_sin_half_turn(_e62);
-            let arc = (2f * (((g_25.cos_a * _e57.x) * _e62) + ((g_25.sin_a * _e57.y) * _e82.y)));
+            let _e75 = airlight_cos_sin_half_turn(_e55);
+            let arc = (2f * (((g_25.cos_a * _e50.x) * _e55) + ((g_25.sin_a * _e50.y) * _e75.y)));
             weight = ((s_26.brdf_scale * 0.31830987f) * arc);
         } else {
             let n_4 = s_26.brdf_exponent;
-            let _e99 = airlight_lobe_arcs(g_25, _e57, gamma_1, _e62, n_4);
-            weight = (((s_26.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e99);
+            let _e92 = airlight_lobe_arcs(g_25, _e50, gamma_1, _e55, n_4);
+            weight = (((s_26.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e92);
         }
-        p.dir = ((_e57.x * g_25.l) + (_e57.y * g_25.u));
+        p.dir = ((_e50.x * g_25.l) + (_e50.y * g_25.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
-        let _e116 = airlight_normalize(s_26.light_axis);
-        let axis_l = dot(_e116, g_25.l);
-        let axis_u = dot(_e116, g_25.u);
-        let sin_g_1 = max(_e57.y, 0f);
+        let sin_g_1 = max(_e50.y, 0f);
         let h_8 = (g_25.d * sin_g_1);
-        let d_c_2 = select(0f, ((_e57.x * axis_u) - (sin_g_1 * axis_l)), (h_8 > 0f));
-        let exact = AirlightCanonical(h_8, (g_25.d * _e57.x), ((_e57.x * axis_l) + (sin_g_1 * axis_u)), d_c_2, 0f, 0f, true);
-        let _e145 = p;
-        let _e146 = weight;
-        return AirlightNode(_e145, ((_e146 * _e57.y) * jacobian), exact, true);
+        let d_c_2 = select(0f, ((_e50.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_8 > 0f));
+        let exact = AirlightCanonical(h_8, (g_25.d * _e50.x), ((_e50.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
+        let _e136 = p;
+        let _e137 = weight;
+        return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
     }
     if (s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_19;
@@ -5218,14 +5225,14 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> A
             at_1 = (g_25.s_star + (g_25.scale * sinh(x_19)));
             ds = (g_25.scale * cosh(x_19));
         }
-        let _e171 = at_1;
-        p.light_position = (g_25.a + (_e171 * g_25.e));
-        let _e175 = p;
-        let _e176 = ds;
-        return AirlightNode(_e175, _e176, none, false);
+        let _e162 = at_1;
+        p.light_position = (g_25.a + (_e162 * g_25.e));
+        let _e166 = p;
+        let _e167 = ds;
+        return AirlightNode(_e166, _e167, _e4, false);
     }
-    let _e179 = p;
-    return AirlightNode(_e179, 1f, none, false);
+    let _e170 = p;
+    return AirlightNode(_e170, 1f, _e4, false);
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
@@ -5275,8 +5282,9 @@ fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
 }
 
 fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
-    let _e12 = airlight_node_integral(AirlightNode(p_1, 1f, AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false), false));
-    return _e12;
+    let _e1 = airlight_no_canonical();
+    let _e5 = airlight_node_integral(AirlightNode(p_1, 1f, _e1, false));
+    return _e5;
 }
 
 fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {

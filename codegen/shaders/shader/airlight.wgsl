@@ -1942,8 +1942,10 @@ struct AirlightOuter {
     sin_r: f32,
     alpha_r: f32,
     delta: vec3<f32>,
-    /// A surface point's distance to the light.
+    /// A surface point's distance to the light, and the light's axis along ℓ and u.
     d: f32,
+    axis_l: f32,
+    axis_u: f32,
 }
 
 fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
@@ -1992,7 +1994,7 @@ fn airlight_outer_point(s: AirlightScene, max_panels: u32) -> AirlightOuter {
     // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
     let zeros = array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3<f32>(0.0),
-        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0);
+        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0, 0.0, 0.0);
 }
 
 /// A surface point's outer integral (surface.rs SurfaceScene::integrate).
@@ -2026,6 +2028,9 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     g.l = l;
     g.u = u;
     g.d = d;
+    let axis = airlight_normalize(s.light_axis);
+    g.axis_l = dot(axis, l);
+    g.axis_u = dot(axis, u);
     g.cos_a = cos_a;
     g.sin_a = sin_a;
     // the pieces: where the normal's arc changes kind, |π/2 − α| and π − |π/2 − α|; for a Phong
@@ -2284,7 +2289,7 @@ struct AirlightNode {
 /// The node at `x` of the outer integral `g` of `s`.
 fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNode {
     var p = s;
-    let none = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    let none = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -2314,13 +2319,10 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
         p.flags = 1u;
         // its canonical form (surface.rs `integrate`): the light at x_h = d cos γ, h = d sin γ
         // from the ray, the axis's cosines cos γ (ℓ·a) + sin γ (u·a) and cos γ (u·a) − sin γ (ℓ·a)
-        let axis = airlight_normalize(s.light_axis);
-        let axis_l = dot(axis, g.l);
-        let axis_u = dot(axis, g.u);
         let sin_g = max(cs.y, 0.0);
         let h = g.d * sin_g;
-        let d_c = select(0.0, cs.x * axis_u - sin_g * axis_l, h > 0.0);
-        let exact = AirlightCanonical(h, g.d * cs.x, cs.x * axis_l + sin_g * axis_u, d_c, 0.0, 0.0, true);
+        let d_c = select(0.0, cs.x * g.axis_u - sin_g * g.axis_l, h > 0.0);
+        let exact = AirlightCanonical(h, g.d * cs.x, cs.x * g.axis_l + sin_g * g.axis_u, d_c, 0.0, 0.0, true);
         return AirlightNode(p, weight * cs.y * jacobian, exact, true);
     }
     if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
@@ -2387,7 +2389,12 @@ fn airlight_overflowed(r: AirlightResult) -> AirlightResult {
 /// The ray integral of the point light of a validated point scene `p`: airlight_node_integral
 /// of its one node.
 fn airlight_point_integral(p: AirlightScene) -> AirlightResult {
-    return airlight_node_integral(AirlightNode(p, 1.0, AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false), false));
+    return airlight_node_integral(AirlightNode(p, 1.0, airlight_no_canonical(), false));
+}
+
+/// The canonical form of a node that brings none (its ray is reduced).
+fn airlight_no_canonical() -> AirlightCanonical {
+    return AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
 }
 
 /// The ray integral of a node's point light (a node of an outer integral, or a point scene's),
