@@ -150,11 +150,12 @@ fn tolerance_below_the_rays_floor_does_not_hurt() {
 /// At loose tolerances — where a Phong lobe lit by an omni light is taken by the fixed rule
 /// `lobe_arcs` (from `airlight::surface::FIXED_LOBE_TOLERANCE` up) — the outer estimate still
 /// holds: every record within the tolerance of its reference (relative to `max(|exact|,
-/// τ·scale)` as above), f64 and f32, at 1e-2, 1e-3 and the fixed rule's threshold itself.
+/// τ·scale)` as above), f64 and f32, at 1e-1, 1e-2, 1e-3 and the fixed rule's threshold itself
+/// (the surface bench times "at 1e-3" at the loosest of these whose class error is within 1e-3).
 #[test]
 fn loose_tolerances_hold() {
     let lines = reference_lines("surface.jsonl");
-    for tolerance in [1e-2, 1e-3, airlight::surface::FIXED_LOBE_TOLERANCE] {
+    for tolerance in [1e-1, 1e-2, 1e-3, airlight::surface::FIXED_LOBE_TOLERANCE] {
         let (mut w64, mut w32) = ((0.0f64, String::new()), (0.0f64, String::new()));
         for v in &lines {
             let (exact, scale) = (v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap());
