@@ -1113,6 +1113,15 @@ fn airlight_singular_floor(heights: vec3<f32>, steps: vec3<f32>, c: f32, r: f32,
     return 1.0 / rho;
 }
 
+/// Where the panel [a, b] (in y) is split (panels.rs `split_point`): its midpoint, or a + 2d
+/// where G's nearest singularity ±it, at the distance d = |a + it|, is closer than a quarter of
+/// the width.
+fn airlight_split_point(a: f32, b: f32, heights: vec3<f32>) -> f32 {
+    let t = min(heights.x, min(heights.y, heights.z));
+    let d = sqrt(a * a + t * t);
+    return select(a + (b - a) * 0.5, a + 2.0 * d, d > 0.0 && d < (b - a) * 0.25);
+}
+
 /// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split
 /// first until the estimates sum below the target (panels.rs `integrate_piece`); f_max: the
 /// largest |F| seen on the segment.
@@ -1173,7 +1182,7 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
                 list[worst].w = 0.0;
                 continue;
             }
-            let mid = wa + (wb - wa) * 0.5;
+            let mid = airlight_split_point(wa, wb, heights_y);
             a = wa;
             b = mid;
             slot = worst;
