@@ -35,7 +35,7 @@
 //! the panel with the largest estimate is split (global adaptive refinement, as QUADPACK's
 //! QAG): a bounded budget is spent where the error is, not on the first panel the order of a
 //! recursion reaches. It is split at its midpoint in `y`, or nearer a known singularity close
-//! to its start (`split_point`). At most `max_panels` panels are evaluated per
+//! to its start (`graded_split`), and a piece that starts next to one is split so at once. At most `max_panels` panels are evaluated per
 //! piece (a fixed worst case); where the bound is hit the sum so far is returned, finite.
 
 use crate::expansion::{gauss_table, Expandable};
@@ -96,14 +96,26 @@ where
     let target = |total: T, mass: T, f_max: T| control.tolerance * total.abs().max(control.floor * f_max * mass);
     // G's singularities once per piece, in the panels' variables
     let singular = f.singularities().map(|s| Singular::new::<N>(s, half.second));
-    let first = listed::<T, F, N>(half, lo, hi, f, rule, singular.as_ref(), run);
     let mut budget = control.max_panels.saturating_sub(1);
-    // most pieces are done in one panel: no list for them
-    if first.error <= target(first.value, first.mass_over, run.f_max) || budget < 2 {
-        return first.value;
-    }
-    let mut list = [first; LIST];
-    let mut count = 1;
+    let (mut list, mut count) = match graded_split(lo, hi, singular.as_ref()) {
+        // a piece that starts next to a known singularity is graded at once: one panel over
+        // all of it would fail its estimate
+        Some(p) if budget >= 1 => {
+            let first = listed::<T, F, N>(half, lo, p, f, rule, singular.as_ref(), run);
+            let mut list = [first; LIST];
+            list[1] = listed::<T, F, N>(half, p, hi, f, rule, singular.as_ref(), run);
+            budget -= 1;
+            (list, 2)
+        }
+        _ => {
+            let first = listed::<T, F, N>(half, lo, hi, f, rule, singular.as_ref(), run);
+            // most pieces are done in one panel: no list for them
+            if first.error <= target(first.value, first.mass_over, run.f_max) || budget < 2 {
+                return first.value;
+            }
+            ([first; LIST], 1)
+        }
+    };
     loop {
         let (mut total, mut errors, mut mass) = (T::zero(), T::zero(), T::zero());
         let mut worst = 0;
@@ -148,6 +160,20 @@ fn split_point<T: Real>(a: T, b: T, singular: Option<&Singular<T>>) -> T {
     } else {
         mid
     }
+}
+
+/// Where the panel `[a, b]` (in `y`) is split if not at its midpoint: where `G`'s nearest
+/// known singularity (at `±it`, so at the distance `d = |a + it|` from the panel's start) is
+/// closer than a quarter of the width, at `a + 2d` — graded towards it geometrically, as its
+/// Bernstein ellipses need (a lobe of width `t` at `y = 0`, as Henyey–Greenstein's: two
+/// panels where halving takes four or five). The factor 2 and the quarter: of 1.5 … 4 and
+/// 1/8 … 1/4, the fewest instructions per ray over the peaked classes (callgrind, f32 at the
+/// tolerances that meet 1e-3, f64 at the default).
+fn graded_split<T: Real>(a: T, b: T, singular: Option<&Singular<T>>) -> Option<T> {
+    let s = singular?;
+    let t = s.y.iter().take(s.count).fold(T::infinity(), |m, &t| m.min(t));
+    let d = (a * a + t * t).sqrt();
+    (d > T::zero() && d < (b - a) * T::lit(0.25)).then(|| a + d * T::lit(2.0))
 }
 
 /// A panel in a piece's list.

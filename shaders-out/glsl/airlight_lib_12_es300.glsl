@@ -2798,7 +2798,7 @@ AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float si
     return _e31;
 }
 
-float airlight_split_point(float a_9, float b_8, vec3 heights_3) {
+float airlight_graded_split(float a_9, float b_8, vec3 heights_3) {
     bool local_20 = false;
     float t_5 = min(heights_3.x, min(heights_3.y, heights_3.z));
     float d_2 = sqrt(((a_9 * a_9) + (t_5 * t_5)));
@@ -2807,8 +2807,8 @@ float airlight_split_point(float a_9, float b_8, vec3 heights_3) {
     } else {
         local_20 = false;
     }
-    bool _e28 = local_20;
-    return (_e28 ? (a_9 + (2.0 * d_2)) : (a_9 + ((b_8 - a_9) * 0.5)));
+    bool _e24 = local_20;
+    return (_e24 ? (a_9 + (2.0 * d_2)) : -1.0);
 }
 
 float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float sigma_8, AirlightHalf half_10, float lo, float hi, inout float f_max_4) {
@@ -2820,6 +2820,7 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     bool pending = false;
     float next_a = 0.0;
     float next_b = 0.0;
+    bool local_21 = false;
     uint count = 0u;
     uint budget = AIRLIGHT_MAX_PANELS;
     uint step_ = 0u;
@@ -2829,9 +2830,9 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     float mass_3 = 0.0;
     uint worst = 0u;
     uint i_9 = 0u;
-    bool local_21 = false;
     bool local_22 = false;
     bool local_23 = false;
+    bool local_24 = false;
     float total_1 = 0.0;
     uint i_10 = 0u;
     if (!((hi > lo))) {
@@ -2842,46 +2843,59 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     vec3 _e16 = airlight_singular_steps(s_10);
     a_10 = lo;
     b_9 = hi;
+    float _e55 = airlight_graded_split(lo, hi, _e10);
+    if ((_e55 >= 0.0)) {
+        local_21 = true;
+    } else {
+        local_21 = false;
+    }
+    bool _e62 = local_21;
+    if (_e62) {
+        b_9 = _e55;
+        pending = true;
+        next_a = _e55;
+        next_b = hi;
+    }
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
-            uint _e210 = step_;
-            step_ = (_e210 + 1u);
+            uint _e226 = step_;
+            step_ = (_e226 + 1u);
         }
         loop_init_12 = false;
-        uint _e61 = step_;
-        if ((_e61 < AIRLIGHT_MAX_PANELS)) {
+        uint _e70 = step_;
+        if ((_e70 < AIRLIGHT_MAX_PANELS)) {
         } else {
             break;
         }
         {
-            float _e64 = a_10;
-            float _e65 = b_9;
-            AirlightPanel _e66 = airlight_panel(s_10, g_12, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
-            float _e67 = f_max_4;
-            f_max_4 = max(_e67, _e66.f_max);
-            uint _e70 = slot;
-            float _e72 = a_10;
-            float _e73 = b_9;
-            list[_e70] = vec4(_e72, _e73, _e66.value, _e66.error);
-            uint _e77 = slot;
-            mass_over_1[_e77] = _e66.mass_over;
-            uint _e80 = budget;
-            budget = (_e80 - 1u);
-            uint _e83 = slot;
-            uint _e84 = count;
-            if ((_e83 == _e84)) {
-                uint _e86 = count;
-                count = (_e86 + 1u);
+            float _e73 = a_10;
+            float _e74 = b_9;
+            AirlightPanel _e75 = airlight_panel(s_10, g_12, sigma_8, half_10, _e73, _e74, _e10, heights_v_1, _e16);
+            float _e76 = f_max_4;
+            f_max_4 = max(_e76, _e75.f_max);
+            uint _e79 = slot;
+            float _e81 = a_10;
+            float _e82 = b_9;
+            list[_e79] = vec4(_e81, _e82, _e75.value, _e75.error);
+            uint _e86 = slot;
+            mass_over_1[_e86] = _e75.mass_over;
+            uint _e89 = budget;
+            budget = (_e89 - 1u);
+            uint _e92 = slot;
+            uint _e93 = count;
+            if ((_e92 == _e93)) {
+                uint _e95 = count;
+                count = (_e95 + 1u);
             }
-            bool _e89 = pending;
-            if (_e89) {
-                float _e90 = next_a;
-                a_10 = _e90;
-                float _e91 = next_b;
-                b_9 = _e91;
-                uint _e92 = count;
-                slot = _e92;
+            bool _e98 = pending;
+            if (_e98) {
+                float _e99 = next_a;
+                a_10 = _e99;
+                float _e100 = next_b;
+                b_9 = _e100;
+                uint _e101 = count;
+                slot = _e101;
                 pending = false;
                 continue;
             }
@@ -2889,12 +2903,12 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
             bool loop_init_13 = true;
             while(true) {
                 if (!loop_init_13) {
-                    uint _e207 = retire;
-                    retire = (_e207 + 1u);
+                    uint _e223 = retire;
+                    retire = (_e223 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e96 = retire;
-                if ((_e96 <= AIRLIGHT_PANEL_LIST)) {
+                uint _e105 = retire;
+                if ((_e105 <= AIRLIGHT_PANEL_LIST)) {
                 } else {
                     break;
                 }
@@ -2907,90 +2921,91 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                     bool loop_init_14 = true;
                     while(true) {
                         if (!loop_init_14) {
-                            uint _e143 = i_9;
-                            i_9 = (_e143 + 1u);
+                            uint _e152 = i_9;
+                            i_9 = (_e152 + 1u);
                         }
                         loop_init_14 = false;
-                        uint _e109 = i_9;
-                        if ((_e109 < AIRLIGHT_PANEL_LIST)) {
+                        uint _e118 = i_9;
+                        if ((_e118 < AIRLIGHT_PANEL_LIST)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e112 = i_9;
-                            uint _e113 = count;
-                            if ((_e112 >= _e113)) {
+                            uint _e121 = i_9;
+                            uint _e122 = count;
+                            if ((_e121 >= _e122)) {
                                 break;
                             }
-                            float _e115 = total;
-                            uint _e116 = i_9;
-                            float _e119 = list[_e116].z;
-                            total = (_e115 + _e119);
-                            float _e121 = errors;
-                            uint _e122 = i_9;
-                            float _e125 = list[_e122].w;
-                            errors = (_e121 + _e125);
-                            float _e127 = mass_3;
-                            uint _e128 = i_9;
-                            float _e130 = mass_over_1[_e128];
-                            mass_3 = (_e127 + _e130);
-                            uint _e132 = i_9;
-                            float _e135 = list[_e132].w;
-                            uint _e136 = worst;
-                            float _e139 = list[_e136].w;
-                            if ((_e135 > _e139)) {
-                                uint _e141 = i_9;
-                                worst = _e141;
+                            float _e124 = total;
+                            uint _e125 = i_9;
+                            float _e128 = list[_e125].z;
+                            total = (_e124 + _e128);
+                            float _e130 = errors;
+                            uint _e131 = i_9;
+                            float _e134 = list[_e131].w;
+                            errors = (_e130 + _e134);
+                            float _e136 = mass_3;
+                            uint _e137 = i_9;
+                            float _e139 = mass_over_1[_e137];
+                            mass_3 = (_e136 + _e139);
+                            uint _e141 = i_9;
+                            float _e144 = list[_e141].w;
+                            uint _e145 = worst;
+                            float _e148 = list[_e145].w;
+                            if ((_e144 > _e148)) {
+                                uint _e150 = i_9;
+                                worst = _e150;
                             }
                         }
                     }
-                    float _e146 = total;
-                    float _e149 = f_max_4;
-                    float _e151 = mass_3;
-                    float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e146), ((AIRLIGHT_PANEL_FLOOR * _e149) * _e151)));
-                    float _e155 = errors;
-                    if (!((_e155 <= goal))) {
-                        uint _e160 = worst;
-                        float _e163 = list[_e160].w;
-                        local_21 = !((_e163 > 0.0));
-                    } else {
-                        local_21 = true;
-                    }
-                    bool _e168 = local_21;
-                    if (!(_e168)) {
-                        uint _e172 = budget;
-                        local_22 = (_e172 < 2u);
+                    float _e155 = total;
+                    float _e158 = f_max_4;
+                    float _e160 = mass_3;
+                    float goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e155), ((AIRLIGHT_PANEL_FLOOR * _e158) * _e160)));
+                    float _e164 = errors;
+                    if (!((_e164 <= goal))) {
+                        uint _e169 = worst;
+                        float _e172 = list[_e169].w;
+                        local_22 = !((_e172 > 0.0));
                     } else {
                         local_22 = true;
                     }
-                    bool _e176 = local_22;
-                    if (!(_e176)) {
-                        uint _e180 = count;
-                        local_23 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    bool _e177 = local_22;
+                    if (!(_e177)) {
+                        uint _e181 = budget;
+                        local_23 = (_e181 < 2u);
                     } else {
                         local_23 = true;
                     }
-                    bool _e184 = local_23;
-                    if (_e184) {
-                        float _e185 = total;
-                        return _e185;
+                    bool _e185 = local_23;
+                    if (!(_e185)) {
+                        uint _e189 = count;
+                        local_24 = (_e189 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_24 = true;
                     }
-                    uint _e186 = worst;
-                    float wa = list[_e186].x;
-                    uint _e190 = worst;
-                    float wb = list[_e190].y;
+                    bool _e193 = local_24;
+                    if (_e193) {
+                        float _e194 = total;
+                        return _e194;
+                    }
+                    uint _e195 = worst;
+                    float wa = list[_e195].x;
+                    uint _e199 = worst;
+                    float wb = list[_e199].y;
                     if (!(((wb - wa) > (AIRLIGHT_FLT_EPS * wb)))) {
-                        uint _e199 = worst;
-                        list[_e199].w = 0.0;
+                        uint _e208 = worst;
+                        list[_e208].w = 0.0;
                         continue;
                     }
-                    float _e203 = airlight_split_point(wa, wb, _e10);
+                    float _e212 = airlight_graded_split(wa, wb, _e10);
+                    float mid_1 = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
                     a_10 = wa;
-                    b_9 = _e203;
-                    uint _e204 = worst;
-                    slot = _e204;
+                    b_9 = mid_1;
+                    uint _e220 = worst;
+                    slot = _e220;
                     pending = true;
-                    next_a = _e203;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -3000,29 +3015,29 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
     bool loop_init_15 = true;
     while(true) {
         if (!loop_init_15) {
-            uint _e229 = i_10;
-            i_10 = (_e229 + 1u);
+            uint _e245 = i_10;
+            i_10 = (_e245 + 1u);
         }
         loop_init_15 = false;
-        uint _e216 = i_10;
-        if ((_e216 < AIRLIGHT_PANEL_LIST)) {
+        uint _e232 = i_10;
+        if ((_e232 < AIRLIGHT_PANEL_LIST)) {
         } else {
             break;
         }
         {
-            uint _e219 = i_10;
-            uint _e220 = count;
-            if ((_e219 >= _e220)) {
+            uint _e235 = i_10;
+            uint _e236 = count;
+            if ((_e235 >= _e236)) {
                 break;
             }
-            float _e222 = total_1;
-            uint _e223 = i_10;
-            float _e226 = list[_e223].z;
-            total_1 = (_e222 + _e226);
+            float _e238 = total_1;
+            uint _e239 = i_10;
+            float _e242 = list[_e239].z;
+            total_1 = (_e238 + _e242);
         }
     }
-    float _e231 = total_1;
-    return _e231;
+    float _e247 = total_1;
+    return _e247;
 }
 
 float airlight_atan2_upper(float y_3, float x_8) {
@@ -3048,13 +3063,13 @@ float airlight_angle_y(float u) {
 }
 
 float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1) {
-    bool local_24 = false;
+    bool local_25 = false;
     if (!(!((gap_1 > 0.0)))) {
-        local_24 = (gap_1 >= AIRLIGHT_FLT_MAX);
+        local_25 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    bool _e14 = local_24;
+    bool _e14 = local_25;
     if (_e14) {
         return 0.0;
     }
@@ -3085,7 +3100,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_9
 }
 
 vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
-    bool local_25 = false;
+    bool local_26 = false;
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
     float psi1_ = 0.0;
@@ -3100,7 +3115,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     float f_max_5 = 0.0;
     uint i_11 = 0u;
     float m_3[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_26 = false;
+    bool local_27 = false;
     float x_10 = 0.0;
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return vec2(0.0, 0.0);
@@ -3110,11 +3125,11 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     float u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
     if (!(g_13.t_hi_infinite)) {
         bool _e21 = airlight_is_finite(u1_);
-        local_25 = _e21;
+        local_26 = _e21;
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    bool u1_finite = local_25;
+    bool u1_finite = local_26;
     float big_h_7 = (s_11.sigma_t * h_3);
     float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
@@ -3151,7 +3166,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     if (!((hw_2 > 0.0))) {
         return vec2(0.0, 0.0);
     }
-    float mid_1 = ((_e38 + hw_2) - 1.5707964);
+    float mid_2 = ((_e38 + hw_2) - 1.5707964);
     float _e84 = y1_;
     float _e85 = y_cut;
     float y_end = min(_e84, _e85);
@@ -3177,22 +3192,22 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
         case 2u:
         case 4u: {
             float _e132 = airlight_hg_gap(p0_4);
-            float _e133 = airlight_angle_floor(p0_4, _e132, mid_1, hw_2, step_3);
+            float _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
             rate = _e133;
             break;
         }
         case 3u: {
             float a_23 = abs(p0_4);
-            float _e142 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), mid_1, hw_2, step_3);
+            float _e142 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), mid_2, hw_2, step_3);
             rate = _e142;
             break;
         }
         case 5u: {
             float p1_3 = s_11.phase_param_b;
             float _e144 = airlight_hg_gap(p0_4);
-            float _e145 = airlight_angle_floor(p0_4, _e144, mid_1, hw_2, step_3);
+            float _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
             float _e146 = airlight_hg_gap(p1_3);
-            float _e147 = airlight_angle_floor(p1_3, _e146, mid_1, hw_2, step_3);
+            float _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
             rate = max(_e145, _e147);
             break;
         }
@@ -3206,7 +3221,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     }
     if ((big_h_7 > 0.0)) {
         float _e160 = rate;
-        float _e165 = airlight_bernstein_rho(((1.5707964 - mid_1) / hw_2), 0.0);
+        float _e165 = airlight_bernstein_rho(((1.5707964 - mid_2) / hw_2), 0.0);
         rate = max(_e160, (1.0 / _e165));
     }
     vec2 _e169[6] = airlight_gauss_rule();
@@ -3274,11 +3289,11 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     float _e289 = mass_4;
     float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if (!((error_4 <= accepted))) {
-        local_26 = (error_4 <= _e282);
+        local_27 = (error_4 <= _e282);
     } else {
-        local_26 = true;
+        local_27 = true;
     }
-    bool _e299 = local_26;
+    bool _e299 = local_27;
     if (!(_e299)) {
         return vec2(0.0, 0.0);
     }
@@ -3293,7 +3308,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
 }
 
 vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3) {
-    bool local_27 = false;
+    bool local_28 = false;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
@@ -3303,11 +3318,11 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3) {
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         bool _e21 = airlight_is_finite(scale_1);
-        local_27 = !(_e21);
+        local_28 = !(_e21);
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    bool _e24 = local_27;
+    bool _e24 = local_28;
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
@@ -3340,34 +3355,34 @@ float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_4) {
 }
 
 bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1) {
-    bool local_28 = false;
     bool local_29 = false;
-    float y1_1 = 0.0;
     bool local_30 = false;
+    float y1_1 = 0.0;
     bool local_31 = false;
     bool local_32 = false;
     bool local_33 = false;
+    bool local_34 = false;
     float _e9 = airlight_cosine(g_15, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
         return false;
     }
     if ((lo_1 == half_11.y_lo)) {
         float _e17 = airlight_cosine(g_15, sigma_11, lo_1);
-        local_28 = !((_e17 < bound));
+        local_29 = !((_e17 < bound));
     } else {
-        local_28 = false;
+        local_29 = false;
     }
-    bool _e21 = local_28;
+    bool _e21 = local_29;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
         float _e27 = airlight_cosine(g_15, sigma_11, hi_1);
-        local_29 = !((_e27 < bound));
+        local_30 = !((_e27 < bound));
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    bool _e31 = local_29;
+    bool _e31 = local_30;
     if (_e31) {
         return false;
     }
@@ -3386,35 +3401,35 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     float _e53 = y1_1;
     if ((_e53 > lo_1)) {
         float _e57 = y1_1;
-        local_30 = (_e57 < hi_1);
-    } else {
-        local_30 = false;
-    }
-    bool _e60 = local_30;
-    if (_e60) {
-        float _e63 = y1_1;
-        float _e64 = airlight_cosine(g_15, sigma_11, _e63);
-        local_31 = !((_e64 < bound));
+        local_31 = (_e57 < hi_1);
     } else {
         local_31 = false;
     }
-    bool _e68 = local_31;
+    bool _e60 = local_31;
+    if (_e60) {
+        float _e63 = y1_1;
+        float _e64 = airlight_cosine(g_15, sigma_11, _e63);
+        local_32 = !((_e64 < bound));
+    } else {
+        local_32 = false;
+    }
+    bool _e68 = local_32;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_32 = (y2_2 < hi_1);
-    } else {
-        local_32 = false;
-    }
-    bool _e75 = local_32;
-    if (_e75) {
-        float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
-        local_33 = !((_e78 < bound));
+        local_33 = (y2_2 < hi_1);
     } else {
         local_33 = false;
     }
-    bool _e82 = local_33;
+    bool _e75 = local_33;
+    if (_e75) {
+        float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
+        local_34 = !((_e78 < bound));
+    } else {
+        local_34 = false;
+    }
+    bool _e82 = local_34;
     if (_e82) {
         return false;
     }
@@ -3427,16 +3442,16 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_12 = 0u;
-    bool local_34 = false;
+    bool local_35 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
     float total_2 = 0.0;
     float lo_2 = 0.0;
     uint i_14 = 0u;
     float hi_2 = 0.0;
-    bool local_35 = false;
     bool local_36 = false;
     bool local_37 = false;
+    bool local_38 = false;
     if (isotropic) {
         float _e7 = airlight_integrand(s_12, g_16, sigma_12, 0.0);
         float _e8 = airlight_moment_zero(half_12);
@@ -3479,11 +3494,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                 if ((_e56 > half_12.y_lo)) {
                     uint _e61 = i_12;
                     float _e63 = cuts[_e61];
-                    local_34 = (_e63 < half_12.y_hi);
+                    local_35 = (_e63 < half_12.y_hi);
                 } else {
-                    local_34 = false;
+                    local_35 = false;
                 }
-                bool _e67 = local_34;
+                bool _e67 = local_35;
                 if (!(_e67)) {
                     uint _e69 = i_12;
                     cuts[_e69] = 2.0;
@@ -3556,11 +3571,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
             if ((_e127 < 4u)) {
                 uint _e132 = i_14;
                 float _e134 = cuts[_e132];
-                local_35 = (_e134 < 2.0);
+                local_36 = (_e134 < 2.0);
             } else {
-                local_35 = false;
+                local_36 = false;
             }
-            bool _e138 = local_35;
+            bool _e138 = local_36;
             if (_e138) {
                 uint _e139 = i_14;
                 float _e141 = cuts[_e139];
@@ -3574,11 +3589,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                     float _e151 = lo_2;
                     float _e152 = hi_2;
                     bool _e153 = airlight_dark(g_16, sigma_12, half_12, _e150, _e151, _e152);
-                    local_36 = _e153;
+                    local_37 = _e153;
                 } else {
-                    local_36 = false;
+                    local_37 = false;
                 }
-                bool _e155 = local_36;
+                bool _e155 = local_37;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
@@ -3593,11 +3608,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
             if ((_e163 < 4u)) {
                 uint _e168 = i_14;
                 float _e170 = cuts[_e168];
-                local_37 = (_e170 >= 2.0);
+                local_38 = (_e170 >= 2.0);
             } else {
-                local_37 = false;
+                local_38 = false;
             }
-            bool _e174 = local_37;
+            bool _e174 = local_38;
             if (_e174) {
                 break;
             }
@@ -3608,16 +3623,16 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
 }
 
 float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17) {
-    bool local_38 = false;
+    bool local_39 = false;
     float span = 0.0;
     float e2_[14] = float[14](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
     if (!(g_17.t_hi_infinite)) {
-        local_38 = (g_17.x_h > g_17.t_hi);
+        local_39 = (g_17.x_h > g_17.t_hi);
     } else {
-        local_38 = false;
+        local_39 = false;
     }
-    bool _e10 = local_38;
+    bool _e10 = local_39;
     if (_e10) {
         float _e16 = airlight_light(s_13.light_kind, s_13.light_param_a, s_13.light_param_b, -(g_17.d_el));
         float _e22 = airlight_phase_mu(s_13.phase_kind, s_13.phase_param_a, s_13.phase_param_b, s_13.phase_param_c, 1.0);
@@ -3675,8 +3690,8 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_39 = false;
     bool local_40 = false;
+    bool local_41 = false;
     float x_11 = 0.0;
     float h_4 = g_18.h;
     float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
@@ -3685,11 +3700,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if (!(g_18.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_39 = _e24;
+        local_40 = _e24;
     } else {
-        local_39 = false;
+        local_40 = false;
     }
-    bool _e26 = local_39;
+    bool _e26 = local_40;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3697,11 +3712,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_40 = _e40;
+            local_41 = _e40;
         } else {
-            local_40 = false;
+            local_41 = false;
         }
-        bool _e42 = local_40;
+        bool _e42 = local_41;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3732,26 +3747,26 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
 }
 
 AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
-    bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
     bool local_44 = false;
-    float gap_2 = 0.0;
     bool local_45 = false;
+    float gap_2 = 0.0;
+    bool local_46 = false;
     float t0_ = g_19.t_lo;
     float t1_ = g_19.t_hi;
     if (!(g_19.t_hi_infinite)) {
-        local_41 = (t1_ > t0_);
-    } else {
-        local_41 = true;
-    }
-    bool _e10 = local_41;
-    if (!(!(_e10))) {
-        local_42 = ((s_15.sigma_s * s_15.intensity) == 0.0);
+        local_42 = (t1_ > t0_);
     } else {
         local_42 = true;
     }
-    bool _e21 = local_42;
+    bool _e10 = local_42;
+    if (!(!(_e10))) {
+        local_43 = ((s_15.sigma_s * s_15.intensity) == 0.0);
+    } else {
+        local_43 = true;
+    }
+    bool _e21 = local_43;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
@@ -3759,16 +3774,16 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
     float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_19.t_hi_infinite)) {
-            local_44 = (x_h <= t1_);
+            local_45 = (x_h <= t1_);
         } else {
-            local_44 = true;
+            local_45 = true;
         }
-        bool _e36 = local_44;
-        local_43 = _e36;
+        bool _e36 = local_45;
+        local_44 = _e36;
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    bool inside = local_43;
+    bool inside = local_44;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3778,11 +3793,11 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_45 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_46 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_45 = false;
+        local_46 = false;
     }
-    bool _e55 = local_45;
+    bool _e55 = local_46;
     if (_e55) {
         float _e56 = airlight_on_line(s_15, g_19);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3794,74 +3809,74 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
 }
 
 bool airlight_isotropic_scene(AirlightScene s_16) {
-    bool local_46 = false;
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
     bool local_50 = false;
     bool local_51 = false;
+    bool local_52 = false;
     if (!((s_16.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_47 = (s_16.light_param_a == 0.0);
+            local_48 = (s_16.light_param_a == 0.0);
         } else {
-            local_47 = false;
+            local_48 = false;
         }
-        bool _e16 = local_47;
-        local_46 = _e16;
+        bool _e16 = local_48;
+        local_47 = _e16;
     } else {
-        local_46 = true;
+        local_47 = true;
     }
-    bool _e18 = local_46;
+    bool _e18 = local_47;
     if (_e18) {
         if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_50 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_51 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_50 = true;
+                local_51 = true;
             }
-            bool _e37 = local_50;
+            bool _e37 = local_51;
             if (_e37) {
-                local_51 = (s_16.phase_param_a == 0.0);
+                local_52 = (s_16.phase_param_a == 0.0);
             } else {
-                local_51 = false;
+                local_52 = false;
             }
-            bool _e44 = local_51;
-            local_49 = _e44;
+            bool _e44 = local_52;
+            local_50 = _e44;
         } else {
-            local_49 = true;
+            local_50 = true;
         }
-        bool _e46 = local_49;
-        local_48 = _e46;
+        bool _e46 = local_50;
+        local_49 = _e46;
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e48 = local_48;
+    bool _e48 = local_49;
     return _e48;
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonical g_20) {
-    bool local_52 = false;
     bool local_53 = false;
     bool local_54 = false;
+    bool local_55 = false;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
-    bool local_55 = false;
-    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_56 = false;
+    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_57 = false;
     bool local_58 = false;
+    bool local_59 = false;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = 0.0;
     bool infinite_2 = true;
-    bool local_59 = false;
     bool local_60 = false;
-    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_61 = false;
+    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_62 = false;
     bool local_63 = false;
+    bool local_64 = false;
     AirlightResult _e2 = airlight_limits(s_17, g_20);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
         return _e2;
@@ -3873,23 +3888,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
     float big_h_8 = (s_17.sigma_t * h_6);
     bool _e12 = airlight_isotropic_scene(s_17);
     if (_e12) {
-        local_52 = (t0_1 < x_h_1);
-    } else {
-        local_52 = false;
-    }
-    bool _e17 = local_52;
-    if (_e17) {
-        if (!(g_20.t_hi_infinite)) {
-            local_54 = (x_h_1 < t1_1);
-        } else {
-            local_54 = true;
-        }
-        bool _e26 = local_54;
-        local_53 = _e26;
+        local_53 = (t0_1 < x_h_1);
     } else {
         local_53 = false;
     }
-    bool _e28 = local_53;
+    bool _e17 = local_53;
+    if (_e17) {
+        if (!(g_20.t_hi_infinite)) {
+            local_55 = (x_h_1 < t1_1);
+        } else {
+            local_55 = true;
+        }
+        bool _e26 = local_55;
+        local_54 = _e26;
+    } else {
+        local_54 = false;
+    }
+    bool _e28 = local_54;
     if (_e28) {
         float _e29 = airlight_whole_line(s_17, g_20, big_h_8);
         return AirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
@@ -3905,11 +3920,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
-            local_55 = (t1_1 < x_h_1);
+            local_56 = (t1_1 < x_h_1);
         } else {
-            local_55 = false;
+            local_56 = false;
         }
-        bool _e61 = local_55;
+        bool _e61 = local_56;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3925,11 +3940,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_56 = (_e89 > 0.0);
+            local_57 = (_e89 > 0.0);
         } else {
-            local_56 = false;
+            local_57 = false;
         }
-        bool _e93 = local_56;
+        bool _e93 = local_57;
         if (_e93) {
             float _e95 = half_13.big_h;
             float _e96 = airlight_cut_length(_e95, _e67);
@@ -3946,18 +3961,18 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
-        local_57 = (t1_1 > x_h_1);
+        local_58 = (t1_1 > x_h_1);
     } else {
-        local_57 = true;
+        local_58 = true;
     }
-    bool _e120 = local_57;
+    bool _e120 = local_58;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_58 = !(_e123);
+        local_59 = !(_e123);
     } else {
-        local_58 = false;
+        local_59 = false;
     }
-    bool _e126 = local_58;
+    bool _e126 = local_59;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3967,22 +3982,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_20.t_hi_infinite)) {
             bool _e145 = airlight_is_finite(a_e_1);
-            local_59 = _e145;
+            local_60 = _e145;
         } else {
-            local_59 = false;
+            local_60 = false;
         }
-        bool _e147 = local_59;
+        bool _e147 = local_60;
         if (_e147) {
             float _e148 = airlight_bounded(a_e_1);
             float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 bool _e162 = airlight_is_finite(dv_end_1);
-                local_60 = _e162;
+                local_61 = _e162;
             } else {
-                local_60 = false;
+                local_61 = false;
             }
-            bool _e164 = local_60;
+            bool _e164 = local_61;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4002,31 +4017,31 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_61 = (_e183 > 0.0);
+            local_62 = (_e183 > 0.0);
         } else {
-            local_61 = false;
+            local_62 = false;
         }
-        bool _e187 = local_61;
+        bool _e187 = local_62;
         if (_e187) {
             float _e189 = half_14.big_h;
             float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
             bool _e193 = infinite_2;
             if (!(_e193)) {
                 float _e197 = dv_3;
-                local_62 = (_e192 < _e197);
+                local_63 = (_e192 < _e197);
             } else {
-                local_62 = true;
+                local_63 = true;
             }
-            bool _e200 = local_62;
+            bool _e200 = local_63;
             if (_e200) {
                 float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
                 if ((cut_y_lo > 0.0)) {
                     bool _e209 = airlight_is_finite(_e192);
-                    local_63 = _e209;
+                    local_64 = _e209;
                 } else {
-                    local_63 = false;
+                    local_64 = false;
                 }
-                bool _e211 = local_63;
+                bool _e211 = local_64;
                 if (_e211) {
                     float _e214 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
@@ -4044,23 +4059,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_64 = false;
     bool local_65 = false;
+    bool local_66 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_64 = _e6;
-    } else {
-        local_64 = false;
-    }
-    bool _e8 = local_64;
-    if (_e8) {
-        bool _e12 = airlight_is_finite(v.z);
-        local_65 = _e12;
+        local_65 = _e6;
     } else {
         local_65 = false;
     }
-    bool _e14 = local_65;
+    bool _e8 = local_65;
+    if (_e8) {
+        bool _e12 = airlight_is_finite(v.z);
+        local_66 = _e12;
+    } else {
+        local_66 = false;
+    }
+    bool _e14 = local_66;
     return _e14;
 }
 
@@ -4073,15 +4088,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_66 = false;
+    bool local_67 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_66 = _e6;
+        local_67 = _e6;
     } else {
-        local_66 = false;
+        local_67 = false;
     }
-    bool _e8 = local_66;
+    bool _e8 = local_67;
     return _e8;
 }
 
@@ -4092,7 +4107,6 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_18) {
-    bool local_67 = false;
     bool local_68 = false;
     bool local_69 = false;
     bool local_70 = false;
@@ -4102,8 +4116,8 @@ bool airlight_valid(AirlightScene s_18) {
     bool local_74 = false;
     bool local_75 = false;
     bool local_76 = false;
-    bool ok = false;
     bool local_77 = false;
+    bool ok = false;
     bool local_78 = false;
     bool local_79 = false;
     bool local_80 = false;
@@ -4131,101 +4145,102 @@ bool airlight_valid(AirlightScene s_18) {
     bool local_102 = false;
     bool local_103 = false;
     bool local_104 = false;
+    bool local_105 = false;
     bool _e2 = airlight_vec_finite(s_18.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_18.dir);
-        local_67 = _e6;
-    } else {
-        local_67 = false;
-    }
-    bool _e8 = local_67;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_18.dir);
-        local_68 = _e12;
+        local_68 = _e6;
     } else {
         local_68 = false;
     }
-    bool _e14 = local_68;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_18.t_min);
-        local_69 = _e18;
+    bool _e8 = local_68;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_18.dir);
+        local_69 = _e12;
     } else {
         local_69 = false;
     }
-    bool _e20 = local_69;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_18.light_position);
-        local_70 = _e24;
+    bool _e14 = local_69;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_18.t_min);
+        local_70 = _e18;
     } else {
         local_70 = false;
     }
-    bool _e26 = local_70;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_18.intensity);
-        local_71 = _e30;
+    bool _e20 = local_70;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_18.light_position);
+        local_71 = _e24;
     } else {
         local_71 = false;
     }
-    bool _e32 = local_71;
-    if (_e32) {
-        local_72 = (s_18.intensity >= 0.0);
+    bool _e26 = local_71;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_18.intensity);
+        local_72 = _e30;
     } else {
         local_72 = false;
     }
-    bool _e39 = local_72;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_18.sigma_s);
-        local_73 = _e43;
+    bool _e32 = local_72;
+    if (_e32) {
+        local_73 = (s_18.intensity >= 0.0);
     } else {
         local_73 = false;
     }
-    bool _e45 = local_73;
-    if (_e45) {
-        local_74 = (s_18.sigma_s >= 0.0);
+    bool _e39 = local_73;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_18.sigma_s);
+        local_74 = _e43;
     } else {
         local_74 = false;
     }
-    bool _e52 = local_74;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_18.sigma_t);
-        local_75 = _e56;
+    bool _e45 = local_74;
+    if (_e45) {
+        local_75 = (s_18.sigma_s >= 0.0);
     } else {
         local_75 = false;
     }
-    bool _e58 = local_75;
-    if (_e58) {
-        local_76 = (s_18.sigma_t >= 0.0);
+    bool _e52 = local_75;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_18.sigma_t);
+        local_76 = _e56;
     } else {
         local_76 = false;
     }
-    bool _e65 = local_76;
+    bool _e58 = local_76;
+    if (_e58) {
+        local_77 = (s_18.sigma_t >= 0.0);
+    } else {
+        local_77 = false;
+    }
+    bool _e65 = local_77;
     ok = _e65;
     if (((s_18.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_18.t_max);
-            local_77 = _e76;
-        } else {
-            local_77 = false;
-        }
-        bool _e78 = local_77;
-        if (_e78) {
-            local_78 = (s_18.t_min <= s_18.t_max);
+            local_78 = _e76;
         } else {
             local_78 = false;
         }
-        bool _e85 = local_78;
+        bool _e78 = local_78;
+        if (_e78) {
+            local_79 = (s_18.t_min <= s_18.t_max);
+        } else {
+            local_79 = false;
+        }
+        bool _e85 = local_79;
         ok = _e85;
     }
     if ((s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_18.light_end);
-            local_79 = _e93;
+            local_80 = _e93;
         } else {
-            local_79 = false;
+            local_80 = false;
         }
-        bool _e95 = local_79;
+        bool _e95 = local_80;
         ok = _e95;
     } else {
         if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -4233,76 +4248,76 @@ bool airlight_valid(AirlightScene s_18) {
         }
     }
     if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_80 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_81 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_80 = true;
+        local_81 = true;
     }
-    bool _e110 = local_80;
+    bool _e110 = local_81;
     if (_e110) {
         bool _e111 = ok;
         if (_e111) {
             bool _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_81 = _e115;
-        } else {
-            local_81 = false;
-        }
-        bool _e117 = local_81;
-        if (_e117) {
-            local_82 = (s_18.brdf_scale >= 0.0);
+            local_82 = _e115;
         } else {
             local_82 = false;
         }
-        bool _e124 = local_82;
-        if (_e124) {
-            local_83 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+        bool _e117 = local_82;
+        if (_e117) {
+            local_83 = (s_18.brdf_scale >= 0.0);
         } else {
             local_83 = false;
         }
-        bool _e131 = local_83;
-        if (_e131) {
-            local_84 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e124 = local_83;
+        if (_e124) {
+            local_84 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_84 = false;
         }
-        bool _e138 = local_84;
-        if (_e138) {
-            float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
-            bool _e145 = airlight_is_finite(_e144);
-            local_85 = _e145;
+        bool _e131 = local_84;
+        if (_e131) {
+            local_85 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_85 = false;
         }
-        bool _e147 = local_85;
+        bool _e138 = local_85;
+        if (_e138) {
+            float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
+            bool _e145 = airlight_is_finite(_e144);
+            local_86 = _e145;
+        } else {
+            local_86 = false;
+        }
+        bool _e147 = local_86;
         ok = _e147;
         if ((s_18.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
             bool _e151 = ok;
             if (_e151) {
                 bool _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_86 = _e155;
-            } else {
-                local_86 = false;
-            }
-            bool _e157 = local_86;
-            if (_e157) {
-                local_87 = (s_18.brdf_exponent >= 0.0);
+                local_87 = _e155;
             } else {
                 local_87 = false;
             }
-            bool _e164 = local_87;
-            if (_e164) {
-                bool _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_88 = _e168;
+            bool _e157 = local_87;
+            if (_e157) {
+                local_88 = (s_18.brdf_exponent >= 0.0);
             } else {
                 local_88 = false;
             }
-            bool _e170 = local_88;
-            if (_e170) {
-                bool _e174 = airlight_normalisable(s_18.brdf_view);
-                local_89 = _e174;
+            bool _e164 = local_88;
+            if (_e164) {
+                bool _e168 = airlight_vec_finite(s_18.brdf_view);
+                local_89 = _e168;
             } else {
                 local_89 = false;
             }
-            bool _e176 = local_89;
+            bool _e170 = local_89;
+            if (_e170) {
+                bool _e174 = airlight_normalisable(s_18.brdf_view);
+                local_90 = _e174;
+            } else {
+                local_90 = false;
+            }
+            bool _e176 = local_90;
             ok = _e176;
         }
     } else {
@@ -4314,72 +4329,72 @@ bool airlight_valid(AirlightScene s_18) {
         bool _e184 = ok;
         if (_e184) {
             bool _e188 = airlight_vec_finite(s_18.light_axis);
-            local_90 = _e188;
-        } else {
-            local_90 = false;
-        }
-        bool _e190 = local_90;
-        if (_e190) {
-            bool _e194 = airlight_normalisable(s_18.light_axis);
-            local_91 = _e194;
+            local_91 = _e188;
         } else {
             local_91 = false;
         }
-        bool _e196 = local_91;
-        if (_e196) {
-            local_92 = (s_18.light_param_a >= 0.0);
+        bool _e190 = local_91;
+        if (_e190) {
+            bool _e194 = airlight_normalisable(s_18.light_axis);
+            local_92 = _e194;
         } else {
             local_92 = false;
         }
-        bool _e203 = local_92;
-        if (_e203) {
-            local_93 = (s_18.light_param_a <= 1024.0);
+        bool _e196 = local_92;
+        if (_e196) {
+            local_93 = (s_18.light_param_a >= 0.0);
         } else {
             local_93 = false;
         }
-        bool _e210 = local_93;
-        if (_e210) {
-            local_94 = (fract((s_18.light_param_a * 0.5)) == 0.0);
+        bool _e203 = local_93;
+        if (_e203) {
+            local_94 = (s_18.light_param_a <= 1024.0);
         } else {
             local_94 = false;
         }
-        bool _e220 = local_94;
+        bool _e210 = local_94;
+        if (_e210) {
+            local_95 = (fract((s_18.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_95 = false;
+        }
+        bool _e220 = local_95;
         ok = _e220;
     } else {
         if ((s_18.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e224 = ok;
             if (_e224) {
                 bool _e228 = airlight_vec_finite(s_18.light_axis);
-                local_95 = _e228;
-            } else {
-                local_95 = false;
-            }
-            bool _e230 = local_95;
-            if (_e230) {
-                bool _e234 = airlight_normalisable(s_18.light_axis);
-                local_96 = _e234;
+                local_96 = _e228;
             } else {
                 local_96 = false;
             }
-            bool _e236 = local_96;
-            if (_e236) {
-                local_97 = (s_18.light_param_b < s_18.light_param_a);
+            bool _e230 = local_96;
+            if (_e230) {
+                bool _e234 = airlight_normalisable(s_18.light_axis);
+                local_97 = _e234;
             } else {
                 local_97 = false;
             }
-            bool _e243 = local_97;
-            if (_e243) {
-                local_98 = (s_18.light_param_b >= -1.0);
+            bool _e236 = local_97;
+            if (_e236) {
+                local_98 = (s_18.light_param_b < s_18.light_param_a);
             } else {
                 local_98 = false;
             }
-            bool _e250 = local_98;
-            if (_e250) {
-                local_99 = (s_18.light_param_a <= 1.0);
+            bool _e243 = local_98;
+            if (_e243) {
+                local_99 = (s_18.light_param_b >= -1.0);
             } else {
                 local_99 = false;
             }
-            bool _e257 = local_99;
+            bool _e250 = local_99;
+            if (_e250) {
+                local_100 = (s_18.light_param_a <= 1.0);
+            } else {
+                local_100 = false;
+            }
+            bool _e257 = local_100;
             ok = _e257;
         } else {
             if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -4398,40 +4413,40 @@ bool airlight_valid(AirlightScene s_18) {
         case 4u: {
             bool _e267 = ok;
             if (_e267) {
-                local_100 = g_ok;
+                local_101 = g_ok;
             } else {
-                local_100 = false;
+                local_101 = false;
             }
-            bool _e271 = local_100;
+            bool _e271 = local_101;
             ok = _e271;
             break;
         }
         case 5u: {
             bool _e272 = ok;
             if (_e272) {
-                local_101 = g_ok;
-            } else {
-                local_101 = false;
-            }
-            bool _e276 = local_101;
-            if (_e276) {
-                local_102 = (abs(s_18.phase_param_b) < 1.0);
+                local_102 = g_ok;
             } else {
                 local_102 = false;
             }
-            bool _e284 = local_102;
-            if (_e284) {
-                local_103 = (s_18.phase_param_c >= 0.0);
+            bool _e276 = local_102;
+            if (_e276) {
+                local_103 = (abs(s_18.phase_param_b) < 1.0);
             } else {
                 local_103 = false;
             }
-            bool _e291 = local_103;
-            if (_e291) {
-                local_104 = (s_18.phase_param_c <= 1.0);
+            bool _e284 = local_103;
+            if (_e284) {
+                local_104 = (s_18.phase_param_c >= 0.0);
             } else {
                 local_104 = false;
             }
-            bool _e298 = local_104;
+            bool _e291 = local_104;
+            if (_e291) {
+                local_105 = (s_18.phase_param_c <= 1.0);
+            } else {
+                local_105 = false;
+            }
+            bool _e298 = local_105;
             ok = _e298;
             break;
         }
@@ -4503,28 +4518,28 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_105 = false;
     bool local_106 = false;
+    bool local_107 = false;
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_106 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_107 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_106 = false;
+            local_107 = false;
         }
-        bool _e21 = local_106;
-        local_105 = _e21;
+        bool _e21 = local_107;
+        local_106 = _e21;
     } else {
-        local_105 = true;
+        local_106 = true;
     }
-    bool _e23 = local_105;
+    bool _e23 = local_106;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) {
-    bool local_107 = false;
-    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_108 = false;
+    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_109 = false;
     vec3 a_16 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_20.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
@@ -4536,11 +4551,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_107 = !(_e38);
+        local_108 = !(_e38);
     } else {
-        local_107 = true;
+        local_108 = true;
     }
-    bool _e41 = local_107;
+    bool _e41 = local_108;
     if (_e41) {
         return plain;
     }
@@ -4564,11 +4579,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     float h_7 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_108 = (h_7 > 0.0);
+        local_109 = (h_7 > 0.0);
     } else {
-        local_108 = false;
+        local_109 = false;
     }
-    bool _e101 = local_108;
+    bool _e101 = local_109;
     if (!(_e101)) {
         return plain;
     }
@@ -4955,26 +4970,26 @@ AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels) {
 
 AirlightOuter airlight_surface(AirlightScene s_24) {
     AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
-    bool local_109 = false;
+    bool local_110 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_17 = 1u;
     uint j_3 = 0u;
-    bool local_110 = false;
+    bool local_111 = false;
     uint k_4 = 0u;
     uint i_18 = 0u;
-    bool local_111 = false;
+    bool local_112 = false;
     uint i_19 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     vec3 to_light_1 = (s_24.light_position - s_24.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_24.intensity == 0.0))) {
-        local_109 = (s_24.sigma_s == 0.0);
+        local_110 = (s_24.sigma_s == 0.0);
     } else {
-        local_109 = true;
+        local_110 = true;
     }
-    bool _e18 = local_109;
+    bool _e18 = local_110;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5084,11 +5099,11 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
                 if ((_e219 > 0u)) {
                     uint _e224 = j_3;
                     float _e228 = cuts_1[(_e224 - 1u)];
-                    local_110 = (_e228 > c_10);
+                    local_111 = (_e228 > c_10);
                 } else {
-                    local_110 = false;
+                    local_111 = false;
                 }
-                bool _e231 = local_110;
+                bool _e231 = local_111;
                 if (_e231) {
                 } else {
                     break;
@@ -5126,11 +5141,11 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
             if ((_e256 > _e260)) {
                 uint _e264 = i_18;
                 float _e266 = cuts_1[_e264];
-                local_111 = (_e266 < AIRLIGHT_PI);
+                local_112 = (_e266 < AIRLIGHT_PI);
             } else {
-                local_111 = false;
+                local_112 = false;
             }
-            bool _e270 = local_111;
+            bool _e270 = local_112;
             if (_e270) {
                 uint _e271 = k_4;
                 k_4 = (_e271 + 1u);
@@ -5169,7 +5184,7 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_17) {
-    bool local_112 = false;
+    bool local_113 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_17));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -5177,11 +5192,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_17) {
     float clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_112 = (clip > 0.0);
+        local_113 = (clip > 0.0);
     } else {
-        local_112 = false;
+        local_113 = false;
     }
-    bool _e35 = local_112;
+    bool _e35 = local_113;
     if (_e35) {
         float _e39 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
@@ -5200,7 +5215,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, boo
 
 float airlight_arc_end(float x_18, float cut) {
     float end_1 = 0.0;
-    bool local_113 = false;
+    bool local_114 = false;
     end_1 = x_18;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -5216,11 +5231,11 @@ float airlight_arc_end(float x_18, float cut) {
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_113 = (_e21 < cut);
+        local_114 = (_e21 < cut);
     } else {
-        local_113 = false;
+        local_114 = false;
     }
-    bool _e24 = local_113;
+    bool _e24 = local_114;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5229,17 +5244,17 @@ vec2[5] airlight_lobe_rule() {
 }
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
-    bool local_114 = false;
+    bool local_115 = false;
     float sum_5 = 0.0;
     uint k_5 = 0u;
     float w_7 = (hi_3 - lo_4);
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
-        local_114 = !((_e14 > 0.0));
+        local_115 = !((_e14 > 0.0));
     } else {
-        local_114 = true;
+        local_115 = true;
     }
-    bool _e19 = local_114;
+    bool _e19 = local_115;
     if (_e19) {
         return 0.0;
     }
@@ -5348,31 +5363,31 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
 
 AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
-    bool local_115 = false;
     bool local_116 = false;
+    bool local_117 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_117 = false;
     bool local_118 = false;
     bool local_119 = false;
     bool local_120 = false;
     bool local_121 = false;
     bool local_122 = false;
-    float scale = 0.0;
     bool local_123 = false;
+    float scale = 0.0;
     bool local_124 = false;
     bool local_125 = false;
     bool local_126 = false;
     bool local_127 = false;
+    bool local_128 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
     uint i_21 = 0u;
-    bool local_128 = false;
     bool local_129 = false;
     bool local_130 = false;
+    bool local_131 = false;
     uint n_1 = 0u;
     uint i_22 = 0u;
-    bool local_131 = false;
+    bool local_132 = false;
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_25);
         return _e4;
@@ -5386,17 +5401,17 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     vec3 ab_1 = (s_25.light_end - s_25.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_115 = (s_25.intensity == 0.0);
-    } else {
-        local_115 = true;
-    }
-    bool _e26 = local_115;
-    if (!(_e26)) {
-        local_116 = (s_25.sigma_s == 0.0);
+        local_116 = (s_25.intensity == 0.0);
     } else {
         local_116 = true;
     }
-    bool _e34 = local_116;
+    bool _e26 = local_116;
+    if (!(_e26)) {
+        local_117 = (s_25.sigma_s == 0.0);
+    } else {
+        local_117 = true;
+    }
+    bool _e34 = local_117;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -5420,94 +5435,94 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_117 = (sin_a_1 > 0.0);
-    } else {
-        local_117 = false;
-    }
-    bool _e84 = local_117;
-    if (_e84) {
-        float _e87 = s_star;
-        local_118 = (_e87 >= 0.0);
+        local_118 = (sin_a_1 > 0.0);
     } else {
         local_118 = false;
     }
-    bool _e91 = local_118;
-    if (_e91) {
-        float _e94 = s_star;
-        local_119 = (_e94 <= _e15);
+    bool _e84 = local_118;
+    if (_e84) {
+        float _e87 = s_star;
+        local_119 = (_e87 >= 0.0);
     } else {
         local_119 = false;
     }
-    bool _e97 = local_119;
-    if (_e97) {
-        float _e101 = t_star;
-        local_120 = (s_25.t_min <= _e101);
+    bool _e91 = local_119;
+    if (_e91) {
+        float _e94 = s_star;
+        local_120 = (_e94 <= _e15);
     } else {
         local_120 = false;
     }
-    bool _e104 = local_120;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_122 = (_e110 <= s_25.t_max);
-        } else {
-            local_122 = true;
-        }
-        bool _e114 = local_122;
-        local_121 = _e114;
+    bool _e97 = local_120;
+    if (_e97) {
+        float _e101 = t_star;
+        local_121 = (s_25.t_min <= _e101);
     } else {
         local_121 = false;
     }
-    bool _e116 = local_121;
+    bool _e104 = local_121;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_123 = (_e110 <= s_25.t_max);
+        } else {
+            local_123 = true;
+        }
+        bool _e114 = local_123;
+        local_122 = _e114;
+    } else {
+        local_122 = false;
+    }
+    bool _e116 = local_122;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_123 = (_e73 > 0.0);
+        local_124 = (_e73 > 0.0);
     } else {
-        local_123 = false;
+        local_124 = false;
     }
-    bool _e129 = local_123;
+    bool _e129 = local_124;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_124 = (_e136 < (_e15 + _e15));
-    } else {
-        local_124 = false;
-    }
-    bool _e140 = local_124;
-    if (_e140) {
-        float _e143 = scale;
-        local_125 = (_e143 < _e15);
+        local_125 = (_e136 < (_e15 + _e15));
     } else {
         local_125 = false;
     }
-    bool near_1 = local_125;
+    bool _e140 = local_125;
+    if (_e140) {
+        float _e143 = scale;
+        local_126 = (_e143 < _e15);
+    } else {
+        local_126 = false;
+    }
+    bool near_1 = local_126;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_126 = _e154;
+        local_127 = _e154;
     } else {
-        local_126 = false;
+        local_127 = false;
     }
-    bool _e156 = local_126;
+    bool _e156 = local_127;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_127 = _e163;
+        local_128 = _e163;
     } else {
-        local_127 = false;
+        local_128 = false;
     }
-    bool _e165 = local_127;
+    bool _e165 = local_128;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -5533,21 +5548,21 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         {
             if ((cos_a_2 == 0.0)) {
                 uint _e196 = i_21;
-                local_128 = (_e196 > 0u);
+                local_129 = (_e196 > 0u);
             } else {
-                local_128 = false;
+                local_129 = false;
             }
-            bool _e200 = local_128;
+            bool _e200 = local_129;
             if (_e200) {
                 continue;
             }
             uint _e201 = i_21;
             if ((_e201 == 2u)) {
-                local_129 = infinite_4;
+                local_130 = infinite_4;
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            bool _e207 = local_129;
+            bool _e207 = local_130;
             if (_e207) {
                 continue;
             }
@@ -5556,11 +5571,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if ((_e210 > 0.0)) {
                 uint _e215 = i_21;
                 float _e217 = at[_e215];
-                local_130 = (_e217 < _e15);
+                local_131 = (_e217 < _e15);
             } else {
-                local_130 = false;
+                local_131 = false;
             }
-            bool _e220 = local_130;
+            bool _e220 = local_131;
             if (_e220) {
                 uint _e221 = i_21;
                 AirlightOuter _e223 = g_24;
@@ -5620,11 +5635,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if ((_e280 > _e284)) {
                 uint _e288 = i_22;
                 float _e290 = cuts_2[_e288];
-                local_131 = (_e290 < _e265);
+                local_132 = (_e290 < _e265);
             } else {
-                local_131 = false;
+                local_132 = false;
             }
-            bool _e293 = local_131;
+            bool _e293 = local_132;
             if (_e293) {
                 uint _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -5711,14 +5726,14 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_132 = false;
+    bool local_133 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_132 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_133 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_132 = true;
+        local_133 = true;
     }
-    bool _e11 = local_132;
+    bool _e11 = local_133;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -5727,17 +5742,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_2) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_133 = false;
+    bool local_134 = false;
     AirlightCanonical g_26 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_2 = n_2.scene;
     bool _e7 = airlight_vec_finite(p_2.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_2.dir);
-        local_133 = _e11;
+        local_134 = _e11;
     } else {
-        local_133 = false;
+        local_134 = false;
     }
-    bool _e13 = local_133;
+    bool _e13 = local_134;
     if (_e13) {
         g_26 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -5761,21 +5776,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
-    bool local_134 = false;
     bool local_135 = false;
+    bool local_136 = false;
     bool _e1 = airlight_valid(s_27);
     if (!(!(_e1))) {
-        local_134 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_134 = true;
-    }
-    bool _e10 = local_134;
-    if (!(_e10)) {
-        local_135 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_135 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_135 = true;
     }
-    bool _e18 = local_135;
+    bool _e10 = local_135;
+    if (!(_e10)) {
+        local_136 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_136 = true;
+    }
+    bool _e18 = local_136;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5784,21 +5799,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_28) {
-    bool local_136 = false;
     bool local_137 = false;
+    bool local_138 = false;
     bool _e1 = airlight_valid(s_28);
     if (!(!(_e1))) {
-        local_136 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_136 = true;
-    }
-    bool _e10 = local_136;
-    if (!(_e10)) {
-        local_137 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_137 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_137 = true;
     }
-    bool _e18 = local_137;
+    bool _e10 = local_137;
+    if (!(_e10)) {
+        local_138 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_138 = true;
+    }
+    bool _e18 = local_138;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5833,14 +5848,14 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     float k_6 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_138 = false;
-    float f = 0.0;
     bool local_139 = false;
+    float f = 0.0;
+    bool local_140 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_140 = false;
     bool local_141 = false;
     bool local_142 = false;
+    bool local_143 = false;
     bool _e1 = airlight_valid(s_29);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -5896,11 +5911,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
-                        local_138 = (_e116 < 6u);
+                        local_139 = (_e116 < 6u);
                     } else {
-                        local_138 = false;
+                        local_139 = false;
                     }
-                    bool _e120 = local_138;
+                    bool _e120 = local_139;
                     float w_8 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
                     AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_8);
                     f = 0.0;
@@ -5910,11 +5925,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             return _e128;
                         }
                         if ((s_29.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_139 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_140 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_139 = false;
+                            local_140 = false;
                         }
-                        bool _e141 = local_139;
+                        bool _e141 = local_140;
                         if (_e141) {
                             return _e128;
                         }
@@ -5982,18 +5997,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_140 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_140 = true;
-                            }
-                            bool _e217 = local_140;
-                            if (!(_e217)) {
-                                bool _e221 = airlight_is_finite(total_4);
-                                local_141 = !(_e221);
+                                local_141 = (_e213 == _e6.max_panels);
                             } else {
                                 local_141 = true;
                             }
-                            bool _e224 = local_141;
+                            bool _e217 = local_141;
+                            if (!(_e217)) {
+                                bool _e221 = airlight_is_finite(total_4);
+                                local_142 = !(_e221);
+                            } else {
+                                local_142 = true;
+                            }
+                            bool _e224 = local_142;
                             if (_e224) {
                                 break;
                             }
@@ -6001,22 +6016,22 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             vec4 _e226 = airlight_list_get(_e225, worst_1);
                             float wa_1 = _e226.x;
                             float wb_1 = _e226.y;
-                            float mid_2 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_2 > wa_1)) {
-                                local_142 = (mid_2 < wb_1);
+                            float mid_3 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_3 > wa_1)) {
+                                local_143 = (mid_3 < wb_1);
                             } else {
-                                local_142 = false;
+                                local_143 = false;
                             }
-                            bool _e237 = local_142;
+                            bool _e237 = local_143;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e226.xyz, 0.0));
                                 continue;
                             }
                             a_17 = wa_1;
-                            b_13 = mid_2;
+                            b_13 = mid_3;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_2;
+                            queued_lo = mid_3;
                             queued_hi = wb_1;
                             split = true;
                             break;

@@ -2239,7 +2239,7 @@ fn airlight_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_7: f32, half
     return _e31;
 }
 
-fn airlight_split_point(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
+fn airlight_graded_split(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
     var local_20: bool;
 
     let t_5 = min(heights_3.x, min(heights_3.y, heights_3.z));
@@ -2249,8 +2249,8 @@ fn airlight_split_point(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
     } else {
         local_20 = false;
     }
-    let _e28 = local_20;
-    return select((a_9 + ((b_8 - a_9) * 0.5f)), (a_9 + (2f * d_2)), _e28);
+    let _e24 = local_20;
+    return select(-1f, (a_9 + (2f * d_2)), _e24);
 }
 
 fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8: f32, half_10: AirlightHalf, lo: f32, hi: f32, f_max_4: ptr<function, f32>) -> f32 {
@@ -2262,6 +2262,7 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
     var pending: bool = false;
     var next_a: f32 = 0f;
     var next_b: f32 = 0f;
+    var local_21: bool;
     var count: u32 = 0u;
     var budget: u32 = AIRLIGHT_MAX_PANELS;
     var step_: u32 = 0u;
@@ -2271,9 +2272,9 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
     var mass_3: f32;
     var worst: u32;
     var i_9: u32;
-    var local_21: bool;
     var local_22: bool;
     var local_23: bool;
+    var local_24: bool;
     var total_1: f32 = 0f;
     var i_10: u32 = 0u;
 
@@ -2285,47 +2286,60 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
     let _e16 = airlight_singular_steps(s_8);
     a_10 = lo;
     b_9 = hi;
+    let _e55 = airlight_graded_split(lo, hi, _e10);
+    if (_e55 >= 0f) {
+        local_21 = true;
+    } else {
+        local_21 = false;
+    }
+    let _e62 = local_21;
+    if _e62 {
+        b_9 = _e55;
+        pending = true;
+        next_a = _e55;
+        next_b = hi;
+    }
     loop {
-        let _e61 = step_;
-        if (_e61 < AIRLIGHT_MAX_PANELS) {
+        let _e70 = step_;
+        if (_e70 < AIRLIGHT_MAX_PANELS) {
         } else {
             break;
         }
         {
-            let _e64 = a_10;
-            let _e65 = b_9;
-            let _e66 = airlight_panel(s_8, g_10, sigma_8, half_10, _e64, _e65, _e10, heights_v_1, _e16);
-            let _e67 = (*f_max_4);
-            (*f_max_4) = max(_e67, _e66.f_max);
-            let _e70 = slot;
-            let _e72 = a_10;
-            let _e73 = b_9;
-            list[_e70] = vec4<f32>(_e72, _e73, _e66.value, _e66.error);
-            let _e77 = slot;
-            mass_over_1[_e77] = _e66.mass_over;
-            let _e80 = budget;
-            budget = (_e80 - 1u);
-            let _e83 = slot;
-            let _e84 = count;
-            if (_e83 == _e84) {
-                let _e86 = count;
-                count = (_e86 + 1u);
+            let _e73 = a_10;
+            let _e74 = b_9;
+            let _e75 = airlight_panel(s_8, g_10, sigma_8, half_10, _e73, _e74, _e10, heights_v_1, _e16);
+            let _e76 = (*f_max_4);
+            (*f_max_4) = max(_e76, _e75.f_max);
+            let _e79 = slot;
+            let _e81 = a_10;
+            let _e82 = b_9;
+            list[_e79] = vec4<f32>(_e81, _e82, _e75.value, _e75.error);
+            let _e86 = slot;
+            mass_over_1[_e86] = _e75.mass_over;
+            let _e89 = budget;
+            budget = (_e89 - 1u);
+            let _e92 = slot;
+            let _e93 = count;
+            if (_e92 == _e93) {
+                let _e95 = count;
+                count = (_e95 + 1u);
             }
-            let _e89 = pending;
-            if _e89 {
-                let _e90 = next_a;
-                a_10 = _e90;
-                let _e91 = next_b;
-                b_9 = _e91;
-                let _e92 = count;
-                slot = _e92;
+            let _e98 = pending;
+            if _e98 {
+                let _e99 = next_a;
+                a_10 = _e99;
+                let _e100 = next_b;
+                b_9 = _e100;
+                let _e101 = count;
+                slot = _e101;
                 pending = false;
                 continue;
             }
             retire = 0u;
             loop {
-                let _e96 = retire;
-                if (_e96 <= AIRLIGHT_PANEL_LIST) {
+                let _e105 = retire;
+                if (_e105 <= AIRLIGHT_PANEL_LIST) {
                 } else {
                     break;
                 }
@@ -2336,128 +2350,129 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
                     worst = 0u;
                     i_9 = 0u;
                     loop {
-                        let _e109 = i_9;
-                        if (_e109 < AIRLIGHT_PANEL_LIST) {
+                        let _e118 = i_9;
+                        if (_e118 < AIRLIGHT_PANEL_LIST) {
                         } else {
                             break;
                         }
                         {
-                            let _e112 = i_9;
-                            let _e113 = count;
-                            if (_e112 >= _e113) {
+                            let _e121 = i_9;
+                            let _e122 = count;
+                            if (_e121 >= _e122) {
                                 break;
                             }
-                            let _e115 = total;
-                            let _e116 = i_9;
-                            let _e119 = list[_e116].z;
-                            total = (_e115 + _e119);
-                            let _e121 = errors;
-                            let _e122 = i_9;
-                            let _e125 = list[_e122].w;
-                            errors = (_e121 + _e125);
-                            let _e127 = mass_3;
-                            let _e128 = i_9;
-                            let _e130 = mass_over_1[_e128];
-                            mass_3 = (_e127 + _e130);
-                            let _e132 = i_9;
-                            let _e135 = list[_e132].w;
-                            let _e136 = worst;
-                            let _e139 = list[_e136].w;
-                            if (_e135 > _e139) {
-                                let _e141 = i_9;
-                                worst = _e141;
+                            let _e124 = total;
+                            let _e125 = i_9;
+                            let _e128 = list[_e125].z;
+                            total = (_e124 + _e128);
+                            let _e130 = errors;
+                            let _e131 = i_9;
+                            let _e134 = list[_e131].w;
+                            errors = (_e130 + _e134);
+                            let _e136 = mass_3;
+                            let _e137 = i_9;
+                            let _e139 = mass_over_1[_e137];
+                            mass_3 = (_e136 + _e139);
+                            let _e141 = i_9;
+                            let _e144 = list[_e141].w;
+                            let _e145 = worst;
+                            let _e148 = list[_e145].w;
+                            if (_e144 > _e148) {
+                                let _e150 = i_9;
+                                worst = _e150;
                             }
                         }
                         continuing {
-                            let _e143 = i_9;
-                            i_9 = (_e143 + 1u);
+                            let _e152 = i_9;
+                            i_9 = (_e152 + 1u);
                         }
                     }
-                    let _e146 = total;
-                    let _e149 = (*f_max_4);
-                    let _e151 = mass_3;
-                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e146), ((AIRLIGHT_PANEL_FLOOR * _e149) * _e151)));
-                    let _e155 = errors;
-                    if !((_e155 <= goal)) {
-                        let _e160 = worst;
-                        let _e163 = list[_e160].w;
-                        local_21 = !((_e163 > 0f));
-                    } else {
-                        local_21 = true;
-                    }
-                    let _e168 = local_21;
-                    if !(_e168) {
-                        let _e172 = budget;
-                        local_22 = (_e172 < 2u);
+                    let _e155 = total;
+                    let _e158 = (*f_max_4);
+                    let _e160 = mass_3;
+                    let goal = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e155), ((AIRLIGHT_PANEL_FLOOR * _e158) * _e160)));
+                    let _e164 = errors;
+                    if !((_e164 <= goal)) {
+                        let _e169 = worst;
+                        let _e172 = list[_e169].w;
+                        local_22 = !((_e172 > 0f));
                     } else {
                         local_22 = true;
                     }
-                    let _e176 = local_22;
-                    if !(_e176) {
-                        let _e180 = count;
-                        local_23 = (_e180 == AIRLIGHT_PANEL_LIST);
+                    let _e177 = local_22;
+                    if !(_e177) {
+                        let _e181 = budget;
+                        local_23 = (_e181 < 2u);
                     } else {
                         local_23 = true;
                     }
-                    let _e184 = local_23;
-                    if _e184 {
-                        let _e185 = total;
-                        return _e185;
+                    let _e185 = local_23;
+                    if !(_e185) {
+                        let _e189 = count;
+                        local_24 = (_e189 == AIRLIGHT_PANEL_LIST);
+                    } else {
+                        local_24 = true;
                     }
-                    let _e186 = worst;
-                    let wa = list[_e186].x;
-                    let _e190 = worst;
-                    let wb = list[_e190].y;
+                    let _e193 = local_24;
+                    if _e193 {
+                        let _e194 = total;
+                        return _e194;
+                    }
+                    let _e195 = worst;
+                    let wa = list[_e195].x;
+                    let _e199 = worst;
+                    let wb = list[_e199].y;
                     if !(((wb - wa) > (AIRLIGHT_FLT_EPS * wb))) {
-                        let _e199 = worst;
-                        list[_e199].w = 0f;
+                        let _e208 = worst;
+                        list[_e208].w = 0f;
                         continue;
                     }
-                    let _e203 = airlight_split_point(wa, wb, _e10);
+                    let _e212 = airlight_graded_split(wa, wb, _e10);
+                    let mid_1 = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
                     a_10 = wa;
-                    b_9 = _e203;
-                    let _e204 = worst;
-                    slot = _e204;
+                    b_9 = mid_1;
+                    let _e220 = worst;
+                    slot = _e220;
                     pending = true;
-                    next_a = _e203;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
                 continuing {
-                    let _e207 = retire;
-                    retire = (_e207 + 1u);
+                    let _e223 = retire;
+                    retire = (_e223 + 1u);
                 }
             }
         }
         continuing {
-            let _e210 = step_;
-            step_ = (_e210 + 1u);
+            let _e226 = step_;
+            step_ = (_e226 + 1u);
         }
     }
     loop {
-        let _e216 = i_10;
-        if (_e216 < AIRLIGHT_PANEL_LIST) {
+        let _e232 = i_10;
+        if (_e232 < AIRLIGHT_PANEL_LIST) {
         } else {
             break;
         }
         {
-            let _e219 = i_10;
-            let _e220 = count;
-            if (_e219 >= _e220) {
+            let _e235 = i_10;
+            let _e236 = count;
+            if (_e235 >= _e236) {
                 break;
             }
-            let _e222 = total_1;
-            let _e223 = i_10;
-            let _e226 = list[_e223].z;
-            total_1 = (_e222 + _e226);
+            let _e238 = total_1;
+            let _e239 = i_10;
+            let _e242 = list[_e239].z;
+            total_1 = (_e238 + _e242);
         }
         continuing {
-            let _e229 = i_10;
-            i_10 = (_e229 + 1u);
+            let _e245 = i_10;
+            i_10 = (_e245 + 1u);
         }
     }
-    let _e231 = total_1;
-    return _e231;
+    let _e247 = total_1;
+    return _e247;
 }
 
 fn airlight_atan2_upper(y_3: f32, x_8: f32) -> f32 {
@@ -2483,14 +2498,14 @@ fn airlight_angle_y(u: f32) -> f32 {
 }
 
 fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32) -> f32 {
-    var local_24: bool;
+    var local_25: bool;
 
     if !(!((gap_1 > 0f))) {
-        local_24 = (gap_1 >= AIRLIGHT_FLT_MAX);
+        local_25 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    let _e14 = local_24;
+    let _e14 = local_25;
     if _e14 {
         return 0f;
     }
@@ -2521,7 +2536,7 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_9: f32, j_1: f32)
 }
 
 fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32> {
-    var local_25: bool;
+    var local_26: bool;
     var y1_: f32 = AIRLIGHT_FLT_MAX;
     var y_cut: f32 = AIRLIGHT_FLT_MAX;
     var psi1_: f32 = 0f;
@@ -2536,7 +2551,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var f_max_5: f32 = 0f;
     var i_11: u32 = 0u;
     var m_3: array<f32, 8>;
-    var local_26: bool;
+    var local_27: bool;
     var x_10: f32 = 0f;
 
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -2547,11 +2562,11 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     let u1_ = ((g_11.t_hi - g_11.x_h) / h_3);
     if !(g_11.t_hi_infinite) {
         let _e21 = airlight_is_finite(u1_);
-        local_25 = _e21;
+        local_26 = _e21;
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    let u1_finite = local_25;
+    let u1_finite = local_26;
     let big_h_7 = (s_9.sigma_t * h_3);
     let _e26 = airlight_angle_y(u0_);
     if u1_finite {
@@ -2588,7 +2603,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     if !((hw_2 > 0f)) {
         return vec2<f32>(0f, 0f);
     }
-    let mid_1 = ((_e38 + hw_2) - 1.5707964f);
+    let mid_2 = ((_e38 + hw_2) - 1.5707964f);
     let _e84 = y1_;
     let _e85 = y_cut;
     let y_end = min(_e84, _e85);
@@ -2613,20 +2628,20 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     switch s_9.phase_kind {
         case 2u, 4u: {
             let _e132 = airlight_hg_gap(p0_4);
-            let _e133 = airlight_angle_floor(p0_4, _e132, mid_1, hw_2, step_3);
+            let _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
             rate = _e133;
         }
         case 3u: {
             let a_23 = abs(p0_4);
-            let _e142 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), mid_1, hw_2, step_3);
+            let _e142 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), mid_2, hw_2, step_3);
             rate = _e142;
         }
         case 5u: {
             let p1_3 = s_9.phase_param_b;
             let _e144 = airlight_hg_gap(p0_4);
-            let _e145 = airlight_angle_floor(p0_4, _e144, mid_1, hw_2, step_3);
+            let _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
             let _e146 = airlight_hg_gap(p1_3);
-            let _e147 = airlight_angle_floor(p1_3, _e146, mid_1, hw_2, step_3);
+            let _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
             rate = max(_e145, _e147);
         }
         default: {
@@ -2638,7 +2653,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     }
     if (big_h_7 > 0f) {
         let _e160 = rate;
-        let _e165 = airlight_bernstein_rho(((1.5707964f - mid_1) / hw_2), 0f);
+        let _e165 = airlight_bernstein_rho(((1.5707964f - mid_2) / hw_2), 0f);
         rate = max(_e160, (1f / _e165));
     }
     let _e169 = airlight_gauss_rule();
@@ -2704,11 +2719,11 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     let _e289 = mass_4;
     let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
     if !((error_4 <= accepted)) {
-        local_26 = (error_4 <= _e282);
+        local_27 = (error_4 <= _e282);
     } else {
-        local_26 = true;
+        local_27 = true;
     }
-    let _e299 = local_26;
+    let _e299 = local_27;
     if !(_e299) {
         return vec2<f32>(0f, 0f);
     }
@@ -2723,7 +2738,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_2: f32) -> vec2<f32> {
-    var local_27: bool;
+    var local_28: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
@@ -2734,11 +2749,11 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_2: f32) -> vec2<f32> 
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_27 = !(_e21);
+        local_28 = !(_e21);
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    let _e24 = local_27;
+    let _e24 = local_28;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
@@ -2771,13 +2786,13 @@ fn airlight_cosine(g_12: AirlightCanonical, sigma_10: f32, y_4: f32) -> f32 {
 }
 
 fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
-    var local_28: bool;
     var local_29: bool;
-    var y1_1: f32;
     var local_30: bool;
+    var y1_1: f32;
     var local_31: bool;
     var local_32: bool;
     var local_33: bool;
+    var local_34: bool;
 
     let _e9 = airlight_cosine(g_13, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
@@ -2785,21 +2800,21 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     }
     if (lo_1 == half_11.y_lo) {
         let _e17 = airlight_cosine(g_13, sigma_11, lo_1);
-        local_28 = !((_e17 < bound));
+        local_29 = !((_e17 < bound));
     } else {
-        local_28 = false;
+        local_29 = false;
     }
-    let _e21 = local_28;
+    let _e21 = local_29;
     if _e21 {
         return false;
     }
     if (hi_1 == half_11.y_hi) {
         let _e27 = airlight_cosine(g_13, sigma_11, hi_1);
-        local_29 = !((_e27 < bound));
+        local_30 = !((_e27 < bound));
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    let _e31 = local_29;
+    let _e31 = local_30;
     if _e31 {
         return false;
     }
@@ -2818,35 +2833,35 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     let _e53 = y1_1;
     if (_e53 > lo_1) {
         let _e57 = y1_1;
-        local_30 = (_e57 < hi_1);
-    } else {
-        local_30 = false;
-    }
-    let _e60 = local_30;
-    if _e60 {
-        let _e63 = y1_1;
-        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
-        local_31 = !((_e64 < bound));
+        local_31 = (_e57 < hi_1);
     } else {
         local_31 = false;
     }
-    let _e68 = local_31;
+    let _e60 = local_31;
+    if _e60 {
+        let _e63 = y1_1;
+        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
+        local_32 = !((_e64 < bound));
+    } else {
+        local_32 = false;
+    }
+    let _e68 = local_32;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_32 = (y2_2 < hi_1);
-    } else {
-        local_32 = false;
-    }
-    let _e75 = local_32;
-    if _e75 {
-        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
-        local_33 = !((_e78 < bound));
+        local_33 = (y2_2 < hi_1);
     } else {
         local_33 = false;
     }
-    let _e82 = local_33;
+    let _e75 = local_33;
+    if _e75 {
+        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
+        local_34 = !((_e78 < bound));
+    } else {
+        local_34 = false;
+    }
+    let _e82 = local_34;
     if _e82 {
         return false;
     }
@@ -2859,16 +2874,16 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
     var k_in: f32;
     var k_out: f32;
     var i_12: u32 = 0u;
-    var local_34: bool;
+    var local_35: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
     var i_14: u32 = 0u;
     var hi_2: f32;
-    var local_35: bool;
     var local_36: bool;
     var local_37: bool;
+    var local_38: bool;
 
     if isotropic {
         let _e7 = airlight_integrand(s_10, g_14, sigma_12, 0f);
@@ -2906,11 +2921,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                 if (_e56 > half_12.y_lo) {
                     let _e61 = i_12;
                     let _e63 = cuts[_e61];
-                    local_34 = (_e63 < half_12.y_hi);
+                    local_35 = (_e63 < half_12.y_hi);
                 } else {
-                    local_34 = false;
+                    local_35 = false;
                 }
-                let _e67 = local_34;
+                let _e67 = local_35;
                 if !(_e67) {
                     let _e69 = i_12;
                     cuts[_e69] = 2f;
@@ -2977,11 +2992,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
             if (_e127 < 4u) {
                 let _e132 = i_14;
                 let _e134 = cuts[_e132];
-                local_35 = (_e134 < 2f);
+                local_36 = (_e134 < 2f);
             } else {
-                local_35 = false;
+                local_36 = false;
             }
-            let _e138 = local_35;
+            let _e138 = local_36;
             if _e138 {
                 let _e139 = i_14;
                 let _e141 = cuts[_e139];
@@ -2995,11 +3010,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                     let _e151 = lo_2;
                     let _e152 = hi_2;
                     let _e153 = airlight_dark(g_14, sigma_12, half_12, _e150, _e151, _e152);
-                    local_36 = _e153;
+                    local_37 = _e153;
                 } else {
-                    local_36 = false;
+                    local_37 = false;
                 }
-                let _e155 = local_36;
+                let _e155 = local_37;
                 if !(_e155) {
                     let _e157 = total_2;
                     let _e158 = lo_2;
@@ -3014,11 +3029,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
             if (_e163 < 4u) {
                 let _e168 = i_14;
                 let _e170 = cuts[_e168];
-                local_37 = (_e170 >= 2f);
+                local_38 = (_e170 >= 2f);
             } else {
-                local_37 = false;
+                local_38 = false;
             }
-            let _e174 = local_37;
+            let _e174 = local_38;
             if _e174 {
                 break;
             }
@@ -3033,17 +3048,17 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
 }
 
 fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
-    var local_38: bool;
+    var local_39: bool;
     var span: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
     if !(g_15.t_hi_infinite) {
-        local_38 = (g_15.x_h > g_15.t_hi);
+        local_39 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_38 = false;
+        local_39 = false;
     }
-    let _e10 = local_38;
+    let _e10 = local_39;
     if _e10 {
         let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
@@ -3102,8 +3117,8 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_39: bool;
     var local_40: bool;
+    var local_41: bool;
     var x_11: f32 = 0f;
 
     let h_4 = g_16.h;
@@ -3113,11 +3128,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     let u_e = ((g_16.t_hi - g_16.x_h) / h_4);
     if !(g_16.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_39 = _e24;
+        local_40 = _e24;
     } else {
-        local_39 = false;
+        local_40 = false;
     }
-    let _e26 = local_39;
+    let _e26 = local_40;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -3125,11 +3140,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_40 = _e40;
+            local_41 = _e40;
         } else {
-            local_40 = false;
+            local_41 = false;
         }
-        let _e42 = local_40;
+        let _e42 = local_41;
         if _e42 {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3160,27 +3175,27 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
 }
 
 fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
-    var local_41: bool;
     var local_42: bool;
     var local_43: bool;
     var local_44: bool;
-    var gap_2: f32 = 0f;
     var local_45: bool;
+    var gap_2: f32 = 0f;
+    var local_46: bool;
 
     let t0_ = g_17.t_lo;
     let t1_ = g_17.t_hi;
     if !(g_17.t_hi_infinite) {
-        local_41 = (t1_ > t0_);
-    } else {
-        local_41 = true;
-    }
-    let _e10 = local_41;
-    if !(!(_e10)) {
-        local_42 = ((s_13.sigma_s * s_13.intensity) == 0f);
+        local_42 = (t1_ > t0_);
     } else {
         local_42 = true;
     }
-    let _e21 = local_42;
+    let _e10 = local_42;
+    if !(!(_e10)) {
+        local_43 = ((s_13.sigma_s * s_13.intensity) == 0f);
+    } else {
+        local_43 = true;
+    }
+    let _e21 = local_43;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3188,16 +3203,16 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     let x_h = g_17.x_h;
     if (t0_ <= x_h) {
         if !(g_17.t_hi_infinite) {
-            local_44 = (x_h <= t1_);
+            local_45 = (x_h <= t1_);
         } else {
-            local_44 = true;
+            local_45 = true;
         }
-        let _e36 = local_44;
-        local_43 = _e36;
+        let _e36 = local_45;
+        local_44 = _e36;
     } else {
-        local_43 = false;
+        local_44 = false;
     }
-    let inside = local_43;
+    let inside = local_44;
     if (x_h < t0_) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3207,11 +3222,11 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     }
     if !(inside) {
         let _e48 = gap_2;
-        local_45 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_46 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_45 = false;
+        local_46 = false;
     }
-    let _e55 = local_45;
+    let _e55 = local_46;
     if _e55 {
         let _e56 = airlight_on_line(s_13, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3223,75 +3238,75 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
 }
 
 fn airlight_isotropic_scene(s_14: AirlightScene) -> bool {
-    var local_46: bool;
     var local_47: bool;
     var local_48: bool;
     var local_49: bool;
     var local_50: bool;
     var local_51: bool;
+    var local_52: bool;
 
     if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_47 = (s_14.light_param_a == 0f);
+            local_48 = (s_14.light_param_a == 0f);
         } else {
-            local_47 = false;
+            local_48 = false;
         }
-        let _e16 = local_47;
-        local_46 = _e16;
+        let _e16 = local_48;
+        local_47 = _e16;
     } else {
-        local_46 = true;
+        local_47 = true;
     }
-    let _e18 = local_46;
+    let _e18 = local_47;
     if _e18 {
         if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_50 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_51 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_50 = true;
+                local_51 = true;
             }
-            let _e37 = local_50;
+            let _e37 = local_51;
             if _e37 {
-                local_51 = (s_14.phase_param_a == 0f);
+                local_52 = (s_14.phase_param_a == 0f);
             } else {
-                local_51 = false;
+                local_52 = false;
             }
-            let _e44 = local_51;
-            local_49 = _e44;
+            let _e44 = local_52;
+            local_50 = _e44;
         } else {
-            local_49 = true;
+            local_50 = true;
         }
-        let _e46 = local_49;
-        local_48 = _e46;
+        let _e46 = local_50;
+        local_49 = _e46;
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    let _e48 = local_48;
+    let _e48 = local_49;
     return _e48;
 }
 
 fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
-    var local_52: bool;
     var local_53: bool;
     var local_54: bool;
+    var local_55: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_55: bool;
-    var half_13: AirlightHalf;
     var local_56: bool;
+    var half_13: AirlightHalf;
     var local_57: bool;
     var local_58: bool;
+    var local_59: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_59: bool;
     var local_60: bool;
-    var half_14: AirlightHalf;
     var local_61: bool;
+    var half_14: AirlightHalf;
     var local_62: bool;
     var local_63: bool;
+    var local_64: bool;
 
     let _e2 = airlight_limits(s_15, g_18);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
@@ -3304,23 +3319,23 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
     let big_h_8 = (s_15.sigma_t * h_6);
     let _e12 = airlight_isotropic_scene(s_15);
     if _e12 {
-        local_52 = (t0_1 < x_h_1);
-    } else {
-        local_52 = false;
-    }
-    let _e17 = local_52;
-    if _e17 {
-        if !(g_18.t_hi_infinite) {
-            local_54 = (x_h_1 < t1_1);
-        } else {
-            local_54 = true;
-        }
-        let _e26 = local_54;
-        local_53 = _e26;
+        local_53 = (t0_1 < x_h_1);
     } else {
         local_53 = false;
     }
-    let _e28 = local_53;
+    let _e17 = local_53;
+    if _e17 {
+        if !(g_18.t_hi_infinite) {
+            local_55 = (x_h_1 < t1_1);
+        } else {
+            local_55 = true;
+        }
+        let _e26 = local_55;
+        local_54 = _e26;
+    } else {
+        local_54 = false;
+    }
+    let _e28 = local_54;
     if _e28 {
         let _e29 = airlight_whole_line(s_15, g_18, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
@@ -3336,11 +3351,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_18.t_hi_infinite) {
-            local_55 = (t1_1 < x_h_1);
+            local_56 = (t1_1 < x_h_1);
         } else {
-            local_55 = false;
+            local_56 = false;
         }
-        let _e61 = local_55;
+        let _e61 = local_56;
         if _e61 {
             t_end = t1_1;
         }
@@ -3356,11 +3371,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
             let _e89 = half_13.big_h;
-            local_56 = (_e89 > 0f);
+            local_57 = (_e89 > 0f);
         } else {
-            local_56 = false;
+            local_57 = false;
         }
-        let _e93 = local_56;
+        let _e93 = local_57;
         if _e93 {
             let _e95 = half_13.big_h;
             let _e96 = airlight_cut_length(_e95, _e67);
@@ -3377,18 +3392,18 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         total_3 = (_e108 + _e112);
     }
     if !(g_18.t_hi_infinite) {
-        local_57 = (t1_1 > x_h_1);
+        local_58 = (t1_1 > x_h_1);
     } else {
-        local_57 = true;
+        local_58 = true;
     }
-    let _e120 = local_57;
+    let _e120 = local_58;
     if _e120 {
         let _e123 = behind_cut;
-        local_58 = !(_e123);
+        local_59 = !(_e123);
     } else {
-        local_58 = false;
+        local_59 = false;
     }
-    let _e126 = local_58;
+    let _e126 = local_59;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3398,22 +3413,22 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_18.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_59 = _e145;
+            local_60 = _e145;
         } else {
-            local_59 = false;
+            local_60 = false;
         }
-        let _e147 = local_59;
+        let _e147 = local_60;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_60 = _e162;
+                local_61 = _e162;
             } else {
-                local_60 = false;
+                local_61 = false;
             }
-            let _e164 = local_60;
+            let _e164 = local_61;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3433,31 +3448,31 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut_1 {
             let _e183 = half_14.big_h;
-            local_61 = (_e183 > 0f);
+            local_62 = (_e183 > 0f);
         } else {
-            local_61 = false;
+            local_62 = false;
         }
-        let _e187 = local_61;
+        let _e187 = local_62;
         if _e187 {
             let _e189 = half_14.big_h;
             let _e192 = airlight_cut_length(_e189, (1f / _e131));
             let _e193 = infinite_2;
             if !(_e193) {
                 let _e197 = dv_3;
-                local_62 = (_e192 < _e197);
+                local_63 = (_e192 < _e197);
             } else {
-                local_62 = true;
+                local_63 = true;
             }
-            let _e200 = local_62;
+            let _e200 = local_63;
             if _e200 {
                 let cut_y_lo = (_e131 / (1f + (_e131 * _e192)));
                 if (cut_y_lo > 0f) {
                     let _e209 = airlight_is_finite(_e192);
-                    local_63 = _e209;
+                    local_64 = _e209;
                 } else {
-                    local_63 = false;
+                    local_64 = false;
                 }
-                let _e211 = local_63;
+                let _e211 = local_64;
                 if _e211 {
                     let _e214 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
@@ -3475,24 +3490,24 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_64: bool;
     var local_65: bool;
+    var local_66: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_64 = _e6;
-    } else {
-        local_64 = false;
-    }
-    let _e8 = local_64;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_65 = _e12;
+        local_65 = _e6;
     } else {
         local_65 = false;
     }
-    let _e14 = local_65;
+    let _e8 = local_65;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_66 = _e12;
+    } else {
+        local_66 = false;
+    }
+    let _e14 = local_66;
     return _e14;
 }
 
@@ -3505,16 +3520,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_66: bool;
+    var local_67: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_66 = _e6;
+        local_67 = _e6;
     } else {
-        local_66 = false;
+        local_67 = false;
     }
-    let _e8 = local_66;
+    let _e8 = local_67;
     return _e8;
 }
 
@@ -3525,7 +3540,6 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_16: AirlightScene) -> bool {
-    var local_67: bool;
     var local_68: bool;
     var local_69: bool;
     var local_70: bool;
@@ -3535,8 +3549,8 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_74: bool;
     var local_75: bool;
     var local_76: bool;
-    var ok: bool;
     var local_77: bool;
+    var ok: bool;
     var local_78: bool;
     var local_79: bool;
     var local_80: bool;
@@ -3564,102 +3578,103 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_102: bool;
     var local_103: bool;
     var local_104: bool;
+    var local_105: bool;
 
     let _e2 = airlight_vec_finite(s_16.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_16.dir);
-        local_67 = _e6;
-    } else {
-        local_67 = false;
-    }
-    let _e8 = local_67;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_16.dir);
-        local_68 = _e12;
+        local_68 = _e6;
     } else {
         local_68 = false;
     }
-    let _e14 = local_68;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_16.t_min);
-        local_69 = _e18;
+    let _e8 = local_68;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_16.dir);
+        local_69 = _e12;
     } else {
         local_69 = false;
     }
-    let _e20 = local_69;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_16.light_position);
-        local_70 = _e24;
+    let _e14 = local_69;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_16.t_min);
+        local_70 = _e18;
     } else {
         local_70 = false;
     }
-    let _e26 = local_70;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_16.intensity);
-        local_71 = _e30;
+    let _e20 = local_70;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_16.light_position);
+        local_71 = _e24;
     } else {
         local_71 = false;
     }
-    let _e32 = local_71;
-    if _e32 {
-        local_72 = (s_16.intensity >= 0f);
+    let _e26 = local_71;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_16.intensity);
+        local_72 = _e30;
     } else {
         local_72 = false;
     }
-    let _e39 = local_72;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_16.sigma_s);
-        local_73 = _e43;
+    let _e32 = local_72;
+    if _e32 {
+        local_73 = (s_16.intensity >= 0f);
     } else {
         local_73 = false;
     }
-    let _e45 = local_73;
-    if _e45 {
-        local_74 = (s_16.sigma_s >= 0f);
+    let _e39 = local_73;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_16.sigma_s);
+        local_74 = _e43;
     } else {
         local_74 = false;
     }
-    let _e52 = local_74;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_16.sigma_t);
-        local_75 = _e56;
+    let _e45 = local_74;
+    if _e45 {
+        local_75 = (s_16.sigma_s >= 0f);
     } else {
         local_75 = false;
     }
-    let _e58 = local_75;
-    if _e58 {
-        local_76 = (s_16.sigma_t >= 0f);
+    let _e52 = local_75;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_16.sigma_t);
+        local_76 = _e56;
     } else {
         local_76 = false;
     }
-    let _e65 = local_76;
+    let _e58 = local_76;
+    if _e58 {
+        local_77 = (s_16.sigma_t >= 0f);
+    } else {
+        local_77 = false;
+    }
+    let _e65 = local_77;
     ok = _e65;
     if ((s_16.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_16.t_max);
-            local_77 = _e76;
-        } else {
-            local_77 = false;
-        }
-        let _e78 = local_77;
-        if _e78 {
-            local_78 = (s_16.t_min <= s_16.t_max);
+            local_78 = _e76;
         } else {
             local_78 = false;
         }
-        let _e85 = local_78;
+        let _e78 = local_78;
+        if _e78 {
+            local_79 = (s_16.t_min <= s_16.t_max);
+        } else {
+            local_79 = false;
+        }
+        let _e85 = local_79;
         ok = _e85;
     }
     if (s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_16.light_end);
-            local_79 = _e93;
+            local_80 = _e93;
         } else {
-            local_79 = false;
+            local_80 = false;
         }
-        let _e95 = local_79;
+        let _e95 = local_80;
         ok = _e95;
     } else {
         if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3667,76 +3682,76 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         }
     }
     if !((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_80 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_81 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_80 = true;
+        local_81 = true;
     }
-    let _e110 = local_80;
+    let _e110 = local_81;
     if _e110 {
         let _e111 = ok;
         if _e111 {
             let _e115 = airlight_is_finite(s_16.brdf_scale);
-            local_81 = _e115;
-        } else {
-            local_81 = false;
-        }
-        let _e117 = local_81;
-        if _e117 {
-            local_82 = (s_16.brdf_scale >= 0f);
+            local_82 = _e115;
         } else {
             local_82 = false;
         }
-        let _e124 = local_82;
-        if _e124 {
-            local_83 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+        let _e117 = local_82;
+        if _e117 {
+            local_83 = (s_16.brdf_scale >= 0f);
         } else {
             local_83 = false;
         }
-        let _e131 = local_83;
-        if _e131 {
-            local_84 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e124 = local_83;
+        if _e124 {
+            local_84 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_84 = false;
         }
-        let _e138 = local_84;
-        if _e138 {
-            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
-            let _e145 = airlight_is_finite(_e144);
-            local_85 = _e145;
+        let _e131 = local_84;
+        if _e131 {
+            local_85 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_85 = false;
         }
-        let _e147 = local_85;
+        let _e138 = local_85;
+        if _e138 {
+            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
+            let _e145 = airlight_is_finite(_e144);
+            local_86 = _e145;
+        } else {
+            local_86 = false;
+        }
+        let _e147 = local_86;
         ok = _e147;
         if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             let _e151 = ok;
             if _e151 {
                 let _e155 = airlight_is_finite(s_16.brdf_exponent);
-                local_86 = _e155;
-            } else {
-                local_86 = false;
-            }
-            let _e157 = local_86;
-            if _e157 {
-                local_87 = (s_16.brdf_exponent >= 0f);
+                local_87 = _e155;
             } else {
                 local_87 = false;
             }
-            let _e164 = local_87;
-            if _e164 {
-                let _e168 = airlight_vec_finite(s_16.brdf_view);
-                local_88 = _e168;
+            let _e157 = local_87;
+            if _e157 {
+                local_88 = (s_16.brdf_exponent >= 0f);
             } else {
                 local_88 = false;
             }
-            let _e170 = local_88;
-            if _e170 {
-                let _e174 = airlight_normalisable(s_16.brdf_view);
-                local_89 = _e174;
+            let _e164 = local_88;
+            if _e164 {
+                let _e168 = airlight_vec_finite(s_16.brdf_view);
+                local_89 = _e168;
             } else {
                 local_89 = false;
             }
-            let _e176 = local_89;
+            let _e170 = local_89;
+            if _e170 {
+                let _e174 = airlight_normalisable(s_16.brdf_view);
+                local_90 = _e174;
+            } else {
+                local_90 = false;
+            }
+            let _e176 = local_90;
             ok = _e176;
         }
     } else {
@@ -3748,72 +3763,72 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         let _e184 = ok;
         if _e184 {
             let _e188 = airlight_vec_finite(s_16.light_axis);
-            local_90 = _e188;
-        } else {
-            local_90 = false;
-        }
-        let _e190 = local_90;
-        if _e190 {
-            let _e194 = airlight_normalisable(s_16.light_axis);
-            local_91 = _e194;
+            local_91 = _e188;
         } else {
             local_91 = false;
         }
-        let _e196 = local_91;
-        if _e196 {
-            local_92 = (s_16.light_param_a >= 0f);
+        let _e190 = local_91;
+        if _e190 {
+            let _e194 = airlight_normalisable(s_16.light_axis);
+            local_92 = _e194;
         } else {
             local_92 = false;
         }
-        let _e203 = local_92;
-        if _e203 {
-            local_93 = (s_16.light_param_a <= 1024f);
+        let _e196 = local_92;
+        if _e196 {
+            local_93 = (s_16.light_param_a >= 0f);
         } else {
             local_93 = false;
         }
-        let _e210 = local_93;
-        if _e210 {
-            local_94 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        let _e203 = local_93;
+        if _e203 {
+            local_94 = (s_16.light_param_a <= 1024f);
         } else {
             local_94 = false;
         }
-        let _e220 = local_94;
+        let _e210 = local_94;
+        if _e210 {
+            local_95 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_95 = false;
+        }
+        let _e220 = local_95;
         ok = _e220;
     } else {
         if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e224 = ok;
             if _e224 {
                 let _e228 = airlight_vec_finite(s_16.light_axis);
-                local_95 = _e228;
-            } else {
-                local_95 = false;
-            }
-            let _e230 = local_95;
-            if _e230 {
-                let _e234 = airlight_normalisable(s_16.light_axis);
-                local_96 = _e234;
+                local_96 = _e228;
             } else {
                 local_96 = false;
             }
-            let _e236 = local_96;
-            if _e236 {
-                local_97 = (s_16.light_param_b < s_16.light_param_a);
+            let _e230 = local_96;
+            if _e230 {
+                let _e234 = airlight_normalisable(s_16.light_axis);
+                local_97 = _e234;
             } else {
                 local_97 = false;
             }
-            let _e243 = local_97;
-            if _e243 {
-                local_98 = (s_16.light_param_b >= -1f);
+            let _e236 = local_97;
+            if _e236 {
+                local_98 = (s_16.light_param_b < s_16.light_param_a);
             } else {
                 local_98 = false;
             }
-            let _e250 = local_98;
-            if _e250 {
-                local_99 = (s_16.light_param_a <= 1f);
+            let _e243 = local_98;
+            if _e243 {
+                local_99 = (s_16.light_param_b >= -1f);
             } else {
                 local_99 = false;
             }
-            let _e257 = local_99;
+            let _e250 = local_99;
+            if _e250 {
+                local_100 = (s_16.light_param_a <= 1f);
+            } else {
+                local_100 = false;
+            }
+            let _e257 = local_100;
             ok = _e257;
         } else {
             if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3828,39 +3843,39 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e267 = ok;
             if _e267 {
-                local_100 = g_ok;
+                local_101 = g_ok;
             } else {
-                local_100 = false;
+                local_101 = false;
             }
-            let _e271 = local_100;
+            let _e271 = local_101;
             ok = _e271;
         }
         case 5u: {
             let _e272 = ok;
             if _e272 {
-                local_101 = g_ok;
-            } else {
-                local_101 = false;
-            }
-            let _e276 = local_101;
-            if _e276 {
-                local_102 = (abs(s_16.phase_param_b) < 1f);
+                local_102 = g_ok;
             } else {
                 local_102 = false;
             }
-            let _e284 = local_102;
-            if _e284 {
-                local_103 = (s_16.phase_param_c >= 0f);
+            let _e276 = local_102;
+            if _e276 {
+                local_103 = (abs(s_16.phase_param_b) < 1f);
             } else {
                 local_103 = false;
             }
-            let _e291 = local_103;
-            if _e291 {
-                local_104 = (s_16.phase_param_c <= 1f);
+            let _e284 = local_103;
+            if _e284 {
+                local_104 = (s_16.phase_param_c >= 0f);
             } else {
                 local_104 = false;
             }
-            let _e298 = local_104;
+            let _e291 = local_104;
+            if _e291 {
+                local_105 = (s_16.phase_param_c <= 1f);
+            } else {
+                local_105 = false;
+            }
+            let _e298 = local_105;
             ok = _e298;
         }
         default: {
@@ -3931,29 +3946,29 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_105: bool;
     var local_106: bool;
+    var local_107: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_106 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_107 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_106 = false;
+            local_107 = false;
         }
-        let _e21 = local_106;
-        local_105 = _e21;
+        let _e21 = local_107;
+        local_106 = _e21;
     } else {
-        local_105 = true;
+        local_106 = true;
     }
-    let _e23 = local_105;
+    let _e23 = local_106;
     return _e23;
 }
 
 fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_107: bool;
-    var out_2: AirlightCanonical;
     var local_108: bool;
+    var out_2: AirlightCanonical;
+    var local_109: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_18.flags > 1u));
@@ -3966,11 +3981,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_4);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_107 = !(_e38);
+        local_108 = !(_e38);
     } else {
-        local_107 = true;
+        local_108 = true;
     }
-    let _e41 = local_107;
+    let _e41 = local_108;
     if _e41 {
         return plain;
     }
@@ -3994,11 +4009,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_108 = (h_7 > 0f);
+        local_109 = (h_7 > 0f);
     } else {
-        local_108 = false;
+        local_109 = false;
     }
-    let _e101 = local_108;
+    let _e101 = local_109;
     if !(_e101) {
         return plain;
     }
@@ -4387,15 +4402,15 @@ fn airlight_outer_point(s_21: AirlightScene, max_panels: u32) -> AirlightOuter {
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_109: bool;
+    var local_110: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_17: u32 = 1u;
     var j_3: u32;
-    var local_110: bool;
+    var local_111: bool;
     var k_3: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_111: bool;
+    var local_112: bool;
     var i_19: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
@@ -4403,11 +4418,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     let to_light_1 = (s_22.light_position - s_22.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_22.intensity == 0f)) {
-        local_109 = (s_22.sigma_s == 0f);
+        local_110 = (s_22.sigma_s == 0f);
     } else {
-        local_109 = true;
+        local_110 = true;
     }
-    let _e18 = local_109;
+    let _e18 = local_110;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4511,11 +4526,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 if (_e219 > 0u) {
                     let _e224 = j_3;
                     let _e228 = cuts_1[(_e224 - 1u)];
-                    local_110 = (_e228 > c_10);
+                    local_111 = (_e228 > c_10);
                 } else {
-                    local_110 = false;
+                    local_111 = false;
                 }
-                let _e231 = local_110;
+                let _e231 = local_111;
                 if _e231 {
                 } else {
                     break;
@@ -4551,11 +4566,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             if (_e256 > _e260) {
                 let _e264 = i_18;
                 let _e266 = cuts_1[_e264];
-                local_111 = (_e266 < AIRLIGHT_PI);
+                local_112 = (_e266 < AIRLIGHT_PI);
             } else {
-                local_111 = false;
+                local_112 = false;
             }
-            let _e270 = local_111;
+            let _e270 = local_112;
             if _e270 {
                 let _e271 = k_3;
                 k_3 = (_e271 + 1u);
@@ -4596,7 +4611,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
-    var local_112: bool;
+    var local_113: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_17));
     let s2_ = (_e4.y * _e4.y);
@@ -4605,11 +4620,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
     let clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_112 = (clip > 0f);
+        local_113 = (clip > 0f);
     } else {
-        local_112 = false;
+        local_113 = false;
     }
-    let _e35 = local_112;
+    let _e35 = local_113;
     if _e35 {
         let _e39 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
@@ -4628,7 +4643,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep
 
 fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
     var end: f32;
-    var local_113: bool;
+    var local_114: bool;
 
     end = x_18;
     let _e3 = end;
@@ -4645,11 +4660,11 @@ fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
     let _e16 = end;
     if (_e16 > -(cut)) {
         let _e21 = end;
-        local_113 = (_e21 < cut);
+        local_114 = (_e21 < cut);
     } else {
-        local_113 = false;
+        local_114 = false;
     }
-    let _e24 = local_113;
+    let _e24 = local_114;
     return select(0f, _e15, _e24);
 }
 
@@ -4658,18 +4673,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_114: bool;
+    var local_115: bool;
     var sum_5: f32 = 0f;
     var k_4: u32 = 0u;
 
     let w_6 = (hi_3 - lo_4);
     if !(!((w_6 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_6)));
-        local_114 = !((_e14 > 0f));
+        local_115 = !((_e14 > 0f));
     } else {
-        local_114 = true;
+        local_115 = true;
     }
-    let _e19 = local_114;
+    let _e19 = local_115;
     if _e19 {
         return 0f;
     }
@@ -4775,31 +4790,31 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_115: bool;
     var local_116: bool;
+    var local_117: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_117: bool;
     var local_118: bool;
     var local_119: bool;
     var local_120: bool;
     var local_121: bool;
     var local_122: bool;
-    var scale: f32 = 0f;
     var local_123: bool;
+    var scale: f32 = 0f;
     var local_124: bool;
     var local_125: bool;
     var local_126: bool;
     var local_127: bool;
+    var local_128: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
     var i_21: u32 = 0u;
-    var local_128: bool;
     var local_129: bool;
     var local_130: bool;
+    var local_131: bool;
     var n_1: u32 = 0u;
     var i_22: u32 = 0u;
-    var local_131: bool;
+    var local_132: bool;
 
     if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_23);
@@ -4814,17 +4829,17 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_23.light_end - s_23.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_115 = (s_23.intensity == 0f);
-    } else {
-        local_115 = true;
-    }
-    let _e26 = local_115;
-    if !(_e26) {
-        local_116 = (s_23.sigma_s == 0f);
+        local_116 = (s_23.intensity == 0f);
     } else {
         local_116 = true;
     }
-    let _e34 = local_116;
+    let _e26 = local_116;
+    if !(_e26) {
+        local_117 = (s_23.sigma_s == 0f);
+    } else {
+        local_117 = true;
+    }
+    let _e34 = local_117;
     if _e34 {
         g_22.outcome = 1u;
         let _e37 = g_22;
@@ -4848,94 +4863,94 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_117 = (sin_a_1 > 0f);
-    } else {
-        local_117 = false;
-    }
-    let _e84 = local_117;
-    if _e84 {
-        let _e87 = s_star;
-        local_118 = (_e87 >= 0f);
+        local_118 = (sin_a_1 > 0f);
     } else {
         local_118 = false;
     }
-    let _e91 = local_118;
-    if _e91 {
-        let _e94 = s_star;
-        local_119 = (_e94 <= _e15);
+    let _e84 = local_118;
+    if _e84 {
+        let _e87 = s_star;
+        local_119 = (_e87 >= 0f);
     } else {
         local_119 = false;
     }
-    let _e97 = local_119;
-    if _e97 {
-        let _e101 = t_star;
-        local_120 = (s_23.t_min <= _e101);
+    let _e91 = local_119;
+    if _e91 {
+        let _e94 = s_star;
+        local_120 = (_e94 <= _e15);
     } else {
         local_120 = false;
     }
-    let _e104 = local_120;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_122 = (_e110 <= s_23.t_max);
-        } else {
-            local_122 = true;
-        }
-        let _e114 = local_122;
-        local_121 = _e114;
+    let _e97 = local_120;
+    if _e97 {
+        let _e101 = t_star;
+        local_121 = (s_23.t_min <= _e101);
     } else {
         local_121 = false;
     }
-    let _e116 = local_121;
+    let _e104 = local_121;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_123 = (_e110 <= s_23.t_max);
+        } else {
+            local_123 = true;
+        }
+        let _e114 = local_123;
+        local_122 = _e114;
+    } else {
+        local_122 = false;
+    }
+    let _e116 = local_122;
     if _e116 {
         g_22.outcome = 2u;
         let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_123 = (_e73 > 0f);
+        local_124 = (_e73 > 0f);
     } else {
-        local_123 = false;
+        local_124 = false;
     }
-    let _e129 = local_123;
+    let _e129 = local_124;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_124 = (_e136 < (_e15 + _e15));
-    } else {
-        local_124 = false;
-    }
-    let _e140 = local_124;
-    if _e140 {
-        let _e143 = scale;
-        local_125 = (_e143 < _e15);
+        local_125 = (_e136 < (_e15 + _e15));
     } else {
         local_125 = false;
     }
-    let near_1 = local_125;
+    let _e140 = local_125;
+    if _e140 {
+        let _e143 = scale;
+        local_126 = (_e143 < _e15);
+    } else {
+        local_126 = false;
+    }
+    let near_1 = local_126;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_126 = _e154;
+        local_127 = _e154;
     } else {
-        local_126 = false;
+        local_127 = false;
     }
-    let _e156 = local_126;
+    let _e156 = local_127;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_127 = _e163;
+        local_128 = _e163;
     } else {
-        local_127 = false;
+        local_128 = false;
     }
-    let _e165 = local_127;
+    let _e165 = local_128;
     if !(_e165) {
         scale = 0f;
     }
@@ -4955,21 +4970,21 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         {
             if (cos_a_2 == 0f) {
                 let _e196 = i_21;
-                local_128 = (_e196 > 0u);
+                local_129 = (_e196 > 0u);
             } else {
-                local_128 = false;
+                local_129 = false;
             }
-            let _e200 = local_128;
+            let _e200 = local_129;
             if _e200 {
                 continue;
             }
             let _e201 = i_21;
             if (_e201 == 2u) {
-                local_129 = infinite_4;
+                local_130 = infinite_4;
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            let _e207 = local_129;
+            let _e207 = local_130;
             if _e207 {
                 continue;
             }
@@ -4978,11 +4993,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e210 > 0f) {
                 let _e215 = i_21;
                 let _e217 = at[_e215];
-                local_130 = (_e217 < _e15);
+                local_131 = (_e217 < _e15);
             } else {
-                local_130 = false;
+                local_131 = false;
             }
-            let _e220 = local_130;
+            let _e220 = local_131;
             if _e220 {
                 let _e221 = i_21;
                 let _e223 = g_22;
@@ -5040,11 +5055,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e280 > _e284) {
                 let _e288 = i_22;
                 let _e290 = cuts_2[_e288];
-                local_131 = (_e290 < _e265);
+                local_132 = (_e290 < _e265);
             } else {
-                local_131 = false;
+                local_132 = false;
             }
-            let _e293 = local_131;
+            let _e293 = local_132;
             if _e293 {
                 let _e294 = n_1;
                 n_1 = (_e294 + 1u);
@@ -5136,15 +5151,15 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_132: bool;
+    var local_133: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_132 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_133 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_132 = true;
+        local_133 = true;
     }
-    let _e11 = local_132;
+    let _e11 = local_133;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5153,18 +5168,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_133: bool;
+    var local_134: bool;
     var g_24: AirlightCanonical;
 
     let p_1 = n_2.scene;
     let _e7 = airlight_vec_finite(p_1.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_1.dir);
-        local_133 = _e11;
+        local_134 = _e11;
     } else {
-        local_133 = false;
+        local_134 = false;
     }
-    let _e13 = local_133;
+    let _e13 = local_134;
     if _e13 {
         g_24 = n_2.canonical;
         if !(n_2.exact) {
@@ -5194,14 +5209,14 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var k_5: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_134: bool;
-    var f: f32;
     var local_135: bool;
+    var f: f32;
+    var local_136: bool;
     var split: bool;
     var tries: u32;
-    var local_136: bool;
     var local_137: bool;
     var local_138: bool;
+    var local_139: bool;
 
     let _e1 = airlight_valid(s_25);
     if !(_e1) {
@@ -5246,11 +5261,11 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                     let _e109 = j_4;
                     if ((_e109 & 1u) == 0u) {
                         let _e116 = j_4;
-                        local_134 = (_e116 < 6u);
+                        local_135 = (_e116 < 6u);
                     } else {
-                        local_134 = false;
+                        local_135 = false;
                     }
-                    let _e120 = local_134;
+                    let _e120 = local_135;
                     let w_7 = select((c_15 + (hw_3 * node_1.x)), (c_15 - (hw_3 * node_1.x)), _e120);
                     let _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0f;
@@ -5260,11 +5275,11 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             return _e128;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_135 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_136 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_135 = false;
+                            local_136 = false;
                         }
-                        let _e141 = local_135;
+                        let _e141 = local_136;
                         if _e141 {
                             return _e128;
                         }
@@ -5330,18 +5345,18 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let worst_1 = _e202.worst;
                             if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e213 = count_2;
-                                local_136 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_136 = true;
-                            }
-                            let _e217 = local_136;
-                            if !(_e217) {
-                                let _e221 = airlight_is_finite(total_4);
-                                local_137 = !(_e221);
+                                local_137 = (_e213 == _e6.max_panels);
                             } else {
                                 local_137 = true;
                             }
-                            let _e224 = local_137;
+                            let _e217 = local_137;
+                            if !(_e217) {
+                                let _e221 = airlight_is_finite(total_4);
+                                local_138 = !(_e221);
+                            } else {
+                                local_138 = true;
+                            }
+                            let _e224 = local_138;
                             if _e224 {
                                 break;
                             }
@@ -5349,22 +5364,22 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let _e226 = airlight_list_get(_e225, worst_1);
                             let wa_1 = _e226.x;
                             let wb_1 = _e226.y;
-                            let mid_2 = (0.5f * (wa_1 + wb_1));
-                            if (mid_2 > wa_1) {
-                                local_138 = (mid_2 < wb_1);
+                            let mid_3 = (0.5f * (wa_1 + wb_1));
+                            if (mid_3 > wa_1) {
+                                local_139 = (mid_3 < wb_1);
                             } else {
-                                local_138 = false;
+                                local_139 = false;
                             }
-                            let _e237 = local_138;
+                            let _e237 = local_139;
                             if !(_e237) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;
                             }
                             a_17 = wa_1;
-                            b_13 = mid_2;
+                            b_13 = mid_3;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_2;
+                            queued_lo = mid_3;
                             queued_hi = wb_1;
                             split = true;
                             break;

@@ -1113,13 +1113,13 @@ fn airlight_singular_floor(heights: vec3<f32>, steps: vec3<f32>, c: f32, r: f32,
     return 1.0 / rho;
 }
 
-/// Where the panel [a, b] (in y) is split (panels.rs `split_point`): its midpoint, or a + 2d
-/// where G's nearest singularity ±it, at the distance d = |a + it|, is closer than a quarter of
-/// the width.
-fn airlight_split_point(a: f32, b: f32, heights: vec3<f32>) -> f32 {
+/// Where the panel [a, b] (in y) is split if not at its midpoint (panels.rs `graded_split`):
+/// a + 2d where G's nearest singularity ±it, at the distance d = |a + it|, is closer than a
+/// quarter of the width; −1 where it is not.
+fn airlight_graded_split(a: f32, b: f32, heights: vec3<f32>) -> f32 {
     let t = min(heights.x, min(heights.y, heights.z));
     let d = sqrt(a * a + t * t);
-    return select(a + (b - a) * 0.5, a + 2.0 * d, d > 0.0 && d < (b - a) * 0.25);
+    return select(-1.0, a + 2.0 * d, d > 0.0 && d < (b - a) * 0.25);
 }
 
 /// ∫ e^{−H(v − v_s)} G(v) dv over y ∈ [lo, hi] in the half's scaling, the worst panel split
@@ -1143,6 +1143,14 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
     var pending = false;
     var next_a = 0.0;
     var next_b = 0.0;
+    // a piece that starts next to a known singularity is graded at once
+    let graded = airlight_graded_split(lo, hi, heights_y);
+    if (graded >= 0.0 && AIRLIGHT_MAX_PANELS >= 2u) {
+        b = graded;
+        pending = true;
+        next_a = graded;
+        next_b = hi;
+    }
     var count = 0u;
     var budget = AIRLIGHT_MAX_PANELS;
     for (var step = 0u; step < AIRLIGHT_MAX_PANELS; step++) {
@@ -1182,7 +1190,8 @@ fn airlight_integrate_piece(s: AirlightScene, g: AirlightCanonical, sigma: f32, 
                 list[worst].w = 0.0;
                 continue;
             }
-            let mid = airlight_split_point(wa, wb, heights_y);
+            let at = airlight_graded_split(wa, wb, heights_y);
+            let mid = select(wa + (wb - wa) * 0.5, at, at >= 0.0);
             a = wa;
             b = mid;
             slot = worst;
