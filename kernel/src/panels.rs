@@ -135,30 +135,11 @@ where
             list[worst].error = T::zero();
             continue;
         }
-        let mid = split_point(a, b, singular.as_ref());
+        let mid = graded_split(a, b, singular.as_ref()).unwrap_or(a + (b - a) * T::lit(0.5));
         list[worst] = listed::<T, F, N>(half, a, mid, f, rule, singular.as_ref(), run);
         list[count] = listed::<T, F, N>(half, mid, b, f, rule, singular.as_ref(), run);
         count += 1;
         budget -= 2;
-    }
-}
-
-/// Where the panel `[a, b]` (in `y`) is split: at its midpoint, or — where `G`'s nearest
-/// singularity (at `±it`, so at the distance `d = |a + it|` from the panel's start) is closer
-/// than a quarter of the width — at `a + 2d`, grading the panels towards it geometrically as
-/// its Bernstein ellipses need (an end peak of width `t`, a Henyey–Greenstein lobe at `y = 0`,
-/// takes two panels where halving takes four or five).
-fn split_point<T: Real>(a: T, b: T, singular: Option<&Singular<T>>) -> T {
-    let mid = a + (b - a) * T::lit(0.5);
-    let Some(s) = singular else {
-        return mid;
-    };
-    let t = s.y.iter().take(s.count).fold(T::infinity(), |m, &t| m.min(t));
-    let d = (a * a + t * t).sqrt();
-    if d > T::zero() && d < (b - a) * T::lit(0.25) {
-        a + d * T::lit(2.0)
-    } else {
-        mid
     }
 }
 
