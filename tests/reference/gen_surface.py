@@ -365,6 +365,11 @@ def scenes():
         brdf = {"kind": "phong", "k_s": f32(rng.uniform(0.2, 1)), "exponent": f32(n), "view": f32v(random_unit(rng))}
         phase = hg(0.8) if i % 2 else iso
         out.append(rec("phong", rng.uniform(0.5, 5), 10 ** rng.uniform(-2, 0), brdf, phase=phase))
+    # beams: two-lobed lights of higher powers, on Lambertian and Phong surfaces, and a spot
+    for i, power in enumerate([8, 16, 32, 16, 8]):
+        dist = {"kind": "two_lobed", "axis": f32v(random_unit(rng)), "power": power}
+        brdf = lam() if i < 3 else {"kind": "phong", "k_s": f32(rng.uniform(0.2, 1)), "exponent": f32([20, 100][i - 3]), "view": f32v(random_unit(rng))}
+        out.append(rec("distribution", rng.uniform(0.5, 3), 10 ** rng.uniform(-2, -0.5), brdf, phase=[hg(0.6), iso, hg(0.8)][i % 3], dist=dist))
     return out
 
 
