@@ -136,6 +136,33 @@ pub(crate) fn chebyshev_lobatto<T: Real>(values: &[T], x: T) -> T {
     num / den
 }
 
+/// The weights `c_j` of a Lambertian arc's inner integral from the values `L_j` of a polynomial
+/// of degree `p` in `cos(φ − φ_a)` at the Chebyshev–Lobatto points `φ_j = φ_a + jπ/p`:
+/// `∫_{−ψ}^{ψ} (A + B cos x) P(cos(x + δ)) dx = Σ_j c_j L_j` (`x = φ − φ_n`, `δ = φ_n − φ_a`),
+/// in closed form. With `P(cos θ) = Σ''_k b_k cos kθ`, `b_k = (2/p) Σ''_j L_j cos(jkπ/p)` (the
+/// discrete cosine transform of the points; `''` halves the first and last terms), the odd part
+/// of `cos(k(x + δ))` integrates to 0 and `∫ (A + B cos x) cos kx dx = A S_k + (B/2)(S_{k−1} +
+/// S_{k+1})`, `S_m = 2 sin(mψ)/m` (`S_0 = 2ψ`), so `c_j = (2/p) ε_j Σ_k ε_k cos(jkπ/p) cos(kδ)
+/// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`. Writes `out[..=p]`.
+pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, delta: T, out: &mut [T]) {
+    let s = |m: usize| if m == 0 { psi + psi } else { let m = T::from(m).unwrap_or(T::one()); T::lit(2.0) * (m * psi).sin() / m };
+    let w = |k: usize| a * s(k) + b * T::lit(0.5) * (s(k.abs_diff(1)) + s(k + 1));
+    if p == 0 {
+        out[0] = w(0);
+        return;
+    }
+    let pf = T::from(p).unwrap_or(T::one());
+    let half = |i: usize| if i == 0 || i == p { T::lit(0.5) } else { T::one() };
+    for (j, c) in out.iter_mut().enumerate().take(p + 1) {
+        let mut sum = T::zero();
+        for k in 0..=p {
+            let angle = T::PI() * T::from((j * k) % (2 * p)).unwrap_or(T::zero()) / pf;
+            sum = sum + half(k) * angle.cos() * (T::from(k).unwrap_or(T::zero()) * delta).cos() * w(k);
+        }
+        *c = T::lit(2.0) / pf * half(j) * sum;
+    }
+}
+
 /// A validated surface point lit by air-light of a point light.
 #[derive(Clone, Copy, Debug)]
 pub struct SurfaceScene<T: Real, D, P> {
@@ -513,6 +540,13 @@ where
                             *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
                         }
                         let values = &values[..=p];
+                        if let Brdf::Lambert { albedo } = self.brdf {
+                            // the arc's integral in closed form (lambert_chebyshev_weights)
+                            let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+                            lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                            let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
+                            return sum * albedo * T::FRAC_1_PI() * sin_g;
+                        }
                         inner_sum(&mut |phi| {
                             let f = geometric(phi);
                             if f > T::zero() {
