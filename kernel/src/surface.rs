@@ -261,6 +261,16 @@ pub fn lobe_arcs<T: Real>(normal: (T, T), mirror: (T, T), gap: T, (delta, cos_de
     sum
 }
 
+/// `sin ψ` of [`half_arc`]'s `ψ` for `A = cos α cos γ`, `B = sin α sin γ`: `√((1 − x)(1 + x))`,
+/// `x = −A/B`, without the sine of the arc cosine (0 where the arc is the whole circle or empty).
+fn half_arc_sin<T: Real>(a: T, b: T) -> T {
+    if b <= a.abs() {
+        return T::zero();
+    }
+    let x = (-a / b).max(-T::one()).min(T::one());
+    ((T::one() - x) * (T::one() + x)).sqrt()
+}
+
 /// The arc `|φ − φ_c| < ψ` where `cos α cos γ + sin α sin γ cos(φ − φ_c) > 0`, as `ψ ∈ [0, π]`.
 fn half_arc<T: Real>((cos_a, sin_a, _): (T, T, T), cos_g: T, sin_g: T) -> T {
     let (a, b) = (cos_a * cos_g, sin_a * sin_g);
@@ -450,9 +460,14 @@ where
         let phi_a = axis_e2.atan2(axis_e1);
         let mut along = |cos_g: T, sin_g: T, phi: T| {
             rays += 1;
-            let (s, c) = phi.sin_cos();
             let sin_g = sin_g.max(T::zero());
-            let axis_u = c * axis_e1 + s * axis_e2;
+            // (an omni light has no axis to turn: D ignores c)
+            let axis_u = if omni {
+                T::zero()
+            } else {
+                let (s, c) = phi.sin_cos();
+                c * axis_e1 + s * axis_e2
+            };
             let h = fr.d * sin_g;
             let d_c = if h > T::zero() { cos_g * axis_u - sin_g * axis_l } else { T::zero() };
             let g = Canonical { h, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c, t0: T::zero(), t1: T::infinity() };
@@ -519,7 +534,7 @@ where
                 (true, Brdf::Lambert { albedo }) => {
                     // ∫ (A + B cos x)⁺ over the arc, closed form
                     let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
-                    let arc = T::lit(2.0) * (a * psi_n + b * psi_n.sin());
+                    let arc = T::lit(2.0) * (a * psi_n + b * half_arc_sin(a, b));
                     along(cos_g, sin_g, phi_n) * albedo * T::FRAC_1_PI() * arc
                 }
                 (true, Brdf::Phong { k_s, exponent, .. }) if fixed_lobe => {
