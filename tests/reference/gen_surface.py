@@ -15,8 +15,9 @@ k (n+2)/(2π) max(0, r·ω)^n, r the mirror image of the view direction about th
 Independent of the kernel's method: every level is composite Gauss–Legendre in float64 on
 panels placed by hand. Directions are taken about the light's direction ℓ from s (γ from ℓ, φ
 about it); the outer integral over γ is split where the hemisphere's arc at γ changes kind, at a
-Phong lobe's peak and arcs, and graded towards γ = 0 and around the lobe; the middle one over φ
-numerically on the arcs where f_r (n·ω) > 0 (no closed form), graded about the lobe; the inner
+Phong lobe's peak and arcs, and graded towards γ = 0 and around the lobe (and a two-lobed light's
+axis, by its width 1/√p); the middle one over φ numerically on the arcs where f_r (n·ω) > 0 (no
+closed form), graded about the lobe and the axis's azimuths; the inner
 one, L_a, in the angle θ seen from the light (t − x_h = h tan θ), split at the foot, where the
 extinction exponent has grown by 1, 2, 4, …, 64, and at a spot cone's edges. Each record is
 computed twice, with 16 and 24 nodes per panel and 2 and 3 panels per piece over γ and φ (one
@@ -199,6 +200,15 @@ class Scene:
             if np.linalg.norm(u) > 1e-12:
                 u = unit(u)
                 cuts |= {math.acos(np.clip(np.dot(u, self.l), -1, 1)), math.acos(np.clip(-np.dot(u, self.l), -1, 1))}
+        # a beam c^p: where the axis and its opposite lie from ℓ, graded by the lobe's width 1/√p
+        beam_w = None
+        if self.dist["kind"] == "two_lobed" and self.dist["power"] > 0:
+            beam_w = 1 / math.sqrt(self.dist["power"])
+            ga, _ = self.polar(self.axis)
+            for c in (ga, np.pi - ga):
+                cuts.add(c)
+                for k in (0.3, 1, 3):
+                    cuts |= {c - k * beam_w, c + k * beam_w}
         # towards the light: the extinction's and a forward lobe's peaks
         for k in range(-5, 1):
             cuts |= {10.0 ** k, 3 * 10.0 ** k}
@@ -214,7 +224,7 @@ class Scene:
         omni = self.dist["kind"] == "isotropic"
         total = 0.0
         for g, gw in zip(G, GW):
-            phis = self.phi_edges(g, lobe_w)
+            phis = self.phi_edges(g, lobe_w, beam_w)
             if not phis:
                 continue
             a, b = np.array([x[0] for x in phis]), np.array([x[1] for x in phis])
@@ -234,10 +244,18 @@ class Scene:
             total += gw * math.sin(g) * inner
         return total
 
-    def phi_edges(self, g, lobe_w):
+    def phi_edges(self, g, lobe_w, beam_w=None):
         """The intervals of φ where f_r (n·ω) may be positive, tiled by the arcs' ends and (for
-        a Phong lobe) graded about its peak."""
+        a Phong lobe) graded about its peak, and (for a beam) about the azimuths of its axis,
+        where L_a, a polynomial in cos(φ − φ_a), peaks."""
         edges = []
+        if beam_w is not None:
+            _, phi_a = self.polar(self.axis)
+            for c in (phi_a, phi_a + math.pi):
+                edges.append(c)
+                for k in (0.3, 1, 3):
+                    if k * beam_w < math.pi / 2:
+                        edges += [c - k * beam_w, c + k * beam_w]
 
         def arc(v):
             a_, phi_c = self.polar(v)
