@@ -49,7 +49,7 @@
 use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
-use crate::light::LightDistribution;
+use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
 use crate::phase::PhaseFunction;
 use crate::real::{atan2_upper, hypot1, Real};
@@ -79,9 +79,8 @@ where
         return Route::Declined;
     };
     let light = phys.light;
-    let degree = match light.polynomial_degree() {
-        Some(p) if light.kinks().iter().all(Option::is_none) && light.dark_below().is_none() => p,
-        _ => return Route::Declined,
+    let Some(degree) = whole_polynomial_degree(light) else {
+        return Route::Declined;
     };
     let Some(singular) = phys.phase.singularities() else {
         return Route::Declined;

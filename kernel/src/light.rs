@@ -45,6 +45,16 @@ pub trait LightDistribution<T: Real> {
     }
 }
 
+/// `Some(p)` if `D` is one polynomial of degree at most `p` in `c` over all of `[−1, 1]`: a
+/// declared [`LightDistribution::polynomial_degree`] with no kinks and no dark side (a
+/// `TwoLobed` `c^p`; a spot cone's pieces are polynomials, the whole is not). Then a
+/// quantity affine in `c` along every ray enters as a polynomial of degree `p`: the light-angle
+/// route's samples are analytic (crate::angle), a hemisphere's `L_a` is a polynomial in the
+/// azimuth's cosine (crate::surface).
+pub(crate) fn whole_polynomial_degree<T: Real, D: LightDistribution<T> + ?Sized>(light: &D) -> Option<u32> {
+    light.polynomial_degree().filter(|_| light.kinks().iter().all(Option::is_none) && light.dark_below().is_none())
+}
+
 /// The same intensity in every direction, `D = 1`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Omni;

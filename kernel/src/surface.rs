@@ -29,7 +29,7 @@
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
-use crate::light::LightDistribution;
+use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
 use crate::real::Real;
 use crate::panels::Control;
@@ -143,7 +143,7 @@ pub(crate) fn chebyshev_lobatto<T: Real>(values: &[T], x: T) -> T {
 /// discrete cosine transform of the points; `''` halves the first and last terms), the odd part
 /// of `cos(k(x + δ))` integrates to 0 and `∫ (A + B cos x) cos kx dx = A S_k + (B/2)(S_{k−1} +
 /// S_{k+1})`, `S_m = 2 sin(mψ)/m` (`S_0 = 2ψ`), so `c_j = (2/p) ε_j Σ_k ε_k cos(jkπ/p) cos(kδ)
-/// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`. Writes `out[..=p]`.
+/// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`. Writes `out[..=p]`, `p ≤ MAX_INTERPOLATED_DEGREE`.
 pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, delta: T, out: &mut [T]) {
     let s = |m: usize| if m == 0 { psi + psi } else { let m = T::from(m).unwrap_or(T::one()); T::lit(2.0) * (m * psi).sin() / m };
     let w = |k: usize| a * s(k) + b * T::lit(0.5) * (s(k.abs_diff(1)) + s(k + 1));
@@ -153,11 +153,16 @@ pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, d
     }
     let pf = T::from(p).unwrap_or(T::one());
     let half = |i: usize| if i == 0 || i == p { T::lit(0.5) } else { T::one() };
+    // ε_k cos(kδ) W_k, the same for every j
+    let mut g = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+    for (k, gk) in g.iter_mut().enumerate().take(p + 1) {
+        *gk = half(k) * (T::from(k).unwrap_or(T::zero()) * delta).cos() * w(k);
+    }
     for (j, c) in out.iter_mut().enumerate().take(p + 1) {
         let mut sum = T::zero();
-        for k in 0..=p {
+        for (k, &gk) in g.iter().enumerate().take(p + 1) {
             let angle = T::PI() * T::from((j * k) % (2 * p)).unwrap_or(T::zero()) / pf;
-            sum = sum + half(k) * angle.cos() * (T::from(k).unwrap_or(T::zero()) * delta).cos() * w(k);
+            sum = sum + angle.cos() * gk;
         }
         *c = T::lit(2.0) / pf * half(j) * sum;
     }
@@ -452,11 +457,8 @@ where
         // a distribution that is one polynomial of degree p in c: along ω, d_el and d_c are
         // affine in u·a = A cos(φ − φ_a), so L_a at γ is a polynomial of degree p in
         // cos(φ − φ_a), and p + 1 rays give it exactly (MAX_INTERPOLATED_DEGREE)
-        let light = &self.light.distribution;
-        let polynomial = light
-            .polynomial_degree()
-            .map(|p| p as usize)
-            .filter(|&p| !omni && p <= MAX_INTERPOLATED_DEGREE && light.kinks().iter().all(Option::is_none) && light.dark_below().is_none());
+        let beam = if omni { None } else { whole_polynomial_degree(&self.light.distribution) };
+        let polynomial = beam.map(|p| p as usize).filter(|&p| p <= MAX_INTERPOLATED_DEGREE);
         let phi_a = axis_e2.atan2(axis_e1);
         let mut along = |cos_g: T, sin_g: T, phi: T| {
             rays += 1;
@@ -624,8 +626,7 @@ where
         // passed the outer estimate 1.6e-2 off its reference; with them within 6.7e-5, and the
         // lobe's extent ±1.5/√p, ±4/√p cut as well, as a Phong lobe's, doubled the rays for no
         // test that needed it)
-        let beam = light.polynomial_degree().filter(|&p| !omni && p >= 2 && light.kinks().iter().all(Option::is_none) && light.dark_below().is_none());
-        if beam.is_some() {
+        if beam.is_some_and(|p| p >= 2) {
             let gamma_a = axis_e1.hypot(axis_e2).atan2(axis_l);
             push(gamma_a);
             push(T::PI() - gamma_a);
