@@ -42,6 +42,12 @@
 //! * the phase's singularities: `ρ^{−N}`, `ρ` of the panel's Bernstein ellipse through the
 //!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
 //!
+//! Where the first try of `N` nodes is declined or fails, a light with an axis gets a wider
+//! rule of `2N` on the same panel ([`Plan::rule`] with `lobe_nodes`), if the extinction and the
+//! phase function would have passed at `N` and the lobe's own prediction passes at `2N`: `c^p`
+//! is a Gaussian `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
+//! (docs/DESIGN.md §4.2), and 16 samples still cost less than the closed-form panels.
+//!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
 //! not be analytic in `θ`, or not known to be.
@@ -50,8 +56,8 @@ use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
-use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, MAX_N};
-use crate::phase::PhaseFunction;
+use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN, MAX_N};
+use crate::phase::{PhaseFunction, Singularities};
 use crate::real::{atan2_upper, hypot1, Real};
 use crate::scalar::Scalar;
 
@@ -68,156 +74,228 @@ pub enum Route<T> {
 }
 
 /// The whole segment `[t0, t1]` (`h > 0`) by one `N`-node Gauss–Legendre panel in `θ`, cut where
-/// the panels cut a half (`crate::combined::cut_length`), if its estimate meets `control`.
+/// the panels cut a half (`crate::combined::cut_length`), if its estimate meets `control`:
+/// [`Plan::new`], then [`Plan::rule`] without a lobe's condition.
 pub fn whole_segment<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
 where
     T: Real,
     D: LightDistribution<T>,
     P: PhaseFunction<T>,
 {
-    let (Some(rule), true) = (gauss_table::rule(N), (4..=MAX_N).contains(&N)) else {
-        return Route::Declined;
-    };
-    let light = phys.light;
-    let Some(degree) = whole_polynomial_degree(light) else {
-        return Route::Declined;
-    };
-    let Some(singular) = phys.phase.singularities() else {
-        return Route::Declined;
-    };
-    let h = g.h;
-    if !(h > T::zero()) {
-        return Route::Declined;
+    match Plan::new(g, phys, control) {
+        Some(plan) => plan.rule::<D, P, N>(g, phys, control, None),
+        None => Route::Declined,
     }
-    let (u0, u1) = (g.u(g.t0), g.u(g.t1));
-    let big_h = phys.sigma_t * h;
-    // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
-    let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
-    let y0 = y_at(u0);
-    let y_cut = y0 + cut_length(big_h, y0, control);
-    let y1 = y_at(u1);
-    // The ends as their distances from the poles θ = ∓π/2 (ψ0 = θ0 + π/2, ψ1 = π/2 − θ1), to
-    // full relative accuracy: F's lobes and the exponential's layer sit at the poles, where
-    // cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase function
-    // amplifies that, as for the panels' `1 ∓ μ`).
-    let psi0 = atan2_upper(T::one(), -u0);
-    // the half-width from the segment's length, not from the difference of the ends' angles
-    // (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0, 1 + u0 u1),
-    // 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
-    let (psi1, width) = if y_cut < y1 {
-        (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut))
-    } else if u1.is_finite() {
-        (atan2_upper(T::one(), u1), atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1))
-    } else {
-        (T::zero(), atan2_upper(T::one(), u0))
-    };
-    let hw = width * T::lit(0.5);
-    if !(hw > T::zero()) {
-        return Route::Declined;
-    }
-    let mid = psi0 + hw - T::FRAC_PI_2();
-    let tolerance = control.tolerance;
+}
 
-    // The predicted coefficients, before any sample. The exponential's: e^{−E} with E rising
-    // at the rate λ/hw is e^{−λ(1+ξ)} on the panel, whose N-th Legendre coefficient is
-    // (2N+1)·i_N(λ) of its mean, i_N(λ) ≈ λ^N/(3·5⋯(2N+1)) (module docs). E is convex in θ
-    // (dE/dθ = H/(1 − sin θ) = H(1 + Y²)/2), so λ is the lesser of two: the mean rate, ΔE/2
-    // with ΔE = H(Y_end − Y0), and hw times the rate where the weight has fallen to e^{−1}
-    // (beyond it the weight is small however fast it falls).
-    let y_end = y1.min(y_cut);
-    let y_e = (y0 + big_h.recip()).min(y_end);
-    let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
-    // D, a polynomial of degree p in c = cos(θ − θ_axis)·…: a lobe of angular width about
-    // 1/√p (c^p ≈ e^{−pφ²/2}), as the exponential with λ = √p·hw; the two rates add.
-    let lambda = lambda + T::from(degree).unwrap().sqrt() * hw;
-    let predicted = Scalar::powi(lambda, N as i32) * T::lit(inv_odd_factorial(N));
-    if !(predicted <= tolerance) {
-        return Route::Declined;
-    }
-    // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse through it:
-    // the phase's, with its order's step as the panels take it, and the exponential's own, Y's
-    // pole at θ = π/2 (essential in e^{−HY}, which is analytic inside the ellipse through it).
-    let step = order_step::<T, N>(singular.order);
-    let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
-    let mut rate = T::zero();
-    for mu in singular.cosines {
-        let gap = mu.abs() - T::one();
-        if !(gap > T::zero()) || !gap.is_finite() {
-            continue;
+/// What every rule of the route shares: the panel in `θ` and the predicted rates, formed once
+/// for the first try's `N` nodes and the wider rule after it.
+#[derive(Clone, Copy, Debug)]
+pub struct Plan<T> {
+    /// `u0 = (t0 − x_h)/h`.
+    u0: T,
+    /// `H = σt h`.
+    big_h: T,
+    /// `Y` at the start.
+    y0: T,
+    /// The ends' distances from the poles: `ψ0 = θ0 + π/2`, `ψ1 = π/2 − θ1` (`θ1` the cut end).
+    psi0: T,
+    psi1: T,
+    /// The panel's half-width and centre in `θ`.
+    hw: T,
+    mid: T,
+    /// The extinction's rate `λ` over the panel (module docs).
+    lambda: T,
+    /// The lobe's `√p·hw` (0 without an axis).
+    lobe: T,
+    /// The phase function's singularities.
+    singular: Singularities<T>,
+}
+
+impl<T: Real> Plan<T> {
+    /// The panel and its rates; `None` where the route cannot be taken at all: `F` not
+    /// analytic in `θ` or not known to be, the light on the ray's line, an empty panel.
+    #[inline]
+    pub fn new<D, P>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Option<Self>
+    where
+        D: LightDistribution<T>,
+        P: PhaseFunction<T>,
+    {
+        let degree = whole_polynomial_degree(phys.light)?;
+        let singular = phys.phase.singularities()?;
+        let h = g.h;
+        if !(h > T::zero()) {
+            return None;
         }
-        // acosh(1 + gap) = ln(1 + gap + √(gap(2 + gap)))
-        let im = (gap + (gap * (T::lit(2.0) + gap)).sqrt()).ln_1p();
-        let re = if mu > T::zero() { -T::FRAC_PI_2() } else { T::FRAC_PI_2() };
-        rate = rate.max(step / bernstein_rho((re - mid) / hw, im / hw));
-    }
-    if !(power(rate, N) <= tolerance) {
-        return Route::Declined;
-    }
-    let rate = rate.max(exponential);
-
-    // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
-    // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then F — so that each
-    // pass's calls and divisions are independent of one another and overlap instead of
-    // waiting in turn.
-    // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), formed as a distance from the nearer pole, so cos θ
-    // keeps full relative accuracy; sin θ's sign then says which pole is nearer, and
-    // 1 ∓ sin θ, Y follow without cancellation.
-    let mut angles = [(T::zero(), T::zero()); N];
-    for (i, angle) in angles.iter_mut().enumerate() {
-        let x = node_f64(rule, i);
-        let lower = psi0 + hw * T::lit(1.0 + x);
-        *angle = if lower <= T::FRAC_PI_2() {
-            let (c, minus_s) = lower.sin_cos();
-            (c, -minus_s)
+        let (u0, u1) = (g.u(g.t0), g.u(g.t1));
+        let big_h = phys.sigma_t * h;
+        // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
+        let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
+        let y0 = y_at(u0);
+        let y_cut = y0 + cut_length(big_h, y0, control);
+        let y1 = y_at(u1);
+        // The ends as their distances from the poles θ = ∓π/2 (ψ0 = θ0 + π/2, ψ1 = π/2 − θ1),
+        // to full relative accuracy: F's lobes and the exponential's layer sit at the poles,
+        // where cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase
+        // function amplifies that, as for the panels' `1 ∓ μ`).
+        let psi0 = atan2_upper(T::one(), -u0);
+        // the half-width from the segment's length, not from the difference of the ends'
+        // angles (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0,
+        // 1 + u0 u1), 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
+        let (psi1, width) = if y_cut < y1 {
+            (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut))
+        } else if u1.is_finite() {
+            (atan2_upper(T::one(), u1), atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1))
         } else {
-            (psi1 + hw * T::lit(1.0 - x)).sin_cos()
+            (T::zero(), atan2_upper(T::one(), u0))
         };
+        let hw = width * T::lit(0.5);
+        if !(hw > T::zero()) {
+            return None;
+        }
+        let mid = psi0 + hw - T::FRAC_PI_2();
+        // The extinction's rate: e^{−E} with E rising at the rate λ/hw is e^{−λ(1+ξ)} on the
+        // panel. E is convex in θ (dE/dθ = H/(1 − sin θ) = H(1 + Y²)/2), so λ is the lesser of
+        // two: the mean rate, ΔE/2 with ΔE = H(Y_end − Y0), and hw times the rate where the
+        // weight has fallen to e^{−1} (beyond it the weight is small however fast it falls).
+        let y_end = y1.min(y_cut);
+        let y_e = (y0 + big_h.recip()).min(y_end);
+        let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
+        // D, a polynomial of degree p in c = A cos(θ − θ_axis): a lobe c^p ≈ e^{−pφ²/2} of
+        // angular width about 1/√p
+        let lobe = T::from(degree).unwrap().sqrt() * hw;
+        Some(Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, singular })
     }
-    // of 1 ± sin θ, far = 1 + |sin θ| stays at least 1 and near = cos²θ/far vanishes at the
-    // nearer pole, both without cancellation; Y = (1 + sin θ)/cos θ = cos θ/(1 − sin θ)
-    let mut sides = [(T::zero(), T::zero(), T::zero()); N];
-    for (&(c, s), side) in angles.iter().zip(sides.iter_mut()) {
-        let far = T::one() + s.abs();
-        let near = c * c / far;
-        *side = if s > T::zero() { (far / c, far, near) } else { (c / far, near, far) };
+
+    /// The panel by `N` Gauss–Legendre nodes, if the predicted coefficients are below the
+    /// tolerance and then the estimate meets it.
+    ///
+    /// `lobe_nodes: Some(k)` is the wider rule after a first try of `k` nodes: spent on a
+    /// light's lobe alone, so declined without an axis, and unless the extinction's and the
+    /// phase function's predictions already pass at `k` nodes and the lobe's own (a Gaussian's,
+    /// module docs) at `N`.
+    pub fn rule<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, lobe_nodes: Option<usize>) -> Route<T>
+    where
+        D: LightDistribution<T>,
+        P: PhaseFunction<T>,
+    {
+        let (Some(rule), true) = (gauss_table::rule(N), (4..=MAX_N).contains(&N)) else {
+            return Route::Declined;
+        };
+        let Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, singular } = *self;
+        let tolerance = control.tolerance;
+        // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
+        // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
+        // λ^N/(3·5⋯(2N+1)) (module docs); the lobe as the exponential with λ = √p·hw, the
+        // two rates added.
+        if let Some(k) = lobe_nodes {
+            // the lobe e^{−p·hw²ξ²/2}: the estimate sees about its degree-(2N − m) coefficient
+            // (m = ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2,
+            // z = p·hw²/4, ≈ 2 exp(−(n asinh(n/z) − √(n² + z²) + z)) (uniform asymptotics,
+            // DLMF 10.41.3)
+            let z = lobe * lobe * T::lit(0.25);
+            if !(z > T::zero()) {
+                return Route::Declined;
+            }
+            let n = T::lit(N as f64 - ALIASING_MARGIN as f64 * 0.5);
+            let gaussian = T::lit(2.0) * (-(n * (n / z).asinh() - (n * n + z * z).sqrt() + z)).exp();
+            let extinction = Scalar::powi(lambda, k as i32) * T::lit(inv_odd_factorial(k));
+            if !(gaussian <= tolerance && extinction <= tolerance) {
+                return Route::Declined;
+            }
+        }
+        let predicted = Scalar::powi(lambda + lobe, N as i32) * T::lit(inv_odd_factorial(N));
+        if !(predicted <= tolerance) {
+            return Route::Declined;
+        }
+        // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse
+        // through it: the phase's at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|, with its order's
+        // step as the panels take it (and at the first try's k nodes for the wider rule), and
+        // the exponential's own, Y's pole at θ = π/2 (essential in e^{−HY}, which is analytic
+        // inside the ellipse through it).
+        let mut phase = T::zero();
+        for mu in singular.cosines {
+            let gap = mu.abs() - T::one();
+            if !(gap > T::zero()) || !gap.is_finite() {
+                continue;
+            }
+            // acosh(1 + gap) = ln(1 + gap + √(gap(2 + gap)))
+            let im = (gap + (gap * (T::lit(2.0) + gap)).sqrt()).ln_1p();
+            let re = if mu > T::zero() { -T::FRAC_PI_2() } else { T::FRAC_PI_2() };
+            phase = phase.max(bernstein_rho((re - mid) / hw, im / hw).recip());
+        }
+        let rate = order_step(singular.order, N) * phase;
+        if !(power(rate, N) <= tolerance) || lobe_nodes.is_some_and(|k| !(power(order_step(singular.order, k) * phase, k) <= tolerance)) {
+            return Route::Declined;
+        }
+        let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
+        let rate = rate.max(exponential);
+        let (light, h) = (phys.light, g.h);
+
+        // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
+        // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then F — so that each
+        // pass's calls and divisions are independent of one another and overlap instead of
+        // waiting in turn.
+        // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), formed as a distance from the nearer pole, so cos θ
+        // keeps full relative accuracy; sin θ's sign then says which pole is nearer, and
+        // 1 ∓ sin θ, Y follow without cancellation.
+        let mut angles = [(T::zero(), T::zero()); N];
+        for (i, angle) in angles.iter_mut().enumerate() {
+            let x = node_f64(rule, i);
+            let lower = psi0 + hw * T::lit(1.0 + x);
+            *angle = if lower <= T::FRAC_PI_2() {
+                let (c, minus_s) = lower.sin_cos();
+                (c, -minus_s)
+            } else {
+                (psi1 + hw * T::lit(1.0 - x)).sin_cos()
+            };
+        }
+        // of 1 ± sin θ, far = 1 + |sin θ| stays at least 1 and near = cos²θ/far vanishes at the
+        // nearer pole, both without cancellation; Y = (1 + sin θ)/cos θ = cos θ/(1 − sin θ)
+        let mut sides = [(T::zero(), T::zero(), T::zero()); N];
+        for (&(c, s), side) in angles.iter().zip(sides.iter_mut()) {
+            let far = T::one() + s.abs();
+            let near = c * c / far;
+            *side = if s > T::zero() { (far / c, far, near) } else { (c / far, near, far) };
+        }
+        let mut weights = [T::zero(); N];
+        for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
+            *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
+        }
+        let mut samples = [T::zero(); N];
+        let (mut value, mut mass, mut magnitude, mut f_max) = (T::zero(), T::zero(), T::zero(), T::zero());
+        for (i, sample) in samples.iter_mut().enumerate() {
+            let ((c, s), (_, one_plus, one_minus), weight) = (angles[i], sides[i], weights[i]);
+            // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
+            let f = light.eval(g.d_el * s + g.d_c * c) * phys.phase.eval_sides(-s, one_plus, one_minus);
+            let gw = weight * f;
+            *sample = gw;
+            let w = T::lit(rule[i / 2].1);
+            value = value + w * gw;
+            mass = mass + w * weight;
+            magnitude = magnitude + w * gw.abs();
+            f_max = f_max.max(f.abs());
+        }
+        let c = legendre::<T, N>(&samples);
+        // the panels' model with the weight 1 (moments M_0 = 2, M_k = 0): q^{N+1−m} where the
+        // rate is known and below 1, the cautious q^{N/4} where it is not
+        let mut moments = [T::zero(); N];
+        moments[0] = T::lit(2.0);
+        let factor = error_factor::<T, N>(&c, &moments, Some(rate));
+        let last = tail_estimate::<T, N>(&c);
+        // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding as on a
+        // y-panel (mass 2 times the samples' weighted mean magnitude)
+        let error = T::lit(2.0) * last * factor;
+        let noise = transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5));
+        let target = tolerance * value.abs().max(control.floor * f_max * mass);
+        if !(error <= target || error <= noise) {
+            return Route::Failed;
+        }
+        // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows, and without
+        // extinction the exponent 0, not 0·∞ where r0 overflows
+        let x = if phys.sigma_t > T::zero() { phys.sigma_t * (h * hypot1(u0)) } else { T::zero() };
+        Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
     }
-    let mut weights = [T::zero(); N];
-    for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
-        *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
-    }
-    let mut samples = [T::zero(); N];
-    let (mut value, mut mass, mut magnitude, mut f_max) = (T::zero(), T::zero(), T::zero(), T::zero());
-    for (i, sample) in samples.iter_mut().enumerate() {
-        let ((c, s), (_, one_plus, one_minus), weight) = (angles[i], sides[i], weights[i]);
-        // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
-        let f = light.eval(g.d_el * s + g.d_c * c) * phys.phase.eval_sides(-s, one_plus, one_minus);
-        let gw = weight * f;
-        *sample = gw;
-        let w = T::lit(rule[i / 2].1);
-        value = value + w * gw;
-        mass = mass + w * weight;
-        magnitude = magnitude + w * gw.abs();
-        f_max = f_max.max(f.abs());
-    }
-    let c = legendre::<T, N>(&samples);
-    // the panels' model with the weight 1 (moments M_0 = 2, M_k = 0): q^{N+1−m} where the
-    // rate is known and below 1, the cautious q^{N/4} where it is not
-    let mut moments = [T::zero(); N];
-    moments[0] = T::lit(2.0);
-    let factor = error_factor::<T, N>(&c, &moments, Some(rate));
-    let last = tail_estimate::<T, N>(&c);
-    // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding as on a
-    // y-panel (mass 2 times the samples' weighted mean magnitude)
-    let error = T::lit(2.0) * last * factor;
-    let noise = transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5));
-    let target = tolerance * value.abs().max(control.floor * f_max * mass);
-    if !(error <= target || error <= noise) {
-        return Route::Failed;
-    }
-    // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows, and without
-    // extinction the exponent 0, not 0·∞ where r0 overflows
-    let x = if phys.sigma_t > T::zero() { phys.sigma_t * (h * hypot1(u0)) } else { T::zero() };
-    Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
 }
 
 /// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's

@@ -230,10 +230,26 @@ where
     // a route by cost first: the whole segment in the light angle, where that meets the target
     let mut tried = 0;
     if let (Method::Panels(control), false) = (method, isotropic) {
-        match crate::angle::whole_segment::<T, D, P, N>(g, phys, &control) {
-            Route::Taken(value) => return (value, 1),
-            Route::Failed => tried = 1,
-            Route::Declined => {}
+        if let Some(plan) = crate::angle::Plan::new(g, phys, &control) {
+            match plan.rule::<D, P, N>(g, phys, &control, None) {
+                Route::Taken(value) => return (value, 1),
+                Route::Failed => tried = 1,
+                Route::Declined => {}
+            }
+            // twice the nodes, for a light's lobe that N do not resolve where the extinction
+            // and the phase function would be (the plan's predictions decide): that still
+            // costs less than the closed-form panels
+            let wider = match N {
+                4 => plan.rule::<D, P, 8>(g, phys, &control, Some(N)),
+                6 => plan.rule::<D, P, 12>(g, phys, &control, Some(N)),
+                8 => plan.rule::<D, P, 16>(g, phys, &control, Some(N)),
+                _ => Route::Declined,
+            };
+            match wider {
+                Route::Taken(value) => return (value, tried + 1),
+                Route::Failed => tried += 1,
+                Route::Declined => {}
+            }
         }
     }
     let mut total = T::zero();

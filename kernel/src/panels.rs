@@ -217,7 +217,7 @@ impl<T: Real> Singular<T> {
     fn new<const N: usize>(s: [(T, T); 3], second: bool) -> Self {
         let (mut y, mut step, mut count) = ([T::zero(); 3], [T::zero(); 3], 0);
         for (t, order) in s {
-            let factor = order_step::<T, N>(order);
+            let factor = order_step(order, N);
             match (0..count).find(|&i| y[i] == t) {
                 Some(i) => step[i] = step[i].max(factor),
                 None => {
@@ -261,8 +261,8 @@ struct Panel<T> {
 /// `(N/(N − 1))^{max(α − 1, 0)}`, the step-ratio bound of a singularity of order `α` beyond
 /// `c_{N−1}` ([`Singular`]): `√(N/(N − 1))` to the power `⌈2(α − 1)⌉` by squaring — exact for the
 /// built-in orders (whole and half), larger otherwise; no library power per piece.
-pub(crate) fn order_step<T: Real, const N: usize>(order: T) -> T {
-    let root = (T::from(N).unwrap() / T::from(N.saturating_sub(1).max(1)).unwrap()).sqrt();
+pub(crate) fn order_step<T: Real>(order: T, n: usize) -> T {
+    let root = (T::from(n).unwrap() / T::from(n.saturating_sub(1).max(1)).unwrap()).sqrt();
     let twice = ((order - T::one()) * T::lit(2.0)).ceil();
     if twice > T::zero() {
         twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(root, k))
