@@ -58,7 +58,7 @@ use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN, MAX_N};
 use crate::phase::{PhaseFunction, Singularities};
-use crate::real::{atan2_upper, hypot1, Real};
+use crate::real::{atan2_upper, hypot1, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
 
 /// What the route did.
@@ -244,10 +244,10 @@ impl<T: Real> Plan<T> {
             let x = node_f64(rule, i);
             let lower = psi0 + hw * T::lit(1.0 + x);
             *angle = if lower <= T::FRAC_PI_2() {
-                let (c, minus_s) = lower.sin_cos();
+                let (c, minus_s) = sin_cos_quarter(lower);
                 (c, -minus_s)
             } else {
-                (psi1 + hw * T::lit(1.0 - x)).sin_cos()
+                sin_cos_quarter(psi1 + hw * T::lit(1.0 - x))
             };
         }
         // of 1 ± sin θ, far = 1 + |sin θ| stays at least 1 and near = cos²θ/far vanishes at the
