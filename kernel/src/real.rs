@@ -282,6 +282,18 @@ pub(crate) fn sin_cos_quarter<T: Real>(x: T) -> (T, T) {
     (x * s, c)
 }
 
+/// `(sin x, cos x)` for `0 ≤ x ≤ π` by [`sin_cos_quarter`] of `x` or of `π − x` (rounded `π`:
+/// `sin` within `ε·π` absolutely of the library's near `x = π`, relatively everywhere else).
+#[inline]
+pub(crate) fn sin_cos_half_turn<T: Real>(x: T) -> (T, T) {
+    if x <= T::FRAC_PI_2() {
+        sin_cos_quarter(x)
+    } else {
+        let (s, c) = sin_cos_quarter(T::PI() - x);
+        (s, -c)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::sin_cos_quarter;

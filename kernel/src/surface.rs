@@ -31,7 +31,7 @@ use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
-use crate::real::Real;
+use crate::real::{sin_cos_half_turn, Real};
 use crate::panels::Control;
 use crate::combined::Physics;
 use crate::geometry::Canonical;
@@ -485,7 +485,7 @@ where
         let delta = fr.n.2 - fr.r.2;
         let (sin_delta, cos_delta) = delta.sin_cos();
         let mut outer = |g: T| -> T {
-            let (sin_g, cos_g) = g.sin_cos();
+            let (sin_g, cos_g) = sin_cos_half_turn(g);
             let psi_n = half_arc(fr.n, cos_g, sin_g);
             if !(psi_n > T::zero()) {
                 return T::zero();
