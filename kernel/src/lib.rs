@@ -81,4 +81,4 @@ pub use precision::{f32, f64};
 pub use real::Real;
 pub use scalar::Scalar;
 pub use surface::{Brdf, Surface, SurfaceScene, SHADER_PHONG_PANELS, SHADER_SURFACE_PANELS};
-pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, SHADER_CONTROL, SHADER_NODES};
+pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, FEWER_NODES_FROM, SHADER_CONTROL, SHADER_NODES};

@@ -171,6 +171,8 @@ fn error_estimate_holds_at_loose_tolerances() {
     }
     let cases = cases();
     let runs = [
+        ("f64, 8 nodes (the default from 1e-2)", 1e-1, worst::<f64, 8>(&cases, 1e-1, 1e-10)),
+        ("f64, 8 nodes (the default from 1e-2)", 1e-2, worst::<f64, 8>(&cases, 1e-2, 1e-10)),
         ("f64, 16 nodes", 1e-4, worst::<f64, 16>(&cases, 1e-4, 1e-10)),
         ("f64, 16 nodes", 1e-6, worst::<f64, 16>(&cases, 1e-6, 1e-10)),
         ("f64, 16 nodes", 1e-8, worst::<f64, 16>(&cases, 1e-8, 1e-10)),
