@@ -252,7 +252,7 @@ pub(crate) fn atan2_upper<T: Real>(y: T, x: T) -> T {
 #[inline]
 pub(crate) fn sin_cos_quarter<T: Real>(x: T) -> (T, T) {
     // (−1)^k/(2k + first)!, k = 0 … 10 (first = 1: sin, 0: cos); the factorials are exact to
-    // 18! and within a few ulp beyond, where the terms are below 1e-15 of the sum
+    // 18! and within a few ulp beyond (terms below 5e-14 on [0, π/2]: far below ε of the sum)
     const fn taylor(first: usize) -> [f64; 11] {
         let mut t = [0.0; 11];
         let (mut k, mut factorial) = (0, 1.0);
