@@ -42,7 +42,7 @@ for n in COUNTS:
         print(f"    ({mp.nstr(x, 20, min_fixed=-1, max_fixed=1)}, {mp.nstr(w, 20, min_fixed=-1, max_fixed=1)}),")
     print("];")
     print()
-TRANSFORMS = [n for n in COUNTS if n <= 16]
+TRANSFORMS = [n for n in COUNTS if n <= 16 or n == 32]
 for n in TRANSFORMS:
     r = rule(n)
     print(f"/// Discrete Legendre transform of the {n}-point rule, row `k`, column `i` (positive nodes):")

@@ -56,7 +56,7 @@ use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
-use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN, MAX_N};
+use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN};
 use crate::phase::{PhaseFunction, Singularities};
 use crate::real::{atan2_upper, hypot1, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
@@ -179,7 +179,7 @@ impl<T: Real> Plan<T> {
         D: LightDistribution<T>,
         P: PhaseFunction<T>,
     {
-        let (Some(rule), true) = (gauss_table::rule(N), (4..=MAX_N).contains(&N)) else {
+        let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
             return Route::Declined;
         };
         let Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, singular } = *self;

@@ -236,19 +236,24 @@ where
                 Route::Failed => tried = 1,
                 Route::Declined => {}
             }
-            // twice the nodes, for a light's lobe that N do not resolve where the extinction
-            // and the phase function would be (the plan's predictions decide): that still
-            // costs less than the closed-form panels
-            let wider = match N {
-                4 => plan.rule::<D, P, 8>(g, phys, &control, Some(N)),
-                6 => plan.rule::<D, P, 12>(g, phys, &control, Some(N)),
-                8 => plan.rule::<D, P, 16>(g, phys, &control, Some(N)),
+            // twice, then four times the nodes, for a light's lobe that N do not resolve where
+            // the extinction and the phase function would be (the plan's predictions decide):
+            // that still costs less than the closed-form panels
+            // (after 16 nodes none: 32 cost f64 more than they saved on four of the five
+            // classes with an axis, docs/DESIGN.md §4.2)
+            let wider = |n: usize| match n {
+                8 => plan.rule::<D, P, 8>(g, phys, &control, Some(N)),
+                12 => plan.rule::<D, P, 12>(g, phys, &control, Some(N)),
+                16 => plan.rule::<D, P, 16>(g, phys, &control, Some(N)),
+                32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, Some(N)),
                 _ => Route::Declined,
             };
-            match wider {
-                Route::Taken(value) => return (value, tried + 1),
-                Route::Failed => tried += 1,
-                Route::Declined => {}
+            for n in [2 * N, 4 * N] {
+                match wider(n) {
+                    Route::Taken(value) => return (value, tried + 1),
+                    Route::Failed => tried += 1,
+                    Route::Declined => {}
+                }
             }
         }
     }

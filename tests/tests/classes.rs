@@ -190,8 +190,8 @@ fn error_estimate_holds_at_loose_tolerances() {
 /// it takes is checked, not only those the default path happens to keep: over every scene of
 /// every class, at each tolerance, the largest error of a taken value is within the tolerance
 /// (within the precision's target where rounding dominates: f32 below 1e-4, f64 below 1e-10) —
-/// the first try of `N` nodes, and the wider rule of `2N` nodes for a light's lobe after it (the
-/// default path's f32 8 → 16; f64's 16 has no wider rule, so its 8 → 16 stands in).
+/// the first try of `N` nodes, and the wider rules of `2N` and `4N` nodes for a light's lobe after
+/// it (the default path's 8 → 16 → 32, in f32 and in f64 at loose tolerances).
 /// Printed: per class, how often it is taken, tried in vain, declined.
 #[test]
 fn light_angle_route_meets_its_tolerance() {
@@ -231,9 +231,11 @@ fn light_angle_route_meets_its_tolerance() {
     for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
         sweep::<f32, 8>(&cases, tolerance, 1e-4, None);
         sweep::<f32, 16>(&cases, tolerance, 1e-4, Some(8));
+        sweep::<f32, 32>(&cases, tolerance, 1e-4, Some(8));
     }
     for tolerance in [1e-1, 1e-4, 1e-6, 1e-8, 1e-11] {
         sweep::<f64, 16>(&cases, tolerance, 1e-10, None);
         sweep::<f64, 16>(&cases, tolerance, 1e-10, Some(8));
+        sweep::<f64, 32>(&cases, tolerance, 1e-10, Some(8));
     }
 }
