@@ -42,11 +42,12 @@
 //! * the phase's singularities: `ρ^{−N}`, `ρ` of the panel's Bernstein ellipse through the
 //!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
 //!
-//! Where the first try of `N` nodes is declined or fails, a light with an axis gets a wider
-//! rule of `2N` on the same panel ([`Plan::rule`] with `lobe_nodes`), if the extinction and the
-//! phase function would have passed at `N` and the lobe's own prediction passes at `2N`: `c^p`
-//! is a Gaussian `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
-//! (docs/DESIGN.md §4.2), and 16 samples still cost less than the closed-form panels.
+//! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
+//! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32),
+//! if the extinction and the phase function would have passed at `N` and the lobe's own
+//! prediction passes at the wider count: `c^p` is a Gaussian `e^{−pφ²/2}`, whose coefficients
+//! fall later than the rate `√p·hw` above says (docs/DESIGN.md §4.2), and 16 or 32 samples still
+//! cost less than the closed-form panels.
 //!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
