@@ -90,7 +90,7 @@ where
 }
 
 /// What every rule of the route shares: the panel in `θ` and the predicted rates, formed once
-/// for the first try's `N` nodes and the wider rule after it.
+/// for the first try's `N` nodes and the wider rules after it (`2N`, then `4N`).
 #[derive(Clone, Copy, Debug)]
 pub struct Plan<T> {
     /// `u0 = (t0 − x_h)/h`.
