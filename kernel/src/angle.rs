@@ -57,7 +57,7 @@ use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
-use crate::panels::{bernstein_rho, error_factor, legendre, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN};
+use crate::panels::{bernstein_rho, error_factor, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN};
 use crate::phase::{PhaseFunction, Singularities};
 use crate::real::{atan2_upper, hypot1, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
@@ -277,7 +277,9 @@ impl<T: Real> Plan<T> {
             magnitude = magnitude + w * gw.abs();
             f_max = f_max.max(f.abs());
         }
-        let c = legendre::<T, N>(&samples);
+        // below a rate of 1 the estimate reads only the last four coefficients
+        // (`error_factor`'s model with the weight 1: q^{N+1−m}); at or above it, all of them
+        let c = if rate < T::one() { legendre_from::<T, N>(&samples, N - 4) } else { legendre_from::<T, N>(&samples, 0) };
         // the panels' model with the weight 1 (moments M_0 = 2, M_k = 0): q^{N+1−m} where the
         // rate is known and below 1, the cautious q^{N/4} where it is not
         let mut moments = [T::zero(); N];
