@@ -19,12 +19,13 @@
 //! (`SegmentScene::end_on`).
 
 use crate::error::{check_vector, InputError};
-use crate::geometry::{dot, length, sub, Canonical};
+use crate::combined::Physics;
+use crate::geometry::{dot, length, normalize, sub, Canonical};
 use crate::light::LightDistribution;
 use crate::panels::Control;
 use crate::phase::PhaseFunction;
 use crate::real::Real;
-use crate::scene::{default_control, validate, Medium, PointLight, Ray, Scene};
+use crate::scene::{default_control, default_panels, validate, Medium, PointLight, Ray, Scene};
 
 /// Gauss–Kronrod 7/15 on `[−1, 1]` (QUADPACK `qk15`, Piessens et al. 1983, to 33 digits):
 /// `(x_i, Kronrod weight, Gauss weight or 0)` for the non-negative nodes, `x` descending; the
@@ -207,7 +208,8 @@ where
             return (value, 0);
         }
         let inner = inner_control(tolerance);
-        self.integrate(tolerance, MAX_SEGMENT_PANELS, |scene| scene.in_scatter_controlled(inner).0)
+        let phys = Physics { sigma_s: self.medium.sigma_s, sigma_t: self.medium.sigma_t, intensity: self.light.intensity, light: &self.light.distribution, phase: &self.phase };
+        self.integrate(tolerance, MAX_SEGMENT_PANELS, |node| default_panels(&node.canonical, &phys, inner).0)
     }
 
     /// What the shaders compute (fixed cost): the outer Gauss–Kronrod rule the default path
@@ -215,7 +217,11 @@ where
     /// `max_panels` panels (the shaders: [`SHADER_SEGMENT_PANELS`]), every point light as
     /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the panels evaluated.
     pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
-        self.integrate(control.tolerance, max_panels, |scene| scene.in_scatter_panels::<N>(control))
+        // each point light reduced from its world position, as the shaders do
+        self.integrate(control.tolerance, max_panels, |node| {
+            let light = PointLight { position: T::vec3_from_array(node.position), intensity: self.light.intensity, distribution: self.light.distribution.clone() };
+            Scene::new(self.ray, light, self.medium, self.phase.clone()).map_or(T::zero(), |scene| scene.in_scatter_panels::<N>(control))
+        })
     }
 
     /// A segment along the ray's line behind the ray's start (seen end-on from the camera) in
@@ -293,8 +299,8 @@ where
         value.is_finite().then_some(value)
     }
 
-    /// `∫ L_point ds` by the outer rule to `tolerance`, each point light by `point`.
-    fn integrate(&self, tolerance: T, max_panels: usize, point_light: impl Fn(&Scene<T, D, P>) -> T) -> (T, usize) {
+    /// `∫ L_point ds` by the outer rule to `tolerance`, each point light by `point_light`.
+    fn integrate(&self, tolerance: T, max_panels: usize, point_light: impl Fn(&Node<T>) -> T) -> (T, usize) {
         let a = T::vec3_to_array(self.light.a);
         let ab = sub(T::vec3_to_array(self.light.b), a);
         let len = length(ab);
@@ -317,7 +323,10 @@ where
         let gap = sub(sub(w0, d.map(|x| x * t_star)), e.map(|x| -x * s_star));
         let rho = length(gap);
         let sin_a = sin2.max(T::zero()).sqrt();
-        if rho == T::zero() && sin_a > T::zero() && s_star >= T::zero() && s_star <= len && t0 <= t_star && t_star <= t1 {
+        // crossing the ray segment: ρ* within its own rounding (a few ε of the lengths it is
+        // formed from) of 0
+        let crossing = rho <= T::lit(4.0) * T::epsilon() * (length(w0) + len);
+        if crossing && sin_a > T::zero() && s_star >= T::zero() && s_star <= len && t0 <= t_star && t_star <= t1 {
             return (T::infinity(), 0);
         }
         // w ↦ s: sinh about s* at scale ρ*/sin α where the lines are skew and the peak is
@@ -329,14 +338,21 @@ where
             scale = T::zero();
         }
         let to_w = |s: T| if scale > T::zero() { ((s - s_star) / scale).asinh() } else { s };
+        // each node's canonical form from the emitter's line, not from its rounded position:
+        // the foot x_h = t* + (s − s*) cos α and the light's offset from the ray's line
+        // gap + (s − s*)(e − d cos α), two orthogonal parts (no cancellation), so h = |offset|
+        // and d_c = −offset·axis/h keep the accuracy of ρ* (docs/DESIGN.md §10)
+        let axis = normalize(self.light.distribution.axis());
+        let (across, d_el) = ([e[0] - d[0] * cos_a, e[1] - d[1] * cos_a, e[2] - d[2] * cos_a], dot(d, axis));
         let mut point = |w: T| {
-            let (s, ds) = if scale > T::zero() { (s_star + scale * w.sinh(), scale * w.cosh()) } else { (w, T::one()) };
-            let position = T::vec3_from_array([a[0] + s * e[0], a[1] + s * e[1], a[2] + s * e[2]]);
-            let light = PointLight { position, intensity: self.light.intensity, distribution: self.light.distribution.clone() };
-            match Scene::new(self.ray, light, self.medium, self.phase.clone()) {
-                Ok(scene) => point_light(&scene) * ds,
-                Err(_) => T::zero(),
-            }
+            let (off, ds) = if scale > T::zero() { (scale * w.sinh(), scale * w.cosh()) } else { (w - s_star, T::one()) };
+            let s = s_star + off;
+            let offset = [gap[0] + off * across[0], gap[1] + off * across[1], gap[2] + off * across[2]];
+            let h = length(offset);
+            let d_c = if h > T::zero() { -dot(offset, axis) / h } else { T::zero() };
+            let canonical = Canonical { h, x_h: t_star + off * cos_a, d_el, d_c, t0, t1 };
+            let position = [a[0] + s * e[0], a[1] + s * e[1], a[2] + s * e[2]];
+            point_light(&Node { position, canonical }) * ds
         };
         // panels: split at the closest approach and where the light's foot passes a ray end
         let (w_lo, w_hi) = (to_w(T::zero()), to_w(len));
@@ -350,6 +366,12 @@ where
         let (edges, n): ([T; 5], usize) = edges_between(w_lo, w_hi, &mut cuts);
         adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, max_panels)
     }
+}
+
+/// A node of a segment's outer rule: the point light's position and its canonical form.
+struct Node<T> {
+    position: [T; 3],
+    canonical: Canonical<T>,
 }
 
 /// One panel of [`adaptive`]'s list.
