@@ -9,8 +9,8 @@
 //! `ρ(s)² = ρ*² + (s − s*)² sin²α` (`α` the angle between the lines): so the outer integral is
 //! taken in `w` with `s = s* + (ρ*/sin α) sinh w`, where `ds/ρ = dw/sin α` and the peak is
 //! smooth, split where the light's foot passes the ray's ends, by globally adaptive
-//! Gauss–Kronrod 7/15 (3/7 at tolerances of 1e-4 and looser; QUADPACK's QAG strategy) to a
-//! relative tolerance, with a bounded number of panels.
+//! Gauss–Kronrod 7/15 (3/7 at tolerances of 1e-4 and looser, 2/5 at 1e-1; QUADPACK's QAG
+//! strategy) to a relative tolerance, with a bounded number of panels.
 //!
 //! An emitter that meets the ray segment gives `+∞` (as a point light on it does); one that
 //! meets the ray's line outside the segment, or lies along it, is finite and integrated through
@@ -51,6 +51,17 @@ pub const GAUSS_KRONROD_7: [(f64, f64, f64); 4] = [
     (0.774596669241483377035853079956480, 0.268488089868333440728569280666710, 0.555555555555555555555555555555556),
     (0.434243749346802558002071502844628, 0.401397414775962222905051818618432, 0.0),
     (0.0, 0.450916538658474142345110087045571, 0.888888888888888888888888888888889),
+];
+
+/// Gauss–Kronrod 2/5 on `[−1, 1]`, as [`GAUSS_KRONROD_15`]: the Kronrod extension of the
+/// 2-point Gauss rule (nodes `±1/√3`, weights 1), exact to degree 7; the nodes to 36 digits. Its node `±√(6/7)` and
+/// weights `98/495`, `27/55`, `28/45` solve the moment equations of degrees 0, 2, 4, 6 with
+/// the Gauss nodes kept (`tests` checks them against `2/(k+1)`).
+#[allow(clippy::excessive_precision)] // the digits, rounded once by the compiler
+pub const GAUSS_KRONROD_5: [(f64, f64, f64); 3] = [
+    (0.925820099772551461566566776583999523, 98.0 / 495.0, 0.0),
+    (0.577350269189625764509148780501957456, 27.0 / 55.0, 1.0),
+    (0.0, 28.0 / 45.0, 0.0),
 ];
 
 /// `(Kronrod 15, Gauss 7)` estimates of `∫_a^b f`.
@@ -139,6 +150,19 @@ pub(crate) fn outer_rule<T: Real>(tolerance: T) -> &'static [(f64, f64, f64)] {
         &GAUSS_KRONROD_7
     } else {
         &GAUSS_KRONROD_15
+    }
+}
+
+/// A segment's outer rule: [`GAUSS_KRONROD_5`] where a tenth of the value will do, else
+/// [`outer_rule`]'s. Over tests/reference/extended.jsonl at tolerance 1e-1 it leaves at most
+/// 3e-3 (a near tube, as the 7-point rule) with 27 % fewer instructions per behind-the-camera
+/// tube (BENCHMARKS.md, segment lights); on surfaces the 5-point estimate let 1.3e-1 through at
+/// 1e-1 (an anisotropic Lambertian point), so their outer integrals keep the 7-point rule.
+pub(crate) fn segment_rule<T: Real>(tolerance: T) -> &'static [(f64, f64, f64)] {
+    if tolerance >= T::lit(1e-1) {
+        &GAUSS_KRONROD_5
+    } else {
+        outer_rule(tolerance)
     }
 }
 
@@ -364,7 +388,7 @@ where
             }
         }
         let (edges, n): ([T; 5], usize) = edges_between(w_lo, w_hi, &mut cuts);
-        adaptive(outer_rule(tolerance), &mut point, &edges[..=n], tolerance, max_panels)
+        adaptive(segment_rule(tolerance), &mut point, &edges[..=n], tolerance, max_panels)
     }
 }
 
@@ -447,6 +471,28 @@ mod tests {
             }
             if k == 24 {
                 assert!((kr - exact).abs() > 1e-9, "K15 is not exact at degree 24");
+            }
+        }
+    }
+
+    /// The 7-point Kronrod rule is exact to degree 11, its Gauss 3-point rule to degree 5
+    /// (`∫_{−1}^{1} x^k dx = 2/(k+1)`, even `k`).
+    #[test]
+    fn gauss_kronrod_5_degrees() {
+        assert!((GAUSS_KRONROD_5[0].0 - (6.0f64 / 7.0).sqrt()).abs() <= f64::EPSILON);
+        assert!((GAUSS_KRONROD_5[1].0 - (1.0f64 / 3.0).sqrt()).abs() <= f64::EPSILON);
+        for k in 0..=8i32 {
+            let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
+            let (kr, g) = gauss_kronrod(&GAUSS_KRONROD_5, &mut |x: f64| x.powi(k), -1.0, 1.0);
+            if k <= 7 || k % 2 == 1 {
+                assert!((kr - exact).abs() <= 1e-15, "K5, x^{k}: {kr} vs {exact}");
+            } else {
+                assert!((kr - exact).abs() > 1e-4, "K5 is not exact at degree {k}");
+            }
+            if k <= 3 || k % 2 == 1 {
+                assert!((g - exact).abs() <= 1e-15, "G2, x^{k}: {g} vs {exact}");
+            } else if k == 4 {
+                assert!((g - exact).abs() > 1e-2, "G2 is not exact at degree 4");
             }
         }
     }
