@@ -13,10 +13,11 @@
 //! No `1/r²` peak is left: where the medium is thin and the light is not next to the segment
 //! this integrand is smooth over the whole segment, and `N` samples of it (`N` the panels'
 //! nodes) cost less than the closed forms' `E1` values and moments. The nodes are placed by
-//! their distances from the poles `θ = ∓π/2` and the panel's width from the segment's length
-//! (`atan2(u1 − u0, 1 + u0 u1)`), so that `cos θ`, `1 ± sin θ` and the width keep full relative
-//! accuracy: formed from `θ` itself they lose `ε/cos θ` and `επ/Δθ`, which a peaked phase
-//! function amplifies (1.9e-4 in f32 on HG `g = 0.9`, the peer's floor).
+//! their distances from the poles `θ = ∓π/2` and a panel narrower than 1 its width from the
+//! segment's length (`atan2(u1 − u0, 1 + u0 u1)`; a wider one as `π − ψ0 − ψ1`, within `πε`),
+//! so that `cos θ`, `1 ± sin θ` and the width keep full relative accuracy: formed from `θ`
+//! itself they lose `ε/cos θ` and `επ/Δθ`, which a peaked phase function amplifies (1.9e-4 in
+//! f32 on HG `g = 0.9`, the peer's floor).
 //!
 //! The samples' Legendre coefficients `c_k` estimate the error by the panels' model
 //! (`crate::panels::error_factor`, as on a y-panel, whose weight is 1 too):
@@ -57,7 +58,7 @@ use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
-use crate::panels::{bernstein_rho, error_factor, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, Control, ALIASING_MARGIN};
+use crate::panels::{bernstein_rho, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, unit_weight_factor, Control, ALIASING_MARGIN};
 use crate::phase::{PhaseFunction, Singularities};
 use crate::real::{atan2_upper, hypot1, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
@@ -143,12 +144,23 @@ impl<T: Real> Plan<T> {
         // the half-width from the segment's length, not from the difference of the ends'
         // angles (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0,
         // 1 + u0 u1), 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
-        let (psi1, width) = if y_cut < y1 {
-            (T::lit(2.0) * y_cut.recip().atan(), T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut))
+        let psi1 = if y_cut < y1 {
+            T::lit(2.0) * y_cut.recip().atan()
         } else if u1.is_finite() {
-            (atan2_upper(T::one(), u1), atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1))
+            atan2_upper(T::one(), u1)
         } else {
-            (T::zero(), atan2_upper(T::one(), u0))
+            T::zero()
+        };
+        // (a width of at least 1 as π − ψ0 − ψ1 loses at most πε/1 of it: no second atan)
+        let difference = T::PI() - psi0 - psi1;
+        let width = if difference >= T::one() {
+            difference
+        } else if y_cut < y1 {
+            T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut)
+        } else if u1.is_finite() {
+            atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1)
+        } else {
+            atan2_upper(T::one(), u0)
         };
         let hw = width * T::lit(0.5);
         if !(hw > T::zero()) {
@@ -282,9 +294,7 @@ impl<T: Real> Plan<T> {
         let c = if rate < T::one() { legendre_from::<T, N>(&samples, N - 4) } else { legendre_from::<T, N>(&samples, 0) };
         // the panels' model with the weight 1 (moments M_0 = 2, M_k = 0): q^{N+1−m} where the
         // rate is known and below 1, the cautious q^{N/4} where it is not
-        let mut moments = [T::zero(); N];
-        moments[0] = T::lit(2.0);
-        let factor = error_factor::<T, N>(&c, &moments, Some(rate));
+        let factor = unit_weight_factor::<T, N>(&c, rate);
         let last = tail_estimate::<T, N>(&c);
         // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding as on a
         // y-panel (mass 2 times the samples' weighted mean magnitude)

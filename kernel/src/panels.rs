@@ -395,6 +395,28 @@ pub(crate) fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floo
     (aliasing + truncation).min(T::one())
 }
 
+/// [`error_factor`] for the weight 1 (moments `M_0 = 2`, `M_k = 0`: the light-angle route's
+/// panel, `crate::angle`), where its model reduces to `q^{N+1−m}` below a rate of 1 — from the
+/// last four coefficients alone, which is all the route transforms there — and to the cautious
+/// form at or above it; the same value, without the moments' Horner sum.
+pub(crate) fn unit_weight_factor<T: Real, const N: usize>(c: &[T; N], floor: T) -> T {
+    if N < 4 {
+        return T::one();
+    }
+    let last = c[N - 1].abs() + c[N - 2].abs();
+    let before = c[N - 3].abs() + c[N - 4].abs();
+    if !(before > T::zero()) || !(last < before) {
+        return T::one();
+    }
+    let q = (last / before).sqrt();
+    let floored = q.max(floor);
+    if floored < T::one() {
+        return power(floored, N + 1 - ALIASING_MARGIN).min(T::one());
+    }
+    let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
+    power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 }).min(T::one())
+}
+
 /// The margin `m` of the panels' aliasing model (`error_factor`): the estimate is `q^{−m}` above
 /// the geometric model. Measured over tests/reference/classes.jsonl with `m = 3` (largest error
 /// over every record of every class): with 4 … 16 nodes per panel at tolerances 1e-1 … 1e-4
@@ -720,6 +742,37 @@ pub fn exp_legendre_moments<T: Real>(lambda: T, out: &mut [T]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The route's factor is the panels' with the moments `(2, 0, …, 0)`, bit for bit, on
+    /// coefficients that decay, grow and stall, with floors below and above 1.
+    #[test]
+    fn unit_weight_factor_is_error_factor_with_the_weight_1() {
+        fn check<const N: usize>() {
+            let mut moments = [0.0f64; N];
+            moments[0] = 2.0;
+            let mut state = 0x2545_f491_4f6c_dd1du64;
+            for case in 0..2000 {
+                let mut c = [0.0f64; N];
+                for (k, ck) in c.iter_mut().enumerate() {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    let r = (state >> 11) as f64 / (1u64 << 53) as f64;
+                    // geometric decay at rates 0.1 … 1.3, signs and noise from the same stream
+                    let rate = 0.1 + 1.2 * (case % 13) as f64 / 12.0;
+                    *ck = rate.powi(k as i32) * (r - 0.3);
+                }
+                for floor in [0.0, 0.3, 0.9, 1.0, 1.7] {
+                    let (a, b) = (unit_weight_factor::<f64, N>(&c, floor), error_factor::<f64, N>(&c, &moments, Some(floor)));
+                    assert_eq!(a.to_bits(), b.to_bits(), "N = {N}, floor {floor}, c = {c:?}");
+                }
+            }
+        }
+        check::<4>();
+        check::<8>();
+        check::<16>();
+        check::<32>();
+    }
 
     /// `M_0(λ) = (1 − e^{−2λ})/λ` and, with `w = 1 + ξ`, `M_1(λ) = ∫_0^2 (w − 1) e^{−λw} dw =
     /// −2e^{−2λ}/λ + (1 − e^{−2λ})/λ² − M_0`, integrated by hand; at `λ` in the Miller branch
