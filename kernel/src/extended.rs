@@ -453,68 +453,44 @@ pub(crate) fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) 
 mod tests {
     use super::*;
 
-    /// The Kronrod rule is exact to degree 22 and the Gauss rule to degree 13: `∫_{−1}^{1} x^k dx
-    /// = 2/(k+1)` for even `k` (by hand), 0 for odd `k`; neither is exact one degree beyond.
+    /// Gauss–Kronrod 7/15 (`qk15`): the Kronrod rule exact to degree 22, the Gauss 7-point rule
+    /// to 13; through [`gauss_kronrod_15`].
     #[test]
     fn gauss_kronrod_15_degrees() {
-        for k in 0..=24i32 {
+        exact_to_degrees(&GAUSS_KRONROD_15, 22, 13);
+        let (kr, _) = gauss_kronrod_15(&mut |x: f64| x.powi(22), -1.0, 1.0);
+        assert!((kr - 2.0 / 23.0).abs() <= 1e-15);
+    }
+
+    /// Both rules of a Gauss–Kronrod pair integrate `x^k` over `[−1, 1]` exactly (`2/(k+1)`,
+    /// even `k`; odd powers vanish by symmetry) up to their degrees, and not at the next even one.
+    fn exact_to_degrees(rule: &[(f64, f64, f64)], kronrod: i32, gauss: i32) {
+        let next_even = |degree: i32| degree + 1 + (degree + 1) % 2;
+        for k in 0..=next_even(kronrod) {
             let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
-            let (kr, g) = gauss_kronrod_15(&mut |x: f64| x.powi(k), -1.0, 1.0);
-            if k <= 22 {
-                assert!((kr - exact).abs() <= 1e-15, "K15, x^{k}: {kr} vs {exact}");
-            }
-            if k <= 13 {
-                assert!((g - exact).abs() <= 1e-15, "G7, x^{k}: {g} vs {exact}");
-            }
-            if k == 14 {
-                assert!((g - exact).abs() > 1e-6, "G7 is not exact at degree 14");
-            }
-            if k == 24 {
-                assert!((kr - exact).abs() > 1e-9, "K15 is not exact at degree 24");
+            let (kr, g) = gauss_kronrod(rule, &mut |x: f64| x.powi(k), -1.0, 1.0);
+            for (value, degree, which) in [(kr, kronrod, "Kronrod"), (g, gauss, "Gauss")] {
+                if k <= degree || k % 2 == 1 {
+                    assert!((value - exact).abs() <= 1e-15, "{which} (degree {degree}), x^{k}: {value} vs {exact}");
+                } else if k == next_even(degree) {
+                    assert!((value - exact).abs() > 1e-9, "{which} is exact at degree {k}");
+                }
             }
         }
     }
 
-    /// The 7-point Kronrod rule is exact to degree 11, its Gauss 3-point rule to degree 5
-    /// (`∫_{−1}^{1} x^k dx = 2/(k+1)`, even `k`).
+    /// Gauss–Kronrod 2/5: its nodes `√(6/7)`, `1/√3`; the Kronrod rule exact to degree 7, the
+    /// Gauss 2-point rule to 3.
     #[test]
     fn gauss_kronrod_5_degrees() {
         assert!((GAUSS_KRONROD_5[0].0 - (6.0f64 / 7.0).sqrt()).abs() <= f64::EPSILON);
         assert!((GAUSS_KRONROD_5[1].0 - (1.0f64 / 3.0).sqrt()).abs() <= f64::EPSILON);
-        for k in 0..=8i32 {
-            let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
-            let (kr, g) = gauss_kronrod(&GAUSS_KRONROD_5, &mut |x: f64| x.powi(k), -1.0, 1.0);
-            if k <= 7 || k % 2 == 1 {
-                assert!((kr - exact).abs() <= 1e-15, "K5, x^{k}: {kr} vs {exact}");
-            } else {
-                assert!((kr - exact).abs() > 1e-4, "K5 is not exact at degree {k}");
-            }
-            if k <= 3 || k % 2 == 1 {
-                assert!((g - exact).abs() <= 1e-15, "G2, x^{k}: {g} vs {exact}");
-            } else if k == 4 {
-                assert!((g - exact).abs() > 1e-2, "G2 is not exact at degree 4");
-            }
-        }
+        exact_to_degrees(&GAUSS_KRONROD_5, 7, 3);
     }
 
-    /// The 7-point Kronrod rule is exact to degree 11, its Gauss 3-point rule to degree 5
-    /// (`∫_{−1}^{1} x^k dx = 2/(k+1)`, even `k`).
+    /// Gauss–Kronrod 3/7: the Kronrod rule exact to degree 11, the Gauss 3-point rule to 5.
     #[test]
     fn gauss_kronrod_7_degrees() {
-        for k in 0..=12i32 {
-            let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
-            let (kr, g) = gauss_kronrod(&GAUSS_KRONROD_7, &mut |x: f64| x.powi(k), -1.0, 1.0);
-            // exact up to the degree; not at the next even one (odd powers vanish by symmetry)
-            if k <= 11 || k % 2 == 1 {
-                assert!((kr - exact).abs() <= 1e-15, "K7, x^{k}: {kr} vs {exact}");
-            } else {
-                assert!((kr - exact).abs() > 1e-6, "K7 is not exact at degree {k}");
-            }
-            if k <= 5 || k % 2 == 1 {
-                assert!((g - exact).abs() <= 1e-15, "G3, x^{k}: {g} vs {exact}");
-            } else if k == 6 {
-                assert!((g - exact).abs() > 1e-3, "G3 is not exact at degree 6");
-            }
-        }
+        exact_to_degrees(&GAUSS_KRONROD_7, 11, 5);
     }
 }

@@ -363,15 +363,12 @@ pub(crate) fn tail_estimate<T: Real, const N: usize>(c: &[T; N]) -> T {
 /// Where the coefficients do not decay (`q ≥ 1`) the factor is 1: the plain interpolation
 /// error.
 pub(crate) fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floor: Option<T>) -> T {
-    if N < 4 || !(m[0] > T::zero()) {
+    if !(m[0] > T::zero()) {
         return T::one();
     }
-    let last = c[N - 1].abs() + c[N - 2].abs();
-    let before = c[N - 3].abs() + c[N - 4].abs();
-    if !(before > T::zero()) || !(last < before) {
+    let Some(q) = tail_decay(c) else {
         return T::one();
-    }
-    let q = (last / before).sqrt();
+    };
     // the truncation's moment: the neglected terms meet M_k no larger than these
     let tail_moment = m[N - 1].abs().max(m[N - 2].abs());
     // the rate the nearest singularity allows, where the samples show a faster one; at or
@@ -387,12 +384,27 @@ pub(crate) fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floo
         }
         return ((aliasing + q * tail_moment) / m[0]).min(T::one());
     }
-    // a coefficient above 1.2|c_0|: a peak at or just beyond the panel's end, whose mass
-    // between the last node and the end the nodes miss
-    let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
-    let aliasing = power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 });
     let truncation = q * tail_moment / m[0];
-    (aliasing + truncation).min(T::one())
+    (cautious_aliasing(c, q) + truncation).min(T::one())
+}
+
+/// The coefficients' decay per degree `q = √((|c_{N−1}| + |c_{N−2}|)/(|c_{N−3}| + |c_{N−4}|))`,
+/// where they decay (`None`: fewer than four, or not falling).
+fn tail_decay<T: Real, const N: usize>(c: &[T; N]) -> Option<T> {
+    if N < 4 {
+        return None;
+    }
+    let last = c[N - 1].abs() + c[N - 2].abs();
+    let before = c[N - 3].abs() + c[N - 4].abs();
+    (before > T::zero() && last < before).then(|| (last / before).sqrt())
+}
+
+/// The aliasing where no singularity bounds the rate: `q^{N/4}`, or `q^{N/6}` where a
+/// coefficient exceeds `1.2|c_0|` — a peak at or just beyond the panel's end, whose mass between
+/// the last node and the end the nodes miss.
+fn cautious_aliasing<T: Real, const N: usize>(c: &[T; N], q: T) -> T {
+    let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
+    power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 })
 }
 
 /// [`error_factor`] for the weight 1 (moments `M_0 = 2`, `M_k = 0`: the light-angle route's
@@ -400,21 +412,14 @@ pub(crate) fn error_factor<T: Real, const N: usize>(c: &[T; N], m: &[T; N], floo
 /// last four coefficients alone, which is all the route transforms there — and to the cautious
 /// form at or above it; the same value, without the moments' Horner sum.
 pub(crate) fn unit_weight_factor<T: Real, const N: usize>(c: &[T; N], floor: T) -> T {
-    if N < 4 {
+    let Some(q) = tail_decay(c) else {
         return T::one();
-    }
-    let last = c[N - 1].abs() + c[N - 2].abs();
-    let before = c[N - 3].abs() + c[N - 4].abs();
-    if !(before > T::zero()) || !(last < before) {
-        return T::one();
-    }
-    let q = (last / before).sqrt();
+    };
     let floored = q.max(floor);
     if floored < T::one() {
         return power(floored, N + 1 - ALIASING_MARGIN).min(T::one());
     }
-    let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
-    power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 }).min(T::one())
+    cautious_aliasing(c, q).min(T::one())
 }
 
 /// The margin `m` of the panels' aliasing model (`error_factor`): the estimate is `q^{−m}` above
