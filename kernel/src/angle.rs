@@ -141,27 +141,19 @@ impl<T: Real> Plan<T> {
         // where cos θ formed from θ itself would lose ε/cos θ of it (and a peaked phase
         // function amplifies that, as for the panels' `1 ∓ μ`).
         let psi0 = atan2_upper(T::one(), -u0);
-        // the half-width from the segment's length, not from the difference of the ends'
-        // angles (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 = atan2(u1 − u0,
-        // 1 + u0 u1), 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
-        let psi1 = if y_cut < y1 {
-            T::lit(2.0) * y_cut.recip().atan()
+        // ψ1, and the width as k·atan2(y, x) from the segment's length, not from the difference
+        // of the ends' angles (ε·π/Δθ of it lost on a short segment): atan u1 − atan u0 =
+        // atan2(u1 − u0, 1 + u0 u1), 2(atan Y_cut − atan Y0) = 2 atan2(Y_cut − Y0, 1 + Y0 Y_cut)
+        let (psi1, (k, y, x)) = if y_cut < y1 {
+            (T::lit(2.0) * y_cut.recip().atan(), (T::lit(2.0), y_cut - y0, T::one() + y0 * y_cut))
         } else if u1.is_finite() {
-            atan2_upper(T::one(), u1)
+            (atan2_upper(T::one(), u1), (T::one(), (g.t1 - g.t0) / h, T::one() + u0 * u1))
         } else {
-            T::zero()
+            (T::zero(), (T::one(), T::one(), u0))
         };
-        // (a width of at least 1 as π − ψ0 − ψ1 loses at most πε/1 of it: no second atan)
+        // a width of at least 1 as π − ψ0 − ψ1 loses at most πε of it: no second atan
         let difference = T::PI() - psi0 - psi1;
-        let width = if difference >= T::one() {
-            difference
-        } else if y_cut < y1 {
-            T::lit(2.0) * atan2_upper(y_cut - y0, T::one() + y0 * y_cut)
-        } else if u1.is_finite() {
-            atan2_upper((g.t1 - g.t0) / h, T::one() + u0 * u1)
-        } else {
-            atan2_upper(T::one(), u0)
-        };
+        let width = if difference >= T::one() { difference } else { k * atan2_upper(y, x) };
         let hw = width * T::lit(0.5);
         if !(hw > T::zero()) {
             return None;

@@ -267,10 +267,7 @@ where
     fn end_on(&self, tolerance: T) -> Option<T> {
         // each end reduced as the point light there ([`Scene::new`]; the inputs are validated)
         let (origin, dir, axis) = (T::vec3_to_array(self.ray.origin), T::vec3_to_array(self.ray.dir), self.light.distribution.axis());
-        let at = |end| {
-            let end = T::vec3_to_array(end);
-            Canonical::new(origin, dir, self.ray.t_min, self.ray.t_max, end, axis).refined(origin, dir, end, axis)
-        };
+        let at = |end| Canonical::new_accurate(origin, dir, self.ray.t_min, self.ray.t_max, T::vec3_to_array(end), axis);
         // both ends behind the start and on the line by the point light's own test
         let behind = |g: &Canonical<T>| g.x_h < g.t0 && g.h <= (g.t0 - g.x_h) * T::epsilon() * T::epsilon();
         let ga = Some(at(self.light.a)).filter(behind)?;
