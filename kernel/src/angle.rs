@@ -45,10 +45,11 @@
 //!
 //! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
 //! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32),
-//! if the extinction and the phase function would have passed at `N` and the lobe's own
-//! prediction passes at the wider count: `c^p` is a Gaussian `e^{−pφ²/2}`, whose coefficients
-//! fall later than the rate `√p·hw` above says (docs/DESIGN.md §4.2), and 16 or 32 samples still
-//! cost less than the closed-form panels.
+//! if the phase function would have passed at `N` and the predictions pass at the wider count —
+//! the lobe's own as well: `c^p` is a Gaussian `e^{−pφ²/2}`, whose coefficients fall later than
+//! the rate `√p·hw` above says (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the
+//! closed-form panels, also where `N` missed the extinction's rise at the end of a long ray in
+//! thin fog.
 //!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
@@ -175,10 +176,10 @@ impl<T: Real> Plan<T> {
     /// The panel by `N` Gauss–Legendre nodes, if the predicted coefficients are below the
     /// tolerance and then the estimate meets it.
     ///
-    /// `lobe_nodes: Some(k)` is the wider rule after a first try of `k` nodes: spent on a
-    /// light's lobe alone, so declined without an axis, and unless the extinction's and the
-    /// phase function's predictions already pass at `k` nodes and the lobe's own (a Gaussian's,
-    /// module docs) at `N`.
+    /// `lobe_nodes: Some(k)` is the wider rule after a first try of `k` nodes, for a light's
+    /// lobe or the extinction's layer at the panel's end: declined without an axis, and unless
+    /// the phase function's prediction already passes at `k` nodes and the lobe's own (a
+    /// Gaussian's, module docs) at `N`.
     pub fn rule<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, lobe_nodes: Option<usize>) -> Route<T>
     where
         D: LightDistribution<T>,
@@ -193,7 +194,7 @@ impl<T: Real> Plan<T> {
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
         // λ^N/(3·5⋯(2N+1)) (module docs); the lobe as the exponential with λ = √p·hw, the
         // two rates added.
-        if let Some(k) = lobe_nodes {
+        if lobe_nodes.is_some() {
             // the lobe e^{−p·hw²ξ²/2}: the estimate sees about its degree-(2N − m) coefficient
             // (m = ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2,
             // z = p·hw²/4, ≈ 2 exp(−(n asinh(n/z) − √(n² + z²) + z)) (uniform asymptotics,
@@ -204,12 +205,11 @@ impl<T: Real> Plan<T> {
             }
             let n = T::lit(N as f64 - ALIASING_MARGIN as f64 * 0.5);
             let gaussian = T::lit(2.0) * (-(n * (n / z).asinh() - (n * n + z * z).sqrt() + z)).exp();
-            let extinction = Scalar::powi(lambda, k as i32) * T::lit(inv_odd_factorial(k));
-            if !(gaussian <= tolerance && extinction <= tolerance) {
+            if !(gaussian <= tolerance) {
                 return Route::Declined;
             }
         }
-        let predicted = Scalar::powi(lambda + lobe, N as i32) * T::lit(inv_odd_factorial(N));
+        let predicted = predicted_coefficient(lambda + lobe, N);
         if !(predicted <= tolerance) {
             return Route::Declined;
         }
@@ -303,6 +303,17 @@ impl<T: Real> Plan<T> {
     }
 }
 
+/// `λ^n/(3·5⋯(2n+1))`, the route's predicted coefficient (module docs), in two halves so that
+/// no factor leaves f32's range up to `n = 32` (there `1/65!!` ≈ 1e-46 underflows, and `λ^32`
+/// overflows from `λ` ≈ 16: their product was 0 or NaN). `λ` beyond ≈ 260 gives `+∞`.
+#[inline]
+fn predicted_coefficient<T: Real>(rate: T, n: usize) -> T {
+    let half = n / 2;
+    let lower = T::lit(inv_odd_factorial(half));
+    let upper = T::lit(inv_odd_factorial(n) / inv_odd_factorial(half));
+    Scalar::powi(rate, half as i32) * lower * (Scalar::powi(rate, (n - half) as i32) * upper)
+}
+
 /// `1/(3·5⋯(2n+1))`: `i_n(λ) ≈ λ^n` times this for `λ ≪ n` (DLMF 10.53.1), the route's
 /// predicted coefficient (module docs; the shaders take it from here). Inlined, so that for the
 /// route's const `N` the product folds to a constant (not inlined it was 5 % of the route's time).
@@ -316,6 +327,28 @@ mod tests {
     use crate::glam::DVec3;
     use crate::phase::HenyeyGreenstein;
     use crate::{light::Omni, Medium, PointLight, Ray, Scene};
+
+    /// The predicted coefficient `λ^n/(3·5⋯(2n+1))` in f32 at the wider rules' 32 nodes: formed
+    /// as `λ^32 · (1/65!!)` it was 0 (`1/65!!` ≈ 1e-46 underflows) or NaN (`λ^32` overflows
+    /// from `λ` ≈ 16). Against the f64 product `Π λ/(2k+1)`: within `4e-6`, the rate's f32
+    /// rounding raised to the 32nd power (`32·2⁻²⁴`) and about 12 products' (`12·2⁻²⁴`).
+    #[test]
+    fn predicted_coefficients_stay_in_f32_range() {
+        for n in [8, 12, 16, 32] {
+            for rate in [1e-3, 0.5, 1.0, 4.0, 12.0, 16.0, 20.0, 25.0, 40.0] {
+                let exact = (1..=n).fold(1.0f64, |p, k| p * rate / (2 * k + 1) as f64);
+                let f32_value = super::predicted_coefficient(rate as f32, n) as f64;
+                let f64_value = super::predicted_coefficient(rate, n);
+                assert!((f64_value - exact).abs() <= 1e-13 * exact, "f64 n {n} rate {rate}: {f64_value} vs {exact}");
+                if exact > 1e-30 && exact < 1e30 {
+                    assert!((f32_value - exact).abs() <= 4e-6 * exact, "f32 n {n} rate {rate}: {f32_value} vs {exact}");
+                } else {
+                    // outside f32's range: 0 or +∞ on the side of the truth, never NaN
+                    assert!(if exact < 1.0 { f32_value < 1e-30 } else { f32_value > 1e30 }, "f32 n {n} rate {rate}: {f32_value} vs {exact}");
+                }
+            }
+        }
+    }
 
     /// Found by the `kernel` fuzz target: no extinction, the light's distance `r0` beyond the
     /// float range (`σt·r0` was `0·∞`, NaN).
