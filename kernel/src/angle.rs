@@ -45,11 +45,11 @@
 //!
 //! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
 //! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32),
-//! if the phase function would have passed at `N` and the predictions pass at the wider count —
-//! the lobe's own as well: `c^p` is a Gaussian `e^{−pφ²/2}`, whose coefficients fall later than
-//! the rate `√p·hw` above says (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the
-//! closed-form panels, also where `N` missed the extinction's rise at the end of a long ray in
-//! thin fog.
+//! if the phase function would have passed at `N` and the extinction's and the lobe's
+//! predictions pass at the wider count, each on its own — the lobe's as a Gaussian's: `c^p` is
+//! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
+//! (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the closed-form panels, also
+//! where `N` missed the extinction's rise at the end of a long ray in thin fog.
 //!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
@@ -192,9 +192,9 @@ impl<T: Real> Plan<T> {
         let tolerance = control.tolerance;
         // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
-        // λ^N/(3·5⋯(2N+1)) (module docs); the lobe as the exponential with λ = √p·hw, the
-        // two rates added.
-        if lobe_nodes.is_some() {
+        // λ^N/(3·5⋯(2N+1)) (module docs); on the first try the lobe as the exponential with
+        // λ = √p·hw, the two rates added, on a wider rule by its own prediction.
+        let rate = if lobe_nodes.is_some() {
             // the lobe e^{−p·hw²ξ²/2}: the estimate sees about its degree-(2N − m) coefficient
             // (m = ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2,
             // z = p·hw²/4, ≈ 2 exp(−(n asinh(n/z) − √(n² + z²) + z)) (uniform asymptotics,
@@ -208,9 +208,11 @@ impl<T: Real> Plan<T> {
             if !(gaussian <= tolerance) {
                 return Route::Declined;
             }
-        }
-        let predicted = predicted_coefficient(lambda + lobe, N);
-        if !(predicted <= tolerance) {
+            lambda
+        } else {
+            lambda + lobe
+        };
+        if !(predicted_coefficient(rate, N) <= tolerance) {
             return Route::Declined;
         }
         // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse
