@@ -8,7 +8,7 @@ minus that for none (the reference file's parsing), divided by passes × scenes.
 Usage:
   python3 scripts/class_instructions.py f32 hg_0.9 1e-1 [more tolerances or pN / sN …]
   python3 scripts/class_instructions.py --level 1e-3 f32 hg_0.9 hg_0.8 …
-With --level, each class at the loosest tolerance of 1e-1 … 1e-5 whose largest error is at most
+With --level, each class at the loosest tolerance of 1e-1, 3e-2, … 1e-5 whose largest error is at most
 the level (as the classes bench picks it). Needs valgrind; builds the example first.
 """
 import re
@@ -38,7 +38,7 @@ def main(args):
     if args[0] == "--level":
         level, precision, classes = float(args[1]), args[2], args[3:]
         for cls in classes:
-            for tol in ["1e-1", "1e-2", "1e-3", "1e-4", "1e-5"]:
+            for tol in ["1e-1", "3e-2", "1e-2", "3e-3", "1e-3", "3e-4", "1e-4", "3e-5", "1e-5"]:
                 ir, worst = count(precision, cls, tol)
                 if worst <= level:
                     print(f"{cls} {precision} at {level:g}: tolerance {tol}, {ir:.0f} instructions per ray, largest error {worst:.2e}")

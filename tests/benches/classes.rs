@@ -14,8 +14,9 @@
 //! * `airlight`: `Scene::in_scatter()` (the default), and `peer_default`: the peer at the
 //!   default's largest error;
 //! * at each error level of the targets (`LEVELS`: 1e-8 and 1e-10 in f64, 1e-3 and 1e-4 in
-//!   f32), `airlight_<level>`: the kernel with the loosest tolerance (1e-1 … 1e-12) whose largest
-//!   error is at most the level (where none is, the default, flagged), and `peer_<level>`. Both
+//!   f32), `airlight_<level>`: the kernel with the loosest tolerance (1e-1, 3e-2, 1e-2, … 1e-12:
+//!   half decades, as the peer's ladder steps by 1.2–1.6× in nodes) whose largest error is at
+//!   most the level (where none is, the default, flagged), and `peer_<level>`. Both
 //!   sides are chosen knowing the class's errors: the peer's cheapest rung is one plain 4-node
 //!   panel, the kernel's cheapest setting tolerance 1e-1 (one panel a piece where the first estimate
 //!   passes).
@@ -86,7 +87,9 @@ const PEER_LADDER: [(usize, usize, bool); 34] = [
     (16, 256, true),
     (64, 64, true),
 ];
-const TOLERANCES: [f64; 12] = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
+const TOLERANCES: [f64; 23] = [
+    1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 3e-9, 1e-9, 3e-10, 1e-10, 3e-11, 1e-11, 3e-12, 1e-12,
+];
 
 fn levels<T: Real>() -> [f64; 2] {
     if T::epsilon() > T::lit(1e-10) {
