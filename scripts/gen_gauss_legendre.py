@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints kernel/src/expansion/gauss_table.rs: Gauss–Legendre nodes and weights on [-1, 1]
 (positive half; the rule is symmetric) for the node counts the panel integration offers, and
-for the counts up to 16 the discrete Legendre transform at those nodes,
+for the counts up to 16, 24 and 32 the discrete Legendre transform at those nodes,
 L[k][i] = (2k+1)/2 · w_i · P_k(x_i) (so that c_k = Σ_i L[k][i] (g(x_i) + (−1)^k g(−x_i)) are
 the Legendre coefficients of the degree-(n−1) interpolant), each rounded once to f64.
 
@@ -42,7 +42,7 @@ for n in COUNTS:
         print(f"    ({mp.nstr(x, 20, min_fixed=-1, max_fixed=1)}, {mp.nstr(w, 20, min_fixed=-1, max_fixed=1)}),")
     print("];")
     print()
-TRANSFORMS = [n for n in COUNTS if n <= 16 or n == 32]
+TRANSFORMS = [n for n in COUNTS if n <= 16 or n in (24, 32)]
 for n in TRANSFORMS:
     r = rule(n)
     print(f"/// Discrete Legendre transform of the {n}-point rule, row `k`, column `i` (positive nodes):")

@@ -236,19 +236,20 @@ where
                 Route::Failed => tried = 1,
                 Route::Declined => {}
             }
-            // twice, then four times the nodes, for a light's lobe that N do not resolve where
-            // the extinction and the phase function would be (the plan's predictions decide):
-            // that still costs less than the closed-form panels
-            // (after 16 nodes none: 32 cost f64 more than they saved on four of the five
-            // classes with an axis, docs/DESIGN.md §4.2)
+            // twice, then four times the nodes, for a light's lobe or the extinction's layer
+            // that N do not resolve where the phase function would be (the plan's predictions
+            // decide): that still costs less than the closed-form panels; after 16 nodes only
+            // 24 (32 cost f64 more than they saved on four of the five classes with an axis,
+            // docs/DESIGN.md §4.2)
             let wider = |n: usize| match n {
                 8 => plan.rule::<D, P, 8>(g, phys, &control, Some(N)),
                 12 => plan.rule::<D, P, 12>(g, phys, &control, Some(N)),
                 16 => plan.rule::<D, P, 16>(g, phys, &control, Some(N)),
+                24 if N == 16 => plan.rule::<D, P, 24>(g, phys, &control, Some(N)),
                 32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, Some(N)),
                 _ => Route::Declined,
             };
-            for n in [2 * N, 4 * N] {
+            for n in if N == 16 { [24, 0] } else { [2 * N, 4 * N] } {
                 match wider(n) {
                     Route::Taken(value) => return (value, tried + 1),
                     Route::Failed => tried += 1,

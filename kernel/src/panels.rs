@@ -798,6 +798,43 @@ mod tests {
         assert_eq!(m, [2.0, 0.0, 0.0, 0.0], "λ = 0: ∫ P_k = 2δ_k0");
     }
 
+    /// Every tabulated discrete Legendre transform (`gauss_table::transform`) takes the samples
+    /// of `P_j` at its rule's nodes to the `j`-th unit vector (`j < n`: the Gauss rule is exact
+    /// for `P_j P_k` up to degree `2n − 1`), `P_j` by Bonnet's recurrence (DLMF 18.9.1), not by
+    /// the tables' generator. Bound: the sum's and the recurrence's roundings, `(n + 2k + 2)ε`
+    /// times the sum of the terms' magnitudes.
+    #[test]
+    fn transforms_invert_the_legendre_samples() {
+        fn p(j: usize, x: f64) -> f64 {
+            let (mut prev, mut cur) = (0.0f64, 1.0f64);
+            for k in 0..j {
+                let kf = k as f64;
+                let next = ((2.0 * kf + 1.0) * x * cur - kf * prev) / (kf + 1.0);
+                prev = cur;
+                cur = next;
+            }
+            cur
+        }
+        for n in [4, 6, 8, 10, 12, 16, 24, 32] {
+            let (rule, table) = (gauss_table::rule(n).unwrap(), gauss_table::transform(n).unwrap());
+            let half = n / 2;
+            for j in 0..n {
+                for k in 0..n {
+                    let (mut sum, mut magnitude) = (0.0f64, 0.0f64);
+                    for (i, &(x, _)) in rule.iter().enumerate() {
+                        let pair = if k % 2 == 0 { p(j, x) + p(j, -x) } else { p(j, x) - p(j, -x) };
+                        let term = table[k * half + i] * pair;
+                        sum += term;
+                        magnitude += term.abs();
+                    }
+                    let expected = if j == k { 1.0 } else { 0.0 };
+                    let bound = (n + 2 * k + 2) as f64 * f64::EPSILON * magnitude;
+                    assert!((sum - expected).abs() <= bound, "n {n}: row {k} of P_{j}: {sum} (bound {bound:e})");
+                }
+            }
+        }
+    }
+
     /// The tabulated coefficients against Bonnet's recurrence
     /// `(k+1) P_{k+1} = (2k+1) ξ P_k − k P_{k−1}` (DLMF 18.9.1), a different route to `P_k`.
     #[test]

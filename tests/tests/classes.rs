@@ -237,5 +237,6 @@ fn light_angle_route_meets_its_tolerance() {
         sweep::<f64, 16>(&cases, tolerance, 1e-10, None);
         sweep::<f64, 16>(&cases, tolerance, 1e-10, Some(8));
         sweep::<f64, 32>(&cases, tolerance, 1e-10, Some(8));
+        sweep::<f64, 24>(&cases, tolerance, 1e-10, Some(16));
     }
 }
