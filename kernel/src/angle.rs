@@ -49,7 +49,13 @@
 //! predictions pass at the wider count, each on its own — the lobe's as a Gaussian's: `c^p` is
 //! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
 //! (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the closed-form panels, also
-//! where `N` missed the extinction's rise at the end of a long ray in thin fog.
+//! where `N` missed the extinction's rise at the end of a long ray in thin fog. For the same
+//! reason a wider rule's estimate, where the last coefficients do not yet fall (a lobe inside
+//! the panel, whose coefficients oscillate with `P_k` at its centre), takes the lobe's own decay
+//! from the degree it reads, `N − 1`, to the one the rule leaves, `2N − m` — the Gaussian's
+//! `I_{N−m/2}(z)/I_{(N−1)/2}(z)` — but never more than the singularities' rate allows
+//! (`rate^{N+1−m}`): the lobe is entire, so only the phase function's and the exponential's
+//! singularities bound the decay from below.
 //!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
@@ -296,13 +302,41 @@ impl<T: Real> Plan<T> {
         let noise = transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5));
         let target = tolerance * value.abs().max(control.floor * f_max * mass);
         if !(error <= target || error <= noise) {
-            return Route::Failed;
+            // A wider rule is spent on the lobe c^p, whose coefficients fall faster than
+            // geometrically: where the last ones do not yet fall (the lobe inside the panel),
+            // from the degree the estimate reads to the one the rule leaves by the lobe's own
+            // model, never faster than the singularities' rate allows (module docs).
+            if !(lobe_nodes.is_some() && rate < T::one()) {
+                return Route::Failed;
+            }
+            let lobe_factor = lobe_decay::<T>(lobe, N).max(power(rate, N + 1 - ALIASING_MARGIN));
+            let error = T::lit(2.0) * last * factor.min(lobe_factor);
+            if !(error <= target || error <= noise) {
+                return Route::Failed;
+            }
         }
         // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows, and without
         // extinction the exponent 0, not 0·∞ where r0 overflows
         let x = if phys.sigma_t > T::zero() { phys.sigma_t * (h * hypot1(u0)) } else { T::zero() };
         Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
     }
+}
+
+/// The lobe `c^p ≈ e^{−p·hw²ξ²/2}`'s coefficients from the degree the estimate reads, `N − 1`, to
+/// the one an `N`-node rule leaves, `2N − m` (`m` = [`ALIASING_MARGIN`]), by its model (module
+/// docs): the ratio `I_{N−m/2}(z)/I_{(N−1)/2}(z)`, `z = p·hw²/4` (`lobe` = `√p·hw`), by the
+/// exponents of Debye's uniform form (DLMF 10.41.3) `√(ν² + z²) − ν asinh(ν/z)`; the
+/// prefactors' ratio `((ν_1² + z²)/(ν_2² + z²))^{1/4}` ≤ 1 is left out, which can only raise it.
+fn lobe_decay<T: Real>(lobe: T, n: usize) -> T {
+    let z = lobe * lobe * T::lit(0.25);
+    if !(z > T::zero()) {
+        return T::one();
+    }
+    let exponent = |nu: f64| {
+        let nu = T::lit(nu);
+        (nu * nu + z * z).sqrt() - nu * (nu / z).asinh()
+    };
+    (exponent(n as f64 - ALIASING_MARGIN as f64 * 0.5) - exponent((n as f64 - 1.0) * 0.5)).exp().min(T::one())
 }
 
 /// `λ^n/(3·5⋯(2n+1))`, the route's predicted coefficient (module docs), in two halves so that
