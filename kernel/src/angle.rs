@@ -386,6 +386,34 @@ mod tests {
         }
     }
 
+    /// The lobe's decay model against the ratio of modified Bessel functions it stands for,
+    /// `I_{N−m/2}(z)/I_{(N−1)/2}(z)` by their power series (DLMF 10.25.2): never below it (the
+    /// estimate it enters must not shrink), and within 1.5× (the uniform form's `O(1/ν)` and the
+    /// prefactors left out: 1.0–1.4× here).
+    #[test]
+    fn lobe_decay_bounds_the_bessel_ratio() {
+        fn series(nu: f64, z: f64) -> f64 {
+            // Σ (z/2)^{2k} / (k! (ν+1)_k), the series without its factor (z/2)^ν / Γ(ν+1)
+            let (mut term, mut sum, mut k) = (1.0f64, 1.0f64, 0.0f64);
+            while term > 1e-18 * sum {
+                term *= (0.5 * z) * (0.5 * z) / ((k + 1.0) * (k + nu + 1.0));
+                sum += term;
+                k += 1.0;
+            }
+            sum
+        }
+        let m = super::ALIASING_MARGIN as f64;
+        for n in [8usize, 16, 24, 32] {
+            for z in [0.5f64, 2.0, 5.0, 10.0, 20.0, 40.0, 100.0] {
+                let (nu1, nu2) = ((n as f64 - 1.0) * 0.5, n as f64 - m * 0.5);
+                let log_ratio = (nu2 - nu1) * (0.5 * z).ln() + libm::lgamma(nu1 + 1.0) - libm::lgamma(nu2 + 1.0) + (series(nu2, z) / series(nu1, z)).ln();
+                let model = super::lobe_decay(2.0 * z.sqrt(), n);
+                let quotient = model / log_ratio.exp();
+                assert!((1.0..=1.5).contains(&quotient), "n {n}, z {z}: model {model:e}, Bessel ratio {:e}", log_ratio.exp());
+            }
+        }
+    }
+
     /// Found by the `kernel` fuzz target: no extinction, the light's distance `r0` beyond the
     /// float range (`σt·r0` was `0·∞`, NaN).
     #[test]
