@@ -44,7 +44,8 @@
 //!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
 //!
 //! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
-//! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32),
+//! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32;
+//! after 16 only 24),
 //! if the phase function would have passed at `N` and the extinction's and the lobe's
 //! predictions pass at the wider count, each on its own — the lobe's as a Gaussian's: `c^p` is
 //! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says

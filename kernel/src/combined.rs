@@ -249,7 +249,8 @@ where
                 32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, Some(N)),
                 _ => Route::Declined,
             };
-            for n in if N == 16 { [24, 0] } else { [2 * N, 4 * N] } {
+            let counts: &[usize] = if N == 16 { &[24] } else { &[2 * N, 4 * N] };
+            for &n in counts {
                 match wider(n) {
                     Route::Taken(value) => return (value, tried + 1),
                     Route::Failed => tried += 1,
