@@ -201,17 +201,17 @@ impl<T: Real> Plan<T> {
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
         // λ^N/(3·5⋯(2N+1)) (module docs); on the first try the lobe as the exponential with
         // λ = √p·hw, the two rates added, on a wider rule by its own prediction.
+        // the lobe e^{−p·hw²ξ²/2} as a Bessel function's terms: z = p·hw²/4
+        let z = lobe * lobe * T::lit(0.25);
         let rate = if lobe_nodes.is_some() {
-            // the lobe e^{−p·hw²ξ²/2}: the estimate sees about its degree-(2N − m) coefficient
-            // (m = ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2,
-            // z = p·hw²/4, ≈ 2 exp(−(n asinh(n/z) − √(n² + z²) + z)) (uniform asymptotics,
-            // DLMF 10.41.3)
-            let z = lobe * lobe * T::lit(0.25);
+            // the estimate sees about the lobe's degree-(2N − m) coefficient (m =
+            // ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2, ≈
+            // 2 exp(√(n² + z²) − n asinh(n/z) − z) (uniform asymptotics, DLMF 10.41.3)
             if !(z > T::zero()) {
                 return Route::Declined;
             }
             let n = T::lit(N as f64 - ALIASING_MARGIN as f64 * 0.5);
-            let gaussian = T::lit(2.0) * (-(n * (n / z).asinh() - (n * n + z * z).sqrt() + z)).exp();
+            let gaussian = T::lit(2.0) * (bessel_exponent(n, z) - z).exp();
             if !(gaussian <= tolerance) {
                 return Route::Declined;
             }
@@ -310,7 +310,7 @@ impl<T: Real> Plan<T> {
             if !(lobe_nodes.is_some() && rate < T::one()) {
                 return Route::Failed;
             }
-            let lobe_factor = lobe_decay::<T>(lobe, N).max(power(rate, N + 1 - ALIASING_MARGIN));
+            let lobe_factor = lobe_decay::<T>(z, N).max(power(rate, N + 1 - ALIASING_MARGIN));
             let error = T::lit(2.0) * last * factor.min(lobe_factor);
             if !(error <= target || error <= noise) {
                 return Route::Failed;
@@ -325,19 +325,20 @@ impl<T: Real> Plan<T> {
 
 /// The lobe `c^p ≈ e^{−p·hw²ξ²/2}`'s coefficients from the degree the estimate reads, `N − 1`, to
 /// the one an `N`-node rule leaves, `2N − m` (`m` = [`ALIASING_MARGIN`]), by its model (module
-/// docs): the ratio `I_{N−m/2}(z)/I_{(N−1)/2}(z)`, `z = p·hw²/4` (`lobe` = `√p·hw`), by the
-/// exponents of Debye's uniform form (DLMF 10.41.3) `√(ν² + z²) − ν asinh(ν/z)`; the
-/// prefactors' ratio `((ν_1² + z²)/(ν_2² + z²))^{1/4}` ≤ 1 is left out, which can only raise it.
-fn lobe_decay<T: Real>(lobe: T, n: usize) -> T {
-    let z = lobe * lobe * T::lit(0.25);
-    if !(z > T::zero()) {
-        return T::one();
-    }
-    let exponent = |nu: f64| {
-        let nu = T::lit(nu);
-        (nu * nu + z * z).sqrt() - nu * (nu / z).asinh()
-    };
+/// docs): the ratio `I_{N−m/2}(z)/I_{(N−1)/2}(z)`, `z = p·hw²/4 > 0` (a wider rule declines
+/// without an axis), by [`bessel_exponent`]; the prefactors' ratio
+/// `((ν_1² + z²)/(ν_2² + z²))^{1/4}` ≤ 1 is left out, which can only raise it.
+fn lobe_decay<T: Real>(z: T, n: usize) -> T {
+    let exponent = |nu: f64| bessel_exponent(T::lit(nu), z);
     (exponent(n as f64 - ALIASING_MARGIN as f64 * 0.5) - exponent((n as f64 - 1.0) * 0.5)).exp().min(T::one())
+}
+
+/// `√(ν² + z²) − ν asinh(ν/z)`: the exponent of Debye's uniform form `I_ν(z) ≈
+/// e^{√(ν² + z²) − ν asinh(ν/z)} / (2π√(ν² + z²))^{1/2}` (DLMF 10.41.3), the lobe's model in the
+/// wider rules' prediction and estimate.
+#[inline]
+fn bessel_exponent<T: Real>(nu: T, z: T) -> T {
+    (nu * nu + z * z).sqrt() - nu * (nu / z).asinh()
 }
 
 /// `λ^n/(3·5⋯(2n+1))`, the route's predicted coefficient (module docs), in two halves so that
@@ -408,7 +409,7 @@ mod tests {
             for z in [0.5f64, 2.0, 5.0, 10.0, 20.0, 40.0, 100.0] {
                 let (nu1, nu2) = ((n as f64 - 1.0) * 0.5, n as f64 - m * 0.5);
                 let log_ratio = (nu2 - nu1) * (0.5 * z).ln() + libm::lgamma(nu1 + 1.0) - libm::lgamma(nu2 + 1.0) + (series(nu2, z) / series(nu1, z)).ln();
-                let model = super::lobe_decay(2.0 * z.sqrt(), n);
+                let model = super::lobe_decay(z, n);
                 let quotient = model / log_ratio.exp();
                 assert!((1.0..=1.5).contains(&quotient), "n {n}, z {z}: model {model:e}, Bessel ratio {:e}", log_ratio.exp());
             }
