@@ -800,21 +800,11 @@ mod tests {
 
     /// Every tabulated discrete Legendre transform (`gauss_table::transform`) takes the samples
     /// of `P_j` at its rule's nodes to the `j`-th unit vector (`j < n`: the Gauss rule is exact
-    /// for `P_j P_k` up to degree `2n − 1`), `P_j` by Bonnet's recurrence (DLMF 18.9.1), not by
-    /// the tables' generator. Bound: the sum's and the recurrence's roundings, `(n + 2k + 2)ε`
-    /// times the sum of the terms' magnitudes.
+    /// for `P_j P_k` up to degree `2n − 1`), `P_j` by [`bonnet`], not by the tables' generator.
+    /// Bound: the sum's and the recurrence's roundings, `(n + 2k + 2)ε` times the sum of the terms'
+    /// magnitudes.
     #[test]
     fn transforms_invert_the_legendre_samples() {
-        fn p(j: usize, x: f64) -> f64 {
-            let (mut prev, mut cur) = (0.0f64, 1.0f64);
-            for k in 0..j {
-                let kf = k as f64;
-                let next = ((2.0 * kf + 1.0) * x * cur - kf * prev) / (kf + 1.0);
-                prev = cur;
-                cur = next;
-            }
-            cur
-        }
         for n in [4, 6, 8, 10, 12, 16, 24, 32] {
             let (rule, table) = (gauss_table::rule(n).unwrap(), gauss_table::transform(n).unwrap());
             let half = n / 2;
@@ -822,7 +812,7 @@ mod tests {
                 for k in 0..n {
                     let (mut sum, mut magnitude) = (0.0f64, 0.0f64);
                     for (i, &(x, _)) in rule.iter().enumerate() {
-                        let pair = if k % 2 == 0 { p(j, x) + p(j, -x) } else { p(j, x) - p(j, -x) };
+                        let pair = if k % 2 == 0 { bonnet(j, x) + bonnet(j, -x) } else { bonnet(j, x) - bonnet(j, -x) };
                         let term = table[k * half + i] * pair;
                         sum += term;
                         magnitude += term.abs();
@@ -840,17 +830,26 @@ mod tests {
     #[test]
     fn legendre_monomials_match_bonnet() {
         for &x in &[-0.97f64, -0.31, 0.0, 0.42, 0.999] {
-            let (mut prev, mut cur) = (0.0f64, 1.0f64);
             for (k, row) in LEGENDRE_MONOMIAL.iter().enumerate() {
                 let from_table = row.iter().rev().fold(0.0, |acc, &a| acc * x + a as f64) / (1u64 << k) as f64;
+                let cur = bonnet(k, x);
                 // the sum's rounding: ε Σ|a_i x^i| / 2^k ≤ ε (1+√2)^k
                 let bound = 4.0 * f64::EPSILON * (1.0 + 2f64.sqrt()).powi(k as i32);
                 assert!((from_table - cur).abs() <= bound, "P_{k}({x}): table {from_table}, recurrence {cur}");
-                let kf = k as f64;
-                let next = ((2.0 * kf + 1.0) * x * cur - kf * prev) / (kf + 1.0);
-                prev = cur;
-                cur = next;
             }
         }
+    }
+
+    /// `P_j(x)` by Bonnet's recurrence `(k+1) P_{k+1} = (2k+1) x P_k − k P_{k−1}` (DLMF 18.9.1):
+    /// the tests' route to the Legendre polynomials apart from the tables and their generator.
+    fn bonnet(j: usize, x: f64) -> f64 {
+        let (mut prev, mut cur) = (0.0f64, 1.0f64);
+        for k in 0..j {
+            let kf = k as f64;
+            let next = ((2.0 * kf + 1.0) * x * cur - kf * prev) / (kf + 1.0);
+            prev = cur;
+            cur = next;
+        }
+        cur
     }
 }
