@@ -40,6 +40,10 @@
 //!   whichever is less (`E` is convex in `θ`), plus `√p·hw` for a distribution of degree `p`
 //!   (`c^p ≈ e^{−pφ²/2}`) — large next to the light and in thick media, where the extinction
 //!   has a boundary layer and the closed forms stay the method;
+//! * the lobe alone as a Gaussian's (below, as on the wider rules): a `c^16` lobe inside a
+//!   panel 3 wide passes the rate's prediction at 8 nodes and fails the estimate, so its first
+//!   try is declined and the 16-node rule follows at once; formed only where the rate's
+//!   prediction of the lobe, times the most the Gaussian's exceeds it, is above the tolerance;
 //! * the phase's singularities: `ρ^{−N}`, `ρ` of the panel's Bernstein ellipse through the
 //!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
 //!
@@ -200,27 +204,26 @@ impl<T: Real> Plan<T> {
         // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
         // λ^N/(3·5⋯(2N+1)) (module docs); on the first try the lobe as the exponential with
-        // λ = √p·hw, the two rates added, on a wider rule by its own prediction.
-        // the lobe e^{−p·hw²ξ²/2} as a Bessel function's terms: z = p·hw²/4
+        // λ = √p·hw, the two rates added, and on every rule by its own prediction too.
+        let rate = if lobe_nodes.is_some() { lambda } else { lambda + lobe };
+        if !(predicted_coefficient(rate, N) <= tolerance) {
+            return Route::Declined;
+        }
+        // the lobe e^{−p·hw²ξ²/2} as a Bessel function's terms, z = p·hw²/4: the estimate sees
+        // about its degree-(2N − m) coefficient (m = ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the
+        // mean with n = N − m/2, ≈ 2 exp(√(n² + z²) − n asinh(n/z) − z) (uniform asymptotics,
+        // DLMF 10.41.3). On the first try it is formed only where it can decline: it exceeds
+        // the lobe's prediction as a rate by at most `gaussian_over_rate(N)`.
         let z = lobe * lobe * T::lit(0.25);
-        let rate = if lobe_nodes.is_some() {
-            // the estimate sees about the lobe's degree-(2N − m) coefficient (m =
-            // ALIASING_MARGIN), 2·I_n(z)/I_0(z) of the mean with n = N − m/2, ≈
-            // 2 exp(√(n² + z²) − n asinh(n/z) − z) (uniform asymptotics, DLMF 10.41.3)
-            if !(z > T::zero()) {
-                return Route::Declined;
-            }
+        if lobe_nodes.is_some() && !(z > T::zero()) {
+            return Route::Declined;
+        }
+        if z > T::zero() && (lobe_nodes.is_some() || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
             let n = T::lit(N as f64 - ALIASING_MARGIN as f64 * 0.5);
             let gaussian = T::lit(2.0) * (bessel_exponent(n, z) - z).exp();
             if !(gaussian <= tolerance) {
                 return Route::Declined;
             }
-            lambda
-        } else {
-            lambda + lobe
-        };
-        if !(predicted_coefficient(rate, N) <= tolerance) {
-            return Route::Declined;
         }
         // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse
         // through it: the phase's at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|, with its order's
@@ -333,6 +336,21 @@ fn lobe_decay<T: Real>(z: T, n: usize) -> T {
     (exponent(n as f64 - ALIASING_MARGIN as f64 * 0.5) - exponent((n as f64 - 1.0) * 0.5)).exp().min(T::one())
 }
 
+/// The largest ratio of the lobe's Gaussian prediction `2·I_{N−m/2}(z)/I_0(z)` ([`Plan::rule`],
+/// `m` = [`ALIASING_MARGIN`]) to its prediction as a rate, `(2√z)^N/(3·5⋯(2N+1))`, over every
+/// `z > 0`, rounded up (`tests::gaussian_over_rate_bounds_the_ratio` checks it on a grid: 11.4,
+/// 9.3, 11.3, 17.6, 33.0, 179.2 at 4, 6, 8, 10, 12, 16 nodes); `∞` for other counts. Where the
+/// rate's prediction times this is within the tolerance, the Gaussian's cannot decline.
+fn gaussian_over_rate(n: usize) -> f64 {
+    match n {
+        0..=8 => 12.0,
+        9..=10 => 18.0,
+        11..=12 => 34.0,
+        13..=16 => 180.0,
+        _ => f64::INFINITY,
+    }
+}
+
 /// `√(ν² + z²) − ν asinh(ν/z)`: the exponent of Debye's uniform form `I_ν(z) ≈
 /// e^{√(ν² + z²) − ν asinh(ν/z)} / (2π√(ν² + z²))^{1/2}` (DLMF 10.41.3), the lobe's model in the
 /// wider rules' prediction and estimate.
@@ -412,6 +430,23 @@ mod tests {
                 let model = super::lobe_decay(z, n);
                 let quotient = model / log_ratio.exp();
                 assert!((1.0..=1.5).contains(&quotient), "n {n}, z {z}: model {model:e}, Bessel ratio {:e}", log_ratio.exp());
+            }
+        }
+    }
+
+    /// [`super::gaussian_over_rate`] bounds the Gaussian's prediction over the rate's on a grid
+    /// of `z` from 1e-3 to 200 (step 1e-3 below 20, 1e-2 beyond), in f64: the first try's gate
+    /// may skip forming the Gaussian only where it could not decline.
+    #[test]
+    fn gaussian_over_rate_bounds_the_ratio() {
+        let m = super::ALIASING_MARGIN as f64;
+        for n in [4usize, 6, 8, 10, 12, 16] {
+            let bound = super::gaussian_over_rate(n);
+            let grid = (1..20_000).map(|i| i as f64 * 1e-3).chain((2_000..20_000).map(|i| i as f64 * 1e-2));
+            for z in grid {
+                let gaussian = 2.0 * (super::bessel_exponent(n as f64 - m * 0.5, z) - z).exp();
+                let rate = super::predicted_coefficient(2.0 * z.sqrt(), n);
+                assert!(gaussian <= bound * rate, "n {n}, z {z}: Gaussian {gaussian:e}, rate's {rate:e} × {bound}");
             }
         }
     }
