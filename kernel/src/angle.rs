@@ -58,9 +58,14 @@
 //! reason a wider rule's estimate, where the last coefficients do not yet fall (a lobe inside
 //! the panel, whose coefficients oscillate with `P_k` at its centre), takes the lobe's own decay
 //! from the degree it reads, `N − 1`, to the one the rule leaves, `2N − m` — the Gaussian's
-//! `I_{N−m/2}(z)/I_{(N−1)/2}(z)` — but never more than the singularities' rate allows
-//! (`rate^{N+1−m}`): the lobe is entire, so only the phase function's and the exponential's
-//! singularities bound the decay from below.
+//! `I_{N−m/2}(z)/I_{(N−1)/2}(z)` — but never more than the phase function's rate allows
+//! (`rate^{N+1−m}`): the lobe is entire, so only the singularities bound the decay from below.
+//! The exponential's (Y's pole just past the end of a long ray's panel) is a property of the
+//! weight `e^{−H(Y − Y0)}`, not of the lobe: its part is the weight's own last coefficients
+//! (the samples' weights, transformed as the samples are) carried at that rate, times `F`'s
+//! largest sample, and added — the weight's tail is small where the medium is thin, while
+//! the lobe's is large at degree `N` but falls as a Gaussian's. The lesser of this and the
+//! ordinary estimate is taken.
 //!
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
@@ -246,7 +251,7 @@ impl<T: Real> Plan<T> {
             return Route::Declined;
         }
         let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
-        let rate = rate.max(exponential);
+        let (phase_rate, rate) = (rate, rate.max(exponential));
         let (light, h) = (phys.light, g.h);
 
         // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
@@ -309,12 +314,16 @@ impl<T: Real> Plan<T> {
             // A wider rule is spent on the lobe c^p, whose coefficients fall faster than
             // geometrically: where the last ones do not yet fall (the lobe inside the panel),
             // from the degree the estimate reads to the one the rule leaves by the lobe's own
-            // model, never faster than the singularities' rate allows (module docs).
+            // model, never faster than the phase function's rate allows; the exponential's
+            // slower rate (Y's pole past the panel's end) is carried on the weight's own
+            // coefficients, times F's largest sample, not on the lobe's (module docs).
             if !(lobe_nodes.is_some() && rate < T::one()) {
                 return Route::Failed;
             }
-            let lobe_factor = lobe_decay::<T>(z, N).max(power(rate, N + 1 - ALIASING_MARGIN));
-            let error = T::lit(2.0) * last * factor.min(lobe_factor);
+            let lobe_factor = lobe_decay::<T>(z, N).max(power(phase_rate, N + 1 - ALIASING_MARGIN));
+            let cw = legendre_from::<T, N>(&weights, N - 4);
+            let extinction = T::lit(2.0) * tail_estimate::<T, N>(&cw) * unit_weight_factor::<T, N>(&cw, exponential) * f_max;
+            let error = (T::lit(2.0) * last * lobe_factor + extinction).min(error);
             if !(error <= target || error <= noise) {
                 return Route::Failed;
             }
