@@ -224,9 +224,7 @@ impl<T: Real> Plan<T> {
             return Route::Declined;
         }
         if z > T::zero() && (lobe_nodes.is_some() || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
-            let n = T::lit(N as f64 - ALIASING_MARGIN as f64 * 0.5);
-            let gaussian = T::lit(2.0) * (bessel_exponent(n, z) - z).exp();
-            if !(gaussian <= tolerance) {
+            if !(gaussian_prediction(z, N) <= tolerance) {
                 return Route::Declined;
             }
         }
@@ -345,7 +343,15 @@ fn lobe_decay<T: Real>(z: T, n: usize) -> T {
     (exponent(n as f64 - ALIASING_MARGIN as f64 * 0.5) - exponent((n as f64 - 1.0) * 0.5)).exp().min(T::one())
 }
 
-/// The largest ratio of the lobe's Gaussian prediction `2·I_{N−m/2}(z)/I_0(z)` ([`Plan::rule`],
+/// The lobe's Gaussian prediction for an `n`-node rule, `2·I_{n−m/2}(z)/I_0(z)` (`m` =
+/// [`ALIASING_MARGIN`]) by [`bessel_exponent`]: about the degree-`(2n − m)` coefficient its
+/// estimate sees, relative to the mean ([`Plan::rule`]).
+#[inline]
+fn gaussian_prediction<T: Real>(z: T, n: usize) -> T {
+    T::lit(2.0) * (bessel_exponent(T::lit(n as f64 - ALIASING_MARGIN as f64 * 0.5), z) - z).exp()
+}
+
+/// The largest ratio of the lobe's Gaussian prediction `2·I_{N−m/2}(z)/I_0(z)` ([`gaussian_prediction`],
 /// `m` = [`ALIASING_MARGIN`]) to its prediction as a rate, `(2√z)^N/(3·5⋯(2N+1))`, over every
 /// `z > 0`, rounded up (`tests::gaussian_over_rate_bounds_the_ratio` checks it on a grid: 11.4,
 /// 9.3, 11.3, 17.6, 33.0, 179.2 at 4, 6, 8, 10, 12, 16 nodes); `∞` for other counts. Where the
@@ -448,12 +454,11 @@ mod tests {
     /// may skip forming the Gaussian only where it could not decline.
     #[test]
     fn gaussian_over_rate_bounds_the_ratio() {
-        let m = super::ALIASING_MARGIN as f64;
         for n in [4usize, 6, 8, 10, 12, 16] {
             let bound = super::gaussian_over_rate(n);
             let grid = (1..20_000).map(|i| i as f64 * 1e-3).chain((2_000..20_000).map(|i| i as f64 * 1e-2));
             for z in grid {
-                let gaussian = 2.0 * (super::bessel_exponent(n as f64 - m * 0.5, z) - z).exp();
+                let gaussian: f64 = super::gaussian_prediction(z, n);
                 let rate = super::predicted_coefficient(2.0 * z.sqrt(), n);
                 assert!(gaussian <= bound * rate, "n {n}, z {z}: Gaussian {gaussian:e}, rate's {rate:e} × {bound}");
             }
