@@ -48,10 +48,10 @@
 //!   nearest (a Henyey–Greenstein peak inside the segment has `ρ → 1`).
 //!
 //! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
-//! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `lobe_nodes`; 8 → 16 → 32;
+//! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `wider`; 8 → 16 → 32;
 //! after 16 only 24),
-//! if the phase function would have passed at `N` and the extinction's and the lobe's
-//! predictions pass at the wider count, each on its own — the lobe's as a Gaussian's: `c^p` is
+//! if the phase function's, the extinction's and the lobe's predictions pass at the wider
+//! count, each on its own — the lobe's as a Gaussian's: `c^p` is
 //! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
 //! (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the closed-form panels, also
 //! where `N` missed the extinction's rise at the end of a long ray in thin fog. For the same
@@ -102,7 +102,7 @@ where
     P: PhaseFunction<T>,
 {
     match Plan::new(g, phys, control) {
-        Some(plan) => plan.rule::<D, P, N>(g, phys, control, None),
+        Some(plan) => plan.rule::<D, P, N>(g, phys, control, false),
         None => Route::Declined,
     }
 }
@@ -192,11 +192,11 @@ impl<T: Real> Plan<T> {
     /// The panel by `N` Gauss–Legendre nodes, if the predicted coefficients are below the
     /// tolerance and then the estimate meets it.
     ///
-    /// `lobe_nodes: Some(k)` is the wider rule after a first try of `k` nodes, for a light's
-    /// lobe or the extinction's layer at the panel's end: declined without an axis, and unless
-    /// the phase function's prediction already passes at `k` nodes and the lobe's own (a
-    /// Gaussian's, module docs) at `N`.
-    pub fn rule<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, lobe_nodes: Option<usize>) -> Route<T>
+    /// `wider`: a wider rule after a first try of fewer nodes, for a light's lobe, the
+    /// extinction's layer at the panel's end or the phase function's nearest singularity:
+    /// declined without an axis, and unless each prediction passes on its own at `N`, the
+    /// lobe's as a Gaussian's (module docs).
+    pub fn rule<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, wider: bool) -> Route<T>
     where
         D: LightDistribution<T>,
         P: PhaseFunction<T>,
@@ -210,7 +210,7 @@ impl<T: Real> Plan<T> {
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
         // λ^N/(3·5⋯(2N+1)) (module docs); on the first try the lobe as the exponential with
         // λ = √p·hw, the two rates added, and on every rule by its own prediction too.
-        let rate = if lobe_nodes.is_some() { lambda } else { lambda + lobe };
+        let rate = if wider { lambda } else { lambda + lobe };
         if !(predicted_coefficient(rate, N) <= tolerance) {
             return Route::Declined;
         }
@@ -220,17 +220,17 @@ impl<T: Real> Plan<T> {
         // (uniform asymptotics, DLMF 10.41.3). On the first try it is formed only where it can
         // decline: it exceeds the lobe's prediction as a rate by at most `gaussian_over_rate(N)`.
         let z = lobe * lobe * T::lit(0.25);
-        if lobe_nodes.is_some() && !(z > T::zero()) {
+        if wider && !(z > T::zero()) {
             return Route::Declined;
         }
-        if z > T::zero() && (lobe_nodes.is_some() || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
+        if z > T::zero() && (wider || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
             if !(gaussian_prediction(z, N) <= tolerance) {
                 return Route::Declined;
             }
         }
         // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse
         // through it: the phase's at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|, with its order's
-        // step as the panels take it (and at the first try's k nodes for the wider rule), and
+        // step as the panels take it, and
         // the exponential's own, Y's pole at θ = π/2 (essential in e^{−HY}, which is analytic
         // inside the ellipse through it).
         let mut phase = T::zero();
@@ -245,7 +245,7 @@ impl<T: Real> Plan<T> {
             phase = phase.max(bernstein_rho((re - mid) / hw, im / hw).recip());
         }
         let rate = order_step(singular.order, N) * phase;
-        if !(power(rate, N) <= tolerance) || lobe_nodes.is_some_and(|k| !(power(order_step(singular.order, k) * phase, k) <= tolerance)) {
+        if !(power(rate, N) <= tolerance) {
             return Route::Declined;
         }
         let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
@@ -315,7 +315,7 @@ impl<T: Real> Plan<T> {
             // model, never faster than the phase function's rate allows; the exponential's
             // slower rate (Y's pole past the panel's end) is carried on the weight's own
             // coefficients, times F's largest sample, not on the lobe's (module docs).
-            if !(lobe_nodes.is_some() && rate < T::one()) {
+            if !(wider && rate < T::one()) {
                 return Route::Failed;
             }
             let lobe_factor = lobe_decay::<T>(z, N).max(power(phase_rate, N + 1 - ALIASING_MARGIN));

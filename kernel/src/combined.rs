@@ -231,22 +231,22 @@ where
     let mut tried = 0;
     if let (Method::Panels(control), false) = (method, isotropic) {
         if let Some(plan) = crate::angle::Plan::new(g, phys, &control) {
-            match plan.rule::<D, P, N>(g, phys, &control, None) {
+            match plan.rule::<D, P, N>(g, phys, &control, false) {
                 Route::Taken(value) => return (value, 1),
                 Route::Failed => tried = 1,
                 Route::Declined => {}
             }
-            // twice, then four times the nodes, for a light's lobe or the extinction's layer
-            // that N do not resolve where the phase function would be (the plan's predictions
+            // twice, then four times the nodes, for a light's lobe, the extinction's layer or
+            // the phase function's singularity that N do not resolve (the plan's predictions
             // decide): that still costs less than the closed-form panels; after 16 nodes only
             // 24 (32 cost f64 more than they saved on four of the five classes with an axis,
             // docs/DESIGN.md §4.2)
             let wider = |n: usize| match n {
-                8 => plan.rule::<D, P, 8>(g, phys, &control, Some(N)),
-                12 => plan.rule::<D, P, 12>(g, phys, &control, Some(N)),
-                16 => plan.rule::<D, P, 16>(g, phys, &control, Some(N)),
-                24 if N == 16 => plan.rule::<D, P, 24>(g, phys, &control, Some(N)),
-                32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, Some(N)),
+                8 => plan.rule::<D, P, 8>(g, phys, &control, true),
+                12 => plan.rule::<D, P, 12>(g, phys, &control, true),
+                16 => plan.rule::<D, P, 16>(g, phys, &control, true),
+                24 if N == 16 => plan.rule::<D, P, 24>(g, phys, &control, true),
+                32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, true),
                 _ => Route::Declined,
             };
             let counts: &[usize] = if N == 16 { &[24] } else { &[2 * N, 4 * N] };
