@@ -77,7 +77,7 @@ use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, unit_weight_factor, Control, ALIASING_MARGIN};
 use crate::phase::{PhaseFunction, Singularities};
-use crate::real::{atan2_upper, hypot1, sin_cos_quarter, Real};
+use crate::real::{atan2_upper, hypot1, larger, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
 
 /// What the route did.
@@ -283,7 +283,7 @@ impl<T: Real> Plan<T> {
             *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
         }
         let mut samples = [T::zero(); N];
-        let (mut value, mut mass, mut magnitude, mut f_max) = (T::zero(), T::zero(), T::zero(), T::zero());
+        let (mut value, mut mass, mut f_max) = (T::zero(), T::zero(), T::zero());
         for (i, sample) in samples.iter_mut().enumerate() {
             let ((c, s), (_, one_plus, one_minus), weight) = (angles[i], sides[i], weights[i]);
             // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
@@ -293,8 +293,7 @@ impl<T: Real> Plan<T> {
             let w = T::lit(rule[i / 2].1);
             value = value + w * gw;
             mass = mass + w * weight;
-            magnitude = magnitude + w * gw.abs();
-            f_max = f_max.max(f.abs());
+            f_max = larger(f_max, f.abs());
         }
         // below a rate of 1 the estimate reads only the last four coefficients
         // (`error_factor`'s model with the weight 1: q^{N+1−m}); at or above it, all of them
@@ -304,11 +303,15 @@ impl<T: Real> Plan<T> {
         let factor = unit_weight_factor::<T, N>(&c, rate);
         let last = tail_estimate::<T, N>(&c);
         // in units of hw: the integral of Σ c_k P_k is 2c_0; the transform's rounding as on a
-        // y-panel (mass 2 times the samples' weighted mean magnitude)
+        // y-panel (mass 2 times the samples' weighted mean magnitude), formed only where the
+        // estimate misses the target
         let error = T::lit(2.0) * last * factor;
-        let noise = transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5));
         let target = tolerance * value.abs().max(control.floor * f_max * mass);
-        if !(error <= target || error <= noise) {
+        let noise = || {
+            let magnitude = samples.iter().enumerate().fold(T::zero(), |m, (i, gw)| m + T::lit(rule[i / 2].1) * gw.abs());
+            transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5))
+        };
+        if !(error <= target || error <= noise()) {
             // A wider rule is spent on the lobe c^p, whose coefficients fall faster than
             // geometrically: where the last ones do not yet fall (the lobe inside the panel),
             // from the degree the estimate reads to the one the rule leaves by the lobe's own
@@ -322,7 +325,7 @@ impl<T: Real> Plan<T> {
             let cw = legendre_from::<T, N>(&weights, N - 4);
             let extinction = T::lit(2.0) * tail_estimate::<T, N>(&cw) * unit_weight_factor::<T, N>(&cw, exponential) * f_max;
             let error = (T::lit(2.0) * last * lobe_factor + extinction).min(error);
-            if !(error <= target || error <= noise) {
+            if !(error <= target || error <= noise()) {
                 return Route::Failed;
             }
         }

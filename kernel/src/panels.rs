@@ -40,7 +40,7 @@
 
 use crate::expansion::{gauss_table, Expandable};
 use crate::integrals::Half;
-use crate::real::{reciprocal, Real};
+use crate::real::{larger, reciprocal, Real};
 use crate::scalar::Scalar;
 use crate::special::en_scaled;
 
@@ -403,7 +403,7 @@ fn tail_decay<T: Real, const N: usize>(c: &[T; N]) -> Option<T> {
 /// coefficient exceeds `1.2|c_0|` — a peak at or just beyond the panel's end, whose mass between
 /// the last node and the end the nodes miss.
 fn cautious_aliasing<T: Real, const N: usize>(c: &[T; N], q: T) -> T {
-    let c_max = c.iter().fold(T::zero(), |a, x| a.max(x.abs()));
+    let c_max = c.iter().fold(T::zero(), |a, x| larger(a, x.abs()));
     power(q, if c_max > T::lit(1.2) * c[0].abs() { N / 6 } else { N / 4 })
 }
 
@@ -467,8 +467,8 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         // v = y before the foot, 1/y after it
         let (fy, over) = if half.second { f.eval_over_reciprocal(v) } else { f.eval_over(v) };
         *gi = fy * over;
-        f_max = f_max.max(fy.abs());
-        over_max = over_max.max(over);
+        f_max = larger(f_max, fy.abs());
+        over_max = larger(over_max, over);
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
     let c = legendre::<T, N>(&g);
@@ -509,8 +509,8 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         let weight = (-big_h * (r * (T::one() - xi)) / (y * b)).exp();
         let (fy, over) = f.eval_over(y);
         *pi = fy * over * weight;
-        f_max = f_max.max(fy.abs());
-        over_max = over_max.max(over);
+        f_max = larger(f_max, fy.abs());
+        over_max = larger(over_max, over);
         mass = mass + T::lit(rule[i / 2].1) * weight;
         p_avg = p_avg + T::lit(rule[i / 2].1 * 0.5) * pi.abs();
     }
@@ -538,7 +538,7 @@ fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b
         let y = yc + r * node::<T>(rule, i);
         let (fy, over) = f.eval_over(y);
         *gi = fy * over;
-        f_max = f_max.max(fy.abs());
+        f_max = larger(f_max, fy.abs());
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();
     }
     let c = legendre::<T, N>(&g);

@@ -228,6 +228,18 @@ pub(crate) fn hypot1<T: Real>(x: T) -> T {
     }
 }
 
+/// The larger of `a` and `b` by one comparison, for running maxima over samples: `max`'s
+/// handling of NaN (either operand) costs a few instructions per call, and here a NaN `b` is
+/// skipped all the same (`b > a` is false), as `max` skips it.
+#[inline(always)]
+pub(crate) fn larger<T: Real>(a: T, b: T) -> T {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
 /// `atan2(y, x)` for `y > 0` (the upper half-plane, `(0, π)`) by one `atan`, of `y/x` where
 /// `x > 0`, else `π/2 + atan(−x/y)`: one rounding more than the library's `atan2` (the
 /// quotient's, at most half an ulp relative, which `atan` does not amplify: `|x atan′(x)| ≤
