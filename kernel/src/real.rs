@@ -262,8 +262,9 @@ pub(crate) fn atan2_upper<T: Real>(y: T, x: T) -> T {
 /// coefficients are `scripts/gen_sin_cos.py`'s (the Remez exchange at 40 digits, each rounded
 /// once to the precision): 9 and 9 in f64, the rounded polynomials within 2.7e-17 relative and
 /// 6.4e-17 absolute (≤ 0.3 ε); 5 and 6 in f32, within 1.5e-8 and 5.9e-9 (≤ 0.13 ε) — where
-/// Taylor's series takes 11 and 7 terms for the same. The shaders' `airlight_cos_sin` sums
-/// Taylor's series to `x¹⁷/17!` and `x¹⁶/16!` instead (its loop-free form in f32).
+/// Taylor's series takes 11 and 7 terms for the same. The shaders' `airlight_cos_sin` is another
+/// function: Taylor's series to `x¹⁷/17!` and `x¹⁶/16!` on `|x| ≤ 2.2` (it also serves the
+/// complex exponential of the E1 series region).
 #[inline]
 pub(crate) fn sin_cos_quarter<T: Real>(x: T) -> (T, T) {
     // scripts/gen_sin_cos.py (f64: sin relative 2.67e-17, cos absolute 6.34e-17; f32: 1.51e-8, 5.83e-9)
