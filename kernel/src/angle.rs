@@ -307,11 +307,13 @@ impl<T: Real> Plan<T> {
         // estimate misses the target
         let error = T::lit(2.0) * last * factor;
         let target = tolerance * value.abs().max(control.floor * f_max * mass);
-        let noise = || {
+        let noise = if error <= target {
+            T::zero()
+        } else {
             let magnitude = samples.iter().enumerate().fold(T::zero(), |m, (i, gw)| m + T::lit(rule[i / 2].1) * gw.abs());
             transform_noise::<T, N>(T::lit(2.0), magnitude * T::lit(0.5))
         };
-        if !(error <= target || error <= noise()) {
+        if !(error <= target || error <= noise) {
             // A wider rule is spent on the lobe c^p, whose coefficients fall faster than
             // geometrically: where the last ones do not yet fall (the lobe inside the panel),
             // from the degree the estimate reads to the one the rule leaves by the lobe's own
@@ -325,7 +327,7 @@ impl<T: Real> Plan<T> {
             let cw = legendre_from::<T, N>(&weights, N - 4);
             let extinction = T::lit(2.0) * tail_estimate::<T, N>(&cw) * unit_weight_factor::<T, N>(&cw, exponential) * f_max;
             let error = (T::lit(2.0) * last * lobe_factor + extinction).min(error);
-            if !(error <= target || error <= noise()) {
+            if !(error <= target || error <= noise) {
                 return Route::Failed;
             }
         }
