@@ -72,15 +72,15 @@ def worst(a, f, weight):
     return max(abs(weight(x * x) * (sum(mp.mpf(c) * (x * x) ** j for j, c in enumerate(a)) - f(x * x))) for x in xs)
 
 
-def in_kernel(name):
-    """The table `name` as kernel/src/real.rs has it."""
-    text = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "kernel", "src", "real.rs")).read()
+def in_kernel(text, name):
+    """The table `name` as kernel/src/real.rs (its `text`) has it."""
     m = re.search(r"const " + name + r": \[f64; \d+\] = \[(.*?)\];", text, re.S)
     return None if m is None else [float(v) for v in m.group(1).replace("\n", " ").split(",") if v.strip()]
 
 
 def main():
     check = "--check" in sys.argv[1:]
+    real_rs = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "kernel", "src", "real.rs")).read() if check else ""
     differences = 0
     for bits, n_s, n_c in ((64, 9, 9), (32, 5, 6)):
         s = [round_to(c, bits) for c in remez(sinc, lambda z: 1 / sinc(z), n_s)]
@@ -89,8 +89,9 @@ def main():
         print(f"// f{bits}: sin relative {mp.nstr(es, 3)}, cos absolute {mp.nstr(ec, 3)}")
         for name, table in ((f"SIN_F{bits}", s), (f"COS_F{bits}", c)):
             print(f"const {name}: [f64; {len(table)}] = [{', '.join(repr(v) for v in table)}];")
-            if check and in_kernel(name) != table:
-                print(f"  <-- kernel/src/real.rs has {in_kernel(name)}")
+            kernel = in_kernel(real_rs, name) if check else table
+            if kernel != table:
+                print(f"  <-- kernel/src/real.rs has {kernel}")
                 differences += 1
     if check:
         print(f"{differences} differences from kernel/src/real.rs")
