@@ -76,7 +76,7 @@ use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, unit_weight_factor, Control, ALIASING_MARGIN};
-use crate::phase::{PhaseFunction, Singularities};
+use crate::phase::PhaseFunction;
 use crate::real::{atan2_upper, hypot1, larger, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
 
@@ -127,8 +127,11 @@ pub struct Plan<T> {
     lambda: T,
     /// The lobe's `√p·hw` (0 without an axis).
     lobe: T,
-    /// The phase function's singularities.
-    singular: Singularities<T>,
+    /// `1/ρ` of the phase function's nearest singularity: `ρ` of the panel's Bernstein
+    /// ellipse through it (0 without one).
+    phase: T,
+    /// Its order ([`crate::phase::Singularities::order`]).
+    order: T,
 }
 
 impl<T: Real> Plan<T> {
@@ -186,7 +189,20 @@ impl<T: Real> Plan<T> {
         // D, a polynomial of degree p in c = A cos(θ − θ_axis): a lobe c^p ≈ e^{−pφ²/2} of
         // angular width about 1/√p
         let lobe = T::from(degree).unwrap().sqrt() * hw;
-        Some(Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, singular })
+        // The phase function's nearest singularity, at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|: 1/ρ
+        // of the panel's Bernstein ellipse through it
+        let mut phase = T::zero();
+        for mu in singular.cosines {
+            let gap = mu.abs() - T::one();
+            if !(gap > T::zero()) || !gap.is_finite() {
+                continue;
+            }
+            // acosh(1 + gap) = ln(1 + gap + √(gap(2 + gap)))
+            let im = (gap + (gap * (T::lit(2.0) + gap)).sqrt()).ln_1p();
+            let re = if mu > T::zero() { -T::FRAC_PI_2() } else { T::FRAC_PI_2() };
+            phase = phase.max(bernstein_rho((re - mid) / hw, im / hw).recip());
+        }
+        Some(Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, phase, order: singular.order })
     }
 
     /// The panel by `N` Gauss–Legendre nodes, if the predicted coefficients are below the
@@ -204,7 +220,7 @@ impl<T: Real> Plan<T> {
         let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
             return Route::Declined;
         };
-        let Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, singular } = *self;
+        let Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, phase, order } = *self;
         let tolerance = control.tolerance;
         // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈
@@ -228,23 +244,10 @@ impl<T: Real> Plan<T> {
                 return Route::Declined;
             }
         }
-        // The singularities': ρ^{−N} of the nearest, ρ of the panel's Bernstein ellipse
-        // through it: the phase's at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|, with its order's
-        // step as the panels take it, and
-        // the exponential's own, Y's pole at θ = π/2 (essential in e^{−HY}, which is analytic
-        // inside the ellipse through it).
-        let mut phase = T::zero();
-        for mu in singular.cosines {
-            let gap = mu.abs() - T::one();
-            if !(gap > T::zero()) || !gap.is_finite() {
-                continue;
-            }
-            // acosh(1 + gap) = ln(1 + gap + √(gap(2 + gap)))
-            let im = (gap + (gap * (T::lit(2.0) + gap)).sqrt()).ln_1p();
-            let re = if mu > T::zero() { -T::FRAC_PI_2() } else { T::FRAC_PI_2() };
-            phase = phase.max(bernstein_rho((re - mid) / hw, im / hw).recip());
-        }
-        let rate = order_step(singular.order, N) * phase;
+        // The singularities': ρ^{−N} of the nearest (`Plan::phase`), with its order's step as
+        // the panels take it, and the exponential's own, Y's pole at θ = π/2 (essential in
+        // e^{−HY}, which is analytic inside the ellipse through it).
+        let rate = order_step(order, N) * phase;
         if !(power(rate, N) <= tolerance) {
             return Route::Declined;
         }
@@ -253,9 +256,10 @@ impl<T: Real> Plan<T> {
         let (light, h) = (phys.light, g.h);
 
         // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
-        // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then F — so that each
-        // pass's calls and divisions are independent of one another and overlap instead of
-        // waiting in turn.
+        // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then D and P, each for
+        // all N at once (`eval_each`, `eval_sides_each`: a branch on the parameters taken once),
+        // then F — so that each pass's calls and divisions are independent of one another and
+        // overlap instead of waiting in turn.
         // θ = θ0 + hw(1 + x) = θ1 − hw(1 − x), formed as a distance from the nearer pole, so cos θ
         // keeps full relative accuracy; sin θ's sign then says which pole is nearer, and
         // 1 ∓ sin θ, Y follow without cancellation.
@@ -282,12 +286,18 @@ impl<T: Real> Plan<T> {
         for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
             *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
         }
+        let mut lights = [T::zero(); N];
+        for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
+            *d = g.d_el * s + g.d_c * c;
+        }
+        light.eval_each(&mut lights);
+        // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
+        let phases = phys.phase.eval_sides_each(&angles.map(|(_, s)| -s), &sides.map(|(_, plus, _)| plus), &sides.map(|(_, _, minus)| minus));
         let mut samples = [T::zero(); N];
         let (mut value, mut mass, mut f_max) = (T::zero(), T::zero(), T::zero());
         for (i, sample) in samples.iter_mut().enumerate() {
-            let ((c, s), (_, one_plus, one_minus), weight) = (angles[i], sides[i], weights[i]);
-            // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
-            let f = light.eval(g.d_el * s + g.d_c * c) * phys.phase.eval_sides(-s, one_plus, one_minus);
+            let weight = weights[i];
+            let f = lights[i] * phases[i];
             let gw = weight * f;
             *sample = gw;
             let w = T::lit(rule[i / 2].1);

@@ -16,6 +16,15 @@ pub trait LightDistribution<T: Real> {
     fn axis(&self) -> [T; 3];
     /// `D(c)` for `c ∈ [−1, 1]`.
     fn eval<S: Scalar<T>>(&self, c: S) -> S;
+    /// `D` at each of `N` cosines, in place, with [`eval`](Self::eval)'s values: what a rule of
+    /// `N` samples calls (the light-angle route, `crate::angle`). The default evaluates one
+    /// by one; a distribution whose evaluation branches on its parameters alone may take each
+    /// branch once for all `N` (the two-lobed `c^p`'s squarings).
+    fn eval_each<const N: usize>(&self, cs: &mut [T; N]) {
+        for c in cs.iter_mut() {
+            *c = self.eval(*c);
+        }
+    }
     /// `true` if `D` is constant: the kernel then skips the expansion.
     fn is_isotropic(&self) -> bool {
         false
@@ -95,6 +104,26 @@ impl<T: Real> LightDistribution<T> for TwoLobed<T> {
     }
     fn eval<S: Scalar<T>>(&self, c: S) -> S {
         c.powi(self.power as i32)
+    }
+    /// [`Scalar::powi`]'s squarings and products in its order, each step across all `N`
+    /// cosines: the same values, the power's bits tested once instead of once per cosine.
+    fn eval_each<const N: usize>(&self, cs: &mut [T; N]) {
+        let (mut k, mut out) = (self.power, [T::one(); N]);
+        loop {
+            if k & 1 == 1 {
+                for (o, &b) in out.iter_mut().zip(cs.iter()) {
+                    *o = *o * b;
+                }
+            }
+            k >>= 1;
+            if k == 0 {
+                break;
+            }
+            for b in cs.iter_mut() {
+                *b = *b * *b;
+            }
+        }
+        *cs = out;
     }
     fn is_isotropic(&self) -> bool {
         self.power == 0
@@ -243,6 +272,13 @@ impl<T: Real> LightDistribution<T> for AnyDistribution<T> {
             AnyDistribution::SpotCone(d) => d.eval(c),
         }
     }
+    fn eval_each<const N: usize>(&self, cs: &mut [T; N]) {
+        match self {
+            AnyDistribution::Omni => Omni.eval_each(cs),
+            AnyDistribution::TwoLobed(d) => d.eval_each(cs),
+            AnyDistribution::SpotCone(d) => d.eval_each(cs),
+        }
+    }
     fn is_isotropic(&self) -> bool {
         match self {
             AnyDistribution::Omni => true,
@@ -294,5 +330,25 @@ mod tests {
         let beam = TwoLobed::<f64> { axis: DVec3::Z, power: 4 };
         let b = |c: f64| -> f64 { beam.eval(c) };
         assert_eq!((b(0.5), b(-0.5), b(1.0)), (0.0625, 0.0625, 1.0));
+    }
+
+    /// The two-lobed `eval_each` squares across the cosines in `eval`'s order: the same values
+    /// bit for bit, for every power up to 64 and the largest, in both precisions.
+    #[test]
+    fn eval_each_gives_eval_bitwise() {
+        const CS: [f64; 8] = [-1.0, -0.93, -0.37, -1e-3, 0.0, 0.5, 0.7072, 0.999_999];
+        for power in (0..=64).step_by(2).chain([1022, 1024]) {
+            let beam = AnyDistribution::TwoLobed(TwoLobed::<f64> { axis: DVec3::Z, power });
+            let mut each = CS;
+            beam.eval_each(&mut each);
+            let mut each32 = CS.map(|c| c as f32);
+            AnyDistribution::TwoLobed(TwoLobed::<f32> { axis: glam::Vec3::Z, power }).eval_each(&mut each32);
+            for (i, &c) in CS.iter().enumerate() {
+                let one: f64 = beam.eval(c);
+                assert_eq!(each[i].to_bits(), one.to_bits(), "f64 {c}^{power}");
+                let one: f32 = TwoLobed::<f32> { axis: glam::Vec3::Z, power }.eval(c as f32);
+                assert_eq!(each32[i].to_bits(), one.to_bits(), "f32 {c}^{power}");
+            }
+        }
     }
 }

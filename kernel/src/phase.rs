@@ -21,6 +21,12 @@ pub trait PhaseFunction<T: Real> {
         let _ = (one_minus_mu, one_plus_mu);
         self.eval(mu)
     }
+    /// [`eval_sides`](Self::eval_sides) at each of `N` cosines, with its values: what a rule
+    /// of `N` samples calls (the light-angle route, `crate::angle`). The default evaluates one
+    /// by one; an enum of phase functions overrides it to dispatch once for all `N`.
+    fn eval_sides_each<const N: usize>(&self, mu: &[T; N], one_minus_mu: &[T; N], one_plus_mu: &[T; N]) -> [T; N] {
+        core::array::from_fn(|i| self.eval_sides(mu[i], one_minus_mu[i], one_plus_mu[i]))
+    }
     /// `true` if `P` is constant: the kernel then skips the expansion.
     fn is_isotropic(&self) -> bool {
         false
@@ -302,6 +308,16 @@ impl<T: Real> PhaseFunction<T> for AnyPhase<T> {
             AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval_sides(mu, one_minus_mu, one_plus_mu),
         }
     }
+    fn eval_sides_each<const N: usize>(&self, mu: &[T; N], one_minus_mu: &[T; N], one_plus_mu: &[T; N]) -> [T; N] {
+        match self {
+            AnyPhase::Isotropic => Isotropic.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::Rayleigh => Rayleigh.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::HenyeyGreenstein(p) => p.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::Schlick(p) => p.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::CornetteShanks(p) => p.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+            AnyPhase::TwoLobeHenyeyGreenstein(p) => p.eval_sides_each(mu, one_minus_mu, one_plus_mu),
+        }
+    }
     fn singularities(&self) -> Option<Singularities<T>> {
         match self {
             AnyPhase::Isotropic => Isotropic.singularities(),
@@ -411,6 +427,27 @@ mod tests {
         let hg = HenyeyGreenstein { g: 0.9f64 };
         for mu in [-1.0, -0.5, 0.0, 0.25, 0.5, 1.0] {
             assert_eq!(hg.eval_sides(mu, 1.0 - mu, 1.0 + mu), hg.eval(mu));
+        }
+    }
+
+    /// `AnyPhase::eval_sides_each` dispatches once and gives each variant's `eval_sides`.
+    #[test]
+    fn eval_sides_each_gives_eval_sides() {
+        let mu = [-1.0, -0.5, 0.0, 0.25, 0.999, 1.0];
+        let (minus, plus) = (mu.map(|m| 1.0 - m), mu.map(|m| 1.0 + m));
+        let any: [AnyPhase<f64>; 6] = [
+            AnyPhase::Isotropic,
+            AnyPhase::Rayleigh,
+            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.9 }),
+            AnyPhase::Schlick(Schlick { k: -0.6 }),
+            AnyPhase::CornetteShanks(CornetteShanks { g: 0.6 }),
+            AnyPhase::TwoLobeHenyeyGreenstein(TwoLobeHenyeyGreenstein { g1: 0.6, g2: -0.3, w: 0.5 }),
+        ];
+        for p in any {
+            let each = p.eval_sides_each(&mu, &minus, &plus);
+            for i in 0..mu.len() {
+                assert_eq!(each[i].to_bits(), p.eval_sides(mu[i], minus[i], plus[i]).to_bits(), "{p:?} at μ = {}", mu[i]);
+            }
         }
     }
 }
