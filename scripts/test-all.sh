@@ -29,8 +29,8 @@ fi
 echo "== E1 tuning (tests/reference/gen_e1_tuning.py: the tables in kernel/src/real.rs, re-derived)"
 python3 tests/reference/gen_e1_tuning.py
 
-echo "== sin/cos minimax (scripts/gen_sin_cos.py: sin_cos_quarter's tables in kernel/src/real.rs, re-derived)"
-python3 scripts/gen_sin_cos.py --check
+echo "== minimax polynomials (scripts/gen_minimax.py: the tables of sin_cos_quarter and exp_nonpositive in kernel/src/real.rs, re-derived)"
+python3 scripts/gen_minimax.py --check
 
 echo "== kernel package"
 cargo clippy -q -p airlight -p airlight-capi --all-features --lib -- -A clippy::all -D clippy::incompatible_msrv

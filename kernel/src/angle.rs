@@ -77,7 +77,7 @@ use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, unit_weight_factor, Control, ALIASING_MARGIN};
 use crate::phase::PhaseFunction;
-use crate::real::{atan2_upper, hypot1, larger, sin_cos_quarter, Real};
+use crate::real::{atan2_upper, exp_nonpositive, hypot1, larger, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
 
 /// What the route did.
@@ -282,9 +282,11 @@ impl<T: Real> Plan<T> {
             let near = c * c / far;
             *side = if s > T::zero() { (far / c, far, near) } else { (c / far, near, far) };
         }
+        // e^{−H(Y − Y0)} inline (`exp_nonpositive`): N calls of the library's exp would keep the
+        // pass from vectorising
         let mut weights = [T::zero(); N];
         for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
-            *weight = if c > T::zero() { (-(big_h * (y - y0)).max(T::zero())).exp() } else { T::zero() };
+            *weight = if c > T::zero() { exp_nonpositive(-(big_h * (y - y0)).max(T::zero())) } else { T::zero() };
         }
         let mut lights = [T::zero(); N];
         for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
