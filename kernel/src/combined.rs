@@ -54,22 +54,34 @@ struct HalfIntegrand<'a, T, D, P> {
 }
 
 impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> HalfIntegrand<'_, T, D, P> {
-    /// `(F(y), 1/(1 + y²))`.
+    /// `(c, μ, 1 − μ, 1 + μ, 1/(1 + y²))` at `y`, the half's `σ` given; the sides only where
+    /// [`exact_sides`](Self::exact_sides) (zero otherwise).
     #[inline]
-    fn with_over<S: Scalar<T>>(&self, y: S) -> (S, S) {
+    fn geometry<S: Scalar<T>>(&self, y: S, sigma: T) -> (S, S, S, S, S) {
         let y2 = y * y;
         let inv = y2.shift(T::one()).recip();
         let one_minus = S::cst(T::one()) - y2;
-        let mu = (one_minus * inv).scale(-self.sigma);
-        let c = (one_minus.scale(self.sigma * self.d_el) + y.scale(self.d_c + self.d_c)) * inv;
-        let p = if self.exact_sides {
+        let mu = (one_minus * inv).scale(-sigma);
+        let c = (one_minus.scale(sigma * self.d_el) + y.scale(self.d_c + self.d_c)) * inv;
+        let (minus, plus) = if self.exact_sides {
             // 1 − μ and 1 + μ are 2y²/(1+y²) and 2/(1+y²), in the order σ decides
             let (far, near) = ((y2 * inv).scale(T::lit(2.0)), inv.scale(T::lit(2.0)));
-            let (minus, plus) = if self.sigma < T::zero() { (far, near) } else { (near, far) };
-            self.phase.eval_sides(mu, minus, plus)
+            if sigma < T::zero() {
+                (far, near)
+            } else {
+                (near, far)
+            }
         } else {
-            self.phase.eval(mu)
+            (S::cst(T::zero()), S::cst(T::zero()))
         };
+        (c, mu, minus, plus, inv)
+    }
+
+    /// `(F(y), 1/(1 + y²))`.
+    #[inline]
+    fn with_over<S: Scalar<T>>(&self, y: S) -> (S, S) {
+        let (c, mu, minus, plus, inv) = self.geometry(y, self.sigma);
+        let p = if self.exact_sides { self.phase.eval_sides(mu, minus, plus) } else { self.phase.eval(mu) };
         (self.light.eval(c) * p, inv)
     }
 }
@@ -121,6 +133,18 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     #[inline]
     fn eval_over_reciprocal(&self, v: T) -> (T, T) {
         HalfIntegrand { sigma: -self.sigma, ..*self }.with_over(v)
+    }
+    /// The points' geometry first, then `D` and `P` each for all `N`
+    /// ([`LightDistribution::eval_each`], [`PhaseFunction::eval_sides_each`]).
+    fn eval_over_each<const N: usize>(&self, points: &[T; N], reciprocal: bool) -> [(T, T); N] {
+        let sigma = if reciprocal { -self.sigma } else { self.sigma };
+        let mut d = points.map(|y| self.geometry(y, sigma).0);
+        self.light.eval_each(&mut d);
+        core::array::from_fn(|i| {
+            let (_, mu, minus, plus, inv) = self.geometry(points[i], sigma);
+            let p = if self.exact_sides { self.phase.eval_sides(mu, minus, plus) } else { self.phase.eval(mu) };
+            (d[i] * p, inv)
+        })
     }
     /// `c(y)` and `μ(y)` have simple poles at `y = ±i`, where `D(c)·P(μ)/(1 + y²)` has one of
     /// order `deg D + max(growth, 0) + 1`; a phase singularity at `μ*` is where

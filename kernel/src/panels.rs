@@ -40,7 +40,7 @@
 
 use crate::expansion::{gauss_table, Expandable};
 use crate::integrals::Half;
-use crate::real::{larger, reciprocal, Real};
+use crate::real::{exp_nonpositive, larger, reciprocal, Real};
 use crate::scalar::Scalar;
 use crate::special::en_scaled;
 
@@ -460,12 +460,12 @@ fn v_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
         let r = (b - a) * T::lit(0.5);
         (a + r, r)
     };
+    // v = y before the foot, 1/y after it
+    let values = f.eval_over_each::<N>(&core::array::from_fn(|i| vc + r * node::<T>(rule, i)), half.second);
     let mut g = [T::zero(); N];
     let (mut f_max, mut over_max, mut g_avg) = (T::zero(), T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
-        let v = vc + r * node::<T>(rule, i);
-        // v = y before the foot, 1/y after it
-        let (fy, over) = if half.second { f.eval_over_reciprocal(v) } else { f.eval_over(v) };
+        let (fy, over) = values[i];
         *gi = fy * over;
         f_max = larger(f_max, fy.abs());
         over_max = larger(over_max, over);
@@ -500,14 +500,15 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
     let r = (b - a) * T::lit(0.5);
     let yc = a + r;
     let big_h = half.big_h;
+    let values = f.eval_over_each::<N>(&core::array::from_fn(|i| yc + r * node::<T>(rule, i)), false);
     let mut p = [T::zero(); N];
     let (mut f_max, mut over_max, mut mass, mut p_avg) = (T::zero(), T::zero(), T::zero(), T::zero());
     for (i, pi) in p.iter_mut().enumerate() {
         let xi = node::<T>(rule, i);
         let y = yc + r * xi;
         // H(1/y − 1/b) = H (b − y)/(y b), b − y = r(1 − ξ)
-        let weight = (-big_h * (r * (T::one() - xi)) / (y * b)).exp();
-        let (fy, over) = f.eval_over(y);
+        let weight = exp_nonpositive(-big_h * (r * (T::one() - xi)) / (y * b));
+        let (fy, over) = values[i];
         *pi = fy * over * weight;
         f_max = larger(f_max, fy.abs());
         over_max = larger(over_max, over);
@@ -532,11 +533,11 @@ fn y_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T
 fn tail_panel<T: Real, F: Expandable<T>, const N: usize>(half: &Half<T>, a: T, b: T, f: &F, rule: &[(f64, f64)]) -> Panel<T> {
     let r = (b - a) * T::lit(0.5);
     let yc = a + r;
+    let values = f.eval_over_each::<N>(&core::array::from_fn(|i| yc + r * node::<T>(rule, i)), false);
     let mut g = [T::zero(); N];
     let (mut f_max, mut g_avg) = (T::zero(), T::zero());
     for (i, gi) in g.iter_mut().enumerate() {
-        let y = yc + r * node::<T>(rule, i);
-        let (fy, over) = f.eval_over(y);
+        let (fy, over) = values[i];
         *gi = fy * over;
         f_max = larger(f_max, fy.abs());
         g_avg = g_avg + T::lit(rule[i / 2].1 * 0.5) * gi.abs();

@@ -45,6 +45,13 @@ pub trait Expandable<T: Real> {
         let (f, inv) = self.eval_over(y);
         (f, y * y * inv)
     }
+    /// `(F, 1/(1 + y²))` at each of `N` points, with [`eval_over`](Self::eval_over)'s values, or
+    /// [`eval_over_reciprocal`](Self::eval_over_reciprocal)'s at `v = 1/y` where `reciprocal`:
+    /// what a panel of `N` samples calls. The default evaluates one by one; an integrand whose
+    /// evaluation branches on its parameters alone may take each branch once for all `N`.
+    fn eval_over_each<const N: usize>(&self, points: &[T; N], reciprocal: bool) -> [(T, T); N] {
+        core::array::from_fn(|i| if reciprocal { self.eval_over_reciprocal(points[i]) } else { self.eval_over(points[i]) })
+    }
     /// `(t, α)`: heights `t > 0` such that `F/(1 + y²)`, continued to complex `y`, may be
     /// singular at `y = ±it` with order `α` (`~ (y ∓ it)^{−α}`; three at most; those of the
     /// built-in integrands all lie on the imaginary axis), or `None` when they are not known (the
