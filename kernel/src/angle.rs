@@ -282,8 +282,7 @@ impl<T: Real> Plan<T> {
             let near = c * c / far;
             *side = if s > T::zero() { (far / c, far, near) } else { (c / far, near, far) };
         }
-        // e^{−H(Y − Y0)} inline (`exp_nonpositive`): N calls of the library's exp would keep the
-        // pass from vectorising
+        // e^{−H(Y − Y0)} by `exp_nonpositive`: in f32 inline, so that the pass vectorises
         let mut weights = [T::zero(); N];
         for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
             *weight = if c > T::zero() { exp_nonpositive(-(big_h * (y - y0)).max(T::zero())) } else { T::zero() };
