@@ -49,7 +49,8 @@
 //!
 //! Where the first try of `N` nodes is declined or fails, a light with an axis gets wider rules
 //! of `2N`, then `4N` nodes on the same panel ([`Plan::rule`] with `wider`; 8 → 16 → 32;
-//! after 16 only 24),
+//! after 16 only 24), and so does a light without one after 8 nodes where the extinction's
+//! rate is `λ ≤ 1` (the phase function's peak failed the first try, [`Plan::widens`]),
 //! if the phase function's, the extinction's and the lobe's predictions pass at the wider
 //! count, each on its own — the lobe's as a Gaussian's: `c^p` is
 //! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
@@ -205,13 +206,23 @@ impl<T: Real> Plan<T> {
         Some(Plan { u0, big_h, y0, psi0, psi1, hw, mid, lambda, lobe, phase, order: singular.order })
     }
 
+    /// Whether wider rules may follow a first try of `n` nodes: always for a light's lobe;
+    /// without an axis (the phase function's peak alone) only after fewer than 16 nodes and
+    /// where the extinction's rate is `λ ≤ 1` (the weight falls by at most `e^{−2}` over the
+    /// panel). A larger `λ` is the extinction's layer at the panel's end (a long ray's rise),
+    /// which the closed-form panels resolve at less cost and far below the tolerance; after 16
+    /// nodes, 24 rarely resolve a peak that 16 did not (docs/DESIGN.md §4.2 has the measurements).
+    pub fn widens(&self, n: usize) -> bool {
+        self.lobe > T::zero() || (n < 16 && self.lambda <= T::one())
+    }
+
     /// The panel by `N` Gauss–Legendre nodes, if the predicted coefficients are below the
     /// tolerance and then the estimate meets it.
     ///
-    /// `wider`: a wider rule after a first try of fewer nodes, for a light's lobe, the
-    /// extinction's layer at the panel's end or the phase function's nearest singularity:
-    /// declined without an axis, and unless each prediction passes on its own at `N`, the
-    /// lobe's as a Gaussian's (module docs).
+    /// `wider`: a wider rule after a first try of fewer nodes ([`Plan::widens`]), for a light's
+    /// lobe, the extinction's layer at the panel's end or the phase function's nearest
+    /// singularity: declined unless each prediction passes on its own at `N`, the lobe's as a
+    /// Gaussian's (module docs).
     pub fn rule<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, wider: bool) -> Route<T>
     where
         D: LightDistribution<T>,
@@ -236,9 +247,6 @@ impl<T: Real> Plan<T> {
         // (uniform asymptotics, DLMF 10.41.3). On the first try it is formed only where it can
         // decline: it exceeds the lobe's prediction as a rate by at most `gaussian_over_rate(N)`.
         let z = lobe * lobe * T::lit(0.25);
-        if wider && !(z > T::zero()) {
-            return Route::Declined;
-        }
         if z > T::zero() && (wider || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
             if !(gaussian_prediction(z, N) <= tolerance) {
                 return Route::Declined;
@@ -252,6 +260,15 @@ impl<T: Real> Plan<T> {
             return Route::Declined;
         }
         let exponential = if big_h > T::zero() { bernstein_rho((T::FRAC_PI_2() - mid) / hw, T::zero()).recip() } else { T::zero() };
+        // Without an axis a wider rule serves the phase function's peak; it declines where Y's
+        // pole lies so close past the panel's end that N nodes do not resolve it (ρ^N < e, the
+        // last node farther from the end than the pole): there the extinction's layer at the
+        // end (a light next to the ray) is not yet in the last coefficients, and the estimate
+        // misses it (a near_light ray of tests/reference/classes.jsonl: 2.4e-5 off at 32 nodes
+        // with an estimate of 8.3e-7).
+        if wider && !(z > T::zero()) && !(power(exponential, N) <= T::lit(core::f64::consts::E.recip())) {
+            return Route::Declined;
+        }
         let (phase_rate, rate) = (rate, rate.max(exponential));
         let (light, h) = (phys.light, g.h);
 
@@ -331,7 +348,8 @@ impl<T: Real> Plan<T> {
             // model, never faster than the phase function's rate allows; the exponential's
             // slower rate (Y's pole past the panel's end) is carried on the weight's own
             // coefficients, times F's largest sample, not on the lobe's (module docs).
-            if !(wider && rate < T::one()) {
+            // (without an axis, no lobe: the ordinary estimate stands)
+            if !(wider && rate < T::one() && z > T::zero()) {
                 return Route::Failed;
             }
             let lobe_factor = lobe_decay::<T>(z, N).max(power(phase_rate, N + 1 - ALIASING_MARGIN));
@@ -351,8 +369,8 @@ impl<T: Real> Plan<T> {
 
 /// The lobe `c^p ≈ e^{−p·hw²ξ²/2}`'s coefficients from the degree the estimate reads, `N − 1`, to
 /// the one an `N`-node rule leaves, `2N − m` (`m` = [`ALIASING_MARGIN`]), by its model (module
-/// docs): the ratio `I_{N−m/2}(z)/I_{(N−1)/2}(z)`, `z = p·hw²/4 > 0` (a wider rule declines
-/// without an axis), by [`bessel_exponent`]; the prefactors' ratio
+/// docs): the ratio `I_{N−m/2}(z)/I_{(N−1)/2}(z)`, `z = p·hw²/4 > 0` (a light without an axis
+/// has no lobe, and its wider rules the ordinary estimate only), by [`bessel_exponent`]; the prefactors' ratio
 /// `((ν_1² + z²)/(ν_2² + z²))^{1/4}` ≤ 1 is left out, which can only raise it.
 fn lobe_decay<T: Real>(z: T, n: usize) -> T {
     let exponent = |nu: f64| bessel_exponent(T::lit(nu), z);

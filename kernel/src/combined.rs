@@ -261,10 +261,10 @@ where
                 Route::Declined => {}
             }
             // twice, then four times the nodes, for a light's lobe, the extinction's layer or
-            // the phase function's singularity that N do not resolve (the plan's predictions
-            // decide): that still costs less than the closed-form panels; after 16 nodes only
-            // 24 (32 cost f64 more than they saved on four of the five classes with an axis,
-            // docs/DESIGN.md §4.2)
+            // the phase function's singularity that N do not resolve (`Plan::widens` and the
+            // plan's predictions decide): that still costs less than the closed-form panels;
+            // after 16 nodes only 24 (32 cost f64 more than they saved on four of the five
+            // classes with an axis, docs/DESIGN.md §4.2)
             let wider = |n: usize| match n {
                 8 => plan.rule::<D, P, 8>(g, phys, &control, true),
                 12 => plan.rule::<D, P, 12>(g, phys, &control, true),
@@ -273,7 +273,13 @@ where
                 32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, true),
                 _ => Route::Declined,
             };
-            let counts: &[usize] = if N == 16 { &[24] } else { &[2 * N, 4 * N] };
+            let counts: &[usize] = if !plan.widens(N) {
+                &[]
+            } else if N == 16 {
+                &[24]
+            } else {
+                &[2 * N, 4 * N]
+            };
             for &n in counts {
                 match wider(n) {
                     Route::Taken(value) => return (value, tried + 1),

@@ -190,8 +190,9 @@ fn error_estimate_holds_at_loose_tolerances() {
 /// it takes is checked, not only those the default path happens to keep: over every scene of
 /// every class, at each tolerance, the largest error of a taken value is within the tolerance
 /// (within the precision's target where rounding dominates: f32 below 1e-4, f64 below 1e-10) —
-/// the first try of `N` nodes, and the wider rules of `2N` and `4N` nodes for a light's lobe after
-/// it (the default path's 8 → 16 → 32, in f32 and in f64 at loose tolerances).
+/// the first try of `N` nodes, and the wider rules of `2N` and `4N` nodes after it, for a light's
+/// lobe or a phase function's peak (the default path's 8 → 16 → 32, in f32 and in f64 at loose
+/// tolerances; called on every scene, also where `Plan::widens` would not try them).
 /// Printed: per class, how often it is taken, tried in vain, declined.
 #[test]
 fn light_angle_route_meets_its_tolerance() {
