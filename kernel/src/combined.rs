@@ -134,8 +134,11 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Expandable<T> for Ha
     fn eval_over_reciprocal(&self, v: T) -> (T, T) {
         HalfIntegrand { sigma: -self.sigma, ..*self }.with_over(v)
     }
-    /// The points' geometry first, then `D` and `P` each for all `N`
-    /// ([`LightDistribution::eval_each`], [`PhaseFunction::eval_sides_each`]).
+    /// `D` for all `N` at once ([`LightDistribution::eval_each`]), then `P` point by point.
+    /// The points' geometry is formed twice, for `c` and again for `μ`, `1 ∓ μ`: kept as an
+    /// array of five per point instead it cost 2–10 % more instructions per ray (f32
+    /// `long_ray`, `near_light`, `hg_0.99`, `beam_c64` at tolerance 1e-3, f64 `thick` at 1e-4;
+    /// `long_ray` 8 668 → 9 533), the stores outweighing a division and a few products.
     fn eval_over_each<const N: usize>(&self, points: &[T; N], reciprocal: bool) -> [(T, T); N] {
         let sigma = if reciprocal { -self.sigma } else { self.sigma };
         let mut d = points.map(|y| self.geometry(y, sigma).0);
