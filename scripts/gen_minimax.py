@@ -11,7 +11,11 @@ interval (evaluated exactly), which the kernel's docs quote:
   for f64 (n_s = n_c = 9) and f32 (n_s = 5, n_c = 6);
 * `exp_nonpositive`, on r in [−ln 2/2, ln 2/2] (what is left of x after x = k ln 2 + r):
     e^r ≈ E(r),      E of degree n_e − 1, minimax in the relative error,
-  for f32 (n_e = 7; f64 takes the library's exp, which measured faster than 12 terms).
+  for f32 (n_e = 7; f64 takes the library's exp, which measured faster than 12 terms);
+* `atan_nonnegative`, on t in [0, 1] (t = min(a, 1/a)), in z = t²:
+    atan t ≈ t·A(z), A of degree n_a − 1, minimax in the relative error of A against
+                     atan(√z)/√z,
+  for f32 (n_a = 10; 11 is no better once rounded to f32; f64 takes the library's atan).
 
 All by the Remez exchange at 40 digits (mpmath).
 
@@ -37,6 +41,10 @@ def sinc(z):
 
 def cosr(z):
     return mp.cos(mp.sqrt(z))
+
+
+def atanc(z):
+    return mp.mpf(1) if z == 0 else mp.atan(mp.sqrt(z)) / mp.sqrt(z)
 
 
 def remez(f, weight, n, interval, iterations=30):
@@ -89,16 +97,20 @@ def main():
     # the error is measured at 20 001 points: x evenly over [0, π/2] (z = x²), r evenly over its interval
     quarter = [(mp.pi / 2 * i / 20000) ** 2 for i in range(20001)]
     half_ln2 = [HALF_LN2[0] + (HALF_LN2[1] - HALF_LN2[0]) * i / 20000 for i in range(20001)]
+    unit = [(mp.mpf(i) / 20000) ** 2 for i in range(20001)]
     relative_sin, absolute, relative_exp = (lambda z: 1 / sinc(z)), (lambda z: mp.mpf(1)), (lambda r: 1 / mp.exp(r))
+    relative_atan = lambda z: 1 / atanc(z)
     differences = 0
-    for bits, n_s, n_c, n_e in ((64, 9, 9, 0), (32, 5, 6, 7)):
+    for bits, n_s, n_c, n_e, n_a in ((64, 9, 9, 0, 0), (32, 5, 6, 7, 10)):
         s = [round_to(c, bits) for c in remez(sinc, relative_sin, n_s, QUARTER)]
         c = [round_to(c, bits) for c in remez(cosr, absolute, n_c, QUARTER)]
         e = [round_to(c, bits) for c in remez(mp.exp, relative_exp, n_e, HALF_LN2)] if n_e else []
         es, ec = worst(s, sinc, relative_sin, quarter), worst(c, cosr, absolute, quarter)
+        a = [round_to(c, bits) for c in remez(atanc, relative_atan, n_a, (mp.mpf(0), mp.mpf(1)))] if n_a else []
         ee = f", exp relative {mp.nstr(worst(e, mp.exp, relative_exp, half_ln2), 3)}" if e else ""
-        print(f"// f{bits}: sin relative {mp.nstr(es, 3)}, cos absolute {mp.nstr(ec, 3)}{ee}")
-        tables = ((f"SIN_F{bits}", s), (f"COS_F{bits}", c)) + (((f"EXP_F{bits}", e),) if e else ())
+        ea = f", atan relative {mp.nstr(worst(a, atanc, relative_atan, unit), 3)}" if a else ""
+        print(f"// f{bits}: sin relative {mp.nstr(es, 3)}, cos absolute {mp.nstr(ec, 3)}{ee}{ea}")
+        tables = ((f"SIN_F{bits}", s), (f"COS_F{bits}", c)) + (((f"EXP_F{bits}", e),) if e else ()) + (((f"ATAN_F{bits}", a),) if a else ())
         for name, table in tables:
             print(f"const {name}: [f64; {len(table)}] = [{', '.join(repr(v) for v in table)}];")
             kernel = in_kernel(real_rs, name) if check else table

@@ -13,7 +13,7 @@ use crate::integrals::{moment_zero, moments, ExpIntegral, Half, SharedEnds};
 use crate::light::LightDistribution;
 use crate::panels::{integrate_piece, Control, Running};
 use crate::phase::PhaseFunction;
-use crate::real::{hypot1, Real};
+use crate::real::{hypot1, log2_floor, Real};
 use crate::scene::{Medium, PointLight};
 use crate::scalar::Scalar;
 use crate::special::en_scaled;
@@ -312,7 +312,7 @@ where
         let dy = da * (T::one() + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         let mut half = Half { second: false, big_h: optical(big_h, dy), y_lo, y_hi, dy, dv: dy };
         if let Some(control) = cut {
-            let dv = cut_length(half.big_h, y_lo, &control);
+            let dv = cut_length(half.big_h, y_lo, dy, &control);
             if dv < dy {
                 // the rest of this half and all of the second lie beyond the cut
                 half = Half { y_hi: y_lo + dv, dy: dv, dv, ..half };
@@ -335,7 +335,7 @@ where
         let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
         let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
         if let Some(control) = cut {
-            let cut_dv = cut_length(half.big_h, y_hi.recip(), &control);
+            let cut_dv = cut_length(half.big_h, y_hi.recip(), dv, &control);
             // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
             let cut_y_lo = y_hi / (T::one() + y_hi * cut_dv);
             if cut_dv < dv && cut_y_lo > T::zero() {
@@ -363,11 +363,20 @@ where
 /// `tolerance·τ·scale`, and never below one rounding of it: cut, the boundary layer of a thick
 /// medium or a long ray is still integrated to the target, and the panels are spent on the
 /// part that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
+///
+/// `span`: the half's own length in `v` (or the light angle's panel's in `Y`). Where `H·span`
+/// is at most `1 + ln 2·(2 − ⌊log₂(δ·τ)⌋)`, below `E` (`R ≥ 1` and `ln(8/(δ·τ)) ≥ ln 2·(3 −
+/// ⌊log₂(δ·τ)⌋ − 1)`), the cut lies beyond the span and `+∞` is returned without the logarithm:
+/// the decision is the same, the street lamp's and most short rays' `ln` is saved.
 #[inline]
-pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, control: &Control<T>) -> T {
+pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, span: T, control: &Control<T>) -> T {
     let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
     let floor = control.floor.max(T::epsilon());
     if !(big_h > T::zero()) || !(delta * floor > T::zero()) {
+        return T::infinity();
+    }
+    let below = T::lit(core::f64::consts::LN_2) * T::from(2 - log2_floor(delta * floor)).unwrap();
+    if big_h * span <= T::one() + below {
         return T::infinity();
     }
     let inv_h = big_h.recip();

@@ -239,6 +239,15 @@ pub(crate) fn hypot1<T: Real>(x: T) -> T {
     }
 }
 
+/// `⌊log₂ x⌋` of a positive finite `x` (subnormals included) from its bits, no library call:
+/// `x = m·2^e` with the integer mantissa `m` of `integer_decode`, whose highest set bit is
+/// `63 − m.leading_zeros()`.
+#[inline]
+pub(crate) fn log2_floor<T: Real>(x: T) -> i32 {
+    let (mantissa, exponent, _) = x.integer_decode();
+    i32::from(exponent) + 63 - mantissa.leading_zeros() as i32
+}
+
 /// The larger of `a` and `b` by one comparison, for running maxima over samples: `max`'s
 /// handling of NaN (either operand) costs a few instructions per call, and here a NaN `b` is
 /// skipped all the same (`b > a` is false), as `max` skips it.
@@ -259,9 +268,49 @@ pub(crate) fn larger<T: Real>(a: T, b: T) -> T {
 #[inline]
 pub(crate) fn atan2_upper<T: Real>(y: T, x: T) -> T {
     if x > T::zero() {
-        (y / x).atan()
+        atan_nonnegative(y / x)
     } else {
-        T::FRAC_PI_2() + (-x / y).atan()
+        T::FRAC_PI_2() + atan_nonnegative(-x / y)
+    }
+}
+
+/// `atan a` for `a ≥ 0` (`π/2` at `+∞`, NaN for NaN): the light angle's ends and width
+/// (docs/DESIGN.md §4.2). In f32 without a library call: `t = min(a, 1/a)`, `atan t = t·A(t²)`
+/// with `A` minimax in the relative error on `[0, 1]` (`scripts/gen_minimax.py`: 10 terms within
+/// 4.8e-9, 0.04 ε), and `π/2 − atan(1/a)` above 1 with `π/2` split in two; measured within 1.7 ulp
+/// of the exact value (2.0 with `π/2` rounded once; the unit test allows 2). In f64 the library's
+/// `atan`: the same construction would need about 22 terms (the error falls by `3 + √8` a term,
+/// the ellipse through `atan`'s branch points `z = −1`).
+#[inline]
+pub(crate) fn atan_nonnegative<T: Real>(a: T) -> T {
+    // scripts/gen_minimax.py (relative 4.79e-9)
+    const ATAN_F32: [f64; 10] = [
+        1.0,
+        -0.3333328366279602,
+        0.1999826580286026,
+        -0.142619326710701,
+        0.1094203069806099,
+        -0.0837731584906578,
+        0.05755210295319557,
+        -0.030804598703980446,
+        0.010726944543421268,
+        -0.0017539301188662648,
+    ];
+    if T::epsilon() < T::lit(1e-10) {
+        return a.atan();
+    }
+    let above = a > T::one();
+    let t = if above { a.recip() } else { a };
+    let z = t * t;
+    let p = t * ATAN_F32.iter().rev().fold(T::zero(), |p, &c| p * z + T::lit(c));
+    if above {
+        // π/2 as the precision's rounding plus the rest: its rounding alone is 0.7 ulp of a
+        // result in [π/4, 1)
+        let high = T::FRAC_PI_2();
+        let low = T::lit(core::f64::consts::FRAC_PI_2 - core::f64::consts::FRAC_PI_2 as f32 as f64);
+        (high - p) + low
+    } else {
+        p
     }
 }
 
@@ -363,7 +412,55 @@ pub(crate) fn sin_cos_half_turn<T: Real>(x: T) -> (T, T) {
 
 #[cfg(test)]
 mod tests {
-    use super::{exp_nonpositive, sin_cos_quarter};
+    use super::{atan_nonnegative, exp_nonpositive, log2_floor, sin_cos_quarter};
+
+    /// f32 against the exact `atan` (f64's, within half an f32 ulp of it) at 20 001 points of
+    /// `[0, 1]`, their reciprocals and the ends `0`, `+∞`: within 2 ulp of the value (three
+    /// roundings of Horner's form, the reciprocal's and the subtraction from `π/2`, on a
+    /// polynomial within 0.04 ε); f64 is the library's.
+    #[test]
+    fn atan_nonnegative_matches_the_library() {
+        let mut worst = 0.0f64;
+        for i in 0..=20_000 {
+            let t = i as f32 / 20_000.0;
+            for a in [t, 1.0 / t] {
+                let exact = (a as f64).atan();
+                let got = atan_nonnegative(a) as f64;
+                let ulp = f32::EPSILON as f64 * 2f64.powi((exact as f32).log2().floor() as i32);
+                worst = worst.max((got - exact).abs() / ulp);
+            }
+        }
+        assert!(worst <= 2.0, "f32 atan within {worst} ulp");
+        assert_eq!(atan_nonnegative(0.0f32), 0.0);
+        assert_eq!(atan_nonnegative(f32::INFINITY), core::f32::consts::FRAC_PI_2);
+        assert!(atan_nonnegative(f32::NAN).is_nan());
+        assert_eq!(atan_nonnegative(0.75f64), 0.75f64.atan());
+    }
+
+    /// `2^n ≤ x < 2^{n+1}` (powers of two formed exactly) for `n = log2_floor(x)` at every power
+    /// of two and its two neighbours, normal and subnormal, in both precisions.
+    #[test]
+    fn log2_floor_brackets_its_argument() {
+        let power = |n: i32| if n < -1000 { 2f64.powi(n + 100) * 2f64.powi(-100) } else { 2f64.powi(n) };
+        for k in -1074..1024 {
+            let x = power(k);
+            for y in [x, x * (1.0 + f64::EPSILON), x * (1.0 - f64::EPSILON / 2.0)] {
+                if y > 0.0 && y.is_finite() {
+                    let n = log2_floor(y);
+                    assert!(power(n) <= y && (n == 1023 || y < power(n + 1)), "f64 {y:e}: {n}");
+                }
+            }
+        }
+        for k in -149..128 {
+            let x = 2f32.powi(k);
+            for y in [x, x * (1.0 + f32::EPSILON), x * (1.0 - f32::EPSILON / 2.0)] {
+                if y > 0.0 && y.is_finite() {
+                    let n = log2_floor(y);
+                    assert!(power(n) <= y as f64 && (y as f64) < power(n + 1), "f32 {y:e}: {n}");
+                }
+            }
+        }
+    }
 
     /// Against the library's `sin`/`cos` (within half an ulp) over `[0, π/2]`, the ends and 4096
     /// points between: `sin` within 4 ulp relative (it must stay relative as `x → 0`), `cos`

@@ -2516,10 +2516,11 @@ float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float
     if (_e14) {
         return 0.0;
     }
-    float _e21 = airlight_log1p((gap_1 + sqrt((gap_1 * (2.0 + gap_1)))));
+    float y_9 = (gap_1 + sqrt((gap_1 * (2.0 + gap_1))));
+    float im_1 = ((y_9 + y_9) / (2.0 + y_9));
     float re_2 = ((side_1 > 0.0) ? -1.5707964 : 1.5707964);
-    float _e30 = airlight_bernstein_rho(((re_2 - mid) / hw), (_e21 / hw));
-    return (step_1 / _e30);
+    float _e33 = airlight_bernstein_rho(((re_2 - mid) / hw), (im_1 / hw));
+    return (step_1 / _e33);
 }
 
 float airlight_cut_length(float big_h_1, float v_s) {
@@ -2695,8 +2696,8 @@ vec2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11) {
             float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
-            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            float y_10 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
+            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
             float _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
             float _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e233 * _e239);
@@ -4480,20 +4481,20 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
         vec3 _e112 = u_1;
         float x_27 = dot(_e111, _e112);
         vec3 _e114 = u_1;
-        float y_10 = dot(_e111, cross(l_3, _e114));
+        float y_11 = dot(_e111, cross(l_3, _e114));
         g_20.cos_r = dot(_e111, l_3);
-        g_20.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
+        g_20.sin_r = sqrt(((x_27 * x_27) + (y_11 * y_11)));
         float _e126 = g_20.cos_r;
         float _e128 = g_20.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_20.alpha_r = _e129;
         float _e131 = g_20.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_27, abs(y_10));
-            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
+            float _e140 = airlight_angle(x_27, abs(y_11));
+            float phi_r = (((y_11 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_20.sin_r;
             float _e149 = g_20.sin_r;
-            g_20.delta = vec3(-(phi_r), (x_27 / _e145), (-(y_10) / _e149));
+            g_20.delta = vec3(-(phi_r), (x_27 / _e145), (-(y_11) / _e149));
         }
         float _e154 = g_20.alpha_r;
         float first_r = abs((1.5707964 - _e154));

@@ -2625,10 +2625,11 @@ fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32)
     if _e14 {
         return 0f;
     }
-    let _e21 = airlight_log1p((gap_1 + sqrt((gap_1 * (2f + gap_1)))));
+    let y_9 = (gap_1 + sqrt((gap_1 * (2f + gap_1))));
+    let im_1 = ((y_9 + y_9) / (2f + y_9));
     let re_2 = select(1.5707964f, -1.5707964f, (side_1 > 0f));
-    let _e30 = airlight_bernstein_rho(((re_2 - mid) / hw), (_e21 / hw));
-    return (step_1 / _e30);
+    let _e33 = airlight_bernstein_rho(((re_2 - mid) / hw), (im_1 / hw));
+    return (step_1 / _e33);
 }
 
 fn airlight_cut_length(big_h_1: f32, v_s: f32) -> f32 {
@@ -2794,8 +2795,8 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let far_pole = ((cs_1 * cs_1) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_9 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
-            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
+            let y_10 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
+            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_1 > 0f));
             let _e233 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
             let _e239 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e233 * _e239);
@@ -4586,20 +4587,20 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         let _e112 = u_1;
         let x_27 = dot(_e111, _e112);
         let _e114 = u_1;
-        let y_10 = dot(_e111, cross(l_3, _e114));
+        let y_11 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_27 * x_27) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_27 * x_27) + (y_11 * y_11)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_27, abs(y_10));
-            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
+            let _e140 = airlight_angle(x_27, abs(y_11));
+            let phi_r = (select(1f, -1f, (y_11 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_27 / _e145), (-(y_10) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_27 / _e145), (-(y_11) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));

@@ -1234,7 +1234,9 @@ fn airlight_angle_y(u: f32) -> f32 {
 /// [mid − hw, mid + hw] (angle.rs `whole_segment`).
 fn airlight_angle_floor(side: f32, gap: f32, mid: f32, hw: f32, step: f32) -> f32 {
     if (!(gap > 0.0) || gap >= AIRLIGHT_FLT_MAX) { return 0.0; }
-    let im = airlight_log1p(gap + sqrt(gap * (2.0 + gap)));
+    // acosh(1 + gap) = ln(1 + y) from below by 2y/(2 + y) (angle.rs `Plan::new`)
+    let y = gap + sqrt(gap * (2.0 + gap));
+    let im = (y + y) / (2.0 + y);
     let re = select(0.5 * AIRLIGHT_PI, -0.5 * AIRLIGHT_PI, side > 0.0);
     return step / airlight_bernstein_rho((re - mid) / hw, im / hw);
 }
