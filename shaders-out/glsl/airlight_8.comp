@@ -4825,13 +4825,15 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     bool local_128 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
-    uint i_21 = 0u;
     bool local_129 = false;
+    uint i_21 = 0u;
     bool local_130 = false;
     bool local_131 = false;
+    bool local_132 = false;
+    bool local_133 = false;
     uint n_1 = 0u;
     uint i_22 = 0u;
-    bool local_132 = false;
+    bool local_134 = false;
     if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_23);
         return _e4;
@@ -4977,129 +4979,150 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     g_22.scale = _e172;
     float _e178 = s_star;
     at = float[3](_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
+    float _e187 = scale;
+    if ((_e187 > 0.0)) {
+        AirlightOuter _e192 = g_22;
+        float _e194 = airlight_to_w(_e192, 0.0);
+        AirlightOuter _e196 = g_22;
+        float _e197 = airlight_to_w(_e196, _e15);
+        local_129 = (min(-(_e194), _e197) < 0.5);
+    } else {
+        local_129 = false;
+    }
+    bool sliver = local_129;
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
-            uint _e229 = i_21;
-            i_21 = (_e229 + 1u);
+            uint _e252 = i_21;
+            i_21 = (_e252 + 1u);
         }
         loop_init_26 = false;
-        uint _e189 = i_21;
-        if ((_e189 < 3u)) {
+        uint _e205 = i_21;
+        if ((_e205 < 3u)) {
         } else {
             break;
         }
         {
-            if ((cos_a_2 == 0.0)) {
-                uint _e196 = i_21;
-                local_129 = (_e196 > 0u);
-            } else {
-                local_129 = false;
-            }
-            bool _e200 = local_129;
-            if (_e200) {
-                continue;
-            }
-            uint _e201 = i_21;
-            if ((_e201 == 2u)) {
-                local_130 = infinite_4;
+            uint _e208 = i_21;
+            if ((_e208 == 0u)) {
+                local_130 = sliver;
             } else {
                 local_130 = false;
             }
-            bool _e207 = local_130;
-            if (_e207) {
+            bool _e214 = local_130;
+            if (_e214) {
                 continue;
             }
-            uint _e208 = i_21;
-            float _e210 = at[_e208];
-            if ((_e210 > 0.0)) {
-                uint _e215 = i_21;
-                float _e217 = at[_e215];
-                local_131 = (_e217 < _e15);
+            if ((cos_a_2 == 0.0)) {
+                uint _e219 = i_21;
+                local_131 = (_e219 > 0u);
             } else {
                 local_131 = false;
             }
-            bool _e220 = local_131;
-            if (_e220) {
-                uint _e221 = i_21;
-                AirlightOuter _e223 = g_22;
-                uint _e224 = i_21;
-                float _e226 = at[_e224];
-                float _e227 = airlight_to_w(_e223, _e226);
-                cuts_2[_e221] = _e227;
+            bool _e223 = local_131;
+            if (_e223) {
+                continue;
+            }
+            uint _e224 = i_21;
+            if ((_e224 == 2u)) {
+                local_132 = infinite_4;
+            } else {
+                local_132 = false;
+            }
+            bool _e230 = local_132;
+            if (_e230) {
+                continue;
+            }
+            uint _e231 = i_21;
+            float _e233 = at[_e231];
+            if ((_e233 > 0.0)) {
+                uint _e238 = i_21;
+                float _e240 = at[_e238];
+                local_133 = (_e240 < _e15);
+            } else {
+                local_133 = false;
+            }
+            bool _e243 = local_133;
+            if (_e243) {
+                uint _e244 = i_21;
+                AirlightOuter _e246 = g_22;
+                uint _e247 = i_21;
+                float _e249 = at[_e247];
+                float _e250 = airlight_to_w(_e246, _e249);
+                cuts_2[_e244] = _e250;
             }
         }
     }
-    float _e232 = cuts_2[1];
-    float _e234 = cuts_2[0];
-    if ((_e232 < _e234)) {
+    float _e255 = cuts_2[1];
+    float _e257 = cuts_2[0];
+    if ((_e255 < _e257)) {
         float c_12 = cuts_2[0];
-        float _e240 = cuts_2[1];
-        cuts_2[0] = _e240;
+        float _e263 = cuts_2[1];
+        cuts_2[0] = _e263;
         cuts_2[1] = c_12;
     }
-    float _e243 = cuts_2[2];
-    float _e245 = cuts_2[1];
-    if ((_e243 < _e245)) {
+    float _e266 = cuts_2[2];
+    float _e268 = cuts_2[1];
+    if ((_e266 < _e268)) {
         float c_13 = cuts_2[1];
-        float _e251 = cuts_2[2];
-        cuts_2[1] = _e251;
+        float _e274 = cuts_2[2];
+        cuts_2[1] = _e274;
         cuts_2[2] = c_13;
     }
-    float _e254 = cuts_2[1];
-    float _e256 = cuts_2[0];
-    if ((_e254 < _e256)) {
+    float _e277 = cuts_2[1];
+    float _e279 = cuts_2[0];
+    if ((_e277 < _e279)) {
         float c_14 = cuts_2[0];
-        float _e262 = cuts_2[1];
-        cuts_2[0] = _e262;
+        float _e285 = cuts_2[1];
+        cuts_2[0] = _e285;
         cuts_2[1] = c_14;
     }
-    AirlightOuter _e264 = g_22;
-    float _e265 = airlight_to_w(_e264, _e15);
-    AirlightOuter _e268 = g_22;
-    float _e270 = airlight_to_w(_e268, 0.0);
-    g_22.edges[0] = _e270;
+    AirlightOuter _e287 = g_22;
+    float _e288 = airlight_to_w(_e287, _e15);
+    AirlightOuter _e291 = g_22;
+    float _e293 = airlight_to_w(_e291, 0.0);
+    g_22.edges[0] = _e293;
     bool loop_init_27 = true;
     while(true) {
         if (!loop_init_27) {
-            uint _e304 = i_22;
-            i_22 = (_e304 + 1u);
+            uint _e327 = i_22;
+            i_22 = (_e327 + 1u);
         }
         loop_init_27 = false;
-        uint _e275 = i_22;
-        if ((_e275 < 3u)) {
+        uint _e298 = i_22;
+        if ((_e298 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e278 = i_22;
-            float _e280 = cuts_2[_e278];
-            uint _e282 = n_1;
-            float _e284 = g_22.edges[_e282];
-            if ((_e280 > _e284)) {
-                uint _e288 = i_22;
-                float _e290 = cuts_2[_e288];
-                local_132 = (_e290 < _e265);
+            uint _e301 = i_22;
+            float _e303 = cuts_2[_e301];
+            uint _e305 = n_1;
+            float _e307 = g_22.edges[_e305];
+            if ((_e303 > _e307)) {
+                uint _e311 = i_22;
+                float _e313 = cuts_2[_e311];
+                local_134 = (_e313 < _e288);
             } else {
-                local_132 = false;
+                local_134 = false;
             }
-            bool _e293 = local_132;
-            if (_e293) {
-                uint _e294 = n_1;
-                n_1 = (_e294 + 1u);
-                uint _e298 = n_1;
-                uint _e300 = i_22;
-                float _e302 = cuts_2[_e300];
-                g_22.edges[_e298] = _e302;
+            bool _e316 = local_134;
+            if (_e316) {
+                uint _e317 = n_1;
+                n_1 = (_e317 + 1u);
+                uint _e321 = n_1;
+                uint _e323 = i_22;
+                float _e325 = cuts_2[_e323];
+                g_22.edges[_e321] = _e325;
             }
         }
     }
-    uint _e307 = n_1;
-    g_22.edges[(_e307 + 1u)] = _e265;
-    uint _e312 = n_1;
-    g_22.panels = (_e312 + 1u);
-    AirlightOuter _e315 = g_22;
-    return _e315;
+    uint _e330 = n_1;
+    g_22.edges[(_e330 + 1u)] = _e288;
+    uint _e335 = n_1;
+    g_22.panels = (_e335 + 1u);
+    AirlightOuter _e338 = g_22;
+    return _e338;
 }
 
 AirlightCanonical airlight_no_canonical() {
@@ -5170,14 +5193,14 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_133 = false;
+    bool local_135 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_133 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_135 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_133 = true;
+        local_135 = true;
     }
-    bool _e11 = local_133;
+    bool _e11 = local_135;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -5186,17 +5209,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_2) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_134 = false;
+    bool local_136 = false;
     AirlightCanonical g_24 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_1 = n_2.scene;
     bool _e7 = airlight_vec_finite(p_1.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_1.dir);
-        local_134 = _e11;
+        local_136 = _e11;
     } else {
-        local_134 = false;
+        local_136 = false;
     }
-    bool _e13 = local_134;
+    bool _e13 = local_136;
     if (_e13) {
         g_24 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -5226,14 +5249,14 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
     float k_5 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_135 = false;
+    bool local_137 = false;
     float f = 0.0;
-    bool local_136 = false;
+    bool local_138 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_137 = false;
-    bool local_138 = false;
     bool local_139 = false;
+    bool local_140 = false;
+    bool local_141 = false;
     bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -5289,11 +5312,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
-                        local_135 = (_e116 < 6u);
+                        local_137 = (_e116 < 6u);
                     } else {
-                        local_135 = false;
+                        local_137 = false;
                     }
-                    bool _e120 = local_135;
+                    bool _e120 = local_137;
                     float w_7 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
                     AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0.0;
@@ -5303,11 +5326,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                             return _e128;
                         }
                         if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_136 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_138 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_136 = false;
+                            local_138 = false;
                         }
-                        bool _e141 = local_136;
+                        bool _e141 = local_138;
                         if (_e141) {
                             return _e128;
                         }
@@ -5375,18 +5398,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_137 = (_e213 == _e6.max_panels);
+                                local_139 = (_e213 == _e6.max_panels);
                             } else {
-                                local_137 = true;
+                                local_139 = true;
                             }
-                            bool _e217 = local_137;
+                            bool _e217 = local_139;
                             if (!(_e217)) {
                                 bool _e221 = airlight_is_finite(total_4);
-                                local_138 = !(_e221);
+                                local_140 = !(_e221);
                             } else {
-                                local_138 = true;
+                                local_140 = true;
                             }
-                            bool _e224 = local_138;
+                            bool _e224 = local_140;
                             if (_e224) {
                                 break;
                             }
@@ -5396,11 +5419,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
                             float wb_1 = _e226.y;
                             float mid_3 = (0.5 * (wa_1 + wb_1));
                             if ((mid_3 > wa_1)) {
-                                local_139 = (mid_3 < wb_1);
+                                local_141 = (mid_3 < wb_1);
                             } else {
-                                local_139 = false;
+                                local_141 = false;
                             }
-                            bool _e237 = local_139;
+                            bool _e237 = local_141;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e226.xyz, 0.0));
                                 continue;

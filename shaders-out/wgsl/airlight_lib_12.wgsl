@@ -5375,13 +5375,15 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var local_128: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var i_21: u32 = 0u;
     var local_129: bool;
+    var i_21: u32 = 0u;
     var local_130: bool;
     var local_131: bool;
+    var local_132: bool;
+    var local_133: bool;
     var n_1: u32 = 0u;
     var i_22: u32 = 0u;
-    var local_132: bool;
+    var local_134: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_25);
@@ -5528,125 +5530,146 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     g_24.scale = _e172;
     let _e178 = s_star;
     at = array<f32, 3>(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
+    let _e187 = scale;
+    if (_e187 > 0f) {
+        let _e192 = g_24;
+        let _e194 = airlight_to_w(_e192, 0f);
+        let _e196 = g_24;
+        let _e197 = airlight_to_w(_e196, _e15);
+        local_129 = (min(-(_e194), _e197) < 0.5f);
+    } else {
+        local_129 = false;
+    }
+    let sliver = local_129;
     loop {
-        let _e189 = i_21;
-        if (_e189 < 3u) {
+        let _e205 = i_21;
+        if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            if (cos_a_2 == 0f) {
-                let _e196 = i_21;
-                local_129 = (_e196 > 0u);
-            } else {
-                local_129 = false;
-            }
-            let _e200 = local_129;
-            if _e200 {
-                continue;
-            }
-            let _e201 = i_21;
-            if (_e201 == 2u) {
-                local_130 = infinite_4;
+            let _e208 = i_21;
+            if (_e208 == 0u) {
+                local_130 = sliver;
             } else {
                 local_130 = false;
             }
-            let _e207 = local_130;
-            if _e207 {
+            let _e214 = local_130;
+            if _e214 {
                 continue;
             }
-            let _e208 = i_21;
-            let _e210 = at[_e208];
-            if (_e210 > 0f) {
-                let _e215 = i_21;
-                let _e217 = at[_e215];
-                local_131 = (_e217 < _e15);
+            if (cos_a_2 == 0f) {
+                let _e219 = i_21;
+                local_131 = (_e219 > 0u);
             } else {
                 local_131 = false;
             }
-            let _e220 = local_131;
-            if _e220 {
-                let _e221 = i_21;
-                let _e223 = g_24;
-                let _e224 = i_21;
-                let _e226 = at[_e224];
-                let _e227 = airlight_to_w(_e223, _e226);
-                cuts_2[_e221] = _e227;
+            let _e223 = local_131;
+            if _e223 {
+                continue;
+            }
+            let _e224 = i_21;
+            if (_e224 == 2u) {
+                local_132 = infinite_4;
+            } else {
+                local_132 = false;
+            }
+            let _e230 = local_132;
+            if _e230 {
+                continue;
+            }
+            let _e231 = i_21;
+            let _e233 = at[_e231];
+            if (_e233 > 0f) {
+                let _e238 = i_21;
+                let _e240 = at[_e238];
+                local_133 = (_e240 < _e15);
+            } else {
+                local_133 = false;
+            }
+            let _e243 = local_133;
+            if _e243 {
+                let _e244 = i_21;
+                let _e246 = g_24;
+                let _e247 = i_21;
+                let _e249 = at[_e247];
+                let _e250 = airlight_to_w(_e246, _e249);
+                cuts_2[_e244] = _e250;
             }
         }
         continuing {
-            let _e229 = i_21;
-            i_21 = (_e229 + 1u);
+            let _e252 = i_21;
+            i_21 = (_e252 + 1u);
         }
     }
-    let _e232 = cuts_2[1];
-    let _e234 = cuts_2[0];
-    if (_e232 < _e234) {
+    let _e255 = cuts_2[1];
+    let _e257 = cuts_2[0];
+    if (_e255 < _e257) {
         let c_12 = cuts_2[0];
-        let _e240 = cuts_2[1];
-        cuts_2[0] = _e240;
+        let _e263 = cuts_2[1];
+        cuts_2[0] = _e263;
         cuts_2[1] = c_12;
     }
-    let _e243 = cuts_2[2];
-    let _e245 = cuts_2[1];
-    if (_e243 < _e245) {
+    let _e266 = cuts_2[2];
+    let _e268 = cuts_2[1];
+    if (_e266 < _e268) {
         let c_13 = cuts_2[1];
-        let _e251 = cuts_2[2];
-        cuts_2[1] = _e251;
+        let _e274 = cuts_2[2];
+        cuts_2[1] = _e274;
         cuts_2[2] = c_13;
     }
-    let _e254 = cuts_2[1];
-    let _e256 = cuts_2[0];
-    if (_e254 < _e256) {
+    let _e277 = cuts_2[1];
+    let _e279 = cuts_2[0];
+    if (_e277 < _e279) {
         let c_14 = cuts_2[0];
-        let _e262 = cuts_2[1];
-        cuts_2[0] = _e262;
+        let _e285 = cuts_2[1];
+        cuts_2[0] = _e285;
         cuts_2[1] = c_14;
     }
-    let _e264 = g_24;
-    let _e265 = airlight_to_w(_e264, _e15);
-    let _e268 = g_24;
-    let _e270 = airlight_to_w(_e268, 0f);
-    g_24.edges[0] = _e270;
+    let _e287 = g_24;
+    let _e288 = airlight_to_w(_e287, _e15);
+    let _e291 = g_24;
+    let _e293 = airlight_to_w(_e291, 0f);
+    g_24.edges[0] = _e293;
     loop {
-        let _e275 = i_22;
-        if (_e275 < 3u) {
+        let _e298 = i_22;
+        if (_e298 < 3u) {
         } else {
             break;
         }
         {
-            let _e278 = i_22;
-            let _e280 = cuts_2[_e278];
-            let _e282 = n_1;
-            let _e284 = g_24.edges[_e282];
-            if (_e280 > _e284) {
-                let _e288 = i_22;
-                let _e290 = cuts_2[_e288];
-                local_132 = (_e290 < _e265);
+            let _e301 = i_22;
+            let _e303 = cuts_2[_e301];
+            let _e305 = n_1;
+            let _e307 = g_24.edges[_e305];
+            if (_e303 > _e307) {
+                let _e311 = i_22;
+                let _e313 = cuts_2[_e311];
+                local_134 = (_e313 < _e288);
             } else {
-                local_132 = false;
+                local_134 = false;
             }
-            let _e293 = local_132;
-            if _e293 {
-                let _e294 = n_1;
-                n_1 = (_e294 + 1u);
-                let _e298 = n_1;
-                let _e300 = i_22;
-                let _e302 = cuts_2[_e300];
-                g_24.edges[_e298] = _e302;
+            let _e316 = local_134;
+            if _e316 {
+                let _e317 = n_1;
+                n_1 = (_e317 + 1u);
+                let _e321 = n_1;
+                let _e323 = i_22;
+                let _e325 = cuts_2[_e323];
+                g_24.edges[_e321] = _e325;
             }
         }
         continuing {
-            let _e304 = i_22;
-            i_22 = (_e304 + 1u);
+            let _e327 = i_22;
+            i_22 = (_e327 + 1u);
         }
     }
-    let _e307 = n_1;
-    g_24.edges[(_e307 + 1u)] = _e265;
-    let _e312 = n_1;
-    g_24.panels = (_e312 + 1u);
-    let _e315 = g_24;
-    return _e315;
+    let _e330 = n_1;
+    g_24.edges[(_e330 + 1u)] = _e288;
+    let _e335 = n_1;
+    g_24.panels = (_e335 + 1u);
+    let _e338 = g_24;
+    return _e338;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -5718,15 +5741,15 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_19: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_133: bool;
+    var local_135: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_133 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_135 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_133 = true;
+        local_135 = true;
     }
-    let _e11 = local_133;
+    let _e11 = local_135;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5735,18 +5758,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_134: bool;
+    var local_136: bool;
     var g_26: AirlightCanonical;
 
     let p_2 = n_2.scene;
     let _e7 = airlight_vec_finite(p_2.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_2.dir);
-        local_134 = _e11;
+        local_136 = _e11;
     } else {
-        local_134 = false;
+        local_136 = false;
     }
-    let _e13 = local_134;
+    let _e13 = local_136;
     if _e13 {
         g_26 = n_2.canonical;
         if !(n_2.exact) {
@@ -5770,22 +5793,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
-    var local_135: bool;
-    var local_136: bool;
+    var local_137: bool;
+    var local_138: bool;
 
     let _e1 = airlight_valid(s_27);
     if !(!(_e1)) {
-        local_135 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_137 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_135 = true;
+        local_137 = true;
     }
-    let _e10 = local_135;
+    let _e10 = local_137;
     if !(_e10) {
-        local_136 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_138 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_136 = true;
+        local_138 = true;
     }
-    let _e18 = local_136;
+    let _e18 = local_138;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5794,22 +5817,22 @@ fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_28: AirlightScene) -> AirlightResult {
-    var local_137: bool;
-    var local_138: bool;
+    var local_139: bool;
+    var local_140: bool;
 
     let _e1 = airlight_valid(s_28);
     if !(!(_e1)) {
-        local_137 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_139 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_137 = true;
+        local_139 = true;
     }
-    let _e10 = local_137;
+    let _e10 = local_139;
     if !(_e10) {
-        local_138 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_140 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_138 = true;
+        local_140 = true;
     }
-    let _e18 = local_138;
+    let _e18 = local_140;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5844,14 +5867,14 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
     var k_6: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_139: bool;
+    var local_141: bool;
     var f: f32;
-    var local_140: bool;
+    var local_142: bool;
     var split: bool;
     var tries: u32;
-    var local_141: bool;
-    var local_142: bool;
     var local_143: bool;
+    var local_144: bool;
+    var local_145: bool;
 
     let _e1 = airlight_valid(s_29);
     if !(_e1) {
@@ -5896,11 +5919,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                     let _e109 = j_4;
                     if ((_e109 & 1u) == 0u) {
                         let _e116 = j_4;
-                        local_139 = (_e116 < 6u);
+                        local_141 = (_e116 < 6u);
                     } else {
-                        local_139 = false;
+                        local_141 = false;
                     }
-                    let _e120 = local_139;
+                    let _e120 = local_141;
                     let w_8 = select((c_15 + (hw_3 * node_1.x)), (c_15 - (hw_3 * node_1.x)), _e120);
                     let _e122 = airlight_outer_node(s_29, _e6, w_8);
                     f = 0f;
@@ -5910,11 +5933,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             return _e128;
                         }
                         if (s_29.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_140 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_142 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_140 = false;
+                            local_142 = false;
                         }
-                        let _e141 = local_140;
+                        let _e141 = local_142;
                         if _e141 {
                             return _e128;
                         }
@@ -5980,18 +6003,18 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let worst_1 = _e202.worst;
                             if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e213 = count_2;
-                                local_141 = (_e213 == _e6.max_panels);
+                                local_143 = (_e213 == _e6.max_panels);
                             } else {
-                                local_141 = true;
+                                local_143 = true;
                             }
-                            let _e217 = local_141;
+                            let _e217 = local_143;
                             if !(_e217) {
                                 let _e221 = airlight_is_finite(total_4);
-                                local_142 = !(_e221);
+                                local_144 = !(_e221);
                             } else {
-                                local_142 = true;
+                                local_144 = true;
                             }
-                            let _e224 = local_142;
+                            let _e224 = local_144;
                             if _e224 {
                                 break;
                             }
@@ -6001,11 +6024,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let wb_1 = _e226.y;
                             let mid_3 = (0.5f * (wa_1 + wb_1));
                             if (mid_3 > wa_1) {
-                                local_143 = (mid_3 < wb_1);
+                                local_145 = (mid_3 < wb_1);
                             } else {
-                                local_143 = false;
+                                local_145 = false;
                             }
-                            let _e237 = local_143;
+                            let _e237 = local_145;
                             if !(_e237) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;

@@ -2270,10 +2270,13 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
     g.e = e;
     g.s_star = s_star;
     g.scale = scale;
-    // panels: split at the closest approach and where the light's foot passes a ray end
+    // panels: split at the closest approach and where the light's foot passes a ray end; not at
+    // the closest approach within half a unit of w of an end where the map is taken (extended.rs)
     var cuts = array<f32, 3>(AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX);
     var at = array<f32, 3>(s_star, (s.t_min - along_d) / cos_a, (s.t_max - along_d) / cos_a);
+    let sliver = scale > 0.0 && min(-airlight_to_w(g, 0.0), airlight_to_w(g, len)) < 0.5;
     for (var i = 0u; i < 3u; i++) {
+        if (i == 0u && sliver) { continue; }
         if (cos_a == 0.0 && i > 0u) { continue; }
         if (i == 2u && infinite) { continue; }
         if (at[i] > 0.0 && at[i] < len) { cuts[i] = airlight_to_w(g, at[i]); }
