@@ -260,11 +260,11 @@ pub(crate) fn larger<T: Real>(a: T, b: T) -> T {
     }
 }
 
-/// `atan2(y, x)` for `y > 0` (the upper half-plane, `(0, π)`) by one `atan`, of `y/x` where
-/// `x > 0`, else `π/2 + atan(−x/y)`: one rounding more than the library's `atan2` (the
+/// `atan2(y, x)` for `y > 0` (the upper half-plane, `(0, π)`) by one [`atan_nonnegative`], of
+/// `y/x` where `x > 0`, else `π/2 + atan(−x/y)`: one rounding more than that `atan` (the
 /// quotient's, at most half an ulp relative, which `atan` does not amplify: `|x atan′(x)| ≤
 /// atan x`), at the cost of one `atan` instead of `atan2`'s general reduction. The shaders'
-/// `airlight_atan2_upper` is the same function.
+/// `airlight_atan2_upper` computes the same angle with their own `atan`.
 #[inline]
 pub(crate) fn atan2_upper<T: Real>(y: T, x: T) -> T {
     if x > T::zero() {
