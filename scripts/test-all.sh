@@ -29,7 +29,7 @@ fi
 echo "== E1 tuning (tests/reference/gen_e1_tuning.py: the tables in kernel/src/real.rs, re-derived)"
 python3 tests/reference/gen_e1_tuning.py
 
-echo "== minimax polynomials (scripts/gen_minimax.py: the tables of sin_cos_quarter and exp_nonpositive in kernel/src/real.rs, re-derived)"
+echo "== minimax polynomials (scripts/gen_minimax.py: the tables of sin_cos_quarter, exp_nonpositive and atan_nonnegative in kernel/src/real.rs, re-derived)"
 python3 scripts/gen_minimax.py --check
 
 echo "== kernel package"
