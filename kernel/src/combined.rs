@@ -365,18 +365,13 @@ where
 /// part that contributes, as the peer's cut does (`crate::march::GaussAngle::cut`).
 ///
 /// `span`: the half's own length in `v` (or the light angle's panel's in `Y`). Where `H·span`
-/// is at most `1 + ln 2·(2 − ⌊log₂(δ·τ)⌋)`, below `E` (`R ≥ 1` and `ln(8/(δ·τ)) ≥ ln 2·(3 −
-/// ⌊log₂(δ·τ)⌋ − 1)`), the cut lies beyond the span and `+∞` is returned without the logarithm:
-/// the decision is the same, the street lamp's and most short rays' `ln` is saved.
+/// is at most [`uncut_span`], the cut lies beyond the span and `+∞` is returned without the
+/// logarithm: the decision is the same, the street lamp's and most short rays' `ln` is saved.
 #[inline]
 pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, span: T, control: &Control<T>) -> T {
     let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
     let floor = control.floor.max(T::epsilon());
-    if !(big_h > T::zero()) || !(delta * floor > T::zero()) {
-        return T::infinity();
-    }
-    let below = T::lit(core::f64::consts::LN_2) * T::from(2 - log2_floor(delta * floor)).unwrap();
-    if big_h * span <= T::one() + below {
+    if !(big_h > T::zero()) || !(delta * floor > T::zero()) || big_h * span <= uncut_span(control) {
         return T::infinity();
     }
     let inv_h = big_h.recip();
@@ -384,6 +379,18 @@ pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, span: T, control: &Control<T
     let r = (T::one() + w * w) / (T::one() + v_s * v_s);
     let e = T::one() + (T::lit(8.0) * r / (delta * floor)).ln();
     e * inv_h
+}
+
+/// The largest `H·Δv` that the panels' cut of the extinction (`cut_length`) never cuts under
+/// `control`: `1 + ln 2·(2 − ⌊log₂(δ·τ)⌋)` (`δ = max(tolerance/10, ε)`, `τ` the floor, at
+/// least `ε`), below the cut's smallest exponent `E = 1 + ln(8R/(δ·τ))` since `R ≥ 1` and
+/// `ln(8/(δ·τ)) ≥ ln 2·(3 − ⌊log₂(δ·τ)⌋ − 1)`; `⌊log₂⌋` from the float's bits, no library
+/// call. The shaders take it from here.
+#[inline]
+pub fn uncut_span<T: Real>(control: &Control<T>) -> T {
+    let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
+    let floor = control.floor.max(T::epsilon());
+    T::one() + T::lit(core::f64::consts::LN_2) * T::from(2 - log2_floor(delta * floor)).unwrap()
 }
 
 /// An isotropic segment across the foot, in one piece: with `F` constant there is nothing to
@@ -634,6 +641,32 @@ mod tests {
     use super::*;
     use crate::light::Omni;
     use crate::phase::HenyeyGreenstein;
+
+    /// `uncut_span` lies below the cut's exponent `E = H·Δv = 1 + ln(8R/(δ·τ))` for every start
+    /// `v_s` and `H`, so the shortcut never changes a decision, and by at most `ln 2 + ln R`
+    /// (`E − span = ln 2 + ln R − ln 2·frac(log₂(δ·τ))`): it drops only the logarithm.
+    #[test]
+    fn uncut_span_is_below_the_cut() {
+        fn check<T: Real>() {
+            for tolerance in [0.5, 1e-1, 3e-3, 1e-5, 1e-8, 1e-11, 1e-14, 1e-20] {
+                for floor in [1e-1, 1e-4, 1e-10, 0.0] {
+                    let control = Control { tolerance: T::lit(tolerance), floor: T::lit(floor), ..crate::default_control::<T>() };
+                    let span = uncut_span(&control);
+                    for big_h in [1e-3, 1.0, 7.5, 1e3] {
+                        for v_s in [0.0, 0.3, 1.0, 10.0, 1e3] {
+                            let e = T::lit(big_h) * cut_length(T::lit(big_h), T::lit(v_s), T::infinity(), &control);
+                            let r = (1.0 + (v_s + 1.0 / big_h) * (v_s + 1.0 / big_h)) / (1.0 + v_s * v_s);
+                            let slack = core::f64::consts::LN_2 + r.ln();
+                            let (span, e) = (span.to_f64_exact(), e.to_f64_exact());
+                            assert!(span < e && e - span <= slack * (1.0 + 1e-5) + 1e-5 * e, "tolerance {tolerance:e} floor {floor:e} H {big_h} v_s {v_s}: {span} vs {e}");
+                        }
+                    }
+                }
+            }
+        }
+        check::<f32>();
+        check::<f64>();
+    }
 
     /// The heights `t` the integrand declares (with their orders) are where `μ(y) = −σ(1 − y²)/(1 + y²)` reaches the
     /// phase function's singular cosine: at `y = it`, `μ = −σ(1 + t²)/(1 − t²)`; on both halves

@@ -151,6 +151,9 @@ const uint AIRLIGHT_PANEL_LIST = 8u;
 const float AIRLIGHT_Y_PANEL_EXPONENT = 4.0;
 const uint AIRLIGHT_ALIASING_MARGIN = 3u;
 const float AIRLIGHT_INV_ODD_FACTORIAL = 1.2648855e-13;
+const float AIRLIGHT_INV_ODD_FACTORIAL_1_ = 3.162214e-12;
+const float AIRLIGHT_INV_ODD_FACTORIAL_2_ = 7.273092e-11;
+const float AIRLIGHT_UNCUT_SPAN = 21.101269;
 const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 const float AIRLIGHT_PI = 3.1415927;
 const float AIRLIGHT_EULER_GAMMA = 0.5772157;
@@ -1039,8 +1042,8 @@ float airlight_moment_gauss(AirlightHalf half_) {
     float m = 0.0;
     uint j = 0u;
     float dv = 0.0;
-    float hw_1 = (half_.dy * 0.5);
-    float yc = (half_.y_lo + hw_1);
+    float hw = (half_.dy * 0.5);
+    float yc = (half_.y_lo + hw);
     vec2 nodes[4] = vec2[4](vec2(-0.33998105, 0.65214515), vec2(0.33998105, 0.65214515), vec2(-0.8611363, 0.34785485), vec2(0.8611363, 0.34785485));
     bool loop_init_5 = true;
     while(true) {
@@ -1057,15 +1060,15 @@ float airlight_moment_gauss(AirlightHalf half_) {
         {
             uint _e26 = j;
             float xi = nodes[_e26].x;
-            float y_6 = (yc + (hw_1 * xi));
-            dv = (hw_1 * (1.0 + xi));
+            float y_6 = (yc + (hw * xi));
+            dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw_1 * (1.0 - xi)) / (y_6 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_6 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw_1) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_6 * y_6))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_6 * y_6))));
         }
     }
     float _e61 = m;
@@ -2999,13 +3002,13 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                         continue;
                     }
                     float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid_1 = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
+                    float mid = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
                     a_10 = wa;
-                    b_9 = mid_1;
+                    b_9 = mid;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid_1;
+                    next_a = mid;
                     next_b = wb;
                     break;
                 }
@@ -3062,25 +3065,28 @@ float airlight_angle_y(float u) {
     return (u + _e5);
 }
 
-float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1) {
+float airlight_angle_floor(float side_1, float gap_1, float psi0_, float psi1_, float inv_hw, float step_1) {
     bool local_25 = false;
     if (!(!((gap_1 > 0.0)))) {
         local_25 = (gap_1 >= AIRLIGHT_FLT_MAX);
     } else {
         local_25 = true;
     }
-    bool _e14 = local_25;
-    if (_e14) {
+    bool _e15 = local_25;
+    if (_e15) {
         return 0.0;
     }
     float y_9 = (gap_1 + sqrt((gap_1 * (2.0 + gap_1))));
     float im_1 = ((y_9 + y_9) / (2.0 + y_9));
-    float re_2 = ((side_1 > 0.0) ? -1.5707964 : 1.5707964);
-    float _e33 = airlight_bernstein_rho(((re_2 - mid) / hw), (im_1 / hw));
+    float offset_1 = ((side_1 > 0.0) ? psi0_ : psi1_);
+    float _e33 = airlight_bernstein_rho((1.0 + (offset_1 * inv_hw)), (im_1 * inv_hw));
     return (step_1 / _e33);
 }
 
-float airlight_cut_length(float big_h_1, float v_s) {
+float airlight_cut_length(float big_h_1, float v_s, float span) {
+    if (((big_h_1 * span) <= AIRLIGHT_UNCUT_SPAN)) {
+        return AIRLIGHT_FLT_MAX;
+    }
     float inv_h = (1.0 / big_h_1);
     float w_4 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
@@ -3104,11 +3110,16 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     bool local_26 = false;
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
-    float psi1_ = 0.0;
+    float psi1_1 = 0.0;
+    float k_3 = 1.0;
+    float wy = 1.0;
+    float wx = 0.0;
     float width = 0.0;
     float degree_1 = 0.0;
     float lambda_1 = 0.0;
     float rate = 0.0;
+    float exponential = 0.0;
+    bool local_27 = false;
     float samples_3[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float value_1 = 0.0;
     float mass_4 = 0.0;
@@ -3116,7 +3127,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     float f_max_5 = 0.0;
     uint i_11 = 0u;
     float m_3[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_27 = false;
+    bool local_28 = false;
     float x_10 = 0.0;
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return vec2(0.0, 0.0);
@@ -3138,192 +3149,223 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
         y1_ = _e29;
     }
     if ((big_h_7 > 0.0)) {
-        float _e34 = airlight_cut_length(big_h_7, _e26);
-        y_cut = (_e26 + _e34);
+        float _e34 = y1_;
+        float _e36 = airlight_cut_length(big_h_7, _e26, (_e34 - _e26));
+        y_cut = (_e26 + _e36);
     }
-    float _e38 = airlight_atan2_upper(1.0, -(u0_));
-    float _e42 = airlight_atan2_upper(1.0, u0_);
-    width = _e42;
-    float _e44 = y_cut;
-    float _e45 = y1_;
-    if ((_e44 < _e45)) {
-        float _e47 = y_cut;
-        float _e50 = airlight_atan((1.0 / _e47));
-        psi1_ = (2.0 * _e50);
-        float _e53 = y_cut;
-        float _e55 = y_cut;
-        float _e59 = airlight_atan2_upper((_e53 - _e26), (1.0 + (_e26 * _e55)));
-        width = (2.0 * _e59);
+    float _e40 = airlight_atan2_upper(1.0, -(u0_));
+    wx = u0_;
+    float _e48 = y_cut;
+    float _e49 = y1_;
+    if ((_e48 < _e49)) {
+        float _e51 = y_cut;
+        float _e54 = airlight_atan((1.0 / _e51));
+        psi1_1 = (2.0 * _e54);
+        k_3 = 2.0;
+        float _e58 = y_cut;
+        wy = (_e58 - _e26);
+        float _e60 = y_cut;
+        wx = (1.0 + (_e26 * _e60));
     } else {
         if (u1_finite) {
-            float _e63 = airlight_atan2_upper(1.0, u1_);
-            psi1_ = _e63;
-            float _e71 = airlight_atan2_upper(((g_13.t_hi - g_13.t_lo) / h_3), (1.0 + (u0_ * u1_)));
-            width = _e71;
+            float _e65 = airlight_atan2_upper(1.0, u1_);
+            psi1_1 = _e65;
+            wy = ((g_13.t_hi - g_13.t_lo) / h_3);
+            wx = (1.0 + (u0_ * u1_));
         }
     }
-    float _e72 = width;
-    float hw_2 = (_e72 * 0.5);
-    if (!((hw_2 > 0.0))) {
+    float _e75 = psi1_1;
+    float difference = ((AIRLIGHT_PI - _e40) - _e75);
+    width = difference;
+    if (!((difference >= 1.0))) {
+        float _e81 = k_3;
+        float _e82 = wy;
+        float _e83 = wx;
+        float _e84 = airlight_atan2_upper(_e82, _e83);
+        width = (_e81 * _e84);
+    }
+    float _e86 = width;
+    float hw_1 = (_e86 * 0.5);
+    if (!((hw_1 > 0.0))) {
         return vec2(0.0, 0.0);
     }
-    float mid_2 = ((_e38 + hw_2) - 1.5707964);
-    float _e84 = y1_;
-    float _e85 = y_cut;
-    float y_end = min(_e84, _e85);
+    float inv_hw_1 = (1.0 / hw_1);
+    float _e97 = y1_;
+    float _e98 = y_cut;
+    float y_end = min(_e97, _e98);
     float y_e = min((_e26 + (1.0 / big_h_7)), y_end);
     if ((s_11.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         degree_1 = s_11.light_param_a;
     }
-    float _e97 = degree_1;
-    lambda_1 = (sqrt(_e97) * hw_2);
+    float _e110 = degree_1;
+    lambda_1 = (sqrt(_e110) * hw_1);
     if ((big_h_7 > 0.0)) {
-        float _e103 = lambda_1;
-        lambda_1 = (_e103 + (min((big_h_7 * (y_end - _e26)), ((hw_2 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
+        float _e116 = lambda_1;
+        lambda_1 = (_e116 + (min((big_h_7 * (y_end - _e26)), ((hw_1 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
     }
-    float _e115 = lambda_1;
-    float predicted = (pow(_e115, 12.0) * AIRLIGHT_INV_ODD_FACTORIAL);
-    if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
-        return vec2(0.0, 0.0);
-    }
-    vec3 _e126 = airlight_singular_steps(s_11);
-    float step_3 = _e126.y;
+    vec3 _e128 = airlight_singular_steps(s_11);
+    float step_3 = _e128.y;
     float p0_4 = s_11.phase_param_a;
     switch(s_11.phase_kind) {
         case 2u:
         case 4u: {
-            float _e132 = airlight_hg_gap(p0_4);
-            float _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
-            rate = _e133;
+            float _e134 = airlight_hg_gap(p0_4);
+            float _e135 = psi1_1;
+            float _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_3);
+            rate = _e136;
             break;
         }
         case 3u: {
             float a_23 = abs(p0_4);
-            float _e142 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), mid_2, hw_2, step_3);
-            rate = _e142;
+            float _e145 = psi1_1;
+            float _e146 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_3);
+            rate = _e146;
             break;
         }
         case 5u: {
             float p1_3 = s_11.phase_param_b;
-            float _e144 = airlight_hg_gap(p0_4);
-            float _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
-            float _e146 = airlight_hg_gap(p1_3);
-            float _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
-            rate = max(_e145, _e147);
+            float _e148 = airlight_hg_gap(p0_4);
+            float _e149 = psi1_1;
+            float _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_3);
+            float _e151 = airlight_hg_gap(p1_3);
+            float _e152 = psi1_1;
+            float _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_3);
+            rate = max(_e150, _e153);
             break;
         }
         default: {
             break;
         }
     }
-    float _e149 = rate;
-    if (!((pow(_e149, 12.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e155 = psi1_1;
+    float d_3 = (_e155 * inv_hw_1);
+    if ((big_h_7 > 0.0)) {
+        exponential = (1.0 / ((1.0 + d_3) + sqrt((d_3 * (2.0 + d_3)))));
+    }
+    float _e171 = lambda_1;
+    float predicted = (pow(_e171, 12.0) * AIRLIGHT_INV_ODD_FACTORIAL);
+    float _e175 = lambda_1;
+    float _e181 = rate;
+    float _e183 = exponential;
+    float decay_2 = max(max((_e175 / ((2.0 * 12.0) - 1.0)), _e181), _e183);
+    float _e185 = lambda_1;
+    float _e191 = lambda_1;
+    float estimated = (((pow(_e185, (12.0 - 1.0)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e191, (12.0 - 2.0)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((12.0 + 1.0) - 3.0)));
+    if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
+        local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
+    } else {
+        local_27 = false;
+    }
+    bool _e213 = local_27;
+    if (_e213) {
         return vec2(0.0, 0.0);
     }
-    if ((big_h_7 > 0.0)) {
-        float _e160 = rate;
-        float _e165 = airlight_bernstein_rho(((1.5707964 - mid_2) / hw_2), 0.0);
-        rate = max(_e160, (1.0 / _e165));
+    float _e217 = rate;
+    if (!((pow(_e217, 12.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+        return vec2(0.0, 0.0);
     }
-    vec2 _e169[6] = airlight_gauss_rule();
-    float _e170[12] = airlight_zero_terms();
-    samples_3 = _e170;
+    float _e225 = rate;
+    float _e226 = exponential;
+    rate = max(_e225, _e226);
+    vec2 _e228[6] = airlight_gauss_rule();
+    float _e229[12] = airlight_zero_terms();
+    samples_3 = _e229;
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e263 = i_11;
-            i_11 = (_e263 + 1u);
+            uint _e322 = i_11;
+            i_11 = (_e322 + 1u);
         }
         loop_init_16 = false;
-        uint _e182 = i_11;
-        if ((_e182 < AIRLIGHT_TERMS)) {
+        uint _e241 = i_11;
+        if ((_e241 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e185 = i_11;
-            float _e186 = airlight_node(_e169, _e185);
-            float lower = (_e38 + (hw_2 * (1.0 + _e186)));
+            uint _e244 = i_11;
+            float _e245 = airlight_node(_e228, _e244);
+            float lower = (_e40 + (hw_1 * (1.0 + _e245)));
             bool below_1 = (lower <= 1.5707964);
-            float _e193 = psi1_;
-            vec2 _e199 = airlight_cos_sin((below_1 ? lower : (_e193 + (hw_2 * (1.0 - _e186)))));
-            float cs_1 = _e199.y;
-            float sn = (below_1 ? -(_e199.x) : _e199.x);
-            float near_pole = (1.0 + _e199.x);
+            float _e252 = psi1_1;
+            vec2 _e258 = airlight_cos_sin((below_1 ? lower : (_e252 + (hw_1 * (1.0 - _e245)))));
+            float cs_1 = _e258.y;
+            float sn = (below_1 ? -(_e258.x) : _e258.x);
+            float near_pole = (1.0 + _e258.x);
             float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
             float y_10 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
             float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            float _e233 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
-            float _e239 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
-            float f_2 = (_e233 * _e239);
+            float _e292 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
+            float _e298 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = (_e292 * _e298);
             float gw = (weight_2 * f_2);
-            uint _e242 = i_11;
-            samples_3[_e242] = gw;
-            uint _e244 = i_11;
-            float w_5 = _e169[(_e244 / 2u)].y;
-            float _e249 = value_1;
-            value_1 = (_e249 + (w_5 * gw));
-            float _e252 = mass_4;
-            mass_4 = (_e252 + (w_5 * weight_2));
-            float _e255 = magnitude;
-            magnitude = (_e255 + (w_5 * abs(gw)));
-            float _e259 = f_max_5;
-            f_max_5 = max(_e259, abs(f_2));
+            uint _e301 = i_11;
+            samples_3[_e301] = gw;
+            uint _e303 = i_11;
+            float w_5 = _e228[(_e303 / 2u)].y;
+            float _e308 = value_1;
+            value_1 = (_e308 + (w_5 * gw));
+            float _e311 = mass_4;
+            mass_4 = (_e311 + (w_5 * weight_2));
+            float _e314 = magnitude;
+            magnitude = (_e314 + (w_5 * abs(gw)));
+            float _e318 = f_max_5;
+            f_max_5 = max(_e318, abs(f_2));
         }
     }
-    float _e265[12] = samples_3;
-    float _e266[12] = airlight_legendre(_e265);
-    float _e267[12] = airlight_zero_terms();
-    m_3 = _e267;
+    float _e324[12] = samples_3;
+    float _e325[12] = airlight_legendre(_e324);
+    float _e326[12] = airlight_zero_terms();
+    m_3 = _e326;
     m_3[0] = 2.0;
-    float _e271 = airlight_tail_estimate(_e266);
-    float _e274[12] = m_3;
-    float _e275 = rate;
-    float _e276 = airlight_error_factor(_e266, _e274, _e275);
-    float error_4 = ((2.0 * _e271) * _e276);
-    float _e279 = magnitude;
-    float _e282 = airlight_transform_noise(2.0, (0.5 * _e279));
-    float _e284 = value_1;
-    float _e287 = f_max_5;
-    float _e289 = mass_4;
-    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
+    float _e330 = airlight_tail_estimate(_e325);
+    float _e333[12] = m_3;
+    float _e334 = rate;
+    float _e335 = airlight_error_factor(_e325, _e333, _e334);
+    float error_4 = ((2.0 * _e330) * _e335);
+    float _e338 = magnitude;
+    float _e341 = airlight_transform_noise(2.0, (0.5 * _e338));
+    float _e343 = value_1;
+    float _e346 = f_max_5;
+    float _e348 = mass_4;
+    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e343), ((AIRLIGHT_PANEL_FLOOR * _e346) * _e348)));
     if (!((error_4 <= accepted))) {
-        local_27 = (error_4 <= _e282);
-    } else {
-        local_27 = true;
-    }
-    bool _e299 = local_27;
-    if (!(_e299)) {
-        return vec2(0.0, 0.0);
-    }
-    if ((s_11.sigma_t > 0.0)) {
-        float _e310 = airlight_hypot_one(u0_);
-        x_10 = (s_11.sigma_t * (h_3 * _e310));
-    }
-    float _e315 = x_10;
-    float _e316 = value_1;
-    float _e320 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5));
-    return vec2(1.0, _e320);
-}
-
-vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3) {
-    bool local_28 = false;
-    float sb = 1.0;
-    float r1_ = -1.0;
-    float r2_2 = -1.0;
-    float a0_ = (k_3 + (sigma_9 * d_el));
-    float b0_ = -((d_c + d_c));
-    float c0_ = (k_3 - (sigma_9 * d_el));
-    float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if (!(!((scale_1 > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale_1);
-        local_28 = !(_e21);
+        local_28 = (error_4 <= _e341);
     } else {
         local_28 = true;
     }
-    bool _e24 = local_28;
+    bool _e358 = local_28;
+    if (!(_e358)) {
+        return vec2(0.0, 0.0);
+    }
+    if ((s_11.sigma_t > 0.0)) {
+        float _e369 = airlight_hypot_one(u0_);
+        x_10 = (s_11.sigma_t * (h_3 * _e369));
+    }
+    float _e374 = x_10;
+    float _e375 = value_1;
+    float _e379 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e374, ((_e375 * hw_1) * 0.5));
+    return vec2(1.0, _e379);
+}
+
+vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
+    bool local_29 = false;
+    float sb = 1.0;
+    float r1_ = -1.0;
+    float r2_2 = -1.0;
+    float a0_ = (k_4 + (sigma_9 * d_el));
+    float b0_ = -((d_c + d_c));
+    float c0_ = (k_4 - (sigma_9 * d_el));
+    float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if (!(!((scale_1 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_1);
+        local_29 = !(_e21);
+    } else {
+        local_29 = true;
+    }
+    bool _e24 = local_29;
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
@@ -3356,81 +3398,81 @@ float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_4) {
 }
 
 bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1) {
-    bool local_29 = false;
     bool local_30 = false;
-    float y1_1 = 0.0;
     bool local_31 = false;
+    float y1_1 = 0.0;
     bool local_32 = false;
     bool local_33 = false;
     bool local_34 = false;
+    bool local_35 = false;
     float _e9 = airlight_cosine(g_15, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
         return false;
     }
     if ((lo_1 == half_11.y_lo)) {
         float _e17 = airlight_cosine(g_15, sigma_11, lo_1);
-        local_29 = !((_e17 < bound));
+        local_30 = !((_e17 < bound));
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    bool _e21 = local_29;
+    bool _e21 = local_30;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
         float _e27 = airlight_cosine(g_15, sigma_11, hi_1);
-        local_30 = !((_e27 < bound));
+        local_31 = !((_e27 < bound));
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool _e31 = local_30;
+    bool _e31 = local_31;
     if (_e31) {
         return false;
     }
     float a_25 = (sigma_11 * g_15.d_el);
-    float d_3 = g_15.d_c;
-    if ((d_3 == 0.0)) {
+    float d_4 = g_15.d_c;
+    if ((d_4 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
+    float root_1 = sqrt(((a_25 * a_25) + (d_4 * d_4)));
+    y1_1 = ((root_1 - a_25) / d_4);
     if ((a_25 > 0.0)) {
-        y1_1 = (d_3 / (a_25 + root_1));
+        y1_1 = (d_4 / (a_25 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
     float _e53 = y1_1;
     if ((_e53 > lo_1)) {
         float _e57 = y1_1;
-        local_31 = (_e57 < hi_1);
-    } else {
-        local_31 = false;
-    }
-    bool _e60 = local_31;
-    if (_e60) {
-        float _e63 = y1_1;
-        float _e64 = airlight_cosine(g_15, sigma_11, _e63);
-        local_32 = !((_e64 < bound));
+        local_32 = (_e57 < hi_1);
     } else {
         local_32 = false;
     }
-    bool _e68 = local_32;
+    bool _e60 = local_32;
+    if (_e60) {
+        float _e63 = y1_1;
+        float _e64 = airlight_cosine(g_15, sigma_11, _e63);
+        local_33 = !((_e64 < bound));
+    } else {
+        local_33 = false;
+    }
+    bool _e68 = local_33;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_33 = (y2_2 < hi_1);
-    } else {
-        local_33 = false;
-    }
-    bool _e75 = local_33;
-    if (_e75) {
-        float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
-        local_34 = !((_e78 < bound));
+        local_34 = (y2_2 < hi_1);
     } else {
         local_34 = false;
     }
-    bool _e82 = local_34;
+    bool _e75 = local_34;
+    if (_e75) {
+        float _e78 = airlight_cosine(g_15, sigma_11, y2_2);
+        local_35 = !((_e78 < bound));
+    } else {
+        local_35 = false;
+    }
+    bool _e82 = local_35;
     if (_e82) {
         return false;
     }
@@ -3443,16 +3485,16 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
     float k_in = 0.0;
     float k_out = 0.0;
     uint i_12 = 0u;
-    bool local_35 = false;
+    bool local_36 = false;
     uint i_13 = 0u;
     uint j_2 = 0u;
     float total_2 = 0.0;
     float lo_2 = 0.0;
     uint i_14 = 0u;
     float hi_2 = 0.0;
-    bool local_36 = false;
     bool local_37 = false;
     bool local_38 = false;
+    bool local_39 = false;
     if (isotropic) {
         float _e7 = airlight_integrand(s_12, g_16, sigma_12, 0.0);
         float _e8 = airlight_moment_zero(half_12);
@@ -3495,11 +3537,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                 if ((_e56 > half_12.y_lo)) {
                     uint _e61 = i_12;
                     float _e63 = cuts[_e61];
-                    local_35 = (_e63 < half_12.y_hi);
+                    local_36 = (_e63 < half_12.y_hi);
                 } else {
-                    local_35 = false;
+                    local_36 = false;
                 }
-                bool _e67 = local_35;
+                bool _e67 = local_36;
                 if (!(_e67)) {
                     uint _e69 = i_12;
                     cuts[_e69] = 2.0;
@@ -3572,11 +3614,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
             if ((_e127 < 4u)) {
                 uint _e132 = i_14;
                 float _e134 = cuts[_e132];
-                local_36 = (_e134 < 2.0);
+                local_37 = (_e134 < 2.0);
             } else {
-                local_36 = false;
+                local_37 = false;
             }
-            bool _e138 = local_36;
+            bool _e138 = local_37;
             if (_e138) {
                 uint _e139 = i_14;
                 float _e141 = cuts[_e139];
@@ -3590,11 +3632,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                     float _e151 = lo_2;
                     float _e152 = hi_2;
                     bool _e153 = airlight_dark(g_16, sigma_12, half_12, _e150, _e151, _e152);
-                    local_37 = _e153;
+                    local_38 = _e153;
                 } else {
-                    local_37 = false;
+                    local_38 = false;
                 }
-                bool _e155 = local_37;
+                bool _e155 = local_38;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
@@ -3609,11 +3651,11 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
             if ((_e163 < 4u)) {
                 uint _e168 = i_14;
                 float _e170 = cuts[_e168];
-                local_38 = (_e170 >= 2.0);
+                local_39 = (_e170 >= 2.0);
             } else {
-                local_38 = false;
+                local_39 = false;
             }
-            bool _e174 = local_38;
+            bool _e174 = local_39;
             if (_e174) {
                 break;
             }
@@ -3624,16 +3666,16 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
 }
 
 float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17) {
-    bool local_39 = false;
-    float span = 0.0;
+    bool local_40 = false;
+    float span_1 = 0.0;
     float e2_[14] = float[14](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float tail = 0.0;
     if (!(g_17.t_hi_infinite)) {
-        local_39 = (g_17.x_h > g_17.t_hi);
+        local_40 = (g_17.x_h > g_17.t_hi);
     } else {
-        local_39 = false;
+        local_40 = false;
     }
-    bool _e10 = local_39;
+    bool _e10 = local_40;
     if (_e10) {
         float _e16 = airlight_light(s_13.light_kind, s_13.light_param_a, s_13.light_param_b, -(g_17.d_el));
         float _e22 = airlight_phase_mu(s_13.phase_kind, s_13.phase_param_a, s_13.phase_param_b, s_13.phase_param_c, 1.0);
@@ -3649,11 +3691,11 @@ float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17) {
     float s0_ = (g_17.t_lo - g_17.x_h);
     float s1_ = (g_17.t_hi - g_17.x_h);
     if ((s_13.sigma_t == 0.0)) {
-        span = (1.0 / s0_);
+        span_1 = (1.0 / s0_);
         if (!(g_17.t_hi_infinite)) {
-            span = (((s1_ - s0_) / s1_) / s0_);
+            span_1 = (((s1_ - s0_) / s1_) / s0_);
         }
-        float _e75 = span;
+        float _e75 = span_1;
         float _e77 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, 0.0, (f_4 * _e75));
         return _e77;
     }
@@ -3691,8 +3733,8 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_40 = false;
     bool local_41 = false;
+    bool local_42 = false;
     float x_11 = 0.0;
     float h_4 = g_18.h;
     float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
@@ -3701,11 +3743,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if (!(g_18.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_40 = _e24;
+        local_41 = _e24;
     } else {
-        local_40 = false;
+        local_41 = false;
     }
-    bool _e26 = local_40;
+    bool _e26 = local_41;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3713,11 +3755,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_41 = _e40;
+            local_42 = _e40;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        bool _e42 = local_41;
+        bool _e42 = local_42;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3748,26 +3790,26 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
 }
 
 AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
-    bool local_42 = false;
     bool local_43 = false;
     bool local_44 = false;
     bool local_45 = false;
-    float gap_2 = 0.0;
     bool local_46 = false;
+    float gap_2 = 0.0;
+    bool local_47 = false;
     float t0_ = g_19.t_lo;
     float t1_ = g_19.t_hi;
     if (!(g_19.t_hi_infinite)) {
-        local_42 = (t1_ > t0_);
-    } else {
-        local_42 = true;
-    }
-    bool _e10 = local_42;
-    if (!(!(_e10))) {
-        local_43 = ((s_15.sigma_s * s_15.intensity) == 0.0);
+        local_43 = (t1_ > t0_);
     } else {
         local_43 = true;
     }
-    bool _e21 = local_43;
+    bool _e10 = local_43;
+    if (!(!(_e10))) {
+        local_44 = ((s_15.sigma_s * s_15.intensity) == 0.0);
+    } else {
+        local_44 = true;
+    }
+    bool _e21 = local_44;
     if (_e21) {
         return AirlightResult(0.0, 0u);
     }
@@ -3775,16 +3817,16 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
     float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_19.t_hi_infinite)) {
-            local_45 = (x_h <= t1_);
+            local_46 = (x_h <= t1_);
         } else {
-            local_45 = true;
+            local_46 = true;
         }
-        bool _e36 = local_45;
-        local_44 = _e36;
+        bool _e36 = local_46;
+        local_45 = _e36;
     } else {
-        local_44 = false;
+        local_45 = false;
     }
-    bool inside = local_44;
+    bool inside = local_45;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3794,11 +3836,11 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_46 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_47 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    bool _e55 = local_46;
+    bool _e55 = local_47;
     if (_e55) {
         float _e56 = airlight_on_line(s_15, g_19);
         return AirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3810,74 +3852,74 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
 }
 
 bool airlight_isotropic_scene(AirlightScene s_16) {
-    bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
     bool local_50 = false;
     bool local_51 = false;
     bool local_52 = false;
+    bool local_53 = false;
     if (!((s_16.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_48 = (s_16.light_param_a == 0.0);
+            local_49 = (s_16.light_param_a == 0.0);
         } else {
-            local_48 = false;
+            local_49 = false;
         }
-        bool _e16 = local_48;
-        local_47 = _e16;
+        bool _e16 = local_49;
+        local_48 = _e16;
     } else {
-        local_47 = true;
+        local_48 = true;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (_e18) {
         if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_51 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_52 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_51 = true;
+                local_52 = true;
             }
-            bool _e37 = local_51;
+            bool _e37 = local_52;
             if (_e37) {
-                local_52 = (s_16.phase_param_a == 0.0);
+                local_53 = (s_16.phase_param_a == 0.0);
             } else {
-                local_52 = false;
+                local_53 = false;
             }
-            bool _e44 = local_52;
-            local_50 = _e44;
+            bool _e44 = local_53;
+            local_51 = _e44;
         } else {
-            local_50 = true;
+            local_51 = true;
         }
-        bool _e46 = local_50;
-        local_49 = _e46;
+        bool _e46 = local_51;
+        local_50 = _e46;
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e48 = local_49;
+    bool _e48 = local_50;
     return _e48;
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonical g_20) {
-    bool local_53 = false;
     bool local_54 = false;
     bool local_55 = false;
+    bool local_56 = false;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = 0.0;
-    bool local_56 = false;
-    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_57 = false;
+    AirlightHalf half_13 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_58 = false;
     bool local_59 = false;
+    bool local_60 = false;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = 0.0;
     bool infinite_2 = true;
-    bool local_60 = false;
     bool local_61 = false;
-    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_62 = false;
+    AirlightHalf half_14 = AirlightHalf(false, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_63 = false;
     bool local_64 = false;
+    bool local_65 = false;
     AirlightResult _e2 = airlight_limits(s_17, g_20);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
         return _e2;
@@ -3889,23 +3931,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
     float big_h_8 = (s_17.sigma_t * h_6);
     bool _e12 = airlight_isotropic_scene(s_17);
     if (_e12) {
-        local_53 = (t0_1 < x_h_1);
-    } else {
-        local_53 = false;
-    }
-    bool _e17 = local_53;
-    if (_e17) {
-        if (!(g_20.t_hi_infinite)) {
-            local_55 = (x_h_1 < t1_1);
-        } else {
-            local_55 = true;
-        }
-        bool _e26 = local_55;
-        local_54 = _e26;
+        local_54 = (t0_1 < x_h_1);
     } else {
         local_54 = false;
     }
-    bool _e28 = local_54;
+    bool _e17 = local_54;
+    if (_e17) {
+        if (!(g_20.t_hi_infinite)) {
+            local_56 = (x_h_1 < t1_1);
+        } else {
+            local_56 = true;
+        }
+        bool _e26 = local_56;
+        local_55 = _e26;
+    } else {
+        local_55 = false;
+    }
+    bool _e28 = local_55;
     if (_e28) {
         float _e29 = airlight_whole_line(s_17, g_20, big_h_8);
         return AirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
@@ -3921,11 +3963,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
-            local_56 = (t1_1 < x_h_1);
+            local_57 = (t1_1 < x_h_1);
         } else {
-            local_56 = false;
+            local_57 = false;
         }
-        bool _e61 = local_56;
+        bool _e61 = local_57;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3941,14 +3983,14 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_57 = (_e89 > 0.0);
+            local_58 = (_e89 > 0.0);
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        bool _e93 = local_57;
+        bool _e93 = local_58;
         if (_e93) {
             float _e95 = half_13.big_h;
-            float _e96 = airlight_cut_length(_e95, _e67);
+            float _e96 = airlight_cut_length(_e95, _e67, dy_1);
             if ((_e96 < dy_1)) {
                 float _e100 = half_13.big_h;
                 half_13 = AirlightHalf(false, _e100, _e67, (_e67 + _e96), _e96, _e96, false);
@@ -3962,18 +4004,18 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
-        local_58 = (t1_1 > x_h_1);
+        local_59 = (t1_1 > x_h_1);
     } else {
-        local_58 = true;
+        local_59 = true;
     }
-    bool _e120 = local_58;
+    bool _e120 = local_59;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_59 = !(_e123);
+        local_60 = !(_e123);
     } else {
-        local_59 = false;
+        local_60 = false;
     }
-    bool _e126 = local_59;
+    bool _e126 = local_60;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3983,22 +4025,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_20.t_hi_infinite)) {
             bool _e145 = airlight_is_finite(a_e_1);
-            local_60 = _e145;
+            local_61 = _e145;
         } else {
-            local_60 = false;
+            local_61 = false;
         }
-        bool _e147 = local_60;
+        bool _e147 = local_61;
         if (_e147) {
             float _e148 = airlight_bounded(a_e_1);
             float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 bool _e162 = airlight_is_finite(dv_end_1);
-                local_61 = _e162;
+                local_62 = _e162;
             } else {
-                local_61 = false;
+                local_62 = false;
             }
-            bool _e164 = local_61;
+            bool _e164 = local_62;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4018,65 +4060,67 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_62 = (_e183 > 0.0);
+            local_63 = (_e183 > 0.0);
         } else {
-            local_62 = false;
+            local_63 = false;
         }
-        bool _e187 = local_62;
+        bool _e187 = local_63;
         if (_e187) {
             float _e189 = half_14.big_h;
-            float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
-            bool _e193 = infinite_2;
-            if (!(_e193)) {
-                float _e197 = dv_3;
-                local_63 = (_e192 < _e197);
+            float _e192 = dv_3;
+            bool _e194 = infinite_2;
+            float _e196 = airlight_cut_length(_e189, (1.0 / _e131), (_e194 ? AIRLIGHT_FLT_MAX : _e192));
+            bool _e197 = infinite_2;
+            if (!(_e197)) {
+                float _e201 = dv_3;
+                local_64 = (_e196 < _e201);
             } else {
-                local_63 = true;
+                local_64 = true;
             }
-            bool _e200 = local_63;
-            if (_e200) {
-                float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
+            bool _e204 = local_64;
+            if (_e204) {
+                float cut_y_lo = (_e131 / (1.0 + (_e131 * _e196)));
                 if ((cut_y_lo > 0.0)) {
-                    bool _e209 = airlight_is_finite(_e192);
-                    local_64 = _e209;
+                    bool _e213 = airlight_is_finite(_e196);
+                    local_65 = _e213;
                 } else {
-                    local_64 = false;
+                    local_65 = false;
                 }
-                bool _e211 = local_64;
-                if (_e211) {
-                    float _e214 = half_14.big_h;
-                    half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
+                bool _e215 = local_65;
+                if (_e215) {
+                    float _e218 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
                 }
             }
         }
-        AirlightHalf _e220 = half_14;
-        float _e221 = airlight_half(s_17, g_20, 1.0, _e220, _e12, f_max_7);
-        float _e222 = total_3;
-        float _e230 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, ((s_17.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
-        total_3 = (_e222 + _e230);
+        AirlightHalf _e224 = half_14;
+        float _e225 = airlight_half(s_17, g_20, 1.0, _e224, _e12, f_max_7);
+        float _e226 = total_3;
+        float _e234 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, ((s_17.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        total_3 = (_e226 + _e234);
     }
-    float _e232 = total_3;
-    return AirlightResult(max(_e232, 0.0), AIRLIGHT_STATUS_OK);
+    float _e236 = total_3;
+    return AirlightResult(max(_e236, 0.0), AIRLIGHT_STATUS_OK);
 }
 
 bool airlight_vec_finite(vec3 v) {
-    bool local_65 = false;
     bool local_66 = false;
+    bool local_67 = false;
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    bool _e8 = local_65;
-    if (_e8) {
-        bool _e12 = airlight_is_finite(v.z);
-        local_66 = _e12;
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    bool _e14 = local_66;
+    bool _e8 = local_66;
+    if (_e8) {
+        bool _e12 = airlight_is_finite(v.z);
+        local_67 = _e12;
+    } else {
+        local_67 = false;
+    }
+    bool _e14 = local_67;
     return _e14;
 }
 
@@ -4089,15 +4133,15 @@ float airlight_safe_length(vec3 v_1) {
 }
 
 bool airlight_normalisable(vec3 v_2) {
-    bool local_67 = false;
+    bool local_68 = false;
     float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         bool _e6 = airlight_is_finite(_e1);
-        local_67 = _e6;
+        local_68 = _e6;
     } else {
-        local_67 = false;
+        local_68 = false;
     }
-    bool _e8 = local_67;
+    bool _e8 = local_68;
     return _e8;
 }
 
@@ -4108,7 +4152,6 @@ vec3 airlight_normalize(vec3 v_3) {
 }
 
 bool airlight_valid(AirlightScene s_18) {
-    bool local_68 = false;
     bool local_69 = false;
     bool local_70 = false;
     bool local_71 = false;
@@ -4118,8 +4161,8 @@ bool airlight_valid(AirlightScene s_18) {
     bool local_75 = false;
     bool local_76 = false;
     bool local_77 = false;
-    bool ok = false;
     bool local_78 = false;
+    bool ok = false;
     bool local_79 = false;
     bool local_80 = false;
     bool local_81 = false;
@@ -4147,101 +4190,102 @@ bool airlight_valid(AirlightScene s_18) {
     bool local_103 = false;
     bool local_104 = false;
     bool local_105 = false;
+    bool local_106 = false;
     bool _e2 = airlight_vec_finite(s_18.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_18.dir);
-        local_68 = _e6;
-    } else {
-        local_68 = false;
-    }
-    bool _e8 = local_68;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_18.dir);
-        local_69 = _e12;
+        local_69 = _e6;
     } else {
         local_69 = false;
     }
-    bool _e14 = local_69;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_18.t_min);
-        local_70 = _e18;
+    bool _e8 = local_69;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_18.dir);
+        local_70 = _e12;
     } else {
         local_70 = false;
     }
-    bool _e20 = local_70;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_18.light_position);
-        local_71 = _e24;
+    bool _e14 = local_70;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_18.t_min);
+        local_71 = _e18;
     } else {
         local_71 = false;
     }
-    bool _e26 = local_71;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_18.intensity);
-        local_72 = _e30;
+    bool _e20 = local_71;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_18.light_position);
+        local_72 = _e24;
     } else {
         local_72 = false;
     }
-    bool _e32 = local_72;
-    if (_e32) {
-        local_73 = (s_18.intensity >= 0.0);
+    bool _e26 = local_72;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_18.intensity);
+        local_73 = _e30;
     } else {
         local_73 = false;
     }
-    bool _e39 = local_73;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_18.sigma_s);
-        local_74 = _e43;
+    bool _e32 = local_73;
+    if (_e32) {
+        local_74 = (s_18.intensity >= 0.0);
     } else {
         local_74 = false;
     }
-    bool _e45 = local_74;
-    if (_e45) {
-        local_75 = (s_18.sigma_s >= 0.0);
+    bool _e39 = local_74;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_18.sigma_s);
+        local_75 = _e43;
     } else {
         local_75 = false;
     }
-    bool _e52 = local_75;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_18.sigma_t);
-        local_76 = _e56;
+    bool _e45 = local_75;
+    if (_e45) {
+        local_76 = (s_18.sigma_s >= 0.0);
     } else {
         local_76 = false;
     }
-    bool _e58 = local_76;
-    if (_e58) {
-        local_77 = (s_18.sigma_t >= 0.0);
+    bool _e52 = local_76;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_18.sigma_t);
+        local_77 = _e56;
     } else {
         local_77 = false;
     }
-    bool _e65 = local_77;
+    bool _e58 = local_77;
+    if (_e58) {
+        local_78 = (s_18.sigma_t >= 0.0);
+    } else {
+        local_78 = false;
+    }
+    bool _e65 = local_78;
     ok = _e65;
     if (((s_18.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_18.t_max);
-            local_78 = _e76;
-        } else {
-            local_78 = false;
-        }
-        bool _e78 = local_78;
-        if (_e78) {
-            local_79 = (s_18.t_min <= s_18.t_max);
+            local_79 = _e76;
         } else {
             local_79 = false;
         }
-        bool _e85 = local_79;
+        bool _e78 = local_79;
+        if (_e78) {
+            local_80 = (s_18.t_min <= s_18.t_max);
+        } else {
+            local_80 = false;
+        }
+        bool _e85 = local_80;
         ok = _e85;
     }
     if ((s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_18.light_end);
-            local_80 = _e93;
+            local_81 = _e93;
         } else {
-            local_80 = false;
+            local_81 = false;
         }
-        bool _e95 = local_80;
+        bool _e95 = local_81;
         ok = _e95;
     } else {
         if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -4249,76 +4293,76 @@ bool airlight_valid(AirlightScene s_18) {
         }
     }
     if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_81 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_82 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_81 = true;
+        local_82 = true;
     }
-    bool _e110 = local_81;
+    bool _e110 = local_82;
     if (_e110) {
         bool _e111 = ok;
         if (_e111) {
             bool _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_82 = _e115;
-        } else {
-            local_82 = false;
-        }
-        bool _e117 = local_82;
-        if (_e117) {
-            local_83 = (s_18.brdf_scale >= 0.0);
+            local_83 = _e115;
         } else {
             local_83 = false;
         }
-        bool _e124 = local_83;
-        if (_e124) {
-            local_84 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+        bool _e117 = local_83;
+        if (_e117) {
+            local_84 = (s_18.brdf_scale >= 0.0);
         } else {
             local_84 = false;
         }
-        bool _e131 = local_84;
-        if (_e131) {
-            local_85 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e124 = local_84;
+        if (_e124) {
+            local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_85 = false;
         }
-        bool _e138 = local_85;
-        if (_e138) {
-            float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
-            bool _e145 = airlight_is_finite(_e144);
-            local_86 = _e145;
+        bool _e131 = local_85;
+        if (_e131) {
+            local_86 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_86 = false;
         }
-        bool _e147 = local_86;
+        bool _e138 = local_86;
+        if (_e138) {
+            float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
+            bool _e145 = airlight_is_finite(_e144);
+            local_87 = _e145;
+        } else {
+            local_87 = false;
+        }
+        bool _e147 = local_87;
         ok = _e147;
         if ((s_18.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
             bool _e151 = ok;
             if (_e151) {
                 bool _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_87 = _e155;
-            } else {
-                local_87 = false;
-            }
-            bool _e157 = local_87;
-            if (_e157) {
-                local_88 = (s_18.brdf_exponent >= 0.0);
+                local_88 = _e155;
             } else {
                 local_88 = false;
             }
-            bool _e164 = local_88;
-            if (_e164) {
-                bool _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_89 = _e168;
+            bool _e157 = local_88;
+            if (_e157) {
+                local_89 = (s_18.brdf_exponent >= 0.0);
             } else {
                 local_89 = false;
             }
-            bool _e170 = local_89;
-            if (_e170) {
-                bool _e174 = airlight_normalisable(s_18.brdf_view);
-                local_90 = _e174;
+            bool _e164 = local_89;
+            if (_e164) {
+                bool _e168 = airlight_vec_finite(s_18.brdf_view);
+                local_90 = _e168;
             } else {
                 local_90 = false;
             }
-            bool _e176 = local_90;
+            bool _e170 = local_90;
+            if (_e170) {
+                bool _e174 = airlight_normalisable(s_18.brdf_view);
+                local_91 = _e174;
+            } else {
+                local_91 = false;
+            }
+            bool _e176 = local_91;
             ok = _e176;
         }
     } else {
@@ -4330,72 +4374,72 @@ bool airlight_valid(AirlightScene s_18) {
         bool _e184 = ok;
         if (_e184) {
             bool _e188 = airlight_vec_finite(s_18.light_axis);
-            local_91 = _e188;
-        } else {
-            local_91 = false;
-        }
-        bool _e190 = local_91;
-        if (_e190) {
-            bool _e194 = airlight_normalisable(s_18.light_axis);
-            local_92 = _e194;
+            local_92 = _e188;
         } else {
             local_92 = false;
         }
-        bool _e196 = local_92;
-        if (_e196) {
-            local_93 = (s_18.light_param_a >= 0.0);
+        bool _e190 = local_92;
+        if (_e190) {
+            bool _e194 = airlight_normalisable(s_18.light_axis);
+            local_93 = _e194;
         } else {
             local_93 = false;
         }
-        bool _e203 = local_93;
-        if (_e203) {
-            local_94 = (s_18.light_param_a <= 1024.0);
+        bool _e196 = local_93;
+        if (_e196) {
+            local_94 = (s_18.light_param_a >= 0.0);
         } else {
             local_94 = false;
         }
-        bool _e210 = local_94;
-        if (_e210) {
-            local_95 = (fract((s_18.light_param_a * 0.5)) == 0.0);
+        bool _e203 = local_94;
+        if (_e203) {
+            local_95 = (s_18.light_param_a <= 1024.0);
         } else {
             local_95 = false;
         }
-        bool _e220 = local_95;
+        bool _e210 = local_95;
+        if (_e210) {
+            local_96 = (fract((s_18.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_96 = false;
+        }
+        bool _e220 = local_96;
         ok = _e220;
     } else {
         if ((s_18.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e224 = ok;
             if (_e224) {
                 bool _e228 = airlight_vec_finite(s_18.light_axis);
-                local_96 = _e228;
-            } else {
-                local_96 = false;
-            }
-            bool _e230 = local_96;
-            if (_e230) {
-                bool _e234 = airlight_normalisable(s_18.light_axis);
-                local_97 = _e234;
+                local_97 = _e228;
             } else {
                 local_97 = false;
             }
-            bool _e236 = local_97;
-            if (_e236) {
-                local_98 = (s_18.light_param_b < s_18.light_param_a);
+            bool _e230 = local_97;
+            if (_e230) {
+                bool _e234 = airlight_normalisable(s_18.light_axis);
+                local_98 = _e234;
             } else {
                 local_98 = false;
             }
-            bool _e243 = local_98;
-            if (_e243) {
-                local_99 = (s_18.light_param_b >= -1.0);
+            bool _e236 = local_98;
+            if (_e236) {
+                local_99 = (s_18.light_param_b < s_18.light_param_a);
             } else {
                 local_99 = false;
             }
-            bool _e250 = local_99;
-            if (_e250) {
-                local_100 = (s_18.light_param_a <= 1.0);
+            bool _e243 = local_99;
+            if (_e243) {
+                local_100 = (s_18.light_param_b >= -1.0);
             } else {
                 local_100 = false;
             }
-            bool _e257 = local_100;
+            bool _e250 = local_100;
+            if (_e250) {
+                local_101 = (s_18.light_param_a <= 1.0);
+            } else {
+                local_101 = false;
+            }
+            bool _e257 = local_101;
             ok = _e257;
         } else {
             if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -4414,40 +4458,40 @@ bool airlight_valid(AirlightScene s_18) {
         case 4u: {
             bool _e267 = ok;
             if (_e267) {
-                local_101 = g_ok;
+                local_102 = g_ok;
             } else {
-                local_101 = false;
+                local_102 = false;
             }
-            bool _e271 = local_101;
+            bool _e271 = local_102;
             ok = _e271;
             break;
         }
         case 5u: {
             bool _e272 = ok;
             if (_e272) {
-                local_102 = g_ok;
-            } else {
-                local_102 = false;
-            }
-            bool _e276 = local_102;
-            if (_e276) {
-                local_103 = (abs(s_18.phase_param_b) < 1.0);
+                local_103 = g_ok;
             } else {
                 local_103 = false;
             }
-            bool _e284 = local_103;
-            if (_e284) {
-                local_104 = (s_18.phase_param_c >= 0.0);
+            bool _e276 = local_103;
+            if (_e276) {
+                local_104 = (abs(s_18.phase_param_b) < 1.0);
             } else {
                 local_104 = false;
             }
-            bool _e291 = local_104;
-            if (_e291) {
-                local_105 = (s_18.phase_param_c <= 1.0);
+            bool _e284 = local_104;
+            if (_e284) {
+                local_105 = (s_18.phase_param_c >= 0.0);
             } else {
                 local_105 = false;
             }
-            bool _e298 = local_105;
+            bool _e291 = local_105;
+            if (_e291) {
+                local_106 = (s_18.phase_param_c <= 1.0);
+            } else {
+                local_106 = false;
+            }
+            bool _e298 = local_106;
             ok = _e298;
             break;
         }
@@ -4519,28 +4563,28 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 }
 
 bool airlight_in_exact_range(vec3 v_4) {
-    bool local_106 = false;
     bool local_107 = false;
+    bool local_108 = false;
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_107 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_108 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_107 = false;
+            local_108 = false;
         }
-        bool _e21 = local_107;
-        local_106 = _e21;
+        bool _e21 = local_108;
+        local_107 = _e21;
     } else {
-        local_106 = true;
+        local_107 = true;
     }
-    bool _e23 = local_106;
+    bool _e23 = local_107;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) {
-    bool local_108 = false;
-    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_109 = false;
+    AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    bool local_110 = false;
     vec3 a_16 = vec3(0.0, 0.0, 1.0);
     uint key_4 = uint((s_20.flags > 1u));
     vec2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
@@ -4552,11 +4596,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_108 = !(_e38);
+        local_109 = !(_e38);
     } else {
-        local_108 = true;
+        local_109 = true;
     }
-    bool _e41 = local_108;
+    bool _e41 = local_109;
     if (_e41) {
         return plain;
     }
@@ -4580,11 +4624,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     float h_7 = (_e85 / _e93);
     bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_109 = (h_7 > 0.0);
+        local_110 = (h_7 > 0.0);
     } else {
-        local_109 = false;
+        local_110 = false;
     }
-    bool _e101 = local_109;
+    bool _e101 = local_110;
     if (!(_e101)) {
         return plain;
     }
@@ -4971,26 +5015,26 @@ AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels) {
 
 AirlightOuter airlight_surface(AirlightScene s_24) {
     AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
-    bool local_110 = false;
+    bool local_111 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_17 = 1u;
     uint j_3 = 0u;
-    bool local_111 = false;
-    uint k_4 = 0u;
-    uint i_18 = 0u;
     bool local_112 = false;
+    uint k_5 = 0u;
+    uint i_18 = 0u;
+    bool local_113 = false;
     uint i_19 = 0u;
     AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     vec3 to_light_1 = (s_24.light_position - s_24.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_24.intensity == 0.0))) {
-        local_110 = (s_24.sigma_s == 0.0);
+        local_111 = (s_24.sigma_s == 0.0);
     } else {
-        local_110 = true;
+        local_111 = true;
     }
-    bool _e18 = local_110;
+    bool _e18 = local_111;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5100,11 +5144,11 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
                 if ((_e219 > 0u)) {
                     uint _e224 = j_3;
                     float _e228 = cuts_1[(_e224 - 1u)];
-                    local_111 = (_e228 > c_10);
+                    local_112 = (_e228 > c_10);
                 } else {
-                    local_111 = false;
+                    local_112 = false;
                 }
-                bool _e231 = local_111;
+                bool _e231 = local_112;
                 if (_e231) {
                 } else {
                     break;
@@ -5137,29 +5181,29 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
         {
             uint _e254 = i_18;
             float _e256 = cuts_1[_e254];
-            uint _e258 = k_4;
+            uint _e258 = k_5;
             float _e260 = g_22.gamma[_e258];
             if ((_e256 > _e260)) {
                 uint _e264 = i_18;
                 float _e266 = cuts_1[_e264];
-                local_112 = (_e266 < AIRLIGHT_PI);
+                local_113 = (_e266 < AIRLIGHT_PI);
             } else {
-                local_112 = false;
+                local_113 = false;
             }
-            bool _e270 = local_112;
+            bool _e270 = local_113;
             if (_e270) {
-                uint _e271 = k_4;
-                k_4 = (_e271 + 1u);
-                uint _e275 = k_4;
+                uint _e271 = k_5;
+                k_5 = (_e271 + 1u);
+                uint _e275 = k_5;
                 uint _e277 = i_18;
                 float _e279 = cuts_1[_e277];
                 g_22.gamma[_e275] = _e279;
             }
         }
     }
-    uint _e284 = k_4;
+    uint _e284 = k_5;
     g_22.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
-    uint _e290 = k_4;
+    uint _e290 = k_5;
     g_22.panels = (_e290 + 1u);
     bool loop_init_23 = true;
     while(true) {
@@ -5185,7 +5229,7 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_17) {
-    bool local_113 = false;
+    bool local_114 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_17));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -5193,11 +5237,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_17) {
     float clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_113 = (clip > 0.0);
+        local_114 = (clip > 0.0);
     } else {
-        local_113 = false;
+        local_114 = false;
     }
-    bool _e35 = local_113;
+    bool _e35 = local_114;
     if (_e35) {
         float _e39 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
@@ -5216,7 +5260,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, boo
 
 float airlight_arc_end(float x_18, float cut) {
     float end_1 = 0.0;
-    bool local_114 = false;
+    bool local_115 = false;
     end_1 = x_18;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -5232,11 +5276,11 @@ float airlight_arc_end(float x_18, float cut) {
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_114 = (_e21 < cut);
+        local_115 = (_e21 < cut);
     } else {
-        local_114 = false;
+        local_115 = false;
     }
-    bool _e24 = local_114;
+    bool _e24 = local_115;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5245,17 +5289,17 @@ vec2[5] airlight_lobe_rule() {
 }
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
-    bool local_115 = false;
+    bool local_116 = false;
     float sum_5 = 0.0;
-    uint k_5 = 0u;
+    uint k_6 = 0u;
     float w_7 = (hi_3 - lo_4);
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
-        local_115 = !((_e14 > 0.0));
+        local_116 = !((_e14 > 0.0));
     } else {
-        local_115 = true;
+        local_116 = true;
     }
-    bool _e19 = local_115;
+    bool _e19 = local_116;
     if (_e19) {
         return 0.0;
     }
@@ -5263,17 +5307,17 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
     bool loop_init_24 = true;
     while(true) {
         if (!loop_init_24) {
-            uint _e43 = k_5;
-            k_5 = (_e43 + 1u);
+            uint _e43 = k_6;
+            k_6 = (_e43 + 1u);
         }
         loop_init_24 = false;
-        uint _e26 = k_5;
+        uint _e26 = k_6;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
             break;
         }
         {
-            uint _e29 = k_5;
+            uint _e29 = k_6;
             vec2 node = _e21[_e29];
             float _e31 = sum_5;
             float _e34 = airlight_lobe_node(q_3, lo_4, w_7, node.x, smoothstep_1);
@@ -5291,15 +5335,15 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = (g_23.cos_r * cs.x);
-    float d_4 = (g_23.sin_r * cs.y);
-    float peak = (c_11 + d_4);
+    float d_5 = (g_23.sin_r * cs.y);
+    float peak = (c_11 + d_5);
     if (!((peak > 0.0))) {
         return 0.0;
     }
     vec2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_6 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_6 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_5) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
@@ -5364,33 +5408,33 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
 
 AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
-    bool local_116 = false;
     bool local_117 = false;
+    bool local_118 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_118 = false;
     bool local_119 = false;
     bool local_120 = false;
     bool local_121 = false;
     bool local_122 = false;
     bool local_123 = false;
-    float scale = 0.0;
     bool local_124 = false;
+    float scale = 0.0;
     bool local_125 = false;
     bool local_126 = false;
     bool local_127 = false;
     bool local_128 = false;
+    bool local_129 = false;
     float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
-    bool local_129 = false;
-    uint i_21 = 0u;
     bool local_130 = false;
+    uint i_21 = 0u;
     bool local_131 = false;
     bool local_132 = false;
     bool local_133 = false;
+    bool local_134 = false;
     uint n_1 = 0u;
     uint i_22 = 0u;
-    bool local_134 = false;
+    bool local_135 = false;
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_25);
         return _e4;
@@ -5404,17 +5448,17 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     vec3 ab_1 = (s_25.light_end - s_25.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_116 = (s_25.intensity == 0.0);
-    } else {
-        local_116 = true;
-    }
-    bool _e26 = local_116;
-    if (!(_e26)) {
-        local_117 = (s_25.sigma_s == 0.0);
+        local_117 = (s_25.intensity == 0.0);
     } else {
         local_117 = true;
     }
-    bool _e34 = local_117;
+    bool _e26 = local_117;
+    if (!(_e26)) {
+        local_118 = (s_25.sigma_s == 0.0);
+    } else {
+        local_118 = true;
+    }
+    bool _e34 = local_118;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -5438,94 +5482,94 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_118 = (sin_a_1 > 0.0);
-    } else {
-        local_118 = false;
-    }
-    bool _e84 = local_118;
-    if (_e84) {
-        float _e87 = s_star;
-        local_119 = (_e87 >= 0.0);
+        local_119 = (sin_a_1 > 0.0);
     } else {
         local_119 = false;
     }
-    bool _e91 = local_119;
-    if (_e91) {
-        float _e94 = s_star;
-        local_120 = (_e94 <= _e15);
+    bool _e84 = local_119;
+    if (_e84) {
+        float _e87 = s_star;
+        local_120 = (_e87 >= 0.0);
     } else {
         local_120 = false;
     }
-    bool _e97 = local_120;
-    if (_e97) {
-        float _e101 = t_star;
-        local_121 = (s_25.t_min <= _e101);
+    bool _e91 = local_120;
+    if (_e91) {
+        float _e94 = s_star;
+        local_121 = (_e94 <= _e15);
     } else {
         local_121 = false;
     }
-    bool _e104 = local_121;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_123 = (_e110 <= s_25.t_max);
-        } else {
-            local_123 = true;
-        }
-        bool _e114 = local_123;
-        local_122 = _e114;
+    bool _e97 = local_121;
+    if (_e97) {
+        float _e101 = t_star;
+        local_122 = (s_25.t_min <= _e101);
     } else {
         local_122 = false;
     }
-    bool _e116 = local_122;
+    bool _e104 = local_122;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_124 = (_e110 <= s_25.t_max);
+        } else {
+            local_124 = true;
+        }
+        bool _e114 = local_124;
+        local_123 = _e114;
+    } else {
+        local_123 = false;
+    }
+    bool _e116 = local_123;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_124 = (_e73 > 0.0);
+        local_125 = (_e73 > 0.0);
     } else {
-        local_124 = false;
+        local_125 = false;
     }
-    bool _e129 = local_124;
+    bool _e129 = local_125;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_125 = (_e136 < (_e15 + _e15));
-    } else {
-        local_125 = false;
-    }
-    bool _e140 = local_125;
-    if (_e140) {
-        float _e143 = scale;
-        local_126 = (_e143 < _e15);
+        local_126 = (_e136 < (_e15 + _e15));
     } else {
         local_126 = false;
     }
-    bool near_1 = local_126;
+    bool _e140 = local_126;
+    if (_e140) {
+        float _e143 = scale;
+        local_127 = (_e143 < _e15);
+    } else {
+        local_127 = false;
+    }
+    bool near_1 = local_127;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_127 = _e154;
+        local_128 = _e154;
     } else {
-        local_127 = false;
+        local_128 = false;
     }
-    bool _e156 = local_127;
+    bool _e156 = local_128;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_128 = _e163;
+        local_129 = _e163;
     } else {
-        local_128 = false;
+        local_129 = false;
     }
-    bool _e165 = local_128;
+    bool _e165 = local_129;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -5542,11 +5586,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_129 = (min(-(_e194), _e197) < 0.5);
+        local_130 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_129 = false;
+        local_130 = false;
     }
-    bool sliver = local_129;
+    bool sliver = local_130;
     bool loop_init_26 = true;
     while(true) {
         if (!loop_init_26) {
@@ -5562,31 +5606,31 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         {
             uint _e208 = i_21;
             if ((_e208 == 0u)) {
-                local_130 = sliver;
+                local_131 = sliver;
             } else {
-                local_130 = false;
+                local_131 = false;
             }
-            bool _e214 = local_130;
+            bool _e214 = local_131;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_21;
-                local_131 = (_e219 > 0u);
+                local_132 = (_e219 > 0u);
             } else {
-                local_131 = false;
+                local_132 = false;
             }
-            bool _e223 = local_131;
+            bool _e223 = local_132;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_21;
             if ((_e224 == 2u)) {
-                local_132 = infinite_4;
+                local_133 = infinite_4;
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            bool _e230 = local_132;
+            bool _e230 = local_133;
             if (_e230) {
                 continue;
             }
@@ -5595,11 +5639,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if ((_e233 > 0.0)) {
                 uint _e238 = i_21;
                 float _e240 = at[_e238];
-                local_133 = (_e240 < _e15);
+                local_134 = (_e240 < _e15);
             } else {
-                local_133 = false;
+                local_134 = false;
             }
-            bool _e243 = local_133;
+            bool _e243 = local_134;
             if (_e243) {
                 uint _e244 = i_21;
                 AirlightOuter _e246 = g_24;
@@ -5659,11 +5703,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
             if ((_e303 > _e307)) {
                 uint _e311 = i_22;
                 float _e313 = cuts_2[_e311];
-                local_134 = (_e313 < _e288);
+                local_135 = (_e313 < _e288);
             } else {
-                local_134 = false;
+                local_135 = false;
             }
-            bool _e316 = local_134;
+            bool _e316 = local_135;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5750,14 +5794,14 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_135 = false;
+    bool local_136 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_135 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_136 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_135 = true;
+        local_136 = true;
     }
-    bool _e11 = local_135;
+    bool _e11 = local_136;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -5766,17 +5810,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_2) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_136 = false;
+    bool local_137 = false;
     AirlightCanonical g_26 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_2 = n_2.scene;
     bool _e7 = airlight_vec_finite(p_2.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_2.dir);
-        local_136 = _e11;
+        local_137 = _e11;
     } else {
-        local_136 = false;
+        local_137 = false;
     }
-    bool _e13 = local_136;
+    bool _e13 = local_137;
     if (_e13) {
         g_26 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -5800,21 +5844,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
-    bool local_137 = false;
     bool local_138 = false;
+    bool local_139 = false;
     bool _e1 = airlight_valid(s_27);
     if (!(!(_e1))) {
-        local_137 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_137 = true;
-    }
-    bool _e10 = local_137;
-    if (!(_e10)) {
-        local_138 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_138 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_138 = true;
     }
-    bool _e18 = local_138;
+    bool _e10 = local_138;
+    if (!(_e10)) {
+        local_139 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_139 = true;
+    }
+    bool _e18 = local_139;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5823,21 +5867,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_28) {
-    bool local_139 = false;
     bool local_140 = false;
+    bool local_141 = false;
     bool _e1 = airlight_valid(s_28);
     if (!(!(_e1))) {
-        local_139 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_139 = true;
-    }
-    bool _e10 = local_139;
-    if (!(_e10)) {
-        local_140 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_140 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_140 = true;
     }
-    bool _e18 = local_140;
+    bool _e10 = local_140;
+    if (!(_e10)) {
+        local_141 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_141 = true;
+    }
+    bool _e18 = local_141;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5869,17 +5913,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_6 = 0.0;
+    float k_7 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_141 = false;
-    float f = 0.0;
     bool local_142 = false;
+    float f = 0.0;
+    bool local_143 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_143 = false;
     bool local_144 = false;
     bool local_145 = false;
+    bool local_146 = false;
     bool _e1 = airlight_valid(s_29);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -5913,8 +5957,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
             float c_15 = (0.5 * (_e80 + _e81));
             float _e85 = b_13;
             float _e86 = a_17;
-            float hw_3 = (0.5 * (_e85 - _e86));
-            k_6 = 0.0;
+            float hw_2 = (0.5 * (_e85 - _e86));
+            k_7 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
             bool loop_init_29 = true;
@@ -5935,12 +5979,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
-                        local_141 = (_e116 < 6u);
+                        local_142 = (_e116 < 6u);
                     } else {
-                        local_141 = false;
+                        local_142 = false;
                     }
-                    bool _e120 = local_141;
-                    float w_8 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
+                    bool _e120 = local_142;
+                    float w_8 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
                     AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_8);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
@@ -5949,19 +5993,19 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             return _e128;
                         }
                         if ((s_29.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_142 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_143 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_142 = false;
+                            local_143 = false;
                         }
-                        bool _e141 = local_142;
+                        bool _e141 = local_143;
                         if (_e141) {
                             return _e128;
                         }
                         f = (_e128.in_scatter * _e122.weight);
                     }
-                    float _e145 = k_6;
+                    float _e145 = k_7;
                     float _e147 = f;
-                    k_6 = (_e145 + (node_1.y * _e147));
+                    k_7 = (_e145 + (node_1.y * _e147));
                     float _e150 = gauss;
                     float _e152 = f;
                     gauss = (_e150 + (node_1.z * _e152));
@@ -5970,10 +6014,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
             uint _e158 = slot_1;
             float _e159 = a_17;
             float _e160 = b_13;
-            float _e161 = k_6;
-            float _e163 = k_6;
+            float _e161 = k_7;
+            float _e163 = k_7;
             float _e165 = gauss;
-            airlight_list_set(list_1, _e158, vec4(_e159, _e160, (_e161 * hw_3), abs(((_e163 * hw_3) - (_e165 * hw_3)))));
+            airlight_list_set(list_1, _e158, vec4(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
             uint _e170 = slot_1;
             uint _e171 = count_2;
             if ((_e170 == _e171)) {
@@ -6021,18 +6065,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_143 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_143 = true;
-                            }
-                            bool _e217 = local_143;
-                            if (!(_e217)) {
-                                bool _e221 = airlight_is_finite(total_4);
-                                local_144 = !(_e221);
+                                local_144 = (_e213 == _e6.max_panels);
                             } else {
                                 local_144 = true;
                             }
-                            bool _e224 = local_144;
+                            bool _e217 = local_144;
+                            if (!(_e217)) {
+                                bool _e221 = airlight_is_finite(total_4);
+                                local_145 = !(_e221);
+                            } else {
+                                local_145 = true;
+                            }
+                            bool _e224 = local_145;
                             if (_e224) {
                                 break;
                             }
@@ -6040,22 +6084,22 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             vec4 _e226 = airlight_list_get(_e225, worst_1);
                             float wa_1 = _e226.x;
                             float wb_1 = _e226.y;
-                            float mid_3 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_3 > wa_1)) {
-                                local_145 = (mid_3 < wb_1);
+                            float mid_1 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_1 > wa_1)) {
+                                local_146 = (mid_1 < wb_1);
                             } else {
-                                local_145 = false;
+                                local_146 = false;
                             }
-                            bool _e237 = local_145;
+                            bool _e237 = local_146;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e226.xyz, 0.0));
                                 continue;
                             }
                             a_17 = wa_1;
-                            b_13 = mid_3;
+                            b_13 = mid_1;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_3;
+                            queued_lo = mid_1;
                             queued_hi = wb_1;
                             split = true;
                             break;

@@ -146,6 +146,9 @@ static const uint AIRLIGHT_PANEL_LIST = 8u;
 static const float AIRLIGHT_Y_PANEL_EXPONENT = 4.0;
 static const uint AIRLIGHT_ALIASING_MARGIN = 3u;
 static const float AIRLIGHT_INV_ODD_FACTORIAL = 2.9019636e-8;
+static const float AIRLIGHT_INV_ODD_FACTORIAL_1_ = 4.933338e-7;
+static const float AIRLIGHT_INV_ODD_FACTORIAL_2_ = 7.4000072e-6;
+static const float AIRLIGHT_UNCUT_SPAN = 21.101269;
 static const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 static const float AIRLIGHT_PI = 3.1415927;
 static const float AIRLIGHT_EULER_GAMMA = 0.5772157;
@@ -1010,8 +1013,8 @@ float airlight_moment_gauss(AirlightHalf half_)
     uint j = 0u;
     float dv = (float)0;
 
-    float hw_1 = (half_.dy * 0.5);
-    float yc = (half_.y_lo + hw_1);
+    float hw = (half_.dy * 0.5);
+    float yc = (half_.y_lo + hw);
     float2 nodes[4] = airlight_Constructarray4_float2_(float2(-0.33998105, 0.65214515), float2(0.33998105, 0.65214515), float2(-0.8611363, 0.34785485), float2(0.8611363, 0.34785485));
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
@@ -1031,15 +1034,15 @@ float airlight_moment_gauss(AirlightHalf half_)
         {
             uint _e26 = j;
             float xi = nodes[min(uint(_e26), 3u)].x;
-            float y_6 = (yc + (hw_1 * xi));
-            dv = (hw_1 * (1.0 + xi));
+            float y_6 = (yc + (hw * xi));
+            dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw_1 * (1.0 - xi)) / (y_6 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_6 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw_1) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_6 * y_6))));
+            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_6 * y_6))));
         }
     }
     float _e61 = m;
@@ -2659,13 +2662,13 @@ float airlight_integrate_piece(AirlightScene s_8, AirlightCanonical g_10, float 
                         continue;
                     }
                     const float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid_1 = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
+                    float mid = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
                     a_10 = wa;
-                    b_9 = mid_1;
+                    b_9 = mid;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid_1;
+                    next_a = mid;
                     next_b = wb;
                     break;
                 }
@@ -2728,7 +2731,7 @@ float airlight_angle_y(float u)
     return (u + _e5);
 }
 
-float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float step_1)
+float airlight_angle_floor(float side_1, float gap_1, float psi0_, float psi1_, float inv_hw, float step_1)
 {
     bool local_25 = (bool)0;
 
@@ -2737,19 +2740,22 @@ float airlight_angle_floor(float side_1, float gap_1, float mid, float hw, float
     } else {
         local_25 = true;
     }
-    bool _e14 = local_25;
-    if (_e14) {
+    bool _e15 = local_25;
+    if (_e15) {
         return 0.0;
     }
     float y_9 = (gap_1 + sqrt((gap_1 * (2.0 + gap_1))));
     float im_1 = ((y_9 + y_9) / (2.0 + y_9));
-    float re_2 = ((side_1 > 0.0) ? -1.5707964 : 1.5707964);
-    const float _e33 = airlight_bernstein_rho(((re_2 - mid) / hw), (im_1 / hw));
+    float offset_1 = ((side_1 > 0.0) ? psi0_ : psi1_);
+    const float _e33 = airlight_bernstein_rho((1.0 + (offset_1 * inv_hw)), (im_1 * inv_hw));
     return (step_1 / _e33);
 }
 
-float airlight_cut_length(float big_h_1, float v_s)
+float airlight_cut_length(float big_h_1, float v_s, float span)
 {
+    if (((big_h_1 * span) <= AIRLIGHT_UNCUT_SPAN)) {
+        return AIRLIGHT_FLT_MAX;
+    }
     float inv_h = (1.0 / big_h_1);
     float w_3 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
@@ -2775,11 +2781,16 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     bool local_26 = (bool)0;
     float y1_ = AIRLIGHT_FLT_MAX;
     float y_cut = AIRLIGHT_FLT_MAX;
-    float psi1_ = 0.0;
+    float psi1_1 = 0.0;
+    float k_2 = 1.0;
+    float wy = 1.0;
+    float wx = (float)0;
     float width = (float)0;
     float degree_1 = 0.0;
     float lambda_1 = (float)0;
     float rate = 0.0;
+    float exponential = 0.0;
+    bool local_27 = (bool)0;
     float samples_3[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float value_1 = 0.0;
     float mass_4 = 0.0;
@@ -2787,7 +2798,7 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
     float f_max_5 = 0.0;
     uint i_11 = 0u;
     float m_3[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
     float x_10 = 0.0;
 
     if ((s_9.light_kind == AIRLIGHT_LIGHT_SPOT)) {
@@ -2810,197 +2821,228 @@ float2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11)
         y1_ = _e29;
     }
     if ((big_h_7 > 0.0)) {
-        const float _e34 = airlight_cut_length(big_h_7, _e26);
-        y_cut = (_e26 + _e34);
+        float _e34 = y1_;
+        const float _e36 = airlight_cut_length(big_h_7, _e26, (_e34 - _e26));
+        y_cut = (_e26 + _e36);
     }
-    const float _e38 = airlight_atan2_upper(1.0, -(u0_));
-    const float _e42 = airlight_atan2_upper(1.0, u0_);
-    width = _e42;
-    float _e44 = y_cut;
-    float _e45 = y1_;
-    if ((_e44 < _e45)) {
-        float _e47 = y_cut;
-        const float _e50 = airlight_atan((1.0 / _e47));
-        psi1_ = (2.0 * _e50);
-        float _e53 = y_cut;
-        float _e55 = y_cut;
-        const float _e59 = airlight_atan2_upper((_e53 - _e26), (1.0 + (_e26 * _e55)));
-        width = (2.0 * _e59);
+    const float _e40 = airlight_atan2_upper(1.0, -(u0_));
+    wx = u0_;
+    float _e48 = y_cut;
+    float _e49 = y1_;
+    if ((_e48 < _e49)) {
+        float _e51 = y_cut;
+        const float _e54 = airlight_atan((1.0 / _e51));
+        psi1_1 = (2.0 * _e54);
+        k_2 = 2.0;
+        float _e58 = y_cut;
+        wy = (_e58 - _e26);
+        float _e60 = y_cut;
+        wx = (1.0 + (_e26 * _e60));
     } else {
         if (u1_finite) {
-            const float _e63 = airlight_atan2_upper(1.0, u1_);
-            psi1_ = _e63;
-            const float _e71 = airlight_atan2_upper(((g_11.t_hi - g_11.t_lo) / h_3), (1.0 + (u0_ * u1_)));
-            width = _e71;
+            const float _e65 = airlight_atan2_upper(1.0, u1_);
+            psi1_1 = _e65;
+            wy = ((g_11.t_hi - g_11.t_lo) / h_3);
+            wx = (1.0 + (u0_ * u1_));
         }
     }
-    float _e72 = width;
-    float hw_2 = (_e72 * 0.5);
-    if (!((hw_2 > 0.0))) {
+    float _e75 = psi1_1;
+    float difference = ((AIRLIGHT_PI - _e40) - _e75);
+    width = difference;
+    if (!((difference >= 1.0))) {
+        float _e81 = k_2;
+        float _e82 = wy;
+        float _e83 = wx;
+        const float _e84 = airlight_atan2_upper(_e82, _e83);
+        width = (_e81 * _e84);
+    }
+    float _e86 = width;
+    float hw_1 = (_e86 * 0.5);
+    if (!((hw_1 > 0.0))) {
         return float2(0.0, 0.0);
     }
-    float mid_2 = ((_e38 + hw_2) - 1.5707964);
-    float _e84 = y1_;
-    float _e85 = y_cut;
-    float y_end = min(_e84, _e85);
+    float inv_hw_1 = (1.0 / hw_1);
+    float _e97 = y1_;
+    float _e98 = y_cut;
+    float y_end = min(_e97, _e98);
     float y_e = min((_e26 + (1.0 / big_h_7)), y_end);
     if ((s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         degree_1 = s_9.light_param_a;
     }
-    float _e97 = degree_1;
-    lambda_1 = (sqrt(_e97) * hw_2);
+    float _e110 = degree_1;
+    lambda_1 = (sqrt(_e110) * hw_1);
     if ((big_h_7 > 0.0)) {
-        float _e103 = lambda_1;
-        lambda_1 = (_e103 + (min((big_h_7 * (y_end - _e26)), ((hw_2 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
+        float _e116 = lambda_1;
+        lambda_1 = (_e116 + (min((big_h_7 * (y_end - _e26)), ((hw_1 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
     }
-    float _e115 = lambda_1;
-    float predicted = (pow(_e115, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL);
-    if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
-        return float2(0.0, 0.0);
-    }
-    const float3 _e126 = airlight_singular_steps(s_9);
-    float step_3 = _e126.y;
+    const float3 _e128 = airlight_singular_steps(s_9);
+    float step_3 = _e128.y;
     float p0_4 = s_9.phase_param_a;
     switch(s_9.phase_kind) {
         case 2u:
         case 4u: {
-            const float _e132 = airlight_hg_gap(p0_4);
-            const float _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
-            rate = _e133;
+            const float _e134 = airlight_hg_gap(p0_4);
+            float _e135 = psi1_1;
+            const float _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_3);
+            rate = _e136;
             break;
         }
         case 3u: {
             float a_23 = abs(p0_4);
-            const float _e142 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), mid_2, hw_2, step_3);
-            rate = _e142;
+            float _e145 = psi1_1;
+            const float _e146 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_3);
+            rate = _e146;
             break;
         }
         case 5u: {
             float p1_3 = s_9.phase_param_b;
-            const float _e144 = airlight_hg_gap(p0_4);
-            const float _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
-            const float _e146 = airlight_hg_gap(p1_3);
-            const float _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
-            rate = max(_e145, _e147);
+            const float _e148 = airlight_hg_gap(p0_4);
+            float _e149 = psi1_1;
+            const float _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_3);
+            const float _e151 = airlight_hg_gap(p1_3);
+            float _e152 = psi1_1;
+            const float _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_3);
+            rate = max(_e150, _e153);
             break;
         }
         default: {
             break;
         }
     }
-    float _e149 = rate;
-    if (!((pow(_e149, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e155 = psi1_1;
+    float d_3 = (_e155 * inv_hw_1);
+    if ((big_h_7 > 0.0)) {
+        exponential = (1.0 / ((1.0 + d_3) + sqrt((d_3 * (2.0 + d_3)))));
+    }
+    float _e171 = lambda_1;
+    float predicted = (pow(_e171, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL);
+    float _e175 = lambda_1;
+    float _e181 = rate;
+    float _e183 = exponential;
+    float decay_2 = max(max((_e175 / ((2.0 * 8.0) - 1.0)), _e181), _e183);
+    float _e185 = lambda_1;
+    float _e191 = lambda_1;
+    float estimated = (((pow(_e185, (8.0 - 1.0)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e191, (8.0 - 2.0)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8.0 + 1.0) - 3.0)));
+    if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
+        local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
+    } else {
+        local_27 = false;
+    }
+    bool _e213 = local_27;
+    if (_e213) {
         return float2(0.0, 0.0);
     }
-    if ((big_h_7 > 0.0)) {
-        float _e160 = rate;
-        const float _e165 = airlight_bernstein_rho(((1.5707964 - mid_2) / hw_2), 0.0);
-        rate = max(_e160, (1.0 / _e165));
+    float _e217 = rate;
+    if (!((pow(_e217, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+        return float2(0.0, 0.0);
     }
-    const float2 _e169[4] = airlight_gauss_rule();
-    const float _e170[8] = airlight_zero_terms();
-    samples_3 = _e170;
+    float _e225 = rate;
+    float _e226 = exponential;
+    rate = max(_e225, _e226);
+    const float2 _e228[4] = airlight_gauss_rule();
+    const float _e229[8] = airlight_zero_terms();
+    samples_3 = _e229;
     uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
         loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e263 = i_11;
-            i_11 = (_e263 + 1u);
+            uint _e322 = i_11;
+            i_11 = (_e322 + 1u);
         }
         loop_init_16 = false;
-        uint _e182 = i_11;
-        if ((_e182 < AIRLIGHT_TERMS)) {
+        uint _e241 = i_11;
+        if ((_e241 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e185 = i_11;
-            const float _e186 = airlight_node(_e169, _e185);
-            float lower = (_e38 + (hw_2 * (1.0 + _e186)));
+            uint _e244 = i_11;
+            const float _e245 = airlight_node(_e228, _e244);
+            float lower = (_e40 + (hw_1 * (1.0 + _e245)));
             bool below_1 = (lower <= 1.5707964);
-            float _e193 = psi1_;
-            const float2 _e199 = airlight_cos_sin((below_1 ? lower : (_e193 + (hw_2 * (1.0 - _e186)))));
-            float cs_1 = _e199.y;
-            float sn = (below_1 ? -(_e199.x) : _e199.x);
-            float near_pole = (1.0 + _e199.x);
+            float _e252 = psi1_1;
+            const float2 _e258 = airlight_cos_sin((below_1 ? lower : (_e252 + (hw_1 * (1.0 - _e245)))));
+            float cs_1 = _e258.y;
+            float sn = (below_1 ? -(_e258.x) : _e258.x);
+            float near_pole = (1.0 + _e258.x);
             float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
             float y_10 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
             float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            const float _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
-            const float _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
-            float f_2 = (_e233 * _e239);
+            const float _e292 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
+            const float _e298 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = (_e292 * _e298);
             float gw = (weight_2 * f_2);
-            uint _e242 = i_11;
-            samples_3[min(uint(_e242), 7u)] = gw;
-            uint _e244 = i_11;
-            float w_4 = _e169[min(uint(airlight_naga_div(_e244, 2u)), 3u)].y;
-            float _e249 = value_1;
-            value_1 = (_e249 + (w_4 * gw));
-            float _e252 = mass_4;
-            mass_4 = (_e252 + (w_4 * weight_2));
-            float _e255 = magnitude;
-            magnitude = (_e255 + (w_4 * abs(gw)));
-            float _e259 = f_max_5;
-            f_max_5 = max(_e259, abs(f_2));
+            uint _e301 = i_11;
+            samples_3[min(uint(_e301), 7u)] = gw;
+            uint _e303 = i_11;
+            float w_4 = _e228[min(uint(airlight_naga_div(_e303, 2u)), 3u)].y;
+            float _e308 = value_1;
+            value_1 = (_e308 + (w_4 * gw));
+            float _e311 = mass_4;
+            mass_4 = (_e311 + (w_4 * weight_2));
+            float _e314 = magnitude;
+            magnitude = (_e314 + (w_4 * abs(gw)));
+            float _e318 = f_max_5;
+            f_max_5 = max(_e318, abs(f_2));
         }
     }
-    float _e265[8] = samples_3;
-    const float _e266[8] = airlight_legendre(_e265);
-    const float _e267[8] = airlight_zero_terms();
-    m_3 = _e267;
+    float _e324[8] = samples_3;
+    const float _e325[8] = airlight_legendre(_e324);
+    const float _e326[8] = airlight_zero_terms();
+    m_3 = _e326;
     m_3[0] = 2.0;
-    const float _e271 = airlight_tail_estimate(_e266);
-    float _e274[8] = m_3;
-    float _e275 = rate;
-    const float _e276 = airlight_error_factor(_e266, _e274, _e275);
-    float error_4 = ((2.0 * _e271) * _e276);
-    float _e279 = magnitude;
-    const float _e282 = airlight_transform_noise(2.0, (0.5 * _e279));
-    float _e284 = value_1;
-    float _e287 = f_max_5;
-    float _e289 = mass_4;
-    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
+    const float _e330 = airlight_tail_estimate(_e325);
+    float _e333[8] = m_3;
+    float _e334 = rate;
+    const float _e335 = airlight_error_factor(_e325, _e333, _e334);
+    float error_4 = ((2.0 * _e330) * _e335);
+    float _e338 = magnitude;
+    const float _e341 = airlight_transform_noise(2.0, (0.5 * _e338));
+    float _e343 = value_1;
+    float _e346 = f_max_5;
+    float _e348 = mass_4;
+    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e343), ((AIRLIGHT_PANEL_FLOOR * _e346) * _e348)));
     if (!((error_4 <= accepted))) {
-        local_27 = (error_4 <= _e282);
+        local_28 = (error_4 <= _e341);
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    bool _e299 = local_27;
-    if (!(_e299)) {
+    bool _e358 = local_28;
+    if (!(_e358)) {
         return float2(0.0, 0.0);
     }
     if ((s_9.sigma_t > 0.0)) {
-        const float _e310 = airlight_hypot_one(u0_);
-        x_10 = (s_9.sigma_t * (h_3 * _e310));
+        const float _e369 = airlight_hypot_one(u0_);
+        x_10 = (s_9.sigma_t * (h_3 * _e369));
     }
-    float _e315 = x_10;
-    float _e316 = value_1;
-    const float _e320 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5));
-    return float2(1.0, _e320);
+    float _e374 = x_10;
+    float _e375 = value_1;
+    const float _e379 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e374, ((_e375 * hw_1) * 0.5));
+    return float2(1.0, _e379);
 }
 
-float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_2)
+float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3)
 {
-    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
     float sb = 1.0;
     float r1_ = -1.0;
     float r2_2 = -1.0;
 
-    float a0_ = (k_2 + (sigma_9 * d_el));
+    float a0_ = (k_3 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
-    float c0_ = (k_2 - (sigma_9 * d_el));
+    float c0_ = (k_3 - (sigma_9 * d_el));
     float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if (!(!((scale_1 > 0.0)))) {
         const bool _e21 = airlight_is_finite(scale_1);
-        local_28 = !(_e21);
+        local_29 = !(_e21);
     } else {
-        local_28 = true;
+        local_29 = true;
     }
-    bool _e24 = local_28;
+    bool _e24 = local_29;
     if (_e24) {
         return float2(-1.0, -1.0);
     }
@@ -3035,13 +3077,13 @@ float airlight_cosine(AirlightCanonical g_12, float sigma_10, float y_4)
 
 bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
 {
-    bool local_29 = (bool)0;
     bool local_30 = (bool)0;
-    float y1_1 = (float)0;
     bool local_31 = (bool)0;
+    float y1_1 = (float)0;
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
     bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
 
     const float _e9 = airlight_cosine(g_13, sigma_11, (0.5 * (lo_1 + hi_1)));
     if (!((_e9 < bound))) {
@@ -3049,68 +3091,68 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11,
     }
     if ((lo_1 == half_11.y_lo)) {
         const float _e17 = airlight_cosine(g_13, sigma_11, lo_1);
-        local_29 = !((_e17 < bound));
+        local_30 = !((_e17 < bound));
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    bool _e21 = local_29;
+    bool _e21 = local_30;
     if (_e21) {
         return false;
     }
     if ((hi_1 == half_11.y_hi)) {
         const float _e27 = airlight_cosine(g_13, sigma_11, hi_1);
-        local_30 = !((_e27 < bound));
+        local_31 = !((_e27 < bound));
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool _e31 = local_30;
+    bool _e31 = local_31;
     if (_e31) {
         return false;
     }
     float a_25 = (sigma_11 * g_13.d_el);
-    float d_3 = g_13.d_c;
-    if ((d_3 == 0.0)) {
+    float d_4 = g_13.d_c;
+    if ((d_4 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
+    float root_1 = sqrt(((a_25 * a_25) + (d_4 * d_4)));
+    y1_1 = ((root_1 - a_25) / d_4);
     if ((a_25 > 0.0)) {
-        y1_1 = (d_3 / (a_25 + root_1));
+        y1_1 = (d_4 / (a_25 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
     float _e53 = y1_1;
     if ((_e53 > lo_1)) {
         float _e57 = y1_1;
-        local_31 = (_e57 < hi_1);
-    } else {
-        local_31 = false;
-    }
-    bool _e60 = local_31;
-    if (_e60) {
-        float _e63 = y1_1;
-        const float _e64 = airlight_cosine(g_13, sigma_11, _e63);
-        local_32 = !((_e64 < bound));
+        local_32 = (_e57 < hi_1);
     } else {
         local_32 = false;
     }
-    bool _e68 = local_32;
+    bool _e60 = local_32;
+    if (_e60) {
+        float _e63 = y1_1;
+        const float _e64 = airlight_cosine(g_13, sigma_11, _e63);
+        local_33 = !((_e64 < bound));
+    } else {
+        local_33 = false;
+    }
+    bool _e68 = local_33;
     if (_e68) {
         return false;
     }
     if ((y2_2 > lo_1)) {
-        local_33 = (y2_2 < hi_1);
-    } else {
-        local_33 = false;
-    }
-    bool _e75 = local_33;
-    if (_e75) {
-        const float _e78 = airlight_cosine(g_13, sigma_11, y2_2);
-        local_34 = !((_e78 < bound));
+        local_34 = (y2_2 < hi_1);
     } else {
         local_34 = false;
     }
-    bool _e82 = local_34;
+    bool _e75 = local_34;
+    if (_e75) {
+        const float _e78 = airlight_cosine(g_13, sigma_11, y2_2);
+        local_35 = !((_e78 < bound));
+    } else {
+        local_35 = false;
+    }
+    bool _e82 = local_35;
     if (_e82) {
         return false;
     }
@@ -3130,16 +3172,16 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
     float k_in = (float)0;
     float k_out = (float)0;
     uint i_12 = 0u;
-    bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
     uint i_13 = 0u;
     uint j_2 = (uint)0;
     float total_2 = 0.0;
     float lo_2 = (float)0;
     uint i_14 = 0u;
     float hi_2 = (float)0;
-    bool local_36 = (bool)0;
     bool local_37 = (bool)0;
     bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
 
     if (isotropic) {
         const float _e7 = airlight_integrand(s_10, g_14, sigma_12, 0.0);
@@ -3186,11 +3228,11 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
                 if ((_e56 > half_12.y_lo)) {
                     uint _e61 = i_12;
                     float _e63 = cuts[min(uint(_e61), 3u)];
-                    local_35 = (_e63 < half_12.y_hi);
+                    local_36 = (_e63 < half_12.y_hi);
                 } else {
-                    local_35 = false;
+                    local_36 = false;
                 }
-                bool _e67 = local_35;
+                bool _e67 = local_36;
                 if (!(_e67)) {
                     uint _e69 = i_12;
                     cuts[min(uint(_e69), 3u)] = 2.0;
@@ -3272,11 +3314,11 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
             if ((_e127 < 4u)) {
                 uint _e132 = i_14;
                 float _e134 = cuts[min(uint(_e132), 3u)];
-                local_36 = (_e134 < 2.0);
+                local_37 = (_e134 < 2.0);
             } else {
-                local_36 = false;
+                local_37 = false;
             }
-            bool _e138 = local_36;
+            bool _e138 = local_37;
             if (_e138) {
                 uint _e139 = i_14;
                 float _e141 = cuts[min(uint(_e139), 3u)];
@@ -3290,11 +3332,11 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
                     float _e151 = lo_2;
                     float _e152 = hi_2;
                     const bool _e153 = airlight_dark(g_14, sigma_12, half_12, _e150, _e151, _e152);
-                    local_37 = _e153;
+                    local_38 = _e153;
                 } else {
-                    local_37 = false;
+                    local_38 = false;
                 }
-                bool _e155 = local_37;
+                bool _e155 = local_38;
                 if (!(_e155)) {
                     float _e157 = total_2;
                     float _e158 = lo_2;
@@ -3309,11 +3351,11 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
             if ((_e163 < 4u)) {
                 uint _e168 = i_14;
                 float _e170 = cuts[min(uint(_e168), 3u)];
-                local_38 = (_e170 >= 2.0);
+                local_39 = (_e170 >= 2.0);
             } else {
-                local_38 = false;
+                local_39 = false;
             }
-            bool _e174 = local_38;
+            bool _e174 = local_39;
             if (_e174) {
                 break;
             }
@@ -3325,17 +3367,17 @@ float airlight_half(AirlightScene s_10, AirlightCanonical g_14, float sigma_12, 
 
 float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15)
 {
-    bool local_39 = (bool)0;
-    float span = (float)0;
+    bool local_40 = (bool)0;
+    float span_1 = (float)0;
     float e2_[10] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     float tail = 0.0;
 
     if (!(g_15.t_hi_infinite)) {
-        local_39 = (g_15.x_h > g_15.t_hi);
+        local_40 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_39 = false;
+        local_40 = false;
     }
-    bool _e10 = local_39;
+    bool _e10 = local_40;
     if (_e10) {
         const float _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         const float _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1.0);
@@ -3351,11 +3393,11 @@ float airlight_on_line(AirlightScene s_11, AirlightCanonical g_15)
     float s0_ = (g_15.t_lo - g_15.x_h);
     float s1_ = (g_15.t_hi - g_15.x_h);
     if ((s_11.sigma_t == 0.0)) {
-        span = (1.0 / s0_);
+        span_1 = (1.0 / s0_);
         if (!(g_15.t_hi_infinite)) {
-            span = (((s1_ - s0_) / s1_) / s0_);
+            span_1 = (((s1_ - s0_) / s1_) / s0_);
         }
-        float _e75 = span;
+        float _e75 = span_1;
         const float _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2.0, 0.0, (f_4 * _e75));
         return _e77;
     }
@@ -3408,8 +3450,8 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_40 = (bool)0;
     bool local_41 = (bool)0;
+    bool local_42 = (bool)0;
     float x_11 = 0.0;
 
     float h_4 = g_16.h;
@@ -3419,11 +3461,11 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
     float u_e = ((g_16.t_hi - g_16.x_h) / h_4);
     if (!(g_16.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
-        local_40 = _e24;
+        local_41 = _e24;
     } else {
-        local_40 = false;
+        local_41 = false;
     }
-    bool _e26 = local_40;
+    bool _e26 = local_41;
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
@@ -3431,11 +3473,11 @@ float airlight_whole_line(AirlightScene s_12, AirlightCanonical g_16, float big_
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
-            local_41 = _e40;
+            local_42 = _e40;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        bool _e42 = local_41;
+        bool _e42 = local_42;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3474,27 +3516,27 @@ AirlightResult ConstructAirlightResult(float arg0, uint arg1) {
 
 AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
 {
-    bool local_42 = (bool)0;
     bool local_43 = (bool)0;
     bool local_44 = (bool)0;
     bool local_45 = (bool)0;
-    float gap_2 = 0.0;
     bool local_46 = (bool)0;
+    float gap_2 = 0.0;
+    bool local_47 = (bool)0;
 
     float t0_ = g_17.t_lo;
     float t1_ = g_17.t_hi;
     if (!(g_17.t_hi_infinite)) {
-        local_42 = (t1_ > t0_);
-    } else {
-        local_42 = true;
-    }
-    bool _e10 = local_42;
-    if (!(!(_e10))) {
-        local_43 = ((s_13.sigma_s * s_13.intensity) == 0.0);
+        local_43 = (t1_ > t0_);
     } else {
         local_43 = true;
     }
-    bool _e21 = local_43;
+    bool _e10 = local_43;
+    if (!(!(_e10))) {
+        local_44 = ((s_13.sigma_s * s_13.intensity) == 0.0);
+    } else {
+        local_44 = true;
+    }
+    bool _e21 = local_44;
     if (_e21) {
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
@@ -3503,16 +3545,16 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
     float x_h = g_17.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_17.t_hi_infinite)) {
-            local_45 = (x_h <= t1_);
+            local_46 = (x_h <= t1_);
         } else {
-            local_45 = true;
+            local_46 = true;
         }
-        bool _e36 = local_45;
-        local_44 = _e36;
+        bool _e36 = local_46;
+        local_45 = _e36;
     } else {
-        local_44 = false;
+        local_45 = false;
     }
-    bool inside = local_44;
+    bool inside = local_45;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3522,11 +3564,11 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_46 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_47 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    bool _e55 = local_46;
+    bool _e55 = local_47;
     if (_e55) {
         const float _e56 = airlight_on_line(s_13, g_17);
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
@@ -3542,76 +3584,76 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
 
 bool airlight_isotropic_scene(AirlightScene s_14)
 {
-    bool local_47 = (bool)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
     bool local_50 = (bool)0;
     bool local_51 = (bool)0;
     bool local_52 = (bool)0;
+    bool local_53 = (bool)0;
 
     if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_48 = (s_14.light_param_a == 0.0);
+            local_49 = (s_14.light_param_a == 0.0);
         } else {
-            local_48 = false;
+            local_49 = false;
         }
-        bool _e16 = local_48;
-        local_47 = _e16;
+        bool _e16 = local_49;
+        local_48 = _e16;
     } else {
-        local_47 = true;
+        local_48 = true;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (_e18) {
         if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_51 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_52 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_51 = true;
+                local_52 = true;
             }
-            bool _e37 = local_51;
+            bool _e37 = local_52;
             if (_e37) {
-                local_52 = (s_14.phase_param_a == 0.0);
+                local_53 = (s_14.phase_param_a == 0.0);
             } else {
-                local_52 = false;
+                local_53 = false;
             }
-            bool _e44 = local_52;
-            local_50 = _e44;
+            bool _e44 = local_53;
+            local_51 = _e44;
         } else {
-            local_50 = true;
+            local_51 = true;
         }
-        bool _e46 = local_50;
-        local_49 = _e46;
+        bool _e46 = local_51;
+        local_50 = _e46;
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e48 = local_49;
+    bool _e48 = local_50;
     return _e48;
 }
 
 AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonical g_18)
 {
-    bool local_53 = (bool)0;
     bool local_54 = (bool)0;
     bool local_55 = (bool)0;
+    bool local_56 = (bool)0;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = (float)0;
-    bool local_56 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_57 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
     bool local_58 = (bool)0;
     bool local_59 = (bool)0;
+    bool local_60 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_60 = (bool)0;
     bool local_61 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_62 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
     bool local_63 = (bool)0;
     bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
 
     const AirlightResult _e2 = airlight_limits(s_15, g_18);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
@@ -3625,23 +3667,23 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
     float big_h_8 = (s_15.sigma_t * h_6);
     const bool _e12 = airlight_isotropic_scene(s_15);
     if (_e12) {
-        local_53 = (t0_1 < x_h_1);
-    } else {
-        local_53 = false;
-    }
-    bool _e17 = local_53;
-    if (_e17) {
-        if (!(g_18.t_hi_infinite)) {
-            local_55 = (x_h_1 < t1_1);
-        } else {
-            local_55 = true;
-        }
-        bool _e26 = local_55;
-        local_54 = _e26;
+        local_54 = (t0_1 < x_h_1);
     } else {
         local_54 = false;
     }
-    bool _e28 = local_54;
+    bool _e17 = local_54;
+    if (_e17) {
+        if (!(g_18.t_hi_infinite)) {
+            local_56 = (x_h_1 < t1_1);
+        } else {
+            local_56 = true;
+        }
+        bool _e26 = local_56;
+        local_55 = _e26;
+    } else {
+        local_55 = false;
+    }
+    bool _e28 = local_55;
     if (_e28) {
         const float _e29 = airlight_whole_line(s_15, g_18, big_h_8);
         const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
@@ -3659,11 +3701,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_18.t_hi_infinite)) {
-            local_56 = (t1_1 < x_h_1);
+            local_57 = (t1_1 < x_h_1);
         } else {
-            local_56 = false;
+            local_57 = false;
         }
-        bool _e61 = local_56;
+        bool _e61 = local_57;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3679,14 +3721,14 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_57 = (_e89 > 0.0);
+            local_58 = (_e89 > 0.0);
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        bool _e93 = local_57;
+        bool _e93 = local_58;
         if (_e93) {
             float _e95 = half_13.big_h;
-            const float _e96 = airlight_cut_length(_e95, _e67);
+            const float _e96 = airlight_cut_length(_e95, _e67, dy_1);
             if ((_e96 < dy_1)) {
                 float _e100 = half_13.big_h;
                 half_13 = ConstructAirlightHalf(false, _e100, _e67, (_e67 + _e96), _e96, _e96, false);
@@ -3700,18 +3742,18 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         total_3 = (_e108 + _e112);
     }
     if (!(g_18.t_hi_infinite)) {
-        local_58 = (t1_1 > x_h_1);
+        local_59 = (t1_1 > x_h_1);
     } else {
-        local_58 = true;
+        local_59 = true;
     }
-    bool _e120 = local_58;
+    bool _e120 = local_59;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_59 = !(_e123);
+        local_60 = !(_e123);
     } else {
-        local_59 = false;
+        local_60 = false;
     }
-    bool _e126 = local_59;
+    bool _e126 = local_60;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3721,22 +3763,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_18.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
-            local_60 = _e145;
+            local_61 = _e145;
         } else {
-            local_60 = false;
+            local_61 = false;
         }
-        bool _e147 = local_60;
+        bool _e147 = local_61;
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
-                local_61 = _e162;
+                local_62 = _e162;
             } else {
-                local_61 = false;
+                local_62 = false;
             }
-            bool _e164 = local_61;
+            bool _e164 = local_62;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3756,68 +3798,70 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         half_14 = ConstructAirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_62 = (_e183 > 0.0);
+            local_63 = (_e183 > 0.0);
         } else {
-            local_62 = false;
+            local_63 = false;
         }
-        bool _e187 = local_62;
+        bool _e187 = local_63;
         if (_e187) {
             float _e189 = half_14.big_h;
-            const float _e192 = airlight_cut_length(_e189, (1.0 / _e131));
-            bool _e193 = infinite_2;
-            if (!(_e193)) {
-                float _e197 = dv_3;
-                local_63 = (_e192 < _e197);
+            float _e192 = dv_3;
+            bool _e194 = infinite_2;
+            const float _e196 = airlight_cut_length(_e189, (1.0 / _e131), (_e194 ? AIRLIGHT_FLT_MAX : _e192));
+            bool _e197 = infinite_2;
+            if (!(_e197)) {
+                float _e201 = dv_3;
+                local_64 = (_e196 < _e201);
             } else {
-                local_63 = true;
+                local_64 = true;
             }
-            bool _e200 = local_63;
-            if (_e200) {
-                float cut_y_lo = (_e131 / (1.0 + (_e131 * _e192)));
+            bool _e204 = local_64;
+            if (_e204) {
+                float cut_y_lo = (_e131 / (1.0 + (_e131 * _e196)));
                 if ((cut_y_lo > 0.0)) {
-                    const bool _e209 = airlight_is_finite(_e192);
-                    local_64 = _e209;
+                    const bool _e213 = airlight_is_finite(_e196);
+                    local_65 = _e213;
                 } else {
-                    local_64 = false;
+                    local_65 = false;
                 }
-                bool _e211 = local_64;
-                if (_e211) {
-                    float _e214 = half_14.big_h;
-                    half_14 = ConstructAirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
+                bool _e215 = local_65;
+                if (_e215) {
+                    float _e218 = half_14.big_h;
+                    half_14 = ConstructAirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
                 }
             }
         }
-        AirlightHalf _e220 = half_14;
-        const float _e221 = airlight_half(s_15, g_18, 1.0, _e220, _e12, f_max_7);
-        float _e222 = total_3;
-        const float _e230 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
-        total_3 = (_e222 + _e230);
+        AirlightHalf _e224 = half_14;
+        const float _e225 = airlight_half(s_15, g_18, 1.0, _e224, _e12, f_max_7);
+        float _e226 = total_3;
+        const float _e234 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        total_3 = (_e226 + _e234);
     }
-    float _e232 = total_3;
-    const AirlightResult airlightresult_7 = ConstructAirlightResult(max(_e232, 0.0), AIRLIGHT_STATUS_OK);
+    float _e236 = total_3;
+    const AirlightResult airlightresult_7 = ConstructAirlightResult(max(_e236, 0.0), AIRLIGHT_STATUS_OK);
     return airlightresult_7;
 }
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_65 = (bool)0;
     bool local_66 = (bool)0;
+    bool local_67 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    bool _e8 = local_65;
-    if (_e8) {
-        const bool _e12 = airlight_is_finite(v.z);
-        local_66 = _e12;
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    bool _e14 = local_66;
+    bool _e8 = local_66;
+    if (_e8) {
+        const bool _e12 = airlight_is_finite(v.z);
+        local_67 = _e12;
+    } else {
+        local_67 = false;
+    }
+    bool _e14 = local_67;
     return _e14;
 }
 
@@ -3832,16 +3876,16 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_67 = (bool)0;
+    bool local_68 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_67 = _e6;
+        local_68 = _e6;
     } else {
-        local_67 = false;
+        local_68 = false;
     }
-    bool _e8 = local_67;
+    bool _e8 = local_68;
     return _e8;
 }
 
@@ -3854,7 +3898,6 @@ float3 airlight_normalize(float3 v_3)
 
 bool airlight_valid(AirlightScene s_16)
 {
-    bool local_68 = (bool)0;
     bool local_69 = (bool)0;
     bool local_70 = (bool)0;
     bool local_71 = (bool)0;
@@ -3864,8 +3907,8 @@ bool airlight_valid(AirlightScene s_16)
     bool local_75 = (bool)0;
     bool local_76 = (bool)0;
     bool local_77 = (bool)0;
-    bool ok = (bool)0;
     bool local_78 = (bool)0;
+    bool ok = (bool)0;
     bool local_79 = (bool)0;
     bool local_80 = (bool)0;
     bool local_81 = (bool)0;
@@ -3893,102 +3936,103 @@ bool airlight_valid(AirlightScene s_16)
     bool local_103 = (bool)0;
     bool local_104 = (bool)0;
     bool local_105 = (bool)0;
+    bool local_106 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_16.origin);
     if (_e2) {
         const bool _e6 = airlight_vec_finite(s_16.dir);
-        local_68 = _e6;
-    } else {
-        local_68 = false;
-    }
-    bool _e8 = local_68;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_16.dir);
-        local_69 = _e12;
+        local_69 = _e6;
     } else {
         local_69 = false;
     }
-    bool _e14 = local_69;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_16.t_min);
-        local_70 = _e18;
+    bool _e8 = local_69;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_16.dir);
+        local_70 = _e12;
     } else {
         local_70 = false;
     }
-    bool _e20 = local_70;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_16.light_position);
-        local_71 = _e24;
+    bool _e14 = local_70;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_16.t_min);
+        local_71 = _e18;
     } else {
         local_71 = false;
     }
-    bool _e26 = local_71;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_16.intensity);
-        local_72 = _e30;
+    bool _e20 = local_71;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_16.light_position);
+        local_72 = _e24;
     } else {
         local_72 = false;
     }
-    bool _e32 = local_72;
-    if (_e32) {
-        local_73 = (s_16.intensity >= 0.0);
+    bool _e26 = local_72;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_16.intensity);
+        local_73 = _e30;
     } else {
         local_73 = false;
     }
-    bool _e39 = local_73;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_16.sigma_s);
-        local_74 = _e43;
+    bool _e32 = local_73;
+    if (_e32) {
+        local_74 = (s_16.intensity >= 0.0);
     } else {
         local_74 = false;
     }
-    bool _e45 = local_74;
-    if (_e45) {
-        local_75 = (s_16.sigma_s >= 0.0);
+    bool _e39 = local_74;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_16.sigma_s);
+        local_75 = _e43;
     } else {
         local_75 = false;
     }
-    bool _e52 = local_75;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_16.sigma_t);
-        local_76 = _e56;
+    bool _e45 = local_75;
+    if (_e45) {
+        local_76 = (s_16.sigma_s >= 0.0);
     } else {
         local_76 = false;
     }
-    bool _e58 = local_76;
-    if (_e58) {
-        local_77 = (s_16.sigma_t >= 0.0);
+    bool _e52 = local_76;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_16.sigma_t);
+        local_77 = _e56;
     } else {
         local_77 = false;
     }
-    bool _e65 = local_77;
+    bool _e58 = local_77;
+    if (_e58) {
+        local_78 = (s_16.sigma_t >= 0.0);
+    } else {
+        local_78 = false;
+    }
+    bool _e65 = local_78;
     ok = _e65;
     if (((s_16.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
             const bool _e76 = airlight_is_finite(s_16.t_max);
-            local_78 = _e76;
-        } else {
-            local_78 = false;
-        }
-        bool _e78 = local_78;
-        if (_e78) {
-            local_79 = (s_16.t_min <= s_16.t_max);
+            local_79 = _e76;
         } else {
             local_79 = false;
         }
-        bool _e85 = local_79;
+        bool _e78 = local_79;
+        if (_e78) {
+            local_80 = (s_16.t_min <= s_16.t_max);
+        } else {
+            local_80 = false;
+        }
+        bool _e85 = local_80;
         ok = _e85;
     }
     if ((s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         bool _e89 = ok;
         if (_e89) {
             const bool _e93 = airlight_vec_finite(s_16.light_end);
-            local_80 = _e93;
+            local_81 = _e93;
         } else {
-            local_80 = false;
+            local_81 = false;
         }
-        bool _e95 = local_80;
+        bool _e95 = local_81;
         ok = _e95;
     } else {
         if ((s_16.light_shape != AIRLIGHT_SHAPE_POINT)) {
@@ -3996,76 +4040,76 @@ bool airlight_valid(AirlightScene s_16)
         }
     }
     if (!((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_81 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_82 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_81 = true;
+        local_82 = true;
     }
-    bool _e110 = local_81;
+    bool _e110 = local_82;
     if (_e110) {
         bool _e111 = ok;
         if (_e111) {
             const bool _e115 = airlight_is_finite(s_16.brdf_scale);
-            local_82 = _e115;
-        } else {
-            local_82 = false;
-        }
-        bool _e117 = local_82;
-        if (_e117) {
-            local_83 = (s_16.brdf_scale >= 0.0);
+            local_83 = _e115;
         } else {
             local_83 = false;
         }
-        bool _e124 = local_83;
-        if (_e124) {
-            local_84 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+        bool _e117 = local_83;
+        if (_e117) {
+            local_84 = (s_16.brdf_scale >= 0.0);
         } else {
             local_84 = false;
         }
-        bool _e131 = local_84;
-        if (_e131) {
-            local_85 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e124 = local_84;
+        if (_e124) {
+            local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_85 = false;
         }
-        bool _e138 = local_85;
-        if (_e138) {
-            const float _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
-            const bool _e145 = airlight_is_finite(_e144);
-            local_86 = _e145;
+        bool _e131 = local_85;
+        if (_e131) {
+            local_86 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_86 = false;
         }
-        bool _e147 = local_86;
+        bool _e138 = local_86;
+        if (_e138) {
+            const float _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
+            const bool _e145 = airlight_is_finite(_e144);
+            local_87 = _e145;
+        } else {
+            local_87 = false;
+        }
+        bool _e147 = local_87;
         ok = _e147;
         if ((s_16.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
             bool _e151 = ok;
             if (_e151) {
                 const bool _e155 = airlight_is_finite(s_16.brdf_exponent);
-                local_87 = _e155;
-            } else {
-                local_87 = false;
-            }
-            bool _e157 = local_87;
-            if (_e157) {
-                local_88 = (s_16.brdf_exponent >= 0.0);
+                local_88 = _e155;
             } else {
                 local_88 = false;
             }
-            bool _e164 = local_88;
-            if (_e164) {
-                const bool _e168 = airlight_vec_finite(s_16.brdf_view);
-                local_89 = _e168;
+            bool _e157 = local_88;
+            if (_e157) {
+                local_89 = (s_16.brdf_exponent >= 0.0);
             } else {
                 local_89 = false;
             }
-            bool _e170 = local_89;
-            if (_e170) {
-                const bool _e174 = airlight_normalisable(s_16.brdf_view);
-                local_90 = _e174;
+            bool _e164 = local_89;
+            if (_e164) {
+                const bool _e168 = airlight_vec_finite(s_16.brdf_view);
+                local_90 = _e168;
             } else {
                 local_90 = false;
             }
-            bool _e176 = local_90;
+            bool _e170 = local_90;
+            if (_e170) {
+                const bool _e174 = airlight_normalisable(s_16.brdf_view);
+                local_91 = _e174;
+            } else {
+                local_91 = false;
+            }
+            bool _e176 = local_91;
             ok = _e176;
         }
     } else {
@@ -4077,72 +4121,72 @@ bool airlight_valid(AirlightScene s_16)
         bool _e184 = ok;
         if (_e184) {
             const bool _e188 = airlight_vec_finite(s_16.light_axis);
-            local_91 = _e188;
-        } else {
-            local_91 = false;
-        }
-        bool _e190 = local_91;
-        if (_e190) {
-            const bool _e194 = airlight_normalisable(s_16.light_axis);
-            local_92 = _e194;
+            local_92 = _e188;
         } else {
             local_92 = false;
         }
-        bool _e196 = local_92;
-        if (_e196) {
-            local_93 = (s_16.light_param_a >= 0.0);
+        bool _e190 = local_92;
+        if (_e190) {
+            const bool _e194 = airlight_normalisable(s_16.light_axis);
+            local_93 = _e194;
         } else {
             local_93 = false;
         }
-        bool _e203 = local_93;
-        if (_e203) {
-            local_94 = (s_16.light_param_a <= 1024.0);
+        bool _e196 = local_93;
+        if (_e196) {
+            local_94 = (s_16.light_param_a >= 0.0);
         } else {
             local_94 = false;
         }
-        bool _e210 = local_94;
-        if (_e210) {
-            local_95 = (frac((s_16.light_param_a * 0.5)) == 0.0);
+        bool _e203 = local_94;
+        if (_e203) {
+            local_95 = (s_16.light_param_a <= 1024.0);
         } else {
             local_95 = false;
         }
-        bool _e220 = local_95;
+        bool _e210 = local_95;
+        if (_e210) {
+            local_96 = (frac((s_16.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_96 = false;
+        }
+        bool _e220 = local_96;
         ok = _e220;
     } else {
         if ((s_16.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e224 = ok;
             if (_e224) {
                 const bool _e228 = airlight_vec_finite(s_16.light_axis);
-                local_96 = _e228;
-            } else {
-                local_96 = false;
-            }
-            bool _e230 = local_96;
-            if (_e230) {
-                const bool _e234 = airlight_normalisable(s_16.light_axis);
-                local_97 = _e234;
+                local_97 = _e228;
             } else {
                 local_97 = false;
             }
-            bool _e236 = local_97;
-            if (_e236) {
-                local_98 = (s_16.light_param_b < s_16.light_param_a);
+            bool _e230 = local_97;
+            if (_e230) {
+                const bool _e234 = airlight_normalisable(s_16.light_axis);
+                local_98 = _e234;
             } else {
                 local_98 = false;
             }
-            bool _e243 = local_98;
-            if (_e243) {
-                local_99 = (s_16.light_param_b >= -1.0);
+            bool _e236 = local_98;
+            if (_e236) {
+                local_99 = (s_16.light_param_b < s_16.light_param_a);
             } else {
                 local_99 = false;
             }
-            bool _e250 = local_99;
-            if (_e250) {
-                local_100 = (s_16.light_param_a <= 1.0);
+            bool _e243 = local_99;
+            if (_e243) {
+                local_100 = (s_16.light_param_b >= -1.0);
             } else {
                 local_100 = false;
             }
-            bool _e257 = local_100;
+            bool _e250 = local_100;
+            if (_e250) {
+                local_101 = (s_16.light_param_a <= 1.0);
+            } else {
+                local_101 = false;
+            }
+            bool _e257 = local_101;
             ok = _e257;
         } else {
             if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
@@ -4161,40 +4205,40 @@ bool airlight_valid(AirlightScene s_16)
         case 4u: {
             bool _e267 = ok;
             if (_e267) {
-                local_101 = g_ok;
+                local_102 = g_ok;
             } else {
-                local_101 = false;
+                local_102 = false;
             }
-            bool _e271 = local_101;
+            bool _e271 = local_102;
             ok = _e271;
             break;
         }
         case 5u: {
             bool _e272 = ok;
             if (_e272) {
-                local_102 = g_ok;
-            } else {
-                local_102 = false;
-            }
-            bool _e276 = local_102;
-            if (_e276) {
-                local_103 = (abs(s_16.phase_param_b) < 1.0);
+                local_103 = g_ok;
             } else {
                 local_103 = false;
             }
-            bool _e284 = local_103;
-            if (_e284) {
-                local_104 = (s_16.phase_param_c >= 0.0);
+            bool _e276 = local_103;
+            if (_e276) {
+                local_104 = (abs(s_16.phase_param_b) < 1.0);
             } else {
                 local_104 = false;
             }
-            bool _e291 = local_104;
-            if (_e291) {
-                local_105 = (s_16.phase_param_c <= 1.0);
+            bool _e284 = local_104;
+            if (_e284) {
+                local_105 = (s_16.phase_param_c >= 0.0);
             } else {
                 local_105 = false;
             }
-            bool _e298 = local_105;
+            bool _e291 = local_105;
+            if (_e291) {
+                local_106 = (s_16.phase_param_c <= 1.0);
+            } else {
+                local_106 = false;
+            }
+            bool _e298 = local_106;
             ok = _e298;
             break;
         }
@@ -4287,30 +4331,30 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_106 = (bool)0;
     bool local_107 = (bool)0;
+    bool local_108 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_107 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_108 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_107 = false;
+            local_108 = false;
         }
-        bool _e21 = local_107;
-        local_106 = _e21;
+        bool _e21 = local_108;
+        local_107 = _e21;
     } else {
-        local_106 = true;
+        local_107 = true;
     }
-    bool _e23 = local_106;
+    bool _e23 = local_107;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
 {
-    bool local_108 = (bool)0;
-    AirlightCanonical out_2 = (AirlightCanonical)0;
     bool local_109 = (bool)0;
+    AirlightCanonical out_2 = (AirlightCanonical)0;
+    bool local_110 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_18.flags > 1u));
@@ -4323,11 +4367,11 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     const bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
-        local_108 = !(_e38);
+        local_109 = !(_e38);
     } else {
-        local_108 = true;
+        local_109 = true;
     }
-    bool _e41 = local_108;
+    bool _e41 = local_109;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -4354,11 +4398,11 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_109 = (h_7 > 0.0);
+        local_110 = (h_7 > 0.0);
     } else {
-        local_109 = false;
+        local_110 = false;
     }
-    bool _e101 = local_109;
+    bool _e101 = local_110;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -4809,15 +4853,15 @@ airlight_ret_Constructarray11_float_ airlight_Constructarray11_float_(float arg0
 AirlightOuter airlight_surface(AirlightScene s_22)
 {
     AirlightOuter g_20 = (AirlightOuter)0;
-    bool local_110 = (bool)0;
+    bool local_111 = (bool)0;
     float3 u_1 = (float3)0;
     float cuts_1[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_17 = 1u;
     uint j_3 = (uint)0;
-    bool local_111 = (bool)0;
-    uint k_3 = 0u;
-    uint i_18 = 0u;
     bool local_112 = (bool)0;
+    uint k_4 = 0u;
+    uint i_18 = 0u;
+    bool local_113 = (bool)0;
     uint i_19 = 0u;
 
     const AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
@@ -4825,11 +4869,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     float3 to_light_1 = (s_22.light_position - s_22.origin);
     const float _e7 = airlight_safe_length(to_light_1);
     if (!((s_22.intensity == 0.0))) {
-        local_110 = (s_22.sigma_s == 0.0);
+        local_111 = (s_22.sigma_s == 0.0);
     } else {
-        local_110 = true;
+        local_111 = true;
     }
-    bool _e18 = local_110;
+    bool _e18 = local_111;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -4948,11 +4992,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
                 if ((_e219 > 0u)) {
                     uint _e224 = j_3;
                     float _e228 = cuts_1[min(uint((_e224 - 1u)), 10u)];
-                    local_111 = (_e228 > c_10);
+                    local_112 = (_e228 > c_10);
                 } else {
-                    local_111 = false;
+                    local_112 = false;
                 }
-                bool _e231 = local_111;
+                bool _e231 = local_112;
                 if (_e231) {
                 } else {
                     break;
@@ -4988,29 +5032,29 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         {
             uint _e254 = i_18;
             float _e256 = cuts_1[min(uint(_e254), 10u)];
-            uint _e258 = k_3;
+            uint _e258 = k_4;
             float _e260 = g_20.gamma[min(uint(_e258), 12u)];
             if ((_e256 > _e260)) {
                 uint _e264 = i_18;
                 float _e266 = cuts_1[min(uint(_e264), 10u)];
-                local_112 = (_e266 < AIRLIGHT_PI);
+                local_113 = (_e266 < AIRLIGHT_PI);
             } else {
-                local_112 = false;
+                local_113 = false;
             }
-            bool _e270 = local_112;
+            bool _e270 = local_113;
             if (_e270) {
-                uint _e271 = k_3;
-                k_3 = (_e271 + 1u);
-                uint _e275 = k_3;
+                uint _e271 = k_4;
+                k_4 = (_e271 + 1u);
+                uint _e275 = k_4;
                 uint _e277 = i_18;
                 float _e279 = cuts_1[min(uint(_e277), 10u)];
                 g_20.gamma[min(uint(_e275), 12u)] = _e279;
             }
         }
     }
-    uint _e284 = k_3;
+    uint _e284 = k_4;
     g_20.gamma[min(uint((_e284 + 1u)), 12u)] = AIRLIGHT_PI;
-    uint _e290 = k_3;
+    uint _e290 = k_4;
     g_20.panels = (_e290 + 1u);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     bool loop_init_23 = true;
@@ -5041,7 +5085,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
 
 float airlight_lobe_at(AirlightLobe q_1, float x_17)
 {
-    bool local_113 = (bool)0;
+    bool local_114 = (bool)0;
 
     const float2 _e4 = airlight_cos_sin((0.5 * x_17));
     float s2_ = (_e4.y * _e4.y);
@@ -5050,11 +5094,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_17)
     float clip_ = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_113 = (clip_ > 0.0);
+        local_114 = (clip_ > 0.0);
     } else {
-        local_113 = false;
+        local_114 = false;
     }
-    bool _e35 = local_113;
+    bool _e35 = local_114;
     if (_e35) {
         const float _e39 = airlight_log1p(-(fall));
         return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e39))));
@@ -5075,7 +5119,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w, float u_2, bool 
 float airlight_arc_end(float x_18, float cut)
 {
     float end = (float)0;
-    bool local_114 = (bool)0;
+    bool local_115 = (bool)0;
 
     end = x_18;
     float _e3 = end;
@@ -5092,11 +5136,11 @@ float airlight_arc_end(float x_18, float cut)
     float _e16 = end;
     if ((_e16 > -(cut))) {
         float _e21 = end;
-        local_114 = (_e21 < cut);
+        local_115 = (_e21 < cut);
     } else {
-        local_114 = false;
+        local_115 = false;
     }
-    bool _e24 = local_114;
+    bool _e24 = local_115;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5114,18 +5158,18 @@ airlight_ret_airlight_lobe_rule airlight_lobe_rule()
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
 {
-    bool local_115 = (bool)0;
+    bool local_116 = (bool)0;
     float sum_5 = 0.0;
-    uint k_4 = 0u;
+    uint k_5 = 0u;
 
     float w_6 = (hi_3 - lo_4);
     if (!(!((w_6 > 0.0)))) {
         const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_6)));
-        local_115 = !((_e14 > 0.0));
+        local_116 = !((_e14 > 0.0));
     } else {
-        local_115 = true;
+        local_116 = true;
     }
-    bool _e19 = local_115;
+    bool _e19 = local_116;
     if (_e19) {
         return 0.0;
     }
@@ -5136,17 +5180,17 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
         if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
         loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e43 = k_4;
-            k_4 = (_e43 + 1u);
+            uint _e43 = k_5;
+            k_5 = (_e43 + 1u);
         }
         loop_init_24 = false;
-        uint _e26 = k_4;
+        uint _e26 = k_5;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
             break;
         }
         {
-            uint _e29 = k_4;
+            uint _e29 = k_5;
             float2 node = _e21[min(uint(_e29), 4u)];
             float _e31 = sum_5;
             const float _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
@@ -5184,15 +5228,15 @@ float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n
     uint i_20 = 0u;
 
     float c_11 = (g_21.cos_r * cs.x);
-    float d_4 = (g_21.sin_r * cs.y);
-    float peak = (c_11 + d_4);
+    float d_5 = (g_21.sin_r * cs.y);
+    float peak = (c_11 + d_5);
     if (!((peak > 0.0))) {
         return 0.0;
     }
     const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_21.alpha_r)));
     float sin_gap = _e20.y;
     const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_6 = ConstructAirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
+    AirlightLobe q_6 = ConstructAirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2.0 * d_5) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
     if ((exponent > 0.0)) {
         const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent));
         reach = -(_e46);
@@ -5267,33 +5311,33 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
 AirlightOuter airlight_outer(AirlightScene s_23)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_116 = (bool)0;
     bool local_117 = (bool)0;
+    bool local_118 = (bool)0;
     float s_star = 0.0;
     float t_star = (float)0;
-    bool local_118 = (bool)0;
     bool local_119 = (bool)0;
     bool local_120 = (bool)0;
     bool local_121 = (bool)0;
     bool local_122 = (bool)0;
     bool local_123 = (bool)0;
-    float scale = 0.0;
     bool local_124 = (bool)0;
+    float scale = 0.0;
     bool local_125 = (bool)0;
     bool local_126 = (bool)0;
     bool local_127 = (bool)0;
     bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
     float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = {0.0, 0.0, 0.0};
-    bool local_129 = (bool)0;
-    uint i_21 = 0u;
     bool local_130 = (bool)0;
+    uint i_21 = 0u;
     bool local_131 = (bool)0;
     bool local_132 = (bool)0;
     bool local_133 = (bool)0;
+    bool local_134 = (bool)0;
     uint n_1 = 0u;
     uint i_22 = 0u;
-    bool local_134 = (bool)0;
+    bool local_135 = (bool)0;
 
     if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         const AirlightOuter _e4 = airlight_surface(s_23);
@@ -5310,17 +5354,17 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     float3 ab_1 = (s_23.light_end - s_23.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_116 = (s_23.intensity == 0.0);
-    } else {
-        local_116 = true;
-    }
-    bool _e26 = local_116;
-    if (!(_e26)) {
-        local_117 = (s_23.sigma_s == 0.0);
+        local_117 = (s_23.intensity == 0.0);
     } else {
         local_117 = true;
     }
-    bool _e34 = local_117;
+    bool _e26 = local_117;
+    if (!(_e26)) {
+        local_118 = (s_23.sigma_s == 0.0);
+    } else {
+        local_118 = true;
+    }
+    bool _e34 = local_118;
     if (_e34) {
         g_22.outcome = 1u;
         AirlightOuter _e37 = g_22;
@@ -5345,45 +5389,45 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_118 = (sin_a_1 > 0.0);
-    } else {
-        local_118 = false;
-    }
-    bool _e84 = local_118;
-    if (_e84) {
-        float _e87 = s_star;
-        local_119 = (_e87 >= 0.0);
+        local_119 = (sin_a_1 > 0.0);
     } else {
         local_119 = false;
     }
-    bool _e91 = local_119;
-    if (_e91) {
-        float _e94 = s_star;
-        local_120 = (_e94 <= _e15);
+    bool _e84 = local_119;
+    if (_e84) {
+        float _e87 = s_star;
+        local_120 = (_e87 >= 0.0);
     } else {
         local_120 = false;
     }
-    bool _e97 = local_120;
-    if (_e97) {
-        float _e101 = t_star;
-        local_121 = (s_23.t_min <= _e101);
+    bool _e91 = local_120;
+    if (_e91) {
+        float _e94 = s_star;
+        local_121 = (_e94 <= _e15);
     } else {
         local_121 = false;
     }
-    bool _e104 = local_121;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_123 = (_e110 <= s_23.t_max);
-        } else {
-            local_123 = true;
-        }
-        bool _e114 = local_123;
-        local_122 = _e114;
+    bool _e97 = local_121;
+    if (_e97) {
+        float _e101 = t_star;
+        local_122 = (s_23.t_min <= _e101);
     } else {
         local_122 = false;
     }
-    bool _e116 = local_122;
+    bool _e104 = local_122;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_124 = (_e110 <= s_23.t_max);
+        } else {
+            local_124 = true;
+        }
+        bool _e114 = local_124;
+        local_123 = _e114;
+    } else {
+        local_123 = false;
+    }
+    bool _e116 = local_123;
     if (_e116) {
         g_22.outcome = 2u;
         AirlightOuter _e119 = g_22;
@@ -5391,49 +5435,49 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_124 = (_e73 > 0.0);
+        local_125 = (_e73 > 0.0);
     } else {
-        local_124 = false;
+        local_125 = false;
     }
-    bool _e129 = local_124;
+    bool _e129 = local_125;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_125 = (_e136 < (_e15 + _e15));
-    } else {
-        local_125 = false;
-    }
-    bool _e140 = local_125;
-    if (_e140) {
-        float _e143 = scale;
-        local_126 = (_e143 < _e15);
+        local_126 = (_e136 < (_e15 + _e15));
     } else {
         local_126 = false;
     }
-    bool near_1 = local_126;
+    bool _e140 = local_126;
+    if (_e140) {
+        float _e143 = scale;
+        local_127 = (_e143 < _e15);
+    } else {
+        local_127 = false;
+    }
+    bool near_1 = local_127;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_127 = _e154;
+        local_128 = _e154;
     } else {
-        local_127 = false;
+        local_128 = false;
     }
-    bool _e156 = local_127;
+    bool _e156 = local_128;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_128 = _e163;
+        local_129 = _e163;
     } else {
-        local_128 = false;
+        local_129 = false;
     }
-    bool _e165 = local_128;
+    bool _e165 = local_129;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -5450,11 +5494,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         const float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_22;
         const float _e197 = airlight_to_w(_e196, _e15);
-        local_129 = (min(-(_e194), _e197) < 0.5);
+        local_130 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_129 = false;
+        local_130 = false;
     }
-    bool sliver = local_129;
+    bool sliver = local_130;
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
     bool loop_init_26 = true;
     while(true) {
@@ -5473,31 +5517,31 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         {
             uint _e208 = i_21;
             if ((_e208 == 0u)) {
-                local_130 = sliver;
+                local_131 = sliver;
             } else {
-                local_130 = false;
+                local_131 = false;
             }
-            bool _e214 = local_130;
+            bool _e214 = local_131;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_21;
-                local_131 = (_e219 > 0u);
+                local_132 = (_e219 > 0u);
             } else {
-                local_131 = false;
+                local_132 = false;
             }
-            bool _e223 = local_131;
+            bool _e223 = local_132;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_21;
             if ((_e224 == 2u)) {
-                local_132 = infinite_4;
+                local_133 = infinite_4;
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            bool _e230 = local_132;
+            bool _e230 = local_133;
             if (_e230) {
                 continue;
             }
@@ -5506,11 +5550,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e233 > 0.0)) {
                 uint _e238 = i_21;
                 float _e240 = at[min(uint(_e238), 2u)];
-                local_133 = (_e240 < _e15);
+                local_134 = (_e240 < _e15);
             } else {
-                local_133 = false;
+                local_134 = false;
             }
-            bool _e243 = local_133;
+            bool _e243 = local_134;
             if (_e243) {
                 uint _e244 = i_21;
                 AirlightOuter _e246 = g_22;
@@ -5573,11 +5617,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e303 > _e307)) {
                 uint _e311 = i_22;
                 float _e313 = cuts_2[min(uint(_e311), 2u)];
-                local_134 = (_e313 < _e288);
+                local_135 = (_e313 < _e288);
             } else {
-                local_134 = false;
+                local_135 = false;
             }
-            bool _e316 = local_134;
+            bool _e316 = local_135;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5684,15 +5728,15 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_135 = (bool)0;
+    bool local_136 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_135 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_136 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_135 = true;
+        local_136 = true;
     }
-    bool _e11 = local_135;
+    bool _e11 = local_136;
     if (_e11) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_8;
@@ -5704,18 +5748,18 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_2)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_136 = (bool)0;
+    bool local_137 = (bool)0;
     AirlightCanonical g_24 = (AirlightCanonical)0;
 
     AirlightScene p_1 = n_2.scene;
     const bool _e7 = airlight_vec_finite(p_1.light_position);
     if (_e7) {
         const bool _e11 = airlight_vec_finite(p_1.dir);
-        local_136 = _e11;
+        local_137 = _e11;
     } else {
-        local_136 = false;
+        local_137 = false;
     }
-    bool _e13 = local_136;
+    bool _e13 = local_137;
     if (_e13) {
         g_24 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -5765,17 +5809,17 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     float queued_lo = 0.0;
     float queued_hi = 0.0;
     uint step_2 = 0u;
-    float k_5 = (float)0;
+    float k_6 = (float)0;
     float gauss = (float)0;
     uint j_4 = (uint)0;
-    bool local_137 = (bool)0;
-    float f = (float)0;
     bool local_138 = (bool)0;
+    float f = (float)0;
+    bool local_139 = (bool)0;
     bool split = (bool)0;
     uint tries = (uint)0;
-    bool local_139 = (bool)0;
     bool local_140 = (bool)0;
     bool local_141 = (bool)0;
+    bool local_142 = (bool)0;
 
     const bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
@@ -5816,8 +5860,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
             float c_15 = (0.5 * (_e80 + _e81));
             float _e85 = b_13;
             float _e86 = a_17;
-            float hw_3 = (0.5 * (_e85 - _e86));
-            k_5 = 0.0;
+            float hw_2 = (0.5 * (_e85 - _e86));
+            k_6 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
             uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
@@ -5841,12 +5885,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
-                        local_137 = (_e116 < 6u);
+                        local_138 = (_e116 < 6u);
                     } else {
-                        local_137 = false;
+                        local_138 = false;
                     }
-                    bool _e120 = local_137;
-                    float w_7 = (_e120 ? (c_15 - (hw_3 * node_1.x)) : (c_15 + (hw_3 * node_1.x)));
+                    bool _e120 = local_138;
+                    float w_7 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
                     const AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
@@ -5856,20 +5900,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             return airlightresult_14;
                         }
                         if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_138 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_139 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_138 = false;
+                            local_139 = false;
                         }
-                        bool _e141 = local_138;
+                        bool _e141 = local_139;
                         if (_e141) {
                             const AirlightResult airlightresult_15 = _e128;
                             return airlightresult_15;
                         }
                         f = (_e128.in_scatter * _e122.weight);
                     }
-                    float _e145 = k_5;
+                    float _e145 = k_6;
                     float _e147 = f;
-                    k_5 = (_e145 + (node_1.y * _e147));
+                    k_6 = (_e145 + (node_1.y * _e147));
                     float _e150 = gauss;
                     float _e152 = f;
                     gauss = (_e150 + (node_1.z * _e152));
@@ -5878,10 +5922,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
             uint _e158 = slot_1;
             float _e159 = a_17;
             float _e160 = b_13;
-            float _e161 = k_5;
-            float _e163 = k_5;
+            float _e161 = k_6;
+            float _e163 = k_6;
             float _e165 = gauss;
-            airlight_list_set(list_1, _e158, float4(_e159, _e160, (_e161 * hw_3), abs(((_e163 * hw_3) - (_e165 * hw_3)))));
+            airlight_list_set(list_1, _e158, float4(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
             uint _e170 = slot_1;
             uint _e171 = count_2;
             if ((_e170 == _e171)) {
@@ -5932,18 +5976,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_139 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_139 = true;
-                            }
-                            bool _e217 = local_139;
-                            if (!(_e217)) {
-                                const bool _e221 = airlight_is_finite(total_4);
-                                local_140 = !(_e221);
+                                local_140 = (_e213 == _e6.max_panels);
                             } else {
                                 local_140 = true;
                             }
-                            bool _e224 = local_140;
+                            bool _e217 = local_140;
+                            if (!(_e217)) {
+                                const bool _e221 = airlight_is_finite(total_4);
+                                local_141 = !(_e221);
+                            } else {
+                                local_141 = true;
+                            }
+                            bool _e224 = local_141;
                             if (_e224) {
                                 break;
                             }
@@ -5951,22 +5995,22 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             const float4 _e226 = airlight_list_get(_e225, worst_1);
                             float wa_1 = _e226.x;
                             float wb_1 = _e226.y;
-                            float mid_3 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_3 > wa_1)) {
-                                local_141 = (mid_3 < wb_1);
+                            float mid_1 = (0.5 * (wa_1 + wb_1));
+                            if ((mid_1 > wa_1)) {
+                                local_142 = (mid_1 < wb_1);
                             } else {
-                                local_141 = false;
+                                local_142 = false;
                             }
-                            bool _e237 = local_141;
+                            bool _e237 = local_142;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, float4(_e226.xyz, 0.0));
                                 continue;
                             }
                             a_17 = wa_1;
-                            b_13 = mid_3;
+                            b_13 = mid_1;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_3;
+                            queued_lo = mid_1;
                             queued_hi = wb_1;
                             split = true;
                             break;

@@ -132,6 +132,9 @@ const AIRLIGHT_PANEL_LIST: u32 = 8u;
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = 4f;
 const AIRLIGHT_ALIASING_MARGIN: u32 = 3u;
 const AIRLIGHT_INV_ODD_FACTORIAL: f32 = 0.000000029019636f;
+const AIRLIGHT_INV_ODD_FACTORIAL_1_: f32 = 0.0000004933338f;
+const AIRLIGHT_INV_ODD_FACTORIAL_2_: f32 = 0.0000074000072f;
+const AIRLIGHT_UNCUT_SPAN: f32 = 21.101269f;
 const AIRLIGHT_EXACT_RANGE: f32 = 1073741800f;
 const AIRLIGHT_PI: f32 = 3.1415927f;
 const AIRLIGHT_EULER_GAMMA: f32 = 0.5772157f;
@@ -896,8 +899,8 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
     var j: u32 = 0u;
     var dv: f32;
 
-    let hw_1 = (half.dy * 0.5f);
-    let yc = (half.y_lo + hw_1);
+    let hw = (half.dy * 0.5f);
+    let yc = (half.y_lo + hw);
     let nodes = array<vec2<f32>, 4>(vec2<f32>(-0.33998105f, 0.65214515f), vec2<f32>(0.33998105f, 0.65214515f), vec2<f32>(-0.8611363f, 0.34785485f), vec2<f32>(0.8611363f, 0.34785485f));
     loop {
         let _e23 = j;
@@ -908,15 +911,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j;
             let xi = nodes[_e26].x;
-            let y_6 = (yc + (hw_1 * xi));
-            dv = (hw_1 * (1f + xi));
+            let y_6 = (yc + (hw * xi));
+            dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw_1 * (1f - xi)) / (y_6 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_6 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw_1) * exp((-(half.big_h) * _e49))) / (1f + (y_6 * y_6))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_6 * y_6))));
         }
         continuing {
             let _e59 = j;
@@ -2428,13 +2431,13 @@ fn airlight_integrate_piece(s_8: AirlightScene, g_10: AirlightCanonical, sigma_8
                         continue;
                     }
                     let _e212 = airlight_graded_split(wa, wb, _e10);
-                    let mid_1 = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
+                    let mid = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
                     a_10 = wa;
-                    b_9 = mid_1;
+                    b_9 = mid;
                     let _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid_1;
+                    next_a = mid;
                     next_b = wb;
                     break;
                 }
@@ -2497,7 +2500,7 @@ fn airlight_angle_y(u: f32) -> f32 {
     return (u + _e5);
 }
 
-fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32) -> f32 {
+fn airlight_angle_floor(side_1: f32, gap_1: f32, psi0_: f32, psi1_: f32, inv_hw: f32, step_1: f32) -> f32 {
     var local_25: bool;
 
     if !(!((gap_1 > 0f))) {
@@ -2505,18 +2508,21 @@ fn airlight_angle_floor(side_1: f32, gap_1: f32, mid: f32, hw: f32, step_1: f32)
     } else {
         local_25 = true;
     }
-    let _e14 = local_25;
-    if _e14 {
+    let _e15 = local_25;
+    if _e15 {
         return 0f;
     }
     let y_9 = (gap_1 + sqrt((gap_1 * (2f + gap_1))));
     let im_1 = ((y_9 + y_9) / (2f + y_9));
-    let re_2 = select(1.5707964f, -1.5707964f, (side_1 > 0f));
-    let _e33 = airlight_bernstein_rho(((re_2 - mid) / hw), (im_1 / hw));
+    let offset_1 = select(psi1_, psi0_, (side_1 > 0f));
+    let _e33 = airlight_bernstein_rho((1f + (offset_1 * inv_hw)), (im_1 * inv_hw));
     return (step_1 / _e33);
 }
 
-fn airlight_cut_length(big_h_1: f32, v_s: f32) -> f32 {
+fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
+    if ((big_h_1 * span) <= AIRLIGHT_UNCUT_SPAN) {
+        return AIRLIGHT_FLT_MAX;
+    }
     let inv_h = (1f / big_h_1);
     let w_3 = (v_s + inv_h);
     let r_11 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
@@ -2540,11 +2546,16 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var local_26: bool;
     var y1_: f32 = AIRLIGHT_FLT_MAX;
     var y_cut: f32 = AIRLIGHT_FLT_MAX;
-    var psi1_: f32 = 0f;
+    var psi1_1: f32 = 0f;
+    var k_2: f32 = 1f;
+    var wy: f32 = 1f;
+    var wx: f32;
     var width: f32;
     var degree_1: f32 = 0f;
     var lambda_1: f32;
     var rate: f32 = 0f;
+    var exponential: f32 = 0f;
+    var local_27: bool;
     var samples_3: array<f32, 8>;
     var value_1: f32 = 0f;
     var mass_4: f32 = 0f;
@@ -2552,7 +2563,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var f_max_5: f32 = 0f;
     var i_11: u32 = 0u;
     var m_3: array<f32, 8>;
-    var local_27: bool;
+    var local_28: bool;
     var x_10: f32 = 0f;
 
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
@@ -2575,186 +2586,217 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
         y1_ = _e29;
     }
     if (big_h_7 > 0f) {
-        let _e34 = airlight_cut_length(big_h_7, _e26);
-        y_cut = (_e26 + _e34);
+        let _e34 = y1_;
+        let _e36 = airlight_cut_length(big_h_7, _e26, (_e34 - _e26));
+        y_cut = (_e26 + _e36);
     }
-    let _e38 = airlight_atan2_upper(1f, -(u0_));
-    let _e42 = airlight_atan2_upper(1f, u0_);
-    width = _e42;
-    let _e44 = y_cut;
-    let _e45 = y1_;
-    if (_e44 < _e45) {
-        let _e47 = y_cut;
-        let _e50 = airlight_atan((1f / _e47));
-        psi1_ = (2f * _e50);
-        let _e53 = y_cut;
-        let _e55 = y_cut;
-        let _e59 = airlight_atan2_upper((_e53 - _e26), (1f + (_e26 * _e55)));
-        width = (2f * _e59);
+    let _e40 = airlight_atan2_upper(1f, -(u0_));
+    wx = u0_;
+    let _e48 = y_cut;
+    let _e49 = y1_;
+    if (_e48 < _e49) {
+        let _e51 = y_cut;
+        let _e54 = airlight_atan((1f / _e51));
+        psi1_1 = (2f * _e54);
+        k_2 = 2f;
+        let _e58 = y_cut;
+        wy = (_e58 - _e26);
+        let _e60 = y_cut;
+        wx = (1f + (_e26 * _e60));
     } else {
         if u1_finite {
-            let _e63 = airlight_atan2_upper(1f, u1_);
-            psi1_ = _e63;
-            let _e71 = airlight_atan2_upper(((g_11.t_hi - g_11.t_lo) / h_3), (1f + (u0_ * u1_)));
-            width = _e71;
+            let _e65 = airlight_atan2_upper(1f, u1_);
+            psi1_1 = _e65;
+            wy = ((g_11.t_hi - g_11.t_lo) / h_3);
+            wx = (1f + (u0_ * u1_));
         }
     }
-    let _e72 = width;
-    let hw_2 = (_e72 * 0.5f);
-    if !((hw_2 > 0f)) {
+    let _e75 = psi1_1;
+    let difference = ((AIRLIGHT_PI - _e40) - _e75);
+    width = difference;
+    if !((difference >= 1f)) {
+        let _e81 = k_2;
+        let _e82 = wy;
+        let _e83 = wx;
+        let _e84 = airlight_atan2_upper(_e82, _e83);
+        width = (_e81 * _e84);
+    }
+    let _e86 = width;
+    let hw_1 = (_e86 * 0.5f);
+    if !((hw_1 > 0f)) {
         return vec2<f32>(0f, 0f);
     }
-    let mid_2 = ((_e38 + hw_2) - 1.5707964f);
-    let _e84 = y1_;
-    let _e85 = y_cut;
-    let y_end = min(_e84, _e85);
+    let inv_hw_1 = (1f / hw_1);
+    let _e97 = y1_;
+    let _e98 = y_cut;
+    let y_end = min(_e97, _e98);
     let y_e = min((_e26 + (1f / big_h_7)), y_end);
     if (s_9.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         degree_1 = s_9.light_param_a;
     }
-    let _e97 = degree_1;
-    lambda_1 = (sqrt(_e97) * hw_2);
+    let _e110 = degree_1;
+    lambda_1 = (sqrt(_e110) * hw_1);
     if (big_h_7 > 0f) {
-        let _e103 = lambda_1;
-        lambda_1 = (_e103 + (min((big_h_7 * (y_end - _e26)), ((hw_2 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
+        let _e116 = lambda_1;
+        lambda_1 = (_e116 + (min((big_h_7 * (y_end - _e26)), ((hw_1 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
     }
-    let _e115 = lambda_1;
-    let predicted = (pow(_e115, 8f) * AIRLIGHT_INV_ODD_FACTORIAL);
-    if !((predicted <= AIRLIGHT_PANEL_TOLERANCE)) {
-        return vec2<f32>(0f, 0f);
-    }
-    let _e126 = airlight_singular_steps(s_9);
-    let step_3 = _e126.y;
+    let _e128 = airlight_singular_steps(s_9);
+    let step_3 = _e128.y;
     let p0_4 = s_9.phase_param_a;
     switch s_9.phase_kind {
         case 2u, 4u: {
-            let _e132 = airlight_hg_gap(p0_4);
-            let _e133 = airlight_angle_floor(p0_4, _e132, mid_2, hw_2, step_3);
-            rate = _e133;
+            let _e134 = airlight_hg_gap(p0_4);
+            let _e135 = psi1_1;
+            let _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_3);
+            rate = _e136;
         }
         case 3u: {
             let a_23 = abs(p0_4);
-            let _e142 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), mid_2, hw_2, step_3);
-            rate = _e142;
+            let _e145 = psi1_1;
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), _e40, _e145, inv_hw_1, step_3);
+            rate = _e146;
         }
         case 5u: {
             let p1_3 = s_9.phase_param_b;
-            let _e144 = airlight_hg_gap(p0_4);
-            let _e145 = airlight_angle_floor(p0_4, _e144, mid_2, hw_2, step_3);
-            let _e146 = airlight_hg_gap(p1_3);
-            let _e147 = airlight_angle_floor(p1_3, _e146, mid_2, hw_2, step_3);
-            rate = max(_e145, _e147);
+            let _e148 = airlight_hg_gap(p0_4);
+            let _e149 = psi1_1;
+            let _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_3);
+            let _e151 = airlight_hg_gap(p1_3);
+            let _e152 = psi1_1;
+            let _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_3);
+            rate = max(_e150, _e153);
         }
         default: {
         }
     }
-    let _e149 = rate;
-    if !((pow(_e149, 8f) <= AIRLIGHT_PANEL_TOLERANCE)) {
+    let _e155 = psi1_1;
+    let d_3 = (_e155 * inv_hw_1);
+    if (big_h_7 > 0f) {
+        exponential = (1f / ((1f + d_3) + sqrt((d_3 * (2f + d_3)))));
+    }
+    let _e171 = lambda_1;
+    let predicted = (pow(_e171, 8f) * AIRLIGHT_INV_ODD_FACTORIAL);
+    let _e175 = lambda_1;
+    let _e181 = rate;
+    let _e183 = exponential;
+    let decay_2 = max(max((_e175 / ((2f * 8f) - 1f)), _e181), _e183);
+    let _e185 = lambda_1;
+    let _e191 = lambda_1;
+    let estimated = (((pow(_e185, (8f - 1f)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e191, (8f - 2f)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8f + 1f) - 3f)));
+    if !((predicted <= AIRLIGHT_PANEL_TOLERANCE)) {
+        local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
+    } else {
+        local_27 = false;
+    }
+    let _e213 = local_27;
+    if _e213 {
         return vec2<f32>(0f, 0f);
     }
-    if (big_h_7 > 0f) {
-        let _e160 = rate;
-        let _e165 = airlight_bernstein_rho(((1.5707964f - mid_2) / hw_2), 0f);
-        rate = max(_e160, (1f / _e165));
+    let _e217 = rate;
+    if !((pow(_e217, 8f) <= AIRLIGHT_PANEL_TOLERANCE)) {
+        return vec2<f32>(0f, 0f);
     }
-    let _e169 = airlight_gauss_rule();
-    let _e170 = airlight_zero_terms();
-    samples_3 = _e170;
+    let _e225 = rate;
+    let _e226 = exponential;
+    rate = max(_e225, _e226);
+    let _e228 = airlight_gauss_rule();
+    let _e229 = airlight_zero_terms();
+    samples_3 = _e229;
     loop {
-        let _e182 = i_11;
-        if (_e182 < AIRLIGHT_TERMS) {
+        let _e241 = i_11;
+        if (_e241 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e185 = i_11;
-            let _e186 = airlight_node(_e169, _e185);
-            let lower = (_e38 + (hw_2 * (1f + _e186)));
+            let _e244 = i_11;
+            let _e245 = airlight_node(_e228, _e244);
+            let lower = (_e40 + (hw_1 * (1f + _e245)));
             let below_1 = (lower <= 1.5707964f);
-            let _e193 = psi1_;
-            let _e199 = airlight_cos_sin(select((_e193 + (hw_2 * (1f - _e186))), lower, below_1));
-            let cs_1 = _e199.y;
-            let sn = select(_e199.x, -(_e199.x), below_1);
-            let near_pole = (1f + _e199.x);
+            let _e252 = psi1_1;
+            let _e258 = airlight_cos_sin(select((_e252 + (hw_1 * (1f - _e245))), lower, below_1));
+            let cs_1 = _e258.y;
+            let sn = select(_e258.x, -(_e258.x), below_1);
+            let near_pole = (1f + _e258.x);
             let far_pole = ((cs_1 * cs_1) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
             let y_10 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
             let weight_2 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_1 > 0f));
-            let _e233 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
-            let _e239 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
-            let f_2 = (_e233 * _e239);
+            let _e292 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
+            let _e298 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
+            let f_2 = (_e292 * _e298);
             let gw = (weight_2 * f_2);
-            let _e242 = i_11;
-            samples_3[_e242] = gw;
-            let _e244 = i_11;
-            let w_4 = _e169[(_e244 / 2u)].y;
-            let _e249 = value_1;
-            value_1 = (_e249 + (w_4 * gw));
-            let _e252 = mass_4;
-            mass_4 = (_e252 + (w_4 * weight_2));
-            let _e255 = magnitude;
-            magnitude = (_e255 + (w_4 * abs(gw)));
-            let _e259 = f_max_5;
-            f_max_5 = max(_e259, abs(f_2));
+            let _e301 = i_11;
+            samples_3[_e301] = gw;
+            let _e303 = i_11;
+            let w_4 = _e228[(_e303 / 2u)].y;
+            let _e308 = value_1;
+            value_1 = (_e308 + (w_4 * gw));
+            let _e311 = mass_4;
+            mass_4 = (_e311 + (w_4 * weight_2));
+            let _e314 = magnitude;
+            magnitude = (_e314 + (w_4 * abs(gw)));
+            let _e318 = f_max_5;
+            f_max_5 = max(_e318, abs(f_2));
         }
         continuing {
-            let _e263 = i_11;
-            i_11 = (_e263 + 1u);
+            let _e322 = i_11;
+            i_11 = (_e322 + 1u);
         }
     }
-    let _e265 = samples_3;
-    let _e266 = airlight_legendre(_e265);
-    let _e267 = airlight_zero_terms();
-    m_3 = _e267;
+    let _e324 = samples_3;
+    let _e325 = airlight_legendre(_e324);
+    let _e326 = airlight_zero_terms();
+    m_3 = _e326;
     m_3[0] = 2f;
-    let _e271 = airlight_tail_estimate(_e266);
-    let _e274 = m_3;
-    let _e275 = rate;
-    let _e276 = airlight_error_factor(_e266, _e274, _e275);
-    let error_4 = ((2f * _e271) * _e276);
-    let _e279 = magnitude;
-    let _e282 = airlight_transform_noise(2f, (0.5f * _e279));
-    let _e284 = value_1;
-    let _e287 = f_max_5;
-    let _e289 = mass_4;
-    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e284), ((AIRLIGHT_PANEL_FLOOR * _e287) * _e289)));
+    let _e330 = airlight_tail_estimate(_e325);
+    let _e333 = m_3;
+    let _e334 = rate;
+    let _e335 = airlight_error_factor(_e325, _e333, _e334);
+    let error_4 = ((2f * _e330) * _e335);
+    let _e338 = magnitude;
+    let _e341 = airlight_transform_noise(2f, (0.5f * _e338));
+    let _e343 = value_1;
+    let _e346 = f_max_5;
+    let _e348 = mass_4;
+    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e343), ((AIRLIGHT_PANEL_FLOOR * _e346) * _e348)));
     if !((error_4 <= accepted)) {
-        local_27 = (error_4 <= _e282);
+        local_28 = (error_4 <= _e341);
     } else {
-        local_27 = true;
+        local_28 = true;
     }
-    let _e299 = local_27;
-    if !(_e299) {
+    let _e358 = local_28;
+    if !(_e358) {
         return vec2<f32>(0f, 0f);
     }
     if (s_9.sigma_t > 0f) {
-        let _e310 = airlight_hypot_one(u0_);
-        x_10 = (s_9.sigma_t * (h_3 * _e310));
+        let _e369 = airlight_hypot_one(u0_);
+        x_10 = (s_9.sigma_t * (h_3 * _e369));
     }
-    let _e315 = x_10;
-    let _e316 = value_1;
-    let _e320 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e315, ((_e316 * hw_2) * 0.5f));
-    return vec2<f32>(1f, _e320);
+    let _e374 = x_10;
+    let _e375 = value_1;
+    let _e379 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e374, ((_e375 * hw_1) * 0.5f));
+    return vec2<f32>(1f, _e379);
 }
 
-fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_2: f32) -> vec2<f32> {
-    var local_28: bool;
+fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_3: f32) -> vec2<f32> {
+    var local_29: bool;
     var sb: f32 = 1f;
     var r1_: f32 = -1f;
     var r2_2: f32 = -1f;
 
-    let a0_ = (k_2 + (sigma_9 * d_el));
+    let a0_ = (k_3 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
-    let c0_ = (k_2 - (sigma_9 * d_el));
+    let c0_ = (k_3 - (sigma_9 * d_el));
     let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
     if !(!((scale_1 > 0f))) {
         let _e21 = airlight_is_finite(scale_1);
-        local_28 = !(_e21);
+        local_29 = !(_e21);
     } else {
-        local_28 = true;
+        local_29 = true;
     }
-    let _e24 = local_28;
+    let _e24 = local_29;
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
@@ -2787,13 +2829,13 @@ fn airlight_cosine(g_12: AirlightCanonical, sigma_10: f32, y_4: f32) -> f32 {
 }
 
 fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
-    var local_29: bool;
     var local_30: bool;
-    var y1_1: f32;
     var local_31: bool;
+    var y1_1: f32;
     var local_32: bool;
     var local_33: bool;
     var local_34: bool;
+    var local_35: bool;
 
     let _e9 = airlight_cosine(g_13, sigma_11, (0.5f * (lo_1 + hi_1)));
     if !((_e9 < bound)) {
@@ -2801,68 +2843,68 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     }
     if (lo_1 == half_11.y_lo) {
         let _e17 = airlight_cosine(g_13, sigma_11, lo_1);
-        local_29 = !((_e17 < bound));
+        local_30 = !((_e17 < bound));
     } else {
-        local_29 = false;
+        local_30 = false;
     }
-    let _e21 = local_29;
+    let _e21 = local_30;
     if _e21 {
         return false;
     }
     if (hi_1 == half_11.y_hi) {
         let _e27 = airlight_cosine(g_13, sigma_11, hi_1);
-        local_30 = !((_e27 < bound));
+        local_31 = !((_e27 < bound));
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    let _e31 = local_30;
+    let _e31 = local_31;
     if _e31 {
         return false;
     }
     let a_25 = (sigma_11 * g_13.d_el);
-    let d_3 = g_13.d_c;
-    if (d_3 == 0f) {
+    let d_4 = g_13.d_c;
+    if (d_4 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
+    let root_1 = sqrt(((a_25 * a_25) + (d_4 * d_4)));
+    y1_1 = ((root_1 - a_25) / d_4);
     if (a_25 > 0f) {
-        y1_1 = (d_3 / (a_25 + root_1));
+        y1_1 = (d_4 / (a_25 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
     let _e53 = y1_1;
     if (_e53 > lo_1) {
         let _e57 = y1_1;
-        local_31 = (_e57 < hi_1);
-    } else {
-        local_31 = false;
-    }
-    let _e60 = local_31;
-    if _e60 {
-        let _e63 = y1_1;
-        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
-        local_32 = !((_e64 < bound));
+        local_32 = (_e57 < hi_1);
     } else {
         local_32 = false;
     }
-    let _e68 = local_32;
+    let _e60 = local_32;
+    if _e60 {
+        let _e63 = y1_1;
+        let _e64 = airlight_cosine(g_13, sigma_11, _e63);
+        local_33 = !((_e64 < bound));
+    } else {
+        local_33 = false;
+    }
+    let _e68 = local_33;
     if _e68 {
         return false;
     }
     if (y2_2 > lo_1) {
-        local_33 = (y2_2 < hi_1);
-    } else {
-        local_33 = false;
-    }
-    let _e75 = local_33;
-    if _e75 {
-        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
-        local_34 = !((_e78 < bound));
+        local_34 = (y2_2 < hi_1);
     } else {
         local_34 = false;
     }
-    let _e82 = local_34;
+    let _e75 = local_34;
+    if _e75 {
+        let _e78 = airlight_cosine(g_13, sigma_11, y2_2);
+        local_35 = !((_e78 < bound));
+    } else {
+        local_35 = false;
+    }
+    let _e82 = local_35;
     if _e82 {
         return false;
     }
@@ -2875,16 +2917,16 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
     var k_in: f32;
     var k_out: f32;
     var i_12: u32 = 0u;
-    var local_35: bool;
+    var local_36: bool;
     var i_13: u32 = 0u;
     var j_2: u32;
     var total_2: f32 = 0f;
     var lo_2: f32;
     var i_14: u32 = 0u;
     var hi_2: f32;
-    var local_36: bool;
     var local_37: bool;
     var local_38: bool;
+    var local_39: bool;
 
     if isotropic {
         let _e7 = airlight_integrand(s_10, g_14, sigma_12, 0f);
@@ -2922,11 +2964,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                 if (_e56 > half_12.y_lo) {
                     let _e61 = i_12;
                     let _e63 = cuts[_e61];
-                    local_35 = (_e63 < half_12.y_hi);
+                    local_36 = (_e63 < half_12.y_hi);
                 } else {
-                    local_35 = false;
+                    local_36 = false;
                 }
-                let _e67 = local_35;
+                let _e67 = local_36;
                 if !(_e67) {
                     let _e69 = i_12;
                     cuts[_e69] = 2f;
@@ -2993,11 +3035,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
             if (_e127 < 4u) {
                 let _e132 = i_14;
                 let _e134 = cuts[_e132];
-                local_36 = (_e134 < 2f);
+                local_37 = (_e134 < 2f);
             } else {
-                local_36 = false;
+                local_37 = false;
             }
-            let _e138 = local_36;
+            let _e138 = local_37;
             if _e138 {
                 let _e139 = i_14;
                 let _e141 = cuts[_e139];
@@ -3011,11 +3053,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
                     let _e151 = lo_2;
                     let _e152 = hi_2;
                     let _e153 = airlight_dark(g_14, sigma_12, half_12, _e150, _e151, _e152);
-                    local_37 = _e153;
+                    local_38 = _e153;
                 } else {
-                    local_37 = false;
+                    local_38 = false;
                 }
-                let _e155 = local_37;
+                let _e155 = local_38;
                 if !(_e155) {
                     let _e157 = total_2;
                     let _e158 = lo_2;
@@ -3030,11 +3072,11 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
             if (_e163 < 4u) {
                 let _e168 = i_14;
                 let _e170 = cuts[_e168];
-                local_38 = (_e170 >= 2f);
+                local_39 = (_e170 >= 2f);
             } else {
-                local_38 = false;
+                local_39 = false;
             }
-            let _e174 = local_38;
+            let _e174 = local_39;
             if _e174 {
                 break;
             }
@@ -3049,17 +3091,17 @@ fn airlight_half(s_10: AirlightScene, g_14: AirlightCanonical, sigma_12: f32, ha
 }
 
 fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
-    var local_39: bool;
-    var span: f32;
+    var local_40: bool;
+    var span_1: f32;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
     if !(g_15.t_hi_infinite) {
-        local_39 = (g_15.x_h > g_15.t_hi);
+        local_40 = (g_15.x_h > g_15.t_hi);
     } else {
-        local_39 = false;
+        local_40 = false;
     }
-    let _e10 = local_39;
+    let _e10 = local_40;
     if _e10 {
         let _e16 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, -(g_15.d_el));
         let _e22 = airlight_phase_mu(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, 1f);
@@ -3075,11 +3117,11 @@ fn airlight_on_line(s_11: AirlightScene, g_15: AirlightCanonical) -> f32 {
     let s0_ = (g_15.t_lo - g_15.x_h);
     let s1_ = (g_15.t_hi - g_15.x_h);
     if (s_11.sigma_t == 0f) {
-        span = (1f / s0_);
+        span_1 = (1f / s0_);
         if !(g_15.t_hi_infinite) {
-            span = (((s1_ - s0_) / s1_) / s0_);
+            span_1 = (((s1_ - s0_) / s1_) / s0_);
         }
-        let _e75 = span;
+        let _e75 = span_1;
         let _e77 = airlight_weighted(s_11.sigma_s, s_11.intensity, 2f, 0f, (f_4 * _e75));
         return _e77;
     }
@@ -3118,8 +3160,8 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_40: bool;
     var local_41: bool;
+    var local_42: bool;
     var x_11: f32 = 0f;
 
     let h_4 = g_16.h;
@@ -3129,11 +3171,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     let u_e = ((g_16.t_hi - g_16.x_h) / h_4);
     if !(g_16.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_40 = _e24;
+        local_41 = _e24;
     } else {
-        local_40 = false;
+        local_41 = false;
     }
-    let _e26 = local_40;
+    let _e26 = local_41;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -3141,11 +3183,11 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_41 = _e40;
+            local_42 = _e40;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        let _e42 = local_41;
+        let _e42 = local_42;
         if _e42 {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3176,27 +3218,27 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
 }
 
 fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResult {
-    var local_42: bool;
     var local_43: bool;
     var local_44: bool;
     var local_45: bool;
-    var gap_2: f32 = 0f;
     var local_46: bool;
+    var gap_2: f32 = 0f;
+    var local_47: bool;
 
     let t0_ = g_17.t_lo;
     let t1_ = g_17.t_hi;
     if !(g_17.t_hi_infinite) {
-        local_42 = (t1_ > t0_);
-    } else {
-        local_42 = true;
-    }
-    let _e10 = local_42;
-    if !(!(_e10)) {
-        local_43 = ((s_13.sigma_s * s_13.intensity) == 0f);
+        local_43 = (t1_ > t0_);
     } else {
         local_43 = true;
     }
-    let _e21 = local_43;
+    let _e10 = local_43;
+    if !(!(_e10)) {
+        local_44 = ((s_13.sigma_s * s_13.intensity) == 0f);
+    } else {
+        local_44 = true;
+    }
+    let _e21 = local_44;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3204,16 +3246,16 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     let x_h = g_17.x_h;
     if (t0_ <= x_h) {
         if !(g_17.t_hi_infinite) {
-            local_45 = (x_h <= t1_);
+            local_46 = (x_h <= t1_);
         } else {
-            local_45 = true;
+            local_46 = true;
         }
-        let _e36 = local_45;
-        local_44 = _e36;
+        let _e36 = local_46;
+        local_45 = _e36;
     } else {
-        local_44 = false;
+        local_45 = false;
     }
-    let inside = local_44;
+    let inside = local_45;
     if (x_h < t0_) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3223,11 +3265,11 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     }
     if !(inside) {
         let _e48 = gap_2;
-        local_46 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_47 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_46 = false;
+        local_47 = false;
     }
-    let _e55 = local_46;
+    let _e55 = local_47;
     if _e55 {
         let _e56 = airlight_on_line(s_13, g_17);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3239,75 +3281,75 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
 }
 
 fn airlight_isotropic_scene(s_14: AirlightScene) -> bool {
-    var local_47: bool;
     var local_48: bool;
     var local_49: bool;
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
+    var local_53: bool;
 
     if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_48 = (s_14.light_param_a == 0f);
+            local_49 = (s_14.light_param_a == 0f);
         } else {
-            local_48 = false;
+            local_49 = false;
         }
-        let _e16 = local_48;
-        local_47 = _e16;
+        let _e16 = local_49;
+        local_48 = _e16;
     } else {
-        local_47 = true;
+        local_48 = true;
     }
-    let _e18 = local_47;
+    let _e18 = local_48;
     if _e18 {
         if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_51 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_52 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_51 = true;
+                local_52 = true;
             }
-            let _e37 = local_51;
+            let _e37 = local_52;
             if _e37 {
-                local_52 = (s_14.phase_param_a == 0f);
+                local_53 = (s_14.phase_param_a == 0f);
             } else {
-                local_52 = false;
+                local_53 = false;
             }
-            let _e44 = local_52;
-            local_50 = _e44;
+            let _e44 = local_53;
+            local_51 = _e44;
         } else {
-            local_50 = true;
+            local_51 = true;
         }
-        let _e46 = local_50;
-        local_49 = _e46;
+        let _e46 = local_51;
+        local_50 = _e46;
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    let _e48 = local_49;
+    let _e48 = local_50;
     return _e48;
 }
 
 fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
-    var local_53: bool;
     var local_54: bool;
     var local_55: bool;
+    var local_56: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_56: bool;
-    var half_13: AirlightHalf;
     var local_57: bool;
+    var half_13: AirlightHalf;
     var local_58: bool;
     var local_59: bool;
+    var local_60: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_60: bool;
     var local_61: bool;
-    var half_14: AirlightHalf;
     var local_62: bool;
+    var half_14: AirlightHalf;
     var local_63: bool;
     var local_64: bool;
+    var local_65: bool;
 
     let _e2 = airlight_limits(s_15, g_18);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
@@ -3320,23 +3362,23 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
     let big_h_8 = (s_15.sigma_t * h_6);
     let _e12 = airlight_isotropic_scene(s_15);
     if _e12 {
-        local_53 = (t0_1 < x_h_1);
-    } else {
-        local_53 = false;
-    }
-    let _e17 = local_53;
-    if _e17 {
-        if !(g_18.t_hi_infinite) {
-            local_55 = (x_h_1 < t1_1);
-        } else {
-            local_55 = true;
-        }
-        let _e26 = local_55;
-        local_54 = _e26;
+        local_54 = (t0_1 < x_h_1);
     } else {
         local_54 = false;
     }
-    let _e28 = local_54;
+    let _e17 = local_54;
+    if _e17 {
+        if !(g_18.t_hi_infinite) {
+            local_56 = (x_h_1 < t1_1);
+        } else {
+            local_56 = true;
+        }
+        let _e26 = local_56;
+        local_55 = _e26;
+    } else {
+        local_55 = false;
+    }
+    let _e28 = local_55;
     if _e28 {
         let _e29 = airlight_whole_line(s_15, g_18, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
@@ -3352,11 +3394,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_18.t_hi_infinite) {
-            local_56 = (t1_1 < x_h_1);
+            local_57 = (t1_1 < x_h_1);
         } else {
-            local_56 = false;
+            local_57 = false;
         }
-        let _e61 = local_56;
+        let _e61 = local_57;
         if _e61 {
             t_end = t1_1;
         }
@@ -3372,14 +3414,14 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
             let _e89 = half_13.big_h;
-            local_57 = (_e89 > 0f);
+            local_58 = (_e89 > 0f);
         } else {
-            local_57 = false;
+            local_58 = false;
         }
-        let _e93 = local_57;
+        let _e93 = local_58;
         if _e93 {
             let _e95 = half_13.big_h;
-            let _e96 = airlight_cut_length(_e95, _e67);
+            let _e96 = airlight_cut_length(_e95, _e67, dy_1);
             if (_e96 < dy_1) {
                 let _e100 = half_13.big_h;
                 half_13 = AirlightHalf(false, _e100, _e67, (_e67 + _e96), _e96, _e96, false);
@@ -3393,18 +3435,18 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         total_3 = (_e108 + _e112);
     }
     if !(g_18.t_hi_infinite) {
-        local_58 = (t1_1 > x_h_1);
+        local_59 = (t1_1 > x_h_1);
     } else {
-        local_58 = true;
+        local_59 = true;
     }
-    let _e120 = local_58;
+    let _e120 = local_59;
     if _e120 {
         let _e123 = behind_cut;
-        local_59 = !(_e123);
+        local_60 = !(_e123);
     } else {
-        local_59 = false;
+        local_60 = false;
     }
-    let _e126 = local_59;
+    let _e126 = local_60;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3414,22 +3456,22 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_18.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_60 = _e145;
+            local_61 = _e145;
         } else {
-            local_60 = false;
+            local_61 = false;
         }
-        let _e147 = local_60;
+        let _e147 = local_61;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_61 = _e162;
+                local_62 = _e162;
             } else {
-                local_61 = false;
+                local_62 = false;
             }
-            let _e164 = local_61;
+            let _e164 = local_62;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3449,66 +3491,68 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut_1 {
             let _e183 = half_14.big_h;
-            local_62 = (_e183 > 0f);
+            local_63 = (_e183 > 0f);
         } else {
-            local_62 = false;
+            local_63 = false;
         }
-        let _e187 = local_62;
+        let _e187 = local_63;
         if _e187 {
             let _e189 = half_14.big_h;
-            let _e192 = airlight_cut_length(_e189, (1f / _e131));
-            let _e193 = infinite_2;
-            if !(_e193) {
-                let _e197 = dv_3;
-                local_63 = (_e192 < _e197);
+            let _e192 = dv_3;
+            let _e194 = infinite_2;
+            let _e196 = airlight_cut_length(_e189, (1f / _e131), select(_e192, AIRLIGHT_FLT_MAX, _e194));
+            let _e197 = infinite_2;
+            if !(_e197) {
+                let _e201 = dv_3;
+                local_64 = (_e196 < _e201);
             } else {
-                local_63 = true;
+                local_64 = true;
             }
-            let _e200 = local_63;
-            if _e200 {
-                let cut_y_lo = (_e131 / (1f + (_e131 * _e192)));
+            let _e204 = local_64;
+            if _e204 {
+                let cut_y_lo = (_e131 / (1f + (_e131 * _e196)));
                 if (cut_y_lo > 0f) {
-                    let _e209 = airlight_is_finite(_e192);
-                    local_64 = _e209;
+                    let _e213 = airlight_is_finite(_e196);
+                    local_65 = _e213;
                 } else {
-                    local_64 = false;
+                    local_65 = false;
                 }
-                let _e211 = local_64;
-                if _e211 {
-                    let _e214 = half_14.big_h;
-                    half_14 = AirlightHalf(true, _e214, cut_y_lo, _e131, ((_e192 * cut_y_lo) * _e131), _e192, false);
+                let _e215 = local_65;
+                if _e215 {
+                    let _e218 = half_14.big_h;
+                    half_14 = AirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
                 }
             }
         }
-        let _e220 = half_14;
-        let _e221 = airlight_half(s_15, g_18, 1f, _e220, _e12, (&f_max_7));
-        let _e222 = total_3;
-        let _e230 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e221);
-        total_3 = (_e222 + _e230);
+        let _e224 = half_14;
+        let _e225 = airlight_half(s_15, g_18, 1f, _e224, _e12, (&f_max_7));
+        let _e226 = total_3;
+        let _e234 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        total_3 = (_e226 + _e234);
     }
-    let _e232 = total_3;
-    return AirlightResult(max(_e232, 0f), AIRLIGHT_STATUS_OK);
+    let _e236 = total_3;
+    return AirlightResult(max(_e236, 0f), AIRLIGHT_STATUS_OK);
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_65: bool;
     var local_66: bool;
+    var local_67: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_65 = _e6;
-    } else {
-        local_65 = false;
-    }
-    let _e8 = local_65;
-    if _e8 {
-        let _e12 = airlight_is_finite(v.z);
-        local_66 = _e12;
+        local_66 = _e6;
     } else {
         local_66 = false;
     }
-    let _e14 = local_66;
+    let _e8 = local_66;
+    if _e8 {
+        let _e12 = airlight_is_finite(v.z);
+        local_67 = _e12;
+    } else {
+        local_67 = false;
+    }
+    let _e14 = local_67;
     return _e14;
 }
 
@@ -3521,16 +3565,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_67: bool;
+    var local_68: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_67 = _e6;
+        local_68 = _e6;
     } else {
-        local_67 = false;
+        local_68 = false;
     }
-    let _e8 = local_67;
+    let _e8 = local_68;
     return _e8;
 }
 
@@ -3541,7 +3585,6 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_16: AirlightScene) -> bool {
-    var local_68: bool;
     var local_69: bool;
     var local_70: bool;
     var local_71: bool;
@@ -3551,8 +3594,8 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_75: bool;
     var local_76: bool;
     var local_77: bool;
-    var ok: bool;
     var local_78: bool;
+    var ok: bool;
     var local_79: bool;
     var local_80: bool;
     var local_81: bool;
@@ -3580,102 +3623,103 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_103: bool;
     var local_104: bool;
     var local_105: bool;
+    var local_106: bool;
 
     let _e2 = airlight_vec_finite(s_16.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_16.dir);
-        local_68 = _e6;
-    } else {
-        local_68 = false;
-    }
-    let _e8 = local_68;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_16.dir);
-        local_69 = _e12;
+        local_69 = _e6;
     } else {
         local_69 = false;
     }
-    let _e14 = local_69;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_16.t_min);
-        local_70 = _e18;
+    let _e8 = local_69;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_16.dir);
+        local_70 = _e12;
     } else {
         local_70 = false;
     }
-    let _e20 = local_70;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_16.light_position);
-        local_71 = _e24;
+    let _e14 = local_70;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_16.t_min);
+        local_71 = _e18;
     } else {
         local_71 = false;
     }
-    let _e26 = local_71;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_16.intensity);
-        local_72 = _e30;
+    let _e20 = local_71;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_16.light_position);
+        local_72 = _e24;
     } else {
         local_72 = false;
     }
-    let _e32 = local_72;
-    if _e32 {
-        local_73 = (s_16.intensity >= 0f);
+    let _e26 = local_72;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_16.intensity);
+        local_73 = _e30;
     } else {
         local_73 = false;
     }
-    let _e39 = local_73;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_16.sigma_s);
-        local_74 = _e43;
+    let _e32 = local_73;
+    if _e32 {
+        local_74 = (s_16.intensity >= 0f);
     } else {
         local_74 = false;
     }
-    let _e45 = local_74;
-    if _e45 {
-        local_75 = (s_16.sigma_s >= 0f);
+    let _e39 = local_74;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_16.sigma_s);
+        local_75 = _e43;
     } else {
         local_75 = false;
     }
-    let _e52 = local_75;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_16.sigma_t);
-        local_76 = _e56;
+    let _e45 = local_75;
+    if _e45 {
+        local_76 = (s_16.sigma_s >= 0f);
     } else {
         local_76 = false;
     }
-    let _e58 = local_76;
-    if _e58 {
-        local_77 = (s_16.sigma_t >= 0f);
+    let _e52 = local_76;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_16.sigma_t);
+        local_77 = _e56;
     } else {
         local_77 = false;
     }
-    let _e65 = local_77;
+    let _e58 = local_77;
+    if _e58 {
+        local_78 = (s_16.sigma_t >= 0f);
+    } else {
+        local_78 = false;
+    }
+    let _e65 = local_78;
     ok = _e65;
     if ((s_16.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_16.t_max);
-            local_78 = _e76;
-        } else {
-            local_78 = false;
-        }
-        let _e78 = local_78;
-        if _e78 {
-            local_79 = (s_16.t_min <= s_16.t_max);
+            local_79 = _e76;
         } else {
             local_79 = false;
         }
-        let _e85 = local_79;
+        let _e78 = local_79;
+        if _e78 {
+            local_80 = (s_16.t_min <= s_16.t_max);
+        } else {
+            local_80 = false;
+        }
+        let _e85 = local_80;
         ok = _e85;
     }
     if (s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_16.light_end);
-            local_80 = _e93;
+            local_81 = _e93;
         } else {
-            local_80 = false;
+            local_81 = false;
         }
-        let _e95 = local_80;
+        let _e95 = local_81;
         ok = _e95;
     } else {
         if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3683,76 +3727,76 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         }
     }
     if !((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_81 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_82 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_81 = true;
+        local_82 = true;
     }
-    let _e110 = local_81;
+    let _e110 = local_82;
     if _e110 {
         let _e111 = ok;
         if _e111 {
             let _e115 = airlight_is_finite(s_16.brdf_scale);
-            local_82 = _e115;
-        } else {
-            local_82 = false;
-        }
-        let _e117 = local_82;
-        if _e117 {
-            local_83 = (s_16.brdf_scale >= 0f);
+            local_83 = _e115;
         } else {
             local_83 = false;
         }
-        let _e124 = local_83;
-        if _e124 {
-            local_84 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+        let _e117 = local_83;
+        if _e117 {
+            local_84 = (s_16.brdf_scale >= 0f);
         } else {
             local_84 = false;
         }
-        let _e131 = local_84;
-        if _e131 {
-            local_85 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e124 = local_84;
+        if _e124 {
+            local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_85 = false;
         }
-        let _e138 = local_85;
-        if _e138 {
-            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
-            let _e145 = airlight_is_finite(_e144);
-            local_86 = _e145;
+        let _e131 = local_85;
+        if _e131 {
+            local_86 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
             local_86 = false;
         }
-        let _e147 = local_86;
+        let _e138 = local_86;
+        if _e138 {
+            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
+            let _e145 = airlight_is_finite(_e144);
+            local_87 = _e145;
+        } else {
+            local_87 = false;
+        }
+        let _e147 = local_87;
         ok = _e147;
         if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             let _e151 = ok;
             if _e151 {
                 let _e155 = airlight_is_finite(s_16.brdf_exponent);
-                local_87 = _e155;
-            } else {
-                local_87 = false;
-            }
-            let _e157 = local_87;
-            if _e157 {
-                local_88 = (s_16.brdf_exponent >= 0f);
+                local_88 = _e155;
             } else {
                 local_88 = false;
             }
-            let _e164 = local_88;
-            if _e164 {
-                let _e168 = airlight_vec_finite(s_16.brdf_view);
-                local_89 = _e168;
+            let _e157 = local_88;
+            if _e157 {
+                local_89 = (s_16.brdf_exponent >= 0f);
             } else {
                 local_89 = false;
             }
-            let _e170 = local_89;
-            if _e170 {
-                let _e174 = airlight_normalisable(s_16.brdf_view);
-                local_90 = _e174;
+            let _e164 = local_89;
+            if _e164 {
+                let _e168 = airlight_vec_finite(s_16.brdf_view);
+                local_90 = _e168;
             } else {
                 local_90 = false;
             }
-            let _e176 = local_90;
+            let _e170 = local_90;
+            if _e170 {
+                let _e174 = airlight_normalisable(s_16.brdf_view);
+                local_91 = _e174;
+            } else {
+                local_91 = false;
+            }
+            let _e176 = local_91;
             ok = _e176;
         }
     } else {
@@ -3764,72 +3808,72 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         let _e184 = ok;
         if _e184 {
             let _e188 = airlight_vec_finite(s_16.light_axis);
-            local_91 = _e188;
-        } else {
-            local_91 = false;
-        }
-        let _e190 = local_91;
-        if _e190 {
-            let _e194 = airlight_normalisable(s_16.light_axis);
-            local_92 = _e194;
+            local_92 = _e188;
         } else {
             local_92 = false;
         }
-        let _e196 = local_92;
-        if _e196 {
-            local_93 = (s_16.light_param_a >= 0f);
+        let _e190 = local_92;
+        if _e190 {
+            let _e194 = airlight_normalisable(s_16.light_axis);
+            local_93 = _e194;
         } else {
             local_93 = false;
         }
-        let _e203 = local_93;
-        if _e203 {
-            local_94 = (s_16.light_param_a <= 1024f);
+        let _e196 = local_93;
+        if _e196 {
+            local_94 = (s_16.light_param_a >= 0f);
         } else {
             local_94 = false;
         }
-        let _e210 = local_94;
-        if _e210 {
-            local_95 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        let _e203 = local_94;
+        if _e203 {
+            local_95 = (s_16.light_param_a <= 1024f);
         } else {
             local_95 = false;
         }
-        let _e220 = local_95;
+        let _e210 = local_95;
+        if _e210 {
+            local_96 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_96 = false;
+        }
+        let _e220 = local_96;
         ok = _e220;
     } else {
         if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e224 = ok;
             if _e224 {
                 let _e228 = airlight_vec_finite(s_16.light_axis);
-                local_96 = _e228;
-            } else {
-                local_96 = false;
-            }
-            let _e230 = local_96;
-            if _e230 {
-                let _e234 = airlight_normalisable(s_16.light_axis);
-                local_97 = _e234;
+                local_97 = _e228;
             } else {
                 local_97 = false;
             }
-            let _e236 = local_97;
-            if _e236 {
-                local_98 = (s_16.light_param_b < s_16.light_param_a);
+            let _e230 = local_97;
+            if _e230 {
+                let _e234 = airlight_normalisable(s_16.light_axis);
+                local_98 = _e234;
             } else {
                 local_98 = false;
             }
-            let _e243 = local_98;
-            if _e243 {
-                local_99 = (s_16.light_param_b >= -1f);
+            let _e236 = local_98;
+            if _e236 {
+                local_99 = (s_16.light_param_b < s_16.light_param_a);
             } else {
                 local_99 = false;
             }
-            let _e250 = local_99;
-            if _e250 {
-                local_100 = (s_16.light_param_a <= 1f);
+            let _e243 = local_99;
+            if _e243 {
+                local_100 = (s_16.light_param_b >= -1f);
             } else {
                 local_100 = false;
             }
-            let _e257 = local_100;
+            let _e250 = local_100;
+            if _e250 {
+                local_101 = (s_16.light_param_a <= 1f);
+            } else {
+                local_101 = false;
+            }
+            let _e257 = local_101;
             ok = _e257;
         } else {
             if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -3844,39 +3888,39 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e267 = ok;
             if _e267 {
-                local_101 = g_ok;
+                local_102 = g_ok;
             } else {
-                local_101 = false;
+                local_102 = false;
             }
-            let _e271 = local_101;
+            let _e271 = local_102;
             ok = _e271;
         }
         case 5u: {
             let _e272 = ok;
             if _e272 {
-                local_102 = g_ok;
-            } else {
-                local_102 = false;
-            }
-            let _e276 = local_102;
-            if _e276 {
-                local_103 = (abs(s_16.phase_param_b) < 1f);
+                local_103 = g_ok;
             } else {
                 local_103 = false;
             }
-            let _e284 = local_103;
-            if _e284 {
-                local_104 = (s_16.phase_param_c >= 0f);
+            let _e276 = local_103;
+            if _e276 {
+                local_104 = (abs(s_16.phase_param_b) < 1f);
             } else {
                 local_104 = false;
             }
-            let _e291 = local_104;
-            if _e291 {
-                local_105 = (s_16.phase_param_c <= 1f);
+            let _e284 = local_104;
+            if _e284 {
+                local_105 = (s_16.phase_param_c >= 0f);
             } else {
                 local_105 = false;
             }
-            let _e298 = local_105;
+            let _e291 = local_105;
+            if _e291 {
+                local_106 = (s_16.phase_param_c <= 1f);
+            } else {
+                local_106 = false;
+            }
+            let _e298 = local_106;
             ok = _e298;
         }
         default: {
@@ -3947,29 +3991,29 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_106: bool;
     var local_107: bool;
+    var local_108: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_107 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_108 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_107 = false;
+            local_108 = false;
         }
-        let _e21 = local_107;
-        local_106 = _e21;
+        let _e21 = local_108;
+        local_107 = _e21;
     } else {
-        local_106 = true;
+        local_107 = true;
     }
-    let _e23 = local_106;
+    let _e23 = local_107;
     return _e23;
 }
 
 fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_108: bool;
-    var out_2: AirlightCanonical;
     var local_109: bool;
+    var out_2: AirlightCanonical;
+    var local_110: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_18.flags > 1u));
@@ -3982,11 +4026,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_4);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_108 = !(_e38);
+        local_109 = !(_e38);
     } else {
-        local_108 = true;
+        local_109 = true;
     }
-    let _e41 = local_108;
+    let _e41 = local_109;
     if _e41 {
         return plain;
     }
@@ -4010,11 +4054,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_109 = (h_7 > 0f);
+        local_110 = (h_7 > 0f);
     } else {
-        local_109 = false;
+        local_110 = false;
     }
-    let _e101 = local_109;
+    let _e101 = local_110;
     if !(_e101) {
         return plain;
     }
@@ -4403,15 +4447,15 @@ fn airlight_outer_point(s_21: AirlightScene, max_panels: u32) -> AirlightOuter {
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_110: bool;
+    var local_111: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_17: u32 = 1u;
     var j_3: u32;
-    var local_111: bool;
-    var k_3: u32 = 0u;
-    var i_18: u32 = 0u;
     var local_112: bool;
+    var k_4: u32 = 0u;
+    var i_18: u32 = 0u;
+    var local_113: bool;
     var i_19: u32 = 0u;
 
     let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
@@ -4419,11 +4463,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     let to_light_1 = (s_22.light_position - s_22.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_22.intensity == 0f)) {
-        local_110 = (s_22.sigma_s == 0f);
+        local_111 = (s_22.sigma_s == 0f);
     } else {
-        local_110 = true;
+        local_111 = true;
     }
-    let _e18 = local_110;
+    let _e18 = local_111;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4527,11 +4571,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 if (_e219 > 0u) {
                     let _e224 = j_3;
                     let _e228 = cuts_1[(_e224 - 1u)];
-                    local_111 = (_e228 > c_10);
+                    local_112 = (_e228 > c_10);
                 } else {
-                    local_111 = false;
+                    local_112 = false;
                 }
-                let _e231 = local_111;
+                let _e231 = local_112;
                 if _e231 {
                 } else {
                     break;
@@ -4562,20 +4606,20 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         {
             let _e254 = i_18;
             let _e256 = cuts_1[_e254];
-            let _e258 = k_3;
+            let _e258 = k_4;
             let _e260 = g_20.gamma[_e258];
             if (_e256 > _e260) {
                 let _e264 = i_18;
                 let _e266 = cuts_1[_e264];
-                local_112 = (_e266 < AIRLIGHT_PI);
+                local_113 = (_e266 < AIRLIGHT_PI);
             } else {
-                local_112 = false;
+                local_113 = false;
             }
-            let _e270 = local_112;
+            let _e270 = local_113;
             if _e270 {
-                let _e271 = k_3;
-                k_3 = (_e271 + 1u);
-                let _e275 = k_3;
+                let _e271 = k_4;
+                k_4 = (_e271 + 1u);
+                let _e275 = k_4;
                 let _e277 = i_18;
                 let _e279 = cuts_1[_e277];
                 g_20.gamma[_e275] = _e279;
@@ -4586,9 +4630,9 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             i_18 = (_e281 + 1u);
         }
     }
-    let _e284 = k_3;
+    let _e284 = k_4;
     g_20.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
-    let _e290 = k_3;
+    let _e290 = k_4;
     g_20.panels = (_e290 + 1u);
     loop {
         let _e295 = i_19;
@@ -4612,7 +4656,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
-    var local_113: bool;
+    var local_114: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_17));
     let s2_ = (_e4.y * _e4.y);
@@ -4621,11 +4665,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
     let clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_113 = (clip > 0f);
+        local_114 = (clip > 0f);
     } else {
-        local_113 = false;
+        local_114 = false;
     }
-    let _e35 = local_113;
+    let _e35 = local_114;
     if _e35 {
         let _e39 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
@@ -4644,7 +4688,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep
 
 fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
     var end: f32;
-    var local_114: bool;
+    var local_115: bool;
 
     end = x_18;
     let _e3 = end;
@@ -4661,11 +4705,11 @@ fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
     let _e16 = end;
     if (_e16 > -(cut)) {
         let _e21 = end;
-        local_114 = (_e21 < cut);
+        local_115 = (_e21 < cut);
     } else {
-        local_114 = false;
+        local_115 = false;
     }
-    let _e24 = local_114;
+    let _e24 = local_115;
     return select(0f, _e15, _e24);
 }
 
@@ -4674,30 +4718,30 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_115: bool;
+    var local_116: bool;
     var sum_5: f32 = 0f;
-    var k_4: u32 = 0u;
+    var k_5: u32 = 0u;
 
     let w_6 = (hi_3 - lo_4);
     if !(!((w_6 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_6)));
-        local_115 = !((_e14 > 0f));
+        local_116 = !((_e14 > 0f));
     } else {
-        local_115 = true;
+        local_116 = true;
     }
-    let _e19 = local_115;
+    let _e19 = local_116;
     if _e19 {
         return 0f;
     }
     let _e21 = airlight_lobe_rule();
     loop {
-        let _e26 = k_4;
+        let _e26 = k_5;
         if (_e26 < AIRLIGHT_LOBE_PAIRS) {
         } else {
             break;
         }
         {
-            let _e29 = k_4;
+            let _e29 = k_5;
             let node = _e21[_e29];
             let _e31 = sum_5;
             let _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
@@ -4705,8 +4749,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
             sum_5 = (_e31 + (node.y * (_e34 + _e38)));
         }
         continuing {
-            let _e43 = k_4;
-            k_4 = (_e43 + 1u);
+            let _e43 = k_5;
+            k_5 = (_e43 + 1u);
         }
     }
     let _e45 = sum_5;
@@ -4720,15 +4764,15 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var i_20: u32 = 0u;
 
     let c_11 = (g_21.cos_r * cs.x);
-    let d_4 = (g_21.sin_r * cs.y);
-    let peak = (c_11 + d_4);
+    let d_5 = (g_21.sin_r * cs.y);
+    let peak = (c_11 + d_5);
     if !((peak > 0f)) {
         return 0f;
     }
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_21.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_6 = AirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
+    let q_6 = AirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2f * d_5) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
     if (exponent > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent));
         reach = -(_e46);
@@ -4791,33 +4835,33 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_116: bool;
     var local_117: bool;
+    var local_118: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_118: bool;
     var local_119: bool;
     var local_120: bool;
     var local_121: bool;
     var local_122: bool;
     var local_123: bool;
-    var scale: f32 = 0f;
     var local_124: bool;
+    var scale: f32 = 0f;
     var local_125: bool;
     var local_126: bool;
     var local_127: bool;
     var local_128: bool;
+    var local_129: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var local_129: bool;
-    var i_21: u32 = 0u;
     var local_130: bool;
+    var i_21: u32 = 0u;
     var local_131: bool;
     var local_132: bool;
     var local_133: bool;
+    var local_134: bool;
     var n_1: u32 = 0u;
     var i_22: u32 = 0u;
-    var local_134: bool;
+    var local_135: bool;
 
     if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_23);
@@ -4832,17 +4876,17 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_23.light_end - s_23.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_116 = (s_23.intensity == 0f);
-    } else {
-        local_116 = true;
-    }
-    let _e26 = local_116;
-    if !(_e26) {
-        local_117 = (s_23.sigma_s == 0f);
+        local_117 = (s_23.intensity == 0f);
     } else {
         local_117 = true;
     }
-    let _e34 = local_117;
+    let _e26 = local_117;
+    if !(_e26) {
+        local_118 = (s_23.sigma_s == 0f);
+    } else {
+        local_118 = true;
+    }
+    let _e34 = local_118;
     if _e34 {
         g_22.outcome = 1u;
         let _e37 = g_22;
@@ -4866,94 +4910,94 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_118 = (sin_a_1 > 0f);
-    } else {
-        local_118 = false;
-    }
-    let _e84 = local_118;
-    if _e84 {
-        let _e87 = s_star;
-        local_119 = (_e87 >= 0f);
+        local_119 = (sin_a_1 > 0f);
     } else {
         local_119 = false;
     }
-    let _e91 = local_119;
-    if _e91 {
-        let _e94 = s_star;
-        local_120 = (_e94 <= _e15);
+    let _e84 = local_119;
+    if _e84 {
+        let _e87 = s_star;
+        local_120 = (_e87 >= 0f);
     } else {
         local_120 = false;
     }
-    let _e97 = local_120;
-    if _e97 {
-        let _e101 = t_star;
-        local_121 = (s_23.t_min <= _e101);
+    let _e91 = local_120;
+    if _e91 {
+        let _e94 = s_star;
+        local_121 = (_e94 <= _e15);
     } else {
         local_121 = false;
     }
-    let _e104 = local_121;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_123 = (_e110 <= s_23.t_max);
-        } else {
-            local_123 = true;
-        }
-        let _e114 = local_123;
-        local_122 = _e114;
+    let _e97 = local_121;
+    if _e97 {
+        let _e101 = t_star;
+        local_122 = (s_23.t_min <= _e101);
     } else {
         local_122 = false;
     }
-    let _e116 = local_122;
+    let _e104 = local_122;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_124 = (_e110 <= s_23.t_max);
+        } else {
+            local_124 = true;
+        }
+        let _e114 = local_124;
+        local_123 = _e114;
+    } else {
+        local_123 = false;
+    }
+    let _e116 = local_123;
     if _e116 {
         g_22.outcome = 2u;
         let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_124 = (_e73 > 0f);
+        local_125 = (_e73 > 0f);
     } else {
-        local_124 = false;
+        local_125 = false;
     }
-    let _e129 = local_124;
+    let _e129 = local_125;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_125 = (_e136 < (_e15 + _e15));
-    } else {
-        local_125 = false;
-    }
-    let _e140 = local_125;
-    if _e140 {
-        let _e143 = scale;
-        local_126 = (_e143 < _e15);
+        local_126 = (_e136 < (_e15 + _e15));
     } else {
         local_126 = false;
     }
-    let near_1 = local_126;
+    let _e140 = local_126;
+    if _e140 {
+        let _e143 = scale;
+        local_127 = (_e143 < _e15);
+    } else {
+        local_127 = false;
+    }
+    let near_1 = local_127;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_127 = _e154;
+        local_128 = _e154;
     } else {
-        local_127 = false;
+        local_128 = false;
     }
-    let _e156 = local_127;
+    let _e156 = local_128;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_128 = _e163;
+        local_129 = _e163;
     } else {
-        local_128 = false;
+        local_129 = false;
     }
-    let _e165 = local_128;
+    let _e165 = local_129;
     if !(_e165) {
         scale = 0f;
     }
@@ -4970,11 +5014,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_22;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_129 = (min(-(_e194), _e197) < 0.5f);
+        local_130 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_129 = false;
+        local_130 = false;
     }
-    let sliver = local_129;
+    let sliver = local_130;
     loop {
         let _e205 = i_21;
         if (_e205 < 3u) {
@@ -4984,31 +5028,31 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         {
             let _e208 = i_21;
             if (_e208 == 0u) {
-                local_130 = sliver;
+                local_131 = sliver;
             } else {
-                local_130 = false;
+                local_131 = false;
             }
-            let _e214 = local_130;
+            let _e214 = local_131;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e219 = i_21;
-                local_131 = (_e219 > 0u);
+                local_132 = (_e219 > 0u);
             } else {
-                local_131 = false;
+                local_132 = false;
             }
-            let _e223 = local_131;
+            let _e223 = local_132;
             if _e223 {
                 continue;
             }
             let _e224 = i_21;
             if (_e224 == 2u) {
-                local_132 = infinite_4;
+                local_133 = infinite_4;
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            let _e230 = local_132;
+            let _e230 = local_133;
             if _e230 {
                 continue;
             }
@@ -5017,11 +5061,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e233 > 0f) {
                 let _e238 = i_21;
                 let _e240 = at[_e238];
-                local_133 = (_e240 < _e15);
+                local_134 = (_e240 < _e15);
             } else {
-                local_133 = false;
+                local_134 = false;
             }
-            let _e243 = local_133;
+            let _e243 = local_134;
             if _e243 {
                 let _e244 = i_21;
                 let _e246 = g_22;
@@ -5079,11 +5123,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e303 > _e307) {
                 let _e311 = i_22;
                 let _e313 = cuts_2[_e311];
-                local_134 = (_e313 < _e288);
+                local_135 = (_e313 < _e288);
             } else {
-                local_134 = false;
+                local_135 = false;
             }
-            let _e316 = local_134;
+            let _e316 = local_135;
             if _e316 {
                 let _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5175,15 +5219,15 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_135: bool;
+    var local_136: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_135 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_136 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_135 = true;
+        local_136 = true;
     }
-    let _e11 = local_135;
+    let _e11 = local_136;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5192,18 +5236,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_136: bool;
+    var local_137: bool;
     var g_24: AirlightCanonical;
 
     let p_1 = n_2.scene;
     let _e7 = airlight_vec_finite(p_1.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_1.dir);
-        local_136 = _e11;
+        local_137 = _e11;
     } else {
-        local_136 = false;
+        local_137 = false;
     }
-    let _e13 = local_136;
+    let _e13 = local_137;
     if _e13 {
         g_24 = n_2.canonical;
         if !(n_2.exact) {
@@ -5230,17 +5274,17 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var queued_lo: f32 = 0f;
     var queued_hi: f32 = 0f;
     var step_2: u32 = 0u;
-    var k_5: f32;
+    var k_6: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_137: bool;
-    var f: f32;
     var local_138: bool;
+    var f: f32;
+    var local_139: bool;
     var split: bool;
     var tries: u32;
-    var local_139: bool;
     var local_140: bool;
     var local_141: bool;
+    var local_142: bool;
 
     let _e1 = airlight_valid(s_25);
     if !(_e1) {
@@ -5269,8 +5313,8 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
             let c_15 = (0.5f * (_e80 + _e81));
             let _e85 = b_13;
             let _e86 = a_17;
-            let hw_3 = (0.5f * (_e85 - _e86));
-            k_5 = 0f;
+            let hw_2 = (0.5f * (_e85 - _e86));
+            k_6 = 0f;
             gauss = 0f;
             j_4 = 0u;
             loop {
@@ -5285,12 +5329,12 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                     let _e109 = j_4;
                     if ((_e109 & 1u) == 0u) {
                         let _e116 = j_4;
-                        local_137 = (_e116 < 6u);
+                        local_138 = (_e116 < 6u);
                     } else {
-                        local_137 = false;
+                        local_138 = false;
                     }
-                    let _e120 = local_137;
-                    let w_7 = select((c_15 + (hw_3 * node_1.x)), (c_15 - (hw_3 * node_1.x)), _e120);
+                    let _e120 = local_138;
+                    let w_7 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
                     let _e122 = airlight_outer_node(s_25, _e6, w_7);
                     f = 0f;
                     if (_e122.weight != 0f) {
@@ -5299,19 +5343,19 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             return _e128;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_138 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_139 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_138 = false;
+                            local_139 = false;
                         }
-                        let _e141 = local_138;
+                        let _e141 = local_139;
                         if _e141 {
                             return _e128;
                         }
                         f = (_e128.in_scatter * _e122.weight);
                     }
-                    let _e145 = k_5;
+                    let _e145 = k_6;
                     let _e147 = f;
-                    k_5 = (_e145 + (node_1.y * _e147));
+                    k_6 = (_e145 + (node_1.y * _e147));
                     let _e150 = gauss;
                     let _e152 = f;
                     gauss = (_e150 + (node_1.z * _e152));
@@ -5324,10 +5368,10 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
             let _e158 = slot_1;
             let _e159 = a_17;
             let _e160 = b_13;
-            let _e161 = k_5;
-            let _e163 = k_5;
+            let _e161 = k_6;
+            let _e163 = k_6;
             let _e165 = gauss;
-            airlight_list_set((&list_1), _e158, vec4<f32>(_e159, _e160, (_e161 * hw_3), abs(((_e163 * hw_3) - (_e165 * hw_3)))));
+            airlight_list_set((&list_1), _e158, vec4<f32>(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
             let _e170 = slot_1;
             let _e171 = count_2;
             if (_e170 == _e171) {
@@ -5369,18 +5413,18 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let worst_1 = _e202.worst;
                             if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e213 = count_2;
-                                local_139 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_139 = true;
-                            }
-                            let _e217 = local_139;
-                            if !(_e217) {
-                                let _e221 = airlight_is_finite(total_4);
-                                local_140 = !(_e221);
+                                local_140 = (_e213 == _e6.max_panels);
                             } else {
                                 local_140 = true;
                             }
-                            let _e224 = local_140;
+                            let _e217 = local_140;
+                            if !(_e217) {
+                                let _e221 = airlight_is_finite(total_4);
+                                local_141 = !(_e221);
+                            } else {
+                                local_141 = true;
+                            }
+                            let _e224 = local_141;
                             if _e224 {
                                 break;
                             }
@@ -5388,22 +5432,22 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                             let _e226 = airlight_list_get(_e225, worst_1);
                             let wa_1 = _e226.x;
                             let wb_1 = _e226.y;
-                            let mid_3 = (0.5f * (wa_1 + wb_1));
-                            if (mid_3 > wa_1) {
-                                local_141 = (mid_3 < wb_1);
+                            let mid_1 = (0.5f * (wa_1 + wb_1));
+                            if (mid_1 > wa_1) {
+                                local_142 = (mid_1 < wb_1);
                             } else {
-                                local_141 = false;
+                                local_142 = false;
                             }
-                            let _e237 = local_141;
+                            let _e237 = local_142;
                             if !(_e237) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;
                             }
                             a_17 = wa_1;
-                            b_13 = mid_3;
+                            b_13 = mid_1;
                             slot_1 = worst_1;
                             queued = true;
-                            queued_lo = mid_3;
+                            queued_lo = mid_1;
                             queued_hi = wb_1;
                             split = true;
                             break;

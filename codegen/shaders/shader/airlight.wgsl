@@ -21,8 +21,13 @@ const AIRLIGHT_PANEL_LIST: u32 = @PANEL_LIST@u;
 const AIRLIGHT_Y_PANEL_EXPONENT: f32 = @Y_PANEL_EXPONENT@;
 // The margin of the panels' aliasing model (panels.rs ALIASING_MARGIN).
 const AIRLIGHT_ALIASING_MARGIN: u32 = @ALIASING_MARGIN@u;
-// 1/(3·5⋯(2N+1)) for the light-angle route's predicted coefficient (angle.rs).
+// 1/(3·5⋯(2N+1)) for the light-angle route's predicted coefficient, and for N − 1 and N − 2
+// for its predicted estimate (angle.rs `predicted_coefficient`, `predicted_estimate`).
 const AIRLIGHT_INV_ODD_FACTORIAL: f32 = @INV_ODD_FACTORIAL@;
+const AIRLIGHT_INV_ODD_FACTORIAL_1: f32 = @INV_ODD_FACTORIAL_1@;
+const AIRLIGHT_INV_ODD_FACTORIAL_2: f32 = @INV_ODD_FACTORIAL_2@;
+// The largest H·Δv the extinction's cut never cuts (combined.rs `uncut_span`).
+const AIRLIGHT_UNCUT_SPAN: f32 = @UNCUT_SPAN@;
 // The range of exact products (real.rs, f32).
 const AIRLIGHT_EXACT_RANGE: f32 = @EXACT_RANGE@;
 const AIRLIGHT_PI: f32 = 3.14159265358979;
@@ -1230,15 +1235,16 @@ fn airlight_angle_y(u: f32) -> f32 {
 }
 
 /// The floor of the coefficients' rate from a phase singularity at the cosine
-/// side·(1 + gap): θ = ∓π/2 ± i·acosh(1 + gap), through the Bernstein ellipse of the panel
-/// [mid − hw, mid + hw] (angle.rs `whole_segment`).
-fn airlight_angle_floor(side: f32, gap: f32, mid: f32, hw: f32, step: f32) -> f32 {
+/// side·(1 + gap): θ = ∓π/2 ± i·acosh(1 + gap), through the Bernstein ellipse of the panel,
+/// the pole ψ0 before its start (side > 0) or ψ1 past its end, 1 + ψ/hw from its centre in
+/// units of hw (angle.rs `Plan::new`).
+fn airlight_angle_floor(side: f32, gap: f32, psi0: f32, psi1: f32, inv_hw: f32, step: f32) -> f32 {
     if (!(gap > 0.0) || gap >= AIRLIGHT_FLT_MAX) { return 0.0; }
-    // acosh(1 + gap) = ln(1 + y) from below by 2y/(2 + y) (angle.rs `Plan::new`)
+    // acosh(1 + gap) = ln(1 + y) from below by 2y/(2 + y)
     let y = gap + sqrt(gap * (2.0 + gap));
     let im = (y + y) / (2.0 + y);
-    let re = select(0.5 * AIRLIGHT_PI, -0.5 * AIRLIGHT_PI, side > 0.0);
-    return step / airlight_bernstein_rho((re - mid) / hw, im / hw);
+    let offset = select(psi1, psi0, side > 0.0);
+    return step / airlight_bernstein_rho(1.0 + offset * inv_hw, im * inv_hw);
 }
 
 /// The whole segment as one Gauss–Legendre panel in the angle seen from the light, where its
@@ -1256,49 +1262,68 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
     var y1 = AIRLIGHT_FLT_MAX;
     if (u1_finite) { y1 = airlight_angle_y(u1); }
     var y_cut = AIRLIGHT_FLT_MAX;
-    if (big_h > 0.0) { y_cut = y0 + airlight_cut_length(big_h, y0); }
+    if (big_h > 0.0) { y_cut = y0 + airlight_cut_length(big_h, y0, y1 - y0); }
     let psi0 = airlight_atan2_upper(1.0, -u0);
+    // ψ1, and the width as k·atan2(y, x) from the segment's length; a width of at least 1 as
+    // π − ψ0 − ψ1, which loses at most πε of it (angle.rs `Plan::new`)
     var psi1 = 0.0;
-    var width = airlight_atan2_upper(1.0, u0);
+    var k = 1.0;
+    var wy = 1.0;
+    var wx = u0;
     if (y_cut < y1) {
         psi1 = 2.0 * airlight_atan(1.0 / y_cut);
-        width = 2.0 * airlight_atan2_upper(y_cut - y0, 1.0 + y0 * y_cut);
+        k = 2.0;
+        wy = y_cut - y0;
+        wx = 1.0 + y0 * y_cut;
     } else if (u1_finite) {
         psi1 = airlight_atan2_upper(1.0, u1);
-        width = airlight_atan2_upper((g.t_hi - g.t_lo) / h, 1.0 + u0 * u1);
+        wy = (g.t_hi - g.t_lo) / h;
+        wx = 1.0 + u0 * u1;
     }
+    let difference = AIRLIGHT_PI - psi0 - psi1;
+    var width = difference;
+    if (!(difference >= 1.0)) { width = k * airlight_atan2_upper(wy, wx); }
     let hw = width * 0.5;
     if (!(hw > 0.0)) { return vec2<f32>(0.0, 0.0); }
-    let mid = psi0 + hw - 0.5 * AIRLIGHT_PI;
-    // predicted coefficients: the exponential's and the lobe's rate λ, then the phase's ρ
+    let inv_hw = 1.0 / hw;
+    // predicted coefficients: the exponential's and the lobe's rate λ, the phase's ρ, Y's pole
     let y_end = min(y1, y_cut);
     let y_e = min(y0 + 1.0 / big_h, y_end);
     var degree = 0.0;
     if (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) { degree = s.light_param_a; }
     var lambda = sqrt(degree) * hw;
     if (big_h > 0.0) { lambda += min(big_h * (y_end - y0), hw * big_h * (1.0 + y_e * y_e)) * 0.5; }
-    // λ^N/(3·5⋯(2N+1)), without a loop (lavapipe's loops share one iteration budget)
-    let predicted = pow(lambda, f32(AIRLIGHT_TERMS)) * AIRLIGHT_INV_ODD_FACTORIAL;
-    if (!(predicted <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
     let step = airlight_singular_steps(s).y;
     let p0 = s.phase_param_a;
     var rate = 0.0;
     switch s.phase_kind {
         case AIRLIGHT_PHASE_HENYEY_GREENSTEIN, AIRLIGHT_PHASE_CORNETTE_SHANKS: {
-            rate = airlight_angle_floor(p0, airlight_hg_gap(p0), mid, hw, step);
+            rate = airlight_angle_floor(p0, airlight_hg_gap(p0), psi0, psi1, inv_hw, step);
         }
         case AIRLIGHT_PHASE_SCHLICK: {
             let a = abs(p0);
-            rate = airlight_angle_floor(p0, select(AIRLIGHT_FLT_MAX, (1.0 - a) / a, a > 0.0), mid, hw, step);
+            rate = airlight_angle_floor(p0, select(AIRLIGHT_FLT_MAX, (1.0 - a) / a, a > 0.0), psi0, psi1, inv_hw, step);
         }
         case AIRLIGHT_PHASE_TWO_LOBE_HG: {
             let p1 = s.phase_param_b;
-            rate = max(airlight_angle_floor(p0, airlight_hg_gap(p0), mid, hw, step), airlight_angle_floor(p1, airlight_hg_gap(p1), mid, hw, step));
+            rate = max(airlight_angle_floor(p0, airlight_hg_gap(p0), psi0, psi1, inv_hw, step), airlight_angle_floor(p1, airlight_hg_gap(p1), psi0, psi1, inv_hw, step));
         }
         default: {}
     }
-    if (!(pow(rate, f32(AIRLIGHT_TERMS)) <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
-    if (big_h > 0.0) { rate = max(rate, 1.0 / airlight_bernstein_rho((0.5 * AIRLIGHT_PI - mid) / hw, 0.0)); }
+    // Y's pole ψ1 past the panel's end, on the real axis at 1 + d: ρ = 1 + d + √(d(2 + d))
+    let d = psi1 * inv_hw;
+    var exponential = 0.0;
+    if (big_h > 0.0) { exponential = 1.0 / (1.0 + d + sqrt(d * (2.0 + d))); }
+    // λ^N/(3·5⋯(2N+1)), without a loop (lavapipe's loops share one iteration budget), or where
+    // that declines, the estimate's own form (angle.rs `predicted_estimate`)
+    let n = f32(AIRLIGHT_TERMS);
+    let predicted = pow(lambda, n) * AIRLIGHT_INV_ODD_FACTORIAL;
+    let decay = max(max(lambda / (2.0 * n - 1.0), rate), exponential);
+    let estimated = (pow(lambda, n - 1.0) * AIRLIGHT_INV_ODD_FACTORIAL_1 + pow(lambda, n - 2.0) * AIRLIGHT_INV_ODD_FACTORIAL_2)
+        * pow(decay, n + 1.0 - f32(AIRLIGHT_ALIASING_MARGIN));
+    if (!(predicted <= AIRLIGHT_PANEL_TOLERANCE) && !(estimated <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
+    if (!(pow(rate, n) <= AIRLIGHT_PANEL_TOLERANCE)) { return vec2<f32>(0.0, 0.0); }
+    rate = max(rate, exponential);
     // the samples
     let rule = airlight_gauss_rule();
     var samples = airlight_zero_terms();
@@ -1552,8 +1577,10 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
 }
 
 /// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(δ·τ)) over H > 0,
-/// δ = max(tolerance/10, ε) (combined.rs::cut_length, where the bound is derived).
-fn airlight_cut_length(big_h: f32, v_s: f32) -> f32 {
+/// δ = max(tolerance/10, ε) (combined.rs::cut_length, where the bound is derived); FLT_MAX
+/// without the logarithm where H·span is at most AIRLIGHT_UNCUT_SPAN, below E.
+fn airlight_cut_length(big_h: f32, v_s: f32, span: f32) -> f32 {
+    if (big_h * span <= AIRLIGHT_UNCUT_SPAN) { return AIRLIGHT_FLT_MAX; }
     let inv_h = 1.0 / big_h;
     let w = v_s + inv_h;
     let r = (1.0 + w * w) / (1.0 + v_s * v_s);
@@ -1631,7 +1658,7 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         let dy = (t_end - t0) / h * (1.0 + (a_s + a_e) / (r_s + r_e)) * y_lo * y_hi;
         var half = AirlightHalf(false, airlight_optical(big_h, dy, false), y_lo, y_hi, dy, dy, false);
         if (cut && half.big_h > 0.0) {
-            let cut_dv = airlight_cut_length(half.big_h, y_lo);
+            let cut_dv = airlight_cut_length(half.big_h, y_lo, dy);
             if (cut_dv < dy) {
                 // the rest of this half and all of the second lie beyond the cut
                 half = AirlightHalf(false, half.big_h, y_lo, y_lo + cut_dv, cut_dv, cut_dv, false);
@@ -1664,7 +1691,7 @@ fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> Airl
         }
         var half = AirlightHalf(true, airlight_optical(big_h, dv, infinite), y_lo, y_hi, dy, dv, infinite);
         if (cut && half.big_h > 0.0) {
-            let cut_dv = airlight_cut_length(half.big_h, 1.0 / y_hi);
+            let cut_dv = airlight_cut_length(half.big_h, 1.0 / y_hi, select(dv, AIRLIGHT_FLT_MAX, infinite));
             if (infinite || cut_dv < dv) {
                 // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
                 let cut_y_lo = y_hi / (1.0 + y_hi * cut_dv);
