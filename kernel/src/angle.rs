@@ -208,16 +208,15 @@ impl<T: Real> Plan<T> {
             // (equal at y = 0 with its first two derivatives; 4 % low at Henyey–Greenstein's
             // g = 0.5, 0.4 % at 0.8): the singularity no farther than it is, so the rate is never
             // understated, without the library's `ln_1p`
-            let y = gap + (gap * (T::lit(2.0) + gap)).sqrt();
+            let y = axis_excess(gap);
             let im = (y + y) / (T::lit(2.0) + y);
             let offset = if mu > T::zero() { psi0 } else { psi1 };
             phase = phase.max(bernstein_rho(T::one() + offset * inv_hw, im * inv_hw).recip());
         }
-        // Y's pole, ψ1 past the panel's end: on the real axis at 1 + d, d = ψ1/hw, so ρ = 1 + d +
-        // √(d(2 + d)) (`bernstein_rho` on the axis, one square root, and d to full accuracy where
-        // the pole is close)
-        let d = psi1 * inv_hw;
-        let exponential = if big_h > T::zero() { (T::one() + d + (d * (T::lit(2.0) + d)).sqrt()).recip() } else { T::zero() };
+        // Y's pole, ψ1 past the panel's end: on the real axis at 1 + d, d = ψ1/hw, so ρ = 1 +
+        // `axis_excess(d)` (`bernstein_rho` on the axis, one square root, and d to full accuracy
+        // where the pole is close)
+        let exponential = if big_h > T::zero() { (T::one() + axis_excess(psi1 * inv_hw)).recip() } else { T::zero() };
         Some(Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order: singular.order, exponential })
     }
 
@@ -445,6 +444,14 @@ fn bessel_exponent<T: Real>(nu: T, z: T) -> T {
 fn predicted_estimate<T: Real, const N: usize>(rate: T, singular: T, exponential: T) -> T {
     let decay = (rate * T::lit(1.0 / (2 * N - 1) as f64)).max(singular).max(exponential);
     (predicted_coefficient(rate, N - 1) + predicted_coefficient(rate, N - 2)) * power(decay, N + 1 - ALIASING_MARGIN)
+}
+
+/// `x + √(x(2 + x)) = e^{acosh(1 + x)} − 1` for `x ≥ 0`, without cancellation near 0: `ρ − 1` of
+/// the Bernstein ellipse through the real point `1 + x` (`crate::panels::bernstein_rho` on the
+/// axis), and `acosh(1 + x) = ln(1 + ·)` of it.
+#[inline]
+fn axis_excess<T: Real>(x: T) -> T {
+    x + (x * (T::lit(2.0) + x)).sqrt()
 }
 
 /// `λ^n/(3·5⋯(2n+1))`, the route's predicted coefficient (module docs), in two halves so that

@@ -464,9 +464,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_20 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_21 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_20 * x_20) + (y_5 * y_5)) < 1.0);
+    return (((x_21 * x_21) + (y_5 * y_5)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -860,8 +860,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_21 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_21 * x_21) * (3.0 - (2.0 * x_21)));
+            float x_22 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_22 * x_22) * (3.0 - (2.0 * x_22)));
         }
         default: {
             return 1.0;
@@ -1124,10 +1124,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_22 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_22);
+            float x_23 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_23);
             if (_e42) {
-                float _e43 = airlight_log1p(x_22);
+                float _e43 = airlight_log1p(x_23);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1259,8 +1259,8 @@ vec2[4] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[4], uint i_3) {
-    float x_23 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_23) : x_23);
+    float x_24 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_24) : x_24);
 }
 
 float[8] airlight_legendre(float g_7[8]) {
@@ -1335,8 +1335,8 @@ float[8] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_24 = (lambda / float((2u * k0_)));
-            float per_step = (x_24 * x_24);
+            float x_25 = (lambda / float((2u * k0_)));
+            float per_step = (x_25 * x_25);
             share = per_step;
             bool loop_init_6 = true;
             while(true) {
@@ -1762,8 +1762,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_25 = (half_5.big_h * _e13);
-    return ((x_25 > 0.0) ? exp(-(x_25)) : 1.0);
+    float x_26 = (half_5.big_h * _e13);
+    return ((x_26 > 0.0) ? exp(-(x_26)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2226,13 +2226,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_26 = (abs(alpha) + abs(beta));
+    float x_27 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_26) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_27) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2242,7 +2242,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_26) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_27) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2252,7 +2252,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_26) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_27) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2262,7 +2262,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_26) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_27) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2272,7 +2272,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_26) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_27) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2282,7 +2282,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_26) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_27) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2292,7 +2292,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_26) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_27) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2302,7 +2302,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_26) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_27) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2613,6 +2613,10 @@ float airlight_angle_y(float u) {
     return (u + _e5);
 }
 
+float airlight_axis_excess(float x_9) {
+    return (x_9 + sqrt((x_9 * (2.0 + x_9))));
+}
+
 float airlight_angle_floor(float side_1, float gap_1, float psi0_, float psi1_, float inv_hw, float step_1) {
     bool local_25 = false;
     if (!(!((gap_1 > 0.0)))) {
@@ -2624,11 +2628,11 @@ float airlight_angle_floor(float side_1, float gap_1, float psi0_, float psi1_, 
     if (_e15) {
         return 0.0;
     }
-    float y_9 = (gap_1 + sqrt((gap_1 * (2.0 + gap_1))));
-    float im_1 = ((y_9 + y_9) / (2.0 + y_9));
+    float _e17 = airlight_axis_excess(gap_1);
+    float im_1 = ((_e17 + _e17) / (2.0 + _e17));
     float offset_1 = ((side_1 > 0.0) ? psi0_ : psi1_);
-    float _e33 = airlight_bernstein_rho((1.0 + (offset_1 * inv_hw)), (im_1 * inv_hw));
-    return (step_1 / _e33);
+    float _e29 = airlight_bernstein_rho((1.0 + (offset_1 * inv_hw)), (im_1 * inv_hw));
+    return (step_1 / _e29);
 }
 
 float airlight_cut_length(float big_h_1, float v_s, float span) {
@@ -2642,8 +2646,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span) {
     return (e_1 * inv_h);
 }
 
-float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_9, float j_1) {
-    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_9))) * j_1);
+float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_10, float j_1) {
+    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_10))) * j_1);
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -2651,7 +2655,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_9
     if (!((abs(j_1) > 0.0))) {
         return 0.0;
     }
-    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_9) + log(abs(j_1)))));
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_10) + log(abs(j_1)))));
 }
 
 vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
@@ -2676,7 +2680,7 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
     uint i_11 = 0u;
     float m_3[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     bool local_28 = false;
-    float x_10 = 0.0;
+    float x_11 = 0.0;
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return vec2(0.0, 0.0);
     }
@@ -2785,117 +2789,117 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             break;
         }
     }
-    float _e155 = psi1_1;
-    float d_3 = (_e155 * inv_hw_1);
     if ((big_h_7 > 0.0)) {
-        exponential = (1.0 / ((1.0 + d_3) + sqrt((d_3 * (2.0 + d_3)))));
+        float _e159 = psi1_1;
+        float _e161 = airlight_axis_excess((_e159 * inv_hw_1));
+        exponential = (1.0 / (1.0 + _e161));
     }
+    float _e167 = lambda_1;
+    float predicted = (pow(_e167, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL);
     float _e171 = lambda_1;
-    float predicted = (pow(_e171, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL);
-    float _e175 = lambda_1;
-    float _e181 = rate;
-    float _e183 = exponential;
-    float decay_2 = max(max((_e175 / ((2.0 * 8.0) - 1.0)), _e181), _e183);
-    float _e185 = lambda_1;
-    float _e191 = lambda_1;
-    float estimated = (((pow(_e185, (8.0 - 1.0)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e191, (8.0 - 2.0)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8.0 + 1.0) - 3.0)));
+    float _e177 = rate;
+    float _e179 = exponential;
+    float decay_2 = max(max((_e171 / ((2.0 * 8.0) - 1.0)), _e177), _e179);
+    float _e181 = lambda_1;
+    float _e187 = lambda_1;
+    float estimated = (((pow(_e181, (8.0 - 1.0)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e187, (8.0 - 2.0)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8.0 + 1.0) - 3.0)));
     if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
         local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
     } else {
         local_27 = false;
     }
-    bool _e213 = local_27;
-    if (_e213) {
+    bool _e209 = local_27;
+    if (_e209) {
         return vec2(0.0, 0.0);
     }
-    float _e217 = rate;
-    if (!((pow(_e217, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e213 = rate;
+    if (!((pow(_e213, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
         return vec2(0.0, 0.0);
     }
-    float _e225 = rate;
-    float _e226 = exponential;
-    rate = max(_e225, _e226);
-    vec2 _e228[4] = airlight_gauss_rule();
-    float _e229[8] = airlight_zero_terms();
-    samples_3 = _e229;
+    float _e221 = rate;
+    float _e222 = exponential;
+    rate = max(_e221, _e222);
+    vec2 _e224[4] = airlight_gauss_rule();
+    float _e225[8] = airlight_zero_terms();
+    samples_3 = _e225;
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e322 = i_11;
-            i_11 = (_e322 + 1u);
+            uint _e318 = i_11;
+            i_11 = (_e318 + 1u);
         }
         loop_init_16 = false;
-        uint _e241 = i_11;
-        if ((_e241 < AIRLIGHT_TERMS)) {
+        uint _e237 = i_11;
+        if ((_e237 < AIRLIGHT_TERMS)) {
         } else {
             break;
         }
         {
-            uint _e244 = i_11;
-            float _e245 = airlight_node(_e228, _e244);
-            float lower = (_e40 + (hw_1 * (1.0 + _e245)));
+            uint _e240 = i_11;
+            float _e241 = airlight_node(_e224, _e240);
+            float lower = (_e40 + (hw_1 * (1.0 + _e241)));
             bool below_1 = (lower <= 1.5707964);
-            float _e252 = psi1_1;
-            vec2 _e258 = airlight_cos_sin((below_1 ? lower : (_e252 + (hw_1 * (1.0 - _e245)))));
-            float cs_1 = _e258.y;
-            float sn = (below_1 ? -(_e258.x) : _e258.x);
-            float near_pole = (1.0 + _e258.x);
+            float _e248 = psi1_1;
+            vec2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
+            float cs_1 = _e254.y;
+            float sn = (below_1 ? -(_e254.x) : _e254.x);
+            float near_pole = (1.0 + _e254.x);
             float far_pole = ((cs_1 * cs_1) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_10 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
-            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            float _e292 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
-            float _e298 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
-            float f_2 = (_e292 * _e298);
+            float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
+            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
+            float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = (_e288 * _e294);
             float gw = (weight_2 * f_2);
-            uint _e301 = i_11;
-            samples_3[_e301] = gw;
-            uint _e303 = i_11;
-            float w_5 = _e228[(_e303 / 2u)].y;
-            float _e308 = value_1;
-            value_1 = (_e308 + (w_5 * gw));
-            float _e311 = mass_4;
-            mass_4 = (_e311 + (w_5 * weight_2));
-            float _e314 = magnitude;
-            magnitude = (_e314 + (w_5 * abs(gw)));
-            float _e318 = f_max_5;
-            f_max_5 = max(_e318, abs(f_2));
+            uint _e297 = i_11;
+            samples_3[_e297] = gw;
+            uint _e299 = i_11;
+            float w_5 = _e224[(_e299 / 2u)].y;
+            float _e304 = value_1;
+            value_1 = (_e304 + (w_5 * gw));
+            float _e307 = mass_4;
+            mass_4 = (_e307 + (w_5 * weight_2));
+            float _e310 = magnitude;
+            magnitude = (_e310 + (w_5 * abs(gw)));
+            float _e314 = f_max_5;
+            f_max_5 = max(_e314, abs(f_2));
         }
     }
-    float _e324[8] = samples_3;
-    float _e325[8] = airlight_legendre(_e324);
-    float _e326[8] = airlight_zero_terms();
-    m_3 = _e326;
+    float _e320[8] = samples_3;
+    float _e321[8] = airlight_legendre(_e320);
+    float _e322[8] = airlight_zero_terms();
+    m_3 = _e322;
     m_3[0] = 2.0;
-    float _e330 = airlight_tail_estimate(_e325);
-    float _e333[8] = m_3;
-    float _e334 = rate;
-    float _e335 = airlight_error_factor(_e325, _e333, _e334);
-    float error_4 = ((2.0 * _e330) * _e335);
-    float _e338 = magnitude;
-    float _e341 = airlight_transform_noise(2.0, (0.5 * _e338));
-    float _e343 = value_1;
-    float _e346 = f_max_5;
-    float _e348 = mass_4;
-    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e343), ((AIRLIGHT_PANEL_FLOOR * _e346) * _e348)));
+    float _e326 = airlight_tail_estimate(_e321);
+    float _e329[8] = m_3;
+    float _e330 = rate;
+    float _e331 = airlight_error_factor(_e321, _e329, _e330);
+    float error_4 = ((2.0 * _e326) * _e331);
+    float _e334 = magnitude;
+    float _e337 = airlight_transform_noise(2.0, (0.5 * _e334));
+    float _e339 = value_1;
+    float _e342 = f_max_5;
+    float _e344 = mass_4;
+    float accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e339), ((AIRLIGHT_PANEL_FLOOR * _e342) * _e344)));
     if (!((error_4 <= accepted))) {
-        local_28 = (error_4 <= _e341);
+        local_28 = (error_4 <= _e337);
     } else {
         local_28 = true;
     }
-    bool _e358 = local_28;
-    if (!(_e358)) {
+    bool _e354 = local_28;
+    if (!(_e354)) {
         return vec2(0.0, 0.0);
     }
     if ((s_11.sigma_t > 0.0)) {
-        float _e369 = airlight_hypot_one(u0_);
-        x_10 = (s_11.sigma_t * (h_3 * _e369));
+        float _e365 = airlight_hypot_one(u0_);
+        x_11 = (s_11.sigma_t * (h_3 * _e365));
     }
-    float _e374 = x_10;
-    float _e375 = value_1;
-    float _e379 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e374, ((_e375 * hw_1) * 0.5));
-    return vec2(1.0, _e379);
+    float _e370 = x_11;
+    float _e371 = value_1;
+    float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5));
+    return vec2(1.0, _e375);
 }
 
 vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
@@ -2978,14 +2982,14 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
         return false;
     }
     float a_25 = (sigma_11 * g_15.d_el);
-    float d_4 = g_15.d_c;
-    if ((d_4 == 0.0)) {
+    float d_3 = g_15.d_c;
+    if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_25 * a_25) + (d_4 * d_4)));
-    y1_1 = ((root_1 - a_25) / d_4);
+    float root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_25) / d_3);
     if ((a_25 > 0.0)) {
-        y1_1 = (d_4 / (a_25 + root_1));
+        y1_1 = (d_3 / (a_25 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -3283,7 +3287,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     bool infinite_1 = true;
     bool local_41 = false;
     bool local_42 = false;
-    float x_11 = 0.0;
+    float x_12 = 0.0;
     float h_4 = g_18.h;
     float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     float _e8 = airlight_hypot_one(a_s);
@@ -3324,13 +3328,13 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     AirlightHalf half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_11 = (big_h_3 * _e8);
+        x_12 = (big_h_3 * _e8);
     } else {
         if ((s_14.sigma_t > 0.0)) {
-            x_11 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+            x_12 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    float _e66 = x_11;
+    float _e66 = x_12;
     vec2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
     float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -4074,8 +4078,8 @@ AirlightCanonical airlight_canonical(AirlightScene s_19) {
     return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, (infinite_3 ? 0.0 : s_19.t_max), infinite_3);
 }
 
-float airlight_opaque(float x_12, uint key) {
-    return uintBitsToFloat((floatBitsToUint(x_12) ^ key));
+float airlight_opaque(float x_13, uint key) {
+    return uintBitsToFloat((floatBitsToUint(x_13) ^ key));
 }
 
 vec2 airlight_two_sum(float a_13, float b_10, uint key_1) {
@@ -4087,8 +4091,8 @@ vec2 airlight_two_sum(float a_13, float b_10, uint key_1) {
     return vec2(_e4, (_e12 ? e_2 : 0.0));
 }
 
-float airlight_split_high(float x_13) {
-    return uintBitsToFloat(((floatBitsToUint(x_13) + 2048u) & 4294963200u));
+float airlight_split_high(float x_14) {
+    return uintBitsToFloat(((floatBitsToUint(x_14) + 2048u) & 4294963200u));
 }
 
 vec2 airlight_two_product(float a_14, float b_11, uint key_2) {
@@ -4506,9 +4510,9 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e329;
 }
 
-float airlight_asinh(float x_14) {
+float airlight_asinh(float x_15) {
     float r_4 = 0.0;
-    float a_26 = abs(x_14);
+    float a_26 = abs(x_15);
     r_4 = (AIRLIGHT_LN_2_ + log(a_26));
     if ((a_26 <= 4096.0)) {
         float _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1.0 + sqrt((1.0 + (a_26 * a_26)))))));
@@ -4516,7 +4520,7 @@ float airlight_asinh(float x_14) {
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return ((x_14 < 0.0) ? -(_e19) : _e18);
+    return ((x_15 < 0.0) ? -(_e19) : _e18);
 }
 
 float airlight_to_w(AirlightOuter g_21, float s_21) {
@@ -4527,18 +4531,18 @@ float airlight_to_w(AirlightOuter g_21, float s_21) {
     return s_21;
 }
 
-vec2 airlight_cos_sin_half_turn(float x_15) {
-    float r_12 = (x_15 - 1.5707964);
+vec2 airlight_cos_sin_half_turn(float x_16) {
+    float r_12 = (x_16 - 1.5707964);
     float z_12 = (r_12 * r_12);
     float cos_r = (1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0))))))))))))));
     float sin_r = (r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_16) {
-    float a_27 = abs(x_16);
+float airlight_acos(float x_17) {
+    float a_27 = abs(x_17);
     float _e8 = airlight_atan(sqrt(((1.0 - a_27) / (1.0 + a_27))));
-    return ((x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_22) {
@@ -4628,22 +4632,22 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
         vec3 _e105 = airlight_normalize(s_24.brdf_view);
         vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         vec3 _e112 = u_1;
-        float x_27 = dot(_e111, _e112);
+        float x_28 = dot(_e111, _e112);
         vec3 _e114 = u_1;
-        float y_11 = dot(_e111, cross(l_3, _e114));
+        float y_10 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_27 * x_27) + (y_11 * y_11)));
+        g_22.sin_r = sqrt(((x_28 * x_28) + (y_10 * y_10)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_27, abs(y_11));
-            float phi_r = (((y_11 < 0.0) ? -1.0 : 1.0) * _e140);
+            float _e140 = airlight_angle(x_28, abs(y_10));
+            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_27 / _e145), (-(y_11) / _e149));
+            g_22.delta = vec3(-(phi_r), (x_28 / _e145), (-(y_10) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -4776,9 +4780,9 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
     return _e307;
 }
 
-float airlight_lobe_at(AirlightLobe q_1, float x_17) {
+float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     bool local_114 = false;
-    vec2 _e4 = airlight_cos_sin((0.5 * x_17));
+    vec2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
@@ -4806,10 +4810,10 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, boo
     return (w_1 * _e22);
 }
 
-float airlight_arc_end(float x_18, float cut) {
+float airlight_arc_end(float x_19, float cut) {
     float end_1 = 0.0;
     bool local_115 = false;
-    end_1 = x_18;
+    end_1 = x_19;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
         float _e6 = end_1;
@@ -4883,15 +4887,15 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = (g_23.cos_r * cs.x);
-    float d_5 = (g_23.sin_r * cs.y);
-    float peak = (c_11 + d_5);
+    float d_4 = (g_23.sin_r * cs.y);
+    float peak = (c_11 + d_4);
     if (!((peak > 0.0))) {
         return 0.0;
     }
     vec2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_6 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_5) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_6 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
@@ -5278,7 +5282,7 @@ AirlightCanonical airlight_no_canonical() {
     return AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x_19) {
+AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x_20) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
     float weight = 0.0;
     float at_1 = 0.0;
@@ -5288,8 +5292,8 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_23 = min(uint(max(floor(x_19), 0.0)), (g_25.panels - 1u));
-        float t_7 = (x_19 - float(i_23));
+        uint i_23 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
+        float t_7 = (x_20 - float(i_23));
         float a_29 = g_25.gamma[i_23];
         float b_19 = g_25.gamma[(i_23 + 1u)];
         float gamma_1 = (a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3.0 - t_7) - t_7)));
@@ -5326,10 +5330,10 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
         return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
     }
     if ((s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_19;
+        at_1 = x_20;
         if ((g_25.scale > 0.0)) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_19)));
-            ds = (g_25.scale * cosh(x_19));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
+            ds = (g_25.scale * cosh(x_20));
         }
         float _e162 = at_1;
         p.light_position = (g_25.a + (_e162 * g_25.e));

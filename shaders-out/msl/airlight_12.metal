@@ -445,9 +445,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_20 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_21 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_5 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_20 * x_20) + (y_5 * y_5)) < 1.0;
+    return ((x_21 * x_21) + (y_5 * y_5)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -932,8 +932,8 @@ float airlight_light(
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_21 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
-            return (x_21 * x_21) * (3.0 - (2.0 * x_21));
+            float x_22 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
+            return (x_22 * x_22) * (3.0 - (2.0 * x_22));
         }
         default: {
             return 1.0;
@@ -1232,10 +1232,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_22 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_22);
+            float x_23 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_23);
             if (_e42) {
-                float _e43 = airlight_log1p(x_22);
+                float _e43 = airlight_log1p(x_23);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1384,8 +1384,8 @@ float airlight_node(
     airlight_type_9 rule,
     uint i_3
 ) {
-    float x_23 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_23) : x_23;
+    float x_24 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_24) : x_24;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1470,8 +1470,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_24 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_24 * x_24;
+            float x_25 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_25 * x_25;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2122,8 +2122,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_25 = half_5.big_h * _e13;
-    return (x_25 > 0.0) ? metal::exp(-(x_25)) : 1.0;
+    float x_26 = half_5.big_h * _e13;
+    return (x_26 > 0.0) ? metal::exp(-(x_26)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -2806,13 +2806,13 @@ AirlightPanel airlight_tail_panel(
     float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = _e937 * _e936;
-    float x_26 = metal::abs(alpha) + metal::abs(beta);
+    float x_27 = metal::abs(alpha) + metal::abs(beta);
     float _e950 = spread;
     float _e951 = l_cur;
     spread = _e950 + (_e951 * metal::abs(_e54.inner[0]));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = (((1.0 * x_26) * _e958) + (0.0 * _e960)) / 1.0;
+    next = (((1.0 * x_27) * _e958) + (0.0 * _e960)) / 1.0;
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2822,7 +2822,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e968 + (_e969 * metal::abs(_e54.inner[1]));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = (((3.0 * x_26) * _e976) + (1.0 * _e978)) / 2.0;
+    next = (((3.0 * x_27) * _e976) + (1.0 * _e978)) / 2.0;
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2832,7 +2832,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e986 + (_e987 * metal::abs(_e54.inner[2]));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = (((5.0 * x_26) * _e994) + (2.0 * _e996)) / 3.0;
+    next = (((5.0 * x_27) * _e994) + (2.0 * _e996)) / 3.0;
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2842,7 +2842,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1004 + (_e1005 * metal::abs(_e54.inner[3]));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = (((7.0 * x_26) * _e1012) + (3.0 * _e1014)) / 4.0;
+    next = (((7.0 * x_27) * _e1012) + (3.0 * _e1014)) / 4.0;
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2852,7 +2852,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1022 + (_e1023 * metal::abs(_e54.inner[4]));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = (((9.0 * x_26) * _e1030) + (4.0 * _e1032)) / 5.0;
+    next = (((9.0 * x_27) * _e1030) + (4.0 * _e1032)) / 5.0;
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2862,7 +2862,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1040 + (_e1041 * metal::abs(_e54.inner[5]));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = (((11.0 * x_26) * _e1048) + (5.0 * _e1050)) / 6.0;
+    next = (((11.0 * x_27) * _e1048) + (5.0 * _e1050)) / 6.0;
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2872,7 +2872,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1058 + (_e1059 * metal::abs(_e54.inner[6]));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = (((13.0 * x_26) * _e1066) + (6.0 * _e1068)) / 7.0;
+    next = (((13.0 * x_27) * _e1066) + (6.0 * _e1068)) / 7.0;
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2882,7 +2882,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1076 + (_e1077 * metal::abs(_e54.inner[7]));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = (((15.0 * x_26) * _e1084) + (7.0 * _e1086)) / 8.0;
+    next = (((15.0 * x_27) * _e1084) + (7.0 * _e1086)) / 8.0;
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2892,7 +2892,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1094 + (_e1095 * metal::abs(_e54.inner[8]));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = (((17.0 * x_26) * _e1102) + (8.0 * _e1104)) / 9.0;
+    next = (((17.0 * x_27) * _e1102) + (8.0 * _e1104)) / 9.0;
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2902,7 +2902,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1112 + (_e1113 * metal::abs(_e54.inner[9]));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = (((19.0 * x_26) * _e1120) + (9.0 * _e1122)) / 10.0;
+    next = (((19.0 * x_27) * _e1120) + (9.0 * _e1122)) / 10.0;
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2912,7 +2912,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1130 + (_e1131 * metal::abs(_e54.inner[10]));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = (((21.0 * x_26) * _e1138) + (10.0 * _e1140)) / 11.0;
+    next = (((21.0 * x_27) * _e1138) + (10.0 * _e1140)) / 11.0;
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2922,7 +2922,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1148 + (_e1149 * metal::abs(_e54.inner[11]));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = (((23.0 * x_26) * _e1156) + (11.0 * _e1158)) / 12.0;
+    next = (((23.0 * x_27) * _e1156) + (11.0 * _e1158)) / 12.0;
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -3274,6 +3274,12 @@ float airlight_angle_y(
     return u + _e5;
 }
 
+float airlight_axis_excess(
+    float x_9
+) {
+    return x_9 + metal::sqrt(x_9 * (2.0 + x_9));
+}
+
 float airlight_angle_floor(
     float side_1,
     float gap_1,
@@ -3292,11 +3298,11 @@ float airlight_angle_floor(
     if (_e15) {
         return 0.0;
     }
-    float y_9 = gap_1 + metal::sqrt(gap_1 * (2.0 + gap_1));
-    float im_1 = (y_9 + y_9) / (2.0 + y_9);
+    float _e17 = airlight_axis_excess(gap_1);
+    float im_1 = (_e17 + _e17) / (2.0 + _e17);
     float offset_1 = (side_1 > 0.0) ? psi0_ : psi1_;
-    float _e33 = airlight_bernstein_rho(1.0 + (offset_1 * inv_hw), im_1 * inv_hw);
-    return step_1 / _e33;
+    float _e29 = airlight_bernstein_rho(1.0 + (offset_1 * inv_hw), im_1 * inv_hw);
+    return step_1 / _e29;
 }
 
 float airlight_cut_length(
@@ -3318,10 +3324,10 @@ float airlight_weighted(
     float sigma_s,
     float intensity,
     float h_2,
-    float x_9,
+    float x_10,
     float j_1
 ) {
-    float plain_1 = ((((2.0 * sigma_s) * intensity) / h_2) * metal::exp(-(x_9))) * j_1;
+    float plain_1 = ((((2.0 * sigma_s) * intensity) / h_2) * metal::exp(-(x_10))) * j_1;
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -3329,7 +3335,7 @@ float airlight_weighted(
     if (!((metal::abs(j_1) > 0.0))) {
         return 0.0;
     }
-    return metal::sign(j_1) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s)) + metal::log(intensity)) - metal::log(h_2)) - x_9) + metal::log(metal::abs(j_1)));
+    return metal::sign(j_1) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s)) + metal::log(intensity)) - metal::log(h_2)) - x_10) + metal::log(metal::abs(j_1)));
 }
 
 metal::float2 airlight_angle_route(
@@ -3357,7 +3363,7 @@ metal::float2 airlight_angle_route(
     uint i_11 = 0u;
     airlight_type_2 m_3 = {};
     bool local_28 = {};
-    float x_10 = 0.0;
+    float x_11 = 0.0;
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return metal::float2(0.0, 0.0);
     }
@@ -3466,120 +3472,120 @@ metal::float2 airlight_angle_route(
             break;
         }
     }
-    float _e155 = psi1_1;
-    float d_3 = _e155 * inv_hw_1;
     if (big_h_7 > 0.0) {
-        exponential = 1.0 / ((1.0 + d_3) + metal::sqrt(d_3 * (2.0 + d_3)));
+        float _e159 = psi1_1;
+        float _e161 = airlight_axis_excess(_e159 * inv_hw_1);
+        exponential = 1.0 / (1.0 + _e161);
     }
+    float _e167 = lambda_1;
+    float predicted = metal::pow(_e167, 12.0) * AIRLIGHT_INV_ODD_FACTORIAL;
     float _e171 = lambda_1;
-    float predicted = metal::pow(_e171, 12.0) * AIRLIGHT_INV_ODD_FACTORIAL;
-    float _e175 = lambda_1;
-    float _e181 = rate;
-    float _e183 = exponential;
-    float decay_2 = metal::max(metal::max(_e175 / ((2.0 * 12.0) - 1.0), _e181), _e183);
-    float _e185 = lambda_1;
-    float _e191 = lambda_1;
-    float estimated = ((metal::pow(_e185, 12.0 - 1.0) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (metal::pow(_e191, 12.0 - 2.0) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * metal::pow(decay_2, (12.0 + 1.0) - 3.0);
+    float _e177 = rate;
+    float _e179 = exponential;
+    float decay_2 = metal::max(metal::max(_e171 / ((2.0 * 12.0) - 1.0), _e177), _e179);
+    float _e181 = lambda_1;
+    float _e187 = lambda_1;
+    float estimated = ((metal::pow(_e181, 12.0 - 1.0) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (metal::pow(_e187, 12.0 - 2.0) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * metal::pow(decay_2, (12.0 + 1.0) - 3.0);
     if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
         local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
     } else {
         local_27 = false;
     }
-    bool _e213 = local_27;
-    if (_e213) {
+    bool _e209 = local_27;
+    if (_e209) {
         return metal::float2(0.0, 0.0);
     }
-    float _e217 = rate;
-    if (!((metal::pow(_e217, 12.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e213 = rate;
+    if (!((metal::pow(_e213, 12.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
         return metal::float2(0.0, 0.0);
     }
-    float _e225 = rate;
-    float _e226 = exponential;
-    rate = metal::max(_e225, _e226);
-    airlight_type_9 _e228 = airlight_gauss_rule();
-    airlight_type_2 _e229 = airlight_zero_terms();
-    samples_3 = _e229;
+    float _e221 = rate;
+    float _e222 = exponential;
+    rate = metal::max(_e221, _e222);
+    airlight_type_9 _e224 = airlight_gauss_rule();
+    airlight_type_2 _e225 = airlight_zero_terms();
+    samples_3 = _e225;
     uint2 loop_bound_16 = uint2(4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (metal::all(loop_bound_16 == uint2(0u))) { break; }
         loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e322 = i_11;
-            i_11 = _e322 + 1u;
+            uint _e318 = i_11;
+            i_11 = _e318 + 1u;
         }
         loop_init_16 = false;
-        uint _e241 = i_11;
-        if (_e241 < AIRLIGHT_TERMS) {
+        uint _e237 = i_11;
+        if (_e237 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e244 = i_11;
-            float _e245 = airlight_node(_e228, _e244);
-            float lower = _e40 + (hw_1 * (1.0 + _e245));
+            uint _e240 = i_11;
+            float _e241 = airlight_node(_e224, _e240);
+            float lower = _e40 + (hw_1 * (1.0 + _e241));
             bool below_1 = lower <= 1.5707964;
-            float _e252 = psi1_1;
-            metal::float2 _e258 = airlight_cos_sin(below_1 ? lower : (_e252 + (hw_1 * (1.0 - _e245))));
-            float cs_1 = _e258.y;
-            float sn = below_1 ? -(_e258.x) : _e258.x;
-            float near_pole = 1.0 + _e258.x;
+            float _e248 = psi1_1;
+            metal::float2 _e254 = airlight_cos_sin(below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241))));
+            float cs_1 = _e254.y;
+            float sn = below_1 ? -(_e254.x) : _e254.x;
+            float near_pole = 1.0 + _e254.x;
             float far_pole = (cs_1 * cs_1) / near_pole;
             float one_minus = below_1 ? near_pole : far_pole;
             float one_plus = below_1 ? far_pole : near_pole;
-            float y_10 = below_1 ? (cs_1 / near_pole) : (near_pole / cs_1);
-            float weight_2 = (cs_1 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_10 - _e26), 0.0))) : 0.0;
-            float _e292 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * sn) + (g_11.d_c * cs_1));
-            float _e298 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
-            float f_2 = _e292 * _e298;
+            float y_9 = below_1 ? (cs_1 / near_pole) : (near_pole / cs_1);
+            float weight_2 = (cs_1 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_9 - _e26), 0.0))) : 0.0;
+            float _e288 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, (g_11.d_el * sn) + (g_11.d_c * cs_1));
+            float _e294 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = _e288 * _e294;
             float gw = weight_2 * f_2;
-            uint _e301 = i_11;
-            samples_3.inner[metal::min(unsigned(_e301), 11u)] = gw;
-            uint _e303 = i_11;
-            float w_4 = _e228.inner[metal::min(unsigned(airlight_naga_div(_e303, 2u)), 5u)].y;
-            float _e308 = value_1;
-            value_1 = _e308 + (w_4 * gw);
-            float _e311 = mass_4;
-            mass_4 = _e311 + (w_4 * weight_2);
-            float _e314 = magnitude;
-            magnitude = _e314 + (w_4 * metal::abs(gw));
-            float _e318 = f_max_5;
-            f_max_5 = metal::max(_e318, metal::abs(f_2));
+            uint _e297 = i_11;
+            samples_3.inner[metal::min(unsigned(_e297), 11u)] = gw;
+            uint _e299 = i_11;
+            float w_4 = _e224.inner[metal::min(unsigned(airlight_naga_div(_e299, 2u)), 5u)].y;
+            float _e304 = value_1;
+            value_1 = _e304 + (w_4 * gw);
+            float _e307 = mass_4;
+            mass_4 = _e307 + (w_4 * weight_2);
+            float _e310 = magnitude;
+            magnitude = _e310 + (w_4 * metal::abs(gw));
+            float _e314 = f_max_5;
+            f_max_5 = metal::max(_e314, metal::abs(f_2));
         }
     }
-    airlight_type_2 _e324 = samples_3;
-    airlight_type_2 _e325 = airlight_legendre(_e324);
-    airlight_type_2 _e326 = airlight_zero_terms();
-    m_3 = _e326;
+    airlight_type_2 _e320 = samples_3;
+    airlight_type_2 _e321 = airlight_legendre(_e320);
+    airlight_type_2 _e322 = airlight_zero_terms();
+    m_3 = _e322;
     m_3.inner[0] = 2.0;
-    float _e330 = airlight_tail_estimate(_e325);
-    airlight_type_2 _e333 = m_3;
-    float _e334 = rate;
-    float _e335 = airlight_error_factor(_e325, _e333, _e334);
-    float error_4 = (2.0 * _e330) * _e335;
-    float _e338 = magnitude;
-    float _e341 = airlight_transform_noise(2.0, 0.5 * _e338);
-    float _e343 = value_1;
-    float _e346 = f_max_5;
-    float _e348 = mass_4;
-    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e343), (AIRLIGHT_PANEL_FLOOR * _e346) * _e348);
+    float _e326 = airlight_tail_estimate(_e321);
+    airlight_type_2 _e329 = m_3;
+    float _e330 = rate;
+    float _e331 = airlight_error_factor(_e321, _e329, _e330);
+    float error_4 = (2.0 * _e326) * _e331;
+    float _e334 = magnitude;
+    float _e337 = airlight_transform_noise(2.0, 0.5 * _e334);
+    float _e339 = value_1;
+    float _e342 = f_max_5;
+    float _e344 = mass_4;
+    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e339), (AIRLIGHT_PANEL_FLOOR * _e342) * _e344);
     if (!((error_4 <= accepted))) {
-        local_28 = error_4 <= _e341;
+        local_28 = error_4 <= _e337;
     } else {
         local_28 = true;
     }
-    bool _e358 = local_28;
-    if (!(_e358)) {
+    bool _e354 = local_28;
+    if (!(_e354)) {
         return metal::float2(0.0, 0.0);
     }
     if (s_9.sigma_t > 0.0) {
-        float _e369 = airlight_hypot_one(u0_);
-        x_10 = s_9.sigma_t * (h_3 * _e369);
+        float _e365 = airlight_hypot_one(u0_);
+        x_11 = s_9.sigma_t * (h_3 * _e365);
     }
-    float _e374 = x_10;
-    float _e375 = value_1;
-    float _e379 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e374, (_e375 * hw_1) * 0.5);
-    return metal::float2(1.0, _e379);
+    float _e370 = x_11;
+    float _e371 = value_1;
+    float _e375 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e370, (_e371 * hw_1) * 0.5);
+    return metal::float2(1.0, _e375);
 }
 
 metal::float2 airlight_crossings(
@@ -3678,14 +3684,14 @@ bool airlight_dark(
         return false;
     }
     float a_25 = sigma_11 * g_13.d_el;
-    float d_4 = g_13.d_c;
-    if (d_4 == 0.0) {
+    float d_3 = g_13.d_c;
+    if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_25 * a_25) + (d_4 * d_4));
-    y1_1 = (root_1 - a_25) / d_4;
+    float root_1 = metal::sqrt((a_25 * a_25) + (d_3 * d_3));
+    y1_1 = (root_1 - a_25) / d_3;
     if (a_25 > 0.0) {
-        y1_1 = d_4 / (a_25 + root_1);
+        y1_1 = d_3 / (a_25 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -4013,7 +4019,7 @@ float airlight_whole_line(
     bool infinite_1 = true;
     bool local_41 = {};
     bool local_42 = {};
-    float x_11 = 0.0;
+    float x_12 = 0.0;
     float h_4 = g_16.h;
     float a_s = (g_16.x_h - g_16.t_lo) / h_4;
     float _e8 = airlight_hypot_one(a_s);
@@ -4054,13 +4060,13 @@ float airlight_whole_line(
     AirlightHalf half_15 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_11 = big_h_3 * _e8;
+        x_12 = big_h_3 * _e8;
     } else {
         if (s_12.sigma_t > 0.0) {
-            x_11 = s_12.sigma_t * metal::abs(g_16.x_h - g_16.t_lo);
+            x_12 = s_12.sigma_t * metal::abs(g_16.x_h - g_16.t_lo);
         }
     }
-    float _e66 = x_11;
+    float _e66 = x_12;
     metal::float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_12, g_16, -1.0, 0.0);
     float _e76 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, _e67.y, _e73 * _e67.x);
@@ -4825,10 +4831,10 @@ AirlightCanonical airlight_canonical(
 }
 
 float airlight_opaque(
-    float x_12,
+    float x_13,
     uint key
 ) {
-    return as_type<float>(as_type<uint>(x_12) ^ key);
+    return as_type<float>(as_type<uint>(x_13) ^ key);
 }
 
 metal::float2 airlight_two_sum(
@@ -4845,9 +4851,9 @@ metal::float2 airlight_two_sum(
 }
 
 float airlight_split_high(
-    float x_13
+    float x_14
 ) {
-    return as_type<float>((as_type<uint>(x_13) + 2048u) & 4294963200u);
+    return as_type<float>((as_type<uint>(x_14) + 2048u) & 4294963200u);
 }
 
 metal::float2 airlight_two_product(
@@ -5292,10 +5298,10 @@ AirlightListScan airlight_list_scan(
 }
 
 float airlight_asinh(
-    float x_14
+    float x_15
 ) {
     float r_4 = {};
-    float a_26 = metal::abs(x_14);
+    float a_26 = metal::abs(x_15);
     r_4 = AIRLIGHT_LN_2_ + metal::log(a_26);
     if (a_26 <= 4096.0) {
         float _e17 = airlight_log1p(a_26 + ((a_26 * a_26) / (1.0 + metal::sqrt(1.0 + (a_26 * a_26)))));
@@ -5303,7 +5309,7 @@ float airlight_asinh(
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return (x_14 < 0.0) ? -(_e19) : _e18;
+    return (x_15 < 0.0) ? -(_e19) : _e18;
 }
 
 float airlight_to_w(
@@ -5318,9 +5324,9 @@ float airlight_to_w(
 }
 
 metal::float2 airlight_cos_sin_half_turn(
-    float x_15
+    float x_16
 ) {
-    float r_12 = x_15 - 1.5707964;
+    float r_12 = x_16 - 1.5707964;
     float z_12 = r_12 * r_12;
     float cos_r = 1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0)))))))))))));
     float sin_r = r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0))))))))))))));
@@ -5328,11 +5334,11 @@ metal::float2 airlight_cos_sin_half_turn(
 }
 
 float airlight_acos(
-    float x_16
+    float x_17
 ) {
-    float a_27 = metal::abs(x_16);
+    float a_27 = metal::abs(x_17);
     float _e8 = airlight_atan(metal::sqrt((1.0 - a_27) / (1.0 + a_27)));
-    return (x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
+    return (x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
@@ -5435,22 +5441,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_22.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_27 = metal::dot(_e111, _e112);
+        float x_28 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
-        float y_11 = metal::dot(_e111, metal::cross(l_3, _e114));
+        float y_10 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_20.cos_r = metal::dot(_e111, l_3);
-        g_20.sin_r = metal::sqrt((x_27 * x_27) + (y_11 * y_11));
+        g_20.sin_r = metal::sqrt((x_28 * x_28) + (y_10 * y_10));
         float _e126 = g_20.cos_r;
         float _e128 = g_20.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_20.alpha_r = _e129;
         float _e131 = g_20.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_27, metal::abs(y_11));
-            float phi_r = ((y_11 < 0.0) ? -1.0 : 1.0) * _e140;
+            float _e140 = airlight_angle(x_28, metal::abs(y_10));
+            float phi_r = ((y_10 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_20.sin_r;
             float _e149 = g_20.sin_r;
-            g_20.delta = metal::float3(-(phi_r), x_27 / _e145, -(y_11) / _e149);
+            g_20.delta = metal::float3(-(phi_r), x_28 / _e145, -(y_10) / _e149);
         }
         float _e154 = g_20.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -5597,10 +5603,10 @@ AirlightOuter airlight_surface(
 
 float airlight_lobe_at(
     AirlightLobe q_1,
-    float x_17
+    float x_18
 ) {
     bool local_114 = {};
-    metal::float2 _e4 = airlight_cos_sin(0.5 * x_17);
+    metal::float2 _e4 = airlight_cos_sin(0.5 * x_18);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
     float sin_x = (2.0 * _e4.y) * _e4.x;
@@ -5635,12 +5641,12 @@ float airlight_lobe_node(
 }
 
 float airlight_arc_end(
-    float x_18,
+    float x_19,
     float cut
 ) {
     float end = {};
     bool local_115 = {};
-    end = x_18;
+    end = x_19;
     float _e3 = end;
     if (_e3 > AIRLIGHT_PI) {
         float _e6 = end;
@@ -5729,15 +5735,15 @@ float airlight_lobe_arcs(
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = g_21.cos_r * cs.x;
-    float d_5 = g_21.sin_r * cs.y;
-    float peak = c_11 + d_5;
+    float d_4 = g_21.sin_r * cs.y;
+    float peak = c_11 + d_4;
     if (!((peak > 0.0))) {
         return 0.0;
     }
     metal::float2 _e20 = airlight_cos_sin(0.5 * (gamma - g_21.alpha_r));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p((-2.0 * sin_gap) * sin_gap);
-    AirlightLobe q_6 = AirlightLobe {g_21.cos_a * cs.x, g_21.sin_a * cs.y, (2.0 * d_5) / peak, _e34, g_21.delta[1], g_21.delta[2], exponent};
+    AirlightLobe q_6 = AirlightLobe {g_21.cos_a * cs.x, g_21.sin_a * cs.y, (2.0 * d_4) / peak, _e34, g_21.delta[1], g_21.delta[2], exponent};
     if (exponent > 0.0) {
         float _e46 = airlight_expm1_(AIRLIGHT_LN_LOBE_FLOOR / exponent);
         reach = -(_e46);
@@ -6139,7 +6145,7 @@ AirlightCanonical airlight_no_canonical(
 AirlightNode airlight_outer_node(
     AirlightScene s_24,
     AirlightOuter g_23,
-    float x_19
+    float x_20
 ) {
     AirlightScene p = {};
     float weight = 0.0;
@@ -6150,8 +6156,8 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_23 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_19), 0.0)), g_23.panels - 1u);
-        float t_7 = x_19 - static_cast<float>(i_23);
+        uint i_23 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_23.panels - 1u);
+        float t_7 = x_20 - static_cast<float>(i_23);
         float a_29 = g_23.gamma.inner[metal::min(unsigned(i_23), 12u)];
         float b_19 = g_23.gamma.inner[metal::min(unsigned(i_23 + 1u), 12u)];
         float gamma_1 = a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3.0 - t_7) - t_7));
@@ -6188,10 +6194,10 @@ AirlightNode airlight_outer_node(
         return AirlightNode {_e136, (_e137 * _e50.y) * jacobian, exact, true};
     }
     if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_19;
+        at_1 = x_20;
         if (g_23.scale > 0.0) {
-            at_1 = g_23.s_star + (g_23.scale * metal::sinh(x_19));
-            ds = g_23.scale * metal::cosh(x_19);
+            at_1 = g_23.s_star + (g_23.scale * metal::sinh(x_20));
+            ds = g_23.scale * metal::cosh(x_20);
         }
         float _e162 = at_1;
         p.light_position = g_23.a + (_e162 * g_23.e);

@@ -610,9 +610,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_20 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_21 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_5 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_20 * x_20) + (y_5 * y_5)) < 1.0;
+    return ((x_21 * x_21) + (y_5 * y_5)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -1061,8 +1061,8 @@ float airlight_light(
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_21 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
-            return (x_21 * x_21) * (3.0 - (2.0 * x_21));
+            float x_22 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
+            return (x_22 * x_22) * (3.0 - (2.0 * x_22));
         }
         default: {
             return 1.0;
@@ -1361,10 +1361,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_22 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_22);
+            float x_23 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_23);
             if (_e42) {
-                float _e43 = airlight_log1p(x_22);
+                float _e43 = airlight_log1p(x_23);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1513,8 +1513,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_23 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_23) : x_23;
+    float x_24 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_24) : x_24;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1595,8 +1595,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_24 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_24 * x_24;
+            float x_25 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_25 * x_25;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2047,8 +2047,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_25 = half_5.big_h * _e13;
-    return (x_25 > 0.0) ? metal::exp(-(x_25)) : 1.0;
+    float x_26 = half_5.big_h * _e13;
+    return (x_26 > 0.0) ? metal::exp(-(x_26)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -2559,13 +2559,13 @@ AirlightPanel airlight_tail_panel(
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_26 = metal::abs(alpha) + metal::abs(beta);
+    float x_27 = metal::abs(alpha) + metal::abs(beta);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_26) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_27) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2575,7 +2575,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_26) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_27) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2585,7 +2585,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_26) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_27) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2595,7 +2595,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_26) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_27) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2605,7 +2605,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_26) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_27) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2615,7 +2615,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_26) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_27) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2625,7 +2625,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_26) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_27) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2635,7 +2635,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_26) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_27) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2987,6 +2987,12 @@ float airlight_angle_y(
     return u + _e5;
 }
 
+float airlight_axis_excess(
+    float x_9
+) {
+    return x_9 + metal::sqrt(x_9 * (2.0 + x_9));
+}
+
 float airlight_angle_floor(
     float side_1,
     float gap_1,
@@ -3005,11 +3011,11 @@ float airlight_angle_floor(
     if (_e15) {
         return 0.0;
     }
-    float y_9 = gap_1 + metal::sqrt(gap_1 * (2.0 + gap_1));
-    float im_1 = (y_9 + y_9) / (2.0 + y_9);
+    float _e17 = airlight_axis_excess(gap_1);
+    float im_1 = (_e17 + _e17) / (2.0 + _e17);
     float offset_1 = (side_1 > 0.0) ? psi0_ : psi1_;
-    float _e33 = airlight_bernstein_rho(1.0 + (offset_1 * inv_hw), im_1 * inv_hw);
-    return step_1 / _e33;
+    float _e29 = airlight_bernstein_rho(1.0 + (offset_1 * inv_hw), im_1 * inv_hw);
+    return step_1 / _e29;
 }
 
 float airlight_cut_length(
@@ -3031,10 +3037,10 @@ float airlight_weighted(
     float sigma_s_1,
     float intensity_3,
     float h_2,
-    float x_9,
+    float x_10,
     float j_1
 ) {
-    float plain_1 = ((((2.0 * sigma_s_1) * intensity_3) / h_2) * metal::exp(-(x_9))) * j_1;
+    float plain_1 = ((((2.0 * sigma_s_1) * intensity_3) / h_2) * metal::exp(-(x_10))) * j_1;
     bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -3042,7 +3048,7 @@ float airlight_weighted(
     if (!((metal::abs(j_1) > 0.0))) {
         return 0.0;
     }
-    return metal::sign(j_1) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s_1)) + metal::log(intensity_3)) - metal::log(h_2)) - x_9) + metal::log(metal::abs(j_1)));
+    return metal::sign(j_1) * metal::exp(((((AIRLIGHT_LN_2_ + metal::log(sigma_s_1)) + metal::log(intensity_3)) - metal::log(h_2)) - x_10) + metal::log(metal::abs(j_1)));
 }
 
 metal::float2 airlight_angle_route(
@@ -3070,7 +3076,7 @@ metal::float2 airlight_angle_route(
     uint i_11 = 0u;
     airlight_type_2 m_3 = {};
     bool local_28 = {};
-    float x_10 = 0.0;
+    float x_11 = 0.0;
     if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return metal::float2(0.0, 0.0);
     }
@@ -3179,120 +3185,120 @@ metal::float2 airlight_angle_route(
             break;
         }
     }
-    float _e155 = psi1_1;
-    float d_3 = _e155 * inv_hw_1;
     if (big_h_7 > 0.0) {
-        exponential = 1.0 / ((1.0 + d_3) + metal::sqrt(d_3 * (2.0 + d_3)));
+        float _e159 = psi1_1;
+        float _e161 = airlight_axis_excess(_e159 * inv_hw_1);
+        exponential = 1.0 / (1.0 + _e161);
     }
+    float _e167 = lambda_1;
+    float predicted = metal::pow(_e167, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL;
     float _e171 = lambda_1;
-    float predicted = metal::pow(_e171, 8.0) * AIRLIGHT_INV_ODD_FACTORIAL;
-    float _e175 = lambda_1;
-    float _e181 = rate;
-    float _e183 = exponential;
-    float decay_2 = metal::max(metal::max(_e175 / ((2.0 * 8.0) - 1.0), _e181), _e183);
-    float _e185 = lambda_1;
-    float _e191 = lambda_1;
-    float estimated = ((metal::pow(_e185, 8.0 - 1.0) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (metal::pow(_e191, 8.0 - 2.0) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * metal::pow(decay_2, (8.0 + 1.0) - 3.0);
+    float _e177 = rate;
+    float _e179 = exponential;
+    float decay_2 = metal::max(metal::max(_e171 / ((2.0 * 8.0) - 1.0), _e177), _e179);
+    float _e181 = lambda_1;
+    float _e187 = lambda_1;
+    float estimated = ((metal::pow(_e181, 8.0 - 1.0) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (metal::pow(_e187, 8.0 - 2.0) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * metal::pow(decay_2, (8.0 + 1.0) - 3.0);
     if (!((predicted <= AIRLIGHT_PANEL_TOLERANCE))) {
         local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
     } else {
         local_27 = false;
     }
-    bool _e213 = local_27;
-    if (_e213) {
+    bool _e209 = local_27;
+    if (_e209) {
         return metal::float2(0.0, 0.0);
     }
-    float _e217 = rate;
-    if (!((metal::pow(_e217, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
+    float _e213 = rate;
+    if (!((metal::pow(_e213, 8.0) <= AIRLIGHT_PANEL_TOLERANCE))) {
         return metal::float2(0.0, 0.0);
     }
-    float _e225 = rate;
-    float _e226 = exponential;
-    rate = metal::max(_e225, _e226);
-    airlight_type_8 _e228 = airlight_gauss_rule();
-    airlight_type_2 _e229 = airlight_zero_terms();
-    samples_3 = _e229;
+    float _e221 = rate;
+    float _e222 = exponential;
+    rate = metal::max(_e221, _e222);
+    airlight_type_8 _e224 = airlight_gauss_rule();
+    airlight_type_2 _e225 = airlight_zero_terms();
+    samples_3 = _e225;
     uint2 loop_bound_16 = uint2(4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (metal::all(loop_bound_16 == uint2(0u))) { break; }
         loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e322 = i_11;
-            i_11 = _e322 + 1u;
+            uint _e318 = i_11;
+            i_11 = _e318 + 1u;
         }
         loop_init_16 = false;
-        uint _e241 = i_11;
-        if (_e241 < AIRLIGHT_TERMS) {
+        uint _e237 = i_11;
+        if (_e237 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            uint _e244 = i_11;
-            float _e245 = airlight_node(_e228, _e244);
-            float lower = _e40 + (hw_1 * (1.0 + _e245));
+            uint _e240 = i_11;
+            float _e241 = airlight_node(_e224, _e240);
+            float lower = _e40 + (hw_1 * (1.0 + _e241));
             bool below_1 = lower <= 1.5707964;
-            float _e252 = psi1_1;
-            metal::float2 _e258 = airlight_cos_sin(below_1 ? lower : (_e252 + (hw_1 * (1.0 - _e245))));
-            float cs_1 = _e258.y;
-            float sn = below_1 ? -(_e258.x) : _e258.x;
-            float near_pole = 1.0 + _e258.x;
+            float _e248 = psi1_1;
+            metal::float2 _e254 = airlight_cos_sin(below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241))));
+            float cs_1 = _e254.y;
+            float sn = below_1 ? -(_e254.x) : _e254.x;
+            float near_pole = 1.0 + _e254.x;
             float far_pole = (cs_1 * cs_1) / near_pole;
             float one_minus = below_1 ? near_pole : far_pole;
             float one_plus = below_1 ? far_pole : near_pole;
-            float y_10 = below_1 ? (cs_1 / near_pole) : (near_pole / cs_1);
-            float weight_2 = (cs_1 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_10 - _e26), 0.0))) : 0.0;
-            float _e292 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_1));
-            float _e298 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
-            float f_2 = _e292 * _e298;
+            float y_9 = below_1 ? (cs_1 / near_pole) : (near_pole / cs_1);
+            float weight_2 = (cs_1 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_9 - _e26), 0.0))) : 0.0;
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_1));
+            float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
+            float f_2 = _e288 * _e294;
             float gw = weight_2 * f_2;
-            uint _e301 = i_11;
-            samples_3.inner[metal::min(unsigned(_e301), 7u)] = gw;
-            uint _e303 = i_11;
-            float w_5 = _e228.inner[metal::min(unsigned(airlight_naga_div(_e303, 2u)), 3u)].y;
-            float _e308 = value_1;
-            value_1 = _e308 + (w_5 * gw);
-            float _e311 = mass_4;
-            mass_4 = _e311 + (w_5 * weight_2);
-            float _e314 = magnitude;
-            magnitude = _e314 + (w_5 * metal::abs(gw));
-            float _e318 = f_max_5;
-            f_max_5 = metal::max(_e318, metal::abs(f_2));
+            uint _e297 = i_11;
+            samples_3.inner[metal::min(unsigned(_e297), 7u)] = gw;
+            uint _e299 = i_11;
+            float w_5 = _e224.inner[metal::min(unsigned(airlight_naga_div(_e299, 2u)), 3u)].y;
+            float _e304 = value_1;
+            value_1 = _e304 + (w_5 * gw);
+            float _e307 = mass_4;
+            mass_4 = _e307 + (w_5 * weight_2);
+            float _e310 = magnitude;
+            magnitude = _e310 + (w_5 * metal::abs(gw));
+            float _e314 = f_max_5;
+            f_max_5 = metal::max(_e314, metal::abs(f_2));
         }
     }
-    airlight_type_2 _e324 = samples_3;
-    airlight_type_2 _e325 = airlight_legendre(_e324);
-    airlight_type_2 _e326 = airlight_zero_terms();
-    m_3 = _e326;
+    airlight_type_2 _e320 = samples_3;
+    airlight_type_2 _e321 = airlight_legendre(_e320);
+    airlight_type_2 _e322 = airlight_zero_terms();
+    m_3 = _e322;
     m_3.inner[0] = 2.0;
-    float _e330 = airlight_tail_estimate(_e325);
-    airlight_type_2 _e333 = m_3;
-    float _e334 = rate;
-    float _e335 = airlight_error_factor(_e325, _e333, _e334);
-    float error_4 = (2.0 * _e330) * _e335;
-    float _e338 = magnitude;
-    float _e341 = airlight_transform_noise(2.0, 0.5 * _e338);
-    float _e343 = value_1;
-    float _e346 = f_max_5;
-    float _e348 = mass_4;
-    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e343), (AIRLIGHT_PANEL_FLOOR * _e346) * _e348);
+    float _e326 = airlight_tail_estimate(_e321);
+    airlight_type_2 _e329 = m_3;
+    float _e330 = rate;
+    float _e331 = airlight_error_factor(_e321, _e329, _e330);
+    float error_4 = (2.0 * _e326) * _e331;
+    float _e334 = magnitude;
+    float _e337 = airlight_transform_noise(2.0, 0.5 * _e334);
+    float _e339 = value_1;
+    float _e342 = f_max_5;
+    float _e344 = mass_4;
+    float accepted = AIRLIGHT_PANEL_TOLERANCE * metal::max(metal::abs(_e339), (AIRLIGHT_PANEL_FLOOR * _e342) * _e344);
     if (!((error_4 <= accepted))) {
-        local_28 = error_4 <= _e341;
+        local_28 = error_4 <= _e337;
     } else {
         local_28 = true;
     }
-    bool _e358 = local_28;
-    if (!(_e358)) {
+    bool _e354 = local_28;
+    if (!(_e354)) {
         return metal::float2(0.0, 0.0);
     }
     if (s_11.sigma_t > 0.0) {
-        float _e369 = airlight_hypot_one(u0_);
-        x_10 = s_11.sigma_t * (h_3 * _e369);
+        float _e365 = airlight_hypot_one(u0_);
+        x_11 = s_11.sigma_t * (h_3 * _e365);
     }
-    float _e374 = x_10;
-    float _e375 = value_1;
-    float _e379 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e374, (_e375 * hw_1) * 0.5);
-    return metal::float2(1.0, _e379);
+    float _e370 = x_11;
+    float _e371 = value_1;
+    float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, (_e371 * hw_1) * 0.5);
+    return metal::float2(1.0, _e375);
 }
 
 metal::float2 airlight_crossings(
@@ -3391,14 +3397,14 @@ bool airlight_dark(
         return false;
     }
     float a_25 = sigma_11 * g_15.d_el;
-    float d_4 = g_15.d_c;
-    if (d_4 == 0.0) {
+    float d_3 = g_15.d_c;
+    if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_25 * a_25) + (d_4 * d_4));
-    y1_1 = (root_1 - a_25) / d_4;
+    float root_1 = metal::sqrt((a_25 * a_25) + (d_3 * d_3));
+    y1_1 = (root_1 - a_25) / d_3;
     if (a_25 > 0.0) {
-        y1_1 = d_4 / (a_25 + root_1);
+        y1_1 = d_3 / (a_25 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -3726,7 +3732,7 @@ float airlight_whole_line(
     bool infinite_1 = true;
     bool local_41 = {};
     bool local_42 = {};
-    float x_11 = 0.0;
+    float x_12 = 0.0;
     float h_4 = g_18.h;
     float a_s = (g_18.x_h - g_18.t_lo) / h_4;
     float _e8 = airlight_hypot_one(a_s);
@@ -3767,13 +3773,13 @@ float airlight_whole_line(
     AirlightHalf half_15 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_11 = big_h_3 * _e8;
+        x_12 = big_h_3 * _e8;
     } else {
         if (s_14.sigma_t > 0.0) {
-            x_11 = s_14.sigma_t * metal::abs(g_18.x_h - g_18.t_lo);
+            x_12 = s_14.sigma_t * metal::abs(g_18.x_h - g_18.t_lo);
         }
     }
-    float _e66 = x_11;
+    float _e66 = x_12;
     metal::float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
     float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
     float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, _e73 * _e67.x);
@@ -4538,10 +4544,10 @@ AirlightCanonical airlight_canonical(
 }
 
 float airlight_opaque(
-    float x_12,
+    float x_13,
     uint key
 ) {
-    return as_type<float>(as_type<uint>(x_12) ^ key);
+    return as_type<float>(as_type<uint>(x_13) ^ key);
 }
 
 metal::float2 airlight_two_sum(
@@ -4558,9 +4564,9 @@ metal::float2 airlight_two_sum(
 }
 
 float airlight_split_high(
-    float x_13
+    float x_14
 ) {
-    return as_type<float>((as_type<uint>(x_13) + 2048u) & 4294963200u);
+    return as_type<float>((as_type<uint>(x_14) + 2048u) & 4294963200u);
 }
 
 metal::float2 airlight_two_product(
@@ -5005,10 +5011,10 @@ AirlightListScan airlight_list_scan(
 }
 
 float airlight_asinh(
-    float x_14
+    float x_15
 ) {
     float r_4 = {};
-    float a_26 = metal::abs(x_14);
+    float a_26 = metal::abs(x_15);
     r_4 = AIRLIGHT_LN_2_ + metal::log(a_26);
     if (a_26 <= 4096.0) {
         float _e17 = airlight_log1p(a_26 + ((a_26 * a_26) / (1.0 + metal::sqrt(1.0 + (a_26 * a_26)))));
@@ -5016,7 +5022,7 @@ float airlight_asinh(
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return (x_14 < 0.0) ? -(_e19) : _e18;
+    return (x_15 < 0.0) ? -(_e19) : _e18;
 }
 
 float airlight_to_w(
@@ -5031,9 +5037,9 @@ float airlight_to_w(
 }
 
 metal::float2 airlight_cos_sin_half_turn(
-    float x_15
+    float x_16
 ) {
-    float r_12 = x_15 - 1.5707964;
+    float r_12 = x_16 - 1.5707964;
     float z_12 = r_12 * r_12;
     float cos_r = 1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0)))))))))))));
     float sin_r = r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0))))))))))))));
@@ -5041,11 +5047,11 @@ metal::float2 airlight_cos_sin_half_turn(
 }
 
 float airlight_acos(
-    float x_16
+    float x_17
 ) {
-    float a_27 = metal::abs(x_16);
+    float a_27 = metal::abs(x_17);
     float _e8 = airlight_atan(metal::sqrt((1.0 - a_27) / (1.0 + a_27)));
-    return (x_16 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
+    return (x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
@@ -5148,22 +5154,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_24.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_27 = metal::dot(_e111, _e112);
+        float x_28 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
-        float y_11 = metal::dot(_e111, metal::cross(l_3, _e114));
+        float y_10 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_27 * x_27) + (y_11 * y_11));
+        g_22.sin_r = metal::sqrt((x_28 * x_28) + (y_10 * y_10));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_27, metal::abs(y_11));
-            float phi_r = ((y_11 < 0.0) ? -1.0 : 1.0) * _e140;
+            float _e140 = airlight_angle(x_28, metal::abs(y_10));
+            float phi_r = ((y_10 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_27 / _e145, -(y_11) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_28 / _e145, -(y_10) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -5310,10 +5316,10 @@ AirlightOuter airlight_surface(
 
 float airlight_lobe_at(
     AirlightLobe q_1,
-    float x_17
+    float x_18
 ) {
     bool local_114 = {};
-    metal::float2 _e4 = airlight_cos_sin(0.5 * x_17);
+    metal::float2 _e4 = airlight_cos_sin(0.5 * x_18);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
     float sin_x = (2.0 * _e4.y) * _e4.x;
@@ -5348,12 +5354,12 @@ float airlight_lobe_node(
 }
 
 float airlight_arc_end(
-    float x_18,
+    float x_19,
     float cut
 ) {
     float end_1 = {};
     bool local_115 = {};
-    end_1 = x_18;
+    end_1 = x_19;
     float _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         float _e6 = end_1;
@@ -5442,15 +5448,15 @@ float airlight_lobe_arcs(
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = g_23.cos_r * cs.x;
-    float d_5 = g_23.sin_r * cs.y;
-    float peak = c_11 + d_5;
+    float d_4 = g_23.sin_r * cs.y;
+    float peak = c_11 + d_4;
     if (!((peak > 0.0))) {
         return 0.0;
     }
     metal::float2 _e20 = airlight_cos_sin(0.5 * (gamma - g_23.alpha_r));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p((-2.0 * sin_gap) * sin_gap);
-    AirlightLobe q_6 = AirlightLobe {g_23.cos_a * cs.x, g_23.sin_a * cs.y, (2.0 * d_5) / peak, _e34, g_23.delta[1], g_23.delta[2], exponent_1};
+    AirlightLobe q_6 = AirlightLobe {g_23.cos_a * cs.x, g_23.sin_a * cs.y, (2.0 * d_4) / peak, _e34, g_23.delta[1], g_23.delta[2], exponent_1};
     if (exponent_1 > 0.0) {
         float _e46 = airlight_expm1_(AIRLIGHT_LN_LOBE_FLOOR / exponent_1);
         reach = -(_e46);
@@ -5852,7 +5858,7 @@ AirlightCanonical airlight_no_canonical(
 AirlightNode airlight_outer_node(
     AirlightScene s_26,
     AirlightOuter g_25,
-    float x_19
+    float x_20
 ) {
     AirlightScene p = {};
     float weight = 0.0;
@@ -5863,8 +5869,8 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_23 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_19), 0.0)), g_25.panels - 1u);
-        float t_7 = x_19 - static_cast<float>(i_23);
+        uint i_23 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_25.panels - 1u);
+        float t_7 = x_20 - static_cast<float>(i_23);
         float a_29 = g_25.gamma.inner[metal::min(unsigned(i_23), 12u)];
         float b_19 = g_25.gamma.inner[metal::min(unsigned(i_23 + 1u), 12u)];
         float gamma_1 = a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3.0 - t_7) - t_7));
@@ -5901,10 +5907,10 @@ AirlightNode airlight_outer_node(
         return AirlightNode {_e136, (_e137 * _e50.y) * jacobian, exact, true};
     }
     if (s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_19;
+        at_1 = x_20;
         if (g_25.scale > 0.0) {
-            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_19));
-            ds = g_25.scale * metal::cosh(x_19);
+            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_20));
+            ds = g_25.scale * metal::cosh(x_20);
         }
         float _e162 = at_1;
         p.light_position = g_25.a + (_e162 * g_25.e);

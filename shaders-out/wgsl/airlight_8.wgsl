@@ -366,9 +366,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_20 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_21 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_20 * x_20) + (y_5 * y_5)) < 1f);
+    return (((x_21 * x_21) + (y_5 * y_5)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -761,8 +761,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_21 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_21 * x_21) * (3f - (2f * x_21)));
+            let x_22 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_22 * x_22) * (3f - (2f * x_22)));
         }
         default: {
             return 1f;
@@ -1018,10 +1018,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_22 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_22);
+            let x_23 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_23);
             if _e42 {
-                let _e43 = airlight_log1p(x_22);
+                let _e43 = airlight_log1p(x_23);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1154,8 +1154,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_23 = rule[(i_3 / 2u)].x;
-    return select(x_23, -(x_23), ((i_3 % 2u) == 0u));
+    let x_24 = rule[(i_3 / 2u)].x;
+    return select(x_24, -(x_24), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_5: array<f32, 8>) -> array<f32, 8> {
@@ -1232,8 +1232,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_24 = (lambda / f32((2u * k0_)));
-            let per_step = (x_24 * x_24);
+            let x_25 = (lambda / f32((2u * k0_)));
+            let per_step = (x_25 * x_25);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1655,8 +1655,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_25 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_25)), (x_25 > 0f));
+    let x_26 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_26)), (x_26 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2118,13 +2118,13 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_26 = (abs(alpha) + abs(beta));
+    let x_27 = (abs(alpha) + abs(beta));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_26) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_27) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2134,7 +2134,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_26) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_27) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2144,7 +2144,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_26) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_27) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2154,7 +2154,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_26) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_27) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2164,7 +2164,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_26) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_27) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2174,7 +2174,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_26) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_27) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2184,7 +2184,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_26) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_27) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2194,7 +2194,7 @@ fn airlight_tail_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_6: f32,
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_26) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_27) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -2500,6 +2500,10 @@ fn airlight_angle_y(u: f32) -> f32 {
     return (u + _e5);
 }
 
+fn airlight_axis_excess(x_9: f32) -> f32 {
+    return (x_9 + sqrt((x_9 * (2f + x_9))));
+}
+
 fn airlight_angle_floor(side_1: f32, gap_1: f32, psi0_: f32, psi1_: f32, inv_hw: f32, step_1: f32) -> f32 {
     var local_25: bool;
 
@@ -2512,11 +2516,11 @@ fn airlight_angle_floor(side_1: f32, gap_1: f32, psi0_: f32, psi1_: f32, inv_hw:
     if _e15 {
         return 0f;
     }
-    let y_9 = (gap_1 + sqrt((gap_1 * (2f + gap_1))));
-    let im_1 = ((y_9 + y_9) / (2f + y_9));
+    let _e17 = airlight_axis_excess(gap_1);
+    let im_1 = ((_e17 + _e17) / (2f + _e17));
     let offset_1 = select(psi1_, psi0_, (side_1 > 0f));
-    let _e33 = airlight_bernstein_rho((1f + (offset_1 * inv_hw)), (im_1 * inv_hw));
-    return (step_1 / _e33);
+    let _e29 = airlight_bernstein_rho((1f + (offset_1 * inv_hw)), (im_1 * inv_hw));
+    return (step_1 / _e29);
 }
 
 fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
@@ -2530,8 +2534,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     return (e_1 * inv_h);
 }
 
-fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_9: f32, j_1: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s) * intensity) / h_2) * exp(-(x_9))) * j_1);
+fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s) * intensity) / h_2) * exp(-(x_10))) * j_1);
     let _e13 = airlight_is_finite(plain_1);
     if _e13 {
         return plain_1;
@@ -2539,7 +2543,7 @@ fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_9: f32, j_1: f32)
     if !((abs(j_1) > 0f)) {
         return 0f;
     }
-    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_2)) - x_9) + log(abs(j_1)))));
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s)) + log(intensity)) - log(h_2)) - x_10) + log(abs(j_1)))));
 }
 
 fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32> {
@@ -2564,7 +2568,7 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
     var i_11: u32 = 0u;
     var m_3: array<f32, 8>;
     var local_28: bool;
-    var x_10: f32 = 0f;
+    var x_11: f32 = 0f;
 
     if (s_9.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return vec2<f32>(0f, 0f);
@@ -2669,115 +2673,115 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
         default: {
         }
     }
-    let _e155 = psi1_1;
-    let d_3 = (_e155 * inv_hw_1);
     if (big_h_7 > 0f) {
-        exponential = (1f / ((1f + d_3) + sqrt((d_3 * (2f + d_3)))));
+        let _e159 = psi1_1;
+        let _e161 = airlight_axis_excess((_e159 * inv_hw_1));
+        exponential = (1f / (1f + _e161));
     }
+    let _e167 = lambda_1;
+    let predicted = (pow(_e167, 8f) * AIRLIGHT_INV_ODD_FACTORIAL);
     let _e171 = lambda_1;
-    let predicted = (pow(_e171, 8f) * AIRLIGHT_INV_ODD_FACTORIAL);
-    let _e175 = lambda_1;
-    let _e181 = rate;
-    let _e183 = exponential;
-    let decay_2 = max(max((_e175 / ((2f * 8f) - 1f)), _e181), _e183);
-    let _e185 = lambda_1;
-    let _e191 = lambda_1;
-    let estimated = (((pow(_e185, (8f - 1f)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e191, (8f - 2f)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8f + 1f) - 3f)));
+    let _e177 = rate;
+    let _e179 = exponential;
+    let decay_2 = max(max((_e171 / ((2f * 8f) - 1f)), _e177), _e179);
+    let _e181 = lambda_1;
+    let _e187 = lambda_1;
+    let estimated = (((pow(_e181, (8f - 1f)) * AIRLIGHT_INV_ODD_FACTORIAL_1_) + (pow(_e187, (8f - 2f)) * AIRLIGHT_INV_ODD_FACTORIAL_2_)) * pow(decay_2, ((8f + 1f) - 3f)));
     if !((predicted <= AIRLIGHT_PANEL_TOLERANCE)) {
         local_27 = !((estimated <= AIRLIGHT_PANEL_TOLERANCE));
     } else {
         local_27 = false;
     }
-    let _e213 = local_27;
-    if _e213 {
+    let _e209 = local_27;
+    if _e209 {
         return vec2<f32>(0f, 0f);
     }
-    let _e217 = rate;
-    if !((pow(_e217, 8f) <= AIRLIGHT_PANEL_TOLERANCE)) {
+    let _e213 = rate;
+    if !((pow(_e213, 8f) <= AIRLIGHT_PANEL_TOLERANCE)) {
         return vec2<f32>(0f, 0f);
     }
-    let _e225 = rate;
-    let _e226 = exponential;
-    rate = max(_e225, _e226);
-    let _e228 = airlight_gauss_rule();
-    let _e229 = airlight_zero_terms();
-    samples_3 = _e229;
+    let _e221 = rate;
+    let _e222 = exponential;
+    rate = max(_e221, _e222);
+    let _e224 = airlight_gauss_rule();
+    let _e225 = airlight_zero_terms();
+    samples_3 = _e225;
     loop {
-        let _e241 = i_11;
-        if (_e241 < AIRLIGHT_TERMS) {
+        let _e237 = i_11;
+        if (_e237 < AIRLIGHT_TERMS) {
         } else {
             break;
         }
         {
-            let _e244 = i_11;
-            let _e245 = airlight_node(_e228, _e244);
-            let lower = (_e40 + (hw_1 * (1f + _e245)));
+            let _e240 = i_11;
+            let _e241 = airlight_node(_e224, _e240);
+            let lower = (_e40 + (hw_1 * (1f + _e241)));
             let below_1 = (lower <= 1.5707964f);
-            let _e252 = psi1_1;
-            let _e258 = airlight_cos_sin(select((_e252 + (hw_1 * (1f - _e245))), lower, below_1));
-            let cs_1 = _e258.y;
-            let sn = select(_e258.x, -(_e258.x), below_1);
-            let near_pole = (1f + _e258.x);
+            let _e248 = psi1_1;
+            let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
+            let cs_1 = _e254.y;
+            let sn = select(_e254.x, -(_e254.x), below_1);
+            let near_pole = (1f + _e254.x);
             let far_pole = ((cs_1 * cs_1) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_10 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
-            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_1 > 0f));
-            let _e292 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
-            let _e298 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
-            let f_2 = (_e292 * _e298);
+            let y_9 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
+            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
+            let _e288 = airlight_light(s_9.light_kind, s_9.light_param_a, s_9.light_param_b, ((g_11.d_el * sn) + (g_11.d_c * cs_1)));
+            let _e294 = airlight_phase(s_9.phase_kind, s_9.phase_param_a, s_9.phase_param_b, s_9.phase_param_c, -(sn), one_plus, one_minus);
+            let f_2 = (_e288 * _e294);
             let gw = (weight_2 * f_2);
-            let _e301 = i_11;
-            samples_3[_e301] = gw;
-            let _e303 = i_11;
-            let w_4 = _e228[(_e303 / 2u)].y;
-            let _e308 = value_1;
-            value_1 = (_e308 + (w_4 * gw));
-            let _e311 = mass_4;
-            mass_4 = (_e311 + (w_4 * weight_2));
-            let _e314 = magnitude;
-            magnitude = (_e314 + (w_4 * abs(gw)));
-            let _e318 = f_max_5;
-            f_max_5 = max(_e318, abs(f_2));
+            let _e297 = i_11;
+            samples_3[_e297] = gw;
+            let _e299 = i_11;
+            let w_4 = _e224[(_e299 / 2u)].y;
+            let _e304 = value_1;
+            value_1 = (_e304 + (w_4 * gw));
+            let _e307 = mass_4;
+            mass_4 = (_e307 + (w_4 * weight_2));
+            let _e310 = magnitude;
+            magnitude = (_e310 + (w_4 * abs(gw)));
+            let _e314 = f_max_5;
+            f_max_5 = max(_e314, abs(f_2));
         }
         continuing {
-            let _e322 = i_11;
-            i_11 = (_e322 + 1u);
+            let _e318 = i_11;
+            i_11 = (_e318 + 1u);
         }
     }
-    let _e324 = samples_3;
-    let _e325 = airlight_legendre(_e324);
-    let _e326 = airlight_zero_terms();
-    m_3 = _e326;
+    let _e320 = samples_3;
+    let _e321 = airlight_legendre(_e320);
+    let _e322 = airlight_zero_terms();
+    m_3 = _e322;
     m_3[0] = 2f;
-    let _e330 = airlight_tail_estimate(_e325);
-    let _e333 = m_3;
-    let _e334 = rate;
-    let _e335 = airlight_error_factor(_e325, _e333, _e334);
-    let error_4 = ((2f * _e330) * _e335);
-    let _e338 = magnitude;
-    let _e341 = airlight_transform_noise(2f, (0.5f * _e338));
-    let _e343 = value_1;
-    let _e346 = f_max_5;
-    let _e348 = mass_4;
-    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e343), ((AIRLIGHT_PANEL_FLOOR * _e346) * _e348)));
+    let _e326 = airlight_tail_estimate(_e321);
+    let _e329 = m_3;
+    let _e330 = rate;
+    let _e331 = airlight_error_factor(_e321, _e329, _e330);
+    let error_4 = ((2f * _e326) * _e331);
+    let _e334 = magnitude;
+    let _e337 = airlight_transform_noise(2f, (0.5f * _e334));
+    let _e339 = value_1;
+    let _e342 = f_max_5;
+    let _e344 = mass_4;
+    let accepted = (AIRLIGHT_PANEL_TOLERANCE * max(abs(_e339), ((AIRLIGHT_PANEL_FLOOR * _e342) * _e344)));
     if !((error_4 <= accepted)) {
-        local_28 = (error_4 <= _e341);
+        local_28 = (error_4 <= _e337);
     } else {
         local_28 = true;
     }
-    let _e358 = local_28;
-    if !(_e358) {
+    let _e354 = local_28;
+    if !(_e354) {
         return vec2<f32>(0f, 0f);
     }
     if (s_9.sigma_t > 0f) {
-        let _e369 = airlight_hypot_one(u0_);
-        x_10 = (s_9.sigma_t * (h_3 * _e369));
+        let _e365 = airlight_hypot_one(u0_);
+        x_11 = (s_9.sigma_t * (h_3 * _e365));
     }
-    let _e374 = x_10;
-    let _e375 = value_1;
-    let _e379 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e374, ((_e375 * hw_1) * 0.5f));
-    return vec2<f32>(1f, _e379);
+    let _e370 = x_11;
+    let _e371 = value_1;
+    let _e375 = airlight_weighted(s_9.sigma_s, s_9.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5f));
+    return vec2<f32>(1f, _e375);
 }
 
 fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_3: f32) -> vec2<f32> {
@@ -2862,14 +2866,14 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
         return false;
     }
     let a_25 = (sigma_11 * g_13.d_el);
-    let d_4 = g_13.d_c;
-    if (d_4 == 0f) {
+    let d_3 = g_13.d_c;
+    if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_25 * a_25) + (d_4 * d_4)));
-    y1_1 = ((root_1 - a_25) / d_4);
+    let root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_25) / d_3);
     if (a_25 > 0f) {
-        y1_1 = (d_4 / (a_25 + root_1));
+        y1_1 = (d_3 / (a_25 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -3162,7 +3166,7 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     var infinite_1: bool = true;
     var local_41: bool;
     var local_42: bool;
-    var x_11: f32 = 0f;
+    var x_12: f32 = 0f;
 
     let h_4 = g_16.h;
     let a_s = ((g_16.x_h - g_16.t_lo) / h_4);
@@ -3204,13 +3208,13 @@ fn airlight_whole_line(s_12: AirlightScene, g_16: AirlightCanonical, big_h_3: f3
     let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_11 = (big_h_3 * _e8);
+        x_12 = (big_h_3 * _e8);
     } else {
         if (s_12.sigma_t > 0f) {
-            x_11 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
+            x_12 = (s_12.sigma_t * abs((g_16.x_h - g_16.t_lo)));
         }
     }
-    let _e66 = x_11;
+    let _e66 = x_12;
     let _e67 = airlight_moment_zero_weighted(half_15, _e66);
     let _e73 = airlight_integrand(s_12, g_16, -1f, 0f);
     let _e76 = airlight_weighted(s_12.sigma_s, s_12.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -3954,8 +3958,8 @@ fn airlight_canonical(s_17: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_17.t_min, select(s_17.t_max, 0f, infinite_3), infinite_3);
 }
 
-fn airlight_opaque(x_12: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_12) ^ key));
+fn airlight_opaque(x_13: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_13) ^ key));
 }
 
 fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
@@ -3967,8 +3971,8 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_2, _e12));
 }
 
-fn airlight_split_high(x_13: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_13) + 2048u) & 4294963200u));
+fn airlight_split_high(x_14: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_14) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
@@ -4389,10 +4393,10 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
-fn airlight_asinh(x_14: f32) -> f32 {
+fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
-    let a_26 = abs(x_14);
+    let a_26 = abs(x_15);
     r_4 = (AIRLIGHT_LN_2_ + log(a_26));
     if (a_26 <= 4096f) {
         let _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1f + sqrt((1f + (a_26 * a_26)))))));
@@ -4400,7 +4404,7 @@ fn airlight_asinh(x_14: f32) -> f32 {
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_14 < 0f));
+    return select(_e18, -(_e19), (x_15 < 0f));
 }
 
 fn airlight_to_w(g_19: AirlightOuter, s_19: f32) -> f32 {
@@ -4411,18 +4415,18 @@ fn airlight_to_w(g_19: AirlightOuter, s_19: f32) -> f32 {
     return s_19;
 }
 
-fn airlight_cos_sin_half_turn(x_15: f32) -> vec2<f32> {
-    let r_12 = (x_15 - 1.5707964f);
+fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
+    let r_12 = (x_16 - 1.5707964f);
     let z_12 = (r_12 * r_12);
     let cos_r = (1f - ((z_12 / 2f) * (1f - ((z_12 / 12f) * (1f - ((z_12 / 30f) * (1f - ((z_12 / 56f) * (1f - ((z_12 / 90f) * (1f - ((z_12 / 132f) * (1f - (z_12 / 182f))))))))))))));
     let sin_r = (r_12 * (1f - ((z_12 / 6f) * (1f - ((z_12 / 20f) * (1f - ((z_12 / 42f) * (1f - ((z_12 / 72f) * (1f - ((z_12 / 110f) * (1f - ((z_12 / 156f) * (1f - (z_12 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_16: f32) -> f32 {
-    let a_27 = abs(x_16);
+fn airlight_acos(x_17: f32) -> f32 {
+    let a_27 = abs(x_17);
     let _e8 = airlight_atan(sqrt(((1f - a_27) / (1f + a_27))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_16 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_20: f32) -> f32 {
@@ -4513,22 +4517,22 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_22.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_27 = dot(_e111, _e112);
+        let x_28 = dot(_e111, _e112);
         let _e114 = u_1;
-        let y_11 = dot(_e111, cross(l_3, _e114));
+        let y_10 = dot(_e111, cross(l_3, _e114));
         g_20.cos_r = dot(_e111, l_3);
-        g_20.sin_r = sqrt(((x_27 * x_27) + (y_11 * y_11)));
+        g_20.sin_r = sqrt(((x_28 * x_28) + (y_10 * y_10)));
         let _e126 = g_20.cos_r;
         let _e128 = g_20.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_20.alpha_r = _e129;
         let _e131 = g_20.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_27, abs(y_11));
-            let phi_r = (select(1f, -1f, (y_11 < 0f)) * _e140);
+            let _e140 = airlight_angle(x_28, abs(y_10));
+            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
             let _e145 = g_20.sin_r;
             let _e149 = g_20.sin_r;
-            g_20.delta = vec3<f32>(-(phi_r), (x_27 / _e145), (-(y_11) / _e149));
+            g_20.delta = vec3<f32>(-(phi_r), (x_28 / _e145), (-(y_10) / _e149));
         }
         let _e154 = g_20.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -4655,10 +4659,10 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     return _e307;
 }
 
-fn airlight_lobe_at(q_1: AirlightLobe, x_17: f32) -> f32 {
+fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     var local_114: bool;
 
-    let _e4 = airlight_cos_sin((0.5f * x_17));
+    let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
     let cos_x = (1f - (2f * s2_));
     let sin_x = ((2f * _e4.y) * _e4.x);
@@ -4686,11 +4690,11 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep
     return (w * _e22);
 }
 
-fn airlight_arc_end(x_18: f32, cut: f32) -> f32 {
+fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end: f32;
     var local_115: bool;
 
-    end = x_18;
+    end = x_19;
     let _e3 = end;
     if (_e3 > AIRLIGHT_PI) {
         let _e6 = end;
@@ -4764,15 +4768,15 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var i_20: u32 = 0u;
 
     let c_11 = (g_21.cos_r * cs.x);
-    let d_5 = (g_21.sin_r * cs.y);
-    let peak = (c_11 + d_5);
+    let d_4 = (g_21.sin_r * cs.y);
+    let peak = (c_11 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_21.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_6 = AirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2f * d_5) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
+    let q_6 = AirlightLobe((g_21.cos_a * cs.x), (g_21.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_21.delta.y, g_21.delta.z, exponent);
     if (exponent > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent));
         reach = -(_e46);
@@ -5154,7 +5158,7 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> AirlightNode {
+fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> AirlightNode {
     var p: AirlightScene;
     var weight: f32 = 0f;
     var at_1: f32;
@@ -5165,8 +5169,8 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_23 = min(u32(max(floor(x_19), 0f)), (g_23.panels - 1u));
-        let t_7 = (x_19 - f32(i_23));
+        let i_23 = min(u32(max(floor(x_20), 0f)), (g_23.panels - 1u));
+        let t_7 = (x_20 - f32(i_23));
         let a_29 = g_23.gamma[i_23];
         let b_19 = g_23.gamma[(i_23 + 1u)];
         let gamma_1 = (a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3f - t_7) - t_7)));
@@ -5203,10 +5207,10 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_19: f32) -> A
         return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
     }
     if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_19;
+        at_1 = x_20;
         if (g_23.scale > 0f) {
-            at_1 = (g_23.s_star + (g_23.scale * sinh(x_19)));
-            ds = (g_23.scale * cosh(x_19));
+            at_1 = (g_23.s_star + (g_23.scale * sinh(x_20)));
+            ds = (g_23.scale * cosh(x_20));
         }
         let _e162 = at_1;
         p.light_position = (g_23.a + (_e162 * g_23.e));

@@ -1234,6 +1234,12 @@ fn airlight_angle_y(u: f32) -> f32 {
     return u + airlight_hypot_one(u);
 }
 
+/// x + √(x(2 + x)) = e^{acosh(1 + x)} − 1 for x ≥ 0, without cancellation near 0: ρ − 1 of the
+/// Bernstein ellipse through the real point 1 + x (angle.rs `axis_excess`).
+fn airlight_axis_excess(x: f32) -> f32 {
+    return x + sqrt(x * (2.0 + x));
+}
+
 /// The floor of the coefficients' rate from a phase singularity at the cosine
 /// side·(1 + gap): θ = ∓π/2 ± i·acosh(1 + gap), through the Bernstein ellipse of the panel,
 /// the pole ψ0 before its start (side > 0) or ψ1 past its end, 1 + ψ/hw from its centre in
@@ -1241,7 +1247,7 @@ fn airlight_angle_y(u: f32) -> f32 {
 fn airlight_angle_floor(side: f32, gap: f32, psi0: f32, psi1: f32, inv_hw: f32, step: f32) -> f32 {
     if (!(gap > 0.0) || gap >= AIRLIGHT_FLT_MAX) { return 0.0; }
     // acosh(1 + gap) = ln(1 + y) from below by 2y/(2 + y)
-    let y = gap + sqrt(gap * (2.0 + gap));
+    let y = airlight_axis_excess(gap);
     let im = (y + y) / (2.0 + y);
     let offset = select(psi1, psi0, side > 0.0);
     return step / airlight_bernstein_rho(1.0 + offset * inv_hw, im * inv_hw);
@@ -1310,10 +1316,9 @@ fn airlight_angle_route(s: AirlightScene, g: AirlightCanonical) -> vec2<f32> {
         }
         default: {}
     }
-    // Y's pole ψ1 past the panel's end, on the real axis at 1 + d: ρ = 1 + d + √(d(2 + d))
-    let d = psi1 * inv_hw;
+    // Y's pole ψ1 past the panel's end, on the real axis at 1 + d: ρ = 1 + axis_excess(d)
     var exponential = 0.0;
-    if (big_h > 0.0) { exponential = 1.0 / (1.0 + d + sqrt(d * (2.0 + d))); }
+    if (big_h > 0.0) { exponential = 1.0 / (1.0 + airlight_axis_excess(psi1 * inv_hw)); }
     // λ^N/(3·5⋯(2N+1)), without a loop (lavapipe's loops share one iteration budget), or where
     // that declines, the estimate's own form (angle.rs `predicted_estimate`)
     let n = f32(AIRLIGHT_TERMS);
