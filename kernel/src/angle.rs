@@ -253,8 +253,11 @@ impl<T: Real> Plan<T> {
         // λ = √p·hw, the two rates added, and on every rule by its own prediction too; where
         // c_N's declines a first try, the estimate's own form may still let it through
         // (`predicted_estimate`: a steep extinction with nothing singular near the panel)
+        // (the phase function's rate ρ^{−1} with its order's step as the panels take it, formed
+        // once for this and its own prediction below)
+        let singular_rate = order_step(order, N) * phase;
         let rate = if wider { lambda } else { lambda + lobe };
-        if !(predicted_coefficient(rate, N) <= tolerance) && (wider || !(predicted_estimate::<T, N>(rate, order_step(order, N) * phase, exponential) <= tolerance)) {
+        if !(predicted_coefficient(rate, N) <= tolerance) && (wider || !(predicted_estimate::<T, N>(rate, singular_rate, exponential) <= tolerance)) {
             return Route::Declined;
         }
         // the lobe e^{−p·hw²ξ²/2} as a Bessel function's terms, z = p·hw²/4: the estimate adds
@@ -271,7 +274,7 @@ impl<T: Real> Plan<T> {
         // The singularities': ρ^{−N} of the nearest (`Plan::phase`), with its order's step as
         // the panels take it, and the exponential's own, Y's pole at θ = π/2 (essential in
         // e^{−HY}, which is analytic inside the ellipse through it).
-        let rate = order_step(order, N) * phase;
+        let rate = singular_rate;
         if !(power(rate, N) <= tolerance) {
             return Route::Declined;
         }
