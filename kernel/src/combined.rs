@@ -369,28 +369,31 @@ where
 /// logarithm: the decision is the same, the street lamp's and most short rays' `ln` is saved.
 #[inline]
 pub(crate) fn cut_length<T: Real>(big_h: T, v_s: T, span: T, control: &Control<T>) -> T {
-    let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
-    let floor = control.floor.max(T::epsilon());
-    if !(big_h > T::zero()) || !(delta * floor > T::zero()) || big_h * span <= uncut_span(control) {
+    let resolution = cut_resolution(control);
+    if !(big_h > T::zero()) || !(resolution > T::zero()) || big_h * span <= uncut_span(control) {
         return T::infinity();
     }
     let inv_h = big_h.recip();
     let w = v_s + inv_h;
     let r = (T::one() + w * w) / (T::one() + v_s * v_s);
-    let e = T::one() + (T::lit(8.0) * r / (delta * floor)).ln();
+    let e = T::one() + (T::lit(8.0) * r / resolution).ln();
     e * inv_h
 }
 
+/// `δ·τ` of the panels' cut bound (`cut_length`) under `control`: `δ = max(tolerance/10, ε)` times the floor
+/// `τ`, at least `ε` — the fraction of the scale the cut may drop. The shaders take it from here.
+#[inline]
+pub fn cut_resolution<T: Real>(control: &Control<T>) -> T {
+    (control.tolerance * T::lit(0.1)).max(T::epsilon()) * control.floor.max(T::epsilon())
+}
+
 /// The largest `H·Δv` that the panels' cut of the extinction (`cut_length`) never cuts under
-/// `control`: `1 + ln 2·(2 − ⌊log₂(δ·τ)⌋)` (`δ = max(tolerance/10, ε)`, `τ` the floor, at
-/// least `ε`), below the cut's smallest exponent `E = 1 + ln(8R/(δ·τ))` since `R ≥ 1` and
-/// `ln(8/(δ·τ)) ≥ ln 2·(3 − ⌊log₂(δ·τ)⌋ − 1)`; `⌊log₂⌋` from the float's bits, no library
-/// call. The shaders take it from here.
+/// `control`: `1 + ln 2·(2 − ⌊log₂(δ·τ)⌋)` ([`cut_resolution`]), below the cut's smallest
+/// exponent `E = 1 + ln(8R/(δ·τ))` since `R ≥ 1` and `ln(8/(δ·τ)) ≥ ln 2·(3 − ⌊log₂(δ·τ)⌋ −
+/// 1)`; `⌊log₂⌋` from the float's bits, no library call. The shaders take it from here.
 #[inline]
 pub fn uncut_span<T: Real>(control: &Control<T>) -> T {
-    let delta = (control.tolerance * T::lit(0.1)).max(T::epsilon());
-    let floor = control.floor.max(T::epsilon());
-    T::one() + T::lit(core::f64::consts::LN_2) * T::from(2 - log2_floor(delta * floor)).unwrap()
+    T::one() + T::lit(core::f64::consts::LN_2) * T::from(2 - log2_floor(cut_resolution(control))).unwrap()
 }
 
 /// An isotropic segment across the foot, in one piece: with `F` constant there is nothing to

@@ -129,6 +129,7 @@ const uint AIRLIGHT_ALIASING_MARGIN = 3u;
 const float AIRLIGHT_INV_ODD_FACTORIAL = 2.9019636e-8;
 const float AIRLIGHT_INV_ODD_FACTORIAL_1_ = 4.933338e-7;
 const float AIRLIGHT_INV_ODD_FACTORIAL_2_ = 7.4000072e-6;
+const float AIRLIGHT_CUT_RESOLUTION = 1e-8;
 const float AIRLIGHT_UNCUT_SPAN = 21.101269;
 const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 const float AIRLIGHT_PI = 3.1415927;
@@ -2537,7 +2538,7 @@ float airlight_cut_length(float big_h_1, float v_s, float span) {
     float inv_h = (1.0 / big_h_1);
     float w_3 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
+    float e_1 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
     return (e_1 * inv_h);
 }
 

@@ -148,6 +148,7 @@ static const uint AIRLIGHT_ALIASING_MARGIN = 3u;
 static const float AIRLIGHT_INV_ODD_FACTORIAL = 1.2648855e-13;
 static const float AIRLIGHT_INV_ODD_FACTORIAL_1_ = 3.162214e-12;
 static const float AIRLIGHT_INV_ODD_FACTORIAL_2_ = 7.273092e-11;
+static const float AIRLIGHT_CUT_RESOLUTION = 1e-8;
 static const float AIRLIGHT_UNCUT_SPAN = 21.101269;
 static const float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 static const float AIRLIGHT_PI = 3.1415927;
@@ -3228,7 +3229,7 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
     float inv_h = (1.0 / big_h_1);
     float w_3 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_11) / (0.000100000005 * 0.0001))));
+    float e_1 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
     return (e_1 * inv_h);
 }
 

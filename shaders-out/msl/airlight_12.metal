@@ -183,6 +183,7 @@ constant uint AIRLIGHT_ALIASING_MARGIN = 3u;
 constant float AIRLIGHT_INV_ODD_FACTORIAL = 0.00000000000012648855;
 constant float AIRLIGHT_INV_ODD_FACTORIAL_1_ = 0.000000000003162214;
 constant float AIRLIGHT_INV_ODD_FACTORIAL_2_ = 0.00000000007273092;
+constant float AIRLIGHT_CUT_RESOLUTION = 0.00000001;
 constant float AIRLIGHT_UNCUT_SPAN = 21.101269;
 constant float AIRLIGHT_EXACT_RANGE = 1073741800.0;
 constant float AIRLIGHT_PI = 3.1415927;
@@ -3316,7 +3317,7 @@ float airlight_cut_length(
     float inv_h = 1.0 / big_h_1;
     float w_3 = v_s + inv_h;
     float r_11 = (1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s));
-    float e_1 = 1.0 + metal::log((8.0 * r_11) / (0.000100000005 * 0.0001));
+    float e_1 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
     return e_1 * inv_h;
 }
 

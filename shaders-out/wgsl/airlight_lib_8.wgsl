@@ -165,6 +165,7 @@ const AIRLIGHT_ALIASING_MARGIN: u32 = 3u;
 const AIRLIGHT_INV_ODD_FACTORIAL: f32 = 0.000000029019636f;
 const AIRLIGHT_INV_ODD_FACTORIAL_1_: f32 = 0.0000004933338f;
 const AIRLIGHT_INV_ODD_FACTORIAL_2_: f32 = 0.0000074000072f;
+const AIRLIGHT_CUT_RESOLUTION: f32 = 0.00000001f;
 const AIRLIGHT_UNCUT_SPAN: f32 = 21.101269f;
 const AIRLIGHT_EXACT_RANGE: f32 = 1073741800f;
 const AIRLIGHT_PI: f32 = 3.1415927f;
@@ -2644,7 +2645,7 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_4 = (v_s + inv_h);
     let r_11 = ((1f + (w_4 * w_4)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_11) / (0.000100000005f * 0.0001f))));
+    let e_1 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
     return (e_1 * inv_h);
 }
 

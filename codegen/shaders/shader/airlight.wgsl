@@ -26,7 +26,9 @@ const AIRLIGHT_ALIASING_MARGIN: u32 = @ALIASING_MARGIN@u;
 const AIRLIGHT_INV_ODD_FACTORIAL: f32 = @INV_ODD_FACTORIAL@;
 const AIRLIGHT_INV_ODD_FACTORIAL_1: f32 = @INV_ODD_FACTORIAL_1@;
 const AIRLIGHT_INV_ODD_FACTORIAL_2: f32 = @INV_ODD_FACTORIAL_2@;
-// The largest H·Δv the extinction's cut never cuts (combined.rs `uncut_span`).
+// The extinction's cut: the fraction δ·τ of the scale it may drop (combined.rs
+// `cut_resolution`) and the largest H·Δv it never cuts (`uncut_span`).
+const AIRLIGHT_CUT_RESOLUTION: f32 = @CUT_RESOLUTION@;
 const AIRLIGHT_UNCUT_SPAN: f32 = @UNCUT_SPAN@;
 // The range of exact products (real.rs, f32).
 const AIRLIGHT_EXACT_RANGE: f32 = @EXACT_RANGE@;
@@ -1582,15 +1584,14 @@ fn airlight_whole_line(s: AirlightScene, g: AirlightCanonical, big_h: f32) -> f3
 }
 
 /// The length Δv of a half beyond which the panels cut it, E = 1 + ln(8R/(δ·τ)) over H > 0,
-/// δ = max(tolerance/10, ε) (combined.rs::cut_length, where the bound is derived); FLT_MAX
+/// δ·τ = AIRLIGHT_CUT_RESOLUTION (combined.rs::cut_length, where the bound is derived); FLT_MAX
 /// without the logarithm where H·span is at most AIRLIGHT_UNCUT_SPAN, below E.
 fn airlight_cut_length(big_h: f32, v_s: f32, span: f32) -> f32 {
     if (big_h * span <= AIRLIGHT_UNCUT_SPAN) { return AIRLIGHT_FLT_MAX; }
     let inv_h = 1.0 / big_h;
     let w = v_s + inv_h;
     let r = (1.0 + w * w) / (1.0 + v_s * v_s);
-    let delta = max(AIRLIGHT_PANEL_TOLERANCE * 0.1, AIRLIGHT_FLT_EPS);
-    let e = 1.0 + log(8.0 * r / (delta * max(AIRLIGHT_PANEL_FLOOR, AIRLIGHT_FLT_EPS)));
+    let e = 1.0 + log(8.0 * r / AIRLIGHT_CUT_RESOLUTION);
     return e * inv_h;
 }
 

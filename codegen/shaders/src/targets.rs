@@ -243,6 +243,7 @@ impl Constants {
             ("@INV_ODD_FACTORIAL_1@", f(airlight::angle::inv_odd_factorial(terms - 1))),
             ("@INV_ODD_FACTORIAL_2@", f(airlight::angle::inv_odd_factorial(terms - 2))),
             ("@UNCUT_SPAN@", f(airlight::combined::uncut_span(&airlight::panels::Control { tolerance, ..control }) as f64)),
+            ("@CUT_RESOLUTION@", f(airlight::combined::cut_resolution(&airlight::panels::Control { tolerance, ..control }) as f64)),
             ("@SINGULAR_PHASES@", singular_phases),
             ("@SPOT_DEGREE@", f(spot_degree as f64)),
             ("@EXACT_RANGE@", f(<f32 as Real>::EXACT_RANGE)),
