@@ -116,20 +116,27 @@ where
 #[derive(Clone, Copy, Debug)]
 pub struct Plan<T> {
     /// `u0 = (t0 − x_h)/h`.
-    u0: T,
+    pub(crate) u0: T,
     /// `H = σt h`.
-    big_h: T,
+    pub(crate) big_h: T,
     /// `Y` at the start.
-    y0: T,
+    pub(crate) y0: T,
+    /// `Y` at the end (`+∞` for an infinite ray).
+    pub(crate) y1: T,
     /// The ends' distances from the poles: `ψ0 = θ0 + π/2`, `ψ1 = π/2 − θ1` (`θ1` the cut end).
     psi0: T,
     psi1: T,
     /// The panel's half-width in `θ`.
     hw: T,
     /// The extinction's rate `λ` over the panel (module docs).
-    lambda: T,
+    pub(crate) lambda: T,
     /// The lobe's `√p·hw` (0 without an axis).
     lobe: T,
+    /// The light distribution's degree `p` in `c` (0 without an axis).
+    pub(crate) degree: T,
+    /// `μ* − 1` of the phase function's nearest forward singularity (`μ* > 1`; `+∞` without
+    /// one): its `Y = ±i·√((μ* − 1)/(μ* + 1))` bounds Gauss–Laguerre's rate ([`crate::depth`]).
+    pub(crate) forward_gap: T,
     /// `1/ρ` of the phase function's nearest singularity: `ρ` of the panel's Bernstein
     /// ellipse through it (0 without one).
     phase: T,
@@ -193,12 +200,13 @@ impl<T: Real> Plan<T> {
         let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
         // D, a polynomial of degree p in c = A cos(θ − θ_axis): a lobe c^p ≈ e^{−pφ²/2} of
         // angular width about 1/√p
-        let lobe = T::from(degree).unwrap().sqrt() * hw;
+        let degree = T::from(degree).unwrap();
+        let lobe = degree.sqrt() * hw;
         // The phase function's nearest singularity, at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|: 1/ρ
         // of the panel's Bernstein ellipse through it, the pole ψ0 before the panel's start or ψ1
         // past its end (1 + ψ/hw from its centre, in units of hw)
         let inv_hw = hw.recip();
-        let mut phase = T::zero();
+        let (mut phase, mut forward_gap) = (T::zero(), T::infinity());
         for mu in singular.cosines {
             let gap = mu.abs() - T::one();
             if !(gap > T::zero()) || !gap.is_finite() {
@@ -210,6 +218,9 @@ impl<T: Real> Plan<T> {
             // understated, without the library's `ln_1p`
             let y = axis_excess(gap);
             let im = (y + y) / (T::lit(2.0) + y);
+            if mu > T::zero() {
+                forward_gap = forward_gap.min(gap);
+            }
             let offset = if mu > T::zero() { psi0 } else { psi1 };
             phase = phase.max(bernstein_rho(T::one() + offset * inv_hw, im * inv_hw).recip());
         }
@@ -217,7 +228,16 @@ impl<T: Real> Plan<T> {
         // `axis_excess(d)` (`bernstein_rho` on the axis, one square root, and d to full accuracy
         // where the pole is close)
         let exponential = if big_h > T::zero() { (T::one() + axis_excess(psi1 * inv_hw)).recip() } else { T::zero() };
-        Some(Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order: singular.order, exponential })
+        Some(Plan { u0, big_h, y0, y1, psi0, psi1, hw, lambda, lobe, degree, forward_gap, phase, order: singular.order, exponential })
+    }
+
+    /// Whether the medium is thick where the light is: `σt·h ≥ 1`, the light at least a mean
+    /// free path from the ray's line, so that the extinction falls by `e` or more within the
+    /// light's distance. There Gauss–Laguerre in the optical depth, whose weight the
+    /// extinction is, is tried first ([`crate::depth`]); in thinner media the weight is
+    /// smooth in the angle, and this route's first try passes where that one would.
+    pub fn thick(&self) -> bool {
+        self.big_h >= T::one()
     }
 
     /// Whether wider rules may follow a first try of `n` nodes: always for a light's lobe;
@@ -245,7 +265,7 @@ impl<T: Real> Plan<T> {
         let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
             return Route::Declined;
         };
-        let Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order, exponential } = *self;
+        let Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order, exponential, .. } = *self;
         let tolerance = control.tolerance;
         // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈

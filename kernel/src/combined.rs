@@ -258,9 +258,20 @@ where
     let mut tried = 0;
     if let (Method::Panels(control), false) = (method, isotropic) {
         if let Some(plan) = crate::angle::Plan::new(g, phys, &control) {
+            // a thick medium: Gauss–Laguerre in the optical depth, whose weight the extinction
+            // is (`crate::depth`; fewer samples, and no trigonometric function or exponential
+            // in them)
+            if plan.thick() {
+                let depth = if N <= 8 { crate::depth::whole_segment::<T, D, P, 6>(&plan, g, phys, &control) } else { crate::depth::whole_segment::<T, D, P, 12>(&plan, g, phys, &control) };
+                match depth {
+                    Route::Taken(value) => return (value, 1),
+                    Route::Failed => tried = 1,
+                    Route::Declined => {}
+                }
+            }
             match plan.rule::<D, P, N>(g, phys, &control, false) {
                 Route::Taken(value) => return (value, 1),
-                Route::Failed => tried = 1,
+                Route::Failed => tried += 1,
                 Route::Declined => {}
             }
             // twice, then four times the nodes, for a light's lobe, the extinction's layer or

@@ -53,6 +53,7 @@
 pub mod angle;
 pub mod area;
 pub mod combined;
+pub mod depth;
 pub mod error;
 pub mod expansion;
 pub mod extended;

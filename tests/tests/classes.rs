@@ -16,6 +16,8 @@
 //!   f32 N = 6, 8, 10, 12, at equal evaluation budgets.
 //! * the panels' error estimate holds at loose tolerances: the largest error within twice the
 //!   tolerance (f64 16 nodes at 1e-4, 1e-6, 1e-8; f32 8 nodes at 1e-2, 1e-3; 12 nodes at 1e-3).
+//! * the routes by cost, called on every scene, keep every value they take within their
+//!   tolerance: the light angle's (docs/DESIGN.md §4.2) and the optical depth's (§4.3).
 //!
 //! Printed (`--nocapture`): the per-class table of the default path, the fixed 4 and 6 terms
 //! and Gauss–Legendre in the light angle (the peer) at 8, 16, 24 and 64 nodes, and the panel
@@ -240,5 +242,52 @@ fn light_angle_route_meets_its_tolerance() {
         sweep::<f64, 16>(&cases, tolerance, 1e-10, true);
         sweep::<f64, 32>(&cases, tolerance, 1e-10, true);
         sweep::<f64, 24>(&cases, tolerance, 1e-10, true);
+    }
+}
+
+/// The optical-depth route (docs/DESIGN.md §4.3) on its own, as the light-angle route above:
+/// called on every scene of every class (also where the default path would not try it: a
+/// thin medium's `σt·h < 1`), at each tolerance the largest error of a taken value is within the
+/// tolerance (within the precision's target where rounding dominates) — f32 with its 6 nodes,
+/// f64 with its 12. Printed: per class, how often it is taken, tried in vain, declined.
+#[test]
+fn optical_depth_route_meets_its_tolerance() {
+    use airlight::angle::{Plan, Route};
+    use airlight::combined::Physics;
+    fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64) {
+        let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
+        let mut counts: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
+        let mut worst = (0.0f64, "");
+        for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
+            let s = c.rec.cast::<T>().scene().unwrap();
+            let phys = Physics::new(s.light(), s.medium(), s.phase());
+            let slot = counts.entry(c.category.as_str()).or_default();
+            let route = match Plan::new(s.canonical(), &phys, &control) {
+                Some(plan) => airlight::depth::whole_segment::<_, _, _, N>(&plan, s.canonical(), &phys, &control),
+                None => Route::Declined,
+            };
+            match route {
+                Route::Taken(v) => {
+                    slot[0] += 1;
+                    let err = c.err(v.to_f64_exact(), tau);
+                    if err > worst.0 {
+                        worst = (err, c.category.as_str());
+                    }
+                }
+                Route::Failed => slot[1] += 1,
+                Route::Declined => slot[2] += 1,
+            }
+        }
+        let line: Vec<String> = counts.iter().filter(|(_, [t, f, _])| t + f > 0).map(|(k, [t, f, d])| format!("{k} {t}/{f}/{d}")).collect();
+        println!("optical depth, N = {N}, tolerance {tolerance:e}: largest error taken {:.2e} ({}); taken/failed/declined: {}", worst.0, worst.1, line.join(", "));
+        let bound = tolerance.max(if tau > 1e-6 { 1e-4 } else { 1e-10 });
+        assert!(worst.0 <= bound, "optical depth, N = {N}, at tolerance {tolerance:e}: {:e} on {}", worst.0, worst.1);
+    }
+    let cases = cases();
+    for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
+        sweep::<f32, 6>(&cases, tolerance, 1e-4);
+    }
+    for tolerance in [1e-1, 1e-4, 1e-6, 1e-8, 1e-11] {
+        sweep::<f64, 12>(&cases, tolerance, 1e-10);
     }
 }

@@ -11,6 +11,8 @@
 mod chebyshev;
 #[allow(clippy::excessive_precision)]
 pub mod gauss_table;
+#[allow(clippy::excessive_precision)]
+pub mod laguerre_table;
 mod jet;
 
 pub use chebyshev::chebyshev_coefficients;

@@ -1,0 +1,209 @@
+//! A route by cost for a thick medium: the whole segment by Gauss–Laguerre in the optical depth
+//! seen from the light, tried where the light is at least a mean free path from the ray's line
+//! ([`Plan::thick`]) and taken where its error estimate meets the panels' target
+//! (docs/DESIGN.md §4.3); otherwise [`crate::combined`] goes on to the light-angle route
+//! ([`crate::angle`]) and the closed-form panels.
+//!
+//! With `Y = tan(θ/2 + π/4)` as in [`crate::angle`] (`θ` the angle seen from the light), the
+//! extinction exponent past the segment's start is `s = H(Y − Y0)`, `H = σt h`, and
+//! `dθ = 2 dY/(1 + Y²)`, so
+//!
+//! `∫_{θ0}^{θ1} e^{−H(Y − Y0)} F dθ = (1/H) ∫_0^S e^{−s} G(s) ds`, `G = F · 2/(1 + Y²)`,
+//! `S = H(Y1 − Y0)`,
+//!
+//! and in `Y` the angle's sine and cosine are rational: `sin θ = (Y² − 1)/(Y² + 1)`,
+//! `cos θ = 2Y/(1 + Y²)`, `1 − sin θ = 2/(1 + Y²)`, `1 + sin θ = 2Y²/(1 + Y²)`, each without
+//! cancellation. A sample costs one division besides `D` and `P`: no trigonometric function and
+//! no exponential (the weight `e^{−s}` is the rule's). `∫_0^S = ∫_0^∞ − e^{−S} ∫_0^∞ e^{−x}
+//! G(S + x) dx`: one `N`-node Gauss–Laguerre rule, and for a finite segment whose `e^{−S}` is
+//! not below the float range a second at `S` (`G` continued past the segment's end, the same
+//! analytic function along the ray's line).
+//!
+//! Where the medium is thick and the light not next to the ray, `G` is smooth on the scale of
+//! the weight and a few nodes reach the target where Gauss–Legendre in `θ` needs the segment
+//! cut at the extinction's boundary layer and 8–24 nodes over it. `G` is analytic but where
+//! `Y = ±i` (`2/(1 + Y²)`, the light's `c` and a phase function's growth) and at the phase
+//! function's singularities, `sin θ = −μ*`: `Y² = (1 − μ*)/(1 + μ*)`, `Y = ±i·b` with
+//! `b = √((μ* − 1)/(μ* + 1))` for a forward lobe (`μ* > 1`; a backward one's `b > 1` lies
+//! beyond `±i`). In `s` they sit at `s* = H(−Y0 ± i·b)`, and the Laguerre coefficients of a
+//! function analytic inside the parabola with focus 0 through `s*` fall like `exp(−2σ√k)`,
+//! `σ = Re √(−s*) = √(H(√(Y0² + b²) + Y0)/2)` (Szegő, *Orthogonal Polynomials*, §9.1: a
+//! Laguerre series converges inside such parabolas), the nearest `b` giving the smallest `σ`
+//! (on the `thick` scenes of tests/reference/classes.jsonl the rule's errors follow
+//! `exp(−4σ√N)` within about 10×).
+//!
+//! The error estimate is the panels' model ([`crate::panels`], [`crate::angle`]) with
+//! Laguerre's sub-geometric decay: the two last coefficients `|a_{N−1}| + |a_{N−2}|` carried
+//! from degree `N − 3/2` to the degree `2N − m` the rule leaves (`m` =
+//! [`ALIASING_MARGIN`]) by the slower of the decay the last four show, read as `exp(−2σ√k)`, and
+//! the nearest singularity's, times 2 (an `N`-node rule integrates `L_k` to within
+//! `Σ w_i |L_k(x_i)| ≤ Σ w_i e^{x_i/2} ≈ 2`, `|L_k(x)| ≤ e^{x/2}`, Szegő (7.21.3)); the route is
+//! taken where it is below `tolerance × max(|value|, floor × scale)`, the panels' acceptance
+//! test (tests/tests/classes.rs checks the results against the mpmath references).
+//!
+//! It is tried only where it is likely to pass, judged before any sample (cost, never
+//! accuracy): the singularities' prediction `4·exp(−2σ√(2N − m))` and a light's lobe `c^p`,
+//! which varies at the rate `ℓ = √p · dθ/ds = 2√p/(H(1 + Y0²))` at the start (the largest:
+//! `dθ/ds` falls with `Y`), as `e^{iℓs}`, whose Laguerre coefficients fall like
+//! `(ℓ/√(1 + ℓ²))^k`: `2·(ℓ/√(1 + ℓ²))^{2N − m}`, each within the tolerance. A light
+//! distribution with kinks, or a phase function or distribution not known to be analytic,
+//! declines it, as the light-angle route.
+
+use crate::angle::{Plan, Route};
+use crate::combined::{weighted, Physics};
+use crate::expansion::laguerre_table;
+use crate::geometry::Canonical;
+use crate::light::LightDistribution;
+use crate::panels::{power, Control, ALIASING_MARGIN};
+use crate::phase::PhaseFunction;
+use crate::real::{exp_nonpositive, hypot1, larger, Real};
+
+/// The whole segment `[t0, t1]` by `N`-node Gauss–Laguerre in the optical depth (module docs),
+/// on the light-angle route's [`Plan`] (its `Y0`, `H`, the lobe's degree and the nearest
+/// singularity), if the predictions and then the estimate meet `control`.
+pub fn whole_segment<T, D, P, const N: usize>(plan: &Plan<T>, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    let Some((rule, transform)) = laguerre_table::rule(N) else {
+        return Route::Declined;
+    };
+    let Plan { u0, big_h, y0, y1, degree, forward_gap: gap, .. } = *plan;
+    if !(big_h > T::zero()) || !big_h.is_finite() {
+        return Route::Declined;
+    }
+    let tolerance = control.tolerance;
+    // √(2N − m), √(N − 3/2), √(N − 7/2): the degrees the estimate reads and carries the last
+    // coefficients to (module docs)
+    let (top, last, first) = (T::from(2 * N - ALIASING_MARGIN).unwrap().sqrt(), T::lit(N as f64 - 1.5).sqrt(), T::lit(N as f64 - 3.5).sqrt());
+    // before any sample: the singularities' prediction and the lobe's (module docs)
+    // the nearest singularity: Y = ±i (b = 1) or a forward lobe's ±i·b, b² = gap/(2 + gap)
+    let b2 = if gap < T::infinity() { (gap / (T::lit(2.0) + gap)).min(T::one()) } else { T::one() };
+    let sigma = (big_h * ((y0 * y0 + b2).sqrt() + y0) * T::lit(0.5)).sqrt();
+    if !(T::lit(4.0) * exp_nonpositive(-(top + top) * sigma) <= tolerance) {
+        return Route::Declined;
+    }
+    if degree > T::zero() {
+        let rate = T::lit(2.0) * degree.sqrt() / (big_h * (T::one() + y0 * y0));
+        let decay = rate / hypot1(rate);
+        if !(T::lit(2.0) * power(decay, 2 * N - ALIASING_MARGIN) <= tolerance) {
+            return Route::Declined;
+        }
+    }
+    // the rule at the start and, for a finite segment whose e^{−S} is representable, at its end
+    let far = exp_nonpositive(-(big_h * (y1 - y0)));
+    let ((mut value, head), mut mass, mut f_max) = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
+    let mut tail = None;
+    if y1.is_finite() && far > T::zero() {
+        let ((end, coefficients), end_mass, end_max) = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
+        value = value - far * end;
+        mass = mass - far * end_mass;
+        f_max = larger(f_max, end_max);
+        tail = Some(coefficients);
+    }
+    // the estimate: the slower of the decay the last four show and the singularity's
+    let floor_factor = exp_nonpositive(-T::lit(2.0) * (top - last) * sigma);
+    let kappa = (top - last) / (last - first);
+    let estimate = |c: &[T; 4]| {
+        let recent = c[3].abs() + c[2].abs();
+        let earlier = c[1].abs() + c[0].abs();
+        let factor = if recent < earlier { (recent / earlier).powf(kappa).max(floor_factor) } else { T::one() };
+        T::lit(2.0) * recent * factor
+    };
+    let mut error = estimate(&head);
+    if let Some(c) = &tail {
+        error = error + far * estimate(c);
+    }
+    let target = tolerance * value.abs().max(control.floor * f_max * mass);
+    if !(error <= target) {
+        return Route::Failed;
+    }
+    // (σs I/h) e^{−σt r0} ∫ dθ, ∫ dθ = value/H, handed over as the light-angle route does
+    let (h, x) = (g.h, phys.sigma_t * (g.h * hypot1(u0)));
+    Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value / big_h * T::lit(0.5)))
+}
+
+/// `Σ w_i G(Y_s + x_i/H)` by the `N`-node rule, its last four Laguerre coefficients
+/// `a_{N−4} … a_{N−1}`, the mass `Σ w_i · 2/(1 + Y_i²)` and the largest `|F|` sampled.
+#[inline]
+fn laguerre<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, rule: &[(f64, f64)], transform: &[f64], y_s: T, big_h: T) -> ((T, [T; 4]), T, T)
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    let inv_h = big_h.recip();
+    // the nodes' Y and 2/(1 + Y²) = 1 − sin θ; 1 + sin θ = Y²·(1 − sin θ), sin θ = (Y² − 1)/(Y² + 1),
+    // cos θ = Y·(1 − sin θ)
+    let mut minus = [T::zero(); N];
+    let mut plus = [T::zero(); N];
+    let mut lights = [T::zero(); N];
+    let mut sines = [T::zero(); N];
+    for i in 0..N {
+        let y = y_s + T::lit(rule[i].0) * inv_h;
+        let m = T::lit(2.0) / (T::one() + y * y);
+        let p = y * y * m;
+        let s = (p - m) * T::lit(0.5);
+        minus[i] = m;
+        plus[i] = p;
+        sines[i] = s;
+        lights[i] = g.d_el * s + g.d_c * (y * m);
+    }
+    phys.light.eval_each(&mut lights);
+    // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
+    let phases = phys.phase.eval_sides_each(&sines.map(|s| -s), &plus, &minus);
+    let mut samples = [T::zero(); N];
+    let (mut value, mut mass, mut f_max) = (T::zero(), T::zero(), T::zero());
+    for i in 0..N {
+        let f = lights[i] * phases[i];
+        let w = T::lit(rule[i].1);
+        samples[i] = f * minus[i];
+        value = value + w * samples[i];
+        mass = mass + w * minus[i];
+        f_max = larger(f_max, f.abs());
+    }
+    let mut c = [T::zero(); 4];
+    for (j, cj) in c.iter_mut().enumerate() {
+        let row = &transform[(N - 4 + j) * N..(N - 3 + j) * N];
+        *cj = row.iter().zip(samples.iter()).fold(T::zero(), |acc, (&t, &s)| acc + T::lit(t) * s);
+    }
+    ((value, c), mass, f_max)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::expansion::laguerre_table;
+
+    /// The generated tables (scripts/gen_gauss_laguerre.py) against what they stand for: each
+    /// `N`-node rule integrates `x^j e^{−x}` over `[0, ∞)` to `j!` for `j < 2N` (Gauss), and
+    /// its transform row `k` is `w_i · L_k(x_i)` with `L_k` by its three-term recurrence
+    /// (A&S 22.7.12), both within `1e-13` relative (`x^j` and the recurrence round a few ε
+    /// times the largest term, `j!` up to `23!` summed from terms up to ~8× it).
+    #[test]
+    fn tables_are_gauss_laguerre_rules() {
+        for n in [6usize, 12] {
+            let (rule, transform) = laguerre_table::rule(n).expect("tabulated");
+            assert_eq!((rule.len(), transform.len()), (n, n * n));
+            let mut factorial = 1.0f64;
+            for j in 0..2 * n {
+                if j > 0 {
+                    factorial *= j as f64;
+                }
+                let moment: f64 = rule.iter().map(|&(x, w)| w * libm::pow(x, j as f64)).sum();
+                assert!((moment / factorial - 1.0).abs() < 1e-13, "n {n}, j {j}: {moment:e} vs {factorial:e}");
+            }
+            for (i, &(x, w)) in rule.iter().enumerate() {
+                let (mut previous, mut current) = (0.0f64, 1.0f64);
+                for k in 0..n {
+                    let expected = w * current;
+                    let table = transform[k * n + i];
+                    assert!((table - expected).abs() <= 1e-13 * w.max(expected.abs()), "n {n}, k {k}, i {i}: {table:e} vs {expected:e}");
+                    let next = ((2 * k + 1) as f64 - x) * current / (k + 1) as f64 - k as f64 * previous / (k + 1) as f64;
+                    (previous, current) = (current, next);
+                }
+            }
+        }
+    }
+}
