@@ -35,8 +35,9 @@
 //! The error estimate is the panels' model ([`crate::panels`], [`crate::angle`]) with
 //! Laguerre's sub-geometric decay: the two last coefficients `|a_{N−1}| + |a_{N−2}|` carried
 //! from degree `N − 3/2` to the degree `2N − m` the rule leaves (`m` =
-//! [`ALIASING_MARGIN`]) by the slower of the decay the last four show, read as `exp(−2σ√k)`, and
-//! the nearest singularity's, times 2 (an `N`-node rule integrates `L_k` to within
+//! [`ALIASING_MARGIN`]) by the slower of the decay the last four show, read as `exp(−2σ√k)`
+//! (its power's exponent rounded down, which only raises it), and the nearest singularity's,
+//! times 2 (an `N`-node rule integrates `L_k` to within
 //! `Σ w_i |L_k(x_i)| ≤ Σ w_i e^{x_i/2} ≈ 2`, `|L_k(x)| ≤ e^{x/2}`, Szegő (7.21.3)); the route is
 //! taken where it is below `tolerance × max(|value|, floor × scale)`, the panels' acceptance
 //! test (tests/tests/classes.rs checks the results against the mpmath references).
@@ -105,11 +106,14 @@ where
     }
     // the estimate: the slower of the decay the last four show and the singularity's
     let floor_factor = exp_nonpositive(-T::lit(2.0) * (top - last) * sigma);
-    let kappa = (top - last) / (last - first);
+    // the measured decay per degree q = √(recent/earlier), read as exp(−2σ√k) between the
+    // degrees N − 7/2 and N − 3/2, carried on to 2N − m: q^{2κ}, κ = (√(2N − m) − √(N − 3/2))/
+    // (√(N − 3/2) − √(N − 7/2)), the exponent rounded down (the factor only larger; no `powf`)
+    let steps = ((top - last) / (last - first) * T::lit(2.0)).floor().to_usize().unwrap_or(0);
     let estimate = |c: &[T; 4]| {
         let recent = c[3].abs() + c[2].abs();
         let earlier = c[1].abs() + c[0].abs();
-        let factor = if recent < earlier { (recent / earlier).powf(kappa).max(floor_factor) } else { T::one() };
+        let factor = if recent < earlier { power((recent / earlier).sqrt(), steps).max(floor_factor) } else { T::one() };
         T::lit(2.0) * recent * factor
     };
     let mut error = estimate(&head);
