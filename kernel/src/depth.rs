@@ -95,14 +95,15 @@ where
     }
     // the rule at the start and, for a finite segment whose e^{−S} is representable, at its end
     let far = exp_nonpositive(-(big_h * (y1 - y0)));
-    let ((mut value, head), mut mass, mut f_max) = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
+    let head = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
+    let (mut value, mut mass, mut f_max) = (head.value, head.mass, head.f_max);
     let mut tail = None;
     if y1.is_finite() && far > T::zero() {
-        let ((end, coefficients), end_mass, end_max) = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
-        value = value - far * end;
-        mass = mass - far * end_mass;
-        f_max = larger(f_max, end_max);
-        tail = Some(coefficients);
+        let end = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
+        value = value - far * end.value;
+        mass = mass - far * end.mass;
+        f_max = larger(f_max, end.f_max);
+        tail = Some(end.last);
     }
     // the estimate: the slower of the decay the last four show and the singularity's
     let floor_factor = exp_nonpositive(-T::lit(2.0) * (top - last) * sigma);
@@ -116,7 +117,7 @@ where
         let factor = if recent < earlier { power((recent / earlier).sqrt(), steps).max(floor_factor) } else { T::one() };
         T::lit(2.0) * recent * factor
     };
-    let mut error = estimate(&head);
+    let mut error = estimate(&head.last);
     if let Some(c) = &tail {
         error = error + far * estimate(c);
     }
@@ -129,10 +130,21 @@ where
     Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value / big_h * T::lit(0.5)))
 }
 
-/// `Σ w_i G(Y_s + x_i/H)` by the `N`-node rule, its last four Laguerre coefficients
-/// `a_{N−4} … a_{N−1}`, the mass `Σ w_i · 2/(1 + Y_i²)` and the largest `|F|` sampled.
+/// One Gauss–Laguerre rule's sums from `Y_s` on ([`laguerre`]).
+struct Sums<T> {
+    /// `Σ w_i G(Y_s + x_i/H)`.
+    value: T,
+    /// The last four Laguerre coefficients `a_{N−4} … a_{N−1}`.
+    last: [T; 4],
+    /// `Σ w_i · 2/(1 + Y_i²)`: the value with `F = 1`, for the floor's scale.
+    mass: T,
+    /// The largest `|F|` sampled.
+    f_max: T,
+}
+
+/// The `N`-node rule's [`Sums`] from `Y_s` on.
 #[inline]
-fn laguerre<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, rule: &[(f64, f64)], transform: &[f64], y_s: T, big_h: T) -> ((T, [T; 4]), T, T)
+fn laguerre<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, rule: &[(f64, f64)], transform: &[f64], y_s: T, big_h: T) -> Sums<T>
 where
     T: Real,
     D: LightDistribution<T>,
@@ -168,12 +180,12 @@ where
         mass = mass + w * minus[i];
         f_max = larger(f_max, f.abs());
     }
-    let mut c = [T::zero(); 4];
-    for (j, cj) in c.iter_mut().enumerate() {
+    let mut last = [T::zero(); 4];
+    for (j, a) in last.iter_mut().enumerate() {
         let row = &transform[(N - 4 + j) * N..(N - 3 + j) * N];
-        *cj = row.iter().zip(samples.iter()).fold(T::zero(), |acc, (&t, &s)| acc + T::lit(t) * s);
+        *a = row.iter().zip(samples.iter()).fold(T::zero(), |acc, (&t, &s)| acc + T::lit(t) * s);
     }
-    ((value, c), mass, f_max)
+    Sums { value, last, mass, f_max }
 }
 
 #[cfg(test)]

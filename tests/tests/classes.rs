@@ -188,6 +188,49 @@ fn error_estimate_holds_at_loose_tolerances() {
     }
 }
 
+/// A route by cost called on every scene of `cases` (f32 ones where `tau` is f32's) at
+/// `tolerance`, `route` given the light-angle route's plan: prints per class how often it is
+/// taken, tried in vain and declined, and asserts that the largest error of a taken value is
+/// within the tolerance (within the precision's target where rounding dominates: f32 below
+/// 1e-4, f64 below 1e-10).
+fn sweep_route<T: airlight::Real>(
+    cases: &[Case],
+    tolerance: f64,
+    tau: f64,
+    what: &str,
+    route: impl Fn(&airlight::angle::Plan<T>, &airlight::geometry::Canonical<T>, &airlight::combined::Physics<'_, T, airlight::light::AnyDistribution<T>, airlight::phase::AnyPhase<T>>, &airlight::panels::Control<T>) -> airlight::angle::Route<T>,
+) {
+    use airlight::angle::{Plan, Route};
+    use airlight::combined::Physics;
+    let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
+    let mut counts: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
+    let mut worst = (0.0f64, "");
+    for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
+        let s = c.rec.cast::<T>().scene().unwrap();
+        let phys = Physics::new(s.light(), s.medium(), s.phase());
+        let slot = counts.entry(c.category.as_str()).or_default();
+        let taken = match Plan::new(s.canonical(), &phys, &control) {
+            Some(plan) => route(&plan, s.canonical(), &phys, &control),
+            None => Route::Declined,
+        };
+        match taken {
+            Route::Taken(v) => {
+                slot[0] += 1;
+                let err = c.err(v.to_f64_exact(), tau);
+                if err > worst.0 {
+                    worst = (err, c.category.as_str());
+                }
+            }
+            Route::Failed => slot[1] += 1,
+            Route::Declined => slot[2] += 1,
+        }
+    }
+    let line: Vec<String> = counts.iter().filter(|(_, [t, f, _])| t + f > 0).map(|(k, [t, f, d])| format!("{k} {t}/{f}/{d}")).collect();
+    println!("{what}, tolerance {tolerance:e}: largest error taken {:.2e} ({}); taken/failed/declined: {}", worst.0, worst.1, line.join(", "));
+    let bound = tolerance.max(if tau > 1e-6 { 1e-4 } else { 1e-10 });
+    assert!(worst.0 <= bound, "{what} at tolerance {tolerance:e}: {:e} on {}", worst.0, worst.1);
+}
+
 /// The light-angle route (docs/DESIGN.md §4.2) on its own, called directly so that every value
 /// it takes is checked, not only those the default path happens to keep: over every scene of
 /// every class, at each tolerance, the largest error of a taken value is within the tolerance
@@ -198,38 +241,9 @@ fn error_estimate_holds_at_loose_tolerances() {
 /// Printed: per class, how often it is taken, tried in vain, declined.
 #[test]
 fn light_angle_route_meets_its_tolerance() {
-    use airlight::angle::{Plan, Route};
-    use airlight::combined::Physics;
-    fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64, wider: bool) -> f64 {
-        let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
-        let mut counts: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
-        let mut worst = (0.0f64, "");
-        for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
-            let s = c.rec.cast::<T>().scene().unwrap();
-            let phys = Physics::new(s.light(), s.medium(), s.phase());
-            let slot = counts.entry(c.category.as_str()).or_default();
-            let route = match Plan::new(s.canonical(), &phys, &control) {
-                Some(plan) => plan.rule::<_, _, N>(s.canonical(), &phys, &control, wider),
-                None => Route::Declined,
-            };
-            match route {
-                Route::Taken(v) => {
-                    slot[0] += 1;
-                    let err = c.err(v.to_f64_exact(), tau);
-                    if err > worst.0 {
-                        worst = (err, c.category.as_str());
-                    }
-                }
-                Route::Failed => slot[1] += 1,
-                Route::Declined => slot[2] += 1,
-            }
-        }
-        let line: Vec<String> = counts.iter().filter(|(_, [t, f, _])| t + f > 0).map(|(k, [t, f, d])| format!("{k} {t}/{f}/{d}")).collect();
+    fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64, wider: bool) {
         let after = if wider { "a wider rule" } else { "the first try" };
-        println!("N = {N} ({after}), tolerance {tolerance:e}: largest error taken {:.2e} ({}); taken/failed/declined: {}", worst.0, worst.1, line.join(", "));
-        let bound = tolerance.max(if tau > 1e-6 { 1e-4 } else { 1e-10 });
-        assert!(worst.0 <= bound, "N = {N} ({after}) at tolerance {tolerance:e}: {:e} on {}", worst.0, worst.1);
-        worst.0
+        sweep_route::<T>(cases, tolerance, tau, &format!("N = {N} ({after})"), |plan, g, phys, control| plan.rule::<_, _, N>(g, phys, control, wider));
     }
     let cases = cases();
     for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
@@ -252,36 +266,8 @@ fn light_angle_route_meets_its_tolerance() {
 /// f64 with its 12. Printed: per class, how often it is taken, tried in vain, declined.
 #[test]
 fn optical_depth_route_meets_its_tolerance() {
-    use airlight::angle::{Plan, Route};
-    use airlight::combined::Physics;
     fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64) {
-        let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
-        let mut counts: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
-        let mut worst = (0.0f64, "");
-        for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
-            let s = c.rec.cast::<T>().scene().unwrap();
-            let phys = Physics::new(s.light(), s.medium(), s.phase());
-            let slot = counts.entry(c.category.as_str()).or_default();
-            let route = match Plan::new(s.canonical(), &phys, &control) {
-                Some(plan) => airlight::depth::whole_segment::<_, _, _, N>(&plan, s.canonical(), &phys, &control),
-                None => Route::Declined,
-            };
-            match route {
-                Route::Taken(v) => {
-                    slot[0] += 1;
-                    let err = c.err(v.to_f64_exact(), tau);
-                    if err > worst.0 {
-                        worst = (err, c.category.as_str());
-                    }
-                }
-                Route::Failed => slot[1] += 1,
-                Route::Declined => slot[2] += 1,
-            }
-        }
-        let line: Vec<String> = counts.iter().filter(|(_, [t, f, _])| t + f > 0).map(|(k, [t, f, d])| format!("{k} {t}/{f}/{d}")).collect();
-        println!("optical depth, N = {N}, tolerance {tolerance:e}: largest error taken {:.2e} ({}); taken/failed/declined: {}", worst.0, worst.1, line.join(", "));
-        let bound = tolerance.max(if tau > 1e-6 { 1e-4 } else { 1e-10 });
-        assert!(worst.0 <= bound, "optical depth, N = {N}, at tolerance {tolerance:e}: {:e} on {}", worst.0, worst.1);
+        sweep_route::<T>(cases, tolerance, tau, &format!("optical depth, N = {N}"), |plan, g, phys, control| airlight::depth::whole_segment::<_, _, _, N>(plan, g, phys, control));
     }
     let cases = cases();
     for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
