@@ -129,7 +129,7 @@ pub struct Plan<T> {
     /// The panel's half-width in `θ`.
     hw: T,
     /// The extinction's rate `λ` over the panel (module docs).
-    pub(crate) lambda: T,
+    lambda: T,
     /// The lobe's `√p·hw` (0 without an axis).
     lobe: T,
     /// The light distribution's degree `p` in `c` (0 without an axis).
