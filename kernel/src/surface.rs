@@ -597,7 +597,8 @@ where
             cuts[count] = c;
             count += 1;
         };
-        turning(fr.n).into_iter().for_each(&mut push);
+        let normal_turns = turning(fr.n);
+        normal_turns.into_iter().for_each(&mut push);
         if phong {
             turning(fr.r).into_iter().for_each(&mut push);
             push(alpha_r);
@@ -631,7 +632,11 @@ where
             push(gamma_a);
             push(T::PI() - gamma_a);
         }
-        let (edges, n): ([T; 16], usize) = edges_between(T::zero(), T::PI(), &mut cuts[..count]);
+        // only γ ∈ (α_n − π/2, α_n + π/2) sees the hemisphere (the largest n·ω at γ is
+        // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
+        // (the end is the normal's turning point itself, so that no sliver is left beside it)
+        let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
+        let (edges, n): ([T; 16], usize) = edges_between(lo, hi, &mut cuts[..count]);
         // piece i of the outer variable x ∈ [i, i + 1] is γ = a + (b − a)(3t² − 2t³), t = x − i:
         // where an arc opens or closes the inner integral goes like |γ − γ*|^{3/2}, smooth in t
         let mut mapped = |x: T| {

@@ -5066,66 +5066,68 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
             cuts_1[_e242] = c_10;
         }
     }
+    float hi_5 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
+    g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e281 = i_18;
-            i_18 = (_e281 + 1u);
+            uint _e292 = i_18;
+            i_18 = (_e292 + 1u);
         }
         loop_init_22 = false;
-        uint _e251 = i_18;
-        if ((_e251 < 11u)) {
+        uint _e263 = i_18;
+        if ((_e263 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e254 = i_18;
-            float _e256 = cuts_1[_e254];
-            uint _e258 = k_4;
-            float _e260 = g_20.gamma[_e258];
-            if ((_e256 > _e260)) {
-                uint _e264 = i_18;
-                float _e266 = cuts_1[_e264];
-                local_113 = (_e266 < AIRLIGHT_PI);
+            uint _e266 = i_18;
+            float _e268 = cuts_1[_e266];
+            uint _e270 = k_4;
+            float _e272 = g_20.gamma[_e270];
+            if ((_e268 > _e272)) {
+                uint _e276 = i_18;
+                float _e278 = cuts_1[_e276];
+                local_113 = (_e278 < hi_5);
             } else {
                 local_113 = false;
             }
-            bool _e270 = local_113;
-            if (_e270) {
-                uint _e271 = k_4;
-                k_4 = (_e271 + 1u);
-                uint _e275 = k_4;
-                uint _e277 = i_18;
-                float _e279 = cuts_1[_e277];
-                g_20.gamma[_e275] = _e279;
+            bool _e281 = local_113;
+            if (_e281) {
+                uint _e282 = k_4;
+                k_4 = (_e282 + 1u);
+                uint _e286 = k_4;
+                uint _e288 = i_18;
+                float _e290 = cuts_1[_e288];
+                g_20.gamma[_e286] = _e290;
             }
         }
     }
-    uint _e284 = k_4;
-    g_20.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
-    uint _e290 = k_4;
-    g_20.panels = (_e290 + 1u);
+    uint _e295 = k_4;
+    g_20.gamma[(_e295 + 1u)] = hi_5;
+    uint _e300 = k_4;
+    g_20.panels = (_e300 + 1u);
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e305 = i_19;
-            i_19 = (_e305 + 1u);
+            uint _e315 = i_19;
+            i_19 = (_e315 + 1u);
         }
         loop_init_23 = false;
-        uint _e295 = i_19;
-        uint _e297 = g_20.panels;
-        if ((_e295 <= _e297)) {
+        uint _e305 = i_19;
+        uint _e307 = g_20.panels;
+        if ((_e305 <= _e307)) {
         } else {
             break;
         }
         {
-            uint _e300 = i_19;
-            uint _e302 = i_19;
-            g_20.edges[_e300] = float(_e302);
+            uint _e310 = i_19;
+            uint _e312 = i_19;
+            g_20.edges[_e310] = float(_e312);
         }
     }
-    AirlightOuter _e307 = g_20;
-    return _e307;
+    AirlightOuter _e317 = g_20;
+    return _e317;
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18) {

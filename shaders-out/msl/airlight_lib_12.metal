@@ -5705,72 +5705,74 @@ AirlightOuter airlight_surface(
             cuts_1.inner[metal::min(unsigned(_e242), 10u)] = c_10;
         }
     }
+    float hi_5 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
+    g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first : 0.0;
     uint2 loop_bound_23 = uint2(4294967295u);
     bool loop_init_22 = true;
     while(true) {
         if (metal::all(loop_bound_23 == uint2(0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e281 = i_18;
-            i_18 = _e281 + 1u;
+            uint _e292 = i_18;
+            i_18 = _e292 + 1u;
         }
         loop_init_22 = false;
-        uint _e251 = i_18;
-        if (_e251 < 11u) {
+        uint _e263 = i_18;
+        if (_e263 < 11u) {
         } else {
             break;
         }
         {
-            uint _e254 = i_18;
-            float _e256 = cuts_1.inner[metal::min(unsigned(_e254), 10u)];
-            uint _e258 = k_5;
-            float _e260 = g_22.gamma.inner[metal::min(unsigned(_e258), 12u)];
-            if (_e256 > _e260) {
-                uint _e264 = i_18;
-                float _e266 = cuts_1.inner[metal::min(unsigned(_e264), 10u)];
-                local_113 = _e266 < AIRLIGHT_PI;
+            uint _e266 = i_18;
+            float _e268 = cuts_1.inner[metal::min(unsigned(_e266), 10u)];
+            uint _e270 = k_5;
+            float _e272 = g_22.gamma.inner[metal::min(unsigned(_e270), 12u)];
+            if (_e268 > _e272) {
+                uint _e276 = i_18;
+                float _e278 = cuts_1.inner[metal::min(unsigned(_e276), 10u)];
+                local_113 = _e278 < hi_5;
             } else {
                 local_113 = false;
             }
-            bool _e270 = local_113;
-            if (_e270) {
-                uint _e271 = k_5;
-                k_5 = _e271 + 1u;
-                uint _e275 = k_5;
-                uint _e277 = i_18;
-                float _e279 = cuts_1.inner[metal::min(unsigned(_e277), 10u)];
-                g_22.gamma.inner[metal::min(unsigned(_e275), 12u)] = _e279;
+            bool _e281 = local_113;
+            if (_e281) {
+                uint _e282 = k_5;
+                k_5 = _e282 + 1u;
+                uint _e286 = k_5;
+                uint _e288 = i_18;
+                float _e290 = cuts_1.inner[metal::min(unsigned(_e288), 10u)];
+                g_22.gamma.inner[metal::min(unsigned(_e286), 12u)] = _e290;
             }
         }
     }
-    uint _e284 = k_5;
-    g_22.gamma.inner[metal::min(unsigned(_e284 + 1u), 12u)] = AIRLIGHT_PI;
-    uint _e290 = k_5;
-    g_22.panels = _e290 + 1u;
+    uint _e295 = k_5;
+    g_22.gamma.inner[metal::min(unsigned(_e295 + 1u), 12u)] = hi_5;
+    uint _e300 = k_5;
+    g_22.panels = _e300 + 1u;
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_23 = true;
     while(true) {
         if (metal::all(loop_bound_24 == uint2(0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e305 = i_19;
-            i_19 = _e305 + 1u;
+            uint _e315 = i_19;
+            i_19 = _e315 + 1u;
         }
         loop_init_23 = false;
-        uint _e295 = i_19;
-        uint _e297 = g_22.panels;
-        if (_e295 <= _e297) {
+        uint _e305 = i_19;
+        uint _e307 = g_22.panels;
+        if (_e305 <= _e307) {
         } else {
             break;
         }
         {
-            uint _e300 = i_19;
-            uint _e302 = i_19;
-            g_22.edges.inner[metal::min(unsigned(_e300), 12u)] = static_cast<float>(_e302);
+            uint _e310 = i_19;
+            uint _e312 = i_19;
+            g_22.edges.inner[metal::min(unsigned(_e310), 12u)] = static_cast<float>(_e312);
         }
     }
-    AirlightOuter _e307 = g_22;
-    return _e307;
+    AirlightOuter _e317 = g_22;
+    return _e317;
 }
 
 float airlight_lobe_at(

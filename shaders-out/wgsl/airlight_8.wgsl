@@ -4602,62 +4602,64 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             i_17 = (_e245 + 1u);
         }
     }
+    let hi_5 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
+    g_20.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
-        let _e251 = i_18;
-        if (_e251 < 11u) {
+        let _e263 = i_18;
+        if (_e263 < 11u) {
         } else {
             break;
         }
         {
-            let _e254 = i_18;
-            let _e256 = cuts_1[_e254];
-            let _e258 = k_4;
-            let _e260 = g_20.gamma[_e258];
-            if (_e256 > _e260) {
-                let _e264 = i_18;
-                let _e266 = cuts_1[_e264];
-                local_113 = (_e266 < AIRLIGHT_PI);
+            let _e266 = i_18;
+            let _e268 = cuts_1[_e266];
+            let _e270 = k_4;
+            let _e272 = g_20.gamma[_e270];
+            if (_e268 > _e272) {
+                let _e276 = i_18;
+                let _e278 = cuts_1[_e276];
+                local_113 = (_e278 < hi_5);
             } else {
                 local_113 = false;
             }
-            let _e270 = local_113;
-            if _e270 {
-                let _e271 = k_4;
-                k_4 = (_e271 + 1u);
-                let _e275 = k_4;
-                let _e277 = i_18;
-                let _e279 = cuts_1[_e277];
-                g_20.gamma[_e275] = _e279;
+            let _e281 = local_113;
+            if _e281 {
+                let _e282 = k_4;
+                k_4 = (_e282 + 1u);
+                let _e286 = k_4;
+                let _e288 = i_18;
+                let _e290 = cuts_1[_e288];
+                g_20.gamma[_e286] = _e290;
             }
         }
         continuing {
-            let _e281 = i_18;
-            i_18 = (_e281 + 1u);
+            let _e292 = i_18;
+            i_18 = (_e292 + 1u);
         }
     }
-    let _e284 = k_4;
-    g_20.gamma[(_e284 + 1u)] = AIRLIGHT_PI;
-    let _e290 = k_4;
-    g_20.panels = (_e290 + 1u);
+    let _e295 = k_4;
+    g_20.gamma[(_e295 + 1u)] = hi_5;
+    let _e300 = k_4;
+    g_20.panels = (_e300 + 1u);
     loop {
-        let _e295 = i_19;
-        let _e297 = g_20.panels;
-        if (_e295 <= _e297) {
+        let _e305 = i_19;
+        let _e307 = g_20.panels;
+        if (_e305 <= _e307) {
         } else {
             break;
         }
         {
-            let _e300 = i_19;
-            let _e302 = i_19;
-            g_20.edges[_e300] = f32(_e302);
+            let _e310 = i_19;
+            let _e312 = i_19;
+            g_20.edges[_e310] = f32(_e312);
         }
         continuing {
-            let _e305 = i_19;
-            i_19 = (_e305 + 1u);
+            let _e315 = i_19;
+            i_19 = (_e315 + 1u);
         }
     }
-    let _e307 = g_20;
-    return _e307;
+    let _e317 = g_20;
+    return _e317;
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {

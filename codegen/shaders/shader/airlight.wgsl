@@ -2137,14 +2137,18 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
         }
         cuts[j] = c;
     }
+    // only γ ∈ (α − π/2, α + π/2) sees the hemisphere, its end the normal's turning point
+    // (surface.rs integrate): no panel is spent where every arc is empty
+    let hi = select(AIRLIGHT_PI - first, AIRLIGHT_PI, cos_a < 0.0);
+    g.gamma[0] = select(0.0, first, cos_a < 0.0);
     var k = 0u;
     for (var i = 0u; i < 11u; i++) {
-        if (cuts[i] > g.gamma[k] && cuts[i] < AIRLIGHT_PI) {
+        if (cuts[i] > g.gamma[k] && cuts[i] < hi) {
             k += 1u;
             g.gamma[k] = cuts[i];
         }
     }
-    g.gamma[k + 1u] = AIRLIGHT_PI;
+    g.gamma[k + 1u] = hi;
     g.panels = k + 1u;
     for (var i = 0u; i <= g.panels; i++) { g.edges[i] = f32(i); }
     return g;

@@ -1,0 +1,39 @@
+//! The shaders' Lambertian surface method on the CPU (`SurfaceScene::air_light_panels_counted`
+//! with `SHADER_CONTROL`, 8 nodes, f32) against the references of tests/reference/surface.jsonl
+//! (the Lambertian points lit by omni lights), at 3 … 8 outer panels: the largest error
+//! (`|x − exact| / max(|exact|, 1e-4·scale)`) and the rays per point — what bounds
+//! `SHADER_SURFACE_PANELS` (docs/DESIGN.md §11).
+//!
+//! `cargo run --release -p airlight-tests --example surface_panels`
+
+use airlight::LightDistribution;
+use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+use airlight_tests::reference_lines;
+fn run(lines: &[serde_json::Value]) {
+    for panels in [3usize, 4, 5, 6, 8] {
+        let (mut worst, mut rays_max, mut rays_sum, mut n) = (0.0f64, 0, 0, 0);
+        for v in lines {
+            let Ok(AnyRecord::Surface(s)) = parse_any_value::<f32>(v) else {
+                continue;
+            };
+            if !matches!(s.brdf(), airlight::Brdf::Lambert { .. })
+                || !s.light().distribution.is_isotropic()
+            {
+                continue;
+            }
+            let (x, r) = s.air_light_panels_counted::<8>(airlight::SHADER_CONTROL, panels);
+            let (exact, scale) = (
+                v["surface_air_light"].as_f64().unwrap(),
+                v["scale"].as_f64().unwrap(),
+            );
+            worst = worst.max((x as f64 - exact).abs() / exact.max(1e-4 * scale));
+            rays_max = rays_max.max(r);
+            rays_sum += r;
+            n += 1;
+        }
+        println!("panels {panels}: {n} records, largest error {worst:.2e}, rays mean {:.1} max {rays_max}", rays_sum as f64 / n as f64);
+    }
+}
+fn main() {
+    run(&reference_lines("surface.jsonl"));
+}
