@@ -19,8 +19,7 @@ use airlight::light::AnyDistribution;
 use airlight::panels::Control;
 use airlight::phase::AnyPhase;
 use airlight::{default_control, Ray, Real, Scene, SurfaceScene};
-use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-use airlight_tests::reference_lines;
+use airlight_tests::{reference_lines, surface_record};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -39,7 +38,7 @@ struct Class<T: Real> {
 fn load<T: Real>() -> BTreeMap<String, Class<T>> {
     let mut out: BTreeMap<String, Class<T>> = BTreeMap::new();
     for v in reference_lines("surface.jsonl") {
-        let AnyRecord::Surface(s) = parse_any_value::<T>(&v).unwrap() else { panic!("not a surface record: {v}") };
+        let s = surface_record::<T>(&v);
         let ray = Ray { origin: s.surface().position, dir: s.surface().normal, t_min: T::zero(), t_max: T::infinity() };
         let point = Scene::new(ray, *s.light(), *s.medium(), *s.phase()).unwrap();
         let class = out.entry(v["category"].as_str().unwrap().to_string()).or_insert(Class { surfaces: vec![], rays: vec![], exact: vec![], floor: vec![] });

@@ -26,8 +26,7 @@ use airlight::glam::Vec3;
 use airlight::light::Omni;
 use airlight::phase::{Isotropic, PhaseFunction};
 use airlight::{Brdf, LightDistribution, SurfaceScene};
-use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-use airlight_tests::{canonical_surface, reference_lines, rel_err, Rng};
+use airlight_tests::{canonical_surface, reference_lines, rel_err, surface_record, Rng};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
@@ -114,7 +113,7 @@ struct Record {
 fn records() -> Vec<Record> {
     let mut out = vec![];
     for v in reference_lines("surface.jsonl") {
-        let AnyRecord::Surface(sc) = parse_any_value::<f32>(&v).unwrap() else { continue };
+        let sc = surface_record::<f32>(&v);
         let Brdf::Lambert { albedo } = *sc.brdf() else { continue };
         if !(sc.light().distribution.is_isotropic() && sc.phase().is_isotropic()) {
             continue;

@@ -13,7 +13,7 @@ use airlight_tests::{class_cases, ClassCase};
 use std::hint::black_box;
 
 fn run<T: Real>(cases: &[ClassCase], method: &str, repetitions: usize, tau: f64, cut: f64) -> (usize, f64) {
-    let scenes: Vec<_> = cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }).map(|c| (c.rec.cast::<T>().scene().expect("a valid scene"), c)).collect();
+    let scenes: Vec<_> = cases.iter().filter(|c| c.judged(tau)).map(|c| (c.rec.cast::<T>().scene().expect("a valid scene"), c)).collect();
     let peer = |split: bool, n: &str| GaussAngle { nodes: n.parse().expect("a node count"), panels: 1, split, cut: Some(T::lit(cut)) };
     let peer = method.strip_prefix('p').map(|n| peer(false, n)).or(method.strip_prefix('s').map(|n| peer(true, n)));
     let control = airlight::panels::Control { tolerance: T::lit(method.parse().unwrap_or(1.0)), ..default_control::<T>() };

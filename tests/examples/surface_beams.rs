@@ -7,19 +7,10 @@
 //!
 //! `cargo run --release -p airlight-tests --example surface_beams`
 
-use airlight::light::AnyDistribution;
-use airlight::phase::AnyPhase;
-use airlight::SurfaceScene;
-use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
 use airlight_tests::reference_lines;
 use std::time::Instant;
 
-fn surface<T: airlight::Real>(v: &serde_json::Value) -> SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>> {
-    match parse_any_value::<T>(v) {
-        Ok(AnyRecord::Surface(s)) => s,
-        other => panic!("not a surface record: {other:?}"),
-    }
-}
+use airlight_tests::surface_record as surface;
 
 fn main() {
     for v in reference_lines("surface.jsonl").iter().filter(|v| v["category"] == "distribution") {

@@ -7,15 +7,13 @@
 //! `cargo run --release -p airlight-tests --example surface_panels`
 
 use airlight::LightDistribution;
-use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-use airlight_tests::reference_lines;
+use airlight_tests::{reference_lines, surface_record};
+
 fn run(lines: &[serde_json::Value]) {
     for panels in [3usize, 4, 5, 6, 8] {
         let (mut worst, mut rays_max, mut rays_sum, mut n) = (0.0f64, 0, 0, 0);
         for v in lines {
-            let Ok(AnyRecord::Surface(s)) = parse_any_value::<f32>(v) else {
-                continue;
-            };
+            let s = surface_record::<f32>(v);
             if !matches!(s.brdf(), airlight::Brdf::Lambert { .. })
                 || !s.light().distribution.is_isotropic()
             {

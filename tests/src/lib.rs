@@ -47,6 +47,16 @@ impl ClassCase {
     pub fn err(&self, x: f64, tau: f64) -> f64 {
         (x - self.exact).abs() / self.exact.abs().max(tau * self.scale)
     }
+
+    /// Whether the scene is judged at `tau` (1e-4: f32, where its value must be at least
+    /// 1e-30; 1e-10: f64, where it must be a normal number).
+    pub fn judged(&self, tau: f64) -> bool {
+        if tau > 1e-6 {
+            self.f32_ok
+        } else {
+            self.exact >= f64::MIN_POSITIVE
+        }
+    }
 }
 
 /// Every scene of `tests/reference/classes.jsonl`.
@@ -61,6 +71,16 @@ pub fn class_cases() -> Vec<ClassCase> {
             ClassCase { category: v["category"].as_str().unwrap().to_string(), rec, exact, scale: v["scale"].as_f64().unwrap(), f32_ok: exact >= 1e-30 }
         })
         .collect()
+}
+
+/// A record of `tests/reference/surface.jsonl` as the surface point it describes, in `T`
+/// (panics on anything else: every line of that file is a valid surface point).
+pub fn surface_record<T: airlight::Real>(v: &serde_json::Value) -> airlight::SurfaceScene<T, airlight::light::AnyDistribution<T>, airlight::phase::AnyPhase<T>> {
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    match parse_any_value::<T>(v).unwrap_or_else(|e| panic!("reference record invalid: {e}: {v}")) {
+        AnyRecord::Surface(s) => s,
+        _ => panic!("not a surface record in surface.jsonl: {v}"),
+    }
 }
 
 /// `|a − b| / |b|` (0 when both are 0; ∞ when only `b` is 0).

@@ -107,7 +107,7 @@ fn class_error_with<T: airlight::Real, const N: usize>(cases: &[&Case], tau: f64
     let control = airlight::panels::Control { max_panels: T::MAX_PANELS * T::PANEL_NODES / N, ..base };
     cases
         .iter()
-        .filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE })
+        .filter(|c| c.judged(tau))
         .map(|c| {
             let r = c.rec.cast::<T>();
             let s = r.scene().unwrap();
@@ -167,7 +167,7 @@ fn error_estimate_holds_at_loose_tolerances() {
         let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
         cases
             .iter()
-            .filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE })
+            .filter(|c| c.judged(tau))
             .map(|c| (c.err(c.rec.cast::<T>().scene().unwrap().in_scatter_panels::<N>(control).to_f64_exact(), tau), c.category.clone()))
             .fold((0.0, String::new()), |a, b| if b.0 > a.0 { b } else { a })
     }
@@ -205,7 +205,7 @@ fn sweep_route<T: airlight::Real>(
     let control = airlight::panels::Control { tolerance: T::lit(tolerance), ..default_control::<T>() };
     let mut counts: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
     let mut worst = (0.0f64, "");
-    for c in cases.iter().filter(|c| if tau > 1e-6 { c.f32_ok } else { c.exact >= f64::MIN_POSITIVE }) {
+    for c in cases.iter().filter(|c| c.judged(tau)) {
         let s = c.rec.cast::<T>().scene().unwrap();
         let phys = Physics::new(s.light(), s.medium(), s.phase());
         let slot = counts.entry(c.category.as_str()).or_default();

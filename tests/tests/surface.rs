@@ -6,17 +6,12 @@ use airlight::glam::DVec3;
 use airlight::light::{AnyDistribution, Omni};
 use airlight::phase::{AnyPhase, Isotropic};
 use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
-use airlight_codegen::scene_json::{parse_any_value, parse_line_with_id, AnyRecord};
+use airlight_codegen::scene_json::parse_line_with_id;
 use airlight_tests::reference_lines;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
-fn surface<T: airlight::Real>(v: &serde_json::Value) -> SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>> {
-    match parse_any_value::<T>(v).unwrap_or_else(|e| panic!("reference record invalid: {e}: {v}")) {
-        AnyRecord::Surface(s) => s,
-        _ => panic!("not a surface record in surface.jsonl: {v}"),
-    }
-}
+use airlight_tests::surface_record as surface;
 
 /// Targets (docs/DESIGN.md §8): f64 within 1e-9 of the reference, f32 within 1e-4 (the inputs
 /// are f32-exact), relative to `max(|exact|, τ·scale)` (`τ` = 1e-10 in f64, 1e-4 in f32;
