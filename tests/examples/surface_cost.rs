@@ -1,14 +1,13 @@
 //! One class of tests/reference/surface.jsonl evaluated `passes` times by
 //! `SurfaceScene::air_light_counted` (f64) at a tolerance: the workload whose instructions per
-//! surface point callgrind counts (deterministic, where the surface bench's times move by up to
-//! 2× between runs on shared machines). Per point: the count at `passes` minus the count at 0
-//! (the reference file's parsing), divided by passes × the class's points (6 each):
+//! surface point `python3 scripts/class_instructions.py --surface CLASS TOLERANCE` counts under
+//! callgrind (deterministic, where the surface bench's times move by up to 2× between runs on
+//! shared machines). Prints the point count and the largest error over the class
+//! (`|x − exact| / max(|exact|, 1e-10·scale)`).
 //!
-//! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/surface_cost lambert_thin 1e-1 20`
-//! (and the same with 0), after `cargo build --release -p airlight-tests --example surface_cost`.
+//! `cargo run --release -p airlight-tests --example surface_cost -- lambert_thin 1e-1 10`
 
-use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
-use airlight_tests::reference_lines;
+use airlight_tests::{reference_lines, surface_record};
 use std::hint::black_box;
 
 fn main() {
@@ -20,19 +19,15 @@ fn main() {
     let points: Vec<_> = reference_lines("surface.jsonl")
         .iter()
         .filter(|v| v["category"].as_str() == Some(class.as_str()))
-        .map(|v| match parse_any_value::<f64>(v) {
-            Ok(AnyRecord::Surface(s)) => s,
-            other => panic!("a surface point, not {other:?}"),
-        })
+        .map(|v| (surface_record::<f64>(v), v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap()))
         .collect();
     assert!(!points.is_empty(), "no class {class}");
-    let (mut sum, mut rays) = (0.0, 0);
+    let mut worst = 0.0f64;
     for _ in 0..passes {
-        for point in &points {
-            let (value, r) = black_box(point).air_light_counted(tolerance);
-            sum += value;
-            rays += r;
+        for (point, exact, scale) in &points {
+            let value = black_box(point).air_light_counted(tolerance).0;
+            worst = worst.max((value - exact).abs() / exact.abs().max(1e-10 * scale));
         }
     }
-    println!("points {} rays {rays} sum {sum:e}", points.len());
+    println!("scenes {} worst {worst:e}", points.len());
 }
