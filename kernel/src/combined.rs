@@ -624,9 +624,11 @@ fn on_line<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>>(
     if x_h > t1 {
         let f: T = phys.light.eval(-g.d_el) * phys.phase.eval(T::one());
         let (r0, r1) = (x_h - t0, x_h - t1);
-        // σs I f Δt/(r0 r1) e^{−σt r0}, with 1/r0 in weighted()'s divisor so that a tiny r0
-        // goes through its logarithmic path instead of overflowing here
-        weighted(phys.sigma_s, phys.intensity, r0 + r0, sigma_t * r0, f * ((t1 - t0) / r1))
+        // σs I f (Δt/r0)/r1 e^{−σt r0}: Δt/r0 ≤ 1 (r0 = Δt + r1), and the nearer end's 1/r1
+        // in weighted()'s divisor, so that a tiny r1 goes through its logarithmic path instead
+        // of overflowing here (halved where r0 leaves the range; the quotient is the same)
+        let span = if r0.is_finite() { (t1 - t0) / r0 } else { (t1 * T::lit(0.5) - t0 * T::lit(0.5)) / (x_h * T::lit(0.5) - t0 * T::lit(0.5)) };
+        weighted(phys.sigma_s, phys.intensity, r1 + r1, sigma_t * r0, f * span)
     } else {
         let f: T = phys.light.eval(g.d_el) * phys.phase.eval(-T::one());
         let (s0, s1) = (t0 - x_h, t1 - x_h);

@@ -316,6 +316,31 @@ fn light_at_the_f32_range_end_without_extinction_is_finite() {
     }
 }
 
+/// A kernel fuzz finding in f64: the light `7.9e-317` off the ray's line, `5.3e-169` ahead of a
+/// segment `[−4.6e158, 0]` without extinction. The on-line limit's `Δt/r₁` overflowed before
+/// its `1/r₀` was applied (`+∞`); the value is `σs I/(4π)·(1/r₁ − 1/r₀)`, `r₀`, `r₁` the
+/// ends' distances, here `1/r₁` to 15 digits. The same geometry with the fuzzer's spot cone and
+/// two-lobed phase function is finite too.
+#[test]
+fn light_just_ahead_of_a_long_segment_is_finite() {
+    let ray = Ray::<f64> { origin: DVec3::new(1.18e-321, 4.5e-322, 5.299469827377981e-169), dir: DVec3::new(-0.9212940924815196, 0.7568626441061497, -4.634680647717983e158), t_min: -4.634680647717983e158, t_max: 0.0 };
+    let position = DVec3::new(7.2813577e-317, 3.1083923e-317, 0.0);
+    let (sigma_s, intensity) = (0.14901960784313717, 8.645627431730427e-217);
+    let m = Medium { sigma_s, sigma_t: 0.0 };
+    let omni = Scene::new(ray, PointLight { position, intensity, distribution: Omni }, m, Isotropic).unwrap();
+    // the foot is at t = 5.299469827377981e-169 (the origin's z; the direction is −z to 1e-159)
+    let want = sigma_s * intensity / (4.0 * std::f64::consts::PI) / 5.299469827377981e-169;
+    for got in [omni.in_scatter(), omni.in_scatter_with::<6>(Expansion::Chebyshev)] {
+        assert!((got - want).abs() <= 1e-14 * want, "{got} vs {want}");
+    }
+    let spot = SpotCone { axis: DVec3::new(0.7568627450980392, -4.634680647717983e158, 0.0), cos_inner: 3.6260443998244473e-217, cos_outer: -0.8509803921568628 };
+    let phase = TwoLobeHenyeyGreenstein { g1: -0.8424705882352942, g2: -0.8424705882352942, w: 0.07450980392156858 };
+    let s = Scene::new(ray, PointLight { position, intensity, distribution: spot }, m, phase).unwrap();
+    for got in [s.in_scatter(), s.in_scatter_with::<4>(Expansion::Taylor), s.in_scatter_with::<6>(Expansion::Chebyshev)] {
+        assert!(got.is_finite() && got > 0.0, "{got}");
+    }
+}
+
 /// A segment light's record (docs/DESIGN.md §6, §10) evaluates on the CPU; its errors name
 /// `light.a`/`light.b`/`light.shape`; the fixed-term method and the GPU backend are point
 /// lights only and say so per line.
