@@ -314,10 +314,10 @@ pub(crate) fn atan_nonnegative<T: Real>(a: T) -> T {
     }
 }
 
-/// `(sin x, cos x)` for `0 ≤ x ≤ π/2` (a distance from a pole of the light angle, docs/DESIGN.md
-/// §4.2) by minimax polynomials in `z = x²` in Horner's form, without the library's range
+/// `(sin x, cos x)` for `|x| ≤ π/2` (a distance from a pole of the light angle, docs/DESIGN.md
+/// §4.2; half a Phong lobe's angle, §11) by minimax polynomials in `z = x²` in Horner's form, without the library's range
 /// reduction: `sin x = x·S(z)`, `S` minimax in the relative error (so `sin` keeps it as `x → 0`,
-/// where the light angle's `cos θ` needs it), `cos x = C(z)`, `C` minimax in the absolute error
+/// where the light angle's `cos θ` needs it; odd in `x`, as `cos x` is even), `cos x = C(z)`, `C` minimax in the absolute error
 /// (`cos x` near `π/2` is a distance from the other pole: a few ε absolutely suffice). The
 /// coefficients are `scripts/gen_minimax.py`'s (the Remez exchange at 40 digits, each rounded
 /// once to the precision): 9 and 9 in f64, the rounded polynomials within 2.7e-17 relative and

@@ -31,7 +31,7 @@ use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
-use crate::real::{sin_cos_half_turn, Real};
+use crate::real::{sin_cos_half_turn, sin_cos_quarter, Real};
 use crate::panels::Control;
 use crate::combined::Physics;
 use crate::geometry::Canonical;
@@ -205,7 +205,9 @@ fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3]) -> (T, T, T) {
 /// `exp(n (ln cos(γ − α_r) + ln(1 − k s²)))` from two `ln(1 + x)` without cancellation (Vulkan
 /// allows `log` an absolute error of 2⁻²¹ near 1, which `n = 200` would make 7e-5). The lobe is
 /// ended at [`LOBE_FLOOR`] of its peak (`s² = (1 − floor^{1/n})/k`; all of it where that passes
-/// 1), the rest cut at the peak `x = 0` and the normal's arc ends, and [`LOBE_RULE`] taken on
+/// 1). The lobe is even in `x`: the rule runs over `[0, cut]`, each node serving `x` and `−x`
+/// (one sine, exponential and logarithm for two, docs/DESIGN.md §11), cut at the normal's arc ends'
+/// distances from the peak, and [`LOBE_RULE`] is taken on
 /// every piece where the integrand lives — in `x` itself or, for `n < 1`, where `(ψ_r − x)ⁿ`
 /// ends a piece with a kink of infinite slope, in the smoothstep of the piece (as the outer
 /// integral takes `γ`). `gap = γ − α_r`; the lobe is empty unless `|gap| < π/2`.
@@ -223,24 +225,28 @@ pub fn lobe_arcs<T: Real>(normal: (T, T), mirror: (T, T), gap: T, (delta, cos_de
     let reach = if exponent > T::zero() { -(T::lit(LOBE_FLOOR).ln() / exponent).exp_m1() } else { T::one() };
     let s2 = if reach < k { reach / k } else { T::one() };
     let cut = two * s2.sqrt().asin();
-    // the pieces' edges: ±cut, the peak, the normal's arc ends within (−cut, cut)
-    let mut edges = [-cut, cut, T::zero(), T::zero(), T::zero()];
-    let mut count = 3;
+    // the lobe is even in x and the normal's clip is not: each node x of [0, cut] serves x and
+    // −x (one sine, exponential and logarithm for two), the half-range cut at the peak, `cut`
+    // and the normal's arc ends' distances from the peak (so neither side has a kink inside)
+    let mut edges = [T::zero(), cut, T::zero(), T::zero()];
+    let mut count = 2;
     if psi_n < pi {
         for end in [delta - psi_n, delta + psi_n] {
             let y = if end > pi { end - pi - pi } else if end < -pi { end + pi + pi } else { end };
-            if y > -cut && y < cut {
-                edges[count] = y;
+            if y.abs() < cut {
+                edges[count] = y.abs();
                 count += 1;
             }
         }
     }
     let used = &mut edges[..count];
     used.sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
-    let f = |x: T| {
-        let (s, h) = (x * half).sin_cos();
+    let pair = |x: T| {
+        // |x/2| ≤ π/2: the minimax pair, odd and even in x
+        let (s, h) = sin_cos_quarter(x * half);
         let (cos_x, sin_x) = (T::one() - two * s * s, two * s * h);
-        let clip = a + b * (cos_x * cos_delta + sin_x * sin_delta);
+        let (even, odd) = (a + b * cos_x * cos_delta, b * sin_x * sin_delta);
+        let clip = (even + odd).max(T::zero()) + (even - odd).max(T::zero());
         let fall = k * s * s;
         if fall < T::one() && clip > T::zero() {
             clip * (exponent * (log_peak + (-fall).ln_1p())).exp()
@@ -250,16 +256,16 @@ pub fn lobe_arcs<T: Real>(normal: (T, T), mirror: (T, T), gap: T, (delta, cos_de
     };
     let smooth = exponent < T::one();
     let mut sum = T::zero();
-    for pair in used.windows(2) {
-        let (lo, hi) = (pair[0], pair[1]);
-        if !(hi > lo) || !(f((lo + hi) * half) > T::zero()) {
+    for piece in used.windows(2) {
+        let (lo, hi) = (piece[0], piece[1]);
+        if !(hi > lo) || !(pair((lo + hi) * half) > T::zero()) {
             continue;
         }
         let w = hi - lo;
         for &(x, weight) in LOBE_RULE {
             for u in [half - half * T::lit(x), half + half * T::lit(x)] {
                 let (at, jacobian) = if smooth { (lo + w * u * u * (T::lit(3.0) - u - u), w * T::lit(6.0) * u * (T::one() - u)) } else { (lo + w * u, w) };
-                sum = sum + T::lit(weight) * half * jacobian * f(at);
+                sum = sum + T::lit(weight) * half * jacobian * pair(at);
             }
         }
     }

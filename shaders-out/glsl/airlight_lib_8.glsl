@@ -4789,17 +4789,19 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
-    float clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    float even = (q_1.a + ((q_1.b * cos_x) * q_1.cos_delta));
+    float odd_1 = ((q_1.b * sin_x) * q_1.sin_delta);
+    float clip = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
         local_114 = (clip > 0.0);
     } else {
         local_114 = false;
     }
-    bool _e35 = local_114;
-    if (_e35) {
-        float _e39 = airlight_log1p(-(fall));
-        return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    bool _e43 = local_114;
+    if (_e43) {
+        float _e47 = airlight_log1p(-(fall));
+        return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
     }
     return 0.0;
 }
@@ -4886,7 +4888,7 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
 
 float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, float exponent_1) {
     float reach = 1.0;
-    vec3 inner = vec3(0.0);
+    vec2 inner = vec2(0.0);
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = (g_23.cos_r * cs.x);
@@ -4910,55 +4912,42 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
         float _e72 = airlight_arc_end((g_23.delta.x - psi_n), cut_2);
-        inner.y = _e72;
-        float _e77 = airlight_arc_end((g_23.delta.x + psi_n), cut_2);
-        inner.z = _e77;
+        inner.x = abs(_e72);
+        float _e78 = airlight_arc_end((g_23.delta.x + psi_n), cut_2);
+        inner.y = abs(_e78);
     }
-    float _e79 = inner.y;
-    float _e81 = inner.x;
-    if ((_e79 < _e81)) {
-        vec3 _e83 = inner;
-        inner = _e83.yxz;
+    float _e81 = inner.y;
+    float _e83 = inner.x;
+    if ((_e81 < _e83)) {
+        vec2 _e85 = inner;
+        inner = _e85.yx;
     }
-    float _e86 = inner.z;
-    float _e88 = inner.y;
-    if ((_e86 < _e88)) {
-        vec3 _e90 = inner;
-        inner = _e90.xzy;
-    }
-    float _e93 = inner.y;
-    float _e95 = inner.x;
-    if ((_e93 < _e95)) {
-        vec3 _e97 = inner;
-        inner = _e97.yxz;
-    }
-    float _e101 = inner.x;
-    float _e103 = inner.y;
-    float _e105 = inner.z;
-    float edges[5] = float[5](-(cut_2), _e101, _e103, _e105, cut_2);
+    float _e88 = inner.x;
+    float _e90 = inner.y;
+    float edges[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
     bool loop_init_25 = true;
     while(true) {
         if (!loop_init_25) {
-            uint _e126 = i_20;
-            i_20 = (_e126 + 1u);
+            uint _e112 = i_20;
+            i_20 = (_e112 + 1u);
         }
         loop_init_25 = false;
-        uint _e113 = i_20;
-        if ((_e113 < 4u)) {
+        uint _e99 = i_20;
+        if ((_e99 < 3u)) {
         } else {
             break;
         }
         {
-            float _e116 = sum_6;
-            uint _e117 = i_20;
-            uint _e119 = i_20;
-            float _e123 = airlight_lobe_piece(q_6, edges[_e117], edges[(_e119 + 1u)], smoothstep_2);
-            sum_6 = (_e116 + _e123);
+            float _e102 = sum_6;
+            uint _e103 = i_20;
+            uint _e105 = i_20;
+            float _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            sum_6 = (_e102 + _e109);
         }
     }
-    float _e128 = sum_6;
-    return _e128;
+    float _e114 = sum_6;
+    return _e114;
 }
 
 AirlightOuter airlight_outer(AirlightScene s_25) {

@@ -5563,17 +5563,19 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18)
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
-    float clip_ = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    float even = (q_1.a + ((q_1.b * cos_x) * q_1.cos_delta));
+    float odd_1 = ((q_1.b * sin_x) * q_1.sin_delta);
+    float clip_ = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
         local_114 = (clip_ > 0.0);
     } else {
         local_114 = false;
     }
-    bool _e35 = local_114;
-    if (_e35) {
-        const float _e39 = airlight_log1p(-(fall));
-        return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    bool _e43 = local_114;
+    if (_e43) {
+        const float _e47 = airlight_log1p(-(fall));
+        return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e47))));
     }
     return 0.0;
 }
@@ -5686,16 +5688,10 @@ AirlightLobe ConstructAirlightLobe(float arg0, float arg1, float arg2, float arg
     return ret;
 }
 
-typedef float airlight_ret_Constructarray5_float_[5];
-airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
-    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
-    return ret;
-}
-
 float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n, float exponent)
 {
     float reach = 1.0;
-    float3 inner = (0.0).xxx;
+    float2 inner = (0.0).xx;
     float sum_6 = 0.0;
     uint i_20 = 0u;
 
@@ -5720,32 +5716,19 @@ float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
         const float _e72 = airlight_arc_end((g_21.delta.x - psi_n), cut_2);
-        inner.y = _e72;
-        const float _e77 = airlight_arc_end((g_21.delta.x + psi_n), cut_2);
-        inner.z = _e77;
+        inner.x = abs(_e72);
+        const float _e78 = airlight_arc_end((g_21.delta.x + psi_n), cut_2);
+        inner.y = abs(_e78);
     }
-    float _e79 = inner.y;
-    float _e81 = inner.x;
-    if ((_e79 < _e81)) {
-        float3 _e83 = inner;
-        inner = _e83.yxz;
+    float _e81 = inner.y;
+    float _e83 = inner.x;
+    if ((_e81 < _e83)) {
+        float2 _e85 = inner;
+        inner = _e85.yx;
     }
-    float _e86 = inner.z;
-    float _e88 = inner.y;
-    if ((_e86 < _e88)) {
-        float3 _e90 = inner;
-        inner = _e90.xzy;
-    }
-    float _e93 = inner.y;
-    float _e95 = inner.x;
-    if ((_e93 < _e95)) {
-        float3 _e97 = inner;
-        inner = _e97.yxz;
-    }
-    float _e101 = inner.x;
-    float _e103 = inner.y;
-    float _e105 = inner.z;
-    float edges[5] = airlight_Constructarray5_float_(-(cut_2), _e101, _e103, _e105, cut_2);
+    float _e88 = inner.x;
+    float _e90 = inner.y;
+    float edges[4] = airlight_Constructarray4_float_(0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent < 1.0);
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_25 = true;
@@ -5753,25 +5736,25 @@ float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n
         if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_25) {
-            uint _e126 = i_20;
-            i_20 = (_e126 + 1u);
+            uint _e112 = i_20;
+            i_20 = (_e112 + 1u);
         }
         loop_init_25 = false;
-        uint _e113 = i_20;
-        if ((_e113 < 4u)) {
+        uint _e99 = i_20;
+        if ((_e99 < 3u)) {
         } else {
             break;
         }
         {
-            float _e116 = sum_6;
-            uint _e117 = i_20;
-            uint _e119 = i_20;
-            const float _e123 = airlight_lobe_piece(q_6, edges[min(uint(_e117), 4u)], edges[min(uint((_e119 + 1u)), 4u)], smoothstep_2);
-            sum_6 = (_e116 + _e123);
+            float _e102 = sum_6;
+            uint _e103 = i_20;
+            uint _e105 = i_20;
+            const float _e109 = airlight_lobe_piece(q_6, edges[min(uint(_e103), 3u)], edges[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            sum_6 = (_e102 + _e109);
         }
     }
-    float _e128 = sum_6;
-    return _e128;
+    float _e114 = sum_6;
+    return _e114;
 }
 
 typedef float airlight_ret_Constructarray3_float_[3];

@@ -178,9 +178,6 @@ struct airlight_type_16 {
     metal::float2 inner[5];
 };
 struct airlight_type_17 {
-    float inner[5];
-};
-struct airlight_type_18 {
     float inner[3];
 };
 struct AirlightNode {
@@ -5326,17 +5323,19 @@ float airlight_lobe_at(
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
     float sin_x = (2.0 * _e4.y) * _e4.x;
-    float clip = q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta)));
+    float even = q_1.a + ((q_1.b * cos_x) * q_1.cos_delta);
+    float odd_1 = (q_1.b * sin_x) * q_1.sin_delta;
+    float clip = metal::max(even + odd_1, 0.0) + metal::max(even - odd_1, 0.0);
     float fall = q_1.k * s2_;
     if (fall < 1.0) {
         local_114 = clip > 0.0;
     } else {
         local_114 = false;
     }
-    bool _e35 = local_114;
-    if (_e35) {
-        float _e39 = airlight_log1p(-(fall));
-        return clip * metal::exp(q_1.exponent * (q_1.log_peak + _e39));
+    bool _e43 = local_114;
+    if (_e43) {
+        float _e47 = airlight_log1p(-(fall));
+        return clip * metal::exp(q_1.exponent * (q_1.log_peak + _e47));
     }
     return 0.0;
 }
@@ -5447,7 +5446,7 @@ float airlight_lobe_arcs(
     float exponent_1
 ) {
     float reach = 1.0;
-    metal::float3 inner = metal::float3(0.0);
+    metal::float2 inner = metal::float2(0.0);
     float sum_6 = 0.0;
     uint i_20 = 0u;
     float c_11 = g_23.cos_r * cs.x;
@@ -5471,32 +5470,19 @@ float airlight_lobe_arcs(
     float cut_2 = 2.0 * _e60;
     if (psi_n < AIRLIGHT_PI) {
         float _e72 = airlight_arc_end(g_23.delta[0] - psi_n, cut_2);
-        inner.y = _e72;
-        float _e77 = airlight_arc_end(g_23.delta[0] + psi_n, cut_2);
-        inner.z = _e77;
+        inner.x = metal::abs(_e72);
+        float _e78 = airlight_arc_end(g_23.delta[0] + psi_n, cut_2);
+        inner.y = metal::abs(_e78);
     }
-    float _e79 = inner.y;
-    float _e81 = inner.x;
-    if (_e79 < _e81) {
-        metal::float3 _e83 = inner;
-        inner = _e83.yxz;
+    float _e81 = inner.y;
+    float _e83 = inner.x;
+    if (_e81 < _e83) {
+        metal::float2 _e85 = inner;
+        inner = _e85.yx;
     }
-    float _e86 = inner.z;
-    float _e88 = inner.y;
-    if (_e86 < _e88) {
-        metal::float3 _e90 = inner;
-        inner = _e90.xzy;
-    }
-    float _e93 = inner.y;
-    float _e95 = inner.x;
-    if (_e93 < _e95) {
-        metal::float3 _e97 = inner;
-        inner = _e97.yxz;
-    }
-    float _e101 = inner.x;
-    float _e103 = inner.y;
-    float _e105 = inner.z;
-    airlight_type_17 edges = airlight_type_17 {{-(cut_2), _e101, _e103, _e105, cut_2}};
+    float _e88 = inner.x;
+    float _e90 = inner.y;
+    airlight_type_12 edges = airlight_type_12 {{0.0, _e88, _e90, cut_2}};
     bool smoothstep_2 = exponent_1 < 1.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
@@ -5504,25 +5490,25 @@ float airlight_lobe_arcs(
         if (metal::all(loop_bound_26 == uint2(0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_25) {
-            uint _e126 = i_20;
-            i_20 = _e126 + 1u;
+            uint _e112 = i_20;
+            i_20 = _e112 + 1u;
         }
         loop_init_25 = false;
-        uint _e113 = i_20;
-        if (_e113 < 4u) {
+        uint _e99 = i_20;
+        if (_e99 < 3u) {
         } else {
             break;
         }
         {
-            float _e116 = sum_6;
-            uint _e117 = i_20;
-            uint _e119 = i_20;
-            float _e123 = airlight_lobe_piece(q_6, edges.inner[metal::min(unsigned(_e117), 4u)], edges.inner[metal::min(unsigned(_e119 + 1u), 4u)], smoothstep_2);
-            sum_6 = _e116 + _e123;
+            float _e102 = sum_6;
+            uint _e103 = i_20;
+            uint _e105 = i_20;
+            float _e109 = airlight_lobe_piece(q_6, edges.inner[metal::min(unsigned(_e103), 3u)], edges.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
+            sum_6 = _e102 + _e109;
         }
     }
-    float _e128 = sum_6;
-    return _e128;
+    float _e114 = sum_6;
+    return _e114;
 }
 
 AirlightOuter airlight_outer(
@@ -5545,8 +5531,8 @@ AirlightOuter airlight_outer(
     bool local_127 = {};
     bool local_128 = {};
     bool local_129 = {};
-    airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_18 at = {};
+    airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_17 at = {};
     bool local_130 = {};
     uint i_21 = 0u;
     bool local_131 = {};
@@ -5700,7 +5686,7 @@ AirlightOuter airlight_outer(
     float _e172 = scale;
     g_24.scale = _e172;
     float _e178 = s_star;
-    at = airlight_type_18 {{_e178, (s_25.t_min - along_d) / cos_a_2, (s_25.t_max - along_d) / cos_a_2}};
+    at = airlight_type_17 {{_e178, (s_25.t_min - along_d) / cos_a_2, (s_25.t_max - along_d) / cos_a_2}};
     float _e187 = scale;
     if (_e187 > 0.0) {
         AirlightOuter _e192 = g_24;

@@ -5235,17 +5235,19 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let s2_ = (_e4.y * _e4.y);
     let cos_x = (1f - (2f * s2_));
     let sin_x = ((2f * _e4.y) * _e4.x);
-    let clip = (q_1.a + (q_1.b * ((cos_x * q_1.cos_delta) + (sin_x * q_1.sin_delta))));
+    let even = (q_1.a + ((q_1.b * cos_x) * q_1.cos_delta));
+    let odd_1 = ((q_1.b * sin_x) * q_1.sin_delta);
+    let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
         local_114 = (clip > 0f);
     } else {
         local_114 = false;
     }
-    let _e35 = local_114;
-    if _e35 {
-        let _e39 = airlight_log1p(-(fall));
-        return (clip * exp((q_1.exponent * (q_1.log_peak + _e39))));
+    let _e43 = local_114;
+    if _e43 {
+        let _e47 = airlight_log1p(-(fall));
+        return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
     }
     return 0f;
 }
@@ -5332,7 +5334,7 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
 
 fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent_1: f32) -> f32 {
     var reach: f32 = 1f;
-    var inner: vec3<f32> = vec3(0f);
+    var inner: vec2<f32> = vec2(0f);
     var sum_6: f32 = 0f;
     var i_20: u32 = 0u;
 
@@ -5357,53 +5359,40 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
         let _e72 = airlight_arc_end((g_23.delta.x - psi_n), cut_2);
-        inner.y = _e72;
-        let _e77 = airlight_arc_end((g_23.delta.x + psi_n), cut_2);
-        inner.z = _e77;
+        inner.x = abs(_e72);
+        let _e78 = airlight_arc_end((g_23.delta.x + psi_n), cut_2);
+        inner.y = abs(_e78);
     }
-    let _e79 = inner.y;
-    let _e81 = inner.x;
-    if (_e79 < _e81) {
-        let _e83 = inner;
-        inner = _e83.yxz;
+    let _e81 = inner.y;
+    let _e83 = inner.x;
+    if (_e81 < _e83) {
+        let _e85 = inner;
+        inner = _e85.yx;
     }
-    let _e86 = inner.z;
-    let _e88 = inner.y;
-    if (_e86 < _e88) {
-        let _e90 = inner;
-        inner = _e90.xzy;
-    }
-    let _e93 = inner.y;
-    let _e95 = inner.x;
-    if (_e93 < _e95) {
-        let _e97 = inner;
-        inner = _e97.yxz;
-    }
-    let _e101 = inner.x;
-    let _e103 = inner.y;
-    let _e105 = inner.z;
-    let edges = array<f32, 5>(-(cut_2), _e101, _e103, _e105, cut_2);
+    let _e88 = inner.x;
+    let _e90 = inner.y;
+    let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
-        let _e113 = i_20;
-        if (_e113 < 4u) {
+        let _e99 = i_20;
+        if (_e99 < 3u) {
         } else {
             break;
         }
         {
-            let _e116 = sum_6;
-            let _e117 = i_20;
-            let _e119 = i_20;
-            let _e123 = airlight_lobe_piece(q_6, edges[_e117], edges[(_e119 + 1u)], smoothstep_2);
-            sum_6 = (_e116 + _e123);
+            let _e102 = sum_6;
+            let _e103 = i_20;
+            let _e105 = i_20;
+            let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            sum_6 = (_e102 + _e109);
         }
         continuing {
-            let _e126 = i_20;
-            i_20 = (_e126 + 1u);
+            let _e112 = i_20;
+            i_20 = (_e112 + 1u);
         }
     }
-    let _e128 = sum_6;
-    return _e128;
+    let _e114 = sum_6;
+    return _e114;
 }
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {

@@ -2166,14 +2166,16 @@ struct AirlightLobe {
     exponent: f32,
 }
 
-/// (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ at x ∈ [−π, π], with s = sin(x/2): the lobe is
-/// (C + D)(1 − k s²) (surface.rs lobe_arcs).
+/// (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ at x and at −x, x ∈ [0, π], summed, with s = sin(x/2):
+/// the lobe is (C + D)(1 − k s²), even in x (surface.rs lobe_arcs).
 fn airlight_lobe_at(q: AirlightLobe, x: f32) -> f32 {
     let half = airlight_cos_sin(0.5 * x);
     let s2 = half.y * half.y;
     let cos_x = 1.0 - 2.0 * s2;
     let sin_x = 2.0 * half.y * half.x;
-    let clip = q.a + q.b * (cos_x * q.cos_delta + sin_x * q.sin_delta);
+    let even = q.a + q.b * cos_x * q.cos_delta;
+    let odd = q.b * sin_x * q.sin_delta;
+    let clip = max(even + odd, 0.0) + max(even - odd, 0.0);
     let fall = q.k * s2;
     if (fall < 1.0 && clip > 0.0) {
         return clip * exp(q.exponent * (q.log_peak + airlight_log1p(-fall)));
@@ -2192,8 +2194,9 @@ fn airlight_lobe_node(q: AirlightLobe, lo: f32, w: f32, u: f32, smoothstep: bool
 
 /// ∫ (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ dx over the circle at the angle γ (cos γ, sin γ = cs)
 /// of a Phong surface's outer integral, ψ_n the normal's half-arc there (surface.rs lobe_arcs:
-/// the lobe ended at AIRLIGHT_LN_LOBE_FLOOR of its peak, cut at the peak and the normal's arc
-/// ends, the kernel's LOBE_RULE's 10 points on every piece).
+/// the lobe ended at AIRLIGHT_LN_LOBE_FLOOR of its peak, each node of [0, cut] serving x and −x,
+/// the half-range cut at the normal's arc ends' distances from the peak, the kernel's
+/// LOBE_RULE's 10 points on every piece).
 fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, exponent: f32) -> f32 {
     let c = g.cos_r * cs.x;
     let d = g.sin_r * cs.y;
@@ -2207,22 +2210,20 @@ fn airlight_lobe_arcs(g: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32, e
     if (exponent > 0.0) { reach = -airlight_expm1(AIRLIGHT_LN_LOBE_FLOOR / exponent); }
     let s2 = select(1.0, reach / q.k, reach < q.k);
     let cut = 2.0 * airlight_angle(sqrt(1.0 - s2), sqrt(s2));
-    // the pieces' edges: −cut, the peak 0 and the normal's arc ends within (−cut, cut), cut
-    var inner = vec3<f32>(0.0);
+    // the pieces' edges: the peak 0, the normal's arc ends' distances from it within cut, cut
+    var inner = vec2<f32>(0.0);
     if (psi_n < AIRLIGHT_PI) {
-        inner.y = airlight_arc_end(g.delta.x - psi_n, cut);
-        inner.z = airlight_arc_end(g.delta.x + psi_n, cut);
+        inner.x = abs(airlight_arc_end(g.delta.x - psi_n, cut));
+        inner.y = abs(airlight_arc_end(g.delta.x + psi_n, cut));
     }
-    if (inner.y < inner.x) { inner = inner.yxz; }
-    if (inner.z < inner.y) { inner = inner.xzy; }
-    if (inner.y < inner.x) { inner = inner.yxz; }
-    // a loop over the pieces, not four calls: a driver that runs a branch's straight-line code
+    if (inner.y < inner.x) { inner = inner.yx; }
+    // a loop over the pieces, not three calls: a driver that runs a branch's straight-line code
     // for every lane (lavapipe) runs this for every ray of a dispatch, but a loop none of whose
     // lanes needs it only once
-    let edges = array<f32, 5>(-cut, inner.x, inner.y, inner.z, cut);
+    let edges = array<f32, 4>(0.0, inner.x, inner.y, cut);
     let smoothstep = exponent < 1.0;
     var sum = 0.0;
-    for (var i = 0u; i < 4u; i++) {
+    for (var i = 0u; i < 3u; i++) {
         sum += airlight_lobe_piece(q, edges[i], edges[i + 1u], smoothstep);
     }
     return sum;
