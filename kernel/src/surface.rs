@@ -595,30 +595,37 @@ where
             };
             value * sin_g
         };
-        // outer edges: where the arcs change kind, the lobe's peak, where the arcs' ends meet
+        // outer edges: where the arcs change kind and where the arcs' ends meet (kinks: an arc
+        // opens or closes there), a lobe's peak and extent and a beam's axis (smooth: the pieces
+        // need not crowd their nodes towards them, piece_map)
         let mut cuts = [T::zero(); 14];
-        let mut count = 0;
+        let mut kinks = [T::zero(); 6];
+        let (mut count, mut kink_count) = (0, 0);
         let turning = |(cos_a, sin_a, _): (T, T, T)| {
             let alpha = sin_a.atan2(cos_a);
             let first = (T::FRAC_PI_2() - alpha).abs();
             [first, T::PI() - first]
         };
-        let mut push = |c: T| {
+        let mut push = |c: T, kink: bool| {
             cuts[count] = c;
             count += 1;
+            if kink {
+                kinks[kink_count] = c;
+                kink_count += 1;
+            }
         };
         let normal_turns = turning(fr.n);
-        normal_turns.into_iter().for_each(&mut push);
+        normal_turns.into_iter().for_each(|c| push(c, true));
         if phong {
-            turning(fr.r).into_iter().for_each(&mut push);
-            push(alpha_r);
+            turning(fr.r).into_iter().for_each(|c| push(c, true));
+            push(alpha_r, false);
             if let Brdf::Phong { exponent, .. } = self.brdf {
                 // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
                 if exponent > T::one() {
                     for k in [1.5, 4.0] {
                         let width = T::lit(k) / exponent.sqrt();
-                        push(alpha_r - width);
-                        push(alpha_r + width);
+                        push(alpha_r - width, false);
+                        push(alpha_r + width, false);
                     }
                 }
             }
@@ -628,8 +635,8 @@ where
             let norm = length(u);
             if norm > T::epsilon() {
                 let c = (dot(u, fr.l) / norm).max(-T::one()).min(T::one());
-                push(c.acos());
-                push(T::PI() - c.acos());
+                push(c.acos(), true);
+                push(T::PI() - c.acos(), true);
             }
         }
         // a beam c^p: rays along ±a (at γ_a and π − γ_a from ℓ) see its lobe to their far end,
@@ -639,22 +646,23 @@ where
         // test that needed it)
         if beam.is_some_and(|p| p >= 2) {
             let gamma_a = axis_e1.hypot(axis_e2).atan2(axis_l);
-            push(gamma_a);
-            push(T::PI() - gamma_a);
+            push(gamma_a, false);
+            push(T::PI() - gamma_a, false);
         }
         // only γ ∈ (α_n − π/2, α_n + π/2) sees the hemisphere (the largest n·ω at γ is
         // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
         // (the end is the normal's turning point itself, so that no sliver is left beside it)
         let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
         let (edges, n): ([T; 16], usize) = edges_between(lo, hi, &mut cuts[..count]);
-        // piece i of the outer variable x ∈ [i, i + 1] is γ = a + (b − a)(3t² − 2t³), t = x − i:
-        // where an arc opens or closes the inner integral goes like |γ − γ*|^{3/2}, smooth in t
+        // the inner edges that are smooth cuts only (the range's ends are arcs' ends)
+        let mut smooth = [false; 16];
+        for (i, flag) in smooth.iter_mut().enumerate().take(n).skip(1) {
+            *flag = !kinks[..kink_count].contains(&edges[i]);
+        }
         let mut mapped = |x: T| {
             let i = x.floor().to_usize().unwrap_or(0).min(n - 1);
             let t = x - T::from(i).unwrap_or(T::zero());
-            let (a, b) = (edges[i], edges[i + 1]);
-            let g = a + (b - a) * t * t * (T::lit(3.0) - t - t);
-            let jacobian = (b - a) * T::lit(6.0) * t * (T::one() - t);
+            let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
             if jacobian > T::zero() {
                 outer(g) * jacobian
             } else {
@@ -667,6 +675,20 @@ where
         }
         let (value, _) = adaptive(rule, &mut mapped, &knots[..=n], tolerance, max_panels);
         (value, rays)
+    }
+}
+
+/// `(γ, dγ/dt)` at `t ∈ [0, 1]` on the outer piece `[a, b]`: where an arc opens or closes at an
+/// end the inner integral goes like `|γ − γ*|^{3/2}`, smooth in `t` where `γ − γ*` goes like
+/// `t²` — the smoothstep `a + (b − a)(3t² − 2t³)` with both ends such, `a + (b − a)t²` or
+/// `b − (b − a)(1 − t)²` with one; between smooth cuts `γ` itself (docs/DESIGN.md §11).
+fn piece_map<T: Real>(a: T, b: T, smooth_a: bool, smooth_b: bool, t: T) -> (T, T) {
+    let (w, s) = (b - a, T::one() - t);
+    match (smooth_a, smooth_b) {
+        (false, false) => (a + w * t * t * (T::lit(3.0) - t - t), w * T::lit(6.0) * t * s),
+        (false, true) => (a + w * t * t, w * (t + t)),
+        (true, false) => (b - w * s * s, w * (s + s)),
+        (true, true) => (a + w * t, w),
     }
 }
 

@@ -126,6 +126,7 @@ struct AirlightOuter {
     float d;
     float axis_l;
     float axis_u;
+    uint smooth_edges;
 };
 struct AirlightLobe {
     float a;
@@ -4563,11 +4564,11 @@ float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
 
 AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels) {
     float zeros[13] = float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    return AirlightOuter(s_23.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0);
+    return AirlightOuter(s_23.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
 }
 
 AirlightOuter airlight_surface(AirlightScene s_24) {
-    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
+    AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
     bool local_111 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
@@ -4578,6 +4579,12 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
     uint i_18 = 0u;
     bool local_113 = false;
     uint i_19 = 0u;
+    uint i_20 = 1u;
+    bool local_114 = false;
+    bool local_115 = false;
+    bool local_116 = false;
+    bool local_117 = false;
+    bool local_118 = false;
     AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     vec3 to_light_1 = (s_24.light_position - s_24.origin);
@@ -4675,48 +4682,55 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
             cuts_1[10] = (AIRLIGHT_PI - _e204);
         }
     }
+    float _e210 = cuts_1[0];
+    float _e212 = cuts_1[1];
+    float _e214 = cuts_1[2];
+    float _e216 = cuts_1[3];
+    float _e218 = cuts_1[9];
+    float _e220 = cuts_1[10];
+    float kinks[6] = float[6](_e210, _e212, _e214, _e216, _e218, _e220);
     bool loop_init_21 = true;
     while(true) {
         if (!loop_init_21) {
-            uint _e245 = i_17;
-            i_17 = (_e245 + 1u);
+            uint _e258 = i_17;
+            i_17 = (_e258 + 1u);
         }
         loop_init_21 = false;
-        uint _e211 = i_17;
-        if ((_e211 < 11u)) {
+        uint _e224 = i_17;
+        if ((_e224 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e214 = i_17;
-            float c_10 = cuts_1[_e214];
-            uint _e217 = i_17;
-            j_3 = _e217;
+            uint _e227 = i_17;
+            float c_10 = cuts_1[_e227];
+            uint _e230 = i_17;
+            j_3 = _e230;
             while(true) {
-                uint _e219 = j_3;
-                if ((_e219 > 0u)) {
-                    uint _e224 = j_3;
-                    float _e228 = cuts_1[(_e224 - 1u)];
-                    local_112 = (_e228 > c_10);
+                uint _e232 = j_3;
+                if ((_e232 > 0u)) {
+                    uint _e237 = j_3;
+                    float _e241 = cuts_1[(_e237 - 1u)];
+                    local_112 = (_e241 > c_10);
                 } else {
                     local_112 = false;
                 }
-                bool _e231 = local_112;
-                if (_e231) {
+                bool _e244 = local_112;
+                if (_e244) {
                 } else {
                     break;
                 }
                 {
-                    uint _e232 = j_3;
-                    uint _e234 = j_3;
-                    float _e238 = cuts_1[(_e234 - 1u)];
-                    cuts_1[_e232] = _e238;
-                    uint _e239 = j_3;
-                    j_3 = (_e239 - 1u);
+                    uint _e245 = j_3;
+                    uint _e247 = j_3;
+                    float _e251 = cuts_1[(_e247 - 1u)];
+                    cuts_1[_e245] = _e251;
+                    uint _e252 = j_3;
+                    j_3 = (_e252 - 1u);
                 }
             }
-            uint _e242 = j_3;
-            cuts_1[_e242] = c_10;
+            uint _e255 = j_3;
+            cuts_1[_e255] = c_10;
         }
     }
     float hi_5 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
@@ -4724,67 +4738,120 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e292 = i_18;
-            i_18 = (_e292 + 1u);
+            uint _e305 = i_18;
+            i_18 = (_e305 + 1u);
         }
         loop_init_22 = false;
-        uint _e263 = i_18;
-        if ((_e263 < 11u)) {
+        uint _e276 = i_18;
+        if ((_e276 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e266 = i_18;
-            float _e268 = cuts_1[_e266];
-            uint _e270 = k_5;
-            float _e272 = g_22.gamma[_e270];
-            if ((_e268 > _e272)) {
-                uint _e276 = i_18;
-                float _e278 = cuts_1[_e276];
-                local_113 = (_e278 < hi_5);
+            uint _e279 = i_18;
+            float _e281 = cuts_1[_e279];
+            uint _e283 = k_5;
+            float _e285 = g_22.gamma[_e283];
+            if ((_e281 > _e285)) {
+                uint _e289 = i_18;
+                float _e291 = cuts_1[_e289];
+                local_113 = (_e291 < hi_5);
             } else {
                 local_113 = false;
             }
-            bool _e281 = local_113;
-            if (_e281) {
-                uint _e282 = k_5;
-                k_5 = (_e282 + 1u);
-                uint _e286 = k_5;
-                uint _e288 = i_18;
-                float _e290 = cuts_1[_e288];
-                g_22.gamma[_e286] = _e290;
+            bool _e294 = local_113;
+            if (_e294) {
+                uint _e295 = k_5;
+                k_5 = (_e295 + 1u);
+                uint _e299 = k_5;
+                uint _e301 = i_18;
+                float _e303 = cuts_1[_e301];
+                g_22.gamma[_e299] = _e303;
             }
         }
     }
-    uint _e295 = k_5;
-    g_22.gamma[(_e295 + 1u)] = hi_5;
-    uint _e300 = k_5;
-    g_22.panels = (_e300 + 1u);
+    uint _e308 = k_5;
+    g_22.gamma[(_e308 + 1u)] = hi_5;
+    uint _e313 = k_5;
+    g_22.panels = (_e313 + 1u);
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e315 = i_19;
-            i_19 = (_e315 + 1u);
+            uint _e328 = i_19;
+            i_19 = (_e328 + 1u);
         }
         loop_init_23 = false;
-        uint _e305 = i_19;
-        uint _e307 = g_22.panels;
-        if ((_e305 <= _e307)) {
+        uint _e318 = i_19;
+        uint _e320 = g_22.panels;
+        if ((_e318 <= _e320)) {
         } else {
             break;
         }
         {
-            uint _e310 = i_19;
-            uint _e312 = i_19;
-            g_22.edges[_e310] = float(_e312);
+            uint _e323 = i_19;
+            uint _e325 = i_19;
+            g_22.edges[_e323] = float(_e325);
         }
     }
-    AirlightOuter _e317 = g_22;
-    return _e317;
+    if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+        bool loop_init_24 = true;
+        while(true) {
+            if (!loop_init_24) {
+                uint _e388 = i_20;
+                i_20 = (_e388 + 1u);
+            }
+            loop_init_24 = false;
+            uint _e335 = i_20;
+            uint _e336 = k_5;
+            if ((_e335 <= _e336)) {
+            } else {
+                break;
+            }
+            {
+                uint _e339 = i_20;
+                float e_4 = g_22.gamma[_e339];
+                if (!((e_4 == kinks[0]))) {
+                    local_114 = (e_4 == kinks[1]);
+                } else {
+                    local_114 = true;
+                }
+                bool _e350 = local_114;
+                if (!(_e350)) {
+                    local_115 = (e_4 == kinks[2]);
+                } else {
+                    local_115 = true;
+                }
+                bool _e357 = local_115;
+                if (!(_e357)) {
+                    local_116 = (e_4 == kinks[3]);
+                } else {
+                    local_116 = true;
+                }
+                bool _e364 = local_116;
+                if (!(_e364)) {
+                    local_117 = (e_4 == kinks[4]);
+                } else {
+                    local_117 = true;
+                }
+                bool _e371 = local_117;
+                if (!(_e371)) {
+                    local_118 = (e_4 == kinks[5]);
+                } else {
+                    local_118 = true;
+                }
+                bool kink = local_118;
+                uint _e380 = g_22.smooth_edges;
+                uint _e382 = i_20;
+                g_22.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
+            }
+        }
+    }
+    AirlightOuter _e390 = g_22;
+    return _e390;
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18) {
-    bool local_114 = false;
+    bool local_119 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -4794,11 +4861,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     float clip = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_114 = (clip > 0.0);
+        local_119 = (clip > 0.0);
     } else {
-        local_114 = false;
+        local_119 = false;
     }
-    bool _e43 = local_114;
+    bool _e43 = local_119;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -4817,7 +4884,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, boo
 
 float airlight_arc_end(float x_19, float cut) {
     float end_1 = 0.0;
-    bool local_115 = false;
+    bool local_120 = false;
     end_1 = x_19;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -4833,11 +4900,11 @@ float airlight_arc_end(float x_19, float cut) {
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_115 = (_e21 < cut);
+        local_120 = (_e21 < cut);
     } else {
-        local_115 = false;
+        local_120 = false;
     }
-    bool _e24 = local_115;
+    bool _e24 = local_120;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -4846,28 +4913,28 @@ vec2[5] airlight_lobe_rule() {
 }
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
-    bool local_116 = false;
+    bool local_121 = false;
     float sum_5 = 0.0;
     uint k_6 = 0u;
     float w_7 = (hi_3 - lo_4);
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
-        local_116 = !((_e14 > 0.0));
+        local_121 = !((_e14 > 0.0));
     } else {
-        local_116 = true;
+        local_121 = true;
     }
-    bool _e19 = local_116;
+    bool _e19 = local_121;
     if (_e19) {
         return 0.0;
     }
     vec2 _e21[5] = airlight_lobe_rule();
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
+        if (!loop_init_25) {
             uint _e43 = k_6;
             k_6 = (_e43 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e26 = k_6;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
@@ -4890,7 +4957,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float reach = 1.0;
     vec2 inner = vec2(0.0);
     float sum_6 = 0.0;
-    uint i_20 = 0u;
+    uint i_21 = 0u;
     float c_11 = (g_23.cos_r * cs.x);
     float d_4 = (g_23.sin_r * cs.y);
     float peak = (c_11 + d_4);
@@ -4926,22 +4993,22 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float _e90 = inner.y;
     float edges[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
-            uint _e112 = i_20;
-            i_20 = (_e112 + 1u);
+        if (!loop_init_26) {
+            uint _e112 = i_21;
+            i_21 = (_e112 + 1u);
         }
-        loop_init_25 = false;
-        uint _e99 = i_20;
+        loop_init_26 = false;
+        uint _e99 = i_21;
         if ((_e99 < 3u)) {
         } else {
             break;
         }
         {
             float _e102 = sum_6;
-            uint _e103 = i_20;
-            uint _e105 = i_20;
+            uint _e103 = i_21;
+            uint _e105 = i_21;
             float _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
@@ -4951,34 +5018,34 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
 }
 
 AirlightOuter airlight_outer(AirlightScene s_25) {
-    AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0);
-    bool local_117 = false;
-    bool local_118 = false;
-    float s_star = 0.0;
-    float t_star = 0.0;
-    bool local_119 = false;
-    bool local_120 = false;
-    bool local_121 = false;
+    AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
     bool local_122 = false;
     bool local_123 = false;
+    float s_star = 0.0;
+    float t_star = 0.0;
     bool local_124 = false;
-    float scale = 0.0;
     bool local_125 = false;
     bool local_126 = false;
     bool local_127 = false;
     bool local_128 = false;
     bool local_129 = false;
-    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = float[3](0.0, 0.0, 0.0);
+    float scale = 0.0;
     bool local_130 = false;
-    uint i_21 = 0u;
     bool local_131 = false;
     bool local_132 = false;
     bool local_133 = false;
     bool local_134 = false;
-    uint n_1 = 0u;
-    uint i_22 = 0u;
+    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_135 = false;
+    uint i_22 = 0u;
+    bool local_136 = false;
+    bool local_137 = false;
+    bool local_138 = false;
+    bool local_139 = false;
+    uint n_1 = 0u;
+    uint i_23 = 0u;
+    bool local_140 = false;
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_25);
         return _e4;
@@ -4992,27 +5059,27 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     vec3 ab_1 = (s_25.light_end - s_25.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_117 = (s_25.intensity == 0.0);
+        local_122 = (s_25.intensity == 0.0);
     } else {
-        local_117 = true;
+        local_122 = true;
     }
-    bool _e26 = local_117;
+    bool _e26 = local_122;
     if (!(_e26)) {
-        local_118 = (s_25.sigma_s == 0.0);
+        local_123 = (s_25.sigma_s == 0.0);
     } else {
-        local_118 = true;
+        local_123 = true;
     }
-    bool _e34 = local_118;
+    bool _e34 = local_123;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
         return _e37;
     }
-    vec3 e_4 = (ab_1 / vec3(_e15));
+    vec3 e_5 = (ab_1 / vec3(_e15));
     vec3 _e41 = airlight_normalize(s_25.dir);
     vec3 w0_ = (s_25.light_position - s_25.origin);
-    float cos_a_2 = dot(e_4, _e41);
-    float along_e = dot(e_4, w0_);
+    float cos_a_2 = dot(e_5, _e41);
+    float along_e = dot(e_5, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_4 = ((s_25.flags & 1u) != 0u);
@@ -5023,101 +5090,101 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
+    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_119 = (sin_a_1 > 0.0);
+        local_124 = (sin_a_1 > 0.0);
     } else {
-        local_119 = false;
+        local_124 = false;
     }
-    bool _e84 = local_119;
+    bool _e84 = local_124;
     if (_e84) {
         float _e87 = s_star;
-        local_120 = (_e87 >= 0.0);
+        local_125 = (_e87 >= 0.0);
     } else {
-        local_120 = false;
+        local_125 = false;
     }
-    bool _e91 = local_120;
+    bool _e91 = local_125;
     if (_e91) {
         float _e94 = s_star;
-        local_121 = (_e94 <= _e15);
+        local_126 = (_e94 <= _e15);
     } else {
-        local_121 = false;
+        local_126 = false;
     }
-    bool _e97 = local_121;
+    bool _e97 = local_126;
     if (_e97) {
         float _e101 = t_star;
-        local_122 = (s_25.t_min <= _e101);
+        local_127 = (s_25.t_min <= _e101);
     } else {
-        local_122 = false;
+        local_127 = false;
     }
-    bool _e104 = local_122;
+    bool _e104 = local_127;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_124 = (_e110 <= s_25.t_max);
+            local_129 = (_e110 <= s_25.t_max);
         } else {
-            local_124 = true;
+            local_129 = true;
         }
-        bool _e114 = local_124;
-        local_123 = _e114;
+        bool _e114 = local_129;
+        local_128 = _e114;
     } else {
-        local_123 = false;
+        local_128 = false;
     }
-    bool _e116 = local_123;
+    bool _e116 = local_128;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_125 = (_e73 > 0.0);
+        local_130 = (_e73 > 0.0);
     } else {
-        local_125 = false;
+        local_130 = false;
     }
-    bool _e129 = local_125;
+    bool _e129 = local_130;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_126 = (_e136 < (_e15 + _e15));
+        local_131 = (_e136 < (_e15 + _e15));
     } else {
-        local_126 = false;
+        local_131 = false;
     }
-    bool _e140 = local_126;
+    bool _e140 = local_131;
     if (_e140) {
         float _e143 = scale;
-        local_127 = (_e143 < _e15);
+        local_132 = (_e143 < _e15);
     } else {
-        local_127 = false;
+        local_132 = false;
     }
-    bool near_1 = local_127;
+    bool near_1 = local_132;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_128 = _e154;
+        local_133 = _e154;
     } else {
-        local_128 = false;
+        local_133 = false;
     }
-    bool _e156 = local_128;
+    bool _e156 = local_133;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_129 = _e163;
+        local_134 = _e163;
     } else {
-        local_129 = false;
+        local_134 = false;
     }
-    bool _e165 = local_129;
+    bool _e165 = local_134;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_4;
+    g_24.e = e_5;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -5130,68 +5197,68 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_130 = (min(-(_e194), _e197) < 0.5);
+        local_135 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_130 = false;
+        local_135 = false;
     }
-    bool sliver = local_130;
-    bool loop_init_26 = true;
+    bool sliver = local_135;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
-            uint _e252 = i_21;
-            i_21 = (_e252 + 1u);
+        if (!loop_init_27) {
+            uint _e252 = i_22;
+            i_22 = (_e252 + 1u);
         }
-        loop_init_26 = false;
-        uint _e205 = i_21;
+        loop_init_27 = false;
+        uint _e205 = i_22;
         if ((_e205 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e208 = i_21;
+            uint _e208 = i_22;
             if ((_e208 == 0u)) {
-                local_131 = sliver;
+                local_136 = sliver;
             } else {
-                local_131 = false;
+                local_136 = false;
             }
-            bool _e214 = local_131;
+            bool _e214 = local_136;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
-                uint _e219 = i_21;
-                local_132 = (_e219 > 0u);
+                uint _e219 = i_22;
+                local_137 = (_e219 > 0u);
             } else {
-                local_132 = false;
+                local_137 = false;
             }
-            bool _e223 = local_132;
+            bool _e223 = local_137;
             if (_e223) {
                 continue;
             }
-            uint _e224 = i_21;
+            uint _e224 = i_22;
             if ((_e224 == 2u)) {
-                local_133 = infinite_4;
+                local_138 = infinite_4;
             } else {
-                local_133 = false;
+                local_138 = false;
             }
-            bool _e230 = local_133;
+            bool _e230 = local_138;
             if (_e230) {
                 continue;
             }
-            uint _e231 = i_21;
+            uint _e231 = i_22;
             float _e233 = at[_e231];
             if ((_e233 > 0.0)) {
-                uint _e238 = i_21;
+                uint _e238 = i_22;
                 float _e240 = at[_e238];
-                local_134 = (_e240 < _e15);
+                local_139 = (_e240 < _e15);
             } else {
-                local_134 = false;
+                local_139 = false;
             }
-            bool _e243 = local_134;
+            bool _e243 = local_139;
             if (_e243) {
-                uint _e244 = i_21;
+                uint _e244 = i_22;
                 AirlightOuter _e246 = g_24;
-                uint _e247 = i_21;
+                uint _e247 = i_22;
                 float _e249 = at[_e247];
                 float _e250 = airlight_to_w(_e246, _e249);
                 cuts_2[_e244] = _e250;
@@ -5227,36 +5294,36 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter _e291 = g_24;
     float _e293 = airlight_to_w(_e291, 0.0);
     g_24.edges[0] = _e293;
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
-            uint _e327 = i_22;
-            i_22 = (_e327 + 1u);
+        if (!loop_init_28) {
+            uint _e327 = i_23;
+            i_23 = (_e327 + 1u);
         }
-        loop_init_27 = false;
-        uint _e298 = i_22;
+        loop_init_28 = false;
+        uint _e298 = i_23;
         if ((_e298 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e301 = i_22;
+            uint _e301 = i_23;
             float _e303 = cuts_2[_e301];
             uint _e305 = n_1;
             float _e307 = g_24.edges[_e305];
             if ((_e303 > _e307)) {
-                uint _e311 = i_22;
+                uint _e311 = i_23;
                 float _e313 = cuts_2[_e311];
-                local_135 = (_e313 < _e288);
+                local_140 = (_e313 < _e288);
             } else {
-                local_135 = false;
+                local_140 = false;
             }
-            bool _e316 = local_135;
+            bool _e316 = local_140;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = (_e317 + 1u);
                 uint _e321 = n_1;
-                uint _e323 = i_22;
+                uint _e323 = i_23;
                 float _e325 = cuts_2[_e323];
                 g_24.edges[_e321] = _e325;
             }
@@ -5276,6 +5343,14 @@ AirlightCanonical airlight_no_canonical() {
 
 AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x_20) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
+    float gamma_1 = 0.0;
+    float jacobian = 0.0;
+    bool local_141 = false;
+    bool local_142 = false;
+    bool local_143 = false;
+    bool local_144 = false;
+    bool local_145 = false;
+    bool local_146 = false;
     float weight = 0.0;
     float at_1 = 0.0;
     float ds = 1.0;
@@ -5284,42 +5359,98 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_23 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
-        float t_7 = (x_20 - float(i_23));
-        float a_29 = g_25.gamma[i_23];
-        float b_19 = g_25.gamma[(i_23 + 1u)];
-        float gamma_1 = (a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3.0 - t_7) - t_7)));
-        float jacobian = ((((b_19 - a_29) * 6.0) * t_7) * (1.0 - t_7));
-        if (!((jacobian > 0.0))) {
-            AirlightScene _e46 = p;
-            return AirlightNode(_e46, 0.0, _e4, false);
+        uint i_24 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
+        float t_7 = (x_20 - float(i_24));
+        float a_29 = g_25.gamma[i_24];
+        float b_19 = g_25.gamma[(i_24 + 1u)];
+        float w_8 = (b_19 - a_29);
+        float u_4 = (1.0 - t_7);
+        bool smooth_a = (((g_25.smooth_edges >> i_24) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_24 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_29 + (((w_8 * t_7) * t_7) * ((3.0 - t_7) - t_7)));
+        jacobian = (((w_8 * 6.0) * t_7) * u_4);
+        float _e58 = gamma_1;
+        if (smooth_b) {
+            local_141 = !(smooth_a);
+        } else {
+            local_141 = false;
         }
-        vec2 _e50 = airlight_cos_sin_half_turn(gamma_1);
-        float _e55 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e50.x, _e50.y);
-        if (!((_e55 > 0.0))) {
-            AirlightScene _e59 = p;
-            return AirlightNode(_e59, 0.0, _e4, false);
+        bool _e66 = local_141;
+        gamma_1 = (_e66 ? (a_29 + ((w_8 * t_7) * t_7)) : _e58);
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_142 = !(smooth_a);
+        } else {
+            local_142 = false;
+        }
+        bool _e75 = local_142;
+        jacobian = (_e75 ? (w_8 * (t_7 + t_7)) : _e68);
+        float _e77 = gamma_1;
+        if (smooth_a) {
+            local_143 = !(smooth_b);
+        } else {
+            local_143 = false;
+        }
+        bool _e85 = local_143;
+        gamma_1 = (_e85 ? (b_19 - ((w_8 * u_4) * u_4)) : _e77);
+        float _e87 = jacobian;
+        if (smooth_a) {
+            local_144 = !(smooth_b);
+        } else {
+            local_144 = false;
+        }
+        bool _e94 = local_144;
+        jacobian = (_e94 ? (w_8 * (u_4 + u_4)) : _e87);
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_145 = smooth_b;
+        } else {
+            local_145 = false;
+        }
+        bool _e102 = local_145;
+        gamma_1 = (_e102 ? (a_29 + (w_8 * t_7)) : _e96);
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_146 = smooth_b;
+        } else {
+            local_146 = false;
+        }
+        bool _e108 = local_146;
+        jacobian = (_e108 ? w_8 : _e104);
+        float _e110 = jacobian;
+        if (!((_e110 > 0.0))) {
+            AirlightScene _e114 = p;
+            return AirlightNode(_e114, 0.0, _e4, false);
+        }
+        float _e118 = gamma_1;
+        vec2 _e119 = airlight_cos_sin_half_turn(_e118);
+        float _e124 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e119.x, _e119.y);
+        if (!((_e124 > 0.0))) {
+            AirlightScene _e128 = p;
+            return AirlightNode(_e128, 0.0, _e4, false);
         }
         if ((s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-            vec2 _e75 = airlight_cos_sin_half_turn(_e55);
-            float arc = (2.0 * (((g_25.cos_a * _e50.x) * _e55) + ((g_25.sin_a * _e50.y) * _e75.y)));
+            vec2 _e144 = airlight_cos_sin_half_turn(_e124);
+            float arc = (2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987) * arc);
         } else {
             float n_4 = s_26.brdf_exponent;
-            float _e92 = airlight_lobe_arcs(g_25, _e50, gamma_1, _e55, n_4);
-            weight = (((s_26.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e92);
+            float _e161 = gamma_1;
+            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_4);
+            weight = (((s_26.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162);
         }
-        p.dir = ((_e50.x * g_25.l) + (_e50.y * g_25.u));
+        p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0.0;
         p.t_max = 0.0;
         p.flags = 1u;
-        float sin_g_1 = max(_e50.y, 0.0);
+        float sin_g_1 = max(_e119.y, 0.0);
         float h_8 = (g_25.d * sin_g_1);
-        float d_c_2 = ((h_8 > 0.0) ? ((_e50.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
-        AirlightCanonical exact = AirlightCanonical(h_8, (g_25.d * _e50.x), ((_e50.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
-        AirlightScene _e136 = p;
-        float _e137 = weight;
-        return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
+        float d_c_2 = ((h_8 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
+        AirlightCanonical exact = AirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
+        AirlightScene _e206 = p;
+        float _e207 = weight;
+        float _e210 = jacobian;
+        return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if ((s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_20;
@@ -5327,25 +5458,25 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
             ds = (g_25.scale * cosh(x_20));
         }
-        float _e162 = at_1;
-        p.light_position = (g_25.a + (_e162 * g_25.e));
-        AirlightScene _e166 = p;
-        float _e167 = ds;
-        return AirlightNode(_e166, _e167, _e4, false);
+        float _e233 = at_1;
+        p.light_position = (g_25.a + (_e233 * g_25.e));
+        AirlightScene _e237 = p;
+        float _e238 = ds;
+        return AirlightNode(_e237, _e238, _e4, false);
     }
-    AirlightScene _e170 = p;
-    return AirlightNode(_e170, 1.0, _e4, false);
+    AirlightScene _e241 = p;
+    return AirlightNode(_e241, 1.0, _e4, false);
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_136 = false;
+    bool local_147 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_136 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_147 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_136 = true;
+        local_147 = true;
     }
-    bool _e11 = local_136;
+    bool _e11 = local_147;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -5354,17 +5485,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_2) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_137 = false;
+    bool local_148 = false;
     AirlightCanonical g_26 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_2 = n_2.scene;
     bool _e7 = airlight_vec_finite(p_2.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_2.dir);
-        local_137 = _e11;
+        local_148 = _e11;
     } else {
-        local_137 = false;
+        local_148 = false;
     }
-    bool _e13 = local_137;
+    bool _e13 = local_148;
     if (_e13) {
         g_26 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -5388,21 +5519,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
-    bool local_138 = false;
-    bool local_139 = false;
+    bool local_149 = false;
+    bool local_150 = false;
     bool _e1 = airlight_valid(s_27);
     if (!(!(_e1))) {
-        local_138 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_149 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_138 = true;
+        local_149 = true;
     }
-    bool _e10 = local_138;
+    bool _e10 = local_149;
     if (!(_e10)) {
-        local_139 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_150 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_139 = true;
+        local_150 = true;
     }
-    bool _e18 = local_139;
+    bool _e18 = local_150;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5411,21 +5542,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_27) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_28) {
-    bool local_140 = false;
-    bool local_141 = false;
+    bool local_151 = false;
+    bool local_152 = false;
     bool _e1 = airlight_valid(s_28);
     if (!(!(_e1))) {
-        local_140 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_151 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_140 = true;
+        local_151 = true;
     }
-    bool _e10 = local_140;
+    bool _e10 = local_151;
     if (!(_e10)) {
-        local_141 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_152 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_141 = true;
+        local_152 = true;
     }
-    bool _e18 = local_141;
+    bool _e18 = local_152;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -5460,14 +5591,14 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     float k_7 = 0.0;
     float gauss = 0.0;
     uint j_4 = 0u;
-    bool local_142 = false;
+    bool local_153 = false;
     float f = 0.0;
-    bool local_143 = false;
+    bool local_154 = false;
     bool split = false;
     uint tries = 0u;
-    bool local_144 = false;
-    bool local_145 = false;
-    bool local_146 = false;
+    bool local_155 = false;
+    bool local_156 = false;
+    bool local_157 = false;
     bool _e1 = airlight_valid(s_29);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -5483,13 +5614,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
     a_17 = _e6.edges[0];
     b_13 = _e6.edges[1];
     uint evaluations = ((2u * _e6.max_panels) - 1u);
-    bool loop_init_28 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_28) {
+        if (!loop_init_29) {
             uint _e250 = step_2;
             step_2 = (_e250 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_29 = false;
         uint _e78 = step_2;
         if ((_e78 < evaluations)) {
         } else {
@@ -5505,13 +5636,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
             k_7 = 0.0;
             gauss = 0.0;
             j_4 = 0u;
-            bool loop_init_29 = true;
+            bool loop_init_30 = true;
             while(true) {
-                if (!loop_init_29) {
+                if (!loop_init_30) {
                     uint _e156 = j_4;
                     j_4 = (_e156 + 1u);
                 }
-                loop_init_29 = false;
+                loop_init_30 = false;
                 uint _e96 = j_4;
                 if ((_e96 < 7u)) {
                 } else {
@@ -5523,13 +5654,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                     uint _e109 = j_4;
                     if (((_e109 & 1u) == 0u)) {
                         uint _e116 = j_4;
-                        local_142 = (_e116 < 6u);
+                        local_153 = (_e116 < 6u);
                     } else {
-                        local_142 = false;
+                        local_153 = false;
                     }
-                    bool _e120 = local_142;
-                    float w_8 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
-                    AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_8);
+                    bool _e120 = local_153;
+                    float w_9 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
+                    AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_9);
                     f = 0.0;
                     if ((_e122.weight != 0.0)) {
                         AirlightResult _e128 = airlight_node_integral(_e122);
@@ -5537,11 +5668,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             return _e128;
                         }
                         if ((s_29.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_143 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_154 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_143 = false;
+                            local_154 = false;
                         }
-                        bool _e141 = local_143;
+                        bool _e141 = local_154;
                         if (_e141) {
                             return _e128;
                         }
@@ -5589,13 +5720,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                 } else {
                     split = false;
                     tries = 0u;
-                    bool loop_init_30 = true;
+                    bool loop_init_31 = true;
                     while(true) {
-                        if (!loop_init_30) {
+                        if (!loop_init_31) {
                             uint _e245 = tries;
                             tries = (_e245 + 1u);
                         }
-                        loop_init_30 = false;
+                        loop_init_31 = false;
                         uint _e197 = tries;
                         if ((_e197 < _e6.max_panels)) {
                         } else {
@@ -5609,18 +5740,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_144 = (_e213 == _e6.max_panels);
+                                local_155 = (_e213 == _e6.max_panels);
                             } else {
-                                local_144 = true;
+                                local_155 = true;
                             }
-                            bool _e217 = local_144;
+                            bool _e217 = local_155;
                             if (!(_e217)) {
                                 bool _e221 = airlight_is_finite(total_4);
-                                local_145 = !(_e221);
+                                local_156 = !(_e221);
                             } else {
-                                local_145 = true;
+                                local_156 = true;
                             }
-                            bool _e224 = local_145;
+                            bool _e224 = local_156;
                             if (_e224) {
                                 break;
                             }
@@ -5630,11 +5761,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_29) {
                             float wb_1 = _e226.y;
                             float mid_1 = (0.5 * (wa_1 + wb_1));
                             if ((mid_1 > wa_1)) {
-                                local_146 = (mid_1 < wb_1);
+                                local_157 = (mid_1 < wb_1);
                             } else {
-                                local_146 = false;
+                                local_157 = false;
                             }
-                            bool _e237 = local_146;
+                            bool _e237 = local_157;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, vec4(_e226.xyz, 0.0));
                                 continue;

@@ -137,6 +137,7 @@ struct AirlightOuter {
     d: f32,
     axis_l: f32,
     axis_u: f32,
+    smooth_edges: u32,
 }
 
 struct AirlightLobe {
@@ -5015,7 +5016,7 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
 
 fn airlight_outer_point(s_23: AirlightScene, max_panels: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f);
+    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
@@ -5030,6 +5031,12 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     var i_18: u32 = 0u;
     var local_113: bool;
     var i_19: u32 = 0u;
+    var i_20: u32 = 1u;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: bool;
+    var local_117: bool;
+    var local_118: bool;
 
     let _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
@@ -5128,110 +5135,168 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             cuts_1[10] = (AIRLIGHT_PI - _e204);
         }
     }
+    let _e210 = cuts_1[0];
+    let _e212 = cuts_1[1];
+    let _e214 = cuts_1[2];
+    let _e216 = cuts_1[3];
+    let _e218 = cuts_1[9];
+    let _e220 = cuts_1[10];
+    let kinks = array<f32, 6>(_e210, _e212, _e214, _e216, _e218, _e220);
     loop {
-        let _e211 = i_17;
-        if (_e211 < 11u) {
+        let _e224 = i_17;
+        if (_e224 < 11u) {
         } else {
             break;
         }
         {
-            let _e214 = i_17;
-            let c_10 = cuts_1[_e214];
-            let _e217 = i_17;
-            j_3 = _e217;
+            let _e227 = i_17;
+            let c_10 = cuts_1[_e227];
+            let _e230 = i_17;
+            j_3 = _e230;
             loop {
-                let _e219 = j_3;
-                if (_e219 > 0u) {
-                    let _e224 = j_3;
-                    let _e228 = cuts_1[(_e224 - 1u)];
-                    local_112 = (_e228 > c_10);
+                let _e232 = j_3;
+                if (_e232 > 0u) {
+                    let _e237 = j_3;
+                    let _e241 = cuts_1[(_e237 - 1u)];
+                    local_112 = (_e241 > c_10);
                 } else {
                     local_112 = false;
                 }
-                let _e231 = local_112;
-                if _e231 {
+                let _e244 = local_112;
+                if _e244 {
                 } else {
                     break;
                 }
                 {
-                    let _e232 = j_3;
-                    let _e234 = j_3;
-                    let _e238 = cuts_1[(_e234 - 1u)];
-                    cuts_1[_e232] = _e238;
-                    let _e239 = j_3;
-                    j_3 = (_e239 - 1u);
+                    let _e245 = j_3;
+                    let _e247 = j_3;
+                    let _e251 = cuts_1[(_e247 - 1u)];
+                    cuts_1[_e245] = _e251;
+                    let _e252 = j_3;
+                    j_3 = (_e252 - 1u);
                 }
             }
-            let _e242 = j_3;
-            cuts_1[_e242] = c_10;
+            let _e255 = j_3;
+            cuts_1[_e255] = c_10;
         }
         continuing {
-            let _e245 = i_17;
-            i_17 = (_e245 + 1u);
+            let _e258 = i_17;
+            i_17 = (_e258 + 1u);
         }
     }
     let hi_5 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
-        let _e263 = i_18;
-        if (_e263 < 11u) {
+        let _e276 = i_18;
+        if (_e276 < 11u) {
         } else {
             break;
         }
         {
-            let _e266 = i_18;
-            let _e268 = cuts_1[_e266];
-            let _e270 = k_5;
-            let _e272 = g_22.gamma[_e270];
-            if (_e268 > _e272) {
-                let _e276 = i_18;
-                let _e278 = cuts_1[_e276];
-                local_113 = (_e278 < hi_5);
+            let _e279 = i_18;
+            let _e281 = cuts_1[_e279];
+            let _e283 = k_5;
+            let _e285 = g_22.gamma[_e283];
+            if (_e281 > _e285) {
+                let _e289 = i_18;
+                let _e291 = cuts_1[_e289];
+                local_113 = (_e291 < hi_5);
             } else {
                 local_113 = false;
             }
-            let _e281 = local_113;
-            if _e281 {
-                let _e282 = k_5;
-                k_5 = (_e282 + 1u);
-                let _e286 = k_5;
-                let _e288 = i_18;
-                let _e290 = cuts_1[_e288];
-                g_22.gamma[_e286] = _e290;
+            let _e294 = local_113;
+            if _e294 {
+                let _e295 = k_5;
+                k_5 = (_e295 + 1u);
+                let _e299 = k_5;
+                let _e301 = i_18;
+                let _e303 = cuts_1[_e301];
+                g_22.gamma[_e299] = _e303;
             }
         }
         continuing {
-            let _e292 = i_18;
-            i_18 = (_e292 + 1u);
+            let _e305 = i_18;
+            i_18 = (_e305 + 1u);
         }
     }
-    let _e295 = k_5;
-    g_22.gamma[(_e295 + 1u)] = hi_5;
-    let _e300 = k_5;
-    g_22.panels = (_e300 + 1u);
+    let _e308 = k_5;
+    g_22.gamma[(_e308 + 1u)] = hi_5;
+    let _e313 = k_5;
+    g_22.panels = (_e313 + 1u);
     loop {
-        let _e305 = i_19;
-        let _e307 = g_22.panels;
-        if (_e305 <= _e307) {
+        let _e318 = i_19;
+        let _e320 = g_22.panels;
+        if (_e318 <= _e320) {
         } else {
             break;
         }
         {
-            let _e310 = i_19;
-            let _e312 = i_19;
-            g_22.edges[_e310] = f32(_e312);
+            let _e323 = i_19;
+            let _e325 = i_19;
+            g_22.edges[_e323] = f32(_e325);
         }
         continuing {
-            let _e315 = i_19;
-            i_19 = (_e315 + 1u);
+            let _e328 = i_19;
+            i_19 = (_e328 + 1u);
         }
     }
-    let _e317 = g_22;
-    return _e317;
+    if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        loop {
+            let _e335 = i_20;
+            let _e336 = k_5;
+            if (_e335 <= _e336) {
+            } else {
+                break;
+            }
+            {
+                let _e339 = i_20;
+                let e_4 = g_22.gamma[_e339];
+                if !((e_4 == kinks[0])) {
+                    local_114 = (e_4 == kinks[1]);
+                } else {
+                    local_114 = true;
+                }
+                let _e350 = local_114;
+                if !(_e350) {
+                    local_115 = (e_4 == kinks[2]);
+                } else {
+                    local_115 = true;
+                }
+                let _e357 = local_115;
+                if !(_e357) {
+                    local_116 = (e_4 == kinks[3]);
+                } else {
+                    local_116 = true;
+                }
+                let _e364 = local_116;
+                if !(_e364) {
+                    local_117 = (e_4 == kinks[4]);
+                } else {
+                    local_117 = true;
+                }
+                let _e371 = local_117;
+                if !(_e371) {
+                    local_118 = (e_4 == kinks[5]);
+                } else {
+                    local_118 = true;
+                }
+                let kink = local_118;
+                let _e380 = g_22.smooth_edges;
+                let _e382 = i_20;
+                g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
+            }
+            continuing {
+                let _e388 = i_20;
+                i_20 = (_e388 + 1u);
+            }
+        }
+    }
+    let _e390 = g_22;
+    return _e390;
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_114: bool;
+    var local_119: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5242,11 +5307,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_114 = (clip > 0f);
+        local_119 = (clip > 0f);
     } else {
-        local_114 = false;
+        local_119 = false;
     }
-    let _e43 = local_114;
+    let _e43 = local_119;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5265,7 +5330,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_115: bool;
+    var local_120: bool;
 
     end_1 = x_19;
     let _e3 = end_1;
@@ -5282,11 +5347,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_115 = (_e21 < cut);
+        local_120 = (_e21 < cut);
     } else {
-        local_115 = false;
+        local_120 = false;
     }
-    let _e24 = local_115;
+    let _e24 = local_120;
     return select(0f, _e15, _e24);
 }
 
@@ -5295,18 +5360,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_116: bool;
+    var local_121: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
     let w_7 = (hi_3 - lo_4);
     if !(!((w_7 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_7)));
-        local_116 = !((_e14 > 0f));
+        local_121 = !((_e14 > 0f));
     } else {
-        local_116 = true;
+        local_121 = true;
     }
-    let _e19 = local_116;
+    let _e19 = local_121;
     if _e19 {
         return 0f;
     }
@@ -5338,7 +5403,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var reach: f32 = 1f;
     var inner: vec2<f32> = vec2(0f);
     var sum_6: f32 = 0f;
-    var i_20: u32 = 0u;
+    var i_21: u32 = 0u;
 
     let c_11 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
@@ -5376,21 +5441,21 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
-        let _e99 = i_20;
+        let _e99 = i_21;
         if (_e99 < 3u) {
         } else {
             break;
         }
         {
             let _e102 = sum_6;
-            let _e103 = i_20;
-            let _e105 = i_20;
+            let _e103 = i_21;
+            let _e105 = i_21;
             let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
-            let _e112 = i_20;
-            i_20 = (_e112 + 1u);
+            let _e112 = i_21;
+            i_21 = (_e112 + 1u);
         }
     }
     let _e114 = sum_6;
@@ -5399,33 +5464,33 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_117: bool;
-    var local_118: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_119: bool;
-    var local_120: bool;
-    var local_121: bool;
     var local_122: bool;
     var local_123: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_124: bool;
-    var scale: f32 = 0f;
     var local_125: bool;
     var local_126: bool;
     var local_127: bool;
     var local_128: bool;
     var local_129: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
+    var scale: f32 = 0f;
     var local_130: bool;
-    var i_21: u32 = 0u;
     var local_131: bool;
     var local_132: bool;
     var local_133: bool;
     var local_134: bool;
-    var n_1: u32 = 0u;
-    var i_22: u32 = 0u;
+    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_135: bool;
+    var i_22: u32 = 0u;
+    var local_136: bool;
+    var local_137: bool;
+    var local_138: bool;
+    var local_139: bool;
+    var n_1: u32 = 0u;
+    var i_23: u32 = 0u;
+    var local_140: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_25);
@@ -5440,27 +5505,27 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_25.light_end - s_25.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_117 = (s_25.intensity == 0f);
+        local_122 = (s_25.intensity == 0f);
     } else {
-        local_117 = true;
+        local_122 = true;
     }
-    let _e26 = local_117;
+    let _e26 = local_122;
     if !(_e26) {
-        local_118 = (s_25.sigma_s == 0f);
+        local_123 = (s_25.sigma_s == 0f);
     } else {
-        local_118 = true;
+        local_123 = true;
     }
-    let _e34 = local_118;
+    let _e34 = local_123;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
         return _e37;
     }
-    let e_4 = (ab_1 / vec3(_e15));
+    let e_5 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_25.dir);
     let w0_ = (s_25.light_position - s_25.origin);
-    let cos_a_2 = dot(e_4, _e41);
-    let along_e = dot(e_4, w0_);
+    let cos_a_2 = dot(e_5, _e41);
+    let along_e = dot(e_5, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_4 = ((s_25.flags & 1u) != 0u);
@@ -5471,101 +5536,101 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_4 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_119 = (sin_a_1 > 0f);
+        local_124 = (sin_a_1 > 0f);
     } else {
-        local_119 = false;
+        local_124 = false;
     }
-    let _e84 = local_119;
+    let _e84 = local_124;
     if _e84 {
         let _e87 = s_star;
-        local_120 = (_e87 >= 0f);
+        local_125 = (_e87 >= 0f);
     } else {
-        local_120 = false;
+        local_125 = false;
     }
-    let _e91 = local_120;
+    let _e91 = local_125;
     if _e91 {
         let _e94 = s_star;
-        local_121 = (_e94 <= _e15);
+        local_126 = (_e94 <= _e15);
     } else {
-        local_121 = false;
+        local_126 = false;
     }
-    let _e97 = local_121;
+    let _e97 = local_126;
     if _e97 {
         let _e101 = t_star;
-        local_122 = (s_25.t_min <= _e101);
+        local_127 = (s_25.t_min <= _e101);
     } else {
-        local_122 = false;
+        local_127 = false;
     }
-    let _e104 = local_122;
+    let _e104 = local_127;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_124 = (_e110 <= s_25.t_max);
+            local_129 = (_e110 <= s_25.t_max);
         } else {
-            local_124 = true;
+            local_129 = true;
         }
-        let _e114 = local_124;
-        local_123 = _e114;
+        let _e114 = local_129;
+        local_128 = _e114;
     } else {
-        local_123 = false;
+        local_128 = false;
     }
-    let _e116 = local_123;
+    let _e116 = local_128;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_125 = (_e73 > 0f);
+        local_130 = (_e73 > 0f);
     } else {
-        local_125 = false;
+        local_130 = false;
     }
-    let _e129 = local_125;
+    let _e129 = local_130;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_126 = (_e136 < (_e15 + _e15));
+        local_131 = (_e136 < (_e15 + _e15));
     } else {
-        local_126 = false;
+        local_131 = false;
     }
-    let _e140 = local_126;
+    let _e140 = local_131;
     if _e140 {
         let _e143 = scale;
-        local_127 = (_e143 < _e15);
+        local_132 = (_e143 < _e15);
     } else {
-        local_127 = false;
+        local_132 = false;
     }
-    let near_1 = local_127;
+    let near_1 = local_132;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_128 = _e154;
+        local_133 = _e154;
     } else {
-        local_128 = false;
+        local_133 = false;
     }
-    let _e156 = local_128;
+    let _e156 = local_133;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_129 = _e163;
+        local_134 = _e163;
     } else {
-        local_129 = false;
+        local_134 = false;
     }
-    let _e165 = local_129;
+    let _e165 = local_134;
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_4;
+    g_24.e = e_5;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -5578,70 +5643,70 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_24;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_130 = (min(-(_e194), _e197) < 0.5f);
+        local_135 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_130 = false;
+        local_135 = false;
     }
-    let sliver = local_130;
+    let sliver = local_135;
     loop {
-        let _e205 = i_21;
+        let _e205 = i_22;
         if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_21;
+            let _e208 = i_22;
             if (_e208 == 0u) {
-                local_131 = sliver;
+                local_136 = sliver;
             } else {
-                local_131 = false;
+                local_136 = false;
             }
-            let _e214 = local_131;
+            let _e214 = local_136;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_21;
-                local_132 = (_e219 > 0u);
+                let _e219 = i_22;
+                local_137 = (_e219 > 0u);
             } else {
-                local_132 = false;
+                local_137 = false;
             }
-            let _e223 = local_132;
+            let _e223 = local_137;
             if _e223 {
                 continue;
             }
-            let _e224 = i_21;
+            let _e224 = i_22;
             if (_e224 == 2u) {
-                local_133 = infinite_4;
+                local_138 = infinite_4;
             } else {
-                local_133 = false;
+                local_138 = false;
             }
-            let _e230 = local_133;
+            let _e230 = local_138;
             if _e230 {
                 continue;
             }
-            let _e231 = i_21;
+            let _e231 = i_22;
             let _e233 = at[_e231];
             if (_e233 > 0f) {
-                let _e238 = i_21;
+                let _e238 = i_22;
                 let _e240 = at[_e238];
-                local_134 = (_e240 < _e15);
+                local_139 = (_e240 < _e15);
             } else {
-                local_134 = false;
+                local_139 = false;
             }
-            let _e243 = local_134;
+            let _e243 = local_139;
             if _e243 {
-                let _e244 = i_21;
+                let _e244 = i_22;
                 let _e246 = g_24;
-                let _e247 = i_21;
+                let _e247 = i_22;
                 let _e249 = at[_e247];
                 let _e250 = airlight_to_w(_e246, _e249);
                 cuts_2[_e244] = _e250;
             }
         }
         continuing {
-            let _e252 = i_21;
-            i_21 = (_e252 + 1u);
+            let _e252 = i_22;
+            i_22 = (_e252 + 1u);
         }
     }
     let _e255 = cuts_2[1];
@@ -5674,36 +5739,36 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e293 = airlight_to_w(_e291, 0f);
     g_24.edges[0] = _e293;
     loop {
-        let _e298 = i_22;
+        let _e298 = i_23;
         if (_e298 < 3u) {
         } else {
             break;
         }
         {
-            let _e301 = i_22;
+            let _e301 = i_23;
             let _e303 = cuts_2[_e301];
             let _e305 = n_1;
             let _e307 = g_24.edges[_e305];
             if (_e303 > _e307) {
-                let _e311 = i_22;
+                let _e311 = i_23;
                 let _e313 = cuts_2[_e311];
-                local_135 = (_e313 < _e288);
+                local_140 = (_e313 < _e288);
             } else {
-                local_135 = false;
+                local_140 = false;
             }
-            let _e316 = local_135;
+            let _e316 = local_140;
             if _e316 {
                 let _e317 = n_1;
                 n_1 = (_e317 + 1u);
                 let _e321 = n_1;
-                let _e323 = i_22;
+                let _e323 = i_23;
                 let _e325 = cuts_2[_e323];
                 g_24.edges[_e321] = _e325;
             }
         }
         continuing {
-            let _e327 = i_22;
-            i_22 = (_e327 + 1u);
+            let _e327 = i_23;
+            i_23 = (_e327 + 1u);
         }
     }
     let _e330 = n_1;
@@ -5720,6 +5785,14 @@ fn airlight_no_canonical() -> AirlightCanonical {
 
 fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> AirlightNode {
     var p: AirlightScene;
+    var gamma_1: f32;
+    var jacobian: f32;
+    var local_141: bool;
+    var local_142: bool;
+    var local_143: bool;
+    var local_144: bool;
+    var local_145: bool;
+    var local_146: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5729,42 +5802,98 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_23 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_7 = (x_20 - f32(i_23));
-        let a_29 = g_25.gamma[i_23];
-        let b_19 = g_25.gamma[(i_23 + 1u)];
-        let gamma_1 = (a_29 + ((((b_19 - a_29) * t_7) * t_7) * ((3f - t_7) - t_7)));
-        let jacobian = ((((b_19 - a_29) * 6f) * t_7) * (1f - t_7));
-        if !((jacobian > 0f)) {
-            let _e46 = p;
-            return AirlightNode(_e46, 0f, _e4, false);
+        let i_24 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
+        let t_7 = (x_20 - f32(i_24));
+        let a_29 = g_25.gamma[i_24];
+        let b_19 = g_25.gamma[(i_24 + 1u)];
+        let w_8 = (b_19 - a_29);
+        let u_4 = (1f - t_7);
+        let smooth_a = (((g_25.smooth_edges >> i_24) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_24 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_29 + (((w_8 * t_7) * t_7) * ((3f - t_7) - t_7)));
+        jacobian = (((w_8 * 6f) * t_7) * u_4);
+        let _e58 = gamma_1;
+        if smooth_b {
+            local_141 = !(smooth_a);
+        } else {
+            local_141 = false;
         }
-        let _e50 = airlight_cos_sin_half_turn(gamma_1);
-        let _e55 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e50.x, _e50.y);
-        if !((_e55 > 0f)) {
-            let _e59 = p;
-            return AirlightNode(_e59, 0f, _e4, false);
+        let _e66 = local_141;
+        gamma_1 = select(_e58, (a_29 + ((w_8 * t_7) * t_7)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
+            local_142 = !(smooth_a);
+        } else {
+            local_142 = false;
+        }
+        let _e75 = local_142;
+        jacobian = select(_e68, (w_8 * (t_7 + t_7)), _e75);
+        let _e77 = gamma_1;
+        if smooth_a {
+            local_143 = !(smooth_b);
+        } else {
+            local_143 = false;
+        }
+        let _e85 = local_143;
+        gamma_1 = select(_e77, (b_19 - ((w_8 * u_4) * u_4)), _e85);
+        let _e87 = jacobian;
+        if smooth_a {
+            local_144 = !(smooth_b);
+        } else {
+            local_144 = false;
+        }
+        let _e94 = local_144;
+        jacobian = select(_e87, (w_8 * (u_4 + u_4)), _e94);
+        let _e96 = gamma_1;
+        if smooth_a {
+            local_145 = smooth_b;
+        } else {
+            local_145 = false;
+        }
+        let _e102 = local_145;
+        gamma_1 = select(_e96, (a_29 + (w_8 * t_7)), _e102);
+        let _e104 = jacobian;
+        if smooth_a {
+            local_146 = smooth_b;
+        } else {
+            local_146 = false;
+        }
+        let _e108 = local_146;
+        jacobian = select(_e104, w_8, _e108);
+        let _e110 = jacobian;
+        if !((_e110 > 0f)) {
+            let _e114 = p;
+            return AirlightNode(_e114, 0f, _e4, false);
+        }
+        let _e118 = gamma_1;
+        let _e119 = airlight_cos_sin_half_turn(_e118);
+        let _e124 = airlight_half_arc(g_25.cos_a, g_25.sin_a, _e119.x, _e119.y);
+        if !((_e124 > 0f)) {
+            let _e128 = p;
+            return AirlightNode(_e128, 0f, _e4, false);
         }
         if (s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
-            let _e75 = airlight_cos_sin_half_turn(_e55);
-            let arc = (2f * (((g_25.cos_a * _e50.x) * _e55) + ((g_25.sin_a * _e50.y) * _e75.y)));
+            let _e144 = airlight_cos_sin_half_turn(_e124);
+            let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987f) * arc);
         } else {
             let n_4 = s_26.brdf_exponent;
-            let _e92 = airlight_lobe_arcs(g_25, _e50, gamma_1, _e55, n_4);
-            weight = (((s_26.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e92);
+            let _e161 = gamma_1;
+            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_4);
+            weight = (((s_26.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e162);
         }
-        p.dir = ((_e50.x * g_25.l) + (_e50.y * g_25.u));
+        p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
         p.t_max = 0f;
         p.flags = 1u;
-        let sin_g_1 = max(_e50.y, 0f);
+        let sin_g_1 = max(_e119.y, 0f);
         let h_8 = (g_25.d * sin_g_1);
-        let d_c_2 = select(0f, ((_e50.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_8 > 0f));
-        let exact = AirlightCanonical(h_8, (g_25.d * _e50.x), ((_e50.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
-        let _e136 = p;
-        let _e137 = weight;
-        return AirlightNode(_e136, ((_e137 * _e50.y) * jacobian), exact, true);
+        let d_c_2 = select(0f, ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_8 > 0f));
+        let exact = AirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
+        let _e206 = p;
+        let _e207 = weight;
+        let _e210 = jacobian;
+        return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if (s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_20;
@@ -5772,26 +5901,26 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
             ds = (g_25.scale * cosh(x_20));
         }
-        let _e162 = at_1;
-        p.light_position = (g_25.a + (_e162 * g_25.e));
-        let _e166 = p;
-        let _e167 = ds;
-        return AirlightNode(_e166, _e167, _e4, false);
+        let _e233 = at_1;
+        p.light_position = (g_25.a + (_e233 * g_25.e));
+        let _e237 = p;
+        let _e238 = ds;
+        return AirlightNode(_e237, _e238, _e4, false);
     }
-    let _e170 = p;
-    return AirlightNode(_e170, 1f, _e4, false);
+    let _e241 = p;
+    return AirlightNode(_e241, 1f, _e4, false);
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_136: bool;
+    var local_147: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_136 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_147 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_136 = true;
+        local_147 = true;
     }
-    let _e11 = local_136;
+    let _e11 = local_147;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5800,18 +5929,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_137: bool;
+    var local_148: bool;
     var g_26: AirlightCanonical;
 
     let p_2 = n_2.scene;
     let _e7 = airlight_vec_finite(p_2.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_2.dir);
-        local_137 = _e11;
+        local_148 = _e11;
     } else {
-        local_137 = false;
+        local_148 = false;
     }
-    let _e13 = local_137;
+    let _e13 = local_148;
     if _e13 {
         g_26 = n_2.canonical;
         if !(n_2.exact) {
@@ -5835,22 +5964,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
-    var local_138: bool;
-    var local_139: bool;
+    var local_149: bool;
+    var local_150: bool;
 
     let _e1 = airlight_valid(s_27);
     if !(!(_e1)) {
-        local_138 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_149 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_138 = true;
+        local_149 = true;
     }
-    let _e10 = local_138;
+    let _e10 = local_149;
     if !(_e10) {
-        local_139 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_150 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_139 = true;
+        local_150 = true;
     }
-    let _e18 = local_139;
+    let _e18 = local_150;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5859,22 +5988,22 @@ fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_28: AirlightScene) -> AirlightResult {
-    var local_140: bool;
-    var local_141: bool;
+    var local_151: bool;
+    var local_152: bool;
 
     let _e1 = airlight_valid(s_28);
     if !(!(_e1)) {
-        local_140 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_151 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_140 = true;
+        local_151 = true;
     }
-    let _e10 = local_140;
+    let _e10 = local_151;
     if !(_e10) {
-        local_141 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_152 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_141 = true;
+        local_152 = true;
     }
-    let _e18 = local_141;
+    let _e18 = local_152;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5909,14 +6038,14 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
     var k_7: f32;
     var gauss: f32;
     var j_4: u32;
-    var local_142: bool;
+    var local_153: bool;
     var f: f32;
-    var local_143: bool;
+    var local_154: bool;
     var split: bool;
     var tries: u32;
-    var local_144: bool;
-    var local_145: bool;
-    var local_146: bool;
+    var local_155: bool;
+    var local_156: bool;
+    var local_157: bool;
 
     let _e1 = airlight_valid(s_29);
     if !(_e1) {
@@ -5961,13 +6090,13 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                     let _e109 = j_4;
                     if ((_e109 & 1u) == 0u) {
                         let _e116 = j_4;
-                        local_142 = (_e116 < 6u);
+                        local_153 = (_e116 < 6u);
                     } else {
-                        local_142 = false;
+                        local_153 = false;
                     }
-                    let _e120 = local_142;
-                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
-                    let _e122 = airlight_outer_node(s_29, _e6, w_8);
+                    let _e120 = local_153;
+                    let w_9 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
+                    let _e122 = airlight_outer_node(s_29, _e6, w_9);
                     f = 0f;
                     if (_e122.weight != 0f) {
                         let _e128 = airlight_node_integral(_e122);
@@ -5975,11 +6104,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             return _e128;
                         }
                         if (s_29.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_143 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_154 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_143 = false;
+                            local_154 = false;
                         }
-                        let _e141 = local_143;
+                        let _e141 = local_154;
                         if _e141 {
                             return _e128;
                         }
@@ -6045,18 +6174,18 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let worst_1 = _e202.worst;
                             if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e213 = count_2;
-                                local_144 = (_e213 == _e6.max_panels);
+                                local_155 = (_e213 == _e6.max_panels);
                             } else {
-                                local_144 = true;
+                                local_155 = true;
                             }
-                            let _e217 = local_144;
+                            let _e217 = local_155;
                             if !(_e217) {
                                 let _e221 = airlight_is_finite(total_4);
-                                local_145 = !(_e221);
+                                local_156 = !(_e221);
                             } else {
-                                local_145 = true;
+                                local_156 = true;
                             }
-                            let _e224 = local_145;
+                            let _e224 = local_156;
                             if _e224 {
                                 break;
                             }
@@ -6066,11 +6195,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let wb_1 = _e226.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_146 = (mid_1 < wb_1);
+                                local_157 = (mid_1 < wb_1);
                             } else {
-                                local_146 = false;
+                                local_157 = false;
                             }
-                            let _e237 = local_146;
+                            let _e237 = local_157;
                             if !(_e237) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;

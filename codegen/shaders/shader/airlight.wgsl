@@ -1999,6 +1999,8 @@ struct AirlightOuter {
     d: f32,
     axis_l: f32,
     axis_u: f32,
+    /// Bit i: the edge gamma[i] is a smooth cut (a Phong lobe's peak or extent), no arc's end.
+    smooth_edges: u32,
 }
 
 fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
@@ -2047,7 +2049,7 @@ fn airlight_outer_point(s: AirlightScene, max_panels: u32) -> AirlightOuter {
     // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
     let zeros = array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     return AirlightOuter(s.light_position, vec3<f32>(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels, vec3<f32>(0.0),
-        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0, 0.0, 0.0);
+        vec3<f32>(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
 }
 
 /// A surface point's outer integral (surface.rs SurfaceScene::integrate).
@@ -2127,6 +2129,8 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
             cuts[10] = AIRLIGHT_PI - at;
         }
     }
+    // the cuts where an arc opens or closes (the rest are smooth: surface.rs piece_map)
+    let kinks = array<f32, 6>(cuts[0], cuts[1], cuts[2], cuts[3], cuts[9], cuts[10]);
     // sorted (insertion), then those strictly inside and increasing kept (extended.rs edges_between)
     for (var i = 1u; i < 11u; i++) {
         let c = cuts[i];
@@ -2151,6 +2155,13 @@ fn airlight_surface(s: AirlightScene) -> AirlightOuter {
     g.gamma[k + 1u] = hi;
     g.panels = k + 1u;
     for (var i = 0u; i <= g.panels; i++) { g.edges[i] = f32(i); }
+    if (s.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        for (var i = 1u; i <= k; i++) {
+            let e = g.gamma[i];
+            let kink = e == kinks[0] || e == kinks[1] || e == kinks[2] || e == kinks[3] || e == kinks[4] || e == kinks[5];
+            g.smooth_edges |= select(1u << i, 0u, kink);
+        }
+    }
     return g;
 }
 
@@ -2354,13 +2365,24 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        // piece i: γ = a + (b − a)(3t² − 2t³), t = x − i (surface.rs `mapped`)
+        // piece i: γ = a + (b − a)(3t² − 2t³), t = x − i, or a + (b − a)t², b − (b − a)(1 − t)²,
+        // a + (b − a)t where an end or both are smooth cuts (surface.rs piece_map)
         let i = min(u32(max(floor(x), 0.0)), g.panels - 1u);
         let t = x - f32(i);
         let a = g.gamma[i];
         let b = g.gamma[i + 1u];
-        let gamma = a + (b - a) * t * t * (3.0 - t - t);
-        let jacobian = (b - a) * 6.0 * t * (1.0 - t);
+        let w = b - a;
+        let u = 1.0 - t;
+        let smooth_a = ((g.smooth_edges >> i) & 1u) != 0u;
+        let smooth_b = ((g.smooth_edges >> (i + 1u)) & 1u) != 0u;
+        var gamma = a + w * t * t * (3.0 - t - t);
+        var jacobian = w * 6.0 * t * u;
+        gamma = select(gamma, a + w * t * t, smooth_b && !smooth_a);
+        jacobian = select(jacobian, w * (t + t), smooth_b && !smooth_a);
+        gamma = select(gamma, b - w * u * u, smooth_a && !smooth_b);
+        jacobian = select(jacobian, w * (u + u), smooth_a && !smooth_b);
+        gamma = select(gamma, a + w * t, smooth_a && smooth_b);
+        jacobian = select(jacobian, w, smooth_a && smooth_b);
         if (!(jacobian > 0.0)) { return AirlightNode(p, 0.0, none, false); }
         let cs = airlight_cos_sin_half_turn(gamma);
         let psi = airlight_half_arc(g.cos_a, g.sin_a, cs.x, cs.y);
