@@ -157,7 +157,8 @@ pub(crate) fn outer_rule<T: Real>(tolerance: T) -> &'static [(f64, f64, f64)] {
 /// [`outer_rule`]'s. Over tests/reference/extended.jsonl at tolerance 1e-1 it leaves at most
 /// 3e-3 (a near tube, as the 7-point rule) with 27 % fewer instructions per behind-the-camera
 /// tube (BENCHMARKS.md, segment lights); on surfaces the 5-point estimate let 1.3e-1 through at
-/// 1e-1 (an anisotropic Lambertian point), so their outer integrals keep the 7-point rule.
+/// 1e-1 (an anisotropic Lambertian point), so their outer integrals keep the 7-point rule but on
+/// the pieces of a Phong lobe's extent, slices of its peak of a known width (docs/DESIGN.md §11).
 pub(crate) fn segment_rule<T: Real>(tolerance: T) -> &'static [(f64, f64, f64)] {
     if tolerance >= T::lit(1e-1) {
         &GAUSS_KRONROD_5
@@ -417,10 +418,15 @@ struct Listed<T> {
 /// integrand is non-negative), or `max_panels` panels are held; the sum and the panels
 /// evaluated.
 pub(crate) fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
+    adaptive_by(|_, _| rule, f, edges, tolerance, max_panels)
+}
+
+/// [`adaptive`] with the rule of each panel `[a, b]` chosen by `rule(a, b)`.
+pub(crate) fn adaptive_by<'r, T: Real>(rule: impl Fn(T, T) -> &'r [(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
     let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero() }; MAX_SEGMENT_PANELS];
     let max_panels = max_panels.clamp(edges.len() - 1, MAX_SEGMENT_PANELS);
     let evaluate = |f: &mut dyn FnMut(T) -> T, a: T, b: T| {
-        let (k, g) = gauss_kronrod(rule, &mut |x| f(x), a, b);
+        let (k, g) = gauss_kronrod(rule(a, b), &mut |x| f(x), a, b);
         Listed { a, b, value: k, error: (k - g).abs() }
     };
     let mut count = 0;

@@ -681,7 +681,20 @@ where
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
         }
-        let (value, _) = adaptive(rule, &mut mapped, &knots[..=n], tolerance, max_panels);
+        // a piece between two of a Phong lobe's smooth cuts is a slice of its peak at most 2.5/√n
+        // wide (where (cos δ)ⁿ ≈ e^{−nδ²/2}): where a tenth of the value will do, 5 points
+        let extent = match self.brdf {
+            // (a rounding's margin over the cuts' own 4/√n)
+            Brdf::Phong { exponent, .. } if exponent > T::one() => T::lit(4.0 * (1.0 + 1e-6)) / exponent.sqrt(),
+            _ => -T::one(),
+        };
+        let coarse = crate::extended::segment_rule(tolerance);
+        let rule_of = |a: T, _b: T| {
+            let i = a.floor().to_usize().unwrap_or(0).min(n - 1);
+            let in_lobe = (edges[i] - alpha_r).abs() <= extent && (edges[i + 1] - alpha_r).abs() <= extent;
+            if smooth[i] && smooth[i + 1] && in_lobe { coarse } else { rule }
+        };
+        let (value, _) = crate::extended::adaptive_by(rule_of, &mut mapped, &knots[..=n], tolerance, max_panels);
         (value, rays)
     }
 }
