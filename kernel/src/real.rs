@@ -315,10 +315,11 @@ pub(crate) fn atan_nonnegative<T: Real>(a: T) -> T {
 }
 
 /// `(sin x, cos x)` for `|x| ≤ π/2` (a distance from a pole of the light angle, docs/DESIGN.md
-/// §4.2; half a Phong lobe's angle, §11) by minimax polynomials in `z = x²` in Horner's form, without the library's range
-/// reduction: `sin x = x·S(z)`, `S` minimax in the relative error (so `sin` keeps it as `x → 0`,
-/// where the light angle's `cos θ` needs it; odd in `x`, as `cos x` is even), `cos x = C(z)`, `C` minimax in the absolute error
-/// (`cos x` near `π/2` is a distance from the other pole: a few ε absolutely suffice). The
+/// §4.2; half a Phong lobe's angle, §11) by minimax polynomials in `z = x²` in Horner's form,
+/// without the library's range reduction: `sin x = x·S(z)` (odd in `x`), `S` minimax in the
+/// relative error (so `sin` keeps it as `x → 0`, where the light angle's `cos θ` needs it),
+/// `cos x = C(z)`, `C` minimax in the absolute error (`cos x` near `π/2` is a distance from the
+/// other pole: a few ε absolutely suffice). The
 /// coefficients are `scripts/gen_minimax.py`'s (the Remez exchange at 40 digits, each rounded
 /// once to the precision): 9 and 9 in f64, the rounded polynomials within 2.7e-17 relative and
 /// 6.4e-17 absolute (≤ 0.3 ε); 5 and 6 in f32, within 1.5e-8 and 5.9e-9 (≤ 0.13 ε) — where

@@ -105,8 +105,9 @@ pub const FIXED_LOBE_TOLERANCE: f64 = 2e-4;
 /// The rules of [`lobe_arcs`] by outer tolerance, `(from, rule)`: the first whose `from` the
 /// outer tolerance is at least. Each is held to a tenth of its `from` of the lobe's peak
 /// integral (the inner integrals' tolerance; the test below): Gauss–Legendre 8 from `2e-3`
-/// (1.3e-4 measured; 6 points left 3.8e-3, too much for `5e-2`'s place at the 1e-3 level of
-/// BENCHMARKS.md), [`LOBE_RULE`]'s 10 from [`FIXED_LOBE_TOLERANCE`] (1.0e-5).
+/// (1.3e-4 measured), [`LOBE_RULE`]'s 10 from [`FIXED_LOBE_TOLERANCE`] (1.0e-5). Six points
+/// (3.8e-3) would serve from `5e-2`, but left 1.2e-3 on the references at 1e-1, above the
+/// 1e-3 level BENCHMARKS.md picks a tolerance for, where 8 points leave 3.9e-5.
 pub const LOBE_RULES: [(f64, &[(f64, f64)]); 2] = [(2e-3, &crate::expansion::gauss_table::GL8), (FIXED_LOBE_TOLERANCE, LOBE_RULE)];
 
 /// The largest degree `p` of a light's distribution (a polynomial in the cosine `c` without
@@ -213,11 +214,12 @@ fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3]) -> (T, T, T) {
 /// allows `log` an absolute error of 2⁻²¹ near 1, which `n = 200` would make 7e-5). The lobe is
 /// ended at [`LOBE_FLOOR`] of its peak (`s² = (1 − floor^{1/n})/k`; all of it where that passes
 /// 1). The lobe is even in `x`: the rule runs over `[0, cut]`, each node serving `x` and `−x`
-/// (one sine, exponential and logarithm for two, docs/DESIGN.md §11), cut at the normal's arc ends'
-/// distances from the peak, and [`LOBE_RULE`] is taken on
-/// every piece where the integrand lives — in `x` itself or, for `n < 1`, where `(ψ_r − x)ⁿ`
-/// ends a piece with a kink of infinite slope, in the smoothstep of the piece (as the outer
-/// integral takes `γ`). `gap = γ − α_r`; the lobe is empty unless `|gap| < π/2`.
+/// (one sine, exponential and logarithm for two, docs/DESIGN.md §11), cut at the normal's arc
+/// ends' distances from the peak, and `rule` (the shaders' [`LOBE_RULE`], or one of
+/// [`LOBE_RULES`]) is taken on every piece where the integrand lives — in `x` itself or, for
+/// `n < 1`, where `(ψ_r − x)ⁿ` ends a piece with a kink of infinite slope, in the smoothstep of
+/// the piece (as the outer integral takes `γ`). `gap = γ − α_r`; the lobe is empty unless
+/// `|gap| < π/2`.
 pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), gap: T, (delta, cos_delta, sin_delta): (T, T, T), psi_n: T, exponent: T) -> T {
     let ((a, b), (c, d)) = (normal, mirror);
     let (pi, half, two) = (T::PI(), T::lit(0.5), T::lit(2.0));
