@@ -234,9 +234,8 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
     let reach = if exponent > T::zero() { -(T::lit(LOBE_FLOOR).ln() / exponent).exp_m1() } else { T::one() };
     let s2 = if reach < k { reach / k } else { T::one() };
     let cut = two * s2.sqrt().asin();
-    // the lobe is even in x and the normal's clip is not: each node x of [0, cut] serves x and
-    // −x (one sine, exponential and logarithm for two), the half-range cut at the peak, `cut`
-    // and the normal's arc ends' distances from the peak (so neither side has a kink inside)
+    // the half-range's edges: the peak, `cut`, the normal's arc ends' distances from the peak
+    // (so neither x nor −x has a kink inside a piece)
     let mut edges = [T::zero(), cut, T::zero(), T::zero()];
     let mut count = 2;
     if psi_n < pi {
@@ -552,23 +551,23 @@ where
                 }
                 sum
             };
-            let value = match (omni, self.brdf) {
-                (true, Brdf::Lambert { albedo }) => {
+            let value = match (omni, self.brdf, lobe) {
+                (true, Brdf::Lambert { albedo }, _) => {
                     // ∫ (A + B cos x)⁺ over the arc, closed form
                     let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
                     let arc = T::lit(2.0) * (a * psi_n + b * half_arc_sin(a, b));
                     along(cos_g, sin_g, phi_n) * albedo * T::FRAC_1_PI() * arc
                 }
-                (true, Brdf::Phong { k_s, exponent, .. }) if lobe.is_some() => {
+                (true, Brdf::Phong { k_s, exponent, .. }, Some(rule)) => {
                     let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
-                    let arcs = lobe_arcs(lobe.unwrap_or(LOBE_RULE), normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
+                    let arcs = lobe_arcs(rule, normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
                     along(cos_g, sin_g, phi_n) * k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
                 }
-                (true, _) => {
+                (true, _, _) => {
                     let la = along(cos_g, sin_g, phi_n);
                     la * inner_sum(&mut |phi| geometric(phi))
                 }
-                (false, _) => match polynomial {
+                (false, _, _) => match polynomial {
                     Some(p) => {
                         // L_a at φ_j = φ_a + jπ/p, where cos(φ_j − φ_a) are the Chebyshev–Lobatto points
                         let mut values = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
@@ -609,33 +608,30 @@ where
         // opens or closes there), a lobe's peak and extent and a beam's axis (smooth: the pieces
         // need not crowd their nodes towards them, piece_map)
         let mut cuts = [T::zero(); 14];
-        let mut kinks = [T::zero(); 6];
-        let (mut count, mut kink_count) = (0, 0);
+        let mut kinds = [Cut::Kink; 14];
+        let mut count = 0;
         let turning = |(cos_a, sin_a, _): (T, T, T)| {
             let alpha = sin_a.atan2(cos_a);
             let first = (T::FRAC_PI_2() - alpha).abs();
             [first, T::PI() - first]
         };
-        let mut push = |c: T, kink: bool| {
+        let mut push = |c: T, kind: Cut| {
             cuts[count] = c;
+            kinds[count] = kind;
             count += 1;
-            if kink {
-                kinks[kink_count] = c;
-                kink_count += 1;
-            }
         };
         let normal_turns = turning(fr.n);
-        normal_turns.into_iter().for_each(|c| push(c, true));
+        normal_turns.into_iter().for_each(|c| push(c, Cut::Kink));
         if phong {
-            turning(fr.r).into_iter().for_each(|c| push(c, true));
-            push(alpha_r, false);
+            turning(fr.r).into_iter().for_each(|c| push(c, Cut::Kink));
+            push(alpha_r, Cut::Lobe);
             if let Brdf::Phong { exponent, .. } = self.brdf {
                 // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
                 if exponent > T::one() {
                     for k in [1.5, 4.0] {
                         let width = T::lit(k) / exponent.sqrt();
-                        push(alpha_r - width, false);
-                        push(alpha_r + width, false);
+                        push(alpha_r - width, Cut::Lobe);
+                        push(alpha_r + width, Cut::Lobe);
                     }
                 }
             }
@@ -645,8 +641,8 @@ where
             let norm = length(u);
             if norm > T::epsilon() {
                 let c = (dot(u, fr.l) / norm).max(-T::one()).min(T::one());
-                push(c.acos(), true);
-                push(T::PI() - c.acos(), true);
+                push(c.acos(), Cut::Kink);
+                push(T::PI() - c.acos(), Cut::Kink);
             }
         }
         // a beam c^p: rays along ±a (at γ_a and π − γ_a from ℓ) see its lobe to their far end,
@@ -656,18 +652,19 @@ where
         // test that needed it)
         if beam.is_some_and(|p| p >= 2) {
             let gamma_a = axis_e1.hypot(axis_e2).atan2(axis_l);
-            push(gamma_a, false);
-            push(T::PI() - gamma_a, false);
+            push(gamma_a, Cut::Axis);
+            push(T::PI() - gamma_a, Cut::Axis);
         }
         // only γ ∈ (α_n − π/2, α_n + π/2) sees the hemisphere (the largest n·ω at γ is
         // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
         // (the end is the normal's turning point itself, so that no sliver is left beside it)
         let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
-        let (edges, n): ([T; 16], usize) = edges_between(lo, hi, &mut cuts[..count]);
-        // the inner edges that are smooth cuts only (the range's ends are arcs' ends)
+        let mut values = cuts;
+        let (edges, n): ([T; 16], usize) = edges_between(lo, hi, &mut values[..count]);
+        // the inner edges where no arc opens or closes (the range's ends are arcs' ends)
         let mut smooth = [false; 16];
         for (i, flag) in smooth.iter_mut().enumerate().take(n).skip(1) {
-            *flag = !kinks[..kink_count].contains(&edges[i]);
+            *flag = !cuts[..count].iter().zip(&kinds).any(|(&c, &k)| c == edges[i] && k == Cut::Kink);
         }
         let mut mapped = |x: T| {
             let i = x.floor().to_usize().unwrap_or(0).min(n - 1);
@@ -683,22 +680,28 @@ where
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
         }
-        // a piece between two of a Phong lobe's smooth cuts is a slice of its peak at most 2.5/√n
-        // wide (where (cos δ)ⁿ ≈ e^{−nδ²/2}): where a tenth of the value will do, 5 points
-        let extent = match self.brdf {
-            // (a rounding's margin over the cuts' own 4/√n)
-            Brdf::Phong { exponent, .. } if exponent > T::one() => T::lit(4.0 * (1.0 + 1e-6)) / exponent.sqrt(),
-            _ => -T::one(),
-        };
+        // a smooth piece within a Phong lobe's extent (between its outermost cuts) is a slice of
+        // its peak at most 2.5/√n wide (where (cos δ)ⁿ ≈ e^{−nδ²/2}): where a tenth of the value
+        // will do, 5 points
+        let lobe_cuts = cuts[..count].iter().zip(&kinds).filter(|&(_, &k)| k == Cut::Lobe).map(|(&c, _)| c);
+        let (first, last) = (lobe_cuts.clone().fold(T::infinity(), T::min), lobe_cuts.fold(-T::infinity(), T::max));
         let coarse = crate::extended::segment_rule(tolerance);
         let rule_of = |a: T, _b: T| {
             let i = a.floor().to_usize().unwrap_or(0).min(n - 1);
-            let in_lobe = (edges[i] - alpha_r).abs() <= extent && (edges[i + 1] - alpha_r).abs() <= extent;
-            if smooth[i] && smooth[i + 1] && in_lobe { coarse } else { rule }
+            if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
         let (value, _) = crate::extended::adaptive_by(rule_of, &mut mapped, &knots[..=n], tolerance, max_panels);
         (value, rays)
     }
+}
+
+/// What an outer cut of a surface's integral is: where an arc opens or closes (`|γ − γ*|^{3/2}`),
+/// a Phong lobe's peak or extent, or a beam's axis (both smooth points of the integrand).
+#[derive(Clone, Copy, PartialEq)]
+enum Cut {
+    Kink,
+    Lobe,
+    Axis,
 }
 
 /// `(γ, dγ/dt)` at `t ∈ [0, 1]` on the outer piece `[a, b]`: where an arc opens or closes at an
@@ -825,39 +828,39 @@ mod tests {
         let pi = core::f64::consts::PI;
         let wrap = |x: f64| if x > pi { x - 2.0 * pi } else if x < -pi { x + 2.0 * pi } else { x };
         for (from, rule) in LOBE_RULES {
-        let mut seed = 7u64;
-        let mut unit = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        for n in [0.0, 0.5, 1.0, 3.0, 10.0, 50.0, 200.0, 1000.0] {
-            let mut worst = 0.0f64;
-            for _ in 0..40 {
-                let (alpha_n, alpha_r, delta) = (pi * unit(), pi * unit(), pi * (2.0 * unit() - 1.0));
-                let (cn, sn, cr, sr) = (alpha_n.cos(), alpha_n.sin(), alpha_r.cos(), alpha_r.sin());
-                let peak_lobe = |x: f64| (cr * cr + sr * sr * x.cos()).max(0.0).powf(n);
-                let scale = adaptive(&GAUSS_KRONROD_15, &mut |x| peak_lobe(x), &[-pi, 0.0, pi], 1e-13, 48).0;
-                for j in 0..25 {
-                    let g = pi * (j as f64 + 0.5) / 25.0;
-                    let (cg, sg) = (g.cos(), g.sin());
-                    let ((a, b), (c, d)) = ((cn * cg, sn * sg), (cr * cg, sr * sg));
-                    let psi_n = half_arc((cn, sn, 0.0), cg, sg);
-                    let psi_r = half_arc((cr, sr, 0.0), cg, sg);
-                    let got = lobe_arcs(rule, (a, b), (c, d), g - alpha_r, (delta, delta.cos(), delta.sin()), psi_n, n);
-                    let f = |x: f64| {
-                        let lobe = c + d * x.cos();
-                        let clip = a + b * (x - delta).cos();
-                        if lobe > 0.0 && clip > 0.0 { clip * lobe.powf(n) } else { 0.0 }
-                    };
-                    let mut edges = [-pi, 0.0, pi, wrap(delta - psi_n), wrap(delta + psi_n), -psi_r, psi_r];
-                    edges.sort_by(|x, y| x.partial_cmp(y).unwrap());
-                    let exact = adaptive(&GAUSS_KRONROD_15, &mut |x| f(x), &edges, 1e-13, 48).0;
-                    worst = worst.max((got - exact).abs() / scale);
+            let mut seed = 7u64;
+            let mut unit = || {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                (seed >> 11) as f64 / (1u64 << 53) as f64
+            };
+            for n in [0.0, 0.5, 1.0, 3.0, 10.0, 50.0, 200.0, 1000.0] {
+                let mut worst = 0.0f64;
+                for _ in 0..40 {
+                    let (alpha_n, alpha_r, delta) = (pi * unit(), pi * unit(), pi * (2.0 * unit() - 1.0));
+                    let (cn, sn, cr, sr) = (alpha_n.cos(), alpha_n.sin(), alpha_r.cos(), alpha_r.sin());
+                    let peak_lobe = |x: f64| (cr * cr + sr * sr * x.cos()).max(0.0).powf(n);
+                    let scale = adaptive(&GAUSS_KRONROD_15, &mut |x| peak_lobe(x), &[-pi, 0.0, pi], 1e-13, 48).0;
+                    for j in 0..25 {
+                        let g = pi * (j as f64 + 0.5) / 25.0;
+                        let (cg, sg) = (g.cos(), g.sin());
+                        let ((a, b), (c, d)) = ((cn * cg, sn * sg), (cr * cg, sr * sg));
+                        let psi_n = half_arc((cn, sn, 0.0), cg, sg);
+                        let psi_r = half_arc((cr, sr, 0.0), cg, sg);
+                        let got = lobe_arcs(rule, (a, b), (c, d), g - alpha_r, (delta, delta.cos(), delta.sin()), psi_n, n);
+                        let f = |x: f64| {
+                            let lobe = c + d * x.cos();
+                            let clip = a + b * (x - delta).cos();
+                            if lobe > 0.0 && clip > 0.0 { clip * lobe.powf(n) } else { 0.0 }
+                        };
+                        let mut edges = [-pi, 0.0, pi, wrap(delta - psi_n), wrap(delta + psi_n), -psi_r, psi_r];
+                        edges.sort_by(|x, y| x.partial_cmp(y).unwrap());
+                        let exact = adaptive(&GAUSS_KRONROD_15, &mut |x| f(x), &edges, 1e-13, 48).0;
+                        worst = worst.max((got - exact).abs() / scale);
+                    }
                 }
+                std::println!("{} points, n = {n}: largest error {worst:.1e} of the peak's integral", 2 * rule.len());
+                assert!(worst <= 0.1 * from, "{} points, n = {n}: lobe_arcs {worst:.1e} off", 2 * rule.len());
             }
-            std::println!("{} points, n = {n}: largest error {worst:.1e} of the peak's integral", 2 * rule.len());
-            assert!(worst <= 0.1 * from, "{} points, n = {n}: lobe_arcs {worst:.1e} off", 2 * rule.len());
-        }
         }
     }
 }
