@@ -240,6 +240,38 @@ impl<T: Real> Plan<T> {
         self.big_h >= T::one()
     }
 
+    /// Where a graded route may end this panel's first part (`crate::combined`'s graded
+    /// route): the second half's grading point `y_p` ([`crate::panels::graded_point`], `y` of the
+    /// second half, whose ends are `y_lo`, `y_hi`) towards the phase function's nearest backward
+    /// singularity (`μ* < −1`, at the height `√(gap/(2 + gap))` in `y`, `gap = |μ*| − 1`), if
+    /// `N` nodes are predicted to pass on `[θ0, θ_p]`: the forward singularities as
+    /// [`Plan::rule`] predicts them on this panel (a part with this one's start and an earlier
+    /// end has them no nearer in its own units), and the backward one, `ψ_p = 2 atan y_p` past
+    /// the part's end, with ten times less (measured: with no margin, seven of the 30
+    /// `near_light` rays of tests/reference/classes.jsonl failed the part's estimate in f32 at
+    /// tolerance 1e-3). `None` without a backward singularity or where a prediction fails. Formed
+    /// only where the whole segment's tries did not pass, not in [`Plan::new`].
+    pub(crate) fn graded_point<P: PhaseFunction<T>, const N: usize>(&self, phase: &P, y_lo: T, y_hi: T, tolerance: T) -> Option<T> {
+        let singular = phase.singularities()?;
+        let gap = singular.cosines.iter().fold(T::infinity(), |m, &mu| if mu < -T::one() { m.min(-mu - T::one()) } else { m });
+        if !gap.is_finite() {
+            return None;
+        }
+        let y_p = crate::panels::graded_point(y_lo, y_hi, core::iter::once((gap / (T::lit(2.0) + gap)).sqrt()))?;
+        // the part's half-width and the singularities' rates on it, as `Plan::new` forms them
+        let psi_p = T::lit(2.0) * atan_nonnegative(y_p);
+        let hw = (T::PI() - self.psi0 - psi_p) * T::lit(0.5);
+        let step = order_step(singular.order, N);
+        let rate = |gap: T, offset: T, hw: T| {
+            let y = axis_excess(gap);
+            let im = (y + y) / (T::lit(2.0) + y);
+            step * bernstein_rho(T::one() + offset / hw, im / hw).recip()
+        };
+        let forward = singular.cosines.iter().fold(T::zero(), |m, &mu| if mu > T::one() && mu.is_finite() { m.max(rate(mu - T::one(), self.psi0, self.hw)) } else { m });
+        let backward = rate(gap, psi_p, hw);
+        (hw > T::zero() && power(forward, N) <= tolerance && power(backward, N) * T::lit(10.0) <= tolerance).then_some(y_p)
+    }
+
     /// Whether wider rules may follow a first try of `n` nodes: always for a light's lobe;
     /// without an axis (the phase function's peak alone) only after fewer than 16 nodes and
     /// where the extinction's rate is `λ ≤ 1` (the weight falls by at most `e^{−2}` over the

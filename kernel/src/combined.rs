@@ -301,6 +301,13 @@ where
                     Route::Declined => {}
                 }
             }
+            // the light angle on the part before a backward lobe at the far end, the closed
+            // forms on the rest
+            match graded_route::<T, D, P, _, N>(g, phys, &plan, &control, ei) {
+                (Route::Taken(value), panels) => return (value, tried + panels),
+                (Route::Failed, _) => tried += 1,
+                (Route::Declined, _) => {}
+            }
         }
     }
     let mut total = T::zero();
@@ -336,29 +343,86 @@ where
     // Second reformulation: t ∈ [max(t0, x_h), t1], a = u from a_s up to a_e (maybe ∞).
     if t1 > x_h && !behind_cut {
         let t_start = if t0 > x_h { t0 } else { x_h };
-        let a_s = (t_start - x_h) / h;
-        let a_e = (t1 - x_h) / h;
-        let r_s = hypot1(a_s);
-        let (y_hi, y_lo) = (bounded(a_s), bounded(a_e));
-        let dv = if a_e.is_finite() { (t1 - t_start) / h * (T::one() + (a_s + a_e) / (r_s + hypot1(a_e))) } else { T::infinity() };
-        // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞ (the
-        // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
-        let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
-        let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
-        if let Some(control) = cut {
-            let cut_dv = cut_length(half.big_h, y_hi.recip(), dv, &control);
-            // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
-            let cut_y_lo = y_hi / (T::one() + y_hi * cut_dv);
-            if cut_dv < dv && cut_y_lo > T::zero() {
-                half = Half { y_lo: cut_y_lo, dy: cut_dv * cut_y_lo * y_hi, dv: cut_dv, ..half };
-            }
-        }
+        let (half, x) = second_half(g, sigma_t, t_start, cut);
         let j = half_integral::<T, D, P, _, N>(&half, g, phys, T::one(), method, ei, isotropic, count, &mut run);
-        total = total + weighted(phys.sigma_s, phys.intensity, h, sigma_t * (t_start - t0) + big_h * r_s, j);
+        total = total + weighted(phys.sigma_s, phys.intensity, h, x, j);
     }
     // The integrand is ≥ 0; a polynomial that dips below 0 where F vanishes (outside a spot
     // cone) must not make the sum negative. Clamping can only reduce the error.
     (total.max(T::zero()), run.panels)
+}
+
+/// A route by cost on part of the segment (docs/DESIGN.md §4.4): where the second half starts
+/// next to a backward singularity of the phase function — a backward lobe at a long ray's far
+/// end — the panels would grade it at once (`panels::graded_point`); instead the light
+/// angle's `N`-node panel takes everything before the grading point `t_s` (the first half and
+/// the smooth part of the second) and the closed forms only `[t_s, t1]`, the piece next to the
+/// singularity with the extinction's layer. Each part meets the target on its own, so their sum
+/// does. Where the light is a mean free path or more from the ray (`Plan::thick`), or
+/// `whole`'s predictions say the first part's panel would not pass
+/// (`Plan::graded_point`), declined. Taken: the value and the panels spent
+/// (the light angle's and the closed forms'). Not inlined: inlined, it made the whole-segment
+/// tries' code 1–3 % costlier on rays that never reach it (instructions per ray).
+#[inline(never)]
+pub fn graded_route<T, D, P, E, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, whole: &crate::angle::Plan<T>, control: &Control<T>, ei: &E) -> (Route<T>, usize)
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+    E: ExpIntegral<T>,
+{
+    let (h, x_h, t0, t1) = (g.h, g.x_h, g.t0, g.t1);
+    if !(t1 > x_h) || whole.thick() {
+        return (Route::Declined, 0);
+    }
+    // the second half's ends in y (uncut: a cut only moves y_lo up, and any t_s splits exactly)
+    let y_hi = if t0 > x_h { bounded((t0 - x_h) / h) } else { T::one() };
+    let y_lo = bounded((t1 - x_h) / h);
+    let Some(y_p) = whole.graded_point::<P, N>(phys.phase, y_lo, y_hi, control.tolerance) else {
+        return (Route::Declined, 0);
+    };
+    // t − x_h = h·u with y = 1/(u + √(1 + u²)): u = (1/y − y)/2
+    let t_s = x_h + h * ((y_p.recip() - y_p) * T::lit(0.5));
+    if !(t_s > t0 && t_s < t1) {
+        return (Route::Declined, 0);
+    }
+    let before = Canonical { t1: t_s, ..*g };
+    let Some(plan) = crate::angle::Plan::new(&before, phys, control) else {
+        return (Route::Declined, 0);
+    };
+    let value = match plan.rule::<D, P, N>(&before, phys, control, false) {
+        Route::Taken(value) => value,
+        other => return (other, 0),
+    };
+    let (half, x) = second_half(g, phys.sigma_t, t_s, Some(*control));
+    let mut run = Running { f_max: T::zero(), panels: 1 };
+    let j = half_integral::<T, D, P, _, N>(&half, g, phys, T::one(), Method::Panels(*control), ei, false, N, &mut run);
+    (Route::Taken((value + weighted(phys.sigma_s, phys.intensity, h, x, j)).max(T::zero())), run.panels)
+}
+
+/// The second half from `t_start ≥ x_h` to `t1` (module docs), cut where the panels' `control`
+/// says (`cut_length`), and the exponent of its prefactor, `σt(t_start − t0) + H·r_s`.
+fn second_half<T: Real>(g: &Canonical<T>, sigma_t: T, t_start: T, cut: Option<Control<T>>) -> (Half<T>, T) {
+    let (h, x_h, t1) = (g.h, g.x_h, g.t1);
+    let big_h = sigma_t * h;
+    let a_s = (t_start - x_h) / h;
+    let a_e = (t1 - x_h) / h;
+    let r_s = hypot1(a_s);
+    let (y_hi, y_lo) = (bounded(a_s), bounded(a_e));
+    let dv = if a_e.is_finite() { (t1 - t_start) / h * (T::one() + (a_s + a_e) / (r_s + hypot1(a_e))) } else { T::infinity() };
+    // An end so far out that y_lo or Δv leaves the float range is the end at t = ∞ (the
+    // weight e^{−HΔv} and the part of the integrand beyond it are below the range too).
+    let (y_lo, dv, dy) = if y_lo > T::zero() && dv.is_finite() { (y_lo, dv, dv * y_lo * y_hi) } else { (T::zero(), T::infinity(), y_hi) };
+    let mut half = Half { second: true, big_h: optical(big_h, dv), y_lo, y_hi, dy, dv };
+    if let Some(control) = cut {
+        let cut_dv = cut_length(half.big_h, y_hi.recip(), dv, &control);
+        // v_e = v_s + Δv: y_lo = 1/v_e, Δy = Δv·y_lo·y_hi
+        let cut_y_lo = y_hi / (T::one() + y_hi * cut_dv);
+        if cut_dv < dv && cut_y_lo > T::zero() {
+            half = Half { y_lo: cut_y_lo, dy: cut_dv * cut_y_lo * y_hi, dv: cut_dv, ..half };
+        }
+    }
+    (half, sigma_t * (t_start - g.t0) + big_h * r_s)
 }
 
 /// The length `Δv` of a half beyond which the error-controlled panels cut it (`+∞`: no cut),

@@ -152,7 +152,12 @@ where
 /// tolerances that meet 1e-3, f64 at the default).
 fn graded_split<T: Real>(a: T, b: T, singular: Option<&Singular<T>>) -> Option<T> {
     let s = singular?;
-    let t = s.y.iter().take(s.count).fold(T::infinity(), |m, &t| m.min(t));
+    graded_point(a, b, s.y.iter().take(s.count).copied())
+}
+
+/// [`graded_split`]'s point for the singularities at the heights `heights` (`±it` in `y`).
+pub(crate) fn graded_point<T: Real>(a: T, b: T, heights: impl Iterator<Item = T>) -> Option<T> {
+    let t = heights.fold(T::infinity(), |m, t| m.min(t));
     let d = (a * a + t * t).sqrt();
     (d > T::zero() && d < (b - a) * T::lit(0.25)).then(|| a + d * T::lit(2.0))
 }

@@ -259,6 +259,26 @@ fn light_angle_route_meets_its_tolerance() {
     }
 }
 
+/// The graded route (docs/DESIGN.md §4.4: the light angle before a backward lobe at the far
+/// end, the closed forms after it) on its own, as the routes above: called on every scene of
+/// every class that has a light-angle plan, also where the whole segment's tries would pass, at
+/// each tolerance the largest error of a taken value is within the tolerance (within the
+/// precision's target where rounding dominates). Printed: per class, how often it is taken,
+/// tried in vain and declined.
+#[test]
+fn graded_route_meets_its_tolerance() {
+    fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64) {
+        sweep_route::<T>(cases, tolerance, tau, &format!("graded, N = {N}"), |plan, g, phys, control| airlight::combined::graded_route::<_, _, _, _, N>(g, phys, plan, control, &airlight::integrals::Production).0);
+    }
+    let cases = cases();
+    for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
+        sweep::<f32, 8>(&cases, tolerance, 1e-4);
+    }
+    for tolerance in [1e-1, 1e-4, 1e-6, 1e-8, 1e-11] {
+        sweep::<f64, 16>(&cases, tolerance, 1e-10);
+    }
+}
+
 /// The optical-depth route (docs/DESIGN.md §4.3) on its own, as the light-angle route above:
 /// called on every scene of every class (also where the default path would not try it: a
 /// thin medium's `σt·h < 1`), at each tolerance the largest error of a taken value is within the
