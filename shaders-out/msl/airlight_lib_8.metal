@@ -3659,6 +3659,10 @@ float airlight_on_line(
 ) {
     bool local_40 = {};
     float span_1 = {};
+    bool local_41 = {};
+    bool local_42 = {};
+    float j_3 = 0.0;
+    uint i_15 = 0u;
     airlight_type_7 e2_ = {};
     float tail = 0.0;
     if (!(g_17.t_hi_infinite)) {
@@ -3691,23 +3695,68 @@ float airlight_on_line(
         return _e77;
     }
     float two_st = s_13.sigma_t + s_13.sigma_t;
-    airlight_type_7 _e82 = airlight_en_scaled(two_st * s0_);
-    e2_ = _e82;
-    float _e90 = e2_.inner[1];
-    float _e93 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, s_13.sigma_t * s0_, (f_4 * _e90) / s0_);
+    float span_2 = g_17.t_hi - g_17.t_lo;
     if (!(g_17.t_hi_infinite)) {
-        airlight_type_7 _e99 = airlight_en_scaled(two_st * s1_);
-        e2_ = _e99;
-        float _e110 = e2_.inner[1];
-        float _e113 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, (s_13.sigma_t * (s1_ - s0_)) + (s_13.sigma_t * s1_), (f_4 * _e110) / s1_);
-        tail = _e113;
+        local_41 = span_2 <= (s0_ * 0.125);
+    } else {
+        local_41 = false;
     }
-    bool _e114 = airlight_is_finite(_e93);
-    if (!(_e114)) {
-        return _e93;
+    bool _e92 = local_41;
+    if (_e92) {
+        local_42 = (two_st * span_2) <= 1.0;
+    } else {
+        local_42 = false;
     }
-    float _e116 = tail;
-    return _e93 - _e116;
+    bool _e99 = local_42;
+    if (_e99) {
+        airlight_type_8 _e100 = airlight_gauss_rule();
+        float half_15 = span_2 * 0.5;
+        uint2 loop_bound_21 = uint2(4294967295u);
+        bool loop_init_21 = true;
+        while(true) {
+            if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+            loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+            if (!loop_init_21) {
+                uint _e148 = i_15;
+                i_15 = _e148 + 1u;
+            }
+            loop_init_21 = false;
+            uint _e107 = i_15;
+            if (_e107 < AIRLIGHT_HALF_TERMS) {
+            } else {
+                break;
+            }
+            {
+                uint _e110 = i_15;
+                float s_lo = s0_ + (half_15 * (1.0 - _e100.inner[metal::min(unsigned(_e110), 3u)].x));
+                uint _e117 = i_15;
+                float s_hi = s0_ + (half_15 * (1.0 + _e100.inner[metal::min(unsigned(_e117), 3u)].x));
+                float _e124 = j_3;
+                uint _e125 = i_15;
+                j_3 = _e124 + (_e100.inner[metal::min(unsigned(_e125), 3u)].y * ((((half_15 / s_lo) * (s0_ / s_lo)) * metal::exp(-(two_st) * (s_lo - s0_))) + (((half_15 / s_hi) * (s0_ / s_hi)) * metal::exp(-(two_st) * (s_hi - s0_)))));
+            }
+        }
+        float _e155 = j_3;
+        float _e158 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, s_13.sigma_t * s0_, (f_4 * _e155) / s0_);
+        return _e158;
+    }
+    airlight_type_7 _e160 = airlight_en_scaled(two_st * s0_);
+    e2_ = _e160;
+    float _e168 = e2_.inner[1];
+    float _e171 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, s_13.sigma_t * s0_, (f_4 * _e168) / s0_);
+    if (!(g_17.t_hi_infinite)) {
+        airlight_type_7 _e177 = airlight_en_scaled(two_st * s1_);
+        e2_ = _e177;
+        float _e188 = e2_.inner[1];
+        float _e191 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2.0, (s_13.sigma_t * (s1_ - s0_)) + (s_13.sigma_t * s1_), (f_4 * _e188) / s1_);
+        tail = _e191;
+    }
+    bool _e192 = airlight_is_finite(_e171);
+    if (!(_e192)) {
+        return _e171;
+    }
+    float _e194 = tail;
+    return _e171 - _e194;
 }
 
 float airlight_optical(
@@ -3732,8 +3781,8 @@ float airlight_whole_line(
     float v_e_2 = AIRLIGHT_FLT_MAX;
     float dv_2 = AIRLIGHT_FLT_MAX;
     bool infinite_1 = true;
-    bool local_41 = {};
-    bool local_42 = {};
+    bool local_43 = {};
+    bool local_44 = {};
     float x_12 = 0.0;
     float h_4 = g_18.h;
     float a_s = (g_18.x_h - g_18.t_lo) / h_4;
@@ -3742,11 +3791,11 @@ float airlight_whole_line(
     float u_e = (g_18.t_hi - g_18.x_h) / h_4;
     if (!(g_18.t_hi_infinite)) {
         bool _e24 = airlight_is_finite(u_e);
-        local_41 = _e24;
+        local_43 = _e24;
     } else {
-        local_41 = false;
+        local_43 = false;
     }
-    bool _e26 = local_41;
+    bool _e26 = local_43;
     if (_e26) {
         float _e27 = airlight_hypot_one(u_e);
         float v_end = u_e + _e27;
@@ -3754,11 +3803,11 @@ float airlight_whole_line(
         bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             bool _e40 = airlight_is_finite(dv_end);
-            local_42 = _e40;
+            local_44 = _e40;
         } else {
-            local_42 = false;
+            local_44 = false;
         }
-        bool _e42 = local_42;
+        bool _e42 = local_44;
         if (_e42) {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3772,7 +3821,7 @@ float airlight_whole_line(
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_15 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
+    AirlightHalf half_16 = AirlightHalf {false, {}, _e47, _e9, _e48, _e49, _e50, _e51};
     bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
         x_12 = big_h_3 * _e8;
@@ -3782,7 +3831,7 @@ float airlight_whole_line(
         }
     }
     float _e66 = x_12;
-    metal::float2 _e67 = airlight_moment_zero_weighted(half_15, _e66);
+    metal::float2 _e67 = airlight_moment_zero_weighted(half_16, _e66);
     float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
     float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, _e73 * _e67.x);
     return _e76;
@@ -3792,26 +3841,26 @@ AirlightResult airlight_limits(
     AirlightScene s_15,
     AirlightCanonical g_19
 ) {
-    bool local_43 = {};
-    bool local_44 = {};
     bool local_45 = {};
     bool local_46 = {};
-    float gap_2 = 0.0;
     bool local_47 = {};
+    bool local_48 = {};
+    float gap_2 = 0.0;
+    bool local_49 = {};
     float t0_ = g_19.t_lo;
     float t1_ = g_19.t_hi;
     if (!(g_19.t_hi_infinite)) {
-        local_43 = t1_ > t0_;
+        local_45 = t1_ > t0_;
     } else {
-        local_43 = true;
+        local_45 = true;
     }
-    bool _e10 = local_43;
+    bool _e10 = local_45;
     if (!(!(_e10))) {
-        local_44 = (s_15.sigma_s * s_15.intensity) == 0.0;
+        local_46 = (s_15.sigma_s * s_15.intensity) == 0.0;
     } else {
-        local_44 = true;
+        local_46 = true;
     }
-    bool _e21 = local_44;
+    bool _e21 = local_46;
     if (_e21) {
         return AirlightResult {0.0, 0u};
     }
@@ -3819,16 +3868,16 @@ AirlightResult airlight_limits(
     float x_h = g_19.x_h;
     if (t0_ <= x_h) {
         if (!(g_19.t_hi_infinite)) {
-            local_46 = x_h <= t1_;
+            local_48 = x_h <= t1_;
         } else {
-            local_46 = true;
+            local_48 = true;
         }
-        bool _e36 = local_46;
-        local_45 = _e36;
+        bool _e36 = local_48;
+        local_47 = _e36;
     } else {
-        local_45 = false;
+        local_47 = false;
     }
-    bool inside = local_45;
+    bool inside = local_47;
     if (x_h < t0_) {
         gap_2 = t0_ - x_h;
     } else {
@@ -3838,11 +3887,11 @@ AirlightResult airlight_limits(
     }
     if (!(inside)) {
         float _e48 = gap_2;
-        local_47 = h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
+        local_49 = h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
-        local_47 = false;
+        local_49 = false;
     }
-    bool _e55 = local_47;
+    bool _e55 = local_49;
     if (_e55) {
         float _e56 = airlight_on_line(s_15, g_19);
         return AirlightResult {metal::max(_e56, 0.0), AIRLIGHT_STATUS_OK};
@@ -3856,48 +3905,48 @@ AirlightResult airlight_limits(
 bool airlight_isotropic_scene(
     AirlightScene s_16
 ) {
-    bool local_48 = {};
-    bool local_49 = {};
     bool local_50 = {};
     bool local_51 = {};
     bool local_52 = {};
     bool local_53 = {};
+    bool local_54 = {};
+    bool local_55 = {};
     if (!((s_16.light_kind == AIRLIGHT_LIGHT_OMNI))) {
         if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_49 = s_16.light_param_a == 0.0;
+            local_51 = s_16.light_param_a == 0.0;
         } else {
-            local_49 = false;
+            local_51 = false;
         }
-        bool _e16 = local_49;
-        local_48 = _e16;
+        bool _e16 = local_51;
+        local_50 = _e16;
     } else {
-        local_48 = true;
+        local_50 = true;
     }
-    bool _e18 = local_48;
+    bool _e18 = local_50;
     if (_e18) {
         if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
             if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_52 = s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK;
+                local_54 = s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK;
             } else {
-                local_52 = true;
+                local_54 = true;
             }
-            bool _e37 = local_52;
+            bool _e37 = local_54;
             if (_e37) {
-                local_53 = s_16.phase_param_a == 0.0;
+                local_55 = s_16.phase_param_a == 0.0;
             } else {
-                local_53 = false;
+                local_55 = false;
             }
-            bool _e44 = local_53;
-            local_51 = _e44;
+            bool _e44 = local_55;
+            local_53 = _e44;
         } else {
-            local_51 = true;
+            local_53 = true;
         }
-        bool _e46 = local_51;
-        local_50 = _e46;
+        bool _e46 = local_53;
+        local_52 = _e46;
     } else {
-        local_50 = false;
+        local_52 = false;
     }
-    bool _e48 = local_50;
+    bool _e48 = local_52;
     return _e48;
 }
 
@@ -3905,28 +3954,28 @@ AirlightResult airlight_in_scatter_canonical(
     AirlightScene s_17,
     AirlightCanonical g_20
 ) {
-    bool local_54 = {};
-    bool local_55 = {};
     bool local_56 = {};
+    bool local_57 = {};
+    bool local_58 = {};
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = {};
-    bool local_57 = {};
-    AirlightHalf half_13 = {};
-    bool local_58 = {};
     bool local_59 = {};
+    AirlightHalf half_13 = {};
     bool local_60 = {};
+    bool local_61 = {};
+    bool local_62 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
-    bool local_61 = {};
-    bool local_62 = {};
-    AirlightHalf half_14 = {};
     bool local_63 = {};
     bool local_64 = {};
+    AirlightHalf half_14 = {};
     bool local_65 = {};
+    bool local_66 = {};
+    bool local_67 = {};
     AirlightResult _e2 = airlight_limits(s_17, g_20);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
         return _e2;
@@ -3938,23 +3987,23 @@ AirlightResult airlight_in_scatter_canonical(
     float big_h_8 = s_17.sigma_t * h_6;
     bool _e12 = airlight_isotropic_scene(s_17);
     if (_e12) {
-        local_54 = t0_1 < x_h_1;
+        local_56 = t0_1 < x_h_1;
     } else {
-        local_54 = false;
+        local_56 = false;
     }
-    bool _e17 = local_54;
+    bool _e17 = local_56;
     if (_e17) {
         if (!(g_20.t_hi_infinite)) {
-            local_56 = x_h_1 < t1_1;
+            local_58 = x_h_1 < t1_1;
         } else {
-            local_56 = true;
+            local_58 = true;
         }
-        bool _e26 = local_56;
-        local_55 = _e26;
+        bool _e26 = local_58;
+        local_57 = _e26;
     } else {
-        local_55 = false;
+        local_57 = false;
     }
-    bool _e28 = local_55;
+    bool _e28 = local_57;
     if (_e28) {
         float _e29 = airlight_whole_line(s_17, g_20, big_h_8);
         return AirlightResult {metal::max(_e29, 0.0), AIRLIGHT_STATUS_OK};
@@ -3970,11 +4019,11 @@ AirlightResult airlight_in_scatter_canonical(
         float a_s_1 = (x_h_1 - t0_1) / h_6;
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
-            local_57 = t1_1 < x_h_1;
+            local_59 = t1_1 < x_h_1;
         } else {
-            local_57 = false;
+            local_59 = false;
         }
-        bool _e61 = local_57;
+        bool _e61 = local_59;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3990,11 +4039,11 @@ AirlightResult airlight_in_scatter_canonical(
         half_13 = AirlightHalf {false, {}, _e82, _e67, _e68, dy_1, dy_1, false};
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_58 = _e89 > 0.0;
+            local_60 = _e89 > 0.0;
         } else {
-            local_58 = false;
+            local_60 = false;
         }
-        bool _e93 = local_58;
+        bool _e93 = local_60;
         if (_e93) {
             float _e95 = half_13.big_h;
             float _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -4011,18 +4060,18 @@ AirlightResult airlight_in_scatter_canonical(
         total_3 = _e108 + _e112;
     }
     if (!(g_20.t_hi_infinite)) {
-        local_59 = t1_1 > x_h_1;
+        local_61 = t1_1 > x_h_1;
     } else {
-        local_59 = true;
+        local_61 = true;
     }
-    bool _e120 = local_59;
+    bool _e120 = local_61;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_60 = !(_e123);
+        local_62 = !(_e123);
     } else {
-        local_60 = false;
+        local_62 = false;
     }
-    bool _e126 = local_60;
+    bool _e126 = local_62;
     if (_e126) {
         float t_start = metal::max(t0_1, x_h_1);
         float a_s_2 = (t_start - x_h_1) / h_6;
@@ -4032,22 +4081,22 @@ AirlightResult airlight_in_scatter_canonical(
         float a_e_1 = (t1_1 - x_h_1) / h_6;
         if (!(g_20.t_hi_infinite)) {
             bool _e145 = airlight_is_finite(a_e_1);
-            local_61 = _e145;
+            local_63 = _e145;
         } else {
-            local_61 = false;
+            local_63 = false;
         }
-        bool _e147 = local_61;
+        bool _e147 = local_63;
         if (_e147) {
             float _e148 = airlight_bounded(a_e_1);
             float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152)));
             if (_e148 > 0.0) {
                 bool _e162 = airlight_is_finite(dv_end_1);
-                local_62 = _e162;
+                local_64 = _e162;
             } else {
-                local_62 = false;
+                local_64 = false;
             }
-            bool _e164 = local_62;
+            bool _e164 = local_64;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4067,11 +4116,11 @@ AirlightResult airlight_in_scatter_canonical(
         half_14 = AirlightHalf {true, {}, _e173, _e174, _e131, _e175, _e176, _e177};
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_63 = _e183 > 0.0;
+            local_65 = _e183 > 0.0;
         } else {
-            local_63 = false;
+            local_65 = false;
         }
-        bool _e187 = local_63;
+        bool _e187 = local_65;
         if (_e187) {
             float _e189 = half_14.big_h;
             float _e192 = dv_3;
@@ -4080,20 +4129,20 @@ AirlightResult airlight_in_scatter_canonical(
             bool _e197 = infinite_2;
             if (!(_e197)) {
                 float _e201 = dv_3;
-                local_64 = _e196 < _e201;
+                local_66 = _e196 < _e201;
             } else {
-                local_64 = true;
+                local_66 = true;
             }
-            bool _e204 = local_64;
+            bool _e204 = local_66;
             if (_e204) {
                 float cut_y_lo = _e131 / (1.0 + (_e131 * _e196));
                 if (cut_y_lo > 0.0) {
                     bool _e213 = airlight_is_finite(_e196);
-                    local_65 = _e213;
+                    local_67 = _e213;
                 } else {
-                    local_65 = false;
+                    local_67 = false;
                 }
-                bool _e215 = local_65;
+                bool _e215 = local_67;
                 if (_e215) {
                     float _e218 = half_14.big_h;
                     half_14 = AirlightHalf {true, {}, _e218, cut_y_lo, _e131, (_e196 * cut_y_lo) * _e131, _e196, false};
@@ -4113,23 +4162,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_66 = {};
-    bool local_67 = {};
+    bool local_68 = {};
+    bool local_69 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_66 = _e6;
+        local_68 = _e6;
     } else {
-        local_66 = false;
+        local_68 = false;
     }
-    bool _e8 = local_66;
+    bool _e8 = local_68;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_67 = _e12;
+        local_69 = _e12;
     } else {
-        local_67 = false;
+        local_69 = false;
     }
-    bool _e14 = local_67;
+    bool _e14 = local_69;
     return _e14;
 }
 
@@ -4146,15 +4195,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_68 = {};
+    bool local_70 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_68 = _e6;
+        local_70 = _e6;
     } else {
-        local_68 = false;
+        local_70 = false;
     }
-    bool _e8 = local_68;
+    bool _e8 = local_70;
     return _e8;
 }
 
@@ -4169,8 +4218,6 @@ metal::float3 airlight_normalize(
 bool airlight_valid(
     AirlightScene s_18
 ) {
-    bool local_69 = {};
-    bool local_70 = {};
     bool local_71 = {};
     bool local_72 = {};
     bool local_73 = {};
@@ -4179,9 +4226,9 @@ bool airlight_valid(
     bool local_76 = {};
     bool local_77 = {};
     bool local_78 = {};
-    bool ok = {};
     bool local_79 = {};
     bool local_80 = {};
+    bool ok = {};
     bool local_81 = {};
     bool local_82 = {};
     bool local_83 = {};
@@ -4208,101 +4255,103 @@ bool airlight_valid(
     bool local_104 = {};
     bool local_105 = {};
     bool local_106 = {};
+    bool local_107 = {};
+    bool local_108 = {};
     bool _e2 = airlight_vec_finite(s_18.origin);
     if (_e2) {
         bool _e6 = airlight_vec_finite(s_18.dir);
-        local_69 = _e6;
-    } else {
-        local_69 = false;
-    }
-    bool _e8 = local_69;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_18.dir);
-        local_70 = _e12;
-    } else {
-        local_70 = false;
-    }
-    bool _e14 = local_70;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_18.t_min);
-        local_71 = _e18;
+        local_71 = _e6;
     } else {
         local_71 = false;
     }
-    bool _e20 = local_71;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_18.light_position);
-        local_72 = _e24;
+    bool _e8 = local_71;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_18.dir);
+        local_72 = _e12;
     } else {
         local_72 = false;
     }
-    bool _e26 = local_72;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_18.intensity);
-        local_73 = _e30;
+    bool _e14 = local_72;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_18.t_min);
+        local_73 = _e18;
     } else {
         local_73 = false;
     }
-    bool _e32 = local_73;
-    if (_e32) {
-        local_74 = s_18.intensity >= 0.0;
+    bool _e20 = local_73;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_18.light_position);
+        local_74 = _e24;
     } else {
         local_74 = false;
     }
-    bool _e39 = local_74;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_18.sigma_s);
-        local_75 = _e43;
+    bool _e26 = local_74;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_18.intensity);
+        local_75 = _e30;
     } else {
         local_75 = false;
     }
-    bool _e45 = local_75;
-    if (_e45) {
-        local_76 = s_18.sigma_s >= 0.0;
+    bool _e32 = local_75;
+    if (_e32) {
+        local_76 = s_18.intensity >= 0.0;
     } else {
         local_76 = false;
     }
-    bool _e52 = local_76;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_18.sigma_t);
-        local_77 = _e56;
+    bool _e39 = local_76;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_18.sigma_s);
+        local_77 = _e43;
     } else {
         local_77 = false;
     }
-    bool _e58 = local_77;
-    if (_e58) {
-        local_78 = s_18.sigma_t >= 0.0;
+    bool _e45 = local_77;
+    if (_e45) {
+        local_78 = s_18.sigma_s >= 0.0;
     } else {
         local_78 = false;
     }
-    bool _e65 = local_78;
+    bool _e52 = local_78;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_18.sigma_t);
+        local_79 = _e56;
+    } else {
+        local_79 = false;
+    }
+    bool _e58 = local_79;
+    if (_e58) {
+        local_80 = s_18.sigma_t >= 0.0;
+    } else {
+        local_80 = false;
+    }
+    bool _e65 = local_80;
     ok = _e65;
     if ((s_18.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
             bool _e76 = airlight_is_finite(s_18.t_max);
-            local_79 = _e76;
+            local_81 = _e76;
         } else {
-            local_79 = false;
+            local_81 = false;
         }
-        bool _e78 = local_79;
+        bool _e78 = local_81;
         if (_e78) {
-            local_80 = s_18.t_min <= s_18.t_max;
+            local_82 = s_18.t_min <= s_18.t_max;
         } else {
-            local_80 = false;
+            local_82 = false;
         }
-        bool _e85 = local_80;
+        bool _e85 = local_82;
         ok = _e85;
     }
     if (s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         bool _e89 = ok;
         if (_e89) {
             bool _e93 = airlight_vec_finite(s_18.light_end);
-            local_81 = _e93;
+            local_83 = _e93;
         } else {
-            local_81 = false;
+            local_83 = false;
         }
-        bool _e95 = local_81;
+        bool _e95 = local_83;
         ok = _e95;
     } else {
         if (s_18.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -4310,76 +4359,76 @@ bool airlight_valid(
         }
     }
     if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_82 = s_18.surface_kind == AIRLIGHT_SURFACE_PHONG;
+        local_84 = s_18.surface_kind == AIRLIGHT_SURFACE_PHONG;
     } else {
-        local_82 = true;
+        local_84 = true;
     }
-    bool _e110 = local_82;
+    bool _e110 = local_84;
     if (_e110) {
         bool _e111 = ok;
         if (_e111) {
             bool _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_83 = _e115;
-        } else {
-            local_83 = false;
-        }
-        bool _e117 = local_83;
-        if (_e117) {
-            local_84 = s_18.brdf_scale >= 0.0;
-        } else {
-            local_84 = false;
-        }
-        bool _e124 = local_84;
-        if (_e124) {
-            local_85 = s_18.light_kind == AIRLIGHT_LIGHT_OMNI;
+            local_85 = _e115;
         } else {
             local_85 = false;
         }
-        bool _e131 = local_85;
-        if (_e131) {
-            local_86 = s_18.light_shape == AIRLIGHT_SHAPE_POINT;
+        bool _e117 = local_85;
+        if (_e117) {
+            local_86 = s_18.brdf_scale >= 0.0;
         } else {
             local_86 = false;
         }
-        bool _e138 = local_86;
-        if (_e138) {
-            float _e144 = airlight_safe_length(s_18.light_position - s_18.origin);
-            bool _e145 = airlight_is_finite(_e144);
-            local_87 = _e145;
+        bool _e124 = local_86;
+        if (_e124) {
+            local_87 = s_18.light_kind == AIRLIGHT_LIGHT_OMNI;
         } else {
             local_87 = false;
         }
-        bool _e147 = local_87;
+        bool _e131 = local_87;
+        if (_e131) {
+            local_88 = s_18.light_shape == AIRLIGHT_SHAPE_POINT;
+        } else {
+            local_88 = false;
+        }
+        bool _e138 = local_88;
+        if (_e138) {
+            float _e144 = airlight_safe_length(s_18.light_position - s_18.origin);
+            bool _e145 = airlight_is_finite(_e144);
+            local_89 = _e145;
+        } else {
+            local_89 = false;
+        }
+        bool _e147 = local_89;
         ok = _e147;
         if (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             bool _e151 = ok;
             if (_e151) {
                 bool _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_88 = _e155;
-            } else {
-                local_88 = false;
-            }
-            bool _e157 = local_88;
-            if (_e157) {
-                local_89 = s_18.brdf_exponent >= 0.0;
-            } else {
-                local_89 = false;
-            }
-            bool _e164 = local_89;
-            if (_e164) {
-                bool _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_90 = _e168;
+                local_90 = _e155;
             } else {
                 local_90 = false;
             }
-            bool _e170 = local_90;
-            if (_e170) {
-                bool _e174 = airlight_normalisable(s_18.brdf_view);
-                local_91 = _e174;
+            bool _e157 = local_90;
+            if (_e157) {
+                local_91 = s_18.brdf_exponent >= 0.0;
             } else {
                 local_91 = false;
             }
-            bool _e176 = local_91;
+            bool _e164 = local_91;
+            if (_e164) {
+                bool _e168 = airlight_vec_finite(s_18.brdf_view);
+                local_92 = _e168;
+            } else {
+                local_92 = false;
+            }
+            bool _e170 = local_92;
+            if (_e170) {
+                bool _e174 = airlight_normalisable(s_18.brdf_view);
+                local_93 = _e174;
+            } else {
+                local_93 = false;
+            }
+            bool _e176 = local_93;
             ok = _e176;
         }
     } else {
@@ -4391,72 +4440,72 @@ bool airlight_valid(
         bool _e184 = ok;
         if (_e184) {
             bool _e188 = airlight_vec_finite(s_18.light_axis);
-            local_92 = _e188;
-        } else {
-            local_92 = false;
-        }
-        bool _e190 = local_92;
-        if (_e190) {
-            bool _e194 = airlight_normalisable(s_18.light_axis);
-            local_93 = _e194;
-        } else {
-            local_93 = false;
-        }
-        bool _e196 = local_93;
-        if (_e196) {
-            local_94 = s_18.light_param_a >= 0.0;
+            local_94 = _e188;
         } else {
             local_94 = false;
         }
-        bool _e203 = local_94;
-        if (_e203) {
-            local_95 = s_18.light_param_a <= 1024.0;
+        bool _e190 = local_94;
+        if (_e190) {
+            bool _e194 = airlight_normalisable(s_18.light_axis);
+            local_95 = _e194;
         } else {
             local_95 = false;
         }
-        bool _e210 = local_95;
-        if (_e210) {
-            local_96 = metal::fract(s_18.light_param_a * 0.5) == 0.0;
+        bool _e196 = local_95;
+        if (_e196) {
+            local_96 = s_18.light_param_a >= 0.0;
         } else {
             local_96 = false;
         }
-        bool _e220 = local_96;
+        bool _e203 = local_96;
+        if (_e203) {
+            local_97 = s_18.light_param_a <= 1024.0;
+        } else {
+            local_97 = false;
+        }
+        bool _e210 = local_97;
+        if (_e210) {
+            local_98 = metal::fract(s_18.light_param_a * 0.5) == 0.0;
+        } else {
+            local_98 = false;
+        }
+        bool _e220 = local_98;
         ok = _e220;
     } else {
         if (s_18.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e224 = ok;
             if (_e224) {
                 bool _e228 = airlight_vec_finite(s_18.light_axis);
-                local_97 = _e228;
-            } else {
-                local_97 = false;
-            }
-            bool _e230 = local_97;
-            if (_e230) {
-                bool _e234 = airlight_normalisable(s_18.light_axis);
-                local_98 = _e234;
-            } else {
-                local_98 = false;
-            }
-            bool _e236 = local_98;
-            if (_e236) {
-                local_99 = s_18.light_param_b < s_18.light_param_a;
+                local_99 = _e228;
             } else {
                 local_99 = false;
             }
-            bool _e243 = local_99;
-            if (_e243) {
-                local_100 = s_18.light_param_b >= -1.0;
+            bool _e230 = local_99;
+            if (_e230) {
+                bool _e234 = airlight_normalisable(s_18.light_axis);
+                local_100 = _e234;
             } else {
                 local_100 = false;
             }
-            bool _e250 = local_100;
-            if (_e250) {
-                local_101 = s_18.light_param_a <= 1.0;
+            bool _e236 = local_100;
+            if (_e236) {
+                local_101 = s_18.light_param_b < s_18.light_param_a;
             } else {
                 local_101 = false;
             }
-            bool _e257 = local_101;
+            bool _e243 = local_101;
+            if (_e243) {
+                local_102 = s_18.light_param_b >= -1.0;
+            } else {
+                local_102 = false;
+            }
+            bool _e250 = local_102;
+            if (_e250) {
+                local_103 = s_18.light_param_a <= 1.0;
+            } else {
+                local_103 = false;
+            }
+            bool _e257 = local_103;
             ok = _e257;
         } else {
             if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -4475,40 +4524,40 @@ bool airlight_valid(
         case 4u: {
             bool _e267 = ok;
             if (_e267) {
-                local_102 = g_ok;
+                local_104 = g_ok;
             } else {
-                local_102 = false;
+                local_104 = false;
             }
-            bool _e271 = local_102;
+            bool _e271 = local_104;
             ok = _e271;
             break;
         }
         case 5u: {
             bool _e272 = ok;
             if (_e272) {
-                local_103 = g_ok;
-            } else {
-                local_103 = false;
-            }
-            bool _e276 = local_103;
-            if (_e276) {
-                local_104 = metal::abs(s_18.phase_param_b) < 1.0;
-            } else {
-                local_104 = false;
-            }
-            bool _e284 = local_104;
-            if (_e284) {
-                local_105 = s_18.phase_param_c >= 0.0;
+                local_105 = g_ok;
             } else {
                 local_105 = false;
             }
-            bool _e291 = local_105;
-            if (_e291) {
-                local_106 = s_18.phase_param_c <= 1.0;
+            bool _e276 = local_105;
+            if (_e276) {
+                local_106 = metal::abs(s_18.phase_param_b) < 1.0;
             } else {
                 local_106 = false;
             }
-            bool _e298 = local_106;
+            bool _e284 = local_106;
+            if (_e284) {
+                local_107 = s_18.phase_param_c >= 0.0;
+            } else {
+                local_107 = false;
+            }
+            bool _e291 = local_107;
+            if (_e291) {
+                local_108 = s_18.phase_param_c <= 1.0;
+            } else {
+                local_108 = false;
+            }
+            bool _e298 = local_108;
             ok = _e298;
             break;
         }
@@ -4603,21 +4652,21 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_107 = {};
-    bool local_108 = {};
+    bool local_109 = {};
+    bool local_110 = {};
     float m_9 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if (m_9 >= 0.0000000009313226) {
-            local_108 = m_9 <= AIRLIGHT_EXACT_RANGE;
+            local_110 = m_9 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_108 = false;
+            local_110 = false;
         }
-        bool _e21 = local_108;
-        local_107 = _e21;
+        bool _e21 = local_110;
+        local_109 = _e21;
     } else {
-        local_107 = true;
+        local_109 = true;
     }
-    bool _e23 = local_107;
+    bool _e23 = local_109;
     return _e23;
 }
 
@@ -4625,9 +4674,9 @@ AirlightCanonical airlight_refined(
     AirlightScene s_20,
     AirlightCanonical plain
 ) {
-    bool local_109 = {};
+    bool local_111 = {};
     AirlightCanonical out_2 = {};
-    bool local_110 = {};
+    bool local_112 = {};
     metal::float3 a_16 = metal::float3(0.0, 0.0, 1.0);
     uint key_4 = static_cast<uint>(s_20.flags > 1u);
     metal::float2 _e11 = airlight_two_sum(s_20.light_position[0], -(s_20.origin[0]), key_4);
@@ -4639,11 +4688,11 @@ AirlightCanonical airlight_refined(
     bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
-        local_109 = !(_e38);
+        local_111 = !(_e38);
     } else {
-        local_109 = true;
+        local_111 = true;
     }
-    bool _e41 = local_109;
+    bool _e41 = local_111;
     if (_e41) {
         return plain;
     }
@@ -4667,11 +4716,11 @@ AirlightCanonical airlight_refined(
     float h_7 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_110 = h_7 > 0.0;
+        local_112 = h_7 > 0.0;
     } else {
-        local_110 = false;
+        local_112 = false;
     }
-    bool _e101 = local_110;
+    bool _e101 = local_112;
     if (!(_e101)) {
         return plain;
     }
@@ -4696,9 +4745,9 @@ airlight_type_13 airlight_kronrod_rule(
 
 metal::float4 airlight_list_get(
     AirlightPanelList l,
-    uint i_15
+    uint i_16
 ) {
-    switch(i_15) {
+    switch(i_16) {
         case 0u: {
             return l.panel_a;
         }
@@ -4752,10 +4801,10 @@ metal::float4 airlight_list_get(
 
 void airlight_list_set(
     thread AirlightPanelList& l_1,
-    uint i_16,
+    uint i_17,
     metal::float4 v_5
 ) {
-    switch(i_16) {
+    switch(i_17) {
         case 0u: {
             l_1.panel_a = v_5;
             return;
@@ -5091,32 +5140,32 @@ AirlightOuter airlight_surface(
     AirlightScene s_24
 ) {
     AirlightOuter g_22 = {};
-    bool local_111 = {};
+    bool local_113 = {};
     metal::float3 u_1 = {};
     airlight_type_15 cuts_1 = airlight_type_15 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    uint i_17 = 1u;
-    uint j_3 = {};
-    bool local_112 = {};
-    uint k_5 = 0u;
-    uint i_18 = 0u;
-    bool local_113 = {};
-    uint i_19 = 0u;
-    uint i_20 = 1u;
+    uint i_18 = 1u;
+    uint j_4 = {};
     bool local_114 = {};
+    uint k_5 = 0u;
+    uint i_19 = 0u;
     bool local_115 = {};
+    uint i_20 = 0u;
+    uint i_21 = 1u;
     bool local_116 = {};
     bool local_117 = {};
     bool local_118 = {};
+    bool local_119 = {};
+    bool local_120 = {};
     AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     metal::float3 to_light_1 = s_24.light_position - s_24.origin;
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_24.intensity == 0.0))) {
-        local_111 = s_24.sigma_s == 0.0;
+        local_113 = s_24.sigma_s == 0.0;
     } else {
-        local_111 = true;
+        local_113 = true;
     }
-    bool _e18 = local_111;
+    bool _e18 = local_113;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5211,91 +5260,91 @@ AirlightOuter airlight_surface(
     float _e218 = cuts_1.inner[9];
     float _e220 = cuts_1.inner[10];
     airlight_type_16 kinks = airlight_type_16 {{_e210, _e212, _e214, _e216, _e218, _e220}};
-    uint2 loop_bound_21 = uint2(4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_21) {
-            uint _e258 = i_17;
-            i_17 = _e258 + 1u;
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e258 = i_18;
+            i_18 = _e258 + 1u;
         }
-        loop_init_21 = false;
-        uint _e224 = i_17;
+        loop_init_22 = false;
+        uint _e224 = i_18;
         if (_e224 < 11u) {
         } else {
             break;
         }
         {
-            uint _e227 = i_17;
+            uint _e227 = i_18;
             float c_10 = cuts_1.inner[metal::min(unsigned(_e227), 10u)];
-            uint _e230 = i_17;
-            j_3 = _e230;
-            uint2 loop_bound_22 = uint2(4294967295u);
+            uint _e230 = i_18;
+            j_4 = _e230;
+            uint2 loop_bound_23 = uint2(4294967295u);
             while(true) {
-                if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                uint _e232 = j_3;
+                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                uint _e232 = j_4;
                 if (_e232 > 0u) {
-                    uint _e237 = j_3;
+                    uint _e237 = j_4;
                     float _e241 = cuts_1.inner[metal::min(unsigned(_e237 - 1u), 10u)];
-                    local_112 = _e241 > c_10;
+                    local_114 = _e241 > c_10;
                 } else {
-                    local_112 = false;
+                    local_114 = false;
                 }
-                bool _e244 = local_112;
+                bool _e244 = local_114;
                 if (_e244) {
                 } else {
                     break;
                 }
                 {
-                    uint _e245 = j_3;
-                    uint _e247 = j_3;
+                    uint _e245 = j_4;
+                    uint _e247 = j_4;
                     float _e251 = cuts_1.inner[metal::min(unsigned(_e247 - 1u), 10u)];
                     cuts_1.inner[metal::min(unsigned(_e245), 10u)] = _e251;
-                    uint _e252 = j_3;
-                    j_3 = _e252 - 1u;
+                    uint _e252 = j_4;
+                    j_4 = _e252 - 1u;
                 }
             }
-            uint _e255 = j_3;
+            uint _e255 = j_4;
             cuts_1.inner[metal::min(unsigned(_e255), 10u)] = c_10;
         }
     }
     float hi_5 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
     g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first : 0.0;
-    uint2 loop_bound_23 = uint2(4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_24 = uint2(4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_22) {
-            uint _e305 = i_18;
-            i_18 = _e305 + 1u;
+        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e305 = i_19;
+            i_19 = _e305 + 1u;
         }
-        loop_init_22 = false;
-        uint _e276 = i_18;
+        loop_init_23 = false;
+        uint _e276 = i_19;
         if (_e276 < 11u) {
         } else {
             break;
         }
         {
-            uint _e279 = i_18;
+            uint _e279 = i_19;
             float _e281 = cuts_1.inner[metal::min(unsigned(_e279), 10u)];
             uint _e283 = k_5;
             float _e285 = g_22.gamma.inner[metal::min(unsigned(_e283), 12u)];
             if (_e281 > _e285) {
-                uint _e289 = i_18;
+                uint _e289 = i_19;
                 float _e291 = cuts_1.inner[metal::min(unsigned(_e289), 10u)];
-                local_113 = _e291 < hi_5;
+                local_115 = _e291 < hi_5;
             } else {
-                local_113 = false;
+                local_115 = false;
             }
-            bool _e294 = local_113;
+            bool _e294 = local_115;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = _e295 + 1u;
                 uint _e299 = k_5;
-                uint _e301 = i_18;
+                uint _e301 = i_19;
                 float _e303 = cuts_1.inner[metal::min(unsigned(_e301), 10u)];
                 g_22.gamma.inner[metal::min(unsigned(_e299), 12u)] = _e303;
             }
@@ -5305,80 +5354,80 @@ AirlightOuter airlight_surface(
     g_22.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_5;
     uint _e313 = k_5;
     g_22.panels = _e313 + 1u;
-    uint2 loop_bound_24 = uint2(4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_25 = uint2(4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e328 = i_19;
-            i_19 = _e328 + 1u;
+        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e328 = i_20;
+            i_20 = _e328 + 1u;
         }
-        loop_init_23 = false;
-        uint _e318 = i_19;
+        loop_init_24 = false;
+        uint _e318 = i_20;
         uint _e320 = g_22.panels;
         if (_e318 <= _e320) {
         } else {
             break;
         }
         {
-            uint _e323 = i_19;
-            uint _e325 = i_19;
+            uint _e323 = i_20;
+            uint _e325 = i_20;
             g_22.edges.inner[metal::min(unsigned(_e323), 12u)] = static_cast<float>(_e325);
         }
     }
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
-        uint2 loop_bound_25 = uint2(4294967295u);
-        bool loop_init_24 = true;
+        uint2 loop_bound_26 = uint2(4294967295u);
+        bool loop_init_25 = true;
         while(true) {
-            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_24) {
-                uint _e388 = i_20;
-                i_20 = _e388 + 1u;
+            if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+            if (!loop_init_25) {
+                uint _e388 = i_21;
+                i_21 = _e388 + 1u;
             }
-            loop_init_24 = false;
-            uint _e335 = i_20;
+            loop_init_25 = false;
+            uint _e335 = i_21;
             uint _e336 = k_5;
             if (_e335 <= _e336) {
             } else {
                 break;
             }
             {
-                uint _e339 = i_20;
+                uint _e339 = i_21;
                 float e_4 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
                 if (!((e_4 == kinks.inner[0]))) {
-                    local_114 = e_4 == kinks.inner[1];
-                } else {
-                    local_114 = true;
-                }
-                bool _e350 = local_114;
-                if (!(_e350)) {
-                    local_115 = e_4 == kinks.inner[2];
-                } else {
-                    local_115 = true;
-                }
-                bool _e357 = local_115;
-                if (!(_e357)) {
-                    local_116 = e_4 == kinks.inner[3];
+                    local_116 = e_4 == kinks.inner[1];
                 } else {
                     local_116 = true;
                 }
-                bool _e364 = local_116;
-                if (!(_e364)) {
-                    local_117 = e_4 == kinks.inner[4];
+                bool _e350 = local_116;
+                if (!(_e350)) {
+                    local_117 = e_4 == kinks.inner[2];
                 } else {
                     local_117 = true;
                 }
-                bool _e371 = local_117;
-                if (!(_e371)) {
-                    local_118 = e_4 == kinks.inner[5];
+                bool _e357 = local_117;
+                if (!(_e357)) {
+                    local_118 = e_4 == kinks.inner[3];
                 } else {
                     local_118 = true;
                 }
-                bool kink = local_118;
+                bool _e364 = local_118;
+                if (!(_e364)) {
+                    local_119 = e_4 == kinks.inner[4];
+                } else {
+                    local_119 = true;
+                }
+                bool _e371 = local_119;
+                if (!(_e371)) {
+                    local_120 = e_4 == kinks.inner[5];
+                } else {
+                    local_120 = true;
+                }
+                bool kink = local_120;
                 uint _e380 = g_22.smooth_edges;
-                uint _e382 = i_20;
+                uint _e382 = i_21;
                 g_22.smooth_edges = _e380 | (kink ? 0u : (1u << _e382));
             }
         }
@@ -5391,7 +5440,7 @@ float airlight_lobe_at(
     AirlightLobe q_1,
     float x_18
 ) {
-    bool local_119 = {};
+    bool local_121 = {};
     metal::float2 _e4 = airlight_cos_sin(0.5 * x_18);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
@@ -5401,11 +5450,11 @@ float airlight_lobe_at(
     float clip = metal::max(even + odd_1, 0.0) + metal::max(even - odd_1, 0.0);
     float fall = q_1.k * s2_;
     if (fall < 1.0) {
-        local_119 = clip > 0.0;
+        local_121 = clip > 0.0;
     } else {
-        local_119 = false;
+        local_121 = false;
     }
-    bool _e43 = local_119;
+    bool _e43 = local_121;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return clip * metal::exp(q_1.exponent * (q_1.log_peak + _e47));
@@ -5433,7 +5482,7 @@ float airlight_arc_end(
     float cut
 ) {
     float end_1 = {};
-    bool local_120 = {};
+    bool local_122 = {};
     end_1 = x_19;
     float _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
@@ -5449,11 +5498,11 @@ float airlight_arc_end(
     float _e16 = end_1;
     if (_e16 > -(cut)) {
         float _e21 = end_1;
-        local_120 = _e21 < cut;
+        local_122 = _e21 < cut;
     } else {
-        local_120 = false;
+        local_122 = false;
     }
-    bool _e24 = local_120;
+    bool _e24 = local_122;
     return _e24 ? _e15 : 0.0;
 }
 
@@ -5468,31 +5517,31 @@ float airlight_lobe_piece(
     float hi_3,
     bool smoothstep_1
 ) {
-    bool local_121 = {};
+    bool local_123 = {};
     float sum_5 = 0.0;
     uint k_6 = 0u;
     float w_7 = hi_3 - lo_4;
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, lo_4 + (0.5 * w_7));
-        local_121 = !((_e14 > 0.0));
+        local_123 = !((_e14 > 0.0));
     } else {
-        local_121 = true;
+        local_123 = true;
     }
-    bool _e19 = local_121;
+    bool _e19 = local_123;
     if (_e19) {
         return 0.0;
     }
     airlight_type_17 _e21 = airlight_lobe_rule();
-    uint2 loop_bound_26 = uint2(4294967295u);
-    bool loop_init_25 = true;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_26) {
             uint _e43 = k_6;
             k_6 = _e43 + 1u;
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e26 = k_6;
         if (_e26 < AIRLIGHT_LOBE_PAIRS) {
         } else {
@@ -5521,7 +5570,7 @@ float airlight_lobe_arcs(
     float reach = 1.0;
     metal::float2 inner = metal::float2(0.0);
     float sum_6 = 0.0;
-    uint i_21 = 0u;
+    uint i_22 = 0u;
     float c_11 = g_23.cos_r * cs.x;
     float d_4 = g_23.sin_r * cs.y;
     float peak = c_11 + d_4;
@@ -5557,25 +5606,25 @@ float airlight_lobe_arcs(
     float _e90 = inner.y;
     airlight_type_12 edges = airlight_type_12 {{0.0, _e88, _e90, cut_2}};
     bool smoothstep_2 = exponent_1 < 1.0;
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e112 = i_21;
-            i_21 = _e112 + 1u;
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e112 = i_22;
+            i_22 = _e112 + 1u;
         }
-        loop_init_26 = false;
-        uint _e99 = i_21;
+        loop_init_27 = false;
+        uint _e99 = i_22;
         if (_e99 < 3u) {
         } else {
             break;
         }
         {
             float _e102 = sum_6;
-            uint _e103 = i_21;
-            uint _e105 = i_21;
+            uint _e103 = i_22;
+            uint _e105 = i_22;
             float _e109 = airlight_lobe_piece(q_6, edges.inner[metal::min(unsigned(_e103), 3u)], edges.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
             sum_6 = _e102 + _e109;
         }
@@ -5588,33 +5637,33 @@ AirlightOuter airlight_outer(
     AirlightScene s_25
 ) {
     AirlightOuter g_24 = {};
-    bool local_122 = {};
-    bool local_123 = {};
-    float s_star = 0.0;
-    float t_star = {};
     bool local_124 = {};
     bool local_125 = {};
+    float s_star = 0.0;
+    float t_star = {};
     bool local_126 = {};
     bool local_127 = {};
     bool local_128 = {};
     bool local_129 = {};
-    float scale = 0.0;
     bool local_130 = {};
     bool local_131 = {};
+    float scale = 0.0;
     bool local_132 = {};
     bool local_133 = {};
     bool local_134 = {};
+    bool local_135 = {};
+    bool local_136 = {};
     airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     airlight_type_18 at = {};
-    bool local_135 = {};
-    uint i_22 = 0u;
-    bool local_136 = {};
     bool local_137 = {};
+    uint i_23 = 0u;
     bool local_138 = {};
     bool local_139 = {};
-    uint n_1 = 0u;
-    uint i_23 = 0u;
     bool local_140 = {};
+    bool local_141 = {};
+    uint n_1 = 0u;
+    uint i_24 = 0u;
+    bool local_142 = {};
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         AirlightOuter _e4 = airlight_surface(s_25);
         return _e4;
@@ -5628,17 +5677,17 @@ AirlightOuter airlight_outer(
     metal::float3 ab_1 = s_25.light_end - s_25.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_122 = s_25.intensity == 0.0;
+        local_124 = s_25.intensity == 0.0;
     } else {
-        local_122 = true;
+        local_124 = true;
     }
-    bool _e26 = local_122;
+    bool _e26 = local_124;
     if (!(_e26)) {
-        local_123 = s_25.sigma_s == 0.0;
+        local_125 = s_25.sigma_s == 0.0;
     } else {
-        local_123 = true;
+        local_125 = true;
     }
-    bool _e34 = local_123;
+    bool _e34 = local_125;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -5662,94 +5711,94 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_5 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_124 = sin_a_1 > 0.0;
-    } else {
-        local_124 = false;
-    }
-    bool _e84 = local_124;
-    if (_e84) {
-        float _e87 = s_star;
-        local_125 = _e87 >= 0.0;
-    } else {
-        local_125 = false;
-    }
-    bool _e91 = local_125;
-    if (_e91) {
-        float _e94 = s_star;
-        local_126 = _e94 <= _e15;
+        local_126 = sin_a_1 > 0.0;
     } else {
         local_126 = false;
     }
-    bool _e97 = local_126;
-    if (_e97) {
-        float _e101 = t_star;
-        local_127 = s_25.t_min <= _e101;
+    bool _e84 = local_126;
+    if (_e84) {
+        float _e87 = s_star;
+        local_127 = _e87 >= 0.0;
     } else {
         local_127 = false;
     }
-    bool _e104 = local_127;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_129 = _e110 <= s_25.t_max;
-        } else {
-            local_129 = true;
-        }
-        bool _e114 = local_129;
-        local_128 = _e114;
+    bool _e91 = local_127;
+    if (_e91) {
+        float _e94 = s_star;
+        local_128 = _e94 <= _e15;
     } else {
         local_128 = false;
     }
-    bool _e116 = local_128;
+    bool _e97 = local_128;
+    if (_e97) {
+        float _e101 = t_star;
+        local_129 = s_25.t_min <= _e101;
+    } else {
+        local_129 = false;
+    }
+    bool _e104 = local_129;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_131 = _e110 <= s_25.t_max;
+        } else {
+            local_131 = true;
+        }
+        bool _e114 = local_131;
+        local_130 = _e114;
+    } else {
+        local_130 = false;
+    }
+    bool _e116 = local_130;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_130 = _e73 > 0.0;
+        local_132 = _e73 > 0.0;
     } else {
-        local_130 = false;
+        local_132 = false;
     }
-    bool _e129 = local_130;
+    bool _e129 = local_132;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_131 = _e136 < (_e15 + _e15);
+        local_133 = _e136 < (_e15 + _e15);
     } else {
-        local_131 = false;
+        local_133 = false;
     }
-    bool _e140 = local_131;
+    bool _e140 = local_133;
     if (_e140) {
         float _e143 = scale;
-        local_132 = _e143 < _e15;
+        local_134 = _e143 < _e15;
     } else {
-        local_132 = false;
+        local_134 = false;
     }
-    bool near_1 = local_132;
+    bool near_1 = local_134;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_133 = _e154;
+        local_135 = _e154;
     } else {
-        local_133 = false;
+        local_135 = false;
     }
-    bool _e156 = local_133;
+    bool _e156 = local_135;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_134 = _e163;
+        local_136 = _e163;
     } else {
-        local_134 = false;
+        local_136 = false;
     }
-    bool _e165 = local_134;
+    bool _e165 = local_136;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -5766,71 +5815,71 @@ AirlightOuter airlight_outer(
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_135 = metal::min(-(_e194), _e197) < 0.5;
+        local_137 = metal::min(-(_e194), _e197) < 0.5;
     } else {
-        local_135 = false;
+        local_137 = false;
     }
-    bool sliver = local_135;
-    uint2 loop_bound_28 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    bool sliver = local_137;
+    uint2 loop_bound_29 = uint2(4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_27) {
-            uint _e252 = i_22;
-            i_22 = _e252 + 1u;
+        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (!loop_init_28) {
+            uint _e252 = i_23;
+            i_23 = _e252 + 1u;
         }
-        loop_init_27 = false;
-        uint _e205 = i_22;
+        loop_init_28 = false;
+        uint _e205 = i_23;
         if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            uint _e208 = i_22;
+            uint _e208 = i_23;
             if (_e208 == 0u) {
-                local_136 = sliver;
+                local_138 = sliver;
             } else {
-                local_136 = false;
+                local_138 = false;
             }
-            bool _e214 = local_136;
+            bool _e214 = local_138;
             if (_e214) {
                 continue;
             }
             if (cos_a_2 == 0.0) {
-                uint _e219 = i_22;
-                local_137 = _e219 > 0u;
-            } else {
-                local_137 = false;
-            }
-            bool _e223 = local_137;
-            if (_e223) {
-                continue;
-            }
-            uint _e224 = i_22;
-            if (_e224 == 2u) {
-                local_138 = infinite_4;
-            } else {
-                local_138 = false;
-            }
-            bool _e230 = local_138;
-            if (_e230) {
-                continue;
-            }
-            uint _e231 = i_22;
-            float _e233 = at.inner[metal::min(unsigned(_e231), 2u)];
-            if (_e233 > 0.0) {
-                uint _e238 = i_22;
-                float _e240 = at.inner[metal::min(unsigned(_e238), 2u)];
-                local_139 = _e240 < _e15;
+                uint _e219 = i_23;
+                local_139 = _e219 > 0u;
             } else {
                 local_139 = false;
             }
-            bool _e243 = local_139;
+            bool _e223 = local_139;
+            if (_e223) {
+                continue;
+            }
+            uint _e224 = i_23;
+            if (_e224 == 2u) {
+                local_140 = infinite_4;
+            } else {
+                local_140 = false;
+            }
+            bool _e230 = local_140;
+            if (_e230) {
+                continue;
+            }
+            uint _e231 = i_23;
+            float _e233 = at.inner[metal::min(unsigned(_e231), 2u)];
+            if (_e233 > 0.0) {
+                uint _e238 = i_23;
+                float _e240 = at.inner[metal::min(unsigned(_e238), 2u)];
+                local_141 = _e240 < _e15;
+            } else {
+                local_141 = false;
+            }
+            bool _e243 = local_141;
             if (_e243) {
-                uint _e244 = i_22;
+                uint _e244 = i_23;
                 AirlightOuter _e246 = g_24;
-                uint _e247 = i_22;
+                uint _e247 = i_23;
                 float _e249 = at.inner[metal::min(unsigned(_e247), 2u)];
                 float _e250 = airlight_to_w(_e246, _e249);
                 cuts_2.inner[metal::min(unsigned(_e244), 2u)] = _e250;
@@ -5866,39 +5915,39 @@ AirlightOuter airlight_outer(
     AirlightOuter _e291 = g_24;
     float _e293 = airlight_to_w(_e291, 0.0);
     g_24.edges.inner[0] = _e293;
-    uint2 loop_bound_29 = uint2(4294967295u);
-    bool loop_init_28 = true;
+    uint2 loop_bound_30 = uint2(4294967295u);
+    bool loop_init_29 = true;
     while(true) {
-        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-        if (!loop_init_28) {
-            uint _e327 = i_23;
-            i_23 = _e327 + 1u;
+        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_29) {
+            uint _e327 = i_24;
+            i_24 = _e327 + 1u;
         }
-        loop_init_28 = false;
-        uint _e298 = i_23;
+        loop_init_29 = false;
+        uint _e298 = i_24;
         if (_e298 < 3u) {
         } else {
             break;
         }
         {
-            uint _e301 = i_23;
+            uint _e301 = i_24;
             float _e303 = cuts_2.inner[metal::min(unsigned(_e301), 2u)];
             uint _e305 = n_1;
             float _e307 = g_24.edges.inner[metal::min(unsigned(_e305), 12u)];
             if (_e303 > _e307) {
-                uint _e311 = i_23;
+                uint _e311 = i_24;
                 float _e313 = cuts_2.inner[metal::min(unsigned(_e311), 2u)];
-                local_140 = _e313 < _e288;
+                local_142 = _e313 < _e288;
             } else {
-                local_140 = false;
+                local_142 = false;
             }
-            bool _e316 = local_140;
+            bool _e316 = local_142;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = _e317 + 1u;
                 uint _e321 = n_1;
-                uint _e323 = i_23;
+                uint _e323 = i_24;
                 float _e325 = cuts_2.inner[metal::min(unsigned(_e323), 2u)];
                 g_24.edges.inner[metal::min(unsigned(_e321), 12u)] = _e325;
             }
@@ -5925,12 +5974,12 @@ AirlightNode airlight_outer_node(
     AirlightScene p = {};
     float gamma_1 = {};
     float jacobian = {};
-    bool local_141 = {};
-    bool local_142 = {};
     bool local_143 = {};
     bool local_144 = {};
     bool local_145 = {};
     bool local_146 = {};
+    bool local_147 = {};
+    bool local_148 = {};
     float weight = 0.0;
     float at_1 = {};
     float ds = 1.0;
@@ -5939,63 +5988,63 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_24 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_25.panels - 1u);
-        float t_7 = x_20 - static_cast<float>(i_24);
-        float a_29 = g_25.gamma.inner[metal::min(unsigned(i_24), 12u)];
-        float b_19 = g_25.gamma.inner[metal::min(unsigned(i_24 + 1u), 12u)];
+        uint i_25 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_25.panels - 1u);
+        float t_7 = x_20 - static_cast<float>(i_25);
+        float a_29 = g_25.gamma.inner[metal::min(unsigned(i_25), 12u)];
+        float b_19 = g_25.gamma.inner[metal::min(unsigned(i_25 + 1u), 12u)];
         float w_8 = b_19 - a_29;
         float u_4 = 1.0 - t_7;
-        bool smooth_a = ((g_25.smooth_edges >> i_24) & 1u) != 0u;
-        bool smooth_b = ((g_25.smooth_edges >> (i_24 + 1u)) & 1u) != 0u;
+        bool smooth_a = ((g_25.smooth_edges >> i_25) & 1u) != 0u;
+        bool smooth_b = ((g_25.smooth_edges >> (i_25 + 1u)) & 1u) != 0u;
         gamma_1 = a_29 + (((w_8 * t_7) * t_7) * ((3.0 - t_7) - t_7));
         jacobian = ((w_8 * 6.0) * t_7) * u_4;
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_141 = !(smooth_a);
-        } else {
-            local_141 = false;
-        }
-        bool _e66 = local_141;
-        gamma_1 = _e66 ? (a_29 + ((w_8 * t_7) * t_7)) : _e58;
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_142 = !(smooth_a);
-        } else {
-            local_142 = false;
-        }
-        bool _e75 = local_142;
-        jacobian = _e75 ? (w_8 * (t_7 + t_7)) : _e68;
-        float _e77 = gamma_1;
-        if (smooth_a) {
-            local_143 = !(smooth_b);
+            local_143 = !(smooth_a);
         } else {
             local_143 = false;
         }
-        bool _e85 = local_143;
-        gamma_1 = _e85 ? (b_19 - ((w_8 * u_4) * u_4)) : _e77;
-        float _e87 = jacobian;
-        if (smooth_a) {
-            local_144 = !(smooth_b);
+        bool _e66 = local_143;
+        gamma_1 = _e66 ? (a_29 + ((w_8 * t_7) * t_7)) : _e58;
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_144 = !(smooth_a);
         } else {
             local_144 = false;
         }
-        bool _e94 = local_144;
-        jacobian = _e94 ? (w_8 * (u_4 + u_4)) : _e87;
-        float _e96 = gamma_1;
+        bool _e75 = local_144;
+        jacobian = _e75 ? (w_8 * (t_7 + t_7)) : _e68;
+        float _e77 = gamma_1;
         if (smooth_a) {
-            local_145 = smooth_b;
+            local_145 = !(smooth_b);
         } else {
             local_145 = false;
         }
-        bool _e102 = local_145;
-        gamma_1 = _e102 ? (a_29 + (w_8 * t_7)) : _e96;
-        float _e104 = jacobian;
+        bool _e85 = local_145;
+        gamma_1 = _e85 ? (b_19 - ((w_8 * u_4) * u_4)) : _e77;
+        float _e87 = jacobian;
         if (smooth_a) {
-            local_146 = smooth_b;
+            local_146 = !(smooth_b);
         } else {
             local_146 = false;
         }
-        bool _e108 = local_146;
+        bool _e94 = local_146;
+        jacobian = _e94 ? (w_8 * (u_4 + u_4)) : _e87;
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_147 = smooth_b;
+        } else {
+            local_147 = false;
+        }
+        bool _e102 = local_147;
+        gamma_1 = _e102 ? (a_29 + (w_8 * t_7)) : _e96;
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_148 = smooth_b;
+        } else {
+            local_148 = false;
+        }
+        bool _e108 = local_148;
         jacobian = _e108 ? w_8 : _e104;
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6051,14 +6100,14 @@ AirlightNode airlight_outer_node(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_147 = {};
+    bool local_149 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_147 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_149 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_147 = true;
+        local_149 = true;
     }
-    bool _e11 = local_147;
+    bool _e11 = local_149;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -6069,17 +6118,17 @@ AirlightResult airlight_node_integral(
     AirlightNode n_2
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_148 = {};
+    bool local_150 = {};
     AirlightCanonical g_26 = {};
     AirlightScene p_2 = n_2.scene;
     bool _e7 = airlight_vec_finite(n_2.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_2.scene.dir);
-        local_148 = _e11;
+        local_150 = _e11;
     } else {
-        local_148 = false;
+        local_150 = false;
     }
-    bool _e13 = local_148;
+    bool _e13 = local_150;
     if (_e13) {
         g_26 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -6107,21 +6156,21 @@ AirlightResult airlight_point_integral(
 AirlightResult airlight_in_scatter_point(
     AirlightScene s_27
 ) {
-    bool local_149 = {};
-    bool local_150 = {};
+    bool local_151 = {};
+    bool local_152 = {};
     bool _e1 = airlight_valid(s_27);
     if (!(!(_e1))) {
-        local_149 = s_27.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_151 = s_27.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_149 = true;
+        local_151 = true;
     }
-    bool _e10 = local_149;
+    bool _e10 = local_151;
     if (!(_e10)) {
-        local_150 = s_27.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_152 = s_27.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_150 = true;
+        local_152 = true;
     }
-    bool _e18 = local_150;
+    bool _e18 = local_152;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -6132,21 +6181,21 @@ AirlightResult airlight_in_scatter_point(
 AirlightResult airlight_in_scatter_route(
     AirlightScene s_28
 ) {
-    bool local_151 = {};
-    bool local_152 = {};
+    bool local_153 = {};
+    bool local_154 = {};
     bool _e1 = airlight_valid(s_28);
     if (!(!(_e1))) {
-        local_151 = s_28.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_153 = s_28.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_151 = true;
+        local_153 = true;
     }
-    bool _e10 = local_151;
+    bool _e10 = local_153;
     if (!(_e10)) {
-        local_152 = s_28.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_154 = s_28.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_152 = true;
+        local_154 = true;
     }
-    bool _e18 = local_152;
+    bool _e18 = local_154;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -6182,15 +6231,15 @@ AirlightResult airlight_in_scatter(
     uint step_2 = 0u;
     float k_7 = {};
     float gauss = {};
-    uint j_4 = {};
-    bool local_153 = {};
+    uint j_5 = {};
+    bool local_155 = {};
     float f = {};
-    bool local_154 = {};
+    bool local_156 = {};
     bool split = {};
     uint tries = {};
-    bool local_155 = {};
-    bool local_156 = {};
     bool local_157 = {};
+    bool local_158 = {};
+    bool local_159 = {};
     bool _e1 = airlight_valid(s_29);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -6206,16 +6255,16 @@ AirlightResult airlight_in_scatter(
     a_17 = _e6.edges.inner[0];
     b_13 = _e6.edges.inner[1];
     uint evaluations = (2u * _e6.max_panels) - 1u;
-    uint2 loop_bound_30 = uint2(4294967295u);
-    bool loop_init_29 = true;
+    uint2 loop_bound_31 = uint2(4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e250 = step_2;
             step_2 = _e250 + 1u;
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e78 = step_2;
         if (_e78 < evaluations) {
         } else {
@@ -6230,33 +6279,33 @@ AirlightResult airlight_in_scatter(
             float hw_2 = 0.5 * (_e85 - _e86);
             k_7 = 0.0;
             gauss = 0.0;
-            j_4 = 0u;
-            uint2 loop_bound_31 = uint2(4294967295u);
-            bool loop_init_30 = true;
+            j_5 = 0u;
+            uint2 loop_bound_32 = uint2(4294967295u);
+            bool loop_init_31 = true;
             while(true) {
-                if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-                loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-                if (!loop_init_30) {
-                    uint _e156 = j_4;
-                    j_4 = _e156 + 1u;
+                if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+                if (!loop_init_31) {
+                    uint _e156 = j_5;
+                    j_5 = _e156 + 1u;
                 }
-                loop_init_30 = false;
-                uint _e96 = j_4;
+                loop_init_31 = false;
+                uint _e96 = j_5;
                 if (_e96 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e99 = j_4;
+                    uint _e99 = j_5;
                     metal::float3 node_1 = _e19.inner[metal::min(unsigned(airlight_naga_div(_e99, 2u)), 3u)];
-                    uint _e109 = j_4;
+                    uint _e109 = j_5;
                     if ((_e109 & 1u) == 0u) {
-                        uint _e116 = j_4;
-                        local_153 = _e116 < 6u;
+                        uint _e116 = j_5;
+                        local_155 = _e116 < 6u;
                     } else {
-                        local_153 = false;
+                        local_155 = false;
                     }
-                    bool _e120 = local_153;
+                    bool _e120 = local_155;
                     float w_9 = _e120 ? (c_15 - (hw_2 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e99, 2u)), 3u)].x)) : (c_15 + (hw_2 * _e19.inner[metal::min(unsigned(airlight_naga_div(_e99, 2u)), 3u)].x));
                     AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_9);
                     f = 0.0;
@@ -6266,11 +6315,11 @@ AirlightResult airlight_in_scatter(
                             return _e128;
                         }
                         if (s_29.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_154 = s_29.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_156 = s_29.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_154 = false;
+                            local_156 = false;
                         }
-                        bool _e141 = local_154;
+                        bool _e141 = local_156;
                         if (_e141) {
                             return _e128;
                         }
@@ -6318,16 +6367,16 @@ AirlightResult airlight_in_scatter(
                 } else {
                     split = false;
                     tries = 0u;
-                    uint2 loop_bound_32 = uint2(4294967295u);
-                    bool loop_init_31 = true;
+                    uint2 loop_bound_33 = uint2(4294967295u);
+                    bool loop_init_32 = true;
                     while(true) {
-                        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-                        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-                        if (!loop_init_31) {
+                        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+                        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+                        if (!loop_init_32) {
                             uint _e245 = tries;
                             tries = _e245 + 1u;
                         }
-                        loop_init_31 = false;
+                        loop_init_32 = false;
                         uint _e197 = tries;
                         if (_e197 < _e6.max_panels) {
                         } else {
@@ -6341,18 +6390,18 @@ AirlightResult airlight_in_scatter(
                             uint worst_1 = _e202.worst;
                             if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * metal::abs(total_4)))))) {
                                 uint _e213 = count_2;
-                                local_155 = _e213 == _e6.max_panels;
+                                local_157 = _e213 == _e6.max_panels;
                             } else {
-                                local_155 = true;
+                                local_157 = true;
                             }
-                            bool _e217 = local_155;
+                            bool _e217 = local_157;
                             if (!(_e217)) {
                                 bool _e221 = airlight_is_finite(total_4);
-                                local_156 = !(_e221);
+                                local_158 = !(_e221);
                             } else {
-                                local_156 = true;
+                                local_158 = true;
                             }
-                            bool _e224 = local_156;
+                            bool _e224 = local_158;
                             if (_e224) {
                                 break;
                             }
@@ -6362,11 +6411,11 @@ AirlightResult airlight_in_scatter(
                             float wb_1 = _e226.y;
                             float mid_1 = 0.5 * (wa_1 + wb_1);
                             if (mid_1 > wa_1) {
-                                local_157 = mid_1 < wb_1;
+                                local_159 = mid_1 < wb_1;
                             } else {
-                                local_157 = false;
+                                local_159 = false;
                             }
-                            bool _e237 = local_157;
+                            bool _e237 = local_159;
                             if (!(_e237)) {
                                 airlight_list_set(list_1, worst_1, metal::float4(_e226.xyz, 0.0));
                                 continue;

@@ -3215,6 +3215,10 @@ fn airlight_half(s_12: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, ha
 fn airlight_on_line(s_13: AirlightScene, g_17: AirlightCanonical) -> f32 {
     var local_40: bool;
     var span_1: f32;
+    var local_41: bool;
+    var local_42: bool;
+    var j_3: f32 = 0f;
+    var i_15: u32 = 0u;
     var e2_: array<f32, 10>;
     var tail: f32 = 0f;
 
@@ -3248,23 +3252,63 @@ fn airlight_on_line(s_13: AirlightScene, g_17: AirlightCanonical) -> f32 {
         return _e77;
     }
     let two_st = (s_13.sigma_t + s_13.sigma_t);
-    let _e82 = airlight_en_scaled((two_st * s0_));
-    e2_ = _e82;
-    let _e90 = e2_[1];
-    let _e93 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2f, (s_13.sigma_t * s0_), ((f_4 * _e90) / s0_));
+    let span_2 = (g_17.t_hi - g_17.t_lo);
     if !(g_17.t_hi_infinite) {
-        let _e99 = airlight_en_scaled((two_st * s1_));
-        e2_ = _e99;
-        let _e110 = e2_[1];
-        let _e113 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2f, ((s_13.sigma_t * (s1_ - s0_)) + (s_13.sigma_t * s1_)), ((f_4 * _e110) / s1_));
-        tail = _e113;
+        local_41 = (span_2 <= (s0_ * 0.125f));
+    } else {
+        local_41 = false;
     }
-    let _e114 = airlight_is_finite(_e93);
-    if !(_e114) {
-        return _e93;
+    let _e92 = local_41;
+    if _e92 {
+        local_42 = ((two_st * span_2) <= 1f);
+    } else {
+        local_42 = false;
     }
-    let _e116 = tail;
-    return (_e93 - _e116);
+    let _e99 = local_42;
+    if _e99 {
+        let _e100 = airlight_gauss_rule();
+        let half_15 = (span_2 * 0.5f);
+        loop {
+            let _e107 = i_15;
+            if (_e107 < AIRLIGHT_HALF_TERMS) {
+            } else {
+                break;
+            }
+            {
+                let _e110 = i_15;
+                let s_lo = (s0_ + (half_15 * (1f - _e100[_e110].x)));
+                let _e117 = i_15;
+                let s_hi = (s0_ + (half_15 * (1f + _e100[_e117].x)));
+                let _e124 = j_3;
+                let _e125 = i_15;
+                j_3 = (_e124 + (_e100[_e125].y * ((((half_15 / s_lo) * (s0_ / s_lo)) * exp((-(two_st) * (s_lo - s0_)))) + (((half_15 / s_hi) * (s0_ / s_hi)) * exp((-(two_st) * (s_hi - s0_)))))));
+            }
+            continuing {
+                let _e148 = i_15;
+                i_15 = (_e148 + 1u);
+            }
+        }
+        let _e155 = j_3;
+        let _e158 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2f, (s_13.sigma_t * s0_), ((f_4 * _e155) / s0_));
+        return _e158;
+    }
+    let _e160 = airlight_en_scaled((two_st * s0_));
+    e2_ = _e160;
+    let _e168 = e2_[1];
+    let _e171 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2f, (s_13.sigma_t * s0_), ((f_4 * _e168) / s0_));
+    if !(g_17.t_hi_infinite) {
+        let _e177 = airlight_en_scaled((two_st * s1_));
+        e2_ = _e177;
+        let _e188 = e2_[1];
+        let _e191 = airlight_weighted(s_13.sigma_s, s_13.intensity, 2f, ((s_13.sigma_t * (s1_ - s0_)) + (s_13.sigma_t * s1_)), ((f_4 * _e188) / s1_));
+        tail = _e191;
+    }
+    let _e192 = airlight_is_finite(_e171);
+    if !(_e192) {
+        return _e171;
+    }
+    let _e194 = tail;
+    return (_e171 - _e194);
 }
 
 fn airlight_optical(big_h_2: f32, dv_1: f32, infinite: bool) -> f32 {
@@ -3282,8 +3326,8 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     var v_e_2: f32 = AIRLIGHT_FLT_MAX;
     var dv_2: f32 = AIRLIGHT_FLT_MAX;
     var infinite_1: bool = true;
-    var local_41: bool;
-    var local_42: bool;
+    var local_43: bool;
+    var local_44: bool;
     var x_12: f32 = 0f;
 
     let h_4 = g_18.h;
@@ -3293,11 +3337,11 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if !(g_18.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
-        local_41 = _e24;
+        local_43 = _e24;
     } else {
-        local_41 = false;
+        local_43 = false;
     }
-    let _e26 = local_41;
+    let _e26 = local_43;
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
@@ -3305,11 +3349,11 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
-            local_42 = _e40;
+            local_44 = _e40;
         } else {
-            local_42 = false;
+            local_44 = false;
         }
-        let _e42 = local_42;
+        let _e42 = local_44;
         if _e42 {
             v_e_2 = v_end;
             dv_2 = dv_end;
@@ -3323,7 +3367,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_15 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let half_16 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
         x_12 = (big_h_3 * _e8);
@@ -3333,34 +3377,34 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
         }
     }
     let _e66 = x_12;
-    let _e67 = airlight_moment_zero_weighted(half_15, _e66);
+    let _e67 = airlight_moment_zero_weighted(half_16, _e66);
     let _e73 = airlight_integrand(s_14, g_18, -1f, 0f);
     let _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
 fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResult {
-    var local_43: bool;
-    var local_44: bool;
     var local_45: bool;
     var local_46: bool;
-    var gap_2: f32 = 0f;
     var local_47: bool;
+    var local_48: bool;
+    var gap_2: f32 = 0f;
+    var local_49: bool;
 
     let t0_ = g_19.t_lo;
     let t1_ = g_19.t_hi;
     if !(g_19.t_hi_infinite) {
-        local_43 = (t1_ > t0_);
+        local_45 = (t1_ > t0_);
     } else {
-        local_43 = true;
+        local_45 = true;
     }
-    let _e10 = local_43;
+    let _e10 = local_45;
     if !(!(_e10)) {
-        local_44 = ((s_15.sigma_s * s_15.intensity) == 0f);
+        local_46 = ((s_15.sigma_s * s_15.intensity) == 0f);
     } else {
-        local_44 = true;
+        local_46 = true;
     }
-    let _e21 = local_44;
+    let _e21 = local_46;
     if _e21 {
         return AirlightResult(0f, 0u);
     }
@@ -3368,16 +3412,16 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     let x_h = g_19.x_h;
     if (t0_ <= x_h) {
         if !(g_19.t_hi_infinite) {
-            local_46 = (x_h <= t1_);
+            local_48 = (x_h <= t1_);
         } else {
-            local_46 = true;
+            local_48 = true;
         }
-        let _e36 = local_46;
-        local_45 = _e36;
+        let _e36 = local_48;
+        local_47 = _e36;
     } else {
-        local_45 = false;
+        local_47 = false;
     }
-    let inside = local_45;
+    let inside = local_47;
     if (x_h < t0_) {
         gap_2 = (t0_ - x_h);
     } else {
@@ -3387,11 +3431,11 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     }
     if !(inside) {
         let _e48 = gap_2;
-        local_47 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
-        local_47 = false;
+        local_49 = false;
     }
-    let _e55 = local_47;
+    let _e55 = local_49;
     if _e55 {
         let _e56 = airlight_on_line(s_15, g_19);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
@@ -3403,75 +3447,75 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
 }
 
 fn airlight_isotropic_scene(s_16: AirlightScene) -> bool {
-    var local_48: bool;
-    var local_49: bool;
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
     var local_53: bool;
+    var local_54: bool;
+    var local_55: bool;
 
     if !((s_16.light_kind == AIRLIGHT_LIGHT_OMNI)) {
         if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_49 = (s_16.light_param_a == 0f);
+            local_51 = (s_16.light_param_a == 0f);
         } else {
-            local_49 = false;
+            local_51 = false;
         }
-        let _e16 = local_49;
-        local_48 = _e16;
+        let _e16 = local_51;
+        local_50 = _e16;
     } else {
-        local_48 = true;
+        local_50 = true;
     }
-    let _e18 = local_48;
+    let _e18 = local_50;
     if _e18 {
         if !((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
             if !((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_52 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+                local_54 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
             } else {
-                local_52 = true;
+                local_54 = true;
             }
-            let _e37 = local_52;
+            let _e37 = local_54;
             if _e37 {
-                local_53 = (s_16.phase_param_a == 0f);
+                local_55 = (s_16.phase_param_a == 0f);
             } else {
-                local_53 = false;
+                local_55 = false;
             }
-            let _e44 = local_53;
-            local_51 = _e44;
+            let _e44 = local_55;
+            local_53 = _e44;
         } else {
-            local_51 = true;
+            local_53 = true;
         }
-        let _e46 = local_51;
-        local_50 = _e46;
+        let _e46 = local_53;
+        local_52 = _e46;
     } else {
-        local_50 = false;
+        local_52 = false;
     }
-    let _e48 = local_50;
+    let _e48 = local_52;
     return _e48;
 }
 
 fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -> AirlightResult {
-    var local_54: bool;
-    var local_55: bool;
     var local_56: bool;
+    var local_57: bool;
+    var local_58: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_57: bool;
-    var half_13: AirlightHalf;
-    var local_58: bool;
     var local_59: bool;
+    var half_13: AirlightHalf;
     var local_60: bool;
+    var local_61: bool;
+    var local_62: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_61: bool;
-    var local_62: bool;
-    var half_14: AirlightHalf;
     var local_63: bool;
     var local_64: bool;
+    var half_14: AirlightHalf;
     var local_65: bool;
+    var local_66: bool;
+    var local_67: bool;
 
     let _e2 = airlight_limits(s_17, g_20);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
@@ -3484,23 +3528,23 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
     let big_h_8 = (s_17.sigma_t * h_6);
     let _e12 = airlight_isotropic_scene(s_17);
     if _e12 {
-        local_54 = (t0_1 < x_h_1);
+        local_56 = (t0_1 < x_h_1);
     } else {
-        local_54 = false;
+        local_56 = false;
     }
-    let _e17 = local_54;
+    let _e17 = local_56;
     if _e17 {
         if !(g_20.t_hi_infinite) {
-            local_56 = (x_h_1 < t1_1);
+            local_58 = (x_h_1 < t1_1);
         } else {
-            local_56 = true;
+            local_58 = true;
         }
-        let _e26 = local_56;
-        local_55 = _e26;
+        let _e26 = local_58;
+        local_57 = _e26;
     } else {
-        local_55 = false;
+        local_57 = false;
     }
-    let _e28 = local_55;
+    let _e28 = local_57;
     if _e28 {
         let _e29 = airlight_whole_line(s_17, g_20, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
@@ -3516,11 +3560,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_20.t_hi_infinite) {
-            local_57 = (t1_1 < x_h_1);
+            local_59 = (t1_1 < x_h_1);
         } else {
-            local_57 = false;
+            local_59 = false;
         }
-        let _e61 = local_57;
+        let _e61 = local_59;
         if _e61 {
             t_end = t1_1;
         }
@@ -3536,11 +3580,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
             let _e89 = half_13.big_h;
-            local_58 = (_e89 > 0f);
+            local_60 = (_e89 > 0f);
         } else {
-            local_58 = false;
+            local_60 = false;
         }
-        let _e93 = local_58;
+        let _e93 = local_60;
         if _e93 {
             let _e95 = half_13.big_h;
             let _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -3557,18 +3601,18 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         total_3 = (_e108 + _e112);
     }
     if !(g_20.t_hi_infinite) {
-        local_59 = (t1_1 > x_h_1);
+        local_61 = (t1_1 > x_h_1);
     } else {
-        local_59 = true;
+        local_61 = true;
     }
-    let _e120 = local_59;
+    let _e120 = local_61;
     if _e120 {
         let _e123 = behind_cut;
-        local_60 = !(_e123);
+        local_62 = !(_e123);
     } else {
-        local_60 = false;
+        local_62 = false;
     }
-    let _e126 = local_60;
+    let _e126 = local_62;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3578,22 +3622,22 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_20.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_61 = _e145;
+            local_63 = _e145;
         } else {
-            local_61 = false;
+            local_63 = false;
         }
-        let _e147 = local_61;
+        let _e147 = local_63;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_62 = _e162;
+                local_64 = _e162;
             } else {
-                local_62 = false;
+                local_64 = false;
             }
-            let _e164 = local_62;
+            let _e164 = local_64;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3613,11 +3657,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut_1 {
             let _e183 = half_14.big_h;
-            local_63 = (_e183 > 0f);
+            local_65 = (_e183 > 0f);
         } else {
-            local_63 = false;
+            local_65 = false;
         }
-        let _e187 = local_63;
+        let _e187 = local_65;
         if _e187 {
             let _e189 = half_14.big_h;
             let _e192 = dv_3;
@@ -3626,20 +3670,20 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
             let _e197 = infinite_2;
             if !(_e197) {
                 let _e201 = dv_3;
-                local_64 = (_e196 < _e201);
+                local_66 = (_e196 < _e201);
             } else {
-                local_64 = true;
+                local_66 = true;
             }
-            let _e204 = local_64;
+            let _e204 = local_66;
             if _e204 {
                 let cut_y_lo = (_e131 / (1f + (_e131 * _e196)));
                 if (cut_y_lo > 0f) {
                     let _e213 = airlight_is_finite(_e196);
-                    local_65 = _e213;
+                    local_67 = _e213;
                 } else {
-                    local_65 = false;
+                    local_67 = false;
                 }
-                let _e215 = local_65;
+                let _e215 = local_67;
                 if _e215 {
                     let _e218 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
@@ -3657,24 +3701,24 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_66: bool;
-    var local_67: bool;
+    var local_68: bool;
+    var local_69: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_66 = _e6;
+        local_68 = _e6;
     } else {
-        local_66 = false;
+        local_68 = false;
     }
-    let _e8 = local_66;
+    let _e8 = local_68;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_67 = _e12;
+        local_69 = _e12;
     } else {
-        local_67 = false;
+        local_69 = false;
     }
-    let _e14 = local_67;
+    let _e14 = local_69;
     return _e14;
 }
 
@@ -3687,16 +3731,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_68: bool;
+    var local_70: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_68 = _e6;
+        local_70 = _e6;
     } else {
-        local_68 = false;
+        local_70 = false;
     }
-    let _e8 = local_68;
+    let _e8 = local_70;
     return _e8;
 }
 
@@ -3707,8 +3751,6 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn airlight_valid(s_18: AirlightScene) -> bool {
-    var local_69: bool;
-    var local_70: bool;
     var local_71: bool;
     var local_72: bool;
     var local_73: bool;
@@ -3717,9 +3759,9 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     var local_76: bool;
     var local_77: bool;
     var local_78: bool;
-    var ok: bool;
     var local_79: bool;
     var local_80: bool;
+    var ok: bool;
     var local_81: bool;
     var local_82: bool;
     var local_83: bool;
@@ -3746,102 +3788,104 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     var local_104: bool;
     var local_105: bool;
     var local_106: bool;
+    var local_107: bool;
+    var local_108: bool;
 
     let _e2 = airlight_vec_finite(s_18.origin);
     if _e2 {
         let _e6 = airlight_vec_finite(s_18.dir);
-        local_69 = _e6;
-    } else {
-        local_69 = false;
-    }
-    let _e8 = local_69;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_18.dir);
-        local_70 = _e12;
-    } else {
-        local_70 = false;
-    }
-    let _e14 = local_70;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_18.t_min);
-        local_71 = _e18;
+        local_71 = _e6;
     } else {
         local_71 = false;
     }
-    let _e20 = local_71;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_18.light_position);
-        local_72 = _e24;
+    let _e8 = local_71;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_18.dir);
+        local_72 = _e12;
     } else {
         local_72 = false;
     }
-    let _e26 = local_72;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_18.intensity);
-        local_73 = _e30;
+    let _e14 = local_72;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_18.t_min);
+        local_73 = _e18;
     } else {
         local_73 = false;
     }
-    let _e32 = local_73;
-    if _e32 {
-        local_74 = (s_18.intensity >= 0f);
+    let _e20 = local_73;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_18.light_position);
+        local_74 = _e24;
     } else {
         local_74 = false;
     }
-    let _e39 = local_74;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_18.sigma_s);
-        local_75 = _e43;
+    let _e26 = local_74;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_18.intensity);
+        local_75 = _e30;
     } else {
         local_75 = false;
     }
-    let _e45 = local_75;
-    if _e45 {
-        local_76 = (s_18.sigma_s >= 0f);
+    let _e32 = local_75;
+    if _e32 {
+        local_76 = (s_18.intensity >= 0f);
     } else {
         local_76 = false;
     }
-    let _e52 = local_76;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_18.sigma_t);
-        local_77 = _e56;
+    let _e39 = local_76;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_18.sigma_s);
+        local_77 = _e43;
     } else {
         local_77 = false;
     }
-    let _e58 = local_77;
-    if _e58 {
-        local_78 = (s_18.sigma_t >= 0f);
+    let _e45 = local_77;
+    if _e45 {
+        local_78 = (s_18.sigma_s >= 0f);
     } else {
         local_78 = false;
     }
-    let _e65 = local_78;
+    let _e52 = local_78;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_18.sigma_t);
+        local_79 = _e56;
+    } else {
+        local_79 = false;
+    }
+    let _e58 = local_79;
+    if _e58 {
+        local_80 = (s_18.sigma_t >= 0f);
+    } else {
+        local_80 = false;
+    }
+    let _e65 = local_80;
     ok = _e65;
     if ((s_18.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
             let _e76 = airlight_is_finite(s_18.t_max);
-            local_79 = _e76;
+            local_81 = _e76;
         } else {
-            local_79 = false;
+            local_81 = false;
         }
-        let _e78 = local_79;
+        let _e78 = local_81;
         if _e78 {
-            local_80 = (s_18.t_min <= s_18.t_max);
+            local_82 = (s_18.t_min <= s_18.t_max);
         } else {
-            local_80 = false;
+            local_82 = false;
         }
-        let _e85 = local_80;
+        let _e85 = local_82;
         ok = _e85;
     }
     if (s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         let _e89 = ok;
         if _e89 {
             let _e93 = airlight_vec_finite(s_18.light_end);
-            local_81 = _e93;
+            local_83 = _e93;
         } else {
-            local_81 = false;
+            local_83 = false;
         }
-        let _e95 = local_81;
+        let _e95 = local_83;
         ok = _e95;
     } else {
         if (s_18.light_shape != AIRLIGHT_SHAPE_POINT) {
@@ -3849,76 +3893,76 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         }
     }
     if !((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_82 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_84 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_82 = true;
+        local_84 = true;
     }
-    let _e110 = local_82;
+    let _e110 = local_84;
     if _e110 {
         let _e111 = ok;
         if _e111 {
             let _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_83 = _e115;
-        } else {
-            local_83 = false;
-        }
-        let _e117 = local_83;
-        if _e117 {
-            local_84 = (s_18.brdf_scale >= 0f);
-        } else {
-            local_84 = false;
-        }
-        let _e124 = local_84;
-        if _e124 {
-            local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+            local_85 = _e115;
         } else {
             local_85 = false;
         }
-        let _e131 = local_85;
-        if _e131 {
-            local_86 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e117 = local_85;
+        if _e117 {
+            local_86 = (s_18.brdf_scale >= 0f);
         } else {
             local_86 = false;
         }
-        let _e138 = local_86;
-        if _e138 {
-            let _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
-            let _e145 = airlight_is_finite(_e144);
-            local_87 = _e145;
+        let _e124 = local_86;
+        if _e124 {
+            local_87 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
             local_87 = false;
         }
-        let _e147 = local_87;
+        let _e131 = local_87;
+        if _e131 {
+            local_88 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_88 = false;
+        }
+        let _e138 = local_88;
+        if _e138 {
+            let _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
+            let _e145 = airlight_is_finite(_e144);
+            local_89 = _e145;
+        } else {
+            local_89 = false;
+        }
+        let _e147 = local_89;
         ok = _e147;
         if (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             let _e151 = ok;
             if _e151 {
                 let _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_88 = _e155;
-            } else {
-                local_88 = false;
-            }
-            let _e157 = local_88;
-            if _e157 {
-                local_89 = (s_18.brdf_exponent >= 0f);
-            } else {
-                local_89 = false;
-            }
-            let _e164 = local_89;
-            if _e164 {
-                let _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_90 = _e168;
+                local_90 = _e155;
             } else {
                 local_90 = false;
             }
-            let _e170 = local_90;
-            if _e170 {
-                let _e174 = airlight_normalisable(s_18.brdf_view);
-                local_91 = _e174;
+            let _e157 = local_90;
+            if _e157 {
+                local_91 = (s_18.brdf_exponent >= 0f);
             } else {
                 local_91 = false;
             }
-            let _e176 = local_91;
+            let _e164 = local_91;
+            if _e164 {
+                let _e168 = airlight_vec_finite(s_18.brdf_view);
+                local_92 = _e168;
+            } else {
+                local_92 = false;
+            }
+            let _e170 = local_92;
+            if _e170 {
+                let _e174 = airlight_normalisable(s_18.brdf_view);
+                local_93 = _e174;
+            } else {
+                local_93 = false;
+            }
+            let _e176 = local_93;
             ok = _e176;
         }
     } else {
@@ -3930,72 +3974,72 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         let _e184 = ok;
         if _e184 {
             let _e188 = airlight_vec_finite(s_18.light_axis);
-            local_92 = _e188;
-        } else {
-            local_92 = false;
-        }
-        let _e190 = local_92;
-        if _e190 {
-            let _e194 = airlight_normalisable(s_18.light_axis);
-            local_93 = _e194;
-        } else {
-            local_93 = false;
-        }
-        let _e196 = local_93;
-        if _e196 {
-            local_94 = (s_18.light_param_a >= 0f);
+            local_94 = _e188;
         } else {
             local_94 = false;
         }
-        let _e203 = local_94;
-        if _e203 {
-            local_95 = (s_18.light_param_a <= 1024f);
+        let _e190 = local_94;
+        if _e190 {
+            let _e194 = airlight_normalisable(s_18.light_axis);
+            local_95 = _e194;
         } else {
             local_95 = false;
         }
-        let _e210 = local_95;
-        if _e210 {
-            local_96 = (fract((s_18.light_param_a * 0.5f)) == 0f);
+        let _e196 = local_95;
+        if _e196 {
+            local_96 = (s_18.light_param_a >= 0f);
         } else {
             local_96 = false;
         }
-        let _e220 = local_96;
+        let _e203 = local_96;
+        if _e203 {
+            local_97 = (s_18.light_param_a <= 1024f);
+        } else {
+            local_97 = false;
+        }
+        let _e210 = local_97;
+        if _e210 {
+            local_98 = (fract((s_18.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_98 = false;
+        }
+        let _e220 = local_98;
         ok = _e220;
     } else {
         if (s_18.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e224 = ok;
             if _e224 {
                 let _e228 = airlight_vec_finite(s_18.light_axis);
-                local_97 = _e228;
-            } else {
-                local_97 = false;
-            }
-            let _e230 = local_97;
-            if _e230 {
-                let _e234 = airlight_normalisable(s_18.light_axis);
-                local_98 = _e234;
-            } else {
-                local_98 = false;
-            }
-            let _e236 = local_98;
-            if _e236 {
-                local_99 = (s_18.light_param_b < s_18.light_param_a);
+                local_99 = _e228;
             } else {
                 local_99 = false;
             }
-            let _e243 = local_99;
-            if _e243 {
-                local_100 = (s_18.light_param_b >= -1f);
+            let _e230 = local_99;
+            if _e230 {
+                let _e234 = airlight_normalisable(s_18.light_axis);
+                local_100 = _e234;
             } else {
                 local_100 = false;
             }
-            let _e250 = local_100;
-            if _e250 {
-                local_101 = (s_18.light_param_a <= 1f);
+            let _e236 = local_100;
+            if _e236 {
+                local_101 = (s_18.light_param_b < s_18.light_param_a);
             } else {
                 local_101 = false;
             }
-            let _e257 = local_101;
+            let _e243 = local_101;
+            if _e243 {
+                local_102 = (s_18.light_param_b >= -1f);
+            } else {
+                local_102 = false;
+            }
+            let _e250 = local_102;
+            if _e250 {
+                local_103 = (s_18.light_param_a <= 1f);
+            } else {
+                local_103 = false;
+            }
+            let _e257 = local_103;
             ok = _e257;
         } else {
             if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
@@ -4010,39 +4054,39 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         case 2u, 3u, 4u: {
             let _e267 = ok;
             if _e267 {
-                local_102 = g_ok;
+                local_104 = g_ok;
             } else {
-                local_102 = false;
+                local_104 = false;
             }
-            let _e271 = local_102;
+            let _e271 = local_104;
             ok = _e271;
         }
         case 5u: {
             let _e272 = ok;
             if _e272 {
-                local_103 = g_ok;
-            } else {
-                local_103 = false;
-            }
-            let _e276 = local_103;
-            if _e276 {
-                local_104 = (abs(s_18.phase_param_b) < 1f);
-            } else {
-                local_104 = false;
-            }
-            let _e284 = local_104;
-            if _e284 {
-                local_105 = (s_18.phase_param_c >= 0f);
+                local_105 = g_ok;
             } else {
                 local_105 = false;
             }
-            let _e291 = local_105;
-            if _e291 {
-                local_106 = (s_18.phase_param_c <= 1f);
+            let _e276 = local_105;
+            if _e276 {
+                local_106 = (abs(s_18.phase_param_b) < 1f);
             } else {
                 local_106 = false;
             }
-            let _e298 = local_106;
+            let _e284 = local_106;
+            if _e284 {
+                local_107 = (s_18.phase_param_c >= 0f);
+            } else {
+                local_107 = false;
+            }
+            let _e291 = local_107;
+            if _e291 {
+                local_108 = (s_18.phase_param_c <= 1f);
+            } else {
+                local_108 = false;
+            }
+            let _e298 = local_108;
             ok = _e298;
         }
         default: {
@@ -4113,29 +4157,29 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_107: bool;
-    var local_108: bool;
+    var local_109: bool;
+    var local_110: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_108 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_110 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_108 = false;
+            local_110 = false;
         }
-        let _e21 = local_108;
-        local_107 = _e21;
+        let _e21 = local_110;
+        local_109 = _e21;
     } else {
-        local_107 = true;
+        local_109 = true;
     }
-    let _e23 = local_107;
+    let _e23 = local_109;
     return _e23;
 }
 
 fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_109: bool;
+    var local_111: bool;
     var out_2: AirlightCanonical;
-    var local_110: bool;
+    var local_112: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_20.flags > 1u));
@@ -4148,11 +4192,11 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_4);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_109 = !(_e38);
+        local_111 = !(_e38);
     } else {
-        local_109 = true;
+        local_111 = true;
     }
-    let _e41 = local_109;
+    let _e41 = local_111;
     if _e41 {
         return plain;
     }
@@ -4176,11 +4220,11 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_110 = (h_7 > 0f);
+        local_112 = (h_7 > 0f);
     } else {
-        local_110 = false;
+        local_112 = false;
     }
-    let _e101 = local_110;
+    let _e101 = local_112;
     if !(_e101) {
         return plain;
     }
@@ -4202,8 +4246,8 @@ fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
     return array<vec3<f32>, 4>(vec3<f32>(0.96049124f, 0.10465623f, 0f), vec3<f32>(0.7745967f, 0.26848808f, 0.5555556f), vec3<f32>(0.43424374f, 0.4013974f, 0f), vec3<f32>(0f, 0.45091653f, 0.8888889f));
 }
 
-fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
-    switch i_15 {
+fn airlight_list_get(l: AirlightPanelList, i_16: u32) -> vec4<f32> {
+    switch i_16 {
         case 0u: {
             return l.panel_a;
         }
@@ -4255,8 +4299,8 @@ fn airlight_list_get(l: AirlightPanelList, i_15: u32) -> vec4<f32> {
     }
 }
 
-fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_16: u32, v_5: vec4<f32>) {
-    switch i_16 {
+fn airlight_list_set(l_1: ptr<function, AirlightPanelList>, i_17: u32, v_5: vec4<f32>) {
+    switch i_17 {
         case 0u: {
             (*l_1).panel_a = v_5;
             return;
@@ -4569,33 +4613,33 @@ fn airlight_outer_point(s_23: AirlightScene, max_panels: u32) -> AirlightOuter {
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_111: bool;
+    var local_113: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var i_17: u32 = 1u;
-    var j_3: u32;
-    var local_112: bool;
-    var k_5: u32 = 0u;
-    var i_18: u32 = 0u;
-    var local_113: bool;
-    var i_19: u32 = 0u;
-    var i_20: u32 = 1u;
+    var i_18: u32 = 1u;
+    var j_4: u32;
     var local_114: bool;
+    var k_5: u32 = 0u;
+    var i_19: u32 = 0u;
     var local_115: bool;
+    var i_20: u32 = 0u;
+    var i_21: u32 = 1u;
     var local_116: bool;
     var local_117: bool;
     var local_118: bool;
+    var local_119: bool;
+    var local_120: bool;
 
     let _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     let to_light_1 = (s_24.light_position - s_24.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_24.intensity == 0f)) {
-        local_111 = (s_24.sigma_s == 0f);
+        local_113 = (s_24.sigma_s == 0f);
     } else {
-        local_111 = true;
+        local_113 = true;
     }
-    let _e18 = local_111;
+    let _e18 = local_113;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -4691,80 +4735,80 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     let _e220 = cuts_1[10];
     let kinks = array<f32, 6>(_e210, _e212, _e214, _e216, _e218, _e220);
     loop {
-        let _e224 = i_17;
+        let _e224 = i_18;
         if (_e224 < 11u) {
         } else {
             break;
         }
         {
-            let _e227 = i_17;
+            let _e227 = i_18;
             let c_10 = cuts_1[_e227];
-            let _e230 = i_17;
-            j_3 = _e230;
+            let _e230 = i_18;
+            j_4 = _e230;
             loop {
-                let _e232 = j_3;
+                let _e232 = j_4;
                 if (_e232 > 0u) {
-                    let _e237 = j_3;
+                    let _e237 = j_4;
                     let _e241 = cuts_1[(_e237 - 1u)];
-                    local_112 = (_e241 > c_10);
+                    local_114 = (_e241 > c_10);
                 } else {
-                    local_112 = false;
+                    local_114 = false;
                 }
-                let _e244 = local_112;
+                let _e244 = local_114;
                 if _e244 {
                 } else {
                     break;
                 }
                 {
-                    let _e245 = j_3;
-                    let _e247 = j_3;
+                    let _e245 = j_4;
+                    let _e247 = j_4;
                     let _e251 = cuts_1[(_e247 - 1u)];
                     cuts_1[_e245] = _e251;
-                    let _e252 = j_3;
-                    j_3 = (_e252 - 1u);
+                    let _e252 = j_4;
+                    j_4 = (_e252 - 1u);
                 }
             }
-            let _e255 = j_3;
+            let _e255 = j_4;
             cuts_1[_e255] = c_10;
         }
         continuing {
-            let _e258 = i_17;
-            i_17 = (_e258 + 1u);
+            let _e258 = i_18;
+            i_18 = (_e258 + 1u);
         }
     }
     let hi_5 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
-        let _e276 = i_18;
+        let _e276 = i_19;
         if (_e276 < 11u) {
         } else {
             break;
         }
         {
-            let _e279 = i_18;
+            let _e279 = i_19;
             let _e281 = cuts_1[_e279];
             let _e283 = k_5;
             let _e285 = g_22.gamma[_e283];
             if (_e281 > _e285) {
-                let _e289 = i_18;
+                let _e289 = i_19;
                 let _e291 = cuts_1[_e289];
-                local_113 = (_e291 < hi_5);
+                local_115 = (_e291 < hi_5);
             } else {
-                local_113 = false;
+                local_115 = false;
             }
-            let _e294 = local_113;
+            let _e294 = local_115;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
                 let _e299 = k_5;
-                let _e301 = i_18;
+                let _e301 = i_19;
                 let _e303 = cuts_1[_e301];
                 g_22.gamma[_e299] = _e303;
             }
         }
         continuing {
-            let _e305 = i_18;
-            i_18 = (_e305 + 1u);
+            let _e305 = i_19;
+            i_19 = (_e305 + 1u);
         }
     }
     let _e308 = k_5;
@@ -4772,70 +4816,70 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
-        let _e318 = i_19;
+        let _e318 = i_20;
         let _e320 = g_22.panels;
         if (_e318 <= _e320) {
         } else {
             break;
         }
         {
-            let _e323 = i_19;
-            let _e325 = i_19;
+            let _e323 = i_20;
+            let _e325 = i_20;
             g_22.edges[_e323] = f32(_e325);
         }
         continuing {
-            let _e328 = i_19;
-            i_19 = (_e328 + 1u);
+            let _e328 = i_20;
+            i_20 = (_e328 + 1u);
         }
     }
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         loop {
-            let _e335 = i_20;
+            let _e335 = i_21;
             let _e336 = k_5;
             if (_e335 <= _e336) {
             } else {
                 break;
             }
             {
-                let _e339 = i_20;
+                let _e339 = i_21;
                 let e_4 = g_22.gamma[_e339];
                 if !((e_4 == kinks[0])) {
-                    local_114 = (e_4 == kinks[1]);
-                } else {
-                    local_114 = true;
-                }
-                let _e350 = local_114;
-                if !(_e350) {
-                    local_115 = (e_4 == kinks[2]);
-                } else {
-                    local_115 = true;
-                }
-                let _e357 = local_115;
-                if !(_e357) {
-                    local_116 = (e_4 == kinks[3]);
+                    local_116 = (e_4 == kinks[1]);
                 } else {
                     local_116 = true;
                 }
-                let _e364 = local_116;
-                if !(_e364) {
-                    local_117 = (e_4 == kinks[4]);
+                let _e350 = local_116;
+                if !(_e350) {
+                    local_117 = (e_4 == kinks[2]);
                 } else {
                     local_117 = true;
                 }
-                let _e371 = local_117;
-                if !(_e371) {
-                    local_118 = (e_4 == kinks[5]);
+                let _e357 = local_117;
+                if !(_e357) {
+                    local_118 = (e_4 == kinks[3]);
                 } else {
                     local_118 = true;
                 }
-                let kink = local_118;
+                let _e364 = local_118;
+                if !(_e364) {
+                    local_119 = (e_4 == kinks[4]);
+                } else {
+                    local_119 = true;
+                }
+                let _e371 = local_119;
+                if !(_e371) {
+                    local_120 = (e_4 == kinks[5]);
+                } else {
+                    local_120 = true;
+                }
+                let kink = local_120;
                 let _e380 = g_22.smooth_edges;
-                let _e382 = i_20;
+                let _e382 = i_21;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
             }
             continuing {
-                let _e388 = i_20;
-                i_20 = (_e388 + 1u);
+                let _e388 = i_21;
+                i_21 = (_e388 + 1u);
             }
         }
     }
@@ -4844,7 +4888,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_119: bool;
+    var local_121: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -4855,11 +4899,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_119 = (clip > 0f);
+        local_121 = (clip > 0f);
     } else {
-        local_119 = false;
+        local_121 = false;
     }
-    let _e43 = local_119;
+    let _e43 = local_121;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -4878,7 +4922,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_120: bool;
+    var local_122: bool;
 
     end_1 = x_19;
     let _e3 = end_1;
@@ -4895,11 +4939,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_120 = (_e21 < cut);
+        local_122 = (_e21 < cut);
     } else {
-        local_120 = false;
+        local_122 = false;
     }
-    let _e24 = local_120;
+    let _e24 = local_122;
     return select(0f, _e15, _e24);
 }
 
@@ -4908,18 +4952,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_121: bool;
+    var local_123: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
     let w_7 = (hi_3 - lo_4);
     if !(!((w_7 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_7)));
-        local_121 = !((_e14 > 0f));
+        local_123 = !((_e14 > 0f));
     } else {
-        local_121 = true;
+        local_123 = true;
     }
-    let _e19 = local_121;
+    let _e19 = local_123;
     if _e19 {
         return 0f;
     }
@@ -4951,7 +4995,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var reach: f32 = 1f;
     var inner: vec2<f32> = vec2(0f);
     var sum_6: f32 = 0f;
-    var i_21: u32 = 0u;
+    var i_22: u32 = 0u;
 
     let c_11 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
@@ -4989,21 +5033,21 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
-        let _e99 = i_21;
+        let _e99 = i_22;
         if (_e99 < 3u) {
         } else {
             break;
         }
         {
             let _e102 = sum_6;
-            let _e103 = i_21;
-            let _e105 = i_21;
+            let _e103 = i_22;
+            let _e105 = i_22;
             let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
-            let _e112 = i_21;
-            i_21 = (_e112 + 1u);
+            let _e112 = i_22;
+            i_22 = (_e112 + 1u);
         }
     }
     let _e114 = sum_6;
@@ -5012,33 +5056,33 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_122: bool;
-    var local_123: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
     var local_124: bool;
     var local_125: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_126: bool;
     var local_127: bool;
     var local_128: bool;
     var local_129: bool;
-    var scale: f32 = 0f;
     var local_130: bool;
     var local_131: bool;
+    var scale: f32 = 0f;
     var local_132: bool;
     var local_133: bool;
     var local_134: bool;
+    var local_135: bool;
+    var local_136: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var local_135: bool;
-    var i_22: u32 = 0u;
-    var local_136: bool;
     var local_137: bool;
+    var i_23: u32 = 0u;
     var local_138: bool;
     var local_139: bool;
-    var n_1: u32 = 0u;
-    var i_23: u32 = 0u;
     var local_140: bool;
+    var local_141: bool;
+    var n_1: u32 = 0u;
+    var i_24: u32 = 0u;
+    var local_142: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_25);
@@ -5053,17 +5097,17 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_25.light_end - s_25.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_122 = (s_25.intensity == 0f);
+        local_124 = (s_25.intensity == 0f);
     } else {
-        local_122 = true;
+        local_124 = true;
     }
-    let _e26 = local_122;
+    let _e26 = local_124;
     if !(_e26) {
-        local_123 = (s_25.sigma_s == 0f);
+        local_125 = (s_25.sigma_s == 0f);
     } else {
-        local_123 = true;
+        local_125 = true;
     }
-    let _e34 = local_123;
+    let _e34 = local_125;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
@@ -5087,94 +5131,94 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_124 = (sin_a_1 > 0f);
-    } else {
-        local_124 = false;
-    }
-    let _e84 = local_124;
-    if _e84 {
-        let _e87 = s_star;
-        local_125 = (_e87 >= 0f);
-    } else {
-        local_125 = false;
-    }
-    let _e91 = local_125;
-    if _e91 {
-        let _e94 = s_star;
-        local_126 = (_e94 <= _e15);
+        local_126 = (sin_a_1 > 0f);
     } else {
         local_126 = false;
     }
-    let _e97 = local_126;
-    if _e97 {
-        let _e101 = t_star;
-        local_127 = (s_25.t_min <= _e101);
+    let _e84 = local_126;
+    if _e84 {
+        let _e87 = s_star;
+        local_127 = (_e87 >= 0f);
     } else {
         local_127 = false;
     }
-    let _e104 = local_127;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_129 = (_e110 <= s_25.t_max);
-        } else {
-            local_129 = true;
-        }
-        let _e114 = local_129;
-        local_128 = _e114;
+    let _e91 = local_127;
+    if _e91 {
+        let _e94 = s_star;
+        local_128 = (_e94 <= _e15);
     } else {
         local_128 = false;
     }
-    let _e116 = local_128;
+    let _e97 = local_128;
+    if _e97 {
+        let _e101 = t_star;
+        local_129 = (s_25.t_min <= _e101);
+    } else {
+        local_129 = false;
+    }
+    let _e104 = local_129;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_131 = (_e110 <= s_25.t_max);
+        } else {
+            local_131 = true;
+        }
+        let _e114 = local_131;
+        local_130 = _e114;
+    } else {
+        local_130 = false;
+    }
+    let _e116 = local_130;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_130 = (_e73 > 0f);
+        local_132 = (_e73 > 0f);
     } else {
-        local_130 = false;
+        local_132 = false;
     }
-    let _e129 = local_130;
+    let _e129 = local_132;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_131 = (_e136 < (_e15 + _e15));
+        local_133 = (_e136 < (_e15 + _e15));
     } else {
-        local_131 = false;
+        local_133 = false;
     }
-    let _e140 = local_131;
+    let _e140 = local_133;
     if _e140 {
         let _e143 = scale;
-        local_132 = (_e143 < _e15);
+        local_134 = (_e143 < _e15);
     } else {
-        local_132 = false;
+        local_134 = false;
     }
-    let near_1 = local_132;
+    let near_1 = local_134;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_133 = _e154;
+        local_135 = _e154;
     } else {
-        local_133 = false;
+        local_135 = false;
     }
-    let _e156 = local_133;
+    let _e156 = local_135;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_134 = _e163;
+        local_136 = _e163;
     } else {
-        local_134 = false;
+        local_136 = false;
     }
-    let _e165 = local_134;
+    let _e165 = local_136;
     if !(_e165) {
         scale = 0f;
     }
@@ -5191,70 +5235,70 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_24;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_135 = (min(-(_e194), _e197) < 0.5f);
+        local_137 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_135 = false;
+        local_137 = false;
     }
-    let sliver = local_135;
+    let sliver = local_137;
     loop {
-        let _e205 = i_22;
+        let _e205 = i_23;
         if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_22;
+            let _e208 = i_23;
             if (_e208 == 0u) {
-                local_136 = sliver;
+                local_138 = sliver;
             } else {
-                local_136 = false;
+                local_138 = false;
             }
-            let _e214 = local_136;
+            let _e214 = local_138;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_22;
-                local_137 = (_e219 > 0u);
-            } else {
-                local_137 = false;
-            }
-            let _e223 = local_137;
-            if _e223 {
-                continue;
-            }
-            let _e224 = i_22;
-            if (_e224 == 2u) {
-                local_138 = infinite_4;
-            } else {
-                local_138 = false;
-            }
-            let _e230 = local_138;
-            if _e230 {
-                continue;
-            }
-            let _e231 = i_22;
-            let _e233 = at[_e231];
-            if (_e233 > 0f) {
-                let _e238 = i_22;
-                let _e240 = at[_e238];
-                local_139 = (_e240 < _e15);
+                let _e219 = i_23;
+                local_139 = (_e219 > 0u);
             } else {
                 local_139 = false;
             }
-            let _e243 = local_139;
+            let _e223 = local_139;
+            if _e223 {
+                continue;
+            }
+            let _e224 = i_23;
+            if (_e224 == 2u) {
+                local_140 = infinite_4;
+            } else {
+                local_140 = false;
+            }
+            let _e230 = local_140;
+            if _e230 {
+                continue;
+            }
+            let _e231 = i_23;
+            let _e233 = at[_e231];
+            if (_e233 > 0f) {
+                let _e238 = i_23;
+                let _e240 = at[_e238];
+                local_141 = (_e240 < _e15);
+            } else {
+                local_141 = false;
+            }
+            let _e243 = local_141;
             if _e243 {
-                let _e244 = i_22;
+                let _e244 = i_23;
                 let _e246 = g_24;
-                let _e247 = i_22;
+                let _e247 = i_23;
                 let _e249 = at[_e247];
                 let _e250 = airlight_to_w(_e246, _e249);
                 cuts_2[_e244] = _e250;
             }
         }
         continuing {
-            let _e252 = i_22;
-            i_22 = (_e252 + 1u);
+            let _e252 = i_23;
+            i_23 = (_e252 + 1u);
         }
     }
     let _e255 = cuts_2[1];
@@ -5287,36 +5331,36 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e293 = airlight_to_w(_e291, 0f);
     g_24.edges[0] = _e293;
     loop {
-        let _e298 = i_23;
+        let _e298 = i_24;
         if (_e298 < 3u) {
         } else {
             break;
         }
         {
-            let _e301 = i_23;
+            let _e301 = i_24;
             let _e303 = cuts_2[_e301];
             let _e305 = n_1;
             let _e307 = g_24.edges[_e305];
             if (_e303 > _e307) {
-                let _e311 = i_23;
+                let _e311 = i_24;
                 let _e313 = cuts_2[_e311];
-                local_140 = (_e313 < _e288);
+                local_142 = (_e313 < _e288);
             } else {
-                local_140 = false;
+                local_142 = false;
             }
-            let _e316 = local_140;
+            let _e316 = local_142;
             if _e316 {
                 let _e317 = n_1;
                 n_1 = (_e317 + 1u);
                 let _e321 = n_1;
-                let _e323 = i_23;
+                let _e323 = i_24;
                 let _e325 = cuts_2[_e323];
                 g_24.edges[_e321] = _e325;
             }
         }
         continuing {
-            let _e327 = i_23;
-            i_23 = (_e327 + 1u);
+            let _e327 = i_24;
+            i_24 = (_e327 + 1u);
         }
     }
     let _e330 = n_1;
@@ -5335,12 +5379,12 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_141: bool;
-    var local_142: bool;
     var local_143: bool;
     var local_144: bool;
     var local_145: bool;
     var local_146: bool;
+    var local_147: bool;
+    var local_148: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5350,63 +5394,63 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_24 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_7 = (x_20 - f32(i_24));
-        let a_29 = g_25.gamma[i_24];
-        let b_19 = g_25.gamma[(i_24 + 1u)];
+        let i_25 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
+        let t_7 = (x_20 - f32(i_25));
+        let a_29 = g_25.gamma[i_25];
+        let b_19 = g_25.gamma[(i_25 + 1u)];
         let w_8 = (b_19 - a_29);
         let u_4 = (1f - t_7);
-        let smooth_a = (((g_25.smooth_edges >> i_24) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_24 + 1u)) & 1u) != 0u);
+        let smooth_a = (((g_25.smooth_edges >> i_25) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_25 + 1u)) & 1u) != 0u);
         gamma_1 = (a_29 + (((w_8 * t_7) * t_7) * ((3f - t_7) - t_7)));
         jacobian = (((w_8 * 6f) * t_7) * u_4);
         let _e58 = gamma_1;
         if smooth_b {
-            local_141 = !(smooth_a);
-        } else {
-            local_141 = false;
-        }
-        let _e66 = local_141;
-        gamma_1 = select(_e58, (a_29 + ((w_8 * t_7) * t_7)), _e66);
-        let _e68 = jacobian;
-        if smooth_b {
-            local_142 = !(smooth_a);
-        } else {
-            local_142 = false;
-        }
-        let _e75 = local_142;
-        jacobian = select(_e68, (w_8 * (t_7 + t_7)), _e75);
-        let _e77 = gamma_1;
-        if smooth_a {
-            local_143 = !(smooth_b);
+            local_143 = !(smooth_a);
         } else {
             local_143 = false;
         }
-        let _e85 = local_143;
-        gamma_1 = select(_e77, (b_19 - ((w_8 * u_4) * u_4)), _e85);
-        let _e87 = jacobian;
-        if smooth_a {
-            local_144 = !(smooth_b);
+        let _e66 = local_143;
+        gamma_1 = select(_e58, (a_29 + ((w_8 * t_7) * t_7)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
+            local_144 = !(smooth_a);
         } else {
             local_144 = false;
         }
-        let _e94 = local_144;
-        jacobian = select(_e87, (w_8 * (u_4 + u_4)), _e94);
-        let _e96 = gamma_1;
+        let _e75 = local_144;
+        jacobian = select(_e68, (w_8 * (t_7 + t_7)), _e75);
+        let _e77 = gamma_1;
         if smooth_a {
-            local_145 = smooth_b;
+            local_145 = !(smooth_b);
         } else {
             local_145 = false;
         }
-        let _e102 = local_145;
-        gamma_1 = select(_e96, (a_29 + (w_8 * t_7)), _e102);
-        let _e104 = jacobian;
+        let _e85 = local_145;
+        gamma_1 = select(_e77, (b_19 - ((w_8 * u_4) * u_4)), _e85);
+        let _e87 = jacobian;
         if smooth_a {
-            local_146 = smooth_b;
+            local_146 = !(smooth_b);
         } else {
             local_146 = false;
         }
-        let _e108 = local_146;
+        let _e94 = local_146;
+        jacobian = select(_e87, (w_8 * (u_4 + u_4)), _e94);
+        let _e96 = gamma_1;
+        if smooth_a {
+            local_147 = smooth_b;
+        } else {
+            local_147 = false;
+        }
+        let _e102 = local_147;
+        gamma_1 = select(_e96, (a_29 + (w_8 * t_7)), _e102);
+        let _e104 = jacobian;
+        if smooth_a {
+            local_148 = smooth_b;
+        } else {
+            local_148 = false;
+        }
+        let _e108 = local_148;
         jacobian = select(_e104, w_8, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -5460,15 +5504,15 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_147: bool;
+    var local_149: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_147 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_149 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_147 = true;
+        local_149 = true;
     }
-    let _e11 = local_147;
+    let _e11 = local_149;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5477,18 +5521,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_148: bool;
+    var local_150: bool;
     var g_26: AirlightCanonical;
 
     let p_2 = n_2.scene;
     let _e7 = airlight_vec_finite(p_2.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_2.dir);
-        local_148 = _e11;
+        local_150 = _e11;
     } else {
-        local_148 = false;
+        local_150 = false;
     }
-    let _e13 = local_148;
+    let _e13 = local_150;
     if _e13 {
         g_26 = n_2.canonical;
         if !(n_2.exact) {
@@ -5512,22 +5556,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
-    var local_149: bool;
-    var local_150: bool;
+    var local_151: bool;
+    var local_152: bool;
 
     let _e1 = airlight_valid(s_27);
     if !(!(_e1)) {
-        local_149 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_151 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_149 = true;
+        local_151 = true;
     }
-    let _e10 = local_149;
+    let _e10 = local_151;
     if !(_e10) {
-        local_150 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_152 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_150 = true;
+        local_152 = true;
     }
-    let _e18 = local_150;
+    let _e18 = local_152;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5536,22 +5580,22 @@ fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_28: AirlightScene) -> AirlightResult {
-    var local_151: bool;
-    var local_152: bool;
+    var local_153: bool;
+    var local_154: bool;
 
     let _e1 = airlight_valid(s_28);
     if !(!(_e1)) {
-        local_151 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_153 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_151 = true;
+        local_153 = true;
     }
-    let _e10 = local_151;
+    let _e10 = local_153;
     if !(_e10) {
-        local_152 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_154 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_152 = true;
+        local_154 = true;
     }
-    let _e18 = local_152;
+    let _e18 = local_154;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -5585,15 +5629,15 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
     var step_2: u32 = 0u;
     var k_7: f32;
     var gauss: f32;
-    var j_4: u32;
-    var local_153: bool;
+    var j_5: u32;
+    var local_155: bool;
     var f: f32;
-    var local_154: bool;
+    var local_156: bool;
     var split: bool;
     var tries: u32;
-    var local_155: bool;
-    var local_156: bool;
     var local_157: bool;
+    var local_158: bool;
+    var local_159: bool;
 
     let _e1 = airlight_valid(s_29);
     if !(_e1) {
@@ -5625,24 +5669,24 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
             let hw_2 = (0.5f * (_e85 - _e86));
             k_7 = 0f;
             gauss = 0f;
-            j_4 = 0u;
+            j_5 = 0u;
             loop {
-                let _e96 = j_4;
+                let _e96 = j_5;
                 if (_e96 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e99 = j_4;
+                    let _e99 = j_5;
                     let node_1 = _e19[(_e99 / 2u)];
-                    let _e109 = j_4;
+                    let _e109 = j_5;
                     if ((_e109 & 1u) == 0u) {
-                        let _e116 = j_4;
-                        local_153 = (_e116 < 6u);
+                        let _e116 = j_5;
+                        local_155 = (_e116 < 6u);
                     } else {
-                        local_153 = false;
+                        local_155 = false;
                     }
-                    let _e120 = local_153;
+                    let _e120 = local_155;
                     let w_9 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
                     let _e122 = airlight_outer_node(s_29, _e6, w_9);
                     f = 0f;
@@ -5652,11 +5696,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             return _e128;
                         }
                         if (s_29.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_154 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_156 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_154 = false;
+                            local_156 = false;
                         }
-                        let _e141 = local_154;
+                        let _e141 = local_156;
                         if _e141 {
                             return _e128;
                         }
@@ -5670,8 +5714,8 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                     gauss = (_e150 + (node_1.z * _e152));
                 }
                 continuing {
-                    let _e156 = j_4;
-                    j_4 = (_e156 + 1u);
+                    let _e156 = j_5;
+                    j_5 = (_e156 + 1u);
                 }
             }
             let _e158 = slot_1;
@@ -5722,18 +5766,18 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let worst_1 = _e202.worst;
                             if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
                                 let _e213 = count_2;
-                                local_155 = (_e213 == _e6.max_panels);
+                                local_157 = (_e213 == _e6.max_panels);
                             } else {
-                                local_155 = true;
+                                local_157 = true;
                             }
-                            let _e217 = local_155;
+                            let _e217 = local_157;
                             if !(_e217) {
                                 let _e221 = airlight_is_finite(total_4);
-                                local_156 = !(_e221);
+                                local_158 = !(_e221);
                             } else {
-                                local_156 = true;
+                                local_158 = true;
                             }
-                            let _e224 = local_156;
+                            let _e224 = local_158;
                             if _e224 {
                                 break;
                             }
@@ -5743,11 +5787,11 @@ fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
                             let wb_1 = _e226.y;
                             let mid_1 = (0.5f * (wa_1 + wb_1));
                             if (mid_1 > wa_1) {
-                                local_157 = (mid_1 < wb_1);
+                                local_159 = (mid_1 < wb_1);
                             } else {
-                                local_157 = false;
+                                local_159 = false;
                             }
-                            let _e237 = local_157;
+                            let _e237 = local_159;
                             if !(_e237) {
                                 airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
                                 continue;

@@ -341,6 +341,39 @@ fn light_just_ahead_of_a_long_segment_is_finite() {
     }
 }
 
+/// Found by the `kernel` fuzz target (a CI run of 2026-12-05): a light `6e-249` off the ray's
+/// line, `179.5` behind a segment `[0, 1.4e-13]`, in fog — the on-line limit's `head − tail`
+/// (`e^{σt s0}(E₂(2σt s0)/s0 − E₂(2σt s1)/s1)`) cancelled to rounding and gave `−4.2e189`
+/// (`−2·10⁹` ulps of nothing). Against `σs I/(4π) ∫_{s0}^{s1} e^{−σt(2s − s0)}/s² ds`, which over a
+/// span `1e-13` of `s0 = 179.5` is `σs I/(4π)·e^{−σt s0}·span/s0²` to 15 digits (the
+/// integrand's relative change over the span, `2σt·span + 2 span/s0`, is below 1e-14): within
+/// 1e-13, for the isotropic and the fuzzer's Schlick scenes, in f64 and (finite, non-negative,
+/// within 1e-5) f32.
+#[test]
+fn light_just_behind_a_short_segment_is_not_cancelled() {
+    use airlight::glam::Vec3;
+    let ray = Ray::<f64> { origin: DVec3::new(99.99713022261858, 0.0, 1.981082008e-314), dir: DVec3::new(7.543031923e-315, 0.0, 0.0), t_min: 0.0, t_max: 1.4210854715202004e-13 };
+    let light = PointLight { position: DVec3::new(-79.47124509127082, 6.045834155587397e-249, -0.0), intensity: 8.436253180429202e207, distribution: airlight::light::TwoLobed { axis: DVec3::new(-0.28042633306383813, -0.9988710889629291, 5.686073566141166e-270), power: 0 } };
+    let (sigma_s, sigma_t) = (1.9843137254901955, 0.006127461892896369);
+    let m = Medium { sigma_s, sigma_t };
+    let s0 = 99.99713022261858 + 79.47124509127082;
+    let span = 1.4210854715202004e-13;
+    let want = sigma_s * light.intensity / (4.0 * std::f64::consts::PI) * (-sigma_t * s0).exp() * (span / s0) / s0;
+    let iso = Scene::new(ray, light, m, Isotropic).unwrap();
+    let schlick = Scene::new(ray, light, m, airlight::phase::Schlick { k: 1.3730560997e-314 }).unwrap();
+    for got in [iso.in_scatter(), schlick.in_scatter(), iso.in_scatter_with::<6>(Expansion::Chebyshev)] {
+        assert!((got - want).abs() <= 1e-13 * want, "{got:e} vs {want:e}");
+    }
+    // f32: the same geometry scaled into f32's range (the intensity 1e30)
+    let ray32 = Ray::<f32> { origin: Vec3::new(100.0, 0.0, 0.0), dir: Vec3::X, t_min: 0.0, t_max: 1.0e-5 };
+    let light32 = PointLight { position: Vec3::new(-79.5, 1.0e-30, 0.0), intensity: 1.0e30f32, distribution: airlight::light::Omni };
+    let m32 = Medium { sigma_s: 2.0f32, sigma_t: 0.006 };
+    let got = Scene::new(ray32, light32, m32, Isotropic).unwrap().in_scatter() as f64;
+    let (s0, span) = (179.5f64, 1.0e-5f32 as f64);
+    let want = 2.0 * 1.0e30 / (4.0 * std::f64::consts::PI) * (-(0.006f32 as f64) * s0).exp() * (span / s0) / s0 * (1.0 - (0.006f32 as f64 + 1.0 / s0) * span);
+    assert!(got.is_finite() && (got - want).abs() <= 1e-5 * want, "f32: {got:e} vs {want:e}");
+}
+
 /// A segment light's record (docs/DESIGN.md §6, §10) evaluates on the CPU; its errors name
 /// `light.a`/`light.b`/`light.shape`; the fixed-term method and the GPU backend are point
 /// lights only and say so per line.

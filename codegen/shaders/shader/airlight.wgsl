@@ -1510,6 +1510,20 @@ fn airlight_on_line(s: AirlightScene, g: AirlightCanonical) -> f32 {
         return airlight_weighted(s.sigma_s, s.intensity, 2.0, 0.0, f * span);
     }
     let two_st = s.sigma_t + s.sigma_t;
+    let span = g.t_hi - g.t_lo;
+    if (!g.t_hi_infinite && span <= s0 * 0.125 && two_st * span <= 1.0) {
+        // a span short against s0, where head − tail below cancels to rounding (combined.rs
+        // `on_line`): Gauss–Legendre in s, the panels' rule
+        let rule = airlight_gauss_rule();
+        let half = span * 0.5;
+        var j = 0.0;
+        for (var i = 0u; i < AIRLIGHT_HALF_TERMS; i++) {
+            let s_lo = s0 + half * (1.0 - rule[i].x);
+            let s_hi = s0 + half * (1.0 + rule[i].x);
+            j += rule[i].y * ((half / s_lo) * (s0 / s_lo) * exp(-two_st * (s_lo - s0)) + (half / s_hi) * (s0 / s_hi) * exp(-two_st * (s_hi - s0)));
+        }
+        return airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * s0, f * j / s0);
+    }
     var e2 = airlight_en_scaled(two_st * s0);
     // σs I e^{−x} as weighted(σs, I, 2, x), whose h = 2 cancels its 2
     let head = airlight_weighted(s.sigma_s, s.intensity, 2.0, s.sigma_t * s0, f * e2[1] / s0);
