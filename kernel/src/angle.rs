@@ -212,17 +212,11 @@ impl<T: Real> Plan<T> {
             if !(gap > T::zero()) || !gap.is_finite() {
                 continue;
             }
-            // acosh(1 + gap) = ln(1 + y), y = gap + √(gap(2 + gap)), from below by 2y/(2 + y)
-            // (equal at y = 0 with its first two derivatives; 4 % low at Henyey–Greenstein's
-            // g = 0.5, 0.4 % at 0.8): the singularity no farther than it is, so the rate is never
-            // understated, without the library's `ln_1p`
-            let y = axis_excess(gap);
-            let im = (y + y) / (T::lit(2.0) + y);
             if mu > T::zero() {
                 forward_gap = forward_gap.min(gap);
             }
             let offset = if mu > T::zero() { psi0 } else { psi1 };
-            phase = phase.max(bernstein_rho(T::one() + offset * inv_hw, im * inv_hw).recip());
+            phase = phase.max(pole_rate(gap, offset, inv_hw));
         }
         // Y's pole, ψ1 past the panel's end: on the real axis at 1 + d, d = ψ1/hw, so ρ = 1 +
         // `axis_excess(d)` (`bernstein_rho` on the axis, one square root, and d to full accuracy
@@ -262,13 +256,9 @@ impl<T: Real> Plan<T> {
         let psi_p = T::lit(2.0) * atan_nonnegative(y_p);
         let hw = (T::PI() - self.psi0 - psi_p) * T::lit(0.5);
         let step = order_step(singular.order, N);
-        let rate = |gap: T, offset: T, hw: T| {
-            let y = axis_excess(gap);
-            let im = (y + y) / (T::lit(2.0) + y);
-            step * bernstein_rho(T::one() + offset / hw, im / hw).recip()
-        };
-        let forward = singular.cosines.iter().fold(T::zero(), |m, &mu| if mu > T::one() && mu.is_finite() { m.max(rate(mu - T::one(), self.psi0, self.hw)) } else { m });
-        let backward = rate(gap, psi_p, hw);
+        let inv_hw = self.hw.recip();
+        let forward = singular.cosines.iter().fold(T::zero(), |m, &mu| if mu > T::one() && mu.is_finite() { m.max(step * pole_rate(mu - T::one(), self.psi0, inv_hw)) } else { m });
+        let backward = step * pole_rate(gap, psi_p, hw.recip());
         (hw > T::zero() && power(forward, N) <= tolerance && power(backward, N) * T::lit(10.0) <= tolerance).then_some(y_p)
     }
 
@@ -499,6 +489,19 @@ fn bessel_exponent<T: Real>(nu: T, z: T) -> T {
 fn predicted_estimate<T: Real, const N: usize>(rate: T, singular: T, exponential: T) -> T {
     let decay = (rate * T::lit(1.0 / (2 * N - 1) as f64)).max(singular).max(exponential);
     (predicted_coefficient(rate, N - 1) + predicted_coefficient(rate, N - 2)) * power(decay, N + 1 - ALIASING_MARGIN)
+}
+
+/// `1/ρ` of the Bernstein ellipse of a panel of half-width `1/inv_hw` through a phase
+/// singularity at `|μ*| = 1 + gap`: on the light angle it lies `offset` past the panel's nearer
+/// end and `acosh(1 + gap)` off the real axis. `acosh(1 + gap) = ln(1 + y)`, `y = gap + √(gap(2 +
+/// gap))`, is taken from below by `2y/(2 + y)` (equal at `y = 0` with its first two derivatives;
+/// 4 % low at Henyey–Greenstein's `g = 0.5`, 0.4 % at 0.8): the singularity no farther than it
+/// is, so the rate is never understated, without the library's `ln_1p`.
+#[inline]
+fn pole_rate<T: Real>(gap: T, offset: T, inv_hw: T) -> T {
+    let y = axis_excess(gap);
+    let im = (y + y) / (T::lit(2.0) + y);
+    bernstein_rho(T::one() + offset * inv_hw, im * inv_hw).recip()
 }
 
 /// `x + √(x(2 + x)) = e^{acosh(1 + x)} − 1` for `x ≥ 0`, without cancellation near 0: `ρ − 1` of
