@@ -24,7 +24,11 @@
 //!
 //! Both integrals are globally adaptive Gauss–Kronrod (QUADPACK's QAG, as
 //! [`crate::extended`]), the inner to a tenth of the outer tolerance, each ray integral
-//! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels.
+//! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels; at
+//! loose tolerances a light without an axis in a thin medium may give `L_a(γ) sin γ` from an
+//! interpolant of a few rays instead (`RayInterpolant`).
+
+use core::cell::{Cell, RefCell};
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
@@ -353,6 +357,20 @@ where
         &self.phase
     }
 
+    /// Whether `L_a(γ) sin γ` is predicted smooth enough on the outer range for
+    /// [`RayInterpolant`]'s few nodes: the medium thin over the light's distance (`σt·d ≤ 1`:
+    /// the `γ ln γ` term at the light's direction is that small) and the phase function's
+    /// singularities at least `0.1` past `μ = ±1` (Henyey–Greenstein `|g| ≲ 0.64`; a peak
+    /// narrower than that makes one of `L_a`). A prediction of cost only: the interpolant's
+    /// estimate decides.
+    fn smooth_rays(&self, d: T) -> bool {
+        let gap = match self.phase.singularities() {
+            Some(s) => s.cosines.iter().fold(T::infinity(), |m, &mu| m.min(mu.abs() - T::one())),
+            None => T::zero(),
+        };
+        self.medium.sigma_t * d <= T::one() && (self.phase.is_isotropic() || gap >= T::lit(0.1))
+    }
+
     /// `f_r(ω)` for a unit direction `ω` (without the hemisphere's clip).
     fn brdf_at(&self, frame: &Frame<T>, w: [T; 3]) -> T {
         match self.brdf {
@@ -416,12 +434,14 @@ where
     /// [`SurfaceScene::air_light`] to a relative tolerance of the outer estimate (no finer than
     /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated. From
     /// [`FIXED_LOBE_TOLERANCE`] up, a Phong lobe lit by a light without an axis is taken by
-    /// [`lobe_arcs`], as in the shaders, with the rule of [`LOBE_RULES`] the tolerance allows.
+    /// [`lobe_arcs`], as in the shaders, with the rule of [`LOBE_RULES`] the tolerance allows;
+    /// from 5e-2 up, a Lambertian point lit by one in a thin medium takes its rays from an
+    /// interpolant of 6 or 12 where that meets the tolerance (docs/DESIGN.md §11).
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
         let lobe = LOBE_RULES.iter().find(|&&(from, _)| tolerance >= T::lit(from)).map(|&(_, rule)| rule);
-        self.integrate(tolerance, MAX_SURFACE_PANELS, lobe, |g, phys| default_panels(g, phys, control).0)
+        self.integrate(tolerance, MAX_SURFACE_PANELS, lobe, true, |g, phys| default_panels(g, phys, control).0)
     }
 
     /// What the shaders compute (fixed cost): the outer rule of `outer_rule` to
@@ -432,14 +452,14 @@ where
     /// Phong surfaces lit by a light without an axis, where the hemisphere's inner integral needs
     /// no rays (Lambert's in closed form) and the outer one is the only loop of rays.
     pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
-        self.integrate(control.tolerance, max_panels, Some(LOBE_RULE), |g, phys| panels_with_nodes::<T, D, P, N>(g, phys, control).0)
+        self.integrate(control.tolerance, max_panels, Some(LOBE_RULE), false, |g, phys| panels_with_nodes::<T, D, P, N>(g, phys, control).0)
     }
 
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
     /// at most `max_panels` panels each, every ray integral by `ray_integral`, a Phong lobe lit by
     /// a light without an axis by [`lobe_arcs`] with the `lobe` rule if one is given (else by
     /// adaptive quadrature); and the rays evaluated.
-    fn integrate(&self, tolerance: T, max_panels: usize, lobe: Option<&[(f64, f64)]>, ray_integral: impl Fn(&Canonical<T>, &Physics<'_, T, D, P>) -> T) -> (T, usize) {
+    fn integrate(&self, tolerance: T, max_panels: usize, lobe: Option<&[(f64, f64)]>, interpolate: bool, ray_integral: impl Fn(&Canonical<T>, &Physics<'_, T, D, P>) -> T) -> (T, usize) {
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
@@ -461,7 +481,7 @@ where
         let rule = outer_rule(tolerance);
         let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
-        let mut rays = 0;
+        let rays = Cell::new(0);
         let phys = Physics::new(&self.light, &self.medium, &self.phase);
         // the light's axis in the frame (ℓ, e₁, e₂)
         let axis = normalize(self.light.distribution.axis());
@@ -479,8 +499,8 @@ where
         // (the axis's and the mirror direction's angles only where they are used: for a
         // Lambertian point lit by an omni light they were 2–3 % of its instructions)
         let phi_a = if polynomial.is_some() { axis_e2.atan2(axis_e1) } else { T::zero() };
-        let mut along = |cos_g: T, sin_g: T, phi: T| {
-            rays += 1;
+        let along = |cos_g: T, sin_g: T, phi: T| {
+            rays.set(rays.get() + 1);
             let sin_g = sin_g.max(T::zero());
             // (an omni light has no axis to turn: D ignores c)
             let axis_u = if omni {
@@ -503,7 +523,12 @@ where
         let alpha_r = if phong { fr.r.1.atan2(fr.r.0) } else { T::zero() };
         let delta = fr.n.2 - fr.r.2;
         let (sin_delta, cos_delta) = if phong { delta.sin_cos() } else { (T::zero(), T::one()) };
-        let mut outer = |g: T| -> T {
+        // a light without an axis: L_a(γ) sin γ from the rays' interpolant (`RayInterpolant`)
+        // once one is sampled, else a ray at every outer node; the inner integral at the node,
+        // for the outer weight's integral the interpolant's estimate is held against
+        let source: RefCell<Option<RayInterpolant<T>>> = RefCell::new(None);
+        let inner_last = Cell::new(T::zero());
+        let outer = |g: T| -> T {
             let (sin_g, cos_g) = sin_cos_half_turn(g);
             let psi_n = half_arc(fr.n, cos_g, sin_g);
             if !(psi_n > T::zero()) {
@@ -551,56 +576,63 @@ where
                 }
                 sum
             };
-            let value = match (omni, self.brdf, lobe) {
-                (true, Brdf::Lambert { albedo }, _) => {
-                    // ∫ (A + B cos x)⁺ over the arc, closed form
-                    let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
-                    let arc = T::lit(2.0) * (a * psi_n + b * half_arc_sin(a, b));
-                    along(cos_g, sin_g, phi_n) * albedo * T::FRAC_1_PI() * arc
-                }
-                (true, Brdf::Phong { k_s, exponent, .. }, Some(rule)) => {
-                    let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
-                    let arcs = lobe_arcs(rule, normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
-                    along(cos_g, sin_g, phi_n) * k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
-                }
-                (true, _, _) => {
-                    let la = along(cos_g, sin_g, phi_n);
-                    la * inner_sum(&mut |phi| geometric(phi))
-                }
-                (false, _, _) => match polynomial {
-                    Some(p) => {
-                        // L_a at φ_j = φ_a + jπ/p, where cos(φ_j − φ_a) are the Chebyshev–Lobatto points
-                        let mut values = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
-                        let step = if p > 0 { T::PI() / T::from(p).unwrap_or(T::one()) } else { T::zero() };
-                        for (j, v) in values.iter_mut().enumerate().take(p + 1) {
-                            *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
-                        }
-                        let values = &values[..=p];
-                        if let Brdf::Lambert { albedo } = self.brdf {
-                            // the arc's integral in closed form (lambert_chebyshev_weights)
-                            let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
-                            lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
-                            let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
-                            return sum * albedo * T::FRAC_1_PI() * sin_g;
-                        }
-                        inner_sum(&mut |phi| {
-                            let f = geometric(phi);
-                            if f > T::zero() {
-                                f * chebyshev_lobatto(values, (phi - phi_a).cos())
-                            } else {
-                                T::zero()
-                            }
-                        })
+            if omni {
+                // L_a(γ) sin γ (from the rays' interpolant where there is one) times the inner
+                // integral of the BRDF and the cosine
+                let inner = match (self.brdf, lobe) {
+                    (Brdf::Lambert { albedo }, _) => {
+                        // ∫ (A + B cos x)⁺ over the arc, closed form
+                        let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
+                        let arc = T::lit(2.0) * (a * psi_n + b * half_arc_sin(a, b));
+                        albedo * T::FRAC_1_PI() * arc
                     }
-                    None => inner_sum(&mut |phi| {
+                    (Brdf::Phong { k_s, exponent, .. }, Some(rule)) => {
+                        let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
+                        let arcs = lobe_arcs(rule, normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
+                        k_s * (exponent + T::lit(2.0)) * T::FRAC_1_PI() * T::lit(0.5) * arcs
+                    }
+                    _ => inner_sum(&mut |phi| geometric(phi)),
+                };
+                inner_last.set(inner);
+                let light = match source.borrow().as_ref() {
+                    Some(p) => p.at(g),
+                    None => along(cos_g, sin_g, phi_n) * sin_g,
+                };
+                return light * inner;
+            }
+            let value = match polynomial {
+                Some(p) => {
+                    // L_a at φ_j = φ_a + jπ/p, where cos(φ_j − φ_a) are the Chebyshev–Lobatto points
+                    let mut values = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+                    let step = if p > 0 { T::PI() / T::from(p).unwrap_or(T::one()) } else { T::zero() };
+                    for (j, v) in values.iter_mut().enumerate().take(p + 1) {
+                        *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
+                    }
+                    let values = &values[..=p];
+                    if let Brdf::Lambert { albedo } = self.brdf {
+                        // the arc's integral in closed form (lambert_chebyshev_weights)
+                        let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+                        lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                        let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
+                        return sum * albedo * T::FRAC_1_PI() * sin_g;
+                    }
+                    inner_sum(&mut |phi| {
                         let f = geometric(phi);
                         if f > T::zero() {
-                            f * along(cos_g, sin_g, phi)
+                            f * chebyshev_lobatto(values, (phi - phi_a).cos())
                         } else {
                             T::zero()
                         }
-                    }),
-                },
+                    })
+                }
+                None => inner_sum(&mut |phi| {
+                    let f = geometric(phi);
+                    if f > T::zero() {
+                        f * along(cos_g, sin_g, phi)
+                    } else {
+                        T::zero()
+                    }
+                }),
             };
             value * sin_g
         };
@@ -670,10 +702,11 @@ where
             let i = x.floor().to_usize().unwrap_or(0).min(n - 1);
             let t = x - T::from(i).unwrap_or(T::zero());
             let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
+            inner_last.set(T::zero());
             if jacobian > T::zero() {
-                outer(g) * jacobian
+                (outer(g) * jacobian, inner_last.get() * jacobian)
             } else {
-                T::zero()
+                (T::zero(), T::zero())
             }
         };
         let mut knots = [T::zero(); 16];
@@ -690,8 +723,116 @@ where
             let i = a.floor().to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
-        let (value, _) = crate::extended::adaptive_by(rule_of, &mut mapped, &knots[..=n], tolerance, max_panels);
-        (value, rays)
+        if interpolate && omni && matches!(self.brdf, Brdf::Lambert { .. }) && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
+            // L_a(γ) sin γ is smooth where the outer integrand's kinks are (they are the inner
+            // integral's): interpolated from RAY_NODES rays, the outer integral needs no more.
+            // Half the tolerance to each: the interpolant's largest error times the outer weight's
+            // integral (the companion of the same panels) against half the value (docs/DESIGN.md
+            // §11). Else more nodes, then a ray at every outer node.
+            let squared = !(lo > T::zero());
+            for &count in RAY_NODES {
+                let p = RayInterpolant::sample(count, lo, hi, squared, |g| {
+                    let (sin_g, cos_g) = sin_cos_half_turn(g);
+                    along(cos_g, sin_g, fr.n.2) * sin_g
+                });
+                if !(p.estimate.is_finite()) {
+                    continue;
+                }
+                let estimate = p.estimate;
+                *source.borrow_mut() = Some(p);
+                let (value, weight, _) = crate::extended::adaptive_with(&rule_of, &mut mapped, &knots[..=n], tolerance * T::lit(0.5), max_panels);
+                if estimate * weight <= tolerance * T::lit(0.5) * value {
+                    return (value, rays.get());
+                }
+            }
+            *source.borrow_mut() = None;
+        }
+        let (value, _) = crate::extended::adaptive_by(rule_of, &mut |x| mapped(x).0, &knots[..=n], tolerance, max_panels);
+        (value, rays.get())
+    }
+}
+
+/// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node.
+const RAY_NODES: &[usize] = &[6, 12];
+
+/// The finest outer tolerance at which [`RayInterpolant`] is tried: finer, its 12 nodes rarely
+/// pass, and the rays it spent are lost (docs/DESIGN.md §11).
+const INTERPOLATED_FROM: f64 = 5e-2;
+
+/// The largest of [`RAY_NODES`].
+const MAX_RAY_NODES: usize = 12;
+
+/// `L_a(γ) sin γ` of a light without an axis on the outer range `[lo, hi]`, interpolated at the
+/// Chebyshev points of the first kind (inside the range: none on the light's direction `γ = 0`,
+/// where `L_a` is infinite) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
+/// the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ` term (the ray passing the
+/// light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
+/// (Trefethen, Approximation Theory and Approximation Practice, Thm. 4.2) with the tail summed
+/// from the last two coefficients, `last`, at the decay they show but at least `M/8` of them (an
+/// algebraic tail's; `∞` where they fall by less than half from the two before).
+#[derive(Clone, Copy)]
+struct RayInterpolant<T> {
+    lo: T,
+    width: T,
+    squared: bool,
+    count: usize,
+    coefficients: [T; MAX_RAY_NODES],
+    estimate: T,
+}
+
+impl<T: Real> RayInterpolant<T> {
+    fn sample(count: usize, lo: T, hi: T, squared: bool, f: impl Fn(T) -> T) -> Self {
+        let width = hi - lo;
+        let mut values = [T::zero(); MAX_RAY_NODES];
+        let mut nodes = [T::zero(); MAX_RAY_NODES];
+        let m = T::from(count).unwrap_or(T::one());
+        for j in 0..count {
+            let tau = (T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).cos();
+            let s = (T::one() + tau) * T::lit(0.5);
+            let g = lo + width * if squared { s * s } else { s };
+            nodes[j] = tau;
+            values[j] = f(g);
+        }
+        // c_k = (2/M) Σ_j f_j T_k(τ_j), c_0 halved
+        let mut coefficients = [T::zero(); MAX_RAY_NODES];
+        for j in 0..count {
+            let (tau, v) = (nodes[j], values[j]);
+            let (mut previous, mut current) = (T::one(), tau);
+            coefficients[0] = coefficients[0] + v;
+            for c in coefficients.iter_mut().take(count).skip(1) {
+                *c = *c + v * current;
+                let next = T::lit(2.0) * tau * current - previous;
+                previous = current;
+                current = next;
+            }
+        }
+        for (k, c) in coefficients.iter_mut().enumerate().take(count) {
+            *c = *c * T::lit(2.0) / m * if k == 0 { T::lit(0.5) } else { T::one() };
+        }
+        let last = coefficients[count - 1].abs() + coefficients[count - 2].abs();
+        let before = coefficients[count - 3].abs() + coefficients[count - 4].abs();
+        let q2 = if last < before { last / before } else { T::one() };
+        // the tail as geometric at the decay shown, but no less than an algebraic one's: the
+        // γ ln γ term makes the coefficients fall like a power of k in the squared map, where the
+        // error of the M-node interpolant measured 0.26 and 2.0 times `last` at M = 6 and 12
+        // (`tests::ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds`)
+        let factor = (q2 / (T::one() - q2)).max(m * T::lit(0.125));
+        let estimate = if q2 < T::lit(0.5) { T::lit(2.0) * last * factor } else { T::infinity() };
+        RayInterpolant { lo, width, squared, count, coefficients, estimate }
+    }
+
+    /// The interpolant at `γ` (Clenshaw's recurrence).
+    fn at(&self, gamma: T) -> T {
+        let x = ((gamma - self.lo) / self.width).max(T::zero()).min(T::one());
+        let s = if self.squared { x.sqrt() } else { x };
+        let tau = s + s - T::one();
+        let (mut b1, mut b2) = (T::zero(), T::zero());
+        for &c in self.coefficients[1..self.count].iter().rev() {
+            let b0 = c + T::lit(2.0) * tau * b1 - b2;
+            b2 = b1;
+            b1 = b0;
+        }
+        self.coefficients[0] + tau * b1 - b2
     }
 }
 
@@ -746,6 +887,47 @@ mod tests {
     extern crate std;
     use super::*;
     use crate::extended::{adaptive, GAUSS_KRONROD_15};
+
+    /// `RayInterpolant` reproduces a polynomial of degree `M − 1` in `τ` from its `M` values (to
+    /// rounding: within `8Mε` of `Σ|c_k|`, the Lebesgue constant of the first-kind points being
+    /// below 3 here), on both maps; and on smooth functions — an entire one, and `γ ln γ`-like
+    /// ones on a range from `γ = 0`, the shape its squared map is for — its estimate bounds the
+    /// error it makes at 400 points of the range wherever the estimate is finite.
+    #[test]
+    fn ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds() {
+        for &count in RAY_NODES {
+            for (lo, hi, squared) in [(0.3, 2.5, false), (0.0, 2.5, true)] {
+                let tau = |g: f64| {
+                    let x: f64 = (g - lo) / (hi - lo);
+                    let s = if squared { x.sqrt() } else { x };
+                    2.0 * s - 1.0
+                };
+                // Σ_k c_k τ^k, c_k = (−0.7)^k: degree M − 1
+                let poly = |g: f64| (0..count).rev().fold(0.0, |acc, k| acc * tau(g) + (-0.7f64).powi(k as i32));
+                let p = RayInterpolant::sample(count, lo, hi, squared, poly);
+                let sum: f64 = (0..count).map(|k| 0.7f64.powi(k as i32)).sum();
+                for i in 0..=400 {
+                    let g = lo + (hi - lo) * i as f64 / 400.0;
+                    let err = (p.at(g) - poly(g)).abs();
+                    assert!(err <= 8.0 * count as f64 * f64::EPSILON * sum, "M {count}, γ {g}: {err:e}");
+                }
+            }
+            let cases: [(f64, f64, bool, &dyn Fn(f64) -> f64); 3] = [
+                (0.3, 2.5, false, &|g: f64| (0.5 * g).exp() * g.cos()),
+                (0.0, 2.5, true, &|g: f64| 1.0 + 0.05 * g * (g + 1e-300).ln() + 0.3 * g),
+                (0.0, 3.0, true, &|g: f64| (3.0 - g) * (1.0 - 0.2 * g * (g + 1e-300).ln())),
+            ];
+            for (lo, hi, squared, f) in cases {
+                let p = RayInterpolant::sample(count, lo, hi, squared, f);
+                if !p.estimate.is_finite() {
+                    continue;
+                }
+                let worst = (0..=400).map(|i| lo + (hi - lo) * i as f64 / 400.0).map(|g| (p.at(g) - f(g)).abs()).fold(0.0, f64::max);
+                std::println!("M {count} on [{lo}, {hi}]: largest error {worst:.1e}, estimate {:.1e}", p.estimate);
+                assert!(worst <= p.estimate, "M {count} on [{lo}, {hi}]: {worst:e} > {:e}", p.estimate);
+            }
+        }
+    }
 
     /// `chebyshev_lobatto` reproduces a polynomial of degree `p` from its values at the `p + 1`
     /// points exactly (to rounding), between the points and at them, for every degree up to

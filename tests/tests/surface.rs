@@ -170,3 +170,37 @@ fn loose_tolerances_hold() {
         assert!(w32.0 <= tolerance.max(1e-4), "f32 at {tolerance:e}: {:e} on {}", w32.0, w32.1);
     }
 }
+
+/// A Lambertian point lit by a light without an axis in a thin medium takes `L_a(γ) sin γ` from
+/// an interpolant of few rays (docs/DESIGN.md §11): at outer tolerance 1e-1 every
+/// `lambert_thin` point takes at most 12 rays — one Gauss–Kronrod 3/7 panel on each of the two
+/// pieces of its outer range, which a ray at every outer node costs, would be 14 — and every
+/// Lambertian point with an omni light, interpolated or not, is within the tolerance of its
+/// reference, f64 and f32, at each tolerance where the interpolant is tried.
+#[test]
+fn thin_media_interpolate_the_rays() {
+    let lines = reference_lines("surface.jsonl");
+    for tolerance in [1e-1, 5e-2] {
+        let (mut worst, mut most) = ((0.0f64, String::new()), 0);
+        for v in &lines {
+            let category = v["category"].as_str().unwrap();
+            if v["surface"]["brdf"]["kind"] != "lambert" || v["light"]["distribution"]["kind"] != "isotropic" {
+                continue;
+            }
+            let (exact, scale) = (v["surface_air_light"].as_f64().unwrap(), v["scale"].as_f64().unwrap());
+            let (got64, rays) = surface::<f64>(v).air_light_counted(tolerance);
+            let (got32, rays32) = surface::<f32>(v).air_light_counted(tolerance as f32);
+            for (err, what) in [((got64 - exact).abs() / exact.max(1e-10 * scale), "f64"), ((got32 as f64 - exact).abs() / exact.max(1e-4 * scale), "f32")] {
+                if err > worst.0 {
+                    worst = (err, format!("{category} {what}"));
+                }
+            }
+            if category == "lambert_thin" {
+                most = most.max(rays).max(rays32);
+            }
+        }
+        println!("tolerance {tolerance:e}: lambert_thin at most {most} rays a point; largest error {:.2e} ({})", worst.0, worst.1);
+        assert!(most <= 12, "lambert_thin at {tolerance:e}: {most} rays");
+        assert!(worst.0 <= tolerance, "at {tolerance:e}: {:e} on {}", worst.0, worst.1);
+    }
+}
