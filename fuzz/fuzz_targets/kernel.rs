@@ -1,6 +1,6 @@
 //! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
 //! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments, a segment
-//! light along the light's axis, a disc and a sphere light and a fog-lit surface point (f64). Oracle: no panic; never NaN; never negative;
+//! light along the light's axis, a disc and a sphere light and fog-lit surface points (f64). Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -87,6 +87,21 @@ fuzz_target!(|raw: Raw| {
         if let Ok(s) = SegmentScene::new(r, segment, m, p) {
             let x = s.in_scatter();
             assert!(!x.is_nan() && x >= 0.0, "f64/segment: {x} for {raw:?}");
+        }
+    }
+    // on one input in 4, the ray's origin as a Lambertian surface facing along the ray, lit by
+    // an omni light in isotropic fog thinned to `σt·d < 1` over the light's distance `d`, at
+    // tolerance 1e-1 (6–30 rays): where the point reads its rays from an interpolant
+    // (docs/DESIGN.md §11); never NaN, never negative
+    if raw.power % 4 == 1 {
+        let d = (DVec3::from_array(raw.p) - r.origin).length();
+        let thin = m.sigma_t * d + 1.0;
+        let thin = airlight::Medium { sigma_s: m.sigma_s / thin, sigma_t: m.sigma_t / thin };
+        let omni = airlight::PointLight { distribution: airlight::light::AnyDistribution::Omni, ..l };
+        let surface = Surface { position: r.origin, normal: r.dir };
+        if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, omni, thin, airlight::phase::AnyPhase::Isotropic) {
+            let x = s.air_light_counted(1e-1).0;
+            assert!(!x.is_nan() && x >= 0.0, "f64/thin surface at 1e-1: {x} for {raw:?}");
         }
     }
     // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
