@@ -8,7 +8,8 @@
 //! `s`, `L_point` behaves like `1/ρ(s)` near the emitter's closest approach to the ray line,
 //! `ρ(s)² = ρ*² + (s − s*)² sin²α` (`α` the angle between the lines): so the outer integral is
 //! taken in `w` with `s = s* + (ρ*/sin α) sinh w`, where `ds/ρ = dw/sin α` and the peak is
-//! smooth, split where the light's foot passes the ray's ends, by globally adaptive
+//! smooth, split where the light's foot passes the ray's ends (and a light with an axis at its
+//! lobe's shoulders, `LOBE_SHOULDER`), by globally adaptive
 //! Gauss–Kronrod 7/15 (3/7 at tolerances of 1e-4 and looser, 2/5 at 1e-1; QUADPACK's QAG
 //! strategy) to a relative tolerance, with a bounded number of panels.
 //!
@@ -234,7 +235,7 @@ where
         }
         let inner = inner_control(tolerance);
         let phys = Physics { sigma_s: self.medium.sigma_s, sigma_t: self.medium.sigma_t, intensity: self.light.intensity, light: &self.light.distribution, phase: &self.phase };
-        self.integrate(tolerance, MAX_SEGMENT_PANELS, |node| default_panels(&node.canonical, &phys, inner).0)
+        self.integrate(tolerance, MAX_SEGMENT_PANELS, true, |node| default_panels(&node.canonical, &phys, inner).0)
     }
 
     /// What the shaders compute (fixed cost): the outer Gauss–Kronrod rule the default path
@@ -242,8 +243,9 @@ where
     /// `max_panels` panels (the shaders: [`SHADER_SEGMENT_PANELS`]), every point light as
     /// [`Scene::in_scatter_panels`]`::<N>(control)`; and the panels evaluated.
     pub fn in_scatter_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
-        // each point light reduced from its world position, as the shaders do
-        self.integrate(control.tolerance, max_panels, |node| {
+        // each point light reduced from its world position, as the shaders do; no cuts at the
+        // lobe's shoulders (`LOBE_SHOULDER`), as the shaders have none
+        self.integrate(control.tolerance, max_panels, false, |node| {
             let light = PointLight { position: T::vec3_from_array(node.position), intensity: self.light.intensity, distribution: self.light.distribution.clone() };
             Scene::new(self.ray, light, self.medium, self.phase.clone()).map_or(T::zero(), |scene| scene.in_scatter_panels::<N>(control))
         })
@@ -321,8 +323,9 @@ where
         value.is_finite().then_some(value)
     }
 
-    /// `∫ L_point ds` by the outer rule to `tolerance`, each point light by `point_light`.
-    fn integrate(&self, tolerance: T, max_panels: usize, point_light: impl Fn(&Node<T>) -> T) -> (T, usize) {
+    /// `∫ L_point ds` by the outer rule to `tolerance`, each point light by `point_light`; with
+    /// `shoulders`, a light with an axis is cut at its lobe's shoulders (`LOBE_SHOULDER`).
+    fn integrate(&self, tolerance: T, max_panels: usize, shoulders: bool, point_light: impl Fn(&Node<T>) -> T) -> (T, usize) {
         let a = T::vec3_to_array(self.light.a);
         let ab = sub(T::vec3_to_array(self.light.b), a);
         let len = length(ab);
@@ -384,7 +387,7 @@ where
         // a thick one 2.4e-5 and 2.8e-5; never splitting there took a far tube, its closest
         // approach 1.1 from both ends, from 1.6e-4 to 2.6e-3)
         let (w_lo, w_hi) = (to_w(T::zero()), to_w(len));
-        let mut cuts = [T::infinity(); 3];
+        let mut cuts = [T::infinity(); 5];
         let foot_at = |t: T| if cos_a != T::zero() { (t - along_d) / cos_a } else { T::nan() };
         let sliver = scale > T::zero() && (-w_lo).min(w_hi) < T::lit(0.5);
         let star = if sliver { T::nan() } else { s_star };
@@ -393,10 +396,27 @@ where
                 *c = to_w(s);
             }
         }
-        let (edges, n): ([T; 5], usize) = edges_between(w_lo, w_hi, &mut cuts);
+        // and, where the map is taken for a light with an axis, at its lobe's shoulders
+        if shoulders && scale > T::zero() && !self.light.distribution.is_isotropic() {
+            cuts[3] = -T::lit(LOBE_SHOULDER);
+            cuts[4] = T::lit(LOBE_SHOULDER);
+        }
+        let (edges, n): ([T; 7], usize) = edges_between(w_lo, w_hi, &mut cuts);
         adaptive(segment_rule(tolerance), &mut point, &edges[..=n], tolerance, max_panels)
     }
 }
+
+/// Where the outer integral of a segment lit with an axis is cut besides its closest approach
+/// (`w = 0`): at `w = ±2` in the sinh map. A lobe that narrows towards the ray — a beam `c^p`
+/// across it, `c = ρ*/r` at the closest approach — makes `L_point` fall like `ρ^{−1−p}` there,
+/// the outer integrand like `sech^p w`, a peak of width ≈ 1 in `w` whatever `ρ*`, while beyond
+/// `|w| ≈ 2` the map runs `s` exponentially over the rest of the emitter: a panel over both
+/// follows the shoulder only by bisection (the near tubes with a `c⁴` beam across the ray of
+/// tests/reference/extended.jsonl took 6–10 panels at tolerances 1e-1 … 1e-2 and left up to
+/// 3.2e-3 at 3e-2; cut, 4 panels and at most 8.0e-4 at 1e-1). `sech 2 = 0.27` (`c⁴`'s peak
+/// there at 5e-3 of its height). An isotropic light's integrand is flat in `w` (`p = 0`), not
+/// cut (docs/DESIGN.md §10).
+const LOBE_SHOULDER: f64 = 2.0;
 
 /// A node of a segment's outer rule: the point light's position and its canonical form.
 struct Node<T> {
