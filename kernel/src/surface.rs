@@ -32,6 +32,7 @@ use core::cell::{Cell, RefCell};
 
 use crate::error::{check_finite, check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
+use crate::expansion::chebyshev_series;
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
@@ -730,7 +731,7 @@ where
             // integral (the companion of the same panels) against half the value (docs/DESIGN.md
             // §11). Else more nodes, then a ray at every outer node.
             let squared = !(lo > T::zero());
-            for &count in RAY_NODES {
+            for count in RAY_NODES {
                 let p = RayInterpolant::sample(count, lo, hi, squared, |g| {
                     let (sin_g, cos_g) = sin_cos_half_turn(g);
                     along(cos_g, sin_g, fr.n.2) * sin_g
@@ -753,18 +754,19 @@ where
 }
 
 /// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node.
-const RAY_NODES: &[usize] = &[6, 12];
+const RAY_NODES: [usize; 2] = [6, 12];
 
 /// The finest outer tolerance at which [`RayInterpolant`] is tried: finer, its 12 nodes rarely
 /// pass, and the rays it spent are lost (docs/DESIGN.md §11).
 const INTERPOLATED_FROM: f64 = 5e-2;
 
 /// The largest of [`RAY_NODES`].
-const MAX_RAY_NODES: usize = 12;
+const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 
 /// `L_a(γ) sin γ` of a light without an axis on the outer range `[lo, hi]`, interpolated at the
 /// Chebyshev points of the first kind (inside the range: none on the light's direction `γ = 0`,
-/// where `L_a` is infinite) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
+/// where `L_a` is infinite; their cosines directly, for the accuracy of the nodes, the series by
+/// `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
 /// the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ` term (the ray passing the
 /// light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
 /// (Trefethen, Approximation Theory and Approximation Practice, Thm. 4.2) with the tail summed
@@ -793,22 +795,8 @@ impl<T: Real> RayInterpolant<T> {
             nodes[j] = tau;
             values[j] = f(g);
         }
-        // c_k = (2/M) Σ_j f_j T_k(τ_j), c_0 halved
         let mut coefficients = [T::zero(); MAX_RAY_NODES];
-        for j in 0..count {
-            let (tau, v) = (nodes[j], values[j]);
-            let (mut previous, mut current) = (T::one(), tau);
-            coefficients[0] = coefficients[0] + v;
-            for c in coefficients.iter_mut().take(count).skip(1) {
-                *c = *c + v * current;
-                let next = T::lit(2.0) * tau * current - previous;
-                previous = current;
-                current = next;
-            }
-        }
-        for (k, c) in coefficients.iter_mut().enumerate().take(count) {
-            *c = *c * T::lit(2.0) / m * if k == 0 { T::lit(0.5) } else { T::one() };
-        }
+        chebyshev_series(&nodes, &values, &mut coefficients[..count]);
         let last = coefficients[count - 1].abs() + coefficients[count - 2].abs();
         let before = coefficients[count - 3].abs() + coefficients[count - 4].abs();
         let q2 = if last < before { last / before } else { T::one() };
@@ -895,7 +883,7 @@ mod tests {
     /// error it makes at 400 points of the range wherever the estimate is finite.
     #[test]
     fn ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds() {
-        for &count in RAY_NODES {
+        for count in RAY_NODES {
             for (lo, hi, squared) in [(0.3, 2.5, false), (0.0, 2.5, true)] {
                 let tau = |g: f64| {
                     let x: f64 = (g - lo) / (hi - lo);

@@ -32,25 +32,8 @@ pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: 
     for j in 0..N {
         values[j] = f(y_c + r * xi[j]);
     }
-    // c_k = (2/N) Σ_j f_j T_k(ξ_j), c_0 halved.
     let mut cheb = [T::zero(); N];
-    for j in 0..N {
-        let (mut t_prev, mut t_cur) = (T::one(), xi[j]);
-        for k in 0..N {
-            let tk = if k == 0 { T::one() } else { t_cur };
-            cheb[k] = cheb[k] + values[j] * tk;
-            if k >= 1 {
-                let t_next = (xi[j] + xi[j]) * t_cur - t_prev;
-                t_prev = t_cur;
-                t_cur = t_next;
-            }
-        }
-    }
-    let two_over_n = (T::one() + T::one()) / nf;
-    for k in 0..N {
-        cheb[k] = cheb[k] * two_over_n;
-    }
-    cheb[0] = cheb[0] * T::lit(0.5);
+    chebyshev_series(&xi, &values, &mut cheb);
     // Σ c_k T_k(ξ) → monomials in ξ, with T_k as coefficient arrays.
     let mut t_km1 = [T::zero(); N];
     let mut t_k = [T::zero(); N];
@@ -85,6 +68,34 @@ pub fn chebyshev_coefficients<T: Real, const N: usize>(f: impl Fn(T) -> T, y_c: 
         rk = rk * r;
     }
     a
+}
+
+/// The Chebyshev series `Σ_{k<M} c_k T_k(ξ)` through `values` at the `M = c.len()` points of
+/// the first kind of `[−1, 1]`, `nodes` (`ξ_j = cos((2j+1)π/(2M))`, formed by the caller), into
+/// `c`: `c_k = (2/M) Σ_j f_j T_k(ξ_j)` (discrete orthogonality), `c_0` halved.
+#[inline]
+pub(crate) fn chebyshev_series<T: Real>(nodes: &[T], values: &[T], c: &mut [T]) {
+    let n = c.len();
+    for (&xi, &value) in nodes.iter().zip(values).take(n) {
+        let (mut t_prev, mut t_cur) = (T::one(), xi);
+        for (k, ck) in c.iter_mut().enumerate() {
+            let tk = if k == 0 { T::one() } else { t_cur };
+            *ck = *ck + value * tk;
+            if k >= 1 {
+                let t_next = (xi + xi) * t_cur - t_prev;
+                t_prev = t_cur;
+                t_cur = t_next;
+            }
+        }
+    }
+    if n == 0 {
+        return;
+    }
+    let two_over_n = (T::one() + T::one()) / T::from(n).unwrap();
+    for ck in c.iter_mut() {
+        *ck = *ck * two_over_n;
+    }
+    c[0] = c[0] * T::lit(0.5);
 }
 
 #[cfg(test)]

@@ -16,6 +16,7 @@ pub mod laguerre_table;
 mod jet;
 
 pub use chebyshev::chebyshev_coefficients;
+pub(crate) use chebyshev::chebyshev_series;
 pub use jet::Jet;
 
 use crate::real::Real;
