@@ -437,7 +437,8 @@ where
     /// [`FIXED_LOBE_TOLERANCE`] up, a Phong lobe lit by a light without an axis is taken by
     /// [`lobe_arcs`], as in the shaders, with the rule of [`LOBE_RULES`] the tolerance allows;
     /// from 5e-2 up, a Lambertian point lit by one in a thin medium takes its rays from an
-    /// interpolant of 6 or 12 where that meets the tolerance (docs/DESIGN.md §11).
+    /// interpolant of 6 or 12 where that meets the tolerance; a phase function's lobe narrower
+    /// than [`PHASE_LOBE_GAP`] allows is cut at its extent (docs/DESIGN.md §11).
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
@@ -459,8 +460,10 @@ where
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
     /// at most `max_panels` panels each, every ray integral by `ray_integral`, a Phong lobe lit by
     /// a light without an axis by [`lobe_arcs`] with the `lobe` rule if one is given (else by
-    /// adaptive quadrature); and the rays evaluated.
-    fn integrate(&self, tolerance: T, max_panels: usize, lobe: Option<&[(f64, f64)]>, interpolate: bool, ray_integral: impl Fn(&Canonical<T>, &Physics<'_, T, D, P>) -> T) -> (T, usize) {
+    /// adaptive quadrature); and the rays evaluated. `default_path`: with what the shaders do
+    /// not have, the rays' interpolant ([`RayInterpolant`]) and the cuts at the phase function's
+    /// lobe ([`PHASE_LOBE_GAP`]).
+    fn integrate(&self, tolerance: T, max_panels: usize, lobe: Option<&[(f64, f64)]>, default_path: bool, ray_integral: impl Fn(&Canonical<T>, &Physics<'_, T, D, P>) -> T) -> (T, usize) {
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
@@ -638,10 +641,11 @@ where
             value * sin_g
         };
         // outer edges: where the arcs change kind and where the arcs' ends meet (kinks: an arc
-        // opens or closes there), a lobe's peak and extent and a beam's axis (smooth: the pieces
-        // need not crowd their nodes towards them, piece_map)
-        let mut cuts = [T::zero(); 14];
-        let mut kinds = [Cut::Kink; 14];
+        // opens or closes there), a lobe's peak and extent, a beam's axis and a phase lobe's
+        // extent (smooth: the pieces need not crowd their nodes towards them, piece_map); at most
+        // 2 + 9 (Phong) + 2 (beam) + 4 (phase)
+        let mut cuts = [T::zero(); 18];
+        let mut kinds = [Cut::Kink; 18];
         let mut count = 0;
         let turning = |(cos_a, sin_a, _): (T, T, T)| {
             let alpha = sin_a.atan2(cos_a);
@@ -685,17 +689,36 @@ where
         // test that needed it)
         if beam.is_some_and(|p| p >= 2) {
             let gamma_a = axis_e1.hypot(axis_e2).atan2(axis_l);
-            push(gamma_a, Cut::Axis);
-            push(T::PI() - gamma_a, Cut::Axis);
+            push(gamma_a, Cut::Peak);
+            push(T::PI() - gamma_a, Cut::Peak);
+        }
+        // the phase function's lobe: at the point itself light scatters into ω at μ = ℓ·ω =
+        // cos γ, so a lobe at μ = ±1 is one of L_a at γ = 0 or π, of the lobe's angular width
+        // √(2·gap) (a singularity gap past ±1; Henyey–Greenstein (1 − |g|)/√|g|); where it is
+        // narrower than PHASE_LOBE_GAP allows, cut at 1.5 and 4 widths from its peak, as a Phong
+        // lobe's extent (the default path only; docs/DESIGN.md §11)
+        if default_path && !self.phase.is_isotropic() {
+            if let Some(s) = self.phase.singularities() {
+                for mu in s.cosines {
+                    let gap = mu.abs() - T::one();
+                    if gap > T::zero() && gap < T::lit(PHASE_LOBE_GAP) {
+                        let width = (gap + gap).sqrt();
+                        for k in [1.5, 4.0] {
+                            let c = T::lit(k) * width;
+                            push(if mu > T::zero() { c } else { T::PI() - c }, Cut::Peak);
+                        }
+                    }
+                }
+            }
         }
         // only γ ∈ (α_n − π/2, α_n + π/2) sees the hemisphere (the largest n·ω at γ is
         // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
         // (the end is the normal's turning point itself, so that no sliver is left beside it)
         let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
         let mut values = cuts;
-        let (edges, n): ([T; 16], usize) = edges_between(lo, hi, &mut values[..count]);
+        let (edges, n): ([T; 20], usize) = edges_between(lo, hi, &mut values[..count]);
         // the inner edges where no arc opens or closes (the range's ends are arcs' ends)
-        let mut smooth = [false; 16];
+        let mut smooth = [false; 20];
         for (i, flag) in smooth.iter_mut().enumerate().take(n).skip(1) {
             *flag = !cuts[..count].iter().zip(&kinds).any(|(&c, &k)| c == edges[i] && k == Cut::Kink);
         }
@@ -710,7 +733,7 @@ where
                 (T::zero(), T::zero())
             }
         };
-        let mut knots = [T::zero(); 16];
+        let mut knots = [T::zero(); 20];
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
         }
@@ -724,7 +747,7 @@ where
             let i = a.floor().to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
-        if interpolate && omni && matches!(self.brdf, Brdf::Lambert { .. }) && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
+        if default_path && omni && matches!(self.brdf, Brdf::Lambert { .. }) && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
             // L_a(γ) sin γ is smooth where the outer integrand's kinks are (they are the inner
             // integral's): interpolated from RAY_NODES rays, the outer integral needs no more.
             // Half the tolerance to each: the interpolant's largest error times the outer weight's
@@ -752,6 +775,14 @@ where
         (value, rays.get())
     }
 }
+
+/// The largest gap `|μ*| − 1` of a phase function's singularity past `μ = ±1` whose lobe the
+/// default path cuts the outer integral at ([`SurfaceScene::air_light_counted`]): a gap of 0.01,
+/// a lobe `√(2·gap)` = 0.14 wide (Henyey–Greenstein `|g|` ≳ 0.87). Measured on
+/// tests/reference/surface.jsonl at tolerance 1e-1: uncut, a `g = 0.95` point was 4.8e-3 off
+/// (28 rays; 4.4e-5 cut, 28 rays); cutting from a gap of 0.1 (`|g|` ≳ 0.64) cost `near` and
+/// `phong` 20 % more instructions with no error that needed it (docs/DESIGN.md §11).
+pub const PHASE_LOBE_GAP: f64 = 0.01;
 
 /// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node.
 const RAY_NODES: [usize; 2] = [6, 12];
@@ -825,12 +856,13 @@ impl<T: Real> RayInterpolant<T> {
 }
 
 /// What an outer cut of a surface's integral is: where an arc opens or closes (`|γ − γ*|^{3/2}`),
-/// a Phong lobe's peak or extent, or a beam's axis (both smooth points of the integrand).
+/// a Phong lobe's peak or extent, or a beam's axis or the phase function's lobe's extent (all
+/// smooth points of the integrand).
 #[derive(Clone, Copy, PartialEq)]
 enum Cut {
     Kink,
     Lobe,
-    Axis,
+    Peak,
 }
 
 /// `(γ, dγ/dt)` at `t ∈ [0, 1]` on the outer piece `[a, b]`: where an arc opens or closes at an
