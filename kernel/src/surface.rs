@@ -285,17 +285,18 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
     sum
 }
 
-/// `sin ψ` of [`half_arc`]'s `ψ` for `A = cos α cos γ`, `B = sin α sin γ`: `√((1 − x)(1 + x))`,
-/// `x = −A/B`, without the sine of the arc cosine (0 where the arc is the whole circle or empty).
-fn half_arc_sin<T: Real>(a: T, b: T) -> T {
+/// The arc `|φ − φ_c| < ψ` where `A + B cos(φ − φ_c) > 0` (`A = cos α cos γ`, `B = sin α sin γ`),
+/// as `ψ ∈ [0, π]`, and `sin ψ` (`√((1 − x)(1 + x))`, `x = −A/B`, without the sine of the arc
+/// cosine; 0 where the arc is the whole circle or empty).
+fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     if b <= a.abs() {
-        return T::zero();
+        return (if a > T::zero() { T::PI() } else { T::zero() }, T::zero());
     }
     let x = (-a / b).max(-T::one()).min(T::one());
-    ((T::one() - x) * (T::one() + x)).sqrt()
+    (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
 }
 
-/// The arc `|φ − φ_c| < ψ` where `cos α cos γ + sin α sin γ cos(φ − φ_c) > 0`, as `ψ ∈ [0, π]`.
+/// [`half_arc_and_sine`]'s `ψ` alone, for the arc of `(cos α, sin α, ·)` at `γ`.
 fn half_arc<T: Real>((cos_a, sin_a, _): (T, T, T), cos_g: T, sin_g: T) -> T {
     let (a, b) = (cos_a * cos_g, sin_a * sin_g);
     if b <= a.abs() {
@@ -534,11 +535,28 @@ where
         let inner_last = Cell::new(T::zero());
         let outer = |g: T| -> T {
             let (sin_g, cos_g) = sin_cos_half_turn(g);
-            let psi_n = half_arc(fr.n, cos_g, sin_g);
+            // the normal's arc, and A, B and sin ψ for Lambert's closed form
+            let (a_n, b_n) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
+            let (psi_n, sin_psi_n) = half_arc_and_sine(a_n, b_n);
             if !(psi_n > T::zero()) {
                 return T::zero();
             }
             let phi_n = fr.n.2;
+            // L_a(γ) sin γ of a light without an axis (from the rays' interpolant where there is
+            // one) times `inner`, the inner integral of the BRDF and the cosine at this node
+            let omni_times = |inner: T| {
+                inner_last.set(inner);
+                let light = match source.borrow().as_ref() {
+                    Some(p) => p.at(g),
+                    None => along(cos_g, sin_g, phi_n) * sin_g,
+                };
+                light * inner
+            };
+            if let (true, Brdf::Lambert { albedo }) = (omni, self.brdf) {
+                // ∫ (A + B cos x)⁺ over the arc, closed form
+                let arc = T::lit(2.0) * (a_n * psi_n + b_n * sin_psi_n);
+                return omni_times(albedo * T::FRAC_1_PI() * arc);
+            }
             let cosine = |phi: T| (fr.n.0 * cos_g + fr.n.1 * sin_g * (phi - phi_n).cos()).max(T::zero());
             let psi_r = if phong { half_arc(fr.r, cos_g, sin_g) } else { T::PI() };
             if !(psi_r > T::zero()) {
@@ -581,15 +599,7 @@ where
                 sum
             };
             if omni {
-                // L_a(γ) sin γ (from the rays' interpolant where there is one) times the inner
-                // integral of the BRDF and the cosine
                 let inner = match (self.brdf, lobe) {
-                    (Brdf::Lambert { albedo }, _) => {
-                        // ∫ (A + B cos x)⁺ over the arc, closed form
-                        let (a, b) = (fr.n.0 * cos_g, fr.n.1 * sin_g);
-                        let arc = T::lit(2.0) * (a * psi_n + b * half_arc_sin(a, b));
-                        albedo * T::FRAC_1_PI() * arc
-                    }
                     (Brdf::Phong { k_s, exponent, .. }, Some(rule)) => {
                         let (normal, mirror) = ((fr.n.0 * cos_g, fr.n.1 * sin_g), (fr.r.0 * cos_g, fr.r.1 * sin_g));
                         let arcs = lobe_arcs(rule, normal, mirror, g - alpha_r, (delta, cos_delta, sin_delta), psi_n, exponent);
@@ -597,12 +607,7 @@ where
                     }
                     _ => inner_sum(&mut |phi| geometric(phi)),
                 };
-                inner_last.set(inner);
-                let light = match source.borrow().as_ref() {
-                    Some(p) => p.at(g),
-                    None => along(cos_g, sin_g, phi_n) * sin_g,
-                };
-                return light * inner;
+                return omni_times(inner);
             }
             let value = match polynomial {
                 Some(p) => {
@@ -723,7 +728,8 @@ where
             *flag = !cuts[..count].iter().zip(&kinds).any(|(&c, &k)| c == edges[i] && k == Cut::Kink);
         }
         let mut mapped = |x: T| {
-            let i = x.floor().to_usize().unwrap_or(0).min(n - 1);
+            // (x ≥ 0: the conversion's truncation is the floor, without a call to it)
+            let i = x.to_usize().unwrap_or(0).min(n - 1);
             let t = x - T::from(i).unwrap_or(T::zero());
             let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
             inner_last.set(T::zero());
@@ -744,7 +750,7 @@ where
         let (first, last) = (lobe_cuts.clone().fold(T::infinity(), T::min), lobe_cuts.fold(-T::infinity(), T::max));
         let coarse = crate::extended::segment_rule(tolerance);
         let rule_of = |a: T, _b: T| {
-            let i = a.floor().to_usize().unwrap_or(0).min(n - 1);
+            let i = a.to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
         if default_path && omni && matches!(self.brdf, Brdf::Lambert { .. }) && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
@@ -796,8 +802,8 @@ const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 
 /// `L_a(γ) sin γ` of a light without an axis on the outer range `[lo, hi]`, interpolated at the
 /// Chebyshev points of the first kind (inside the range: none on the light's direction `γ = 0`,
-/// where `L_a` is infinite; their cosines directly, for the accuracy of the nodes, the series by
-/// `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
+/// where `L_a` is infinite; their cosines directly, for the accuracy of the nodes, the upper half
+/// by symmetry; the series by `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
 /// the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ` term (the ray passing the
 /// light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
 /// (Trefethen, Approximation Theory and Approximation Practice, Thm. 4.2) with the tail summed
@@ -820,7 +826,8 @@ impl<T: Real> RayInterpolant<T> {
         let mut nodes = [T::zero(); MAX_RAY_NODES];
         let m = T::from(count).unwrap_or(T::one());
         for j in 0..count {
-            let tau = (T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).cos();
+            // the upper half by symmetry, cos(π − θ) = −cos θ: half the cosines
+            let tau = if 2 * j >= count { -nodes[count - 1 - j] } else { (T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).cos() };
             let s = (T::one() + tau) * T::lit(0.5);
             let g = lo + width * if squared { s * s } else { s };
             nodes[j] = tau;
