@@ -727,10 +727,14 @@ where
         for (i, flag) in smooth.iter_mut().enumerate().take(n).skip(1) {
             *flag = !cuts[..count].iter().zip(&kinds).any(|(&c, &k)| c == edges[i] && k == Cut::Kink);
         }
+        let mut knots = [T::zero(); 20];
+        for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
+            *k = T::from(i).unwrap_or(T::zero());
+        }
         let mut mapped = |x: T| {
             // (x ≥ 0: the conversion's truncation is the floor, without a call to it)
             let i = x.to_usize().unwrap_or(0).min(n - 1);
-            let t = x - T::from(i).unwrap_or(T::zero());
+            let t = x - knots[i];
             let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
             inner_last.set(T::zero());
             if jacobian > T::zero() {
@@ -739,10 +743,6 @@ where
                 (T::zero(), T::zero())
             }
         };
-        let mut knots = [T::zero(); 20];
-        for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
-            *k = T::from(i).unwrap_or(T::zero());
-        }
         // a smooth piece within a Phong lobe's extent (between its outermost cuts) is a slice of
         // its peak at most 2.5/√n wide (where (cos δ)ⁿ ≈ e^{−nδ²/2}): where a tenth of the value
         // will do, 5 points
