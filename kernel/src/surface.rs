@@ -298,11 +298,7 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
 
 /// [`half_arc_and_sine`]'s `ψ` alone, for the arc of `(cos α, sin α, ·)` at `γ`.
 fn half_arc<T: Real>((cos_a, sin_a, _): (T, T, T), cos_g: T, sin_g: T) -> T {
-    let (a, b) = (cos_a * cos_g, sin_a * sin_g);
-    if b <= a.abs() {
-        return if a > T::zero() { T::PI() } else { T::zero() };
-    }
-    (-a / b).max(-T::one()).min(T::one()).acos()
+    half_arc_and_sine(cos_a * cos_g, sin_a * sin_g).0
 }
 
 impl<T, D, P> SurfaceScene<T, D, P>
@@ -803,9 +799,9 @@ const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 /// `L_a(γ) sin γ` of a light without an axis on the outer range `[lo, hi]`, interpolated at the
 /// Chebyshev points of the first kind (inside the range: none on the light's direction `γ = 0`,
 /// where `L_a` is infinite; their cosines directly, for the accuracy of the nodes, the upper half
-/// by symmetry; the series by `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 + τ)/2` — or its square where
-/// the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ` term (the ray passing the
-/// light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
+/// by symmetry; the series by `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 +
+/// τ)/2` — or its square where the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ`
+/// term (the ray passing the light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
 /// (Trefethen, Approximation Theory and Approximation Practice, Thm. 4.2) with the tail summed
 /// from the last two coefficients, `last`, at the decay they show but at least `M/8` of them (an
 /// algebraic tail's; `∞` where they fall by less than half from the two before).

@@ -207,8 +207,8 @@ fn thin_media_interpolate_the_rays() {
 }
 
 /// A phase function's lobe narrower than `PHASE_LOBE_GAP` allows (the `|g| ≥ 0.9` records of
-/// tests/reference/surface.jsonl lit by a light without an axis) is cut at its extent, so the loosest tolerance reaches the
-/// speed target's level, 1e-3 (the surface bench's pick): uncut, a Lambertian point in
+/// tests/reference/surface.jsonl lit by a light without an axis) is cut at its extent, so the
+/// loosest tolerance reaches the speed target's level, 1e-3 (the surface bench's pick): uncut, a Lambertian point in
 /// `g = 0.95` fog was 4.8e-3 off at tolerance 1e-1 and took 3e-2 (42 rays) to reach it. At most
 /// 28 rays (two pieces of 14 before), f64 and f32.
 #[test]
