@@ -96,6 +96,33 @@ pub enum Route<T> {
     Taken(T),
 }
 
+/// The light's factor of `F` at a rule's nodes, from their `(cos θ, sin θ)`: one ray's
+/// distribution ([`Along`]), or a weighted sum of several rays' that share the panel
+/// (`crate::surface`'s arc of rays about a light's axis).
+pub(crate) trait Emission<T> {
+    /// The factor at each node.
+    fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N];
+}
+
+/// One ray's `D(d_el sin θ + d_c cos θ)`.
+pub(crate) struct Along<'a, T, D> {
+    pub(crate) light: &'a D,
+    pub(crate) d_el: T,
+    pub(crate) d_c: T,
+}
+
+impl<T: Real, D: LightDistribution<T>> Emission<T> for Along<'_, T, D> {
+    #[inline]
+    fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N] {
+        let mut lights = [T::zero(); N];
+        for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
+            *d = self.d_el * s + self.d_c * c;
+        }
+        self.light.eval_each(&mut lights);
+        lights
+    }
+}
+
 /// The whole segment `[t0, t1]` (`h > 0`) by one `N`-node Gauss–Legendre panel in `θ`, cut where
 /// the panels cut a half (`crate::combined::cut_length`), if its estimate meets `control`:
 /// [`Plan::new`], then [`Plan::rule`] without a lobe's condition.
@@ -284,6 +311,56 @@ impl<T: Real> Plan<T> {
         D: LightDistribution<T>,
         P: PhaseFunction<T>,
     {
+        self.rule_of::<D, P, _, N>(g, phys, control, wider, &Along { light: phys.light, d_el: g.d_el, d_c: g.d_c })
+    }
+
+    /// The first try of `N` nodes and the wider rules after it where [`Plan::widens`] (`2N`,
+    /// then `4N`; after 16 only 24: 32 cost f64 more than they saved on four of the five classes
+    /// with an axis, docs/DESIGN.md §4.2), the light sampled by `emission`; and the rules
+    /// tried.
+    #[inline(always)]
+    pub(crate) fn tries<D, P, E, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, emission: &E) -> (Option<T>, usize)
+    where
+        P: PhaseFunction<T>,
+        E: Emission<T>,
+    {
+        let mut tried = 0;
+        match self.rule_of::<D, P, E, N>(g, phys, control, false, emission) {
+            Route::Taken(value) => return (Some(value), 1),
+            Route::Failed => tried += 1,
+            Route::Declined => {}
+        }
+        let wider = |n: usize| match n {
+            8 => self.rule_of::<D, P, E, 8>(g, phys, control, true, emission),
+            12 => self.rule_of::<D, P, E, 12>(g, phys, control, true, emission),
+            16 => self.rule_of::<D, P, E, 16>(g, phys, control, true, emission),
+            24 if N == 16 => self.rule_of::<D, P, E, 24>(g, phys, control, true, emission),
+            32 if N == 8 => self.rule_of::<D, P, E, 32>(g, phys, control, true, emission),
+            _ => Route::Declined,
+        };
+        let counts: &[usize] = if !self.widens(N) {
+            &[]
+        } else if N == 16 {
+            &[24]
+        } else {
+            &[2 * N, 4 * N]
+        };
+        for &n in counts {
+            match wider(n) {
+                Route::Taken(value) => return (Some(value), tried + 1),
+                Route::Failed => tried += 1,
+                Route::Declined => {}
+            }
+        }
+        (None, tried)
+    }
+
+    /// [`Plan::rule`] with the light sampled by `emission`.
+    fn rule_of<D, P, E, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, wider: bool, emission: &E) -> Route<T>
+    where
+        P: PhaseFunction<T>,
+        E: Emission<T>,
+    {
         let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
             return Route::Declined;
         };
@@ -330,7 +407,7 @@ impl<T: Real> Plan<T> {
             return Route::Declined;
         }
         let (phase_rate, rate) = (rate, rate.max(exponential));
-        let (light, h) = (phys.light, g.h);
+        let h = g.h;
 
         // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
         // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then D and P, each for
@@ -364,11 +441,7 @@ impl<T: Real> Plan<T> {
         for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
             *weight = if c > T::zero() { exp_nonpositive(-(big_h * (y - y0)).max(T::zero())) } else { T::zero() };
         }
-        let mut lights = [T::zero(); N];
-        for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
-            *d = g.d_el * s + g.d_c * c;
-        }
-        light.eval_each(&mut lights);
+        let lights = emission.at(&angles);
         // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
         let phases = phys.phase.eval_sides_each(&angles.map(|(_, s)| -s), &sides.map(|(_, plus, _)| plus), &sides.map(|(_, _, minus)| minus));
         let mut samples = [T::zero(); N];

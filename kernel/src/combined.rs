@@ -269,37 +269,14 @@ where
                     Route::Declined => {}
                 }
             }
-            match plan.rule::<D, P, N>(g, phys, &control, false) {
-                Route::Taken(value) => return (value, 1),
-                Route::Failed => tried += 1,
-                Route::Declined => {}
-            }
-            // twice, then four times the nodes, for a light's lobe, the extinction's layer or
-            // the phase function's singularity that N do not resolve (`Plan::widens` and the
-            // plan's predictions decide): that still costs less than the closed-form panels;
-            // after 16 nodes only 24 (32 cost f64 more than they saved on four of the five
-            // classes with an axis, docs/DESIGN.md §4.2)
-            let wider = |n: usize| match n {
-                8 => plan.rule::<D, P, 8>(g, phys, &control, true),
-                12 => plan.rule::<D, P, 12>(g, phys, &control, true),
-                16 => plan.rule::<D, P, 16>(g, phys, &control, true),
-                24 if N == 16 => plan.rule::<D, P, 24>(g, phys, &control, true),
-                32 if N == 8 => plan.rule::<D, P, 32>(g, phys, &control, true),
-                _ => Route::Declined,
-            };
-            let counts: &[usize] = if !plan.widens(N) {
-                &[]
-            } else if N == 16 {
-                &[24]
-            } else {
-                &[2 * N, 4 * N]
-            };
-            for &n in counts {
-                match wider(n) {
-                    Route::Taken(value) => return (value, tried + 1),
-                    Route::Failed => tried += 1,
-                    Route::Declined => {}
-                }
+            // N nodes, then twice and four times as many for a light's lobe, the extinction's
+            // layer or the phase function's singularity that N do not resolve (`Plan::widens`
+            // and the plan's predictions decide): that still costs less than the closed-form
+            // panels
+            let emission = crate::angle::Along { light: phys.light, d_el: g.d_el, d_c: g.d_c };
+            match plan.tries::<D, P, _, N>(g, phys, &control, &emission) {
+                (Some(value), n) => return (value, tried + n),
+                (None, n) => tried += n,
             }
             // the light angle on the part before a backward lobe at the far end, the closed
             // forms on the rest
