@@ -158,8 +158,12 @@ pub(crate) fn chebyshev_lobatto<T: Real>(values: &[T], x: T) -> T {
 /// S_{k+1})`, `S_m = 2 sin(mψ)/m` (`S_0 = 2ψ`), so `c_j = (2/p) ε_j Σ_k ε_k cos(jkπ/p) cos(kδ)
 /// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`. Writes `out[..=p]`, `p ≤ MAX_INTERPOLATED_DEGREE`.
 pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, delta: T, out: &mut [T]) {
-    let s = |m: usize| if m == 0 { psi + psi } else { let m = T::from(m).unwrap_or(T::one()); T::lit(2.0) * (m * psi).sin() / m };
-    let w = |k: usize| a * s(k) + b * T::lit(0.5) * (s(k.abs_diff(1)) + s(k + 1));
+    // S_m for m = 0 … p + 1, each once
+    let mut s = [T::zero(); MAX_INTERPOLATED_DEGREE + 2];
+    for (m, sm) in s.iter_mut().enumerate().take(p + 2) {
+        *sm = if m == 0 { psi + psi } else { let m = T::from(m).unwrap_or(T::one()); T::lit(2.0) * (m * psi).sin() / m };
+    }
+    let w = |k: usize| a * s[k] + b * T::lit(0.5) * (s[k.abs_diff(1)] + s[k + 1]);
     if p == 0 {
         out[0] = w(0);
         return;
@@ -171,11 +175,15 @@ pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, d
     for (k, gk) in g.iter_mut().enumerate().take(p + 1) {
         *gk = half(k) * (T::from(k).unwrap_or(T::zero()) * delta).cos() * w(k);
     }
+    // cos(mπ/p) for m = jk mod 2p, each once
+    let mut cosine = [T::zero(); 2 * MAX_INTERPOLATED_DEGREE];
+    for (m, c) in cosine.iter_mut().enumerate().take(2 * p) {
+        *c = (T::PI() * T::from(m).unwrap_or(T::zero()) / pf).cos();
+    }
     for (j, c) in out.iter_mut().enumerate().take(p + 1) {
         let mut sum = T::zero();
         for (k, &gk) in g.iter().enumerate().take(p + 1) {
-            let angle = T::PI() * T::from((j * k) % (2 * p)).unwrap_or(T::zero()) / pf;
-            sum = sum + angle.cos() * gk;
+            sum = sum + cosine[(j * k) % (2 * p)] * gk;
         }
         *c = T::lit(2.0) / pf * half(j) * sum;
     }
