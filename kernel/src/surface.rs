@@ -15,7 +15,11 @@
 //! * for a light whose distribution is one polynomial of degree `p` in the cosine (`c^p`),
 //!   `L_a` at `γ` is a polynomial of degree `p` in `cos(φ − φ_a)` (`φ_a` the axis's azimuth):
 //!   `p + 1` rays give it exactly ([`MAX_INTERPOLATED_DEGREE`], `chebyshev_lobatto`), and the
-//!   inner integral needs no more; other lights with an axis take a ray at every inner node;
+//!   inner integral needs no more; for a Lambertian point that integral is a weighted sum of
+//!   the rays, which share their panel in the light angle, and on the default path it is taken
+//!   as one ray integral of the weighted sum of their distributions where that route meets the
+//!   rays' tolerance (`SurfaceScene::arc_route`); other lights with an axis take a ray at every
+//!   inner node;
 //! * `(n·ω)⁺ = (A + B cos(φ − φ_n))⁺` with `A = cos γ (n·ℓ)`, `B = sin γ |n − (n·ℓ)ℓ|`: the arc
 //!   of the hemisphere at `γ` is `|φ − φ_n| < ψ = arccos(−A/B)`; it is the whole circle below
 //!   `γ = |π/2 − α_n|` (or empty) and changes kind again at `π − |π/2 − α_n|`, `α_n` the
@@ -443,7 +447,9 @@ where
     /// [`lobe_arcs`], as in the shaders, with the rule of [`LOBE_RULES`] the tolerance allows;
     /// from 5e-2 up, a Lambertian point lit by one in a thin medium takes its rays from an
     /// interpolant of 6 or 12 where that meets the tolerance; a phase function's lobe narrower
-    /// than [`PHASE_LOBE_GAP`] allows is cut at its extent (docs/DESIGN.md §11).
+    /// than [`PHASE_LOBE_GAP`] allows is cut at its extent; a Lambertian point lit by a `c^p`
+    /// beam takes the `p + 1` rays at each outer node as one ray integral where the light angle's
+    /// route passes on it, counted as one (docs/DESIGN.md §11).
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
@@ -460,6 +466,37 @@ where
     /// no rays (Lambert's in closed form) and the outer one is the only loop of rays.
     pub fn air_light_panels_counted<const N: usize>(&self, control: Control<T>, max_panels: usize) -> (T, usize) {
         self.integrate(control.tolerance, max_panels, Some(LOBE_RULE), false, |g, phys| panels_with_nodes::<T, D, P, N>(g, phys, control).0)
+    }
+
+    /// `Σ_j c_j L_a(γ, φ_j)` over the rays at `γ` (cosine and sine given) and `φ_j = φ_a + j·step`
+    /// (`cos(φ_j − φ_a)` the Chebyshev–Lobatto points, `c_j` = `weights`) as one ray integral
+    /// whose light factor is `Σ_j c_j D(c_j(θ))`: the rays share `h`, `x_h` and their ends, so
+    /// their panel in the light angle (`crate::angle`) is one, and `F` is linear in `D`. Taken
+    /// where that panel's first try or its wider rules meet `control` on the sum (its own
+    /// estimate, against the sum's value); `None` where the route declines or fails, a thick
+    /// medium (where each ray would try Gauss–Laguerre in the optical depth first) or the light
+    /// on the ray's line: then the rays one by one.
+    #[allow(clippy::too_many_arguments)]
+    fn arc_route(&self, phys: &Physics<'_, T, D, P>, fr: &Frame<T>, cos_g: T, sin_g: T, (axis_l, axis_a): (T, T), step: T, weights: &[T], control: &Control<T>) -> Option<T> {
+        let h = fr.d * sin_g;
+        let g = Canonical { h, x_h: fr.d * cos_g, d_el: T::zero(), d_c: T::zero(), t0: T::zero(), t1: T::infinity() };
+        let plan = crate::angle::Plan::new(&g, phys, control)?;
+        if plan.thick() {
+            return None;
+        }
+        // each ray's (d_el, d_c) as `integrate`'s `along` forms them, u·a = A cos(jπ/p)
+        let mut rays = [(T::zero(), T::zero(), T::zero()); MAX_INTERPOLATED_DEGREE + 1];
+        for (j, (ray, &weight)) in rays.iter_mut().zip(weights).enumerate() {
+            let axis_u = axis_a * (step * T::from(j).unwrap_or(T::zero())).cos();
+            *ray = (cos_g * axis_l + sin_g * axis_u, cos_g * axis_u - sin_g * axis_l, weight);
+        }
+        let emission = ArcSum { light: phys.light, rays: &rays[..weights.len()] };
+        let value = if T::PANEL_NODES == 16 && !(control.tolerance >= T::lit(crate::scene::FEWER_NODES_FROM)) {
+            plan.tries::<D, P, _, 16>(&g, phys, control, &emission).0
+        } else {
+            plan.tries::<D, P, _, 8>(&g, phys, control, &emission).0
+        };
+        value.filter(|v| v.is_finite())
     }
 
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
@@ -508,6 +545,9 @@ where
         // (the axis's and the mirror direction's angles only where they are used: for a
         // Lambertian point lit by an omni light they were 2–3 % of its instructions)
         let phi_a = if polynomial.is_some() { axis_e2.atan2(axis_e1) } else { T::zero() };
+        let axis_a = axis_e1.hypot(axis_e2);
+        // the default path takes a Lambertian arc's rays about an axis as one (`arc_route`)
+        let arc_control = default_path.then(|| inner_control(tolerance));
         let along = |cos_g: T, sin_g: T, phi: T| {
             rays.set(rays.get() + 1);
             let sin_g = sin_g.max(T::zero());
@@ -618,6 +658,16 @@ where
                     // L_a at φ_j = φ_a + jπ/p, where cos(φ_j − φ_a) are the Chebyshev–Lobatto points
                     let mut values = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
                     let step = if p > 0 { T::PI() / T::from(p).unwrap_or(T::one()) } else { T::zero() };
+                    if let (Brdf::Lambert { albedo }, Some(control)) = (self.brdf, arc_control) {
+                        // the arc's integral Σ_j c_j L_j as one ray integral of Σ_j c_j D(c_j):
+                        // the p + 1 rays share their panel in the light angle, only D differs
+                        let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+                        lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                        if let Some(sum) = self.arc_route(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, &weights[..=p], &control) {
+                            rays.set(rays.get() + 1);
+                            return sum * albedo * T::FRAC_1_PI() * sin_g;
+                        }
+                    }
                     for (j, v) in values.iter_mut().enumerate().take(p + 1) {
                         *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
                     }
@@ -783,6 +833,31 @@ where
         }
         let (value, _) = crate::extended::adaptive_by(rule_of, &mut |x| mapped(x).0, &knots[..=n], tolerance, max_panels);
         (value, rays.get())
+    }
+}
+
+/// The light factor of several rays that share a panel in the light angle, weighted:
+/// `Σ_j w_j D(d_el,j sin θ + d_c,j cos θ)` ([`SurfaceScene::arc_route`]).
+struct ArcSum<'a, T, D> {
+    light: &'a D,
+    /// `(d_el, d_c, w)` of each ray.
+    rays: &'a [(T, T, T)],
+}
+
+impl<T: Real, D: LightDistribution<T>> crate::angle::Emission<T> for ArcSum<'_, T, D> {
+    fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N] {
+        let mut sum = [T::zero(); N];
+        for &(d_el, d_c, w) in self.rays {
+            let mut lights = [T::zero(); N];
+            for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
+                *d = d_el * s + d_c * c;
+            }
+            self.light.eval_each(&mut lights);
+            for (acc, &d) in sum.iter_mut().zip(&lights) {
+                *acc = *acc + w * d;
+            }
+        }
+        sum
     }
 }
 
@@ -1027,6 +1102,59 @@ mod tests {
                 assert!(rays_a < rays_b, "p = {power}: {rays_a} rays against {rays_b}");
             }
         }
+    }
+
+    /// `SurfaceScene::arc_route` against the weighted sum of its rays, each to 1e-12: Lambertian
+    /// points lit by `c^p` beams (p = 2 … 32) in HG fog, thin and thicker, at 40 angles `γ`
+    /// across the hemisphere, each within the route's tolerance (1e-2, 1e-3) of the sum where the
+    /// route is taken, and taken at most of them.
+    #[test]
+    fn arc_route_is_the_weighted_sum_of_its_rays() {
+        use crate::glam::DVec3;
+        use crate::light::TwoLobed;
+        use crate::phase::HenyeyGreenstein;
+        let (mut taken, mut tried, mut worst) = (0, 0, 0.0f64);
+        for (i, power) in [2u32, 4, 8, 16, 32].into_iter().enumerate() {
+            for (sigma_s, sigma_t) in [(0.02, 0.03), (0.2, 0.4)] {
+                let surface = Surface { position: DVec3::new(0.3, -0.2, 0.1), normal: DVec3::new(0.2, 1.0, -0.3 + 0.1 * i as f64) };
+                let light = PointLight { position: DVec3::new(-0.8, 1.4, 0.6 + 0.1 * i as f64), intensity: 20.0, distribution: TwoLobed { axis: DVec3::new(0.6, -0.7 + 0.2 * i as f64, 0.4), power } };
+                let scene = SurfaceScene::new(surface, Brdf::Lambert { albedo: 0.5 }, light, Medium { sigma_s, sigma_t }, HenyeyGreenstein { g: 0.6 }).unwrap();
+                let (fr, phys) = (scene.frame(), Physics::new(&scene.light, &scene.medium, &scene.phase));
+                let axis: [f64; 3] = normalize(scene.light.distribution.axis());
+                let (axis_l, axis_e1, axis_e2): (f64, f64, f64) = (dot(axis, fr.l), dot(axis, fr.e1), dot(axis, fr.e2));
+                let (phi_a, axis_a, p) = (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2), power as usize);
+                let step = core::f64::consts::PI / p as f64;
+                for k in 1..40 {
+                    let g = core::f64::consts::PI * k as f64 / 40.0;
+                    let (sin_g, cos_g) = g.sin_cos();
+                    let (psi_n, _) = half_arc_and_sine(fr.n.0 * cos_g, fr.n.1 * sin_g);
+                    if !(psi_n > 0.0) {
+                        continue;
+                    }
+                    let mut weights = [0.0; MAX_INTERPOLATED_DEGREE + 1];
+                    lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, fr.n.2 - phi_a, &mut weights);
+                    let exact: f64 = (0..=p)
+                        .map(|j| {
+                            let axis_u = axis_a * (step * j as f64).cos();
+                            let ray = Canonical { h: fr.d * sin_g, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c: cos_g * axis_u - sin_g * axis_l, t0: 0.0, t1: f64::INFINITY };
+                            weights[j] * default_panels(&ray, &phys, Control { tolerance: 1e-12, ..crate::default_control() }).0
+                        })
+                        .sum();
+                    for tolerance in [1e-2, 1e-3] {
+                        let control = Control { tolerance, ..crate::default_control() };
+                        tried += 1;
+                        if let Some(sum) = scene.arc_route(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, &weights[..=p], &control) {
+                            let err = (sum - exact).abs() / exact.abs();
+                            worst = worst.max(err / tolerance);
+                            assert!(err <= tolerance, "p = {power}, σt = {sigma_t}, γ = {g}, tolerance {tolerance:e}: {sum:e} against {exact:e} ({err:.1e})");
+                            taken += 1;
+                        }
+                    }
+                }
+            }
+        }
+        std::println!("taken at {taken} of {tried}; largest error {worst:.2} of the tolerance");
+        assert!(2 * taken > tried, "taken at {taken} of {tried}");
     }
 
     /// [`lobe_arcs`] with each rule of [`LOBE_RULES`] against the same integral by adaptive
