@@ -544,8 +544,7 @@ where
         let polynomial = beam.map(|p| p as usize).filter(|&p| p <= MAX_INTERPOLATED_DEGREE);
         // (the axis's and the mirror direction's angles only where they are used: for a
         // Lambertian point lit by an omni light they were 2–3 % of its instructions)
-        let phi_a = if polynomial.is_some() { axis_e2.atan2(axis_e1) } else { T::zero() };
-        let axis_a = axis_e1.hypot(axis_e2);
+        let (phi_a, axis_a) = if polynomial.is_some() { (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2)) } else { (T::zero(), T::zero()) };
         // the default path takes a Lambertian arc's rays about an axis as one (`arc_route`)
         let arc_control = default_path.then(|| inner_control(tolerance));
         let along = |cos_g: T, sin_g: T, phi: T| {
@@ -563,10 +562,13 @@ where
             let g = Canonical { h, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c, t0: T::zero(), t1: T::infinity() };
             ray_integral(&g, &phys)
         };
-        let direction = |cos_g: T, sin_g: T, phi: T| {
-            let (s, c) = phi.sin_cos();
-            core::array::from_fn(|i| cos_g * fr.l[i] + sin_g * (c * fr.e1[i] + s * fr.e2[i]))
-        };
+        // ω at (γ, φ) from the sines and cosines of both
+        let direction = |cos_g: T, sin_g: T, (s, c): (T, T)| core::array::from_fn(|i| cos_g * fr.l[i] + sin_g * (c * fr.e1[i] + s * fr.e2[i]));
+        // φ_n's and φ_a's sines and cosines, so that a numerical inner integral takes
+        // cos(φ − φ_n) and cos(φ − φ_a) from φ's own (one sin_cos a node instead of two cosines
+        // more)
+        let numerical = phong || !omni;
+        let ((sin_n, cos_n), (sin_a, cos_a)) = if numerical { (fr.n.2.sin_cos(), phi_a.sin_cos()) } else { ((T::zero(), T::one()), (T::zero(), T::one())) };
         // the mirror direction's angle from ℓ and Δ = φ_n − φ_r with its cosine and sine, the
         // same at every outer node
         let alpha_r = if phong { fr.r.1.atan2(fr.r.0) } else { T::zero() };
@@ -601,7 +603,7 @@ where
                 let arc = T::lit(2.0) * (a_n * psi_n + b_n * sin_psi_n);
                 return omni_times(albedo * T::FRAC_1_PI() * arc);
             }
-            let cosine = |phi: T| (fr.n.0 * cos_g + fr.n.1 * sin_g * (phi - phi_n).cos()).max(T::zero());
+            let cosine = |(s, c): (T, T)| (fr.n.0 * cos_g + fr.n.1 * sin_g * (c * cos_n + s * sin_n)).max(T::zero());
             let psi_r = if phong { half_arc(fr.r, cos_g, sin_g) } else { T::PI() };
             if !(psi_r > T::zero()) {
                 return T::zero();
@@ -630,7 +632,8 @@ where
             };
             // f_r (n·ω)⁺ at φ: its sign is constant between the edges, so a panel where it
             // vanishes at the middle is skipped
-            let geometric = |phi: T| cosine(phi) * self.brdf_at(&fr, direction(cos_g, sin_g, phi));
+            let geometric_at = |sc: (T, T)| cosine(sc) * self.brdf_at(&fr, direction(cos_g, sin_g, sc));
+            let geometric = |phi: T| geometric_at(phi.sin_cos());
             let inner_sum = |f: &mut dyn FnMut(T) -> T| -> T {
                 let mut sum = T::zero();
                 for pair in circle().windows(2) {
@@ -658,11 +661,18 @@ where
                     // L_a at φ_j = φ_a + jπ/p, where cos(φ_j − φ_a) are the Chebyshev–Lobatto points
                     let mut values = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
                     let step = if p > 0 { T::PI() / T::from(p).unwrap_or(T::one()) } else { T::zero() };
-                    if let (Brdf::Lambert { albedo }, Some(control)) = (self.brdf, arc_control) {
-                        // the arc's integral Σ_j c_j L_j as one ray integral of Σ_j c_j D(c_j):
-                        // the p + 1 rays share their panel in the light angle, only D differs
-                        let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
-                        lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                    // a Lambertian arc's integral in closed form, Σ_j c_j L_j (lambert_chebyshev_weights)
+                    let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+                    let lambert = match self.brdf {
+                        Brdf::Lambert { albedo } => {
+                            lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                            Some(albedo)
+                        }
+                        Brdf::Phong { .. } => None,
+                    };
+                    if let (Some(albedo), Some(control)) = (lambert, arc_control) {
+                        // as one ray integral of Σ_j c_j D(c_j): the p + 1 rays share their panel
+                        // in the light angle, only D differs
                         if let Some(sum) = self.arc_route(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, &weights[..=p], &control) {
                             rays.set(rays.get() + 1);
                             return sum * albedo * T::FRAC_1_PI() * sin_g;
@@ -672,17 +682,15 @@ where
                         *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
                     }
                     let values = &values[..=p];
-                    if let Brdf::Lambert { albedo } = self.brdf {
-                        // the arc's integral in closed form (lambert_chebyshev_weights)
-                        let mut weights = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
-                        lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, phi_n - phi_a, &mut weights);
+                    if let Some(albedo) = lambert {
                         let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
                         return sum * albedo * T::FRAC_1_PI() * sin_g;
                     }
                     inner_sum(&mut |phi| {
-                        let f = geometric(phi);
+                        let (s, c) = phi.sin_cos();
+                        let f = geometric_at((s, c));
                         if f > T::zero() {
-                            f * chebyshev_lobatto(values, (phi - phi_a).cos())
+                            f * chebyshev_lobatto(values, c * cos_a + s * sin_a)
                         } else {
                             T::zero()
                         }
