@@ -114,13 +114,19 @@ pub(crate) struct Along<'a, T, D> {
 impl<T: Real, D: LightDistribution<T>> Emission<T> for Along<'_, T, D> {
     #[inline]
     fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N] {
-        let mut lights = [T::zero(); N];
-        for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
-            *d = self.d_el * s + self.d_c * c;
-        }
-        self.light.eval_each(&mut lights);
-        lights
+        along(self.light, self.d_el, self.d_c, angles)
     }
+}
+
+/// `D(d_el sin θ + d_c cos θ)` at each of the nodes `(cos θ, sin θ)`.
+#[inline]
+fn along<T: Real, D: LightDistribution<T>, const N: usize>(light: &D, d_el: T, d_c: T, angles: &[(T, T); N]) -> [T; N] {
+    let mut lights = [T::zero(); N];
+    for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
+        *d = d_el * s + d_c * c;
+    }
+    light.eval_each(&mut lights);
+    lights
 }
 
 /// The whole segment `[t0, t1]` (`h > 0`) by one `N`-node Gauss–Legendre panel in `θ`, cut where
@@ -317,27 +323,36 @@ impl<T: Real> Plan<T> {
     /// The first try of `N` nodes and the wider rules after it where [`Plan::widens`] (`2N`,
     /// then `4N`; after 16 only 24: 32 cost f64 more than they saved on four of the five classes
     /// with an axis, docs/DESIGN.md §4.2), the light sampled by `emission`; and the rules
-    /// tried.
+    /// sampled.
     #[inline(always)]
     pub(crate) fn tries<D, P, E, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, emission: &E) -> (Option<T>, usize)
     where
         P: PhaseFunction<T>,
         E: Emission<T>,
     {
-        let mut tried = 0;
-        match self.rule_of::<D, P, E, N>(g, phys, control, false, emission) {
-            Route::Taken(value) => return (Some(value), 1),
-            Route::Failed => tried += 1,
-            Route::Declined => {}
-        }
-        let wider = |n: usize| match n {
-            8 => self.rule_of::<D, P, E, 8>(g, phys, control, true, emission),
-            12 => self.rule_of::<D, P, E, 12>(g, phys, control, true, emission),
-            16 => self.rule_of::<D, P, E, 16>(g, phys, control, true, emission),
-            24 if N == 16 => self.rule_of::<D, P, E, 24>(g, phys, control, true, emission),
-            32 if N == 8 => self.rule_of::<D, P, E, 32>(g, phys, control, true, emission),
-            _ => Route::Declined,
-        };
+        let mut one = One { plan: self, g, phys, control, emission, value: None };
+        let tried = self.sequence::<_, N>(&mut one);
+        (one.value, tried)
+    }
+
+    /// [`Plan::tries`] for several rays that share this panel (`h`, `x_h`, the ends), `(d_el,
+    /// d_c)` each, on the rules' shared samples (the nodes, the extinction's weights, `P`), each
+    /// ray judged on its own estimate: `out[k]` is ray `k`'s value where a rule passed on it,
+    /// else left `None` (`out` as long as `rays`). The rules sampled.
+    pub(crate) fn tries_each<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, rays: &[(T, T)], out: &mut [Option<T>]) -> usize
+    where
+        D: LightDistribution<T>,
+        P: PhaseFunction<T>,
+    {
+        self.sequence::<_, N>(&mut Each { plan: self, g, phys, control, rays, out })
+    }
+
+    /// The first rule of `N` nodes, then the wider ones (module docs), until `rules` has its
+    /// values; the rules sampled.
+    #[inline(always)]
+    fn sequence<R: Rules, const N: usize>(&self, rules: &mut R) -> usize {
+        let (sampled, mut done) = rules.run::<N>(false);
+        let mut tried = usize::from(sampled);
         let counts: &[usize] = if !self.widens(N) {
             &[]
         } else if N == 16 {
@@ -346,13 +361,21 @@ impl<T: Real> Plan<T> {
             &[2 * N, 4 * N]
         };
         for &n in counts {
-            match wider(n) {
-                Route::Taken(value) => return (Some(value), tried + 1),
-                Route::Failed => tried += 1,
-                Route::Declined => {}
+            if done {
+                break;
             }
+            let (sampled, now) = match n {
+                8 => rules.run::<8>(true),
+                12 => rules.run::<12>(true),
+                16 => rules.run::<16>(true),
+                24 if N == 16 => rules.run::<24>(true),
+                32 if N == 8 => rules.run::<32>(true),
+                _ => (false, false),
+            };
+            tried += usize::from(sampled);
+            done = now;
         }
-        (None, tried)
+        tried
     }
 
     /// [`Plan::rule`] with the light sampled by `emission`.
@@ -361,8 +384,44 @@ impl<T: Real> Plan<T> {
         P: PhaseFunction<T>,
         E: Emission<T>,
     {
+        let judged = self.sampled::<D, P, _, N>(g, phys, control, wider, |shared| {
+            let lights = emission.at(&shared.angles);
+            shared.judge(phys, control, &lights, &shared.phases, &mut None)
+        });
+        match judged {
+            None => Route::Declined,
+            Some(value) => value.map_or(Route::Failed, Route::Taken),
+        }
+    }
+
+    /// The rule of `N` nodes for each ray of `rays` whose `out` is `None`, on shared samples;
+    /// whether it was sampled (`false`: declined before any sample).
+    fn rule_each<D, P, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, wider: bool, rays: &[(T, T)], out: &mut [Option<T>]) -> bool
+    where
+        D: LightDistribution<T>,
+        P: PhaseFunction<T>,
+    {
+        self.sampled::<D, P, _, N>(g, phys, control, wider, |shared| {
+            let mut model = None;
+            for (&(d_el, d_c), slot) in rays.iter().zip(out.iter_mut()) {
+                if slot.is_none() {
+                    *slot = shared.judge(phys, control, &along(phys.light, d_el, d_c, &shared.angles), &shared.phases, &mut model);
+                }
+            }
+        })
+        .is_some()
+    }
+
+    /// The predictions of an `N`-node rule (`None` where one declines it), then `judge` on the
+    /// samples every ray on the panel shares: the nodes' angles, the extinction's weights and
+    /// `P`.
+    #[inline(always)]
+    fn sampled<D, P, R, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, wider: bool, judge: impl FnOnce(&Shared<T, N>) -> R) -> Option<R>
+    where
+        P: PhaseFunction<T>,
+    {
         let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
-            return Route::Declined;
+            return None;
         };
         let Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order, exponential, .. } = *self;
         let tolerance = control.tolerance;
@@ -377,7 +436,7 @@ impl<T: Real> Plan<T> {
         let singular_rate = order_step(order, N) * phase;
         let rate = if wider { lambda } else { lambda + lobe };
         if !(predicted_coefficient(rate, N) <= tolerance) && (wider || !(predicted_estimate::<T, N>(rate, singular_rate, exponential) <= tolerance)) {
-            return Route::Declined;
+            return None;
         }
         // the lobe e^{−p·hw²ξ²/2} as a Bessel function's terms, z = p·hw²/4: the estimate adds
         // two coefficients, each about its degree-(2N − m) one (m = ALIASING_MARGIN),
@@ -387,7 +446,7 @@ impl<T: Real> Plan<T> {
         let z = lobe * lobe * T::lit(0.25);
         if z > T::zero() && (wider || predicted_coefficient(lobe, N) * T::lit(gaussian_over_rate(N)) > tolerance) {
             if !(gaussian_prediction(z, N) <= tolerance) {
-                return Route::Declined;
+                return None;
             }
         }
         // The singularities': ρ^{−N} of the nearest (`Plan::phase`), with its order's step as
@@ -395,7 +454,7 @@ impl<T: Real> Plan<T> {
         // e^{−HY}, which is analytic inside the ellipse through it).
         let rate = singular_rate;
         if !(power(rate, N) <= tolerance) {
-            return Route::Declined;
+            return None;
         }
         // Without an axis a wider rule serves the phase function's peak; it declines where Y's
         // pole lies so close past the panel's end that N nodes do not resolve it (ρ^N < e, the
@@ -404,10 +463,9 @@ impl<T: Real> Plan<T> {
         // misses it (a near_light ray of tests/reference/classes.jsonl: 2.4e-5 off at 32 nodes
         // with an estimate of 8.3e-7).
         if wider && !(z > T::zero()) && !(power(exponential, N) <= T::lit(core::f64::consts::E.recip())) {
-            return Route::Declined;
+            return None;
         }
         let (phase_rate, rate) = (rate, rate.max(exponential));
-        let h = g.h;
 
         // The samples, in the order `legendre` expects (−x_1, x_1, −x_2, …), in passes — the
         // nodes' cos θ and sin θ, then Y and 1 ± sin θ, then the weights, then D and P, each for
@@ -441,9 +499,40 @@ impl<T: Real> Plan<T> {
         for ((&(c, _), &(y, _, _)), weight) in angles.iter().zip(sides.iter()).zip(weights.iter_mut()) {
             *weight = if c > T::zero() { exp_nonpositive(-(big_h * (y - y0)).max(T::zero())) } else { T::zero() };
         }
-        let lights = emission.at(&angles);
         // μ = −sin θ: 1 − μ = 1 + sin θ, 1 + μ = 1 − sin θ
         let phases = phys.phase.eval_sides_each(&angles.map(|(_, s)| -s), &sides.map(|(_, plus, _)| plus), &sides.map(|(_, _, minus)| minus));
+        Some(judge(&Shared { rule, angles, phases, weights, rate, phase_rate, z, exponential, wider, tolerance, h: g.h, u0, hw }))
+    }
+}
+
+/// What the rays on one panel share at a rule of `N` nodes ([`Plan::rule`]'s samples but `D`).
+struct Shared<T, const N: usize> {
+    rule: &'static [(f64, f64)],
+    /// `(cos θ, sin θ)` at the nodes.
+    angles: [(T, T); N],
+    /// `P(−sin θ)` at the nodes.
+    phases: [T; N],
+    /// `e^{−H(Y − Y0)}` at the nodes.
+    weights: [T; N],
+    /// The estimate's rate, the phase function's alone, the lobe's `z` and the exponential's.
+    rate: T,
+    phase_rate: T,
+    z: T,
+    exponential: T,
+    wider: bool,
+    tolerance: T,
+    h: T,
+    u0: T,
+    hw: T,
+}
+
+impl<T: Real, const N: usize> Shared<T, N> {
+    /// One ray's value from its `D` at the nodes, where its estimate meets the target; `model`
+    /// keeps a wider rule's lobe model and the weight's tail, the same for every ray, once
+    /// formed.
+    #[inline(always)]
+    fn judge<D, P>(&self, phys: &Physics<'_, T, D, P>, control: &Control<T>, lights: &[T; N], phases: &[T; N], model: &mut Option<(T, T)>) -> Option<T> {
+        let Shared { rule, weights, rate, phase_rate, z, exponential, wider, tolerance, h, u0, hw, .. } = *self;
         let mut samples = [T::zero(); N];
         let (mut value, mut mass, mut f_max) = (T::zero(), T::zero(), T::zero());
         for (i, sample) in samples.iter_mut().enumerate() {
@@ -483,21 +572,75 @@ impl<T: Real> Plan<T> {
             // coefficients, times F's largest sample, not on the lobe's (module docs).
             // (without an axis, no lobe: the ordinary estimate stands)
             if !(wider && rate < T::one() && z > T::zero()) {
-                return Route::Failed;
+                return None;
             }
-            let lobe_factor = lobe_decay::<T>(z, N).max(power(phase_rate, N + 1 - ALIASING_MARGIN));
-            let cw = legendre_from::<T, N>(&weights, N - 4);
-            let extinction = T::lit(2.0) * tail_estimate::<T, N>(&cw) * unit_weight_factor::<T, N>(&cw, exponential) * f_max;
-            let error = (T::lit(2.0) * last * lobe_factor + extinction).min(error);
+            let (lobe_factor, weight_tail) = match *model {
+                Some(known) => known,
+                None => {
+                    let cw = legendre_from::<T, N>(&weights, N - 4);
+                    *model.insert((lobe_decay::<T>(z, N).max(power(phase_rate, N + 1 - ALIASING_MARGIN)), T::lit(2.0) * tail_estimate::<T, N>(&cw) * unit_weight_factor::<T, N>(&cw, exponential)))
+                }
+            };
+            let error = (T::lit(2.0) * last * lobe_factor + weight_tail * f_max).min(error);
             if !(error <= target || error <= noise) {
-                return Route::Failed;
+                return None;
             }
         }
         // (σs I/h) e^{−σt r0} ∫ as the halves form it: no ∞·0 where σs I/h overflows, and without
         // extinction the exponent 0, not 0·∞ where r0 overflows
         let x = if phys.sigma_t > T::zero() { phys.sigma_t * (h * hypot1(u0)) } else { T::zero() };
-        Route::Taken(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
+        Some(weighted(phys.sigma_s, phys.intensity, h, x, value * hw * T::lit(0.5)))
     }
+}
+
+/// A sequence of rules on one panel ([`Plan::sequence`]).
+trait Rules {
+    /// The rule of `N` nodes: whether it was sampled, and whether every value is now known.
+    fn run<const N: usize>(&mut self, wider: bool) -> (bool, bool);
+}
+
+/// One ray's rules, its light sampled by an [`Emission`].
+struct One<'a, T, D, P, E> {
+    plan: &'a Plan<T>,
+    g: &'a Canonical<T>,
+    phys: &'a Physics<'a, T, D, P>,
+    control: &'a Control<T>,
+    emission: &'a E,
+    value: Option<T>,
+}
+
+impl<T: Real, D, P: PhaseFunction<T>, E: Emission<T>> Rules for One<'_, T, D, P, E> {
+    #[inline(always)]
+    fn run<const N: usize>(&mut self, wider: bool) -> (bool, bool) {
+        match self.plan.rule_of::<D, P, E, N>(self.g, self.phys, self.control, wider, self.emission) {
+            Route::Taken(value) => {
+                self.value = Some(value);
+                (true, true)
+            }
+            Route::Failed => (true, false),
+            Route::Declined => (false, false),
+        }
+    }
+}
+
+/// Several rays' rules ([`Plan::tries_each`]).
+struct Each<'a, T, D, P> {
+    plan: &'a Plan<T>,
+    g: &'a Canonical<T>,
+    phys: &'a Physics<'a, T, D, P>,
+    control: &'a Control<T>,
+    rays: &'a [(T, T)],
+    out: &'a mut [Option<T>],
+}
+
+impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Rules for Each<'_, T, D, P> {
+    fn run<const N: usize>(&mut self, wider: bool) -> (bool, bool) {
+        let sampled = self.plan.rule_each::<D, P, N>(self.g, self.phys, self.control, wider, self.rays, self.out);
+        (sampled, self.out.iter().all(Option::is_some))
+    }
+}
+
+impl<T: Real> Plan<T> {
 }
 
 /// The lobe `c^p ≈ e^{−p·hw²ξ²/2}`'s coefficients from the degree the estimate reads, `N − 1`, to

@@ -18,7 +18,7 @@
 //!   inner integral needs no more; for a Lambertian point that integral is a weighted sum of
 //!   the rays, which share their panel in the light angle, and on the default path it is taken
 //!   as one ray integral of the weighted sum of their distributions where that route meets the
-//!   rays' tolerance (`SurfaceScene::arc_route`); other lights with an axis take a ray at every
+//!   rays' tolerance (`SurfaceScene::arc_sum`); other lights with an axis take a ray at every
 //!   inner node;
 //! * `(n·ω)⁺ = (A + B cos(φ − φ_n))⁺` with `A = cos γ (n·ℓ)`, `B = sin γ |n − (n·ℓ)ℓ|`: the arc
 //!   of the hemisphere at `γ` is `|φ − φ_n| < ψ = arccos(−A/B)`; it is the whole circle below
@@ -468,35 +468,50 @@ where
         self.integrate(control.tolerance, max_panels, Some(LOBE_RULE), false, |g, phys| panels_with_nodes::<T, D, P, N>(g, phys, control).0)
     }
 
-    /// `Σ_j c_j L_a(γ, φ_j)` over the rays at `γ` (cosine and sine given) and `φ_j = φ_a + j·step`
-    /// (`cos(φ_j − φ_a)` the Chebyshev–Lobatto points, `c_j` = `weights`) as one ray integral
-    /// whose light factor is `Σ_j c_j D(c_j(θ))`: the rays share `h`, `x_h` and their ends, so
-    /// their panel in the light angle (`crate::angle`) is one, and `F` is linear in `D`. Taken
-    /// where that panel's first try or its wider rules meet `control` on the sum (its own
-    /// estimate, against the sum's value); `None` where the route declines or fails, a thick
-    /// medium (where each ray would try Gauss–Laguerre in the optical depth first) or the light
-    /// on the ray's line: then the rays one by one.
+    /// The `p + 1` rays at `γ` (cosine and sine given) and `φ_j = φ_a + j·step` (`cos(φ_j − φ_a)`
+    /// the Chebyshev–Lobatto points) on their shared panel in the light angle (`crate::angle`):
+    /// they share `h`, `x_h` and their ends, only `D` differs. The panel's plan, the rays'
+    /// canonical form with `(d_el, d_c)` left 0, and each ray's `(d_el, d_c)` as `integrate`'s
+    /// `along` forms them (`u·a = A cos(jπ/p)`); `None` where the route cannot be taken (the
+    /// light on the rays' line) or a thick medium, where each ray tries Gauss–Laguerre in the
+    /// optical depth first.
     #[allow(clippy::too_many_arguments)]
-    fn arc_route(&self, phys: &Physics<'_, T, D, P>, fr: &Frame<T>, cos_g: T, sin_g: T, (axis_l, axis_a): (T, T), step: T, weights: &[T], control: &Control<T>) -> Option<T> {
-        let h = fr.d * sin_g;
-        let g = Canonical { h, x_h: fr.d * cos_g, d_el: T::zero(), d_c: T::zero(), t0: T::zero(), t1: T::infinity() };
+    fn arc(&self, phys: &Physics<'_, T, D, P>, fr: &Frame<T>, cos_g: T, sin_g: T, (axis_l, axis_a): (T, T), step: T, p: usize, control: &Control<T>) -> Option<Arc<T>> {
+        let g = Canonical { h: fr.d * sin_g, x_h: fr.d * cos_g, d_el: T::zero(), d_c: T::zero(), t0: T::zero(), t1: T::infinity() };
         let plan = crate::angle::Plan::new(&g, phys, control)?;
         if plan.thick() {
             return None;
         }
-        // each ray's (d_el, d_c) as `integrate`'s `along` forms them, u·a = A cos(jπ/p)
-        let mut rays = [(T::zero(), T::zero(), T::zero()); MAX_INTERPOLATED_DEGREE + 1];
-        for (j, (ray, &weight)) in rays.iter_mut().zip(weights).enumerate() {
+        let mut rays = [(T::zero(), T::zero()); MAX_INTERPOLATED_DEGREE + 1];
+        for (j, ray) in rays.iter_mut().enumerate().take(p + 1) {
             let axis_u = axis_a * (step * T::from(j).unwrap_or(T::zero())).cos();
-            *ray = (cos_g * axis_l + sin_g * axis_u, cos_g * axis_u - sin_g * axis_l, weight);
+            *ray = (cos_g * axis_l + sin_g * axis_u, cos_g * axis_u - sin_g * axis_l);
         }
-        let emission = ArcSum { light: phys.light, rays: &rays[..weights.len()] };
-        let value = if T::PANEL_NODES == 16 && !(control.tolerance >= T::lit(crate::scene::FEWER_NODES_FROM)) {
-            plan.tries::<D, P, _, 16>(&g, phys, control, &emission).0
-        } else {
-            plan.tries::<D, P, _, 8>(&g, phys, control, &emission).0
-        };
+        Some(Arc { plan, g, rays, sixteen: T::PANEL_NODES == 16 && !(control.tolerance >= T::lit(crate::scene::FEWER_NODES_FROM)) })
+    }
+
+    /// `Σ_j c_j L_a(γ, φ_j)` over an [`Arc`]'s rays (`c_j` = `weights`) as one ray integral whose
+    /// light factor is `Σ_j c_j D(c_j(θ))` (`F` is linear in `D`): taken where the panel's first
+    /// try or its wider rules meet `control` on the sum (its own estimate, against the sum's
+    /// value); else `None`, and the rays one by one.
+    fn arc_sum(&self, phys: &Physics<'_, T, D, P>, arc: &Arc<T>, weights: &[T], control: &Control<T>) -> Option<T> {
+        let emission = ArcSum { light: phys.light, rays: &arc.rays[..weights.len()], weights };
+        let value = if arc.sixteen { arc.plan.tries::<D, P, _, 16>(&arc.g, phys, control, &emission).0 } else { arc.plan.tries::<D, P, _, 8>(&arc.g, phys, control, &emission).0 };
         value.filter(|v| v.is_finite())
+    }
+
+    /// Each of an [`Arc`]'s rays on the panel's shared samples (`Plan::tries_each`): `out[j]`
+    /// where a rule meets `control` on ray `j` (its own estimate), else `None`.
+    fn arc_rays(&self, phys: &Physics<'_, T, D, P>, arc: &Arc<T>, control: &Control<T>, out: &mut [Option<T>]) {
+        let rays = &arc.rays[..out.len()];
+        if arc.sixteen {
+            arc.plan.tries_each::<D, P, 16>(&arc.g, phys, control, rays, out);
+        } else {
+            arc.plan.tries_each::<D, P, 8>(&arc.g, phys, control, rays, out);
+        }
+        for v in out.iter_mut() {
+            *v = v.filter(|x| x.is_finite());
+        }
     }
 
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
@@ -545,7 +560,7 @@ where
         // (the axis's and the mirror direction's angles only where they are used: for a
         // Lambertian point lit by an omni light they were 2–3 % of its instructions)
         let (phi_a, axis_a) = if polynomial.is_some() { (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2)) } else { (T::zero(), T::zero()) };
-        // the default path takes a Lambertian arc's rays about an axis as one (`arc_route`)
+        // the default path takes a Lambertian arc's rays about an axis as one (`arc_sum`)
         let arc_control = default_path.then(|| inner_control(tolerance));
         let along = |cos_g: T, sin_g: T, phi: T| {
             rays.set(rays.get() + 1);
@@ -670,16 +685,31 @@ where
                         }
                         Brdf::Phong { .. } => None,
                     };
-                    if let (Some(albedo), Some(control)) = (lambert, arc_control) {
-                        // as one ray integral of Σ_j c_j D(c_j): the p + 1 rays share their panel
-                        // in the light angle, only D differs
-                        if let Some(sum) = self.arc_route(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, &weights[..=p], &control) {
-                            rays.set(rays.get() + 1);
-                            return sum * albedo * T::FRAC_1_PI() * sin_g;
+                    // the p + 1 rays share their panel in the light angle, only D differs (`arc`): a
+                    // Lambertian arc's sum as one ray integral of Σ_j c_j D(c_j), a Phong arc's rays
+                    // on the panel's shared samples, the rest one by one
+                    let mut known = [None; MAX_INTERPOLATED_DEGREE + 1];
+                    if let Some(control) = arc_control {
+                        if let Some(arc) = self.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control) {
+                            match lambert {
+                                Some(albedo) => {
+                                    if let Some(sum) = self.arc_sum(&phys, &arc, &weights[..=p], &control) {
+                                        rays.set(rays.get() + 1);
+                                        return sum * albedo * T::FRAC_1_PI() * sin_g;
+                                    }
+                                }
+                                None => {
+                                    self.arc_rays(&phys, &arc, &control, &mut known[..=p]);
+                                    rays.set(rays.get() + known.iter().flatten().count());
+                                }
+                            }
                         }
                     }
                     for (j, v) in values.iter_mut().enumerate().take(p + 1) {
-                        *v = along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero()));
+                        *v = match known[j] {
+                            Some(value) => value,
+                            None => along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero())),
+                        };
                     }
                     let values = &values[..=p];
                     if let Some(albedo) = lambert {
@@ -845,17 +875,31 @@ where
 }
 
 /// The light factor of several rays that share a panel in the light angle, weighted:
-/// `Σ_j w_j D(d_el,j sin θ + d_c,j cos θ)` ([`SurfaceScene::arc_route`]).
+/// `Σ_j w_j D(d_el,j sin θ + d_c,j cos θ)` ([`SurfaceScene::arc_sum`]).
 struct ArcSum<'a, T, D> {
     light: &'a D,
-    /// `(d_el, d_c, w)` of each ray.
-    rays: &'a [(T, T, T)],
+    /// `(d_el, d_c)` of each ray.
+    rays: &'a [(T, T)],
+    /// `w` of each ray.
+    weights: &'a [T],
+}
+
+/// A surface point's rays about a light's axis at one `γ`, on their shared panel in the light
+/// angle ([`SurfaceScene::arc`]).
+struct Arc<T> {
+    plan: crate::angle::Plan<T>,
+    /// Their canonical form, `(d_el, d_c)` left 0.
+    g: Canonical<T>,
+    /// Each ray's `(d_el, d_c)`.
+    rays: [(T, T); MAX_INTERPOLATED_DEGREE + 1],
+    /// The rules start at 16 nodes, as `default_panels` takes its rays (else 8).
+    sixteen: bool,
 }
 
 impl<T: Real, D: LightDistribution<T>> crate::angle::Emission<T> for ArcSum<'_, T, D> {
     fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N] {
         let mut sum = [T::zero(); N];
-        for &(d_el, d_c, w) in self.rays {
+        for (&(d_el, d_c), &w) in self.rays.iter().zip(self.weights) {
             let mut lights = [T::zero(); N];
             for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
                 *d = d_el * s + d_c * c;
@@ -1112,16 +1156,19 @@ mod tests {
         }
     }
 
-    /// `SurfaceScene::arc_route` against the weighted sum of its rays, each to 1e-12: Lambertian
-    /// points lit by `c^p` beams (p = 2 … 32) in HG fog, thin and thicker, at 40 angles `γ`
-    /// across the hemisphere, each within the route's tolerance (1e-2, 1e-3) of the sum where the
-    /// route is taken, and taken at most of them.
+    /// An arc of rays about a beam's axis on its shared panel (`SurfaceScene::arc`) against the
+    /// rays one by one, each to 1e-12: Lambertian points lit by `c^p` beams (p = 2 … 32) in HG
+    /// fog, thin and thicker, at 40 angles `γ` across the hemisphere, at tolerances 1e-2 and
+    /// 1e-3. `arc_sum` within the tolerance of the rays' weighted sum where it is taken, and
+    /// taken at most nodes; `arc_rays` within it of each ray where a rule passed on that ray,
+    /// and passed on most of them.
     #[test]
-    fn arc_route_is_the_weighted_sum_of_its_rays() {
+    fn arcs_of_rays_match_the_rays_one_by_one() {
         use crate::glam::DVec3;
         use crate::light::TwoLobed;
         use crate::phase::HenyeyGreenstein;
         let (mut taken, mut tried, mut worst) = (0, 0, 0.0f64);
+        let (mut rays_taken, mut rays_tried, mut rays_worst) = (0, 0, 0.0f64);
         for (i, power) in [2u32, 4, 8, 16, 32].into_iter().enumerate() {
             for (sigma_s, sigma_t) in [(0.02, 0.03), (0.2, 0.4)] {
                 let surface = Surface { position: DVec3::new(0.3, -0.2, 0.1), normal: DVec3::new(0.2, 1.0, -0.3 + 0.1 * i as f64) };
@@ -1141,28 +1188,43 @@ mod tests {
                     }
                     let mut weights = [0.0; MAX_INTERPOLATED_DEGREE + 1];
                     lambert_chebyshev_weights(p, fr.n.0 * cos_g, fr.n.1 * sin_g, psi_n, fr.n.2 - phi_a, &mut weights);
-                    let exact: f64 = (0..=p)
+                    let each: std::vec::Vec<f64> = (0..=p)
                         .map(|j| {
                             let axis_u = axis_a * (step * j as f64).cos();
                             let ray = Canonical { h: fr.d * sin_g, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c: cos_g * axis_u - sin_g * axis_l, t0: 0.0, t1: f64::INFINITY };
-                            weights[j] * default_panels(&ray, &phys, Control { tolerance: 1e-12, ..crate::default_control() }).0
+                            default_panels(&ray, &phys, Control { tolerance: 1e-12, ..crate::default_control() }).0
                         })
-                        .sum();
+                        .collect();
+                    let exact: f64 = each.iter().zip(&weights).map(|(l, c)| l * c).sum();
                     for tolerance in [1e-2, 1e-3] {
                         let control = Control { tolerance, ..crate::default_control() };
                         tried += 1;
-                        if let Some(sum) = scene.arc_route(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, &weights[..=p], &control) {
+                        if let Some(sum) = scene.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control).and_then(|arc| scene.arc_sum(&phys, &arc, &weights[..=p], &control)) {
                             let err = (sum - exact).abs() / exact.abs();
                             worst = worst.max(err / tolerance);
                             assert!(err <= tolerance, "p = {power}, σt = {sigma_t}, γ = {g}, tolerance {tolerance:e}: {sum:e} against {exact:e} ({err:.1e})");
                             taken += 1;
                         }
+                        let mut out = [None; MAX_INTERPOLATED_DEGREE + 1];
+                        if let Some(arc) = scene.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control) {
+                            scene.arc_rays(&phys, &arc, &control, &mut out[..=p]);
+                        }
+                        for (j, (value, exact)) in out.iter().zip(&each).enumerate() {
+                            rays_tried += 1;
+                            if let Some(value) = value {
+                                let err = (value - exact).abs() / exact.abs();
+                                rays_worst = rays_worst.max(err / tolerance);
+                                assert!(err <= tolerance, "p = {power}, σt = {sigma_t}, γ = {g}, ray {j}, tolerance {tolerance:e}: {value:e} against {exact:e} ({err:.1e})");
+                                rays_taken += 1;
+                            }
+                        }
                     }
                 }
             }
         }
-        std::println!("taken at {taken} of {tried}; largest error {worst:.2} of the tolerance");
-        assert!(2 * taken > tried, "taken at {taken} of {tried}");
+        std::println!("the sum taken at {taken} of {tried} nodes, largest error {worst:.2} of the tolerance; the rays at {rays_taken} of {rays_tried}, {rays_worst:.2}");
+        assert!(2 * taken > tried, "the sum taken at {taken} of {tried}");
+        assert!(2 * rays_taken > rays_tried, "the rays taken at {rays_taken} of {rays_tried}");
     }
 
     /// [`lobe_arcs`] with each rule of [`LOBE_RULES`] against the same integral by adaptive
