@@ -126,18 +126,27 @@ pub const LOBE_RULES: [(f64, &[(f64, f64)]); 2] = [(2e-3, &crate::expansion::gau
 /// Chebyshev–Lobatto points. Above it, adaptive quadrature in `φ` evaluates a ray at every node.
 pub const MAX_INTERPOLATED_DEGREE: usize = 32;
 
+/// The Chebyshev–Lobatto points `x_j = cos(jπ/p)`, `j = 0 … p` (`p ≤ MAX_INTERPOLATED_DEGREE`).
+pub(crate) fn lobatto_points<T: Real>(p: usize) -> [T; MAX_INTERPOLATED_DEGREE + 1] {
+    let mut points = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+    for (j, x) in points.iter_mut().enumerate().take(p + 1) {
+        *x = (T::PI() * T::from(j).unwrap_or(T::zero()) / T::from(p.max(1)).unwrap_or(T::one())).cos();
+    }
+    points
+}
+
 /// The polynomial of degree `p = values.len() − 1` through `values[j]` at the Chebyshev–Lobatto
-/// points `x_j = cos(jπ/p)`, at `x ∈ [−1, 1]`, by the barycentric formula (weights
-/// `(−1)^j`, halved at the ends; Berrut & Trefethen, SIAM Review 46 (2004), eq. 5.2): stable,
-/// its error at most the Lebesgue constant (`≤ 1 + (2/π) ln p`) times the values' own.
-pub(crate) fn chebyshev_lobatto<T: Real>(values: &[T], x: T) -> T {
+/// points `x_j = cos(jπ/p)` (`points`, [`lobatto_points`]), at `x ∈ [−1, 1]`, by the
+/// barycentric formula (weights `(−1)^j`, halved at the ends; Berrut & Trefethen, SIAM Review 46
+/// (2004), eq. 5.2): stable, its error at most the Lebesgue constant (`≤ 1 + (2/π) ln p`) times
+/// the values' own.
+pub(crate) fn chebyshev_lobatto<T: Real>(values: &[T], points: &[T], x: T) -> T {
     let p = values.len().saturating_sub(1);
     if p == 0 {
         return values.first().copied().unwrap_or(T::zero());
     }
     let (mut num, mut den) = (T::zero(), T::zero());
-    for (j, &v) in values.iter().enumerate() {
-        let xj = (T::PI() * T::from(j).unwrap_or(T::zero()) / T::from(p).unwrap_or(T::one())).cos();
+    for (j, (&v, &xj)) in values.iter().zip(points).enumerate() {
         let diff = x - xj;
         if diff == T::zero() {
             return v;
@@ -712,6 +721,7 @@ where
                         };
                     }
                     let values = &values[..=p];
+                    let points = lobatto_points::<T>(p);
                     if let Some(albedo) = lambert {
                         let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
                         return sum * albedo * T::FRAC_1_PI() * sin_g;
@@ -720,7 +730,7 @@ where
                         let (s, c) = phi.sin_cos();
                         let f = geometric_at((s, c));
                         if f > T::zero() {
-                            f * chebyshev_lobatto(values, c * cos_a + s * sin_a)
+                            f * chebyshev_lobatto(values, &points, c * cos_a + s * sin_a)
                         } else {
                             T::zero()
                         }
@@ -1102,13 +1112,13 @@ mod tests {
             let values: std::vec::Vec<f64> = (0..=p).map(|j| poly(&c, (core::f64::consts::PI * j as f64 / p.max(1) as f64).cos())).collect();
             for i in 0..=200 {
                 let x = -1.0 + i as f64 / 100.0;
-                let err = (chebyshev_lobatto(&values, x) - poly(&c, x)).abs();
+                let err = (chebyshev_lobatto(&values, &lobatto_points::<f64>(p), x) - poly(&c, x)).abs();
                 assert!(err <= 4.0 * (p + 1) as f64 * f64::EPSILON * size, "p = {p}, x = {x}: {err:e}");
             }
             if p >= 2 {
                 // the same data without its last point cannot hold a polynomial of degree p
                 let short: std::vec::Vec<f64> = (0..p).map(|j| poly(&c, (core::f64::consts::PI * j as f64 / (p - 1) as f64).cos())).collect();
-                let worst = (0..=200).map(|i| -1.0 + i as f64 / 100.0).map(|x| (chebyshev_lobatto(&short, x) - poly(&c, x)).abs()).fold(0.0, f64::max);
+                let worst = (0..=200).map(|i| -1.0 + i as f64 / 100.0).map(|x| (chebyshev_lobatto(&short, &lobatto_points::<f64>(p - 1), x) - poly(&c, x)).abs()).fold(0.0, f64::max);
                 // no polynomial of degree p − 1 comes closer to c_p x^p + … than |c_p| 2^{1−p}
                 // (the monic Chebyshev polynomial's norm)
                 let bound = c[p].abs() * 2f64.powi(1 - p as i32);
