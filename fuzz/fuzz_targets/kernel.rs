@@ -1,6 +1,6 @@
 //! Target (1): the kernel on arbitrary inputs, f32 and f64, checked and unchecked API, the
 //! default error-controlled path, both expansions at 4 and 6 terms, lit sub-segments, a segment
-//! light along the light's axis, a disc and a sphere light and fog-lit surface points (f64; in isotropic and the input's fog). Oracle: no panic; never NaN; never negative;
+//! light along the light's axis, a disc and a sphere light and fog-lit surface points (f64; in isotropic and the input's fog, lit by an omni light, the input's or a beam). Oracle: no panic; never NaN; never negative;
 //! `+∞` only where documented — the light on the segment (`h = 0`, `t_min ≤ x_h ≤ t_max`;
 //! here `h` is recomputed in f64 from the same inputs, so "0" means within 8 ulps of
 //! `|p − o|` in the evaluation precision), or a true value beyond the float range, which is
@@ -113,6 +113,22 @@ fuzz_target!(|raw: Raw| {
         if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, omni, m, p) {
             let x = s.air_light_counted(1e-1).0;
             assert!(!x.is_nan() && x >= 0.0, "f64/surface in the input's phase at 1e-1: {x} for {raw:?}");
+        }
+    }
+    // on one input in 8 more, that surface, Lambertian and Phong, lit by a beam c^p (p even, at
+    // most 32) along the input's axis in the input's fog and phase function, at tolerance 1e-1:
+    // where the rays at each outer node share their panel in the light angle (as one sum, or each
+    // on shared samples; docs/DESIGN.md §11); never NaN, never negative
+    if raw.power % 8 == 4 {
+        let beam = airlight::light::TwoLobed { axis: DVec3::from_array(raw.axis), power: 2 * ((raw.power / 8) % 17) as u32 };
+        let lit = airlight::PointLight { position: l.position, intensity: l.intensity, distribution: beam };
+        let surface = Surface { position: r.origin, normal: r.dir };
+        let view = r.dir + DVec3::from_array(raw.axis) * 0.5;
+        for brdf in [Brdf::Lambert { albedo: 1.0 }, Brdf::Phong { k_s: 1.0, exponent: 20.0, view }] {
+            if let Ok(s) = SurfaceScene::new(surface, brdf, lit, m, p) {
+                let x = s.air_light_counted(1e-1).0;
+                assert!(!x.is_nan() && x >= 0.0, "f64/surface lit by a beam at 1e-1: {x} for {raw:?}");
+            }
         }
     }
     // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
