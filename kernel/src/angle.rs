@@ -74,6 +74,12 @@
 //! A light distribution with kinks (a cone's edge) or that is no polynomial in `c` declines
 //! the route, and so does a phase function that does not declare its singularities: `F` would
 //! not be analytic in `θ`, or not known to be.
+//!
+//! Rays that share the panel — the same `h`, `x_h` and ends, only `d_el`, `d_c` differing, as a
+//! surface point's rays about a beam's axis at one `γ` (`crate::surface`, docs/DESIGN.md §11) —
+//! share a rule's nodes, extinction weights and `P`: each is judged on its own `D` and estimate
+//! (`Plan::tries_each`), or, `F` being linear in `D`, a weighted sum of them is sampled as one
+//! light (`Emission`).
 
 use crate::combined::{bounded, cut_length, weighted, Physics};
 use crate::expansion::gauss_table;
