@@ -126,7 +126,7 @@ impl<T: Real, D: LightDistribution<T>> Emission<T> for Along<'_, T, D> {
 
 /// `D(d_el sin θ + d_c cos θ)` at each of the nodes `(cos θ, sin θ)`.
 #[inline]
-fn along<T: Real, D: LightDistribution<T>, const N: usize>(light: &D, d_el: T, d_c: T, angles: &[(T, T); N]) -> [T; N] {
+pub(crate) fn along<T: Real, D: LightDistribution<T>, const N: usize>(light: &D, d_el: T, d_c: T, angles: &[(T, T); N]) -> [T; N] {
     let mut lights = [T::zero(); N];
     for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
         *d = d_el * s + d_c * c;
@@ -644,9 +644,6 @@ impl<T: Real, D: LightDistribution<T>, P: PhaseFunction<T>> Rules for Each<'_, T
         let sampled = self.plan.rule_each::<D, P, N>(self.g, self.phys, self.control, wider, self.rays, self.out);
         (sampled, self.out.iter().all(Option::is_some))
     }
-}
-
-impl<T: Real> Plan<T> {
 }
 
 /// The lobe `c^p ≈ e^{−p·hw²ξ²/2}`'s coefficients from the degree the estimate reads, `N − 1`, to

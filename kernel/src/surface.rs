@@ -317,6 +317,14 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
 }
 
+/// The canonical `(d_el, d_c)` (docs/DESIGN.md §2) of the hemisphere ray at `γ` (cosine and
+/// sine given) whose direction `u ⊥ ℓ` has `u·a = axis_u`, `ℓ·a = axis_l` (`a` the light's
+/// axis): `d_el = cos γ (ℓ·a) + sin γ (u·a)`, `d_c = cos γ (u·a) − sin γ (ℓ·a)` (docs/DESIGN.md
+/// §11).
+fn axis_cosines<T: Real>(cos_g: T, sin_g: T, axis_l: T, axis_u: T) -> (T, T) {
+    (cos_g * axis_l + sin_g * axis_u, cos_g * axis_u - sin_g * axis_l)
+}
+
 /// [`half_arc_and_sine`]'s `ψ` alone, for the arc of `(cos α, sin α, ·)` at `γ`.
 fn half_arc<T: Real>((cos_a, sin_a, _): (T, T, T), cos_g: T, sin_g: T) -> T {
     half_arc_and_sine(cos_a * cos_g, sin_a * sin_g).0
@@ -480,8 +488,8 @@ where
     /// The `p + 1` rays at `γ` (cosine and sine given) and `φ_j = φ_a + j·step` (`cos(φ_j − φ_a)`
     /// the Chebyshev–Lobatto points) on their shared panel in the light angle (`crate::angle`):
     /// they share `h`, `x_h` and their ends, only `D` differs. The panel's plan, the rays'
-    /// canonical form with `(d_el, d_c)` left 0, and each ray's `(d_el, d_c)` as `integrate`'s
-    /// `along` forms them (`u·a = A cos(jπ/p)`); `None` where the route cannot be taken (the
+    /// canonical form with `(d_el, d_c)` left 0, and each ray's `(d_el, d_c)` ([`axis_cosines`], `u·a = A
+    /// cos(jπ/p)`); `None` where the route cannot be taken (the
     /// light on the rays' line) or a thick medium, where each ray tries Gauss–Laguerre in the
     /// optical depth first.
     #[allow(clippy::too_many_arguments)]
@@ -493,8 +501,7 @@ where
         }
         let mut rays = [(T::zero(), T::zero()); MAX_INTERPOLATED_DEGREE + 1];
         for (j, ray) in rays.iter_mut().enumerate().take(p + 1) {
-            let axis_u = axis_a * (step * T::from(j).unwrap_or(T::zero())).cos();
-            *ray = (cos_g * axis_l + sin_g * axis_u, cos_g * axis_u - sin_g * axis_l);
+            *ray = axis_cosines(cos_g, sin_g, axis_l, axis_a * (step * T::from(j).unwrap_or(T::zero())).cos());
         }
         Some(Arc { plan, g, rays, sixteen: T::PANEL_NODES == 16 && !(control.tolerance >= T::lit(crate::scene::FEWER_NODES_FROM)) })
     }
@@ -582,8 +589,9 @@ where
                 c * axis_e1 + s * axis_e2
             };
             let h = fr.d * sin_g;
-            let d_c = if h > T::zero() { cos_g * axis_u - sin_g * axis_l } else { T::zero() };
-            let g = Canonical { h, x_h: fr.d * cos_g, d_el: cos_g * axis_l + sin_g * axis_u, d_c, t0: T::zero(), t1: T::infinity() };
+            let (d_el, d_c) = axis_cosines(cos_g, sin_g, axis_l, axis_u);
+            let d_c = if h > T::zero() { d_c } else { T::zero() };
+            let g = Canonical { h, x_h: fr.d * cos_g, d_el, d_c, t0: T::zero(), t1: T::infinity() };
             ray_integral(&g, &phys)
         };
         // ω at (γ, φ) from the sines and cosines of both
@@ -721,11 +729,11 @@ where
                         };
                     }
                     let values = &values[..=p];
-                    let points = lobatto_points::<T>(p);
                     if let Some(albedo) = lambert {
                         let sum = values.iter().zip(&weights).fold(T::zero(), |acc, (&l, &c)| acc + l * c);
                         return sum * albedo * T::FRAC_1_PI() * sin_g;
                     }
+                    let points = lobatto_points::<T>(p);
                     inner_sum(&mut |phi| {
                         let (s, c) = phi.sin_cos();
                         let f = geometric_at((s, c));
@@ -910,12 +918,7 @@ impl<T: Real, D: LightDistribution<T>> crate::angle::Emission<T> for ArcSum<'_, 
     fn at<const N: usize>(&self, angles: &[(T, T); N]) -> [T; N] {
         let mut sum = [T::zero(); N];
         for (&(d_el, d_c), &w) in self.rays.iter().zip(self.weights) {
-            let mut lights = [T::zero(); N];
-            for (&(c, s), d) in angles.iter().zip(lights.iter_mut()) {
-                *d = d_el * s + d_c * c;
-            }
-            self.light.eval_each(&mut lights);
-            for (acc, &d) in sum.iter_mut().zip(&lights) {
+            for (acc, d) in sum.iter_mut().zip(crate::angle::along(self.light, d_el, d_c, angles)) {
                 *acc = *acc + w * d;
             }
         }
@@ -1209,15 +1212,16 @@ mod tests {
                     for tolerance in [1e-2, 1e-3] {
                         let control = Control { tolerance, ..crate::default_control() };
                         tried += 1;
-                        if let Some(sum) = scene.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control).and_then(|arc| scene.arc_sum(&phys, &arc, &weights[..=p], &control)) {
+                        let arc = scene.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control);
+                        if let Some(sum) = arc.as_ref().and_then(|arc| scene.arc_sum(&phys, arc, &weights[..=p], &control)) {
                             let err = (sum - exact).abs() / exact.abs();
                             worst = worst.max(err / tolerance);
                             assert!(err <= tolerance, "p = {power}, σt = {sigma_t}, γ = {g}, tolerance {tolerance:e}: {sum:e} against {exact:e} ({err:.1e})");
                             taken += 1;
                         }
                         let mut out = [None; MAX_INTERPOLATED_DEGREE + 1];
-                        if let Some(arc) = scene.arc(&phys, &fr, cos_g, sin_g, (axis_l, axis_a), step, p, &control) {
-                            scene.arc_rays(&phys, &arc, &control, &mut out[..=p]);
+                        if let Some(arc) = &arc {
+                            scene.arc_rays(&phys, arc, &control, &mut out[..=p]);
                         }
                         for (j, (value, exact)) in out.iter().zip(&each).enumerate() {
                             rays_tried += 1;
