@@ -104,15 +104,19 @@ fuzz_target!(|raw: Raw| {
             assert!(!x.is_nan() && x >= 0.0, "f64/thin surface at 1e-1: {x} for {raw:?}");
         }
     }
-    // on one input in 8 more, that surface lit by the light made omni in the input's fog and
-    // phase function, at tolerance 1e-1: where a narrow lobe cuts the outer integral
-    // (`airlight::surface::PHASE_LOBE_GAP`); never NaN, never negative
+    // on one input in 8 more, that surface, Lambertian and Phong, lit by the light made omni in
+    // the input's fog and phase function, at tolerance 1e-1: where a narrow lobe cuts the outer
+    // integral (`airlight::surface::PHASE_LOBE_GAP`) and where the rays come from an
+    // interpolant of their logarithm (docs/DESIGN.md §11); never NaN, never negative
     if raw.power % 8 == 2 {
         let omni = airlight::PointLight { distribution: airlight::light::AnyDistribution::Omni, ..l };
         let surface = Surface { position: r.origin, normal: r.dir };
-        if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, omni, m, p) {
-            let x = s.air_light_counted(1e-1).0;
-            assert!(!x.is_nan() && x >= 0.0, "f64/surface in the input's phase at 1e-1: {x} for {raw:?}");
+        let view = r.dir + DVec3::from_array(raw.axis) * 0.5;
+        for brdf in [Brdf::Lambert { albedo: 1.0 }, Brdf::Phong { k_s: 1.0, exponent: 20.0, view }] {
+            if let Ok(s) = SurfaceScene::new(surface, brdf, omni, m, p) {
+                let x = s.air_light_counted(1e-1).0;
+                assert!(!x.is_nan() && x >= 0.0, "f64/surface in the input's phase at 1e-1: {x} for {raw:?}");
+            }
         }
     }
     // on one input in 8 more, that surface, Lambertian and Phong, lit by a beam c^p (p even, at

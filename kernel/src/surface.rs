@@ -29,8 +29,8 @@
 //! Both integrals are globally adaptive Gauss–Kronrod (QUADPACK's QAG, as
 //! [`crate::extended`]), the inner to a tenth of the outer tolerance, each ray integral
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels; at
-//! loose tolerances a light without an axis in a thin medium may give `L_a(γ) sin γ` from an
-//! interpolant of a few rays instead (`RayInterpolant`).
+//! loose tolerances a light without an axis in a thin medium may give `L_a(γ)` from an
+//! interpolant of the logarithm of a few rays instead (`RayInterpolant`).
 
 use core::cell::{Cell, RefCell};
 
@@ -40,7 +40,7 @@ use crate::expansion::chebyshev_series;
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
-use crate::real::{sin_cos_half_turn, sin_cos_quarter, Real};
+use crate::real::{exp_nonpositive_polynomial, sin_cos_half_turn, sin_cos_quarter, Real};
 use crate::panels::Control;
 use crate::combined::Physics;
 use crate::geometry::Canonical;
@@ -226,10 +226,12 @@ struct Frame<T> {
     r_dir: [T; 3],
 }
 
-/// `(cos α, sin α, φ)` of a unit vector `v` in the frame `(ℓ, e₁, e₂)`.
-fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3]) -> (T, T, T) {
+/// `(cos α, sin α, φ)` of a unit vector `v` in the frame `(ℓ, e₁, e₂)`; `φ` only where
+/// `azimuth` (else 0: a Lambertian point lit by a light without an axis needs none).
+fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3], azimuth: bool) -> (T, T, T) {
     let (c, x, y) = (dot(v, l), dot(v, e1), dot(v, e2));
-    (c, x.hypot(y), y.atan2(x))
+    // (x, y ≤ 1: no scaling needed)
+    (c, (x * x + y * y).sqrt(), if azimuth { y.atan2(x) } else { T::zero() })
 }
 
 /// `∫ (A + B cos(x − Δ))⁺ (C + D cos x)⁺ⁿ dx` over the circle (`x = φ − φ_r`; `A, B` the
@@ -245,7 +247,8 @@ fn polar<T: Real>(v: [T; 3], l: [T; 3], e1: [T; 3], e2: [T; 3]) -> (T, T, T) {
 /// [`LOBE_RULES`]) is taken on every piece where the integrand lives — in `x` itself or, for
 /// `n < 1`, where `(ψ_r − x)ⁿ` ends a piece with a kink of infinite slope, in the smoothstep of
 /// the piece (as the outer integral takes `γ`). `gap = γ − α_r`; the lobe is empty unless
-/// `|gap| < π/2`.
+/// `|gap| < π/2`. The exponential by `exp_nonpositive_polynomial` in both precisions: within
+/// 2e-8 relative, where the rules are held to 1e-5 of the lobe's peak integral.
 pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), gap: T, (delta, cos_delta, sin_delta): (T, T, T), psi_n: T, exponent: T) -> T {
     let ((a, b), (c, d)) = (normal, mirror);
     let (pi, half, two) = (T::PI(), T::lit(0.5), T::lit(2.0));
@@ -283,7 +286,7 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
         let clip = (even + odd).max(T::zero()) + (even - odd).max(T::zero());
         let fall = k * s * s;
         if fall < T::one() && clip > T::zero() {
-            clip * (exponent * (log_peak + (-fall).ln_1p())).exp()
+            clip * exp_nonpositive_polynomial(exponent * (log_peak + (-fall).ln_1p()))
         } else {
             T::zero()
         }
@@ -315,6 +318,19 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     }
     let x = (-a / b).max(-T::one()).min(T::one());
     (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
+}
+
+/// `(sin(γ/2), cos(γ/2))` for `γ ∈ [0, π]` from `γ`'s sine and cosine, each as a square root
+/// of `(1 ∓ cos γ)/2` where that is at least `1/2` and the other from `sin γ = 2 sin(γ/2)
+/// cos(γ/2)`: no cancellation at either end.
+fn half_angle<T: Real>(sin_g: T, cos_g: T) -> (T, T) {
+    if cos_g >= T::zero() {
+        let c = ((T::one() + cos_g) * T::lit(0.5)).sqrt();
+        (sin_g / (c + c), c)
+    } else {
+        let s = ((T::one() - cos_g) * T::lit(0.5)).sqrt();
+        (s, sin_g / (s + s))
+    }
 }
 
 /// The canonical `(d_el, d_c)` (docs/DESIGN.md §2) of the hemisphere ray at `γ` (cosine and
@@ -384,18 +400,20 @@ where
         &self.phase
     }
 
-    /// Whether `L_a(γ) sin γ` is predicted smooth enough on the outer range for
-    /// [`RayInterpolant`]'s few nodes: the medium thin over the light's distance (`σt·d ≤ 1`:
-    /// the `γ ln γ` term at the light's direction is that small) and the phase function's
-    /// singularities at least `0.1` past `μ = ±1` (Henyey–Greenstein `|g| ≲ 0.64`; a peak
-    /// narrower than that makes one of `L_a`). A prediction of cost only: the interpolant's
-    /// estimate decides.
+    /// Whether `ln(L_a(γ) sin(γ/2))` is predicted smooth enough on the outer range for
+    /// [`RayInterpolant`]'s few nodes: the medium thin over the light's distance (`σt·d ≤ 3`:
+    /// the layer at the light's direction is that wide; on tests/reference/surface.jsonl points
+    /// of `σt·d` 2.0 and 2.8 pass at 6 nodes, of 5.6–17 only at 12, dearer than a ray at every
+    /// outer node) and the phase function's singularities at least `0.1` past `μ = ±1`
+    /// (Henyey–Greenstein `|g| ≲ 0.64`; a peak narrower than that makes one of `L_a`; in
+    /// `g = 0.8` fog both counts failed). A prediction of cost only: the interpolant's estimate
+    /// decides (docs/DESIGN.md §11).
     fn smooth_rays(&self, d: T) -> bool {
         let gap = match self.phase.singularities() {
             Some(s) => s.cosines.iter().fold(T::infinity(), |m, &mu| m.min(mu.abs() - T::one())),
             None => T::zero(),
         };
-        self.medium.sigma_t * d <= T::one() && (self.phase.is_isotropic() || gap >= T::lit(0.1))
+        self.medium.sigma_t * d <= T::lit(3.0) && (self.phase.is_isotropic() || gap >= T::lit(0.1))
     }
 
     /// `f_r(ω)` for a unit direction `ω` (without the hemisphere's clip).
@@ -413,20 +431,22 @@ where
         }
     }
 
-    fn frame(&self) -> Frame<T> {
+    /// The frame about the light's direction; the normal's azimuth `φ_n` only where
+    /// `azimuths`.
+    fn frame(&self, azimuths: bool) -> Frame<T> {
         let s = T::vec3_to_array(self.surface.position);
         let to_light = sub(T::vec3_to_array(self.light.position), s);
         let d = length(to_light);
         let l = to_light.map(|x| x / d);
         let (e1, e2) = basis(l);
         let n = normalize(T::vec3_to_array(self.surface.normal));
-        let normal = polar(n, l, e1, e2);
+        let normal = polar(n, l, e1, e2, azimuths);
         let (r_dir, r) = match self.brdf {
             Brdf::Phong { view, .. } => {
                 let v = normalize(T::vec3_to_array(view));
                 let twice = T::lit(2.0) * dot(n, v);
                 let r_dir = normalize([twice * n[0] - v[0], twice * n[1] - v[1], twice * n[2] - v[2]]);
-                (r_dir, polar(r_dir, l, e1, e2))
+                (r_dir, polar(r_dir, l, e1, e2, true))
             }
             Brdf::Lambert { .. } => (n, normal),
         };
@@ -442,7 +462,7 @@ where
 
     /// The surface term of paper eq. 7 alone (light reaching the point unscattered).
     pub fn direct(&self) -> T {
-        let f = self.frame();
+        let f = self.frame(false);
         if !(f.d > T::zero()) {
             return T::zero();
         }
@@ -462,8 +482,8 @@ where
     /// [`Real::PANEL_TOLERANCE`], the rays' own), and the ray integrals it evaluated. From
     /// [`FIXED_LOBE_TOLERANCE`] up, a Phong lobe lit by a light without an axis is taken by
     /// [`lobe_arcs`], as in the shaders, with the rule of [`LOBE_RULES`] the tolerance allows;
-    /// from 5e-2 up, a Lambertian point lit by one in a thin medium takes its rays from an
-    /// interpolant of 6 or 12 where that meets the tolerance; a phase function's lobe narrower
+    /// from 5e-2 up, a point lit by one in a thin medium takes its rays from an interpolant of
+    /// their logarithm at 6 or 12 where that meets the tolerance; a phase function's lobe narrower
     /// than [`PHASE_LOBE_GAP`] allows is cut at its extent; a Lambertian point lit by a `c^p`
     /// beam takes the `p + 1` rays at each outer node as one ray integral where the light angle's
     /// route passes on it, counted as one (docs/DESIGN.md §11).
@@ -540,7 +560,10 @@ where
         if self.light.intensity == T::zero() || self.medium.sigma_s == T::zero() {
             return (T::zero(), 0);
         }
-        let fr = self.frame();
+        let omni = self.light.distribution.is_isotropic();
+        // (φ_n serves a light with an axis and a numerical inner integral, not a Lambertian
+        // point lit by a light without one)
+        let fr = self.frame(!(omni && matches!(self.brdf, Brdf::Lambert { .. })));
         if !(fr.d > T::zero()) {
             return (T::infinity(), 0);
         }
@@ -556,7 +579,6 @@ where
         }
         let inner_tolerance = tolerance * T::lit(0.1);
         let rule = outer_rule(tolerance);
-        let omni = self.light.distribution.is_isotropic();
         let phong = matches!(self.brdf, Brdf::Phong { .. });
         let rays = Cell::new(0);
         let phys = Physics::new(&self.light, &self.medium, &self.phase);
@@ -610,7 +632,6 @@ where
         // once one is sampled, else a ray at every outer node; the inner integral at the node,
         // for the outer weight's integral the interpolant's estimate is held against
         let source: RefCell<Option<RayInterpolant<T>>> = RefCell::new(None);
-        let inner_last = Cell::new(T::zero());
         let outer = |g: T| -> T {
             let (sin_g, cos_g) = sin_cos_half_turn(g);
             // the normal's arc, and A, B and sin ψ for Lambert's closed form
@@ -623,9 +644,9 @@ where
             // L_a(γ) sin γ of a light without an axis (from the rays' interpolant where there is
             // one) times `inner`, the inner integral of the BRDF and the cosine at this node
             let omni_times = |inner: T| {
-                inner_last.set(inner);
                 let light = match source.borrow().as_ref() {
-                    Some(p) => p.at(g),
+                    // L_a sin γ = 2 cos(γ/2) · L_a sin(γ/2)
+                    Some(p) => T::lit(2.0) * half_angle(sin_g, cos_g).1 * p.exp_at(g),
                     None => along(cos_g, sin_g, phi_n) * sin_g,
                 };
                 light * inner
@@ -846,11 +867,10 @@ where
             let i = x.to_usize().unwrap_or(0).min(n - 1);
             let t = x - knots[i];
             let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
-            inner_last.set(T::zero());
             if jacobian > T::zero() {
-                (outer(g) * jacobian, inner_last.get() * jacobian)
+                outer(g) * jacobian
             } else {
-                (T::zero(), T::zero())
+                T::zero()
             }
         };
         // a smooth piece within a Phong lobe's extent (between its outermost cuts) is a slice of
@@ -863,31 +883,27 @@ where
             let i = a.to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
-        if default_path && omni && matches!(self.brdf, Brdf::Lambert { .. }) && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
-            // L_a(γ) sin γ is smooth where the outer integrand's kinks are (they are the inner
-            // integral's): interpolated from RAY_NODES rays, the outer integral needs no more.
-            // Half the tolerance to each: the interpolant's largest error times the outer weight's
-            // integral (the companion of the same panels) against half the value (docs/DESIGN.md
-            // §11). Else more nodes, then a ray at every outer node.
+        if default_path && omni && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
+            // L_a(γ) is smooth where the outer integrand's kinks are (they are the inner
+            // integral's): ln(L_a(γ) sin(γ/2)) interpolated from RAY_NODES rays, the outer
+            // integral needs no more. The interpolant's estimate is then one of L_a's relative
+            // error, wherever the BRDF's weight lies: half the tolerance to it, half to the outer
+            // integral (docs/DESIGN.md §11). Else more nodes, then a ray at every outer node.
             let squared = !(lo > T::zero());
+            let bound = (T::one() + tolerance * T::lit(0.5)).ln();
             for count in RAY_NODES {
                 let p = RayInterpolant::sample(count, lo, hi, squared, |g| {
                     let (sin_g, cos_g) = sin_cos_half_turn(g);
-                    along(cos_g, sin_g, fr.n.2) * sin_g
+                    (along(cos_g, sin_g, fr.n.2) * half_angle(sin_g, cos_g).0).ln()
                 });
-                if !(p.estimate.is_finite()) {
-                    continue;
-                }
-                let estimate = p.estimate;
-                *source.borrow_mut() = Some(p);
-                let (value, weight, _) = crate::extended::adaptive_with(&rule_of, &mut mapped, &knots[..=n], tolerance * T::lit(0.5), max_panels);
-                if estimate * weight <= tolerance * T::lit(0.5) * value {
+                if p.estimate <= bound {
+                    *source.borrow_mut() = Some(p);
+                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], tolerance * T::lit(0.5), max_panels);
                     return (value, rays.get());
                 }
             }
-            *source.borrow_mut() = None;
         }
-        let (value, _) = crate::extended::adaptive_by(rule_of, &mut |x| mapped(x).0, &knots[..=n], tolerance, max_panels);
+        let (value, _) = crate::extended::adaptive_by(rule_of, &mut mapped, &knots[..=n], tolerance, max_panels);
         (value, rays.get())
     }
 }
@@ -944,15 +960,20 @@ const INTERPOLATED_FROM: f64 = 5e-2;
 /// The largest of [`RAY_NODES`].
 const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 
-/// `L_a(γ) sin γ` of a light without an axis on the outer range `[lo, hi]`, interpolated at the
-/// Chebyshev points of the first kind (inside the range: none on the light's direction `γ = 0`,
-/// where `L_a` is infinite; their cosines directly, for the accuracy of the nodes, the upper half
-/// by symmetry; the series by `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 +
+/// `q(γ) = ln(L_a(γ) sin(γ/2))` of a light without an axis on the outer range `[lo, hi]` (finite
+/// on the whole of `[0, π]`: `L_a` grows like `1/γ` towards the light and is finite away from
+/// it), interpolated at the Chebyshev points of the first kind (inside the range: none on the
+/// light's direction `γ = 0`; their cosines directly, for the accuracy of the nodes, by
+/// `sin_cos_quarter` in the lower half and by symmetry in the upper; the series by
+/// `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 +
 /// τ)/2` — or its square where the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ`
-/// term (the ray passing the light, scaled by `σt·d`). `estimate`: the interpolant's largest error, `2 Σ_{k ≥ M} |c_k|`
-/// (Trefethen, Approximation Theory and Approximation Practice, Thm. 4.2) with the tail summed
-/// from the last two coefficients, `last`, at the decay they show but at least `M/8` of them (an
-/// algebraic tail's; `∞` where they fall by less than half from the two before).
+/// term (the ray passing the light, scaled by `σt·d`). `estimate`: the interpolant's largest
+/// error, `2 Σ_{k ≥ M} |c_k|` (Trefethen, Approximation Theory and Approximation Practice, Thm.
+/// 4.2) with the tail summed from the last two coefficients, `last`, at the decay they show but
+/// at least `M/8` of them (an algebraic tail's; `∞` where they fall by less than half from the
+/// two before): an error `e` of `q` is one of `e^e − 1` relative in `L_a`, wherever it lies.
+/// `top = c_0 + Σ_{k≥1} |c_k|` bounds the interpolant from above (`|T_k| ≤ 1`), so that
+/// `e^{q − top}` takes an exponential of a non-positive argument.
 #[derive(Clone, Copy)]
 struct RayInterpolant<T> {
     lo: T,
@@ -961,6 +982,8 @@ struct RayInterpolant<T> {
     count: usize,
     coefficients: [T; MAX_RAY_NODES],
     estimate: T,
+    top: T,
+    exp_top: T,
 }
 
 impl<T: Real> RayInterpolant<T> {
@@ -971,7 +994,7 @@ impl<T: Real> RayInterpolant<T> {
         let m = T::from(count).unwrap_or(T::one());
         for j in 0..count {
             // the upper half by symmetry, cos(π − θ) = −cos θ: half the cosines
-            let tau = if 2 * j >= count { -nodes[count - 1 - j] } else { (T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).cos() };
+            let tau = if 2 * j >= count { -nodes[count - 1 - j] } else { sin_cos_quarter(T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).1 };
             let s = (T::one() + tau) * T::lit(0.5);
             let g = lo + width * if squared { s * s } else { s };
             nodes[j] = tau;
@@ -988,7 +1011,14 @@ impl<T: Real> RayInterpolant<T> {
         // (`tests::ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds`)
         let factor = (q2 / (T::one() - q2)).max(m * T::lit(0.125));
         let estimate = if q2 < T::lit(0.5) { T::lit(2.0) * last * factor } else { T::infinity() };
-        RayInterpolant { lo, width, squared, count, coefficients, estimate }
+        let top = coefficients[1..count].iter().fold(coefficients[0], |acc, c| acc + c.abs());
+        RayInterpolant { lo, width, squared, count, coefficients, estimate, top, exp_top: top.exp() }
+    }
+
+    /// `e^{q(γ)}` from the interpolant, as `e^{q − top} e^{top}` ([`exp_nonpositive_polynomial`]:
+    /// within 2e-8, far below the tolerances from [`INTERPOLATED_FROM`] it serves).
+    fn exp_at(&self, gamma: T) -> T {
+        exp_nonpositive_polynomial(self.at(gamma) - self.top) * self.exp_top
     }
 
     /// The interpolant at `γ` (Clenshaw's recurrence).
@@ -1187,7 +1217,7 @@ mod tests {
                 let surface = Surface { position: DVec3::new(0.3, -0.2, 0.1), normal: DVec3::new(0.2, 1.0, -0.3 + 0.1 * i as f64) };
                 let light = PointLight { position: DVec3::new(-0.8, 1.4, 0.6 + 0.1 * i as f64), intensity: 20.0, distribution: TwoLobed { axis: DVec3::new(0.6, -0.7 + 0.2 * i as f64, 0.4), power } };
                 let scene = SurfaceScene::new(surface, Brdf::Lambert { albedo: 0.5 }, light, Medium { sigma_s, sigma_t }, HenyeyGreenstein { g: 0.6 }).unwrap();
-                let (fr, phys) = (scene.frame(), Physics::new(&scene.light, &scene.medium, &scene.phase));
+                let (fr, phys) = (scene.frame(true), Physics::new(&scene.light, &scene.medium, &scene.phase));
                 let axis: [f64; 3] = normalize(scene.light.distribution.axis());
                 let (axis_l, axis_e1, axis_e2): (f64, f64, f64) = (dot(axis, fr.l), dot(axis, fr.e1), dot(axis, fr.e2));
                 let (phi_a, axis_a, p) = (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2), power as usize);
