@@ -404,16 +404,10 @@ where
     /// [`RayInterpolant`]'s few nodes: the medium thin over the light's distance (`σt·d ≤ 3`:
     /// the layer at the light's direction is that wide; on tests/reference/surface.jsonl points
     /// of `σt·d` 2.0 and 2.8 pass at 6 nodes, of 5.6–17 only at 12, dearer than a ray at every
-    /// outer node) and the phase function's singularities at least `0.1` past `μ = ±1`
-    /// (Henyey–Greenstein `|g| ≲ 0.64`; a peak narrower than that makes one of `L_a`; in
-    /// `g = 0.8` fog both counts failed). A prediction of cost only: the interpolant's estimate
-    /// decides (docs/DESIGN.md §11).
+    /// outer node). A prediction of cost only: the interpolant's estimate decides (a phase
+    /// function's narrow lobe splits the range, [`SMOOTH_PHASE_GAP`]; docs/DESIGN.md §11).
     fn smooth_rays(&self, d: T) -> bool {
-        let gap = match self.phase.singularities() {
-            Some(s) => s.cosines.iter().fold(T::infinity(), |m, &mu| m.min(mu.abs() - T::one())),
-            None => T::zero(),
-        };
-        self.medium.sigma_t * d <= T::lit(3.0) && (self.phase.is_isotropic() || gap >= T::lit(0.1))
+        self.medium.sigma_t * d <= T::lit(3.0)
     }
 
     /// `f_r(ω)` for a unit direction `ω` (without the hemisphere's clip).
@@ -631,7 +625,7 @@ where
         // a light without an axis: L_a(γ) sin γ from the rays' interpolant (`RayInterpolant`)
         // once one is sampled, else a ray at every outer node; the inner integral at the node,
         // for the outer weight's integral the interpolant's estimate is held against
-        let source: RefCell<Option<RayInterpolant<T>>> = RefCell::new(None);
+        let source: RefCell<RayPieces<T>> = RefCell::new(RayPieces::none());
         let outer = |g: T| -> T {
             let (sin_g, cos_g) = sin_cos_half_turn(g);
             // the normal's arc, and A, B and sin ψ for Lambert's closed form
@@ -644,10 +638,12 @@ where
             // L_a(γ) sin γ of a light without an axis (from the rays' interpolant where there is
             // one) times `inner`, the inner integral of the BRDF and the cosine at this node
             let omni_times = |inner: T| {
-                let light = match source.borrow().as_ref() {
+                let pieces = source.borrow();
+                let light = if pieces.count > 0 {
                     // L_a sin γ = 2 cos(γ/2) · L_a sin(γ/2)
-                    Some(p) => T::lit(2.0) * half_angle(sin_g, cos_g).1 * p.exp_at(g),
-                    None => along(cos_g, sin_g, phi_n) * sin_g,
+                    T::lit(2.0) * half_angle(sin_g, cos_g).1 * pieces.exp_at(g)
+                } else {
+                    along(cos_g, sin_g, phi_n) * sin_g
                 };
                 light * inner
             };
@@ -889,15 +885,60 @@ where
             // integral needs no more. The interpolant's estimate is then one of L_a's relative
             // error, wherever the BRDF's weight lies: half the tolerance to it, half to the outer
             // integral (docs/DESIGN.md §11). Else more nodes, then a ray at every outer node.
-            let squared = !(lo > T::zero());
+            // a phase lobe narrower than SMOOTH_PHASE_GAP allows is one of L_a at γ = 0 or π
+            // (as for the outer cuts above): the range is split at 4 of its widths from the
+            // peak, an interpolant on each side
+            let mut ends = [hi; 3];
+            let mut parts = 1;
+            // (a lobe narrower than PHASE_LOBE_GAP allows: the piece beyond it geometric)
+            let mut narrow = [false; 2];
+            if let Some(s) = self.phase.singularities() {
+                for mu in s.cosines {
+                    let gap = mu.abs() - T::one();
+                    if gap > T::zero() && gap < T::lit(SMOOTH_PHASE_GAP) {
+                        let reach = T::lit(4.0) * (gap + gap).sqrt();
+                        let c = if mu > T::zero() { reach } else { T::PI() - reach };
+                        if c > lo && c < hi {
+                            ends[parts - 1] = c;
+                            ends[parts] = hi;
+                            parts += 1;
+                            narrow[usize::from(mu < T::zero())] = gap < T::lit(PHASE_LOBE_GAP);
+                        }
+                    }
+                }
+            }
+            ends[..parts].sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
             let bound = (T::one() + tolerance * T::lit(0.5)).ln();
+            let ray = |g: T| {
+                let (sin_g, cos_g) = sin_cos_half_turn(g);
+                (along(cos_g, sin_g, fr.n.2) * half_angle(sin_g, cos_g).0).ln()
+            };
+            // each piece's map: squared from the light's direction, geometric away from a narrow
+            // lobe's peak where one ends the piece on one side only, else linear
+            let starts = [lo, ends[0], ends[1]];
+            let map_of = |i: usize| {
+                let (a, b) = (starts[i], ends[i]);
+                let after = i > 0 && a < T::FRAC_PI_2() && narrow[0];
+                let before = i + 1 < parts && b > T::FRAC_PI_2() && narrow[1];
+                match (after, before) {
+                    (true, false) => Map::Geometric { pole: T::zero(), side: T::one(), near: a, ln_ratio: (b / a).ln() },
+                    (false, true) => Map::Geometric { pole: T::PI(), side: -T::one(), near: T::PI() - b, ln_ratio: ((T::PI() - a) / (T::PI() - b)).ln() },
+                    _ if !(a > T::zero()) => Map::Squared,
+                    _ => Map::Linear,
+                }
+            };
             for count in RAY_NODES {
-                let p = RayInterpolant::sample(count, lo, hi, squared, |g| {
-                    let (sin_g, cos_g) = sin_cos_half_turn(g);
-                    (along(cos_g, sin_g, fr.n.2) * half_angle(sin_g, cos_g).0).ln()
-                });
-                if p.estimate <= bound {
-                    *source.borrow_mut() = Some(p);
+                // (sampled in place: the pieces are a few hundred bytes each)
+                let passed = {
+                    let mut pieces = source.borrow_mut();
+                    pieces.ends = ends;
+                    for i in 0..parts {
+                        pieces.parts[i].sample(count, starts[i], ends[i], map_of(i), ray);
+                    }
+                    pieces.parts[..parts].iter().all(|p| p.estimate <= bound)
+                };
+                if passed {
+                    source.borrow_mut().count = parts;
                     let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], tolerance * T::lit(0.5), max_panels);
                     return (value, rays.get());
                 }
@@ -947,7 +988,8 @@ impl<T: Real, D: LightDistribution<T>> crate::angle::Emission<T> for ArcSum<'_, 
 /// a lobe `√(2·gap)` = 0.14 wide (Henyey–Greenstein `|g|` ≳ 0.87). Measured on
 /// tests/reference/surface.jsonl at tolerance 1e-1: uncut, a `g = 0.95` point was 4.8e-3 off
 /// (28 rays; 4.4e-5 cut, 28 rays); cutting from a gap of 0.1 (`|g|` ≳ 0.64) cost `near` and
-/// `phong` 20 % more instructions with no error that needed it (docs/DESIGN.md §11).
+/// `phong` 20 % more instructions with no error that needed it (docs/DESIGN.md §11). Beyond such
+/// a lobe the rays' interpolant maps its piece geometrically in the distance from the peak.
 pub const PHASE_LOBE_GAP: f64 = 0.01;
 
 /// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node.
@@ -959,6 +1001,35 @@ const INTERPOLATED_FROM: f64 = 5e-2;
 
 /// The largest of [`RAY_NODES`].
 const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
+
+/// `q(γ)` ([`RayInterpolant`]) on the outer range as up to three interpolants, the `i`-th ending
+/// at `ends[i]` (the first starting at the range's start), split where a phase lobe narrower
+/// than [`SMOOTH_PHASE_GAP`] allows makes one of `L_a` at `γ = 0` or `π`.
+#[derive(Clone, Copy)]
+struct RayPieces<T> {
+    ends: [T; 3],
+    count: usize,
+    parts: [RayInterpolant<T>; 3],
+}
+
+impl<T: Real> RayPieces<T> {
+    /// No pieces (`count` 0): a ray at every outer node.
+    fn none() -> Self {
+        RayPieces { ends: [T::zero(); 3], count: 0, parts: [RayInterpolant::none(); 3] }
+    }
+
+    /// `e^{q(γ)}` from the interpolant whose piece holds `γ`.
+    fn exp_at(&self, gamma: T) -> T {
+        let i = if self.count > 1 { self.ends[..self.count - 1].iter().filter(|&&end| gamma >= end).count() } else { 0 };
+        self.parts[i].exp_at(gamma)
+    }
+}
+
+/// The smallest gap `|μ*| − 1` of a phase function's singularity past `μ = ±1` at which
+/// `L_a(γ)` is interpolated across the phase function's lobe at `γ = 0` or `π` (Henyey–Greenstein
+/// `|g| ≲ 0.64`); a narrower lobe splits the interpolated range at 4 lobe widths `√(2·gap)` from
+/// its peak (`SurfaceScene::air_light_counted`; docs/DESIGN.md §11).
+const SMOOTH_PHASE_GAP: f64 = 0.1;
 
 /// `q(γ) = ln(L_a(γ) sin(γ/2))` of a light without an axis on the outer range `[lo, hi]` (finite
 /// on the whole of `[0, π]`: `L_a` grows like `1/γ` towards the light and is finite away from
@@ -978,7 +1049,7 @@ const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 struct RayInterpolant<T> {
     lo: T,
     width: T,
-    squared: bool,
+    map: Map<T>,
     count: usize,
     coefficients: [T; MAX_RAY_NODES],
     estimate: T,
@@ -987,7 +1058,14 @@ struct RayInterpolant<T> {
 }
 
 impl<T: Real> RayInterpolant<T> {
-    fn sample(count: usize, lo: T, hi: T, squared: bool, f: impl Fn(T) -> T) -> Self {
+    /// An interpolant not yet sampled.
+    fn none() -> Self {
+        let zero = T::zero();
+        RayInterpolant { lo: zero, width: zero, map: Map::Linear, count: 0, coefficients: [zero; MAX_RAY_NODES], estimate: T::infinity(), top: zero, exp_top: zero }
+    }
+
+    /// Samples `f` at `count` nodes of `[lo, hi]` in `map` (in place).
+    fn sample(&mut self, count: usize, lo: T, hi: T, map: Map<T>, f: impl Fn(T) -> T) {
         let width = hi - lo;
         let mut values = [T::zero(); MAX_RAY_NODES];
         let mut nodes = [T::zero(); MAX_RAY_NODES];
@@ -996,11 +1074,16 @@ impl<T: Real> RayInterpolant<T> {
             // the upper half by symmetry, cos(π − θ) = −cos θ: half the cosines
             let tau = if 2 * j >= count { -nodes[count - 1 - j] } else { sin_cos_quarter(T::PI() * (T::from(j).unwrap_or(T::zero()) + T::lit(0.5)) / m).1 };
             let s = (T::one() + tau) * T::lit(0.5);
-            let g = lo + width * if squared { s * s } else { s };
+            let g = match map {
+                Map::Linear => lo + width * s,
+                Map::Squared => lo + width * s * s,
+                Map::Geometric { pole, side, near, ln_ratio } => pole + side * near * (s * ln_ratio).exp(),
+            };
             nodes[j] = tau;
             values[j] = f(g);
         }
-        let mut coefficients = [T::zero(); MAX_RAY_NODES];
+        let coefficients = &mut self.coefficients;
+        coefficients.fill(T::zero());
         chebyshev_series(&nodes, &values, &mut coefficients[..count]);
         let last = coefficients[count - 1].abs() + coefficients[count - 2].abs();
         let before = coefficients[count - 3].abs() + coefficients[count - 4].abs();
@@ -1012,7 +1095,7 @@ impl<T: Real> RayInterpolant<T> {
         let factor = (q2 / (T::one() - q2)).max(m * T::lit(0.125));
         let estimate = if q2 < T::lit(0.5) { T::lit(2.0) * last * factor } else { T::infinity() };
         let top = coefficients[1..count].iter().fold(coefficients[0], |acc, c| acc + c.abs());
-        RayInterpolant { lo, width, squared, count, coefficients, estimate, top, exp_top: top.exp() }
+        (self.lo, self.width, self.map, self.count, self.estimate, self.top, self.exp_top) = (lo, width, map, count, estimate, top, top.exp());
     }
 
     /// `e^{q(γ)}` from the interpolant, as `e^{q − top} e^{top}` ([`exp_nonpositive_polynomial`]:
@@ -1024,7 +1107,11 @@ impl<T: Real> RayInterpolant<T> {
     /// The interpolant at `γ` (Clenshaw's recurrence).
     fn at(&self, gamma: T) -> T {
         let x = ((gamma - self.lo) / self.width).max(T::zero()).min(T::one());
-        let s = if self.squared { x.sqrt() } else { x };
+        let s = match self.map {
+            Map::Linear => x,
+            Map::Squared => x.sqrt(),
+            Map::Geometric { pole, near, ln_ratio, .. } => (((gamma - pole).abs() / near).ln() / ln_ratio).max(T::zero()).min(T::one()),
+        };
         let tau = s + s - T::one();
         let (mut b1, mut b2) = (T::zero(), T::zero());
         for &c in self.coefficients[1..self.count].iter().rev() {
@@ -1034,6 +1121,21 @@ impl<T: Real> RayInterpolant<T> {
         }
         self.coefficients[0] + tau * b1 - b2
     }
+}
+
+/// How a piece of the outer range is mapped from `s ∈ [0, 1]` (the Chebyshev variable `τ = 2s −
+/// 1` of [`RayInterpolant`]) to `γ ∈ [lo, lo + width]`.
+#[derive(Clone, Copy, PartialEq)]
+enum Map<T> {
+    /// `γ = lo + width·s`.
+    Linear,
+    /// `γ = lo + width·s²`: from the light's direction, where `L_a sin γ` has a `γ ln γ` term.
+    Squared,
+    /// `γ = pole + side·near·e^{s·ln_ratio}`: the distance from a phase lobe's peak `pole` (`0`
+    /// or `π`, `side` `±1` towards the range) growing geometrically from `near` to `near·e^{ln_ratio}`
+    /// — beyond a lobe, where Henyey–Greenstein's `ln P ≈ −3 ln δ` of the distance `δ` is linear
+    /// in `s`.
+    Geometric { pole: T, side: T, near: T, ln_ratio: T },
 }
 
 /// What an outer cut of a surface's integral is: where an arc opens or closes (`|γ − γ*|^{3/2}`),
@@ -1091,21 +1193,43 @@ mod tests {
 
     /// `RayInterpolant` reproduces a polynomial of degree `M − 1` in `τ` from its `M` values (to
     /// rounding: within `8Mε` of `Σ|c_k|`, the Lebesgue constant of the first-kind points being
-    /// below 3 here), on both maps; and on smooth functions — an entire one, and `γ ln γ`-like
-    /// ones on a range from `γ = 0`, the shape its squared map is for — its estimate bounds the
-    /// error it makes at 400 points of the range wherever the estimate is finite.
+    /// below 3 here), on every map; and on smooth functions — an entire one, `γ ln γ`-like ones on
+    /// a range from `γ = 0`, the shape its squared map is for, and the logarithm of a
+    /// Henyey–Greenstein lobe (`g = 0.95`) on its piece from `γ = 0` and beyond it, in the
+    /// geometric map (where `SurfaceScene::air_light_counted` splits at 4 lobe widths) — its
+    /// estimate bounds the error it makes at 400 points of the range wherever the estimate is
+    /// finite.
     #[test]
     fn ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds() {
+        let sampled = |count: usize, lo: f64, hi: f64, map: Map<f64>, f: &dyn Fn(f64) -> f64| {
+            let mut p = RayInterpolant::none();
+            p.sample(count, lo, hi, map, f);
+            p
+        };
+        let pi = core::f64::consts::PI;
+        let forward = |near: f64, far: f64| Map::Geometric { pole: 0.0, side: 1.0, near, ln_ratio: (far / near).ln() };
+        let (g0, reach) = (0.95f64, 4.0 * (2.0 * ((1.0 - 0.95f64).powi(2) / 1.9)).sqrt());
+        let hg = move |g: f64| -1.5 * ((1.0 - g0).powi(2) + 2.0 * g0 * (1.0 - g.cos())).ln();
         for count in RAY_NODES {
-            for (lo, hi, squared) in [(0.3, 2.5, false), (0.0, 2.5, true)] {
+            let maps = [
+                (0.3, 2.5, Map::Linear),
+                (0.0, 2.5, Map::Squared),
+                (0.2, 2.5, forward(0.2, 2.5)),
+                (0.3, pi - 0.2, Map::Geometric { pole: pi, side: -1.0, near: 0.2, ln_ratio: ((pi - 0.3) / 0.2).ln() }),
+            ];
+            for (lo, hi, map) in maps {
                 let tau = |g: f64| {
                     let x: f64 = (g - lo) / (hi - lo);
-                    let s = if squared { x.sqrt() } else { x };
+                    let s = match map {
+                        Map::Linear => x,
+                        Map::Squared => x.sqrt(),
+                        Map::Geometric { pole, near, ln_ratio, .. } => ((g - pole).abs() / near).ln() / ln_ratio,
+                    };
                     2.0 * s - 1.0
                 };
                 // Σ_k c_k τ^k, c_k = (−0.7)^k: degree M − 1
                 let poly = |g: f64| (0..count).rev().fold(0.0, |acc, k| acc * tau(g) + (-0.7f64).powi(k as i32));
-                let p = RayInterpolant::sample(count, lo, hi, squared, poly);
+                let p = sampled(count, lo, hi, map, &poly);
                 let sum: f64 = (0..count).map(|k| 0.7f64.powi(k as i32)).sum();
                 for i in 0..=400 {
                     let g = lo + (hi - lo) * i as f64 / 400.0;
@@ -1113,18 +1237,20 @@ mod tests {
                     assert!(err <= 8.0 * count as f64 * f64::EPSILON * sum, "M {count}, γ {g}: {err:e}");
                 }
             }
-            let cases: [(f64, f64, bool, &dyn Fn(f64) -> f64); 3] = [
-                (0.3, 2.5, false, &|g: f64| (0.5 * g).exp() * g.cos()),
-                (0.0, 2.5, true, &|g: f64| 1.0 + 0.05 * g * (g + 1e-300).ln() + 0.3 * g),
-                (0.0, 3.0, true, &|g: f64| (3.0 - g) * (1.0 - 0.2 * g * (g + 1e-300).ln())),
+            let cases: [(f64, f64, Map<f64>, &dyn Fn(f64) -> f64); 5] = [
+                (0.3, 2.5, Map::Linear, &|g: f64| (0.5 * g).exp() * g.cos()),
+                (0.0, 2.5, Map::Squared, &|g: f64| 1.0 + 0.05 * g * (g + 1e-300).ln() + 0.3 * g),
+                (0.0, 3.0, Map::Squared, &|g: f64| (3.0 - g) * (1.0 - 0.2 * g * (g + 1e-300).ln())),
+                (0.0, reach, Map::Squared, &hg),
+                (reach, 2.5, forward(reach, 2.5), &hg),
             ];
-            for (lo, hi, squared, f) in cases {
-                let p = RayInterpolant::sample(count, lo, hi, squared, f);
+            for (lo, hi, map, f) in cases {
+                let p = sampled(count, lo, hi, map, f);
                 if !p.estimate.is_finite() {
                     continue;
                 }
                 let worst = (0..=400).map(|i| lo + (hi - lo) * i as f64 / 400.0).map(|g| (p.at(g) - f(g)).abs()).fold(0.0, f64::max);
-                std::println!("M {count} on [{lo}, {hi}]: largest error {worst:.1e}, estimate {:.1e}", p.estimate);
+                std::println!("M {count} on [{lo:.3}, {hi}]: largest error {worst:.1e}, estimate {:.1e}", p.estimate);
                 assert!(worst <= p.estimate, "M {count} on [{lo}, {hi}]: {worst:e} > {:e}", p.estimate);
             }
         }
