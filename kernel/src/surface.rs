@@ -883,11 +883,13 @@ where
             // L_a(γ) is smooth where the outer integrand's kinks are (they are the inner
             // integral's): ln(L_a(γ) sin(γ/2)) interpolated from RAY_NODES rays, the outer
             // integral needs no more. The interpolant's estimate is then one of L_a's relative
-            // error, wherever the BRDF's weight lies: half the tolerance to it, half to the outer
-            // integral (docs/DESIGN.md §11). Else more nodes, then a ray at every outer node.
-            // a phase lobe narrower than SMOOTH_PHASE_GAP allows is one of L_a at γ = 0 or π
+            // error, wherever the BRDF's weight lies: at most half the tolerance to it, what it
+            // leaves to the outer integral (docs/DESIGN.md §11). Else more nodes, then a ray at
+            // every outer node.
+            //
+            // A phase lobe narrower than SMOOTH_PHASE_GAP allows is one of L_a at γ = 0 or π
             // (as for the outer cuts above): the range is split at 4 of its widths from the
-            // peak, an interpolant on each side
+            // peak, an interpolant on each side.
             let mut ends = [hi; 3];
             let mut parts = 1;
             // (a lobe narrower than PHASE_LOBE_GAP allows: the piece beyond it geometric)
@@ -935,11 +937,18 @@ where
                     for i in 0..parts {
                         pieces.parts[i].sample(count, starts[i], ends[i], map_of(i), ray);
                     }
-                    pieces.parts[..parts].iter().all(|p| p.estimate <= bound)
+                    // (and e^{top} finite: a value beyond the range takes the rays one by one)
+                    pieces.parts[..parts].iter().all(|p| p.estimate <= bound && p.exp_top.is_finite())
                 };
                 if passed {
-                    source.borrow_mut().count = parts;
-                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], tolerance * T::lit(0.5), max_panels);
+                    // the outer integral to what the interpolant leaves: L_a within a relative
+                    // `spent`, the quadrature within ε of that, (1 + spent)(1 + ε) − 1 ≤ tolerance
+                    let spent = {
+                        let mut pieces = source.borrow_mut();
+                        pieces.count = parts;
+                        pieces.parts[..parts].iter().fold(T::zero(), |m, p| m.max(p.estimate)).exp_m1()
+                    };
+                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], (tolerance - spent) / (T::one() + spent), max_panels);
                     return (value, rays.get());
                 }
             }
