@@ -431,8 +431,6 @@ struct Listed<T> {
     b: T,
     value: T,
     error: T,
-    /// The companion integrand's Kronrod value ([`adaptive_with`]).
-    companion: T,
 }
 
 /// Globally adaptive Gauss–Kronrod (`rule`) over the panels between `edges`: bisects the panel
@@ -445,32 +443,17 @@ pub(crate) fn adaptive<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) 
 
 /// [`adaptive`] with the rule of each panel `[a, b]` chosen by `rule(a, b)`.
 pub(crate) fn adaptive_by<'r, T: Real>(rule: impl Fn(T, T) -> &'r [(f64, f64, f64)], f: &mut impl FnMut(T) -> T, edges: &[T], tolerance: T, max_panels: usize) -> (T, usize) {
-    let (value, _, evaluated) = adaptive_with(rule, &mut |x| (f(x), T::zero()), edges, tolerance, max_panels);
-    (value, evaluated)
-}
-
-/// [`adaptive_by`] of the first of the pair `f` returns, and the second — a companion integrand
-/// evaluated at the same points, not error-controlled — by the Kronrod rule on the same panels:
-/// the sum, the companion's sum and the panels evaluated.
-pub(crate) fn adaptive_with<'r, T: Real>(rule: impl Fn(T, T) -> &'r [(f64, f64, f64)], f: &mut impl FnMut(T) -> (T, T), edges: &[T], tolerance: T, max_panels: usize) -> (T, T, usize) {
-    let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero(), companion: T::zero() }; MAX_SEGMENT_PANELS];
+    let mut list = [Listed { a: T::zero(), b: T::zero(), value: T::zero(), error: T::zero() }; MAX_SEGMENT_PANELS];
     let max_panels = max_panels.clamp(edges.len() - 1, MAX_SEGMENT_PANELS);
-    // (generic, not `dyn`: where the companion is 0, as for `adaptive_by`, its sums fold away)
-    fn evaluate<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> (T, T), a: T, b: T) -> Listed<T> {
+    fn evaluate<T: Real>(rule: &[(f64, f64, f64)], f: &mut impl FnMut(T) -> T, a: T, b: T) -> Listed<T> {
         let (c, hw) = ((a + b) * T::lit(0.5), (b - a) * T::lit(0.5));
-        let (mut k, mut g, mut companion) = (T::zero(), T::zero(), T::zero());
+        let (mut k, mut g) = (T::zero(), T::zero());
         for &(x, wk, wg) in rule {
-            let (s, t) = if x == 0.0 {
-                f(c)
-            } else {
-                let ((s0, t0), (s1, t1)) = (f(c - hw * T::lit(x)), f(c + hw * T::lit(x)));
-                (s0 + s1, t0 + t1)
-            };
+            let s = if x == 0.0 { f(c) } else { f(c - hw * T::lit(x)) + f(c + hw * T::lit(x)) };
             k = k + T::lit(wk) * s;
             g = g + T::lit(wg) * s;
-            companion = companion + T::lit(wk) * t;
         }
-        Listed { a, b, value: k * hw, error: ((k - g) * hw).abs(), companion: companion * hw }
+        Listed { a, b, value: k * hw, error: ((k - g) * hw).abs() }
     }
     let mut count = 0;
     for pair in edges.windows(2) {
@@ -479,17 +462,16 @@ pub(crate) fn adaptive_with<'r, T: Real>(rule: impl Fn(T, T) -> &'r [(f64, f64, 
     }
     let mut evaluated = count;
     loop {
-        let (mut total, mut errors, mut companion, mut worst) = (T::zero(), T::zero(), T::zero(), 0);
+        let (mut total, mut errors, mut worst) = (T::zero(), T::zero(), 0);
         for (i, p) in list.iter().enumerate().take(count) {
             total = total + p.value;
             errors = errors + p.error;
-            companion = companion + p.companion;
             if p.error > list[worst].error {
                 worst = i;
             }
         }
         if !(errors > tolerance * total.abs()) || count == max_panels || !total.is_finite() {
-            return (total.max(T::zero()), companion, evaluated);
+            return (total.max(T::zero()), evaluated);
         }
         let Listed { a, b, .. } = list[worst];
         let mid = (a + b) * T::lit(0.5);

@@ -410,6 +410,16 @@ where
         self.medium.sigma_t * d <= T::lit(3.0)
     }
 
+    /// The phase function's lobes at `μ = ±1` whose singularity lies less than `below` past it:
+    /// `(forward, gap, width)`, a lobe of `L_a` at `γ = 0` (forward) or `π` of angular width
+    /// `√(2·gap)` (at the surface point light scatters into `ω` at `μ = cos γ`).
+    fn phase_lobes(&self, below: f64) -> impl Iterator<Item = (bool, T, T)> {
+        self.phase.singularities().into_iter().flat_map(|s| s.cosines).filter_map(move |mu| {
+            let gap = mu.abs() - T::one();
+            (gap > T::zero() && gap < T::lit(below)).then(|| (mu > T::zero(), gap, (gap + gap).sqrt()))
+        })
+    }
+
     /// `f_r(ω)` for a unit direction `ω` (without the hemisphere's clip).
     fn brdf_at(&self, frame: &Frame<T>, w: [T; 3]) -> T {
         match self.brdf {
@@ -622,9 +632,8 @@ where
         let alpha_r = if phong { fr.r.1.atan2(fr.r.0) } else { T::zero() };
         let delta = fr.n.2 - fr.r.2;
         let (sin_delta, cos_delta) = if phong { delta.sin_cos() } else { (T::zero(), T::one()) };
-        // a light without an axis: L_a(γ) sin γ from the rays' interpolant (`RayInterpolant`)
-        // once one is sampled, else a ray at every outer node; the inner integral at the node,
-        // for the outer weight's integral the interpolant's estimate is held against
+        // a light without an axis: L_a(γ) sin γ from the rays' interpolants (`RayPieces`) once
+        // they are sampled, else a ray at every outer node
         let source: RefCell<RayPieces<T>> = RefCell::new(RayPieces::none());
         let outer = |g: T| -> T {
             let (sin_g, cos_g) = sin_cos_half_turn(g);
@@ -830,16 +839,10 @@ where
         // narrower than PHASE_LOBE_GAP allows, cut at 1.5 and 4 widths from its peak, as a Phong
         // lobe's extent (the default path only; docs/DESIGN.md §11)
         if default_path && !self.phase.is_isotropic() {
-            if let Some(s) = self.phase.singularities() {
-                for mu in s.cosines {
-                    let gap = mu.abs() - T::one();
-                    if gap > T::zero() && gap < T::lit(PHASE_LOBE_GAP) {
-                        let width = (gap + gap).sqrt();
-                        for k in [1.5, 4.0] {
-                            let c = T::lit(k) * width;
-                            push(if mu > T::zero() { c } else { T::PI() - c }, Cut::Peak);
-                        }
-                    }
+            for (forward, _, width) in self.phase_lobes(PHASE_LOBE_GAP) {
+                for k in [1.5, 4.0] {
+                    let c = T::lit(k) * width;
+                    push(if forward { c } else { T::PI() - c }, Cut::Peak);
                 }
             }
         }
@@ -894,19 +897,14 @@ where
             let mut parts = 1;
             // (a lobe narrower than PHASE_LOBE_GAP allows: the piece beyond it geometric)
             let mut narrow = [false; 2];
-            if let Some(s) = self.phase.singularities() {
-                for mu in s.cosines {
-                    let gap = mu.abs() - T::one();
-                    if gap > T::zero() && gap < T::lit(SMOOTH_PHASE_GAP) {
-                        let reach = T::lit(4.0) * (gap + gap).sqrt();
-                        let c = if mu > T::zero() { reach } else { T::PI() - reach };
-                        if c > lo && c < hi {
-                            ends[parts - 1] = c;
-                            ends[parts] = hi;
-                            parts += 1;
-                            narrow[usize::from(mu < T::zero())] = gap < T::lit(PHASE_LOBE_GAP);
-                        }
-                    }
+            for (forward, gap, width) in self.phase_lobes(SMOOTH_PHASE_GAP) {
+                let reach = T::lit(4.0) * width;
+                let c = if forward { reach } else { T::PI() - reach };
+                if c > lo && c < hi {
+                    ends[parts - 1] = c;
+                    ends[parts] = hi;
+                    parts += 1;
+                    narrow[usize::from(!forward)] = gap < T::lit(PHASE_LOBE_GAP);
                 }
             }
             ends[..parts].sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
@@ -931,23 +929,25 @@ where
             };
             for count in RAY_NODES {
                 // (sampled in place: the pieces are a few hundred bytes each)
-                let passed = {
+                let (passed, worst) = {
                     let mut pieces = source.borrow_mut();
                     pieces.ends = ends;
                     for i in 0..parts {
                         pieces.parts[i].sample(count, starts[i], ends[i], map_of(i), ray);
                     }
+                    let used = &pieces.parts[..parts];
                     // (and e^{top} finite: a value beyond the range takes the rays one by one)
-                    pieces.parts[..parts].iter().all(|p| p.estimate <= bound && p.exp_top.is_finite())
+                    let passed = used.iter().all(|p| p.estimate <= bound && p.exp_top.is_finite());
+                    let worst = used.iter().fold(T::zero(), |m, p| m.max(p.estimate));
+                    if passed {
+                        pieces.count = parts;
+                    }
+                    (passed, worst)
                 };
                 if passed {
                     // the outer integral to what the interpolant leaves: L_a within a relative
                     // `spent`, the quadrature within ε of that, (1 + spent)(1 + ε) − 1 ≤ tolerance
-                    let spent = {
-                        let mut pieces = source.borrow_mut();
-                        pieces.count = parts;
-                        pieces.parts[..parts].iter().fold(T::zero(), |m, p| m.max(p.estimate)).exp_m1()
-                    };
+                    let spent = worst.exp_m1();
                     let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], (tolerance - spent) / (T::one() + spent), max_panels);
                     return (value, rays.get());
                 }
