@@ -850,6 +850,21 @@ where
         // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
         // (the end is the normal's turning point itself, so that no sliver is left beside it)
         let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
+        // where lobe_arcs takes a Phong lobe (the default path): on the arc at γ the lobe is at
+        // most cosⁿ(γ − α_r) of its peak (the largest r·ω there), and where that is below
+        // LOBE_FLOOR, as lobe_arcs ends it within an arc, no outer node is spent; the range's
+        // ends are then smooth cuts (docs/DESIGN.md §11)
+        let (lobe_lo, lobe_hi) = match self.brdf {
+            Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => {
+                let reach = (T::lit(LOBE_FLOOR).ln() / exponent).exp().acos();
+                (alpha_r - reach, alpha_r + reach)
+            }
+            _ => (-T::infinity(), T::infinity()),
+        };
+        let (lo, hi) = (lo.max(lobe_lo), hi.min(lobe_hi));
+        if !(hi > lo) {
+            return (T::zero(), rays.get());
+        }
         let mut values = cuts;
         let (edges, n): ([T; 20], usize) = edges_between(lo, hi, &mut values[..count]);
         // the inner edges where no arc opens or closes (the range's ends are arcs' ends)
@@ -857,6 +872,7 @@ where
         for (i, flag) in smooth.iter_mut().enumerate().take(n).skip(1) {
             *flag = !cuts[..count].iter().zip(&kinds).any(|(&c, &k)| c == edges[i] && k == Cut::Kink);
         }
+        (smooth[0], smooth[n]) = (lo == lobe_lo, hi == lobe_hi);
         let mut knots = [T::zero(); 20];
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
@@ -877,6 +893,8 @@ where
         // will do, 5 points
         let lobe_cuts = cuts[..count].iter().zip(&kinds).filter(|&(_, &k)| k == Cut::Lobe).map(|(&c, _)| c);
         let (first, last) = (lobe_cuts.clone().fold(T::infinity(), T::min), lobe_cuts.fold(-T::infinity(), T::max));
+        // (and from the range's ends where the lobe ends them)
+        let (first, last) = if lobe_lo.is_finite() { (first.min(lobe_lo), last.max(lobe_hi)) } else { (first, last) };
         let coarse = crate::extended::segment_rule(tolerance);
         let rule_of = |a: T, _b: T| {
             let i = a.to_usize().unwrap_or(0).min(n - 1);
