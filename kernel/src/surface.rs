@@ -688,15 +688,22 @@ where
                 }
                 sorted_circle(&mut edges[..count], phi_n)
             };
-            // f_r (n·ω)⁺ at φ: its sign is constant between the edges, so a panel where it
-            // vanishes at the middle is skipped
+            // f_r (n·ω)⁺ at φ
             let geometric_at = |sc: (T, T)| cosine(sc) * self.brdf_at(&fr, direction(cos_g, sin_g, sc));
             let geometric = |phi: T| geometric_at(phi.sin_cos());
+            // n·ω and a Phong lobe's r·ω keep their signs between the edges, so a panel where
+            // either is not positive at the middle is skipped — their signs, not f_r (n·ω)⁺
+            // itself, whose power (r·ω)ⁿ may underflow to 0 at the middle of a panel whose
+            // end holds the lobe's peak
+            let open = |phi: T| {
+                let sc = phi.sin_cos();
+                cosine(sc) > T::zero() && (!phong || dot(fr.r_dir, direction(cos_g, sin_g, sc)) > T::zero())
+            };
             let inner_sum = |f: &mut dyn FnMut(T) -> T| -> T {
                 let mut sum = T::zero();
                 for pair in circle().windows(2) {
                     let (a, b) = (pair[0], pair[1]);
-                    if !(b > a) || !(geometric((a + b) * T::lit(0.5)) > T::zero()) {
+                    if !(b > a) || !open((a + b) * T::lit(0.5)) {
                         continue;
                     }
                     sum = sum + adaptive(rule, &mut |x| f(x), &[a, b], inner_tolerance, max_panels).0;
