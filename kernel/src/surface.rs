@@ -30,7 +30,8 @@
 //! [`crate::extended`]), the inner to a tenth of the outer tolerance, each ray integral
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels; at
 //! loose tolerances a light without an axis in a thin medium may give `L_a(γ)` from an
-//! interpolant of the logarithm of a few rays instead (`RayInterpolant`).
+//! interpolant of the logarithm of a few rays instead (`RayInterpolant`), and a narrow Phong
+//! lobe over it is then integrated about its own axis (`SurfaceScene::mirror_cone`).
 
 use core::cell::{Cell, RefCell};
 
@@ -554,6 +555,77 @@ where
         }
     }
 
+    /// A Phong point's air-light about the lobe's own axis `r` (docs/DESIGN.md §11), from the
+    /// rays' interpolant `pieces` of a light without an axis, where the lobe above `1e-3 ·
+    /// tolerance` of its peak — the cone `θ ≤ reach` about `r` — lies inside the hemisphere and
+    /// at least `1.5·reach` from `±ℓ` (where `L_a` is not smooth on the sphere), and where the
+    /// rules' estimates meet `tolerance` (relative); else `None`. With `ω = cos θ r + sin θ (cos φ e₁ +
+    /// sin φ e₂)`, `e₁` towards `ℓ`, and `z = −(n + 1) ln cos θ`,
+    /// `∫ cosⁿθ (n·ω) L_a sin θ dθ dφ = (2π/(n + 1)) ∫_0^∞ e^{−z} Ḡ(z) dz`, `Ḡ` the mean over `φ`
+    /// of `(n·ω) L_a` — smooth in `z` (even in `θ`) and periodic in `φ`: Gauss–Laguerre in `z`
+    /// (6 nodes, else 12; the estimate from the last two coefficients of the discrete Laguerre
+    /// transform, twice them, against the two before), the trapezoid rule in `φ` (8 nodes,
+    /// folded to 5 since `L_a` is even in `φ` and the odd part of `n·ω` cancels; the estimate
+    /// its difference from the 4-node rule on the same nodes).
+    fn mirror_cone(&self, fr: &Frame<T>, pieces: &RayPieces<T>, tolerance: T) -> Option<T> {
+        let Brdf::Phong { k_s, exponent, .. } = self.brdf else {
+            return None;
+        };
+        let reach = ((tolerance * T::lit(1e-3)).ln() / exponent).exp().acos();
+        let (cos_r, sin_r) = (fr.r.0, fr.r.1);
+        let alpha_r = sin_r.atan2(cos_r);
+        let n = normalize(T::vec3_to_array(self.surface.normal));
+        // n·r and n·e₁, e₁ = (ℓ − cos α_r r)/sin α_r
+        let n_r = dot(n, fr.r_dir);
+        let n_e1 = (fr.n.0 - cos_r * n_r) / sin_r;
+        // the cone inside the hemisphere (n·ω ≥ cos(β + reach) > 0, β the angle from n to r)
+        // and at least 1.5·reach from ±ℓ
+        let beta = n_r.max(-T::one()).min(T::one()).acos();
+        let margin = T::lit(1.5) * reach;
+        if !(beta + reach < T::FRAC_PI_2() && alpha_r >= margin && T::PI() - alpha_r >= margin && pieces.count > 0) {
+            return None;
+        }
+        let (half, two) = (T::lit(0.5), T::lit(2.0));
+        // cos φ at φ = 0, π/4, π/2, 3π/4, π and the folded trapezoid weights, 8 and 4 nodes
+        let cos_phi = [T::one(), T::FRAC_1_SQRT_2(), T::zero(), -T::FRAC_1_SQRT_2(), -T::one()];
+        let (fine, coarse) = ([0.125, 0.25, 0.25, 0.25, 0.125], [0.25, 0.0, 0.5, 0.0, 0.25]);
+        let scale = T::one() / (exponent + T::one());
+        let mean = |z: T| -> (T, T) {
+            // cos θ = e^{−z/(n+1)}, sin θ = √(1 − cos²θ) = √(−expm1(−2z/(n+1)))
+            let cos_t = (-z * scale).exp();
+            let sin_t = (-(-(z + z) * scale).exp_m1()).max(T::zero()).sqrt();
+            let (mut f8, mut f4) = (T::zero(), T::zero());
+            for (j, &c) in cos_phi.iter().enumerate() {
+                let cos_g = (cos_t * cos_r + sin_t * c * sin_r).max(-T::one()).min(T::one());
+                let cosine = (cos_t * n_r + sin_t * c * n_e1).max(T::zero());
+                // L_a = e^q / sin(γ/2), sin(γ/2) = √((1 − cos γ)/2)
+                let value = cosine * pieces.exp_at(cos_g.acos()) / ((T::one() - cos_g) * half).sqrt();
+                f8 = f8 + T::lit(fine[j]) * value;
+                f4 = f4 + T::lit(coarse[j]) * value;
+            }
+            (f8, (f8 - f4).abs())
+        };
+        for count in [6, 12] {
+            let (rule, transform) = crate::expansion::laguerre_table::rule(count)?;
+            let mut values = [T::zero(); 12];
+            let (mut sum, mut phi_error) = (T::zero(), T::zero());
+            for (i, &(z, w)) in rule.iter().enumerate() {
+                let (v, e) = mean(T::lit(z));
+                values[i] = v;
+                sum = sum + T::lit(w) * v;
+                phi_error = phi_error + T::lit(w) * e;
+            }
+            // the last four coefficients a_k = Σ_i w_i L_k(z_i) Ḡ(z_i)
+            let coefficient = |k: usize| (0..count).fold(T::zero(), |acc, i| acc + T::lit(transform[k * count + i]) * values[i]).abs();
+            let (recent, earlier) = (coefficient(count - 1) + coefficient(count - 2), coefficient(count - 3) + coefficient(count - 4));
+            let z_error = if recent < earlier { two * recent } else { T::infinity() };
+            if z_error + phi_error <= tolerance * sum.abs() {
+                return Some(k_s * (exponent + two) * scale * sum);
+            }
+        }
+        None
+    }
+
     /// The hemisphere's integral to `tolerance` (the outer one; the inner ones to a tenth),
     /// at most `max_panels` panels each, every ray integral by `ray_integral`, a Phong lobe lit by
     /// a light without an axis by [`lobe_arcs`] with the `lobe` rule if one is given (else by
@@ -861,13 +933,11 @@ where
         // most cosⁿ(γ − α_r) of its peak (the largest r·ω there), and where that is below
         // LOBE_FLOOR, as lobe_arcs ends it within an arc, no outer node is spent; the range's
         // ends are then smooth cuts (docs/DESIGN.md §11)
-        let (lobe_lo, lobe_hi) = match self.brdf {
-            Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => {
-                let reach = (T::lit(LOBE_FLOOR).ln() / exponent).exp().acos();
-                (alpha_r - reach, alpha_r + reach)
-            }
-            _ => (-T::infinity(), T::infinity()),
+        let lobe_reach = match self.brdf {
+            Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => (T::lit(LOBE_FLOOR).ln() / exponent).exp().acos(),
+            _ => T::infinity(),
         };
+        let (lobe_lo, lobe_hi) = (alpha_r - lobe_reach, alpha_r + lobe_reach);
         let (lo, hi) = (lo.max(lobe_lo), hi.min(lobe_hi));
         if !(hi > lo) {
             return (T::zero(), rays.get());
@@ -973,7 +1043,12 @@ where
                     // the outer integral to what the interpolant leaves: L_a within a relative
                     // `spent`, the quadrature within ε of that, (1 + spent)(1 + ε) − 1 ≤ tolerance
                     let spent = worst.exp_m1();
-                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], (tolerance - spent) / (T::one() + spent), max_panels);
+                    let left = (tolerance - spent) / (T::one() + spent);
+                    // a narrow Phong lobe clear of the horizon and of ±ℓ: about its own axis
+                    if let Some(value) = self.mirror_cone(&fr, &source.borrow(), left) {
+                        return (value, rays.get());
+                    }
+                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels);
                     return (value, rays.get());
                 }
             }

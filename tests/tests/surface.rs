@@ -213,6 +213,63 @@ fn omni_lights_interpolate_the_rays() {
     }
 }
 
+/// A narrow Phong lobe lit by a light without an axis in a thin medium, clear of the horizon and
+/// of the light's direction, is integrated about its own axis (Gauss–Laguerre in `−(n + 1) ln
+/// cos θ`, the trapezoid rule about the axis: docs/DESIGN.md §11) where its estimates allow, else
+/// in the light's frame: over 300 random such points (`n` 20 to 1000, isotropic and
+/// Henyey–Greenstein `g` 0.3, 0.8, −0.5, `σt·d` 0.01 to 3), at outer tolerances 1e-1 and 5e-2,
+/// f64 and f32, each within the tolerance of the default path's value (the light's frame, a ray
+/// at every node, to 1e-10; tests/reference/surface.jsonl checks that path) — relative to it, or
+/// to 1e-10 (f64) and 1e-4 (f32) of the same integral with the lobe's peak for its BRDF, where
+/// the lobe leaves the value many decades below.
+#[test]
+fn narrow_phong_lobes_about_their_axis() {
+    let mut rng = airlight_tests::Rng(20261206);
+    let mut unit = || loop {
+        let v = DVec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
+        if v.length() > 0.1 && v.length() < 1.0 {
+            break v.normalize();
+        }
+    };
+    let mut draws = airlight_tests::Rng(7);
+    let mut worst = [0.0f64; 2];
+    for i in 0..300 {
+        let (normal, view, to_light) = (unit(), unit(), unit());
+        let view = if view.dot(normal) < 0.0 { -view } else { view };
+        let to_light = if to_light.dot(normal) < 0.0 && i % 4 != 0 { -to_light } else { to_light };
+        let n = [20.0, 50.0, 100.0, 200.0, 500.0, 1000.0][i % 6];
+        let phase = [AnyPhase::Isotropic, AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: 0.3 }), AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: 0.8 }), AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: -0.5 })][i % 4];
+        let d = draws.log_range(0.3, 10.0);
+        let sigma_t = draws.log_range(0.01, 3.0) / d;
+        let medium = Medium { sigma_s: sigma_t * draws.range(0.2, 1.0), sigma_t };
+        let light = PointLight { position: to_light * d, intensity: 10.0, distribution: AnyDistribution::Omni };
+        let surface = Surface { position: DVec3::ZERO, normal };
+        let point = SurfaceScene::new(surface, Brdf::Phong { k_s: 0.5, exponent: n, view }, light, medium, phase).unwrap();
+        let peak = SurfaceScene::new(surface, Brdf::Lambert { albedo: 0.5 * (n + 2.0) / 2.0 }, light, medium, phase).unwrap();
+        let (exact, scale) = (point.air_light(), peak.air_light());
+        let single = SurfaceScene::<f32, _, _>::new(
+            Surface { position: airlight::glam::Vec3::ZERO, normal: normal.as_vec3() },
+            Brdf::Phong { k_s: 0.5, exponent: n as f32, view: view.as_vec3() },
+            PointLight { position: light.position.as_vec3(), intensity: 10.0, distribution: AnyDistribution::Omni },
+            Medium { sigma_s: medium.sigma_s as f32, sigma_t: medium.sigma_t as f32 },
+            match phase {
+                AnyPhase::HenyeyGreenstein(h) => AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: h.g as f32 }),
+                _ => AnyPhase::Isotropic,
+            },
+        )
+        .unwrap();
+        for (k, tolerance) in [1e-1, 5e-2].into_iter().enumerate() {
+            let got64 = point.air_light_counted(tolerance).0;
+            let got32 = single.air_light_counted(tolerance as f32).0 as f64;
+            let e64 = (got64 - exact).abs() / exact.max(1e-10 * scale);
+            let e32 = (got32 - exact).abs() / exact.max(1e-4 * scale);
+            worst[k] = worst[k].max(e64).max(e32);
+            assert!(e64 <= tolerance && e32 <= tolerance, "n {n}, point {i}, tolerance {tolerance:e}: f64 {got64:e} ({e64:.1e}), f32 {got32:e} ({e32:.1e}), default {exact:e}");
+        }
+    }
+    println!("largest error at 1e-1 {:.2e}, at 5e-2 {:.2e}", worst[0], worst[1]);
+}
+
 /// A phase function's lobe narrower than `PHASE_LOBE_GAP` allows (the `|g| ≥ 0.9` records of
 /// tests/reference/surface.jsonl lit by a light without an axis) is cut at its extent, so the
 /// loosest tolerance reaches the speed target's level, 1e-3 (the surface bench's pick): uncut, a Lambertian point in
