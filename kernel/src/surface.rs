@@ -929,10 +929,10 @@ where
         // cos(γ − α_n)): beyond it every arc is empty, and no outer node is spent there
         // (the end is the normal's turning point itself, so that no sliver is left beside it)
         let (lo, hi) = if fr.n.0 < T::zero() { (normal_turns[0], T::PI()) } else { (T::zero(), normal_turns[1]) };
-        // where lobe_arcs takes a Phong lobe (the default path): on the arc at γ the lobe is at
-        // most cosⁿ(γ − α_r) of its peak (the largest r·ω there), and where that is below
-        // LOBE_FLOOR, as lobe_arcs ends it within an arc, no outer node is spent; the range's
-        // ends are then smooth cuts (docs/DESIGN.md §11)
+        // a Phong lobe from the tolerance at which lobe_arcs serves on (the default path, any
+        // light): on the arc at γ the lobe is at most cosⁿ(γ − α_r) of its peak (the largest r·ω
+        // there), and where that is below LOBE_FLOOR, as lobe_arcs ends it within an arc, no
+        // outer node is spent; the range's ends are then smooth cuts (docs/DESIGN.md §11)
         let lobe_reach = match self.brdf {
             Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => (T::lit(LOBE_FLOOR).ln() / exponent).exp().acos(),
             _ => T::infinity(),
