@@ -116,14 +116,16 @@ pub const PLAIN_FROM: usize = 6;
 fn bottom_up<T: Real>(z: C<T>, n: usize, mut t: C<T>) -> C<T> {
     let one = C::new(T::one(), T::zero());
     let two = T::lit(2.0);
-    for k in (1..=n).rev() {
-        let kf = T::from(k).unwrap();
+    // k as a float counted down (exact: n is far below 2^24), not converted at each level
+    let mut kf = T::from(n).unwrap();
+    for _ in (1..=n).rev() {
         let ratio = if n >= PLAIN_FROM {
             t.conj() * (kf * kf / t.norm_sqr())
         } else {
             cdiv(C::new(kf * kf, T::zero()), t)
         };
         t = z + (two * kf - T::one()) - ratio;
+        kf = kf - T::one();
     }
     cdiv(one, t)
 }
