@@ -52,7 +52,7 @@
 
 use crate::angle::{Plan, Route};
 use crate::combined::{weighted, Physics};
-use crate::expansion::laguerre_table;
+use crate::expansion::{laguerre_table, last_laguerre_coefficients};
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
 use crate::panels::{power, Control, ALIASING_MARGIN};
@@ -180,12 +180,7 @@ where
         mass = mass + w * minus[i];
         f_max = larger(f_max, f.abs());
     }
-    let mut last = [T::zero(); 4];
-    for (j, a) in last.iter_mut().enumerate() {
-        let row = &transform[(N - 4 + j) * N..(N - 3 + j) * N];
-        *a = row.iter().zip(samples.iter()).fold(T::zero(), |acc, (&t, &s)| acc + T::lit(t) * s);
-    }
-    Sums { value, last, mass, f_max }
+    Sums { value, last: last_laguerre_coefficients(transform, &samples), mass, f_max }
 }
 
 #[cfg(test)]

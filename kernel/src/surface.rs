@@ -310,6 +310,12 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
     sum
 }
 
+/// The angle from a Phong lobe's axis at which `cosⁿθ` falls to `floor` of its peak:
+/// `arccos(floor^{1/n})` (`π/2` for `n = 0`).
+fn lobe_cone<T: Real>(floor: T, exponent: T) -> T {
+    (floor.ln() / exponent).exp().acos()
+}
+
 /// The arc `|φ − φ_c| < ψ` where `A + B cos(φ − φ_c) > 0` (`A = cos α cos γ`, `B = sin α sin γ`),
 /// as `ψ ∈ [0, π]`, and `sin ψ` (`√((1 − x)(1 + x))`, `x = −A/B`, without the sine of the arc
 /// cosine; 0 where the arc is the whole circle or empty).
@@ -571,7 +577,7 @@ where
         let Brdf::Phong { k_s, exponent, .. } = self.brdf else {
             return None;
         };
-        let reach = ((tolerance * T::lit(1e-3)).ln() / exponent).exp().acos();
+        let reach = lobe_cone(tolerance * T::lit(1e-3), exponent);
         let (cos_r, sin_r) = (fr.r.0, fr.r.1);
         let alpha_r = sin_r.atan2(cos_r);
         let n = normalize(T::vec3_to_array(self.surface.normal));
@@ -616,8 +622,8 @@ where
                 phi_error = phi_error + T::lit(w) * e;
             }
             // the last four coefficients a_k = Σ_i w_i L_k(z_i) Ḡ(z_i)
-            let coefficient = |k: usize| (0..count).fold(T::zero(), |acc, i| acc + T::lit(transform[k * count + i]) * values[i]).abs();
-            let (recent, earlier) = (coefficient(count - 1) + coefficient(count - 2), coefficient(count - 3) + coefficient(count - 4));
+            let c = crate::expansion::last_laguerre_coefficients(transform, &values[..count]);
+            let (recent, earlier) = (c[3].abs() + c[2].abs(), c[1].abs() + c[0].abs());
             let z_error = if recent < earlier { two * recent } else { T::infinity() };
             if z_error + phi_error <= tolerance * sum.abs() {
                 return Some(k_s * (exponent + two) * scale * sum);
@@ -934,7 +940,7 @@ where
         // there), and where that is below LOBE_FLOOR, as lobe_arcs ends it within an arc, no
         // outer node is spent; the range's ends are then smooth cuts (docs/DESIGN.md §11)
         let lobe_reach = match self.brdf {
-            Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => (T::lit(LOBE_FLOOR).ln() / exponent).exp().acos(),
+            Brdf::Phong { exponent, .. } if default_path && lobe.is_some() => lobe_cone(T::lit(LOBE_FLOOR), exponent),
             _ => T::infinity(),
         };
         let (lobe_lo, lobe_hi) = (alpha_r - lobe_reach, alpha_r + lobe_reach);

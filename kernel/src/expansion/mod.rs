@@ -22,6 +22,17 @@ pub use jet::Jet;
 use crate::real::Real;
 use crate::scalar::Scalar;
 
+/// The last four coefficients `a_{N−4} … a_{N−1}` of the discrete Laguerre transform of an
+/// `N`-node rule's samples `g_i` ([`laguerre_table`], whose row `k`, column `i` is
+/// `w_i L_k(x_i)`): `a_k = Σ_i w_i L_k(x_i) g_i`, the coefficients an error estimate reads.
+pub(crate) fn last_laguerre_coefficients<T: Real>(transform: &[f64], samples: &[T]) -> [T; 4] {
+    let n = samples.len();
+    core::array::from_fn(|j| {
+        let row = &transform[(n - 4 + j) * n..(n - 3 + j) * n];
+        row.iter().zip(samples).fold(T::zero(), |acc, (&t, &s)| acc + T::lit(t) * s)
+    })
+}
+
 /// How `F` is turned into a polynomial on each sub-interval.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Expansion {
