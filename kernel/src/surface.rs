@@ -408,15 +408,23 @@ where
     }
 
     /// Whether `ln(L_a(γ) sin(γ/2))` is predicted smooth enough on the outer range for
-    /// [`RayInterpolant`]'s few nodes: the medium thin over the light's distance (`σt·d ≤`
-    /// [`LAYER_FROM`]), or thicker in fog without a lobe that splits the range
-    /// ([`SMOOTH_PHASE_GAP`]), where [`Map::Layer`] grades the piece from the light's direction
-    /// to the layer there — while `e^{−σt·d}` is above the square root of the smallest normal
-    /// number (`σt·d` ≤ 354 in f64, 43 in f32), beyond which the rays' values underflow. A
-    /// prediction of cost only: the interpolant's estimate decides (docs/DESIGN.md §11).
+    /// [`RayInterpolant`]'s few nodes, and its rays cheaper than a ray at every outer node: the
+    /// medium thin over the light's distance (`σt·d ≤` [`LAYER_FROM`]); or thicker, where
+    /// [`Map::Layer`] grades the piece from the light's direction to the layer there, while
+    /// `e^{−σt·d}` is above the square root of the smallest normal number (`σt·d` ≤ 354 in f64,
+    /// 43 in f32; beyond it the rays' values underflow), in fog without a lobe that splits the
+    /// range ([`SMOOTH_PHASE_GAP`]), for a Phong point (its light's frame takes a ray at every
+    /// node of the pieces of its lobe) or for a Lambertian point in isotropic fog in f64 (in
+    /// anisotropic fog its 6 nodes failed on half of the random points of docs/DESIGN.md §11,
+    /// and in f32 a thick medium's ray costs about what the interpolant's exponentials do). A
+    /// prediction of cost only: the interpolant's estimate decides.
     fn smooth_rays(&self, d: T) -> bool {
         let depth = self.medium.sigma_t * d;
-        depth <= T::lit(LAYER_FROM) || (depth <= -T::min_positive_value().ln() * T::lit(0.5) && self.phase_lobes(SMOOTH_PHASE_GAP).next().is_none())
+        let graded = match self.brdf {
+            Brdf::Phong { .. } => true,
+            Brdf::Lambert { .. } => self.phase.is_isotropic() && T::epsilon() < T::lit(1e-10),
+        };
+        depth <= T::lit(LAYER_FROM) || (graded && depth <= -T::min_positive_value().ln() * T::lit(0.5) && self.phase_lobes(SMOOTH_PHASE_GAP).next().is_none())
     }
 
     /// The phase function's lobes at `μ = ±1` whose singularity lies less than `below` past it:
