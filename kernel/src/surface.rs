@@ -41,7 +41,7 @@ use crate::expansion::chebyshev_series;
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
-use crate::real::{exp_nonpositive_polynomial, sin_cos_half_turn, sin_cos_quarter, Real};
+use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, Real};
 use crate::panels::Control;
 use crate::combined::Physics;
 use crate::geometry::Canonical;
@@ -259,7 +259,7 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
     }
     let k = two * d / peak;
     let sin_gap = (gap * half).sin();
-    let log_peak = (-two * sin_gap * sin_gap).ln_1p();
+    let log_peak = ln_1p(-two * sin_gap * sin_gap);
     // where the lobe ends: s² = (1 − floor^{1/n})/k (n = 0: 1/k, its arc), at most 1
     let reach = if exponent > T::zero() { -(T::lit(LOBE_FLOOR).ln() / exponent).exp_m1() } else { T::one() };
     let s2 = if reach < k { reach / k } else { T::one() };
@@ -287,7 +287,7 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
         let clip = (even + odd).max(T::zero()) + (even - odd).max(T::zero());
         let fall = k * s * s;
         if fall < T::one() && clip > T::zero() {
-            clip * exp_nonpositive_polynomial(exponent * (log_peak + (-fall).ln_1p()))
+            clip * exp_nonpositive_polynomial(exponent * (log_peak + ln_1p(-fall)))
         } else {
             T::zero()
         }
