@@ -213,6 +213,39 @@ fn omni_lights_interpolate_the_rays() {
     }
 }
 
+/// A unit vector uniform on the sphere (rejection from the cube's shell `0.1 < |v| < 1`).
+fn random_unit(rng: &mut airlight_tests::Rng) -> DVec3 {
+    loop {
+        let v = DVec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
+        if v.length() > 0.1 && v.length() < 1.0 {
+            break v.normalize();
+        }
+    }
+}
+
+/// An omni-lit point in isotropic or Henyey–Greenstein fog, rounded to f32.
+fn single_precision(point: &SurfaceScene<f64, AnyDistribution<f64>, AnyPhase<f64>>) -> SurfaceScene<f32, AnyDistribution<f32>, AnyPhase<f32>> {
+    let (surface, light, medium) = (point.surface(), point.light(), point.medium());
+    assert!(matches!(light.distribution, AnyDistribution::Omni), "an omni light only");
+    let brdf = match *point.brdf() {
+        Brdf::Phong { k_s, exponent, view } => Brdf::Phong { k_s: k_s as f32, exponent: exponent as f32, view: view.as_vec3() },
+        Brdf::Lambert { albedo } => Brdf::Lambert { albedo: albedo as f32 },
+    };
+    let phase = match *point.phase() {
+        AnyPhase::HenyeyGreenstein(h) => AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: h.g as f32 }),
+        AnyPhase::Isotropic => AnyPhase::Isotropic,
+        ref other => panic!("no f32 rounding here for {other:?}"),
+    };
+    SurfaceScene::new(
+        Surface { position: surface.position.as_vec3(), normal: surface.normal.as_vec3() },
+        brdf,
+        PointLight { position: light.position.as_vec3(), intensity: light.intensity as f32, distribution: AnyDistribution::Omni },
+        Medium { sigma_s: medium.sigma_s as f32, sigma_t: medium.sigma_t as f32 },
+        phase,
+    )
+    .unwrap()
+}
+
 /// In a medium thick over the light's distance (`σt·d > 3`) and fog without a narrow lobe, a
 /// Phong point lit by a light without an axis interpolates its rays too, and so does a
 /// Lambertian point in isotropic fog in f64, the piece from the light's direction graded to the
@@ -233,12 +266,7 @@ fn thick_media_grade_the_layer() {
         assert!(rays64 <= 6 && e64 <= 1e-3 && e32 <= 1e-3, "{}: rays {rays64} / {rays32}, errors {e64:.1e} / {e32:.1e}", v["medium"]);
     }
     let mut rng = airlight_tests::Rng(20261207);
-    let mut unit = || loop {
-        let v = DVec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
-        if v.length() > 0.1 && v.length() < 1.0 {
-            break v.normalize();
-        }
-    };
+    let mut unit = || random_unit(&mut rng);
     let mut draws = airlight_tests::Rng(11);
     let (mut worst, mut interpolated) = ([0.0f64; 2], 0);
     for i in 0..200 {
@@ -255,20 +283,7 @@ fn thick_media_grade_the_layer() {
         let surface = Surface { position: DVec3::ZERO, normal };
         let point = SurfaceScene::new(surface, brdf, light, medium, phase).unwrap();
         let (exact, scale) = (point.air_light(), SurfaceScene::new(surface, Brdf::Lambert { albedo: 10.0 }, light, medium, phase).unwrap().air_light());
-        let single = SurfaceScene::<f32, _, _>::new(
-            Surface { position: airlight::glam::Vec3::ZERO, normal: normal.as_vec3() },
-            match brdf {
-                Brdf::Phong { k_s, exponent, view } => Brdf::Phong { k_s: k_s as f32, exponent: exponent as f32, view: view.as_vec3() },
-                Brdf::Lambert { albedo } => Brdf::Lambert { albedo: albedo as f32 },
-            },
-            PointLight { position: light.position.as_vec3(), intensity: 10.0, distribution: AnyDistribution::Omni },
-            Medium { sigma_s: medium.sigma_s as f32, sigma_t: medium.sigma_t as f32 },
-            match phase {
-                AnyPhase::HenyeyGreenstein(h) => AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: h.g as f32 }),
-                _ => AnyPhase::Isotropic,
-            },
-        )
-        .unwrap();
+        let single = single_precision(&point);
         for (k, tolerance) in [1e-1, 5e-2].into_iter().enumerate() {
             let (got64, rays) = point.air_light_counted(tolerance);
             interpolated += usize::from(rays <= 18);
@@ -298,12 +313,7 @@ fn thick_media_grade_the_layer() {
 #[test]
 fn narrow_phong_lobes_about_their_axis() {
     let mut rng = airlight_tests::Rng(20261206);
-    let mut unit = || loop {
-        let v = DVec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
-        if v.length() > 0.1 && v.length() < 1.0 {
-            break v.normalize();
-        }
-    };
+    let mut unit = || random_unit(&mut rng);
     let mut draws = airlight_tests::Rng(7);
     let mut worst = [0.0f64; 2];
     for i in 0..300 {
@@ -320,17 +330,7 @@ fn narrow_phong_lobes_about_their_axis() {
         let point = SurfaceScene::new(surface, Brdf::Phong { k_s: 0.5, exponent: n, view }, light, medium, phase).unwrap();
         let peak = SurfaceScene::new(surface, Brdf::Lambert { albedo: 0.5 * (n + 2.0) / 2.0 }, light, medium, phase).unwrap();
         let (exact, scale) = (point.air_light(), peak.air_light());
-        let single = SurfaceScene::<f32, _, _>::new(
-            Surface { position: airlight::glam::Vec3::ZERO, normal: normal.as_vec3() },
-            Brdf::Phong { k_s: 0.5, exponent: n as f32, view: view.as_vec3() },
-            PointLight { position: light.position.as_vec3(), intensity: 10.0, distribution: AnyDistribution::Omni },
-            Medium { sigma_s: medium.sigma_s as f32, sigma_t: medium.sigma_t as f32 },
-            match phase {
-                AnyPhase::HenyeyGreenstein(h) => AnyPhase::HenyeyGreenstein(airlight::phase::HenyeyGreenstein { g: h.g as f32 }),
-                _ => AnyPhase::Isotropic,
-            },
-        )
-        .unwrap();
+        let single = single_precision(&point);
         for (k, tolerance) in [1e-1, 5e-2].into_iter().enumerate() {
             let got64 = point.air_light_counted(tolerance).0;
             let got32 = single.air_light_counted(tolerance as f32).0 as f64;
