@@ -1250,8 +1250,9 @@ impl<T: Real> RayInterpolant<T> {
         let s = match self.map {
             Map::Linear => x,
             Map::Squared => x.sqrt(),
-            // 2 asinh(√y) = 2 ln(√y + √(1 + y)), y = (γ − lo)/near (within ε absolutely in
-            // `s`, as the rounding of γ; the library's asinh took 3× the time in f32)
+            // 2 asinh(√y) = 2 ln(√y + √(1 + y)), y = (γ − lo)/near (the logarithm within ε
+            // absolutely, so `s` within a few `ε/rate`; with the library's asinh an f32
+            // `lambert_thick` point took 2 141 ns against 1 766)
             Map::Layer { near, rate } => {
                 let y = (gamma - self.lo).max(T::zero()) / near;
                 ((y.sqrt() + (y + T::one()).sqrt()).ln() * T::lit(2.0) / rate).min(T::one())
