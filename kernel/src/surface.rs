@@ -1123,8 +1123,8 @@ pub const PHASE_LOBE_GAP: f64 = 0.01;
 /// The optical distance `σt·d` to the light beyond which [`RayInterpolant`] maps a piece from
 /// the light's direction by [`Map::Layer`], graded to the layer of width `1/(σt·d)` there,
 /// instead of [`Map::Squared`]: on tests/reference/surface.jsonl the points of `σt·d` 2.0 and
-/// 2.8 pass at 6 nodes squared, those of 5.6–17 only at 12 (and with a ray at every outer node,
-/// 14 rays, instead), graded at 6; below it the grading cost 6 nodes more often than it saved
+/// 2.8 pass at 6 nodes squared, those of 5.6–17 only at 12 (so they took a ray at every outer
+/// node, 14, instead), graded at 6; below it the grading cost 6 nodes more often than it saved
 /// (docs/DESIGN.md §11).
 const LAYER_FROM: f64 = 3.0;
 
@@ -1174,7 +1174,8 @@ const SMOOTH_PHASE_GAP: f64 = 0.1;
 /// `sin_cos_quarter` in the lower half and by symmetry in the upper; the series by
 /// `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 +
 /// τ)/2` — or its square where the range starts at `γ = 0`, where `L_a sin γ` has a `γ ln γ`
-/// term (the ray passing the light, scaled by `σt·d`). `estimate`: the interpolant's largest
+/// term (the ray passing the light, scaled by `σt·d`), graded to the layer there in a thick
+/// medium, or geometric beyond a narrow phase lobe ([`Map`]). `estimate`: the interpolant's largest
 /// error, `2 Σ_{k ≥ M} |c_k|` (Trefethen, Approximation Theory and Approximation Practice, Thm.
 /// 4.2) with the tail summed from the last two coefficients, `last`, at the decay they show but
 /// at least `M/8` of them (an algebraic tail's; `∞` where they fall by less than half from the
