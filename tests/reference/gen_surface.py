@@ -399,6 +399,28 @@ def scenes():
     brdf = {"kind": "phong", "k_s": f32(0.5), "exponent": f32(200), "view": f32v([0.4800154600048302, -0.8282420150061308, -0.289137203996538])}
     out.append(rec("phong", 4.227641570555167, 0.10149658089770577, brdf, phase=hg(0.8), normal=[0.9946258620707324, -0.09965683633554595, 0.02806972517931515],
                    light_dir=[0.9926508176418308, 0.06650704566422262, 0.1010997878930601]))
+
+    # lobes narrower than the class above (n = 500, 1000) clear of the horizon and the light,
+    # which the kernel integrates about their own axis at loose tolerances, and a Phong point in
+    # a thick medium (σt·d = 10), whose rays it interpolates graded to the layer at the light's
+    # direction (docs/DESIGN.md §11); each placed from a seed of its own, so that the records
+    # above stay as they were
+    def placed(category, d, st, brdf, phase, light_dir, seed):
+        own = random.Random(seed)
+        s = f32v([own.uniform(-5, 5) for _ in range(3)])
+        p = f32v([s[i] + d * light_dir[i] for i in range(3)])
+        return {
+            "category": category,
+            "surface": {"position": s, "normal": f32v([0.0, 0.0, 1.0]), "brdf": brdf},
+            "medium": {"sigma_s": f32(st * own.uniform(0.3, 1.0)), "sigma_t": f32(st)},
+            "light": {"position": p, "intensity": f32(own.uniform(1, 100)), "distribution": iso},
+            "phase": phase,
+        }
+
+    phong = lambda k, n, view: {"kind": "phong", "k_s": f32(k), "exponent": f32(n), "view": f32v(list(unit(view)))}
+    out.append(placed("phong_narrow", 2.0, 0.05, phong(0.6, 500, [0.5, 0.0, 0.866]), iso, list(unit([-0.2, 0.8, 0.6])), 1))
+    out.append(placed("phong_narrow", 3.0, 0.2, phong(0.4, 1000, [0.3, -0.4, 0.866]), hg(0.3), list(unit([0.7, 0.3, 0.65])), 2))
+    out.append(placed("phong_thick", 2.0, 5.0, phong(0.5, 40, [0.4, 0.2, 0.9]), iso, list(unit([-0.3, 0.5, 0.8])), 3))
     return out
 
 

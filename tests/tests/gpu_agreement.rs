@@ -395,9 +395,10 @@ fn eval_runs_segment_lights_on_the_gpu() {
 
 /// The surface points of tests/reference/surface.jsonl lit by omni lights — Lambertian (thin and
 /// thick media, grazing normals, lights close to the surface, HG g from −0.7 to 0.95) and Phong
-/// (exponents 1 to 200): the WGSL, SPIR-V, GLSL and HLSL compute shaders at 8 and 12 nodes agree
-/// with the f32 CPU kernel computing the same method (`SurfaceScene::air_light_panels_counted`
-/// with the shaders' control, `SHADER_SURFACE_PANELS` or `SHADER_PHONG_PANELS`) by the criterion
+/// (exponents 1 to 1000, one in a thick medium): the WGSL, SPIR-V, GLSL and HLSL compute
+/// shaders at 8 and 12 nodes agree with the f32 CPU kernel computing the same method
+/// (`SurfaceScene::air_light_panels_counted` with the shaders' control, `SHADER_SURFACE_PANELS`
+/// or `SHADER_PHONG_PANELS`) by the criterion
 /// of the point light, and are within 1e-4 of the nested-quadrature reference, relative to
 /// `max(|exact|, 1e-4·scale)` (the f32 target of surface radiance, docs/DESIGN.md §11). Invalid
 /// surface records (a light with an axis, a NaN albedo, an unknown surface kind, a negative Phong
