@@ -223,7 +223,8 @@ struct Frame<T> {
     /// The normal's and the mirror direction's `(cos α, sin α, φ)` about `ℓ`.
     n: (T, T, T),
     r: (T, T, T),
-    /// The mirror direction (Phong).
+    /// The unit normal and the mirror direction (Phong).
+    n_dir: [T; 3],
     r_dir: [T; 3],
 }
 
@@ -471,7 +472,7 @@ where
             }
             Brdf::Lambert { .. } => (n, normal),
         };
-        Frame { d, l, e1, e2, n: normal, r, r_dir }
+        Frame { d, l, e1, e2, n: normal, r, n_dir: n, r_dir }
     }
 
     /// Direct + air-light radiance leaving the surface towards the eye: the surface term of
@@ -571,8 +572,8 @@ where
         }
     }
 
-    /// A Phong point's air-light about the lobe's own axis `r` (docs/DESIGN.md §11), from the
-    /// rays' interpolant `pieces` of a light without an axis, where the lobe above `1e-3 ·
+    /// A Phong point's air-light about the lobe's own axis `r` (at `alpha_r` from `ℓ`;
+    /// docs/DESIGN.md §11), from the rays' interpolant `pieces` of a light without an axis, where the lobe above `1e-3 ·
     /// tolerance` of its peak — the cone `θ ≤ reach` about `r` — lies inside the hemisphere and
     /// at least `1.5·reach` from `±ℓ` (where `L_a` is not smooth on the sphere), and where the
     /// rules' estimates meet `tolerance` (relative); else `None`. With `ω = cos θ r + sin θ (cos φ e₁ +
@@ -583,16 +584,14 @@ where
     /// transform, twice them, against the two before), the trapezoid rule in `φ` (8 nodes,
     /// folded to 5 since `L_a` is even in `φ` and the odd part of `n·ω` cancels; the estimate
     /// its difference from the 4-node rule on the same nodes).
-    fn mirror_cone(&self, fr: &Frame<T>, pieces: &RayPieces<T>, tolerance: T) -> Option<T> {
+    fn mirror_cone(&self, fr: &Frame<T>, alpha_r: T, pieces: &RayPieces<T>, tolerance: T) -> Option<T> {
         let Brdf::Phong { k_s, exponent, .. } = self.brdf else {
             return None;
         };
         let reach = lobe_cone(tolerance * T::lit(1e-3), exponent);
         let (cos_r, sin_r) = (fr.r.0, fr.r.1);
-        let alpha_r = sin_r.atan2(cos_r);
-        let n = normalize(T::vec3_to_array(self.surface.normal));
         // n·r and n·e₁, e₁ = (ℓ − cos α_r r)/sin α_r
-        let n_r = dot(n, fr.r_dir);
+        let n_r = dot(fr.n_dir, fr.r_dir);
         let n_e1 = (fr.n.0 - cos_r * n_r) / sin_r;
         // the cone inside the hemisphere (n·ω ≥ cos(β + reach) > 0, β the angle from n to r)
         // and at least 1.5·reach from ±ℓ
@@ -909,8 +908,7 @@ where
                 }
             }
             // the great circles n·ω = 0 and r·ω = 0 cross at ±u, u ∥ n × r
-            let n = normalize(T::vec3_to_array(self.surface.normal));
-            let u = cross(n, fr.r_dir);
+            let u = cross(fr.n_dir, fr.r_dir);
             let norm = length(u);
             if norm > T::epsilon() {
                 let c = (dot(u, fr.l) / norm).max(-T::one()).min(T::one());
@@ -1064,7 +1062,7 @@ where
                     let spent = worst.exp_m1();
                     let left = (tolerance - spent) / (T::one() + spent);
                     // a narrow Phong lobe clear of the horizon and of ±ℓ: about its own axis
-                    if let Some(value) = self.mirror_cone(&fr, &source.borrow(), left) {
+                    if let Some(value) = self.mirror_cone(&fr, alpha_r, &source.borrow(), left) {
                         return (value, rays.get());
                     }
                     let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels);
