@@ -118,7 +118,7 @@ fn bottom_up<T: Real>(z: C<T>, n: usize, mut t: C<T>) -> C<T> {
     let two = T::lit(2.0);
     // k as a float counted down (exact: n is far below 2^24), not converted at each level
     let mut kf = T::from(n).unwrap();
-    for _ in (1..=n).rev() {
+    for _ in 0..n {
         let ratio = if n >= PLAIN_FROM {
             t.conj() * (kf * kf / t.norm_sqr())
         } else {
