@@ -173,8 +173,8 @@ fn loose_tolerances_hold() {
 }
 
 /// A point lit by a light without an axis in a medium thin over the light's distance (`σt·d ≤
-/// 3`; thicker, see `thick_media_grade_the_layer`) takes `L_a(γ)` from an interpolant of the logarithm of few rays, Lambertian and Phong, in
-/// pieces split at a narrow phase lobe (docs/DESIGN.md §11): at outer tolerances 1e-1 and 5e-2
+/// 3`; thicker, see `thick_media_grade_the_layer`) takes `L_a(γ)` from an interpolant of the
+/// logarithm of few rays, Lambertian and Phong, in pieces split at a narrow phase lobe (docs/DESIGN.md §11): at outer tolerances 1e-1 and 5e-2
 /// every `lambert_thin` point takes at most 12 rays — one Gauss–Kronrod 3/7 panel on each of the
 /// two pieces of its outer range, which a ray at every outer node costs, would be 14 — and so
 /// does every Phong point in isotropic fog, and at 1e-1 in Henyey–Greenstein `g = 0.8` fog too
