@@ -86,7 +86,7 @@ use crate::expansion::gauss_table;
 use crate::geometry::Canonical;
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::panels::{bernstein_rho, legendre_from, node_f64, order_step, power, tail_estimate, transform_noise, unit_weight_factor, Control, ALIASING_MARGIN};
-use crate::phase::PhaseFunction;
+use crate::phase::{PhaseFunction, Singularities};
 use crate::real::{atan2_upper, atan_nonnegative, exp_nonpositive, hypot1, larger, sin_cos_quarter, Real};
 use crate::scalar::Scalar;
 
@@ -150,18 +150,73 @@ where
     }
 }
 
-/// What every rule of the route shares: the panel in `θ` and the predicted rates, formed once
-/// for the first try's `N` nodes and the wider rules after it (`2N`, then `4N`).
+/// What the routes' predictions read before any angle is formed: the segment's ends in `Y`, `H`,
+/// the light's degree and the phase function's nearest forward singularity. Gauss–Laguerre in
+/// the optical depth ([`crate::depth`]), tried first in a thick medium, needs no more, so it
+/// pays for none of [`Plan`]'s angles and rates.
 #[derive(Clone, Copy, Debug)]
-pub struct Plan<T> {
+pub struct Ends<T> {
     /// `u0 = (t0 − x_h)/h`.
     pub(crate) u0: T,
+    /// `u1 = (t1 − x_h)/h` (`+∞` for an infinite ray).
+    u1: T,
     /// `H = σt h`.
     pub(crate) big_h: T,
     /// `Y` at the start.
     pub(crate) y0: T,
     /// `Y` at the end (`+∞` for an infinite ray).
     pub(crate) y1: T,
+    /// The light distribution's degree `p` in `c` (0 without an axis).
+    pub(crate) degree: T,
+    /// `μ* − 1` of the phase function's nearest forward singularity (`μ* > 1`; `+∞` without
+    /// one): its `Y = ±i·√((μ* − 1)/(μ* + 1))` bounds Gauss–Laguerre's rate ([`crate::depth`]).
+    pub(crate) forward_gap: T,
+    /// The phase function's singularities.
+    singular: Singularities<T>,
+}
+
+impl<T: Real> Ends<T> {
+    /// `None` where the route cannot be taken at all: `F` not analytic in `θ` or not known to
+    /// be, the light on the ray's line.
+    #[inline]
+    pub fn new<D, P>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>) -> Option<Self>
+    where
+        D: LightDistribution<T>,
+        P: PhaseFunction<T>,
+    {
+        let degree = whole_polynomial_degree(phys.light)?;
+        let singular = phys.phase.singularities()?;
+        let h = g.h;
+        if !(h > T::zero()) {
+            return None;
+        }
+        let (u0, u1) = (g.u(g.t0), g.u(g.t1));
+        // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
+        let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
+        let forward_gap = singular.cosines.iter().fold(T::infinity(), |m, &mu| if mu > T::one() && mu.is_finite() { m.min(mu - T::one()) } else { m });
+        Some(Ends { u0, u1, big_h: phys.sigma_t * h, y0: y_at(u0), y1: y_at(u1), degree: T::from(degree).unwrap(), forward_gap, singular })
+    }
+
+    /// Whether the medium is thick where the light is: `σt·h ≥ 1`, the light at least a mean
+    /// free path from the ray's line, so that the extinction falls by `e` or more within the
+    /// light's distance. There Gauss–Laguerre in the optical depth, whose weight the
+    /// extinction is, is tried first ([`crate::depth`]); in thinner media the weight is
+    /// smooth in the angle, and the light angle's first try passes where that one would.
+    pub fn thick(&self) -> bool {
+        self.big_h >= T::one()
+    }
+}
+
+/// What every rule of the route shares: the panel in `θ` and the predicted rates, formed once
+/// for the first try's `N` nodes and the wider rules after it (`2N`, then `4N`).
+#[derive(Clone, Copy, Debug)]
+pub struct Plan<T> {
+    /// `u0 = (t0 − x_h)/h`.
+    u0: T,
+    /// `H = σt h`.
+    big_h: T,
+    /// `Y` at the start.
+    y0: T,
     /// The ends' distances from the poles: `ψ0 = θ0 + π/2`, `ψ1 = π/2 − θ1` (`θ1` the cut end).
     psi0: T,
     psi1: T,
@@ -171,11 +226,6 @@ pub struct Plan<T> {
     lambda: T,
     /// The lobe's `√p·hw` (0 without an axis).
     lobe: T,
-    /// The light distribution's degree `p` in `c` (0 without an axis).
-    pub(crate) degree: T,
-    /// `μ* − 1` of the phase function's nearest forward singularity (`μ* > 1`; `+∞` without
-    /// one): its `Y = ±i·√((μ* − 1)/(μ* + 1))` bounds Gauss–Laguerre's rate ([`crate::depth`]).
-    pub(crate) forward_gap: T,
     /// `1/ρ` of the phase function's nearest singularity: `ρ` of the panel's Bernstein
     /// ellipse through it (0 without one).
     phase: T,
@@ -195,18 +245,14 @@ impl<T: Real> Plan<T> {
         D: LightDistribution<T>,
         P: PhaseFunction<T>,
     {
-        let degree = whole_polynomial_degree(phys.light)?;
-        let singular = phys.phase.singularities()?;
+        Self::from_ends(&Ends::new(g, phys)?, g, control)
+    }
+
+    /// [`Plan::new`] from the segment's [`Ends`], formed before.
+    #[inline(always)]
+    pub fn from_ends(ends: &Ends<T>, g: &Canonical<T>, control: &Control<T>) -> Option<Self> {
+        let Ends { u0, u1, big_h, y0, y1, degree, singular, .. } = *ends;
         let h = g.h;
-        if !(h > T::zero()) {
-            return None;
-        }
-        let (u0, u1) = (g.u(g.t0), g.u(g.t1));
-        let big_h = phys.sigma_t * h;
-        // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
-        let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
-        let y0 = y_at(u0);
-        let y1 = y_at(u1);
         let y_cut = y0 + cut_length(big_h, y0, y1 - y0, control);
         // The ends as their distances from the poles θ = ∓π/2 (ψ0 = θ0 + π/2, ψ1 = π/2 − θ1),
         // to full relative accuracy: F's lobes and the exponential's layer sit at the poles,
@@ -239,20 +285,16 @@ impl<T: Real> Plan<T> {
         let lambda = if big_h > T::zero() { (big_h * (y_end - y0)).min(hw * big_h * (T::one() + y_e * y_e)) * T::lit(0.5) } else { T::zero() };
         // D, a polynomial of degree p in c = A cos(θ − θ_axis): a lobe c^p ≈ e^{−pφ²/2} of
         // angular width about 1/√p
-        let degree = T::from(degree).unwrap();
         let lobe = degree.sqrt() * hw;
         // The phase function's nearest singularity, at sin θ = −μ*, θ = ∓π/2 ± i·acosh|μ*|: 1/ρ
         // of the panel's Bernstein ellipse through it, the pole ψ0 before the panel's start or ψ1
         // past its end (1 + ψ/hw from its centre, in units of hw)
         let inv_hw = hw.recip();
-        let (mut phase, mut forward_gap) = (T::zero(), T::infinity());
+        let mut phase = T::zero();
         for mu in singular.cosines {
             let gap = mu.abs() - T::one();
             if !(gap > T::zero()) || !gap.is_finite() {
                 continue;
-            }
-            if mu > T::zero() {
-                forward_gap = forward_gap.min(gap);
             }
             let offset = if mu > T::zero() { psi0 } else { psi1 };
             phase = phase.max(pole_rate(gap, offset, inv_hw));
@@ -261,14 +303,10 @@ impl<T: Real> Plan<T> {
         // `axis_excess(d)` (`bernstein_rho` on the axis, one square root, and d to full accuracy
         // where the pole is close)
         let exponential = if big_h > T::zero() { (T::one() + axis_excess(psi1 * inv_hw)).recip() } else { T::zero() };
-        Some(Plan { u0, big_h, y0, y1, psi0, psi1, hw, lambda, lobe, degree, forward_gap, phase, order: singular.order, exponential })
+        Some(Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order: singular.order, exponential })
     }
 
-    /// Whether the medium is thick where the light is: `σt·h ≥ 1`, the light at least a mean
-    /// free path from the ray's line, so that the extinction falls by `e` or more within the
-    /// light's distance. There Gauss–Laguerre in the optical depth, whose weight the
-    /// extinction is, is tried first ([`crate::depth`]); in thinner media the weight is
-    /// smooth in the angle, and this route's first try passes where that one would.
+    /// [`Ends::thick`].
     pub fn thick(&self) -> bool {
         self.big_h >= T::one()
     }
@@ -429,7 +467,7 @@ impl<T: Real> Plan<T> {
         let (Some(rule), Some(_), true) = (gauss_table::rule(N), gauss_table::transform(N), N >= 4) else {
             return None;
         };
-        let Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order, exponential, .. } = *self;
+        let Plan { u0, big_h, y0, psi0, psi1, hw, lambda, lobe, phase, order, exponential } = *self;
         let tolerance = control.tolerance;
         // The predicted coefficients, before any sample: the extinction's e^{−λ(1+ξ)} has
         // the N-th Legendre coefficient (2N+1)·i_N(λ) of its mean, i_N(λ) ≈

@@ -257,18 +257,18 @@ where
     // a route by cost first: the whole segment in the light angle, where that meets the target
     let mut tried = 0;
     if let (Method::Panels(control), false) = (method, isotropic) {
-        if let Some(plan) = crate::angle::Plan::new(g, phys, &control) {
-            // a thick medium: Gauss–Laguerre in the optical depth, whose weight the extinction
-            // is (`crate::depth`; fewer samples, and no trigonometric function or exponential
-            // in them)
-            if plan.thick() {
-                let depth = if N <= 8 { crate::depth::whole_segment::<T, D, P, 6>(&plan, g, phys, &control) } else { crate::depth::whole_segment::<T, D, P, 12>(&plan, g, phys, &control) };
-                match depth {
-                    Route::Taken(value) => return (value, 1),
-                    Route::Failed => tried = 1,
-                    Route::Declined => {}
-                }
+        // a thick medium (the light a mean free path or more from the ray's line):
+        // Gauss–Laguerre in the optical depth, whose weight the extinction is
+        // (`crate::depth`; fewer samples, no trigonometric function or exponential in them,
+        // and none of the light angle's plan formed where it is taken)
+        if big_h >= T::one() {
+            match crate::depth::thick_route::<T, D, P, N>(g, phys, &control) {
+                Route::Taken(value) => return (value, 1),
+                Route::Failed => tried = 1,
+                Route::Declined => {}
             }
+        }
+        if let Some(plan) = crate::angle::Plan::new(g, phys, &control) {
             // N nodes, then twice and four times as many for a light's lobe, the extinction's
             // layer or the phase function's singularity that N do not resolve (`Plan::widens`
             // and the plan's predictions decide): that still costs less than the closed-form

@@ -1,6 +1,6 @@
 //! A route by cost for a thick medium: the whole segment by Gauss–Laguerre in the optical depth
 //! seen from the light, tried where the light is at least a mean free path from the ray's line
-//! ([`Plan::thick`]) and taken where its error estimate meets the panels' target
+//! ([`Ends::thick`]) and taken where its error estimate meets the panels' target
 //! (docs/DESIGN.md §4.3); otherwise [`crate::combined`] goes on to the light-angle route
 //! ([`crate::angle`]) and the closed-form panels.
 //!
@@ -50,7 +50,7 @@
 //! distribution with kinks, or a phase function or distribution not known to be analytic,
 //! declines it, as the light-angle route.
 
-use crate::angle::{Plan, Route};
+use crate::angle::{Ends, Route};
 use crate::combined::{weighted, Physics};
 use crate::expansion::{laguerre_table, last_laguerre_coefficients};
 use crate::geometry::Canonical;
@@ -59,10 +59,31 @@ use crate::panels::{power, Control, ALIASING_MARGIN};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, hypot1, larger, Real};
 
+/// The route as the default path takes it: [`whole_segment`] with 6 nodes where the light-angle
+/// rules have `N ≤ 8` (f32), else 12 (f64), from the segment's [`Ends`] formed here, before any
+/// of the light angle's plan. Cold and not inlined, so that the default path's code for the rays
+/// that do not take it stays as it was (measured: inlined, or only not inlined, the plan's
+/// `atan2_upper` and `cut_length` were no longer inlined there, +2–4 % instructions per ray
+/// on every f32 class of tests/reference/classes.jsonl but `thick`).
+#[cold]
+#[inline(never)]
+pub(crate) fn thick_route<T, D, P, const N: usize>(g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
+where
+    T: Real,
+    D: LightDistribution<T>,
+    P: PhaseFunction<T>,
+{
+    match Ends::new(g, phys) {
+        Some(ends) if N <= 8 => whole_segment::<T, D, P, 6>(&ends, g, phys, control),
+        Some(ends) => whole_segment::<T, D, P, 12>(&ends, g, phys, control),
+        None => Route::Declined,
+    }
+}
+
 /// The whole segment `[t0, t1]` by `N`-node Gauss–Laguerre in the optical depth (module docs),
-/// on the light-angle route's [`Plan`] (its `Y0`, `H`, the lobe's degree and the nearest
+/// from the segment's [`Ends`] (its `Y0`, `Y1`, `H`, the lobe's degree and the nearest
 /// singularity), if the predictions and then the estimate meet `control`.
-pub fn whole_segment<T, D, P, const N: usize>(plan: &Plan<T>, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
+pub fn whole_segment<T, D, P, const N: usize>(ends: &Ends<T>, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>) -> Route<T>
 where
     T: Real,
     D: LightDistribution<T>,
@@ -71,7 +92,7 @@ where
     let Some((rule, transform)) = laguerre_table::rule(N) else {
         return Route::Declined;
     };
-    let Plan { u0, big_h, y0, y1, degree, forward_gap: gap, .. } = *plan;
+    let Ends { u0, big_h, y0, y1, degree, forward_gap: gap, .. } = *ends;
     if !(big_h > T::zero()) || !big_h.is_finite() {
         return Route::Declined;
     }

@@ -537,10 +537,11 @@ where
     #[allow(clippy::too_many_arguments)]
     fn arc(&self, phys: &Physics<'_, T, D, P>, fr: &Frame<T>, cos_g: T, sin_g: T, (axis_l, axis_a): (T, T), step: T, p: usize, control: &Control<T>) -> Option<Arc<T>> {
         let g = Canonical { h: fr.d * sin_g, x_h: fr.d * cos_g, d_el: T::zero(), d_c: T::zero(), t0: T::zero(), t1: T::infinity() };
-        let plan = crate::angle::Plan::new(&g, phys, control)?;
-        if plan.thick() {
+        let ends = crate::angle::Ends::new(&g, phys)?;
+        if ends.thick() {
             return None;
         }
+        let plan = crate::angle::Plan::from_ends(&ends, &g, control)?;
         let mut rays = [(T::zero(), T::zero()); MAX_INTERPOLATED_DEGREE + 1];
         for (j, ray) in rays.iter_mut().enumerate().take(p + 1) {
             *ray = axis_cosines(cos_g, sin_g, axis_l, axis_a * (step * T::from(j).unwrap_or(T::zero())).cos());

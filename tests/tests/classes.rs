@@ -287,7 +287,7 @@ fn graded_route_meets_its_tolerance() {
 #[test]
 fn optical_depth_route_meets_its_tolerance() {
     fn sweep<T: airlight::Real, const N: usize>(cases: &[Case], tolerance: f64, tau: f64) {
-        sweep_route::<T>(cases, tolerance, tau, &format!("optical depth, N = {N}"), |plan, g, phys, control| airlight::depth::whole_segment::<_, _, _, N>(plan, g, phys, control));
+        sweep_route::<T>(cases, tolerance, tau, &format!("optical depth, N = {N}"), |_, g, phys, control| airlight::depth::whole_segment::<_, _, _, N>(&airlight::angle::Ends::new(g, phys).expect("a plan has its ends"), g, phys, control));
     }
     let cases = cases();
     for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
