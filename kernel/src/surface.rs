@@ -289,34 +289,35 @@ pub fn lobe_arcs<T: Real>(rule: &[(f64, f64)], normal: (T, T), mirror: (T, T), g
     // `1 − k s²` is formed as exactly as `ln(1 − k s²)` was
     let whole = if exponent >= T::zero() && exponent <= T::lit(65536.0) && exponent.floor() == exponent { exponent.to_i32() } else { None };
     let peak_power = exp_nonpositive_polynomial(exponent * log_peak);
-    let pair = |x: T| {
+    // the normal's clip of x and −x together and the lobe's fall `k s²` at x
+    let clip_fall = |x: T| {
         // |x/2| ≤ π/2: the minimax pair, odd and even in x
         let (s, h) = sin_cos_quarter(x * half);
         let (cos_x, sin_x) = (T::one() - two * s * s, two * s * h);
         let (even, odd) = (a + b * cos_x * cos_delta, b * sin_x * sin_delta);
-        let clip = (even + odd).max(T::zero()) + (even - odd).max(T::zero());
-        let fall = k * s * s;
-        if fall < T::one() && clip > T::zero() {
-            clip * match whole {
-                Some(n) => peak_power * T::lit(Scalar::powi(1.0 - fall.to_f64_exact(), n)),
-                None => exp_nonpositive_polynomial(exponent * (log_peak + ln_1p(-fall))),
-            }
-        } else {
-            T::zero()
-        }
+        ((even + odd).max(T::zero()) + (even - odd).max(T::zero()), k * s * s)
     };
     let smooth = exponent < T::one();
     let mut sum = T::zero();
     for piece in used.windows(2) {
         let (lo, hi) = (piece[0], piece[1]);
-        if !(hi > lo) || !(pair((lo + hi) * half) > T::zero()) {
+        // a piece where the lobe or the clip is empty at the middle is empty throughout
+        let (clip, fall) = clip_fall((lo + hi) * half);
+        if !(hi > lo) || !(clip > T::zero() && fall < T::one()) {
             continue;
         }
         let w = hi - lo;
         for &(x, weight) in rule {
             for u in [half - half * T::lit(x), half + half * T::lit(x)] {
                 let (at, jacobian) = if smooth { (lo + w * u * u * (T::lit(3.0) - u - u), w * T::lit(6.0) * u * (T::one() - u)) } else { (lo + w * u, w) };
-                sum = sum + T::lit(weight) * half * jacobian * pair(at);
+                let (clip, fall) = clip_fall(at);
+                if fall < T::one() && clip > T::zero() {
+                    let power = match whole {
+                        Some(n) => peak_power * T::lit(Scalar::powi(1.0 - fall.to_f64_exact(), n)),
+                        None => exp_nonpositive_polynomial(exponent * (log_peak + ln_1p(-fall))),
+                    };
+                    sum = sum + T::lit(weight) * half * jacobian * clip * power;
+                }
             }
         }
     }
