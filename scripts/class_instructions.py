@@ -4,13 +4,13 @@ peer) on one scene class of tests/reference/classes.jsonl: deterministic where t
 bench's times move by ±30 % on shared machines, so a change to the kernel can be judged ray for
 ray before it is timed. Each count is callgrind's total for `repetitions` passes over the class
 minus that for none (the reference file's parsing), divided by passes × scenes. With --surface,
-the same per surface point of a class of tests/reference/surface.jsonl (f64,
-`SurfaceScene::air_light_counted`).
+the same per surface point of a class of tests/reference/surface.jsonl
+(`SurfaceScene::air_light_counted`, f64 unless f32 is named).
 
 Usage:
   python3 scripts/class_instructions.py f32 hg_0.9 1e-1 [more tolerances or pN / sN …]
   python3 scripts/class_instructions.py --level 1e-3 f32 hg_0.9 hg_0.8 …
-  python3 scripts/class_instructions.py --surface lambert_thin 1e-1 [more tolerances …]
+  python3 scripts/class_instructions.py --surface [f32] lambert_thin 1e-1 [more tolerances …]
 With --level, each class at the loosest tolerance of 1e-1, 3e-2, … 1e-12 whose largest error is at
 most the level (the classes bench's ladder and pick). Needs valgrind; builds the examples first.
 """
@@ -52,10 +52,11 @@ def main(args):
             else:
                 print(f"{cls} {precision}: no tolerance down to {LADDER[-1]} reaches {level:g}")
     elif args[0] == "--surface":
-        cls, tolerances = args[1], args[2:]
+        precision, rest = (args[1], args[2:]) if args[1] in ("f32", "f64") else ("f64", args[1:])
+        cls, tolerances = rest[0], rest[1:]
         for tol in tolerances:
-            ir, worst = count("surface_cost", cls, tol)
-            print(f"{cls} f64 {tol}: {ir:.0f} instructions per surface point, largest error {worst:.2e}")
+            ir, worst = count("surface_cost", precision, cls, tol)
+            print(f"{cls} {precision} {tol}: {ir:.0f} instructions per surface point, largest error {worst:.2e}")
     else:
         precision, cls, methods = args[0], args[1], args[2:]
         for method in methods:
