@@ -908,8 +908,18 @@ where
         };
         let normal_turns = turning(fr.n);
         normal_turns.into_iter().for_each(|c| push(c, Cut::Kink));
+        // the mirror direction's turning points and the crossings of n·ω = 0 with r·ω = 0 are
+        // kinks of the inner integral only for a broad lobe: there (r·ω)⁺ⁿ vanishes, and the arc
+        // that opens or closes adds `|γ − γ*|^{n + 1/2}` — from SMOOTH_MIRROR_FROM on smooth
+        // enough for the outer rules (docs/DESIGN.md §11)
+        let mirror_kinks = match self.brdf {
+            Brdf::Phong { exponent, .. } => exponent < T::lit(SMOOTH_MIRROR_FROM),
+            Brdf::Lambert { .. } => false,
+        };
         if phong {
-            turning(fr.r).into_iter().for_each(|c| push(c, Cut::Kink));
+            if mirror_kinks {
+                turning(fr.r).into_iter().for_each(|c| push(c, Cut::Kink));
+            }
             push(alpha_r, Cut::Lobe);
             if let Brdf::Phong { exponent, .. } = self.brdf {
                 // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
@@ -924,7 +934,7 @@ where
             // the great circles n·ω = 0 and r·ω = 0 cross at ±u, u ∥ n × r
             let u = cross(fr.n_dir, fr.r_dir);
             let norm = length(u);
-            if norm > T::epsilon() {
+            if mirror_kinks && norm > T::epsilon() {
                 let c = (dot(u, fr.l) / norm).max(-T::one()).min(T::one());
                 push(c.acos(), Cut::Kink);
                 push(T::PI() - c.acos(), Cut::Kink);
@@ -1146,6 +1156,15 @@ const RAY_NODES: [usize; 2] = [6, 12];
 /// The finest outer tolerance at which [`RayInterpolant`] is tried: finer, its 12 nodes rarely
 /// pass, and the rays it spent are lost (docs/DESIGN.md §11).
 const INTERPOLATED_FROM: f64 = 5e-2;
+
+/// The Phong exponent from which the outer integral is not cut where the mirror direction's
+/// arcs open or close (its turning points, and where `n·ω = 0` crosses `r·ω = 0`): the inner
+/// integral has `|γ − γ*|^{n + 1/2}` there, from `n = 4` at least four times differentiable.
+/// Measured over 120 random Phong points (`n` 1 to 12, `σt·d` 0.01 to 30, isotropic and
+/// Henyey–Greenstein `g` 0.3, 0.8): the default path's values move by at most 1.2e-11 (`n` =
+/// 4), the errors at outer tolerances 1e-1 … 1e-3 stay within a fiftieth of them, and 15–22 %
+/// fewer rays are spent (docs/DESIGN.md §11).
+const SMOOTH_MIRROR_FROM: f64 = 4.0;
 
 /// The largest of [`RAY_NODES`].
 const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];

@@ -421,6 +421,12 @@ def scenes():
     out.append(placed("phong_narrow", 2.0, 0.05, phong(0.6, 500, [0.5, 0.0, 0.866]), iso, list(unit([-0.2, 0.8, 0.6])), 1))
     out.append(placed("phong_narrow", 3.0, 0.2, phong(0.4, 1000, [0.3, -0.4, 0.866]), hg(0.3), list(unit([0.7, 0.3, 0.65])), 2))
     out.append(placed("phong_thick", 2.0, 5.0, phong(0.5, 40, [0.4, 0.2, 0.9]), iso, list(unit([-0.3, 0.5, 0.8])), 3))
+    # broad lobes (n = 4, 5, 6), where the kernel does not cut its outer integral at the mirror
+    # direction's arcs' ends (docs/DESIGN.md §11): a mirror direction near the horizon, so that
+    # those ends fall inside the outer range and the lobe
+    out.append(placed("phong_broad", 1.5, 0.3, phong(0.5, 4, [0.8, 0.1, 0.59]), iso, list(unit([0.3, 0.6, 0.75])), 4))
+    out.append(placed("phong_broad", 3.0, 0.5, phong(0.7, 5, [-0.2, 0.9, 0.39]), hg(0.3), list(unit([-0.5, -0.4, 0.77])), 5))
+    out.append(placed("phong_broad", 2.0, 1.2, phong(0.4, 6, [0.6, -0.7, 0.39]), hg(0.8), list(unit([0.1, 0.2, 0.97])), 6))
     return out
 
 
