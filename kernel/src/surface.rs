@@ -908,28 +908,25 @@ where
         };
         let normal_turns = turning(fr.n);
         normal_turns.into_iter().for_each(|c| push(c, Cut::Kink));
-        // the mirror direction's turning points and the crossings of n·ω = 0 with r·ω = 0 are
-        // kinks of the inner integral only for a broad lobe: there (r·ω)⁺ⁿ vanishes, and the arc
-        // that opens or closes adds `|γ − γ*|^{n + 1/2}` — from SMOOTH_MIRROR_FROM on smooth
-        // enough for the outer rules (docs/DESIGN.md §11)
-        let mirror_kinks = match self.brdf {
-            Brdf::Phong { exponent, .. } => exponent < T::lit(SMOOTH_MIRROR_FROM),
-            Brdf::Lambert { .. } => false,
-        };
-        if phong {
+        if let Brdf::Phong { exponent, .. } = self.brdf {
+            // the mirror direction's turning points and the crossings of n·ω = 0 with r·ω = 0
+            // are kinks of the inner integral only for a broad lobe: there (r·ω)⁺ⁿ vanishes, and
+            // the arc that opens or closes adds `|γ − γ*|^{n + 1/2}` — on the default path, from
+            // SMOOTH_MIRROR_FROM on smooth enough for the outer rules (docs/DESIGN.md §11; the
+            // shaders' method, `air_light_panels_counted`, keeps the shaders' cuts)
+            let mirror_kinks = !default_path || exponent < T::lit(SMOOTH_MIRROR_FROM);
             if mirror_kinks {
                 turning(fr.r).into_iter().for_each(|c| push(c, Cut::Kink));
             }
             push(alpha_r, Cut::Lobe);
-            if let Brdf::Phong { exponent, .. } = self.brdf {
-                // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
-                // (not for a broad lobe at the loosest tolerance: BROAD_LOBE_BELOW)
-                if exponent > T::one() && (exponent > T::lit(BROAD_LOBE_BELOW) || tolerance < T::lit(0.1)) {
-                    for k in [1.5, 4.0] {
-                        let width = T::lit(k) / exponent.sqrt();
-                        push(alpha_r - width, Cut::Lobe);
-                        push(alpha_r + width, Cut::Lobe);
-                    }
+            // the lobe's extent in γ: (cos δ)ⁿ ≈ e^{−nδ²/2} is 0.32 at δ = 1.5/√n, 3e-4 at 4/√n
+            // (not for a broad lobe at the loosest tolerance on the default path: BROAD_LOBE_BELOW)
+            let broad = default_path && exponent <= T::lit(BROAD_LOBE_BELOW) && tolerance >= T::lit(0.1);
+            if exponent > T::one() && !broad {
+                for k in [1.5, 4.0] {
+                    let width = T::lit(k) / exponent.sqrt();
+                    push(alpha_r - width, Cut::Lobe);
+                    push(alpha_r + width, Cut::Lobe);
                 }
             }
             // the great circles n·ω = 0 and r·ω = 0 cross at ±u, u ∥ n × r
@@ -1158,8 +1155,8 @@ const RAY_NODES: [usize; 2] = [6, 12];
 /// pass, and the rays it spent are lost (docs/DESIGN.md §11).
 const INTERPOLATED_FROM: f64 = 5e-2;
 
-/// The Phong exponent from which the outer integral is not cut where the mirror direction's
-/// arcs open or close (its turning points, and where `n·ω = 0` crosses `r·ω = 0`): the inner
+/// The Phong exponent from which the default path's outer integral is not cut where the mirror
+/// direction's arcs open or close (its turning points, and where `n·ω = 0` crosses `r·ω = 0`): the inner
 /// integral has `|γ − γ*|^{n + 1/2}` there, from `n = 4` at least four times differentiable.
 /// Measured over 120 random Phong points (`n` 1 to 12, `σt·d` 0.01 to 30, isotropic and
 /// Henyey–Greenstein `g` 0.3, 0.8): the default path's values move by at most 1.2e-11 (`n` =
@@ -1167,7 +1164,7 @@ const INTERPOLATED_FROM: f64 = 5e-2;
 /// fewer rays are spent (docs/DESIGN.md §11).
 const SMOOTH_MIRROR_FROM: f64 = 4.0;
 
-/// The Phong exponent up to which the outer integral is not cut at the lobe's extent
+/// The Phong exponent up to which the default path's outer integral is not cut at the lobe's extent
 /// (`α_r ± 1.5/√n`, `± 4/√n`) at outer tolerance 1e-1: a lobe at least `1.5/√8 ≈ 0.53` wide is
 /// smooth on the scale of the outer pieces, which its cuts only multiply (finer tolerances keep
 /// them, for the adaptive rule's first split). Measured over 120 random Phong points (`n` 1 to
