@@ -151,7 +151,7 @@ where
 }
 
 /// What the routes' predictions read before any angle is formed: the segment's ends in `Y`, `H`,
-/// the light's degree and the phase function's nearest forward singularity. Gauss–Laguerre in
+/// the light's degree and the phase function's singularities. Gauss–Laguerre in
 /// the optical depth ([`crate::depth`]), tried first in a thick medium, needs no more, so it
 /// pays for none of [`Plan`]'s angles and rates.
 #[derive(Clone, Copy, Debug)]
@@ -168,11 +168,8 @@ pub struct Ends<T> {
     pub(crate) y1: T,
     /// The light distribution's degree `p` in `c` (0 without an axis).
     pub(crate) degree: T,
-    /// `μ* − 1` of the phase function's nearest forward singularity (`μ* > 1`; `+∞` without
-    /// one): its `Y = ±i·√((μ* − 1)/(μ* + 1))` bounds Gauss–Laguerre's rate ([`crate::depth`]).
-    pub(crate) forward_gap: T,
     /// The phase function's singularities.
-    singular: Singularities<T>,
+    pub(crate) singular: Singularities<T>,
 }
 
 impl<T: Real> Ends<T> {
@@ -193,8 +190,7 @@ impl<T: Real> Ends<T> {
         let (u0, u1) = (g.u(g.t0), g.u(g.t1));
         // Y = u + √(1+u²) without cancellation: the halves' bounded y before the foot
         let y_at = |u: T| if u < T::zero() { bounded(-u) } else { u + hypot1(u) };
-        let forward_gap = singular.cosines.iter().fold(T::infinity(), |m, &mu| if mu > T::one() && mu.is_finite() { m.min(mu - T::one()) } else { m });
-        Some(Ends { u0, u1, big_h: phys.sigma_t * h, y0: y_at(u0), y1: y_at(u1), degree: T::from(degree).unwrap(), forward_gap, singular })
+        Some(Ends { u0, u1, big_h: phys.sigma_t * h, y0: y_at(u0), y1: y_at(u1), degree: T::from(degree).unwrap(), singular })
     }
 
     /// Whether the medium is thick where the light is: `σt·h ≥ 1`, the light at least a mean
@@ -203,8 +199,14 @@ impl<T: Real> Ends<T> {
     /// extinction is, is tried first ([`crate::depth`]); in thinner media the weight is
     /// smooth in the angle, and the light angle's first try passes where that one would.
     pub fn thick(&self) -> bool {
-        self.big_h >= T::one()
+        thick(self.big_h)
     }
+}
+
+/// [`Ends::thick`] from `H = σt·h`.
+#[inline]
+pub(crate) fn thick<T: Real>(big_h: T) -> bool {
+    big_h >= T::one()
 }
 
 /// What every rule of the route shares: the panel in `θ` and the predicted rates, formed once
@@ -308,7 +310,7 @@ impl<T: Real> Plan<T> {
 
     /// [`Ends::thick`].
     pub fn thick(&self) -> bool {
-        self.big_h >= T::one()
+        thick(self.big_h)
     }
 
     /// Where a graded route may end this panel's first part (`crate::combined`'s graded

@@ -261,7 +261,7 @@ where
         // Gauss–Laguerre in the optical depth, whose weight the extinction is
         // (`crate::depth`; fewer samples, no trigonometric function or exponential in them,
         // and none of the light angle's plan formed where it is taken)
-        if big_h >= T::one() {
+        if crate::angle::thick(big_h) {
             match crate::depth::thick_route::<T, D, P, N>(g, phys, &control) {
                 Route::Taken(value) => return (value, 1),
                 Route::Failed => tried = 1,

@@ -92,7 +92,9 @@ where
     let Some((rule, transform)) = laguerre_table::rule(N) else {
         return Route::Declined;
     };
-    let Ends { u0, big_h, y0, y1, degree, forward_gap: gap, .. } = *ends;
+    let Ends { u0, big_h, y0, y1, degree, singular, .. } = *ends;
+    // `μ* − 1` of the nearest forward singularity (`μ* > 1`; `+∞` without one)
+    let gap = singular.cosines.iter().fold(T::infinity(), |m, &mu| if mu > T::one() && mu.is_finite() { m.min(mu - T::one()) } else { m });
     if !(big_h > T::zero()) || !big_h.is_finite() {
         return Route::Declined;
     }
