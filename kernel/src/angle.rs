@@ -313,6 +313,12 @@ impl<T: Real> Plan<T> {
         thick(self.big_h)
     }
 
+    /// `t` at the panel's middle in `θ` (of `g`, the segment it was formed for): `θ = (ψ0 −
+    /// ψ1)/2`, the cut end's `ψ1` — where a panel the rules do not pass on is halved.
+    pub(crate) fn middle(&self, g: &Canonical<T>) -> T {
+        g.x_h + g.h * ((self.psi0 - self.psi1) * T::lit(0.5)).tan()
+    }
+
     /// Where a graded route may end this panel's first part (`crate::combined`'s graded
     /// route): the second half's grading point `y_p` ([`crate::panels::graded_point`], `y` of the
     /// second half, whose ends are `y_lo`, `y_hi`) towards the phase function's nearest backward

@@ -565,24 +565,95 @@ where
     /// `Σ_j c_j L_a(γ, φ_j)` over an [`Arc`]'s rays (`c_j` = `weights`) as one ray integral whose
     /// light factor is `Σ_j c_j D(c_j(θ))` (`F` is linear in `D`): taken where the panel's first
     /// try or its wider rules meet `control` on the sum (its own estimate, against the sum's
-    /// value); else `None`, and the rays one by one.
+    /// value), on the whole panel or on its pieces ([`SurfaceScene::arc_pieces`]); else `None`,
+    /// and the rays one by one.
     fn arc_sum(&self, phys: &Physics<'_, T, D, P>, arc: &Arc<T>, weights: &[T], control: &Control<T>) -> Option<T> {
         let emission = ArcSum { light: phys.light, rays: &arc.rays[..weights.len()], weights };
-        let value = if arc.sixteen { arc.plan.tries::<D, P, _, 16>(&arc.g, phys, control, &emission).0 } else { arc.plan.tries::<D, P, _, 8>(&arc.g, phys, control, &emission).0 };
-        value.filter(|v| v.is_finite())
+        let mut out = [None];
+        self.arc_pieces(phys, arc, control, &mut out, |plan, g, slot| {
+            if slot[0].is_none() {
+                slot[0] = if arc.sixteen { plan.tries::<D, P, _, 16>(g, phys, control, &emission).0 } else { plan.tries::<D, P, _, 8>(g, phys, control, &emission).0 };
+            }
+        });
+        out[0]
     }
 
-    /// Each of an [`Arc`]'s rays on the panel's shared samples (`Plan::tries_each`): `out[j]`
-    /// where a rule meets `control` on ray `j` (its own estimate), else `None`.
+    /// Each of an [`Arc`]'s rays on the panel's shared samples (`Plan::tries_each`), on the
+    /// whole panel or on its pieces ([`SurfaceScene::arc_pieces`]): `out[j]` where a rule meets
+    /// `control` on ray `j` (its own estimate), else `None`.
     fn arc_rays(&self, phys: &Physics<'_, T, D, P>, arc: &Arc<T>, control: &Control<T>, out: &mut [Option<T>]) {
         let rays = &arc.rays[..out.len()];
-        if arc.sixteen {
-            arc.plan.tries_each::<D, P, 16>(&arc.g, phys, control, rays, out);
-        } else {
-            arc.plan.tries_each::<D, P, 8>(&arc.g, phys, control, rays, out);
-        }
+        self.arc_pieces(phys, arc, control, out, |plan, g, slots| {
+            if arc.sixteen {
+                plan.tries_each::<D, P, 16>(g, phys, control, rays, slots);
+            } else {
+                plan.tries_each::<D, P, 8>(g, phys, control, rays, slots);
+            }
+        });
+    }
+
+    /// An [`Arc`]'s rays by `tries` (which fills the slots left `None` on a piece of the rays'
+    /// segment, given the piece's plan and canonical form): on the arc's whole panel, then, for
+    /// the rays whose rules did not pass on it, on its halves in the light angle, each halved
+    /// again where they do not pass on it, up to [`MAX_ARC_PIECES`] pieces (a beam's lobe
+    /// `c^p` and the extinction's layer at the far end on one panel of nearly `π`, where the arc
+    /// passes the light: each piece within `control` of its own value, so their sum is). A piece
+    /// from `t_s` carries `e^{−σt(t_s − t0)}`, the extinction to its start (docs/DESIGN.md §1).
+    /// `out[j]`: ray `j`'s value where it passed on every piece, else `None` (at most 64 rays).
+    fn arc_pieces(&self, phys: &Physics<'_, T, D, P>, arc: &Arc<T>, control: &Control<T>, out: &mut [Option<T>], mut tries: impl FnMut(&crate::angle::Plan<T>, &Canonical<T>, &mut [Option<T>])) {
+        tries(&arc.plan, &arc.g, out);
         for v in out.iter_mut() {
             *v = v.filter(|x| x.is_finite());
+        }
+        let mut pending: u64 = out.iter().enumerate().fold(0, |m, (j, v)| if v.is_none() { m | 1 << j } else { m });
+        let middle = arc.plan.middle(&arc.g);
+        if pending == 0 || !(middle > arc.g.t0 && middle < arc.g.t1) {
+            return;
+        }
+        let mut sums = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+        let mut stack = [(T::zero(), T::zero(), 0u64); MAX_ARC_PIECES];
+        stack[0] = (middle, arc.g.t1, pending);
+        stack[1] = (arc.g.t0, middle, pending);
+        let (mut held, mut pieces) = (2, 2);
+        let mut slots = [None; MAX_INTERPOLATED_DEGREE + 1];
+        let slots = &mut slots[..out.len()];
+        while held > 0 {
+            held -= 1;
+            let (a, b, mask) = stack[held];
+            let g = Canonical { t0: a, t1: b, ..arc.g };
+            let Some(plan) = crate::angle::Plan::new(&g, phys, control) else {
+                pending &= !mask;
+                continue;
+            };
+            for (j, slot) in slots.iter_mut().enumerate() {
+                *slot = if mask >> j & 1 == 1 { None } else { Some(T::zero()) };
+            }
+            tries(&plan, &g, slots);
+            let extinction = (-phys.sigma_t * (a - arc.g.t0)).exp();
+            let mut failed = 0u64;
+            for (j, slot) in slots.iter().enumerate().filter(|&(j, _)| mask >> j & 1 == 1) {
+                match slot.filter(|v| v.is_finite()) {
+                    Some(v) => sums[j] = sums[j] + v * extinction,
+                    None => failed |= 1 << j,
+                }
+            }
+            if failed == 0 {
+                continue;
+            }
+            let middle = plan.middle(&g);
+            if pieces < MAX_ARC_PIECES && middle > a && middle < b {
+                stack[held] = (middle, b, failed);
+                stack[held + 1] = (a, middle, failed);
+                held += 2;
+                pieces += 1;
+            } else {
+                pending &= !failed;
+            }
+        }
+        for (j, v) in out.iter_mut().enumerate() {
+            if pending >> j & 1 == 1 {
+                *v = Some(sums[j]);
+            }
         }
     }
 
@@ -1174,6 +1245,9 @@ const BROAD_LOBE_BELOW: f64 = 8.0;
 
 /// The largest of [`RAY_NODES`].
 const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
+
+/// The most pieces [`SurfaceScene::arc_pieces`] halves an arc's panel in the light angle into.
+const MAX_ARC_PIECES: usize = 16;
 
 /// `q(γ)` ([`RayInterpolant`]) on the outer range as up to three interpolants, the `i`-th ending
 /// at `ends[i]` (the first starting at the range's start), split where a phase lobe narrower
