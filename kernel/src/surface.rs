@@ -137,17 +137,12 @@ pub(crate) fn lobatto_points<T: Real>(p: usize) -> [T; MAX_INTERPOLATED_DEGREE +
     points
 }
 
-/// `cos(mπ/p)` for `m = 0 … 2p − 1` from the Chebyshev–Lobatto `points` `cos(jπ/p)`, `j = 0 … p`
-/// ([`lobatto_points`]): `cos(mπ/p) = cos((2p − m)π/p)` past `m = p`.
-fn lobatto_cosine<T: Real>(points: &[T], p: usize, m: usize) -> T {
-    points[if m <= p { m } else { 2 * p - m }]
-}
-
 /// The Chebyshev coefficients `b_k` of the polynomial `P` of degree `p = values.len() − 1` through
 /// `values[j]` at the Chebyshev–Lobatto points `x_j = cos(jπ/p)` (`points`, [`lobatto_points`]):
 /// `P(x) = Σ_k b_k T_k(x)` with `b_k = (ε_k/p) Σ_j ε_j L_j cos(jkπ/p)`, `ε` 1 inside and 1/2 at
 /// `0` and `p` on both sums (the discrete cosine transform of the points, DCT-I; Trefethen,
-/// Approximation Theory and Approximation Practice, ch. 3 and 19): `O(p²)` once, where the
+/// Approximation Theory and Approximation Practice, ch. 3 and 19), each `b_k` as the series
+/// `Σ_j ε_j L_j T_j` at `x_k` by [`chebyshev_sum`]: `O(p²)` once, where the
 /// inner integral then evaluates `P` at every node in `O(p)` ([`chebyshev_sum`]) instead of the
 /// barycentric formula's `p + 1` divisions. Writes `out[..=p]`, `p ≤ MAX_INTERPOLATED_DEGREE`.
 pub(crate) fn lobatto_coefficients<T: Real>(values: &[T], points: &[T], out: &mut [T]) {
@@ -158,29 +153,28 @@ pub(crate) fn lobatto_coefficients<T: Real>(values: &[T], points: &[T], out: &mu
     }
     let half = |i: usize| if i == 0 || i == p { T::lit(0.5) } else { T::one() };
     let scale = T::from(p).unwrap_or(T::one()).recip();
+    // Σ_j ε_j L_j cos(jkπ/p) = Σ_j ε_j L_j T_j(x_k) at the point x_k: Clenshaw's sum
+    let mut weighted = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
+    for (j, (w, &l)) in weighted.iter_mut().zip(values).enumerate() {
+        *w = half(j) * l;
+    }
     for (k, b) in out.iter_mut().enumerate().take(p + 1) {
-        // m = jk mod 2p, stepped
-        let (mut sum, mut m) = (T::zero(), 0);
-        for (j, &l) in values.iter().enumerate() {
-            sum = sum + half(j) * l * lobatto_cosine(points, p, m);
-            m += k;
-            if m >= 2 * p {
-                m -= 2 * p;
-            }
-        }
-        *b = half(k) * scale * T::lit(2.0) * sum;
+        *b = half(k) * scale * T::lit(2.0) * chebyshev_sum(&weighted[..=p], points[k]);
     }
 }
 
 /// `Σ_k b_k T_k(x)` by Clenshaw's recurrence, `x ∈ [−1, 1]`.
 pub(crate) fn chebyshev_sum<T: Real>(b: &[T], x: T) -> T {
-    let (mut b1, mut b2) = (T::zero(), T::zero());
-    for &c in b.iter().skip(1).rev() {
-        let b0 = c + T::lit(2.0) * x * b1 - b2;
+    let Some((&first, rest)) = b.split_first() else {
+        return T::zero();
+    };
+    let (mut b1, mut b2, two_x) = (T::zero(), T::zero(), x + x);
+    for &c in rest.iter().rev() {
+        let b0 = c + two_x * b1 - b2;
         b2 = b1;
         b1 = b0;
     }
-    b.first().copied().unwrap_or(T::zero()) + x * b1 - b2
+    first + x * b1 - b2
 }
 
 /// The weights `c_j` of a Lambertian arc's inner integral from the values `L_j` of a polynomial
@@ -190,8 +184,8 @@ pub(crate) fn chebyshev_sum<T: Real>(b: &[T], x: T) -> T {
 /// discrete cosine transform of the points; `''` halves the first and last terms), the odd part
 /// of `cos(k(x + δ))` integrates to 0 and `∫ (A + B cos x) cos kx dx = A S_k + (B/2)(S_{k−1} +
 /// S_{k+1})`, `S_m = 2 sin(mψ)/m` (`S_0 = 2ψ`), so `c_j = (2/p) ε_j Σ_k ε_k cos(jkπ/p) cos(kδ)
-/// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`, the cosines `cos(jkπ/p)` from the `points`
-/// ([`lobatto_points`]). Writes `out[..=p]`, `p ≤ MAX_INTERPOLATED_DEGREE`.
+/// (A S_k + (B/2)(S_{|k−1|} + S_{k+1}))`, each `c_j` as the series `Σ_k g_k T_k` at the point
+/// `x_j` ([`lobatto_points`]) by [`chebyshev_sum`]. Writes `out[..=p]`, `p ≤ MAX_INTERPOLATED_DEGREE`.
 pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, delta: T, points: &[T], out: &mut [T]) {
     // S_m for m = 0 … p + 1, each once
     let mut s = [T::zero(); MAX_INTERPOLATED_DEGREE + 2];
@@ -210,17 +204,9 @@ pub(crate) fn lambert_chebyshev_weights<T: Real>(p: usize, a: T, b: T, psi: T, d
     for (k, gk) in g.iter_mut().enumerate().take(p + 1) {
         *gk = half(k) * (T::from(k).unwrap_or(T::zero()) * delta).cos() * w(k);
     }
-    // cos(mπ/p) for m = jk mod 2p from the points (`lobatto_cosine`), m stepped
+    // Σ_k g_k cos(jkπ/p) = Σ_k g_k T_k(x_j) at the point x_j = cos(jπ/p): Clenshaw's sum
     for (j, c) in out.iter_mut().enumerate().take(p + 1) {
-        let (mut sum, mut m) = (T::zero(), 0);
-        for &gk in g.iter().take(p + 1) {
-            sum = sum + lobatto_cosine(points, p, m) * gk;
-            m += j;
-            if m >= 2 * p {
-                m -= 2 * p;
-            }
-        }
-        *c = T::lit(2.0) / pf * half(j) * sum;
+        *c = T::lit(2.0) / pf * half(j) * chebyshev_sum(&g[..=p], points[j]);
     }
 }
 
