@@ -313,9 +313,20 @@ impl<T: Real> Plan<T> {
         thick(self.big_h)
     }
 
-    /// `t` at the panel's middle in `θ` (of `g`, the segment it was formed for): `θ = (ψ0 −
-    /// ψ1)/2`, the cut end's `ψ1` — where a panel the rules do not pass on is halved.
-    pub(crate) fn middle(&self, g: &Canonical<T>) -> T {
+    /// Where a panel the rules do not pass on is split (`t`, of `g`, the segment it was formed
+    /// for): where the extinction's exponent has risen by 1 from the start (`Y = Y0 + 1/H`), if
+    /// its rate over the panel is above 1 (`λ > 1`: the layer at a long ray's far end, where
+    /// halves in `θ` would shrink towards the end one at a time) and that lies inside; else at
+    /// the middle in `θ`, `θ = (ψ0 − ψ1)/2` (the cut end's `ψ1`).
+    pub(crate) fn split_point(&self, g: &Canonical<T>) -> T {
+        if self.lambda > T::one() && self.big_h > T::zero() {
+            // t − x_h = h·u, u = (Y − 1/Y)/2
+            let y = self.y0 + self.big_h.recip();
+            let t = g.x_h + g.h * ((y - y.recip()) * T::lit(0.5));
+            if t > g.t0 && t < g.t1 {
+                return t;
+            }
+        }
         g.x_h + g.h * ((self.psi0 - self.psi1) * T::lit(0.5)).tan()
     }
 

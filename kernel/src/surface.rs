@@ -636,7 +636,7 @@ where
             *v = v.filter(|x| x.is_finite());
         }
         let mut pending: u64 = out.iter().enumerate().fold(0, |m, (j, v)| if v.is_none() { m | 1 << j } else { m });
-        let middle = arc.plan.middle(&arc.g);
+        let middle = arc.plan.split_point(&arc.g);
         if pending == 0 || !(middle > arc.g.t0 && middle < arc.g.t1) {
             return;
         }
@@ -670,7 +670,7 @@ where
             if failed == 0 {
                 continue;
             }
-            let middle = plan.middle(&g);
+            let middle = plan.split_point(&g);
             if pieces < MAX_ARC_PIECES && middle > a && middle < b {
                 stack[held] = (middle, b, failed);
                 stack[held + 1] = (a, middle, failed);
