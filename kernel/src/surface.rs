@@ -41,7 +41,7 @@ use crate::expansion::chebyshev_series;
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
-use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, Real};
+use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, sin_cos_turns, Real};
 use crate::scalar::Scalar;
 use crate::panels::Control;
 use crate::combined::Physics;
@@ -816,7 +816,7 @@ where
             let axis_u = if omni {
                 T::zero()
             } else {
-                let (s, c) = phi.sin_cos();
+                let (s, c) = sin_cos_turns(phi);
                 c * axis_e1 + s * axis_e2
             };
             let h = fr.d * sin_g;
@@ -895,13 +895,13 @@ where
             };
             // f_r (n·ω)⁺ at φ
             let geometric_at = |sc: (T, T)| cosine(sc) * self.brdf_at(&fr, direction(cos_g, sin_g, sc));
-            let geometric = |phi: T| geometric_at(phi.sin_cos());
+            let geometric = |phi: T| geometric_at(sin_cos_turns(phi));
             // n·ω and a Phong lobe's r·ω keep their signs between the edges, so a panel where
             // either is not positive at the middle is skipped — their signs, not f_r (n·ω)⁺
             // itself, whose power (r·ω)ⁿ may underflow to 0 at the middle of a panel whose
             // end holds the lobe's peak
             let open = |phi: T| {
-                let sc = phi.sin_cos();
+                let sc = sin_cos_turns(phi);
                 cosine(sc) > T::zero() && (!phong || dot(fr.r_dir, direction(cos_g, sin_g, sc)) > T::zero())
             };
             let inner_sum = |f: &mut dyn FnMut(T) -> T| -> T {
@@ -975,7 +975,7 @@ where
                     lobatto_coefficients(values, &points, &mut coefficients);
                     let coefficients = &coefficients[..=p];
                     inner_sum(&mut |phi| {
-                        let (s, c) = phi.sin_cos();
+                        let (s, c) = sin_cos_turns(phi);
                         let f = geometric_at((s, c));
                         if f > T::zero() {
                             f * chebyshev_sum(coefficients, c * cos_a + s * sin_a)
