@@ -1646,8 +1646,10 @@ mod tests {
     /// rays one by one, each to 1e-12: Lambertian points lit by `c^p` beams (p = 2 … 32) in HG
     /// fog, thin and thicker, at 40 angles `γ` across the hemisphere, at tolerances 1e-2 and
     /// 1e-3. `arc_sum` within the tolerance of the rays' weighted sum where it is taken, and
-    /// taken at most nodes; `arc_rays` within it of each ray where a rule passed on that ray,
-    /// and passed on most of them.
+    /// taken at 95 % of the nodes or more; `arc_rays` within it of each ray where a rule passed
+    /// on that ray, and passed on 95 % of them or more (on the whole panel alone, before
+    /// `SurfaceScene::arc_pieces`: 551 of 620 nodes and 6 709 of 8 188 rays; with its pieces
+    /// every one, `--nocapture` prints the counts).
     #[test]
     fn arcs_of_rays_match_the_rays_one_by_one() {
         use crate::glam::DVec3;
@@ -1710,8 +1712,8 @@ mod tests {
             }
         }
         std::println!("the sum taken at {taken} of {tried} nodes, largest error {worst:.2} of the tolerance; the rays at {rays_taken} of {rays_tried}, {rays_worst:.2}");
-        assert!(2 * taken > tried, "the sum taken at {taken} of {tried}");
-        assert!(2 * rays_taken > rays_tried, "the rays taken at {rays_taken} of {rays_tried}");
+        assert!(20 * taken >= 19 * tried, "the sum taken at {taken} of {tried}");
+        assert!(20 * rays_taken >= 19 * rays_tried, "the rays taken at {rays_taken} of {rays_tried}");
     }
 
     /// [`lobe_arcs`] with each rule of [`LOBE_RULES`] against the same integral by adaptive
