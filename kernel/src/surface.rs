@@ -1391,7 +1391,7 @@ impl<T: Real> RayInterpolant<T> {
         exp_nonpositive_polynomial(self.at(gamma) - self.top) * self.exp_top
     }
 
-    /// The interpolant at `γ` (Clenshaw's recurrence).
+    /// The interpolant at `γ` (Clenshaw's recurrence, [`chebyshev_sum`]).
     fn at(&self, gamma: T) -> T {
         let x = ((gamma - self.lo) / self.width).max(T::zero()).min(T::one());
         let s = match self.map {
@@ -1406,14 +1406,7 @@ impl<T: Real> RayInterpolant<T> {
             }
             Map::Geometric { pole, near, ln_ratio, .. } => (((gamma - pole).abs() / near).ln() / ln_ratio).max(T::zero()).min(T::one()),
         };
-        let tau = s + s - T::one();
-        let (mut b1, mut b2) = (T::zero(), T::zero());
-        for &c in self.coefficients[1..self.count].iter().rev() {
-            let b0 = c + T::lit(2.0) * tau * b1 - b2;
-            b2 = b1;
-            b1 = b0;
-        }
-        self.coefficients[0] + tau * b1 - b2
+        chebyshev_sum(&self.coefficients[..self.count], s + s - T::one())
     }
 }
 
