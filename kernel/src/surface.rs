@@ -624,8 +624,8 @@ where
 
     /// An [`Arc`]'s rays by `tries` (which fills the slots left `None` on a piece of the rays'
     /// segment, given the piece's plan and canonical form): on the arc's whole panel, then, for
-    /// the rays whose rules did not pass on it, on its halves in the light angle, each halved
-    /// again where they do not pass on it, up to [`MAX_ARC_PIECES`] pieces (a beam's lobe
+    /// the rays whose rules did not pass on it, on its two parts split at `Plan::split_point`,
+    /// each split again where they do not pass on it, up to [`MAX_ARC_PIECES`] pieces (a beam's lobe
     /// `c^p` and the extinction's layer at the far end on one panel of nearly `π`, where the arc
     /// passes the light: each piece within `control` of its own value, so their sum is). A piece
     /// from `t_s` carries `e^{−σt(t_s − t0)}`, the extinction to its start (docs/DESIGN.md §1).
@@ -636,14 +636,14 @@ where
             *v = v.filter(|x| x.is_finite());
         }
         let mut pending: u64 = out.iter().enumerate().fold(0, |m, (j, v)| if v.is_none() { m | 1 << j } else { m });
-        let middle = arc.plan.split_point(&arc.g);
-        if pending == 0 || !(middle > arc.g.t0 && middle < arc.g.t1) {
+        let split = arc.plan.split_point(&arc.g);
+        if pending == 0 || !(split > arc.g.t0 && split < arc.g.t1) {
             return;
         }
         let mut sums = [T::zero(); MAX_INTERPOLATED_DEGREE + 1];
         let mut stack = [(T::zero(), T::zero(), 0u64); MAX_ARC_PIECES];
-        stack[0] = (middle, arc.g.t1, pending);
-        stack[1] = (arc.g.t0, middle, pending);
+        stack[0] = (split, arc.g.t1, pending);
+        stack[1] = (arc.g.t0, split, pending);
         let (mut held, mut pieces) = (2, 2);
         let mut slots = [None; MAX_INTERPOLATED_DEGREE + 1];
         let slots = &mut slots[..out.len()];
@@ -670,10 +670,10 @@ where
             if failed == 0 {
                 continue;
             }
-            let middle = plan.split_point(&g);
-            if pieces < MAX_ARC_PIECES && middle > a && middle < b {
-                stack[held] = (middle, b, failed);
-                stack[held + 1] = (a, middle, failed);
+            let split = plan.split_point(&g);
+            if pieces < MAX_ARC_PIECES && split > a && split < b {
+                stack[held] = (split, b, failed);
+                stack[held + 1] = (a, split, failed);
                 held += 2;
                 pieces += 1;
             } else {
@@ -1281,7 +1281,7 @@ const BROAD_LOBE_BELOW: f64 = 8.0;
 /// The largest of [`RAY_NODES`].
 const MAX_RAY_NODES: usize = RAY_NODES[RAY_NODES.len() - 1];
 
-/// The most pieces [`SurfaceScene::arc_pieces`] halves an arc's panel in the light angle into.
+/// The most pieces [`SurfaceScene::arc_pieces`] splits an arc's panel in the light angle into.
 const MAX_ARC_PIECES: usize = 16;
 
 /// `q(γ)` ([`RayInterpolant`]) on the outer range as up to three interpolants, the `i`-th ending
