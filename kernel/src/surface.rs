@@ -371,6 +371,23 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
 }
 
+/// A Lambertian point's outer integrand at `γ` over the rays' interpolant, without `ρ/π`
+/// and a factor 4: `∫ (A + B cos x)⁺ dx / 2 · L_a sin γ / 2 = (Aψ + B sin ψ) cos(γ/2) e^{q(γ)}`
+/// (`A = cos α_n cos γ`, `B = sin α_n sin γ`, [`half_arc_and_sine`]; docs/DESIGN.md §11), with
+/// `sin γ = 2 sin(γ/2) cos(γ/2)` and `cos γ = (cos(γ/2) − sin(γ/2))(cos(γ/2) + sin(γ/2))` from
+/// one [`sin_cos_quarter`] of `γ/2 ∈ [0, π/2]`: no square root or division for the half angle,
+/// and `cos γ` within a few ε absolutely, as [`sin_cos_half_turn`]'s.
+fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<T>) -> T {
+    let (s, c) = sin_cos_quarter(g * T::lit(0.5));
+    let (sin_g, cos_g) = ((s + s) * c, (c - s) * (c + s));
+    let (a, b) = (cos_n * cos_g, sin_n * sin_g);
+    let (psi, sin_psi) = half_arc_and_sine(a, b);
+    if !(psi > T::zero()) {
+        return T::zero();
+    }
+    (a * psi + b * sin_psi) * c * pieces.exp_at(g)
+}
+
 /// `(sin(γ/2), cos(γ/2))` for `γ ∈ [0, π]` from `γ`'s sine and cosine, each as a square root
 /// of `(1 ∓ cos γ)/2` where that is at least `1/2` and the other from `sin γ = 2 sin(γ/2)
 /// cos(γ/2)`: no cancellation at either end.
@@ -1096,11 +1113,14 @@ where
         for (i, k) in knots.iter_mut().enumerate().take(n + 1) {
             *k = T::from(i).unwrap_or(T::zero());
         }
-        let mut mapped = |x: T| {
+        // `(γ, dγ/dx)` at the outer variable `x`, piece `⌊x⌋` mapped by `piece_map`
+        let piece = |x: T| {
             // (x ≥ 0: the conversion's truncation is the floor, without a call to it)
             let i = x.to_usize().unwrap_or(0).min(n - 1);
-            let t = x - knots[i];
-            let (g, jacobian) = piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], t);
+            piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], x - knots[i])
+        };
+        let mut mapped = |x: T| {
+            let (g, jacobian) = piece(x);
             if jacobian > T::zero() {
                 outer(g) * jacobian
             } else {
@@ -1193,7 +1213,27 @@ where
                     if let Some(value) = self.mirror_cone(&fr, alpha_r, &source.borrow(), left) {
                         return (value, rays.get());
                     }
-                    let (value, _) = crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels);
+                    let pieces = source.borrow();
+                    let (value, _) = match self.brdf {
+                        // a Lambertian node: the arc's closed form times `L_a sin γ = 2 cos(γ/2)
+                        // e^{q}`, with γ's sine and cosine from γ/2's (`lambert_node`)
+                        Brdf::Lambert { albedo } => {
+                            let scale = albedo * T::FRAC_1_PI() * T::lit(4.0);
+                            let mut lambert = |x: T| {
+                                let (g, jacobian) = piece(x);
+                                if jacobian > T::zero() {
+                                    lambert_node(fr.n, g, &pieces) * scale * jacobian
+                                } else {
+                                    T::zero()
+                                }
+                            };
+                            crate::extended::adaptive_by(&rule_of, &mut lambert, &knots[..=n], left, max_panels)
+                        }
+                        Brdf::Phong { .. } => {
+                            drop(pieces);
+                            crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels)
+                        }
+                    };
                     return (value, rays.get());
                 }
             }
