@@ -371,12 +371,13 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
 }
 
-/// A Lambertian point's outer integrand at `γ` over the rays' interpolant, without `ρ/π`
-/// and a factor 4: `∫ (A + B cos x)⁺ dx / 2 · L_a sin γ / 2 = (Aψ + B sin ψ) cos(γ/2) e^{q(γ)}`
-/// (`A = cos α_n cos γ`, `B = sin α_n sin γ`, [`half_arc_and_sine`]; docs/DESIGN.md §11), with
-/// `sin γ = 2 sin(γ/2) cos(γ/2)` and `cos γ = (cos(γ/2) − sin(γ/2))(cos(γ/2) + sin(γ/2))` from
-/// one [`sin_cos_quarter`] of `γ/2 ∈ [0, π/2]`: no square root or division for the half angle,
-/// and `cos γ` within a few ε absolutely, as [`sin_cos_half_turn`]'s.
+/// A Lambertian point's outer integrand at `γ` over the rays' interpolant, without `ρ/π` and a
+/// factor 4: `∫ (A + B cos x)⁺ dx / 2 · L_a sin γ / 2 = (Aψ + B sin ψ) · L_a sin γ / 2` (`A = cos
+/// α_n cos γ`, `B = sin α_n sin γ`, [`half_arc_and_sine`]; `L_a sin γ` by
+/// [`RayPieces::light_sin`]; docs/DESIGN.md §11), with `sin γ = 2 sin(γ/2) cos(γ/2)` and `cos γ =
+/// (cos(γ/2) − sin(γ/2))(cos(γ/2) + sin(γ/2))` from one [`sin_cos_quarter`] of `γ/2 ∈ [0, π/2]`:
+/// no square root or division for the half angle, and `cos γ` within a few ε absolutely, as
+/// [`sin_cos_half_turn`]'s.
 fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<T>) -> T {
     let (s, c) = sin_cos_quarter(g * T::lit(0.5));
     let (sin_g, cos_g) = ((s + s) * c, (c - s) * (c + s));
@@ -385,7 +386,7 @@ fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<
     if !(psi > T::zero()) {
         return T::zero();
     }
-    (a * psi + b * sin_psi) * c * pieces.exp_at(g)
+    (a * psi + b * sin_psi) * pieces.light_sin(g, || c) * T::lit(0.5)
 }
 
 /// `(sin(γ/2), cos(γ/2))` for `γ ∈ [0, π]` from `γ`'s sine and cosine, each as a square root
@@ -468,7 +469,7 @@ where
         &self.phase
     }
 
-    /// Whether `ln(L_a(γ) sin(γ/2))` is predicted smooth enough on the outer range for
+    /// Whether `q(γ)` ([`Shape`]) is predicted smooth enough on the outer range for
     /// [`RayInterpolant`]'s few nodes, and its rays cheaper than a ray at every outer node: the
     /// medium thin over the light's distance (`σt·d ≤` [`LAYER_FROM`]); or thicker, where
     /// [`Map::Layer`] grades the piece from the light's direction to the layer there, while
@@ -745,8 +746,9 @@ where
             for (j, &c) in cos_phi.iter().enumerate() {
                 let cos_g = (cos_t * cos_r + sin_t * c * sin_r).max(-T::one()).min(T::one());
                 let cosine = (cos_t * n_r + sin_t * c * n_e1).max(T::zero());
-                // L_a = e^q / sin(γ/2), sin(γ/2) = √((1 − cos γ)/2)
-                let value = cosine * pieces.exp_at(cos_g.acos()) / ((T::one() - cos_g) * half).sqrt();
+                // L_a = w e^q / sin γ, sin γ = √((1 − cos γ)(1 + cos γ)), cos(γ/2) = √((1 + cos γ)/2)
+                let sin_g = ((T::one() - cos_g) * (T::one() + cos_g)).sqrt();
+                let value = cosine * pieces.light_sin(cos_g.acos(), || ((T::one() + cos_g) * half).sqrt()) / sin_g;
                 f8 = f8 + T::lit(fine[j]) * value;
                 f4 = f4 + T::lit(coarse[j]) * value;
             }
@@ -871,8 +873,7 @@ where
             let omni_times = |inner: T| {
                 let pieces = source.borrow();
                 let light = if pieces.count > 0 {
-                    // L_a sin γ = 2 cos(γ/2) · L_a sin(γ/2)
-                    T::lit(2.0) * half_angle(sin_g, cos_g).1 * pieces.exp_at(g)
+                    pieces.light_sin(g, || half_angle(sin_g, cos_g).1)
                 } else {
                     along(cos_g, sin_g, phi_n) * sin_g
                 };
@@ -1141,7 +1142,7 @@ where
         };
         if default_path && omni && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
             // L_a(γ) is smooth where the outer integrand's kinks are (they are the inner
-            // integral's): ln(L_a(γ) sin(γ/2)) interpolated from RAY_NODES rays, the outer
+            // integral's): q = ln(L_a(γ) sin γ / w(γ)) (`Shape`) interpolated from RAY_NODES rays, the outer
             // integral needs no more. The interpolant's estimate is then one of L_a's relative
             // error, wherever the BRDF's weight lies: at most half the tolerance to it, what it
             // leaves to the outer integral (docs/DESIGN.md §11). Else more nodes, then a ray at
@@ -1166,14 +1167,22 @@ where
             }
             ends[..parts].sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
             let bound = (T::one() + tolerance * T::lit(0.5)).ln();
+            let depth = self.medium.sigma_t * fr.d;
+            // in thin isotropic fog the vacuum's shape divided out, and from 4 nodes (THIN_PER_TOLERANCE)
+            let thin = self.phase.is_isotropic() && depth <= tolerance * T::lit(THIN_PER_TOLERANCE);
+            let shape = if thin { Shape::Vacuum } else { Shape::HalfAngle };
             let ray = |g: T| {
                 let (sin_g, cos_g) = sin_cos_half_turn(g);
-                (along(cos_g, sin_g, fr.n.2) * half_angle(sin_g, cos_g).0).ln()
+                let light = along(cos_g, sin_g, fr.n.2);
+                match shape {
+                    // (π − γ as sin γ's own reduction forms it beyond π/2, so their ratio is exact there)
+                    Shape::Vacuum => (light * sin_g / (T::PI() - g)).ln(),
+                    Shape::HalfAngle => (light * half_angle(sin_g, cos_g).0).ln(),
+                }
             };
             // each piece's map: squared from the light's direction (graded to the layer there
             // beyond LAYER_FROM), geometric away from a narrow lobe's peak where one ends the
             // piece on one side only, else linear
-            let depth = self.medium.sigma_t * fr.d;
             let starts = [lo, ends[0], ends[1]];
             let map_of = |i: usize| {
                 let (a, b) = (starts[i], ends[i]);
@@ -1187,11 +1196,13 @@ where
                     _ => Map::Linear,
                 }
             };
-            for count in RAY_NODES {
+            let first = usize::from(!thin);
+            for &count in &RAY_NODES[first..] {
                 // (sampled in place: the pieces are a few hundred bytes each)
                 let (passed, worst) = {
                     let mut pieces = source.borrow_mut();
                     pieces.ends = ends;
+                    pieces.shape = shape;
                     for i in 0..parts {
                         pieces.parts[i].sample(count, starts[i], ends[i], map_of(i), ray);
                     }
@@ -1294,8 +1305,20 @@ pub const PHASE_LOBE_GAP: f64 = 0.01;
 /// (docs/DESIGN.md §11).
 const LAYER_FROM: f64 = 3.0;
 
-/// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node.
-const RAY_NODES: [usize; 2] = [6, 12];
+/// The node counts of [`RayInterpolant`] tried in turn before a ray at every outer node: from
+/// the first only where [`THIN_PER_TOLERANCE`] predicts it passes, else from the second.
+const RAY_NODES: [usize; 3] = [4, 6, 12];
+
+/// `σt·d / tolerance` up to which the rays' interpolant of a point in isotropic fog takes
+/// [`Shape::Vacuum`] and starts from 4 nodes instead of 6: `q` then varies by `O(σt·d)` only.
+/// Passing, 4 save 2 rays; failing, they cost 4 more, so they pay where they pass more than two
+/// times in three. Passed at 4, of 40 Lambertian points per `σt·d` (the light at distance 1,
+/// 0.04 to 3.06 from the normal; 4 tried at every depth, the points of `cargo run --release -p
+/// airlight-tests --example surface_rays`): at outer tolerance 1e-1 all 40 up to `σt·d = 0.03`,
+/// 39 at 0.1, 30 at 0.3, 19 at 0.6, 11 at 1; at 5e-2 all up to 0.03, 18 at 0.1, 3 at 0.3 — so
+/// the bound, 0.15 and 0.075 there, stays where they pass nearly always (docs/DESIGN.md §11). A
+/// prediction of cost only: the estimate decides.
+const THIN_PER_TOLERANCE: f64 = 1.5;
 
 /// The finest outer tolerance at which [`RayInterpolant`] is tried: finer, its 12 nodes rarely
 /// pass, and the rays it spent are lost (docs/DESIGN.md §11).
@@ -1331,13 +1354,41 @@ const MAX_ARC_PIECES: usize = 16;
 struct RayPieces<T> {
     ends: [T; 3],
     count: usize,
+    shape: Shape,
     parts: [RayInterpolant<T>; 3],
+}
+
+/// What the interpolated `q(γ) = ln(L_a(γ) sin γ / w(γ))` divides out. `Vacuum`: `w = π − γ`,
+/// the shape of `L_a sin γ` with an isotropic phase function as `σt·d → 0` (the angle the ray
+/// subtends at the light: `L_a → σs I/(4π) · (π − γ)/(d sin γ)`), so that `q` carries only the
+/// extinction's effect, `O(σt·d)` — in thin isotropic fog, where 4 nodes then pass
+/// ([`THIN_PER_TOLERANCE`]; from `σt·d` 2–3 on, where the layer at the light's direction shapes
+/// `L_a`, one or two in 40 points more took 18 rays with it at tolerances 1e-1 and 5e-2). Else
+/// `HalfAngle`: `w = 2 cos(γ/2)`, `q = ln(L_a sin(γ/2))`. Both keep `q` finite on all of `[0, π]`
+/// (docs/DESIGN.md §11).
+#[derive(Clone, Copy, PartialEq)]
+enum Shape {
+    Vacuum,
+    HalfAngle,
 }
 
 impl<T: Real> RayPieces<T> {
     /// No pieces (`count` 0): a ray at every outer node.
     fn none() -> Self {
-        RayPieces { ends: [T::zero(); 3], count: 0, parts: [RayInterpolant::none(); 3] }
+        RayPieces { ends: [T::zero(); 3], count: 0, shape: Shape::HalfAngle, parts: [RayInterpolant::none(); 3] }
+    }
+
+    /// `w(γ)` of [`Shape`], with `cos(γ/2)` formed only where it is used.
+    fn shape_at(&self, gamma: T, cos_half: impl FnOnce() -> T) -> T {
+        match self.shape {
+            Shape::Vacuum => T::PI() - gamma,
+            Shape::HalfAngle => T::lit(2.0) * cos_half(),
+        }
+    }
+
+    /// `L_a(γ) sin γ = w(γ) e^{q(γ)}` from the interpolant ([`Shape`], [`RayPieces::exp_at`]).
+    fn light_sin(&self, gamma: T, cos_half: impl FnOnce() -> T) -> T {
+        self.shape_at(gamma, cos_half) * self.exp_at(gamma)
     }
 
     /// `e^{q(γ)}` from the interpolant whose piece holds `γ`.
@@ -1353,9 +1404,9 @@ impl<T: Real> RayPieces<T> {
 /// its peak (`SurfaceScene::air_light_counted`; docs/DESIGN.md §11).
 const SMOOTH_PHASE_GAP: f64 = 0.1;
 
-/// `q(γ) = ln(L_a(γ) sin(γ/2))` of a light without an axis on the outer range `[lo, hi]` (finite
-/// on the whole of `[0, π]`: `L_a` grows like `1/γ` towards the light and is finite away from
-/// it), interpolated at the Chebyshev points of the first kind (inside the range: none on the
+/// `q(γ) = ln(L_a(γ) sin γ / w(γ))` ([`Shape`]) of a light without an axis on the outer range
+/// `[lo, hi]` (finite on the whole of `[0, π]`: `L_a` grows like `1/γ` towards the light and is
+/// finite away from it), interpolated at the Chebyshev points of the first kind (inside the range: none on the
 /// light's direction `γ = 0`; their cosines directly, for the accuracy of the nodes, by
 /// `sin_cos_quarter` in the lower half and by symmetry in the upper; the series by
 /// `chebyshev_series`) in `τ ∈ [−1, 1]`, `γ = lo + (hi − lo)·(1 +
@@ -1365,7 +1416,8 @@ const SMOOTH_PHASE_GAP: f64 = 0.1;
 /// error, `2 Σ_{k ≥ M} |c_k|` (Trefethen, Approximation Theory and Approximation Practice, Thm.
 /// 4.2) with the tail summed from the last two coefficients, `last`, at the decay they show but
 /// at least `M/8` of them (an algebraic tail's; `∞` where they fall by less than half from the
-/// two before): an error `e` of `q` is one of `e^e − 1` relative in `L_a`, wherever it lies.
+/// two before — at `M = 4`, where those would hold the mean `c_0`, from the pair one degree
+/// before, the ratio squared): an error `e` of `q` is one of `e^e − 1` relative in `L_a`, wherever it lies.
 /// `top = c_0 + Σ_{k≥1} |c_k|` bounds the interpolant from above (`|T_k| ≤ 1`), so that
 /// `e^{q − top}` takes an exponential of a non-positive argument.
 #[derive(Clone, Copy)]
@@ -1413,8 +1465,15 @@ impl<T: Real> RayInterpolant<T> {
         coefficients.fill(T::zero());
         chebyshev_series(&nodes, &values, &mut coefficients[..count]);
         let last = coefficients[count - 1].abs() + coefficients[count - 2].abs();
-        let before = coefficients[count - 3].abs() + coefficients[count - 4].abs();
-        let q2 = if last < before { last / before } else { T::one() };
+        // the pair before the last two, or at 4 nodes (where it would hold the mean c_0, no
+        // measure of the decay) the pair one degree before, its ratio squared
+        let q2 = if count >= 6 {
+            let before = coefficients[count - 3].abs() + coefficients[count - 4].abs();
+            if last < before { last / before } else { T::one() }
+        } else {
+            let before = coefficients[count - 2].abs() + coefficients[count - 3].abs();
+            if last < before { (last / before) * (last / before) } else { T::one() }
+        };
         // the tail as geometric at the decay shown, but no less than an algebraic one's: the
         // γ ln γ term makes the coefficients fall like a power of k in the squared map, where the
         // error of the M-node interpolant measured 0.26 and 2.0 times `last` at M = 6 and 12
@@ -1536,7 +1595,7 @@ mod tests {
     /// Henyey–Greenstein lobe (`g = 0.95`) on its piece from `γ = 0` and beyond it, in the
     /// geometric map (where `SurfaceScene::air_light_counted` splits at 4 lobe widths) — its
     /// estimate bounds the error it makes at 400 points of the range wherever the estimate is
-    /// finite.
+    /// finite; at every node count of `RAY_NODES` (at 4, errors 0.14–0.17 of the estimate).
     #[test]
     fn ray_interpolant_is_exact_for_its_degree_and_its_estimate_holds() {
         let sampled = |count: usize, lo: f64, hi: f64, map: Map<f64>, f: &dyn Fn(f64) -> f64| {
