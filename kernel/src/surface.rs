@@ -371,10 +371,10 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
     (x.acos(), ((T::one() - x) * (T::one() + x)).sqrt())
 }
 
-/// A Lambertian point's outer integrand at `γ` over the rays' interpolant, without `ρ/π` and a
-/// factor 4: `∫ (A + B cos x)⁺ dx / 2 · L_a sin γ / 2 = (Aψ + B sin ψ) · L_a sin γ / 2` (`A = cos
-/// α_n cos γ`, `B = sin α_n sin γ`, [`half_arc_and_sine`]; `L_a sin γ` by
-/// [`RayPieces::light_sin`]; docs/DESIGN.md §11), with `sin γ = 2 sin(γ/2) cos(γ/2)` and `cos γ =
+/// A Lambertian point's outer integrand at `γ` over the rays' interpolant, without `2ρ/π`:
+/// `∫ (A + B cos x)⁺ dx / 2 · L_a sin γ = (Aψ + B sin ψ) · L_a sin γ` (`A = cos α_n cos γ`, `B =
+/// sin α_n sin γ`, [`half_arc_and_sine`]; `L_a sin γ` by [`RayPieces::light_sin`];
+/// docs/DESIGN.md §11), with `sin γ = 2 sin(γ/2) cos(γ/2)` and `cos γ =
 /// (cos(γ/2) − sin(γ/2))(cos(γ/2) + sin(γ/2))` from one [`sin_cos_quarter`] of `γ/2 ∈ [0, π/2]`:
 /// no square root or division for the half angle, and `cos γ` within a few ε absolutely, as
 /// [`sin_cos_half_turn`]'s.
@@ -386,7 +386,19 @@ fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<
     if !(psi > T::zero()) {
         return T::zero();
     }
-    (a * psi + b * sin_psi) * pieces.light_sin(g, || c) * T::lit(0.5)
+    (a * psi + b * sin_psi) * pieces.light_sin(g, || c)
+}
+
+/// `f(γ)·dγ/dx` at the outer variable `x`, `(γ, dγ/dx)` by `piece` (0 where the map's
+/// Jacobian vanishes, at a smoothstep piece's ends).
+#[inline(always)]
+fn weighted_at<T: Real>(piece: &impl Fn(T) -> (T, T), f: impl FnOnce(T) -> T, x: T) -> T {
+    let (g, jacobian) = piece(x);
+    if jacobian > T::zero() {
+        f(g) * jacobian
+    } else {
+        T::zero()
+    }
 }
 
 /// `(sin(γ/2), cos(γ/2))` for `γ ∈ [0, π]` from `γ`'s sine and cosine, each as a square root
@@ -733,7 +745,7 @@ where
         if !(beta + reach < T::FRAC_PI_2() && alpha_r >= margin && T::PI() - alpha_r >= margin && pieces.count > 0) {
             return None;
         }
-        let (half, two) = (T::lit(0.5), T::lit(2.0));
+        let two = T::lit(2.0);
         // cos φ at φ = 0, π/4, π/2, 3π/4, π and the folded trapezoid weights, 8 and 4 nodes
         let cos_phi = [T::one(), T::FRAC_1_SQRT_2(), T::zero(), -T::FRAC_1_SQRT_2(), -T::one()];
         let (fine, coarse) = ([0.125, 0.25, 0.25, 0.25, 0.125], [0.25, 0.0, 0.5, 0.0, 0.25]);
@@ -746,9 +758,7 @@ where
             for (j, &c) in cos_phi.iter().enumerate() {
                 let cos_g = (cos_t * cos_r + sin_t * c * sin_r).max(-T::one()).min(T::one());
                 let cosine = (cos_t * n_r + sin_t * c * n_e1).max(T::zero());
-                // L_a = w e^q / sin γ, sin γ = √((1 − cos γ)(1 + cos γ)), cos(γ/2) = √((1 + cos γ)/2)
-                let sin_g = ((T::one() - cos_g) * (T::one() + cos_g)).sqrt();
-                let value = cosine * pieces.light_sin(cos_g.acos(), || ((T::one() + cos_g) * half).sqrt()) / sin_g;
+                let value = cosine * pieces.light(cos_g);
                 f8 = f8 + T::lit(fine[j]) * value;
                 f4 = f4 + T::lit(coarse[j]) * value;
             }
@@ -1120,14 +1130,7 @@ where
             let i = x.to_usize().unwrap_or(0).min(n - 1);
             piece_map(edges[i], edges[i + 1], smooth[i], smooth[i + 1], x - knots[i])
         };
-        let mut mapped = |x: T| {
-            let (g, jacobian) = piece(x);
-            if jacobian > T::zero() {
-                outer(g) * jacobian
-            } else {
-                T::zero()
-            }
-        };
+        let mut mapped = |x: T| weighted_at(&piece, &outer, x);
         // a smooth piece within a Phong lobe's extent (between its outermost cuts) is a slice of
         // its peak at most 2.5/√n wide (where (cos δ)ⁿ ≈ e^{−nδ²/2}): where a tenth of the value
         // will do, 5 points
@@ -1224,26 +1227,15 @@ where
                     if let Some(value) = self.mirror_cone(&fr, alpha_r, &source.borrow(), left) {
                         return (value, rays.get());
                     }
-                    let pieces = source.borrow();
                     let (value, _) = match self.brdf {
-                        // a Lambertian node: the arc's closed form times `L_a sin γ = 2 cos(γ/2)
-                        // e^{q}`, with γ's sine and cosine from γ/2's (`lambert_node`)
+                        // a Lambertian node: the arc's closed form times the interpolant's `L_a sin
+                        // γ`, with γ's sine and cosine from γ/2's (`lambert_node`)
                         Brdf::Lambert { albedo } => {
-                            let scale = albedo * T::FRAC_1_PI() * T::lit(4.0);
-                            let mut lambert = |x: T| {
-                                let (g, jacobian) = piece(x);
-                                if jacobian > T::zero() {
-                                    lambert_node(fr.n, g, &pieces) * scale * jacobian
-                                } else {
-                                    T::zero()
-                                }
-                            };
+                            let (pieces, scale) = (source.borrow(), T::lit(2.0) * albedo * T::FRAC_1_PI());
+                            let mut lambert = |x: T| weighted_at(&piece, |g| lambert_node(fr.n, g, &pieces) * scale, x);
                             crate::extended::adaptive_by(&rule_of, &mut lambert, &knots[..=n], left, max_panels)
                         }
-                        Brdf::Phong { .. } => {
-                            drop(pieces);
-                            crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels)
-                        }
+                        Brdf::Phong { .. } => crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels),
                     };
                     return (value, rays.get());
                 }
@@ -1378,17 +1370,25 @@ impl<T: Real> RayPieces<T> {
         RayPieces { ends: [T::zero(); 3], count: 0, shape: Shape::HalfAngle, parts: [RayInterpolant::none(); 3] }
     }
 
-    /// `w(γ)` of [`Shape`], with `cos(γ/2)` formed only where it is used.
-    fn shape_at(&self, gamma: T, cos_half: impl FnOnce() -> T) -> T {
-        match self.shape {
+    /// `L_a(γ) sin γ = w(γ) e^{q(γ)}` from the interpolant ([`Shape`], [`RayPieces::exp_at`]),
+    /// with `cos(γ/2)` formed only where `w` needs it.
+    fn light_sin(&self, gamma: T, cos_half: impl FnOnce() -> T) -> T {
+        let w = match self.shape {
             Shape::Vacuum => T::PI() - gamma,
             Shape::HalfAngle => T::lit(2.0) * cos_half(),
-        }
+        };
+        w * self.exp_at(gamma)
     }
 
-    /// `L_a(γ) sin γ = w(γ) e^{q(γ)}` from the interpolant ([`Shape`], [`RayPieces::exp_at`]).
-    fn light_sin(&self, gamma: T, cos_half: impl FnOnce() -> T) -> T {
-        self.shape_at(gamma, cos_half) * self.exp_at(gamma)
+    /// `L_a(γ)` itself at `γ = arccos(cos_g)`: `(π − γ) e^q / sin γ` or `e^q / sin(γ/2)`
+    /// ([`Shape`]), one square root either way.
+    fn light(&self, cos_g: T) -> T {
+        let gamma = cos_g.acos();
+        let value = self.exp_at(gamma);
+        match self.shape {
+            Shape::Vacuum => value * (T::PI() - gamma) / ((T::one() - cos_g) * (T::one() + cos_g)).sqrt(),
+            Shape::HalfAngle => value / ((T::one() - cos_g) * T::lit(0.5)).sqrt(),
+        }
     }
 
     /// `e^{q(γ)}` from the interpolant whose piece holds `γ`.
