@@ -59,7 +59,7 @@ fn lit(normal: DVec3, albedo: f64, sigma_s: f64, sigma_t: f64) -> SurfaceScene<f
 /// hemisphere is `γ < π/2` or `γ > π/2` and the check is by parts alone (`∫ (π − γ) cos γ = (π −
 /// γ) sin γ − cos γ`). Between them, the arcs that open and close with `γ` (the outer integral's
 /// kinks) at every `α` of a sweep through `π/2` (grazing: `E(1) = 1`): the default path within
-/// its 1e-9, and the loose tolerances of the interpolated rays within themselves (`q` is then
+/// its 1e-9 (f32: 1e-4), and the loose tolerances of the interpolated rays within themselves (`q` is then
 /// constant, so what is left is the outer rule's).
 #[test]
 fn non_absorbing_isotropic_closed_forms() {
@@ -77,6 +77,14 @@ fn non_absorbing_isotropic_closed_forms() {
             let got = point.air_light_counted(tolerance).0;
             assert!((got - exact).abs() <= tolerance * exact, "α = {alpha} at {tolerance}: {got} vs {exact}");
         }
+        // f32 (its inputs rounded: a few 1e-8 of the value) within its 1e-4
+        let (surface, light) = (point.surface(), point.light());
+        let single = |v: DVec3| v.as_vec3();
+        let surface = Surface { position: single(surface.position), normal: single(surface.normal) };
+        let light = PointLight { position: single(light.position), intensity: intensity as f32, distribution: Omni };
+        let point32 = SurfaceScene::new(surface, Brdf::Lambert { albedo: albedo as f32 }, light, Medium { sigma_s: sigma_s as f32, sigma_t: 0.0 }, Isotropic).unwrap();
+        let got = point32.air_light() as f64;
+        assert!((got - exact).abs() <= 1e-4 * exact, "f32, α = {alpha}: {got} vs {exact}");
     }
 }
 
