@@ -4,8 +4,9 @@
 #   2. the fuzz targets (kernel, f32_vs_f64, shader) for a bounded time each (FUZZ_SECONDS,
 #      default 60; needs the nightly toolchain and cargo-fuzz — .ci/run installs cargo-fuzz;
 #      SKIP_FUZZ=1 leaves them out on a developer machine, never under CI=true),
-#   3. the complex E1 tuning and the sine/cosine minimax tables re-derived against mpmath (needs
-#      python3 with mpmath; .ci/run installs it), and the kernel as a crates.io package: clippy's `incompatible_msrv` lint against its
+#   3. the complex E1 tuning and the sine/cosine minimax tables re-derived against mpmath, and
+#      surface.jsonl's Lambertian records checked by a second formula (needs python3 with
+#      mpmath; .ci/run installs it), and the kernel as a crates.io package: clippy's `incompatible_msrv` lint against its
 #      `rust-version` (functions and methods newer than it; language features and traits are
 #      not covered), and `cargo publish --dry-run` (packages and builds what crates.io would get),
 #   4. `cargo test --workspace --release`: unit, reference, property, C ABI (no_std included),
@@ -31,6 +32,9 @@ python3 tests/reference/gen_e1_tuning.py
 
 echo "== minimax polynomials (scripts/gen_minimax.py: the tables of sin_cos_quarter, exp_nonpositive and atan_nonnegative in kernel/src/real.rs, re-derived)"
 python3 scripts/gen_minimax.py --check
+
+echo "== surface references (tests/reference/check_surface_spheroidal.py: the first Lambertian record of each class under a light without an axis, re-derived as a volume integral in prolate spheroidal coordinates)"
+python3 tests/reference/check_surface_spheroidal.py
 
 echo "== kernel package"
 cargo clippy -q -p airlight -p airlight-capi --all-features --lib -- -A clippy::all -D clippy::incompatible_msrv
