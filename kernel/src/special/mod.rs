@@ -1,4 +1,4 @@
-//! Exponential integrals (docs/DESIGN.md §3, paper §4.1–4.2).
+//! Special functions (docs/DESIGN.md §3, paper §4.1–4.2; §11 for `E(m)`).
 //!
 //! * [`e1`](fn@e1), [`e1_scaled`], [`ei`]: complex `E1(z)`, `e^z E1(z)` and `Ei(z)` for `Re z ≥ 0`
 //!   (for `Ei`: `Re z ≤ 0`), the production path: power series inside an ellipse around the
@@ -8,11 +8,13 @@
 //! * [`ein_divided_difference`]: `(Ein(b) − Ein(a))/(b − a)` without cancellation, for
 //!   differences of `E1` at nearby points with the logarithm split off.
 //! * [`en_scaled`]: real `e^x E_n(x)`, `n = 1, 2, …`.
+//! * [`elliptic_e`]: the complete elliptic integral of the second kind, `E(m)`.
 //! * [`paper`]: the paper's own power/asymptotic `Ei` (eq. 21–27, fig. 2), kept for comparison.
 
 mod complex;
 mod continued_fraction;
 mod e1;
+mod elliptic;
 mod en;
 pub mod paper;
 mod series;
@@ -21,6 +23,7 @@ pub use complex::{cdiv, csqrt, C};
 pub use continued_fraction::{e1_scaled_cf, PLAIN_FROM};
 pub(crate) use e1::e1_by_series;
 pub use e1::{e1, e1_scaled, ei, in_series_region};
+pub use elliptic::elliptic_e;
 pub use en::en_scaled;
 pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
 
