@@ -45,7 +45,8 @@
 //!    real `E_n`).
 //!
 //! [`scene`] is the public front: [`Scene`], [`in_scatter`], the surface term and total
-//! radiance, and the seeds' [`atan_form`]. [`march`] is the ray-marching baseline
+//! radiance, and the seeds' [`atan_form`] (with [`lambert_vacuum_form`], its analogue for a
+//! Lambertian surface). [`march`] is the ray-marching baseline
 //! ([`Scene::ray_march`]) the benchmarks compare against.
 #![no_std]
 #![warn(missing_docs)]
@@ -81,5 +82,5 @@ pub use phase::PhaseFunction;
 pub use precision::{f32, f64};
 pub use real::Real;
 pub use scalar::Scalar;
-pub use surface::{Brdf, Surface, SurfaceScene, SHADER_PHONG_PANELS, SHADER_SURFACE_PANELS};
+pub use surface::{lambert_vacuum_form, Brdf, Surface, SurfaceScene, SHADER_PHONG_PANELS, SHADER_SURFACE_PANELS};
 pub use scene::{atan_form, default_control, in_scatter, in_scatter_unchecked, Medium, PointLight, Ray, Scene, CPU_TERMS, FEWER_NODES_FROM, SHADER_CONTROL, SHADER_NODES};

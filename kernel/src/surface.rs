@@ -80,6 +80,29 @@ pub struct Surface<T: Real> {
     pub normal: T::Vec3,
 }
 
+/// A Lambertian point's air-light *without extinction*, in closed form: `L = ρ σs I (E(sin²α) +
+/// cos α)/(2π d)`, `d` the light's distance from the point, `α` its angle from the normal and
+/// `E` the complete elliptic integral of the second kind ([`crate::special::elliptic_e`];
+/// docs/DESIGN.md §11 derives it). It equals [`SurfaceScene::air_light`] where `σt = 0`, the
+/// phase function is isotropic and the light has no axis (tests/surface.rs
+/// `non_absorbing_isotropic_closed_forms`: within 3e-15 of the default path at 25 normals). In a
+/// medium it leaves out the extinction and so bounds that air-light from above, by a margin that
+/// grows like `σt d ln(1/(σt d))`: on the `lambert_thin` points of tests/reference/surface.jsonl
+/// 1.8 % high at `σt·d = 0.0034`, 5–6 % at 0.015–0.019, 23 % at 0.059 and 48 % at 0.15
+/// (`vacuum_form_bounds_the_medium_from_above`, tests/surface.rs, prints them). The surface's
+/// analogue of [`crate::atan_form`]: no ray integral. No input checks; a light at the point gives
+/// `+∞` or NaN.
+pub fn lambert_vacuum_form<T: Real>(surface: &Surface<T>, light_position: T::Vec3, intensity: T, albedo: T, sigma_s: T) -> T {
+    let p = T::vec3_to_array(surface.position);
+    let l = T::vec3_to_array(light_position);
+    let n = T::vec3_to_array(surface.normal);
+    let to_light = sub(l, p);
+    let d = length(to_light);
+    let cos_a = (dot(n, to_light) / (length(n) * d)).max(-T::one()).min(T::one());
+    let e = crate::special::elliptic_e((T::one() - cos_a) * (T::one() + cos_a), cos_a.abs());
+    albedo * sigma_s * intensity * (e + cos_a) / (T::lit(2.0) * T::PI() * d)
+}
+
 /// The most Gauss–Kronrod panels of each of the two integrals over the hemisphere.
 pub const MAX_SURFACE_PANELS: usize = 48;
 

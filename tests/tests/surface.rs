@@ -59,7 +59,7 @@ fn lit(normal: DVec3, albedo: f64, sigma_s: f64, sigma_t: f64) -> SurfaceScene<f
 /// hemisphere is `γ < π/2` or `γ > π/2` and the check is by parts alone (`∫ (π − γ) cos γ = (π −
 /// γ) sin γ − cos γ`). Between them, the arcs that open and close with `γ` (the outer integral's
 /// kinks) at every `α` of a sweep through `π/2` (grazing: `E(1) = 1`): the default path within
-/// its 1e-9 (f32: 1e-4), and the loose tolerances of the interpolated rays within themselves (`q` is then
+/// its 1e-9 (f32: 1e-4), the kernel's own `lambert_vacuum_form` within its `E`'s bound, and the loose tolerances of the interpolated rays within themselves (`q` is then
 /// constant, so what is left is the outer rule's).
 #[test]
 fn non_absorbing_isotropic_closed_forms() {
@@ -73,6 +73,10 @@ fn non_absorbing_isotropic_closed_forms() {
         let point = lit(cos_a * towards + sin_a * across, albedo, sigma_s, 0.0);
         let got = point.air_light();
         assert!((got - exact).abs() <= 1e-9 * exact, "α = {alpha}: {got} vs {exact}");
+        // the kernel's closed form: its E within 4Kε (K ≤ 40 from k' = |cos α| ≥ 1e-17), the
+        // cosine from the vectors within a few ε
+        let form = airlight::lambert_vacuum_form(point.surface(), point.light().position, intensity, albedo, sigma_s);
+        assert!((form - exact).abs() <= 1e-13 * exact, "lambert_vacuum_form, α = {alpha}: {form} vs {exact}");
         for tolerance in [1e-1, 1e-2, 1e-3] {
             let got = point.air_light_counted(tolerance).0;
             assert!((got - exact).abs() <= tolerance * exact, "α = {alpha} at {tolerance}: {got} vs {exact}");
@@ -85,7 +89,33 @@ fn non_absorbing_isotropic_closed_forms() {
         let point32 = SurfaceScene::new(surface, Brdf::Lambert { albedo: albedo as f32 }, light, Medium { sigma_s: sigma_s as f32, sigma_t: 0.0 }, Isotropic).unwrap();
         let got = point32.air_light() as f64;
         assert!((got - exact).abs() <= 1e-4 * exact, "f32, α = {alpha}: {got} vs {exact}");
+        // (the inputs rounded to f32 move it by a few 1e-8; its own E within 4·40·ε)
+        let form = airlight::lambert_vacuum_form(point32.surface(), point32.light().position, intensity as f32, albedo as f32, sigma_s as f32) as f64;
+        assert!((form - exact).abs() <= 2e-5 * exact, "f32 lambert_vacuum_form, α = {alpha}: {form} vs {exact}");
     }
+}
+
+/// Extinction only takes light away (`e^{−σt(t + r)} ≤ 1` in every ray), so in a medium
+/// `lambert_vacuum_form` bounds the Lambertian point's air-light from above wherever the phase
+/// function is isotropic and the light has no axis: at or above every such reference of
+/// tests/reference/surface.jsonl, by as much as this prints (the excess its docs quote).
+#[test]
+fn vacuum_form_bounds_the_medium_from_above() {
+    let mut checked = 0;
+    for v in reference_lines("surface.jsonl") {
+        if v["phase"]["kind"] != "isotropic" || v["light"]["distribution"]["kind"] != "isotropic" || v["surface"]["brdf"]["kind"] != "lambert" {
+            continue;
+        }
+        let point = surface::<f64>(&v);
+        let Brdf::Lambert { albedo } = *point.brdf() else { unreachable!() };
+        let exact = v["surface_air_light"].as_f64().unwrap();
+        let form = airlight::lambert_vacuum_form(point.surface(), point.light().position, point.light().intensity, albedo, point.medium().sigma_s);
+        let depth = point.medium().sigma_t * (point.light().position - point.surface().position).length();
+        println!("{:>14} σt·d {depth:.4}: the vacuum's form {:+.2e} of the value", v["category"].as_str().unwrap(), form / exact - 1.0);
+        assert!(form >= exact * (1.0 - 1e-12), "{}: {form} below {exact}", v["category"]);
+        checked += 1;
+    }
+    assert!(checked >= 12, "{checked} records");
 }
 
 /// `E(m) = ∫_0^{π/2} √(1 − m sin²θ) dθ` for `m ∈ [0, 1]`, `k' = √(1 − m)`, by the
