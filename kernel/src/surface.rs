@@ -88,8 +88,9 @@ pub struct Surface<T: Real> {
 /// `non_absorbing_isotropic_closed_forms`: within 3e-15 of the default path at 25 normals). In a
 /// medium it leaves out the extinction and so bounds that air-light from above, by a margin that
 /// grows like `σt d ln(1/(σt d))`: on the `lambert_thin` points of tests/reference/surface.jsonl
-/// 1.8 % high at `σt·d = 0.0034`, 5–6 % at 0.015–0.019, 23 % at 0.059 and 48 % at 0.15
-/// (`vacuum_form_bounds_the_medium_from_above`, tests/surface.rs, prints them). The surface's
+/// 1.8 % high at `σt·d = 0.0034`, 5.0–6.4 % at 0.015–0.019, 23 % at 0.059 and 48 % at 0.15, and
+/// 24 to 3e8 times the value on the `lambert_thick` ones (`σt·d` 2 to 17;
+/// `vacuum_form_bounds_the_medium_from_above`, tests/surface.rs, prints them). The surface's
 /// analogue of [`crate::atan_form`]: no ray integral. No input checks; a light at the point gives
 /// `+∞` or NaN.
 pub fn lambert_vacuum_form<T: Real>(surface: &Surface<T>, light_position: T::Vec3, intensity: T, albedo: T, sigma_s: T) -> T {
