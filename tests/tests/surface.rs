@@ -5,6 +5,7 @@
 use airlight::glam::DVec3;
 use airlight::light::{AnyDistribution, Omni};
 use airlight::phase::{AnyPhase, Isotropic, PhaseFunction};
+use airlight::special::elliptic_e;
 use airlight::surface::PHASE_LOBE_GAP;
 use airlight::{Brdf, Medium, PointLight, Surface, SurfaceScene};
 use airlight_codegen::scene_json::parse_line_with_id;
@@ -59,7 +60,7 @@ fn lit(normal: DVec3, albedo: f64, sigma_s: f64, sigma_t: f64) -> SurfaceScene<f
 /// hemisphere is `γ < π/2` or `γ > π/2` and the check is by parts alone (`∫ (π − γ) cos γ = (π −
 /// γ) sin γ − cos γ`). Between them, the arcs that open and close with `γ` (the outer integral's
 /// kinks) at every `α` of a sweep through `π/2` (grazing: `E(1) = 1`): the default path within
-/// its 1e-9 (f32: 1e-4), the kernel's own `lambert_vacuum_form` within its `E`'s bound, and the loose tolerances of the interpolated rays within themselves (`q` is then
+/// its 1e-9 (f32: 1e-4), the kernel's `lambert_vacuum_form` against the formula from `α` itself, and the loose tolerances of the interpolated rays within themselves (`q` is then
 /// constant, so what is left is the outer rule's).
 #[test]
 fn non_absorbing_isotropic_closed_forms() {
@@ -73,8 +74,8 @@ fn non_absorbing_isotropic_closed_forms() {
         let point = lit(cos_a * towards + sin_a * across, albedo, sigma_s, 0.0);
         let got = point.air_light();
         assert!((got - exact).abs() <= 1e-9 * exact, "α = {alpha}: {got} vs {exact}");
-        // the kernel's closed form: its E within 4Kε (K ≤ 40 from k' = |cos α| ≥ 1e-17), the
-        // cosine from the vectors within a few ε
+        // the kernel's closed form against the same formula from α itself: the cosine from the
+        // vectors within a few ε, which E(sin²α) carries at most K ≤ 40 times
         let form = airlight::lambert_vacuum_form(point.surface(), point.light().position, intensity, albedo, sigma_s);
         assert!((form - exact).abs() <= 1e-13 * exact, "lambert_vacuum_form, α = {alpha}: {form} vs {exact}");
         for tolerance in [1e-1, 1e-2, 1e-3] {
@@ -118,26 +119,9 @@ fn vacuum_form_bounds_the_medium_from_above() {
     assert!(checked >= 12, "{checked} records");
 }
 
-/// `E(m) = ∫_0^{π/2} √(1 − m sin²θ) dθ` for `m ∈ [0, 1]`, `k' = √(1 − m)`, by the
-/// arithmetic–geometric mean: `K = π/(2 a_∞)`, `E = K (1 − Σ_{n≥0} 2^{n−1} c_n²)`, `c_0² = m`,
-/// `c_{n+1} = (a_n − b_n)/2` (DLMF 19.8.1, 19.8.6); the test's reference, not the kernel's.
-fn elliptic_e(m: f64, k_prime: f64) -> f64 {
-    if k_prime == 0.0 {
-        return 1.0;
-    }
-    let (mut a, mut b, mut sum, mut power) = (1.0f64, k_prime, 0.5 * m, 0.5);
-    // (the means may end an ulp apart: stopped there, the next c_n² is below ε² of the sum)
-    while a - b > 4.0 * f64::EPSILON * a {
-        let c = 0.5 * (a - b);
-        power *= 2.0;
-        sum += power * c * c;
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    PI / (2.0 * a) * (1.0 - sum)
-}
-
-/// The reference's `E`: `E(0) = π/2`, `E(1) = 1`, and `E(1/2) = 1.35064 38810 47676` (A&S table
-/// 17.5, modular angle 45°).
+/// The closed form's `E` (the kernel's, held to mpmath in its unit test) at published values:
+/// `E(0) = π/2`, `E(1) = 1`, and `E(1/2) = 1.35064 38810 47676` (A&S table 17.5, modular angle
+/// 45°).
 #[test]
 fn elliptic_e_against_published_values() {
     assert_eq!(elliptic_e(0.0, 1.0), PI / 2.0);
