@@ -31,7 +31,10 @@
 //! ([`Scene::in_scatter_controlled`]) to a tenth as well, with a bounded number of panels; at
 //! loose tolerances a light without an axis in a thin medium may give `L_a(γ)` from an
 //! interpolant of the logarithm of a few rays instead (`RayInterpolant`), and a narrow Phong
-//! lobe over it is then integrated about its own axis (`SurfaceScene::mirror_cone`).
+//! lobe over it is then integrated about its own axis (`SurfaceScene::mirror_cone`). In
+//! isotropic fog such a light's ray from the point has its light-angle integral in closed form
+//! (`open_ray_isotropic`, complex `E1` at an argument of known angle): a Lambertian point takes
+//! it at every outer node, with neither ray integrals nor an interpolant.
 
 use core::cell::{Cell, RefCell};
 
@@ -42,6 +45,7 @@ use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, sin_cos_turns, Real};
+use crate::special::{e1_scaled_cf, ein, in_series_region, C, EULER_GAMMA};
 use crate::scalar::Scalar;
 use crate::panels::Control;
 use crate::combined::Physics;
@@ -402,7 +406,7 @@ fn half_arc_and_sine<T: Real>(a: T, b: T) -> (T, T) {
 /// (cos(γ/2) − sin(γ/2))(cos(γ/2) + sin(γ/2))` from one [`sin_cos_quarter`] of `γ/2 ∈ [0, π/2]`:
 /// no square root or division for the half angle, and `cos γ` within a few ε absolutely, as
 /// [`sin_cos_half_turn`]'s.
-fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<T>) -> T {
+fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, light_sin: impl FnOnce(T, T, T) -> T) -> T {
     let (s, c) = sin_cos_quarter(g * T::lit(0.5));
     let (sin_g, cos_g) = ((s + s) * c, (c - s) * (c + s));
     let (a, b) = (cos_n * cos_g, sin_n * sin_g);
@@ -410,7 +414,39 @@ fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, pieces: &RayPieces<
     if !(psi > T::zero()) {
         return T::zero();
     }
-    (a * psi + b * sin_psi) * pieces.light_sin(g, || c)
+    (a * psi + b * sin_psi) * light_sin(s, c, cos_g)
+}
+
+/// `K(γ) = ∫ e^{−σt(t + r − d)} dθ` over the open ray from a point at distance `d` from an omni
+/// light, at angle `γ` from the light's direction (`θ` the angle seen from the light, from
+/// `γ − π/2` to `π/2`; `L_a sin γ = σs I P e^{−σt·d} K(γ)/d` with an isotropic `P`; `π − γ`
+/// without extinction): with `Y = tan(θ/2 + π/4)` the exponent is `−σt·d sin γ (Y − tan(γ/2))`
+/// and `dθ = 2 dY/(1 + Y²)` (docs/DESIGN.md §4.3), so `K = 2 Im[e^w E1(w)]`, `w = σt·d (1 −
+/// e^{iγ}) = 2σt·d sin(γ/2)(sin(γ/2) − i cos(γ/2))` — the ray's exponential integral with its
+/// argument's angle `γ/2 − π/2` known, no arc tangent. By `E1 = −γ_E − ln w + Ein(w)` (A&S
+/// 5.1.11) with `Ein`'s series (|w| ≤ 2σt·d ≤ 1, [`OPEN_RAY_DEPTH`]):
+/// `K/2 = e^{Re w}[sin(Im w)(Re Ein − γ_E − ln|w|) + cos(Im w)(Im Ein + (π − γ)/2)]`, each term
+/// within a few ε of `K`'s scale. Given `σt·d`, `γ` and `γ/2`'s sine and cosine, and `cos γ`
+/// (`e^{Re w − σt·d} = e^{−σt·d cos γ}` is returned folded in: the value is `e^{−σt·d} K`).
+#[inline(always)]
+fn open_ray_isotropic<T: Real>(depth: T, g: T, (s, c, cos_g): (T, T, T)) -> T {
+    // (π − γ)/2 with π in two parts: the rounded π is ε·π off, which near γ = π would be
+    // ε·π/(π − γ) of the arc (π − fl64(π) = sin(fl64(π)) = 1.2246467991473532e-16)
+    let pi_low = T::lit(core::f64::consts::PI - T::PI().to_f64_exact() + 1.2246467991473532e-16);
+    let arc = ((T::PI() - g) + pi_low) * T::lit(0.5);
+    let w = C::new(T::lit(2.0) * depth * s * s, -(T::lit(2.0) * depth * s * c));
+    if !(w.im < T::zero()) {
+        // no extinction, or along the light's direction or away from it: the vacuum's angle
+        return (arc + arc) * (-depth).exp();
+    }
+    if !in_series_region(w) {
+        return T::lit(2.0) * (-depth).exp() * e1_scaled_cf(w).im;
+    }
+    let ein = ein(w);
+    let (sin_im, cos_im) = if -w.im <= T::FRAC_PI_4() { sin_cos_quarter(-w.im) } else { sin_cos_turns(-w.im) };
+    let log_w = (T::lit(2.0) * depth * s).ln();
+    let half = cos_im * (ein.im + arc) - sin_im * (ein.re - T::lit(EULER_GAMMA) - log_w);
+    T::lit(2.0) * (-(depth * cos_g)).exp() * half
 }
 
 /// `f(γ)·dγ/dx` at the outer variable `x`, `(γ, dγ/dx)` by `piece` (0 where the map's
@@ -512,16 +548,13 @@ where
     /// `e^{−σt·d}` is above the square root of the smallest normal number (`σt·d` ≤ 354 in f64,
     /// 43 in f32; beyond it the rays' values underflow), in fog without a lobe that splits the
     /// range ([`SMOOTH_PHASE_GAP`]), for a Phong point (its light's frame takes a ray at every
-    /// node of the pieces of its lobe) or for a Lambertian point in isotropic fog in f64 (in
-    /// anisotropic fog its 6 nodes failed on half of the random points of docs/DESIGN.md §11,
-    /// and in f32 a thick medium's ray costs about what the interpolant's exponentials do). A
-    /// prediction of cost only: the interpolant's estimate decides.
+    /// node of the pieces of its lobe); not for a thicker Lambertian point (in anisotropic fog
+    /// its 6 nodes failed on half of the random points of docs/DESIGN.md §11; in isotropic fog
+    /// it takes [`open_ray_isotropic`] at every node instead). A prediction of cost only: the
+    /// interpolant's estimate decides.
     fn smooth_rays(&self, d: T) -> bool {
         let depth = self.medium.sigma_t * d;
-        let graded = match self.brdf {
-            Brdf::Phong { .. } => true,
-            Brdf::Lambert { .. } => self.phase.is_isotropic() && T::epsilon() < T::lit(1e-10),
-        };
+        let graded = matches!(self.brdf, Brdf::Phong { .. });
         depth <= T::lit(LAYER_FROM) || (graded && depth <= -T::min_positive_value().ln() * T::lit(0.5) && self.phase_lobes(SMOOTH_PHASE_GAP).next().is_none())
     }
 
@@ -605,7 +638,9 @@ where
     /// their logarithm at 6 or 12 where that meets the tolerance; a phase function's lobe narrower
     /// than [`PHASE_LOBE_GAP`] allows is cut at its extent; a Lambertian point lit by a `c^p`
     /// beam takes the `p + 1` rays at each outer node as one ray integral where the light angle's
-    /// route passes on it, counted as one (docs/DESIGN.md §11).
+    /// route passes on it, counted as one; in isotropic fog a light without an axis gives each
+    /// ray in closed form (`open_ray_isotropic`: a Lambertian point one at every outer node,
+    /// each counted as a ray) (docs/DESIGN.md §11).
     pub fn air_light_counted(&self, tolerance: T) -> (T, usize) {
         let tolerance = working_tolerance(tolerance);
         let control = inner_control(tolerance);
@@ -862,9 +897,20 @@ where
         let (phi_a, axis_a) = if polynomial.is_some() { (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2)) } else { (T::zero(), T::zero()) };
         // the default path takes a Lambertian arc's rays about an axis as one (`arc_sum`)
         let arc_control = default_path.then(|| inner_control(tolerance));
-        let along = |cos_g: T, sin_g: T, phi: T| {
+        // an omni light in isotropic fog, on the default path: L_a(γ) sin γ in closed form
+        // (`open_ray_isotropic`) times `open`, σs I P/d, where e^{−σt·d} is well inside the
+        // float range (as `smooth_rays`'s bound); no ray integral and, for a Lambertian point,
+        // no interpolant (its nodes cost less than one such ray each)
+        let depth = self.medium.sigma_t * fr.d;
+        let open = (default_path && omni && self.phase.is_isotropic() && depth <= -T::min_positive_value().ln() * T::lit(0.5))
+            .then(|| self.medium.sigma_s * self.light.intensity * self.phase.eval(T::zero()) / fr.d);
+        let along = |g: T, cos_g: T, sin_g: T, phi: T| {
             rays.set(rays.get() + 1);
             let sin_g = sin_g.max(T::zero());
+            if let Some(open) = open {
+                let (s, c) = half_angle(sin_g, cos_g);
+                return open * open_ray_isotropic(depth, g, (s, c, cos_g)) / sin_g;
+            }
             // (an omni light has no axis to turn: D ignores c)
             let axis_u = if omni {
                 T::zero()
@@ -909,7 +955,7 @@ where
                 let light = if pieces.count > 0 {
                     pieces.light_sin(g, || half_angle(sin_g, cos_g).1)
                 } else {
-                    along(cos_g, sin_g, phi_n) * sin_g
+                    along(g, cos_g, sin_g, phi_n) * sin_g
                 };
                 light * inner
             };
@@ -1015,7 +1061,7 @@ where
                     for (j, v) in values.iter_mut().enumerate().take(p + 1) {
                         *v = match known[j] {
                             Some(value) => value,
-                            None => along(cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero())),
+                            None => along(g, cos_g, sin_g, phi_a + step * T::from(j).unwrap_or(T::zero())),
                         };
                     }
                     let values = &values[..=p];
@@ -1039,7 +1085,7 @@ where
                 None => inner_sum(&mut |phi| {
                     let f = geometric(phi);
                     if f > T::zero() {
-                        f * along(cos_g, sin_g, phi)
+                        f * along(g, cos_g, sin_g, phi)
                     } else {
                         T::zero()
                     }
@@ -1167,6 +1213,17 @@ where
             let i = a.to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
+        if let (Some(open), Brdf::Lambert { albedo }) = (open, self.brdf) {
+            let scale = T::lit(2.0) * albedo * T::FRAC_1_PI() * open;
+            let mut lambert = |x: T| {
+                weighted_at(&piece, |g| {
+                    rays.set(rays.get() + 1);
+                    lambert_node(fr.n, g, |s, c, cos_g| open_ray_isotropic(depth, g, (s, c, cos_g))) * scale
+                }, x)
+            };
+            let (value, _) = crate::extended::adaptive_by(&rule_of, &mut lambert, &knots[..=n], tolerance, max_panels);
+            return (value, rays.get());
+        }
         if default_path && omni && tolerance >= T::lit(INTERPOLATED_FROM) && self.smooth_rays(fr.d) {
             // L_a(γ) is smooth where the outer integrand's kinks are (they are the inner
             // integral's): q = ln(L_a(γ) sin γ / w(γ)) (`Shape`) interpolated from RAY_NODES rays, the outer
@@ -1194,13 +1251,12 @@ where
             }
             ends[..parts].sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
             let bound = (T::one() + tolerance * T::lit(0.5)).ln();
-            let depth = self.medium.sigma_t * fr.d;
             // in thin isotropic fog the vacuum's shape divided out, and from 4 nodes (THIN_PER_TOLERANCE)
             let thin = self.phase.is_isotropic() && depth <= tolerance * T::lit(THIN_PER_TOLERANCE);
             let shape = if thin { Shape::Vacuum } else { Shape::HalfAngle };
             let ray = |g: T| {
                 let (sin_g, cos_g) = sin_cos_half_turn(g);
-                let light = along(cos_g, sin_g, fr.n.2);
+                let light = along(g, cos_g, sin_g, fr.n.2);
                 match shape {
                     // (π − γ as sin γ's own reduction forms it beyond π/2, so their ratio is exact there)
                     Shape::Vacuum => (light * sin_g / (T::PI() - g)).ln(),
@@ -1256,7 +1312,7 @@ where
                         // γ`, with γ's sine and cosine from γ/2's (`lambert_node`)
                         Brdf::Lambert { albedo } => {
                             let (pieces, scale) = (source.borrow(), T::lit(2.0) * albedo * T::FRAC_1_PI());
-                            let mut lambert = |x: T| weighted_at(&piece, |g| lambert_node(fr.n, g, &pieces) * scale, x);
+                            let mut lambert = |x: T| weighted_at(&piece, |g| lambert_node(fr.n, g, |_, c, _| pieces.light_sin(g, || c)) * scale, x);
                             crate::extended::adaptive_by(&rule_of, &mut lambert, &knots[..=n], left, max_panels)
                         }
                         Brdf::Phong { .. } => crate::extended::adaptive_by(&rule_of, &mut mapped, &knots[..=n], left, max_panels),
@@ -1608,6 +1664,50 @@ mod tests {
     extern crate std;
     use super::*;
     use crate::extended::{adaptive, GAUSS_KRONROD_15};
+
+    /// [`open_ray_isotropic`] against mpmath's quadrature of its integral in `Y`, `e^{−σt·d} · 2∫_0^∞
+    /// e^{−Hx}/(1 + (x + tan(γ/2))²) dx`, `H = σt·d sin γ` (30 digits; tests/reference/gen_open_ray.py,
+    /// which also checks them against mpmath's own `E1`), at `γ` and `σt·d` exact in binary32, from
+    /// `σt·d` 1e-3 to 40 and `γ` from 0.016 to 3.09: Ein's series inside its region and the
+    /// continued fraction outside. Held to `(16 + 4σt·d + 8|w|/(π − γ))ε` relative: `γ/2`'s sine
+    /// and cosine and `cos γ` are each within an ulp, and `K` moves with them by about `2σt·d`
+    /// times their relative error (`w ∝ σt·d sin(γ/2)` in the exponent), plus some sixteen
+    /// roundings of the sum — whose terms, `Ein`'s imaginary part among them, are within a few
+    /// ε of `|w|`, where towards `γ = π` the value is `∝ π − γ` (measured: f64 within 85 ε at
+    /// `(3.09, 0.5)`, where the bound is 185, and 17 ε elsewhere; f32 within 9.3 ε).
+    #[test]
+    fn open_ray_against_quadrature() {
+        const CASES: [(f64, f64, f64); 12] = [
+            (0.015625, 0.0009765625, 3.1225658165588597636),
+            (0.3125, 0.046875, 2.5771827575302356388),
+            (1.0, 0.146484375, 1.4145308812684338275),
+            (2.0, 0.25, 0.50933699804247086569),
+            (3.09375, 0.5, 0.011714756390456984494),
+            (0.5, 1.5, 0.27194222251519337544),
+            (1.5, 3.0, 0.013441731234603445708),
+            (2.5, 1.0, 0.067354346769070556507),
+            (0.0625, 17.0, 4.880410762682015665e-8),
+            (1.0, 17.0, 4.1978499051926505505e-9),
+            (2.875, 8.0, 5.025967639665803184e-6),
+            (3.0, 40.0, 7.3502081809547905998e-21),
+        ];
+        fn check<T: Real>() -> f64 {
+            let mut worst = 0.0f64;
+            for (g, depth, exact) in CASES {
+                // (the library's, each within an ulp relatively; the kernel's cosine of γ/2 is
+                // within a few ε absolutely, which near γ = π is more of it)
+                let (s, c, cos_g) = (T::lit((g * 0.5).sin()), T::lit((g * 0.5).cos()), T::lit(g.cos()));
+                let value = open_ray_isotropic(T::lit(depth), T::lit(g), (s, c, cos_g)).to_f64_exact();
+                let error = ((value - exact) / exact).abs() / T::epsilon().to_f64_exact();
+                // |w| = 2σt·d sin(γ/2)
+                let bound = 16.0 + 4.0 * depth + 8.0 * 2.0 * depth * (g * 0.5).sin() / (core::f64::consts::PI - g);
+                assert!(error <= bound, "γ = {g}, σt·d = {depth}: {value:e} against {exact:e}, {error:.1} ε");
+                worst = worst.max(error);
+            }
+            worst
+        }
+        std::println!("open ray: f64 within {:.1} ε, f32 within {:.1} ε", check::<f64>(), check::<f32>());
+    }
 
     /// `RayInterpolant` reproduces a polynomial of degree `M − 1` in `τ` from its `M` values (to
     /// rounding: within `8Mε` of `Σ|c_k|`, the Lebesgue constant of the first-kind points being
