@@ -45,7 +45,7 @@ use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, sin_cos_turns, Real};
-use crate::special::{e1_scaled_cf, ein, in_series_region, C, EULER_GAMMA};
+use crate::special::{banded, e1_scaled_cf, in_series_region, C, EIN_COEFFS, EULER_GAMMA};
 use crate::scalar::Scalar;
 use crate::panels::Control;
 use crate::combined::Physics;
@@ -427,9 +427,10 @@ fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, light_sin: impl FnO
 /// 5.1.11) with `Ein`'s series (|w| ≤ 2σt·d ≤ 1, [`OPEN_RAY_DEPTH`]):
 /// `K/2 = e^{Re w}[sin(Im w)(Re Ein − γ_E − ln|w|) + cos(Im w)(Im Ein + (π − γ)/2)]`, each term
 /// within a few ε of `K`'s scale. Given `σt·d`, `γ` and `γ/2`'s sine and cosine, and `cos γ`
-/// (`e^{Re w − σt·d} = e^{−σt·d cos γ}` is returned folded in: the value is `e^{−σt·d} K`).
+/// (`e^{Re w − σt·d} = e^{−σt·d cos γ}` is returned folded in: the value is `e^{−σt·d} K`), and
+/// `Ein`'s term count ([`open_ray_terms`]).
 #[inline(always)]
-fn open_ray_isotropic<T: Real>(depth: T, g: T, (s, c, cos_g): (T, T, T)) -> T {
+fn open_ray_isotropic<T: Real>(depth: T, g: T, (s, c, cos_g): (T, T, T), terms: usize) -> T {
     // (π − γ)/2 with π in two parts: the rounded π is ε·π off, which near γ = π would be
     // ε·π/(π − γ) of the arc (π − fl64(π) = sin(fl64(π)) = 1.2246467991473532e-16)
     let pi_low = T::lit(core::f64::consts::PI - T::PI().to_f64_exact() + 1.2246467991473532e-16);
@@ -442,11 +443,40 @@ fn open_ray_isotropic<T: Real>(depth: T, g: T, (s, c, cos_g): (T, T, T)) -> T {
     if !in_series_region(w) {
         return T::lit(2.0) * (-depth).exp() * e1_scaled_cf(w).im;
     }
-    let ein = ein(w);
+    let terms = banded(w.norm_sqr().to_f64_exact(), T::E1_SERIES_BANDS).min(terms);
+    let ein = EIN_COEFFS[..terms].iter().rev().fold(C::new(T::zero(), T::zero()), |sum, &k| sum * w + T::lit(k)) * w;
     let (sin_im, cos_im) = if -w.im <= T::FRAC_PI_4() { sin_cos_quarter(-w.im) } else { sin_cos_turns(-w.im) };
     let log_w = (T::lit(2.0) * depth * s).ln();
     let half = cos_im * (ein.im + arc) - sin_im * (ein.re - T::lit(EULER_GAMMA) - log_w);
     T::lit(2.0) * (-(depth * cos_g)).exp() * half
+}
+
+/// The terms of `Ein(w)` that [`open_ray_isotropic`] takes at `|w| ≤ 2σt·d` (its series region):
+/// the fewest whose tail, `Σ_{k>n} |w|^k/(k·k!) ≤ r^{n+1}/((n+1)(n+1)!)/(1 − r/(n+2))` at
+/// `r = 2σt·d` (each term at most `r/(k+1)` of the one before), is within a thousandth of
+/// `tolerance`, for `r < 1` (from `r = 1` on all 40 of [`EIN_COEFFS`]; at each `w` no more
+/// than `E1`'s own series takes there, [`Real::E1_SERIES_BANDS`], for the precision's last
+/// bits). The tail moves `K` by at most `√2 e^{Re w}` times it, and `K` is about `π − γ`, whose
+/// integral against the Lambertian arcs is at least half theirs (the vacuum's closed form,
+/// docs/DESIGN.md §11): with `σt·d < 1/2` that stays within a hundredth of the tolerance. (At
+/// outer tolerance 1e-1, 4 terms where `σt·d ≤ 0.15`, where f64's series takes 9–13.)
+fn open_ray_terms<T: Real>(depth: T, tolerance: T) -> usize {
+    let r = (T::lit(2.0) * depth).to_f64_exact();
+    let most = EIN_COEFFS.len();
+    if !(r < 1.0) {
+        return most;
+    }
+    let target = tolerance.to_f64_exact() * 1e-3;
+    let mut power = r;
+    for n in 1..most {
+        // r^{n+1}/((n+1)(n+1)!) = |c_{n+1}| r^{n+1}
+        power *= r;
+        let next = EIN_COEFFS[n].abs() * power;
+        if r < n as f64 + 2.0 && next / (1.0 - r / (n as f64 + 2.0)) <= target {
+            return n;
+        }
+    }
+    most
 }
 
 /// `f(γ)·dγ/dx` at the outer variable `x`, `(γ, dγ/dx)` by `piece` (0 where the map's
@@ -1213,10 +1243,11 @@ where
         };
         if let (Some(open), Brdf::Lambert { albedo }) = (open, self.brdf) {
             let scale = T::lit(2.0) * albedo * T::FRAC_1_PI() * open;
+            let terms = open_ray_terms(depth, tolerance);
             let mut lambert = |x: T| {
                 weighted_at(&piece, |g| {
                     rays.set(rays.get() + 1);
-                    lambert_node(fr.n, g, |s, c, cos_g| open_ray_isotropic(depth, g, (s, c, cos_g))) * scale
+                    lambert_node(fr.n, g, |s, c, cos_g| open_ray_isotropic(depth, g, (s, c, cos_g), terms)) * scale
                 }, x)
             };
             let (value, _) = crate::extended::adaptive_by(&rule_of, &mut lambert, &knots[..=n], tolerance, max_panels);
@@ -1695,7 +1726,7 @@ mod tests {
                 // (the library's, each within an ulp relatively; the kernel's cosine of γ/2 is
                 // within a few ε absolutely, which near γ = π is more of it)
                 let (s, c, cos_g) = (T::lit((g * 0.5).sin()), T::lit((g * 0.5).cos()), T::lit(g.cos()));
-                let value = open_ray_isotropic(T::lit(depth), T::lit(g), (s, c, cos_g)).to_f64_exact();
+                let value = open_ray_isotropic(T::lit(depth), T::lit(g), (s, c, cos_g), open_ray_terms(T::lit(depth), T::zero())).to_f64_exact();
                 let error = ((value - exact) / exact).abs() / T::epsilon().to_f64_exact();
                 // |w| = 2σt·d sin(γ/2)
                 let bound = 16.0 + 4.0 * depth + 8.0 * 2.0 * depth * (g * 0.5).sin() / (core::f64::consts::PI - g);
@@ -1705,6 +1736,33 @@ mod tests {
             worst
         }
         std::println!("open ray: f64 within {:.1} ε, f32 within {:.1} ε", check::<f64>(), check::<f32>());
+    }
+
+    /// [`open_ray_terms`]' tail bound holds: at `|w| = 2σt·d` (every angle of a half circle)
+    /// `Ein`'s first `n` terms are within a thousandth of the tolerance of all 40 (the series
+    /// to far below f64's ε there), for `σt·d` from 0.005 to 0.45 and tolerances 1e-1 to 1e-9;
+    /// and with one term fewer the tail at `w = −r` (its terms all of one sign there) is more than
+    /// half that, so the count is no larger than the bound's slack needs.
+    #[test]
+    fn open_ray_terms_bound_the_tail() {
+        let horner = |n: usize, w: C<f64>| EIN_COEFFS[..n].iter().rev().fold(C::new(0.0, 0.0), |sum, &k| sum * w + k) * w;
+        for depth in [0.005, 0.05, 0.15, 0.3, 0.45] {
+            for tolerance in [1e-1, 1e-3, 1e-5, 1e-9] {
+                let n = open_ray_terms(depth, tolerance);
+                let r = 2.0 * depth;
+                assert!(n < EIN_COEFFS.len(), "σt·d {depth}, tolerance {tolerance:e}: {n} terms");
+                for k in 0..=16 {
+                    let w = C::from_polar(r, -core::f64::consts::PI * k as f64 / 16.0);
+                    let tail = (horner(n, w) - horner(EIN_COEFFS.len(), w)).norm();
+                    assert!(tail <= tolerance * 1e-3, "σt·d {depth}, tolerance {tolerance:e}, {n} terms: tail {tail:e}");
+                }
+                if n > 1 {
+                    let w = C::new(-r, 0.0);
+                    let tail = (horner(n - 1, w) - horner(EIN_COEFFS.len(), w)).norm();
+                    assert!(tail > tolerance * 1e-3 * 0.5, "σt·d {depth}, tolerance {tolerance:e}: {} terms leave {tail:e}", n - 1);
+                }
+            }
+        }
     }
 
     /// `RayInterpolant` reproduces a polynomial of degree `M − 1` in `τ` from its `M` values (to
