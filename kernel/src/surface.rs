@@ -423,10 +423,12 @@ fn lambert_node<T: Real>((cos_n, sin_n, _): (T, T, T), g: T, light_sin: impl FnO
 /// without extinction): with `Y = tan(θ/2 + π/4)` the exponent is `−σt·d sin γ (Y − tan(γ/2))`
 /// and `dθ = 2 dY/(1 + Y²)` (docs/DESIGN.md §4.3), so `K = 2 Im[e^w E1(w)]`, `w = σt·d (1 −
 /// e^{iγ}) = 2σt·d sin(γ/2)(sin(γ/2) − i cos(γ/2))` — the ray's exponential integral with its
-/// argument's angle `γ/2 − π/2` known, no arc tangent. By `E1 = −γ_E − ln w + Ein(w)` (A&S
-/// 5.1.11) with `Ein`'s series (|w| ≤ 2σt·d ≤ 1, [`OPEN_RAY_DEPTH`]):
+/// argument's angle `γ/2 − π/2` known, no arc tangent. In `E1`'s series region
+/// ([`in_series_region`]) by `E1 = −γ_E − ln w + Ein(w)` (A&S 5.1.11):
 /// `K/2 = e^{Re w}[sin(Im w)(Re Ein − γ_E − ln|w|) + cos(Im w)(Im Ein + (π − γ)/2)]`, each term
-/// within a few ε of `K`'s scale. Given `σt·d`, `γ` and `γ/2`'s sine and cosine, and `cos γ`
+/// within a few ε of `|w|` or of the arc (towards `γ = π`, where `K ∝ π − γ`, that is more of
+/// `K`: `tests::open_ray_against_quadrature`); outside it by the continued fraction
+/// ([`e1_scaled_cf`]). Given `σt·d`, `γ` and `γ/2`'s sine and cosine, and `cos γ`
 /// (`e^{Re w − σt·d} = e^{−σt·d cos γ}` is returned folded in: the value is `e^{−σt·d} K`), and
 /// `Ein`'s term count ([`open_ray_terms`]).
 #[inline(always)]
