@@ -6,6 +6,12 @@
 //! counts tried before it: 10 = 4 + 6, 18 = 6 + 12, 22 = 4 + 6 + 12), more where a ray was
 //! taken at every outer node.
 //!
+//! Since the open ray's closed form (`open_ray_isotropic`, docs/DESIGN.md §11) such a point takes
+//! no interpolant: the counts printed are its closed forms, one an outer node (14 where one
+//! Gauss–Kronrod 3/7 panel on each of its two pieces passes, 28 where the outer estimate splits
+//! them). The interpolant's counts that
+//! docs/DESIGN.md §11 quotes are from before it (8edf611 reproduces them).
+//!
 //! `cargo run --release -p airlight-tests --example surface_rays -- 1e-1`
 
 use airlight_tests::canonical_surface;
