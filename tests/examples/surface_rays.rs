@@ -9,8 +9,8 @@
 //! Since the open ray's closed form (`open_ray_isotropic`, docs/DESIGN.md §11) such a point takes
 //! no interpolant: the counts printed are its closed forms, one an outer node (14 where one
 //! Gauss–Kronrod 3/7 panel on each of its two pieces passes, 28 where the outer estimate splits
-//! them). The interpolant's counts that
-//! docs/DESIGN.md §11 quotes are from before it (8edf611 reproduces them).
+//! one of them into two). The interpolant's counts that docs/DESIGN.md §11 quotes are from
+//! before it (8edf611 reproduces them).
 //!
 //! `cargo run --release -p airlight-tests --example surface_rays -- 1e-1`
 
