@@ -45,7 +45,7 @@ use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::light::{whole_polynomial_degree, LightDistribution};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive_polynomial, ln_1p, sin_cos_half_turn, sin_cos_quarter, sin_cos_turns, Real};
-use crate::special::{banded, e1_scaled_cf, in_series_region, C, EIN_COEFFS, EULER_GAMMA};
+use crate::special::{e1_scaled_cf, ein_at_most, in_series_region, C, EIN_COEFFS, EULER_GAMMA};
 use crate::scalar::Scalar;
 use crate::panels::Control;
 use crate::combined::Physics;
@@ -445,8 +445,7 @@ fn open_ray_isotropic<T: Real>(depth: T, g: T, (s, c, cos_g): (T, T, T), terms: 
     if !in_series_region(w) {
         return T::lit(2.0) * (-depth).exp() * e1_scaled_cf(w).im;
     }
-    let terms = banded(w.norm_sqr().to_f64_exact(), T::E1_SERIES_BANDS).min(terms);
-    let ein = EIN_COEFFS[..terms].iter().rev().fold(C::new(T::zero(), T::zero()), |sum, &k| sum * w + T::lit(k)) * w;
+    let ein = ein_at_most(w, terms);
     let (sin_im, cos_im) = if -w.im <= T::FRAC_PI_4() { sin_cos_quarter(-w.im) } else { sin_cos_turns(-w.im) };
     let log_w = (T::lit(2.0) * depth * s).ln();
     let half = cos_im * (ein.im + arc) - sin_im * (ein.re - T::lit(EULER_GAMMA) - log_w);
@@ -929,15 +928,6 @@ where
         let (phi_a, axis_a) = if polynomial.is_some() { (axis_e2.atan2(axis_e1), axis_e1.hypot(axis_e2)) } else { (T::zero(), T::zero()) };
         // the default path takes a Lambertian arc's rays about an axis as one (`arc_sum`)
         let arc_control = default_path.then(|| inner_control(tolerance));
-        // a Lambertian point lit by an omni light in isotropic fog, on the default path:
-        // L_a(γ) sin γ in closed form (`open_ray_isotropic`) times `open`, σs I P/d, at every
-        // outer node, where e^{−σt·d} is well inside the float range (as `smooth_rays`'s
-        // bound): no ray integral and no interpolant (a node costs less than one ray). (A Phong
-        // point's rays the same way: 1–12 % fewer instructions, but in f32 `phong_thick` took
-        // 14.3–14.9 µs a class against 12.9–14.1.)
-        let depth = self.medium.sigma_t * fr.d;
-        let open = (default_path && omni && self.phase.is_isotropic() && matches!(self.brdf, Brdf::Lambert { .. }) && depth <= -T::min_positive_value().ln() * T::lit(0.5))
-            .then(|| self.medium.sigma_s * self.light.intensity * self.phase.eval(T::zero()) / fr.d);
         let along = |cos_g: T, sin_g: T, phi: T| {
             rays.set(rays.get() + 1);
             let sin_g = sin_g.max(T::zero());
@@ -1243,8 +1233,16 @@ where
             let i = a.to_usize().unwrap_or(0).min(n - 1);
             if first <= edges[i] && edges[i + 1] <= last && smooth[i] && smooth[i + 1] { coarse } else { rule }
         };
-        if let (Some(open), Brdf::Lambert { albedo }) = (open, self.brdf) {
-            let scale = T::lit(2.0) * albedo * T::FRAC_1_PI() * open;
+        // a Lambertian point lit by an omni light in isotropic fog, on the default path:
+        // L_a(γ) sin γ = σs I P e^{−σt·d} K(γ)/d in closed form (`open_ray_isotropic`) at every
+        // outer node, where e^{−σt·d} is well inside the float range (as `smooth_rays`'s
+        // bound): no ray integral and no interpolant (a node costs less than one ray). (A Phong
+        // point's rays the same way: 1–12 % fewer instructions, but in f32 `phong_thick` took
+        // 14.3–14.9 µs a class against 12.9–14.1.)
+        let depth = self.medium.sigma_t * fr.d;
+        let open = default_path && omni && self.phase.is_isotropic() && depth <= -T::min_positive_value().ln() * T::lit(0.5);
+        if let (true, Brdf::Lambert { albedo }) = (open, self.brdf) {
+            let scale = T::lit(2.0) * albedo * T::FRAC_1_PI() * self.medium.sigma_s * self.light.intensity * self.phase.eval(T::zero()) / fr.d;
             let terms = open_ray_terms(depth, tolerance);
             let mut lambert = |x: T| {
                 weighted_at(&piece, |g| {

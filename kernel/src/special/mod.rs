@@ -25,6 +25,7 @@ pub(crate) use e1::e1_by_series;
 pub use e1::{e1, e1_scaled, ei, in_series_region};
 pub use elliptic::elliptic_e;
 pub use en::en_scaled;
+pub(crate) use series::ein_at_most;
 pub use series::{ein, ein_divided_difference, ein_real, EIN_COEFFS};
 
 /// The count of the first band `(bound, count)` with `|z| < bound`, given `|z|²` (the last

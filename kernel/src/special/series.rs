@@ -9,8 +9,15 @@ use crate::real::Real;
 /// Horner's rule on the tabulated coefficients: complex multiply-adds, no divisions.
 #[inline]
 pub fn ein<T: Real>(z: C<T>) -> C<T> {
+    ein_at_most(z, EIN_COEFFS.len())
+}
+
+/// [`ein`] with at most `most` terms: fewer where a caller's tolerance allows (the surface's open
+/// ray, `crate::surface`), never more than the bands give at `z`.
+#[inline]
+pub(crate) fn ein_at_most<T: Real>(z: C<T>, most: usize) -> C<T> {
     let mut sum = C::new(T::zero(), T::zero());
-    for &c in EIN_COEFFS[..series_terms(z).min(40)].iter().rev() {
+    for &c in EIN_COEFFS[..series_terms(z).min(most).min(EIN_COEFFS.len())].iter().rev() {
         sum = sum * z + T::lit(c);
     }
     sum * z
