@@ -57,7 +57,10 @@
 //! if the phase function's, the extinction's and the lobe's predictions pass at the wider
 //! count, each on its own — the lobe's as a Gaussian's: `c^p` is
 //! `e^{−pφ²/2}`, whose coefficients fall later than the rate `√p·hw` above says
-//! (docs/DESIGN.md §4.2). 16 or 32 samples still cost less than the closed-form panels, also
+//! (docs/DESIGN.md §4.2). In a thick medium ([`Plan::thick`]) a light without an axis whose
+//! 16-node first try is declined before any sample takes 24 nodes as its first try: the
+//! extinction cuts the panel short there, and what declines 16 is mostly the phase function's
+//! singularity, which 24 resolve. 16 or 32 samples still cost less than the closed-form panels, also
 //! where `N` missed the extinction's rise at the end of a long ray in thin fog. For the same
 //! reason a wider rule's estimate, where the last coefficients do not yet fall (a lobe inside
 //! the panel, whose coefficients oscillate with `P_k` at its centre), takes the lobe's own decay
@@ -386,7 +389,8 @@ impl<T: Real> Plan<T> {
     /// The first try of `N` nodes and the wider rules after it where [`Plan::widens`] (`2N`,
     /// then `4N`; after 16 only 24: 32 cost f64 more than they saved on four of the five classes
     /// with an axis, docs/DESIGN.md §4.2), the light sampled by `emission`; and the rules
-    /// sampled.
+    /// sampled. In a thick medium ([`Plan::thick`]) a light without an axis whose 16 nodes are
+    /// declined before any sample gets 24 as its first try instead.
     #[inline(always)]
     pub(crate) fn tries<D, P, E, const N: usize>(&self, g: &Canonical<T>, phys: &Physics<'_, T, D, P>, control: &Control<T>, emission: &E) -> (Option<T>, usize)
     where
@@ -416,6 +420,12 @@ impl<T: Real> Plan<T> {
     fn sequence<R: Rules, const N: usize>(&self, rules: &mut R) -> usize {
         let (sampled, mut done) = rules.run::<N>(false);
         let mut tried = usize::from(sampled);
+        // a thick medium's 16 declined before any sample (a light without an axis): 24 as the
+        // first try, whose predictions the phase function's singularity passes more often
+        // than 16's (docs/DESIGN.md §4.2)
+        if !sampled && N == 16 && !self.widens(N) && self.thick() {
+            return usize::from(rules.run::<24>(false).0);
+        }
         let counts: &[usize] = if !self.widens(N) {
             &[]
         } else if N == 16 {
