@@ -43,7 +43,9 @@
 //! test (tests/tests/classes.rs checks the results against the mpmath references).
 //!
 //! It is tried only where it is likely to pass, judged before any sample (cost, never
-//! accuracy): the singularities' prediction `4·exp(−2σ√(2N − m))` and a light's lobe `c^p`,
+//! accuracy): the singularities' prediction `4·exp(−2σ√(2N − m))`, times `(2N − m)^{α−1}` where
+//! the nearest is a forward lobe's of order `α` (its coefficients' polynomial factor, as the
+//! panels' `crate::panels::order_step`), and a light's lobe `c^p`,
 //! which varies at the rate `ℓ = √p · dθ/ds = 2√p/(H(1 + Y0²))` at the start (the largest:
 //! `dθ/ds` falls with `Y`), as `e^{iℓs}`, whose Laguerre coefficients fall like
 //! `(ℓ/√(1 + ℓ²))^k`: `2·(ℓ/√(1 + ℓ²))^{2N − m}`, each within the tolerance. A light
@@ -106,7 +108,13 @@ where
     // the nearest singularity: Y = ±i (b = 1) or a forward lobe's ±i·b, b² = gap/(2 + gap)
     let b2 = if gap < T::infinity() { (gap / (T::lit(2.0) + gap)).min(T::one()) } else { T::one() };
     let sigma = (big_h * ((y0 * y0 + b2).sqrt() + y0) * T::lit(0.5)).sqrt();
-    if !(T::lit(4.0) * exp_nonpositive(-(top + top) * sigma) <= tolerance) {
+    let predicted = T::lit(4.0) * exp_nonpositive(-(top + top) * sigma);
+    if !(predicted <= tolerance) {
+        return Route::Declined;
+    }
+    // a forward lobe's singularity of order α: its coefficients carry a factor (2N − m)^{α−1}
+    // besides the rate (as the panels' `order_step`), √(2N − m) to the power ⌈2(α − 1)⌉
+    if b2 < T::one() && !(predicted * power(top, ((singular.order - T::one()) * T::lit(2.0)).ceil().to_usize().unwrap_or(0)) <= tolerance) {
         return Route::Declined;
     }
     if degree > T::zero() {
