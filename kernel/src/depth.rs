@@ -44,8 +44,8 @@
 //!
 //! It is tried only where it is likely to pass, judged before any sample (cost, never
 //! accuracy): the singularities' prediction `4·exp(−2σ√(2N − m))`, times `(2N − m)^{α−1}` where
-//! the nearest is a forward lobe's of order `α` (its coefficients' polynomial factor, as the
-//! panels' `crate::panels::order_step`), and a light's lobe `c^p`,
+//! the nearest is a forward lobe's of order `α` (its coefficients' polynomial factor `k^{α−1}`,
+//! whose step ratio the panels' `crate::panels::order_step` takes), and a light's lobe `c^p`,
 //! which varies at the rate `ℓ = √p · dθ/ds = 2√p/(H(1 + Y0²))` at the start (the largest:
 //! `dθ/ds` falls with `Y`), as `e^{iℓs}`, whose Laguerre coefficients fall like
 //! `(ℓ/√(1 + ℓ²))^k`: `2·(ℓ/√(1 + ℓ²))^{2N − m}`, each within the tolerance. A light
@@ -112,8 +112,9 @@ where
     if !(predicted <= tolerance) {
         return Route::Declined;
     }
-    // a forward lobe's singularity of order α: its coefficients carry a factor (2N − m)^{α−1}
-    // besides the rate (as the panels' `order_step`), √(2N − m) to the power ⌈2(α − 1)⌉
+    // a forward lobe's singularity of order α: its coefficients carry a factor k^{α−1} besides
+    // the rate (whose step ratio the panels' `order_step` takes), here at k = 2N − m, as
+    // √(2N − m) to the power ⌈2(α − 1)⌉ (no `powf`)
     if b2 < T::one() && !(predicted * power(top, ((singular.order - T::one()) * T::lit(2.0)).ceil().to_usize().unwrap_or(0)) <= tolerance) {
         return Route::Declined;
     }
