@@ -57,7 +57,7 @@ use crate::combined::{weighted, Physics};
 use crate::expansion::{laguerre_table, last_laguerre_coefficients};
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
-use crate::panels::{power, Control, ALIASING_MARGIN};
+use crate::panels::{order_power, power, Control, ALIASING_MARGIN};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, hypot1, larger, Real};
 
@@ -113,9 +113,8 @@ where
         return Route::Declined;
     }
     // a forward lobe's singularity of order α: its coefficients carry a factor k^{α−1} besides
-    // the rate (whose step ratio the panels' `order_step` takes), here at k = 2N − m, as
-    // √(2N − m) to the power ⌈2(α − 1)⌉ (no `powf`)
-    if b2 < T::one() && !(predicted * power(top, ((singular.order - T::one()) * T::lit(2.0)).ceil().to_usize().unwrap_or(0)) <= tolerance) {
+    // the rate (whose step ratio the panels' `order_step` takes), here at k = 2N − m
+    if b2 < T::one() && !(predicted * order_power(top, singular.order) <= tolerance) {
         return Route::Declined;
     }
     if degree > T::zero() {

@@ -267,7 +267,14 @@ struct Panel<T> {
 /// `c_{N−1}` ([`Singular`]): `√(N/(N − 1))` to the power `⌈2(α − 1)⌉` by squaring — exact for the
 /// built-in orders (whole and half), larger otherwise; no library power per piece.
 pub(crate) fn order_step<T: Real>(order: T, n: usize) -> T {
-    let root = (T::from(n).unwrap() / T::from(n.saturating_sub(1).max(1)).unwrap()).sqrt();
+    order_power((T::from(n).unwrap() / T::from(n.saturating_sub(1).max(1)).unwrap()).sqrt(), order)
+}
+
+/// `x^{max(α − 1, 0)}` for `root = √x` and a singularity of order `α`: `root` to the power
+/// `⌈2(α − 1)⌉` by squaring (`+∞` where that power leaves `i32`) — exact for the built-in
+/// orders (whole and half), larger otherwise; no library power. The polynomial factor `k^{α−1}`
+/// of such a singularity's coefficients, and its step ratio ([`order_step`]).
+pub(crate) fn order_power<T: Real>(root: T, order: T) -> T {
     let twice = ((order - T::one()) * T::lit(2.0)).ceil();
     if twice > T::zero() {
         twice.to_i32().map_or(T::infinity(), |k| Scalar::powi(root, k))
