@@ -15,7 +15,7 @@ Usage: python3 scripts/gen_gauss_laguerre.py > kernel/src/expansion/laguerre_tab
 import mpmath as mp
 
 mp.mp.dps = 60
-COUNTS = [6, 12]
+COUNTS = [6, 12, 24]
 
 
 def rule(n):

@@ -17,7 +17,11 @@
 //! no exponential (the weight `e^{−s}` is the rule's). `∫_0^S = ∫_0^∞ − e^{−S} ∫_0^∞ e^{−x}
 //! G(S + x) dx`: one `N`-node Gauss–Laguerre rule, and for a finite segment whose `e^{−S}` is
 //! not below the float range a second at `S` (`G` continued past the segment's end, the same
-//! analytic function along the ray's line).
+//! analytic function along the ray's line). Where `e^{−S}` is at most the panels' cut
+//! resolution `δ·τ` (`crate::combined::cut_resolution`: a tail the panels would drop), that
+//! second rule is the 6-node one and the whole of its term counts as error: it only has to
+//! show that the tail is that small (a `G` far larger past the end than on the segment fails
+//! the estimate instead).
 //!
 //! Where the medium is thick and the light not next to the ray, `G` is smooth on the scale of
 //! the weight and a few nodes reach the target where Gauss–Legendre in `θ` needs the segment
@@ -53,7 +57,7 @@
 //! declines it, as the light-angle route.
 
 use crate::angle::{Ends, Route};
-use crate::combined::{weighted, Physics};
+use crate::combined::{cut_resolution, weighted, Physics};
 use crate::expansion::{laguerre_table, last_laguerre_coefficients};
 use crate::geometry::Canonical;
 use crate::light::LightDistribution;
@@ -61,8 +65,12 @@ use crate::panels::{order_power, power, Control, ALIASING_MARGIN};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, hypot1, larger, Real};
 
+/// The rule that sizes a tail below the panels' cut ([`whole_segment`]).
+const SIZING_NODES: usize = 6;
+
 /// The route as the default path takes it: [`whole_segment`] with 6 nodes where the light-angle
-/// rules have `N ≤ 8` (f32), else 12 (f64), from the segment's [`Ends`] formed here, before any
+/// rules have `N ≤ 8` (f32), else 12 (f64) and, where 12's predictions decline it before any
+/// sample, 24 (docs/DESIGN.md §4.3), from the segment's [`Ends`] formed here, before any
 /// of the light angle's plan. Cold and not inlined, so that the default path's code for the rays
 /// that do not take it stays as it was (measured: inlined, or only not inlined, the plan's
 /// `atan2_upper` and `cut_length` were no longer inlined there, +2–4 % instructions per ray
@@ -77,7 +85,10 @@ where
 {
     match Ends::new(g, phys) {
         Some(ends) if N <= 8 => whole_segment::<T, D, P, 6>(&ends, g, phys, control),
-        Some(ends) => whole_segment::<T, D, P, 12>(&ends, g, phys, control),
+        Some(ends) => match whole_segment::<T, D, P, 12>(&ends, g, phys, control) {
+            Route::Declined => whole_segment::<T, D, P, 24>(&ends, g, phys, control),
+            route => route,
+        },
         None => Route::Declined,
     }
 }
@@ -125,16 +136,26 @@ where
         }
     }
     // the rule at the start and, for a finite segment whose e^{−S} is representable, at its end
+    // (sized by 6 nodes where e^{−S} is below the cut's resolution: module docs)
     let far = exp_nonpositive(-(big_h * (y1 - y0)));
     let head = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
     let (mut value, mut mass, mut f_max) = (head.value, head.mass, head.f_max);
     let mut tail = None;
+    let mut sized = T::zero();
     if y1.is_finite() && far > T::zero() {
-        let end = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
-        value = value - far * end.value;
-        mass = mass - far * end.mass;
-        f_max = larger(f_max, end.f_max);
-        tail = Some(end.last);
+        if N > SIZING_NODES && far <= cut_resolution(control) {
+            let end = laguerre::<T, D, P, SIZING_NODES>(g, phys, &laguerre_table::GLAG6, &laguerre_table::LAGT6, y1, big_h);
+            value = value - far * end.value;
+            mass = mass - far * end.mass;
+            f_max = larger(f_max, end.f_max);
+            sized = far * end.value.abs();
+        } else {
+            let end = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
+            value = value - far * end.value;
+            mass = mass - far * end.mass;
+            f_max = larger(f_max, end.f_max);
+            tail = Some(end.last);
+        }
     }
     // the estimate: the slower of the decay the last four show and the singularity's
     let floor_factor = exp_nonpositive(-T::lit(2.0) * (top - last) * sigma);
@@ -149,6 +170,7 @@ where
         T::lit(2.0) * recent * factor
     };
     let mut error = estimate(&head.last);
+    error = error + sized;
     if let Some(c) = &tail {
         error = error + far * estimate(c);
     }
@@ -222,10 +244,13 @@ mod tests {
     /// `N`-node rule integrates `x^j e^{−x}` over `[0, ∞)` to `j!` for `j < 2N` (Gauss), and
     /// its transform row `k` is `w_i · L_k(x_i)` with `L_k` by its three-term recurrence
     /// (A&S 22.7.12), both within `1e-13` relative (`x^j` and the recurrence round a few ε
-    /// times the largest term, `j!` up to `23!` summed from terms up to ~8× it).
+    /// times the largest term, `j!` up to `47!` summed from terms up to ~8× it); the transform
+    /// relative to the recurrence's largest term so far (`w_i` times it): near a zero of `L_k`
+    /// the value is far below the terms that cancel to it (24 points: 1.7e-13 of the value at
+    /// `k = 22`, `x ≈ 50`).
     #[test]
     fn tables_are_gauss_laguerre_rules() {
-        for n in [6usize, 12] {
+        for n in [6usize, 12, 24] {
             let (rule, transform) = laguerre_table::rule(n).expect("tabulated");
             assert_eq!((rule.len(), transform.len()), (n, n * n));
             let mut factorial = 1.0f64;
@@ -237,13 +262,14 @@ mod tests {
                 assert!((moment / factorial - 1.0).abs() < 1e-13, "n {n}, j {j}: {moment:e} vs {factorial:e}");
             }
             for (i, &(x, w)) in rule.iter().enumerate() {
-                let (mut previous, mut current) = (0.0f64, 1.0f64);
+                let (mut previous, mut current, mut largest) = (0.0f64, 1.0f64, 1.0f64);
                 for k in 0..n {
                     let expected = w * current;
                     let table = transform[k * n + i];
-                    assert!((table - expected).abs() <= 1e-13 * w.max(expected.abs()), "n {n}, k {k}, i {i}: {table:e} vs {expected:e}");
-                    let next = ((2 * k + 1) as f64 - x) * current / (k + 1) as f64 - k as f64 * previous / (k + 1) as f64;
-                    (previous, current) = (current, next);
+                    assert!((table - expected).abs() <= 1e-13 * w * largest, "n {n}, k {k}, i {i}: {table:e} vs {expected:e}");
+                    let (a, b) = (((2 * k + 1) as f64 - x) * current / (k + 1) as f64, k as f64 * previous / (k + 1) as f64);
+                    largest = largest.max(a.abs()).max(b.abs());
+                    (previous, current) = (current, a - b);
                 }
             }
         }
