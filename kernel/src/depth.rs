@@ -143,17 +143,18 @@ where
     let mut tail = None;
     let mut sized = T::zero();
     if y1.is_finite() && far > T::zero() {
-        if N > SIZING_NODES && far <= cut_resolution(control) {
-            let end = laguerre::<T, D, P, SIZING_NODES>(g, phys, &laguerre_table::GLAG6, &laguerre_table::LAGT6, y1, big_h);
-            value = value - far * end.value;
-            mass = mass - far * end.mass;
-            f_max = larger(f_max, end.f_max);
+        let sized_only = N > SIZING_NODES && far <= cut_resolution(control);
+        let end = if sized_only {
+            laguerre::<T, D, P, SIZING_NODES>(g, phys, &laguerre_table::GLAG6, &laguerre_table::LAGT6, y1, big_h)
+        } else {
+            laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h)
+        };
+        value = value - far * end.value;
+        mass = mass - far * end.mass;
+        f_max = larger(f_max, end.f_max);
+        if sized_only {
             sized = far * end.value.abs();
         } else {
-            let end = laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h);
-            value = value - far * end.value;
-            mass = mass - far * end.mass;
-            f_max = larger(f_max, end.f_max);
             tail = Some(end.last);
         }
     }
