@@ -65,8 +65,12 @@ use crate::panels::{order_power, power, Control, ALIASING_MARGIN};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, hypot1, larger, Real};
 
-/// The rule that sizes a tail below the panels' cut ([`whole_segment`]).
+/// The rule that sizes a tail below the panels' cut ([`whole_segment`]), and its table.
 const SIZING_NODES: usize = 6;
+const SIZING_RULE: (&[(f64, f64)], &[f64]) = match laguerre_table::rule(SIZING_NODES) {
+    Some(rule) => rule,
+    None => panic!("the sizing rule is tabulated"),
+};
 
 /// The route as the default path takes it: [`whole_segment`] with 6 nodes where the light-angle
 /// rules have `N ≤ 8` (f32), else 12 (f64) and, where 12's predictions decline it before any
@@ -135,29 +139,6 @@ where
             return Route::Declined;
         }
     }
-    // the rule at the start and, for a finite segment whose e^{−S} is representable, at its end
-    // (sized by 6 nodes where e^{−S} is below the cut's resolution: module docs)
-    let far = exp_nonpositive(-(big_h * (y1 - y0)));
-    let head = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
-    let (mut value, mut mass, mut f_max) = (head.value, head.mass, head.f_max);
-    let mut tail = None;
-    let mut sized = T::zero();
-    if y1.is_finite() && far > T::zero() {
-        let sized_only = N > SIZING_NODES && far <= cut_resolution(control);
-        let end = if sized_only {
-            laguerre::<T, D, P, SIZING_NODES>(g, phys, &laguerre_table::GLAG6, &laguerre_table::LAGT6, y1, big_h)
-        } else {
-            laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h)
-        };
-        value = value - far * end.value;
-        mass = mass - far * end.mass;
-        f_max = larger(f_max, end.f_max);
-        if sized_only {
-            sized = far * end.value.abs();
-        } else {
-            tail = Some(end.last);
-        }
-    }
     // the estimate: the slower of the decay the last four show and the singularity's
     let floor_factor = exp_nonpositive(-T::lit(2.0) * (top - last) * sigma);
     // the measured decay per degree q = √(recent/earlier), read as exp(−2σ√k) between the
@@ -170,10 +151,24 @@ where
         let factor = if recent < earlier { power((recent / earlier).sqrt(), steps).max(floor_factor) } else { T::one() };
         T::lit(2.0) * recent * factor
     };
+    // the rule at the start and, for a finite segment whose e^{−S} is representable, at its end
+    // (sized by 6 nodes where e^{−S} is below the cut's resolution, all of it then error: module
+    // docs)
+    let far = exp_nonpositive(-(big_h * (y1 - y0)));
+    let head = laguerre::<T, D, P, N>(g, phys, rule, transform, y0, big_h);
+    let (mut value, mut mass, mut f_max) = (head.value, head.mass, head.f_max);
     let mut error = estimate(&head.last);
-    error = error + sized;
-    if let Some(c) = &tail {
-        error = error + far * estimate(c);
+    if y1.is_finite() && far > T::zero() {
+        let sized_only = N > SIZING_NODES && far <= cut_resolution(control);
+        let end = if sized_only {
+            laguerre::<T, D, P, SIZING_NODES>(g, phys, SIZING_RULE.0, SIZING_RULE.1, y1, big_h)
+        } else {
+            laguerre::<T, D, P, N>(g, phys, rule, transform, y1, big_h)
+        };
+        value = value - far * end.value;
+        mass = mass - far * end.mass;
+        f_max = larger(f_max, end.f_max);
+        error = error + if sized_only { far * end.value.abs() } else { far * estimate(&end.last) };
     }
     let target = tolerance * value.abs().max(control.floor * f_max * mass);
     if !(error <= target) {
