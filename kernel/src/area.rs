@@ -21,6 +21,8 @@
 //! as [`crate::extended`]), the inner to a tenth of the outer tolerance, each point light to a
 //! tenth as well, at most [`MAX_AREA_PANELS`] panels each.
 
+pub mod outer;
+
 use crate::error::{check_non_negative, check_vector, ErrorKind, InputError};
 use crate::extended::{adaptive, edges_between, inner_control, outer_rule, outer_tolerance, working_tolerance};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};

@@ -10,7 +10,8 @@
 //! target's level): the loosest tolerance of 1e-1, 3e-2, 1e-2, 3e-3, 1e-3 whose largest error over the class
 //! is at most 1e-3, picked knowing the class's errors as the classes bench picks the kernel's.
 //! Timed, per class, over all its records per iteration: `emitter_default`, `emitter_1e-3`, for
-//! segments `emitter_at_1e-3`, and `point`: the default point light of
+//! segments `emitter_at_1e-3`, for area lights `emitter_bounded` (`AreaScene::in_scatter_bounded`,
+//! its largest error reported as `bounded`), and `point`: the default point light of
 //! the emitter's whole output at its middle (a segment: intensity `I·ℓ` at its midpoint; a disc
 //! or rectangle: the Lambertian point light of intensity `L_e·area` at its centre; a sphere: the
 //! isotropic one of intensity `π R² L_e` at its centre), the cost an emitter is compared with.
@@ -31,6 +32,8 @@ use std::time::Duration;
 struct Record<T> {
     counted: Box<dyn Fn(T) -> (T, usize)>,
     point: Box<dyn Fn() -> T>,
+    /// An area light's bounded method (`AreaScene::in_scatter_bounded`).
+    bounded: Option<Box<dyn Fn() -> T>>,
 }
 
 struct Class<T: Real> {
@@ -48,7 +51,7 @@ fn load<T: Real>() -> BTreeMap<String, Class<T>> {
                 let len = [0, 1, 2].map(|i| b[i] - a[i]).iter().fold(T::zero(), |s, x| s + *x * *x).sqrt();
                 let light = PointLight { position: mid, intensity: seg.light().intensity * len, distribution: seg.light().distribution };
                 let point = Scene::new(*seg.ray(), light, *seg.medium(), *seg.phase()).unwrap();
-                Record { counted: Box::new(move |tol| seg.in_scatter_counted(tol)), point: Box::new(move || point.in_scatter()) }
+                Record { counted: Box::new(move |tol| seg.in_scatter_counted(tol)), point: Box::new(move || point.in_scatter()), bounded: None }
             }
             AnyRecord::Area(area) => {
                 let l = *area.light();
@@ -74,7 +77,7 @@ fn load<T: Real>() -> BTreeMap<String, Class<T>> {
                         Box::new(move || s.in_scatter())
                     }
                 };
-                Record { counted: Box::new(move |tol| area.in_scatter_counted(tol)), point }
+                Record { counted: Box::new(move |tol| area.in_scatter_counted(tol)), point, bounded: Some(Box::new(move || area.in_scatter_bounded())) }
             }
             _ => panic!("not an extended light: {v}"),
         };
@@ -104,6 +107,11 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
         // segments, at error 1e-3 (the target's level): the loosest tolerance whose largest error
         // over the class is at most 1e-3 (as the classes bench picks the kernel's)
         let level = name.starts_with("segment_").then(|| LEVEL_TOLERANCES.iter().copied().find(|&t| worst(T::lit(t)).0 <= LEVEL).unwrap_or(1e-3));
+        // an area light's bounded method: its largest error
+        let bounded_json = match class.records.iter().map(|r| r.bounded.as_ref()).collect::<Option<Vec<_>>>() {
+            Some(b) => format!(",\"bounded\":{:e}", b.iter().zip(&class.exact).map(|(f, exact)| (f().to_f64_exact() - exact).abs() / exact).fold(0.0, f64::max)),
+            None => String::new(),
+        };
         let level_json = match level {
             Some(t) => {
                 let (e, med, max) = worst(T::lit(t));
@@ -113,7 +121,7 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
         };
         writeln!(
             report,
-            "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"records\":{},\"default\":{e_default:e},\"default_panels\":[{med_default},{max_default}],\"loose\":{e_loose:e},\"loose_panels\":[{med_loose},{max_loose}]{level_json}}}",
+            "{{\"precision\":\"{label}\",\"class\":\"{name}\",\"records\":{},\"default\":{e_default:e},\"default_panels\":[{med_default},{max_default}],\"loose\":{e_loose:e},\"loose_panels\":[{med_loose},{max_loose}]{level_json}{bounded_json}}}",
             class.records.len()
         )
         .unwrap();
@@ -123,6 +131,9 @@ fn run<T: Real>(crit: &mut Criterion, label: &str, report: &mut String) {
         g.bench_function("emitter_1e-3", |b| b.iter(|| class.records.iter().map(|r| (r.counted)(black_box(T::lit(1e-3))).0).fold(T::zero(), |a, x| a + x)));
         if let Some(t) = level {
             g.bench_function("emitter_at_1e-3", |b| b.iter(|| class.records.iter().map(|r| (r.counted)(black_box(T::lit(t))).0).fold(T::zero(), |a, x| a + x)));
+        }
+        if class.records.iter().all(|r| r.bounded.is_some()) {
+            g.bench_function("emitter_bounded", |b| b.iter(|| class.records.iter().map(|r| (r.bounded.as_ref().unwrap())()).fold(T::zero(), |a, x| a + black_box(x))));
         }
         g.bench_function("point", |b| b.iter(|| class.records.iter().map(|r| black_box((r.point)())).fold(T::zero(), |a, x| a + x)));
         g.finish();

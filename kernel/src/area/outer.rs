@@ -1,0 +1,377 @@
+//! Area lights in the other order, within a shader's loop budget (docs/DESIGN.md §12): the ray
+//! outside, the directions to the emitter inside.
+//!
+//! `L = σs ∫ e^{−σt(t − t0)} S(x(t)) dt`, `S(x) = ∫ L_e c^{p−1} P(ω·d) e^{−σt|x − q|} dω` over the
+//! directions `ω` from `x` to the emitter's points `q` (`c` the cosine at `q` between its normal
+//! and `x − q`, `p` the [`Emission`](super::Emission)'s power): `dω = c dA/|x − q|²` turns the
+//! element integral of [`super`] into this one, in which an evaluation is an `exp` and a phase
+//! function with no loop of its own, where each of [`super`]'s point lights is a loop (more
+//! than lavapipe's loop limit holds, docs/DESIGN.md §10).
+//!
+//! * The ray: globally adaptive Gauss–Kronrod 7/15 (`crate::extended::adaptive`) in the angle
+//!   seen from the emitter's centre, `t − x_h = h' tan θ`, `h' = hypot(h, size)` (the glow is
+//!   as wide as the emitter's distance or its size), split at the centre's foot, where the ray
+//!   crosses a flat emitter's plane (behind it `S = 0`) and where it enters or leaves a sphere
+//!   (inside `S = 0`); cut where the extinction from the segment's start has grown by `−ln ε`
+//!   past the emitter's far side; at most [`BOUNDED_RAY_PANELS`] panels.
+//! * A flat emitter: polar coordinates about `q*`, its point nearest `x`'s foot on the plane
+//!   (the foot itself where it lies inside), `r = ρ₀ tan γ`, `ρ₀ = |x − q*|`, so that the
+//!   `z/d³` of `dω = z dA/d³` is smooth in `γ`: a disc over the whole circle about the foot, or
+//!   with `q*` on the rim over the half towards the centre (the chord `2R cos ψ`), a
+//!   parallelogram as the triangles from `q*` to its edges. Gauss–Legendre [`RADIAL`] in `γ`,
+//!   [`AZIMUTHAL`] in `ψ` ([`TRIANGLE_AZIMUTHAL`] a triangle).
+//! * A sphere: the cap it subtends, `sin α = R/|c − x|`, about the direction of its centre, in
+//!   `φ` with `sin β = sin α sin φ` (then the distance to the surface, `|c − x| cos β − R cos φ`,
+//!   has no square root left at the cap's rim, and the emitted cosine is `cos φ`):
+//!   Gauss–Legendre [`RADIAL`] in `φ`, [`AZIMUTHAL`] in `ψ`.
+//!
+//! The rules' sizes are the design study's (`scripts/area_ray_outer.py`); the errors over
+//! tests/reference/area.jsonl are in docs/DESIGN.md §12.
+
+use super::{AreaScene, Emitter};
+use crate::expansion::gauss_table::{GL12, GL16, GL32};
+use crate::extended::{adaptive, GAUSS_KRONROD_15};
+use crate::geometry::{basis, cross, dot, length, normalize, sub};
+use crate::phase::PhaseFunction;
+use crate::real::{exp_nonpositive, sin_cos_turns, Real};
+
+/// The most Gauss–Kronrod 7/15 panels of [`AreaScene::in_scatter_bounded`]'s ray integral.
+pub const BOUNDED_RAY_PANELS: usize = 8;
+
+/// The relative tolerance of [`AreaScene::in_scatter_bounded`]'s ray integral (its summed
+/// `|K15 − G7|`; the inner rules are fixed).
+pub const BOUNDED_RAY_TOLERANCE: f64 = 1e-3;
+
+/// Gauss–Legendre in a flat emitter's `γ` and a sphere's `φ` (16 points; positive half).
+pub const RADIAL: [(f64, f64); 8] = GL16;
+
+/// Gauss–Legendre in the azimuth `ψ` about a disc's `q*` or a sphere's centre (32 points;
+/// positive half).
+pub const AZIMUTHAL: [(f64, f64); 16] = GL32;
+
+/// Gauss–Legendre in the azimuth over one of a parallelogram's triangles (12 points; positive
+/// half).
+pub const TRIANGLE_AZIMUTHAL: [(f64, f64); 6] = GL12;
+
+/// `f(x, w)` at the nodes and weights of the Gauss–Legendre rule `half` (its positive half) on
+/// `[a, b]`.
+#[inline]
+fn each_node<T: Real>(half: &[(f64, f64)], a: T, b: T, mut f: impl FnMut(T, T)) {
+    let (c, hw) = ((a + b) * T::lit(0.5), (b - a) * T::lit(0.5));
+    for &(x, w) in half {
+        let (x, w) = (T::lit(x) * hw, T::lit(w) * hw);
+        f(c - x, w);
+        f(c + x, w);
+    }
+}
+
+/// The azimuths of [`AZIMUTHAL`], once per ray: `(cos ψ, sin ψ, weight)` over the whole circle and
+/// over the half `ψ ∈ [−π/2, π/2]`.
+struct Azimuths<T> {
+    circle: [(T, T, T); 32],
+    half: [(T, T, T); 32],
+}
+
+impl<T: Real> Azimuths<T> {
+    fn new() -> Self {
+        let mut az = Azimuths { circle: [(T::zero(), T::zero(), T::zero()); 32], half: [(T::zero(), T::zero(), T::zero()); 32] };
+        let mut i = 0;
+        each_node(&AZIMUTHAL, T::zero(), T::PI() + T::PI(), |psi, w| {
+            let (s, c) = sin_cos_turns(psi);
+            az.circle[i] = (c, s, w);
+            i += 1;
+        });
+        i = 0;
+        each_node(&AZIMUTHAL, -T::FRAC_PI_2(), T::FRAC_PI_2(), |psi, w| {
+            let (s, c) = sin_cos_turns(psi);
+            az.half[i] = (c, s, w);
+            i += 1;
+        });
+        az
+    }
+}
+
+/// What `S` needs of the scene besides the emitter.
+struct Light<'a, T, P> {
+    /// The ray's unit direction.
+    d: [T; 3],
+    sigma_t: T,
+    radiance: T,
+    /// The emission's power `p`.
+    power: u32,
+    phase: &'a P,
+    azimuths: Azimuths<T>,
+}
+
+impl<T: Real, P: PhaseFunction<T>> Light<'_, T, P> {
+    /// `L_e c^{p−1}`.
+    #[inline]
+    fn emitted(&self, c: T) -> T {
+        if self.power == 1 {
+            self.radiance
+        } else {
+            self.radiance * c.powi(self.power as i32 - 1)
+        }
+    }
+}
+
+/// A point `x` above a flat emitter's plane: its height `z > 0`, the plane's unit vectors'
+/// dot products with the ray's direction, and `q* − foot` in the plane's coordinates.
+struct Above<T> {
+    z: T,
+    a1d: T,
+    a2d: T,
+    nd: T,
+    off: (T, T),
+}
+
+/// `∫ L_e c^{p−1} P e^{−σt d} z/d³ r dr` along the direction `e` from `q*` out to `r_max`, in
+/// `γ` (`r = ρ₀ tan γ`).
+fn radial<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, above: &Above<T>, e: (T, T), r_max: T) -> T {
+    let Above { z, a1d, a2d, nd, off } = *above;
+    let rho0 = (z * z + off.0 * off.0 + off.1 * off.1).sqrt();
+    let mut sum = T::zero();
+    each_node(&RADIAL, T::zero(), (r_max / rho0).atan(), |g, w| {
+        let (s, c) = sin_cos_turns(g);
+        let r = rho0 * s / c;
+        let dr = rho0 / (c * c);
+        let (px, py) = (off.0 + r * e.0, off.1 + r * e.1);
+        let dist = (z * z + px * px + py * py).sqrt();
+        let inv = dist.recip();
+        let mu = (px * a1d + py * a2d - z * nd) * inv;
+        let cos = z * inv;
+        sum = sum + w * light.emitted(cos) * exp_nonpositive(-light.sigma_t * dist) * light.phase.eval(mu) * cos * inv * inv * r * dr;
+    });
+    sum
+}
+
+/// `S(x)` of a disc (centre `c`, unit normal `n`, the plane's unit vectors `a1`, `a2`, radius `R`).
+fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], (n, a1, a2): ([T; 3], [T; 3], [T; 3]), radius: T) -> T {
+    let rel = sub(x, c);
+    let z = dot(rel, n);
+    if !(z > T::zero()) {
+        return T::zero();
+    }
+    let (fx, fy) = (dot(rel, a1), dot(rel, a2));
+    let rf = (fx * fx + fy * fy).sqrt();
+    let (a1d, a2d, nd) = (dot(a1, light.d), dot(a2, light.d), dot(n, light.d));
+    let mut sum = T::zero();
+    if rf <= radius {
+        // about the foot: the chord to the rim along e, the positive root of r² + 2br + k = 0
+        let above = Above { z, a1d, a2d, nd, off: (T::zero(), T::zero()) };
+        let k = (rf - radius) * (rf + radius);
+        for &(cos, sin, w) in &light.azimuths.circle {
+            let b = fx * cos + fy * sin;
+            let root = (b * b - k).sqrt();
+            let r_max = if b > T::zero() { -k / (b + root) } else { root - b };
+            sum = sum + w * radial(light, &above, (cos, sin), r_max);
+        }
+    } else {
+        // about the rim's point nearest the foot, over the half towards the centre (u)
+        let (ux, uy) = (-fx / rf, -fy / rf);
+        let gap = rf - radius;
+        let above = Above { z, a1d, a2d, nd, off: (gap * ux, gap * uy) };
+        for &(cos, sin, w) in &light.azimuths.half {
+            let e = (cos * ux - sin * uy, cos * uy + sin * ux);
+            sum = sum + w * radial(light, &above, e, (radius + radius) * cos);
+        }
+    }
+    sum
+}
+
+/// `S(x)` of the parallelogram `p0 + u·eu + v·ev` (unit normal `n` along `eu × ev`, `a1 = eu/|eu|`,
+/// `a2 = n × a1`).
+fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], p0: [T; 3], (eu, ev): ([T; 3], [T; 3]), (n, a1, a2): ([T; 3], [T; 3], [T; 3])) -> T {
+    let rel = sub(x, p0);
+    let z = dot(rel, n);
+    if !(z > T::zero()) {
+        return T::zero();
+    }
+    let foot = (dot(rel, a1), dot(rel, a2));
+    let (u2, v2) = ((dot(eu, a1), dot(eu, a2)), (dot(ev, a1), dot(ev, a2)));
+    // counter-clockwise about n
+    let corners = [(T::zero(), T::zero()), u2, (u2.0 + v2.0, u2.1 + v2.1), v2];
+    let det = u2.0 * v2.1 - u2.1 * v2.0;
+    let (u, v) = ((foot.0 * v2.1 - foot.1 * v2.0) / det, (u2.0 * foot.1 - u2.1 * foot.0) / det);
+    let inside = |s: T| s >= T::zero() && s <= T::one();
+    let q = if inside(u) && inside(v) {
+        foot
+    } else {
+        // the nearest point of the edges
+        let mut best = (T::infinity(), foot);
+        for i in 0..4 {
+            let (a, b) = (corners[i], corners[(i + 1) % 4]);
+            let e = (b.0 - a.0, b.1 - a.1);
+            let s = (((foot.0 - a.0) * e.0 + (foot.1 - a.1) * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
+            let p = (a.0 + s * e.0, a.1 + s * e.1);
+            let dd = (p.0 - foot.0) * (p.0 - foot.0) + (p.1 - foot.1) * (p.1 - foot.1);
+            if dd < best.0 {
+                best = (dd, p);
+            }
+        }
+        best.1
+    };
+    let above = Above { z, a1d: dot(a1, light.d), a2d: dot(a2, light.d), nd: dot(n, light.d), off: (q.0 - foot.0, q.1 - foot.1) };
+    // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
+    let thin = T::epsilon() * det.abs();
+    let mut sum = T::zero();
+    for i in 0..4 {
+        let (a, b) = (corners[i], corners[(i + 1) % 4]);
+        let (a, b) = ((a.0 - q.0, a.1 - q.1), (b.0 - q.0, b.1 - q.1));
+        let area = a.0 * b.1 - a.1 * b.0;
+        if !(area > thin) {
+            continue;
+        }
+        let e = (b.0 - a.0, b.1 - a.1);
+        let el = (e.0 * e.0 + e.1 * e.1).sqrt();
+        // the edge's distance from q* and outward normal m
+        let (h, m) = (area / el, (e.1 / el, -e.0 / el));
+        let start = a.1.atan2(a.0);
+        let span = area.atan2(a.0 * b.0 + a.1 * b.1);
+        each_node(&TRIANGLE_AZIMUTHAL, start, start + span, |psi, w| {
+            let (sin, cos) = sin_cos_turns(psi);
+            sum = sum + w * radial(light, &above, (cos, sin), h / (cos * m.0 + sin * m.1));
+        });
+    }
+    sum
+}
+
+/// `S(x)` of a sphere (centre `c`, radius `R`); `0` inside it.
+fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], radius: T) -> T {
+    let v = sub(c, x);
+    let dc = length(v);
+    if !(dc > radius) {
+        return T::zero();
+    }
+    let a = [v[0] / dc, v[1] / dc, v[2] / dc];
+    let (e1, e2) = basis(a);
+    let (ad, e1d, e2d) = (dot(a, light.d), dot(e1, light.d), dot(e2, light.d));
+    let sin_a = radius / dc;
+    let mut sum = T::zero();
+    each_node(&RADIAL, T::zero(), T::FRAC_PI_2(), |phi, w| {
+        let (sp, cp) = sin_cos_turns(phi);
+        let sb = sin_a * sp;
+        let cb = ((T::one() - sb) * (T::one() + sb)).sqrt();
+        let dist = (dc * cb - radius * cp).max(T::zero());
+        let mut around = T::zero();
+        for &(cos, sin, wpsi) in &light.azimuths.circle {
+            around = around + wpsi * light.phase.eval(cb * ad + sb * (cos * e1d + sin * e2d));
+        }
+        sum = sum + w * light.emitted(cp) * sin_a * sin_a * sp * cp / cb * exp_nonpositive(-light.sigma_t * dist) * around;
+    });
+    sum
+}
+
+impl<T, P> AreaScene<T, P>
+where
+    T: Real,
+    P: PhaseFunction<T> + Clone,
+{
+    /// In-scattered radiance of the area light by the bounded method of [`outer`](self): the
+    /// ray to [`BOUNDED_RAY_TOLERANCE`] in at most [`BOUNDED_RAY_PANELS`] panels, the emitter by
+    /// fixed rules. Its cost has a fixed worst case (the shaders' budget) but no error control of
+    /// the emitter's rules: docs/DESIGN.md §12 gives its errors.
+    pub fn in_scatter_bounded(&self) -> T {
+        self.in_scatter_bounded_counted(T::lit(BOUNDED_RAY_TOLERANCE), BOUNDED_RAY_PANELS).0
+    }
+
+    /// [`AreaScene::in_scatter_bounded`] with the ray's tolerance and panel bound given, and the
+    /// ray panels evaluated.
+    pub fn in_scatter_bounded_counted(&self, tolerance: T, max_panels: usize) -> (T, usize) {
+        if self.light.radiance == T::zero() || self.medium.sigma_s == T::zero() {
+            return (T::zero(), 0);
+        }
+        let o = T::vec3_to_array(self.ray.origin);
+        let d = normalize(T::vec3_to_array(self.ray.dir));
+        let (t0, t1) = (self.ray.t_min, self.ray.t_max);
+        let sigma_t = self.medium.sigma_t;
+        let light = Light { d, sigma_t, radiance: self.light.radiance, power: self.light.emission.power(), phase: &self.phase, azimuths: Azimuths::new() };
+        // the emitter's centre and size, and where the ray's integrand changes its form
+        let mut cuts = [T::nan(); 2];
+        let (centre, size) = match self.light.emitter {
+            Emitter::Disc { center, normal, radius } => {
+                let (c, n) = (T::vec3_to_array(center), normalize(T::vec3_to_array(normal)));
+                cuts[0] = dot(sub(c, o), n) / dot(d, n);
+                (c, radius)
+            }
+            Emitter::Rectangle { corner, edge_u, edge_v } => {
+                let (p0, eu, ev) = (T::vec3_to_array(corner), T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
+                let n = normalize(cross(eu, ev));
+                cuts[0] = dot(sub(p0, o), n) / dot(d, n);
+                let half = T::lit(0.5);
+                let c = [p0[0] + half * (eu[0] + ev[0]), p0[1] + half * (eu[1] + ev[1]), p0[2] + half * (eu[2] + ev[2])];
+                (c, half * length([eu[0] + ev[0], eu[1] + ev[1], eu[2] + ev[2]]).max(length(sub(eu, ev))))
+            }
+            Emitter::Sphere { center, radius } => {
+                let c = T::vec3_to_array(center);
+                // entry and exit: t² + 2bt + k = 0
+                let oc = sub(o, c);
+                let (b, k) = (dot(oc, d), dot(oc, oc) - radius * radius);
+                let disc = b * b - k;
+                if disc > T::zero() {
+                    let q = -b - disc.sqrt().copysign(b);
+                    cuts = [q, k / q];
+                }
+                (c, radius)
+            }
+        };
+        if !(size > T::zero()) {
+            return (T::zero(), 0);
+        }
+        let x_h = dot(sub(centre, o), d);
+        let h = length(sub(sub(centre, o), [x_h * d[0], x_h * d[1], x_h * d[2]]));
+        let h_eff = h.hypot(size);
+        // past the emitter's far side the extinction from t0 has grown by −ln ε more than
+        // anywhere it is seen from nearer
+        let start = [o[0] + t0 * d[0], o[1] + t0 * d[1], o[2] + t0 * d[2]];
+        let t_end = if sigma_t > T::zero() { t1.min(t0 + length(sub(centre, start)) + size - T::epsilon().ln() / sigma_t) } else { t1 };
+        let theta = |t: T| if t.is_finite() { (t - x_h).atan2(h_eff) } else { T::FRAC_PI_2() };
+        let mut edges = [T::zero(); 5];
+        let mut count = 0;
+        for t in [t0, x_h, cuts[0], cuts[1], t_end] {
+            if t >= t0 && t <= t_end {
+                edges[count] = theta(t);
+                count += 1;
+            }
+        }
+        // sorted (at most five)
+        for i in 1..count {
+            let mut j = i;
+            while j > 0 && edges[j - 1] > edges[j] {
+                edges.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        let emitter = self.light.emitter;
+        let frame = |n: [T; 3]| {
+            let (a1, a2) = basis(n);
+            (n, a1, a2)
+        };
+        let (disc_frame, parallelogram_frame) = match emitter {
+            Emitter::Disc { normal, .. } => (frame(normalize(T::vec3_to_array(normal))), ([T::zero(); 3], [T::zero(); 3], [T::zero(); 3])),
+            Emitter::Rectangle { edge_u, edge_v, .. } => {
+                let (eu, ev) = (T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
+                let n = normalize(cross(eu, ev));
+                let a1 = normalize(eu);
+                (([T::zero(); 3], [T::zero(); 3], [T::zero(); 3]), (n, a1, cross(n, a1)))
+            }
+            Emitter::Sphere { .. } => (([T::zero(); 3], [T::zero(); 3], [T::zero(); 3]), ([T::zero(); 3], [T::zero(); 3], [T::zero(); 3])),
+        };
+        let mut integrand = |th: T| {
+            let (s, c) = sin_cos_turns(th);
+            let t = x_h + h_eff * s / c;
+            let x = [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
+            let radiance = match emitter {
+                Emitter::Disc { radius, .. } => disc(&light, x, centre, disc_frame, radius),
+                Emitter::Rectangle { corner, edge_u, edge_v } => parallelogram(&light, x, T::vec3_to_array(corner), (T::vec3_to_array(edge_u), T::vec3_to_array(edge_v)), parallelogram_frame),
+                Emitter::Sphere { radius, .. } => sphere(&light, x, centre, radius),
+            };
+            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * radiance
+        };
+        if count < 2 {
+            return (T::zero(), 0);
+        }
+        let (value, panels) = adaptive(&GAUSS_KRONROD_15, &mut integrand, &edges[..count], tolerance, max_panels);
+        (self.medium.sigma_s * value, panels)
+    }
+}
