@@ -240,3 +240,21 @@ fn bounded_limits() {
     let scene = AreaScene::new(inside, AreaLight::new(Emitter::Sphere { center, radius }, 2.0), medium(), phase()).unwrap();
     assert_eq!(scene.in_scatter_bounded(), 0.0, "a segment inside the sphere");
 }
+
+/// A ray through a rectangle at a point its focus lands on exactly (the nested construction's
+/// nodes then lie on the ray within rounding, where the point light is `+∞`): a finite value,
+/// which is the mean of the two rays `δ = 1e-6` to either side of it (the glow is smooth in the
+/// ray's direction: the first-order change cancels in the mean, the second is `O(δ²)`), to three
+/// times the f64 target 1e-9 (each of the three values within it).
+#[test]
+fn a_ray_through_the_focus_is_finite() {
+    let emitter = Emitter::Rectangle { corner: DVec3::new(6.0, 1.0, -1.0), edge_u: DVec3::new(0.0, 1.2, 0.1), edge_v: DVec3::new(0.1, 0.0, 1.0) };
+    let value = |dir: DVec3| {
+        let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
+        AreaScene::new(ray, AreaLight::new(emitter, 2.0), Medium { sigma_s: 0.05, sigma_t: 0.08 }, phase()).unwrap().in_scatter()
+    };
+    let through = value(DVec3::new(6.0, 1.5, -0.5));
+    let delta = DVec3::new(0.0, 1e-6, 0.0);
+    let mean = 0.5 * (value(DVec3::new(6.0, 1.5, -0.5) + delta) + value(DVec3::new(6.0, 1.5, -0.5) - delta));
+    assert!(through.is_finite() && (through - mean).abs() <= 3e-9 * mean, "through the focus {through}, beside it {mean}");
+}
