@@ -100,10 +100,18 @@ struct Light<'a, T, P> {
     /// The emission's power `p`.
     power: u32,
     phase: &'a P,
+    /// A constant phase function's value (isotropic scattering).
+    constant_phase: Option<T>,
     azimuths: Azimuths<T>,
 }
 
 impl<T: Real, P: PhaseFunction<T>> Light<'_, T, P> {
+    /// `P(μ)`.
+    #[inline]
+    fn phase(&self, mu: T) -> T {
+        self.constant_phase.unwrap_or_else(|| self.phase.eval(mu))
+    }
+
     /// `L_e c^{p−1}`.
     #[inline]
     fn emitted(&self, c: T) -> T {
@@ -138,9 +146,9 @@ fn radial<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, above: &Above<T
         let (px, py) = (off.0 + r * e.0, off.1 + r * e.1);
         let dist = (z * z + px * px + py * py).sqrt();
         let inv = dist.recip();
-        let mu = (px * a1d + py * a2d - z * nd) * inv;
         let cos = z * inv;
-        sum = sum + w * light.emitted(cos) * exp_nonpositive(-light.sigma_t * dist) * light.phase.eval(mu) * cos * inv * inv * r * dr;
+        let phase = light.phase((px * a1d + py * a2d - z * nd) * inv);
+        sum = sum + w * light.emitted(cos) * exp_nonpositive(-light.sigma_t * dist) * phase * cos * inv * inv * r * dr;
     });
     sum
 }
@@ -247,16 +255,21 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
     let (e1, e2) = basis(a);
     let (ad, e1d, e2d) = (dot(a, light.d), dot(e1, light.d), dot(e2, light.d));
     let sin_a = radius / dc;
+    // a constant phase function's integral round the circle, 2π·P
+    let isotropic = light.constant_phase.map(|p| (T::PI() + T::PI()) * p);
     let mut sum = T::zero();
     each_node(&RADIAL, T::zero(), T::FRAC_PI_2(), |phi, w| {
         let (sp, cp) = sin_cos_turns(phi);
         let sb = sin_a * sp;
         let cb = ((T::one() - sb) * (T::one() + sb)).sqrt();
         let dist = (dc * cb - radius * cp).max(T::zero());
-        let mut around = T::zero();
-        for &(cos, sin, wpsi) in &light.azimuths.circle {
-            around = around + wpsi * light.phase.eval(cb * ad + sb * (cos * e1d + sin * e2d));
-        }
+        let around = isotropic.unwrap_or_else(|| {
+            let mut around = T::zero();
+            for &(cos, sin, wpsi) in &light.azimuths.circle {
+                around = around + wpsi * light.phase.eval(cb * ad + sb * (cos * e1d + sin * e2d));
+            }
+            around
+        });
         sum = sum + w * light.emitted(cp) * sin_a * sin_a * sp * cp / cb * exp_nonpositive(-light.sigma_t * dist) * around;
     });
     sum
@@ -285,7 +298,8 @@ where
         let d = normalize(T::vec3_to_array(self.ray.dir));
         let (t0, t1) = (self.ray.t_min, self.ray.t_max);
         let sigma_t = self.medium.sigma_t;
-        let light = Light { d, sigma_t, radiance: self.light.radiance, power: self.light.emission.power(), phase: &self.phase, azimuths: Azimuths::new() };
+        let constant_phase = self.phase.is_isotropic().then(|| self.phase.eval(T::zero()));
+        let light = Light { d, sigma_t, radiance: self.light.radiance, power: self.light.emission.power(), phase: &self.phase, constant_phase, azimuths: Azimuths::new() };
         // the emitter's centre and size, and where the ray's integrand changes its form
         let mut cuts = [T::nan(); 2];
         let (centre, size) = match self.light.emitter {
