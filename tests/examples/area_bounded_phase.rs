@@ -2,13 +2,14 @@
 //! forward-scattering fog: its relative error against the nested construction at tolerance
 //! 1e-9 (`AreaScene::in_scatter_counted`) for each emitter shape, on rays that look at the
 //! emitter (the phase function's forward peak inside the emitter's solid angle), pass beside it
-//! and look away, Henyey–Greenstein `g` from 0 to 0.99.
+//! and look away, Henyey–Greenstein `g` from 0 to 0.99; then in isotropic fog with the emitters
+//! focused by cosine lobes `cᵖ`, `p` from 2 to 1024.
 //!
 //! `cargo run --release -p airlight-tests --example area_bounded_phase`
 
 use airlight::glam::DVec3;
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
-use airlight::{AreaLight, AreaScene, Emitter, Medium, Ray};
+use airlight::{AreaLight, AreaScene, Emission, Emitter, Medium, Ray};
 
 fn main() {
     let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
@@ -20,17 +21,27 @@ fn main() {
     // from the origin (which every emitter faces): towards the emitters' centre, beside them, away
     // from them
     let rays = [("at", DVec3::new(6.0, 1.5, -0.5)), ("beside", DVec3::new(1.0, 0.0, 0.3)), ("away", DVec3::new(-1.0, 0.2, 0.1))];
-    println!("| g | emitter | ray | value (nested, 1e-9) | bounded: relative error |");
+    println!("| fog or emission | emitter | ray | value (nested, 1e-9) | bounded: relative error |");
     println!("|---|---|---|---|---|");
+    let row = |what: String, name: &str, label: &str, light: AreaLight<f64>, g: f64, dir: DVec3| {
+        let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
+        let scene = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+        let reference = scene.in_scatter_counted(1e-9).0;
+        if reference > 0.0 {
+            println!("| {what} | {name} | {label} | {reference:.6e} | {:.1e} |", (scene.in_scatter_bounded() - reference).abs() / reference);
+        }
+    };
     for g in [0.0, 0.5, 0.8, 0.9, 0.95, 0.99] {
         for (name, emitter) in emitters {
             for (label, dir) in rays {
-                let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
-                let scene = AreaScene::new(ray, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
-                let reference = scene.in_scatter_counted(1e-9).0;
-                if reference > 0.0 {
-                    println!("| {g} | {name} | {label} | {reference:.6e} | {:.1e} |", (scene.in_scatter_bounded() - reference).abs() / reference);
-                }
+                row(format!("g = {g}"), name, label, AreaLight::new(emitter, 2.0), g, dir);
+            }
+        }
+    }
+    for power in [2, 8, 32, 128, 1024] {
+        for (name, emitter) in emitters {
+            for (label, dir) in rays {
+                row(format!("p = {power}"), name, label, AreaLight { emission: Emission::CosineLobe { power }, ..AreaLight::new(emitter, 2.0) }, 0.0, dir);
             }
         }
     }
