@@ -283,7 +283,10 @@ where
     /// In-scattered radiance of the area light by the bounded method of [`outer`](self): the
     /// ray to [`BOUNDED_RAY_TOLERANCE`] in at most [`BOUNDED_RAY_PANELS`] panels, the emitter by
     /// fixed rules. Its cost has a fixed worst case (the shaders' budget) but no error control of
-    /// the emitter's rules: docs/DESIGN.md §12 gives its errors.
+    /// the emitter's rules, which do not resolve a lobe narrower than their nodes' spacing: a
+    /// forward phase lobe inside the emitter's solid angle (Henyey–Greenstein `g ≥ 0.95` on a ray
+    /// that looks at the emitter) or a cosine lobe of emission of power in the hundreds.
+    /// docs/DESIGN.md §12 gives its errors.
     pub fn in_scatter_bounded(&self) -> T {
         self.in_scatter_bounded_counted(T::lit(BOUNDED_RAY_TOLERANCE), BOUNDED_RAY_PANELS).0
     }
