@@ -1,8 +1,9 @@
 //! The bounded area-light method (`AreaScene::in_scatter_bounded`, docs/DESIGN.md §12) in
 //! forward-scattering fog: its relative error against the nested construction at tolerance
 //! 1e-9 (`AreaScene::in_scatter_counted`) for each emitter shape, on rays that look at the
-//! emitter (the phase function's forward peak inside the emitter's solid angle), pass beside it
-//! and look away, Henyey–Greenstein `g` from 0 to 0.99; then in isotropic fog with the emitters
+//! emitter (the phase function's forward peak inside the emitter's solid angle), towards and
+//! just past its limb (the peak at the solid angle's rim), pass beside it and look away,
+//! Henyey–Greenstein `g` from 0 to 0.99; then in isotropic fog with the emitters
 //! focused by cosine lobes `cᵖ`, `p` from 2 to 1024.
 //!
 //! `cargo run --release -p airlight-tests --example area_bounded_phase`
@@ -18,9 +19,16 @@ fn main() {
         ("disc", Emitter::Disc { center: DVec3::new(6.0, 1.5, -0.5), normal: DVec3::new(-1.0, -0.4, 0.1), radius: 0.8 }),
         ("rectangle", Emitter::Rectangle { corner: DVec3::new(6.0, 1.0, -1.0), edge_u: DVec3::new(0.1, 0.0, 1.0), edge_v: DVec3::new(0.0, 1.2, 0.1) }),
     ];
-    // from the origin (which every emitter faces): towards the emitters' centre, beside them, away
-    // from them
-    let rays = [("at", DVec3::new(6.0, 1.5, -0.5)), ("beside", DVec3::new(1.0, 0.0, 0.3)), ("away", DVec3::new(-1.0, 0.2, 0.1))];
+    // from the origin (which every emitter faces): towards the emitters' centre, towards the
+    // sphere's limb (its rim seen from the origin is 0.8 off the centre's direction at the centre's
+    // distance), just past it, beside them, away from them
+    let rays = [
+        ("at", DVec3::new(6.0, 1.5, -0.5)),
+        ("limb", DVec3::new(6.0, 2.25, -0.3)),
+        ("past the limb", DVec3::new(6.0, 2.4, -0.5)),
+        ("beside", DVec3::new(1.0, 0.0, 0.3)),
+        ("away", DVec3::new(-1.0, 0.2, 0.1)),
+    ];
     println!("| fog or emission | emitter | ray | value (nested, 1e-9) | bounded: relative error |");
     println!("|---|---|---|---|---|");
     let row = |what: String, name: &str, label: &str, light: AreaLight<f64>, g: f64, dir: DVec3| {
