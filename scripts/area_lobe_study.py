@@ -24,38 +24,17 @@ import numpy as np
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 sys.path.insert(0, os.path.join(ROOT, "tests", "reference"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gen_surface import phase_np  # noqa: E402  (the references' own phase functions)
 
 
-def unit(v):
-    v = np.asarray(v, float)
-    return v / np.linalg.norm(v)
-
-
-def basis(n):
-    a = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
-    e1 = unit(np.cross(n, a))
-    return e1, np.cross(n, e1)
+from area_ray_outer import basis, sphere_radiance, unit  # noqa: E402  (the method's rule, as the study of it has it)
 
 
 def cap_rule(x, c, radius, radiance, phase, d, sigma_t, n_phi, n_psi):
     """The method's rule: polar about the centre's direction, sin β = sin α sin φ."""
-    v = c - x
-    dist_c = np.linalg.norm(v)
-    a = v / dist_c
-    e1, e2 = basis(a)
-    sin_a = radius / dist_c
-    xf, wf = np.polynomial.legendre.leggauss(n_phi)
-    phi, w_phi = (xf + 1) * np.pi / 4, wf * np.pi / 4
-    xp, wp = np.polynomial.legendre.leggauss(n_psi)
-    psi, w_psi = (xp + 1) * np.pi, wp * np.pi
-    sb = sin_a * np.sin(phi)
-    cb = np.sqrt(1 - sb * sb)
-    jac = sin_a ** 2 * np.sin(phi) * np.cos(phi) / cb
-    dist = dist_c * cb - radius * np.cos(phi)
-    mu = cb[:, None] * (a @ d) + sb[:, None] * (np.cos(psi)[None, :] * (e1 @ d) + np.sin(psi)[None, :] * (e2 @ d))
-    f = (radiance * jac * np.exp(-sigma_t * dist))[:, None] * phase(np.minimum(mu, 1.0))
-    return w_phi @ f @ w_psi
+    rule = [np.polynomial.legendre.leggauss(k) for k in (n_phi, n_psi)]
+    return sphere_radiance(x, c, radius, {"L": radiance, "p": 1, "P": lambda mu: phase(np.minimum(mu, 1.0))}, d, sigma_t, rule)
 
 
 def peak_rule(x, c, radius, radiance, phase, d, sigma_t, n_theta, n_psi, scale):
