@@ -23,7 +23,8 @@
 //! * A sphere: the cap it subtends, `sin α = R/|c − x|`, about the direction of its centre, in
 //!   `φ` with `sin β = sin α sin φ` (then the distance to the surface, `|c − x| cos β − R cos φ`,
 //!   has no square root left at the cap's rim, and the emitted cosine is `cos φ`):
-//!   Gauss–Legendre [`RADIAL`] in `φ`, [`AZIMUTHAL`] in `ψ`. Where a phase lobe narrower than
+//!   Gauss–Legendre [`RADIAL`] in `φ` (graded towards the centre, `φ = s tan ϑ`, `s = 2/√(p − 1)`,
+//!   where an emission lobe `c^{p−1}` is narrower than the range), [`AZIMUTHAL`] in `ψ`. Where a phase lobe narrower than
 //!   the cap has its direction (`±d`) inside it or within [`LOBE_REACH`] of its widths outside,
 //!   the cap about that direction instead, graded towards the lobe (`sphere_about_lobe`): about
 //!   the centre, a Henyey–Greenstein `g = 0.99` lobe on the sphere left 6e-3 to 6e-2.
@@ -288,7 +289,18 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
     // a constant phase function's integral round the circle, 2π·P
     let isotropic = light.constant_phase.map(|p| (T::PI() + T::PI()) * p);
     let mut sum = T::zero();
-    each_node(&RADIAL, T::zero(), T::FRAC_PI_2(), |phi, w| {
+    // an emission lobe cos^{p−1} φ (width 1/√(p − 1) about φ = 0) by φ = s tan ϑ, s = 2/√(p − 1),
+    // where it is narrower than the range
+    let lobe = if light.power > 1 { T::lit(2.0) / T::from(light.power - 1).unwrap_or(T::one()).sqrt() } else { T::infinity() };
+    let (graded, top) = if lobe < T::FRAC_PI_2() { (Some(lobe), (T::FRAC_PI_2() / lobe).atan()) } else { (None, T::FRAC_PI_2()) };
+    each_node(&RADIAL, T::zero(), top, |node, w| {
+        let (phi, w) = match graded {
+            Some(s) => {
+                let (st, ct) = sin_cos_turns(node);
+                (s * st / ct, w * s / (ct * ct))
+            }
+            None => (node, w),
+        };
         let (sp, cp) = sin_cos_turns(phi);
         let sb = sin_a * sp;
         let cb = ((T::one() - sb) * (T::one() + sb)).sqrt();
@@ -370,7 +382,8 @@ where
     /// the emitter's rules, which do not resolve a lobe narrower than their nodes' spacing: on a
     /// disc or rectangle a forward phase lobe inside the emitter's solid angle
     /// (Henyey–Greenstein `g ≥ 0.95` on a ray that looks at the emitter; a sphere's cap is taken
-    /// about the lobe), and a cosine lobe of emission of power in the hundreds.
+    /// about the lobe), and a cosine lobe of emission of power in the hundreds (a sphere's is
+    /// graded for).
     /// docs/DESIGN.md §12 gives its errors.
     pub fn in_scatter_bounded(&self) -> T {
         self.in_scatter_bounded_counted(T::lit(BOUNDED_RAY_TOLERANCE), BOUNDED_RAY_PANELS).0
