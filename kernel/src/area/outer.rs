@@ -32,9 +32,9 @@
 //! The rules' sizes are the design study's (`scripts/area_ray_outer.py`); the errors over
 //! tests/reference/area.jsonl are in docs/DESIGN.md §12.
 
-use super::{AreaScene, Emitter};
+use super::{axpy, AreaScene, Emitter};
 use crate::expansion::gauss_table::{GL12, GL16, GL32};
-use crate::extended::{adaptive, GAUSS_KRONROD_15};
+use crate::extended::{adaptive, edges_between, GAUSS_KRONROD_15};
 use crate::geometry::{basis, cross, dot, length, normalize, sub};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, sin_cos_turns, Real};
@@ -143,20 +143,28 @@ impl<T: Real, P: PhaseFunction<T>> Light<'_, T, P> {
 }
 
 /// A point `x` above a flat emitter's plane: its height `z > 0`, the plane's unit vectors'
-/// dot products with the ray's direction, and `q* − foot` in the plane's coordinates.
+/// dot products with the ray's direction (`a1`, `a2`, `n` in [`Frame`]'s order), `q* − foot` in
+/// the plane's coordinates, and `ρ₀ = |x − q*|`.
 struct Above<T> {
     z: T,
-    a1d: T,
-    a2d: T,
-    nd: T,
+    dirs: [T; 3],
     off: (T, T),
+    rho0: T,
 }
+
+impl<T: Real> Above<T> {
+    fn new(z: T, dirs: [T; 3], off: (T, T)) -> Self {
+        Above { z, dirs, off, rho0: (z * z + off.0 * off.0 + off.1 * off.1).sqrt() }
+    }
+}
+
+/// A flat emitter's unit normal `n` and the plane's unit vectors `a1`, `a2`.
+type Frame<T> = ([T; 3], [T; 3], [T; 3]);
 
 /// `∫ L_e c^{p−1} P e^{−σt d} z/d³ r dr` along the direction `e` from `q*` out to `r_max`, in
 /// `γ` (`r = ρ₀ tan γ`).
 fn radial<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, above: &Above<T>, e: (T, T), r_max: T) -> T {
-    let Above { z, a1d, a2d, nd, off } = *above;
-    let rho0 = (z * z + off.0 * off.0 + off.1 * off.1).sqrt();
+    let Above { z, dirs: [a1d, a2d, nd], off, rho0 } = *above;
     let mut sum = T::zero();
     each_node(&RADIAL, T::zero(), (r_max / rho0).atan(), |g, w| {
         let (s, c) = sin_cos_turns(g);
@@ -173,7 +181,7 @@ fn radial<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, above: &Above<T
 }
 
 /// `S(x)` of a disc (centre `c`, unit normal `n`, the plane's unit vectors `a1`, `a2`, radius `R`).
-fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], (n, a1, a2): ([T; 3], [T; 3], [T; 3]), radius: T) -> T {
+fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], (n, a1, a2): Frame<T>, radius: T) -> T {
     let rel = sub(x, c);
     let z = dot(rel, n);
     if !(z > T::zero()) {
@@ -181,11 +189,11 @@ fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T;
     }
     let (fx, fy) = (dot(rel, a1), dot(rel, a2));
     let rf = (fx * fx + fy * fy).sqrt();
-    let (a1d, a2d, nd) = (dot(a1, light.d), dot(a2, light.d), dot(n, light.d));
+    let dirs = [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)];
     let mut sum = T::zero();
     if rf <= radius {
         // about the foot: the chord to the rim along e, the positive root of r² + 2br + k = 0
-        let above = Above { z, a1d, a2d, nd, off: (T::zero(), T::zero()) };
+        let above = Above::new(z, dirs, (T::zero(), T::zero()));
         let k = (rf - radius) * (rf + radius);
         for &(cos, sin, w) in &light.azimuths.circle {
             let b = fx * cos + fy * sin;
@@ -197,7 +205,7 @@ fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T;
         // about the rim's point nearest the foot, over the half towards the centre (u)
         let (ux, uy) = (-fx / rf, -fy / rf);
         let gap = rf - radius;
-        let above = Above { z, a1d, a2d, nd, off: (gap * ux, gap * uy) };
+        let above = Above::new(z, dirs, (gap * ux, gap * uy));
         for &(cos, sin, w) in &light.azimuths.half {
             let e = (cos * ux - sin * uy, cos * uy + sin * ux);
             sum = sum + w * radial(light, &above, e, (radius + radius) * cos);
@@ -208,7 +216,7 @@ fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T;
 
 /// `S(x)` of the parallelogram `p0 + u·eu + v·ev` (unit normal `n` along `eu × ev`, `a1 = eu/|eu|`,
 /// `a2 = n × a1`).
-fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], p0: [T; 3], (eu, ev): ([T; 3], [T; 3]), (n, a1, a2): ([T; 3], [T; 3], [T; 3])) -> T {
+fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], p0: [T; 3], (eu, ev): ([T; 3], [T; 3]), (n, a1, a2): Frame<T>) -> T {
     let rel = sub(x, p0);
     let z = dot(rel, n);
     if !(z > T::zero()) {
@@ -238,7 +246,7 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
         }
         best.1
     };
-    let above = Above { z, a1d: dot(a1, light.d), a2d: dot(a2, light.d), nd: dot(n, light.d), off: (q.0 - foot.0, q.1 - foot.1) };
+    let above = Above::new(z, [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)], (q.0 - foot.0, q.1 - foot.1));
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = T::epsilon() * det.abs();
     let mut sum = T::zero();
@@ -263,6 +271,15 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
     sum
 }
 
+/// The cap a sphere of radius `R` subtends from `x`: the unit direction `a` of its centre at
+/// distance `dc`, and `cos α = √(1 − (R/dc)²)`.
+struct Cap<T> {
+    a: [T; 3],
+    dc: T,
+    radius: T,
+    cos_a: T,
+}
+
 /// `S(x)` of a sphere (centre `c`, radius `R`); `0` inside it.
 fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], radius: T) -> T {
     let v = sub(c, x);
@@ -272,16 +289,16 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
     }
     let a = [v[0] / dc, v[1] / dc, v[2] / dc];
     let sin_a = radius / dc;
-    // a lobe whose direction falls inside the cap: polar about it instead
-    let cos_a = ((T::one() - sin_a) * (T::one() + sin_a)).sqrt();
+    let cap = Cap { a, dc, radius, cos_a: ((T::one() - sin_a) * (T::one() + sin_a)).sqrt() };
+    // a lobe whose direction falls inside the cap or near it: polar about it instead
     let alpha = sin_a.asin();
     for &(sign, scale) in light.lobes.iter().flatten() {
         let p = [sign * light.d[0], sign * light.d[1], sign * light.d[2]];
         let cos_p = dot(a, p);
         // a lobe narrower than the cap (κ < α), inside it or outside within LOBE_REACH scales of
         // its rim (and not beyond the great circle opposite the centre)
-        if scale < alpha + alpha && (cos_p > cos_a || (cos_p > -cos_a && cos_p.acos() - alpha < T::lit(LOBE_REACH) * scale)) {
-            return sphere_about_lobe(light, a, dc, radius, (p, sign), scale);
+        if scale < alpha + alpha && (cos_p > cap.cos_a || (cos_p > -cap.cos_a && cos_p.acos() - alpha < T::lit(LOBE_REACH) * scale)) {
+            return sphere_about_lobe(light, &cap, (p, sign, cos_p), scale);
         }
     }
     let (e1, e2) = basis(a);
@@ -324,18 +341,16 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
 /// to 6.0e-2 off with the cap rule, 3.9e-6 to 1.7e-5 with this).
 pub const LOBE_REACH: f64 = 8.0;
 
-/// `S(x)` of a sphere (seen from `x` in the unit direction `a` at distance `dc`) whose cap holds
-/// the direction `p = sign·d` of a phase lobe of radial scale `s` ([`lobes`]): polar about `p`,
+/// `S(x)` of a sphere whose [`Cap`] holds (or nearly) the direction `p = sign·d` of a phase lobe
+/// of radial scale `s` ([`lobes`]; `cos_p = a·p`): polar about `p`,
 /// `ω = cos θ p + sin θ (cos ψ u + sin ψ v)`, `θ = s tan γ` from 0 to the cap's rim in each `ψ`
 /// (`cos θ (a·p) + sin θ (a·e_ψ) = cos α`), Gauss–Legendre [`RADIAL`] in `γ` and [`AZIMUTHAL`]
 /// in `ψ`; the distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted cosine
 /// that root over `R`.
-fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, a: [T; 3], dc: T, radius: T, (p, sign): ([T; 3], T), scale: T) -> T {
+fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap: &Cap<T>, (p, sign, cos_p): ([T; 3], T, T), scale: T) -> T {
+    let Cap { a, dc, radius, cos_a } = *cap;
     let (u, v) = basis(p);
-    let cos_p = dot(a, p);
     let (au, av) = (dot(a, u), dot(a, v));
-    let sin_a = radius / dc;
-    let cos_a = ((T::one() - sin_a) * (T::one() + sin_a)).sqrt();
     let inside = cos_p > cos_a;
     // outside: the wedge of ψ that meets the cap, |ψ − ψ_a| ≤ Ψ with cos Ψ = √(cos²α − cos²β_p)/sin β_p,
     // taken as ψ = ψ_a + Ψ sin φ (the θ range closes like a square root at its edges)
@@ -371,6 +386,24 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, a: [
     sum
 }
 
+/// The emitter as `S` takes it, its frame formed once per ray.
+enum Shape<T> {
+    Disc { c: [T; 3], frame: Frame<T>, radius: T },
+    Parallelogram { p0: [T; 3], edges: ([T; 3], [T; 3]), frame: Frame<T> },
+    Sphere { c: [T; 3], radius: T },
+}
+
+impl<T: Real> Shape<T> {
+    /// `S(x)`.
+    fn radiance<P: PhaseFunction<T>>(&self, light: &Light<'_, T, P>, x: [T; 3]) -> T {
+        match *self {
+            Shape::Disc { c, frame, radius } => disc(light, x, c, frame, radius),
+            Shape::Parallelogram { p0, edges, frame } => parallelogram(light, x, p0, edges, frame),
+            Shape::Sphere { c, radius } => sphere(light, x, c, radius),
+        }
+    }
+}
+
 impl<T, P> AreaScene<T, P>
 where
     T: Real,
@@ -400,23 +433,25 @@ where
         let (t0, t1) = (self.ray.t_min, self.ray.t_max);
         let sigma_t = self.medium.sigma_t;
         let constant_phase = self.phase.is_isotropic().then(|| self.phase.eval(T::zero()));
-        let lobes = if constant_phase.is_some() { [None, None] } else { lobes(&self.phase) };
-        let light = Light { d, sigma_t, radiance: self.light.radiance, power: self.light.emission.power(), phase: &self.phase, constant_phase, lobes, azimuths: Azimuths::new() };
-        // the emitter's centre and size, and where the ray's integrand changes its form
+        let light = Light { d, sigma_t, radiance: self.light.radiance, power: self.light.emission.power(), phase: &self.phase, constant_phase, lobes: lobes(&self.phase), azimuths: Azimuths::new() };
+        // the emitter, its centre and size, and where the ray's integrand changes its form
         let mut cuts = [T::nan(); 2];
-        let (centre, size) = match self.light.emitter {
+        let (shape, centre, size) = match self.light.emitter {
             Emitter::Disc { center, normal, radius } => {
                 let (c, n) = (T::vec3_to_array(center), normalize(T::vec3_to_array(normal)));
                 cuts[0] = dot(sub(c, o), n) / dot(d, n);
-                (c, radius)
+                let (a1, a2) = basis(n);
+                (Shape::Disc { c, frame: (n, a1, a2), radius }, c, radius)
             }
             Emitter::Rectangle { corner, edge_u, edge_v } => {
                 let (p0, eu, ev) = (T::vec3_to_array(corner), T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
                 let n = normalize(cross(eu, ev));
                 cuts[0] = dot(sub(p0, o), n) / dot(d, n);
                 let half = T::lit(0.5);
-                let c = [p0[0] + half * (eu[0] + ev[0]), p0[1] + half * (eu[1] + ev[1]), p0[2] + half * (eu[2] + ev[2])];
-                (c, half * length([eu[0] + ev[0], eu[1] + ev[1], eu[2] + ev[2]]).max(length(sub(eu, ev))))
+                let diagonal = [eu[0] + ev[0], eu[1] + ev[1], eu[2] + ev[2]];
+                let a1 = normalize(eu);
+                let shape = Shape::Parallelogram { p0, edges: (eu, ev), frame: (n, a1, cross(n, a1)) };
+                (shape, axpy(p0, half, diagonal), half * length(diagonal).max(length(sub(eu, ev))))
             }
             Emitter::Sphere { center, radius } => {
                 let c = T::vec3_to_array(center);
@@ -428,7 +463,7 @@ where
                     let q = -b - disc.sqrt().copysign(b);
                     cuts = [q, k / q];
                 }
-                (c, radius)
+                (Shape::Sphere { c, radius }, c, radius)
             }
         };
         if !(size > T::zero()) {
@@ -439,55 +474,17 @@ where
         let h_eff = h.hypot(size);
         // past the emitter's far side the extinction from t0 has grown by −ln ε more than
         // anywhere it is seen from nearer
-        let start = [o[0] + t0 * d[0], o[1] + t0 * d[1], o[2] + t0 * d[2]];
-        let t_end = if sigma_t > T::zero() { t1.min(t0 + length(sub(centre, start)) + size - T::epsilon().ln() / sigma_t) } else { t1 };
+        let t_end = if sigma_t > T::zero() { t1.min(t0 + length(sub(centre, axpy(o, t0, d))) + size - T::epsilon().ln() / sigma_t) } else { t1 };
         let theta = |t: T| if t.is_finite() { (t - x_h).atan2(h_eff) } else { T::FRAC_PI_2() };
-        let mut edges = [T::zero(); 5];
-        let mut count = 0;
-        for t in [t0, x_h, cuts[0], cuts[1], t_end] {
-            if t >= t0 && t <= t_end {
-                edges[count] = theta(t);
-                count += 1;
-            }
-        }
-        // sorted (at most five)
-        for i in 1..count {
-            let mut j = i;
-            while j > 0 && edges[j - 1] > edges[j] {
-                edges.swap(j - 1, j);
-                j -= 1;
-            }
-        }
-        let emitter = self.light.emitter;
-        let frame = |n: [T; 3]| {
-            let (a1, a2) = basis(n);
-            (n, a1, a2)
-        };
-        let (disc_frame, parallelogram_frame) = match emitter {
-            Emitter::Disc { normal, .. } => (frame(normalize(T::vec3_to_array(normal))), ([T::zero(); 3], [T::zero(); 3], [T::zero(); 3])),
-            Emitter::Rectangle { edge_u, edge_v, .. } => {
-                let (eu, ev) = (T::vec3_to_array(edge_u), T::vec3_to_array(edge_v));
-                let n = normalize(cross(eu, ev));
-                let a1 = normalize(eu);
-                (([T::zero(); 3], [T::zero(); 3], [T::zero(); 3]), (n, a1, cross(n, a1)))
-            }
-            Emitter::Sphere { .. } => (([T::zero(); 3], [T::zero(); 3], [T::zero(); 3]), ([T::zero(); 3], [T::zero(); 3], [T::zero(); 3])),
-        };
+        // the cuts within the segment (outside it, or none: its start, which the edges skip)
+        let mut inside = [x_h, cuts[0], cuts[1]].map(|t| theta(if t >= t0 && t <= t_end { t } else { t0 }));
+        let (edges, n): ([T; 5], usize) = edges_between(theta(t0), theta(t_end), &mut inside);
         let mut integrand = |th: T| {
             let (s, c) = sin_cos_turns(th);
             let t = x_h + h_eff * s / c;
-            let x = [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
-            let radiance = match emitter {
-                Emitter::Disc { radius, .. } => disc(&light, x, centre, disc_frame, radius),
-                Emitter::Rectangle { corner, edge_u, edge_v } => parallelogram(&light, x, T::vec3_to_array(corner), (T::vec3_to_array(edge_u), T::vec3_to_array(edge_v)), parallelogram_frame),
-                Emitter::Sphere { radius, .. } => sphere(&light, x, centre, radius),
-            };
-            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * radiance
+            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * shape.radiance(&light, axpy(o, t, d))
         };
-        if count < 2 {
-            return (T::zero(), 0);
-        }
-        let (value, panels) = adaptive(&GAUSS_KRONROD_15, &mut integrand, &edges[..count], tolerance, max_panels);
+        let (value, panels) = adaptive(&GAUSS_KRONROD_15, &mut integrand, &edges[..=n], tolerance, max_panels);
         (self.medium.sigma_s * value, panels)
     }
 }
