@@ -172,9 +172,10 @@ impl<R: BufRead> Lines<R> {
 /// Runs `eval` on the GPU: every record is parsed and checked as on the CPU (bad lines get
 /// the same error lines), the valid ones are packed and run through the compute shader in
 /// one batch after the input ends — through the library's point-light entry
-/// (`airlight_shaders::targets::point_compute_wgsl`) when every one is a point light.
+/// (`airlight_shaders::targets::point_compute_wgsl`) when every one is a point light, area lights
+/// in a batch of their own through the area entry (`area_compute_wgsl`).
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
-    use airlight_shaders::layout::{pack, pack_segment, pack_surface, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
+    use airlight_shaders::layout::{pack, pack_area, pack_segment, pack_surface, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
     // per input line: its "id" and its error line, or the output key of a packed record
     let mut lines: Vec<(Option<serde_json::Value>, Result<Option<&str>, String>)> = Vec::new();
     let mut records = Vec::new();
@@ -191,8 +192,9 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
                 records.extend_from_slice(&pack_segment(&r));
                 lines.push((id, Ok(None)));
             }
-            Ok((id, Ok(AnyRecord::Area(_)))) => {
-                lines.push((id, Err(format_error(n, "light.shape: area lights are evaluated on the CPU backend (the shader library has point and segment lights)"))))
+            Ok((id, Ok(AnyRecord::Area(r)))) => {
+                records.extend_from_slice(&pack_area(&r));
+                lines.push((id, Ok(None)));
             }
             Ok((id, Ok(AnyRecord::Surface(r)))) => match pack_surface(&r) {
                 Some(record) => {
@@ -213,15 +215,22 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
     } else {
         let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
         let terms = opts.terms.unwrap_or(airlight::SHADER_NODES);
-        // point lights alone: the library's point entry, without the segment and surface loop
-        let point_shader;
-        let shader = if points * RECORD_SIZE == records.len() {
-            point_shader = airlight_shaders::targets::point_compute_wgsl(terms);
-            point_shader.as_str()
+        let run = |shader: &str, records: &[u8]| gpu.run(airlight_shaders::gpu::Shader::Wgsl(shader), records, true).map_err(EvalError::Gpu);
+        // area lights through their own entry, the rest through the full entry — or, point
+        // lights alone, the library's point entry, without the segment and surface loop
+        let is_area = |r: &[u8]| airlight_shaders::layout::Record::from_bytes(r).light_shape >= airlight_shaders::layout::SHAPE_DISC;
+        let (area, rest): (Vec<&[u8]>, Vec<&[u8]>) = records.chunks(RECORD_SIZE).partition(|r| is_area(r));
+        let area_results = if area.is_empty() { Vec::new() } else { run(&airlight_shaders::targets::area_compute_wgsl(terms), &area.concat())? };
+        let rest_results = if rest.is_empty() {
+            Vec::new()
+        } else if points * RECORD_SIZE == records.len() {
+            run(&airlight_shaders::targets::point_compute_wgsl(terms), &rest.concat())?
         } else {
-            airlight_shaders::targets::compute_wgsl(terms)
+            run(airlight_shaders::targets::compute_wgsl(terms), &rest.concat())?
         };
-        gpu.run(airlight_shaders::gpu::Shader::Wgsl(shader), &records, true).map_err(EvalError::Gpu)?
+        // back in the input's order
+        let (mut a, mut b) = (area_results.chunks(RESULT_SIZE), rest_results.chunks(RESULT_SIZE));
+        records.chunks(RECORD_SIZE).flat_map(|r| if is_area(r) { a.next() } else { b.next() }.unwrap_or(&[]).to_vec()).collect()
     };
     let mut k = 0;
     for (id, l) in lines {

@@ -62,7 +62,7 @@ absent isotropic. Any other key is an error (with a suggestion when it is close 
 `dir` need not be unit length (it is normalised); t_min and t_max are world distances.
 A segment light (CPU default path, or --backend gpu): \"light\": {\"shape\": \"segment\", \"a\": [x,y,z],
 \"b\": [x,y,z], \"intensity\": I, \"distribution\": {...}}, every point emitting I per unit length.
-Area lights of uniform radiance L (CPU backend): \"light\": {\"shape\": \"disc\", \"center\": [x,y,z],
+Area lights of uniform radiance L (CPU default path; --backend gpu: the bounded method): \"light\": {\"shape\": \"disc\", \"center\": [x,y,z],
 \"normal\": [x,y,z], \"radius\": R, \"radiance\": L} or {\"shape\": \"rectangle\", \"corner\": [x,y,z],
 \"edge_u\": [x,y,z], \"edge_v\": [x,y,z], \"radiance\": L} (emitting on the side of edge_u x edge_v)
 or {\"shape\": \"sphere\", \"center\": [x,y,z], \"radius\": R, \"radiance\": L}; each may add

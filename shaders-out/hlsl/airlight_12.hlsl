@@ -84,6 +84,14 @@ struct AirlightListScan {
     uint worst;
 };
 
+struct AirlightSplit {
+    bool split;
+    float lo;
+    float mid;
+    float hi;
+    uint slot;
+};
+
 struct AirlightOuter {
     float3 a;
     int _pad1_0;
@@ -168,6 +176,9 @@ static const uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 static const uint AIRLIGHT_LIGHT_SPOT = 2u;
 static const uint AIRLIGHT_SHAPE_POINT = 0u;
 static const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
+static const uint AIRLIGHT_SHAPE_DISC = 2u;
+static const uint AIRLIGHT_SHAPE_RECTANGLE = 3u;
+static const uint AIRLIGHT_SHAPE_SPHERE = 4u;
 static const uint AIRLIGHT_SURFACE_NONE = 0u;
 static const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
 static const uint AIRLIGHT_SURFACE_PHONG = 2u;
@@ -183,12 +194,16 @@ static const float AIRLIGHT_E1_INV_RE = 0.7692308;
 static const float AIRLIGHT_E1_INV_IM = 0.47619048;
 static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
+static const uint AIRLIGHT_EMISSION_MAX_POWER = 1024u;
 static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 static const uint AIRLIGHT_SURFACE_PANELS = 6u;
 static const uint AIRLIGHT_PHONG_PANELS = 16u;
 static const uint AIRLIGHT_OUTER_EDGES = 13u;
 static const uint AIRLIGHT_LOBE_PAIRS = 5u;
 static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
+static const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
+static const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
+static const float AIRLIGHT_LOBE_REACH = 8.0;
 
 ByteAddressBuffer airlight_records : register(t0);
 RWByteAddressBuffer airlight_results : register(u1);
@@ -4456,6 +4471,20 @@ bool airlight_valid(AirlightScene s_16)
     bool local_106 = (bool)0;
     bool local_107 = (bool)0;
     bool local_108 = (bool)0;
+    bool local_109 = (bool)0;
+    bool local_110 = (bool)0;
+    bool local_111 = (bool)0;
+    bool local_112 = (bool)0;
+    bool local_113 = (bool)0;
+    bool local_114 = (bool)0;
+    bool local_115 = (bool)0;
+    bool local_116 = (bool)0;
+    bool local_117 = (bool)0;
+    bool local_118 = (bool)0;
+    bool local_119 = (bool)0;
+    bool local_120 = (bool)0;
+    bool local_121 = (bool)0;
+    bool local_122 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_16.origin);
     if (_e2) {
@@ -4554,82 +4583,192 @@ bool airlight_valid(AirlightScene s_16)
         bool _e95 = local_83;
         ok = _e95;
     } else {
-        if ((s_16.light_shape != AIRLIGHT_SHAPE_POINT)) {
-            ok = false;
+        if ((s_16.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+            local_84 = (s_16.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_84 = false;
+        }
+        bool _e105 = local_84;
+        if (_e105) {
+            bool _e106 = ok;
+            if (_e106) {
+                local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+            } else {
+                local_85 = false;
+            }
+            bool _e113 = local_85;
+            if (_e113) {
+                local_86 = (s_16.light_param_b >= 1.0);
+            } else {
+                local_86 = false;
+            }
+            bool _e120 = local_86;
+            if (_e120) {
+                local_87 = (s_16.light_param_b <= 1024.0);
+            } else {
+                local_87 = false;
+            }
+            bool _e127 = local_87;
+            if (_e127) {
+                local_88 = (frac(s_16.light_param_b) == 0.0);
+            } else {
+                local_88 = false;
+            }
+            bool _e135 = local_88;
+            ok = _e135;
+            if ((s_16.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
+                bool _e139 = ok;
+                if (_e139) {
+                    const bool _e143 = airlight_vec_finite(s_16.light_axis);
+                    local_89 = _e143;
+                } else {
+                    local_89 = false;
+                }
+                bool _e145 = local_89;
+                if (_e145) {
+                    const bool _e149 = airlight_normalisable(s_16.light_axis);
+                    local_90 = _e149;
+                } else {
+                    local_90 = false;
+                }
+                bool _e151 = local_90;
+                if (_e151) {
+                    const bool _e155 = airlight_vec_finite(s_16.light_end);
+                    local_91 = _e155;
+                } else {
+                    local_91 = false;
+                }
+                bool _e157 = local_91;
+                if (_e157) {
+                    const bool _e161 = airlight_normalisable(s_16.light_end);
+                    local_92 = _e161;
+                } else {
+                    local_92 = false;
+                }
+                bool _e163 = local_92;
+                if (_e163) {
+                    const float3 _e167 = airlight_normalize(s_16.light_axis);
+                    const float3 _e169 = airlight_normalize(s_16.light_end);
+                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_93 = false;
+                }
+                bool _e175 = local_93;
+                ok = _e175;
+            } else {
+                bool _e176 = ok;
+                if (_e176) {
+                    const bool _e180 = airlight_is_finite(s_16.light_param_a);
+                    local_94 = _e180;
+                } else {
+                    local_94 = false;
+                }
+                bool _e182 = local_94;
+                if (_e182) {
+                    local_95 = (s_16.light_param_a >= 0.0);
+                } else {
+                    local_95 = false;
+                }
+                bool _e189 = local_95;
+                ok = _e189;
+                if ((s_16.light_shape == AIRLIGHT_SHAPE_DISC)) {
+                    bool _e193 = ok;
+                    if (_e193) {
+                        const bool _e197 = airlight_vec_finite(s_16.light_axis);
+                        local_96 = _e197;
+                    } else {
+                        local_96 = false;
+                    }
+                    bool _e199 = local_96;
+                    if (_e199) {
+                        const bool _e203 = airlight_normalisable(s_16.light_axis);
+                        local_97 = _e203;
+                    } else {
+                        local_97 = false;
+                    }
+                    bool _e205 = local_97;
+                    ok = _e205;
+                }
+            }
+        } else {
+            if ((s_16.light_shape != AIRLIGHT_SHAPE_POINT)) {
+                ok = false;
+            }
         }
     }
     if (!((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_84 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_98 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_84 = true;
+        local_98 = true;
     }
-    bool _e110 = local_84;
-    if (_e110) {
-        bool _e111 = ok;
-        if (_e111) {
-            const bool _e115 = airlight_is_finite(s_16.brdf_scale);
-            local_85 = _e115;
+    bool _e220 = local_98;
+    if (_e220) {
+        bool _e221 = ok;
+        if (_e221) {
+            const bool _e225 = airlight_is_finite(s_16.brdf_scale);
+            local_99 = _e225;
         } else {
-            local_85 = false;
+            local_99 = false;
         }
-        bool _e117 = local_85;
-        if (_e117) {
-            local_86 = (s_16.brdf_scale >= 0.0);
+        bool _e227 = local_99;
+        if (_e227) {
+            local_100 = (s_16.brdf_scale >= 0.0);
         } else {
-            local_86 = false;
+            local_100 = false;
         }
-        bool _e124 = local_86;
-        if (_e124) {
-            local_87 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+        bool _e234 = local_100;
+        if (_e234) {
+            local_101 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_87 = false;
+            local_101 = false;
         }
-        bool _e131 = local_87;
-        if (_e131) {
-            local_88 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e241 = local_101;
+        if (_e241) {
+            local_102 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_88 = false;
+            local_102 = false;
         }
-        bool _e138 = local_88;
-        if (_e138) {
-            const float _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
-            const bool _e145 = airlight_is_finite(_e144);
-            local_89 = _e145;
+        bool _e248 = local_102;
+        if (_e248) {
+            const float _e254 = airlight_safe_length((s_16.light_position - s_16.origin));
+            const bool _e255 = airlight_is_finite(_e254);
+            local_103 = _e255;
         } else {
-            local_89 = false;
+            local_103 = false;
         }
-        bool _e147 = local_89;
-        ok = _e147;
+        bool _e257 = local_103;
+        ok = _e257;
         if ((s_16.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-            bool _e151 = ok;
-            if (_e151) {
-                const bool _e155 = airlight_is_finite(s_16.brdf_exponent);
-                local_90 = _e155;
+            bool _e261 = ok;
+            if (_e261) {
+                const bool _e265 = airlight_is_finite(s_16.brdf_exponent);
+                local_104 = _e265;
             } else {
-                local_90 = false;
+                local_104 = false;
             }
-            bool _e157 = local_90;
-            if (_e157) {
-                local_91 = (s_16.brdf_exponent >= 0.0);
+            bool _e267 = local_104;
+            if (_e267) {
+                local_105 = (s_16.brdf_exponent >= 0.0);
             } else {
-                local_91 = false;
+                local_105 = false;
             }
-            bool _e164 = local_91;
-            if (_e164) {
-                const bool _e168 = airlight_vec_finite(s_16.brdf_view);
-                local_92 = _e168;
+            bool _e274 = local_105;
+            if (_e274) {
+                const bool _e278 = airlight_vec_finite(s_16.brdf_view);
+                local_106 = _e278;
             } else {
-                local_92 = false;
+                local_106 = false;
             }
-            bool _e170 = local_92;
-            if (_e170) {
-                const bool _e174 = airlight_normalisable(s_16.brdf_view);
-                local_93 = _e174;
+            bool _e280 = local_106;
+            if (_e280) {
+                const bool _e284 = airlight_normalisable(s_16.brdf_view);
+                local_107 = _e284;
             } else {
-                local_93 = false;
+                local_107 = false;
             }
-            bool _e176 = local_93;
-            ok = _e176;
+            bool _e286 = local_107;
+            ok = _e286;
         }
     } else {
         if ((s_16.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -4637,76 +4776,76 @@ bool airlight_valid(AirlightScene s_16)
         }
     }
     if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e184 = ok;
-        if (_e184) {
-            const bool _e188 = airlight_vec_finite(s_16.light_axis);
-            local_94 = _e188;
+        bool _e294 = ok;
+        if (_e294) {
+            const bool _e298 = airlight_vec_finite(s_16.light_axis);
+            local_108 = _e298;
         } else {
-            local_94 = false;
+            local_108 = false;
         }
-        bool _e190 = local_94;
-        if (_e190) {
-            const bool _e194 = airlight_normalisable(s_16.light_axis);
-            local_95 = _e194;
+        bool _e300 = local_108;
+        if (_e300) {
+            const bool _e304 = airlight_normalisable(s_16.light_axis);
+            local_109 = _e304;
         } else {
-            local_95 = false;
+            local_109 = false;
         }
-        bool _e196 = local_95;
-        if (_e196) {
-            local_96 = (s_16.light_param_a >= 0.0);
+        bool _e306 = local_109;
+        if (_e306) {
+            local_110 = (s_16.light_param_a >= 0.0);
         } else {
-            local_96 = false;
+            local_110 = false;
         }
-        bool _e203 = local_96;
-        if (_e203) {
-            local_97 = (s_16.light_param_a <= 1024.0);
+        bool _e313 = local_110;
+        if (_e313) {
+            local_111 = (s_16.light_param_a <= 1024.0);
         } else {
-            local_97 = false;
+            local_111 = false;
         }
-        bool _e210 = local_97;
-        if (_e210) {
-            local_98 = (frac((s_16.light_param_a * 0.5)) == 0.0);
+        bool _e320 = local_111;
+        if (_e320) {
+            local_112 = (frac((s_16.light_param_a * 0.5)) == 0.0);
         } else {
-            local_98 = false;
+            local_112 = false;
         }
-        bool _e220 = local_98;
-        ok = _e220;
+        bool _e330 = local_112;
+        ok = _e330;
     } else {
         if ((s_16.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e224 = ok;
-            if (_e224) {
-                const bool _e228 = airlight_vec_finite(s_16.light_axis);
-                local_99 = _e228;
+            bool _e334 = ok;
+            if (_e334) {
+                const bool _e338 = airlight_vec_finite(s_16.light_axis);
+                local_113 = _e338;
             } else {
-                local_99 = false;
+                local_113 = false;
             }
-            bool _e230 = local_99;
-            if (_e230) {
-                const bool _e234 = airlight_normalisable(s_16.light_axis);
-                local_100 = _e234;
+            bool _e340 = local_113;
+            if (_e340) {
+                const bool _e344 = airlight_normalisable(s_16.light_axis);
+                local_114 = _e344;
             } else {
-                local_100 = false;
+                local_114 = false;
             }
-            bool _e236 = local_100;
-            if (_e236) {
-                local_101 = (s_16.light_param_b < s_16.light_param_a);
+            bool _e346 = local_114;
+            if (_e346) {
+                local_115 = (s_16.light_param_b < s_16.light_param_a);
             } else {
-                local_101 = false;
+                local_115 = false;
             }
-            bool _e243 = local_101;
-            if (_e243) {
-                local_102 = (s_16.light_param_b >= -1.0);
+            bool _e353 = local_115;
+            if (_e353) {
+                local_116 = (s_16.light_param_b >= -1.0);
             } else {
-                local_102 = false;
+                local_116 = false;
             }
-            bool _e250 = local_102;
-            if (_e250) {
-                local_103 = (s_16.light_param_a <= 1.0);
+            bool _e360 = local_116;
+            if (_e360) {
+                local_117 = (s_16.light_param_a <= 1.0);
             } else {
-                local_103 = false;
+                local_117 = false;
             }
-            bool _e257 = local_103;
-            ok = _e257;
+            bool _e367 = local_117;
+            ok = _e367;
         } else {
             if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -4722,43 +4861,43 @@ bool airlight_valid(AirlightScene s_16)
         case 2u:
         case 3u:
         case 4u: {
-            bool _e267 = ok;
-            if (_e267) {
-                local_104 = g_ok;
+            bool _e377 = ok;
+            if (_e377) {
+                local_118 = g_ok;
             } else {
-                local_104 = false;
+                local_118 = false;
             }
-            bool _e271 = local_104;
-            ok = _e271;
+            bool _e381 = local_118;
+            ok = _e381;
             break;
         }
         case 5u: {
-            bool _e272 = ok;
-            if (_e272) {
-                local_105 = g_ok;
+            bool _e382 = ok;
+            if (_e382) {
+                local_119 = g_ok;
             } else {
-                local_105 = false;
+                local_119 = false;
             }
-            bool _e276 = local_105;
-            if (_e276) {
-                local_106 = (abs(s_16.phase_param_b) < 1.0);
+            bool _e386 = local_119;
+            if (_e386) {
+                local_120 = (abs(s_16.phase_param_b) < 1.0);
             } else {
-                local_106 = false;
+                local_120 = false;
             }
-            bool _e284 = local_106;
-            if (_e284) {
-                local_107 = (s_16.phase_param_c >= 0.0);
+            bool _e394 = local_120;
+            if (_e394) {
+                local_121 = (s_16.phase_param_c >= 0.0);
             } else {
-                local_107 = false;
+                local_121 = false;
             }
-            bool _e291 = local_107;
-            if (_e291) {
-                local_108 = (s_16.phase_param_c <= 1.0);
+            bool _e401 = local_121;
+            if (_e401) {
+                local_122 = (s_16.phase_param_c <= 1.0);
             } else {
-                local_108 = false;
+                local_122 = false;
             }
-            bool _e298 = local_108;
-            ok = _e298;
+            bool _e408 = local_122;
+            ok = _e408;
             break;
         }
         default: {
@@ -4766,8 +4905,8 @@ bool airlight_valid(AirlightScene s_16)
             break;
         }
     }
-    bool _e300 = ok;
-    return _e300;
+    bool _e410 = ok;
+    return _e410;
 }
 
 AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -4850,30 +4989,30 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_109 = (bool)0;
-    bool local_110 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_110 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_110 = false;
+            local_124 = false;
         }
-        bool _e21 = local_110;
-        local_109 = _e21;
+        bool _e21 = local_124;
+        local_123 = _e21;
     } else {
-        local_109 = true;
+        local_123 = true;
     }
-    bool _e23 = local_109;
+    bool _e23 = local_123;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
 {
-    bool local_111 = (bool)0;
+    bool local_125 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_112 = (bool)0;
+    bool local_126 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_18.flags > 1u));
@@ -4886,11 +5025,11 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     const bool _e33 = airlight_in_exact_range(hi_4);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
-        local_111 = !(_e38);
+        local_125 = !(_e38);
     } else {
-        local_111 = true;
+        local_125 = true;
     }
-    bool _e41 = local_111;
+    bool _e41 = local_125;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -4917,11 +5056,11 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_112 = (h_7 > 0.0);
+        local_126 = (h_7 > 0.0);
     } else {
-        local_112 = false;
+        local_126 = false;
     }
-    bool _e101 = local_112;
+    bool _e101 = local_126;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -5274,6 +5413,78 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
     return airlightlistscan;
 }
 
+AirlightSplit ConstructAirlightSplit(bool arg0, float arg1, float arg2, float arg3, uint arg4) {
+    AirlightSplit ret = (AirlightSplit)0;
+    ret.split = arg0;
+    ret.lo = arg1;
+    ret.mid = arg2;
+    ret.hi = arg3;
+    ret.slot = arg4;
+    return ret;
+}
+
+AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance)
+{
+    uint tries = 0u;
+    bool local_127 = (bool)0;
+    bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
+
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
+    while(true) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e57 = tries;
+            tries = (_e57 + 1u);
+        }
+        loop_init_22 = false;
+        uint _e6 = tries;
+        if ((_e6 < max_panels)) {
+        } else {
+            break;
+        }
+        {
+            AirlightPanelList _e8 = list_1;
+            const AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
+            if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
+                local_127 = (count_2 == max_panels);
+            } else {
+                local_127 = true;
+            }
+            bool _e21 = local_127;
+            if (!(_e21)) {
+                const bool _e26 = airlight_is_finite(_e9.total);
+                local_128 = !(_e26);
+            } else {
+                local_128 = true;
+            }
+            bool _e29 = local_128;
+            if (_e29) {
+                break;
+            }
+            AirlightPanelList _e30 = list_1;
+            const float4 _e32 = airlight_list_get(_e30, _e9.worst);
+            float mid_1 = (0.5 * (_e32.x + _e32.y));
+            if ((mid_1 > _e32.x)) {
+                local_129 = (mid_1 < _e32.y);
+            } else {
+                local_129 = false;
+            }
+            bool _e45 = local_129;
+            if (!(_e45)) {
+                airlight_list_set(list_1, _e9.worst, float4(_e32.xyz, 0.0));
+                continue;
+            }
+            const AirlightSplit airlightsplit = ConstructAirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+            return airlightsplit;
+        }
+    }
+    const AirlightSplit airlightsplit_1 = ConstructAirlightSplit(false, 0.0, 0.0, 0.0, 0u);
+    return airlightsplit_1;
+}
+
 float airlight_asinh(float x_15)
 {
     float r_4 = (float)0;
@@ -5357,10 +5568,10 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels)
+AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels_1)
 {
     float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_1, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
     return airlightouter;
 }
 
@@ -5379,33 +5590,33 @@ airlight_ret_Constructarray6_float_ airlight_Constructarray6_float_(float arg0, 
 AirlightOuter airlight_surface(AirlightScene s_22)
 {
     AirlightOuter g_20 = (AirlightOuter)0;
-    bool local_113 = (bool)0;
+    bool local_130 = (bool)0;
     float3 u_1 = (float3)0;
     float cuts_1[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_18 = 1u;
     uint j_4 = (uint)0;
-    bool local_114 = (bool)0;
+    bool local_131 = (bool)0;
     uint k_4 = 0u;
     uint i_19 = 0u;
-    bool local_115 = (bool)0;
+    bool local_132 = (bool)0;
     uint i_20 = 0u;
     uint i_21 = 1u;
-    bool local_116 = (bool)0;
-    bool local_117 = (bool)0;
-    bool local_118 = (bool)0;
-    bool local_119 = (bool)0;
-    bool local_120 = (bool)0;
+    bool local_133 = (bool)0;
+    bool local_134 = (bool)0;
+    bool local_135 = (bool)0;
+    bool local_136 = (bool)0;
+    bool local_137 = (bool)0;
 
     const AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     float3 to_light_1 = (s_22.light_position - s_22.origin);
     const float _e7 = airlight_safe_length(to_light_1);
     if (!((s_22.intensity == 0.0))) {
-        local_113 = (s_22.sigma_s == 0.0);
+        local_130 = (s_22.sigma_s == 0.0);
     } else {
-        local_113 = true;
+        local_130 = true;
     }
-    bool _e18 = local_113;
+    bool _e18 = local_130;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -5503,16 +5714,16 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     float _e218 = cuts_1[9];
     float _e220 = cuts_1[10];
     float kinks[6] = airlight_Constructarray6_float_(_e210, _e212, _e214, _e216, _e218, _e220);
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
             uint _e258 = i_18;
             i_18 = (_e258 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e224 = i_18;
         if ((_e224 < 11u)) {
         } else {
@@ -5523,19 +5734,19 @@ AirlightOuter airlight_surface(AirlightScene s_22)
             float c_10 = cuts_1[min(uint(_e227), 10u)];
             uint _e230 = i_18;
             j_4 = _e230;
-            uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
             while(true) {
-                if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 uint _e232 = j_4;
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_1[min(uint((_e237 - 1u)), 10u)];
-                    local_114 = (_e241 > c_10);
+                    local_131 = (_e241 > c_10);
                 } else {
-                    local_114 = false;
+                    local_131 = false;
                 }
-                bool _e244 = local_114;
+                bool _e244 = local_131;
                 if (_e244) {
                 } else {
                     break;
@@ -5555,16 +5766,16 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     }
     float hi_5 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
     g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
-    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
             uint _e305 = i_19;
             i_19 = (_e305 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_24 = false;
         uint _e276 = i_19;
         if ((_e276 < 11u)) {
         } else {
@@ -5578,11 +5789,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
             if ((_e281 > _e285)) {
                 uint _e289 = i_19;
                 float _e291 = cuts_1[min(uint(_e289), 10u)];
-                local_115 = (_e291 < hi_5);
+                local_132 = (_e291 < hi_5);
             } else {
-                local_115 = false;
+                local_132 = false;
             }
-            bool _e294 = local_115;
+            bool _e294 = local_132;
             if (_e294) {
                 uint _e295 = k_4;
                 k_4 = (_e295 + 1u);
@@ -5597,16 +5808,16 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     g_20.gamma[min(uint((_e308 + 1u)), 12u)] = hi_5;
     uint _e313 = k_4;
     g_20.panels = (_e313 + 1u);
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e328 = i_20;
             i_20 = (_e328 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e318 = i_20;
         uint _e320 = g_20.panels;
         if ((_e318 <= _e320)) {
@@ -5620,16 +5831,16 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         }
     }
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-        uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-        bool loop_init_25 = true;
+        uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+        bool loop_init_26 = true;
         while(true) {
-            if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_25) {
+            if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+            loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+            if (!loop_init_26) {
                 uint _e388 = i_21;
                 i_21 = (_e388 + 1u);
             }
-            loop_init_25 = false;
+            loop_init_26 = false;
             uint _e335 = i_21;
             uint _e336 = k_4;
             if ((_e335 <= _e336)) {
@@ -5640,35 +5851,35 @@ AirlightOuter airlight_surface(AirlightScene s_22)
                 uint _e339 = i_21;
                 float e_4 = g_20.gamma[min(uint(_e339), 12u)];
                 if (!((e_4 == kinks[0]))) {
-                    local_116 = (e_4 == kinks[1]);
+                    local_133 = (e_4 == kinks[1]);
                 } else {
-                    local_116 = true;
+                    local_133 = true;
                 }
-                bool _e350 = local_116;
+                bool _e350 = local_133;
                 if (!(_e350)) {
-                    local_117 = (e_4 == kinks[2]);
+                    local_134 = (e_4 == kinks[2]);
                 } else {
-                    local_117 = true;
+                    local_134 = true;
                 }
-                bool _e357 = local_117;
+                bool _e357 = local_134;
                 if (!(_e357)) {
-                    local_118 = (e_4 == kinks[3]);
+                    local_135 = (e_4 == kinks[3]);
                 } else {
-                    local_118 = true;
+                    local_135 = true;
                 }
-                bool _e364 = local_118;
+                bool _e364 = local_135;
                 if (!(_e364)) {
-                    local_119 = (e_4 == kinks[4]);
+                    local_136 = (e_4 == kinks[4]);
                 } else {
-                    local_119 = true;
+                    local_136 = true;
                 }
-                bool _e371 = local_119;
+                bool _e371 = local_136;
                 if (!(_e371)) {
-                    local_120 = (e_4 == kinks[5]);
+                    local_137 = (e_4 == kinks[5]);
                 } else {
-                    local_120 = true;
+                    local_137 = true;
                 }
-                bool kink = local_120;
+                bool kink = local_137;
                 uint _e380 = g_20.smooth_edges;
                 uint _e382 = i_21;
                 g_20.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
@@ -5682,7 +5893,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18)
 {
-    bool local_121 = (bool)0;
+    bool local_138 = (bool)0;
 
     const float2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
@@ -5693,11 +5904,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18)
     float clip_ = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_121 = (clip_ > 0.0);
+        local_138 = (clip_ > 0.0);
     } else {
-        local_121 = false;
+        local_138 = false;
     }
-    bool _e43 = local_121;
+    bool _e43 = local_138;
     if (_e43) {
         const float _e47 = airlight_log1p(-(fall));
         return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5718,7 +5929,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w, float u_2, bool 
 float airlight_arc_end(float x_19, float cut)
 {
     float end = (float)0;
-    bool local_122 = (bool)0;
+    bool local_139 = (bool)0;
 
     end = x_19;
     float _e3 = end;
@@ -5735,11 +5946,11 @@ float airlight_arc_end(float x_19, float cut)
     float _e16 = end;
     if ((_e16 > -(cut))) {
         float _e21 = end;
-        local_122 = (_e21 < cut);
+        local_139 = (_e21 < cut);
     } else {
-        local_122 = false;
+        local_139 = false;
     }
-    bool _e24 = local_122;
+    bool _e24 = local_139;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5757,32 +5968,32 @@ airlight_ret_airlight_lobe_rule airlight_lobe_rule()
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
 {
-    bool local_123 = (bool)0;
+    bool local_140 = (bool)0;
     float sum_5 = 0.0;
     uint k_5 = 0u;
 
     float w_6 = (hi_3 - lo_4);
     if (!(!((w_6 > 0.0)))) {
         const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_6)));
-        local_123 = !((_e14 > 0.0));
+        local_140 = !((_e14 > 0.0));
     } else {
-        local_123 = true;
+        local_140 = true;
     }
-    bool _e19 = local_123;
+    bool _e19 = local_140;
     if (_e19) {
         return 0.0;
     }
     const float2 _e21[5] = airlight_lobe_rule();
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e43 = k_5;
             k_5 = (_e43 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e26 = k_5;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
@@ -5855,16 +6066,16 @@ float airlight_lobe_arcs(AirlightOuter g_21, float2 cs, float gamma, float psi_n
     float _e90 = inner.y;
     float edges[4] = airlight_Constructarray4_float_(0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent < 1.0);
-    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e112 = i_22;
             i_22 = (_e112 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e99 = i_22;
         if ((_e99 < 3u)) {
         } else {
@@ -5891,33 +6102,33 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
 AirlightOuter airlight_outer(AirlightScene s_23)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_124 = (bool)0;
-    bool local_125 = (bool)0;
+    bool local_141 = (bool)0;
+    bool local_142 = (bool)0;
     float s_star = 0.0;
     float t_star = (float)0;
-    bool local_126 = (bool)0;
-    bool local_127 = (bool)0;
-    bool local_128 = (bool)0;
-    bool local_129 = (bool)0;
-    bool local_130 = (bool)0;
-    bool local_131 = (bool)0;
+    bool local_143 = (bool)0;
+    bool local_144 = (bool)0;
+    bool local_145 = (bool)0;
+    bool local_146 = (bool)0;
+    bool local_147 = (bool)0;
+    bool local_148 = (bool)0;
     float scale = 0.0;
-    bool local_132 = (bool)0;
-    bool local_133 = (bool)0;
-    bool local_134 = (bool)0;
-    bool local_135 = (bool)0;
-    bool local_136 = (bool)0;
+    bool local_149 = (bool)0;
+    bool local_150 = (bool)0;
+    bool local_151 = (bool)0;
+    bool local_152 = (bool)0;
+    bool local_153 = (bool)0;
     float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = {0.0, 0.0, 0.0};
-    bool local_137 = (bool)0;
+    bool local_154 = (bool)0;
     uint i_23 = 0u;
-    bool local_138 = (bool)0;
-    bool local_139 = (bool)0;
-    bool local_140 = (bool)0;
-    bool local_141 = (bool)0;
+    bool local_155 = (bool)0;
+    bool local_156 = (bool)0;
+    bool local_157 = (bool)0;
+    bool local_158 = (bool)0;
     uint n_1 = 0u;
     uint i_24 = 0u;
-    bool local_142 = (bool)0;
+    bool local_159 = (bool)0;
 
     if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         const AirlightOuter _e4 = airlight_surface(s_23);
@@ -5934,17 +6145,17 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     float3 ab_1 = (s_23.light_end - s_23.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_124 = (s_23.intensity == 0.0);
+        local_141 = (s_23.intensity == 0.0);
     } else {
-        local_124 = true;
+        local_141 = true;
     }
-    bool _e26 = local_124;
+    bool _e26 = local_141;
     if (!(_e26)) {
-        local_125 = (s_23.sigma_s == 0.0);
+        local_142 = (s_23.sigma_s == 0.0);
     } else {
-        local_125 = true;
+        local_142 = true;
     }
-    bool _e34 = local_125;
+    bool _e34 = local_142;
     if (_e34) {
         g_22.outcome = 1u;
         AirlightOuter _e37 = g_22;
@@ -5969,45 +6180,45 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_126 = (sin_a_1 > 0.0);
+        local_143 = (sin_a_1 > 0.0);
     } else {
-        local_126 = false;
+        local_143 = false;
     }
-    bool _e84 = local_126;
+    bool _e84 = local_143;
     if (_e84) {
         float _e87 = s_star;
-        local_127 = (_e87 >= 0.0);
+        local_144 = (_e87 >= 0.0);
     } else {
-        local_127 = false;
+        local_144 = false;
     }
-    bool _e91 = local_127;
+    bool _e91 = local_144;
     if (_e91) {
         float _e94 = s_star;
-        local_128 = (_e94 <= _e15);
+        local_145 = (_e94 <= _e15);
     } else {
-        local_128 = false;
+        local_145 = false;
     }
-    bool _e97 = local_128;
+    bool _e97 = local_145;
     if (_e97) {
         float _e101 = t_star;
-        local_129 = (s_23.t_min <= _e101);
+        local_146 = (s_23.t_min <= _e101);
     } else {
-        local_129 = false;
+        local_146 = false;
     }
-    bool _e104 = local_129;
+    bool _e104 = local_146;
     if (_e104) {
         if (!(infinite_4)) {
             float _e110 = t_star;
-            local_131 = (_e110 <= s_23.t_max);
+            local_148 = (_e110 <= s_23.t_max);
         } else {
-            local_131 = true;
+            local_148 = true;
         }
-        bool _e114 = local_131;
-        local_130 = _e114;
+        bool _e114 = local_148;
+        local_147 = _e114;
     } else {
-        local_130 = false;
+        local_147 = false;
     }
-    bool _e116 = local_130;
+    bool _e116 = local_147;
     if (_e116) {
         g_22.outcome = 2u;
         AirlightOuter _e119 = g_22;
@@ -6015,49 +6226,49 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_132 = (_e73 > 0.0);
+        local_149 = (_e73 > 0.0);
     } else {
-        local_132 = false;
+        local_149 = false;
     }
-    bool _e129 = local_132;
+    bool _e129 = local_149;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_133 = (_e136 < (_e15 + _e15));
+        local_150 = (_e136 < (_e15 + _e15));
     } else {
-        local_133 = false;
+        local_150 = false;
     }
-    bool _e140 = local_133;
+    bool _e140 = local_150;
     if (_e140) {
         float _e143 = scale;
-        local_134 = (_e143 < _e15);
+        local_151 = (_e143 < _e15);
     } else {
-        local_134 = false;
+        local_151 = false;
     }
-    bool near_1 = local_134;
+    bool near_1 = local_151;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_135 = _e154;
+        local_152 = _e154;
     } else {
-        local_135 = false;
+        local_152 = false;
     }
-    bool _e156 = local_135;
+    bool _e156 = local_152;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_136 = _e163;
+        local_153 = _e163;
     } else {
-        local_136 = false;
+        local_153 = false;
     }
-    bool _e165 = local_136;
+    bool _e165 = local_153;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -6074,21 +6285,21 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         const float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_22;
         const float _e197 = airlight_to_w(_e196, _e15);
-        local_137 = (min(-(_e194), _e197) < 0.5);
+        local_154 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_137 = false;
+        local_154 = false;
     }
-    bool sliver = local_137;
-    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
+    bool sliver = local_154;
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    bool loop_init_29 = true;
     while(true) {
-        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_29) {
             uint _e252 = i_23;
             i_23 = (_e252 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_29 = false;
         uint _e205 = i_23;
         if ((_e205 < 3u)) {
         } else {
@@ -6097,31 +6308,31 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         {
             uint _e208 = i_23;
             if ((_e208 == 0u)) {
-                local_138 = sliver;
+                local_155 = sliver;
             } else {
-                local_138 = false;
+                local_155 = false;
             }
-            bool _e214 = local_138;
+            bool _e214 = local_155;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_23;
-                local_139 = (_e219 > 0u);
+                local_156 = (_e219 > 0u);
             } else {
-                local_139 = false;
+                local_156 = false;
             }
-            bool _e223 = local_139;
+            bool _e223 = local_156;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_23;
             if ((_e224 == 2u)) {
-                local_140 = infinite_4;
+                local_157 = infinite_4;
             } else {
-                local_140 = false;
+                local_157 = false;
             }
-            bool _e230 = local_140;
+            bool _e230 = local_157;
             if (_e230) {
                 continue;
             }
@@ -6130,11 +6341,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e233 > 0.0)) {
                 uint _e238 = i_23;
                 float _e240 = at[min(uint(_e238), 2u)];
-                local_141 = (_e240 < _e15);
+                local_158 = (_e240 < _e15);
             } else {
-                local_141 = false;
+                local_158 = false;
             }
-            bool _e243 = local_141;
+            bool _e243 = local_158;
             if (_e243) {
                 uint _e244 = i_23;
                 AirlightOuter _e246 = g_22;
@@ -6174,16 +6385,16 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     AirlightOuter _e291 = g_22;
     const float _e293 = airlight_to_w(_e291, 0.0);
     g_22.edges[0] = _e293;
-    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-    bool loop_init_29 = true;
+    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e327 = i_24;
             i_24 = (_e327 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e298 = i_24;
         if ((_e298 < 3u)) {
         } else {
@@ -6197,11 +6408,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e303 > _e307)) {
                 uint _e311 = i_24;
                 float _e313 = cuts_2[min(uint(_e311), 2u)];
-                local_142 = (_e313 < _e288);
+                local_159 = (_e313 < _e288);
             } else {
-                local_142 = false;
+                local_159 = false;
             }
-            bool _e316 = local_142;
+            bool _e316 = local_159;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -6241,12 +6452,12 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
     float jacobian = (float)0;
-    bool local_143 = (bool)0;
-    bool local_144 = (bool)0;
-    bool local_145 = (bool)0;
-    bool local_146 = (bool)0;
-    bool local_147 = (bool)0;
-    bool local_148 = (bool)0;
+    bool local_160 = (bool)0;
+    bool local_161 = (bool)0;
+    bool local_162 = (bool)0;
+    bool local_163 = (bool)0;
+    bool local_164 = (bool)0;
+    bool local_165 = (bool)0;
     float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
@@ -6268,51 +6479,51 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
         jacobian = (((w_7 * 6.0) * t_7) * u_4);
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_143 = !(smooth_a);
+            local_160 = !(smooth_a);
         } else {
-            local_143 = false;
+            local_160 = false;
         }
-        bool _e66 = local_143;
+        bool _e66 = local_160;
         gamma_1 = (_e66 ? (a_29 + ((w_7 * t_7) * t_7)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
-            local_144 = !(smooth_a);
+            local_161 = !(smooth_a);
         } else {
-            local_144 = false;
+            local_161 = false;
         }
-        bool _e75 = local_144;
+        bool _e75 = local_161;
         jacobian = (_e75 ? (w_7 * (t_7 + t_7)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
-            local_145 = !(smooth_b);
+            local_162 = !(smooth_b);
         } else {
-            local_145 = false;
+            local_162 = false;
         }
-        bool _e85 = local_145;
+        bool _e85 = local_162;
         gamma_1 = (_e85 ? (b_19 - ((w_7 * u_4) * u_4)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
-            local_146 = !(smooth_b);
+            local_163 = !(smooth_b);
         } else {
-            local_146 = false;
+            local_163 = false;
         }
-        bool _e94 = local_146;
+        bool _e94 = local_163;
         jacobian = (_e94 ? (w_7 * (u_4 + u_4)) : _e87);
         float _e96 = gamma_1;
         if (smooth_a) {
-            local_147 = smooth_b;
+            local_164 = smooth_b;
         } else {
-            local_147 = false;
+            local_164 = false;
         }
-        bool _e102 = local_147;
+        bool _e102 = local_164;
         gamma_1 = (_e102 ? (a_29 + (w_7 * t_7)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
-            local_148 = smooth_b;
+            local_165 = smooth_b;
         } else {
-            local_148 = false;
+            local_165 = false;
         }
-        bool _e108 = local_148;
+        bool _e108 = local_165;
         jacobian = (_e108 ? w_7 : _e104);
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6372,15 +6583,15 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_149 = (bool)0;
+    bool local_166 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_149 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_166 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_149 = true;
+        local_166 = true;
     }
-    bool _e11 = local_149;
+    bool _e11 = local_166;
     if (_e11) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_8;
@@ -6392,18 +6603,18 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_2)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_150 = (bool)0;
+    bool local_167 = (bool)0;
     AirlightCanonical g_24 = (AirlightCanonical)0;
 
     AirlightScene p_1 = n_2.scene;
     const bool _e7 = airlight_vec_finite(p_1.light_position);
     if (_e7) {
         const bool _e11 = airlight_vec_finite(p_1.dir);
-        local_150 = _e11;
+        local_167 = _e11;
     } else {
-        local_150 = false;
+        local_167 = false;
     }
-    bool _e13 = local_150;
+    bool _e13 = local_167;
     if (_e13) {
         g_24 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -6444,8 +6655,8 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
 
 AirlightResult airlight_in_scatter(AirlightScene s_25)
 {
-    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
-    uint count_2 = 0u;
+    AirlightPanelList list_2 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    uint count_3 = 0u;
     float a_17 = (float)0;
     float b_13 = (float)0;
     uint slot_1 = 0u;
@@ -6456,229 +6667,170 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
     float k_6 = (float)0;
     float gauss = (float)0;
     uint j_5 = (uint)0;
-    bool local_151 = (bool)0;
+    bool local_168 = (bool)0;
     float f = (float)0;
-    bool local_152 = (bool)0;
-    bool split = (bool)0;
-    uint tries = (uint)0;
-    bool local_153 = (bool)0;
-    bool local_154 = (bool)0;
-    bool local_155 = (bool)0;
+    bool local_169 = (bool)0;
 
     const bool _e1 = airlight_valid(s_25);
     if (!(_e1)) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
     }
-    const AirlightOuter _e6 = airlight_outer(s_25);
-    if ((_e6.outcome == 1u)) {
-        const AirlightResult airlightresult_12 = ConstructAirlightResult(0.0, 0u);
+    if ((s_25.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+        const AirlightResult airlightresult_12 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_12;
     }
-    if ((_e6.outcome == 2u)) {
-        const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
+    const AirlightOuter _e12 = airlight_outer(s_25);
+    if ((_e12.outcome == 1u)) {
+        const AirlightResult airlightresult_13 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_13;
     }
-    const float3 _e19[4] = airlight_kronrod_rule();
-    a_17 = _e6.edges[0];
-    b_13 = _e6.edges[1];
-    uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
+    if ((_e12.outcome == 2u)) {
+        const AirlightResult airlightresult_14 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_14;
+    }
+    const float3 _e25[4] = airlight_kronrod_rule();
+    a_17 = _e12.edges[0];
+    b_13 = _e12.edges[1];
+    uint evaluations = ((2u * _e12.max_panels) - 1u);
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e250 = step_2;
-            step_2 = (_e250 + 1u);
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e211 = step_2;
+            step_2 = (_e211 + 1u);
         }
-        loop_init_30 = false;
-        uint _e78 = step_2;
-        if ((_e78 < evaluations)) {
+        loop_init_31 = false;
+        uint _e84 = step_2;
+        if ((_e84 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e80 = a_17;
-            float _e81 = b_13;
-            float c_15 = (0.5 * (_e80 + _e81));
-            float _e85 = b_13;
             float _e86 = a_17;
-            float hw_2 = (0.5 * (_e85 - _e86));
+            float _e87 = b_13;
+            float c_15 = (0.5 * (_e86 + _e87));
+            float _e91 = b_13;
+            float _e92 = a_17;
+            float hw_2 = (0.5 * (_e91 - _e92));
             k_6 = 0.0;
             gauss = 0.0;
             j_5 = 0u;
-            uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
-            bool loop_init_31 = true;
+            uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+            bool loop_init_32 = true;
             while(true) {
-                if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
-                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-                if (!loop_init_31) {
-                    uint _e156 = j_5;
-                    j_5 = (_e156 + 1u);
+                if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+                loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+                if (!loop_init_32) {
+                    uint _e162 = j_5;
+                    j_5 = (_e162 + 1u);
                 }
-                loop_init_31 = false;
-                uint _e96 = j_5;
-                if ((_e96 < 7u)) {
+                loop_init_32 = false;
+                uint _e102 = j_5;
+                if ((_e102 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e99 = j_5;
-                    float3 node_1 = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
-                    uint _e109 = j_5;
-                    if (((_e109 & 1u) == 0u)) {
-                        uint _e116 = j_5;
-                        local_151 = (_e116 < 6u);
+                    uint _e105 = j_5;
+                    float3 node_1 = _e25[min(uint(airlight_naga_div(_e105, 2u)), 3u)];
+                    uint _e115 = j_5;
+                    if (((_e115 & 1u) == 0u)) {
+                        uint _e122 = j_5;
+                        local_168 = (_e122 < 6u);
                     } else {
-                        local_151 = false;
+                        local_168 = false;
                     }
-                    bool _e120 = local_151;
-                    float w_8 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
-                    const AirlightNode _e122 = airlight_outer_node(s_25, _e6, w_8);
+                    bool _e126 = local_168;
+                    float w_8 = (_e126 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
+                    const AirlightNode _e128 = airlight_outer_node(s_25, _e12, w_8);
                     f = 0.0;
-                    if ((_e122.weight != 0.0)) {
-                        const AirlightResult _e128 = airlight_node_integral(_e122);
-                        if ((_e128.status == AIRLIGHT_STATUS_INFINITE)) {
-                            const AirlightResult airlightresult_14 = _e128;
-                            return airlightresult_14;
-                        }
-                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_152 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
-                        } else {
-                            local_152 = false;
-                        }
-                        bool _e141 = local_152;
-                        if (_e141) {
-                            const AirlightResult airlightresult_15 = _e128;
+                    if ((_e128.weight != 0.0)) {
+                        const AirlightResult _e134 = airlight_node_integral(_e128);
+                        if ((_e134.status == AIRLIGHT_STATUS_INFINITE)) {
+                            const AirlightResult airlightresult_15 = _e134;
                             return airlightresult_15;
                         }
-                        f = (_e128.in_scatter * _e122.weight);
+                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        } else {
+                            local_169 = false;
+                        }
+                        bool _e147 = local_169;
+                        if (_e147) {
+                            const AirlightResult airlightresult_16 = _e134;
+                            return airlightresult_16;
+                        }
+                        f = (_e134.in_scatter * _e128.weight);
                     }
-                    float _e145 = k_6;
-                    float _e147 = f;
-                    k_6 = (_e145 + (node_1.y * _e147));
-                    float _e150 = gauss;
-                    float _e152 = f;
-                    gauss = (_e150 + (node_1.z * _e152));
+                    float _e151 = k_6;
+                    float _e153 = f;
+                    k_6 = (_e151 + (node_1.y * _e153));
+                    float _e156 = gauss;
+                    float _e158 = f;
+                    gauss = (_e156 + (node_1.z * _e158));
                 }
             }
-            uint _e158 = slot_1;
-            float _e159 = a_17;
-            float _e160 = b_13;
-            float _e161 = k_6;
-            float _e163 = k_6;
-            float _e165 = gauss;
-            airlight_list_set(list_1, _e158, float4(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
-            uint _e170 = slot_1;
-            uint _e171 = count_2;
-            if ((_e170 == _e171)) {
-                uint _e173 = count_2;
-                count_2 = (_e173 + 1u);
+            uint _e164 = slot_1;
+            float _e165 = a_17;
+            float _e166 = b_13;
+            float _e167 = k_6;
+            float _e169 = k_6;
+            float _e171 = gauss;
+            airlight_list_set(list_2, _e164, float4(_e165, _e166, (_e167 * hw_2), abs(((_e169 * hw_2) - (_e171 * hw_2)))));
+            uint _e176 = slot_1;
+            uint _e177 = count_3;
+            if ((_e176 == _e177)) {
+                uint _e179 = count_3;
+                count_3 = (_e179 + 1u);
             }
-            uint _e176 = count_2;
-            if ((_e176 < _e6.panels)) {
-                uint _e180 = count_2;
-                a_17 = _e6.edges[min(uint(_e180), 12u)];
-                uint _e183 = count_2;
-                b_13 = _e6.edges[min(uint((_e183 + 1u)), 12u)];
-                uint _e187 = count_2;
-                slot_1 = _e187;
+            uint _e182 = count_3;
+            if ((_e182 < _e12.panels)) {
+                uint _e186 = count_3;
+                a_17 = _e12.edges[min(uint(_e186), 12u)];
+                uint _e189 = count_3;
+                b_13 = _e12.edges[min(uint((_e189 + 1u)), 12u)];
+                uint _e193 = count_3;
+                slot_1 = _e193;
             } else {
-                bool _e188 = queued;
-                if (_e188) {
-                    float _e189 = queued_lo;
-                    a_17 = _e189;
-                    float _e190 = queued_hi;
-                    b_13 = _e190;
-                    uint _e191 = count_2;
-                    slot_1 = _e191;
+                bool _e194 = queued;
+                if (_e194) {
+                    float _e195 = queued_lo;
+                    a_17 = _e195;
+                    float _e196 = queued_hi;
+                    b_13 = _e196;
+                    uint _e197 = count_3;
+                    slot_1 = _e197;
                     queued = false;
                 } else {
-                    split = false;
-                    tries = 0u;
-                    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_32 = true;
-                    while(true) {
-                        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-                        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-                        if (!loop_init_32) {
-                            uint _e245 = tries;
-                            tries = (_e245 + 1u);
-                        }
-                        loop_init_32 = false;
-                        uint _e197 = tries;
-                        if ((_e197 < _e6.max_panels)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            AirlightPanelList _e200 = list_1;
-                            uint _e201 = count_2;
-                            const AirlightListScan _e202 = airlight_list_scan(_e200, _e201);
-                            float total_4 = _e202.total;
-                            uint worst_1 = _e202.worst;
-                            if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e213 = count_2;
-                                local_153 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_153 = true;
-                            }
-                            bool _e217 = local_153;
-                            if (!(_e217)) {
-                                const bool _e221 = airlight_is_finite(total_4);
-                                local_154 = !(_e221);
-                            } else {
-                                local_154 = true;
-                            }
-                            bool _e224 = local_154;
-                            if (_e224) {
-                                break;
-                            }
-                            AirlightPanelList _e225 = list_1;
-                            const float4 _e226 = airlight_list_get(_e225, worst_1);
-                            float wa_1 = _e226.x;
-                            float wb_1 = _e226.y;
-                            float mid_1 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_1 > wa_1)) {
-                                local_155 = (mid_1 < wb_1);
-                            } else {
-                                local_155 = false;
-                            }
-                            bool _e237 = local_155;
-                            if (!(_e237)) {
-                                airlight_list_set(list_1, worst_1, float4(_e226.xyz, 0.0));
-                                continue;
-                            }
-                            a_17 = wa_1;
-                            b_13 = mid_1;
-                            slot_1 = worst_1;
-                            queued = true;
-                            queued_lo = mid_1;
-                            queued_hi = wb_1;
-                            split = true;
-                            break;
-                        }
-                    }
-                    bool _e247 = split;
-                    if (!(_e247)) {
+                    uint _e199 = count_3;
+                    const AirlightSplit _e201 = airlight_split_worst(list_2, _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+                    if (!(_e201.split)) {
                         break;
                     }
+                    a_17 = _e201.lo;
+                    b_13 = _e201.mid;
+                    slot_1 = _e201.slot;
+                    queued = true;
+                    queued_lo = _e201.mid;
+                    queued_hi = _e201.hi;
                 }
             }
         }
     }
-    AirlightPanelList _e252 = list_1;
-    uint _e253 = count_2;
-    const AirlightListScan _e254 = airlight_list_scan(_e252, _e253);
-    float total_5 = _e254.total;
-    const bool _e256 = airlight_is_finite(total_5);
-    if (!(_e256)) {
-        const AirlightResult airlightresult_16 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_16;
+    AirlightPanelList _e213 = list_2;
+    uint _e214 = count_3;
+    const AirlightListScan _e215 = airlight_list_scan(_e213, _e214);
+    float total_4 = _e215.total;
+    const bool _e217 = airlight_is_finite(total_4);
+    if (!(_e217)) {
+        const AirlightResult airlightresult_17 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_17;
     }
-    const AirlightResult airlightresult_17 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
-    return airlightresult_17;
+    const AirlightResult airlightresult_18 = ConstructAirlightResult(max(total_4, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_18;
 }
 
 uint airlight_NagaBufferLength(ByteAddressBuffer buffer)

@@ -122,6 +122,14 @@ struct AirlightListScan {
     uint worst;
 };
 
+struct AirlightSplit {
+    bool split;
+    float lo;
+    float mid;
+    float hi;
+    uint slot;
+};
+
 struct AirlightOuter {
     float3 a;
     int _pad1_0;
@@ -175,6 +183,55 @@ struct AirlightNode {
     int _end_pad_2;
 };
 
+struct AirlightArea {
+    float3 d;
+    int _pad1_0;
+    float3 c;
+    int _pad2_0;
+    float3 n;
+    int _pad3_0;
+    float3 a1_;
+    int _pad4_0;
+    float3 a2_;
+    int _pad5_0;
+    float3 eu;
+    int _pad6_0;
+    float3 ev;
+    int _pad7_0;
+    float3 dirs;
+    float radius;
+    float x_h;
+    float h_eff;
+    float edges[5];
+    uint panels;
+    uint outcome;
+    int _pad14_0;
+    int _pad14_1;
+    int _pad14_2;
+    float4 lobes;
+    bool isotropic;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct AirlightAbove {
+    float z;
+    int _pad1_0;
+    float2 off;
+    float rho0_;
+    int _end_pad_0;
+};
+
+struct AirlightCap {
+    float3 a;
+    float dc;
+    float radius;
+    float sin_a;
+    float cos_a;
+    int _end_pad_0;
+};
+
 static const uint AIRLIGHT_TERMS = 8u;
 static const uint AIRLIGHT_HALF_TERMS = 4u;
 static const float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -206,6 +263,9 @@ static const uint AIRLIGHT_LIGHT_TWO_LOBED = 1u;
 static const uint AIRLIGHT_LIGHT_SPOT = 2u;
 static const uint AIRLIGHT_SHAPE_POINT = 0u;
 static const uint AIRLIGHT_SHAPE_SEGMENT = 1u;
+static const uint AIRLIGHT_SHAPE_DISC = 2u;
+static const uint AIRLIGHT_SHAPE_RECTANGLE = 3u;
+static const uint AIRLIGHT_SHAPE_SPHERE = 4u;
 static const uint AIRLIGHT_SURFACE_NONE = 0u;
 static const uint AIRLIGHT_SURFACE_LAMBERT = 1u;
 static const uint AIRLIGHT_SURFACE_PHONG = 2u;
@@ -221,12 +281,16 @@ static const float AIRLIGHT_E1_INV_RE = 0.7692308;
 static const float AIRLIGHT_E1_INV_IM = 0.47619048;
 static const uint AIRLIGHT_E1_CF_MAX_DEPTH = 14u;
 static const uint AIRLIGHT_E1_CF_PLAIN_FROM = 6u;
+static const uint AIRLIGHT_EMISSION_MAX_POWER = 1024u;
 static const uint AIRLIGHT_SEGMENT_PANELS = 6u;
 static const uint AIRLIGHT_SURFACE_PANELS = 6u;
 static const uint AIRLIGHT_PHONG_PANELS = 16u;
 static const uint AIRLIGHT_OUTER_EDGES = 13u;
 static const uint AIRLIGHT_LOBE_PAIRS = 5u;
 static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
+static const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
+static const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
+static const float AIRLIGHT_LOBE_REACH = 8.0;
 
 typedef float airlight_ret_Constructarray8_float_[8];
 airlight_ret_Constructarray8_float_ airlight_Constructarray8_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7) {
@@ -317,6 +381,35 @@ AirlightLight airlight_segment_light(AirlightLight light, float3 end)
     return airlightlight_3;
 }
 
+AirlightLight airlight_disc_light(float3 center_, float3 normal, float radius, float radiance)
+{
+    const AirlightLight airlightlight_4 = ConstructAirlightLight(center_, radiance, normal, radius, 1.0, AIRLIGHT_LIGHT_OMNI, center_, AIRLIGHT_SHAPE_DISC);
+    return airlightlight_4;
+}
+
+AirlightLight airlight_rectangle_light(float3 corner, float3 edge_u, float3 edge_v, float radiance_1)
+{
+    const AirlightLight airlightlight_5 = ConstructAirlightLight(corner, radiance_1, edge_u, 0.0, 1.0, AIRLIGHT_LIGHT_OMNI, edge_v, AIRLIGHT_SHAPE_RECTANGLE);
+    return airlightlight_5;
+}
+
+AirlightLight airlight_sphere_light(float3 center_1, float radius_1, float radiance_2)
+{
+    const AirlightLight airlightlight_6 = ConstructAirlightLight(center_1, radiance_2, float3(0.0, 0.0, 1.0), radius_1, 1.0, AIRLIGHT_LIGHT_OMNI, center_1, AIRLIGHT_SHAPE_SPHERE);
+    return airlightlight_6;
+}
+
+AirlightLight airlight_cosine_lobe(AirlightLight light_1, uint power_1)
+{
+    AirlightLight lobe = (AirlightLight)0;
+
+    lobe = light_1;
+    lobe.param_b = float(power_1);
+    AirlightLight _e5 = lobe;
+    const AirlightLight airlightlight_7 = _e5;
+    return airlightlight_7;
+}
+
 AirlightMedium ConstructAirlightMedium(float arg0, float arg1) {
     AirlightMedium ret = (AirlightMedium)0;
     ret.sigma_s = arg0;
@@ -403,18 +496,18 @@ AirlightScene ConstructAirlightScene(float3 arg0, float arg1, float3 arg2, float
     return ret;
 }
 
-AirlightScene airlight_scene(AirlightRay ray, AirlightLight light_1, AirlightMedium medium, AirlightPhase phase)
+AirlightScene airlight_scene(AirlightRay ray, AirlightLight light_2, AirlightMedium medium, AirlightPhase phase)
 {
-    const AirlightScene airlightscene = ConstructAirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, 0.0, light_1.end, light_1.shape, (0.0).xxx);
+    const AirlightScene airlightscene = ConstructAirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_2.position, light_2.intensity, light_2.axis, light_2.param_a, light_2.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_2.kind, phase.kind, ray.flags, 0.0, AIRLIGHT_SURFACE_NONE, 0.0, light_2.end, light_2.shape, (0.0).xxx);
     return airlightscene;
 }
 
-AirlightScene airlight_lambert_surface(float3 position_3, float3 normal, float albedo, AirlightLight light_2, AirlightMedium medium_1, AirlightPhase phase_1)
+AirlightScene airlight_lambert_surface(float3 position_3, float3 normal_1, float albedo, AirlightLight light_3, AirlightMedium medium_1, AirlightPhase phase_1)
 {
     AirlightScene s = (AirlightScene)0;
 
-    const AirlightRay _e7 = airlight_ray_to_infinity(position_3, normal, 0.0);
-    const AirlightScene _e8 = airlight_scene(_e7, light_2, medium_1, phase_1);
+    const AirlightRay _e7 = airlight_ray_to_infinity(position_3, normal_1, 0.0);
+    const AirlightScene _e8 = airlight_scene(_e7, light_3, medium_1, phase_1);
     s = _e8;
     s.brdf_scale = albedo;
     s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
@@ -423,12 +516,12 @@ AirlightScene airlight_lambert_surface(float3 position_3, float3 normal, float a
     return airlightscene_1;
 }
 
-AirlightScene airlight_phong_surface(float3 position_4, float3 normal_1, float k_s, float exponent, float3 view, AirlightLight light_3, AirlightMedium medium_2, AirlightPhase phase_2)
+AirlightScene airlight_phong_surface(float3 position_4, float3 normal_2, float k_s, float exponent, float3 view, AirlightLight light_4, AirlightMedium medium_2, AirlightPhase phase_2)
 {
     AirlightScene s_1 = (AirlightScene)0;
 
-    const AirlightRay _e9 = airlight_ray_to_infinity(position_4, normal_1, 0.0);
-    const AirlightScene _e10 = airlight_scene(_e9, light_3, medium_2, phase_2);
+    const AirlightRay _e9 = airlight_ray_to_infinity(position_4, normal_2, 0.0);
+    const AirlightScene _e10 = airlight_scene(_e9, light_4, medium_2, phase_2);
     s_1 = _e10;
     s_1.brdf_scale = k_s;
     s_1.brdf_exponent = exponent;
@@ -480,19 +573,19 @@ float2 airlight_csqrt(float2 z_1)
     }
     const float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_3 = sqrt(((_e14 + z_1.x) * 0.5));
-        return float2(t_3, (z_1.y / (t_3 + t_3)));
+        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_4, (z_1.y / (t_4 + t_4)));
     }
-    float t_4 = sqrt(((_e14 - z_1.x) * 0.5));
-    return float2((abs(z_1.y) / (t_4 + t_4)), ((z_1.y >= 0.0) ? t_4 : -(t_4)));
+    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
 }
 
 float2 airlight_cos_sin(float x)
 {
-    float z_9 = (x * x);
-    float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_30 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return float2(c_7, (s_30 * x));
+    float z_10 = (x * x);
+    float c_8 = (1.0 + (z_10 * (-0.5 + (z_10 * (0.041666668 + (z_10 * (-0.0013888889 + (z_10 * (2.4801588e-5 + (z_10 * (-2.755732e-7 + (z_10 * (2.0876756e-9 + (z_10 * (-1.1470745e-11 + (z_10 * 4.7794773e-14))))))))))))))));
+    float s_47 = (1.0 + (z_10 * (-0.16666667 + (z_10 * (0.008333334 + (z_10 * (-0.0001984127 + (z_10 * (2.7557319e-6 + (z_10 * (-2.5052108e-8 + (z_10 * (1.6059044e-10 + (z_10 * (-7.6471636e-13 + (z_10 * 2.8114574e-15))))))))))))))));
+    return float2(c_8, (s_47 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -519,11 +612,11 @@ float airlight_atan(float x_1)
     }
     float _e17 = t;
     float _e18 = t;
-    float z_10 = (_e17 * _e18);
+    float z_11 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_10) - 0.13877685) * z_10) + 0.19977711) * z_10) - 0.3333295) * z_10) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_11) - 0.13877685) * z_11) + 0.19977711) * z_11) - 0.3333295) * z_11) * _e32) + _e34));
 }
 
 float2 airlight_cln(float2 z_3)
@@ -553,10 +646,10 @@ float airlight_log1p(float x_2)
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_31 = (x_2 / (2.0 + x_2));
-    float z_11 = (s_31 * s_31);
-    float sum_7 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
-    return ((2.0 * s_31) * sum_7);
+    float s_48 = (x_2 / (2.0 + x_2));
+    float z_12 = (s_48 * s_48);
+    float sum_12 = ((((((((((((((((z_12 / 17.0) + 0.06666667) * z_12) + 0.07692308) * z_12) + 0.09090909) * z_12) + 0.11111111) * z_12) + 0.14285715) * z_12) + 0.2) * z_12) + 0.33333334) * z_12) + 1.0);
+    return ((2.0 * s_48) * sum_12);
 }
 
 bool airlight_is_finite(float x_3)
@@ -640,9 +733,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_21 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_25 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_21 * x_21) + (y_5 * y_5)) < 1.0);
+    return (((x_25 * x_25) + (y_5 * y_5)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -806,8 +899,8 @@ float airlight_en_scaled_cf(float x_4, uint n)
     float nf_1 = float(n);
     float m_6 = float(_e2);
     float b_15 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_18 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
-    float disc = (1.0 - ((4.0 * a_18) / (b_15 * b_15)));
+    float a_29 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float disc = (1.0 - ((4.0 * a_29) / (b_15 * b_15)));
     t_2 = b_15;
     if ((disc > 0.0)) {
         t_2 = ((b_15 * (1.0 + sqrt(disc))) * 0.5);
@@ -966,8 +1059,8 @@ airlight_ret_airlight_en_scaled airlight_en_scaled(float x_5)
 float airlight_hg_base(float g_2, float om, float op)
 {
     if ((g_2 >= 0.0)) {
-        float a_19 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_19 * a_19));
+        float a_30 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_30 * a_30));
     }
     float b_16 = (1.0 + g_2);
     return ((op * -((g_2 + g_2))) + (b_16 * b_16));
@@ -1073,8 +1166,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_22 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_22 * x_22) * (3.0 - (2.0 * x_22)));
+            float x_26 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_26 * x_26) * (3.0 - (2.0 * x_26)));
         }
         default: {
             return 1.0;
@@ -1095,11 +1188,11 @@ float airlight_singular_height(float side, float gap, float sigma)
 
 float airlight_hg_gap(float g_4)
 {
-    float a_20 = abs(g_4);
-    if (!((a_20 > 0.0))) {
+    float a_31 = abs(g_4);
+    if (!((a_31 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_20) * (1.0 - a_20)) / (a_20 + a_20));
+    return (((1.0 - a_31) * (1.0 - a_31)) / (a_31 + a_31));
 }
 
 float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
@@ -1116,8 +1209,8 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
             break;
         }
         case 3u: {
-            float a_21 = abs(p0_3);
-            const float _e19 = airlight_singular_height(p0_3, ((a_21 > 0.0) ? ((1.0 - a_21) / a_21) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_32 = abs(p0_3);
+            const float _e19 = airlight_singular_height(p0_3, ((a_32 > 0.0) ? ((1.0 - a_32) / a_32) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1200,8 +1293,8 @@ float2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float s
     float y2_ = (y_1 * y_1);
     float inv_2 = (1.0 / (1.0 + y2_));
     float om_3 = (1.0 - y2_);
-    float mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    float c_8 = ((((sigma_2 * g_5.d_el) * om_3) + ((2.0 * g_5.d_c) * y_1)) * inv_2);
+    float mu_3 = (-(sigma_2) * (om_3 * inv_2));
+    float c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2.0 * g_5.d_c) * y_1)) * inv_2);
     float far = ((y2_ * inv_2) * 2.0);
     float near = (inv_2 * 2.0);
     minus = near;
@@ -1210,10 +1303,10 @@ float2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float s
         minus = far;
         plus = near;
     }
-    const float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
+    const float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
     float _e40 = minus;
     float _e41 = plus;
-    const float _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
+    const float _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_3, _e40, _e41);
     float f_1 = (_e35 * _e42);
     return float2(f_1, inv_2);
 }
@@ -1364,10 +1457,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_23 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_23);
+            float x_27 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_27);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_23);
+                const float _e43 = airlight_log1p(x_27);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1513,8 +1606,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[4], uint i_3)
 {
-    float x_24 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_24) : x_24);
+    float x_28 = rule[min(uint(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_28) : x_28);
 }
 
 typedef float airlight_ret_airlight_legendre[8];
@@ -1596,8 +1689,8 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_25 = (lambda / float((2u * k0_)));
-            float per_step = (x_25 * x_25);
+            float x_29 = (lambda / float((2u * k0_)));
+            float per_step = (x_29 * x_29);
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
@@ -1624,8 +1717,8 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
                 }
             }
             uint _e55 = steps;
-            uint top = ((k0_ + _e55) + 2u);
-            odd = float(((2u * top) + 1u));
+            uint top_1 = ((k0_ + _e55) + 2u);
+            odd = float(((2u * top_1) + 1u));
             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             bool loop_init_7 = true;
             while(true) {
@@ -1643,7 +1736,7 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
                 }
                 {
                     uint _e76 = i_4;
-                    if (((_e76 + AIRLIGHT_TERMS) > top)) {
+                    if (((_e76 + AIRLIGHT_TERMS) > top_1)) {
                         break;
                     }
                     float _e79 = above;
@@ -1946,35 +2039,35 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_4 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_5 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if ((q_4 < 1.0)) {
+    if ((q_5 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_4) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_5) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_4) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_5) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_4) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_5) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_4) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_5) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_4) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_5) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_4) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_5) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_4) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_5) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (false ? ((_e126 * q_4) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (false ? ((_e126 * q_5) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
-        return min(((_e133 + (q_4 * truncation)) / m_1[0]), 1.0);
+        return min(((_e133 + (q_5 * truncation)) / m_1[0]), 1.0);
     }
     float _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -1993,7 +2086,7 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
     float _e170 = c_max;
     c_max = max(_e170, abs(c_2[7]));
     float _e176 = c_max;
-    uint power_1 = ((_e176 > (1.2 * abs(c_2[0]))) ? 1u : 2u);
+    uint power_2 = ((_e176 > (1.2 * abs(c_2[0]))) ? 1u : 2u);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -2005,7 +2098,7 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
         }
         loop_init_8 = false;
         uint _e187 = i_5;
-        if ((_e187 < power_1)) {
+        if ((_e187 < power_2)) {
         } else {
             break;
         }
@@ -2021,8 +2114,8 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
 float airlight_bernstein_rho(float re, float im)
 {
     float im2_ = (im * im);
-    float a_22 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_22 + sqrt(max(((a_22 * a_22) - 1.0), 0.0)));
+    float a_33 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_33 + sqrt(max(((a_33 * a_33) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs)
@@ -2039,8 +2132,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_26 = (half_5.big_h * _e13);
-    return ((x_26 > 0.0) ? exp(-(x_26)) : 1.0);
+    float x_30 = (half_5.big_h * _e13);
+    return ((x_30 > 0.0) ? exp(-(x_30)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -2160,8 +2253,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     sum_3 = (_e119 + (_e77[7] * _e81[7]));
     const float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
-    float w_2 = (_e124 * _e125);
-    float mass_5 = (w_2 * _e81[0]);
+    float w_3 = (_e124 * _e125);
+    float mass_5 = (w_3 * _e81[0]);
     float _e129 = vc;
     float _e130 = r_2;
     const float _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
@@ -2173,7 +2266,7 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
     const float _e140 = airlight_transform_noise(mass_5, _e139);
     float _e141 = over_max;
     float _e143 = f_max_1;
-    const AirlightPanel _e144 = airlight_panel_result((w_2 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
+    const AirlightPanel _e144 = airlight_panel_result((w_3 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
     const AirlightPanel airlightpanel_1 = _e144;
     return airlightpanel_1;
 }
@@ -2212,18 +2305,18 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
             uint _e28 = i_7;
             const float _e29 = airlight_node(_e8, _e28);
             float y_7 = (yc_1 + (r_9 * _e29));
-            float weight_1 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
+            float weight_2 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
             const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_7);
             float over_1 = (1.0 / (1.0 + (y_7 * y_7)));
             uint _e47 = i_7;
-            samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight_1);
+            samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight_2);
             float _e51 = f_max_2;
             f_max_2 = max(_e51, abs(_e41));
             float _e54 = over_max_1;
             over_max_1 = max(_e54, over_1);
             float _e56 = mass_1;
             uint _e57 = i_7;
-            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 3u)].y * weight_1));
+            mass_1 = (_e56 + (_e8[min(uint(airlight_naga_div(_e57, 2u)), 3u)].y * weight_2));
             float _e64 = p_avg;
             uint _e65 = i_7;
             uint _e72 = i_7;
@@ -2234,7 +2327,7 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
     float _e81[8] = samples_1;
     const float _e82[8] = airlight_legendre(_e81);
     const float _e83 = airlight_factor(half_7, a_6, b_5);
-    float w_3 = (_e83 * r_9);
+    float w_4 = (_e83 * r_9);
     const float _e85[8] = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2.0;
@@ -2242,13 +2335,13 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
     const float _e93 = airlight_tail_estimate(_e82);
     float _e95[8] = m_2;
     const float _e96 = airlight_error_factor(_e82, _e95, _e90);
-    float error_2 = (((w_3 * 2.0) * _e93) * _e96);
+    float error_2 = (((w_4 * 2.0) * _e93) * _e96);
     float _e104 = p_avg;
-    const float _e105 = airlight_transform_noise((w_3 * 2.0), _e104);
+    const float _e105 = airlight_transform_noise((w_4 * 2.0), _e104);
     float _e106 = mass_1;
     float _e108 = over_max_1;
     float _e110 = f_max_2;
-    const AirlightPanel _e111 = airlight_panel_result(((w_3 * 2.0) * _e82[0]), error_2, _e105, ((w_3 * _e106) * _e108), _e110);
+    const AirlightPanel _e111 = airlight_panel_result(((w_4 * 2.0) * _e82[0]), error_2, _e105, ((w_4 * _e106) * _e108), _e110);
     const AirlightPanel airlightpanel_2 = _e111;
     return airlightpanel_2;
 }
@@ -2536,13 +2629,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     const float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_27 = (abs(alpha) + abs(beta));
+    float x_31 = (abs(alpha) + abs(beta));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_27) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_31) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2552,7 +2645,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_27) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_31) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2562,7 +2655,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_27) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_31) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2572,7 +2665,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_27) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_31) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2582,7 +2675,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_27) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_31) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2592,7 +2685,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_27) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_31) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2602,7 +2695,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_27) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_31) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2612,7 +2705,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_27) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_31) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2669,8 +2762,8 @@ float airlight_graded_split(float a_9, float b_8, float3 heights_3)
 {
     bool local_20 = (bool)0;
 
-    float t_5 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    float d_2 = sqrt(((a_9 * a_9) + (t_5 * t_5)));
+    float t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    float d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
     if ((d_2 > 0.0)) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25));
     } else {
@@ -2985,10 +3078,10 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
         return AIRLIGHT_FLT_MAX;
     }
     float inv_h = (1.0 / big_h_1);
-    float w_4 = (v_s + inv_h);
-    float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_1 * inv_h);
+    float w_5 = (v_s + inv_h);
+    float r_11 = ((1.0 + (w_5 * w_5)) / (1.0 + (v_s * v_s)));
+    float e_5 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_5 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_10, float j_1)
@@ -3104,21 +3197,21 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
         lambda_1 = (_e116 + (min((big_h_7 * (y_end - _e26)), ((hw_1 * big_h_7) * (1.0 + (y_e * y_e)))) * 0.5));
     }
     const float3 _e128 = airlight_singular_steps(s_11);
-    float step_3 = _e128.y;
+    float step_4 = _e128.y;
     float p0_4 = s_11.phase_param_a;
     switch(s_11.phase_kind) {
         case 2u:
         case 4u: {
             const float _e134 = airlight_hg_gap(p0_4);
             float _e135 = psi1_1;
-            const float _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_3);
+            const float _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_4);
             rate = _e136;
             break;
         }
         case 3u: {
-            float a_23 = abs(p0_4);
+            float a_34 = abs(p0_4);
             float _e145 = psi1_1;
-            const float _e146 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_3);
+            const float _e146 = airlight_angle_floor(p0_4, ((a_34 > 0.0) ? ((1.0 - a_34) / a_34) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3126,10 +3219,10 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             float p1_3 = s_11.phase_param_b;
             const float _e148 = airlight_hg_gap(p0_4);
             float _e149 = psi1_1;
-            const float _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_3);
+            const float _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_4);
             const float _e151 = airlight_hg_gap(p1_3);
             float _e152 = psi1_1;
-            const float _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_3);
+            const float _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_4);
             rate = max(_e150, _e153);
             break;
         }
@@ -3199,21 +3292,21 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
             float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
-            float weight_2 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            float weight_3 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
             const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
             const float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
-            float gw = (weight_2 * f_2);
+            float gw = (weight_3 * f_2);
             uint _e297 = i_11;
             samples_3[min(uint(_e297), 7u)] = gw;
             uint _e299 = i_11;
-            float w_5 = _e224[min(uint(airlight_naga_div(_e299, 2u)), 3u)].y;
+            float w_6 = _e224[min(uint(airlight_naga_div(_e299, 2u)), 3u)].y;
             float _e304 = value_1;
-            value_1 = (_e304 + (w_5 * gw));
+            value_1 = (_e304 + (w_6 * gw));
             float _e307 = mass_4;
-            mass_4 = (_e307 + (w_5 * weight_2));
+            mass_4 = (_e307 + (w_6 * weight_3));
             float _e310 = magnitude;
-            magnitude = (_e310 + (w_5 * abs(gw)));
+            magnitude = (_e310 + (w_6 * abs(gw)));
             float _e314 = f_max_5;
             f_max_5 = max(_e314, abs(f_2));
         }
@@ -3263,9 +3356,9 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     float a0_ = (k_4 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
     float c0_ = (k_4 - (sigma_9 * d_el));
-    float scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if (!(!((scale_1 > 0.0)))) {
-        const bool _e21 = airlight_is_finite(scale_1);
+    float scale_2 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if (!(!((scale_2 > 0.0)))) {
+        const bool _e21 = airlight_is_finite(scale_2);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3274,10 +3367,10 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_24 = (a0_ / scale_1);
-    float b_17 = (b0_ / scale_1);
-    float c_9 = (c0_ / scale_1);
-    float disc_1 = ((b_17 * b_17) - ((4.0 * a_24) * c_9));
+    float a_35 = (a0_ / scale_2);
+    float b_17 = (b0_ / scale_2);
+    float c_10 = (c0_ / scale_2);
+    float disc_1 = ((b_17 * b_17) - ((4.0 * a_35) * c_10));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
@@ -3285,12 +3378,12 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_5 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
-    if ((q_5 != 0.0)) {
-        r1_ = (c_9 / q_5);
+    float q_6 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
+    if ((q_6 != 0.0)) {
+        r1_ = (c_10 / q_6);
     }
-    if ((a_24 != 0.0)) {
-        r2_2 = (q_5 / a_24);
+    if ((a_35 != 0.0)) {
+        r2_2 = (q_6 / a_35);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3337,15 +3430,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_25 = (sigma_11 * g_15.d_el);
+    float a_36 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
-    if ((a_25 > 0.0)) {
-        y1_1 = (d_3 / (a_25 + root_1));
+    float root_1 = sqrt(((a_36 * a_36) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_36) / d_3);
+    if ((a_36 > 0.0)) {
+        y1_1 = (d_3 / (a_36 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -3507,13 +3600,13 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                         float _e94 = cuts[min(uint((_e90 + 1u)), 3u)];
                         if ((_e89 > _e94)) {
                             uint _e96 = j_2;
-                            float t_6 = cuts[min(uint(_e96), 3u)];
+                            float t_7 = cuts[min(uint(_e96), 3u)];
                             uint _e99 = j_2;
                             uint _e101 = j_2;
                             float _e105 = cuts[min(uint((_e101 + 1u)), 3u)];
                             cuts[min(uint(_e99), 3u)] = _e105;
                             uint _e106 = j_2;
-                            cuts[min(uint((_e106 + 1u)), 3u)] = t_6;
+                            cuts[min(uint((_e106 + 1u)), 3u)] = t_7;
                         }
                     }
                 }
@@ -3649,7 +3742,7 @@ float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17)
     bool _e99 = local_42;
     if (_e99) {
         const float2 _e100[4] = airlight_gauss_rule();
-        float half_15 = (span_2 * 0.5);
+        float half_16 = (span_2 * 0.5);
         uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
         bool loop_init_21 = true;
         while(true) {
@@ -3667,12 +3760,12 @@ float airlight_on_line(AirlightScene s_13, AirlightCanonical g_17)
             }
             {
                 uint _e110 = i_15;
-                float s_lo = (s0_ + (half_15 * (1.0 - _e100[min(uint(_e110), 3u)].x)));
+                float s_lo = (s0_ + (half_16 * (1.0 - _e100[min(uint(_e110), 3u)].x)));
                 uint _e117 = i_15;
-                float s_hi = (s0_ + (half_15 * (1.0 + _e100[min(uint(_e117), 3u)].x)));
+                float s_hi = (s0_ + (half_16 * (1.0 + _e100[min(uint(_e117), 3u)].x)));
                 float _e124 = j_3;
                 uint _e125 = i_15;
-                j_3 = (_e124 + (_e100[min(uint(_e125), 3u)].y * ((((half_15 / s_lo) * (s0_ / s_lo)) * exp((-(two_st) * (s_lo - s0_)))) + (((half_15 / s_hi) * (s0_ / s_hi)) * exp((-(two_st) * (s_hi - s0_)))))));
+                j_3 = (_e124 + (_e100[min(uint(_e125), 3u)].y * ((((half_16 / s_lo) * (s0_ / s_lo)) * exp((-(two_st) * (s_lo - s0_)))) + (((half_16 / s_hi) * (s0_ / s_hi)) * exp((-(two_st) * (s_hi - s0_)))))));
             }
         }
         float _e155 = j_3;
@@ -3768,7 +3861,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float _e49 = dv_2;
     float _e50 = dv_2;
     bool _e51 = infinite_1;
-    AirlightHalf half_16 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    AirlightHalf half_17 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     const bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
         x_12 = (big_h_3 * _e8);
@@ -3778,7 +3871,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
         }
     }
     float _e66 = x_12;
-    const float2 _e67 = airlight_moment_zero_weighted(half_16, _e66);
+    const float2 _e67 = airlight_moment_zero_weighted(half_17, _e66);
     const float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
     const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
@@ -4169,8 +4262,8 @@ bool airlight_normalisable(float3 v_2)
 float3 airlight_normalize(float3 v_3)
 {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_3 = (v_3 / (m_8).xxx);
-    return (u_3 / (length(u_3)).xxx);
+    float3 u_5 = (v_3 / (m_8).xxx);
+    return (u_5 / (length(u_5)).xxx);
 }
 
 bool airlight_valid(AirlightScene s_18)
@@ -4214,6 +4307,20 @@ bool airlight_valid(AirlightScene s_18)
     bool local_106 = (bool)0;
     bool local_107 = (bool)0;
     bool local_108 = (bool)0;
+    bool local_109 = (bool)0;
+    bool local_110 = (bool)0;
+    bool local_111 = (bool)0;
+    bool local_112 = (bool)0;
+    bool local_113 = (bool)0;
+    bool local_114 = (bool)0;
+    bool local_115 = (bool)0;
+    bool local_116 = (bool)0;
+    bool local_117 = (bool)0;
+    bool local_118 = (bool)0;
+    bool local_119 = (bool)0;
+    bool local_120 = (bool)0;
+    bool local_121 = (bool)0;
+    bool local_122 = (bool)0;
 
     const bool _e2 = airlight_vec_finite(s_18.origin);
     if (_e2) {
@@ -4312,82 +4419,192 @@ bool airlight_valid(AirlightScene s_18)
         bool _e95 = local_83;
         ok = _e95;
     } else {
-        if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
-            ok = false;
+        if ((s_18.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+            local_84 = (s_18.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_84 = false;
+        }
+        bool _e105 = local_84;
+        if (_e105) {
+            bool _e106 = ok;
+            if (_e106) {
+                local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+            } else {
+                local_85 = false;
+            }
+            bool _e113 = local_85;
+            if (_e113) {
+                local_86 = (s_18.light_param_b >= 1.0);
+            } else {
+                local_86 = false;
+            }
+            bool _e120 = local_86;
+            if (_e120) {
+                local_87 = (s_18.light_param_b <= 1024.0);
+            } else {
+                local_87 = false;
+            }
+            bool _e127 = local_87;
+            if (_e127) {
+                local_88 = (frac(s_18.light_param_b) == 0.0);
+            } else {
+                local_88 = false;
+            }
+            bool _e135 = local_88;
+            ok = _e135;
+            if ((s_18.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
+                bool _e139 = ok;
+                if (_e139) {
+                    const bool _e143 = airlight_vec_finite(s_18.light_axis);
+                    local_89 = _e143;
+                } else {
+                    local_89 = false;
+                }
+                bool _e145 = local_89;
+                if (_e145) {
+                    const bool _e149 = airlight_normalisable(s_18.light_axis);
+                    local_90 = _e149;
+                } else {
+                    local_90 = false;
+                }
+                bool _e151 = local_90;
+                if (_e151) {
+                    const bool _e155 = airlight_vec_finite(s_18.light_end);
+                    local_91 = _e155;
+                } else {
+                    local_91 = false;
+                }
+                bool _e157 = local_91;
+                if (_e157) {
+                    const bool _e161 = airlight_normalisable(s_18.light_end);
+                    local_92 = _e161;
+                } else {
+                    local_92 = false;
+                }
+                bool _e163 = local_92;
+                if (_e163) {
+                    const float3 _e167 = airlight_normalize(s_18.light_axis);
+                    const float3 _e169 = airlight_normalize(s_18.light_end);
+                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_93 = false;
+                }
+                bool _e175 = local_93;
+                ok = _e175;
+            } else {
+                bool _e176 = ok;
+                if (_e176) {
+                    const bool _e180 = airlight_is_finite(s_18.light_param_a);
+                    local_94 = _e180;
+                } else {
+                    local_94 = false;
+                }
+                bool _e182 = local_94;
+                if (_e182) {
+                    local_95 = (s_18.light_param_a >= 0.0);
+                } else {
+                    local_95 = false;
+                }
+                bool _e189 = local_95;
+                ok = _e189;
+                if ((s_18.light_shape == AIRLIGHT_SHAPE_DISC)) {
+                    bool _e193 = ok;
+                    if (_e193) {
+                        const bool _e197 = airlight_vec_finite(s_18.light_axis);
+                        local_96 = _e197;
+                    } else {
+                        local_96 = false;
+                    }
+                    bool _e199 = local_96;
+                    if (_e199) {
+                        const bool _e203 = airlight_normalisable(s_18.light_axis);
+                        local_97 = _e203;
+                    } else {
+                        local_97 = false;
+                    }
+                    bool _e205 = local_97;
+                    ok = _e205;
+                }
+            }
+        } else {
+            if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
+                ok = false;
+            }
         }
     }
     if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_84 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_98 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_84 = true;
+        local_98 = true;
     }
-    bool _e110 = local_84;
-    if (_e110) {
-        bool _e111 = ok;
-        if (_e111) {
-            const bool _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_85 = _e115;
+    bool _e220 = local_98;
+    if (_e220) {
+        bool _e221 = ok;
+        if (_e221) {
+            const bool _e225 = airlight_is_finite(s_18.brdf_scale);
+            local_99 = _e225;
         } else {
-            local_85 = false;
+            local_99 = false;
         }
-        bool _e117 = local_85;
-        if (_e117) {
-            local_86 = (s_18.brdf_scale >= 0.0);
+        bool _e227 = local_99;
+        if (_e227) {
+            local_100 = (s_18.brdf_scale >= 0.0);
         } else {
-            local_86 = false;
+            local_100 = false;
         }
-        bool _e124 = local_86;
-        if (_e124) {
-            local_87 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+        bool _e234 = local_100;
+        if (_e234) {
+            local_101 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_87 = false;
+            local_101 = false;
         }
-        bool _e131 = local_87;
-        if (_e131) {
-            local_88 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        bool _e241 = local_101;
+        if (_e241) {
+            local_102 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_88 = false;
+            local_102 = false;
         }
-        bool _e138 = local_88;
-        if (_e138) {
-            const float _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
-            const bool _e145 = airlight_is_finite(_e144);
-            local_89 = _e145;
+        bool _e248 = local_102;
+        if (_e248) {
+            const float _e254 = airlight_safe_length((s_18.light_position - s_18.origin));
+            const bool _e255 = airlight_is_finite(_e254);
+            local_103 = _e255;
         } else {
-            local_89 = false;
+            local_103 = false;
         }
-        bool _e147 = local_89;
-        ok = _e147;
+        bool _e257 = local_103;
+        ok = _e257;
         if ((s_18.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-            bool _e151 = ok;
-            if (_e151) {
-                const bool _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_90 = _e155;
+            bool _e261 = ok;
+            if (_e261) {
+                const bool _e265 = airlight_is_finite(s_18.brdf_exponent);
+                local_104 = _e265;
             } else {
-                local_90 = false;
+                local_104 = false;
             }
-            bool _e157 = local_90;
-            if (_e157) {
-                local_91 = (s_18.brdf_exponent >= 0.0);
+            bool _e267 = local_104;
+            if (_e267) {
+                local_105 = (s_18.brdf_exponent >= 0.0);
             } else {
-                local_91 = false;
+                local_105 = false;
             }
-            bool _e164 = local_91;
-            if (_e164) {
-                const bool _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_92 = _e168;
+            bool _e274 = local_105;
+            if (_e274) {
+                const bool _e278 = airlight_vec_finite(s_18.brdf_view);
+                local_106 = _e278;
             } else {
-                local_92 = false;
+                local_106 = false;
             }
-            bool _e170 = local_92;
-            if (_e170) {
-                const bool _e174 = airlight_normalisable(s_18.brdf_view);
-                local_93 = _e174;
+            bool _e280 = local_106;
+            if (_e280) {
+                const bool _e284 = airlight_normalisable(s_18.brdf_view);
+                local_107 = _e284;
             } else {
-                local_93 = false;
+                local_107 = false;
             }
-            bool _e176 = local_93;
-            ok = _e176;
+            bool _e286 = local_107;
+            ok = _e286;
         }
     } else {
         if ((s_18.surface_kind != AIRLIGHT_SURFACE_NONE)) {
@@ -4395,76 +4612,76 @@ bool airlight_valid(AirlightScene s_18)
         }
     }
     if ((s_18.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-        bool _e184 = ok;
-        if (_e184) {
-            const bool _e188 = airlight_vec_finite(s_18.light_axis);
-            local_94 = _e188;
+        bool _e294 = ok;
+        if (_e294) {
+            const bool _e298 = airlight_vec_finite(s_18.light_axis);
+            local_108 = _e298;
         } else {
-            local_94 = false;
+            local_108 = false;
         }
-        bool _e190 = local_94;
-        if (_e190) {
-            const bool _e194 = airlight_normalisable(s_18.light_axis);
-            local_95 = _e194;
+        bool _e300 = local_108;
+        if (_e300) {
+            const bool _e304 = airlight_normalisable(s_18.light_axis);
+            local_109 = _e304;
         } else {
-            local_95 = false;
+            local_109 = false;
         }
-        bool _e196 = local_95;
-        if (_e196) {
-            local_96 = (s_18.light_param_a >= 0.0);
+        bool _e306 = local_109;
+        if (_e306) {
+            local_110 = (s_18.light_param_a >= 0.0);
         } else {
-            local_96 = false;
+            local_110 = false;
         }
-        bool _e203 = local_96;
-        if (_e203) {
-            local_97 = (s_18.light_param_a <= 1024.0);
+        bool _e313 = local_110;
+        if (_e313) {
+            local_111 = (s_18.light_param_a <= 1024.0);
         } else {
-            local_97 = false;
+            local_111 = false;
         }
-        bool _e210 = local_97;
-        if (_e210) {
-            local_98 = (frac((s_18.light_param_a * 0.5)) == 0.0);
+        bool _e320 = local_111;
+        if (_e320) {
+            local_112 = (frac((s_18.light_param_a * 0.5)) == 0.0);
         } else {
-            local_98 = false;
+            local_112 = false;
         }
-        bool _e220 = local_98;
-        ok = _e220;
+        bool _e330 = local_112;
+        ok = _e330;
     } else {
         if ((s_18.light_kind == AIRLIGHT_LIGHT_SPOT)) {
-            bool _e224 = ok;
-            if (_e224) {
-                const bool _e228 = airlight_vec_finite(s_18.light_axis);
-                local_99 = _e228;
+            bool _e334 = ok;
+            if (_e334) {
+                const bool _e338 = airlight_vec_finite(s_18.light_axis);
+                local_113 = _e338;
             } else {
-                local_99 = false;
+                local_113 = false;
             }
-            bool _e230 = local_99;
-            if (_e230) {
-                const bool _e234 = airlight_normalisable(s_18.light_axis);
-                local_100 = _e234;
+            bool _e340 = local_113;
+            if (_e340) {
+                const bool _e344 = airlight_normalisable(s_18.light_axis);
+                local_114 = _e344;
             } else {
-                local_100 = false;
+                local_114 = false;
             }
-            bool _e236 = local_100;
-            if (_e236) {
-                local_101 = (s_18.light_param_b < s_18.light_param_a);
+            bool _e346 = local_114;
+            if (_e346) {
+                local_115 = (s_18.light_param_b < s_18.light_param_a);
             } else {
-                local_101 = false;
+                local_115 = false;
             }
-            bool _e243 = local_101;
-            if (_e243) {
-                local_102 = (s_18.light_param_b >= -1.0);
+            bool _e353 = local_115;
+            if (_e353) {
+                local_116 = (s_18.light_param_b >= -1.0);
             } else {
-                local_102 = false;
+                local_116 = false;
             }
-            bool _e250 = local_102;
-            if (_e250) {
-                local_103 = (s_18.light_param_a <= 1.0);
+            bool _e360 = local_116;
+            if (_e360) {
+                local_117 = (s_18.light_param_a <= 1.0);
             } else {
-                local_103 = false;
+                local_117 = false;
             }
-            bool _e257 = local_103;
-            ok = _e257;
+            bool _e367 = local_117;
+            ok = _e367;
         } else {
             if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
@@ -4480,43 +4697,43 @@ bool airlight_valid(AirlightScene s_18)
         case 2u:
         case 3u:
         case 4u: {
-            bool _e267 = ok;
-            if (_e267) {
-                local_104 = g_ok;
+            bool _e377 = ok;
+            if (_e377) {
+                local_118 = g_ok;
             } else {
-                local_104 = false;
+                local_118 = false;
             }
-            bool _e271 = local_104;
-            ok = _e271;
+            bool _e381 = local_118;
+            ok = _e381;
             break;
         }
         case 5u: {
-            bool _e272 = ok;
-            if (_e272) {
-                local_105 = g_ok;
+            bool _e382 = ok;
+            if (_e382) {
+                local_119 = g_ok;
             } else {
-                local_105 = false;
+                local_119 = false;
             }
-            bool _e276 = local_105;
-            if (_e276) {
-                local_106 = (abs(s_18.phase_param_b) < 1.0);
+            bool _e386 = local_119;
+            if (_e386) {
+                local_120 = (abs(s_18.phase_param_b) < 1.0);
             } else {
-                local_106 = false;
+                local_120 = false;
             }
-            bool _e284 = local_106;
-            if (_e284) {
-                local_107 = (s_18.phase_param_c >= 0.0);
+            bool _e394 = local_120;
+            if (_e394) {
+                local_121 = (s_18.phase_param_c >= 0.0);
             } else {
-                local_107 = false;
+                local_121 = false;
             }
-            bool _e291 = local_107;
-            if (_e291) {
-                local_108 = (s_18.phase_param_c <= 1.0);
+            bool _e401 = local_121;
+            if (_e401) {
+                local_122 = (s_18.phase_param_c <= 1.0);
             } else {
-                local_108 = false;
+                local_122 = false;
             }
-            bool _e298 = local_108;
-            ok = _e298;
+            bool _e408 = local_122;
+            ok = _e408;
             break;
         }
         default: {
@@ -4524,8 +4741,8 @@ bool airlight_valid(AirlightScene s_18)
             break;
         }
     }
-    bool _e300 = ok;
-    return _e300;
+    bool _e410 = ok;
+    return _e410;
 }
 
 AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, bool arg6) {
@@ -4558,10 +4775,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_19)
         float3 _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_19.flags & 1u) != 0u);
+    bool infinite_4 = ((s_19.flags & 1u) != 0u);
     float3 _e32 = a_12;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, (infinite_3 ? 0.0 : s_19.t_max), infinite_3);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, (infinite_4 ? 0.0 : s_19.t_max), infinite_4);
     return airlightcanonical;
 }
 
@@ -4575,9 +4792,9 @@ float2 airlight_two_sum(float a_13, float b_10, uint key_1)
     const float _e4 = airlight_opaque((a_13 + b_10), key_1);
     const float _e6 = airlight_opaque((_e4 - a_13), key_1);
     const float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_2 = ((a_13 - _e8) + (b_10 - _e6));
-    const bool _e12 = airlight_is_finite(e_2);
-    return float2(_e4, (_e12 ? e_2 : 0.0));
+    float e_6 = ((a_13 - _e8) + (b_10 - _e6));
+    const bool _e12 = airlight_is_finite(e_6);
+    return float2(_e4, (_e12 ? e_6 : 0.0));
 }
 
 float airlight_split_high(float x_14)
@@ -4592,9 +4809,9 @@ float2 airlight_two_product(float a_14, float b_11, uint key_2)
     float al = (a_14 - _e5);
     const float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    const bool _e17 = airlight_is_finite(e_3);
-    return float2(_e4, (_e17 ? e_3 : 0.0));
+    float e_7 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_7);
+    return float2(_e4, (_e17 ? e_7 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3)
@@ -4608,62 +4825,62 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_109 = (bool)0;
-    bool local_110 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_110 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_110 = false;
+            local_124 = false;
         }
-        bool _e21 = local_110;
-        local_109 = _e21;
+        bool _e21 = local_124;
+        local_123 = _e21;
     } else {
-        local_109 = true;
+        local_123 = true;
     }
-    bool _e23 = local_109;
+    bool _e23 = local_123;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
 {
-    bool local_111 = (bool)0;
+    bool local_125 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_112 = (bool)0;
+    bool local_126 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
     uint key_4 = uint((s_20.flags > 1u));
     const float2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
     const float2 _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
     const float2 _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
-    float3 hi_4 = float3(_e11.x, _e17.x, _e23.x);
-    float3 lo_5 = float3(_e11.y, _e17.y, _e23.y);
+    float3 hi_5 = float3(_e11.x, _e17.x, _e23.x);
+    float3 lo_6 = float3(_e11.y, _e17.y, _e23.y);
     float3 dir_2 = s_20.dir;
-    const bool _e33 = airlight_in_exact_range(hi_4);
+    const bool _e33 = airlight_in_exact_range(hi_5);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir_2);
-        local_111 = !(_e38);
+        local_125 = !(_e38);
     } else {
-        local_111 = true;
+        local_125 = true;
     }
-    bool _e41 = local_111;
+    bool _e41 = local_125;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
     }
-    const float _e46 = airlight_diff_of_products(hi_4.y, dir_2.z, hi_4.z, dir_2.y, key_4);
-    const float _e59 = airlight_diff_of_products(hi_4.z, dir_2.x, hi_4.x, dir_2.z, key_4);
-    const float _e72 = airlight_diff_of_products(hi_4.x, dir_2.y, hi_4.y, dir_2.x, key_4);
-    float3 w_6 = float3((_e46 + ((lo_5.y * dir_2.z) - (lo_5.z * dir_2.y))), (_e59 + ((lo_5.z * dir_2.x) - (lo_5.x * dir_2.z))), (_e72 + ((lo_5.x * dir_2.y) - (lo_5.y * dir_2.x))));
-    const bool _e82 = airlight_vec_finite(w_6);
+    const float _e46 = airlight_diff_of_products(hi_5.y, dir_2.z, hi_5.z, dir_2.y, key_4);
+    const float _e59 = airlight_diff_of_products(hi_5.z, dir_2.x, hi_5.x, dir_2.z, key_4);
+    const float _e72 = airlight_diff_of_products(hi_5.x, dir_2.y, hi_5.y, dir_2.x, key_4);
+    float3 w_7 = float3((_e46 + ((lo_6.y * dir_2.z) - (lo_6.z * dir_2.y))), (_e59 + ((lo_6.z * dir_2.x) - (lo_6.x * dir_2.z))), (_e72 + ((lo_6.x * dir_2.y) - (lo_6.y * dir_2.x))));
+    const bool _e82 = airlight_vec_finite(w_7);
     if (!(_e82)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_6);
+    const float _e85 = airlight_safe_length(w_7);
     if ((_e85 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -4675,11 +4892,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_112 = (h_7 > 0.0);
+        local_126 = (h_7 > 0.0);
     } else {
-        local_112 = false;
+        local_126 = false;
     }
-    bool _e101 = local_112;
+    bool _e101 = local_126;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
@@ -4689,11 +4906,11 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
         a_16 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir_2);
-    const float3 _e114 = airlight_normalize(w_6);
-    float3 n_3 = -(cross(_e113, _e114));
+    const float3 _e114 = airlight_normalize(w_7);
+    float3 n_5 = -(cross(_e113, _e114));
     out_2.h = h_7;
     float3 _e119 = a_16;
-    out_2.d_c = dot(n_3, _e119);
+    out_2.d_c = dot(n_5, _e119);
     AirlightCanonical _e121 = out_2;
     const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
@@ -5032,14 +5249,86 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1)
     return airlightlistscan;
 }
 
+AirlightSplit ConstructAirlightSplit(bool arg0, float arg1, float arg2, float arg3, uint arg4) {
+    AirlightSplit ret = (AirlightSplit)0;
+    ret.split = arg0;
+    ret.lo = arg1;
+    ret.mid = arg2;
+    ret.hi = arg3;
+    ret.slot = arg4;
+    return ret;
+}
+
+AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance)
+{
+    uint tries = 0u;
+    bool local_127 = (bool)0;
+    bool local_128 = (bool)0;
+    bool local_129 = (bool)0;
+
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
+    while(true) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e57 = tries;
+            tries = (_e57 + 1u);
+        }
+        loop_init_22 = false;
+        uint _e6 = tries;
+        if ((_e6 < max_panels)) {
+        } else {
+            break;
+        }
+        {
+            AirlightPanelList _e8 = list_1;
+            const AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
+            if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
+                local_127 = (count_2 == max_panels);
+            } else {
+                local_127 = true;
+            }
+            bool _e21 = local_127;
+            if (!(_e21)) {
+                const bool _e26 = airlight_is_finite(_e9.total);
+                local_128 = !(_e26);
+            } else {
+                local_128 = true;
+            }
+            bool _e29 = local_128;
+            if (_e29) {
+                break;
+            }
+            AirlightPanelList _e30 = list_1;
+            const float4 _e32 = airlight_list_get(_e30, _e9.worst);
+            float mid_1 = (0.5 * (_e32.x + _e32.y));
+            if ((mid_1 > _e32.x)) {
+                local_129 = (mid_1 < _e32.y);
+            } else {
+                local_129 = false;
+            }
+            bool _e45 = local_129;
+            if (!(_e45)) {
+                airlight_list_set(list_1, _e9.worst, float4(_e32.xyz, 0.0));
+                continue;
+            }
+            const AirlightSplit airlightsplit = ConstructAirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+            return airlightsplit;
+        }
+    }
+    const AirlightSplit airlightsplit_1 = ConstructAirlightSplit(false, 0.0, 0.0, 0.0, 0u);
+    return airlightsplit_1;
+}
+
 float airlight_asinh(float x_15)
 {
     float r_4 = (float)0;
 
-    float a_26 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_26));
-    if ((a_26 <= 4096.0)) {
-        const float _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1.0 + sqrt((1.0 + (a_26 * a_26)))))));
+    float a_37 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_37));
+    if ((a_37 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_37 + ((a_37 * a_37) / (1.0 + sqrt((1.0 + (a_37 * a_37)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5059,16 +5348,16 @@ float airlight_to_w(AirlightOuter g_21, float s_21)
 float2 airlight_cos_sin_half_turn(float x_16)
 {
     float r_12 = (x_16 - 1.5707964);
-    float z_12 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0)))))))))))))));
+    float z_13 = (r_12 * r_12);
+    float cos_r = (1.0 - ((z_13 / 2.0) * (1.0 - ((z_13 / 12.0) * (1.0 - ((z_13 / 30.0) * (1.0 - ((z_13 / 56.0) * (1.0 - ((z_13 / 90.0) * (1.0 - ((z_13 / 132.0) * (1.0 - (z_13 / 182.0))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_13 / 6.0) * (1.0 - ((z_13 / 20.0) * (1.0 - ((z_13 / 42.0) * (1.0 - ((z_13 / 72.0) * (1.0 - ((z_13 / 110.0) * (1.0 - ((z_13 / 156.0) * (1.0 - (z_13 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
 float airlight_acos(float x_17)
 {
-    float a_27 = abs(x_17);
-    const float _e8 = airlight_atan(sqrt(((1.0 - a_27) / (1.0 + a_27))));
+    float a_38 = abs(x_17);
+    const float _e8 = airlight_atan(sqrt(((1.0 - a_38) / (1.0 + a_38))));
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -5080,12 +5369,12 @@ float airlight_angle(float c_6, float s_22)
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
 {
-    float a_28 = (cos_a * cos_g);
+    float a_39 = (cos_a * cos_g);
     float b_18 = (sin_a * sin_g);
-    if ((b_18 <= abs(a_28))) {
-        return ((a_28 > 0.0) ? AIRLIGHT_PI : 0.0);
+    if ((b_18 <= abs(a_39))) {
+        return ((a_39 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    const float _e18 = airlight_acos(clamp((-(a_28) / b_18), -1.0, 1.0));
+    const float _e18 = airlight_acos(clamp((-(a_39) / b_18), -1.0, 1.0));
     return _e18;
 }
 
@@ -5115,10 +5404,10 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels)
+AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels_1)
 {
     float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_23.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_23.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_1, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
     return airlightouter;
 }
 
@@ -5137,33 +5426,33 @@ airlight_ret_Constructarray6_float_ airlight_Constructarray6_float_(float arg0, 
 AirlightOuter airlight_surface(AirlightScene s_24)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_113 = (bool)0;
+    bool local_130 = (bool)0;
     float3 u_1 = (float3)0;
     float cuts_1[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_18 = 1u;
     uint j_4 = (uint)0;
-    bool local_114 = (bool)0;
+    bool local_131 = (bool)0;
     uint k_5 = 0u;
     uint i_19 = 0u;
-    bool local_115 = (bool)0;
+    bool local_132 = (bool)0;
     uint i_20 = 0u;
     uint i_21 = 1u;
-    bool local_116 = (bool)0;
-    bool local_117 = (bool)0;
-    bool local_118 = (bool)0;
-    bool local_119 = (bool)0;
-    bool local_120 = (bool)0;
+    bool local_133 = (bool)0;
+    bool local_134 = (bool)0;
+    bool local_135 = (bool)0;
+    bool local_136 = (bool)0;
+    bool local_137 = (bool)0;
 
     const AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     float3 to_light_1 = (s_24.light_position - s_24.origin);
     const float _e7 = airlight_safe_length(to_light_1);
     if (!((s_24.intensity == 0.0))) {
-        local_113 = (s_24.sigma_s == 0.0);
+        local_130 = (s_24.sigma_s == 0.0);
     } else {
-        local_113 = true;
+        local_130 = true;
     }
-    bool _e18 = local_113;
+    bool _e18 = local_130;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5204,30 +5493,30 @@ AirlightOuter airlight_surface(AirlightScene s_24)
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
     const float _e92 = airlight_angle(cos_a_1, _e41);
-    float first = abs((1.5707964 - _e92));
-    cuts_1[0] = first;
-    cuts_1[1] = (AIRLIGHT_PI - first);
+    float first_1 = abs((1.5707964 - _e92));
+    cuts_1[0] = first_1;
+    cuts_1[1] = (AIRLIGHT_PI - first_1);
     if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         const float3 _e105 = airlight_normalize(s_24.brdf_view);
         const float3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         float3 _e112 = u_1;
-        float x_28 = dot(_e111, _e112);
+        float x_32 = dot(_e111, _e112);
         float3 _e114 = u_1;
         float y_10 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_28 * x_28) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_32 * x_32) + (y_10 * y_10)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         const float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            const float _e140 = airlight_angle(x_28, abs(y_10));
+            const float _e140 = airlight_angle(x_32, abs(y_10));
             float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = float3(-(phi_r), (x_28 / _e145), (-(y_10) / _e149));
+            g_22.delta = float3(-(phi_r), (x_32 / _e145), (-(y_10) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5261,16 +5550,16 @@ AirlightOuter airlight_surface(AirlightScene s_24)
     float _e218 = cuts_1[9];
     float _e220 = cuts_1[10];
     float kinks[6] = airlight_Constructarray6_float_(_e210, _e212, _e214, _e216, _e218, _e220);
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_22) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_23) {
             uint _e258 = i_18;
             i_18 = (_e258 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e224 = i_18;
         if ((_e224 < 11u)) {
         } else {
@@ -5278,22 +5567,22 @@ AirlightOuter airlight_surface(AirlightScene s_24)
         }
         {
             uint _e227 = i_18;
-            float c_10 = cuts_1[min(uint(_e227), 10u)];
+            float c_11 = cuts_1[min(uint(_e227), 10u)];
             uint _e230 = i_18;
             j_4 = _e230;
-            uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
             while(true) {
-                if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 uint _e232 = j_4;
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_1[min(uint((_e237 - 1u)), 10u)];
-                    local_114 = (_e241 > c_10);
+                    local_131 = (_e241 > c_11);
                 } else {
-                    local_114 = false;
+                    local_131 = false;
                 }
-                bool _e244 = local_114;
+                bool _e244 = local_131;
                 if (_e244) {
                 } else {
                     break;
@@ -5308,21 +5597,21 @@ AirlightOuter airlight_surface(AirlightScene s_24)
                 }
             }
             uint _e255 = j_4;
-            cuts_1[min(uint(_e255), 10u)] = c_10;
+            cuts_1[min(uint(_e255), 10u)] = c_11;
         }
     }
-    float hi_5 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
-    g_22.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
-    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    float hi_6 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1));
+    g_22.gamma[0] = ((cos_a_1 < 0.0) ? first_1 : 0.0);
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_24) {
             uint _e305 = i_19;
             i_19 = (_e305 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_24 = false;
         uint _e276 = i_19;
         if ((_e276 < 11u)) {
         } else {
@@ -5336,11 +5625,11 @@ AirlightOuter airlight_surface(AirlightScene s_24)
             if ((_e281 > _e285)) {
                 uint _e289 = i_19;
                 float _e291 = cuts_1[min(uint(_e289), 10u)];
-                local_115 = (_e291 < hi_5);
+                local_132 = (_e291 < hi_6);
             } else {
-                local_115 = false;
+                local_132 = false;
             }
-            bool _e294 = local_115;
+            bool _e294 = local_132;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5352,19 +5641,19 @@ AirlightOuter airlight_surface(AirlightScene s_24)
         }
     }
     uint _e308 = k_5;
-    g_22.gamma[min(uint((_e308 + 1u)), 12u)] = hi_5;
+    g_22.gamma[min(uint((_e308 + 1u)), 12u)] = hi_6;
     uint _e313 = k_5;
     g_22.panels = (_e313 + 1u);
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e328 = i_20;
             i_20 = (_e328 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e318 = i_20;
         uint _e320 = g_22.panels;
         if ((_e318 <= _e320)) {
@@ -5378,16 +5667,16 @@ AirlightOuter airlight_surface(AirlightScene s_24)
         }
     }
     if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-        uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-        bool loop_init_25 = true;
+        uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+        bool loop_init_26 = true;
         while(true) {
-            if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_25) {
+            if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+            loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+            if (!loop_init_26) {
                 uint _e388 = i_21;
                 i_21 = (_e388 + 1u);
             }
-            loop_init_25 = false;
+            loop_init_26 = false;
             uint _e335 = i_21;
             uint _e336 = k_5;
             if ((_e335 <= _e336)) {
@@ -5396,37 +5685,37 @@ AirlightOuter airlight_surface(AirlightScene s_24)
             }
             {
                 uint _e339 = i_21;
-                float e_4 = g_22.gamma[min(uint(_e339), 12u)];
-                if (!((e_4 == kinks[0]))) {
-                    local_116 = (e_4 == kinks[1]);
+                float e_8 = g_22.gamma[min(uint(_e339), 12u)];
+                if (!((e_8 == kinks[0]))) {
+                    local_133 = (e_8 == kinks[1]);
                 } else {
-                    local_116 = true;
+                    local_133 = true;
                 }
-                bool _e350 = local_116;
+                bool _e350 = local_133;
                 if (!(_e350)) {
-                    local_117 = (e_4 == kinks[2]);
+                    local_134 = (e_8 == kinks[2]);
                 } else {
-                    local_117 = true;
+                    local_134 = true;
                 }
-                bool _e357 = local_117;
+                bool _e357 = local_134;
                 if (!(_e357)) {
-                    local_118 = (e_4 == kinks[3]);
+                    local_135 = (e_8 == kinks[3]);
                 } else {
-                    local_118 = true;
+                    local_135 = true;
                 }
-                bool _e364 = local_118;
+                bool _e364 = local_135;
                 if (!(_e364)) {
-                    local_119 = (e_4 == kinks[4]);
+                    local_136 = (e_8 == kinks[4]);
                 } else {
-                    local_119 = true;
+                    local_136 = true;
                 }
-                bool _e371 = local_119;
+                bool _e371 = local_136;
                 if (!(_e371)) {
-                    local_120 = (e_4 == kinks[5]);
+                    local_137 = (e_8 == kinks[5]);
                 } else {
-                    local_120 = true;
+                    local_137 = true;
                 }
-                bool kink = local_120;
+                bool kink = local_137;
                 uint _e380 = g_22.smooth_edges;
                 uint _e382 = i_21;
                 g_22.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
@@ -5440,7 +5729,7 @@ AirlightOuter airlight_surface(AirlightScene s_24)
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18)
 {
-    bool local_121 = (bool)0;
+    bool local_138 = (bool)0;
 
     const float2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
@@ -5451,11 +5740,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18)
     float clip_ = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_121 = (clip_ > 0.0);
+        local_138 = (clip_ > 0.0);
     } else {
-        local_121 = false;
+        local_138 = false;
     }
-    bool _e43 = local_121;
+    bool _e43 = local_138;
     if (_e43) {
         const float _e47 = airlight_log1p(-(fall));
         return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5476,7 +5765,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, boo
 float airlight_arc_end(float x_19, float cut)
 {
     float end_1 = (float)0;
-    bool local_122 = (bool)0;
+    bool local_139 = (bool)0;
 
     end_1 = x_19;
     float _e3 = end_1;
@@ -5493,11 +5782,11 @@ float airlight_arc_end(float x_19, float cut)
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_122 = (_e21 < cut);
+        local_139 = (_e21 < cut);
     } else {
-        local_122 = false;
+        local_139 = false;
     }
-    bool _e24 = local_122;
+    bool _e24 = local_139;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5515,32 +5804,32 @@ airlight_ret_airlight_lobe_rule airlight_lobe_rule()
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1)
 {
-    bool local_123 = (bool)0;
+    bool local_140 = (bool)0;
     float sum_5 = 0.0;
     uint k_6 = 0u;
 
-    float w_7 = (hi_3 - lo_4);
-    if (!(!((w_7 > 0.0)))) {
-        const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_7)));
-        local_123 = !((_e14 > 0.0));
+    float w_8 = (hi_3 - lo_4);
+    if (!(!((w_8 > 0.0)))) {
+        const float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_8)));
+        local_140 = !((_e14 > 0.0));
     } else {
-        local_123 = true;
+        local_140 = true;
     }
-    bool _e19 = local_123;
+    bool _e19 = local_140;
     if (_e19) {
         return 0.0;
     }
     const float2 _e21[5] = airlight_lobe_rule();
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_27) {
             uint _e43 = k_6;
             k_6 = (_e43 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e26 = k_6;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
@@ -5548,11 +5837,11 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
         }
         {
             uint _e29 = k_6;
-            float2 node = _e21[min(uint(_e29), 4u)];
+            float2 node_1 = _e21[min(uint(_e29), 4u)];
             float _e31 = sum_5;
-            const float _e34 = airlight_lobe_node(q_3, lo_4, w_7, node.x, smoothstep_1);
-            const float _e38 = airlight_lobe_node(q_3, lo_4, w_7, (1.0 - node.x), smoothstep_1);
-            sum_5 = (_e31 + (node.y * (_e34 + _e38)));
+            const float _e34 = airlight_lobe_node(q_3, lo_4, w_8, node_1.x, smoothstep_1);
+            const float _e38 = airlight_lobe_node(q_3, lo_4, w_8, (1.0 - node_1.x), smoothstep_1);
+            sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
     }
     float _e45 = sum_5;
@@ -5578,23 +5867,23 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     float sum_6 = 0.0;
     uint i_22 = 0u;
 
-    float c_11 = (g_23.cos_r * cs.x);
+    float c_12 = (g_23.cos_r * cs.x);
     float d_4 = (g_23.sin_r * cs.y);
-    float peak = (c_11 + d_4);
+    float peak = (c_12 + d_4);
     if (!((peak > 0.0))) {
         return 0.0;
     }
     const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_6 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_7 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_6.k) ? (_e48 / q_6.k) : 1.0);
+    float s2_1 = ((_e51 < q_7.k) ? (_e48 / q_7.k) : 1.0);
     const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -5613,16 +5902,16 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     float _e90 = inner.y;
     float edges[4] = airlight_Constructarray4_float_(0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e112 = i_22;
             i_22 = (_e112 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e99 = i_22;
         if ((_e99 < 3u)) {
         } else {
@@ -5632,7 +5921,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
             float _e102 = sum_6;
             uint _e103 = i_22;
             uint _e105 = i_22;
-            const float _e109 = airlight_lobe_piece(q_6, edges[min(uint(_e103), 3u)], edges[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            const float _e109 = airlight_lobe_piece(q_7, edges[min(uint(_e103), 3u)], edges[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -5649,33 +5938,33 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
 AirlightOuter airlight_outer(AirlightScene s_25)
 {
     AirlightOuter g_24 = (AirlightOuter)0;
-    bool local_124 = (bool)0;
-    bool local_125 = (bool)0;
+    bool local_141 = (bool)0;
+    bool local_142 = (bool)0;
     float s_star = 0.0;
     float t_star = (float)0;
-    bool local_126 = (bool)0;
-    bool local_127 = (bool)0;
-    bool local_128 = (bool)0;
-    bool local_129 = (bool)0;
-    bool local_130 = (bool)0;
-    bool local_131 = (bool)0;
+    bool local_143 = (bool)0;
+    bool local_144 = (bool)0;
+    bool local_145 = (bool)0;
+    bool local_146 = (bool)0;
+    bool local_147 = (bool)0;
+    bool local_148 = (bool)0;
     float scale = 0.0;
-    bool local_132 = (bool)0;
-    bool local_133 = (bool)0;
-    bool local_134 = (bool)0;
-    bool local_135 = (bool)0;
-    bool local_136 = (bool)0;
+    bool local_149 = (bool)0;
+    bool local_150 = (bool)0;
+    bool local_151 = (bool)0;
+    bool local_152 = (bool)0;
+    bool local_153 = (bool)0;
     float cuts_2[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = {0.0, 0.0, 0.0};
-    bool local_137 = (bool)0;
+    bool local_154 = (bool)0;
     uint i_23 = 0u;
-    bool local_138 = (bool)0;
-    bool local_139 = (bool)0;
-    bool local_140 = (bool)0;
-    bool local_141 = (bool)0;
+    bool local_155 = (bool)0;
+    bool local_156 = (bool)0;
+    bool local_157 = (bool)0;
+    bool local_158 = (bool)0;
     uint n_1 = 0u;
     uint i_24 = 0u;
-    bool local_142 = (bool)0;
+    bool local_159 = (bool)0;
 
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         const AirlightOuter _e4 = airlight_surface(s_25);
@@ -5692,31 +5981,31 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     float3 ab_1 = (s_25.light_end - s_25.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_124 = (s_25.intensity == 0.0);
+        local_141 = (s_25.intensity == 0.0);
     } else {
-        local_124 = true;
+        local_141 = true;
     }
-    bool _e26 = local_124;
+    bool _e26 = local_141;
     if (!(_e26)) {
-        local_125 = (s_25.sigma_s == 0.0);
+        local_142 = (s_25.sigma_s == 0.0);
     } else {
-        local_125 = true;
+        local_142 = true;
     }
-    bool _e34 = local_125;
+    bool _e34 = local_142;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
-    float3 e_5 = (ab_1 / (_e15).xxx);
+    float3 e_9 = (ab_1 / (_e15).xxx);
     const float3 _e41 = airlight_normalize(s_25.dir);
     float3 w0_ = (s_25.light_position - s_25.origin);
-    float cos_a_2 = dot(e_5, _e41);
-    float along_e = dot(e_5, w0_);
+    float cos_a_2 = dot(e_9, _e41);
+    float along_e = dot(e_9, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_25.flags & 1u) != 0u);
+    bool infinite_5 = ((s_25.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -5724,48 +6013,48 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
+    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_9 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_126 = (sin_a_1 > 0.0);
+        local_143 = (sin_a_1 > 0.0);
     } else {
-        local_126 = false;
+        local_143 = false;
     }
-    bool _e84 = local_126;
+    bool _e84 = local_143;
     if (_e84) {
         float _e87 = s_star;
-        local_127 = (_e87 >= 0.0);
+        local_144 = (_e87 >= 0.0);
     } else {
-        local_127 = false;
+        local_144 = false;
     }
-    bool _e91 = local_127;
+    bool _e91 = local_144;
     if (_e91) {
         float _e94 = s_star;
-        local_128 = (_e94 <= _e15);
+        local_145 = (_e94 <= _e15);
     } else {
-        local_128 = false;
+        local_145 = false;
     }
-    bool _e97 = local_128;
+    bool _e97 = local_145;
     if (_e97) {
         float _e101 = t_star;
-        local_129 = (s_25.t_min <= _e101);
+        local_146 = (s_25.t_min <= _e101);
     } else {
-        local_129 = false;
+        local_146 = false;
     }
-    bool _e104 = local_129;
+    bool _e104 = local_146;
     if (_e104) {
-        if (!(infinite_4)) {
+        if (!(infinite_5)) {
             float _e110 = t_star;
-            local_131 = (_e110 <= s_25.t_max);
+            local_148 = (_e110 <= s_25.t_max);
         } else {
-            local_131 = true;
+            local_148 = true;
         }
-        bool _e114 = local_131;
-        local_130 = _e114;
+        bool _e114 = local_148;
+        local_147 = _e114;
     } else {
-        local_130 = false;
+        local_147 = false;
     }
-    bool _e116 = local_130;
+    bool _e116 = local_147;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
@@ -5773,53 +6062,53 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_132 = (_e73 > 0.0);
+        local_149 = (_e73 > 0.0);
     } else {
-        local_132 = false;
+        local_149 = false;
     }
-    bool _e129 = local_132;
+    bool _e129 = local_149;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_133 = (_e136 < (_e15 + _e15));
+        local_150 = (_e136 < (_e15 + _e15));
     } else {
-        local_133 = false;
+        local_150 = false;
     }
-    bool _e140 = local_133;
+    bool _e140 = local_150;
     if (_e140) {
         float _e143 = scale;
-        local_134 = (_e143 < _e15);
+        local_151 = (_e143 < _e15);
     } else {
-        local_134 = false;
+        local_151 = false;
     }
-    bool near_1 = local_134;
+    bool near_1 = local_151;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_135 = _e154;
+        local_152 = _e154;
     } else {
-        local_135 = false;
+        local_152 = false;
     }
-    bool _e156 = local_135;
+    bool _e156 = local_152;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_136 = _e163;
+        local_153 = _e163;
     } else {
-        local_136 = false;
+        local_153 = false;
     }
-    bool _e165 = local_136;
+    bool _e165 = local_153;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_5;
+    g_24.e = e_9;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -5832,21 +6121,21 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         const float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         const float _e197 = airlight_to_w(_e196, _e15);
-        local_137 = (min(-(_e194), _e197) < 0.5);
+        local_154 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_137 = false;
+        local_154 = false;
     }
-    bool sliver = local_137;
-    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
+    bool sliver = local_154;
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    bool loop_init_29 = true;
     while(true) {
-        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (!loop_init_29) {
             uint _e252 = i_23;
             i_23 = (_e252 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_29 = false;
         uint _e205 = i_23;
         if ((_e205 < 3u)) {
         } else {
@@ -5855,31 +6144,31 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         {
             uint _e208 = i_23;
             if ((_e208 == 0u)) {
-                local_138 = sliver;
+                local_155 = sliver;
             } else {
-                local_138 = false;
+                local_155 = false;
             }
-            bool _e214 = local_138;
+            bool _e214 = local_155;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_23;
-                local_139 = (_e219 > 0u);
+                local_156 = (_e219 > 0u);
             } else {
-                local_139 = false;
+                local_156 = false;
             }
-            bool _e223 = local_139;
+            bool _e223 = local_156;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_23;
             if ((_e224 == 2u)) {
-                local_140 = infinite_4;
+                local_157 = infinite_5;
             } else {
-                local_140 = false;
+                local_157 = false;
             }
-            bool _e230 = local_140;
+            bool _e230 = local_157;
             if (_e230) {
                 continue;
             }
@@ -5888,11 +6177,11 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             if ((_e233 > 0.0)) {
                 uint _e238 = i_23;
                 float _e240 = at[min(uint(_e238), 2u)];
-                local_141 = (_e240 < _e15);
+                local_158 = (_e240 < _e15);
             } else {
-                local_141 = false;
+                local_158 = false;
             }
-            bool _e243 = local_141;
+            bool _e243 = local_158;
             if (_e243) {
                 uint _e244 = i_23;
                 AirlightOuter _e246 = g_24;
@@ -5906,42 +6195,42 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     float _e255 = cuts_2[1];
     float _e257 = cuts_2[0];
     if ((_e255 < _e257)) {
-        float c_12 = cuts_2[0];
+        float c_13 = cuts_2[0];
         float _e263 = cuts_2[1];
         cuts_2[0] = _e263;
-        cuts_2[1] = c_12;
+        cuts_2[1] = c_13;
     }
     float _e266 = cuts_2[2];
     float _e268 = cuts_2[1];
     if ((_e266 < _e268)) {
-        float c_13 = cuts_2[1];
+        float c_14 = cuts_2[1];
         float _e274 = cuts_2[2];
         cuts_2[1] = _e274;
-        cuts_2[2] = c_13;
+        cuts_2[2] = c_14;
     }
     float _e277 = cuts_2[1];
     float _e279 = cuts_2[0];
     if ((_e277 < _e279)) {
-        float c_14 = cuts_2[0];
+        float c_15 = cuts_2[0];
         float _e285 = cuts_2[1];
         cuts_2[0] = _e285;
-        cuts_2[1] = c_14;
+        cuts_2[1] = c_15;
     }
     AirlightOuter _e287 = g_24;
     const float _e288 = airlight_to_w(_e287, _e15);
     AirlightOuter _e291 = g_24;
     const float _e293 = airlight_to_w(_e291, 0.0);
     g_24.edges[0] = _e293;
-    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-    bool loop_init_29 = true;
+    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e327 = i_24;
             i_24 = (_e327 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e298 = i_24;
         if ((_e298 < 3u)) {
         } else {
@@ -5955,11 +6244,11 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             if ((_e303 > _e307)) {
                 uint _e311 = i_24;
                 float _e313 = cuts_2[min(uint(_e311), 2u)];
-                local_142 = (_e313 < _e288);
+                local_159 = (_e313 < _e288);
             } else {
-                local_142 = false;
+                local_159 = false;
             }
-            bool _e316 = local_142;
+            bool _e316 = local_159;
             if (_e316) {
                 uint _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5999,12 +6288,12 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
     float jacobian = (float)0;
-    bool local_143 = (bool)0;
-    bool local_144 = (bool)0;
-    bool local_145 = (bool)0;
-    bool local_146 = (bool)0;
-    bool local_147 = (bool)0;
-    bool local_148 = (bool)0;
+    bool local_160 = (bool)0;
+    bool local_161 = (bool)0;
+    bool local_162 = (bool)0;
+    bool local_163 = (bool)0;
+    bool local_164 = (bool)0;
+    bool local_165 = (bool)0;
     float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
@@ -6014,64 +6303,64 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_25 = min(airlight_naga_f2u32(max(floor(x_20), 0.0)), (g_25.panels - 1u));
-        float t_7 = (x_20 - float(i_25));
-        float a_29 = g_25.gamma[min(uint(i_25), 12u)];
-        float b_19 = g_25.gamma[min(uint((i_25 + 1u)), 12u)];
-        float w_8 = (b_19 - a_29);
-        float u_4 = (1.0 - t_7);
-        bool smooth_a = (((g_25.smooth_edges >> i_25) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_25 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_29 + (((w_8 * t_7) * t_7) * ((3.0 - t_7) - t_7)));
-        jacobian = (((w_8 * 6.0) * t_7) * u_4);
+        uint i_34 = min(airlight_naga_f2u32(max(floor(x_20), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_20 - float(i_34));
+        float a_40 = g_25.gamma[min(uint(i_34), 12u)];
+        float b_19 = g_25.gamma[min(uint((i_34 + 1u)), 12u)];
+        float w_9 = (b_19 - a_40);
+        float u_6 = (1.0 - t_8);
+        bool smooth_a = (((g_25.smooth_edges >> i_34) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_34 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
+        jacobian = (((w_9 * 6.0) * t_8) * u_6);
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_143 = !(smooth_a);
+            local_160 = !(smooth_a);
         } else {
-            local_143 = false;
+            local_160 = false;
         }
-        bool _e66 = local_143;
-        gamma_1 = (_e66 ? (a_29 + ((w_8 * t_7) * t_7)) : _e58);
+        bool _e66 = local_160;
+        gamma_1 = (_e66 ? (a_40 + ((w_9 * t_8) * t_8)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
-            local_144 = !(smooth_a);
+            local_161 = !(smooth_a);
         } else {
-            local_144 = false;
+            local_161 = false;
         }
-        bool _e75 = local_144;
-        jacobian = (_e75 ? (w_8 * (t_7 + t_7)) : _e68);
+        bool _e75 = local_161;
+        jacobian = (_e75 ? (w_9 * (t_8 + t_8)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
-            local_145 = !(smooth_b);
+            local_162 = !(smooth_b);
         } else {
-            local_145 = false;
+            local_162 = false;
         }
-        bool _e85 = local_145;
-        gamma_1 = (_e85 ? (b_19 - ((w_8 * u_4) * u_4)) : _e77);
+        bool _e85 = local_162;
+        gamma_1 = (_e85 ? (b_19 - ((w_9 * u_6) * u_6)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
-            local_146 = !(smooth_b);
+            local_163 = !(smooth_b);
         } else {
-            local_146 = false;
+            local_163 = false;
         }
-        bool _e94 = local_146;
-        jacobian = (_e94 ? (w_8 * (u_4 + u_4)) : _e87);
+        bool _e94 = local_163;
+        jacobian = (_e94 ? (w_9 * (u_6 + u_6)) : _e87);
         float _e96 = gamma_1;
         if (smooth_a) {
-            local_147 = smooth_b;
+            local_164 = smooth_b;
         } else {
-            local_147 = false;
+            local_164 = false;
         }
-        bool _e102 = local_147;
-        gamma_1 = (_e102 ? (a_29 + (w_8 * t_7)) : _e96);
+        bool _e102 = local_164;
+        gamma_1 = (_e102 ? (a_40 + (w_9 * t_8)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
-            local_148 = smooth_b;
+            local_165 = smooth_b;
         } else {
-            local_148 = false;
+            local_165 = false;
         }
-        bool _e108 = local_148;
-        jacobian = (_e108 ? w_8 : _e104);
+        bool _e108 = local_165;
+        jacobian = (_e108 ? w_9 : _e104);
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
             AirlightScene _e114 = p;
@@ -6091,10 +6380,10 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             float arc = (2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_4 = s_26.brdf_exponent;
+            float n_6 = s_26.brdf_exponent;
             float _e161 = gamma_1;
-            const float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_4);
-            weight = (((s_26.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162);
+            const float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
+            weight = (((s_26.brdf_scale * (n_6 + 2.0)) * 0.15915494) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0.0;
@@ -6128,133 +6417,1483 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     return airlightnode_4;
 }
 
-AirlightResult airlight_overflowed(AirlightResult r_5)
-{
-    bool local_149 = (bool)0;
-
-    const bool _e2 = airlight_is_finite(r_5.in_scatter);
-    if (!(!(_e2))) {
-        local_149 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
-    } else {
-        local_149 = true;
-    }
-    bool _e11 = local_149;
-    if (_e11) {
-        const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_8;
-    }
-    const AirlightResult airlightresult_9 = r_5;
-    return airlightresult_9;
+typedef float3 airlight_ret_Constructarray8_float3_[8];
+airlight_ret_Constructarray8_float3_ airlight_Constructarray8_float3_(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7) {
+    float3 ret[8] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7 };
+    return ret;
 }
 
-AirlightResult airlight_node_integral(AirlightNode n_2)
+typedef float3 airlight_ret_airlight_kronrod15_rule[8];
+airlight_ret_airlight_kronrod15_rule airlight_kronrod15_rule()
 {
-    AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_150 = (bool)0;
-    AirlightCanonical g_26 = (AirlightCanonical)0;
+    return airlight_Constructarray8_float3_(float3(0.9914554, 0.022935322, 0.0), float3(0.9491079, 0.06309209, 0.12948497), float3(0.8648644, 0.10479001, 0.0), float3(0.7415312, 0.14065325, 0.2797054), float3(0.5860872, 0.16900472, 0.0), float3(0.40584517, 0.19035058, 0.38183004), float3(0.20778495, 0.20443293, 0.0), float3(0.0, 0.20948215, 0.41795918));
+}
 
-    AirlightScene p_2 = n_2.scene;
-    const bool _e7 = airlight_vec_finite(p_2.light_position);
-    if (_e7) {
-        const bool _e11 = airlight_vec_finite(p_2.dir);
-        local_150 = _e11;
-    } else {
-        local_150 = false;
+typedef float3 airlight_ret_Constructarray32_float3_[32];
+airlight_ret_Constructarray32_float3_ airlight_Constructarray32_float3_(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float3 arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15, float3 arg16, float3 arg17, float3 arg18, float3 arg19, float3 arg20, float3 arg21, float3 arg22, float3 arg23, float3 arg24, float3 arg25, float3 arg26, float3 arg27, float3 arg28, float3 arg29, float3 arg30, float3 arg31) {
+    float3 ret[32] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31 };
+    return ret;
+}
+
+float3 airlight_azimuths(bool circle, uint i_25)
+{
+    float3 full[32] = airlight_Constructarray32_float3_(float3(-0.9885061, 0.15118112, 0.30328962), float3(-0.9885061, -0.15118112, 0.30328962), float3(-0.89875615, 0.43844885, 0.3004579), float3(-0.89875615, -0.43844885, 0.3004579), float3(-0.7304994, 0.68291336, 0.29482087), float3(-0.7304994, -0.68291336, 0.29482087), float3(-0.5039798, 0.86371547, 0.2864312), float3(-0.5039798, -0.86371547, 0.2864312), float3(-0.24457587, 0.9696302, 0.27536717), float3(-0.24457587, -0.9696302, 0.27536717), float3(0.021675006, 0.9997651, 0.26173213), float3(0.021675006, -0.9997651, 0.26173213), float3(0.27209276, 0.96227103, 0.24565338), float3(0.27209276, -0.96227103, 0.24565338), float3(0.49011236, 0.8716593, 0.22728102), float3(0.49011236, -0.8716593, 0.22728102), float3(0.6664385, 0.74556, 0.20678662), float3(0.6664385, -0.74556, 0.20678662), float3(0.7987099, 0.6017163, 0.18436152), float3(0.7987099, -0.6017163, 0.18436152), float3(0.8901028, 0.45575976, 0.16021512), float3(0.8901028, -0.45575976, 0.16021512), float3(0.9474216, 0.3199879, 0.13457294), float3(0.9474216, -0.3199879, 0.13457294), float3(0.97916293, 0.20307623, 0.10767452), float3(0.97916293, -0.20307623, 0.10767452), float3(0.9938787, 0.110476665, 0.079771526), float3(0.9938787, -0.110476665, 0.079771526), float3(0.99897856, 0.045187376, 0.05112752), float3(0.99897856, -0.045187376, 0.05112752), float3(0.99996305, 0.0085957255, 0.022049613), float3(0.99996305, -0.0085957255, 0.022049613));
+    float3 half_18[32] = airlight_Constructarray32_float3_(float3(0.9971224, -0.075808704, 0.15164481), float3(0.9971224, 0.075808704, 0.15164481), float3(0.97436035, -0.22499317, 0.15022895), float3(0.97436035, 0.22499317, 0.15022895), float3(0.930188, -0.36708352, 0.14741044), float3(0.930188, 0.36708352, 0.14741044), float3(0.8671735, -0.49800614, 0.1432156), float3(0.8671735, 0.49800614, 0.1432156), float3(0.7888523, -0.61458284, 0.13768359), float3(0.7888523, 0.61458284, 0.13768359), float3(0.69940156, -0.71472895, 0.13086607), float3(0.69940156, 0.71472895, 0.13086607), float3(0.6032857, -0.79752517, 0.12282669), float3(0.6032857, 0.79752517, 0.12282669), float3(0.5049196, -0.8631664, 0.11364051), float3(0.5049196, 0.8631664, 0.11364051), float3(0.40838796, -0.9128085, 0.10339331), float3(0.40838796, 0.9128085, 0.10339331), float3(0.31724605, -0.9483433, 0.09218076), float3(0.31724605, 0.9483433, 0.09218076), float3(0.23441115, -0.9721376, 0.08010756), float3(0.23441115, 0.9721376, 0.08010756), float3(0.16213939, -0.9867679, 0.06728647), float3(0.16213939, 0.9867679, 0.06728647), float3(0.10207122, -0.9947771, 0.05383726), float3(0.10207122, 0.9947771, 0.05383726), float3(0.05532306, -0.9984685, 0.039885763), float3(0.05532306, 0.9984685, 0.039885763), float3(0.02259946, -0.9997446, 0.02556376), float3(0.02259946, 0.9997446, 0.02556376), float3(0.0042979023, -0.99999076, 0.011024807), float3(0.0042979023, 0.99999076, 0.011024807));
+    return (circle ? full[min(uint(i_25), 31u)] : half_18[min(uint(i_25), 31u)]);
+}
+
+typedef float2 airlight_ret_Constructarray12_float2_[12];
+airlight_ret_Constructarray12_float2_ airlight_Constructarray12_float2_(float2 arg0, float2 arg1, float2 arg2, float2 arg3, float2 arg4, float2 arg5, float2 arg6, float2 arg7, float2 arg8, float2 arg9, float2 arg10, float2 arg11) {
+    float2 ret[12] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11 };
+    return ret;
+}
+
+float2 airlight_triangle_rule(uint i_26)
+{
+    float2 rule_1[12] = airlight_Constructarray12_float2_(float2(-0.12523341, 0.24914704), float2(0.12523341, 0.24914704), float2(-0.3678315, 0.23349254), float2(0.3678315, 0.23349254), float2(-0.58731794, 0.20316742), float2(0.58731794, 0.20316742), float2(-0.76990265, 0.16007833), float2(0.76990265, 0.16007833), float2(-0.9041172, 0.10693932), float2(0.9041172, 0.10693932), float2(-0.98156065, 0.047175337), float2(0.98156065, 0.047175337));
+    return rule_1[min(uint(i_26), 11u)];
+}
+
+float airlight_area_phase(AirlightScene s_27, float mu_2)
+{
+    const float _e6 = airlight_phase_mu(s_27.phase_kind, s_27.phase_param_a, s_27.phase_param_b, s_27.phase_param_c, mu_2);
+    return _e6;
+}
+
+float airlight_emitted(AirlightScene s_28, float c_7)
+{
+    uint e_1 = (uint)0;
+    float base_1 = (float)0;
+    float acc_1 = 1.0;
+
+    uint p_2 = airlight_naga_f2u32(s_28.light_param_b);
+    if ((p_2 <= 1u)) {
+        return s_28.intensity;
     }
-    bool _e13 = local_150;
-    if (_e13) {
-        g_26 = n_2.canonical;
-        if (!(n_2.exact)) {
-            const AirlightCanonical _e18 = airlight_canonical(p_2);
-            const AirlightCanonical _e19 = airlight_refined(p_2, _e18);
-            g_26 = _e19;
+    e_1 = (p_2 - 1u);
+    base_1 = c_7;
+    uint _e13 = e_1;
+    if (((_e13 & 1u) != 0u)) {
+        float _e18 = acc_1;
+        float _e19 = base_1;
+        acc_1 = (_e18 * _e19);
+    }
+    uint _e21 = e_1;
+    e_1 = (_e21 >> 1u);
+    float _e24 = base_1;
+    float _e25 = base_1;
+    base_1 = (_e24 * _e25);
+    uint _e27 = e_1;
+    if (((_e27 & 1u) != 0u)) {
+        float _e32 = acc_1;
+        float _e33 = base_1;
+        acc_1 = (_e32 * _e33);
+    }
+    uint _e35 = e_1;
+    e_1 = (_e35 >> 1u);
+    float _e38 = base_1;
+    float _e39 = base_1;
+    base_1 = (_e38 * _e39);
+    uint _e41 = e_1;
+    if (((_e41 & 1u) != 0u)) {
+        float _e46 = acc_1;
+        float _e47 = base_1;
+        acc_1 = (_e46 * _e47);
+    }
+    uint _e49 = e_1;
+    e_1 = (_e49 >> 1u);
+    float _e52 = base_1;
+    float _e53 = base_1;
+    base_1 = (_e52 * _e53);
+    uint _e55 = e_1;
+    if (((_e55 & 1u) != 0u)) {
+        float _e60 = acc_1;
+        float _e61 = base_1;
+        acc_1 = (_e60 * _e61);
+    }
+    uint _e63 = e_1;
+    e_1 = (_e63 >> 1u);
+    float _e66 = base_1;
+    float _e67 = base_1;
+    base_1 = (_e66 * _e67);
+    uint _e69 = e_1;
+    if (((_e69 & 1u) != 0u)) {
+        float _e74 = acc_1;
+        float _e75 = base_1;
+        acc_1 = (_e74 * _e75);
+    }
+    uint _e77 = e_1;
+    e_1 = (_e77 >> 1u);
+    float _e80 = base_1;
+    float _e81 = base_1;
+    base_1 = (_e80 * _e81);
+    uint _e83 = e_1;
+    if (((_e83 & 1u) != 0u)) {
+        float _e88 = acc_1;
+        float _e89 = base_1;
+        acc_1 = (_e88 * _e89);
+    }
+    uint _e91 = e_1;
+    e_1 = (_e91 >> 1u);
+    float _e94 = base_1;
+    float _e95 = base_1;
+    base_1 = (_e94 * _e95);
+    uint _e97 = e_1;
+    if (((_e97 & 1u) != 0u)) {
+        float _e102 = acc_1;
+        float _e103 = base_1;
+        acc_1 = (_e102 * _e103);
+    }
+    uint _e105 = e_1;
+    e_1 = (_e105 >> 1u);
+    float _e108 = base_1;
+    float _e109 = base_1;
+    base_1 = (_e108 * _e109);
+    uint _e111 = e_1;
+    if (((_e111 & 1u) != 0u)) {
+        float _e116 = acc_1;
+        float _e117 = base_1;
+        acc_1 = (_e116 * _e117);
+    }
+    uint _e119 = e_1;
+    e_1 = (_e119 >> 1u);
+    float _e122 = base_1;
+    float _e123 = base_1;
+    base_1 = (_e122 * _e123);
+    uint _e125 = e_1;
+    if (((_e125 & 1u) != 0u)) {
+        float _e130 = acc_1;
+        float _e131 = base_1;
+        acc_1 = (_e130 * _e131);
+    }
+    uint _e133 = e_1;
+    e_1 = (_e133 >> 1u);
+    float _e136 = base_1;
+    float _e137 = base_1;
+    base_1 = (_e136 * _e137);
+    uint _e139 = e_1;
+    if (((_e139 & 1u) != 0u)) {
+        float _e144 = acc_1;
+        float _e145 = base_1;
+        acc_1 = (_e144 * _e145);
+    }
+    uint _e147 = e_1;
+    e_1 = (_e147 >> 1u);
+    float _e150 = base_1;
+    float _e151 = base_1;
+    base_1 = (_e150 * _e151);
+    float _e154 = acc_1;
+    return (s_28.intensity * _e154);
+}
+
+float2 airlight_lobe(float sign_, float gap_3)
+{
+    bool local_166 = (bool)0;
+
+    if (!(!((gap_3 > 0.0)))) {
+        local_166 = !((gap_3 < AIRLIGHT_FLT_MAX));
+    } else {
+        local_166 = true;
+    }
+    bool _e12 = local_166;
+    if (_e12) {
+        return float2(1.0, 0.0);
+    }
+    return float2(((sign_ < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
+}
+
+float4 airlight_phase_lobes(AirlightScene s_29)
+{
+    float2 first = float2(1.0, 0.0);
+    float2 second = float2(1.0, 0.0);
+
+    float p0_5 = s_29.phase_param_a;
+    switch(s_29.phase_kind) {
+        case 2u:
+        case 4u: {
+            const float _e11 = airlight_hg_gap(p0_5);
+            const float2 _e12 = airlight_lobe(p0_5, _e11);
+            first = _e12;
+            break;
         }
-        AirlightCanonical _e20 = g_26;
-        const AirlightResult _e21 = airlight_in_scatter_canonical(p_2, _e20);
-        r_6 = _e21;
-    }
-    AirlightResult _e22 = r_6;
-    const AirlightResult _e23 = airlight_overflowed(_e22);
-    const AirlightResult airlightresult_10 = _e23;
-    return airlightresult_10;
-}
-
-AirlightResult airlight_point_integral(AirlightScene p_1)
-{
-    const AirlightCanonical _e1 = airlight_no_canonical();
-    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_1, 1.0, _e1, false));
-    const AirlightResult airlightresult_11 = _e5;
-    return airlightresult_11;
-}
-
-AirlightResult airlight_in_scatter_point(AirlightScene s_27)
-{
-    bool local_151 = (bool)0;
-    bool local_152 = (bool)0;
-
-    const bool _e1 = airlight_valid(s_27);
-    if (!(!(_e1))) {
-        local_151 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_151 = true;
-    }
-    bool _e10 = local_151;
-    if (!(_e10)) {
-        local_152 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_152 = true;
-    }
-    bool _e18 = local_152;
-    if (_e18) {
-        const AirlightResult airlightresult_12 = ConstructAirlightResult(0.0, 1u);
-        return airlightresult_12;
-    }
-    const AirlightResult _e22 = airlight_point_integral(s_27);
-    const AirlightResult airlightresult_13 = _e22;
-    return airlightresult_13;
-}
-
-AirlightResult airlight_in_scatter_route(AirlightScene s_28)
-{
-    bool local_153 = (bool)0;
-    bool local_154 = (bool)0;
-
-    const bool _e1 = airlight_valid(s_28);
-    if (!(!(_e1))) {
-        local_153 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_153 = true;
-    }
-    bool _e10 = local_153;
-    if (!(_e10)) {
-        local_154 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_154 = true;
-    }
-    bool _e18 = local_154;
-    if (_e18) {
-        const AirlightResult airlightresult_14 = ConstructAirlightResult(0.0, 1u);
-        return airlightresult_14;
-    }
-    const AirlightCanonical _e22 = airlight_canonical(s_28);
-    const AirlightCanonical _e23 = airlight_refined(s_28, _e22);
-    const AirlightResult _e24 = airlight_limits(s_28, _e23);
-    if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
-        const AirlightResult _e28 = airlight_overflowed(_e24);
-        const AirlightResult airlightresult_15 = _e28;
-        return airlightresult_15;
-    }
-    const bool _e29 = airlight_isotropic_scene(s_28);
-    if (!(_e29)) {
-        const float2 _e31 = airlight_angle_route(s_28, _e23);
-        if ((_e31.x > 0.5)) {
-            const AirlightResult _e40 = airlight_overflowed(ConstructAirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
-            const AirlightResult airlightresult_16 = _e40;
-            return airlightresult_16;
+        case 3u: {
+            float a_41 = abs(p0_5);
+            const float2 _e21 = airlight_lobe(p0_5, ((a_41 > 0.0) ? ((1.0 - a_41) / a_41) : AIRLIGHT_FLT_MAX));
+            first = _e21;
+            break;
+        }
+        case 5u: {
+            const float _e22 = airlight_hg_gap(p0_5);
+            const float2 _e23 = airlight_lobe(p0_5, _e22);
+            first = _e23;
+            const float _e26 = airlight_hg_gap(s_29.phase_param_b);
+            const float2 _e27 = airlight_lobe(s_29.phase_param_b, _e26);
+            second = _e27;
+            break;
+        }
+        default: {
+            break;
         }
     }
-    const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 3u);
-    return airlightresult_17;
+    float2 _e28 = first;
+    float2 _e29 = second;
+    return float4(_e28, _e29);
+}
+
+float3 airlight_basis_e1_(float3 n_2)
+{
+    float3 u_3 = float3(0.0, 0.0, 1.0);
+    bool local_167 = (bool)0;
+
+    float3 m_10 = abs(n_2);
+    if ((m_10.x <= m_10.y)) {
+        local_167 = (m_10.x <= m_10.z);
+    } else {
+        local_167 = false;
+    }
+    bool _e16 = local_167;
+    if (_e16) {
+        u_3 = float3(1.0, 0.0, 0.0);
+    } else {
+        if ((m_10.y <= m_10.z)) {
+            u_3 = float3(0.0, 1.0, 0.0);
+        }
+    }
+    float3 _e28 = u_3;
+    const float3 _e30 = airlight_normalize(cross(_e28, n_2));
+    return _e30;
+}
+
+float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3)
+{
+    if (infinite_3) {
+        return 1.5707964;
+    }
+    float u_7 = (t_3 - a_17.x_h);
+    const float _e13 = airlight_atan2_upper(abs(u_7), a_17.h_eff);
+    return (((u_7 >= 0.0) ? 1.0 : -1.0) * _e13);
+}
+
+typedef float airlight_ret_Constructarray5_float_[5];
+airlight_ret_Constructarray5_float_ airlight_Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
+    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
+AirlightArea ConstructAirlightArea(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float arg8, float arg9, float arg10, float arg11[5], uint arg12, uint arg13, float4 arg14, bool arg15) {
+    AirlightArea ret = (AirlightArea)0;
+    ret.d = arg0;
+    ret.c = arg1;
+    ret.n = arg2;
+    ret.a1_ = arg3;
+    ret.a2_ = arg4;
+    ret.eu = arg5;
+    ret.ev = arg6;
+    ret.dirs = arg7;
+    ret.radius = arg8;
+    ret.x_h = arg9;
+    ret.h_eff = arg10;
+    ret.edges = arg11;
+    ret.panels = arg12;
+    ret.outcome = arg13;
+    ret.lobes = arg14;
+    ret.isotropic = arg15;
+    return ret;
+}
+
+AirlightArea airlight_area(AirlightScene s_30)
+{
+    AirlightArea a_18 = (AirlightArea)0;
+    bool local_168 = (bool)0;
+    bool local_169 = (bool)0;
+    bool local_170 = (bool)0;
+    bool local_171 = (bool)0;
+    bool local_172 = (bool)0;
+    bool local_173 = (bool)0;
+    bool local_174 = (bool)0;
+    uint cut_count = 0u;
+    float cut0_ = 0.0;
+    float cut1_ = 0.0;
+    float3 centre = (float3)0;
+    float size = (float)0;
+    float t_end_1 = (float)0;
+    bool end_infinite = (bool)0;
+    bool local_175 = (bool)0;
+    float cuts_3[3] = {0.0, 0.0, 0.0};
+    uint i_27 = 0u;
+    bool local_176 = (bool)0;
+    bool local_177 = (bool)0;
+    bool local_178 = (bool)0;
+    uint n_3 = 0u;
+    uint i_28 = 0u;
+    bool local_179 = (bool)0;
+
+    float3 zero = (0.0).xxx;
+    const float4 _e13 = airlight_phase_lobes(s_30);
+    a_18 = ConstructAirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0.0, 0.0, airlight_Constructarray5_float_(0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e13, false);
+    if (!((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+        if (!((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+            local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        } else {
+            local_169 = true;
+        }
+        bool _e36 = local_169;
+        if (_e36) {
+            local_170 = (s_30.phase_param_a == 0.0);
+        } else {
+            local_170 = false;
+        }
+        bool _e43 = local_170;
+        local_168 = _e43;
+    } else {
+        local_168 = true;
+    }
+    bool _e45 = local_168;
+    if (!(_e45)) {
+        if ((s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
+            local_172 = (s_30.phase_param_a == 0.0);
+        } else {
+            local_172 = false;
+        }
+        bool _e58 = local_172;
+        if (_e58) {
+            local_173 = (s_30.phase_param_b == 0.0);
+        } else {
+            local_173 = false;
+        }
+        bool _e65 = local_173;
+        local_171 = _e65;
+    } else {
+        local_171 = true;
+    }
+    bool _e67 = local_171;
+    a_18.isotropic = _e67;
+    if (!((s_30.intensity == 0.0))) {
+        local_174 = (s_30.sigma_s == 0.0);
+    } else {
+        local_174 = true;
+    }
+    bool _e78 = local_174;
+    if (_e78) {
+        a_18.outcome = 1u;
+        AirlightArea _e81 = a_18;
+        const AirlightArea airlightarea = _e81;
+        return airlightarea;
+    }
+    float3 o = s_30.origin;
+    const float3 _e84 = airlight_normalize(s_30.dir);
+    a_18.d = _e84;
+    bool infinite_6 = ((s_30.flags & 1u) != 0u);
+    float t0_2 = s_30.t_min;
+    centre = s_30.light_position;
+    size = s_30.light_param_a;
+    if ((s_30.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+        float3 _e106 = a_18.c;
+        float3 oc = (o - _e106);
+        float b_20 = dot(oc, _e84);
+        float _e111 = a_18.radius;
+        float _e113 = a_18.radius;
+        float k_9 = (dot(oc, oc) - (_e111 * _e113));
+        float disc_2 = ((b_20 * b_20) - k_9);
+        if ((disc_2 > 0.0)) {
+            float root_2 = sqrt(disc_2);
+            float q_8 = (-(b_20) - (((asuint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_8;
+            cut1_ = (k_9 / q_8);
+            cut_count = 2u;
+        }
+    } else {
+        if ((s_30.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            const float3 _e137 = airlight_normalize(s_30.light_axis);
+            a_18.n = _e137;
+            float3 _e140 = a_18.n;
+            const float3 _e141 = airlight_basis_e1_(_e140);
+            a_18.a1_ = _e141;
+        } else {
+            a_18.eu = s_30.light_axis;
+            a_18.ev = s_30.light_end;
+            float3 _e148 = a_18.eu;
+            float3 _e150 = a_18.ev;
+            const float3 _e152 = airlight_normalize(cross(_e148, _e150));
+            a_18.n = _e152;
+            float3 _e155 = a_18.eu;
+            const float3 _e156 = airlight_normalize(_e155);
+            a_18.a1_ = _e156;
+            float3 _e158 = a_18.eu;
+            float3 _e160 = a_18.ev;
+            float3 diagonal = (_e158 + _e160);
+            float3 _e163 = a_18.c;
+            centre = (_e163 + (0.5 * diagonal));
+            const float _e167 = airlight_safe_length(diagonal);
+            float3 _e169 = a_18.eu;
+            float3 _e171 = a_18.ev;
+            const float _e173 = airlight_safe_length((_e169 - _e171));
+            size = (0.5 * max(_e167, _e173));
+        }
+        float3 _e179 = a_18.n;
+        float3 _e181 = a_18.a1_;
+        a_18.a2_ = cross(_e179, _e181);
+        float3 _e185 = a_18.a1_;
+        float3 _e188 = a_18.a2_;
+        float3 _e191 = a_18.n;
+        a_18.dirs = float3(dot(_e185, _e84), dot(_e188, _e84), dot(_e191, _e84));
+        float3 _e195 = a_18.c;
+        float3 _e198 = a_18.n;
+        float3 _e201 = a_18.n;
+        cut0_ = (dot((_e195 - o), _e198) / dot(_e84, _e201));
+        cut_count = 1u;
+    }
+    float _e205 = size;
+    if (!((_e205 > 0.0))) {
+        a_18.outcome = 1u;
+        AirlightArea _e211 = a_18;
+        const AirlightArea airlightarea_1 = _e211;
+        return airlightarea_1;
+    }
+    float3 _e212 = centre;
+    float3 to_centre = (_e212 - o);
+    a_18.x_h = dot(to_centre, _e84);
+    float _e217 = a_18.x_h;
+    const float _e220 = airlight_safe_length((to_centre - (_e217 * _e84)));
+    float _e223 = size;
+    float _e224 = size;
+    a_18.h_eff = sqrt(((_e220 * _e220) + (_e223 * _e224)));
+    t_end_1 = s_30.t_max;
+    end_infinite = infinite_6;
+    if ((s_30.sigma_t > 0.0)) {
+        float3 _e234 = centre;
+        const float _e238 = airlight_safe_length((_e234 - (o + (t0_2 * _e84))));
+        float _e240 = size;
+        float reach_1 = (((t0_2 + _e238) + _e240) - (-15.942385 / s_30.sigma_t));
+        if (!(infinite_6)) {
+            float _e249 = t_end_1;
+            local_175 = (reach_1 < _e249);
+        } else {
+            local_175 = true;
+        }
+        bool _e252 = local_175;
+        if (_e252) {
+            t_end_1 = reach_1;
+            end_infinite = false;
+        }
+    }
+    AirlightArea _e254 = a_18;
+    const float _e256 = airlight_area_theta(_e254, t0_2, false);
+    AirlightArea _e257 = a_18;
+    float _e258 = t_end_1;
+    bool _e259 = end_infinite;
+    const float _e260 = airlight_area_theta(_e257, _e258, _e259);
+    float _e262 = a_18.x_h;
+    float _e264 = a_18.x_h;
+    float _e265 = cut0_;
+    uint _e266 = cut_count;
+    float _e271 = a_18.x_h;
+    float _e272 = cut1_;
+    uint _e273 = cut_count;
+    cuts_3 = airlight_Constructarray3_float_(_e262, ((_e266 > 0u) ? _e265 : _e264), ((_e273 > 1u) ? _e272 : _e271));
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    bool loop_init_31 = true;
+    while(true) {
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e313 = i_27;
+            i_27 = (_e313 + 1u);
+        }
+        loop_init_31 = false;
+        uint _e281 = i_27;
+        if ((_e281 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e284 = i_27;
+            float t_9 = cuts_3[min(uint(_e284), 2u)];
+            uint _e287 = i_27;
+            cuts_3[min(uint(_e287), 2u)] = _e256;
+            const bool _e289 = airlight_is_finite(t_9);
+            if (_e289) {
+                local_176 = (t_9 >= t0_2);
+            } else {
+                local_176 = false;
+            }
+            bool _e294 = local_176;
+            if (_e294) {
+                bool _e297 = end_infinite;
+                if (!(_e297)) {
+                    float _e301 = t_end_1;
+                    local_178 = (t_9 <= _e301);
+                } else {
+                    local_178 = true;
+                }
+                bool _e304 = local_178;
+                local_177 = _e304;
+            } else {
+                local_177 = false;
+            }
+            bool _e306 = local_177;
+            if (_e306) {
+                uint _e307 = i_27;
+                AirlightArea _e309 = a_18;
+                const float _e311 = airlight_area_theta(_e309, t_9, false);
+                cuts_3[min(uint(_e307), 2u)] = _e311;
+            }
+        }
+    }
+    float _e316 = cuts_3[1];
+    float _e318 = cuts_3[0];
+    if ((_e316 < _e318)) {
+        float c_16 = cuts_3[0];
+        float _e324 = cuts_3[1];
+        cuts_3[0] = _e324;
+        cuts_3[1] = c_16;
+    }
+    float _e327 = cuts_3[2];
+    float _e329 = cuts_3[1];
+    if ((_e327 < _e329)) {
+        float c_17 = cuts_3[1];
+        float _e335 = cuts_3[2];
+        cuts_3[1] = _e335;
+        cuts_3[2] = c_17;
+    }
+    float _e338 = cuts_3[1];
+    float _e340 = cuts_3[0];
+    if ((_e338 < _e340)) {
+        float c_18 = cuts_3[0];
+        float _e346 = cuts_3[1];
+        cuts_3[0] = _e346;
+        cuts_3[1] = c_18;
+    }
+    a_18.edges[0] = _e256;
+    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+    bool loop_init_32 = true;
+    while(true) {
+        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (!loop_init_32) {
+            uint _e383 = i_28;
+            i_28 = (_e383 + 1u);
+        }
+        loop_init_32 = false;
+        uint _e354 = i_28;
+        if ((_e354 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e357 = i_28;
+            float _e359 = cuts_3[min(uint(_e357), 2u)];
+            uint _e361 = n_3;
+            float _e363 = a_18.edges[min(uint(_e361), 4u)];
+            if ((_e359 > _e363)) {
+                uint _e367 = i_28;
+                float _e369 = cuts_3[min(uint(_e367), 2u)];
+                local_179 = (_e369 < _e260);
+            } else {
+                local_179 = false;
+            }
+            bool _e372 = local_179;
+            if (_e372) {
+                uint _e373 = n_3;
+                n_3 = (_e373 + 1u);
+                uint _e377 = n_3;
+                uint _e379 = i_28;
+                float _e381 = cuts_3[min(uint(_e379), 2u)];
+                a_18.edges[min(uint(_e377), 4u)] = _e381;
+            }
+        }
+    }
+    uint _e386 = n_3;
+    a_18.edges[min(uint((_e386 + 1u)), 4u)] = _e260;
+    uint _e391 = n_3;
+    a_18.panels = (_e391 + 1u);
+    AirlightArea _e394 = a_18;
+    const AirlightArea airlightarea_2 = _e394;
+    return airlightarea_2;
+}
+
+AirlightAbove ConstructAirlightAbove(float arg0, float2 arg1, float arg2) {
+    AirlightAbove ret = (AirlightAbove)0;
+    ret.z = arg0;
+    ret.off = arg1;
+    ret.rho0_ = arg2;
+    return ret;
+}
+
+AirlightAbove airlight_above(float z_9, float2 off)
+{
+    const AirlightAbove airlightabove = ConstructAirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
+    return airlightabove;
+}
+
+float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove above_1, float2 e_2, float g_26)
+{
+    const float2 _e5 = airlight_cos_sin_half_turn(g_26);
+    float r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
+    float dr = (above_1.rho0_ / (_e5.x * _e5.x));
+    float2 p_3 = (above_1.off + (r_13 * e_2));
+    float z_14 = above_1.z;
+    float dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+    float inv_5 = (1.0 / dist);
+    float cos_ = (z_14 * inv_5);
+    const float _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_14 * a_19.dirs.z)) * inv_5));
+    const float _e48 = airlight_emitted(s_31, cos_);
+    return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0.0))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
+}
+
+float airlight_flat_radial(AirlightScene s_32, AirlightArea a_20, AirlightAbove above_2, float2 e_3, float r_max)
+{
+    float sum_7 = 0.0;
+
+    const float _e7 = airlight_atan((r_max / above_2.rho0_));
+    float c_19 = (0.5 * _e7);
+    float hw_2 = (0.5 * _e7);
+    float _e14 = sum_7;
+    const float _e20 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.09501251 * hw_2)));
+    sum_7 = (_e14 + ((0.1894506 * hw_2) * _e20));
+    float _e23 = sum_7;
+    const float _e29 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.09501251 * hw_2)));
+    sum_7 = (_e23 + ((0.1894506 * hw_2) * _e29));
+    float _e32 = sum_7;
+    const float _e38 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.28160354 * hw_2)));
+    sum_7 = (_e32 + ((0.18260342 * hw_2) * _e38));
+    float _e41 = sum_7;
+    const float _e47 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.28160354 * hw_2)));
+    sum_7 = (_e41 + ((0.18260342 * hw_2) * _e47));
+    float _e50 = sum_7;
+    const float _e56 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.45801678 * hw_2)));
+    sum_7 = (_e50 + ((0.16915652 * hw_2) * _e56));
+    float _e59 = sum_7;
+    const float _e65 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.45801678 * hw_2)));
+    sum_7 = (_e59 + ((0.16915652 * hw_2) * _e65));
+    float _e68 = sum_7;
+    const float _e74 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.61787623 * hw_2)));
+    sum_7 = (_e68 + ((0.14959599 * hw_2) * _e74));
+    float _e77 = sum_7;
+    const float _e83 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.61787623 * hw_2)));
+    sum_7 = (_e77 + ((0.14959599 * hw_2) * _e83));
+    float _e86 = sum_7;
+    const float _e92 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.7554044 * hw_2)));
+    sum_7 = (_e86 + ((0.12462897 * hw_2) * _e92));
+    float _e95 = sum_7;
+    const float _e101 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.7554044 * hw_2)));
+    sum_7 = (_e95 + ((0.12462897 * hw_2) * _e101));
+    float _e104 = sum_7;
+    const float _e110 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.8656312 * hw_2)));
+    sum_7 = (_e104 + ((0.09515851 * hw_2) * _e110));
+    float _e113 = sum_7;
+    const float _e119 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.8656312 * hw_2)));
+    sum_7 = (_e113 + ((0.09515851 * hw_2) * _e119));
+    float _e122 = sum_7;
+    const float _e128 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.944575 * hw_2)));
+    sum_7 = (_e122 + ((0.062253524 * hw_2) * _e128));
+    float _e131 = sum_7;
+    const float _e137 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.944575 * hw_2)));
+    sum_7 = (_e131 + ((0.062253524 * hw_2) * _e137));
+    float _e140 = sum_7;
+    const float _e146 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.9894009 * hw_2)));
+    sum_7 = (_e140 + ((0.02715246 * hw_2) * _e146));
+    float _e149 = sum_7;
+    const float _e155 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.9894009 * hw_2)));
+    sum_7 = (_e149 + ((0.02715246 * hw_2) * _e155));
+    float _e158 = sum_7;
+    return _e158;
+}
+
+float airlight_disc(AirlightScene s_33, AirlightArea a_21, float3 x_21)
+{
+    float2 u_4 = (0.0).xx;
+    AirlightAbove above_3 = (AirlightAbove)0;
+    float sum_8 = 0.0;
+    uint i_29 = 0u;
+    float2 e_4 = (float2)0;
+    float r_max_1 = (float)0;
+
+    float3 rel = (x_21 - a_21.c);
+    float z_15 = dot(rel, a_21.n);
+    if (!((z_15 > 0.0))) {
+        return 0.0;
+    }
+    float fx = dot(rel, a_21.a1_);
+    float fy_1 = dot(rel, a_21.a2_);
+    float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
+    float radius_2 = a_21.radius;
+    bool inside_1 = (rf <= radius_2);
+    const AirlightAbove _e26 = airlight_above(z_15, (0.0).xx);
+    above_3 = _e26;
+    if (!(inside_1)) {
+        u_4 = float2((-(fx) / rf), (-(fy_1) / rf));
+        float2 _e35 = u_4;
+        const AirlightAbove _e37 = airlight_above(z_15, ((rf - radius_2) * _e35));
+        above_3 = _e37;
+    }
+    float k_10 = ((rf - radius_2) * (rf + radius_2));
+    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
+    bool loop_init_33 = true;
+    while(true) {
+        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_33) {
+            uint _e99 = i_29;
+            i_29 = (_e99 + 1u);
+        }
+        loop_init_33 = false;
+        uint _e45 = i_29;
+        if ((_e45 < 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e48 = i_29;
+            const float3 _e49 = airlight_azimuths(inside_1, _e48);
+            float _e52 = u_4.x;
+            float _e56 = u_4.y;
+            float _e61 = u_4.y;
+            float _e65 = u_4.x;
+            e_4 = float2(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
+            r_max_1 = ((radius_2 + radius_2) * _e49.x);
+            if (inside_1) {
+                e_4 = _e49.xy;
+                float b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
+                float root_3 = sqrt(((b_21 * b_21) - k_10));
+                r_max_1 = ((b_21 > 0.0) ? (-(k_10) / (b_21 + root_3)) : (root_3 - b_21));
+            }
+            float _e90 = sum_8;
+            AirlightAbove _e92 = above_3;
+            float2 _e93 = e_4;
+            float _e94 = r_max_1;
+            const float _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
+            sum_8 = (_e90 + (_e49.z * _e95));
+        }
+    }
+    float _e101 = sum_8;
+    return _e101;
+}
+
+float airlight_parallelogram(AirlightScene s_34, AirlightArea a_22, float3 x_22)
+{
+    float2 q_4 = (float2)0;
+    bool local_180 = (bool)0;
+    bool local_181 = (bool)0;
+    bool local_182 = (bool)0;
+    float best = AIRLIGHT_FLT_MAX;
+    uint i_30 = 0u;
+    float sum_9 = 0.0;
+    uint i_31 = 0u;
+    uint j_5 = (uint)0;
+
+    float3 rel_1 = (x_22 - a_22.c);
+    float z_16 = dot(rel_1, a_22.n);
+    if (!((z_16 > 0.0))) {
+        return 0.0;
+    }
+    float2 foot = float2(dot(rel_1, a_22.a1_), dot(rel_1, a_22.a2_));
+    float2 u2_ = float2(dot(a_22.eu, a_22.a1_), dot(a_22.eu, a_22.a2_));
+    float2 v2_ = float2(dot(a_22.ev, a_22.a1_), dot(a_22.ev, a_22.a2_));
+    float2 corners[5] = airlight_Constructarray5_float2_((0.0).xx, u2_, (u2_ + v2_), v2_, (0.0).xx);
+    float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
+    float fu = (((foot.x * v2_.y) - (foot.y * v2_.x)) / det);
+    float fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
+    q_4 = foot;
+    if ((fu >= 0.0)) {
+        local_180 = (fu <= 1.0);
+    } else {
+        local_180 = false;
+    }
+    bool _e67 = local_180;
+    if (_e67) {
+        local_181 = (fv >= 0.0);
+    } else {
+        local_181 = false;
+    }
+    bool _e73 = local_181;
+    if (_e73) {
+        local_182 = (fv <= 1.0);
+    } else {
+        local_182 = false;
+    }
+    bool _e79 = local_182;
+    if (!(_e79)) {
+        uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+        bool loop_init_34 = true;
+        while(true) {
+            if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+            loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+            if (!loop_init_34) {
+                uint _e137 = i_30;
+                i_30 = (_e137 + 1u);
+            }
+            loop_init_34 = false;
+            uint _e85 = i_30;
+            if ((_e85 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e88 = i_30;
+                float2 c0_1 = corners[min(uint(_e88), 4u)];
+                uint _e90 = i_30;
+                float2 e_10 = (corners[min(uint((_e90 + 1u)), 4u)] - c0_1);
+                float t_10 = clamp(((((foot.x - c0_1.x) * e_10.x) + ((foot.y - c0_1.y) * e_10.y)) / ((e_10.x * e_10.x) + (e_10.y * e_10.y))), 0.0, 1.0);
+                float2 p_4 = (c0_1 + (t_10 * e_10));
+                float dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
+                float _e134 = best;
+                if ((dd < _e134)) {
+                    best = dd;
+                    q_4 = p_4;
+                }
+            }
+        }
+    }
+    float2 _e139 = q_4;
+    const AirlightAbove _e141 = airlight_above(z_16, (_e139 - foot));
+    float thin = (AIRLIGHT_FLT_EPS * abs(det));
+    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+    bool loop_init_35 = true;
+    while(true) {
+        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (!loop_init_35) {
+            uint _e254 = i_31;
+            i_31 = (_e254 + 1u);
+        }
+        loop_init_35 = false;
+        uint _e149 = i_31;
+        if ((_e149 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e152 = i_31;
+            float2 _e154 = q_4;
+            float2 ca = (corners[min(uint(_e152), 4u)] - _e154);
+            uint _e156 = i_31;
+            float2 _e160 = q_4;
+            float2 cb = (corners[min(uint((_e156 + 1u)), 4u)] - _e160);
+            float area = ((ca.x * cb.y) - (ca.y * cb.x));
+            if (!((area > thin))) {
+                continue;
+            }
+            float2 e_11 = (cb - ca);
+            float el = sqrt(((e_11.x * e_11.x) + (e_11.y * e_11.y)));
+            float h_9 = (area / el);
+            float2 m_11 = float2((e_11.y / el), (-(e_11.x) / el));
+            const float _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
+            float2 start_3 = (ca / (sqrt(((ca.x * ca.x) + (ca.y * ca.y)))).xx);
+            j_5 = 0u;
+            uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+            bool loop_init_36 = true;
+            while(true) {
+                if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                if (!loop_init_36) {
+                    uint _e251 = j_5;
+                    j_5 = (_e251 + 1u);
+                }
+                loop_init_36 = false;
+                uint _e207 = j_5;
+                if ((_e207 < 12u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e210 = j_5;
+                    const float2 _e211 = airlight_triangle_rule(_e210);
+                    const float2 _e218 = airlight_cos_sin_half_turn(((0.5 * _e194) * (1.0 + _e211.x)));
+                    float2 dir_3 = float2(((_e218.x * start_3.x) - (_e218.y * start_3.y)), ((_e218.y * start_3.x) + (_e218.x * start_3.y)));
+                    float _e234 = sum_9;
+                    const float _e247 = airlight_flat_radial(s_34, a_22, _e141, dir_3, (h_9 / ((dir_3.x * m_11.x) + (dir_3.y * m_11.y))));
+                    sum_9 = (_e234 + (((_e211.y * 0.5) * _e194) * _e247));
+                }
+            }
+        }
+    }
+    float _e256 = sum_9;
+    return _e256;
+}
+
+float3 airlight_cap_row(AirlightScene s_35, AirlightCap cap, float graded, float node, float weight_1)
+{
+    float phi = (float)0;
+    float w_2 = (float)0;
+
+    phi = node;
+    w_2 = weight_1;
+    if ((graded > 0.0)) {
+        const float2 _e9 = airlight_cos_sin_half_turn(node);
+        phi = ((graded * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded) / (_e9.x * _e9.x));
+    }
+    float _e19 = phi;
+    const float2 _e20 = airlight_cos_sin_half_turn(_e19);
+    float sb_1 = (cap.sin_a * _e20.y);
+    float cb_1 = sqrt(((1.0 - sb_1) * (1.0 + sb_1)));
+    float dist_1 = max(((cap.dc * cb_1) - (cap.radius * _e20.x)), 0.0);
+    float _e38 = w_2;
+    const float _e40 = airlight_emitted(s_35, _e20.x);
+    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_1) * exp(min((-(s_35.sigma_t) * dist_1), 0.0)));
+    return float3(factor, cb_1, sb_1);
+}
+
+typedef float3 airlight_ret_Constructarray16_float3_[16];
+airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float3 arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15) {
+    float3 ret[16] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15 };
+    return ret;
+}
+
+float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap_1)
+{
+    float graded_1 = 0.0;
+    float top = 1.5707964;
+    float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
+    float sum_10 = 0.0;
+    uint i_32 = 0u;
+    float at_2 = (float)0;
+
+    const float3 _e4 = airlight_basis_e1_(cap_1.a);
+    float3 e2_2 = cross(cap_1.a, _e4);
+    float ad = dot(cap_1.a, a_23.d);
+    float e1d = dot(_e4, a_23.d);
+    float e2d = dot(e2_2, a_23.d);
+    uint p_5 = airlight_naga_f2u32(s_36.light_param_b);
+    if ((p_5 > 1u)) {
+        float lobe_1 = (2.0 / sqrt(float((p_5 - 1u))));
+        if ((lobe_1 < 1.5707964)) {
+            graded_1 = lobe_1;
+            const float _e32 = airlight_atan((1.5707964 / lobe_1));
+            top = _e32;
+        }
+    }
+    float _e33 = top;
+    float c_20 = (0.5 * _e33);
+    float _e36 = top;
+    float hw_3 = (0.5 * _e36);
+    float _e74 = graded_1;
+    const float3 _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_20 - (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    rows[0] = _e80;
+    float _e82 = graded_1;
+    const float3 _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_20 + (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    rows[1] = _e88;
+    float _e90 = graded_1;
+    const float3 _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_20 - (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    rows[2] = _e96;
+    float _e98 = graded_1;
+    const float3 _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_20 + (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    rows[3] = _e104;
+    float _e106 = graded_1;
+    const float3 _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_20 - (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    rows[4] = _e112;
+    float _e114 = graded_1;
+    const float3 _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_20 + (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    rows[5] = _e120;
+    float _e122 = graded_1;
+    const float3 _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_20 - (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    rows[6] = _e128;
+    float _e130 = graded_1;
+    const float3 _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_20 + (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    rows[7] = _e136;
+    float _e138 = graded_1;
+    const float3 _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_20 - (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    rows[8] = _e144;
+    float _e146 = graded_1;
+    const float3 _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_20 + (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    rows[9] = _e152;
+    float _e154 = graded_1;
+    const float3 _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_20 - (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    rows[10] = _e160;
+    float _e162 = graded_1;
+    const float3 _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_20 + (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    rows[11] = _e168;
+    float _e170 = graded_1;
+    const float3 _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_20 - (0.944575 * hw_3)), (0.062253524 * hw_3));
+    rows[12] = _e176;
+    float _e178 = graded_1;
+    const float3 _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_20 + (0.944575 * hw_3)), (0.062253524 * hw_3));
+    rows[13] = _e184;
+    float _e186 = graded_1;
+    const float3 _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_20 - (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    rows[14] = _e192;
+    float _e194 = graded_1;
+    const float3 _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_20 + (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    rows[15] = _e200;
+    if (a_23.isotropic) {
+        const float _e206 = airlight_area_phase(s_36, 0.0);
+        float around_1 = (6.2831855 * _e206);
+        float _e208 = sum_10;
+        float _e211 = rows[0].x;
+        sum_10 = (_e208 + (_e211 * around_1));
+        float _e214 = sum_10;
+        float _e217 = rows[1].x;
+        sum_10 = (_e214 + (_e217 * around_1));
+        float _e220 = sum_10;
+        float _e223 = rows[2].x;
+        sum_10 = (_e220 + (_e223 * around_1));
+        float _e226 = sum_10;
+        float _e229 = rows[3].x;
+        sum_10 = (_e226 + (_e229 * around_1));
+        float _e232 = sum_10;
+        float _e235 = rows[4].x;
+        sum_10 = (_e232 + (_e235 * around_1));
+        float _e238 = sum_10;
+        float _e241 = rows[5].x;
+        sum_10 = (_e238 + (_e241 * around_1));
+        float _e244 = sum_10;
+        float _e247 = rows[6].x;
+        sum_10 = (_e244 + (_e247 * around_1));
+        float _e250 = sum_10;
+        float _e253 = rows[7].x;
+        sum_10 = (_e250 + (_e253 * around_1));
+        float _e256 = sum_10;
+        float _e259 = rows[8].x;
+        sum_10 = (_e256 + (_e259 * around_1));
+        float _e262 = sum_10;
+        float _e265 = rows[9].x;
+        sum_10 = (_e262 + (_e265 * around_1));
+        float _e268 = sum_10;
+        float _e271 = rows[10].x;
+        sum_10 = (_e268 + (_e271 * around_1));
+        float _e274 = sum_10;
+        float _e277 = rows[11].x;
+        sum_10 = (_e274 + (_e277 * around_1));
+        float _e280 = sum_10;
+        float _e283 = rows[12].x;
+        sum_10 = (_e280 + (_e283 * around_1));
+        float _e286 = sum_10;
+        float _e289 = rows[13].x;
+        sum_10 = (_e286 + (_e289 * around_1));
+        float _e292 = sum_10;
+        float _e295 = rows[14].x;
+        sum_10 = (_e292 + (_e295 * around_1));
+        float _e298 = sum_10;
+        float _e301 = rows[15].x;
+        sum_10 = (_e298 + (_e301 * around_1));
+        float _e304 = sum_10;
+        return _e304;
+    }
+    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+    bool loop_init_37 = true;
+    while(true) {
+        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_37) {
+            uint _e582 = i_32;
+            i_32 = (_e582 + 1u);
+        }
+        loop_init_37 = false;
+        uint _e307 = i_32;
+        if ((_e307 < 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e311 = i_32;
+            const float3 _e312 = airlight_azimuths(true, _e311);
+            float across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
+            at_2 = 0.0;
+            float _e320 = at_2;
+            float _e323 = rows[0].x;
+            float _e326 = rows[0].y;
+            float _e330 = rows[0].z;
+            const float _e333 = airlight_area_phase(s_36, ((_e326 * ad) + (_e330 * across_1)));
+            at_2 = (_e320 + (_e323 * _e333));
+            float _e336 = at_2;
+            float _e339 = rows[1].x;
+            float _e342 = rows[1].y;
+            float _e346 = rows[1].z;
+            const float _e349 = airlight_area_phase(s_36, ((_e342 * ad) + (_e346 * across_1)));
+            at_2 = (_e336 + (_e339 * _e349));
+            float _e352 = at_2;
+            float _e355 = rows[2].x;
+            float _e358 = rows[2].y;
+            float _e362 = rows[2].z;
+            const float _e365 = airlight_area_phase(s_36, ((_e358 * ad) + (_e362 * across_1)));
+            at_2 = (_e352 + (_e355 * _e365));
+            float _e368 = at_2;
+            float _e371 = rows[3].x;
+            float _e374 = rows[3].y;
+            float _e378 = rows[3].z;
+            const float _e381 = airlight_area_phase(s_36, ((_e374 * ad) + (_e378 * across_1)));
+            at_2 = (_e368 + (_e371 * _e381));
+            float _e384 = at_2;
+            float _e387 = rows[4].x;
+            float _e390 = rows[4].y;
+            float _e394 = rows[4].z;
+            const float _e397 = airlight_area_phase(s_36, ((_e390 * ad) + (_e394 * across_1)));
+            at_2 = (_e384 + (_e387 * _e397));
+            float _e400 = at_2;
+            float _e403 = rows[5].x;
+            float _e406 = rows[5].y;
+            float _e410 = rows[5].z;
+            const float _e413 = airlight_area_phase(s_36, ((_e406 * ad) + (_e410 * across_1)));
+            at_2 = (_e400 + (_e403 * _e413));
+            float _e416 = at_2;
+            float _e419 = rows[6].x;
+            float _e422 = rows[6].y;
+            float _e426 = rows[6].z;
+            const float _e429 = airlight_area_phase(s_36, ((_e422 * ad) + (_e426 * across_1)));
+            at_2 = (_e416 + (_e419 * _e429));
+            float _e432 = at_2;
+            float _e435 = rows[7].x;
+            float _e438 = rows[7].y;
+            float _e442 = rows[7].z;
+            const float _e445 = airlight_area_phase(s_36, ((_e438 * ad) + (_e442 * across_1)));
+            at_2 = (_e432 + (_e435 * _e445));
+            float _e448 = at_2;
+            float _e451 = rows[8].x;
+            float _e454 = rows[8].y;
+            float _e458 = rows[8].z;
+            const float _e461 = airlight_area_phase(s_36, ((_e454 * ad) + (_e458 * across_1)));
+            at_2 = (_e448 + (_e451 * _e461));
+            float _e464 = at_2;
+            float _e467 = rows[9].x;
+            float _e470 = rows[9].y;
+            float _e474 = rows[9].z;
+            const float _e477 = airlight_area_phase(s_36, ((_e470 * ad) + (_e474 * across_1)));
+            at_2 = (_e464 + (_e467 * _e477));
+            float _e480 = at_2;
+            float _e483 = rows[10].x;
+            float _e486 = rows[10].y;
+            float _e490 = rows[10].z;
+            const float _e493 = airlight_area_phase(s_36, ((_e486 * ad) + (_e490 * across_1)));
+            at_2 = (_e480 + (_e483 * _e493));
+            float _e496 = at_2;
+            float _e499 = rows[11].x;
+            float _e502 = rows[11].y;
+            float _e506 = rows[11].z;
+            const float _e509 = airlight_area_phase(s_36, ((_e502 * ad) + (_e506 * across_1)));
+            at_2 = (_e496 + (_e499 * _e509));
+            float _e512 = at_2;
+            float _e515 = rows[12].x;
+            float _e518 = rows[12].y;
+            float _e522 = rows[12].z;
+            const float _e525 = airlight_area_phase(s_36, ((_e518 * ad) + (_e522 * across_1)));
+            at_2 = (_e512 + (_e515 * _e525));
+            float _e528 = at_2;
+            float _e531 = rows[13].x;
+            float _e534 = rows[13].y;
+            float _e538 = rows[13].z;
+            const float _e541 = airlight_area_phase(s_36, ((_e534 * ad) + (_e538 * across_1)));
+            at_2 = (_e528 + (_e531 * _e541));
+            float _e544 = at_2;
+            float _e547 = rows[14].x;
+            float _e550 = rows[14].y;
+            float _e554 = rows[14].z;
+            const float _e557 = airlight_area_phase(s_36, ((_e550 * ad) + (_e554 * across_1)));
+            at_2 = (_e544 + (_e547 * _e557));
+            float _e560 = at_2;
+            float _e563 = rows[15].x;
+            float _e566 = rows[15].y;
+            float _e570 = rows[15].z;
+            const float _e573 = airlight_area_phase(s_36, ((_e566 * ad) + (_e570 * across_1)));
+            at_2 = (_e560 + (_e563 * _e573));
+            float _e576 = sum_10;
+            float _e578 = at_2;
+            sum_10 = (_e576 + (_e312.z * _e578));
+        }
+    }
+    float _e584 = sum_10;
+    return _e584;
+}
+
+float airlight_sphere_lobe_node(AirlightScene s_37, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_1, float graded_2, float g_27)
+{
+    const float2 _e8 = airlight_cos_sin_half_turn(g_27);
+    const float2 _e14 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e8.y) / _e8.x)));
+    float toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
+    float root_4 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
+    float dist_2 = max(((cap_2.dc * toward_a) - root_4), 0.0);
+    const float _e43 = airlight_emitted(s_37, (root_4 / cap_2.radius));
+    const float _e53 = airlight_area_phase(s_37, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_37.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_2) / (_e8.x * _e8.x));
+}
+
+float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1)
+{
+    float2 axis_2 = float2(1.0, 0.0);
+    float half_15 = 0.0;
+    float sum_11 = 0.0;
+    uint i_33 = 0u;
+    float big_b_1 = (float)0;
+    float wpsi = (float)0;
+    float start_2 = (float)0;
+    float around = (float)0;
+
+    float3 p_6 = (sign_2 * a_24.d);
+    const float3 _e8 = airlight_basis_e1_(p_6);
+    float3 v_7 = cross(p_6, _e8);
+    float au = dot(cap_3.a, _e8);
+    float av = dot(cap_3.a, v_7);
+    bool inside_2 = (cos_p_1 > cap_3.cos_a);
+    float sin_p = sqrt(((au * au) + (av * av)));
+    if ((sin_p > 0.0)) {
+        axis_2 = float2((au / sin_p), (av / sin_p));
+        const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
+        half_15 = _e42;
+    }
+    uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+    bool loop_init_38 = true;
+    while(true) {
+        if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_38) {
+            uint _e299 = i_33;
+            i_33 = (_e299 + 1u);
+        }
+        loop_init_38 = false;
+        uint _e47 = i_33;
+        if ((_e47 < 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e50 = i_33;
+            const float3 _e51 = airlight_azimuths(inside_2, _e50);
+            float _e54 = axis_2.x;
+            float _e58 = axis_2.y;
+            big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
+            wpsi = _e51.z;
+            if (!(inside_2)) {
+                float _e66 = half_15;
+                const float2 _e69 = airlight_cos_sin((_e66 * _e51.y));
+                big_b_1 = (sin_p * _e69.x);
+                float _e73 = half_15;
+                wpsi = ((_e51.z * _e73) * _e51.x);
+            }
+            float _e77 = big_b_1;
+            float _e83 = big_b_1;
+            const float _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
+            float mid_2 = (((_e77 < 0.0) ? -1.0 : 1.0) * _e85);
+            float _e89 = big_b_1;
+            float _e90 = big_b_1;
+            const float _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1.0));
+            start_2 = 0.0;
+            if (!(inside_2)) {
+                start_2 = max((mid_2 - _e97), 0.0);
+            }
+            float to = (mid_2 + _e97);
+            float _e105 = start_2;
+            float graded_3 = max(scale_1, _e105);
+            float _e107 = start_2;
+            const float _e110 = airlight_atan(((to - _e107) / graded_3));
+            float c_21 = (0.5 * _e110);
+            float hw_4 = (0.5 * _e110);
+            around = 0.0;
+            float _e117 = around;
+            float _e120 = big_b_1;
+            float _e121 = start_2;
+            const float _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_21 - (0.09501251 * hw_4)));
+            around = (_e117 + ((0.1894506 * hw_4) * _e125));
+            float _e128 = around;
+            float _e131 = big_b_1;
+            float _e132 = start_2;
+            const float _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_21 + (0.09501251 * hw_4)));
+            around = (_e128 + ((0.1894506 * hw_4) * _e136));
+            float _e139 = around;
+            float _e142 = big_b_1;
+            float _e143 = start_2;
+            const float _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_21 - (0.28160354 * hw_4)));
+            around = (_e139 + ((0.18260342 * hw_4) * _e147));
+            float _e150 = around;
+            float _e153 = big_b_1;
+            float _e154 = start_2;
+            const float _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_21 + (0.28160354 * hw_4)));
+            around = (_e150 + ((0.18260342 * hw_4) * _e158));
+            float _e161 = around;
+            float _e164 = big_b_1;
+            float _e165 = start_2;
+            const float _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_21 - (0.45801678 * hw_4)));
+            around = (_e161 + ((0.16915652 * hw_4) * _e169));
+            float _e172 = around;
+            float _e175 = big_b_1;
+            float _e176 = start_2;
+            const float _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_21 + (0.45801678 * hw_4)));
+            around = (_e172 + ((0.16915652 * hw_4) * _e180));
+            float _e183 = around;
+            float _e186 = big_b_1;
+            float _e187 = start_2;
+            const float _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_21 - (0.61787623 * hw_4)));
+            around = (_e183 + ((0.14959599 * hw_4) * _e191));
+            float _e194 = around;
+            float _e197 = big_b_1;
+            float _e198 = start_2;
+            const float _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_21 + (0.61787623 * hw_4)));
+            around = (_e194 + ((0.14959599 * hw_4) * _e202));
+            float _e205 = around;
+            float _e208 = big_b_1;
+            float _e209 = start_2;
+            const float _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_21 - (0.7554044 * hw_4)));
+            around = (_e205 + ((0.12462897 * hw_4) * _e213));
+            float _e216 = around;
+            float _e219 = big_b_1;
+            float _e220 = start_2;
+            const float _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_21 + (0.7554044 * hw_4)));
+            around = (_e216 + ((0.12462897 * hw_4) * _e224));
+            float _e227 = around;
+            float _e230 = big_b_1;
+            float _e231 = start_2;
+            const float _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_21 - (0.8656312 * hw_4)));
+            around = (_e227 + ((0.09515851 * hw_4) * _e235));
+            float _e238 = around;
+            float _e241 = big_b_1;
+            float _e242 = start_2;
+            const float _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_21 + (0.8656312 * hw_4)));
+            around = (_e238 + ((0.09515851 * hw_4) * _e246));
+            float _e249 = around;
+            float _e252 = big_b_1;
+            float _e253 = start_2;
+            const float _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_21 - (0.944575 * hw_4)));
+            around = (_e249 + ((0.062253524 * hw_4) * _e257));
+            float _e260 = around;
+            float _e263 = big_b_1;
+            float _e264 = start_2;
+            const float _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_21 + (0.944575 * hw_4)));
+            around = (_e260 + ((0.062253524 * hw_4) * _e268));
+            float _e271 = around;
+            float _e274 = big_b_1;
+            float _e275 = start_2;
+            const float _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_21 - (0.9894009 * hw_4)));
+            around = (_e271 + ((0.02715246 * hw_4) * _e279));
+            float _e282 = around;
+            float _e285 = big_b_1;
+            float _e286 = start_2;
+            const float _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_21 + (0.9894009 * hw_4)));
+            around = (_e282 + ((0.02715246 * hw_4) * _e290));
+            float _e293 = sum_11;
+            float _e294 = wpsi;
+            float _e295 = around;
+            sum_11 = (_e293 + (_e294 * _e295));
+        }
+    }
+    float _e301 = sum_11;
+    return _e301;
+}
+
+AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
+    AirlightCap ret = (AirlightCap)0;
+    ret.a = arg0;
+    ret.dc = arg1;
+    ret.radius = arg2;
+    ret.sin_a = arg3;
+    ret.cos_a = arg4;
+    return ret;
+}
+
+float airlight_sphere(AirlightScene s_39, AirlightArea a_25, float3 x_23)
+{
+    float chosen = 0.0;
+    float sign_3 = 1.0;
+    float cos_p_2 = 0.0;
+    uint j_6 = 0u;
+    bool local_183 = (bool)0;
+    bool local_184 = (bool)0;
+    bool local_185 = (bool)0;
+    bool local_186 = (bool)0;
+    bool local_187 = (bool)0;
+
+    float3 v_8 = (a_25.c - x_23);
+    const float _e5 = airlight_safe_length(v_8);
+    if (!((_e5 > a_25.radius))) {
+        return 0.0;
+    }
+    float sin_a_2 = (a_25.radius / _e5);
+    AirlightCap cap_4 = ConstructAirlightCap((v_8 / (_e5).xxx), _e5, a_25.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
+    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+    bool loop_init_39 = true;
+    while(true) {
+        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_39) {
+            uint _e92 = j_6;
+            j_6 = (_e92 + 1u);
+        }
+        loop_init_39 = false;
+        uint _e32 = j_6;
+        if ((_e32 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e39 = j_6;
+            float2 lobe_2 = ((_e39 == 1u) ? a_25.lobes.zw : a_25.lobes.xy);
+            float c_22 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            float _e48 = chosen;
+            if ((_e48 == 0.0)) {
+                local_183 = (lobe_2.y > 0.0);
+            } else {
+                local_183 = false;
+            }
+            bool _e57 = local_183;
+            if (_e57) {
+                local_184 = (lobe_2.y < (_e23 + _e23));
+            } else {
+                local_184 = false;
+            }
+            bool _e64 = local_184;
+            if (_e64) {
+                if (!((c_22 > cap_4.cos_a))) {
+                    if ((c_22 > -(cap_4.cos_a))) {
+                        const float _e77 = airlight_acos(c_22);
+                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
+                    } else {
+                        local_187 = false;
+                    }
+                    bool _e84 = local_187;
+                    local_186 = _e84;
+                } else {
+                    local_186 = true;
+                }
+                bool _e86 = local_186;
+                local_185 = _e86;
+            } else {
+                local_185 = false;
+            }
+            bool _e88 = local_185;
+            if (_e88) {
+                chosen = lobe_2.y;
+                sign_3 = lobe_2.x;
+                cos_p_2 = c_22;
+            }
+        }
+    }
+    float _e94 = chosen;
+    if ((_e94 > 0.0)) {
+        float _e97 = sign_3;
+        float _e98 = cos_p_2;
+        float _e99 = chosen;
+        const float _e100 = airlight_sphere_about_lobe(s_39, a_25, cap_4, _e97, _e98, _e99);
+        return _e100;
+    }
+    const float _e101 = airlight_sphere_cap(s_39, a_25, cap_4);
+    return _e101;
+}
+
+float airlight_emitter_radiance(AirlightScene s_40, AirlightArea a_26, float3 x_24)
+{
+    switch(s_40.light_shape) {
+        case 2u: {
+            const float _e4 = airlight_disc(s_40, a_26, x_24);
+            return _e4;
+        }
+        case 3u: {
+            const float _e5 = airlight_parallelogram(s_40, a_26, x_24);
+            return _e5;
+        }
+        default: {
+            const float _e6 = airlight_sphere(s_40, a_26, x_24);
+            return _e6;
+        }
+    }
+}
+
+float airlight_area_node(AirlightScene s_41, AirlightArea a_27, float theta)
+{
+    const float2 _e3 = airlight_cos_sin(theta);
+    float along = ((a_27.h_eff * _e3.y) / _e3.x);
+    float t_11 = (a_27.x_h + along);
+    float fade = exp(min((-(s_41.sigma_t) * max(((a_27.x_h - s_41.t_min) + along), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_41, a_27, (s_41.origin + (t_11 * a_27.d)));
+    return (((a_27.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15) {
@@ -6278,12 +7917,12 @@ AirlightPanelList ConstructAirlightPanelList(float4 arg0, float4 arg1, float4 ar
     return ret;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_29)
+AirlightResult airlight_area_light(AirlightScene s_42)
 {
-    AirlightPanelList list_1 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
-    uint count_2 = 0u;
-    float a_17 = (float)0;
-    float b_13 = (float)0;
+    AirlightPanelList list_2 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    uint count_3 = 0u;
+    float lo_5 = (float)0;
+    float hi_4 = (float)0;
     uint slot_1 = 0u;
     bool queued = false;
     float queued_lo = 0.0;
@@ -6291,229 +7930,471 @@ AirlightResult airlight_in_scatter(AirlightScene s_29)
     uint step_2 = 0u;
     float k_7 = (float)0;
     float gauss = (float)0;
-    uint j_5 = (uint)0;
-    bool local_155 = (bool)0;
-    float f = (float)0;
-    bool local_156 = (bool)0;
-    bool split = (bool)0;
-    uint tries = (uint)0;
-    bool local_157 = (bool)0;
-    bool local_158 = (bool)0;
-    bool local_159 = (bool)0;
+    uint j_7 = (uint)0;
+    bool local_188 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_29);
-    if (!(_e1)) {
-        const AirlightResult airlightresult_18 = ConstructAirlightResult(0.0, 1u);
-        return airlightresult_18;
+    const AirlightArea _e1 = airlight_area(s_42);
+    if ((_e1.outcome == 1u)) {
+        const AirlightResult airlightresult_8 = ConstructAirlightResult(0.0, 0u);
+        return airlightresult_8;
     }
-    const AirlightOuter _e6 = airlight_outer(s_29);
-    if ((_e6.outcome == 1u)) {
-        const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 0u);
-        return airlightresult_19;
-    }
-    if ((_e6.outcome == 2u)) {
-        const AirlightResult airlightresult_20 = ConstructAirlightResult(3.4028235e38, 2u);
-        return airlightresult_20;
-    }
-    const float3 _e19[4] = airlight_kronrod_rule();
-    a_17 = _e6.edges[0];
-    b_13 = _e6.edges[1];
-    uint evaluations = ((2u * _e6.max_panels) - 1u);
-    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
+    const float3 _e8[8] = airlight_kronrod15_rule();
+    lo_5 = _e1.edges[0];
+    hi_4 = _e1.edges[1];
+    uint max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
+    uint evaluations = ((2u * max_panels_2) - 1u);
+    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+    bool loop_init_40 = true;
     while(true) {
-        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e250 = step_2;
-            step_2 = (_e250 + 1u);
+        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_40) {
+            uint _e171 = step_2;
+            step_2 = (_e171 + 1u);
         }
-        loop_init_30 = false;
-        uint _e78 = step_2;
-        if ((_e78 < evaluations)) {
+        loop_init_40 = false;
+        uint _e68 = step_2;
+        if ((_e68 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e80 = a_17;
-            float _e81 = b_13;
-            float c_15 = (0.5 * (_e80 + _e81));
-            float _e85 = b_13;
-            float _e86 = a_17;
-            float hw_2 = (0.5 * (_e85 - _e86));
+            float _e70 = lo_5;
+            float _e71 = hi_4;
+            float c_23 = (0.5 * (_e70 + _e71));
+            float _e75 = hi_4;
+            float _e76 = lo_5;
+            float hw_5 = (0.5 * (_e75 - _e76));
             k_7 = 0.0;
             gauss = 0.0;
-            j_5 = 0u;
-            uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
-            bool loop_init_31 = true;
+            j_7 = 0u;
+            uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+            bool loop_init_41 = true;
             while(true) {
-                if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
-                loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-                if (!loop_init_31) {
-                    uint _e156 = j_5;
-                    j_5 = (_e156 + 1u);
+                if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+                if (!loop_init_41) {
+                    uint _e122 = j_7;
+                    j_7 = (_e122 + 1u);
                 }
-                loop_init_31 = false;
-                uint _e96 = j_5;
-                if ((_e96 < 7u)) {
+                loop_init_41 = false;
+                uint _e86 = j_7;
+                if ((_e86 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e99 = j_5;
-                    float3 node_1 = _e19[min(uint(airlight_naga_div(_e99, 2u)), 3u)];
-                    uint _e109 = j_5;
-                    if (((_e109 & 1u) == 0u)) {
-                        uint _e116 = j_5;
-                        local_155 = (_e116 < 6u);
+                    uint _e89 = j_7;
+                    float3 node_2 = _e8[min(uint(airlight_naga_div(_e89, 2u)), 7u)];
+                    uint _e99 = j_7;
+                    if (((_e99 & 1u) == 0u)) {
+                        uint _e106 = j_7;
+                        local_188 = (_e106 < 14u);
                     } else {
-                        local_155 = false;
+                        local_188 = false;
                     }
-                    bool _e120 = local_155;
-                    float w_9 = (_e120 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
-                    const AirlightNode _e122 = airlight_outer_node(s_29, _e6, w_9);
-                    f = 0.0;
-                    if ((_e122.weight != 0.0)) {
-                        const AirlightResult _e128 = airlight_node_integral(_e122);
-                        if ((_e128.status == AIRLIGHT_STATUS_INFINITE)) {
-                            const AirlightResult airlightresult_21 = _e128;
-                            return airlightresult_21;
-                        }
-                        if ((s_29.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_156 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
-                        } else {
-                            local_156 = false;
-                        }
-                        bool _e141 = local_156;
-                        if (_e141) {
-                            const AirlightResult airlightresult_22 = _e128;
-                            return airlightresult_22;
-                        }
-                        f = (_e128.in_scatter * _e122.weight);
-                    }
-                    float _e145 = k_7;
-                    float _e147 = f;
-                    k_7 = (_e145 + (node_1.y * _e147));
-                    float _e150 = gauss;
-                    float _e152 = f;
-                    gauss = (_e150 + (node_1.z * _e152));
+                    bool _e110 = local_188;
+                    float x_33 = (_e110 ? (c_23 - (hw_5 * node_2.x)) : (c_23 + (hw_5 * node_2.x)));
+                    const float _e112 = airlight_area_node(s_42, _e1, x_33);
+                    float _e113 = k_7;
+                    k_7 = (_e113 + (node_2.y * _e112));
+                    float _e117 = gauss;
+                    gauss = (_e117 + (node_2.z * _e112));
                 }
             }
-            uint _e158 = slot_1;
-            float _e159 = a_17;
-            float _e160 = b_13;
-            float _e161 = k_7;
-            float _e163 = k_7;
-            float _e165 = gauss;
-            airlight_list_set(list_1, _e158, float4(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
-            uint _e170 = slot_1;
-            uint _e171 = count_2;
-            if ((_e170 == _e171)) {
-                uint _e173 = count_2;
-                count_2 = (_e173 + 1u);
+            uint _e124 = slot_1;
+            float _e125 = lo_5;
+            float _e126 = hi_4;
+            float _e127 = k_7;
+            float _e129 = k_7;
+            float _e131 = gauss;
+            airlight_list_set(list_2, _e124, float4(_e125, _e126, (_e127 * hw_5), abs(((_e129 * hw_5) - (_e131 * hw_5)))));
+            uint _e136 = slot_1;
+            uint _e137 = count_3;
+            if ((_e136 == _e137)) {
+                uint _e139 = count_3;
+                count_3 = (_e139 + 1u);
             }
-            uint _e176 = count_2;
-            if ((_e176 < _e6.panels)) {
-                uint _e180 = count_2;
-                a_17 = _e6.edges[min(uint(_e180), 12u)];
-                uint _e183 = count_2;
-                b_13 = _e6.edges[min(uint((_e183 + 1u)), 12u)];
-                uint _e187 = count_2;
-                slot_1 = _e187;
+            uint _e142 = count_3;
+            if ((_e142 < _e1.panels)) {
+                uint _e146 = count_3;
+                lo_5 = _e1.edges[min(uint(_e146), 4u)];
+                uint _e149 = count_3;
+                hi_4 = _e1.edges[min(uint((_e149 + 1u)), 4u)];
+                uint _e153 = count_3;
+                slot_1 = _e153;
             } else {
-                bool _e188 = queued;
-                if (_e188) {
-                    float _e189 = queued_lo;
-                    a_17 = _e189;
-                    float _e190 = queued_hi;
-                    b_13 = _e190;
-                    uint _e191 = count_2;
-                    slot_1 = _e191;
+                bool _e154 = queued;
+                if (_e154) {
+                    float _e155 = queued_lo;
+                    lo_5 = _e155;
+                    float _e156 = queued_hi;
+                    hi_4 = _e156;
+                    uint _e157 = count_3;
+                    slot_1 = _e157;
                     queued = false;
                 } else {
-                    split = false;
-                    tries = 0u;
-                    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_32 = true;
-                    while(true) {
-                        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-                        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-                        if (!loop_init_32) {
-                            uint _e245 = tries;
-                            tries = (_e245 + 1u);
-                        }
-                        loop_init_32 = false;
-                        uint _e197 = tries;
-                        if ((_e197 < _e6.max_panels)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            AirlightPanelList _e200 = list_1;
-                            uint _e201 = count_2;
-                            const AirlightListScan _e202 = airlight_list_scan(_e200, _e201);
-                            float total_4 = _e202.total;
-                            uint worst_1 = _e202.worst;
-                            if (!(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4)))))) {
-                                uint _e213 = count_2;
-                                local_157 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_157 = true;
-                            }
-                            bool _e217 = local_157;
-                            if (!(_e217)) {
-                                const bool _e221 = airlight_is_finite(total_4);
-                                local_158 = !(_e221);
-                            } else {
-                                local_158 = true;
-                            }
-                            bool _e224 = local_158;
-                            if (_e224) {
-                                break;
-                            }
-                            AirlightPanelList _e225 = list_1;
-                            const float4 _e226 = airlight_list_get(_e225, worst_1);
-                            float wa_1 = _e226.x;
-                            float wb_1 = _e226.y;
-                            float mid_1 = (0.5 * (wa_1 + wb_1));
-                            if ((mid_1 > wa_1)) {
-                                local_159 = (mid_1 < wb_1);
-                            } else {
-                                local_159 = false;
-                            }
-                            bool _e237 = local_159;
-                            if (!(_e237)) {
-                                airlight_list_set(list_1, worst_1, float4(_e226.xyz, 0.0));
-                                continue;
-                            }
-                            a_17 = wa_1;
-                            b_13 = mid_1;
-                            slot_1 = worst_1;
-                            queued = true;
-                            queued_lo = mid_1;
-                            queued_hi = wb_1;
-                            split = true;
-                            break;
-                        }
-                    }
-                    bool _e247 = split;
-                    if (!(_e247)) {
+                    uint _e159 = count_3;
+                    const AirlightSplit _e161 = airlight_split_worst(list_2, _e159, max_panels_2, AIRLIGHT_AREA_RAY_TOLERANCE);
+                    if (!(_e161.split)) {
                         break;
                     }
+                    lo_5 = _e161.lo;
+                    hi_4 = _e161.mid;
+                    slot_1 = _e161.slot;
+                    queued = true;
+                    queued_lo = _e161.mid;
+                    queued_hi = _e161.hi;
                 }
             }
         }
     }
-    AirlightPanelList _e252 = list_1;
-    uint _e253 = count_2;
-    const AirlightListScan _e254 = airlight_list_scan(_e252, _e253);
-    float total_5 = _e254.total;
-    const bool _e256 = airlight_is_finite(total_5);
-    if (!(_e256)) {
-        const AirlightResult airlightresult_23 = ConstructAirlightResult(3.4028235e38, 2u);
+    AirlightPanelList _e173 = list_2;
+    uint _e174 = count_3;
+    const AirlightListScan _e175 = airlight_list_scan(_e173, _e174);
+    float total_4 = _e175.total;
+    const bool _e177 = airlight_is_finite(total_4);
+    if (!(_e177)) {
+        const AirlightResult airlightresult_9 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_9;
+    }
+    const AirlightResult airlightresult_10 = ConstructAirlightResult((s_42.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    return airlightresult_10;
+}
+
+AirlightResult airlight_in_scatter_area(AirlightScene s_43)
+{
+    bool local_189 = (bool)0;
+    bool local_190 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_43);
+    if (!(!(_e1))) {
+        local_189 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_189 = true;
+    }
+    bool _e10 = local_189;
+    if (!(_e10)) {
+        local_190 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_190 = true;
+    }
+    bool _e18 = local_190;
+    if (_e18) {
+        const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_11;
+    }
+    const AirlightResult _e22 = airlight_area_light(s_43);
+    const AirlightResult airlightresult_12 = _e22;
+    return airlightresult_12;
+}
+
+AirlightResult airlight_overflowed(AirlightResult r_5)
+{
+    bool local_191 = (bool)0;
+
+    const bool _e2 = airlight_is_finite(r_5.in_scatter);
+    if (!(!(_e2))) {
+        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+    } else {
+        local_191 = true;
+    }
+    bool _e11 = local_191;
+    if (_e11) {
+        const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_13;
+    }
+    const AirlightResult airlightresult_14 = r_5;
+    return airlightresult_14;
+}
+
+AirlightResult airlight_node_integral(AirlightNode n_4)
+{
+    AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
+    bool local_192 = (bool)0;
+    AirlightCanonical g_28 = (AirlightCanonical)0;
+
+    AirlightScene p_7 = n_4.scene;
+    const bool _e7 = airlight_vec_finite(p_7.light_position);
+    if (_e7) {
+        const bool _e11 = airlight_vec_finite(p_7.dir);
+        local_192 = _e11;
+    } else {
+        local_192 = false;
+    }
+    bool _e13 = local_192;
+    if (_e13) {
+        g_28 = n_4.canonical;
+        if (!(n_4.exact)) {
+            const AirlightCanonical _e18 = airlight_canonical(p_7);
+            const AirlightCanonical _e19 = airlight_refined(p_7, _e18);
+            g_28 = _e19;
+        }
+        AirlightCanonical _e20 = g_28;
+        const AirlightResult _e21 = airlight_in_scatter_canonical(p_7, _e20);
+        r_6 = _e21;
+    }
+    AirlightResult _e22 = r_6;
+    const AirlightResult _e23 = airlight_overflowed(_e22);
+    const AirlightResult airlightresult_15 = _e23;
+    return airlightresult_15;
+}
+
+AirlightResult airlight_point_integral(AirlightScene p_1)
+{
+    const AirlightCanonical _e1 = airlight_no_canonical();
+    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_1, 1.0, _e1, false));
+    const AirlightResult airlightresult_16 = _e5;
+    return airlightresult_16;
+}
+
+AirlightResult airlight_in_scatter_point(AirlightScene s_44)
+{
+    bool local_193 = (bool)0;
+    bool local_194 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_44);
+    if (!(!(_e1))) {
+        local_193 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_193 = true;
+    }
+    bool _e10 = local_193;
+    if (!(_e10)) {
+        local_194 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_194 = true;
+    }
+    bool _e18 = local_194;
+    if (_e18) {
+        const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_17;
+    }
+    const AirlightResult _e22 = airlight_point_integral(s_44);
+    const AirlightResult airlightresult_18 = _e22;
+    return airlightresult_18;
+}
+
+AirlightResult airlight_in_scatter_route(AirlightScene s_45)
+{
+    bool local_195 = (bool)0;
+    bool local_196 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_45);
+    if (!(!(_e1))) {
+        local_195 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_195 = true;
+    }
+    bool _e10 = local_195;
+    if (!(_e10)) {
+        local_196 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_196 = true;
+    }
+    bool _e18 = local_196;
+    if (_e18) {
+        const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_19;
+    }
+    const AirlightCanonical _e22 = airlight_canonical(s_45);
+    const AirlightCanonical _e23 = airlight_refined(s_45, _e22);
+    const AirlightResult _e24 = airlight_limits(s_45, _e23);
+    if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
+        const AirlightResult _e28 = airlight_overflowed(_e24);
+        const AirlightResult airlightresult_20 = _e28;
+        return airlightresult_20;
+    }
+    const bool _e29 = airlight_isotropic_scene(s_45);
+    if (!(_e29)) {
+        const float2 _e31 = airlight_angle_route(s_45, _e23);
+        if ((_e31.x > 0.5)) {
+            const AirlightResult _e40 = airlight_overflowed(ConstructAirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
+            const AirlightResult airlightresult_21 = _e40;
+            return airlightresult_21;
+        }
+    }
+    const AirlightResult airlightresult_22 = ConstructAirlightResult(0.0, 3u);
+    return airlightresult_22;
+}
+
+AirlightResult airlight_in_scatter(AirlightScene s_46)
+{
+    AirlightPanelList list_3 = ConstructAirlightPanelList((0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx, (0.0).xxxx);
+    uint count_4 = 0u;
+    float a_28 = (float)0;
+    float b_13 = (float)0;
+    uint slot_2 = 0u;
+    bool queued_1 = false;
+    float queued_lo_1 = 0.0;
+    float queued_hi_1 = 0.0;
+    uint step_3 = 0u;
+    float k_8 = (float)0;
+    float gauss_1 = (float)0;
+    uint j_8 = (uint)0;
+    bool local_197 = (bool)0;
+    float f = (float)0;
+    bool local_198 = (bool)0;
+
+    const bool _e1 = airlight_valid(s_46);
+    if (!(_e1)) {
+        const AirlightResult airlightresult_23 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_23;
     }
-    const AirlightResult airlightresult_24 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
-    return airlightresult_24;
+    if ((s_46.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+        const AirlightResult airlightresult_24 = ConstructAirlightResult(0.0, 1u);
+        return airlightresult_24;
+    }
+    const AirlightOuter _e12 = airlight_outer(s_46);
+    if ((_e12.outcome == 1u)) {
+        const AirlightResult airlightresult_25 = ConstructAirlightResult(0.0, 0u);
+        return airlightresult_25;
+    }
+    if ((_e12.outcome == 2u)) {
+        const AirlightResult airlightresult_26 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_26;
+    }
+    const float3 _e25[4] = airlight_kronrod_rule();
+    a_28 = _e12.edges[0];
+    b_13 = _e12.edges[1];
+    uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
+    uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+    bool loop_init_42 = true;
+    while(true) {
+        if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+        if (!loop_init_42) {
+            uint _e211 = step_3;
+            step_3 = (_e211 + 1u);
+        }
+        loop_init_42 = false;
+        uint _e84 = step_3;
+        if ((_e84 < evaluations_1)) {
+        } else {
+            break;
+        }
+        {
+            float _e86 = a_28;
+            float _e87 = b_13;
+            float c_24 = (0.5 * (_e86 + _e87));
+            float _e91 = b_13;
+            float _e92 = a_28;
+            float hw_6 = (0.5 * (_e91 - _e92));
+            k_8 = 0.0;
+            gauss_1 = 0.0;
+            j_8 = 0u;
+            uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+            bool loop_init_43 = true;
+            while(true) {
+                if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                if (!loop_init_43) {
+                    uint _e162 = j_8;
+                    j_8 = (_e162 + 1u);
+                }
+                loop_init_43 = false;
+                uint _e102 = j_8;
+                if ((_e102 < 7u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e105 = j_8;
+                    float3 node_3 = _e25[min(uint(airlight_naga_div(_e105, 2u)), 3u)];
+                    uint _e115 = j_8;
+                    if (((_e115 & 1u) == 0u)) {
+                        uint _e122 = j_8;
+                        local_197 = (_e122 < 6u);
+                    } else {
+                        local_197 = false;
+                    }
+                    bool _e126 = local_197;
+                    float w_10 = (_e126 ? (c_24 - (hw_6 * node_3.x)) : (c_24 + (hw_6 * node_3.x)));
+                    const AirlightNode _e128 = airlight_outer_node(s_46, _e12, w_10);
+                    f = 0.0;
+                    if ((_e128.weight != 0.0)) {
+                        const AirlightResult _e134 = airlight_node_integral(_e128);
+                        if ((_e134.status == AIRLIGHT_STATUS_INFINITE)) {
+                            const AirlightResult airlightresult_27 = _e134;
+                            return airlightresult_27;
+                        }
+                        if ((s_46.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_198 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        } else {
+                            local_198 = false;
+                        }
+                        bool _e147 = local_198;
+                        if (_e147) {
+                            const AirlightResult airlightresult_28 = _e134;
+                            return airlightresult_28;
+                        }
+                        f = (_e134.in_scatter * _e128.weight);
+                    }
+                    float _e151 = k_8;
+                    float _e153 = f;
+                    k_8 = (_e151 + (node_3.y * _e153));
+                    float _e156 = gauss_1;
+                    float _e158 = f;
+                    gauss_1 = (_e156 + (node_3.z * _e158));
+                }
+            }
+            uint _e164 = slot_2;
+            float _e165 = a_28;
+            float _e166 = b_13;
+            float _e167 = k_8;
+            float _e169 = k_8;
+            float _e171 = gauss_1;
+            airlight_list_set(list_3, _e164, float4(_e165, _e166, (_e167 * hw_6), abs(((_e169 * hw_6) - (_e171 * hw_6)))));
+            uint _e176 = slot_2;
+            uint _e177 = count_4;
+            if ((_e176 == _e177)) {
+                uint _e179 = count_4;
+                count_4 = (_e179 + 1u);
+            }
+            uint _e182 = count_4;
+            if ((_e182 < _e12.panels)) {
+                uint _e186 = count_4;
+                a_28 = _e12.edges[min(uint(_e186), 12u)];
+                uint _e189 = count_4;
+                b_13 = _e12.edges[min(uint((_e189 + 1u)), 12u)];
+                uint _e193 = count_4;
+                slot_2 = _e193;
+            } else {
+                bool _e194 = queued_1;
+                if (_e194) {
+                    float _e195 = queued_lo_1;
+                    a_28 = _e195;
+                    float _e196 = queued_hi_1;
+                    b_13 = _e196;
+                    uint _e197 = count_4;
+                    slot_2 = _e197;
+                    queued_1 = false;
+                } else {
+                    uint _e199 = count_4;
+                    const AirlightSplit _e201 = airlight_split_worst(list_3, _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+                    if (!(_e201.split)) {
+                        break;
+                    }
+                    a_28 = _e201.lo;
+                    b_13 = _e201.mid;
+                    slot_2 = _e201.slot;
+                    queued_1 = true;
+                    queued_lo_1 = _e201.mid;
+                    queued_hi_1 = _e201.hi;
+                }
+            }
+        }
+    }
+    AirlightPanelList _e213 = list_3;
+    uint _e214 = count_4;
+    const AirlightListScan _e215 = airlight_list_scan(_e213, _e214);
+    float total_5 = _e215.total;
+    const bool _e217 = airlight_is_finite(total_5);
+    if (!(_e217)) {
+        const AirlightResult airlightresult_29 = ConstructAirlightResult(3.4028235e38, 2u);
+        return airlightresult_29;
+    }
+    const AirlightResult airlightresult_30 = ConstructAirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);
+    return airlightresult_30;
 }
 #endif // AIRLIGHT_LIB_8

@@ -83,6 +83,14 @@ struct AirlightListScan {
     worst: u32,
 }
 
+struct AirlightSplit {
+    split: bool,
+    lo: f32,
+    mid: f32,
+    hi: f32,
+    slot: u32,
+}
+
 struct AirlightOuter {
     a: vec3<f32>,
     e: vec3<f32>,
@@ -155,6 +163,9 @@ const AIRLIGHT_LIGHT_TWO_LOBED: u32 = 1u;
 const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
 const AIRLIGHT_SHAPE_POINT: u32 = 0u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = 1u;
+const AIRLIGHT_SHAPE_DISC: u32 = 2u;
+const AIRLIGHT_SHAPE_RECTANGLE: u32 = 3u;
+const AIRLIGHT_SHAPE_SPHERE: u32 = 4u;
 const AIRLIGHT_SURFACE_NONE: u32 = 0u;
 const AIRLIGHT_SURFACE_LAMBERT: u32 = 1u;
 const AIRLIGHT_SURFACE_PHONG: u32 = 2u;
@@ -170,12 +181,16 @@ const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
+const AIRLIGHT_EMISSION_MAX_POWER: u32 = 1024u;
 const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
 const AIRLIGHT_SURFACE_PANELS: u32 = 6u;
 const AIRLIGHT_PHONG_PANELS: u32 = 16u;
 const AIRLIGHT_OUTER_EDGES: u32 = 13u;
 const AIRLIGHT_LOBE_PAIRS: u32 = 5u;
 const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
+const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
+const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
+const AIRLIGHT_LOBE_REACH: f32 = 8f;
 
 @group(0) @binding(0) 
 var<storage> airlight_records: array<AirlightScene>;
@@ -3674,6 +3689,20 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_106: bool;
     var local_107: bool;
     var local_108: bool;
+    var local_109: bool;
+    var local_110: bool;
+    var local_111: bool;
+    var local_112: bool;
+    var local_113: bool;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: bool;
+    var local_117: bool;
+    var local_118: bool;
+    var local_119: bool;
+    var local_120: bool;
+    var local_121: bool;
+    var local_122: bool;
 
     let _e2 = airlight_vec_finite(s_16.origin);
     if _e2 {
@@ -3772,82 +3801,192 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         let _e95 = local_83;
         ok = _e95;
     } else {
-        if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
-            ok = false;
+        if (s_16.light_shape >= AIRLIGHT_SHAPE_DISC) {
+            local_84 = (s_16.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_84 = false;
+        }
+        let _e105 = local_84;
+        if _e105 {
+            let _e106 = ok;
+            if _e106 {
+                local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+            } else {
+                local_85 = false;
+            }
+            let _e113 = local_85;
+            if _e113 {
+                local_86 = (s_16.light_param_b >= 1f);
+            } else {
+                local_86 = false;
+            }
+            let _e120 = local_86;
+            if _e120 {
+                local_87 = (s_16.light_param_b <= 1024f);
+            } else {
+                local_87 = false;
+            }
+            let _e127 = local_87;
+            if _e127 {
+                local_88 = (fract(s_16.light_param_b) == 0f);
+            } else {
+                local_88 = false;
+            }
+            let _e135 = local_88;
+            ok = _e135;
+            if (s_16.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+                let _e139 = ok;
+                if _e139 {
+                    let _e143 = airlight_vec_finite(s_16.light_axis);
+                    local_89 = _e143;
+                } else {
+                    local_89 = false;
+                }
+                let _e145 = local_89;
+                if _e145 {
+                    let _e149 = airlight_normalisable(s_16.light_axis);
+                    local_90 = _e149;
+                } else {
+                    local_90 = false;
+                }
+                let _e151 = local_90;
+                if _e151 {
+                    let _e155 = airlight_vec_finite(s_16.light_end);
+                    local_91 = _e155;
+                } else {
+                    local_91 = false;
+                }
+                let _e157 = local_91;
+                if _e157 {
+                    let _e161 = airlight_normalisable(s_16.light_end);
+                    local_92 = _e161;
+                } else {
+                    local_92 = false;
+                }
+                let _e163 = local_92;
+                if _e163 {
+                    let _e167 = airlight_normalize(s_16.light_axis);
+                    let _e169 = airlight_normalize(s_16.light_end);
+                    let _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_93 = false;
+                }
+                let _e175 = local_93;
+                ok = _e175;
+            } else {
+                let _e176 = ok;
+                if _e176 {
+                    let _e180 = airlight_is_finite(s_16.light_param_a);
+                    local_94 = _e180;
+                } else {
+                    local_94 = false;
+                }
+                let _e182 = local_94;
+                if _e182 {
+                    local_95 = (s_16.light_param_a >= 0f);
+                } else {
+                    local_95 = false;
+                }
+                let _e189 = local_95;
+                ok = _e189;
+                if (s_16.light_shape == AIRLIGHT_SHAPE_DISC) {
+                    let _e193 = ok;
+                    if _e193 {
+                        let _e197 = airlight_vec_finite(s_16.light_axis);
+                        local_96 = _e197;
+                    } else {
+                        local_96 = false;
+                    }
+                    let _e199 = local_96;
+                    if _e199 {
+                        let _e203 = airlight_normalisable(s_16.light_axis);
+                        local_97 = _e203;
+                    } else {
+                        local_97 = false;
+                    }
+                    let _e205 = local_97;
+                    ok = _e205;
+                }
+            }
+        } else {
+            if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
+                ok = false;
+            }
         }
     }
     if !((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_84 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_98 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_84 = true;
+        local_98 = true;
     }
-    let _e110 = local_84;
-    if _e110 {
-        let _e111 = ok;
-        if _e111 {
-            let _e115 = airlight_is_finite(s_16.brdf_scale);
-            local_85 = _e115;
+    let _e220 = local_98;
+    if _e220 {
+        let _e221 = ok;
+        if _e221 {
+            let _e225 = airlight_is_finite(s_16.brdf_scale);
+            local_99 = _e225;
         } else {
-            local_85 = false;
+            local_99 = false;
         }
-        let _e117 = local_85;
-        if _e117 {
-            local_86 = (s_16.brdf_scale >= 0f);
+        let _e227 = local_99;
+        if _e227 {
+            local_100 = (s_16.brdf_scale >= 0f);
         } else {
-            local_86 = false;
+            local_100 = false;
         }
-        let _e124 = local_86;
-        if _e124 {
-            local_87 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
+        let _e234 = local_100;
+        if _e234 {
+            local_101 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_87 = false;
+            local_101 = false;
         }
-        let _e131 = local_87;
-        if _e131 {
-            local_88 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e241 = local_101;
+        if _e241 {
+            local_102 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_88 = false;
+            local_102 = false;
         }
-        let _e138 = local_88;
-        if _e138 {
-            let _e144 = airlight_safe_length((s_16.light_position - s_16.origin));
-            let _e145 = airlight_is_finite(_e144);
-            local_89 = _e145;
+        let _e248 = local_102;
+        if _e248 {
+            let _e254 = airlight_safe_length((s_16.light_position - s_16.origin));
+            let _e255 = airlight_is_finite(_e254);
+            local_103 = _e255;
         } else {
-            local_89 = false;
+            local_103 = false;
         }
-        let _e147 = local_89;
-        ok = _e147;
+        let _e257 = local_103;
+        ok = _e257;
         if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
-            let _e151 = ok;
-            if _e151 {
-                let _e155 = airlight_is_finite(s_16.brdf_exponent);
-                local_90 = _e155;
+            let _e261 = ok;
+            if _e261 {
+                let _e265 = airlight_is_finite(s_16.brdf_exponent);
+                local_104 = _e265;
             } else {
-                local_90 = false;
+                local_104 = false;
             }
-            let _e157 = local_90;
-            if _e157 {
-                local_91 = (s_16.brdf_exponent >= 0f);
+            let _e267 = local_104;
+            if _e267 {
+                local_105 = (s_16.brdf_exponent >= 0f);
             } else {
-                local_91 = false;
+                local_105 = false;
             }
-            let _e164 = local_91;
-            if _e164 {
-                let _e168 = airlight_vec_finite(s_16.brdf_view);
-                local_92 = _e168;
+            let _e274 = local_105;
+            if _e274 {
+                let _e278 = airlight_vec_finite(s_16.brdf_view);
+                local_106 = _e278;
             } else {
-                local_92 = false;
+                local_106 = false;
             }
-            let _e170 = local_92;
-            if _e170 {
-                let _e174 = airlight_normalisable(s_16.brdf_view);
-                local_93 = _e174;
+            let _e280 = local_106;
+            if _e280 {
+                let _e284 = airlight_normalisable(s_16.brdf_view);
+                local_107 = _e284;
             } else {
-                local_93 = false;
+                local_107 = false;
             }
-            let _e176 = local_93;
-            ok = _e176;
+            let _e286 = local_107;
+            ok = _e286;
         }
     } else {
         if (s_16.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -3855,76 +3994,76 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         }
     }
     if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e184 = ok;
-        if _e184 {
-            let _e188 = airlight_vec_finite(s_16.light_axis);
-            local_94 = _e188;
+        let _e294 = ok;
+        if _e294 {
+            let _e298 = airlight_vec_finite(s_16.light_axis);
+            local_108 = _e298;
         } else {
-            local_94 = false;
+            local_108 = false;
         }
-        let _e190 = local_94;
-        if _e190 {
-            let _e194 = airlight_normalisable(s_16.light_axis);
-            local_95 = _e194;
+        let _e300 = local_108;
+        if _e300 {
+            let _e304 = airlight_normalisable(s_16.light_axis);
+            local_109 = _e304;
         } else {
-            local_95 = false;
+            local_109 = false;
         }
-        let _e196 = local_95;
-        if _e196 {
-            local_96 = (s_16.light_param_a >= 0f);
+        let _e306 = local_109;
+        if _e306 {
+            local_110 = (s_16.light_param_a >= 0f);
         } else {
-            local_96 = false;
+            local_110 = false;
         }
-        let _e203 = local_96;
-        if _e203 {
-            local_97 = (s_16.light_param_a <= 1024f);
+        let _e313 = local_110;
+        if _e313 {
+            local_111 = (s_16.light_param_a <= 1024f);
         } else {
-            local_97 = false;
+            local_111 = false;
         }
-        let _e210 = local_97;
-        if _e210 {
-            local_98 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        let _e320 = local_111;
+        if _e320 {
+            local_112 = (fract((s_16.light_param_a * 0.5f)) == 0f);
         } else {
-            local_98 = false;
+            local_112 = false;
         }
-        let _e220 = local_98;
-        ok = _e220;
+        let _e330 = local_112;
+        ok = _e330;
     } else {
         if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e224 = ok;
-            if _e224 {
-                let _e228 = airlight_vec_finite(s_16.light_axis);
-                local_99 = _e228;
+            let _e334 = ok;
+            if _e334 {
+                let _e338 = airlight_vec_finite(s_16.light_axis);
+                local_113 = _e338;
             } else {
-                local_99 = false;
+                local_113 = false;
             }
-            let _e230 = local_99;
-            if _e230 {
-                let _e234 = airlight_normalisable(s_16.light_axis);
-                local_100 = _e234;
+            let _e340 = local_113;
+            if _e340 {
+                let _e344 = airlight_normalisable(s_16.light_axis);
+                local_114 = _e344;
             } else {
-                local_100 = false;
+                local_114 = false;
             }
-            let _e236 = local_100;
-            if _e236 {
-                local_101 = (s_16.light_param_b < s_16.light_param_a);
+            let _e346 = local_114;
+            if _e346 {
+                local_115 = (s_16.light_param_b < s_16.light_param_a);
             } else {
-                local_101 = false;
+                local_115 = false;
             }
-            let _e243 = local_101;
-            if _e243 {
-                local_102 = (s_16.light_param_b >= -1f);
+            let _e353 = local_115;
+            if _e353 {
+                local_116 = (s_16.light_param_b >= -1f);
             } else {
-                local_102 = false;
+                local_116 = false;
             }
-            let _e250 = local_102;
-            if _e250 {
-                local_103 = (s_16.light_param_a <= 1f);
+            let _e360 = local_116;
+            if _e360 {
+                local_117 = (s_16.light_param_a <= 1f);
             } else {
-                local_103 = false;
+                local_117 = false;
             }
-            let _e257 = local_103;
-            ok = _e257;
+            let _e367 = local_117;
+            ok = _e367;
         } else {
             if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -3936,49 +4075,49 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e267 = ok;
-            if _e267 {
-                local_104 = g_ok;
+            let _e377 = ok;
+            if _e377 {
+                local_118 = g_ok;
             } else {
-                local_104 = false;
+                local_118 = false;
             }
-            let _e271 = local_104;
-            ok = _e271;
+            let _e381 = local_118;
+            ok = _e381;
         }
         case 5u: {
-            let _e272 = ok;
-            if _e272 {
-                local_105 = g_ok;
+            let _e382 = ok;
+            if _e382 {
+                local_119 = g_ok;
             } else {
-                local_105 = false;
+                local_119 = false;
             }
-            let _e276 = local_105;
-            if _e276 {
-                local_106 = (abs(s_16.phase_param_b) < 1f);
+            let _e386 = local_119;
+            if _e386 {
+                local_120 = (abs(s_16.phase_param_b) < 1f);
             } else {
-                local_106 = false;
+                local_120 = false;
             }
-            let _e284 = local_106;
-            if _e284 {
-                local_107 = (s_16.phase_param_c >= 0f);
+            let _e394 = local_120;
+            if _e394 {
+                local_121 = (s_16.phase_param_c >= 0f);
             } else {
-                local_107 = false;
+                local_121 = false;
             }
-            let _e291 = local_107;
-            if _e291 {
-                local_108 = (s_16.phase_param_c <= 1f);
+            let _e401 = local_121;
+            if _e401 {
+                local_122 = (s_16.phase_param_c <= 1f);
             } else {
-                local_108 = false;
+                local_122 = false;
             }
-            let _e298 = local_108;
-            ok = _e298;
+            let _e408 = local_122;
+            ok = _e408;
         }
         default: {
             ok = false;
         }
     }
-    let _e300 = ok;
-    return _e300;
+    let _e410 = ok;
+    return _e410;
 }
 
 fn airlight_canonical(s_17: AirlightScene) -> AirlightCanonical {
@@ -4041,29 +4180,29 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_109: bool;
-    var local_110: bool;
+    var local_123: bool;
+    var local_124: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_110 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_110 = false;
+            local_124 = false;
         }
-        let _e21 = local_110;
-        local_109 = _e21;
+        let _e21 = local_124;
+        local_123 = _e21;
     } else {
-        local_109 = true;
+        local_123 = true;
     }
-    let _e23 = local_109;
+    let _e23 = local_123;
     return _e23;
 }
 
 fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_111: bool;
+    var local_125: bool;
     var out_2: AirlightCanonical;
-    var local_112: bool;
+    var local_126: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_18.flags > 1u));
@@ -4076,11 +4215,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e33 = airlight_in_exact_range(hi_4);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_111 = !(_e38);
+        local_125 = !(_e38);
     } else {
-        local_111 = true;
+        local_125 = true;
     }
-    let _e41 = local_111;
+    let _e41 = local_125;
     if _e41 {
         return plain;
     }
@@ -4104,11 +4243,11 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_112 = (h_7 > 0f);
+        local_126 = (h_7 > 0f);
     } else {
-        local_112 = false;
+        local_126 = false;
     }
-    let _e101 = local_112;
+    let _e101 = local_126;
     if !(_e101) {
         return plain;
     }
@@ -4439,6 +4578,60 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
+fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
+    var tries: u32 = 0u;
+    var local_127: bool;
+    var local_128: bool;
+    var local_129: bool;
+
+    loop {
+        let _e6 = tries;
+        if (_e6 < max_panels) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = (*list_1);
+            let _e9 = airlight_list_scan(_e8, count_2);
+            if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
+                local_127 = (count_2 == max_panels);
+            } else {
+                local_127 = true;
+            }
+            let _e21 = local_127;
+            if !(_e21) {
+                let _e26 = airlight_is_finite(_e9.total);
+                local_128 = !(_e26);
+            } else {
+                local_128 = true;
+            }
+            let _e29 = local_128;
+            if _e29 {
+                break;
+            }
+            let _e30 = (*list_1);
+            let _e32 = airlight_list_get(_e30, _e9.worst);
+            let mid_1 = (0.5f * (_e32.x + _e32.y));
+            if (mid_1 > _e32.x) {
+                local_129 = (mid_1 < _e32.y);
+            } else {
+                local_129 = false;
+            }
+            let _e45 = local_129;
+            if !(_e45) {
+                airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
+                continue;
+            }
+            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+        }
+        continuing {
+            let _e57 = tries;
+            tries = (_e57 + 1u);
+        }
+    }
+    return AirlightSplit(false, 0f, 0f, 0f, 0u);
+}
+
 fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
@@ -4490,40 +4683,40 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_21: AirlightScene, max_panels: u32) -> AirlightOuter {
+fn airlight_outer_point(s_21: AirlightScene, max_panels_1: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_1, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_113: bool;
+    var local_130: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_18: u32 = 1u;
     var j_4: u32;
-    var local_114: bool;
+    var local_131: bool;
     var k_4: u32 = 0u;
     var i_19: u32 = 0u;
-    var local_115: bool;
+    var local_132: bool;
     var i_20: u32 = 0u;
     var i_21: u32 = 1u;
-    var local_116: bool;
-    var local_117: bool;
-    var local_118: bool;
-    var local_119: bool;
-    var local_120: bool;
+    var local_133: bool;
+    var local_134: bool;
+    var local_135: bool;
+    var local_136: bool;
+    var local_137: bool;
 
     let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     let to_light_1 = (s_22.light_position - s_22.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_22.intensity == 0f)) {
-        local_113 = (s_22.sigma_s == 0f);
+        local_130 = (s_22.sigma_s == 0f);
     } else {
-        local_113 = true;
+        local_130 = true;
     }
-    let _e18 = local_113;
+    let _e18 = local_130;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4634,11 +4827,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_1[(_e237 - 1u)];
-                    local_114 = (_e241 > c_10);
+                    local_131 = (_e241 > c_10);
                 } else {
-                    local_114 = false;
+                    local_131 = false;
                 }
-                let _e244 = local_114;
+                let _e244 = local_131;
                 if _e244 {
                 } else {
                     break;
@@ -4676,11 +4869,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_19;
                 let _e291 = cuts_1[_e289];
-                local_115 = (_e291 < hi_5);
+                local_132 = (_e291 < hi_5);
             } else {
-                local_115 = false;
+                local_132 = false;
             }
-            let _e294 = local_115;
+            let _e294 = local_132;
             if _e294 {
                 let _e295 = k_4;
                 k_4 = (_e295 + 1u);
@@ -4728,35 +4921,35 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 let _e339 = i_21;
                 let e_4 = g_20.gamma[_e339];
                 if !((e_4 == kinks[0])) {
-                    local_116 = (e_4 == kinks[1]);
+                    local_133 = (e_4 == kinks[1]);
                 } else {
-                    local_116 = true;
+                    local_133 = true;
                 }
-                let _e350 = local_116;
+                let _e350 = local_133;
                 if !(_e350) {
-                    local_117 = (e_4 == kinks[2]);
+                    local_134 = (e_4 == kinks[2]);
                 } else {
-                    local_117 = true;
+                    local_134 = true;
                 }
-                let _e357 = local_117;
+                let _e357 = local_134;
                 if !(_e357) {
-                    local_118 = (e_4 == kinks[3]);
+                    local_135 = (e_4 == kinks[3]);
                 } else {
-                    local_118 = true;
+                    local_135 = true;
                 }
-                let _e364 = local_118;
+                let _e364 = local_135;
                 if !(_e364) {
-                    local_119 = (e_4 == kinks[4]);
+                    local_136 = (e_4 == kinks[4]);
                 } else {
-                    local_119 = true;
+                    local_136 = true;
                 }
-                let _e371 = local_119;
+                let _e371 = local_136;
                 if !(_e371) {
-                    local_120 = (e_4 == kinks[5]);
+                    local_137 = (e_4 == kinks[5]);
                 } else {
-                    local_120 = true;
+                    local_137 = true;
                 }
-                let kink = local_120;
+                let kink = local_137;
                 let _e380 = g_20.smooth_edges;
                 let _e382 = i_21;
                 g_20.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -4772,7 +4965,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_121: bool;
+    var local_138: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -4783,11 +4976,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_121 = (clip > 0f);
+        local_138 = (clip > 0f);
     } else {
-        local_121 = false;
+        local_138 = false;
     }
-    let _e43 = local_121;
+    let _e43 = local_138;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -4806,7 +4999,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end: f32;
-    var local_122: bool;
+    var local_139: bool;
 
     end = x_19;
     let _e3 = end;
@@ -4823,11 +5016,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end;
     if (_e16 > -(cut)) {
         let _e21 = end;
-        local_122 = (_e21 < cut);
+        local_139 = (_e21 < cut);
     } else {
-        local_122 = false;
+        local_139 = false;
     }
-    let _e24 = local_122;
+    let _e24 = local_139;
     return select(0f, _e15, _e24);
 }
 
@@ -4836,18 +5029,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_123: bool;
+    var local_140: bool;
     var sum_5: f32 = 0f;
     var k_5: u32 = 0u;
 
     let w_6 = (hi_3 - lo_4);
     if !(!((w_6 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_6)));
-        local_123 = !((_e14 > 0f));
+        local_140 = !((_e14 > 0f));
     } else {
-        local_123 = true;
+        local_140 = true;
     }
-    let _e19 = local_123;
+    let _e19 = local_140;
     if _e19 {
         return 0f;
     }
@@ -4940,33 +5133,33 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_124: bool;
-    var local_125: bool;
+    var local_141: bool;
+    var local_142: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_126: bool;
-    var local_127: bool;
-    var local_128: bool;
-    var local_129: bool;
-    var local_130: bool;
-    var local_131: bool;
+    var local_143: bool;
+    var local_144: bool;
+    var local_145: bool;
+    var local_146: bool;
+    var local_147: bool;
+    var local_148: bool;
     var scale: f32 = 0f;
-    var local_132: bool;
-    var local_133: bool;
-    var local_134: bool;
-    var local_135: bool;
-    var local_136: bool;
+    var local_149: bool;
+    var local_150: bool;
+    var local_151: bool;
+    var local_152: bool;
+    var local_153: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var local_137: bool;
+    var local_154: bool;
     var i_23: u32 = 0u;
-    var local_138: bool;
-    var local_139: bool;
-    var local_140: bool;
-    var local_141: bool;
+    var local_155: bool;
+    var local_156: bool;
+    var local_157: bool;
+    var local_158: bool;
     var n_1: u32 = 0u;
     var i_24: u32 = 0u;
-    var local_142: bool;
+    var local_159: bool;
 
     if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_23);
@@ -4981,17 +5174,17 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_23.light_end - s_23.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_124 = (s_23.intensity == 0f);
+        local_141 = (s_23.intensity == 0f);
     } else {
-        local_124 = true;
+        local_141 = true;
     }
-    let _e26 = local_124;
+    let _e26 = local_141;
     if !(_e26) {
-        local_125 = (s_23.sigma_s == 0f);
+        local_142 = (s_23.sigma_s == 0f);
     } else {
-        local_125 = true;
+        local_142 = true;
     }
-    let _e34 = local_125;
+    let _e34 = local_142;
     if _e34 {
         g_22.outcome = 1u;
         let _e37 = g_22;
@@ -5015,94 +5208,94 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_126 = (sin_a_1 > 0f);
+        local_143 = (sin_a_1 > 0f);
     } else {
-        local_126 = false;
+        local_143 = false;
     }
-    let _e84 = local_126;
+    let _e84 = local_143;
     if _e84 {
         let _e87 = s_star;
-        local_127 = (_e87 >= 0f);
+        local_144 = (_e87 >= 0f);
     } else {
-        local_127 = false;
+        local_144 = false;
     }
-    let _e91 = local_127;
+    let _e91 = local_144;
     if _e91 {
         let _e94 = s_star;
-        local_128 = (_e94 <= _e15);
+        local_145 = (_e94 <= _e15);
     } else {
-        local_128 = false;
+        local_145 = false;
     }
-    let _e97 = local_128;
+    let _e97 = local_145;
     if _e97 {
         let _e101 = t_star;
-        local_129 = (s_23.t_min <= _e101);
+        local_146 = (s_23.t_min <= _e101);
     } else {
-        local_129 = false;
+        local_146 = false;
     }
-    let _e104 = local_129;
+    let _e104 = local_146;
     if _e104 {
         if !(infinite_4) {
             let _e110 = t_star;
-            local_131 = (_e110 <= s_23.t_max);
+            local_148 = (_e110 <= s_23.t_max);
         } else {
-            local_131 = true;
+            local_148 = true;
         }
-        let _e114 = local_131;
-        local_130 = _e114;
+        let _e114 = local_148;
+        local_147 = _e114;
     } else {
-        local_130 = false;
+        local_147 = false;
     }
-    let _e116 = local_130;
+    let _e116 = local_147;
     if _e116 {
         g_22.outcome = 2u;
         let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_132 = (_e73 > 0f);
+        local_149 = (_e73 > 0f);
     } else {
-        local_132 = false;
+        local_149 = false;
     }
-    let _e129 = local_132;
+    let _e129 = local_149;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_133 = (_e136 < (_e15 + _e15));
+        local_150 = (_e136 < (_e15 + _e15));
     } else {
-        local_133 = false;
+        local_150 = false;
     }
-    let _e140 = local_133;
+    let _e140 = local_150;
     if _e140 {
         let _e143 = scale;
-        local_134 = (_e143 < _e15);
+        local_151 = (_e143 < _e15);
     } else {
-        local_134 = false;
+        local_151 = false;
     }
-    let near_1 = local_134;
+    let near_1 = local_151;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_135 = _e154;
+        local_152 = _e154;
     } else {
-        local_135 = false;
+        local_152 = false;
     }
-    let _e156 = local_135;
+    let _e156 = local_152;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_136 = _e163;
+        local_153 = _e163;
     } else {
-        local_136 = false;
+        local_153 = false;
     }
-    let _e165 = local_136;
+    let _e165 = local_153;
     if !(_e165) {
         scale = 0f;
     }
@@ -5119,11 +5312,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_22;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_137 = (min(-(_e194), _e197) < 0.5f);
+        local_154 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_137 = false;
+        local_154 = false;
     }
-    let sliver = local_137;
+    let sliver = local_154;
     loop {
         let _e205 = i_23;
         if (_e205 < 3u) {
@@ -5133,31 +5326,31 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         {
             let _e208 = i_23;
             if (_e208 == 0u) {
-                local_138 = sliver;
+                local_155 = sliver;
             } else {
-                local_138 = false;
+                local_155 = false;
             }
-            let _e214 = local_138;
+            let _e214 = local_155;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e219 = i_23;
-                local_139 = (_e219 > 0u);
+                local_156 = (_e219 > 0u);
             } else {
-                local_139 = false;
+                local_156 = false;
             }
-            let _e223 = local_139;
+            let _e223 = local_156;
             if _e223 {
                 continue;
             }
             let _e224 = i_23;
             if (_e224 == 2u) {
-                local_140 = infinite_4;
+                local_157 = infinite_4;
             } else {
-                local_140 = false;
+                local_157 = false;
             }
-            let _e230 = local_140;
+            let _e230 = local_157;
             if _e230 {
                 continue;
             }
@@ -5166,11 +5359,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e233 > 0f) {
                 let _e238 = i_23;
                 let _e240 = at[_e238];
-                local_141 = (_e240 < _e15);
+                local_158 = (_e240 < _e15);
             } else {
-                local_141 = false;
+                local_158 = false;
             }
-            let _e243 = local_141;
+            let _e243 = local_158;
             if _e243 {
                 let _e244 = i_23;
                 let _e246 = g_22;
@@ -5228,11 +5421,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e303 > _e307) {
                 let _e311 = i_24;
                 let _e313 = cuts_2[_e311];
-                local_142 = (_e313 < _e288);
+                local_159 = (_e313 < _e288);
             } else {
-                local_142 = false;
+                local_159 = false;
             }
-            let _e316 = local_142;
+            let _e316 = local_159;
             if _e316 {
                 let _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5263,12 +5456,12 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_143: bool;
-    var local_144: bool;
-    var local_145: bool;
-    var local_146: bool;
-    var local_147: bool;
-    var local_148: bool;
+    var local_160: bool;
+    var local_161: bool;
+    var local_162: bool;
+    var local_163: bool;
+    var local_164: bool;
+    var local_165: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5290,51 +5483,51 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
         jacobian = (((w_7 * 6f) * t_7) * u_4);
         let _e58 = gamma_1;
         if smooth_b {
-            local_143 = !(smooth_a);
+            local_160 = !(smooth_a);
         } else {
-            local_143 = false;
+            local_160 = false;
         }
-        let _e66 = local_143;
+        let _e66 = local_160;
         gamma_1 = select(_e58, (a_29 + ((w_7 * t_7) * t_7)), _e66);
         let _e68 = jacobian;
         if smooth_b {
-            local_144 = !(smooth_a);
+            local_161 = !(smooth_a);
         } else {
-            local_144 = false;
+            local_161 = false;
         }
-        let _e75 = local_144;
+        let _e75 = local_161;
         jacobian = select(_e68, (w_7 * (t_7 + t_7)), _e75);
         let _e77 = gamma_1;
         if smooth_a {
-            local_145 = !(smooth_b);
+            local_162 = !(smooth_b);
         } else {
-            local_145 = false;
+            local_162 = false;
         }
-        let _e85 = local_145;
+        let _e85 = local_162;
         gamma_1 = select(_e77, (b_19 - ((w_7 * u_4) * u_4)), _e85);
         let _e87 = jacobian;
         if smooth_a {
-            local_146 = !(smooth_b);
+            local_163 = !(smooth_b);
         } else {
-            local_146 = false;
+            local_163 = false;
         }
-        let _e94 = local_146;
+        let _e94 = local_163;
         jacobian = select(_e87, (w_7 * (u_4 + u_4)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
-            local_147 = smooth_b;
+            local_164 = smooth_b;
         } else {
-            local_147 = false;
+            local_164 = false;
         }
-        let _e102 = local_147;
+        let _e102 = local_164;
         gamma_1 = select(_e96, (a_29 + (w_7 * t_7)), _e102);
         let _e104 = jacobian;
         if smooth_a {
-            local_148 = smooth_b;
+            local_165 = smooth_b;
         } else {
-            local_148 = false;
+            local_165 = false;
         }
-        let _e108 = local_148;
+        let _e108 = local_165;
         jacobian = select(_e104, w_7, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -5388,15 +5581,15 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_149: bool;
+    var local_166: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_149 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_166 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_149 = true;
+        local_166 = true;
     }
-    let _e11 = local_149;
+    let _e11 = local_166;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5405,18 +5598,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_150: bool;
+    var local_167: bool;
     var g_24: AirlightCanonical;
 
     let p_1 = n_2.scene;
     let _e7 = airlight_vec_finite(p_1.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_1.dir);
-        local_150 = _e11;
+        local_167 = _e11;
     } else {
-        local_150 = false;
+        local_167 = false;
     }
-    let _e13 = local_150;
+    let _e13 = local_167;
     if _e13 {
         g_24 = n_2.canonical;
         if !(n_2.exact) {
@@ -5434,8 +5627,8 @@ fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
 }
 
 fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
-    var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
-    var count_2: u32 = 0u;
+    var list_2: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var count_3: u32 = 0u;
     var a_17: f32;
     var b_13: f32;
     var slot_1: u32 = 0u;
@@ -5446,207 +5639,152 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
     var k_6: f32;
     var gauss: f32;
     var j_5: u32;
-    var local_151: bool;
+    var local_168: bool;
     var f: f32;
-    var local_152: bool;
-    var split: bool;
-    var tries: u32;
-    var local_153: bool;
-    var local_154: bool;
-    var local_155: bool;
+    var local_169: bool;
 
     let _e1 = airlight_valid(s_25);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_25);
-    if (_e6.outcome == 1u) {
+    if (s_25.light_shape >= AIRLIGHT_SHAPE_DISC) {
+        return AirlightResult(0f, 1u);
+    }
+    let _e12 = airlight_outer(s_25);
+    if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
-    if (_e6.outcome == 2u) {
+    if (_e12.outcome == 2u) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let _e19 = airlight_kronrod_rule();
-    a_17 = _e6.edges[0];
-    b_13 = _e6.edges[1];
-    let evaluations = ((2u * _e6.max_panels) - 1u);
+    let _e25 = airlight_kronrod_rule();
+    a_17 = _e12.edges[0];
+    b_13 = _e12.edges[1];
+    let evaluations = ((2u * _e12.max_panels) - 1u);
     loop {
-        let _e78 = step_2;
-        if (_e78 < evaluations) {
+        let _e84 = step_2;
+        if (_e84 < evaluations) {
         } else {
             break;
         }
         {
-            let _e80 = a_17;
-            let _e81 = b_13;
-            let c_15 = (0.5f * (_e80 + _e81));
-            let _e85 = b_13;
             let _e86 = a_17;
-            let hw_2 = (0.5f * (_e85 - _e86));
+            let _e87 = b_13;
+            let c_15 = (0.5f * (_e86 + _e87));
+            let _e91 = b_13;
+            let _e92 = a_17;
+            let hw_2 = (0.5f * (_e91 - _e92));
             k_6 = 0f;
             gauss = 0f;
             j_5 = 0u;
             loop {
-                let _e96 = j_5;
-                if (_e96 < 7u) {
+                let _e102 = j_5;
+                if (_e102 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e99 = j_5;
-                    let node_1 = _e19[(_e99 / 2u)];
-                    let _e109 = j_5;
-                    if ((_e109 & 1u) == 0u) {
-                        let _e116 = j_5;
-                        local_151 = (_e116 < 6u);
+                    let _e105 = j_5;
+                    let node_1 = _e25[(_e105 / 2u)];
+                    let _e115 = j_5;
+                    if ((_e115 & 1u) == 0u) {
+                        let _e122 = j_5;
+                        local_168 = (_e122 < 6u);
                     } else {
-                        local_151 = false;
+                        local_168 = false;
                     }
-                    let _e120 = local_151;
-                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
-                    let _e122 = airlight_outer_node(s_25, _e6, w_8);
+                    let _e126 = local_168;
+                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e126);
+                    let _e128 = airlight_outer_node(s_25, _e12, w_8);
                     f = 0f;
-                    if (_e122.weight != 0f) {
-                        let _e128 = airlight_node_integral(_e122);
-                        if (_e128.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e128;
+                    if (_e128.weight != 0f) {
+                        let _e134 = airlight_node_integral(_e128);
+                        if (_e134.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e134;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_152 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_152 = false;
+                            local_169 = false;
                         }
-                        let _e141 = local_152;
-                        if _e141 {
-                            return _e128;
+                        let _e147 = local_169;
+                        if _e147 {
+                            return _e134;
                         }
-                        f = (_e128.in_scatter * _e122.weight);
+                        f = (_e134.in_scatter * _e128.weight);
                     }
-                    let _e145 = k_6;
-                    let _e147 = f;
-                    k_6 = (_e145 + (node_1.y * _e147));
-                    let _e150 = gauss;
-                    let _e152 = f;
-                    gauss = (_e150 + (node_1.z * _e152));
+                    let _e151 = k_6;
+                    let _e153 = f;
+                    k_6 = (_e151 + (node_1.y * _e153));
+                    let _e156 = gauss;
+                    let _e158 = f;
+                    gauss = (_e156 + (node_1.z * _e158));
                 }
                 continuing {
-                    let _e156 = j_5;
-                    j_5 = (_e156 + 1u);
+                    let _e162 = j_5;
+                    j_5 = (_e162 + 1u);
                 }
             }
-            let _e158 = slot_1;
-            let _e159 = a_17;
-            let _e160 = b_13;
-            let _e161 = k_6;
-            let _e163 = k_6;
-            let _e165 = gauss;
-            airlight_list_set((&list_1), _e158, vec4<f32>(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
-            let _e170 = slot_1;
-            let _e171 = count_2;
-            if (_e170 == _e171) {
-                let _e173 = count_2;
-                count_2 = (_e173 + 1u);
+            let _e164 = slot_1;
+            let _e165 = a_17;
+            let _e166 = b_13;
+            let _e167 = k_6;
+            let _e169 = k_6;
+            let _e171 = gauss;
+            airlight_list_set((&list_2), _e164, vec4<f32>(_e165, _e166, (_e167 * hw_2), abs(((_e169 * hw_2) - (_e171 * hw_2)))));
+            let _e176 = slot_1;
+            let _e177 = count_3;
+            if (_e176 == _e177) {
+                let _e179 = count_3;
+                count_3 = (_e179 + 1u);
             }
-            let _e176 = count_2;
-            if (_e176 < _e6.panels) {
-                let _e180 = count_2;
-                a_17 = _e6.edges[_e180];
-                let _e183 = count_2;
-                b_13 = _e6.edges[(_e183 + 1u)];
-                let _e187 = count_2;
-                slot_1 = _e187;
+            let _e182 = count_3;
+            if (_e182 < _e12.panels) {
+                let _e186 = count_3;
+                a_17 = _e12.edges[_e186];
+                let _e189 = count_3;
+                b_13 = _e12.edges[(_e189 + 1u)];
+                let _e193 = count_3;
+                slot_1 = _e193;
             } else {
-                let _e188 = queued;
-                if _e188 {
-                    let _e189 = queued_lo;
-                    a_17 = _e189;
-                    let _e190 = queued_hi;
-                    b_13 = _e190;
-                    let _e191 = count_2;
-                    slot_1 = _e191;
+                let _e194 = queued;
+                if _e194 {
+                    let _e195 = queued_lo;
+                    a_17 = _e195;
+                    let _e196 = queued_hi;
+                    b_13 = _e196;
+                    let _e197 = count_3;
+                    slot_1 = _e197;
                     queued = false;
                 } else {
-                    split = false;
-                    tries = 0u;
-                    loop {
-                        let _e197 = tries;
-                        if (_e197 < _e6.max_panels) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e200 = list_1;
-                            let _e201 = count_2;
-                            let _e202 = airlight_list_scan(_e200, _e201);
-                            let total_4 = _e202.total;
-                            let worst_1 = _e202.worst;
-                            if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e213 = count_2;
-                                local_153 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_153 = true;
-                            }
-                            let _e217 = local_153;
-                            if !(_e217) {
-                                let _e221 = airlight_is_finite(total_4);
-                                local_154 = !(_e221);
-                            } else {
-                                local_154 = true;
-                            }
-                            let _e224 = local_154;
-                            if _e224 {
-                                break;
-                            }
-                            let _e225 = list_1;
-                            let _e226 = airlight_list_get(_e225, worst_1);
-                            let wa_1 = _e226.x;
-                            let wb_1 = _e226.y;
-                            let mid_1 = (0.5f * (wa_1 + wb_1));
-                            if (mid_1 > wa_1) {
-                                local_155 = (mid_1 < wb_1);
-                            } else {
-                                local_155 = false;
-                            }
-                            let _e237 = local_155;
-                            if !(_e237) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
-                                continue;
-                            }
-                            a_17 = wa_1;
-                            b_13 = mid_1;
-                            slot_1 = worst_1;
-                            queued = true;
-                            queued_lo = mid_1;
-                            queued_hi = wb_1;
-                            split = true;
-                            break;
-                        }
-                        continuing {
-                            let _e245 = tries;
-                            tries = (_e245 + 1u);
-                        }
-                    }
-                    let _e247 = split;
-                    if !(_e247) {
+                    let _e199 = count_3;
+                    let _e201 = airlight_split_worst((&list_2), _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+                    if !(_e201.split) {
                         break;
                     }
+                    a_17 = _e201.lo;
+                    b_13 = _e201.mid;
+                    slot_1 = _e201.slot;
+                    queued = true;
+                    queued_lo = _e201.mid;
+                    queued_hi = _e201.hi;
                 }
             }
         }
         continuing {
-            let _e250 = step_2;
-            step_2 = (_e250 + 1u);
+            let _e211 = step_2;
+            step_2 = (_e211 + 1u);
         }
     }
-    let _e252 = list_1;
-    let _e253 = count_2;
-    let _e254 = airlight_list_scan(_e252, _e253);
-    let total_5 = _e254.total;
-    let _e256 = airlight_is_finite(total_5);
-    if !(_e256) {
+    let _e213 = list_2;
+    let _e214 = count_3;
+    let _e215 = airlight_list_scan(_e213, _e214);
+    let total_4 = _e215.total;
+    let _e217 = airlight_is_finite(total_4);
+    if !(_e217) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);
+    return AirlightResult(max(total_4, 0f), AIRLIGHT_STATUS_OK);
 }
 
 @compute @workgroup_size(64, 1, 1) 

@@ -114,6 +114,14 @@ struct AirlightListScan {
     worst: u32,
 }
 
+struct AirlightSplit {
+    split: bool,
+    lo: f32,
+    mid: f32,
+    hi: f32,
+    slot: u32,
+}
+
 struct AirlightOuter {
     a: vec3<f32>,
     e: vec3<f32>,
@@ -155,6 +163,39 @@ struct AirlightNode {
     exact: bool,
 }
 
+struct AirlightArea {
+    d: vec3<f32>,
+    c: vec3<f32>,
+    n: vec3<f32>,
+    a1_: vec3<f32>,
+    a2_: vec3<f32>,
+    eu: vec3<f32>,
+    ev: vec3<f32>,
+    dirs: vec3<f32>,
+    radius: f32,
+    x_h: f32,
+    h_eff: f32,
+    edges: array<f32, 5>,
+    panels: u32,
+    outcome: u32,
+    lobes: vec4<f32>,
+    isotropic: bool,
+}
+
+struct AirlightAbove {
+    z: f32,
+    off: vec2<f32>,
+    rho0_: f32,
+}
+
+struct AirlightCap {
+    a: vec3<f32>,
+    dc: f32,
+    radius: f32,
+    sin_a: f32,
+    cos_a: f32,
+}
+
 const AIRLIGHT_TERMS: u32 = 12u;
 const AIRLIGHT_HALF_TERMS: u32 = 6u;
 const AIRLIGHT_PANEL_TOLERANCE: f32 = 0.001f;
@@ -186,6 +227,9 @@ const AIRLIGHT_LIGHT_TWO_LOBED: u32 = 1u;
 const AIRLIGHT_LIGHT_SPOT: u32 = 2u;
 const AIRLIGHT_SHAPE_POINT: u32 = 0u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = 1u;
+const AIRLIGHT_SHAPE_DISC: u32 = 2u;
+const AIRLIGHT_SHAPE_RECTANGLE: u32 = 3u;
+const AIRLIGHT_SHAPE_SPHERE: u32 = 4u;
 const AIRLIGHT_SURFACE_NONE: u32 = 0u;
 const AIRLIGHT_SURFACE_LAMBERT: u32 = 1u;
 const AIRLIGHT_SURFACE_PHONG: u32 = 2u;
@@ -201,12 +245,16 @@ const AIRLIGHT_E1_INV_RE: f32 = 0.7692308f;
 const AIRLIGHT_E1_INV_IM: f32 = 0.47619048f;
 const AIRLIGHT_E1_CF_MAX_DEPTH: u32 = 14u;
 const AIRLIGHT_E1_CF_PLAIN_FROM: u32 = 6u;
+const AIRLIGHT_EMISSION_MAX_POWER: u32 = 1024u;
 const AIRLIGHT_SEGMENT_PANELS: u32 = 6u;
 const AIRLIGHT_SURFACE_PANELS: u32 = 6u;
 const AIRLIGHT_PHONG_PANELS: u32 = 16u;
 const AIRLIGHT_OUTER_EDGES: u32 = 13u;
 const AIRLIGHT_LOBE_PAIRS: u32 = 5u;
 const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
+const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
+const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
+const AIRLIGHT_LOBE_REACH: f32 = 8f;
 
 fn airlight_zero_terms() -> array<f32, 12> {
     return array<f32, 12>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
@@ -246,6 +294,27 @@ fn airlight_segment_light(light: AirlightLight, end: vec3<f32>) -> AirlightLight
     return _e6;
 }
 
+fn airlight_disc_light(center: vec3<f32>, normal: vec3<f32>, radius: f32, radiance: f32) -> AirlightLight {
+    return AirlightLight(center, radiance, normal, radius, 1f, AIRLIGHT_LIGHT_OMNI, center, AIRLIGHT_SHAPE_DISC);
+}
+
+fn airlight_rectangle_light(corner: vec3<f32>, edge_u: vec3<f32>, edge_v: vec3<f32>, radiance_1: f32) -> AirlightLight {
+    return AirlightLight(corner, radiance_1, edge_u, 0f, 1f, AIRLIGHT_LIGHT_OMNI, edge_v, AIRLIGHT_SHAPE_RECTANGLE);
+}
+
+fn airlight_sphere_light(center_1: vec3<f32>, radius_1: f32, radiance_2: f32) -> AirlightLight {
+    return AirlightLight(center_1, radiance_2, vec3<f32>(0f, 0f, 1f), radius_1, 1f, AIRLIGHT_LIGHT_OMNI, center_1, AIRLIGHT_SHAPE_SPHERE);
+}
+
+fn airlight_cosine_lobe(light_1: AirlightLight, power_1: u32) -> AirlightLight {
+    var lobe: AirlightLight;
+
+    lobe = light_1;
+    lobe.param_b = f32(power_1);
+    let _e5 = lobe;
+    return _e5;
+}
+
 fn airlight_medium(sigma_s: f32, sigma_t: f32) -> AirlightMedium {
     return AirlightMedium(sigma_s, sigma_t);
 }
@@ -274,15 +343,15 @@ fn airlight_two_lobe_henyey_greenstein(g1_: f32, g2_: f32, w: f32) -> AirlightPh
     return AirlightPhase(AIRLIGHT_PHASE_TWO_LOBE_HG, g1_, g2_, w);
 }
 
-fn airlight_scene(ray: AirlightRay, light_1: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
-    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_1.position, light_1.intensity, light_1.axis, light_1.param_a, light_1.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_1.kind, phase.kind, ray.flags, 0f, AIRLIGHT_SURFACE_NONE, 0f, light_1.end, light_1.shape, vec3(0f));
+fn airlight_scene(ray: AirlightRay, light_2: AirlightLight, medium: AirlightMedium, phase: AirlightPhase) -> AirlightScene {
+    return AirlightScene(ray.origin, ray.t_min, ray.dir, ray.t_max, light_2.position, light_2.intensity, light_2.axis, light_2.param_a, light_2.param_b, medium.sigma_s, medium.sigma_t, phase.param_a, phase.param_b, phase.param_c, light_2.kind, phase.kind, ray.flags, 0f, AIRLIGHT_SURFACE_NONE, 0f, light_2.end, light_2.shape, vec3(0f));
 }
 
-fn airlight_lambert_surface(position_3: vec3<f32>, normal: vec3<f32>, albedo: f32, light_2: AirlightLight, medium_1: AirlightMedium, phase_1: AirlightPhase) -> AirlightScene {
+fn airlight_lambert_surface(position_3: vec3<f32>, normal_1: vec3<f32>, albedo: f32, light_3: AirlightLight, medium_1: AirlightMedium, phase_1: AirlightPhase) -> AirlightScene {
     var s: AirlightScene;
 
-    let _e7 = airlight_ray_to_infinity(position_3, normal, 0f);
-    let _e8 = airlight_scene(_e7, light_2, medium_1, phase_1);
+    let _e7 = airlight_ray_to_infinity(position_3, normal_1, 0f);
+    let _e8 = airlight_scene(_e7, light_3, medium_1, phase_1);
     s = _e8;
     s.brdf_scale = albedo;
     s.surface_kind = AIRLIGHT_SURFACE_LAMBERT;
@@ -290,11 +359,11 @@ fn airlight_lambert_surface(position_3: vec3<f32>, normal: vec3<f32>, albedo: f3
     return _e13;
 }
 
-fn airlight_phong_surface(position_4: vec3<f32>, normal_1: vec3<f32>, k_s: f32, exponent: f32, view: vec3<f32>, light_3: AirlightLight, medium_2: AirlightMedium, phase_2: AirlightPhase) -> AirlightScene {
+fn airlight_phong_surface(position_4: vec3<f32>, normal_2: vec3<f32>, k_s: f32, exponent: f32, view: vec3<f32>, light_4: AirlightLight, medium_2: AirlightMedium, phase_2: AirlightPhase) -> AirlightScene {
     var s_1: AirlightScene;
 
-    let _e9 = airlight_ray_to_infinity(position_4, normal_1, 0f);
-    let _e10 = airlight_scene(_e9, light_3, medium_2, phase_2);
+    let _e9 = airlight_ray_to_infinity(position_4, normal_2, 0f);
+    let _e10 = airlight_scene(_e9, light_4, medium_2, phase_2);
     s_1 = _e10;
     s_1.brdf_scale = k_s;
     s_1.brdf_exponent = exponent;
@@ -341,18 +410,18 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_3 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_3, (z_1.y / (t_3 + t_3)));
+        let t_4 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_4, (z_1.y / (t_4 + t_4)));
     }
-    let t_4 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_4 + t_4)), select(-(t_4), t_4, (z_1.y >= 0f)));
+    let t_5 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_5 + t_5)), select(-(t_5), t_5, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
-    let z_9 = (x * x);
-    let c_7 = (1f + (z_9 * (-0.5f + (z_9 * (0.041666668f + (z_9 * (-0.0013888889f + (z_9 * (0.000024801588f + (z_9 * (-0.0000002755732f + (z_9 * (0.0000000020876756f + (z_9 * (-0.000000000011470745f + (z_9 * 0.000000000000047794773f))))))))))))))));
-    let s_30 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_7, (s_30 * x));
+    let z_10 = (x * x);
+    let c_8 = (1f + (z_10 * (-0.5f + (z_10 * (0.041666668f + (z_10 * (-0.0013888889f + (z_10 * (0.000024801588f + (z_10 * (-0.0000002755732f + (z_10 * (0.0000000020876756f + (z_10 * (-0.000000000011470745f + (z_10 * 0.000000000000047794773f))))))))))))))));
+    let s_47 = (1f + (z_10 * (-0.16666667f + (z_10 * (0.008333334f + (z_10 * (-0.0001984127f + (z_10 * (0.0000027557319f + (z_10 * (-0.000000025052108f + (z_10 * (0.00000000016059044f + (z_10 * (-0.00000000000076471636f + (z_10 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_47 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -377,11 +446,11 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_10 = (_e17 * _e18);
+    let z_11 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_10) - 0.13877685f) * z_10) + 0.19977711f) * z_10) - 0.3333295f) * z_10) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_11) - 0.13877685f) * z_11) + 0.19977711f) * z_11) - 0.3333295f) * z_11) * _e32) + _e34));
 }
 
 fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
@@ -409,10 +478,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_31 = (x_2 / (2f + x_2));
-    let z_11 = (s_31 * s_31);
-    let sum_7 = ((((((((((((((((z_11 / 17f) + 0.06666667f) * z_11) + 0.07692308f) * z_11) + 0.09090909f) * z_11) + 0.11111111f) * z_11) + 0.14285715f) * z_11) + 0.2f) * z_11) + 0.33333334f) * z_11) + 1f);
-    return ((2f * s_31) * sum_7);
+    let s_48 = (x_2 / (2f + x_2));
+    let z_12 = (s_48 * s_48);
+    let sum_12 = ((((((((((((((((z_12 / 17f) + 0.06666667f) * z_12) + 0.07692308f) * z_12) + 0.09090909f) * z_12) + 0.11111111f) * z_12) + 0.14285715f) * z_12) + 0.2f) * z_12) + 0.33333334f) * z_12) + 1f);
+    return ((2f * s_48) * sum_12);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -482,9 +551,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_21 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_25 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_21 * x_21) + (y_5 * y_5)) < 1f);
+    return (((x_25 * x_25) + (y_5 * y_5)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -637,8 +706,8 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let nf_1 = f32(n);
     let m_6 = f32(_e2);
     let b_15 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
-    let a_18 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
-    let disc = (1f - ((4f * a_18) / (b_15 * b_15)));
+    let a_29 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
+    let disc = (1f - ((4f * a_29) / (b_15 * b_15)));
     t_2 = b_15;
     if (disc > 0f) {
         t_2 = ((b_15 * (1f + sqrt(disc))) * 0.5f);
@@ -815,8 +884,8 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 14> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_19 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_19 * a_19));
+        let a_30 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_30 * a_30));
     }
     let b_16 = (1f + g_2);
     return ((op * -((g_2 + g_2))) + (b_16 * b_16));
@@ -913,8 +982,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_22 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_22 * x_22) * (3f - (2f * x_22)));
+            let x_26 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_26 * x_26) * (3f - (2f * x_26)));
         }
         default: {
             return 1f;
@@ -933,11 +1002,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_20 = abs(g_4);
-    if !((a_20 > 0f)) {
+    let a_31 = abs(g_4);
+    if !((a_31 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_20) * (1f - a_20)) / (a_20 + a_20));
+    return (((1f - a_31) * (1f - a_31)) / (a_31 + a_31));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -951,8 +1020,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_21 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_21) / a_21), (a_21 > 0f)), sigma_1);
+            let a_32 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_32) / a_32), (a_32 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1023,8 +1092,8 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
     let y2_ = (y_1 * y_1);
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
-    let mu_2 = (-(sigma_2) * (om_3 * inv_2));
-    let c_8 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
+    let mu_3 = (-(sigma_2) * (om_3 * inv_2));
+    let c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
     let far = ((y2_ * inv_2) * 2f);
     let near = (inv_2 * 2f);
     minus = near;
@@ -1033,10 +1102,10 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
         minus = far;
         plus = near;
     }
-    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_8);
+    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
     let _e40 = minus;
     let _e41 = plus;
-    let _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_2, _e40, _e41);
+    let _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_3, _e40, _e41);
     let f_1 = (_e35 * _e42);
     return vec2<f32>(f_1, inv_2);
 }
@@ -1170,10 +1239,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_23 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_23);
+            let x_27 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_27);
             if _e42 {
-                let _e43 = airlight_log1p(x_23);
+                let _e43 = airlight_log1p(x_27);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1306,8 +1375,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_24 = rule[(i_3 / 2u)].x;
-    return select(x_24, -(x_24), ((i_3 % 2u) == 0u));
+    let x_28 = rule[(i_3 / 2u)].x;
+    return select(x_28, -(x_28), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 12>) -> array<f32, 12> {
@@ -1388,8 +1457,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_25 = (lambda / f32((2u * k0_)));
-            let per_step = (x_25 * x_25);
+            let x_29 = (lambda / f32((2u * k0_)));
+            let per_step = (x_29 * x_29);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1411,8 +1480,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
                 }
             }
             let _e55 = steps;
-            let top = ((k0_ + _e55) + 2u);
-            odd = f32(((2u * top) + 1u));
+            let top_1 = ((k0_ + _e55) + 2u);
+            odd = f32(((2u * top_1) + 1u));
             loop {
                 let _e73 = i_4;
                 if (_e73 < 54u) {
@@ -1421,7 +1490,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
                 }
                 {
                     let _e76 = i_4;
-                    if ((_e76 + AIRLIGHT_TERMS) > top) {
+                    if ((_e76 + AIRLIGHT_TERMS) > top_1) {
                         break;
                     }
                     let _e79 = above;
@@ -1906,47 +1975,47 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
         return 1f;
     }
     let measured = sqrt((last / before));
-    let q_4 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_5 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if (q_4 < 1f) {
+    if (q_5 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_4) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_5) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_4) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_5) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_4) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_5) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_4) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_5) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_4) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_5) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_4) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_5) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_4) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_5) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_4) + abs(m_1[7])), true);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_5) + abs(m_1[7])), true);
         let _e133 = aliasing;
         let _e137 = aliasing;
-        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_4) + abs(m_1[8])), true);
+        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_5) + abs(m_1[8])), true);
         let _e144 = aliasing;
         let _e148 = aliasing;
-        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_4) + abs(m_1[9])), true);
+        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_5) + abs(m_1[9])), true);
         let _e155 = aliasing;
         let _e159 = aliasing;
-        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_4) + abs(m_1[10])), true);
+        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_5) + abs(m_1[10])), true);
         let _e166 = aliasing;
         let _e170 = aliasing;
-        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_4) + abs(m_1[11])), false);
+        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_5) + abs(m_1[11])), false);
         let _e177 = aliasing;
-        return min(((_e177 + (q_4 * truncation)) / m_1[0]), 1f);
+        return min(((_e177 + (q_5 * truncation)) / m_1[0]), 1f);
     }
     let _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -1973,10 +2042,10 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     let _e230 = c_max;
     c_max = max(_e230, abs(c_2[11]));
     let _e236 = c_max;
-    let power_1 = select(3u, 2u, (_e236 > (1.2f * abs(c_2[0]))));
+    let power_2 = select(3u, 2u, (_e236 > (1.2f * abs(c_2[0]))));
     loop {
         let _e247 = i_5;
-        if (_e247 < power_1) {
+        if (_e247 < power_2) {
         } else {
             break;
         }
@@ -1995,8 +2064,8 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_22 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_22 + sqrt(max(((a_22 * a_22) - 1f), 0f)));
+    let a_33 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_33 + sqrt(max(((a_33 * a_33) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2011,8 +2080,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_26 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_26)), (x_26 > 0f));
+    let x_30 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_30)), (x_30 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2122,8 +2191,8 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     sum_3 = (_e139 + (_e77[11] * _e81[11]));
     let _e144 = airlight_factor(half_6, a_5, b_4);
     let _e145 = r_2;
-    let w_2 = (_e144 * _e145);
-    let mass_5 = (w_2 * _e81[0]);
+    let w_3 = (_e144 * _e145);
+    let mass_5 = (w_3 * _e81[0]);
     let _e149 = vc;
     let _e150 = r_2;
     let _e152 = airlight_singular_floor(heights_1, steps_2, _e149, _e150, false);
@@ -2135,7 +2204,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e160 = airlight_transform_noise(mass_5, _e159);
     let _e161 = over_max;
     let _e163 = f_max_1;
-    let _e164 = airlight_panel_result((w_2 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
+    let _e164 = airlight_panel_result((w_3 * _e157), error_1, _e160, (mass_5 * _e161), _e163);
     return _e164;
 }
 
@@ -2163,18 +2232,18 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
             let _e28 = i_7;
             let _e29 = airlight_node(_e8, _e28);
             let y_7 = (yc_1 + (r_9 * _e29));
-            let weight_1 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
+            let weight_2 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
             let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_7);
             let over_1 = (1f / (1f + (y_7 * y_7)));
             let _e47 = i_7;
-            samples_1[_e47] = ((_e41 * over_1) * weight_1);
+            samples_1[_e47] = ((_e41 * over_1) * weight_2);
             let _e51 = f_max_2;
             f_max_2 = max(_e51, abs(_e41));
             let _e54 = over_max_1;
             over_max_1 = max(_e54, over_1);
             let _e56 = mass_1;
             let _e57 = i_7;
-            mass_1 = (_e56 + (_e8[(_e57 / 2u)].y * weight_1));
+            mass_1 = (_e56 + (_e8[(_e57 / 2u)].y * weight_2));
             let _e64 = p_avg;
             let _e65 = i_7;
             let _e72 = i_7;
@@ -2189,7 +2258,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
     let _e83 = airlight_factor(half_7, a_6, b_5);
-    let w_3 = (_e83 * r_9);
+    let w_4 = (_e83 * r_9);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2f;
@@ -2197,13 +2266,13 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e93 = airlight_tail_estimate(_e82);
     let _e95 = m_2;
     let _e96 = airlight_error_factor(_e82, _e95, _e90);
-    let error_2 = (((w_3 * 2f) * _e93) * _e96);
+    let error_2 = (((w_4 * 2f) * _e93) * _e96);
     let _e104 = p_avg;
-    let _e105 = airlight_transform_noise((w_3 * 2f), _e104);
+    let _e105 = airlight_transform_noise((w_4 * 2f), _e104);
     let _e106 = mass_1;
     let _e108 = over_max_1;
     let _e110 = f_max_2;
-    let _e111 = airlight_panel_result(((w_3 * 2f) * _e82[0]), error_2, _e105, ((w_3 * _e106) * _e108), _e110);
+    let _e111 = airlight_panel_result(((w_4 * 2f) * _e82[0]), error_2, _e105, ((w_4 * _e106) * _e108), _e110);
     return _e111;
 }
 
@@ -2646,13 +2715,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_27 = (abs(alpha) + abs(beta));
+    let x_31 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_27) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_31) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2662,7 +2731,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_27) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_31) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2672,7 +2741,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_27) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_31) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2682,7 +2751,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_27) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_31) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2692,7 +2761,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_27) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_31) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2702,7 +2771,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_27) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_31) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2712,7 +2781,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_27) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_31) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2722,7 +2791,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_27) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_31) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2732,7 +2801,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_27) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_31) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2742,7 +2811,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_27) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_31) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2752,7 +2821,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_27) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_31) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2762,7 +2831,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_27) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_31) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -2813,8 +2882,8 @@ fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, hal
 fn airlight_graded_split(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
     var local_20: bool;
 
-    let t_5 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    let d_2 = sqrt(((a_9 * a_9) + (t_5 * t_5)));
+    let t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    let d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
     if (d_2 > 0f) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25f));
     } else {
@@ -3096,10 +3165,10 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
         return AIRLIGHT_FLT_MAX;
     }
     let inv_h = (1f / big_h_1);
-    let w_4 = (v_s + inv_h);
-    let r_11 = ((1f + (w_4 * w_4)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_1 * inv_h);
+    let w_5 = (v_s + inv_h);
+    let r_11 = ((1f + (w_5 * w_5)) / (1f + (v_s * v_s)));
+    let e_5 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_5 * inv_h);
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
@@ -3213,29 +3282,29 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
         lambda_1 = (_e116 + (min((big_h_7 * (y_end - _e26)), ((hw_1 * big_h_7) * (1f + (y_e * y_e)))) * 0.5f));
     }
     let _e128 = airlight_singular_steps(s_11);
-    let step_3 = _e128.y;
+    let step_4 = _e128.y;
     let p0_4 = s_11.phase_param_a;
     switch s_11.phase_kind {
         case 2u, 4u: {
             let _e134 = airlight_hg_gap(p0_4);
             let _e135 = psi1_1;
-            let _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_3);
+            let _e136 = airlight_angle_floor(p0_4, _e134, _e40, _e135, inv_hw_1, step_4);
             rate = _e136;
         }
         case 3u: {
-            let a_23 = abs(p0_4);
+            let a_34 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), _e40, _e145, inv_hw_1, step_3);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_34) / a_34), (a_34 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
             let p1_3 = s_11.phase_param_b;
             let _e148 = airlight_hg_gap(p0_4);
             let _e149 = psi1_1;
-            let _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_3);
+            let _e150 = airlight_angle_floor(p0_4, _e148, _e40, _e149, inv_hw_1, step_4);
             let _e151 = airlight_hg_gap(p1_3);
             let _e152 = psi1_1;
-            let _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_3);
+            let _e153 = airlight_angle_floor(p1_3, _e151, _e40, _e152, inv_hw_1, step_4);
             rate = max(_e150, _e153);
         }
         default: {
@@ -3294,21 +3363,21 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
             let y_9 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
-            let weight_2 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
             let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
-            let gw = (weight_2 * f_2);
+            let gw = (weight_3 * f_2);
             let _e297 = i_11;
             samples_3[_e297] = gw;
             let _e299 = i_11;
-            let w_5 = _e224[(_e299 / 2u)].y;
+            let w_6 = _e224[(_e299 / 2u)].y;
             let _e304 = value_1;
-            value_1 = (_e304 + (w_5 * gw));
+            value_1 = (_e304 + (w_6 * gw));
             let _e307 = mass_4;
-            mass_4 = (_e307 + (w_5 * weight_2));
+            mass_4 = (_e307 + (w_6 * weight_3));
             let _e310 = magnitude;
-            magnitude = (_e310 + (w_5 * abs(gw)));
+            magnitude = (_e310 + (w_6 * abs(gw)));
             let _e314 = f_max_5;
             f_max_5 = max(_e314, abs(f_2));
         }
@@ -3361,9 +3430,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     let a0_ = (k_4 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
     let c0_ = (k_4 - (sigma_9 * d_el));
-    let scale_1 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if !(!((scale_1 > 0f))) {
-        let _e21 = airlight_is_finite(scale_1);
+    let scale_2 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if !(!((scale_2 > 0f))) {
+        let _e21 = airlight_is_finite(scale_2);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3372,10 +3441,10 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_24 = (a0_ / scale_1);
-    let b_17 = (b0_ / scale_1);
-    let c_9 = (c0_ / scale_1);
-    let disc_1 = ((b_17 * b_17) - ((4f * a_24) * c_9));
+    let a_35 = (a0_ / scale_2);
+    let b_17 = (b0_ / scale_2);
+    let c_10 = (c0_ / scale_2);
+    let disc_1 = ((b_17 * b_17) - ((4f * a_35) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -3383,12 +3452,12 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
         sb = -1f;
     }
     let _e47 = sb;
-    let q_5 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
-    if (q_5 != 0f) {
-        r1_ = (c_9 / q_5);
+    let q_6 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
+    if (q_6 != 0f) {
+        r1_ = (c_10 / q_6);
     }
-    if (a_24 != 0f) {
-        r2_2 = (q_5 / a_24);
+    if (a_35 != 0f) {
+        r2_2 = (q_6 / a_35);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3433,15 +3502,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_25 = (sigma_11 * g_15.d_el);
+    let a_36 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
-    if (a_25 > 0f) {
-        y1_1 = (d_3 / (a_25 + root_1));
+    let root_1 = sqrt(((a_36 * a_36) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_36) / d_3);
+    if (a_36 > 0f) {
+        y1_1 = (d_3 / (a_36 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -3573,13 +3642,13 @@ fn airlight_half(s_12: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, ha
                         let _e94 = cuts[(_e90 + 1u)];
                         if (_e89 > _e94) {
                             let _e96 = j_2;
-                            let t_6 = cuts[_e96];
+                            let t_7 = cuts[_e96];
                             let _e99 = j_2;
                             let _e101 = j_2;
                             let _e105 = cuts[(_e101 + 1u)];
                             cuts[_e99] = _e105;
                             let _e106 = j_2;
-                            cuts[(_e106 + 1u)] = t_6;
+                            cuts[(_e106 + 1u)] = t_7;
                         }
                     }
                     continuing {
@@ -3717,7 +3786,7 @@ fn airlight_on_line(s_13: AirlightScene, g_17: AirlightCanonical) -> f32 {
     let _e99 = local_42;
     if _e99 {
         let _e100 = airlight_gauss_rule();
-        let half_15 = (span_2 * 0.5f);
+        let half_16 = (span_2 * 0.5f);
         loop {
             let _e107 = i_15;
             if (_e107 < AIRLIGHT_HALF_TERMS) {
@@ -3726,12 +3795,12 @@ fn airlight_on_line(s_13: AirlightScene, g_17: AirlightCanonical) -> f32 {
             }
             {
                 let _e110 = i_15;
-                let s_lo = (s0_ + (half_15 * (1f - _e100[_e110].x)));
+                let s_lo = (s0_ + (half_16 * (1f - _e100[_e110].x)));
                 let _e117 = i_15;
-                let s_hi = (s0_ + (half_15 * (1f + _e100[_e117].x)));
+                let s_hi = (s0_ + (half_16 * (1f + _e100[_e117].x)));
                 let _e124 = j_3;
                 let _e125 = i_15;
-                j_3 = (_e124 + (_e100[_e125].y * ((((half_15 / s_lo) * (s0_ / s_lo)) * exp((-(two_st) * (s_lo - s0_)))) + (((half_15 / s_hi) * (s0_ / s_hi)) * exp((-(two_st) * (s_hi - s0_)))))));
+                j_3 = (_e124 + (_e100[_e125].y * ((((half_16 / s_lo) * (s0_ / s_lo)) * exp((-(two_st) * (s_lo - s0_)))) + (((half_16 / s_hi) * (s0_ / s_hi)) * exp((-(two_st) * (s_hi - s0_)))))));
             }
             continuing {
                 let _e148 = i_15;
@@ -3817,7 +3886,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let _e49 = dv_2;
     let _e50 = dv_2;
     let _e51 = infinite_1;
-    let half_16 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
+    let half_17 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
         x_12 = (big_h_3 * _e8);
@@ -3827,7 +3896,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
         }
     }
     let _e66 = x_12;
-    let _e67 = airlight_moment_zero_weighted(half_16, _e66);
+    let _e67 = airlight_moment_zero_weighted(half_17, _e66);
     let _e73 = airlight_integrand(s_14, g_18, -1f, 0f);
     let _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
@@ -4196,8 +4265,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_3 = (v_3 / vec3(m_8));
-    return (u_3 / vec3(length(u_3)));
+    let u_5 = (v_3 / vec3(m_8));
+    return (u_5 / vec3(length(u_5)));
 }
 
 fn airlight_valid(s_18: AirlightScene) -> bool {
@@ -4240,6 +4309,20 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     var local_106: bool;
     var local_107: bool;
     var local_108: bool;
+    var local_109: bool;
+    var local_110: bool;
+    var local_111: bool;
+    var local_112: bool;
+    var local_113: bool;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: bool;
+    var local_117: bool;
+    var local_118: bool;
+    var local_119: bool;
+    var local_120: bool;
+    var local_121: bool;
+    var local_122: bool;
 
     let _e2 = airlight_vec_finite(s_18.origin);
     if _e2 {
@@ -4338,82 +4421,192 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         let _e95 = local_83;
         ok = _e95;
     } else {
-        if (s_18.light_shape != AIRLIGHT_SHAPE_POINT) {
-            ok = false;
+        if (s_18.light_shape >= AIRLIGHT_SHAPE_DISC) {
+            local_84 = (s_18.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_84 = false;
+        }
+        let _e105 = local_84;
+        if _e105 {
+            let _e106 = ok;
+            if _e106 {
+                local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+            } else {
+                local_85 = false;
+            }
+            let _e113 = local_85;
+            if _e113 {
+                local_86 = (s_18.light_param_b >= 1f);
+            } else {
+                local_86 = false;
+            }
+            let _e120 = local_86;
+            if _e120 {
+                local_87 = (s_18.light_param_b <= 1024f);
+            } else {
+                local_87 = false;
+            }
+            let _e127 = local_87;
+            if _e127 {
+                local_88 = (fract(s_18.light_param_b) == 0f);
+            } else {
+                local_88 = false;
+            }
+            let _e135 = local_88;
+            ok = _e135;
+            if (s_18.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+                let _e139 = ok;
+                if _e139 {
+                    let _e143 = airlight_vec_finite(s_18.light_axis);
+                    local_89 = _e143;
+                } else {
+                    local_89 = false;
+                }
+                let _e145 = local_89;
+                if _e145 {
+                    let _e149 = airlight_normalisable(s_18.light_axis);
+                    local_90 = _e149;
+                } else {
+                    local_90 = false;
+                }
+                let _e151 = local_90;
+                if _e151 {
+                    let _e155 = airlight_vec_finite(s_18.light_end);
+                    local_91 = _e155;
+                } else {
+                    local_91 = false;
+                }
+                let _e157 = local_91;
+                if _e157 {
+                    let _e161 = airlight_normalisable(s_18.light_end);
+                    local_92 = _e161;
+                } else {
+                    local_92 = false;
+                }
+                let _e163 = local_92;
+                if _e163 {
+                    let _e167 = airlight_normalize(s_18.light_axis);
+                    let _e169 = airlight_normalize(s_18.light_end);
+                    let _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_93 = false;
+                }
+                let _e175 = local_93;
+                ok = _e175;
+            } else {
+                let _e176 = ok;
+                if _e176 {
+                    let _e180 = airlight_is_finite(s_18.light_param_a);
+                    local_94 = _e180;
+                } else {
+                    local_94 = false;
+                }
+                let _e182 = local_94;
+                if _e182 {
+                    local_95 = (s_18.light_param_a >= 0f);
+                } else {
+                    local_95 = false;
+                }
+                let _e189 = local_95;
+                ok = _e189;
+                if (s_18.light_shape == AIRLIGHT_SHAPE_DISC) {
+                    let _e193 = ok;
+                    if _e193 {
+                        let _e197 = airlight_vec_finite(s_18.light_axis);
+                        local_96 = _e197;
+                    } else {
+                        local_96 = false;
+                    }
+                    let _e199 = local_96;
+                    if _e199 {
+                        let _e203 = airlight_normalisable(s_18.light_axis);
+                        local_97 = _e203;
+                    } else {
+                        local_97 = false;
+                    }
+                    let _e205 = local_97;
+                    ok = _e205;
+                }
+            }
+        } else {
+            if (s_18.light_shape != AIRLIGHT_SHAPE_POINT) {
+                ok = false;
+            }
         }
     }
     if !((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_84 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+        local_98 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_84 = true;
+        local_98 = true;
     }
-    let _e110 = local_84;
-    if _e110 {
-        let _e111 = ok;
-        if _e111 {
-            let _e115 = airlight_is_finite(s_18.brdf_scale);
-            local_85 = _e115;
+    let _e220 = local_98;
+    if _e220 {
+        let _e221 = ok;
+        if _e221 {
+            let _e225 = airlight_is_finite(s_18.brdf_scale);
+            local_99 = _e225;
         } else {
-            local_85 = false;
+            local_99 = false;
         }
-        let _e117 = local_85;
-        if _e117 {
-            local_86 = (s_18.brdf_scale >= 0f);
+        let _e227 = local_99;
+        if _e227 {
+            local_100 = (s_18.brdf_scale >= 0f);
         } else {
-            local_86 = false;
+            local_100 = false;
         }
-        let _e124 = local_86;
-        if _e124 {
-            local_87 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
+        let _e234 = local_100;
+        if _e234 {
+            local_101 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
         } else {
-            local_87 = false;
+            local_101 = false;
         }
-        let _e131 = local_87;
-        if _e131 {
-            local_88 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+        let _e241 = local_101;
+        if _e241 {
+            local_102 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
         } else {
-            local_88 = false;
+            local_102 = false;
         }
-        let _e138 = local_88;
-        if _e138 {
-            let _e144 = airlight_safe_length((s_18.light_position - s_18.origin));
-            let _e145 = airlight_is_finite(_e144);
-            local_89 = _e145;
+        let _e248 = local_102;
+        if _e248 {
+            let _e254 = airlight_safe_length((s_18.light_position - s_18.origin));
+            let _e255 = airlight_is_finite(_e254);
+            local_103 = _e255;
         } else {
-            local_89 = false;
+            local_103 = false;
         }
-        let _e147 = local_89;
-        ok = _e147;
+        let _e257 = local_103;
+        ok = _e257;
         if (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG) {
-            let _e151 = ok;
-            if _e151 {
-                let _e155 = airlight_is_finite(s_18.brdf_exponent);
-                local_90 = _e155;
+            let _e261 = ok;
+            if _e261 {
+                let _e265 = airlight_is_finite(s_18.brdf_exponent);
+                local_104 = _e265;
             } else {
-                local_90 = false;
+                local_104 = false;
             }
-            let _e157 = local_90;
-            if _e157 {
-                local_91 = (s_18.brdf_exponent >= 0f);
+            let _e267 = local_104;
+            if _e267 {
+                local_105 = (s_18.brdf_exponent >= 0f);
             } else {
-                local_91 = false;
+                local_105 = false;
             }
-            let _e164 = local_91;
-            if _e164 {
-                let _e168 = airlight_vec_finite(s_18.brdf_view);
-                local_92 = _e168;
+            let _e274 = local_105;
+            if _e274 {
+                let _e278 = airlight_vec_finite(s_18.brdf_view);
+                local_106 = _e278;
             } else {
-                local_92 = false;
+                local_106 = false;
             }
-            let _e170 = local_92;
-            if _e170 {
-                let _e174 = airlight_normalisable(s_18.brdf_view);
-                local_93 = _e174;
+            let _e280 = local_106;
+            if _e280 {
+                let _e284 = airlight_normalisable(s_18.brdf_view);
+                local_107 = _e284;
             } else {
-                local_93 = false;
+                local_107 = false;
             }
-            let _e176 = local_93;
-            ok = _e176;
+            let _e286 = local_107;
+            ok = _e286;
         }
     } else {
         if (s_18.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -4421,76 +4614,76 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         }
     }
     if (s_18.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-        let _e184 = ok;
-        if _e184 {
-            let _e188 = airlight_vec_finite(s_18.light_axis);
-            local_94 = _e188;
+        let _e294 = ok;
+        if _e294 {
+            let _e298 = airlight_vec_finite(s_18.light_axis);
+            local_108 = _e298;
         } else {
-            local_94 = false;
+            local_108 = false;
         }
-        let _e190 = local_94;
-        if _e190 {
-            let _e194 = airlight_normalisable(s_18.light_axis);
-            local_95 = _e194;
+        let _e300 = local_108;
+        if _e300 {
+            let _e304 = airlight_normalisable(s_18.light_axis);
+            local_109 = _e304;
         } else {
-            local_95 = false;
+            local_109 = false;
         }
-        let _e196 = local_95;
-        if _e196 {
-            local_96 = (s_18.light_param_a >= 0f);
+        let _e306 = local_109;
+        if _e306 {
+            local_110 = (s_18.light_param_a >= 0f);
         } else {
-            local_96 = false;
+            local_110 = false;
         }
-        let _e203 = local_96;
-        if _e203 {
-            local_97 = (s_18.light_param_a <= 1024f);
+        let _e313 = local_110;
+        if _e313 {
+            local_111 = (s_18.light_param_a <= 1024f);
         } else {
-            local_97 = false;
+            local_111 = false;
         }
-        let _e210 = local_97;
-        if _e210 {
-            local_98 = (fract((s_18.light_param_a * 0.5f)) == 0f);
+        let _e320 = local_111;
+        if _e320 {
+            local_112 = (fract((s_18.light_param_a * 0.5f)) == 0f);
         } else {
-            local_98 = false;
+            local_112 = false;
         }
-        let _e220 = local_98;
-        ok = _e220;
+        let _e330 = local_112;
+        ok = _e330;
     } else {
         if (s_18.light_kind == AIRLIGHT_LIGHT_SPOT) {
-            let _e224 = ok;
-            if _e224 {
-                let _e228 = airlight_vec_finite(s_18.light_axis);
-                local_99 = _e228;
+            let _e334 = ok;
+            if _e334 {
+                let _e338 = airlight_vec_finite(s_18.light_axis);
+                local_113 = _e338;
             } else {
-                local_99 = false;
+                local_113 = false;
             }
-            let _e230 = local_99;
-            if _e230 {
-                let _e234 = airlight_normalisable(s_18.light_axis);
-                local_100 = _e234;
+            let _e340 = local_113;
+            if _e340 {
+                let _e344 = airlight_normalisable(s_18.light_axis);
+                local_114 = _e344;
             } else {
-                local_100 = false;
+                local_114 = false;
             }
-            let _e236 = local_100;
-            if _e236 {
-                local_101 = (s_18.light_param_b < s_18.light_param_a);
+            let _e346 = local_114;
+            if _e346 {
+                local_115 = (s_18.light_param_b < s_18.light_param_a);
             } else {
-                local_101 = false;
+                local_115 = false;
             }
-            let _e243 = local_101;
-            if _e243 {
-                local_102 = (s_18.light_param_b >= -1f);
+            let _e353 = local_115;
+            if _e353 {
+                local_116 = (s_18.light_param_b >= -1f);
             } else {
-                local_102 = false;
+                local_116 = false;
             }
-            let _e250 = local_102;
-            if _e250 {
-                local_103 = (s_18.light_param_a <= 1f);
+            let _e360 = local_116;
+            if _e360 {
+                local_117 = (s_18.light_param_a <= 1f);
             } else {
-                local_103 = false;
+                local_117 = false;
             }
-            let _e257 = local_103;
-            ok = _e257;
+            let _e367 = local_117;
+            ok = _e367;
         } else {
             if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
@@ -4502,49 +4695,49 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
-            let _e267 = ok;
-            if _e267 {
-                local_104 = g_ok;
+            let _e377 = ok;
+            if _e377 {
+                local_118 = g_ok;
             } else {
-                local_104 = false;
+                local_118 = false;
             }
-            let _e271 = local_104;
-            ok = _e271;
+            let _e381 = local_118;
+            ok = _e381;
         }
         case 5u: {
-            let _e272 = ok;
-            if _e272 {
-                local_105 = g_ok;
+            let _e382 = ok;
+            if _e382 {
+                local_119 = g_ok;
             } else {
-                local_105 = false;
+                local_119 = false;
             }
-            let _e276 = local_105;
-            if _e276 {
-                local_106 = (abs(s_18.phase_param_b) < 1f);
+            let _e386 = local_119;
+            if _e386 {
+                local_120 = (abs(s_18.phase_param_b) < 1f);
             } else {
-                local_106 = false;
+                local_120 = false;
             }
-            let _e284 = local_106;
-            if _e284 {
-                local_107 = (s_18.phase_param_c >= 0f);
+            let _e394 = local_120;
+            if _e394 {
+                local_121 = (s_18.phase_param_c >= 0f);
             } else {
-                local_107 = false;
+                local_121 = false;
             }
-            let _e291 = local_107;
-            if _e291 {
-                local_108 = (s_18.phase_param_c <= 1f);
+            let _e401 = local_121;
+            if _e401 {
+                local_122 = (s_18.phase_param_c <= 1f);
             } else {
-                local_108 = false;
+                local_122 = false;
             }
-            let _e298 = local_108;
-            ok = _e298;
+            let _e408 = local_122;
+            ok = _e408;
         }
         default: {
             ok = false;
         }
     }
-    let _e300 = ok;
-    return _e300;
+    let _e410 = ok;
+    return _e410;
 }
 
 fn airlight_canonical(s_19: AirlightScene) -> AirlightCanonical {
@@ -4564,10 +4757,10 @@ fn airlight_canonical(s_19: AirlightScene) -> AirlightCanonical {
         let _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_19.flags & 1u) != 0u);
+    let infinite_4 = ((s_19.flags & 1u) != 0u);
     let _e32 = a_12;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, select(s_19.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, select(s_19.t_max, 0f, infinite_4), infinite_4);
 }
 
 fn airlight_opaque(x_13: f32, key: u32) -> f32 {
@@ -4578,9 +4771,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_2 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_2);
-    return vec2<f32>(_e4, select(0f, e_2, _e12));
+    let e_6 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_6);
+    return vec2<f32>(_e4, select(0f, e_6, _e12));
 }
 
 fn airlight_split_high(x_14: f32) -> f32 {
@@ -4593,9 +4786,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_3);
-    return vec2<f32>(_e4, select(0f, e_3, _e17));
+    let e_7 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_7);
+    return vec2<f32>(_e4, select(0f, e_7, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4607,59 +4800,59 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_109: bool;
-    var local_110: bool;
+    var local_123: bool;
+    var local_124: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_110 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_110 = false;
+            local_124 = false;
         }
-        let _e21 = local_110;
-        local_109 = _e21;
+        let _e21 = local_124;
+        local_123 = _e21;
     } else {
-        local_109 = true;
+        local_123 = true;
     }
-    let _e23 = local_109;
+    let _e23 = local_123;
     return _e23;
 }
 
 fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_111: bool;
+    var local_125: bool;
     var out_2: AirlightCanonical;
-    var local_112: bool;
+    var local_126: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
     let key_4 = u32((s_20.flags > 1u));
     let _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
     let _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
     let _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
-    let hi_4 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_5 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_5 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_6 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir_2 = s_20.dir;
-    let _e33 = airlight_in_exact_range(hi_4);
+    let _e33 = airlight_in_exact_range(hi_5);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_111 = !(_e38);
+        local_125 = !(_e38);
     } else {
-        local_111 = true;
+        local_125 = true;
     }
-    let _e41 = local_111;
+    let _e41 = local_125;
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_4.y, dir_2.z, hi_4.z, dir_2.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_4.z, dir_2.x, hi_4.x, dir_2.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_4.x, dir_2.y, hi_4.y, dir_2.x, key_4);
-    let w_6 = vec3<f32>((_e46 + ((lo_5.y * dir_2.z) - (lo_5.z * dir_2.y))), (_e59 + ((lo_5.z * dir_2.x) - (lo_5.x * dir_2.z))), (_e72 + ((lo_5.x * dir_2.y) - (lo_5.y * dir_2.x))));
-    let _e82 = airlight_vec_finite(w_6);
+    let _e46 = airlight_diff_of_products(hi_5.y, dir_2.z, hi_5.z, dir_2.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_5.z, dir_2.x, hi_5.x, dir_2.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_5.x, dir_2.y, hi_5.y, dir_2.x, key_4);
+    let w_7 = vec3<f32>((_e46 + ((lo_6.y * dir_2.z) - (lo_6.z * dir_2.y))), (_e59 + ((lo_6.z * dir_2.x) - (lo_6.x * dir_2.z))), (_e72 + ((lo_6.x * dir_2.y) - (lo_6.y * dir_2.x))));
+    let _e82 = airlight_vec_finite(w_7);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_6);
+    let _e85 = airlight_safe_length(w_7);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
@@ -4670,11 +4863,11 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_112 = (h_7 > 0f);
+        local_126 = (h_7 > 0f);
     } else {
-        local_112 = false;
+        local_126 = false;
     }
-    let _e101 = local_112;
+    let _e101 = local_126;
     if !(_e101) {
         return plain;
     }
@@ -4683,11 +4876,11 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         a_16 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
-    let _e114 = airlight_normalize(w_6);
-    let n_3 = -(cross(_e113, _e114));
+    let _e114 = airlight_normalize(w_7);
+    let n_5 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_16;
-    out_2.d_c = dot(n_3, _e119);
+    out_2.d_c = dot(n_5, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -5005,13 +5198,67 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
+fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
+    var tries: u32 = 0u;
+    var local_127: bool;
+    var local_128: bool;
+    var local_129: bool;
+
+    loop {
+        let _e6 = tries;
+        if (_e6 < max_panels) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = (*list_1);
+            let _e9 = airlight_list_scan(_e8, count_2);
+            if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
+                local_127 = (count_2 == max_panels);
+            } else {
+                local_127 = true;
+            }
+            let _e21 = local_127;
+            if !(_e21) {
+                let _e26 = airlight_is_finite(_e9.total);
+                local_128 = !(_e26);
+            } else {
+                local_128 = true;
+            }
+            let _e29 = local_128;
+            if _e29 {
+                break;
+            }
+            let _e30 = (*list_1);
+            let _e32 = airlight_list_get(_e30, _e9.worst);
+            let mid_1 = (0.5f * (_e32.x + _e32.y));
+            if (mid_1 > _e32.x) {
+                local_129 = (mid_1 < _e32.y);
+            } else {
+                local_129 = false;
+            }
+            let _e45 = local_129;
+            if !(_e45) {
+                airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
+                continue;
+            }
+            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+        }
+        continuing {
+            let _e57 = tries;
+            tries = (_e57 + 1u);
+        }
+    }
+    return AirlightSplit(false, 0f, 0f, 0f, 0u);
+}
+
 fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
-    let a_26 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_26));
-    if (a_26 <= 4096f) {
-        let _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1f + sqrt((1f + (a_26 * a_26)))))));
+    let a_37 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_37));
+    if (a_37 <= 4096f) {
+        let _e17 = airlight_log1p((a_37 + ((a_37 * a_37) / (1f + sqrt((1f + (a_37 * a_37)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5029,15 +5276,15 @@ fn airlight_to_w(g_21: AirlightOuter, s_21: f32) -> f32 {
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
     let r_12 = (x_16 - 1.5707964f);
-    let z_12 = (r_12 * r_12);
-    let cos_r = (1f - ((z_12 / 2f) * (1f - ((z_12 / 12f) * (1f - ((z_12 / 30f) * (1f - ((z_12 / 56f) * (1f - ((z_12 / 90f) * (1f - ((z_12 / 132f) * (1f - (z_12 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_12 / 6f) * (1f - ((z_12 / 20f) * (1f - ((z_12 / 42f) * (1f - ((z_12 / 72f) * (1f - ((z_12 / 110f) * (1f - ((z_12 / 156f) * (1f - (z_12 / 210f)))))))))))))));
+    let z_13 = (r_12 * r_12);
+    let cos_r = (1f - ((z_13 / 2f) * (1f - ((z_13 / 12f) * (1f - ((z_13 / 30f) * (1f - ((z_13 / 56f) * (1f - ((z_13 / 90f) * (1f - ((z_13 / 132f) * (1f - (z_13 / 182f))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_13 / 6f) * (1f - ((z_13 / 20f) * (1f - ((z_13 / 42f) * (1f - ((z_13 / 72f) * (1f - ((z_13 / 110f) * (1f - ((z_13 / 156f) * (1f - (z_13 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
 fn airlight_acos(x_17: f32) -> f32 {
-    let a_27 = abs(x_17);
-    let _e8 = airlight_atan(sqrt(((1f - a_27) / (1f + a_27))));
+    let a_38 = abs(x_17);
+    let _e8 = airlight_atan(sqrt(((1f - a_38) / (1f + a_38))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
@@ -5047,49 +5294,49 @@ fn airlight_angle(c_6: f32, s_22: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_28 = (cos_a * cos_g);
+    let a_39 = (cos_a * cos_g);
     let b_18 = (sin_a * sin_g);
-    if (b_18 <= abs(a_28)) {
-        return select(0f, AIRLIGHT_PI, (a_28 > 0f));
+    if (b_18 <= abs(a_39)) {
+        return select(0f, AIRLIGHT_PI, (a_39 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_28) / b_18), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_39) / b_18), -1f, 1f));
     return _e18;
 }
 
-fn airlight_outer_point(s_23: AirlightScene, max_panels: u32) -> AirlightOuter {
+fn airlight_outer_point(s_23: AirlightScene, max_panels_1: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_1, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_113: bool;
+    var local_130: bool;
     var u_1: vec3<f32>;
     var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_18: u32 = 1u;
     var j_4: u32;
-    var local_114: bool;
+    var local_131: bool;
     var k_5: u32 = 0u;
     var i_19: u32 = 0u;
-    var local_115: bool;
+    var local_132: bool;
     var i_20: u32 = 0u;
     var i_21: u32 = 1u;
-    var local_116: bool;
-    var local_117: bool;
-    var local_118: bool;
-    var local_119: bool;
-    var local_120: bool;
+    var local_133: bool;
+    var local_134: bool;
+    var local_135: bool;
+    var local_136: bool;
+    var local_137: bool;
 
     let _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     let to_light_1 = (s_24.light_position - s_24.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_24.intensity == 0f)) {
-        local_113 = (s_24.sigma_s == 0f);
+        local_130 = (s_24.sigma_s == 0f);
     } else {
-        local_113 = true;
+        local_130 = true;
     }
-    let _e18 = local_113;
+    let _e18 = local_130;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -5127,30 +5374,30 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
     let _e92 = airlight_angle(cos_a_1, _e41);
-    let first = abs((1.5707964f - _e92));
-    cuts_1[0] = first;
-    cuts_1[1] = (AIRLIGHT_PI - first);
+    let first_1 = abs((1.5707964f - _e92));
+    cuts_1[0] = first_1;
+    cuts_1[1] = (AIRLIGHT_PI - first_1);
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         let _e105 = airlight_normalize(s_24.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_28 = dot(_e111, _e112);
+        let x_32 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_10 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_28 * x_28) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_32 * x_32) + (y_10 * y_10)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_28, abs(y_10));
+            let _e140 = airlight_angle(x_32, abs(y_10));
             let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_28 / _e145), (-(y_10) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_32 / _e145), (-(y_10) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5192,7 +5439,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         }
         {
             let _e227 = i_18;
-            let c_10 = cuts_1[_e227];
+            let c_11 = cuts_1[_e227];
             let _e230 = i_18;
             j_4 = _e230;
             loop {
@@ -5200,11 +5447,11 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_1[(_e237 - 1u)];
-                    local_114 = (_e241 > c_10);
+                    local_131 = (_e241 > c_11);
                 } else {
-                    local_114 = false;
+                    local_131 = false;
                 }
-                let _e244 = local_114;
+                let _e244 = local_131;
                 if _e244 {
                 } else {
                     break;
@@ -5219,15 +5466,15 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
                 }
             }
             let _e255 = j_4;
-            cuts_1[_e255] = c_10;
+            cuts_1[_e255] = c_11;
         }
         continuing {
             let _e258 = i_18;
             i_18 = (_e258 + 1u);
         }
     }
-    let hi_5 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
-    g_22.gamma[0] = select(0f, first, (cos_a_1 < 0f));
+    let hi_6 = select((AIRLIGHT_PI - first_1), AIRLIGHT_PI, (cos_a_1 < 0f));
+    g_22.gamma[0] = select(0f, first_1, (cos_a_1 < 0f));
     loop {
         let _e276 = i_19;
         if (_e276 < 11u) {
@@ -5242,11 +5489,11 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_19;
                 let _e291 = cuts_1[_e289];
-                local_115 = (_e291 < hi_5);
+                local_132 = (_e291 < hi_6);
             } else {
-                local_115 = false;
+                local_132 = false;
             }
-            let _e294 = local_115;
+            let _e294 = local_132;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5262,7 +5509,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_5;
+    g_22.gamma[(_e308 + 1u)] = hi_6;
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
@@ -5292,37 +5539,37 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             }
             {
                 let _e339 = i_21;
-                let e_4 = g_22.gamma[_e339];
-                if !((e_4 == kinks[0])) {
-                    local_116 = (e_4 == kinks[1]);
+                let e_8 = g_22.gamma[_e339];
+                if !((e_8 == kinks[0])) {
+                    local_133 = (e_8 == kinks[1]);
                 } else {
-                    local_116 = true;
+                    local_133 = true;
                 }
-                let _e350 = local_116;
+                let _e350 = local_133;
                 if !(_e350) {
-                    local_117 = (e_4 == kinks[2]);
+                    local_134 = (e_8 == kinks[2]);
                 } else {
-                    local_117 = true;
+                    local_134 = true;
                 }
-                let _e357 = local_117;
+                let _e357 = local_134;
                 if !(_e357) {
-                    local_118 = (e_4 == kinks[3]);
+                    local_135 = (e_8 == kinks[3]);
                 } else {
-                    local_118 = true;
+                    local_135 = true;
                 }
-                let _e364 = local_118;
+                let _e364 = local_135;
                 if !(_e364) {
-                    local_119 = (e_4 == kinks[4]);
+                    local_136 = (e_8 == kinks[4]);
                 } else {
-                    local_119 = true;
+                    local_136 = true;
                 }
-                let _e371 = local_119;
+                let _e371 = local_136;
                 if !(_e371) {
-                    local_120 = (e_4 == kinks[5]);
+                    local_137 = (e_8 == kinks[5]);
                 } else {
-                    local_120 = true;
+                    local_137 = true;
                 }
-                let kink = local_120;
+                let kink = local_137;
                 let _e380 = g_22.smooth_edges;
                 let _e382 = i_21;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -5338,7 +5585,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_121: bool;
+    var local_138: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5349,11 +5596,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_121 = (clip > 0f);
+        local_138 = (clip > 0f);
     } else {
-        local_121 = false;
+        local_138 = false;
     }
-    let _e43 = local_121;
+    let _e43 = local_138;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5372,7 +5619,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_122: bool;
+    var local_139: bool;
 
     end_1 = x_19;
     let _e3 = end_1;
@@ -5389,11 +5636,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_122 = (_e21 < cut);
+        local_139 = (_e21 < cut);
     } else {
-        local_122 = false;
+        local_139 = false;
     }
-    let _e24 = local_122;
+    let _e24 = local_139;
     return select(0f, _e15, _e24);
 }
 
@@ -5402,18 +5649,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_123: bool;
+    var local_140: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
-    let w_7 = (hi_3 - lo_4);
-    if !(!((w_7 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_7)));
-        local_123 = !((_e14 > 0f));
+    let w_8 = (hi_3 - lo_4);
+    if !(!((w_8 > 0f))) {
+        let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_8)));
+        local_140 = !((_e14 > 0f));
     } else {
-        local_123 = true;
+        local_140 = true;
     }
-    let _e19 = local_123;
+    let _e19 = local_140;
     if _e19 {
         return 0f;
     }
@@ -5426,11 +5673,11 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
         }
         {
             let _e29 = k_6;
-            let node = _e21[_e29];
+            let node_1 = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_4, w_7, node.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_4, w_7, (1f - node.x), smoothstep_1);
-            sum_5 = (_e31 + (node.y * (_e34 + _e38)));
+            let _e34 = airlight_lobe_node(q_3, lo_4, w_8, node_1.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_4, w_8, (1f - node_1.x), smoothstep_1);
+            sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
         continuing {
             let _e43 = k_6;
@@ -5447,23 +5694,23 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var sum_6: f32 = 0f;
     var i_22: u32 = 0u;
 
-    let c_11 = (g_23.cos_r * cs.x);
+    let c_12 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
-    let peak = (c_11 + d_4);
+    let peak = (c_12 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_23.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_6 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    let q_7 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if (exponent_1 > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     let _e48 = reach;
     let _e51 = reach;
-    let s2_1 = select(1f, (_e48 / q_6.k), (_e51 < q_6.k));
+    let s2_1 = select(1f, (_e48 / q_7.k), (_e51 < q_7.k));
     let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
@@ -5492,7 +5739,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_22;
             let _e105 = i_22;
-            let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_7, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5506,33 +5753,33 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_124: bool;
-    var local_125: bool;
+    var local_141: bool;
+    var local_142: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_126: bool;
-    var local_127: bool;
-    var local_128: bool;
-    var local_129: bool;
-    var local_130: bool;
-    var local_131: bool;
+    var local_143: bool;
+    var local_144: bool;
+    var local_145: bool;
+    var local_146: bool;
+    var local_147: bool;
+    var local_148: bool;
     var scale: f32 = 0f;
-    var local_132: bool;
-    var local_133: bool;
-    var local_134: bool;
-    var local_135: bool;
-    var local_136: bool;
+    var local_149: bool;
+    var local_150: bool;
+    var local_151: bool;
+    var local_152: bool;
+    var local_153: bool;
     var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var local_137: bool;
+    var local_154: bool;
     var i_23: u32 = 0u;
-    var local_138: bool;
-    var local_139: bool;
-    var local_140: bool;
-    var local_141: bool;
+    var local_155: bool;
+    var local_156: bool;
+    var local_157: bool;
+    var local_158: bool;
     var n_1: u32 = 0u;
     var i_24: u32 = 0u;
-    var local_142: bool;
+    var local_159: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_25);
@@ -5547,30 +5794,30 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_25.light_end - s_25.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_124 = (s_25.intensity == 0f);
+        local_141 = (s_25.intensity == 0f);
     } else {
-        local_124 = true;
+        local_141 = true;
     }
-    let _e26 = local_124;
+    let _e26 = local_141;
     if !(_e26) {
-        local_125 = (s_25.sigma_s == 0f);
+        local_142 = (s_25.sigma_s == 0f);
     } else {
-        local_125 = true;
+        local_142 = true;
     }
-    let _e34 = local_125;
+    let _e34 = local_142;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
         return _e37;
     }
-    let e_5 = (ab_1 / vec3(_e15));
+    let e_9 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_25.dir);
     let w0_ = (s_25.light_position - s_25.origin);
-    let cos_a_2 = dot(e_5, _e41);
-    let along_e = dot(e_5, w0_);
+    let cos_a_2 = dot(e_9, _e41);
+    let along_e = dot(e_9, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_25.flags & 1u) != 0u);
+    let infinite_5 = ((s_25.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -5578,101 +5825,101 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_9 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_126 = (sin_a_1 > 0f);
+        local_143 = (sin_a_1 > 0f);
     } else {
-        local_126 = false;
+        local_143 = false;
     }
-    let _e84 = local_126;
+    let _e84 = local_143;
     if _e84 {
         let _e87 = s_star;
-        local_127 = (_e87 >= 0f);
+        local_144 = (_e87 >= 0f);
     } else {
-        local_127 = false;
+        local_144 = false;
     }
-    let _e91 = local_127;
+    let _e91 = local_144;
     if _e91 {
         let _e94 = s_star;
-        local_128 = (_e94 <= _e15);
+        local_145 = (_e94 <= _e15);
     } else {
-        local_128 = false;
+        local_145 = false;
     }
-    let _e97 = local_128;
+    let _e97 = local_145;
     if _e97 {
         let _e101 = t_star;
-        local_129 = (s_25.t_min <= _e101);
+        local_146 = (s_25.t_min <= _e101);
     } else {
-        local_129 = false;
+        local_146 = false;
     }
-    let _e104 = local_129;
+    let _e104 = local_146;
     if _e104 {
-        if !(infinite_4) {
+        if !(infinite_5) {
             let _e110 = t_star;
-            local_131 = (_e110 <= s_25.t_max);
+            local_148 = (_e110 <= s_25.t_max);
         } else {
-            local_131 = true;
+            local_148 = true;
         }
-        let _e114 = local_131;
-        local_130 = _e114;
+        let _e114 = local_148;
+        local_147 = _e114;
     } else {
-        local_130 = false;
+        local_147 = false;
     }
-    let _e116 = local_130;
+    let _e116 = local_147;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_132 = (_e73 > 0f);
+        local_149 = (_e73 > 0f);
     } else {
-        local_132 = false;
+        local_149 = false;
     }
-    let _e129 = local_132;
+    let _e129 = local_149;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_133 = (_e136 < (_e15 + _e15));
+        local_150 = (_e136 < (_e15 + _e15));
     } else {
-        local_133 = false;
+        local_150 = false;
     }
-    let _e140 = local_133;
+    let _e140 = local_150;
     if _e140 {
         let _e143 = scale;
-        local_134 = (_e143 < _e15);
+        local_151 = (_e143 < _e15);
     } else {
-        local_134 = false;
+        local_151 = false;
     }
-    let near_1 = local_134;
+    let near_1 = local_151;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_135 = _e154;
+        local_152 = _e154;
     } else {
-        local_135 = false;
+        local_152 = false;
     }
-    let _e156 = local_135;
+    let _e156 = local_152;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_136 = _e163;
+        local_153 = _e163;
     } else {
-        local_136 = false;
+        local_153 = false;
     }
-    let _e165 = local_136;
+    let _e165 = local_153;
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_5;
+    g_24.e = e_9;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -5685,11 +5932,11 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_24;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_137 = (min(-(_e194), _e197) < 0.5f);
+        local_154 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_137 = false;
+        local_154 = false;
     }
-    let sliver = local_137;
+    let sliver = local_154;
     loop {
         let _e205 = i_23;
         if (_e205 < 3u) {
@@ -5699,31 +5946,31 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         {
             let _e208 = i_23;
             if (_e208 == 0u) {
-                local_138 = sliver;
+                local_155 = sliver;
             } else {
-                local_138 = false;
+                local_155 = false;
             }
-            let _e214 = local_138;
+            let _e214 = local_155;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e219 = i_23;
-                local_139 = (_e219 > 0u);
+                local_156 = (_e219 > 0u);
             } else {
-                local_139 = false;
+                local_156 = false;
             }
-            let _e223 = local_139;
+            let _e223 = local_156;
             if _e223 {
                 continue;
             }
             let _e224 = i_23;
             if (_e224 == 2u) {
-                local_140 = infinite_4;
+                local_157 = infinite_5;
             } else {
-                local_140 = false;
+                local_157 = false;
             }
-            let _e230 = local_140;
+            let _e230 = local_157;
             if _e230 {
                 continue;
             }
@@ -5732,11 +5979,11 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             if (_e233 > 0f) {
                 let _e238 = i_23;
                 let _e240 = at[_e238];
-                local_141 = (_e240 < _e15);
+                local_158 = (_e240 < _e15);
             } else {
-                local_141 = false;
+                local_158 = false;
             }
-            let _e243 = local_141;
+            let _e243 = local_158;
             if _e243 {
                 let _e244 = i_23;
                 let _e246 = g_24;
@@ -5754,26 +6001,26 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e255 = cuts_2[1];
     let _e257 = cuts_2[0];
     if (_e255 < _e257) {
-        let c_12 = cuts_2[0];
+        let c_13 = cuts_2[0];
         let _e263 = cuts_2[1];
         cuts_2[0] = _e263;
-        cuts_2[1] = c_12;
+        cuts_2[1] = c_13;
     }
     let _e266 = cuts_2[2];
     let _e268 = cuts_2[1];
     if (_e266 < _e268) {
-        let c_13 = cuts_2[1];
+        let c_14 = cuts_2[1];
         let _e274 = cuts_2[2];
         cuts_2[1] = _e274;
-        cuts_2[2] = c_13;
+        cuts_2[2] = c_14;
     }
     let _e277 = cuts_2[1];
     let _e279 = cuts_2[0];
     if (_e277 < _e279) {
-        let c_14 = cuts_2[0];
+        let c_15 = cuts_2[0];
         let _e285 = cuts_2[1];
         cuts_2[0] = _e285;
-        cuts_2[1] = c_14;
+        cuts_2[1] = c_15;
     }
     let _e287 = g_24;
     let _e288 = airlight_to_w(_e287, _e15);
@@ -5794,11 +6041,11 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             if (_e303 > _e307) {
                 let _e311 = i_24;
                 let _e313 = cuts_2[_e311];
-                local_142 = (_e313 < _e288);
+                local_159 = (_e313 < _e288);
             } else {
-                local_142 = false;
+                local_159 = false;
             }
-            let _e316 = local_142;
+            let _e316 = local_159;
             if _e316 {
                 let _e317 = n_1;
                 n_1 = (_e317 + 1u);
@@ -5829,12 +6076,12 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_143: bool;
-    var local_144: bool;
-    var local_145: bool;
-    var local_146: bool;
-    var local_147: bool;
-    var local_148: bool;
+    var local_160: bool;
+    var local_161: bool;
+    var local_162: bool;
+    var local_163: bool;
+    var local_164: bool;
+    var local_165: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5844,64 +6091,64 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_25 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_7 = (x_20 - f32(i_25));
-        let a_29 = g_25.gamma[i_25];
-        let b_19 = g_25.gamma[(i_25 + 1u)];
-        let w_8 = (b_19 - a_29);
-        let u_4 = (1f - t_7);
-        let smooth_a = (((g_25.smooth_edges >> i_25) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_25 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_29 + (((w_8 * t_7) * t_7) * ((3f - t_7) - t_7)));
-        jacobian = (((w_8 * 6f) * t_7) * u_4);
+        let i_34 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_20 - f32(i_34));
+        let a_40 = g_25.gamma[i_34];
+        let b_19 = g_25.gamma[(i_34 + 1u)];
+        let w_9 = (b_19 - a_40);
+        let u_6 = (1f - t_8);
+        let smooth_a = (((g_25.smooth_edges >> i_34) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_34 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
+        jacobian = (((w_9 * 6f) * t_8) * u_6);
         let _e58 = gamma_1;
         if smooth_b {
-            local_143 = !(smooth_a);
+            local_160 = !(smooth_a);
         } else {
-            local_143 = false;
+            local_160 = false;
         }
-        let _e66 = local_143;
-        gamma_1 = select(_e58, (a_29 + ((w_8 * t_7) * t_7)), _e66);
+        let _e66 = local_160;
+        gamma_1 = select(_e58, (a_40 + ((w_9 * t_8) * t_8)), _e66);
         let _e68 = jacobian;
         if smooth_b {
-            local_144 = !(smooth_a);
+            local_161 = !(smooth_a);
         } else {
-            local_144 = false;
+            local_161 = false;
         }
-        let _e75 = local_144;
-        jacobian = select(_e68, (w_8 * (t_7 + t_7)), _e75);
+        let _e75 = local_161;
+        jacobian = select(_e68, (w_9 * (t_8 + t_8)), _e75);
         let _e77 = gamma_1;
         if smooth_a {
-            local_145 = !(smooth_b);
+            local_162 = !(smooth_b);
         } else {
-            local_145 = false;
+            local_162 = false;
         }
-        let _e85 = local_145;
-        gamma_1 = select(_e77, (b_19 - ((w_8 * u_4) * u_4)), _e85);
+        let _e85 = local_162;
+        gamma_1 = select(_e77, (b_19 - ((w_9 * u_6) * u_6)), _e85);
         let _e87 = jacobian;
         if smooth_a {
-            local_146 = !(smooth_b);
+            local_163 = !(smooth_b);
         } else {
-            local_146 = false;
+            local_163 = false;
         }
-        let _e94 = local_146;
-        jacobian = select(_e87, (w_8 * (u_4 + u_4)), _e94);
+        let _e94 = local_163;
+        jacobian = select(_e87, (w_9 * (u_6 + u_6)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
-            local_147 = smooth_b;
+            local_164 = smooth_b;
         } else {
-            local_147 = false;
+            local_164 = false;
         }
-        let _e102 = local_147;
-        gamma_1 = select(_e96, (a_29 + (w_8 * t_7)), _e102);
+        let _e102 = local_164;
+        gamma_1 = select(_e96, (a_40 + (w_9 * t_8)), _e102);
         let _e104 = jacobian;
         if smooth_a {
-            local_148 = smooth_b;
+            local_165 = smooth_b;
         } else {
-            local_148 = false;
+            local_165 = false;
         }
-        let _e108 = local_148;
-        jacobian = select(_e104, w_8, _e108);
+        let _e108 = local_165;
+        jacobian = select(_e104, w_9, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
             let _e114 = p;
@@ -5919,10 +6166,10 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_4 = s_26.brdf_exponent;
+            let n_6 = s_26.brdf_exponent;
             let _e161 = gamma_1;
-            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_4);
-            weight = (((s_26.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e162);
+            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
+            weight = (((s_26.brdf_scale * (n_6 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
@@ -5953,45 +6200,1533 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     return AirlightNode(_e241, 1f, _e4, false);
 }
 
+fn airlight_kronrod15_rule() -> array<vec3<f32>, 8> {
+    return array<vec3<f32>, 8>(vec3<f32>(0.9914554f, 0.022935322f, 0f), vec3<f32>(0.9491079f, 0.06309209f, 0.12948497f), vec3<f32>(0.8648644f, 0.10479001f, 0f), vec3<f32>(0.7415312f, 0.14065325f, 0.2797054f), vec3<f32>(0.5860872f, 0.16900472f, 0f), vec3<f32>(0.40584517f, 0.19035058f, 0.38183004f), vec3<f32>(0.20778495f, 0.20443293f, 0f), vec3<f32>(0f, 0.20948215f, 0.41795918f));
+}
+
+fn airlight_azimuths(circle: bool, i_25: u32) -> vec3<f32> {
+    let full = array<vec3<f32>, 32>(vec3<f32>(-0.9885061f, 0.15118112f, 0.30328962f), vec3<f32>(-0.9885061f, -0.15118112f, 0.30328962f), vec3<f32>(-0.89875615f, 0.43844885f, 0.3004579f), vec3<f32>(-0.89875615f, -0.43844885f, 0.3004579f), vec3<f32>(-0.7304994f, 0.68291336f, 0.29482087f), vec3<f32>(-0.7304994f, -0.68291336f, 0.29482087f), vec3<f32>(-0.5039798f, 0.86371547f, 0.2864312f), vec3<f32>(-0.5039798f, -0.86371547f, 0.2864312f), vec3<f32>(-0.24457587f, 0.9696302f, 0.27536717f), vec3<f32>(-0.24457587f, -0.9696302f, 0.27536717f), vec3<f32>(0.021675006f, 0.9997651f, 0.26173213f), vec3<f32>(0.021675006f, -0.9997651f, 0.26173213f), vec3<f32>(0.27209276f, 0.96227103f, 0.24565338f), vec3<f32>(0.27209276f, -0.96227103f, 0.24565338f), vec3<f32>(0.49011236f, 0.8716593f, 0.22728102f), vec3<f32>(0.49011236f, -0.8716593f, 0.22728102f), vec3<f32>(0.6664385f, 0.74556f, 0.20678662f), vec3<f32>(0.6664385f, -0.74556f, 0.20678662f), vec3<f32>(0.7987099f, 0.6017163f, 0.18436152f), vec3<f32>(0.7987099f, -0.6017163f, 0.18436152f), vec3<f32>(0.8901028f, 0.45575976f, 0.16021512f), vec3<f32>(0.8901028f, -0.45575976f, 0.16021512f), vec3<f32>(0.9474216f, 0.3199879f, 0.13457294f), vec3<f32>(0.9474216f, -0.3199879f, 0.13457294f), vec3<f32>(0.97916293f, 0.20307623f, 0.10767452f), vec3<f32>(0.97916293f, -0.20307623f, 0.10767452f), vec3<f32>(0.9938787f, 0.110476665f, 0.079771526f), vec3<f32>(0.9938787f, -0.110476665f, 0.079771526f), vec3<f32>(0.99897856f, 0.045187376f, 0.05112752f), vec3<f32>(0.99897856f, -0.045187376f, 0.05112752f), vec3<f32>(0.99996305f, 0.0085957255f, 0.022049613f), vec3<f32>(0.99996305f, -0.0085957255f, 0.022049613f));
+    let half_18 = array<vec3<f32>, 32>(vec3<f32>(0.9971224f, -0.075808704f, 0.15164481f), vec3<f32>(0.9971224f, 0.075808704f, 0.15164481f), vec3<f32>(0.97436035f, -0.22499317f, 0.15022895f), vec3<f32>(0.97436035f, 0.22499317f, 0.15022895f), vec3<f32>(0.930188f, -0.36708352f, 0.14741044f), vec3<f32>(0.930188f, 0.36708352f, 0.14741044f), vec3<f32>(0.8671735f, -0.49800614f, 0.1432156f), vec3<f32>(0.8671735f, 0.49800614f, 0.1432156f), vec3<f32>(0.7888523f, -0.61458284f, 0.13768359f), vec3<f32>(0.7888523f, 0.61458284f, 0.13768359f), vec3<f32>(0.69940156f, -0.71472895f, 0.13086607f), vec3<f32>(0.69940156f, 0.71472895f, 0.13086607f), vec3<f32>(0.6032857f, -0.79752517f, 0.12282669f), vec3<f32>(0.6032857f, 0.79752517f, 0.12282669f), vec3<f32>(0.5049196f, -0.8631664f, 0.11364051f), vec3<f32>(0.5049196f, 0.8631664f, 0.11364051f), vec3<f32>(0.40838796f, -0.9128085f, 0.10339331f), vec3<f32>(0.40838796f, 0.9128085f, 0.10339331f), vec3<f32>(0.31724605f, -0.9483433f, 0.09218076f), vec3<f32>(0.31724605f, 0.9483433f, 0.09218076f), vec3<f32>(0.23441115f, -0.9721376f, 0.08010756f), vec3<f32>(0.23441115f, 0.9721376f, 0.08010756f), vec3<f32>(0.16213939f, -0.9867679f, 0.06728647f), vec3<f32>(0.16213939f, 0.9867679f, 0.06728647f), vec3<f32>(0.10207122f, -0.9947771f, 0.05383726f), vec3<f32>(0.10207122f, 0.9947771f, 0.05383726f), vec3<f32>(0.05532306f, -0.9984685f, 0.039885763f), vec3<f32>(0.05532306f, 0.9984685f, 0.039885763f), vec3<f32>(0.02259946f, -0.9997446f, 0.02556376f), vec3<f32>(0.02259946f, 0.9997446f, 0.02556376f), vec3<f32>(0.0042979023f, -0.99999076f, 0.011024807f), vec3<f32>(0.0042979023f, 0.99999076f, 0.011024807f));
+    return select(half_18[i_25], full[i_25], circle);
+}
+
+fn airlight_triangle_rule(i_26: u32) -> vec2<f32> {
+    let rule_1 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
+    return rule_1[i_26];
+}
+
+fn airlight_area_phase(s_27: AirlightScene, mu_2: f32) -> f32 {
+    let _e6 = airlight_phase_mu(s_27.phase_kind, s_27.phase_param_a, s_27.phase_param_b, s_27.phase_param_c, mu_2);
+    return _e6;
+}
+
+fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
+    var e_1: u32;
+    var base_1: f32;
+    var acc_1: f32 = 1f;
+
+    let p_2 = u32(s_28.light_param_b);
+    if (p_2 <= 1u) {
+        return s_28.intensity;
+    }
+    e_1 = (p_2 - 1u);
+    base_1 = c_7;
+    let _e13 = e_1;
+    if ((_e13 & 1u) != 0u) {
+        let _e18 = acc_1;
+        let _e19 = base_1;
+        acc_1 = (_e18 * _e19);
+    }
+    let _e21 = e_1;
+    e_1 = (_e21 >> 1u);
+    let _e24 = base_1;
+    let _e25 = base_1;
+    base_1 = (_e24 * _e25);
+    let _e27 = e_1;
+    if ((_e27 & 1u) != 0u) {
+        let _e32 = acc_1;
+        let _e33 = base_1;
+        acc_1 = (_e32 * _e33);
+    }
+    let _e35 = e_1;
+    e_1 = (_e35 >> 1u);
+    let _e38 = base_1;
+    let _e39 = base_1;
+    base_1 = (_e38 * _e39);
+    let _e41 = e_1;
+    if ((_e41 & 1u) != 0u) {
+        let _e46 = acc_1;
+        let _e47 = base_1;
+        acc_1 = (_e46 * _e47);
+    }
+    let _e49 = e_1;
+    e_1 = (_e49 >> 1u);
+    let _e52 = base_1;
+    let _e53 = base_1;
+    base_1 = (_e52 * _e53);
+    let _e55 = e_1;
+    if ((_e55 & 1u) != 0u) {
+        let _e60 = acc_1;
+        let _e61 = base_1;
+        acc_1 = (_e60 * _e61);
+    }
+    let _e63 = e_1;
+    e_1 = (_e63 >> 1u);
+    let _e66 = base_1;
+    let _e67 = base_1;
+    base_1 = (_e66 * _e67);
+    let _e69 = e_1;
+    if ((_e69 & 1u) != 0u) {
+        let _e74 = acc_1;
+        let _e75 = base_1;
+        acc_1 = (_e74 * _e75);
+    }
+    let _e77 = e_1;
+    e_1 = (_e77 >> 1u);
+    let _e80 = base_1;
+    let _e81 = base_1;
+    base_1 = (_e80 * _e81);
+    let _e83 = e_1;
+    if ((_e83 & 1u) != 0u) {
+        let _e88 = acc_1;
+        let _e89 = base_1;
+        acc_1 = (_e88 * _e89);
+    }
+    let _e91 = e_1;
+    e_1 = (_e91 >> 1u);
+    let _e94 = base_1;
+    let _e95 = base_1;
+    base_1 = (_e94 * _e95);
+    let _e97 = e_1;
+    if ((_e97 & 1u) != 0u) {
+        let _e102 = acc_1;
+        let _e103 = base_1;
+        acc_1 = (_e102 * _e103);
+    }
+    let _e105 = e_1;
+    e_1 = (_e105 >> 1u);
+    let _e108 = base_1;
+    let _e109 = base_1;
+    base_1 = (_e108 * _e109);
+    let _e111 = e_1;
+    if ((_e111 & 1u) != 0u) {
+        let _e116 = acc_1;
+        let _e117 = base_1;
+        acc_1 = (_e116 * _e117);
+    }
+    let _e119 = e_1;
+    e_1 = (_e119 >> 1u);
+    let _e122 = base_1;
+    let _e123 = base_1;
+    base_1 = (_e122 * _e123);
+    let _e125 = e_1;
+    if ((_e125 & 1u) != 0u) {
+        let _e130 = acc_1;
+        let _e131 = base_1;
+        acc_1 = (_e130 * _e131);
+    }
+    let _e133 = e_1;
+    e_1 = (_e133 >> 1u);
+    let _e136 = base_1;
+    let _e137 = base_1;
+    base_1 = (_e136 * _e137);
+    let _e139 = e_1;
+    if ((_e139 & 1u) != 0u) {
+        let _e144 = acc_1;
+        let _e145 = base_1;
+        acc_1 = (_e144 * _e145);
+    }
+    let _e147 = e_1;
+    e_1 = (_e147 >> 1u);
+    let _e150 = base_1;
+    let _e151 = base_1;
+    base_1 = (_e150 * _e151);
+    let _e154 = acc_1;
+    return (s_28.intensity * _e154);
+}
+
+fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
+    var local_166: bool;
+
+    if !(!((gap_3 > 0f))) {
+        local_166 = !((gap_3 < AIRLIGHT_FLT_MAX));
+    } else {
+        local_166 = true;
+    }
+    let _e12 = local_166;
+    if _e12 {
+        return vec2<f32>(1f, 0f);
+    }
+    return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
+}
+
+fn airlight_phase_lobes(s_29: AirlightScene) -> vec4<f32> {
+    var first: vec2<f32> = vec2<f32>(1f, 0f);
+    var second: vec2<f32> = vec2<f32>(1f, 0f);
+
+    let p0_5 = s_29.phase_param_a;
+    switch s_29.phase_kind {
+        case 2u, 4u: {
+            let _e11 = airlight_hg_gap(p0_5);
+            let _e12 = airlight_lobe(p0_5, _e11);
+            first = _e12;
+        }
+        case 3u: {
+            let a_41 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_41) / a_41), (a_41 > 0f)));
+            first = _e21;
+        }
+        case 5u: {
+            let _e22 = airlight_hg_gap(p0_5);
+            let _e23 = airlight_lobe(p0_5, _e22);
+            first = _e23;
+            let _e26 = airlight_hg_gap(s_29.phase_param_b);
+            let _e27 = airlight_lobe(s_29.phase_param_b, _e26);
+            second = _e27;
+        }
+        default: {
+        }
+    }
+    let _e28 = first;
+    let _e29 = second;
+    return vec4<f32>(_e28, _e29);
+}
+
+fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
+    var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+    var local_167: bool;
+
+    let m_10 = abs(n_2);
+    if (m_10.x <= m_10.y) {
+        local_167 = (m_10.x <= m_10.z);
+    } else {
+        local_167 = false;
+    }
+    let _e16 = local_167;
+    if _e16 {
+        u_3 = vec3<f32>(1f, 0f, 0f);
+    } else {
+        if (m_10.y <= m_10.z) {
+            u_3 = vec3<f32>(0f, 1f, 0f);
+        }
+    }
+    let _e28 = u_3;
+    let _e30 = airlight_normalize(cross(_e28, n_2));
+    return _e30;
+}
+
+fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
+    if infinite_3 {
+        return 1.5707964f;
+    }
+    let u_7 = (t_3 - a_17.x_h);
+    let _e13 = airlight_atan2_upper(abs(u_7), a_17.h_eff);
+    return (select(-1f, 1f, (u_7 >= 0f)) * _e13);
+}
+
+fn airlight_area(s_30: AirlightScene) -> AirlightArea {
+    var a_18: AirlightArea;
+    var local_168: bool;
+    var local_169: bool;
+    var local_170: bool;
+    var local_171: bool;
+    var local_172: bool;
+    var local_173: bool;
+    var local_174: bool;
+    var cut_count: u32 = 0u;
+    var cut0_: f32 = 0f;
+    var cut1_: f32 = 0f;
+    var centre: vec3<f32>;
+    var size: f32;
+    var t_end_1: f32;
+    var end_infinite: bool;
+    var local_175: bool;
+    var cuts_3: array<f32, 3>;
+    var i_27: u32 = 0u;
+    var local_176: bool;
+    var local_177: bool;
+    var local_178: bool;
+    var n_3: u32 = 0u;
+    var i_28: u32 = 0u;
+    var local_179: bool;
+
+    let zero = vec3(0f);
+    let _e13 = airlight_phase_lobes(s_30);
+    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 0u, 0u, _e13, false);
+    if !((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+        if !((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+            local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+        } else {
+            local_169 = true;
+        }
+        let _e36 = local_169;
+        if _e36 {
+            local_170 = (s_30.phase_param_a == 0f);
+        } else {
+            local_170 = false;
+        }
+        let _e43 = local_170;
+        local_168 = _e43;
+    } else {
+        local_168 = true;
+    }
+    let _e45 = local_168;
+    if !(_e45) {
+        if (s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
+            local_172 = (s_30.phase_param_a == 0f);
+        } else {
+            local_172 = false;
+        }
+        let _e58 = local_172;
+        if _e58 {
+            local_173 = (s_30.phase_param_b == 0f);
+        } else {
+            local_173 = false;
+        }
+        let _e65 = local_173;
+        local_171 = _e65;
+    } else {
+        local_171 = true;
+    }
+    let _e67 = local_171;
+    a_18.isotropic = _e67;
+    if !((s_30.intensity == 0f)) {
+        local_174 = (s_30.sigma_s == 0f);
+    } else {
+        local_174 = true;
+    }
+    let _e78 = local_174;
+    if _e78 {
+        a_18.outcome = 1u;
+        let _e81 = a_18;
+        return _e81;
+    }
+    let o = s_30.origin;
+    let _e84 = airlight_normalize(s_30.dir);
+    a_18.d = _e84;
+    let infinite_6 = ((s_30.flags & 1u) != 0u);
+    let t0_2 = s_30.t_min;
+    centre = s_30.light_position;
+    size = s_30.light_param_a;
+    if (s_30.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+        let _e106 = a_18.c;
+        let oc = (o - _e106);
+        let b_20 = dot(oc, _e84);
+        let _e111 = a_18.radius;
+        let _e113 = a_18.radius;
+        let k_9 = (dot(oc, oc) - (_e111 * _e113));
+        let disc_2 = ((b_20 * b_20) - k_9);
+        if (disc_2 > 0f) {
+            let root_2 = sqrt(disc_2);
+            let q_8 = (-(b_20) - select(root_2, -(root_2), ((bitcast<u32>(b_20) & 2147483648u) != 0u)));
+            cut0_ = q_8;
+            cut1_ = (k_9 / q_8);
+            cut_count = 2u;
+        }
+    } else {
+        if (s_30.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e137 = airlight_normalize(s_30.light_axis);
+            a_18.n = _e137;
+            let _e140 = a_18.n;
+            let _e141 = airlight_basis_e1_(_e140);
+            a_18.a1_ = _e141;
+        } else {
+            a_18.eu = s_30.light_axis;
+            a_18.ev = s_30.light_end;
+            let _e148 = a_18.eu;
+            let _e150 = a_18.ev;
+            let _e152 = airlight_normalize(cross(_e148, _e150));
+            a_18.n = _e152;
+            let _e155 = a_18.eu;
+            let _e156 = airlight_normalize(_e155);
+            a_18.a1_ = _e156;
+            let _e158 = a_18.eu;
+            let _e160 = a_18.ev;
+            let diagonal = (_e158 + _e160);
+            let _e163 = a_18.c;
+            centre = (_e163 + (0.5f * diagonal));
+            let _e167 = airlight_safe_length(diagonal);
+            let _e169 = a_18.eu;
+            let _e171 = a_18.ev;
+            let _e173 = airlight_safe_length((_e169 - _e171));
+            size = (0.5f * max(_e167, _e173));
+        }
+        let _e179 = a_18.n;
+        let _e181 = a_18.a1_;
+        a_18.a2_ = cross(_e179, _e181);
+        let _e185 = a_18.a1_;
+        let _e188 = a_18.a2_;
+        let _e191 = a_18.n;
+        a_18.dirs = vec3<f32>(dot(_e185, _e84), dot(_e188, _e84), dot(_e191, _e84));
+        let _e195 = a_18.c;
+        let _e198 = a_18.n;
+        let _e201 = a_18.n;
+        cut0_ = (dot((_e195 - o), _e198) / dot(_e84, _e201));
+        cut_count = 1u;
+    }
+    let _e205 = size;
+    if !((_e205 > 0f)) {
+        a_18.outcome = 1u;
+        let _e211 = a_18;
+        return _e211;
+    }
+    let _e212 = centre;
+    let to_centre = (_e212 - o);
+    a_18.x_h = dot(to_centre, _e84);
+    let _e217 = a_18.x_h;
+    let _e220 = airlight_safe_length((to_centre - (_e217 * _e84)));
+    let _e223 = size;
+    let _e224 = size;
+    a_18.h_eff = sqrt(((_e220 * _e220) + (_e223 * _e224)));
+    t_end_1 = s_30.t_max;
+    end_infinite = infinite_6;
+    if (s_30.sigma_t > 0f) {
+        let _e234 = centre;
+        let _e238 = airlight_safe_length((_e234 - (o + (t0_2 * _e84))));
+        let _e240 = size;
+        let reach_1 = (((t0_2 + _e238) + _e240) - (-15.942385f / s_30.sigma_t));
+        if !(infinite_6) {
+            let _e249 = t_end_1;
+            local_175 = (reach_1 < _e249);
+        } else {
+            local_175 = true;
+        }
+        let _e252 = local_175;
+        if _e252 {
+            t_end_1 = reach_1;
+            end_infinite = false;
+        }
+    }
+    let _e254 = a_18;
+    let _e256 = airlight_area_theta(_e254, t0_2, false);
+    let _e257 = a_18;
+    let _e258 = t_end_1;
+    let _e259 = end_infinite;
+    let _e260 = airlight_area_theta(_e257, _e258, _e259);
+    let _e262 = a_18.x_h;
+    let _e264 = a_18.x_h;
+    let _e265 = cut0_;
+    let _e266 = cut_count;
+    let _e271 = a_18.x_h;
+    let _e272 = cut1_;
+    let _e273 = cut_count;
+    cuts_3 = array<f32, 3>(_e262, select(_e264, _e265, (_e266 > 0u)), select(_e271, _e272, (_e273 > 1u)));
+    loop {
+        let _e281 = i_27;
+        if (_e281 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e284 = i_27;
+            let t_9 = cuts_3[_e284];
+            let _e287 = i_27;
+            cuts_3[_e287] = _e256;
+            let _e289 = airlight_is_finite(t_9);
+            if _e289 {
+                local_176 = (t_9 >= t0_2);
+            } else {
+                local_176 = false;
+            }
+            let _e294 = local_176;
+            if _e294 {
+                let _e297 = end_infinite;
+                if !(_e297) {
+                    let _e301 = t_end_1;
+                    local_178 = (t_9 <= _e301);
+                } else {
+                    local_178 = true;
+                }
+                let _e304 = local_178;
+                local_177 = _e304;
+            } else {
+                local_177 = false;
+            }
+            let _e306 = local_177;
+            if _e306 {
+                let _e307 = i_27;
+                let _e309 = a_18;
+                let _e311 = airlight_area_theta(_e309, t_9, false);
+                cuts_3[_e307] = _e311;
+            }
+        }
+        continuing {
+            let _e313 = i_27;
+            i_27 = (_e313 + 1u);
+        }
+    }
+    let _e316 = cuts_3[1];
+    let _e318 = cuts_3[0];
+    if (_e316 < _e318) {
+        let c_16 = cuts_3[0];
+        let _e324 = cuts_3[1];
+        cuts_3[0] = _e324;
+        cuts_3[1] = c_16;
+    }
+    let _e327 = cuts_3[2];
+    let _e329 = cuts_3[1];
+    if (_e327 < _e329) {
+        let c_17 = cuts_3[1];
+        let _e335 = cuts_3[2];
+        cuts_3[1] = _e335;
+        cuts_3[2] = c_17;
+    }
+    let _e338 = cuts_3[1];
+    let _e340 = cuts_3[0];
+    if (_e338 < _e340) {
+        let c_18 = cuts_3[0];
+        let _e346 = cuts_3[1];
+        cuts_3[0] = _e346;
+        cuts_3[1] = c_18;
+    }
+    a_18.edges[0] = _e256;
+    loop {
+        let _e354 = i_28;
+        if (_e354 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e357 = i_28;
+            let _e359 = cuts_3[_e357];
+            let _e361 = n_3;
+            let _e363 = a_18.edges[_e361];
+            if (_e359 > _e363) {
+                let _e367 = i_28;
+                let _e369 = cuts_3[_e367];
+                local_179 = (_e369 < _e260);
+            } else {
+                local_179 = false;
+            }
+            let _e372 = local_179;
+            if _e372 {
+                let _e373 = n_3;
+                n_3 = (_e373 + 1u);
+                let _e377 = n_3;
+                let _e379 = i_28;
+                let _e381 = cuts_3[_e379];
+                a_18.edges[_e377] = _e381;
+            }
+        }
+        continuing {
+            let _e383 = i_28;
+            i_28 = (_e383 + 1u);
+        }
+    }
+    let _e386 = n_3;
+    a_18.edges[(_e386 + 1u)] = _e260;
+    let _e391 = n_3;
+    a_18.panels = (_e391 + 1u);
+    let _e394 = a_18;
+    return _e394;
+}
+
+fn airlight_above(z_9: f32, off: vec2<f32>) -> AirlightAbove {
+    return AirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
+}
+
+fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_2: vec2<f32>, g_26: f32) -> f32 {
+    let _e5 = airlight_cos_sin_half_turn(g_26);
+    let r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
+    let dr = (above_1.rho0_ / (_e5.x * _e5.x));
+    let p_3 = (above_1.off + (r_13 * e_2));
+    let z_14 = above_1.z;
+    let dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+    let inv_5 = (1f / dist);
+    let cos_ = (z_14 * inv_5);
+    let _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_14 * a_19.dirs.z)) * inv_5));
+    let _e48 = airlight_emitted(s_31, cos_);
+    return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0f))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
+}
+
+fn airlight_flat_radial(s_32: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_3: vec2<f32>, r_max: f32) -> f32 {
+    var sum_7: f32 = 0f;
+
+    let _e7 = airlight_atan((r_max / above_2.rho0_));
+    let c_19 = (0.5f * _e7);
+    let hw_2 = (0.5f * _e7);
+    let _e14 = sum_7;
+    let _e20 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.09501251f * hw_2)));
+    sum_7 = (_e14 + ((0.1894506f * hw_2) * _e20));
+    let _e23 = sum_7;
+    let _e29 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.09501251f * hw_2)));
+    sum_7 = (_e23 + ((0.1894506f * hw_2) * _e29));
+    let _e32 = sum_7;
+    let _e38 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.28160354f * hw_2)));
+    sum_7 = (_e32 + ((0.18260342f * hw_2) * _e38));
+    let _e41 = sum_7;
+    let _e47 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.28160354f * hw_2)));
+    sum_7 = (_e41 + ((0.18260342f * hw_2) * _e47));
+    let _e50 = sum_7;
+    let _e56 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.45801678f * hw_2)));
+    sum_7 = (_e50 + ((0.16915652f * hw_2) * _e56));
+    let _e59 = sum_7;
+    let _e65 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.45801678f * hw_2)));
+    sum_7 = (_e59 + ((0.16915652f * hw_2) * _e65));
+    let _e68 = sum_7;
+    let _e74 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.61787623f * hw_2)));
+    sum_7 = (_e68 + ((0.14959599f * hw_2) * _e74));
+    let _e77 = sum_7;
+    let _e83 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.61787623f * hw_2)));
+    sum_7 = (_e77 + ((0.14959599f * hw_2) * _e83));
+    let _e86 = sum_7;
+    let _e92 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.7554044f * hw_2)));
+    sum_7 = (_e86 + ((0.12462897f * hw_2) * _e92));
+    let _e95 = sum_7;
+    let _e101 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.7554044f * hw_2)));
+    sum_7 = (_e95 + ((0.12462897f * hw_2) * _e101));
+    let _e104 = sum_7;
+    let _e110 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.8656312f * hw_2)));
+    sum_7 = (_e104 + ((0.09515851f * hw_2) * _e110));
+    let _e113 = sum_7;
+    let _e119 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.8656312f * hw_2)));
+    sum_7 = (_e113 + ((0.09515851f * hw_2) * _e119));
+    let _e122 = sum_7;
+    let _e128 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.944575f * hw_2)));
+    sum_7 = (_e122 + ((0.062253524f * hw_2) * _e128));
+    let _e131 = sum_7;
+    let _e137 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.944575f * hw_2)));
+    sum_7 = (_e131 + ((0.062253524f * hw_2) * _e137));
+    let _e140 = sum_7;
+    let _e146 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.9894009f * hw_2)));
+    sum_7 = (_e140 + ((0.02715246f * hw_2) * _e146));
+    let _e149 = sum_7;
+    let _e155 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.9894009f * hw_2)));
+    sum_7 = (_e149 + ((0.02715246f * hw_2) * _e155));
+    let _e158 = sum_7;
+    return _e158;
+}
+
+fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f32 {
+    var u_4: vec2<f32> = vec2(0f);
+    var above_3: AirlightAbove;
+    var sum_8: f32 = 0f;
+    var i_29: u32 = 0u;
+    var e_4: vec2<f32>;
+    var r_max_1: f32;
+
+    let rel = (x_21 - a_21.c);
+    let z_15 = dot(rel, a_21.n);
+    if !((z_15 > 0f)) {
+        return 0f;
+    }
+    let fx = dot(rel, a_21.a1_);
+    let fy_1 = dot(rel, a_21.a2_);
+    let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
+    let radius_2 = a_21.radius;
+    let inside_1 = (rf <= radius_2);
+    let _e26 = airlight_above(z_15, vec2(0f));
+    above_3 = _e26;
+    if !(inside_1) {
+        u_4 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
+        let _e35 = u_4;
+        let _e37 = airlight_above(z_15, ((rf - radius_2) * _e35));
+        above_3 = _e37;
+    }
+    let k_10 = ((rf - radius_2) * (rf + radius_2));
+    loop {
+        let _e45 = i_29;
+        if (_e45 < 32u) {
+        } else {
+            break;
+        }
+        {
+            let _e48 = i_29;
+            let _e49 = airlight_azimuths(inside_1, _e48);
+            let _e52 = u_4.x;
+            let _e56 = u_4.y;
+            let _e61 = u_4.y;
+            let _e65 = u_4.x;
+            e_4 = vec2<f32>(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
+            r_max_1 = ((radius_2 + radius_2) * _e49.x);
+            if inside_1 {
+                e_4 = _e49.xy;
+                let b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
+                let root_3 = sqrt(((b_21 * b_21) - k_10));
+                r_max_1 = select((root_3 - b_21), (-(k_10) / (b_21 + root_3)), (b_21 > 0f));
+            }
+            let _e90 = sum_8;
+            let _e92 = above_3;
+            let _e93 = e_4;
+            let _e94 = r_max_1;
+            let _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
+            sum_8 = (_e90 + (_e49.z * _e95));
+        }
+        continuing {
+            let _e99 = i_29;
+            i_29 = (_e99 + 1u);
+        }
+    }
+    let _e101 = sum_8;
+    return _e101;
+}
+
+fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f32>) -> f32 {
+    var q_4: vec2<f32>;
+    var local_180: bool;
+    var local_181: bool;
+    var local_182: bool;
+    var best: f32 = AIRLIGHT_FLT_MAX;
+    var i_30: u32 = 0u;
+    var sum_9: f32 = 0f;
+    var i_31: u32 = 0u;
+    var j_5: u32;
+
+    let rel_1 = (x_22 - a_22.c);
+    let z_16 = dot(rel_1, a_22.n);
+    if !((z_16 > 0f)) {
+        return 0f;
+    }
+    let foot = vec2<f32>(dot(rel_1, a_22.a1_), dot(rel_1, a_22.a2_));
+    let u2_ = vec2<f32>(dot(a_22.eu, a_22.a1_), dot(a_22.eu, a_22.a2_));
+    let v2_ = vec2<f32>(dot(a_22.ev, a_22.a1_), dot(a_22.ev, a_22.a2_));
+    let corners = array<vec2<f32>, 5>(vec2(0f), u2_, (u2_ + v2_), v2_, vec2(0f));
+    let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
+    let fu = (((foot.x * v2_.y) - (foot.y * v2_.x)) / det);
+    let fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
+    q_4 = foot;
+    if (fu >= 0f) {
+        local_180 = (fu <= 1f);
+    } else {
+        local_180 = false;
+    }
+    let _e67 = local_180;
+    if _e67 {
+        local_181 = (fv >= 0f);
+    } else {
+        local_181 = false;
+    }
+    let _e73 = local_181;
+    if _e73 {
+        local_182 = (fv <= 1f);
+    } else {
+        local_182 = false;
+    }
+    let _e79 = local_182;
+    if !(_e79) {
+        loop {
+            let _e85 = i_30;
+            if (_e85 < 4u) {
+            } else {
+                break;
+            }
+            {
+                let _e88 = i_30;
+                let c0_1 = corners[_e88];
+                let _e90 = i_30;
+                let e_10 = (corners[(_e90 + 1u)] - c0_1);
+                let t_10 = clamp(((((foot.x - c0_1.x) * e_10.x) + ((foot.y - c0_1.y) * e_10.y)) / ((e_10.x * e_10.x) + (e_10.y * e_10.y))), 0f, 1f);
+                let p_4 = (c0_1 + (t_10 * e_10));
+                let dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
+                let _e134 = best;
+                if (dd < _e134) {
+                    best = dd;
+                    q_4 = p_4;
+                }
+            }
+            continuing {
+                let _e137 = i_30;
+                i_30 = (_e137 + 1u);
+            }
+        }
+    }
+    let _e139 = q_4;
+    let _e141 = airlight_above(z_16, (_e139 - foot));
+    let thin = (AIRLIGHT_FLT_EPS * abs(det));
+    loop {
+        let _e149 = i_31;
+        if (_e149 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e152 = i_31;
+            let _e154 = q_4;
+            let ca = (corners[_e152] - _e154);
+            let _e156 = i_31;
+            let _e160 = q_4;
+            let cb = (corners[(_e156 + 1u)] - _e160);
+            let area = ((ca.x * cb.y) - (ca.y * cb.x));
+            if !((area > thin)) {
+                continue;
+            }
+            let e_11 = (cb - ca);
+            let el = sqrt(((e_11.x * e_11.x) + (e_11.y * e_11.y)));
+            let h_9 = (area / el);
+            let m_11 = vec2<f32>((e_11.y / el), (-(e_11.x) / el));
+            let _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
+            let start_3 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
+            j_5 = 0u;
+            loop {
+                let _e207 = j_5;
+                if (_e207 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e210 = j_5;
+                    let _e211 = airlight_triangle_rule(_e210);
+                    let _e218 = airlight_cos_sin_half_turn(((0.5f * _e194) * (1f + _e211.x)));
+                    let dir_3 = vec2<f32>(((_e218.x * start_3.x) - (_e218.y * start_3.y)), ((_e218.y * start_3.x) + (_e218.x * start_3.y)));
+                    let _e234 = sum_9;
+                    let _e247 = airlight_flat_radial(s_34, a_22, _e141, dir_3, (h_9 / ((dir_3.x * m_11.x) + (dir_3.y * m_11.y))));
+                    sum_9 = (_e234 + (((_e211.y * 0.5f) * _e194) * _e247));
+                }
+                continuing {
+                    let _e251 = j_5;
+                    j_5 = (_e251 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e254 = i_31;
+            i_31 = (_e254 + 1u);
+        }
+    }
+    let _e256 = sum_9;
+    return _e256;
+}
+
+fn airlight_cap_row(s_35: AirlightScene, cap: AirlightCap, graded: f32, node: f32, weight_1: f32) -> vec3<f32> {
+    var phi: f32;
+    var w_2: f32;
+
+    phi = node;
+    w_2 = weight_1;
+    if (graded > 0f) {
+        let _e9 = airlight_cos_sin_half_turn(node);
+        phi = ((graded * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded) / (_e9.x * _e9.x));
+    }
+    let _e19 = phi;
+    let _e20 = airlight_cos_sin_half_turn(_e19);
+    let sb_1 = (cap.sin_a * _e20.y);
+    let cb_1 = sqrt(((1f - sb_1) * (1f + sb_1)));
+    let dist_1 = max(((cap.dc * cb_1) - (cap.radius * _e20.x)), 0f);
+    let _e38 = w_2;
+    let _e40 = airlight_emitted(s_35, _e20.x);
+    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_1) * exp(min((-(s_35.sigma_t) * dist_1), 0f)));
+    return vec3<f32>(factor, cb_1, sb_1);
+}
+
+fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightCap) -> f32 {
+    var graded_1: f32 = 0f;
+    var top: f32 = 1.5707964f;
+    var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
+    var sum_10: f32 = 0f;
+    var i_32: u32 = 0u;
+    var at_2: f32;
+
+    let _e4 = airlight_basis_e1_(cap_1.a);
+    let e2_2 = cross(cap_1.a, _e4);
+    let ad = dot(cap_1.a, a_23.d);
+    let e1d = dot(_e4, a_23.d);
+    let e2d = dot(e2_2, a_23.d);
+    let p_5 = u32(s_36.light_param_b);
+    if (p_5 > 1u) {
+        let lobe_1 = (2f / sqrt(f32((p_5 - 1u))));
+        if (lobe_1 < 1.5707964f) {
+            graded_1 = lobe_1;
+            let _e32 = airlight_atan((1.5707964f / lobe_1));
+            top = _e32;
+        }
+    }
+    let _e33 = top;
+    let c_20 = (0.5f * _e33);
+    let _e36 = top;
+    let hw_3 = (0.5f * _e36);
+    let _e74 = graded_1;
+    let _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_20 - (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    rows[0] = _e80;
+    let _e82 = graded_1;
+    let _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_20 + (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    rows[1] = _e88;
+    let _e90 = graded_1;
+    let _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_20 - (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    rows[2] = _e96;
+    let _e98 = graded_1;
+    let _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_20 + (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    rows[3] = _e104;
+    let _e106 = graded_1;
+    let _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_20 - (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    rows[4] = _e112;
+    let _e114 = graded_1;
+    let _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_20 + (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    rows[5] = _e120;
+    let _e122 = graded_1;
+    let _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_20 - (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    rows[6] = _e128;
+    let _e130 = graded_1;
+    let _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_20 + (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    rows[7] = _e136;
+    let _e138 = graded_1;
+    let _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_20 - (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    rows[8] = _e144;
+    let _e146 = graded_1;
+    let _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_20 + (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    rows[9] = _e152;
+    let _e154 = graded_1;
+    let _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_20 - (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    rows[10] = _e160;
+    let _e162 = graded_1;
+    let _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_20 + (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    rows[11] = _e168;
+    let _e170 = graded_1;
+    let _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_20 - (0.944575f * hw_3)), (0.062253524f * hw_3));
+    rows[12] = _e176;
+    let _e178 = graded_1;
+    let _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_20 + (0.944575f * hw_3)), (0.062253524f * hw_3));
+    rows[13] = _e184;
+    let _e186 = graded_1;
+    let _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_20 - (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    rows[14] = _e192;
+    let _e194 = graded_1;
+    let _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_20 + (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    rows[15] = _e200;
+    if a_23.isotropic {
+        let _e206 = airlight_area_phase(s_36, 0f);
+        let around_1 = (6.2831855f * _e206);
+        let _e208 = sum_10;
+        let _e211 = rows[0].x;
+        sum_10 = (_e208 + (_e211 * around_1));
+        let _e214 = sum_10;
+        let _e217 = rows[1].x;
+        sum_10 = (_e214 + (_e217 * around_1));
+        let _e220 = sum_10;
+        let _e223 = rows[2].x;
+        sum_10 = (_e220 + (_e223 * around_1));
+        let _e226 = sum_10;
+        let _e229 = rows[3].x;
+        sum_10 = (_e226 + (_e229 * around_1));
+        let _e232 = sum_10;
+        let _e235 = rows[4].x;
+        sum_10 = (_e232 + (_e235 * around_1));
+        let _e238 = sum_10;
+        let _e241 = rows[5].x;
+        sum_10 = (_e238 + (_e241 * around_1));
+        let _e244 = sum_10;
+        let _e247 = rows[6].x;
+        sum_10 = (_e244 + (_e247 * around_1));
+        let _e250 = sum_10;
+        let _e253 = rows[7].x;
+        sum_10 = (_e250 + (_e253 * around_1));
+        let _e256 = sum_10;
+        let _e259 = rows[8].x;
+        sum_10 = (_e256 + (_e259 * around_1));
+        let _e262 = sum_10;
+        let _e265 = rows[9].x;
+        sum_10 = (_e262 + (_e265 * around_1));
+        let _e268 = sum_10;
+        let _e271 = rows[10].x;
+        sum_10 = (_e268 + (_e271 * around_1));
+        let _e274 = sum_10;
+        let _e277 = rows[11].x;
+        sum_10 = (_e274 + (_e277 * around_1));
+        let _e280 = sum_10;
+        let _e283 = rows[12].x;
+        sum_10 = (_e280 + (_e283 * around_1));
+        let _e286 = sum_10;
+        let _e289 = rows[13].x;
+        sum_10 = (_e286 + (_e289 * around_1));
+        let _e292 = sum_10;
+        let _e295 = rows[14].x;
+        sum_10 = (_e292 + (_e295 * around_1));
+        let _e298 = sum_10;
+        let _e301 = rows[15].x;
+        sum_10 = (_e298 + (_e301 * around_1));
+        let _e304 = sum_10;
+        return _e304;
+    }
+    loop {
+        let _e307 = i_32;
+        if (_e307 < 32u) {
+        } else {
+            break;
+        }
+        {
+            let _e311 = i_32;
+            let _e312 = airlight_azimuths(true, _e311);
+            let across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
+            at_2 = 0f;
+            let _e320 = at_2;
+            let _e323 = rows[0].x;
+            let _e326 = rows[0].y;
+            let _e330 = rows[0].z;
+            let _e333 = airlight_area_phase(s_36, ((_e326 * ad) + (_e330 * across_1)));
+            at_2 = (_e320 + (_e323 * _e333));
+            let _e336 = at_2;
+            let _e339 = rows[1].x;
+            let _e342 = rows[1].y;
+            let _e346 = rows[1].z;
+            let _e349 = airlight_area_phase(s_36, ((_e342 * ad) + (_e346 * across_1)));
+            at_2 = (_e336 + (_e339 * _e349));
+            let _e352 = at_2;
+            let _e355 = rows[2].x;
+            let _e358 = rows[2].y;
+            let _e362 = rows[2].z;
+            let _e365 = airlight_area_phase(s_36, ((_e358 * ad) + (_e362 * across_1)));
+            at_2 = (_e352 + (_e355 * _e365));
+            let _e368 = at_2;
+            let _e371 = rows[3].x;
+            let _e374 = rows[3].y;
+            let _e378 = rows[3].z;
+            let _e381 = airlight_area_phase(s_36, ((_e374 * ad) + (_e378 * across_1)));
+            at_2 = (_e368 + (_e371 * _e381));
+            let _e384 = at_2;
+            let _e387 = rows[4].x;
+            let _e390 = rows[4].y;
+            let _e394 = rows[4].z;
+            let _e397 = airlight_area_phase(s_36, ((_e390 * ad) + (_e394 * across_1)));
+            at_2 = (_e384 + (_e387 * _e397));
+            let _e400 = at_2;
+            let _e403 = rows[5].x;
+            let _e406 = rows[5].y;
+            let _e410 = rows[5].z;
+            let _e413 = airlight_area_phase(s_36, ((_e406 * ad) + (_e410 * across_1)));
+            at_2 = (_e400 + (_e403 * _e413));
+            let _e416 = at_2;
+            let _e419 = rows[6].x;
+            let _e422 = rows[6].y;
+            let _e426 = rows[6].z;
+            let _e429 = airlight_area_phase(s_36, ((_e422 * ad) + (_e426 * across_1)));
+            at_2 = (_e416 + (_e419 * _e429));
+            let _e432 = at_2;
+            let _e435 = rows[7].x;
+            let _e438 = rows[7].y;
+            let _e442 = rows[7].z;
+            let _e445 = airlight_area_phase(s_36, ((_e438 * ad) + (_e442 * across_1)));
+            at_2 = (_e432 + (_e435 * _e445));
+            let _e448 = at_2;
+            let _e451 = rows[8].x;
+            let _e454 = rows[8].y;
+            let _e458 = rows[8].z;
+            let _e461 = airlight_area_phase(s_36, ((_e454 * ad) + (_e458 * across_1)));
+            at_2 = (_e448 + (_e451 * _e461));
+            let _e464 = at_2;
+            let _e467 = rows[9].x;
+            let _e470 = rows[9].y;
+            let _e474 = rows[9].z;
+            let _e477 = airlight_area_phase(s_36, ((_e470 * ad) + (_e474 * across_1)));
+            at_2 = (_e464 + (_e467 * _e477));
+            let _e480 = at_2;
+            let _e483 = rows[10].x;
+            let _e486 = rows[10].y;
+            let _e490 = rows[10].z;
+            let _e493 = airlight_area_phase(s_36, ((_e486 * ad) + (_e490 * across_1)));
+            at_2 = (_e480 + (_e483 * _e493));
+            let _e496 = at_2;
+            let _e499 = rows[11].x;
+            let _e502 = rows[11].y;
+            let _e506 = rows[11].z;
+            let _e509 = airlight_area_phase(s_36, ((_e502 * ad) + (_e506 * across_1)));
+            at_2 = (_e496 + (_e499 * _e509));
+            let _e512 = at_2;
+            let _e515 = rows[12].x;
+            let _e518 = rows[12].y;
+            let _e522 = rows[12].z;
+            let _e525 = airlight_area_phase(s_36, ((_e518 * ad) + (_e522 * across_1)));
+            at_2 = (_e512 + (_e515 * _e525));
+            let _e528 = at_2;
+            let _e531 = rows[13].x;
+            let _e534 = rows[13].y;
+            let _e538 = rows[13].z;
+            let _e541 = airlight_area_phase(s_36, ((_e534 * ad) + (_e538 * across_1)));
+            at_2 = (_e528 + (_e531 * _e541));
+            let _e544 = at_2;
+            let _e547 = rows[14].x;
+            let _e550 = rows[14].y;
+            let _e554 = rows[14].z;
+            let _e557 = airlight_area_phase(s_36, ((_e550 * ad) + (_e554 * across_1)));
+            at_2 = (_e544 + (_e547 * _e557));
+            let _e560 = at_2;
+            let _e563 = rows[15].x;
+            let _e566 = rows[15].y;
+            let _e570 = rows[15].z;
+            let _e573 = airlight_area_phase(s_36, ((_e566 * ad) + (_e570 * across_1)));
+            at_2 = (_e560 + (_e563 * _e573));
+            let _e576 = sum_10;
+            let _e578 = at_2;
+            sum_10 = (_e576 + (_e312.z * _e578));
+        }
+        continuing {
+            let _e582 = i_32;
+            i_32 = (_e582 + 1u);
+        }
+    }
+    let _e584 = sum_10;
+    return _e584;
+}
+
+fn airlight_sphere_lobe_node(s_37: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
+    let _e8 = airlight_cos_sin_half_turn(g_27);
+    let _e14 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e8.y) / _e8.x)));
+    let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
+    let root_4 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
+    let dist_2 = max(((cap_2.dc * toward_a) - root_4), 0f);
+    let _e43 = airlight_emitted(s_37, (root_4 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_37, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_37.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_2) / (_e8.x * _e8.x));
+}
+
+fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+    var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
+    var half_15: f32 = 0f;
+    var sum_11: f32 = 0f;
+    var i_33: u32 = 0u;
+    var big_b_1: f32;
+    var wpsi: f32;
+    var start_2: f32;
+    var around: f32;
+
+    let p_6 = (sign_2 * a_24.d);
+    let _e8 = airlight_basis_e1_(p_6);
+    let v_7 = cross(p_6, _e8);
+    let au = dot(cap_3.a, _e8);
+    let av = dot(cap_3.a, v_7);
+    let inside_2 = (cos_p_1 > cap_3.cos_a);
+    let sin_p = sqrt(((au * au) + (av * av)));
+    if (sin_p > 0f) {
+        axis_2 = vec2<f32>((au / sin_p), (av / sin_p));
+        let _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0f)) / sin_p), 1f));
+        half_15 = _e42;
+    }
+    loop {
+        let _e47 = i_33;
+        if (_e47 < 32u) {
+        } else {
+            break;
+        }
+        {
+            let _e50 = i_33;
+            let _e51 = airlight_azimuths(inside_2, _e50);
+            let _e54 = axis_2.x;
+            let _e58 = axis_2.y;
+            big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
+            wpsi = _e51.z;
+            if !(inside_2) {
+                let _e66 = half_15;
+                let _e69 = airlight_cos_sin((_e66 * _e51.y));
+                big_b_1 = (sin_p * _e69.x);
+                let _e73 = half_15;
+                wpsi = ((_e51.z * _e73) * _e51.x);
+            }
+            let _e77 = big_b_1;
+            let _e83 = big_b_1;
+            let _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
+            let mid_2 = (select(1f, -1f, (_e77 < 0f)) * _e85);
+            let _e89 = big_b_1;
+            let _e90 = big_b_1;
+            let _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1f));
+            start_2 = 0f;
+            if !(inside_2) {
+                start_2 = max((mid_2 - _e97), 0f);
+            }
+            let to = (mid_2 + _e97);
+            let _e105 = start_2;
+            let graded_3 = max(scale_1, _e105);
+            let _e107 = start_2;
+            let _e110 = airlight_atan(((to - _e107) / graded_3));
+            let c_21 = (0.5f * _e110);
+            let hw_4 = (0.5f * _e110);
+            around = 0f;
+            let _e117 = around;
+            let _e120 = big_b_1;
+            let _e121 = start_2;
+            let _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_21 - (0.09501251f * hw_4)));
+            around = (_e117 + ((0.1894506f * hw_4) * _e125));
+            let _e128 = around;
+            let _e131 = big_b_1;
+            let _e132 = start_2;
+            let _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_21 + (0.09501251f * hw_4)));
+            around = (_e128 + ((0.1894506f * hw_4) * _e136));
+            let _e139 = around;
+            let _e142 = big_b_1;
+            let _e143 = start_2;
+            let _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_21 - (0.28160354f * hw_4)));
+            around = (_e139 + ((0.18260342f * hw_4) * _e147));
+            let _e150 = around;
+            let _e153 = big_b_1;
+            let _e154 = start_2;
+            let _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_21 + (0.28160354f * hw_4)));
+            around = (_e150 + ((0.18260342f * hw_4) * _e158));
+            let _e161 = around;
+            let _e164 = big_b_1;
+            let _e165 = start_2;
+            let _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_21 - (0.45801678f * hw_4)));
+            around = (_e161 + ((0.16915652f * hw_4) * _e169));
+            let _e172 = around;
+            let _e175 = big_b_1;
+            let _e176 = start_2;
+            let _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_21 + (0.45801678f * hw_4)));
+            around = (_e172 + ((0.16915652f * hw_4) * _e180));
+            let _e183 = around;
+            let _e186 = big_b_1;
+            let _e187 = start_2;
+            let _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_21 - (0.61787623f * hw_4)));
+            around = (_e183 + ((0.14959599f * hw_4) * _e191));
+            let _e194 = around;
+            let _e197 = big_b_1;
+            let _e198 = start_2;
+            let _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_21 + (0.61787623f * hw_4)));
+            around = (_e194 + ((0.14959599f * hw_4) * _e202));
+            let _e205 = around;
+            let _e208 = big_b_1;
+            let _e209 = start_2;
+            let _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_21 - (0.7554044f * hw_4)));
+            around = (_e205 + ((0.12462897f * hw_4) * _e213));
+            let _e216 = around;
+            let _e219 = big_b_1;
+            let _e220 = start_2;
+            let _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_21 + (0.7554044f * hw_4)));
+            around = (_e216 + ((0.12462897f * hw_4) * _e224));
+            let _e227 = around;
+            let _e230 = big_b_1;
+            let _e231 = start_2;
+            let _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_21 - (0.8656312f * hw_4)));
+            around = (_e227 + ((0.09515851f * hw_4) * _e235));
+            let _e238 = around;
+            let _e241 = big_b_1;
+            let _e242 = start_2;
+            let _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_21 + (0.8656312f * hw_4)));
+            around = (_e238 + ((0.09515851f * hw_4) * _e246));
+            let _e249 = around;
+            let _e252 = big_b_1;
+            let _e253 = start_2;
+            let _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_21 - (0.944575f * hw_4)));
+            around = (_e249 + ((0.062253524f * hw_4) * _e257));
+            let _e260 = around;
+            let _e263 = big_b_1;
+            let _e264 = start_2;
+            let _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_21 + (0.944575f * hw_4)));
+            around = (_e260 + ((0.062253524f * hw_4) * _e268));
+            let _e271 = around;
+            let _e274 = big_b_1;
+            let _e275 = start_2;
+            let _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_21 - (0.9894009f * hw_4)));
+            around = (_e271 + ((0.02715246f * hw_4) * _e279));
+            let _e282 = around;
+            let _e285 = big_b_1;
+            let _e286 = start_2;
+            let _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_21 + (0.9894009f * hw_4)));
+            around = (_e282 + ((0.02715246f * hw_4) * _e290));
+            let _e293 = sum_11;
+            let _e294 = wpsi;
+            let _e295 = around;
+            sum_11 = (_e293 + (_e294 * _e295));
+        }
+        continuing {
+            let _e299 = i_33;
+            i_33 = (_e299 + 1u);
+        }
+    }
+    let _e301 = sum_11;
+    return _e301;
+}
+
+fn airlight_sphere(s_39: AirlightScene, a_25: AirlightArea, x_23: vec3<f32>) -> f32 {
+    var chosen: f32 = 0f;
+    var sign_3: f32 = 1f;
+    var cos_p_2: f32 = 0f;
+    var j_6: u32 = 0u;
+    var local_183: bool;
+    var local_184: bool;
+    var local_185: bool;
+    var local_186: bool;
+    var local_187: bool;
+
+    let v_8 = (a_25.c - x_23);
+    let _e5 = airlight_safe_length(v_8);
+    if !((_e5 > a_25.radius)) {
+        return 0f;
+    }
+    let sin_a_2 = (a_25.radius / _e5);
+    let cap_4 = AirlightCap((v_8 / vec3(_e5)), _e5, a_25.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
+    loop {
+        let _e32 = j_6;
+        if (_e32 < 2u) {
+        } else {
+            break;
+        }
+        {
+            let _e39 = j_6;
+            let lobe_2 = select(a_25.lobes.xy, a_25.lobes.zw, (_e39 == 1u));
+            let c_22 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            let _e48 = chosen;
+            if (_e48 == 0f) {
+                local_183 = (lobe_2.y > 0f);
+            } else {
+                local_183 = false;
+            }
+            let _e57 = local_183;
+            if _e57 {
+                local_184 = (lobe_2.y < (_e23 + _e23));
+            } else {
+                local_184 = false;
+            }
+            let _e64 = local_184;
+            if _e64 {
+                if !((c_22 > cap_4.cos_a)) {
+                    if (c_22 > -(cap_4.cos_a)) {
+                        let _e77 = airlight_acos(c_22);
+                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
+                    } else {
+                        local_187 = false;
+                    }
+                    let _e84 = local_187;
+                    local_186 = _e84;
+                } else {
+                    local_186 = true;
+                }
+                let _e86 = local_186;
+                local_185 = _e86;
+            } else {
+                local_185 = false;
+            }
+            let _e88 = local_185;
+            if _e88 {
+                chosen = lobe_2.y;
+                sign_3 = lobe_2.x;
+                cos_p_2 = c_22;
+            }
+        }
+        continuing {
+            let _e92 = j_6;
+            j_6 = (_e92 + 1u);
+        }
+    }
+    let _e94 = chosen;
+    if (_e94 > 0f) {
+        let _e97 = sign_3;
+        let _e98 = cos_p_2;
+        let _e99 = chosen;
+        let _e100 = airlight_sphere_about_lobe(s_39, a_25, cap_4, _e97, _e98, _e99);
+        return _e100;
+    }
+    let _e101 = airlight_sphere_cap(s_39, a_25, cap_4);
+    return _e101;
+}
+
+fn airlight_emitter_radiance(s_40: AirlightScene, a_26: AirlightArea, x_24: vec3<f32>) -> f32 {
+    switch s_40.light_shape {
+        case 2u: {
+            let _e4 = airlight_disc(s_40, a_26, x_24);
+            return _e4;
+        }
+        case 3u: {
+            let _e5 = airlight_parallelogram(s_40, a_26, x_24);
+            return _e5;
+        }
+        default: {
+            let _e6 = airlight_sphere(s_40, a_26, x_24);
+            return _e6;
+        }
+    }
+}
+
+fn airlight_area_node(s_41: AirlightScene, a_27: AirlightArea, theta: f32) -> f32 {
+    let _e3 = airlight_cos_sin(theta);
+    let along = ((a_27.h_eff * _e3.y) / _e3.x);
+    let t_11 = (a_27.x_h + along);
+    let fade = exp(min((-(s_41.sigma_t) * max(((a_27.x_h - s_41.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_41, a_27, (s_41.origin + (t_11 * a_27.d)));
+    return (((a_27.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+}
+
+fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
+    var list_2: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var count_3: u32 = 0u;
+    var lo_5: f32;
+    var hi_4: f32;
+    var slot_1: u32 = 0u;
+    var queued: bool = false;
+    var queued_lo: f32 = 0f;
+    var queued_hi: f32 = 0f;
+    var step_2: u32 = 0u;
+    var k_7: f32;
+    var gauss: f32;
+    var j_7: u32;
+    var local_188: bool;
+
+    let _e1 = airlight_area(s_42);
+    if (_e1.outcome == 1u) {
+        return AirlightResult(0f, 0u);
+    }
+    let _e8 = airlight_kronrod15_rule();
+    lo_5 = _e1.edges[0];
+    hi_4 = _e1.edges[1];
+    let max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
+    let evaluations = ((2u * max_panels_2) - 1u);
+    loop {
+        let _e68 = step_2;
+        if (_e68 < evaluations) {
+        } else {
+            break;
+        }
+        {
+            let _e70 = lo_5;
+            let _e71 = hi_4;
+            let c_23 = (0.5f * (_e70 + _e71));
+            let _e75 = hi_4;
+            let _e76 = lo_5;
+            let hw_5 = (0.5f * (_e75 - _e76));
+            k_7 = 0f;
+            gauss = 0f;
+            j_7 = 0u;
+            loop {
+                let _e86 = j_7;
+                if (_e86 < 15u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e89 = j_7;
+                    let node_2 = _e8[(_e89 / 2u)];
+                    let _e99 = j_7;
+                    if ((_e99 & 1u) == 0u) {
+                        let _e106 = j_7;
+                        local_188 = (_e106 < 14u);
+                    } else {
+                        local_188 = false;
+                    }
+                    let _e110 = local_188;
+                    let x_33 = select((c_23 + (hw_5 * node_2.x)), (c_23 - (hw_5 * node_2.x)), _e110);
+                    let _e112 = airlight_area_node(s_42, _e1, x_33);
+                    let _e113 = k_7;
+                    k_7 = (_e113 + (node_2.y * _e112));
+                    let _e117 = gauss;
+                    gauss = (_e117 + (node_2.z * _e112));
+                }
+                continuing {
+                    let _e122 = j_7;
+                    j_7 = (_e122 + 1u);
+                }
+            }
+            let _e124 = slot_1;
+            let _e125 = lo_5;
+            let _e126 = hi_4;
+            let _e127 = k_7;
+            let _e129 = k_7;
+            let _e131 = gauss;
+            airlight_list_set((&list_2), _e124, vec4<f32>(_e125, _e126, (_e127 * hw_5), abs(((_e129 * hw_5) - (_e131 * hw_5)))));
+            let _e136 = slot_1;
+            let _e137 = count_3;
+            if (_e136 == _e137) {
+                let _e139 = count_3;
+                count_3 = (_e139 + 1u);
+            }
+            let _e142 = count_3;
+            if (_e142 < _e1.panels) {
+                let _e146 = count_3;
+                lo_5 = _e1.edges[_e146];
+                let _e149 = count_3;
+                hi_4 = _e1.edges[(_e149 + 1u)];
+                let _e153 = count_3;
+                slot_1 = _e153;
+            } else {
+                let _e154 = queued;
+                if _e154 {
+                    let _e155 = queued_lo;
+                    lo_5 = _e155;
+                    let _e156 = queued_hi;
+                    hi_4 = _e156;
+                    let _e157 = count_3;
+                    slot_1 = _e157;
+                    queued = false;
+                } else {
+                    let _e159 = count_3;
+                    let _e161 = airlight_split_worst((&list_2), _e159, max_panels_2, AIRLIGHT_AREA_RAY_TOLERANCE);
+                    if !(_e161.split) {
+                        break;
+                    }
+                    lo_5 = _e161.lo;
+                    hi_4 = _e161.mid;
+                    slot_1 = _e161.slot;
+                    queued = true;
+                    queued_lo = _e161.mid;
+                    queued_hi = _e161.hi;
+                }
+            }
+        }
+        continuing {
+            let _e171 = step_2;
+            step_2 = (_e171 + 1u);
+        }
+    }
+    let _e173 = list_2;
+    let _e174 = count_3;
+    let _e175 = airlight_list_scan(_e173, _e174);
+    let total_4 = _e175.total;
+    let _e177 = airlight_is_finite(total_4);
+    if !(_e177) {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
+    }
+    return AirlightResult((s_42.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+}
+
+fn airlight_in_scatter_area(s_43: AirlightScene) -> AirlightResult {
+    var local_189: bool;
+    var local_190: bool;
+
+    let _e1 = airlight_valid(s_43);
+    if !(!(_e1)) {
+        local_189 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_189 = true;
+    }
+    let _e10 = local_189;
+    if !(_e10) {
+        local_190 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_190 = true;
+    }
+    let _e18 = local_190;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_area_light(s_43);
+    return _e22;
+}
+
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_149: bool;
+    var local_191: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_149 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_149 = true;
+        local_191 = true;
     }
-    let _e11 = local_149;
+    let _e11 = local_191;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return r_5;
 }
 
-fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
+fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_150: bool;
-    var g_26: AirlightCanonical;
+    var local_192: bool;
+    var g_28: AirlightCanonical;
 
-    let p_2 = n_2.scene;
-    let _e7 = airlight_vec_finite(p_2.light_position);
+    let p_7 = n_4.scene;
+    let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
-        let _e11 = airlight_vec_finite(p_2.dir);
-        local_150 = _e11;
+        let _e11 = airlight_vec_finite(p_7.dir);
+        local_192 = _e11;
     } else {
-        local_150 = false;
+        local_192 = false;
     }
-    let _e13 = local_150;
+    let _e13 = local_192;
     if _e13 {
-        g_26 = n_2.canonical;
-        if !(n_2.exact) {
-            let _e18 = airlight_canonical(p_2);
-            let _e19 = airlight_refined(p_2, _e18);
-            g_26 = _e19;
+        g_28 = n_4.canonical;
+        if !(n_4.exact) {
+            let _e18 = airlight_canonical(p_7);
+            let _e19 = airlight_refined(p_7, _e18);
+            g_28 = _e19;
         }
-        let _e20 = g_26;
-        let _e21 = airlight_in_scatter_canonical(p_2, _e20);
+        let _e20 = g_28;
+        let _e21 = airlight_in_scatter_canonical(p_7, _e20);
         r_6 = _e21;
     }
     let _e22 = r_6;
@@ -6005,60 +7740,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_27: AirlightScene) -> AirlightResult {
-    var local_151: bool;
-    var local_152: bool;
+fn airlight_in_scatter_point(s_44: AirlightScene) -> AirlightResult {
+    var local_193: bool;
+    var local_194: bool;
 
-    let _e1 = airlight_valid(s_27);
+    let _e1 = airlight_valid(s_44);
     if !(!(_e1)) {
-        local_151 = (s_27.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_193 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_151 = true;
+        local_193 = true;
     }
-    let _e10 = local_151;
+    let _e10 = local_193;
     if !(_e10) {
-        local_152 = (s_27.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_194 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_152 = true;
+        local_194 = true;
     }
-    let _e18 = local_152;
+    let _e18 = local_194;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_27);
+    let _e22 = airlight_point_integral(s_44);
     return _e22;
 }
 
-fn airlight_in_scatter_route(s_28: AirlightScene) -> AirlightResult {
-    var local_153: bool;
-    var local_154: bool;
+fn airlight_in_scatter_route(s_45: AirlightScene) -> AirlightResult {
+    var local_195: bool;
+    var local_196: bool;
 
-    let _e1 = airlight_valid(s_28);
+    let _e1 = airlight_valid(s_45);
     if !(!(_e1)) {
-        local_153 = (s_28.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_195 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_153 = true;
+        local_195 = true;
     }
-    let _e10 = local_153;
+    let _e10 = local_195;
     if !(_e10) {
-        local_154 = (s_28.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_196 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_154 = true;
+        local_196 = true;
     }
-    let _e18 = local_154;
+    let _e18 = local_196;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_28);
-    let _e23 = airlight_refined(s_28, _e22);
-    let _e24 = airlight_limits(s_28, _e23);
+    let _e22 = airlight_canonical(s_45);
+    let _e23 = airlight_refined(s_45, _e22);
+    let _e24 = airlight_limits(s_45, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_28);
+    let _e29 = airlight_isotropic_scene(s_45);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_28, _e23);
+        let _e31 = airlight_angle_route(s_45, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -6067,217 +7802,162 @@ fn airlight_in_scatter_route(s_28: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_29: AirlightScene) -> AirlightResult {
-    var list_1: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
-    var count_2: u32 = 0u;
-    var a_17: f32;
+fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
+    var list_3: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
+    var count_4: u32 = 0u;
+    var a_28: f32;
     var b_13: f32;
-    var slot_1: u32 = 0u;
-    var queued: bool = false;
-    var queued_lo: f32 = 0f;
-    var queued_hi: f32 = 0f;
-    var step_2: u32 = 0u;
-    var k_7: f32;
-    var gauss: f32;
-    var j_5: u32;
-    var local_155: bool;
+    var slot_2: u32 = 0u;
+    var queued_1: bool = false;
+    var queued_lo_1: f32 = 0f;
+    var queued_hi_1: f32 = 0f;
+    var step_3: u32 = 0u;
+    var k_8: f32;
+    var gauss_1: f32;
+    var j_8: u32;
+    var local_197: bool;
     var f: f32;
-    var local_156: bool;
-    var split: bool;
-    var tries: u32;
-    var local_157: bool;
-    var local_158: bool;
-    var local_159: bool;
+    var local_198: bool;
 
-    let _e1 = airlight_valid(s_29);
+    let _e1 = airlight_valid(s_46);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    let _e6 = airlight_outer(s_29);
-    if (_e6.outcome == 1u) {
+    if (s_46.light_shape >= AIRLIGHT_SHAPE_DISC) {
+        return AirlightResult(0f, 1u);
+    }
+    let _e12 = airlight_outer(s_46);
+    if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
-    if (_e6.outcome == 2u) {
+    if (_e12.outcome == 2u) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let _e19 = airlight_kronrod_rule();
-    a_17 = _e6.edges[0];
-    b_13 = _e6.edges[1];
-    let evaluations = ((2u * _e6.max_panels) - 1u);
+    let _e25 = airlight_kronrod_rule();
+    a_28 = _e12.edges[0];
+    b_13 = _e12.edges[1];
+    let evaluations_1 = ((2u * _e12.max_panels) - 1u);
     loop {
-        let _e78 = step_2;
-        if (_e78 < evaluations) {
+        let _e84 = step_3;
+        if (_e84 < evaluations_1) {
         } else {
             break;
         }
         {
-            let _e80 = a_17;
-            let _e81 = b_13;
-            let c_15 = (0.5f * (_e80 + _e81));
-            let _e85 = b_13;
-            let _e86 = a_17;
-            let hw_2 = (0.5f * (_e85 - _e86));
-            k_7 = 0f;
-            gauss = 0f;
-            j_5 = 0u;
+            let _e86 = a_28;
+            let _e87 = b_13;
+            let c_24 = (0.5f * (_e86 + _e87));
+            let _e91 = b_13;
+            let _e92 = a_28;
+            let hw_6 = (0.5f * (_e91 - _e92));
+            k_8 = 0f;
+            gauss_1 = 0f;
+            j_8 = 0u;
             loop {
-                let _e96 = j_5;
-                if (_e96 < 7u) {
+                let _e102 = j_8;
+                if (_e102 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e99 = j_5;
-                    let node_1 = _e19[(_e99 / 2u)];
-                    let _e109 = j_5;
-                    if ((_e109 & 1u) == 0u) {
-                        let _e116 = j_5;
-                        local_155 = (_e116 < 6u);
+                    let _e105 = j_8;
+                    let node_3 = _e25[(_e105 / 2u)];
+                    let _e115 = j_8;
+                    if ((_e115 & 1u) == 0u) {
+                        let _e122 = j_8;
+                        local_197 = (_e122 < 6u);
                     } else {
-                        local_155 = false;
+                        local_197 = false;
                     }
-                    let _e120 = local_155;
-                    let w_9 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e120);
-                    let _e122 = airlight_outer_node(s_29, _e6, w_9);
+                    let _e126 = local_197;
+                    let w_10 = select((c_24 + (hw_6 * node_3.x)), (c_24 - (hw_6 * node_3.x)), _e126);
+                    let _e128 = airlight_outer_node(s_46, _e12, w_10);
                     f = 0f;
-                    if (_e122.weight != 0f) {
-                        let _e128 = airlight_node_integral(_e122);
-                        if (_e128.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e128;
+                    if (_e128.weight != 0f) {
+                        let _e134 = airlight_node_integral(_e128);
+                        if (_e134.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e134;
                         }
-                        if (s_29.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_156 = (s_29.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_46.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_198 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_156 = false;
+                            local_198 = false;
                         }
-                        let _e141 = local_156;
-                        if _e141 {
-                            return _e128;
+                        let _e147 = local_198;
+                        if _e147 {
+                            return _e134;
                         }
-                        f = (_e128.in_scatter * _e122.weight);
+                        f = (_e134.in_scatter * _e128.weight);
                     }
-                    let _e145 = k_7;
-                    let _e147 = f;
-                    k_7 = (_e145 + (node_1.y * _e147));
-                    let _e150 = gauss;
-                    let _e152 = f;
-                    gauss = (_e150 + (node_1.z * _e152));
+                    let _e151 = k_8;
+                    let _e153 = f;
+                    k_8 = (_e151 + (node_3.y * _e153));
+                    let _e156 = gauss_1;
+                    let _e158 = f;
+                    gauss_1 = (_e156 + (node_3.z * _e158));
                 }
                 continuing {
-                    let _e156 = j_5;
-                    j_5 = (_e156 + 1u);
+                    let _e162 = j_8;
+                    j_8 = (_e162 + 1u);
                 }
             }
-            let _e158 = slot_1;
-            let _e159 = a_17;
-            let _e160 = b_13;
-            let _e161 = k_7;
-            let _e163 = k_7;
-            let _e165 = gauss;
-            airlight_list_set((&list_1), _e158, vec4<f32>(_e159, _e160, (_e161 * hw_2), abs(((_e163 * hw_2) - (_e165 * hw_2)))));
-            let _e170 = slot_1;
-            let _e171 = count_2;
-            if (_e170 == _e171) {
-                let _e173 = count_2;
-                count_2 = (_e173 + 1u);
+            let _e164 = slot_2;
+            let _e165 = a_28;
+            let _e166 = b_13;
+            let _e167 = k_8;
+            let _e169 = k_8;
+            let _e171 = gauss_1;
+            airlight_list_set((&list_3), _e164, vec4<f32>(_e165, _e166, (_e167 * hw_6), abs(((_e169 * hw_6) - (_e171 * hw_6)))));
+            let _e176 = slot_2;
+            let _e177 = count_4;
+            if (_e176 == _e177) {
+                let _e179 = count_4;
+                count_4 = (_e179 + 1u);
             }
-            let _e176 = count_2;
-            if (_e176 < _e6.panels) {
-                let _e180 = count_2;
-                a_17 = _e6.edges[_e180];
-                let _e183 = count_2;
-                b_13 = _e6.edges[(_e183 + 1u)];
-                let _e187 = count_2;
-                slot_1 = _e187;
+            let _e182 = count_4;
+            if (_e182 < _e12.panels) {
+                let _e186 = count_4;
+                a_28 = _e12.edges[_e186];
+                let _e189 = count_4;
+                b_13 = _e12.edges[(_e189 + 1u)];
+                let _e193 = count_4;
+                slot_2 = _e193;
             } else {
-                let _e188 = queued;
-                if _e188 {
-                    let _e189 = queued_lo;
-                    a_17 = _e189;
-                    let _e190 = queued_hi;
-                    b_13 = _e190;
-                    let _e191 = count_2;
-                    slot_1 = _e191;
-                    queued = false;
+                let _e194 = queued_1;
+                if _e194 {
+                    let _e195 = queued_lo_1;
+                    a_28 = _e195;
+                    let _e196 = queued_hi_1;
+                    b_13 = _e196;
+                    let _e197 = count_4;
+                    slot_2 = _e197;
+                    queued_1 = false;
                 } else {
-                    split = false;
-                    tries = 0u;
-                    loop {
-                        let _e197 = tries;
-                        if (_e197 < _e6.max_panels) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e200 = list_1;
-                            let _e201 = count_2;
-                            let _e202 = airlight_list_scan(_e200, _e201);
-                            let total_4 = _e202.total;
-                            let worst_1 = _e202.worst;
-                            if !(!((_e202.errors > (AIRLIGHT_PANEL_TOLERANCE * abs(total_4))))) {
-                                let _e213 = count_2;
-                                local_157 = (_e213 == _e6.max_panels);
-                            } else {
-                                local_157 = true;
-                            }
-                            let _e217 = local_157;
-                            if !(_e217) {
-                                let _e221 = airlight_is_finite(total_4);
-                                local_158 = !(_e221);
-                            } else {
-                                local_158 = true;
-                            }
-                            let _e224 = local_158;
-                            if _e224 {
-                                break;
-                            }
-                            let _e225 = list_1;
-                            let _e226 = airlight_list_get(_e225, worst_1);
-                            let wa_1 = _e226.x;
-                            let wb_1 = _e226.y;
-                            let mid_1 = (0.5f * (wa_1 + wb_1));
-                            if (mid_1 > wa_1) {
-                                local_159 = (mid_1 < wb_1);
-                            } else {
-                                local_159 = false;
-                            }
-                            let _e237 = local_159;
-                            if !(_e237) {
-                                airlight_list_set((&list_1), worst_1, vec4<f32>(_e226.xyz, 0f));
-                                continue;
-                            }
-                            a_17 = wa_1;
-                            b_13 = mid_1;
-                            slot_1 = worst_1;
-                            queued = true;
-                            queued_lo = mid_1;
-                            queued_hi = wb_1;
-                            split = true;
-                            break;
-                        }
-                        continuing {
-                            let _e245 = tries;
-                            tries = (_e245 + 1u);
-                        }
-                    }
-                    let _e247 = split;
-                    if !(_e247) {
+                    let _e199 = count_4;
+                    let _e201 = airlight_split_worst((&list_3), _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+                    if !(_e201.split) {
                         break;
                     }
+                    a_28 = _e201.lo;
+                    b_13 = _e201.mid;
+                    slot_2 = _e201.slot;
+                    queued_1 = true;
+                    queued_lo_1 = _e201.mid;
+                    queued_hi_1 = _e201.hi;
                 }
             }
         }
         continuing {
-            let _e250 = step_2;
-            step_2 = (_e250 + 1u);
+            let _e211 = step_3;
+            step_3 = (_e211 + 1u);
         }
     }
-    let _e252 = list_1;
-    let _e253 = count_2;
-    let _e254 = airlight_list_scan(_e252, _e253);
-    let total_5 = _e254.total;
-    let _e256 = airlight_is_finite(total_5);
-    if !(_e256) {
+    let _e213 = list_3;
+    let _e214 = count_4;
+    let _e215 = airlight_list_scan(_e213, _e214);
+    let total_5 = _e215.total;
+    let _e217 = airlight_is_finite(total_5);
+    if !(_e217) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

@@ -354,6 +354,83 @@ fn segment_lights_agree_with_the_cpu_kernel() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
+/// Area lights (tests/reference/area.jsonl: discs, rectangles and spheres near, far, pierced,
+/// behind the camera, thick, inside a sphere, with cosine lobes of emission; isotropic, HG and
+/// Rayleigh fog): the area entry `airlight_in_scatter_area` as a compute shader over the
+/// committed WGSL library at 8 and 12 nodes, run as WGSL and as naga's SPIR-V, agrees with the
+/// f32 CPU kernel computing the same method (`AreaScene::in_scatter_bounded`) by the criterion of
+/// the point light, and is within 1e-4 of the nested-quadrature value, relative to the value
+/// (the f32 target of area lights, docs/DESIGN.md §12). Invalid area records (a NaN radius, a
+/// zero normal, parallel edges, an emission power of 0, a light with an axis) give INVALID, and
+/// the full entry `airlight_in_scatter` answers an area light INVALID. (Not run: the GLSL and HLSL
+/// back ends' texts through glslang — glslang's SPIR-V of a compute shader holding the area code
+/// took lavapipe 766 s to compile, naga's 12 s (docs/DESIGN.md §12); tests/shaders.rs compiles
+/// both libraries' area entry with glslang.)
+#[test]
+fn area_lights_agree_with_the_cpu_kernel() {
+    use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
+    use airlight_shaders::agreement::expect_area;
+    use airlight_shaders::layout::{pack_area, Record, SHAPE_DISC, SHAPE_RECTANGLE};
+    use airlight_shaders::targets::{area_compute_wgsl, spirv_of_compute};
+    let Some(gpu) = gpu() else { return };
+    let cases: Vec<_> = reference_lines("area.jsonl")
+        .iter()
+        .map(|v| match parse_any_value::<f32>(v) {
+            Ok(AnyRecord::Area(s)) => (s, v["in_scatter"].as_f64().unwrap(), format!("{} {}", v["category"].as_str().unwrap(), v["light"]["shape"].as_str().unwrap())),
+            other => panic!("area.jsonl holds area lights valid in f32, not {other:?}"),
+        })
+        .collect();
+    let mut records: Vec<u8> = cases.iter().flat_map(|c| pack_area(&c.0)).collect();
+    let first = |shape: u32| Record::area(&cases.iter().find(|c| Record::area(&c.0).light_shape == shape).expect("each shape in area.jsonl").0);
+    let invalid: Vec<Record> = vec![
+        Record { light_param_a: f32::NAN, ..first(SHAPE_DISC) },
+        Record { light_axis: [0.0; 3], ..first(SHAPE_DISC) },
+        Record { light_end: first(SHAPE_RECTANGLE).light_axis, ..first(SHAPE_RECTANGLE) },
+        Record { light_param_b: 0.0, ..first(SHAPE_RECTANGLE) },
+        Record { light_kind: airlight_shaders::layout::LIGHT_TWO_LOBED, ..first(SHAPE_DISC) },
+    ];
+    records.extend(invalid.iter().flat_map(|r| r.bytes()));
+    let mut failures = Vec::new();
+    let expected: Vec<Expected> = cases.iter().map(|c| expect_area(&c.0)).collect();
+    println!("| artifact | records | max diff to f32 CPU (of scale) | max err vs nested quadrature | worst class |");
+    println!("|---|---|---|---|---|");
+    for terms in NODE_COUNTS {
+        let wgsl = area_compute_wgsl(terms);
+        let spirv = spirv_of_compute(&wgsl).unwrap();
+        let full = gpu.run(Shader::Wgsl(compute_wgsl(terms)), &records[..RECORD_SIZE], false).unwrap();
+        if unpack_result(&full) != (0.0, STATUS_INVALID) {
+            failures.push(format!("airlight_in_scatter/{terms} answered an area light {:?}", unpack_result(&full)));
+        }
+        for (label, shader) in [("wgsl", Shader::Wgsl(&wgsl)), ("spirv", Shader::SpirV(&spirv, "airlight_main"))] {
+            let out = gpu.run(shader, &records, false).unwrap();
+            let (mut worst, mut worst_ref, mut worst_class) = (0.0f64, 0.0f64, String::new());
+            for (i, (c, e)) in cases.iter().zip(&expected).enumerate() {
+                let (got, status) = unpack_result(&out[i * RESULT_SIZE..(i + 1) * RESULT_SIZE]);
+                let j = judge(e, got, status);
+                worst = worst.max(j.diff);
+                if let Some(msg) = j.problem {
+                    failures.push(format!("{label}/{terms} {} #{i}: {msg}", c.2));
+                }
+                let err = rel_err(got as f64, c.1);
+                if err > worst_ref {
+                    (worst_ref, worst_class) = (err, c.2.clone());
+                }
+                if !(err <= 1e-4) {
+                    failures.push(format!("{label}/{terms} {} #{i}: {err:.2e} off the reference (gpu {got}, exact {})", c.2, c.1));
+                }
+            }
+            for k in 0..invalid.len() {
+                let (got, status) = unpack_result(&out[(cases.len() + k) * RESULT_SIZE..(cases.len() + k + 1) * RESULT_SIZE]);
+                if (got, status) != (0.0, STATUS_INVALID) {
+                    failures.push(format!("{label}/{terms}: invalid area record {k} gave ({got}, {status})"));
+                }
+            }
+            println!("| {label}/{terms} | {} | {worst:.2e} | {worst_ref:.2e} | {worst_class} |", cases.len());
+        }
+    }
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
 /// `airlight eval` input lines of reference records: each without the fields named in `drop`
 /// (its answer and bookkeeping), with its index as `"id"`.
 fn eval_input<'a>(records: impl IntoIterator<Item = &'a serde_json::Value>, drop: &[&str]) -> String {
@@ -390,6 +467,29 @@ fn eval_runs_segment_lights_on_the_gpu() {
         let got = a["in_scatter"].as_f64().unwrap_or_else(|| panic!("answer {i}: {a}"));
         let want = v["in_scatter"].as_f64().unwrap();
         assert!(rel_err(got, want) <= 1e-3, "record {i}: eval --backend gpu {got}, mpmath {want}");
+    }
+}
+
+/// `airlight eval --backend gpu` evaluates area-light records through the shader: every answer
+/// line of tests/reference/area.jsonl's scenes (ids echoed) within 1e-4 of the reference value,
+/// the f32 target of area lights (docs/DESIGN.md §12).
+#[test]
+fn eval_runs_area_lights_on_the_gpu() {
+    use airlight_codegen::eval::{run_gpu, Backend, EvalOptions};
+    if gpu().is_none() {
+        return;
+    }
+    let lines = reference_lines("area.jsonl");
+    let input = eval_input(&lines, &["in_scatter", "category"]);
+    let mut out = Vec::new();
+    run_gpu(input.as_bytes(), &mut out, &EvalOptions { backend: Backend::Gpu, ..Default::default() }).unwrap();
+    let answers: Vec<serde_json::Value> = String::from_utf8(out).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(answers.len(), lines.len());
+    for (i, (a, v)) in answers.iter().zip(&lines).enumerate() {
+        assert_eq!(a["id"], i, "answer {i}: {a}");
+        let got = a["in_scatter"].as_f64().unwrap_or_else(|| panic!("answer {i}: {a}"));
+        let want = v["in_scatter"].as_f64().unwrap();
+        assert!(rel_err(got, want) <= 1e-4, "record {i}: eval --backend gpu {got}, reference {want}");
     }
 }
 

@@ -105,7 +105,8 @@ fn paste(path: &Path, before: &str, after: &str) -> String {
     format!("{before}\n{}\n{after}\n", std::fs::read_to_string(path).unwrap())
 }
 
-/// The include libraries compile inside a user's shader, pasted as an `#include` would.
+/// The include libraries compile inside a user's shader, pasted as an `#include` would, calling
+/// the full entry and the area lights' (`airlight_in_scatter_area`).
 #[test]
 fn include_libraries_compile_in_a_test_shader() {
     if !tool("glslangValidator") {
@@ -117,21 +118,21 @@ fn include_libraries_compile_in_a_test_shader() {
         let g450 = paste(
             &dir.join(format!("glsl/airlight_lib_{n}.glsl")),
             "#version 450",
-            &format!("layout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Out {{ float v[]; }};\nvoid main() {{ v[0] = airlight_in_scatter({SCENE_GLSL}).in_scatter; }}"),
+            &format!("layout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Out {{ float v[]; }};\nvoid main() {{ v[0] = airlight_in_scatter({SCENE_GLSL}).in_scatter + airlight_in_scatter_area({SCENE_GLSL}).in_scatter; }}"),
         );
         std::fs::write(tmp.join("t.comp"), g450).unwrap();
         run(Command::new("glslangValidator").args(["-V", "-o"]).arg(tmp.join("t.spv")).arg(tmp.join("t.comp")));
         let es = paste(
             &dir.join(format!("glsl/airlight_lib_{n}_es300.glsl")),
             "#version 300 es\nprecision highp float;\nprecision highp int;",
-            &format!("out vec4 color;\nvoid main() {{ color = vec4(airlight_in_scatter({SCENE_GLSL}).in_scatter); }}"),
+            &format!("out vec4 color;\nvoid main() {{ color = vec4(airlight_in_scatter({SCENE_GLSL}).in_scatter, airlight_in_scatter_area({SCENE_GLSL}).in_scatter, 0.0, 1.0); }}"),
         );
         std::fs::write(tmp.join("t.frag"), es).unwrap();
         run(Command::new("glslangValidator").arg(tmp.join("t.frag")));
         let hl = paste(
             &dir.join(format!("hlsl/airlight_lib_{n}.hlsl")),
             "",
-            &format!("RWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = {SCENE_HLSL};\n    v[0] = airlight_in_scatter(s).in_scatter;\n}}"),
+            &format!("RWStructuredBuffer<float> v : register(u0);\n[numthreads(1, 1, 1)]\nvoid test_main() {{\n    AirlightScene s = {SCENE_HLSL};\n    v[0] = airlight_in_scatter(s).in_scatter + airlight_in_scatter_area(s).in_scatter;\n}}"),
         );
         std::fs::write(tmp.join("t.hlsl"), hl).unwrap();
         run(Command::new("glslangValidator").args(["-V", "-D", "-e", "test_main", "-S", "comp", "-o"]).arg(tmp.join("h.spv")).arg(tmp.join("t.hlsl")));

@@ -60,6 +60,9 @@ const AIRLIGHT_LIGHT_SPOT: u32 = @LIGHT_SPOT@u;
 // Emitter shapes (record field `light_shape`).
 const AIRLIGHT_SHAPE_POINT: u32 = @SHAPE_POINT@u;
 const AIRLIGHT_SHAPE_SEGMENT: u32 = @SHAPE_SEGMENT@u;
+const AIRLIGHT_SHAPE_DISC: u32 = @SHAPE_DISC@u;
+const AIRLIGHT_SHAPE_RECTANGLE: u32 = @SHAPE_RECTANGLE@u;
+const AIRLIGHT_SHAPE_SPHERE: u32 = @SHAPE_SPHERE@u;
 const AIRLIGHT_SURFACE_NONE: u32 = @SURFACE_NONE@u;
 const AIRLIGHT_SURFACE_LAMBERT: u32 = @SURFACE_LAMBERT@u;
 const AIRLIGHT_SURFACE_PHONG: u32 = @SURFACE_PHONG@u;
@@ -97,13 +100,15 @@ struct AirlightScene {
     dir: vec3<f32>,
     /// Segment end; ignored when `t_max_infinite` is set.
     t_max: f32,
+    /// The light's position; an area light's centre (disc, sphere) or corner (rectangle).
     light_position: vec3<f32>,
+    /// The light's intensity; an area light's radiance.
     intensity: f32,
-    /// Light axis (two-lobed, spot).
+    /// Light axis (two-lobed, spot); a disc's normal, a rectangle's edge u.
     light_axis: vec3<f32>,
-    /// two-lobed: power p (even); spot: cos_inner.
+    /// two-lobed: power p (even); spot: cos_inner; disc, sphere: radius.
     light_param_a: f32,
-    /// spot: cos_outer.
+    /// spot: cos_outer; area lights: the emission's power (1: Lambertian).
     light_param_b: f32,
     sigma_s: f32,
     sigma_t: f32,
@@ -124,10 +129,11 @@ struct AirlightScene {
     surface_kind: u32,
     /// A Phong lobe's exponent n.
     brdf_exponent: f32,
-    /// A segment light's other end (its first is `light_position`).
+    /// A segment light's other end (its first is `light_position`); a rectangle's edge v.
     light_end: vec3<f32>,
     /// AIRLIGHT_SHAPE_POINT, or AIRLIGHT_SHAPE_SEGMENT: every point of `light_position →
-    /// light_end` emits `intensity` per unit length with the light's distribution.
+    /// light_end` emits `intensity` per unit length with the light's distribution; or an area
+    /// light (AIRLIGHT_SHAPE_DISC, _RECTANGLE, _SPHERE: airlight_in_scatter_area).
     light_shape: u32,
     /// A Phong lobe's direction from the surface towards the eye (any non-zero length).
     brdf_view: vec3<f32>,
@@ -156,7 +162,8 @@ struct AirlightRay {
 
 /// A point light: `intensity · D(c)`, `D` by `kind` (`AIRLIGHT_LIGHT_*`) with `axis` and the
 /// parameters as in AirlightScene; or, with `shape` AIRLIGHT_SHAPE_SEGMENT, a segment light
-/// `position → end` (airlight_segment_light).
+/// `position → end` (airlight_segment_light); or an area light (airlight_disc_light,
+/// airlight_rectangle_light, airlight_sphere_light).
 struct AirlightLight {
     position: vec3<f32>,
     intensity: f32,
@@ -216,6 +223,32 @@ fn airlight_segment_light(light: AirlightLight, end: vec3<f32>) -> AirlightLight
     segment.end = end;
     segment.shape = AIRLIGHT_SHAPE_SEGMENT;
     return segment;
+}
+
+/// A disc of uniform radiance `radiance` (Lambertian: every element `max(0, n·ω)` about `normal`,
+/// any non-zero length), emitting on the side of `normal`; its scene is airlight_in_scatter_area's.
+fn airlight_disc_light(center: vec3<f32>, normal: vec3<f32>, radius: f32, radiance: f32) -> AirlightLight {
+    return AirlightLight(center, radiance, normal, radius, 1.0, AIRLIGHT_LIGHT_OMNI, center, AIRLIGHT_SHAPE_DISC);
+}
+
+/// The parallelogram `corner + u·edge_u + v·edge_v` (u, v ∈ [0, 1]) of uniform radiance
+/// `radiance`, emitting on the side of `edge_u × edge_v`; its scene is airlight_in_scatter_area's.
+fn airlight_rectangle_light(corner: vec3<f32>, edge_u: vec3<f32>, edge_v: vec3<f32>, radiance: f32) -> AirlightLight {
+    return AirlightLight(corner, radiance, edge_u, 0.0, 1.0, AIRLIGHT_LIGHT_OMNI, edge_v, AIRLIGHT_SHAPE_RECTANGLE);
+}
+
+/// A sphere of uniform radiance `radiance`, emitting outward; its scene is
+/// airlight_in_scatter_area's.
+fn airlight_sphere_light(center: vec3<f32>, radius: f32, radiance: f32) -> AirlightLight {
+    return AirlightLight(center, radiance, vec3<f32>(0.0, 0.0, 1.0), radius, 1.0, AIRLIGHT_LIGHT_OMNI, center, AIRLIGHT_SHAPE_SPHERE);
+}
+
+/// An area light whose every element emits `max(0, n·ω)^power` (radiance `radiance·c^{power−1}`,
+/// a focused panel), `power` from 1 (Lambertian) to AIRLIGHT_EMISSION_MAX_POWER.
+fn airlight_cosine_lobe(light: AirlightLight, power: u32) -> AirlightLight {
+    var lobe = light;
+    lobe.param_b = f32(power);
+    return lobe;
 }
 
 /// Scattering and extinction coefficients (`σs ≤ σt` physically; both ≥ 0), per world unit.
@@ -1763,6 +1796,21 @@ fn airlight_valid(s: AirlightScene) -> bool {
     }
     if (s.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         ok = ok && airlight_vec_finite(s.light_end);
+    } else if (s.light_shape >= AIRLIGHT_SHAPE_DISC && s.light_shape <= AIRLIGHT_SHAPE_SPHERE) {
+        // area.rs AreaScene::new: the emitter, its radiance (`intensity`) and emission power
+        // (`light_param_b`); an omni light's fields otherwise
+        ok = ok && s.light_kind == AIRLIGHT_LIGHT_OMNI && s.light_param_b >= 1.0
+            && s.light_param_b <= f32(AIRLIGHT_EMISSION_MAX_POWER) && fract(s.light_param_b) == 0.0;
+        if (s.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+            ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis) && airlight_vec_finite(s.light_end)
+                && airlight_normalisable(s.light_end)
+                && airlight_safe_length(cross(airlight_normalize(s.light_axis), airlight_normalize(s.light_end))) > AIRLIGHT_FLT_EPS;
+        } else {
+            ok = ok && airlight_is_finite(s.light_param_a) && s.light_param_a >= 0.0;
+            if (s.light_shape == AIRLIGHT_SHAPE_DISC) {
+                ok = ok && airlight_vec_finite(s.light_axis) && airlight_normalisable(s.light_axis);
+            }
+        }
     } else if (s.light_shape != AIRLIGHT_SHAPE_POINT) {
         ok = false;
     }
@@ -1967,6 +2015,35 @@ fn airlight_list_scan(l: AirlightPanelList, count: u32) -> AirlightListScan {
     var r = AirlightListScan(0.0, 0.0, 0u);
     var worst_error = -1.0;
 @SEGMENT_LIST_SCAN@    return r;
+}
+
+/// The adaptive scheme's next step (extended.rs `adaptive`): whether the listed panels' summed
+/// error is still above `tolerance` of their sum with room for another panel, and then the first
+/// panel of the largest error, [lo, hi], to be split at `mid` and its halves written at `slot`
+/// and the list's end (a panel too narrow to split has its error cleared instead).
+struct AirlightSplit {
+    split: bool,
+    lo: f32,
+    mid: f32,
+    hi: f32,
+    slot: u32,
+}
+
+fn airlight_split_worst(list: ptr<function, AirlightPanelList>, count: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
+    for (var tries = 0u; tries < max_panels; tries++) {
+        let scan = airlight_list_scan(*list, count);
+        if (!(scan.errors > tolerance * abs(scan.total)) || count == max_panels || !airlight_is_finite(scan.total)) {
+            break;
+        }
+        let w = airlight_list_get(*list, scan.worst);
+        let mid = 0.5 * (w.x + w.y);
+        if (!(mid > w.x && mid < w.y)) {
+            airlight_list_set(list, scan.worst, vec4<f32>(w.xyz, 0.0));
+            continue;
+        }
+        return AirlightSplit(true, w.x, mid, w.y, scan.worst);
+    }
+    return AirlightSplit(false, 0.0, 0.0, 0.0, 0u);
 }
 
 /// asinh x: log1p(|x| + x²/(1 + √(1 + x²))) (no cancellation for x < 0, where Vulkan's asinh
@@ -2435,6 +2512,597 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
     return AirlightNode(p, 1.0, none, false);
 }
 
+// ---------------------------------------------------------------- area lights
+// (kernel/src/area/outer.rs: the ray outside, the directions to the emitter inside)
+
+// The ray's panels and tolerance (outer.rs BOUNDED_RAY_PANELS, BOUNDED_RAY_TOLERANCE).
+const AIRLIGHT_AREA_RAY_PANELS: u32 = @AREA_RAY_PANELS@u;
+const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = @AREA_RAY_TOLERANCE@;
+// How far outside a sphere's cap, in radial scales, a phase lobe is taken about (outer.rs LOBE_REACH).
+const AIRLIGHT_LOBE_REACH: f32 = @LOBE_REACH@;
+// The largest power of an emission lobe (area.rs Emission::MAX_POWER).
+const AIRLIGHT_EMISSION_MAX_POWER: u32 = @EMISSION_MAX_POWER@u;
+
+/// Gauss–Kronrod 7/15 (extended.rs GAUSS_KRONROD_15): (x ≥ 0 descending, Kronrod weight, Gauss
+/// weight or 0); the rule takes ±x.
+fn airlight_kronrod15_rule() -> array<vec3<f32>, 8> {
+    return array<vec3<f32>, 8>(@KRONROD15_RULE@);
+}
+
+/// The azimuths of outer.rs AZIMUTHAL (Gauss–Legendre, 32 points) as (cos ψ, sin ψ, weight): over
+/// the circle ψ ∈ [0, 2π] (`circle`) or the half ψ ∈ [−π/2, π/2].
+fn airlight_azimuths(circle: bool, i: u32) -> vec3<f32> {
+    let full = array<vec3<f32>, 32>(@AZIMUTHS_CIRCLE@);
+    let half = array<vec3<f32>, 32>(@AZIMUTHS_HALF@);
+    return select(half[i], full[i], circle);
+}
+
+/// outer.rs TRIANGLE_AZIMUTHAL (Gauss–Legendre, 12 points) on [−1, 1]: (x, weight).
+fn airlight_triangle_rule(i: u32) -> vec2<f32> {
+    let rule = array<vec2<f32>, 12>(@TRIANGLE_RULE@);
+    return rule[i];
+}
+
+/// An area light as its ray integral takes it (outer.rs `in_scatter_bounded`): the ray's unit
+/// direction; the emitter — a disc's or a sphere's centre `c` and radius, a parallelogram's
+/// corner `c` and edges `eu`, `ev` — with a flat one's unit normal `n` and plane vectors `a1`,
+/// `a2`, and their dot products with the ray's direction (`dirs`); the ray's map `t − x_h =
+/// h' tan θ` and its first panels' edges in θ; the phase function's lobes.
+struct AirlightArea {
+    d: vec3<f32>,
+    c: vec3<f32>,
+    n: vec3<f32>,
+    a1: vec3<f32>,
+    a2: vec3<f32>,
+    eu: vec3<f32>,
+    ev: vec3<f32>,
+    dirs: vec3<f32>,
+    radius: f32,
+    x_h: f32,
+    h_eff: f32,
+    edges: array<f32, 5>,
+    panels: u32,
+    /// 0: integrate; 1: the result is 0.
+    outcome: u32,
+    /// The lobes at μ = ±1 (outer.rs `lobes`): (sign, radial scale s) each, s = 0 for none.
+    lobes: vec4<f32>,
+    /// A constant phase function (outer.rs `constant_phase`).
+    isotropic: bool,
+}
+
+/// P(μ) of the scene's phase function.
+fn airlight_area_phase(s: AirlightScene, mu: f32) -> f32 {
+    return airlight_phase_mu(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
+}
+
+/// L_e c^{p−1} (outer.rs `emitted`): the power p in `light_param_b`, c^{p−1} by repeated squaring
+/// in the order of Rust's `powi` (compiler-rt `__powisf2`), written out: no loop iterations.
+fn airlight_emitted(s: AirlightScene, c: f32) -> f32 {
+    let p = u32(s.light_param_b);
+    if (p <= 1u) { return s.intensity; }
+    var e = p - 1u;
+    var base = c;
+    var acc = 1.0;
+@EMISSION_POWER_STEPS@    return s.intensity * acc;
+}
+
+/// A lobe of Henyey–Greenstein form at its singular cosine's gap `gap` (|μ*| − 1) on the side of
+/// `sign`: (sign, 2√(2 gap)), or none (outer.rs `lobes`).
+fn airlight_lobe(sign: f32, gap: f32) -> vec2<f32> {
+    if (!(gap > 0.0) || !(gap < AIRLIGHT_FLT_MAX)) { return vec2<f32>(1.0, 0.0); }
+    return vec2<f32>(select(1.0, -1.0, sign < 0.0), 2.0 * sqrt(gap + gap));
+}
+
+/// The phase function's lobes (phase.rs `singularities`, outer.rs `lobes`).
+fn airlight_phase_lobes(s: AirlightScene) -> vec4<f32> {
+    let p0 = s.phase_param_a;
+    var first = vec2<f32>(1.0, 0.0);
+    var second = vec2<f32>(1.0, 0.0);
+    switch s.phase_kind {
+        case AIRLIGHT_PHASE_HENYEY_GREENSTEIN, AIRLIGHT_PHASE_CORNETTE_SHANKS: { first = airlight_lobe(p0, airlight_hg_gap(p0)); }
+        case AIRLIGHT_PHASE_SCHLICK: {
+            let a = abs(p0);
+            first = airlight_lobe(p0, select(AIRLIGHT_FLT_MAX, (1.0 - a) / a, a > 0.0));
+        }
+        case AIRLIGHT_PHASE_TWO_LOBE_HG: {
+            first = airlight_lobe(p0, airlight_hg_gap(p0));
+            second = airlight_lobe(s.phase_param_b, airlight_hg_gap(s.phase_param_b));
+        }
+        default: {}
+    }
+    return vec4<f32>(first, second);
+}
+
+/// Two unit vectors completing the unit `n` to a right-handed frame (geometry.rs `basis`).
+fn airlight_basis_e1(n: vec3<f32>) -> vec3<f32> {
+    let m = abs(n);
+    var u = vec3<f32>(0.0, 0.0, 1.0);
+    if (m.x <= m.y && m.x <= m.z) {
+        u = vec3<f32>(1.0, 0.0, 0.0);
+    } else if (m.y <= m.z) {
+        u = vec3<f32>(0.0, 1.0, 0.0);
+    }
+    return airlight_normalize(cross(u, n));
+}
+
+/// The angle θ of the ray's point `t` seen from the emitter's centre: atan((t − x_h)/h'), π/2 at
+/// +∞ (outer.rs `theta`).
+fn airlight_area_theta(a: AirlightArea, t: f32, infinite: bool) -> f32 {
+    if (infinite) { return 0.5 * AIRLIGHT_PI; }
+    let u = t - a.x_h;
+    return select(-1.0, 1.0, u >= 0.0) * airlight_atan2_upper(abs(u), a.h_eff);
+}
+
+/// The ray integral's setup (outer.rs `in_scatter_bounded`): the emitter's frame, its centre and
+/// size, and the first panels' edges — at the centre's foot, where the ray crosses a flat
+/// emitter's plane and where it enters and leaves a sphere — cut where the extinction has
+/// grown by −ln ε past the emitter's far side.
+fn airlight_area(s: AirlightScene) -> AirlightArea {
+    let zero = vec3<f32>(0.0);
+    var a = AirlightArea(zero, s.light_position, zero, zero, zero, zero, zero, zero, s.light_param_a, 0.0, 0.0,
+        array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, airlight_phase_lobes(s), false);
+    a.isotropic = s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
+        || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0)
+        || (s.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG && s.phase_param_a == 0.0 && s.phase_param_b == 0.0);
+    if (s.intensity == 0.0 || s.sigma_s == 0.0) {
+        a.outcome = 1u;
+        return a;
+    }
+    let o = s.origin;
+    let d = airlight_normalize(s.dir);
+    a.d = d;
+    let infinite = (s.flags & 1u) != 0u;
+    let t0 = s.t_min;
+    // where the ray's integrand changes its form besides the centre's foot (`cuts`: none set
+    // stand for the foot again, which the edges drop as a repeat): `cut_count` of them
+    var cut_count = 0u;
+    var cut0 = 0.0;
+    var cut1 = 0.0;
+    var centre = s.light_position;
+    var size = s.light_param_a;
+    if (s.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+        // entry and exit: t² + 2bt + k = 0
+        let oc = o - a.c;
+        let b = dot(oc, d);
+        let k = dot(oc, oc) - a.radius * a.radius;
+        let disc = b * b - k;
+        if (disc > 0.0) {
+            let root = sqrt(disc);
+            let q = -b - select(root, -root, (bitcast<u32>(b) & 0x80000000u) != 0u);
+            cut0 = q;
+            cut1 = k / q;
+            cut_count = 2u;
+        }
+    } else {
+        if (s.light_shape == AIRLIGHT_SHAPE_DISC) {
+            a.n = airlight_normalize(s.light_axis);
+            a.a1 = airlight_basis_e1(a.n);
+        } else {
+            a.eu = s.light_axis;
+            a.ev = s.light_end;
+            a.n = airlight_normalize(cross(a.eu, a.ev));
+            a.a1 = airlight_normalize(a.eu);
+            let diagonal = a.eu + a.ev;
+            centre = a.c + 0.5 * diagonal;
+            size = 0.5 * max(airlight_safe_length(diagonal), airlight_safe_length(a.eu - a.ev));
+        }
+        a.a2 = cross(a.n, a.a1);
+        a.dirs = vec3<f32>(dot(a.a1, d), dot(a.a2, d), dot(a.n, d));
+        cut0 = dot(a.c - o, a.n) / dot(d, a.n);
+        cut_count = 1u;
+    }
+    if (!(size > 0.0)) {
+        a.outcome = 1u;
+        return a;
+    }
+    let to_centre = centre - o;
+    a.x_h = dot(to_centre, d);
+    let h = airlight_safe_length(to_centre - a.x_h * d);
+    a.h_eff = sqrt(h * h + size * size);
+    var t_end = s.t_max;
+    var end_infinite = infinite;
+    if (s.sigma_t > 0.0) {
+        let reach = t0 + airlight_safe_length(centre - (o + t0 * d)) + size - log(AIRLIGHT_FLT_EPS) / s.sigma_t;
+        if (infinite || reach < t_end) {
+            t_end = reach;
+            end_infinite = false;
+        }
+    }
+    let lo = airlight_area_theta(a, t0, false);
+    let hi = airlight_area_theta(a, t_end, end_infinite);
+    // the cuts within [t0, t_end] (outside it: its start, which the edges skip), sorted, those
+    // strictly inside and increasing kept (extended.rs `edges_between`)
+    var cuts = array<f32, 3>(a.x_h, select(a.x_h, cut0, cut_count > 0u), select(a.x_h, cut1, cut_count > 1u));
+    for (var i = 0u; i < 3u; i++) {
+        let t = cuts[i];
+        cuts[i] = lo;
+        if (airlight_is_finite(t) && t >= t0 && (end_infinite || t <= t_end)) { cuts[i] = airlight_area_theta(a, t, false); }
+    }
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    a.edges[0] = lo;
+    var n = 0u;
+    for (var i = 0u; i < 3u; i++) {
+        if (cuts[i] > a.edges[n] && cuts[i] < hi) {
+            n += 1u;
+            a.edges[n] = cuts[i];
+        }
+    }
+    a.edges[n + 1u] = hi;
+    a.panels = n + 1u;
+    return a;
+}
+
+/// A point above a flat emitter's plane (outer.rs `Above`): its height z > 0, q* − foot in the
+/// plane's coordinates, ρ₀ = |x − q*|.
+struct AirlightAbove {
+    z: f32,
+    off: vec2<f32>,
+    rho0: f32,
+}
+
+fn airlight_above(z: f32, off: vec2<f32>) -> AirlightAbove {
+    return AirlightAbove(z, off, sqrt(z * z + off.x * off.x + off.y * off.y));
+}
+
+/// One node γ of `airlight_flat_radial`: L_e c^{p−1} P e^{−σt d} z/d³ r dr/dγ at r = ρ₀ tan γ along `e`.
+fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, g: f32) -> f32 {
+    let cs = airlight_cos_sin_half_turn(g);
+    let r = above.rho0 * cs.y / cs.x;
+    let dr = above.rho0 / (cs.x * cs.x);
+    let p = above.off + r * e;
+    let z = above.z;
+    let dist = sqrt(z * z + p.x * p.x + p.y * p.y);
+    let inv = 1.0 / dist;
+    let cos = z * inv;
+    let phase = airlight_area_phase(s, (p.x * a.dirs.x + p.y * a.dirs.y - z * a.dirs.z) * inv);
+    return airlight_emitted(s, cos) * exp(min(-s.sigma_t * dist, 0.0)) * phase * cos * inv * inv * r * dr;
+}
+
+/// ∫ L_e c^{p−1} P e^{−σt d} z/d³ r dr along the direction `e` from q* out to `r_max`, in γ
+/// (outer.rs `radial`): Gauss–Legendre RADIAL, written out.
+fn airlight_flat_radial(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, r_max: f32) -> f32 {
+    let top = airlight_atan(r_max / above.rho0);
+    let c = 0.5 * top;
+    let hw = 0.5 * top;
+    var sum = 0.0;
+@RADIAL_FLAT@    return sum;
+}
+
+/// S(x) of a disc (outer.rs `disc`): about the foot over the circle, or with the foot outside,
+/// about the rim's point nearest it over the half towards the centre.
+fn airlight_disc(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
+    let rel = x - a.c;
+    let z = dot(rel, a.n);
+    if (!(z > 0.0)) { return 0.0; }
+    let fx = dot(rel, a.a1);
+    let fy = dot(rel, a.a2);
+    let rf = sqrt(fx * fx + fy * fy);
+    let radius = a.radius;
+    let inside = rf <= radius;
+    // outside: u towards the centre, q* on the rim
+    var u = vec2<f32>(0.0);
+    var above = airlight_above(z, vec2<f32>(0.0));
+    if (!inside) {
+        u = vec2<f32>(-fx / rf, -fy / rf);
+        above = airlight_above(z, (rf - radius) * u);
+    }
+    let k = (rf - radius) * (rf + radius);
+    var sum = 0.0;
+    for (var i = 0u; i < 32u; i++) {
+        let az = airlight_azimuths(inside, i);
+        var e = vec2<f32>(az.x * u.x - az.y * u.y, az.x * u.y + az.y * u.x);
+        var r_max = (radius + radius) * az.x;
+        if (inside) {
+            // the chord to the rim along e, the positive root of r² + 2br + k = 0
+            e = az.xy;
+            let b = fx * az.x + fy * az.y;
+            let root = sqrt(b * b - k);
+            r_max = select(root - b, -k / (b + root), b > 0.0);
+        }
+        sum += az.z * airlight_flat_radial(s, a, above, e, r_max);
+    }
+    return sum;
+}
+
+/// S(x) of the parallelogram c + u·eu + v·ev (outer.rs `parallelogram`): the triangles from q*
+/// (the foot, or the nearest point of the edges) to its edges.
+fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
+    let rel = x - a.c;
+    let z = dot(rel, a.n);
+    if (!(z > 0.0)) { return 0.0; }
+    let foot = vec2<f32>(dot(rel, a.a1), dot(rel, a.a2));
+    let u2 = vec2<f32>(dot(a.eu, a.a1), dot(a.eu, a.a2));
+    let v2 = vec2<f32>(dot(a.ev, a.a1), dot(a.ev, a.a2));
+    // counter-clockwise about n
+    let corners = array<vec2<f32>, 5>(vec2<f32>(0.0), u2, u2 + v2, v2, vec2<f32>(0.0));
+    let det = u2.x * v2.y - u2.y * v2.x;
+    let fu = (foot.x * v2.y - foot.y * v2.x) / det;
+    let fv = (u2.x * foot.y - u2.y * foot.x) / det;
+    var q = foot;
+    if (!(fu >= 0.0 && fu <= 1.0 && fv >= 0.0 && fv <= 1.0)) {
+        // the nearest point of the edges
+        var best = AIRLIGHT_FLT_MAX;
+        for (var i = 0u; i < 4u; i++) {
+            let c0 = corners[i];
+            let e = corners[i + 1u] - c0;
+            let t = clamp(((foot.x - c0.x) * e.x + (foot.y - c0.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
+            let p = c0 + t * e;
+            let dd = (p.x - foot.x) * (p.x - foot.x) + (p.y - foot.y) * (p.y - foot.y);
+            if (dd < best) {
+                best = dd;
+                q = p;
+            }
+        }
+    }
+    let above = airlight_above(z, q - foot);
+    // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
+    let thin = AIRLIGHT_FLT_EPS * abs(det);
+    var sum = 0.0;
+    for (var i = 0u; i < 4u; i++) {
+        let ca = corners[i] - q;
+        let cb = corners[i + 1u] - q;
+        let area = ca.x * cb.y - ca.y * cb.x;
+        if (!(area > thin)) { continue; }
+        let e = cb - ca;
+        let el = sqrt(e.x * e.x + e.y * e.y);
+        // the edge's distance from q* and outward normal m
+        let h = area / el;
+        let m = vec2<f32>(e.y / el, -e.x / el);
+        let span = airlight_atan2_upper(area, ca.x * cb.x + ca.y * cb.y);
+        let start = ca / sqrt(ca.x * ca.x + ca.y * ca.y);
+        for (var j = 0u; j < 12u; j++) {
+            let node = airlight_triangle_rule(j);
+            // ψ − ψ(C_i) ∈ [0, span] ⊂ [0, π]: the direction C_i's turned by it
+            let turn = airlight_cos_sin_half_turn(0.5 * span * (1.0 + node.x));
+            let dir = vec2<f32>(turn.x * start.x - turn.y * start.y, turn.y * start.x + turn.x * start.y);
+            sum += node.y * 0.5 * span * airlight_flat_radial(s, a, above, dir, h / (dir.x * m.x + dir.y * m.y));
+        }
+    }
+    return sum;
+}
+
+/// The cap a sphere subtends from x (outer.rs `Cap`): its centre's unit direction `a` at
+/// distance `dc`, the radius, sin α and cos α.
+struct AirlightCap {
+    a: vec3<f32>,
+    dc: f32,
+    radius: f32,
+    sin_a: f32,
+    cos_a: f32,
+}
+
+/// One node φ of the cap rule (outer.rs `sphere`): (the φ-weight's factor w L_e cos^{p−1} φ
+/// sin²α sin φ cos φ / cos β e^{−σt d}, cos β, sin β).
+fn airlight_cap_row(s: AirlightScene, cap: AirlightCap, graded: f32, node: f32, weight: f32) -> vec3<f32> {
+    var phi = node;
+    var w = weight;
+    if (graded > 0.0) {
+        let t = airlight_cos_sin_half_turn(node);
+        phi = graded * t.y / t.x;
+        w = weight * graded / (t.x * t.x);
+    }
+    let cs = airlight_cos_sin_half_turn(phi);
+    let sb = cap.sin_a * cs.y;
+    let cb = sqrt((1.0 - sb) * (1.0 + sb));
+    let dist = max(cap.dc * cb - cap.radius * cs.x, 0.0);
+    let factor = w * airlight_emitted(s, cs.x) * cap.sin_a * cap.sin_a * cs.y * cs.x / cb * exp(min(-s.sigma_t * dist, 0.0));
+    return vec3<f32>(factor, cb, sb);
+}
+
+/// S(x) of a sphere by its cap about the centre's direction (outer.rs `sphere`): φ by RADIAL
+/// (graded towards the centre, φ = s tan ϑ, s = 2/√(p − 1), under a narrow emission lobe) written
+/// out, the ψ loop outside it (32 loop iterations, not 16 × 32).
+fn airlight_sphere_cap(s: AirlightScene, a: AirlightArea, cap: AirlightCap) -> f32 {
+    let e1 = airlight_basis_e1(cap.a);
+    let e2 = cross(cap.a, e1);
+    let ad = dot(cap.a, a.d);
+    let e1d = dot(e1, a.d);
+    let e2d = dot(e2, a.d);
+    let p = u32(s.light_param_b);
+    var graded = 0.0;
+    var top = 0.5 * AIRLIGHT_PI;
+    if (p > 1u) {
+        let lobe = 2.0 / sqrt(f32(p - 1u));
+        if (lobe < 0.5 * AIRLIGHT_PI) {
+            graded = lobe;
+            top = airlight_atan(0.5 * AIRLIGHT_PI / lobe);
+        }
+    }
+    let c = 0.5 * top;
+    let hw = 0.5 * top;
+    // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
+    var rows = array<vec3<f32>, @RADIAL_NODES@>(@ZEROS_RADIAL_ROWS@);
+@RADIAL_CAP_ROWS@    var sum = 0.0;
+    if (a.isotropic) {
+        // a constant phase function's integral round the circle, 2π·P
+        let around = 2.0 * AIRLIGHT_PI * airlight_area_phase(s, 0.0);
+@RADIAL_CAP_CONSTANT@        return sum;
+    }
+    for (var i = 0u; i < 32u; i++) {
+        let az = airlight_azimuths(true, i);
+        let across = az.x * e1d + az.y * e2d;
+        var at = 0.0;
+@RADIAL_CAP_AROUND@        sum += az.z * at;
+    }
+    return sum;
+}
+
+/// One node γ of `airlight_sphere_about_lobe`'s θ integral along ψ: L_e c^{p−1} e^{−σt d} P sin θ dθ/dγ.
+fn airlight_sphere_lobe_node(s: AirlightScene, cap: AirlightCap, sign: f32, cos_p: f32, big_b: f32, start: f32, graded: f32, g: f32) -> f32 {
+    let tg = airlight_cos_sin_half_turn(g);
+    let ct = airlight_cos_sin_half_turn(start + graded * tg.y / tg.x);
+    let toward_a = ct.x * cos_p + ct.y * big_b;
+    let root = sqrt(max(cap.radius * cap.radius - cap.dc * cap.dc * (1.0 - toward_a) * (1.0 + toward_a), 0.0));
+    let dist = max(cap.dc * toward_a - root, 0.0);
+    return airlight_emitted(s, root / cap.radius) * exp(min(-s.sigma_t * dist, 0.0)) * airlight_area_phase(s, sign * ct.x) * ct.y * graded / (tg.x * tg.x);
+}
+
+/// S(x) of a sphere whose cap holds (or nearly) the direction p = sign·d of a phase lobe of
+/// radial scale `scale` (outer.rs `sphere_about_lobe`): polar about p, θ = s tan γ from it (from
+/// the near rim outside) to the cap's rim in each ψ, RADIAL in γ written out, AZIMUTHAL in ψ.
+fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCap, sign: f32, cos_p: f32, scale: f32) -> f32 {
+    let p = sign * a.d;
+    let u = airlight_basis_e1(p);
+    let v = cross(p, u);
+    let au = dot(cap.a, u);
+    let av = dot(cap.a, v);
+    let inside = cos_p > cap.cos_a;
+    // outside: the wedge |ψ − ψ_a| ≤ Ψ that meets the cap, ψ = ψ_a + Ψ sin φ
+    let sin_p = sqrt(au * au + av * av);
+    var axis = vec2<f32>(1.0, 0.0);
+    var half = 0.0;
+    if (sin_p > 0.0) {
+        axis = vec2<f32>(au / sin_p, av / sin_p);
+        half = airlight_acos(min(sqrt(max((cap.cos_a - cos_p) * (cap.cos_a + cos_p), 0.0)) / sin_p, 1.0));
+    }
+    var sum = 0.0;
+    for (var i = 0u; i < 32u; i++) {
+        let az = airlight_azimuths(inside, i);
+        var big_b = sin_p * (az.x * axis.x + az.y * axis.y);
+        var wpsi = az.z;
+        if (!inside) {
+            big_b = sin_p * airlight_cos_sin(half * az.y).x;
+            wpsi = az.z * half * az.x;
+        }
+        let mid = select(1.0, -1.0, big_b < 0.0) * airlight_atan2_upper(abs(big_b), cos_p);
+        let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
+        var start = 0.0;
+        if (!inside) { start = max(mid - spread, 0.0); }
+        let to = mid + spread;
+        let graded = max(scale, start);
+        let top = airlight_atan((to - start) / graded);
+        let c = 0.5 * top;
+        let hw = 0.5 * top;
+        var around = 0.0;
+@RADIAL_LOBE@        sum += wpsi * around;
+    }
+    return sum;
+}
+
+/// S(x) of a sphere (outer.rs `sphere`); 0 inside it.
+fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
+    let v = a.c - x;
+    let dc = airlight_safe_length(v);
+    if (!(dc > a.radius)) { return 0.0; }
+    let sin_a = a.radius / dc;
+    let cap = AirlightCap(v / dc, dc, a.radius, sin_a, sqrt((1.0 - sin_a) * (1.0 + sin_a)));
+    // a lobe narrower than the cap (κ < α) whose direction lies inside it, or outside within
+    // LOBE_REACH scales of its rim (and not beyond the great circle opposite the centre)
+    let alpha = airlight_atan2_upper(sin_a, cap.cos_a);
+    var chosen = 0.0;
+    var sign = 1.0;
+    var cos_p = 0.0;
+    for (var j = 0u; j < 2u; j++) {
+        let lobe = select(a.lobes.xy, a.lobes.zw, j == 1u);
+        let c = dot(cap.a, lobe.x * a.d);
+        if (chosen == 0.0 && lobe.y > 0.0 && lobe.y < alpha + alpha
+            && (c > cap.cos_a || (c > -cap.cos_a && airlight_acos(c) - alpha < AIRLIGHT_LOBE_REACH * lobe.y))) {
+            chosen = lobe.y;
+            sign = lobe.x;
+            cos_p = c;
+        }
+    }
+    if (chosen > 0.0) {
+        return airlight_sphere_about_lobe(s, a, cap, sign, cos_p, chosen);
+    }
+    return airlight_sphere_cap(s, a, cap);
+}
+
+/// S(x): the radiance the emitter's directions send along the ray at x, weighted by the phase
+/// function (outer.rs `Shape::radiance`).
+fn airlight_emitter_radiance(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
+    switch s.light_shape {
+        case AIRLIGHT_SHAPE_DISC: { return airlight_disc(s, a, x); }
+        case AIRLIGHT_SHAPE_RECTANGLE: { return airlight_parallelogram(s, a, x); }
+        default: { return airlight_sphere(s, a, x); }
+    }
+}
+
+/// The ray's integrand at θ (outer.rs `in_scatter_bounded`): h'/cos²θ e^{−σt(t − t0)} S(x(t)).
+fn airlight_area_node(s: AirlightScene, a: AirlightArea, theta: f32) -> f32 {
+    let cs = airlight_cos_sin(theta);
+    let along = a.h_eff * cs.y / cs.x;
+    let t = a.x_h + along;
+    let fade = exp(min(-s.sigma_t * max((a.x_h - s.t_min) + along, 0.0), 0.0));
+    return a.h_eff / (cs.x * cs.x) * fade * airlight_emitter_radiance(s, a, s.origin + t * a.d);
+}
+
+/// In-scattered radiance L_m of an area light (AIRLIGHT_SHAPE_DISC, _RECTANGLE, _SPHERE; without a
+/// surface) by the bounded method of docs/DESIGN.md §12; any other scene gives (0, INVALID). Its
+/// own entry, not reached from airlight_in_scatter: its fixed rules, written out, more than double
+/// the code a driver compiles (a full entry with it took lavapipe 2.5 times as long to compile
+/// from naga's SPIR-V, over 100 times from glslang's), and a driver that masks branches
+/// (lavapipe) would run them for every record of a shader that holds them.
+fn airlight_in_scatter_area(s: AirlightScene) -> AirlightResult {
+    if (!airlight_valid(s) || s.light_shape < AIRLIGHT_SHAPE_DISC || s.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
+    }
+    return airlight_area_light(s);
+}
+
+/// In-scattered radiance of a valid area light (outer.rs `AreaScene::in_scatter_bounded`): the ray by
+/// adaptive Gauss–Kronrod 7/15 in θ to AIRLIGHT_AREA_RAY_TOLERANCE in at most
+/// AIRLIGHT_AREA_RAY_PANELS panels (extended.rs `adaptive`), the emitter by fixed rules.
+fn airlight_area_light(s: AirlightScene) -> AirlightResult {
+    let a = airlight_area(s);
+    if (a.outcome == 1u) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_OK);
+    }
+    let rule = airlight_kronrod15_rule();
+    var list = AirlightPanelList(@ZEROS_SEGMENT_LIST@);
+    var count = 0u;
+    var lo = a.edges[0];
+    var hi = a.edges[1];
+    var slot = 0u;
+    var queued = false;
+    var queued_lo = 0.0;
+    var queued_hi = 0.0;
+    let max_panels = max(AIRLIGHT_AREA_RAY_PANELS, a.panels);
+    let evaluations = 2u * max_panels - 1u;
+    for (var step = 0u; step < evaluations; step++) {
+        let c = 0.5 * (lo + hi);
+        let hw = 0.5 * (hi - lo);
+        var k = 0.0;
+        var gauss = 0.0;
+        for (var j = 0u; j < 15u; j++) {
+            let node = rule[j / 2u];
+            let x = select(c + hw * node.x, c - hw * node.x, (j & 1u) == 0u && j < 14u);
+            let f = airlight_area_node(s, a, x);
+            k += node.y * f;
+            gauss += node.z * f;
+        }
+        airlight_list_set(&list, slot, vec4<f32>(lo, hi, k * hw, abs(k * hw - gauss * hw)));
+        if (slot == count) { count += 1u; }
+        // next: the remaining first panels, a split's second half, or the worst panel's first
+        if (count < a.panels) {
+            lo = a.edges[count];
+            hi = a.edges[count + 1u];
+            slot = count;
+        } else if (queued) {
+            lo = queued_lo;
+            hi = queued_hi;
+            slot = count;
+            queued = false;
+        } else {
+            let next = airlight_split_worst(&list, count, max_panels, AIRLIGHT_AREA_RAY_TOLERANCE);
+            if (!next.split) { break; }
+            lo = next.lo;
+            hi = next.mid;
+            slot = next.slot;
+            queued = true;
+            queued_lo = next.mid;
+            queued_hi = next.hi;
+        }
+    }
+    let total = airlight_list_scan(list, count).total;
+    if (!airlight_is_finite(total)) {
+        return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
+    }
+    return AirlightResult(s.sigma_s * max(total, 0.0), AIRLIGHT_STATUS_OK);
+}
+
 /// In-scattered radiance L_m of a point light without a surface (scene.rs `Scene::in_scatter`):
 /// the ray integral alone, without the emitter and hemisphere loop `airlight_in_scatter` wraps
 /// round every scene. The same value and status as `airlight_in_scatter` on such a scene; any
@@ -2512,9 +3180,14 @@ fn airlight_node_integral(n: AirlightNode) -> AirlightResult {
 
 /// In-scattered radiance L_m of a scene (docs/DESIGN.md §1): the public entry of the library;
 /// for a surface scene (airlight_lambert_surface), the surface radiance from air-light.
-/// Invalid scenes give (0, INVALID); a light on the segment gives (FLT_MAX, INFINITE).
+/// Invalid scenes give (0, INVALID); a light on the segment gives (FLT_MAX, INFINITE). An area
+/// light is airlight_in_scatter_area's, and INVALID here.
 fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
     if (!airlight_valid(s)) {
+        return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
+    }
+    if (s.light_shape >= AIRLIGHT_SHAPE_DISC) {
+        // area lights: airlight_in_scatter_area
         return AirlightResult(0.0, AIRLIGHT_STATUS_INVALID);
     }
     let g = airlight_outer(s);
@@ -2575,32 +3248,14 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
             slot = count;
             queued = false;
         } else {
-            var split = false;
-            for (var tries = 0u; tries < g.max_panels; tries++) {
-                let scan = airlight_list_scan(list, count);
-                let total = scan.total;
-                let worst = scan.worst;
-                if (!(scan.errors > tolerance * abs(total)) || count == g.max_panels || !airlight_is_finite(total)) {
-                    break;
-                }
-                let w = airlight_list_get(list, worst);
-                let wa = w.x;
-                let wb = w.y;
-                let mid = 0.5 * (wa + wb);
-                if (!(mid > wa && mid < wb)) {
-                    airlight_list_set(&list, worst, vec4<f32>(w.xyz, 0.0));
-                    continue;
-                }
-                a = wa;
-                b = mid;
-                slot = worst;
-                queued = true;
-                queued_lo = mid;
-                queued_hi = wb;
-                split = true;
-                break;
-            }
-            if (!split) { break; }
+            let next = airlight_split_worst(&list, count, g.max_panels, tolerance);
+            if (!next.split) { break; }
+            a = next.lo;
+            b = next.mid;
+            slot = next.slot;
+            queued = true;
+            queued_lo = next.mid;
+            queued_hi = next.hi;
         }
     }
     let total = airlight_list_scan(list, count).total;

@@ -258,6 +258,63 @@ fn finite_expectation(v: f32, same: f64, noise: f64, iso: f64, phase: &AnyPhase<
     Expected { value: v, status: STATUS_OK, f64_value: same, noise, scale }
 }
 
+/// An area light's scene in the record types.
+pub type AreaRecord<T> = airlight::AreaScene<T, AnyPhase<T>>;
+
+/// An area light as a point-light record (the emitter's centre or corner as the light, of
+/// intensity its radiance), the inputs [`perturbed`] moves, and its emitter back from such a
+/// record (in `T`).
+fn area_parts(scene: &AreaRecord<f32>) -> SceneRecord<f32> {
+    let l = scene.light();
+    let anchor = match l.emitter {
+        airlight::Emitter::Disc { center, .. } | airlight::Emitter::Sphere { center, .. } => center,
+        airlight::Emitter::Rectangle { corner, .. } => corner,
+    };
+    SceneRecord { ray: *scene.ray(), light: PointLight { position: anchor, intensity: l.radiance, distribution: AnyDistribution::Omni }, medium: *scene.medium(), phase: *scene.phase() }
+}
+
+/// The area light of `scene` with the ray, medium, phase function and anchor of `rec`, in `T`.
+fn area_from<T: airlight::Real>(scene: &AreaRecord<f32>, rec: &SceneRecord<T>) -> Option<AreaRecord<T>> {
+    use airlight::Emitter;
+    let v = |x: airlight::glam::Vec3| T::vec3_from_array([T::lit(x.x as f64), T::lit(x.y as f64), T::lit(x.z as f64)]);
+    let r = |x: f32| T::lit(x as f64);
+    let l = scene.light();
+    let emitter = match l.emitter {
+        Emitter::Disc { normal, radius, .. } => Emitter::Disc { center: rec.light.position, normal: v(normal), radius: r(radius) },
+        Emitter::Rectangle { edge_u, edge_v, .. } => Emitter::Rectangle { corner: rec.light.position, edge_u: v(edge_u), edge_v: v(edge_v) },
+        Emitter::Sphere { radius, .. } => Emitter::Sphere { center: rec.light.position, radius: r(radius) },
+    };
+    let light = airlight::AreaLight { emitter, radiance: rec.light.intensity, emission: l.emission };
+    airlight::AreaScene::new(rec.ray, light, rec.medium, rec.phase).ok()
+}
+
+/// The CPU's expectation for an area light from the shader, by the same criterion as
+/// [`expect`]: the value of the same method, `AreaScene::in_scatter_bounded`, in f32; the noise
+/// over the record and its one-ulp perturbations (of the ray, the emitter's centre or corner, `σt`
+/// and the phase function) plus the method's error in f64 against the default `in_scatter`
+/// (error-controlled to 1e-10); the scale is the value in isotropic fog with Lambertian emission
+/// times `4π·max P`, at least the value.
+pub fn expect_area(scene: &AreaRecord<f32>) -> Expected {
+    let v = scene.in_scatter_bounded();
+    let rec = area_parts(scene);
+    let Some(wide) = area_from(scene, &rec.cast::<f64>()) else {
+        return Expected { value: 0.0, status: STATUS_INVALID, f64_value: 0.0, noise: 0.0, scale: 0.0 };
+    };
+    let same = wide.in_scatter_bounded();
+    let e_n = (same - wide.in_scatter()).abs();
+    let mut worst = (v as f64 - same).abs();
+    for k in 0..PERTURBATIONS {
+        if let Some(x) = area_from(scene, &perturbed(&rec, k)).map(|q| q.in_scatter_bounded()) {
+            if x.is_finite() {
+                worst = worst.max((x as f64 - same).abs());
+            }
+        }
+    }
+    let plain = airlight::AreaLight { emission: airlight::Emission::Lambertian, ..*wide.light() };
+    let iso = airlight::AreaScene::new(*wide.ray(), plain, *wide.medium(), AnyPhase::Isotropic).map(|s| s.in_scatter_bounded()).unwrap_or(0.0);
+    finite_expectation(v, same, worst + e_n, iso, wide.phase())
+}
+
 /// A surface point's scene in the record types.
 pub type SurfaceRecord<T> = SurfaceScene<T, AnyDistribution<T>, AnyPhase<T>>;
 

@@ -6,7 +6,7 @@
 
 use airlight::light::AnyDistribution;
 use airlight::phase::AnyPhase;
-use airlight::{Brdf, Medium, PointLight, Ray, SegmentScene, SurfaceScene};
+use airlight::{AreaScene, Brdf, Emission, Emitter, Medium, PointLight, Ray, SegmentScene, SurfaceScene};
 
 /// Bytes per input record.
 pub const RECORD_SIZE: usize = 144;
@@ -37,6 +37,16 @@ pub const SHAPE_POINT: u32 = 0;
 /// `light_shape` of a segment light `light_position → light_end`, `intensity` per unit length
 /// ([`airlight::SegmentLight`]).
 pub const SHAPE_SEGMENT: u32 = 1;
+/// `light_shape` of a disc of radiance `intensity`: centre `light_position`, normal
+/// `light_axis`, radius `light_param_a`, emission power `light_param_b` ([`airlight::Emitter::Disc`]).
+pub const SHAPE_DISC: u32 = 2;
+/// `light_shape` of a parallelogram of radiance `intensity`: corner `light_position`, edges
+/// `light_axis` (u) and `light_end` (v), emission power `light_param_b`
+/// ([`airlight::Emitter::Rectangle`]).
+pub const SHAPE_RECTANGLE: u32 = 3;
+/// `light_shape` of a sphere of radiance `intensity`: centre `light_position`, radius
+/// `light_param_a`, emission power `light_param_b` ([`airlight::Emitter::Sphere`]).
+pub const SHAPE_SPHERE: u32 = 4;
 /// `surface_kind` of a ray record: the in-scattered radiance along the ray.
 pub const SURFACE_NONE: u32 = 0;
 /// `surface_kind` of a Lambertian surface point (`origin`, normal `dir`, albedo
@@ -141,6 +151,26 @@ impl Record {
         Self::with_shape(scene.ray(), &light, scene.medium(), scene.phase(), SHAPE_SEGMENT, l.b.to_array())
     }
 
+    /// The record of an area light (the fields of [`SHAPE_DISC`], [`SHAPE_RECTANGLE`],
+    /// [`SHAPE_SPHERE`]).
+    pub fn area(scene: &AreaScene<f32, AnyPhase<f32>>) -> Self {
+        let l = scene.light();
+        let (shape, anchor, axis, end, radius) = match l.emitter {
+            Emitter::Disc { center, normal, radius } => (SHAPE_DISC, center, normal.to_array(), [0.0; 3], radius),
+            Emitter::Rectangle { corner, edge_u, edge_v } => (SHAPE_RECTANGLE, corner, edge_u.to_array(), edge_v.to_array(), 0.0),
+            Emitter::Sphere { center, radius } => (SHAPE_SPHERE, center, [0.0, 0.0, 1.0], [0.0; 3], radius),
+        };
+        let light = PointLight { position: anchor, intensity: l.radiance, distribution: AnyDistribution::Omni };
+        let mut record = Self::with_shape(scene.ray(), &light, scene.medium(), scene.phase(), shape, end);
+        record.light_axis = axis;
+        record.light_param_a = radius;
+        record.light_param_b = match l.emission {
+            Emission::Lambertian => 1.0,
+            Emission::CosineLobe { power } => power as f32,
+        };
+        record
+    }
+
     /// The record of a Lambertian or Phong surface point lit by a light without an axis (the
     /// shaders' surfaces); `None` for a light with an axis.
     pub fn surface(scene: &SurfaceScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> Option<Self> {
@@ -201,6 +231,11 @@ impl Record {
         }
     }
 
+    /// The record in `bytes` (its first [`RECORD_SIZE`], any alignment).
+    pub fn from_bytes(bytes: &[u8]) -> Self {
+        bytemuck::pod_read_unaligned(&bytes[..RECORD_SIZE])
+    }
+
     /// Its bytes, as the compute entry point reads them.
     pub fn bytes(&self) -> [u8; RECORD_SIZE] {
         bytemuck::cast(*self)
@@ -232,6 +267,11 @@ pub fn pack(ray: &Ray<f32>, light: &PointLight<f32, AnyDistribution<f32>>, mediu
 /// Packs one segment light's scene into its record.
 pub fn pack_segment(scene: &SegmentScene<f32, AnyDistribution<f32>, AnyPhase<f32>>) -> [u8; RECORD_SIZE] {
     bytemuck::cast(Record::segment(scene))
+}
+
+/// Packs an area light's scene into its record.
+pub fn pack_area(scene: &AreaScene<f32, AnyPhase<f32>>) -> [u8; RECORD_SIZE] {
+    bytemuck::cast(Record::area(scene))
 }
 
 /// Packs a Lambertian surface point lit by a light without an axis into its record (`None`

@@ -26,9 +26,9 @@ const COMPUTE: &str = include_str!("../shader/compute.wgsl");
 const LIBRARY_ENTRY: &str = "airlight_library_entry";
 const COMPUTE_ENTRY: &str = "airlight_main";
 
-/// A dummy entry point that keeps every library function reachable for the back ends (the three
-/// public entries: `airlight_in_scatter`, the point light's `airlight_in_scatter_point` and the
-/// first pass's `airlight_in_scatter_route`).
+/// A dummy entry point that keeps every library function reachable for the back ends (the four
+/// public entries: `airlight_in_scatter`, the point light's `airlight_in_scatter_point`, the
+/// first pass's `airlight_in_scatter_route` and the area light's `airlight_in_scatter_area`).
 const LIBRARY_STUB: &str = "
 @compute @workgroup_size(1)
 fn airlight_library_entry() {
@@ -37,6 +37,7 @@ fn airlight_library_entry() {
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
     let p = airlight_in_scatter_route(s);
+    let a = airlight_in_scatter_area(s);
 }
 ";
 
@@ -49,7 +50,8 @@ fn airlight_library_entry() -> @location(0) vec4<f32> {
     let r = airlight_in_scatter(s);
     let q = airlight_in_scatter_point(s);
     let p = airlight_in_scatter_route(s);
-    return vec4<f32>(r.in_scatter, q.in_scatter, p.in_scatter, 0.0);
+    let a = airlight_in_scatter_area(s);
+    return vec4<f32>(r.in_scatter, q.in_scatter, p.in_scatter, a.in_scatter);
 }
 ";
 
@@ -227,6 +229,15 @@ impl Constants {
         let lobe_rule = list(airlight::surface::LOBE_RULE.iter().map(|&(x, w)| format!("vec2<f32>({}, {})", f(0.5 - 0.5 * x), f(0.5 * w))).collect());
         // the weight at or below which the isotropic moment leaves its far end out (f32's ε/4)
         let far_end = airlight::integrals::FAR_END_NEGLIGIBLE * f32::EPSILON as f64;
+        // area lights (area/outer.rs): the azimuths of AZIMUTHAL as (cos ψ, sin ψ, weight) over the
+        // circle [0, 2π] and the half [−π/2, π/2], in its order; TRIANGLE_AZIMUTHAL as (x, w) on [−1, 1]
+        let azimuths = |c: f64, hw: f64| {
+            let nodes = airlight::area::outer::AZIMUTHAL.iter().flat_map(|&(x, w)| [(c - x * hw, w * hw), (c + x * hw, w * hw)]);
+            list(nodes.map(|(psi, w)| format!("vec3<f32>({}, {}, {})", f(psi.cos()), f(psi.sin()), f(w))).collect())
+        };
+        let triangle = list(airlight::area::outer::TRIANGLE_AZIMUTHAL.iter().flat_map(|&(x, w)| [(-x, w), (x, w)]).map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect());
+        let radial = &airlight::area::outer::RADIAL;
+        let emission_bits = u32::BITS - (airlight::Emission::MAX_POWER - 1).leading_zeros();
         let fills = vec![
             ("@TERMS@", terms.to_string()),
             ("@HALF_TERMS@", (terms / 2).to_string()),
@@ -284,6 +295,28 @@ impl Constants {
             ("@LIGHT_SPOT@", l::LIGHT_SPOT.to_string()),
             ("@SHAPE_POINT@", l::SHAPE_POINT.to_string()),
             ("@SHAPE_SEGMENT@", l::SHAPE_SEGMENT.to_string()),
+            ("@SHAPE_DISC@", l::SHAPE_DISC.to_string()),
+            ("@SHAPE_RECTANGLE@", l::SHAPE_RECTANGLE.to_string()),
+            ("@SHAPE_SPHERE@", l::SHAPE_SPHERE.to_string()),
+            ("@AREA_RAY_PANELS@", airlight::area::outer::BOUNDED_RAY_PANELS.to_string()),
+            ("@AREA_RAY_TOLERANCE@", f(airlight::area::outer::BOUNDED_RAY_TOLERANCE)),
+            ("@LOBE_REACH@", f(airlight::area::outer::LOBE_REACH)),
+            ("@EMISSION_MAX_POWER@", airlight::Emission::MAX_POWER.to_string()),
+            ("@EMISSION_POWER_STEPS@", unrolled::power_steps(emission_bits)),
+            (
+                "@KRONROD15_RULE@",
+                list(airlight::extended::GAUSS_KRONROD_15.iter().map(|&(x, k, g)| format!("vec3<f32>({}, {}, {})", f(x), f(k), f(g))).collect()),
+            ),
+            ("@AZIMUTHS_CIRCLE@", azimuths(std::f64::consts::PI, std::f64::consts::PI)),
+            ("@AZIMUTHS_HALF@", azimuths(0.0, std::f64::consts::FRAC_PI_2)),
+            ("@TRIANGLE_RULE@", triangle),
+            ("@RADIAL_NODES@", (2 * radial.len()).to_string()),
+            ("@ZEROS_RADIAL_ROWS@", list(vec!["vec3<f32>(0.0)".to_string(); 2 * radial.len()])),
+            ("@RADIAL_FLAT@", unrolled::gauss_lines(radial, "    sum += @W@ * hw * airlight_flat_node(s, a, above, e, @NODE@);\n")),
+            ("@RADIAL_CAP_ROWS@", unrolled::gauss_lines(radial, "    rows[@K@] = airlight_cap_row(s, cap, graded, @NODE@, @W@ * hw);\n")),
+            ("@RADIAL_CAP_CONSTANT@", unrolled::gauss_lines(radial, "        sum += rows[@K@].x * around;\n")),
+            ("@RADIAL_CAP_AROUND@", unrolled::gauss_lines(radial, "        at += rows[@K@].x * airlight_area_phase(s, rows[@K@].y * ad + rows[@K@].z * across);\n")),
+            ("@RADIAL_LOBE@", unrolled::gauss_lines(radial, "        around += @W@ * hw * airlight_sphere_lobe_node(s, cap, sign, cos_p, big_b, start, graded, @NODE@);\n")),
             ("@SURFACE_NONE@", l::SURFACE_NONE.to_string()),
             ("@SURFACE_LAMBERT@", l::SURFACE_LAMBERT.to_string()),
             ("@SEGMENT_PANELS@", airlight::SHADER_SEGMENT_PANELS.to_string()),
@@ -389,6 +422,25 @@ pub fn route_compute_wgsl(terms: usize) -> String {
 /// file.
 pub fn route_compute_entry() -> String {
     compute_entry_calling("airlight_in_scatter_route")
+}
+
+/// A compute shader for area-light records: the committed include library ([`library_wgsl`])
+/// with [`area_compute_entry`]. What `airlight eval --backend gpu` runs for area lights.
+pub fn area_compute_wgsl(terms: usize) -> String {
+    format!("{}\n{}", library_wgsl(terms), area_compute_entry())
+}
+
+/// The compute entry point as [`point_compute_entry`], calling the area-light entry
+/// `airlight_in_scatter_area` (docs/DESIGN.md §12). Not emitted as a file.
+pub fn area_compute_entry() -> String {
+    compute_entry_calling("airlight_in_scatter_area")
+}
+
+/// The SPIR-V (naga's back end, as the committed `shaders-out/spirv/` is written) of a WGSL
+/// compute shader `src`, compacted to what its entry point reaches.
+pub fn spirv_of_compute(src: &str) -> Result<Vec<u32>, EmitError> {
+    let (module, info) = compute_module(src)?;
+    spirv_of(&module, &info)
 }
 
 /// `compute.wgsl` with its one call of `airlight_in_scatter` replaced by `entry`.

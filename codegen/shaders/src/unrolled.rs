@@ -205,3 +205,25 @@ pub fn list_scan(panels: usize) -> String {
     }
     s
 }
+
+/// A Gauss–Legendre rule written out: `template` once per node, in the kernel's order
+/// (`area/outer.rs` `each_node`: for each pair of its positive half `(x, w)`, `−x` then `+x`),
+/// with `@K@` the node's index, `@NODE@` its point `c ∓ x * hw` on the panel `[c − hw, c + hw]`
+/// and `@W@` its weight on `[−1, 1]`.
+pub fn gauss_lines(half: &[(f64, f64)], template: &str) -> String {
+    let mut s = String::new();
+    for (i, &(x, w)) in half.iter().enumerate() {
+        for (j, sign) in ['-', '+'].into_iter().enumerate() {
+            let node = format!("c {sign} {} * hw", lit(x));
+            s.push_str(&template.replace("@K@", &(2 * i + j).to_string()).replace("@NODE@", &node).replace("@W@", &lit(w)));
+        }
+    }
+    s
+}
+
+/// The steps of `c^e` by repeated squaring for exponents below `2^bits`, in the order of Rust's
+/// `powi` (compiler-rt `__powisf2`: multiply where the exponent's low bit is set, halve it,
+/// square), on the WGSL variables `e`, `base` and `acc`.
+pub fn power_steps(bits: u32) -> String {
+    (0..bits).map(|_| "    if ((e & 1u) != 0u) { acc *= base; }\n    e = e >> 1u;\n    base *= base;\n").collect()
+}

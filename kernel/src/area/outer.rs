@@ -30,7 +30,9 @@
 //!   the centre, a Henyey–Greenstein `g = 0.99` lobe on the sphere left 6e-3 to 6e-2.
 //!
 //! The rules' sizes are the design study's (`scripts/area_ray_outer.py`); the errors over
-//! tests/reference/area.jsonl are in docs/DESIGN.md §12.
+//! tests/reference/area.jsonl are in docs/DESIGN.md §12. The shaders' `airlight_in_scatter_area`
+//! (codegen/shaders/shader/airlight.wgsl) mirrors this module function by function, its rules
+//! and constants taken from here at emission.
 
 use super::{axpy, AreaScene, Emitter};
 use crate::expansion::gauss_table::{GL12, GL16, GL32};
