@@ -81,6 +81,10 @@ struct AirlightListScan {
     float errors;
     uint worst;
 };
+struct AirlightEdges {
+    float at[5];
+    uint panels;
+};
 struct AirlightSplit {
     bool split;
     float lo;
@@ -186,9 +190,9 @@ const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
 
-layout(std430, binding = 0) readonly buffer type_21_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_22_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_22_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_23_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
 
 
 float[12] airlight_zero_terms() {
@@ -3005,8 +3009,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span) {
     float inv_h = (1.0 / big_h_1);
     float w_3 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_3 * w_3)) / (1.0 + (v_s * v_s)));
-    float e_1 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_1 * inv_h);
+    float e_2 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_2 * inv_h);
 }
 
 float airlight_weighted(float sigma_s, float intensity, float h_2, float x_10, float j_1) {
@@ -4619,9 +4623,9 @@ vec2 airlight_two_sum(float a_13, float b_10, uint key_1) {
     float _e4 = airlight_opaque((a_13 + b_10), key_1);
     float _e6 = airlight_opaque((_e4 - a_13), key_1);
     float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_2 = ((a_13 - _e8) + (b_10 - _e6));
-    bool _e12 = airlight_is_finite(e_2);
-    return vec2(_e4, (_e12 ? e_2 : 0.0));
+    float e_3 = ((a_13 - _e8) + (b_10 - _e6));
+    bool _e12 = airlight_is_finite(e_3);
+    return vec2(_e4, (_e12 ? e_3 : 0.0));
 }
 
 float airlight_split_high(float x_14) {
@@ -4634,9 +4638,9 @@ vec2 airlight_two_product(float a_14, float b_11, uint key_2) {
     float al = (a_14 - _e5);
     float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    bool _e17 = airlight_is_finite(e_3);
-    return vec2(_e4, (_e17 ? e_3 : 0.0));
+    float e_4 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    bool _e17 = airlight_is_finite(e_4);
+    return vec2(_e4, (_e17 ? e_4 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3) {
@@ -4675,10 +4679,10 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain) 
     vec2 _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     vec2 _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    vec3 hi_4 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_5 = vec3(_e11.y, _e17.y, _e23.y);
+    vec3 hi_5 = vec3(_e11.x, _e17.x, _e23.x);
+    vec3 lo_6 = vec3(_e11.y, _e17.y, _e23.y);
     vec3 dir = s_18.dir;
-    bool _e33 = airlight_in_exact_range(hi_4);
+    bool _e33 = airlight_in_exact_range(hi_5);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
         local_125 = !(_e38);
@@ -4689,10 +4693,10 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain) 
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_4.y, dir.z, hi_4.z, dir.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_4.z, dir.x, hi_4.x, dir.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_4.x, dir.y, hi_4.y, dir.x, key_4);
-    vec3 w_5 = vec3((_e46 + ((lo_5.y * dir.z) - (lo_5.z * dir.y))), (_e59 + ((lo_5.z * dir.x) - (lo_5.x * dir.z))), (_e72 + ((lo_5.x * dir.y) - (lo_5.y * dir.x))));
+    float _e46 = airlight_diff_of_products(hi_5.y, dir.z, hi_5.z, dir.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_5.z, dir.x, hi_5.x, dir.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_5.x, dir.y, hi_5.y, dir.x, key_4);
+    vec3 w_5 = vec3((_e46 + ((lo_6.y * dir.z) - (lo_6.z * dir.y))), (_e59 + ((lo_6.z * dir.x) - (lo_6.x * dir.z))), (_e72 + ((lo_6.x * dir.y) - (lo_6.y * dir.x))));
     bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         return plain;
@@ -5043,18 +5047,93 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e329;
 }
 
-AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
-    uint tries = 0u;
+AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) {
+    float cuts_1[3] = float[3](0.0, 0.0, 0.0);
+    AirlightEdges e_1 = AirlightEdges(float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u);
+    uint n_1 = 0u;
+    uint i_18 = 0u;
     bool local_127 = false;
-    bool local_128 = false;
-    bool local_129 = false;
+    cuts_1 = unsorted;
+    float _e5 = cuts_1[1];
+    float _e7 = cuts_1[0];
+    if ((_e5 < _e7)) {
+        float c_10 = cuts_1[0];
+        float _e13 = cuts_1[1];
+        cuts_1[0] = _e13;
+        cuts_1[1] = c_10;
+    }
+    float _e16 = cuts_1[2];
+    float _e18 = cuts_1[1];
+    if ((_e16 < _e18)) {
+        float c_11 = cuts_1[1];
+        float _e24 = cuts_1[2];
+        cuts_1[1] = _e24;
+        cuts_1[2] = c_11;
+    }
+    float _e27 = cuts_1[1];
+    float _e29 = cuts_1[0];
+    if ((_e27 < _e29)) {
+        float c_12 = cuts_1[0];
+        float _e35 = cuts_1[1];
+        cuts_1[0] = _e35;
+        cuts_1[1] = c_12;
+    }
+    e_1 = AirlightEdges(float[5](lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
+            uint _e74 = i_18;
+            i_18 = (_e74 + 1u);
+        }
+        loop_init_22 = false;
+        uint _e45 = i_18;
+        if ((_e45 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e48 = i_18;
+            float _e50 = cuts_1[_e48];
+            uint _e52 = n_1;
+            float _e54 = e_1.at[_e52];
+            if ((_e50 > _e54)) {
+                uint _e58 = i_18;
+                float _e60 = cuts_1[_e58];
+                local_127 = (_e60 < hi_3);
+            } else {
+                local_127 = false;
+            }
+            bool _e63 = local_127;
+            if (_e63) {
+                uint _e64 = n_1;
+                n_1 = (_e64 + 1u);
+                uint _e68 = n_1;
+                uint _e70 = i_18;
+                float _e72 = cuts_1[_e70];
+                e_1.at[_e68] = _e72;
+            }
+        }
+    }
+    uint _e77 = n_1;
+    e_1.at[(_e77 + 1u)] = hi_3;
+    uint _e82 = n_1;
+    e_1.panels = (_e82 + 1u);
+    AirlightEdges _e85 = e_1;
+    return _e85;
+}
+
+AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
+    uint tries = 0u;
+    bool local_128 = false;
+    bool local_129 = false;
+    bool local_130 = false;
+    bool loop_init_23 = true;
+    while(true) {
+        if (!loop_init_23) {
             uint _e57 = tries;
             tries = (_e57 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e6 = tries;
         if ((_e6 < max_panels)) {
         } else {
@@ -5064,18 +5143,18 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             AirlightPanelList _e8 = list_1;
             AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
-                local_127 = (count_2 == max_panels);
-            } else {
-                local_127 = true;
-            }
-            bool _e21 = local_127;
-            if (!(_e21)) {
-                bool _e26 = airlight_is_finite(_e9.total);
-                local_128 = !(_e26);
+                local_128 = (count_2 == max_panels);
             } else {
                 local_128 = true;
             }
-            bool _e29 = local_128;
+            bool _e21 = local_128;
+            if (!(_e21)) {
+                bool _e26 = airlight_is_finite(_e9.total);
+                local_129 = !(_e26);
+            } else {
+                local_129 = true;
+            }
+            bool _e29 = local_129;
             if (_e29) {
                 break;
             }
@@ -5083,11 +5162,11 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             vec4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_1 = (0.5 * (_e32.x + _e32.y));
             if ((mid_1 > _e32.x)) {
-                local_129 = (mid_1 < _e32.y);
+                local_130 = (mid_1 < _e32.y);
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            bool _e45 = local_129;
+            bool _e45 = local_130;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, vec4(_e32.xyz, 0.0));
                 continue;
@@ -5155,32 +5234,32 @@ AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels_1) {
 
 AirlightOuter airlight_surface(AirlightScene s_22) {
     AirlightOuter g_20 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
-    bool local_130 = false;
-    vec3 u_1 = vec3(0.0);
-    float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
-    uint i_18 = 1u;
-    uint j_4 = 0u;
     bool local_131 = false;
-    uint k_4 = 0u;
-    uint i_19 = 0u;
+    vec3 u_1 = vec3(0.0);
+    float cuts_2[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
+    uint i_19 = 1u;
+    uint j_4 = 0u;
     bool local_132 = false;
+    uint k_4 = 0u;
     uint i_20 = 0u;
-    uint i_21 = 1u;
     bool local_133 = false;
+    uint i_21 = 0u;
+    uint i_22 = 1u;
     bool local_134 = false;
     bool local_135 = false;
     bool local_136 = false;
     bool local_137 = false;
+    bool local_138 = false;
     AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     vec3 to_light_1 = (s_22.light_position - s_22.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_22.intensity == 0.0))) {
-        local_130 = (s_22.sigma_s == 0.0);
+        local_131 = (s_22.sigma_s == 0.0);
     } else {
-        local_130 = true;
+        local_131 = true;
     }
-    bool _e18 = local_130;
+    bool _e18 = local_131;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -5219,8 +5298,8 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
     g_20.sin_a = _e41;
     float _e92 = airlight_angle(cos_a_1, _e41);
     float first = abs((1.5707964 - _e92));
-    cuts_1[0] = first;
-    cuts_1[1] = (AIRLIGHT_PI - first);
+    cuts_2[0] = first;
+    cuts_2[1] = (AIRLIGHT_PI - first);
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
         vec3 _e105 = airlight_normalize(s_22.brdf_view);
@@ -5245,63 +5324,63 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
         }
         float _e154 = g_20.alpha_r;
         float first_r = abs((1.5707964 - _e154));
-        cuts_1[2] = first_r;
-        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        cuts_2[2] = first_r;
+        cuts_2[3] = (AIRLIGHT_PI - first_r);
         float _e163 = g_20.alpha_r;
-        cuts_1[4] = _e163;
+        cuts_2[4] = _e163;
         if ((s_22.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
             float _e173 = g_20.alpha_r;
-            cuts_1[5] = (_e173 - (1.5 * width_3));
+            cuts_2[5] = (_e173 - (1.5 * width_3));
             float _e179 = g_20.alpha_r;
-            cuts_1[6] = (_e179 + (1.5 * width_3));
+            cuts_2[6] = (_e179 + (1.5 * width_3));
             float _e185 = g_20.alpha_r;
-            cuts_1[7] = (_e185 - (4.0 * width_3));
+            cuts_2[7] = (_e185 - (4.0 * width_3));
             float _e191 = g_20.alpha_r;
-            cuts_1[8] = (_e191 + (4.0 * width_3));
+            cuts_2[8] = (_e191 + (4.0 * width_3));
         }
         vec3 meet = cross(_e37, _e111);
         float _e196 = airlight_safe_length(meet);
         if ((_e196 > AIRLIGHT_FLT_EPS)) {
             float _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1.0, 1.0));
-            cuts_1[9] = _e204;
-            cuts_1[10] = (AIRLIGHT_PI - _e204);
+            cuts_2[9] = _e204;
+            cuts_2[10] = (AIRLIGHT_PI - _e204);
         }
     }
-    float _e210 = cuts_1[0];
-    float _e212 = cuts_1[1];
-    float _e214 = cuts_1[2];
-    float _e216 = cuts_1[3];
-    float _e218 = cuts_1[9];
-    float _e220 = cuts_1[10];
+    float _e210 = cuts_2[0];
+    float _e212 = cuts_2[1];
+    float _e214 = cuts_2[2];
+    float _e216 = cuts_2[3];
+    float _e218 = cuts_2[9];
+    float _e220 = cuts_2[10];
     float kinks[6] = float[6](_e210, _e212, _e214, _e216, _e218, _e220);
-    bool loop_init_23 = true;
+    bool loop_init_24 = true;
     while(true) {
-        if (!loop_init_23) {
-            uint _e258 = i_18;
-            i_18 = (_e258 + 1u);
+        if (!loop_init_24) {
+            uint _e258 = i_19;
+            i_19 = (_e258 + 1u);
         }
-        loop_init_23 = false;
-        uint _e224 = i_18;
+        loop_init_24 = false;
+        uint _e224 = i_19;
         if ((_e224 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e227 = i_18;
-            float c_10 = cuts_1[_e227];
-            uint _e230 = i_18;
+            uint _e227 = i_19;
+            float c_13 = cuts_2[_e227];
+            uint _e230 = i_19;
             j_4 = _e230;
             while(true) {
                 uint _e232 = j_4;
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
-                    float _e241 = cuts_1[(_e237 - 1u)];
-                    local_131 = (_e241 > c_10);
+                    float _e241 = cuts_2[(_e237 - 1u)];
+                    local_132 = (_e241 > c_13);
                 } else {
-                    local_131 = false;
+                    local_132 = false;
                 }
-                bool _e244 = local_131;
+                bool _e244 = local_132;
                 if (_e244) {
                 } else {
                     break;
@@ -5309,125 +5388,125 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
                 {
                     uint _e245 = j_4;
                     uint _e247 = j_4;
-                    float _e251 = cuts_1[(_e247 - 1u)];
-                    cuts_1[_e245] = _e251;
+                    float _e251 = cuts_2[(_e247 - 1u)];
+                    cuts_2[_e245] = _e251;
                     uint _e252 = j_4;
                     j_4 = (_e252 - 1u);
                 }
             }
             uint _e255 = j_4;
-            cuts_1[_e255] = c_10;
+            cuts_2[_e255] = c_13;
         }
     }
-    float hi_5 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
+    float hi_6 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
     g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
-            uint _e305 = i_19;
-            i_19 = (_e305 + 1u);
+        if (!loop_init_25) {
+            uint _e305 = i_20;
+            i_20 = (_e305 + 1u);
         }
-        loop_init_24 = false;
-        uint _e276 = i_19;
+        loop_init_25 = false;
+        uint _e276 = i_20;
         if ((_e276 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_19;
-            float _e281 = cuts_1[_e279];
+            uint _e279 = i_20;
+            float _e281 = cuts_2[_e279];
             uint _e283 = k_4;
             float _e285 = g_20.gamma[_e283];
             if ((_e281 > _e285)) {
-                uint _e289 = i_19;
-                float _e291 = cuts_1[_e289];
-                local_132 = (_e291 < hi_5);
+                uint _e289 = i_20;
+                float _e291 = cuts_2[_e289];
+                local_133 = (_e291 < hi_6);
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            bool _e294 = local_132;
+            bool _e294 = local_133;
             if (_e294) {
                 uint _e295 = k_4;
                 k_4 = (_e295 + 1u);
                 uint _e299 = k_4;
-                uint _e301 = i_19;
-                float _e303 = cuts_1[_e301];
+                uint _e301 = i_20;
+                float _e303 = cuts_2[_e301];
                 g_20.gamma[_e299] = _e303;
             }
         }
     }
     uint _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_5;
+    g_20.gamma[(_e308 + 1u)] = hi_6;
     uint _e313 = k_4;
     g_20.panels = (_e313 + 1u);
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
-            uint _e328 = i_20;
-            i_20 = (_e328 + 1u);
+        if (!loop_init_26) {
+            uint _e328 = i_21;
+            i_21 = (_e328 + 1u);
         }
-        loop_init_25 = false;
-        uint _e318 = i_20;
+        loop_init_26 = false;
+        uint _e318 = i_21;
         uint _e320 = g_20.panels;
         if ((_e318 <= _e320)) {
         } else {
             break;
         }
         {
-            uint _e323 = i_20;
-            uint _e325 = i_20;
+            uint _e323 = i_21;
+            uint _e325 = i_21;
             g_20.edges[_e323] = float(_e325);
         }
     }
     if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-        bool loop_init_26 = true;
+        bool loop_init_27 = true;
         while(true) {
-            if (!loop_init_26) {
-                uint _e388 = i_21;
-                i_21 = (_e388 + 1u);
+            if (!loop_init_27) {
+                uint _e388 = i_22;
+                i_22 = (_e388 + 1u);
             }
-            loop_init_26 = false;
-            uint _e335 = i_21;
+            loop_init_27 = false;
+            uint _e335 = i_22;
             uint _e336 = k_4;
             if ((_e335 <= _e336)) {
             } else {
                 break;
             }
             {
-                uint _e339 = i_21;
-                float e_4 = g_20.gamma[_e339];
-                if (!((e_4 == kinks[0]))) {
-                    local_133 = (e_4 == kinks[1]);
-                } else {
-                    local_133 = true;
-                }
-                bool _e350 = local_133;
-                if (!(_e350)) {
-                    local_134 = (e_4 == kinks[2]);
+                uint _e339 = i_22;
+                float e_5 = g_20.gamma[_e339];
+                if (!((e_5 == kinks[0]))) {
+                    local_134 = (e_5 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
-                bool _e357 = local_134;
-                if (!(_e357)) {
-                    local_135 = (e_4 == kinks[3]);
+                bool _e350 = local_134;
+                if (!(_e350)) {
+                    local_135 = (e_5 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
-                bool _e364 = local_135;
-                if (!(_e364)) {
-                    local_136 = (e_4 == kinks[4]);
+                bool _e357 = local_135;
+                if (!(_e357)) {
+                    local_136 = (e_5 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
-                bool _e371 = local_136;
-                if (!(_e371)) {
-                    local_137 = (e_4 == kinks[5]);
+                bool _e364 = local_136;
+                if (!(_e364)) {
+                    local_137 = (e_5 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
-                bool kink = local_137;
+                bool _e371 = local_137;
+                if (!(_e371)) {
+                    local_138 = (e_5 == kinks[5]);
+                } else {
+                    local_138 = true;
+                }
+                bool kink = local_138;
                 uint _e380 = g_20.smooth_edges;
-                uint _e382 = i_21;
+                uint _e382 = i_22;
                 g_20.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
             }
         }
@@ -5437,7 +5516,7 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18) {
-    bool local_138 = false;
+    bool local_139 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -5447,11 +5526,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     float clip = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_138 = (clip > 0.0);
+        local_139 = (clip > 0.0);
     } else {
-        local_138 = false;
+        local_139 = false;
     }
-    bool _e43 = local_138;
+    bool _e43 = local_139;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5459,18 +5538,18 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     return 0.0;
 }
 
-float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w, float u_2, bool smoothstep_) {
+float airlight_lobe_node(AirlightLobe q_2, float lo_4, float w, float u_2, bool smoothstep_) {
     if (smoothstep_) {
-        float _e18 = airlight_lobe_at(q_2, (lo_3 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        float _e18 = airlight_lobe_at(q_2, (lo_4 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2))));
         return ((((w * 6.0) * u_2) * (1.0 - u_2)) * _e18);
     }
-    float _e22 = airlight_lobe_at(q_2, (lo_3 + (w * u_2)));
+    float _e22 = airlight_lobe_at(q_2, (lo_4 + (w * u_2)));
     return (w * _e22);
 }
 
 float airlight_arc_end(float x_19, float cut) {
     float end = 0.0;
-    bool local_139 = false;
+    bool local_140 = false;
     end = x_19;
     float _e3 = end;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -5486,11 +5565,11 @@ float airlight_arc_end(float x_19, float cut) {
     float _e16 = end;
     if ((_e16 > -(cut))) {
         float _e21 = end;
-        local_139 = (_e21 < cut);
+        local_140 = (_e21 < cut);
     } else {
-        local_139 = false;
+        local_140 = false;
     }
-    bool _e24 = local_139;
+    bool _e24 = local_140;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5498,29 +5577,29 @@ vec2[5] airlight_lobe_rule() {
     return vec2[5](vec2(0.42556283, 0.14776212), vec2(0.2833023, 0.13463336), vec2(0.16029522, 0.10954318), vec2(0.067468315, 0.07472567), vec2(0.013046736, 0.03333567));
 }
 
-float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
-    bool local_140 = false;
+float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smoothstep_1) {
+    bool local_141 = false;
     float sum_5 = 0.0;
     uint k_5 = 0u;
-    float w_6 = (hi_3 - lo_4);
+    float w_6 = (hi_4 - lo_5);
     if (!(!((w_6 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_6)));
-        local_140 = !((_e14 > 0.0));
+        float _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5 * w_6)));
+        local_141 = !((_e14 > 0.0));
     } else {
-        local_140 = true;
+        local_141 = true;
     }
-    bool _e19 = local_140;
+    bool _e19 = local_141;
     if (_e19) {
         return 0.0;
     }
     vec2 _e21[5] = airlight_lobe_rule();
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e43 = k_5;
             k_5 = (_e43 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e26 = k_5;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
@@ -5530,8 +5609,8 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
             uint _e29 = k_5;
             vec2 node = _e21[_e29];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_4, w_6, (1.0 - node.x), smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_5, w_6, node.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_5, w_6, (1.0 - node.x), smoothstep_1);
             sum_5 = (_e31 + (node.y * (_e34 + _e38)));
         }
     }
@@ -5543,10 +5622,10 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
     float reach = 1.0;
     vec2 inner = vec2(0.0);
     float sum_6 = 0.0;
-    uint i_22 = 0u;
-    float c_11 = (g_21.cos_r * cs.x);
+    uint i_23 = 0u;
+    float c_14 = (g_21.cos_r * cs.x);
     float d_4 = (g_21.sin_r * cs.y);
-    float peak = (c_11 + d_4);
+    float peak = (c_14 + d_4);
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -5579,22 +5658,22 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
     float _e90 = inner.y;
     float edges[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent < 1.0);
-    bool loop_init_28 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_28) {
-            uint _e112 = i_22;
-            i_22 = (_e112 + 1u);
+        if (!loop_init_29) {
+            uint _e112 = i_23;
+            i_23 = (_e112 + 1u);
         }
-        loop_init_28 = false;
-        uint _e99 = i_22;
+        loop_init_29 = false;
+        uint _e99 = i_23;
         if ((_e99 < 3u)) {
         } else {
             break;
         }
         {
             float _e102 = sum_6;
-            uint _e103 = i_22;
-            uint _e105 = i_22;
+            uint _e103 = i_23;
+            uint _e105 = i_23;
             float _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
@@ -5605,32 +5684,29 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
 
 AirlightOuter airlight_outer(AirlightScene s_23) {
     AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
-    bool local_141 = false;
     bool local_142 = false;
+    bool local_143 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_143 = false;
     bool local_144 = false;
     bool local_145 = false;
     bool local_146 = false;
     bool local_147 = false;
     bool local_148 = false;
-    float scale = 0.0;
     bool local_149 = false;
+    float scale = 0.0;
     bool local_150 = false;
     bool local_151 = false;
     bool local_152 = false;
     bool local_153 = false;
-    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_154 = false;
-    uint i_23 = 0u;
+    float cuts_3[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_155 = false;
+    uint i_24 = 0u;
     bool local_156 = false;
     bool local_157 = false;
     bool local_158 = false;
-    uint n_1 = 0u;
-    uint i_24 = 0u;
     bool local_159 = false;
     if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_23);
@@ -5645,27 +5721,27 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     vec3 ab_1 = (s_23.light_end - s_23.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_141 = (s_23.intensity == 0.0);
-    } else {
-        local_141 = true;
-    }
-    bool _e26 = local_141;
-    if (!(_e26)) {
-        local_142 = (s_23.sigma_s == 0.0);
+        local_142 = (s_23.intensity == 0.0);
     } else {
         local_142 = true;
     }
-    bool _e34 = local_142;
+    bool _e26 = local_142;
+    if (!(_e26)) {
+        local_143 = (s_23.sigma_s == 0.0);
+    } else {
+        local_143 = true;
+    }
+    bool _e34 = local_143;
     if (_e34) {
         g_22.outcome = 1u;
         AirlightOuter _e37 = g_22;
         return _e37;
     }
-    vec3 e_5 = (ab_1 / vec3(_e15));
+    vec3 e_6 = (ab_1 / vec3(_e15));
     vec3 _e41 = airlight_normalize(s_23.dir);
     vec3 w0_ = (s_23.light_position - s_23.origin);
-    float cos_a_2 = dot(e_5, _e41);
-    float along_e = dot(e_5, w0_);
+    float cos_a_2 = dot(e_6, _e41);
+    float along_e = dot(e_6, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_4 = ((s_23.flags & 1u) != 0u);
@@ -5676,101 +5752,101 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
+    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_6 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_143 = (sin_a_1 > 0.0);
-    } else {
-        local_143 = false;
-    }
-    bool _e84 = local_143;
-    if (_e84) {
-        float _e87 = s_star;
-        local_144 = (_e87 >= 0.0);
+        local_144 = (sin_a_1 > 0.0);
     } else {
         local_144 = false;
     }
-    bool _e91 = local_144;
-    if (_e91) {
-        float _e94 = s_star;
-        local_145 = (_e94 <= _e15);
+    bool _e84 = local_144;
+    if (_e84) {
+        float _e87 = s_star;
+        local_145 = (_e87 >= 0.0);
     } else {
         local_145 = false;
     }
-    bool _e97 = local_145;
-    if (_e97) {
-        float _e101 = t_star;
-        local_146 = (s_23.t_min <= _e101);
+    bool _e91 = local_145;
+    if (_e91) {
+        float _e94 = s_star;
+        local_146 = (_e94 <= _e15);
     } else {
         local_146 = false;
     }
-    bool _e104 = local_146;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_148 = (_e110 <= s_23.t_max);
-        } else {
-            local_148 = true;
-        }
-        bool _e114 = local_148;
-        local_147 = _e114;
+    bool _e97 = local_146;
+    if (_e97) {
+        float _e101 = t_star;
+        local_147 = (s_23.t_min <= _e101);
     } else {
         local_147 = false;
     }
-    bool _e116 = local_147;
+    bool _e104 = local_147;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_149 = (_e110 <= s_23.t_max);
+        } else {
+            local_149 = true;
+        }
+        bool _e114 = local_149;
+        local_148 = _e114;
+    } else {
+        local_148 = false;
+    }
+    bool _e116 = local_148;
     if (_e116) {
         g_22.outcome = 2u;
         AirlightOuter _e119 = g_22;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_149 = (_e73 > 0.0);
+        local_150 = (_e73 > 0.0);
     } else {
-        local_149 = false;
+        local_150 = false;
     }
-    bool _e129 = local_149;
+    bool _e129 = local_150;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_150 = (_e136 < (_e15 + _e15));
-    } else {
-        local_150 = false;
-    }
-    bool _e140 = local_150;
-    if (_e140) {
-        float _e143 = scale;
-        local_151 = (_e143 < _e15);
+        local_151 = (_e136 < (_e15 + _e15));
     } else {
         local_151 = false;
     }
-    bool near_1 = local_151;
+    bool _e140 = local_151;
+    if (_e140) {
+        float _e143 = scale;
+        local_152 = (_e143 < _e15);
+    } else {
+        local_152 = false;
+    }
+    bool near_1 = local_152;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_152 = _e154;
+        local_153 = _e154;
     } else {
-        local_152 = false;
+        local_153 = false;
     }
-    bool _e156 = local_152;
+    bool _e156 = local_153;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_153 = _e163;
+        local_154 = _e163;
     } else {
-        local_153 = false;
+        local_154 = false;
     }
-    bool _e165 = local_153;
+    bool _e165 = local_154;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_22.e = e_5;
+    g_22.e = e_6;
     float _e170 = s_star;
     g_22.s_star = _e170;
     float _e172 = scale;
@@ -5783,144 +5859,88 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_22;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_154 = (min(-(_e194), _e197) < 0.5);
+        local_155 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_154 = false;
+        local_155 = false;
     }
-    bool sliver = local_154;
-    bool loop_init_29 = true;
+    bool sliver = local_155;
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_29) {
-            uint _e252 = i_23;
-            i_23 = (_e252 + 1u);
+        if (!loop_init_30) {
+            uint _e252 = i_24;
+            i_24 = (_e252 + 1u);
         }
-        loop_init_29 = false;
-        uint _e205 = i_23;
+        loop_init_30 = false;
+        uint _e205 = i_24;
         if ((_e205 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e208 = i_23;
+            uint _e208 = i_24;
             if ((_e208 == 0u)) {
-                local_155 = sliver;
+                local_156 = sliver;
             } else {
-                local_155 = false;
+                local_156 = false;
             }
-            bool _e214 = local_155;
+            bool _e214 = local_156;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
-                uint _e219 = i_23;
-                local_156 = (_e219 > 0u);
-            } else {
-                local_156 = false;
-            }
-            bool _e223 = local_156;
-            if (_e223) {
-                continue;
-            }
-            uint _e224 = i_23;
-            if ((_e224 == 2u)) {
-                local_157 = infinite_4;
+                uint _e219 = i_24;
+                local_157 = (_e219 > 0u);
             } else {
                 local_157 = false;
             }
-            bool _e230 = local_157;
-            if (_e230) {
+            bool _e223 = local_157;
+            if (_e223) {
                 continue;
             }
-            uint _e231 = i_23;
-            float _e233 = at[_e231];
-            if ((_e233 > 0.0)) {
-                uint _e238 = i_23;
-                float _e240 = at[_e238];
-                local_158 = (_e240 < _e15);
+            uint _e224 = i_24;
+            if ((_e224 == 2u)) {
+                local_158 = infinite_4;
             } else {
                 local_158 = false;
             }
-            bool _e243 = local_158;
-            if (_e243) {
-                uint _e244 = i_23;
-                AirlightOuter _e246 = g_22;
-                uint _e247 = i_23;
-                float _e249 = at[_e247];
-                float _e250 = airlight_to_w(_e246, _e249);
-                cuts_2[_e244] = _e250;
+            bool _e230 = local_158;
+            if (_e230) {
+                continue;
             }
-        }
-    }
-    float _e255 = cuts_2[1];
-    float _e257 = cuts_2[0];
-    if ((_e255 < _e257)) {
-        float c_12 = cuts_2[0];
-        float _e263 = cuts_2[1];
-        cuts_2[0] = _e263;
-        cuts_2[1] = c_12;
-    }
-    float _e266 = cuts_2[2];
-    float _e268 = cuts_2[1];
-    if ((_e266 < _e268)) {
-        float c_13 = cuts_2[1];
-        float _e274 = cuts_2[2];
-        cuts_2[1] = _e274;
-        cuts_2[2] = c_13;
-    }
-    float _e277 = cuts_2[1];
-    float _e279 = cuts_2[0];
-    if ((_e277 < _e279)) {
-        float c_14 = cuts_2[0];
-        float _e285 = cuts_2[1];
-        cuts_2[0] = _e285;
-        cuts_2[1] = c_14;
-    }
-    AirlightOuter _e287 = g_22;
-    float _e288 = airlight_to_w(_e287, _e15);
-    AirlightOuter _e291 = g_22;
-    float _e293 = airlight_to_w(_e291, 0.0);
-    g_22.edges[0] = _e293;
-    bool loop_init_30 = true;
-    while(true) {
-        if (!loop_init_30) {
-            uint _e327 = i_24;
-            i_24 = (_e327 + 1u);
-        }
-        loop_init_30 = false;
-        uint _e298 = i_24;
-        if ((_e298 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e301 = i_24;
-            float _e303 = cuts_2[_e301];
-            uint _e305 = n_1;
-            float _e307 = g_22.edges[_e305];
-            if ((_e303 > _e307)) {
-                uint _e311 = i_24;
-                float _e313 = cuts_2[_e311];
-                local_159 = (_e313 < _e288);
+            uint _e231 = i_24;
+            float _e233 = at[_e231];
+            if ((_e233 > 0.0)) {
+                uint _e238 = i_24;
+                float _e240 = at[_e238];
+                local_159 = (_e240 < _e15);
             } else {
                 local_159 = false;
             }
-            bool _e316 = local_159;
-            if (_e316) {
-                uint _e317 = n_1;
-                n_1 = (_e317 + 1u);
-                uint _e321 = n_1;
-                uint _e323 = i_24;
-                float _e325 = cuts_2[_e323];
-                g_22.edges[_e321] = _e325;
+            bool _e243 = local_159;
+            if (_e243) {
+                uint _e244 = i_24;
+                AirlightOuter _e246 = g_22;
+                uint _e247 = i_24;
+                float _e249 = at[_e247];
+                float _e250 = airlight_to_w(_e246, _e249);
+                cuts_3[_e244] = _e250;
             }
         }
     }
-    uint _e330 = n_1;
-    g_22.edges[(_e330 + 1u)] = _e288;
-    uint _e335 = n_1;
-    g_22.panels = (_e335 + 1u);
-    AirlightOuter _e338 = g_22;
-    return _e338;
+    AirlightOuter _e254 = g_22;
+    float _e256 = airlight_to_w(_e254, 0.0);
+    AirlightOuter _e257 = g_22;
+    float _e258 = airlight_to_w(_e257, _e15);
+    float _e259[3] = cuts_3;
+    AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
+    g_22.edges[0] = _e260.at[0];
+    g_22.edges[1] = _e260.at[1];
+    g_22.edges[2] = _e260.at[2];
+    g_22.edges[3] = _e260.at[3];
+    g_22.edges[4] = _e260.at[4];
+    g_22.panels = _e260.panels;
+    AirlightOuter _e283 = g_22;
+    return _e283;
 }
 
 AirlightCanonical airlight_no_canonical() {

@@ -105,6 +105,10 @@ struct AirlightListScan {
     float errors;
     uint worst;
 };
+struct AirlightEdges {
+    float at[5];
+    uint panels;
+};
 struct AirlightSplit {
     bool split;
     float lo;
@@ -2708,8 +2712,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span) {
     float inv_h = (1.0 / big_h_1);
     float w_5 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_5 * w_5)) / (1.0 + (v_s * v_s)));
-    float e_5 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_5 * inv_h);
+    float e_6 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_6 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_10, float j_1) {
@@ -4322,9 +4326,9 @@ vec2 airlight_two_sum(float a_13, float b_10, uint key_1) {
     float _e4 = airlight_opaque((a_13 + b_10), key_1);
     float _e6 = airlight_opaque((_e4 - a_13), key_1);
     float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_6 = ((a_13 - _e8) + (b_10 - _e6));
-    bool _e12 = airlight_is_finite(e_6);
-    return vec2(_e4, (_e12 ? e_6 : 0.0));
+    float e_7 = ((a_13 - _e8) + (b_10 - _e6));
+    bool _e12 = airlight_is_finite(e_7);
+    return vec2(_e4, (_e12 ? e_7 : 0.0));
 }
 
 float airlight_split_high(float x_14) {
@@ -4337,9 +4341,9 @@ vec2 airlight_two_product(float a_14, float b_11, uint key_2) {
     float al = (a_14 - _e5);
     float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_7 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    bool _e17 = airlight_is_finite(e_7);
-    return vec2(_e4, (_e17 ? e_7 : 0.0));
+    float e_8 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    bool _e17 = airlight_is_finite(e_8);
+    return vec2(_e4, (_e17 ? e_8 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3) {
@@ -4378,10 +4382,10 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     vec2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
     vec2 _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
-    vec3 hi_5 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_6 = vec3(_e11.y, _e17.y, _e23.y);
+    vec3 hi_6 = vec3(_e11.x, _e17.x, _e23.x);
+    vec3 lo_7 = vec3(_e11.y, _e17.y, _e23.y);
     vec3 dir_2 = s_20.dir;
-    bool _e33 = airlight_in_exact_range(hi_5);
+    bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
         local_125 = !(_e38);
@@ -4392,10 +4396,10 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_5.y, dir_2.z, hi_5.z, dir_2.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_5.z, dir_2.x, hi_5.x, dir_2.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_5.x, dir_2.y, hi_5.y, dir_2.x, key_4);
-    vec3 w_7 = vec3((_e46 + ((lo_6.y * dir_2.z) - (lo_6.z * dir_2.y))), (_e59 + ((lo_6.z * dir_2.x) - (lo_6.x * dir_2.z))), (_e72 + ((lo_6.x * dir_2.y) - (lo_6.y * dir_2.x))));
+    float _e46 = airlight_diff_of_products(hi_6.y, dir_2.z, hi_6.z, dir_2.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_6.z, dir_2.x, hi_6.x, dir_2.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_6.x, dir_2.y, hi_6.y, dir_2.x, key_4);
+    vec3 w_7 = vec3((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
     bool _e82 = airlight_vec_finite(w_7);
     if (!(_e82)) {
         return plain;
@@ -4426,10 +4430,10 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain) 
     }
     vec3 _e113 = airlight_normalize(dir_2);
     vec3 _e114 = airlight_normalize(w_7);
-    vec3 n_5 = -(cross(_e113, _e114));
+    vec3 n_4 = -(cross(_e113, _e114));
     out_2.h = h_7;
     vec3 _e119 = a_16;
-    out_2.d_c = dot(n_5, _e119);
+    out_2.d_c = dot(n_4, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
@@ -4746,18 +4750,93 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e329;
 }
 
-AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
-    uint tries = 0u;
+AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) {
+    float cuts_1[3] = float[3](0.0, 0.0, 0.0);
+    AirlightEdges e_1 = AirlightEdges(float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u);
+    uint n_1 = 0u;
+    uint i_18 = 0u;
     bool local_127 = false;
-    bool local_128 = false;
-    bool local_129 = false;
+    cuts_1 = unsorted;
+    float _e5 = cuts_1[1];
+    float _e7 = cuts_1[0];
+    if ((_e5 < _e7)) {
+        float c_11 = cuts_1[0];
+        float _e13 = cuts_1[1];
+        cuts_1[0] = _e13;
+        cuts_1[1] = c_11;
+    }
+    float _e16 = cuts_1[2];
+    float _e18 = cuts_1[1];
+    if ((_e16 < _e18)) {
+        float c_12 = cuts_1[1];
+        float _e24 = cuts_1[2];
+        cuts_1[1] = _e24;
+        cuts_1[2] = c_12;
+    }
+    float _e27 = cuts_1[1];
+    float _e29 = cuts_1[0];
+    if ((_e27 < _e29)) {
+        float c_13 = cuts_1[0];
+        float _e35 = cuts_1[1];
+        cuts_1[0] = _e35;
+        cuts_1[1] = c_13;
+    }
+    e_1 = AirlightEdges(float[5](lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
+            uint _e74 = i_18;
+            i_18 = (_e74 + 1u);
+        }
+        loop_init_22 = false;
+        uint _e45 = i_18;
+        if ((_e45 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e48 = i_18;
+            float _e50 = cuts_1[_e48];
+            uint _e52 = n_1;
+            float _e54 = e_1.at[_e52];
+            if ((_e50 > _e54)) {
+                uint _e58 = i_18;
+                float _e60 = cuts_1[_e58];
+                local_127 = (_e60 < hi_3);
+            } else {
+                local_127 = false;
+            }
+            bool _e63 = local_127;
+            if (_e63) {
+                uint _e64 = n_1;
+                n_1 = (_e64 + 1u);
+                uint _e68 = n_1;
+                uint _e70 = i_18;
+                float _e72 = cuts_1[_e70];
+                e_1.at[_e68] = _e72;
+            }
+        }
+    }
+    uint _e77 = n_1;
+    e_1.at[(_e77 + 1u)] = hi_3;
+    uint _e82 = n_1;
+    e_1.panels = (_e82 + 1u);
+    AirlightEdges _e85 = e_1;
+    return _e85;
+}
+
+AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
+    uint tries = 0u;
+    bool local_128 = false;
+    bool local_129 = false;
+    bool local_130 = false;
+    bool loop_init_23 = true;
+    while(true) {
+        if (!loop_init_23) {
             uint _e57 = tries;
             tries = (_e57 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e6 = tries;
         if ((_e6 < max_panels)) {
         } else {
@@ -4767,18 +4846,18 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             AirlightPanelList _e8 = list_1;
             AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
-                local_127 = (count_2 == max_panels);
-            } else {
-                local_127 = true;
-            }
-            bool _e21 = local_127;
-            if (!(_e21)) {
-                bool _e26 = airlight_is_finite(_e9.total);
-                local_128 = !(_e26);
+                local_128 = (count_2 == max_panels);
             } else {
                 local_128 = true;
             }
-            bool _e29 = local_128;
+            bool _e21 = local_128;
+            if (!(_e21)) {
+                bool _e26 = airlight_is_finite(_e9.total);
+                local_129 = !(_e26);
+            } else {
+                local_129 = true;
+            }
+            bool _e29 = local_129;
             if (_e29) {
                 break;
             }
@@ -4786,11 +4865,11 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             vec4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_1 = (0.5 * (_e32.x + _e32.y));
             if ((mid_1 > _e32.x)) {
-                local_129 = (mid_1 < _e32.y);
+                local_130 = (mid_1 < _e32.y);
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            bool _e45 = local_129;
+            bool _e45 = local_130;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, vec4(_e32.xyz, 0.0));
                 continue;
@@ -4858,32 +4937,32 @@ AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels_1) {
 
 AirlightOuter airlight_surface(AirlightScene s_24) {
     AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
-    bool local_130 = false;
-    vec3 u_1 = vec3(0.0);
-    float cuts_1[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
-    uint i_18 = 1u;
-    uint j_4 = 0u;
     bool local_131 = false;
-    uint k_5 = 0u;
-    uint i_19 = 0u;
+    vec3 u_1 = vec3(0.0);
+    float cuts_2[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
+    uint i_19 = 1u;
+    uint j_4 = 0u;
     bool local_132 = false;
+    uint k_5 = 0u;
     uint i_20 = 0u;
-    uint i_21 = 1u;
     bool local_133 = false;
+    uint i_21 = 0u;
+    uint i_22 = 1u;
     bool local_134 = false;
     bool local_135 = false;
     bool local_136 = false;
     bool local_137 = false;
+    bool local_138 = false;
     AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     vec3 to_light_1 = (s_24.light_position - s_24.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_24.intensity == 0.0))) {
-        local_130 = (s_24.sigma_s == 0.0);
+        local_131 = (s_24.sigma_s == 0.0);
     } else {
-        local_130 = true;
+        local_131 = true;
     }
-    bool _e18 = local_130;
+    bool _e18 = local_131;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -4922,8 +5001,8 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
     g_22.sin_a = _e41;
     float _e92 = airlight_angle(cos_a_1, _e41);
     float first_1 = abs((1.5707964 - _e92));
-    cuts_1[0] = first_1;
-    cuts_1[1] = (AIRLIGHT_PI - first_1);
+    cuts_2[0] = first_1;
+    cuts_2[1] = (AIRLIGHT_PI - first_1);
     if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         vec3 _e105 = airlight_normalize(s_24.brdf_view);
@@ -4948,63 +5027,63 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
-        cuts_1[2] = first_r;
-        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        cuts_2[2] = first_r;
+        cuts_2[3] = (AIRLIGHT_PI - first_r);
         float _e163 = g_22.alpha_r;
-        cuts_1[4] = _e163;
+        cuts_2[4] = _e163;
         if ((s_24.brdf_exponent > 1.0)) {
             float width_3 = (1.0 / sqrt(s_24.brdf_exponent));
             float _e173 = g_22.alpha_r;
-            cuts_1[5] = (_e173 - (1.5 * width_3));
+            cuts_2[5] = (_e173 - (1.5 * width_3));
             float _e179 = g_22.alpha_r;
-            cuts_1[6] = (_e179 + (1.5 * width_3));
+            cuts_2[6] = (_e179 + (1.5 * width_3));
             float _e185 = g_22.alpha_r;
-            cuts_1[7] = (_e185 - (4.0 * width_3));
+            cuts_2[7] = (_e185 - (4.0 * width_3));
             float _e191 = g_22.alpha_r;
-            cuts_1[8] = (_e191 + (4.0 * width_3));
+            cuts_2[8] = (_e191 + (4.0 * width_3));
         }
         vec3 meet = cross(_e37, _e111);
         float _e196 = airlight_safe_length(meet);
         if ((_e196 > AIRLIGHT_FLT_EPS)) {
             float _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1.0, 1.0));
-            cuts_1[9] = _e204;
-            cuts_1[10] = (AIRLIGHT_PI - _e204);
+            cuts_2[9] = _e204;
+            cuts_2[10] = (AIRLIGHT_PI - _e204);
         }
     }
-    float _e210 = cuts_1[0];
-    float _e212 = cuts_1[1];
-    float _e214 = cuts_1[2];
-    float _e216 = cuts_1[3];
-    float _e218 = cuts_1[9];
-    float _e220 = cuts_1[10];
+    float _e210 = cuts_2[0];
+    float _e212 = cuts_2[1];
+    float _e214 = cuts_2[2];
+    float _e216 = cuts_2[3];
+    float _e218 = cuts_2[9];
+    float _e220 = cuts_2[10];
     float kinks[6] = float[6](_e210, _e212, _e214, _e216, _e218, _e220);
-    bool loop_init_23 = true;
+    bool loop_init_24 = true;
     while(true) {
-        if (!loop_init_23) {
-            uint _e258 = i_18;
-            i_18 = (_e258 + 1u);
+        if (!loop_init_24) {
+            uint _e258 = i_19;
+            i_19 = (_e258 + 1u);
         }
-        loop_init_23 = false;
-        uint _e224 = i_18;
+        loop_init_24 = false;
+        uint _e224 = i_19;
         if ((_e224 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e227 = i_18;
-            float c_11 = cuts_1[_e227];
-            uint _e230 = i_18;
+            uint _e227 = i_19;
+            float c_14 = cuts_2[_e227];
+            uint _e230 = i_19;
             j_4 = _e230;
             while(true) {
                 uint _e232 = j_4;
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
-                    float _e241 = cuts_1[(_e237 - 1u)];
-                    local_131 = (_e241 > c_11);
+                    float _e241 = cuts_2[(_e237 - 1u)];
+                    local_132 = (_e241 > c_14);
                 } else {
-                    local_131 = false;
+                    local_132 = false;
                 }
-                bool _e244 = local_131;
+                bool _e244 = local_132;
                 if (_e244) {
                 } else {
                     break;
@@ -5012,125 +5091,125 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
                 {
                     uint _e245 = j_4;
                     uint _e247 = j_4;
-                    float _e251 = cuts_1[(_e247 - 1u)];
-                    cuts_1[_e245] = _e251;
+                    float _e251 = cuts_2[(_e247 - 1u)];
+                    cuts_2[_e245] = _e251;
                     uint _e252 = j_4;
                     j_4 = (_e252 - 1u);
                 }
             }
             uint _e255 = j_4;
-            cuts_1[_e255] = c_11;
+            cuts_2[_e255] = c_14;
         }
     }
-    float hi_6 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1));
+    float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1));
     g_22.gamma[0] = ((cos_a_1 < 0.0) ? first_1 : 0.0);
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
-            uint _e305 = i_19;
-            i_19 = (_e305 + 1u);
+        if (!loop_init_25) {
+            uint _e305 = i_20;
+            i_20 = (_e305 + 1u);
         }
-        loop_init_24 = false;
-        uint _e276 = i_19;
+        loop_init_25 = false;
+        uint _e276 = i_20;
         if ((_e276 < 11u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_19;
-            float _e281 = cuts_1[_e279];
+            uint _e279 = i_20;
+            float _e281 = cuts_2[_e279];
             uint _e283 = k_5;
             float _e285 = g_22.gamma[_e283];
             if ((_e281 > _e285)) {
-                uint _e289 = i_19;
-                float _e291 = cuts_1[_e289];
-                local_132 = (_e291 < hi_6);
+                uint _e289 = i_20;
+                float _e291 = cuts_2[_e289];
+                local_133 = (_e291 < hi_7);
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            bool _e294 = local_132;
+            bool _e294 = local_133;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = (_e295 + 1u);
                 uint _e299 = k_5;
-                uint _e301 = i_19;
-                float _e303 = cuts_1[_e301];
+                uint _e301 = i_20;
+                float _e303 = cuts_2[_e301];
                 g_22.gamma[_e299] = _e303;
             }
         }
     }
     uint _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_6;
+    g_22.gamma[(_e308 + 1u)] = hi_7;
     uint _e313 = k_5;
     g_22.panels = (_e313 + 1u);
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
-            uint _e328 = i_20;
-            i_20 = (_e328 + 1u);
+        if (!loop_init_26) {
+            uint _e328 = i_21;
+            i_21 = (_e328 + 1u);
         }
-        loop_init_25 = false;
-        uint _e318 = i_20;
+        loop_init_26 = false;
+        uint _e318 = i_21;
         uint _e320 = g_22.panels;
         if ((_e318 <= _e320)) {
         } else {
             break;
         }
         {
-            uint _e323 = i_20;
-            uint _e325 = i_20;
+            uint _e323 = i_21;
+            uint _e325 = i_21;
             g_22.edges[_e323] = float(_e325);
         }
     }
     if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
-        bool loop_init_26 = true;
+        bool loop_init_27 = true;
         while(true) {
-            if (!loop_init_26) {
-                uint _e388 = i_21;
-                i_21 = (_e388 + 1u);
+            if (!loop_init_27) {
+                uint _e388 = i_22;
+                i_22 = (_e388 + 1u);
             }
-            loop_init_26 = false;
-            uint _e335 = i_21;
+            loop_init_27 = false;
+            uint _e335 = i_22;
             uint _e336 = k_5;
             if ((_e335 <= _e336)) {
             } else {
                 break;
             }
             {
-                uint _e339 = i_21;
-                float e_8 = g_22.gamma[_e339];
-                if (!((e_8 == kinks[0]))) {
-                    local_133 = (e_8 == kinks[1]);
-                } else {
-                    local_133 = true;
-                }
-                bool _e350 = local_133;
-                if (!(_e350)) {
-                    local_134 = (e_8 == kinks[2]);
+                uint _e339 = i_22;
+                float e_9 = g_22.gamma[_e339];
+                if (!((e_9 == kinks[0]))) {
+                    local_134 = (e_9 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
-                bool _e357 = local_134;
-                if (!(_e357)) {
-                    local_135 = (e_8 == kinks[3]);
+                bool _e350 = local_134;
+                if (!(_e350)) {
+                    local_135 = (e_9 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
-                bool _e364 = local_135;
-                if (!(_e364)) {
-                    local_136 = (e_8 == kinks[4]);
+                bool _e357 = local_135;
+                if (!(_e357)) {
+                    local_136 = (e_9 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
-                bool _e371 = local_136;
-                if (!(_e371)) {
-                    local_137 = (e_8 == kinks[5]);
+                bool _e364 = local_136;
+                if (!(_e364)) {
+                    local_137 = (e_9 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
-                bool kink = local_137;
+                bool _e371 = local_137;
+                if (!(_e371)) {
+                    local_138 = (e_9 == kinks[5]);
+                } else {
+                    local_138 = true;
+                }
+                bool kink = local_138;
                 uint _e380 = g_22.smooth_edges;
-                uint _e382 = i_21;
+                uint _e382 = i_22;
                 g_22.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
             }
         }
@@ -5140,7 +5219,7 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18) {
-    bool local_138 = false;
+    bool local_139 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -5150,11 +5229,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     float clip = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_138 = (clip > 0.0);
+        local_139 = (clip > 0.0);
     } else {
-        local_138 = false;
+        local_139 = false;
     }
-    bool _e43 = local_138;
+    bool _e43 = local_139;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5162,18 +5241,18 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     return 0.0;
 }
 
-float airlight_lobe_node(AirlightLobe q_2, float lo_3, float w_1, float u_2, bool smoothstep_) {
+float airlight_lobe_node(AirlightLobe q_2, float lo_4, float w_1, float u_2, bool smoothstep_) {
     if (smoothstep_) {
-        float _e18 = airlight_lobe_at(q_2, (lo_3 + (((w_1 * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        float _e18 = airlight_lobe_at(q_2, (lo_4 + (((w_1 * u_2) * u_2) * ((3.0 - u_2) - u_2))));
         return ((((w_1 * 6.0) * u_2) * (1.0 - u_2)) * _e18);
     }
-    float _e22 = airlight_lobe_at(q_2, (lo_3 + (w_1 * u_2)));
+    float _e22 = airlight_lobe_at(q_2, (lo_4 + (w_1 * u_2)));
     return (w_1 * _e22);
 }
 
 float airlight_arc_end(float x_19, float cut) {
     float end_1 = 0.0;
-    bool local_139 = false;
+    bool local_140 = false;
     end_1 = x_19;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -5189,11 +5268,11 @@ float airlight_arc_end(float x_19, float cut) {
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_139 = (_e21 < cut);
+        local_140 = (_e21 < cut);
     } else {
-        local_139 = false;
+        local_140 = false;
     }
-    bool _e24 = local_139;
+    bool _e24 = local_140;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5201,29 +5280,29 @@ vec2[5] airlight_lobe_rule() {
     return vec2[5](vec2(0.42556283, 0.14776212), vec2(0.2833023, 0.13463336), vec2(0.16029522, 0.10954318), vec2(0.067468315, 0.07472567), vec2(0.013046736, 0.03333567));
 }
 
-float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smoothstep_1) {
-    bool local_140 = false;
+float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smoothstep_1) {
+    bool local_141 = false;
     float sum_5 = 0.0;
     uint k_6 = 0u;
-    float w_8 = (hi_3 - lo_4);
+    float w_8 = (hi_4 - lo_5);
     if (!(!((w_8 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5 * w_8)));
-        local_140 = !((_e14 > 0.0));
+        float _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5 * w_8)));
+        local_141 = !((_e14 > 0.0));
     } else {
-        local_140 = true;
+        local_141 = true;
     }
-    bool _e19 = local_140;
+    bool _e19 = local_141;
     if (_e19) {
         return 0.0;
     }
     vec2 _e21[5] = airlight_lobe_rule();
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e43 = k_6;
             k_6 = (_e43 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e26 = k_6;
         if ((_e26 < AIRLIGHT_LOBE_PAIRS)) {
         } else {
@@ -5233,8 +5312,8 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_4, float hi_3, bool smooths
             uint _e29 = k_6;
             vec2 node_1 = _e21[_e29];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_4, w_8, node_1.x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_4, w_8, (1.0 - node_1.x), smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_5, w_8, node_1.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_5, w_8, (1.0 - node_1.x), smoothstep_1);
             sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
     }
@@ -5246,10 +5325,10 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float reach = 1.0;
     vec2 inner = vec2(0.0);
     float sum_6 = 0.0;
-    uint i_22 = 0u;
-    float c_12 = (g_23.cos_r * cs.x);
+    uint i_23 = 0u;
+    float c_15 = (g_23.cos_r * cs.x);
     float d_4 = (g_23.sin_r * cs.y);
-    float peak = (c_12 + d_4);
+    float peak = (c_15 + d_4);
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -5282,22 +5361,22 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     float _e90 = inner.y;
     float edges[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
-    bool loop_init_28 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_28) {
-            uint _e112 = i_22;
-            i_22 = (_e112 + 1u);
+        if (!loop_init_29) {
+            uint _e112 = i_23;
+            i_23 = (_e112 + 1u);
         }
-        loop_init_28 = false;
-        uint _e99 = i_22;
+        loop_init_29 = false;
+        uint _e99 = i_23;
         if ((_e99 < 3u)) {
         } else {
             break;
         }
         {
             float _e102 = sum_6;
-            uint _e103 = i_22;
-            uint _e105 = i_22;
+            uint _e103 = i_23;
+            uint _e105 = i_23;
             float _e109 = airlight_lobe_piece(q_7, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
@@ -5308,32 +5387,29 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
 
 AirlightOuter airlight_outer(AirlightScene s_25) {
     AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
-    bool local_141 = false;
     bool local_142 = false;
+    bool local_143 = false;
     float s_star = 0.0;
     float t_star = 0.0;
-    bool local_143 = false;
     bool local_144 = false;
     bool local_145 = false;
     bool local_146 = false;
     bool local_147 = false;
     bool local_148 = false;
-    float scale = 0.0;
     bool local_149 = false;
+    float scale = 0.0;
     bool local_150 = false;
     bool local_151 = false;
     bool local_152 = false;
     bool local_153 = false;
-    float cuts_2[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_154 = false;
-    uint i_23 = 0u;
+    float cuts_3[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_155 = false;
+    uint i_24 = 0u;
     bool local_156 = false;
     bool local_157 = false;
     bool local_158 = false;
-    uint n_1 = 0u;
-    uint i_24 = 0u;
     bool local_159 = false;
     if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_25);
@@ -5348,27 +5424,27 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     vec3 ab_1 = (s_25.light_end - s_25.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_141 = (s_25.intensity == 0.0);
-    } else {
-        local_141 = true;
-    }
-    bool _e26 = local_141;
-    if (!(_e26)) {
-        local_142 = (s_25.sigma_s == 0.0);
+        local_142 = (s_25.intensity == 0.0);
     } else {
         local_142 = true;
     }
-    bool _e34 = local_142;
+    bool _e26 = local_142;
+    if (!(_e26)) {
+        local_143 = (s_25.sigma_s == 0.0);
+    } else {
+        local_143 = true;
+    }
+    bool _e34 = local_143;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
         return _e37;
     }
-    vec3 e_9 = (ab_1 / vec3(_e15));
+    vec3 e_10 = (ab_1 / vec3(_e15));
     vec3 _e41 = airlight_normalize(s_25.dir);
     vec3 w0_ = (s_25.light_position - s_25.origin);
-    float cos_a_2 = dot(e_9, _e41);
-    float along_e = dot(e_9, w0_);
+    float cos_a_2 = dot(e_10, _e41);
+    float along_e = dot(e_10, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_5 = ((s_25.flags & 1u) != 0u);
@@ -5379,101 +5455,101 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_9 * _e70)));
+    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_10 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_143 = (sin_a_1 > 0.0);
-    } else {
-        local_143 = false;
-    }
-    bool _e84 = local_143;
-    if (_e84) {
-        float _e87 = s_star;
-        local_144 = (_e87 >= 0.0);
+        local_144 = (sin_a_1 > 0.0);
     } else {
         local_144 = false;
     }
-    bool _e91 = local_144;
-    if (_e91) {
-        float _e94 = s_star;
-        local_145 = (_e94 <= _e15);
+    bool _e84 = local_144;
+    if (_e84) {
+        float _e87 = s_star;
+        local_145 = (_e87 >= 0.0);
     } else {
         local_145 = false;
     }
-    bool _e97 = local_145;
-    if (_e97) {
-        float _e101 = t_star;
-        local_146 = (s_25.t_min <= _e101);
+    bool _e91 = local_145;
+    if (_e91) {
+        float _e94 = s_star;
+        local_146 = (_e94 <= _e15);
     } else {
         local_146 = false;
     }
-    bool _e104 = local_146;
-    if (_e104) {
-        if (!(infinite_5)) {
-            float _e110 = t_star;
-            local_148 = (_e110 <= s_25.t_max);
-        } else {
-            local_148 = true;
-        }
-        bool _e114 = local_148;
-        local_147 = _e114;
+    bool _e97 = local_146;
+    if (_e97) {
+        float _e101 = t_star;
+        local_147 = (s_25.t_min <= _e101);
     } else {
         local_147 = false;
     }
-    bool _e116 = local_147;
+    bool _e104 = local_147;
+    if (_e104) {
+        if (!(infinite_5)) {
+            float _e110 = t_star;
+            local_149 = (_e110 <= s_25.t_max);
+        } else {
+            local_149 = true;
+        }
+        bool _e114 = local_149;
+        local_148 = _e114;
+    } else {
+        local_148 = false;
+    }
+    bool _e116 = local_148;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_149 = (_e73 > 0.0);
+        local_150 = (_e73 > 0.0);
     } else {
-        local_149 = false;
+        local_150 = false;
     }
-    bool _e129 = local_149;
+    bool _e129 = local_150;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_150 = (_e136 < (_e15 + _e15));
-    } else {
-        local_150 = false;
-    }
-    bool _e140 = local_150;
-    if (_e140) {
-        float _e143 = scale;
-        local_151 = (_e143 < _e15);
+        local_151 = (_e136 < (_e15 + _e15));
     } else {
         local_151 = false;
     }
-    bool near_1 = local_151;
+    bool _e140 = local_151;
+    if (_e140) {
+        float _e143 = scale;
+        local_152 = (_e143 < _e15);
+    } else {
+        local_152 = false;
+    }
+    bool near_1 = local_152;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_152 = _e154;
+        local_153 = _e154;
     } else {
-        local_152 = false;
+        local_153 = false;
     }
-    bool _e156 = local_152;
+    bool _e156 = local_153;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_153 = _e163;
+        local_154 = _e163;
     } else {
-        local_153 = false;
+        local_154 = false;
     }
-    bool _e165 = local_153;
+    bool _e165 = local_154;
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_9;
+    g_24.e = e_10;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -5486,144 +5562,88 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_154 = (min(-(_e194), _e197) < 0.5);
+        local_155 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_154 = false;
+        local_155 = false;
     }
-    bool sliver = local_154;
-    bool loop_init_29 = true;
+    bool sliver = local_155;
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_29) {
-            uint _e252 = i_23;
-            i_23 = (_e252 + 1u);
+        if (!loop_init_30) {
+            uint _e252 = i_24;
+            i_24 = (_e252 + 1u);
         }
-        loop_init_29 = false;
-        uint _e205 = i_23;
+        loop_init_30 = false;
+        uint _e205 = i_24;
         if ((_e205 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e208 = i_23;
+            uint _e208 = i_24;
             if ((_e208 == 0u)) {
-                local_155 = sliver;
+                local_156 = sliver;
             } else {
-                local_155 = false;
+                local_156 = false;
             }
-            bool _e214 = local_155;
+            bool _e214 = local_156;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
-                uint _e219 = i_23;
-                local_156 = (_e219 > 0u);
-            } else {
-                local_156 = false;
-            }
-            bool _e223 = local_156;
-            if (_e223) {
-                continue;
-            }
-            uint _e224 = i_23;
-            if ((_e224 == 2u)) {
-                local_157 = infinite_5;
+                uint _e219 = i_24;
+                local_157 = (_e219 > 0u);
             } else {
                 local_157 = false;
             }
-            bool _e230 = local_157;
-            if (_e230) {
+            bool _e223 = local_157;
+            if (_e223) {
                 continue;
             }
-            uint _e231 = i_23;
-            float _e233 = at[_e231];
-            if ((_e233 > 0.0)) {
-                uint _e238 = i_23;
-                float _e240 = at[_e238];
-                local_158 = (_e240 < _e15);
+            uint _e224 = i_24;
+            if ((_e224 == 2u)) {
+                local_158 = infinite_5;
             } else {
                 local_158 = false;
             }
-            bool _e243 = local_158;
-            if (_e243) {
-                uint _e244 = i_23;
-                AirlightOuter _e246 = g_24;
-                uint _e247 = i_23;
-                float _e249 = at[_e247];
-                float _e250 = airlight_to_w(_e246, _e249);
-                cuts_2[_e244] = _e250;
+            bool _e230 = local_158;
+            if (_e230) {
+                continue;
             }
-        }
-    }
-    float _e255 = cuts_2[1];
-    float _e257 = cuts_2[0];
-    if ((_e255 < _e257)) {
-        float c_13 = cuts_2[0];
-        float _e263 = cuts_2[1];
-        cuts_2[0] = _e263;
-        cuts_2[1] = c_13;
-    }
-    float _e266 = cuts_2[2];
-    float _e268 = cuts_2[1];
-    if ((_e266 < _e268)) {
-        float c_14 = cuts_2[1];
-        float _e274 = cuts_2[2];
-        cuts_2[1] = _e274;
-        cuts_2[2] = c_14;
-    }
-    float _e277 = cuts_2[1];
-    float _e279 = cuts_2[0];
-    if ((_e277 < _e279)) {
-        float c_15 = cuts_2[0];
-        float _e285 = cuts_2[1];
-        cuts_2[0] = _e285;
-        cuts_2[1] = c_15;
-    }
-    AirlightOuter _e287 = g_24;
-    float _e288 = airlight_to_w(_e287, _e15);
-    AirlightOuter _e291 = g_24;
-    float _e293 = airlight_to_w(_e291, 0.0);
-    g_24.edges[0] = _e293;
-    bool loop_init_30 = true;
-    while(true) {
-        if (!loop_init_30) {
-            uint _e327 = i_24;
-            i_24 = (_e327 + 1u);
-        }
-        loop_init_30 = false;
-        uint _e298 = i_24;
-        if ((_e298 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e301 = i_24;
-            float _e303 = cuts_2[_e301];
-            uint _e305 = n_1;
-            float _e307 = g_24.edges[_e305];
-            if ((_e303 > _e307)) {
-                uint _e311 = i_24;
-                float _e313 = cuts_2[_e311];
-                local_159 = (_e313 < _e288);
+            uint _e231 = i_24;
+            float _e233 = at[_e231];
+            if ((_e233 > 0.0)) {
+                uint _e238 = i_24;
+                float _e240 = at[_e238];
+                local_159 = (_e240 < _e15);
             } else {
                 local_159 = false;
             }
-            bool _e316 = local_159;
-            if (_e316) {
-                uint _e317 = n_1;
-                n_1 = (_e317 + 1u);
-                uint _e321 = n_1;
-                uint _e323 = i_24;
-                float _e325 = cuts_2[_e323];
-                g_24.edges[_e321] = _e325;
+            bool _e243 = local_159;
+            if (_e243) {
+                uint _e244 = i_24;
+                AirlightOuter _e246 = g_24;
+                uint _e247 = i_24;
+                float _e249 = at[_e247];
+                float _e250 = airlight_to_w(_e246, _e249);
+                cuts_3[_e244] = _e250;
             }
         }
     }
-    uint _e330 = n_1;
-    g_24.edges[(_e330 + 1u)] = _e288;
-    uint _e335 = n_1;
-    g_24.panels = (_e335 + 1u);
-    AirlightOuter _e338 = g_24;
-    return _e338;
+    AirlightOuter _e254 = g_24;
+    float _e256 = airlight_to_w(_e254, 0.0);
+    AirlightOuter _e257 = g_24;
+    float _e258 = airlight_to_w(_e257, _e15);
+    float _e259[3] = cuts_3;
+    AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
+    g_24.edges[0] = _e260.at[0];
+    g_24.edges[1] = _e260.at[1];
+    g_24.edges[2] = _e260.at[2];
+    g_24.edges[3] = _e260.at[3];
+    g_24.edges[4] = _e260.at[4];
+    g_24.panels = _e260.panels;
+    AirlightOuter _e283 = g_24;
+    return _e283;
 }
 
 AirlightCanonical airlight_no_canonical() {
@@ -5648,14 +5668,14 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_34 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_20 - float(i_34));
-        float a_40 = g_25.gamma[i_34];
-        float b_19 = g_25.gamma[(i_34 + 1u)];
+        uint i_33 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_20 - float(i_33));
+        float a_40 = g_25.gamma[i_33];
+        float b_19 = g_25.gamma[(i_33 + 1u)];
         float w_9 = (b_19 - a_40);
         float u_6 = (1.0 - t_8);
-        bool smooth_a = (((g_25.smooth_edges >> i_34) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_34 + 1u)) & 1u) != 0u);
+        bool smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
         gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
         jacobian = (((w_9 * 6.0) * t_8) * u_6);
         float _e58 = gamma_1;
@@ -5723,10 +5743,10 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             float arc = (2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_6 = s_26.brdf_exponent;
+            float n_5 = s_26.brdf_exponent;
             float _e161 = gamma_1;
-            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
-            weight = (((s_26.brdf_scale * (n_6 + 2.0)) * 0.15915494) * _e162);
+            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
+            weight = (((s_26.brdf_scale * (n_5 + 2.0)) * 0.15915494) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0.0;
@@ -5778,122 +5798,122 @@ float airlight_area_phase(AirlightScene s_27, float mu_2) {
 }
 
 float airlight_emitted(AirlightScene s_28, float c_7) {
-    uint e_1 = 0u;
+    uint e_2 = 0u;
     float base_1 = 0.0;
     float acc_1 = 1.0;
     uint p_2 = uint(s_28.light_param_b);
     if ((p_2 <= 1u)) {
         return s_28.intensity;
     }
-    e_1 = (p_2 - 1u);
+    e_2 = (p_2 - 1u);
     base_1 = c_7;
-    uint _e13 = e_1;
+    uint _e13 = e_2;
     if (((_e13 & 1u) != 0u)) {
         float _e18 = acc_1;
         float _e19 = base_1;
         acc_1 = (_e18 * _e19);
     }
-    uint _e21 = e_1;
-    e_1 = (_e21 >> 1u);
+    uint _e21 = e_2;
+    e_2 = (_e21 >> 1u);
     float _e24 = base_1;
     float _e25 = base_1;
     base_1 = (_e24 * _e25);
-    uint _e27 = e_1;
+    uint _e27 = e_2;
     if (((_e27 & 1u) != 0u)) {
         float _e32 = acc_1;
         float _e33 = base_1;
         acc_1 = (_e32 * _e33);
     }
-    uint _e35 = e_1;
-    e_1 = (_e35 >> 1u);
+    uint _e35 = e_2;
+    e_2 = (_e35 >> 1u);
     float _e38 = base_1;
     float _e39 = base_1;
     base_1 = (_e38 * _e39);
-    uint _e41 = e_1;
+    uint _e41 = e_2;
     if (((_e41 & 1u) != 0u)) {
         float _e46 = acc_1;
         float _e47 = base_1;
         acc_1 = (_e46 * _e47);
     }
-    uint _e49 = e_1;
-    e_1 = (_e49 >> 1u);
+    uint _e49 = e_2;
+    e_2 = (_e49 >> 1u);
     float _e52 = base_1;
     float _e53 = base_1;
     base_1 = (_e52 * _e53);
-    uint _e55 = e_1;
+    uint _e55 = e_2;
     if (((_e55 & 1u) != 0u)) {
         float _e60 = acc_1;
         float _e61 = base_1;
         acc_1 = (_e60 * _e61);
     }
-    uint _e63 = e_1;
-    e_1 = (_e63 >> 1u);
+    uint _e63 = e_2;
+    e_2 = (_e63 >> 1u);
     float _e66 = base_1;
     float _e67 = base_1;
     base_1 = (_e66 * _e67);
-    uint _e69 = e_1;
+    uint _e69 = e_2;
     if (((_e69 & 1u) != 0u)) {
         float _e74 = acc_1;
         float _e75 = base_1;
         acc_1 = (_e74 * _e75);
     }
-    uint _e77 = e_1;
-    e_1 = (_e77 >> 1u);
+    uint _e77 = e_2;
+    e_2 = (_e77 >> 1u);
     float _e80 = base_1;
     float _e81 = base_1;
     base_1 = (_e80 * _e81);
-    uint _e83 = e_1;
+    uint _e83 = e_2;
     if (((_e83 & 1u) != 0u)) {
         float _e88 = acc_1;
         float _e89 = base_1;
         acc_1 = (_e88 * _e89);
     }
-    uint _e91 = e_1;
-    e_1 = (_e91 >> 1u);
+    uint _e91 = e_2;
+    e_2 = (_e91 >> 1u);
     float _e94 = base_1;
     float _e95 = base_1;
     base_1 = (_e94 * _e95);
-    uint _e97 = e_1;
+    uint _e97 = e_2;
     if (((_e97 & 1u) != 0u)) {
         float _e102 = acc_1;
         float _e103 = base_1;
         acc_1 = (_e102 * _e103);
     }
-    uint _e105 = e_1;
-    e_1 = (_e105 >> 1u);
+    uint _e105 = e_2;
+    e_2 = (_e105 >> 1u);
     float _e108 = base_1;
     float _e109 = base_1;
     base_1 = (_e108 * _e109);
-    uint _e111 = e_1;
+    uint _e111 = e_2;
     if (((_e111 & 1u) != 0u)) {
         float _e116 = acc_1;
         float _e117 = base_1;
         acc_1 = (_e116 * _e117);
     }
-    uint _e119 = e_1;
-    e_1 = (_e119 >> 1u);
+    uint _e119 = e_2;
+    e_2 = (_e119 >> 1u);
     float _e122 = base_1;
     float _e123 = base_1;
     base_1 = (_e122 * _e123);
-    uint _e125 = e_1;
+    uint _e125 = e_2;
     if (((_e125 & 1u) != 0u)) {
         float _e130 = acc_1;
         float _e131 = base_1;
         acc_1 = (_e130 * _e131);
     }
-    uint _e133 = e_1;
-    e_1 = (_e133 >> 1u);
+    uint _e133 = e_2;
+    e_2 = (_e133 >> 1u);
     float _e136 = base_1;
     float _e137 = base_1;
     base_1 = (_e136 * _e137);
-    uint _e139 = e_1;
+    uint _e139 = e_2;
     if (((_e139 & 1u) != 0u)) {
         float _e144 = acc_1;
         float _e145 = base_1;
         acc_1 = (_e144 * _e145);
     }
-    uint _e147 = e_1;
-    e_1 = (_e147 >> 1u);
+    uint _e147 = e_2;
+    e_2 = (_e147 >> 1u);
     float _e150 = base_1;
     float _e151 = base_1;
     base_1 = (_e150 * _e151);
@@ -5999,14 +6019,11 @@ AirlightArea airlight_area(AirlightScene s_30) {
     float t_end_1 = 0.0;
     bool end_infinite = false;
     bool local_175 = false;
-    float cuts_3[3] = float[3](0.0, 0.0, 0.0);
+    float cuts_4[3] = float[3](0.0, 0.0, 0.0);
     uint i_27 = 0u;
     bool local_176 = false;
     bool local_177 = false;
     bool local_178 = false;
-    uint n_3 = 0u;
-    uint i_28 = 0u;
-    bool local_179 = false;
     vec3 zero = vec3(0.0);
     vec4 _e13 = airlight_phase_lobes(s_30);
     a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e13, false);
@@ -6167,7 +6184,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
     float _e271 = a_18.x_h;
     float _e272 = cut1_;
     uint _e273 = cut_count;
-    cuts_3 = float[3](_e262, ((_e266 > 0u) ? _e265 : _e264), ((_e273 > 1u) ? _e272 : _e271));
+    cuts_4 = float[3](_e262, ((_e266 > 0u) ? _e265 : _e264), ((_e273 > 1u) ? _e272 : _e271));
     bool loop_init_31 = true;
     while(true) {
         if (!loop_init_31) {
@@ -6182,9 +6199,9 @@ AirlightArea airlight_area(AirlightScene s_30) {
         }
         {
             uint _e284 = i_27;
-            float t_9 = cuts_3[_e284];
+            float t_9 = cuts_4[_e284];
             uint _e287 = i_27;
-            cuts_3[_e287] = _e256;
+            cuts_4[_e287] = _e256;
             bool _e289 = airlight_is_finite(t_9);
             if (_e289) {
                 local_176 = (t_9 >= t0_2);
@@ -6210,87 +6227,27 @@ AirlightArea airlight_area(AirlightScene s_30) {
                 uint _e307 = i_27;
                 AirlightArea _e309 = a_18;
                 float _e311 = airlight_area_theta(_e309, t_9, false);
-                cuts_3[_e307] = _e311;
+                cuts_4[_e307] = _e311;
             }
         }
     }
-    float _e316 = cuts_3[1];
-    float _e318 = cuts_3[0];
-    if ((_e316 < _e318)) {
-        float c_16 = cuts_3[0];
-        float _e324 = cuts_3[1];
-        cuts_3[0] = _e324;
-        cuts_3[1] = c_16;
-    }
-    float _e327 = cuts_3[2];
-    float _e329 = cuts_3[1];
-    if ((_e327 < _e329)) {
-        float c_17 = cuts_3[1];
-        float _e335 = cuts_3[2];
-        cuts_3[1] = _e335;
-        cuts_3[2] = c_17;
-    }
-    float _e338 = cuts_3[1];
-    float _e340 = cuts_3[0];
-    if ((_e338 < _e340)) {
-        float c_18 = cuts_3[0];
-        float _e346 = cuts_3[1];
-        cuts_3[0] = _e346;
-        cuts_3[1] = c_18;
-    }
-    a_18.edges[0] = _e256;
-    bool loop_init_32 = true;
-    while(true) {
-        if (!loop_init_32) {
-            uint _e383 = i_28;
-            i_28 = (_e383 + 1u);
-        }
-        loop_init_32 = false;
-        uint _e354 = i_28;
-        if ((_e354 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e357 = i_28;
-            float _e359 = cuts_3[_e357];
-            uint _e361 = n_3;
-            float _e363 = a_18.edges[_e361];
-            if ((_e359 > _e363)) {
-                uint _e367 = i_28;
-                float _e369 = cuts_3[_e367];
-                local_179 = (_e369 < _e260);
-            } else {
-                local_179 = false;
-            }
-            bool _e372 = local_179;
-            if (_e372) {
-                uint _e373 = n_3;
-                n_3 = (_e373 + 1u);
-                uint _e377 = n_3;
-                uint _e379 = i_28;
-                float _e381 = cuts_3[_e379];
-                a_18.edges[_e377] = _e381;
-            }
-        }
-    }
-    uint _e386 = n_3;
-    a_18.edges[(_e386 + 1u)] = _e260;
-    uint _e391 = n_3;
-    a_18.panels = (_e391 + 1u);
-    AirlightArea _e394 = a_18;
-    return _e394;
+    float _e315[3] = cuts_4;
+    AirlightEdges _e316 = airlight_edges_between(_e256, _e260, _e315);
+    a_18.edges = _e316.at;
+    a_18.panels = _e316.panels;
+    AirlightArea _e321 = a_18;
+    return _e321;
 }
 
 AirlightAbove airlight_above(float z_9, vec2 off) {
     return AirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove above_1, vec2 e_2, float g_26) {
+float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove above_1, vec2 e_3, float g_26) {
     vec2 _e5 = airlight_cos_sin_half_turn(g_26);
     float r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
     float dr = (above_1.rho0_ / (_e5.x * _e5.x));
-    vec2 p_3 = (above_1.off + (r_13 * e_2));
+    vec2 p_3 = (above_1.off + (r_13 * e_3));
     float z_14 = above_1.z;
     float dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
     float inv_5 = (1.0 / dist);
@@ -6300,58 +6257,58 @@ float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove ab
     return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0.0))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_32, AirlightArea a_20, AirlightAbove above_2, vec2 e_3, float r_max) {
+float airlight_flat_radial(AirlightScene s_32, AirlightArea a_20, AirlightAbove above_2, vec2 e_4, float r_max) {
     float sum_7 = 0.0;
     float _e7 = airlight_atan((r_max / above_2.rho0_));
-    float c_19 = (0.5 * _e7);
+    float c_16 = (0.5 * _e7);
     float hw_2 = (0.5 * _e7);
     float _e14 = sum_7;
-    float _e20 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.09501251 * hw_2)));
+    float _e20 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.09501251 * hw_2)));
     sum_7 = (_e14 + ((0.1894506 * hw_2) * _e20));
     float _e23 = sum_7;
-    float _e29 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.09501251 * hw_2)));
+    float _e29 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.09501251 * hw_2)));
     sum_7 = (_e23 + ((0.1894506 * hw_2) * _e29));
     float _e32 = sum_7;
-    float _e38 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.28160354 * hw_2)));
+    float _e38 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.28160354 * hw_2)));
     sum_7 = (_e32 + ((0.18260342 * hw_2) * _e38));
     float _e41 = sum_7;
-    float _e47 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.28160354 * hw_2)));
+    float _e47 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.28160354 * hw_2)));
     sum_7 = (_e41 + ((0.18260342 * hw_2) * _e47));
     float _e50 = sum_7;
-    float _e56 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.45801678 * hw_2)));
+    float _e56 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.45801678 * hw_2)));
     sum_7 = (_e50 + ((0.16915652 * hw_2) * _e56));
     float _e59 = sum_7;
-    float _e65 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.45801678 * hw_2)));
+    float _e65 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.45801678 * hw_2)));
     sum_7 = (_e59 + ((0.16915652 * hw_2) * _e65));
     float _e68 = sum_7;
-    float _e74 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.61787623 * hw_2)));
+    float _e74 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.61787623 * hw_2)));
     sum_7 = (_e68 + ((0.14959599 * hw_2) * _e74));
     float _e77 = sum_7;
-    float _e83 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.61787623 * hw_2)));
+    float _e83 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.61787623 * hw_2)));
     sum_7 = (_e77 + ((0.14959599 * hw_2) * _e83));
     float _e86 = sum_7;
-    float _e92 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.7554044 * hw_2)));
+    float _e92 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.7554044 * hw_2)));
     sum_7 = (_e86 + ((0.12462897 * hw_2) * _e92));
     float _e95 = sum_7;
-    float _e101 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.7554044 * hw_2)));
+    float _e101 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.7554044 * hw_2)));
     sum_7 = (_e95 + ((0.12462897 * hw_2) * _e101));
     float _e104 = sum_7;
-    float _e110 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.8656312 * hw_2)));
+    float _e110 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.8656312 * hw_2)));
     sum_7 = (_e104 + ((0.09515851 * hw_2) * _e110));
     float _e113 = sum_7;
-    float _e119 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.8656312 * hw_2)));
+    float _e119 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.8656312 * hw_2)));
     sum_7 = (_e113 + ((0.09515851 * hw_2) * _e119));
     float _e122 = sum_7;
-    float _e128 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.944575 * hw_2)));
+    float _e128 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.944575 * hw_2)));
     sum_7 = (_e122 + ((0.062253524 * hw_2) * _e128));
     float _e131 = sum_7;
-    float _e137 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.944575 * hw_2)));
+    float _e137 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.944575 * hw_2)));
     sum_7 = (_e131 + ((0.062253524 * hw_2) * _e137));
     float _e140 = sum_7;
-    float _e146 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.9894009 * hw_2)));
+    float _e146 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.9894009 * hw_2)));
     sum_7 = (_e140 + ((0.02715246 * hw_2) * _e146));
     float _e149 = sum_7;
-    float _e155 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.9894009 * hw_2)));
+    float _e155 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.9894009 * hw_2)));
     sum_7 = (_e149 + ((0.02715246 * hw_2) * _e155));
     float _e158 = sum_7;
     return _e158;
@@ -6361,8 +6318,8 @@ float airlight_disc(AirlightScene s_33, AirlightArea a_21, vec3 x_21) {
     vec2 u_4 = vec2(0.0);
     AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
     float sum_8 = 0.0;
-    uint i_29 = 0u;
-    vec2 e_4 = vec2(0.0);
+    uint i_28 = 0u;
+    vec2 e_5 = vec2(0.0);
     float r_max_1 = 0.0;
     vec3 rel = (x_21 - a_21.c);
     float z_15 = dot(rel, a_21.n);
@@ -6383,36 +6340,36 @@ float airlight_disc(AirlightScene s_33, AirlightArea a_21, vec3 x_21) {
         above_3 = _e37;
     }
     float k_10 = ((rf - radius_2) * (rf + radius_2));
-    bool loop_init_33 = true;
+    bool loop_init_32 = true;
     while(true) {
-        if (!loop_init_33) {
-            uint _e99 = i_29;
-            i_29 = (_e99 + 1u);
+        if (!loop_init_32) {
+            uint _e99 = i_28;
+            i_28 = (_e99 + 1u);
         }
-        loop_init_33 = false;
-        uint _e45 = i_29;
+        loop_init_32 = false;
+        uint _e45 = i_28;
         if ((_e45 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e48 = i_29;
+            uint _e48 = i_28;
             vec3 _e49 = airlight_azimuths(inside_1, _e48);
             float _e52 = u_4.x;
             float _e56 = u_4.y;
             float _e61 = u_4.y;
             float _e65 = u_4.x;
-            e_4 = vec2(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
+            e_5 = vec2(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
             r_max_1 = ((radius_2 + radius_2) * _e49.x);
             if (inside_1) {
-                e_4 = _e49.xy;
+                e_5 = _e49.xy;
                 float b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
                 float root_3 = sqrt(((b_21 * b_21) - k_10));
                 r_max_1 = ((b_21 > 0.0) ? (-(k_10) / (b_21 + root_3)) : (root_3 - b_21));
             }
             float _e90 = sum_8;
             AirlightAbove _e92 = above_3;
-            vec2 _e93 = e_4;
+            vec2 _e93 = e_5;
             float _e94 = r_max_1;
             float _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
             sum_8 = (_e90 + (_e49.z * _e95));
@@ -6424,13 +6381,13 @@ float airlight_disc(AirlightScene s_33, AirlightArea a_21, vec3 x_21) {
 
 float airlight_parallelogram(AirlightScene s_34, AirlightArea a_22, vec3 x_22) {
     vec2 q_4 = vec2(0.0);
+    bool local_179 = false;
     bool local_180 = false;
     bool local_181 = false;
-    bool local_182 = false;
     float best = AIRLIGHT_FLT_MAX;
-    uint i_30 = 0u;
+    uint i_29 = 0u;
     float sum_9 = 0.0;
-    uint i_31 = 0u;
+    uint i_30 = 0u;
     uint j_5 = 0u;
     vec3 rel_1 = (x_22 - a_22.c);
     float z_16 = dot(rel_1, a_22.n);
@@ -6446,43 +6403,43 @@ float airlight_parallelogram(AirlightScene s_34, AirlightArea a_22, vec3 x_22) {
     float fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
     q_4 = foot;
     if ((fu >= 0.0)) {
-        local_180 = (fu <= 1.0);
+        local_179 = (fu <= 1.0);
+    } else {
+        local_179 = false;
+    }
+    bool _e67 = local_179;
+    if (_e67) {
+        local_180 = (fv >= 0.0);
     } else {
         local_180 = false;
     }
-    bool _e67 = local_180;
-    if (_e67) {
-        local_181 = (fv >= 0.0);
+    bool _e73 = local_180;
+    if (_e73) {
+        local_181 = (fv <= 1.0);
     } else {
         local_181 = false;
     }
-    bool _e73 = local_181;
-    if (_e73) {
-        local_182 = (fv <= 1.0);
-    } else {
-        local_182 = false;
-    }
-    bool _e79 = local_182;
+    bool _e79 = local_181;
     if (!(_e79)) {
-        bool loop_init_34 = true;
+        bool loop_init_33 = true;
         while(true) {
-            if (!loop_init_34) {
-                uint _e137 = i_30;
-                i_30 = (_e137 + 1u);
+            if (!loop_init_33) {
+                uint _e137 = i_29;
+                i_29 = (_e137 + 1u);
             }
-            loop_init_34 = false;
-            uint _e85 = i_30;
+            loop_init_33 = false;
+            uint _e85 = i_29;
             if ((_e85 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e88 = i_30;
+                uint _e88 = i_29;
                 vec2 c0_1 = corners[_e88];
-                uint _e90 = i_30;
-                vec2 e_10 = (corners[(_e90 + 1u)] - c0_1);
-                float t_10 = clamp(((((foot.x - c0_1.x) * e_10.x) + ((foot.y - c0_1.y) * e_10.y)) / ((e_10.x * e_10.x) + (e_10.y * e_10.y))), 0.0, 1.0);
-                vec2 p_4 = (c0_1 + (t_10 * e_10));
+                uint _e90 = i_29;
+                vec2 e_11 = (corners[(_e90 + 1u)] - c0_1);
+                float t_10 = clamp(((((foot.x - c0_1.x) * e_11.x) + ((foot.y - c0_1.y) * e_11.y)) / ((e_11.x * e_11.x) + (e_11.y * e_11.y))), 0.0, 1.0);
+                vec2 p_4 = (c0_1 + (t_10 * e_11));
                 float dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
                 float _e134 = best;
                 if ((dd < _e134)) {
@@ -6495,43 +6452,43 @@ float airlight_parallelogram(AirlightScene s_34, AirlightArea a_22, vec3 x_22) {
     vec2 _e139 = q_4;
     AirlightAbove _e141 = airlight_above(z_16, (_e139 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    bool loop_init_35 = true;
+    bool loop_init_34 = true;
     while(true) {
-        if (!loop_init_35) {
-            uint _e254 = i_31;
-            i_31 = (_e254 + 1u);
+        if (!loop_init_34) {
+            uint _e254 = i_30;
+            i_30 = (_e254 + 1u);
         }
-        loop_init_35 = false;
-        uint _e149 = i_31;
+        loop_init_34 = false;
+        uint _e149 = i_30;
         if ((_e149 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e152 = i_31;
+            uint _e152 = i_30;
             vec2 _e154 = q_4;
             vec2 ca = (corners[_e152] - _e154);
-            uint _e156 = i_31;
+            uint _e156 = i_30;
             vec2 _e160 = q_4;
             vec2 cb = (corners[(_e156 + 1u)] - _e160);
             float area = ((ca.x * cb.y) - (ca.y * cb.x));
             if (!((area > thin))) {
                 continue;
             }
-            vec2 e_11 = (cb - ca);
-            float el = sqrt(((e_11.x * e_11.x) + (e_11.y * e_11.y)));
+            vec2 e_12 = (cb - ca);
+            float el = sqrt(((e_12.x * e_12.x) + (e_12.y * e_12.y)));
             float h_9 = (area / el);
-            vec2 m_11 = vec2((e_11.y / el), (-(e_11.x) / el));
+            vec2 m_11 = vec2((e_12.y / el), (-(e_12.x) / el));
             float _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
             vec2 start_3 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
             j_5 = 0u;
-            bool loop_init_36 = true;
+            bool loop_init_35 = true;
             while(true) {
-                if (!loop_init_36) {
+                if (!loop_init_35) {
                     uint _e251 = j_5;
                     j_5 = (_e251 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_35 = false;
                 uint _e207 = j_5;
                 if ((_e207 < 12u)) {
                 } else {
@@ -6579,7 +6536,7 @@ float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap
     float top = 1.5707964;
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     float sum_10 = 0.0;
-    uint i_32 = 0u;
+    uint i_31 = 0u;
     float at_2 = 0.0;
     vec3 _e4 = airlight_basis_e1_(cap_1.a);
     vec3 e2_2 = cross(cap_1.a, _e4);
@@ -6596,56 +6553,56 @@ float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap
         }
     }
     float _e33 = top;
-    float c_20 = (0.5 * _e33);
+    float c_17 = (0.5 * _e33);
     float _e36 = top;
     float hw_3 = (0.5 * _e36);
     float _e74 = graded_1;
-    vec3 _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_20 - (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    vec3 _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_17 - (0.09501251 * hw_3)), (0.1894506 * hw_3));
     rows[0] = _e80;
     float _e82 = graded_1;
-    vec3 _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_20 + (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    vec3 _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_17 + (0.09501251 * hw_3)), (0.1894506 * hw_3));
     rows[1] = _e88;
     float _e90 = graded_1;
-    vec3 _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_20 - (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    vec3 _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_17 - (0.28160354 * hw_3)), (0.18260342 * hw_3));
     rows[2] = _e96;
     float _e98 = graded_1;
-    vec3 _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_20 + (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    vec3 _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_17 + (0.28160354 * hw_3)), (0.18260342 * hw_3));
     rows[3] = _e104;
     float _e106 = graded_1;
-    vec3 _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_20 - (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    vec3 _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_17 - (0.45801678 * hw_3)), (0.16915652 * hw_3));
     rows[4] = _e112;
     float _e114 = graded_1;
-    vec3 _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_20 + (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    vec3 _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_17 + (0.45801678 * hw_3)), (0.16915652 * hw_3));
     rows[5] = _e120;
     float _e122 = graded_1;
-    vec3 _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_20 - (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    vec3 _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_17 - (0.61787623 * hw_3)), (0.14959599 * hw_3));
     rows[6] = _e128;
     float _e130 = graded_1;
-    vec3 _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_20 + (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    vec3 _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_17 + (0.61787623 * hw_3)), (0.14959599 * hw_3));
     rows[7] = _e136;
     float _e138 = graded_1;
-    vec3 _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_20 - (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    vec3 _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_17 - (0.7554044 * hw_3)), (0.12462897 * hw_3));
     rows[8] = _e144;
     float _e146 = graded_1;
-    vec3 _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_20 + (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    vec3 _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_17 + (0.7554044 * hw_3)), (0.12462897 * hw_3));
     rows[9] = _e152;
     float _e154 = graded_1;
-    vec3 _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_20 - (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    vec3 _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_17 - (0.8656312 * hw_3)), (0.09515851 * hw_3));
     rows[10] = _e160;
     float _e162 = graded_1;
-    vec3 _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_20 + (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    vec3 _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_17 + (0.8656312 * hw_3)), (0.09515851 * hw_3));
     rows[11] = _e168;
     float _e170 = graded_1;
-    vec3 _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_20 - (0.944575 * hw_3)), (0.062253524 * hw_3));
+    vec3 _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_17 - (0.944575 * hw_3)), (0.062253524 * hw_3));
     rows[12] = _e176;
     float _e178 = graded_1;
-    vec3 _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_20 + (0.944575 * hw_3)), (0.062253524 * hw_3));
+    vec3 _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_17 + (0.944575 * hw_3)), (0.062253524 * hw_3));
     rows[13] = _e184;
     float _e186 = graded_1;
-    vec3 _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_20 - (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    vec3 _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_17 - (0.9894009 * hw_3)), (0.02715246 * hw_3));
     rows[14] = _e192;
     float _e194 = graded_1;
-    vec3 _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_20 + (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    vec3 _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_17 + (0.9894009 * hw_3)), (0.02715246 * hw_3));
     rows[15] = _e200;
     if (a_23.isotropic) {
         float _e206 = airlight_area_phase(s_36, 0.0);
@@ -6701,20 +6658,20 @@ float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap
         float _e304 = sum_10;
         return _e304;
     }
-    bool loop_init_37 = true;
+    bool loop_init_36 = true;
     while(true) {
-        if (!loop_init_37) {
-            uint _e582 = i_32;
-            i_32 = (_e582 + 1u);
+        if (!loop_init_36) {
+            uint _e582 = i_31;
+            i_31 = (_e582 + 1u);
         }
-        loop_init_37 = false;
-        uint _e307 = i_32;
+        loop_init_36 = false;
+        uint _e307 = i_31;
         if ((_e307 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e311 = i_32;
+            uint _e311 = i_31;
             vec3 _e312 = airlight_azimuths(true, _e311);
             float across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
             at_2 = 0.0;
@@ -6838,7 +6795,7 @@ float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, Airlight
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_11 = 0.0;
-    uint i_33 = 0u;
+    uint i_32 = 0u;
     float big_b_1 = 0.0;
     float wpsi = 0.0;
     float start_2 = 0.0;
@@ -6855,20 +6812,20 @@ float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, Airlight
         float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    bool loop_init_38 = true;
+    bool loop_init_37 = true;
     while(true) {
-        if (!loop_init_38) {
-            uint _e299 = i_33;
-            i_33 = (_e299 + 1u);
+        if (!loop_init_37) {
+            uint _e299 = i_32;
+            i_32 = (_e299 + 1u);
         }
-        loop_init_38 = false;
-        uint _e47 = i_33;
+        loop_init_37 = false;
+        uint _e47 = i_32;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_33;
+            uint _e50 = i_32;
             vec3 _e51 = airlight_azimuths(inside_2, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -6897,88 +6854,88 @@ float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, Airlight
             float graded_3 = max(scale_1, _e105);
             float _e107 = start_2;
             float _e110 = airlight_atan(((to - _e107) / graded_3));
-            float c_21 = (0.5 * _e110);
+            float c_18 = (0.5 * _e110);
             float hw_4 = (0.5 * _e110);
             around = 0.0;
             float _e117 = around;
             float _e120 = big_b_1;
             float _e121 = start_2;
-            float _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_21 - (0.09501251 * hw_4)));
+            float _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_18 - (0.09501251 * hw_4)));
             around = (_e117 + ((0.1894506 * hw_4) * _e125));
             float _e128 = around;
             float _e131 = big_b_1;
             float _e132 = start_2;
-            float _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_21 + (0.09501251 * hw_4)));
+            float _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_18 + (0.09501251 * hw_4)));
             around = (_e128 + ((0.1894506 * hw_4) * _e136));
             float _e139 = around;
             float _e142 = big_b_1;
             float _e143 = start_2;
-            float _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_21 - (0.28160354 * hw_4)));
+            float _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_18 - (0.28160354 * hw_4)));
             around = (_e139 + ((0.18260342 * hw_4) * _e147));
             float _e150 = around;
             float _e153 = big_b_1;
             float _e154 = start_2;
-            float _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_21 + (0.28160354 * hw_4)));
+            float _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_18 + (0.28160354 * hw_4)));
             around = (_e150 + ((0.18260342 * hw_4) * _e158));
             float _e161 = around;
             float _e164 = big_b_1;
             float _e165 = start_2;
-            float _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_21 - (0.45801678 * hw_4)));
+            float _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_18 - (0.45801678 * hw_4)));
             around = (_e161 + ((0.16915652 * hw_4) * _e169));
             float _e172 = around;
             float _e175 = big_b_1;
             float _e176 = start_2;
-            float _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_21 + (0.45801678 * hw_4)));
+            float _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_18 + (0.45801678 * hw_4)));
             around = (_e172 + ((0.16915652 * hw_4) * _e180));
             float _e183 = around;
             float _e186 = big_b_1;
             float _e187 = start_2;
-            float _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_21 - (0.61787623 * hw_4)));
+            float _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_18 - (0.61787623 * hw_4)));
             around = (_e183 + ((0.14959599 * hw_4) * _e191));
             float _e194 = around;
             float _e197 = big_b_1;
             float _e198 = start_2;
-            float _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_21 + (0.61787623 * hw_4)));
+            float _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_18 + (0.61787623 * hw_4)));
             around = (_e194 + ((0.14959599 * hw_4) * _e202));
             float _e205 = around;
             float _e208 = big_b_1;
             float _e209 = start_2;
-            float _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_21 - (0.7554044 * hw_4)));
+            float _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_18 - (0.7554044 * hw_4)));
             around = (_e205 + ((0.12462897 * hw_4) * _e213));
             float _e216 = around;
             float _e219 = big_b_1;
             float _e220 = start_2;
-            float _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_21 + (0.7554044 * hw_4)));
+            float _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_18 + (0.7554044 * hw_4)));
             around = (_e216 + ((0.12462897 * hw_4) * _e224));
             float _e227 = around;
             float _e230 = big_b_1;
             float _e231 = start_2;
-            float _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_21 - (0.8656312 * hw_4)));
+            float _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_18 - (0.8656312 * hw_4)));
             around = (_e227 + ((0.09515851 * hw_4) * _e235));
             float _e238 = around;
             float _e241 = big_b_1;
             float _e242 = start_2;
-            float _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_21 + (0.8656312 * hw_4)));
+            float _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_18 + (0.8656312 * hw_4)));
             around = (_e238 + ((0.09515851 * hw_4) * _e246));
             float _e249 = around;
             float _e252 = big_b_1;
             float _e253 = start_2;
-            float _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_21 - (0.944575 * hw_4)));
+            float _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_18 - (0.944575 * hw_4)));
             around = (_e249 + ((0.062253524 * hw_4) * _e257));
             float _e260 = around;
             float _e263 = big_b_1;
             float _e264 = start_2;
-            float _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_21 + (0.944575 * hw_4)));
+            float _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_18 + (0.944575 * hw_4)));
             around = (_e260 + ((0.062253524 * hw_4) * _e268));
             float _e271 = around;
             float _e274 = big_b_1;
             float _e275 = start_2;
-            float _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_21 - (0.9894009 * hw_4)));
+            float _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_18 - (0.9894009 * hw_4)));
             around = (_e271 + ((0.02715246 * hw_4) * _e279));
             float _e282 = around;
             float _e285 = big_b_1;
             float _e286 = start_2;
-            float _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_21 + (0.9894009 * hw_4)));
+            float _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_18 + (0.9894009 * hw_4)));
             around = (_e282 + ((0.02715246 * hw_4) * _e290));
             float _e293 = sum_11;
             float _e294 = wpsi;
@@ -6995,11 +6952,11 @@ float airlight_sphere(AirlightScene s_39, AirlightArea a_25, vec3 x_23) {
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_6 = 0u;
+    bool local_182 = false;
     bool local_183 = false;
     bool local_184 = false;
     bool local_185 = false;
     bool local_186 = false;
-    bool local_187 = false;
     vec3 v_8 = (a_25.c - x_23);
     float _e5 = airlight_safe_length(v_8);
     if (!((_e5 > a_25.radius))) {
@@ -7008,13 +6965,13 @@ float airlight_sphere(AirlightScene s_39, AirlightArea a_25, vec3 x_23) {
     float sin_a_2 = (a_25.radius / _e5);
     AirlightCap cap_4 = AirlightCap((v_8 / vec3(_e5)), _e5, a_25.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    bool loop_init_39 = true;
+    bool loop_init_38 = true;
     while(true) {
-        if (!loop_init_39) {
+        if (!loop_init_38) {
             uint _e92 = j_6;
             j_6 = (_e92 + 1u);
         }
-        loop_init_39 = false;
+        loop_init_38 = false;
         uint _e32 = j_6;
         if ((_e32 < 2u)) {
         } else {
@@ -7023,43 +6980,43 @@ float airlight_sphere(AirlightScene s_39, AirlightArea a_25, vec3 x_23) {
         {
             uint _e39 = j_6;
             vec2 lobe_2 = ((_e39 == 1u) ? a_25.lobes.zw : a_25.lobes.xy);
-            float c_22 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            float c_19 = dot(cap_4.a, (lobe_2.x * a_25.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_183 = (lobe_2.y > 0.0);
+                local_182 = (lobe_2.y > 0.0);
+            } else {
+                local_182 = false;
+            }
+            bool _e57 = local_182;
+            if (_e57) {
+                local_183 = (lobe_2.y < (_e23 + _e23));
             } else {
                 local_183 = false;
             }
-            bool _e57 = local_183;
-            if (_e57) {
-                local_184 = (lobe_2.y < (_e23 + _e23));
+            bool _e64 = local_183;
+            if (_e64) {
+                if (!((c_19 > cap_4.cos_a))) {
+                    if ((c_19 > -(cap_4.cos_a))) {
+                        float _e77 = airlight_acos(c_19);
+                        local_186 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
+                    } else {
+                        local_186 = false;
+                    }
+                    bool _e84 = local_186;
+                    local_185 = _e84;
+                } else {
+                    local_185 = true;
+                }
+                bool _e86 = local_185;
+                local_184 = _e86;
             } else {
                 local_184 = false;
             }
-            bool _e64 = local_184;
-            if (_e64) {
-                if (!((c_22 > cap_4.cos_a))) {
-                    if ((c_22 > -(cap_4.cos_a))) {
-                        float _e77 = airlight_acos(c_22);
-                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
-                    } else {
-                        local_187 = false;
-                    }
-                    bool _e84 = local_187;
-                    local_186 = _e84;
-                } else {
-                    local_186 = true;
-                }
-                bool _e86 = local_186;
-                local_185 = _e86;
-            } else {
-                local_185 = false;
-            }
-            bool _e88 = local_185;
+            bool _e88 = local_184;
             if (_e88) {
                 chosen = lobe_2.y;
                 sign_3 = lobe_2.x;
-                cos_p_2 = c_22;
+                cos_p_2 = c_19;
             }
         }
     }
@@ -7104,8 +7061,8 @@ float airlight_area_node(AirlightScene s_41, AirlightArea a_27, float theta) {
 AirlightResult airlight_area_light(AirlightScene s_42) {
     AirlightPanelList list_2 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint count_3 = 0u;
-    float lo_5 = 0.0;
-    float hi_4 = 0.0;
+    float lo_6 = 0.0;
+    float hi_5 = 0.0;
     uint slot_1 = 0u;
     bool queued = false;
     float queued_lo = 0.0;
@@ -7114,45 +7071,45 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
     float k_7 = 0.0;
     float gauss = 0.0;
     uint j_7 = 0u;
-    bool local_188 = false;
+    bool local_187 = false;
     AirlightArea _e1 = airlight_area(s_42);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
     vec3 _e8[8] = airlight_kronrod15_rule();
-    lo_5 = _e1.edges[0];
-    hi_4 = _e1.edges[1];
+    lo_6 = _e1.edges[0];
+    hi_5 = _e1.edges[1];
     uint max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_2) - 1u);
-    bool loop_init_40 = true;
+    bool loop_init_39 = true;
     while(true) {
-        if (!loop_init_40) {
+        if (!loop_init_39) {
             uint _e171 = step_2;
             step_2 = (_e171 + 1u);
         }
-        loop_init_40 = false;
+        loop_init_39 = false;
         uint _e68 = step_2;
         if ((_e68 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e70 = lo_5;
-            float _e71 = hi_4;
-            float c_23 = (0.5 * (_e70 + _e71));
-            float _e75 = hi_4;
-            float _e76 = lo_5;
+            float _e70 = lo_6;
+            float _e71 = hi_5;
+            float c_20 = (0.5 * (_e70 + _e71));
+            float _e75 = hi_5;
+            float _e76 = lo_6;
             float hw_5 = (0.5 * (_e75 - _e76));
             k_7 = 0.0;
             gauss = 0.0;
             j_7 = 0u;
-            bool loop_init_41 = true;
+            bool loop_init_40 = true;
             while(true) {
-                if (!loop_init_41) {
+                if (!loop_init_40) {
                     uint _e122 = j_7;
                     j_7 = (_e122 + 1u);
                 }
-                loop_init_41 = false;
+                loop_init_40 = false;
                 uint _e86 = j_7;
                 if ((_e86 < 15u)) {
                 } else {
@@ -7164,12 +7121,12 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
                     uint _e99 = j_7;
                     if (((_e99 & 1u) == 0u)) {
                         uint _e106 = j_7;
-                        local_188 = (_e106 < 14u);
+                        local_187 = (_e106 < 14u);
                     } else {
-                        local_188 = false;
+                        local_187 = false;
                     }
-                    bool _e110 = local_188;
-                    float x_33 = (_e110 ? (c_23 - (hw_5 * node_2.x)) : (c_23 + (hw_5 * node_2.x)));
+                    bool _e110 = local_187;
+                    float x_33 = (_e110 ? (c_20 - (hw_5 * node_2.x)) : (c_20 + (hw_5 * node_2.x)));
                     float _e112 = airlight_area_node(s_42, _e1, x_33);
                     float _e113 = k_7;
                     k_7 = (_e113 + (node_2.y * _e112));
@@ -7178,8 +7135,8 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
                 }
             }
             uint _e124 = slot_1;
-            float _e125 = lo_5;
-            float _e126 = hi_4;
+            float _e125 = lo_6;
+            float _e126 = hi_5;
             float _e127 = k_7;
             float _e129 = k_7;
             float _e131 = gauss;
@@ -7193,18 +7150,18 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
             uint _e142 = count_3;
             if ((_e142 < _e1.panels)) {
                 uint _e146 = count_3;
-                lo_5 = _e1.edges[_e146];
+                lo_6 = _e1.edges[_e146];
                 uint _e149 = count_3;
-                hi_4 = _e1.edges[(_e149 + 1u)];
+                hi_5 = _e1.edges[(_e149 + 1u)];
                 uint _e153 = count_3;
                 slot_1 = _e153;
             } else {
                 bool _e154 = queued;
                 if (_e154) {
                     float _e155 = queued_lo;
-                    lo_5 = _e155;
+                    lo_6 = _e155;
                     float _e156 = queued_hi;
-                    hi_4 = _e156;
+                    hi_5 = _e156;
                     uint _e157 = count_3;
                     slot_1 = _e157;
                     queued = false;
@@ -7214,8 +7171,8 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
                     if (!(_e161.split)) {
                         break;
                     }
-                    lo_5 = _e161.lo;
-                    hi_4 = _e161.mid;
+                    lo_6 = _e161.lo;
+                    hi_5 = _e161.mid;
                     slot_1 = _e161.slot;
                     queued = true;
                     queued_lo = _e161.mid;
@@ -7236,21 +7193,21 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
 }
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_43) {
+    bool local_188 = false;
     bool local_189 = false;
-    bool local_190 = false;
     bool _e1 = airlight_valid(s_43);
     if (!(!(_e1))) {
-        local_189 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_188 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_188 = true;
+    }
+    bool _e10 = local_188;
+    if (!(_e10)) {
+        local_189 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_189 = true;
     }
-    bool _e10 = local_189;
-    if (!(_e10)) {
-        local_190 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_190 = true;
-    }
-    bool _e18 = local_190;
+    bool _e18 = local_189;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -7259,36 +7216,36 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_43) {
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_191 = false;
+    bool local_190 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_190 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_191 = true;
+        local_190 = true;
     }
-    bool _e11 = local_191;
+    bool _e11 = local_190;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
     return r_5;
 }
 
-AirlightResult airlight_node_integral(AirlightNode n_4) {
+AirlightResult airlight_node_integral(AirlightNode n_3) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_192 = false;
+    bool local_191 = false;
     AirlightCanonical g_28 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    AirlightScene p_7 = n_4.scene;
+    AirlightScene p_7 = n_3.scene;
     bool _e7 = airlight_vec_finite(p_7.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_7.dir);
-        local_192 = _e11;
+        local_191 = _e11;
     } else {
-        local_192 = false;
+        local_191 = false;
     }
-    bool _e13 = local_192;
+    bool _e13 = local_191;
     if (_e13) {
-        g_28 = n_4.canonical;
-        if (!(n_4.exact)) {
+        g_28 = n_3.canonical;
+        if (!(n_3.exact)) {
             AirlightCanonical _e18 = airlight_canonical(p_7);
             AirlightCanonical _e19 = airlight_refined(p_7, _e18);
             g_28 = _e19;
@@ -7309,21 +7266,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_44) {
+    bool local_192 = false;
     bool local_193 = false;
-    bool local_194 = false;
     bool _e1 = airlight_valid(s_44);
     if (!(!(_e1))) {
-        local_193 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_192 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_192 = true;
+    }
+    bool _e10 = local_192;
+    if (!(_e10)) {
+        local_193 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_193 = true;
     }
-    bool _e10 = local_193;
-    if (!(_e10)) {
-        local_194 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_194 = true;
-    }
-    bool _e18 = local_194;
+    bool _e18 = local_193;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -7332,21 +7289,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_44) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_45) {
+    bool local_194 = false;
     bool local_195 = false;
-    bool local_196 = false;
     bool _e1 = airlight_valid(s_45);
     if (!(!(_e1))) {
-        local_195 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_194 = true;
+    }
+    bool _e10 = local_194;
+    if (!(_e10)) {
+        local_195 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
-    bool _e10 = local_195;
-    if (!(_e10)) {
-        local_196 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_196 = true;
-    }
-    bool _e18 = local_196;
+    bool _e18 = local_195;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -7381,9 +7338,9 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
     float k_8 = 0.0;
     float gauss_1 = 0.0;
     uint j_8 = 0u;
-    bool local_197 = false;
+    bool local_196 = false;
     float f = 0.0;
-    bool local_198 = false;
+    bool local_197 = false;
     bool _e1 = airlight_valid(s_46);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -7402,13 +7359,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
     a_28 = _e12.edges[0];
     b_13 = _e12.edges[1];
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    bool loop_init_42 = true;
+    bool loop_init_41 = true;
     while(true) {
-        if (!loop_init_42) {
+        if (!loop_init_41) {
             uint _e211 = step_3;
             step_3 = (_e211 + 1u);
         }
-        loop_init_42 = false;
+        loop_init_41 = false;
         uint _e84 = step_3;
         if ((_e84 < evaluations_1)) {
         } else {
@@ -7417,20 +7374,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
         {
             float _e86 = a_28;
             float _e87 = b_13;
-            float c_24 = (0.5 * (_e86 + _e87));
+            float c_21 = (0.5 * (_e86 + _e87));
             float _e91 = b_13;
             float _e92 = a_28;
             float hw_6 = (0.5 * (_e91 - _e92));
             k_8 = 0.0;
             gauss_1 = 0.0;
             j_8 = 0u;
-            bool loop_init_43 = true;
+            bool loop_init_42 = true;
             while(true) {
-                if (!loop_init_43) {
+                if (!loop_init_42) {
                     uint _e162 = j_8;
                     j_8 = (_e162 + 1u);
                 }
-                loop_init_43 = false;
+                loop_init_42 = false;
                 uint _e102 = j_8;
                 if ((_e102 < 7u)) {
                 } else {
@@ -7442,12 +7399,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
                     uint _e115 = j_8;
                     if (((_e115 & 1u) == 0u)) {
                         uint _e122 = j_8;
-                        local_197 = (_e122 < 6u);
+                        local_196 = (_e122 < 6u);
                     } else {
-                        local_197 = false;
+                        local_196 = false;
                     }
-                    bool _e126 = local_197;
-                    float w_10 = (_e126 ? (c_24 - (hw_6 * node_3.x)) : (c_24 + (hw_6 * node_3.x)));
+                    bool _e126 = local_196;
+                    float w_10 = (_e126 ? (c_21 - (hw_6 * node_3.x)) : (c_21 + (hw_6 * node_3.x)));
                     AirlightNode _e128 = airlight_outer_node(s_46, _e12, w_10);
                     f = 0.0;
                     if ((_e128.weight != 0.0)) {
@@ -7456,11 +7413,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
                             return _e134;
                         }
                         if ((s_46.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_198 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_198 = false;
+                            local_197 = false;
                         }
-                        bool _e147 = local_198;
+                        bool _e147 = local_197;
                         if (_e147) {
                             return _e134;
                         }

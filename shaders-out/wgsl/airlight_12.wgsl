@@ -83,6 +83,11 @@ struct AirlightListScan {
     worst: u32,
 }
 
+struct AirlightEdges {
+    at: array<f32, 5>,
+    panels: u32,
+}
+
 struct AirlightSplit {
     split: bool,
     lo: f32,
@@ -2999,8 +3004,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_3 = (v_s + inv_h);
     let r_11 = ((1f + (w_3 * w_3)) / (1f + (v_s * v_s)));
-    let e_1 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_1 * inv_h);
+    let e_2 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_2 * inv_h);
 }
 
 fn airlight_weighted(sigma_s: f32, intensity: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
@@ -4603,9 +4608,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_2 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_2);
-    return vec2<f32>(_e4, select(0f, e_2, _e12));
+    let e_3 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_3);
+    return vec2<f32>(_e4, select(0f, e_3, _e12));
 }
 
 fn airlight_split_high(x_14: f32) -> f32 {
@@ -4618,9 +4623,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_3 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_3);
-    return vec2<f32>(_e4, select(0f, e_3, _e17));
+    let e_4 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_4);
+    return vec2<f32>(_e4, select(0f, e_4, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4661,10 +4666,10 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     let _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     let _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    let hi_4 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_5 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_5 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_6 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir = s_18.dir;
-    let _e33 = airlight_in_exact_range(hi_4);
+    let _e33 = airlight_in_exact_range(hi_5);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
         local_125 = !(_e38);
@@ -4675,10 +4680,10 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_4.y, dir.z, hi_4.z, dir.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_4.z, dir.x, hi_4.x, dir.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_4.x, dir.y, hi_4.y, dir.x, key_4);
-    let w_5 = vec3<f32>((_e46 + ((lo_5.y * dir.z) - (lo_5.z * dir.y))), (_e59 + ((lo_5.z * dir.x) - (lo_5.x * dir.z))), (_e72 + ((lo_5.x * dir.y) - (lo_5.y * dir.x))));
+    let _e46 = airlight_diff_of_products(hi_5.y, dir.z, hi_5.z, dir.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_5.z, dir.x, hi_5.x, dir.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_5.x, dir.y, hi_5.y, dir.x, key_4);
+    let w_5 = vec3<f32>((_e46 + ((lo_6.y * dir.z) - (lo_6.z * dir.y))), (_e59 + ((lo_6.z * dir.x) - (lo_6.x * dir.z))), (_e72 + ((lo_6.x * dir.y) - (lo_6.y * dir.x))));
     let _e82 = airlight_vec_finite(w_5);
     if !(_e82) {
         return plain;
@@ -5030,11 +5035,85 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
+fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> AirlightEdges {
+    var cuts_1: array<f32, 3>;
+    var e_1: AirlightEdges;
+    var n_1: u32 = 0u;
+    var i_18: u32 = 0u;
+    var local_127: bool;
+
+    cuts_1 = unsorted;
+    let _e5 = cuts_1[1];
+    let _e7 = cuts_1[0];
+    if (_e5 < _e7) {
+        let c_10 = cuts_1[0];
+        let _e13 = cuts_1[1];
+        cuts_1[0] = _e13;
+        cuts_1[1] = c_10;
+    }
+    let _e16 = cuts_1[2];
+    let _e18 = cuts_1[1];
+    if (_e16 < _e18) {
+        let c_11 = cuts_1[1];
+        let _e24 = cuts_1[2];
+        cuts_1[1] = _e24;
+        cuts_1[2] = c_11;
+    }
+    let _e27 = cuts_1[1];
+    let _e29 = cuts_1[0];
+    if (_e27 < _e29) {
+        let c_12 = cuts_1[0];
+        let _e35 = cuts_1[1];
+        cuts_1[0] = _e35;
+        cuts_1[1] = c_12;
+    }
+    e_1 = AirlightEdges(array<f32, 5>(lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    loop {
+        let _e45 = i_18;
+        if (_e45 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e48 = i_18;
+            let _e50 = cuts_1[_e48];
+            let _e52 = n_1;
+            let _e54 = e_1.at[_e52];
+            if (_e50 > _e54) {
+                let _e58 = i_18;
+                let _e60 = cuts_1[_e58];
+                local_127 = (_e60 < hi_3);
+            } else {
+                local_127 = false;
+            }
+            let _e63 = local_127;
+            if _e63 {
+                let _e64 = n_1;
+                n_1 = (_e64 + 1u);
+                let _e68 = n_1;
+                let _e70 = i_18;
+                let _e72 = cuts_1[_e70];
+                e_1.at[_e68] = _e72;
+            }
+        }
+        continuing {
+            let _e74 = i_18;
+            i_18 = (_e74 + 1u);
+        }
+    }
+    let _e77 = n_1;
+    e_1.at[(_e77 + 1u)] = hi_3;
+    let _e82 = n_1;
+    e_1.panels = (_e82 + 1u);
+    let _e85 = e_1;
+    return _e85;
+}
+
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
-    var local_127: bool;
     var local_128: bool;
     var local_129: bool;
+    var local_130: bool;
 
     loop {
         let _e6 = tries;
@@ -5046,18 +5125,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_127 = (count_2 == max_panels);
-            } else {
-                local_127 = true;
-            }
-            let _e21 = local_127;
-            if !(_e21) {
-                let _e26 = airlight_is_finite(_e9.total);
-                local_128 = !(_e26);
+                local_128 = (count_2 == max_panels);
             } else {
                 local_128 = true;
             }
-            let _e29 = local_128;
+            let _e21 = local_128;
+            if !(_e21) {
+                let _e26 = airlight_is_finite(_e9.total);
+                local_129 = !(_e26);
+            } else {
+                local_129 = true;
+            }
+            let _e29 = local_129;
             if _e29 {
                 break;
             }
@@ -5065,11 +5144,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_1 = (0.5f * (_e32.x + _e32.y));
             if (mid_1 > _e32.x) {
-                local_129 = (mid_1 < _e32.y);
+                local_130 = (mid_1 < _e32.y);
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            let _e45 = local_129;
+            let _e45 = local_130;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -5142,33 +5221,33 @@ fn airlight_outer_point(s_21: AirlightScene, max_panels_1: u32) -> AirlightOuter
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_130: bool;
-    var u_1: vec3<f32>;
-    var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var i_18: u32 = 1u;
-    var j_4: u32;
     var local_131: bool;
-    var k_4: u32 = 0u;
-    var i_19: u32 = 0u;
+    var u_1: vec3<f32>;
+    var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var i_19: u32 = 1u;
+    var j_4: u32;
     var local_132: bool;
+    var k_4: u32 = 0u;
     var i_20: u32 = 0u;
-    var i_21: u32 = 1u;
     var local_133: bool;
+    var i_21: u32 = 0u;
+    var i_22: u32 = 1u;
     var local_134: bool;
     var local_135: bool;
     var local_136: bool;
     var local_137: bool;
+    var local_138: bool;
 
     let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
     let to_light_1 = (s_22.light_position - s_22.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_22.intensity == 0f)) {
-        local_130 = (s_22.sigma_s == 0f);
+        local_131 = (s_22.sigma_s == 0f);
     } else {
-        local_130 = true;
+        local_131 = true;
     }
-    let _e18 = local_130;
+    let _e18 = local_131;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -5207,8 +5286,8 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     g_20.sin_a = _e41;
     let _e92 = airlight_angle(cos_a_1, _e41);
     let first = abs((1.5707964f - _e92));
-    cuts_1[0] = first;
-    cuts_1[1] = (AIRLIGHT_PI - first);
+    cuts_2[0] = first;
+    cuts_2[1] = (AIRLIGHT_PI - first);
     if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
         let _e105 = airlight_normalize(s_22.brdf_view);
@@ -5233,57 +5312,57 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         }
         let _e154 = g_20.alpha_r;
         let first_r = abs((1.5707964f - _e154));
-        cuts_1[2] = first_r;
-        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        cuts_2[2] = first_r;
+        cuts_2[3] = (AIRLIGHT_PI - first_r);
         let _e163 = g_20.alpha_r;
-        cuts_1[4] = _e163;
+        cuts_2[4] = _e163;
         if (s_22.brdf_exponent > 1f) {
             let width_3 = (1f / sqrt(s_22.brdf_exponent));
             let _e173 = g_20.alpha_r;
-            cuts_1[5] = (_e173 - (1.5f * width_3));
+            cuts_2[5] = (_e173 - (1.5f * width_3));
             let _e179 = g_20.alpha_r;
-            cuts_1[6] = (_e179 + (1.5f * width_3));
+            cuts_2[6] = (_e179 + (1.5f * width_3));
             let _e185 = g_20.alpha_r;
-            cuts_1[7] = (_e185 - (4f * width_3));
+            cuts_2[7] = (_e185 - (4f * width_3));
             let _e191 = g_20.alpha_r;
-            cuts_1[8] = (_e191 + (4f * width_3));
+            cuts_2[8] = (_e191 + (4f * width_3));
         }
         let meet = cross(_e37, _e111);
         let _e196 = airlight_safe_length(meet);
         if (_e196 > AIRLIGHT_FLT_EPS) {
             let _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1f, 1f));
-            cuts_1[9] = _e204;
-            cuts_1[10] = (AIRLIGHT_PI - _e204);
+            cuts_2[9] = _e204;
+            cuts_2[10] = (AIRLIGHT_PI - _e204);
         }
     }
-    let _e210 = cuts_1[0];
-    let _e212 = cuts_1[1];
-    let _e214 = cuts_1[2];
-    let _e216 = cuts_1[3];
-    let _e218 = cuts_1[9];
-    let _e220 = cuts_1[10];
+    let _e210 = cuts_2[0];
+    let _e212 = cuts_2[1];
+    let _e214 = cuts_2[2];
+    let _e216 = cuts_2[3];
+    let _e218 = cuts_2[9];
+    let _e220 = cuts_2[10];
     let kinks = array<f32, 6>(_e210, _e212, _e214, _e216, _e218, _e220);
     loop {
-        let _e224 = i_18;
+        let _e224 = i_19;
         if (_e224 < 11u) {
         } else {
             break;
         }
         {
-            let _e227 = i_18;
-            let c_10 = cuts_1[_e227];
-            let _e230 = i_18;
+            let _e227 = i_19;
+            let c_13 = cuts_2[_e227];
+            let _e230 = i_19;
             j_4 = _e230;
             loop {
                 let _e232 = j_4;
                 if (_e232 > 0u) {
                     let _e237 = j_4;
-                    let _e241 = cuts_1[(_e237 - 1u)];
-                    local_131 = (_e241 > c_10);
+                    let _e241 = cuts_2[(_e237 - 1u)];
+                    local_132 = (_e241 > c_13);
                 } else {
-                    local_131 = false;
+                    local_132 = false;
                 }
-                let _e244 = local_131;
+                let _e244 = local_132;
                 if _e244 {
                 } else {
                     break;
@@ -5291,124 +5370,124 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 {
                     let _e245 = j_4;
                     let _e247 = j_4;
-                    let _e251 = cuts_1[(_e247 - 1u)];
-                    cuts_1[_e245] = _e251;
+                    let _e251 = cuts_2[(_e247 - 1u)];
+                    cuts_2[_e245] = _e251;
                     let _e252 = j_4;
                     j_4 = (_e252 - 1u);
                 }
             }
             let _e255 = j_4;
-            cuts_1[_e255] = c_10;
+            cuts_2[_e255] = c_13;
         }
         continuing {
-            let _e258 = i_18;
-            i_18 = (_e258 + 1u);
+            let _e258 = i_19;
+            i_19 = (_e258 + 1u);
         }
     }
-    let hi_5 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_6 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_20.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
-        let _e276 = i_19;
+        let _e276 = i_20;
         if (_e276 < 11u) {
         } else {
             break;
         }
         {
-            let _e279 = i_19;
-            let _e281 = cuts_1[_e279];
+            let _e279 = i_20;
+            let _e281 = cuts_2[_e279];
             let _e283 = k_4;
             let _e285 = g_20.gamma[_e283];
             if (_e281 > _e285) {
-                let _e289 = i_19;
-                let _e291 = cuts_1[_e289];
-                local_132 = (_e291 < hi_5);
+                let _e289 = i_20;
+                let _e291 = cuts_2[_e289];
+                local_133 = (_e291 < hi_6);
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            let _e294 = local_132;
+            let _e294 = local_133;
             if _e294 {
                 let _e295 = k_4;
                 k_4 = (_e295 + 1u);
                 let _e299 = k_4;
-                let _e301 = i_19;
-                let _e303 = cuts_1[_e301];
+                let _e301 = i_20;
+                let _e303 = cuts_2[_e301];
                 g_20.gamma[_e299] = _e303;
             }
         }
         continuing {
-            let _e305 = i_19;
-            i_19 = (_e305 + 1u);
+            let _e305 = i_20;
+            i_20 = (_e305 + 1u);
         }
     }
     let _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_5;
+    g_20.gamma[(_e308 + 1u)] = hi_6;
     let _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     loop {
-        let _e318 = i_20;
+        let _e318 = i_21;
         let _e320 = g_20.panels;
         if (_e318 <= _e320) {
         } else {
             break;
         }
         {
-            let _e323 = i_20;
-            let _e325 = i_20;
+            let _e323 = i_21;
+            let _e325 = i_21;
             g_20.edges[_e323] = f32(_e325);
         }
         continuing {
-            let _e328 = i_20;
-            i_20 = (_e328 + 1u);
+            let _e328 = i_21;
+            i_21 = (_e328 + 1u);
         }
     }
     if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         loop {
-            let _e335 = i_21;
+            let _e335 = i_22;
             let _e336 = k_4;
             if (_e335 <= _e336) {
             } else {
                 break;
             }
             {
-                let _e339 = i_21;
-                let e_4 = g_20.gamma[_e339];
-                if !((e_4 == kinks[0])) {
-                    local_133 = (e_4 == kinks[1]);
-                } else {
-                    local_133 = true;
-                }
-                let _e350 = local_133;
-                if !(_e350) {
-                    local_134 = (e_4 == kinks[2]);
+                let _e339 = i_22;
+                let e_5 = g_20.gamma[_e339];
+                if !((e_5 == kinks[0])) {
+                    local_134 = (e_5 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
-                let _e357 = local_134;
-                if !(_e357) {
-                    local_135 = (e_4 == kinks[3]);
+                let _e350 = local_134;
+                if !(_e350) {
+                    local_135 = (e_5 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
-                let _e364 = local_135;
-                if !(_e364) {
-                    local_136 = (e_4 == kinks[4]);
+                let _e357 = local_135;
+                if !(_e357) {
+                    local_136 = (e_5 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
-                let _e371 = local_136;
-                if !(_e371) {
-                    local_137 = (e_4 == kinks[5]);
+                let _e364 = local_136;
+                if !(_e364) {
+                    local_137 = (e_5 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
-                let kink = local_137;
+                let _e371 = local_137;
+                if !(_e371) {
+                    local_138 = (e_5 == kinks[5]);
+                } else {
+                    local_138 = true;
+                }
+                let kink = local_138;
                 let _e380 = g_20.smooth_edges;
-                let _e382 = i_21;
+                let _e382 = i_22;
                 g_20.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
             }
             continuing {
-                let _e388 = i_21;
-                i_21 = (_e388 + 1u);
+                let _e388 = i_22;
+                i_22 = (_e388 + 1u);
             }
         }
     }
@@ -5417,7 +5496,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_138: bool;
+    var local_139: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5428,11 +5507,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_138 = (clip > 0f);
+        local_139 = (clip > 0f);
     } else {
-        local_138 = false;
+        local_139 = false;
     }
-    let _e43 = local_138;
+    let _e43 = local_139;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5440,18 +5519,18 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     return 0f;
 }
 
-fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w: f32, u_2: f32, smoothstep_: bool) -> f32 {
+fn airlight_lobe_node(q_2: AirlightLobe, lo_4: f32, w: f32, u_2: f32, smoothstep_: bool) -> f32 {
     if smoothstep_ {
-        let _e18 = airlight_lobe_at(q_2, (lo_3 + (((w * u_2) * u_2) * ((3f - u_2) - u_2))));
+        let _e18 = airlight_lobe_at(q_2, (lo_4 + (((w * u_2) * u_2) * ((3f - u_2) - u_2))));
         return ((((w * 6f) * u_2) * (1f - u_2)) * _e18);
     }
-    let _e22 = airlight_lobe_at(q_2, (lo_3 + (w * u_2)));
+    let _e22 = airlight_lobe_at(q_2, (lo_4 + (w * u_2)));
     return (w * _e22);
 }
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end: f32;
-    var local_139: bool;
+    var local_140: bool;
 
     end = x_19;
     let _e3 = end;
@@ -5468,11 +5547,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end;
     if (_e16 > -(cut)) {
         let _e21 = end;
-        local_139 = (_e21 < cut);
+        local_140 = (_e21 < cut);
     } else {
-        local_139 = false;
+        local_140 = false;
     }
-    let _e24 = local_139;
+    let _e24 = local_140;
     return select(0f, _e15, _e24);
 }
 
@@ -5480,19 +5559,19 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
     return array<vec2<f32>, 5>(vec2<f32>(0.42556283f, 0.14776212f), vec2<f32>(0.2833023f, 0.13463336f), vec2<f32>(0.16029522f, 0.10954318f), vec2<f32>(0.067468315f, 0.07472567f), vec2<f32>(0.013046736f, 0.03333567f));
 }
 
-fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_140: bool;
+fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bool) -> f32 {
+    var local_141: bool;
     var sum_5: f32 = 0f;
     var k_5: u32 = 0u;
 
-    let w_6 = (hi_3 - lo_4);
+    let w_6 = (hi_4 - lo_5);
     if !(!((w_6 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_6)));
-        local_140 = !((_e14 > 0f));
+        let _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5f * w_6)));
+        local_141 = !((_e14 > 0f));
     } else {
-        local_140 = true;
+        local_141 = true;
     }
-    let _e19 = local_140;
+    let _e19 = local_141;
     if _e19 {
         return 0f;
     }
@@ -5507,8 +5586,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
             let _e29 = k_5;
             let node = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_4, w_6, node.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_4, w_6, (1f - node.x), smoothstep_1);
+            let _e34 = airlight_lobe_node(q_3, lo_5, w_6, node.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_5, w_6, (1f - node.x), smoothstep_1);
             sum_5 = (_e31 + (node.y * (_e34 + _e38)));
         }
         continuing {
@@ -5524,11 +5603,11 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var reach: f32 = 1f;
     var inner: vec2<f32> = vec2(0f);
     var sum_6: f32 = 0f;
-    var i_22: u32 = 0u;
+    var i_23: u32 = 0u;
 
-    let c_11 = (g_21.cos_r * cs.x);
+    let c_14 = (g_21.cos_r * cs.x);
     let d_4 = (g_21.sin_r * cs.y);
-    let peak = (c_11 + d_4);
+    let peak = (c_14 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
@@ -5562,21 +5641,21 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent < 1f);
     loop {
-        let _e99 = i_22;
+        let _e99 = i_23;
         if (_e99 < 3u) {
         } else {
             break;
         }
         {
             let _e102 = sum_6;
-            let _e103 = i_22;
-            let _e105 = i_22;
+            let _e103 = i_23;
+            let _e105 = i_23;
             let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
-            let _e112 = i_22;
-            i_22 = (_e112 + 1u);
+            let _e112 = i_23;
+            i_23 = (_e112 + 1u);
         }
     }
     let _e114 = sum_6;
@@ -5585,32 +5664,29 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_141: bool;
     var local_142: bool;
+    var local_143: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_143: bool;
     var local_144: bool;
     var local_145: bool;
     var local_146: bool;
     var local_147: bool;
     var local_148: bool;
-    var scale: f32 = 0f;
     var local_149: bool;
+    var scale: f32 = 0f;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
     var local_153: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
     var local_154: bool;
-    var i_23: u32 = 0u;
+    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_155: bool;
+    var i_24: u32 = 0u;
     var local_156: bool;
     var local_157: bool;
     var local_158: bool;
-    var n_1: u32 = 0u;
-    var i_24: u32 = 0u;
     var local_159: bool;
 
     if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -5626,27 +5702,27 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_23.light_end - s_23.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_141 = (s_23.intensity == 0f);
-    } else {
-        local_141 = true;
-    }
-    let _e26 = local_141;
-    if !(_e26) {
-        local_142 = (s_23.sigma_s == 0f);
+        local_142 = (s_23.intensity == 0f);
     } else {
         local_142 = true;
     }
-    let _e34 = local_142;
+    let _e26 = local_142;
+    if !(_e26) {
+        local_143 = (s_23.sigma_s == 0f);
+    } else {
+        local_143 = true;
+    }
+    let _e34 = local_143;
     if _e34 {
         g_22.outcome = 1u;
         let _e37 = g_22;
         return _e37;
     }
-    let e_5 = (ab_1 / vec3(_e15));
+    let e_6 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_23.dir);
     let w0_ = (s_23.light_position - s_23.origin);
-    let cos_a_2 = dot(e_5, _e41);
-    let along_e = dot(e_5, w0_);
+    let cos_a_2 = dot(e_6, _e41);
+    let along_e = dot(e_6, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_4 = ((s_23.flags & 1u) != 0u);
@@ -5657,101 +5733,101 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_5 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_6 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_143 = (sin_a_1 > 0f);
-    } else {
-        local_143 = false;
-    }
-    let _e84 = local_143;
-    if _e84 {
-        let _e87 = s_star;
-        local_144 = (_e87 >= 0f);
+        local_144 = (sin_a_1 > 0f);
     } else {
         local_144 = false;
     }
-    let _e91 = local_144;
-    if _e91 {
-        let _e94 = s_star;
-        local_145 = (_e94 <= _e15);
+    let _e84 = local_144;
+    if _e84 {
+        let _e87 = s_star;
+        local_145 = (_e87 >= 0f);
     } else {
         local_145 = false;
     }
-    let _e97 = local_145;
-    if _e97 {
-        let _e101 = t_star;
-        local_146 = (s_23.t_min <= _e101);
+    let _e91 = local_145;
+    if _e91 {
+        let _e94 = s_star;
+        local_146 = (_e94 <= _e15);
     } else {
         local_146 = false;
     }
-    let _e104 = local_146;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_148 = (_e110 <= s_23.t_max);
-        } else {
-            local_148 = true;
-        }
-        let _e114 = local_148;
-        local_147 = _e114;
+    let _e97 = local_146;
+    if _e97 {
+        let _e101 = t_star;
+        local_147 = (s_23.t_min <= _e101);
     } else {
         local_147 = false;
     }
-    let _e116 = local_147;
+    let _e104 = local_147;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_149 = (_e110 <= s_23.t_max);
+        } else {
+            local_149 = true;
+        }
+        let _e114 = local_149;
+        local_148 = _e114;
+    } else {
+        local_148 = false;
+    }
+    let _e116 = local_148;
     if _e116 {
         g_22.outcome = 2u;
         let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_149 = (_e73 > 0f);
+        local_150 = (_e73 > 0f);
     } else {
-        local_149 = false;
+        local_150 = false;
     }
-    let _e129 = local_149;
+    let _e129 = local_150;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_150 = (_e136 < (_e15 + _e15));
-    } else {
-        local_150 = false;
-    }
-    let _e140 = local_150;
-    if _e140 {
-        let _e143 = scale;
-        local_151 = (_e143 < _e15);
+        local_151 = (_e136 < (_e15 + _e15));
     } else {
         local_151 = false;
     }
-    let near_1 = local_151;
+    let _e140 = local_151;
+    if _e140 {
+        let _e143 = scale;
+        local_152 = (_e143 < _e15);
+    } else {
+        local_152 = false;
+    }
+    let near_1 = local_152;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_152 = _e154;
+        local_153 = _e154;
     } else {
-        local_152 = false;
+        local_153 = false;
     }
-    let _e156 = local_152;
+    let _e156 = local_153;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_153 = _e163;
+        local_154 = _e163;
     } else {
-        local_153 = false;
+        local_154 = false;
     }
-    let _e165 = local_153;
+    let _e165 = local_154;
     if !(_e165) {
         scale = 0f;
     }
-    g_22.e = e_5;
+    g_22.e = e_6;
     let _e170 = s_star;
     g_22.s_star = _e170;
     let _e172 = scale;
@@ -5764,140 +5840,86 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_22;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_154 = (min(-(_e194), _e197) < 0.5f);
+        local_155 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_154 = false;
+        local_155 = false;
     }
-    let sliver = local_154;
+    let sliver = local_155;
     loop {
-        let _e205 = i_23;
+        let _e205 = i_24;
         if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_23;
+            let _e208 = i_24;
             if (_e208 == 0u) {
-                local_155 = sliver;
+                local_156 = sliver;
             } else {
-                local_155 = false;
+                local_156 = false;
             }
-            let _e214 = local_155;
+            let _e214 = local_156;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_23;
-                local_156 = (_e219 > 0u);
-            } else {
-                local_156 = false;
-            }
-            let _e223 = local_156;
-            if _e223 {
-                continue;
-            }
-            let _e224 = i_23;
-            if (_e224 == 2u) {
-                local_157 = infinite_4;
+                let _e219 = i_24;
+                local_157 = (_e219 > 0u);
             } else {
                 local_157 = false;
             }
-            let _e230 = local_157;
-            if _e230 {
+            let _e223 = local_157;
+            if _e223 {
                 continue;
             }
-            let _e231 = i_23;
-            let _e233 = at[_e231];
-            if (_e233 > 0f) {
-                let _e238 = i_23;
-                let _e240 = at[_e238];
-                local_158 = (_e240 < _e15);
+            let _e224 = i_24;
+            if (_e224 == 2u) {
+                local_158 = infinite_4;
             } else {
                 local_158 = false;
             }
-            let _e243 = local_158;
-            if _e243 {
-                let _e244 = i_23;
-                let _e246 = g_22;
-                let _e247 = i_23;
-                let _e249 = at[_e247];
-                let _e250 = airlight_to_w(_e246, _e249);
-                cuts_2[_e244] = _e250;
+            let _e230 = local_158;
+            if _e230 {
+                continue;
             }
-        }
-        continuing {
-            let _e252 = i_23;
-            i_23 = (_e252 + 1u);
-        }
-    }
-    let _e255 = cuts_2[1];
-    let _e257 = cuts_2[0];
-    if (_e255 < _e257) {
-        let c_12 = cuts_2[0];
-        let _e263 = cuts_2[1];
-        cuts_2[0] = _e263;
-        cuts_2[1] = c_12;
-    }
-    let _e266 = cuts_2[2];
-    let _e268 = cuts_2[1];
-    if (_e266 < _e268) {
-        let c_13 = cuts_2[1];
-        let _e274 = cuts_2[2];
-        cuts_2[1] = _e274;
-        cuts_2[2] = c_13;
-    }
-    let _e277 = cuts_2[1];
-    let _e279 = cuts_2[0];
-    if (_e277 < _e279) {
-        let c_14 = cuts_2[0];
-        let _e285 = cuts_2[1];
-        cuts_2[0] = _e285;
-        cuts_2[1] = c_14;
-    }
-    let _e287 = g_22;
-    let _e288 = airlight_to_w(_e287, _e15);
-    let _e291 = g_22;
-    let _e293 = airlight_to_w(_e291, 0f);
-    g_22.edges[0] = _e293;
-    loop {
-        let _e298 = i_24;
-        if (_e298 < 3u) {
-        } else {
-            break;
-        }
-        {
-            let _e301 = i_24;
-            let _e303 = cuts_2[_e301];
-            let _e305 = n_1;
-            let _e307 = g_22.edges[_e305];
-            if (_e303 > _e307) {
-                let _e311 = i_24;
-                let _e313 = cuts_2[_e311];
-                local_159 = (_e313 < _e288);
+            let _e231 = i_24;
+            let _e233 = at[_e231];
+            if (_e233 > 0f) {
+                let _e238 = i_24;
+                let _e240 = at[_e238];
+                local_159 = (_e240 < _e15);
             } else {
                 local_159 = false;
             }
-            let _e316 = local_159;
-            if _e316 {
-                let _e317 = n_1;
-                n_1 = (_e317 + 1u);
-                let _e321 = n_1;
-                let _e323 = i_24;
-                let _e325 = cuts_2[_e323];
-                g_22.edges[_e321] = _e325;
+            let _e243 = local_159;
+            if _e243 {
+                let _e244 = i_24;
+                let _e246 = g_22;
+                let _e247 = i_24;
+                let _e249 = at[_e247];
+                let _e250 = airlight_to_w(_e246, _e249);
+                cuts_3[_e244] = _e250;
             }
         }
         continuing {
-            let _e327 = i_24;
-            i_24 = (_e327 + 1u);
+            let _e252 = i_24;
+            i_24 = (_e252 + 1u);
         }
     }
-    let _e330 = n_1;
-    g_22.edges[(_e330 + 1u)] = _e288;
-    let _e335 = n_1;
-    g_22.panels = (_e335 + 1u);
-    let _e338 = g_22;
-    return _e338;
+    let _e254 = g_22;
+    let _e256 = airlight_to_w(_e254, 0f);
+    let _e257 = g_22;
+    let _e258 = airlight_to_w(_e257, _e15);
+    let _e259 = cuts_3;
+    let _e260 = airlight_edges_between(_e256, _e258, _e259);
+    g_22.edges[0] = _e260.at[0];
+    g_22.edges[1] = _e260.at[1];
+    g_22.edges[2] = _e260.at[2];
+    g_22.edges[3] = _e260.at[3];
+    g_22.edges[4] = _e260.at[4];
+    g_22.panels = _e260.panels;
+    let _e283 = g_22;
+    return _e283;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {

@@ -114,6 +114,11 @@ struct AirlightListScan {
     worst: u32,
 }
 
+struct AirlightEdges {
+    at: array<f32, 5>,
+    panels: u32,
+}
+
 struct AirlightSplit {
     split: bool,
     lo: f32,
@@ -2715,8 +2720,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_5 = (v_s + inv_h);
     let r_11 = ((1f + (w_5 * w_5)) / (1f + (v_s * v_s)));
-    let e_5 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_5 * inv_h);
+    let e_6 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_6 * inv_h);
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
@@ -4319,9 +4324,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_6 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_6);
-    return vec2<f32>(_e4, select(0f, e_6, _e12));
+    let e_7 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_7);
+    return vec2<f32>(_e4, select(0f, e_7, _e12));
 }
 
 fn airlight_split_high(x_14: f32) -> f32 {
@@ -4334,9 +4339,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_7 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_7);
-    return vec2<f32>(_e4, select(0f, e_7, _e17));
+    let e_8 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_8);
+    return vec2<f32>(_e4, select(0f, e_8, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4377,10 +4382,10 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
     let _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
     let _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
-    let hi_5 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_6 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir_2 = s_20.dir;
-    let _e33 = airlight_in_exact_range(hi_5);
+    let _e33 = airlight_in_exact_range(hi_6);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
         local_125 = !(_e38);
@@ -4391,10 +4396,10 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_5.y, dir_2.z, hi_5.z, dir_2.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_5.z, dir_2.x, hi_5.x, dir_2.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_5.x, dir_2.y, hi_5.y, dir_2.x, key_4);
-    let w_7 = vec3<f32>((_e46 + ((lo_6.y * dir_2.z) - (lo_6.z * dir_2.y))), (_e59 + ((lo_6.z * dir_2.x) - (lo_6.x * dir_2.z))), (_e72 + ((lo_6.x * dir_2.y) - (lo_6.y * dir_2.x))));
+    let _e46 = airlight_diff_of_products(hi_6.y, dir_2.z, hi_6.z, dir_2.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_6.z, dir_2.x, hi_6.x, dir_2.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_6.x, dir_2.y, hi_6.y, dir_2.x, key_4);
+    let w_7 = vec3<f32>((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
     let _e82 = airlight_vec_finite(w_7);
     if !(_e82) {
         return plain;
@@ -4425,10 +4430,10 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_7);
-    let n_5 = -(cross(_e113, _e114));
+    let n_4 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_16;
-    out_2.d_c = dot(n_5, _e119);
+    out_2.d_c = dot(n_4, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -4746,11 +4751,85 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
+fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> AirlightEdges {
+    var cuts_1: array<f32, 3>;
+    var e_1: AirlightEdges;
+    var n_1: u32 = 0u;
+    var i_18: u32 = 0u;
+    var local_127: bool;
+
+    cuts_1 = unsorted;
+    let _e5 = cuts_1[1];
+    let _e7 = cuts_1[0];
+    if (_e5 < _e7) {
+        let c_11 = cuts_1[0];
+        let _e13 = cuts_1[1];
+        cuts_1[0] = _e13;
+        cuts_1[1] = c_11;
+    }
+    let _e16 = cuts_1[2];
+    let _e18 = cuts_1[1];
+    if (_e16 < _e18) {
+        let c_12 = cuts_1[1];
+        let _e24 = cuts_1[2];
+        cuts_1[1] = _e24;
+        cuts_1[2] = c_12;
+    }
+    let _e27 = cuts_1[1];
+    let _e29 = cuts_1[0];
+    if (_e27 < _e29) {
+        let c_13 = cuts_1[0];
+        let _e35 = cuts_1[1];
+        cuts_1[0] = _e35;
+        cuts_1[1] = c_13;
+    }
+    e_1 = AirlightEdges(array<f32, 5>(lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    loop {
+        let _e45 = i_18;
+        if (_e45 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e48 = i_18;
+            let _e50 = cuts_1[_e48];
+            let _e52 = n_1;
+            let _e54 = e_1.at[_e52];
+            if (_e50 > _e54) {
+                let _e58 = i_18;
+                let _e60 = cuts_1[_e58];
+                local_127 = (_e60 < hi_3);
+            } else {
+                local_127 = false;
+            }
+            let _e63 = local_127;
+            if _e63 {
+                let _e64 = n_1;
+                n_1 = (_e64 + 1u);
+                let _e68 = n_1;
+                let _e70 = i_18;
+                let _e72 = cuts_1[_e70];
+                e_1.at[_e68] = _e72;
+            }
+        }
+        continuing {
+            let _e74 = i_18;
+            i_18 = (_e74 + 1u);
+        }
+    }
+    let _e77 = n_1;
+    e_1.at[(_e77 + 1u)] = hi_3;
+    let _e82 = n_1;
+    e_1.panels = (_e82 + 1u);
+    let _e85 = e_1;
+    return _e85;
+}
+
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
-    var local_127: bool;
     var local_128: bool;
     var local_129: bool;
+    var local_130: bool;
 
     loop {
         let _e6 = tries;
@@ -4762,18 +4841,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_127 = (count_2 == max_panels);
-            } else {
-                local_127 = true;
-            }
-            let _e21 = local_127;
-            if !(_e21) {
-                let _e26 = airlight_is_finite(_e9.total);
-                local_128 = !(_e26);
+                local_128 = (count_2 == max_panels);
             } else {
                 local_128 = true;
             }
-            let _e29 = local_128;
+            let _e21 = local_128;
+            if !(_e21) {
+                let _e26 = airlight_is_finite(_e9.total);
+                local_129 = !(_e26);
+            } else {
+                local_129 = true;
+            }
+            let _e29 = local_129;
             if _e29 {
                 break;
             }
@@ -4781,11 +4860,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_1 = (0.5f * (_e32.x + _e32.y));
             if (mid_1 > _e32.x) {
-                local_129 = (mid_1 < _e32.y);
+                local_130 = (mid_1 < _e32.y);
             } else {
-                local_129 = false;
+                local_130 = false;
             }
-            let _e45 = local_129;
+            let _e45 = local_130;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -4858,33 +4937,33 @@ fn airlight_outer_point(s_23: AirlightScene, max_panels_1: u32) -> AirlightOuter
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_130: bool;
-    var u_1: vec3<f32>;
-    var cuts_1: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var i_18: u32 = 1u;
-    var j_4: u32;
     var local_131: bool;
-    var k_5: u32 = 0u;
-    var i_19: u32 = 0u;
+    var u_1: vec3<f32>;
+    var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var i_19: u32 = 1u;
+    var j_4: u32;
     var local_132: bool;
+    var k_5: u32 = 0u;
     var i_20: u32 = 0u;
-    var i_21: u32 = 1u;
     var local_133: bool;
+    var i_21: u32 = 0u;
+    var i_22: u32 = 1u;
     var local_134: bool;
     var local_135: bool;
     var local_136: bool;
     var local_137: bool;
+    var local_138: bool;
 
     let _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     let to_light_1 = (s_24.light_position - s_24.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_24.intensity == 0f)) {
-        local_130 = (s_24.sigma_s == 0f);
+        local_131 = (s_24.sigma_s == 0f);
     } else {
-        local_130 = true;
+        local_131 = true;
     }
-    let _e18 = local_130;
+    let _e18 = local_131;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -4923,8 +5002,8 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     g_22.sin_a = _e41;
     let _e92 = airlight_angle(cos_a_1, _e41);
     let first_1 = abs((1.5707964f - _e92));
-    cuts_1[0] = first_1;
-    cuts_1[1] = (AIRLIGHT_PI - first_1);
+    cuts_2[0] = first_1;
+    cuts_2[1] = (AIRLIGHT_PI - first_1);
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         let _e105 = airlight_normalize(s_24.brdf_view);
@@ -4949,57 +5028,57 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
-        cuts_1[2] = first_r;
-        cuts_1[3] = (AIRLIGHT_PI - first_r);
+        cuts_2[2] = first_r;
+        cuts_2[3] = (AIRLIGHT_PI - first_r);
         let _e163 = g_22.alpha_r;
-        cuts_1[4] = _e163;
+        cuts_2[4] = _e163;
         if (s_24.brdf_exponent > 1f) {
             let width_3 = (1f / sqrt(s_24.brdf_exponent));
             let _e173 = g_22.alpha_r;
-            cuts_1[5] = (_e173 - (1.5f * width_3));
+            cuts_2[5] = (_e173 - (1.5f * width_3));
             let _e179 = g_22.alpha_r;
-            cuts_1[6] = (_e179 + (1.5f * width_3));
+            cuts_2[6] = (_e179 + (1.5f * width_3));
             let _e185 = g_22.alpha_r;
-            cuts_1[7] = (_e185 - (4f * width_3));
+            cuts_2[7] = (_e185 - (4f * width_3));
             let _e191 = g_22.alpha_r;
-            cuts_1[8] = (_e191 + (4f * width_3));
+            cuts_2[8] = (_e191 + (4f * width_3));
         }
         let meet = cross(_e37, _e111);
         let _e196 = airlight_safe_length(meet);
         if (_e196 > AIRLIGHT_FLT_EPS) {
             let _e204 = airlight_acos(clamp((dot(meet, l_3) / _e196), -1f, 1f));
-            cuts_1[9] = _e204;
-            cuts_1[10] = (AIRLIGHT_PI - _e204);
+            cuts_2[9] = _e204;
+            cuts_2[10] = (AIRLIGHT_PI - _e204);
         }
     }
-    let _e210 = cuts_1[0];
-    let _e212 = cuts_1[1];
-    let _e214 = cuts_1[2];
-    let _e216 = cuts_1[3];
-    let _e218 = cuts_1[9];
-    let _e220 = cuts_1[10];
+    let _e210 = cuts_2[0];
+    let _e212 = cuts_2[1];
+    let _e214 = cuts_2[2];
+    let _e216 = cuts_2[3];
+    let _e218 = cuts_2[9];
+    let _e220 = cuts_2[10];
     let kinks = array<f32, 6>(_e210, _e212, _e214, _e216, _e218, _e220);
     loop {
-        let _e224 = i_18;
+        let _e224 = i_19;
         if (_e224 < 11u) {
         } else {
             break;
         }
         {
-            let _e227 = i_18;
-            let c_11 = cuts_1[_e227];
-            let _e230 = i_18;
+            let _e227 = i_19;
+            let c_14 = cuts_2[_e227];
+            let _e230 = i_19;
             j_4 = _e230;
             loop {
                 let _e232 = j_4;
                 if (_e232 > 0u) {
                     let _e237 = j_4;
-                    let _e241 = cuts_1[(_e237 - 1u)];
-                    local_131 = (_e241 > c_11);
+                    let _e241 = cuts_2[(_e237 - 1u)];
+                    local_132 = (_e241 > c_14);
                 } else {
-                    local_131 = false;
+                    local_132 = false;
                 }
-                let _e244 = local_131;
+                let _e244 = local_132;
                 if _e244 {
                 } else {
                     break;
@@ -5007,124 +5086,124 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
                 {
                     let _e245 = j_4;
                     let _e247 = j_4;
-                    let _e251 = cuts_1[(_e247 - 1u)];
-                    cuts_1[_e245] = _e251;
+                    let _e251 = cuts_2[(_e247 - 1u)];
+                    cuts_2[_e245] = _e251;
                     let _e252 = j_4;
                     j_4 = (_e252 - 1u);
                 }
             }
             let _e255 = j_4;
-            cuts_1[_e255] = c_11;
+            cuts_2[_e255] = c_14;
         }
         continuing {
-            let _e258 = i_18;
-            i_18 = (_e258 + 1u);
+            let _e258 = i_19;
+            i_19 = (_e258 + 1u);
         }
     }
-    let hi_6 = select((AIRLIGHT_PI - first_1), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_7 = select((AIRLIGHT_PI - first_1), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first_1, (cos_a_1 < 0f));
     loop {
-        let _e276 = i_19;
+        let _e276 = i_20;
         if (_e276 < 11u) {
         } else {
             break;
         }
         {
-            let _e279 = i_19;
-            let _e281 = cuts_1[_e279];
+            let _e279 = i_20;
+            let _e281 = cuts_2[_e279];
             let _e283 = k_5;
             let _e285 = g_22.gamma[_e283];
             if (_e281 > _e285) {
-                let _e289 = i_19;
-                let _e291 = cuts_1[_e289];
-                local_132 = (_e291 < hi_6);
+                let _e289 = i_20;
+                let _e291 = cuts_2[_e289];
+                local_133 = (_e291 < hi_7);
             } else {
-                local_132 = false;
+                local_133 = false;
             }
-            let _e294 = local_132;
+            let _e294 = local_133;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
                 let _e299 = k_5;
-                let _e301 = i_19;
-                let _e303 = cuts_1[_e301];
+                let _e301 = i_20;
+                let _e303 = cuts_2[_e301];
                 g_22.gamma[_e299] = _e303;
             }
         }
         continuing {
-            let _e305 = i_19;
-            i_19 = (_e305 + 1u);
+            let _e305 = i_20;
+            i_20 = (_e305 + 1u);
         }
     }
     let _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_6;
+    g_22.gamma[(_e308 + 1u)] = hi_7;
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
-        let _e318 = i_20;
+        let _e318 = i_21;
         let _e320 = g_22.panels;
         if (_e318 <= _e320) {
         } else {
             break;
         }
         {
-            let _e323 = i_20;
-            let _e325 = i_20;
+            let _e323 = i_21;
+            let _e325 = i_21;
             g_22.edges[_e323] = f32(_e325);
         }
         continuing {
-            let _e328 = i_20;
-            i_20 = (_e328 + 1u);
+            let _e328 = i_21;
+            i_21 = (_e328 + 1u);
         }
     }
     if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         loop {
-            let _e335 = i_21;
+            let _e335 = i_22;
             let _e336 = k_5;
             if (_e335 <= _e336) {
             } else {
                 break;
             }
             {
-                let _e339 = i_21;
-                let e_8 = g_22.gamma[_e339];
-                if !((e_8 == kinks[0])) {
-                    local_133 = (e_8 == kinks[1]);
-                } else {
-                    local_133 = true;
-                }
-                let _e350 = local_133;
-                if !(_e350) {
-                    local_134 = (e_8 == kinks[2]);
+                let _e339 = i_22;
+                let e_9 = g_22.gamma[_e339];
+                if !((e_9 == kinks[0])) {
+                    local_134 = (e_9 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
-                let _e357 = local_134;
-                if !(_e357) {
-                    local_135 = (e_8 == kinks[3]);
+                let _e350 = local_134;
+                if !(_e350) {
+                    local_135 = (e_9 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
-                let _e364 = local_135;
-                if !(_e364) {
-                    local_136 = (e_8 == kinks[4]);
+                let _e357 = local_135;
+                if !(_e357) {
+                    local_136 = (e_9 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
-                let _e371 = local_136;
-                if !(_e371) {
-                    local_137 = (e_8 == kinks[5]);
+                let _e364 = local_136;
+                if !(_e364) {
+                    local_137 = (e_9 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
-                let kink = local_137;
+                let _e371 = local_137;
+                if !(_e371) {
+                    local_138 = (e_9 == kinks[5]);
+                } else {
+                    local_138 = true;
+                }
+                let kink = local_138;
                 let _e380 = g_22.smooth_edges;
-                let _e382 = i_21;
+                let _e382 = i_22;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
             }
             continuing {
-                let _e388 = i_21;
-                i_21 = (_e388 + 1u);
+                let _e388 = i_22;
+                i_22 = (_e388 + 1u);
             }
         }
     }
@@ -5133,7 +5212,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_138: bool;
+    var local_139: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5144,11 +5223,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_138 = (clip > 0f);
+        local_139 = (clip > 0f);
     } else {
-        local_138 = false;
+        local_139 = false;
     }
-    let _e43 = local_138;
+    let _e43 = local_139;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5156,18 +5235,18 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     return 0f;
 }
 
-fn airlight_lobe_node(q_2: AirlightLobe, lo_3: f32, w_1: f32, u_2: f32, smoothstep_: bool) -> f32 {
+fn airlight_lobe_node(q_2: AirlightLobe, lo_4: f32, w_1: f32, u_2: f32, smoothstep_: bool) -> f32 {
     if smoothstep_ {
-        let _e18 = airlight_lobe_at(q_2, (lo_3 + (((w_1 * u_2) * u_2) * ((3f - u_2) - u_2))));
+        let _e18 = airlight_lobe_at(q_2, (lo_4 + (((w_1 * u_2) * u_2) * ((3f - u_2) - u_2))));
         return ((((w_1 * 6f) * u_2) * (1f - u_2)) * _e18);
     }
-    let _e22 = airlight_lobe_at(q_2, (lo_3 + (w_1 * u_2)));
+    let _e22 = airlight_lobe_at(q_2, (lo_4 + (w_1 * u_2)));
     return (w_1 * _e22);
 }
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_139: bool;
+    var local_140: bool;
 
     end_1 = x_19;
     let _e3 = end_1;
@@ -5184,11 +5263,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_139 = (_e21 < cut);
+        local_140 = (_e21 < cut);
     } else {
-        local_139 = false;
+        local_140 = false;
     }
-    let _e24 = local_139;
+    let _e24 = local_140;
     return select(0f, _e15, _e24);
 }
 
@@ -5196,19 +5275,19 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
     return array<vec2<f32>, 5>(vec2<f32>(0.42556283f, 0.14776212f), vec2<f32>(0.2833023f, 0.13463336f), vec2<f32>(0.16029522f, 0.10954318f), vec2<f32>(0.067468315f, 0.07472567f), vec2<f32>(0.013046736f, 0.03333567f));
 }
 
-fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bool) -> f32 {
-    var local_140: bool;
+fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bool) -> f32 {
+    var local_141: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
-    let w_8 = (hi_3 - lo_4);
+    let w_8 = (hi_4 - lo_5);
     if !(!((w_8 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_4 + (0.5f * w_8)));
-        local_140 = !((_e14 > 0f));
+        let _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5f * w_8)));
+        local_141 = !((_e14 > 0f));
     } else {
-        local_140 = true;
+        local_141 = true;
     }
-    let _e19 = local_140;
+    let _e19 = local_141;
     if _e19 {
         return 0f;
     }
@@ -5223,8 +5302,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_4: f32, hi_3: f32, smoothstep_1: bo
             let _e29 = k_6;
             let node_1 = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_4, w_8, node_1.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_4, w_8, (1f - node_1.x), smoothstep_1);
+            let _e34 = airlight_lobe_node(q_3, lo_5, w_8, node_1.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_5, w_8, (1f - node_1.x), smoothstep_1);
             sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
         continuing {
@@ -5240,11 +5319,11 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var reach: f32 = 1f;
     var inner: vec2<f32> = vec2(0f);
     var sum_6: f32 = 0f;
-    var i_22: u32 = 0u;
+    var i_23: u32 = 0u;
 
-    let c_12 = (g_23.cos_r * cs.x);
+    let c_15 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
-    let peak = (c_12 + d_4);
+    let peak = (c_15 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
@@ -5278,21 +5357,21 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
-        let _e99 = i_22;
+        let _e99 = i_23;
         if (_e99 < 3u) {
         } else {
             break;
         }
         {
             let _e102 = sum_6;
-            let _e103 = i_22;
-            let _e105 = i_22;
+            let _e103 = i_23;
+            let _e105 = i_23;
             let _e109 = airlight_lobe_piece(q_7, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
-            let _e112 = i_22;
-            i_22 = (_e112 + 1u);
+            let _e112 = i_23;
+            i_23 = (_e112 + 1u);
         }
     }
     let _e114 = sum_6;
@@ -5301,32 +5380,29 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_141: bool;
     var local_142: bool;
+    var local_143: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
-    var local_143: bool;
     var local_144: bool;
     var local_145: bool;
     var local_146: bool;
     var local_147: bool;
     var local_148: bool;
-    var scale: f32 = 0f;
     var local_149: bool;
+    var scale: f32 = 0f;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
     var local_153: bool;
-    var cuts_2: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
     var local_154: bool;
-    var i_23: u32 = 0u;
+    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_155: bool;
+    var i_24: u32 = 0u;
     var local_156: bool;
     var local_157: bool;
     var local_158: bool;
-    var n_1: u32 = 0u;
-    var i_24: u32 = 0u;
     var local_159: bool;
 
     if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
@@ -5342,27 +5418,27 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_25.light_end - s_25.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_141 = (s_25.intensity == 0f);
-    } else {
-        local_141 = true;
-    }
-    let _e26 = local_141;
-    if !(_e26) {
-        local_142 = (s_25.sigma_s == 0f);
+        local_142 = (s_25.intensity == 0f);
     } else {
         local_142 = true;
     }
-    let _e34 = local_142;
+    let _e26 = local_142;
+    if !(_e26) {
+        local_143 = (s_25.sigma_s == 0f);
+    } else {
+        local_143 = true;
+    }
+    let _e34 = local_143;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
         return _e37;
     }
-    let e_9 = (ab_1 / vec3(_e15));
+    let e_10 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_25.dir);
     let w0_ = (s_25.light_position - s_25.origin);
-    let cos_a_2 = dot(e_9, _e41);
-    let along_e = dot(e_9, w0_);
+    let cos_a_2 = dot(e_10, _e41);
+    let along_e = dot(e_10, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_5 = ((s_25.flags & 1u) != 0u);
@@ -5373,101 +5449,101 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_9 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_10 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_143 = (sin_a_1 > 0f);
-    } else {
-        local_143 = false;
-    }
-    let _e84 = local_143;
-    if _e84 {
-        let _e87 = s_star;
-        local_144 = (_e87 >= 0f);
+        local_144 = (sin_a_1 > 0f);
     } else {
         local_144 = false;
     }
-    let _e91 = local_144;
-    if _e91 {
-        let _e94 = s_star;
-        local_145 = (_e94 <= _e15);
+    let _e84 = local_144;
+    if _e84 {
+        let _e87 = s_star;
+        local_145 = (_e87 >= 0f);
     } else {
         local_145 = false;
     }
-    let _e97 = local_145;
-    if _e97 {
-        let _e101 = t_star;
-        local_146 = (s_25.t_min <= _e101);
+    let _e91 = local_145;
+    if _e91 {
+        let _e94 = s_star;
+        local_146 = (_e94 <= _e15);
     } else {
         local_146 = false;
     }
-    let _e104 = local_146;
-    if _e104 {
-        if !(infinite_5) {
-            let _e110 = t_star;
-            local_148 = (_e110 <= s_25.t_max);
-        } else {
-            local_148 = true;
-        }
-        let _e114 = local_148;
-        local_147 = _e114;
+    let _e97 = local_146;
+    if _e97 {
+        let _e101 = t_star;
+        local_147 = (s_25.t_min <= _e101);
     } else {
         local_147 = false;
     }
-    let _e116 = local_147;
+    let _e104 = local_147;
+    if _e104 {
+        if !(infinite_5) {
+            let _e110 = t_star;
+            local_149 = (_e110 <= s_25.t_max);
+        } else {
+            local_149 = true;
+        }
+        let _e114 = local_149;
+        local_148 = _e114;
+    } else {
+        local_148 = false;
+    }
+    let _e116 = local_148;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_149 = (_e73 > 0f);
+        local_150 = (_e73 > 0f);
     } else {
-        local_149 = false;
+        local_150 = false;
     }
-    let _e129 = local_149;
+    let _e129 = local_150;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_150 = (_e136 < (_e15 + _e15));
-    } else {
-        local_150 = false;
-    }
-    let _e140 = local_150;
-    if _e140 {
-        let _e143 = scale;
-        local_151 = (_e143 < _e15);
+        local_151 = (_e136 < (_e15 + _e15));
     } else {
         local_151 = false;
     }
-    let near_1 = local_151;
+    let _e140 = local_151;
+    if _e140 {
+        let _e143 = scale;
+        local_152 = (_e143 < _e15);
+    } else {
+        local_152 = false;
+    }
+    let near_1 = local_152;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_152 = _e154;
+        local_153 = _e154;
     } else {
-        local_152 = false;
+        local_153 = false;
     }
-    let _e156 = local_152;
+    let _e156 = local_153;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_153 = _e163;
+        local_154 = _e163;
     } else {
-        local_153 = false;
+        local_154 = false;
     }
-    let _e165 = local_153;
+    let _e165 = local_154;
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_9;
+    g_24.e = e_10;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -5480,140 +5556,86 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_24;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_154 = (min(-(_e194), _e197) < 0.5f);
+        local_155 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_154 = false;
+        local_155 = false;
     }
-    let sliver = local_154;
+    let sliver = local_155;
     loop {
-        let _e205 = i_23;
+        let _e205 = i_24;
         if (_e205 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_23;
+            let _e208 = i_24;
             if (_e208 == 0u) {
-                local_155 = sliver;
+                local_156 = sliver;
             } else {
-                local_155 = false;
+                local_156 = false;
             }
-            let _e214 = local_155;
+            let _e214 = local_156;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_23;
-                local_156 = (_e219 > 0u);
-            } else {
-                local_156 = false;
-            }
-            let _e223 = local_156;
-            if _e223 {
-                continue;
-            }
-            let _e224 = i_23;
-            if (_e224 == 2u) {
-                local_157 = infinite_5;
+                let _e219 = i_24;
+                local_157 = (_e219 > 0u);
             } else {
                 local_157 = false;
             }
-            let _e230 = local_157;
-            if _e230 {
+            let _e223 = local_157;
+            if _e223 {
                 continue;
             }
-            let _e231 = i_23;
-            let _e233 = at[_e231];
-            if (_e233 > 0f) {
-                let _e238 = i_23;
-                let _e240 = at[_e238];
-                local_158 = (_e240 < _e15);
+            let _e224 = i_24;
+            if (_e224 == 2u) {
+                local_158 = infinite_5;
             } else {
                 local_158 = false;
             }
-            let _e243 = local_158;
-            if _e243 {
-                let _e244 = i_23;
-                let _e246 = g_24;
-                let _e247 = i_23;
-                let _e249 = at[_e247];
-                let _e250 = airlight_to_w(_e246, _e249);
-                cuts_2[_e244] = _e250;
+            let _e230 = local_158;
+            if _e230 {
+                continue;
             }
-        }
-        continuing {
-            let _e252 = i_23;
-            i_23 = (_e252 + 1u);
-        }
-    }
-    let _e255 = cuts_2[1];
-    let _e257 = cuts_2[0];
-    if (_e255 < _e257) {
-        let c_13 = cuts_2[0];
-        let _e263 = cuts_2[1];
-        cuts_2[0] = _e263;
-        cuts_2[1] = c_13;
-    }
-    let _e266 = cuts_2[2];
-    let _e268 = cuts_2[1];
-    if (_e266 < _e268) {
-        let c_14 = cuts_2[1];
-        let _e274 = cuts_2[2];
-        cuts_2[1] = _e274;
-        cuts_2[2] = c_14;
-    }
-    let _e277 = cuts_2[1];
-    let _e279 = cuts_2[0];
-    if (_e277 < _e279) {
-        let c_15 = cuts_2[0];
-        let _e285 = cuts_2[1];
-        cuts_2[0] = _e285;
-        cuts_2[1] = c_15;
-    }
-    let _e287 = g_24;
-    let _e288 = airlight_to_w(_e287, _e15);
-    let _e291 = g_24;
-    let _e293 = airlight_to_w(_e291, 0f);
-    g_24.edges[0] = _e293;
-    loop {
-        let _e298 = i_24;
-        if (_e298 < 3u) {
-        } else {
-            break;
-        }
-        {
-            let _e301 = i_24;
-            let _e303 = cuts_2[_e301];
-            let _e305 = n_1;
-            let _e307 = g_24.edges[_e305];
-            if (_e303 > _e307) {
-                let _e311 = i_24;
-                let _e313 = cuts_2[_e311];
-                local_159 = (_e313 < _e288);
+            let _e231 = i_24;
+            let _e233 = at[_e231];
+            if (_e233 > 0f) {
+                let _e238 = i_24;
+                let _e240 = at[_e238];
+                local_159 = (_e240 < _e15);
             } else {
                 local_159 = false;
             }
-            let _e316 = local_159;
-            if _e316 {
-                let _e317 = n_1;
-                n_1 = (_e317 + 1u);
-                let _e321 = n_1;
-                let _e323 = i_24;
-                let _e325 = cuts_2[_e323];
-                g_24.edges[_e321] = _e325;
+            let _e243 = local_159;
+            if _e243 {
+                let _e244 = i_24;
+                let _e246 = g_24;
+                let _e247 = i_24;
+                let _e249 = at[_e247];
+                let _e250 = airlight_to_w(_e246, _e249);
+                cuts_3[_e244] = _e250;
             }
         }
         continuing {
-            let _e327 = i_24;
-            i_24 = (_e327 + 1u);
+            let _e252 = i_24;
+            i_24 = (_e252 + 1u);
         }
     }
-    let _e330 = n_1;
-    g_24.edges[(_e330 + 1u)] = _e288;
-    let _e335 = n_1;
-    g_24.panels = (_e335 + 1u);
-    let _e338 = g_24;
-    return _e338;
+    let _e254 = g_24;
+    let _e256 = airlight_to_w(_e254, 0f);
+    let _e257 = g_24;
+    let _e258 = airlight_to_w(_e257, _e15);
+    let _e259 = cuts_3;
+    let _e260 = airlight_edges_between(_e256, _e258, _e259);
+    g_24.edges[0] = _e260.at[0];
+    g_24.edges[1] = _e260.at[1];
+    g_24.edges[2] = _e260.at[2];
+    g_24.edges[3] = _e260.at[3];
+    g_24.edges[4] = _e260.at[4];
+    g_24.panels = _e260.panels;
+    let _e283 = g_24;
+    return _e283;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -5639,14 +5661,14 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_34 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_8 = (x_20 - f32(i_34));
-        let a_40 = g_25.gamma[i_34];
-        let b_19 = g_25.gamma[(i_34 + 1u)];
+        let i_33 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_20 - f32(i_33));
+        let a_40 = g_25.gamma[i_33];
+        let b_19 = g_25.gamma[(i_33 + 1u)];
         let w_9 = (b_19 - a_40);
         let u_6 = (1f - t_8);
-        let smooth_a = (((g_25.smooth_edges >> i_34) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_34 + 1u)) & 1u) != 0u);
+        let smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
         gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
         jacobian = (((w_9 * 6f) * t_8) * u_6);
         let _e58 = gamma_1;
@@ -5714,10 +5736,10 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_26.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_6 = s_26.brdf_exponent;
+            let n_5 = s_26.brdf_exponent;
             let _e161 = gamma_1;
-            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
-            weight = (((s_26.brdf_scale * (n_6 + 2f)) * 0.15915494f) * _e162);
+            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
+            weight = (((s_26.brdf_scale * (n_5 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
@@ -5769,7 +5791,7 @@ fn airlight_area_phase(s_27: AirlightScene, mu_2: f32) -> f32 {
 }
 
 fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
-    var e_1: u32;
+    var e_2: u32;
     var base_1: f32;
     var acc_1: f32 = 1f;
 
@@ -5777,115 +5799,115 @@ fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
     if (p_2 <= 1u) {
         return s_28.intensity;
     }
-    e_1 = (p_2 - 1u);
+    e_2 = (p_2 - 1u);
     base_1 = c_7;
-    let _e13 = e_1;
+    let _e13 = e_2;
     if ((_e13 & 1u) != 0u) {
         let _e18 = acc_1;
         let _e19 = base_1;
         acc_1 = (_e18 * _e19);
     }
-    let _e21 = e_1;
-    e_1 = (_e21 >> 1u);
+    let _e21 = e_2;
+    e_2 = (_e21 >> 1u);
     let _e24 = base_1;
     let _e25 = base_1;
     base_1 = (_e24 * _e25);
-    let _e27 = e_1;
+    let _e27 = e_2;
     if ((_e27 & 1u) != 0u) {
         let _e32 = acc_1;
         let _e33 = base_1;
         acc_1 = (_e32 * _e33);
     }
-    let _e35 = e_1;
-    e_1 = (_e35 >> 1u);
+    let _e35 = e_2;
+    e_2 = (_e35 >> 1u);
     let _e38 = base_1;
     let _e39 = base_1;
     base_1 = (_e38 * _e39);
-    let _e41 = e_1;
+    let _e41 = e_2;
     if ((_e41 & 1u) != 0u) {
         let _e46 = acc_1;
         let _e47 = base_1;
         acc_1 = (_e46 * _e47);
     }
-    let _e49 = e_1;
-    e_1 = (_e49 >> 1u);
+    let _e49 = e_2;
+    e_2 = (_e49 >> 1u);
     let _e52 = base_1;
     let _e53 = base_1;
     base_1 = (_e52 * _e53);
-    let _e55 = e_1;
+    let _e55 = e_2;
     if ((_e55 & 1u) != 0u) {
         let _e60 = acc_1;
         let _e61 = base_1;
         acc_1 = (_e60 * _e61);
     }
-    let _e63 = e_1;
-    e_1 = (_e63 >> 1u);
+    let _e63 = e_2;
+    e_2 = (_e63 >> 1u);
     let _e66 = base_1;
     let _e67 = base_1;
     base_1 = (_e66 * _e67);
-    let _e69 = e_1;
+    let _e69 = e_2;
     if ((_e69 & 1u) != 0u) {
         let _e74 = acc_1;
         let _e75 = base_1;
         acc_1 = (_e74 * _e75);
     }
-    let _e77 = e_1;
-    e_1 = (_e77 >> 1u);
+    let _e77 = e_2;
+    e_2 = (_e77 >> 1u);
     let _e80 = base_1;
     let _e81 = base_1;
     base_1 = (_e80 * _e81);
-    let _e83 = e_1;
+    let _e83 = e_2;
     if ((_e83 & 1u) != 0u) {
         let _e88 = acc_1;
         let _e89 = base_1;
         acc_1 = (_e88 * _e89);
     }
-    let _e91 = e_1;
-    e_1 = (_e91 >> 1u);
+    let _e91 = e_2;
+    e_2 = (_e91 >> 1u);
     let _e94 = base_1;
     let _e95 = base_1;
     base_1 = (_e94 * _e95);
-    let _e97 = e_1;
+    let _e97 = e_2;
     if ((_e97 & 1u) != 0u) {
         let _e102 = acc_1;
         let _e103 = base_1;
         acc_1 = (_e102 * _e103);
     }
-    let _e105 = e_1;
-    e_1 = (_e105 >> 1u);
+    let _e105 = e_2;
+    e_2 = (_e105 >> 1u);
     let _e108 = base_1;
     let _e109 = base_1;
     base_1 = (_e108 * _e109);
-    let _e111 = e_1;
+    let _e111 = e_2;
     if ((_e111 & 1u) != 0u) {
         let _e116 = acc_1;
         let _e117 = base_1;
         acc_1 = (_e116 * _e117);
     }
-    let _e119 = e_1;
-    e_1 = (_e119 >> 1u);
+    let _e119 = e_2;
+    e_2 = (_e119 >> 1u);
     let _e122 = base_1;
     let _e123 = base_1;
     base_1 = (_e122 * _e123);
-    let _e125 = e_1;
+    let _e125 = e_2;
     if ((_e125 & 1u) != 0u) {
         let _e130 = acc_1;
         let _e131 = base_1;
         acc_1 = (_e130 * _e131);
     }
-    let _e133 = e_1;
-    e_1 = (_e133 >> 1u);
+    let _e133 = e_2;
+    e_2 = (_e133 >> 1u);
     let _e136 = base_1;
     let _e137 = base_1;
     base_1 = (_e136 * _e137);
-    let _e139 = e_1;
+    let _e139 = e_2;
     if ((_e139 & 1u) != 0u) {
         let _e144 = acc_1;
         let _e145 = base_1;
         acc_1 = (_e144 * _e145);
     }
-    let _e147 = e_1;
-    e_1 = (_e147 >> 1u);
+    let _e147 = e_2;
+    e_2 = (_e147 >> 1u);
     let _e150 = base_1;
     let _e151 = base_1;
     base_1 = (_e150 * _e151);
@@ -5989,14 +6011,11 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     var t_end_1: f32;
     var end_infinite: bool;
     var local_175: bool;
-    var cuts_3: array<f32, 3>;
+    var cuts_4: array<f32, 3>;
     var i_27: u32 = 0u;
     var local_176: bool;
     var local_177: bool;
     var local_178: bool;
-    var n_3: u32 = 0u;
-    var i_28: u32 = 0u;
-    var local_179: bool;
 
     let zero = vec3(0f);
     let _e13 = airlight_phase_lobes(s_30);
@@ -6158,7 +6177,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     let _e271 = a_18.x_h;
     let _e272 = cut1_;
     let _e273 = cut_count;
-    cuts_3 = array<f32, 3>(_e262, select(_e264, _e265, (_e266 > 0u)), select(_e271, _e272, (_e273 > 1u)));
+    cuts_4 = array<f32, 3>(_e262, select(_e264, _e265, (_e266 > 0u)), select(_e271, _e272, (_e273 > 1u)));
     loop {
         let _e281 = i_27;
         if (_e281 < 3u) {
@@ -6167,9 +6186,9 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         }
         {
             let _e284 = i_27;
-            let t_9 = cuts_3[_e284];
+            let t_9 = cuts_4[_e284];
             let _e287 = i_27;
-            cuts_3[_e287] = _e256;
+            cuts_4[_e287] = _e256;
             let _e289 = airlight_is_finite(t_9);
             if _e289 {
                 local_176 = (t_9 >= t0_2);
@@ -6195,7 +6214,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
                 let _e307 = i_27;
                 let _e309 = a_18;
                 let _e311 = airlight_area_theta(_e309, t_9, false);
-                cuts_3[_e307] = _e311;
+                cuts_4[_e307] = _e311;
             }
         }
         continuing {
@@ -6203,81 +6222,23 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
             i_27 = (_e313 + 1u);
         }
     }
-    let _e316 = cuts_3[1];
-    let _e318 = cuts_3[0];
-    if (_e316 < _e318) {
-        let c_16 = cuts_3[0];
-        let _e324 = cuts_3[1];
-        cuts_3[0] = _e324;
-        cuts_3[1] = c_16;
-    }
-    let _e327 = cuts_3[2];
-    let _e329 = cuts_3[1];
-    if (_e327 < _e329) {
-        let c_17 = cuts_3[1];
-        let _e335 = cuts_3[2];
-        cuts_3[1] = _e335;
-        cuts_3[2] = c_17;
-    }
-    let _e338 = cuts_3[1];
-    let _e340 = cuts_3[0];
-    if (_e338 < _e340) {
-        let c_18 = cuts_3[0];
-        let _e346 = cuts_3[1];
-        cuts_3[0] = _e346;
-        cuts_3[1] = c_18;
-    }
-    a_18.edges[0] = _e256;
-    loop {
-        let _e354 = i_28;
-        if (_e354 < 3u) {
-        } else {
-            break;
-        }
-        {
-            let _e357 = i_28;
-            let _e359 = cuts_3[_e357];
-            let _e361 = n_3;
-            let _e363 = a_18.edges[_e361];
-            if (_e359 > _e363) {
-                let _e367 = i_28;
-                let _e369 = cuts_3[_e367];
-                local_179 = (_e369 < _e260);
-            } else {
-                local_179 = false;
-            }
-            let _e372 = local_179;
-            if _e372 {
-                let _e373 = n_3;
-                n_3 = (_e373 + 1u);
-                let _e377 = n_3;
-                let _e379 = i_28;
-                let _e381 = cuts_3[_e379];
-                a_18.edges[_e377] = _e381;
-            }
-        }
-        continuing {
-            let _e383 = i_28;
-            i_28 = (_e383 + 1u);
-        }
-    }
-    let _e386 = n_3;
-    a_18.edges[(_e386 + 1u)] = _e260;
-    let _e391 = n_3;
-    a_18.panels = (_e391 + 1u);
-    let _e394 = a_18;
-    return _e394;
+    let _e315 = cuts_4;
+    let _e316 = airlight_edges_between(_e256, _e260, _e315);
+    a_18.edges = _e316.at;
+    a_18.panels = _e316.panels;
+    let _e321 = a_18;
+    return _e321;
 }
 
 fn airlight_above(z_9: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_2: vec2<f32>, g_26: f32) -> f32 {
+fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, g_26: f32) -> f32 {
     let _e5 = airlight_cos_sin_half_turn(g_26);
     let r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
     let dr = (above_1.rho0_ / (_e5.x * _e5.x));
-    let p_3 = (above_1.off + (r_13 * e_2));
+    let p_3 = (above_1.off + (r_13 * e_3));
     let z_14 = above_1.z;
     let dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
     let inv_5 = (1f / dist);
@@ -6287,59 +6248,59 @@ fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: Airlight
     return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0f))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_32: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_3: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_32: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    let c_19 = (0.5f * _e7);
+    let c_16 = (0.5f * _e7);
     let hw_2 = (0.5f * _e7);
     let _e14 = sum_7;
-    let _e20 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.09501251f * hw_2)));
+    let _e20 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.09501251f * hw_2)));
     sum_7 = (_e14 + ((0.1894506f * hw_2) * _e20));
     let _e23 = sum_7;
-    let _e29 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.09501251f * hw_2)));
+    let _e29 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.09501251f * hw_2)));
     sum_7 = (_e23 + ((0.1894506f * hw_2) * _e29));
     let _e32 = sum_7;
-    let _e38 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.28160354f * hw_2)));
+    let _e38 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.28160354f * hw_2)));
     sum_7 = (_e32 + ((0.18260342f * hw_2) * _e38));
     let _e41 = sum_7;
-    let _e47 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.28160354f * hw_2)));
+    let _e47 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.28160354f * hw_2)));
     sum_7 = (_e41 + ((0.18260342f * hw_2) * _e47));
     let _e50 = sum_7;
-    let _e56 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.45801678f * hw_2)));
+    let _e56 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.45801678f * hw_2)));
     sum_7 = (_e50 + ((0.16915652f * hw_2) * _e56));
     let _e59 = sum_7;
-    let _e65 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.45801678f * hw_2)));
+    let _e65 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.45801678f * hw_2)));
     sum_7 = (_e59 + ((0.16915652f * hw_2) * _e65));
     let _e68 = sum_7;
-    let _e74 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.61787623f * hw_2)));
+    let _e74 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.61787623f * hw_2)));
     sum_7 = (_e68 + ((0.14959599f * hw_2) * _e74));
     let _e77 = sum_7;
-    let _e83 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.61787623f * hw_2)));
+    let _e83 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.61787623f * hw_2)));
     sum_7 = (_e77 + ((0.14959599f * hw_2) * _e83));
     let _e86 = sum_7;
-    let _e92 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.7554044f * hw_2)));
+    let _e92 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.7554044f * hw_2)));
     sum_7 = (_e86 + ((0.12462897f * hw_2) * _e92));
     let _e95 = sum_7;
-    let _e101 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.7554044f * hw_2)));
+    let _e101 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.7554044f * hw_2)));
     sum_7 = (_e95 + ((0.12462897f * hw_2) * _e101));
     let _e104 = sum_7;
-    let _e110 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.8656312f * hw_2)));
+    let _e110 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.8656312f * hw_2)));
     sum_7 = (_e104 + ((0.09515851f * hw_2) * _e110));
     let _e113 = sum_7;
-    let _e119 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.8656312f * hw_2)));
+    let _e119 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.8656312f * hw_2)));
     sum_7 = (_e113 + ((0.09515851f * hw_2) * _e119));
     let _e122 = sum_7;
-    let _e128 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.944575f * hw_2)));
+    let _e128 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.944575f * hw_2)));
     sum_7 = (_e122 + ((0.062253524f * hw_2) * _e128));
     let _e131 = sum_7;
-    let _e137 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.944575f * hw_2)));
+    let _e137 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.944575f * hw_2)));
     sum_7 = (_e131 + ((0.062253524f * hw_2) * _e137));
     let _e140 = sum_7;
-    let _e146 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 - (0.9894009f * hw_2)));
+    let _e146 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.9894009f * hw_2)));
     sum_7 = (_e140 + ((0.02715246f * hw_2) * _e146));
     let _e149 = sum_7;
-    let _e155 = airlight_flat_node(s_32, a_20, above_2, e_3, (c_19 + (0.9894009f * hw_2)));
+    let _e155 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.9894009f * hw_2)));
     sum_7 = (_e149 + ((0.02715246f * hw_2) * _e155));
     let _e158 = sum_7;
     return _e158;
@@ -6349,8 +6310,8 @@ fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f3
     var u_4: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_8: f32 = 0f;
-    var i_29: u32 = 0u;
-    var e_4: vec2<f32>;
+    var i_28: u32 = 0u;
+    var e_5: vec2<f32>;
     var r_max_1: f32;
 
     let rel = (x_21 - a_21.c);
@@ -6373,36 +6334,36 @@ fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f3
     }
     let k_10 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e45 = i_29;
+        let _e45 = i_28;
         if (_e45 < 32u) {
         } else {
             break;
         }
         {
-            let _e48 = i_29;
+            let _e48 = i_28;
             let _e49 = airlight_azimuths(inside_1, _e48);
             let _e52 = u_4.x;
             let _e56 = u_4.y;
             let _e61 = u_4.y;
             let _e65 = u_4.x;
-            e_4 = vec2<f32>(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
+            e_5 = vec2<f32>(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
             r_max_1 = ((radius_2 + radius_2) * _e49.x);
             if inside_1 {
-                e_4 = _e49.xy;
+                e_5 = _e49.xy;
                 let b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
                 let root_3 = sqrt(((b_21 * b_21) - k_10));
                 r_max_1 = select((root_3 - b_21), (-(k_10) / (b_21 + root_3)), (b_21 > 0f));
             }
             let _e90 = sum_8;
             let _e92 = above_3;
-            let _e93 = e_4;
+            let _e93 = e_5;
             let _e94 = r_max_1;
             let _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
             sum_8 = (_e90 + (_e49.z * _e95));
         }
         continuing {
-            let _e99 = i_29;
-            i_29 = (_e99 + 1u);
+            let _e99 = i_28;
+            i_28 = (_e99 + 1u);
         }
     }
     let _e101 = sum_8;
@@ -6411,13 +6372,13 @@ fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f3
 
 fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f32>) -> f32 {
     var q_4: vec2<f32>;
+    var local_179: bool;
     var local_180: bool;
     var local_181: bool;
-    var local_182: bool;
     var best: f32 = AIRLIGHT_FLT_MAX;
-    var i_30: u32 = 0u;
+    var i_29: u32 = 0u;
     var sum_9: f32 = 0f;
-    var i_31: u32 = 0u;
+    var i_30: u32 = 0u;
     var j_5: u32;
 
     let rel_1 = (x_22 - a_22.c);
@@ -6434,37 +6395,37 @@ fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f3
     let fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
     q_4 = foot;
     if (fu >= 0f) {
-        local_180 = (fu <= 1f);
+        local_179 = (fu <= 1f);
+    } else {
+        local_179 = false;
+    }
+    let _e67 = local_179;
+    if _e67 {
+        local_180 = (fv >= 0f);
     } else {
         local_180 = false;
     }
-    let _e67 = local_180;
-    if _e67 {
-        local_181 = (fv >= 0f);
+    let _e73 = local_180;
+    if _e73 {
+        local_181 = (fv <= 1f);
     } else {
         local_181 = false;
     }
-    let _e73 = local_181;
-    if _e73 {
-        local_182 = (fv <= 1f);
-    } else {
-        local_182 = false;
-    }
-    let _e79 = local_182;
+    let _e79 = local_181;
     if !(_e79) {
         loop {
-            let _e85 = i_30;
+            let _e85 = i_29;
             if (_e85 < 4u) {
             } else {
                 break;
             }
             {
-                let _e88 = i_30;
+                let _e88 = i_29;
                 let c0_1 = corners[_e88];
-                let _e90 = i_30;
-                let e_10 = (corners[(_e90 + 1u)] - c0_1);
-                let t_10 = clamp(((((foot.x - c0_1.x) * e_10.x) + ((foot.y - c0_1.y) * e_10.y)) / ((e_10.x * e_10.x) + (e_10.y * e_10.y))), 0f, 1f);
-                let p_4 = (c0_1 + (t_10 * e_10));
+                let _e90 = i_29;
+                let e_11 = (corners[(_e90 + 1u)] - c0_1);
+                let t_10 = clamp(((((foot.x - c0_1.x) * e_11.x) + ((foot.y - c0_1.y) * e_11.y)) / ((e_11.x * e_11.x) + (e_11.y * e_11.y))), 0f, 1f);
+                let p_4 = (c0_1 + (t_10 * e_11));
                 let dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
                 let _e134 = best;
                 if (dd < _e134) {
@@ -6473,8 +6434,8 @@ fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f3
                 }
             }
             continuing {
-                let _e137 = i_30;
-                i_30 = (_e137 + 1u);
+                let _e137 = i_29;
+                i_29 = (_e137 + 1u);
             }
         }
     }
@@ -6482,26 +6443,26 @@ fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f3
     let _e141 = airlight_above(z_16, (_e139 - foot));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     loop {
-        let _e149 = i_31;
+        let _e149 = i_30;
         if (_e149 < 4u) {
         } else {
             break;
         }
         {
-            let _e152 = i_31;
+            let _e152 = i_30;
             let _e154 = q_4;
             let ca = (corners[_e152] - _e154);
-            let _e156 = i_31;
+            let _e156 = i_30;
             let _e160 = q_4;
             let cb = (corners[(_e156 + 1u)] - _e160);
             let area = ((ca.x * cb.y) - (ca.y * cb.x));
             if !((area > thin)) {
                 continue;
             }
-            let e_11 = (cb - ca);
-            let el = sqrt(((e_11.x * e_11.x) + (e_11.y * e_11.y)));
+            let e_12 = (cb - ca);
+            let el = sqrt(((e_12.x * e_12.x) + (e_12.y * e_12.y)));
             let h_9 = (area / el);
-            let m_11 = vec2<f32>((e_11.y / el), (-(e_11.x) / el));
+            let m_11 = vec2<f32>((e_12.y / el), (-(e_12.x) / el));
             let _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
             let start_3 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
             j_5 = 0u;
@@ -6527,8 +6488,8 @@ fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f3
             }
         }
         continuing {
-            let _e254 = i_31;
-            i_31 = (_e254 + 1u);
+            let _e254 = i_30;
+            i_30 = (_e254 + 1u);
         }
     }
     let _e256 = sum_9;
@@ -6562,7 +6523,7 @@ fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightC
     var top: f32 = 1.5707964f;
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_10: f32 = 0f;
-    var i_32: u32 = 0u;
+    var i_31: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
@@ -6580,56 +6541,56 @@ fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightC
         }
     }
     let _e33 = top;
-    let c_20 = (0.5f * _e33);
+    let c_17 = (0.5f * _e33);
     let _e36 = top;
     let hw_3 = (0.5f * _e36);
     let _e74 = graded_1;
-    let _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_20 - (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    let _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_17 - (0.09501251f * hw_3)), (0.1894506f * hw_3));
     rows[0] = _e80;
     let _e82 = graded_1;
-    let _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_20 + (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    let _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_17 + (0.09501251f * hw_3)), (0.1894506f * hw_3));
     rows[1] = _e88;
     let _e90 = graded_1;
-    let _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_20 - (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    let _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_17 - (0.28160354f * hw_3)), (0.18260342f * hw_3));
     rows[2] = _e96;
     let _e98 = graded_1;
-    let _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_20 + (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    let _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_17 + (0.28160354f * hw_3)), (0.18260342f * hw_3));
     rows[3] = _e104;
     let _e106 = graded_1;
-    let _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_20 - (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    let _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_17 - (0.45801678f * hw_3)), (0.16915652f * hw_3));
     rows[4] = _e112;
     let _e114 = graded_1;
-    let _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_20 + (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    let _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_17 + (0.45801678f * hw_3)), (0.16915652f * hw_3));
     rows[5] = _e120;
     let _e122 = graded_1;
-    let _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_20 - (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    let _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_17 - (0.61787623f * hw_3)), (0.14959599f * hw_3));
     rows[6] = _e128;
     let _e130 = graded_1;
-    let _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_20 + (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    let _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_17 + (0.61787623f * hw_3)), (0.14959599f * hw_3));
     rows[7] = _e136;
     let _e138 = graded_1;
-    let _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_20 - (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    let _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_17 - (0.7554044f * hw_3)), (0.12462897f * hw_3));
     rows[8] = _e144;
     let _e146 = graded_1;
-    let _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_20 + (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    let _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_17 + (0.7554044f * hw_3)), (0.12462897f * hw_3));
     rows[9] = _e152;
     let _e154 = graded_1;
-    let _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_20 - (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    let _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_17 - (0.8656312f * hw_3)), (0.09515851f * hw_3));
     rows[10] = _e160;
     let _e162 = graded_1;
-    let _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_20 + (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    let _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_17 + (0.8656312f * hw_3)), (0.09515851f * hw_3));
     rows[11] = _e168;
     let _e170 = graded_1;
-    let _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_20 - (0.944575f * hw_3)), (0.062253524f * hw_3));
+    let _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_17 - (0.944575f * hw_3)), (0.062253524f * hw_3));
     rows[12] = _e176;
     let _e178 = graded_1;
-    let _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_20 + (0.944575f * hw_3)), (0.062253524f * hw_3));
+    let _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_17 + (0.944575f * hw_3)), (0.062253524f * hw_3));
     rows[13] = _e184;
     let _e186 = graded_1;
-    let _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_20 - (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    let _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_17 - (0.9894009f * hw_3)), (0.02715246f * hw_3));
     rows[14] = _e192;
     let _e194 = graded_1;
-    let _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_20 + (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    let _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_17 + (0.9894009f * hw_3)), (0.02715246f * hw_3));
     rows[15] = _e200;
     if a_23.isotropic {
         let _e206 = airlight_area_phase(s_36, 0f);
@@ -6686,13 +6647,13 @@ fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightC
         return _e304;
     }
     loop {
-        let _e307 = i_32;
+        let _e307 = i_31;
         if (_e307 < 32u) {
         } else {
             break;
         }
         {
-            let _e311 = i_32;
+            let _e311 = i_31;
             let _e312 = airlight_azimuths(true, _e311);
             let across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
             at_2 = 0f;
@@ -6797,8 +6758,8 @@ fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightC
             sum_10 = (_e576 + (_e312.z * _e578));
         }
         continuing {
-            let _e582 = i_32;
-            i_32 = (_e582 + 1u);
+            let _e582 = i_31;
+            i_31 = (_e582 + 1u);
         }
     }
     let _e584 = sum_10;
@@ -6820,7 +6781,7 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_11: f32 = 0f;
-    var i_33: u32 = 0u;
+    var i_32: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var start_2: f32;
@@ -6839,13 +6800,13 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_33;
+        let _e47 = i_32;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_33;
+            let _e50 = i_32;
             let _e51 = airlight_azimuths(inside_2, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
@@ -6874,88 +6835,88 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
             let graded_3 = max(scale_1, _e105);
             let _e107 = start_2;
             let _e110 = airlight_atan(((to - _e107) / graded_3));
-            let c_21 = (0.5f * _e110);
+            let c_18 = (0.5f * _e110);
             let hw_4 = (0.5f * _e110);
             around = 0f;
             let _e117 = around;
             let _e120 = big_b_1;
             let _e121 = start_2;
-            let _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_21 - (0.09501251f * hw_4)));
+            let _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_18 - (0.09501251f * hw_4)));
             around = (_e117 + ((0.1894506f * hw_4) * _e125));
             let _e128 = around;
             let _e131 = big_b_1;
             let _e132 = start_2;
-            let _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_21 + (0.09501251f * hw_4)));
+            let _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_18 + (0.09501251f * hw_4)));
             around = (_e128 + ((0.1894506f * hw_4) * _e136));
             let _e139 = around;
             let _e142 = big_b_1;
             let _e143 = start_2;
-            let _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_21 - (0.28160354f * hw_4)));
+            let _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_18 - (0.28160354f * hw_4)));
             around = (_e139 + ((0.18260342f * hw_4) * _e147));
             let _e150 = around;
             let _e153 = big_b_1;
             let _e154 = start_2;
-            let _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_21 + (0.28160354f * hw_4)));
+            let _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_18 + (0.28160354f * hw_4)));
             around = (_e150 + ((0.18260342f * hw_4) * _e158));
             let _e161 = around;
             let _e164 = big_b_1;
             let _e165 = start_2;
-            let _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_21 - (0.45801678f * hw_4)));
+            let _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_18 - (0.45801678f * hw_4)));
             around = (_e161 + ((0.16915652f * hw_4) * _e169));
             let _e172 = around;
             let _e175 = big_b_1;
             let _e176 = start_2;
-            let _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_21 + (0.45801678f * hw_4)));
+            let _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_18 + (0.45801678f * hw_4)));
             around = (_e172 + ((0.16915652f * hw_4) * _e180));
             let _e183 = around;
             let _e186 = big_b_1;
             let _e187 = start_2;
-            let _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_21 - (0.61787623f * hw_4)));
+            let _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_18 - (0.61787623f * hw_4)));
             around = (_e183 + ((0.14959599f * hw_4) * _e191));
             let _e194 = around;
             let _e197 = big_b_1;
             let _e198 = start_2;
-            let _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_21 + (0.61787623f * hw_4)));
+            let _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_18 + (0.61787623f * hw_4)));
             around = (_e194 + ((0.14959599f * hw_4) * _e202));
             let _e205 = around;
             let _e208 = big_b_1;
             let _e209 = start_2;
-            let _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_21 - (0.7554044f * hw_4)));
+            let _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_18 - (0.7554044f * hw_4)));
             around = (_e205 + ((0.12462897f * hw_4) * _e213));
             let _e216 = around;
             let _e219 = big_b_1;
             let _e220 = start_2;
-            let _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_21 + (0.7554044f * hw_4)));
+            let _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_18 + (0.7554044f * hw_4)));
             around = (_e216 + ((0.12462897f * hw_4) * _e224));
             let _e227 = around;
             let _e230 = big_b_1;
             let _e231 = start_2;
-            let _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_21 - (0.8656312f * hw_4)));
+            let _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_18 - (0.8656312f * hw_4)));
             around = (_e227 + ((0.09515851f * hw_4) * _e235));
             let _e238 = around;
             let _e241 = big_b_1;
             let _e242 = start_2;
-            let _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_21 + (0.8656312f * hw_4)));
+            let _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_18 + (0.8656312f * hw_4)));
             around = (_e238 + ((0.09515851f * hw_4) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
             let _e253 = start_2;
-            let _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_21 - (0.944575f * hw_4)));
+            let _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_18 - (0.944575f * hw_4)));
             around = (_e249 + ((0.062253524f * hw_4) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
             let _e264 = start_2;
-            let _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_21 + (0.944575f * hw_4)));
+            let _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_18 + (0.944575f * hw_4)));
             around = (_e260 + ((0.062253524f * hw_4) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
             let _e275 = start_2;
-            let _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_21 - (0.9894009f * hw_4)));
+            let _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_18 - (0.9894009f * hw_4)));
             around = (_e271 + ((0.02715246f * hw_4) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
             let _e286 = start_2;
-            let _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_21 + (0.9894009f * hw_4)));
+            let _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_18 + (0.9894009f * hw_4)));
             around = (_e282 + ((0.02715246f * hw_4) * _e290));
             let _e293 = sum_11;
             let _e294 = wpsi;
@@ -6963,8 +6924,8 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
             sum_11 = (_e293 + (_e294 * _e295));
         }
         continuing {
-            let _e299 = i_33;
-            i_33 = (_e299 + 1u);
+            let _e299 = i_32;
+            i_32 = (_e299 + 1u);
         }
     }
     let _e301 = sum_11;
@@ -6976,11 +6937,11 @@ fn airlight_sphere(s_39: AirlightScene, a_25: AirlightArea, x_23: vec3<f32>) -> 
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_6: u32 = 0u;
+    var local_182: bool;
     var local_183: bool;
     var local_184: bool;
     var local_185: bool;
     var local_186: bool;
-    var local_187: bool;
 
     let v_8 = (a_25.c - x_23);
     let _e5 = airlight_safe_length(v_8);
@@ -6999,43 +6960,43 @@ fn airlight_sphere(s_39: AirlightScene, a_25: AirlightArea, x_23: vec3<f32>) -> 
         {
             let _e39 = j_6;
             let lobe_2 = select(a_25.lobes.xy, a_25.lobes.zw, (_e39 == 1u));
-            let c_22 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            let c_19 = dot(cap_4.a, (lobe_2.x * a_25.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_183 = (lobe_2.y > 0f);
+                local_182 = (lobe_2.y > 0f);
+            } else {
+                local_182 = false;
+            }
+            let _e57 = local_182;
+            if _e57 {
+                local_183 = (lobe_2.y < (_e23 + _e23));
             } else {
                 local_183 = false;
             }
-            let _e57 = local_183;
-            if _e57 {
-                local_184 = (lobe_2.y < (_e23 + _e23));
+            let _e64 = local_183;
+            if _e64 {
+                if !((c_19 > cap_4.cos_a)) {
+                    if (c_19 > -(cap_4.cos_a)) {
+                        let _e77 = airlight_acos(c_19);
+                        local_186 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
+                    } else {
+                        local_186 = false;
+                    }
+                    let _e84 = local_186;
+                    local_185 = _e84;
+                } else {
+                    local_185 = true;
+                }
+                let _e86 = local_185;
+                local_184 = _e86;
             } else {
                 local_184 = false;
             }
-            let _e64 = local_184;
-            if _e64 {
-                if !((c_22 > cap_4.cos_a)) {
-                    if (c_22 > -(cap_4.cos_a)) {
-                        let _e77 = airlight_acos(c_22);
-                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
-                    } else {
-                        local_187 = false;
-                    }
-                    let _e84 = local_187;
-                    local_186 = _e84;
-                } else {
-                    local_186 = true;
-                }
-                let _e86 = local_186;
-                local_185 = _e86;
-            } else {
-                local_185 = false;
-            }
-            let _e88 = local_185;
+            let _e88 = local_184;
             if _e88 {
                 chosen = lobe_2.y;
                 sign_3 = lobe_2.x;
-                cos_p_2 = c_22;
+                cos_p_2 = c_19;
             }
         }
         continuing {
@@ -7084,8 +7045,8 @@ fn airlight_area_node(s_41: AirlightScene, a_27: AirlightArea, theta: f32) -> f3
 fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
     var list_2: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
     var count_3: u32 = 0u;
-    var lo_5: f32;
-    var hi_4: f32;
+    var lo_6: f32;
+    var hi_5: f32;
     var slot_1: u32 = 0u;
     var queued: bool = false;
     var queued_lo: f32 = 0f;
@@ -7094,15 +7055,15 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
     var k_7: f32;
     var gauss: f32;
     var j_7: u32;
-    var local_188: bool;
+    var local_187: bool;
 
     let _e1 = airlight_area(s_42);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
     let _e8 = airlight_kronrod15_rule();
-    lo_5 = _e1.edges[0];
-    hi_4 = _e1.edges[1];
+    lo_6 = _e1.edges[0];
+    hi_5 = _e1.edges[1];
     let max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     let evaluations = ((2u * max_panels_2) - 1u);
     loop {
@@ -7112,11 +7073,11 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
             break;
         }
         {
-            let _e70 = lo_5;
-            let _e71 = hi_4;
-            let c_23 = (0.5f * (_e70 + _e71));
-            let _e75 = hi_4;
-            let _e76 = lo_5;
+            let _e70 = lo_6;
+            let _e71 = hi_5;
+            let c_20 = (0.5f * (_e70 + _e71));
+            let _e75 = hi_5;
+            let _e76 = lo_6;
             let hw_5 = (0.5f * (_e75 - _e76));
             k_7 = 0f;
             gauss = 0f;
@@ -7133,12 +7094,12 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
                     let _e99 = j_7;
                     if ((_e99 & 1u) == 0u) {
                         let _e106 = j_7;
-                        local_188 = (_e106 < 14u);
+                        local_187 = (_e106 < 14u);
                     } else {
-                        local_188 = false;
+                        local_187 = false;
                     }
-                    let _e110 = local_188;
-                    let x_33 = select((c_23 + (hw_5 * node_2.x)), (c_23 - (hw_5 * node_2.x)), _e110);
+                    let _e110 = local_187;
+                    let x_33 = select((c_20 + (hw_5 * node_2.x)), (c_20 - (hw_5 * node_2.x)), _e110);
                     let _e112 = airlight_area_node(s_42, _e1, x_33);
                     let _e113 = k_7;
                     k_7 = (_e113 + (node_2.y * _e112));
@@ -7151,8 +7112,8 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
                 }
             }
             let _e124 = slot_1;
-            let _e125 = lo_5;
-            let _e126 = hi_4;
+            let _e125 = lo_6;
+            let _e126 = hi_5;
             let _e127 = k_7;
             let _e129 = k_7;
             let _e131 = gauss;
@@ -7166,18 +7127,18 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
             let _e142 = count_3;
             if (_e142 < _e1.panels) {
                 let _e146 = count_3;
-                lo_5 = _e1.edges[_e146];
+                lo_6 = _e1.edges[_e146];
                 let _e149 = count_3;
-                hi_4 = _e1.edges[(_e149 + 1u)];
+                hi_5 = _e1.edges[(_e149 + 1u)];
                 let _e153 = count_3;
                 slot_1 = _e153;
             } else {
                 let _e154 = queued;
                 if _e154 {
                     let _e155 = queued_lo;
-                    lo_5 = _e155;
+                    lo_6 = _e155;
                     let _e156 = queued_hi;
-                    hi_4 = _e156;
+                    hi_5 = _e156;
                     let _e157 = count_3;
                     slot_1 = _e157;
                     queued = false;
@@ -7187,8 +7148,8 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
                     if !(_e161.split) {
                         break;
                     }
-                    lo_5 = _e161.lo;
-                    hi_4 = _e161.mid;
+                    lo_6 = _e161.lo;
+                    hi_5 = _e161.mid;
                     slot_1 = _e161.slot;
                     queued = true;
                     queued_lo = _e161.mid;
@@ -7213,22 +7174,22 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_43: AirlightScene) -> AirlightResult {
+    var local_188: bool;
     var local_189: bool;
-    var local_190: bool;
 
     let _e1 = airlight_valid(s_43);
     if !(!(_e1)) {
-        local_189 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_188 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_188 = true;
+    }
+    let _e10 = local_188;
+    if !(_e10) {
+        local_189 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_189 = true;
     }
-    let _e10 = local_189;
-    if !(_e10) {
-        local_190 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_190 = true;
-    }
-    let _e18 = local_190;
+    let _e18 = local_189;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7237,38 +7198,38 @@ fn airlight_in_scatter_area(s_43: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_191: bool;
+    var local_190: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_190 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_191 = true;
+        local_190 = true;
     }
-    let _e11 = local_191;
+    let _e11 = local_190;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return r_5;
 }
 
-fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
+fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_192: bool;
+    var local_191: bool;
     var g_28: AirlightCanonical;
 
-    let p_7 = n_4.scene;
+    let p_7 = n_3.scene;
     let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_7.dir);
-        local_192 = _e11;
+        local_191 = _e11;
     } else {
-        local_192 = false;
+        local_191 = false;
     }
-    let _e13 = local_192;
+    let _e13 = local_191;
     if _e13 {
-        g_28 = n_4.canonical;
-        if !(n_4.exact) {
+        g_28 = n_3.canonical;
+        if !(n_3.exact) {
             let _e18 = airlight_canonical(p_7);
             let _e19 = airlight_refined(p_7, _e18);
             g_28 = _e19;
@@ -7289,22 +7250,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_44: AirlightScene) -> AirlightResult {
+    var local_192: bool;
     var local_193: bool;
-    var local_194: bool;
 
     let _e1 = airlight_valid(s_44);
     if !(!(_e1)) {
-        local_193 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_192 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_192 = true;
+    }
+    let _e10 = local_192;
+    if !(_e10) {
+        local_193 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_193 = true;
     }
-    let _e10 = local_193;
-    if !(_e10) {
-        local_194 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_194 = true;
-    }
-    let _e18 = local_194;
+    let _e18 = local_193;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7313,22 +7274,22 @@ fn airlight_in_scatter_point(s_44: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_45: AirlightScene) -> AirlightResult {
+    var local_194: bool;
     var local_195: bool;
-    var local_196: bool;
 
     let _e1 = airlight_valid(s_45);
     if !(!(_e1)) {
-        local_195 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_194 = true;
+    }
+    let _e10 = local_194;
+    if !(_e10) {
+        local_195 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
-    let _e10 = local_195;
-    if !(_e10) {
-        local_196 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_196 = true;
-    }
-    let _e18 = local_196;
+    let _e18 = local_195;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7363,9 +7324,9 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
     var k_8: f32;
     var gauss_1: f32;
     var j_8: u32;
-    var local_197: bool;
+    var local_196: bool;
     var f: f32;
-    var local_198: bool;
+    var local_197: bool;
 
     let _e1 = airlight_valid(s_46);
     if !(_e1) {
@@ -7394,7 +7355,7 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
         {
             let _e86 = a_28;
             let _e87 = b_13;
-            let c_24 = (0.5f * (_e86 + _e87));
+            let c_21 = (0.5f * (_e86 + _e87));
             let _e91 = b_13;
             let _e92 = a_28;
             let hw_6 = (0.5f * (_e91 - _e92));
@@ -7413,12 +7374,12 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
                     let _e115 = j_8;
                     if ((_e115 & 1u) == 0u) {
                         let _e122 = j_8;
-                        local_197 = (_e122 < 6u);
+                        local_196 = (_e122 < 6u);
                     } else {
-                        local_197 = false;
+                        local_196 = false;
                     }
-                    let _e126 = local_197;
-                    let w_10 = select((c_24 + (hw_6 * node_3.x)), (c_24 - (hw_6 * node_3.x)), _e126);
+                    let _e126 = local_196;
+                    let w_10 = select((c_21 + (hw_6 * node_3.x)), (c_21 - (hw_6 * node_3.x)), _e126);
                     let _e128 = airlight_outer_node(s_46, _e12, w_10);
                     f = 0f;
                     if (_e128.weight != 0f) {
@@ -7427,11 +7388,11 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
                             return _e134;
                         }
                         if (s_46.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_198 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_198 = false;
+                            local_197 = false;
                         }
-                        let _e147 = local_198;
+                        let _e147 = local_197;
                         if _e147 {
                             return _e134;
                         }

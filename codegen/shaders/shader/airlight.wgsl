@@ -2017,6 +2017,32 @@ fn airlight_list_scan(l: AirlightPanelList, count: u32) -> AirlightListScan {
 @SEGMENT_LIST_SCAN@    return r;
 }
 
+/// The first panels' edges of an outer integral over [lo, hi] (extended.rs `edges_between`): lo,
+/// the cuts strictly inside in increasing order (three compare-and-swaps; repeats dropped), hi;
+/// `panels` of them between.
+struct AirlightEdges {
+    at: array<f32, 5>,
+    panels: u32,
+}
+
+fn airlight_edges_between(lo: f32, hi: f32, unsorted: array<f32, 3>) -> AirlightEdges {
+    var cuts = unsorted;
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
+    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    var e = AirlightEdges(array<f32, 5>(lo, lo, lo, lo, lo), 0u);
+    var n = 0u;
+    for (var i = 0u; i < 3u; i++) {
+        if (cuts[i] > e.at[n] && cuts[i] < hi) {
+            n += 1u;
+            e.at[n] = cuts[i];
+        }
+    }
+    e.at[n + 1u] = hi;
+    e.panels = n + 1u;
+    return e;
+}
+
 /// The adaptive scheme's next step (extended.rs `adaptive`): whether the listed panels' summed
 /// error is still above `tolerance` of their sum with room for another panel, and then the first
 /// panel of the largest error, [lo, hi], to be split at `mid` and its halves written at `slot`
@@ -2421,21 +2447,13 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
         if (i == 2u && infinite) { continue; }
         if (at[i] > 0.0 && at[i] < len) { cuts[i] = airlight_to_w(g, at[i]); }
     }
-    // sorted (three compare-and-swaps), then those strictly inside and increasing kept
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
-    if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
-    let hi = airlight_to_w(g, len);
-    g.edges[0] = airlight_to_w(g, 0.0);
-    var n = 0u;
-    for (var i = 0u; i < 3u; i++) {
-        if (cuts[i] > g.edges[n] && cuts[i] < hi) {
-            n += 1u;
-            g.edges[n] = cuts[i];
-        }
-    }
-    g.edges[n + 1u] = hi;
-    g.panels = n + 1u;
+    let edges = airlight_edges_between(airlight_to_w(g, 0.0), airlight_to_w(g, len), cuts);
+    g.edges[0] = edges.at[0];
+    g.edges[1] = edges.at[1];
+    g.edges[2] = edges.at[2];
+    g.edges[3] = edges.at[3];
+    g.edges[4] = edges.at[4];
+    g.panels = edges.panels;
     return g;
 }
 
@@ -2710,27 +2728,16 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     }
     let lo = airlight_area_theta(a, t0, false);
     let hi = airlight_area_theta(a, t_end, end_infinite);
-    // the cuts within [t0, t_end] (outside it: its start, which the edges skip), sorted, those
-    // strictly inside and increasing kept (extended.rs `edges_between`)
+    // the cuts within [t0, t_end] (outside it: its start, which the edges skip)
     var cuts = array<f32, 3>(a.x_h, select(a.x_h, cut0, cut_count > 0u), select(a.x_h, cut1, cut_count > 1u));
     for (var i = 0u; i < 3u; i++) {
         let t = cuts[i];
         cuts[i] = lo;
         if (airlight_is_finite(t) && t >= t0 && (end_infinite || t <= t_end)) { cuts[i] = airlight_area_theta(a, t, false); }
     }
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
-    if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
-    a.edges[0] = lo;
-    var n = 0u;
-    for (var i = 0u; i < 3u; i++) {
-        if (cuts[i] > a.edges[n] && cuts[i] < hi) {
-            n += 1u;
-            a.edges[n] = cuts[i];
-        }
-    }
-    a.edges[n + 1u] = hi;
-    a.panels = n + 1u;
+    let edges = airlight_edges_between(lo, hi, cuts);
+    a.edges = edges.at;
+    a.panels = edges.panels;
     return a;
 }
 
