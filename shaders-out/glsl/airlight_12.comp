@@ -82,7 +82,7 @@ struct AirlightListScan {
     uint worst;
 };
 struct AirlightEdges {
-    float at[5];
+    float at[13];
     uint panels;
 };
 struct AirlightSplit {
@@ -91,6 +91,17 @@ struct AirlightSplit {
     float mid;
     float hi;
     uint slot;
+};
+struct AirlightAdaptive {
+    AirlightPanelList list;
+    uint count;
+    float lo;
+    float hi;
+    uint slot;
+    bool more;
+    bool queued;
+    float queued_lo;
+    float queued_hi;
 };
 struct AirlightOuter {
     vec3 a;
@@ -190,9 +201,9 @@ const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
 
-layout(std430, binding = 0) readonly buffer type_22_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_21_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_23_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_22_block_1Compute { AirlightResult _group_0_binding_1_cs[]; };
 
 
 float[12] airlight_zero_terms() {
@@ -454,8 +465,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    vec2 b_14 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_14);
+    vec2 b_13 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_13);
     vec2 _e33 = airlight_cmul(_e29, _e29);
     vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
     root = _e35;
@@ -465,7 +476,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         root = -(_e41);
     }
     vec2 _e46 = root;
-    vec2 _e48 = airlight_cmul(b_14, (vec2(1.0, 0.0) + _e46));
+    vec2 _e48 = airlight_cmul(b_13, (vec2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     bool loop_init_2 = true;
     while(true) {
@@ -533,12 +544,12 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_6 = float(_e2);
-    float b_15 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_18 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
-    float disc = (1.0 - ((4.0 * a_18) / (b_15 * b_15)));
-    t_2 = b_15;
+    float b_14 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
+    float a_17 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float disc = (1.0 - ((4.0 * a_17) / (b_14 * b_14)));
+    t_2 = b_14;
     if ((disc > 0.0)) {
-        t_2 = ((b_15 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
     bool loop_init_3 = true;
     while(true) {
@@ -713,11 +724,11 @@ float[14] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g, float om, float op) {
     if ((g >= 0.0)) {
-        float a_19 = (1.0 - g);
-        return ((om * (g + g)) + (a_19 * a_19));
+        float a_18 = (1.0 - g);
+        return ((om * (g + g)) + (a_18 * a_18));
     }
-    float b_16 = (1.0 + g);
-    return ((op * -((g + g))) + (b_16 * b_16));
+    float b_15 = (1.0 + g);
+    return ((op * -((g + g))) + (b_15 * b_15));
 }
 
 float airlight_hg(float g_1, float om_1, float op_1) {
@@ -831,11 +842,11 @@ float airlight_singular_height(float side, float gap, float sigma) {
 }
 
 float airlight_hg_gap(float g_2) {
-    float a_20 = abs(g_2);
-    if (!((a_20 > 0.0))) {
+    float a_19 = abs(g_2);
+    if (!((a_19 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_20) * (1.0 - a_20)) / (a_20 + a_20));
+    return (((1.0 - a_19) * (1.0 - a_19)) / (a_19 + a_19));
 }
 
 vec3 airlight_singular_heights(AirlightScene s, float sigma_1) {
@@ -850,8 +861,8 @@ vec3 airlight_singular_heights(AirlightScene s, float sigma_1) {
             break;
         }
         case 3u: {
-            float a_21 = abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, ((a_21 > 0.0) ? ((1.0 - a_21) / a_21) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_20 = abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, ((a_20 > 0.0) ? ((1.0 - a_20) / a_20) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1902,8 +1913,8 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_) {
 
 float airlight_bernstein_rho(float re, float im) {
     float im2_ = (im * im);
-    float a_22 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_22 + sqrt(max(((a_22 * a_22) - 1.0), 0.0)));
+    float a_21 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_21 + sqrt(max(((a_21 * a_21) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs) {
@@ -3135,9 +3146,9 @@ vec2 airlight_angle_route(AirlightScene s_9, AirlightCanonical g_11) {
             break;
         }
         case 3u: {
-            float a_23 = abs(p0_4);
+            float a_22 = abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, ((a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_3);
+            float _e146 = airlight_angle_floor(p0_4, ((a_22 > 0.0) ? ((1.0 - a_22) / a_22) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_3);
             rate = _e146;
             break;
         }
@@ -3288,23 +3299,23 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_3) {
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
-    float a_24 = (a0_ / scale_1);
-    float b_17 = (b0_ / scale_1);
+    float a_23 = (a0_ / scale_1);
+    float b_16 = (b0_ / scale_1);
     float c_9 = (c0_ / scale_1);
-    float disc_1 = ((b_17 * b_17) - ((4.0 * a_24) * c_9));
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_23) * c_9));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
-    if ((b_17 < 0.0)) {
+    if ((b_16 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_5 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
+    float q_5 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_5 != 0.0)) {
         r1_ = (c_9 / q_5);
     }
-    if ((a_24 != 0.0)) {
-        r2_2 = (q_5 / a_24);
+    if ((a_23 != 0.0)) {
+        r2_2 = (q_5 / a_23);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3348,15 +3359,15 @@ bool airlight_dark(AirlightCanonical g_13, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_25 = (sigma_11 * g_13.d_el);
+    float a_24 = (sigma_11 * g_13.d_el);
     float d_3 = g_13.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
-    if ((a_25 > 0.0)) {
-        y1_1 = (d_3 / (a_25 + root_1));
+    float root_1 = sqrt(((a_24 * a_24) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_24) / d_3);
+    if ((a_24 > 0.0)) {
+        y1_1 = (d_3 / (a_24 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -4679,10 +4690,10 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain) 
     vec2 _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     vec2 _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    vec3 hi_5 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_6 = vec3(_e11.y, _e17.y, _e23.y);
+    vec3 hi_6 = vec3(_e11.x, _e17.x, _e23.x);
+    vec3 lo_7 = vec3(_e11.y, _e17.y, _e23.y);
     vec3 dir = s_18.dir;
-    bool _e33 = airlight_in_exact_range(hi_5);
+    bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
         local_125 = !(_e38);
@@ -4693,10 +4704,10 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain) 
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_5.y, dir.z, hi_5.z, dir.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_5.z, dir.x, hi_5.x, dir.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_5.x, dir.y, hi_5.y, dir.x, key_4);
-    vec3 w_5 = vec3((_e46 + ((lo_6.y * dir.z) - (lo_6.z * dir.y))), (_e59 + ((lo_6.z * dir.x) - (lo_6.x * dir.z))), (_e72 + ((lo_6.x * dir.y) - (lo_6.y * dir.x))));
+    float _e46 = airlight_diff_of_products(hi_6.y, dir.z, hi_6.z, dir.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_6.z, dir.x, hi_6.x, dir.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_6.x, dir.y, hi_6.y, dir.x, key_4);
+    vec3 w_5 = vec3((_e46 + ((lo_7.y * dir.z) - (lo_7.z * dir.y))), (_e59 + ((lo_7.z * dir.x) - (lo_7.x * dir.z))), (_e72 + ((lo_7.x * dir.y) - (lo_7.y * dir.x))));
     bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         return plain;
@@ -5049,7 +5060,7 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
 
 AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) {
     float cuts_1[3] = float[3](0.0, 0.0, 0.0);
-    AirlightEdges e_1 = AirlightEdges(float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u);
+    AirlightEdges e_1 = AirlightEdges(float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u);
     uint n_1 = 0u;
     uint i_18 = 0u;
     bool local_127 = false;
@@ -5078,7 +5089,7 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) 
         cuts_1[0] = _e35;
         cuts_1[1] = c_12;
     }
-    e_1 = AirlightEdges(float[5](lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    e_1 = AirlightEdges(float[13](lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
@@ -5177,12 +5188,63 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
     return AirlightSplit(false, 0.0, 0.0, 0.0, 0u);
 }
 
+AirlightAdaptive airlight_adaptive(float lo_4, float hi_4) {
+    return AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, lo_4, hi_4, 0u, true, false, 0.0, 0.0);
+}
+
+AirlightAdaptive airlight_adaptive_step(AirlightAdaptive state, float kronrod, float gauss, float edges[13], uint panels, uint max_panels_1, float tolerance_1) {
+    AirlightAdaptive st = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
+    AirlightPanelList list_2 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    st = state;
+    AirlightPanelList _e9 = st.list;
+    list_2 = _e9;
+    uint _e12 = st.slot;
+    float _e14 = st.lo;
+    float _e16 = st.hi;
+    airlight_list_set(list_2, _e12, vec4(_e14, _e16, kronrod, abs((kronrod - gauss))));
+    uint _e21 = st.slot;
+    uint _e23 = st.count;
+    if ((_e21 == _e23)) {
+        uint _e26 = st.count;
+        st.count = (_e26 + 1u);
+    }
+    uint count_3 = st.count;
+    if ((count_3 < panels)) {
+        st.lo = edges[count_3];
+        st.hi = edges[(count_3 + 1u)];
+        st.slot = count_3;
+    } else {
+        bool _e40 = st.queued;
+        if (_e40) {
+            float _e43 = st.queued_lo;
+            st.lo = _e43;
+            float _e46 = st.queued_hi;
+            st.hi = _e46;
+            st.slot = count_3;
+            st.queued = false;
+        } else {
+            AirlightSplit _e50 = airlight_split_worst(list_2, count_3, max_panels_1, tolerance_1);
+            st.lo = _e50.lo;
+            st.hi = _e50.mid;
+            st.slot = _e50.slot;
+            st.more = _e50.split;
+            st.queued = true;
+            st.queued_lo = _e50.mid;
+            st.queued_hi = _e50.hi;
+        }
+    }
+    AirlightPanelList _e66 = list_2;
+    st.list = _e66;
+    AirlightAdaptive _e67 = st;
+    return _e67;
+}
+
 float airlight_asinh(float x_15) {
     float r_4 = 0.0;
-    float a_26 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_26));
-    if ((a_26 <= 4096.0)) {
-        float _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1.0 + sqrt((1.0 + (a_26 * a_26)))))));
+    float a_25 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_25));
+    if ((a_25 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1.0 + sqrt((1.0 + (a_25 * a_25)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5207,8 +5269,8 @@ vec2 airlight_cos_sin_half_turn(float x_16) {
 }
 
 float airlight_acos(float x_17) {
-    float a_27 = abs(x_17);
-    float _e8 = airlight_atan(sqrt(((1.0 - a_27) / (1.0 + a_27))));
+    float a_26 = abs(x_17);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_26) / (1.0 + a_26))));
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -5218,18 +5280,18 @@ float airlight_angle(float c_6, float s_20) {
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
-    float a_28 = (cos_a * cos_g);
-    float b_18 = (sin_a * sin_g);
-    if ((b_18 <= abs(a_28))) {
-        return ((a_28 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_27 = (cos_a * cos_g);
+    float b_17 = (sin_a * sin_g);
+    if ((b_17 <= abs(a_27))) {
+        return ((a_27 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    float _e18 = airlight_acos(clamp((-(a_28) / b_18), -1.0, 1.0));
+    float _e18 = airlight_acos(clamp((-(a_27) / b_17), -1.0, 1.0));
     return _e18;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels_1) {
+AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels_2) {
     float zeros[13] = float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    return AirlightOuter(s_21.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_1, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    return AirlightOuter(s_21.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_2, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
 }
 
 AirlightOuter airlight_surface(AirlightScene s_22) {
@@ -5398,7 +5460,7 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
             cuts_2[_e255] = c_13;
         }
     }
-    float hi_6 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
+    float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
     g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
     bool loop_init_25 = true;
     while(true) {
@@ -5420,7 +5482,7 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[_e289];
-                local_133 = (_e291 < hi_6);
+                local_133 = (_e291 < hi_7);
             } else {
                 local_133 = false;
             }
@@ -5436,7 +5498,7 @@ AirlightOuter airlight_surface(AirlightScene s_22) {
         }
     }
     uint _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_6;
+    g_20.gamma[(_e308 + 1u)] = hi_7;
     uint _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     bool loop_init_26 = true;
@@ -5538,12 +5600,12 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     return 0.0;
 }
 
-float airlight_lobe_node(AirlightLobe q_2, float lo_4, float w, float u_2, bool smoothstep_) {
+float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w, float u_2, bool smoothstep_) {
     if (smoothstep_) {
-        float _e18 = airlight_lobe_at(q_2, (lo_4 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        float _e18 = airlight_lobe_at(q_2, (lo_5 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2))));
         return ((((w * 6.0) * u_2) * (1.0 - u_2)) * _e18);
     }
-    float _e22 = airlight_lobe_at(q_2, (lo_4 + (w * u_2)));
+    float _e22 = airlight_lobe_at(q_2, (lo_5 + (w * u_2)));
     return (w * _e22);
 }
 
@@ -5577,13 +5639,13 @@ vec2[5] airlight_lobe_rule() {
     return vec2[5](vec2(0.42556283, 0.14776212), vec2(0.2833023, 0.13463336), vec2(0.16029522, 0.10954318), vec2(0.067468315, 0.07472567), vec2(0.013046736, 0.03333567));
 }
 
-float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smoothstep_1) {
+float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smoothstep_1) {
     bool local_141 = false;
     float sum_5 = 0.0;
     uint k_5 = 0u;
-    float w_6 = (hi_4 - lo_5);
+    float w_6 = (hi_5 - lo_6);
     if (!(!((w_6 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5 * w_6)));
+        float _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5 * w_6)));
         local_141 = !((_e14 > 0.0));
     } else {
         local_141 = true;
@@ -5609,8 +5671,8 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smooths
             uint _e29 = k_5;
             vec2 node = _e21[_e29];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_5, w_6, node.x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_5, w_6, (1.0 - node.x), smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_6, w_6, node.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_6, w_6, (1.0 - node.x), smoothstep_1);
             sum_5 = (_e31 + (node.y * (_e34 + _e38)));
         }
     }
@@ -5656,7 +5718,7 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
     }
     float _e88 = inner.x;
     float _e90 = inner.y;
-    float edges[4] = float[4](0.0, _e88, _e90, cut_2);
+    float edges_1[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent < 1.0);
     bool loop_init_29 = true;
     while(true) {
@@ -5674,7 +5736,7 @@ float airlight_lobe_arcs(AirlightOuter g_21, vec2 cs, float gamma, float psi_n, 
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_6, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -5933,14 +5995,10 @@ AirlightOuter airlight_outer(AirlightScene s_23) {
     float _e258 = airlight_to_w(_e257, _e15);
     float _e259[3] = cuts_3;
     AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_22.edges[0] = _e260.at[0];
-    g_22.edges[1] = _e260.at[1];
-    g_22.edges[2] = _e260.at[2];
-    g_22.edges[3] = _e260.at[3];
-    g_22.edges[4] = _e260.at[4];
+    g_22.edges = _e260.at;
     g_22.panels = _e260.panels;
-    AirlightOuter _e283 = g_22;
-    return _e283;
+    AirlightOuter _e265 = g_22;
+    return _e265;
 }
 
 AirlightCanonical airlight_no_canonical() {
@@ -5967,13 +6025,13 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
     if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_25 = min(uint(max(floor(x_20), 0.0)), (g_23.panels - 1u));
         float t_7 = (x_20 - float(i_25));
-        float a_29 = g_23.gamma[i_25];
-        float b_19 = g_23.gamma[(i_25 + 1u)];
-        float w_7 = (b_19 - a_29);
+        float a_28 = g_23.gamma[i_25];
+        float b_18 = g_23.gamma[(i_25 + 1u)];
+        float w_7 = (b_18 - a_28);
         float u_4 = (1.0 - t_7);
         bool smooth_a = (((g_23.smooth_edges >> i_25) & 1u) != 0u);
         bool smooth_b = (((g_23.smooth_edges >> (i_25 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_29 + (((w_7 * t_7) * t_7) * ((3.0 - t_7) - t_7)));
+        gamma_1 = (a_28 + (((w_7 * t_7) * t_7) * ((3.0 - t_7) - t_7)));
         jacobian = (((w_7 * 6.0) * t_7) * u_4);
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -5982,7 +6040,7 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             local_160 = false;
         }
         bool _e66 = local_160;
-        gamma_1 = (_e66 ? (a_29 + ((w_7 * t_7) * t_7)) : _e58);
+        gamma_1 = (_e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_161 = !(smooth_a);
@@ -5998,7 +6056,7 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             local_162 = false;
         }
         bool _e85 = local_162;
-        gamma_1 = (_e85 ? (b_19 - ((w_7 * u_4) * u_4)) : _e77);
+        gamma_1 = (_e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_163 = !(smooth_b);
@@ -6014,7 +6072,7 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             local_164 = false;
         }
         bool _e102 = local_164;
-        gamma_1 = (_e102 ? (a_29 + (w_7 * t_7)) : _e96);
+        gamma_1 = (_e102 ? (a_28 + (w_7 * t_7)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_165 = smooth_b;
@@ -6119,17 +6177,10 @@ AirlightResult airlight_node_integral(AirlightNode n_2) {
 }
 
 AirlightResult airlight_in_scatter(AirlightScene s_25) {
-    AirlightPanelList list_2 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-    uint count_3 = 0u;
-    float a_17 = 0.0;
-    float b_13 = 0.0;
-    uint slot_1 = 0u;
-    bool queued = false;
-    float queued_lo = 0.0;
-    float queued_hi = 0.0;
+    AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
     float k_6 = 0.0;
-    float gauss = 0.0;
+    float gauss_1 = 0.0;
     uint j_5 = 0u;
     bool local_168 = false;
     float f = 0.0;
@@ -6149,134 +6200,98 @@ AirlightResult airlight_in_scatter(AirlightScene s_25) {
         return AirlightResult(3.4028235e38, 2u);
     }
     vec3 _e25[4] = airlight_kronrod_rule();
-    a_17 = _e12.edges[0];
-    b_13 = _e12.edges[1];
+    AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
+    st_1 = _e30;
     uint evaluations = ((2u * _e12.max_panels) - 1u);
     bool loop_init_31 = true;
     while(true) {
         if (!loop_init_31) {
-            uint _e211 = step_2;
-            step_2 = (_e211 + 1u);
+            uint _e137 = step_2;
+            step_2 = (_e137 + 1u);
         }
         loop_init_31 = false;
-        uint _e84 = step_2;
-        if ((_e84 < evaluations)) {
+        uint _e39 = step_2;
+        if ((_e39 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e86 = a_17;
-            float _e87 = b_13;
-            float c_15 = (0.5 * (_e86 + _e87));
-            float _e91 = b_13;
-            float _e92 = a_17;
-            float hw_2 = (0.5 * (_e91 - _e92));
+            float _e42 = st_1.lo;
+            float _e44 = st_1.hi;
+            float c_15 = (0.5 * (_e42 + _e44));
+            float _e49 = st_1.hi;
+            float _e51 = st_1.lo;
+            float hw_2 = (0.5 * (_e49 - _e51));
             k_6 = 0.0;
-            gauss = 0.0;
+            gauss_1 = 0.0;
             j_5 = 0u;
             bool loop_init_32 = true;
             while(true) {
                 if (!loop_init_32) {
-                    uint _e162 = j_5;
-                    j_5 = (_e162 + 1u);
+                    uint _e121 = j_5;
+                    j_5 = (_e121 + 1u);
                 }
                 loop_init_32 = false;
-                uint _e102 = j_5;
-                if ((_e102 < 7u)) {
+                uint _e61 = j_5;
+                if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e105 = j_5;
-                    vec3 node_1 = _e25[(_e105 / 2u)];
-                    uint _e115 = j_5;
-                    if (((_e115 & 1u) == 0u)) {
-                        uint _e122 = j_5;
-                        local_168 = (_e122 < 6u);
+                    uint _e64 = j_5;
+                    vec3 node_1 = _e25[(_e64 / 2u)];
+                    uint _e74 = j_5;
+                    if (((_e74 & 1u) == 0u)) {
+                        uint _e81 = j_5;
+                        local_168 = (_e81 < 6u);
                     } else {
                         local_168 = false;
                     }
-                    bool _e126 = local_168;
-                    float w_8 = (_e126 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
-                    AirlightNode _e128 = airlight_outer_node(s_25, _e12, w_8);
+                    bool _e85 = local_168;
+                    float w_8 = (_e85 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
+                    AirlightNode _e87 = airlight_outer_node(s_25, _e12, w_8);
                     f = 0.0;
-                    if ((_e128.weight != 0.0)) {
-                        AirlightResult _e134 = airlight_node_integral(_e128);
-                        if ((_e134.status == AIRLIGHT_STATUS_INFINITE)) {
-                            return _e134;
+                    if ((_e87.weight != 0.0)) {
+                        AirlightResult _e93 = airlight_node_integral(_e87);
+                        if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
+                            return _e93;
                         }
                         if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
                             local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_169 = false;
                         }
-                        bool _e147 = local_169;
-                        if (_e147) {
-                            return _e134;
+                        bool _e106 = local_169;
+                        if (_e106) {
+                            return _e93;
                         }
-                        f = (_e134.in_scatter * _e128.weight);
+                        f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e151 = k_6;
-                    float _e153 = f;
-                    k_6 = (_e151 + (node_1.y * _e153));
-                    float _e156 = gauss;
-                    float _e158 = f;
-                    gauss = (_e156 + (node_1.z * _e158));
+                    float _e110 = k_6;
+                    float _e112 = f;
+                    k_6 = (_e110 + (node_1.y * _e112));
+                    float _e115 = gauss_1;
+                    float _e117 = f;
+                    gauss_1 = (_e115 + (node_1.z * _e117));
                 }
             }
-            uint _e164 = slot_1;
-            float _e165 = a_17;
-            float _e166 = b_13;
-            float _e167 = k_6;
-            float _e169 = k_6;
-            float _e171 = gauss;
-            airlight_list_set(list_2, _e164, vec4(_e165, _e166, (_e167 * hw_2), abs(((_e169 * hw_2) - (_e171 * hw_2)))));
-            uint _e176 = slot_1;
-            uint _e177 = count_3;
-            if ((_e176 == _e177)) {
-                uint _e179 = count_3;
-                count_3 = (_e179 + 1u);
-            }
-            uint _e182 = count_3;
-            if ((_e182 < _e12.panels)) {
-                uint _e186 = count_3;
-                a_17 = _e12.edges[_e186];
-                uint _e189 = count_3;
-                b_13 = _e12.edges[(_e189 + 1u)];
-                uint _e193 = count_3;
-                slot_1 = _e193;
-            } else {
-                bool _e194 = queued;
-                if (_e194) {
-                    float _e195 = queued_lo;
-                    a_17 = _e195;
-                    float _e196 = queued_hi;
-                    b_13 = _e196;
-                    uint _e197 = count_3;
-                    slot_1 = _e197;
-                    queued = false;
-                } else {
-                    uint _e199 = count_3;
-                    AirlightSplit _e201 = airlight_split_worst(list_2, _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
-                    if (!(_e201.split)) {
-                        break;
-                    }
-                    a_17 = _e201.lo;
-                    b_13 = _e201.mid;
-                    slot_1 = _e201.slot;
-                    queued = true;
-                    queued_lo = _e201.mid;
-                    queued_hi = _e201.hi;
-                }
+            AirlightAdaptive _e123 = st_1;
+            float _e124 = k_6;
+            float _e126 = gauss_1;
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_2), (_e126 * hw_2), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            st_1 = _e132;
+            bool _e134 = st_1.more;
+            if (!(_e134)) {
+                break;
             }
         }
     }
-    AirlightPanelList _e213 = list_2;
-    uint _e214 = count_3;
-    AirlightListScan _e215 = airlight_list_scan(_e213, _e214);
-    float total_4 = _e215.total;
-    bool _e217 = airlight_is_finite(total_4);
-    if (!(_e217)) {
+    AirlightPanelList _e140 = st_1.list;
+    uint _e142 = st_1.count;
+    AirlightListScan _e143 = airlight_list_scan(_e140, _e142);
+    float total_4 = _e143.total;
+    bool _e145 = airlight_is_finite(total_4);
+    if (!(_e145)) {
         return AirlightResult(3.4028235e38, 2u);
     }
     return AirlightResult(max(total_4, 0.0), AIRLIGHT_STATUS_OK);

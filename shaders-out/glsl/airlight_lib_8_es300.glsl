@@ -106,7 +106,7 @@ struct AirlightListScan {
     uint worst;
 };
 struct AirlightEdges {
-    float at[5];
+    float at[13];
     uint panels;
 };
 struct AirlightSplit {
@@ -115,6 +115,17 @@ struct AirlightSplit {
     float mid;
     float hi;
     uint slot;
+};
+struct AirlightAdaptive {
+    AirlightPanelList list;
+    uint count;
+    float lo;
+    float hi;
+    uint slot;
+    bool more;
+    bool queued;
+    float queued_lo;
+    float queued_hi;
 };
 struct AirlightOuter {
     vec3 a;
@@ -166,7 +177,7 @@ struct AirlightArea {
     float radius;
     float x_h;
     float h_eff;
-    float edges[5];
+    float edges[13];
     uint panels;
     uint outcome;
     vec4 lobes;
@@ -609,8 +620,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    vec2 b_14 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_14);
+    vec2 b_13 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_13);
     vec2 _e33 = airlight_cmul(_e29, _e29);
     vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
     root = _e35;
@@ -620,7 +631,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         root = -(_e41);
     }
     vec2 _e46 = root;
-    vec2 _e48 = airlight_cmul(b_14, (vec2(1.0, 0.0) + _e46));
+    vec2 _e48 = airlight_cmul(b_13, (vec2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     bool loop_init_2 = true;
     while(true) {
@@ -688,12 +699,12 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_6 = float(_e2);
-    float b_15 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_29 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
-    float disc = (1.0 - ((4.0 * a_29) / (b_15 * b_15)));
-    t_2 = b_15;
+    float b_14 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
+    float a_28 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float disc = (1.0 - ((4.0 * a_28) / (b_14 * b_14)));
+    t_2 = b_14;
     if ((disc > 0.0)) {
-        t_2 = ((b_15 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
     }
     bool loop_init_3 = true;
     while(true) {
@@ -832,11 +843,11 @@ float[10] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g_2, float om, float op) {
     if ((g_2 >= 0.0)) {
-        float a_30 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_30 * a_30));
+        float a_29 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_29 * a_29));
     }
-    float b_16 = (1.0 + g_2);
-    return ((op * -((g_2 + g_2))) + (b_16 * b_16));
+    float b_15 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_15 * b_15));
 }
 
 float airlight_hg(float g_3, float om_1, float op_1) {
@@ -950,11 +961,11 @@ float airlight_singular_height(float side, float gap, float sigma) {
 }
 
 float airlight_hg_gap(float g_4) {
-    float a_31 = abs(g_4);
-    if (!((a_31 > 0.0))) {
+    float a_30 = abs(g_4);
+    if (!((a_30 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_31) * (1.0 - a_31)) / (a_31 + a_31));
+    return (((1.0 - a_30) * (1.0 - a_30)) / (a_30 + a_30));
 }
 
 vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
@@ -969,8 +980,8 @@ vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
             break;
         }
         case 3u: {
-            float a_32 = abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, ((a_32 > 0.0) ? ((1.0 - a_32) / a_32) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_31 = abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, ((a_31 > 0.0) ? ((1.0 - a_31) / a_31) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1817,8 +1828,8 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_) {
 
 float airlight_bernstein_rho(float re, float im) {
     float im2_ = (im * im);
-    float a_33 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_33 + sqrt(max(((a_33 * a_33) - 1.0), 0.0)));
+    float a_32 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_32 + sqrt(max(((a_32 * a_32) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs) {
@@ -2838,9 +2849,9 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             break;
         }
         case 3u: {
-            float a_34 = abs(p0_4);
+            float a_33 = abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, ((a_34 > 0.0) ? ((1.0 - a_34) / a_34) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, ((a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -2991,23 +3002,23 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
-    float a_35 = (a0_ / scale_2);
-    float b_17 = (b0_ / scale_2);
+    float a_34 = (a0_ / scale_2);
+    float b_16 = (b0_ / scale_2);
     float c_10 = (c0_ / scale_2);
-    float disc_1 = ((b_17 * b_17) - ((4.0 * a_35) * c_10));
+    float disc_1 = ((b_16 * b_16) - ((4.0 * a_34) * c_10));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
-    if ((b_17 < 0.0)) {
+    if ((b_16 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_6 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
+    float q_6 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
     if ((q_6 != 0.0)) {
         r1_ = (c_10 / q_6);
     }
-    if ((a_35 != 0.0)) {
-        r2_2 = (q_6 / a_35);
+    if ((a_34 != 0.0)) {
+        r2_2 = (q_6 / a_34);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3051,15 +3062,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_36 = (sigma_11 * g_15.d_el);
+    float a_35 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_36 * a_36) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_36) / d_3);
-    if ((a_36 > 0.0)) {
-        y1_1 = (d_3 / (a_36 + root_1));
+    float root_1 = sqrt(((a_35 * a_35) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_35) / d_3);
+    if ((a_35 > 0.0)) {
+        y1_1 = (d_3 / (a_35 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -4752,7 +4763,7 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
 
 AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) {
     float cuts_1[3] = float[3](0.0, 0.0, 0.0);
-    AirlightEdges e_1 = AirlightEdges(float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u);
+    AirlightEdges e_1 = AirlightEdges(float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u);
     uint n_1 = 0u;
     uint i_18 = 0u;
     bool local_127 = false;
@@ -4781,7 +4792,7 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) 
         cuts_1[0] = _e35;
         cuts_1[1] = c_13;
     }
-    e_1 = AirlightEdges(float[5](lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    e_1 = AirlightEdges(float[13](lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
@@ -4880,12 +4891,63 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
     return AirlightSplit(false, 0.0, 0.0, 0.0, 0u);
 }
 
+AirlightAdaptive airlight_adaptive(float lo_4, float hi_4) {
+    return AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, lo_4, hi_4, 0u, true, false, 0.0, 0.0);
+}
+
+AirlightAdaptive airlight_adaptive_step(AirlightAdaptive state, float kronrod, float gauss, float edges[13], uint panels, uint max_panels_1, float tolerance_1) {
+    AirlightAdaptive st = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
+    AirlightPanelList list_2 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    st = state;
+    AirlightPanelList _e9 = st.list;
+    list_2 = _e9;
+    uint _e12 = st.slot;
+    float _e14 = st.lo;
+    float _e16 = st.hi;
+    airlight_list_set(list_2, _e12, vec4(_e14, _e16, kronrod, abs((kronrod - gauss))));
+    uint _e21 = st.slot;
+    uint _e23 = st.count;
+    if ((_e21 == _e23)) {
+        uint _e26 = st.count;
+        st.count = (_e26 + 1u);
+    }
+    uint count_3 = st.count;
+    if ((count_3 < panels)) {
+        st.lo = edges[count_3];
+        st.hi = edges[(count_3 + 1u)];
+        st.slot = count_3;
+    } else {
+        bool _e40 = st.queued;
+        if (_e40) {
+            float _e43 = st.queued_lo;
+            st.lo = _e43;
+            float _e46 = st.queued_hi;
+            st.hi = _e46;
+            st.slot = count_3;
+            st.queued = false;
+        } else {
+            AirlightSplit _e50 = airlight_split_worst(list_2, count_3, max_panels_1, tolerance_1);
+            st.lo = _e50.lo;
+            st.hi = _e50.mid;
+            st.slot = _e50.slot;
+            st.more = _e50.split;
+            st.queued = true;
+            st.queued_lo = _e50.mid;
+            st.queued_hi = _e50.hi;
+        }
+    }
+    AirlightPanelList _e66 = list_2;
+    st.list = _e66;
+    AirlightAdaptive _e67 = st;
+    return _e67;
+}
+
 float airlight_asinh(float x_15) {
     float r_4 = 0.0;
-    float a_37 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_37));
-    if ((a_37 <= 4096.0)) {
-        float _e17 = airlight_log1p((a_37 + ((a_37 * a_37) / (1.0 + sqrt((1.0 + (a_37 * a_37)))))));
+    float a_36 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_36));
+    if ((a_36 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_36 + ((a_36 * a_36) / (1.0 + sqrt((1.0 + (a_36 * a_36)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -4910,8 +4972,8 @@ vec2 airlight_cos_sin_half_turn(float x_16) {
 }
 
 float airlight_acos(float x_17) {
-    float a_38 = abs(x_17);
-    float _e8 = airlight_atan(sqrt(((1.0 - a_38) / (1.0 + a_38))));
+    float a_37 = abs(x_17);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_37) / (1.0 + a_37))));
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -4921,18 +4983,18 @@ float airlight_angle(float c_6, float s_22) {
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
-    float a_39 = (cos_a * cos_g);
-    float b_18 = (sin_a * sin_g);
-    if ((b_18 <= abs(a_39))) {
-        return ((a_39 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_38 = (cos_a * cos_g);
+    float b_17 = (sin_a * sin_g);
+    if ((b_17 <= abs(a_38))) {
+        return ((a_38 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    float _e18 = airlight_acos(clamp((-(a_39) / b_18), -1.0, 1.0));
+    float _e18 = airlight_acos(clamp((-(a_38) / b_17), -1.0, 1.0));
     return _e18;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels_1) {
+AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels_2) {
     float zeros[13] = float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    return AirlightOuter(s_23.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_1, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    return AirlightOuter(s_23.light_position, vec3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_2, vec3(0.0), vec3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, vec3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
 }
 
 AirlightOuter airlight_surface(AirlightScene s_24) {
@@ -5241,12 +5303,12 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18) {
     return 0.0;
 }
 
-float airlight_lobe_node(AirlightLobe q_2, float lo_4, float w_1, float u_2, bool smoothstep_) {
+float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, bool smoothstep_) {
     if (smoothstep_) {
-        float _e18 = airlight_lobe_at(q_2, (lo_4 + (((w_1 * u_2) * u_2) * ((3.0 - u_2) - u_2))));
+        float _e18 = airlight_lobe_at(q_2, (lo_5 + (((w_1 * u_2) * u_2) * ((3.0 - u_2) - u_2))));
         return ((((w_1 * 6.0) * u_2) * (1.0 - u_2)) * _e18);
     }
-    float _e22 = airlight_lobe_at(q_2, (lo_4 + (w_1 * u_2)));
+    float _e22 = airlight_lobe_at(q_2, (lo_5 + (w_1 * u_2)));
     return (w_1 * _e22);
 }
 
@@ -5280,13 +5342,13 @@ vec2[5] airlight_lobe_rule() {
     return vec2[5](vec2(0.42556283, 0.14776212), vec2(0.2833023, 0.13463336), vec2(0.16029522, 0.10954318), vec2(0.067468315, 0.07472567), vec2(0.013046736, 0.03333567));
 }
 
-float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smoothstep_1) {
+float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smoothstep_1) {
     bool local_141 = false;
     float sum_5 = 0.0;
     uint k_6 = 0u;
-    float w_8 = (hi_4 - lo_5);
+    float w_8 = (hi_5 - lo_6);
     if (!(!((w_8 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5 * w_8)));
+        float _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5 * w_8)));
         local_141 = !((_e14 > 0.0));
     } else {
         local_141 = true;
@@ -5312,8 +5374,8 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_5, float hi_4, bool smooths
             uint _e29 = k_6;
             vec2 node_1 = _e21[_e29];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_5, w_8, node_1.x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_5, w_8, (1.0 - node_1.x), smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_1.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1.0 - node_1.x), smoothstep_1);
             sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
     }
@@ -5359,7 +5421,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     }
     float _e88 = inner.x;
     float _e90 = inner.y;
-    float edges[4] = float[4](0.0, _e88, _e90, cut_2);
+    float edges_1[4] = float[4](0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
     bool loop_init_29 = true;
     while(true) {
@@ -5377,7 +5439,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_7, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_7, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -5636,14 +5698,10 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     float _e258 = airlight_to_w(_e257, _e15);
     float _e259[3] = cuts_3;
     AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_24.edges[0] = _e260.at[0];
-    g_24.edges[1] = _e260.at[1];
-    g_24.edges[2] = _e260.at[2];
-    g_24.edges[3] = _e260.at[3];
-    g_24.edges[4] = _e260.at[4];
+    g_24.edges = _e260.at;
     g_24.panels = _e260.panels;
-    AirlightOuter _e283 = g_24;
-    return _e283;
+    AirlightOuter _e265 = g_24;
+    return _e265;
 }
 
 AirlightCanonical airlight_no_canonical() {
@@ -5670,13 +5728,13 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_33 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
         float t_8 = (x_20 - float(i_33));
-        float a_40 = g_25.gamma[i_33];
-        float b_19 = g_25.gamma[(i_33 + 1u)];
-        float w_9 = (b_19 - a_40);
+        float a_39 = g_25.gamma[i_33];
+        float b_18 = g_25.gamma[(i_33 + 1u)];
+        float w_9 = (b_18 - a_39);
         float u_6 = (1.0 - t_8);
         bool smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
         bool smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
+        gamma_1 = (a_39 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
         jacobian = (((w_9 * 6.0) * t_8) * u_6);
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -5685,7 +5743,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_160 = false;
         }
         bool _e66 = local_160;
-        gamma_1 = (_e66 ? (a_40 + ((w_9 * t_8) * t_8)) : _e58);
+        gamma_1 = (_e66 ? (a_39 + ((w_9 * t_8) * t_8)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_161 = !(smooth_a);
@@ -5701,7 +5759,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_162 = false;
         }
         bool _e85 = local_162;
-        gamma_1 = (_e85 ? (b_19 - ((w_9 * u_6) * u_6)) : _e77);
+        gamma_1 = (_e85 ? (b_18 - ((w_9 * u_6) * u_6)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_163 = !(smooth_b);
@@ -5717,7 +5775,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e102 = local_164;
-        gamma_1 = (_e102 ? (a_40 + (w_9 * t_8)) : _e96);
+        gamma_1 = (_e102 ? (a_39 + (w_9 * t_8)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_165 = smooth_b;
@@ -5948,8 +6006,8 @@ vec4 airlight_phase_lobes(AirlightScene s_29) {
             break;
         }
         case 3u: {
-            float a_41 = abs(p0_5);
-            vec2 _e21 = airlight_lobe(p0_5, ((a_41 > 0.0) ? ((1.0 - a_41) / a_41) : AIRLIGHT_FLT_MAX));
+            float a_40 = abs(p0_5);
+            vec2 _e21 = airlight_lobe(p0_5, ((a_40 > 0.0) ? ((1.0 - a_40) / a_40) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -6003,7 +6061,7 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3) {
 }
 
 AirlightArea airlight_area(AirlightScene s_30) {
-    AirlightArea a_18 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
+    AirlightArea a_18 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
     bool local_168 = false;
     bool local_169 = false;
     bool local_170 = false;
@@ -6025,218 +6083,218 @@ AirlightArea airlight_area(AirlightScene s_30) {
     bool local_177 = false;
     bool local_178 = false;
     vec3 zero = vec3(0.0);
-    vec4 _e13 = airlight_phase_lobes(s_30);
-    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0.0, 0.0, float[5](0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e13, false);
+    vec4 _e21 = airlight_phase_lobes(s_30);
+    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
     if (!((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
         if (!((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
             local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
             local_169 = true;
         }
-        bool _e36 = local_169;
-        if (_e36) {
+        bool _e44 = local_169;
+        if (_e44) {
             local_170 = (s_30.phase_param_a == 0.0);
         } else {
             local_170 = false;
         }
-        bool _e43 = local_170;
-        local_168 = _e43;
+        bool _e51 = local_170;
+        local_168 = _e51;
     } else {
         local_168 = true;
     }
-    bool _e45 = local_168;
-    if (!(_e45)) {
+    bool _e53 = local_168;
+    if (!(_e53)) {
         if ((s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
             local_172 = (s_30.phase_param_a == 0.0);
         } else {
             local_172 = false;
         }
-        bool _e58 = local_172;
-        if (_e58) {
+        bool _e66 = local_172;
+        if (_e66) {
             local_173 = (s_30.phase_param_b == 0.0);
         } else {
             local_173 = false;
         }
-        bool _e65 = local_173;
-        local_171 = _e65;
+        bool _e73 = local_173;
+        local_171 = _e73;
     } else {
         local_171 = true;
     }
-    bool _e67 = local_171;
-    a_18.isotropic = _e67;
+    bool _e75 = local_171;
+    a_18.isotropic = _e75;
     if (!((s_30.intensity == 0.0))) {
         local_174 = (s_30.sigma_s == 0.0);
     } else {
         local_174 = true;
     }
-    bool _e78 = local_174;
-    if (_e78) {
+    bool _e86 = local_174;
+    if (_e86) {
         a_18.outcome = 1u;
-        AirlightArea _e81 = a_18;
-        return _e81;
+        AirlightArea _e89 = a_18;
+        return _e89;
     }
     vec3 o = s_30.origin;
-    vec3 _e84 = airlight_normalize(s_30.dir);
-    a_18.d = _e84;
+    vec3 _e92 = airlight_normalize(s_30.dir);
+    a_18.d = _e92;
     bool infinite_6 = ((s_30.flags & 1u) != 0u);
     float t0_2 = s_30.t_min;
     centre = s_30.light_position;
     size = s_30.light_param_a;
     if ((s_30.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
-        vec3 _e106 = a_18.c;
-        vec3 oc = (o - _e106);
-        float b_20 = dot(oc, _e84);
-        float _e111 = a_18.radius;
-        float _e113 = a_18.radius;
-        float k_9 = (dot(oc, oc) - (_e111 * _e113));
-        float disc_2 = ((b_20 * b_20) - k_9);
+        vec3 _e114 = a_18.c;
+        vec3 oc = (o - _e114);
+        float b_19 = dot(oc, _e92);
+        float _e119 = a_18.radius;
+        float _e121 = a_18.radius;
+        float k_9 = (dot(oc, oc) - (_e119 * _e121));
+        float disc_2 = ((b_19 * b_19) - k_9);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_8 = (-(b_20) - (((floatBitsToUint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            float q_8 = (-(b_19) - (((floatBitsToUint(b_19) & 2147483648u) != 0u) ? -(root_2) : root_2));
             cut0_ = q_8;
             cut1_ = (k_9 / q_8);
             cut_count = 2u;
         }
     } else {
         if ((s_30.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            vec3 _e137 = airlight_normalize(s_30.light_axis);
-            a_18.n = _e137;
-            vec3 _e140 = a_18.n;
-            vec3 _e141 = airlight_basis_e1_(_e140);
-            a_18.a1_ = _e141;
+            vec3 _e145 = airlight_normalize(s_30.light_axis);
+            a_18.n = _e145;
+            vec3 _e148 = a_18.n;
+            vec3 _e149 = airlight_basis_e1_(_e148);
+            a_18.a1_ = _e149;
         } else {
             a_18.eu = s_30.light_axis;
             a_18.ev = s_30.light_end;
-            vec3 _e148 = a_18.eu;
-            vec3 _e150 = a_18.ev;
-            vec3 _e152 = airlight_normalize(cross(_e148, _e150));
-            a_18.n = _e152;
-            vec3 _e155 = a_18.eu;
-            vec3 _e156 = airlight_normalize(_e155);
-            a_18.a1_ = _e156;
-            vec3 _e158 = a_18.eu;
-            vec3 _e160 = a_18.ev;
-            vec3 diagonal = (_e158 + _e160);
-            vec3 _e163 = a_18.c;
-            centre = (_e163 + (0.5 * diagonal));
-            float _e167 = airlight_safe_length(diagonal);
-            vec3 _e169 = a_18.eu;
-            vec3 _e171 = a_18.ev;
-            float _e173 = airlight_safe_length((_e169 - _e171));
-            size = (0.5 * max(_e167, _e173));
+            vec3 _e156 = a_18.eu;
+            vec3 _e158 = a_18.ev;
+            vec3 _e160 = airlight_normalize(cross(_e156, _e158));
+            a_18.n = _e160;
+            vec3 _e163 = a_18.eu;
+            vec3 _e164 = airlight_normalize(_e163);
+            a_18.a1_ = _e164;
+            vec3 _e166 = a_18.eu;
+            vec3 _e168 = a_18.ev;
+            vec3 diagonal = (_e166 + _e168);
+            vec3 _e171 = a_18.c;
+            centre = (_e171 + (0.5 * diagonal));
+            float _e175 = airlight_safe_length(diagonal);
+            vec3 _e177 = a_18.eu;
+            vec3 _e179 = a_18.ev;
+            float _e181 = airlight_safe_length((_e177 - _e179));
+            size = (0.5 * max(_e175, _e181));
         }
-        vec3 _e179 = a_18.n;
-        vec3 _e181 = a_18.a1_;
-        a_18.a2_ = cross(_e179, _e181);
-        vec3 _e185 = a_18.a1_;
-        vec3 _e188 = a_18.a2_;
-        vec3 _e191 = a_18.n;
-        a_18.dirs = vec3(dot(_e185, _e84), dot(_e188, _e84), dot(_e191, _e84));
-        vec3 _e195 = a_18.c;
-        vec3 _e198 = a_18.n;
-        vec3 _e201 = a_18.n;
-        cut0_ = (dot((_e195 - o), _e198) / dot(_e84, _e201));
+        vec3 _e187 = a_18.n;
+        vec3 _e189 = a_18.a1_;
+        a_18.a2_ = cross(_e187, _e189);
+        vec3 _e193 = a_18.a1_;
+        vec3 _e196 = a_18.a2_;
+        vec3 _e199 = a_18.n;
+        a_18.dirs = vec3(dot(_e193, _e92), dot(_e196, _e92), dot(_e199, _e92));
+        vec3 _e203 = a_18.c;
+        vec3 _e206 = a_18.n;
+        vec3 _e209 = a_18.n;
+        cut0_ = (dot((_e203 - o), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
-    float _e205 = size;
-    if (!((_e205 > 0.0))) {
+    float _e213 = size;
+    if (!((_e213 > 0.0))) {
         a_18.outcome = 1u;
-        AirlightArea _e211 = a_18;
-        return _e211;
+        AirlightArea _e219 = a_18;
+        return _e219;
     }
-    vec3 _e212 = centre;
-    vec3 to_centre = (_e212 - o);
-    a_18.x_h = dot(to_centre, _e84);
-    float _e217 = a_18.x_h;
-    float _e220 = airlight_safe_length((to_centre - (_e217 * _e84)));
-    float _e223 = size;
-    float _e224 = size;
-    a_18.h_eff = sqrt(((_e220 * _e220) + (_e223 * _e224)));
+    vec3 _e220 = centre;
+    vec3 to_centre = (_e220 - o);
+    a_18.x_h = dot(to_centre, _e92);
+    float _e225 = a_18.x_h;
+    float _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
+    float _e231 = size;
+    float _e232 = size;
+    a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
     t_end_1 = s_30.t_max;
     end_infinite = infinite_6;
     if ((s_30.sigma_t > 0.0)) {
-        vec3 _e234 = centre;
-        float _e238 = airlight_safe_length((_e234 - (o + (t0_2 * _e84))));
-        float _e240 = size;
-        float reach_1 = (((t0_2 + _e238) + _e240) - (-15.942385 / s_30.sigma_t));
+        vec3 _e242 = centre;
+        float _e246 = airlight_safe_length((_e242 - (o + (t0_2 * _e92))));
+        float _e248 = size;
+        float reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385 / s_30.sigma_t));
         if (!(infinite_6)) {
-            float _e249 = t_end_1;
-            local_175 = (reach_1 < _e249);
+            float _e257 = t_end_1;
+            local_175 = (reach_1 < _e257);
         } else {
             local_175 = true;
         }
-        bool _e252 = local_175;
-        if (_e252) {
+        bool _e260 = local_175;
+        if (_e260) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e254 = a_18;
-    float _e256 = airlight_area_theta(_e254, t0_2, false);
-    AirlightArea _e257 = a_18;
-    float _e258 = t_end_1;
-    bool _e259 = end_infinite;
-    float _e260 = airlight_area_theta(_e257, _e258, _e259);
-    float _e262 = a_18.x_h;
-    float _e264 = a_18.x_h;
-    float _e265 = cut0_;
-    uint _e266 = cut_count;
-    float _e271 = a_18.x_h;
-    float _e272 = cut1_;
-    uint _e273 = cut_count;
-    cuts_4 = float[3](_e262, ((_e266 > 0u) ? _e265 : _e264), ((_e273 > 1u) ? _e272 : _e271));
+    AirlightArea _e262 = a_18;
+    float _e264 = airlight_area_theta(_e262, t0_2, false);
+    AirlightArea _e265 = a_18;
+    float _e266 = t_end_1;
+    bool _e267 = end_infinite;
+    float _e268 = airlight_area_theta(_e265, _e266, _e267);
+    float _e270 = a_18.x_h;
+    float _e272 = a_18.x_h;
+    float _e273 = cut0_;
+    uint _e274 = cut_count;
+    float _e279 = a_18.x_h;
+    float _e280 = cut1_;
+    uint _e281 = cut_count;
+    cuts_4 = float[3](_e270, ((_e274 > 0u) ? _e273 : _e272), ((_e281 > 1u) ? _e280 : _e279));
     bool loop_init_31 = true;
     while(true) {
         if (!loop_init_31) {
-            uint _e313 = i_27;
-            i_27 = (_e313 + 1u);
+            uint _e321 = i_27;
+            i_27 = (_e321 + 1u);
         }
         loop_init_31 = false;
-        uint _e281 = i_27;
-        if ((_e281 < 3u)) {
+        uint _e289 = i_27;
+        if ((_e289 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e284 = i_27;
-            float t_9 = cuts_4[_e284];
-            uint _e287 = i_27;
-            cuts_4[_e287] = _e256;
-            bool _e289 = airlight_is_finite(t_9);
-            if (_e289) {
+            uint _e292 = i_27;
+            float t_9 = cuts_4[_e292];
+            uint _e295 = i_27;
+            cuts_4[_e295] = _e264;
+            bool _e297 = airlight_is_finite(t_9);
+            if (_e297) {
                 local_176 = (t_9 >= t0_2);
             } else {
                 local_176 = false;
             }
-            bool _e294 = local_176;
-            if (_e294) {
-                bool _e297 = end_infinite;
-                if (!(_e297)) {
-                    float _e301 = t_end_1;
-                    local_178 = (t_9 <= _e301);
+            bool _e302 = local_176;
+            if (_e302) {
+                bool _e305 = end_infinite;
+                if (!(_e305)) {
+                    float _e309 = t_end_1;
+                    local_178 = (t_9 <= _e309);
                 } else {
                     local_178 = true;
                 }
-                bool _e304 = local_178;
-                local_177 = _e304;
+                bool _e312 = local_178;
+                local_177 = _e312;
             } else {
                 local_177 = false;
             }
-            bool _e306 = local_177;
-            if (_e306) {
-                uint _e307 = i_27;
-                AirlightArea _e309 = a_18;
-                float _e311 = airlight_area_theta(_e309, t_9, false);
-                cuts_4[_e307] = _e311;
+            bool _e314 = local_177;
+            if (_e314) {
+                uint _e315 = i_27;
+                AirlightArea _e317 = a_18;
+                float _e319 = airlight_area_theta(_e317, t_9, false);
+                cuts_4[_e315] = _e319;
             }
         }
     }
-    float _e315[3] = cuts_4;
-    AirlightEdges _e316 = airlight_edges_between(_e256, _e260, _e315);
-    a_18.edges = _e316.at;
-    a_18.panels = _e316.panels;
-    AirlightArea _e321 = a_18;
-    return _e321;
+    float _e323[3] = cuts_4;
+    AirlightEdges _e324 = airlight_edges_between(_e264, _e268, _e323);
+    a_18.edges = _e324.at;
+    a_18.panels = _e324.panels;
+    AirlightArea _e329 = a_18;
+    return _e329;
 }
 
 AirlightAbove airlight_above(float z_9, vec2 off) {
@@ -6363,9 +6421,9 @@ float airlight_disc(AirlightScene s_33, AirlightArea a_21, vec3 x_21) {
             r_max_1 = ((radius_2 + radius_2) * _e49.x);
             if (inside_1) {
                 e_5 = _e49.xy;
-                float b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
-                float root_3 = sqrt(((b_21 * b_21) - k_10));
-                r_max_1 = ((b_21 > 0.0) ? (-(k_10) / (b_21 + root_3)) : (root_3 - b_21));
+                float b_20 = ((fx * _e49.x) + (fy_1 * _e49.y));
+                float root_3 = sqrt(((b_20 * b_20) - k_10));
+                r_max_1 = ((b_20 > 0.0) ? (-(k_10) / (b_20 + root_3)) : (root_3 - b_20));
             }
             float _e90 = sum_8;
             AirlightAbove _e92 = above_3;
@@ -7059,17 +7117,10 @@ float airlight_area_node(AirlightScene s_41, AirlightArea a_27, float theta) {
 }
 
 AirlightResult airlight_area_light(AirlightScene s_42) {
-    AirlightPanelList list_2 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-    uint count_3 = 0u;
-    float lo_6 = 0.0;
-    float hi_5 = 0.0;
-    uint slot_1 = 0u;
-    bool queued = false;
-    float queued_lo = 0.0;
-    float queued_hi = 0.0;
+    AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
     float k_7 = 0.0;
-    float gauss = 0.0;
+    float gauss_1 = 0.0;
     uint j_7 = 0u;
     bool local_187 = false;
     AirlightArea _e1 = airlight_area(s_42);
@@ -7077,116 +7128,80 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
         return AirlightResult(0.0, 0u);
     }
     vec3 _e8[8] = airlight_kronrod15_rule();
-    lo_6 = _e1.edges[0];
-    hi_5 = _e1.edges[1];
-    uint max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
-    uint evaluations = ((2u * max_panels_2) - 1u);
+    AirlightAdaptive _e13 = airlight_adaptive(_e1.edges[0], _e1.edges[1]);
+    st_1 = _e13;
+    uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
+    uint evaluations = ((2u * max_panels_3) - 1u);
     bool loop_init_39 = true;
     while(true) {
         if (!loop_init_39) {
-            uint _e171 = step_2;
-            step_2 = (_e171 + 1u);
+            uint _e97 = step_2;
+            step_2 = (_e97 + 1u);
         }
         loop_init_39 = false;
-        uint _e68 = step_2;
-        if ((_e68 < evaluations)) {
+        uint _e24 = step_2;
+        if ((_e24 < evaluations)) {
         } else {
             break;
         }
         {
-            float _e70 = lo_6;
-            float _e71 = hi_5;
-            float c_20 = (0.5 * (_e70 + _e71));
-            float _e75 = hi_5;
-            float _e76 = lo_6;
-            float hw_5 = (0.5 * (_e75 - _e76));
+            float _e27 = st_1.lo;
+            float _e29 = st_1.hi;
+            float c_20 = (0.5 * (_e27 + _e29));
+            float _e34 = st_1.hi;
+            float _e36 = st_1.lo;
+            float hw_5 = (0.5 * (_e34 - _e36));
             k_7 = 0.0;
-            gauss = 0.0;
+            gauss_1 = 0.0;
             j_7 = 0u;
             bool loop_init_40 = true;
             while(true) {
                 if (!loop_init_40) {
-                    uint _e122 = j_7;
-                    j_7 = (_e122 + 1u);
+                    uint _e82 = j_7;
+                    j_7 = (_e82 + 1u);
                 }
                 loop_init_40 = false;
-                uint _e86 = j_7;
-                if ((_e86 < 15u)) {
+                uint _e46 = j_7;
+                if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e89 = j_7;
-                    vec3 node_2 = _e8[(_e89 / 2u)];
-                    uint _e99 = j_7;
-                    if (((_e99 & 1u) == 0u)) {
-                        uint _e106 = j_7;
-                        local_187 = (_e106 < 14u);
+                    uint _e49 = j_7;
+                    vec3 node_2 = _e8[(_e49 / 2u)];
+                    uint _e59 = j_7;
+                    if (((_e59 & 1u) == 0u)) {
+                        uint _e66 = j_7;
+                        local_187 = (_e66 < 14u);
                     } else {
                         local_187 = false;
                     }
-                    bool _e110 = local_187;
-                    float x_33 = (_e110 ? (c_20 - (hw_5 * node_2.x)) : (c_20 + (hw_5 * node_2.x)));
-                    float _e112 = airlight_area_node(s_42, _e1, x_33);
-                    float _e113 = k_7;
-                    k_7 = (_e113 + (node_2.y * _e112));
-                    float _e117 = gauss;
-                    gauss = (_e117 + (node_2.z * _e112));
+                    bool _e70 = local_187;
+                    float x_33 = (_e70 ? (c_20 - (hw_5 * node_2.x)) : (c_20 + (hw_5 * node_2.x)));
+                    float _e72 = airlight_area_node(s_42, _e1, x_33);
+                    float _e73 = k_7;
+                    k_7 = (_e73 + (node_2.y * _e72));
+                    float _e77 = gauss_1;
+                    gauss_1 = (_e77 + (node_2.z * _e72));
                 }
             }
-            uint _e124 = slot_1;
-            float _e125 = lo_6;
-            float _e126 = hi_5;
-            float _e127 = k_7;
-            float _e129 = k_7;
-            float _e131 = gauss;
-            airlight_list_set(list_2, _e124, vec4(_e125, _e126, (_e127 * hw_5), abs(((_e129 * hw_5) - (_e131 * hw_5)))));
-            uint _e136 = slot_1;
-            uint _e137 = count_3;
-            if ((_e136 == _e137)) {
-                uint _e139 = count_3;
-                count_3 = (_e139 + 1u);
-            }
-            uint _e142 = count_3;
-            if ((_e142 < _e1.panels)) {
-                uint _e146 = count_3;
-                lo_6 = _e1.edges[_e146];
-                uint _e149 = count_3;
-                hi_5 = _e1.edges[(_e149 + 1u)];
-                uint _e153 = count_3;
-                slot_1 = _e153;
-            } else {
-                bool _e154 = queued;
-                if (_e154) {
-                    float _e155 = queued_lo;
-                    lo_6 = _e155;
-                    float _e156 = queued_hi;
-                    hi_5 = _e156;
-                    uint _e157 = count_3;
-                    slot_1 = _e157;
-                    queued = false;
-                } else {
-                    uint _e159 = count_3;
-                    AirlightSplit _e161 = airlight_split_worst(list_2, _e159, max_panels_2, AIRLIGHT_AREA_RAY_TOLERANCE);
-                    if (!(_e161.split)) {
-                        break;
-                    }
-                    lo_6 = _e161.lo;
-                    hi_5 = _e161.mid;
-                    slot_1 = _e161.slot;
-                    queued = true;
-                    queued_lo = _e161.mid;
-                    queued_hi = _e161.hi;
-                }
+            AirlightAdaptive _e84 = st_1;
+            float _e85 = k_7;
+            float _e87 = gauss_1;
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_5), (_e87 * hw_5), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            st_1 = _e92;
+            bool _e94 = st_1.more;
+            if (!(_e94)) {
+                break;
             }
         }
     }
-    AirlightPanelList _e173 = list_2;
-    uint _e174 = count_3;
-    AirlightListScan _e175 = airlight_list_scan(_e173, _e174);
-    float total_4 = _e175.total;
-    bool _e177 = airlight_is_finite(total_4);
-    if (!(_e177)) {
+    AirlightPanelList _e100 = st_1.list;
+    uint _e102 = st_1.count;
+    AirlightListScan _e103 = airlight_list_scan(_e100, _e102);
+    float total_4 = _e103.total;
+    bool _e105 = airlight_is_finite(total_4);
+    if (!(_e105)) {
         return AirlightResult(3.4028235e38, 2u);
     }
     return AirlightResult((s_42.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
@@ -7326,17 +7341,10 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_45) {
 }
 
 AirlightResult airlight_in_scatter(AirlightScene s_46) {
-    AirlightPanelList list_3 = AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-    uint count_4 = 0u;
-    float a_28 = 0.0;
-    float b_13 = 0.0;
-    uint slot_2 = 0u;
-    bool queued_1 = false;
-    float queued_lo_1 = 0.0;
-    float queued_hi_1 = 0.0;
+    AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
     float k_8 = 0.0;
-    float gauss_1 = 0.0;
+    float gauss_2 = 0.0;
     uint j_8 = 0u;
     bool local_196 = false;
     float f = 0.0;
@@ -7356,134 +7364,98 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
         return AirlightResult(3.4028235e38, 2u);
     }
     vec3 _e25[4] = airlight_kronrod_rule();
-    a_28 = _e12.edges[0];
-    b_13 = _e12.edges[1];
+    AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
+    st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
     bool loop_init_41 = true;
     while(true) {
         if (!loop_init_41) {
-            uint _e211 = step_3;
-            step_3 = (_e211 + 1u);
+            uint _e137 = step_3;
+            step_3 = (_e137 + 1u);
         }
         loop_init_41 = false;
-        uint _e84 = step_3;
-        if ((_e84 < evaluations_1)) {
+        uint _e39 = step_3;
+        if ((_e39 < evaluations_1)) {
         } else {
             break;
         }
         {
-            float _e86 = a_28;
-            float _e87 = b_13;
-            float c_21 = (0.5 * (_e86 + _e87));
-            float _e91 = b_13;
-            float _e92 = a_28;
-            float hw_6 = (0.5 * (_e91 - _e92));
+            float _e42 = st_2.lo;
+            float _e44 = st_2.hi;
+            float c_21 = (0.5 * (_e42 + _e44));
+            float _e49 = st_2.hi;
+            float _e51 = st_2.lo;
+            float hw_6 = (0.5 * (_e49 - _e51));
             k_8 = 0.0;
-            gauss_1 = 0.0;
+            gauss_2 = 0.0;
             j_8 = 0u;
             bool loop_init_42 = true;
             while(true) {
                 if (!loop_init_42) {
-                    uint _e162 = j_8;
-                    j_8 = (_e162 + 1u);
+                    uint _e121 = j_8;
+                    j_8 = (_e121 + 1u);
                 }
                 loop_init_42 = false;
-                uint _e102 = j_8;
-                if ((_e102 < 7u)) {
+                uint _e61 = j_8;
+                if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e105 = j_8;
-                    vec3 node_3 = _e25[(_e105 / 2u)];
-                    uint _e115 = j_8;
-                    if (((_e115 & 1u) == 0u)) {
-                        uint _e122 = j_8;
-                        local_196 = (_e122 < 6u);
+                    uint _e64 = j_8;
+                    vec3 node_3 = _e25[(_e64 / 2u)];
+                    uint _e74 = j_8;
+                    if (((_e74 & 1u) == 0u)) {
+                        uint _e81 = j_8;
+                        local_196 = (_e81 < 6u);
                     } else {
                         local_196 = false;
                     }
-                    bool _e126 = local_196;
-                    float w_10 = (_e126 ? (c_21 - (hw_6 * node_3.x)) : (c_21 + (hw_6 * node_3.x)));
-                    AirlightNode _e128 = airlight_outer_node(s_46, _e12, w_10);
+                    bool _e85 = local_196;
+                    float w_10 = (_e85 ? (c_21 - (hw_6 * node_3.x)) : (c_21 + (hw_6 * node_3.x)));
+                    AirlightNode _e87 = airlight_outer_node(s_46, _e12, w_10);
                     f = 0.0;
-                    if ((_e128.weight != 0.0)) {
-                        AirlightResult _e134 = airlight_node_integral(_e128);
-                        if ((_e134.status == AIRLIGHT_STATUS_INFINITE)) {
-                            return _e134;
+                    if ((_e87.weight != 0.0)) {
+                        AirlightResult _e93 = airlight_node_integral(_e87);
+                        if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
+                            return _e93;
                         }
                         if ((s_46.light_shape == AIRLIGHT_SHAPE_POINT)) {
                             local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_197 = false;
                         }
-                        bool _e147 = local_197;
-                        if (_e147) {
-                            return _e134;
+                        bool _e106 = local_197;
+                        if (_e106) {
+                            return _e93;
                         }
-                        f = (_e134.in_scatter * _e128.weight);
+                        f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e151 = k_8;
-                    float _e153 = f;
-                    k_8 = (_e151 + (node_3.y * _e153));
-                    float _e156 = gauss_1;
-                    float _e158 = f;
-                    gauss_1 = (_e156 + (node_3.z * _e158));
+                    float _e110 = k_8;
+                    float _e112 = f;
+                    k_8 = (_e110 + (node_3.y * _e112));
+                    float _e115 = gauss_2;
+                    float _e117 = f;
+                    gauss_2 = (_e115 + (node_3.z * _e117));
                 }
             }
-            uint _e164 = slot_2;
-            float _e165 = a_28;
-            float _e166 = b_13;
-            float _e167 = k_8;
-            float _e169 = k_8;
-            float _e171 = gauss_1;
-            airlight_list_set(list_3, _e164, vec4(_e165, _e166, (_e167 * hw_6), abs(((_e169 * hw_6) - (_e171 * hw_6)))));
-            uint _e176 = slot_2;
-            uint _e177 = count_4;
-            if ((_e176 == _e177)) {
-                uint _e179 = count_4;
-                count_4 = (_e179 + 1u);
-            }
-            uint _e182 = count_4;
-            if ((_e182 < _e12.panels)) {
-                uint _e186 = count_4;
-                a_28 = _e12.edges[_e186];
-                uint _e189 = count_4;
-                b_13 = _e12.edges[(_e189 + 1u)];
-                uint _e193 = count_4;
-                slot_2 = _e193;
-            } else {
-                bool _e194 = queued_1;
-                if (_e194) {
-                    float _e195 = queued_lo_1;
-                    a_28 = _e195;
-                    float _e196 = queued_hi_1;
-                    b_13 = _e196;
-                    uint _e197 = count_4;
-                    slot_2 = _e197;
-                    queued_1 = false;
-                } else {
-                    uint _e199 = count_4;
-                    AirlightSplit _e201 = airlight_split_worst(list_3, _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
-                    if (!(_e201.split)) {
-                        break;
-                    }
-                    a_28 = _e201.lo;
-                    b_13 = _e201.mid;
-                    slot_2 = _e201.slot;
-                    queued_1 = true;
-                    queued_lo_1 = _e201.mid;
-                    queued_hi_1 = _e201.hi;
-                }
+            AirlightAdaptive _e123 = st_2;
+            float _e124 = k_8;
+            float _e126 = gauss_2;
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_6), (_e126 * hw_6), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            st_2 = _e132;
+            bool _e134 = st_2.more;
+            if (!(_e134)) {
+                break;
             }
         }
     }
-    AirlightPanelList _e213 = list_3;
-    uint _e214 = count_4;
-    AirlightListScan _e215 = airlight_list_scan(_e213, _e214);
-    float total_5 = _e215.total;
-    bool _e217 = airlight_is_finite(total_5);
-    if (!(_e217)) {
+    AirlightPanelList _e140 = st_2.list;
+    uint _e142 = st_2.count;
+    AirlightListScan _e143 = airlight_list_scan(_e140, _e142);
+    float total_5 = _e143.total;
+    bool _e145 = airlight_is_finite(total_5);
+    if (!(_e145)) {
         return AirlightResult(3.4028235e38, 2u);
     }
     return AirlightResult(max(total_5, 0.0), AIRLIGHT_STATUS_OK);

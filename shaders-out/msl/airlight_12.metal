@@ -117,14 +117,11 @@ struct AirlightListScan {
     float errors;
     uint worst;
 };
-struct airlight_type_17 {
-    float inner[5];
-};
 struct AirlightEdges {
-    airlight_type_17 at;
+    airlight_type_3 at;
     uint panels;
 };
-struct airlight_type_18 {
+struct airlight_type_17 {
     float inner[3];
 };
 struct AirlightSplit {
@@ -134,6 +131,19 @@ struct AirlightSplit {
     float mid;
     float hi;
     uint slot;
+};
+struct AirlightAdaptive {
+    AirlightPanelList list;
+    uint count;
+    float lo;
+    float hi;
+    uint slot;
+    bool more;
+    bool queued;
+    char _pad7[2];
+    float queued_lo;
+    float queued_hi;
+    char _pad9[4];
 };
 struct AirlightOuter {
     metal::float3 a;
@@ -161,10 +171,10 @@ struct AirlightOuter {
     uint smooth_edges;
     char _pad21[4];
 };
-struct airlight_type_19 {
+struct airlight_type_18 {
     float inner[11];
 };
-struct airlight_type_20 {
+struct airlight_type_19 {
     float inner[6];
 };
 struct AirlightLobe {
@@ -176,7 +186,7 @@ struct AirlightLobe {
     float sin_delta;
     float exponent;
 };
-struct airlight_type_21 {
+struct airlight_type_20 {
     metal::float2 inner[5];
 };
 struct AirlightNode {
@@ -186,8 +196,8 @@ struct AirlightNode {
     bool exact;
     char _pad4[15];
 };
-typedef AirlightScene airlight_type_22[1];
-typedef AirlightResult airlight_type_23[1];
+typedef AirlightScene airlight_type_21[1];
+typedef AirlightResult airlight_type_22[1];
 constant uint AIRLIGHT_TERMS = 12u;
 constant uint AIRLIGHT_HALF_TERMS = 6u;
 constant float AIRLIGHT_PANEL_TOLERANCE = 0.001;
@@ -550,8 +560,8 @@ metal::float2 airlight_e1_scaled_cf(
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = static_cast<float>(_e14);
-    metal::float2 b_14 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
-    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_14);
+    metal::float2 b_13 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_13);
     metal::float2 _e33 = airlight_cmul(_e29, _e29);
     metal::float2 _e35 = airlight_csqrt(metal::float2(1.0, 0.0) - _e33);
     root = _e35;
@@ -561,7 +571,7 @@ metal::float2 airlight_e1_scaled_cf(
         root = -(_e41);
     }
     metal::float2 _e46 = root;
-    metal::float2 _e48 = airlight_cmul(b_14, metal::float2(1.0, 0.0) + _e46);
+    metal::float2 _e48 = airlight_cmul(b_13, metal::float2(1.0, 0.0) + _e46);
     t_1 = _e48 * 0.5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -639,12 +649,12 @@ float airlight_en_scaled_cf(
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = static_cast<float>(n);
     float m_6 = static_cast<float>(_e2);
-    float b_15 = (x_4 + nf_1) + (2.0 * (m_6 + 1.0));
-    float a_18 = (m_6 + 2.0) * ((nf_1 + m_6) + 1.0);
-    float disc = 1.0 - ((4.0 * a_18) / (b_15 * b_15));
-    t_2 = b_15;
+    float b_14 = (x_4 + nf_1) + (2.0 * (m_6 + 1.0));
+    float a_17 = (m_6 + 2.0) * ((nf_1 + m_6) + 1.0);
+    float disc = 1.0 - ((4.0 * a_17) / (b_14 * b_14));
+    t_2 = b_14;
     if (disc > 0.0) {
-        t_2 = (b_15 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_14 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -832,11 +842,11 @@ float airlight_hg_base(
     float op
 ) {
     if (g >= 0.0) {
-        float a_19 = 1.0 - g;
-        return (om * (g + g)) + (a_19 * a_19);
+        float a_18 = 1.0 - g;
+        return (om * (g + g)) + (a_18 * a_18);
     }
-    float b_16 = 1.0 + g;
-    return (op * -((g + g))) + (b_16 * b_16);
+    float b_15 = 1.0 + g;
+    return (op * -((g + g))) + (b_15 * b_15);
 }
 
 float airlight_hg(
@@ -982,11 +992,11 @@ float airlight_singular_height(
 float airlight_hg_gap(
     float g_2
 ) {
-    float a_20 = metal::abs(g_2);
-    if (!((a_20 > 0.0))) {
+    float a_19 = metal::abs(g_2);
+    if (!((a_19 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return ((1.0 - a_20) * (1.0 - a_20)) / (a_20 + a_20);
+    return ((1.0 - a_19) * (1.0 - a_19)) / (a_19 + a_19);
 }
 
 metal::float3 airlight_singular_heights(
@@ -1004,8 +1014,8 @@ metal::float3 airlight_singular_heights(
             break;
         }
         case 3u: {
-            float a_21 = metal::abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, (a_21 > 0.0) ? ((1.0 - a_21) / a_21) : AIRLIGHT_FLT_MAX, sigma_1);
+            float a_20 = metal::abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, (a_20 > 0.0) ? ((1.0 - a_20) / a_20) : AIRLIGHT_FLT_MAX, sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -2124,8 +2134,8 @@ float airlight_bernstein_rho(
     float im
 ) {
     float im2_ = im * im;
-    float a_22 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
-    return a_22 + metal::sqrt(metal::max((a_22 * a_22) - 1.0, 0.0));
+    float a_21 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
+    return a_21 + metal::sqrt(metal::max((a_21 * a_21) - 1.0, 0.0));
 }
 
 float airlight_transform_noise(
@@ -3475,9 +3485,9 @@ metal::float2 airlight_angle_route(
             break;
         }
         case 3u: {
-            float a_23 = metal::abs(p0_4);
+            float a_22 = metal::abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, (a_23 > 0.0) ? ((1.0 - a_23) / a_23) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_3);
+            float _e146 = airlight_angle_floor(p0_4, (a_22 > 0.0) ? ((1.0 - a_22) / a_22) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_3);
             rate = _e146;
             break;
         }
@@ -3636,23 +3646,23 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_24 = a0_ / scale_1;
-    float b_17 = b0_ / scale_1;
+    float a_23 = a0_ / scale_1;
+    float b_16 = b0_ / scale_1;
     float c_9 = c0_ / scale_1;
-    float disc_1 = (b_17 * b_17) - ((4.0 * a_24) * c_9);
+    float disc_1 = (b_16 * b_16) - ((4.0 * a_23) * c_9);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_17 < 0.0) {
+    if (b_16 < 0.0) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_5 = -0.5 * (b_17 + (_e47 * metal::sqrt(disc_1)));
+    float q_5 = -0.5 * (b_16 + (_e47 * metal::sqrt(disc_1)));
     if (q_5 != 0.0) {
         r1_ = c_9 / q_5;
     }
-    if (a_24 != 0.0) {
-        r2_2 = q_5 / a_24;
+    if (a_23 != 0.0) {
+        r2_2 = q_5 / a_23;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3707,15 +3717,15 @@ bool airlight_dark(
     if (_e31) {
         return false;
     }
-    float a_25 = sigma_11 * g_13.d_el;
+    float a_24 = sigma_11 * g_13.d_el;
     float d_3 = g_13.d_c;
     if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_25 * a_25) + (d_3 * d_3));
-    y1_1 = (root_1 - a_25) / d_3;
-    if (a_25 > 0.0) {
-        y1_1 = d_3 / (a_25 + root_1);
+    float root_1 = metal::sqrt((a_24 * a_24) + (d_3 * d_3));
+    y1_1 = (root_1 - a_24) / d_3;
+    if (a_24 > 0.0) {
+        y1_1 = d_3 / (a_24 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -5115,10 +5125,10 @@ AirlightCanonical airlight_refined(
     metal::float2 _e11 = airlight_two_sum(s_18.light_position[0], -(s_18.origin[0]), key_4);
     metal::float2 _e17 = airlight_two_sum(s_18.light_position[1], -(s_18.origin[1]), key_4);
     metal::float2 _e23 = airlight_two_sum(s_18.light_position[2], -(s_18.origin[2]), key_4);
-    metal::float3 hi_5 = metal::float3(_e11.x, _e17.x, _e23.x);
-    metal::float3 lo_6 = metal::float3(_e11.y, _e17.y, _e23.y);
+    metal::float3 hi_6 = metal::float3(_e11.x, _e17.x, _e23.x);
+    metal::float3 lo_7 = metal::float3(_e11.y, _e17.y, _e23.y);
     metal::float3 dir = s_18.dir;
-    bool _e33 = airlight_in_exact_range(hi_5);
+    bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
         local_125 = !(_e38);
@@ -5129,10 +5139,10 @@ AirlightCanonical airlight_refined(
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_5.y, s_18.dir[2], hi_5.z, s_18.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_5.z, s_18.dir[0], hi_5.x, s_18.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_5.x, s_18.dir[1], hi_5.y, s_18.dir[0], key_4);
-    metal::float3 w_5 = metal::float3(_e46 + ((lo_6.y * s_18.dir[2]) - (lo_6.z * s_18.dir[1])), _e59 + ((lo_6.z * s_18.dir[0]) - (lo_6.x * s_18.dir[2])), _e72 + ((lo_6.x * s_18.dir[1]) - (lo_6.y * s_18.dir[0])));
+    float _e46 = airlight_diff_of_products(hi_6.y, s_18.dir[2], hi_6.z, s_18.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_6.z, s_18.dir[0], hi_6.x, s_18.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_6.x, s_18.dir[1], hi_6.y, s_18.dir[0], key_4);
+    metal::float3 w_5 = metal::float3(_e46 + ((lo_7.y * s_18.dir[2]) - (lo_7.z * s_18.dir[1])), _e59 + ((lo_7.z * s_18.dir[0]) - (lo_7.x * s_18.dir[2])), _e72 + ((lo_7.x * s_18.dir[1]) - (lo_7.y * s_18.dir[0])));
     bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         return plain;
@@ -5497,9 +5507,9 @@ AirlightListScan airlight_list_scan(
 AirlightEdges airlight_edges_between(
     float lo_3,
     float hi_3,
-    airlight_type_18 unsorted
+    airlight_type_17 unsorted
 ) {
-    airlight_type_18 cuts_1 = {};
+    airlight_type_17 cuts_1 = {};
     AirlightEdges e_1 = {};
     uint n_1 = 0u;
     uint i_18 = 0u;
@@ -5529,7 +5539,7 @@ AirlightEdges airlight_edges_between(
         cuts_1.inner[0] = _e35;
         cuts_1.inner[1] = c_12;
     }
-    e_1 = AirlightEdges {airlight_type_17 {{lo_3, lo_3, lo_3, lo_3, lo_3}}, 0u};
+    e_1 = AirlightEdges {airlight_type_3 {{lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3}}, 0u};
     uint2 loop_bound_22 = uint2(4294967295u);
     bool loop_init_22 = true;
     while(true) {
@@ -5549,7 +5559,7 @@ AirlightEdges airlight_edges_between(
             uint _e48 = i_18;
             float _e50 = cuts_1.inner[metal::min(unsigned(_e48), 2u)];
             uint _e52 = n_1;
-            float _e54 = e_1.at.inner[metal::min(unsigned(_e52), 4u)];
+            float _e54 = e_1.at.inner[metal::min(unsigned(_e52), 12u)];
             if (_e50 > _e54) {
                 uint _e58 = i_18;
                 float _e60 = cuts_1.inner[metal::min(unsigned(_e58), 2u)];
@@ -5564,12 +5574,12 @@ AirlightEdges airlight_edges_between(
                 uint _e68 = n_1;
                 uint _e70 = i_18;
                 float _e72 = cuts_1.inner[metal::min(unsigned(_e70), 2u)];
-                e_1.at.inner[metal::min(unsigned(_e68), 4u)] = _e72;
+                e_1.at.inner[metal::min(unsigned(_e68), 12u)] = _e72;
             }
         }
     }
     uint _e77 = n_1;
-    e_1.at.inner[metal::min(unsigned(_e77 + 1u), 4u)] = hi_3;
+    e_1.at.inner[metal::min(unsigned(_e77 + 1u), 12u)] = hi_3;
     uint _e82 = n_1;
     e_1.panels = _e82 + 1u;
     AirlightEdges _e85 = e_1;
@@ -5639,14 +5649,76 @@ AirlightSplit airlight_split_worst(
     return AirlightSplit {false, {}, 0.0, 0.0, 0.0, 0u};
 }
 
+AirlightAdaptive airlight_adaptive(
+    float lo_4,
+    float hi_4
+) {
+    return AirlightAdaptive {AirlightPanelList {metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)}, 0u, lo_4, hi_4, 0u, true, false, {}, 0.0, 0.0};
+}
+
+AirlightAdaptive airlight_adaptive_step(
+    AirlightAdaptive state,
+    float kronrod,
+    float gauss,
+    airlight_type_3 edges,
+    uint panels,
+    uint max_panels_1,
+    float tolerance_1
+) {
+    AirlightAdaptive st = {};
+    AirlightPanelList list_2 = {};
+    st = state;
+    AirlightPanelList _e9 = st.list;
+    list_2 = _e9;
+    uint _e12 = st.slot;
+    float _e14 = st.lo;
+    float _e16 = st.hi;
+    airlight_list_set(list_2, _e12, metal::float4(_e14, _e16, kronrod, metal::abs(kronrod - gauss)));
+    uint _e21 = st.slot;
+    uint _e23 = st.count;
+    if (_e21 == _e23) {
+        uint _e26 = st.count;
+        st.count = _e26 + 1u;
+    }
+    uint count_3 = st.count;
+    if (count_3 < panels) {
+        st.lo = edges.inner[metal::min(unsigned(count_3), 12u)];
+        st.hi = edges.inner[metal::min(unsigned(count_3 + 1u), 12u)];
+        st.slot = count_3;
+    } else {
+        bool _e40 = st.queued;
+        if (_e40) {
+            float _e43 = st.queued_lo;
+            st.lo = _e43;
+            float _e46 = st.queued_hi;
+            st.hi = _e46;
+            st.slot = count_3;
+            st.queued = false;
+        } else {
+            AirlightSplit _e50 = airlight_split_worst(list_2, count_3, max_panels_1, tolerance_1);
+            st.lo = _e50.lo;
+            st.hi = _e50.mid;
+            st.slot = _e50.slot;
+            st.more = _e50.split;
+            st.queued = true;
+            st.queued_lo = _e50.mid;
+            st.queued_hi = _e50.hi;
+        }
+    }
+    AirlightPanelList _e66 = list_2;
+    st.list = _e66;
+    AirlightAdaptive _e67 = st;
+    return _e67;
+}
+
 float airlight_asinh(
     float x_15
 ) {
     float r_4 = {};
-    float a_26 = metal::abs(x_15);
-    r_4 = AIRLIGHT_LN_2_ + metal::log(a_26);
-    if (a_26 <= 4096.0) {
-        float _e17 = airlight_log1p(a_26 + ((a_26 * a_26) / (1.0 + metal::sqrt(1.0 + (a_26 * a_26)))));
+    float a_25 = metal::abs(x_15);
+    r_4 = AIRLIGHT_LN_2_ + metal::log(a_25);
+    if (a_25 <= 4096.0) {
+        float _e17 = airlight_log1p(a_25 + ((a_25 * a_25) / (1.0 + metal::sqrt(1.0 + (a_25 * a_25)))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5678,8 +5750,8 @@ metal::float2 airlight_cos_sin_half_turn(
 float airlight_acos(
     float x_17
 ) {
-    float a_27 = metal::abs(x_17);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_27) / (1.0 + a_27)));
+    float a_26 = metal::abs(x_17);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_26) / (1.0 + a_26)));
     return (x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
@@ -5697,21 +5769,21 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_28 = cos_a * cos_g;
-    float b_18 = sin_a * sin_g;
-    if (b_18 <= metal::abs(a_28)) {
-        return (a_28 > 0.0) ? AIRLIGHT_PI : 0.0;
+    float a_27 = cos_a * cos_g;
+    float b_17 = sin_a * sin_g;
+    if (b_17 <= metal::abs(a_27)) {
+        return (a_27 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_28) / b_18, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_27) / b_17, -1.0, 1.0));
     return _e18;
 }
 
 AirlightOuter airlight_outer_point(
     AirlightScene s_21,
-    uint max_panels_1
+    uint max_panels_2
 ) {
     airlight_type_3 zeros = airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
-    return AirlightOuter {s_21.light_position, metal::float3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_1, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, {}, metal::float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u};
+    return AirlightOuter {s_21.light_position, metal::float3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_2, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, {}, metal::float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u};
 }
 
 AirlightOuter airlight_surface(
@@ -5720,7 +5792,7 @@ AirlightOuter airlight_surface(
     AirlightOuter g_20 = {};
     bool local_131 = {};
     metal::float3 u_1 = {};
-    airlight_type_19 cuts_2 = airlight_type_19 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     uint i_19 = 1u;
     uint j_4 = {};
     bool local_132 = {};
@@ -5837,7 +5909,7 @@ AirlightOuter airlight_surface(
     float _e216 = cuts_2.inner[3];
     float _e218 = cuts_2.inner[9];
     float _e220 = cuts_2.inner[10];
-    airlight_type_20 kinks = airlight_type_20 {{_e210, _e212, _e214, _e216, _e218, _e220}};
+    airlight_type_19 kinks = airlight_type_19 {{_e210, _e212, _e214, _e216, _e218, _e220}};
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
@@ -5888,7 +5960,7 @@ AirlightOuter airlight_surface(
             cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_13;
         }
     }
-    float hi_6 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
+    float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
     g_20.gamma.inner[0] = (cos_a_1 < 0.0) ? first : 0.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
@@ -5913,7 +5985,7 @@ AirlightOuter airlight_surface(
             if (_e281 > _e285) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2.inner[metal::min(unsigned(_e289), 10u)];
-                local_133 = _e291 < hi_6;
+                local_133 = _e291 < hi_7;
             } else {
                 local_133 = false;
             }
@@ -5929,7 +6001,7 @@ AirlightOuter airlight_surface(
         }
     }
     uint _e308 = k_4;
-    g_20.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_6;
+    g_20.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_7;
     uint _e313 = k_4;
     g_20.panels = _e313 + 1u;
     uint2 loop_bound_27 = uint2(4294967295u);
@@ -6042,16 +6114,16 @@ float airlight_lobe_at(
 
 float airlight_lobe_node(
     AirlightLobe q_2,
-    float lo_4,
+    float lo_5,
     float w,
     float u_2,
     bool smoothstep
 ) {
     if (smoothstep) {
-        float _e18 = airlight_lobe_at(q_2, lo_4 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2)));
+        float _e18 = airlight_lobe_at(q_2, lo_5 + (((w * u_2) * u_2) * ((3.0 - u_2) - u_2)));
         return (((w * 6.0) * u_2) * (1.0 - u_2)) * _e18;
     }
-    float _e22 = airlight_lobe_at(q_2, lo_4 + (w * u_2));
+    float _e22 = airlight_lobe_at(q_2, lo_5 + (w * u_2));
     return w * _e22;
 }
 
@@ -6084,23 +6156,23 @@ float airlight_arc_end(
     return _e24 ? _e15 : 0.0;
 }
 
-airlight_type_21 airlight_lobe_rule(
+airlight_type_20 airlight_lobe_rule(
 ) {
-    return airlight_type_21 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
+    return airlight_type_20 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
 }
 
 float airlight_lobe_piece(
     AirlightLobe q_3,
-    float lo_5,
-    float hi_4,
+    float lo_6,
+    float hi_5,
     bool smoothstep_1
 ) {
     bool local_141 = {};
     float sum_5 = 0.0;
     uint k_5 = 0u;
-    float w_6 = hi_4 - lo_5;
+    float w_6 = hi_5 - lo_6;
     if (!(!((w_6 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, lo_5 + (0.5 * w_6));
+        float _e14 = airlight_lobe_at(q_3, lo_6 + (0.5 * w_6));
         local_141 = !((_e14 > 0.0));
     } else {
         local_141 = true;
@@ -6109,7 +6181,7 @@ float airlight_lobe_piece(
     if (_e19) {
         return 0.0;
     }
-    airlight_type_21 _e21 = airlight_lobe_rule();
+    airlight_type_20 _e21 = airlight_lobe_rule();
     uint2 loop_bound_29 = uint2(4294967295u);
     bool loop_init_28 = true;
     while(true) {
@@ -6129,8 +6201,8 @@ float airlight_lobe_piece(
             uint _e29 = k_5;
             metal::float2 node = _e21.inner[metal::min(unsigned(_e29), 4u)];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_5, w_6, _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_5, w_6, 1.0 - _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_6, w_6, _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_6, w_6, 1.0 - _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
             sum_5 = _e31 + (_e21.inner[metal::min(unsigned(_e29), 4u)].y * (_e34 + _e38));
         }
     }
@@ -6182,7 +6254,7 @@ float airlight_lobe_arcs(
     }
     float _e88 = inner.x;
     float _e90 = inner.y;
-    airlight_type_14 edges = airlight_type_14 {{0.0, _e88, _e90, cut_2}};
+    airlight_type_14 edges_1 = airlight_type_14 {{0.0, _e88, _e90, cut_2}};
     bool smoothstep_2 = exponent < 1.0;
     uint2 loop_bound_30 = uint2(4294967295u);
     bool loop_init_29 = true;
@@ -6203,7 +6275,7 @@ float airlight_lobe_arcs(
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_6, edges.inner[metal::min(unsigned(_e103), 3u)], edges.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_6, edges_1.inner[metal::min(unsigned(_e103), 3u)], edges_1.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
             sum_6 = _e102 + _e109;
         }
     }
@@ -6231,8 +6303,8 @@ AirlightOuter airlight_outer(
     bool local_152 = {};
     bool local_153 = {};
     bool local_154 = {};
-    airlight_type_18 cuts_3 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_18 at = {};
+    airlight_type_17 cuts_3 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_17 at = {};
     bool local_155 = {};
     uint i_24 = 0u;
     bool local_156 = {};
@@ -6383,7 +6455,7 @@ AirlightOuter airlight_outer(
     float _e172 = scale;
     g_22.scale = _e172;
     float _e178 = s_star;
-    at = airlight_type_18 {{_e178, (s_23.t_min - along_d) / cos_a_2, (s_23.t_max - along_d) / cos_a_2}};
+    at = airlight_type_17 {{_e178, (s_23.t_min - along_d) / cos_a_2, (s_23.t_max - along_d) / cos_a_2}};
     float _e187 = scale;
     if (_e187 > 0.0) {
         AirlightOuter _e192 = g_22;
@@ -6465,16 +6537,12 @@ AirlightOuter airlight_outer(
     float _e256 = airlight_to_w(_e254, 0.0);
     AirlightOuter _e257 = g_22;
     float _e258 = airlight_to_w(_e257, _e15);
-    airlight_type_18 _e259 = cuts_3;
+    airlight_type_17 _e259 = cuts_3;
     AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_22.edges.inner[0] = _e260.at.inner[0];
-    g_22.edges.inner[1] = _e260.at.inner[1];
-    g_22.edges.inner[2] = _e260.at.inner[2];
-    g_22.edges.inner[3] = _e260.at.inner[3];
-    g_22.edges.inner[4] = _e260.at.inner[4];
+    g_22.edges = _e260.at;
     g_22.panels = _e260.panels;
-    AirlightOuter _e283 = g_22;
-    return _e283;
+    AirlightOuter _e265 = g_22;
+    return _e265;
 }
 
 AirlightCanonical airlight_no_canonical(
@@ -6506,13 +6574,13 @@ AirlightNode airlight_outer_node(
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
         uint i_25 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_23.panels - 1u);
         float t_7 = x_20 - static_cast<float>(i_25);
-        float a_29 = g_23.gamma.inner[metal::min(unsigned(i_25), 12u)];
-        float b_19 = g_23.gamma.inner[metal::min(unsigned(i_25 + 1u), 12u)];
-        float w_7 = b_19 - a_29;
+        float a_28 = g_23.gamma.inner[metal::min(unsigned(i_25), 12u)];
+        float b_18 = g_23.gamma.inner[metal::min(unsigned(i_25 + 1u), 12u)];
+        float w_7 = b_18 - a_28;
         float u_4 = 1.0 - t_7;
         bool smooth_a = ((g_23.smooth_edges >> i_25) & 1u) != 0u;
         bool smooth_b = ((g_23.smooth_edges >> (i_25 + 1u)) & 1u) != 0u;
-        gamma_1 = a_29 + (((w_7 * t_7) * t_7) * ((3.0 - t_7) - t_7));
+        gamma_1 = a_28 + (((w_7 * t_7) * t_7) * ((3.0 - t_7) - t_7));
         jacobian = ((w_7 * 6.0) * t_7) * u_4;
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -6521,7 +6589,7 @@ AirlightNode airlight_outer_node(
             local_160 = false;
         }
         bool _e66 = local_160;
-        gamma_1 = _e66 ? (a_29 + ((w_7 * t_7) * t_7)) : _e58;
+        gamma_1 = _e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58;
         float _e68 = jacobian;
         if (smooth_b) {
             local_161 = !(smooth_a);
@@ -6537,7 +6605,7 @@ AirlightNode airlight_outer_node(
             local_162 = false;
         }
         bool _e85 = local_162;
-        gamma_1 = _e85 ? (b_19 - ((w_7 * u_4) * u_4)) : _e77;
+        gamma_1 = _e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77;
         float _e87 = jacobian;
         if (smooth_a) {
             local_163 = !(smooth_b);
@@ -6553,7 +6621,7 @@ AirlightNode airlight_outer_node(
             local_164 = false;
         }
         bool _e102 = local_164;
-        gamma_1 = _e102 ? (a_29 + (w_7 * t_7)) : _e96;
+        gamma_1 = _e102 ? (a_28 + (w_7 * t_7)) : _e96;
         float _e104 = jacobian;
         if (smooth_a) {
             local_165 = smooth_b;
@@ -6664,17 +6732,10 @@ AirlightResult airlight_node_integral(
 AirlightResult airlight_in_scatter(
     AirlightScene s_25
 ) {
-    AirlightPanelList list_2 = AirlightPanelList {metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0), metal::float4(0.0)};
-    uint count_3 = 0u;
-    float a_17 = {};
-    float b_13 = {};
-    uint slot_1 = 0u;
-    bool queued = false;
-    float queued_lo = 0.0;
-    float queued_hi = 0.0;
+    AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
     float k_6 = {};
-    float gauss = {};
+    float gauss_1 = {};
     uint j_5 = {};
     bool local_168 = {};
     float f = {};
@@ -6694,8 +6755,8 @@ AirlightResult airlight_in_scatter(
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
     airlight_type_15 _e25 = airlight_kronrod_rule();
-    a_17 = _e12.edges.inner[0];
-    b_13 = _e12.edges.inner[1];
+    AirlightAdaptive _e30 = airlight_adaptive(_e12.edges.inner[0], _e12.edges.inner[1]);
+    st_1 = _e30;
     uint evaluations = (2u * _e12.max_panels) - 1u;
     uint2 loop_bound_32 = uint2(4294967295u);
     bool loop_init_31 = true;
@@ -6703,24 +6764,24 @@ AirlightResult airlight_in_scatter(
         if (metal::all(loop_bound_32 == uint2(0u))) { break; }
         loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         if (!loop_init_31) {
-            uint _e211 = step_2;
-            step_2 = _e211 + 1u;
+            uint _e137 = step_2;
+            step_2 = _e137 + 1u;
         }
         loop_init_31 = false;
-        uint _e84 = step_2;
-        if (_e84 < evaluations) {
+        uint _e39 = step_2;
+        if (_e39 < evaluations) {
         } else {
             break;
         }
         {
-            float _e86 = a_17;
-            float _e87 = b_13;
-            float c_15 = 0.5 * (_e86 + _e87);
-            float _e91 = b_13;
-            float _e92 = a_17;
-            float hw_2 = 0.5 * (_e91 - _e92);
+            float _e42 = st_1.lo;
+            float _e44 = st_1.hi;
+            float c_15 = 0.5 * (_e42 + _e44);
+            float _e49 = st_1.hi;
+            float _e51 = st_1.lo;
+            float hw_2 = 0.5 * (_e49 - _e51);
             k_6 = 0.0;
-            gauss = 0.0;
+            gauss_1 = 0.0;
             j_5 = 0u;
             uint2 loop_bound_33 = uint2(4294967295u);
             bool loop_init_32 = true;
@@ -6728,106 +6789,70 @@ AirlightResult airlight_in_scatter(
                 if (metal::all(loop_bound_33 == uint2(0u))) { break; }
                 loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
                 if (!loop_init_32) {
-                    uint _e162 = j_5;
-                    j_5 = _e162 + 1u;
+                    uint _e121 = j_5;
+                    j_5 = _e121 + 1u;
                 }
                 loop_init_32 = false;
-                uint _e102 = j_5;
-                if (_e102 < 7u) {
+                uint _e61 = j_5;
+                if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e105 = j_5;
-                    metal::float3 node_1 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e105, 2u)), 3u)];
-                    uint _e115 = j_5;
-                    if ((_e115 & 1u) == 0u) {
-                        uint _e122 = j_5;
-                        local_168 = _e122 < 6u;
+                    uint _e64 = j_5;
+                    metal::float3 node_1 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
+                    uint _e74 = j_5;
+                    if ((_e74 & 1u) == 0u) {
+                        uint _e81 = j_5;
+                        local_168 = _e81 < 6u;
                     } else {
                         local_168 = false;
                     }
-                    bool _e126 = local_168;
-                    float w_8 = _e126 ? (c_15 - (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e105, 2u)), 3u)].x)) : (c_15 + (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e105, 2u)), 3u)].x));
-                    AirlightNode _e128 = airlight_outer_node(s_25, _e12, w_8);
+                    bool _e85 = local_168;
+                    float w_8 = _e85 ? (c_15 - (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_15 + (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    AirlightNode _e87 = airlight_outer_node(s_25, _e12, w_8);
                     f = 0.0;
-                    if (_e128.weight != 0.0) {
-                        AirlightResult _e134 = airlight_node_integral(_e128);
-                        if (_e134.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e134;
+                    if (_e87.weight != 0.0) {
+                        AirlightResult _e93 = airlight_node_integral(_e87);
+                        if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e93;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_169 = s_25.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
                             local_169 = false;
                         }
-                        bool _e147 = local_169;
-                        if (_e147) {
-                            return _e134;
+                        bool _e106 = local_169;
+                        if (_e106) {
+                            return _e93;
                         }
-                        f = _e134.in_scatter * _e128.weight;
+                        f = _e93.in_scatter * _e87.weight;
                     }
-                    float _e151 = k_6;
-                    float _e153 = f;
-                    k_6 = _e151 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e105, 2u)), 3u)].y * _e153);
-                    float _e156 = gauss;
-                    float _e158 = f;
-                    gauss = _e156 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e105, 2u)), 3u)].z * _e158);
+                    float _e110 = k_6;
+                    float _e112 = f;
+                    k_6 = _e110 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].y * _e112);
+                    float _e115 = gauss_1;
+                    float _e117 = f;
+                    gauss_1 = _e115 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].z * _e117);
                 }
             }
-            uint _e164 = slot_1;
-            float _e165 = a_17;
-            float _e166 = b_13;
-            float _e167 = k_6;
-            float _e169 = k_6;
-            float _e171 = gauss;
-            airlight_list_set(list_2, _e164, metal::float4(_e165, _e166, _e167 * hw_2, metal::abs((_e169 * hw_2) - (_e171 * hw_2))));
-            uint _e176 = slot_1;
-            uint _e177 = count_3;
-            if (_e176 == _e177) {
-                uint _e179 = count_3;
-                count_3 = _e179 + 1u;
-            }
-            uint _e182 = count_3;
-            if (_e182 < _e12.panels) {
-                uint _e186 = count_3;
-                a_17 = _e12.edges.inner[metal::min(unsigned(_e186), 12u)];
-                uint _e189 = count_3;
-                b_13 = _e12.edges.inner[metal::min(unsigned(_e189 + 1u), 12u)];
-                uint _e193 = count_3;
-                slot_1 = _e193;
-            } else {
-                bool _e194 = queued;
-                if (_e194) {
-                    float _e195 = queued_lo;
-                    a_17 = _e195;
-                    float _e196 = queued_hi;
-                    b_13 = _e196;
-                    uint _e197 = count_3;
-                    slot_1 = _e197;
-                    queued = false;
-                } else {
-                    uint _e199 = count_3;
-                    AirlightSplit _e201 = airlight_split_worst(list_2, _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
-                    if (!(_e201.split)) {
-                        break;
-                    }
-                    a_17 = _e201.lo;
-                    b_13 = _e201.mid;
-                    slot_1 = _e201.slot;
-                    queued = true;
-                    queued_lo = _e201.mid;
-                    queued_hi = _e201.hi;
-                }
+            AirlightAdaptive _e123 = st_1;
+            float _e124 = k_6;
+            float _e126 = gauss_1;
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_2, _e126 * hw_2, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            st_1 = _e132;
+            bool _e134 = st_1.more;
+            if (!(_e134)) {
+                break;
             }
         }
     }
-    AirlightPanelList _e213 = list_2;
-    uint _e214 = count_3;
-    AirlightListScan _e215 = airlight_list_scan(_e213, _e214);
-    float total_4 = _e215.total;
-    bool _e217 = airlight_is_finite(total_4);
-    if (!(_e217)) {
+    AirlightPanelList _e140 = st_1.list;
+    uint _e142 = st_1.count;
+    AirlightListScan _e143 = airlight_list_scan(_e140, _e142);
+    float total_4 = _e143.total;
+    bool _e145 = airlight_is_finite(total_4);
+    if (!(_e145)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
     return AirlightResult {metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
@@ -6837,8 +6862,8 @@ struct airlight_mainInput {
 };
 kernel void airlight_main(
   metal::uint3 id [[thread_position_in_grid]]
-, device airlight_type_22 const& airlight_records [[user(fake0)]]
-, device airlight_type_23& airlight_results [[user(fake0)]]
+, device airlight_type_21 const& airlight_records [[user(fake0)]]
+, device airlight_type_22& airlight_results [[user(fake0)]]
 , constant airlight__mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint i_26 = id.x;

@@ -84,7 +84,7 @@ struct AirlightListScan {
 }
 
 struct AirlightEdges {
-    at: array<f32, 5>,
+    at: array<f32, 13>,
     panels: u32,
 }
 
@@ -94,6 +94,18 @@ struct AirlightSplit {
     mid: f32,
     hi: f32,
     slot: u32,
+}
+
+struct AirlightAdaptive {
+    list: AirlightPanelList,
+    count: u32,
+    lo: f32,
+    hi: f32,
+    slot: u32,
+    more: bool,
+    queued: bool,
+    queued_lo: f32,
+    queued_hi: f32,
 }
 
 struct AirlightOuter {
@@ -464,8 +476,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_14 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_14);
+    let b_13 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_13);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -475,7 +487,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_14, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_13, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -542,12 +554,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_6 = f32(_e2);
-    let b_15 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
-    let a_18 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
-    let disc = (1f - ((4f * a_18) / (b_15 * b_15)));
-    t_2 = b_15;
+    let b_14 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
+    let a_17 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
+    let disc = (1f - ((4f * a_17) / (b_14 * b_14)));
+    t_2 = b_14;
     if (disc > 0f) {
-        t_2 = ((b_15 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_14 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -685,11 +697,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g: f32, om: f32, op: f32) -> f32 {
     if (g >= 0f) {
-        let a_19 = (1f - g);
-        return ((om * (g + g)) + (a_19 * a_19));
+        let a_18 = (1f - g);
+        return ((om * (g + g)) + (a_18 * a_18));
     }
-    let b_16 = (1f + g);
-    return ((op * -((g + g))) + (b_16 * b_16));
+    let b_15 = (1f + g);
+    return ((op * -((g + g))) + (b_15 * b_15));
 }
 
 fn airlight_hg(g_1: f32, om_1: f32, op_1: f32) -> f32 {
@@ -803,11 +815,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_2: f32) -> f32 {
-    let a_20 = abs(g_2);
-    if !((a_20 > 0f)) {
+    let a_19 = abs(g_2);
+    if !((a_19 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_20) * (1f - a_20)) / (a_20 + a_20));
+    return (((1f - a_19) * (1f - a_19)) / (a_19 + a_19));
 }
 
 fn airlight_singular_heights(s: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -821,8 +833,8 @@ fn airlight_singular_heights(s: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_21 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_21) / a_21), (a_21 > 0f)), sigma_1);
+            let a_20 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_20) / a_20), (a_20 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1661,8 +1673,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_22 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_22 + sqrt(max(((a_22 * a_22) - 1f), 0f)));
+    let a_21 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_21 + sqrt(max(((a_21 * a_21) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2677,9 +2689,9 @@ fn airlight_angle_route(s_9: AirlightScene, g_11: AirlightCanonical) -> vec2<f32
             rate = _e136;
         }
         case 3u: {
-            let a_23 = abs(p0_4);
+            let a_22 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_23) / a_23), (a_23 > 0f)), _e40, _e145, inv_hw_1, step_3);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_22) / a_22), (a_22 > 0f)), _e40, _e145, inv_hw_1, step_3);
             rate = _e146;
         }
         case 5u: {
@@ -2826,23 +2838,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_3: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_24 = (a0_ / scale_1);
-    let b_17 = (b0_ / scale_1);
+    let a_23 = (a0_ / scale_1);
+    let b_16 = (b0_ / scale_1);
     let c_9 = (c0_ / scale_1);
-    let disc_1 = ((b_17 * b_17) - ((4f * a_24) * c_9));
+    let disc_1 = ((b_16 * b_16) - ((4f * a_23) * c_9));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_17 < 0f) {
+    if (b_16 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_5 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
+    let q_5 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_5 != 0f) {
         r1_ = (c_9 / q_5);
     }
-    if (a_24 != 0f) {
-        r2_2 = (q_5 / a_24);
+    if (a_23 != 0f) {
+        r2_2 = (q_5 / a_23);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -2887,15 +2899,15 @@ fn airlight_dark(g_13: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_25 = (sigma_11 * g_13.d_el);
+    let a_24 = (sigma_11 * g_13.d_el);
     let d_3 = g_13.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_25 * a_25) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_25) / d_3);
-    if (a_25 > 0f) {
-        y1_1 = (d_3 / (a_25 + root_1));
+    let root_1 = sqrt(((a_24 * a_24) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_24) / d_3);
+    if (a_24 > 0f) {
+        y1_1 = (d_3 / (a_24 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -4214,10 +4226,10 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
     let _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
     let _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
-    let hi_5 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_6 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir = s_18.dir;
-    let _e33 = airlight_in_exact_range(hi_5);
+    let _e33 = airlight_in_exact_range(hi_6);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
         local_125 = !(_e38);
@@ -4228,10 +4240,10 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_5.y, dir.z, hi_5.z, dir.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_5.z, dir.x, hi_5.x, dir.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_5.x, dir.y, hi_5.y, dir.x, key_4);
-    let w_5 = vec3<f32>((_e46 + ((lo_6.y * dir.z) - (lo_6.z * dir.y))), (_e59 + ((lo_6.z * dir.x) - (lo_6.x * dir.z))), (_e72 + ((lo_6.x * dir.y) - (lo_6.y * dir.x))));
+    let _e46 = airlight_diff_of_products(hi_6.y, dir.z, hi_6.z, dir.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_6.z, dir.x, hi_6.x, dir.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_6.x, dir.y, hi_6.y, dir.x, key_4);
+    let w_5 = vec3<f32>((_e46 + ((lo_7.y * dir.z) - (lo_7.z * dir.y))), (_e59 + ((lo_7.z * dir.x) - (lo_7.x * dir.z))), (_e72 + ((lo_7.x * dir.y) - (lo_7.y * dir.x))));
     let _e82 = airlight_vec_finite(w_5);
     if !(_e82) {
         return plain;
@@ -4615,7 +4627,7 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
         cuts_1[0] = _e35;
         cuts_1[1] = c_12;
     }
-    e_1 = AirlightEdges(array<f32, 5>(lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    e_1 = AirlightEdges(array<f32, 13>(lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     loop {
         let _e45 = i_18;
         if (_e45 < 3u) {
@@ -4711,13 +4723,65 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
     return AirlightSplit(false, 0f, 0f, 0f, 0u);
 }
 
+fn airlight_adaptive(lo_4: f32, hi_4: f32) -> AirlightAdaptive {
+    return AirlightAdaptive(AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f)), 0u, lo_4, hi_4, 0u, true, false, 0f, 0f);
+}
+
+fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edges: array<f32, 13>, panels: u32, max_panels_1: u32, tolerance_1: f32) -> AirlightAdaptive {
+    var st: AirlightAdaptive;
+    var list_2: AirlightPanelList;
+
+    st = state;
+    let _e9 = st.list;
+    list_2 = _e9;
+    let _e12 = st.slot;
+    let _e14 = st.lo;
+    let _e16 = st.hi;
+    airlight_list_set((&list_2), _e12, vec4<f32>(_e14, _e16, kronrod, abs((kronrod - gauss))));
+    let _e21 = st.slot;
+    let _e23 = st.count;
+    if (_e21 == _e23) {
+        let _e26 = st.count;
+        st.count = (_e26 + 1u);
+    }
+    let count_3 = st.count;
+    if (count_3 < panels) {
+        st.lo = edges[count_3];
+        st.hi = edges[(count_3 + 1u)];
+        st.slot = count_3;
+    } else {
+        let _e40 = st.queued;
+        if _e40 {
+            let _e43 = st.queued_lo;
+            st.lo = _e43;
+            let _e46 = st.queued_hi;
+            st.hi = _e46;
+            st.slot = count_3;
+            st.queued = false;
+        } else {
+            let _e50 = airlight_split_worst((&list_2), count_3, max_panels_1, tolerance_1);
+            st.lo = _e50.lo;
+            st.hi = _e50.mid;
+            st.slot = _e50.slot;
+            st.more = _e50.split;
+            st.queued = true;
+            st.queued_lo = _e50.mid;
+            st.queued_hi = _e50.hi;
+        }
+    }
+    let _e66 = list_2;
+    st.list = _e66;
+    let _e67 = st;
+    return _e67;
+}
+
 fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
-    let a_26 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_26));
-    if (a_26 <= 4096f) {
-        let _e17 = airlight_log1p((a_26 + ((a_26 * a_26) / (1f + sqrt((1f + (a_26 * a_26)))))));
+    let a_25 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_25));
+    if (a_25 <= 4096f) {
+        let _e17 = airlight_log1p((a_25 + ((a_25 * a_25) / (1f + sqrt((1f + (a_25 * a_25)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -4742,8 +4806,8 @@ fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_17: f32) -> f32 {
-    let a_27 = abs(x_17);
-    let _e8 = airlight_atan(sqrt(((1f - a_27) / (1f + a_27))));
+    let a_26 = abs(x_17);
+    let _e8 = airlight_atan(sqrt(((1f - a_26) / (1f + a_26))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
@@ -4753,18 +4817,18 @@ fn airlight_angle(c_6: f32, s_20: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_28 = (cos_a * cos_g);
-    let b_18 = (sin_a * sin_g);
-    if (b_18 <= abs(a_28)) {
-        return select(0f, AIRLIGHT_PI, (a_28 > 0f));
+    let a_27 = (cos_a * cos_g);
+    let b_17 = (sin_a * sin_g);
+    if (b_17 <= abs(a_27)) {
+        return select(0f, AIRLIGHT_PI, (a_27 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_28) / b_18), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_27) / b_17), -1f, 1f));
     return _e18;
 }
 
-fn airlight_outer_point(s_21: AirlightScene, max_panels_1: u32) -> AirlightOuter {
+fn airlight_outer_point(s_21: AirlightScene, max_panels_2: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_1, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
 fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
@@ -4932,7 +4996,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_6 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_7 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_20.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
@@ -4948,7 +5012,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_133 = (_e291 < hi_6);
+                local_133 = (_e291 < hi_7);
             } else {
                 local_133 = false;
             }
@@ -4968,7 +5032,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_6;
+    g_20.gamma[(_e308 + 1u)] = hi_7;
     let _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     loop {
@@ -5067,12 +5131,12 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     return 0f;
 }
 
-fn airlight_lobe_node(q_2: AirlightLobe, lo_4: f32, w: f32, u_2: f32, smoothstep_: bool) -> f32 {
+fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w: f32, u_2: f32, smoothstep_: bool) -> f32 {
     if smoothstep_ {
-        let _e18 = airlight_lobe_at(q_2, (lo_4 + (((w * u_2) * u_2) * ((3f - u_2) - u_2))));
+        let _e18 = airlight_lobe_at(q_2, (lo_5 + (((w * u_2) * u_2) * ((3f - u_2) - u_2))));
         return ((((w * 6f) * u_2) * (1f - u_2)) * _e18);
     }
-    let _e22 = airlight_lobe_at(q_2, (lo_4 + (w * u_2)));
+    let _e22 = airlight_lobe_at(q_2, (lo_5 + (w * u_2)));
     return (w * _e22);
 }
 
@@ -5107,14 +5171,14 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
     return array<vec2<f32>, 5>(vec2<f32>(0.42556283f, 0.14776212f), vec2<f32>(0.2833023f, 0.13463336f), vec2<f32>(0.16029522f, 0.10954318f), vec2<f32>(0.067468315f, 0.07472567f), vec2<f32>(0.013046736f, 0.03333567f));
 }
 
-fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bool) -> f32 {
+fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
     var local_141: bool;
     var sum_5: f32 = 0f;
     var k_5: u32 = 0u;
 
-    let w_6 = (hi_4 - lo_5);
+    let w_6 = (hi_5 - lo_6);
     if !(!((w_6 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5f * w_6)));
+        let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_6)));
         local_141 = !((_e14 > 0f));
     } else {
         local_141 = true;
@@ -5134,8 +5198,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bo
             let _e29 = k_5;
             let node = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_5, w_6, node.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_5, w_6, (1f - node.x), smoothstep_1);
+            let _e34 = airlight_lobe_node(q_3, lo_6, w_6, node.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_6, w_6, (1f - node.x), smoothstep_1);
             sum_5 = (_e31 + (node.y * (_e34 + _e38)));
         }
         continuing {
@@ -5186,7 +5250,7 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     }
     let _e88 = inner.x;
     let _e90 = inner.y;
-    let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
+    let edges_1 = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent < 1f);
     loop {
         let _e99 = i_23;
@@ -5198,7 +5262,7 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_6, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_6, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5460,14 +5524,10 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e258 = airlight_to_w(_e257, _e15);
     let _e259 = cuts_3;
     let _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_22.edges[0] = _e260.at[0];
-    g_22.edges[1] = _e260.at[1];
-    g_22.edges[2] = _e260.at[2];
-    g_22.edges[3] = _e260.at[3];
-    g_22.edges[4] = _e260.at[4];
+    g_22.edges = _e260.at;
     g_22.panels = _e260.panels;
-    let _e283 = g_22;
-    return _e283;
+    let _e265 = g_22;
+    return _e265;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -5495,13 +5555,13 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
     if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_25 = min(u32(max(floor(x_20), 0f)), (g_23.panels - 1u));
         let t_7 = (x_20 - f32(i_25));
-        let a_29 = g_23.gamma[i_25];
-        let b_19 = g_23.gamma[(i_25 + 1u)];
-        let w_7 = (b_19 - a_29);
+        let a_28 = g_23.gamma[i_25];
+        let b_18 = g_23.gamma[(i_25 + 1u)];
+        let w_7 = (b_18 - a_28);
         let u_4 = (1f - t_7);
         let smooth_a = (((g_23.smooth_edges >> i_25) & 1u) != 0u);
         let smooth_b = (((g_23.smooth_edges >> (i_25 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_29 + (((w_7 * t_7) * t_7) * ((3f - t_7) - t_7)));
+        gamma_1 = (a_28 + (((w_7 * t_7) * t_7) * ((3f - t_7) - t_7)));
         jacobian = (((w_7 * 6f) * t_7) * u_4);
         let _e58 = gamma_1;
         if smooth_b {
@@ -5510,7 +5570,7 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
             local_160 = false;
         }
         let _e66 = local_160;
-        gamma_1 = select(_e58, (a_29 + ((w_7 * t_7) * t_7)), _e66);
+        gamma_1 = select(_e58, (a_28 + ((w_7 * t_7) * t_7)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_161 = !(smooth_a);
@@ -5526,7 +5586,7 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
             local_162 = false;
         }
         let _e85 = local_162;
-        gamma_1 = select(_e77, (b_19 - ((w_7 * u_4) * u_4)), _e85);
+        gamma_1 = select(_e77, (b_18 - ((w_7 * u_4) * u_4)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_163 = !(smooth_b);
@@ -5542,7 +5602,7 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
             local_164 = false;
         }
         let _e102 = local_164;
-        gamma_1 = select(_e96, (a_29 + (w_7 * t_7)), _e102);
+        gamma_1 = select(_e96, (a_28 + (w_7 * t_7)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_165 = smooth_b;
@@ -5649,17 +5709,10 @@ fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
 }
 
 fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
-    var list_2: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
-    var count_3: u32 = 0u;
-    var a_17: f32;
-    var b_13: f32;
-    var slot_1: u32 = 0u;
-    var queued: bool = false;
-    var queued_lo: f32 = 0f;
-    var queued_hi: f32 = 0f;
+    var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_6: f32;
-    var gauss: f32;
+    var gauss_1: f32;
     var j_5: u32;
     var local_168: bool;
     var f: f32;
@@ -5680,130 +5733,94 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     let _e25 = airlight_kronrod_rule();
-    a_17 = _e12.edges[0];
-    b_13 = _e12.edges[1];
+    let _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
+    st_1 = _e30;
     let evaluations = ((2u * _e12.max_panels) - 1u);
     loop {
-        let _e84 = step_2;
-        if (_e84 < evaluations) {
+        let _e39 = step_2;
+        if (_e39 < evaluations) {
         } else {
             break;
         }
         {
-            let _e86 = a_17;
-            let _e87 = b_13;
-            let c_15 = (0.5f * (_e86 + _e87));
-            let _e91 = b_13;
-            let _e92 = a_17;
-            let hw_2 = (0.5f * (_e91 - _e92));
+            let _e42 = st_1.lo;
+            let _e44 = st_1.hi;
+            let c_15 = (0.5f * (_e42 + _e44));
+            let _e49 = st_1.hi;
+            let _e51 = st_1.lo;
+            let hw_2 = (0.5f * (_e49 - _e51));
             k_6 = 0f;
-            gauss = 0f;
+            gauss_1 = 0f;
             j_5 = 0u;
             loop {
-                let _e102 = j_5;
-                if (_e102 < 7u) {
+                let _e61 = j_5;
+                if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e105 = j_5;
-                    let node_1 = _e25[(_e105 / 2u)];
-                    let _e115 = j_5;
-                    if ((_e115 & 1u) == 0u) {
-                        let _e122 = j_5;
-                        local_168 = (_e122 < 6u);
+                    let _e64 = j_5;
+                    let node_1 = _e25[(_e64 / 2u)];
+                    let _e74 = j_5;
+                    if ((_e74 & 1u) == 0u) {
+                        let _e81 = j_5;
+                        local_168 = (_e81 < 6u);
                     } else {
                         local_168 = false;
                     }
-                    let _e126 = local_168;
-                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e126);
-                    let _e128 = airlight_outer_node(s_25, _e12, w_8);
+                    let _e85 = local_168;
+                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e85);
+                    let _e87 = airlight_outer_node(s_25, _e12, w_8);
                     f = 0f;
-                    if (_e128.weight != 0f) {
-                        let _e134 = airlight_node_integral(_e128);
-                        if (_e134.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e134;
+                    if (_e87.weight != 0f) {
+                        let _e93 = airlight_node_integral(_e87);
+                        if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e93;
                         }
                         if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_169 = false;
                         }
-                        let _e147 = local_169;
-                        if _e147 {
-                            return _e134;
+                        let _e106 = local_169;
+                        if _e106 {
+                            return _e93;
                         }
-                        f = (_e134.in_scatter * _e128.weight);
+                        f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e151 = k_6;
-                    let _e153 = f;
-                    k_6 = (_e151 + (node_1.y * _e153));
-                    let _e156 = gauss;
-                    let _e158 = f;
-                    gauss = (_e156 + (node_1.z * _e158));
+                    let _e110 = k_6;
+                    let _e112 = f;
+                    k_6 = (_e110 + (node_1.y * _e112));
+                    let _e115 = gauss_1;
+                    let _e117 = f;
+                    gauss_1 = (_e115 + (node_1.z * _e117));
                 }
                 continuing {
-                    let _e162 = j_5;
-                    j_5 = (_e162 + 1u);
+                    let _e121 = j_5;
+                    j_5 = (_e121 + 1u);
                 }
             }
-            let _e164 = slot_1;
-            let _e165 = a_17;
-            let _e166 = b_13;
-            let _e167 = k_6;
-            let _e169 = k_6;
-            let _e171 = gauss;
-            airlight_list_set((&list_2), _e164, vec4<f32>(_e165, _e166, (_e167 * hw_2), abs(((_e169 * hw_2) - (_e171 * hw_2)))));
-            let _e176 = slot_1;
-            let _e177 = count_3;
-            if (_e176 == _e177) {
-                let _e179 = count_3;
-                count_3 = (_e179 + 1u);
-            }
-            let _e182 = count_3;
-            if (_e182 < _e12.panels) {
-                let _e186 = count_3;
-                a_17 = _e12.edges[_e186];
-                let _e189 = count_3;
-                b_13 = _e12.edges[(_e189 + 1u)];
-                let _e193 = count_3;
-                slot_1 = _e193;
-            } else {
-                let _e194 = queued;
-                if _e194 {
-                    let _e195 = queued_lo;
-                    a_17 = _e195;
-                    let _e196 = queued_hi;
-                    b_13 = _e196;
-                    let _e197 = count_3;
-                    slot_1 = _e197;
-                    queued = false;
-                } else {
-                    let _e199 = count_3;
-                    let _e201 = airlight_split_worst((&list_2), _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
-                    if !(_e201.split) {
-                        break;
-                    }
-                    a_17 = _e201.lo;
-                    b_13 = _e201.mid;
-                    slot_1 = _e201.slot;
-                    queued = true;
-                    queued_lo = _e201.mid;
-                    queued_hi = _e201.hi;
-                }
+            let _e123 = st_1;
+            let _e124 = k_6;
+            let _e126 = gauss_1;
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_2), (_e126 * hw_2), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            st_1 = _e132;
+            let _e134 = st_1.more;
+            if !(_e134) {
+                break;
             }
         }
         continuing {
-            let _e211 = step_2;
-            step_2 = (_e211 + 1u);
+            let _e137 = step_2;
+            step_2 = (_e137 + 1u);
         }
     }
-    let _e213 = list_2;
-    let _e214 = count_3;
-    let _e215 = airlight_list_scan(_e213, _e214);
-    let total_4 = _e215.total;
-    let _e217 = airlight_is_finite(total_4);
-    if !(_e217) {
+    let _e140 = st_1.list;
+    let _e142 = st_1.count;
+    let _e143 = airlight_list_scan(_e140, _e142);
+    let total_4 = _e143.total;
+    let _e145 = airlight_is_finite(total_4);
+    if !(_e145) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_4, 0f), AIRLIGHT_STATUS_OK);

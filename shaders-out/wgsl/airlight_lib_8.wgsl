@@ -115,7 +115,7 @@ struct AirlightListScan {
 }
 
 struct AirlightEdges {
-    at: array<f32, 5>,
+    at: array<f32, 13>,
     panels: u32,
 }
 
@@ -125,6 +125,18 @@ struct AirlightSplit {
     mid: f32,
     hi: f32,
     slot: u32,
+}
+
+struct AirlightAdaptive {
+    list: AirlightPanelList,
+    count: u32,
+    lo: f32,
+    hi: f32,
+    slot: u32,
+    more: bool,
+    queued: bool,
+    queued_lo: f32,
+    queued_hi: f32,
 }
 
 struct AirlightOuter {
@@ -180,7 +192,7 @@ struct AirlightArea {
     radius: f32,
     x_h: f32,
     h_eff: f32,
-    edges: array<f32, 5>,
+    edges: array<f32, 13>,
     panels: u32,
     outcome: u32,
     lobes: vec4<f32>,
@@ -632,8 +644,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_14 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_14);
+    let b_13 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_13);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -643,7 +655,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_14, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_13, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -710,12 +722,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_6 = f32(_e2);
-    let b_15 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
-    let a_29 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
-    let disc = (1f - ((4f * a_29) / (b_15 * b_15)));
-    t_2 = b_15;
+    let b_14 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
+    let a_28 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
+    let disc = (1f - ((4f * a_28) / (b_14 * b_14)));
+    t_2 = b_14;
     if (disc > 0f) {
-        t_2 = ((b_15 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_14 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -853,11 +865,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_30 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_30 * a_30));
+        let a_29 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_29 * a_29));
     }
-    let b_16 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_16 * b_16));
+    let b_15 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_15 * b_15));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -971,11 +983,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_31 = abs(g_4);
-    if !((a_31 > 0f)) {
+    let a_30 = abs(g_4);
+    if !((a_30 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_31) * (1f - a_31)) / (a_31 + a_31));
+    return (((1f - a_30) * (1f - a_30)) / (a_30 + a_30));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -989,8 +1001,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_32 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_32) / a_32), (a_32 > 0f)), sigma_1);
+            let a_31 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_31) / a_31), (a_31 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1829,8 +1841,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_33 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_33 + sqrt(max(((a_33 * a_33) - 1f), 0f)));
+    let a_32 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_32 + sqrt(max(((a_32 * a_32) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2845,9 +2857,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_34 = abs(p0_4);
+            let a_33 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_34) / a_34), (a_34 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_33) / a_33), (a_33 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -2994,23 +3006,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_35 = (a0_ / scale_2);
-    let b_17 = (b0_ / scale_2);
+    let a_34 = (a0_ / scale_2);
+    let b_16 = (b0_ / scale_2);
     let c_10 = (c0_ / scale_2);
-    let disc_1 = ((b_17 * b_17) - ((4f * a_35) * c_10));
+    let disc_1 = ((b_16 * b_16) - ((4f * a_34) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_17 < 0f) {
+    if (b_16 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_6 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
+    let q_6 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
     if (q_6 != 0f) {
         r1_ = (c_10 / q_6);
     }
-    if (a_35 != 0f) {
-        r2_2 = (q_6 / a_35);
+    if (a_34 != 0f) {
+        r2_2 = (q_6 / a_34);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3055,15 +3067,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_36 = (sigma_11 * g_15.d_el);
+    let a_35 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_36 * a_36) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_36) / d_3);
-    if (a_36 > 0f) {
-        y1_1 = (d_3 / (a_36 + root_1));
+    let root_1 = sqrt(((a_35 * a_35) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_35) / d_3);
+    if (a_35 > 0f) {
+        y1_1 = (d_3 / (a_35 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -4783,7 +4795,7 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
         cuts_1[0] = _e35;
         cuts_1[1] = c_13;
     }
-    e_1 = AirlightEdges(array<f32, 5>(lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
+    e_1 = AirlightEdges(array<f32, 13>(lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     loop {
         let _e45 = i_18;
         if (_e45 < 3u) {
@@ -4879,13 +4891,65 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
     return AirlightSplit(false, 0f, 0f, 0f, 0u);
 }
 
+fn airlight_adaptive(lo_4: f32, hi_4: f32) -> AirlightAdaptive {
+    return AirlightAdaptive(AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f)), 0u, lo_4, hi_4, 0u, true, false, 0f, 0f);
+}
+
+fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edges: array<f32, 13>, panels: u32, max_panels_1: u32, tolerance_1: f32) -> AirlightAdaptive {
+    var st: AirlightAdaptive;
+    var list_2: AirlightPanelList;
+
+    st = state;
+    let _e9 = st.list;
+    list_2 = _e9;
+    let _e12 = st.slot;
+    let _e14 = st.lo;
+    let _e16 = st.hi;
+    airlight_list_set((&list_2), _e12, vec4<f32>(_e14, _e16, kronrod, abs((kronrod - gauss))));
+    let _e21 = st.slot;
+    let _e23 = st.count;
+    if (_e21 == _e23) {
+        let _e26 = st.count;
+        st.count = (_e26 + 1u);
+    }
+    let count_3 = st.count;
+    if (count_3 < panels) {
+        st.lo = edges[count_3];
+        st.hi = edges[(count_3 + 1u)];
+        st.slot = count_3;
+    } else {
+        let _e40 = st.queued;
+        if _e40 {
+            let _e43 = st.queued_lo;
+            st.lo = _e43;
+            let _e46 = st.queued_hi;
+            st.hi = _e46;
+            st.slot = count_3;
+            st.queued = false;
+        } else {
+            let _e50 = airlight_split_worst((&list_2), count_3, max_panels_1, tolerance_1);
+            st.lo = _e50.lo;
+            st.hi = _e50.mid;
+            st.slot = _e50.slot;
+            st.more = _e50.split;
+            st.queued = true;
+            st.queued_lo = _e50.mid;
+            st.queued_hi = _e50.hi;
+        }
+    }
+    let _e66 = list_2;
+    st.list = _e66;
+    let _e67 = st;
+    return _e67;
+}
+
 fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
-    let a_37 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_37));
-    if (a_37 <= 4096f) {
-        let _e17 = airlight_log1p((a_37 + ((a_37 * a_37) / (1f + sqrt((1f + (a_37 * a_37)))))));
+    let a_36 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_36));
+    if (a_36 <= 4096f) {
+        let _e17 = airlight_log1p((a_36 + ((a_36 * a_36) / (1f + sqrt((1f + (a_36 * a_36)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -4910,8 +4974,8 @@ fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_17: f32) -> f32 {
-    let a_38 = abs(x_17);
-    let _e8 = airlight_atan(sqrt(((1f - a_38) / (1f + a_38))));
+    let a_37 = abs(x_17);
+    let _e8 = airlight_atan(sqrt(((1f - a_37) / (1f + a_37))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
@@ -4921,18 +4985,18 @@ fn airlight_angle(c_6: f32, s_22: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_39 = (cos_a * cos_g);
-    let b_18 = (sin_a * sin_g);
-    if (b_18 <= abs(a_39)) {
-        return select(0f, AIRLIGHT_PI, (a_39 > 0f));
+    let a_38 = (cos_a * cos_g);
+    let b_17 = (sin_a * sin_g);
+    if (b_17 <= abs(a_38)) {
+        return select(0f, AIRLIGHT_PI, (a_38 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_39) / b_18), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_38) / b_17), -1f, 1f));
     return _e18;
 }
 
-fn airlight_outer_point(s_23: AirlightScene, max_panels_1: u32) -> AirlightOuter {
+fn airlight_outer_point(s_23: AirlightScene, max_panels_2: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_1, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
 fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
@@ -5235,12 +5299,12 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     return 0f;
 }
 
-fn airlight_lobe_node(q_2: AirlightLobe, lo_4: f32, w_1: f32, u_2: f32, smoothstep_: bool) -> f32 {
+fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothstep_: bool) -> f32 {
     if smoothstep_ {
-        let _e18 = airlight_lobe_at(q_2, (lo_4 + (((w_1 * u_2) * u_2) * ((3f - u_2) - u_2))));
+        let _e18 = airlight_lobe_at(q_2, (lo_5 + (((w_1 * u_2) * u_2) * ((3f - u_2) - u_2))));
         return ((((w_1 * 6f) * u_2) * (1f - u_2)) * _e18);
     }
-    let _e22 = airlight_lobe_at(q_2, (lo_4 + (w_1 * u_2)));
+    let _e22 = airlight_lobe_at(q_2, (lo_5 + (w_1 * u_2)));
     return (w_1 * _e22);
 }
 
@@ -5275,14 +5339,14 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
     return array<vec2<f32>, 5>(vec2<f32>(0.42556283f, 0.14776212f), vec2<f32>(0.2833023f, 0.13463336f), vec2<f32>(0.16029522f, 0.10954318f), vec2<f32>(0.067468315f, 0.07472567f), vec2<f32>(0.013046736f, 0.03333567f));
 }
 
-fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bool) -> f32 {
+fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
     var local_141: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
-    let w_8 = (hi_4 - lo_5);
+    let w_8 = (hi_5 - lo_6);
     if !(!((w_8 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_5 + (0.5f * w_8)));
+        let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_8)));
         local_141 = !((_e14 > 0f));
     } else {
         local_141 = true;
@@ -5302,8 +5366,8 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_5: f32, hi_4: f32, smoothstep_1: bo
             let _e29 = k_6;
             let node_1 = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_5, w_8, node_1.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_5, w_8, (1f - node_1.x), smoothstep_1);
+            let _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_1.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1f - node_1.x), smoothstep_1);
             sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
         }
         continuing {
@@ -5354,7 +5418,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     }
     let _e88 = inner.x;
     let _e90 = inner.y;
-    let edges = array<f32, 4>(0f, _e88, _e90, cut_2);
+    let edges_1 = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
         let _e99 = i_23;
@@ -5366,7 +5430,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_7, edges[_e103], edges[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_7, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5628,14 +5692,10 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e258 = airlight_to_w(_e257, _e15);
     let _e259 = cuts_3;
     let _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_24.edges[0] = _e260.at[0];
-    g_24.edges[1] = _e260.at[1];
-    g_24.edges[2] = _e260.at[2];
-    g_24.edges[3] = _e260.at[3];
-    g_24.edges[4] = _e260.at[4];
+    g_24.edges = _e260.at;
     g_24.panels = _e260.panels;
-    let _e283 = g_24;
-    return _e283;
+    let _e265 = g_24;
+    return _e265;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -5663,13 +5723,13 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_33 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
         let t_8 = (x_20 - f32(i_33));
-        let a_40 = g_25.gamma[i_33];
-        let b_19 = g_25.gamma[(i_33 + 1u)];
-        let w_9 = (b_19 - a_40);
+        let a_39 = g_25.gamma[i_33];
+        let b_18 = g_25.gamma[(i_33 + 1u)];
+        let w_9 = (b_18 - a_39);
         let u_6 = (1f - t_8);
         let smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
         let smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_40 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
+        gamma_1 = (a_39 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
         jacobian = (((w_9 * 6f) * t_8) * u_6);
         let _e58 = gamma_1;
         if smooth_b {
@@ -5678,7 +5738,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_160 = false;
         }
         let _e66 = local_160;
-        gamma_1 = select(_e58, (a_40 + ((w_9 * t_8) * t_8)), _e66);
+        gamma_1 = select(_e58, (a_39 + ((w_9 * t_8) * t_8)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_161 = !(smooth_a);
@@ -5694,7 +5754,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_162 = false;
         }
         let _e85 = local_162;
-        gamma_1 = select(_e77, (b_19 - ((w_9 * u_6) * u_6)), _e85);
+        gamma_1 = select(_e77, (b_18 - ((w_9 * u_6) * u_6)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_163 = !(smooth_b);
@@ -5710,7 +5770,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_164 = false;
         }
         let _e102 = local_164;
-        gamma_1 = select(_e96, (a_40 + (w_9 * t_8)), _e102);
+        gamma_1 = select(_e96, (a_39 + (w_9 * t_8)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_165 = smooth_b;
@@ -5942,8 +6002,8 @@ fn airlight_phase_lobes(s_29: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_41 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_41) / a_41), (a_41 > 0f)));
+            let a_40 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_40) / a_40), (a_40 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6018,216 +6078,216 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     var local_178: bool;
 
     let zero = vec3(0f);
-    let _e13 = airlight_phase_lobes(s_30);
-    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0f, 0f, array<f32, 5>(0f, 0f, 0f, 0f, 0f), 0u, 0u, _e13, false);
+    let _e21 = airlight_phase_lobes(s_30);
+    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
     if !((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
         if !((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
             local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
             local_169 = true;
         }
-        let _e36 = local_169;
-        if _e36 {
+        let _e44 = local_169;
+        if _e44 {
             local_170 = (s_30.phase_param_a == 0f);
         } else {
             local_170 = false;
         }
-        let _e43 = local_170;
-        local_168 = _e43;
+        let _e51 = local_170;
+        local_168 = _e51;
     } else {
         local_168 = true;
     }
-    let _e45 = local_168;
-    if !(_e45) {
+    let _e53 = local_168;
+    if !(_e53) {
         if (s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
             local_172 = (s_30.phase_param_a == 0f);
         } else {
             local_172 = false;
         }
-        let _e58 = local_172;
-        if _e58 {
+        let _e66 = local_172;
+        if _e66 {
             local_173 = (s_30.phase_param_b == 0f);
         } else {
             local_173 = false;
         }
-        let _e65 = local_173;
-        local_171 = _e65;
+        let _e73 = local_173;
+        local_171 = _e73;
     } else {
         local_171 = true;
     }
-    let _e67 = local_171;
-    a_18.isotropic = _e67;
+    let _e75 = local_171;
+    a_18.isotropic = _e75;
     if !((s_30.intensity == 0f)) {
         local_174 = (s_30.sigma_s == 0f);
     } else {
         local_174 = true;
     }
-    let _e78 = local_174;
-    if _e78 {
+    let _e86 = local_174;
+    if _e86 {
         a_18.outcome = 1u;
-        let _e81 = a_18;
-        return _e81;
+        let _e89 = a_18;
+        return _e89;
     }
     let o = s_30.origin;
-    let _e84 = airlight_normalize(s_30.dir);
-    a_18.d = _e84;
+    let _e92 = airlight_normalize(s_30.dir);
+    a_18.d = _e92;
     let infinite_6 = ((s_30.flags & 1u) != 0u);
     let t0_2 = s_30.t_min;
     centre = s_30.light_position;
     size = s_30.light_param_a;
     if (s_30.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        let _e106 = a_18.c;
-        let oc = (o - _e106);
-        let b_20 = dot(oc, _e84);
-        let _e111 = a_18.radius;
-        let _e113 = a_18.radius;
-        let k_9 = (dot(oc, oc) - (_e111 * _e113));
-        let disc_2 = ((b_20 * b_20) - k_9);
+        let _e114 = a_18.c;
+        let oc = (o - _e114);
+        let b_19 = dot(oc, _e92);
+        let _e119 = a_18.radius;
+        let _e121 = a_18.radius;
+        let k_9 = (dot(oc, oc) - (_e119 * _e121));
+        let disc_2 = ((b_19 * b_19) - k_9);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_8 = (-(b_20) - select(root_2, -(root_2), ((bitcast<u32>(b_20) & 2147483648u) != 0u)));
+            let q_8 = (-(b_19) - select(root_2, -(root_2), ((bitcast<u32>(b_19) & 2147483648u) != 0u)));
             cut0_ = q_8;
             cut1_ = (k_9 / q_8);
             cut_count = 2u;
         }
     } else {
         if (s_30.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e137 = airlight_normalize(s_30.light_axis);
-            a_18.n = _e137;
-            let _e140 = a_18.n;
-            let _e141 = airlight_basis_e1_(_e140);
-            a_18.a1_ = _e141;
+            let _e145 = airlight_normalize(s_30.light_axis);
+            a_18.n = _e145;
+            let _e148 = a_18.n;
+            let _e149 = airlight_basis_e1_(_e148);
+            a_18.a1_ = _e149;
         } else {
             a_18.eu = s_30.light_axis;
             a_18.ev = s_30.light_end;
-            let _e148 = a_18.eu;
-            let _e150 = a_18.ev;
-            let _e152 = airlight_normalize(cross(_e148, _e150));
-            a_18.n = _e152;
-            let _e155 = a_18.eu;
-            let _e156 = airlight_normalize(_e155);
-            a_18.a1_ = _e156;
-            let _e158 = a_18.eu;
-            let _e160 = a_18.ev;
-            let diagonal = (_e158 + _e160);
-            let _e163 = a_18.c;
-            centre = (_e163 + (0.5f * diagonal));
-            let _e167 = airlight_safe_length(diagonal);
-            let _e169 = a_18.eu;
-            let _e171 = a_18.ev;
-            let _e173 = airlight_safe_length((_e169 - _e171));
-            size = (0.5f * max(_e167, _e173));
+            let _e156 = a_18.eu;
+            let _e158 = a_18.ev;
+            let _e160 = airlight_normalize(cross(_e156, _e158));
+            a_18.n = _e160;
+            let _e163 = a_18.eu;
+            let _e164 = airlight_normalize(_e163);
+            a_18.a1_ = _e164;
+            let _e166 = a_18.eu;
+            let _e168 = a_18.ev;
+            let diagonal = (_e166 + _e168);
+            let _e171 = a_18.c;
+            centre = (_e171 + (0.5f * diagonal));
+            let _e175 = airlight_safe_length(diagonal);
+            let _e177 = a_18.eu;
+            let _e179 = a_18.ev;
+            let _e181 = airlight_safe_length((_e177 - _e179));
+            size = (0.5f * max(_e175, _e181));
         }
-        let _e179 = a_18.n;
-        let _e181 = a_18.a1_;
-        a_18.a2_ = cross(_e179, _e181);
-        let _e185 = a_18.a1_;
-        let _e188 = a_18.a2_;
-        let _e191 = a_18.n;
-        a_18.dirs = vec3<f32>(dot(_e185, _e84), dot(_e188, _e84), dot(_e191, _e84));
-        let _e195 = a_18.c;
-        let _e198 = a_18.n;
-        let _e201 = a_18.n;
-        cut0_ = (dot((_e195 - o), _e198) / dot(_e84, _e201));
+        let _e187 = a_18.n;
+        let _e189 = a_18.a1_;
+        a_18.a2_ = cross(_e187, _e189);
+        let _e193 = a_18.a1_;
+        let _e196 = a_18.a2_;
+        let _e199 = a_18.n;
+        a_18.dirs = vec3<f32>(dot(_e193, _e92), dot(_e196, _e92), dot(_e199, _e92));
+        let _e203 = a_18.c;
+        let _e206 = a_18.n;
+        let _e209 = a_18.n;
+        cut0_ = (dot((_e203 - o), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
-    let _e205 = size;
-    if !((_e205 > 0f)) {
+    let _e213 = size;
+    if !((_e213 > 0f)) {
         a_18.outcome = 1u;
-        let _e211 = a_18;
-        return _e211;
+        let _e219 = a_18;
+        return _e219;
     }
-    let _e212 = centre;
-    let to_centre = (_e212 - o);
-    a_18.x_h = dot(to_centre, _e84);
-    let _e217 = a_18.x_h;
-    let _e220 = airlight_safe_length((to_centre - (_e217 * _e84)));
-    let _e223 = size;
-    let _e224 = size;
-    a_18.h_eff = sqrt(((_e220 * _e220) + (_e223 * _e224)));
+    let _e220 = centre;
+    let to_centre = (_e220 - o);
+    a_18.x_h = dot(to_centre, _e92);
+    let _e225 = a_18.x_h;
+    let _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
+    let _e231 = size;
+    let _e232 = size;
+    a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
     t_end_1 = s_30.t_max;
     end_infinite = infinite_6;
     if (s_30.sigma_t > 0f) {
-        let _e234 = centre;
-        let _e238 = airlight_safe_length((_e234 - (o + (t0_2 * _e84))));
-        let _e240 = size;
-        let reach_1 = (((t0_2 + _e238) + _e240) - (-15.942385f / s_30.sigma_t));
+        let _e242 = centre;
+        let _e246 = airlight_safe_length((_e242 - (o + (t0_2 * _e92))));
+        let _e248 = size;
+        let reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385f / s_30.sigma_t));
         if !(infinite_6) {
-            let _e249 = t_end_1;
-            local_175 = (reach_1 < _e249);
+            let _e257 = t_end_1;
+            local_175 = (reach_1 < _e257);
         } else {
             local_175 = true;
         }
-        let _e252 = local_175;
-        if _e252 {
+        let _e260 = local_175;
+        if _e260 {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    let _e254 = a_18;
-    let _e256 = airlight_area_theta(_e254, t0_2, false);
-    let _e257 = a_18;
-    let _e258 = t_end_1;
-    let _e259 = end_infinite;
-    let _e260 = airlight_area_theta(_e257, _e258, _e259);
-    let _e262 = a_18.x_h;
-    let _e264 = a_18.x_h;
-    let _e265 = cut0_;
-    let _e266 = cut_count;
-    let _e271 = a_18.x_h;
-    let _e272 = cut1_;
-    let _e273 = cut_count;
-    cuts_4 = array<f32, 3>(_e262, select(_e264, _e265, (_e266 > 0u)), select(_e271, _e272, (_e273 > 1u)));
+    let _e262 = a_18;
+    let _e264 = airlight_area_theta(_e262, t0_2, false);
+    let _e265 = a_18;
+    let _e266 = t_end_1;
+    let _e267 = end_infinite;
+    let _e268 = airlight_area_theta(_e265, _e266, _e267);
+    let _e270 = a_18.x_h;
+    let _e272 = a_18.x_h;
+    let _e273 = cut0_;
+    let _e274 = cut_count;
+    let _e279 = a_18.x_h;
+    let _e280 = cut1_;
+    let _e281 = cut_count;
+    cuts_4 = array<f32, 3>(_e270, select(_e272, _e273, (_e274 > 0u)), select(_e279, _e280, (_e281 > 1u)));
     loop {
-        let _e281 = i_27;
-        if (_e281 < 3u) {
+        let _e289 = i_27;
+        if (_e289 < 3u) {
         } else {
             break;
         }
         {
-            let _e284 = i_27;
-            let t_9 = cuts_4[_e284];
-            let _e287 = i_27;
-            cuts_4[_e287] = _e256;
-            let _e289 = airlight_is_finite(t_9);
-            if _e289 {
+            let _e292 = i_27;
+            let t_9 = cuts_4[_e292];
+            let _e295 = i_27;
+            cuts_4[_e295] = _e264;
+            let _e297 = airlight_is_finite(t_9);
+            if _e297 {
                 local_176 = (t_9 >= t0_2);
             } else {
                 local_176 = false;
             }
-            let _e294 = local_176;
-            if _e294 {
-                let _e297 = end_infinite;
-                if !(_e297) {
-                    let _e301 = t_end_1;
-                    local_178 = (t_9 <= _e301);
+            let _e302 = local_176;
+            if _e302 {
+                let _e305 = end_infinite;
+                if !(_e305) {
+                    let _e309 = t_end_1;
+                    local_178 = (t_9 <= _e309);
                 } else {
                     local_178 = true;
                 }
-                let _e304 = local_178;
-                local_177 = _e304;
+                let _e312 = local_178;
+                local_177 = _e312;
             } else {
                 local_177 = false;
             }
-            let _e306 = local_177;
-            if _e306 {
-                let _e307 = i_27;
-                let _e309 = a_18;
-                let _e311 = airlight_area_theta(_e309, t_9, false);
-                cuts_4[_e307] = _e311;
+            let _e314 = local_177;
+            if _e314 {
+                let _e315 = i_27;
+                let _e317 = a_18;
+                let _e319 = airlight_area_theta(_e317, t_9, false);
+                cuts_4[_e315] = _e319;
             }
         }
         continuing {
-            let _e313 = i_27;
-            i_27 = (_e313 + 1u);
+            let _e321 = i_27;
+            i_27 = (_e321 + 1u);
         }
     }
-    let _e315 = cuts_4;
-    let _e316 = airlight_edges_between(_e256, _e260, _e315);
-    a_18.edges = _e316.at;
-    a_18.panels = _e316.panels;
-    let _e321 = a_18;
-    return _e321;
+    let _e323 = cuts_4;
+    let _e324 = airlight_edges_between(_e264, _e268, _e323);
+    a_18.edges = _e324.at;
+    a_18.panels = _e324.panels;
+    let _e329 = a_18;
+    return _e329;
 }
 
 fn airlight_above(z_9: f32, off: vec2<f32>) -> AirlightAbove {
@@ -6350,9 +6410,9 @@ fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f3
             r_max_1 = ((radius_2 + radius_2) * _e49.x);
             if inside_1 {
                 e_5 = _e49.xy;
-                let b_21 = ((fx * _e49.x) + (fy_1 * _e49.y));
-                let root_3 = sqrt(((b_21 * b_21) - k_10));
-                r_max_1 = select((root_3 - b_21), (-(k_10) / (b_21 + root_3)), (b_21 > 0f));
+                let b_20 = ((fx * _e49.x) + (fy_1 * _e49.y));
+                let root_3 = sqrt(((b_20 * b_20) - k_10));
+                r_max_1 = select((root_3 - b_20), (-(k_10) / (b_20 + root_3)), (b_20 > 0f));
             }
             let _e90 = sum_8;
             let _e92 = above_3;
@@ -7043,17 +7103,10 @@ fn airlight_area_node(s_41: AirlightScene, a_27: AirlightArea, theta: f32) -> f3
 }
 
 fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
-    var list_2: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
-    var count_3: u32 = 0u;
-    var lo_6: f32;
-    var hi_5: f32;
-    var slot_1: u32 = 0u;
-    var queued: bool = false;
-    var queued_lo: f32 = 0f;
-    var queued_hi: f32 = 0f;
+    var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_7: f32;
-    var gauss: f32;
+    var gauss_1: f32;
     var j_7: u32;
     var local_187: bool;
 
@@ -7062,112 +7115,76 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
         return AirlightResult(0f, 0u);
     }
     let _e8 = airlight_kronrod15_rule();
-    lo_6 = _e1.edges[0];
-    hi_5 = _e1.edges[1];
-    let max_panels_2 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
-    let evaluations = ((2u * max_panels_2) - 1u);
+    let _e13 = airlight_adaptive(_e1.edges[0], _e1.edges[1]);
+    st_1 = _e13;
+    let max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
+    let evaluations = ((2u * max_panels_3) - 1u);
     loop {
-        let _e68 = step_2;
-        if (_e68 < evaluations) {
+        let _e24 = step_2;
+        if (_e24 < evaluations) {
         } else {
             break;
         }
         {
-            let _e70 = lo_6;
-            let _e71 = hi_5;
-            let c_20 = (0.5f * (_e70 + _e71));
-            let _e75 = hi_5;
-            let _e76 = lo_6;
-            let hw_5 = (0.5f * (_e75 - _e76));
+            let _e27 = st_1.lo;
+            let _e29 = st_1.hi;
+            let c_20 = (0.5f * (_e27 + _e29));
+            let _e34 = st_1.hi;
+            let _e36 = st_1.lo;
+            let hw_5 = (0.5f * (_e34 - _e36));
             k_7 = 0f;
-            gauss = 0f;
+            gauss_1 = 0f;
             j_7 = 0u;
             loop {
-                let _e86 = j_7;
-                if (_e86 < 15u) {
+                let _e46 = j_7;
+                if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e89 = j_7;
-                    let node_2 = _e8[(_e89 / 2u)];
-                    let _e99 = j_7;
-                    if ((_e99 & 1u) == 0u) {
-                        let _e106 = j_7;
-                        local_187 = (_e106 < 14u);
+                    let _e49 = j_7;
+                    let node_2 = _e8[(_e49 / 2u)];
+                    let _e59 = j_7;
+                    if ((_e59 & 1u) == 0u) {
+                        let _e66 = j_7;
+                        local_187 = (_e66 < 14u);
                     } else {
                         local_187 = false;
                     }
-                    let _e110 = local_187;
-                    let x_33 = select((c_20 + (hw_5 * node_2.x)), (c_20 - (hw_5 * node_2.x)), _e110);
-                    let _e112 = airlight_area_node(s_42, _e1, x_33);
-                    let _e113 = k_7;
-                    k_7 = (_e113 + (node_2.y * _e112));
-                    let _e117 = gauss;
-                    gauss = (_e117 + (node_2.z * _e112));
+                    let _e70 = local_187;
+                    let x_33 = select((c_20 + (hw_5 * node_2.x)), (c_20 - (hw_5 * node_2.x)), _e70);
+                    let _e72 = airlight_area_node(s_42, _e1, x_33);
+                    let _e73 = k_7;
+                    k_7 = (_e73 + (node_2.y * _e72));
+                    let _e77 = gauss_1;
+                    gauss_1 = (_e77 + (node_2.z * _e72));
                 }
                 continuing {
-                    let _e122 = j_7;
-                    j_7 = (_e122 + 1u);
+                    let _e82 = j_7;
+                    j_7 = (_e82 + 1u);
                 }
             }
-            let _e124 = slot_1;
-            let _e125 = lo_6;
-            let _e126 = hi_5;
-            let _e127 = k_7;
-            let _e129 = k_7;
-            let _e131 = gauss;
-            airlight_list_set((&list_2), _e124, vec4<f32>(_e125, _e126, (_e127 * hw_5), abs(((_e129 * hw_5) - (_e131 * hw_5)))));
-            let _e136 = slot_1;
-            let _e137 = count_3;
-            if (_e136 == _e137) {
-                let _e139 = count_3;
-                count_3 = (_e139 + 1u);
-            }
-            let _e142 = count_3;
-            if (_e142 < _e1.panels) {
-                let _e146 = count_3;
-                lo_6 = _e1.edges[_e146];
-                let _e149 = count_3;
-                hi_5 = _e1.edges[(_e149 + 1u)];
-                let _e153 = count_3;
-                slot_1 = _e153;
-            } else {
-                let _e154 = queued;
-                if _e154 {
-                    let _e155 = queued_lo;
-                    lo_6 = _e155;
-                    let _e156 = queued_hi;
-                    hi_5 = _e156;
-                    let _e157 = count_3;
-                    slot_1 = _e157;
-                    queued = false;
-                } else {
-                    let _e159 = count_3;
-                    let _e161 = airlight_split_worst((&list_2), _e159, max_panels_2, AIRLIGHT_AREA_RAY_TOLERANCE);
-                    if !(_e161.split) {
-                        break;
-                    }
-                    lo_6 = _e161.lo;
-                    hi_5 = _e161.mid;
-                    slot_1 = _e161.slot;
-                    queued = true;
-                    queued_lo = _e161.mid;
-                    queued_hi = _e161.hi;
-                }
+            let _e84 = st_1;
+            let _e85 = k_7;
+            let _e87 = gauss_1;
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_5), (_e87 * hw_5), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            st_1 = _e92;
+            let _e94 = st_1.more;
+            if !(_e94) {
+                break;
             }
         }
         continuing {
-            let _e171 = step_2;
-            step_2 = (_e171 + 1u);
+            let _e97 = step_2;
+            step_2 = (_e97 + 1u);
         }
     }
-    let _e173 = list_2;
-    let _e174 = count_3;
-    let _e175 = airlight_list_scan(_e173, _e174);
-    let total_4 = _e175.total;
-    let _e177 = airlight_is_finite(total_4);
-    if !(_e177) {
+    let _e100 = st_1.list;
+    let _e102 = st_1.count;
+    let _e103 = airlight_list_scan(_e100, _e102);
+    let total_4 = _e103.total;
+    let _e105 = airlight_is_finite(total_4);
+    if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult((s_42.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
@@ -7312,17 +7329,10 @@ fn airlight_in_scatter_route(s_45: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
-    var list_3: AirlightPanelList = AirlightPanelList(vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f), vec4(0f));
-    var count_4: u32 = 0u;
-    var a_28: f32;
-    var b_13: f32;
-    var slot_2: u32 = 0u;
-    var queued_1: bool = false;
-    var queued_lo_1: f32 = 0f;
-    var queued_hi_1: f32 = 0f;
+    var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_8: f32;
-    var gauss_1: f32;
+    var gauss_2: f32;
     var j_8: u32;
     var local_196: bool;
     var f: f32;
@@ -7343,130 +7353,94 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     let _e25 = airlight_kronrod_rule();
-    a_28 = _e12.edges[0];
-    b_13 = _e12.edges[1];
+    let _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
+    st_2 = _e30;
     let evaluations_1 = ((2u * _e12.max_panels) - 1u);
     loop {
-        let _e84 = step_3;
-        if (_e84 < evaluations_1) {
+        let _e39 = step_3;
+        if (_e39 < evaluations_1) {
         } else {
             break;
         }
         {
-            let _e86 = a_28;
-            let _e87 = b_13;
-            let c_21 = (0.5f * (_e86 + _e87));
-            let _e91 = b_13;
-            let _e92 = a_28;
-            let hw_6 = (0.5f * (_e91 - _e92));
+            let _e42 = st_2.lo;
+            let _e44 = st_2.hi;
+            let c_21 = (0.5f * (_e42 + _e44));
+            let _e49 = st_2.hi;
+            let _e51 = st_2.lo;
+            let hw_6 = (0.5f * (_e49 - _e51));
             k_8 = 0f;
-            gauss_1 = 0f;
+            gauss_2 = 0f;
             j_8 = 0u;
             loop {
-                let _e102 = j_8;
-                if (_e102 < 7u) {
+                let _e61 = j_8;
+                if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e105 = j_8;
-                    let node_3 = _e25[(_e105 / 2u)];
-                    let _e115 = j_8;
-                    if ((_e115 & 1u) == 0u) {
-                        let _e122 = j_8;
-                        local_196 = (_e122 < 6u);
+                    let _e64 = j_8;
+                    let node_3 = _e25[(_e64 / 2u)];
+                    let _e74 = j_8;
+                    if ((_e74 & 1u) == 0u) {
+                        let _e81 = j_8;
+                        local_196 = (_e81 < 6u);
                     } else {
                         local_196 = false;
                     }
-                    let _e126 = local_196;
-                    let w_10 = select((c_21 + (hw_6 * node_3.x)), (c_21 - (hw_6 * node_3.x)), _e126);
-                    let _e128 = airlight_outer_node(s_46, _e12, w_10);
+                    let _e85 = local_196;
+                    let w_10 = select((c_21 + (hw_6 * node_3.x)), (c_21 - (hw_6 * node_3.x)), _e85);
+                    let _e87 = airlight_outer_node(s_46, _e12, w_10);
                     f = 0f;
-                    if (_e128.weight != 0f) {
-                        let _e134 = airlight_node_integral(_e128);
-                        if (_e134.status == AIRLIGHT_STATUS_INFINITE) {
-                            return _e134;
+                    if (_e87.weight != 0f) {
+                        let _e93 = airlight_node_integral(_e87);
+                        if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
+                            return _e93;
                         }
                         if (s_46.light_shape == AIRLIGHT_SHAPE_POINT) {
                             local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_197 = false;
                         }
-                        let _e147 = local_197;
-                        if _e147 {
-                            return _e134;
+                        let _e106 = local_197;
+                        if _e106 {
+                            return _e93;
                         }
-                        f = (_e134.in_scatter * _e128.weight);
+                        f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e151 = k_8;
-                    let _e153 = f;
-                    k_8 = (_e151 + (node_3.y * _e153));
-                    let _e156 = gauss_1;
-                    let _e158 = f;
-                    gauss_1 = (_e156 + (node_3.z * _e158));
+                    let _e110 = k_8;
+                    let _e112 = f;
+                    k_8 = (_e110 + (node_3.y * _e112));
+                    let _e115 = gauss_2;
+                    let _e117 = f;
+                    gauss_2 = (_e115 + (node_3.z * _e117));
                 }
                 continuing {
-                    let _e162 = j_8;
-                    j_8 = (_e162 + 1u);
+                    let _e121 = j_8;
+                    j_8 = (_e121 + 1u);
                 }
             }
-            let _e164 = slot_2;
-            let _e165 = a_28;
-            let _e166 = b_13;
-            let _e167 = k_8;
-            let _e169 = k_8;
-            let _e171 = gauss_1;
-            airlight_list_set((&list_3), _e164, vec4<f32>(_e165, _e166, (_e167 * hw_6), abs(((_e169 * hw_6) - (_e171 * hw_6)))));
-            let _e176 = slot_2;
-            let _e177 = count_4;
-            if (_e176 == _e177) {
-                let _e179 = count_4;
-                count_4 = (_e179 + 1u);
-            }
-            let _e182 = count_4;
-            if (_e182 < _e12.panels) {
-                let _e186 = count_4;
-                a_28 = _e12.edges[_e186];
-                let _e189 = count_4;
-                b_13 = _e12.edges[(_e189 + 1u)];
-                let _e193 = count_4;
-                slot_2 = _e193;
-            } else {
-                let _e194 = queued_1;
-                if _e194 {
-                    let _e195 = queued_lo_1;
-                    a_28 = _e195;
-                    let _e196 = queued_hi_1;
-                    b_13 = _e196;
-                    let _e197 = count_4;
-                    slot_2 = _e197;
-                    queued_1 = false;
-                } else {
-                    let _e199 = count_4;
-                    let _e201 = airlight_split_worst((&list_3), _e199, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
-                    if !(_e201.split) {
-                        break;
-                    }
-                    a_28 = _e201.lo;
-                    b_13 = _e201.mid;
-                    slot_2 = _e201.slot;
-                    queued_1 = true;
-                    queued_lo_1 = _e201.mid;
-                    queued_hi_1 = _e201.hi;
-                }
+            let _e123 = st_2;
+            let _e124 = k_8;
+            let _e126 = gauss_2;
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_6), (_e126 * hw_6), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            st_2 = _e132;
+            let _e134 = st_2.more;
+            if !(_e134) {
+                break;
             }
         }
         continuing {
-            let _e211 = step_3;
-            step_3 = (_e211 + 1u);
+            let _e137 = step_3;
+            step_3 = (_e137 + 1u);
         }
     }
-    let _e213 = list_3;
-    let _e214 = count_4;
-    let _e215 = airlight_list_scan(_e213, _e214);
-    let total_5 = _e215.total;
-    let _e217 = airlight_is_finite(total_5);
-    if !(_e217) {
+    let _e140 = st_2.list;
+    let _e142 = st_2.count;
+    let _e143 = airlight_list_scan(_e140, _e142);
+    let total_5 = _e143.total;
+    let _e145 = airlight_is_finite(total_5);
+    if !(_e145) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(max(total_5, 0f), AIRLIGHT_STATUS_OK);

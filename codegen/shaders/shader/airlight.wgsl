@@ -2021,7 +2021,7 @@ fn airlight_list_scan(l: AirlightPanelList, count: u32) -> AirlightListScan {
 /// the cuts strictly inside in increasing order (three compare-and-swaps; repeats dropped), hi;
 /// `panels` of them between.
 struct AirlightEdges {
-    at: array<f32, 5>,
+    at: array<f32, AIRLIGHT_OUTER_EDGES>,
     panels: u32,
 }
 
@@ -2030,7 +2030,7 @@ fn airlight_edges_between(lo: f32, hi: f32, unsorted: array<f32, 3>) -> Airlight
     if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
     if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
     if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
-    var e = AirlightEdges(array<f32, 5>(lo, lo, lo, lo, lo), 0u);
+    var e = AirlightEdges(array<f32, AIRLIGHT_OUTER_EDGES>(lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo), 0u);
     var n = 0u;
     for (var i = 0u; i < 3u; i++) {
         if (cuts[i] > e.at[n] && cuts[i] < hi) {
@@ -2070,6 +2070,58 @@ fn airlight_split_worst(list: ptr<function, AirlightPanelList>, count: u32, max_
         return AirlightSplit(true, w.x, mid, w.y, scan.worst);
     }
     return AirlightSplit(false, 0.0, 0.0, 0.0, 0u);
+}
+
+/// An adaptive outer integral's state (extended.rs `adaptive`): the panel list, `count` panels
+/// long, and the panel to evaluate next, [lo, hi], with the slot it goes to (none: `more` false);
+/// a split's second half waits in `queued_lo`, `queued_hi` (`queued`).
+struct AirlightAdaptive {
+    list: AirlightPanelList,
+    count: u32,
+    lo: f32,
+    hi: f32,
+    slot: u32,
+    more: bool,
+    queued: bool,
+    queued_lo: f32,
+    queued_hi: f32,
+}
+
+/// The state before the first panel, [lo, hi].
+fn airlight_adaptive(lo: f32, hi: f32) -> AirlightAdaptive {
+    return AirlightAdaptive(AirlightPanelList(@ZEROS_SEGMENT_LIST@), 0u, lo, hi, 0u, true, false, 0.0, 0.0);
+}
+
+/// The state after the panel just evaluated (its Kronrod and Gauss sums) is listed, with the
+/// next: the rest of the first `panels` panels between `edges`, a split's second half, or the
+/// first half of the panel of the largest error (airlight_split_worst).
+fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edges: array<f32, AIRLIGHT_OUTER_EDGES>, panels: u32, max_panels: u32, tolerance: f32) -> AirlightAdaptive {
+    var st = state;
+    var list = st.list;
+    airlight_list_set(&list, st.slot, vec4<f32>(st.lo, st.hi, kronrod, abs(kronrod - gauss)));
+    if (st.slot == st.count) { st.count += 1u; }
+    let count = st.count;
+    if (count < panels) {
+        st.lo = edges[count];
+        st.hi = edges[count + 1u];
+        st.slot = count;
+    } else if (st.queued) {
+        st.lo = st.queued_lo;
+        st.hi = st.queued_hi;
+        st.slot = count;
+        st.queued = false;
+    } else {
+        let next = airlight_split_worst(&list, count, max_panels, tolerance);
+        st.lo = next.lo;
+        st.hi = next.mid;
+        st.slot = next.slot;
+        st.more = next.split;
+        st.queued = true;
+        st.queued_lo = next.mid;
+        st.queued_hi = next.hi;
+    }
+    st.list = list;
+    return st;
 }
 
 /// asinh x: log1p(|x| + x²/(1 + √(1 + x²))) (no cancellation for x < 0, where Vulkan's asinh
@@ -2448,11 +2500,7 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
         if (at[i] > 0.0 && at[i] < len) { cuts[i] = airlight_to_w(g, at[i]); }
     }
     let edges = airlight_edges_between(airlight_to_w(g, 0.0), airlight_to_w(g, len), cuts);
-    g.edges[0] = edges.at[0];
-    g.edges[1] = edges.at[1];
-    g.edges[2] = edges.at[2];
-    g.edges[3] = edges.at[3];
-    g.edges[4] = edges.at[4];
+    g.edges = edges.at;
     g.panels = edges.panels;
     return g;
 }
@@ -2578,7 +2626,7 @@ struct AirlightArea {
     radius: f32,
     x_h: f32,
     h_eff: f32,
-    edges: array<f32, 5>,
+    edges: array<f32, AIRLIGHT_OUTER_EDGES>,
     panels: u32,
     /// 0: integrate; 1: the result is 0.
     outcome: u32,
@@ -2658,7 +2706,8 @@ fn airlight_area_theta(a: AirlightArea, t: f32, infinite: bool) -> f32 {
 fn airlight_area(s: AirlightScene) -> AirlightArea {
     let zero = vec3<f32>(0.0);
     var a = AirlightArea(zero, s.light_position, zero, zero, zero, zero, zero, zero, s.light_param_a, 0.0, 0.0,
-        array<f32, 5>(0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, airlight_phase_lobes(s), false);
+        array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, airlight_phase_lobes(s),
+        false);
     a.isotropic = s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
         || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0)
         || (s.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG && s.phase_param_a == 0.0 && s.phase_param_b == 0.0);
@@ -3058,19 +3107,12 @@ fn airlight_area_light(s: AirlightScene) -> AirlightResult {
         return AirlightResult(0.0, AIRLIGHT_STATUS_OK);
     }
     let rule = airlight_kronrod15_rule();
-    var list = AirlightPanelList(@ZEROS_SEGMENT_LIST@);
-    var count = 0u;
-    var lo = a.edges[0];
-    var hi = a.edges[1];
-    var slot = 0u;
-    var queued = false;
-    var queued_lo = 0.0;
-    var queued_hi = 0.0;
+    var st = airlight_adaptive(a.edges[0], a.edges[1]);
     let max_panels = max(AIRLIGHT_AREA_RAY_PANELS, a.panels);
     let evaluations = 2u * max_panels - 1u;
     for (var step = 0u; step < evaluations; step++) {
-        let c = 0.5 * (lo + hi);
-        let hw = 0.5 * (hi - lo);
+        let c = 0.5 * (st.lo + st.hi);
+        let hw = 0.5 * (st.hi - st.lo);
         var k = 0.0;
         var gauss = 0.0;
         for (var j = 0u; j < 15u; j++) {
@@ -3080,30 +3122,10 @@ fn airlight_area_light(s: AirlightScene) -> AirlightResult {
             k += node.y * f;
             gauss += node.z * f;
         }
-        airlight_list_set(&list, slot, vec4<f32>(lo, hi, k * hw, abs(k * hw - gauss * hw)));
-        if (slot == count) { count += 1u; }
-        // next: the remaining first panels, a split's second half, or the worst panel's first
-        if (count < a.panels) {
-            lo = a.edges[count];
-            hi = a.edges[count + 1u];
-            slot = count;
-        } else if (queued) {
-            lo = queued_lo;
-            hi = queued_hi;
-            slot = count;
-            queued = false;
-        } else {
-            let next = airlight_split_worst(&list, count, max_panels, AIRLIGHT_AREA_RAY_TOLERANCE);
-            if (!next.split) { break; }
-            lo = next.lo;
-            hi = next.mid;
-            slot = next.slot;
-            queued = true;
-            queued_lo = next.mid;
-            queued_hi = next.hi;
-        }
+        st = airlight_adaptive_step(st, k * hw, gauss * hw, a.edges, a.panels, max_panels, AIRLIGHT_AREA_RAY_TOLERANCE);
+        if (!st.more) { break; }
     }
-    let total = airlight_list_scan(list, count).total;
+    let total = airlight_list_scan(st.list, st.count).total;
     if (!airlight_is_finite(total)) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
@@ -3205,22 +3227,12 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
     let rule = airlight_kronrod_rule();
-    let tolerance = AIRLIGHT_PANEL_TOLERANCE;
-    // the panel list (extended.rs adaptive): (a, b, Kronrod value, |Kronrod − Gauss|)
-    var list = AirlightPanelList(@ZEROS_SEGMENT_LIST@);
-    var count = 0u;
-    // the panel to evaluate next and its slot; a split's second half waits in `queued`
-    var a = g.edges[0];
-    var b = g.edges[1];
-    var slot = 0u;
-    var queued = false;
-    var queued_lo = 0.0;
-    var queued_hi = 0.0;
+    var st = airlight_adaptive(g.edges[0], g.edges[1]);
     // the first panels (≤ 4) and two per split, until the list is full
     let evaluations = 2u * g.max_panels - 1u;
     for (var step = 0u; step < evaluations; step++) {
-        let c = 0.5 * (a + b);
-        let hw = 0.5 * (b - a);
+        let c = 0.5 * (st.lo + st.hi);
+        let hw = 0.5 * (st.hi - st.lo);
         var k = 0.0;
         var gauss = 0.0;
         for (var j = 0u; j < 7u; j++) {
@@ -3242,30 +3254,10 @@ fn airlight_in_scatter(s: AirlightScene) -> AirlightResult {
             k += node.y * f;
             gauss += node.z * f;
         }
-        airlight_list_set(&list, slot, vec4<f32>(a, b, k * hw, abs(k * hw - gauss * hw)));
-        if (slot == count) { count += 1u; }
-        // next: the remaining first panels, a split's second half, or the worst panel's first
-        if (count < g.panels) {
-            a = g.edges[count];
-            b = g.edges[count + 1u];
-            slot = count;
-        } else if (queued) {
-            a = queued_lo;
-            b = queued_hi;
-            slot = count;
-            queued = false;
-        } else {
-            let next = airlight_split_worst(&list, count, g.max_panels, tolerance);
-            if (!next.split) { break; }
-            a = next.lo;
-            b = next.mid;
-            slot = next.slot;
-            queued = true;
-            queued_lo = next.mid;
-            queued_hi = next.hi;
-        }
+        st = airlight_adaptive_step(st, k * hw, gauss * hw, g.edges, g.panels, g.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+        if (!st.more) { break; }
     }
-    let total = airlight_list_scan(list, count).total;
+    let total = airlight_list_scan(st.list, st.count).total;
     if (!airlight_is_finite(total)) {
         return AirlightResult(AIRLIGHT_FLT_MAX, AIRLIGHT_STATUS_INFINITE);
     }
