@@ -176,9 +176,10 @@ impl<R: BufRead> Lines<R> {
 /// in a batch of their own through the area entry (`area_compute_wgsl`).
 pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> Result<(), EvalError> {
     use airlight_shaders::layout::{pack, pack_area, pack_segment, pack_surface, unpack_result, RECORD_SIZE, RESULT_SIZE, STATUS_INFINITE, STATUS_OK};
-    // per input line: its "id" and its error line, or the output key of a packed record
-    let mut lines: Vec<(Option<serde_json::Value>, Result<Option<&str>, String>)> = Vec::new();
-    let mut records = Vec::new();
+    // per input line: its "id" and its error line, or the output key of a packed record and
+    // whether it is in the area lights' batch
+    let mut lines: Vec<(Option<serde_json::Value>, Result<(Option<&str>, bool), String>)> = Vec::new();
+    let (mut records, mut area_records) = (Vec::new(), Vec::new());
     let mut points = 0usize;
     let mut input = Lines::new(input);
     while let Some((n, text)) = input.next_line()? {
@@ -186,20 +187,20 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
             Ok((id, Ok(AnyRecord::Point(r)))) => {
                 points += 1;
                 records.extend_from_slice(&pack(&r.ray, &r.light, &r.medium, &r.phase));
-                lines.push((id, Ok(None)));
+                lines.push((id, Ok((None, false))));
             }
             Ok((id, Ok(AnyRecord::Segment(r)))) => {
                 records.extend_from_slice(&pack_segment(&r));
-                lines.push((id, Ok(None)));
+                lines.push((id, Ok((None, false))));
             }
             Ok((id, Ok(AnyRecord::Area(r)))) => {
-                records.extend_from_slice(&pack_area(&r));
-                lines.push((id, Ok(None)));
+                area_records.extend_from_slice(&pack_area(&r));
+                lines.push((id, Ok((None, true))));
             }
             Ok((id, Ok(AnyRecord::Surface(r)))) => match pack_surface(&r) {
                 Some(record) => {
                     records.extend_from_slice(&record);
-                    lines.push((id, Ok(Some("surface_air_light"))));
+                    lines.push((id, Ok((Some("surface_air_light"), false))));
                 }
                 None => lines.push((
                     id,
@@ -210,35 +211,29 @@ pub fn run_gpu(input: impl BufRead, mut out: impl Write, opts: &EvalOptions) -> 
             Err(e) => lines.push((None, Err(e))),
         }
     }
-    let results = if records.is_empty() {
-        Vec::new()
-    } else {
+    // area lights through their own entry, the rest through the full entry — or, point lights
+    // alone, the library's point entry, without the segment and surface loop
+    let (mut results, mut area_results) = (Vec::new(), Vec::new());
+    if !(records.is_empty() && area_records.is_empty()) {
         let gpu = airlight_shaders::gpu::Gpu::new().map_err(EvalError::Gpu)?;
         let terms = opts.terms.unwrap_or(airlight::SHADER_NODES);
         let run = |shader: &str, records: &[u8]| gpu.run(airlight_shaders::gpu::Shader::Wgsl(shader), records, true).map_err(EvalError::Gpu);
-        // area lights through their own entry, the rest through the full entry — or, point
-        // lights alone, the library's point entry, without the segment and surface loop
-        let is_area = |r: &[u8]| airlight_shaders::layout::Record::from_bytes(r).light_shape >= airlight_shaders::layout::SHAPE_DISC;
-        let (area, rest): (Vec<&[u8]>, Vec<&[u8]>) = records.chunks(RECORD_SIZE).partition(|r| is_area(r));
-        let area_results = if area.is_empty() { Vec::new() } else { run(&airlight_shaders::targets::area_compute_wgsl(terms), &area.concat())? };
-        let rest_results = if rest.is_empty() {
-            Vec::new()
-        } else if points * RECORD_SIZE == records.len() {
-            run(&airlight_shaders::targets::point_compute_wgsl(terms), &rest.concat())?
-        } else {
-            run(airlight_shaders::targets::compute_wgsl(terms), &rest.concat())?
-        };
-        // back in the input's order
-        let (mut a, mut b) = (area_results.chunks(RESULT_SIZE), rest_results.chunks(RESULT_SIZE));
-        records.chunks(RECORD_SIZE).flat_map(|r| if is_area(r) { a.next() } else { b.next() }.unwrap_or(&[]).to_vec()).collect()
-    };
-    let mut k = 0;
+        if !area_records.is_empty() {
+            area_results = run(&airlight_shaders::targets::area_compute_wgsl(terms), &area_records)?;
+        }
+        if !records.is_empty() && points * RECORD_SIZE == records.len() {
+            results = run(&airlight_shaders::targets::point_compute_wgsl(terms), &records)?;
+        } else if !records.is_empty() {
+            results = run(airlight_shaders::targets::compute_wgsl(terms), &records)?;
+        }
+    }
+    let (mut results, mut area_results) = (results.chunks(RESULT_SIZE), area_results.chunks(RESULT_SIZE));
     for (id, l) in lines {
         let text = match l {
             Err(e) => e,
-            Ok(key) => {
-                let (v, status) = unpack_result(&results[k * RESULT_SIZE..(k + 1) * RESULT_SIZE]);
-                k += 1;
+            Ok((key, area)) => {
+                let result = if area { area_results.next() } else { results.next() };
+                let (v, status) = unpack_result(result.expect("one result per packed record"));
                 let value = |x: f32| match key {
                     Some(key) => format_named(key, x),
                     None => format_value(x),

@@ -231,11 +231,6 @@ impl Record {
         }
     }
 
-    /// The record in `bytes` (its first [`RECORD_SIZE`], any alignment).
-    pub fn from_bytes(bytes: &[u8]) -> Self {
-        bytemuck::pod_read_unaligned(&bytes[..RECORD_SIZE])
-    }
-
     /// Its bytes, as the compute entry point reads them.
     pub fn bytes(&self) -> [u8; RECORD_SIZE] {
         bytemuck::cast(*self)
