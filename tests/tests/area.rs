@@ -3,7 +3,7 @@
 //! lobes), against their exact limits (an emitter shrinking to a point is the Lambertian, or
 //! two-lobed, point light; areas add), and their edges.
 
-use airlight::glam::DVec3;
+use airlight::glam::{DVec3, Vec3};
 use airlight::light::Lambertian;
 use airlight::phase::{AnyPhase, HenyeyGreenstein};
 use airlight::{AreaLight, AreaScene, Emitter, Medium, PointLight, Ray, Scene};
@@ -276,6 +276,45 @@ fn bounded_sphere_in_forward_fog() {
             let scene = AreaScene::new(ray, AreaLight::new(Emitter::Sphere { center, radius }, 2.0), medium, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
             let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-9).0);
             assert!((bounded - nested).abs() <= 1e-4 * nested, "towards {towards}, g {g}: bounded {bounded} vs nested {nested}");
+        }
+    }
+}
+
+/// The bounded method on a disc and a rectangle in forward-scattering fog, on rays that look at
+/// their centre, towards their limb and just past it, where the phase lobe's direction meets the
+/// emitter's plane on it or next to it and the method takes the emitter in polar coordinates about
+/// that direction (`airlight::area::outer`): within the f32 target 1e-4 of the nested construction
+/// at tolerance 1e-9, in f64 and in f32 (about the foot, at `g = 0.99` 2.2e-2 and 9.5e-2 off
+/// looking at them).
+#[test]
+fn bounded_flat_emitters_in_forward_fog() {
+    use airlight::phase::HenyeyGreenstein as Hg;
+    let to_f32 = |e: Emitter<f64>| match e {
+        Emitter::Disc { center, normal, radius } => Emitter::Disc { center: center.as_vec3(), normal: normal.as_vec3(), radius: radius as f32 },
+        Emitter::Rectangle { corner, edge_u, edge_v } => Emitter::Rectangle { corner: corner.as_vec3(), edge_u: edge_u.as_vec3(), edge_v: edge_v.as_vec3() },
+        Emitter::Sphere { center, radius } => Emitter::Sphere { center: center.as_vec3(), radius: radius as f32 },
+    };
+    let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
+    let emitters = [
+        Emitter::Disc { center: DVec3::new(6.0, 1.5, -0.5), normal: DVec3::new(-1.0, -0.4, 0.1), radius: 0.8 },
+        Emitter::Rectangle { corner: DVec3::new(6.0, 1.0, -1.0), edge_u: DVec3::new(0.1, 0.0, 1.0), edge_v: DVec3::new(0.0, 1.2, 0.1) },
+    ];
+    for emitter in emitters {
+        for towards in [DVec3::new(6.0, 1.5, -0.5), DVec3::new(6.0, 2.25, -0.3), DVec3::new(6.0, 2.4, -0.5)] {
+            for g in [0.95, 0.99] {
+                let ray = Ray { origin: DVec3::ZERO, dir: towards, t_min: 0.0, t_max: f64::INFINITY };
+                let scene = AreaScene::new(ray, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
+                let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-9).0);
+                let f32_scene = AreaScene::<f32, _>::new(
+                    Ray { origin: Vec3::ZERO, dir: towards.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
+                    AreaLight::new(to_f32(emitter), 2.0),
+                    Medium { sigma_s: 0.05, sigma_t: 0.08 },
+                    AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
+                )
+                .unwrap();
+                let single = f32_scene.in_scatter_bounded() as f64;
+                assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "{emitter:?} towards {towards}, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
+            }
         }
     }
 }

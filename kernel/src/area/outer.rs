@@ -19,7 +19,10 @@
 //!   `z/d³` of `dω = z dA/d³` is smooth in `γ`: a disc over the whole circle about the foot, or
 //!   with `q*` on the rim over the half towards the centre (the chord `2R cos ψ`), a
 //!   parallelogram as the triangles from `q*` to its edges. Gauss–Legendre [`RADIAL`] in `γ`,
-//!   [`AZIMUTHAL`] in `ψ` ([`TRIANGLE_AZIMUTHAL`] a triangle).
+//!   [`AZIMUTHAL`] in `ψ` ([`TRIANGLE_AZIMUTHAL`] a triangle). Where a phase lobe narrower than
+//!   the emitter points at it (its direction `±d` meets the plane on the emitter or within
+//!   [`LOBE_REACH`] of its widths), polar about that direction instead (`flat_about_lobe`):
+//!   about the foot, a Henyey–Greenstein `g = 0.99` lobe on a disc or rectangle left 1e-2 to 1e-1.
 //! * A sphere: the cap it subtends, `sin α = R/|c − x|`, about the direction of its centre, in
 //!   `φ` with `sin β = sin α sin φ` (then the distance to the surface, `|c − x| cos β − R cos φ`,
 //!   has no square root left at the cap's rim, and the emitted cosine is `cos φ`):
@@ -192,6 +195,10 @@ fn disc<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T;
     let (fx, fy) = (dot(rel, a1), dot(rel, a2));
     let rf = (fx * fx + fy * fy).sqrt();
     let dirs = [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)];
+    let outline = Outline::Circle { c: (-fx, -fy), radius };
+    if let Some(lobe) = flat_lobe(light, z, dirs, &outline, ((-fx, -fy), radius)) {
+        return flat_about_lobe(light, z, &outline, &lobe);
+    }
     let mut sum = T::zero();
     if rf <= radius {
         // about the foot: the chord to the rim along e, the positive root of r² + 2br + k = 0
@@ -229,26 +236,17 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
     // counter-clockwise about n
     let corners = [(T::zero(), T::zero()), u2, (u2.0 + v2.0, u2.1 + v2.1), v2];
     let det = u2.0 * v2.1 - u2.1 * v2.0;
-    let (u, v) = ((foot.0 * v2.1 - foot.1 * v2.0) / det, (u2.0 * foot.1 - u2.1 * foot.0) / det);
-    let inside = |s: T| s >= T::zero() && s <= T::one();
-    let q = if inside(u) && inside(v) {
-        foot
-    } else {
-        // the nearest point of the edges
-        let mut best = (T::infinity(), foot);
-        for i in 0..4 {
-            let (a, b) = (corners[i], corners[(i + 1) % 4]);
-            let e = (b.0 - a.0, b.1 - a.1);
-            let s = (((foot.0 - a.0) * e.0 + (foot.1 - a.1) * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
-            let p = (a.0 + s * e.0, a.1 + s * e.1);
-            let dd = (p.0 - foot.0) * (p.0 - foot.0) + (p.1 - foot.1) * (p.1 - foot.1);
-            if dd < best.0 {
-                best = (dd, p);
-            }
-        }
-        best.1
-    };
-    let above = Above::new(z, [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)], (q.0 - foot.0, q.1 - foot.1));
+    let dirs = [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)];
+    let about_foot = Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1)));
+    let half = T::lit(0.5);
+    let size = half * ((u2.0 + v2.0).hypot(u2.1 + v2.1)).max((u2.0 - v2.0).hypot(u2.1 - v2.1));
+    let centre = (half * corners[2].0 - foot.0, half * corners[2].1 - foot.1);
+    if let Some(lobe) = flat_lobe(light, z, dirs, &about_foot, (centre, size)) {
+        return flat_about_lobe(light, z, &about_foot, &lobe);
+    }
+    let q = about_foot.nearest((T::zero(), T::zero()));
+    let q = (q.0 + foot.0, q.1 + foot.1);
+    let above = Above::new(z, dirs, (q.0 - foot.0, q.1 - foot.1));
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = T::epsilon() * det.abs();
     let mut sum = T::zero();
@@ -269,6 +267,197 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
             let (sin, cos) = sin_cos_turns(psi);
             sum = sum + w * radial(light, &above, (cos, sin), h / (cos * m.0 + sin * m.1));
         });
+    }
+    sum
+}
+
+/// A flat emitter's outline in its plane's coordinates (along `a1`, `a2` of [`Frame`]) about
+/// `x`'s foot.
+enum Outline<T> {
+    Circle { c: (T, T), radius: T },
+    /// A parallelogram's corners, counter-clockwise about the normal.
+    Polygon([(T, T); 4]),
+}
+
+impl<T: Real> Outline<T> {
+    /// The interval `[r_a, r_b]` of `r ≥ 0` for which `q + r e` lies on the emitter (`None` if
+    /// the half-line misses it).
+    fn chord(&self, q: (T, T), e: (T, T)) -> Option<(T, T)> {
+        match *self {
+            Outline::Circle { c, radius } => {
+                // r² a + 2 r b + k = 0
+                let (qx, qy) = (q.0 - c.0, q.1 - c.1);
+                let (a, b) = (e.0 * e.0 + e.1 * e.1, qx * e.0 + qy * e.1);
+                let dq = qx.hypot(qy);
+                let k = (dq - radius) * (dq + radius);
+                let disc = b * b - a * k;
+                if !(disc > T::zero()) {
+                    return None;
+                }
+                let s = -b - disc.sqrt().copysign(b);
+                let (r1, r2) = (s / a, k / s);
+                let (lo, hi) = (r1.min(r2), r1.max(r2));
+                (hi > T::zero()).then(|| (lo.max(T::zero()), hi))
+            }
+            Outline::Polygon(corners) => {
+                // clipped by each edge's half-plane (Cyrus–Beck)
+                let (mut lo, mut hi) = (T::zero(), T::infinity());
+                for i in 0..4 {
+                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                    let m = (b.1 - a.1, a.0 - b.0);
+                    let (num, den) = ((q.0 - a.0) * m.0 + (q.1 - a.1) * m.1, e.0 * m.0 + e.1 * m.1);
+                    if den > T::zero() {
+                        hi = hi.min(-num / den);
+                    } else if den < T::zero() {
+                        lo = lo.max(-num / den);
+                    } else if num > T::zero() {
+                        return None;
+                    }
+                }
+                (lo < hi).then_some((lo, hi))
+            }
+        }
+    }
+
+    /// The emitter's point nearest `q` (`q` itself on the emitter).
+    fn nearest(&self, q: (T, T)) -> (T, T) {
+        match *self {
+            Outline::Circle { c, radius } => {
+                let (qx, qy) = (q.0 - c.0, q.1 - c.1);
+                let dq = qx.hypot(qy);
+                if dq <= radius {
+                    q
+                } else {
+                    (c.0 + qx * radius / dq, c.1 + qy * radius / dq)
+                }
+            }
+            Outline::Polygon(corners) => {
+                let mut best = (T::infinity(), q);
+                let mut inside = true;
+                for i in 0..4 {
+                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                    let e = (b.0 - a.0, b.1 - a.1);
+                    inside = inside && (q.0 - a.0) * e.1 - (q.1 - a.1) * e.0 <= T::zero();
+                    let s = (((q.0 - a.0) * e.0 + (q.1 - a.1) * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
+                    let p = (a.0 + s * e.0, a.1 + s * e.1);
+                    let dd = (p.0 - q.0) * (p.0 - q.0) + (p.1 - q.1) * (p.1 - q.1);
+                    if dd < best.0 {
+                        best = (dd, p);
+                    }
+                }
+                if inside {
+                    q
+                } else {
+                    best.1
+                }
+            }
+        }
+    }
+}
+
+/// A phase lobe pointing at a flat emitter: its direction `p = sign·d` in the plane's coordinates
+/// (`p·n < 0`, towards the plane), its radial scale `s` ([`lobes`]), `x`'s distance `L` from the
+/// point `q_L` where `p` meets the plane, and `q_L` (about the foot).
+struct FlatLobe<T> {
+    p: [T; 3],
+    sign: T,
+    scale: T,
+    l: T,
+    q: (T, T),
+}
+
+/// The phase lobe to take a flat emitter about, as a sphere's (`sphere_about_lobe`): one narrower
+/// than the emitter seen from `x` (`s` below twice `atan(size/|centre − x|)`) whose direction meets
+/// the plane on the emitter or within [`LOBE_REACH`] scales of it (`x = (0, 0, z)` above the
+/// foot; `dirs` the ray's direction in the plane's coordinates).
+fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: [T; 3], outline: &Outline<T>, (centre, size): ((T, T), T)) -> Option<FlatLobe<T>> {
+    let reach = (size / centre.0.hypot(centre.1).hypot(z)).atan();
+    light.lobes.iter().flatten().find_map(|&(sign, scale)| {
+        let p = dirs.map(|c| sign * c);
+        if !(p[2] < T::zero()) || !(scale < reach + reach) {
+            return None;
+        }
+        let l = z / -p[2];
+        let q = (l * p[0], l * p[1]);
+        let near = outline.nearest(q);
+        let to_near = [near.0, near.1, -z];
+        let cos = (dot(p, to_near) / length(to_near)).min(T::one());
+        (near == q || cos.acos() < T::lit(LOBE_REACH) * scale).then_some(FlatLobe { p, sign, scale, l, q })
+    })
+}
+
+/// `S(x)` of a flat emitter about a phase lobe's direction `p` ([`flat_lobe`]): polar about `p`,
+/// `ω = cos θ p + sin θ w_ψ`, `w_ψ = cos ψ u + sin ψ v`. The half-plane of `ψ` meets the
+/// emitter's plane in the half-line `q_L + r (w_ψ + k p)`, `k = −(w_ψ·n)/(p·n)`, on which
+/// `tan θ = r/(L + k r)`; there the distance is `z/c` and the emitted cosine
+/// `c = −(p·n)(cos θ − k sin θ)`. Each `θ` range (the emitter's chord of that half-line), graded
+/// from its start by `θ = θ_a + max(s, θ_a) tan γ`, by [`RADIAL`]; `ψ` over the whole circle
+/// ([`AZIMUTHAL`]) if `q_L` is on a disc, else over the wedge of the disc's tangents from it
+/// (`ψ = ψ_m + Ψ sin φ`, the chords close like a square root there); over the wedges between a
+/// parallelogram's corners seen from `q_L` (its chords' ends stay on one edge each) by
+/// [`TRIANGLE_AZIMUTHAL`].
+fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, outline: &Outline<T>, lobe: &FlatLobe<T>) -> T {
+    let FlatLobe { p, sign, scale, l, q } = *lobe;
+    let (u, v) = basis(p);
+    let pn = -p[2];
+    // a direction in the plane as the azimuth ψ of the half-plane it lies in
+    let azimuth = |e: (T, T)| (e.0 * v[0] + e.1 * v[1]).atan2(e.0 * u[0] + e.1 * u[1]);
+    let along = |cos: T, sin: T| {
+        let w = [cos * u[0] + sin * v[0], cos * u[1] + sin * v[1], cos * u[2] + sin * v[2]];
+        let k = w[2] / pn;
+        let Some((ra, rb)) = outline.chord(q, (w[0] + k * p[0], w[1] + k * p[1])) else {
+            return T::zero();
+        };
+        let (from, to) = (ra.atan2(l + k * ra), rb.atan2(l + k * rb));
+        let graded = scale.max(from);
+        let mut sum = T::zero();
+        each_node(&RADIAL, T::zero(), ((to - from) / graded).atan(), |g, w| {
+            let (sg, cg) = sin_cos_turns(g);
+            let (st, ct) = sin_cos_turns(from + graded * sg / cg);
+            let c = pn * (ct - k * st);
+            if c > T::zero() {
+                sum = sum + w * light.emitted(c) * exp_nonpositive(-light.sigma_t * z / c) * light.phase(sign * ct) * st * graded / (cg * cg);
+            }
+        });
+        sum
+    };
+    let wrap = |a: T| a - (T::PI() + T::PI()) * (a / (T::PI() + T::PI())).round();
+    let mut sum = T::zero();
+    match *outline {
+        Outline::Circle { c, radius } => {
+            let (dx, dy) = (c.0 - q.0, c.1 - q.1);
+            let dq = dx.hypot(dy);
+            if dq <= radius {
+                for &(cos, sin, w) in &light.azimuths.circle {
+                    sum = sum + w * along(cos, sin);
+                }
+            } else {
+                // the tangents from q_L, at ±β from the centre's direction
+                let (sb, cb) = (radius / dq, ((dq - radius) * (dq + radius)).sqrt() / dq);
+                let mid = azimuth((dx, dy));
+                let ends = [(dx * cb - dy * sb, dy * cb + dx * sb), (dx * cb + dy * sb, dy * cb - dx * sb)].map(|e| wrap(azimuth(e) - mid));
+                let (centre, half) = (mid + (ends[0] + ends[1]) * T::lit(0.5), (ends[0] - ends[1]).abs() * T::lit(0.5));
+                for &(cos, sin, w) in &light.azimuths.half {
+                    let (s, c) = sin_cos_turns(centre + half * sin);
+                    sum = sum + w * half * cos * along(c, s);
+                }
+            }
+        }
+        Outline::Polygon(corners) => {
+            // the corners' azimuths about the centre's (outside) or absolute (inside), in order
+            let inside = outline.nearest(q) == q;
+            let mid = if inside { T::zero() } else { azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1)) };
+            let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
+            psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
+            let wedges = if inside { 4 } else { 3 };
+            for i in 0..wedges {
+                let (from, to) = (psi[i], if i == 3 { psi[0] + T::PI() + T::PI() } else { psi[i + 1] });
+                each_node(&TRIANGLE_AZIMUTHAL, mid + from, mid + to, |a, w| {
+                    let (s, c) = sin_cos_turns(a);
+                    sum = sum + w * along(c, s);
+                });
+            }
+        }
     }
     sum
 }
@@ -336,8 +525,9 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
     sum
 }
 
-/// How far outside a sphere's cap, in radial scales `s` of a phase lobe, the lobe's direction may
-/// lie for the cap to be taken about it (`sphere_about_lobe`): 8 scales (16 widths) from its
+/// How far outside a sphere's cap or a flat emitter, in radial scales `s` of a phase lobe, the
+/// lobe's direction may lie for the emitter to be taken about it (`sphere_about_lobe`,
+/// `flat_about_lobe`): 8 scales (16 widths) from its
 /// direction a Henyey–Greenstein lobe has fallen to `257^{−3/2}` = 2.4e-4 of its peak, smooth on
 /// the cap rule's nodes (tests/examples/area_bounded_phase.rs: its rays past the limb were 4.1e-4
 /// to 6.0e-2 off with the cap rule, 3.9e-6 to 1.7e-5 with this).
@@ -414,11 +604,10 @@ where
     /// In-scattered radiance of the area light by the bounded method of [`outer`](self): the
     /// ray to [`BOUNDED_RAY_TOLERANCE`] in at most [`BOUNDED_RAY_PANELS`] panels, the emitter by
     /// fixed rules. Its cost has a fixed worst case (the shaders' budget) but no error control of
-    /// the emitter's rules, which do not resolve a lobe narrower than their nodes' spacing: on a
-    /// disc or rectangle a forward phase lobe inside the emitter's solid angle
-    /// (Henyey–Greenstein `g ≥ 0.95` on a ray that looks at the emitter; a sphere's cap is taken
-    /// about the lobe), and a cosine lobe of emission of power in the hundreds (a sphere's is
-    /// graded for).
+    /// the emitter's rules, which do not resolve a lobe narrower than their nodes' spacing unless
+    /// they are placed about it: a phase lobe narrower than the emitter is (the emitter is taken
+    /// about the lobe's direction), a cosine lobe of emission on a sphere is (its `φ` is graded),
+    /// but not one on a disc or rectangle of power in the hundreds.
     /// docs/DESIGN.md §12 gives its errors.
     pub fn in_scatter_bounded(&self) -> T {
         self.in_scatter_bounded_counted(T::lit(BOUNDED_RAY_TOLERANCE), BOUNDED_RAY_PANELS).0
