@@ -188,6 +188,17 @@ struct AirlightAbove {
     vec2 off;
     float rho0_;
 };
+struct AirlightOutline {
+    vec2 corners[4];
+    float radius;
+};
+struct AirlightFlatLobe {
+    vec3 p;
+    float sign_;
+    float scale;
+    float l;
+    vec2 q;
+};
 struct AirlightCap {
     vec3 a;
     float dc;
@@ -413,10 +424,10 @@ vec2 airlight_csqrt(vec2 z_1) {
 }
 
 vec2 airlight_cos_sin(float x) {
-    float z_10 = (x * x);
-    float c_8 = (1.0 + (z_10 * (-0.5 + (z_10 * (0.041666668 + (z_10 * (-0.0013888889 + (z_10 * (2.4801588e-5 + (z_10 * (-2.755732e-7 + (z_10 * (2.0876756e-9 + (z_10 * (-1.1470745e-11 + (z_10 * 4.7794773e-14))))))))))))))));
-    float s_47 = (1.0 + (z_10 * (-0.16666667 + (z_10 * (0.008333334 + (z_10 * (-0.0001984127 + (z_10 * (2.7557319e-6 + (z_10 * (-2.5052108e-8 + (z_10 * (1.6059044e-10 + (z_10 * (-7.6471636e-13 + (z_10 * 2.8114574e-15))))))))))))))));
-    return vec2(c_8, (s_47 * x));
+    float z_14 = (x * x);
+    float c_8 = (1.0 + (z_14 * (-0.5 + (z_14 * (0.041666668 + (z_14 * (-0.0013888889 + (z_14 * (2.4801588e-5 + (z_14 * (-2.755732e-7 + (z_14 * (2.0876756e-9 + (z_14 * (-1.1470745e-11 + (z_14 * 4.7794773e-14))))))))))))))));
+    float s_50 = (1.0 + (z_14 * (-0.16666667 + (z_14 * (0.008333334 + (z_14 * (-0.0001984127 + (z_14 * (2.7557319e-6 + (z_14 * (-2.5052108e-8 + (z_14 * (1.6059044e-10 + (z_14 * (-7.6471636e-13 + (z_14 * 2.8114574e-15))))))))))))))));
+    return vec2(c_8, (s_50 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -440,11 +451,11 @@ float airlight_atan(float x_1) {
     }
     float _e17 = t;
     float _e18 = t;
-    float z_11 = (_e17 * _e18);
+    float z_15 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_11) - 0.13877685) * z_11) + 0.19977711) * z_11) - 0.3333295) * z_11) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_15) - 0.13877685) * z_15) + 0.19977711) * z_15) - 0.3333295) * z_15) * _e32) + _e34));
 }
 
 vec2 airlight_cln(vec2 z_3) {
@@ -470,10 +481,10 @@ float airlight_log1p(float x_2) {
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_48 = (x_2 / (2.0 + x_2));
-    float z_12 = (s_48 * s_48);
-    float sum_12 = ((((((((((((((((z_12 / 17.0) + 0.06666667) * z_12) + 0.07692308) * z_12) + 0.09090909) * z_12) + 0.11111111) * z_12) + 0.14285715) * z_12) + 0.2) * z_12) + 0.33333334) * z_12) + 1.0);
-    return ((2.0 * s_48) * sum_12);
+    float s_51 = (x_2 / (2.0 + x_2));
+    float z_16 = (s_51 * s_51);
+    float sum_14 = ((((((((((((((((z_16 / 17.0) + 0.06666667) * z_16) + 0.07692308) * z_16) + 0.09090909) * z_16) + 0.11111111) * z_16) + 0.14285715) * z_16) + 0.2) * z_16) + 0.33333334) * z_16) + 1.0);
+    return ((2.0 * s_51) * sum_14);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -545,9 +556,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_25 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_28 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_25 * x_25) + (y_5 * y_5)) < 1.0);
+    return (((x_28 * x_28) + (y_5 * y_5)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -620,8 +631,8 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    vec2 b_13 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
-    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_13);
+    vec2 b_14 = (z_6 + vec2(((2.0 * nf) + 1.0), 0.0));
+    vec2 _e29 = airlight_cdiv(vec2((2.0 * (nf + 1.0)), 0.0), b_14);
     vec2 _e33 = airlight_cmul(_e29, _e29);
     vec2 _e35 = airlight_csqrt((vec2(1.0, 0.0) - _e33));
     root = _e35;
@@ -631,7 +642,7 @@ vec2 airlight_e1_scaled_cf(vec2 z_6) {
         root = -(_e41);
     }
     vec2 _e46 = root;
-    vec2 _e48 = airlight_cmul(b_13, (vec2(1.0, 0.0) + _e46));
+    vec2 _e48 = airlight_cmul(b_14, (vec2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     bool loop_init_2 = true;
     while(true) {
@@ -699,12 +710,12 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_6 = float(_e2);
-    float b_14 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_28 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
-    float disc = (1.0 - ((4.0 * a_28) / (b_14 * b_14)));
-    t_2 = b_14;
+    float b_15 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
+    float a_30 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float disc = (1.0 - ((4.0 * a_30) / (b_15 * b_15)));
+    t_2 = b_15;
     if ((disc > 0.0)) {
-        t_2 = ((b_14 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_15 * (1.0 + sqrt(disc))) * 0.5);
     }
     bool loop_init_3 = true;
     while(true) {
@@ -879,11 +890,11 @@ float[14] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g_2, float om, float op) {
     if ((g_2 >= 0.0)) {
-        float a_29 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_29 * a_29));
+        float a_31 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_31 * a_31));
     }
-    float b_15 = (1.0 + g_2);
-    return ((op * -((g_2 + g_2))) + (b_15 * b_15));
+    float b_16 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_16 * b_16));
 }
 
 float airlight_hg(float g_3, float om_1, float op_1) {
@@ -977,8 +988,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_26 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_26 * x_26) * (3.0 - (2.0 * x_26)));
+            float x_29 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_29 * x_29) * (3.0 - (2.0 * x_29)));
         }
         default: {
             return 1.0;
@@ -997,11 +1008,11 @@ float airlight_singular_height(float side, float gap, float sigma) {
 }
 
 float airlight_hg_gap(float g_4) {
-    float a_30 = abs(g_4);
-    if (!((a_30 > 0.0))) {
+    float a_32 = abs(g_4);
+    if (!((a_32 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_30) * (1.0 - a_30)) / (a_30 + a_30));
+    return (((1.0 - a_32) * (1.0 - a_32)) / (a_32 + a_32));
 }
 
 vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
@@ -1016,8 +1027,8 @@ vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
             break;
         }
         case 3u: {
-            float a_31 = abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, ((a_31 > 0.0) ? ((1.0 - a_31) / a_31) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_33 = abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, ((a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1241,10 +1252,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_27 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_27);
+            float x_30 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_30);
             if (_e42) {
-                float _e43 = airlight_log1p(x_27);
+                float _e43 = airlight_log1p(x_30);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1376,8 +1387,8 @@ vec2[6] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[6], uint i_3) {
-    float x_28 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_28) : x_28);
+    float x_31 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_31) : x_31);
 }
 
 float[12] airlight_legendre(float g_7[12]) {
@@ -1456,8 +1467,8 @@ float[12] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_29 = (lambda / float((2u * k0_)));
-            float per_step = (x_29 * x_29);
+            float x_32 = (lambda / float((2u * k0_)));
+            float per_step = (x_32 * x_32);
             share = per_step;
             bool loop_init_6 = true;
             while(true) {
@@ -1977,47 +1988,47 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_) {
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_5 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_7 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if ((q_5 < 1.0)) {
+    if ((q_7 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_5) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_7) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_5) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_7) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_5) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_7) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_5) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_7) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_5) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_7) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_5) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_7) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_5) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_7) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (true ? ((_e126 * q_5) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (true ? ((_e126 * q_7) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
         float _e137 = aliasing;
-        aliasing = (true ? ((_e137 * q_5) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
+        aliasing = (true ? ((_e137 * q_7) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
         float _e144 = aliasing;
         float _e148 = aliasing;
-        aliasing = (true ? ((_e148 * q_5) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
+        aliasing = (true ? ((_e148 * q_7) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
         float _e155 = aliasing;
         float _e159 = aliasing;
-        aliasing = (true ? ((_e159 * q_5) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
+        aliasing = (true ? ((_e159 * q_7) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
         float _e166 = aliasing;
         float _e170 = aliasing;
-        aliasing = (false ? ((_e170 * q_5) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
+        aliasing = (false ? ((_e170 * q_7) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
         float _e177 = aliasing;
-        return min(((_e177 + (q_5 * truncation)) / m_1[0]), 1.0);
+        return min(((_e177 + (q_7 * truncation)) / m_1[0]), 1.0);
     }
     float _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -2068,8 +2079,8 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_) {
 
 float airlight_bernstein_rho(float re, float im) {
     float im2_ = (im * im);
-    float a_32 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_32 + sqrt(max(((a_32 * a_32) - 1.0), 0.0)));
+    float a_34 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_34 + sqrt(max(((a_34 * a_34) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs) {
@@ -2083,8 +2094,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_30 = (half_5.big_h * _e13);
-    return ((x_30 > 0.0) ? exp(-(x_30)) : 1.0);
+    float x_33 = (half_5.big_h * _e13);
+    return ((x_33 > 0.0) ? exp(-(x_33)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2147,8 +2158,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             float _e40 = r_2;
             uint _e41 = i_6;
             float _e42 = airlight_node(_e8, _e41);
-            float v_6 = (_e39 + (_e40 * _e42));
-            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_6);
+            float v_8 = (_e39 + (_e40 * _e42));
+            vec2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_8);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_6;
@@ -2719,13 +2730,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_31 = (abs(alpha) + abs(beta));
+    float x_34 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_31) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_34) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2735,7 +2746,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_31) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_34) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2745,7 +2756,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_31) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_34) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2755,7 +2766,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_31) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_34) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2765,7 +2776,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_31) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_34) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2775,7 +2786,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_31) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_34) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2785,7 +2796,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_31) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_34) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2795,7 +2806,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_31) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_34) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2805,7 +2816,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_31) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_34) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2815,7 +2826,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_31) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_34) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2825,7 +2836,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_31) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_34) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2835,7 +2846,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_31) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_34) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -3083,13 +3094,13 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                         continue;
                     }
                     float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
+                    float mid_1 = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
                     a_10 = wa;
-                    b_9 = mid;
+                    b_9 = mid_1;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -3175,8 +3186,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span) {
     float inv_h = (1.0 / big_h_1);
     float w_5 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_5 * w_5)) / (1.0 + (v_s * v_s)));
-    float e_6 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_6 * inv_h);
+    float e_9 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_9 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_10, float j_1) {
@@ -3301,9 +3312,9 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             break;
         }
         case 3u: {
-            float a_33 = abs(p0_4);
+            float a_35 = abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, ((a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, ((a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3374,15 +3385,15 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             bool below_1 = (lower <= 1.5707964);
             float _e248 = psi1_1;
             vec2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
-            float cs_1 = _e254.y;
+            float cs_2 = _e254.y;
             float sn = (below_1 ? -(_e254.x) : _e254.x);
             float near_pole = (1.0 + _e254.x);
-            float far_pole = ((cs_1 * cs_1) / near_pole);
+            float far_pole = ((cs_2 * cs_2) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_9 = (below_1 ? (cs_1 / near_pole) : (near_pole / cs_1));
-            float weight_3 = ((cs_1 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
-            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
+            float y_9 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
+            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
             float gw = (weight_3 * f_2);
@@ -3454,23 +3465,23 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
-    float a_34 = (a0_ / scale_2);
-    float b_16 = (b0_ / scale_2);
+    float a_36 = (a0_ / scale_2);
+    float b_17 = (b0_ / scale_2);
     float c_10 = (c0_ / scale_2);
-    float disc_1 = ((b_16 * b_16) - ((4.0 * a_34) * c_10));
+    float disc_1 = ((b_17 * b_17) - ((4.0 * a_36) * c_10));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
-    if ((b_16 < 0.0)) {
+    if ((b_17 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_6 = (-0.5 * (b_16 + (_e47 * sqrt(disc_1))));
-    if ((q_6 != 0.0)) {
-        r1_ = (c_10 / q_6);
+    float q_8 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
+    if ((q_8 != 0.0)) {
+        r1_ = (c_10 / q_8);
     }
-    if ((a_34 != 0.0)) {
-        r2_2 = (q_6 / a_34);
+    if ((a_36 != 0.0)) {
+        r2_2 = (q_8 / a_36);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3514,15 +3525,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_35 = (sigma_11 * g_15.d_el);
+    float a_37 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_35 * a_35) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_35) / d_3);
-    if ((a_35 > 0.0)) {
-        y1_1 = (d_3 / (a_35 + root_1));
+    float root_1 = sqrt(((a_37 * a_37) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_37) / d_3);
+    if ((a_37 > 0.0)) {
+        y1_1 = (d_3 / (a_37 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -3957,15 +3968,15 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19) {
     } else {
         local_47 = false;
     }
-    bool inside = local_47;
+    bool inside_1 = local_47;
     if ((x_h < t0_)) {
         gap_2 = (t0_ - x_h);
     } else {
-        if (!(inside)) {
+        if (!(inside_1)) {
             gap_2 = (x_h - t1_);
         }
     }
-    if (!(inside)) {
+    if (!(inside_1)) {
         float _e48 = gap_2;
         local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
@@ -4278,8 +4289,8 @@ bool airlight_normalisable(vec3 v_2) {
 
 vec3 airlight_normalize(vec3 v_3) {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    vec3 u_5 = (v_3 / vec3(m_8));
-    return (u_5 / vec3(length(u_5)));
+    vec3 u_7 = (v_3 / vec3(m_8));
+    return (u_7 / vec3(length(u_7)));
 }
 
 bool airlight_valid(AirlightScene s_18) {
@@ -4789,9 +4800,9 @@ vec2 airlight_two_sum(float a_13, float b_10, uint key_1) {
     float _e4 = airlight_opaque((a_13 + b_10), key_1);
     float _e6 = airlight_opaque((_e4 - a_13), key_1);
     float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_7 = ((a_13 - _e8) + (b_10 - _e6));
-    bool _e12 = airlight_is_finite(e_7);
-    return vec2(_e4, (_e12 ? e_7 : 0.0));
+    float e_10 = ((a_13 - _e8) + (b_10 - _e6));
+    bool _e12 = airlight_is_finite(e_10);
+    return vec2(_e4, (_e12 ? e_10 : 0.0));
 }
 
 float airlight_split_high(float x_14) {
@@ -4804,9 +4815,9 @@ vec2 airlight_two_product(float a_14, float b_11, uint key_2) {
     float al = (a_14 - _e5);
     float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_8 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    bool _e17 = airlight_is_finite(e_8);
-    return vec2(_e4, (_e17 ? e_8 : 0.0));
+    float e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    bool _e17 = airlight_is_finite(e_11);
+    return vec2(_e4, (_e17 ? e_11 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3) {
@@ -5326,9 +5337,9 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             }
             AirlightPanelList _e30 = list_1;
             vec4 _e32 = airlight_list_get(_e30, _e9.worst);
-            float mid_1 = (0.5 * (_e32.x + _e32.y));
-            if ((mid_1 > _e32.x)) {
-                local_130 = (mid_1 < _e32.y);
+            float mid_2 = (0.5 * (_e32.x + _e32.y));
+            if ((mid_2 > _e32.x)) {
+                local_130 = (mid_2 < _e32.y);
             } else {
                 local_130 = false;
             }
@@ -5337,7 +5348,7 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
                 airlight_list_set(list_1, _e9.worst, vec4(_e32.xyz, 0.0));
                 continue;
             }
-            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+            return AirlightSplit(true, _e32.x, mid_2, _e32.y, _e9.worst);
         }
     }
     return AirlightSplit(false, 0.0, 0.0, 0.0, 0u);
@@ -5396,10 +5407,10 @@ AirlightAdaptive airlight_adaptive_step(AirlightAdaptive state, float kronrod, f
 
 float airlight_asinh(float x_15) {
     float r_4 = 0.0;
-    float a_36 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_36));
-    if ((a_36 <= 4096.0)) {
-        float _e17 = airlight_log1p((a_36 + ((a_36 * a_36) / (1.0 + sqrt((1.0 + (a_36 * a_36)))))));
+    float a_38 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_38));
+    if ((a_38 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_38 + ((a_38 * a_38) / (1.0 + sqrt((1.0 + (a_38 * a_38)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5417,15 +5428,15 @@ float airlight_to_w(AirlightOuter g_21, float s_21) {
 
 vec2 airlight_cos_sin_half_turn(float x_16) {
     float r_12 = (x_16 - 1.5707964);
-    float z_13 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_13 / 2.0) * (1.0 - ((z_13 / 12.0) * (1.0 - ((z_13 / 30.0) * (1.0 - ((z_13 / 56.0) * (1.0 - ((z_13 / 90.0) * (1.0 - ((z_13 / 132.0) * (1.0 - (z_13 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_13 / 6.0) * (1.0 - ((z_13 / 20.0) * (1.0 - ((z_13 / 42.0) * (1.0 - ((z_13 / 72.0) * (1.0 - ((z_13 / 110.0) * (1.0 - ((z_13 / 156.0) * (1.0 - (z_13 / 210.0)))))))))))))));
+    float z_17 = (r_12 * r_12);
+    float cos_r = (1.0 - ((z_17 / 2.0) * (1.0 - ((z_17 / 12.0) * (1.0 - ((z_17 / 30.0) * (1.0 - ((z_17 / 56.0) * (1.0 - ((z_17 / 90.0) * (1.0 - ((z_17 / 132.0) * (1.0 - (z_17 / 182.0))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_17 / 6.0) * (1.0 - ((z_17 / 20.0) * (1.0 - ((z_17 / 42.0) * (1.0 - ((z_17 / 72.0) * (1.0 - ((z_17 / 110.0) * (1.0 - ((z_17 / 156.0) * (1.0 - (z_17 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
 float airlight_acos(float x_17) {
-    float a_37 = abs(x_17);
-    float _e8 = airlight_atan(sqrt(((1.0 - a_37) / (1.0 + a_37))));
+    float a_39 = abs(x_17);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_39) / (1.0 + a_39))));
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -5435,12 +5446,12 @@ float airlight_angle(float c_6, float s_22) {
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
-    float a_38 = (cos_a * cos_g);
-    float b_17 = (sin_a * sin_g);
-    if ((b_17 <= abs(a_38))) {
-        return ((a_38 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_40 = (cos_a * cos_g);
+    float b_18 = (sin_a * sin_g);
+    if ((b_18 <= abs(a_40))) {
+        return ((a_40 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    float _e18 = airlight_acos(clamp((-(a_38) / b_17), -1.0, 1.0));
+    float _e18 = airlight_acos(clamp((-(a_40) / b_18), -1.0, 1.0));
     return _e18;
 }
 
@@ -5522,22 +5533,22 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
         vec3 _e105 = airlight_normalize(s_24.brdf_view);
         vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         vec3 _e112 = u_1;
-        float x_32 = dot(_e111, _e112);
+        float x_35 = dot(_e111, _e112);
         vec3 _e114 = u_1;
         float y_10 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_32 * x_32) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_35 * x_35) + (y_10 * y_10)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_32, abs(y_10));
+            float _e140 = airlight_angle(x_35, abs(y_10));
             float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_32 / _e145), (-(y_10) / _e149));
+            g_22.delta = vec3(-(phi_r), (x_35 / _e145), (-(y_10) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5691,33 +5702,33 @@ AirlightOuter airlight_surface(AirlightScene s_24) {
             }
             {
                 uint _e339 = i_22;
-                float e_9 = g_22.gamma[_e339];
-                if (!((e_9 == kinks[0]))) {
-                    local_134 = (e_9 == kinks[1]);
+                float e_12 = g_22.gamma[_e339];
+                if (!((e_12 == kinks[0]))) {
+                    local_134 = (e_12 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
                 bool _e350 = local_134;
                 if (!(_e350)) {
-                    local_135 = (e_9 == kinks[2]);
+                    local_135 = (e_12 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
                 bool _e357 = local_135;
                 if (!(_e357)) {
-                    local_136 = (e_9 == kinks[3]);
+                    local_136 = (e_12 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
                 bool _e364 = local_136;
                 if (!(_e364)) {
-                    local_137 = (e_9 == kinks[4]);
+                    local_137 = (e_12 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
                 bool _e371 = local_137;
                 if (!(_e371)) {
-                    local_138 = (e_9 == kinks[5]);
+                    local_138 = (e_12 == kinks[5]);
                 } else {
                     local_138 = true;
                 }
@@ -5849,14 +5860,14 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     vec2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_7 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_9 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_7.k) ? (_e48 / q_7.k) : 1.0);
+    float s2_1 = ((_e51 < q_9.k) ? (_e48 / q_9.k) : 1.0);
     float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -5891,7 +5902,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_7, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_9, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -5954,11 +5965,11 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
         AirlightOuter _e37 = g_24;
         return _e37;
     }
-    vec3 e_10 = (ab_1 / vec3(_e15));
+    vec3 e_13 = (ab_1 / vec3(_e15));
     vec3 _e41 = airlight_normalize(s_25.dir);
     vec3 w0_ = (s_25.light_position - s_25.origin);
-    float cos_a_2 = dot(e_10, _e41);
-    float along_e = dot(e_10, w0_);
+    float cos_a_2 = dot(e_13, _e41);
+    float along_e = dot(e_13, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_5 = ((s_25.flags & 1u) != 0u);
@@ -5969,7 +5980,7 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_10 * _e70)));
+    float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
         local_144 = (sin_a_1 > 0.0);
@@ -6063,7 +6074,7 @@ AirlightOuter airlight_outer(AirlightScene s_25) {
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_10;
+    g_24.e = e_13;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6178,16 +6189,16 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_33 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_20 - float(i_33));
-        float a_39 = g_25.gamma[i_33];
-        float b_18 = g_25.gamma[(i_33 + 1u)];
-        float w_9 = (b_18 - a_39);
-        float u_6 = (1.0 - t_8);
-        bool smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_39 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
-        jacobian = (((w_9 * 6.0) * t_8) * u_6);
+        uint i_36 = min(uint(max(floor(x_20), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_20 - float(i_36));
+        float a_41 = g_25.gamma[i_36];
+        float b_19 = g_25.gamma[(i_36 + 1u)];
+        float w_9 = (b_19 - a_41);
+        float u_8 = (1.0 - t_8);
+        bool smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_41 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
+        jacobian = (((w_9 * 6.0) * t_8) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
             local_160 = !(smooth_a);
@@ -6195,7 +6206,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_160 = false;
         }
         bool _e66 = local_160;
-        gamma_1 = (_e66 ? (a_39 + ((w_9 * t_8) * t_8)) : _e58);
+        gamma_1 = (_e66 ? (a_41 + ((w_9 * t_8) * t_8)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_161 = !(smooth_a);
@@ -6211,7 +6222,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_162 = false;
         }
         bool _e85 = local_162;
-        gamma_1 = (_e85 ? (b_18 - ((w_9 * u_6) * u_6)) : _e77);
+        gamma_1 = (_e85 ? (b_19 - ((w_9 * u_8) * u_8)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_163 = !(smooth_b);
@@ -6219,7 +6230,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e94 = local_163;
-        jacobian = (_e94 ? (w_9 * (u_6 + u_6)) : _e87);
+        jacobian = (_e94 ? (w_9 * (u_8 + u_8)) : _e87);
         float _e96 = gamma_1;
         if (smooth_a) {
             local_164 = smooth_b;
@@ -6227,7 +6238,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e102 = local_164;
-        gamma_1 = (_e102 ? (a_39 + (w_9 * t_8)) : _e96);
+        gamma_1 = (_e102 ? (a_41 + (w_9 * t_8)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_165 = smooth_b;
@@ -6458,8 +6469,8 @@ vec4 airlight_phase_lobes(AirlightScene s_29) {
             break;
         }
         case 3u: {
-            float a_40 = abs(p0_5);
-            vec2 _e21 = airlight_lobe(p0_5, ((a_40 > 0.0) ? ((1.0 - a_40) / a_40) : AIRLIGHT_FLT_MAX));
+            float a_42 = abs(p0_5);
+            vec2 _e21 = airlight_lobe(p0_5, ((a_42 > 0.0) ? ((1.0 - a_42) / a_42) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -6507,9 +6518,9 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3) {
     if (infinite_3) {
         return 1.5707964;
     }
-    float u_7 = (t_3 - a_17.x_h);
-    float _e13 = airlight_atan2_upper(abs(u_7), a_17.h_eff);
-    return (((u_7 >= 0.0) ? 1.0 : -1.0) * _e13);
+    float u_9 = (t_3 - a_17.x_h);
+    float _e13 = airlight_atan2_upper(abs(u_9), a_17.h_eff);
+    return (((u_9 >= 0.0) ? 1.0 : -1.0) * _e13);
 }
 
 AirlightArea airlight_area(AirlightScene s_30) {
@@ -6585,7 +6596,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
         AirlightArea _e89 = a_18;
         return _e89;
     }
-    vec3 o = s_30.origin;
+    vec3 o_5 = s_30.origin;
     vec3 _e92 = airlight_normalize(s_30.dir);
     a_18.d = _e92;
     bool infinite_6 = ((s_30.flags & 1u) != 0u);
@@ -6594,17 +6605,17 @@ AirlightArea airlight_area(AirlightScene s_30) {
     size = s_30.light_param_a;
     if ((s_30.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         vec3 _e114 = a_18.c;
-        vec3 oc = (o - _e114);
-        float b_19 = dot(oc, _e92);
+        vec3 oc = (o_5 - _e114);
+        float b_20 = dot(oc, _e92);
         float _e119 = a_18.radius;
         float _e121 = a_18.radius;
-        float k_9 = (dot(oc, oc) - (_e119 * _e121));
-        float disc_2 = ((b_19 * b_19) - k_9);
+        float k_10 = (dot(oc, oc) - (_e119 * _e121));
+        float disc_2 = ((b_20 * b_20) - k_10);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_8 = (-(b_19) - (((floatBitsToUint(b_19) & 2147483648u) != 0u) ? -(root_2) : root_2));
-            cut0_ = q_8;
-            cut1_ = (k_9 / q_8);
+            float q_10 = (-(b_20) - (((floatBitsToUint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_10;
+            cut1_ = (k_10 / q_10);
             cut_count = 2u;
         }
     } else {
@@ -6645,7 +6656,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
         vec3 _e203 = a_18.c;
         vec3 _e206 = a_18.n;
         vec3 _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o), _e206) / dot(_e92, _e209));
+        cut0_ = (dot((_e203 - o_5), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
     float _e213 = size;
@@ -6655,7 +6666,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
         return _e219;
     }
     vec3 _e220 = centre;
-    vec3 to_centre = (_e220 - o);
+    vec3 to_centre = (_e220 - o_5);
     a_18.x_h = dot(to_centre, _e92);
     float _e225 = a_18.x_h;
     float _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
@@ -6666,7 +6677,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
     end_infinite = infinite_6;
     if ((s_30.sigma_t > 0.0)) {
         vec3 _e242 = centre;
-        float _e246 = airlight_safe_length((_e242 - (o + (t0_2 * _e92))));
+        float _e246 = airlight_safe_length((_e242 - (o_5 + (t0_2 * _e92))));
         float _e248 = size;
         float reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385 / s_30.sigma_t));
         if (!(infinite_6)) {
@@ -6758,11 +6769,11 @@ float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove ab
     float r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
     float dr = (above_1.rho0_ / (_e5.x * _e5.x));
     vec2 p_3 = (above_1.off + (r_13 * e_3));
-    float z_14 = above_1.z;
-    float dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+    float z_18 = above_1.z;
+    float dist = sqrt((((z_18 * z_18) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
     float inv_5 = (1.0 / dist);
-    float cos_ = (z_14 * inv_5);
-    float _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_14 * a_19.dirs.z)) * inv_5));
+    float cos_ = (z_18 * inv_5);
+    float _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_18 * a_19.dirs.z)) * inv_5));
     float _e48 = airlight_emitted(s_31, cos_);
     return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0.0))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -6824,364 +6835,724 @@ float airlight_flat_radial(AirlightScene s_32, AirlightArea a_20, AirlightAbove 
     return _e158;
 }
 
-float airlight_disc(AirlightScene s_33, AirlightArea a_21, vec3 x_21) {
-    vec2 u_4 = vec2(0.0);
-    AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
-    float sum_8 = 0.0;
+vec2 airlight_outline_nearest(AirlightOutline o, vec2 q_4) {
+    float best = AIRLIGHT_FLT_MAX;
+    vec2 nearest = vec2(0.0);
+    bool inside = true;
     uint i_28 = 0u;
-    vec2 e_5 = vec2(0.0);
-    float r_max_1 = 0.0;
-    vec3 rel = (x_21 - a_21.c);
-    float z_15 = dot(rel, a_21.n);
-    if (!((z_15 > 0.0))) {
-        return 0.0;
+    bool local_179 = false;
+    if ((o.radius > 0.0)) {
+        vec2 qc = (q_4 - o.corners[0]);
+        float dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
+        if ((dq <= o.radius)) {
+            return q_4;
+        }
+        return (o.corners[0] + ((qc * o.radius) / vec2(dq)));
     }
-    float fx = dot(rel, a_21.a1_);
-    float fy_1 = dot(rel, a_21.a2_);
-    float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    float radius_2 = a_21.radius;
-    bool inside_1 = (rf <= radius_2);
-    AirlightAbove _e26 = airlight_above(z_15, vec2(0.0));
-    above_3 = _e26;
-    if (!(inside_1)) {
-        u_4 = vec2((-(fx) / rf), (-(fy_1) / rf));
-        vec2 _e35 = u_4;
-        AirlightAbove _e37 = airlight_above(z_15, ((rf - radius_2) * _e35));
-        above_3 = _e37;
-    }
-    float k_10 = ((rf - radius_2) * (rf + radius_2));
+    nearest = q_4;
     bool loop_init_32 = true;
     while(true) {
         if (!loop_init_32) {
-            uint _e99 = i_28;
-            i_28 = (_e99 + 1u);
+            uint _e106 = i_28;
+            i_28 = (_e106 + 1u);
         }
         loop_init_32 = false;
-        uint _e45 = i_28;
-        if ((_e45 < 32u)) {
+        uint _e32 = i_28;
+        if ((_e32 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e48 = i_28;
-            vec3 _e49 = airlight_azimuths(inside_1, _e48);
-            float _e52 = u_4.x;
-            float _e56 = u_4.y;
-            float _e61 = u_4.y;
-            float _e65 = u_4.x;
-            e_5 = vec2(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
-            r_max_1 = ((radius_2 + radius_2) * _e49.x);
-            if (inside_1) {
-                e_5 = _e49.xy;
-                float b_20 = ((fx * _e49.x) + (fy_1 * _e49.y));
-                float root_3 = sqrt(((b_20 * b_20) - k_10));
-                r_max_1 = ((b_20 > 0.0) ? (-(k_10) / (b_20 + root_3)) : (root_3 - b_20));
+            uint _e36 = i_28;
+            vec2 a_43 = o.corners[_e36];
+            uint _e39 = i_28;
+            vec2 e_14 = (o.corners[((_e39 + 1u) % 4u)] - a_43);
+            bool _e46 = inside;
+            if (_e46) {
+                local_179 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
+            } else {
+                local_179 = false;
             }
-            float _e90 = sum_8;
-            AirlightAbove _e92 = above_3;
-            vec2 _e93 = e_5;
-            float _e94 = r_max_1;
-            float _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
-            sum_8 = (_e90 + (_e49.z * _e95));
+            bool _e63 = local_179;
+            inside = _e63;
+            float t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
+            vec2 p_4 = (a_43 + (t_10 * e_14));
+            float dd = (((p_4.x - q_4.x) * (p_4.x - q_4.x)) + ((p_4.y - q_4.y) * (p_4.y - q_4.y)));
+            float _e103 = best;
+            if ((dd < _e103)) {
+                best = dd;
+                nearest = p_4;
+            }
         }
     }
-    float _e101 = sum_8;
-    return _e101;
+    vec2 _e108 = nearest;
+    bool _e109 = inside;
+    return (_e109 ? q_4 : _e108);
 }
 
-float airlight_parallelogram(AirlightScene s_34, AirlightArea a_22, vec3 x_22) {
-    vec2 q_4 = vec2(0.0);
-    bool local_179 = false;
+AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_10, AirlightOutline o_1, vec2 centre_1, float size_1) {
+    uint j_5 = 0u;
     bool local_180 = false;
     bool local_181 = false;
-    float best = AIRLIGHT_FLT_MAX;
-    uint i_29 = 0u;
-    float sum_9 = 0.0;
-    uint i_30 = 0u;
-    uint j_5 = 0u;
-    vec3 rel_1 = (x_22 - a_22.c);
-    float z_16 = dot(rel_1, a_22.n);
-    if (!((z_16 > 0.0))) {
-        return 0.0;
-    }
-    vec2 foot = vec2(dot(rel_1, a_22.a1_), dot(rel_1, a_22.a2_));
-    vec2 u2_ = vec2(dot(a_22.eu, a_22.a1_), dot(a_22.eu, a_22.a2_));
-    vec2 v2_ = vec2(dot(a_22.ev, a_22.a1_), dot(a_22.ev, a_22.a2_));
-    vec2 corners[5] = vec2[5](vec2(0.0), u2_, (u2_ + v2_), v2_, vec2(0.0));
-    float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
-    float fu = (((foot.x * v2_.y) - (foot.y * v2_.x)) / det);
-    float fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
-    q_4 = foot;
-    if ((fu >= 0.0)) {
-        local_179 = (fu <= 1.0);
-    } else {
-        local_179 = false;
-    }
-    bool _e67 = local_179;
-    if (_e67) {
-        local_180 = (fv >= 0.0);
-    } else {
-        local_180 = false;
-    }
-    bool _e73 = local_180;
-    if (_e73) {
-        local_181 = (fv <= 1.0);
-    } else {
-        local_181 = false;
-    }
-    bool _e79 = local_181;
-    if (!(_e79)) {
-        bool loop_init_33 = true;
-        while(true) {
-            if (!loop_init_33) {
-                uint _e137 = i_29;
-                i_29 = (_e137 + 1u);
-            }
-            loop_init_33 = false;
-            uint _e85 = i_29;
-            if ((_e85 < 4u)) {
-            } else {
-                break;
-            }
-            {
-                uint _e88 = i_29;
-                vec2 c0_1 = corners[_e88];
-                uint _e90 = i_29;
-                vec2 e_11 = (corners[(_e90 + 1u)] - c0_1);
-                float t_10 = clamp(((((foot.x - c0_1.x) * e_11.x) + ((foot.y - c0_1.y) * e_11.y)) / ((e_11.x * e_11.x) + (e_11.y * e_11.y))), 0.0, 1.0);
-                vec2 p_4 = (c0_1 + (t_10 * e_11));
-                float dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
-                float _e134 = best;
-                if ((dd < _e134)) {
-                    best = dd;
-                    q_4 = p_4;
-                }
-            }
-        }
-    }
-    vec2 _e139 = q_4;
-    AirlightAbove _e141 = airlight_above(z_16, (_e139 - foot));
-    float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    bool loop_init_34 = true;
+    bool local_182 = false;
+    float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_10 * z_10)))));
+    bool loop_init_33 = true;
     while(true) {
-        if (!loop_init_34) {
-            uint _e254 = i_30;
-            i_30 = (_e254 + 1u);
+        if (!loop_init_33) {
+            uint _e74 = j_5;
+            j_5 = (_e74 + 1u);
         }
-        loop_init_34 = false;
-        uint _e149 = i_30;
-        if ((_e149 < 4u)) {
+        loop_init_33 = false;
+        uint _e13 = j_5;
+        if ((_e13 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e152 = i_30;
-            vec2 _e154 = q_4;
-            vec2 ca = (corners[_e152] - _e154);
-            uint _e156 = i_30;
-            vec2 _e160 = q_4;
-            vec2 cb = (corners[(_e156 + 1u)] - _e160);
-            float area = ((ca.x * cb.y) - (ca.y * cb.x));
-            if (!((area > thin))) {
-                continue;
+            uint _e20 = j_5;
+            vec2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
+            vec3 p_5 = (lobe_4.x * a_21.dirs);
+            if ((lobe_4.y > 0.0)) {
+                local_180 = (p_5.z < 0.0);
+            } else {
+                local_180 = false;
             }
-            vec2 e_12 = (cb - ca);
-            float el = sqrt(((e_12.x * e_12.x) + (e_12.y * e_12.y)));
-            float h_9 = (area / el);
-            vec2 m_11 = vec2((e_12.y / el), (-(e_12.x) / el));
-            float _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
-            vec2 start_3 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
-            j_5 = 0u;
-            bool loop_init_35 = true;
-            while(true) {
-                if (!loop_init_35) {
-                    uint _e251 = j_5;
-                    j_5 = (_e251 + 1u);
+            bool _e36 = local_180;
+            if (_e36) {
+                local_181 = (lobe_4.y < (_e10 + _e10));
+            } else {
+                local_181 = false;
+            }
+            bool _e43 = local_181;
+            if (_e43) {
+                float l_4 = (z_10 / -(p_5.z));
+                vec2 q_11 = (l_4 * p_5.xy);
+                vec2 _e49 = airlight_outline_nearest(o_1, q_11);
+                vec3 to_near = vec3(_e49, -(z_10));
+                float cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                if (!(all(equal(_e49, q_11)))) {
+                    float _e63 = airlight_acos(cos_1);
+                    local_182 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                } else {
+                    local_182 = true;
                 }
-                loop_init_35 = false;
-                uint _e207 = j_5;
-                if ((_e207 < 12u)) {
+                bool _e69 = local_182;
+                if (_e69) {
+                    return AirlightFlatLobe(p_5, lobe_4.x, lobe_4.y, l_4, q_11);
+                }
+            }
+        }
+    }
+    return AirlightFlatLobe(vec3(0.0), 1.0, 0.0, 0.0, vec2(0.0));
+}
+
+vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_5, vec2 e_5) {
+    vec2 m_11 = vec2((b_13.y - a_22.y), (a_22.x - b_13.x));
+    float num = (((q_5.x - a_22.x) * m_11.x) + ((q_5.y - a_22.y) * m_11.y));
+    float den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
+    if ((den > 0.0)) {
+        return vec2(chord.x, min(chord.y, (-(num) / den)));
+    }
+    if ((den < 0.0)) {
+        return vec2(max(chord.x, (-(num) / den)), chord.y);
+    }
+    if ((num > 0.0)) {
+        return vec2(1.0, 0.0);
+    }
+    return chord;
+}
+
+vec2 airlight_outline_chord(AirlightOutline o_2, vec2 q_6, vec2 e_6) {
+    vec2 chord_1 = vec2(0.0, 3.4028235e38);
+    if ((o_2.radius > 0.0)) {
+        vec2 qc_1 = (q_6 - o_2.corners[0]);
+        float a_44 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        float b_21 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
+        float k_11 = ((dq_1 - o_2.radius) * (dq_1 + o_2.radius));
+        float disc_3 = ((b_21 * b_21) - (a_44 * k_11));
+        if (!((disc_3 > 0.0))) {
+            return vec2(0.0);
+        }
+        float root_3 = sqrt(disc_3);
+        float t_11 = (-(b_21) - (((floatBitsToUint(b_21) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_11 / a_44);
+        float r2_3 = (k_11 / t_11);
+        float hi_8 = max(r1_2, r2_3);
+        if (!((hi_8 > 0.0))) {
+            return vec2(0.0);
+        }
+        return vec2(max(min(r1_2, r2_3), 0.0), hi_8);
+    }
+    vec2 _e70 = chord_1;
+    vec2 _e75 = airlight_clip(_e70, o_2.corners[0], o_2.corners[1], q_6, e_6);
+    chord_1 = _e75;
+    vec2 _e76 = chord_1;
+    vec2 _e81 = airlight_clip(_e76, o_2.corners[1], o_2.corners[2], q_6, e_6);
+    chord_1 = _e81;
+    vec2 _e82 = chord_1;
+    vec2 _e87 = airlight_clip(_e82, o_2.corners[2], o_2.corners[3], q_6, e_6);
+    chord_1 = _e87;
+    vec2 _e88 = chord_1;
+    vec2 _e93 = airlight_clip(_e88, o_2.corners[3], o_2.corners[0], q_6, e_6);
+    return _e93;
+}
+
+float airlight_flat_lobe_node(AirlightScene s_33, float z_11, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded, float g_27) {
+    vec2 _e7 = airlight_cos_sin_half_turn(g_27);
+    vec2 _e13 = airlight_cos_sin_half_turn((start_1 + ((graded * _e7.y) / _e7.x)));
+    float c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
+    if (!((c_17 > 0.0))) {
+        return 0.0;
+    }
+    float _e26 = airlight_emitted(s_33, c_17);
+    float _e38 = airlight_area_phase(s_33, (lobe_1.sign_ * _e13.x));
+    return (((((_e26 * exp(min(((-(s_33.sigma_t) * z_11) / c_17), 0.0))) * _e38) * _e13.y) * graded) / (_e7.x * _e7.x));
+}
+
+float airlight_flat_lobe_along(AirlightScene s_34, float z_12, AirlightOutline o_3, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
+    float sum_8 = 0.0;
+    vec3 w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
+    float k_12 = (w_10.z / -(lobe_2.p.z));
+    vec2 _e23 = airlight_outline_chord(o_3, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
+    if (!((_e23.x < _e23.y))) {
+        return 0.0;
+    }
+    float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
+    float _e40 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
+    float graded_4 = max(lobe_2.scale, _e34);
+    float _e45 = airlight_atan(((_e40 - _e34) / graded_4));
+    float c_18 = (0.5 * _e45);
+    float hw_3 = (0.5 * _e45);
+    float _e52 = sum_8;
+    float _e58 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.09501251 * hw_3)));
+    sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
+    float _e61 = sum_8;
+    float _e67 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.09501251 * hw_3)));
+    sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
+    float _e70 = sum_8;
+    float _e76 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.28160354 * hw_3)));
+    sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
+    float _e79 = sum_8;
+    float _e85 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.28160354 * hw_3)));
+    sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
+    float _e88 = sum_8;
+    float _e94 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.45801678 * hw_3)));
+    sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
+    float _e97 = sum_8;
+    float _e103 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.45801678 * hw_3)));
+    sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
+    float _e106 = sum_8;
+    float _e112 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.61787623 * hw_3)));
+    sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
+    float _e115 = sum_8;
+    float _e121 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.61787623 * hw_3)));
+    sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
+    float _e124 = sum_8;
+    float _e130 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.7554044 * hw_3)));
+    sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
+    float _e133 = sum_8;
+    float _e139 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.7554044 * hw_3)));
+    sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
+    float _e142 = sum_8;
+    float _e148 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.8656312 * hw_3)));
+    sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
+    float _e151 = sum_8;
+    float _e157 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.8656312 * hw_3)));
+    sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
+    float _e160 = sum_8;
+    float _e166 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.944575 * hw_3)));
+    sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
+    float _e169 = sum_8;
+    float _e175 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.944575 * hw_3)));
+    sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
+    float _e178 = sum_8;
+    float _e184 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.9894009 * hw_3)));
+    sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
+    float _e187 = sum_8;
+    float _e193 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.9894009 * hw_3)));
+    sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
+    float _e196 = sum_8;
+    return _e196;
+}
+
+float airlight_lobe_azimuth(vec3 u_5, vec3 v_7, vec2 e_7) {
+    float y_11 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    float _e23 = airlight_atan2_upper(abs(y_11), ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    return (((y_11 < 0.0) ? -1.0 : 1.0) * _e23);
+}
+
+float airlight_wrap_turn(float x_21) {
+    return (x_21 - (6.2831855 * roundEven((x_21 / 6.2831855))));
+}
+
+vec2 airlight_cos_sin_turns(float x_22) {
+    float _e1 = airlight_wrap_turn(x_22);
+    vec2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
+    return vec2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
+}
+
+vec4 airlight_sort4_(vec4 x_23) {
+    vec4 a_45 = vec4(min(x_23.x, x_23.y), max(x_23.x, x_23.y), min(x_23.z, x_23.w), max(x_23.z, x_23.w));
+    vec4 b_22 = vec4(min(a_45.x, a_45.z), min(a_45.y, a_45.w), max(a_45.x, a_45.z), max(a_45.y, a_45.w));
+    return vec4(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
+}
+
+float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_3) {
+    float sum_9 = 0.0;
+    uint i_29 = 0u;
+    uint i_30 = 0u;
+    float mid = 0.0;
+    uint i_31 = 0u;
+    uint j_6 = 0u;
+    vec3 _e5 = airlight_basis_e1_(lobe_3.p);
+    vec3 v_9 = cross(lobe_3.p, _e5);
+    vec2 q_12 = lobe_3.q;
+    if ((o_4.radius > 0.0)) {
+        vec2 d_5 = (o_4.corners[0] - q_12);
+        float dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
+        if ((dq_2 <= o_4.radius)) {
+            bool loop_init_34 = true;
+            while(true) {
+                if (!loop_init_34) {
+                    uint _e42 = i_29;
+                    i_29 = (_e42 + 1u);
+                }
+                loop_init_34 = false;
+                uint _e29 = i_29;
+                if ((_e29 < 32u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e210 = j_5;
-                    vec2 _e211 = airlight_triangle_rule(_e210);
-                    vec2 _e218 = airlight_cos_sin_half_turn(((0.5 * _e194) * (1.0 + _e211.x)));
-                    vec2 dir_3 = vec2(((_e218.x * start_3.x) - (_e218.y * start_3.y)), ((_e218.y * start_3.x) + (_e218.x * start_3.y)));
-                    float _e234 = sum_9;
-                    float _e247 = airlight_flat_radial(s_34, a_22, _e141, dir_3, (h_9 / ((dir_3.x * m_11.x) + (dir_3.y * m_11.y))));
-                    sum_9 = (_e234 + (((_e211.y * 0.5) * _e194) * _e247));
+                    uint _e33 = i_29;
+                    vec3 _e34 = airlight_azimuths(true, _e33);
+                    float _e35 = sum_9;
+                    float _e38 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e34.xy);
+                    sum_9 = (_e35 + (_e34.z * _e38));
+                }
+            }
+            float _e44 = sum_9;
+            return _e44;
+        }
+        float sb_1 = (o_4.radius / dq_2);
+        float cb = (sqrt(((dq_2 - o_4.radius) * (dq_2 + o_4.radius))) / dq_2);
+        float _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        float _e66 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        float _e68 = airlight_wrap_turn((_e66 - _e54));
+        float _e80 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        float _e82 = airlight_wrap_turn((_e80 - _e54));
+        float centre_2 = (_e54 + ((_e68 + _e82) * 0.5));
+        float half_19 = (abs((_e68 - _e82)) * 0.5);
+        bool loop_init_35 = true;
+        while(true) {
+            if (!loop_init_35) {
+                uint _e112 = i_30;
+                i_30 = (_e112 + 1u);
+            }
+            loop_init_35 = false;
+            uint _e93 = i_30;
+            if ((_e93 < 32u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e97 = i_30;
+                vec3 _e98 = airlight_azimuths(false, _e97);
+                float _e99 = sum_9;
+                vec2 _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
+                float _e108 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e107);
+                sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
+            }
+        }
+        float _e114 = sum_9;
+        return _e114;
+    }
+    vec2 _e115 = airlight_outline_nearest(o_4, q_12);
+    bool inside_2 = all(equal(_e115, q_12));
+    if (!(inside_2)) {
+        float _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_4.corners[0] + o_4.corners[2])) - q_12));
+        mid = _e129;
+    }
+    float _e133 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[0] - q_12));
+    float _e134 = mid;
+    float _e136 = airlight_wrap_turn((_e133 - _e134));
+    float _e140 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[1] - q_12));
+    float _e141 = mid;
+    float _e143 = airlight_wrap_turn((_e140 - _e141));
+    float _e147 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[2] - q_12));
+    float _e148 = mid;
+    float _e150 = airlight_wrap_turn((_e147 - _e148));
+    float _e154 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[3] - q_12));
+    float _e155 = mid;
+    float _e157 = airlight_wrap_turn((_e154 - _e155));
+    vec4 _e159 = airlight_sort4_(vec4(_e136, _e143, _e150, _e157));
+    uint wedges = (inside_2 ? 4u : 3u);
+    bool loop_init_36 = true;
+    while(true) {
+        if (!loop_init_36) {
+            uint _e213 = i_31;
+            i_31 = (_e213 + 1u);
+        }
+        loop_init_36 = false;
+        uint _e165 = i_31;
+        if ((_e165 < wedges)) {
+        } else {
+            break;
+        }
+        {
+            float _e167 = mid;
+            uint _e168 = i_31;
+            float first_2 = (_e167 + _e159[_e168]);
+            float _e171 = mid;
+            uint _e172 = i_31;
+            uint _e181 = i_31;
+            float last_1 = (_e171 + ((_e181 == 3u) ? (_e159.x + 6.2831855) : _e159[min((_e172 + 1u), 3u)]));
+            float c_19 = ((first_2 + last_1) * 0.5);
+            float hw_4 = ((last_1 - first_2) * 0.5);
+            j_6 = 0u;
+            bool loop_init_37 = true;
+            while(true) {
+                if (!loop_init_37) {
+                    uint _e210 = j_6;
+                    j_6 = (_e210 + 1u);
+                }
+                loop_init_37 = false;
+                uint _e194 = j_6;
+                if ((_e194 < 12u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e197 = j_6;
+                    vec2 _e198 = airlight_triangle_rule(_e197);
+                    float _e199 = sum_9;
+                    vec2 _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
+                    float _e206 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e205);
+                    sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
                 }
             }
         }
     }
-    float _e256 = sum_9;
-    return _e256;
+    float _e215 = sum_9;
+    return _e215;
 }
 
-vec3 airlight_cap_row(AirlightScene s_35, AirlightCap cap, float graded, float node, float weight_1) {
+float airlight_disc(AirlightScene s_36, AirlightArea a_23, vec3 x_24) {
+    vec2 u_6 = vec2(0.0);
+    AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
+    float sum_10 = 0.0;
+    uint i_32 = 0u;
+    vec2 e_8 = vec2(0.0);
+    float r_max_1 = 0.0;
+    vec3 rel = (x_24 - a_23.c);
+    float z_19 = dot(rel, a_23.n);
+    if (!((z_19 > 0.0))) {
+        return 0.0;
+    }
+    float fx = dot(rel, a_23.a1_);
+    float fy_1 = dot(rel, a_23.a2_);
+    float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
+    float radius_2 = a_23.radius;
+    vec2 zero_1 = vec2(0.0);
+    AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_19, outline, vec2(-(fx), -(fy_1)), radius_2);
+    if ((_e30.scale > 0.0)) {
+        float _e34 = airlight_flat_about_lobe(s_36, z_19, outline, _e30);
+        return _e34;
+    }
+    bool inside_3 = (rf <= radius_2);
+    AirlightAbove _e41 = airlight_above(z_19, vec2(0.0));
+    above_3 = _e41;
+    if (!(inside_3)) {
+        u_6 = vec2((-(fx) / rf), (-(fy_1) / rf));
+        vec2 _e50 = u_6;
+        AirlightAbove _e52 = airlight_above(z_19, ((rf - radius_2) * _e50));
+        above_3 = _e52;
+    }
+    float k_13 = ((rf - radius_2) * (rf + radius_2));
+    bool loop_init_38 = true;
+    while(true) {
+        if (!loop_init_38) {
+            uint _e114 = i_32;
+            i_32 = (_e114 + 1u);
+        }
+        loop_init_38 = false;
+        uint _e60 = i_32;
+        if ((_e60 < 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e63 = i_32;
+            vec3 _e64 = airlight_azimuths(inside_3, _e63);
+            float _e67 = u_6.x;
+            float _e71 = u_6.y;
+            float _e76 = u_6.y;
+            float _e80 = u_6.x;
+            e_8 = vec2(((_e64.x * _e67) - (_e64.y * _e71)), ((_e64.x * _e76) + (_e64.y * _e80)));
+            r_max_1 = ((radius_2 + radius_2) * _e64.x);
+            if (inside_3) {
+                e_8 = _e64.xy;
+                float b_23 = ((fx * _e64.x) + (fy_1 * _e64.y));
+                float root_4 = sqrt(((b_23 * b_23) - k_13));
+                r_max_1 = ((b_23 > 0.0) ? (-(k_13) / (b_23 + root_4)) : (root_4 - b_23));
+            }
+            float _e105 = sum_10;
+            AirlightAbove _e107 = above_3;
+            vec2 _e108 = e_8;
+            float _e109 = r_max_1;
+            float _e110 = airlight_flat_radial(s_36, a_23, _e107, _e108, _e109);
+            sum_10 = (_e105 + (_e64.z * _e110));
+        }
+    }
+    float _e116 = sum_10;
+    return _e116;
+}
+
+float airlight_parallelogram(AirlightScene s_37, AirlightArea a_24, vec3 x_25) {
+    float sum_11 = 0.0;
+    uint i_33 = 0u;
+    uint j_7 = 0u;
+    vec3 rel_1 = (x_25 - a_24.c);
+    float z_20 = dot(rel_1, a_24.n);
+    if (!((z_20 > 0.0))) {
+        return 0.0;
+    }
+    vec2 foot = vec2(dot(rel_1, a_24.a1_), dot(rel_1, a_24.a2_));
+    vec2 u2_ = vec2(dot(a_24.eu, a_24.a1_), dot(a_24.eu, a_24.a2_));
+    vec2 v2_ = vec2(dot(a_24.ev, a_24.a1_), dot(a_24.ev, a_24.a2_));
+    vec2 corners[5] = vec2[5](vec2(0.0), u2_, (u2_ + v2_), v2_, vec2(0.0));
+    float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
+    AirlightOutline about_foot = AirlightOutline(vec2[4]((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0.0);
+    float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_20, about_foot, ((0.5 * corners[2]) - foot), size_2);
+    if ((_e69.scale > 0.0)) {
+        float _e73 = airlight_flat_about_lobe(s_37, z_20, about_foot, _e69);
+        return _e73;
+    }
+    vec2 _e76 = airlight_outline_nearest(about_foot, vec2(0.0));
+    vec2 q_13 = (_e76 + foot);
+    AirlightAbove _e79 = airlight_above(z_20, (q_13 - foot));
+    float thin = (AIRLIGHT_FLT_EPS * abs(det));
+    bool loop_init_39 = true;
+    while(true) {
+        if (!loop_init_39) {
+            uint _e190 = i_33;
+            i_33 = (_e190 + 1u);
+        }
+        loop_init_39 = false;
+        uint _e87 = i_33;
+        if ((_e87 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e90 = i_33;
+            vec2 ca = (corners[_e90] - q_13);
+            uint _e93 = i_33;
+            vec2 cb_1 = (corners[(_e93 + 1u)] - q_13);
+            float area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
+            if (!((area > thin))) {
+                continue;
+            }
+            vec2 e_15 = (cb_1 - ca);
+            float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
+            float h_9 = (area / el);
+            vec2 m_12 = vec2((e_15.y / el), (-(e_15.x) / el));
+            float _e130 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
+            vec2 start_4 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
+            j_7 = 0u;
+            bool loop_init_40 = true;
+            while(true) {
+                if (!loop_init_40) {
+                    uint _e187 = j_7;
+                    j_7 = (_e187 + 1u);
+                }
+                loop_init_40 = false;
+                uint _e143 = j_7;
+                if ((_e143 < 12u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e146 = j_7;
+                    vec2 _e147 = airlight_triangle_rule(_e146);
+                    vec2 _e154 = airlight_cos_sin_half_turn(((0.5 * _e130) * (1.0 + _e147.x)));
+                    vec2 dir_3 = vec2(((_e154.x * start_4.x) - (_e154.y * start_4.y)), ((_e154.y * start_4.x) + (_e154.x * start_4.y)));
+                    float _e170 = sum_11;
+                    float _e183 = airlight_flat_radial(s_37, a_24, _e79, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    sum_11 = (_e170 + (((_e147.y * 0.5) * _e130) * _e183));
+                }
+            }
+        }
+    }
+    float _e192 = sum_11;
+    return _e192;
+}
+
+vec3 airlight_cap_row(AirlightScene s_38, AirlightCap cap, float graded_1, float node, float weight_1) {
     float phi = 0.0;
     float w_2 = 0.0;
     phi = node;
     w_2 = weight_1;
-    if ((graded > 0.0)) {
+    if ((graded_1 > 0.0)) {
         vec2 _e9 = airlight_cos_sin_half_turn(node);
-        phi = ((graded * _e9.y) / _e9.x);
-        w_2 = ((weight_1 * graded) / (_e9.x * _e9.x));
+        phi = ((graded_1 * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded_1) / (_e9.x * _e9.x));
     }
     float _e19 = phi;
     vec2 _e20 = airlight_cos_sin_half_turn(_e19);
-    float sb_1 = (cap.sin_a * _e20.y);
-    float cb_1 = sqrt(((1.0 - sb_1) * (1.0 + sb_1)));
-    float dist_1 = max(((cap.dc * cb_1) - (cap.radius * _e20.x)), 0.0);
+    float sb_2 = (cap.sin_a * _e20.y);
+    float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
+    float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0.0);
     float _e38 = w_2;
-    float _e40 = airlight_emitted(s_35, _e20.x);
-    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_1) * exp(min((-(s_35.sigma_t) * dist_1), 0.0)));
-    return vec3(factor, cb_1, sb_1);
+    float _e40 = airlight_emitted(s_38, _e20.x);
+    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_38.sigma_t) * dist_1), 0.0)));
+    return vec3(factor, cb_2, sb_2);
 }
 
-float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap_1) {
-    float graded_1 = 0.0;
+float airlight_sphere_cap(AirlightScene s_39, AirlightArea a_25, AirlightCap cap_1) {
+    float graded_2 = 0.0;
     float top = 1.5707964;
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-    float sum_10 = 0.0;
-    uint i_31 = 0u;
+    float sum_12 = 0.0;
+    uint i_34 = 0u;
     float at_2 = 0.0;
     vec3 _e4 = airlight_basis_e1_(cap_1.a);
     vec3 e2_2 = cross(cap_1.a, _e4);
-    float ad = dot(cap_1.a, a_23.d);
-    float e1d = dot(_e4, a_23.d);
-    float e2d = dot(e2_2, a_23.d);
-    uint p_5 = uint(s_36.light_param_b);
-    if ((p_5 > 1u)) {
-        float lobe_1 = (2.0 / sqrt(float((p_5 - 1u))));
-        if ((lobe_1 < 1.5707964)) {
-            graded_1 = lobe_1;
-            float _e32 = airlight_atan((1.5707964 / lobe_1));
+    float ad = dot(cap_1.a, a_25.d);
+    float e1d = dot(_e4, a_25.d);
+    float e2d = dot(e2_2, a_25.d);
+    uint p_6 = uint(s_39.light_param_b);
+    if ((p_6 > 1u)) {
+        float lobe_5 = (2.0 / sqrt(float((p_6 - 1u))));
+        if ((lobe_5 < 1.5707964)) {
+            graded_2 = lobe_5;
+            float _e32 = airlight_atan((1.5707964 / lobe_5));
             top = _e32;
         }
     }
     float _e33 = top;
-    float c_17 = (0.5 * _e33);
+    float c_20 = (0.5 * _e33);
     float _e36 = top;
-    float hw_3 = (0.5 * _e36);
-    float _e74 = graded_1;
-    vec3 _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_17 - (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    float hw_5 = (0.5 * _e36);
+    float _e74 = graded_2;
+    vec3 _e80 = airlight_cap_row(s_39, cap_1, _e74, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[0] = _e80;
-    float _e82 = graded_1;
-    vec3 _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_17 + (0.09501251 * hw_3)), (0.1894506 * hw_3));
+    float _e82 = graded_2;
+    vec3 _e88 = airlight_cap_row(s_39, cap_1, _e82, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[1] = _e88;
-    float _e90 = graded_1;
-    vec3 _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_17 - (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    float _e90 = graded_2;
+    vec3 _e96 = airlight_cap_row(s_39, cap_1, _e90, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[2] = _e96;
-    float _e98 = graded_1;
-    vec3 _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_17 + (0.28160354 * hw_3)), (0.18260342 * hw_3));
+    float _e98 = graded_2;
+    vec3 _e104 = airlight_cap_row(s_39, cap_1, _e98, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[3] = _e104;
-    float _e106 = graded_1;
-    vec3 _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_17 - (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    float _e106 = graded_2;
+    vec3 _e112 = airlight_cap_row(s_39, cap_1, _e106, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[4] = _e112;
-    float _e114 = graded_1;
-    vec3 _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_17 + (0.45801678 * hw_3)), (0.16915652 * hw_3));
+    float _e114 = graded_2;
+    vec3 _e120 = airlight_cap_row(s_39, cap_1, _e114, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[5] = _e120;
-    float _e122 = graded_1;
-    vec3 _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_17 - (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    float _e122 = graded_2;
+    vec3 _e128 = airlight_cap_row(s_39, cap_1, _e122, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[6] = _e128;
-    float _e130 = graded_1;
-    vec3 _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_17 + (0.61787623 * hw_3)), (0.14959599 * hw_3));
+    float _e130 = graded_2;
+    vec3 _e136 = airlight_cap_row(s_39, cap_1, _e130, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[7] = _e136;
-    float _e138 = graded_1;
-    vec3 _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_17 - (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    float _e138 = graded_2;
+    vec3 _e144 = airlight_cap_row(s_39, cap_1, _e138, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[8] = _e144;
-    float _e146 = graded_1;
-    vec3 _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_17 + (0.7554044 * hw_3)), (0.12462897 * hw_3));
+    float _e146 = graded_2;
+    vec3 _e152 = airlight_cap_row(s_39, cap_1, _e146, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[9] = _e152;
-    float _e154 = graded_1;
-    vec3 _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_17 - (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    float _e154 = graded_2;
+    vec3 _e160 = airlight_cap_row(s_39, cap_1, _e154, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[10] = _e160;
-    float _e162 = graded_1;
-    vec3 _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_17 + (0.8656312 * hw_3)), (0.09515851 * hw_3));
+    float _e162 = graded_2;
+    vec3 _e168 = airlight_cap_row(s_39, cap_1, _e162, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[11] = _e168;
-    float _e170 = graded_1;
-    vec3 _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_17 - (0.944575 * hw_3)), (0.062253524 * hw_3));
+    float _e170 = graded_2;
+    vec3 _e176 = airlight_cap_row(s_39, cap_1, _e170, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[12] = _e176;
-    float _e178 = graded_1;
-    vec3 _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_17 + (0.944575 * hw_3)), (0.062253524 * hw_3));
+    float _e178 = graded_2;
+    vec3 _e184 = airlight_cap_row(s_39, cap_1, _e178, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[13] = _e184;
-    float _e186 = graded_1;
-    vec3 _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_17 - (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    float _e186 = graded_2;
+    vec3 _e192 = airlight_cap_row(s_39, cap_1, _e186, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[14] = _e192;
-    float _e194 = graded_1;
-    vec3 _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_17 + (0.9894009 * hw_3)), (0.02715246 * hw_3));
+    float _e194 = graded_2;
+    vec3 _e200 = airlight_cap_row(s_39, cap_1, _e194, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[15] = _e200;
-    if (a_23.isotropic) {
-        float _e206 = airlight_area_phase(s_36, 0.0);
+    if (a_25.isotropic) {
+        float _e206 = airlight_area_phase(s_39, 0.0);
         float around_1 = (6.2831855 * _e206);
-        float _e208 = sum_10;
+        float _e208 = sum_12;
         float _e211 = rows[0].x;
-        sum_10 = (_e208 + (_e211 * around_1));
-        float _e214 = sum_10;
+        sum_12 = (_e208 + (_e211 * around_1));
+        float _e214 = sum_12;
         float _e217 = rows[1].x;
-        sum_10 = (_e214 + (_e217 * around_1));
-        float _e220 = sum_10;
+        sum_12 = (_e214 + (_e217 * around_1));
+        float _e220 = sum_12;
         float _e223 = rows[2].x;
-        sum_10 = (_e220 + (_e223 * around_1));
-        float _e226 = sum_10;
+        sum_12 = (_e220 + (_e223 * around_1));
+        float _e226 = sum_12;
         float _e229 = rows[3].x;
-        sum_10 = (_e226 + (_e229 * around_1));
-        float _e232 = sum_10;
+        sum_12 = (_e226 + (_e229 * around_1));
+        float _e232 = sum_12;
         float _e235 = rows[4].x;
-        sum_10 = (_e232 + (_e235 * around_1));
-        float _e238 = sum_10;
+        sum_12 = (_e232 + (_e235 * around_1));
+        float _e238 = sum_12;
         float _e241 = rows[5].x;
-        sum_10 = (_e238 + (_e241 * around_1));
-        float _e244 = sum_10;
+        sum_12 = (_e238 + (_e241 * around_1));
+        float _e244 = sum_12;
         float _e247 = rows[6].x;
-        sum_10 = (_e244 + (_e247 * around_1));
-        float _e250 = sum_10;
+        sum_12 = (_e244 + (_e247 * around_1));
+        float _e250 = sum_12;
         float _e253 = rows[7].x;
-        sum_10 = (_e250 + (_e253 * around_1));
-        float _e256 = sum_10;
+        sum_12 = (_e250 + (_e253 * around_1));
+        float _e256 = sum_12;
         float _e259 = rows[8].x;
-        sum_10 = (_e256 + (_e259 * around_1));
-        float _e262 = sum_10;
+        sum_12 = (_e256 + (_e259 * around_1));
+        float _e262 = sum_12;
         float _e265 = rows[9].x;
-        sum_10 = (_e262 + (_e265 * around_1));
-        float _e268 = sum_10;
+        sum_12 = (_e262 + (_e265 * around_1));
+        float _e268 = sum_12;
         float _e271 = rows[10].x;
-        sum_10 = (_e268 + (_e271 * around_1));
-        float _e274 = sum_10;
+        sum_12 = (_e268 + (_e271 * around_1));
+        float _e274 = sum_12;
         float _e277 = rows[11].x;
-        sum_10 = (_e274 + (_e277 * around_1));
-        float _e280 = sum_10;
+        sum_12 = (_e274 + (_e277 * around_1));
+        float _e280 = sum_12;
         float _e283 = rows[12].x;
-        sum_10 = (_e280 + (_e283 * around_1));
-        float _e286 = sum_10;
+        sum_12 = (_e280 + (_e283 * around_1));
+        float _e286 = sum_12;
         float _e289 = rows[13].x;
-        sum_10 = (_e286 + (_e289 * around_1));
-        float _e292 = sum_10;
+        sum_12 = (_e286 + (_e289 * around_1));
+        float _e292 = sum_12;
         float _e295 = rows[14].x;
-        sum_10 = (_e292 + (_e295 * around_1));
-        float _e298 = sum_10;
+        sum_12 = (_e292 + (_e295 * around_1));
+        float _e298 = sum_12;
         float _e301 = rows[15].x;
-        sum_10 = (_e298 + (_e301 * around_1));
-        float _e304 = sum_10;
+        sum_12 = (_e298 + (_e301 * around_1));
+        float _e304 = sum_12;
         return _e304;
     }
-    bool loop_init_36 = true;
+    bool loop_init_41 = true;
     while(true) {
-        if (!loop_init_36) {
-            uint _e582 = i_31;
-            i_31 = (_e582 + 1u);
+        if (!loop_init_41) {
+            uint _e582 = i_34;
+            i_34 = (_e582 + 1u);
         }
-        loop_init_36 = false;
-        uint _e307 = i_31;
+        loop_init_41 = false;
+        uint _e307 = i_34;
         if ((_e307 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e311 = i_31;
+            uint _e311 = i_34;
             vec3 _e312 = airlight_azimuths(true, _e311);
             float across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
             at_2 = 0.0;
@@ -7189,159 +7560,159 @@ float airlight_sphere_cap(AirlightScene s_36, AirlightArea a_23, AirlightCap cap
             float _e323 = rows[0].x;
             float _e326 = rows[0].y;
             float _e330 = rows[0].z;
-            float _e333 = airlight_area_phase(s_36, ((_e326 * ad) + (_e330 * across_1)));
+            float _e333 = airlight_area_phase(s_39, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[1].x;
             float _e342 = rows[1].y;
             float _e346 = rows[1].z;
-            float _e349 = airlight_area_phase(s_36, ((_e342 * ad) + (_e346 * across_1)));
+            float _e349 = airlight_area_phase(s_39, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[2].x;
             float _e358 = rows[2].y;
             float _e362 = rows[2].z;
-            float _e365 = airlight_area_phase(s_36, ((_e358 * ad) + (_e362 * across_1)));
+            float _e365 = airlight_area_phase(s_39, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[3].x;
             float _e374 = rows[3].y;
             float _e378 = rows[3].z;
-            float _e381 = airlight_area_phase(s_36, ((_e374 * ad) + (_e378 * across_1)));
+            float _e381 = airlight_area_phase(s_39, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[4].x;
             float _e390 = rows[4].y;
             float _e394 = rows[4].z;
-            float _e397 = airlight_area_phase(s_36, ((_e390 * ad) + (_e394 * across_1)));
+            float _e397 = airlight_area_phase(s_39, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[5].x;
             float _e406 = rows[5].y;
             float _e410 = rows[5].z;
-            float _e413 = airlight_area_phase(s_36, ((_e406 * ad) + (_e410 * across_1)));
+            float _e413 = airlight_area_phase(s_39, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[6].x;
             float _e422 = rows[6].y;
             float _e426 = rows[6].z;
-            float _e429 = airlight_area_phase(s_36, ((_e422 * ad) + (_e426 * across_1)));
+            float _e429 = airlight_area_phase(s_39, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[7].x;
             float _e438 = rows[7].y;
             float _e442 = rows[7].z;
-            float _e445 = airlight_area_phase(s_36, ((_e438 * ad) + (_e442 * across_1)));
+            float _e445 = airlight_area_phase(s_39, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[8].x;
             float _e454 = rows[8].y;
             float _e458 = rows[8].z;
-            float _e461 = airlight_area_phase(s_36, ((_e454 * ad) + (_e458 * across_1)));
+            float _e461 = airlight_area_phase(s_39, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[9].x;
             float _e470 = rows[9].y;
             float _e474 = rows[9].z;
-            float _e477 = airlight_area_phase(s_36, ((_e470 * ad) + (_e474 * across_1)));
+            float _e477 = airlight_area_phase(s_39, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[10].x;
             float _e486 = rows[10].y;
             float _e490 = rows[10].z;
-            float _e493 = airlight_area_phase(s_36, ((_e486 * ad) + (_e490 * across_1)));
+            float _e493 = airlight_area_phase(s_39, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[11].x;
             float _e502 = rows[11].y;
             float _e506 = rows[11].z;
-            float _e509 = airlight_area_phase(s_36, ((_e502 * ad) + (_e506 * across_1)));
+            float _e509 = airlight_area_phase(s_39, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[12].x;
             float _e518 = rows[12].y;
             float _e522 = rows[12].z;
-            float _e525 = airlight_area_phase(s_36, ((_e518 * ad) + (_e522 * across_1)));
+            float _e525 = airlight_area_phase(s_39, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[13].x;
             float _e534 = rows[13].y;
             float _e538 = rows[13].z;
-            float _e541 = airlight_area_phase(s_36, ((_e534 * ad) + (_e538 * across_1)));
+            float _e541 = airlight_area_phase(s_39, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = at_2;
             float _e547 = rows[14].x;
             float _e550 = rows[14].y;
             float _e554 = rows[14].z;
-            float _e557 = airlight_area_phase(s_36, ((_e550 * ad) + (_e554 * across_1)));
+            float _e557 = airlight_area_phase(s_39, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             float _e560 = at_2;
             float _e563 = rows[15].x;
             float _e566 = rows[15].y;
             float _e570 = rows[15].z;
-            float _e573 = airlight_area_phase(s_36, ((_e566 * ad) + (_e570 * across_1)));
+            float _e573 = airlight_area_phase(s_39, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
-            float _e576 = sum_10;
+            float _e576 = sum_12;
             float _e578 = at_2;
-            sum_10 = (_e576 + (_e312.z * _e578));
+            sum_12 = (_e576 + (_e312.z * _e578));
         }
     }
-    float _e584 = sum_10;
+    float _e584 = sum_12;
     return _e584;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_37, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_1, float graded_2, float g_27) {
-    vec2 _e8 = airlight_cos_sin_half_turn(g_27);
-    vec2 _e14 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e8.y) / _e8.x)));
+float airlight_sphere_lobe_node(AirlightScene s_40, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_3, float g_28) {
+    vec2 _e8 = airlight_cos_sin_half_turn(g_28);
+    vec2 _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_3 * _e8.y) / _e8.x)));
     float toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
-    float root_4 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
-    float dist_2 = max(((cap_2.dc * toward_a) - root_4), 0.0);
-    float _e43 = airlight_emitted(s_37, (root_4 / cap_2.radius));
-    float _e53 = airlight_area_phase(s_37, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_37.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_2) / (_e8.x * _e8.x));
+    float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
+    float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
+    float _e43 = airlight_emitted(s_40, (root_5 / cap_2.radius));
+    float _e53 = airlight_area_phase(s_40, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_40.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_3) / (_e8.x * _e8.x));
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1) {
+float airlight_sphere_about_lobe(AirlightScene s_41, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1) {
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
-    float sum_11 = 0.0;
-    uint i_32 = 0u;
+    float sum_13 = 0.0;
+    uint i_35 = 0u;
     float big_b_1 = 0.0;
     float wpsi = 0.0;
-    float start_2 = 0.0;
+    float start_3 = 0.0;
     float around = 0.0;
-    vec3 p_6 = (sign_2 * a_24.d);
-    vec3 _e8 = airlight_basis_e1_(p_6);
-    vec3 v_7 = cross(p_6, _e8);
+    vec3 p_7 = (sign_2 * a_26.d);
+    vec3 _e8 = airlight_basis_e1_(p_7);
+    vec3 v_10 = cross(p_7, _e8);
     float au = dot(cap_3.a, _e8);
-    float av = dot(cap_3.a, v_7);
-    bool inside_2 = (cos_p_1 > cap_3.cos_a);
+    float av = dot(cap_3.a, v_10);
+    bool inside_4 = (cos_p_1 > cap_3.cos_a);
     float sin_p = sqrt(((au * au) + (av * av)));
     if ((sin_p > 0.0)) {
         axis_2 = vec2((au / sin_p), (av / sin_p));
         float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    bool loop_init_37 = true;
+    bool loop_init_42 = true;
     while(true) {
-        if (!loop_init_37) {
-            uint _e299 = i_32;
-            i_32 = (_e299 + 1u);
+        if (!loop_init_42) {
+            uint _e299 = i_35;
+            i_35 = (_e299 + 1u);
         }
-        loop_init_37 = false;
-        uint _e47 = i_32;
+        loop_init_42 = false;
+        uint _e47 = i_35;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_32;
-            vec3 _e51 = airlight_azimuths(inside_2, _e50);
+            uint _e50 = i_35;
+            vec3 _e51 = airlight_azimuths(inside_4, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
             big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
             wpsi = _e51.z;
-            if (!(inside_2)) {
+            if (!(inside_4)) {
                 float _e66 = half_15;
                 vec2 _e69 = airlight_cos_sin((_e66 * _e51.y));
                 big_b_1 = (sin_p * _e69.x);
@@ -7351,182 +7722,182 @@ float airlight_sphere_about_lobe(AirlightScene s_38, AirlightArea a_24, Airlight
             float _e77 = big_b_1;
             float _e83 = big_b_1;
             float _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
-            float mid_2 = (((_e77 < 0.0) ? -1.0 : 1.0) * _e85);
+            float mid_3 = (((_e77 < 0.0) ? -1.0 : 1.0) * _e85);
             float _e89 = big_b_1;
             float _e90 = big_b_1;
             float _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1.0));
-            start_2 = 0.0;
-            if (!(inside_2)) {
-                start_2 = max((mid_2 - _e97), 0.0);
+            start_3 = 0.0;
+            if (!(inside_4)) {
+                start_3 = max((mid_3 - _e97), 0.0);
             }
-            float to = (mid_2 + _e97);
-            float _e105 = start_2;
-            float graded_3 = max(scale_1, _e105);
-            float _e107 = start_2;
-            float _e110 = airlight_atan(((to - _e107) / graded_3));
-            float c_18 = (0.5 * _e110);
-            float hw_4 = (0.5 * _e110);
+            float to = (mid_3 + _e97);
+            float _e105 = start_3;
+            float graded_5 = max(scale_1, _e105);
+            float _e107 = start_3;
+            float _e110 = airlight_atan(((to - _e107) / graded_5));
+            float c_21 = (0.5 * _e110);
+            float hw_6 = (0.5 * _e110);
             around = 0.0;
             float _e117 = around;
             float _e120 = big_b_1;
-            float _e121 = start_2;
-            float _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_18 - (0.09501251 * hw_4)));
-            around = (_e117 + ((0.1894506 * hw_4) * _e125));
+            float _e121 = start_3;
+            float _e125 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e120, _e121, graded_5, (c_21 - (0.09501251 * hw_6)));
+            around = (_e117 + ((0.1894506 * hw_6) * _e125));
             float _e128 = around;
             float _e131 = big_b_1;
-            float _e132 = start_2;
-            float _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_18 + (0.09501251 * hw_4)));
-            around = (_e128 + ((0.1894506 * hw_4) * _e136));
+            float _e132 = start_3;
+            float _e136 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e131, _e132, graded_5, (c_21 + (0.09501251 * hw_6)));
+            around = (_e128 + ((0.1894506 * hw_6) * _e136));
             float _e139 = around;
             float _e142 = big_b_1;
-            float _e143 = start_2;
-            float _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_18 - (0.28160354 * hw_4)));
-            around = (_e139 + ((0.18260342 * hw_4) * _e147));
+            float _e143 = start_3;
+            float _e147 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e142, _e143, graded_5, (c_21 - (0.28160354 * hw_6)));
+            around = (_e139 + ((0.18260342 * hw_6) * _e147));
             float _e150 = around;
             float _e153 = big_b_1;
-            float _e154 = start_2;
-            float _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_18 + (0.28160354 * hw_4)));
-            around = (_e150 + ((0.18260342 * hw_4) * _e158));
+            float _e154 = start_3;
+            float _e158 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e153, _e154, graded_5, (c_21 + (0.28160354 * hw_6)));
+            around = (_e150 + ((0.18260342 * hw_6) * _e158));
             float _e161 = around;
             float _e164 = big_b_1;
-            float _e165 = start_2;
-            float _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_18 - (0.45801678 * hw_4)));
-            around = (_e161 + ((0.16915652 * hw_4) * _e169));
+            float _e165 = start_3;
+            float _e169 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e164, _e165, graded_5, (c_21 - (0.45801678 * hw_6)));
+            around = (_e161 + ((0.16915652 * hw_6) * _e169));
             float _e172 = around;
             float _e175 = big_b_1;
-            float _e176 = start_2;
-            float _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_18 + (0.45801678 * hw_4)));
-            around = (_e172 + ((0.16915652 * hw_4) * _e180));
+            float _e176 = start_3;
+            float _e180 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e175, _e176, graded_5, (c_21 + (0.45801678 * hw_6)));
+            around = (_e172 + ((0.16915652 * hw_6) * _e180));
             float _e183 = around;
             float _e186 = big_b_1;
-            float _e187 = start_2;
-            float _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_18 - (0.61787623 * hw_4)));
-            around = (_e183 + ((0.14959599 * hw_4) * _e191));
+            float _e187 = start_3;
+            float _e191 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e186, _e187, graded_5, (c_21 - (0.61787623 * hw_6)));
+            around = (_e183 + ((0.14959599 * hw_6) * _e191));
             float _e194 = around;
             float _e197 = big_b_1;
-            float _e198 = start_2;
-            float _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_18 + (0.61787623 * hw_4)));
-            around = (_e194 + ((0.14959599 * hw_4) * _e202));
+            float _e198 = start_3;
+            float _e202 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e197, _e198, graded_5, (c_21 + (0.61787623 * hw_6)));
+            around = (_e194 + ((0.14959599 * hw_6) * _e202));
             float _e205 = around;
             float _e208 = big_b_1;
-            float _e209 = start_2;
-            float _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_18 - (0.7554044 * hw_4)));
-            around = (_e205 + ((0.12462897 * hw_4) * _e213));
+            float _e209 = start_3;
+            float _e213 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e208, _e209, graded_5, (c_21 - (0.7554044 * hw_6)));
+            around = (_e205 + ((0.12462897 * hw_6) * _e213));
             float _e216 = around;
             float _e219 = big_b_1;
-            float _e220 = start_2;
-            float _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_18 + (0.7554044 * hw_4)));
-            around = (_e216 + ((0.12462897 * hw_4) * _e224));
+            float _e220 = start_3;
+            float _e224 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e219, _e220, graded_5, (c_21 + (0.7554044 * hw_6)));
+            around = (_e216 + ((0.12462897 * hw_6) * _e224));
             float _e227 = around;
             float _e230 = big_b_1;
-            float _e231 = start_2;
-            float _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_18 - (0.8656312 * hw_4)));
-            around = (_e227 + ((0.09515851 * hw_4) * _e235));
+            float _e231 = start_3;
+            float _e235 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e230, _e231, graded_5, (c_21 - (0.8656312 * hw_6)));
+            around = (_e227 + ((0.09515851 * hw_6) * _e235));
             float _e238 = around;
             float _e241 = big_b_1;
-            float _e242 = start_2;
-            float _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_18 + (0.8656312 * hw_4)));
-            around = (_e238 + ((0.09515851 * hw_4) * _e246));
+            float _e242 = start_3;
+            float _e246 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e241, _e242, graded_5, (c_21 + (0.8656312 * hw_6)));
+            around = (_e238 + ((0.09515851 * hw_6) * _e246));
             float _e249 = around;
             float _e252 = big_b_1;
-            float _e253 = start_2;
-            float _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_18 - (0.944575 * hw_4)));
-            around = (_e249 + ((0.062253524 * hw_4) * _e257));
+            float _e253 = start_3;
+            float _e257 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e252, _e253, graded_5, (c_21 - (0.944575 * hw_6)));
+            around = (_e249 + ((0.062253524 * hw_6) * _e257));
             float _e260 = around;
             float _e263 = big_b_1;
-            float _e264 = start_2;
-            float _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_18 + (0.944575 * hw_4)));
-            around = (_e260 + ((0.062253524 * hw_4) * _e268));
+            float _e264 = start_3;
+            float _e268 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e263, _e264, graded_5, (c_21 + (0.944575 * hw_6)));
+            around = (_e260 + ((0.062253524 * hw_6) * _e268));
             float _e271 = around;
             float _e274 = big_b_1;
-            float _e275 = start_2;
-            float _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_18 - (0.9894009 * hw_4)));
-            around = (_e271 + ((0.02715246 * hw_4) * _e279));
+            float _e275 = start_3;
+            float _e279 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e274, _e275, graded_5, (c_21 - (0.9894009 * hw_6)));
+            around = (_e271 + ((0.02715246 * hw_6) * _e279));
             float _e282 = around;
             float _e285 = big_b_1;
-            float _e286 = start_2;
-            float _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_18 + (0.9894009 * hw_4)));
-            around = (_e282 + ((0.02715246 * hw_4) * _e290));
-            float _e293 = sum_11;
+            float _e286 = start_3;
+            float _e290 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e285, _e286, graded_5, (c_21 + (0.9894009 * hw_6)));
+            around = (_e282 + ((0.02715246 * hw_6) * _e290));
+            float _e293 = sum_13;
             float _e294 = wpsi;
             float _e295 = around;
-            sum_11 = (_e293 + (_e294 * _e295));
+            sum_13 = (_e293 + (_e294 * _e295));
         }
     }
-    float _e301 = sum_11;
+    float _e301 = sum_13;
     return _e301;
 }
 
-float airlight_sphere(AirlightScene s_39, AirlightArea a_25, vec3 x_23) {
+float airlight_sphere(AirlightScene s_42, AirlightArea a_27, vec3 x_26) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_6 = 0u;
-    bool local_182 = false;
+    uint j_8 = 0u;
     bool local_183 = false;
     bool local_184 = false;
     bool local_185 = false;
     bool local_186 = false;
-    vec3 v_8 = (a_25.c - x_23);
-    float _e5 = airlight_safe_length(v_8);
-    if (!((_e5 > a_25.radius))) {
+    bool local_187 = false;
+    vec3 v_11 = (a_27.c - x_26);
+    float _e5 = airlight_safe_length(v_11);
+    if (!((_e5 > a_27.radius))) {
         return 0.0;
     }
-    float sin_a_2 = (a_25.radius / _e5);
-    AirlightCap cap_4 = AirlightCap((v_8 / vec3(_e5)), _e5, a_25.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    float sin_a_2 = (a_27.radius / _e5);
+    AirlightCap cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_27.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    bool loop_init_38 = true;
+    bool loop_init_43 = true;
     while(true) {
-        if (!loop_init_38) {
-            uint _e92 = j_6;
-            j_6 = (_e92 + 1u);
+        if (!loop_init_43) {
+            uint _e92 = j_8;
+            j_8 = (_e92 + 1u);
         }
-        loop_init_38 = false;
-        uint _e32 = j_6;
+        loop_init_43 = false;
+        uint _e32 = j_8;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_6;
-            vec2 lobe_2 = ((_e39 == 1u) ? a_25.lobes.zw : a_25.lobes.xy);
-            float c_19 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            uint _e39 = j_8;
+            vec2 lobe_6 = ((_e39 == 1u) ? a_27.lobes.zw : a_27.lobes.xy);
+            float c_22 = dot(cap_4.a, (lobe_6.x * a_27.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_182 = (lobe_2.y > 0.0);
-            } else {
-                local_182 = false;
-            }
-            bool _e57 = local_182;
-            if (_e57) {
-                local_183 = (lobe_2.y < (_e23 + _e23));
+                local_183 = (lobe_6.y > 0.0);
             } else {
                 local_183 = false;
             }
-            bool _e64 = local_183;
-            if (_e64) {
-                if (!((c_19 > cap_4.cos_a))) {
-                    if ((c_19 > -(cap_4.cos_a))) {
-                        float _e77 = airlight_acos(c_19);
-                        local_186 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
-                    } else {
-                        local_186 = false;
-                    }
-                    bool _e84 = local_186;
-                    local_185 = _e84;
-                } else {
-                    local_185 = true;
-                }
-                bool _e86 = local_185;
-                local_184 = _e86;
+            bool _e57 = local_183;
+            if (_e57) {
+                local_184 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_184 = false;
             }
-            bool _e88 = local_184;
+            bool _e64 = local_184;
+            if (_e64) {
+                if (!((c_22 > cap_4.cos_a))) {
+                    if ((c_22 > -(cap_4.cos_a))) {
+                        float _e77 = airlight_acos(c_22);
+                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+                    } else {
+                        local_187 = false;
+                    }
+                    bool _e84 = local_187;
+                    local_186 = _e84;
+                } else {
+                    local_186 = true;
+                }
+                bool _e86 = local_186;
+                local_185 = _e86;
+            } else {
+                local_185 = false;
+            }
+            bool _e88 = local_185;
             if (_e88) {
-                chosen = lobe_2.y;
-                sign_3 = lobe_2.x;
-                cos_p_2 = c_19;
+                chosen = lobe_6.y;
+                sign_3 = lobe_6.x;
+                cos_p_2 = c_22;
             }
         }
     }
@@ -7535,47 +7906,47 @@ float airlight_sphere(AirlightScene s_39, AirlightArea a_25, vec3 x_23) {
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_39, a_25, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_42, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_39, a_25, cap_4);
+    float _e101 = airlight_sphere_cap(s_42, a_27, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_40, AirlightArea a_26, vec3 x_24) {
-    switch(s_40.light_shape) {
+float airlight_emitter_radiance(AirlightScene s_43, AirlightArea a_28, vec3 x_27) {
+    switch(s_43.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_40, a_26, x_24);
+            float _e4 = airlight_disc(s_43, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_40, a_26, x_24);
+            float _e5 = airlight_parallelogram(s_43, a_28, x_27);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_40, a_26, x_24);
+            float _e6 = airlight_sphere(s_43, a_28, x_27);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_41, AirlightArea a_27, float theta) {
+float airlight_area_node(AirlightScene s_44, AirlightArea a_29, float theta) {
     vec2 _e3 = airlight_cos_sin(theta);
-    float along = ((a_27.h_eff * _e3.y) / _e3.x);
-    float t_11 = (a_27.x_h + along);
-    float fade = exp(min((-(s_41.sigma_t) * max(((a_27.x_h - s_41.t_min) + along), 0.0)), 0.0));
-    float _e33 = airlight_emitter_radiance(s_41, a_27, (s_41.origin + (t_11 * a_27.d)));
-    return (((a_27.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    float along = ((a_29.h_eff * _e3.y) / _e3.x);
+    float t_12 = (a_29.x_h + along);
+    float fade = exp(min((-(s_44.sigma_t) * max(((a_29.x_h - s_44.t_min) + along), 0.0)), 0.0));
+    float _e33 = airlight_emitter_radiance(s_44, a_29, (s_44.origin + (t_12 * a_29.d)));
+    return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_42) {
+AirlightResult airlight_area_light(AirlightScene s_45) {
     AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
-    float k_7 = 0.0;
+    float k_8 = 0.0;
     float gauss_1 = 0.0;
-    uint j_7 = 0u;
-    bool local_187 = false;
-    AirlightArea _e1 = airlight_area(s_42);
+    uint j_9 = 0u;
+    bool local_188 = false;
+    AirlightArea _e1 = airlight_area(s_45);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -7584,13 +7955,13 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    bool loop_init_39 = true;
+    bool loop_init_44 = true;
     while(true) {
-        if (!loop_init_39) {
+        if (!loop_init_44) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_39 = false;
+        loop_init_44 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -7599,48 +7970,48 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_20 = (0.5 * (_e27 + _e29));
+            float c_23 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_5 = (0.5 * (_e34 - _e36));
-            k_7 = 0.0;
+            float hw_7 = (0.5 * (_e34 - _e36));
+            k_8 = 0.0;
             gauss_1 = 0.0;
-            j_7 = 0u;
-            bool loop_init_40 = true;
+            j_9 = 0u;
+            bool loop_init_45 = true;
             while(true) {
-                if (!loop_init_40) {
-                    uint _e82 = j_7;
-                    j_7 = (_e82 + 1u);
+                if (!loop_init_45) {
+                    uint _e82 = j_9;
+                    j_9 = (_e82 + 1u);
                 }
-                loop_init_40 = false;
-                uint _e46 = j_7;
+                loop_init_45 = false;
+                uint _e46 = j_9;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_7;
+                    uint _e49 = j_9;
                     vec3 node_2 = _e8[(_e49 / 2u)];
-                    uint _e59 = j_7;
+                    uint _e59 = j_9;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_7;
-                        local_187 = (_e66 < 14u);
+                        uint _e66 = j_9;
+                        local_188 = (_e66 < 14u);
                     } else {
-                        local_187 = false;
+                        local_188 = false;
                     }
-                    bool _e70 = local_187;
-                    float x_33 = (_e70 ? (c_20 - (hw_5 * node_2.x)) : (c_20 + (hw_5 * node_2.x)));
-                    float _e72 = airlight_area_node(s_42, _e1, x_33);
-                    float _e73 = k_7;
-                    k_7 = (_e73 + (node_2.y * _e72));
+                    bool _e70 = local_188;
+                    float x_36 = (_e70 ? (c_23 - (hw_7 * node_2.x)) : (c_23 + (hw_7 * node_2.x)));
+                    float _e72 = airlight_area_node(s_45, _e1, x_36);
+                    float _e73 = k_8;
+                    k_8 = (_e73 + (node_2.y * _e72));
                     float _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_2.z * _e72));
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_7;
+            float _e85 = k_8;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_5), (_e87 * hw_5), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_7), (_e87 * hw_7), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -7656,41 +8027,41 @@ AirlightResult airlight_area_light(AirlightScene s_42) {
     if (!(_e105)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    return AirlightResult((s_42.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_45.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_43) {
-    bool local_188 = false;
+AirlightResult airlight_in_scatter_area(AirlightScene s_46) {
     bool local_189 = false;
-    bool _e1 = airlight_valid(s_43);
+    bool local_190 = false;
+    bool _e1 = airlight_valid(s_46);
     if (!(!(_e1))) {
-        local_188 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_188 = true;
-    }
-    bool _e10 = local_188;
-    if (!(_e10)) {
-        local_189 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_189 = (s_46.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_189 = true;
     }
-    bool _e18 = local_189;
+    bool _e10 = local_189;
+    if (!(_e10)) {
+        local_190 = (s_46.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_190 = true;
+    }
+    bool _e18 = local_190;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_area_light(s_43);
+    AirlightResult _e22 = airlight_area_light(s_46);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_190 = false;
+    bool local_191 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_190 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_190 = true;
+        local_191 = true;
     }
-    bool _e11 = local_190;
+    bool _e11 = local_191;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -7699,26 +8070,26 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_3) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_191 = false;
-    AirlightCanonical g_28 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    AirlightScene p_7 = n_3.scene;
-    bool _e7 = airlight_vec_finite(p_7.light_position);
+    bool local_192 = false;
+    AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    AirlightScene p_8 = n_3.scene;
+    bool _e7 = airlight_vec_finite(p_8.light_position);
     if (_e7) {
-        bool _e11 = airlight_vec_finite(p_7.dir);
-        local_191 = _e11;
+        bool _e11 = airlight_vec_finite(p_8.dir);
+        local_192 = _e11;
     } else {
-        local_191 = false;
+        local_192 = false;
     }
-    bool _e13 = local_191;
+    bool _e13 = local_192;
     if (_e13) {
-        g_28 = n_3.canonical;
+        g_29 = n_3.canonical;
         if (!(n_3.exact)) {
-            AirlightCanonical _e18 = airlight_canonical(p_7);
-            AirlightCanonical _e19 = airlight_refined(p_7, _e18);
-            g_28 = _e19;
+            AirlightCanonical _e18 = airlight_canonical(p_8);
+            AirlightCanonical _e19 = airlight_refined(p_8, _e18);
+            g_29 = _e19;
         }
-        AirlightCanonical _e20 = g_28;
-        AirlightResult _e21 = airlight_in_scatter_canonical(p_7, _e20);
+        AirlightCanonical _e20 = g_29;
+        AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -7732,58 +8103,58 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
     return _e5;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_44) {
-    bool local_192 = false;
+AirlightResult airlight_in_scatter_point(AirlightScene s_47) {
     bool local_193 = false;
-    bool _e1 = airlight_valid(s_44);
+    bool local_194 = false;
+    bool _e1 = airlight_valid(s_47);
     if (!(!(_e1))) {
-        local_192 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_192 = true;
-    }
-    bool _e10 = local_192;
-    if (!(_e10)) {
-        local_193 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_193 = (s_47.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_193 = true;
     }
-    bool _e18 = local_193;
-    if (_e18) {
-        return AirlightResult(0.0, 1u);
-    }
-    AirlightResult _e22 = airlight_point_integral(s_44);
-    return _e22;
-}
-
-AirlightResult airlight_in_scatter_route(AirlightScene s_45) {
-    bool local_194 = false;
-    bool local_195 = false;
-    bool _e1 = airlight_valid(s_45);
-    if (!(!(_e1))) {
-        local_194 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+    bool _e10 = local_193;
+    if (!(_e10)) {
+        local_194 = (s_47.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_194 = true;
     }
-    bool _e10 = local_194;
-    if (!(_e10)) {
-        local_195 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_195 = true;
-    }
-    bool _e18 = local_195;
+    bool _e18 = local_194;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e22 = airlight_canonical(s_45);
-    AirlightCanonical _e23 = airlight_refined(s_45, _e22);
-    AirlightResult _e24 = airlight_limits(s_45, _e23);
+    AirlightResult _e22 = airlight_point_integral(s_47);
+    return _e22;
+}
+
+AirlightResult airlight_in_scatter_route(AirlightScene s_48) {
+    bool local_195 = false;
+    bool local_196 = false;
+    bool _e1 = airlight_valid(s_48);
+    if (!(!(_e1))) {
+        local_195 = (s_48.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_195 = true;
+    }
+    bool _e10 = local_195;
+    if (!(_e10)) {
+        local_196 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_196 = true;
+    }
+    bool _e18 = local_196;
+    if (_e18) {
+        return AirlightResult(0.0, 1u);
+    }
+    AirlightCanonical _e22 = airlight_canonical(s_48);
+    AirlightCanonical _e23 = airlight_refined(s_48, _e22);
+    AirlightResult _e24 = airlight_limits(s_48, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_45);
+    bool _e29 = airlight_isotropic_scene(s_48);
     if (!(_e29)) {
-        vec2 _e31 = airlight_angle_route(s_45, _e23);
+        vec2 _e31 = airlight_angle_route(s_48, _e23);
         if ((_e31.x > 0.5)) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -7792,23 +8163,23 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_45) {
     return AirlightResult(0.0, 3u);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_46) {
+AirlightResult airlight_in_scatter(AirlightScene s_49) {
     AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
-    float k_8 = 0.0;
+    float k_9 = 0.0;
     float gauss_2 = 0.0;
-    uint j_8 = 0u;
-    bool local_196 = false;
-    float f = 0.0;
+    uint j_10 = 0u;
     bool local_197 = false;
-    bool _e1 = airlight_valid(s_46);
+    float f = 0.0;
+    bool local_198 = false;
+    bool _e1 = airlight_valid(s_49);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    if ((s_46.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_49.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e12 = airlight_outer(s_46);
+    AirlightOuter _e12 = airlight_outer(s_49);
     if ((_e12.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -7819,13 +8190,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    bool loop_init_41 = true;
+    bool loop_init_46 = true;
     while(true) {
-        if (!loop_init_41) {
+        if (!loop_init_46) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_41 = false;
+        loop_init_46 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -7834,67 +8205,67 @@ AirlightResult airlight_in_scatter(AirlightScene s_46) {
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_21 = (0.5 * (_e42 + _e44));
+            float c_24 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_6 = (0.5 * (_e49 - _e51));
-            k_8 = 0.0;
+            float hw_8 = (0.5 * (_e49 - _e51));
+            k_9 = 0.0;
             gauss_2 = 0.0;
-            j_8 = 0u;
-            bool loop_init_42 = true;
+            j_10 = 0u;
+            bool loop_init_47 = true;
             while(true) {
-                if (!loop_init_42) {
-                    uint _e121 = j_8;
-                    j_8 = (_e121 + 1u);
+                if (!loop_init_47) {
+                    uint _e121 = j_10;
+                    j_10 = (_e121 + 1u);
                 }
-                loop_init_42 = false;
-                uint _e61 = j_8;
+                loop_init_47 = false;
+                uint _e61 = j_10;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_8;
+                    uint _e64 = j_10;
                     vec3 node_3 = _e25[(_e64 / 2u)];
-                    uint _e74 = j_8;
+                    uint _e74 = j_10;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_8;
-                        local_196 = (_e81 < 6u);
+                        uint _e81 = j_10;
+                        local_197 = (_e81 < 6u);
                     } else {
-                        local_196 = false;
+                        local_197 = false;
                     }
-                    bool _e85 = local_196;
-                    float w_10 = (_e85 ? (c_21 - (hw_6 * node_3.x)) : (c_21 + (hw_6 * node_3.x)));
-                    AirlightNode _e87 = airlight_outer_node(s_46, _e12, w_10);
+                    bool _e85 = local_197;
+                    float w_11 = (_e85 ? (c_24 - (hw_8 * node_3.x)) : (c_24 + (hw_8 * node_3.x)));
+                    AirlightNode _e87 = airlight_outer_node(s_49, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
                             return _e93;
                         }
-                        if ((s_46.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_49.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_198 = (s_49.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_197 = false;
+                            local_198 = false;
                         }
-                        bool _e106 = local_197;
+                        bool _e106 = local_198;
                         if (_e106) {
                             return _e93;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e110 = k_8;
+                    float _e110 = k_9;
                     float _e112 = f;
-                    k_8 = (_e110 + (node_3.y * _e112));
+                    k_9 = (_e110 + (node_3.y * _e112));
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = (_e115 + (node_3.z * _e117));
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_8;
+            float _e124 = k_9;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_6), (_e126 * hw_6), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_8), (_e126 * hw_8), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

@@ -252,6 +252,18 @@ struct AirlightAbove {
     float rho0_;
     char _pad3[4];
 };
+struct AirlightOutline {
+    airlight_type_8 corners;
+    float radius;
+    char _pad2[4];
+};
+struct AirlightFlatLobe {
+    metal::packed_float3 p;
+    float sign;
+    float scale;
+    float l;
+    metal::float2 q;
+};
 struct AirlightCap {
     metal::packed_float3 a;
     float dc;
@@ -573,10 +585,10 @@ metal::float2 airlight_csqrt(
 metal::float2 airlight_cos_sin(
     float x
 ) {
-    float z_10 = x * x;
-    float c_8 = 1.0 + (z_10 * (-0.5 + (z_10 * (0.041666668 + (z_10 * (-0.0013888889 + (z_10 * (0.000024801588 + (z_10 * (-0.0000002755732 + (z_10 * (0.0000000020876756 + (z_10 * (-0.000000000011470745 + (z_10 * 0.000000000000047794773)))))))))))))));
-    float s_47 = 1.0 + (z_10 * (-0.16666667 + (z_10 * (0.008333334 + (z_10 * (-0.0001984127 + (z_10 * (0.0000027557319 + (z_10 * (-0.000000025052108 + (z_10 * (0.00000000016059044 + (z_10 * (-0.00000000000076471636 + (z_10 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_8, s_47 * x);
+    float z_14 = x * x;
+    float c_8 = 1.0 + (z_14 * (-0.5 + (z_14 * (0.041666668 + (z_14 * (-0.0013888889 + (z_14 * (0.000024801588 + (z_14 * (-0.0000002755732 + (z_14 * (0.0000000020876756 + (z_14 * (-0.000000000011470745 + (z_14 * 0.000000000000047794773)))))))))))))));
+    float s_50 = 1.0 + (z_14 * (-0.16666667 + (z_14 * (0.008333334 + (z_14 * (-0.0001984127 + (z_14 * (0.0000027557319 + (z_14 * (-0.000000025052108 + (z_14 * (0.00000000016059044 + (z_14 * (-0.00000000000076471636 + (z_14 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_8, s_50 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -604,11 +616,11 @@ float airlight_atan(
     }
     float _e17 = t;
     float _e18 = t;
-    float z_11 = _e17 * _e18;
+    float z_15 = _e17 * _e18;
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return _e20 + (((((((((0.080537446 * z_11) - 0.13877685) * z_11) + 0.19977711) * z_11) - 0.3333295) * z_11) * _e32) + _e34);
+    return _e20 + (((((((((0.080537446 * z_15) - 0.13877685) * z_15) + 0.19977711) * z_15) - 0.3333295) * z_15) * _e32) + _e34);
 }
 
 metal::float2 airlight_cln(
@@ -638,10 +650,10 @@ float airlight_log1p(
     if (_e9) {
         return metal::log(1.0 + x_2);
     }
-    float s_48 = x_2 / (2.0 + x_2);
-    float z_12 = s_48 * s_48;
-    float sum_12 = (((((((((((((((z_12 / 17.0) + 0.06666667) * z_12) + 0.07692308) * z_12) + 0.09090909) * z_12) + 0.11111111) * z_12) + 0.14285715) * z_12) + 0.2) * z_12) + 0.33333334) * z_12) + 1.0;
-    return (2.0 * s_48) * sum_12;
+    float s_51 = x_2 / (2.0 + x_2);
+    float z_16 = s_51 * s_51;
+    float sum_14 = (((((((((((((((z_16 / 17.0) + 0.06666667) * z_16) + 0.07692308) * z_16) + 0.09090909) * z_16) + 0.11111111) * z_16) + 0.14285715) * z_16) + 0.2) * z_16) + 0.33333334) * z_16) + 1.0;
+    return (2.0 * s_51) * sum_14;
 }
 
 bool airlight_is_finite(
@@ -728,9 +740,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_25 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_28 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_5 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_25 * x_25) + (y_5 * y_5)) < 1.0;
+    return ((x_28 * x_28) + (y_5 * y_5)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -809,8 +821,8 @@ metal::float2 airlight_e1_scaled_cf(
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = static_cast<float>(_e14);
-    metal::float2 b_13 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
-    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_13);
+    metal::float2 b_14 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_14);
     metal::float2 _e33 = airlight_cmul(_e29, _e29);
     metal::float2 _e35 = airlight_csqrt(metal::float2(1.0, 0.0) - _e33);
     root = _e35;
@@ -820,7 +832,7 @@ metal::float2 airlight_e1_scaled_cf(
         root = -(_e41);
     }
     metal::float2 _e46 = root;
-    metal::float2 _e48 = airlight_cmul(b_13, metal::float2(1.0, 0.0) + _e46);
+    metal::float2 _e48 = airlight_cmul(b_14, metal::float2(1.0, 0.0) + _e46);
     t_1 = _e48 * 0.5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -898,12 +910,12 @@ float airlight_en_scaled_cf(
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = static_cast<float>(n);
     float m_6 = static_cast<float>(_e2);
-    float b_14 = (x_4 + nf_1) + (2.0 * (m_6 + 1.0));
-    float a_28 = (m_6 + 2.0) * ((nf_1 + m_6) + 1.0);
-    float disc = 1.0 - ((4.0 * a_28) / (b_14 * b_14));
-    t_2 = b_14;
+    float b_15 = (x_4 + nf_1) + (2.0 * (m_6 + 1.0));
+    float a_30 = (m_6 + 2.0) * ((nf_1 + m_6) + 1.0);
+    float disc = 1.0 - ((4.0 * a_30) / (b_15 * b_15));
+    t_2 = b_15;
     if (disc > 0.0) {
-        t_2 = (b_14 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_15 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1055,11 +1067,11 @@ float airlight_hg_base(
     float op
 ) {
     if (g_2 >= 0.0) {
-        float a_29 = 1.0 - g_2;
-        return (om * (g_2 + g_2)) + (a_29 * a_29);
+        float a_31 = 1.0 - g_2;
+        return (om * (g_2 + g_2)) + (a_31 * a_31);
     }
-    float b_15 = 1.0 + g_2;
-    return (op * -((g_2 + g_2))) + (b_15 * b_15);
+    float b_16 = 1.0 + g_2;
+    return (op * -((g_2 + g_2))) + (b_16 * b_16);
 }
 
 float airlight_hg(
@@ -1179,8 +1191,8 @@ float airlight_light(
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_26 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
-            return (x_26 * x_26) * (3.0 - (2.0 * x_26));
+            float x_29 = metal::clamp((c - p1_2) / width_1, 0.0, 1.0);
+            return (x_29 * x_29) * (3.0 - (2.0 * x_29));
         }
         default: {
             return 1.0;
@@ -1205,11 +1217,11 @@ float airlight_singular_height(
 float airlight_hg_gap(
     float g_4
 ) {
-    float a_30 = metal::abs(g_4);
-    if (!((a_30 > 0.0))) {
+    float a_32 = metal::abs(g_4);
+    if (!((a_32 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return ((1.0 - a_30) * (1.0 - a_30)) / (a_30 + a_30);
+    return ((1.0 - a_32) * (1.0 - a_32)) / (a_32 + a_32);
 }
 
 metal::float3 airlight_singular_heights(
@@ -1227,8 +1239,8 @@ metal::float3 airlight_singular_heights(
             break;
         }
         case 3u: {
-            float a_31 = metal::abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, (a_31 > 0.0) ? ((1.0 - a_31) / a_31) : AIRLIGHT_FLT_MAX, sigma_1);
+            float a_33 = metal::abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, (a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX, sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1479,10 +1491,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_27 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_27);
+            float x_30 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_30);
             if (_e42) {
-                float _e43 = airlight_log1p(x_27);
+                float _e43 = airlight_log1p(x_30);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1631,8 +1643,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_28 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_28) : x_28;
+    float x_31 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_31) : x_31;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1713,8 +1725,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_29 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_29 * x_29;
+            float x_32 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_32 * x_32;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2066,35 +2078,35 @@ float airlight_error_factor(
         return 1.0;
     }
     float measured = metal::sqrt(last / before);
-    float q_5 = metal::max(measured, (floor > 0.0) ? floor : 0.0);
+    float q_7 = metal::max(measured, (floor > 0.0) ? floor : 0.0);
     float truncation = metal::max(metal::abs(m_1.inner[7]), metal::abs(m_1.inner[6]));
-    if (q_5 < 1.0) {
+    if (q_7 < 1.0) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = true ? ((_e49 * q_5) + metal::abs(m_1.inner[0])) : (_e45 + metal::abs(m_1.inner[0]));
+        aliasing = true ? ((_e49 * q_7) + metal::abs(m_1.inner[0])) : (_e45 + metal::abs(m_1.inner[0]));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = true ? ((_e60 * q_5) + metal::abs(m_1.inner[1])) : (_e56 + metal::abs(m_1.inner[1]));
+        aliasing = true ? ((_e60 * q_7) + metal::abs(m_1.inner[1])) : (_e56 + metal::abs(m_1.inner[1]));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = true ? ((_e71 * q_5) + metal::abs(m_1.inner[2])) : (_e67 + metal::abs(m_1.inner[2]));
+        aliasing = true ? ((_e71 * q_7) + metal::abs(m_1.inner[2])) : (_e67 + metal::abs(m_1.inner[2]));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = true ? ((_e82 * q_5) + metal::abs(m_1.inner[3])) : (_e78 + metal::abs(m_1.inner[3]));
+        aliasing = true ? ((_e82 * q_7) + metal::abs(m_1.inner[3])) : (_e78 + metal::abs(m_1.inner[3]));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = true ? ((_e93 * q_5) + metal::abs(m_1.inner[4])) : (_e89 + metal::abs(m_1.inner[4]));
+        aliasing = true ? ((_e93 * q_7) + metal::abs(m_1.inner[4])) : (_e89 + metal::abs(m_1.inner[4]));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = true ? ((_e104 * q_5) + metal::abs(m_1.inner[5])) : (_e100 + metal::abs(m_1.inner[5]));
+        aliasing = true ? ((_e104 * q_7) + metal::abs(m_1.inner[5])) : (_e100 + metal::abs(m_1.inner[5]));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = true ? ((_e115 * q_5) + metal::abs(m_1.inner[6])) : (_e111 + metal::abs(m_1.inner[6]));
+        aliasing = true ? ((_e115 * q_7) + metal::abs(m_1.inner[6])) : (_e111 + metal::abs(m_1.inner[6]));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = false ? ((_e126 * q_5) + metal::abs(m_1.inner[7])) : (_e122 + metal::abs(m_1.inner[7]));
+        aliasing = false ? ((_e126 * q_7) + metal::abs(m_1.inner[7])) : (_e122 + metal::abs(m_1.inner[7]));
         float _e133 = aliasing;
-        return metal::min((_e133 + (q_5 * truncation)) / m_1.inner[0], 1.0);
+        return metal::min((_e133 + (q_7 * truncation)) / m_1.inner[0], 1.0);
     }
     float _e142 = c_max;
     c_max = metal::max(_e142, metal::abs(c_2.inner[0]));
@@ -2143,8 +2155,8 @@ float airlight_bernstein_rho(
     float im
 ) {
     float im2_ = im * im;
-    float a_32 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
-    return a_32 + metal::sqrt(metal::max((a_32 * a_32) - 1.0, 0.0));
+    float a_34 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
+    return a_34 + metal::sqrt(metal::max((a_34 * a_34) - 1.0, 0.0));
 }
 
 float airlight_transform_noise(
@@ -2165,8 +2177,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_30 = half_5.big_h * _e13;
-    return (x_30 > 0.0) ? metal::exp(-(x_30)) : 1.0;
+    float x_33 = half_5.big_h * _e13;
+    return (x_33 > 0.0) ? metal::exp(-(x_33)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -2253,8 +2265,8 @@ AirlightPanel airlight_v_panel(
             float _e40 = r_2;
             uint _e41 = i_6;
             float _e42 = airlight_node(_e8, _e41);
-            float v_6 = _e39 + (_e40 * _e42);
-            metal::float2 _e48 = airlight_integrand_over(s_6, g_8, half_6.second ? -(sigma_4) : sigma_4, v_6);
+            float v_8 = _e39 + (_e40 * _e42);
+            metal::float2 _e48 = airlight_integrand_over(s_6, g_8, half_6.second ? -(sigma_4) : sigma_4, v_8);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_6;
@@ -2677,13 +2689,13 @@ AirlightPanel airlight_tail_panel(
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_31 = metal::abs(alpha) + metal::abs(beta);
+    float x_34 = metal::abs(alpha) + metal::abs(beta);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_31) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_34) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2693,7 +2705,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_31) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_34) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2703,7 +2715,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_31) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_34) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2713,7 +2725,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_31) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_34) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2723,7 +2735,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_31) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_34) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2733,7 +2745,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_31) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_34) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2743,7 +2755,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_31) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_34) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2753,7 +2765,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_31) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_34) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -3032,13 +3044,13 @@ float airlight_integrate_piece(
                         continue;
                     }
                     float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid = (_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5));
+                    float mid_1 = (_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5));
                     a_10 = wa;
-                    b_9 = mid;
+                    b_9 = mid_1;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -3147,8 +3159,8 @@ float airlight_cut_length(
     float inv_h = 1.0 / big_h_1;
     float w_5 = v_s + inv_h;
     float r_11 = (1.0 + (w_5 * w_5)) / (1.0 + (v_s * v_s));
-    float e_6 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
-    return e_6 * inv_h;
+    float e_9 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
+    return e_9 * inv_h;
 }
 
 float airlight_weighted(
@@ -3282,9 +3294,9 @@ metal::float2 airlight_angle_route(
             break;
         }
         case 3u: {
-            float a_33 = metal::abs(p0_4);
+            float a_35 = metal::abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, (a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, (a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3358,15 +3370,15 @@ metal::float2 airlight_angle_route(
             bool below_1 = lower <= 1.5707964;
             float _e248 = psi1_1;
             metal::float2 _e254 = airlight_cos_sin(below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241))));
-            float cs_1 = _e254.y;
+            float cs_2 = _e254.y;
             float sn = below_1 ? -(_e254.x) : _e254.x;
             float near_pole = 1.0 + _e254.x;
-            float far_pole = (cs_1 * cs_1) / near_pole;
+            float far_pole = (cs_2 * cs_2) / near_pole;
             float one_minus = below_1 ? near_pole : far_pole;
             float one_plus = below_1 ? far_pole : near_pole;
-            float y_9 = below_1 ? (cs_1 / near_pole) : (near_pole / cs_1);
-            float weight_3 = (cs_1 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_9 - _e26), 0.0))) : 0.0;
-            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_1));
+            float y_9 = below_1 ? (cs_2 / near_pole) : (near_pole / cs_2);
+            float weight_3 = (cs_2 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_9 - _e26), 0.0))) : 0.0;
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_2));
             float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = _e288 * _e294;
             float gw = weight_3 * f_2;
@@ -3443,23 +3455,23 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_34 = a0_ / scale_2;
-    float b_16 = b0_ / scale_2;
+    float a_36 = a0_ / scale_2;
+    float b_17 = b0_ / scale_2;
     float c_10 = c0_ / scale_2;
-    float disc_1 = (b_16 * b_16) - ((4.0 * a_34) * c_10);
+    float disc_1 = (b_17 * b_17) - ((4.0 * a_36) * c_10);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_16 < 0.0) {
+    if (b_17 < 0.0) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_6 = -0.5 * (b_16 + (_e47 * metal::sqrt(disc_1)));
-    if (q_6 != 0.0) {
-        r1_ = c_10 / q_6;
+    float q_8 = -0.5 * (b_17 + (_e47 * metal::sqrt(disc_1)));
+    if (q_8 != 0.0) {
+        r1_ = c_10 / q_8;
     }
-    if (a_34 != 0.0) {
-        r2_2 = q_6 / a_34;
+    if (a_36 != 0.0) {
+        r2_2 = q_8 / a_36;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3514,15 +3526,15 @@ bool airlight_dark(
     if (_e31) {
         return false;
     }
-    float a_35 = sigma_11 * g_15.d_el;
+    float a_37 = sigma_11 * g_15.d_el;
     float d_3 = g_15.d_c;
     if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_35 * a_35) + (d_3 * d_3));
-    y1_1 = (root_1 - a_35) / d_3;
-    if (a_35 > 0.0) {
-        y1_1 = d_3 / (a_35 + root_1);
+    float root_1 = metal::sqrt((a_37 * a_37) + (d_3 * d_3));
+    y1_1 = (root_1 - a_37) / d_3;
+    if (a_37 > 0.0) {
+        y1_1 = d_3 / (a_37 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -3993,15 +4005,15 @@ AirlightResult airlight_limits(
     } else {
         local_47 = false;
     }
-    bool inside = local_47;
+    bool inside_1 = local_47;
     if (x_h < t0_) {
         gap_2 = t0_ - x_h;
     } else {
-        if (!(inside)) {
+        if (!(inside_1)) {
             gap_2 = x_h - t1_;
         }
     }
-    if (!(inside)) {
+    if (!(inside_1)) {
         float _e48 = gap_2;
         local_49 = h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS);
     } else {
@@ -4327,8 +4339,8 @@ metal::float3 airlight_normalize(
     metal::float3 v_3
 ) {
     float m_8 = metal::max(metal::abs(v_3.x), metal::max(metal::abs(v_3.y), metal::abs(v_3.z)));
-    metal::float3 u_5 = v_3 / metal::float3(m_8);
-    return u_5 / metal::float3(metal::length(u_5));
+    metal::float3 u_7 = v_3 / metal::float3(m_8);
+    return u_7 / metal::float3(metal::length(u_7));
 }
 
 bool airlight_valid(
@@ -4849,9 +4861,9 @@ metal::float2 airlight_two_sum(
     float _e4 = airlight_opaque(a_13 + b_10, key_1);
     float _e6 = airlight_opaque(_e4 - a_13, key_1);
     float _e8 = airlight_opaque(_e4 - _e6, key_1);
-    float e_7 = (a_13 - _e8) + (b_10 - _e6);
-    bool _e12 = airlight_is_finite(e_7);
-    return metal::float2(_e4, _e12 ? e_7 : 0.0);
+    float e_10 = (a_13 - _e8) + (b_10 - _e6);
+    bool _e12 = airlight_is_finite(e_10);
+    return metal::float2(_e4, _e12 ? e_10 : 0.0);
 }
 
 float airlight_split_high(
@@ -4870,9 +4882,9 @@ metal::float2 airlight_two_product(
     float al = a_14 - _e5;
     float _e7 = airlight_split_high(b_11);
     float bl = b_11 - _e7;
-    float e_8 = ((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl);
-    bool _e17 = airlight_is_finite(e_8);
-    return metal::float2(_e4, _e17 ? e_8 : 0.0);
+    float e_11 = ((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl);
+    bool _e17 = airlight_is_finite(e_11);
+    return metal::float2(_e4, _e17 ? e_11 : 0.0);
 }
 
 float airlight_diff_of_products(
@@ -5429,9 +5441,9 @@ AirlightSplit airlight_split_worst(
             }
             AirlightPanelList _e30 = list_1;
             metal::float4 _e32 = airlight_list_get(_e30, _e9.worst);
-            float mid_1 = 0.5 * (_e32.x + _e32.y);
-            if (mid_1 > _e32.x) {
-                local_130 = mid_1 < _e32.y;
+            float mid_2 = 0.5 * (_e32.x + _e32.y);
+            if (mid_2 > _e32.x) {
+                local_130 = mid_2 < _e32.y;
             } else {
                 local_130 = false;
             }
@@ -5440,7 +5452,7 @@ AirlightSplit airlight_split_worst(
                 airlight_list_set(list_1, _e9.worst, metal::float4(_e32.xyz, 0.0));
                 continue;
             }
-            return AirlightSplit {true, {}, _e32.x, mid_1, _e32.y, _e9.worst};
+            return AirlightSplit {true, {}, _e32.x, mid_2, _e32.y, _e9.worst};
         }
     }
     return AirlightSplit {false, {}, 0.0, 0.0, 0.0, 0u};
@@ -5512,10 +5524,10 @@ float airlight_asinh(
     float x_15
 ) {
     float r_4 = {};
-    float a_36 = metal::abs(x_15);
-    r_4 = AIRLIGHT_LN_2_ + metal::log(a_36);
-    if (a_36 <= 4096.0) {
-        float _e17 = airlight_log1p(a_36 + ((a_36 * a_36) / (1.0 + metal::sqrt(1.0 + (a_36 * a_36)))));
+    float a_38 = metal::abs(x_15);
+    r_4 = AIRLIGHT_LN_2_ + metal::log(a_38);
+    if (a_38 <= 4096.0) {
+        float _e17 = airlight_log1p(a_38 + ((a_38 * a_38) / (1.0 + metal::sqrt(1.0 + (a_38 * a_38)))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5538,17 +5550,17 @@ metal::float2 airlight_cos_sin_half_turn(
     float x_16
 ) {
     float r_12 = x_16 - 1.5707964;
-    float z_13 = r_12 * r_12;
-    float cos_r = 1.0 - ((z_13 / 2.0) * (1.0 - ((z_13 / 12.0) * (1.0 - ((z_13 / 30.0) * (1.0 - ((z_13 / 56.0) * (1.0 - ((z_13 / 90.0) * (1.0 - ((z_13 / 132.0) * (1.0 - (z_13 / 182.0)))))))))))));
-    float sin_r = r_12 * (1.0 - ((z_13 / 6.0) * (1.0 - ((z_13 / 20.0) * (1.0 - ((z_13 / 42.0) * (1.0 - ((z_13 / 72.0) * (1.0 - ((z_13 / 110.0) * (1.0 - ((z_13 / 156.0) * (1.0 - (z_13 / 210.0))))))))))))));
+    float z_17 = r_12 * r_12;
+    float cos_r = 1.0 - ((z_17 / 2.0) * (1.0 - ((z_17 / 12.0) * (1.0 - ((z_17 / 30.0) * (1.0 - ((z_17 / 56.0) * (1.0 - ((z_17 / 90.0) * (1.0 - ((z_17 / 132.0) * (1.0 - (z_17 / 182.0)))))))))))));
+    float sin_r = r_12 * (1.0 - ((z_17 / 6.0) * (1.0 - ((z_17 / 20.0) * (1.0 - ((z_17 / 42.0) * (1.0 - ((z_17 / 72.0) * (1.0 - ((z_17 / 110.0) * (1.0 - ((z_17 / 156.0) * (1.0 - (z_17 / 210.0))))))))))))));
     return metal::float2(-(sin_r), cos_r);
 }
 
 float airlight_acos(
     float x_17
 ) {
-    float a_37 = metal::abs(x_17);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_37) / (1.0 + a_37)));
+    float a_39 = metal::abs(x_17);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_39) / (1.0 + a_39)));
     return (x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
@@ -5566,12 +5578,12 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_38 = cos_a * cos_g;
-    float b_17 = sin_a * sin_g;
-    if (b_17 <= metal::abs(a_38)) {
-        return (a_38 > 0.0) ? AIRLIGHT_PI : 0.0;
+    float a_40 = cos_a * cos_g;
+    float b_18 = sin_a * sin_g;
+    if (b_18 <= metal::abs(a_40)) {
+        return (a_40 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_38) / b_17, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_40) / b_18, -1.0, 1.0));
     return _e18;
 }
 
@@ -5658,22 +5670,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_24.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_32 = metal::dot(_e111, _e112);
+        float x_35 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
         float y_10 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_32 * x_32) + (y_10 * y_10));
+        g_22.sin_r = metal::sqrt((x_35 * x_35) + (y_10 * y_10));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_32, metal::abs(y_10));
+            float _e140 = airlight_angle(x_35, metal::abs(y_10));
             float phi_r = ((y_10 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_32 / _e145, -(y_10) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_35 / _e145, -(y_10) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -5842,33 +5854,33 @@ AirlightOuter airlight_surface(
             }
             {
                 uint _e339 = i_22;
-                float e_9 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
-                if (!((e_9 == kinks.inner[0]))) {
-                    local_134 = e_9 == kinks.inner[1];
+                float e_12 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
+                if (!((e_12 == kinks.inner[0]))) {
+                    local_134 = e_12 == kinks.inner[1];
                 } else {
                     local_134 = true;
                 }
                 bool _e350 = local_134;
                 if (!(_e350)) {
-                    local_135 = e_9 == kinks.inner[2];
+                    local_135 = e_12 == kinks.inner[2];
                 } else {
                     local_135 = true;
                 }
                 bool _e357 = local_135;
                 if (!(_e357)) {
-                    local_136 = e_9 == kinks.inner[3];
+                    local_136 = e_12 == kinks.inner[3];
                 } else {
                     local_136 = true;
                 }
                 bool _e364 = local_136;
                 if (!(_e364)) {
-                    local_137 = e_9 == kinks.inner[4];
+                    local_137 = e_12 == kinks.inner[4];
                 } else {
                     local_137 = true;
                 }
                 bool _e371 = local_137;
                 if (!(_e371)) {
-                    local_138 = e_9 == kinks.inner[5];
+                    local_138 = e_12 == kinks.inner[5];
                 } else {
                     local_138 = true;
                 }
@@ -6027,14 +6039,14 @@ float airlight_lobe_arcs(
     metal::float2 _e20 = airlight_cos_sin(0.5 * (gamma - g_23.alpha_r));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p((-2.0 * sin_gap) * sin_gap);
-    AirlightLobe q_7 = AirlightLobe {g_23.cos_a * cs.x, g_23.sin_a * cs.y, (2.0 * d_4) / peak, _e34, g_23.delta[1], g_23.delta[2], exponent_1};
+    AirlightLobe q_9 = AirlightLobe {g_23.cos_a * cs.x, g_23.sin_a * cs.y, (2.0 * d_4) / peak, _e34, g_23.delta[1], g_23.delta[2], exponent_1};
     if (exponent_1 > 0.0) {
         float _e46 = airlight_expm1_(AIRLIGHT_LN_LOBE_FLOOR / exponent_1);
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = (_e51 < q_7.k) ? (_e48 / q_7.k) : 1.0;
+    float s2_1 = (_e51 < q_9.k) ? (_e48 / q_9.k) : 1.0;
     float _e60 = airlight_angle(metal::sqrt(1.0 - s2_1), metal::sqrt(s2_1));
     float cut_2 = 2.0 * _e60;
     if (psi_n < AIRLIGHT_PI) {
@@ -6072,7 +6084,7 @@ float airlight_lobe_arcs(
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_7, edges_1.inner[metal::min(unsigned(_e103), 3u)], edges_1.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_9, edges_1.inner[metal::min(unsigned(_e103), 3u)], edges_1.inner[metal::min(unsigned(_e105 + 1u), 3u)], smoothstep_2);
             sum_6 = _e102 + _e109;
         }
     }
@@ -6137,11 +6149,11 @@ AirlightOuter airlight_outer(
         AirlightOuter _e37 = g_24;
         return _e37;
     }
-    metal::float3 e_10 = ab_1 / metal::float3(_e15);
+    metal::float3 e_13 = ab_1 / metal::float3(_e15);
     metal::float3 _e41 = airlight_normalize(s_25.dir);
     metal::float3 w0_ = s_25.light_position - s_25.origin;
-    float cos_a_2 = metal::dot(e_10, _e41);
-    float along_e = metal::dot(e_10, w0_);
+    float cos_a_2 = metal::dot(e_13, _e41);
+    float along_e = metal::dot(e_13, w0_);
     float along_d = metal::dot(_e41, w0_);
     float sin2_ = 1.0 - (cos_a_2 * cos_a_2);
     bool infinite_5 = (s_25.flags & 1u) != 0u;
@@ -6152,7 +6164,7 @@ AirlightOuter airlight_outer(
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_10 * _e70));
+    float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_13 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
         local_144 = sin_a_1 > 0.0;
@@ -6246,7 +6258,7 @@ AirlightOuter airlight_outer(
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_10;
+    g_24.e = e_13;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6369,16 +6381,16 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_33 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_25.panels - 1u);
-        float t_8 = x_20 - static_cast<float>(i_33);
-        float a_39 = g_25.gamma.inner[metal::min(unsigned(i_33), 12u)];
-        float b_18 = g_25.gamma.inner[metal::min(unsigned(i_33 + 1u), 12u)];
-        float w_9 = b_18 - a_39;
-        float u_6 = 1.0 - t_8;
-        bool smooth_a = ((g_25.smooth_edges >> i_33) & 1u) != 0u;
-        bool smooth_b = ((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u;
-        gamma_1 = a_39 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8));
-        jacobian = ((w_9 * 6.0) * t_8) * u_6;
+        uint i_36 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_25.panels - 1u);
+        float t_8 = x_20 - static_cast<float>(i_36);
+        float a_41 = g_25.gamma.inner[metal::min(unsigned(i_36), 12u)];
+        float b_19 = g_25.gamma.inner[metal::min(unsigned(i_36 + 1u), 12u)];
+        float w_9 = b_19 - a_41;
+        float u_8 = 1.0 - t_8;
+        bool smooth_a = ((g_25.smooth_edges >> i_36) & 1u) != 0u;
+        bool smooth_b = ((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u;
+        gamma_1 = a_41 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8));
+        jacobian = ((w_9 * 6.0) * t_8) * u_8;
         float _e58 = gamma_1;
         if (smooth_b) {
             local_160 = !(smooth_a);
@@ -6386,7 +6398,7 @@ AirlightNode airlight_outer_node(
             local_160 = false;
         }
         bool _e66 = local_160;
-        gamma_1 = _e66 ? (a_39 + ((w_9 * t_8) * t_8)) : _e58;
+        gamma_1 = _e66 ? (a_41 + ((w_9 * t_8) * t_8)) : _e58;
         float _e68 = jacobian;
         if (smooth_b) {
             local_161 = !(smooth_a);
@@ -6402,7 +6414,7 @@ AirlightNode airlight_outer_node(
             local_162 = false;
         }
         bool _e85 = local_162;
-        gamma_1 = _e85 ? (b_18 - ((w_9 * u_6) * u_6)) : _e77;
+        gamma_1 = _e85 ? (b_19 - ((w_9 * u_8) * u_8)) : _e77;
         float _e87 = jacobian;
         if (smooth_a) {
             local_163 = !(smooth_b);
@@ -6410,7 +6422,7 @@ AirlightNode airlight_outer_node(
             local_163 = false;
         }
         bool _e94 = local_163;
-        jacobian = _e94 ? (w_9 * (u_6 + u_6)) : _e87;
+        jacobian = _e94 ? (w_9 * (u_8 + u_8)) : _e87;
         float _e96 = gamma_1;
         if (smooth_a) {
             local_164 = smooth_b;
@@ -6418,7 +6430,7 @@ AirlightNode airlight_outer_node(
             local_164 = false;
         }
         bool _e102 = local_164;
-        gamma_1 = _e102 ? (a_39 + (w_9 * t_8)) : _e96;
+        gamma_1 = _e102 ? (a_41 + (w_9 * t_8)) : _e96;
         float _e104 = jacobian;
         if (smooth_a) {
             local_165 = smooth_b;
@@ -6666,8 +6678,8 @@ metal::float4 airlight_phase_lobes(
             break;
         }
         case 3u: {
-            float a_40 = metal::abs(p0_5);
-            metal::float2 _e21 = airlight_lobe(p0_5, (a_40 > 0.0) ? ((1.0 - a_40) / a_40) : AIRLIGHT_FLT_MAX);
+            float a_42 = metal::abs(p0_5);
+            metal::float2 _e21 = airlight_lobe(p0_5, (a_42 > 0.0) ? ((1.0 - a_42) / a_42) : AIRLIGHT_FLT_MAX);
             first = _e21;
             break;
         }
@@ -6721,9 +6733,9 @@ float airlight_area_theta(
     if (infinite_3) {
         return 1.5707964;
     }
-    float u_7 = t_3 - a_17.x_h;
-    float _e13 = airlight_atan2_upper(metal::abs(u_7), a_17.h_eff);
-    return ((u_7 >= 0.0) ? 1.0 : -1.0) * _e13;
+    float u_9 = t_3 - a_17.x_h;
+    float _e13 = airlight_atan2_upper(metal::abs(u_9), a_17.h_eff);
+    return ((u_9 >= 0.0) ? 1.0 : -1.0) * _e13;
 }
 
 AirlightArea airlight_area(
@@ -6801,7 +6813,7 @@ AirlightArea airlight_area(
         AirlightArea _e89 = a_18;
         return _e89;
     }
-    metal::float3 o = s_30.origin;
+    metal::float3 o_5 = s_30.origin;
     metal::float3 _e92 = airlight_normalize(s_30.dir);
     a_18.d = _e92;
     bool infinite_6 = (s_30.flags & 1u) != 0u;
@@ -6810,17 +6822,17 @@ AirlightArea airlight_area(
     size = s_30.light_param_a;
     if (s_30.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         metal::float3 _e114 = a_18.c;
-        metal::float3 oc = o - _e114;
-        float b_19 = metal::dot(oc, _e92);
+        metal::float3 oc = o_5 - _e114;
+        float b_20 = metal::dot(oc, _e92);
         float _e119 = a_18.radius;
         float _e121 = a_18.radius;
-        float k_9 = metal::dot(oc, oc) - (_e119 * _e121);
-        float disc_2 = (b_19 * b_19) - k_9;
+        float k_10 = metal::dot(oc, oc) - (_e119 * _e121);
+        float disc_2 = (b_20 * b_20) - k_10;
         if (disc_2 > 0.0) {
             float root_2 = metal::sqrt(disc_2);
-            float q_8 = -(b_19) - (((as_type<uint>(b_19) & 2147483648u) != 0u) ? -(root_2) : root_2);
-            cut0_ = q_8;
-            cut1_ = k_9 / q_8;
+            float q_10 = -(b_20) - (((as_type<uint>(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2);
+            cut0_ = q_10;
+            cut1_ = k_10 / q_10;
             cut_count = 2u;
         }
     } else {
@@ -6861,7 +6873,7 @@ AirlightArea airlight_area(
         metal::float3 _e203 = a_18.c;
         metal::float3 _e206 = a_18.n;
         metal::float3 _e209 = a_18.n;
-        cut0_ = metal::dot(_e203 - o, _e206) / metal::dot(_e92, _e209);
+        cut0_ = metal::dot(_e203 - o_5, _e206) / metal::dot(_e92, _e209);
         cut_count = 1u;
     }
     float _e213 = size;
@@ -6871,7 +6883,7 @@ AirlightArea airlight_area(
         return _e219;
     }
     metal::float3 _e220 = centre;
-    metal::float3 to_centre = _e220 - o;
+    metal::float3 to_centre = _e220 - o_5;
     a_18.x_h = metal::dot(to_centre, _e92);
     float _e225 = a_18.x_h;
     float _e228 = airlight_safe_length(to_centre - (_e225 * _e92));
@@ -6882,7 +6894,7 @@ AirlightArea airlight_area(
     end_infinite = infinite_6;
     if (s_30.sigma_t > 0.0) {
         metal::float3 _e242 = centre;
-        float _e246 = airlight_safe_length(_e242 - (o + (t0_2 * _e92)));
+        float _e246 = airlight_safe_length(_e242 - (o_5 + (t0_2 * _e92)));
         float _e248 = size;
         float reach_1 = ((t0_2 + _e246) + _e248) - (-15.942385 / s_30.sigma_t);
         if (!(infinite_6)) {
@@ -6986,11 +6998,11 @@ float airlight_flat_node(
     float r_13 = (above_1.rho0_ * _e5.y) / _e5.x;
     float dr = above_1.rho0_ / (_e5.x * _e5.x);
     metal::float2 p_3 = above_1.off + (r_13 * e_3);
-    float z_14 = above_1.z;
-    float dist = metal::sqrt(((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y));
+    float z_18 = above_1.z;
+    float dist = metal::sqrt(((z_18 * z_18) + (p_3.x * p_3.x)) + (p_3.y * p_3.y));
     float inv_5 = 1.0 / dist;
-    float cos = z_14 * inv_5;
-    float _e47 = airlight_area_phase(s_31, (((p_3.x * a_19.dirs[0]) + (p_3.y * a_19.dirs[1])) - (z_14 * a_19.dirs[2])) * inv_5);
+    float cos = z_18 * inv_5;
+    float _e47 = airlight_area_phase(s_31, (((p_3.x * a_19.dirs[0]) + (p_3.y * a_19.dirs[1])) - (z_18 * a_19.dirs[2])) * inv_5);
     float _e48 = airlight_emitted(s_31, cos);
     return ((((((_e48 * metal::exp(metal::min(-(s_31.sigma_t) * dist, 0.0))) * _e47) * cos) * inv_5) * inv_5) * r_13) * dr;
 }
@@ -7058,226 +7070,651 @@ float airlight_flat_radial(
     return _e158;
 }
 
-float airlight_disc(
-    AirlightScene s_33,
-    AirlightArea a_21,
-    metal::float3 x_21
+metal::float2 airlight_outline_nearest(
+    AirlightOutline o,
+    metal::float2 q_4
 ) {
-    metal::float2 u_4 = metal::float2(0.0);
-    AirlightAbove above_3 = {};
-    float sum_8 = 0.0;
+    float best = AIRLIGHT_FLT_MAX;
+    metal::float2 nearest = {};
+    bool inside = true;
     uint i_28 = 0u;
-    metal::float2 e_5 = {};
-    float r_max_1 = {};
-    metal::float3 rel = x_21 - a_21.c;
-    float z_15 = metal::dot(rel, a_21.n);
-    if (!((z_15 > 0.0))) {
-        return 0.0;
+    bool local_179 = {};
+    if (o.radius > 0.0) {
+        metal::float2 qc = q_4 - o.corners.inner[0];
+        float dq = metal::sqrt((qc.x * qc.x) + (qc.y * qc.y));
+        if (dq <= o.radius) {
+            return q_4;
+        }
+        return o.corners.inner[0] + ((qc * o.radius) / metal::float2(dq));
     }
-    float fx = metal::dot(rel, a_21.a1_);
-    float fy_1 = metal::dot(rel, a_21.a2_);
-    float rf = metal::sqrt((fx * fx) + (fy_1 * fy_1));
-    float radius_2 = a_21.radius;
-    bool inside_1 = rf <= radius_2;
-    AirlightAbove _e26 = airlight_above(z_15, metal::float2(0.0));
-    above_3 = _e26;
-    if (!(inside_1)) {
-        u_4 = metal::float2(-(fx) / rf, -(fy_1) / rf);
-        metal::float2 _e35 = u_4;
-        AirlightAbove _e37 = airlight_above(z_15, (rf - radius_2) * _e35);
-        above_3 = _e37;
-    }
-    float k_10 = (rf - radius_2) * (rf + radius_2);
+    nearest = q_4;
     uint2 loop_bound_33 = uint2(4294967295u);
     bool loop_init_32 = true;
     while(true) {
         if (metal::all(loop_bound_33 == uint2(0u))) { break; }
         loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
         if (!loop_init_32) {
-            uint _e99 = i_28;
-            i_28 = _e99 + 1u;
+            uint _e106 = i_28;
+            i_28 = _e106 + 1u;
         }
         loop_init_32 = false;
-        uint _e45 = i_28;
-        if (_e45 < 32u) {
+        uint _e32 = i_28;
+        if (_e32 < 4u) {
         } else {
             break;
         }
         {
-            uint _e48 = i_28;
-            metal::float3 _e49 = airlight_azimuths(inside_1, _e48);
-            float _e52 = u_4.x;
-            float _e56 = u_4.y;
-            float _e61 = u_4.y;
-            float _e65 = u_4.x;
-            e_5 = metal::float2((_e49.x * _e52) - (_e49.y * _e56), (_e49.x * _e61) + (_e49.y * _e65));
-            r_max_1 = (radius_2 + radius_2) * _e49.x;
-            if (inside_1) {
-                e_5 = _e49.xy;
-                float b_20 = (fx * _e49.x) + (fy_1 * _e49.y);
-                float root_3 = metal::sqrt((b_20 * b_20) - k_10);
-                r_max_1 = (b_20 > 0.0) ? (-(k_10) / (b_20 + root_3)) : (root_3 - b_20);
+            uint _e36 = i_28;
+            metal::float2 a_43 = o.corners.inner[metal::min(unsigned(_e36), 3u)];
+            uint _e39 = i_28;
+            metal::float2 e_14 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e39 + 1u, 4u)), 3u)] - a_43;
+            bool _e46 = inside;
+            if (_e46) {
+                local_179 = (((q_4.x - o.corners.inner[metal::min(unsigned(_e36), 3u)].x) * e_14.y) - ((q_4.y - o.corners.inner[metal::min(unsigned(_e36), 3u)].y) * e_14.x)) <= 0.0;
+            } else {
+                local_179 = false;
             }
-            float _e90 = sum_8;
-            AirlightAbove _e92 = above_3;
-            metal::float2 _e93 = e_5;
-            float _e94 = r_max_1;
-            float _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
-            sum_8 = _e90 + (_e49.z * _e95);
+            bool _e63 = local_179;
+            inside = _e63;
+            float t_10 = metal::clamp((((q_4.x - o.corners.inner[metal::min(unsigned(_e36), 3u)].x) * e_14.x) + ((q_4.y - o.corners.inner[metal::min(unsigned(_e36), 3u)].y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y)), 0.0, 1.0);
+            metal::float2 p_4 = a_43 + (t_10 * e_14);
+            float dd = ((p_4.x - q_4.x) * (p_4.x - q_4.x)) + ((p_4.y - q_4.y) * (p_4.y - q_4.y));
+            float _e103 = best;
+            if (dd < _e103) {
+                best = dd;
+                nearest = p_4;
+            }
         }
     }
-    float _e101 = sum_8;
-    return _e101;
+    metal::float2 _e108 = nearest;
+    bool _e109 = inside;
+    return _e109 ? q_4 : _e108;
 }
 
-float airlight_parallelogram(
-    AirlightScene s_34,
-    AirlightArea a_22,
-    metal::float3 x_22
+AirlightFlatLobe airlight_flat_lobe(
+    AirlightArea a_21,
+    float z_10,
+    AirlightOutline o_1,
+    metal::float2 centre_1,
+    float size_1
 ) {
-    metal::float2 q_4 = {};
-    bool local_179 = {};
+    uint j_5 = 0u;
     bool local_180 = {};
     bool local_181 = {};
-    float best = AIRLIGHT_FLT_MAX;
-    uint i_29 = 0u;
-    float sum_9 = 0.0;
-    uint i_30 = 0u;
-    uint j_5 = {};
-    metal::float3 rel_1 = x_22 - a_22.c;
-    float z_16 = metal::dot(rel_1, a_22.n);
-    if (!((z_16 > 0.0))) {
-        return 0.0;
-    }
-    metal::float2 foot = metal::float2(metal::dot(rel_1, a_22.a1_), metal::dot(rel_1, a_22.a2_));
-    metal::float2 u2_ = metal::float2(metal::dot(a_22.eu, a_22.a1_), metal::dot(a_22.eu, a_22.a2_));
-    metal::float2 v2_ = metal::float2(metal::dot(a_22.ev, a_22.a1_), metal::dot(a_22.ev, a_22.a2_));
-    airlight_type_18 corners = airlight_type_18 {{metal::float2(0.0), u2_, u2_ + v2_, v2_, metal::float2(0.0)}};
-    float det = (u2_.x * v2_.y) - (u2_.y * v2_.x);
-    float fu = ((foot.x * v2_.y) - (foot.y * v2_.x)) / det;
-    float fv = ((u2_.x * foot.y) - (u2_.y * foot.x)) / det;
-    q_4 = foot;
-    if (fu >= 0.0) {
-        local_179 = fu <= 1.0;
-    } else {
-        local_179 = false;
-    }
-    bool _e67 = local_179;
-    if (_e67) {
-        local_180 = fv >= 0.0;
-    } else {
-        local_180 = false;
-    }
-    bool _e73 = local_180;
-    if (_e73) {
-        local_181 = fv <= 1.0;
-    } else {
-        local_181 = false;
-    }
-    bool _e79 = local_181;
-    if (!(_e79)) {
-        uint2 loop_bound_34 = uint2(4294967295u);
-        bool loop_init_33 = true;
-        while(true) {
-            if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-            loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-            if (!loop_init_33) {
-                uint _e137 = i_29;
-                i_29 = _e137 + 1u;
-            }
-            loop_init_33 = false;
-            uint _e85 = i_29;
-            if (_e85 < 4u) {
-            } else {
-                break;
-            }
-            {
-                uint _e88 = i_29;
-                metal::float2 c0_1 = corners.inner[metal::min(unsigned(_e88), 4u)];
-                uint _e90 = i_29;
-                metal::float2 e_11 = corners.inner[metal::min(unsigned(_e90 + 1u), 4u)] - c0_1;
-                float t_10 = metal::clamp((((foot.x - corners.inner[metal::min(unsigned(_e88), 4u)].x) * e_11.x) + ((foot.y - corners.inner[metal::min(unsigned(_e88), 4u)].y) * e_11.y)) / ((e_11.x * e_11.x) + (e_11.y * e_11.y)), 0.0, 1.0);
-                metal::float2 p_4 = c0_1 + (t_10 * e_11);
-                float dd = ((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y));
-                float _e134 = best;
-                if (dd < _e134) {
-                    best = dd;
-                    q_4 = p_4;
-                }
-            }
-        }
-    }
-    metal::float2 _e139 = q_4;
-    AirlightAbove _e141 = airlight_above(z_16, _e139 - foot);
-    float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
-    uint2 loop_bound_35 = uint2(4294967295u);
-    bool loop_init_34 = true;
+    bool local_182 = {};
+    float _e10 = airlight_atan(size_1 / metal::sqrt(metal::dot(centre_1, centre_1) + (z_10 * z_10)));
+    uint2 loop_bound_34 = uint2(4294967295u);
+    bool loop_init_33 = true;
     while(true) {
-        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-        if (!loop_init_34) {
-            uint _e254 = i_30;
-            i_30 = _e254 + 1u;
+        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_33) {
+            uint _e74 = j_5;
+            j_5 = _e74 + 1u;
         }
-        loop_init_34 = false;
-        uint _e149 = i_30;
-        if (_e149 < 4u) {
+        loop_init_33 = false;
+        uint _e13 = j_5;
+        if (_e13 < 2u) {
         } else {
             break;
         }
         {
-            uint _e152 = i_30;
-            metal::float2 _e154 = q_4;
-            metal::float2 ca = corners.inner[metal::min(unsigned(_e152), 4u)] - _e154;
-            uint _e156 = i_30;
-            metal::float2 _e160 = q_4;
-            metal::float2 cb = corners.inner[metal::min(unsigned(_e156 + 1u), 4u)] - _e160;
-            float area = (ca.x * cb.y) - (ca.y * cb.x);
-            if (!((area > thin))) {
-                continue;
+            uint _e20 = j_5;
+            metal::float2 lobe_4 = (_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy;
+            metal::float3 p_5 = lobe_4.x * a_21.dirs;
+            if (lobe_4.y > 0.0) {
+                local_180 = p_5.z < 0.0;
+            } else {
+                local_180 = false;
             }
-            metal::float2 e_12 = cb - ca;
-            float el = metal::sqrt((e_12.x * e_12.x) + (e_12.y * e_12.y));
-            float h_9 = area / el;
-            metal::float2 m_11 = metal::float2(e_12.y / el, -(e_12.x) / el);
-            float _e194 = airlight_atan2_upper(area, (ca.x * cb.x) + (ca.y * cb.y));
-            metal::float2 start_3 = ca / metal::float2(metal::sqrt((ca.x * ca.x) + (ca.y * ca.y)));
-            j_5 = 0u;
-            uint2 loop_bound_36 = uint2(4294967295u);
-            bool loop_init_35 = true;
-            while(true) {
-                if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-                loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                if (!loop_init_35) {
-                    uint _e251 = j_5;
-                    j_5 = _e251 + 1u;
+            bool _e36 = local_180;
+            if (_e36) {
+                local_181 = lobe_4.y < (_e10 + _e10);
+            } else {
+                local_181 = false;
+            }
+            bool _e43 = local_181;
+            if (_e43) {
+                float l_4 = z_10 / -(p_5.z);
+                metal::float2 q_11 = l_4 * p_5.xy;
+                metal::float2 _e49 = airlight_outline_nearest(o_1, q_11);
+                metal::float3 to_near = metal::float3(_e49, -(z_10));
+                float cos_1 = metal::min(metal::dot(p_5, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
+                if (!(metal::all(_e49 == q_11))) {
+                    float _e63 = airlight_acos(cos_1);
+                    local_182 = _e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
+                } else {
+                    local_182 = true;
                 }
-                loop_init_35 = false;
-                uint _e207 = j_5;
-                if (_e207 < 12u) {
+                bool _e69 = local_182;
+                if (_e69) {
+                    return AirlightFlatLobe {p_5, lobe_4.x, lobe_4.y, l_4, q_11};
+                }
+            }
+        }
+    }
+    return AirlightFlatLobe {metal::float3(0.0), 1.0, 0.0, 0.0, metal::float2(0.0)};
+}
+
+metal::float2 airlight_clip(
+    metal::float2 chord,
+    metal::float2 a_22,
+    metal::float2 b_13,
+    metal::float2 q_5,
+    metal::float2 e_5
+) {
+    metal::float2 m_11 = metal::float2(b_13.y - a_22.y, a_22.x - b_13.x);
+    float num = ((q_5.x - a_22.x) * m_11.x) + ((q_5.y - a_22.y) * m_11.y);
+    float den = (e_5.x * m_11.x) + (e_5.y * m_11.y);
+    if (den > 0.0) {
+        return metal::float2(chord.x, metal::min(chord.y, -(num) / den));
+    }
+    if (den < 0.0) {
+        return metal::float2(metal::max(chord.x, -(num) / den), chord.y);
+    }
+    if (num > 0.0) {
+        return metal::float2(1.0, 0.0);
+    }
+    return chord;
+}
+
+metal::float2 airlight_outline_chord(
+    AirlightOutline o_2,
+    metal::float2 q_6,
+    metal::float2 e_6
+) {
+    metal::float2 chord_1 = metal::float2(0.0, 340282350000000000000000000000000000000.0);
+    if (o_2.radius > 0.0) {
+        metal::float2 qc_1 = q_6 - o_2.corners.inner[0];
+        float a_44 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
+        float b_21 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
+        float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
+        float k_11 = (dq_1 - o_2.radius) * (dq_1 + o_2.radius);
+        float disc_3 = (b_21 * b_21) - (a_44 * k_11);
+        if (!((disc_3 > 0.0))) {
+            return metal::float2(0.0);
+        }
+        float root_3 = metal::sqrt(disc_3);
+        float t_11 = -(b_21) - (((as_type<uint>(b_21) & 2147483648u) != 0u) ? -(root_3) : root_3);
+        float r1_2 = t_11 / a_44;
+        float r2_3 = k_11 / t_11;
+        float hi_8 = metal::max(r1_2, r2_3);
+        if (!((hi_8 > 0.0))) {
+            return metal::float2(0.0);
+        }
+        return metal::float2(metal::max(metal::min(r1_2, r2_3), 0.0), hi_8);
+    }
+    metal::float2 _e70 = chord_1;
+    metal::float2 _e75 = airlight_clip(_e70, o_2.corners.inner[0], o_2.corners.inner[1], q_6, e_6);
+    chord_1 = _e75;
+    metal::float2 _e76 = chord_1;
+    metal::float2 _e81 = airlight_clip(_e76, o_2.corners.inner[1], o_2.corners.inner[2], q_6, e_6);
+    chord_1 = _e81;
+    metal::float2 _e82 = chord_1;
+    metal::float2 _e87 = airlight_clip(_e82, o_2.corners.inner[2], o_2.corners.inner[3], q_6, e_6);
+    chord_1 = _e87;
+    metal::float2 _e88 = chord_1;
+    metal::float2 _e93 = airlight_clip(_e88, o_2.corners.inner[3], o_2.corners.inner[0], q_6, e_6);
+    return _e93;
+}
+
+float airlight_flat_lobe_node(
+    AirlightScene s_33,
+    float z_11,
+    AirlightFlatLobe lobe_1,
+    float k_7,
+    float start_1,
+    float graded,
+    float g_27
+) {
+    metal::float2 _e7 = airlight_cos_sin_half_turn(g_27);
+    metal::float2 _e13 = airlight_cos_sin_half_turn(start_1 + ((graded * _e7.y) / _e7.x));
+    float c_17 = -(lobe_1.p[2]) * (_e13.x - (k_7 * _e13.y));
+    if (!((c_17 > 0.0))) {
+        return 0.0;
+    }
+    float _e26 = airlight_emitted(s_33, c_17);
+    float _e38 = airlight_area_phase(s_33, lobe_1.sign * _e13.x);
+    return ((((_e26 * metal::exp(metal::min((-(s_33.sigma_t) * z_11) / c_17, 0.0))) * _e38) * _e13.y) * graded) / (_e7.x * _e7.x);
+}
+
+float airlight_flat_lobe_along(
+    AirlightScene s_34,
+    float z_12,
+    AirlightOutline o_3,
+    AirlightFlatLobe lobe_2,
+    metal::float3 u_4,
+    metal::float3 v_6,
+    metal::float2 cs_1
+) {
+    float sum_8 = 0.0;
+    metal::float3 w_10 = (cs_1.x * u_4) + (cs_1.y * v_6);
+    float k_12 = w_10.z / -(lobe_2.p[2]);
+    metal::float2 _e23 = airlight_outline_chord(o_3, lobe_2.q, w_10.xy + (k_12 * metal::float3(lobe_2.p).xy));
+    if (!((_e23.x < _e23.y))) {
+        return 0.0;
+    }
+    float _e34 = airlight_atan2_upper(_e23.x, lobe_2.l + (k_12 * _e23.x));
+    float _e40 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_12 * _e23.y));
+    float graded_4 = metal::max(lobe_2.scale, _e34);
+    float _e45 = airlight_atan((_e40 - _e34) / graded_4);
+    float c_18 = 0.5 * _e45;
+    float hw_3 = 0.5 * _e45;
+    float _e52 = sum_8;
+    float _e58 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.09501251 * hw_3));
+    sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
+    float _e61 = sum_8;
+    float _e67 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.09501251 * hw_3));
+    sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
+    float _e70 = sum_8;
+    float _e76 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.28160354 * hw_3));
+    sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
+    float _e79 = sum_8;
+    float _e85 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.28160354 * hw_3));
+    sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
+    float _e88 = sum_8;
+    float _e94 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.45801678 * hw_3));
+    sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
+    float _e97 = sum_8;
+    float _e103 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.45801678 * hw_3));
+    sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
+    float _e106 = sum_8;
+    float _e112 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.61787623 * hw_3));
+    sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
+    float _e115 = sum_8;
+    float _e121 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.61787623 * hw_3));
+    sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
+    float _e124 = sum_8;
+    float _e130 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.7554044 * hw_3));
+    sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
+    float _e133 = sum_8;
+    float _e139 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.7554044 * hw_3));
+    sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
+    float _e142 = sum_8;
+    float _e148 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.8656312 * hw_3));
+    sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
+    float _e151 = sum_8;
+    float _e157 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.8656312 * hw_3));
+    sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
+    float _e160 = sum_8;
+    float _e166 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.944575 * hw_3));
+    sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
+    float _e169 = sum_8;
+    float _e175 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.944575 * hw_3));
+    sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
+    float _e178 = sum_8;
+    float _e184 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 - (0.9894009 * hw_3));
+    sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
+    float _e187 = sum_8;
+    float _e193 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, c_18 + (0.9894009 * hw_3));
+    sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
+    float _e196 = sum_8;
+    return _e196;
+}
+
+float airlight_lobe_azimuth(
+    metal::float3 u_5,
+    metal::float3 v_7,
+    metal::float2 e_7
+) {
+    float y_11 = (e_7.x * v_7.x) + (e_7.y * v_7.y);
+    float _e23 = airlight_atan2_upper(metal::abs(y_11), (e_7.x * u_5.x) + (e_7.y * u_5.y));
+    return ((y_11 < 0.0) ? -1.0 : 1.0) * _e23;
+}
+
+float airlight_wrap_turn(
+    float x_21
+) {
+    return x_21 - (6.2831855 * metal::rint(x_21 / 6.2831855));
+}
+
+metal::float2 airlight_cos_sin_turns(
+    float x_22
+) {
+    float _e1 = airlight_wrap_turn(x_22);
+    metal::float2 _e3 = airlight_cos_sin_half_turn(metal::abs(_e1));
+    return metal::float2(_e3.x, (_e1 < 0.0) ? -(_e3.y) : _e3.y);
+}
+
+metal::float4 airlight_sort4_(
+    metal::float4 x_23
+) {
+    metal::float4 a_45 = metal::float4(metal::min(x_23.x, x_23.y), metal::max(x_23.x, x_23.y), metal::min(x_23.z, x_23.w), metal::max(x_23.z, x_23.w));
+    metal::float4 b_22 = metal::float4(metal::min(a_45.x, a_45.z), metal::min(a_45.y, a_45.w), metal::max(a_45.x, a_45.z), metal::max(a_45.y, a_45.w));
+    return metal::float4(b_22.x, metal::min(b_22.y, b_22.z), metal::max(b_22.y, b_22.z), b_22.w);
+}
+
+float airlight_flat_about_lobe(
+    AirlightScene s_35,
+    float z_13,
+    AirlightOutline o_4,
+    AirlightFlatLobe lobe_3
+) {
+    float sum_9 = 0.0;
+    uint i_29 = 0u;
+    uint i_30 = 0u;
+    float mid = 0.0;
+    uint i_31 = 0u;
+    uint j_6 = {};
+    metal::float3 _e5 = airlight_basis_e1_(lobe_3.p);
+    metal::float3 v_9 = metal::cross(lobe_3.p, _e5);
+    metal::float2 q_12 = lobe_3.q;
+    if (o_4.radius > 0.0) {
+        metal::float2 d_5 = o_4.corners.inner[0] - q_12;
+        float dq_2 = metal::sqrt((d_5.x * d_5.x) + (d_5.y * d_5.y));
+        if (dq_2 <= o_4.radius) {
+            uint2 loop_bound_35 = uint2(4294967295u);
+            bool loop_init_34 = true;
+            while(true) {
+                if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+                loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+                if (!loop_init_34) {
+                    uint _e42 = i_29;
+                    i_29 = _e42 + 1u;
+                }
+                loop_init_34 = false;
+                uint _e29 = i_29;
+                if (_e29 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e210 = j_5;
-                    metal::float2 _e211 = airlight_triangle_rule(_e210);
-                    metal::float2 _e218 = airlight_cos_sin_half_turn((0.5 * _e194) * (1.0 + _e211.x));
-                    metal::float2 dir_3 = metal::float2((_e218.x * start_3.x) - (_e218.y * start_3.y), (_e218.y * start_3.x) + (_e218.x * start_3.y));
-                    float _e234 = sum_9;
-                    float _e247 = airlight_flat_radial(s_34, a_22, _e141, dir_3, h_9 / ((dir_3.x * m_11.x) + (dir_3.y * m_11.y)));
-                    sum_9 = _e234 + (((_e211.y * 0.5) * _e194) * _e247);
+                    uint _e33 = i_29;
+                    metal::float3 _e34 = airlight_azimuths(true, _e33);
+                    float _e35 = sum_9;
+                    float _e38 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e34.xy);
+                    sum_9 = _e35 + (_e34.z * _e38);
+                }
+            }
+            float _e44 = sum_9;
+            return _e44;
+        }
+        float sb_1 = o_4.radius / dq_2;
+        float cb = metal::sqrt((dq_2 - o_4.radius) * (dq_2 + o_4.radius)) / dq_2;
+        float _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        float _e66 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) - (d_5.y * sb_1), (d_5.y * cb) + (d_5.x * sb_1)));
+        float _e68 = airlight_wrap_turn(_e66 - _e54);
+        float _e80 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) + (d_5.y * sb_1), (d_5.y * cb) - (d_5.x * sb_1)));
+        float _e82 = airlight_wrap_turn(_e80 - _e54);
+        float centre_2 = _e54 + ((_e68 + _e82) * 0.5);
+        float half_19 = metal::abs(_e68 - _e82) * 0.5;
+        uint2 loop_bound_36 = uint2(4294967295u);
+        bool loop_init_35 = true;
+        while(true) {
+            if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+            if (!loop_init_35) {
+                uint _e112 = i_30;
+                i_30 = _e112 + 1u;
+            }
+            loop_init_35 = false;
+            uint _e93 = i_30;
+            if (_e93 < 32u) {
+            } else {
+                break;
+            }
+            {
+                uint _e97 = i_30;
+                metal::float3 _e98 = airlight_azimuths(false, _e97);
+                float _e99 = sum_9;
+                metal::float2 _e107 = airlight_cos_sin_turns(centre_2 + (half_19 * _e98.y));
+                float _e108 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e107);
+                sum_9 = _e99 + (((_e98.z * half_19) * _e98.x) * _e108);
+            }
+        }
+        float _e114 = sum_9;
+        return _e114;
+    }
+    metal::float2 _e115 = airlight_outline_nearest(o_4, q_12);
+    bool inside_2 = metal::all(_e115 == q_12);
+    if (!(inside_2)) {
+        float _e129 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_4.corners.inner[0] + o_4.corners.inner[2])) - q_12);
+        mid = _e129;
+    }
+    float _e133 = airlight_lobe_azimuth(_e5, v_9, o_4.corners.inner[0] - q_12);
+    float _e134 = mid;
+    float _e136 = airlight_wrap_turn(_e133 - _e134);
+    float _e140 = airlight_lobe_azimuth(_e5, v_9, o_4.corners.inner[1] - q_12);
+    float _e141 = mid;
+    float _e143 = airlight_wrap_turn(_e140 - _e141);
+    float _e147 = airlight_lobe_azimuth(_e5, v_9, o_4.corners.inner[2] - q_12);
+    float _e148 = mid;
+    float _e150 = airlight_wrap_turn(_e147 - _e148);
+    float _e154 = airlight_lobe_azimuth(_e5, v_9, o_4.corners.inner[3] - q_12);
+    float _e155 = mid;
+    float _e157 = airlight_wrap_turn(_e154 - _e155);
+    metal::float4 _e159 = airlight_sort4_(metal::float4(_e136, _e143, _e150, _e157));
+    uint wedges = inside_2 ? 4u : 3u;
+    uint2 loop_bound_37 = uint2(4294967295u);
+    bool loop_init_36 = true;
+    while(true) {
+        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+        if (!loop_init_36) {
+            uint _e213 = i_31;
+            i_31 = _e213 + 1u;
+        }
+        loop_init_36 = false;
+        uint _e165 = i_31;
+        if (_e165 < wedges) {
+        } else {
+            break;
+        }
+        {
+            float _e167 = mid;
+            uint _e168 = i_31;
+            float first_2 = _e167 + _e159[metal::min(unsigned(_e168), 3u)];
+            float _e171 = mid;
+            uint _e172 = i_31;
+            uint _e181 = i_31;
+            float last_1 = _e171 + ((_e181 == 3u) ? (_e159.x + 6.2831855) : _e159[metal::min(unsigned(metal::min(_e172 + 1u, 3u)), 3u)]);
+            float c_19 = (first_2 + last_1) * 0.5;
+            float hw_4 = (last_1 - first_2) * 0.5;
+            j_6 = 0u;
+            uint2 loop_bound_38 = uint2(4294967295u);
+            bool loop_init_37 = true;
+            while(true) {
+                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                if (!loop_init_37) {
+                    uint _e210 = j_6;
+                    j_6 = _e210 + 1u;
+                }
+                loop_init_37 = false;
+                uint _e194 = j_6;
+                if (_e194 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e197 = j_6;
+                    metal::float2 _e198 = airlight_triangle_rule(_e197);
+                    float _e199 = sum_9;
+                    metal::float2 _e205 = airlight_cos_sin_turns(c_19 + (hw_4 * _e198.x));
+                    float _e206 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e205);
+                    sum_9 = _e199 + ((_e198.y * hw_4) * _e206);
                 }
             }
         }
     }
-    float _e256 = sum_9;
-    return _e256;
+    float _e215 = sum_9;
+    return _e215;
+}
+
+float airlight_disc(
+    AirlightScene s_36,
+    AirlightArea a_23,
+    metal::float3 x_24
+) {
+    metal::float2 u_6 = metal::float2(0.0);
+    AirlightAbove above_3 = {};
+    float sum_10 = 0.0;
+    uint i_32 = 0u;
+    metal::float2 e_8 = {};
+    float r_max_1 = {};
+    metal::float3 rel = x_24 - a_23.c;
+    float z_19 = metal::dot(rel, a_23.n);
+    if (!((z_19 > 0.0))) {
+        return 0.0;
+    }
+    float fx = metal::dot(rel, a_23.a1_);
+    float fy_1 = metal::dot(rel, a_23.a2_);
+    float rf = metal::sqrt((fx * fx) + (fy_1 * fy_1));
+    float radius_2 = a_23.radius;
+    metal::float2 zero_1 = metal::float2(0.0);
+    AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1}}, radius_2};
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_19, outline, metal::float2(-(fx), -(fy_1)), radius_2);
+    if (_e30.scale > 0.0) {
+        float _e34 = airlight_flat_about_lobe(s_36, z_19, outline, _e30);
+        return _e34;
+    }
+    bool inside_3 = rf <= radius_2;
+    AirlightAbove _e41 = airlight_above(z_19, metal::float2(0.0));
+    above_3 = _e41;
+    if (!(inside_3)) {
+        u_6 = metal::float2(-(fx) / rf, -(fy_1) / rf);
+        metal::float2 _e50 = u_6;
+        AirlightAbove _e52 = airlight_above(z_19, (rf - radius_2) * _e50);
+        above_3 = _e52;
+    }
+    float k_13 = (rf - radius_2) * (rf + radius_2);
+    uint2 loop_bound_39 = uint2(4294967295u);
+    bool loop_init_38 = true;
+    while(true) {
+        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_38) {
+            uint _e114 = i_32;
+            i_32 = _e114 + 1u;
+        }
+        loop_init_38 = false;
+        uint _e60 = i_32;
+        if (_e60 < 32u) {
+        } else {
+            break;
+        }
+        {
+            uint _e63 = i_32;
+            metal::float3 _e64 = airlight_azimuths(inside_3, _e63);
+            float _e67 = u_6.x;
+            float _e71 = u_6.y;
+            float _e76 = u_6.y;
+            float _e80 = u_6.x;
+            e_8 = metal::float2((_e64.x * _e67) - (_e64.y * _e71), (_e64.x * _e76) + (_e64.y * _e80));
+            r_max_1 = (radius_2 + radius_2) * _e64.x;
+            if (inside_3) {
+                e_8 = _e64.xy;
+                float b_23 = (fx * _e64.x) + (fy_1 * _e64.y);
+                float root_4 = metal::sqrt((b_23 * b_23) - k_13);
+                r_max_1 = (b_23 > 0.0) ? (-(k_13) / (b_23 + root_4)) : (root_4 - b_23);
+            }
+            float _e105 = sum_10;
+            AirlightAbove _e107 = above_3;
+            metal::float2 _e108 = e_8;
+            float _e109 = r_max_1;
+            float _e110 = airlight_flat_radial(s_36, a_23, _e107, _e108, _e109);
+            sum_10 = _e105 + (_e64.z * _e110);
+        }
+    }
+    float _e116 = sum_10;
+    return _e116;
+}
+
+float airlight_parallelogram(
+    AirlightScene s_37,
+    AirlightArea a_24,
+    metal::float3 x_25
+) {
+    float sum_11 = 0.0;
+    uint i_33 = 0u;
+    uint j_7 = {};
+    metal::float3 rel_1 = x_25 - a_24.c;
+    float z_20 = metal::dot(rel_1, a_24.n);
+    if (!((z_20 > 0.0))) {
+        return 0.0;
+    }
+    metal::float2 foot = metal::float2(metal::dot(rel_1, a_24.a1_), metal::dot(rel_1, a_24.a2_));
+    metal::float2 u2_ = metal::float2(metal::dot(a_24.eu, a_24.a1_), metal::dot(a_24.eu, a_24.a2_));
+    metal::float2 v2_ = metal::float2(metal::dot(a_24.ev, a_24.a1_), metal::dot(a_24.ev, a_24.a2_));
+    airlight_type_18 corners = airlight_type_18 {{metal::float2(0.0), u2_, u2_ + v2_, v2_, metal::float2(0.0)}};
+    float det = (u2_.x * v2_.y) - (u2_.y * v2_.x);
+    AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot, corners.inner[1] - foot, corners.inner[2] - foot, corners.inner[3] - foot}}, 0.0};
+    float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_ + v2_, u2_ + v2_)), metal::sqrt(metal::dot(u2_ - v2_, u2_ - v2_)));
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_20, about_foot, (0.5 * corners.inner[2]) - foot, size_2);
+    if (_e69.scale > 0.0) {
+        float _e73 = airlight_flat_about_lobe(s_37, z_20, about_foot, _e69);
+        return _e73;
+    }
+    metal::float2 _e76 = airlight_outline_nearest(about_foot, metal::float2(0.0));
+    metal::float2 q_13 = _e76 + foot;
+    AirlightAbove _e79 = airlight_above(z_20, q_13 - foot);
+    float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
+    uint2 loop_bound_40 = uint2(4294967295u);
+    bool loop_init_39 = true;
+    while(true) {
+        if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_39) {
+            uint _e190 = i_33;
+            i_33 = _e190 + 1u;
+        }
+        loop_init_39 = false;
+        uint _e87 = i_33;
+        if (_e87 < 4u) {
+        } else {
+            break;
+        }
+        {
+            uint _e90 = i_33;
+            metal::float2 ca = corners.inner[metal::min(unsigned(_e90), 4u)] - q_13;
+            uint _e93 = i_33;
+            metal::float2 cb_1 = corners.inner[metal::min(unsigned(_e93 + 1u), 4u)] - q_13;
+            float area = (ca.x * cb_1.y) - (ca.y * cb_1.x);
+            if (!((area > thin))) {
+                continue;
+            }
+            metal::float2 e_15 = cb_1 - ca;
+            float el = metal::sqrt((e_15.x * e_15.x) + (e_15.y * e_15.y));
+            float h_9 = area / el;
+            metal::float2 m_12 = metal::float2(e_15.y / el, -(e_15.x) / el);
+            float _e130 = airlight_atan2_upper(area, (ca.x * cb_1.x) + (ca.y * cb_1.y));
+            metal::float2 start_4 = ca / metal::float2(metal::sqrt((ca.x * ca.x) + (ca.y * ca.y)));
+            j_7 = 0u;
+            uint2 loop_bound_41 = uint2(4294967295u);
+            bool loop_init_40 = true;
+            while(true) {
+                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                if (!loop_init_40) {
+                    uint _e187 = j_7;
+                    j_7 = _e187 + 1u;
+                }
+                loop_init_40 = false;
+                uint _e143 = j_7;
+                if (_e143 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e146 = j_7;
+                    metal::float2 _e147 = airlight_triangle_rule(_e146);
+                    metal::float2 _e154 = airlight_cos_sin_half_turn((0.5 * _e130) * (1.0 + _e147.x));
+                    metal::float2 dir_3 = metal::float2((_e154.x * start_4.x) - (_e154.y * start_4.y), (_e154.y * start_4.x) + (_e154.x * start_4.y));
+                    float _e170 = sum_11;
+                    float _e183 = airlight_flat_radial(s_37, a_24, _e79, dir_3, h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y)));
+                    sum_11 = _e170 + (((_e147.y * 0.5) * _e130) * _e183);
+                }
+            }
+        }
+    }
+    float _e192 = sum_11;
+    return _e192;
 }
 
 metal::float3 airlight_cap_row(
-    AirlightScene s_35,
+    AirlightScene s_38,
     AirlightCap cap,
-    float graded,
+    float graded_1,
     float node,
     float weight_1
 ) {
@@ -7285,170 +7722,170 @@ metal::float3 airlight_cap_row(
     float w_2 = {};
     phi = node;
     w_2 = weight_1;
-    if (graded > 0.0) {
+    if (graded_1 > 0.0) {
         metal::float2 _e9 = airlight_cos_sin_half_turn(node);
-        phi = (graded * _e9.y) / _e9.x;
-        w_2 = (weight_1 * graded) / (_e9.x * _e9.x);
+        phi = (graded_1 * _e9.y) / _e9.x;
+        w_2 = (weight_1 * graded_1) / (_e9.x * _e9.x);
     }
     float _e19 = phi;
     metal::float2 _e20 = airlight_cos_sin_half_turn(_e19);
-    float sb_1 = cap.sin_a * _e20.y;
-    float cb_1 = metal::sqrt((1.0 - sb_1) * (1.0 + sb_1));
-    float dist_1 = metal::max((cap.dc * cb_1) - (cap.radius * _e20.x), 0.0);
+    float sb_2 = cap.sin_a * _e20.y;
+    float cb_2 = metal::sqrt((1.0 - sb_2) * (1.0 + sb_2));
+    float dist_1 = metal::max((cap.dc * cb_2) - (cap.radius * _e20.x), 0.0);
     float _e38 = w_2;
-    float _e40 = airlight_emitted(s_35, _e20.x);
-    float factor = ((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_1) * metal::exp(metal::min(-(s_35.sigma_t) * dist_1, 0.0));
-    return metal::float3(factor, cb_1, sb_1);
+    float _e40 = airlight_emitted(s_38, _e20.x);
+    float factor = ((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * metal::exp(metal::min(-(s_38.sigma_t) * dist_1, 0.0));
+    return metal::float3(factor, cb_2, sb_2);
 }
 
 float airlight_sphere_cap(
-    AirlightScene s_36,
-    AirlightArea a_23,
+    AirlightScene s_39,
+    AirlightArea a_25,
     AirlightCap cap_1
 ) {
-    float graded_1 = 0.0;
+    float graded_2 = 0.0;
     float top = 1.5707964;
     airlight_type_22 rows = airlight_type_22 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
-    float sum_10 = 0.0;
-    uint i_31 = 0u;
+    float sum_12 = 0.0;
+    uint i_34 = 0u;
     float at_2 = {};
     metal::float3 _e4 = airlight_basis_e1_(cap_1.a);
     metal::float3 e2_2 = metal::cross(cap_1.a, _e4);
-    float ad = metal::dot(cap_1.a, a_23.d);
-    float e1d = metal::dot(_e4, a_23.d);
-    float e2d = metal::dot(e2_2, a_23.d);
-    uint p_5 = airlight_naga_f2u32(s_36.light_param_b);
-    if (p_5 > 1u) {
-        float lobe_1 = 2.0 / metal::sqrt(static_cast<float>(p_5 - 1u));
-        if (lobe_1 < 1.5707964) {
-            graded_1 = lobe_1;
-            float _e32 = airlight_atan(1.5707964 / lobe_1);
+    float ad = metal::dot(cap_1.a, a_25.d);
+    float e1d = metal::dot(_e4, a_25.d);
+    float e2d = metal::dot(e2_2, a_25.d);
+    uint p_6 = airlight_naga_f2u32(s_39.light_param_b);
+    if (p_6 > 1u) {
+        float lobe_5 = 2.0 / metal::sqrt(static_cast<float>(p_6 - 1u));
+        if (lobe_5 < 1.5707964) {
+            graded_2 = lobe_5;
+            float _e32 = airlight_atan(1.5707964 / lobe_5);
             top = _e32;
         }
     }
     float _e33 = top;
-    float c_17 = 0.5 * _e33;
+    float c_20 = 0.5 * _e33;
     float _e36 = top;
-    float hw_3 = 0.5 * _e36;
-    float _e74 = graded_1;
-    metal::float3 _e80 = airlight_cap_row(s_36, cap_1, _e74, c_17 - (0.09501251 * hw_3), 0.1894506 * hw_3);
+    float hw_5 = 0.5 * _e36;
+    float _e74 = graded_2;
+    metal::float3 _e80 = airlight_cap_row(s_39, cap_1, _e74, c_20 - (0.09501251 * hw_5), 0.1894506 * hw_5);
     rows.inner[0] = _e80;
-    float _e82 = graded_1;
-    metal::float3 _e88 = airlight_cap_row(s_36, cap_1, _e82, c_17 + (0.09501251 * hw_3), 0.1894506 * hw_3);
+    float _e82 = graded_2;
+    metal::float3 _e88 = airlight_cap_row(s_39, cap_1, _e82, c_20 + (0.09501251 * hw_5), 0.1894506 * hw_5);
     rows.inner[1] = _e88;
-    float _e90 = graded_1;
-    metal::float3 _e96 = airlight_cap_row(s_36, cap_1, _e90, c_17 - (0.28160354 * hw_3), 0.18260342 * hw_3);
+    float _e90 = graded_2;
+    metal::float3 _e96 = airlight_cap_row(s_39, cap_1, _e90, c_20 - (0.28160354 * hw_5), 0.18260342 * hw_5);
     rows.inner[2] = _e96;
-    float _e98 = graded_1;
-    metal::float3 _e104 = airlight_cap_row(s_36, cap_1, _e98, c_17 + (0.28160354 * hw_3), 0.18260342 * hw_3);
+    float _e98 = graded_2;
+    metal::float3 _e104 = airlight_cap_row(s_39, cap_1, _e98, c_20 + (0.28160354 * hw_5), 0.18260342 * hw_5);
     rows.inner[3] = _e104;
-    float _e106 = graded_1;
-    metal::float3 _e112 = airlight_cap_row(s_36, cap_1, _e106, c_17 - (0.45801678 * hw_3), 0.16915652 * hw_3);
+    float _e106 = graded_2;
+    metal::float3 _e112 = airlight_cap_row(s_39, cap_1, _e106, c_20 - (0.45801678 * hw_5), 0.16915652 * hw_5);
     rows.inner[4] = _e112;
-    float _e114 = graded_1;
-    metal::float3 _e120 = airlight_cap_row(s_36, cap_1, _e114, c_17 + (0.45801678 * hw_3), 0.16915652 * hw_3);
+    float _e114 = graded_2;
+    metal::float3 _e120 = airlight_cap_row(s_39, cap_1, _e114, c_20 + (0.45801678 * hw_5), 0.16915652 * hw_5);
     rows.inner[5] = _e120;
-    float _e122 = graded_1;
-    metal::float3 _e128 = airlight_cap_row(s_36, cap_1, _e122, c_17 - (0.61787623 * hw_3), 0.14959599 * hw_3);
+    float _e122 = graded_2;
+    metal::float3 _e128 = airlight_cap_row(s_39, cap_1, _e122, c_20 - (0.61787623 * hw_5), 0.14959599 * hw_5);
     rows.inner[6] = _e128;
-    float _e130 = graded_1;
-    metal::float3 _e136 = airlight_cap_row(s_36, cap_1, _e130, c_17 + (0.61787623 * hw_3), 0.14959599 * hw_3);
+    float _e130 = graded_2;
+    metal::float3 _e136 = airlight_cap_row(s_39, cap_1, _e130, c_20 + (0.61787623 * hw_5), 0.14959599 * hw_5);
     rows.inner[7] = _e136;
-    float _e138 = graded_1;
-    metal::float3 _e144 = airlight_cap_row(s_36, cap_1, _e138, c_17 - (0.7554044 * hw_3), 0.12462897 * hw_3);
+    float _e138 = graded_2;
+    metal::float3 _e144 = airlight_cap_row(s_39, cap_1, _e138, c_20 - (0.7554044 * hw_5), 0.12462897 * hw_5);
     rows.inner[8] = _e144;
-    float _e146 = graded_1;
-    metal::float3 _e152 = airlight_cap_row(s_36, cap_1, _e146, c_17 + (0.7554044 * hw_3), 0.12462897 * hw_3);
+    float _e146 = graded_2;
+    metal::float3 _e152 = airlight_cap_row(s_39, cap_1, _e146, c_20 + (0.7554044 * hw_5), 0.12462897 * hw_5);
     rows.inner[9] = _e152;
-    float _e154 = graded_1;
-    metal::float3 _e160 = airlight_cap_row(s_36, cap_1, _e154, c_17 - (0.8656312 * hw_3), 0.09515851 * hw_3);
+    float _e154 = graded_2;
+    metal::float3 _e160 = airlight_cap_row(s_39, cap_1, _e154, c_20 - (0.8656312 * hw_5), 0.09515851 * hw_5);
     rows.inner[10] = _e160;
-    float _e162 = graded_1;
-    metal::float3 _e168 = airlight_cap_row(s_36, cap_1, _e162, c_17 + (0.8656312 * hw_3), 0.09515851 * hw_3);
+    float _e162 = graded_2;
+    metal::float3 _e168 = airlight_cap_row(s_39, cap_1, _e162, c_20 + (0.8656312 * hw_5), 0.09515851 * hw_5);
     rows.inner[11] = _e168;
-    float _e170 = graded_1;
-    metal::float3 _e176 = airlight_cap_row(s_36, cap_1, _e170, c_17 - (0.944575 * hw_3), 0.062253524 * hw_3);
+    float _e170 = graded_2;
+    metal::float3 _e176 = airlight_cap_row(s_39, cap_1, _e170, c_20 - (0.944575 * hw_5), 0.062253524 * hw_5);
     rows.inner[12] = _e176;
-    float _e178 = graded_1;
-    metal::float3 _e184 = airlight_cap_row(s_36, cap_1, _e178, c_17 + (0.944575 * hw_3), 0.062253524 * hw_3);
+    float _e178 = graded_2;
+    metal::float3 _e184 = airlight_cap_row(s_39, cap_1, _e178, c_20 + (0.944575 * hw_5), 0.062253524 * hw_5);
     rows.inner[13] = _e184;
-    float _e186 = graded_1;
-    metal::float3 _e192 = airlight_cap_row(s_36, cap_1, _e186, c_17 - (0.9894009 * hw_3), 0.02715246 * hw_3);
+    float _e186 = graded_2;
+    metal::float3 _e192 = airlight_cap_row(s_39, cap_1, _e186, c_20 - (0.9894009 * hw_5), 0.02715246 * hw_5);
     rows.inner[14] = _e192;
-    float _e194 = graded_1;
-    metal::float3 _e200 = airlight_cap_row(s_36, cap_1, _e194, c_17 + (0.9894009 * hw_3), 0.02715246 * hw_3);
+    float _e194 = graded_2;
+    metal::float3 _e200 = airlight_cap_row(s_39, cap_1, _e194, c_20 + (0.9894009 * hw_5), 0.02715246 * hw_5);
     rows.inner[15] = _e200;
-    if (a_23.isotropic) {
-        float _e206 = airlight_area_phase(s_36, 0.0);
+    if (a_25.isotropic) {
+        float _e206 = airlight_area_phase(s_39, 0.0);
         float around_1 = 6.2831855 * _e206;
-        float _e208 = sum_10;
+        float _e208 = sum_12;
         float _e211 = rows.inner[0].x;
-        sum_10 = _e208 + (_e211 * around_1);
-        float _e214 = sum_10;
+        sum_12 = _e208 + (_e211 * around_1);
+        float _e214 = sum_12;
         float _e217 = rows.inner[1].x;
-        sum_10 = _e214 + (_e217 * around_1);
-        float _e220 = sum_10;
+        sum_12 = _e214 + (_e217 * around_1);
+        float _e220 = sum_12;
         float _e223 = rows.inner[2].x;
-        sum_10 = _e220 + (_e223 * around_1);
-        float _e226 = sum_10;
+        sum_12 = _e220 + (_e223 * around_1);
+        float _e226 = sum_12;
         float _e229 = rows.inner[3].x;
-        sum_10 = _e226 + (_e229 * around_1);
-        float _e232 = sum_10;
+        sum_12 = _e226 + (_e229 * around_1);
+        float _e232 = sum_12;
         float _e235 = rows.inner[4].x;
-        sum_10 = _e232 + (_e235 * around_1);
-        float _e238 = sum_10;
+        sum_12 = _e232 + (_e235 * around_1);
+        float _e238 = sum_12;
         float _e241 = rows.inner[5].x;
-        sum_10 = _e238 + (_e241 * around_1);
-        float _e244 = sum_10;
+        sum_12 = _e238 + (_e241 * around_1);
+        float _e244 = sum_12;
         float _e247 = rows.inner[6].x;
-        sum_10 = _e244 + (_e247 * around_1);
-        float _e250 = sum_10;
+        sum_12 = _e244 + (_e247 * around_1);
+        float _e250 = sum_12;
         float _e253 = rows.inner[7].x;
-        sum_10 = _e250 + (_e253 * around_1);
-        float _e256 = sum_10;
+        sum_12 = _e250 + (_e253 * around_1);
+        float _e256 = sum_12;
         float _e259 = rows.inner[8].x;
-        sum_10 = _e256 + (_e259 * around_1);
-        float _e262 = sum_10;
+        sum_12 = _e256 + (_e259 * around_1);
+        float _e262 = sum_12;
         float _e265 = rows.inner[9].x;
-        sum_10 = _e262 + (_e265 * around_1);
-        float _e268 = sum_10;
+        sum_12 = _e262 + (_e265 * around_1);
+        float _e268 = sum_12;
         float _e271 = rows.inner[10].x;
-        sum_10 = _e268 + (_e271 * around_1);
-        float _e274 = sum_10;
+        sum_12 = _e268 + (_e271 * around_1);
+        float _e274 = sum_12;
         float _e277 = rows.inner[11].x;
-        sum_10 = _e274 + (_e277 * around_1);
-        float _e280 = sum_10;
+        sum_12 = _e274 + (_e277 * around_1);
+        float _e280 = sum_12;
         float _e283 = rows.inner[12].x;
-        sum_10 = _e280 + (_e283 * around_1);
-        float _e286 = sum_10;
+        sum_12 = _e280 + (_e283 * around_1);
+        float _e286 = sum_12;
         float _e289 = rows.inner[13].x;
-        sum_10 = _e286 + (_e289 * around_1);
-        float _e292 = sum_10;
+        sum_12 = _e286 + (_e289 * around_1);
+        float _e292 = sum_12;
         float _e295 = rows.inner[14].x;
-        sum_10 = _e292 + (_e295 * around_1);
-        float _e298 = sum_10;
+        sum_12 = _e292 + (_e295 * around_1);
+        float _e298 = sum_12;
         float _e301 = rows.inner[15].x;
-        sum_10 = _e298 + (_e301 * around_1);
-        float _e304 = sum_10;
+        sum_12 = _e298 + (_e301 * around_1);
+        float _e304 = sum_12;
         return _e304;
     }
-    uint2 loop_bound_37 = uint2(4294967295u);
-    bool loop_init_36 = true;
+    uint2 loop_bound_42 = uint2(4294967295u);
+    bool loop_init_41 = true;
     while(true) {
-        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_36) {
-            uint _e582 = i_31;
-            i_31 = _e582 + 1u;
+        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_41) {
+            uint _e582 = i_34;
+            i_34 = _e582 + 1u;
         }
-        loop_init_36 = false;
-        uint _e307 = i_31;
+        loop_init_41 = false;
+        uint _e307 = i_34;
         if (_e307 < 32u) {
         } else {
             break;
         }
         {
-            uint _e311 = i_31;
+            uint _e311 = i_34;
             metal::float3 _e312 = airlight_azimuths(true, _e311);
             float across_1 = (_e312.x * e1d) + (_e312.y * e2d);
             at_2 = 0.0;
@@ -7456,130 +7893,130 @@ float airlight_sphere_cap(
             float _e323 = rows.inner[0].x;
             float _e326 = rows.inner[0].y;
             float _e330 = rows.inner[0].z;
-            float _e333 = airlight_area_phase(s_36, (_e326 * ad) + (_e330 * across_1));
+            float _e333 = airlight_area_phase(s_39, (_e326 * ad) + (_e330 * across_1));
             at_2 = _e320 + (_e323 * _e333);
             float _e336 = at_2;
             float _e339 = rows.inner[1].x;
             float _e342 = rows.inner[1].y;
             float _e346 = rows.inner[1].z;
-            float _e349 = airlight_area_phase(s_36, (_e342 * ad) + (_e346 * across_1));
+            float _e349 = airlight_area_phase(s_39, (_e342 * ad) + (_e346 * across_1));
             at_2 = _e336 + (_e339 * _e349);
             float _e352 = at_2;
             float _e355 = rows.inner[2].x;
             float _e358 = rows.inner[2].y;
             float _e362 = rows.inner[2].z;
-            float _e365 = airlight_area_phase(s_36, (_e358 * ad) + (_e362 * across_1));
+            float _e365 = airlight_area_phase(s_39, (_e358 * ad) + (_e362 * across_1));
             at_2 = _e352 + (_e355 * _e365);
             float _e368 = at_2;
             float _e371 = rows.inner[3].x;
             float _e374 = rows.inner[3].y;
             float _e378 = rows.inner[3].z;
-            float _e381 = airlight_area_phase(s_36, (_e374 * ad) + (_e378 * across_1));
+            float _e381 = airlight_area_phase(s_39, (_e374 * ad) + (_e378 * across_1));
             at_2 = _e368 + (_e371 * _e381);
             float _e384 = at_2;
             float _e387 = rows.inner[4].x;
             float _e390 = rows.inner[4].y;
             float _e394 = rows.inner[4].z;
-            float _e397 = airlight_area_phase(s_36, (_e390 * ad) + (_e394 * across_1));
+            float _e397 = airlight_area_phase(s_39, (_e390 * ad) + (_e394 * across_1));
             at_2 = _e384 + (_e387 * _e397);
             float _e400 = at_2;
             float _e403 = rows.inner[5].x;
             float _e406 = rows.inner[5].y;
             float _e410 = rows.inner[5].z;
-            float _e413 = airlight_area_phase(s_36, (_e406 * ad) + (_e410 * across_1));
+            float _e413 = airlight_area_phase(s_39, (_e406 * ad) + (_e410 * across_1));
             at_2 = _e400 + (_e403 * _e413);
             float _e416 = at_2;
             float _e419 = rows.inner[6].x;
             float _e422 = rows.inner[6].y;
             float _e426 = rows.inner[6].z;
-            float _e429 = airlight_area_phase(s_36, (_e422 * ad) + (_e426 * across_1));
+            float _e429 = airlight_area_phase(s_39, (_e422 * ad) + (_e426 * across_1));
             at_2 = _e416 + (_e419 * _e429);
             float _e432 = at_2;
             float _e435 = rows.inner[7].x;
             float _e438 = rows.inner[7].y;
             float _e442 = rows.inner[7].z;
-            float _e445 = airlight_area_phase(s_36, (_e438 * ad) + (_e442 * across_1));
+            float _e445 = airlight_area_phase(s_39, (_e438 * ad) + (_e442 * across_1));
             at_2 = _e432 + (_e435 * _e445);
             float _e448 = at_2;
             float _e451 = rows.inner[8].x;
             float _e454 = rows.inner[8].y;
             float _e458 = rows.inner[8].z;
-            float _e461 = airlight_area_phase(s_36, (_e454 * ad) + (_e458 * across_1));
+            float _e461 = airlight_area_phase(s_39, (_e454 * ad) + (_e458 * across_1));
             at_2 = _e448 + (_e451 * _e461);
             float _e464 = at_2;
             float _e467 = rows.inner[9].x;
             float _e470 = rows.inner[9].y;
             float _e474 = rows.inner[9].z;
-            float _e477 = airlight_area_phase(s_36, (_e470 * ad) + (_e474 * across_1));
+            float _e477 = airlight_area_phase(s_39, (_e470 * ad) + (_e474 * across_1));
             at_2 = _e464 + (_e467 * _e477);
             float _e480 = at_2;
             float _e483 = rows.inner[10].x;
             float _e486 = rows.inner[10].y;
             float _e490 = rows.inner[10].z;
-            float _e493 = airlight_area_phase(s_36, (_e486 * ad) + (_e490 * across_1));
+            float _e493 = airlight_area_phase(s_39, (_e486 * ad) + (_e490 * across_1));
             at_2 = _e480 + (_e483 * _e493);
             float _e496 = at_2;
             float _e499 = rows.inner[11].x;
             float _e502 = rows.inner[11].y;
             float _e506 = rows.inner[11].z;
-            float _e509 = airlight_area_phase(s_36, (_e502 * ad) + (_e506 * across_1));
+            float _e509 = airlight_area_phase(s_39, (_e502 * ad) + (_e506 * across_1));
             at_2 = _e496 + (_e499 * _e509);
             float _e512 = at_2;
             float _e515 = rows.inner[12].x;
             float _e518 = rows.inner[12].y;
             float _e522 = rows.inner[12].z;
-            float _e525 = airlight_area_phase(s_36, (_e518 * ad) + (_e522 * across_1));
+            float _e525 = airlight_area_phase(s_39, (_e518 * ad) + (_e522 * across_1));
             at_2 = _e512 + (_e515 * _e525);
             float _e528 = at_2;
             float _e531 = rows.inner[13].x;
             float _e534 = rows.inner[13].y;
             float _e538 = rows.inner[13].z;
-            float _e541 = airlight_area_phase(s_36, (_e534 * ad) + (_e538 * across_1));
+            float _e541 = airlight_area_phase(s_39, (_e534 * ad) + (_e538 * across_1));
             at_2 = _e528 + (_e531 * _e541);
             float _e544 = at_2;
             float _e547 = rows.inner[14].x;
             float _e550 = rows.inner[14].y;
             float _e554 = rows.inner[14].z;
-            float _e557 = airlight_area_phase(s_36, (_e550 * ad) + (_e554 * across_1));
+            float _e557 = airlight_area_phase(s_39, (_e550 * ad) + (_e554 * across_1));
             at_2 = _e544 + (_e547 * _e557);
             float _e560 = at_2;
             float _e563 = rows.inner[15].x;
             float _e566 = rows.inner[15].y;
             float _e570 = rows.inner[15].z;
-            float _e573 = airlight_area_phase(s_36, (_e566 * ad) + (_e570 * across_1));
+            float _e573 = airlight_area_phase(s_39, (_e566 * ad) + (_e570 * across_1));
             at_2 = _e560 + (_e563 * _e573);
-            float _e576 = sum_10;
+            float _e576 = sum_12;
             float _e578 = at_2;
-            sum_10 = _e576 + (_e312.z * _e578);
+            sum_12 = _e576 + (_e312.z * _e578);
         }
     }
-    float _e584 = sum_10;
+    float _e584 = sum_12;
     return _e584;
 }
 
 float airlight_sphere_lobe_node(
-    AirlightScene s_37,
+    AirlightScene s_40,
     AirlightCap cap_2,
     float sign_1,
     float cos_p,
     float big_b,
-    float start_1,
-    float graded_2,
-    float g_27
+    float start_2,
+    float graded_3,
+    float g_28
 ) {
-    metal::float2 _e8 = airlight_cos_sin_half_turn(g_27);
-    metal::float2 _e14 = airlight_cos_sin_half_turn(start_1 + ((graded_2 * _e8.y) / _e8.x));
+    metal::float2 _e8 = airlight_cos_sin_half_turn(g_28);
+    metal::float2 _e14 = airlight_cos_sin_half_turn(start_2 + ((graded_3 * _e8.y) / _e8.x));
     float toward_a = (_e14.x * cos_p) + (_e14.y * big_b);
-    float root_4 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
-    float dist_2 = metal::max((cap_2.dc * toward_a) - root_4, 0.0);
-    float _e43 = airlight_emitted(s_37, root_4 / cap_2.radius);
-    float _e53 = airlight_area_phase(s_37, sign_1 * _e14.x);
-    return ((((_e43 * metal::exp(metal::min(-(s_37.sigma_t) * dist_2, 0.0))) * _e53) * _e14.y) * graded_2) / (_e8.x * _e8.x);
+    float root_5 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
+    float dist_2 = metal::max((cap_2.dc * toward_a) - root_5, 0.0);
+    float _e43 = airlight_emitted(s_40, root_5 / cap_2.radius);
+    float _e53 = airlight_area_phase(s_40, sign_1 * _e14.x);
+    return ((((_e43 * metal::exp(metal::min(-(s_40.sigma_t) * dist_2, 0.0))) * _e53) * _e14.y) * graded_3) / (_e8.x * _e8.x);
 }
 
 float airlight_sphere_about_lobe(
-    AirlightScene s_38,
-    AirlightArea a_24,
+    AirlightScene s_41,
+    AirlightArea a_26,
     AirlightCap cap_3,
     float sign_2,
     float cos_p_1,
@@ -7587,47 +8024,47 @@ float airlight_sphere_about_lobe(
 ) {
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
-    float sum_11 = 0.0;
-    uint i_32 = 0u;
+    float sum_13 = 0.0;
+    uint i_35 = 0u;
     float big_b_1 = {};
     float wpsi = {};
-    float start_2 = {};
+    float start_3 = {};
     float around = {};
-    metal::float3 p_6 = sign_2 * a_24.d;
-    metal::float3 _e8 = airlight_basis_e1_(p_6);
-    metal::float3 v_7 = metal::cross(p_6, _e8);
+    metal::float3 p_7 = sign_2 * a_26.d;
+    metal::float3 _e8 = airlight_basis_e1_(p_7);
+    metal::float3 v_10 = metal::cross(p_7, _e8);
     float au = metal::dot(cap_3.a, _e8);
-    float av = metal::dot(cap_3.a, v_7);
-    bool inside_2 = cos_p_1 > cap_3.cos_a;
+    float av = metal::dot(cap_3.a, v_10);
+    bool inside_4 = cos_p_1 > cap_3.cos_a;
     float sin_p = metal::sqrt((au * au) + (av * av));
     if (sin_p > 0.0) {
         axis_2 = metal::float2(au / sin_p, av / sin_p);
         float _e42 = airlight_acos(metal::min(metal::sqrt(metal::max((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1), 0.0)) / sin_p, 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_38 = uint2(4294967295u);
-    bool loop_init_37 = true;
+    uint2 loop_bound_43 = uint2(4294967295u);
+    bool loop_init_42 = true;
     while(true) {
-        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_37) {
-            uint _e299 = i_32;
-            i_32 = _e299 + 1u;
+        if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+        if (!loop_init_42) {
+            uint _e299 = i_35;
+            i_35 = _e299 + 1u;
         }
-        loop_init_37 = false;
-        uint _e47 = i_32;
+        loop_init_42 = false;
+        uint _e47 = i_35;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            uint _e50 = i_32;
-            metal::float3 _e51 = airlight_azimuths(inside_2, _e50);
+            uint _e50 = i_35;
+            metal::float3 _e51 = airlight_azimuths(inside_4, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
             big_b_1 = sin_p * ((_e51.x * _e54) + (_e51.y * _e58));
             wpsi = _e51.z;
-            if (!(inside_2)) {
+            if (!(inside_4)) {
                 float _e66 = half_15;
                 metal::float2 _e69 = airlight_cos_sin(_e66 * _e51.y);
                 big_b_1 = sin_p * _e69.x;
@@ -7637,189 +8074,189 @@ float airlight_sphere_about_lobe(
             float _e77 = big_b_1;
             float _e83 = big_b_1;
             float _e85 = airlight_atan2_upper(metal::abs(_e83), cos_p_1);
-            float mid_2 = ((_e77 < 0.0) ? -1.0 : 1.0) * _e85;
+            float mid_3 = ((_e77 < 0.0) ? -1.0 : 1.0) * _e85;
             float _e89 = big_b_1;
             float _e90 = big_b_1;
             float _e97 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e89 * _e90)), 1.0));
-            start_2 = 0.0;
-            if (!(inside_2)) {
-                start_2 = metal::max(mid_2 - _e97, 0.0);
+            start_3 = 0.0;
+            if (!(inside_4)) {
+                start_3 = metal::max(mid_3 - _e97, 0.0);
             }
-            float to = mid_2 + _e97;
-            float _e105 = start_2;
-            float graded_3 = metal::max(scale_1, _e105);
-            float _e107 = start_2;
-            float _e110 = airlight_atan((to - _e107) / graded_3);
-            float c_18 = 0.5 * _e110;
-            float hw_4 = 0.5 * _e110;
+            float to = mid_3 + _e97;
+            float _e105 = start_3;
+            float graded_5 = metal::max(scale_1, _e105);
+            float _e107 = start_3;
+            float _e110 = airlight_atan((to - _e107) / graded_5);
+            float c_21 = 0.5 * _e110;
+            float hw_6 = 0.5 * _e110;
             around = 0.0;
             float _e117 = around;
             float _e120 = big_b_1;
-            float _e121 = start_2;
-            float _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, c_18 - (0.09501251 * hw_4));
-            around = _e117 + ((0.1894506 * hw_4) * _e125);
+            float _e121 = start_3;
+            float _e125 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e120, _e121, graded_5, c_21 - (0.09501251 * hw_6));
+            around = _e117 + ((0.1894506 * hw_6) * _e125);
             float _e128 = around;
             float _e131 = big_b_1;
-            float _e132 = start_2;
-            float _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, c_18 + (0.09501251 * hw_4));
-            around = _e128 + ((0.1894506 * hw_4) * _e136);
+            float _e132 = start_3;
+            float _e136 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e131, _e132, graded_5, c_21 + (0.09501251 * hw_6));
+            around = _e128 + ((0.1894506 * hw_6) * _e136);
             float _e139 = around;
             float _e142 = big_b_1;
-            float _e143 = start_2;
-            float _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, c_18 - (0.28160354 * hw_4));
-            around = _e139 + ((0.18260342 * hw_4) * _e147);
+            float _e143 = start_3;
+            float _e147 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e142, _e143, graded_5, c_21 - (0.28160354 * hw_6));
+            around = _e139 + ((0.18260342 * hw_6) * _e147);
             float _e150 = around;
             float _e153 = big_b_1;
-            float _e154 = start_2;
-            float _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, c_18 + (0.28160354 * hw_4));
-            around = _e150 + ((0.18260342 * hw_4) * _e158);
+            float _e154 = start_3;
+            float _e158 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e153, _e154, graded_5, c_21 + (0.28160354 * hw_6));
+            around = _e150 + ((0.18260342 * hw_6) * _e158);
             float _e161 = around;
             float _e164 = big_b_1;
-            float _e165 = start_2;
-            float _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, c_18 - (0.45801678 * hw_4));
-            around = _e161 + ((0.16915652 * hw_4) * _e169);
+            float _e165 = start_3;
+            float _e169 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e164, _e165, graded_5, c_21 - (0.45801678 * hw_6));
+            around = _e161 + ((0.16915652 * hw_6) * _e169);
             float _e172 = around;
             float _e175 = big_b_1;
-            float _e176 = start_2;
-            float _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, c_18 + (0.45801678 * hw_4));
-            around = _e172 + ((0.16915652 * hw_4) * _e180);
+            float _e176 = start_3;
+            float _e180 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e175, _e176, graded_5, c_21 + (0.45801678 * hw_6));
+            around = _e172 + ((0.16915652 * hw_6) * _e180);
             float _e183 = around;
             float _e186 = big_b_1;
-            float _e187 = start_2;
-            float _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, c_18 - (0.61787623 * hw_4));
-            around = _e183 + ((0.14959599 * hw_4) * _e191);
+            float _e187 = start_3;
+            float _e191 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e186, _e187, graded_5, c_21 - (0.61787623 * hw_6));
+            around = _e183 + ((0.14959599 * hw_6) * _e191);
             float _e194 = around;
             float _e197 = big_b_1;
-            float _e198 = start_2;
-            float _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, c_18 + (0.61787623 * hw_4));
-            around = _e194 + ((0.14959599 * hw_4) * _e202);
+            float _e198 = start_3;
+            float _e202 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e197, _e198, graded_5, c_21 + (0.61787623 * hw_6));
+            around = _e194 + ((0.14959599 * hw_6) * _e202);
             float _e205 = around;
             float _e208 = big_b_1;
-            float _e209 = start_2;
-            float _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, c_18 - (0.7554044 * hw_4));
-            around = _e205 + ((0.12462897 * hw_4) * _e213);
+            float _e209 = start_3;
+            float _e213 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e208, _e209, graded_5, c_21 - (0.7554044 * hw_6));
+            around = _e205 + ((0.12462897 * hw_6) * _e213);
             float _e216 = around;
             float _e219 = big_b_1;
-            float _e220 = start_2;
-            float _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, c_18 + (0.7554044 * hw_4));
-            around = _e216 + ((0.12462897 * hw_4) * _e224);
+            float _e220 = start_3;
+            float _e224 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e219, _e220, graded_5, c_21 + (0.7554044 * hw_6));
+            around = _e216 + ((0.12462897 * hw_6) * _e224);
             float _e227 = around;
             float _e230 = big_b_1;
-            float _e231 = start_2;
-            float _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, c_18 - (0.8656312 * hw_4));
-            around = _e227 + ((0.09515851 * hw_4) * _e235);
+            float _e231 = start_3;
+            float _e235 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e230, _e231, graded_5, c_21 - (0.8656312 * hw_6));
+            around = _e227 + ((0.09515851 * hw_6) * _e235);
             float _e238 = around;
             float _e241 = big_b_1;
-            float _e242 = start_2;
-            float _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, c_18 + (0.8656312 * hw_4));
-            around = _e238 + ((0.09515851 * hw_4) * _e246);
+            float _e242 = start_3;
+            float _e246 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e241, _e242, graded_5, c_21 + (0.8656312 * hw_6));
+            around = _e238 + ((0.09515851 * hw_6) * _e246);
             float _e249 = around;
             float _e252 = big_b_1;
-            float _e253 = start_2;
-            float _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, c_18 - (0.944575 * hw_4));
-            around = _e249 + ((0.062253524 * hw_4) * _e257);
+            float _e253 = start_3;
+            float _e257 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e252, _e253, graded_5, c_21 - (0.944575 * hw_6));
+            around = _e249 + ((0.062253524 * hw_6) * _e257);
             float _e260 = around;
             float _e263 = big_b_1;
-            float _e264 = start_2;
-            float _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, c_18 + (0.944575 * hw_4));
-            around = _e260 + ((0.062253524 * hw_4) * _e268);
+            float _e264 = start_3;
+            float _e268 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e263, _e264, graded_5, c_21 + (0.944575 * hw_6));
+            around = _e260 + ((0.062253524 * hw_6) * _e268);
             float _e271 = around;
             float _e274 = big_b_1;
-            float _e275 = start_2;
-            float _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, c_18 - (0.9894009 * hw_4));
-            around = _e271 + ((0.02715246 * hw_4) * _e279);
+            float _e275 = start_3;
+            float _e279 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e274, _e275, graded_5, c_21 - (0.9894009 * hw_6));
+            around = _e271 + ((0.02715246 * hw_6) * _e279);
             float _e282 = around;
             float _e285 = big_b_1;
-            float _e286 = start_2;
-            float _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, c_18 + (0.9894009 * hw_4));
-            around = _e282 + ((0.02715246 * hw_4) * _e290);
-            float _e293 = sum_11;
+            float _e286 = start_3;
+            float _e290 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e285, _e286, graded_5, c_21 + (0.9894009 * hw_6));
+            around = _e282 + ((0.02715246 * hw_6) * _e290);
+            float _e293 = sum_13;
             float _e294 = wpsi;
             float _e295 = around;
-            sum_11 = _e293 + (_e294 * _e295);
+            sum_13 = _e293 + (_e294 * _e295);
         }
     }
-    float _e301 = sum_11;
+    float _e301 = sum_13;
     return _e301;
 }
 
 float airlight_sphere(
-    AirlightScene s_39,
-    AirlightArea a_25,
-    metal::float3 x_23
+    AirlightScene s_42,
+    AirlightArea a_27,
+    metal::float3 x_26
 ) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_6 = 0u;
-    bool local_182 = {};
+    uint j_8 = 0u;
     bool local_183 = {};
     bool local_184 = {};
     bool local_185 = {};
     bool local_186 = {};
-    metal::float3 v_8 = a_25.c - x_23;
-    float _e5 = airlight_safe_length(v_8);
-    if (!((_e5 > a_25.radius))) {
+    bool local_187 = {};
+    metal::float3 v_11 = a_27.c - x_26;
+    float _e5 = airlight_safe_length(v_11);
+    if (!((_e5 > a_27.radius))) {
         return 0.0;
     }
-    float sin_a_2 = a_25.radius / _e5;
-    AirlightCap cap_4 = AirlightCap {v_8 / metal::float3(_e5), _e5, a_25.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
+    float sin_a_2 = a_27.radius / _e5;
+    AirlightCap cap_4 = AirlightCap {v_11 / metal::float3(_e5), _e5, a_27.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_39 = uint2(4294967295u);
-    bool loop_init_38 = true;
+    uint2 loop_bound_44 = uint2(4294967295u);
+    bool loop_init_43 = true;
     while(true) {
-        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_38) {
-            uint _e92 = j_6;
-            j_6 = _e92 + 1u;
+        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_43) {
+            uint _e92 = j_8;
+            j_8 = _e92 + 1u;
         }
-        loop_init_38 = false;
-        uint _e32 = j_6;
+        loop_init_43 = false;
+        uint _e32 = j_8;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            uint _e39 = j_6;
-            metal::float2 lobe_2 = (_e39 == 1u) ? a_25.lobes.zw : a_25.lobes.xy;
-            float c_19 = metal::dot(cap_4.a, lobe_2.x * a_25.d);
+            uint _e39 = j_8;
+            metal::float2 lobe_6 = (_e39 == 1u) ? a_27.lobes.zw : a_27.lobes.xy;
+            float c_22 = metal::dot(cap_4.a, lobe_6.x * a_27.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_182 = lobe_2.y > 0.0;
-            } else {
-                local_182 = false;
-            }
-            bool _e57 = local_182;
-            if (_e57) {
-                local_183 = lobe_2.y < (_e23 + _e23);
+                local_183 = lobe_6.y > 0.0;
             } else {
                 local_183 = false;
             }
-            bool _e64 = local_183;
-            if (_e64) {
-                if (!((c_19 > cap_4.cos_a))) {
-                    if (c_19 > -(cap_4.cos_a)) {
-                        float _e77 = airlight_acos(c_19);
-                        local_186 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y);
-                    } else {
-                        local_186 = false;
-                    }
-                    bool _e84 = local_186;
-                    local_185 = _e84;
-                } else {
-                    local_185 = true;
-                }
-                bool _e86 = local_185;
-                local_184 = _e86;
+            bool _e57 = local_183;
+            if (_e57) {
+                local_184 = lobe_6.y < (_e23 + _e23);
             } else {
                 local_184 = false;
             }
-            bool _e88 = local_184;
+            bool _e64 = local_184;
+            if (_e64) {
+                if (!((c_22 > cap_4.cos_a))) {
+                    if (c_22 > -(cap_4.cos_a)) {
+                        float _e77 = airlight_acos(c_22);
+                        local_187 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y);
+                    } else {
+                        local_187 = false;
+                    }
+                    bool _e84 = local_187;
+                    local_186 = _e84;
+                } else {
+                    local_186 = true;
+                }
+                bool _e86 = local_186;
+                local_185 = _e86;
+            } else {
+                local_185 = false;
+            }
+            bool _e88 = local_185;
             if (_e88) {
-                chosen = lobe_2.y;
-                sign_3 = lobe_2.x;
-                cos_p_2 = c_19;
+                chosen = lobe_6.y;
+                sign_3 = lobe_6.x;
+                cos_p_2 = c_22;
             }
         }
     }
@@ -7828,57 +8265,57 @@ float airlight_sphere(
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_39, a_25, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_42, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_39, a_25, cap_4);
+    float _e101 = airlight_sphere_cap(s_42, a_27, cap_4);
     return _e101;
 }
 
 float airlight_emitter_radiance(
-    AirlightScene s_40,
-    AirlightArea a_26,
-    metal::float3 x_24
+    AirlightScene s_43,
+    AirlightArea a_28,
+    metal::float3 x_27
 ) {
-    switch(s_40.light_shape) {
+    switch(s_43.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_40, a_26, x_24);
+            float _e4 = airlight_disc(s_43, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_40, a_26, x_24);
+            float _e5 = airlight_parallelogram(s_43, a_28, x_27);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_40, a_26, x_24);
+            float _e6 = airlight_sphere(s_43, a_28, x_27);
             return _e6;
         }
     }
 }
 
 float airlight_area_node(
-    AirlightScene s_41,
-    AirlightArea a_27,
+    AirlightScene s_44,
+    AirlightArea a_29,
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
-    float along = (a_27.h_eff * _e3.y) / _e3.x;
-    float t_11 = a_27.x_h + along;
-    float fade = metal::exp(metal::min(-(s_41.sigma_t) * metal::max((a_27.x_h - s_41.t_min) + along, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_41, a_27, s_41.origin + (t_11 * a_27.d));
-    return ((a_27.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
+    float along = (a_29.h_eff * _e3.y) / _e3.x;
+    float t_12 = a_29.x_h + along;
+    float fade = metal::exp(metal::min(-(s_44.sigma_t) * metal::max((a_29.x_h - s_44.t_min) + along, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_44, a_29, s_44.origin + (t_12 * a_29.d));
+    return ((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
 AirlightResult airlight_area_light(
-    AirlightScene s_42
+    AirlightScene s_45
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
-    float k_7 = {};
+    float k_8 = {};
     float gauss_1 = {};
-    uint j_7 = {};
-    bool local_187 = {};
-    AirlightArea _e1 = airlight_area(s_42);
+    uint j_9 = {};
+    bool local_188 = {};
+    AirlightArea _e1 = airlight_area(s_45);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -7887,16 +8324,16 @@ AirlightResult airlight_area_light(
     st_1 = _e13;
     uint max_panels_3 = metal::max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = (2u * max_panels_3) - 1u;
-    uint2 loop_bound_40 = uint2(4294967295u);
-    bool loop_init_39 = true;
+    uint2 loop_bound_45 = uint2(4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_39) {
+        if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
             uint _e97 = step_2;
             step_2 = _e97 + 1u;
         }
-        loop_init_39 = false;
+        loop_init_44 = false;
         uint _e24 = step_2;
         if (_e24 < evaluations) {
         } else {
@@ -7905,51 +8342,51 @@ AirlightResult airlight_area_light(
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_20 = 0.5 * (_e27 + _e29);
+            float c_23 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_5 = 0.5 * (_e34 - _e36);
-            k_7 = 0.0;
+            float hw_7 = 0.5 * (_e34 - _e36);
+            k_8 = 0.0;
             gauss_1 = 0.0;
-            j_7 = 0u;
-            uint2 loop_bound_41 = uint2(4294967295u);
-            bool loop_init_40 = true;
+            j_9 = 0u;
+            uint2 loop_bound_46 = uint2(4294967295u);
+            bool loop_init_45 = true;
             while(true) {
-                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                if (!loop_init_40) {
-                    uint _e82 = j_7;
-                    j_7 = _e82 + 1u;
+                if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                if (!loop_init_45) {
+                    uint _e82 = j_9;
+                    j_9 = _e82 + 1u;
                 }
-                loop_init_40 = false;
-                uint _e46 = j_7;
+                loop_init_45 = false;
+                uint _e46 = j_9;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_7;
+                    uint _e49 = j_9;
                     metal::float3 node_2 = _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_7;
+                    uint _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
-                        uint _e66 = j_7;
-                        local_187 = _e66 < 14u;
+                        uint _e66 = j_9;
+                        local_188 = _e66 < 14u;
                     } else {
-                        local_187 = false;
+                        local_188 = false;
                     }
-                    bool _e70 = local_187;
-                    float x_33 = _e70 ? (c_20 - (hw_5 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_20 + (hw_5 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_42, _e1, x_33);
-                    float _e73 = k_7;
-                    k_7 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
+                    bool _e70 = local_188;
+                    float x_36 = _e70 ? (c_23 - (hw_7 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_23 + (hw_7 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_45, _e1, x_36);
+                    float _e73 = k_8;
+                    k_8 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
                     gauss_1 = _e77 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].z * _e72);
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_7;
+            float _e85 = k_8;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_5, _e87 * hw_5, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_7, _e87 * hw_7, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -7965,45 +8402,45 @@ AirlightResult airlight_area_light(
     if (!(_e105)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    return AirlightResult {s_42.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
+    return AirlightResult {s_45.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
 }
 
 AirlightResult airlight_in_scatter_area(
-    AirlightScene s_43
+    AirlightScene s_46
 ) {
-    bool local_188 = {};
     bool local_189 = {};
-    bool _e1 = airlight_valid(s_43);
+    bool local_190 = {};
+    bool _e1 = airlight_valid(s_46);
     if (!(!(_e1))) {
-        local_188 = s_43.light_shape < AIRLIGHT_SHAPE_DISC;
-    } else {
-        local_188 = true;
-    }
-    bool _e10 = local_188;
-    if (!(_e10)) {
-        local_189 = s_43.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_189 = s_46.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
         local_189 = true;
     }
-    bool _e18 = local_189;
+    bool _e10 = local_189;
+    if (!(_e10)) {
+        local_190 = s_46.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_190 = true;
+    }
+    bool _e18 = local_190;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_area_light(s_43);
+    AirlightResult _e22 = airlight_area_light(s_46);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_190 = {};
+    bool local_191 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_190 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_191 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_190 = true;
+        local_191 = true;
     }
-    bool _e11 = local_190;
+    bool _e11 = local_191;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -8014,26 +8451,26 @@ AirlightResult airlight_node_integral(
     AirlightNode n_3
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_191 = {};
-    AirlightCanonical g_28 = {};
-    AirlightScene p_7 = n_3.scene;
+    bool local_192 = {};
+    AirlightCanonical g_29 = {};
+    AirlightScene p_8 = n_3.scene;
     bool _e7 = airlight_vec_finite(n_3.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_3.scene.dir);
-        local_191 = _e11;
+        local_192 = _e11;
     } else {
-        local_191 = false;
+        local_192 = false;
     }
-    bool _e13 = local_191;
+    bool _e13 = local_192;
     if (_e13) {
-        g_28 = n_3.canonical;
+        g_29 = n_3.canonical;
         if (!(n_3.exact)) {
-            AirlightCanonical _e18 = airlight_canonical(p_7);
-            AirlightCanonical _e19 = airlight_refined(p_7, _e18);
-            g_28 = _e19;
+            AirlightCanonical _e18 = airlight_canonical(p_8);
+            AirlightCanonical _e19 = airlight_refined(p_8, _e18);
+            g_29 = _e19;
         }
-        AirlightCanonical _e20 = g_28;
-        AirlightResult _e21 = airlight_in_scatter_canonical(p_7, _e20);
+        AirlightCanonical _e20 = g_29;
+        AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -8050,61 +8487,61 @@ AirlightResult airlight_point_integral(
 }
 
 AirlightResult airlight_in_scatter_point(
-    AirlightScene s_44
+    AirlightScene s_47
 ) {
-    bool local_192 = {};
     bool local_193 = {};
-    bool _e1 = airlight_valid(s_44);
+    bool local_194 = {};
+    bool _e1 = airlight_valid(s_47);
     if (!(!(_e1))) {
-        local_192 = s_44.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_192 = true;
-    }
-    bool _e10 = local_192;
-    if (!(_e10)) {
-        local_193 = s_44.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_193 = s_47.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_193 = true;
     }
-    bool _e18 = local_193;
+    bool _e10 = local_193;
+    if (!(_e10)) {
+        local_194 = s_47.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_194 = true;
+    }
+    bool _e18 = local_194;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_point_integral(s_44);
+    AirlightResult _e22 = airlight_point_integral(s_47);
     return _e22;
 }
 
 AirlightResult airlight_in_scatter_route(
-    AirlightScene s_45
+    AirlightScene s_48
 ) {
-    bool local_194 = {};
     bool local_195 = {};
-    bool _e1 = airlight_valid(s_45);
+    bool local_196 = {};
+    bool _e1 = airlight_valid(s_48);
     if (!(!(_e1))) {
-        local_194 = s_45.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_194 = true;
-    }
-    bool _e10 = local_194;
-    if (!(_e10)) {
-        local_195 = s_45.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_195 = s_48.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_195 = true;
     }
-    bool _e18 = local_195;
+    bool _e10 = local_195;
+    if (!(_e10)) {
+        local_196 = s_48.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_196 = true;
+    }
+    bool _e18 = local_196;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e22 = airlight_canonical(s_45);
-    AirlightCanonical _e23 = airlight_refined(s_45, _e22);
-    AirlightResult _e24 = airlight_limits(s_45, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_48);
+    AirlightCanonical _e23 = airlight_refined(s_48, _e22);
+    AirlightResult _e24 = airlight_limits(s_48, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_45);
+    bool _e29 = airlight_isotropic_scene(s_48);
     if (!(_e29)) {
-        metal::float2 _e31 = airlight_angle_route(s_45, _e23);
+        metal::float2 _e31 = airlight_angle_route(s_48, _e23);
         if (_e31.x > 0.5) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult {metal::max(_e31.y, 0.0), AIRLIGHT_STATUS_OK});
             return _e40;
@@ -8114,24 +8551,24 @@ AirlightResult airlight_in_scatter_route(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_46
+    AirlightScene s_49
 ) {
     AirlightAdaptive st_2 = {};
     uint step_3 = 0u;
-    float k_8 = {};
+    float k_9 = {};
     float gauss_2 = {};
-    uint j_8 = {};
-    bool local_196 = {};
-    float f = {};
+    uint j_10 = {};
     bool local_197 = {};
-    bool _e1 = airlight_valid(s_46);
+    float f = {};
+    bool local_198 = {};
+    bool _e1 = airlight_valid(s_49);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    if (s_46.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_49.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e12 = airlight_outer(s_46);
+    AirlightOuter _e12 = airlight_outer(s_49);
     if (_e12.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -8142,16 +8579,16 @@ AirlightResult airlight_in_scatter(
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges.inner[0], _e12.edges.inner[1]);
     st_2 = _e30;
     uint evaluations_1 = (2u * _e12.max_panels) - 1u;
-    uint2 loop_bound_42 = uint2(4294967295u);
-    bool loop_init_41 = true;
+    uint2 loop_bound_47 = uint2(4294967295u);
+    bool loop_init_46 = true;
     while(true) {
-        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_41) {
+        if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+        if (!loop_init_46) {
             uint _e137 = step_3;
             step_3 = _e137 + 1u;
         }
-        loop_init_41 = false;
+        loop_init_46 = false;
         uint _e39 = step_3;
         if (_e39 < evaluations_1) {
         } else {
@@ -8160,70 +8597,70 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_21 = 0.5 * (_e42 + _e44);
+            float c_24 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_6 = 0.5 * (_e49 - _e51);
-            k_8 = 0.0;
+            float hw_8 = 0.5 * (_e49 - _e51);
+            k_9 = 0.0;
             gauss_2 = 0.0;
-            j_8 = 0u;
-            uint2 loop_bound_43 = uint2(4294967295u);
-            bool loop_init_42 = true;
+            j_10 = 0u;
+            uint2 loop_bound_48 = uint2(4294967295u);
+            bool loop_init_47 = true;
             while(true) {
-                if (metal::all(loop_bound_43 == uint2(0u))) { break; }
-                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                if (!loop_init_42) {
-                    uint _e121 = j_8;
-                    j_8 = _e121 + 1u;
+                if (metal::all(loop_bound_48 == uint2(0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_47) {
+                    uint _e121 = j_10;
+                    j_10 = _e121 + 1u;
                 }
-                loop_init_42 = false;
-                uint _e61 = j_8;
+                loop_init_47 = false;
+                uint _e61 = j_10;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_8;
+                    uint _e64 = j_10;
                     metal::float3 node_3 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_8;
+                    uint _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
-                        uint _e81 = j_8;
-                        local_196 = _e81 < 6u;
+                        uint _e81 = j_10;
+                        local_197 = _e81 < 6u;
                     } else {
-                        local_196 = false;
+                        local_197 = false;
                     }
-                    bool _e85 = local_196;
-                    float w_10 = _e85 ? (c_21 - (hw_6 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_21 + (hw_6 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
-                    AirlightNode _e87 = airlight_outer_node(s_46, _e12, w_10);
+                    bool _e85 = local_197;
+                    float w_11 = _e85 ? (c_24 - (hw_8 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_24 + (hw_8 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    AirlightNode _e87 = airlight_outer_node(s_49, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_46.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_197 = s_46.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_49.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_198 = s_49.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_197 = false;
+                            local_198 = false;
                         }
-                        bool _e106 = local_197;
+                        bool _e106 = local_198;
                         if (_e106) {
                             return _e93;
                         }
                         f = _e93.in_scatter * _e87.weight;
                     }
-                    float _e110 = k_8;
+                    float _e110 = k_9;
                     float _e112 = f;
-                    k_8 = _e110 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].y * _e112);
+                    k_9 = _e110 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].y * _e112);
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = _e115 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].z * _e117);
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_8;
+            float _e124 = k_9;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_6, _e126 * hw_6, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_8, _e126 * hw_8, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

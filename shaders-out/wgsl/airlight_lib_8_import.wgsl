@@ -207,6 +207,19 @@ struct AirlightAbove {
     rho0_: f32,
 }
 
+struct AirlightOutline {
+    corners: array<vec2<f32>, 4>,
+    radius: f32,
+}
+
+struct AirlightFlatLobe {
+    p: vec3<f32>,
+    sign: f32,
+    scale: f32,
+    l: f32,
+    q: vec2<f32>,
+}
+
 struct AirlightCap {
     a: vec3<f32>,
     dc: f32,
@@ -437,10 +450,10 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
-    let z_10 = (x * x);
-    let c_8 = (1f + (z_10 * (-0.5f + (z_10 * (0.041666668f + (z_10 * (-0.0013888889f + (z_10 * (0.000024801588f + (z_10 * (-0.0000002755732f + (z_10 * (0.0000000020876756f + (z_10 * (-0.000000000011470745f + (z_10 * 0.000000000000047794773f))))))))))))))));
-    let s_47 = (1f + (z_10 * (-0.16666667f + (z_10 * (0.008333334f + (z_10 * (-0.0001984127f + (z_10 * (0.0000027557319f + (z_10 * (-0.000000025052108f + (z_10 * (0.00000000016059044f + (z_10 * (-0.00000000000076471636f + (z_10 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_47 * x));
+    let z_14 = (x * x);
+    let c_8 = (1f + (z_14 * (-0.5f + (z_14 * (0.041666668f + (z_14 * (-0.0013888889f + (z_14 * (0.000024801588f + (z_14 * (-0.0000002755732f + (z_14 * (0.0000000020876756f + (z_14 * (-0.000000000011470745f + (z_14 * 0.000000000000047794773f))))))))))))))));
+    let s_50 = (1f + (z_14 * (-0.16666667f + (z_14 * (0.008333334f + (z_14 * (-0.0001984127f + (z_14 * (0.0000027557319f + (z_14 * (-0.000000025052108f + (z_14 * (0.00000000016059044f + (z_14 * (-0.00000000000076471636f + (z_14 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_50 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -465,11 +478,11 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_11 = (_e17 * _e18);
+    let z_15 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_11) - 0.13877685f) * z_11) + 0.19977711f) * z_11) - 0.3333295f) * z_11) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_15) - 0.13877685f) * z_15) + 0.19977711f) * z_15) - 0.3333295f) * z_15) * _e32) + _e34));
 }
 
 fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
@@ -497,10 +510,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_48 = (x_2 / (2f + x_2));
-    let z_12 = (s_48 * s_48);
-    let sum_12 = ((((((((((((((((z_12 / 17f) + 0.06666667f) * z_12) + 0.07692308f) * z_12) + 0.09090909f) * z_12) + 0.11111111f) * z_12) + 0.14285715f) * z_12) + 0.2f) * z_12) + 0.33333334f) * z_12) + 1f);
-    return ((2f * s_48) * sum_12);
+    let s_51 = (x_2 / (2f + x_2));
+    let z_16 = (s_51 * s_51);
+    let sum_14 = ((((((((((((((((z_16 / 17f) + 0.06666667f) * z_16) + 0.07692308f) * z_16) + 0.09090909f) * z_16) + 0.11111111f) * z_16) + 0.14285715f) * z_16) + 0.2f) * z_16) + 0.33333334f) * z_16) + 1f);
+    return ((2f * s_51) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -570,9 +583,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_25 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_28 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_25 * x_25) + (y_5 * y_5)) < 1f);
+    return (((x_28 * x_28) + (y_5 * y_5)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -646,8 +659,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_13 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_13);
+    let b_14 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_14);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -657,7 +670,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_13, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_14, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -724,12 +737,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_6 = f32(_e2);
-    let b_14 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
-    let a_28 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
-    let disc = (1f - ((4f * a_28) / (b_14 * b_14)));
-    t_2 = b_14;
+    let b_15 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
+    let a_30 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
+    let disc = (1f - ((4f * a_30) / (b_15 * b_15)));
+    t_2 = b_15;
     if (disc > 0f) {
-        t_2 = ((b_14 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_15 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -867,11 +880,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_29 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_29 * a_29));
+        let a_31 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_31 * a_31));
     }
-    let b_15 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_15 * b_15));
+    let b_16 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_16 * b_16));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -965,8 +978,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_26 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_26 * x_26) * (3f - (2f * x_26)));
+            let x_29 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_29 * x_29) * (3f - (2f * x_29)));
         }
         default: {
             return 1f;
@@ -985,11 +998,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_30 = abs(g_4);
-    if !((a_30 > 0f)) {
+    let a_32 = abs(g_4);
+    if !((a_32 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_30) * (1f - a_30)) / (a_30 + a_30));
+    return (((1f - a_32) * (1f - a_32)) / (a_32 + a_32));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1003,8 +1016,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_31 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_31) / a_31), (a_31 > 0f)), sigma_1);
+            let a_33 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_33) / a_33), (a_33 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1222,10 +1235,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_27 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_27);
+            let x_30 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_30);
             if _e42 {
-                let _e43 = airlight_log1p(x_27);
+                let _e43 = airlight_log1p(x_30);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1358,8 +1371,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_28 = rule[(i_3 / 2u)].x;
-    return select(x_28, -(x_28), ((i_3 % 2u) == 0u));
+    let x_31 = rule[(i_3 / 2u)].x;
+    return select(x_31, -(x_31), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
@@ -1436,8 +1449,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_29 = (lambda / f32((2u * k0_)));
-            let per_step = (x_29 * x_29);
+            let x_32 = (lambda / f32((2u * k0_)));
+            let per_step = (x_32 * x_32);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1774,35 +1787,35 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
         return 1f;
     }
     let measured = sqrt((last / before));
-    let q_5 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_7 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if (q_5 < 1f) {
+    if (q_7 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_5) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_7) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_5) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_7) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_5) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_7) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_5) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_7) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_5) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_7) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_5) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_7) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_5) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_7) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_5) + abs(m_1[7])), false);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_7) + abs(m_1[7])), false);
         let _e133 = aliasing;
-        return min(((_e133 + (q_5 * truncation)) / m_1[0]), 1f);
+        return min(((_e133 + (q_7 * truncation)) / m_1[0]), 1f);
     }
     let _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -1843,8 +1856,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_32 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_32 + sqrt(max(((a_32 * a_32) - 1f), 0f)));
+    let a_34 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_34 + sqrt(max(((a_34 * a_34) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -1859,8 +1872,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_30 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_30)), (x_30 > 0f));
+    let x_33 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_33)), (x_33 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -1919,8 +1932,8 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e40 = r_2;
             let _e41 = i_6;
             let _e42 = airlight_node(_e8, _e41);
-            let v_6 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_6);
+            let v_8 = (_e39 + (_e40 * _e42));
+            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_8);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_6;
@@ -2322,13 +2335,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_31 = (abs(alpha) + abs(beta));
+    let x_34 = (abs(alpha) + abs(beta));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_31) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_34) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2338,7 +2351,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_31) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_34) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2348,7 +2361,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_31) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_34) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2358,7 +2371,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_31) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_34) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2368,7 +2381,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_31) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_34) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2378,7 +2391,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_31) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_34) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2388,7 +2401,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_31) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_34) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2398,7 +2411,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_31) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_34) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -2635,13 +2648,13 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                         continue;
                     }
                     let _e212 = airlight_graded_split(wa, wb, _e10);
-                    let mid = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
+                    let mid_1 = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
                     a_10 = wa;
-                    b_9 = mid;
+                    b_9 = mid_1;
                     let _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -2734,8 +2747,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_5 = (v_s + inv_h);
     let r_11 = ((1f + (w_5 * w_5)) / (1f + (v_s * v_s)));
-    let e_6 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_6 * inv_h);
+    let e_9 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_9 * inv_h);
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
@@ -2859,9 +2872,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_33 = abs(p0_4);
+            let a_35 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_33) / a_33), (a_33 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_35) / a_35), (a_35 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -2923,15 +2936,15 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let below_1 = (lower <= 1.5707964f);
             let _e248 = psi1_1;
             let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
-            let cs_1 = _e254.y;
+            let cs_2 = _e254.y;
             let sn = select(_e254.x, -(_e254.x), below_1);
             let near_pole = (1f + _e254.x);
-            let far_pole = ((cs_1 * cs_1) / near_pole);
+            let far_pole = ((cs_2 * cs_2) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_9 = select((near_pole / cs_1), (cs_1 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_1 > 0f));
-            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_1)));
+            let y_9 = select((near_pole / cs_2), (cs_2 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_2 > 0f));
+            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
             let gw = (weight_3 * f_2);
@@ -3008,23 +3021,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_34 = (a0_ / scale_2);
-    let b_16 = (b0_ / scale_2);
+    let a_36 = (a0_ / scale_2);
+    let b_17 = (b0_ / scale_2);
     let c_10 = (c0_ / scale_2);
-    let disc_1 = ((b_16 * b_16) - ((4f * a_34) * c_10));
+    let disc_1 = ((b_17 * b_17) - ((4f * a_36) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_16 < 0f) {
+    if (b_17 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_6 = (-0.5f * (b_16 + (_e47 * sqrt(disc_1))));
-    if (q_6 != 0f) {
-        r1_ = (c_10 / q_6);
+    let q_8 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
+    if (q_8 != 0f) {
+        r1_ = (c_10 / q_8);
     }
-    if (a_34 != 0f) {
-        r2_2 = (q_6 / a_34);
+    if (a_36 != 0f) {
+        r2_2 = (q_8 / a_36);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3069,15 +3082,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_35 = (sigma_11 * g_15.d_el);
+    let a_37 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_35 * a_35) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_35) / d_3);
-    if (a_35 > 0f) {
-        y1_1 = (d_3 / (a_35 + root_1));
+    let root_1 = sqrt(((a_37 * a_37) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_37) / d_3);
+    if (a_37 > 0f) {
+        y1_1 = (d_3 / (a_37 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -3507,15 +3520,15 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     } else {
         local_47 = false;
     }
-    let inside = local_47;
+    let inside_1 = local_47;
     if (x_h < t0_) {
         gap_2 = (t0_ - x_h);
     } else {
-        if !(inside) {
+        if !(inside_1) {
             gap_2 = (x_h - t1_);
         }
     }
-    if !(inside) {
+    if !(inside_1) {
         let _e48 = gap_2;
         local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
@@ -3832,8 +3845,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_5 = (v_3 / vec3(m_8));
-    return (u_5 / vec3(length(u_5)));
+    let u_7 = (v_3 / vec3(m_8));
+    return (u_7 / vec3(length(u_7)));
 }
 
 fn airlight_valid(s_18: AirlightScene) -> bool {
@@ -4338,9 +4351,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_7 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_7);
-    return vec2<f32>(_e4, select(0f, e_7, _e12));
+    let e_10 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_10);
+    return vec2<f32>(_e4, select(0f, e_10, _e12));
 }
 
 fn airlight_split_high(x_14: f32) -> f32 {
@@ -4353,9 +4366,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_8 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_8);
-    return vec2<f32>(_e4, select(0f, e_8, _e17));
+    let e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_11);
+    return vec2<f32>(_e4, select(0f, e_11, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4872,9 +4885,9 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             }
             let _e30 = (*list_1);
             let _e32 = airlight_list_get(_e30, _e9.worst);
-            let mid_1 = (0.5f * (_e32.x + _e32.y));
-            if (mid_1 > _e32.x) {
-                local_130 = (mid_1 < _e32.y);
+            let mid_2 = (0.5f * (_e32.x + _e32.y));
+            if (mid_2 > _e32.x) {
+                local_130 = (mid_2 < _e32.y);
             } else {
                 local_130 = false;
             }
@@ -4883,7 +4896,7 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
             }
-            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+            return AirlightSplit(true, _e32.x, mid_2, _e32.y, _e9.worst);
         }
         continuing {
             let _e57 = tries;
@@ -4948,10 +4961,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_15: f32) -> f32 {
     var r_4: f32;
 
-    let a_36 = abs(x_15);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_36));
-    if (a_36 <= 4096f) {
-        let _e17 = airlight_log1p((a_36 + ((a_36 * a_36) / (1f + sqrt((1f + (a_36 * a_36)))))));
+    let a_38 = abs(x_15);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_38));
+    if (a_38 <= 4096f) {
+        let _e17 = airlight_log1p((a_38 + ((a_38 * a_38) / (1f + sqrt((1f + (a_38 * a_38)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -4969,15 +4982,15 @@ fn airlight_to_w(g_21: AirlightOuter, s_21: f32) -> f32 {
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
     let r_12 = (x_16 - 1.5707964f);
-    let z_13 = (r_12 * r_12);
-    let cos_r = (1f - ((z_13 / 2f) * (1f - ((z_13 / 12f) * (1f - ((z_13 / 30f) * (1f - ((z_13 / 56f) * (1f - ((z_13 / 90f) * (1f - ((z_13 / 132f) * (1f - (z_13 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_13 / 6f) * (1f - ((z_13 / 20f) * (1f - ((z_13 / 42f) * (1f - ((z_13 / 72f) * (1f - ((z_13 / 110f) * (1f - ((z_13 / 156f) * (1f - (z_13 / 210f)))))))))))))));
+    let z_17 = (r_12 * r_12);
+    let cos_r = (1f - ((z_17 / 2f) * (1f - ((z_17 / 12f) * (1f - ((z_17 / 30f) * (1f - ((z_17 / 56f) * (1f - ((z_17 / 90f) * (1f - ((z_17 / 132f) * (1f - (z_17 / 182f))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_17 / 6f) * (1f - ((z_17 / 20f) * (1f - ((z_17 / 42f) * (1f - ((z_17 / 72f) * (1f - ((z_17 / 110f) * (1f - ((z_17 / 156f) * (1f - (z_17 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
 fn airlight_acos(x_17: f32) -> f32 {
-    let a_37 = abs(x_17);
-    let _e8 = airlight_atan(sqrt(((1f - a_37) / (1f + a_37))));
+    let a_39 = abs(x_17);
+    let _e8 = airlight_atan(sqrt(((1f - a_39) / (1f + a_39))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
@@ -4987,12 +5000,12 @@ fn airlight_angle(c_6: f32, s_22: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_38 = (cos_a * cos_g);
-    let b_17 = (sin_a * sin_g);
-    if (b_17 <= abs(a_38)) {
-        return select(0f, AIRLIGHT_PI, (a_38 > 0f));
+    let a_40 = (cos_a * cos_g);
+    let b_18 = (sin_a * sin_g);
+    if (b_18 <= abs(a_40)) {
+        return select(0f, AIRLIGHT_PI, (a_40 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_38) / b_17), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_40) / b_18), -1f, 1f));
     return _e18;
 }
 
@@ -5075,22 +5088,22 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_24.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_32 = dot(_e111, _e112);
+        let x_35 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_10 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_32 * x_32) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_35 * x_35) + (y_10 * y_10)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_32, abs(y_10));
+            let _e140 = airlight_angle(x_35, abs(y_10));
             let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_32 / _e145), (-(y_10) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_35 / _e145), (-(y_10) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5232,33 +5245,33 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             }
             {
                 let _e339 = i_22;
-                let e_9 = g_22.gamma[_e339];
-                if !((e_9 == kinks[0])) {
-                    local_134 = (e_9 == kinks[1]);
+                let e_12 = g_22.gamma[_e339];
+                if !((e_12 == kinks[0])) {
+                    local_134 = (e_12 == kinks[1]);
                 } else {
                     local_134 = true;
                 }
                 let _e350 = local_134;
                 if !(_e350) {
-                    local_135 = (e_9 == kinks[2]);
+                    local_135 = (e_12 == kinks[2]);
                 } else {
                     local_135 = true;
                 }
                 let _e357 = local_135;
                 if !(_e357) {
-                    local_136 = (e_9 == kinks[3]);
+                    local_136 = (e_12 == kinks[3]);
                 } else {
                     local_136 = true;
                 }
                 let _e364 = local_136;
                 if !(_e364) {
-                    local_137 = (e_9 == kinks[4]);
+                    local_137 = (e_12 == kinks[4]);
                 } else {
                     local_137 = true;
                 }
                 let _e371 = local_137;
                 if !(_e371) {
-                    local_138 = (e_9 == kinks[5]);
+                    local_138 = (e_12 == kinks[5]);
                 } else {
                     local_138 = true;
                 }
@@ -5396,14 +5409,14 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_23.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_7 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    let q_9 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if (exponent_1 > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     let _e48 = reach;
     let _e51 = reach;
-    let s2_1 = select(1f, (_e48 / q_7.k), (_e51 < q_7.k));
+    let s2_1 = select(1f, (_e48 / q_9.k), (_e51 < q_9.k));
     let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
@@ -5432,7 +5445,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_7, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_9, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5500,11 +5513,11 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         let _e37 = g_24;
         return _e37;
     }
-    let e_10 = (ab_1 / vec3(_e15));
+    let e_13 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_25.dir);
     let w0_ = (s_25.light_position - s_25.origin);
-    let cos_a_2 = dot(e_10, _e41);
-    let along_e = dot(e_10, w0_);
+    let cos_a_2 = dot(e_13, _e41);
+    let along_e = dot(e_13, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_5 = ((s_25.flags & 1u) != 0u);
@@ -5515,7 +5528,7 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_10 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
         local_144 = (sin_a_1 > 0f);
@@ -5609,7 +5622,7 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_10;
+    g_24.e = e_13;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -5723,16 +5736,16 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_33 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_8 = (x_20 - f32(i_33));
-        let a_39 = g_25.gamma[i_33];
-        let b_18 = g_25.gamma[(i_33 + 1u)];
-        let w_9 = (b_18 - a_39);
-        let u_6 = (1f - t_8);
-        let smooth_a = (((g_25.smooth_edges >> i_33) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_33 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_39 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
-        jacobian = (((w_9 * 6f) * t_8) * u_6);
+        let i_36 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_20 - f32(i_36));
+        let a_41 = g_25.gamma[i_36];
+        let b_19 = g_25.gamma[(i_36 + 1u)];
+        let w_9 = (b_19 - a_41);
+        let u_8 = (1f - t_8);
+        let smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_41 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
+        jacobian = (((w_9 * 6f) * t_8) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
             local_160 = !(smooth_a);
@@ -5740,7 +5753,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_160 = false;
         }
         let _e66 = local_160;
-        gamma_1 = select(_e58, (a_39 + ((w_9 * t_8) * t_8)), _e66);
+        gamma_1 = select(_e58, (a_41 + ((w_9 * t_8) * t_8)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_161 = !(smooth_a);
@@ -5756,7 +5769,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_162 = false;
         }
         let _e85 = local_162;
-        gamma_1 = select(_e77, (b_18 - ((w_9 * u_6) * u_6)), _e85);
+        gamma_1 = select(_e77, (b_19 - ((w_9 * u_8) * u_8)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_163 = !(smooth_b);
@@ -5764,7 +5777,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_163 = false;
         }
         let _e94 = local_163;
-        jacobian = select(_e87, (w_9 * (u_6 + u_6)), _e94);
+        jacobian = select(_e87, (w_9 * (u_8 + u_8)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
             local_164 = smooth_b;
@@ -5772,7 +5785,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_164 = false;
         }
         let _e102 = local_164;
-        gamma_1 = select(_e96, (a_39 + (w_9 * t_8)), _e102);
+        gamma_1 = select(_e96, (a_41 + (w_9 * t_8)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_165 = smooth_b;
@@ -6004,8 +6017,8 @@ fn airlight_phase_lobes(s_29: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_40 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_40) / a_40), (a_40 > 0f)));
+            let a_42 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_42) / a_42), (a_42 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6051,9 +6064,9 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     if infinite_3 {
         return 1.5707964f;
     }
-    let u_7 = (t_3 - a_17.x_h);
-    let _e13 = airlight_atan2_upper(abs(u_7), a_17.h_eff);
-    return (select(-1f, 1f, (u_7 >= 0f)) * _e13);
+    let u_9 = (t_3 - a_17.x_h);
+    let _e13 = airlight_atan2_upper(abs(u_9), a_17.h_eff);
+    return (select(-1f, 1f, (u_9 >= 0f)) * _e13);
 }
 
 fn airlight_area(s_30: AirlightScene) -> AirlightArea {
@@ -6130,7 +6143,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         let _e89 = a_18;
         return _e89;
     }
-    let o = s_30.origin;
+    let o_5 = s_30.origin;
     let _e92 = airlight_normalize(s_30.dir);
     a_18.d = _e92;
     let infinite_6 = ((s_30.flags & 1u) != 0u);
@@ -6139,17 +6152,17 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     size = s_30.light_param_a;
     if (s_30.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e114 = a_18.c;
-        let oc = (o - _e114);
-        let b_19 = dot(oc, _e92);
+        let oc = (o_5 - _e114);
+        let b_20 = dot(oc, _e92);
         let _e119 = a_18.radius;
         let _e121 = a_18.radius;
-        let k_9 = (dot(oc, oc) - (_e119 * _e121));
-        let disc_2 = ((b_19 * b_19) - k_9);
+        let k_10 = (dot(oc, oc) - (_e119 * _e121));
+        let disc_2 = ((b_20 * b_20) - k_10);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_8 = (-(b_19) - select(root_2, -(root_2), ((bitcast<u32>(b_19) & 2147483648u) != 0u)));
-            cut0_ = q_8;
-            cut1_ = (k_9 / q_8);
+            let q_10 = (-(b_20) - select(root_2, -(root_2), ((bitcast<u32>(b_20) & 2147483648u) != 0u)));
+            cut0_ = q_10;
+            cut1_ = (k_10 / q_10);
             cut_count = 2u;
         }
     } else {
@@ -6190,7 +6203,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         let _e203 = a_18.c;
         let _e206 = a_18.n;
         let _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o), _e206) / dot(_e92, _e209));
+        cut0_ = (dot((_e203 - o_5), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
     let _e213 = size;
@@ -6200,7 +6213,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         return _e219;
     }
     let _e220 = centre;
-    let to_centre = (_e220 - o);
+    let to_centre = (_e220 - o_5);
     a_18.x_h = dot(to_centre, _e92);
     let _e225 = a_18.x_h;
     let _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
@@ -6211,7 +6224,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     end_infinite = infinite_6;
     if (s_30.sigma_t > 0f) {
         let _e242 = centre;
-        let _e246 = airlight_safe_length((_e242 - (o + (t0_2 * _e92))));
+        let _e246 = airlight_safe_length((_e242 - (o_5 + (t0_2 * _e92))));
         let _e248 = size;
         let reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385f / s_30.sigma_t));
         if !(infinite_6) {
@@ -6301,11 +6314,11 @@ fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: Airlight
     let r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
     let dr = (above_1.rho0_ / (_e5.x * _e5.x));
     let p_3 = (above_1.off + (r_13 * e_3));
-    let z_14 = above_1.z;
-    let dist = sqrt((((z_14 * z_14) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+    let z_18 = above_1.z;
+    let dist = sqrt((((z_18 * z_18) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
     let inv_5 = (1f / dist);
-    let cos_ = (z_14 * inv_5);
-    let _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_14 * a_19.dirs.z)) * inv_5));
+    let cos_ = (z_18 * inv_5);
+    let _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_18 * a_19.dirs.z)) * inv_5));
     let _e48 = airlight_emitted(s_31, cos_);
     return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0f))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -6368,354 +6381,709 @@ fn airlight_flat_radial(s_32: AirlightScene, a_20: AirlightArea, above_2: Airlig
     return _e158;
 }
 
-fn airlight_disc(s_33: AirlightScene, a_21: AirlightArea, x_21: vec3<f32>) -> f32 {
-    var u_4: vec2<f32> = vec2(0f);
-    var above_3: AirlightAbove;
-    var sum_8: f32 = 0f;
+fn airlight_outline_nearest(o: AirlightOutline, q_4: vec2<f32>) -> vec2<f32> {
+    var best: f32 = AIRLIGHT_FLT_MAX;
+    var nearest: vec2<f32>;
+    var inside: bool = true;
     var i_28: u32 = 0u;
-    var e_5: vec2<f32>;
-    var r_max_1: f32;
+    var local_179: bool;
 
-    let rel = (x_21 - a_21.c);
-    let z_15 = dot(rel, a_21.n);
-    if !((z_15 > 0f)) {
-        return 0f;
+    if (o.radius > 0f) {
+        let qc = (q_4 - o.corners[0]);
+        let dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
+        if (dq <= o.radius) {
+            return q_4;
+        }
+        return (o.corners[0] + ((qc * o.radius) / vec2(dq)));
     }
-    let fx = dot(rel, a_21.a1_);
-    let fy_1 = dot(rel, a_21.a2_);
-    let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_21.radius;
-    let inside_1 = (rf <= radius_2);
-    let _e26 = airlight_above(z_15, vec2(0f));
-    above_3 = _e26;
-    if !(inside_1) {
-        u_4 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
-        let _e35 = u_4;
-        let _e37 = airlight_above(z_15, ((rf - radius_2) * _e35));
-        above_3 = _e37;
-    }
-    let k_10 = ((rf - radius_2) * (rf + radius_2));
+    nearest = q_4;
     loop {
-        let _e45 = i_28;
-        if (_e45 < 32u) {
+        let _e32 = i_28;
+        if (_e32 < 4u) {
         } else {
             break;
         }
         {
-            let _e48 = i_28;
-            let _e49 = airlight_azimuths(inside_1, _e48);
-            let _e52 = u_4.x;
-            let _e56 = u_4.y;
-            let _e61 = u_4.y;
-            let _e65 = u_4.x;
-            e_5 = vec2<f32>(((_e49.x * _e52) - (_e49.y * _e56)), ((_e49.x * _e61) + (_e49.y * _e65)));
-            r_max_1 = ((radius_2 + radius_2) * _e49.x);
-            if inside_1 {
-                e_5 = _e49.xy;
-                let b_20 = ((fx * _e49.x) + (fy_1 * _e49.y));
-                let root_3 = sqrt(((b_20 * b_20) - k_10));
-                r_max_1 = select((root_3 - b_20), (-(k_10) / (b_20 + root_3)), (b_20 > 0f));
+            let _e36 = i_28;
+            let a_43 = o.corners[_e36];
+            let _e39 = i_28;
+            let e_14 = (o.corners[((_e39 + 1u) % 4u)] - a_43);
+            let _e46 = inside;
+            if _e46 {
+                local_179 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0f);
+            } else {
+                local_179 = false;
             }
-            let _e90 = sum_8;
-            let _e92 = above_3;
-            let _e93 = e_5;
-            let _e94 = r_max_1;
-            let _e95 = airlight_flat_radial(s_33, a_21, _e92, _e93, _e94);
-            sum_8 = (_e90 + (_e49.z * _e95));
+            let _e63 = local_179;
+            inside = _e63;
+            let t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0f, 1f);
+            let p_4 = (a_43 + (t_10 * e_14));
+            let dd = (((p_4.x - q_4.x) * (p_4.x - q_4.x)) + ((p_4.y - q_4.y) * (p_4.y - q_4.y)));
+            let _e103 = best;
+            if (dd < _e103) {
+                best = dd;
+                nearest = p_4;
+            }
         }
         continuing {
-            let _e99 = i_28;
-            i_28 = (_e99 + 1u);
+            let _e106 = i_28;
+            i_28 = (_e106 + 1u);
         }
     }
-    let _e101 = sum_8;
-    return _e101;
+    let _e108 = nearest;
+    let _e109 = inside;
+    return select(_e108, q_4, _e109);
 }
 
-fn airlight_parallelogram(s_34: AirlightScene, a_22: AirlightArea, x_22: vec3<f32>) -> f32 {
-    var q_4: vec2<f32>;
-    var local_179: bool;
+fn airlight_flat_lobe(a_21: AirlightArea, z_10: f32, o_1: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
+    var j_5: u32 = 0u;
     var local_180: bool;
     var local_181: bool;
-    var best: f32 = AIRLIGHT_FLT_MAX;
-    var i_29: u32 = 0u;
-    var sum_9: f32 = 0f;
-    var i_30: u32 = 0u;
-    var j_5: u32;
+    var local_182: bool;
 
-    let rel_1 = (x_22 - a_22.c);
-    let z_16 = dot(rel_1, a_22.n);
-    if !((z_16 > 0f)) {
-        return 0f;
-    }
-    let foot = vec2<f32>(dot(rel_1, a_22.a1_), dot(rel_1, a_22.a2_));
-    let u2_ = vec2<f32>(dot(a_22.eu, a_22.a1_), dot(a_22.eu, a_22.a2_));
-    let v2_ = vec2<f32>(dot(a_22.ev, a_22.a1_), dot(a_22.ev, a_22.a2_));
-    let corners = array<vec2<f32>, 5>(vec2(0f), u2_, (u2_ + v2_), v2_, vec2(0f));
-    let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
-    let fu = (((foot.x * v2_.y) - (foot.y * v2_.x)) / det);
-    let fv = (((u2_.x * foot.y) - (u2_.y * foot.x)) / det);
-    q_4 = foot;
-    if (fu >= 0f) {
-        local_179 = (fu <= 1f);
-    } else {
-        local_179 = false;
-    }
-    let _e67 = local_179;
-    if _e67 {
-        local_180 = (fv >= 0f);
-    } else {
-        local_180 = false;
-    }
-    let _e73 = local_180;
-    if _e73 {
-        local_181 = (fv <= 1f);
-    } else {
-        local_181 = false;
-    }
-    let _e79 = local_181;
-    if !(_e79) {
-        loop {
-            let _e85 = i_29;
-            if (_e85 < 4u) {
-            } else {
-                break;
-            }
-            {
-                let _e88 = i_29;
-                let c0_1 = corners[_e88];
-                let _e90 = i_29;
-                let e_11 = (corners[(_e90 + 1u)] - c0_1);
-                let t_10 = clamp(((((foot.x - c0_1.x) * e_11.x) + ((foot.y - c0_1.y) * e_11.y)) / ((e_11.x * e_11.x) + (e_11.y * e_11.y))), 0f, 1f);
-                let p_4 = (c0_1 + (t_10 * e_11));
-                let dd = (((p_4.x - foot.x) * (p_4.x - foot.x)) + ((p_4.y - foot.y) * (p_4.y - foot.y)));
-                let _e134 = best;
-                if (dd < _e134) {
-                    best = dd;
-                    q_4 = p_4;
-                }
-            }
-            continuing {
-                let _e137 = i_29;
-                i_29 = (_e137 + 1u);
-            }
-        }
-    }
-    let _e139 = q_4;
-    let _e141 = airlight_above(z_16, (_e139 - foot));
-    let thin = (AIRLIGHT_FLT_EPS * abs(det));
+    let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_10 * z_10)))));
     loop {
-        let _e149 = i_30;
-        if (_e149 < 4u) {
+        let _e13 = j_5;
+        if (_e13 < 2u) {
         } else {
             break;
         }
         {
-            let _e152 = i_30;
-            let _e154 = q_4;
-            let ca = (corners[_e152] - _e154);
-            let _e156 = i_30;
-            let _e160 = q_4;
-            let cb = (corners[(_e156 + 1u)] - _e160);
-            let area = ((ca.x * cb.y) - (ca.y * cb.x));
-            if !((area > thin)) {
-                continue;
+            let _e20 = j_5;
+            let lobe_4 = select(a_21.lobes.xy, a_21.lobes.zw, (_e20 == 1u));
+            let p_5 = (lobe_4.x * a_21.dirs);
+            if (lobe_4.y > 0f) {
+                local_180 = (p_5.z < 0f);
+            } else {
+                local_180 = false;
             }
-            let e_12 = (cb - ca);
-            let el = sqrt(((e_12.x * e_12.x) + (e_12.y * e_12.y)));
-            let h_9 = (area / el);
-            let m_11 = vec2<f32>((e_12.y / el), (-(e_12.x) / el));
-            let _e194 = airlight_atan2_upper(area, ((ca.x * cb.x) + (ca.y * cb.y)));
-            let start_3 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
-            j_5 = 0u;
+            let _e36 = local_180;
+            if _e36 {
+                local_181 = (lobe_4.y < (_e10 + _e10));
+            } else {
+                local_181 = false;
+            }
+            let _e43 = local_181;
+            if _e43 {
+                let l_4 = (z_10 / -(p_5.z));
+                let q_11 = (l_4 * p_5.xy);
+                let _e49 = airlight_outline_nearest(o_1, q_11);
+                let to_near = vec3<f32>(_e49, -(z_10));
+                let cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1f);
+                if !(all((_e49 == q_11))) {
+                    let _e63 = airlight_acos(cos_1);
+                    local_182 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                } else {
+                    local_182 = true;
+                }
+                let _e69 = local_182;
+                if _e69 {
+                    return AirlightFlatLobe(p_5, lobe_4.x, lobe_4.y, l_4, q_11);
+                }
+            }
+        }
+        continuing {
+            let _e74 = j_5;
+            j_5 = (_e74 + 1u);
+        }
+    }
+    return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f));
+}
+
+fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_5: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
+    let m_11 = vec2<f32>((b_13.y - a_22.y), (a_22.x - b_13.x));
+    let num = (((q_5.x - a_22.x) * m_11.x) + ((q_5.y - a_22.y) * m_11.y));
+    let den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
+    if (den > 0f) {
+        return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
+    }
+    if (den < 0f) {
+        return vec2<f32>(max(chord.x, (-(num) / den)), chord.y);
+    }
+    if (num > 0f) {
+        return vec2<f32>(1f, 0f);
+    }
+    return chord;
+}
+
+fn airlight_outline_chord(o_2: AirlightOutline, q_6: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
+    var chord_1: vec2<f32> = vec2<f32>(0f, 340282350000000000000000000000000000000f);
+
+    if (o_2.radius > 0f) {
+        let qc_1 = (q_6 - o_2.corners[0]);
+        let a_44 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        let b_21 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
+        let k_11 = ((dq_1 - o_2.radius) * (dq_1 + o_2.radius));
+        let disc_3 = ((b_21 * b_21) - (a_44 * k_11));
+        if !((disc_3 > 0f)) {
+            return vec2(0f);
+        }
+        let root_3 = sqrt(disc_3);
+        let t_11 = (-(b_21) - select(root_3, -(root_3), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
+        let r1_2 = (t_11 / a_44);
+        let r2_3 = (k_11 / t_11);
+        let hi_8 = max(r1_2, r2_3);
+        if !((hi_8 > 0f)) {
+            return vec2(0f);
+        }
+        return vec2<f32>(max(min(r1_2, r2_3), 0f), hi_8);
+    }
+    let _e70 = chord_1;
+    let _e75 = airlight_clip(_e70, o_2.corners[0], o_2.corners[1], q_6, e_6);
+    chord_1 = _e75;
+    let _e76 = chord_1;
+    let _e81 = airlight_clip(_e76, o_2.corners[1], o_2.corners[2], q_6, e_6);
+    chord_1 = _e81;
+    let _e82 = chord_1;
+    let _e87 = airlight_clip(_e82, o_2.corners[2], o_2.corners[3], q_6, e_6);
+    chord_1 = _e87;
+    let _e88 = chord_1;
+    let _e93 = airlight_clip(_e88, o_2.corners[3], o_2.corners[0], q_6, e_6);
+    return _e93;
+}
+
+fn airlight_flat_lobe_node(s_33: AirlightScene, z_11: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded: f32, g_27: f32) -> f32 {
+    let _e7 = airlight_cos_sin_half_turn(g_27);
+    let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded * _e7.y) / _e7.x)));
+    let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
+    if !((c_17 > 0f)) {
+        return 0f;
+    }
+    let _e26 = airlight_emitted(s_33, c_17);
+    let _e38 = airlight_area_phase(s_33, (lobe_1.sign * _e13.x));
+    return (((((_e26 * exp(min(((-(s_33.sigma_t) * z_11) / c_17), 0f))) * _e38) * _e13.y) * graded) / (_e7.x * _e7.x));
+}
+
+fn airlight_flat_lobe_along(s_34: AirlightScene, z_12: f32, o_3: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+    var sum_8: f32 = 0f;
+
+    let w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
+    let k_12 = (w_10.z / -(lobe_2.p.z));
+    let _e23 = airlight_outline_chord(o_3, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
+    if !((_e23.x < _e23.y)) {
+        return 0f;
+    }
+    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
+    let _e40 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
+    let graded_4 = max(lobe_2.scale, _e34);
+    let _e45 = airlight_atan(((_e40 - _e34) / graded_4));
+    let c_18 = (0.5f * _e45);
+    let hw_3 = (0.5f * _e45);
+    let _e52 = sum_8;
+    let _e58 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.09501251f * hw_3)));
+    sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
+    let _e61 = sum_8;
+    let _e67 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.09501251f * hw_3)));
+    sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
+    let _e70 = sum_8;
+    let _e76 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.28160354f * hw_3)));
+    sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
+    let _e79 = sum_8;
+    let _e85 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.28160354f * hw_3)));
+    sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
+    let _e88 = sum_8;
+    let _e94 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.45801678f * hw_3)));
+    sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
+    let _e97 = sum_8;
+    let _e103 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.45801678f * hw_3)));
+    sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
+    let _e106 = sum_8;
+    let _e112 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.61787623f * hw_3)));
+    sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
+    let _e115 = sum_8;
+    let _e121 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.61787623f * hw_3)));
+    sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
+    let _e124 = sum_8;
+    let _e130 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.7554044f * hw_3)));
+    sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
+    let _e133 = sum_8;
+    let _e139 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.7554044f * hw_3)));
+    sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
+    let _e142 = sum_8;
+    let _e148 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.8656312f * hw_3)));
+    sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
+    let _e151 = sum_8;
+    let _e157 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.8656312f * hw_3)));
+    sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
+    let _e160 = sum_8;
+    let _e166 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.944575f * hw_3)));
+    sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
+    let _e169 = sum_8;
+    let _e175 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.944575f * hw_3)));
+    sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
+    let _e178 = sum_8;
+    let _e184 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.9894009f * hw_3)));
+    sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
+    let _e187 = sum_8;
+    let _e193 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.9894009f * hw_3)));
+    sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
+    let _e196 = sum_8;
+    return _e196;
+}
+
+fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 {
+    let y_11 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    let _e23 = airlight_atan2_upper(abs(y_11), ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    return (select(1f, -1f, (y_11 < 0f)) * _e23);
+}
+
+fn airlight_wrap_turn(x_21: f32) -> f32 {
+    return (x_21 - (6.2831855f * round((x_21 / 6.2831855f))));
+}
+
+fn airlight_cos_sin_turns(x_22: f32) -> vec2<f32> {
+    let _e1 = airlight_wrap_turn(x_22);
+    let _e3 = airlight_cos_sin_half_turn(abs(_e1));
+    return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
+}
+
+fn airlight_sort4_(x_23: vec4<f32>) -> vec4<f32> {
+    let a_45 = vec4<f32>(min(x_23.x, x_23.y), max(x_23.x, x_23.y), min(x_23.z, x_23.w), max(x_23.z, x_23.w));
+    let b_22 = vec4<f32>(min(a_45.x, a_45.z), min(a_45.y, a_45.w), max(a_45.x, a_45.z), max(a_45.y, a_45.w));
+    return vec4<f32>(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
+}
+
+fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+    var sum_9: f32 = 0f;
+    var i_29: u32 = 0u;
+    var i_30: u32 = 0u;
+    var mid: f32 = 0f;
+    var i_31: u32 = 0u;
+    var j_6: u32;
+
+    let _e5 = airlight_basis_e1_(lobe_3.p);
+    let v_9 = cross(lobe_3.p, _e5);
+    let q_12 = lobe_3.q;
+    if (o_4.radius > 0f) {
+        let d_5 = (o_4.corners[0] - q_12);
+        let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
+        if (dq_2 <= o_4.radius) {
             loop {
-                let _e207 = j_5;
-                if (_e207 < 12u) {
+                let _e29 = i_29;
+                if (_e29 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e210 = j_5;
-                    let _e211 = airlight_triangle_rule(_e210);
-                    let _e218 = airlight_cos_sin_half_turn(((0.5f * _e194) * (1f + _e211.x)));
-                    let dir_3 = vec2<f32>(((_e218.x * start_3.x) - (_e218.y * start_3.y)), ((_e218.y * start_3.x) + (_e218.x * start_3.y)));
-                    let _e234 = sum_9;
-                    let _e247 = airlight_flat_radial(s_34, a_22, _e141, dir_3, (h_9 / ((dir_3.x * m_11.x) + (dir_3.y * m_11.y))));
-                    sum_9 = (_e234 + (((_e211.y * 0.5f) * _e194) * _e247));
+                    let _e33 = i_29;
+                    let _e34 = airlight_azimuths(true, _e33);
+                    let _e35 = sum_9;
+                    let _e38 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e34.xy);
+                    sum_9 = (_e35 + (_e34.z * _e38));
                 }
                 continuing {
-                    let _e251 = j_5;
-                    j_5 = (_e251 + 1u);
+                    let _e42 = i_29;
+                    i_29 = (_e42 + 1u);
+                }
+            }
+            let _e44 = sum_9;
+            return _e44;
+        }
+        let sb_1 = (o_4.radius / dq_2);
+        let cb = (sqrt(((dq_2 - o_4.radius) * (dq_2 + o_4.radius))) / dq_2);
+        let _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        let _e66 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        let _e68 = airlight_wrap_turn((_e66 - _e54));
+        let _e80 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        let _e82 = airlight_wrap_turn((_e80 - _e54));
+        let centre_2 = (_e54 + ((_e68 + _e82) * 0.5f));
+        let half_19 = (abs((_e68 - _e82)) * 0.5f);
+        loop {
+            let _e93 = i_30;
+            if (_e93 < 32u) {
+            } else {
+                break;
+            }
+            {
+                let _e97 = i_30;
+                let _e98 = airlight_azimuths(false, _e97);
+                let _e99 = sum_9;
+                let _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
+                let _e108 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e107);
+                sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
+            }
+            continuing {
+                let _e112 = i_30;
+                i_30 = (_e112 + 1u);
+            }
+        }
+        let _e114 = sum_9;
+        return _e114;
+    }
+    let _e115 = airlight_outline_nearest(o_4, q_12);
+    let inside_2 = all((_e115 == q_12));
+    if !(inside_2) {
+        let _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_4.corners[0] + o_4.corners[2])) - q_12));
+        mid = _e129;
+    }
+    let _e133 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[0] - q_12));
+    let _e134 = mid;
+    let _e136 = airlight_wrap_turn((_e133 - _e134));
+    let _e140 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[1] - q_12));
+    let _e141 = mid;
+    let _e143 = airlight_wrap_turn((_e140 - _e141));
+    let _e147 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[2] - q_12));
+    let _e148 = mid;
+    let _e150 = airlight_wrap_turn((_e147 - _e148));
+    let _e154 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[3] - q_12));
+    let _e155 = mid;
+    let _e157 = airlight_wrap_turn((_e154 - _e155));
+    let _e159 = airlight_sort4_(vec4<f32>(_e136, _e143, _e150, _e157));
+    let wedges = select(3u, 4u, inside_2);
+    loop {
+        let _e165 = i_31;
+        if (_e165 < wedges) {
+        } else {
+            break;
+        }
+        {
+            let _e167 = mid;
+            let _e168 = i_31;
+            let first_2 = (_e167 + _e159[_e168]);
+            let _e171 = mid;
+            let _e172 = i_31;
+            let _e181 = i_31;
+            let last_1 = (_e171 + select(_e159[min((_e172 + 1u), 3u)], (_e159.x + 6.2831855f), (_e181 == 3u)));
+            let c_19 = ((first_2 + last_1) * 0.5f);
+            let hw_4 = ((last_1 - first_2) * 0.5f);
+            j_6 = 0u;
+            loop {
+                let _e194 = j_6;
+                if (_e194 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e197 = j_6;
+                    let _e198 = airlight_triangle_rule(_e197);
+                    let _e199 = sum_9;
+                    let _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
+                    let _e206 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e205);
+                    sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
+                }
+                continuing {
+                    let _e210 = j_6;
+                    j_6 = (_e210 + 1u);
                 }
             }
         }
         continuing {
-            let _e254 = i_30;
-            i_30 = (_e254 + 1u);
+            let _e213 = i_31;
+            i_31 = (_e213 + 1u);
         }
     }
-    let _e256 = sum_9;
-    return _e256;
+    let _e215 = sum_9;
+    return _e215;
 }
 
-fn airlight_cap_row(s_35: AirlightScene, cap: AirlightCap, graded: f32, node: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_disc(s_36: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+    var u_6: vec2<f32> = vec2(0f);
+    var above_3: AirlightAbove;
+    var sum_10: f32 = 0f;
+    var i_32: u32 = 0u;
+    var e_8: vec2<f32>;
+    var r_max_1: f32;
+
+    let rel = (x_24 - a_23.c);
+    let z_19 = dot(rel, a_23.n);
+    if !((z_19 > 0f)) {
+        return 0f;
+    }
+    let fx = dot(rel, a_23.a1_);
+    let fy_1 = dot(rel, a_23.a2_);
+    let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
+    let radius_2 = a_23.radius;
+    let zero_1 = vec2(0f);
+    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
+    let _e30 = airlight_flat_lobe(a_23, z_19, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    if (_e30.scale > 0f) {
+        let _e34 = airlight_flat_about_lobe(s_36, z_19, outline, _e30);
+        return _e34;
+    }
+    let inside_3 = (rf <= radius_2);
+    let _e41 = airlight_above(z_19, vec2(0f));
+    above_3 = _e41;
+    if !(inside_3) {
+        u_6 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
+        let _e50 = u_6;
+        let _e52 = airlight_above(z_19, ((rf - radius_2) * _e50));
+        above_3 = _e52;
+    }
+    let k_13 = ((rf - radius_2) * (rf + radius_2));
+    loop {
+        let _e60 = i_32;
+        if (_e60 < 32u) {
+        } else {
+            break;
+        }
+        {
+            let _e63 = i_32;
+            let _e64 = airlight_azimuths(inside_3, _e63);
+            let _e67 = u_6.x;
+            let _e71 = u_6.y;
+            let _e76 = u_6.y;
+            let _e80 = u_6.x;
+            e_8 = vec2<f32>(((_e64.x * _e67) - (_e64.y * _e71)), ((_e64.x * _e76) + (_e64.y * _e80)));
+            r_max_1 = ((radius_2 + radius_2) * _e64.x);
+            if inside_3 {
+                e_8 = _e64.xy;
+                let b_23 = ((fx * _e64.x) + (fy_1 * _e64.y));
+                let root_4 = sqrt(((b_23 * b_23) - k_13));
+                r_max_1 = select((root_4 - b_23), (-(k_13) / (b_23 + root_4)), (b_23 > 0f));
+            }
+            let _e105 = sum_10;
+            let _e107 = above_3;
+            let _e108 = e_8;
+            let _e109 = r_max_1;
+            let _e110 = airlight_flat_radial(s_36, a_23, _e107, _e108, _e109);
+            sum_10 = (_e105 + (_e64.z * _e110));
+        }
+        continuing {
+            let _e114 = i_32;
+            i_32 = (_e114 + 1u);
+        }
+    }
+    let _e116 = sum_10;
+    return _e116;
+}
+
+fn airlight_parallelogram(s_37: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+    var sum_11: f32 = 0f;
+    var i_33: u32 = 0u;
+    var j_7: u32;
+
+    let rel_1 = (x_25 - a_24.c);
+    let z_20 = dot(rel_1, a_24.n);
+    if !((z_20 > 0f)) {
+        return 0f;
+    }
+    let foot = vec2<f32>(dot(rel_1, a_24.a1_), dot(rel_1, a_24.a2_));
+    let u2_ = vec2<f32>(dot(a_24.eu, a_24.a1_), dot(a_24.eu, a_24.a2_));
+    let v2_ = vec2<f32>(dot(a_24.ev, a_24.a1_), dot(a_24.ev, a_24.a2_));
+    let corners = array<vec2<f32>, 5>(vec2(0f), u2_, (u2_ + v2_), v2_, vec2(0f));
+    let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
+    let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0f);
+    let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
+    let _e69 = airlight_flat_lobe(a_24, z_20, about_foot, ((0.5f * corners[2]) - foot), size_2);
+    if (_e69.scale > 0f) {
+        let _e73 = airlight_flat_about_lobe(s_37, z_20, about_foot, _e69);
+        return _e73;
+    }
+    let _e76 = airlight_outline_nearest(about_foot, vec2(0f));
+    let q_13 = (_e76 + foot);
+    let _e79 = airlight_above(z_20, (q_13 - foot));
+    let thin = (AIRLIGHT_FLT_EPS * abs(det));
+    loop {
+        let _e87 = i_33;
+        if (_e87 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e90 = i_33;
+            let ca = (corners[_e90] - q_13);
+            let _e93 = i_33;
+            let cb_1 = (corners[(_e93 + 1u)] - q_13);
+            let area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
+            if !((area > thin)) {
+                continue;
+            }
+            let e_15 = (cb_1 - ca);
+            let el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
+            let h_9 = (area / el);
+            let m_12 = vec2<f32>((e_15.y / el), (-(e_15.x) / el));
+            let _e130 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
+            let start_4 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
+            j_7 = 0u;
+            loop {
+                let _e143 = j_7;
+                if (_e143 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e146 = j_7;
+                    let _e147 = airlight_triangle_rule(_e146);
+                    let _e154 = airlight_cos_sin_half_turn(((0.5f * _e130) * (1f + _e147.x)));
+                    let dir_3 = vec2<f32>(((_e154.x * start_4.x) - (_e154.y * start_4.y)), ((_e154.y * start_4.x) + (_e154.x * start_4.y)));
+                    let _e170 = sum_11;
+                    let _e183 = airlight_flat_radial(s_37, a_24, _e79, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    sum_11 = (_e170 + (((_e147.y * 0.5f) * _e130) * _e183));
+                }
+                continuing {
+                    let _e187 = j_7;
+                    j_7 = (_e187 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e190 = i_33;
+            i_33 = (_e190 + 1u);
+        }
+    }
+    let _e192 = sum_11;
+    return _e192;
+}
+
+fn airlight_cap_row(s_38: AirlightScene, cap: AirlightCap, graded_1: f32, node: f32, weight_1: f32) -> vec3<f32> {
     var phi: f32;
     var w_2: f32;
 
     phi = node;
     w_2 = weight_1;
-    if (graded > 0f) {
+    if (graded_1 > 0f) {
         let _e9 = airlight_cos_sin_half_turn(node);
-        phi = ((graded * _e9.y) / _e9.x);
-        w_2 = ((weight_1 * graded) / (_e9.x * _e9.x));
+        phi = ((graded_1 * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded_1) / (_e9.x * _e9.x));
     }
     let _e19 = phi;
     let _e20 = airlight_cos_sin_half_turn(_e19);
-    let sb_1 = (cap.sin_a * _e20.y);
-    let cb_1 = sqrt(((1f - sb_1) * (1f + sb_1)));
-    let dist_1 = max(((cap.dc * cb_1) - (cap.radius * _e20.x)), 0f);
+    let sb_2 = (cap.sin_a * _e20.y);
+    let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
+    let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0f);
     let _e38 = w_2;
-    let _e40 = airlight_emitted(s_35, _e20.x);
-    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_1) * exp(min((-(s_35.sigma_t) * dist_1), 0f)));
-    return vec3<f32>(factor, cb_1, sb_1);
+    let _e40 = airlight_emitted(s_38, _e20.x);
+    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_38.sigma_t) * dist_1), 0f)));
+    return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightCap) -> f32 {
-    var graded_1: f32 = 0f;
+fn airlight_sphere_cap(s_39: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
+    var graded_2: f32 = 0f;
     var top: f32 = 1.5707964f;
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
-    var sum_10: f32 = 0f;
-    var i_31: u32 = 0u;
+    var sum_12: f32 = 0f;
+    var i_34: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_23.d);
-    let e1d = dot(_e4, a_23.d);
-    let e2d = dot(e2_2, a_23.d);
-    let p_5 = u32(s_36.light_param_b);
-    if (p_5 > 1u) {
-        let lobe_1 = (2f / sqrt(f32((p_5 - 1u))));
-        if (lobe_1 < 1.5707964f) {
-            graded_1 = lobe_1;
-            let _e32 = airlight_atan((1.5707964f / lobe_1));
+    let ad = dot(cap_1.a, a_25.d);
+    let e1d = dot(_e4, a_25.d);
+    let e2d = dot(e2_2, a_25.d);
+    let p_6 = u32(s_39.light_param_b);
+    if (p_6 > 1u) {
+        let lobe_5 = (2f / sqrt(f32((p_6 - 1u))));
+        if (lobe_5 < 1.5707964f) {
+            graded_2 = lobe_5;
+            let _e32 = airlight_atan((1.5707964f / lobe_5));
             top = _e32;
         }
     }
     let _e33 = top;
-    let c_17 = (0.5f * _e33);
+    let c_20 = (0.5f * _e33);
     let _e36 = top;
-    let hw_3 = (0.5f * _e36);
-    let _e74 = graded_1;
-    let _e80 = airlight_cap_row(s_36, cap_1, _e74, (c_17 - (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    let hw_5 = (0.5f * _e36);
+    let _e74 = graded_2;
+    let _e80 = airlight_cap_row(s_39, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[0] = _e80;
-    let _e82 = graded_1;
-    let _e88 = airlight_cap_row(s_36, cap_1, _e82, (c_17 + (0.09501251f * hw_3)), (0.1894506f * hw_3));
+    let _e82 = graded_2;
+    let _e88 = airlight_cap_row(s_39, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[1] = _e88;
-    let _e90 = graded_1;
-    let _e96 = airlight_cap_row(s_36, cap_1, _e90, (c_17 - (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    let _e90 = graded_2;
+    let _e96 = airlight_cap_row(s_39, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[2] = _e96;
-    let _e98 = graded_1;
-    let _e104 = airlight_cap_row(s_36, cap_1, _e98, (c_17 + (0.28160354f * hw_3)), (0.18260342f * hw_3));
+    let _e98 = graded_2;
+    let _e104 = airlight_cap_row(s_39, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[3] = _e104;
-    let _e106 = graded_1;
-    let _e112 = airlight_cap_row(s_36, cap_1, _e106, (c_17 - (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    let _e106 = graded_2;
+    let _e112 = airlight_cap_row(s_39, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[4] = _e112;
-    let _e114 = graded_1;
-    let _e120 = airlight_cap_row(s_36, cap_1, _e114, (c_17 + (0.45801678f * hw_3)), (0.16915652f * hw_3));
+    let _e114 = graded_2;
+    let _e120 = airlight_cap_row(s_39, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[5] = _e120;
-    let _e122 = graded_1;
-    let _e128 = airlight_cap_row(s_36, cap_1, _e122, (c_17 - (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    let _e122 = graded_2;
+    let _e128 = airlight_cap_row(s_39, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[6] = _e128;
-    let _e130 = graded_1;
-    let _e136 = airlight_cap_row(s_36, cap_1, _e130, (c_17 + (0.61787623f * hw_3)), (0.14959599f * hw_3));
+    let _e130 = graded_2;
+    let _e136 = airlight_cap_row(s_39, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[7] = _e136;
-    let _e138 = graded_1;
-    let _e144 = airlight_cap_row(s_36, cap_1, _e138, (c_17 - (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    let _e138 = graded_2;
+    let _e144 = airlight_cap_row(s_39, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[8] = _e144;
-    let _e146 = graded_1;
-    let _e152 = airlight_cap_row(s_36, cap_1, _e146, (c_17 + (0.7554044f * hw_3)), (0.12462897f * hw_3));
+    let _e146 = graded_2;
+    let _e152 = airlight_cap_row(s_39, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[9] = _e152;
-    let _e154 = graded_1;
-    let _e160 = airlight_cap_row(s_36, cap_1, _e154, (c_17 - (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    let _e154 = graded_2;
+    let _e160 = airlight_cap_row(s_39, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[10] = _e160;
-    let _e162 = graded_1;
-    let _e168 = airlight_cap_row(s_36, cap_1, _e162, (c_17 + (0.8656312f * hw_3)), (0.09515851f * hw_3));
+    let _e162 = graded_2;
+    let _e168 = airlight_cap_row(s_39, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[11] = _e168;
-    let _e170 = graded_1;
-    let _e176 = airlight_cap_row(s_36, cap_1, _e170, (c_17 - (0.944575f * hw_3)), (0.062253524f * hw_3));
+    let _e170 = graded_2;
+    let _e176 = airlight_cap_row(s_39, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[12] = _e176;
-    let _e178 = graded_1;
-    let _e184 = airlight_cap_row(s_36, cap_1, _e178, (c_17 + (0.944575f * hw_3)), (0.062253524f * hw_3));
+    let _e178 = graded_2;
+    let _e184 = airlight_cap_row(s_39, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[13] = _e184;
-    let _e186 = graded_1;
-    let _e192 = airlight_cap_row(s_36, cap_1, _e186, (c_17 - (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    let _e186 = graded_2;
+    let _e192 = airlight_cap_row(s_39, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[14] = _e192;
-    let _e194 = graded_1;
-    let _e200 = airlight_cap_row(s_36, cap_1, _e194, (c_17 + (0.9894009f * hw_3)), (0.02715246f * hw_3));
+    let _e194 = graded_2;
+    let _e200 = airlight_cap_row(s_39, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[15] = _e200;
-    if a_23.isotropic {
-        let _e206 = airlight_area_phase(s_36, 0f);
+    if a_25.isotropic {
+        let _e206 = airlight_area_phase(s_39, 0f);
         let around_1 = (6.2831855f * _e206);
-        let _e208 = sum_10;
+        let _e208 = sum_12;
         let _e211 = rows[0].x;
-        sum_10 = (_e208 + (_e211 * around_1));
-        let _e214 = sum_10;
+        sum_12 = (_e208 + (_e211 * around_1));
+        let _e214 = sum_12;
         let _e217 = rows[1].x;
-        sum_10 = (_e214 + (_e217 * around_1));
-        let _e220 = sum_10;
+        sum_12 = (_e214 + (_e217 * around_1));
+        let _e220 = sum_12;
         let _e223 = rows[2].x;
-        sum_10 = (_e220 + (_e223 * around_1));
-        let _e226 = sum_10;
+        sum_12 = (_e220 + (_e223 * around_1));
+        let _e226 = sum_12;
         let _e229 = rows[3].x;
-        sum_10 = (_e226 + (_e229 * around_1));
-        let _e232 = sum_10;
+        sum_12 = (_e226 + (_e229 * around_1));
+        let _e232 = sum_12;
         let _e235 = rows[4].x;
-        sum_10 = (_e232 + (_e235 * around_1));
-        let _e238 = sum_10;
+        sum_12 = (_e232 + (_e235 * around_1));
+        let _e238 = sum_12;
         let _e241 = rows[5].x;
-        sum_10 = (_e238 + (_e241 * around_1));
-        let _e244 = sum_10;
+        sum_12 = (_e238 + (_e241 * around_1));
+        let _e244 = sum_12;
         let _e247 = rows[6].x;
-        sum_10 = (_e244 + (_e247 * around_1));
-        let _e250 = sum_10;
+        sum_12 = (_e244 + (_e247 * around_1));
+        let _e250 = sum_12;
         let _e253 = rows[7].x;
-        sum_10 = (_e250 + (_e253 * around_1));
-        let _e256 = sum_10;
+        sum_12 = (_e250 + (_e253 * around_1));
+        let _e256 = sum_12;
         let _e259 = rows[8].x;
-        sum_10 = (_e256 + (_e259 * around_1));
-        let _e262 = sum_10;
+        sum_12 = (_e256 + (_e259 * around_1));
+        let _e262 = sum_12;
         let _e265 = rows[9].x;
-        sum_10 = (_e262 + (_e265 * around_1));
-        let _e268 = sum_10;
+        sum_12 = (_e262 + (_e265 * around_1));
+        let _e268 = sum_12;
         let _e271 = rows[10].x;
-        sum_10 = (_e268 + (_e271 * around_1));
-        let _e274 = sum_10;
+        sum_12 = (_e268 + (_e271 * around_1));
+        let _e274 = sum_12;
         let _e277 = rows[11].x;
-        sum_10 = (_e274 + (_e277 * around_1));
-        let _e280 = sum_10;
+        sum_12 = (_e274 + (_e277 * around_1));
+        let _e280 = sum_12;
         let _e283 = rows[12].x;
-        sum_10 = (_e280 + (_e283 * around_1));
-        let _e286 = sum_10;
+        sum_12 = (_e280 + (_e283 * around_1));
+        let _e286 = sum_12;
         let _e289 = rows[13].x;
-        sum_10 = (_e286 + (_e289 * around_1));
-        let _e292 = sum_10;
+        sum_12 = (_e286 + (_e289 * around_1));
+        let _e292 = sum_12;
         let _e295 = rows[14].x;
-        sum_10 = (_e292 + (_e295 * around_1));
-        let _e298 = sum_10;
+        sum_12 = (_e292 + (_e295 * around_1));
+        let _e298 = sum_12;
         let _e301 = rows[15].x;
-        sum_10 = (_e298 + (_e301 * around_1));
-        let _e304 = sum_10;
+        sum_12 = (_e298 + (_e301 * around_1));
+        let _e304 = sum_12;
         return _e304;
     }
     loop {
-        let _e307 = i_31;
+        let _e307 = i_34;
         if (_e307 < 32u) {
         } else {
             break;
         }
         {
-            let _e311 = i_31;
+            let _e311 = i_34;
             let _e312 = airlight_azimuths(true, _e311);
             let across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
             at_2 = 0f;
@@ -6723,138 +7091,138 @@ fn airlight_sphere_cap(s_36: AirlightScene, a_23: AirlightArea, cap_1: AirlightC
             let _e323 = rows[0].x;
             let _e326 = rows[0].y;
             let _e330 = rows[0].z;
-            let _e333 = airlight_area_phase(s_36, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_39, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[1].x;
             let _e342 = rows[1].y;
             let _e346 = rows[1].z;
-            let _e349 = airlight_area_phase(s_36, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_39, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[2].x;
             let _e358 = rows[2].y;
             let _e362 = rows[2].z;
-            let _e365 = airlight_area_phase(s_36, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_39, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[3].x;
             let _e374 = rows[3].y;
             let _e378 = rows[3].z;
-            let _e381 = airlight_area_phase(s_36, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_39, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[4].x;
             let _e390 = rows[4].y;
             let _e394 = rows[4].z;
-            let _e397 = airlight_area_phase(s_36, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_39, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[5].x;
             let _e406 = rows[5].y;
             let _e410 = rows[5].z;
-            let _e413 = airlight_area_phase(s_36, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_39, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[6].x;
             let _e422 = rows[6].y;
             let _e426 = rows[6].z;
-            let _e429 = airlight_area_phase(s_36, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_39, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[7].x;
             let _e438 = rows[7].y;
             let _e442 = rows[7].z;
-            let _e445 = airlight_area_phase(s_36, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_39, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[8].x;
             let _e454 = rows[8].y;
             let _e458 = rows[8].z;
-            let _e461 = airlight_area_phase(s_36, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_39, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[9].x;
             let _e470 = rows[9].y;
             let _e474 = rows[9].z;
-            let _e477 = airlight_area_phase(s_36, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_39, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[10].x;
             let _e486 = rows[10].y;
             let _e490 = rows[10].z;
-            let _e493 = airlight_area_phase(s_36, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_39, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[11].x;
             let _e502 = rows[11].y;
             let _e506 = rows[11].z;
-            let _e509 = airlight_area_phase(s_36, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_39, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[12].x;
             let _e518 = rows[12].y;
             let _e522 = rows[12].z;
-            let _e525 = airlight_area_phase(s_36, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_39, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[13].x;
             let _e534 = rows[13].y;
             let _e538 = rows[13].z;
-            let _e541 = airlight_area_phase(s_36, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_39, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = at_2;
             let _e547 = rows[14].x;
             let _e550 = rows[14].y;
             let _e554 = rows[14].z;
-            let _e557 = airlight_area_phase(s_36, ((_e550 * ad) + (_e554 * across_1)));
+            let _e557 = airlight_area_phase(s_39, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             let _e560 = at_2;
             let _e563 = rows[15].x;
             let _e566 = rows[15].y;
             let _e570 = rows[15].z;
-            let _e573 = airlight_area_phase(s_36, ((_e566 * ad) + (_e570 * across_1)));
+            let _e573 = airlight_area_phase(s_39, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
-            let _e576 = sum_10;
+            let _e576 = sum_12;
             let _e578 = at_2;
-            sum_10 = (_e576 + (_e312.z * _e578));
+            sum_12 = (_e576 + (_e312.z * _e578));
         }
         continuing {
-            let _e582 = i_31;
-            i_31 = (_e582 + 1u);
+            let _e582 = i_34;
+            i_34 = (_e582 + 1u);
         }
     }
-    let _e584 = sum_10;
+    let _e584 = sum_12;
     return _e584;
 }
 
-fn airlight_sphere_lobe_node(s_37: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
-    let _e8 = airlight_cos_sin_half_turn(g_27);
-    let _e14 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e8.y) / _e8.x)));
+fn airlight_sphere_lobe_node(s_40: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_3: f32, g_28: f32) -> f32 {
+    let _e8 = airlight_cos_sin_half_turn(g_28);
+    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_3 * _e8.y) / _e8.x)));
     let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
-    let root_4 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
-    let dist_2 = max(((cap_2.dc * toward_a) - root_4), 0f);
-    let _e43 = airlight_emitted(s_37, (root_4 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_37, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_37.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_2) / (_e8.x * _e8.x));
+    let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
+    let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
+    let _e43 = airlight_emitted(s_40, (root_5 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_40, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_40.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_3) / (_e8.x * _e8.x));
 }
 
-fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_41: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
-    var sum_11: f32 = 0f;
-    var i_32: u32 = 0u;
+    var sum_13: f32 = 0f;
+    var i_35: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
-    var start_2: f32;
+    var start_3: f32;
     var around: f32;
 
-    let p_6 = (sign_2 * a_24.d);
-    let _e8 = airlight_basis_e1_(p_6);
-    let v_7 = cross(p_6, _e8);
+    let p_7 = (sign_2 * a_26.d);
+    let _e8 = airlight_basis_e1_(p_7);
+    let v_10 = cross(p_7, _e8);
     let au = dot(cap_3.a, _e8);
-    let av = dot(cap_3.a, v_7);
-    let inside_2 = (cos_p_1 > cap_3.cos_a);
+    let av = dot(cap_3.a, v_10);
+    let inside_4 = (cos_p_1 > cap_3.cos_a);
     let sin_p = sqrt(((au * au) + (av * av)));
     if (sin_p > 0f) {
         axis_2 = vec2<f32>((au / sin_p), (av / sin_p));
@@ -6862,19 +7230,19 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_32;
+        let _e47 = i_35;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_32;
-            let _e51 = airlight_azimuths(inside_2, _e50);
+            let _e50 = i_35;
+            let _e51 = airlight_azimuths(inside_4, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
             big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
             wpsi = _e51.z;
-            if !(inside_2) {
+            if !(inside_4) {
                 let _e66 = half_15;
                 let _e69 = airlight_cos_sin((_e66 * _e51.y));
                 big_b_1 = (sin_p * _e69.x);
@@ -6884,186 +7252,186 @@ fn airlight_sphere_about_lobe(s_38: AirlightScene, a_24: AirlightArea, cap_3: Ai
             let _e77 = big_b_1;
             let _e83 = big_b_1;
             let _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
-            let mid_2 = (select(1f, -1f, (_e77 < 0f)) * _e85);
+            let mid_3 = (select(1f, -1f, (_e77 < 0f)) * _e85);
             let _e89 = big_b_1;
             let _e90 = big_b_1;
             let _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1f));
-            start_2 = 0f;
-            if !(inside_2) {
-                start_2 = max((mid_2 - _e97), 0f);
+            start_3 = 0f;
+            if !(inside_4) {
+                start_3 = max((mid_3 - _e97), 0f);
             }
-            let to = (mid_2 + _e97);
-            let _e105 = start_2;
-            let graded_3 = max(scale_1, _e105);
-            let _e107 = start_2;
-            let _e110 = airlight_atan(((to - _e107) / graded_3));
-            let c_18 = (0.5f * _e110);
-            let hw_4 = (0.5f * _e110);
+            let to = (mid_3 + _e97);
+            let _e105 = start_3;
+            let graded_5 = max(scale_1, _e105);
+            let _e107 = start_3;
+            let _e110 = airlight_atan(((to - _e107) / graded_5));
+            let c_21 = (0.5f * _e110);
+            let hw_6 = (0.5f * _e110);
             around = 0f;
             let _e117 = around;
             let _e120 = big_b_1;
-            let _e121 = start_2;
-            let _e125 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e120, _e121, graded_3, (c_18 - (0.09501251f * hw_4)));
-            around = (_e117 + ((0.1894506f * hw_4) * _e125));
+            let _e121 = start_3;
+            let _e125 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e120, _e121, graded_5, (c_21 - (0.09501251f * hw_6)));
+            around = (_e117 + ((0.1894506f * hw_6) * _e125));
             let _e128 = around;
             let _e131 = big_b_1;
-            let _e132 = start_2;
-            let _e136 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e131, _e132, graded_3, (c_18 + (0.09501251f * hw_4)));
-            around = (_e128 + ((0.1894506f * hw_4) * _e136));
+            let _e132 = start_3;
+            let _e136 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e131, _e132, graded_5, (c_21 + (0.09501251f * hw_6)));
+            around = (_e128 + ((0.1894506f * hw_6) * _e136));
             let _e139 = around;
             let _e142 = big_b_1;
-            let _e143 = start_2;
-            let _e147 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e142, _e143, graded_3, (c_18 - (0.28160354f * hw_4)));
-            around = (_e139 + ((0.18260342f * hw_4) * _e147));
+            let _e143 = start_3;
+            let _e147 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e142, _e143, graded_5, (c_21 - (0.28160354f * hw_6)));
+            around = (_e139 + ((0.18260342f * hw_6) * _e147));
             let _e150 = around;
             let _e153 = big_b_1;
-            let _e154 = start_2;
-            let _e158 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e153, _e154, graded_3, (c_18 + (0.28160354f * hw_4)));
-            around = (_e150 + ((0.18260342f * hw_4) * _e158));
+            let _e154 = start_3;
+            let _e158 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e153, _e154, graded_5, (c_21 + (0.28160354f * hw_6)));
+            around = (_e150 + ((0.18260342f * hw_6) * _e158));
             let _e161 = around;
             let _e164 = big_b_1;
-            let _e165 = start_2;
-            let _e169 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e164, _e165, graded_3, (c_18 - (0.45801678f * hw_4)));
-            around = (_e161 + ((0.16915652f * hw_4) * _e169));
+            let _e165 = start_3;
+            let _e169 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e164, _e165, graded_5, (c_21 - (0.45801678f * hw_6)));
+            around = (_e161 + ((0.16915652f * hw_6) * _e169));
             let _e172 = around;
             let _e175 = big_b_1;
-            let _e176 = start_2;
-            let _e180 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e175, _e176, graded_3, (c_18 + (0.45801678f * hw_4)));
-            around = (_e172 + ((0.16915652f * hw_4) * _e180));
+            let _e176 = start_3;
+            let _e180 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e175, _e176, graded_5, (c_21 + (0.45801678f * hw_6)));
+            around = (_e172 + ((0.16915652f * hw_6) * _e180));
             let _e183 = around;
             let _e186 = big_b_1;
-            let _e187 = start_2;
-            let _e191 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e186, _e187, graded_3, (c_18 - (0.61787623f * hw_4)));
-            around = (_e183 + ((0.14959599f * hw_4) * _e191));
+            let _e187 = start_3;
+            let _e191 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e186, _e187, graded_5, (c_21 - (0.61787623f * hw_6)));
+            around = (_e183 + ((0.14959599f * hw_6) * _e191));
             let _e194 = around;
             let _e197 = big_b_1;
-            let _e198 = start_2;
-            let _e202 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e197, _e198, graded_3, (c_18 + (0.61787623f * hw_4)));
-            around = (_e194 + ((0.14959599f * hw_4) * _e202));
+            let _e198 = start_3;
+            let _e202 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e197, _e198, graded_5, (c_21 + (0.61787623f * hw_6)));
+            around = (_e194 + ((0.14959599f * hw_6) * _e202));
             let _e205 = around;
             let _e208 = big_b_1;
-            let _e209 = start_2;
-            let _e213 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e208, _e209, graded_3, (c_18 - (0.7554044f * hw_4)));
-            around = (_e205 + ((0.12462897f * hw_4) * _e213));
+            let _e209 = start_3;
+            let _e213 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e208, _e209, graded_5, (c_21 - (0.7554044f * hw_6)));
+            around = (_e205 + ((0.12462897f * hw_6) * _e213));
             let _e216 = around;
             let _e219 = big_b_1;
-            let _e220 = start_2;
-            let _e224 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e219, _e220, graded_3, (c_18 + (0.7554044f * hw_4)));
-            around = (_e216 + ((0.12462897f * hw_4) * _e224));
+            let _e220 = start_3;
+            let _e224 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e219, _e220, graded_5, (c_21 + (0.7554044f * hw_6)));
+            around = (_e216 + ((0.12462897f * hw_6) * _e224));
             let _e227 = around;
             let _e230 = big_b_1;
-            let _e231 = start_2;
-            let _e235 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e230, _e231, graded_3, (c_18 - (0.8656312f * hw_4)));
-            around = (_e227 + ((0.09515851f * hw_4) * _e235));
+            let _e231 = start_3;
+            let _e235 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e230, _e231, graded_5, (c_21 - (0.8656312f * hw_6)));
+            around = (_e227 + ((0.09515851f * hw_6) * _e235));
             let _e238 = around;
             let _e241 = big_b_1;
-            let _e242 = start_2;
-            let _e246 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e241, _e242, graded_3, (c_18 + (0.8656312f * hw_4)));
-            around = (_e238 + ((0.09515851f * hw_4) * _e246));
+            let _e242 = start_3;
+            let _e246 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e241, _e242, graded_5, (c_21 + (0.8656312f * hw_6)));
+            around = (_e238 + ((0.09515851f * hw_6) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
-            let _e253 = start_2;
-            let _e257 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e252, _e253, graded_3, (c_18 - (0.944575f * hw_4)));
-            around = (_e249 + ((0.062253524f * hw_4) * _e257));
+            let _e253 = start_3;
+            let _e257 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e252, _e253, graded_5, (c_21 - (0.944575f * hw_6)));
+            around = (_e249 + ((0.062253524f * hw_6) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
-            let _e264 = start_2;
-            let _e268 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e263, _e264, graded_3, (c_18 + (0.944575f * hw_4)));
-            around = (_e260 + ((0.062253524f * hw_4) * _e268));
+            let _e264 = start_3;
+            let _e268 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e263, _e264, graded_5, (c_21 + (0.944575f * hw_6)));
+            around = (_e260 + ((0.062253524f * hw_6) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
-            let _e275 = start_2;
-            let _e279 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e274, _e275, graded_3, (c_18 - (0.9894009f * hw_4)));
-            around = (_e271 + ((0.02715246f * hw_4) * _e279));
+            let _e275 = start_3;
+            let _e279 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e274, _e275, graded_5, (c_21 - (0.9894009f * hw_6)));
+            around = (_e271 + ((0.02715246f * hw_6) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
-            let _e286 = start_2;
-            let _e290 = airlight_sphere_lobe_node(s_38, cap_3, sign_2, cos_p_1, _e285, _e286, graded_3, (c_18 + (0.9894009f * hw_4)));
-            around = (_e282 + ((0.02715246f * hw_4) * _e290));
-            let _e293 = sum_11;
+            let _e286 = start_3;
+            let _e290 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e285, _e286, graded_5, (c_21 + (0.9894009f * hw_6)));
+            around = (_e282 + ((0.02715246f * hw_6) * _e290));
+            let _e293 = sum_13;
             let _e294 = wpsi;
             let _e295 = around;
-            sum_11 = (_e293 + (_e294 * _e295));
+            sum_13 = (_e293 + (_e294 * _e295));
         }
         continuing {
-            let _e299 = i_32;
-            i_32 = (_e299 + 1u);
+            let _e299 = i_35;
+            i_35 = (_e299 + 1u);
         }
     }
-    let _e301 = sum_11;
+    let _e301 = sum_13;
     return _e301;
 }
 
-fn airlight_sphere(s_39: AirlightScene, a_25: AirlightArea, x_23: vec3<f32>) -> f32 {
+fn airlight_sphere(s_42: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_6: u32 = 0u;
-    var local_182: bool;
+    var j_8: u32 = 0u;
     var local_183: bool;
     var local_184: bool;
     var local_185: bool;
     var local_186: bool;
+    var local_187: bool;
 
-    let v_8 = (a_25.c - x_23);
-    let _e5 = airlight_safe_length(v_8);
-    if !((_e5 > a_25.radius)) {
+    let v_11 = (a_27.c - x_26);
+    let _e5 = airlight_safe_length(v_11);
+    if !((_e5 > a_27.radius)) {
         return 0f;
     }
-    let sin_a_2 = (a_25.radius / _e5);
-    let cap_4 = AirlightCap((v_8 / vec3(_e5)), _e5, a_25.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let sin_a_2 = (a_27.radius / _e5);
+    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_27.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_6;
+        let _e32 = j_8;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_6;
-            let lobe_2 = select(a_25.lobes.xy, a_25.lobes.zw, (_e39 == 1u));
-            let c_19 = dot(cap_4.a, (lobe_2.x * a_25.d));
+            let _e39 = j_8;
+            let lobe_6 = select(a_27.lobes.xy, a_27.lobes.zw, (_e39 == 1u));
+            let c_22 = dot(cap_4.a, (lobe_6.x * a_27.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_182 = (lobe_2.y > 0f);
-            } else {
-                local_182 = false;
-            }
-            let _e57 = local_182;
-            if _e57 {
-                local_183 = (lobe_2.y < (_e23 + _e23));
+                local_183 = (lobe_6.y > 0f);
             } else {
                 local_183 = false;
             }
-            let _e64 = local_183;
-            if _e64 {
-                if !((c_19 > cap_4.cos_a)) {
-                    if (c_19 > -(cap_4.cos_a)) {
-                        let _e77 = airlight_acos(c_19);
-                        local_186 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_2.y));
-                    } else {
-                        local_186 = false;
-                    }
-                    let _e84 = local_186;
-                    local_185 = _e84;
-                } else {
-                    local_185 = true;
-                }
-                let _e86 = local_185;
-                local_184 = _e86;
+            let _e57 = local_183;
+            if _e57 {
+                local_184 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_184 = false;
             }
-            let _e88 = local_184;
+            let _e64 = local_184;
+            if _e64 {
+                if !((c_22 > cap_4.cos_a)) {
+                    if (c_22 > -(cap_4.cos_a)) {
+                        let _e77 = airlight_acos(c_22);
+                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+                    } else {
+                        local_187 = false;
+                    }
+                    let _e84 = local_187;
+                    local_186 = _e84;
+                } else {
+                    local_186 = true;
+                }
+                let _e86 = local_186;
+                local_185 = _e86;
+            } else {
+                local_185 = false;
+            }
+            let _e88 = local_185;
             if _e88 {
-                chosen = lobe_2.y;
-                sign_3 = lobe_2.x;
-                cos_p_2 = c_19;
+                chosen = lobe_6.y;
+                sign_3 = lobe_6.x;
+                cos_p_2 = c_22;
             }
         }
         continuing {
-            let _e92 = j_6;
-            j_6 = (_e92 + 1u);
+            let _e92 = j_8;
+            j_8 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -7071,48 +7439,48 @@ fn airlight_sphere(s_39: AirlightScene, a_25: AirlightArea, x_23: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_39, a_25, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_42, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_39, a_25, cap_4);
+    let _e101 = airlight_sphere_cap(s_42, a_27, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_40: AirlightScene, a_26: AirlightArea, x_24: vec3<f32>) -> f32 {
-    switch s_40.light_shape {
+fn airlight_emitter_radiance(s_43: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
+    switch s_43.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_40, a_26, x_24);
+            let _e4 = airlight_disc(s_43, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_40, a_26, x_24);
+            let _e5 = airlight_parallelogram(s_43, a_28, x_27);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_40, a_26, x_24);
+            let _e6 = airlight_sphere(s_43, a_28, x_27);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_41: AirlightScene, a_27: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_44: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along = ((a_27.h_eff * _e3.y) / _e3.x);
-    let t_11 = (a_27.x_h + along);
-    let fade = exp(min((-(s_41.sigma_t) * max(((a_27.x_h - s_41.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_41, a_27, (s_41.origin + (t_11 * a_27.d)));
-    return (((a_27.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along = ((a_29.h_eff * _e3.y) / _e3.x);
+    let t_12 = (a_29.x_h + along);
+    let fade = exp(min((-(s_44.sigma_t) * max(((a_29.x_h - s_44.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_44, a_29, (s_44.origin + (t_12 * a_29.d)));
+    return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_45: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
-    var k_7: f32;
+    var k_8: f32;
     var gauss_1: f32;
-    var j_7: u32;
-    var local_187: bool;
+    var j_9: u32;
+    var local_188: bool;
 
-    let _e1 = airlight_area(s_42);
+    let _e1 = airlight_area(s_45);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7130,46 +7498,46 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_20 = (0.5f * (_e27 + _e29));
+            let c_23 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_5 = (0.5f * (_e34 - _e36));
-            k_7 = 0f;
+            let hw_7 = (0.5f * (_e34 - _e36));
+            k_8 = 0f;
             gauss_1 = 0f;
-            j_7 = 0u;
+            j_9 = 0u;
             loop {
-                let _e46 = j_7;
+                let _e46 = j_9;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_7;
+                    let _e49 = j_9;
                     let node_2 = _e8[(_e49 / 2u)];
-                    let _e59 = j_7;
+                    let _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_7;
-                        local_187 = (_e66 < 14u);
+                        let _e66 = j_9;
+                        local_188 = (_e66 < 14u);
                     } else {
-                        local_187 = false;
+                        local_188 = false;
                     }
-                    let _e70 = local_187;
-                    let x_33 = select((c_20 + (hw_5 * node_2.x)), (c_20 - (hw_5 * node_2.x)), _e70);
-                    let _e72 = airlight_area_node(s_42, _e1, x_33);
-                    let _e73 = k_7;
-                    k_7 = (_e73 + (node_2.y * _e72));
+                    let _e70 = local_188;
+                    let x_36 = select((c_23 + (hw_7 * node_2.x)), (c_23 - (hw_7 * node_2.x)), _e70);
+                    let _e72 = airlight_area_node(s_45, _e1, x_36);
+                    let _e73 = k_8;
+                    k_8 = (_e73 + (node_2.y * _e72));
                     let _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_2.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_7;
-                    j_7 = (_e82 + 1u);
+                    let _e82 = j_9;
+                    j_9 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
-            let _e85 = k_7;
+            let _e85 = k_8;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_5), (_e87 * hw_5), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_7), (_e87 * hw_7), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -7189,43 +7557,43 @@ fn airlight_area_light(s_42: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_42.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_45.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_43: AirlightScene) -> AirlightResult {
-    var local_188: bool;
+fn airlight_in_scatter_area(s_46: AirlightScene) -> AirlightResult {
     var local_189: bool;
+    var local_190: bool;
 
-    let _e1 = airlight_valid(s_43);
+    let _e1 = airlight_valid(s_46);
     if !(!(_e1)) {
-        local_188 = (s_43.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_188 = true;
-    }
-    let _e10 = local_188;
-    if !(_e10) {
-        local_189 = (s_43.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_189 = (s_46.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_189 = true;
     }
-    let _e18 = local_189;
+    let _e10 = local_189;
+    if !(_e10) {
+        local_190 = (s_46.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_190 = true;
+    }
+    let _e18 = local_190;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_43);
+    let _e22 = airlight_area_light(s_46);
     return _e22;
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_190: bool;
+    var local_191: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_190 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_190 = true;
+        local_191 = true;
     }
-    let _e11 = local_190;
+    let _e11 = local_191;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -7234,27 +7602,27 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_191: bool;
-    var g_28: AirlightCanonical;
+    var local_192: bool;
+    var g_29: AirlightCanonical;
 
-    let p_7 = n_3.scene;
-    let _e7 = airlight_vec_finite(p_7.light_position);
+    let p_8 = n_3.scene;
+    let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
-        let _e11 = airlight_vec_finite(p_7.dir);
-        local_191 = _e11;
+        let _e11 = airlight_vec_finite(p_8.dir);
+        local_192 = _e11;
     } else {
-        local_191 = false;
+        local_192 = false;
     }
-    let _e13 = local_191;
+    let _e13 = local_192;
     if _e13 {
-        g_28 = n_3.canonical;
+        g_29 = n_3.canonical;
         if !(n_3.exact) {
-            let _e18 = airlight_canonical(p_7);
-            let _e19 = airlight_refined(p_7, _e18);
-            g_28 = _e19;
+            let _e18 = airlight_canonical(p_8);
+            let _e19 = airlight_refined(p_8, _e18);
+            g_29 = _e19;
         }
-        let _e20 = g_28;
-        let _e21 = airlight_in_scatter_canonical(p_7, _e20);
+        let _e20 = g_29;
+        let _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
     let _e22 = r_6;
@@ -7268,60 +7636,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_44: AirlightScene) -> AirlightResult {
-    var local_192: bool;
+fn airlight_in_scatter_point(s_47: AirlightScene) -> AirlightResult {
     var local_193: bool;
+    var local_194: bool;
 
-    let _e1 = airlight_valid(s_44);
+    let _e1 = airlight_valid(s_47);
     if !(!(_e1)) {
-        local_192 = (s_44.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_192 = true;
-    }
-    let _e10 = local_192;
-    if !(_e10) {
-        local_193 = (s_44.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_193 = (s_47.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_193 = true;
     }
-    let _e18 = local_193;
-    if _e18 {
-        return AirlightResult(0f, 1u);
-    }
-    let _e22 = airlight_point_integral(s_44);
-    return _e22;
-}
-
-fn airlight_in_scatter_route(s_45: AirlightScene) -> AirlightResult {
-    var local_194: bool;
-    var local_195: bool;
-
-    let _e1 = airlight_valid(s_45);
-    if !(!(_e1)) {
-        local_194 = (s_45.light_shape != AIRLIGHT_SHAPE_POINT);
+    let _e10 = local_193;
+    if !(_e10) {
+        local_194 = (s_47.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_194 = true;
     }
-    let _e10 = local_194;
-    if !(_e10) {
-        local_195 = (s_45.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_195 = true;
-    }
-    let _e18 = local_195;
+    let _e18 = local_194;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_45);
-    let _e23 = airlight_refined(s_45, _e22);
-    let _e24 = airlight_limits(s_45, _e23);
+    let _e22 = airlight_point_integral(s_47);
+    return _e22;
+}
+
+fn airlight_in_scatter_route(s_48: AirlightScene) -> AirlightResult {
+    var local_195: bool;
+    var local_196: bool;
+
+    let _e1 = airlight_valid(s_48);
+    if !(!(_e1)) {
+        local_195 = (s_48.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_195 = true;
+    }
+    let _e10 = local_195;
+    if !(_e10) {
+        local_196 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_196 = true;
+    }
+    let _e18 = local_196;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_48);
+    let _e23 = airlight_refined(s_48, _e22);
+    let _e24 = airlight_limits(s_48, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_45);
+    let _e29 = airlight_isotropic_scene(s_48);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_45, _e23);
+        let _e31 = airlight_angle_route(s_48, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -7330,24 +7698,24 @@ fn airlight_in_scatter_route(s_45: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_49: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
-    var k_8: f32;
+    var k_9: f32;
     var gauss_2: f32;
-    var j_8: u32;
-    var local_196: bool;
-    var f: f32;
+    var j_10: u32;
     var local_197: bool;
+    var f: f32;
+    var local_198: bool;
 
-    let _e1 = airlight_valid(s_46);
+    let _e1 = airlight_valid(s_49);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_46.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_49.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_46);
+    let _e12 = airlight_outer(s_49);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7367,65 +7735,65 @@ fn airlight_in_scatter(s_46: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_21 = (0.5f * (_e42 + _e44));
+            let c_24 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_6 = (0.5f * (_e49 - _e51));
-            k_8 = 0f;
+            let hw_8 = (0.5f * (_e49 - _e51));
+            k_9 = 0f;
             gauss_2 = 0f;
-            j_8 = 0u;
+            j_10 = 0u;
             loop {
-                let _e61 = j_8;
+                let _e61 = j_10;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_8;
+                    let _e64 = j_10;
                     let node_3 = _e25[(_e64 / 2u)];
-                    let _e74 = j_8;
+                    let _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_8;
-                        local_196 = (_e81 < 6u);
+                        let _e81 = j_10;
+                        local_197 = (_e81 < 6u);
                     } else {
-                        local_196 = false;
+                        local_197 = false;
                     }
-                    let _e85 = local_196;
-                    let w_10 = select((c_21 + (hw_6 * node_3.x)), (c_21 - (hw_6 * node_3.x)), _e85);
-                    let _e87 = airlight_outer_node(s_46, _e12, w_10);
+                    let _e85 = local_197;
+                    let w_11 = select((c_24 + (hw_8 * node_3.x)), (c_24 - (hw_8 * node_3.x)), _e85);
+                    let _e87 = airlight_outer_node(s_49, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_46.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_197 = (s_46.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_49.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_198 = (s_49.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_197 = false;
+                            local_198 = false;
                         }
-                        let _e106 = local_197;
+                        let _e106 = local_198;
                         if _e106 {
                             return _e93;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e110 = k_8;
+                    let _e110 = k_9;
                     let _e112 = f;
-                    k_8 = (_e110 + (node_3.y * _e112));
+                    k_9 = (_e110 + (node_3.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
                     gauss_2 = (_e115 + (node_3.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_8;
-                    j_8 = (_e121 + 1u);
+                    let _e121 = j_10;
+                    j_10 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;
-            let _e124 = k_8;
+            let _e124 = k_9;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_6), (_e126 * hw_6), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_8), (_e126 * hw_8), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

@@ -2836,6 +2836,12 @@ fn airlight_disc(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
     let fy = dot(rel, a.a2);
     let rf = sqrt(fx * fx + fy * fy);
     let radius = a.radius;
+    let zero = vec2<f32>(0.0);
+    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-fx, -fy), zero, zero, zero), radius);
+    let lobe = airlight_flat_lobe(a, z, outline, vec2<f32>(-fx, -fy), radius);
+    if (lobe.scale > 0.0) {
+        return airlight_flat_about_lobe(s, z, outline, lobe);
+    }
     let inside = rf <= radius;
     // outside: u towards the centre, q* on the rim
     var u = vec2<f32>(0.0);
@@ -2874,24 +2880,13 @@ fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f3
     // counter-clockwise about n
     let corners = array<vec2<f32>, 5>(vec2<f32>(0.0), u2, u2 + v2, v2, vec2<f32>(0.0));
     let det = u2.x * v2.y - u2.y * v2.x;
-    let fu = (foot.x * v2.y - foot.y * v2.x) / det;
-    let fv = (u2.x * foot.y - u2.y * foot.x) / det;
-    var q = foot;
-    if (!(fu >= 0.0 && fu <= 1.0 && fv >= 0.0 && fv <= 1.0)) {
-        // the nearest point of the edges
-        var best = AIRLIGHT_FLT_MAX;
-        for (var i = 0u; i < 4u; i++) {
-            let c0 = corners[i];
-            let e = corners[i + 1u] - c0;
-            let t = clamp(((foot.x - c0.x) * e.x + (foot.y - c0.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
-            let p = c0 + t * e;
-            let dd = (p.x - foot.x) * (p.x - foot.x) + (p.y - foot.y) * (p.y - foot.y);
-            if (dd < best) {
-                best = dd;
-                q = p;
-            }
-        }
+    let about_foot = AirlightOutline(array<vec2<f32>, 4>(corners[0] - foot, corners[1] - foot, corners[2] - foot, corners[3] - foot), 0.0);
+    let size = 0.5 * max(sqrt(dot(u2 + v2, u2 + v2)), sqrt(dot(u2 - v2, u2 - v2)));
+    let lobe = airlight_flat_lobe(a, z, about_foot, 0.5 * corners[2] - foot, size);
+    if (lobe.scale > 0.0) {
+        return airlight_flat_about_lobe(s, z, about_foot, lobe);
     }
+    let q = airlight_outline_nearest(about_foot, vec2<f32>(0.0)) + foot;
     let above = airlight_above(z, q - foot);
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = AIRLIGHT_FLT_EPS * abs(det);
@@ -2914,6 +2909,223 @@ fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f3
             let turn = airlight_cos_sin_half_turn(0.5 * span * (1.0 + node.x));
             let dir = vec2<f32>(turn.x * start.x - turn.y * start.y, turn.y * start.x + turn.x * start.y);
             sum += node.y * 0.5 * span * airlight_flat_radial(s, a, above, dir, h / (dir.x * m.x + dir.y * m.y));
+        }
+    }
+    return sum;
+}
+
+/// A flat emitter's outline in its plane's coordinates about x's foot (outer.rs `Outline`): a
+/// disc's centre `corners[0]` and radius, or (radius 0) a parallelogram's corners,
+/// counter-clockwise about the normal.
+struct AirlightOutline {
+    corners: array<vec2<f32>, 4>,
+    radius: f32,
+}
+
+/// The chord `[lo, hi]` of q + r e clipped by the half-plane inside the edge a → b (outer.rs
+/// `Outline::chord`, Cyrus–Beck); an empty chord (lo ≥ hi) stays empty.
+fn airlight_clip(chord: vec2<f32>, a: vec2<f32>, b: vec2<f32>, q: vec2<f32>, e: vec2<f32>) -> vec2<f32> {
+    let m = vec2<f32>(b.y - a.y, a.x - b.x);
+    let num = (q.x - a.x) * m.x + (q.y - a.y) * m.y;
+    let den = e.x * m.x + e.y * m.y;
+    if (den > 0.0) { return vec2<f32>(chord.x, min(chord.y, -num / den)); }
+    if (den < 0.0) { return vec2<f32>(max(chord.x, -num / den), chord.y); }
+    if (num > 0.0) { return vec2<f32>(1.0, 0.0); }
+    return chord;
+}
+
+/// The interval `[lo, hi]` of r ≥ 0 for which q + r e lies on the emitter, empty (lo ≥ hi) if the
+/// half-line misses it (outer.rs `Outline::chord`); the edges written out, not a loop.
+fn airlight_outline_chord(o: AirlightOutline, q: vec2<f32>, e: vec2<f32>) -> vec2<f32> {
+    if (o.radius > 0.0) {
+        // r² a + 2 r b + k = 0
+        let qc = q - o.corners[0];
+        let a = e.x * e.x + e.y * e.y;
+        let b = qc.x * e.x + qc.y * e.y;
+        let dq = sqrt(qc.x * qc.x + qc.y * qc.y);
+        let k = (dq - o.radius) * (dq + o.radius);
+        let disc = b * b - a * k;
+        if (!(disc > 0.0)) { return vec2<f32>(0.0); }
+        let root = sqrt(disc);
+        let t = -b - select(root, -root, (bitcast<u32>(b) & 0x80000000u) != 0u);
+        let r1 = t / a;
+        let r2 = k / t;
+        let hi = max(r1, r2);
+        if (!(hi > 0.0)) { return vec2<f32>(0.0); }
+        return vec2<f32>(max(min(r1, r2), 0.0), hi);
+    }
+    var chord = vec2<f32>(0.0, AIRLIGHT_FLT_MAX);
+    chord = airlight_clip(chord, o.corners[0], o.corners[1], q, e);
+    chord = airlight_clip(chord, o.corners[1], o.corners[2], q, e);
+    chord = airlight_clip(chord, o.corners[2], o.corners[3], q, e);
+    return airlight_clip(chord, o.corners[3], o.corners[0], q, e);
+}
+
+/// The emitter's point nearest q, q itself on the emitter (outer.rs `Outline::nearest`).
+fn airlight_outline_nearest(o: AirlightOutline, q: vec2<f32>) -> vec2<f32> {
+    if (o.radius > 0.0) {
+        let qc = q - o.corners[0];
+        let dq = sqrt(qc.x * qc.x + qc.y * qc.y);
+        if (dq <= o.radius) { return q; }
+        return o.corners[0] + qc * o.radius / dq;
+    }
+    var best = AIRLIGHT_FLT_MAX;
+    var nearest = q;
+    var inside = true;
+    for (var i = 0u; i < 4u; i++) {
+        let a = o.corners[i];
+        let e = o.corners[(i + 1u) % 4u] - a;
+        inside = inside && (q.x - a.x) * e.y - (q.y - a.y) * e.x <= 0.0;
+        let t = clamp(((q.x - a.x) * e.x + (q.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
+        let p = a + t * e;
+        let dd = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
+        if (dd < best) {
+            best = dd;
+            nearest = p;
+        }
+    }
+    return select(nearest, q, inside);
+}
+
+/// A phase lobe pointing at a flat emitter (outer.rs `FlatLobe`): its direction p = sign·d in
+/// the plane's coordinates (p·n < 0), its radial scale (0: none), x's distance L from the point
+/// q_L where p meets the plane, and q_L about the foot.
+struct AirlightFlatLobe {
+    p: vec3<f32>,
+    sign: f32,
+    scale: f32,
+    l: f32,
+    q: vec2<f32>,
+}
+
+/// The phase lobe to take a flat emitter about (outer.rs `flat_lobe`): one narrower than the
+/// emitter seen from x = (0, 0, z) whose direction meets the plane on it or within
+/// LOBE_REACH scales of it; scale 0 for none.
+fn airlight_flat_lobe(a: AirlightArea, z: f32, o: AirlightOutline, centre: vec2<f32>, size: f32) -> AirlightFlatLobe {
+    let reach = airlight_atan(size / sqrt(dot(centre, centre) + z * z));
+    for (var j = 0u; j < 2u; j++) {
+        let lobe = select(a.lobes.xy, a.lobes.zw, j == 1u);
+        let p = lobe.x * a.dirs;
+        if (lobe.y > 0.0 && p.z < 0.0 && lobe.y < reach + reach) {
+            let l = z / -p.z;
+            let q = l * p.xy;
+            let near = airlight_outline_nearest(o, q);
+            let to_near = vec3<f32>(near, -z);
+            let cos = min(dot(p, to_near) / sqrt(dot(to_near, to_near)), 1.0);
+            if (all(near == q) || airlight_acos(cos) < AIRLIGHT_LOBE_REACH * lobe.y) {
+                return AirlightFlatLobe(p, lobe.x, lobe.y, l, q);
+            }
+        }
+    }
+    return AirlightFlatLobe(vec3<f32>(0.0), 1.0, 0.0, 0.0, vec2<f32>(0.0));
+}
+
+/// (cos x, sin x) for any x: reduced to [−π, π] by 2π (an absolute error of about ε|x|), then
+/// airlight_cos_sin_half_turn.
+fn airlight_cos_sin_turns(x: f32) -> vec2<f32> {
+    let r = airlight_wrap_turn(x);
+    let cs = airlight_cos_sin_half_turn(abs(r));
+    return vec2<f32>(cs.x, select(cs.y, -cs.y, r < 0.0));
+}
+
+/// x − 2π·round(x/2π): an angle difference in [−π, π].
+fn airlight_wrap_turn(x: f32) -> f32 {
+    return x - 2.0 * AIRLIGHT_PI * round(x / (2.0 * AIRLIGHT_PI));
+}
+
+/// The azimuth ψ about p (basis u, v) of the half-plane holding the plane's direction e:
+/// atan2(e·v, e·u) (outer.rs `flat_about_lobe`'s `azimuth`).
+fn airlight_lobe_azimuth(u: vec3<f32>, v: vec3<f32>, e: vec2<f32>) -> f32 {
+    let y = e.x * v.x + e.y * v.y;
+    return select(1.0, -1.0, y < 0.0) * airlight_atan2_upper(abs(y), e.x * u.x + e.y * u.y);
+}
+
+/// Four values in ascending order (a sorting network: no loop iterations).
+fn airlight_sort4(x: vec4<f32>) -> vec4<f32> {
+    let a = vec4<f32>(min(x.x, x.y), max(x.x, x.y), min(x.z, x.w), max(x.z, x.w));
+    let b = vec4<f32>(min(a.x, a.z), min(a.y, a.w), max(a.x, a.z), max(a.y, a.w));
+    return vec4<f32>(b.x, min(b.y, b.z), max(b.y, b.z), b.w);
+}
+
+/// One node γ of `airlight_flat_lobe_along`: L_e c^{p−1} e^{−σt z/c} P sin θ dθ/dγ at
+/// θ = start + graded tan γ, c = −(p·n)(cos θ − k sin θ).
+fn airlight_flat_lobe_node(s: AirlightScene, z: f32, lobe: AirlightFlatLobe, k: f32, start: f32, graded: f32, g: f32) -> f32 {
+    let tg = airlight_cos_sin_half_turn(g);
+    let ct = airlight_cos_sin_half_turn(start + graded * tg.y / tg.x);
+    let c = -lobe.p.z * (ct.x - k * ct.y);
+    if (!(c > 0.0)) { return 0.0; }
+    return airlight_emitted(s, c) * exp(min(-s.sigma_t * z / c, 0.0)) * airlight_area_phase(s, lobe.sign * ct.x) * ct.y * graded / (tg.x * tg.x);
+}
+
+/// The θ integral of `airlight_flat_about_lobe` in the half-plane of azimuth ψ (`cs` = (cos ψ,
+/// sin ψ)) over the emitter's chord of its half-line q_L + r (w_ψ + k p), tan θ = r/(L + k r),
+/// graded from its start (outer.rs `flat_about_lobe`'s `along`): RADIAL written out.
+fn airlight_flat_lobe_along(s: AirlightScene, z: f32, o: AirlightOutline, lobe: AirlightFlatLobe, u: vec3<f32>, v: vec3<f32>, cs: vec2<f32>) -> f32 {
+    let w = cs.x * u + cs.y * v;
+    let k = w.z / -lobe.p.z;
+    let chord = airlight_outline_chord(o, lobe.q, w.xy + k * lobe.p.xy);
+    if (!(chord.x < chord.y)) { return 0.0; }
+    let start = airlight_atan2_upper(chord.x, lobe.l + k * chord.x);
+    let to = airlight_atan2_upper(chord.y, lobe.l + k * chord.y);
+    let graded = max(lobe.scale, start);
+    let top = airlight_atan((to - start) / graded);
+    let c = 0.5 * top;
+    let hw = 0.5 * top;
+    var sum = 0.0;
+@RADIAL_FLAT_LOBE@    return sum;
+}
+
+/// S(x) of a flat emitter about a phase lobe's direction p (outer.rs `flat_about_lobe`): ψ over
+/// the circle (AZIMUTHAL) on a disc holding q_L, over the wedge of its tangents from q_L
+/// (ψ = ψ_m + Ψ sin φ) off it, over the wedges between a parallelogram's corners seen from q_L
+/// (TRIANGLE_AZIMUTHAL each).
+fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: AirlightFlatLobe) -> f32 {
+    let u = airlight_basis_e1(lobe.p);
+    let v = cross(lobe.p, u);
+    let q = lobe.q;
+    var sum = 0.0;
+    if (o.radius > 0.0) {
+        let d = o.corners[0] - q;
+        let dq = sqrt(d.x * d.x + d.y * d.y);
+        if (dq <= o.radius) {
+            for (var i = 0u; i < 32u; i++) {
+                let az = airlight_azimuths(true, i);
+                sum += az.z * airlight_flat_lobe_along(s, z, o, lobe, u, v, az.xy);
+            }
+            return sum;
+        }
+        // the tangents from q_L, at ±β from the centre's direction
+        let sb = o.radius / dq;
+        let cb = sqrt((dq - o.radius) * (dq + o.radius)) / dq;
+        let mid = airlight_lobe_azimuth(u, v, d);
+        let end0 = airlight_wrap_turn(airlight_lobe_azimuth(u, v, vec2<f32>(d.x * cb - d.y * sb, d.y * cb + d.x * sb)) - mid);
+        let end1 = airlight_wrap_turn(airlight_lobe_azimuth(u, v, vec2<f32>(d.x * cb + d.y * sb, d.y * cb - d.x * sb)) - mid);
+        let centre = mid + (end0 + end1) * 0.5;
+        let half = abs(end0 - end1) * 0.5;
+        for (var i = 0u; i < 32u; i++) {
+            let az = airlight_azimuths(false, i);
+            sum += az.z * half * az.x * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(centre + half * az.y));
+        }
+        return sum;
+    }
+    // the corners' azimuths about the centre's (outside) or absolute (inside), in order
+    let inside = all(airlight_outline_nearest(o, q) == q);
+    var mid = 0.0;
+    if (!inside) { mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q); }
+    let psi = airlight_sort4(vec4<f32>(
+        airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[0] - q) - mid),
+        airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[1] - q) - mid),
+        airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[2] - q) - mid),
+        airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[3] - q) - mid)));
+    let wedges = select(3u, 4u, inside);
+    for (var i = 0u; i < wedges; i++) {
+        let first = mid + psi[i];
+        let last = mid + select(psi[min(i + 1u, 3u)], psi.x + 2.0 * AIRLIGHT_PI, i == 3u);
+        let c = (first + last) * 0.5;
+        let hw = (last - first) * 0.5;
+        for (var j = 0u; j < 12u; j++) {
+            let node = airlight_triangle_rule(j);
+            sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
         }
     }
     return sum;
