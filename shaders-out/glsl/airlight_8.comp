@@ -200,6 +200,7 @@ const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
+const float AIRLIGHT_EDGE_REACH = 0.5;
 
 layout(std430, binding = 0) readonly buffer type_19_block_0Compute { AirlightScene _group_0_binding_0_cs[]; };
 

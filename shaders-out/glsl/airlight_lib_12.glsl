@@ -265,6 +265,7 @@ const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
+const float AIRLIGHT_EDGE_REACH = 0.5;
 
 
 float[12] airlight_zero_terms() {
@@ -424,10 +425,10 @@ vec2 airlight_csqrt(vec2 z_1) {
 }
 
 vec2 airlight_cos_sin(float x) {
-    float z_14 = (x * x);
-    float c_8 = (1.0 + (z_14 * (-0.5 + (z_14 * (0.041666668 + (z_14 * (-0.0013888889 + (z_14 * (2.4801588e-5 + (z_14 * (-2.755732e-7 + (z_14 * (2.0876756e-9 + (z_14 * (-1.1470745e-11 + (z_14 * 4.7794773e-14))))))))))))))));
-    float s_50 = (1.0 + (z_14 * (-0.16666667 + (z_14 * (0.008333334 + (z_14 * (-0.0001984127 + (z_14 * (2.7557319e-6 + (z_14 * (-2.5052108e-8 + (z_14 * (1.6059044e-10 + (z_14 * (-7.6471636e-13 + (z_14 * 2.8114574e-15))))))))))))))));
-    return vec2(c_8, (s_50 * x));
+    float z_15 = (x * x);
+    float c_8 = (1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (2.4801588e-5 + (z_15 * (-2.755732e-7 + (z_15 * (2.0876756e-9 + (z_15 * (-1.1470745e-11 + (z_15 * 4.7794773e-14))))))))))))))));
+    float s_52 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
+    return vec2(c_8, (s_52 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -451,11 +452,11 @@ float airlight_atan(float x_1) {
     }
     float _e17 = t;
     float _e18 = t;
-    float z_15 = (_e17 * _e18);
+    float z_16 = (_e17 * _e18);
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return (_e20 + (((((((((0.080537446 * z_15) - 0.13877685) * z_15) + 0.19977711) * z_15) - 0.3333295) * z_15) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446 * z_16) - 0.13877685) * z_16) + 0.19977711) * z_16) - 0.3333295) * z_16) * _e32) + _e34));
 }
 
 vec2 airlight_cln(vec2 z_3) {
@@ -481,10 +482,10 @@ float airlight_log1p(float x_2) {
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_51 = (x_2 / (2.0 + x_2));
-    float z_16 = (s_51 * s_51);
-    float sum_14 = ((((((((((((((((z_16 / 17.0) + 0.06666667) * z_16) + 0.07692308) * z_16) + 0.09090909) * z_16) + 0.11111111) * z_16) + 0.14285715) * z_16) + 0.2) * z_16) + 0.33333334) * z_16) + 1.0);
-    return ((2.0 * s_51) * sum_14);
+    float s_53 = (x_2 / (2.0 + x_2));
+    float z_17 = (s_53 * s_53);
+    float sum_14 = ((((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0);
+    return ((2.0 * s_53) * sum_14);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -1492,8 +1493,8 @@ float[12] airlight_exp_legendre_moments(float lambda) {
                 }
             }
             uint _e55 = steps;
-            uint top_1 = ((k0_ + _e55) + 2u);
-            odd = float(((2u * top_1) + 1u));
+            uint top_2 = ((k0_ + _e55) + 2u);
+            odd = float(((2u * top_2) + 1u));
             bool loop_init_7 = true;
             while(true) {
                 if (!loop_init_7) {
@@ -1508,7 +1509,7 @@ float[12] airlight_exp_legendre_moments(float lambda) {
                 }
                 {
                     uint _e76 = i_4;
-                    if (((_e76 + AIRLIGHT_TERMS) > top_1)) {
+                    if (((_e76 + AIRLIGHT_TERMS) > top_2)) {
                         break;
                     }
                     float _e79 = above;
@@ -1988,47 +1989,47 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_) {
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_7 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_9 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if ((q_7 < 1.0)) {
+    if ((q_9 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_7) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_9) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_7) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_9) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_7) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_9) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_7) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_9) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_7) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_9) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_7) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_9) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_7) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_9) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (true ? ((_e126 * q_7) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (true ? ((_e126 * q_9) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
         float _e137 = aliasing;
-        aliasing = (true ? ((_e137 * q_7) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
+        aliasing = (true ? ((_e137 * q_9) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
         float _e144 = aliasing;
         float _e148 = aliasing;
-        aliasing = (true ? ((_e148 * q_7) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
+        aliasing = (true ? ((_e148 * q_9) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
         float _e155 = aliasing;
         float _e159 = aliasing;
-        aliasing = (true ? ((_e159 * q_7) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
+        aliasing = (true ? ((_e159 * q_9) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
         float _e166 = aliasing;
         float _e170 = aliasing;
-        aliasing = (false ? ((_e170 * q_7) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
+        aliasing = (false ? ((_e170 * q_9) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
         float _e177 = aliasing;
-        return min(((_e177 + (q_7 * truncation)) / m_1[0]), 1.0);
+        return min(((_e177 + (q_9 * truncation)) / m_1[0]), 1.0);
     }
     float _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -3476,12 +3477,12 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_8 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
-    if ((q_8 != 0.0)) {
-        r1_ = (c_10 / q_8);
+    float q_10 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
+    if ((q_10 != 0.0)) {
+        r1_ = (c_10 / q_10);
     }
     if ((a_36 != 0.0)) {
-        r2_2 = (q_8 / a_36);
+        r2_2 = (q_10 / a_36);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -5428,9 +5429,9 @@ float airlight_to_w(AirlightOuter g_21, float s_21) {
 
 vec2 airlight_cos_sin_half_turn(float x_16) {
     float r_12 = (x_16 - 1.5707964);
-    float z_17 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_17 / 2.0) * (1.0 - ((z_17 / 12.0) * (1.0 - ((z_17 / 30.0) * (1.0 - ((z_17 / 56.0) * (1.0 - ((z_17 / 90.0) * (1.0 - ((z_17 / 132.0) * (1.0 - (z_17 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_17 / 6.0) * (1.0 - ((z_17 / 20.0) * (1.0 - ((z_17 / 42.0) * (1.0 - ((z_17 / 72.0) * (1.0 - ((z_17 / 110.0) * (1.0 - ((z_17 / 156.0) * (1.0 - (z_17 / 210.0)))))))))))))));
+    float z_18 = (r_12 * r_12);
+    float cos_r = (1.0 - ((z_18 / 2.0) * (1.0 - ((z_18 / 12.0) * (1.0 - ((z_18 / 30.0) * (1.0 - ((z_18 / 56.0) * (1.0 - ((z_18 / 90.0) * (1.0 - ((z_18 / 132.0) * (1.0 - (z_18 / 182.0))))))))))))));
+    float sin_r = (r_12 * (1.0 - ((z_18 / 6.0) * (1.0 - ((z_18 / 20.0) * (1.0 - ((z_18 / 42.0) * (1.0 - ((z_18 / 72.0) * (1.0 - ((z_18 / 110.0) * (1.0 - ((z_18 / 156.0) * (1.0 - (z_18 / 210.0)))))))))))))));
     return vec2(-(sin_r), cos_r);
 }
 
@@ -5835,11 +5836,11 @@ float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smooths
         }
         {
             uint _e29 = k_6;
-            vec2 node_1 = _e21[_e29];
+            vec2 node_2 = _e21[_e29];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_1.x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1.0 - node_1.x), smoothstep_1);
-            sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
+            float _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_2.x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1.0 - node_2.x), smoothstep_1);
+            sum_5 = (_e31 + (node_2.y * (_e34 + _e38)));
         }
     }
     float _e45 = sum_5;
@@ -5860,14 +5861,14 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     vec2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_9 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_11 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_9.k) ? (_e48 / q_9.k) : 1.0);
+    float s2_1 = ((_e51 < q_11.k) ? (_e48 / q_11.k) : 1.0);
     float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -5902,7 +5903,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            float _e109 = airlight_lobe_piece(q_9, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            float _e109 = airlight_lobe_piece(q_11, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -6442,6 +6443,19 @@ float airlight_emitted(AirlightScene s_28, float c_7) {
     return (s_28.intensity * _e154);
 }
 
+float airlight_emission_scale(AirlightScene s_29) {
+    uint p_3 = uint(s_29.light_param_b);
+    if ((p_3 <= 1u)) {
+        return 0.0;
+    }
+    return (2.0 / sqrt(float((p_3 - 1u))));
+}
+
+bool airlight_far_from_edge(AirlightScene s_30, float depth, float z_9) {
+    float _e3 = airlight_emission_scale(s_30);
+    return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * ((_e3 > 0.0) ? min(_e3, 1.0) : 1.0)));
+}
+
 vec2 airlight_lobe(float sign_, float gap_3) {
     bool local_166 = false;
     if (!(!((gap_3 > 0.0)))) {
@@ -6456,11 +6470,11 @@ vec2 airlight_lobe(float sign_, float gap_3) {
     return vec2(((sign_ < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
 }
 
-vec4 airlight_phase_lobes(AirlightScene s_29) {
+vec4 airlight_phase_lobes(AirlightScene s_31) {
     vec2 first = vec2(1.0, 0.0);
     vec2 second = vec2(1.0, 0.0);
-    float p0_5 = s_29.phase_param_a;
-    switch(s_29.phase_kind) {
+    float p0_5 = s_31.phase_param_a;
+    switch(s_31.phase_kind) {
         case 2u:
         case 4u: {
             float _e11 = airlight_hg_gap(p0_5);
@@ -6478,8 +6492,8 @@ vec4 airlight_phase_lobes(AirlightScene s_29) {
             float _e22 = airlight_hg_gap(p0_5);
             vec2 _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            float _e26 = airlight_hg_gap(s_29.phase_param_b);
-            vec2 _e27 = airlight_lobe(s_29.phase_param_b, _e26);
+            float _e26 = airlight_hg_gap(s_31.phase_param_b);
+            vec2 _e27 = airlight_lobe(s_31.phase_param_b, _e26);
             second = _e27;
             break;
         }
@@ -6523,7 +6537,7 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3) {
     return (((u_9 >= 0.0) ? 1.0 : -1.0) * _e13);
 }
 
-AirlightArea airlight_area(AirlightScene s_30) {
+AirlightArea airlight_area(AirlightScene s_32) {
     AirlightArea a_18 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
     bool local_168 = false;
     bool local_169 = false;
@@ -6546,17 +6560,17 @@ AirlightArea airlight_area(AirlightScene s_30) {
     bool local_177 = false;
     bool local_178 = false;
     vec3 zero = vec3(0.0);
-    vec4 _e21 = airlight_phase_lobes(s_30);
-    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
-    if (!((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-        if (!((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-            local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+    vec4 _e21 = airlight_phase_lobes(s_32);
+    a_18 = AirlightArea(zero, s_32.light_position, zero, zero, zero, zero, zero, zero, s_32.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    if (!((s_32.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+        if (!((s_32.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+            local_169 = (s_32.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
             local_169 = true;
         }
         bool _e44 = local_169;
         if (_e44) {
-            local_170 = (s_30.phase_param_a == 0.0);
+            local_170 = (s_32.phase_param_a == 0.0);
         } else {
             local_170 = false;
         }
@@ -6567,14 +6581,14 @@ AirlightArea airlight_area(AirlightScene s_30) {
     }
     bool _e53 = local_168;
     if (!(_e53)) {
-        if ((s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
-            local_172 = (s_30.phase_param_a == 0.0);
+        if ((s_32.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
+            local_172 = (s_32.phase_param_a == 0.0);
         } else {
             local_172 = false;
         }
         bool _e66 = local_172;
         if (_e66) {
-            local_173 = (s_30.phase_param_b == 0.0);
+            local_173 = (s_32.phase_param_b == 0.0);
         } else {
             local_173 = false;
         }
@@ -6585,8 +6599,8 @@ AirlightArea airlight_area(AirlightScene s_30) {
     }
     bool _e75 = local_171;
     a_18.isotropic = _e75;
-    if (!((s_30.intensity == 0.0))) {
-        local_174 = (s_30.sigma_s == 0.0);
+    if (!((s_32.intensity == 0.0))) {
+        local_174 = (s_32.sigma_s == 0.0);
     } else {
         local_174 = true;
     }
@@ -6596,16 +6610,16 @@ AirlightArea airlight_area(AirlightScene s_30) {
         AirlightArea _e89 = a_18;
         return _e89;
     }
-    vec3 o_5 = s_30.origin;
-    vec3 _e92 = airlight_normalize(s_30.dir);
+    vec3 o_6 = s_32.origin;
+    vec3 _e92 = airlight_normalize(s_32.dir);
     a_18.d = _e92;
-    bool infinite_6 = ((s_30.flags & 1u) != 0u);
-    float t0_2 = s_30.t_min;
-    centre = s_30.light_position;
-    size = s_30.light_param_a;
-    if ((s_30.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+    bool infinite_6 = ((s_32.flags & 1u) != 0u);
+    float t0_2 = s_32.t_min;
+    centre = s_32.light_position;
+    size = s_32.light_param_a;
+    if ((s_32.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         vec3 _e114 = a_18.c;
-        vec3 oc = (o_5 - _e114);
+        vec3 oc = (o_6 - _e114);
         float b_20 = dot(oc, _e92);
         float _e119 = a_18.radius;
         float _e121 = a_18.radius;
@@ -6613,21 +6627,21 @@ AirlightArea airlight_area(AirlightScene s_30) {
         float disc_2 = ((b_20 * b_20) - k_10);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_10 = (-(b_20) - (((floatBitsToUint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
-            cut0_ = q_10;
-            cut1_ = (k_10 / q_10);
+            float q_12 = (-(b_20) - (((floatBitsToUint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_12;
+            cut1_ = (k_10 / q_12);
             cut_count = 2u;
         }
     } else {
-        if ((s_30.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            vec3 _e145 = airlight_normalize(s_30.light_axis);
+        if ((s_32.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            vec3 _e145 = airlight_normalize(s_32.light_axis);
             a_18.n = _e145;
             vec3 _e148 = a_18.n;
             vec3 _e149 = airlight_basis_e1_(_e148);
             a_18.a1_ = _e149;
         } else {
-            a_18.eu = s_30.light_axis;
-            a_18.ev = s_30.light_end;
+            a_18.eu = s_32.light_axis;
+            a_18.ev = s_32.light_end;
             vec3 _e156 = a_18.eu;
             vec3 _e158 = a_18.ev;
             vec3 _e160 = airlight_normalize(cross(_e156, _e158));
@@ -6656,7 +6670,7 @@ AirlightArea airlight_area(AirlightScene s_30) {
         vec3 _e203 = a_18.c;
         vec3 _e206 = a_18.n;
         vec3 _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o_5), _e206) / dot(_e92, _e209));
+        cut0_ = (dot((_e203 - o_6), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
     float _e213 = size;
@@ -6666,20 +6680,20 @@ AirlightArea airlight_area(AirlightScene s_30) {
         return _e219;
     }
     vec3 _e220 = centre;
-    vec3 to_centre = (_e220 - o_5);
+    vec3 to_centre = (_e220 - o_6);
     a_18.x_h = dot(to_centre, _e92);
     float _e225 = a_18.x_h;
     float _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
     float _e231 = size;
     float _e232 = size;
     a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
-    t_end_1 = s_30.t_max;
+    t_end_1 = s_32.t_max;
     end_infinite = infinite_6;
-    if ((s_30.sigma_t > 0.0)) {
+    if ((s_32.sigma_t > 0.0)) {
         vec3 _e242 = centre;
-        float _e246 = airlight_safe_length((_e242 - (o_5 + (t0_2 * _e92))));
+        float _e246 = airlight_safe_length((_e242 - (o_6 + (t0_2 * _e92))));
         float _e248 = size;
-        float reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385 / s_30.sigma_t));
+        float reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385 / s_32.sigma_t));
         if (!(infinite_6)) {
             float _e257 = t_end_1;
             local_175 = (reach_1 < _e257);
@@ -6760,142 +6774,195 @@ AirlightArea airlight_area(AirlightScene s_30) {
     return _e329;
 }
 
-AirlightAbove airlight_above(float z_9, vec2 off) {
-    return AirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
+AirlightAbove airlight_above(float z_10, vec2 off) {
+    return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-float airlight_flat_node(AirlightScene s_31, AirlightArea a_19, AirlightAbove above_1, vec2 e_3, float g_26) {
-    vec2 _e5 = airlight_cos_sin_half_turn(g_26);
-    float r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
-    float dr = (above_1.rho0_ / (_e5.x * _e5.x));
-    vec2 p_3 = (above_1.off + (r_13 * e_3));
-    float z_18 = above_1.z;
-    float dist = sqrt((((z_18 * z_18) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+float airlight_flat_node(AirlightScene s_33, AirlightArea a_19, AirlightAbove above_1, vec2 e_3, float graded, float node) {
+    float g_26 = 0.0;
+    float jacobian_1 = 1.0;
+    g_26 = node;
+    if ((graded > 0.0)) {
+        vec2 _e11 = airlight_cos_sin_half_turn(node);
+        g_26 = ((graded * _e11.y) / _e11.x);
+        jacobian_1 = (graded / (_e11.x * _e11.x));
+    }
+    float _e20 = g_26;
+    vec2 _e21 = airlight_cos_sin_half_turn(_e20);
+    float r_13 = ((above_1.rho0_ * _e21.y) / _e21.x);
+    float dr = (above_1.rho0_ / (_e21.x * _e21.x));
+    vec2 p_4 = (above_1.off + (r_13 * e_3));
+    float z_19 = above_1.z;
+    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
-    float cos_ = (z_18 * inv_5);
-    float _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_18 * a_19.dirs.z)) * inv_5));
-    float _e48 = airlight_emitted(s_31, cos_);
-    return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0.0))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    float cos_ = (z_19 * inv_5);
+    float _e63 = airlight_area_phase(s_33, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    float _e64 = jacobian_1;
+    float _e65 = airlight_emitted(s_33, cos_);
+    return ((((((((_e64 * _e65) * exp(min((-(s_33.sigma_t) * dist), 0.0))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_32, AirlightArea a_20, AirlightAbove above_2, vec2 e_4, float r_max) {
+float airlight_flat_radial(AirlightScene s_34, AirlightArea a_20, AirlightAbove above_2, vec2 e_4, float r_max) {
+    float top = 0.0;
+    float graded_1 = 0.0;
+    bool local_179 = false;
     float sum_7 = 0.0;
     float _e7 = airlight_atan((r_max / above_2.rho0_));
-    float c_16 = (0.5 * _e7);
-    float hw_2 = (0.5 * _e7);
-    float _e14 = sum_7;
-    float _e20 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.09501251 * hw_2)));
-    sum_7 = (_e14 + ((0.1894506 * hw_2) * _e20));
-    float _e23 = sum_7;
-    float _e29 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.09501251 * hw_2)));
-    sum_7 = (_e23 + ((0.1894506 * hw_2) * _e29));
-    float _e32 = sum_7;
-    float _e38 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.28160354 * hw_2)));
-    sum_7 = (_e32 + ((0.18260342 * hw_2) * _e38));
-    float _e41 = sum_7;
-    float _e47 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.28160354 * hw_2)));
-    sum_7 = (_e41 + ((0.18260342 * hw_2) * _e47));
-    float _e50 = sum_7;
-    float _e56 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.45801678 * hw_2)));
-    sum_7 = (_e50 + ((0.16915652 * hw_2) * _e56));
-    float _e59 = sum_7;
-    float _e65 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.45801678 * hw_2)));
-    sum_7 = (_e59 + ((0.16915652 * hw_2) * _e65));
-    float _e68 = sum_7;
-    float _e74 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.61787623 * hw_2)));
-    sum_7 = (_e68 + ((0.14959599 * hw_2) * _e74));
-    float _e77 = sum_7;
-    float _e83 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.61787623 * hw_2)));
-    sum_7 = (_e77 + ((0.14959599 * hw_2) * _e83));
-    float _e86 = sum_7;
-    float _e92 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.7554044 * hw_2)));
-    sum_7 = (_e86 + ((0.12462897 * hw_2) * _e92));
-    float _e95 = sum_7;
-    float _e101 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.7554044 * hw_2)));
-    sum_7 = (_e95 + ((0.12462897 * hw_2) * _e101));
+    top = _e7;
+    float _e9 = airlight_emission_scale(s_34);
+    graded_1 = _e9;
+    float _e11 = graded_1;
+    if ((_e11 > 0.0)) {
+        float _e16 = graded_1;
+        float _e17 = top;
+        local_179 = (_e16 < _e17);
+    } else {
+        local_179 = false;
+    }
+    bool _e20 = local_179;
+    if (_e20) {
+        float _e21 = top;
+        float _e22 = graded_1;
+        float _e24 = airlight_atan((_e21 / _e22));
+        top = _e24;
+    } else {
+        graded_1 = 0.0;
+    }
+    float _e26 = top;
+    float c_16 = (0.5 * _e26);
+    float _e29 = top;
+    float hw_2 = (0.5 * _e29);
+    float _e34 = sum_7;
+    float _e37 = graded_1;
+    float _e41 = airlight_flat_node(s_34, a_20, above_2, e_4, _e37, (c_16 - (0.09501251 * hw_2)));
+    sum_7 = (_e34 + ((0.1894506 * hw_2) * _e41));
+    float _e44 = sum_7;
+    float _e47 = graded_1;
+    float _e51 = airlight_flat_node(s_34, a_20, above_2, e_4, _e47, (c_16 + (0.09501251 * hw_2)));
+    sum_7 = (_e44 + ((0.1894506 * hw_2) * _e51));
+    float _e54 = sum_7;
+    float _e57 = graded_1;
+    float _e61 = airlight_flat_node(s_34, a_20, above_2, e_4, _e57, (c_16 - (0.28160354 * hw_2)));
+    sum_7 = (_e54 + ((0.18260342 * hw_2) * _e61));
+    float _e64 = sum_7;
+    float _e67 = graded_1;
+    float _e71 = airlight_flat_node(s_34, a_20, above_2, e_4, _e67, (c_16 + (0.28160354 * hw_2)));
+    sum_7 = (_e64 + ((0.18260342 * hw_2) * _e71));
+    float _e74 = sum_7;
+    float _e77 = graded_1;
+    float _e81 = airlight_flat_node(s_34, a_20, above_2, e_4, _e77, (c_16 - (0.45801678 * hw_2)));
+    sum_7 = (_e74 + ((0.16915652 * hw_2) * _e81));
+    float _e84 = sum_7;
+    float _e87 = graded_1;
+    float _e91 = airlight_flat_node(s_34, a_20, above_2, e_4, _e87, (c_16 + (0.45801678 * hw_2)));
+    sum_7 = (_e84 + ((0.16915652 * hw_2) * _e91));
+    float _e94 = sum_7;
+    float _e97 = graded_1;
+    float _e101 = airlight_flat_node(s_34, a_20, above_2, e_4, _e97, (c_16 - (0.61787623 * hw_2)));
+    sum_7 = (_e94 + ((0.14959599 * hw_2) * _e101));
     float _e104 = sum_7;
-    float _e110 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.8656312 * hw_2)));
-    sum_7 = (_e104 + ((0.09515851 * hw_2) * _e110));
-    float _e113 = sum_7;
-    float _e119 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.8656312 * hw_2)));
-    sum_7 = (_e113 + ((0.09515851 * hw_2) * _e119));
-    float _e122 = sum_7;
-    float _e128 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.944575 * hw_2)));
-    sum_7 = (_e122 + ((0.062253524 * hw_2) * _e128));
-    float _e131 = sum_7;
-    float _e137 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.944575 * hw_2)));
-    sum_7 = (_e131 + ((0.062253524 * hw_2) * _e137));
-    float _e140 = sum_7;
-    float _e146 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.9894009 * hw_2)));
-    sum_7 = (_e140 + ((0.02715246 * hw_2) * _e146));
-    float _e149 = sum_7;
-    float _e155 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.9894009 * hw_2)));
-    sum_7 = (_e149 + ((0.02715246 * hw_2) * _e155));
-    float _e158 = sum_7;
-    return _e158;
+    float _e107 = graded_1;
+    float _e111 = airlight_flat_node(s_34, a_20, above_2, e_4, _e107, (c_16 + (0.61787623 * hw_2)));
+    sum_7 = (_e104 + ((0.14959599 * hw_2) * _e111));
+    float _e114 = sum_7;
+    float _e117 = graded_1;
+    float _e121 = airlight_flat_node(s_34, a_20, above_2, e_4, _e117, (c_16 - (0.7554044 * hw_2)));
+    sum_7 = (_e114 + ((0.12462897 * hw_2) * _e121));
+    float _e124 = sum_7;
+    float _e127 = graded_1;
+    float _e131 = airlight_flat_node(s_34, a_20, above_2, e_4, _e127, (c_16 + (0.7554044 * hw_2)));
+    sum_7 = (_e124 + ((0.12462897 * hw_2) * _e131));
+    float _e134 = sum_7;
+    float _e137 = graded_1;
+    float _e141 = airlight_flat_node(s_34, a_20, above_2, e_4, _e137, (c_16 - (0.8656312 * hw_2)));
+    sum_7 = (_e134 + ((0.09515851 * hw_2) * _e141));
+    float _e144 = sum_7;
+    float _e147 = graded_1;
+    float _e151 = airlight_flat_node(s_34, a_20, above_2, e_4, _e147, (c_16 + (0.8656312 * hw_2)));
+    sum_7 = (_e144 + ((0.09515851 * hw_2) * _e151));
+    float _e154 = sum_7;
+    float _e157 = graded_1;
+    float _e161 = airlight_flat_node(s_34, a_20, above_2, e_4, _e157, (c_16 - (0.944575 * hw_2)));
+    sum_7 = (_e154 + ((0.062253524 * hw_2) * _e161));
+    float _e164 = sum_7;
+    float _e167 = graded_1;
+    float _e171 = airlight_flat_node(s_34, a_20, above_2, e_4, _e167, (c_16 + (0.944575 * hw_2)));
+    sum_7 = (_e164 + ((0.062253524 * hw_2) * _e171));
+    float _e174 = sum_7;
+    float _e177 = graded_1;
+    float _e181 = airlight_flat_node(s_34, a_20, above_2, e_4, _e177, (c_16 - (0.9894009 * hw_2)));
+    sum_7 = (_e174 + ((0.02715246 * hw_2) * _e181));
+    float _e184 = sum_7;
+    float _e187 = graded_1;
+    float _e191 = airlight_flat_node(s_34, a_20, above_2, e_4, _e187, (c_16 + (0.9894009 * hw_2)));
+    sum_7 = (_e184 + ((0.02715246 * hw_2) * _e191));
+    float _e194 = sum_7;
+    return _e194;
 }
 
-vec2 airlight_outline_nearest(AirlightOutline o, vec2 q_4) {
+vec3 airlight_outline_boundary(AirlightOutline o, vec2 q_4) {
     float best = AIRLIGHT_FLT_MAX;
     vec2 nearest = vec2(0.0);
     bool inside = true;
     uint i_28 = 0u;
-    bool local_179 = false;
+    bool local_180 = false;
     if ((o.radius > 0.0)) {
         vec2 qc = (q_4 - o.corners[0]);
         float dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
-        if ((dq <= o.radius)) {
-            return q_4;
-        }
-        return (o.corners[0] + ((qc * o.radius) / vec2(dq)));
+        return vec3((o.corners[0] + ((qc * o.radius) / vec2(dq))), ((dq <= o.radius) ? 1.0 : 0.0));
     }
     nearest = q_4;
     bool loop_init_32 = true;
     while(true) {
         if (!loop_init_32) {
-            uint _e106 = i_28;
-            i_28 = (_e106 + 1u);
+            uint _e110 = i_28;
+            i_28 = (_e110 + 1u);
         }
         loop_init_32 = false;
-        uint _e32 = i_28;
-        if ((_e32 < 4u)) {
+        uint _e36 = i_28;
+        if ((_e36 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e36 = i_28;
-            vec2 a_43 = o.corners[_e36];
-            uint _e39 = i_28;
-            vec2 e_14 = (o.corners[((_e39 + 1u) % 4u)] - a_43);
-            bool _e46 = inside;
-            if (_e46) {
-                local_179 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
+            uint _e40 = i_28;
+            vec2 a_43 = o.corners[_e40];
+            uint _e43 = i_28;
+            vec2 e_14 = (o.corners[((_e43 + 1u) % 4u)] - a_43);
+            bool _e50 = inside;
+            if (_e50) {
+                local_180 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
             } else {
-                local_179 = false;
+                local_180 = false;
             }
-            bool _e63 = local_179;
-            inside = _e63;
+            bool _e67 = local_180;
+            inside = _e67;
             float t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
-            vec2 p_4 = (a_43 + (t_10 * e_14));
-            float dd = (((p_4.x - q_4.x) * (p_4.x - q_4.x)) + ((p_4.y - q_4.y) * (p_4.y - q_4.y)));
-            float _e103 = best;
-            if ((dd < _e103)) {
+            vec2 p_5 = (a_43 + (t_10 * e_14));
+            float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
+            float _e107 = best;
+            if ((dd < _e107)) {
                 best = dd;
-                nearest = p_4;
+                nearest = p_5;
             }
         }
     }
-    vec2 _e108 = nearest;
-    bool _e109 = inside;
-    return (_e109 ? q_4 : _e108);
+    vec2 _e112 = nearest;
+    bool _e113 = inside;
+    return vec3(_e112, (_e113 ? 1.0 : 0.0));
 }
 
-AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_10, AirlightOutline o_1, vec2 centre_1, float size_1) {
+vec2 airlight_outline_nearest(AirlightOutline o_1, vec2 q_5) {
+    vec3 _e2 = airlight_outline_boundary(o_1, q_5);
+    return ((_e2.z > 0.0) ? q_5 : _e2.xy);
+}
+
+AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutline o_2, vec2 centre_1, float size_1) {
     uint j_5 = 0u;
-    bool local_180 = false;
     bool local_181 = false;
     bool local_182 = false;
-    float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_10 * z_10)))));
+    bool local_183 = false;
+    float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     bool loop_init_33 = true;
     while(true) {
         if (!loop_init_33) {
@@ -6911,34 +6978,34 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_10, AirlightOutli
         {
             uint _e20 = j_5;
             vec2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
-            vec3 p_5 = (lobe_4.x * a_21.dirs);
+            vec3 p_6 = (lobe_4.x * a_21.dirs);
             if ((lobe_4.y > 0.0)) {
-                local_180 = (p_5.z < 0.0);
-            } else {
-                local_180 = false;
-            }
-            bool _e36 = local_180;
-            if (_e36) {
-                local_181 = (lobe_4.y < (_e10 + _e10));
+                local_181 = (p_6.z < 0.0);
             } else {
                 local_181 = false;
             }
-            bool _e43 = local_181;
+            bool _e36 = local_181;
+            if (_e36) {
+                local_182 = (lobe_4.y < (_e10 + _e10));
+            } else {
+                local_182 = false;
+            }
+            bool _e43 = local_182;
             if (_e43) {
-                float l_4 = (z_10 / -(p_5.z));
-                vec2 q_11 = (l_4 * p_5.xy);
-                vec2 _e49 = airlight_outline_nearest(o_1, q_11);
-                vec3 to_near = vec3(_e49, -(z_10));
-                float cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1.0);
-                if (!(all(equal(_e49, q_11)))) {
+                float l_4 = (z_11 / -(p_6.z));
+                vec2 q_13 = (l_4 * p_6.xy);
+                vec2 _e49 = airlight_outline_nearest(o_2, q_13);
+                vec3 to_near = vec3(_e49, -(z_11));
+                float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                if (!(all(equal(_e49, q_13)))) {
                     float _e63 = airlight_acos(cos_1);
-                    local_182 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_183 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_182 = true;
+                    local_183 = true;
                 }
-                bool _e69 = local_182;
+                bool _e69 = local_183;
                 if (_e69) {
-                    return AirlightFlatLobe(p_5, lobe_4.x, lobe_4.y, l_4, q_11);
+                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13);
                 }
             }
         }
@@ -6946,9 +7013,9 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_10, AirlightOutli
     return AirlightFlatLobe(vec3(0.0), 1.0, 0.0, 0.0, vec2(0.0));
 }
 
-vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_5, vec2 e_5) {
+vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_6, vec2 e_5) {
     vec2 m_11 = vec2((b_13.y - a_22.y), (a_22.x - b_13.x));
-    float num = (((q_5.x - a_22.x) * m_11.x) + ((q_5.y - a_22.y) * m_11.y));
+    float num = (((q_6.x - a_22.x) * m_11.x) + ((q_6.y - a_22.y) * m_11.y));
     float den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
     if ((den > 0.0)) {
         return vec2(chord.x, min(chord.y, (-(num) / den)));
@@ -6962,14 +7029,14 @@ vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_5, vec2 e_5) {
     return chord;
 }
 
-vec2 airlight_outline_chord(AirlightOutline o_2, vec2 q_6, vec2 e_6) {
+vec2 airlight_outline_chord(AirlightOutline o_3, vec2 q_7, vec2 e_6) {
     vec2 chord_1 = vec2(0.0, 3.4028235e38);
-    if ((o_2.radius > 0.0)) {
-        vec2 qc_1 = (q_6 - o_2.corners[0]);
+    if ((o_3.radius > 0.0)) {
+        vec2 qc_1 = (q_7 - o_3.corners[0]);
         float a_44 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         float b_21 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        float k_11 = ((dq_1 - o_2.radius) * (dq_1 + o_2.radius));
+        float k_11 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
         float disc_3 = ((b_21 * b_21) - (a_44 * k_11));
         if (!((disc_3 > 0.0))) {
             return vec2(0.0);
@@ -6985,92 +7052,92 @@ vec2 airlight_outline_chord(AirlightOutline o_2, vec2 q_6, vec2 e_6) {
         return vec2(max(min(r1_2, r2_3), 0.0), hi_8);
     }
     vec2 _e70 = chord_1;
-    vec2 _e75 = airlight_clip(_e70, o_2.corners[0], o_2.corners[1], q_6, e_6);
+    vec2 _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
     chord_1 = _e75;
     vec2 _e76 = chord_1;
-    vec2 _e81 = airlight_clip(_e76, o_2.corners[1], o_2.corners[2], q_6, e_6);
+    vec2 _e81 = airlight_clip(_e76, o_3.corners[1], o_3.corners[2], q_7, e_6);
     chord_1 = _e81;
     vec2 _e82 = chord_1;
-    vec2 _e87 = airlight_clip(_e82, o_2.corners[2], o_2.corners[3], q_6, e_6);
+    vec2 _e87 = airlight_clip(_e82, o_3.corners[2], o_3.corners[3], q_7, e_6);
     chord_1 = _e87;
     vec2 _e88 = chord_1;
-    vec2 _e93 = airlight_clip(_e88, o_2.corners[3], o_2.corners[0], q_6, e_6);
+    vec2 _e93 = airlight_clip(_e88, o_3.corners[3], o_3.corners[0], q_7, e_6);
     return _e93;
 }
 
-float airlight_flat_lobe_node(AirlightScene s_33, float z_11, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded, float g_27) {
+float airlight_flat_lobe_node(AirlightScene s_35, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded_2, float g_27) {
     vec2 _e7 = airlight_cos_sin_half_turn(g_27);
-    vec2 _e13 = airlight_cos_sin_half_turn((start_1 + ((graded * _e7.y) / _e7.x)));
+    vec2 _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
     float c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
     if (!((c_17 > 0.0))) {
         return 0.0;
     }
-    float _e26 = airlight_emitted(s_33, c_17);
-    float _e38 = airlight_area_phase(s_33, (lobe_1.sign_ * _e13.x));
-    return (((((_e26 * exp(min(((-(s_33.sigma_t) * z_11) / c_17), 0.0))) * _e38) * _e13.y) * graded) / (_e7.x * _e7.x));
+    float _e26 = airlight_emitted(s_35, c_17);
+    float _e38 = airlight_area_phase(s_35, (lobe_1.sign_ * _e13.x));
+    return (((((_e26 * exp(min(((-(s_35.sigma_t) * z_12) / c_17), 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-float airlight_flat_lobe_along(AirlightScene s_34, float z_12, AirlightOutline o_3, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
+float airlight_flat_lobe_along(AirlightScene s_36, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
     float sum_8 = 0.0;
     vec3 w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
     float k_12 = (w_10.z / -(lobe_2.p.z));
-    vec2 _e23 = airlight_outline_chord(o_3, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
+    vec2 _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
     float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
     float _e40 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
-    float graded_4 = max(lobe_2.scale, _e34);
-    float _e45 = airlight_atan(((_e40 - _e34) / graded_4));
+    float graded_6 = max(lobe_2.scale, _e34);
+    float _e45 = airlight_atan(((_e40 - _e34) / graded_6));
     float c_18 = (0.5 * _e45);
     float hw_3 = (0.5 * _e45);
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.09501251 * hw_3)));
+    float _e58 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.09501251 * hw_3)));
+    float _e67 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.28160354 * hw_3)));
+    float _e76 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.28160354 * hw_3)));
+    float _e85 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.45801678 * hw_3)));
+    float _e94 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.45801678 * hw_3)));
+    float _e103 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.61787623 * hw_3)));
+    float _e112 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.61787623 * hw_3)));
+    float _e121 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.7554044 * hw_3)));
+    float _e130 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.7554044 * hw_3)));
+    float _e139 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.8656312 * hw_3)));
+    float _e148 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.8656312 * hw_3)));
+    float _e157 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.944575 * hw_3)));
+    float _e166 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.944575 * hw_3)));
+    float _e175 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.9894009 * hw_3)));
+    float _e184 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.9894009 * hw_3)));
+    float _e193 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7098,7 +7165,7 @@ vec4 airlight_sort4_(vec4 x_23) {
     return vec4(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_3) {
+float airlight_flat_about_lobe(AirlightScene s_37, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3) {
     float sum_9 = 0.0;
     uint i_29 = 0u;
     uint i_30 = 0u;
@@ -7107,11 +7174,11 @@ float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o
     uint j_6 = 0u;
     vec3 _e5 = airlight_basis_e1_(lobe_3.p);
     vec3 v_9 = cross(lobe_3.p, _e5);
-    vec2 q_12 = lobe_3.q;
-    if ((o_4.radius > 0.0)) {
-        vec2 d_5 = (o_4.corners[0] - q_12);
+    vec2 q_14 = lobe_3.q;
+    if ((o_5.radius > 0.0)) {
+        vec2 d_5 = (o_5.corners[0] - q_14);
         float dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        if ((dq_2 <= o_4.radius)) {
+        if ((dq_2 <= o_5.radius)) {
             bool loop_init_34 = true;
             while(true) {
                 if (!loop_init_34) {
@@ -7128,15 +7195,15 @@ float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o
                     uint _e33 = i_29;
                     vec3 _e34 = airlight_azimuths(true, _e33);
                     float _e35 = sum_9;
-                    float _e38 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e34.xy);
+                    float _e38 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
                     sum_9 = (_e35 + (_e34.z * _e38));
                 }
             }
             float _e44 = sum_9;
             return _e44;
         }
-        float sb_1 = (o_4.radius / dq_2);
-        float cb = (sqrt(((dq_2 - o_4.radius) * (dq_2 + o_4.radius))) / dq_2);
+        float sb_1 = (o_5.radius / dq_2);
+        float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
         float _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
         float _e66 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
         float _e68 = airlight_wrap_turn((_e66 - _e54));
@@ -7161,29 +7228,29 @@ float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o
                 vec3 _e98 = airlight_azimuths(false, _e97);
                 float _e99 = sum_9;
                 vec2 _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
-                float _e108 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e107);
+                float _e108 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e107);
                 sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
             }
         }
         float _e114 = sum_9;
         return _e114;
     }
-    vec2 _e115 = airlight_outline_nearest(o_4, q_12);
-    bool inside_2 = all(equal(_e115, q_12));
+    vec2 _e115 = airlight_outline_nearest(o_5, q_14);
+    bool inside_2 = all(equal(_e115, q_14));
     if (!(inside_2)) {
-        float _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_4.corners[0] + o_4.corners[2])) - q_12));
+        float _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
         mid = _e129;
     }
-    float _e133 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[0] - q_12));
+    float _e133 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
     float _e134 = mid;
     float _e136 = airlight_wrap_turn((_e133 - _e134));
-    float _e140 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[1] - q_12));
+    float _e140 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
     float _e141 = mid;
     float _e143 = airlight_wrap_turn((_e140 - _e141));
-    float _e147 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[2] - q_12));
+    float _e147 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
     float _e148 = mid;
     float _e150 = airlight_wrap_turn((_e147 - _e148));
-    float _e154 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[3] - q_12));
+    float _e154 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
     float _e155 = mid;
     float _e157 = airlight_wrap_turn((_e154 - _e155));
     vec4 _e159 = airlight_sort4_(vec4(_e136, _e143, _e150, _e157));
@@ -7228,7 +7295,7 @@ float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o
                     vec2 _e198 = airlight_triangle_rule(_e197);
                     float _e199 = sum_9;
                     vec2 _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                    float _e206 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e205);
+                    float _e206 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e205);
                     sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
                 }
             }
@@ -7238,7 +7305,9 @@ float airlight_flat_about_lobe(AirlightScene s_35, float z_13, AirlightOutline o
     return _e215;
 }
 
-float airlight_disc(AirlightScene s_36, AirlightArea a_23, vec3 x_24) {
+float airlight_disc(AirlightScene s_38, AirlightArea a_23, vec3 x_24) {
+    bool local_184 = false;
+    bool local_185 = false;
     vec2 u_6 = vec2(0.0);
     AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
     float sum_10 = 0.0;
@@ -7246,8 +7315,8 @@ float airlight_disc(AirlightScene s_36, AirlightArea a_23, vec3 x_24) {
     vec2 e_8 = vec2(0.0);
     float r_max_1 = 0.0;
     vec3 rel = (x_24 - a_23.c);
-    float z_19 = dot(rel, a_23.n);
-    if (!((z_19 > 0.0))) {
+    float z_20 = dot(rel, a_23.n);
+    if (!((z_20 > 0.0))) {
         return 0.0;
     }
     float fx = dot(rel, a_23.a1_);
@@ -7256,67 +7325,81 @@ float airlight_disc(AirlightScene s_36, AirlightArea a_23, vec3 x_24) {
     float radius_2 = a_23.radius;
     vec2 zero_1 = vec2(0.0);
     AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_19, outline, vec2(-(fx), -(fy_1)), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_20, outline, vec2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        float _e34 = airlight_flat_about_lobe(s_36, z_19, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_38, z_20, outline, _e30);
         return _e34;
     }
-    bool inside_3 = (rf <= radius_2);
-    AirlightAbove _e41 = airlight_above(z_19, vec2(0.0));
-    above_3 = _e41;
+    if ((rf <= radius_2)) {
+        if (!((rf == 0.0))) {
+            bool _e44 = airlight_far_from_edge(s_38, (radius_2 - rf), z_20);
+            local_185 = _e44;
+        } else {
+            local_185 = true;
+        }
+        bool _e46 = local_185;
+        local_184 = _e46;
+    } else {
+        local_184 = false;
+    }
+    bool inside_3 = local_184;
+    AirlightAbove _e54 = airlight_above(z_20, vec2(0.0));
+    above_3 = _e54;
     if (!(inside_3)) {
         u_6 = vec2((-(fx) / rf), (-(fy_1) / rf));
-        vec2 _e50 = u_6;
-        AirlightAbove _e52 = airlight_above(z_19, ((rf - radius_2) * _e50));
-        above_3 = _e52;
+        vec2 _e63 = u_6;
+        AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
+        above_3 = _e65;
     }
     float k_13 = ((rf - radius_2) * (rf + radius_2));
     bool loop_init_38 = true;
     while(true) {
         if (!loop_init_38) {
-            uint _e114 = i_32;
-            i_32 = (_e114 + 1u);
+            uint _e127 = i_32;
+            i_32 = (_e127 + 1u);
         }
         loop_init_38 = false;
-        uint _e60 = i_32;
-        if ((_e60 < 32u)) {
+        uint _e73 = i_32;
+        if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e63 = i_32;
-            vec3 _e64 = airlight_azimuths(inside_3, _e63);
-            float _e67 = u_6.x;
-            float _e71 = u_6.y;
-            float _e76 = u_6.y;
+            uint _e76 = i_32;
+            vec3 _e77 = airlight_azimuths(inside_3, _e76);
             float _e80 = u_6.x;
-            e_8 = vec2(((_e64.x * _e67) - (_e64.y * _e71)), ((_e64.x * _e76) + (_e64.y * _e80)));
-            r_max_1 = ((radius_2 + radius_2) * _e64.x);
+            float _e84 = u_6.y;
+            float _e89 = u_6.y;
+            float _e93 = u_6.x;
+            e_8 = vec2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_3) {
-                e_8 = _e64.xy;
-                float b_23 = ((fx * _e64.x) + (fy_1 * _e64.y));
+                e_8 = _e77.xy;
+                float b_23 = ((fx * _e77.x) + (fy_1 * _e77.y));
                 float root_4 = sqrt(((b_23 * b_23) - k_13));
                 r_max_1 = ((b_23 > 0.0) ? (-(k_13) / (b_23 + root_4)) : (root_4 - b_23));
             }
-            float _e105 = sum_10;
-            AirlightAbove _e107 = above_3;
-            vec2 _e108 = e_8;
-            float _e109 = r_max_1;
-            float _e110 = airlight_flat_radial(s_36, a_23, _e107, _e108, _e109);
-            sum_10 = (_e105 + (_e64.z * _e110));
+            float _e118 = sum_10;
+            AirlightAbove _e120 = above_3;
+            vec2 _e121 = e_8;
+            float _e122 = r_max_1;
+            float _e123 = airlight_flat_radial(s_38, a_23, _e120, _e121, _e122);
+            sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
-    float _e116 = sum_10;
-    return _e116;
+    float _e129 = sum_10;
+    return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_37, AirlightArea a_24, vec3 x_25) {
+float airlight_parallelogram(AirlightScene s_39, AirlightArea a_24, vec3 x_25) {
+    vec2 q_8 = vec2(0.0);
+    bool local_186 = false;
     float sum_11 = 0.0;
     uint i_33 = 0u;
     uint j_7 = 0u;
     vec3 rel_1 = (x_25 - a_24.c);
-    float z_20 = dot(rel_1, a_24.n);
-    if (!((z_20 > 0.0))) {
+    float z_21 = dot(rel_1, a_24.n);
+    if (!((z_21 > 0.0))) {
         return 0.0;
     }
     vec2 foot = vec2(dot(rel_1, a_24.a1_), dot(rel_1, a_24.a2_));
@@ -7326,32 +7409,45 @@ float airlight_parallelogram(AirlightScene s_37, AirlightArea a_24, vec3 x_25) {
     float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
     AirlightOutline about_foot = AirlightOutline(vec2[4]((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_20, about_foot, ((0.5 * corners[2]) - foot), size_2);
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
     if ((_e69.scale > 0.0)) {
-        float _e73 = airlight_flat_about_lobe(s_37, z_20, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_39, z_21, about_foot, _e69);
         return _e73;
     }
-    vec2 _e76 = airlight_outline_nearest(about_foot, vec2(0.0));
-    vec2 q_13 = (_e76 + foot);
-    AirlightAbove _e79 = airlight_above(z_20, (q_13 - foot));
+    vec3 _e76 = airlight_outline_boundary(about_foot, vec2(0.0));
+    q_8 = (_e76.xy + foot);
+    if ((_e76.z > 0.0)) {
+        bool _e89 = airlight_far_from_edge(s_39, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_186 = _e89;
+    } else {
+        local_186 = false;
+    }
+    bool _e91 = local_186;
+    if (_e91) {
+        q_8 = foot;
+    }
+    vec2 _e92 = q_8;
+    AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     bool loop_init_39 = true;
     while(true) {
         if (!loop_init_39) {
-            uint _e190 = i_33;
-            i_33 = (_e190 + 1u);
+            uint _e207 = i_33;
+            i_33 = (_e207 + 1u);
         }
         loop_init_39 = false;
-        uint _e87 = i_33;
-        if ((_e87 < 4u)) {
+        uint _e102 = i_33;
+        if ((_e102 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e90 = i_33;
-            vec2 ca = (corners[_e90] - q_13);
-            uint _e93 = i_33;
-            vec2 cb_1 = (corners[(_e93 + 1u)] - q_13);
+            uint _e105 = i_33;
+            vec2 _e107 = q_8;
+            vec2 ca = (corners[_e105] - _e107);
+            uint _e109 = i_33;
+            vec2 _e113 = q_8;
+            vec2 cb_1 = (corners[(_e109 + 1u)] - _e113);
             float area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
             if (!((area > thin))) {
                 continue;
@@ -7360,46 +7456,46 @@ float airlight_parallelogram(AirlightScene s_37, AirlightArea a_24, vec3 x_25) {
             float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
             float h_9 = (area / el);
             vec2 m_12 = vec2((e_15.y / el), (-(e_15.x) / el));
-            float _e130 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
+            float _e147 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
             vec2 start_4 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
             j_7 = 0u;
             bool loop_init_40 = true;
             while(true) {
                 if (!loop_init_40) {
-                    uint _e187 = j_7;
-                    j_7 = (_e187 + 1u);
+                    uint _e204 = j_7;
+                    j_7 = (_e204 + 1u);
                 }
                 loop_init_40 = false;
-                uint _e143 = j_7;
-                if ((_e143 < 12u)) {
+                uint _e160 = j_7;
+                if ((_e160 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e146 = j_7;
-                    vec2 _e147 = airlight_triangle_rule(_e146);
-                    vec2 _e154 = airlight_cos_sin_half_turn(((0.5 * _e130) * (1.0 + _e147.x)));
-                    vec2 dir_3 = vec2(((_e154.x * start_4.x) - (_e154.y * start_4.y)), ((_e154.y * start_4.x) + (_e154.x * start_4.y)));
-                    float _e170 = sum_11;
-                    float _e183 = airlight_flat_radial(s_37, a_24, _e79, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
-                    sum_11 = (_e170 + (((_e147.y * 0.5) * _e130) * _e183));
+                    uint _e163 = j_7;
+                    vec2 _e164 = airlight_triangle_rule(_e163);
+                    vec2 _e171 = airlight_cos_sin_half_turn(((0.5 * _e147) * (1.0 + _e164.x)));
+                    vec2 dir_3 = vec2(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
+                    float _e187 = sum_11;
+                    float _e200 = airlight_flat_radial(s_39, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    sum_11 = (_e187 + (((_e164.y * 0.5) * _e147) * _e200));
                 }
             }
         }
     }
-    float _e192 = sum_11;
-    return _e192;
+    float _e209 = sum_11;
+    return _e209;
 }
 
-vec3 airlight_cap_row(AirlightScene s_38, AirlightCap cap, float graded_1, float node, float weight_1) {
+vec3 airlight_cap_row(AirlightScene s_40, AirlightCap cap, float graded_3, float node_1, float weight_1) {
     float phi = 0.0;
     float w_2 = 0.0;
-    phi = node;
+    phi = node_1;
     w_2 = weight_1;
-    if ((graded_1 > 0.0)) {
-        vec2 _e9 = airlight_cos_sin_half_turn(node);
-        phi = ((graded_1 * _e9.y) / _e9.x);
-        w_2 = ((weight_1 * graded_1) / (_e9.x * _e9.x));
+    if ((graded_3 > 0.0)) {
+        vec2 _e9 = airlight_cos_sin_half_turn(node_1);
+        phi = ((graded_3 * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded_3) / (_e9.x * _e9.x));
     }
     float _e19 = phi;
     vec2 _e20 = airlight_cos_sin_half_turn(_e19);
@@ -7407,14 +7503,15 @@ vec3 airlight_cap_row(AirlightScene s_38, AirlightCap cap, float graded_1, float
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0.0);
     float _e38 = w_2;
-    float _e40 = airlight_emitted(s_38, _e20.x);
-    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_38.sigma_t) * dist_1), 0.0)));
+    float _e40 = airlight_emitted(s_40, _e20.x);
+    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_40.sigma_t) * dist_1), 0.0)));
     return vec3(factor, cb_2, sb_2);
 }
 
-float airlight_sphere_cap(AirlightScene s_39, AirlightArea a_25, AirlightCap cap_1) {
-    float graded_2 = 0.0;
-    float top = 1.5707964;
+float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap_1) {
+    float graded_4 = 0.0;
+    float top_1 = 1.5707964;
+    bool local_187 = false;
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     float sum_12 = 0.0;
     uint i_34 = 0u;
@@ -7424,69 +7521,79 @@ float airlight_sphere_cap(AirlightScene s_39, AirlightArea a_25, AirlightCap cap
     float ad = dot(cap_1.a, a_25.d);
     float e1d = dot(_e4, a_25.d);
     float e2d = dot(e2_2, a_25.d);
-    uint p_6 = uint(s_39.light_param_b);
-    if ((p_6 > 1u)) {
-        float lobe_5 = (2.0 / sqrt(float((p_6 - 1u))));
-        if ((lobe_5 < 1.5707964)) {
-            graded_2 = lobe_5;
-            float _e32 = airlight_atan((1.5707964 / lobe_5));
-            top = _e32;
-        }
+    float _e14 = airlight_emission_scale(s_41);
+    graded_4 = _e14;
+    float _e18 = graded_4;
+    if ((_e18 > 0.0)) {
+        float _e23 = graded_4;
+        float _e24 = top_1;
+        local_187 = (_e23 < _e24);
+    } else {
+        local_187 = false;
     }
-    float _e33 = top;
+    bool _e27 = local_187;
+    if (_e27) {
+        float _e28 = top_1;
+        float _e29 = graded_4;
+        float _e31 = airlight_atan((_e28 / _e29));
+        top_1 = _e31;
+    } else {
+        graded_4 = 0.0;
+    }
+    float _e33 = top_1;
     float c_20 = (0.5 * _e33);
-    float _e36 = top;
+    float _e36 = top_1;
     float hw_5 = (0.5 * _e36);
-    float _e74 = graded_2;
-    vec3 _e80 = airlight_cap_row(s_39, cap_1, _e74, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    float _e74 = graded_4;
+    vec3 _e80 = airlight_cap_row(s_41, cap_1, _e74, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[0] = _e80;
-    float _e82 = graded_2;
-    vec3 _e88 = airlight_cap_row(s_39, cap_1, _e82, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    float _e82 = graded_4;
+    vec3 _e88 = airlight_cap_row(s_41, cap_1, _e82, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[1] = _e88;
-    float _e90 = graded_2;
-    vec3 _e96 = airlight_cap_row(s_39, cap_1, _e90, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    float _e90 = graded_4;
+    vec3 _e96 = airlight_cap_row(s_41, cap_1, _e90, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[2] = _e96;
-    float _e98 = graded_2;
-    vec3 _e104 = airlight_cap_row(s_39, cap_1, _e98, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    float _e98 = graded_4;
+    vec3 _e104 = airlight_cap_row(s_41, cap_1, _e98, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[3] = _e104;
-    float _e106 = graded_2;
-    vec3 _e112 = airlight_cap_row(s_39, cap_1, _e106, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    float _e106 = graded_4;
+    vec3 _e112 = airlight_cap_row(s_41, cap_1, _e106, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[4] = _e112;
-    float _e114 = graded_2;
-    vec3 _e120 = airlight_cap_row(s_39, cap_1, _e114, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    float _e114 = graded_4;
+    vec3 _e120 = airlight_cap_row(s_41, cap_1, _e114, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[5] = _e120;
-    float _e122 = graded_2;
-    vec3 _e128 = airlight_cap_row(s_39, cap_1, _e122, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    float _e122 = graded_4;
+    vec3 _e128 = airlight_cap_row(s_41, cap_1, _e122, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[6] = _e128;
-    float _e130 = graded_2;
-    vec3 _e136 = airlight_cap_row(s_39, cap_1, _e130, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    float _e130 = graded_4;
+    vec3 _e136 = airlight_cap_row(s_41, cap_1, _e130, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[7] = _e136;
-    float _e138 = graded_2;
-    vec3 _e144 = airlight_cap_row(s_39, cap_1, _e138, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    float _e138 = graded_4;
+    vec3 _e144 = airlight_cap_row(s_41, cap_1, _e138, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[8] = _e144;
-    float _e146 = graded_2;
-    vec3 _e152 = airlight_cap_row(s_39, cap_1, _e146, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    float _e146 = graded_4;
+    vec3 _e152 = airlight_cap_row(s_41, cap_1, _e146, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[9] = _e152;
-    float _e154 = graded_2;
-    vec3 _e160 = airlight_cap_row(s_39, cap_1, _e154, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    float _e154 = graded_4;
+    vec3 _e160 = airlight_cap_row(s_41, cap_1, _e154, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[10] = _e160;
-    float _e162 = graded_2;
-    vec3 _e168 = airlight_cap_row(s_39, cap_1, _e162, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    float _e162 = graded_4;
+    vec3 _e168 = airlight_cap_row(s_41, cap_1, _e162, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[11] = _e168;
-    float _e170 = graded_2;
-    vec3 _e176 = airlight_cap_row(s_39, cap_1, _e170, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
+    float _e170 = graded_4;
+    vec3 _e176 = airlight_cap_row(s_41, cap_1, _e170, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[12] = _e176;
-    float _e178 = graded_2;
-    vec3 _e184 = airlight_cap_row(s_39, cap_1, _e178, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
+    float _e178 = graded_4;
+    vec3 _e184 = airlight_cap_row(s_41, cap_1, _e178, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[13] = _e184;
-    float _e186 = graded_2;
-    vec3 _e192 = airlight_cap_row(s_39, cap_1, _e186, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    float _e186 = graded_4;
+    vec3 _e192 = airlight_cap_row(s_41, cap_1, _e186, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[14] = _e192;
-    float _e194 = graded_2;
-    vec3 _e200 = airlight_cap_row(s_39, cap_1, _e194, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    float _e194 = graded_4;
+    vec3 _e200 = airlight_cap_row(s_41, cap_1, _e194, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[15] = _e200;
     if (a_25.isotropic) {
-        float _e206 = airlight_area_phase(s_39, 0.0);
+        float _e206 = airlight_area_phase(s_41, 0.0);
         float around_1 = (6.2831855 * _e206);
         float _e208 = sum_12;
         float _e211 = rows[0].x;
@@ -7560,97 +7667,97 @@ float airlight_sphere_cap(AirlightScene s_39, AirlightArea a_25, AirlightCap cap
             float _e323 = rows[0].x;
             float _e326 = rows[0].y;
             float _e330 = rows[0].z;
-            float _e333 = airlight_area_phase(s_39, ((_e326 * ad) + (_e330 * across_1)));
+            float _e333 = airlight_area_phase(s_41, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[1].x;
             float _e342 = rows[1].y;
             float _e346 = rows[1].z;
-            float _e349 = airlight_area_phase(s_39, ((_e342 * ad) + (_e346 * across_1)));
+            float _e349 = airlight_area_phase(s_41, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[2].x;
             float _e358 = rows[2].y;
             float _e362 = rows[2].z;
-            float _e365 = airlight_area_phase(s_39, ((_e358 * ad) + (_e362 * across_1)));
+            float _e365 = airlight_area_phase(s_41, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[3].x;
             float _e374 = rows[3].y;
             float _e378 = rows[3].z;
-            float _e381 = airlight_area_phase(s_39, ((_e374 * ad) + (_e378 * across_1)));
+            float _e381 = airlight_area_phase(s_41, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[4].x;
             float _e390 = rows[4].y;
             float _e394 = rows[4].z;
-            float _e397 = airlight_area_phase(s_39, ((_e390 * ad) + (_e394 * across_1)));
+            float _e397 = airlight_area_phase(s_41, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[5].x;
             float _e406 = rows[5].y;
             float _e410 = rows[5].z;
-            float _e413 = airlight_area_phase(s_39, ((_e406 * ad) + (_e410 * across_1)));
+            float _e413 = airlight_area_phase(s_41, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[6].x;
             float _e422 = rows[6].y;
             float _e426 = rows[6].z;
-            float _e429 = airlight_area_phase(s_39, ((_e422 * ad) + (_e426 * across_1)));
+            float _e429 = airlight_area_phase(s_41, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[7].x;
             float _e438 = rows[7].y;
             float _e442 = rows[7].z;
-            float _e445 = airlight_area_phase(s_39, ((_e438 * ad) + (_e442 * across_1)));
+            float _e445 = airlight_area_phase(s_41, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[8].x;
             float _e454 = rows[8].y;
             float _e458 = rows[8].z;
-            float _e461 = airlight_area_phase(s_39, ((_e454 * ad) + (_e458 * across_1)));
+            float _e461 = airlight_area_phase(s_41, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[9].x;
             float _e470 = rows[9].y;
             float _e474 = rows[9].z;
-            float _e477 = airlight_area_phase(s_39, ((_e470 * ad) + (_e474 * across_1)));
+            float _e477 = airlight_area_phase(s_41, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[10].x;
             float _e486 = rows[10].y;
             float _e490 = rows[10].z;
-            float _e493 = airlight_area_phase(s_39, ((_e486 * ad) + (_e490 * across_1)));
+            float _e493 = airlight_area_phase(s_41, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[11].x;
             float _e502 = rows[11].y;
             float _e506 = rows[11].z;
-            float _e509 = airlight_area_phase(s_39, ((_e502 * ad) + (_e506 * across_1)));
+            float _e509 = airlight_area_phase(s_41, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[12].x;
             float _e518 = rows[12].y;
             float _e522 = rows[12].z;
-            float _e525 = airlight_area_phase(s_39, ((_e518 * ad) + (_e522 * across_1)));
+            float _e525 = airlight_area_phase(s_41, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[13].x;
             float _e534 = rows[13].y;
             float _e538 = rows[13].z;
-            float _e541 = airlight_area_phase(s_39, ((_e534 * ad) + (_e538 * across_1)));
+            float _e541 = airlight_area_phase(s_41, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = at_2;
             float _e547 = rows[14].x;
             float _e550 = rows[14].y;
             float _e554 = rows[14].z;
-            float _e557 = airlight_area_phase(s_39, ((_e550 * ad) + (_e554 * across_1)));
+            float _e557 = airlight_area_phase(s_41, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             float _e560 = at_2;
             float _e563 = rows[15].x;
             float _e566 = rows[15].y;
             float _e570 = rows[15].z;
-            float _e573 = airlight_area_phase(s_39, ((_e566 * ad) + (_e570 * across_1)));
+            float _e573 = airlight_area_phase(s_41, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
             float _e576 = sum_12;
             float _e578 = at_2;
@@ -7661,18 +7768,18 @@ float airlight_sphere_cap(AirlightScene s_39, AirlightArea a_25, AirlightCap cap
     return _e584;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_40, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_3, float g_28) {
+float airlight_sphere_lobe_node(AirlightScene s_42, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_5, float g_28) {
     vec2 _e8 = airlight_cos_sin_half_turn(g_28);
-    vec2 _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_3 * _e8.y) / _e8.x)));
+    vec2 _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_5 * _e8.y) / _e8.x)));
     float toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
     float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
-    float _e43 = airlight_emitted(s_40, (root_5 / cap_2.radius));
-    float _e53 = airlight_area_phase(s_40, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_40.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_3) / (_e8.x * _e8.x));
+    float _e43 = airlight_emitted(s_42, (root_5 / cap_2.radius));
+    float _e53 = airlight_area_phase(s_42, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_42.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_41, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1) {
+float airlight_sphere_about_lobe(AirlightScene s_43, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1) {
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
@@ -7732,91 +7839,91 @@ float airlight_sphere_about_lobe(AirlightScene s_41, AirlightArea a_26, Airlight
             }
             float to = (mid_3 + _e97);
             float _e105 = start_3;
-            float graded_5 = max(scale_1, _e105);
+            float graded_7 = max(scale_1, _e105);
             float _e107 = start_3;
-            float _e110 = airlight_atan(((to - _e107) / graded_5));
+            float _e110 = airlight_atan(((to - _e107) / graded_7));
             float c_21 = (0.5 * _e110);
             float hw_6 = (0.5 * _e110);
             around = 0.0;
             float _e117 = around;
             float _e120 = big_b_1;
             float _e121 = start_3;
-            float _e125 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e120, _e121, graded_5, (c_21 - (0.09501251 * hw_6)));
+            float _e125 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251 * hw_6)));
             around = (_e117 + ((0.1894506 * hw_6) * _e125));
             float _e128 = around;
             float _e131 = big_b_1;
             float _e132 = start_3;
-            float _e136 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e131, _e132, graded_5, (c_21 + (0.09501251 * hw_6)));
+            float _e136 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251 * hw_6)));
             around = (_e128 + ((0.1894506 * hw_6) * _e136));
             float _e139 = around;
             float _e142 = big_b_1;
             float _e143 = start_3;
-            float _e147 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e142, _e143, graded_5, (c_21 - (0.28160354 * hw_6)));
+            float _e147 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354 * hw_6)));
             around = (_e139 + ((0.18260342 * hw_6) * _e147));
             float _e150 = around;
             float _e153 = big_b_1;
             float _e154 = start_3;
-            float _e158 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e153, _e154, graded_5, (c_21 + (0.28160354 * hw_6)));
+            float _e158 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354 * hw_6)));
             around = (_e150 + ((0.18260342 * hw_6) * _e158));
             float _e161 = around;
             float _e164 = big_b_1;
             float _e165 = start_3;
-            float _e169 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e164, _e165, graded_5, (c_21 - (0.45801678 * hw_6)));
+            float _e169 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678 * hw_6)));
             around = (_e161 + ((0.16915652 * hw_6) * _e169));
             float _e172 = around;
             float _e175 = big_b_1;
             float _e176 = start_3;
-            float _e180 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e175, _e176, graded_5, (c_21 + (0.45801678 * hw_6)));
+            float _e180 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678 * hw_6)));
             around = (_e172 + ((0.16915652 * hw_6) * _e180));
             float _e183 = around;
             float _e186 = big_b_1;
             float _e187 = start_3;
-            float _e191 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e186, _e187, graded_5, (c_21 - (0.61787623 * hw_6)));
+            float _e191 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623 * hw_6)));
             around = (_e183 + ((0.14959599 * hw_6) * _e191));
             float _e194 = around;
             float _e197 = big_b_1;
             float _e198 = start_3;
-            float _e202 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e197, _e198, graded_5, (c_21 + (0.61787623 * hw_6)));
+            float _e202 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623 * hw_6)));
             around = (_e194 + ((0.14959599 * hw_6) * _e202));
             float _e205 = around;
             float _e208 = big_b_1;
             float _e209 = start_3;
-            float _e213 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e208, _e209, graded_5, (c_21 - (0.7554044 * hw_6)));
+            float _e213 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044 * hw_6)));
             around = (_e205 + ((0.12462897 * hw_6) * _e213));
             float _e216 = around;
             float _e219 = big_b_1;
             float _e220 = start_3;
-            float _e224 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e219, _e220, graded_5, (c_21 + (0.7554044 * hw_6)));
+            float _e224 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044 * hw_6)));
             around = (_e216 + ((0.12462897 * hw_6) * _e224));
             float _e227 = around;
             float _e230 = big_b_1;
             float _e231 = start_3;
-            float _e235 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e230, _e231, graded_5, (c_21 - (0.8656312 * hw_6)));
+            float _e235 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312 * hw_6)));
             around = (_e227 + ((0.09515851 * hw_6) * _e235));
             float _e238 = around;
             float _e241 = big_b_1;
             float _e242 = start_3;
-            float _e246 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e241, _e242, graded_5, (c_21 + (0.8656312 * hw_6)));
+            float _e246 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312 * hw_6)));
             around = (_e238 + ((0.09515851 * hw_6) * _e246));
             float _e249 = around;
             float _e252 = big_b_1;
             float _e253 = start_3;
-            float _e257 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e252, _e253, graded_5, (c_21 - (0.944575 * hw_6)));
+            float _e257 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575 * hw_6)));
             around = (_e249 + ((0.062253524 * hw_6) * _e257));
             float _e260 = around;
             float _e263 = big_b_1;
             float _e264 = start_3;
-            float _e268 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e263, _e264, graded_5, (c_21 + (0.944575 * hw_6)));
+            float _e268 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575 * hw_6)));
             around = (_e260 + ((0.062253524 * hw_6) * _e268));
             float _e271 = around;
             float _e274 = big_b_1;
             float _e275 = start_3;
-            float _e279 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e274, _e275, graded_5, (c_21 - (0.9894009 * hw_6)));
+            float _e279 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009 * hw_6)));
             around = (_e271 + ((0.02715246 * hw_6) * _e279));
             float _e282 = around;
             float _e285 = big_b_1;
             float _e286 = start_3;
-            float _e290 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e285, _e286, graded_5, (c_21 + (0.9894009 * hw_6)));
+            float _e290 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009 * hw_6)));
             around = (_e282 + ((0.02715246 * hw_6) * _e290));
             float _e293 = sum_13;
             float _e294 = wpsi;
@@ -7828,16 +7935,16 @@ float airlight_sphere_about_lobe(AirlightScene s_41, AirlightArea a_26, Airlight
     return _e301;
 }
 
-float airlight_sphere(AirlightScene s_42, AirlightArea a_27, vec3 x_26) {
+float airlight_sphere(AirlightScene s_44, AirlightArea a_27, vec3 x_26) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_8 = 0u;
-    bool local_183 = false;
-    bool local_184 = false;
-    bool local_185 = false;
-    bool local_186 = false;
-    bool local_187 = false;
+    bool local_188 = false;
+    bool local_189 = false;
+    bool local_190 = false;
+    bool local_191 = false;
+    bool local_192 = false;
     vec3 v_11 = (a_27.c - x_26);
     float _e5 = airlight_safe_length(v_11);
     if (!((_e5 > a_27.radius))) {
@@ -7860,43 +7967,43 @@ float airlight_sphere(AirlightScene s_42, AirlightArea a_27, vec3 x_26) {
         }
         {
             uint _e39 = j_8;
-            vec2 lobe_6 = ((_e39 == 1u) ? a_27.lobes.zw : a_27.lobes.xy);
-            float c_22 = dot(cap_4.a, (lobe_6.x * a_27.d));
+            vec2 lobe_5 = ((_e39 == 1u) ? a_27.lobes.zw : a_27.lobes.xy);
+            float c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_183 = (lobe_6.y > 0.0);
+                local_188 = (lobe_5.y > 0.0);
             } else {
-                local_183 = false;
+                local_188 = false;
             }
-            bool _e57 = local_183;
+            bool _e57 = local_188;
             if (_e57) {
-                local_184 = (lobe_6.y < (_e23 + _e23));
+                local_189 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_184 = false;
+                local_189 = false;
             }
-            bool _e64 = local_184;
+            bool _e64 = local_189;
             if (_e64) {
                 if (!((c_22 > cap_4.cos_a))) {
                     if ((c_22 > -(cap_4.cos_a))) {
                         float _e77 = airlight_acos(c_22);
-                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+                        local_192 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_187 = false;
+                        local_192 = false;
                     }
-                    bool _e84 = local_187;
-                    local_186 = _e84;
+                    bool _e84 = local_192;
+                    local_191 = _e84;
                 } else {
-                    local_186 = true;
+                    local_191 = true;
                 }
-                bool _e86 = local_186;
-                local_185 = _e86;
+                bool _e86 = local_191;
+                local_190 = _e86;
             } else {
-                local_185 = false;
+                local_190 = false;
             }
-            bool _e88 = local_185;
+            bool _e88 = local_190;
             if (_e88) {
-                chosen = lobe_6.y;
-                sign_3 = lobe_6.x;
+                chosen = lobe_5.y;
+                sign_3 = lobe_5.x;
                 cos_p_2 = c_22;
             }
         }
@@ -7906,47 +8013,47 @@ float airlight_sphere(AirlightScene s_42, AirlightArea a_27, vec3 x_26) {
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_42, a_27, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_44, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_42, a_27, cap_4);
+    float _e101 = airlight_sphere_cap(s_44, a_27, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_43, AirlightArea a_28, vec3 x_27) {
-    switch(s_43.light_shape) {
+float airlight_emitter_radiance(AirlightScene s_45, AirlightArea a_28, vec3 x_27) {
+    switch(s_45.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_43, a_28, x_27);
+            float _e4 = airlight_disc(s_45, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_43, a_28, x_27);
+            float _e5 = airlight_parallelogram(s_45, a_28, x_27);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_43, a_28, x_27);
+            float _e6 = airlight_sphere(s_45, a_28, x_27);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_44, AirlightArea a_29, float theta) {
+float airlight_area_node(AirlightScene s_46, AirlightArea a_29, float theta) {
     vec2 _e3 = airlight_cos_sin(theta);
     float along = ((a_29.h_eff * _e3.y) / _e3.x);
     float t_12 = (a_29.x_h + along);
-    float fade = exp(min((-(s_44.sigma_t) * max(((a_29.x_h - s_44.t_min) + along), 0.0)), 0.0));
-    float _e33 = airlight_emitter_radiance(s_44, a_29, (s_44.origin + (t_12 * a_29.d)));
+    float fade = exp(min((-(s_46.sigma_t) * max(((a_29.x_h - s_46.t_min) + along), 0.0)), 0.0));
+    float _e33 = airlight_emitter_radiance(s_46, a_29, (s_46.origin + (t_12 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_45) {
+AirlightResult airlight_area_light(AirlightScene s_47) {
     AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
     float k_8 = 0.0;
     float gauss_1 = 0.0;
     uint j_9 = 0u;
-    bool local_188 = false;
-    AirlightArea _e1 = airlight_area(s_45);
+    bool local_193 = false;
+    AirlightArea _e1 = airlight_area(s_47);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -7991,21 +8098,21 @@ AirlightResult airlight_area_light(AirlightScene s_45) {
                 }
                 {
                     uint _e49 = j_9;
-                    vec3 node_2 = _e8[(_e49 / 2u)];
+                    vec3 node_3 = _e8[(_e49 / 2u)];
                     uint _e59 = j_9;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_9;
-                        local_188 = (_e66 < 14u);
+                        local_193 = (_e66 < 14u);
                     } else {
-                        local_188 = false;
+                        local_193 = false;
                     }
-                    bool _e70 = local_188;
-                    float x_36 = (_e70 ? (c_23 - (hw_7 * node_2.x)) : (c_23 + (hw_7 * node_2.x)));
-                    float _e72 = airlight_area_node(s_45, _e1, x_36);
+                    bool _e70 = local_193;
+                    float x_36 = (_e70 ? (c_23 - (hw_7 * node_3.x)) : (c_23 + (hw_7 * node_3.x)));
+                    float _e72 = airlight_area_node(s_47, _e1, x_36);
                     float _e73 = k_8;
-                    k_8 = (_e73 + (node_2.y * _e72));
+                    k_8 = (_e73 + (node_3.y * _e72));
                     float _e77 = gauss_1;
-                    gauss_1 = (_e77 + (node_2.z * _e72));
+                    gauss_1 = (_e77 + (node_3.z * _e72));
                 }
             }
             AirlightAdaptive _e84 = st_1;
@@ -8027,41 +8134,41 @@ AirlightResult airlight_area_light(AirlightScene s_45) {
     if (!(_e105)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    return AirlightResult((s_45.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_47.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_46) {
-    bool local_189 = false;
-    bool local_190 = false;
-    bool _e1 = airlight_valid(s_46);
+AirlightResult airlight_in_scatter_area(AirlightScene s_48) {
+    bool local_194 = false;
+    bool local_195 = false;
+    bool _e1 = airlight_valid(s_48);
     if (!(!(_e1))) {
-        local_189 = (s_46.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_194 = (s_48.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_189 = true;
+        local_194 = true;
     }
-    bool _e10 = local_189;
+    bool _e10 = local_194;
     if (!(_e10)) {
-        local_190 = (s_46.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_190 = true;
+        local_195 = true;
     }
-    bool _e18 = local_190;
+    bool _e18 = local_195;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_area_light(s_46);
+    AirlightResult _e22 = airlight_area_light(s_48);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_191 = false;
+    bool local_196 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_196 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_191 = true;
+        local_196 = true;
     }
-    bool _e11 = local_191;
+    bool _e11 = local_196;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -8070,17 +8177,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_3) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_192 = false;
+    bool local_197 = false;
     AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_8 = n_3.scene;
     bool _e7 = airlight_vec_finite(p_8.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_8.dir);
-        local_192 = _e11;
+        local_197 = _e11;
     } else {
-        local_192 = false;
+        local_197 = false;
     }
-    bool _e13 = local_192;
+    bool _e13 = local_197;
     if (_e13) {
         g_29 = n_3.canonical;
         if (!(n_3.exact)) {
@@ -8103,58 +8210,58 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
     return _e5;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_47) {
-    bool local_193 = false;
-    bool local_194 = false;
-    bool _e1 = airlight_valid(s_47);
+AirlightResult airlight_in_scatter_point(AirlightScene s_49) {
+    bool local_198 = false;
+    bool local_199 = false;
+    bool _e1 = airlight_valid(s_49);
     if (!(!(_e1))) {
-        local_193 = (s_47.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_198 = (s_49.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_193 = true;
+        local_198 = true;
     }
-    bool _e10 = local_193;
+    bool _e10 = local_198;
     if (!(_e10)) {
-        local_194 = (s_47.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_199 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_194 = true;
+        local_199 = true;
     }
-    bool _e18 = local_194;
+    bool _e18 = local_199;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_point_integral(s_47);
+    AirlightResult _e22 = airlight_point_integral(s_49);
     return _e22;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_48) {
-    bool local_195 = false;
-    bool local_196 = false;
-    bool _e1 = airlight_valid(s_48);
+AirlightResult airlight_in_scatter_route(AirlightScene s_50) {
+    bool local_200 = false;
+    bool local_201 = false;
+    bool _e1 = airlight_valid(s_50);
     if (!(!(_e1))) {
-        local_195 = (s_48.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_200 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_195 = true;
+        local_200 = true;
     }
-    bool _e10 = local_195;
+    bool _e10 = local_200;
     if (!(_e10)) {
-        local_196 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_201 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_196 = true;
+        local_201 = true;
     }
-    bool _e18 = local_196;
+    bool _e18 = local_201;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e22 = airlight_canonical(s_48);
-    AirlightCanonical _e23 = airlight_refined(s_48, _e22);
-    AirlightResult _e24 = airlight_limits(s_48, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_50);
+    AirlightCanonical _e23 = airlight_refined(s_50, _e22);
+    AirlightResult _e24 = airlight_limits(s_50, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_48);
+    bool _e29 = airlight_isotropic_scene(s_50);
     if (!(_e29)) {
-        vec2 _e31 = airlight_angle_route(s_48, _e23);
+        vec2 _e31 = airlight_angle_route(s_50, _e23);
         if ((_e31.x > 0.5)) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8163,23 +8270,23 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_48) {
     return AirlightResult(0.0, 3u);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_49) {
+AirlightResult airlight_in_scatter(AirlightScene s_51) {
     AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
     float k_9 = 0.0;
     float gauss_2 = 0.0;
     uint j_10 = 0u;
-    bool local_197 = false;
+    bool local_202 = false;
     float f = 0.0;
-    bool local_198 = false;
-    bool _e1 = airlight_valid(s_49);
+    bool local_203 = false;
+    bool _e1 = airlight_valid(s_51);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    if ((s_49.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_51.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e12 = airlight_outer(s_49);
+    AirlightOuter _e12 = airlight_outer(s_51);
     if ((_e12.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -8226,29 +8333,29 @@ AirlightResult airlight_in_scatter(AirlightScene s_49) {
                 }
                 {
                     uint _e64 = j_10;
-                    vec3 node_3 = _e25[(_e64 / 2u)];
+                    vec3 node_4 = _e25[(_e64 / 2u)];
                     uint _e74 = j_10;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_10;
-                        local_197 = (_e81 < 6u);
+                        local_202 = (_e81 < 6u);
                     } else {
-                        local_197 = false;
+                        local_202 = false;
                     }
-                    bool _e85 = local_197;
-                    float w_11 = (_e85 ? (c_24 - (hw_8 * node_3.x)) : (c_24 + (hw_8 * node_3.x)));
-                    AirlightNode _e87 = airlight_outer_node(s_49, _e12, w_11);
+                    bool _e85 = local_202;
+                    float w_11 = (_e85 ? (c_24 - (hw_8 * node_4.x)) : (c_24 + (hw_8 * node_4.x)));
+                    AirlightNode _e87 = airlight_outer_node(s_51, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
                             return _e93;
                         }
-                        if ((s_49.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_198 = (s_49.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_51.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_203 = (s_51.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_198 = false;
+                            local_203 = false;
                         }
-                        bool _e106 = local_198;
+                        bool _e106 = local_203;
                         if (_e106) {
                             return _e93;
                         }
@@ -8256,10 +8363,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_49) {
                     }
                     float _e110 = k_9;
                     float _e112 = f;
-                    k_9 = (_e110 + (node_3.y * _e112));
+                    k_9 = (_e110 + (node_4.y * _e112));
                     float _e115 = gauss_2;
                     float _e117 = f;
-                    gauss_2 = (_e115 + (node_3.z * _e117));
+                    gauss_2 = (_e115 + (node_4.z * _e117));
                 }
             }
             AirlightAdaptive _e123 = st_2;

@@ -208,6 +208,7 @@ const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
+const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
 
 @group(0) @binding(0) 
 var<storage> airlight_records: array<AirlightScene>;

@@ -285,6 +285,7 @@ const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
+const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
 
 fn airlight_zero_terms() -> array<f32, 12> {
     return array<f32, 12>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
@@ -448,10 +449,10 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
-    let z_14 = (x * x);
-    let c_8 = (1f + (z_14 * (-0.5f + (z_14 * (0.041666668f + (z_14 * (-0.0013888889f + (z_14 * (0.000024801588f + (z_14 * (-0.0000002755732f + (z_14 * (0.0000000020876756f + (z_14 * (-0.000000000011470745f + (z_14 * 0.000000000000047794773f))))))))))))))));
-    let s_50 = (1f + (z_14 * (-0.16666667f + (z_14 * (0.008333334f + (z_14 * (-0.0001984127f + (z_14 * (0.0000027557319f + (z_14 * (-0.000000025052108f + (z_14 * (0.00000000016059044f + (z_14 * (-0.00000000000076471636f + (z_14 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_50 * x));
+    let z_15 = (x * x);
+    let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
+    let s_52 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_52 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -476,11 +477,11 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_15 = (_e17 * _e18);
+    let z_16 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_15) - 0.13877685f) * z_15) + 0.19977711f) * z_15) - 0.3333295f) * z_15) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_16) - 0.13877685f) * z_16) + 0.19977711f) * z_16) - 0.3333295f) * z_16) * _e32) + _e34));
 }
 
 fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
@@ -508,10 +509,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_51 = (x_2 / (2f + x_2));
-    let z_16 = (s_51 * s_51);
-    let sum_14 = ((((((((((((((((z_16 / 17f) + 0.06666667f) * z_16) + 0.07692308f) * z_16) + 0.09090909f) * z_16) + 0.11111111f) * z_16) + 0.14285715f) * z_16) + 0.2f) * z_16) + 0.33333334f) * z_16) + 1f);
-    return ((2f * s_51) * sum_14);
+    let s_53 = (x_2 / (2f + x_2));
+    let z_17 = (s_53 * s_53);
+    let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
+    return ((2f * s_53) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1510,8 +1511,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
                 }
             }
             let _e55 = steps;
-            let top_1 = ((k0_ + _e55) + 2u);
-            odd = f32(((2u * top_1) + 1u));
+            let top_2 = ((k0_ + _e55) + 2u);
+            odd = f32(((2u * top_2) + 1u));
             loop {
                 let _e73 = i_4;
                 if (_e73 < 54u) {
@@ -1520,7 +1521,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
                 }
                 {
                     let _e76 = i_4;
-                    if ((_e76 + AIRLIGHT_TERMS) > top_1) {
+                    if ((_e76 + AIRLIGHT_TERMS) > top_2) {
                         break;
                     }
                     let _e79 = above;
@@ -2005,47 +2006,47 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
         return 1f;
     }
     let measured = sqrt((last / before));
-    let q_7 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_9 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if (q_7 < 1f) {
+    if (q_9 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_7) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_9) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_7) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_9) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_7) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_9) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_7) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_9) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_7) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_9) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_7) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_9) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_7) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_9) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_7) + abs(m_1[7])), true);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_9) + abs(m_1[7])), true);
         let _e133 = aliasing;
         let _e137 = aliasing;
-        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_7) + abs(m_1[8])), true);
+        aliasing = select((_e133 + abs(m_1[8])), ((_e137 * q_9) + abs(m_1[8])), true);
         let _e144 = aliasing;
         let _e148 = aliasing;
-        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_7) + abs(m_1[9])), true);
+        aliasing = select((_e144 + abs(m_1[9])), ((_e148 * q_9) + abs(m_1[9])), true);
         let _e155 = aliasing;
         let _e159 = aliasing;
-        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_7) + abs(m_1[10])), true);
+        aliasing = select((_e155 + abs(m_1[10])), ((_e159 * q_9) + abs(m_1[10])), true);
         let _e166 = aliasing;
         let _e170 = aliasing;
-        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_7) + abs(m_1[11])), false);
+        aliasing = select((_e166 + abs(m_1[11])), ((_e170 * q_9) + abs(m_1[11])), false);
         let _e177 = aliasing;
-        return min(((_e177 + (q_7 * truncation)) / m_1[0]), 1f);
+        return min(((_e177 + (q_9 * truncation)) / m_1[0]), 1f);
     }
     let _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -3482,12 +3483,12 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
         sb = -1f;
     }
     let _e47 = sb;
-    let q_8 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
-    if (q_8 != 0f) {
-        r1_ = (c_10 / q_8);
+    let q_10 = (-0.5f * (b_17 + (_e47 * sqrt(disc_1))));
+    if (q_10 != 0f) {
+        r1_ = (c_10 / q_10);
     }
     if (a_36 != 0f) {
-        r2_2 = (q_8 / a_36);
+        r2_2 = (q_10 / a_36);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -5432,9 +5433,9 @@ fn airlight_to_w(g_21: AirlightOuter, s_21: f32) -> f32 {
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
     let r_12 = (x_16 - 1.5707964f);
-    let z_17 = (r_12 * r_12);
-    let cos_r = (1f - ((z_17 / 2f) * (1f - ((z_17 / 12f) * (1f - ((z_17 / 30f) * (1f - ((z_17 / 56f) * (1f - ((z_17 / 90f) * (1f - ((z_17 / 132f) * (1f - (z_17 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_17 / 6f) * (1f - ((z_17 / 20f) * (1f - ((z_17 / 42f) * (1f - ((z_17 / 72f) * (1f - ((z_17 / 110f) * (1f - ((z_17 / 156f) * (1f - (z_17 / 210f)))))))))))))));
+    let z_18 = (r_12 * r_12);
+    let cos_r = (1f - ((z_18 / 2f) * (1f - ((z_18 / 12f) * (1f - ((z_18 / 30f) * (1f - ((z_18 / 56f) * (1f - ((z_18 / 90f) * (1f - ((z_18 / 132f) * (1f - (z_18 / 182f))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_18 / 6f) * (1f - ((z_18 / 20f) * (1f - ((z_18 / 42f) * (1f - ((z_18 / 72f) * (1f - ((z_18 / 110f) * (1f - ((z_18 / 156f) * (1f - (z_18 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
@@ -5829,11 +5830,11 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bo
         }
         {
             let _e29 = k_6;
-            let node_1 = _e21[_e29];
+            let node_2 = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_1.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1f - node_1.x), smoothstep_1);
-            sum_5 = (_e31 + (node_1.y * (_e34 + _e38)));
+            let _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_2.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1f - node_2.x), smoothstep_1);
+            sum_5 = (_e31 + (node_2.y * (_e34 + _e38)));
         }
         continuing {
             let _e43 = k_6;
@@ -5859,14 +5860,14 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_23.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_9 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    let q_11 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if (exponent_1 > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     let _e48 = reach;
     let _e51 = reach;
-    let s2_1 = select(1f, (_e48 / q_9.k), (_e51 < q_9.k));
+    let s2_1 = select(1f, (_e48 / q_11.k), (_e51 < q_11.k));
     let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
@@ -5895,7 +5896,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_9, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_11, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -6440,6 +6441,19 @@ fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
     return (s_28.intensity * _e154);
 }
 
+fn airlight_emission_scale(s_29: AirlightScene) -> f32 {
+    let p_3 = u32(s_29.light_param_b);
+    if (p_3 <= 1u) {
+        return 0f;
+    }
+    return (2f / sqrt(f32((p_3 - 1u))));
+}
+
+fn airlight_far_from_edge(s_30: AirlightScene, depth: f32, z_9: f32) -> bool {
+    let _e3 = airlight_emission_scale(s_30);
+    return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * select(1f, min(_e3, 1f), (_e3 > 0f))));
+}
+
 fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
     var local_166: bool;
 
@@ -6455,12 +6469,12 @@ fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
     return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
 }
 
-fn airlight_phase_lobes(s_29: AirlightScene) -> vec4<f32> {
+fn airlight_phase_lobes(s_31: AirlightScene) -> vec4<f32> {
     var first: vec2<f32> = vec2<f32>(1f, 0f);
     var second: vec2<f32> = vec2<f32>(1f, 0f);
 
-    let p0_5 = s_29.phase_param_a;
-    switch s_29.phase_kind {
+    let p0_5 = s_31.phase_param_a;
+    switch s_31.phase_kind {
         case 2u, 4u: {
             let _e11 = airlight_hg_gap(p0_5);
             let _e12 = airlight_lobe(p0_5, _e11);
@@ -6475,8 +6489,8 @@ fn airlight_phase_lobes(s_29: AirlightScene) -> vec4<f32> {
             let _e22 = airlight_hg_gap(p0_5);
             let _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            let _e26 = airlight_hg_gap(s_29.phase_param_b);
-            let _e27 = airlight_lobe(s_29.phase_param_b, _e26);
+            let _e26 = airlight_hg_gap(s_31.phase_param_b);
+            let _e27 = airlight_lobe(s_31.phase_param_b, _e26);
             second = _e27;
         }
         default: {
@@ -6519,7 +6533,7 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     return (select(-1f, 1f, (u_9 >= 0f)) * _e13);
 }
 
-fn airlight_area(s_30: AirlightScene) -> AirlightArea {
+fn airlight_area(s_32: AirlightScene) -> AirlightArea {
     var a_18: AirlightArea;
     var local_168: bool;
     var local_169: bool;
@@ -6543,17 +6557,17 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     var local_178: bool;
 
     let zero = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_30);
-    a_18 = AirlightArea(zero, s_30.light_position, zero, zero, zero, zero, zero, zero, s_30.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    if !((s_30.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-        if !((s_30.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-            local_169 = (s_30.phase_kind == AIRLIGHT_PHASE_SCHLICK);
+    let _e21 = airlight_phase_lobes(s_32);
+    a_18 = AirlightArea(zero, s_32.light_position, zero, zero, zero, zero, zero, zero, s_32.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    if !((s_32.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+        if !((s_32.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+            local_169 = (s_32.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
             local_169 = true;
         }
         let _e44 = local_169;
         if _e44 {
-            local_170 = (s_30.phase_param_a == 0f);
+            local_170 = (s_32.phase_param_a == 0f);
         } else {
             local_170 = false;
         }
@@ -6564,14 +6578,14 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     }
     let _e53 = local_168;
     if !(_e53) {
-        if (s_30.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
-            local_172 = (s_30.phase_param_a == 0f);
+        if (s_32.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
+            local_172 = (s_32.phase_param_a == 0f);
         } else {
             local_172 = false;
         }
         let _e66 = local_172;
         if _e66 {
-            local_173 = (s_30.phase_param_b == 0f);
+            local_173 = (s_32.phase_param_b == 0f);
         } else {
             local_173 = false;
         }
@@ -6582,8 +6596,8 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     }
     let _e75 = local_171;
     a_18.isotropic = _e75;
-    if !((s_30.intensity == 0f)) {
-        local_174 = (s_30.sigma_s == 0f);
+    if !((s_32.intensity == 0f)) {
+        local_174 = (s_32.sigma_s == 0f);
     } else {
         local_174 = true;
     }
@@ -6593,16 +6607,16 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         let _e89 = a_18;
         return _e89;
     }
-    let o_5 = s_30.origin;
-    let _e92 = airlight_normalize(s_30.dir);
+    let o_6 = s_32.origin;
+    let _e92 = airlight_normalize(s_32.dir);
     a_18.d = _e92;
-    let infinite_6 = ((s_30.flags & 1u) != 0u);
-    let t0_2 = s_30.t_min;
-    centre = s_30.light_position;
-    size = s_30.light_param_a;
-    if (s_30.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+    let infinite_6 = ((s_32.flags & 1u) != 0u);
+    let t0_2 = s_32.t_min;
+    centre = s_32.light_position;
+    size = s_32.light_param_a;
+    if (s_32.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e114 = a_18.c;
-        let oc = (o_5 - _e114);
+        let oc = (o_6 - _e114);
         let b_20 = dot(oc, _e92);
         let _e119 = a_18.radius;
         let _e121 = a_18.radius;
@@ -6610,21 +6624,21 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         let disc_2 = ((b_20 * b_20) - k_10);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_10 = (-(b_20) - select(root_2, -(root_2), ((bitcast<u32>(b_20) & 2147483648u) != 0u)));
-            cut0_ = q_10;
-            cut1_ = (k_10 / q_10);
+            let q_12 = (-(b_20) - select(root_2, -(root_2), ((bitcast<u32>(b_20) & 2147483648u) != 0u)));
+            cut0_ = q_12;
+            cut1_ = (k_10 / q_12);
             cut_count = 2u;
         }
     } else {
-        if (s_30.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e145 = airlight_normalize(s_30.light_axis);
+        if (s_32.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e145 = airlight_normalize(s_32.light_axis);
             a_18.n = _e145;
             let _e148 = a_18.n;
             let _e149 = airlight_basis_e1_(_e148);
             a_18.a1_ = _e149;
         } else {
-            a_18.eu = s_30.light_axis;
-            a_18.ev = s_30.light_end;
+            a_18.eu = s_32.light_axis;
+            a_18.ev = s_32.light_end;
             let _e156 = a_18.eu;
             let _e158 = a_18.ev;
             let _e160 = airlight_normalize(cross(_e156, _e158));
@@ -6653,7 +6667,7 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         let _e203 = a_18.c;
         let _e206 = a_18.n;
         let _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o_5), _e206) / dot(_e92, _e209));
+        cut0_ = (dot((_e203 - o_6), _e206) / dot(_e92, _e209));
         cut_count = 1u;
     }
     let _e213 = size;
@@ -6663,20 +6677,20 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
         return _e219;
     }
     let _e220 = centre;
-    let to_centre = (_e220 - o_5);
+    let to_centre = (_e220 - o_6);
     a_18.x_h = dot(to_centre, _e92);
     let _e225 = a_18.x_h;
     let _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
     let _e231 = size;
     let _e232 = size;
     a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
-    t_end_1 = s_30.t_max;
+    t_end_1 = s_32.t_max;
     end_infinite = infinite_6;
-    if (s_30.sigma_t > 0f) {
+    if (s_32.sigma_t > 0f) {
         let _e242 = centre;
-        let _e246 = airlight_safe_length((_e242 - (o_5 + (t0_2 * _e92))));
+        let _e246 = airlight_safe_length((_e242 - (o_6 + (t0_2 * _e92))));
         let _e248 = size;
-        let reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385f / s_30.sigma_t));
+        let reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385f / s_32.sigma_t));
         if !(infinite_6) {
             let _e257 = t_end_1;
             local_175 = (reach_1 < _e257);
@@ -6755,143 +6769,197 @@ fn airlight_area(s_30: AirlightScene) -> AirlightArea {
     return _e329;
 }
 
-fn airlight_above(z_9: f32, off: vec2<f32>) -> AirlightAbove {
-    return AirlightAbove(z_9, off, sqrt((((z_9 * z_9) + (off.x * off.x)) + (off.y * off.y))));
+fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
+    return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_31: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, g_26: f32) -> f32 {
-    let _e5 = airlight_cos_sin_half_turn(g_26);
-    let r_13 = ((above_1.rho0_ * _e5.y) / _e5.x);
-    let dr = (above_1.rho0_ / (_e5.x * _e5.x));
-    let p_3 = (above_1.off + (r_13 * e_3));
-    let z_18 = above_1.z;
-    let dist = sqrt((((z_18 * z_18) + (p_3.x * p_3.x)) + (p_3.y * p_3.y)));
+fn airlight_flat_node(s_33: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded: f32, node: f32) -> f32 {
+    var g_26: f32;
+    var jacobian_1: f32 = 1f;
+
+    g_26 = node;
+    if (graded > 0f) {
+        let _e11 = airlight_cos_sin_half_turn(node);
+        g_26 = ((graded * _e11.y) / _e11.x);
+        jacobian_1 = (graded / (_e11.x * _e11.x));
+    }
+    let _e20 = g_26;
+    let _e21 = airlight_cos_sin_half_turn(_e20);
+    let r_13 = ((above_1.rho0_ * _e21.y) / _e21.x);
+    let dr = (above_1.rho0_ / (_e21.x * _e21.x));
+    let p_4 = (above_1.off + (r_13 * e_3));
+    let z_19 = above_1.z;
+    let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
-    let cos_ = (z_18 * inv_5);
-    let _e47 = airlight_area_phase(s_31, ((((p_3.x * a_19.dirs.x) + (p_3.y * a_19.dirs.y)) - (z_18 * a_19.dirs.z)) * inv_5));
-    let _e48 = airlight_emitted(s_31, cos_);
-    return (((((((_e48 * exp(min((-(s_31.sigma_t) * dist), 0f))) * _e47) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    let cos_ = (z_19 * inv_5);
+    let _e63 = airlight_area_phase(s_33, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    let _e64 = jacobian_1;
+    let _e65 = airlight_emitted(s_33, cos_);
+    return ((((((((_e64 * _e65) * exp(min((-(s_33.sigma_t) * dist), 0f))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_32: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_34: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+    var top: f32;
+    var graded_1: f32;
+    var local_179: bool;
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    let c_16 = (0.5f * _e7);
-    let hw_2 = (0.5f * _e7);
-    let _e14 = sum_7;
-    let _e20 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.09501251f * hw_2)));
-    sum_7 = (_e14 + ((0.1894506f * hw_2) * _e20));
-    let _e23 = sum_7;
-    let _e29 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.09501251f * hw_2)));
-    sum_7 = (_e23 + ((0.1894506f * hw_2) * _e29));
-    let _e32 = sum_7;
-    let _e38 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.28160354f * hw_2)));
-    sum_7 = (_e32 + ((0.18260342f * hw_2) * _e38));
-    let _e41 = sum_7;
-    let _e47 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.28160354f * hw_2)));
-    sum_7 = (_e41 + ((0.18260342f * hw_2) * _e47));
-    let _e50 = sum_7;
-    let _e56 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.45801678f * hw_2)));
-    sum_7 = (_e50 + ((0.16915652f * hw_2) * _e56));
-    let _e59 = sum_7;
-    let _e65 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.45801678f * hw_2)));
-    sum_7 = (_e59 + ((0.16915652f * hw_2) * _e65));
-    let _e68 = sum_7;
-    let _e74 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.61787623f * hw_2)));
-    sum_7 = (_e68 + ((0.14959599f * hw_2) * _e74));
-    let _e77 = sum_7;
-    let _e83 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.61787623f * hw_2)));
-    sum_7 = (_e77 + ((0.14959599f * hw_2) * _e83));
-    let _e86 = sum_7;
-    let _e92 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.7554044f * hw_2)));
-    sum_7 = (_e86 + ((0.12462897f * hw_2) * _e92));
-    let _e95 = sum_7;
-    let _e101 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.7554044f * hw_2)));
-    sum_7 = (_e95 + ((0.12462897f * hw_2) * _e101));
+    top = _e7;
+    let _e9 = airlight_emission_scale(s_34);
+    graded_1 = _e9;
+    let _e11 = graded_1;
+    if (_e11 > 0f) {
+        let _e16 = graded_1;
+        let _e17 = top;
+        local_179 = (_e16 < _e17);
+    } else {
+        local_179 = false;
+    }
+    let _e20 = local_179;
+    if _e20 {
+        let _e21 = top;
+        let _e22 = graded_1;
+        let _e24 = airlight_atan((_e21 / _e22));
+        top = _e24;
+    } else {
+        graded_1 = 0f;
+    }
+    let _e26 = top;
+    let c_16 = (0.5f * _e26);
+    let _e29 = top;
+    let hw_2 = (0.5f * _e29);
+    let _e34 = sum_7;
+    let _e37 = graded_1;
+    let _e41 = airlight_flat_node(s_34, a_20, above_2, e_4, _e37, (c_16 - (0.09501251f * hw_2)));
+    sum_7 = (_e34 + ((0.1894506f * hw_2) * _e41));
+    let _e44 = sum_7;
+    let _e47 = graded_1;
+    let _e51 = airlight_flat_node(s_34, a_20, above_2, e_4, _e47, (c_16 + (0.09501251f * hw_2)));
+    sum_7 = (_e44 + ((0.1894506f * hw_2) * _e51));
+    let _e54 = sum_7;
+    let _e57 = graded_1;
+    let _e61 = airlight_flat_node(s_34, a_20, above_2, e_4, _e57, (c_16 - (0.28160354f * hw_2)));
+    sum_7 = (_e54 + ((0.18260342f * hw_2) * _e61));
+    let _e64 = sum_7;
+    let _e67 = graded_1;
+    let _e71 = airlight_flat_node(s_34, a_20, above_2, e_4, _e67, (c_16 + (0.28160354f * hw_2)));
+    sum_7 = (_e64 + ((0.18260342f * hw_2) * _e71));
+    let _e74 = sum_7;
+    let _e77 = graded_1;
+    let _e81 = airlight_flat_node(s_34, a_20, above_2, e_4, _e77, (c_16 - (0.45801678f * hw_2)));
+    sum_7 = (_e74 + ((0.16915652f * hw_2) * _e81));
+    let _e84 = sum_7;
+    let _e87 = graded_1;
+    let _e91 = airlight_flat_node(s_34, a_20, above_2, e_4, _e87, (c_16 + (0.45801678f * hw_2)));
+    sum_7 = (_e84 + ((0.16915652f * hw_2) * _e91));
+    let _e94 = sum_7;
+    let _e97 = graded_1;
+    let _e101 = airlight_flat_node(s_34, a_20, above_2, e_4, _e97, (c_16 - (0.61787623f * hw_2)));
+    sum_7 = (_e94 + ((0.14959599f * hw_2) * _e101));
     let _e104 = sum_7;
-    let _e110 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.8656312f * hw_2)));
-    sum_7 = (_e104 + ((0.09515851f * hw_2) * _e110));
-    let _e113 = sum_7;
-    let _e119 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.8656312f * hw_2)));
-    sum_7 = (_e113 + ((0.09515851f * hw_2) * _e119));
-    let _e122 = sum_7;
-    let _e128 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.944575f * hw_2)));
-    sum_7 = (_e122 + ((0.062253524f * hw_2) * _e128));
-    let _e131 = sum_7;
-    let _e137 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.944575f * hw_2)));
-    sum_7 = (_e131 + ((0.062253524f * hw_2) * _e137));
-    let _e140 = sum_7;
-    let _e146 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 - (0.9894009f * hw_2)));
-    sum_7 = (_e140 + ((0.02715246f * hw_2) * _e146));
-    let _e149 = sum_7;
-    let _e155 = airlight_flat_node(s_32, a_20, above_2, e_4, (c_16 + (0.9894009f * hw_2)));
-    sum_7 = (_e149 + ((0.02715246f * hw_2) * _e155));
-    let _e158 = sum_7;
-    return _e158;
+    let _e107 = graded_1;
+    let _e111 = airlight_flat_node(s_34, a_20, above_2, e_4, _e107, (c_16 + (0.61787623f * hw_2)));
+    sum_7 = (_e104 + ((0.14959599f * hw_2) * _e111));
+    let _e114 = sum_7;
+    let _e117 = graded_1;
+    let _e121 = airlight_flat_node(s_34, a_20, above_2, e_4, _e117, (c_16 - (0.7554044f * hw_2)));
+    sum_7 = (_e114 + ((0.12462897f * hw_2) * _e121));
+    let _e124 = sum_7;
+    let _e127 = graded_1;
+    let _e131 = airlight_flat_node(s_34, a_20, above_2, e_4, _e127, (c_16 + (0.7554044f * hw_2)));
+    sum_7 = (_e124 + ((0.12462897f * hw_2) * _e131));
+    let _e134 = sum_7;
+    let _e137 = graded_1;
+    let _e141 = airlight_flat_node(s_34, a_20, above_2, e_4, _e137, (c_16 - (0.8656312f * hw_2)));
+    sum_7 = (_e134 + ((0.09515851f * hw_2) * _e141));
+    let _e144 = sum_7;
+    let _e147 = graded_1;
+    let _e151 = airlight_flat_node(s_34, a_20, above_2, e_4, _e147, (c_16 + (0.8656312f * hw_2)));
+    sum_7 = (_e144 + ((0.09515851f * hw_2) * _e151));
+    let _e154 = sum_7;
+    let _e157 = graded_1;
+    let _e161 = airlight_flat_node(s_34, a_20, above_2, e_4, _e157, (c_16 - (0.944575f * hw_2)));
+    sum_7 = (_e154 + ((0.062253524f * hw_2) * _e161));
+    let _e164 = sum_7;
+    let _e167 = graded_1;
+    let _e171 = airlight_flat_node(s_34, a_20, above_2, e_4, _e167, (c_16 + (0.944575f * hw_2)));
+    sum_7 = (_e164 + ((0.062253524f * hw_2) * _e171));
+    let _e174 = sum_7;
+    let _e177 = graded_1;
+    let _e181 = airlight_flat_node(s_34, a_20, above_2, e_4, _e177, (c_16 - (0.9894009f * hw_2)));
+    sum_7 = (_e174 + ((0.02715246f * hw_2) * _e181));
+    let _e184 = sum_7;
+    let _e187 = graded_1;
+    let _e191 = airlight_flat_node(s_34, a_20, above_2, e_4, _e187, (c_16 + (0.9894009f * hw_2)));
+    sum_7 = (_e184 + ((0.02715246f * hw_2) * _e191));
+    let _e194 = sum_7;
+    return _e194;
 }
 
-fn airlight_outline_nearest(o: AirlightOutline, q_4: vec2<f32>) -> vec2<f32> {
+fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
     var best: f32 = AIRLIGHT_FLT_MAX;
     var nearest: vec2<f32>;
     var inside: bool = true;
     var i_28: u32 = 0u;
-    var local_179: bool;
+    var local_180: bool;
 
     if (o.radius > 0f) {
         let qc = (q_4 - o.corners[0]);
         let dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
-        if (dq <= o.radius) {
-            return q_4;
-        }
-        return (o.corners[0] + ((qc * o.radius) / vec2(dq)));
+        return vec3<f32>((o.corners[0] + ((qc * o.radius) / vec2(dq))), select(0f, 1f, (dq <= o.radius)));
     }
     nearest = q_4;
     loop {
-        let _e32 = i_28;
-        if (_e32 < 4u) {
+        let _e36 = i_28;
+        if (_e36 < 4u) {
         } else {
             break;
         }
         {
-            let _e36 = i_28;
-            let a_43 = o.corners[_e36];
-            let _e39 = i_28;
-            let e_14 = (o.corners[((_e39 + 1u) % 4u)] - a_43);
-            let _e46 = inside;
-            if _e46 {
-                local_179 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0f);
+            let _e40 = i_28;
+            let a_43 = o.corners[_e40];
+            let _e43 = i_28;
+            let e_14 = (o.corners[((_e43 + 1u) % 4u)] - a_43);
+            let _e50 = inside;
+            if _e50 {
+                local_180 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0f);
             } else {
-                local_179 = false;
+                local_180 = false;
             }
-            let _e63 = local_179;
-            inside = _e63;
+            let _e67 = local_180;
+            inside = _e67;
             let t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0f, 1f);
-            let p_4 = (a_43 + (t_10 * e_14));
-            let dd = (((p_4.x - q_4.x) * (p_4.x - q_4.x)) + ((p_4.y - q_4.y) * (p_4.y - q_4.y)));
-            let _e103 = best;
-            if (dd < _e103) {
+            let p_5 = (a_43 + (t_10 * e_14));
+            let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
+            let _e107 = best;
+            if (dd < _e107) {
                 best = dd;
-                nearest = p_4;
+                nearest = p_5;
             }
         }
         continuing {
-            let _e106 = i_28;
-            i_28 = (_e106 + 1u);
+            let _e110 = i_28;
+            i_28 = (_e110 + 1u);
         }
     }
-    let _e108 = nearest;
-    let _e109 = inside;
-    return select(_e108, q_4, _e109);
+    let _e112 = nearest;
+    let _e113 = inside;
+    return vec3<f32>(_e112, select(0f, 1f, _e113));
 }
 
-fn airlight_flat_lobe(a_21: AirlightArea, z_10: f32, o_1: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
+fn airlight_outline_nearest(o_1: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
+    let _e2 = airlight_outline_boundary(o_1, q_5);
+    return select(_e2.xy, q_5, (_e2.z > 0f));
+}
+
+fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_5: u32 = 0u;
-    var local_180: bool;
     var local_181: bool;
     var local_182: bool;
+    var local_183: bool;
 
-    let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_10 * z_10)))));
+    let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
         let _e13 = j_5;
         if (_e13 < 2u) {
@@ -6901,34 +6969,34 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_10: f32, o_1: AirlightOutline, centr
         {
             let _e20 = j_5;
             let lobe_4 = select(a_21.lobes.xy, a_21.lobes.zw, (_e20 == 1u));
-            let p_5 = (lobe_4.x * a_21.dirs);
+            let p_6 = (lobe_4.x * a_21.dirs);
             if (lobe_4.y > 0f) {
-                local_180 = (p_5.z < 0f);
-            } else {
-                local_180 = false;
-            }
-            let _e36 = local_180;
-            if _e36 {
-                local_181 = (lobe_4.y < (_e10 + _e10));
+                local_181 = (p_6.z < 0f);
             } else {
                 local_181 = false;
             }
-            let _e43 = local_181;
+            let _e36 = local_181;
+            if _e36 {
+                local_182 = (lobe_4.y < (_e10 + _e10));
+            } else {
+                local_182 = false;
+            }
+            let _e43 = local_182;
             if _e43 {
-                let l_4 = (z_10 / -(p_5.z));
-                let q_11 = (l_4 * p_5.xy);
-                let _e49 = airlight_outline_nearest(o_1, q_11);
-                let to_near = vec3<f32>(_e49, -(z_10));
-                let cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1f);
-                if !(all((_e49 == q_11))) {
+                let l_4 = (z_11 / -(p_6.z));
+                let q_13 = (l_4 * p_6.xy);
+                let _e49 = airlight_outline_nearest(o_2, q_13);
+                let to_near = vec3<f32>(_e49, -(z_11));
+                let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
+                if !(all((_e49 == q_13))) {
                     let _e63 = airlight_acos(cos_1);
-                    local_182 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_183 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_182 = true;
+                    local_183 = true;
                 }
-                let _e69 = local_182;
+                let _e69 = local_183;
                 if _e69 {
-                    return AirlightFlatLobe(p_5, lobe_4.x, lobe_4.y, l_4, q_11);
+                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13);
                 }
             }
         }
@@ -6940,9 +7008,9 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_10: f32, o_1: AirlightOutline, centr
     return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f));
 }
 
-fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_5: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
+fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
     let m_11 = vec2<f32>((b_13.y - a_22.y), (a_22.x - b_13.x));
-    let num = (((q_5.x - a_22.x) * m_11.x) + ((q_5.y - a_22.y) * m_11.y));
+    let num = (((q_6.x - a_22.x) * m_11.x) + ((q_6.y - a_22.y) * m_11.y));
     let den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
     if (den > 0f) {
         return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
@@ -6956,15 +7024,15 @@ fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_5: vec2<f
     return chord;
 }
 
-fn airlight_outline_chord(o_2: AirlightOutline, q_6: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
+fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
     var chord_1: vec2<f32> = vec2<f32>(0f, 340282350000000000000000000000000000000f);
 
-    if (o_2.radius > 0f) {
-        let qc_1 = (q_6 - o_2.corners[0]);
+    if (o_3.radius > 0f) {
+        let qc_1 = (q_7 - o_3.corners[0]);
         let a_44 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         let b_21 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_11 = ((dq_1 - o_2.radius) * (dq_1 + o_2.radius));
+        let k_11 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
         let disc_3 = ((b_21 * b_21) - (a_44 * k_11));
         if !((disc_3 > 0f)) {
             return vec2(0f);
@@ -6980,93 +7048,93 @@ fn airlight_outline_chord(o_2: AirlightOutline, q_6: vec2<f32>, e_6: vec2<f32>) 
         return vec2<f32>(max(min(r1_2, r2_3), 0f), hi_8);
     }
     let _e70 = chord_1;
-    let _e75 = airlight_clip(_e70, o_2.corners[0], o_2.corners[1], q_6, e_6);
+    let _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
     chord_1 = _e75;
     let _e76 = chord_1;
-    let _e81 = airlight_clip(_e76, o_2.corners[1], o_2.corners[2], q_6, e_6);
+    let _e81 = airlight_clip(_e76, o_3.corners[1], o_3.corners[2], q_7, e_6);
     chord_1 = _e81;
     let _e82 = chord_1;
-    let _e87 = airlight_clip(_e82, o_2.corners[2], o_2.corners[3], q_6, e_6);
+    let _e87 = airlight_clip(_e82, o_3.corners[2], o_3.corners[3], q_7, e_6);
     chord_1 = _e87;
     let _e88 = chord_1;
-    let _e93 = airlight_clip(_e88, o_2.corners[3], o_2.corners[0], q_6, e_6);
+    let _e93 = airlight_clip(_e88, o_3.corners[3], o_3.corners[0], q_7, e_6);
     return _e93;
 }
 
-fn airlight_flat_lobe_node(s_33: AirlightScene, z_11: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded: f32, g_27: f32) -> f32 {
+fn airlight_flat_lobe_node(s_35: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
     let _e7 = airlight_cos_sin_half_turn(g_27);
-    let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded * _e7.y) / _e7.x)));
+    let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
     let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
     if !((c_17 > 0f)) {
         return 0f;
     }
-    let _e26 = airlight_emitted(s_33, c_17);
-    let _e38 = airlight_area_phase(s_33, (lobe_1.sign * _e13.x));
-    return (((((_e26 * exp(min(((-(s_33.sigma_t) * z_11) / c_17), 0f))) * _e38) * _e13.y) * graded) / (_e7.x * _e7.x));
+    let _e26 = airlight_emitted(s_35, c_17);
+    let _e38 = airlight_area_phase(s_35, (lobe_1.sign * _e13.x));
+    return (((((_e26 * exp(min(((-(s_35.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-fn airlight_flat_lobe_along(s_34: AirlightScene, z_12: f32, o_3: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_36: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
     let w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
     let k_12 = (w_10.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_3, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
+    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
     let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
     let _e40 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
-    let graded_4 = max(lobe_2.scale, _e34);
-    let _e45 = airlight_atan(((_e40 - _e34) / graded_4));
+    let graded_6 = max(lobe_2.scale, _e34);
+    let _e45 = airlight_atan(((_e40 - _e34) / graded_6));
     let c_18 = (0.5f * _e45);
     let hw_3 = (0.5f * _e45);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_34, z_12, lobe_2, k_12, _e34, graded_4, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -7094,7 +7162,7 @@ fn airlight_sort4_(x_23: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var i_29: u32 = 0u;
     var i_30: u32 = 0u;
@@ -7104,11 +7172,11 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
 
     let _e5 = airlight_basis_e1_(lobe_3.p);
     let v_9 = cross(lobe_3.p, _e5);
-    let q_12 = lobe_3.q;
-    if (o_4.radius > 0f) {
-        let d_5 = (o_4.corners[0] - q_12);
+    let q_14 = lobe_3.q;
+    if (o_5.radius > 0f) {
+        let d_5 = (o_5.corners[0] - q_14);
         let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        if (dq_2 <= o_4.radius) {
+        if (dq_2 <= o_5.radius) {
             loop {
                 let _e29 = i_29;
                 if (_e29 < 32u) {
@@ -7119,7 +7187,7 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
                     let _e33 = i_29;
                     let _e34 = airlight_azimuths(true, _e33);
                     let _e35 = sum_9;
-                    let _e38 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e34.xy);
+                    let _e38 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
                     sum_9 = (_e35 + (_e34.z * _e38));
                 }
                 continuing {
@@ -7130,8 +7198,8 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
             let _e44 = sum_9;
             return _e44;
         }
-        let sb_1 = (o_4.radius / dq_2);
-        let cb = (sqrt(((dq_2 - o_4.radius) * (dq_2 + o_4.radius))) / dq_2);
+        let sb_1 = (o_5.radius / dq_2);
+        let cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
         let _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
         let _e66 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
         let _e68 = airlight_wrap_turn((_e66 - _e54));
@@ -7150,7 +7218,7 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
                 let _e98 = airlight_azimuths(false, _e97);
                 let _e99 = sum_9;
                 let _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
-                let _e108 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e107);
+                let _e108 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e107);
                 sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
             }
             continuing {
@@ -7161,22 +7229,22 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
         let _e114 = sum_9;
         return _e114;
     }
-    let _e115 = airlight_outline_nearest(o_4, q_12);
-    let inside_2 = all((_e115 == q_12));
+    let _e115 = airlight_outline_nearest(o_5, q_14);
+    let inside_2 = all((_e115 == q_14));
     if !(inside_2) {
-        let _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_4.corners[0] + o_4.corners[2])) - q_12));
+        let _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
         mid = _e129;
     }
-    let _e133 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[0] - q_12));
+    let _e133 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
     let _e134 = mid;
     let _e136 = airlight_wrap_turn((_e133 - _e134));
-    let _e140 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[1] - q_12));
+    let _e140 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
     let _e141 = mid;
     let _e143 = airlight_wrap_turn((_e140 - _e141));
-    let _e147 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[2] - q_12));
+    let _e147 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
     let _e148 = mid;
     let _e150 = airlight_wrap_turn((_e147 - _e148));
-    let _e154 = airlight_lobe_azimuth(_e5, v_9, (o_4.corners[3] - q_12));
+    let _e154 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
     let _e155 = mid;
     let _e157 = airlight_wrap_turn((_e154 - _e155));
     let _e159 = airlight_sort4_(vec4<f32>(_e136, _e143, _e150, _e157));
@@ -7209,7 +7277,7 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
                     let _e198 = airlight_triangle_rule(_e197);
                     let _e199 = sum_9;
                     let _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                    let _e206 = airlight_flat_lobe_along(s_35, z_13, o_4, lobe_3, _e5, v_9, _e205);
+                    let _e206 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e205);
                     sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
                 }
                 continuing {
@@ -7227,7 +7295,9 @@ fn airlight_flat_about_lobe(s_35: AirlightScene, z_13: f32, o_4: AirlightOutline
     return _e215;
 }
 
-fn airlight_disc(s_36: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+fn airlight_disc(s_38: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+    var local_184: bool;
+    var local_185: bool;
     var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
@@ -7236,8 +7306,8 @@ fn airlight_disc(s_36: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     var r_max_1: f32;
 
     let rel = (x_24 - a_23.c);
-    let z_19 = dot(rel, a_23.n);
-    if !((z_19 > 0f)) {
+    let z_20 = dot(rel, a_23.n);
+    if !((z_20 > 0f)) {
         return 0f;
     }
     let fx = dot(rel, a_23.a1_);
@@ -7246,66 +7316,80 @@ fn airlight_disc(s_36: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     let radius_2 = a_23.radius;
     let zero_1 = vec2(0f);
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    let _e30 = airlight_flat_lobe(a_23, z_19, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let _e30 = airlight_flat_lobe(a_23, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_36, z_19, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_38, z_20, outline, _e30);
         return _e34;
     }
-    let inside_3 = (rf <= radius_2);
-    let _e41 = airlight_above(z_19, vec2(0f));
-    above_3 = _e41;
+    if (rf <= radius_2) {
+        if !((rf == 0f)) {
+            let _e44 = airlight_far_from_edge(s_38, (radius_2 - rf), z_20);
+            local_185 = _e44;
+        } else {
+            local_185 = true;
+        }
+        let _e46 = local_185;
+        local_184 = _e46;
+    } else {
+        local_184 = false;
+    }
+    let inside_3 = local_184;
+    let _e54 = airlight_above(z_20, vec2(0f));
+    above_3 = _e54;
     if !(inside_3) {
         u_6 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
-        let _e50 = u_6;
-        let _e52 = airlight_above(z_19, ((rf - radius_2) * _e50));
-        above_3 = _e52;
+        let _e63 = u_6;
+        let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
+        above_3 = _e65;
     }
     let k_13 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e60 = i_32;
-        if (_e60 < 32u) {
+        let _e73 = i_32;
+        if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e63 = i_32;
-            let _e64 = airlight_azimuths(inside_3, _e63);
-            let _e67 = u_6.x;
-            let _e71 = u_6.y;
-            let _e76 = u_6.y;
+            let _e76 = i_32;
+            let _e77 = airlight_azimuths(inside_3, _e76);
             let _e80 = u_6.x;
-            e_8 = vec2<f32>(((_e64.x * _e67) - (_e64.y * _e71)), ((_e64.x * _e76) + (_e64.y * _e80)));
-            r_max_1 = ((radius_2 + radius_2) * _e64.x);
+            let _e84 = u_6.y;
+            let _e89 = u_6.y;
+            let _e93 = u_6.x;
+            e_8 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_3 {
-                e_8 = _e64.xy;
-                let b_23 = ((fx * _e64.x) + (fy_1 * _e64.y));
+                e_8 = _e77.xy;
+                let b_23 = ((fx * _e77.x) + (fy_1 * _e77.y));
                 let root_4 = sqrt(((b_23 * b_23) - k_13));
                 r_max_1 = select((root_4 - b_23), (-(k_13) / (b_23 + root_4)), (b_23 > 0f));
             }
-            let _e105 = sum_10;
-            let _e107 = above_3;
-            let _e108 = e_8;
-            let _e109 = r_max_1;
-            let _e110 = airlight_flat_radial(s_36, a_23, _e107, _e108, _e109);
-            sum_10 = (_e105 + (_e64.z * _e110));
+            let _e118 = sum_10;
+            let _e120 = above_3;
+            let _e121 = e_8;
+            let _e122 = r_max_1;
+            let _e123 = airlight_flat_radial(s_38, a_23, _e120, _e121, _e122);
+            sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e114 = i_32;
-            i_32 = (_e114 + 1u);
+            let _e127 = i_32;
+            i_32 = (_e127 + 1u);
         }
     }
-    let _e116 = sum_10;
-    return _e116;
+    let _e129 = sum_10;
+    return _e129;
 }
 
-fn airlight_parallelogram(s_37: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_39: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+    var q_8: vec2<f32>;
+    var local_186: bool;
     var sum_11: f32 = 0f;
     var i_33: u32 = 0u;
     var j_7: u32;
 
     let rel_1 = (x_25 - a_24.c);
-    let z_20 = dot(rel_1, a_24.n);
-    if !((z_20 > 0f)) {
+    let z_21 = dot(rel_1, a_24.n);
+    if !((z_21 > 0f)) {
         return 0f;
     }
     let foot = vec2<f32>(dot(rel_1, a_24.a1_), dot(rel_1, a_24.a2_));
@@ -7315,26 +7399,39 @@ fn airlight_parallelogram(s_37: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    let _e69 = airlight_flat_lobe(a_24, z_20, about_foot, ((0.5f * corners[2]) - foot), size_2);
+    let _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_37, z_20, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_39, z_21, about_foot, _e69);
         return _e73;
     }
-    let _e76 = airlight_outline_nearest(about_foot, vec2(0f));
-    let q_13 = (_e76 + foot);
-    let _e79 = airlight_above(z_20, (q_13 - foot));
+    let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
+    q_8 = (_e76.xy + foot);
+    if (_e76.z > 0f) {
+        let _e89 = airlight_far_from_edge(s_39, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_186 = _e89;
+    } else {
+        local_186 = false;
+    }
+    let _e91 = local_186;
+    if _e91 {
+        q_8 = foot;
+    }
+    let _e92 = q_8;
+    let _e94 = airlight_above(z_21, (_e92 - foot));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     loop {
-        let _e87 = i_33;
-        if (_e87 < 4u) {
+        let _e102 = i_33;
+        if (_e102 < 4u) {
         } else {
             break;
         }
         {
-            let _e90 = i_33;
-            let ca = (corners[_e90] - q_13);
-            let _e93 = i_33;
-            let cb_1 = (corners[(_e93 + 1u)] - q_13);
+            let _e105 = i_33;
+            let _e107 = q_8;
+            let ca = (corners[_e105] - _e107);
+            let _e109 = i_33;
+            let _e113 = q_8;
+            let cb_1 = (corners[(_e109 + 1u)] - _e113);
             let area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
             if !((area > thin)) {
                 continue;
@@ -7343,49 +7440,49 @@ fn airlight_parallelogram(s_37: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
             let el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
             let h_9 = (area / el);
             let m_12 = vec2<f32>((e_15.y / el), (-(e_15.x) / el));
-            let _e130 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
+            let _e147 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
             let start_4 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
             j_7 = 0u;
             loop {
-                let _e143 = j_7;
-                if (_e143 < 12u) {
+                let _e160 = j_7;
+                if (_e160 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e146 = j_7;
-                    let _e147 = airlight_triangle_rule(_e146);
-                    let _e154 = airlight_cos_sin_half_turn(((0.5f * _e130) * (1f + _e147.x)));
-                    let dir_3 = vec2<f32>(((_e154.x * start_4.x) - (_e154.y * start_4.y)), ((_e154.y * start_4.x) + (_e154.x * start_4.y)));
-                    let _e170 = sum_11;
-                    let _e183 = airlight_flat_radial(s_37, a_24, _e79, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
-                    sum_11 = (_e170 + (((_e147.y * 0.5f) * _e130) * _e183));
+                    let _e163 = j_7;
+                    let _e164 = airlight_triangle_rule(_e163);
+                    let _e171 = airlight_cos_sin_half_turn(((0.5f * _e147) * (1f + _e164.x)));
+                    let dir_3 = vec2<f32>(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
+                    let _e187 = sum_11;
+                    let _e200 = airlight_flat_radial(s_39, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    sum_11 = (_e187 + (((_e164.y * 0.5f) * _e147) * _e200));
                 }
                 continuing {
-                    let _e187 = j_7;
-                    j_7 = (_e187 + 1u);
+                    let _e204 = j_7;
+                    j_7 = (_e204 + 1u);
                 }
             }
         }
         continuing {
-            let _e190 = i_33;
-            i_33 = (_e190 + 1u);
+            let _e207 = i_33;
+            i_33 = (_e207 + 1u);
         }
     }
-    let _e192 = sum_11;
-    return _e192;
+    let _e209 = sum_11;
+    return _e209;
 }
 
-fn airlight_cap_row(s_38: AirlightScene, cap: AirlightCap, graded_1: f32, node: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_40: AirlightScene, cap: AirlightCap, graded_3: f32, node_1: f32, weight_1: f32) -> vec3<f32> {
     var phi: f32;
     var w_2: f32;
 
-    phi = node;
+    phi = node_1;
     w_2 = weight_1;
-    if (graded_1 > 0f) {
-        let _e9 = airlight_cos_sin_half_turn(node);
-        phi = ((graded_1 * _e9.y) / _e9.x);
-        w_2 = ((weight_1 * graded_1) / (_e9.x * _e9.x));
+    if (graded_3 > 0f) {
+        let _e9 = airlight_cos_sin_half_turn(node_1);
+        phi = ((graded_3 * _e9.y) / _e9.x);
+        w_2 = ((weight_1 * graded_3) / (_e9.x * _e9.x));
     }
     let _e19 = phi;
     let _e20 = airlight_cos_sin_half_turn(_e19);
@@ -7393,14 +7490,15 @@ fn airlight_cap_row(s_38: AirlightScene, cap: AirlightCap, graded_1: f32, node: 
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0f);
     let _e38 = w_2;
-    let _e40 = airlight_emitted(s_38, _e20.x);
-    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_38.sigma_t) * dist_1), 0f)));
+    let _e40 = airlight_emitted(s_40, _e20.x);
+    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_40.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_39: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
-    var graded_2: f32 = 0f;
-    var top: f32 = 1.5707964f;
+fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
+    var graded_4: f32;
+    var top_1: f32 = 1.5707964f;
+    var local_187: bool;
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
     var i_34: u32 = 0u;
@@ -7411,69 +7509,79 @@ fn airlight_sphere_cap(s_39: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let ad = dot(cap_1.a, a_25.d);
     let e1d = dot(_e4, a_25.d);
     let e2d = dot(e2_2, a_25.d);
-    let p_6 = u32(s_39.light_param_b);
-    if (p_6 > 1u) {
-        let lobe_5 = (2f / sqrt(f32((p_6 - 1u))));
-        if (lobe_5 < 1.5707964f) {
-            graded_2 = lobe_5;
-            let _e32 = airlight_atan((1.5707964f / lobe_5));
-            top = _e32;
-        }
+    let _e14 = airlight_emission_scale(s_41);
+    graded_4 = _e14;
+    let _e18 = graded_4;
+    if (_e18 > 0f) {
+        let _e23 = graded_4;
+        let _e24 = top_1;
+        local_187 = (_e23 < _e24);
+    } else {
+        local_187 = false;
     }
-    let _e33 = top;
+    let _e27 = local_187;
+    if _e27 {
+        let _e28 = top_1;
+        let _e29 = graded_4;
+        let _e31 = airlight_atan((_e28 / _e29));
+        top_1 = _e31;
+    } else {
+        graded_4 = 0f;
+    }
+    let _e33 = top_1;
     let c_20 = (0.5f * _e33);
-    let _e36 = top;
+    let _e36 = top_1;
     let hw_5 = (0.5f * _e36);
-    let _e74 = graded_2;
-    let _e80 = airlight_cap_row(s_39, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e74 = graded_4;
+    let _e80 = airlight_cap_row(s_41, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[0] = _e80;
-    let _e82 = graded_2;
-    let _e88 = airlight_cap_row(s_39, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e82 = graded_4;
+    let _e88 = airlight_cap_row(s_41, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[1] = _e88;
-    let _e90 = graded_2;
-    let _e96 = airlight_cap_row(s_39, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e90 = graded_4;
+    let _e96 = airlight_cap_row(s_41, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[2] = _e96;
-    let _e98 = graded_2;
-    let _e104 = airlight_cap_row(s_39, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e98 = graded_4;
+    let _e104 = airlight_cap_row(s_41, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[3] = _e104;
-    let _e106 = graded_2;
-    let _e112 = airlight_cap_row(s_39, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e106 = graded_4;
+    let _e112 = airlight_cap_row(s_41, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[4] = _e112;
-    let _e114 = graded_2;
-    let _e120 = airlight_cap_row(s_39, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e114 = graded_4;
+    let _e120 = airlight_cap_row(s_41, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[5] = _e120;
-    let _e122 = graded_2;
-    let _e128 = airlight_cap_row(s_39, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e122 = graded_4;
+    let _e128 = airlight_cap_row(s_41, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[6] = _e128;
-    let _e130 = graded_2;
-    let _e136 = airlight_cap_row(s_39, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e130 = graded_4;
+    let _e136 = airlight_cap_row(s_41, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[7] = _e136;
-    let _e138 = graded_2;
-    let _e144 = airlight_cap_row(s_39, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e138 = graded_4;
+    let _e144 = airlight_cap_row(s_41, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[8] = _e144;
-    let _e146 = graded_2;
-    let _e152 = airlight_cap_row(s_39, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e146 = graded_4;
+    let _e152 = airlight_cap_row(s_41, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[9] = _e152;
-    let _e154 = graded_2;
-    let _e160 = airlight_cap_row(s_39, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e154 = graded_4;
+    let _e160 = airlight_cap_row(s_41, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[10] = _e160;
-    let _e162 = graded_2;
-    let _e168 = airlight_cap_row(s_39, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e162 = graded_4;
+    let _e168 = airlight_cap_row(s_41, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[11] = _e168;
-    let _e170 = graded_2;
-    let _e176 = airlight_cap_row(s_39, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e170 = graded_4;
+    let _e176 = airlight_cap_row(s_41, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[12] = _e176;
-    let _e178 = graded_2;
-    let _e184 = airlight_cap_row(s_39, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e178 = graded_4;
+    let _e184 = airlight_cap_row(s_41, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[13] = _e184;
-    let _e186 = graded_2;
-    let _e192 = airlight_cap_row(s_39, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e186 = graded_4;
+    let _e192 = airlight_cap_row(s_41, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[14] = _e192;
-    let _e194 = graded_2;
-    let _e200 = airlight_cap_row(s_39, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e194 = graded_4;
+    let _e200 = airlight_cap_row(s_41, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[15] = _e200;
     if a_25.isotropic {
-        let _e206 = airlight_area_phase(s_39, 0f);
+        let _e206 = airlight_area_phase(s_41, 0f);
         let around_1 = (6.2831855f * _e206);
         let _e208 = sum_12;
         let _e211 = rows[0].x;
@@ -7541,97 +7649,97 @@ fn airlight_sphere_cap(s_39: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
             let _e323 = rows[0].x;
             let _e326 = rows[0].y;
             let _e330 = rows[0].z;
-            let _e333 = airlight_area_phase(s_39, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_41, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[1].x;
             let _e342 = rows[1].y;
             let _e346 = rows[1].z;
-            let _e349 = airlight_area_phase(s_39, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_41, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[2].x;
             let _e358 = rows[2].y;
             let _e362 = rows[2].z;
-            let _e365 = airlight_area_phase(s_39, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_41, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[3].x;
             let _e374 = rows[3].y;
             let _e378 = rows[3].z;
-            let _e381 = airlight_area_phase(s_39, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_41, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[4].x;
             let _e390 = rows[4].y;
             let _e394 = rows[4].z;
-            let _e397 = airlight_area_phase(s_39, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_41, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[5].x;
             let _e406 = rows[5].y;
             let _e410 = rows[5].z;
-            let _e413 = airlight_area_phase(s_39, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_41, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[6].x;
             let _e422 = rows[6].y;
             let _e426 = rows[6].z;
-            let _e429 = airlight_area_phase(s_39, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_41, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[7].x;
             let _e438 = rows[7].y;
             let _e442 = rows[7].z;
-            let _e445 = airlight_area_phase(s_39, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_41, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[8].x;
             let _e454 = rows[8].y;
             let _e458 = rows[8].z;
-            let _e461 = airlight_area_phase(s_39, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_41, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[9].x;
             let _e470 = rows[9].y;
             let _e474 = rows[9].z;
-            let _e477 = airlight_area_phase(s_39, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_41, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[10].x;
             let _e486 = rows[10].y;
             let _e490 = rows[10].z;
-            let _e493 = airlight_area_phase(s_39, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_41, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[11].x;
             let _e502 = rows[11].y;
             let _e506 = rows[11].z;
-            let _e509 = airlight_area_phase(s_39, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_41, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[12].x;
             let _e518 = rows[12].y;
             let _e522 = rows[12].z;
-            let _e525 = airlight_area_phase(s_39, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_41, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[13].x;
             let _e534 = rows[13].y;
             let _e538 = rows[13].z;
-            let _e541 = airlight_area_phase(s_39, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_41, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = at_2;
             let _e547 = rows[14].x;
             let _e550 = rows[14].y;
             let _e554 = rows[14].z;
-            let _e557 = airlight_area_phase(s_39, ((_e550 * ad) + (_e554 * across_1)));
+            let _e557 = airlight_area_phase(s_41, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             let _e560 = at_2;
             let _e563 = rows[15].x;
             let _e566 = rows[15].y;
             let _e570 = rows[15].z;
-            let _e573 = airlight_area_phase(s_39, ((_e566 * ad) + (_e570 * across_1)));
+            let _e573 = airlight_area_phase(s_41, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
             let _e576 = sum_12;
             let _e578 = at_2;
@@ -7646,18 +7754,18 @@ fn airlight_sphere_cap(s_39: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     return _e584;
 }
 
-fn airlight_sphere_lobe_node(s_40: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_3: f32, g_28: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_42: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_5: f32, g_28: f32) -> f32 {
     let _e8 = airlight_cos_sin_half_turn(g_28);
-    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_3 * _e8.y) / _e8.x)));
+    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_5 * _e8.y) / _e8.x)));
     let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e43 = airlight_emitted(s_40, (root_5 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_40, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_40.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_3) / (_e8.x * _e8.x));
+    let _e43 = airlight_emitted(s_42, (root_5 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_42, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_42.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
 }
 
-fn airlight_sphere_about_lobe(s_41: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_43: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
@@ -7712,91 +7820,91 @@ fn airlight_sphere_about_lobe(s_41: AirlightScene, a_26: AirlightArea, cap_3: Ai
             }
             let to = (mid_3 + _e97);
             let _e105 = start_3;
-            let graded_5 = max(scale_1, _e105);
+            let graded_7 = max(scale_1, _e105);
             let _e107 = start_3;
-            let _e110 = airlight_atan(((to - _e107) / graded_5));
+            let _e110 = airlight_atan(((to - _e107) / graded_7));
             let c_21 = (0.5f * _e110);
             let hw_6 = (0.5f * _e110);
             around = 0f;
             let _e117 = around;
             let _e120 = big_b_1;
             let _e121 = start_3;
-            let _e125 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e120, _e121, graded_5, (c_21 - (0.09501251f * hw_6)));
+            let _e125 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251f * hw_6)));
             around = (_e117 + ((0.1894506f * hw_6) * _e125));
             let _e128 = around;
             let _e131 = big_b_1;
             let _e132 = start_3;
-            let _e136 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e131, _e132, graded_5, (c_21 + (0.09501251f * hw_6)));
+            let _e136 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251f * hw_6)));
             around = (_e128 + ((0.1894506f * hw_6) * _e136));
             let _e139 = around;
             let _e142 = big_b_1;
             let _e143 = start_3;
-            let _e147 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e142, _e143, graded_5, (c_21 - (0.28160354f * hw_6)));
+            let _e147 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354f * hw_6)));
             around = (_e139 + ((0.18260342f * hw_6) * _e147));
             let _e150 = around;
             let _e153 = big_b_1;
             let _e154 = start_3;
-            let _e158 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e153, _e154, graded_5, (c_21 + (0.28160354f * hw_6)));
+            let _e158 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354f * hw_6)));
             around = (_e150 + ((0.18260342f * hw_6) * _e158));
             let _e161 = around;
             let _e164 = big_b_1;
             let _e165 = start_3;
-            let _e169 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e164, _e165, graded_5, (c_21 - (0.45801678f * hw_6)));
+            let _e169 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678f * hw_6)));
             around = (_e161 + ((0.16915652f * hw_6) * _e169));
             let _e172 = around;
             let _e175 = big_b_1;
             let _e176 = start_3;
-            let _e180 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e175, _e176, graded_5, (c_21 + (0.45801678f * hw_6)));
+            let _e180 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678f * hw_6)));
             around = (_e172 + ((0.16915652f * hw_6) * _e180));
             let _e183 = around;
             let _e186 = big_b_1;
             let _e187 = start_3;
-            let _e191 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e186, _e187, graded_5, (c_21 - (0.61787623f * hw_6)));
+            let _e191 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623f * hw_6)));
             around = (_e183 + ((0.14959599f * hw_6) * _e191));
             let _e194 = around;
             let _e197 = big_b_1;
             let _e198 = start_3;
-            let _e202 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e197, _e198, graded_5, (c_21 + (0.61787623f * hw_6)));
+            let _e202 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623f * hw_6)));
             around = (_e194 + ((0.14959599f * hw_6) * _e202));
             let _e205 = around;
             let _e208 = big_b_1;
             let _e209 = start_3;
-            let _e213 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e208, _e209, graded_5, (c_21 - (0.7554044f * hw_6)));
+            let _e213 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044f * hw_6)));
             around = (_e205 + ((0.12462897f * hw_6) * _e213));
             let _e216 = around;
             let _e219 = big_b_1;
             let _e220 = start_3;
-            let _e224 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e219, _e220, graded_5, (c_21 + (0.7554044f * hw_6)));
+            let _e224 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044f * hw_6)));
             around = (_e216 + ((0.12462897f * hw_6) * _e224));
             let _e227 = around;
             let _e230 = big_b_1;
             let _e231 = start_3;
-            let _e235 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e230, _e231, graded_5, (c_21 - (0.8656312f * hw_6)));
+            let _e235 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312f * hw_6)));
             around = (_e227 + ((0.09515851f * hw_6) * _e235));
             let _e238 = around;
             let _e241 = big_b_1;
             let _e242 = start_3;
-            let _e246 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e241, _e242, graded_5, (c_21 + (0.8656312f * hw_6)));
+            let _e246 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312f * hw_6)));
             around = (_e238 + ((0.09515851f * hw_6) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
             let _e253 = start_3;
-            let _e257 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e252, _e253, graded_5, (c_21 - (0.944575f * hw_6)));
+            let _e257 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575f * hw_6)));
             around = (_e249 + ((0.062253524f * hw_6) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
             let _e264 = start_3;
-            let _e268 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e263, _e264, graded_5, (c_21 + (0.944575f * hw_6)));
+            let _e268 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575f * hw_6)));
             around = (_e260 + ((0.062253524f * hw_6) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
             let _e275 = start_3;
-            let _e279 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e274, _e275, graded_5, (c_21 - (0.9894009f * hw_6)));
+            let _e279 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009f * hw_6)));
             around = (_e271 + ((0.02715246f * hw_6) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
             let _e286 = start_3;
-            let _e290 = airlight_sphere_lobe_node(s_41, cap_3, sign_2, cos_p_1, _e285, _e286, graded_5, (c_21 + (0.9894009f * hw_6)));
+            let _e290 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009f * hw_6)));
             around = (_e282 + ((0.02715246f * hw_6) * _e290));
             let _e293 = sum_13;
             let _e294 = wpsi;
@@ -7812,16 +7920,16 @@ fn airlight_sphere_about_lobe(s_41: AirlightScene, a_26: AirlightArea, cap_3: Ai
     return _e301;
 }
 
-fn airlight_sphere(s_42: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_sphere(s_44: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_8: u32 = 0u;
-    var local_183: bool;
-    var local_184: bool;
-    var local_185: bool;
-    var local_186: bool;
-    var local_187: bool;
+    var local_188: bool;
+    var local_189: bool;
+    var local_190: bool;
+    var local_191: bool;
+    var local_192: bool;
 
     let v_11 = (a_27.c - x_26);
     let _e5 = airlight_safe_length(v_11);
@@ -7839,43 +7947,43 @@ fn airlight_sphere(s_42: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
         }
         {
             let _e39 = j_8;
-            let lobe_6 = select(a_27.lobes.xy, a_27.lobes.zw, (_e39 == 1u));
-            let c_22 = dot(cap_4.a, (lobe_6.x * a_27.d));
+            let lobe_5 = select(a_27.lobes.xy, a_27.lobes.zw, (_e39 == 1u));
+            let c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_183 = (lobe_6.y > 0f);
+                local_188 = (lobe_5.y > 0f);
             } else {
-                local_183 = false;
+                local_188 = false;
             }
-            let _e57 = local_183;
+            let _e57 = local_188;
             if _e57 {
-                local_184 = (lobe_6.y < (_e23 + _e23));
+                local_189 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_184 = false;
+                local_189 = false;
             }
-            let _e64 = local_184;
+            let _e64 = local_189;
             if _e64 {
                 if !((c_22 > cap_4.cos_a)) {
                     if (c_22 > -(cap_4.cos_a)) {
                         let _e77 = airlight_acos(c_22);
-                        local_187 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+                        local_192 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_187 = false;
+                        local_192 = false;
                     }
-                    let _e84 = local_187;
-                    local_186 = _e84;
+                    let _e84 = local_192;
+                    local_191 = _e84;
                 } else {
-                    local_186 = true;
+                    local_191 = true;
                 }
-                let _e86 = local_186;
-                local_185 = _e86;
+                let _e86 = local_191;
+                local_190 = _e86;
             } else {
-                local_185 = false;
+                local_190 = false;
             }
-            let _e88 = local_185;
+            let _e88 = local_190;
             if _e88 {
-                chosen = lobe_6.y;
-                sign_3 = lobe_6.x;
+                chosen = lobe_5.y;
+                sign_3 = lobe_5.x;
                 cos_p_2 = c_22;
             }
         }
@@ -7889,48 +7997,48 @@ fn airlight_sphere(s_42: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_42, a_27, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_44, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_42, a_27, cap_4);
+    let _e101 = airlight_sphere_cap(s_44, a_27, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_43: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
-    switch s_43.light_shape {
+fn airlight_emitter_radiance(s_45: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
+    switch s_45.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_43, a_28, x_27);
+            let _e4 = airlight_disc(s_45, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_43, a_28, x_27);
+            let _e5 = airlight_parallelogram(s_45, a_28, x_27);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_43, a_28, x_27);
+            let _e6 = airlight_sphere(s_45, a_28, x_27);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_44: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_46: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along = ((a_29.h_eff * _e3.y) / _e3.x);
     let t_12 = (a_29.x_h + along);
-    let fade = exp(min((-(s_44.sigma_t) * max(((a_29.x_h - s_44.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_44, a_29, (s_44.origin + (t_12 * a_29.d)));
+    let fade = exp(min((-(s_46.sigma_t) * max(((a_29.x_h - s_46.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_46, a_29, (s_46.origin + (t_12 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_45: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_47: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_8: f32;
     var gauss_1: f32;
     var j_9: u32;
-    var local_188: bool;
+    var local_193: bool;
 
-    let _e1 = airlight_area(s_45);
+    let _e1 = airlight_area(s_47);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7963,21 +8071,21 @@ fn airlight_area_light(s_45: AirlightScene) -> AirlightResult {
                 }
                 {
                     let _e49 = j_9;
-                    let node_2 = _e8[(_e49 / 2u)];
+                    let node_3 = _e8[(_e49 / 2u)];
                     let _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_9;
-                        local_188 = (_e66 < 14u);
+                        local_193 = (_e66 < 14u);
                     } else {
-                        local_188 = false;
+                        local_193 = false;
                     }
-                    let _e70 = local_188;
-                    let x_36 = select((c_23 + (hw_7 * node_2.x)), (c_23 - (hw_7 * node_2.x)), _e70);
-                    let _e72 = airlight_area_node(s_45, _e1, x_36);
+                    let _e70 = local_193;
+                    let x_36 = select((c_23 + (hw_7 * node_3.x)), (c_23 - (hw_7 * node_3.x)), _e70);
+                    let _e72 = airlight_area_node(s_47, _e1, x_36);
                     let _e73 = k_8;
-                    k_8 = (_e73 + (node_2.y * _e72));
+                    k_8 = (_e73 + (node_3.y * _e72));
                     let _e77 = gauss_1;
-                    gauss_1 = (_e77 + (node_2.z * _e72));
+                    gauss_1 = (_e77 + (node_3.z * _e72));
                 }
                 continuing {
                     let _e82 = j_9;
@@ -8007,43 +8115,43 @@ fn airlight_area_light(s_45: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_45.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_47.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_46: AirlightScene) -> AirlightResult {
-    var local_189: bool;
-    var local_190: bool;
+fn airlight_in_scatter_area(s_48: AirlightScene) -> AirlightResult {
+    var local_194: bool;
+    var local_195: bool;
 
-    let _e1 = airlight_valid(s_46);
+    let _e1 = airlight_valid(s_48);
     if !(!(_e1)) {
-        local_189 = (s_46.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_194 = (s_48.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_189 = true;
+        local_194 = true;
     }
-    let _e10 = local_189;
+    let _e10 = local_194;
     if !(_e10) {
-        local_190 = (s_46.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_190 = true;
+        local_195 = true;
     }
-    let _e18 = local_190;
+    let _e18 = local_195;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_46);
+    let _e22 = airlight_area_light(s_48);
     return _e22;
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_191: bool;
+    var local_196: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_191 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_196 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_191 = true;
+        local_196 = true;
     }
-    let _e11 = local_191;
+    let _e11 = local_196;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8052,18 +8160,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_192: bool;
+    var local_197: bool;
     var g_29: AirlightCanonical;
 
     let p_8 = n_3.scene;
     let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_8.dir);
-        local_192 = _e11;
+        local_197 = _e11;
     } else {
-        local_192 = false;
+        local_197 = false;
     }
-    let _e13 = local_192;
+    let _e13 = local_197;
     if _e13 {
         g_29 = n_3.canonical;
         if !(n_3.exact) {
@@ -8086,60 +8194,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_47: AirlightScene) -> AirlightResult {
-    var local_193: bool;
-    var local_194: bool;
+fn airlight_in_scatter_point(s_49: AirlightScene) -> AirlightResult {
+    var local_198: bool;
+    var local_199: bool;
 
-    let _e1 = airlight_valid(s_47);
+    let _e1 = airlight_valid(s_49);
     if !(!(_e1)) {
-        local_193 = (s_47.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_198 = (s_49.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_193 = true;
+        local_198 = true;
     }
-    let _e10 = local_193;
+    let _e10 = local_198;
     if !(_e10) {
-        local_194 = (s_47.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_199 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_194 = true;
+        local_199 = true;
     }
-    let _e18 = local_194;
+    let _e18 = local_199;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_47);
+    let _e22 = airlight_point_integral(s_49);
     return _e22;
 }
 
-fn airlight_in_scatter_route(s_48: AirlightScene) -> AirlightResult {
-    var local_195: bool;
-    var local_196: bool;
+fn airlight_in_scatter_route(s_50: AirlightScene) -> AirlightResult {
+    var local_200: bool;
+    var local_201: bool;
 
-    let _e1 = airlight_valid(s_48);
+    let _e1 = airlight_valid(s_50);
     if !(!(_e1)) {
-        local_195 = (s_48.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_200 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_195 = true;
+        local_200 = true;
     }
-    let _e10 = local_195;
+    let _e10 = local_200;
     if !(_e10) {
-        local_196 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_201 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_196 = true;
+        local_201 = true;
     }
-    let _e18 = local_196;
+    let _e18 = local_201;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_48);
-    let _e23 = airlight_refined(s_48, _e22);
-    let _e24 = airlight_limits(s_48, _e23);
+    let _e22 = airlight_canonical(s_50);
+    let _e23 = airlight_refined(s_50, _e22);
+    let _e24 = airlight_limits(s_50, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_48);
+    let _e29 = airlight_isotropic_scene(s_50);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_48, _e23);
+        let _e31 = airlight_angle_route(s_50, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8148,24 +8256,24 @@ fn airlight_in_scatter_route(s_48: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_49: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_51: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_9: f32;
     var gauss_2: f32;
     var j_10: u32;
-    var local_197: bool;
+    var local_202: bool;
     var f: f32;
-    var local_198: bool;
+    var local_203: bool;
 
-    let _e1 = airlight_valid(s_49);
+    let _e1 = airlight_valid(s_51);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_49.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_51.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_49);
+    let _e12 = airlight_outer(s_51);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8200,29 +8308,29 @@ fn airlight_in_scatter(s_49: AirlightScene) -> AirlightResult {
                 }
                 {
                     let _e64 = j_10;
-                    let node_3 = _e25[(_e64 / 2u)];
+                    let node_4 = _e25[(_e64 / 2u)];
                     let _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_10;
-                        local_197 = (_e81 < 6u);
+                        local_202 = (_e81 < 6u);
                     } else {
-                        local_197 = false;
+                        local_202 = false;
                     }
-                    let _e85 = local_197;
-                    let w_11 = select((c_24 + (hw_8 * node_3.x)), (c_24 - (hw_8 * node_3.x)), _e85);
-                    let _e87 = airlight_outer_node(s_49, _e12, w_11);
+                    let _e85 = local_202;
+                    let w_11 = select((c_24 + (hw_8 * node_4.x)), (c_24 - (hw_8 * node_4.x)), _e85);
+                    let _e87 = airlight_outer_node(s_51, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_49.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_198 = (s_49.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_51.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_203 = (s_51.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_198 = false;
+                            local_203 = false;
                         }
-                        let _e106 = local_198;
+                        let _e106 = local_203;
                         if _e106 {
                             return _e93;
                         }
@@ -8230,10 +8338,10 @@ fn airlight_in_scatter(s_49: AirlightScene) -> AirlightResult {
                     }
                     let _e110 = k_9;
                     let _e112 = f;
-                    k_9 = (_e110 + (node_3.y * _e112));
+                    k_9 = (_e110 + (node_4.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
-                    gauss_2 = (_e115 + (node_3.z * _e117));
+                    gauss_2 = (_e115 + (node_4.z * _e117));
                 }
                 continuing {
                     let _e121 = j_10;

@@ -356,10 +356,12 @@ fn segment_lights_agree_with_the_cpu_kernel() {
 
 /// Area lights (tests/reference/area.jsonl: discs, rectangles and spheres near, far, pierced,
 /// behind the camera, thick, inside a sphere, with cosine lobes of emission; isotropic, HG and
-/// Rayleigh fog; and a disc and a rectangle in Henyey–Greenstein fog, `g = 0.9`–`0.99`, on rays
-/// that look at them, at their limb, past it and beside them, where the flat emitters are taken
-/// about the lobe's direction, their values the nested construction's at tolerance 1e-9,
-/// tests/area.rs `bounded_flat_emitters_in_forward_fog`): the area entry `airlight_in_scatter_area` as a compute shader over the
+/// Rayleigh fog; and a disc and a rectangle in Henyey–Greenstein fog, `g = 0.9`–`0.99`, or
+/// emitting the cosine lobe `p = 1024`, on rays that look at them, at their limb, past it and
+/// beside them, where the flat emitters are taken about the phase lobe's direction or graded
+/// towards the emission lobe, their values the nested construction's at tolerance 1e-9,
+/// tests/area.rs `bounded_flat_emitters_in_forward_fog`,
+/// `bounded_flat_emitters_with_a_narrow_emission_lobe`): the area entry `airlight_in_scatter_area` as a compute shader over the
 /// committed WGSL library at 8 and 12 nodes, run as WGSL and as naga's SPIR-V, agrees with the
 /// f32 CPU kernel computing the same method (`AreaScene::in_scatter_bounded`) by the criterion of
 /// the point light, and is within 1e-4 of the nested-quadrature value, relative to the value
@@ -382,7 +384,7 @@ fn area_lights_agree_with_the_cpu_kernel() {
             Ok(AnyRecord::Area(s)) => (s, v["in_scatter"].as_f64().unwrap(), format!("{} {}", v["category"].as_str().unwrap(), v["light"]["shape"].as_str().unwrap())),
             other => panic!("area.jsonl holds area lights valid in f32, not {other:?}"),
         })
-        .chain(forward_fog_flat_emitters())
+        .chain(focused_flat_emitters())
         .collect();
     let mut records: Vec<u8> = cases.iter().flat_map(|c| pack_area(&c.0)).collect();
     let first = |shape: u32| Record::area(&cases.iter().find(|c| Record::area(&c.0).light_shape == shape).expect("each shape in area.jsonl").0);
@@ -435,13 +437,14 @@ fn area_lights_agree_with_the_cpu_kernel() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
-/// A disc and a rectangle in Henyey–Greenstein fog (`g` = 0.9, 0.95, 0.99) on rays that look at
-/// them, towards their limb, past it and beside them (tests/examples/area_bounded_phase.rs): the
-/// f32 scene, the nested construction's value at tolerance 1e-9 in f64, a label.
-fn forward_fog_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
+/// A disc and a rectangle in Henyey–Greenstein fog (`g` = 0.9, 0.95, 0.99) and, in isotropic
+/// fog, emitting the cosine lobe `p = 1024`, on rays that look at them, towards their limb, past
+/// it and beside them (tests/examples/area_bounded_phase.rs): the f32 scene, the nested
+/// construction's value at tolerance 1e-9 in f64, a label.
+fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
     use airlight::glam::{DVec3, Vec3};
     use airlight::phase::{AnyPhase, HenyeyGreenstein};
-    use airlight::{AreaLight, AreaScene, Emitter, Medium, Ray};
+    use airlight::{AreaLight, AreaScene, Emission, Emitter, Medium, Ray};
     let (center, normal) = (Vec3::new(6.0, 1.5, -0.5), Vec3::new(-1.0, -0.4, 0.1));
     let (corner, edge_u, edge_v) = (Vec3::new(6.0, 1.0, -1.0), Vec3::new(0.1, 0.0, 1.0), Vec3::new(0.0, 1.2, 0.1));
     let emitters = [("disc", Emitter::Disc { center, normal, radius: 0.8 }), ("rectangle", Emitter::Rectangle { corner, edge_u, edge_v })];
@@ -451,16 +454,20 @@ fn forward_fog_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase:
         Emitter::Rectangle { corner, edge_u, edge_v } => Emitter::Rectangle { corner: corner.as_dvec3(), edge_u: edge_u.as_dvec3(), edge_v: edge_v.as_dvec3() },
         Emitter::Sphere { center, radius } => Emitter::Sphere { center: center.as_dvec3(), radius: radius as f64 },
     };
+    let lights = [(0.9f32, 1u32), (0.95, 1), (0.99, 1), (0.0, 1024)];
     let mut cases = Vec::new();
-    for g in [0.9f32, 0.95, 0.99] {
+    for (g, power) in lights {
+        let emission = if power == 1 { Emission::Lambertian } else { Emission::CosineLobe { power } };
         for (name, emitter) in emitters {
             for (label, dir) in rays {
                 let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
-                let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+                let light = AreaLight { emission, ..AreaLight::new(emitter, 2.0) };
+                let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
                 let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
                 let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
-                let double = AreaScene::new(ray, AreaLight::new(wide(emitter), 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 })).unwrap();
-                cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} {name} {label}")));
+                let light = AreaLight { emission, ..AreaLight::new(wide(emitter), 2.0) };
+                let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 })).unwrap();
+                cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} p = {power} {name} {label}")));
             }
         }
     }

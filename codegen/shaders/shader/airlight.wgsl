@@ -2584,8 +2584,12 @@ fn airlight_outer_node(s: AirlightScene, g: AirlightOuter, x: f32) -> AirlightNo
 // The ray's panels and tolerance (outer.rs BOUNDED_RAY_PANELS, BOUNDED_RAY_TOLERANCE).
 const AIRLIGHT_AREA_RAY_PANELS: u32 = @AREA_RAY_PANELS@u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = @AREA_RAY_TOLERANCE@;
-// How far outside a sphere's cap, in radial scales, a phase lobe is taken about (outer.rs LOBE_REACH).
+// How far outside a sphere's cap or a flat emitter, in radial scales, a phase lobe is taken about
+// (outer.rs LOBE_REACH).
 const AIRLIGHT_LOBE_REACH: f32 = @LOBE_REACH@;
+// How far inside a flat emitter's edge, in heights above its plane, its foot is taken about
+// (outer.rs EDGE_REACH).
+const AIRLIGHT_EDGE_REACH: f32 = @EDGE_REACH@;
 // The largest power of an emission lobe (area.rs Emission::MAX_POWER).
 const AIRLIGHT_EMISSION_MAX_POWER: u32 = @EMISSION_MAX_POWER@u;
 
@@ -2650,6 +2654,21 @@ fn airlight_emitted(s: AirlightScene, c: f32) -> f32 {
     var base = c;
     var acc = 1.0;
 @EMISSION_POWER_STEPS@    return s.intensity * acc;
+}
+
+/// The width scale s = 2/√(p − 1) of the emission's lobe c^{p−1} (outer.rs `Light::emission_scale`);
+/// 0 for p = 1.
+fn airlight_emission_scale(s: AirlightScene) -> f32 {
+    let p = u32(s.light_param_b);
+    if (p <= 1u) { return 0.0; }
+    return 2.0 / sqrt(f32(p - 1u));
+}
+
+/// Whether a flat emitter is taken about the foot `depth` inside its edge at the height z
+/// (outer.rs `Light::far_from_edge`): depth ≥ EDGE_REACH·z·min(1, s).
+fn airlight_far_from_edge(s: AirlightScene, depth: f32, z: f32) -> bool {
+    let scale = airlight_emission_scale(s);
+    return depth >= AIRLIGHT_EDGE_REACH * z * select(1.0, min(scale, 1.0), scale > 0.0);
 }
 
 /// A lobe of Henyey–Greenstein form at its singular cosine's gap `gap` (|μ*| − 1) on the side of
@@ -2802,8 +2821,16 @@ fn airlight_above(z: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z, off, sqrt(z * z + off.x * off.x + off.y * off.y));
 }
 
-/// One node γ of `airlight_flat_radial`: L_e c^{p−1} P e^{−σt d} z/d³ r dr/dγ at r = ρ₀ tan γ along `e`.
-fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, g: f32) -> f32 {
+/// One node of `airlight_flat_radial`: L_e c^{p−1} P e^{−σt d} z/d³ r dr/dγ at r = ρ₀ tan γ along
+/// `e`, γ the node, or s tan of it where the rule is graded by s = `graded` > 0 (times s/cos²).
+fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, graded: f32, node: f32) -> f32 {
+    var g = node;
+    var jacobian = 1.0;
+    if (graded > 0.0) {
+        let t = airlight_cos_sin_half_turn(node);
+        g = graded * t.y / t.x;
+        jacobian = graded / (t.x * t.x);
+    }
     let cs = airlight_cos_sin_half_turn(g);
     let r = above.rho0 * cs.y / cs.x;
     let dr = above.rho0 / (cs.x * cs.x);
@@ -2813,13 +2840,20 @@ fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e
     let inv = 1.0 / dist;
     let cos = z * inv;
     let phase = airlight_area_phase(s, (p.x * a.dirs.x + p.y * a.dirs.y - z * a.dirs.z) * inv);
-    return airlight_emitted(s, cos) * exp(min(-s.sigma_t * dist, 0.0)) * phase * cos * inv * inv * r * dr;
+    return jacobian * airlight_emitted(s, cos) * exp(min(-s.sigma_t * dist, 0.0)) * phase * cos * inv * inv * r * dr;
 }
 
 /// ∫ L_e c^{p−1} P e^{−σt d} z/d³ r dr along the direction `e` from q* out to `r_max`, in γ
-/// (outer.rs `radial`): Gauss–Legendre RADIAL, written out.
+/// (outer.rs `radial`): Gauss–Legendre RADIAL, written out, graded towards γ = 0 by an emission
+/// lobe narrower than the range (outer.rs `graded_radial`).
 fn airlight_flat_radial(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, r_max: f32) -> f32 {
-    let top = airlight_atan(r_max / above.rho0);
+    var top = airlight_atan(r_max / above.rho0);
+    var graded = airlight_emission_scale(s);
+    if (graded > 0.0 && graded < top) {
+        top = airlight_atan(top / graded);
+    } else {
+        graded = 0.0;
+    }
     let c = 0.5 * top;
     let hw = 0.5 * top;
     var sum = 0.0;
@@ -2842,8 +2876,9 @@ fn airlight_disc(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
     if (lobe.scale > 0.0) {
         return airlight_flat_about_lobe(s, z, outline, lobe);
     }
-    let inside = rf <= radius;
-    // outside: u towards the centre, q* on the rim
+    // about the foot where it is on the disc and not near its rim (outer.rs `disc`)
+    let inside = rf <= radius && (rf == 0.0 || airlight_far_from_edge(s, radius - rf, z));
+    // else u towards the centre, q* on the rim
     var u = vec2<f32>(0.0);
     var above = airlight_above(z, vec2<f32>(0.0));
     if (!inside) {
@@ -2886,7 +2921,10 @@ fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f3
     if (lobe.scale > 0.0) {
         return airlight_flat_about_lobe(s, z, about_foot, lobe);
     }
-    let q = airlight_outline_nearest(about_foot, vec2<f32>(0.0)) + foot;
+    // about the foot where it is on the emitter and not near its edge, else the edge's nearest point
+    let edge = airlight_outline_boundary(about_foot, vec2<f32>(0.0));
+    var q = edge.xy + foot;
+    if (edge.z > 0.0 && airlight_far_from_edge(s, sqrt(dot(edge.xy, edge.xy)), z)) { q = foot; }
     let above = airlight_above(z, q - foot);
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = AIRLIGHT_FLT_EPS * abs(det);
@@ -2963,11 +3001,17 @@ fn airlight_outline_chord(o: AirlightOutline, q: vec2<f32>, e: vec2<f32>) -> vec
 
 /// The emitter's point nearest q, q itself on the emitter (outer.rs `Outline::nearest`).
 fn airlight_outline_nearest(o: AirlightOutline, q: vec2<f32>) -> vec2<f32> {
+    let edge = airlight_outline_boundary(o, q);
+    return select(edge.xy, q, edge.z > 0.0);
+}
+
+/// The point of the emitter's edge nearest q, and 1 if q is on the emitter, else 0 (outer.rs
+/// `Outline::boundary`).
+fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
     if (o.radius > 0.0) {
         let qc = q - o.corners[0];
         let dq = sqrt(qc.x * qc.x + qc.y * qc.y);
-        if (dq <= o.radius) { return q; }
-        return o.corners[0] + qc * o.radius / dq;
+        return vec3<f32>(o.corners[0] + qc * o.radius / dq, select(0.0, 1.0, dq <= o.radius));
     }
     var best = AIRLIGHT_FLT_MAX;
     var nearest = q;
@@ -2984,7 +3028,7 @@ fn airlight_outline_nearest(o: AirlightOutline, q: vec2<f32>) -> vec2<f32> {
             nearest = p;
         }
     }
-    return select(nearest, q, inside);
+    return vec3<f32>(nearest, select(0.0, 1.0, inside));
 }
 
 /// A phase lobe pointing at a flat emitter (outer.rs `FlatLobe`): its direction p = sign·d in
@@ -3168,15 +3212,12 @@ fn airlight_sphere_cap(s: AirlightScene, a: AirlightArea, cap: AirlightCap) -> f
     let ad = dot(cap.a, a.d);
     let e1d = dot(e1, a.d);
     let e2d = dot(e2, a.d);
-    let p = u32(s.light_param_b);
-    var graded = 0.0;
+    var graded = airlight_emission_scale(s);
     var top = 0.5 * AIRLIGHT_PI;
-    if (p > 1u) {
-        let lobe = 2.0 / sqrt(f32(p - 1u));
-        if (lobe < 0.5 * AIRLIGHT_PI) {
-            graded = lobe;
-            top = airlight_atan(0.5 * AIRLIGHT_PI / lobe);
-        }
+    if (graded > 0.0 && graded < top) {
+        top = airlight_atan(top / graded);
+    } else {
+        graded = 0.0;
     }
     let c = 0.5 * top;
     let hw = 0.5 * top;

@@ -301,6 +301,7 @@ impl Constants {
             ("@AREA_RAY_PANELS@", airlight::area::outer::BOUNDED_RAY_PANELS.to_string()),
             ("@AREA_RAY_TOLERANCE@", f(airlight::area::outer::BOUNDED_RAY_TOLERANCE)),
             ("@LOBE_REACH@", f(airlight::area::outer::LOBE_REACH)),
+            ("@EDGE_REACH@", f(airlight::area::outer::EDGE_REACH)),
             ("@EMISSION_MAX_POWER@", airlight::Emission::MAX_POWER.to_string()),
             ("@EMISSION_POWER_STEPS@", unrolled::power_steps(emission_bits)),
             (
@@ -312,7 +313,7 @@ impl Constants {
             ("@TRIANGLE_RULE@", triangle),
             ("@RADIAL_NODES@", (2 * radial.len()).to_string()),
             ("@ZEROS_RADIAL_ROWS@", list(vec!["vec3<f32>(0.0)".to_string(); 2 * radial.len()])),
-            ("@RADIAL_FLAT@", unrolled::gauss_lines(radial, "    sum += @W@ * hw * airlight_flat_node(s, a, above, e, @NODE@);\n")),
+            ("@RADIAL_FLAT@", unrolled::gauss_lines(radial, "    sum += @W@ * hw * airlight_flat_node(s, a, above, e, graded, @NODE@);\n")),
             ("@RADIAL_CAP_ROWS@", unrolled::gauss_lines(radial, "    rows[@K@] = airlight_cap_row(s, cap, graded, @NODE@, @W@ * hw);\n")),
             ("@RADIAL_CAP_CONSTANT@", unrolled::gauss_lines(radial, "        sum += rows[@K@].x * around;\n")),
             ("@RADIAL_CAP_AROUND@", unrolled::gauss_lines(radial, "        at += rows[@K@].x * airlight_area_phase(s, rows[@K@].y * ad + rows[@K@].z * across);\n")),
